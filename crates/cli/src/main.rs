@@ -1,0 +1,42 @@
+//! `oscsim`: run OpenSCENARIO scenarios on OpenDRIVE road networks, headless and deterministic.
+//!
+//! Exit status: 0 on success, 1 when the input is invalid or a run fails, 2 on a usage error.
+
+mod road;
+mod validate;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// Command-line arguments of `oscsim`.
+#[derive(Parser, Debug)]
+#[command(name = "oscsim", version, about, long_about = None,
+    after_help = "Exit status: 0 success, 1 invalid input or failed run, 2 usage error.")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Inspect an OpenDRIVE road network.
+    Road(road::RoadArgs),
+    /// Load scenarios with their road networks and catalogs and report errors.
+    Validate(validate::ValidateArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Road(args) => road::run(args),
+        Command::Validate(args) => validate::run(args),
+    };
+    match result {
+        Ok(code) => code,
+        Err(err) => {
+            eprintln!("error: {err:#}");
+            ExitCode::from(1)
+        }
+    }
+}
