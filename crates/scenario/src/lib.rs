@@ -3,3 +3,6 @@
 //! Parses `.xosc` files into typed, resolved data with source positions.
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
+
+pub mod distribution;
+pub mod expr;
