@@ -1,3 +1,37 @@
-//! ASAM OSI 3.x ground-truth messages and trace writers for oscsim.
+//! ASAM OSI 3.8.0 ground truth for oscsim: the `osi3` messages, the mapping helpers that
+//! fill them from scenario entities, and `.osi` / `.mcap` trace files.
+//!
+//! - [`osi3`]: the messages (GroundTruth, MovingObject, StationaryObject, Lane,
+//!   LaneBoundary, …), generated from `proto/` with the standard's field numbers.
+//! - [`ids::IdAllocator`]: globally unique, stable ids across objects, lanes, boundaries.
+//! - [`rigid_body::RigidBodyState`]: reference point → bounding-box centre, velocity,
+//!   acceleration (`MovingObject.base`).
+//! - [`classification`], [`color`]: OpenSCENARIO categories and colours → OSI.
+//! - [`trace`]: the [`trace::TraceWriter`] seam, `.osi` and `.mcap` writers and readers,
+//!   the OSI file naming convention, and [`trace::TraceFile`] for `--osi PATH`.
+//!
+//! ```
+//! use osi::trace::{read_osi_bytes, OsiFileWriter, TraceWriter};
+//! let mut gt = osi::osi3::GroundTruth::default();
+//! gt.version = Some(osi::version::interface_version());
+//! let mut writer = OsiFileWriter::new(Vec::new(), "mem.osi".as_ref());
+//! writer.write(&gt)?;
+//! let bytes = writer.into_inner()?.unwrap_or_default();
+//! let back = read_osi_bytes(&bytes, "mem.osi".as_ref())?;
+//! assert_eq!(back, vec![gt]);
+//! # Ok::<(), osi::Error>(())
+//! ```
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
+
+pub mod classification;
+pub mod color;
+mod error;
+pub mod ids;
+pub mod osi3;
+pub mod rigid_body;
+pub mod schema;
+pub mod trace;
+pub mod version;
+
+pub use error::{Error, ErrorKind};
