@@ -1,1 +1,41 @@
 //! OpenSCENARIO 2.0 §8.7 physical-object actors and their measurement methods.
+//!
+//! | module | implements |
+//! | --- | --- |
+//! | `error` | `DomainError`, the error cases the §8.7 methods name |
+//! | `enums` | §8.7.12–8.7.17 vehicle_category, intended_infrastructure, distance_direction, distance_mode, on_route_type, route_distance_enum |
+//! | `color` | §8.7.11 color and its RGB table (W3C values for fuchsia and purple) |
+//! | `kinematics` | position_3d, velocity_6d, acceleration_6d |
+//! | `frame` | the object coordinate system placed by a pose_3d |
+//! | `bounding_box` | §8.7.9 bounding_box |
+//! | `footprint` | the bounding box's ground-plane rectangle |
+//! | `object` | §8.7.2–8.7.5, 8.7.7, 8.7.8 physical_object … person, animal |
+//! | `vehicle` | §8.7.6 vehicle, §8.7.10 axle |
+//! | `object_distance` | §8.7.2.1.1 object_distance() |
+//! | `time_to_collision` | §8.7.5.1.1 time_to_collision() |
+
+mod bounding_box;
+mod color;
+mod enums;
+mod error;
+mod footprint;
+mod frame;
+mod kinematics;
+mod object;
+mod object_distance;
+mod time_to_collision;
+mod vehicle;
+
+pub use bounding_box::BoundingBox;
+pub use color::Color;
+pub use enums::{
+    DistanceDirection, DistanceMode, IntendedInfrastructure, OnRouteType, RouteDistanceEnum,
+    VehicleCategory,
+};
+pub use error::{DomainError, DomainErrorKind};
+pub use kinematics::{Acceleration6d, Position3d, Vector3, Velocity6d};
+pub use object::{
+    Actor, Animal, MovableObject, Person, Physical, PhysicalObject, StationaryObject,
+    TrafficParticipant,
+};
+pub use vehicle::{Axle, Vehicle};
