@@ -1,0 +1,214 @@
+//! Shared test harness for the storyboard tests: scripted conditions and actions on a fixed
+//! step of 0.1 s, small builders, and the run loop. Times are t_k = k · 0.1 s; scripts are
+//! written in step numbers k so that no float comparison decides a test.
+
+#![allow(dead_code)] // each test file uses a different part
+
+use std::collections::HashMap;
+
+use engine::storyboard::{
+    ActDesc, ActionDesc, ActionHost, ActionId, ActionStatus, ConditionDesc, ConditionEdge,
+    ConditionId, ConditionSource, EventDesc, ManeuverDesc, ManeuverGroupDesc, Priority, StateView,
+    StoryDesc, Storyboard, StoryboardDesc, TransitionRecord, TriggerDesc,
+};
+
+/// The step length of every test, in seconds.
+pub const DT: f64 = 0.1;
+
+/// The step number of time `t` on the 0.1 s grid.
+pub fn step_of(t: f64) -> i64 {
+    (t / DT).round() as i64
+}
+
+type Script = Box<dyn FnMut(i64, &StateView<'_>) -> bool>;
+
+/// Condition values given per condition as a function of the step number.
+#[derive(Default)]
+pub struct ScriptedConditions {
+    scripts: HashMap<ConditionId, Script>,
+    /// Every query, as (condition, step).
+    pub asked: Vec<(u32, i64)>,
+}
+
+impl ScriptedConditions {
+    /// Condition `id` is true at the steps where `f(k)` is.
+    pub fn set(&mut self, id: u32, f: impl Fn(i64) -> bool + 'static) -> &mut Self {
+        self.scripts
+            .insert(ConditionId(id), Box::new(move |k, _view| f(k)));
+        self
+    }
+
+    /// Condition `id` computed from the storyboard's states (StoryboardElementStateCondition).
+    pub fn set_with_view(
+        &mut self,
+        id: u32,
+        f: impl FnMut(i64, &StateView<'_>) -> bool + 'static,
+    ) -> &mut Self {
+        self.scripts.insert(ConditionId(id), Box::new(f));
+        self
+    }
+}
+
+impl ConditionSource for ScriptedConditions {
+    fn value(&mut self, id: ConditionId, time: f64, storyboard: &StateView<'_>) -> bool {
+        let k = step_of(time);
+        self.asked.push((id.0, k));
+        match self.scripts.get_mut(&id) {
+            Some(script) => script(k, storyboard),
+            None => panic!("test asked for unscripted condition {id:?}"),
+        }
+    }
+}
+
+/// Actions that end a given number of steps after they start (0: instantaneous).
+#[derive(Default)]
+pub struct ScriptedActions {
+    durations: HashMap<ActionId, i64>,
+    started_at: HashMap<ActionId, i64>,
+    stopped: Vec<ActionId>,
+    /// The current step number, set by [`run`].
+    pub now: i64,
+    /// Every call, e.g. "start 1 @3", "stop 1 @5".
+    pub calls: Vec<String>,
+}
+
+impl ScriptedActions {
+    /// Action `id` takes `steps` steps.
+    pub fn set(&mut self, id: u32, steps: i64) -> &mut Self {
+        self.durations.insert(ActionId(id), steps);
+        self
+    }
+}
+
+impl ActionHost for ScriptedActions {
+    fn start(&mut self, id: ActionId) {
+        self.calls.push(format!("start {} @{}", id.0, self.now));
+        self.started_at.insert(id, self.now);
+        self.stopped.retain(|&s| s != id);
+    }
+
+    fn stop(&mut self, id: ActionId) {
+        self.calls.push(format!("stop {} @{}", id.0, self.now));
+        self.stopped.push(id);
+    }
+
+    fn status(&self, id: ActionId) -> ActionStatus {
+        let duration = self.durations.get(&id).copied().unwrap_or(0);
+        match self.started_at.get(&id) {
+            Some(&start) if self.now >= start + duration => ActionStatus::Ended,
+            _ => ActionStatus::Running,
+        }
+    }
+}
+
+/// Runs steps k = 0..steps at t = k · DT and returns the transitions.
+pub fn run(
+    storyboard: &mut Storyboard,
+    steps: i64,
+    conditions: &mut ScriptedConditions,
+    actions: &mut ScriptedActions,
+) -> Vec<TransitionRecord> {
+    let mut log = Vec::new();
+    for k in 0..steps {
+        actions.now = k;
+        if let Err(error) = storyboard.step(k as f64 * DT, DT, conditions, actions, &mut log) {
+            panic!("step {k} failed: {error}");
+        }
+    }
+    log
+}
+
+/// The records as esmini-style lines, "0.300 E1 standbyState -> startTransition -> runningState".
+pub fn lines(log: &[TransitionRecord]) -> Vec<String> {
+    log.iter().map(ToString::to_string).collect()
+}
+
+/// The records of one element, as lines.
+pub fn lines_of(log: &[TransitionRecord], name: &str) -> Vec<String> {
+    log.iter()
+        .filter(|r| r.name == name)
+        .map(ToString::to_string)
+        .collect()
+}
+
+/// A condition slot with `edge` and `delay` on runtime condition `id`.
+pub fn cond(id: u32, edge: ConditionEdge, delay: f64) -> ConditionDesc {
+    ConditionDesc::new(&format!("C{id}"), ConditionId(id), edge, delay)
+}
+
+/// A trigger of one condition with edge `none` and no delay.
+pub fn when(id: u32) -> Option<TriggerDesc> {
+    Some(TriggerDesc::single(cond(id, ConditionEdge::None, 0.0)))
+}
+
+/// An action named `A{id}`.
+pub fn action(id: u32) -> ActionDesc {
+    ActionDesc {
+        name: format!("A{id}"),
+        id: ActionId(id),
+    }
+}
+
+/// An Event with one action.
+pub fn event(
+    name: &str,
+    priority: Priority,
+    maximum_execution_count: u32,
+    start_trigger: Option<TriggerDesc>,
+    action_id: u32,
+) -> EventDesc {
+    EventDesc {
+        name: name.to_owned(),
+        priority,
+        maximum_execution_count,
+        start_trigger,
+        actions: vec![action(action_id)],
+    }
+}
+
+/// A ManeuverGroup `MG` (count `maximum_execution_count`) with one Maneuver `M` of `events`.
+pub fn group(maximum_execution_count: u32, events: Vec<EventDesc>) -> ManeuverGroupDesc {
+    ManeuverGroupDesc {
+        name: "MG".to_owned(),
+        maximum_execution_count,
+        maneuvers: vec![ManeuverDesc {
+            name: "M".to_owned(),
+            events,
+        }],
+    }
+}
+
+/// Act `Act` with the given triggers and one group.
+pub fn act(
+    start_trigger: Option<TriggerDesc>,
+    stop_trigger: Option<TriggerDesc>,
+    group: ManeuverGroupDesc,
+) -> ActDesc {
+    ActDesc {
+        name: "Act".to_owned(),
+        start_trigger,
+        stop_trigger,
+        maneuver_groups: vec![group],
+    }
+}
+
+/// Storyboard `SB` with Story `S` holding `act`, no Init actions and no stop trigger.
+pub fn storyboard(act: ActDesc) -> StoryboardDesc {
+    StoryboardDesc {
+        name: "SB".to_owned(),
+        init_actions: Vec::new(),
+        stories: vec![StoryDesc {
+            name: "S".to_owned(),
+            acts: vec![act],
+        }],
+        stop_trigger: None,
+    }
+}
+
+/// Builds the storyboard; a test description is valid by construction.
+pub fn build(desc: &StoryboardDesc) -> Storyboard {
+    match Storyboard::new(desc) {
+        Ok(storyboard) => storyboard,
+        Err(error) => panic!("test storyboard rejected: {error}"),
+    }
+}
