@@ -1,0 +1,164 @@
+//! Errors of reading and expanding an OpenSCENARIO 1.3 §9.5 parameter value distribution file,
+//! each with the file and the 1-based row:column of the element or attribute at fault.
+
+use std::path::PathBuf;
+
+/// A 1-based row and column in a file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub struct TextPos {
+    /// Row, from 1.
+    pub row: u32,
+    /// Column in characters, from 1.
+    pub col: u32,
+}
+
+impl From<roxmltree::TextPos> for TextPos {
+    fn from(p: roxmltree::TextPos) -> Self {
+        Self {
+            row: p.row,
+            col: p.col,
+        }
+    }
+}
+
+impl std::fmt::Display for TextPos {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}:{}", self.row, self.col)
+    }
+}
+
+/// What went wrong. Each variant's Display reads "expected X, found Y".
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum DistributionErrorKind {
+    /// The file could not be read.
+    Io {
+        /// The operating system's message.
+        message: String,
+    },
+    /// The file is not well-formed XML.
+    Xml {
+        /// roxmltree's message, without its position.
+        message: String,
+    },
+    /// An element where another is required.
+    UnexpectedElement {
+        /// The element(s) allowed here.
+        expected: String,
+        /// The element found.
+        found: String,
+    },
+    /// A required child element is missing.
+    MissingElement {
+        /// The parent element.
+        parent: String,
+        /// The missing child.
+        expected: &'static str,
+    },
+    /// A required attribute is missing.
+    MissingAttribute {
+        /// The element.
+        element: String,
+        /// The attribute.
+        attribute: &'static str,
+    },
+    /// An attribute whose value is out of its domain.
+    InvalidAttribute {
+        /// The element.
+        element: String,
+        /// The attribute.
+        attribute: &'static str,
+        /// What the value must be.
+        expected: &'static str,
+        /// The value as written.
+        found: String,
+    },
+    /// A distribution oscsim cannot sample (`UserDefinedDistribution`).
+    Unsupported {
+        /// The element.
+        element: String,
+        /// Its `type` attribute.
+        kind: String,
+    },
+    /// A parameter named by two distributions.
+    DuplicateParameter {
+        /// The parameter.
+        name: String,
+    },
+    /// More concrete parameter sets than [`MAX_RUNS`](super::MAX_RUNS).
+    TooManyRuns {
+        /// The limit.
+        limit: usize,
+        /// How many the distributions would give (saturating).
+        found: u128,
+    },
+    /// A truncated distribution that gave no sample inside its `Range`.
+    RangeUnreachable {
+        /// How many draws were tried for one value.
+        attempts: u32,
+    },
+}
+
+impl std::fmt::Display for DistributionErrorKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Io { message } => write!(f, "expected a readable file, found {message}"),
+            Self::Xml { message } => write!(f, "expected well-formed XML, found {message}"),
+            Self::UnexpectedElement { expected, found } => write!(f, "expected {expected}, found <{found}>"),
+            Self::MissingElement { parent, expected } => {
+                write!(f, "expected <{expected}> in <{parent}>, found none")
+            }
+            Self::MissingAttribute { element, attribute } => {
+                write!(f, "expected attribute {attribute} on <{element}>, found none")
+            }
+            Self::InvalidAttribute { element, attribute, expected, found } => {
+                write!(f, "expected {expected} for {element}@{attribute}, found '{found}'")
+            }
+            Self::Unsupported { element, kind } => {
+                write!(f, "expected a distribution oscsim can sample, found <{element}> of type '{kind}'")
+            }
+            Self::DuplicateParameter { name } => {
+                write!(f, "expected each parameter in one distribution only, found '{name}' again")
+            }
+            Self::TooManyRuns { limit, found } => {
+                write!(f, "expected at most {limit} parameter sets, found {found}")
+            }
+            Self::RangeUnreachable { attempts } => write!(
+                f,
+                "expected a Range the distribution reaches, found no sample inside it in {attempts} draws"
+            ),
+        }
+    }
+}
+
+/// An error in a parameter value distribution file: kind, file and position.
+///
+/// Display: "expected X, found Y at file:row:col".
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{kind} at {}:{pos}", file.display())]
+pub struct DistributionError {
+    kind: DistributionErrorKind,
+    file: PathBuf,
+    pos: TextPos,
+}
+
+impl DistributionError {
+    pub(crate) fn new(kind: DistributionErrorKind, file: PathBuf, pos: TextPos) -> Self {
+        Self { kind, file, pos }
+    }
+
+    /// What went wrong.
+    pub fn kind(&self) -> &DistributionErrorKind {
+        &self.kind
+    }
+
+    /// The distribution file.
+    pub fn file(&self) -> &std::path::Path {
+        &self.file
+    }
+
+    /// Where in the file (1:1 for errors of the whole file).
+    pub fn pos(&self) -> TextPos {
+        self.pos
+    }
+}
