@@ -7,6 +7,7 @@
 //! - [`rigid_body::RigidBodyState`]: reference point → bounding-box centre, velocity,
 //!   acceleration (`MovingObject.base`).
 //! - [`classification`], [`color`]: OpenSCENARIO categories and colours → OSI.
+//! - [`entity`]: a scenario entity → `MovingObject` / `StationaryObject` with the OSI rules.
 //! - [`trace`]: the [`trace::TraceWriter`] seam, `.osi` and `.mcap` writers and readers,
 //!   the OSI file naming convention, and [`trace::TraceFile`] for `--osi PATH`.
 //!
@@ -26,6 +27,7 @@
 
 pub mod classification;
 pub mod color;
+pub mod entity;
 mod error;
 pub mod ids;
 pub mod osi3;

@@ -1,0 +1,192 @@
+//! From a scenario entity to an ASAM OSI 3.8 `MovingObject` or `StationaryObject`, with
+//! the OSI rules the object must satisfy (osi_object.proto, OSI 3.8.0):
+//! - `id` from the run's [`IdAllocator`], so it is globally unique and stable;
+//! - `base` from [`RigidBodyState`]: bounding-box centre, world frame;
+//! - `TYPE_VEHICLE` carries `vehicle_attributes` (with `bbcenter_to_rear`) and
+//!   `vehicle_classification`; `TYPE_PEDESTRIAN` carries `pedestrian_attributes`;
+//! - lanes go to `moving_object_classification.assigned_lane_id` (the top-level
+//!   `assigned_lane_id` is deprecated);
+//! - `source_reference` = {reference: scenario file, type: `net.asam.openscenario`,
+//!   identifier: [`Vehicle` | `Pedestrian` | `MiscObject`, entity name]}.
+
+use crate::classification::{pedestrian_type, stationary_type, vehicle_type};
+use crate::error::Error;
+use crate::ids::{IdAllocator, IdKey};
+use crate::osi3::moving_object::{
+    MovingObjectClassification, PedestrianAttributes, Type as MovingType, VehicleAttributes,
+    VehicleClassification,
+};
+use crate::osi3::stationary_object::Classification as StationaryClassification;
+use crate::osi3::{
+    BaseStationary, ColorDescription, Dimension3d, ExternalReference, Identifier, MovingObject,
+    Orientation3d, StationaryObject, Vector3d,
+};
+use crate::rigid_body::RigidBodyState;
+
+/// `ExternalReference.type` of OpenSCENARIO sources.
+pub const OPENSCENARIO_REFERENCE_TYPE: &str = "net.asam.openscenario";
+
+/// What kind of scenario entity, with its OpenSCENARIO category.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EntityKind<'a> {
+    /// A `Vehicle` with its `vehicleCategory`.
+    Vehicle {
+        /// `vehicleCategory` (e.g. `car`).
+        category: &'a str,
+    },
+    /// A `Pedestrian` with its `pedestrianCategory`.
+    Pedestrian {
+        /// `pedestrianCategory` (e.g. `pedestrian`).
+        category: &'a str,
+    },
+}
+
+/// The static description of a scenario entity.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EntityInfo<'a> {
+    /// Entity name (`ScenarioObject/@name`).
+    pub name: &'a str,
+    /// Kind and category.
+    pub kind: EntityKind<'a>,
+    /// URI or path of the scenario file, for `source_reference.reference`.
+    pub scenario_file: Option<&'a str>,
+    /// `model3d` attribute, for `model_reference`.
+    pub model3d: Option<&'a str>,
+    /// Colour (see [`crate::color`]).
+    pub color: Option<ColorDescription>,
+    /// Entity name of the trailer hitched to this vehicle, if any.
+    pub trailer: Option<&'a str>,
+}
+
+fn source_reference(file: Option<&str>, entity_type: &str, name: &str) -> ExternalReference {
+    ExternalReference {
+        reference: file.map(str::to_string),
+        r#type: Some(OPENSCENARIO_REFERENCE_TYPE.to_string()),
+        identifier: vec![entity_type.to_string(), name.to_string()],
+    }
+}
+
+/// The `MovingObject` of `info` in state `state`, on lanes `lanes` (OSI lane ids).
+pub fn moving_object(
+    ids: &mut IdAllocator,
+    info: &EntityInfo<'_>,
+    state: &RigidBodyState,
+    lanes: &[Identifier],
+) -> Result<MovingObject, Error> {
+    let (object_type, vehicle, entity_type) = match info.kind {
+        EntityKind::Vehicle { category } => (
+            MovingType::Vehicle,
+            Some(vehicle_type(category)?),
+            "Vehicle",
+        ),
+        EntityKind::Pedestrian { category } => {
+            let (t, v) = pedestrian_type(category)?;
+            (t, v, "Pedestrian")
+        }
+    };
+    let mut object = MovingObject {
+        id: Some(ids.id(IdKey::MovingObject(info.name.to_string()))),
+        base: Some(state.base_moving()),
+        r#type: Some(object_type as i32),
+        model_reference: info.model3d.map(str::to_string),
+        moving_object_classification: Some(MovingObjectClassification {
+            assigned_lane_id: lanes.to_vec(),
+            ..Default::default()
+        }),
+        source_reference: vec![source_reference(info.scenario_file, entity_type, info.name)],
+        color_description: info.color,
+        ..Default::default()
+    };
+    if let Some(vehicle) = vehicle {
+        let trailer_id = info
+            .trailer
+            .map(|t| ids.id(IdKey::MovingObject(t.to_string())));
+        object.vehicle_classification = Some(VehicleClassification {
+            r#type: Some(vehicle as i32),
+            has_trailer: Some(trailer_id.is_some()),
+            trailer_id,
+            ..Default::default()
+        });
+        object.vehicle_attributes = Some(VehicleAttributes {
+            bbcenter_to_rear: Some(state.bbcenter_to_rear()),
+            ..Default::default()
+        });
+    }
+    if object_type == MovingType::Pedestrian {
+        // The skeleton root is not modelled: place it at the bounding-box centre.
+        object.pedestrian_attributes = Some(PedestrianAttributes {
+            bbcenter_to_root: Some(Vector3d {
+                x: Some(0.0),
+                y: Some(0.0),
+                z: Some(0.0),
+            }),
+            skeleton_bone: Vec::new(),
+        });
+    }
+    Ok(object)
+}
+
+/// A `MiscObject` as a `StationaryObject`; `position` is the bounding-box centre in the
+/// world frame, `orientation` yaw, pitch, roll, `dimension` length, width, height.
+pub struct MiscObjectInfo<'a> {
+    /// Entity name.
+    pub name: &'a str,
+    /// `miscObjectCategory`.
+    pub category: &'a str,
+    /// URI or path of the scenario file.
+    pub scenario_file: Option<&'a str>,
+    /// `model3d` attribute.
+    pub model3d: Option<&'a str>,
+    /// Colour.
+    pub color: Option<ColorDescription>,
+    /// Bounding-box centre, world frame (m).
+    pub position: [f64; 3],
+    /// Yaw, pitch, roll (rad).
+    pub orientation: [f64; 3],
+    /// Length, width, height (m).
+    pub dimension: [f64; 3],
+}
+
+/// The `StationaryObject` of a MiscObject.
+pub fn stationary_object(
+    ids: &mut IdAllocator,
+    info: &MiscObjectInfo<'_>,
+    lanes: &[Identifier],
+) -> Result<StationaryObject, Error> {
+    let [x, y, z] = info.position;
+    let [yaw, pitch, roll] = info.orientation;
+    let [length, width, height] = info.dimension;
+    Ok(StationaryObject {
+        id: Some(ids.id(IdKey::StationaryObject(info.name.to_string()))),
+        base: Some(BaseStationary {
+            dimension: Some(Dimension3d {
+                length: Some(length),
+                width: Some(width),
+                height: Some(height),
+            }),
+            position: Some(Vector3d {
+                x: Some(x),
+                y: Some(y),
+                z: Some(z),
+            }),
+            orientation: Some(Orientation3d {
+                roll: Some(roll),
+                pitch: Some(pitch),
+                yaw: Some(yaw),
+            }),
+            ..Default::default()
+        }),
+        classification: Some(StationaryClassification {
+            r#type: Some(stationary_type(info.category)? as i32),
+            assigned_lane_id: lanes.to_vec(),
+            ..Default::default()
+        }),
+        model_reference: info.model3d.map(str::to_string),
+        source_reference: vec![source_reference(
+            info.scenario_file,
+            "MiscObject",
+            info.name,
+        )],
+        color_description: info.color,
+    })
+}
