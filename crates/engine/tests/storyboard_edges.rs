@@ -14,20 +14,9 @@ use storyboard_support::*;
 /// The step at which the Act starts within 20 steps, if it does, with condition C1 given by
 /// `raw` and edge `edge`.
 fn act_start_step(edge: ConditionEdge, raw: impl Fn(i64) -> bool + 'static) -> Option<i64> {
-    let desc = storyboard(act(
-        Some(TriggerDesc::single(cond(1, edge, 0.0))),
-        None,
-        group(1, vec![event("E", Priority::Parallel, 1, None, 1)]),
-    ));
-    let mut sb = build(&desc);
     let mut conditions = ScriptedConditions::default();
     conditions.set(1, raw);
-    let mut actions = ScriptedActions::default();
-    actions.set(1, 100);
-    let log = run(&mut sb, 20, &mut conditions, &mut actions);
-    log.iter()
-        .find(|r| r.name == "Act")
-        .map(|r| step_of(r.time))
+    storyboard_support::act_start_step(TriggerDesc::single(cond(1, edge, 0.0)), &mut conditions, 20)
 }
 
 #[test]

@@ -212,3 +212,24 @@ pub fn build(desc: &StoryboardDesc) -> Storyboard {
         Err(error) => panic!("test storyboard rejected: {error}"),
     }
 }
+
+/// Runs a storyboard whose Act waits for `trigger` (one Event, no trigger, action 1 lasting 100
+/// steps) for `steps` steps and returns the step at which the Act started, if it did.
+pub fn act_start_step(
+    trigger: TriggerDesc,
+    conditions: &mut ScriptedConditions,
+    steps: i64,
+) -> Option<i64> {
+    let desc = storyboard(act(
+        Some(trigger),
+        None,
+        group(1, vec![event("E", Priority::Parallel, 1, None, 1)]),
+    ));
+    let mut sb = build(&desc);
+    let mut actions = ScriptedActions::default();
+    actions.set(1, 100);
+    let log = run(&mut sb, steps, conditions, &mut actions);
+    log.iter()
+        .find(|r| r.name == "Act")
+        .map(|r| step_of(r.time))
+}
