@@ -81,11 +81,7 @@ fn init_is_running_until_its_last_action_ends() {
             name: "I".to_owned(),
             id: ActionId(5),
         }],
-        ..storyboard(act(
-            None,
-            None,
-            group(1, vec![event("E", Priority::Parallel, 1, None, 1)]),
-        ))
+        ..storyboard(simple_act())
     };
     let mut sb = build(&desc);
     let mut conditions = ScriptedConditions::default();

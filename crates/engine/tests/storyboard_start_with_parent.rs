@@ -14,11 +14,7 @@ fn children_without_start_trigger_start_with_their_parent() {
     // with the storyboard; the instantaneous action (0 steps) ends in the same step, and the
     // ends propagate up to the Story. The Storyboard itself only ends by its stop trigger
     // (§7.2.1), so it stays running.
-    let desc = storyboard(act(
-        None,
-        None,
-        group(1, vec![event("E", Priority::Parallel, 1, None, 1)]),
-    ));
+    let desc = storyboard(simple_act());
     let mut sb = build(&desc);
     let mut conditions = ScriptedConditions::default();
     let mut actions = ScriptedActions::default();
@@ -92,16 +88,8 @@ fn children_of_a_just_started_act_are_handled_in_the_same_step() {
     );
     // Only triggers being evaluated are asked for: the Act's start trigger while the Act waits
     // (steps 0–3), E1's once, in the Act's step.
-    let asked = |id: u32| -> Vec<i64> {
-        conditions
-            .asked
-            .iter()
-            .filter(|(c, _)| *c == id)
-            .map(|&(_, k)| k)
-            .collect()
-    };
-    assert_eq!(asked(1), [0, 1, 2, 3]);
-    assert_eq!(asked(2), [3]);
+    assert_eq!(conditions.asked_steps(1), [0, 1, 2, 3]);
+    assert_eq!(conditions.asked_steps(2), [3]);
 }
 
 #[test]
@@ -109,14 +97,7 @@ fn esmini_also_starts_an_event_in_the_step_of_its_act() {
     // esmini 3.6.0's reference log of cut-in.xosc: OverTakerStartSpeedEvent waits for the
     // startTransition of CutInAndBrakeAct and starts in the same step (0.050 s). The test above
     // shows oscsim does the same.
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/corpus/reference/esmini/cut-in.events.txt"
-    );
-    let text = match std::fs::read_to_string(path) {
-        Ok(text) => text,
-        Err(error) => panic!("cannot read {path}: {error}"),
-    };
+    let text = esmini_events("cut-in");
     let start_time = |element: &str| -> Option<String> {
         text.lines()
             .find(|line| {

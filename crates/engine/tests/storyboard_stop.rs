@@ -78,12 +78,7 @@ fn act_stop_trigger_is_evaluated_only_while_the_act_runs() {
             "0.600 Act runningState -> stopTransition -> completeState",
         ]
     );
-    let stop_asked: Vec<i64> = conditions
-        .asked
-        .iter()
-        .filter(|(c, _)| *c == 9)
-        .map(|&(_, k)| k)
-        .collect();
+    let stop_asked = conditions.asked_steps(9);
     assert_eq!(stop_asked, [6]);
 }
 

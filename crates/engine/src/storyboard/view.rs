@@ -36,6 +36,11 @@ impl<'a> StateView<'a> {
         self.nodes.is_empty()
     }
 
+    /// All element ids, in document order.
+    pub fn ids(&self) -> impl Iterator<Item = ElementId> {
+        (0..self.nodes.len()).map(|i| ElementId(i as u32))
+    }
+
     /// The first element named `name`, in document order.
     pub fn find(&self, name: &str) -> Option<ElementId> {
         self.find_all(name).next()
@@ -47,9 +52,7 @@ impl<'a> StateView<'a> {
         'a: 'n,
     {
         let nodes = self.nodes;
-        (0..nodes.len())
-            .filter(move |&i| nodes[i].name == name)
-            .map(|i| ElementId(i as u32))
+        self.ids().filter(move |id| nodes[id.index()].name == name)
     }
 
     /// The first element of `kind` named `name` (the XSD's `storyboardElementType` plus

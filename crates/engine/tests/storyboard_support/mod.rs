@@ -49,6 +49,17 @@ impl ScriptedConditions {
     }
 }
 
+impl ScriptedConditions {
+    /// The steps at which condition `id` was asked for, in order.
+    pub fn asked_steps(&self, id: u32) -> Vec<i64> {
+        self.asked
+            .iter()
+            .filter(|&&(c, _)| c == id)
+            .map(|&(_, k)| k)
+            .collect()
+    }
+}
+
 impl ConditionSource for ScriptedConditions {
     fn value(&mut self, id: ConditionId, time: f64, storyboard: &StateView<'_>) -> bool {
         let k = step_of(time);
@@ -232,4 +243,26 @@ pub fn act_start_step(
     log.iter()
         .find(|r| r.name == "Act")
         .map(|r| step_of(r.time))
+}
+
+/// Act `Act` without triggers whose group `MG` (count 1) has one Maneuver `M` with one Event
+/// `E` (parallel, count 1, no trigger) running action 1.
+pub fn simple_act() -> ActDesc {
+    act(
+        None,
+        None,
+        group(1, vec![event("E", Priority::Parallel, 1, None, 1)]),
+    )
+}
+
+/// esmini 3.6.0's reference transition log `NAME.events.txt` from the shared corpus.
+pub fn esmini_events(name: &str) -> String {
+    let path = format!(
+        "{}/../../../shared/corpus/reference/esmini/{name}.events.txt",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    match std::fs::read_to_string(&path) {
+        Ok(text) => text,
+        Err(error) => panic!("cannot read {path}: {error}"),
+    }
 }
