@@ -21,10 +21,13 @@ pub enum DomainErrorKind {
     NotOnLane,
     /// `on_crossing` (§8.7.16): the point lies on a road that is not a junction's
     /// connecting road.
-    #[error("expected a position on a junction's connecting road, found road {road_id}")]
+    #[error(
+        "expected a position on a junction's connecting road, found {}",
+        .road_id.as_deref().map_or("no road".to_string(), |r| format!("road {r}"))
+    )]
     NotOnCrossing {
-        /// The road the point is on.
-        road_id: String,
+        /// The road the point is on, if any.
+        road_id: Option<String>,
     },
     /// `distance_along_route` (§8.7.4.1.1): the object is on none of the route's elements.
     #[error("expected a position on the route, found one off it")]
@@ -43,6 +46,16 @@ pub enum DomainErrorKind {
     InvalidRoute {
         /// What was found instead, e.g. `no element` or `unknown road 7`.
         found: String,
+    },
+    /// A lane position that the network does not have (§8.7.18 vehicle_group placement).
+    #[error("expected a position in lane {lane_id} of road {road_id}, found s = {s} outside it")]
+    LanePosition {
+        /// OpenDRIVE road id.
+        road_id: String,
+        /// OpenDRIVE lane id.
+        lane_id: i32,
+        /// The s asked for, m.
+        s: f64,
     },
     /// A parameter of an actor is out of its domain (§8.7.9 bounding_box dimensions are
     /// finite and non-negative; §8.7.18 a vehicle group needs a positive spacing).

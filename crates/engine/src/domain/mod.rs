@@ -13,9 +13,18 @@
 //! | `vehicle` | §8.7.6 vehicle, §8.7.10 axle |
 //! | `object_distance` | §8.7.2.1.1 object_distance() |
 //! | `time_to_collision` | §8.7.5.1.1 time_to_collision() |
+//! | `road_locate` | an object's road position; one road's s/t on another's axes |
+//! | `road_path` | shortest distance along roads between two road positions |
+//! | `route_coords` | §8.7.2.1.2–8.7.2.1.4 get_s_coord(), get_t_coord(), get_route_point() |
+//! | `route` | the route / compound_route argument of §8.7.4.1.1 |
+//! | `distance_along_route` | §8.7.4.1.1 distance_along_route() |
+//! | `time_headway` | §8.7.5.1.2 time_headway() |
+//! | `space_gap` | §8.7.5.1.3 space_gap() |
+//! | `vehicle_group` | §8.7.18.1 vehicle_group (non-normative): a single-lane formation |
 
 mod bounding_box;
 mod color;
+mod distance_along_route;
 mod enums;
 mod error;
 mod footprint;
@@ -23,8 +32,15 @@ mod frame;
 mod kinematics;
 mod object;
 mod object_distance;
+mod road_locate;
+mod road_path;
+mod route;
+mod route_coords;
+mod space_gap;
+mod time_headway;
 mod time_to_collision;
 mod vehicle;
+mod vehicle_group;
 
 pub use bounding_box::BoundingBox;
 pub use color::Color;
@@ -38,4 +54,7 @@ pub use object::{
     Actor, Animal, MovableObject, Person, Physical, PhysicalObject, StationaryObject,
     TrafficParticipant,
 };
+pub use route::{Route, RouteStretch};
+pub use route_coords::{RouteElement, RoutePoint};
 pub use vehicle::{Axle, Vehicle};
+pub use vehicle_group::VehicleGroup;
