@@ -1,8 +1,57 @@
 //! ASAM OpenSCENARIO 1.0–1.3 (XML) scenario model for oscsim.
 //!
-//! Parses `.xosc` files into typed, resolved data with source positions.
+//! [`Scenario::load`] parses a `.xosc` file (on roxmltree) into typed data: every `$name`
+//! parameter and `${…}` expression resolved (OpenSCENARIO 1.3 §9.1–9.2), every catalog
+//! reference replaced by its entry with the reference's parameter assignments (§9.4), entity
+//! selections expanded and every entity reference checked (§7.2–7.3), deprecated 1.0–1.2
+//! forms mapped onto the 1.3 model with a [`Warning`]. Every action, condition and position
+//! of 1.3 is typed data with units; model elements the runtime reports on carry a
+//! [`SourcePos`]. The runtime reads only this model, never XML.
+//!
+//! Errors ([`Error`], kind [`ErrorKind`]) read "expected X, found Y at file:line:col".
+//!
+//! ```no_run
+//! let scenario = scenario::Scenario::load(std::path::Path::new("cut-in.xosc"))?;
+//! for w in &scenario.warnings {
+//!     eprintln!("warning: {w}");
+//! }
+//! # Ok::<(), scenario::Error>(())
+//! ```
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `model` | the typed scenario, grouped by the standard's chapters |
+//! | `reader` | XML → model, one reader per XSD element |
+//! | `expr` | `${…}` expressions (§9.2) |
+//! | `distribution` | parameter value distributions (§9.5) |
+//! | `source`, `error` | positions and errors |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
 pub mod distribution;
+mod error;
 pub mod expr;
+mod model;
+mod reader;
+mod source;
+
+use std::path::Path;
+
+pub use error::{Error, ErrorKind, Result, Warning};
+pub use model::*;
+pub use reader::scenario::MAX_FILE_BYTES;
+pub use source::SourcePos;
+
+impl Scenario {
+    /// Loads the scenario at `path` with its catalogs, checking that its road network file
+    /// exists. A ParameterValueDistribution file loads its ScenarioFile.
+    pub fn load(path: &Path) -> Result<Scenario> {
+        reader::scenario::load(path, &[])
+    }
+
+    /// As [`Scenario::load`], with global parameters overridden by (name, value) pairs (the
+    /// values are parsed as the declared types; an undeclared name is an error).
+    pub fn load_with_parameters(path: &Path, overrides: &[(String, String)]) -> Result<Scenario> {
+        reader::scenario::load(path, overrides)
+    }
+}

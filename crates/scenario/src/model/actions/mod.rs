@@ -1,0 +1,9 @@
+mod appearance;
+mod global;
+mod private;
+mod traffic;
+
+pub use appearance::*;
+pub use global::*;
+pub use private::*;
+pub use traffic::*;

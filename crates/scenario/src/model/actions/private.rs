@@ -1,0 +1,363 @@
+//! Private actions (OpenSCENARIO 1.3 §7.7.2 "Private actions", XSD `PrivateAction` and its
+//! choices): longitudinal, lateral, visibility, synchronize, controller, teleport, routing,
+//! appearance, trailer. Speeds m/s, distances m, times s, angles rad.
+
+use crate::model::{AnimationAction, LightStateAction, OverrideControllerValueAction};
+use crate::model::{
+    Controller, CoordinateSystem, DynamicsDimension, DynamicsShape, FollowingMode,
+    LateralDisplacement, LongitudinalDisplacement, Position, ReferenceContext, Route,
+    SpeedTargetValueType, Trajectory,
+};
+
+/// Private actions (XSD `PrivateAction`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum PrivateAction {
+    /// LongitudinalAction.
+    Longitudinal(LongitudinalAction),
+    /// LateralAction.
+    Lateral(LateralAction),
+    /// VisibilityAction.
+    Visibility(VisibilityAction),
+    /// SynchronizeAction.
+    Synchronize(Box<SynchronizeAction>),
+    /// ControllerAction (the deprecated direct ActivateControllerAction reads as its
+    /// ActivateController form).
+    Controller(Box<ControllerAction>),
+    /// TeleportAction.
+    Teleport(Position),
+    /// RoutingAction.
+    Routing(Box<RoutingAction>),
+    /// AppearanceAction (1.2+).
+    Appearance(AppearanceAction),
+    /// TrailerAction (1.3).
+    Trailer(TrailerAction),
+}
+
+/// A transition (XSD `TransitionDynamics`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TransitionDynamics {
+    /// Shape.
+    pub dynamics_shape: DynamicsShape,
+    /// What `value` measures.
+    pub dynamics_dimension: DynamicsDimension,
+    /// Duration (s), distance (m) or rate (unit/s).
+    pub value: f64,
+    /// followingMode (1.2+).
+    pub following_mode: Option<FollowingMode>,
+}
+
+/// Limits for distance keeping (XSD `DynamicConstraints`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DynamicConstraints {
+    /// m/s².
+    pub max_acceleration: Option<f64>,
+    /// m/s³ (1.2+).
+    pub max_acceleration_rate: Option<f64>,
+    /// m/s².
+    pub max_deceleration: Option<f64>,
+    /// m/s³ (1.2+).
+    pub max_deceleration_rate: Option<f64>,
+    /// m/s.
+    pub max_speed: Option<f64>,
+}
+
+/// Longitudinal actions (XSD `LongitudinalAction`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum LongitudinalAction {
+    /// SpeedAction.
+    Speed {
+        /// SpeedActionDynamics.
+        dynamics: TransitionDynamics,
+        /// SpeedActionTarget.
+        target: SpeedTarget,
+    },
+    /// LongitudinalDistanceAction.
+    LongitudinalDistance {
+        /// Reference entity.
+        entity_ref: String,
+        /// Keep it up.
+        continuous: bool,
+        /// Distance, m (exclusive with time_gap).
+        distance: Option<f64>,
+        /// Time gap, s.
+        time_gap: Option<f64>,
+        /// Between bounding boxes.
+        freespace: bool,
+        /// Displacement (1.1+).
+        displacement: Option<LongitudinalDisplacement>,
+        /// Frame (1.1+).
+        coordinate_system: Option<CoordinateSystem>,
+        /// Limits.
+        dynamic_constraints: Option<DynamicConstraints>,
+    },
+    /// SpeedProfileAction (1.2+).
+    SpeedProfile {
+        /// Reference entity for relative speeds.
+        entity_ref: Option<String>,
+        /// followingMode.
+        following_mode: FollowingMode,
+        /// Limits.
+        dynamic_constraints: Option<DynamicConstraints>,
+        /// Entries: (speed m/s, time s).
+        entries: Vec<SpeedProfileEntry>,
+    },
+}
+
+/// A speed profile entry (XSD `SpeedProfileEntry`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpeedProfileEntry {
+    /// Speed, m/s.
+    pub speed: f64,
+    /// Time to reach it, s.
+    pub time: Option<f64>,
+}
+
+/// A speed target (XSD `SpeedActionTarget`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum SpeedTarget {
+    /// AbsoluteTargetSpeed, m/s.
+    Absolute(f64),
+    /// RelativeTargetSpeed.
+    Relative {
+        /// Reference entity.
+        entity_ref: String,
+        /// Delta (m/s) or factor.
+        value: f64,
+        /// Delta or factor.
+        speed_target_value_type: SpeedTargetValueType,
+        /// Keep following the reference's speed.
+        continuous: bool,
+    },
+}
+
+/// Lateral actions (XSD `LateralAction`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum LateralAction {
+    /// LaneChangeAction.
+    LaneChange {
+        /// Offset in the target lane, m.
+        target_lane_offset: Option<f64>,
+        /// LaneChangeActionDynamics.
+        dynamics: TransitionDynamics,
+        /// LaneChangeTarget.
+        target: LaneChangeTarget,
+    },
+    /// LaneOffsetAction.
+    LaneOffset {
+        /// Keep it up.
+        continuous: bool,
+        /// Shape.
+        dynamics_shape: DynamicsShape,
+        /// Maximum lateral acceleration, m/s².
+        max_lateral_acc: Option<f64>,
+        /// LaneOffsetTarget.
+        target: LaneOffsetTarget,
+    },
+    /// LateralDistanceAction.
+    LateralDistance {
+        /// Reference entity.
+        entity_ref: String,
+        /// Keep it up.
+        continuous: bool,
+        /// Distance, m.
+        distance: Option<f64>,
+        /// Between bounding boxes.
+        freespace: bool,
+        /// Displacement (1.1+).
+        displacement: Option<LateralDisplacement>,
+        /// Frame (1.1+).
+        coordinate_system: Option<CoordinateSystem>,
+        /// Limits.
+        dynamic_constraints: Option<DynamicConstraints>,
+    },
+}
+
+/// A lane change target (XSD `LaneChangeTarget`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum LaneChangeTarget {
+    /// RelativeTargetLane: lanes relative to an entity's lane (positive to the left).
+    Relative {
+        /// Reference entity.
+        entity_ref: String,
+        /// Lanes.
+        value: i32,
+    },
+    /// AbsoluteTargetLane: an OpenDRIVE lane id.
+    Absolute(String),
+}
+
+/// A lane offset target (XSD `LaneOffsetTarget`), m.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum LaneOffsetTarget {
+    /// RelativeTargetLaneOffset: offset relative to an entity, m.
+    Relative {
+        /// Reference entity.
+        entity_ref: String,
+        /// m.
+        value: f64,
+    },
+    /// AbsoluteTargetLaneOffset, m from the lane centre.
+    Absolute(f64),
+}
+
+/// VisibilityAction (XSD `VisibilityAction`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct VisibilityAction {
+    /// Visible in image generators.
+    pub graphics: bool,
+    /// Visible to sensors.
+    pub sensors: bool,
+    /// Visible to traffic.
+    pub traffic: bool,
+    /// SensorReferenceSet names (1.2+).
+    pub sensor_references: Vec<String>,
+}
+
+/// SynchronizeAction (XSD `SynchronizeAction`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SynchronizeAction {
+    /// The master entity.
+    pub master_entity_ref: String,
+    /// TargetPositionMaster.
+    pub target_position_master: Position,
+    /// TargetPosition.
+    pub target_position: Position,
+    /// Tolerance at the master's position, m (1.1+).
+    pub target_tolerance_master: Option<f64>,
+    /// Tolerance at the own position, m (1.1+).
+    pub target_tolerance: Option<f64>,
+    /// FinalSpeed.
+    pub final_speed: Option<FinalSpeed>,
+}
+
+/// FinalSpeed of a SynchronizeAction (XSD `FinalSpeed`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum FinalSpeed {
+    /// AbsoluteSpeed, m/s.
+    Absolute {
+        /// m/s.
+        value: f64,
+        /// Steady state before the target (1.1+).
+        steady_state: Option<SteadyState>,
+    },
+    /// RelativeSpeedToMaster.
+    RelativeToMaster {
+        /// Delta m/s or factor.
+        value: f64,
+        /// Delta or factor.
+        speed_target_value_type: SpeedTargetValueType,
+        /// Steady state (1.1+).
+        steady_state: Option<SteadyState>,
+    },
+}
+
+/// Steady state before a synchronisation point (XSD group `SteadyState`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum SteadyState {
+    /// TargetDistanceSteadyState, m.
+    Distance(f64),
+    /// TargetTimeSteadyState, s.
+    Time(f64),
+}
+
+/// Controller actions (XSD `ControllerAction`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ControllerAction {
+    /// AssignControllerAction.
+    Assign {
+        /// The controller (inline, from a catalog, or from an ObjectController).
+        controller: Controller,
+        /// ObjectController@name when given that way (1.3).
+        object_controller_name: Option<String>,
+        /// Activation per domain (1.2+): lateral, longitudinal, animation, lighting.
+        activate: ControllerDomains,
+    },
+    /// OverrideControllerValueAction.
+    OverrideValues(OverrideControllerValueAction),
+    /// ActivateControllerAction.
+    Activate {
+        /// objectControllerRef (1.3) or the deprecated controllerRef.
+        object_controller_ref: Option<String>,
+        /// Domains to (de)activate.
+        domains: ControllerDomains,
+    },
+}
+
+/// Per-domain switches (absent: unchanged).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ControllerDomains {
+    /// Lateral.
+    pub lateral: Option<bool>,
+    /// Longitudinal.
+    pub longitudinal: Option<bool>,
+    /// Animation (1.2+).
+    pub animation: Option<bool>,
+    /// Lighting (1.2+).
+    pub lighting: Option<bool>,
+}
+
+/// Routing actions (XSD `RoutingAction`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum RoutingAction {
+    /// AssignRouteAction.
+    AssignRoute(Route),
+    /// FollowTrajectoryAction.
+    FollowTrajectory {
+        /// The trajectory (TrajectoryRef, or the deprecated direct children).
+        trajectory: Box<Trajectory>,
+        /// TimeReference: None, or Timing.
+        time_reference: Option<Timing>,
+        /// TrajectoryFollowingMode.
+        following_mode: FollowingMode,
+        /// initialDistanceOffset, m (1.1+).
+        initial_distance_offset: Option<f64>,
+    },
+    /// AcquirePositionAction.
+    AcquirePosition(Position),
+    /// RandomRouteAction (1.3).
+    RandomRoute,
+}
+
+/// Timing of a trajectory (XSD `Timing`): t_sim = (t_traj · scale) + offset.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Timing {
+    /// Absolute or relative to the action's start.
+    pub domain_absolute_relative: ReferenceContext,
+    /// Offset, s.
+    pub offset: f64,
+    /// Scale.
+    pub scale: f64,
+}
+
+/// Appearance actions (XSD `AppearanceAction`, 1.2+).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum AppearanceAction {
+    /// LightStateAction.
+    LightState(LightStateAction),
+    /// AnimationAction.
+    Animation(AnimationAction),
+}
+
+/// Trailer actions (XSD `TrailerAction`, 1.3).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum TrailerAction {
+    /// ConnectTrailerAction.
+    Connect {
+        /// The trailer entity.
+        trailer_ref: String,
+    },
+    /// DisconnectTrailerAction.
+    Disconnect,
+}

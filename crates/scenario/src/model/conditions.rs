@@ -1,0 +1,269 @@
+//! Entity and value conditions (OpenSCENARIO 1.3 §7.6.2–7.6.3, XSD `EntityCondition` and
+//! `ByValueCondition` with all their choices). Distances in m, speeds in m/s, accelerations in
+//! m/s², times in s, angles in rad.
+
+use crate::model::{
+    AngleType, CoordinateSystem, DirectionalDimension, ObjectType, Position, RelativeDistanceType,
+    RoutingAlgorithm, Rule, StoryboardElementState, StoryboardElementType,
+};
+
+/// Conditions on entities (XSD `EntityCondition`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum EntityCondition {
+    /// EndOfRoadCondition: at the end of the road for `duration` s.
+    EndOfRoad {
+        /// s.
+        duration: f64,
+    },
+    /// CollisionCondition: collides with an entity or any object of a type.
+    Collision(CollisionTarget),
+    /// OffroadCondition: off the road for `duration` s.
+    Offroad {
+        /// s.
+        duration: f64,
+    },
+    /// TimeHeadwayCondition, s.
+    TimeHeadway {
+        /// The entity ahead.
+        entity_ref: String,
+        /// Value, s.
+        value: f64,
+        /// Rule.
+        rule: Rule,
+        /// Between bounding boxes (true) or reference points.
+        freespace: bool,
+        /// Measurement frame (1.1+).
+        coordinate_system: Option<CoordinateSystem>,
+        /// Distance type (1.1+).
+        relative_distance_type: Option<RelativeDistanceType>,
+        /// Routing algorithm (1.2+).
+        routing_algorithm: Option<RoutingAlgorithm>,
+    },
+    /// TimeToCollisionCondition, s.
+    TimeToCollision {
+        /// The target.
+        target: TimeToCollisionTarget,
+        /// Value, s.
+        value: f64,
+        /// Rule.
+        rule: Rule,
+        /// Between bounding boxes (true) or reference points.
+        freespace: bool,
+        /// Measurement frame.
+        coordinate_system: Option<CoordinateSystem>,
+        /// Distance type.
+        relative_distance_type: Option<RelativeDistanceType>,
+        /// Routing algorithm (1.2+).
+        routing_algorithm: Option<RoutingAlgorithm>,
+    },
+    /// AccelerationCondition, m/s².
+    Acceleration {
+        /// Value, m/s².
+        value: f64,
+        /// Rule.
+        rule: Rule,
+        /// Component (1.2+); absent: magnitude.
+        direction: Option<DirectionalDimension>,
+    },
+    /// StandStillCondition: stands still for `duration` s.
+    StandStill {
+        /// s.
+        duration: f64,
+    },
+    /// SpeedCondition, m/s.
+    Speed {
+        /// Value, m/s.
+        value: f64,
+        /// Rule.
+        rule: Rule,
+        /// Component (1.2+); absent: magnitude.
+        direction: Option<DirectionalDimension>,
+    },
+    /// RelativeSpeedCondition: own speed minus the entity's, m/s.
+    RelativeSpeed {
+        /// Reference entity.
+        entity_ref: String,
+        /// Value, m/s.
+        value: f64,
+        /// Rule.
+        rule: Rule,
+        /// Component (1.2+).
+        direction: Option<DirectionalDimension>,
+    },
+    /// TraveledDistanceCondition, m.
+    TraveledDistance {
+        /// m.
+        value: f64,
+    },
+    /// ReachPositionCondition (deprecated since 1.2; same as a DistanceCondition ≤ tolerance).
+    ReachPosition {
+        /// The position.
+        position: Position,
+        /// Tolerance radius, m.
+        tolerance: f64,
+    },
+    /// DistanceCondition to a position, m.
+    Distance {
+        /// The position.
+        position: Position,
+        /// Value, m.
+        value: f64,
+        /// Rule.
+        rule: Rule,
+        /// Between bounding boxes (true) or reference points.
+        freespace: bool,
+        /// Measurement frame (1.1+).
+        coordinate_system: Option<CoordinateSystem>,
+        /// Distance type (1.1+).
+        relative_distance_type: Option<RelativeDistanceType>,
+        /// Routing algorithm (1.2+).
+        routing_algorithm: Option<RoutingAlgorithm>,
+    },
+    /// RelativeDistanceCondition to an entity, m.
+    RelativeDistance {
+        /// Reference entity.
+        entity_ref: String,
+        /// Value, m.
+        value: f64,
+        /// Rule.
+        rule: Rule,
+        /// Between bounding boxes (true) or reference points.
+        freespace: bool,
+        /// Distance type.
+        relative_distance_type: RelativeDistanceType,
+        /// Measurement frame (1.1+).
+        coordinate_system: Option<CoordinateSystem>,
+        /// Routing algorithm (1.2+).
+        routing_algorithm: Option<RoutingAlgorithm>,
+    },
+    /// RelativeClearanceCondition (1.2+): lanes free of entities.
+    RelativeClearance {
+        /// Consider opposite lanes.
+        opposite_lanes: bool,
+        /// Forward distance, m.
+        distance_forward: Option<f64>,
+        /// Backward distance, m.
+        distance_backward: Option<f64>,
+        /// Between bounding boxes.
+        free_space: bool,
+        /// Lane ranges (from, to) relative to the triggering entity's lane.
+        relative_lane_ranges: Vec<(Option<i32>, Option<i32>)>,
+        /// Only these entities count (empty: all).
+        entity_refs: Vec<String>,
+    },
+    /// AngleCondition (1.3): own absolute angle, rad.
+    Angle {
+        /// Which angle.
+        angle_type: AngleType,
+        /// Angle, rad.
+        angle: f64,
+        /// Tolerance, rad.
+        angle_tolerance: f64,
+        /// Frame.
+        coordinate_system: Option<CoordinateSystem>,
+    },
+    /// RelativeAngleCondition (1.3): angle relative to an entity, rad.
+    RelativeAngle {
+        /// Reference entity.
+        entity_ref: String,
+        /// Which angle.
+        angle_type: AngleType,
+        /// Angle, rad.
+        angle: f64,
+        /// Tolerance, rad.
+        angle_tolerance: f64,
+        /// Frame.
+        coordinate_system: Option<CoordinateSystem>,
+    },
+}
+
+/// What a CollisionCondition watches (XSD `CollisionCondition` choice).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum CollisionTarget {
+    /// EntityRef.
+    EntityRef(String),
+    /// ByType.
+    ByType(ObjectType),
+}
+
+/// The target of a TimeToCollisionCondition (XSD `TimeToCollisionConditionTarget`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum TimeToCollisionTarget {
+    /// A position.
+    Position(Position),
+    /// An entity.
+    EntityRef(String),
+}
+
+/// Conditions on values (XSD `ByValueCondition`).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ByValueCondition {
+    /// ParameterCondition (parameters are constants after load; kept for completeness).
+    Parameter {
+        /// Parameter name.
+        parameter_ref: String,
+        /// Rule.
+        rule: Rule,
+        /// Value as text.
+        value: String,
+    },
+    /// TimeOfDayCondition.
+    TimeOfDay {
+        /// Rule.
+        rule: Rule,
+        /// dateTime as written.
+        date_time: String,
+    },
+    /// SimulationTimeCondition, s.
+    SimulationTime {
+        /// s.
+        value: f64,
+        /// Rule.
+        rule: Rule,
+    },
+    /// StoryboardElementStateCondition.
+    StoryboardElementState {
+        /// Element type.
+        storyboard_element_type: StoryboardElementType,
+        /// Element name.
+        storyboard_element_ref: String,
+        /// State or transition.
+        state: StoryboardElementState,
+    },
+    /// UserDefinedValueCondition.
+    UserDefinedValue {
+        /// Name.
+        name: String,
+        /// Rule.
+        rule: Rule,
+        /// Value as text.
+        value: String,
+    },
+    /// TrafficSignalCondition.
+    TrafficSignal {
+        /// Signal name.
+        name: String,
+        /// State as text.
+        state: String,
+    },
+    /// TrafficSignalControllerCondition.
+    TrafficSignalController {
+        /// Controller name.
+        traffic_signal_controller_ref: String,
+        /// Phase name.
+        phase: String,
+    },
+    /// VariableCondition (1.2+).
+    Variable {
+        /// Variable name.
+        variable_ref: String,
+        /// Rule.
+        rule: Rule,
+        /// Value as text.
+        value: String,
+    },
+}

@@ -1,0 +1,23 @@
+mod actions;
+mod common;
+mod conditions;
+mod entities;
+mod enums;
+mod environment;
+mod positions;
+mod routing;
+mod scenario;
+mod storyboard;
+mod triggers;
+
+pub use actions::*;
+pub use common::*;
+pub use conditions::*;
+pub use entities::*;
+pub use enums::*;
+pub use environment::*;
+pub use positions::*;
+pub use routing::*;
+pub use scenario::*;
+pub use storyboard::*;
+pub use triggers::*;

@@ -1,0 +1,409 @@
+//! The reading context: the parsed documents, the parameter scope chain, the catalog index,
+//! warnings, and the helpers every element reader uses to get at attributes and children.
+//!
+//! Every attribute goes through [`Ctx::req`]/[`Ctx::opt`], which resolve `$name` and `${…}`
+//! (OpenSCENARIO 1.3 §9.1–9.2) before converting the text to the XSD type, so parameter
+//! references work in any attribute. Errors point at the attribute's value.
+
+use std::cell::{Cell, RefCell};
+use std::path::Path;
+use std::sync::Arc;
+
+use roxmltree::{Attribute, Document};
+
+use crate::error::{Error, ErrorKind, Result, Warning};
+use crate::expr::{self, Value};
+use crate::reader::attr::FromAttr;
+use crate::reader::catalog::CatalogIndex;
+use crate::source::{LineIndex, SourcePos};
+
+/// An element of one of the loaded documents.
+pub(crate) type Node<'a> = roxmltree::Node<'a, 'a>;
+
+/// One parsed file: its path, text, line index and tree.
+pub(crate) struct Doc<'a> {
+    /// The path as opened.
+    pub path: Arc<Path>,
+    /// The text.
+    pub text: &'a str,
+    /// Line starts of `text`.
+    pub lines: LineIndex,
+    /// The tree.
+    pub doc: Document<'a>,
+}
+
+/// One level of parameter declarations: names and their typed values, in declaration order.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Scope {
+    pub params: Vec<(String, Value)>,
+}
+
+/// An entity name used by an attribute, checked once all entities are known.
+pub(crate) struct EntityUse {
+    pub name: String,
+    pub element: String,
+    pub pos: SourcePos,
+}
+
+/// The state of one load.
+pub(crate) struct Ctx<'a> {
+    /// Index 0 is the scenario; catalogs follow.
+    pub docs: &'a [Doc<'a>],
+    /// The document the nodes being read belong to.
+    pub cur: usize,
+    /// Parameter scopes, outermost (global) first.
+    pub scopes: Vec<Scope>,
+    /// Deprecation and version warnings.
+    pub warnings: Vec<Warning>,
+    /// revMinor of the scenario's FileHeader (revMajor is 1).
+    pub rev_minor: u32,
+    /// The catalogs found through CatalogLocations.
+    pub catalogs: CatalogIndex<'a>,
+    /// Entity references to check after Entities is read.
+    pub entity_uses: Vec<EntityUse>,
+    /// The catalog entry (document, node) whose declarations are already in scope, with the
+    /// reference's ParameterAssignments applied; [`Ctx::scoped`] must not declare them again.
+    pub entry_scoped: Option<(usize, roxmltree::NodeId)>,
+    /// Warnings found where only `&self` is at hand; merged by [`Ctx::take_warnings`].
+    pub warnings_later: RefCell<Vec<Warning>>,
+}
+
+impl<'a> Ctx<'a> {
+    /// The file and line:col of byte `offset` in the current document.
+    pub fn pos_at(&self, offset: usize) -> SourcePos {
+        let doc = &self.docs[self.cur];
+        let (line, col) = doc.lines.line_col(doc.text, offset);
+        SourcePos {
+            file: doc.path.clone(),
+            line,
+            col,
+        }
+    }
+
+    /// Where element `n` starts.
+    pub fn pos(&self, n: Node<'a>) -> SourcePos {
+        self.pos_at(n.range().start)
+    }
+
+    /// Where the value of attribute `a` starts.
+    pub fn attr_pos(&self, a: &Attribute<'a, 'a>) -> SourcePos {
+        self.pos_at(a.range_value().start)
+    }
+
+    /// An error at element `n`.
+    pub fn err(&self, n: Node<'a>, kind: ErrorKind) -> Error {
+        Error::new(kind, self.pos(n))
+    }
+
+    /// Records a warning at element `n`.
+    pub fn warn(&mut self, n: Node<'a>, message: String) {
+        let pos = self.pos(n);
+        self.warnings.push(Warning { message, pos });
+    }
+
+    /// Warns when element `n` needs OpenSCENARIO 1.`minor` but the file declares less.
+    pub fn since(&mut self, n: Node<'a>, minor: u32) {
+        if self.rev_minor < minor {
+            let message = format!(
+                "{} needs OpenSCENARIO 1.{minor}, but the file declares 1.{}",
+                n.tag_name().name(),
+                self.rev_minor
+            );
+            self.warn(n, message);
+        }
+    }
+
+    /// The value of parameter `name` in the innermost scope that declares it.
+    pub fn lookup(&self, name: &str) -> Option<Value> {
+        let name = name.strip_prefix('$').unwrap_or(name);
+        self.scopes
+            .iter()
+            .rev()
+            .flat_map(|s| s.params.iter().rev())
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v.clone())
+    }
+
+    /// Resolves `$name` and `${expr}` in the raw text of attribute `a` of element `n`.
+    pub fn resolve(&self, n: Node<'a>, a: &Attribute<'a, 'a>) -> Result<String> {
+        let raw = a.value();
+        let trimmed = raw.trim_start();
+        let lead = raw.len() - trimmed.len();
+        let trimmed = trimmed.trim_end();
+        let attribute = || format!("{}@{}", n.tag_name().name(), a.name());
+        if let Some(inner) = trimmed.strip_prefix("${").and_then(|s| s.strip_suffix('}')) {
+            let numeric_string = Cell::new(false);
+            let lookup = |name: &str| match self.lookup(name) {
+                // The grammar has no operator on strings but comparison; a string parameter
+                // holding a number (esmini's habit) is offered as that number, with a warning.
+                Some(Value::String(s)) if f64::from_attr(&s).is_some() => {
+                    numeric_string.set(true);
+                    f64::from_attr(&s).map(|(d, _)| Value::Double(d))
+                }
+                other => other,
+            };
+            let source = esmini_constants(inner);
+            let result = expr::evaluate(&source, &lookup)
+                .map(|v| v.to_string())
+                .map_err(|e| {
+                    // Offsets hold in the text as written unless `pi` was replaced before them.
+                    let offset = if source.len() == inner.len() {
+                        e.offset()
+                    } else {
+                        0
+                    };
+                    let offset = a.range_value().start + lead + 2 + offset;
+                    Error::new(
+                        ErrorKind::Expression {
+                            attribute: attribute(),
+                            message: e.to_string(),
+                        },
+                        self.pos_at(offset),
+                    )
+                });
+            if numeric_string.get() && result.is_ok() {
+                self.warnings_later.borrow_mut().push(Warning {
+                    message: format!(
+                        "{}: a string parameter holding a number is used as a number",
+                        attribute()
+                    ),
+                    pos: self.attr_pos(a),
+                });
+            }
+            return result;
+        }
+        if let Some(name) = trimmed.strip_prefix('$') {
+            return self.lookup(name).map(|v| v.to_string()).ok_or_else(|| {
+                Error::new(
+                    ErrorKind::UnknownParameter {
+                        name: name.to_owned(),
+                        attribute: attribute(),
+                    },
+                    self.attr_pos(a),
+                )
+            });
+        }
+        Ok(raw.to_owned())
+    }
+
+    /// Attribute `name` of `n`, if written.
+    pub fn raw_attr(&self, n: Node<'a>, name: &str) -> Option<Attribute<'a, 'a>> {
+        n.attributes().find(|a| a.name() == name)
+    }
+
+    /// Optional attribute `name` of `n`, resolved and converted to `T`.
+    pub fn opt<T: FromAttr>(&mut self, n: Node<'a>, name: &str) -> Result<Option<T>> {
+        let Some(a) = self.raw_attr(n, name) else {
+            return Ok(None);
+        };
+        let text = match self.resolve(n, &a) {
+            Ok(text) => text,
+            // esmini builds names with its own string expressions (`${Name_ + $p}`); a name
+            // whose expression does not evaluate is kept as written, with a warning.
+            Err(e) if name == "name" && matches!(e.kind(), ErrorKind::Expression { .. }) => {
+                let message = format!("{}@name kept as written: {}", n.tag_name().name(), e.kind());
+                self.warnings.push(Warning {
+                    message,
+                    pos: e.pos().clone(),
+                });
+                a.value().to_owned()
+            }
+            Err(e) => return Err(e),
+        };
+        match T::from_attr(&text) {
+            Some((value, deprecated)) => {
+                if deprecated {
+                    let message = format!(
+                        "{}@{name}: '{}' is a deprecated literal, read as its 1.3 form",
+                        n.tag_name().name(),
+                        text.trim()
+                    );
+                    let pos = self.attr_pos(&a);
+                    self.warnings.push(Warning { message, pos });
+                }
+                Ok(Some(value))
+            }
+            None => Err(Error::new(
+                ErrorKind::InvalidValue {
+                    element: n.tag_name().name().to_owned(),
+                    attribute: name.to_owned(),
+                    expected: T::expected(),
+                    found: text,
+                },
+                self.attr_pos(&a),
+            )),
+        }
+    }
+
+    /// Required attribute `name` of `n`, resolved and converted to `T`.
+    pub fn req<T: FromAttr>(&mut self, n: Node<'a>, name: &'static str) -> Result<T> {
+        match self.opt(n, name)? {
+            Some(v) => Ok(v),
+            None => Err(self.err(
+                n,
+                ErrorKind::MissingAttribute {
+                    element: n.tag_name().name().to_owned(),
+                    attribute: name,
+                },
+            )),
+        }
+    }
+
+    /// Required attribute `name` that names a parameter (ParameterDeclaration@name,
+    /// ParameterAssignment@parameterRef, …): read as written, not resolved, a leading `$`
+    /// dropped (scenariogeneration and esmini write one).
+    pub fn param_name(&mut self, n: Node<'a>, name: &'static str) -> Result<String> {
+        match self.raw_attr(n, name) {
+            Some(a) => Ok(a.value().trim().trim_start_matches('$').to_owned()),
+            None => Err(self.err(
+                n,
+                ErrorKind::MissingAttribute {
+                    element: n.tag_name().name().to_owned(),
+                    attribute: name,
+                },
+            )),
+        }
+    }
+
+    /// All warnings so far, in the order found.
+    pub fn take_warnings(&mut self) -> Vec<Warning> {
+        let mut all = std::mem::take(&mut self.warnings);
+        all.append(&mut self.warnings_later.borrow_mut());
+        all
+    }
+
+    /// Required attribute `name` naming an entity; the name is checked once Entities is known.
+    pub fn entity(&mut self, n: Node<'a>, name: &'static str) -> Result<String> {
+        let value: String = self.req(n, name)?;
+        self.note_entity(n, name, &value);
+        Ok(value)
+    }
+
+    /// Optional attribute naming an entity.
+    pub fn opt_entity(&mut self, n: Node<'a>, name: &'static str) -> Result<Option<String>> {
+        let value: Option<String> = self.opt(n, name)?;
+        if let Some(v) = &value {
+            self.note_entity(n, name, v);
+        }
+        Ok(value)
+    }
+
+    fn note_entity(&mut self, n: Node<'a>, name: &str, value: &str) {
+        let pos = self
+            .raw_attr(n, name)
+            .map_or_else(|| self.pos(n), |a| self.attr_pos(&a));
+        let element = format!("{}@{name}", n.tag_name().name());
+        self.entity_uses.push(EntityUse {
+            name: value.to_owned(),
+            element,
+            pos,
+        });
+    }
+
+    /// The first child element of `n` named `name`.
+    pub fn opt_child(&self, n: Node<'a>, name: &str) -> Option<Node<'a>> {
+        n.children()
+            .find(|c| c.is_element() && c.tag_name().name() == name)
+    }
+
+    /// The required child element `name` of `n`.
+    pub fn child(&self, n: Node<'a>, name: &str) -> Result<Node<'a>> {
+        self.opt_child(n, name).ok_or_else(|| {
+            self.err(
+                n,
+                ErrorKind::MissingElement {
+                    parent: n.tag_name().name().to_owned(),
+                    expected: name.to_owned(),
+                },
+            )
+        })
+    }
+
+    /// All child elements of `n` named `name`, in document order.
+    pub fn children(&self, n: Node<'a>, name: &'a str) -> impl Iterator<Item = Node<'a>> + 'a {
+        n.children()
+            .filter(move |c| c.is_element() && c.tag_name().name() == name)
+    }
+
+    /// The single element child of a choice element `n` (XSD `xsd:choice`); `expected` lists
+    /// the allowed names for the error.
+    pub fn choice(&self, n: Node<'a>, expected: &str) -> Result<Node<'a>> {
+        n.children().find(Node::is_element).ok_or_else(|| {
+            self.err(
+                n,
+                ErrorKind::MissingElement {
+                    parent: n.tag_name().name().to_owned(),
+                    expected: format!("one of {expected}"),
+                },
+            )
+        })
+    }
+
+    /// The error for child `found` of `parent` not being one of `expected`.
+    pub fn unexpected(&self, parent: Node<'a>, found: Node<'a>, expected: &str) -> Error {
+        self.err(
+            found,
+            ErrorKind::UnexpectedElement {
+                parent: parent.tag_name().name().to_owned(),
+                found: found.tag_name().name().to_owned(),
+                expected: format!("one of {expected}"),
+            },
+        )
+    }
+
+    /// Reads `n` with the ParameterDeclarations of `n` (if any) in scope.
+    pub fn scoped<T>(
+        &mut self,
+        n: Node<'a>,
+        read: impl FnOnce(&mut Self) -> Result<T>,
+    ) -> Result<T> {
+        if self.entry_scoped == Some((self.cur, n.id())) {
+            return read(self);
+        }
+        let Some(decls) = self.opt_child(n, "ParameterDeclarations") else {
+            return read(self);
+        };
+        let scope = crate::reader::params::read_parameter_declarations(self, decls, &[])?;
+        self.scopes.push(scope);
+        let result = read(self);
+        self.scopes.pop();
+        result
+    }
+}
+
+/// Replaces the bare name `pi` (not `$pi`, not a call `pi(`) by its value. The 1.3 grammar
+/// (§9.2) has no constants, but esmini accepts `pi` and its corpus uses it
+/// (`parking_demo.xosc`); the text is handed to the standard evaluator afterwards.
+fn esmini_constants(source: &str) -> std::borrow::Cow<'_, str> {
+    let bytes = source.as_bytes();
+    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_' || b == b'$';
+    let mut out = String::new();
+    let mut last = 0;
+    for (i, _) in source.match_indices("pi") {
+        let before_ok = i == 0 || !is_ident(bytes[i - 1]);
+        let rest = source[i + 2..].trim_start();
+        let after_ok = bytes.get(i + 2).map_or(true, |&b| !is_ident(b)) && !rest.starts_with('(');
+        if before_ok && after_ok {
+            out.push_str(&source[last..i]);
+            out.push_str("3.141592653589793");
+            last = i + 2;
+        }
+    }
+    if last == 0 {
+        return std::borrow::Cow::Borrowed(source);
+    }
+    out.push_str(&source[last..]);
+    std::borrow::Cow::Owned(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::esmini_constants;
+
+    #[test]
+    fn only_the_bare_name_pi_is_replaced() {
+        assert_eq!(esmini_constants("pi"), "3.141592653589793");
+        assert_eq!(esmini_constants("2*pi/4"), "2*3.141592653589793/4");
+        assert_eq!(esmini_constants("$pi + $spin + pi2"), "$pi + $spin + pi2");
+    }
+}

@@ -1,0 +1,303 @@
+//! ParameterDeclarations (OpenSCENARIO 1.3 §9.1 "Parameters", XSD `ParameterDeclaration`,
+//! `ValueConstraintGroup`): typed values, overrides, constraint checks and cycle detection.
+//!
+//! The values of one ParameterDeclarations block may refer to each other (`$a`, `${$a * 2}`)
+//! in any order: each declaration is resolved after the declarations of the same block it
+//! names, by a depth-first walk that reports a self-reference or a cycle ("a → b → a") at the
+//! value attribute that closes it, instead of looping.
+
+use crate::error::{Error, ErrorKind, Result, Warning};
+use crate::expr::{Value, ValueType};
+use crate::model::{ParameterDeclaration, Rule};
+use crate::reader::attr::FromAttr;
+use crate::reader::context::{Ctx, Node, Scope};
+
+/// One declaration before resolution.
+struct Pending<'a> {
+    node: Node<'a>,
+    name: String,
+    ty: ValueType,
+    /// The override's text (already resolved by the caller), if any.
+    given: Option<String>,
+    deps: Vec<usize>,
+}
+
+/// Reads a ParameterDeclarations element into a scope. `overrides` are (name, value) pairs
+/// from ParameterAssignments or `--param`, whose values are used as written.
+pub(crate) fn read_parameter_declarations<'a>(
+    ctx: &mut Ctx<'a>,
+    decls: Node<'a>,
+    overrides: &[(String, String)],
+) -> Result<Scope> {
+    Ok(declare(ctx, decls, overrides)?.0)
+}
+
+/// As [`read_parameter_declarations`], also giving the model's declaration records.
+pub(crate) fn declare<'a>(
+    ctx: &mut Ctx<'a>,
+    decls: Node<'a>,
+    overrides: &[(String, String)],
+) -> Result<(Scope, Vec<ParameterDeclaration>)> {
+    let mut pending = Vec::new();
+    for d in ctx.children(decls, "ParameterDeclaration") {
+        let name = ctx.param_name(d, "name")?;
+        let ty = read_parameter_type(ctx, d, "parameterType")?;
+        if ctx.raw_attr(d, "value").is_none() {
+            return Err(ctx.err(
+                d,
+                ErrorKind::MissingAttribute {
+                    element: "ParameterDeclaration".into(),
+                    attribute: "value",
+                },
+            ));
+        }
+        let given = overrides
+            .iter()
+            .rev()
+            .find(|(n, _)| *n == name)
+            .map(|(_, v)| v.clone());
+        pending.push(Pending {
+            node: d,
+            name,
+            ty,
+            given,
+            deps: Vec::new(),
+        });
+    }
+    let names: Vec<String> = pending.iter().map(|p| p.name.clone()).collect();
+    for p in &mut pending {
+        if p.given.is_none() {
+            let raw = ctx
+                .raw_attr(p.node, "value")
+                .map(|a| a.value())
+                .unwrap_or_default();
+            p.deps = referenced_names(raw)
+                .filter_map(|r| names.iter().position(|n| n == r))
+                .collect();
+        }
+    }
+    ctx.scopes.push(Scope::default());
+    let mut state = vec![State::Pending; pending.len()];
+    let mut records = Vec::new();
+    let mut result = Ok(());
+    for i in 0..pending.len() {
+        let mut stack = Vec::new();
+        result = visit(ctx, &pending, &mut state, &mut stack, i, &mut records);
+        if result.is_err() {
+            break;
+        }
+    }
+    // The scope pushed above is still on top: `visit` only adds to it.
+    let scope = ctx.scopes.pop().unwrap_or_default();
+    result.map(|()| (scope, records))
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum State {
+    Pending,
+    InProgress,
+    Done,
+}
+
+fn visit<'a>(
+    ctx: &mut Ctx<'a>,
+    pending: &[Pending<'a>],
+    state: &mut [State],
+    stack: &mut Vec<usize>,
+    i: usize,
+    records: &mut Vec<ParameterDeclaration>,
+) -> Result<()> {
+    match state[i] {
+        State::Done => return Ok(()),
+        State::InProgress => {
+            let from = stack.iter().position(|&s| s == i).unwrap_or(0);
+            let mut cycle: Vec<String> = stack[from..]
+                .iter()
+                .map(|&s| pending[s].name.clone())
+                .collect();
+            cycle.push(pending[i].name.clone());
+            // The declaration whose value closes the cycle is the last one on the stack.
+            let closing = pending[stack.last().copied().unwrap_or(i)].node;
+            let pos = ctx
+                .raw_attr(closing, "value")
+                .map_or_else(|| ctx.pos(closing), |a| ctx.attr_pos(&a));
+            return Err(Error::new(ErrorKind::ParameterCycle { cycle }, pos));
+        }
+        State::Pending => {}
+    }
+    state[i] = State::InProgress;
+    stack.push(i);
+    for &d in &pending[i].deps {
+        visit(ctx, pending, state, stack, d, records)?;
+    }
+    stack.pop();
+    let p = &pending[i];
+    let value_attr = ctx.raw_attr(p.node, "value");
+    let text = match (&p.given, &value_attr) {
+        (Some(given), _) => given.clone(),
+        (None, Some(a)) => ctx.resolve(p.node, a)?,
+        (None, None) => String::new(),
+    };
+    let pos = value_attr
+        .as_ref()
+        .map_or_else(|| ctx.pos(p.node), |a| ctx.attr_pos(a));
+    // A value that does not fit the declared type (esmini's controller catalog declares
+    // `FollowMode` a double with value "time") is kept as a string with a warning; an
+    // attribute that needs the declared type then fails at the attribute that uses it.
+    let value = match Value::parse(p.ty, &text) {
+        Ok(v) => v,
+        Err(_) => {
+            let message = format!(
+                "parameter {} is declared {} but its value '{text}' is not one; kept as a string",
+                p.name,
+                p.ty.xsd_name()
+            );
+            ctx.warnings.push(Warning {
+                message,
+                pos: pos.clone(),
+            });
+            Value::String(text.clone())
+        }
+    };
+    check_constraints(ctx, p.node, &p.name, &value)?;
+    if let Some(top) = ctx.scopes.last_mut() {
+        top.params.push((p.name.clone(), value.clone()));
+    }
+    records.push(ParameterDeclaration {
+        name: p.name.clone(),
+        parameter_type: p.ty,
+        value,
+        pos,
+    });
+    state[i] = State::Done;
+    Ok(())
+}
+
+/// Reads a `ParameterType` attribute (`integer` is the deprecated spelling of `int`).
+pub(crate) fn read_parameter_type<'a>(
+    ctx: &mut Ctx<'a>,
+    n: Node<'a>,
+    attr: &'static str,
+) -> Result<ValueType> {
+    let text: String = ctx.req(n, attr)?;
+    let ty = ValueType::from_xsd_name(text.trim()).ok_or_else(|| {
+        let pos = ctx
+            .raw_attr(n, attr)
+            .map_or_else(|| ctx.pos(n), |a| ctx.attr_pos(&a));
+        Error::new(
+            ErrorKind::InvalidValue {
+                element: n.tag_name().name().into(),
+                attribute: attr.into(),
+                expected:
+                    "one of int, double, string, unsignedInt, unsignedShort, boolean, dateTime"
+                        .into(),
+                found: text.clone(),
+            },
+            pos,
+        )
+    })?;
+    if text.trim() == "integer" {
+        ctx.warn(
+            n,
+            format!(
+                "{}@{attr}: 'integer' is deprecated, read as 'int'",
+                n.tag_name().name()
+            ),
+        );
+    }
+    Ok(ty)
+}
+
+/// The names of `$name` references in raw attribute text.
+pub(crate) fn referenced_names(raw: &str) -> impl Iterator<Item = &str> {
+    raw.match_indices('$').filter_map(move |(i, _)| {
+        let rest = &raw[i + 1..];
+        let end = rest
+            .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .unwrap_or(rest.len());
+        (end > 0).then(|| &rest[..end])
+    })
+}
+
+/// ValueConstraintGroups (1.2+): the value must meet every constraint of at least one group.
+fn check_constraints<'a>(
+    ctx: &mut Ctx<'a>,
+    decl: Node<'a>,
+    name: &str,
+    value: &Value,
+) -> Result<()> {
+    let groups: Vec<Node<'a>> = ctx.children(decl, "ConstraintGroup").collect();
+    if groups.is_empty() {
+        return Ok(());
+    }
+    ctx.since(groups[0], 2);
+    let mut described = Vec::new();
+    for g in groups {
+        let mut all = true;
+        let mut text = Vec::new();
+        for c in ctx.children(g, "ValueConstraint") {
+            let rule: Rule = ctx.req(c, "rule")?;
+            let bound: String = ctx.req(c, "value")?;
+            text.push(format!("{rule} {bound}"));
+            all &= meets(value, rule, &bound);
+        }
+        if all {
+            return Ok(());
+        }
+        described.push(text.join(" and "));
+    }
+    Err(ctx.err(
+        decl,
+        ErrorKind::ConstraintViolated {
+            name: name.to_owned(),
+            value: value.to_string(),
+            expected: described.join(" or "),
+        },
+    ))
+}
+
+/// Whether `value` `rule` `bound` holds; numbers compare as doubles, other values as text.
+pub(crate) fn meets(value: &Value, rule: Rule, bound: &str) -> bool {
+    use std::cmp::Ordering;
+    let ordering = match (value.as_f64(), f64::from_attr(bound)) {
+        (Some(v), Some((b, _)))
+            if !matches!(
+                value,
+                Value::String(_) | Value::DateTime(_) | Value::Bool(_)
+            ) =>
+        {
+            v.partial_cmp(&b)
+        }
+        _ => Some(value.to_string().as_str().cmp(bound.trim())),
+    };
+    let Some(o) = ordering else { return false };
+    match rule {
+        Rule::EqualTo => o == Ordering::Equal,
+        Rule::NotEqualTo => o != Ordering::Equal,
+        Rule::GreaterThan => o == Ordering::Greater,
+        Rule::LessThan => o == Ordering::Less,
+        Rule::GreaterOrEqual => o != Ordering::Less,
+        Rule::LessOrEqual => o != Ordering::Greater,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn references_are_found_inside_expressions() {
+        let names: Vec<&str> = referenced_names("${$a * 2 + $b_1}").collect();
+        assert_eq!(names, ["a", "b_1"]);
+        assert_eq!(referenced_names("$x").collect::<Vec<_>>(), ["x"]);
+        assert_eq!(referenced_names("plain").count(), 0);
+    }
+
+    #[test]
+    fn constraint_rules_compare_numbers_numerically() {
+        // 10 > 9 numerically although "10" < "9" as text.
+        assert!(meets(&Value::Double(10.0), Rule::GreaterThan, "9"));
+        assert!(!meets(&Value::Int(3), Rule::LessThan, "3"));
+        assert!(meets(&Value::String("car".into()), Rule::EqualTo, "car"));
+    }
+}
