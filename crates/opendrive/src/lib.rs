@@ -1,6 +1,64 @@
 //! ASAM OpenDRIVE 1.4–1.8 road model for oscsim.
 //!
-//! Parses `.xodr` files into typed data and evaluates the road geometry exactly (f64, analytic
-//! reference-line geometry, no pre-sampled polylines).
+//! Parses `.xodr` files (on `roxmltree`) into typed data and evaluates the road geometry
+//! exactly: f64 throughout, analytic reference-line geometry (line, arc, clothoid spiral,
+//! poly3, paramPoly3), no pre-sampled polylines.
+//!
+//! # Overview
+//! - [`RoadNetwork`]: [`from_file`](RoadNetwork::from_file) / [`from_str`](RoadNetwork::from_str),
+//!   then [`roads`](RoadNetwork::roads), [`road`](RoadNetwork::road),
+//!   [`junctions`](RoadNetwork::junctions), [`junction`](RoadNetwork::junction),
+//!   [`header`](RoadNetwork::header).
+//! - Positions: [`RoadNetwork::road_pose`] (road, s, t) → [`Pose`];
+//!   [`RoadNetwork::lane_pose`] (road, lane, s, offset from the lane centre) → [`Pose`];
+//!   [`RoadNetwork::lane_width`], [`RoadNetwork::lane_boundaries`] ([`LaneSpan`]). The same
+//!   on a [`Road`] directly: [`Road::pose`], [`Road::lane_pose`], [`Road::lane_span`].
+//!   No allocation per call; geometry and lane section at s by binary search.
+//! - World → road: [`RoadNetwork::locate`] (R*-tree over road pieces, then exact Newton
+//!   projection) and [`RoadNetwork::locate_on_road`], both giving a [`RoadPosition`].
+//! - Lane graph: [`RoadNetwork::lane_handle`], [`RoadNetwork::successors`],
+//!   [`RoadNetwork::predecessors`], [`RoadNetwork::driving_direction`], [`is_drivable`];
+//!   routes: [`RoadNetwork::route`] from one [`LanePosition`] to another → [`LaneRoute`].
+//! - Errors: [`Error`] with [`ErrorKind`], file and 1-based [`TextPos`].
+//!
+//! Conventions (OpenDRIVE 1.8 §8): s along the reference line, t positive to the left, lane
+//! ids positive left; heading counter-clockwise from +x; pitch positive nose down; roll
+//! positive right side down; angles in radians, lengths in metres.
+//!
+//! ```no_run
+//! use opendrive::RoadNetwork;
+//! let net = RoadNetwork::from_file(std::path::Path::new("examples/roads/highway.xodr"))?;
+//! let pose = net.lane_pose("1", -1, 10.0, 0.0)?;
+//! let back = net.locate(pose.x, pose.y, Some(pose.h));
+//! # Ok::<(), opendrive::Error>(())
+//! ```
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
+
+mod error;
+mod geometry;
+mod math;
+mod model;
+mod network;
+mod parse;
+mod query;
+
+pub use error::{Error, ErrorKind, TextPos};
+pub use geometry::{
+    Arc, Geometry, GeometryKind, LocalPoint, ParamPoly3, ParamRange, PlanView, Poly3, RefPoint,
+    Spiral,
+};
+pub use math::{
+    angle_difference, normalize_angle, Cubic, Pose, Real, GEOMETRY_GAP_TOLERANCE, LENGTH_EPSILON,
+    SOLVER_TOLERANCE, S_TOLERANCE,
+};
+pub use model::{
+    is_drivable, Connection, ContactPoint, ElementType, GeoReference, Header, Junction,
+    JunctionKind, Lane, LaneHeight, LaneLink, LaneSection, LaneType, Object, Offset, Road,
+    RoadLink, RoadLinks, RoadType, Signal, Speed, TrafficRule,
+};
+pub use network::RoadNetwork;
+pub use query::{
+    Direction, LaneHandle, LanePosition, LaneRoute, LaneSpan, RoadPosition, RouteSegment,
+    LANE_CHANGE_COST,
+};

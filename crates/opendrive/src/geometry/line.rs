@@ -1,0 +1,24 @@
+//! `<line>` (OpenDRIVE 1.8 §9.4): a straight reference line.
+
+use super::LocalPoint;
+
+/// Point at arc length `ds` along a line.
+#[inline]
+pub(crate) fn eval(ds: f64) -> LocalPoint {
+    LocalPoint {
+        u: ds,
+        v: 0.0,
+        hdg: 0.0,
+        curvature: 0.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn line_advances_along_its_heading() {
+        // A line is (ds, 0) in its own frame with zero heading and curvature.
+        let p = super::eval(12.5);
+        assert!((p.u - 12.5).abs() < 1e-15 && p.v.abs() < 1e-15 && p.hdg.abs() < 1e-15);
+    }
+}

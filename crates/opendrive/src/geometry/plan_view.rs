@@ -1,0 +1,185 @@
+//! `<planView>` and `<geometry>` (OpenDRIVE 1.8 §9.2–9.3): the road reference line as a
+//! sequence of geometries, each placed at (x, y, hdg) in the inertial frame; the geometry
+//! valid at s is found by binary search.
+
+use super::{line, Arc, LocalPoint, ParamPoly3, Poly3, Spiral};
+use crate::math::{normalize_angle, Real};
+
+/// The curve type of a `<geometry>`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum GeometryKind {
+    /// `<line>`.
+    Line,
+    /// `<arc>`.
+    Arc(Arc),
+    /// `<spiral>`.
+    Spiral(Spiral),
+    /// `<poly3>`.
+    Poly3(Poly3),
+    /// `<paramPoly3>`.
+    ParamPoly3(ParamPoly3),
+}
+
+impl GeometryKind {
+    /// The element name ("line", "arc", "spiral", "poly3", "paramPoly3").
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Line => "line",
+            Self::Arc(_) => "arc",
+            Self::Spiral(_) => "spiral",
+            Self::Poly3(_) => "poly3",
+            Self::ParamPoly3(_) => "paramPoly3",
+        }
+    }
+}
+
+/// `<geometry s x y hdg length>` with its curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Geometry {
+    /// `s` (m) where the geometry starts.
+    pub s: Real,
+    /// `x` (m) of the start.
+    pub x: Real,
+    /// `y` (m) of the start.
+    pub y: Real,
+    /// `hdg` (rad) at the start.
+    pub hdg: Real,
+    /// `length` (m).
+    pub length: Real,
+    /// The curve.
+    pub kind: GeometryKind,
+    cos_h: Real,
+    sin_h: Real,
+}
+
+/// A point of the reference line: position, heading and curvature.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RefPoint {
+    /// x (m).
+    pub x: Real,
+    /// y (m).
+    pub y: Real,
+    /// Heading (rad), in (−π, π].
+    pub hdg: Real,
+    /// Signed curvature (1/m).
+    pub curvature: Real,
+}
+
+impl Geometry {
+    /// A geometry from its attributes and curve.
+    pub fn new(s: Real, x: Real, y: Real, hdg: Real, length: Real, kind: GeometryKind) -> Self {
+        let (sin_h, cos_h) = hdg.sin_cos();
+        Self {
+            s,
+            x,
+            y,
+            hdg,
+            length,
+            kind,
+            cos_h,
+            sin_h,
+        }
+    }
+
+    /// The curve in its local frame at `ds` from the geometry's start.
+    #[inline]
+    pub fn local(&self, ds: Real) -> LocalPoint {
+        match &self.kind {
+            GeometryKind::Line => line::eval(ds),
+            GeometryKind::Arc(a) => a.eval(ds),
+            GeometryKind::Spiral(sp) => sp.eval(ds),
+            GeometryKind::Poly3(p) => p.eval(ds),
+            GeometryKind::ParamPoly3(p) => p.eval(ds),
+        }
+    }
+
+    /// The reference line at road coordinate `s` (within or slightly outside this geometry).
+    #[inline]
+    pub fn eval(&self, s: Real) -> RefPoint {
+        let l = self.local(s - self.s);
+        RefPoint {
+            x: self.x + l.u * self.cos_h - l.v * self.sin_h,
+            y: self.y + l.u * self.sin_h + l.v * self.cos_h,
+            hdg: normalize_angle(self.hdg + l.hdg),
+            curvature: l.curvature,
+        }
+    }
+}
+
+/// `<planView>`: geometries sorted by `s`, never empty (the parser checks).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanView {
+    geometries: Vec<Geometry>,
+}
+
+impl PlanView {
+    /// A plan view from geometries sorted by `s` (at least one).
+    pub(crate) fn new(geometries: Vec<Geometry>) -> Self {
+        Self { geometries }
+    }
+
+    /// The geometries in order of s.
+    pub fn geometries(&self) -> &[Geometry] {
+        &self.geometries
+    }
+
+    /// Index of the geometry valid at `s` (the last one starting at or before `s`).
+    #[inline]
+    pub fn index_at(&self, s: Real) -> usize {
+        self.geometries
+            .partition_point(|g| g.s <= s)
+            .saturating_sub(1)
+    }
+
+    /// The reference line at `s`.
+    #[inline]
+    pub fn eval(&self, s: Real) -> RefPoint {
+        self.geometries[self.index_at(s)].eval(s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn geometry_is_placed_by_its_start_pose() {
+        // A line starting at (10, 5) with heading π/2 reaches (10, 5 + 3) after 3 m.
+        let g = Geometry::new(
+            100.0,
+            10.0,
+            5.0,
+            std::f64::consts::FRAC_PI_2,
+            20.0,
+            GeometryKind::Line,
+        );
+        let p = g.eval(103.0);
+        assert!(
+            (p.x - 10.0).abs() < 1e-12 && (p.y - 8.0).abs() < 1e-12,
+            "{p:?}"
+        );
+    }
+
+    #[test]
+    fn plan_view_finds_the_geometry_by_binary_search() {
+        let pv = PlanView::new(vec![
+            Geometry::new(0.0, 0.0, 0.0, 0.0, 10.0, GeometryKind::Line),
+            Geometry::new(
+                10.0,
+                10.0,
+                0.0,
+                0.0,
+                10.0,
+                GeometryKind::Arc(Arc { curvature: 0.1 }),
+            ),
+        ]);
+        assert_eq!(pv.index_at(0.0), 0);
+        assert_eq!(pv.index_at(9.999), 0);
+        assert_eq!(pv.index_at(10.0), 1);
+        assert_eq!(pv.index_at(25.0), 1);
+        // On the arc, 5 m in: (10 + sin(0.5)/0.1, 2·sin²(0.25)/0.1).
+        let p = pv.eval(15.0);
+        assert!((p.x - (10.0 + 0.5_f64.sin() / 0.1)).abs() < 1e-12);
+        assert!((p.y - (1.0 - 0.5_f64.cos()) / 0.1).abs() < 1e-12);
+    }
+}

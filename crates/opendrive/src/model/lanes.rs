@@ -1,0 +1,197 @@
+//! `<laneSection>` and `<lane>` (OpenDRIVE 1.8 §11, lanes): lane types, width and border
+//! polynomials, height, and lane links.
+
+use crate::math::{Cubic, Real};
+
+/// `lane/@type` (OpenDRIVE 1.8 §11.7, e_laneType).
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum LaneType {
+    /// `driving`.
+    Driving,
+    /// `shoulder`.
+    Shoulder,
+    /// `border`.
+    Border,
+    /// `stop`.
+    Stop,
+    /// `none`.
+    None,
+    /// `restricted`.
+    Restricted,
+    /// `parking`.
+    Parking,
+    /// `median`.
+    Median,
+    /// `biking`.
+    Biking,
+    /// `sidewalk`.
+    Sidewalk,
+    /// `curb`.
+    Curb,
+    /// `entry` (and `mwyEntry`).
+    Entry,
+    /// `exit` (and `mwyExit`).
+    Exit,
+    /// `onRamp`.
+    OnRamp,
+    /// `offRamp`.
+    OffRamp,
+    /// `connectingRamp`.
+    ConnectingRamp,
+    /// `bidirectional`.
+    Bidirectional,
+    /// `slipLane`.
+    SlipLane,
+    /// `bus`.
+    Bus,
+    /// `taxi`.
+    Taxi,
+    /// `HOV`.
+    Hov,
+    /// `tram`.
+    Tram,
+    /// `rail`.
+    Rail,
+    /// `walking`.
+    Walking,
+    /// `roadWorks`.
+    RoadWorks,
+    /// Any other value (`special1` …), as written.
+    Other(String),
+}
+
+impl LaneType {
+    /// Reads an `e_laneType` value.
+    pub fn parse(text: &str) -> Self {
+        match text {
+            "driving" => Self::Driving,
+            "shoulder" => Self::Shoulder,
+            "border" => Self::Border,
+            "stop" => Self::Stop,
+            "none" => Self::None,
+            "restricted" => Self::Restricted,
+            "parking" => Self::Parking,
+            "median" => Self::Median,
+            "biking" => Self::Biking,
+            "sidewalk" => Self::Sidewalk,
+            "curb" => Self::Curb,
+            "entry" | "mwyEntry" => Self::Entry,
+            "exit" | "mwyExit" => Self::Exit,
+            "onRamp" => Self::OnRamp,
+            "offRamp" => Self::OffRamp,
+            "connectingRamp" => Self::ConnectingRamp,
+            "bidirectional" => Self::Bidirectional,
+            "slipLane" => Self::SlipLane,
+            "bus" => Self::Bus,
+            "taxi" => Self::Taxi,
+            "HOV" => Self::Hov,
+            "tram" => Self::Tram,
+            "rail" => Self::Rail,
+            "walking" => Self::Walking,
+            "roadWorks" => Self::RoadWorks,
+            other => Self::Other(other.to_string()),
+        }
+    }
+
+    /// Whether motor vehicles may drive on lanes of this type: driving, entry, exit, onRamp,
+    /// offRamp, connectingRamp, bidirectional, slipLane, bus, taxi and HOV (the lane types
+    /// the OpenDRIVE 1.8 §11.7 table describes as lanes for vehicle traffic). Parking, stop,
+    /// shoulder, border and the others are not drivable for routing.
+    pub fn is_drivable(&self) -> bool {
+        matches!(
+            self,
+            Self::Driving
+                | Self::Entry
+                | Self::Exit
+                | Self::OnRamp
+                | Self::OffRamp
+                | Self::ConnectingRamp
+                | Self::Bidirectional
+                | Self::SlipLane
+                | Self::Bus
+                | Self::Taxi
+                | Self::Hov
+        )
+    }
+}
+
+/// Free function form of [`LaneType::is_drivable`].
+pub fn is_drivable(lane_type: &LaneType) -> bool {
+    lane_type.is_drivable()
+}
+
+/// `<height sOffset inner outer>`: the lane's surface raised above the road (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LaneHeight {
+    /// `sOffset` from the lane section start (m).
+    pub s_offset: Real,
+    /// Height at the inner border (m).
+    pub inner: Real,
+    /// Height at the outer border (m).
+    pub outer: Real,
+}
+
+/// `<lane>`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lane {
+    /// `id`: 0 centre, positive left, negative right.
+    pub id: i32,
+    /// `type`.
+    pub lane_type: LaneType,
+    /// `level`: keep the lane flat (excluded from superelevation). Kept as data.
+    pub level: bool,
+    /// `link/predecessor/@id`: the lane at the section's start side.
+    pub predecessor: Option<i32>,
+    /// `link/successor/@id`: the lane at the section's end side.
+    pub successor: Option<i32>,
+    /// `<width>` records; `start` is `sOffset` from the lane section start.
+    pub widths: Vec<Cubic>,
+    /// `<border>` records (used when there are no widths); `start` is `sOffset`.
+    pub borders: Vec<Cubic>,
+    /// `<height>` records, sorted by `s_offset`.
+    pub heights: Vec<LaneHeight>,
+    /// `<speed max>` of the first speed record (m/s), if any.
+    pub speed_limit: Option<Real>,
+}
+
+/// `<laneSection>`: lanes valid from `s` to the next section's `s`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LaneSection {
+    /// `s` (m) where the section starts.
+    pub s: Real,
+    /// `singleSide`.
+    pub single_side: bool,
+    /// Left lanes in order 1, 2, 3, … (from the centre outwards).
+    pub left: Vec<Lane>,
+    /// The centre lane (id 0).
+    pub center: Lane,
+    /// Right lanes in order −1, −2, −3, … (from the centre outwards).
+    pub right: Vec<Lane>,
+}
+
+impl LaneSection {
+    /// The lane with this id, if the section holds it.
+    pub fn lane(&self, id: i32) -> Option<&Lane> {
+        match id {
+            0 => Some(&self.center),
+            i if i > 0 => self
+                .left
+                .get(usize::try_from(i - 1).ok()?)
+                .filter(|l| l.id == id),
+            i => self
+                .right
+                .get(usize::try_from(-i - 1).ok()?)
+                .filter(|l| l.id == id),
+        }
+    }
+
+    /// All lanes, left outermost to right outermost (the centre lane included).
+    pub fn lanes(&self) -> impl Iterator<Item = &Lane> {
+        self.left
+            .iter()
+            .rev()
+            .chain(std::iter::once(&self.center))
+            .chain(self.right.iter())
+    }
+}

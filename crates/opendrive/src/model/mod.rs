@@ -1,0 +1,13 @@
+//! The typed OpenDRIVE data model, one file per part of the standard.
+
+mod header;
+mod junction;
+mod lanes;
+mod objects;
+mod road;
+
+pub use header::{GeoReference, Header, Offset};
+pub use junction::{Connection, ContactPoint, Junction, JunctionKind, LaneLink};
+pub use lanes::{is_drivable, Lane, LaneHeight, LaneSection, LaneType};
+pub use objects::{Object, Signal};
+pub use road::{ElementType, Road, RoadLink, RoadLinks, RoadType, Speed, TrafficRule};

@@ -1,0 +1,15 @@
+//! Reading `.xodr` text into the data model, one file per part of the XSD.
+
+mod header;
+mod junction;
+mod lanes;
+mod reader;
+mod references;
+mod road;
+
+pub(crate) use header::read_header;
+pub(crate) use junction::read_junction;
+pub(crate) use reader::child;
+pub(crate) use reader::Reader;
+pub(crate) use references::{check_references, Ids};
+pub(crate) use road::read_road;

@@ -1,0 +1,233 @@
+//! Attribute access with positions: every value read from the file is checked here, and a
+//! bad one becomes an [`Error`] naming the file, row:col, element, attribute and what was
+//! expected (OpenDRIVE 1.8 XSD types `t_grEqZero`, `t_grZero`, `double`).
+
+use std::path::Path;
+
+use roxmltree::{Document, Node};
+
+use crate::error::{Error, ErrorKind, TextPos};
+use crate::math::S_TOLERANCE;
+
+/// The document being read and its path, for positions in errors.
+pub(crate) struct Reader<'a, 'input> {
+    doc: &'a Document<'input>,
+    path: &'a Path,
+}
+
+impl<'a, 'input> Reader<'a, 'input> {
+    /// A reader over a parsed document.
+    pub(crate) fn new(doc: &'a Document<'input>, path: &'a Path) -> Self {
+        Self { doc, path }
+    }
+
+    /// 1-based position of a byte offset.
+    pub(crate) fn pos(&self, byte: usize) -> TextPos {
+        let p = self.doc.text_pos_at(byte);
+        TextPos {
+            row: p.row,
+            col: p.col,
+        }
+    }
+
+    /// An error at an element's start tag.
+    pub(crate) fn error_at(&self, node: Node, kind: ErrorKind) -> Error {
+        Error::at(kind, self.path, self.pos(node.range().start))
+    }
+
+    /// An error at an attribute's value (or the element, if the attribute is absent).
+    fn error_at_attr(&self, node: Node, name: &str, kind: ErrorKind) -> Error {
+        let byte = node
+            .attribute_node(name)
+            .map_or(node.range().start, |a| a.range_value().start);
+        Error::at(kind, self.path, self.pos(byte))
+    }
+
+    /// An "expected …, found …" error for an attribute.
+    pub(crate) fn invalid(&self, node: Node, name: &str, expected: &str, found: &str) -> Error {
+        self.error_at_attr(
+            node,
+            name,
+            ErrorKind::InvalidValue {
+                element: node.tag_name().name().to_string(),
+                attribute: name.to_string(),
+                expected: expected.to_string(),
+                found: found.to_string(),
+            },
+        )
+    }
+
+    /// An unknown-reference error for an attribute.
+    pub(crate) fn unknown(&self, node: Node, name: &str, target: &str, id: &str) -> Error {
+        self.error_at_attr(
+            node,
+            name,
+            ErrorKind::UnknownReference {
+                element: node.tag_name().name().to_string(),
+                attribute: name.to_string(),
+                target: target.to_string(),
+                id: id.to_string(),
+            },
+        )
+    }
+
+    /// A required attribute's text.
+    pub(crate) fn req_str(&self, node: Node<'a, 'input>, name: &str) -> Result<&'a str, Error> {
+        node.attribute(name).ok_or_else(|| {
+            self.error_at(
+                node,
+                ErrorKind::MissingAttribute {
+                    element: node.tag_name().name().to_string(),
+                    attribute: name.to_string(),
+                },
+            )
+        })
+    }
+
+    /// A required, finite number.
+    pub(crate) fn req_f64(&self, node: Node<'a, 'input>, name: &str) -> Result<f64, Error> {
+        let text = self.req_str(node, name)?;
+        self.number(node, name, text)
+    }
+
+    /// An optional finite number, `default` when absent.
+    pub(crate) fn opt_f64(
+        &self,
+        node: Node<'a, 'input>,
+        name: &str,
+        default: f64,
+    ) -> Result<f64, Error> {
+        match node.attribute(name) {
+            Some(text) => self.number(node, name, text),
+            None => Ok(default),
+        }
+    }
+
+    /// An optional finite number, `None` when absent.
+    pub(crate) fn maybe_f64(
+        &self,
+        node: Node<'a, 'input>,
+        name: &str,
+    ) -> Result<Option<f64>, Error> {
+        node.attribute(name)
+            .map(|text| self.number(node, name, text))
+            .transpose()
+    }
+
+    /// A required number > 0 (XSD `t_grZero`).
+    pub(crate) fn req_positive(&self, node: Node<'a, 'input>, name: &str) -> Result<f64, Error> {
+        let v = self.req_f64(node, name)?;
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            Err(self.invalid(node, name, "a length > 0", self.req_str(node, name)?))
+        }
+    }
+
+    /// A required number ≥ 0 (XSD `t_grEqZero`).
+    pub(crate) fn req_non_negative(
+        &self,
+        node: Node<'a, 'input>,
+        name: &str,
+    ) -> Result<f64, Error> {
+        let v = self.req_f64(node, name)?;
+        if v >= 0.0 {
+            Ok(v)
+        } else {
+            Err(self.invalid(node, name, "a value >= 0", self.req_str(node, name)?))
+        }
+    }
+
+    /// A required `s` attribute in [0, road_length] (+ [`S_TOLERANCE`]); `what` names the
+    /// element's start in the message.
+    pub(crate) fn req_s_within(
+        &self,
+        node: Node<'a, 'input>,
+        road_length: f64,
+        what: &str,
+    ) -> Result<f64, Error> {
+        let s = self.req_non_negative(node, "s")?;
+        if s > road_length + S_TOLERANCE {
+            let expected = format!("{what} within the road length {road_length}");
+            return Err(self.invalid(node, "s", &expected, self.req_str(node, "s")?));
+        }
+        Ok(s)
+    }
+
+    /// A required integer.
+    pub(crate) fn req_i32(&self, node: Node<'a, 'input>, name: &str) -> Result<i32, Error> {
+        let text = self.req_str(node, name)?;
+        text.trim()
+            .parse::<i32>()
+            .map_err(|_| self.invalid(node, name, "an integer", text))
+    }
+
+    /// An optional unsigned integer, `default` when absent.
+    pub(crate) fn opt_u32(
+        &self,
+        node: Node<'a, 'input>,
+        name: &str,
+        default: u32,
+    ) -> Result<u32, Error> {
+        match node.attribute(name) {
+            Some(text) => text
+                .trim()
+                .parse::<u32>()
+                .map_err(|_| self.invalid(node, name, "an unsigned integer", text)),
+            None => Ok(default),
+        }
+    }
+
+    /// An optional boolean (`true`/`false`/`1`/`0`), `default` when absent.
+    pub(crate) fn opt_bool(
+        &self,
+        node: Node<'a, 'input>,
+        name: &str,
+        default: bool,
+    ) -> Result<bool, Error> {
+        match node.attribute(name) {
+            None => Ok(default),
+            Some("true" | "1" | "yes") => Ok(true),
+            Some("false" | "0" | "no") => Ok(false),
+            Some(other) => Err(self.invalid(node, name, "true or false", other)),
+        }
+    }
+
+    fn number(&self, node: Node, name: &str, text: &str) -> Result<f64, Error> {
+        match text.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            _ => Err(self.invalid(node, name, "a finite number", text)),
+        }
+    }
+}
+
+/// The element children of `node` named `name`.
+pub(crate) fn children<'a, 'input: 'a>(
+    node: Node<'a, 'input>,
+    name: &'static str,
+) -> impl Iterator<Item = Node<'a, 'input>> {
+    node.children()
+        .filter(move |c| c.is_element() && c.tag_name().name() == name)
+}
+
+/// The first element child of `node` named `name`.
+pub(crate) fn child<'a, 'input: 'a>(
+    node: Node<'a, 'input>,
+    name: &'static str,
+) -> Option<Node<'a, 'input>> {
+    children(node, name).next()
+}
+
+/// Reads every `<item>` inside the optional `<container>` child of `node` with `f`.
+pub(crate) fn read_nested<'a, 'input: 'a, T>(
+    node: Node<'a, 'input>,
+    container: &'static str,
+    item: &'static str,
+    f: impl FnMut(Node<'a, 'input>) -> Result<T, Error>,
+) -> Result<Vec<T>, Error> {
+    child(node, container)
+        .into_iter()
+        .flat_map(|c| children(c, item))
+        .map(f)
+        .collect()
+}

@@ -1,0 +1,175 @@
+//! The lane-level road graph (OpenDRIVE 1.8 §10.3 road linkage, §11.4 lane linkage, §10
+//! junction connections and lane links): which lanes follow a lane in its driving direction.
+//!
+//! Driving direction (§10.2 `road/@rule`, §11.2): with right-hand traffic, lanes with negative
+//! ids run towards +s and positive ids towards −s; left-hand traffic swaps the two. Lane
+//! `<successor>` links name the lane at the section's end side (larger s), `<predecessor>` the
+//! lane at its start side, whatever the driving direction.
+
+use crate::model::{ContactPoint, ElementType, Road, RoadLink, TrafficRule};
+use crate::network::RoadNetwork;
+
+/// Travel along a road: towards increasing or decreasing s.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Direction {
+    /// Towards increasing s.
+    Forward,
+    /// Towards decreasing s.
+    Backward,
+}
+
+impl Direction {
+    /// The opposite direction.
+    pub fn reverse(self) -> Self {
+        match self {
+            Self::Forward => Self::Backward,
+            Self::Backward => Self::Forward,
+        }
+    }
+}
+
+/// A lane of one lane section: a node of the lane graph. Cheap to copy and compare.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct LaneHandle {
+    /// Index of the road in [`RoadNetwork::roads`].
+    pub road: u32,
+    /// Index of the lane section in the road's `lane_sections`.
+    pub section: u32,
+    /// Lane id.
+    pub lane: i32,
+}
+
+/// Driving direction of lane `id` on `road`.
+pub(crate) fn driving_direction(road: &Road, id: i32) -> Direction {
+    match (road.rule, id < 0) {
+        (TrafficRule::RightHand, true) | (TrafficRule::LeftHand, false) => Direction::Forward,
+        _ => Direction::Backward,
+    }
+}
+
+impl RoadNetwork {
+    /// The handle of lane `lane_id` in the lane section of `road_id` at `s`.
+    pub fn lane_handle(&self, road_id: &str, lane_id: i32, s: f64) -> Option<LaneHandle> {
+        let (ri, road) = self.road_or_err(road_id).ok()?;
+        let k = road.lane_section_index(s);
+        road.lane_sections[k].lane(lane_id)?;
+        Some(LaneHandle {
+            road: ri as u32,
+            section: k as u32,
+            lane: lane_id,
+        })
+    }
+
+    /// The road a handle belongs to.
+    pub fn handle_road(&self, h: LaneHandle) -> &Road {
+        &self.roads[h.road as usize]
+    }
+
+    /// The driving direction of a lane (right- or left-hand traffic from `road/@rule`).
+    pub fn driving_direction(&self, h: LaneHandle) -> Direction {
+        driving_direction(self.handle_road(h), h.lane)
+    }
+
+    /// Lanes that follow `h` in its driving direction (through lane sections, road links and
+    /// junction lane links), keeping only those driven the same way.
+    pub fn successors(&self, h: LaneHandle) -> Vec<LaneHandle> {
+        let dir = self.driving_direction(h);
+        self.connected(h, dir)
+            .into_iter()
+            .filter(|&(l, d)| self.driving_direction(l) == d)
+            .map(|(l, _)| l)
+            .collect()
+    }
+
+    /// Lanes that `h` follows in its driving direction.
+    pub fn predecessors(&self, h: LaneHandle) -> Vec<LaneHandle> {
+        let dir = self.driving_direction(h).reverse();
+        self.connected(h, dir)
+            .into_iter()
+            .filter(|&(l, d)| self.driving_direction(l) == d.reverse())
+            .map(|(l, _)| l)
+            .collect()
+    }
+
+    /// Lanes joined to the end of `h` reached when travelling `dir`, with the direction of
+    /// travel on them.
+    pub(crate) fn connected(&self, h: LaneHandle, dir: Direction) -> Vec<(LaneHandle, Direction)> {
+        let road = self.handle_road(h);
+        let k = h.section as usize;
+        let Some(lane) = road.lane_sections[k].lane(h.lane) else {
+            return Vec::new();
+        };
+        let (next_id, next_k, link) = match dir {
+            Direction::Forward => (lane.successor, k + 1, &road.links.successor),
+            Direction::Backward => (lane.predecessor, k.wrapping_sub(1), &road.links.predecessor),
+        };
+        let mut out = Vec::new();
+        if next_k < road.lane_sections.len() {
+            if let Some(id) = next_id {
+                if road.lane_sections[next_k].lane(id).is_some() {
+                    out.push((
+                        LaneHandle {
+                            road: h.road,
+                            section: next_k as u32,
+                            lane: id,
+                        },
+                        dir,
+                    ));
+                }
+            }
+            return out;
+        }
+        match link {
+            Some(RoadLink {
+                element_type: ElementType::Road,
+                element_id,
+                contact_point,
+            }) => {
+                if let (Some(id), Some(&ri)) = (next_id, self.road_index.get(element_id)) {
+                    let cp = contact_point.unwrap_or(ContactPoint::Start);
+                    if let Some(e) = self.entry(ri, cp, id) {
+                        out.push(e);
+                    }
+                }
+            }
+            Some(RoadLink {
+                element_type: ElementType::Junction,
+                element_id,
+                ..
+            }) => {
+                if let Some(j) = self.junction(element_id) {
+                    for c in j.connections.iter().filter(|c| c.incoming_road == road.id) {
+                        let Some(&ci) = self.road_index.get(&c.connecting_road) else {
+                            continue;
+                        };
+                        for ll in c.lane_links.iter().filter(|ll| ll.from == h.lane) {
+                            if let Some(e) = self.entry(ci, c.contact_point, ll.to) {
+                                out.push(e);
+                            }
+                        }
+                    }
+                }
+            }
+            None => {}
+        }
+        out
+    }
+
+    /// Lane `id` of road `ri` entered at its start or end, with the direction of travel.
+    fn entry(&self, ri: usize, cp: ContactPoint, id: i32) -> Option<(LaneHandle, Direction)> {
+        let road = &self.roads[ri];
+        let (k, dir) = match cp {
+            ContactPoint::Start => (0, Direction::Forward),
+            ContactPoint::End => (road.lane_sections.len() - 1, Direction::Backward),
+        };
+        road.lane_sections[k].lane(id)?;
+        Some((
+            LaneHandle {
+                road: ri as u32,
+                section: k as u32,
+                lane: id,
+            },
+            dir,
+        ))
+    }
+}

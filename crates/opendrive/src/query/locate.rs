@@ -1,0 +1,228 @@
+//! World (x, y[, heading]) → road position (OpenDRIVE 1.8 §8.3: inverse of the reference-line
+//! coordinate system). Candidate road pieces come from the R*-tree, nearest box first; on each,
+//! Newton's method solves place(s, t) = (x, y) exactly (the 3-D placement of `frame`, so banked
+//! roads invert too), then the lane is the one whose borders enclose t.
+//!
+//! Choice among candidates: the smallest distance from the road surface (0 inside a lane);
+//! then, when a heading is given, the road whose direction (either way) is closest to it;
+//! then the smallest distance from the lane centre.
+
+use super::frame::road_frame;
+use super::lane_span::{lane_span, road_extent};
+use super::spatial::Piece;
+use crate::math::{angle_difference, normalize_angle, Real, LENGTH_EPSILON, SOLVER_TOLERANCE};
+use crate::model::Road;
+use crate::network::RoadNetwork;
+
+/// Newton iterations allowed per projection.
+const MAX_ITER: usize = 60;
+/// A projection whose residual exceeds this (m) did not land on its piece.
+const RESIDUAL_TOLERANCE: Real = 1e-7;
+
+/// A position on a road, as returned by [`RoadNetwork::locate`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct RoadPosition {
+    /// Road id.
+    pub road_id: String,
+    /// Lane whose borders enclose t (the outermost lane if t lies beyond the road surface).
+    pub lane_id: i32,
+    /// s along the reference line (m).
+    pub s: Real,
+    /// t from the reference line, positive left (m).
+    pub t: Real,
+    /// Offset from the lane centre, positive left (m).
+    pub offset: Real,
+    /// The junction the road belongs to, if any.
+    pub junction_id: Option<String>,
+    /// Query heading minus the road's heading at s, in (−π, π] (0 when no heading was given).
+    pub relative_heading: Real,
+    /// Horizontal distance from the road surface (m); 0 when the point is on a lane.
+    pub distance: Real,
+}
+
+/// One candidate projection.
+#[derive(Debug, Clone, Copy)]
+struct Candidate {
+    road: usize,
+    s: Real,
+    t: Real,
+    distance: Real,
+    heading_gap: Real,
+    road_hdg: Real,
+}
+
+/// Solves place(s, t) = (px, py) on `road` with s kept in [lo, hi]; returns (s, t, residual).
+fn project(road: &Road, px: Real, py: Real, lo: Real, hi: Real) -> Option<(Real, Real, Real)> {
+    let mut s = 0.5 * (lo + hi);
+    let mut t = 0.0;
+    let span = (hi - lo).max(1.0);
+    for _ in 0..MAX_ITER {
+        let f = road_frame(road, s);
+        let [x, y, _] = f.place(t, 0.0);
+        let (ex, ey) = (px - x, py - y);
+        let j = f.jacobian(t);
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if !det.is_finite() || det.abs() < 1e-12 {
+            return None;
+        }
+        let ds = ((j[1][1] * ex - j[0][1] * ey) / det).clamp(-span, span);
+        let dt = (-j[1][0] * ex + j[0][0] * ey) / det;
+        let s_new = (s + ds).clamp(lo, hi);
+        let moved = (s_new - s).abs();
+        s = s_new;
+        t += dt;
+        if moved < SOLVER_TOLERANCE && dt.abs() < SOLVER_TOLERANCE {
+            break;
+        }
+    }
+    let [x, y, _] = road_frame(road, s).place(t, 0.0);
+    let resid = (px - x).hypot(py - y);
+    resid.is_finite().then_some((s, t, resid))
+}
+
+impl RoadNetwork {
+    /// The road position of world point (x, y); `heading` (rad) helps choose between
+    /// overlapping roads (junctions). `None` only for an empty network or non-finite input.
+    pub fn locate(&self, x: Real, y: Real, heading: Option<Real>) -> Option<RoadPosition> {
+        if !(x.is_finite() && y.is_finite()) {
+            return None;
+        }
+        let best = self.best_candidate(self.spatial.nearest(x, y), x, y, heading);
+        best.map(|c| self.position(c, heading))
+    }
+
+    /// The position of (x, y) projected onto one given road (the nearest point of its
+    /// surface if (x, y) lies off it); `None` for an unknown road or non-finite input.
+    pub fn locate_on_road(&self, road_id: &str, x: Real, y: Real) -> Option<RoadPosition> {
+        let (ri, _) = self.road_or_err(road_id).ok()?;
+        if !(x.is_finite() && y.is_finite()) {
+            return None;
+        }
+        let range = self.spatial.per_road[ri].clone();
+        let mut order: Vec<(Real, usize)> = range
+            .map(|i| (self.spatial.boxes[i].distance_2(&[x, y]), i))
+            .collect();
+        order.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let best = self.best_candidate(order.into_iter().map(|(d2, pi)| (pi, d2)), x, y, None);
+        best.map(|c| self.position(c, None))
+    }
+
+    /// The best candidate over pieces given nearest box first, as (piece, squared box
+    /// distance); stops once a box lies farther than the best candidate's surface distance.
+    fn best_candidate(
+        &self,
+        pieces: impl Iterator<Item = (usize, Real)>,
+        x: Real,
+        y: Real,
+        heading: Option<Real>,
+    ) -> Option<Candidate> {
+        let mut best: Option<Candidate> = None;
+        for (pi, d2) in pieces {
+            if let Some(b) = &best {
+                if d2.sqrt() > b.distance + LENGTH_EPSILON {
+                    break;
+                }
+            }
+            if let Some(c) = self.candidate(&self.spatial.pieces[pi], x, y, heading) {
+                if best.as_ref().map_or(true, |b| better(&c, b)) {
+                    best = Some(c);
+                }
+            }
+        }
+        best
+    }
+
+    fn candidate(
+        &self,
+        piece: &Piece,
+        x: Real,
+        y: Real,
+        heading: Option<Real>,
+    ) -> Option<Candidate> {
+        let road = &self.roads[piece.road];
+        let (s, t, resid) = project(road, x, y, piece.s0, piece.s1)?;
+        let at_road_end = s <= LENGTH_EPSILON || s >= road.length - LENGTH_EPSILON;
+        if resid > RESIDUAL_TOLERANCE && !at_road_end {
+            // The foot point lies on a neighbouring piece, which is a candidate of its own.
+            return None;
+        }
+        let section = road.lane_section_at(s);
+        let (right, left) = road_extent(road, section, s);
+        let outside = (t - left).max(right - t).max(0.0);
+        let along = if resid > RESIDUAL_TOLERANCE {
+            resid
+        } else {
+            0.0
+        };
+        let f = road_frame(road, s);
+        let heading_gap = heading.map_or(0.0, |h| {
+            let d = angle_difference(h, f.hdg).abs();
+            d.min(std::f64::consts::PI - d)
+        });
+        Some(Candidate {
+            road: piece.road,
+            s,
+            t,
+            distance: outside.max(along),
+            heading_gap,
+            road_hdg: f.hdg,
+        })
+    }
+
+    fn position(&self, c: Candidate, heading: Option<Real>) -> RoadPosition {
+        let road = &self.roads[c.road];
+        let (lane_id, offset) = lane_at(road, c.s, c.t);
+        RoadPosition {
+            road_id: road.id.clone(),
+            lane_id,
+            s: c.s,
+            t: c.t,
+            offset,
+            junction_id: road.junction.clone(),
+            relative_heading: heading.map_or(0.0, |h| normalize_angle(h - c.road_hdg)),
+            distance: c.distance,
+        }
+    }
+}
+
+/// Whether candidate `a` is preferred over `b`.
+fn better(a: &Candidate, b: &Candidate) -> bool {
+    if (a.distance - b.distance).abs() > 1e-9 {
+        return a.distance < b.distance;
+    }
+    if (a.heading_gap - b.heading_gap).abs() > 1e-6 {
+        return a.heading_gap < b.heading_gap;
+    }
+    a.t.abs() < b.t.abs()
+}
+
+/// The lane at (s, t) of `road` and the offset from its centre: the first lane, from the
+/// centre outwards on t's side, whose outer border lies beyond t; the outermost lane when t is
+/// off the road; the nearest lane of the other side when t's side has none.
+pub(crate) fn lane_at(road: &Road, s: Real, t: Real) -> (i32, Real) {
+    let section = road.lane_section_at(s);
+    let (off, _) = super::lane_span::lane_offset(road, s);
+    let (left_n, right_n) = (section.left.len() as i32, section.right.len() as i32);
+    let (sign, n) = match (t >= off, left_n > 0, right_n > 0) {
+        (true, true, _) | (false, true, false) => (1, left_n),
+        (_, _, true) => (-1, right_n),
+        _ => return (0, t - off),
+    };
+    let mut chosen = sign * n;
+    for k in 1..=n {
+        let id = sign * k;
+        if let Some(sp) = lane_span(road, section, id, s) {
+            let beyond = if sign > 0 {
+                sp.outer >= t
+            } else {
+                sp.outer <= t
+            };
+            if beyond && sp.width() > LENGTH_EPSILON {
+                chosen = id;
+                break;
+            }
+        }
+    }
+    let center = lane_span(road, section, chosen, s).map_or(off, |sp| sp.center());
+    (chosen, t - center)
+}

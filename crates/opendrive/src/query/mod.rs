@@ -1,0 +1,16 @@
+//! Questions asked of a loaded network: poses, lane extents, world → road look-up, the
+//! lane graph and routes.
+
+mod frame;
+mod graph;
+mod lane_span;
+mod locate;
+mod pose;
+mod route;
+mod spatial;
+
+pub use graph::{Direction, LaneHandle};
+pub use lane_span::LaneSpan;
+pub use locate::RoadPosition;
+pub use route::{LanePosition, LaneRoute, RouteSegment, LANE_CHANGE_COST};
+pub(crate) use spatial::SpatialIndex;

@@ -1,0 +1,163 @@
+//! Spatial index over the road surfaces: every geometry is cut into pieces of at most
+//! [`PIECE_LENGTH`] metres, and each piece's axis-aligned box (reference line ± the outermost
+//! lane borders, plus a margin for curvature between samples) goes into an R*-tree (`rstar`).
+//! A look-up visits only pieces whose box is near the point, then projects exactly.
+
+use std::ops::Range;
+
+use rstar::{PointDistance, RTree, RTreeObject, AABB};
+
+use super::frame::road_frame;
+use super::lane_span::road_extent;
+use crate::math::Real;
+use crate::model::Road;
+
+/// Longest piece of road per index entry (m).
+const PIECE_LENGTH: Real = 10.0;
+/// Samples per piece (ends included).
+const SAMPLES: usize = 5;
+/// Margin added around each box (m): lane heights on banked roads, cubic lane widths
+/// between samples.
+const MARGIN: Real = 0.5;
+
+/// A stretch [s0, s1] of one road.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Piece {
+    /// Index of the road in the network.
+    pub(crate) road: usize,
+    /// Start s (m).
+    pub(crate) s0: Real,
+    /// End s (m).
+    pub(crate) s1: Real,
+}
+
+/// An index entry: a piece's box and its index in [`SpatialIndex::pieces`].
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Entry {
+    env: AABB<[Real; 2]>,
+    piece: usize,
+}
+
+impl RTreeObject for Entry {
+    type Envelope = AABB<[Real; 2]>;
+    fn envelope(&self) -> Self::Envelope {
+        self.env
+    }
+}
+
+impl PointDistance for Entry {
+    fn distance_2(&self, point: &[Real; 2]) -> Real {
+        self.env.distance_2(point)
+    }
+}
+
+/// The R*-tree of road pieces.
+#[derive(Debug, Clone)]
+pub(crate) struct SpatialIndex {
+    pub(crate) tree: RTree<Entry>,
+    pub(crate) pieces: Vec<Piece>,
+    pub(crate) boxes: Vec<AABB<[Real; 2]>>,
+    /// Pieces of road i are `pieces[per_road[i]]`.
+    pub(crate) per_road: Vec<Range<usize>>,
+}
+
+impl SpatialIndex {
+    /// Builds the index for all roads.
+    pub(crate) fn build(roads: &[Road]) -> Self {
+        let mut pieces = Vec::new();
+        let mut boxes = Vec::new();
+        let mut per_road = Vec::with_capacity(roads.len());
+        for (ri, road) in roads.iter().enumerate() {
+            let first = pieces.len();
+            let geoms = road.plan_view.geometries();
+            for (gi, g) in geoms.iter().enumerate() {
+                let g_end = geoms
+                    .get(gi + 1)
+                    .map_or(road.length, |n| n.s)
+                    .min(road.length);
+                let g_start = g.s.min(g_end);
+                let n = (((g_end - g_start) / PIECE_LENGTH).ceil() as usize).max(1);
+                let h = (g_end - g_start) / n as Real;
+                for k in 0..n {
+                    let s0 = g_start + h * k as Real;
+                    let s1 = if k + 1 == n { g_end } else { s0 + h };
+                    boxes.push(piece_box(road, s0, s1));
+                    pieces.push(Piece { road: ri, s0, s1 });
+                }
+            }
+            per_road.push(first..pieces.len());
+        }
+        let entries = boxes
+            .iter()
+            .enumerate()
+            .map(|(i, env)| Entry {
+                env: *env,
+                piece: i,
+            })
+            .collect();
+        Self {
+            tree: RTree::bulk_load(entries),
+            pieces,
+            boxes,
+            per_road,
+        }
+    }
+
+    /// Bounding box of everything: [min x, min y, max x, max y].
+    pub(crate) fn bounds(&self) -> Option<[Real; 4]> {
+        if self.pieces.is_empty() {
+            return None;
+        }
+        let env = self.tree.root().envelope();
+        let (lo, hi) = (env.lower(), env.upper());
+        Some([lo[0], lo[1], hi[0], hi[1]])
+    }
+
+    /// Index entries in order of their box's distance to (x, y), with squared distance.
+    pub(crate) fn nearest(&self, x: Real, y: Real) -> impl Iterator<Item = (usize, Real)> + '_ {
+        self.tree
+            .nearest_neighbor_iter_with_distance_2(&[x, y])
+            .map(|(e, d2)| (e.piece, d2))
+    }
+}
+
+/// Box of the road surface over [s0, s1]: sampled at the ends, interior points and either
+/// side of every lane-section start inside, widened by the sagitta between samples and
+/// [`MARGIN`].
+fn piece_box(road: &Road, s0: Real, s1: Real) -> AABB<[Real; 2]> {
+    let mut lo = [Real::INFINITY; 2];
+    let mut hi = [Real::NEG_INFINITY; 2];
+    let mut max_k: Real = 0.0;
+    let mut max_t: Real = 0.0;
+    let mut add = |s: Real| {
+        let f = road_frame(road, s);
+        let section = road.lane_section_at(s);
+        let (right, left) = road_extent(road, section, s);
+        max_k = max_k.max(f.curvature.abs());
+        max_t = max_t.max(right.abs()).max(left.abs());
+        for t in [right, left] {
+            let [x, y, _] = f.place(t, 0.0);
+            lo = [lo[0].min(x), lo[1].min(y)];
+            hi = [hi[0].max(x), hi[1].max(y)];
+        }
+    };
+    for k in 0..SAMPLES {
+        add(s0 + (s1 - s0) * k as Real / (SAMPLES - 1) as Real);
+    }
+    for ls in &road.lane_sections {
+        if ls.s > s0 && ls.s < s1 {
+            add(ls.s);
+            add((ls.s - 1e-6).max(s0));
+        }
+    }
+    // Between samples h apart, a curve of curvature κ leaves the chord by at most κh²/8; at
+    // lateral offset t the curvature grows to κ/(1 − κt), bounded here by doubling.
+    let h = (s1 - s0) / (SAMPLES - 1) as Real;
+    let k_eff = if max_k * max_t < 0.5 {
+        2.0 * max_k
+    } else {
+        1.0 / h.max(1e-3)
+    };
+    let pad = MARGIN + k_eff * h * h / 8.0 + if max_k * max_t >= 0.5 { h } else { 0.0 };
+    AABB::from_corners([lo[0] - pad, lo[1] - pad], [hi[0] + pad, hi[1] + pad])
+}
