@@ -54,6 +54,18 @@ pub fn evaluate(source: &str, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<
     Expression::parse(source)?.evaluate(lookup)
 }
 
+/// Splits an attribute value of the form `${…}` into the expression source between the
+/// delimiters; `None` for any other text (a literal or a `$name` reference). The source starts
+/// at byte 2 of the attribute, which maps [`ExprError::offset`] back into the attribute.
+///
+/// ```
+/// assert_eq!(scenario::expr::expression_source("${$a + 1}"), Some("$a + 1"));
+/// assert_eq!(scenario::expr::expression_source("$a"), None);
+/// ```
+pub fn expression_source(attribute: &str) -> Option<&str> {
+    attribute.strip_prefix("${")?.strip_suffix('}')
+}
+
 /// Recursion depth is bounded by the tree's height (≤ `MAX_DEPTH`, checked by the parser).
 fn eval(node: &Node, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<Value, ExprError> {
     match &node.kind {
@@ -71,11 +83,13 @@ fn eval(node: &Node, lookup: &dyn Fn(&str) -> Option<Value>) -> Result<Value, Ex
             op.apply(&lhs, &rhs, node.offset)
         }
         NodeKind::Call(function, args) => {
-            let values = args
-                .iter()
-                .map(|a| eval(a, lookup))
-                .collect::<Result<Vec<_>, _>>()?;
-            function.apply(&values, node.offset)
+            // Arity is at most 2 (checked by the parser): evaluate into a fixed array rather
+            // than a Vec, so a call allocates nothing.
+            let mut values = [Value::Bool(false), Value::Bool(false)];
+            for (slot, arg) in values.iter_mut().zip(args) {
+                *slot = eval(arg, lookup)?;
+            }
+            function.apply(&values[..args.len().min(2)], node.offset)
         }
     }
 }

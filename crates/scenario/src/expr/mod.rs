@@ -23,7 +23,7 @@ mod parser;
 mod value;
 
 pub use error::{ExprError, ExprErrorKind};
-pub use eval::{evaluate, Expression};
+pub use eval::{evaluate, expression_source, Expression};
 pub use function::Function;
 pub use parser::MAX_DEPTH;
 pub use value::{Value, ValueType};
