@@ -31,14 +31,8 @@ pub enum EntityCondition {
         value: f64,
         /// Rule.
         rule: Rule,
-        /// Between bounding boxes (true) or reference points.
-        freespace: bool,
-        /// Measurement frame (1.1+).
-        coordinate_system: Option<CoordinateSystem>,
-        /// Distance type (1.1+).
-        relative_distance_type: Option<RelativeDistanceType>,
-        /// Routing algorithm (1.2+).
-        routing_algorithm: Option<RoutingAlgorithm>,
+        /// How the distance is measured.
+        measure: DistanceMeasure,
     },
     /// TimeToCollisionCondition, s.
     TimeToCollision {
@@ -48,14 +42,8 @@ pub enum EntityCondition {
         value: f64,
         /// Rule.
         rule: Rule,
-        /// Between bounding boxes (true) or reference points.
-        freespace: bool,
-        /// Measurement frame.
-        coordinate_system: Option<CoordinateSystem>,
-        /// Distance type.
-        relative_distance_type: Option<RelativeDistanceType>,
-        /// Routing algorithm (1.2+).
-        routing_algorithm: Option<RoutingAlgorithm>,
+        /// How the distance is measured.
+        measure: DistanceMeasure,
     },
     /// AccelerationCondition, m/s².
     Acceleration {
@@ -111,14 +99,8 @@ pub enum EntityCondition {
         value: f64,
         /// Rule.
         rule: Rule,
-        /// Between bounding boxes (true) or reference points.
-        freespace: bool,
-        /// Measurement frame (1.1+).
-        coordinate_system: Option<CoordinateSystem>,
-        /// Distance type (1.1+).
-        relative_distance_type: Option<RelativeDistanceType>,
-        /// Routing algorithm (1.2+).
-        routing_algorithm: Option<RoutingAlgorithm>,
+        /// How the distance is measured.
+        measure: DistanceMeasure,
     },
     /// RelativeDistanceCondition to an entity, m.
     RelativeDistance {
@@ -128,14 +110,8 @@ pub enum EntityCondition {
         value: f64,
         /// Rule.
         rule: Rule,
-        /// Between bounding boxes (true) or reference points.
-        freespace: bool,
-        /// Distance type.
-        relative_distance_type: RelativeDistanceType,
-        /// Measurement frame (1.1+).
-        coordinate_system: Option<CoordinateSystem>,
-        /// Routing algorithm (1.2+).
-        routing_algorithm: Option<RoutingAlgorithm>,
+        /// How the distance is measured.
+        measure: DistanceMeasure,
     },
     /// RelativeClearanceCondition (1.2+): lanes free of entities.
     RelativeClearance {
@@ -176,6 +152,22 @@ pub enum EntityCondition {
         /// Frame.
         coordinate_system: Option<CoordinateSystem>,
     },
+}
+
+/// How a distance-based condition measures (the attributes `freespace`,
+/// `coordinateSystem`, `relativeDistanceType` and `routingAlgorithm` shared by
+/// TimeHeadwayCondition, TimeToCollisionCondition, DistanceCondition and
+/// RelativeDistanceCondition).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DistanceMeasure {
+    /// Between bounding boxes (true) or reference points.
+    pub freespace: bool,
+    /// Measurement frame (1.1+; absent: entity).
+    pub coordinate_system: Option<CoordinateSystem>,
+    /// Distance type (1.1+; absent: euclidian). Required by RelativeDistanceCondition.
+    pub relative_distance_type: Option<RelativeDistanceType>,
+    /// Routing algorithm for road distances (1.2+).
+    pub routing_algorithm: Option<RoutingAlgorithm>,
 }
 
 /// What a CollisionCondition watches (XSD `CollisionCondition` choice).

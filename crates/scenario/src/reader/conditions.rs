@@ -5,8 +5,8 @@
 
 use crate::error::Result;
 use crate::model::{
-    ByValueCondition, CollisionTarget, Condition, ConditionGroup, ConditionKind, EntityCondition,
-    TimeToCollisionTarget, Trigger, TriggeringEntities,
+    ByValueCondition, CollisionTarget, Condition, ConditionGroup, ConditionKind, DistanceMeasure,
+    EntityCondition, RelativeDistanceType, TimeToCollisionTarget, Trigger, TriggeringEntities,
 };
 use crate::reader::context::{Ctx, Node};
 use crate::reader::positions::read_position_child;
@@ -92,6 +92,17 @@ fn along_route<'a>(ctx: &mut Ctx<'a>, c: Node<'a>) -> Result<()> {
     Ok(())
 }
 
+/// Reads the measurement attributes shared by the distance-based conditions.
+fn read_distance_measure<'a>(ctx: &mut Ctx<'a>, c: Node<'a>) -> Result<DistanceMeasure> {
+    along_route(ctx, c)?;
+    Ok(DistanceMeasure {
+        freespace: ctx.req(c, "freespace")?,
+        coordinate_system: ctx.opt(c, "coordinateSystem")?,
+        relative_distance_type: ctx.opt(c, "relativeDistanceType")?,
+        routing_algorithm: ctx.opt(c, "routingAlgorithm")?,
+    })
+}
+
 /// Reads XSD `EntityCondition`.
 fn read_entity_condition<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<EntityCondition> {
     let c = ctx.choice(n, ENTITY_CONDITIONS)?;
@@ -110,20 +121,13 @@ fn read_entity_condition<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<EntityCon
         "OffroadCondition" => EntityCondition::Offroad {
             duration: ctx.req(c, "duration")?,
         },
-        "TimeHeadwayCondition" => {
-            along_route(ctx, c)?;
-            EntityCondition::TimeHeadway {
-                entity_ref: ctx.entity(c, "entityRef")?,
-                value: ctx.req(c, "value")?,
-                rule: ctx.req(c, "rule")?,
-                freespace: ctx.req(c, "freespace")?,
-                coordinate_system: ctx.opt(c, "coordinateSystem")?,
-                relative_distance_type: ctx.opt(c, "relativeDistanceType")?,
-                routing_algorithm: ctx.opt(c, "routingAlgorithm")?,
-            }
-        }
+        "TimeHeadwayCondition" => EntityCondition::TimeHeadway {
+            entity_ref: ctx.entity(c, "entityRef")?,
+            value: ctx.req(c, "value")?,
+            rule: ctx.req(c, "rule")?,
+            measure: read_distance_measure(ctx, c)?,
+        },
         "TimeToCollisionCondition" => {
-            along_route(ctx, c)?;
             let t = ctx.child(c, "TimeToCollisionConditionTarget")?;
             let tc = ctx.choice(t, "Position, EntityRef")?;
             let target = match tc.tag_name().name() {
@@ -137,10 +141,7 @@ fn read_entity_condition<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<EntityCon
                 target,
                 value: ctx.req(c, "value")?,
                 rule: ctx.req(c, "rule")?,
-                freespace: ctx.req(c, "freespace")?,
-                coordinate_system: ctx.opt(c, "coordinateSystem")?,
-                relative_distance_type: ctx.opt(c, "relativeDistanceType")?,
-                routing_algorithm: ctx.opt(c, "routingAlgorithm")?,
+                measure: read_distance_measure(ctx, c)?,
             }
         }
         "AccelerationCondition" => EntityCondition::Acceleration {
@@ -175,26 +176,21 @@ fn read_entity_condition<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<EntityCon
                 tolerance: ctx.req(c, "tolerance")?,
             }
         }
-        "DistanceCondition" => {
-            along_route(ctx, c)?;
-            EntityCondition::Distance {
-                position: read_position_child(ctx, c, "Position")?,
-                value: ctx.req(c, "value")?,
-                rule: ctx.req(c, "rule")?,
-                freespace: ctx.req(c, "freespace")?,
-                coordinate_system: ctx.opt(c, "coordinateSystem")?,
-                relative_distance_type: ctx.opt(c, "relativeDistanceType")?,
-                routing_algorithm: ctx.opt(c, "routingAlgorithm")?,
-            }
-        }
+        "DistanceCondition" => EntityCondition::Distance {
+            position: read_position_child(ctx, c, "Position")?,
+            value: ctx.req(c, "value")?,
+            rule: ctx.req(c, "rule")?,
+            measure: read_distance_measure(ctx, c)?,
+        },
         "RelativeDistanceCondition" => EntityCondition::RelativeDistance {
             entity_ref: ctx.entity(c, "entityRef")?,
             value: ctx.req(c, "value")?,
             rule: ctx.req(c, "rule")?,
-            freespace: ctx.req(c, "freespace")?,
-            relative_distance_type: ctx.req(c, "relativeDistanceType")?,
-            coordinate_system: ctx.opt(c, "coordinateSystem")?,
-            routing_algorithm: ctx.opt(c, "routingAlgorithm")?,
+            measure: {
+                // relativeDistanceType is required here, optional elsewhere.
+                let _: RelativeDistanceType = ctx.req(c, "relativeDistanceType")?;
+                read_distance_measure(ctx, c)?
+            },
         },
         "RelativeClearanceCondition" => {
             ctx.since(c, 2);

@@ -1,0 +1,105 @@
+//! Bad input never panics or hangs: each fixture `tests/files/errors/NAME.xosc` fails with
+//! the exact message and 1-based line:column in `NAME.expected` ("line:col: message", the
+//! file path left out and the fixture folder written `$DIR/` so the text does not depend on
+//! the checkout). The positions were counted by hand in the fixtures; `tests/files/errors/
+//! README.md` says what each position points at.
+
+use std::path::{Path, PathBuf};
+
+use scenario::{ErrorKind, Scenario};
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/errors")).join(name)
+}
+
+fn check(name: &str) {
+    let path = fixture(&format!("{name}.xosc"));
+    let expected = std::fs::read_to_string(fixture(&format!("{name}.expected"))).unwrap();
+    let err = Scenario::load(&path).expect_err("the fixture is broken on purpose");
+    assert!(err.pos().file.ends_with(format!("{name}.xosc")), "{err}");
+    // Paths in messages are shown relative to the fixture folder, as `$DIR/…`.
+    let dir = fixture("").display().to_string();
+    let actual =
+        format!("{}:{}: {}", err.pos().line, err.pos().col, err.kind()).replace(&dir, "$DIR/");
+    assert_eq!(actual, expected.trim_end(), "{name}");
+    // Display appends "at file:line:col".
+    let shown = err.to_string();
+    assert!(
+        shown.ends_with(&format!("{name}.xosc:{}:{}", err.pos().line, err.pos().col)),
+        "{shown}"
+    );
+}
+
+macro_rules! error_cases {
+    ($($name:ident),+ $(,)?) => {
+        $(#[test]
+        fn $name() {
+            check(stringify!($name));
+        })+
+    };
+}
+
+error_cases!(
+    malformed_xml,
+    unknown_element,
+    wrong_enum_literal,
+    unknown_parameter,
+    unknown_entity,
+    selection_cycle,
+    self_referencing_parameter,
+    parameter_cycle,
+    division_by_zero,
+    wrong_parameter_type,
+    missing_attribute,
+    missing_road_network_file,
+    missing_catalog_entry,
+    constraint_violated,
+);
+
+#[test]
+fn the_valid_twin_of_the_fixtures_loads() {
+    // Every error fixture is this file with one fault added, so the faults alone fail.
+    let s = Scenario::load(&fixture("valid.xosc")).unwrap();
+    assert_eq!(s.entities.scenario_objects.len(), 1);
+    assert!(s.warnings.is_empty(), "{:?}", s.warnings);
+}
+
+#[test]
+fn a_100_mb_file_is_refused_before_reading() {
+    let dir = std::env::temp_dir().join(format!("oscsim-scenario-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("huge.xosc");
+    let file = std::fs::File::create(&path).unwrap();
+    // A sparse file: 100 MB long without writing 100 MB.
+    file.set_len(100 * 1000 * 1000).unwrap();
+    let err = Scenario::load(&path).unwrap_err();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let ErrorKind::FileTooLarge { size, limit, .. } = err.kind() else {
+        panic!("{err}")
+    };
+    assert_eq!(*size, 100_000_000);
+    assert_eq!(*limit, 64 * 1024 * 1024);
+    assert_eq!((err.pos().line, err.pos().col), (1, 1));
+    // 100 000 000 B / 1 048 576 B/MiB = 95.37 MiB.
+    assert!(
+        err.to_string()
+            .starts_with("expected a file of at most 64 MiB, found "),
+        "{err}"
+    );
+    assert!(err.to_string().contains("with 95.4 MiB at "), "{err}");
+}
+
+#[test]
+fn a_file_just_under_the_limit_of_whitespace_is_malformed_xml_not_a_hang() {
+    let dir = std::env::temp_dir().join(format!("oscsim-scenario-ws-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("blank.xosc");
+    // 8 MB of spaces and newlines: no root element. 100 000 lines of 80 spaces + '\n'.
+    let line = format!("{}\n", " ".repeat(80));
+    std::fs::write(&path, line.repeat(100_000)).unwrap();
+    let err = Scenario::load(&path).unwrap_err();
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert!(matches!(err.kind(), ErrorKind::Xml { .. }), "{err}");
+    // roxmltree reports a missing root element at the start of the document.
+    assert_eq!((err.pos().line, err.pos().col), (1, 1), "{err}");
+}
