@@ -1,14 +1,16 @@
 //! Criterion benchmarks of the OpenSCENARIO 2.0 §8.7 measurement methods:
-//! time_to_collision (§8.7.5.1.1) over 1,000 pairs.
+//! time_to_collision (§8.7.5.1.1) over 1,000 pairs, and space_gap (§8.7.5.1.3) between pairs
+//! of cars on the radius-100 m arc of esmini's curve_r100.xodr.
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use engine::domain::{
-    BoundingBox, MovableObject, PhysicalObject, Position3d, TrafficParticipant, Vector3,
+    BoundingBox, DistanceDirection, MovableObject, PhysicalObject, Position3d, TrafficParticipant,
+    Vector3,
 };
-use opendrive::Pose;
+use opendrive::{Pose, RoadNetwork};
 
 /// A car (4.5 × 1.8 m box, centre 1.4 m ahead of the rear axle) at (x, y) heading h, driving
 /// forward at v.
@@ -68,5 +70,43 @@ fn time_to_collision(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, time_to_collision);
+fn space_gap_on_curve(c: &mut Criterion) {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus/esmini/xodr/curve_r100.xodr"
+    );
+    let net = RoadNetwork::from_file(std::path::Path::new(path)).expect("corpus road loads");
+    // 100 pairs in lane −1 on the arc (s ∈ [500, 657]), 5 to 30 m apart.
+    let pairs: Vec<(TrafficParticipant, TrafficParticipant)> = (0..100)
+        .map(|i| {
+            let s = 505.0 + 1.2 * i as f64;
+            let ahead = 5.0 + 0.25 * i as f64;
+            let pose = |s: f64| {
+                net.lane_pose("0", -1, s.min(655.0), 0.0)
+                    .expect("s on the road")
+            };
+            let (a, b) = (pose(s), pose(s + ahead));
+            (car(a.x, a.y, a.h, 10.0), car(b.x, b.y, b.h, 10.0))
+        })
+        .collect();
+    let mut group = c.benchmark_group("space_gap");
+    group
+        .sample_size(10)
+        .measurement_time(Duration::from_secs(3));
+    group.throughput(Throughput::Elements(pairs.len() as u64));
+    group.bench_function("curve_r100_100_pairs", |bench| {
+        bench.iter(|| {
+            let mut sum = 0.0;
+            for (a, b) in &pairs {
+                sum += black_box(a)
+                    .space_gap(&net, black_box(b), DistanceDirection::Longitudinal)
+                    .expect("both on the road");
+            }
+            sum
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, time_to_collision, space_gap_on_curve);
 criterion_main!(benches);

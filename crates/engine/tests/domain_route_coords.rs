@@ -11,41 +11,18 @@
 //! there. Lanes are 3 m wide.
 
 use std::f64::consts::PI;
-use std::path::Path;
 
-use engine::domain::{
-    BoundingBox, DomainErrorKind, OnRouteType, PhysicalObject, Position3d, RouteElement,
-};
-use opendrive::{Pose, RoadNetwork};
+use engine::domain::{DomainErrorKind, OnRouteType, PhysicalObject, RouteElement};
+use opendrive::Pose;
+
+mod domain_support;
+use domain_support::{arc_pose, car_box, network};
 
 /// Round-trip tolerance: the road model inverts world → road by Newton iteration to 1e-10 m.
 const TOL: f64 = 1e-7;
 
-fn network(name: &str) -> RoadNetwork {
-    let path = format!(
-        "{}/../../../shared/corpus/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    RoadNetwork::from_file(Path::new(&path)).expect("corpus road network loads")
-}
-
 fn object(pose: Pose) -> PhysicalObject {
-    let bb = BoundingBox::new(Position3d::new(1.5, 0.0, 0.75), 4.0, 2.0, 1.5).expect("valid");
-    PhysicalObject::new(bb, pose)
-}
-
-/// The world pose at (s, t) on the arc of curve_r100 (s ∈ [500, 657.08]): the angle swept is
-/// φ = (s − 500) / 100, the point lies (100 − t) from the centre (500, 100) at direction
-/// (sin φ, −cos φ), and the heading is φ.
-fn on_arc(s: f64, t: f64) -> Pose {
-    let phi = (s - 500.0) / 100.0;
-    let r = 100.0 - t;
-    Pose {
-        x: 500.0 + r * phi.sin(),
-        y: 100.0 - r * phi.cos(),
-        h: phi,
-        ..Pose::default()
-    }
+    PhysicalObject::new(car_box(), pose)
 }
 
 #[test]
@@ -54,7 +31,7 @@ fn route_points_on_a_curve() {
     // Lane −1 centre at s = 550 on the arc, 0.25 m left of the lane centre: t = −1.285.
     // Lane −1 is driven towards +s from the section start (s = 0): lane s = 550,
     // lane t = +0.25.
-    let a = object(on_arc(550.0, -1.285));
+    let a = object(arc_pose(550.0, -1.285));
     let cases = [
         (
             OnRouteType::OnRoad,
@@ -168,7 +145,7 @@ fn route_point_errors() {
         "expected a position on a road, found none at world (250.000, 50.000)"
     );
     // On the road but outside any junction: not on a crossing.
-    let on_road = object(on_arc(550.0, -1.535));
+    let on_road = object(arc_pose(550.0, -1.535));
     let err = on_road
         .get_t_coord(&net, OnRouteType::OnCrossing)
         .expect_err("no junction");

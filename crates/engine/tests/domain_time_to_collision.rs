@@ -7,18 +7,16 @@
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI, SQRT_2};
 
 use engine::domain::{
-    BoundingBox, MovableObject, PhysicalObject, Position3d, StationaryObject, TrafficParticipant,
-    Vector3,
+    BoundingBox, PhysicalObject, Position3d, StationaryObject, TrafficParticipant,
 };
 use opendrive::Pose;
+
+mod domain_support;
+use domain_support::{assert_close_opt, car_box, participant_with};
 
 /// Tolerance of the closed forms below: they involve a handful of operations on numbers of
 /// order 10, so 1e-9 s leaves three orders of magnitude for round-off.
 const TOL: f64 = 1e-9;
-
-fn car_box() -> BoundingBox {
-    BoundingBox::new(Position3d::new(1.5, 0.0, 0.75), 4.0, 2.0, 1.5).expect("valid dimensions")
-}
 
 fn square_box() -> BoundingBox {
     BoundingBox::new(Position3d::new(0.0, 0.0, 0.75), 2.0, 2.0, 1.5).expect("valid dimensions")
@@ -26,16 +24,17 @@ fn square_box() -> BoundingBox {
 
 /// A participant with `bb` at (x, y, z) heading h, moving forward at `v` m/s.
 fn participant(bb: BoundingBox, x: f64, y: f64, z: f64, h: f64, v: f64) -> TrafficParticipant {
-    let pose = Pose {
-        x,
-        y,
-        z,
-        h,
-        ..Pose::default()
-    };
-    let mut m = MovableObject::new(PhysicalObject::new(bb, pose));
-    m.velocity.translational = Vector3::new(v, 0.0, 0.0);
-    TrafficParticipant::new(m, Vec::new())
+    participant_with(
+        bb,
+        Pose {
+            x,
+            y,
+            z,
+            h,
+            ..Pose::default()
+        },
+        v,
+    )
 }
 
 fn car(x: f64, y: f64, h: f64, v: f64) -> TrafficParticipant {
@@ -170,21 +169,12 @@ fn cases() -> Vec<(
     ]
 }
 
-/// Asserts that `got` is `expected` within `TOL` (or both are `None`).
-fn assert_ttc(name: &str, got: Option<f64>, expected: Option<f64>) {
-    match (got, expected) {
-        (Some(g), Some(e)) => assert!((g - e).abs() < TOL, "{name}: got {g}, expected {e}"),
-        (None, None) => {}
-        _ => panic!("{name}: got {got:?}, expected {expected:?}"),
-    }
-}
-
 #[test]
 fn time_to_collision_table() {
     for (name, a, b, expected) in cases() {
-        assert_ttc(name, a.time_to_collision(&b), expected);
+        assert_close_opt(name, a.time_to_collision(&b), expected, TOL);
         // The reverse question has the same answer: the relative motion is the same.
-        assert_ttc(name, b.time_to_collision(&a), expected);
+        assert_close_opt(name, b.time_to_collision(&a), expected, TOL);
     }
 }
 
