@@ -8,5 +8,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod condition;
 pub mod domain;
+pub mod position;
 pub mod storyboard;
