@@ -114,7 +114,7 @@ fn maneuver_group_with_maximum_execution_count_2_runs_twice() {
             "0.100 MG runningState -> endTransition -> standbyState",
             "0.200 MG standbyState -> startTransition -> runningState",
             "0.200 M initState -> startTransition -> runningState",
-            "0.200 E initState -> startTransition -> runningState",
+            "0.200 E standbyState -> startTransition -> runningState",
             "0.200 A1 initState -> startTransition -> runningState",
             "0.300 A1 runningState -> endTransition -> completeState",
             "0.300 E runningState -> endTransition -> completeState",

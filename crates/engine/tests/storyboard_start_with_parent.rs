@@ -11,7 +11,8 @@ use storyboard_support::*;
 #[test]
 fn children_without_start_trigger_start_with_their_parent() {
     // Story, Act, ManeuverGroup, Maneuver and Event have no start trigger: all start at t = 0
-    // with the storyboard; the instantaneous action (0 steps) ends in the same step, and the
+    // with the storyboard. The Event enters standbyState with its Maneuver and, inheriting the
+    // Act's (fired) trigger, starts from there in the same step (§8.4.2); the instantaneous action (0 steps) ends in the same step, and the
     // ends propagate up to the Story. The Storyboard itself only ends by its stop trigger
     // (§7.2.1), so it stays running.
     let desc = storyboard(simple_act());
@@ -28,7 +29,7 @@ fn children_without_start_trigger_start_with_their_parent() {
             "0.000 Act initState -> startTransition -> runningState",
             "0.000 MG initState -> startTransition -> runningState",
             "0.000 M initState -> startTransition -> runningState",
-            "0.000 E initState -> startTransition -> runningState",
+            "0.000 E standbyState -> startTransition -> runningState",
             "0.000 A1 initState -> startTransition -> runningState",
             "0.000 A1 runningState -> endTransition -> completeState",
             "0.000 E runningState -> endTransition -> completeState",
@@ -80,10 +81,10 @@ fn children_of_a_just_started_act_are_handled_in_the_same_step() {
             "0.300 Act standbyState -> startTransition -> runningState",
             "0.300 MG initState -> startTransition -> runningState",
             "0.300 M initState -> startTransition -> runningState",
-            "0.300 E2 initState -> startTransition -> runningState",
-            "0.300 A2 initState -> startTransition -> runningState",
             "0.300 E1 standbyState -> startTransition -> runningState",
             "0.300 A1 initState -> startTransition -> runningState",
+            "0.300 E2 standbyState -> startTransition -> runningState",
+            "0.300 A2 initState -> startTransition -> runningState",
         ]
     );
     // Only triggers being evaluated are asked for: the Act's start trigger while the Act waits

@@ -1,11 +1,17 @@
 //! The transitions of one element and what they set off, OpenSCENARIO 1.3 §8.2–8.4.
 //!
 //! - [`start`](Storyboard::start) (`startTransition` → `runningState`): starts the element's
-//!   action, if it is one, and sets up its children (§8.3): a child with a start trigger enters
-//!   `standbyState` (no named transition; its trigger memory is cleared), any other child starts
-//!   at once, recursively, in the same step. A child whose execution count is 0 also waits in
-//!   standby, where it is skipped. Children are reset to `initState` first, with their execution
-//!   counts, so a re-executed Event or ManeuverGroup runs its subtree afresh.
+//!   action, if it is one, and sets up its children (§8.3): a child that defines a start trigger
+//!   enters `standbyState` (no named transition; its trigger memory is cleared), any other child
+//!   starts at once, recursively, in the same step. Events always enter standby: "An Event
+//!   enters standbyState when its enclosing Maneuver is started", and one without a trigger of
+//!   its own "inherits the start trigger from its parent Act" (§8.4.2), which has fired; the
+//!   step's trigger walk reaches it in the same step and starts it through the priority and
+//!   count rules. (esmini's logs show the same `standbyState -> startTransition` for Events
+//!   without a trigger, and `initState -> startTransition` for ManeuverGroups.) A child whose
+//!   execution count is 0 waits in standby as well, where it is skipped. Children are reset to
+//!   `initState` first, with their execution counts, so a re-executed Event or ManeuverGroup runs
+//!   its subtree afresh.
 //! - [`end`](Storyboard::end) (`endTransition`): back to `standbyState` while executions are
 //!   left (Events, ManeuverGroups), else to `completeState` (§8.4.2.1).
 //! - [`skip`](Storyboard::skip) (`skipTransition`): counts as an execution; to `standbyState`
@@ -75,13 +81,21 @@ impl Storyboard {
                 continue;
             }
             self.reset_subtree(child);
-            if self.nodes[child.index()].start_trigger.is_some() || !self.has_executions_left(child)
-            {
+            if self.has_start_trigger(child) || !self.has_executions_left(child) {
                 self.enter_standby(child);
             } else {
                 self.start(child, ctx);
             }
         }
+    }
+
+    /// True if the element waits in standbyState when its parent starts: it defines a start
+    /// trigger (§8.3), or it is an Event, which "enters standbyState when its enclosing
+    /// Maneuver is started" and, lacking a trigger, "inherits the start trigger from its parent
+    /// Act" (§8.4.2).
+    pub(crate) fn has_start_trigger(&self, id: ElementId) -> bool {
+        let node = &self.nodes[id.index()];
+        node.start_trigger.is_some() || node.kind == ElementKind::Event
     }
 
     /// `initState` → `standbyState`, which the standard gives no transition name; the start

@@ -23,11 +23,22 @@ pub fn step_of(t: f64) -> i64 {
 type Script = Box<dyn FnMut(i64, &StateView<'_>) -> bool>;
 
 /// Condition values given per condition as a function of the step number.
-#[derive(Default)]
 pub struct ScriptedConditions {
     scripts: HashMap<ConditionId, Script>,
+    /// The step length that turns times into step numbers.
+    pub dt: f64,
     /// Every query, as (condition, step).
     pub asked: Vec<(u32, i64)>,
+}
+
+impl Default for ScriptedConditions {
+    fn default() -> Self {
+        ScriptedConditions {
+            scripts: HashMap::new(),
+            dt: DT,
+            asked: Vec::new(),
+        }
+    }
 }
 
 impl ScriptedConditions {
@@ -62,7 +73,7 @@ impl ScriptedConditions {
 
 impl ConditionSource for ScriptedConditions {
     fn value(&mut self, id: ConditionId, time: f64, storyboard: &StateView<'_>) -> bool {
-        let k = step_of(time);
+        let k = (time / self.dt).round() as i64;
         self.asked.push((id.0, k));
         match self.scripts.get_mut(&id) {
             Some(script) => script(k, storyboard),
@@ -119,10 +130,23 @@ pub fn run(
     conditions: &mut ScriptedConditions,
     actions: &mut ScriptedActions,
 ) -> Vec<TransitionRecord> {
+    conditions.dt = DT;
+    run_dt(storyboard, steps, DT, conditions, actions)
+}
+
+/// Runs steps k = 0..steps at t = k · dt and returns the transitions (conditions must use the
+/// same `dt`).
+pub fn run_dt(
+    storyboard: &mut Storyboard,
+    steps: i64,
+    dt: f64,
+    conditions: &mut ScriptedConditions,
+    actions: &mut ScriptedActions,
+) -> Vec<TransitionRecord> {
     let mut log = Vec::new();
     for k in 0..steps {
         actions.now = k;
-        if let Err(error) = storyboard.step(k as f64 * DT, DT, conditions, actions, &mut log) {
+        if let Err(error) = storyboard.step(k as f64 * dt, dt, conditions, actions, &mut log) {
             panic!("step {k} failed: {error}");
         }
     }
