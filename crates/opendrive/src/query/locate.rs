@@ -4,10 +4,11 @@
 //! roads invert too), then the lane is the one whose borders enclose t.
 //!
 //! Choice among candidates: the smallest distance from the road surface (0 inside a lane);
-//! then, when a heading is given, the road whose direction (either way) is closest to it;
-//! then the smallest distance from the lane centre.
+//! then, when a heading is given, the lane whose driving direction is closest to it; then the
+//! smallest |t|.
 
 use super::frame::road_frame;
+use super::graph::{driving_direction, Direction};
 use super::lane_span::{lane_span, road_extent};
 use super::spatial::Piece;
 use crate::math::{angle_difference, normalize_angle, Real, LENGTH_EPSILON, SOLVER_TOLERANCE};
@@ -156,14 +157,18 @@ impl RoadNetwork {
         };
         let f = road_frame(road, s);
         let heading_gap = heading.map_or(0.0, |h| {
-            let d = angle_difference(h, f.hdg).abs();
-            d.min(std::f64::consts::PI - d)
+            let (lane, _) = lane_at(road, s, t);
+            let drive = match driving_direction(road, lane) {
+                Direction::Forward => f.hdg,
+                Direction::Backward => f.hdg + std::f64::consts::PI,
+            };
+            angle_difference(h, drive).abs()
         });
         Some(Candidate {
             road: piece.road,
             s,
             t,
-            distance: outside.max(along),
+            distance: outside.hypot(along),
             heading_gap,
             road_hdg: f.hdg,
         })
