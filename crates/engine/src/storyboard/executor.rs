@@ -31,6 +31,15 @@
 //! An element that returns to standby after an end or skip transition is evaluated again from the
 //! next step on, so a re-execution never happens twice in one step.
 //!
+//! Triggers come before completions, as in esmini: an action that reached its goal while the
+//! runtime advanced from t − dt to t is recorded as ended in the completion stage at t, and a
+//! StoryboardElementStateCondition sees that end from the next step (see
+//! [`StateView::transition_happened`]). So a trigger on "Event1 endTransition" with a delay of
+//! 4 s, Event1 ending at 5.000 s, fires at 9.050 s at dt = 0.05 s, exactly as in esmini's
+//! `follow_reference` log; and an override Event triggered at t stops an Event whose action
+//! would have been recorded as ended at t (esmini's `acc-test` log shows an endTransition there,
+//! the standard a stopTransition, §8.4.2.2). The tests `storyboard_esmini_*` replay both logs.
+//!
 //! The runtime calls `step` once per fixed step, before it moves the actions and controllers and
 //! before it takes measurements for the next step; instantaneous actions take effect inside
 //! [`ActionHost::start`].

@@ -4,12 +4,13 @@
 
 #![allow(dead_code)] // each test file uses a different part
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 use engine::storyboard::{
     ActDesc, ActionDesc, ActionHost, ActionId, ActionStatus, ConditionDesc, ConditionEdge,
-    ConditionId, ConditionSource, EventDesc, ManeuverDesc, ManeuverGroupDesc, Priority, StateView,
-    StoryDesc, Storyboard, StoryboardDesc, TransitionRecord, TriggerDesc,
+    ConditionId, ConditionSource, ElementKind, EventDesc, ManeuverDesc, ManeuverGroupDesc,
+    Priority, StateView, StoryDesc, Storyboard, StoryboardDesc, Transition, TransitionRecord,
+    TriggerDesc,
 };
 
 /// The step length of every test, in seconds.
@@ -61,6 +62,21 @@ impl ScriptedConditions {
 }
 
 impl ScriptedConditions {
+    /// Condition `id` is a StoryboardElementStateCondition: `transition` of the first element of
+    /// `kind` named `name` happened (in this step or the previous one).
+    pub fn on_transition(
+        &mut self,
+        id: u32,
+        kind: ElementKind,
+        name: &'static str,
+        transition: Transition,
+    ) -> &mut Self {
+        self.set_with_view(id, move |_, view| match view.find_kind(kind, name) {
+            Some(element) => view.transition_happened(element, transition),
+            None => panic!("no {kind} {name}"),
+        })
+    }
+
     /// The steps at which condition `id` was asked for, in order.
     pub fn asked_steps(&self, id: u32) -> Vec<i64> {
         self.asked
@@ -289,4 +305,68 @@ pub fn esmini_events(name: &str) -> String {
         Ok(text) => text,
         Err(error) => panic!("cannot read {path}: {error}"),
     }
+}
+
+/// An action named `name` with runtime id `id`.
+pub fn named_action(name: &str, id: u32) -> ActionDesc {
+    ActionDesc {
+        name: name.to_owned(),
+        id: ActionId(id),
+    }
+}
+
+/// An Event with priority override, count 1, one action.
+pub fn override_event(
+    name: &str,
+    trigger: Option<TriggerDesc>,
+    action_name: &str,
+    action_id: u32,
+) -> EventDesc {
+    EventDesc {
+        name: name.to_owned(),
+        priority: Priority::Override,
+        maximum_execution_count: 1,
+        start_trigger: trigger,
+        actions: vec![named_action(action_name, action_id)],
+    }
+}
+
+/// Act `name` (no stop trigger) with one ManeuverGroup (count 1) of one Maneuver.
+pub fn named_act(
+    name: &str,
+    start_trigger: Option<TriggerDesc>,
+    groups: Vec<ManeuverGroupDesc>,
+) -> ActDesc {
+    ActDesc {
+        name: name.to_owned(),
+        start_trigger,
+        stop_trigger: None,
+        maneuver_groups: groups,
+    }
+}
+
+/// ManeuverGroup `name` (count 1) with one Maneuver `maneuver` of `events`.
+pub fn named_group(name: &str, maneuver: &str, events: Vec<EventDesc>) -> ManeuverGroupDesc {
+    ManeuverGroupDesc {
+        name: name.to_owned(),
+        maximum_execution_count: 1,
+        maneuvers: vec![ManeuverDesc {
+            name: maneuver.to_owned(),
+            events,
+        }],
+    }
+}
+
+/// Log lines grouped by their time stamp, each group sorted: esmini orders the transitions
+/// within a step differently (e.g. it ends Init actions after the storyboard starts).
+pub fn by_time<'a>(lines: impl Iterator<Item = &'a str>) -> BTreeMap<String, Vec<String>> {
+    let mut groups: BTreeMap<String, Vec<String>> = BTreeMap::new();
+    for line in lines {
+        let time = line.split(' ').next().unwrap_or("").to_owned();
+        groups.entry(time).or_default().push(line.to_owned());
+    }
+    for group in groups.values_mut() {
+        group.sort();
+    }
+    groups
 }
