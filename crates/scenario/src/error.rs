@@ -100,8 +100,10 @@ pub enum ErrorKind {
     CatalogNotFound {
         /// The catalog name.
         catalog: String,
-        /// Where it was looked for (the directory of each CatalogLocations entry for the kind).
+        /// Where it was looked for: every CatalogLocations directory.
         searched: Vec<PathBuf>,
+        /// Those of `searched` that do not exist.
+        missing: Vec<PathBuf>,
     },
     /// A catalog that exists but has no entry of that name.
     CatalogEntryNotFound {
@@ -220,12 +222,20 @@ impl fmt::Display for ErrorKind {
                     "expected unique entity names, found '{name}' a second time"
                 )
             }
-            Self::CatalogNotFound { catalog, searched } => {
+            Self::CatalogNotFound {
+                catalog,
+                searched,
+                missing,
+            } => {
                 write!(
                     f,
                     "expected catalog '{catalog}', found it in none of [{}]",
                     paths(searched)
-                )
+                )?;
+                if !missing.is_empty() {
+                    write!(f, " (no such directory: {})", paths(missing))?;
+                }
+                Ok(())
             }
             Self::CatalogEntryNotFound {
                 catalog,

@@ -63,7 +63,12 @@ fn every_corpus_scenario_loads_except_the_two_broken_ones() {
 fn auto_light_names_the_missing_catalog_directory() {
     let path = corpus().join("esmini/xosc/auto_light.xosc");
     let err = Scenario::load(&path).unwrap_err();
-    let ErrorKind::CatalogNotFound { catalog, searched } = err.kind() else {
+    let ErrorKind::CatalogNotFound {
+        catalog,
+        searched,
+        missing,
+    } = err.kind()
+    else {
         panic!("{err}")
     };
     assert_eq!(catalog, "VehicleCatalog");

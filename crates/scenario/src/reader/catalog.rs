@@ -29,6 +29,8 @@ pub(crate) struct CatalogFile<'a> {
 pub(crate) struct CatalogIndex<'a> {
     /// Directories searched, as resolved.
     pub dirs: Vec<PathBuf>,
+    /// Those of `dirs` that do not exist.
+    pub missing_dirs: Vec<PathBuf>,
     /// Catalog files, in directory order.
     pub files: Vec<CatalogFile<'a>>,
 }
@@ -75,10 +77,12 @@ pub(crate) fn read_catalog_reference<'a, T>(
     let Some((doc, entry, found_in)) = found else {
         if !by_name {
             let searched = ctx.catalogs.dirs.clone();
+            let missing = ctx.catalogs.missing_dirs.clone();
             return Err(Error::new(
                 ErrorKind::CatalogNotFound {
                     catalog: catalog_name,
                     searched,
+                    missing,
                 },
                 pos,
             ));

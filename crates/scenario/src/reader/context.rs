@@ -55,8 +55,8 @@ pub(crate) struct Ctx<'a> {
     pub scopes: Vec<Scope>,
     /// Deprecation and version warnings.
     pub warnings: Vec<Warning>,
-    /// revMinor of the scenario's FileHeader (revMajor is 1).
-    pub rev_minor: u32,
+    /// revMinor of each document's FileHeader (revMajor is 1), by document index.
+    pub doc_rev_minor: Vec<u32>,
     /// The catalogs found through CatalogLocations.
     pub catalogs: CatalogIndex<'a>,
     /// Entity references to check after Entities is read.
@@ -101,13 +101,19 @@ impl<'a> Ctx<'a> {
         self.warnings.push(Warning { message, pos });
     }
 
-    /// Warns when element `n` needs OpenSCENARIO 1.`minor` but the file declares less.
+    /// revMinor declared by the current document (3 when unknown).
+    pub fn rev_minor(&self) -> u32 {
+        self.doc_rev_minor.get(self.cur).copied().unwrap_or(3)
+    }
+
+    /// Warns when element `n` needs OpenSCENARIO 1.`minor` but its file declares less.
     pub fn since(&mut self, n: Node<'a>, minor: u32) {
-        if self.rev_minor < minor {
+        let declared = self.rev_minor();
+        if declared < minor {
             let message = format!(
                 "{} needs OpenSCENARIO 1.{minor}, but the file declares 1.{}",
                 n.tag_name().name(),
-                self.rev_minor
+                declared
             );
             self.warn(n, message);
         }

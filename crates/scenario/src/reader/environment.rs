@@ -69,7 +69,7 @@ fn read_weather<'a>(ctx: &mut Ctx<'a>, w: Node<'a>) -> Result<Weather> {
         temperature: ctx.opt(w, "temperature")?,
         ..Weather::default()
     };
-    if weather.cloud_state.is_some() && ctx.rev_minor >= 2 {
+    if weather.cloud_state.is_some() && ctx.rev_minor() >= 2 {
         ctx.warn(
             w,
             "Weather@cloudState is deprecated since 1.2; use fractionalCloudCover".into(),

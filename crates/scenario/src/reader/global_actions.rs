@@ -62,7 +62,7 @@ pub(crate) fn read_global_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<G
             }
         }
         "ParameterAction" => {
-            if ctx.rev_minor >= 2 {
+            if ctx.rev_minor() >= 2 {
                 ctx.warn(
                     c,
                     "ParameterAction is deprecated since 1.2; use VariableAction".into(),

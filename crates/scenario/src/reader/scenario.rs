@@ -153,7 +153,7 @@ fn load_inner(
     // Phase 2: everything, with the catalogs indexed.
     let root = docs[0].doc.root_element();
     let mut ctx = new_ctx(&docs);
-    ctx.rev_minor = u32::from(header.rev_minor);
+    ctx.doc_rev_minor = docs.iter().map(declared_rev_minor).collect();
     ctx.warnings = warnings;
     ctx.catalogs = index_catalogs(&docs, &locations);
     let (globals, parameter_declarations) = read_globals(&mut ctx, root, overrides)?;
@@ -189,7 +189,7 @@ fn new_ctx<'a>(docs: &'a [Doc<'a>]) -> Ctx<'a> {
         cur: 0,
         scopes: Vec::new(),
         warnings: Vec::new(),
-        rev_minor: 3,
+        doc_rev_minor: Vec::new(),
         catalogs: CatalogIndex::default(),
         entity_uses: Vec::new(),
         entry_scoped: None,
@@ -253,7 +253,7 @@ fn read_file_header<'a>(ctx: &mut Ctx<'a>, root: Node<'a>) -> Result<FileHeader>
             },
         ));
     }
-    ctx.rev_minor = u32::from(rev_minor);
+    ctx.doc_rev_minor = vec![u32::from(rev_minor)];
     if rev_minor > 3 {
         ctx.warn(
             h,
@@ -276,6 +276,17 @@ fn read_file_header<'a>(ctx: &mut Ctx<'a>, root: Node<'a>) -> Result<FileHeader>
         author: ctx.opt(h, "author")?.unwrap_or_default(),
         license,
     })
+}
+
+/// revMinor of a document's FileHeader, read without resolution (3 when absent or odd; the
+/// scenario's own header is checked by [`read_file_header`]).
+fn declared_rev_minor(doc: &Doc<'_>) -> u32 {
+    let root = doc.doc.root_element();
+    root.children()
+        .find(|c| c.is_element() && c.tag_name().name() == "FileHeader")
+        .and_then(|h| h.attribute("revMinor"))
+        .and_then(|v| v.trim().parse().ok())
+        .unwrap_or(3)
 }
 
 /// Global ParameterDeclarations with overrides; an override of an undeclared name is an error.
@@ -407,6 +418,11 @@ fn read_catalog_sources(locations: &[(String, PathBuf)]) -> Result<Vec<Source>> 
 fn index_catalogs<'a>(docs: &'a [Doc<'a>], locations: &[(String, PathBuf)]) -> CatalogIndex<'a> {
     let mut index = CatalogIndex {
         dirs: locations.iter().map(|(_, d)| d.clone()).collect(),
+        missing_dirs: locations
+            .iter()
+            .filter(|(_, d)| !d.is_dir())
+            .map(|(_, d)| d.clone())
+            .collect(),
         files: Vec::new(),
     };
     for (i, d) in docs.iter().enumerate().skip(1) {
