@@ -38,8 +38,12 @@ impl RoadNetwork {
         };
         let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| {
             let p = e.pos();
+            // roxmltree's message ends in " at row:col"; the position is reported once.
+            let msg = e.to_string();
+            let suffix = format!(" at {}:{}", p.row, p.col);
+            let msg = msg.strip_suffix(&suffix).unwrap_or(&msg).to_string();
             Error::at(
-                ErrorKind::Xml(e.to_string()),
+                ErrorKind::Xml(msg),
                 path,
                 crate::error::TextPos {
                     row: p.row,
