@@ -64,6 +64,8 @@ pub struct Properties {
     pub properties: Vec<(String, String)>,
     /// `File` paths as written.
     pub files: Vec<String>,
+    /// `CustomContent` texts (1.2+), trimmed.
+    pub custom_content: Vec<String>,
 }
 
 /// FileHeader (XSD `FileHeader`).

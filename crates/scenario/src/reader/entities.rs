@@ -270,6 +270,10 @@ pub(crate) fn read_properties<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Prop
     for f in ctx.children(p, "File") {
         out.files.push(ctx.req(f, "filepath")?);
     }
+    for c in ctx.children(p, "CustomContent") {
+        out.custom_content
+            .push(c.text().unwrap_or_default().trim().to_owned());
+    }
     Ok(out)
 }
 

@@ -359,14 +359,7 @@ fn read_routing_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<RoutingActi
                 }
             };
             let time_reference = match ctx.opt_child(c, "TimeReference") {
-                Some(t) => match ctx.opt_child(t, "Timing") {
-                    Some(k) => Some(Timing {
-                        domain_absolute_relative: ctx.req(k, "domainAbsoluteRelative")?,
-                        offset: ctx.req(k, "offset")?,
-                        scale: ctx.req(k, "scale")?,
-                    }),
-                    None => None,
-                },
+                Some(t) => read_time_reference(ctx, t)?,
                 None => None,
             };
             let mode = ctx.child(c, "TrajectoryFollowingMode")?;
@@ -386,4 +379,18 @@ fn read_routing_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<RoutingActi
         }
         _ => return Err(ctx.unexpected(n, c, EXPECTED)),
     })
+}
+
+/// Reads XSD `TimeReference`: `None` (follow the geometry only) or `Timing`.
+fn read_time_reference<'a>(ctx: &mut Ctx<'a>, t: Node<'a>) -> Result<Option<Timing>> {
+    let k = ctx.choice(t, "None, Timing")?;
+    match k.tag_name().name() {
+        "None" => Ok(None),
+        "Timing" => Ok(Some(Timing {
+            domain_absolute_relative: ctx.req(k, "domainAbsoluteRelative")?,
+            offset: ctx.req(k, "offset")?,
+            scale: ctx.req(k, "scale")?,
+        })),
+        _ => Err(ctx.unexpected(t, k, "None, Timing")),
+    }
 }

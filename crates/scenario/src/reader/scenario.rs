@@ -33,6 +33,18 @@ use crate::source::{LineIndex, SourcePos};
 /// few hundred kB). Larger files are refused before reading.
 pub const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
 
+/// The children of XSD `CatalogLocations`, one per catalog kind.
+const CATALOG_KINDS: [&str; 8] = [
+    "VehicleCatalog",
+    "ControllerCatalog",
+    "PedestrianCatalog",
+    "MiscObjectCatalog",
+    "EnvironmentCatalog",
+    "ManeuverCatalog",
+    "TrajectoryCatalog",
+    "RouteCatalog",
+];
+
 /// A file's path and text.
 struct Source {
     path: Arc<Path>,
@@ -117,7 +129,8 @@ fn load_inner(
     let mut docs = vec![parse(&main)?];
     let root = docs[0].doc.root_element();
     let mut ctx = new_ctx(&docs);
-    if root.tag_name().name() != "OpenSCENARIO" {
+    // `OpenScenario` is the XSD's second global element of the same type.
+    if !matches!(root.tag_name().name(), "OpenSCENARIO" | "OpenScenario") {
         return Err(ctx.err(
             root,
             ErrorKind::NotAScenario {
@@ -376,6 +389,9 @@ fn read_catalog_locations<'a>(
         return Ok(out);
     };
     for kind in c.children().filter(Node::is_element) {
+        if !CATALOG_KINDS.contains(&kind.tag_name().name()) {
+            return Err(ctx.unexpected(c, kind, &CATALOG_KINDS.join(", ")));
+        }
         let dir = ctx.child(kind, "Directory")?;
         let written: String = ctx.req(dir, "path")?;
         let resolved = resolve_path(path, &written);
