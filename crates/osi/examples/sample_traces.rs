@@ -1,7 +1,9 @@
-//! Writes the synthetic sample scene (tests/common) as `DIR/sample.osi` and
-//! `DIR/sample.mcap`, for checking with the official OSI tools:
+//! Writes the two test scenes as traces for checking with the official OSI tools:
+//! the synthetic scene of tests/common as `DIR/sample.osi` and `DIR/sample.mcap`, and
+//! the corpus-road scene of tests/common/road_scene.rs (lanes from
+//! straight_500m.xodr) as `DIR/road_scene.osi` and `DIR/road_scene.mcap`:
 //! `cargo run -p oscsim-osi --example sample_traces -- DIR` then
-//! `scripts/osi_check.sh DIR/sample.osi DIR/sample.mcap`.
+//! `scripts/osi_check.sh DIR/*.osi DIR/*.mcap`.
 
 #[path = "../tests/common/mod.rs"]
 mod common;
@@ -15,22 +17,26 @@ fn main() -> ExitCode {
         eprintln!("usage: sample_traces DIR");
         return ExitCode::from(2);
     };
-    let frames = common::frames(100, 5);
-    let run = || -> Result<(), osi::Error> {
-        let mut osi_file = OsiFileWriter::create(&dir.join("sample.osi"))?;
+    let sample = common::frames(100, 5);
+    let (net, mut builder) = common::road_scene::builder(osi::ground_truth::StaticData::First);
+    let road: Vec<_> = (0..50)
+        .map(|k| common::road_scene::frame(&net, &mut builder, k))
+        .collect();
+    let run = |name: &str, frames: &[osi::osi3::GroundTruth]| -> Result<(), osi::Error> {
+        let mut osi_file = OsiFileWriter::create(&dir.join(format!("{name}.osi")))?;
         let info = McapTraceInfo {
-            description: Some("oscsim-osi synthetic sample".into()),
+            description: Some(format!("oscsim-osi test scene {name}")),
             ..Default::default()
         };
-        let mut mcap_file = McapTraceWriter::create(&dir.join("sample.mcap"), &info)?;
-        for gt in &frames {
+        let mut mcap_file = McapTraceWriter::create(&dir.join(format!("{name}.mcap")), &info)?;
+        for gt in frames {
             osi_file.write(gt)?;
             mcap_file.write(gt)?;
         }
         osi_file.finish()?;
         mcap_file.finish()
     };
-    match run() {
+    match run("sample", &sample).and_then(|()| run("road_scene", &road)) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");

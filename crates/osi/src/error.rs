@@ -59,6 +59,8 @@ pub enum ErrorKind {
         /// What was found instead.
         found: String,
     },
+    /// The road model could not be evaluated (the opendrive crate's error, with its place).
+    OpenDrive(opendrive::Error),
     /// A value handed in by the caller that is outside its domain.
     InvalidValue {
         /// Which value (for example "vehicleCategory").
@@ -134,6 +136,7 @@ impl fmt::Display for Error {
             ErrorKind::NotOsiTrace { expected, found } => {
                 write!(f, "expected {expected}, found {found} in {file}")
             }
+            ErrorKind::OpenDrive(e) => write!(f, "road model: {e}"),
             ErrorKind::InvalidValue {
                 what,
                 expected,
@@ -148,6 +151,7 @@ impl std::error::Error for Error {
         match &self.kind {
             ErrorKind::Io(e) => Some(e),
             ErrorKind::Mcap(e) => Some(e),
+            ErrorKind::OpenDrive(e) => Some(e),
             ErrorKind::Decode { source, .. } | ErrorKind::DecodeFrame { source, .. } => {
                 Some(source)
             }

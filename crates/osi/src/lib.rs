@@ -3,9 +3,13 @@
 //!
 //! - [`osi3`]: the messages (GroundTruth, MovingObject, StationaryObject, Lane,
 //!   LaneBoundary, …), generated from `proto/` with the standard's field numbers.
+//! - [`ground_truth::GroundTruthBuilder`]: one `GroundTruth` per step, lanes first or every
+//!   frame, host vehicle by name; the entry point for the engine.
 //! - [`ids::IdAllocator`]: globally unique, stable ids across objects, lanes, boundaries.
 //! - [`rigid_body::RigidBodyState`]: reference point → bounding-box centre, velocity,
 //!   acceleration (`MovingObject.base`).
+//! - [`lanes::from_network`]: `Lane` / `LaneBoundary` from an OpenDRIVE road network,
+//!   polylines sampled from the exact road model by [`polyline`].
 //! - [`classification`], [`color`]: OpenSCENARIO categories and colours → OSI.
 //! - [`entity`]: a scenario entity → `MovingObject` / `StationaryObject` with the OSI rules.
 //! - [`trace`]: the [`trace::TraceWriter`] seam, `.osi` and `.mcap` writers and readers,
@@ -29,8 +33,11 @@ pub mod classification;
 pub mod color;
 pub mod entity;
 mod error;
+pub mod ground_truth;
 pub mod ids;
+pub mod lanes;
 pub mod osi3;
+pub mod polyline;
 pub mod rigid_body;
 pub mod schema;
 pub mod trace;

@@ -202,15 +202,7 @@ fn trace_file_in_a_directory_is_named_by_the_convention_and_thinned() {
         // Frames 0, 2, 4 of 5 offered: 3 frames.
         let expected = format!("20210818T150542Z_gt_380_0135_3_cut-in.{ext}");
         assert_eq!(path, dir.join(expected));
-        let back = match format {
-            TraceFormat::Osi => read_osi(&path).unwrap(),
-            TraceFormat::Mcap => read_mcap(&path)
-                .unwrap()
-                .frames
-                .into_iter()
-                .map(|f| f.ground_truth)
-                .collect(),
-        };
+        let back = common::read_back(&path);
         assert_eq!(
             back,
             vec![frames[0].clone(), frames[2].clone(), frames[4].clone()]

@@ -8,6 +8,8 @@
 //! 0.75 m above the reference point, so base.position = (6.4 + 30 i + v_i t, −1.75, 0.75).
 #![allow(dead_code)] // each test binary uses a different part
 
+pub mod road_scene;
+
 use osi::entity::{moving_object, stationary_object, EntityInfo, EntityKind, MiscObjectInfo};
 use osi::ids::{IdAllocator, IdKey};
 use osi::osi3::lane::classification::Type as LaneType;
@@ -167,18 +169,8 @@ pub fn frame(ids: &mut IdAllocator, k: usize, vehicles: usize, with_lanes: bool)
         dimension: [0.5, 0.6, 1.8],
         ..Default::default()
     };
-    let info = EntityInfo {
-        name: "Walker",
-        kind: EntityKind::Pedestrian {
-            category: "pedestrian",
-        },
-        scenario_file: Some("sample.xosc"),
-        model3d: None,
-        color: None,
-        trailer: None,
-    };
     gt.moving_object
-        .push(moving_object(ids, &info, &walker, &[]).expect("valid sample"));
+        .push(moving_object(ids, &walker_info("sample.xosc"), &walker, &[]).expect("valid sample"));
     let obstacle = MiscObjectInfo {
         name: "Obstacle",
         category: "obstacle",
@@ -209,4 +201,31 @@ pub fn temp_dir(test: &str) -> std::path::PathBuf {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("temp dir is writable");
     dir
+}
+
+/// The pedestrian "Walker" of both scenes, 0.5 × 0.6 × 1.8 m.
+pub fn walker_info(scenario_file: &'static str) -> EntityInfo<'static> {
+    EntityInfo {
+        name: "Walker",
+        kind: EntityKind::Pedestrian {
+            category: "pedestrian",
+        },
+        scenario_file: Some(scenario_file),
+        model3d: None,
+        color: None,
+        trailer: None,
+    }
+}
+
+/// The frames of a trace file, `.osi` or `.mcap`.
+pub fn read_back(path: &std::path::Path) -> Vec<GroundTruth> {
+    match osi::trace::TraceFormat::from_path(path) {
+        osi::trace::TraceFormat::Osi => osi::trace::read_osi(path).expect("trace reads back"),
+        osi::trace::TraceFormat::Mcap => osi::trace::read_mcap(path)
+            .expect("trace reads back")
+            .frames
+            .into_iter()
+            .map(|f| f.ground_truth)
+            .collect(),
+    }
 }

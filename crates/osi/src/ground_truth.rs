@@ -1,0 +1,166 @@
+//! Assembling one ASAM OSI 3.8 `GroundTruth` per output step: the seam the engine feeds.
+//!
+//! A [`GroundTruthBuilder`] lives for a whole run. It owns the [`IdAllocator`] (so ids are
+//! unique across objects, lanes and boundaries, and stable from frame to frame), the lanes
+//! of the road network (built once, sent in the first frame or in every frame, as
+//! `--osi-static first|every` asks), the map and projection strings, and the host
+//! vehicle rule (`--osi-host NAME`; by default the entity named `Ego`, else none).
+//! Each step opens a [`FrameBuilder`], adds entities, and finishes it into a message that
+//! carries the interface version (3.8.0) in every frame.
+
+use crate::entity::{moving_object, stationary_object, EntityInfo, MiscObjectInfo};
+use crate::error::Error;
+use crate::ids::{IdAllocator, IdKey};
+use crate::lanes::{from_network, RoadLanes};
+use crate::osi3::{GroundTruth, Identifier, Timestamp};
+use crate::polyline::Sampling;
+use crate::rigid_body::RigidBodyState;
+use crate::version::interface_version;
+
+/// Name of the entity that is the host vehicle when none is named.
+pub const DEFAULT_HOST: &str = "Ego";
+
+/// In which frames the lanes and lane boundaries go (`--osi-static`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum StaticData {
+    /// Only in the first frame (the default: they do not change).
+    #[default]
+    First,
+    /// In every frame.
+    Every,
+}
+
+/// Builds the GroundTruth of each step of a run (see the module doc).
+#[derive(Debug, Clone, Default)]
+pub struct GroundTruthBuilder {
+    ids: IdAllocator,
+    lanes: RoadLanes,
+    static_data: StaticData,
+    host: Option<String>,
+    map_reference: Option<String>,
+    proj_string: Option<String>,
+    frames: u64,
+}
+
+impl GroundTruthBuilder {
+    /// A builder without road network; lanes go out as `static_data` says.
+    pub fn new(static_data: StaticData) -> Self {
+        GroundTruthBuilder {
+            ids: IdAllocator::new(),
+            static_data,
+            ..Default::default()
+        }
+    }
+
+    /// Builds the lanes of `network` (ids first, so lane ids are the same whatever the
+    /// entities), takes `proj_string` from its `geoReference` and `map_reference` as given.
+    pub fn set_road_network(
+        &mut self,
+        network: &opendrive::RoadNetwork,
+        map_reference: Option<&str>,
+        sampling: &Sampling,
+    ) -> Result<(), Error> {
+        self.lanes = from_network(network, &mut self.ids, sampling, map_reference)?;
+        self.map_reference = map_reference.map(str::to_string);
+        self.proj_string = network
+            .header()
+            .geo_reference
+            .as_ref()
+            .map(|g| g.0.trim().to_string())
+            .filter(|s| !s.is_empty());
+        Ok(())
+    }
+
+    /// Names the host vehicle (`--osi-host`); `None` returns to the default
+    /// ([`DEFAULT_HOST`] if such an entity exists).
+    pub fn set_host(&mut self, name: Option<&str>) {
+        self.host = name.map(str::to_string);
+    }
+
+    /// The run's id allocator, e.g. to look up lane ids with
+    /// [`crate::lanes::assigned_lane`].
+    pub fn ids(&self) -> &IdAllocator {
+        &self.ids
+    }
+
+    /// The lanes and boundaries built by [`Self::set_road_network`].
+    pub fn lanes(&self) -> &RoadLanes {
+        &self.lanes
+    }
+
+    /// Starts the frame at simulation time `timestamp_nanos` (ns since the start).
+    pub fn begin_frame(&mut self, timestamp_nanos: u64) -> FrameBuilder<'_> {
+        let seconds = i64::try_from(timestamp_nanos / 1_000_000_000).unwrap_or(i64::MAX);
+        // The remainder is below 10⁹ and fits in u32.
+        let nanos = (timestamp_nanos % 1_000_000_000) as u32;
+        let gt = GroundTruth {
+            version: Some(interface_version()),
+            timestamp: Some(Timestamp {
+                seconds: Some(seconds),
+                nanos: Some(nanos),
+            }),
+            map_reference: self.map_reference.clone(),
+            proj_string: self.proj_string.clone(),
+            ..Default::default()
+        };
+        FrameBuilder { owner: self, gt }
+    }
+}
+
+/// One frame being filled; [`FrameBuilder::finish`] hands out the message.
+#[derive(Debug)]
+pub struct FrameBuilder<'a> {
+    owner: &'a mut GroundTruthBuilder,
+    gt: GroundTruth,
+}
+
+impl FrameBuilder<'_> {
+    /// Adds a vehicle or pedestrian in `state`, on OSI lanes `lanes`; returns its id.
+    pub fn add_entity(
+        &mut self,
+        info: &EntityInfo<'_>,
+        state: &RigidBodyState,
+        lanes: &[Identifier],
+    ) -> Result<Identifier, Error> {
+        let object = moving_object(&mut self.owner.ids, info, state, lanes)?;
+        // `moving_object` always sets the id.
+        let id = object.id.unwrap_or_default();
+        self.gt.moving_object.push(object);
+        Ok(id)
+    }
+
+    /// Adds a MiscObject as a stationary object; returns its id.
+    pub fn add_misc_object(
+        &mut self,
+        info: &MiscObjectInfo<'_>,
+        lanes: &[Identifier],
+    ) -> Result<Identifier, Error> {
+        let object = stationary_object(&mut self.owner.ids, info, lanes)?;
+        // `stationary_object` always sets the id.
+        let id = object.id.unwrap_or_default();
+        self.gt.stationary_object.push(object);
+        Ok(id)
+    }
+
+    /// The finished message: host vehicle id (if the host entity is in the frame) and,
+    /// as `--osi-static` asks, the lanes.
+    pub fn finish(mut self) -> GroundTruth {
+        let host_name = self.owner.host.as_deref().unwrap_or(DEFAULT_HOST);
+        let host = self
+            .owner
+            .ids
+            .get(&IdKey::MovingObject(host_name.to_string()));
+        self.gt.host_vehicle_id =
+            host.filter(|h| self.gt.moving_object.iter().any(|m| m.id == Some(*h)));
+        let with_lanes = match self.owner.static_data {
+            StaticData::First => self.owner.frames == 0,
+            StaticData::Every => true,
+        };
+        if with_lanes {
+            self.gt.lane = self.owner.lanes.lanes.clone();
+            self.gt.lane_boundary = self.owner.lanes.lane_boundaries.clone();
+        }
+        self.owner.frames += 1;
+        self.gt
+    }
+}
