@@ -3,10 +3,10 @@
 //! `ByValueCondition`). The deprecated `alongRoute` attribute (1.0) is read as
 //! `relativeDistanceType`/`coordinateSystem` left unset, with a warning.
 
-use crate::error::Result;
+use crate::error::{ErrorKind, Result};
 use crate::model::{
     ByValueCondition, CollisionTarget, Condition, ConditionGroup, ConditionKind, DistanceMeasure,
-    EntityCondition, RelativeDistanceType, TimeToCollisionTarget, Trigger, TriggeringEntities,
+    EntityCondition, TimeToCollisionTarget, Trigger, TriggeringEntities,
 };
 use crate::reader::context::{Ctx, Node};
 use crate::reader::positions::read_position_child;
@@ -188,7 +188,15 @@ fn read_entity_condition<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<EntityCon
             rule: ctx.req(c, "rule")?,
             measure: {
                 // relativeDistanceType is required here, optional elsewhere.
-                let _: RelativeDistanceType = ctx.req(c, "relativeDistanceType")?;
+                if ctx.raw_attr(c, "relativeDistanceType").is_none() {
+                    return Err(ctx.err(
+                        c,
+                        ErrorKind::MissingAttribute {
+                            element: "RelativeDistanceCondition".into(),
+                            attribute: "relativeDistanceType",
+                        },
+                    ));
+                }
                 read_distance_measure(ctx, c)?
             },
         },

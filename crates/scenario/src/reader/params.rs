@@ -4,7 +4,8 @@
 //! The values of one ParameterDeclarations block may refer to each other (`$a`, `${$a * 2}`)
 //! in any order: each declaration is resolved after the declarations of the same block it
 //! names, by a depth-first walk that reports a self-reference or a cycle ("a → b → a") at the
-//! value attribute that closes it, instead of looping.
+//! value attribute that closes it, instead of looping. A declaration that names itself refers
+//! to the enclosing scope's parameter of that name if there is one (shadowing).
 
 use crate::error::{Error, ErrorKind, Result, Warning};
 use crate::expr::{Value, ValueType};
@@ -65,14 +66,18 @@ pub(crate) fn declare<'a>(
         });
     }
     let names: Vec<String> = pending.iter().map(|p| p.name.clone()).collect();
-    for p in &mut pending {
+    for (i, p) in pending.iter_mut().enumerate() {
         if p.given.is_none() {
             let raw = ctx
                 .raw_attr(p.node, "value")
                 .map(|a| a.value())
                 .unwrap_or_default();
+            // A declaration naming itself means the enclosing scope's parameter when there
+            // is one (`Speed = ${$Speed * 2}` in a Story); otherwise it is a self-reference.
+            let outer = ctx.lookup(&p.name).is_some();
             p.deps = referenced_names(raw)
                 .filter_map(|r| names.iter().position(|n| n == r))
+                .filter(|&j| !(j == i && outer))
                 .collect();
         }
     }

@@ -1,0 +1,195 @@
+//! The resolved model: deprecated 1.0 forms on the 1.3 model, version warnings, parameter
+//! scopes (OpenSCENARIO 1.3 §9.1), entity selections (§7.3), ParameterValueDistribution
+//! files. Expected values are worked out by hand from the fixtures in `tests/files/`.
+
+use std::path::{Path, PathBuf};
+
+use scenario::{
+    ActionKind, ByValueCondition, ConditionKind, ControllerAction, EntityCondition, EntityObject,
+    LongitudinalAction, PositionKind, Priority, PrivateAction, RelativeDistanceType, RoutingAction,
+    Scenario, Shape,
+};
+
+/// Values that pass through decimal text and at most two operations.
+const TOL: f64 = 1e-12;
+
+fn fixture(name: &str) -> PathBuf {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files")).join(name)
+}
+
+#[test]
+fn deprecated_1_0_forms_read_as_1_3() {
+    let s = Scenario::load(&fixture("deprecated_1_0.xosc")).unwrap();
+    // Count is an 'integer' (1.0 spelling of int) 3; Half = 3 * 0.5 = 1.5.
+    assert!((s.parameter_declarations[1].value.as_f64().unwrap() - 1.5).abs() < TOL);
+    let init = &s.storyboard.init.privates[0].actions;
+    let ActionKind::Private(PrivateAction::Teleport(p)) = &init[0].kind else {
+        panic!()
+    };
+    // latitude 1.0471975511965976 rad = π/3 = 60°, longitude −π/6 = −30°, height 12 m.
+    let PositionKind::Geo {
+        latitude_deg,
+        longitude_deg,
+        altitude,
+        ..
+    } = p.kind
+    else {
+        panic!()
+    };
+    assert!((latitude_deg - 60.0).abs() < 1e-9 && (longitude_deg + 30.0).abs() < 1e-9);
+    assert!((altitude.unwrap() - 12.0).abs() < TOL);
+    let ActionKind::Private(PrivateAction::Controller(c)) = &init[1].kind else {
+        panic!()
+    };
+    let ControllerAction::Activate { domains, .. } = c.as_ref() else {
+        panic!()
+    };
+    assert_eq!(
+        (domains.longitudinal, domains.lateral),
+        (Some(true), Some(false))
+    );
+    let EntityObject::Pedestrian(ped) = &s.entities.object("Ped").unwrap().entity_object else {
+        panic!()
+    };
+    assert_eq!(ped.model3d.as_deref(), Some("walker.osgb"));
+
+    let event = &s.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0];
+    assert_eq!(event.priority, Priority::Override);
+    let ActionKind::Private(PrivateAction::Routing(r)) = &event.actions[0].kind else {
+        panic!()
+    };
+    let RoutingAction::FollowTrajectory {
+        trajectory,
+        time_reference,
+        ..
+    } = r.as_ref()
+    else {
+        panic!()
+    };
+    let Shape::Clothoid(cl) = &trajectory.shape else {
+        panic!()
+    };
+    assert!((cl.curvature_prime - 0.001).abs() < TOL && (cl.length - 1.5).abs() < TOL);
+    let timing = time_reference.unwrap();
+    assert!((timing.scale - 2.0).abs() < TOL && (timing.offset - 0.5).abs() < TOL);
+    let condition = &event.start_trigger.as_ref().unwrap().condition_groups[0].conditions[0];
+    assert!((condition.delay - 0.5).abs() < TOL);
+    let ConditionKind::ByEntity {
+        entity_condition, ..
+    } = &condition.kind
+    else {
+        panic!()
+    };
+    let EntityCondition::RelativeDistance { measure, .. } = entity_condition else {
+        panic!()
+    };
+    assert_eq!(
+        measure.relative_distance_type,
+        Some(RelativeDistanceType::EuclidianDistance)
+    );
+}
+
+#[test]
+fn deprecated_forms_and_too_new_features_warn_with_their_position() {
+    let s = Scenario::load(&fixture("deprecated_1_0.xosc")).unwrap();
+    let shown: Vec<String> = s
+        .warnings
+        .iter()
+        .map(|w| format!("{}:{} {}", w.pos.line, w.pos.col, w.message))
+        .collect();
+    let expect = [
+        // Line 5: `<ParameterDeclaration name="Count" parameterType="integer"`, element at col 5.
+        "5:5 ParameterDeclaration@parameterType: 'integer' is deprecated, read as 'int'",
+        "22:7 Pedestrian@model is deprecated, read as model3d",
+        "32:39 GeoPosition@latitude/longitude/height are deprecated (rad), read as latitudeDeg/longitudeDeg/altitude",
+        "35:13 PrivateAction/ActivateControllerAction is deprecated, read as ControllerAction/ActivateControllerAction",
+        // Line 45: the value of priority starts at col 39.
+        "45:39 Event@priority: 'overwrite' is a deprecated literal, read as its 1.3 form",
+        "50:23 FollowTrajectoryAction/Trajectory is deprecated, read as TrajectoryRef",
+        "52:27 Clothoid@curvatureDot is deprecated, read as curvaturePrime",
+        "66:21 SpeedProfileAction needs OpenSCENARIO 1.2, but the file declares 1.0",
+    ];
+    for e in expect {
+        assert!(
+            shown.iter().any(|w| w == e),
+            "missing warning {e}\nfound:\n{}",
+            shown.join("\n")
+        );
+    }
+    assert!(
+        shown
+            .iter()
+            .any(|w| w.starts_with("78:")
+                && w.contains("'cartesianDistance' is a deprecated literal")),
+        "{shown:?}"
+    );
+}
+
+#[test]
+fn inner_declarations_shadow_outer_ones_and_see_them() {
+    let s = Scenario::load(&fixture("scopes_and_selections.xosc")).unwrap();
+    let maneuver = &s.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0];
+    let event = &maneuver.events[0];
+    let ActionKind::Private(PrivateAction::Longitudinal(
+        LongitudinalAction::LongitudinalDistance {
+            entity_ref,
+            distance,
+            ..
+        },
+    )) = &event.actions[0].kind
+    else {
+        panic!()
+    };
+    // Story: Speed = 10 * 2 = 20; Maneuver: Gap = 20 + 1 = 21.
+    assert!((distance.unwrap() - 21.0).abs() < TOL);
+    assert_eq!(entity_ref, "Car2");
+    let ConditionKind::ByValue(ByValueCondition::SimulationTime { value, .. }) =
+        &event.start_trigger.as_ref().unwrap().condition_groups[0].conditions[0].kind
+    else {
+        panic!()
+    };
+    assert!((value - 20.0).abs() < TOL);
+    // Outside the story, Speed is the global 10 again.
+    let stop = &s.storyboard.stop_trigger.as_ref().unwrap().condition_groups[0].conditions[0];
+    let ConditionKind::ByValue(ByValueCondition::SimulationTime { value, .. }) = &stop.kind else {
+        panic!()
+    };
+    assert!((value - 10.0).abs() < TOL);
+    assert_eq!(s.variable_declarations[0].name, "Laps");
+}
+
+#[test]
+fn selections_expand_by_type_and_through_nested_selections() {
+    let s = Scenario::load(&fixture("scopes_and_selections.xosc")).unwrap();
+    // People = every pedestrian = [Walker]; Everyone = vehicles [Car1, Car2] + People, in
+    // declaration order of the objects.
+    assert_eq!(s.entities.resolve("People"), ["Walker"]);
+    assert_eq!(s.entities.resolve("Everyone"), ["Car1", "Walker", "Car2"]);
+    assert_eq!(s.entities.resolve("Car1"), ["Car1"]);
+    assert!(s.entities.resolve("Nobody").is_empty());
+}
+
+#[test]
+fn actions_and_conditions_keep_their_source_position() {
+    let s = Scenario::load(&fixture("scopes_and_selections.xosc")).unwrap();
+    let event = &s.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0];
+    // `<Action name="InStory">` on line 54 at col 15; `<Condition name="T"` on line 63, col 19.
+    assert_eq!(
+        (event.actions[0].pos.line, event.actions[0].pos.col),
+        (54, 15)
+    );
+    let c = &event.start_trigger.as_ref().unwrap().condition_groups[0].conditions[0];
+    assert_eq!((c.pos.line, c.pos.col), (63, 19));
+    assert!(c.pos.file.ends_with("scopes_and_selections.xosc"));
+}
+
+#[test]
+fn a_parameter_value_distribution_loads_its_scenario_file() {
+    let path = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus/esmini/xosc/cut-in_parameter_set.xosc"
+    ));
+    let s = Scenario::load(path).unwrap();
+    assert_eq!(s.parameter_value_distribution.as_deref(), Some(path));
+    assert!(s.path.ends_with("esmini/xosc/cut-in.xosc"));
+}
