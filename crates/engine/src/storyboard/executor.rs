@@ -28,6 +28,9 @@
 //!    will never be stopped"); when all Stories completed it stays running and
 //!    [`Storyboard::stories_complete`] tells the runtime, which may end the run.
 //!
+//! Each stage has a counter of the same name in [`StageCounters`] ([`Storyboard::counters`]):
+//! the conditions it asked for and the transitions it recorded.
+//!
 //! An element that returns to standby after an end or skip transition is evaluated again from the
 //! next step on, so a re-execution never happens twice in one step.
 //!
@@ -44,6 +47,7 @@
 //! before it takes measurements for the next step; instantaneous actions take effect inside
 //! [`ActionHost::start`].
 
+use super::counters::{Stage, StageCounters};
 use super::element::{ElementId, ElementKind};
 use super::error::{ErrorKind, StoryboardError};
 use super::host::{ActionHost, ConditionSource};
@@ -67,6 +71,8 @@ pub struct Storyboard {
     /// Index of the current (or last) step.
     pub(crate) step: u64,
     last_time: Option<f64>,
+    /// The work of the last step's stages.
+    counters: StageCounters,
 }
 
 /// What one step works with.
@@ -76,6 +82,16 @@ pub(crate) struct StepContext<'a> {
     pub(crate) conditions: &'a mut dyn ConditionSource,
     pub(crate) actions: &'a mut dyn ActionHost,
     pub(crate) log: &'a mut dyn TransitionSink,
+    /// The stage running now.
+    pub(crate) stage: Stage,
+    pub(crate) counters: StageCounters,
+}
+
+impl StepContext<'_> {
+    /// The counter of the stage running now.
+    pub(crate) fn count(&mut self) -> &mut super::counters::StageCount {
+        self.counters.stage_mut(self.stage)
+    }
 }
 
 impl Storyboard {
@@ -98,6 +114,7 @@ impl Storyboard {
             acts,
             step: 0,
             last_time: None,
+            counters: StageCounters::default(),
         }
     }
 
@@ -138,16 +155,21 @@ impl Storyboard {
             conditions,
             actions,
             log,
+            stage: Stage::InitPhase,
+            counters: StageCounters::default(),
         };
         if self.status[self.root.index()].state == ElementState::Init {
             self.init_phase(&mut ctx);
         }
-        if self.status[self.root.index()].state != ElementState::Running {
-            return Ok(());
+        if self.status[self.root.index()].state == ElementState::Running {
+            ctx.stage = Stage::StopTriggers;
+            self.stop_triggers(&mut ctx);
+            ctx.stage = Stage::StartTriggers;
+            self.start_triggers(self.root, &mut ctx);
+            ctx.stage = Stage::Completions;
+            self.completions(self.root, &mut ctx);
         }
-        self.stop_triggers(&mut ctx);
-        self.start_triggers(self.root, &mut ctx);
-        self.completions(self.root, &mut ctx);
+        self.counters = ctx.counters;
         Ok(())
     }
 
@@ -171,7 +193,13 @@ impl Storyboard {
         };
         let time = ctx.time;
         let conditions = &mut *ctx.conditions;
-        self.triggers[index].evaluate(time, ctx.dt, |id| conditions.value(id, time, &view))
+        let mut asked = 0;
+        let fired = self.triggers[index].evaluate(time, ctx.dt, |id| {
+            asked += 1;
+            conditions.value(id, time, &view)
+        });
+        ctx.count().conditions += asked;
+        fired
     }
 
     /// Stage 2: stop triggers of the storyboard and of the running Acts.
@@ -285,6 +313,11 @@ impl Storyboard {
             .children
             .iter()
             .all(|child| self.status[child.index()].state == ElementState::Complete)
+    }
+
+    /// The work of each stage in the last step.
+    pub fn counters(&self) -> StageCounters {
+        self.counters
     }
 
     /// The element states now.

@@ -48,6 +48,7 @@ impl Storyboard {
         }
         let node = &self.nodes[id.index()];
         if node.kind != ElementKind::Init {
+            ctx.count().transitions += 1;
             ctx.log.record(TransitionRecord {
                 time: ctx.time,
                 name: node.name.clone(),

@@ -17,6 +17,7 @@
 //! | `priority` | Event priority override / skip / parallel (§8.4.2.2) |
 //! | `lifecycle` | start, end, skip and stop transitions and their consequences (§8.3, §8.4) |
 //! | `executor` | the step's stages in their fixed order (§8.3–8.5) |
+//! | `counters` | the work done by each stage of a step |
 //! | `host` | the seams to the runtime: condition values and actions |
 //! | `view` | element states for `StoryboardElementStateCondition` |
 //! | `log` | transition records for the event log |
@@ -26,6 +27,7 @@
 //! general crate models (statechart crates have no notion of execution counts, inherited
 //! triggers or edge-and-delay conditions).
 
+mod counters;
 mod delay;
 mod desc;
 mod edge;
@@ -41,6 +43,7 @@ mod tree;
 mod trigger;
 mod view;
 
+pub use counters::{StageCount, StageCounters};
 pub use delay::DelayLine;
 pub use desc::{
     ActDesc, ActionDesc, ConditionDesc, ConditionGroupDesc, EventDesc, ManeuverDesc,

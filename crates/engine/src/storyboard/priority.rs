@@ -8,11 +8,14 @@
 //!   them moves to `completeState` with `stopTransition`, "regardless of the number of executions
 //!   left". `overwrite` is the deprecated spelling (1.0, 1.1) of the same rule.
 //! - `skip`: if another Event of the Maneuver is running, the Event "does not move to
-//!   runningState" and takes a `skipTransition` instead. The skip counts as an execution
-//!   (§8.4.2.1: executions are start plus skip transitions), so the Event returns to
-//!   `standbyState` while executions are left and moves to `completeState` when they are used up
-//!   (with the default `maximumExecutionCount` of 1 that is at once). It does not wait for the
-//!   others to finish. If no other Event runs, it starts.
+//!   runningState and instead moves to completeState if no number of executions is defined"
+//!   (1.3 §8.4.2.2; the 1.0/1.1 model documentation: "it will not be ran if there is any other
+//!   event in the same scope (maneuver) in the running state"). oscsim records this as a
+//!   `skipTransition`, the only transition out of standby that does not start the Event, and
+//!   counts it as an execution (§8.4.2.1: executions are start plus skip transitions). So the
+//!   Event returns to `standbyState` while executions are left and moves to `completeState` when
+//!   they are used up (with the default `maximumExecutionCount` of 1, at once). It does not wait
+//!   for the others to finish. If no other Event runs, it starts.
 //! - `parallel`: the Event starts regardless of the others.
 
 /// The `priority` of an Event.
