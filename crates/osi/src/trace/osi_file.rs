@@ -55,16 +55,18 @@ impl<W: Write> TraceWriter for OsiFileWriter<W> {
         let Some(out) = self.out.as_mut() else {
             return Err(Error::in_file(ErrorKind::Finished, &self.path));
         };
-        let len = ground_truth.encoded_len();
-        let prefix = u32::try_from(len)
-            .map_err(|_| Error::in_file(ErrorKind::MessageTooLarge { len }, &self.path))?;
+        // Room for the prefix first, then the message; the prefix is filled in after, so
+        // the message's length is computed only once (by `encode`).
         self.buf.clear();
-        self.buf.reserve(len + 4);
-        self.buf.extend_from_slice(&prefix.to_le_bytes());
+        self.buf.extend_from_slice(&[0; 4]);
         // Encoding into a Vec cannot run out of space: Vec grows as needed.
         ground_truth
             .encode(&mut self.buf)
             .expect("encoding into a Vec<u8> never fails");
+        let len = self.buf.len() - 4;
+        let prefix = u32::try_from(len)
+            .map_err(|_| Error::in_file(ErrorKind::MessageTooLarge { len }, &self.path))?;
+        self.buf[..4].copy_from_slice(&prefix.to_le_bytes());
         out.write_all(&self.buf)
             .map_err(|e| Error::in_file(ErrorKind::Io(e), &self.path))?;
         self.frames += 1;
