@@ -13,9 +13,7 @@
 
 mod storyboard_support;
 
-use engine::storyboard::{
-    ConditionEdge, ElementKind, StoryDesc, StoryboardDesc, Transition, TriggerDesc,
-};
+use engine::storyboard::{ConditionEdge, StoryDesc, StoryboardDesc, TriggerDesc};
 use storyboard_support::*;
 
 const DT: f64 = 0.05;
@@ -89,7 +87,7 @@ fn acc_test_transitions_match_esmini_but_for_the_override_at_20_050() {
     ] {
         conditions.set(id, move |k| k > seconds * 20);
     }
-    conditions.on_transition(9, ElementKind::Event, "TargetBrake2Event", Transition::End);
+    conditions.element_state(9, "event", "TargetBrake2Event", "endTransition");
     let mut actions = ScriptedActions::default();
     // Durations in steps of 0.05 s, from the reference; all Init actions are instantaneous.
     actions

@@ -11,9 +11,7 @@
 
 mod storyboard_support;
 
-use engine::storyboard::{
-    ConditionEdge, ElementKind, StoryDesc, StoryboardDesc, Transition, TriggerDesc,
-};
+use engine::storyboard::{ConditionEdge, StoryDesc, StoryboardDesc, TriggerDesc};
 use storyboard_support::*;
 
 const DT: f64 = 0.05;
@@ -68,12 +66,12 @@ fn follow_reference_transitions_match_esmini() {
     for id in [10, 11] {
         conditions.set(id, |k| k as f64 * DT >= 0.0);
     }
-    conditions.on_transition(12, ElementKind::Event, "Event1", Transition::End);
-    conditions.on_transition(13, ElementKind::Event, "Event2", Transition::End);
-    conditions.on_transition(14, ElementKind::Event, "Event3", Transition::End);
-    conditions.on_transition(20, ElementKind::Act, "Act1", Transition::End);
-    conditions.on_transition(21, ElementKind::Event, "EventSpeedChange1", Transition::End);
-    conditions.on_transition(30, ElementKind::Story, "Story", Transition::End);
+    conditions.element_state(12, "event", "Event1", "endTransition");
+    conditions.element_state(13, "event", "Event2", "endTransition");
+    conditions.element_state(14, "event", "Event3", "endTransition");
+    conditions.element_state(20, "act", "Act1", "endTransition");
+    conditions.element_state(21, "event", "EventSpeedChange1", "endTransition");
+    conditions.element_state(30, "story", "Story", "endTransition");
     let mut actions = ScriptedActions::default();
     // Durations in steps of 0.05 s, from the reference.
     actions

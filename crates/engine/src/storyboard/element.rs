@@ -75,6 +75,22 @@ impl ElementKind {
     }
 }
 
+impl ElementKind {
+    /// Reads the XSD `StoryboardElementType` literal of `StoryboardElementStateCondition`
+    /// (`story`, `act`, `maneuverGroup`, `maneuver`, `event`, `action`).
+    pub fn from_xsd(literal: &str) -> Option<ElementKind> {
+        match literal {
+            "story" => Some(ElementKind::Story),
+            "act" => Some(ElementKind::Act),
+            "maneuverGroup" => Some(ElementKind::ManeuverGroup),
+            "maneuver" => Some(ElementKind::Maneuver),
+            "event" => Some(ElementKind::Event),
+            "action" => Some(ElementKind::Action),
+            _ => None,
+        }
+    }
+}
+
 impl fmt::Display for ElementKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.as_str())

@@ -56,5 +56,5 @@ pub use executor::Storyboard;
 pub use host::{ActionHost, ActionStatus, ConditionSource};
 pub use log::{TransitionRecord, TransitionSink};
 pub use priority::{Priority, PriorityDecision};
-pub use state::{ElementState, Transition};
+pub use state::{ElementState, StoryboardElementState, Transition};
 pub use view::StateView;

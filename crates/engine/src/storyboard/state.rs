@@ -103,3 +103,60 @@ impl fmt::Display for Transition {
         f.write_str(self.as_str())
     }
 }
+
+/// The XSD type `StoryboardElementState` of `StoryboardElementStateCondition/@state`: a state
+/// or a transition.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum StoryboardElementState {
+    /// `standbyState`, `runningState` or `completeState`.
+    State(ElementState),
+    /// `startTransition`, `endTransition`, `stopTransition` or `skipTransition`.
+    Transition(Transition),
+}
+
+impl StoryboardElementState {
+    /// Reads one of the seven XSD literals; `initState` is implementation specific (§8.1) and
+    /// not among them.
+    pub fn from_xsd(literal: &str) -> Option<Self> {
+        let state = |s| Some(StoryboardElementState::State(s));
+        let transition = |t| Some(StoryboardElementState::Transition(t));
+        match literal {
+            "standbyState" => state(ElementState::Standby),
+            "runningState" => state(ElementState::Running),
+            "completeState" => state(ElementState::Complete),
+            "startTransition" => transition(Transition::Start),
+            "endTransition" => transition(Transition::End),
+            "stopTransition" => transition(Transition::Stop),
+            "skipTransition" => transition(Transition::Skip),
+            _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn xsd_literals_round_trip_through_the_display_names() {
+        let states = [
+            ElementState::Standby,
+            ElementState::Running,
+            ElementState::Complete,
+        ];
+        for state in states {
+            assert_eq!(
+                StoryboardElementState::from_xsd(state.as_str()),
+                Some(StoryboardElementState::State(state))
+            );
+        }
+        for transition in Transition::ALL {
+            assert_eq!(
+                StoryboardElementState::from_xsd(transition.as_str()),
+                Some(StoryboardElementState::Transition(transition))
+            );
+        }
+        assert_eq!(StoryboardElementState::from_xsd("initState"), None);
+        assert_eq!(StoryboardElementState::from_xsd("running"), None);
+    }
+}

@@ -13,7 +13,7 @@
 //! [`StateView::find_all`] all of them.
 
 use super::element::{ElementId, ElementKind};
-use super::state::{ElementState, Transition};
+use super::state::{ElementState, StoryboardElementState, Transition};
 use super::tree::{Node, Status};
 
 /// A read-only view of the storyboard's element states at one moment of a step.
@@ -98,6 +98,15 @@ impl<'a> StateView<'a> {
         self.status[id.index()]
             .last(transition)
             .is_some_and(|step| step + 1 >= self.step)
+    }
+
+    /// The value of a StoryboardElementStateCondition on the element: it is in the state, or
+    /// the transition happened (see [`transition_happened`](Self::transition_happened)).
+    pub fn is(&self, id: ElementId, state: StoryboardElementState) -> bool {
+        match state {
+            StoryboardElementState::State(s) => self.state(id) == s,
+            StoryboardElementState::Transition(t) => self.transition_happened(id, t),
+        }
     }
 
     /// The step in which `transition` of the element last happened (the first step is 0).

@@ -9,8 +9,8 @@ use std::collections::{BTreeMap, HashMap};
 use engine::storyboard::{
     ActDesc, ActionDesc, ActionHost, ActionId, ActionStatus, ConditionDesc, ConditionEdge,
     ConditionId, ConditionSource, ElementKind, EventDesc, ManeuverDesc, ManeuverGroupDesc,
-    Priority, StateView, StoryDesc, Storyboard, StoryboardDesc, Transition, TransitionRecord,
-    TriggerDesc,
+    Priority, StateView, StoryDesc, Storyboard, StoryboardDesc, StoryboardElementState,
+    TransitionRecord, TriggerDesc,
 };
 
 /// The step length of every test, in seconds.
@@ -62,17 +62,23 @@ impl ScriptedConditions {
 }
 
 impl ScriptedConditions {
-    /// Condition `id` is a StoryboardElementStateCondition: `transition` of the first element of
-    /// `kind` named `name` happened (in this step or the previous one).
-    pub fn on_transition(
+    /// Condition `id` is a StoryboardElementStateCondition on the first element of `kind`
+    /// named `name`, with the XSD literals of `storyboardElementType` and `state`.
+    pub fn element_state(
         &mut self,
         id: u32,
-        kind: ElementKind,
+        kind: &str,
         name: &'static str,
-        transition: Transition,
+        state: &str,
     ) -> &mut Self {
+        let (Some(kind), Some(state)) = (
+            ElementKind::from_xsd(kind),
+            StoryboardElementState::from_xsd(state),
+        ) else {
+            panic!("bad StoryboardElementStateCondition literals {kind:?} {state:?}");
+        };
         self.set_with_view(id, move |_, view| match view.find_kind(kind, name) {
-            Some(element) => view.transition_happened(element, transition),
+            Some(element) => view.is(element, state),
             None => panic!("no {kind} {name}"),
         })
     }
