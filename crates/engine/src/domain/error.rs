@@ -57,6 +57,13 @@ pub enum DomainErrorKind {
         /// The s asked for, m.
         s: f64,
     },
+    /// An OpenSCENARIO 1.x entity the domain model does not represent (an
+    /// `ExternalObjectReference`, which has no bounding box in the scenario).
+    #[error("expected a Vehicle, Pedestrian or MiscObject, found entity {name} of another kind")]
+    UnsupportedEntity {
+        /// The entity's name.
+        name: String,
+    },
     /// A parameter of an actor is out of its domain (§8.7.9 bounding_box dimensions are
     /// finite and non-negative; §8.7.18 a vehicle group needs a positive spacing).
     #[error("expected {name} to be {expected}, found {found}")]

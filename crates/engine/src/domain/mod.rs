@@ -20,6 +20,7 @@
 //! | `distance_along_route` | §8.7.4.1.1 distance_along_route() |
 //! | `time_headway` | §8.7.5.1.2 time_headway() |
 //! | `space_gap` | §8.7.5.1.3 space_gap() |
+//! | `from_scenario` | OpenSCENARIO 1.x Vehicle, Pedestrian, MiscObject → §8.7 actors |
 //! | `vehicle_group` | §8.7.18.1 vehicle_group (non-normative): a single-lane formation |
 
 mod bounding_box;
@@ -29,6 +30,7 @@ mod enums;
 mod error;
 mod footprint;
 mod frame;
+mod from_scenario;
 mod kinematics;
 mod object;
 mod object_distance;
