@@ -131,6 +131,15 @@ impl Error {
         }))
     }
 
+    /// An error about a whole file (e.g. it cannot be read).
+    pub(crate) fn in_file(kind: ErrorKind, file: &Path) -> Self {
+        Self(Box::new(Inner {
+            kind,
+            file: Some(file.to_path_buf()),
+            pos: None,
+        }))
+    }
+
     /// An error at a place in a file.
     pub(crate) fn at(kind: ErrorKind, file: &Path, pos: TextPos) -> Self {
         Self(Box::new(Inner {

@@ -25,7 +25,7 @@ impl RoadNetwork {
     /// Reads and parses an `.xodr` file.
     pub fn from_file(path: &Path) -> Result<Self, Error> {
         let text = std::fs::read_to_string(path)
-            .map_err(|e| Error::at(ErrorKind::Io(e.to_string()), path, Default::default()))?;
+            .map_err(|e| Error::in_file(ErrorKind::Io(e.to_string()), path))?;
         Self::from_str(&text, path)
     }
 

@@ -32,7 +32,7 @@ pub(crate) fn road_frame(road: &Road, s: Real) -> RoadFrame {
     let (z, dz) = eval_piecewise(&road.elevation, s);
     let (roll, _) = eval_piecewise(&road.superelevation, s);
     // Positive pitch is nose down (rotation about the left-pointing y axis).
-    let pitch = -dz.atan();
+    let pitch = 0.0 - dz.atan(); // 0 − x, not −x: no negative zero on flat roads
     let (sin_h, cos_h) = rp.hdg.sin_cos();
     let (sin_p, cos_p) = pitch.sin_cos();
     let (sin_r, cos_r) = roll.sin_cos();

@@ -17,7 +17,8 @@ use crate::network::RoadNetwork;
 
 /// Newton iterations allowed per projection.
 const MAX_ITER: usize = 60;
-/// A projection whose residual exceeds this (m) did not land on its piece.
+/// A projection whose residual exceeds this (m) did not land on its piece (or the point is
+/// beyond the road's end).
 const RESIDUAL_TOLERANCE: Real = 1e-7;
 
 /// A position on a road, as returned by [`RoadNetwork::locate`].
@@ -142,11 +143,9 @@ impl RoadNetwork {
     ) -> Option<Candidate> {
         let road = &self.roads[piece.road];
         let (s, t, resid) = project(road, x, y, piece.s0, piece.s1)?;
-        let at_road_end = s <= LENGTH_EPSILON || s >= road.length - LENGTH_EPSILON;
-        if resid > RESIDUAL_TOLERANCE && !at_road_end {
-            // The foot point lies on a neighbouring piece, which is a candidate of its own.
-            return None;
-        }
+        // A foot point on a neighbouring piece leaves a residual along the road; the candidate
+        // then counts that residual as distance, and the neighbouring piece (whose box is no
+        // farther) gives the exact one.
         let section = road.lane_section_at(s);
         let (right, left) = road_extent(road, section, s);
         let outside = (t - left).max(right - t).max(0.0);
