@@ -71,6 +71,12 @@ pub enum ErrorKind {
         /// 1-based position of the group in the trigger.
         group: usize,
     },
+    /// The description has more elements than an [`ElementId`](super::ElementId) can address
+    /// (2³²).
+    TooManyElements {
+        /// The number of elements reached.
+        found: usize,
+    },
     /// The step's time is not finite.
     InvalidTime {
         /// The time found, in seconds.
@@ -118,6 +124,11 @@ impl fmt::Display for ErrorKind {
                 f,
                 "expected at least one Condition, found an empty ConditionGroup #{group} in the \
                  {trigger} of {element}"
+            ),
+            ErrorKind::TooManyElements { found } => write!(
+                f,
+                "expected at most {} storyboard elements, found {found}",
+                u32::MAX
             ),
             ErrorKind::InvalidTime { found } => {
                 write!(f, "expected a finite simulation time, found {found} s")

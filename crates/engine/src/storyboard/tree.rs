@@ -67,10 +67,18 @@ struct Builder {
 }
 
 impl Builder {
-    fn add(&mut self, kind: ElementKind, name: &str, parent: Option<ElementId>) -> ElementId {
-        // Ids are u32; a description with more than 4 billion elements cannot be held in memory
-        // anyway, so saturating is only a formal guard.
-        let id = ElementId(u32::try_from(self.nodes.len()).unwrap_or(u32::MAX));
+    fn add(
+        &mut self,
+        kind: ElementKind,
+        name: &str,
+        parent: Option<ElementId>,
+    ) -> Result<ElementId, StoryboardError> {
+        let Ok(index) = u32::try_from(self.nodes.len()) else {
+            return Err(StoryboardError::new(ErrorKind::TooManyElements {
+                found: self.nodes.len(),
+            }));
+        };
+        let id = ElementId(index);
         self.nodes.push(Node {
             kind,
             name: name.to_owned(),
@@ -85,7 +93,7 @@ impl Builder {
         if let Some(parent) = parent {
             self.nodes[parent.index()].children.push(id);
         }
-        id
+        Ok(id)
     }
 
     /// Checks and stores a trigger of element `owner`; returns its index.
@@ -133,18 +141,19 @@ impl Builder {
             .transpose()
     }
 
-    fn action(&mut self, desc: &ActionDesc, parent: ElementId) {
-        let id = self.add(ElementKind::Action, &desc.name, Some(parent));
+    fn action(&mut self, desc: &ActionDesc, parent: ElementId) -> Result<(), StoryboardError> {
+        let id = self.add(ElementKind::Action, &desc.name, Some(parent))?;
         self.nodes[id.index()].action = Some(desc.id);
+        Ok(())
     }
 
     fn story(&mut self, desc: &StoryDesc, parent: ElementId) -> Result<(), StoryboardError> {
-        let id = self.add(ElementKind::Story, &desc.name, Some(parent));
+        let id = self.add(ElementKind::Story, &desc.name, Some(parent))?;
         desc.acts.iter().try_for_each(|act| self.act(act, id))
     }
 
     fn act(&mut self, desc: &ActDesc, parent: ElementId) -> Result<(), StoryboardError> {
-        let id = self.add(ElementKind::Act, &desc.name, Some(parent));
+        let id = self.add(ElementKind::Act, &desc.name, Some(parent))?;
         self.nodes[id.index()].start_trigger =
             self.optional_trigger(&desc.start_trigger, id, TriggerRole::Start)?;
         self.nodes[id.index()].stop_trigger =
@@ -159,7 +168,7 @@ impl Builder {
         desc: &ManeuverGroupDesc,
         parent: ElementId,
     ) -> Result<(), StoryboardError> {
-        let id = self.add(ElementKind::ManeuverGroup, &desc.name, Some(parent));
+        let id = self.add(ElementKind::ManeuverGroup, &desc.name, Some(parent))?;
         self.nodes[id.index()].maximum_execution_count = desc.maximum_execution_count;
         desc.maneuvers
             .iter()
@@ -167,14 +176,14 @@ impl Builder {
     }
 
     fn maneuver(&mut self, desc: &ManeuverDesc, parent: ElementId) -> Result<(), StoryboardError> {
-        let id = self.add(ElementKind::Maneuver, &desc.name, Some(parent));
+        let id = self.add(ElementKind::Maneuver, &desc.name, Some(parent))?;
         desc.events
             .iter()
             .try_for_each(|event| self.event(event, id))
     }
 
     fn event(&mut self, desc: &EventDesc, parent: ElementId) -> Result<(), StoryboardError> {
-        let id = self.add(ElementKind::Event, &desc.name, Some(parent));
+        let id = self.add(ElementKind::Event, &desc.name, Some(parent))?;
         let node = &mut self.nodes[id.index()];
         node.maximum_execution_count = desc.maximum_execution_count;
         node.priority = desc.priority;
@@ -182,8 +191,7 @@ impl Builder {
             self.optional_trigger(&desc.start_trigger, id, TriggerRole::Start)?;
         desc.actions
             .iter()
-            .for_each(|action| self.action(action, id));
-        Ok(())
+            .try_for_each(|action| self.action(action, id))
     }
 }
 
@@ -194,12 +202,12 @@ impl Storyboard {
     /// Fails if a condition's delay is negative or not finite, or a condition group is empty.
     pub fn new(desc: &StoryboardDesc) -> Result<Storyboard, StoryboardError> {
         let mut builder = Builder::default();
-        let root = builder.add(ElementKind::Storyboard, &desc.name, None);
+        let root = builder.add(ElementKind::Storyboard, &desc.name, None)?;
         builder.nodes[root.index()].stop_trigger =
             builder.optional_trigger(&desc.stop_trigger, root, TriggerRole::Stop)?;
-        let init = builder.add(ElementKind::Init, "Init", Some(root));
+        let init = builder.add(ElementKind::Init, "Init", Some(root))?;
         for action in &desc.init_actions {
-            builder.action(action, init);
+            builder.action(action, init)?;
         }
         for story in &desc.stories {
             builder.story(story, root)?;
