@@ -82,12 +82,12 @@ impl Color {
         TABLE[self as usize].2
     }
 
-    /// The colour's name as the seed spells it, e.g. `"fuchsia"`.
+    /// The colour's name as §8.7.11 spells it, e.g. `"fuchsia"`.
     pub fn name(self) -> &'static str {
         TABLE[self as usize].1
     }
 
-    /// The colour named `name` (seed spelling, lower case), if there is one.
+    /// The §8.7.11 colour named `name` (seed spelling, lower case), if there is one.
     pub fn from_name(name: &str) -> Option<Color> {
         TABLE
             .iter()
@@ -95,7 +95,7 @@ impl Color {
             .map(|(c, _, _)| *c)
     }
 
-    /// The colour whose RGB triple is exactly `rgb`, if there is one.
+    /// The §8.7.11 colour whose RGB triple is exactly `rgb`, if there is one.
     pub fn from_rgb(rgb: [u8; 3]) -> Option<Color> {
         TABLE.iter().find(|(_, _, v)| *v == rgb).map(|(c, _, _)| *c)
     }

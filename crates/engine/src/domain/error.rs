@@ -109,7 +109,7 @@ impl DomainError {
         })
     }
 
-    /// What went wrong.
+    /// What went wrong (one of the §8.7 error cases).
     pub fn kind(&self) -> &DomainErrorKind {
         &self.kind
     }

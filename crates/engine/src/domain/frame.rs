@@ -9,7 +9,7 @@ use opendrive::{Pose, Real};
 
 use super::Vector3;
 
-/// A pose as an origin and a rotation matrix, computed once so that many points can be
+/// A pose_3d (§8.7.2 `pose`) as an origin and a rotation matrix, computed once so that many points can be
 /// moved between the object and the world frame without repeated trigonometry.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Frame {

@@ -8,7 +8,8 @@
 use opendrive::Real;
 
 /// A vector of three `f64` components along x, y, z of some frame (m, m/s, rad/s, … as its
-/// use says). position_3d of OpenSCENARIO 2.0 is this type.
+/// use says): OpenSCENARIO 2.0 position_3d (§8.7.2, §8.7.9) and the halves of velocity_6d
+/// and acceleration_6d (§8.7.4).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Vector3 {
     /// x component.

@@ -109,7 +109,7 @@ pub struct MovableObject {
 }
 
 impl MovableObject {
-    /// `object` at rest.
+    /// `object` at rest (§8.7.4: velocity and acceleration zero).
     pub fn new(object: PhysicalObject) -> Self {
         Self {
             object,
@@ -166,7 +166,7 @@ pub struct TrafficParticipant {
 }
 
 impl TrafficParticipant {
-    /// `movable` with the given intended infrastructure.
+    /// `movable` with the given §8.7.5 `intended_infrastructure`.
     pub fn new(
         movable: MovableObject,
         intended_infrastructure: Vec<IntendedInfrastructure>,

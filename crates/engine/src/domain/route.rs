@@ -15,7 +15,7 @@ use opendrive::{Direction, LaneRoute, Real, RoadNetwork, S_TOLERANCE};
 use super::road_path::neighbours;
 use super::{DomainError, DomainErrorKind, RouteElement};
 
-/// One stretch of a route: road `road_id` (only lane `lane_id` of it, if given) from
+/// One stretch of a route (§8.7.4.1.1 route / compound_route): road `road_id` (only lane `lane_id` of it, if given) from
 /// `s_start` to `s_end`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RouteStretch {
@@ -162,12 +162,12 @@ impl Route {
         Self { stretches, length }
     }
 
-    /// The stretches in travel order.
+    /// The stretches in travel order (§8.7.4.1.1: the route's s-axis runs through them).
     pub fn stretches(&self) -> &[RouteStretch] {
         &self.stretches
     }
 
-    /// Total length along the stretches, m.
+    /// Total length along the stretches, m: the route s of its end point (§8.7.4.1.1).
     pub fn length(&self) -> Real {
         self.length
     }

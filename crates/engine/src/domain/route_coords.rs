@@ -24,8 +24,8 @@ use opendrive::{Direction, Real, RoadNetwork};
 use super::road_locate::locate;
 use super::{DomainError, DomainErrorKind, OnRouteType, PhysicalObject};
 
-/// A route element (OpenSCENARIO 2.0 road abstraction) on an OpenDRIVE network: the thing a
-/// route_point's s/t refer to.
+/// A route element (OpenSCENARIO 2.0 road abstraction, §8.7.16 on_route_type) on an
+/// OpenDRIVE network: the thing a route_point's s/t refer to (§8.7.2.1.4).
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub enum RouteElement {
     /// A whole road.
