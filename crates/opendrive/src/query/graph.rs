@@ -137,22 +137,83 @@ impl RoadNetwork {
                 element_id,
                 ..
             }) => {
-                if let Some(j) = self.junction(element_id) {
-                    for c in j.connections.iter().filter(|c| c.incoming_road == road.id) {
-                        let Some(&ci) = self.road_index.get(&c.connecting_road) else {
-                            continue;
-                        };
-                        for ll in c.lane_links.iter().filter(|ll| ll.from == h.lane) {
-                            if let Some(e) = self.entry(ci, c.contact_point, ll.to) {
+                self.through_junction(h, road, element_id, dir, &mut out);
+            }
+            None => {}
+        }
+        out
+    }
+
+    /// Lanes of the roads of junction `junction_id` joined to the end of lane `h` that is
+    /// reached travelling `dir`: from the junction's `<laneLink>`s whose `incomingRoad` is the
+    /// road, and from the connecting roads' own road and lane links back to the road (files
+    /// often write a connection in one direction only).
+    fn through_junction(
+        &self,
+        h: LaneHandle,
+        road: &Road,
+        junction_id: &str,
+        dir: Direction,
+        out: &mut Vec<(LaneHandle, Direction)>,
+    ) {
+        let Some(j) = self.junction(junction_id) else {
+            return;
+        };
+        let our_end = match dir {
+            Direction::Forward => ContactPoint::End,
+            Direction::Backward => ContactPoint::Start,
+        };
+        for c in j.connections.iter().filter(|c| c.incoming_road == road.id) {
+            let Some(&ci) = self.road_index.get(&c.connecting_road) else {
+                continue;
+            };
+            for ll in c.lane_links.iter().filter(|ll| ll.from == h.lane) {
+                if let Some(e) = self.entry(ci, c.contact_point, ll.to) {
+                    out.push(e);
+                }
+            }
+        }
+        let mut seen: Vec<&str> = Vec::new();
+        for c in &j.connections {
+            if seen.contains(&c.connecting_road.as_str()) {
+                continue;
+            }
+            seen.push(&c.connecting_road);
+            let Some(&ci) = self.road_index.get(&c.connecting_road) else {
+                continue;
+            };
+            let conn = &self.roads[ci];
+            let ends = [
+                (ContactPoint::Start, &conn.links.predecessor),
+                (ContactPoint::End, &conn.links.successor),
+            ];
+            for (conn_end, link) in ends {
+                let Some(l) = link else { continue };
+                let joins_us = l.element_type == ElementType::Road
+                    && l.element_id == road.id
+                    && l.contact_point.map_or(true, |cp| cp == our_end);
+                if !joins_us {
+                    continue;
+                }
+                let k = match conn_end {
+                    ContactPoint::Start => 0,
+                    ContactPoint::End => conn.lane_sections.len() - 1,
+                };
+                for lane in conn.lane_sections[k].lanes() {
+                    let back = match conn_end {
+                        ContactPoint::Start => lane.predecessor,
+                        ContactPoint::End => lane.successor,
+                    };
+                    if back == Some(h.lane) {
+                        if let Some(e) = self.entry(ci, conn_end, lane.id) {
+                            if !out.contains(&e) {
                                 out.push(e);
                             }
                         }
                     }
                 }
             }
-            None => {}
         }
-        out
     }
 
     /// Lane `id` of road `ri` entered at its start or end, with the direction of travel.

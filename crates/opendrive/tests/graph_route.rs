@@ -1,0 +1,150 @@
+//! Lane graph and routes (OpenDRIVE 1.8 §10 junctions, §11 lane linkage, `road/@rule`),
+//! against lengths read from the files by hand.
+
+mod common;
+
+use std::path::Path;
+
+use common::corpus;
+use opendrive::{Direction, LanePosition, LaneType, RoadNetwork, LANE_CHANGE_COST};
+
+fn load(path: &Path) -> RoadNetwork {
+    RoadNetwork::from_file(path).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn at(road: &str, lane: i32, s: f64) -> LanePosition {
+    LanePosition {
+        road_id: road.into(),
+        lane_id: lane,
+        s,
+        offset: 0.0,
+    }
+}
+
+fn junction_file() -> RoadNetwork {
+    load(&corpus().join("generated/xodr/common_junction_creator0.xodr"))
+}
+
+#[test]
+fn straight_through_a_common_junction() {
+    // Road 1 (100 m) ends at junction 100; connection 1 links its lane −1 to lane −1 of
+    // connecting road 100 (100.00000012397831 m, contactPoint start), whose successor is road 3
+    // at its start, lane −1. From s = 50 on road 1 to s = 30 on road 3:
+    // 50 + 100.00000012397831 + 30.
+    let net = junction_file();
+    let r = net
+        .route(&at("1", -1, 50.0), &at("3", -1, 30.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!((r.length - 180.000_000_123_978_31).abs() < 1e-9, "{r:?}");
+    let ids: Vec<(&str, i32)> = r
+        .segments
+        .iter()
+        .map(|s| (s.road_id.as_str(), s.lane_id))
+        .collect();
+    assert_eq!(ids, [("1", -1), ("100", -1), ("3", -1)]);
+    assert!(r.segments.iter().all(|s| s.direction == Direction::Forward));
+    assert_eq!(r.lane_changes, 0);
+}
+
+#[test]
+fn opposite_direction_through_the_same_junction() {
+    // Lane 1 runs towards −s (right-hand traffic): road 3 from s = 30 down to its start, back
+    // through road 100 lane 1 (end → start), then road 1 lane 1 from its end down to s = 50.
+    let net = junction_file();
+    let r = net
+        .route(&at("3", 1, 30.0), &at("1", 1, 50.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!((r.length - 180.000_000_123_978_31).abs() < 1e-9, "{r:?}");
+    assert!(
+        r.segments
+            .iter()
+            .all(|s| s.direction == Direction::Backward),
+        "{r:?}"
+    );
+    assert!((r.segments[0].s_start - 30.0).abs() < 1e-12 && r.segments[0].s_end.abs() < 1e-12);
+}
+
+#[test]
+fn turn_written_only_in_the_other_direction_is_found_from_road_links() {
+    // Junction 100 lists connecting road 101 only with incomingRoad 1 (lane 2 → 1). Road 101
+    // (80.57849294213011 m) runs from road 1's end (predecessor) to road 2's start (successor);
+    // its lane 1 runs towards −s, from road 2 lane 1 into road 1 lane 2. From road 2 lane 1
+    // at s = 20 to road 1 lane 2 at s = 60: 20 + 80.57849294213011 + (100 − 60).
+    let net = junction_file();
+    let r = net
+        .route(&at("2", 1, 20.0), &at("1", 2, 60.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!((r.length - 140.578_492_942_130_11).abs() < 1e-9, "{r:?}");
+    let ids: Vec<(&str, i32)> = r
+        .segments
+        .iter()
+        .map(|s| (s.road_id.as_str(), s.lane_id))
+        .collect();
+    assert_eq!(ids, [("2", 1), ("101", 1), ("1", 2)]);
+}
+
+#[test]
+fn successors_and_predecessors_are_inverse() {
+    let net = junction_file();
+    let h = net
+        .lane_handle("1", -1, 99.0)
+        .unwrap_or_else(|| panic!("lane"));
+    let next = net.successors(h);
+    assert!(!next.is_empty());
+    for n in next {
+        assert!(net.predecessors(n).contains(&h), "{n:?}");
+    }
+}
+
+#[test]
+fn lane_changes_cost_and_directions_on_one_road() {
+    let net = load(Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/files/three_lanes.xodr"
+    )));
+    // Along lane −1: 80 m, one segment.
+    let r = net
+        .route(&at("1", -1, 10.0), &at("1", -1, 90.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!((r.length - 80.0).abs() < 1e-12 && r.segments.len() == 1);
+    // To lane −2: one lane change (cost LANE_CHANGE_COST in the search, none in length).
+    let r = net
+        .route(&at("1", -1, 10.0), &at("1", -2, 90.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!(
+        (r.length - 80.0).abs() < 1e-12 && r.lane_changes == 1,
+        "{r:?}"
+    );
+    assert!(LANE_CHANGE_COST > 0.0);
+    // Backwards along a right-hand lane, across the centre line, onto a sidewalk: no route.
+    assert!(net.route(&at("1", -1, 90.0), &at("1", -1, 10.0)).is_none());
+    assert!(net.route(&at("1", -1, 10.0), &at("1", 1, 5.0)).is_none());
+    assert!(net
+        .route(&at("1", -1, 10.0), &at("1", -3, 90.0))
+        .is_some_and(|r| r.lane_changes == 2));
+    assert!(!LaneType::Sidewalk.is_drivable() && LaneType::Driving.is_drivable());
+    // Lane 1 drives towards −s: 90 → 10.
+    let r = net
+        .route(&at("1", 1, 90.0), &at("1", 1, 10.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!((r.length - 80.0).abs() < 1e-12 && r.segments[0].direction == Direction::Backward);
+}
+
+#[test]
+fn left_hand_traffic_flips_the_driving_direction() {
+    // e6mini-lht.xodr has rule="LHT": lanes 2..4 (driving) run towards +s, −2, −3 towards −s.
+    // e6mini.xodr is the same road with right-hand traffic.
+    let lht = load(&corpus().join("esmini/xodr/e6mini-lht.xodr"));
+    let rht = load(&corpus().join("esmini/xodr/e6mini.xodr"));
+    let fwd = lht
+        .route(&at("0", 2, 10.0), &at("0", 4, 500.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!(
+        (fwd.length - 490.0).abs() < 1e-9 && fwd.lane_changes == 2,
+        "{fwd:?}"
+    );
+    assert!(lht.route(&at("0", -2, 10.0), &at("0", -2, 500.0)).is_none());
+    assert!(lht.route(&at("0", -2, 500.0), &at("0", -3, 10.0)).is_some());
+    assert!(rht.route(&at("0", 2, 10.0), &at("0", 2, 500.0)).is_none());
+    assert!(rht.route(&at("0", -2, 10.0), &at("0", -3, 500.0)).is_some());
+}
