@@ -1,10 +1,33 @@
 //! Positions at runtime: OpenSCENARIO 1.3 §6.3 coordinate systems and the ten `Position`
-//! forms resolved to a world pose and a road position.
+//! forms of §7.4, resolved to a world pose of the entity's reference point and a road
+//! position, over the OpenDRIVE road model. Written by hand: the rules are the standard's own
+//! and the geometry is the `opendrive` crate's.
 //!
 //! | module | implements |
 //! | --- | --- |
 //! | `query` | `EntityQuery` / `EntityView`: the runtime's read-only answers about entities |
+//! | `error` | `PositionError`, `PositionErrorKind` |
+//! | `resolved` | `ResolvedPosition`: world pose + road position |
+//! | `orientation` | absolute / relative Orientation rules, surface pitch and roll, object axes |
+//! | `world` | WorldPosition, RelativeWorldPosition, RelativeObjectPosition |
+//! | `road` | RoadPosition, RelativeRoadPosition |
+//! | `lane` | LanePosition, RelativeLanePosition (ds and dsLane) |
+//! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) |
+//! | `trajectory` | TrajectoryPosition on a polyline |
+//! | `resolve` | `resolve`: the dispatcher; GeoPosition |
 
+mod error;
+mod lane;
+mod orientation;
 mod query;
+mod resolve;
+mod resolved;
+mod road;
+mod route;
+mod trajectory;
+mod world;
 
+pub use error::{PositionError, PositionErrorKind};
 pub use query::{EntityQuery, EntityView};
+pub use resolve::resolve;
+pub use resolved::ResolvedPosition;

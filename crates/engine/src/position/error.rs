@@ -1,0 +1,149 @@
+//! Errors of position resolution (OpenSCENARIO 1.3 §6.3, §7.4): what was expected, what was
+//! found, and where the position was written ("expected X, found Y at file:line:col").
+
+use scenario::SourcePos;
+
+/// Why a position could not be resolved.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum PositionErrorKind {
+    /// An `entityRef` names no placed entity.
+    #[error("expected a placed entity named \"{0}\", found none")]
+    UnknownEntity(String),
+    /// A road-relative position refers to an entity that stands on no road.
+    #[error("expected entity \"{0}\" on a road, found it off every road")]
+    EntityOffRoad(String),
+    /// A query on the road network failed (unknown road or lane, s beyond the road).
+    #[error("{0}")]
+    RoadNetwork(opendrive::ErrorKind),
+    /// `laneId` is not an integer.
+    #[error("expected an integer lane id, found \"{0}\"")]
+    InvalidLaneId(String),
+    /// A relative lane position lands on a lane the road does not have there.
+    #[error("expected lane {lane} (lane {from} + dLane {d_lane}) on road \"{road}\" at s = {s}, found no such lane")]
+    NoTargetLane {
+        /// Road id.
+        road: String,
+        /// The reference entity's lane.
+        from: i32,
+        /// dLane.
+        d_lane: i32,
+        /// The lane aimed at.
+        lane: i32,
+        /// s, m.
+        s: f64,
+    },
+    /// GeoPosition on a road network whose geoReference oscsim cannot invert.
+    #[error(
+        "expected a road network geoReference that oscsim can invert for a GeoPosition, found {0}"
+    )]
+    GeoUnsupported(String),
+    /// Two consecutive waypoints of a route are not joined by the lane graph.
+    #[error("expected a path through the road network from waypoint {from} to waypoint {to} of route \"{route}\", found none")]
+    NoRoute {
+        /// Route name.
+        route: String,
+        /// 0-based index of the first waypoint.
+        from: usize,
+        /// 0-based index of the second waypoint.
+        to: usize,
+    },
+    /// A route has fewer than two waypoints.
+    #[error("expected at least 2 waypoints in route \"{route}\", found {found}")]
+    TooFewWaypoints {
+        /// Route name.
+        route: String,
+        /// Waypoints found.
+        found: usize,
+    },
+    /// `pathS` lies beyond the route.
+    #[error("expected pathS in [0, {length}] along route \"{route}\", found {path_s}")]
+    OutsideRoute {
+        /// Route name.
+        route: String,
+        /// pathS, m.
+        path_s: f64,
+        /// Route length, m.
+        length: f64,
+    },
+    /// `FromCurrentEntity`: the entity is not on any stretch of the route.
+    #[error("expected entity \"{entity}\" on route \"{route}\", found it off the route")]
+    EntityOffRoute {
+        /// Entity name.
+        entity: String,
+        /// Route name.
+        route: String,
+    },
+    /// `s` lies beyond the trajectory.
+    #[error("expected s in [0, {length}] along trajectory \"{trajectory}\", found {s}")]
+    OutsideTrajectory {
+        /// Trajectory name.
+        trajectory: String,
+        /// s, m.
+        s: f64,
+        /// Trajectory length, m.
+        length: f64,
+    },
+    /// A form oscsim does not support (yet), e.g. a TrajectoryPosition on a NURBS.
+    #[error("expected {expected}, found {found} (not supported by oscsim)")]
+    Unsupported {
+        /// What oscsim supports.
+        expected: &'static str,
+        /// What was found.
+        found: &'static str,
+    },
+    /// A polyline with fewer than two vertices.
+    #[error("expected at least 2 vertices in trajectory \"{trajectory}\", found {found}")]
+    TooFewVertices {
+        /// Trajectory name.
+        trajectory: String,
+        /// Vertices found.
+        found: usize,
+    },
+    /// A value that must be finite is not.
+    #[error("expected a finite {what}, found {value}")]
+    NotFinite {
+        /// Which value.
+        what: &'static str,
+        /// The value.
+        value: f64,
+    },
+}
+
+/// A position that could not be resolved: the kind and where the position was written.
+/// Boxed, so that `Result<_, PositionError>` stays one pointer wide.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{} at {}", .0.kind, .0.pos)]
+pub struct PositionError(Box<Inner>);
+
+/// The contents of a [`PositionError`].
+#[derive(Debug, Clone, PartialEq)]
+struct Inner {
+    kind: PositionErrorKind,
+    pos: SourcePos,
+}
+
+impl PositionError {
+    /// An error of `kind` for the position written at `pos`.
+    pub(crate) fn new(kind: PositionErrorKind, pos: &SourcePos) -> Self {
+        Self(Box::new(Inner {
+            kind,
+            pos: pos.clone(),
+        }))
+    }
+
+    /// What went wrong.
+    pub fn kind(&self) -> &PositionErrorKind {
+        &self.0.kind
+    }
+
+    /// Where the position was written (file, 1-based line and column).
+    pub fn pos(&self) -> &SourcePos {
+        &self.0.pos
+    }
+}
+
+/// Shorthand: an opendrive query error as a position error at `pos`.
+pub(crate) fn road_error(e: opendrive::Error, pos: &SourcePos) -> PositionError {
+    PositionError::new(PositionErrorKind::RoadNetwork(e.kind().clone()), pos)
+}

@@ -1,0 +1,144 @@
+//! The front door: [`resolve`] dispatches a `scenario::Position` (OpenSCENARIO 1.3 §7.4, XSD
+//! `Position` and its ten choices) to the module of its form.
+//!
+//! GeoPosition (WGS84 latitude/longitude) needs the road network's `geoReference` (a PROJ
+//! string) inverted into the network's x/y; doing that right needs a projection library
+//! (PROJ itself is a C library), and the corpus' geoReferences are full UTM/transverse
+//! Mercator definitions with datum shifts. oscsim therefore reports GeoPosition as
+//! unsupported, naming the network's geoReference (or its absence).
+
+use scenario::{Position, PositionKind};
+
+use super::lane::{lane, parse_lane_id, relative_lane, Along};
+use super::road::{relative_road, road};
+use super::route::route_position;
+use super::trajectory::trajectory_position;
+use super::world::{relative, world};
+use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
+
+/// Resolves `position` to a world pose and road position, reading reference entities and the
+/// road network from `ctx`. Errors name the position's file, line and column.
+pub fn resolve<Q: EntityQuery + ?Sized>(
+    position: &Position,
+    ctx: &Q,
+) -> Result<ResolvedPosition, PositionError> {
+    let pos = &position.pos;
+    let network = ctx.road_network();
+    match &position.kind {
+        PositionKind::World { x, y, z, h, p, r } => world(network, *x, *y, *z, [*h, *p, *r], pos),
+        PositionKind::RelativeWorld {
+            entity_ref,
+            dx,
+            dy,
+            dz,
+            orientation,
+        }
+        | PositionKind::RelativeObject {
+            entity_ref,
+            dx,
+            dy,
+            dz,
+            orientation,
+        } => {
+            let in_object_axes = matches!(position.kind, PositionKind::RelativeObject { .. });
+            relative(
+                ctx,
+                entity_ref,
+                [*dx, *dy],
+                *dz,
+                orientation.as_ref(),
+                in_object_axes,
+                pos,
+            )
+        }
+        PositionKind::Road {
+            road_id,
+            s,
+            t,
+            orientation,
+        } => road(network, road_id, [*s, *t], orientation.as_ref(), pos),
+        PositionKind::RelativeRoad {
+            entity_ref,
+            ds,
+            dt,
+            orientation,
+        } => relative_road(ctx, entity_ref, [*ds, *dt], orientation.as_ref(), pos),
+        PositionKind::Lane {
+            road_id,
+            lane_id,
+            s,
+            offset,
+            orientation,
+        } => {
+            let lane_id = parse_lane_id(lane_id, pos)?;
+            let offset = offset.unwrap_or(0.0);
+            lane(
+                network,
+                road_id,
+                lane_id,
+                [*s, offset],
+                orientation.as_ref(),
+                pos,
+            )
+        }
+        PositionKind::RelativeLane {
+            entity_ref,
+            d_lane,
+            ds,
+            ds_lane,
+            offset,
+            orientation,
+        } => {
+            // The XSD makes ds and dsLane mutually exclusive; with neither, ds = 0.
+            let along = match (ds, ds_lane) {
+                (_, Some(d)) => Along::Lane(*d),
+                (Some(d), None) => Along::Road(*d),
+                (None, None) => Along::Road(0.0),
+            };
+            relative_lane(
+                ctx,
+                entity_ref,
+                *d_lane,
+                along,
+                offset.unwrap_or(0.0),
+                orientation.as_ref(),
+                pos,
+            )
+        }
+        PositionKind::Route {
+            route,
+            orientation,
+            in_route,
+        } => route_position(ctx, route, in_route, orientation.as_ref(), pos),
+        PositionKind::Trajectory {
+            trajectory,
+            s,
+            t,
+            orientation,
+        } => trajectory_position(
+            ctx,
+            trajectory,
+            *s,
+            t.unwrap_or(0.0),
+            orientation.as_ref(),
+            pos,
+        ),
+        PositionKind::Geo { .. } => {
+            let found = match &network.header().geo_reference {
+                Some(g) => format!("\"{}\"", g.0.trim()),
+                None => "none".to_string(),
+            };
+            Err(PositionError::new(
+                PositionErrorKind::GeoUnsupported(found),
+                pos,
+            ))
+        }
+        _ => Err(PositionError::new(
+            PositionErrorKind::Unsupported {
+                expected: "one of the ten Position forms of OpenSCENARIO 1.3",
+                found: "another form",
+            },
+            pos,
+        )),
+    }
+}

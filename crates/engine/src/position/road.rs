@@ -1,0 +1,63 @@
+//! Road-coordinate positions (OpenSCENARIO 1.3 §6.3.3 road coordinate system; XSD
+//! `RoadPosition`, `RelativeRoadPosition`).
+//!
+//! * RoadPosition: the point (s, t) of road `roadId` (OpenDRIVE s along the reference line,
+//!   t positive left), on the road surface.
+//! * RelativeRoadPosition: the reference entity's (s, t) on its road plus (ds, dt), on the
+//!   same road. The 1.3 text lets the target continue on a connecting road; oscsim does not
+//!   follow road links here yet and reports an s outside the road as an error.
+//!
+//! Orientation: relative headings count from the road's s-tangent at the target
+//! (`orientation::on_surface`).
+
+use opendrive::{Real, RoadNetwork};
+use scenario::{Orientation, SourcePos};
+
+use super::error::road_error;
+use super::orientation::on_surface;
+use super::world::{entity, finite};
+use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
+
+/// `RoadPosition`: (road, s, t).
+pub(crate) fn road(
+    network: &RoadNetwork,
+    road_id: &str,
+    [s, t]: [Real; 2],
+    orientation: Option<&Orientation>,
+    pos: &SourcePos,
+) -> Result<ResolvedPosition, PositionError> {
+    finite(&[("s", s), ("t", t)], pos)?;
+    let surface = network
+        .road_pose(road_id, s, t)
+        .map_err(|e| road_error(e, pos))?;
+    let a = on_surface(orientation, &surface, surface.h);
+    let pose = opendrive::Pose {
+        h: a.h,
+        p: a.p,
+        r: a.r,
+        ..surface
+    };
+    Ok(ResolvedPosition::on_road(network, road_id, pose))
+}
+
+/// `RelativeRoadPosition`: the entity's (s, t) plus (ds, dt) on its road.
+pub(crate) fn relative_road<Q: EntityQuery + ?Sized>(
+    ctx: &Q,
+    entity_ref: &str,
+    [ds, dt]: [Real; 2],
+    orientation: Option<&Orientation>,
+    pos: &SourcePos,
+) -> Result<ResolvedPosition, PositionError> {
+    finite(&[("ds", ds), ("dt", dt)], pos)?;
+    let e = entity(ctx, entity_ref, pos)?;
+    let rp = e.road_position.ok_or_else(|| {
+        PositionError::new(PositionErrorKind::EntityOffRoad(entity_ref.into()), pos)
+    })?;
+    road(
+        ctx.road_network(),
+        &rp.road_id,
+        [rp.s + ds, rp.t + dt],
+        orientation,
+        pos,
+    )
+}

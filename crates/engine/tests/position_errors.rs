@@ -1,0 +1,101 @@
+//! Bad positions give errors that name what was expected, what was found and where the
+//! position was written (never a panic).
+
+mod condition_support;
+
+use condition_support::{at, corpus_road, FakeWorld};
+use engine::position::resolve;
+use scenario::PositionKind;
+
+fn message(kind: PositionKind, w: &FakeWorld) -> String {
+    resolve(&at(kind), w).unwrap_err().to_string()
+}
+
+#[test]
+fn error_messages_name_expectation_finding_and_place() {
+    let mut w = FakeWorld::new(corpus_road("esmini/xodr/straight_500m.xodr"));
+    w.place_on_lane("Ego", "1", -1, 100.0, true);
+    let lane = |road: &str, lane: &str, s: f64| PositionKind::Lane {
+        road_id: road.into(),
+        lane_id: lane.into(),
+        s,
+        offset: None,
+        orientation: None,
+    };
+    assert_eq!(
+        message(lane("9", "-1", 10.0), &w),
+        "expected an existing road, found road id \"9\" at test.xosc:7:9"
+    );
+    assert_eq!(
+        message(lane("1", "left", 10.0), &w),
+        "expected an integer lane id, found \"left\" at test.xosc:7:9"
+    );
+    assert_eq!(
+        message(lane("1", "-1", 600.0), &w),
+        "expected s in [0, 500] on road \"1\", found 600 at test.xosc:7:9"
+    );
+    assert_eq!(
+        message(
+            PositionKind::RelativeLane {
+                entity_ref: "Ego".into(),
+                d_lane: -5,
+                ds: Some(0.0),
+                ds_lane: None,
+                offset: None,
+                orientation: None,
+            },
+            &w
+        ),
+        "expected lane -6 (lane -1 + dLane -5) on road \"1\" at s = 100, found no such lane at test.xosc:7:9"
+    );
+    assert_eq!(
+        message(
+            PositionKind::RelativeRoad {
+                entity_ref: "Nobody".into(),
+                ds: 1.0,
+                dt: 0.0,
+                orientation: None,
+            },
+            &w
+        ),
+        "expected a placed entity named \"Nobody\", found none at test.xosc:7:9"
+    );
+    assert_eq!(
+        message(
+            PositionKind::World {
+                x: f64::NAN,
+                y: 0.0,
+                z: None,
+                h: None,
+                p: None,
+                r: None
+            },
+            &w
+        ),
+        "expected a finite x, found NaN at test.xosc:7:9"
+    );
+}
+
+#[test]
+fn entity_off_every_road_cannot_anchor_a_road_position() {
+    let mut w = FakeWorld::new(corpus_road("esmini/xodr/straight_500m.xodr"));
+    // 100 m north of a road whose surface is at most 10.75 m wide on either side.
+    w.place(
+        "Far",
+        opendrive::Pose {
+            x: 50.0,
+            y: 100.0,
+            ..Default::default()
+        },
+    );
+    let kind = PositionKind::RelativeRoad {
+        entity_ref: "Far".into(),
+        ds: 1.0,
+        dt: 0.0,
+        orientation: None,
+    };
+    assert_eq!(
+        message(kind, &w),
+        "expected entity \"Far\" on a road, found it off every road at test.xosc:7:9"
+    );
+}
