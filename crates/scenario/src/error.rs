@@ -133,6 +133,18 @@ pub enum ErrorKind {
         /// The constraints, e.g. "greaterThan 0".
         expected: String,
     },
+    /// A StoryboardElementStateCondition naming no storyboard element of its type.
+    UnknownStoryboardElement {
+        /// The type written.
+        element_type: crate::model::StoryboardElementType,
+        /// The name written.
+        name: String,
+    },
+    /// A VariableAction or VariableCondition naming an undeclared variable.
+    UnknownVariable {
+        /// The name written.
+        name: String,
+    },
     /// A file larger than the loader accepts.
     FileTooLarge {
         /// The file.
@@ -269,6 +281,16 @@ impl fmt::Display for ErrorKind {
                 path.display(),
                 *size as f64 / (1024.0 * 1024.0)
             ),
+            Self::UnknownStoryboardElement { element_type, name } => write!(
+                f,
+                "expected a storyboard element of type {element_type} named '{name}', found none"
+            ),
+            Self::UnknownVariable { name } => {
+                write!(
+                    f,
+                    "expected a declared variable, found unknown variable '{name}'"
+                )
+            }
             Self::NotAScenario { found } => {
                 write!(
                     f,

@@ -54,6 +54,9 @@ error_cases!(
     missing_road_network_file,
     missing_catalog_entry,
     constraint_violated,
+    misspelt_child,
+    unknown_storyboard_element,
+    unknown_variable,
 );
 
 #[test]

@@ -34,8 +34,10 @@ pub(crate) fn read_trigger_child<'a>(
 
 /// Reads XSD `Trigger`.
 pub(crate) fn read_trigger<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Trigger> {
+    ctx.expect_children(n, &["ConditionGroup"])?;
     let mut trigger = Trigger::default();
     for g in ctx.children(n, "ConditionGroup") {
+        ctx.expect_children(g, &["Condition"])?;
         let mut group = ConditionGroup::default();
         for c in ctx.children(g, "Condition") {
             group.conditions.push(read_condition(ctx, c)?);
@@ -247,7 +249,7 @@ fn read_by_value_condition<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<ByValue
     let c = ctx.choice(n, VALUE_CONDITIONS)?;
     Ok(match c.tag_name().name() {
         "ParameterCondition" => ByValueCondition::Parameter {
-            parameter_ref: ctx.param_name(c, "parameterRef")?,
+            parameter_ref: ctx.declared_param(c, "parameterRef")?,
             rule: ctx.req(c, "rule")?,
             value: ctx.req(c, "value")?,
         },

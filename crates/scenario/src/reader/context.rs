@@ -271,6 +271,18 @@ impl<'a> Ctx<'a> {
         }
     }
 
+    /// As [`Ctx::param_name`], also checking that the parameter is declared in scope
+    /// (ParameterCondition, ParameterAction refer to a declared parameter).
+    pub fn declared_param(&mut self, n: Node<'a>, name: &'static str) -> Result<String> {
+        let param = self.param_name(n, name)?;
+        if self.lookup(&param).is_none() {
+            let pos = self.raw_attr(n, name).map_or_else(|| self.pos(n), |a| self.attr_pos(&a));
+            let attribute = format!("{}@{name}", n.tag_name().name());
+            return Err(Error::new(ErrorKind::UnknownParameter { name: param, attribute }, pos));
+        }
+        Ok(param)
+    }
+
     /// All warnings so far, in the order found.
     pub fn take_warnings(&mut self) -> Vec<Warning> {
         let mut all = std::mem::take(&mut self.warnings);
@@ -343,6 +355,18 @@ impl<'a> Ctx<'a> {
                 },
             )
         })
+    }
+
+    /// Checks that every child element of the sequence element `n` is one of `allowed`, so a
+    /// misspelt or misplaced element is an error rather than silently dropped.
+    pub fn expect_children(&self, n: Node<'a>, allowed: &[&str]) -> Result<()> {
+        match n
+            .children()
+            .find(|c| c.is_element() && !allowed.contains(&c.tag_name().name()))
+        {
+            Some(c) => Err(self.unexpected(n, c, &allowed.join(", "))),
+            None => Ok(()),
+        }
     }
 
     /// The error for child `found` of `parent` not being one of `expected`.

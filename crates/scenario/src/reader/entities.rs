@@ -114,6 +114,19 @@ fn read_entity_object<'a>(
 
 /// Reads XSD `Vehicle`.
 pub(crate) fn read_vehicle<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Vehicle> {
+    ctx.expect_children(
+        n,
+        &[
+            "ParameterDeclarations",
+            "BoundingBox",
+            "Performance",
+            "Axles",
+            "Properties",
+            "TrailerHitch",
+            "TrailerCoupler",
+            "Trailer",
+        ],
+    )?;
     ctx.scoped(n, |ctx| {
         let bounding_box = read_bounding_box(ctx, n)?;
         let p = ctx.child(n, "Performance")?;
@@ -211,6 +224,7 @@ fn read_trailer<'a>(ctx: &mut Ctx<'a>, t: Node<'a>) -> Result<Option<Trailer>> {
 
 /// Reads XSD `Pedestrian`; the deprecated `model` is read as `model3d`.
 pub(crate) fn read_pedestrian<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Pedestrian> {
+    ctx.expect_children(n, &["ParameterDeclarations", "BoundingBox", "Properties"])?;
     ctx.scoped(n, |ctx| {
         let old_model: Option<String> = ctx.opt(n, "model")?;
         if old_model.is_some() {
@@ -231,6 +245,7 @@ pub(crate) fn read_pedestrian<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Pede
 
 /// Reads XSD `MiscObject`.
 pub(crate) fn read_misc_object<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<MiscObject> {
+    ctx.expect_children(n, &["ParameterDeclarations", "BoundingBox", "Properties"])?;
     ctx.scoped(n, |ctx| {
         Ok(MiscObject {
             name: ctx.req(n, "name")?,

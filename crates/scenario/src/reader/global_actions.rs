@@ -69,7 +69,7 @@ pub(crate) fn read_global_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<G
                 );
             }
             GlobalAction::Parameter {
-                parameter_ref: ctx.param_name(c, "parameterRef")?,
+                parameter_ref: ctx.declared_param(c, "parameterRef")?,
                 rule: read_modify_rule(ctx, c)?,
             }
         }

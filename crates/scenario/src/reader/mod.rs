@@ -12,6 +12,7 @@ pub(crate) mod global_actions;
 pub(crate) mod params;
 pub(crate) mod positions;
 pub(crate) mod private_actions;
+pub(crate) mod references;
 pub(crate) mod routing;
 pub(crate) mod scenario;
 pub(crate) mod selections;

@@ -25,6 +25,7 @@ use crate::reader::context::{Ctx, Doc, Node, Scope};
 use crate::reader::entities::read_entities;
 use crate::reader::params::{declare, read_parameter_type};
 use crate::reader::positions::read_position;
+use crate::reader::references::check_references;
 use crate::reader::selections::{check_entity_names, expand_selections};
 use crate::reader::storyboard::read_storyboard;
 use crate::source::{LineIndex, SourcePos};
@@ -171,6 +172,19 @@ fn load_inner(
     ctx.catalogs = index_catalogs(&docs, &locations);
     let (globals, parameter_declarations) = read_globals(&mut ctx, root, overrides)?;
     ctx.scopes.push(globals);
+    ctx.expect_children(
+        root,
+        &[
+            "FileHeader",
+            "ParameterDeclarations",
+            "VariableDeclarations",
+            "MonitorDeclarations",
+            "CatalogLocations",
+            "RoadNetwork",
+            "Entities",
+            "Storyboard",
+        ],
+    )?;
     let variable_declarations = read_variable_declarations(&mut ctx, root)?;
     let monitor_declarations = read_monitor_declarations(&mut ctx, root)?;
     let road = ctx.child(root, "RoadNetwork")?;
@@ -181,6 +195,7 @@ fn load_inner(
     let storyboard = read_storyboard(&mut ctx, storyboard_node)?;
     check_entity_names(&entities, &ctx.entity_uses)?;
     expand_selections(&mut entities)?;
+    check_references(&storyboard, &variable_declarations)?;
     Ok(Scenario {
         path: path.to_path_buf(),
         file_header: header,
@@ -460,6 +475,10 @@ fn index_catalogs<'a>(docs: &'a [Doc<'a>], locations: &[(String, PathBuf)]) -> C
 
 /// Reads XSD `RoadNetwork`; the LogicFile must exist (resolved against the scenario).
 fn read_road_network<'a>(ctx: &mut Ctx<'a>, n: Node<'a>, path: &Path) -> Result<RoadNetwork> {
+    ctx.expect_children(
+        n,
+        &["LogicFile", "SceneGraphFile", "TrafficSignals", "UsedArea"],
+    )?;
     let mut road = RoadNetwork::default();
     if let Some(l) = ctx.opt_child(n, "LogicFile") {
         let written: String = ctx.req(l, "filepath")?;

@@ -17,6 +17,7 @@ use crate::reader::routing::expect_entry;
 
 /// Reads XSD `Storyboard`.
 pub(crate) fn read_storyboard<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Storyboard> {
+    ctx.expect_children(n, &["Init", "Story", "StopTrigger"])?;
     let init = ctx.child(n, "Init")?;
     let init = read_init(ctx, init)?;
     let mut stories = Vec::new();
@@ -79,6 +80,7 @@ fn read_init<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Init> {
 
 /// Reads XSD `Story`.
 fn read_story<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Story> {
+    ctx.expect_children(n, &["ParameterDeclarations", "Act"])?;
     ctx.scoped(n, |ctx| {
         let mut acts = Vec::new();
         for a in ctx.children(n, "Act") {
@@ -94,6 +96,7 @@ fn read_story<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Story> {
 
 /// Reads XSD `Act`.
 fn read_act<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Act> {
+    ctx.expect_children(n, &["ManeuverGroup", "StartTrigger", "StopTrigger"])?;
     let mut maneuver_groups = Vec::new();
     for g in ctx.children(n, "ManeuverGroup") {
         maneuver_groups.push(read_maneuver_group(ctx, g)?);
@@ -144,6 +147,7 @@ fn read_maneuver_group<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<ManeuverGro
 
 /// Reads XSD `Maneuver`.
 pub(crate) fn read_maneuver<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Maneuver> {
+    ctx.expect_children(n, &["ParameterDeclarations", "Event"])?;
     ctx.scoped(n, |ctx| {
         let mut events = Vec::new();
         for e in ctx.children(n, "Event") {
@@ -160,6 +164,7 @@ pub(crate) fn read_maneuver<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Maneuv
 
 /// Reads XSD `Event`.
 fn read_event<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Event> {
+    ctx.expect_children(n, &["Action", "StartTrigger"])?;
     let mut actions = Vec::new();
     for a in ctx.children(n, "Action") {
         actions.push(read_action(ctx, a)?);
