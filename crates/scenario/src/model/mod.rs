@@ -1,3 +1,5 @@
+//! The typed OpenSCENARIO 1.3 model, one file per chapter of the standard.
+
 mod actions;
 mod common;
 mod conditions;

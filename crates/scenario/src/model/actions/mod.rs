@@ -1,3 +1,5 @@
+//! Actions (OpenSCENARIO 1.3 §7.7): private, global, traffic, appearance.
+
 mod appearance;
 mod global;
 mod private;
