@@ -49,7 +49,7 @@ impl Seek for Discard {
 
 fn bench(c: &mut Criterion) {
     let mut ids = IdAllocator::new();
-    let gt = common::frame(&mut ids, 10, OBJECTS, false);
+    let mut gt = common::frame(&mut ids, 10, OBJECTS, false);
     let bytes = prost::Message::encoded_len(&gt) as u64 + 4;
 
     let mut group = c.benchmark_group("ground_truth");
@@ -67,9 +67,22 @@ fn bench(c: &mut Criterion) {
         })
     });
 
+    // Writers demand increasing time: each iteration writes the frame one step later.
+    let mut step = 0i64;
+    let mut next = move |gt: &mut osi::osi3::GroundTruth| {
+        step += 1;
+        gt.timestamp = Some(osi::osi3::Timestamp {
+            seconds: Some(step / 20),
+            nanos: Some((step % 20) as u32 * 50_000_000),
+        });
+    };
+
     group.bench_function("osi_1000", |b| {
         let mut writer = OsiFileWriter::new(io::sink(), Path::new("bench.osi"));
-        b.iter(|| writer.write(&gt).expect("sink accepts everything"))
+        b.iter(|| {
+            next(&mut gt);
+            writer.write(&gt).expect("sink accepts everything")
+        })
     });
 
     group.bench_function("mcap_1000", |b| {
@@ -77,6 +90,7 @@ fn bench(c: &mut Criterion) {
         let mut writer = McapTraceWriter::new(Discard::default(), Path::new("bench.mcap"), &info)
             .expect("discarding writer accepts the header");
         b.iter(|| {
+            next(&mut gt);
             writer
                 .write(&gt)
                 .expect("discarding writer accepts everything")

@@ -16,6 +16,7 @@ use crate::osi3::moving_object::{
     MovingObjectClassification, PedestrianAttributes, Type as MovingType, VehicleAttributes,
     VehicleClassification,
 };
+use crate::osi3::stationary_object::classification::Type as StationaryType;
 use crate::osi3::stationary_object::Classification as StationaryClassification;
 use crate::osi3::{
     BaseStationary, ColorDescription, Dimension3d, ExternalReference, Identifier, MovingObject,
@@ -58,6 +59,26 @@ pub struct EntityInfo<'a> {
     pub trailer: Option<&'a str>,
 }
 
+/// OSI needs a positive, finite bounding box at a finite place (osi_check: "dimension
+/// not positive"); refuse anything else rather than write an invalid object.
+fn check_box(position: [f64; 3], dimension: [f64; 3]) -> Result<(), Error> {
+    if !dimension.iter().all(|d| d.is_finite() && *d > 0.0) {
+        return Err(Error::invalid(
+            "the bounding box dimension",
+            "three positive finite numbers (length, width, height)",
+            &format!("{dimension:?}"),
+        ));
+    }
+    if !position.iter().all(|p| p.is_finite()) {
+        return Err(Error::invalid(
+            "the position",
+            "three finite numbers",
+            &format!("{position:?}"),
+        ));
+    }
+    Ok(())
+}
+
 fn source_reference(file: Option<&str>, entity_type: &str, name: &str) -> ExternalReference {
     ExternalReference {
         reference: file.map(str::to_string),
@@ -73,6 +94,7 @@ pub fn moving_object(
     state: &RigidBodyState,
     lanes: &[Identifier],
 ) -> Result<MovingObject, Error> {
+    check_box(state.bbox_centre_position(), state.dimension)?;
     let (object_type, vehicle, entity_type) = match info.kind {
         EntityKind::Vehicle { category } => (
             MovingType::Vehicle,
@@ -126,13 +148,15 @@ pub fn moving_object(
     Ok(object)
 }
 
-/// A `MiscObject` as a `StationaryObject`; `position` is the bounding-box centre in the
-/// world frame, `orientation` yaw, pitch, roll, `dimension` length, width, height.
+/// A `MiscObject` or an `ExternalObjectReference` as a `StationaryObject`; `position` is
+/// the bounding-box centre in the world frame, `orientation` yaw, pitch, roll,
+/// `dimension` length, width, height.
 pub struct MiscObjectInfo<'a> {
     /// Entity name.
     pub name: &'a str,
-    /// `miscObjectCategory`.
-    pub category: &'a str,
+    /// `miscObjectCategory` of a MiscObject; `None` for an ExternalObjectReference
+    /// (classified `TYPE_OTHER`, source_reference entity type `ExternalObjectReference`).
+    pub category: Option<&'a str>,
     /// URI or path of the scenario file.
     pub scenario_file: Option<&'a str>,
     /// `model3d` attribute.
@@ -153,6 +177,11 @@ pub fn stationary_object(
     info: &MiscObjectInfo<'_>,
     lanes: &[Identifier],
 ) -> Result<StationaryObject, Error> {
+    check_box(info.position, info.dimension)?;
+    let (classification, entity_type) = match info.category {
+        Some(category) => (stationary_type(category)?, "MiscObject"),
+        None => (StationaryType::Other, "ExternalObjectReference"),
+    };
     let [x, y, z] = info.position;
     let [yaw, pitch, roll] = info.orientation;
     let [length, width, height] = info.dimension;
@@ -177,16 +206,94 @@ pub fn stationary_object(
             ..Default::default()
         }),
         classification: Some(StationaryClassification {
-            r#type: Some(stationary_type(info.category)? as i32),
+            r#type: Some(classification as i32),
             assigned_lane_id: lanes.to_vec(),
             ..Default::default()
         }),
         model_reference: info.model3d.map(str::to_string),
-        source_reference: vec![source_reference(
-            info.scenario_file,
-            "MiscObject",
-            info.name,
-        )],
+        source_reference: vec![source_reference(info.scenario_file, entity_type, info.name)],
         color_description: info.color,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn car() -> EntityInfo<'static> {
+        EntityInfo {
+            name: "Ego",
+            kind: EntityKind::Vehicle { category: "car" },
+            scenario_file: Some("s.xosc"),
+            model3d: None,
+            color: None,
+            trailer: Some("Trailer"),
+        }
+    }
+
+    #[test]
+    fn flat_or_nan_boxes_are_refused() {
+        let mut ids = IdAllocator::new();
+        let flat = RigidBodyState {
+            dimension: [4.5, 1.8, 0.0],
+            ..Default::default()
+        };
+        let err = moving_object(&mut ids, &car(), &flat, &[]).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "expected the bounding box dimension to be three positive finite numbers \
+             (length, width, height), found \"[4.5, 1.8, 0.0]\""
+        );
+        let nan = RigidBodyState {
+            reference_point: [f64::NAN, 0.0, 0.0],
+            dimension: [4.5, 1.8, 1.5],
+            ..Default::default()
+        };
+        assert!(moving_object(&mut ids, &car(), &nan, &[]).is_err());
+    }
+
+    #[test]
+    fn trailer_gets_its_own_stable_id() {
+        let mut ids = IdAllocator::new();
+        let state = RigidBodyState {
+            dimension: [4.5, 1.8, 1.5],
+            ..Default::default()
+        };
+        let ego = moving_object(&mut ids, &car(), &state, &[]).unwrap();
+        let class = ego.vehicle_classification.unwrap();
+        assert_eq!(class.has_trailer, Some(true));
+        // Ego got id 1, its trailer 2; the trailer keeps 2 when it is written itself.
+        assert_eq!(ego.id.unwrap().value, Some(1));
+        assert_eq!(class.trailer_id.unwrap().value, Some(2));
+        assert_eq!(
+            ids.get(&IdKey::MovingObject("Trailer".into()))
+                .unwrap()
+                .value,
+            Some(2)
+        );
+    }
+
+    #[test]
+    fn external_object_reference_is_a_stationary_other() {
+        let mut ids = IdAllocator::new();
+        let info = MiscObjectInfo {
+            name: "Bridge",
+            category: None,
+            scenario_file: None,
+            model3d: None,
+            color: None,
+            position: [0.0, 0.0, 5.0],
+            orientation: [0.0; 3],
+            dimension: [10.0, 20.0, 1.0],
+        };
+        let o = stationary_object(&mut ids, &info, &[]).unwrap();
+        assert_eq!(
+            o.classification.unwrap().r#type,
+            Some(StationaryType::Other as i32)
+        );
+        assert_eq!(
+            o.source_reference[0].identifier,
+            vec!["ExternalObjectReference".to_string(), "Bridge".to_string()]
+        );
+    }
 }

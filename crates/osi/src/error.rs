@@ -50,6 +50,16 @@ pub enum ErrorKind {
         /// Encoded length of the message.
         len: usize,
     },
+    /// A frame whose timestamp is not later than the previous frame's (OSI trace readers
+    /// expect strictly increasing time).
+    TimestampNotIncreasing {
+        /// Previous frame's time (ns).
+        previous: u64,
+        /// This frame's time (ns).
+        found: u64,
+    },
+    /// A frame without timestamp.
+    MissingTimestamp,
     /// A frame written after [`crate::trace::TraceWriter::finish`].
     Finished,
     /// A file that is not the OSI trace layout this crate writes or reads.
@@ -132,6 +142,13 @@ impl fmt::Display for Error {
                 f,
                 "expected a message of at most 4294967295 bytes, found {len} bytes for {file}"
             ),
+            ErrorKind::TimestampNotIncreasing { previous, found } => write!(
+                f,
+                "expected a timestamp after {previous} ns, found {found} ns in {file}"
+            ),
+            ErrorKind::MissingTimestamp => {
+                write!(f, "expected a GroundTruth with a timestamp, found none for {file}")
+            }
             ErrorKind::Finished => write!(f, "expected an open trace, found {file} already finished"),
             ErrorKind::NotOsiTrace { expected, found } => {
                 write!(f, "expected {expected}, found {found} in {file}")

@@ -16,14 +16,39 @@
 //!   the OSI file naming convention, and [`trace::TraceFile`] for `--osi PATH`.
 //!
 //! ```
+//! use osi::entity::{EntityInfo, EntityKind};
+//! use osi::ground_truth::{GroundTruthBuilder, StaticData};
+//! use osi::rigid_body::RigidBodyState;
 //! use osi::trace::{read_osi_bytes, OsiFileWriter, TraceWriter};
-//! let mut gt = osi::osi3::GroundTruth::default();
-//! gt.version = Some(osi::version::interface_version());
+//!
+//! let mut builder = GroundTruthBuilder::new(StaticData::First);
 //! let mut writer = OsiFileWriter::new(Vec::new(), "mem.osi".as_ref());
-//! writer.write(&gt)?;
+//! let ego = EntityInfo {
+//!     name: "Ego",
+//!     kind: EntityKind::Vehicle { category: "car" },
+//!     scenario_file: Some("cut-in.xosc"),
+//!     model3d: None,
+//!     color: None,
+//!     trailer: None,
+//! };
+//! for step in 0..3u64 {
+//!     let state = RigidBodyState {
+//!         reference_point: [20.0 * 0.05 * step as f64, 0.0, 0.0],
+//!         velocity: [20.0, 0.0, 0.0],
+//!         bbox_centre: [1.4, 0.0, 0.75],
+//!         dimension: [4.5, 1.8, 1.5],
+//!         ..Default::default()
+//!     };
+//!     let mut frame = builder.begin_frame(step * 50_000_000);
+//!     frame.add_entity(&ego, &state, &[])?;
+//!     writer.write(&frame.finish())?;
+//! }
 //! let bytes = writer.into_inner()?.unwrap_or_default();
 //! let back = read_osi_bytes(&bytes, "mem.osi".as_ref())?;
-//! assert_eq!(back, vec![gt]);
+//! // Step 2: reference point at x = 2 m, bounding-box centre 1.4 m ahead of it.
+//! let x = back[2].moving_object[0].base.as_ref().and_then(|b| b.position?.x);
+//! assert!((x.unwrap() - 3.4).abs() < 1e-12);
+//! assert_eq!(back[2].host_vehicle_id, back[2].moving_object[0].id);
 //! # Ok::<(), osi::Error>(())
 //! ```
 #![forbid(unsafe_code)]

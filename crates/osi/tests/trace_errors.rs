@@ -74,3 +74,60 @@ fn missing_file_names_the_path() {
         "{err}"
     );
 }
+
+#[test]
+fn time_must_increase_and_be_set() {
+    let frames = common::frames(3, 1);
+    let mut writer = OsiFileWriter::new(Vec::new(), Path::new("e.osi"));
+    writer.write(&frames[1]).unwrap();
+    // Frame 0 (t = 0) after frame 1 (t = 50 ms).
+    let err = writer.write(&frames[0]).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "expected a timestamp after 50000000 ns, found 0 ns in e.osi"
+    );
+    // The same time again is not later either.
+    assert!(writer.write(&frames[1]).is_err());
+    writer.write(&frames[2]).unwrap();
+    let mut no_time = frames[2].clone();
+    no_time.timestamp = None;
+    let err = writer.write(&no_time).unwrap_err();
+    assert!(matches!(err.kind(), ErrorKind::MissingTimestamp));
+    // Only the two good frames are in the trace.
+    let bytes = writer.into_inner().unwrap().unwrap();
+    let back = read_osi_bytes(&bytes, Path::new("e.osi")).unwrap();
+    assert_eq!(back, vec![frames[1].clone(), frames[2].clone()]);
+}
+
+#[test]
+fn truncated_mcap_never_panics() {
+    let dir = common::temp_dir("truncated-mcap");
+    let path = dir.join("t.mcap");
+    let mut writer =
+        osi::trace::McapTraceWriter::create(&path, &osi::trace::McapTraceInfo::default()).unwrap();
+    for gt in &common::frames(5, 2) {
+        writer.write(gt).unwrap();
+    }
+    writer.finish().unwrap();
+    let bytes = std::fs::read(&path).unwrap();
+    // Every cut of the file is rejected with an error, none read as a full trace.
+    for cut in (0..bytes.len()).step_by(97) {
+        let result = read_mcap_bytes(&bytes[..cut], Path::new("t.mcap"));
+        assert!(result.is_err(), "cut at {cut} read as a trace");
+    }
+    assert_eq!(
+        read_mcap_bytes(&bytes, Path::new("t.mcap"))
+            .unwrap()
+            .frames
+            .len(),
+        5
+    );
+}
+
+proptest::proptest! {
+    #[test]
+    fn random_bytes_never_panic(bytes in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..512)) {
+        let _ = read_osi_bytes(&bytes, Path::new("r.osi"));
+        let _ = read_mcap_bytes(&bytes, Path::new("r.mcap"));
+    }
+}

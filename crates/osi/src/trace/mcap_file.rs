@@ -22,7 +22,7 @@ use prost::Message;
 use crate::error::{Error, ErrorKind};
 use crate::osi3::GroundTruth;
 use crate::schema::{GROUND_TRUTH_FILE_DESCRIPTOR_SET, GROUND_TRUTH_SCHEMA_NAME};
-use crate::trace::writer::{timestamp_nanos, TraceWriter};
+use crate::trace::writer::{TimeOrder, TraceWriter};
 use crate::version::{OSI_VERSION, PROTOBUF_VERSION};
 
 /// Name of the OSI trace metadata record.
@@ -54,6 +54,7 @@ pub struct McapTraceWriter<W: Write + Seek> {
     channel: u16,
     buf: Vec<u8>,
     frames: u64,
+    time: TimeOrder,
 }
 
 impl McapTraceWriter<BufWriter<File>> {
@@ -127,6 +128,7 @@ impl<W: Write + Seek> McapTraceWriter<W> {
             channel,
             buf: Vec::new(),
             frames: 0,
+            time: TimeOrder::default(),
         })
     }
 }
@@ -141,7 +143,7 @@ impl<W: Write + Seek> TraceWriter for McapTraceWriter<W> {
         ground_truth
             .encode(&mut self.buf)
             .expect("encoding into a Vec<u8> never fails");
-        let time = timestamp_nanos(ground_truth);
+        let time = self.time.next(ground_truth, &self.path)?;
         let header = mcap::records::MessageHeader {
             channel_id: self.channel,
             // The MCAP sequence field is 32 bits; a trace longer than that wraps.

@@ -10,7 +10,7 @@ use prost::Message;
 
 use crate::error::{Error, ErrorKind};
 use crate::osi3::GroundTruth;
-use crate::trace::writer::TraceWriter;
+use crate::trace::writer::{TimeOrder, TraceWriter};
 
 /// Writes GroundTruth frames as a `.osi` trace.
 #[derive(Debug)]
@@ -19,6 +19,7 @@ pub struct OsiFileWriter<W: Write> {
     path: PathBuf,
     buf: Vec<u8>,
     frames: u64,
+    time: TimeOrder,
 }
 
 impl OsiFileWriter<BufWriter<File>> {
@@ -37,6 +38,7 @@ impl<W: Write> OsiFileWriter<W> {
             path: path.to_path_buf(),
             buf: Vec::new(),
             frames: 0,
+            time: TimeOrder::default(),
         }
     }
 
@@ -55,6 +57,7 @@ impl<W: Write> TraceWriter for OsiFileWriter<W> {
         let Some(out) = self.out.as_mut() else {
             return Err(Error::in_file(ErrorKind::Finished, &self.path));
         };
+        self.time.next(ground_truth, &self.path)?;
         // Room for the prefix first, then the message; the prefix is filled in after, so
         // the message's length is computed only once (by `encode`).
         self.buf.clear();

@@ -173,7 +173,7 @@ pub fn frame(ids: &mut IdAllocator, k: usize, vehicles: usize, with_lanes: bool)
         .push(moving_object(ids, &walker_info("sample.xosc"), &walker, &[]).expect("valid sample"));
     let obstacle = MiscObjectInfo {
         name: "Obstacle",
-        category: "obstacle",
+        category: Some("obstacle"),
         scenario_file: Some("sample.xosc"),
         model3d: None,
         color: None,
