@@ -8,8 +8,8 @@
 //! 1. `init_phase` (first step only): the Init actions start; those the runtime reports ended
 //!    at once (instantaneous actions) end; the others keep running (§8.5.1). Then the
 //!    storyboard starts and, recursively, every child without a start trigger (§8.3); children
-//!    with one enter standby. So Init actions have taken effect, and the instantaneous ones are
-//!    complete, before any story trigger is evaluated.
+//!    with one, and all Events (§8.4.2), enter standby. So Init actions have taken effect, and
+//!    the instantaneous ones are complete, before any story trigger is evaluated.
 //! 2. `stop_triggers`: the storyboard's stop trigger, then those of the running Acts in document
 //!    order; a firing one stops the element and its executing descendants.
 //! 3. `start_triggers`: a top-down walk of the running elements. Each standby child is handled
