@@ -3,6 +3,7 @@
 //! Exit status: 0 on success, 1 when the input is invalid or a run fails, 2 on a usage error.
 
 mod road;
+mod run;
 mod validate;
 
 use std::process::ExitCode;
@@ -24,6 +25,8 @@ enum Command {
     Road(road::RoadArgs),
     /// Load scenarios with their road networks and catalogs and report errors.
     Validate(validate::ValidateArgs),
+    /// Run a scenario headless and write trajectories and the event log.
+    Run(run::RunArgs),
 }
 
 fn main() -> ExitCode {
@@ -31,6 +34,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Road(args) => road::run(args),
         Command::Validate(args) => validate::run(args),
+        Command::Run(args) => run::run(args),
     };
     match result {
         Ok(code) => code,

@@ -1,14 +1,27 @@
 //! The oscsim runtime: entity state, storyboard, actions, conditions, controllers and the
 //! physical-object domain model of OpenSCENARIO 2.0 §8.7.
 //!
+//! [`Engine::build`] turns a loaded [`scenario::Scenario`] and its road network into a runnable
+//! engine; [`Engine::step`] advances it by one fixed step and pushes a [`Frame`] to a
+//! [`FrameSink`] and the step's [`EventRecord`]s to an [`EventSink`].
+//!
 //! | module | implements |
 //! | --- | --- |
 //! | `domain` | OpenSCENARIO 2.0 §8.7 physical-object actors and their measurement methods |
 //! | `storyboard` | OpenSCENARIO 1.3 §7.2.1 / §8.3–8.4 storyboard state machine and triggers |
+//! | `position` | OpenSCENARIO 1.3 §7.4 positions resolved to world poses and road positions |
+//! | `condition` | OpenSCENARIO 1.3 §7.6 condition evaluation |
+//! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: world, entities, actions, controllers, the step |
+//! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
 pub mod condition;
 pub mod domain;
+pub mod output;
 pub mod position;
+pub mod runtime;
 pub mod storyboard;
+
+pub use output::{EventRecord, EventSink, Frame, FrameSink};
+pub use runtime::{Engine, EngineConfig, EntityId, RuntimeError, RuntimeErrorKind, StopReason};

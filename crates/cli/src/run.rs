@@ -1,0 +1,152 @@
+//! `oscsim run SCENARIO.xosc`: run a scenario headless with a fixed step and write the
+//! trajectory CSV (`--csv`) and the event log (`--events`, JSON lines). A progress bar shows on
+//! a terminal; a summary line ends the run (simulated time, steps, wall time, why it stopped).
+//!
+//! Without `--duration` the run ends at the storyboard's stop trigger, or when every story has
+//! completed and there is no stop trigger; `--max-time` (default 3600 s) caps every run.
+
+use std::fs::File;
+use std::io::{BufWriter, IsTerminal};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use anyhow::Context;
+use engine::output::{CsvWriter, JsonlWriter};
+use engine::{Engine, EngineConfig, EventRecord, EventSink, FrameSink};
+
+/// Arguments of `oscsim run`.
+#[derive(clap::Args, Debug)]
+#[command(
+    after_help = "Exit status: 0 when the run completes, 1 when loading or running fails, 2 on a usage error."
+)]
+pub struct RunArgs {
+    /// The scenario (.xosc).
+    scenario: PathBuf,
+    /// Step length in seconds.
+    #[arg(long, default_value_t = engine::runtime::DEFAULT_DT)]
+    dt: f64,
+    /// Simulated seconds to run (default: until the storyboard ends).
+    #[arg(long)]
+    duration: Option<f64>,
+    /// Hard cap on simulated seconds.
+    #[arg(long, default_value_t = engine::runtime::DEFAULT_MAX_TIME)]
+    max_time: f64,
+    /// Override a global parameter, NAME=VALUE (repeatable).
+    #[arg(long = "param", value_name = "NAME=VALUE", value_parser = name_value)]
+    params: Vec<(String, String)>,
+    /// Write trajectories here (long CSV: time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,speed).
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+    /// Write the event log here (JSON lines, one storyboard transition per line).
+    #[arg(long, value_name = "FILE.jsonl")]
+    events: Option<PathBuf>,
+    /// Do not show the progress bar.
+    #[arg(long)]
+    quiet: bool,
+}
+
+/// Splits `NAME=VALUE` (a leading `$` on the name is dropped).
+fn name_value(text: &str) -> Result<(String, String), String> {
+    text.split_once('=')
+        .filter(|(n, _)| !n.trim().is_empty())
+        .map(|(n, v)| (n.trim().trim_start_matches('$').to_owned(), v.to_owned()))
+        .ok_or_else(|| format!("expected NAME=VALUE, found '{text}'"))
+}
+
+/// Creates `path` (and its parent folder) for writing.
+fn create(path: &PathBuf) -> anyhow::Result<BufWriter<File>> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)
+            .with_context(|| format!("cannot create folder {}", dir.display()))?;
+    }
+    let file = File::create(path).with_context(|| format!("cannot create {}", path.display()))?;
+    Ok(BufWriter::new(file))
+}
+
+/// Event sink that forwards to an optional writer and counts records.
+struct Events {
+    out: Option<JsonlWriter<BufWriter<File>>>,
+    count: usize,
+}
+
+impl EventSink for Events {
+    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+        self.count += 1;
+        if let EventRecord::Error { message, .. } = record {
+            eprintln!("error: {message}");
+        }
+        self.out.as_mut().map_or(Ok(()), |o| o.event(record))
+    }
+
+    fn finish(&mut self) -> std::io::Result<()> {
+        self.out.as_mut().map_or(Ok(()), |o| o.finish())
+    }
+}
+
+/// Runs `oscsim run`.
+pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
+    let config = EngineConfig {
+        dt: args.dt,
+        duration: args.duration,
+        max_time: args.max_time,
+    };
+    let wall = Instant::now();
+    let mut engine = Engine::load(&args.scenario, &args.params, config)
+        .with_context(|| format!("cannot run {}", args.scenario.display()))?;
+    let mut frames: Vec<Box<dyn FrameSink>> = Vec::new();
+    if let Some(path) = &args.csv {
+        frames.push(Box::new(CsvWriter::new(create(path)?)));
+    }
+    let mut events = Events {
+        out: args
+            .events
+            .as_ref()
+            .map(create)
+            .transpose()?
+            .map(JsonlWriter::new),
+        count: 0,
+    };
+    let end = config.end_time();
+    let bar = (!args.quiet && std::io::stderr().is_terminal()).then(|| {
+        let bar = indicatif::ProgressBar::new((end * 1000.0) as u64);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {msg}")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let reason = loop {
+        let step = engine.step(&mut frames, &mut events).with_context(|| {
+            format!(
+                "run of {} failed at t = {:.3} s",
+                args.scenario.display(),
+                engine.time()
+            )
+        })?;
+        if let Some(bar) = &bar {
+            if engine.steps() % 20 == 0 {
+                bar.set_position((engine.time() * 1000.0) as u64);
+                bar.set_message(format!("t = {:.1} s", engine.time()));
+            }
+        }
+        if let Some(reason) = step {
+            break reason;
+        }
+    };
+    frames.finish().context("cannot write the CSV")?;
+    events.finish().context("cannot write the event log")?;
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    println!(
+        "{}: simulated {:.3} s in {} steps ({} events), wall time {:.3} s; stopped because {}",
+        args.scenario.display(),
+        engine.time(),
+        engine.steps(),
+        events.count,
+        wall.elapsed().as_secs_f64(),
+        reason
+    );
+    Ok(ExitCode::SUCCESS)
+}

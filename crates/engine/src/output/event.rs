@@ -1,0 +1,98 @@
+//! Records of the event log: every storyboard state transition (OpenSCENARIO 1.3 §8.2), every
+//! CustomCommandAction (§7.7.3), actions and features skipped as unsupported, and errors.
+
+use scenario::SourcePos;
+
+use crate::runtime::RuntimeError;
+use crate::storyboard::TransitionRecord;
+
+/// One record of the event log.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum EventRecord {
+    /// A storyboard element changed state.
+    Transition(TransitionRecord),
+    /// A CustomCommandAction ran.
+    CustomCommand {
+        /// Simulation time (s).
+        time: f64,
+        /// The action's name.
+        element: String,
+        /// `type`.
+        command_type: String,
+        /// `content`.
+        content: String,
+    },
+    /// An action or feature oscsim does not support was skipped (the action ended at once).
+    Unsupported {
+        /// Simulation time (s).
+        time: f64,
+        /// The action's name.
+        element: String,
+        /// What was skipped and where, e.g. "SynchronizeAction at x.xosc:10:5".
+        message: String,
+    },
+    /// An action failed; the run stops with this error.
+    Error {
+        /// Simulation time (s).
+        time: f64,
+        /// The action's name.
+        element: String,
+        /// The error's message.
+        message: String,
+    },
+}
+
+impl EventRecord {
+    pub(crate) fn unsupported(time: f64, element: &str, what: &str, pos: &SourcePos) -> Self {
+        EventRecord::Unsupported {
+            time,
+            element: element.to_owned(),
+            message: format!("{what} is not supported at {pos}"),
+        }
+    }
+
+    pub(crate) fn error(time: f64, element: &str, error: &RuntimeError) -> Self {
+        EventRecord::Error {
+            time,
+            element: element.to_owned(),
+            message: error.to_string(),
+        }
+    }
+
+    /// Simulation time of the record (s).
+    pub fn time(&self) -> f64 {
+        match self {
+            EventRecord::Transition(t) => t.time,
+            EventRecord::CustomCommand { time, .. }
+            | EventRecord::Unsupported { time, .. }
+            | EventRecord::Error { time, .. } => *time,
+        }
+    }
+}
+
+/// Receives the event records of each step, in the order they happened.
+pub trait EventSink {
+    /// Takes one record. An error ends the run.
+    fn event(&mut self, record: &EventRecord) -> std::io::Result<()>;
+
+    /// Called once after the last record.
+    fn finish(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// Discards records.
+impl EventSink for () {
+    fn event(&mut self, _record: &EventRecord) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// Collects records (tests).
+impl EventSink for Vec<EventRecord> {
+    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+        self.push(record.clone());
+        Ok(())
+    }
+}

@@ -1,0 +1,121 @@
+//! The per-step snapshot of every entity and the seam that receives it.
+//!
+//! A [`Frame`] borrows the world's entity store: nothing is copied per step. An
+//! [`EntityFrame`] carries what an OSI GroundTruth needs (ASAM OSI 3.x `MovingObject` /
+//! `StationaryObject`): name, kind, the pose of the reference point (OpenSCENARIO: rear-axle
+//! centre on the ground; OSI's base.position is the bounding-box centre, the box centre is given
+//! relative to the reference point so the OSI side can convert), bounding box, velocity,
+//! acceleration, yaw rate, road and lane position, vehicle category, colour and model3d.
+
+use opendrive::{Pose, Real, RoadPosition};
+use scenario::VehicleCategory;
+
+use crate::domain::{BoundingBox, Color, Vector3};
+use crate::runtime::{Entity, EntityKind};
+
+/// The state of every entity at one simulation time.
+#[derive(Debug, Clone, Copy)]
+pub struct Frame<'a> {
+    /// Simulation time (s).
+    pub time: f64,
+    /// Index of the step that produced the frame (the initial frame is 0).
+    pub step: u64,
+    /// The entities in declaration order.
+    pub entities: &'a [Entity],
+}
+
+impl<'a> Frame<'a> {
+    /// The snapshot of each placed entity, in declaration order.
+    pub fn objects(&self) -> impl Iterator<Item = EntityFrame<'a>> + 'a {
+        self.entities
+            .iter()
+            .filter(|e| e.placed)
+            .map(EntityFrame::of)
+    }
+}
+
+/// One entity in a frame.
+#[derive(Debug, Clone, Copy)]
+pub struct EntityFrame<'a> {
+    /// Index in declaration order (stable through the run).
+    pub id: u32,
+    /// Name.
+    pub name: &'a str,
+    /// Vehicle, pedestrian, misc object or external object.
+    pub kind: EntityKind,
+    /// Pose of the reference point (world frame).
+    pub pose: Pose,
+    /// Bounding box, centre relative to the reference point.
+    pub bounding_box: BoundingBox,
+    /// Velocity in world axes (m/s).
+    pub velocity: Vector3,
+    /// Acceleration in world axes (m/s²).
+    pub acceleration: Vector3,
+    /// Yaw rate (rad/s).
+    pub yaw_rate: Real,
+    /// Signed speed (m/s).
+    pub speed: Real,
+    /// Road and lane position, if on a road.
+    pub road_position: Option<&'a RoadPosition>,
+    /// Vehicle category (vehicles only).
+    pub vehicle_category: Option<VehicleCategory>,
+    /// Colour, if known.
+    pub color: Option<Color>,
+    /// `model3d`, if given.
+    pub model3d: Option<&'a str>,
+    /// Visible to sensors (VisibilityAction).
+    pub visible_to_sensors: bool,
+}
+
+impl<'a> EntityFrame<'a> {
+    /// The snapshot of `e`.
+    pub fn of(e: &'a Entity) -> Self {
+        let (c, s) = (e.pose.h.cos(), e.pose.h.sin());
+        let to_world = |v: Vector3| Vector3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z);
+        EntityFrame {
+            id: e.id.0,
+            name: &e.name,
+            kind: e.kind,
+            pose: e.pose,
+            bounding_box: e.bounding_box,
+            velocity: to_world(e.velocity.translational),
+            acceleration: to_world(e.acceleration.translational),
+            yaw_rate: e.velocity.rotational.z,
+            speed: e.speed,
+            road_position: e.road_position.as_ref(),
+            vehicle_category: e.vehicle_category,
+            color: e.color,
+            model3d: e.model3d.as_deref(),
+            visible_to_sensors: e.visibility.sensors,
+        }
+    }
+}
+
+/// Receives one frame per step (the initial state, then after each step's movement).
+pub trait FrameSink {
+    /// Takes a frame. An error ends the run.
+    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()>;
+
+    /// Called once after the last frame (flush files, close streams).
+    fn finish(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// Discards frames.
+impl FrameSink for () {
+    fn frame(&mut self, _frame: &Frame<'_>) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// Feeds every sink of the list, in order.
+impl FrameSink for Vec<Box<dyn FrameSink>> {
+    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+        self.iter_mut().try_for_each(|s| s.frame(frame))
+    }
+
+    fn finish(&mut self) -> std::io::Result<()> {
+        self.iter_mut().try_for_each(|s| s.finish())
+    }
+}

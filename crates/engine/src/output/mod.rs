@@ -1,0 +1,20 @@
+//! Output of a run: the per-step [`Frame`] pushed to a [`FrameSink`] (the trajectory CSV, or
+//! the OSI writer the cli feeds), and the [`EventRecord`]s pushed to an [`EventSink`] (the
+//! JSON-lines event log).
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `frame` | the per-step snapshot of every entity and the `FrameSink` seam |
+//! | `event` | event records (storyboard transitions, custom commands, errors) and `EventSink` |
+//! | `csv` | the long-layout trajectory CSV |
+//! | `jsonl` | the JSON-lines event log |
+
+mod csv;
+mod event;
+mod frame;
+mod jsonl;
+
+pub use csv::CsvWriter;
+pub use event::{EventRecord, EventSink};
+pub use frame::{EntityFrame, Frame, FrameSink};
+pub use jsonl::JsonlWriter;

@@ -1,0 +1,87 @@
+//! LaneOffsetAction (OpenSCENARIO 1.3 §7.7.2.2, XSD `LaneOffsetAction`): move the actor to an
+//! offset from its lane's centre (absolute, or relative to a reference entity's offset) with a
+//! shape whose duration follows from `maxLateralAcc`.
+//!
+//! The peak lateral acceleration of a change Δ over duration T is Δ·π²/(2T²) for sinusoidal
+//! and 6Δ/T² for cubic, so T = π·√(Δ/(2a)) and T = √(6Δ/a). A linear change has unbounded
+//! acceleration at its ends; oscsim gives it T = 2·√(Δ/a), the time of an accelerate-brake
+//! manoeuvre at a. Without `maxLateralAcc` a = 0.5 m/s² (a gentle, comfortable value).
+//! `continuous="true"` keeps the action running (holding the offset) until it is replaced.
+
+use scenario::{
+    DynamicsDimension, DynamicsShape, LaneOffsetTarget, LateralAction, SourcePos,
+    TransitionDynamics,
+};
+
+use super::lane_change::begin;
+use super::speed::entity_ref;
+use super::Part;
+use crate::runtime::entity::EntityId;
+use crate::runtime::error::RuntimeError;
+use crate::runtime::world::World;
+
+/// Lateral acceleration (m/s²) when the action gives none.
+const DEFAULT_MAX_LATERAL_ACC: f64 = 0.5;
+
+/// Starts the action.
+pub(crate) fn start(
+    world: &mut World,
+    actor: EntityId,
+    action: &LateralAction,
+    now: f64,
+    pos: &SourcePos,
+) -> Result<Part, RuntimeError> {
+    let LateralAction::LaneOffset {
+        continuous,
+        dynamics_shape,
+        max_lateral_acc,
+        target,
+    } = action
+    else {
+        return Err(RuntimeError::unsupported("this LateralAction", pos));
+    };
+    let offset = match target {
+        LaneOffsetTarget::Absolute(v) => *v,
+        LaneOffsetTarget::Relative {
+            entity_ref: name,
+            value,
+        } => {
+            let r = world.entity(entity_ref(world, name, pos)?);
+            r.road_position.as_ref().map_or(0.0, |rp| rp.offset) + value
+        }
+        _ => return Err(RuntimeError::unsupported("this LaneOffsetTarget", pos)),
+    };
+    let e = world.entity(actor);
+    let Some(track) = &e.track else {
+        return Err(RuntimeError::at(
+            "an actor on a lane",
+            format!("'{}' off the road", e.name),
+            pos,
+        ));
+    };
+    let lane = e
+        .road_position
+        .as_ref()
+        .map_or(track.lane_id, |rp| rp.lane_id);
+    let current = e
+        .road_position
+        .as_ref()
+        .map_or(track.offset, |rp| rp.offset);
+    let a = max_lateral_acc
+        .filter(|a| *a > 0.0)
+        .unwrap_or(DEFAULT_MAX_LATERAL_ACC);
+    let delta = (offset - current).abs();
+    let duration = match dynamics_shape {
+        DynamicsShape::Sinusoidal => std::f64::consts::PI * (delta / (2.0 * a)).sqrt(),
+        DynamicsShape::Cubic => (6.0 * delta / a).sqrt(),
+        DynamicsShape::Linear => 2.0 * (delta / a).sqrt(),
+        _ => 0.0,
+    };
+    let dynamics = TransitionDynamics {
+        dynamics_shape: *dynamics_shape,
+        dynamics_dimension: DynamicsDimension::Time,
+        value: duration,
+        following_mode: None,
+    };
+    begin(world, actor, lane, offset, &dynamics, now, *continuous, pos)
+}

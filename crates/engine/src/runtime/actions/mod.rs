@@ -1,0 +1,356 @@
+//! Actions at runtime (OpenSCENARIO 1.3 §7.7 "Actions", §8.4.1 action execution): the table
+//! of every action of the storyboard, the [`ActionHost`] the storyboard drives, and one file
+//! per action kind.
+//!
+//! Each private action runs once per actor. An instantaneous action (TeleportAction, a
+//! SpeedAction with `step` shape, the global actions) takes effect in `start` and reports
+//! ended; the others keep a per-actor [`Part`] that stage 2 of the step advances. A new action
+//! in the control domain (longitudinal, lateral) of an actor stops the one running there
+//! (§7.5.1, semantics-pitfalls #7).
+
+mod controller;
+mod custom;
+mod distance;
+mod lane_change;
+mod lane_offset;
+mod parameter;
+mod speed;
+mod speed_profile;
+mod teleport;
+mod variable;
+mod visibility;
+
+use scenario::{
+    Action, ActionKind, GlobalAction, LateralAction, LongitudinalAction, PrivateAction,
+};
+
+use super::entity::EntityId;
+use super::error::RuntimeError;
+use super::world::World;
+use crate::output::EventRecord;
+use crate::storyboard::{ActionId, ActionStatus};
+
+/// The control domain an action occupies on its actor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Domain {
+    Longitudinal,
+    Lateral,
+}
+
+/// The running state of one action on one actor.
+#[derive(Debug, Clone)]
+pub(crate) enum Part {
+    Speed(speed::SpeedState),
+    Profile(speed_profile::ProfileState),
+    Lateral(lane_change::LateralState),
+    LongitudinalDistance(distance::LongitudinalState),
+    LateralDistance(distance::LateralState),
+    Done(ActionStatus),
+}
+
+impl Part {
+    fn status(&self) -> ActionStatus {
+        match self {
+            Part::Done(s) => *s,
+            _ => ActionStatus::Running,
+        }
+    }
+}
+
+/// One action of the storyboard with its actors and per-actor state.
+#[derive(Debug, Clone)]
+pub(crate) struct ActionSlot {
+    /// The name used in logs.
+    pub name: String,
+    /// The model.
+    pub action: Action,
+    /// The entities it acts on (private actions), in order.
+    pub actors: Vec<EntityId>,
+    /// Per actor, once started.
+    pub parts: Vec<Part>,
+    /// Simulation time of the start.
+    pub started_at: f64,
+}
+
+/// Every action of the storyboard, indexed by [`ActionId`].
+#[derive(Debug, Clone, Default)]
+pub(crate) struct ActionTable {
+    pub slots: Vec<ActionSlot>,
+}
+
+impl ActionTable {
+    /// Adds an action, returning its id.
+    pub fn push(&mut self, name: String, action: Action, actors: Vec<EntityId>) -> ActionId {
+        self.slots.push(ActionSlot {
+            name,
+            action,
+            actors,
+            parts: Vec::new(),
+            started_at: 0.0,
+        });
+        ActionId(self.slots.len() as u32 - 1)
+    }
+
+    /// Stage 2: advances every running part by one step from `now` over `dt`.
+    pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) {
+        for (index, slot) in self.slots.iter_mut().enumerate() {
+            let id = ActionId(index as u32);
+            for (i, part) in slot.parts.iter_mut().enumerate() {
+                let actor = slot.actors[i];
+                let next = match part {
+                    Part::Done(_) => continue,
+                    Part::Speed(s) => speed::step(world, actor, s, now, dt),
+                    Part::Profile(s) => speed_profile::step(world, actor, s, now, dt),
+                    Part::Lateral(s) => lane_change::step(world, actor, s, now, dt),
+                    Part::LongitudinalDistance(s) => {
+                        distance::step_longitudinal(world, actor, s, dt)
+                    }
+                    Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
+                };
+                if next != ActionStatus::Running {
+                    release(world, actor, id);
+                    *part = Part::Done(next);
+                }
+            }
+        }
+    }
+}
+
+/// Frees the control domains `actor` gave to action `id`.
+fn release(world: &mut World, actor: EntityId, id: ActionId) {
+    let e = world.entity_mut(actor);
+    if e.longitudinal_action == Some(id) {
+        e.longitudinal_action = None;
+    }
+    if e.lateral_action == Some(id) {
+        e.lateral_action = None;
+    }
+}
+
+/// The storyboard's [`ActionHost`] over the table and the world for one step.
+pub(crate) struct Host<'a> {
+    pub table: &'a mut ActionTable,
+    pub world: &'a mut World,
+    pub events: &'a mut Vec<EventRecord>,
+    pub errors: &'a mut Vec<RuntimeError>,
+    pub time: f64,
+}
+
+impl Host<'_> {
+    /// Claims `domain` of `actor` for `id`, stopping the action that held it.
+    fn claim(&mut self, actor: EntityId, domain: Domain, id: ActionId) {
+        let e = self.world.entity_mut(actor);
+        let held = match domain {
+            Domain::Longitudinal => e.longitudinal_action.replace(id),
+            Domain::Lateral => e.lateral_action.replace(id),
+        };
+        if let Some(old) = held.filter(|&old| old != id) {
+            if let Some(slot) = self.table.slots.get_mut(old.0 as usize) {
+                for (i, part) in slot.parts.iter_mut().enumerate() {
+                    if slot.actors[i] == actor && part.status() == ActionStatus::Running {
+                        if domain == Domain::Lateral {
+                            lane_change::abandon(self.world, actor);
+                        }
+                        *part = Part::Done(ActionStatus::Stopped);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Starts a private action on one actor.
+    fn start_private(
+        &mut self,
+        id: ActionId,
+        action: &PrivateAction,
+        actor: EntityId,
+    ) -> Result<Part, RuntimeError> {
+        let pos = &self.table.slots[id.0 as usize].action.pos.clone();
+        let time = self.time;
+        match action {
+            PrivateAction::Teleport(position) => {
+                teleport::start(self.world, actor, position)?;
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+            PrivateAction::Longitudinal(l) => {
+                self.claim(actor, Domain::Longitudinal, id);
+                match l {
+                    LongitudinalAction::Speed { dynamics, target } => {
+                        speed::start(self.world, actor, dynamics, target, time, pos)
+                    }
+                    LongitudinalAction::SpeedProfile { .. } => {
+                        speed_profile::start(self.world, actor, l, time, pos)
+                    }
+                    LongitudinalAction::LongitudinalDistance { .. } => {
+                        distance::start_longitudinal(self.world, actor, l, pos)
+                    }
+                    _ => Err(RuntimeError::unsupported("this LongitudinalAction", pos)),
+                }
+            }
+            PrivateAction::Lateral(l) => {
+                self.claim(actor, Domain::Lateral, id);
+                match l {
+                    LateralAction::LaneChange { .. } => {
+                        lane_change::start(self.world, actor, l, time, pos)
+                    }
+                    LateralAction::LaneOffset { .. } => {
+                        lane_offset::start(self.world, actor, l, time, pos)
+                    }
+                    LateralAction::LateralDistance { .. } => {
+                        distance::start_lateral(self.world, actor, l, pos)
+                    }
+                    _ => Err(RuntimeError::unsupported("this LateralAction", pos)),
+                }
+            }
+            PrivateAction::Visibility(v) => {
+                visibility::start(self.world, actor, v);
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+            PrivateAction::Controller(c) => {
+                let name = self.table.slots[id.0 as usize].name.clone();
+                controller::start(c, &name, pos, time, self.events)?;
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+            other => {
+                let name = self.table.slots[id.0 as usize].name.clone();
+                self.events
+                    .push(EventRecord::unsupported(time, &name, kind_name(other), pos));
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+        }
+    }
+
+    fn start_global(&mut self, id: ActionId, action: &GlobalAction) -> Result<(), RuntimeError> {
+        let slot = &self.table.slots[id.0 as usize];
+        let (pos, name) = (slot.action.pos.clone(), slot.name.clone());
+        match action {
+            GlobalAction::Parameter {
+                parameter_ref,
+                rule,
+            } => parameter::apply(self.world, parameter_ref, rule, &pos),
+            GlobalAction::Variable { variable_ref, rule } => {
+                variable::apply(self.world, variable_ref, rule, &pos)
+            }
+            GlobalAction::TrafficSignal(scenario::TrafficSignalAction::State { name, state }) => {
+                self.world.signals.insert(name.clone(), state.clone());
+                Ok(())
+            }
+            GlobalAction::TrafficSignal(scenario::TrafficSignalAction::Controller {
+                traffic_signal_controller_ref,
+                phase,
+            }) => {
+                self.world
+                    .signal_phases
+                    .insert(traffic_signal_controller_ref.clone(), phase.clone());
+                Ok(())
+            }
+            _ => {
+                self.events.push(EventRecord::unsupported(
+                    self.time,
+                    &name,
+                    "this GlobalAction",
+                    &pos,
+                ));
+                Ok(())
+            }
+        }
+    }
+
+    fn try_start(&mut self, id: ActionId) -> Result<(), RuntimeError> {
+        let slot = &mut self.table.slots[id.0 as usize];
+        slot.started_at = self.time;
+        slot.parts.clear();
+        let action = slot.action.clone();
+        let actors = slot.actors.clone();
+        match &action.kind {
+            ActionKind::Private(p) => {
+                let mut parts = Vec::with_capacity(actors.len());
+                for &actor in &actors {
+                    parts.push(self.start_private(id, p, actor)?);
+                }
+                self.table.slots[id.0 as usize].parts = parts;
+            }
+            ActionKind::Global(g) => {
+                self.start_global(id, g)?;
+                self.table.slots[id.0 as usize].parts = vec![Part::Done(ActionStatus::Ended)];
+            }
+            ActionKind::UserDefined(u) => {
+                let name = self.table.slots[id.0 as usize].name.clone();
+                custom::record(u, &name, self.time, self.events);
+                self.table.slots[id.0 as usize].parts = vec![Part::Done(ActionStatus::Ended)];
+            }
+            _ => {
+                let name = self.table.slots[id.0 as usize].name.clone();
+                self.events.push(EventRecord::unsupported(
+                    self.time,
+                    &name,
+                    "this action",
+                    &action.pos,
+                ));
+                self.table.slots[id.0 as usize].parts = vec![Part::Done(ActionStatus::Ended)];
+            }
+        }
+        Ok(())
+    }
+}
+
+fn kind_name(a: &PrivateAction) -> &'static str {
+    match a {
+        PrivateAction::Synchronize(_) => "SynchronizeAction",
+        PrivateAction::Routing(_) => "RoutingAction",
+        PrivateAction::Appearance(_) => "AppearanceAction",
+        PrivateAction::Trailer(_) => "TrailerAction",
+        _ => "this PrivateAction",
+    }
+}
+
+impl Host<'_> {
+    /// Starts action `id` ([`crate::storyboard::ActionHost::start`]); a failure stops it and is
+    /// recorded.
+    pub fn start(&mut self, id: ActionId) {
+        if let Err(e) = self.try_start(id) {
+            let slot = &mut self.table.slots[id.0 as usize];
+            slot.parts = vec![Part::Done(ActionStatus::Stopped)];
+            self.events
+                .push(EventRecord::error(self.time, &slot.name, &e));
+            self.errors.push(e);
+        }
+    }
+
+    /// Stops action `id` on every actor.
+    pub fn stop(&mut self, id: ActionId) {
+        let Some(slot) = self.table.slots.get_mut(id.0 as usize) else {
+            return;
+        };
+        for (i, part) in slot.parts.iter_mut().enumerate() {
+            if part.status() == ActionStatus::Running {
+                let actor = slot.actors[i];
+                let e = self.world.entity_mut(actor);
+                if e.lateral_action == Some(id) {
+                    lane_change::abandon(self.world, actor);
+                }
+                *part = Part::Done(ActionStatus::Stopped);
+            }
+        }
+        for &actor in &slot.actors {
+            release(self.world, actor, id);
+        }
+    }
+}
+
+/// The status of action `id`: running while any actor's part runs, else stopped if any part
+/// was stopped, else ended.
+pub(crate) fn status(table: &ActionTable, id: ActionId) -> ActionStatus {
+    let Some(slot) = table.slots.get(id.0 as usize) else {
+        return ActionStatus::Ended;
+    };
+    let mut status = ActionStatus::Ended;
+    for part in &slot.parts {
+        match part.status() {
+            ActionStatus::Running => return ActionStatus::Running,
+            ActionStatus::Stopped => status = ActionStatus::Stopped,
+            ActionStatus::Ended => {}
+        }
+    }
+    status
+}

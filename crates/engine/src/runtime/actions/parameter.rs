@@ -1,0 +1,73 @@
+//! ParameterSetAction and ParameterModifyAction (OpenSCENARIO 1.3 §7.7.1 "GlobalAction",
+//! XSD `ParameterAction`, deprecated since 1.2 in favour of variables): change a parameter's
+//! value at runtime. Shares the rule with VariableAction (`modify_value`).
+
+use std::collections::BTreeMap;
+
+use scenario::expr::Value;
+use scenario::{ModifyRule, SourcePos};
+
+use crate::runtime::error::RuntimeError;
+use crate::runtime::world::World;
+
+/// Applies `rule` to parameter `name`.
+pub(crate) fn apply(
+    world: &mut World,
+    name: &str,
+    rule: &ModifyRule,
+    pos: &SourcePos,
+) -> Result<(), RuntimeError> {
+    modify_value(&mut world.parameters, "parameter", name, rule, pos)
+}
+
+/// Applies `rule` to entry `name` of `store` (parameters or variables): Set parses the text as
+/// the declared type; Add and Multiply need a numeric value and keep its type.
+pub(crate) fn modify_value(
+    store: &mut BTreeMap<String, Value>,
+    what: &str,
+    name: &str,
+    rule: &ModifyRule,
+    pos: &SourcePos,
+) -> Result<(), RuntimeError> {
+    let Some(old) = store.get(name) else {
+        return Err(RuntimeError::at(
+            format!("a declared {what}"),
+            format!("'{name}'"),
+            pos,
+        ));
+    };
+    let ty = old.value_type();
+    let new = match rule {
+        ModifyRule::Set(text) => Value::parse(ty, text).map_err(|e| {
+            RuntimeError::at(
+                format!("a value of type {}", ty.xsd_name()),
+                format!("'{text}' ({e})"),
+                pos,
+            )
+        })?,
+        ModifyRule::AddValue(v) | ModifyRule::MultiplyByValue(v) => {
+            let Some(x) = old.as_f64() else {
+                return Err(RuntimeError::at(
+                    format!("a numeric {what}"),
+                    format!("'{name}' of type {}", ty.xsd_name()),
+                    pos,
+                ));
+            };
+            let y = if matches!(rule, ModifyRule::AddValue(_)) {
+                x + v
+            } else {
+                x * v
+            };
+            Value::Double(y).convert_to(ty).map_err(|e| {
+                RuntimeError::at(
+                    format!("a value of type {}", ty.xsd_name()),
+                    format!("{y} ({e})"),
+                    pos,
+                )
+            })?
+        }
+        _ => return Err(RuntimeError::unsupported("this modify rule", pos)),
+    };
+    store.insert(name.to_owned(), new);
+    Ok(())
+}

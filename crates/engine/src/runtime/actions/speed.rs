@@ -1,0 +1,159 @@
+//! SpeedAction (OpenSCENARIO 1.3 §7.7.2.1 "LongitudinalAction", XSD `SpeedAction`): drive the
+//! actor's speed to an absolute target, or to a reference entity's speed plus a delta or times
+//! a factor, under a transition shape (see `shapes`). With `continuous="true"` a relative
+//! target keeps being followed after the transition, so the action never ends by itself.
+//!
+//! A `distance` dimension is turned into the time a linear change covers that distance in,
+//! T = 2·d / (v₀ + v₁), so that a change starting from rest still progresses (a change linear
+//! in distance would never leave v = 0); the shape then runs over T.
+
+use scenario::{
+    DynamicsDimension, SourcePos, SpeedTarget, SpeedTargetValueType, TransitionDynamics,
+};
+
+use super::Part;
+use crate::runtime::entity::EntityId;
+use crate::runtime::error::RuntimeError;
+use crate::runtime::shapes::{progress, shape_value, span, Span};
+use crate::runtime::world::World;
+use crate::storyboard::ActionStatus;
+
+/// A running SpeedAction on one actor.
+#[derive(Debug, Clone)]
+pub(crate) struct SpeedState {
+    dynamics: TransitionDynamics,
+    target: Target,
+    start_speed: f64,
+    start_time: f64,
+    span: Span,
+}
+
+/// The target speed: fixed, or read from a reference entity every step.
+#[derive(Debug, Clone)]
+enum Target {
+    Fixed(f64),
+    Relative {
+        entity: EntityId,
+        value: f64,
+        kind: SpeedTargetValueType,
+        continuous: bool,
+    },
+}
+
+impl Target {
+    fn speed(&self, world: &World) -> f64 {
+        match self {
+            Target::Fixed(v) => *v,
+            Target::Relative {
+                entity,
+                value,
+                kind,
+                ..
+            } => {
+                let v = world.entity(*entity).speed;
+                match kind {
+                    SpeedTargetValueType::Delta => v + value,
+                    _ => v * value,
+                }
+            }
+        }
+    }
+
+    fn continuous(&self) -> bool {
+        matches!(
+            self,
+            Target::Relative {
+                continuous: true,
+                ..
+            }
+        )
+    }
+}
+
+/// Looks up entity `name` for an action at `pos`.
+pub(crate) fn entity_ref(
+    world: &World,
+    name: &str,
+    pos: &SourcePos,
+) -> Result<EntityId, RuntimeError> {
+    world
+        .id(name)
+        .ok_or_else(|| RuntimeError::at("a declared entity", format!("entityRef '{name}'"), pos))
+}
+
+/// Starts the action: a step change takes effect at once.
+pub(crate) fn start(
+    world: &mut World,
+    actor: EntityId,
+    dynamics: &TransitionDynamics,
+    target: &SpeedTarget,
+    now: f64,
+    pos: &SourcePos,
+) -> Result<Part, RuntimeError> {
+    let target = match target {
+        SpeedTarget::Absolute(v) => Target::Fixed(*v),
+        SpeedTarget::Relative {
+            entity_ref: name,
+            value,
+            speed_target_value_type,
+            continuous,
+        } => Target::Relative {
+            entity: entity_ref(world, name, pos)?,
+            value: *value,
+            kind: *speed_target_value_type,
+            continuous: *continuous,
+        },
+        _ => return Err(RuntimeError::unsupported("this SpeedActionTarget", pos)),
+    };
+    let v0 = world.entity(actor).speed;
+    let v1 = target.speed(world);
+    let mut span = span(dynamics, v1 - v0);
+    if let (DynamicsDimension::Distance, Span::Distance(d)) = (dynamics.dynamics_dimension, span) {
+        let mean = 0.5 * (v0 + v1).abs();
+        span = if mean > 1e-9 {
+            Span::Time(d / mean)
+        } else {
+            Span::Instant
+        };
+    }
+    let mut state = SpeedState {
+        dynamics: *dynamics,
+        target,
+        start_speed: v0,
+        start_time: now,
+        span,
+    };
+    if span == Span::Instant {
+        world.entity_mut(actor).speed = v1;
+        if !state.target.continuous() {
+            return Ok(Part::Done(ActionStatus::Ended));
+        }
+        state.start_speed = v1;
+    }
+    Ok(Part::Speed(state))
+}
+
+/// Sets the speed for the step from `now` to `now + dt`: the shape at the step's end.
+pub(crate) fn step(
+    world: &mut World,
+    actor: EntityId,
+    s: &mut SpeedState,
+    now: f64,
+    dt: f64,
+) -> ActionStatus {
+    let v1 = s.target.speed(world);
+    let (p, _) = progress(s.span, now + dt - s.start_time, 0.0, 0.0);
+    let (f, _) = shape_value(s.dynamics.dynamics_shape, p);
+    let v = if p >= 1.0 {
+        v1
+    } else {
+        s.start_speed + (v1 - s.start_speed) * f
+    };
+    let e = world.entity_mut(actor);
+    e.speed = v.min(e.max_speed());
+    if p >= 1.0 && !s.target.continuous() {
+        ActionStatus::Ended
+    } else {
+        ActionStatus::Running
+    }
+}

@@ -1,0 +1,18 @@
+//! VariableSetAction and VariableModifyAction (OpenSCENARIO 1.3 §7.7.1 "GlobalAction",
+//! XSD `VariableAction`, 1.2+): change a variable's value at runtime.
+
+use scenario::{ModifyRule, SourcePos};
+
+use super::parameter::modify_value;
+use crate::runtime::error::RuntimeError;
+use crate::runtime::world::World;
+
+/// Applies `rule` to variable `name`.
+pub(crate) fn apply(
+    world: &mut World,
+    name: &str,
+    rule: &ModifyRule,
+    pos: &SourcePos,
+) -> Result<(), RuntimeError> {
+    modify_value(&mut world.variables, "variable", name, rule, pos)
+}

@@ -1,0 +1,315 @@
+//! Building a runnable engine from the loaded scenario (OpenSCENARIO 1.3 §7.1–7.3 and §8.5):
+//! the road network, one [`Entity`] per ScenarioObject, parameter and variable values, and the
+//! storyboard description with a table entry per action and per condition.
+//!
+//! Names in the event log: storyboard elements keep their names; Init actions, which have none
+//! in the file, are named `Init ENTITY ACTIONTYPE` (esmini's form), global Init actions
+//! `Init ACTIONTYPE`.
+
+use std::collections::BTreeMap;
+
+use opendrive::RoadNetwork;
+use scenario::{
+    Action, ActionKind, Actors, EntityObject, GlobalAction, PrivateAction, Scenario, Trigger,
+};
+
+use super::actions::ActionTable;
+use super::entity::{Entity, EntityId, EntityKind};
+use super::error::{RuntimeError, RuntimeErrorKind};
+use super::world::World;
+use crate::domain::{BoundingBox, Color, Position3d};
+use crate::storyboard::{
+    ActDesc, ActionDesc, ConditionDesc, ConditionEdge, ConditionGroupDesc, ConditionId, EventDesc,
+    ManeuverDesc, ManeuverGroupDesc, Priority, StoryDesc, StoryboardDesc, TriggerDesc,
+};
+
+/// An empty road network, for scenarios that name none.
+const EMPTY_NETWORK: &str = r#"<OpenDRIVE><header revMajor="1" revMinor="6"/></OpenDRIVE>"#;
+
+/// What [`build`] produces.
+pub(crate) struct Built {
+    pub world: World,
+    pub desc: StoryboardDesc,
+    pub actions: ActionTable,
+    pub conditions: Vec<scenario::Condition>,
+}
+
+/// Loads the road network named by the scenario.
+pub(crate) fn road_network(scenario: &Scenario) -> Result<RoadNetwork, RuntimeError> {
+    let loaded = match &scenario.road_network.logic_file {
+        Some(path) => RoadNetwork::from_file(path),
+        None => RoadNetwork::from_str(EMPTY_NETWORK, &scenario.path),
+    };
+    loaded.map_err(|e| {
+        RuntimeError::new(RuntimeErrorKind::RoadNetwork {
+            message: e.to_string(),
+        })
+    })
+}
+
+/// Builds world, storyboard description and tables from `scenario` on `network`.
+pub(crate) fn build(scenario: &Scenario, network: RoadNetwork) -> Result<Built, RuntimeError> {
+    let entities = scenario
+        .entities
+        .scenario_objects
+        .iter()
+        .enumerate()
+        .map(|(i, o)| entity(EntityId(i as u32), o))
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut world = World::new(network, entities);
+    world.parameters = scenario
+        .parameter_declarations
+        .iter()
+        .map(|p| (p.name.clone(), p.value.clone()))
+        .collect::<BTreeMap<_, _>>();
+    world.variables = scenario
+        .variable_declarations
+        .iter()
+        .map(|v| (v.name.clone(), v.value.clone()))
+        .collect();
+    let mut b = Builder {
+        scenario,
+        world: &world,
+        actions: ActionTable::default(),
+        conditions: Vec::new(),
+    };
+    let desc = b.storyboard()?;
+    let (actions, conditions) = (b.actions, b.conditions);
+    Ok(Built {
+        world,
+        desc,
+        actions,
+        conditions,
+    })
+}
+
+fn bounding_box(
+    bb: &scenario::BoundingBox,
+    pos: &scenario::SourcePos,
+) -> Result<BoundingBox, RuntimeError> {
+    let [x, y, z] = bb.center;
+    BoundingBox::new(Position3d::new(x, y, z), bb.length, bb.width, bb.height)
+        .map_err(|e| RuntimeError::at("a valid BoundingBox", e.to_string(), pos))
+}
+
+fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entity, RuntimeError> {
+    let color_of = |props: &scenario::Properties| {
+        props
+            .properties
+            .iter()
+            .find(|(k, _)| k.eq_ignore_ascii_case("color") || k.eq_ignore_ascii_case("colour"))
+            .and_then(|(_, v)| Color::from_name(v))
+    };
+    let zero = scenario::BoundingBox {
+        center: [0.0; 3],
+        width: 0.0,
+        length: 0.0,
+        height: 0.0,
+    };
+    let (kind, bb) = match &o.entity_object {
+        EntityObject::Vehicle(v) => (EntityKind::Vehicle, &v.bounding_box),
+        EntityObject::Pedestrian(p) => (EntityKind::Pedestrian, &p.bounding_box),
+        EntityObject::MiscObject(m) => (EntityKind::MiscObject, &m.bounding_box),
+        _ => (EntityKind::External, &zero),
+    };
+    let mut e = Entity::new(id, &o.name, kind, bounding_box(bb, &o.pos)?);
+    match &o.entity_object {
+        EntityObject::Vehicle(v) => {
+            e.vehicle_category = Some(v.vehicle_category);
+            e.performance = Some(v.performance);
+            e.model3d.clone_from(&v.model3d);
+            e.color = color_of(&v.properties);
+        }
+        EntityObject::Pedestrian(p) => {
+            e.model3d.clone_from(&p.model3d);
+            e.color = color_of(&p.properties);
+        }
+        EntityObject::MiscObject(m) => {
+            e.model3d.clone_from(&m.model3d);
+            e.color = color_of(&m.properties);
+        }
+        _ => {}
+    }
+    Ok(e)
+}
+
+struct Builder<'a> {
+    scenario: &'a Scenario,
+    world: &'a World,
+    actions: ActionTable,
+    conditions: Vec<scenario::Condition>,
+}
+
+/// The XSD element name of an action, for Init action names.
+fn action_type(kind: &ActionKind) -> &'static str {
+    match kind {
+        ActionKind::Private(p) => match p {
+            PrivateAction::Longitudinal(_) => "LongitudinalAction",
+            PrivateAction::Lateral(_) => "LateralAction",
+            PrivateAction::Visibility(_) => "VisibilityAction",
+            PrivateAction::Synchronize(_) => "SynchronizeAction",
+            PrivateAction::Controller(_) => "ControllerAction",
+            PrivateAction::Teleport(_) => "TeleportAction",
+            PrivateAction::Routing(_) => "RoutingAction",
+            PrivateAction::Appearance(_) => "AppearanceAction",
+            PrivateAction::Trailer(_) => "TrailerAction",
+            _ => "PrivateAction",
+        },
+        ActionKind::Global(g) => match g {
+            GlobalAction::Environment(_) => "EnvironmentAction",
+            GlobalAction::Entity { .. } => "EntityAction",
+            GlobalAction::Parameter { .. } => "ParameterAction",
+            GlobalAction::Variable { .. } => "VariableAction",
+            GlobalAction::Traffic { .. } => "TrafficAction",
+            _ => "GlobalAction",
+        },
+        ActionKind::UserDefined(_) => "UserDefinedAction",
+        _ => "Action",
+    }
+}
+
+impl Builder<'_> {
+    fn storyboard(&mut self) -> Result<StoryboardDesc, RuntimeError> {
+        let sb = &self.scenario.storyboard;
+        let mut init_actions = Vec::new();
+        for a in &sb.init.actions {
+            let name = format!("Init {}", action_type(&a.kind));
+            init_actions.push(self.action(name, a, Vec::new()));
+        }
+        for p in &sb.init.privates {
+            let actor = self.actor(
+                &p.entity_ref,
+                &sb.init.actions.first().map_or_else(
+                    || scenario::SourcePos::start_of(self.scenario.path.as_path().into()),
+                    |a| a.pos.clone(),
+                ),
+            )?;
+            for a in &p.actions {
+                let name = format!("Init {} {}", p.entity_ref, action_type(&a.kind));
+                init_actions.push(self.action(name, a, vec![actor]));
+            }
+        }
+        let mut stories = Vec::new();
+        for story in &sb.stories {
+            let mut acts = Vec::new();
+            for act in &story.acts {
+                let mut groups = Vec::new();
+                for mg in &act.maneuver_groups {
+                    let actors = self.actors(&mg.actors, &mg.pos)?;
+                    let mut maneuvers = Vec::new();
+                    for m in &mg.maneuvers {
+                        let mut events = Vec::new();
+                        for ev in &m.events {
+                            let actions = ev
+                                .actions
+                                .iter()
+                                .map(|a| self.action(a.name.clone(), a, actors.clone()))
+                                .collect();
+                            events.push(EventDesc {
+                                name: ev.name.clone(),
+                                priority: match ev.priority {
+                                    scenario::Priority::Skip => Priority::Skip,
+                                    scenario::Priority::Parallel => Priority::Parallel,
+                                    _ => Priority::Override,
+                                },
+                                maximum_execution_count: ev.maximum_execution_count,
+                                start_trigger: self.trigger(ev.start_trigger.as_ref()),
+                                actions,
+                            });
+                        }
+                        maneuvers.push(ManeuverDesc {
+                            name: m.name.clone(),
+                            events,
+                        });
+                    }
+                    groups.push(ManeuverGroupDesc {
+                        name: mg.name.clone(),
+                        maximum_execution_count: mg.maximum_execution_count,
+                        maneuvers,
+                    });
+                }
+                acts.push(ActDesc {
+                    name: act.name.clone(),
+                    start_trigger: self.trigger(act.start_trigger.as_ref()),
+                    stop_trigger: self.trigger(act.stop_trigger.as_ref()),
+                    maneuver_groups: groups,
+                });
+            }
+            stories.push(StoryDesc {
+                name: story.name.clone(),
+                acts,
+            });
+        }
+        Ok(StoryboardDesc {
+            name: "storyBoard".to_owned(),
+            init_actions,
+            stories,
+            stop_trigger: self.trigger(sb.stop_trigger.as_ref()),
+        })
+    }
+
+    fn actor(&self, name: &str, pos: &scenario::SourcePos) -> Result<EntityId, RuntimeError> {
+        self.world.id(name).ok_or_else(|| {
+            RuntimeError::at("a declared entity", format!("entityRef '{name}'"), pos)
+        })
+    }
+
+    /// The actors of a ManeuverGroup, entity selections expanded, each once, in order.
+    fn actors(
+        &self,
+        actors: &Actors,
+        pos: &scenario::SourcePos,
+    ) -> Result<Vec<EntityId>, RuntimeError> {
+        let mut out = Vec::new();
+        for r in &actors.entity_refs {
+            let names = self.scenario.entities.resolve(r);
+            if names.is_empty() {
+                return Err(RuntimeError::at(
+                    "a declared entity or selection",
+                    format!("entityRef '{r}'"),
+                    pos,
+                ));
+            }
+            for n in names {
+                let id = self.actor(n, pos)?;
+                if !out.contains(&id) {
+                    out.push(id);
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    fn action(&mut self, name: String, action: &Action, actors: Vec<EntityId>) -> ActionDesc {
+        let id = self.actions.push(name.clone(), action.clone(), actors);
+        ActionDesc { name, id }
+    }
+
+    fn trigger(&mut self, trigger: Option<&Trigger>) -> Option<TriggerDesc> {
+        let trigger = trigger?;
+        let mut groups = Vec::new();
+        for g in &trigger.condition_groups {
+            let mut conditions = Vec::new();
+            for c in &g.conditions {
+                let id = ConditionId(self.conditions.len() as u32);
+                self.conditions.push(c.clone());
+                conditions.push(ConditionDesc {
+                    name: c.name.clone(),
+                    id,
+                    edge: match c.condition_edge {
+                        scenario::ConditionEdge::Rising => ConditionEdge::Rising,
+                        scenario::ConditionEdge::Falling => ConditionEdge::Falling,
+                        scenario::ConditionEdge::RisingOrFalling => ConditionEdge::RisingOrFalling,
+                        _ => ConditionEdge::None,
+                    },
+                    delay: c.delay,
+                    origin: Some(c.pos.to_string()),
+                });
+            }
+            groups.push(ConditionGroupDesc { conditions });
+        }
+        Some(TriggerDesc {
+            condition_groups: groups,
+        })
+    }
+}

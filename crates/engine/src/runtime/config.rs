@@ -1,0 +1,60 @@
+//! The run's settings in one place: step length, duration and the hard cap on simulated time.
+
+use super::error::{RuntimeError, RuntimeErrorKind};
+
+/// Default step length (s), the reference runs' fixed time step.
+pub const DEFAULT_DT: f64 = 0.05;
+/// Default hard cap on simulated time (s): a run without a stop trigger ends here.
+pub const DEFAULT_MAX_TIME: f64 = 3600.0;
+
+/// Settings of one run.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EngineConfig {
+    /// Fixed step length (s), > 0.
+    pub dt: f64,
+    /// Stop after this much simulated time (s), if set.
+    pub duration: Option<f64>,
+    /// Hard cap on simulated time (s), so that no run is endless.
+    pub max_time: f64,
+}
+
+impl Default for EngineConfig {
+    fn default() -> Self {
+        EngineConfig {
+            dt: DEFAULT_DT,
+            duration: None,
+            max_time: DEFAULT_MAX_TIME,
+        }
+    }
+}
+
+impl EngineConfig {
+    /// Checks the values: dt finite and positive, duration and cap finite and ≥ 0.
+    pub fn validate(&self) -> Result<(), RuntimeError> {
+        let bad = |name, expected, found| {
+            Err(RuntimeError::new(RuntimeErrorKind::Config {
+                name,
+                expected,
+                found,
+            }))
+        };
+        if !(self.dt.is_finite() && self.dt > 0.0) {
+            return bad("dt", "a finite step length > 0 s", self.dt);
+        }
+        if let Some(d) = self.duration {
+            if !(d.is_finite() && d >= 0.0) {
+                return bad("duration", "a finite duration >= 0 s", d);
+            }
+        }
+        if !(self.max_time.is_finite() && self.max_time >= 0.0) {
+            return bad("max_time", "a finite time >= 0 s", self.max_time);
+        }
+        Ok(())
+    }
+
+    /// The simulated time at which the run ends at the latest.
+    pub fn end_time(&self) -> f64 {
+        self.duration
+            .map_or(self.max_time, |d| d.min(self.max_time))
+    }
+}

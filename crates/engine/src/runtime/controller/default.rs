@@ -1,0 +1,154 @@
+//! The default controller (OpenSCENARIO 1.3 §7.5.1 "Default controller"): keeps the speed the
+//! longitudinal domain last set and the lane offset the lateral domain last set, and follows
+//! its lane along the road, through lane sections and junctions (the assigned route's lane when
+//! one is on offer, else the first lane link in the road model's order, so the choice is
+//! deterministic).
+//!
+//! Longitudinal then lateral, each step: the entity travels `speed · dt` metres along its lane
+//! (at its lateral position t the reference line's s advances by that distance / (1 − κ·t)),
+//! then its lateral position t is set from the lane centre plus offset, or from the lateral
+//! transition in progress. Heading = direction of travel along the road + the slope of the
+//! lateral motion, h = h_road + atan2(dt/ds, 1 − κ·t), plus the entity's own relative heading.
+//! An entity off every lane, or crossing the road, moves straight along its heading.
+
+use opendrive::{normalize_angle, Direction, LaneHandle, Real, Road, RoadNetwork};
+
+use crate::domain::{Acceleration6d, Route, Vector3, Velocity6d};
+use crate::runtime::entity::{Entity, LaneTrack};
+use crate::runtime::lanes::{advance, curvature, road_position};
+
+/// Moves entity `e` over one step of `dt` s: position, heading, road position, velocity,
+/// acceleration, yaw rate and odometer.
+pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
+    if !e.placed {
+        return;
+    }
+    let old_h = e.pose.h;
+    let old_v = e.velocity.translational.x;
+    let distance = e.speed * dt;
+    match e.track.take() {
+        Some(mut track) => {
+            let route = e.route.as_ref();
+            let prefer = |c: &[LaneHandle], n: &RoadNetwork| on_route(c, n, route);
+            let signed = if distance >= 0.0 {
+                distance
+            } else {
+                track.direction = track.direction.reverse();
+                -distance
+            };
+            let road_scale = net
+                .road(&track.road_id)
+                .map_or(1.0, |r| along_scale(r, track.s, track.t));
+            // Speed is along the heading: lateral motion at slope dt/ds takes its share.
+            let slope = lateral_slope(net, &track);
+            let along = signed / (1.0 + slope * slope).sqrt();
+            let left = advance(net, &mut track, along * road_scale, &prefer);
+            if distance < 0.0 {
+                track.direction = track.direction.reverse();
+            }
+            e.odometer += signed - (left / road_scale).min(signed);
+            if left > 0.0 {
+                // The lane ends with no successor: the entity stops at its end (as esmini does).
+                e.speed = 0.0;
+            }
+            place_on_track(net, e, &mut track);
+            e.track = Some(track);
+        }
+        None => {
+            e.pose.x += distance * e.pose.h.cos();
+            e.pose.y += distance * e.pose.h.sin();
+            e.odometer += distance.abs();
+            e.road_position = net.locate(e.pose.x, e.pose.y, Some(e.pose.h));
+        }
+    }
+    e.velocity = Velocity6d {
+        translational: Vector3::new(e.speed, 0.0, 0.0),
+        rotational: Vector3::new(0.0, 0.0, normalize_angle(e.pose.h - old_h) / dt),
+    };
+    e.acceleration = Acceleration6d {
+        translational: Vector3::new((e.speed - old_v) / dt, 0.0, 0.0),
+        rotational: Vector3::ZERO,
+    };
+}
+
+/// Ratio of reference-line length to travelled length at lateral position t: 1 / (1 − κ·t).
+fn along_scale(road: &Road, s: Real, t: Real) -> Real {
+    let k = 1.0 - curvature(road, s) * t;
+    if k > 0.1 {
+        1.0 / k
+    } else {
+        1.0
+    }
+}
+
+/// The successor on the assigned route, if one of `candidates` lies on it.
+fn on_route(
+    candidates: &[LaneHandle],
+    net: &RoadNetwork,
+    route: Option<&Route>,
+) -> Option<LaneHandle> {
+    let route = route?;
+    candidates.iter().copied().find(|h| {
+        let id = &net.handle_road(*h).id;
+        route.stretches().iter().any(|st| &st.road_id == id)
+    })
+}
+
+/// Lateral position t of a track at its s and the slope dt/ds of the path it follows there:
+/// the lane centre plus offset, or the blend of a lateral transition.
+fn lateral(road: &Road, track: &LaneTrack) -> Option<(Real, Real)> {
+    let span = road.lane_span(track.lane_id, track.s).ok()?;
+    let target = span.center() + track.offset;
+    let Some(b) = track.blend else {
+        return Some((target, span.d_center()));
+    };
+    let Ok(from) = road.lane_span(b.from_lane, track.s) else {
+        return Some((target, span.d_center()));
+    };
+    let t0 = from.center() + b.from_offset;
+    let t = (1.0 - b.weight) * t0 + b.weight * target;
+    let slope = (1.0 - b.weight) * from.d_center()
+        + b.weight * span.d_center()
+        + (target - t0) * b.weight_per_m * sign(track.direction);
+    Some((t, slope))
+}
+
+/// The slope dt/ds of the lateral motion of a track, 0 off the road model.
+fn lateral_slope(net: &RoadNetwork, track: &LaneTrack) -> Real {
+    net.road(&track.road_id)
+        .and_then(|r| lateral(r, track))
+        .map_or(0.0, |(_, slope)| slope)
+}
+
+/// Sets t, pose and road position of `e` from its track after a move.
+pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity, track: &mut LaneTrack) {
+    let Some(road) = net.road(&track.road_id) else {
+        return;
+    };
+    let Some((t, dt_ds)) = lateral(road, track) else {
+        return;
+    };
+    track.t = t;
+    let Ok(mut pose) = road.pose(track.s, t) else {
+        return;
+    };
+    let k = curvature(road, track.s);
+    let slope = dt_ds.atan2(1.0 - k * t);
+    let road_h = pose.h;
+    pose.h = match track.direction {
+        Direction::Forward => normalize_angle(road_h + slope + track.relative_heading),
+        Direction::Backward => {
+            normalize_angle(road_h + std::f64::consts::PI + slope + track.relative_heading)
+        }
+    };
+    e.pose = pose;
+    e.lateral_slope = dt_ds;
+    e.road_position = road_position(net, track, normalize_angle(pose.h - road_h));
+}
+
+fn sign(d: Direction) -> Real {
+    match d {
+        Direction::Forward => 1.0,
+        Direction::Backward => -1.0,
+    }
+}

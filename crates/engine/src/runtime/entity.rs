@@ -1,0 +1,188 @@
+//! Entity state at runtime (OpenSCENARIO 1.3 §7.2.2 "Entities", §6.3 coordinate systems):
+//! the pose of the reference point (a vehicle's rear-axle centre, on the ground), its road
+//! position, speed, velocity, acceleration, odometer, the bounding box and the
+//! OpenSCENARIO 2.0 §8.7 physical-object view of it.
+//!
+//! Entities live in the [`World`](super::World)'s store, addressed by [`EntityId`].
+
+use opendrive::{Direction, Pose, Real, RoadPosition};
+use scenario::{ObjectType, Performance, VehicleCategory};
+
+use crate::domain::{Acceleration6d, BoundingBox, Color, Route, Velocity6d};
+use crate::storyboard::ActionId;
+
+/// Handle of an entity in the world's store: its index in declaration order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct EntityId(pub u32);
+
+impl EntityId {
+    /// The entity's index in declaration order (also its `id` column in the CSV).
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+/// What kind of object an entity is (XSD `EntityObject` choice).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum EntityKind {
+    /// `Vehicle`.
+    Vehicle,
+    /// `Pedestrian`.
+    Pedestrian,
+    /// `MiscObject`.
+    MiscObject,
+    /// `ExternalObjectReference`: an object of the road network file.
+    External,
+}
+
+impl EntityKind {
+    /// The XSD `ObjectType` of this kind.
+    pub fn object_type(self) -> ObjectType {
+        match self {
+            EntityKind::Vehicle => ObjectType::Vehicle,
+            EntityKind::Pedestrian => ObjectType::Pedestrian,
+            EntityKind::MiscObject => ObjectType::Miscellaneous,
+            EntityKind::External => ObjectType::External,
+        }
+    }
+}
+
+/// Visibility flags of VisibilityAction (OpenSCENARIO 1.3 §7.7.2.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Visibility {
+    /// Visible in image generators.
+    pub graphics: bool,
+    /// Visible to sensors.
+    pub sensors: bool,
+    /// Visible to other traffic participants.
+    pub traffic: bool,
+}
+
+impl Default for Visibility {
+    fn default() -> Self {
+        Visibility {
+            graphics: true,
+            sensors: true,
+            traffic: true,
+        }
+    }
+}
+
+/// Where the default controller keeps an entity: the lane it follows and its offset from that
+/// lane's centre, and the direction of travel along s.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LaneTrack {
+    /// Road id.
+    pub road_id: String,
+    /// Lane id followed.
+    pub lane_id: i32,
+    /// s along the road's reference line (m).
+    pub s: Real,
+    /// Lateral position t from the reference line (m, positive left).
+    pub t: Real,
+    /// Offset from the followed lane's centre (m, positive left).
+    pub offset: Real,
+    /// Travel towards increasing or decreasing s.
+    pub direction: Direction,
+    /// Entity heading minus the lane's direction of travel (rad); 0 when aligned.
+    pub relative_heading: Real,
+    /// A lateral transition in progress (lane change or lane offset), if any.
+    pub blend: Option<Blend>,
+}
+
+/// A lateral transition from one (lane, offset) to the track's own: the lateral position is
+/// t = (1 − w)·(centre(from_lane) + from_offset) + w·(centre(lane_id) + offset).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Blend {
+    /// The lane left.
+    pub from_lane: i32,
+    /// Offset from its centre at the start (m).
+    pub from_offset: Real,
+    /// Weight w of the target, 0 → 1.
+    pub weight: Real,
+    /// dw per metre travelled along the lane (for the heading).
+    pub weight_per_m: Real,
+}
+
+/// One entity: static description and the state of the current step.
+#[derive(Debug, Clone)]
+pub struct Entity {
+    /// Handle.
+    pub id: EntityId,
+    /// `ScenarioObject/@name`.
+    pub name: String,
+    /// Kind.
+    pub kind: EntityKind,
+    /// Bounding box, centre relative to the reference point.
+    pub bounding_box: BoundingBox,
+    /// Vehicle category (vehicles only).
+    pub vehicle_category: Option<VehicleCategory>,
+    /// Performance limits (vehicles only).
+    pub performance: Option<Performance>,
+    /// Colour, from a `Property name="color"` when one names a §8.7.11 colour.
+    pub color: Option<Color>,
+    /// `model3d`, as written.
+    pub model3d: Option<String>,
+    /// True once a TeleportAction (or AddEntityAction) placed the entity.
+    pub placed: bool,
+    /// Pose of the reference point in world coordinates.
+    pub pose: Pose,
+    /// Road position of the reference point (`RoadNetwork::locate` of the pose), if on a road.
+    pub road_position: Option<RoadPosition>,
+    /// The lane the default controller follows; `None` moves the entity straight along its
+    /// heading.
+    pub track: Option<LaneTrack>,
+    /// Signed longitudinal speed (m/s).
+    pub speed: Real,
+    /// Velocity in the entity's axes (x forward, y left, z up).
+    pub velocity: Velocity6d,
+    /// Acceleration in the entity's axes.
+    pub acceleration: Acceleration6d,
+    /// Distance travelled since the start (m).
+    pub odometer: Real,
+    /// Visibility flags.
+    pub visibility: Visibility,
+    /// Route assigned by AssignRouteAction.
+    pub route: Option<Route>,
+    /// The action controlling the longitudinal domain, if any (§7.5.1 control domains).
+    pub longitudinal_action: Option<ActionId>,
+    /// The action controlling the lateral domain, if any.
+    pub lateral_action: Option<ActionId>,
+    /// Lateral velocity along t set by the lateral action of this step (m per m of travel
+    /// along s): the slope added to the road heading.
+    pub lateral_slope: Real,
+}
+
+impl Entity {
+    /// A new, unplaced entity at the origin, at rest.
+    pub fn new(id: EntityId, name: &str, kind: EntityKind, bounding_box: BoundingBox) -> Self {
+        Entity {
+            id,
+            name: name.to_owned(),
+            kind,
+            bounding_box,
+            vehicle_category: None,
+            performance: None,
+            color: None,
+            model3d: None,
+            placed: false,
+            pose: Pose::default(),
+            road_position: None,
+            track: None,
+            speed: 0.0,
+            velocity: Velocity6d::ZERO,
+            acceleration: Acceleration6d::ZERO,
+            odometer: 0.0,
+            visibility: Visibility::default(),
+            route: None,
+            longitudinal_action: None,
+            lateral_action: None,
+            lateral_slope: 0.0,
+        }
+    }
+
+    /// Maximum speed (m/s): the performance limit, unlimited for non-vehicles.
+    pub fn max_speed(&self) -> Real {
+        self.performance.map_or(Real::INFINITY, |p| p.max_speed)
+    }
+}

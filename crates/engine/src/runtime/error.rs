@@ -1,0 +1,110 @@
+//! Errors of the runtime: building an engine from a scenario and running it.
+//!
+//! Messages follow the project's form "expected X, found Y at file:line:col"; the place is the
+//! scenario element (action, position, entity reference) that caused the error.
+
+use scenario::SourcePos;
+
+use crate::storyboard::StoryboardError;
+
+/// An error building or running an [`Engine`](super::Engine).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{kind}")]
+pub struct RuntimeError {
+    kind: RuntimeErrorKind,
+}
+
+impl RuntimeError {
+    pub(crate) fn new(kind: RuntimeErrorKind) -> Self {
+        RuntimeError { kind }
+    }
+
+    /// What went wrong.
+    pub fn kind(&self) -> &RuntimeErrorKind {
+        &self.kind
+    }
+
+    /// An error at a scenario element: expected `expected`, found `found`, at `pos`.
+    pub(crate) fn at(
+        expected: impl Into<String>,
+        found: impl Into<String>,
+        pos: &SourcePos,
+    ) -> Self {
+        RuntimeError::new(RuntimeErrorKind::Invalid {
+            expected: expected.into(),
+            found: found.into(),
+            pos: pos.clone(),
+        })
+    }
+
+    /// An unsupported feature at `pos`.
+    pub(crate) fn unsupported(what: impl Into<String>, pos: &SourcePos) -> Self {
+        RuntimeError::new(RuntimeErrorKind::Unsupported {
+            what: what.into(),
+            pos: pos.clone(),
+        })
+    }
+}
+
+/// The kinds of [`RuntimeError`].
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum RuntimeErrorKind {
+    /// The scenario names no road network (`RoadNetwork/LogicFile`).
+    #[error("expected a RoadNetwork/LogicFile, found none in {file}")]
+    NoRoadNetwork {
+        /// The scenario file.
+        file: String,
+    },
+    /// The road network failed to load.
+    #[error("cannot load the road network: {message}")]
+    RoadNetwork {
+        /// The road crate's message (it names the file and row:col).
+        message: String,
+    },
+    /// A value or reference in the scenario that the runtime cannot use.
+    #[error("expected {expected}, found {found} at {pos}")]
+    Invalid {
+        /// What was expected.
+        expected: String,
+        /// What was found.
+        found: String,
+        /// Where.
+        pos: SourcePos,
+    },
+    /// A feature the runtime does not support.
+    #[error("expected a supported feature, found {what} (not supported) at {pos}")]
+    Unsupported {
+        /// The feature.
+        what: String,
+        /// Where.
+        pos: SourcePos,
+    },
+    /// The storyboard rejected its description or a step.
+    #[error("storyboard: {0}")]
+    Storyboard(#[from] StoryboardError),
+    /// A configuration value is out of range.
+    #[error("expected {expected}, found {found} for {name}")]
+    Config {
+        /// The setting.
+        name: &'static str,
+        /// What was expected.
+        expected: &'static str,
+        /// The value found.
+        found: f64,
+    },
+    /// Writing output failed.
+    #[error("cannot write {what}: {message}")]
+    Output {
+        /// Which output.
+        what: String,
+        /// The I/O error's message.
+        message: String,
+    },
+}
+
+impl From<StoryboardError> for RuntimeError {
+    fn from(e: StoryboardError) -> Self {
+        RuntimeError::new(RuntimeErrorKind::Storyboard(e))
+    }
+}

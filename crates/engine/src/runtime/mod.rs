@@ -1,0 +1,36 @@
+//! The scenario runtime (OpenSCENARIO 1.3 §8 "Scenario at runtime"): the world and its entity
+//! store, building from the scenario model, the fixed step, the default controller and the
+//! actions.
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `config` | step length, duration, cap |
+//! | `error` | `RuntimeError` |
+//! | `entity` | entity state (pose, road position, speed, …) and `EntityId` |
+//! | `world` | road network + entity store + values; `EntityQuery` / `ConditionContext` |
+//! | `lanes` | lane look-up, curvature, lane arithmetic, following lanes through links |
+//! | `build` | scenario model → world, storyboard description, action and condition tables |
+//! | `conditions` | the storyboard's `ConditionSource` |
+//! | `shapes` | transition shapes and dimensions |
+//! | `actions/*` | one file per action kind, and the `ActionHost` |
+//! | `controller/default` | the default controller |
+//! | `step` | `Engine` and its five stages |
+
+mod actions;
+mod build;
+mod conditions;
+mod config;
+mod controller;
+mod entity;
+mod error;
+mod lanes;
+mod shapes;
+mod step;
+mod world;
+
+pub use config::{EngineConfig, DEFAULT_DT, DEFAULT_MAX_TIME};
+pub use entity::{Blend, Entity, EntityId, EntityKind, LaneTrack, Visibility};
+pub use error::{RuntimeError, RuntimeErrorKind};
+pub use shapes::{shape_value, Span};
+pub use step::{Engine, LoadError, StageCounters, StopReason};
+pub use world::{ConditionWorld, World};

@@ -1,0 +1,86 @@
+//! Transition shapes and dimensions of OpenSCENARIO 1.3 §7.7.2 "TransitionDynamics"
+//! (XSD `DynamicsShape`, `DynamicsDimension`): how an action moves a value from its start to
+//! its target.
+//!
+//! A shape maps progress p ∈ [0, 1] to the fraction f(p) of the change done:
+//! `linear` f = p; `cubic` f = 3p² − 2p³; `sinusoidal` f = (1 − cos πp) / 2 (both with zero
+//! slope at p = 0 and p = 1); `step` f = 1 at once, taking no time (semantics-pitfalls #8).
+//!
+//! The dimension says what drives p: elapsed `time` over the given duration, travelled
+//! `distance` over the given distance, or a `rate` (unit/s). The standard defines `rate` only
+//! for the linear shape; for cubic and sinusoidal oscsim reads it as the peak rate (the ALKS
+//! reading, pitfall 8), so the duration is |Δ| · max f′ / rate with max f′ = 1.5 (cubic) and
+//! π/2 (sinusoidal).
+
+use scenario::{DynamicsDimension, DynamicsShape, TransitionDynamics};
+
+/// f(p) and f′(p) of `shape` at progress `p` (clamped to [0, 1]).
+pub fn shape_value(shape: DynamicsShape, p: f64) -> (f64, f64) {
+    let p = p.clamp(0.0, 1.0);
+    match shape {
+        DynamicsShape::Linear => (p, 1.0),
+        DynamicsShape::Cubic => (3.0 * p * p - 2.0 * p * p * p, 6.0 * p - 6.0 * p * p),
+        DynamicsShape::Sinusoidal => {
+            let a = std::f64::consts::PI * p;
+            ((1.0 - a.cos()) / 2.0, std::f64::consts::FRAC_PI_2 * a.sin())
+        }
+        _ => (1.0, 0.0),
+    }
+}
+
+/// The largest slope f′ of `shape` over [0, 1].
+pub fn peak_slope(shape: DynamicsShape) -> f64 {
+    match shape {
+        DynamicsShape::Cubic => 1.5,
+        DynamicsShape::Sinusoidal => std::f64::consts::FRAC_PI_2,
+        _ => 1.0,
+    }
+}
+
+/// What drives a transition's progress, with its total.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Span {
+    /// Progress = elapsed time / this duration (s).
+    Time(f64),
+    /// Progress = travelled distance / this distance (m).
+    Distance(f64),
+    /// Done at once (step shape, or a zero-length span).
+    Instant,
+}
+
+/// A transition of one value by `delta` under `dynamics`: its span.
+pub fn span(dynamics: &TransitionDynamics, delta: f64) -> Span {
+    if dynamics.dynamics_shape == DynamicsShape::Step {
+        return Span::Instant;
+    }
+    let v = dynamics.value.abs();
+    let span = match dynamics.dynamics_dimension {
+        DynamicsDimension::Time => Span::Time(v),
+        DynamicsDimension::Distance => Span::Distance(v),
+        DynamicsDimension::Rate if v > 0.0 => {
+            Span::Time(delta.abs() * peak_slope(dynamics.dynamics_shape) / v)
+        }
+        _ => Span::Instant,
+    };
+    match span {
+        Span::Time(t) | Span::Distance(t) if !(t.is_finite() && t > 0.0) => Span::Instant,
+        s => s,
+    }
+}
+
+/// Progress of a transition along its span after `elapsed` s and `travelled` m, and dp per
+/// metre of travel at `speed` m/s (for the heading of lateral motion).
+pub fn progress(span: Span, elapsed: f64, travelled: f64, speed: f64) -> (f64, f64) {
+    match span {
+        Span::Instant => (1.0, 0.0),
+        Span::Time(t) => {
+            let dp_ds = if speed.abs() > 1e-9 {
+                1.0 / (t * speed.abs())
+            } else {
+                0.0
+            };
+            ((elapsed / t).min(1.0), dp_ds)
+        }
+        Span::Distance(d) => ((travelled / d).min(1.0), 1.0 / d),
+    }
+}

@@ -1,0 +1,358 @@
+//! The engine and its fixed step (OpenSCENARIO 1.3 §8 "Scenario at runtime";
+//! semantics-pitfalls #6 for the order of work).
+
+use std::cell::{Ref, RefCell};
+use std::path::Path;
+use std::time::{Duration, Instant};
+
+use scenario::Scenario;
+
+use super::actions::{ActionTable, Host};
+use super::build::{build, road_network};
+use super::conditions::Conditions;
+use super::config::EngineConfig;
+use super::controller::move_entity;
+use super::error::{RuntimeError, RuntimeErrorKind};
+use super::world::World;
+use crate::condition::ConditionStates;
+use crate::output::{EventRecord, EventSink, Frame, FrameSink};
+use crate::storyboard::{Storyboard, TransitionRecord, TransitionSink};
+
+/// Why a run ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StopReason {
+    /// The storyboard's stop trigger fired.
+    StopTrigger,
+    /// Every Story completed and the storyboard has no stop trigger.
+    StoriesComplete,
+    /// The requested duration elapsed.
+    Duration,
+    /// The hard cap on simulated time was reached.
+    TimeCap,
+}
+
+impl std::fmt::Display for StopReason {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            StopReason::StopTrigger => "the storyboard's stop trigger fired",
+            StopReason::StoriesComplete => "every story completed",
+            StopReason::Duration => "the requested duration elapsed",
+            StopReason::TimeCap => "the hard cap on simulated time was reached",
+        })
+    }
+}
+
+/// Wall time spent in each stage of [`Engine::step`] since the engine was built.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct StageCounters {
+    /// Stage 1, `triggers`.
+    pub triggers: Duration,
+    /// Stage 2, `actions`.
+    pub actions: Duration,
+    /// Stage 3, `controllers`.
+    pub controllers: Duration,
+    /// Stage 4, `measurements`.
+    pub measurements: Duration,
+    /// Stage 5, `output`.
+    pub output: Duration,
+}
+
+/// A scenario ready to run: world, storyboard, action and condition tables.
+#[derive(Debug)]
+pub struct Engine {
+    world: RefCell<World>,
+    storyboard: Storyboard,
+    actions: ActionTable,
+    conditions: Vec<scenario::Condition>,
+    condition_states: ConditionStates,
+    reported: Vec<bool>,
+    has_stop_trigger: bool,
+    config: EngineConfig,
+    step: u64,
+    stopped: Option<StopReason>,
+    counters: StageCounters,
+}
+
+/// Collects transitions into the step's event list.
+struct Transitions<'a>(&'a RefCell<Vec<EventRecord>>);
+
+impl TransitionSink for Transitions<'_> {
+    fn record(&mut self, record: TransitionRecord) {
+        self.0.borrow_mut().push(EventRecord::Transition(record));
+    }
+}
+
+impl Engine {
+    /// Loads `path` (with `--param` overrides) and its road network and builds the engine.
+    pub fn load(
+        path: &Path,
+        params: &[(String, String)],
+        config: EngineConfig,
+    ) -> Result<Engine, LoadError> {
+        let scenario = Scenario::load_with_parameters(path, params).map_err(LoadError::Scenario)?;
+        Engine::build(&scenario, config).map_err(LoadError::Runtime)
+    }
+
+    /// Builds an engine for `scenario`, loading the road network it names.
+    pub fn build(scenario: &Scenario, config: EngineConfig) -> Result<Engine, RuntimeError> {
+        config.validate()?;
+        let network = road_network(scenario)?;
+        let built = build(scenario, network)?;
+        let storyboard = Storyboard::new(&built.desc)?;
+        Ok(Engine {
+            world: RefCell::new(built.world),
+            storyboard,
+            actions: built.actions,
+            reported: vec![false; built.conditions.len()],
+            conditions: built.conditions,
+            condition_states: ConditionStates::new(),
+            has_stop_trigger: built.desc.stop_trigger.is_some(),
+            config,
+            step: 0,
+            stopped: None,
+            counters: StageCounters::default(),
+        })
+    }
+
+    /// The world (entities, road network, values) as it is now.
+    pub fn world(&self) -> Ref<'_, World> {
+        self.world.borrow()
+    }
+
+    /// The storyboard and its element states.
+    pub fn storyboard(&self) -> &Storyboard {
+        &self.storyboard
+    }
+
+    /// The settings.
+    pub fn config(&self) -> &EngineConfig {
+        &self.config
+    }
+
+    /// Simulation time of the next step (s).
+    pub fn time(&self) -> f64 {
+        self.step as f64 * self.config.dt
+    }
+
+    /// Number of steps run.
+    pub fn steps(&self) -> u64 {
+        self.step
+    }
+
+    /// Why the run ended, once it has.
+    pub fn stop_reason(&self) -> Option<StopReason> {
+        self.stopped
+    }
+
+    /// Wall time per stage so far.
+    pub fn counters(&self) -> &StageCounters {
+        &self.counters
+    }
+
+    /// Runs one step at time t = steps · dt, in five fixed stages:
+    ///
+    /// 1. `triggers`: [`Storyboard::step`] at t: in the first step the Init actions start (and
+    ///    the instantaneous ones, such as TeleportAction and step-shaped SpeedAction, take effect
+    ///    and end) before any story trigger is evaluated; then stop triggers, start triggers and
+    ///    completions with the conditions measured at t. Actions started here take effect now.
+    /// 2. `actions`: every running action advances to t + dt (sets the speed and lateral target
+    ///    the controllers use over the step) and may end or be replaced in its domain.
+    /// 3. `controllers`: the default controller moves each entity over [t, t + dt], longitudinal
+    ///    then lateral.
+    /// 4. `measurements`: time becomes t + dt; road position, speed, velocity, acceleration,
+    ///    yaw rate and odometer are those after the move.
+    /// 5. `output`: the frame at t + dt and the step's event records go to the sinks (the first
+    ///    step also writes the frame at t = 0, after the Init actions).
+    ///
+    /// So a transition logged at t acts on the motion from t on, as in esmini's reference runs.
+    /// Returns the stop reason once the run is over; a step after that does nothing.
+    pub fn step(
+        &mut self,
+        frames: &mut dyn FrameSink,
+        events: &mut dyn EventSink,
+    ) -> Result<Option<StopReason>, RuntimeError> {
+        if self.stopped.is_some() {
+            return Ok(self.stopped);
+        }
+        let dt = self.config.dt;
+        let time = self.time();
+        let log = RefCell::new(Vec::new());
+        let mut errors = Vec::new();
+
+        // Stage 1: triggers and transitions.
+        let clock = Instant::now();
+        self.world.get_mut().time = time;
+        {
+            let mut conditions = Conditions {
+                world: &self.world,
+                conditions: &self.conditions,
+                states: &mut self.condition_states,
+                reported: &mut self.reported,
+                log: &log,
+            };
+            let mut host = HostCell {
+                table: &mut self.actions,
+                world: &self.world,
+                log: &log,
+                errors: &mut errors,
+                time,
+            };
+            self.storyboard
+                .step(time, dt, &mut conditions, &mut host, &mut Transitions(&log))?;
+        }
+        self.counters.triggers += clock.elapsed();
+        if let Some(e) = errors.into_iter().next() {
+            self.emit(&log.into_inner(), events)?;
+            return Err(e);
+        }
+        if self.storyboard.is_complete() {
+            self.stopped = Some(StopReason::StopTrigger);
+        } else if !self.has_stop_trigger && self.storyboard.stories_complete() {
+            self.stopped = Some(StopReason::StoriesComplete);
+        }
+        let world = self.world.get_mut();
+        if self.step == 0 || self.stopped.is_some() {
+            // The frame at t: the initial state after the Init actions, or the last one.
+            let clock = Instant::now();
+            frames
+                .frame(&Frame {
+                    time,
+                    step: self.step,
+                    entities: &world.entities,
+                })
+                .map_err(output_error("frames"))?;
+            self.counters.output += clock.elapsed();
+        }
+        if self.stopped.is_some() {
+            self.emit(&log.into_inner(), events)?;
+            return Ok(self.stopped);
+        }
+
+        // Stage 2: actions.
+        let clock = Instant::now();
+        self.actions.step_all(world, time, dt);
+        self.counters.actions += clock.elapsed();
+
+        // Stage 3: controllers.
+        let clock = Instant::now();
+        let net = &world.network;
+        for e in world.entities.iter_mut() {
+            move_entity(net, e, dt);
+        }
+        self.counters.controllers += clock.elapsed();
+
+        // Stage 4: time advance and measurements (taken by the controllers' move).
+        let clock = Instant::now();
+        self.step += 1;
+        let time = self.step as f64 * dt;
+        world.time = time;
+        self.counters.measurements += clock.elapsed();
+
+        // Stage 5: output.
+        let clock = Instant::now();
+        frames
+            .frame(&Frame {
+                time,
+                step: self.step,
+                entities: &world.entities,
+            })
+            .map_err(output_error("frames"))?;
+        self.emit(&log.into_inner(), events)?;
+        self.counters.output += clock.elapsed();
+
+        let end = self.config.end_time();
+        if time >= end - 1e-9 {
+            self.stopped = Some(match self.config.duration {
+                Some(d) if d <= self.config.max_time => StopReason::Duration,
+                _ => StopReason::TimeCap,
+            });
+        }
+        Ok(self.stopped)
+    }
+
+    fn emit(
+        &self,
+        records: &[EventRecord],
+        events: &mut dyn EventSink,
+    ) -> Result<(), RuntimeError> {
+        records
+            .iter()
+            .try_for_each(|r| events.event(r))
+            .map_err(output_error("events"))
+    }
+
+    /// Steps until the run ends; returns why. Sinks are finished at the end.
+    pub fn run(
+        &mut self,
+        frames: &mut dyn FrameSink,
+        events: &mut dyn EventSink,
+    ) -> Result<StopReason, RuntimeError> {
+        let reason = loop {
+            if let Some(reason) = self.step(frames, events)? {
+                break reason;
+            }
+        };
+        frames.finish().map_err(output_error("frames"))?;
+        events.finish().map_err(output_error("events"))?;
+        Ok(reason)
+    }
+}
+
+fn output_error(what: &'static str) -> impl Fn(std::io::Error) -> RuntimeError {
+    move |e| {
+        RuntimeError::new(RuntimeErrorKind::Output {
+            what: what.to_owned(),
+            message: e.to_string(),
+        })
+    }
+}
+
+/// The action host of stage 1, borrowing the world through its cell (conditions read it in
+/// the same storyboard step).
+struct HostCell<'a> {
+    table: &'a mut ActionTable,
+    world: &'a RefCell<World>,
+    log: &'a RefCell<Vec<EventRecord>>,
+    errors: &'a mut Vec<RuntimeError>,
+    time: f64,
+}
+
+impl HostCell<'_> {
+    fn with<R>(&mut self, f: impl FnOnce(&mut Host<'_>) -> R) -> R {
+        let mut world = self.world.borrow_mut();
+        let mut events = self.log.borrow_mut();
+        let mut host = Host {
+            table: self.table,
+            world: &mut world,
+            events: &mut events,
+            errors: self.errors,
+            time: self.time,
+        };
+        f(&mut host)
+    }
+}
+
+impl crate::storyboard::ActionHost for HostCell<'_> {
+    fn start(&mut self, id: crate::storyboard::ActionId) {
+        self.with(|h| h.start(id));
+    }
+
+    fn stop(&mut self, id: crate::storyboard::ActionId) {
+        self.with(|h| h.stop(id));
+    }
+
+    fn status(&self, id: crate::storyboard::ActionId) -> crate::storyboard::ActionStatus {
+        super::actions::status(self.table, id)
+    }
+}
+
+/// Why loading failed: the scenario (with its file position) or building the engine.
+#[derive(Debug, thiserror::Error)]
+pub enum LoadError {
+    /// The scenario did not load.
+    #[error(transparent)]
+    Scenario(scenario::Error),
+    /// The engine could not be built.
+    #[error(transparent)]
+    Runtime(RuntimeError),
+}

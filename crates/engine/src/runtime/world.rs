@@ -1,0 +1,283 @@
+//! The world of a running scenario (OpenSCENARIO 1.3 §8 "Scenario at runtime"): the road
+//! network, the entity store, simulation time, parameter and variable values and traffic signal
+//! states. It answers the read-only questions of positions and conditions through
+//! [`EntityQuery`] and [`ConditionContext`].
+
+use std::collections::{BTreeMap, HashMap};
+
+use opendrive::{normalize_angle, Direction, Pose, Real, RoadNetwork};
+use scenario::expr::Value;
+
+use super::entity::{Entity, EntityId, LaneTrack};
+use super::lanes::{lane_at, lane_direction, road_position};
+use crate::condition::ConditionContext;
+use crate::position::{EntityQuery, EntityView};
+use crate::storyboard::StateView;
+
+/// A located point farther than this (m) from every lane is off the road: the entity then
+/// moves straight along its heading instead of following a lane.
+const ON_ROAD_TOLERANCE: Real = 0.5;
+/// An entity whose heading differs from its lane's direction of travel by more than this
+/// (rad) crosses the road rather than following it.
+const ALIGNED_TOLERANCE: Real = 0.5;
+
+/// A heading given absolutely or relative to a lane's direction of travel (rad).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Heading {
+    Absolute(Real),
+    Relative(Real),
+}
+
+/// Road network, entities and global values of one run.
+#[derive(Debug)]
+pub struct World {
+    /// The road network.
+    pub network: RoadNetwork,
+    pub(crate) entities: Vec<Entity>,
+    names: HashMap<String, EntityId>,
+    /// Simulation time of the current step (s).
+    pub time: f64,
+    pub(crate) parameters: BTreeMap<String, Value>,
+    pub(crate) variables: BTreeMap<String, Value>,
+    pub(crate) signals: BTreeMap<String, String>,
+    pub(crate) signal_phases: BTreeMap<String, String>,
+}
+
+impl World {
+    /// A world on `network` with `entities` (ids must be their indices).
+    pub(crate) fn new(network: RoadNetwork, entities: Vec<Entity>) -> Self {
+        let names = entities
+            .iter()
+            .map(|e| (e.name.clone(), e.id))
+            .collect::<HashMap<_, _>>();
+        World {
+            network,
+            entities,
+            names,
+            time: 0.0,
+            parameters: BTreeMap::new(),
+            variables: BTreeMap::new(),
+            signals: BTreeMap::new(),
+            signal_phases: BTreeMap::new(),
+        }
+    }
+
+    /// All entities in declaration order.
+    pub fn entities(&self) -> &[Entity] {
+        &self.entities
+    }
+
+    /// The entity with handle `id`. Panics if `id` is not from this world.
+    pub fn entity(&self, id: EntityId) -> &Entity {
+        &self.entities[id.index()]
+    }
+
+    pub(crate) fn entity_mut(&mut self, id: EntityId) -> &mut Entity {
+        &mut self.entities[id.index()]
+    }
+
+    /// The handle of the entity called `name`.
+    pub fn id(&self, name: &str) -> Option<EntityId> {
+        self.names.get(name).copied()
+    }
+
+    /// The current value of a parameter.
+    pub fn parameter_value(&self, name: &str) -> Option<&Value> {
+        self.parameters.get(name)
+    }
+
+    /// The current value of a variable.
+    pub fn variable_value(&self, name: &str) -> Option<&Value> {
+        self.variables.get(name)
+    }
+
+    /// Places entity `id` at `pose`: finds its road position and, when it stands on a lane
+    /// roughly along the lane's direction of travel, the lane the default controller follows.
+    pub(crate) fn place(&mut self, id: EntityId, pose: Pose) {
+        let found = self.network.locate(pose.x, pose.y, Some(pose.h));
+        let e = &mut self.entities[id.index()];
+        e.placed = true;
+        e.pose = pose;
+        e.track = None;
+        e.road_position = None;
+        let Some(rp) = found else {
+            return;
+        };
+        let on_road = rp.distance <= ON_ROAD_TOLERANCE;
+        let rel = normalize_angle(rp.relative_heading);
+        let (direction, along) = if rel.abs() <= std::f64::consts::FRAC_PI_2 {
+            (Direction::Forward, rel)
+        } else {
+            (
+                Direction::Backward,
+                normalize_angle(rel - std::f64::consts::PI),
+            )
+        };
+        if on_road && along.abs() <= ALIGNED_TOLERANCE {
+            e.track = Some(LaneTrack {
+                road_id: rp.road_id.clone(),
+                lane_id: rp.lane_id,
+                s: rp.s,
+                t: rp.t,
+                offset: rp.offset,
+                direction,
+                relative_heading: along,
+                blend: None,
+            });
+        }
+        e.road_position = Some(rp);
+    }
+
+    /// Places entity `id` on lane `lane` of road `road_id` at `s`, `offset` m left of the lane
+    /// centre, with `heading` absolute or relative to the lane's direction of travel. Fails
+    /// with the road model's message.
+    pub(crate) fn place_on_lane(
+        &mut self,
+        id: EntityId,
+        road_id: &str,
+        lane: i32,
+        s: Real,
+        offset: Real,
+        heading: Heading,
+    ) -> Result<(), opendrive::Error> {
+        let mut pose = self.network.lane_pose(road_id, lane, s, offset)?;
+        let direction = lane_direction(&self.network, road_id, lane, s);
+        let travel = if direction == Direction::Forward {
+            pose.h
+        } else {
+            normalize_angle(pose.h + std::f64::consts::PI)
+        };
+        pose.h = match heading {
+            Heading::Absolute(h) => h,
+            Heading::Relative(h) => normalize_angle(travel + h),
+        };
+        self.place(id, pose);
+        // Keep the lane asked for, even where lanes overlap (junctions) and look-up chose
+        // another road.
+        let e = &mut self.entities[id.index()];
+        if let (Some(road), true) = (
+            self.network.road(road_id),
+            angle_difference_small(pose.h, travel),
+        ) {
+            let t = road.lane_span(lane, s)?.center() + offset;
+            e.track = Some(LaneTrack {
+                road_id: road_id.to_owned(),
+                lane_id: lane,
+                s,
+                t,
+                offset,
+                direction,
+                relative_heading: normalize_angle(pose.h - travel),
+                blend: None,
+            });
+            let road_h = if direction == Direction::Forward {
+                travel
+            } else {
+                normalize_angle(travel - std::f64::consts::PI)
+            };
+            if let Some(track) = &e.track {
+                e.road_position = road_position(&self.network, track, pose.h - road_h);
+            }
+        }
+        Ok(())
+    }
+
+    /// Lane id and offset at road coordinates, for positions given as (road, s, t).
+    pub(crate) fn lane_and_offset(&self, road_id: &str, s: Real, t: Real) -> Option<(i32, Real)> {
+        lane_at(self.network.road(road_id)?, s, t)
+    }
+
+    /// The view of entity `e` for positions and conditions.
+    pub(crate) fn view<'a>(&'a self, e: &'a Entity) -> EntityView<'a> {
+        EntityView {
+            road_position: e.road_position.as_ref(),
+            speed: e.speed,
+            velocity: e.velocity,
+            acceleration: e.acceleration,
+            odometer: e.odometer,
+            route: e.route.as_ref(),
+            ..EntityView::new(&e.name, e.kind.object_type(), e.pose, e.bounding_box)
+        }
+    }
+}
+
+fn angle_difference_small(a: Real, b: Real) -> bool {
+    opendrive::angle_difference(a, b).abs() <= ALIGNED_TOLERANCE
+}
+
+impl EntityQuery for World {
+    fn entity(&self, name: &str) -> Option<EntityView<'_>> {
+        let e = &self.entities[self.id(name)?.index()];
+        e.placed.then(|| self.view(e))
+    }
+
+    fn entities(&self) -> Box<dyn Iterator<Item = EntityView<'_>> + '_> {
+        Box::new(
+            self.entities
+                .iter()
+                .filter(|e| e.placed)
+                .map(|e| self.view(e)),
+        )
+    }
+
+    fn road_network(&self) -> &RoadNetwork {
+        &self.network
+    }
+}
+
+/// The world together with the storyboard's element states: what conditions read.
+pub struct ConditionWorld<'a> {
+    /// The world.
+    pub world: &'a World,
+    /// The storyboard's states at this moment of the step.
+    pub storyboard: StateView<'a>,
+}
+
+impl EntityQuery for ConditionWorld<'_> {
+    fn entity(&self, name: &str) -> Option<EntityView<'_>> {
+        EntityQuery::entity(self.world, name)
+    }
+
+    fn entities(&self) -> Box<dyn Iterator<Item = EntityView<'_>> + '_> {
+        EntityQuery::entities(self.world)
+    }
+
+    fn road_network(&self) -> &RoadNetwork {
+        &self.world.network
+    }
+}
+
+impl ConditionContext for ConditionWorld<'_> {
+    fn simulation_time(&self) -> f64 {
+        self.world.time
+    }
+
+    fn parameter(&self, name: &str) -> Option<Value> {
+        self.world.parameters.get(name).cloned()
+    }
+
+    fn variable(&self, name: &str) -> Option<Value> {
+        self.world.variables.get(name).cloned()
+    }
+
+    fn storyboard(&self) -> StateView<'_> {
+        self.storyboard
+    }
+
+    fn user_defined_value(&self, _name: &str) -> Option<Value> {
+        // No external value registry: the runtime runs headless.
+        None
+    }
+
+    fn traffic_signal_state(&self, name: &str) -> Option<&str> {
+        self.world.signals.get(name).map(String::as_str)
+    }
+
+    fn traffic_signal_controller_phase(&self, name: &str) -> Option<&str> {
+        self.world.signal_phases.get(name).map(String::as_str)
+    }
+
+    fn time_of_day(&self) -> Option<f64> {
+        None
+    }
+}
