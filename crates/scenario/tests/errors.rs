@@ -57,6 +57,7 @@ error_cases!(
     misspelt_child,
     unknown_storyboard_element,
     unknown_variable,
+    duplicate_entity,
 );
 
 #[test]
@@ -105,4 +106,25 @@ fn a_file_just_under_the_limit_of_whitespace_is_malformed_xml_not_a_hang() {
     assert!(matches!(err.kind(), ErrorKind::Xml { .. }), "{err}");
     // roxmltree reports a missing root element at the start of the document.
     assert_eq!((err.pos().line, err.pos().col), (1, 1), "{err}");
+}
+
+#[test]
+fn deeply_nested_elements_do_not_overflow_the_stack() {
+    let dir = std::env::temp_dir().join(format!("oscsim-scenario-deep-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("deep.xosc");
+    // valid.xosc with 200 000 nested <Deep> elements in the Storyboard.
+    let valid = std::fs::read_to_string(fixture("valid.xosc")).unwrap();
+    let depth = 200_000;
+    let nest = format!("{}{}", "<Deep>".repeat(depth), "</Deep>".repeat(depth));
+    let text = valid.replacen("  <Storyboard>\n", &format!("  <Storyboard>{nest}\n"), 1);
+    std::fs::write(&path, text).unwrap();
+    let err = Scenario::load(&path).unwrap_err();
+    std::fs::remove_dir_all(&dir).unwrap();
+    // The Storyboard's child check stops at the first <Deep>: line 18 of valid.xosc, after the
+    // 2 spaces and 12 characters of `  <Storyboard>`, column 15.
+    assert_eq!((err.pos().line, err.pos().col), (18, 15), "{err}");
+    assert!(err
+        .to_string()
+        .starts_with("expected one of Init, Story, StopTrigger in Storyboard, found element Deep"));
 }
