@@ -276,9 +276,17 @@ impl<'a> Ctx<'a> {
     pub fn declared_param(&mut self, n: Node<'a>, name: &'static str) -> Result<String> {
         let param = self.param_name(n, name)?;
         if self.lookup(&param).is_none() {
-            let pos = self.raw_attr(n, name).map_or_else(|| self.pos(n), |a| self.attr_pos(&a));
+            let pos = self
+                .raw_attr(n, name)
+                .map_or_else(|| self.pos(n), |a| self.attr_pos(&a));
             let attribute = format!("{}@{name}", n.tag_name().name());
-            return Err(Error::new(ErrorKind::UnknownParameter { name: param, attribute }, pos));
+            return Err(Error::new(
+                ErrorKind::UnknownParameter {
+                    name: param,
+                    attribute,
+                },
+                pos,
+            ));
         }
         Ok(param)
     }
