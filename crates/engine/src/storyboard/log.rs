@@ -1,10 +1,12 @@
 //! The record of storyboard state transitions, one per transition (OpenSCENARIO 1.3 §8.2), for
 //! the run's event log.
 //!
-//! A [`TransitionRecord`] serializes (serde) to the object of the run's `--events FILE.jsonl`,
-//! `{"time", "element", "kind", "from", "transition", "to"}`, with the standard's literal names;
+//! A [`TransitionRecord`] serializes (serde) to the object `{"time", "element", "kind", "from",
+//! "transition", "to"}` with the standard's literal names (`startTransition`, `runningState`, …);
 //! its `Display` is the line format of esmini's reference logs,
-//! `6.500 CutInEvent standbyState -> startTransition -> runningState`.
+//! `6.500 CutInEvent standbyState -> startTransition -> runningState`. (The run's
+//! `--events FILE.jsonl`, written by `engine::output`, shortens the transition to `start`,
+//! `end`, `stop`, `skip`, the form the corpus's `compare_run.py` reads.)
 
 use std::fmt;
 
