@@ -1,13 +1,44 @@
 //! Conditions at runtime: the raw value of every OpenSCENARIO 1.3 §7.6 condition
-//! (ByValueCondition and ByEntityCondition); edges and delay are the storyboard's job.
+//! (ByValueCondition and ByEntityCondition), measured through the OpenSCENARIO 2.0 §8.7
+//! methods of `domain`; edges and delay are the storyboard's job. Written by hand: the
+//! semantics are the standard's own.
 //!
 //! | module | implements |
 //! | --- | --- |
 //! | `context` | `ConditionContext`: what a condition may ask the runtime |
 //! | `state` | `ConditionState`: memory of the duration conditions, keyed by condition id |
+//! | `error` | `ConditionError`, `ConditionErrorKind` |
+//! | `rule` | XSD `Rule` on numbers (with the equalTo tolerance) and typed values |
+//! | `time_of_day` | xsd:dateTime → seconds since the epoch |
+//! | `by_value` | SimulationTime, Parameter, Variable, UserDefinedValue, StoryboardElementState, TimeOfDay, TrafficSignal, TrafficSignalController |
+//! | `measure` | distances: freespace, coordinateSystem, relativeDistanceType; their rates |
+//! | `motion` | Speed, RelativeSpeed, Acceleration, StandStill, TraveledDistance |
+//! | `road_state` | EndOfRoad, Offroad, Collision |
+//! | `spacing` | Distance, RelativeDistance, ReachPosition, TimeHeadway, TimeToCollision |
+//! | `clearance` | RelativeClearance |
+//! | `angle` | Angle, RelativeAngle |
+//! | `by_entity` | TriggeringEntities any / all, dispatch of EntityCondition |
+//! | `evaluate` | `evaluate`: the front door |
 
+mod angle;
+mod by_entity;
+mod by_value;
+mod clearance;
 mod context;
+mod error;
+mod evaluate;
+mod measure;
+mod motion;
+mod road_state;
+mod rule;
+mod spacing;
 mod state;
+mod time_of_day;
 
 pub use context::ConditionContext;
+pub use error::{ConditionError, ConditionErrorKind};
+pub use evaluate::evaluate;
+pub use motion::{DURATION_TOLERANCE, STAND_STILL_SPEED};
+pub use road_state::END_OF_ROAD_TOLERANCE;
+pub use rule::{compare, EQUAL_TOLERANCE};
 pub use state::{ConditionState, ConditionStates};

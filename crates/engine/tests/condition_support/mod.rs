@@ -311,3 +311,65 @@ impl ConditionContext for FakeWorld {
         self.time_of_day
     }
 }
+
+/// A condition of `kind` named "C" (edge none, no delay) written at `test.xosc:7:9`.
+pub fn condition(kind: scenario::ConditionKind) -> scenario::Condition {
+    scenario::Condition {
+        name: "C".into(),
+        condition_edge: scenario::ConditionEdge::None,
+        delay: 0.0,
+        kind,
+        pos: here(),
+    }
+}
+
+/// A ByEntityCondition on `entities`, `all` or any of them.
+pub fn by_entity(
+    entities: &[&str],
+    all: bool,
+    entity_condition: scenario::EntityCondition,
+) -> scenario::Condition {
+    condition(scenario::ConditionKind::ByEntity {
+        triggering_entities: scenario::TriggeringEntities {
+            rule: if all {
+                scenario::TriggeringEntitiesRule::All
+            } else {
+                scenario::TriggeringEntitiesRule::Any
+            },
+            entity_refs: entities.iter().map(|s| s.to_string()).collect(),
+        },
+        entity_condition,
+    })
+}
+
+/// A distance measure.
+pub fn measure(
+    freespace: bool,
+    coordinate_system: Option<scenario::CoordinateSystem>,
+    relative_distance_type: Option<scenario::RelativeDistanceType>,
+) -> scenario::DistanceMeasure {
+    scenario::DistanceMeasure {
+        freespace,
+        coordinate_system,
+        relative_distance_type,
+        routing_algorithm: None,
+    }
+}
+
+/// The raw value of `c` in `w` with a fresh memory; panics on an evaluation error.
+pub fn eval(w: &FakeWorld, c: &scenario::Condition) -> bool {
+    let mut state = engine::condition::ConditionState::new();
+    match engine::condition::evaluate(c, w, &mut state) {
+        Ok(v) => v,
+        Err(e) => panic!("condition failed: {e}"),
+    }
+}
+
+/// The error of evaluating `c` in `w`, as text.
+pub fn eval_error(w: &FakeWorld, c: &scenario::Condition) -> String {
+    let mut state = engine::condition::ConditionState::new();
+    match engine::condition::evaluate(c, w, &mut state) {
+        Ok(v) => panic!("expected an error, got {v}"),
+        Err(e) => e.to_string(),
+    }
+}

@@ -1,0 +1,137 @@
+//! ByValueCondition (OpenSCENARIO 1.3 §7.6.2, XSD `ByValueCondition`): conditions on the
+//! simulation's values rather than on entities.
+//!
+//! * SimulationTimeCondition: simulation time `rule` value (s).
+//! * ParameterCondition, VariableCondition, UserDefinedValueCondition: the current value
+//!   `rule` the condition's value read as the same type (`rule::compare_value`). An
+//!   undeclared parameter or variable is an error; a user-defined value nothing has
+//!   registered reads false (it may appear later, from outside).
+//! * StoryboardElementStateCondition: a state (standby, running, complete) holds while the
+//!   element is in it; a transition (start, end, stop, skip) holds in the step it happens and
+//!   the next (`StateView::transition_happened`: the second step lets elements earlier in
+//!   document order see it).
+//! * TimeOfDayCondition: the scenario's time of day `rule` the condition's dateTime; false
+//!   while no TimeOfDay has been set.
+//! * TrafficSignalCondition, TrafficSignalControllerCondition: the signal's state / the
+//!   controller's phase equals the one named (whitespace around it ignored); false for an
+//!   unknown signal or controller.
+
+use scenario::{ByValueCondition, SourcePos, StoryboardElementState, StoryboardElementType};
+
+use super::rule::{compare, compare_value};
+use super::time_of_day::parse_date_time;
+use super::{ConditionContext, ConditionError, ConditionErrorKind};
+use crate::storyboard::{ElementKind, ElementState, Transition};
+
+/// The raw value of a ByValueCondition.
+pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
+    condition: &ByValueCondition,
+    ctx: &C,
+    pos: &SourcePos,
+) -> Result<bool, ConditionError> {
+    let err = |kind| ConditionError::new(kind, pos);
+    match condition {
+        ByValueCondition::SimulationTime { value, rule } => {
+            Ok(compare(ctx.simulation_time(), *rule, *value))
+        }
+        ByValueCondition::Parameter {
+            parameter_ref,
+            rule,
+            value,
+        } => {
+            let current = ctx
+                .parameter(parameter_ref)
+                .ok_or_else(|| err(ConditionErrorKind::UnknownParameter(parameter_ref.clone())))?;
+            compare_value(&current, *rule, value).map_err(err)
+        }
+        ByValueCondition::Variable {
+            variable_ref,
+            rule,
+            value,
+        } => {
+            let current = ctx
+                .variable(variable_ref)
+                .ok_or_else(|| err(ConditionErrorKind::UnknownVariable(variable_ref.clone())))?;
+            compare_value(&current, *rule, value).map_err(err)
+        }
+        ByValueCondition::UserDefinedValue { name, rule, value } => {
+            match ctx.user_defined_value(name) {
+                Some(current) => compare_value(&current, *rule, value).map_err(err),
+                None => Ok(false),
+            }
+        }
+        ByValueCondition::StoryboardElementState {
+            storyboard_element_type,
+            storyboard_element_ref,
+            state,
+        } => element_state(
+            ctx,
+            *storyboard_element_type,
+            storyboard_element_ref,
+            *state,
+        )
+        .map_err(err),
+        ByValueCondition::TimeOfDay { rule, date_time } => {
+            let wanted = parse_date_time(date_time)
+                .ok_or_else(|| err(ConditionErrorKind::InvalidDateTime(date_time.clone())))?;
+            Ok(ctx
+                .time_of_day()
+                .is_some_and(|now| compare(now, *rule, wanted)))
+        }
+        ByValueCondition::TrafficSignal { name, state } => Ok(ctx
+            .traffic_signal_state(name)
+            .is_some_and(|s| s.trim() == state.trim())),
+        ByValueCondition::TrafficSignalController {
+            traffic_signal_controller_ref,
+            phase,
+        } => Ok(ctx
+            .traffic_signal_controller_phase(traffic_signal_controller_ref)
+            .is_some_and(|p| p.trim() == phase.trim())),
+        _ => Err(err(ConditionErrorKind::Unsupported {
+            expected: "a ByValueCondition of OpenSCENARIO 1.3",
+            found: "another kind",
+        })),
+    }
+}
+
+/// The storyboard's element kind and XSD literal for a `storyboardElementType`.
+fn element_kind(t: StoryboardElementType) -> (ElementKind, &'static str) {
+    match t {
+        StoryboardElementType::Story => (ElementKind::Story, "story"),
+        StoryboardElementType::Act => (ElementKind::Act, "act"),
+        StoryboardElementType::ManeuverGroup => (ElementKind::ManeuverGroup, "maneuverGroup"),
+        StoryboardElementType::Maneuver => (ElementKind::Maneuver, "maneuver"),
+        StoryboardElementType::Event => (ElementKind::Event, "event"),
+        // Action, and any type a later version adds, name Actions.
+        _ => (ElementKind::Action, "action"),
+    }
+}
+
+/// StoryboardElementStateCondition.
+fn element_state<C: ConditionContext + ?Sized>(
+    ctx: &C,
+    element_type: StoryboardElementType,
+    name: &str,
+    state: StoryboardElementState,
+) -> Result<bool, ConditionErrorKind> {
+    let view = ctx.storyboard();
+    let (kind, literal) = element_kind(element_type);
+    let id = view
+        .find_kind(kind, name)
+        .ok_or_else(|| ConditionErrorKind::UnknownElement {
+            kind: literal,
+            name: name.to_string(),
+        })?;
+    let in_state = |s| view.state(id) == s;
+    let happened = |t| view.transition_happened(id, t);
+    Ok(match state {
+        StoryboardElementState::StandbyState => in_state(ElementState::Standby),
+        StoryboardElementState::RunningState => in_state(ElementState::Running),
+        StoryboardElementState::CompleteState => in_state(ElementState::Complete),
+        StoryboardElementState::StartTransition => happened(Transition::Start),
+        StoryboardElementState::EndTransition => happened(Transition::End),
+        StoryboardElementState::StopTransition => happened(Transition::Stop),
+        StoryboardElementState::SkipTransition => happened(Transition::Skip),
+        _ => false,
+    })
+}

@@ -1,0 +1,45 @@
+//! The front door: [`evaluate`] gives the raw value of one `scenario::Condition`
+//! (OpenSCENARIO 1.3 §7.6.1 "Condition"); `conditionEdge` and `delay` are applied by the
+//! storyboard, not here.
+
+use scenario::{Condition, ConditionKind};
+
+use super::{
+    by_entity, by_value, ConditionContext, ConditionError, ConditionErrorKind, ConditionState,
+};
+
+/// The raw value of `condition` now, read from `ctx`. `state` is this condition's memory
+/// (the runtime keeps one per condition, e.g. in a [`ConditionStates`](super::ConditionStates)
+/// store keyed by its `ConditionId`); only the duration conditions use it.
+///
+/// Errors name the condition's file, line and column: an unknown entity, parameter, variable
+/// or storyboard element, a value of the wrong type, a position that cannot be resolved, or
+/// a measurement oscsim does not support. A measurement that merely has no answer now (an
+/// entity off the roads for a road distance, objects not closing for a TTC) is false, not an
+/// error.
+pub fn evaluate<C: ConditionContext + ?Sized>(
+    condition: &Condition,
+    ctx: &C,
+    state: &mut ConditionState,
+) -> Result<bool, ConditionError> {
+    match &condition.kind {
+        ConditionKind::ByValue(c) => by_value::evaluate(c, ctx, &condition.pos),
+        ConditionKind::ByEntity {
+            triggering_entities,
+            entity_condition,
+        } => by_entity::evaluate(
+            triggering_entities,
+            entity_condition,
+            ctx,
+            state,
+            &condition.pos,
+        ),
+        _ => Err(ConditionError::new(
+            ConditionErrorKind::Unsupported {
+                expected: "ByValueCondition or ByEntityCondition",
+                found: "another kind",
+            },
+            &condition.pos,
+        )),
+    }
+}

@@ -1,0 +1,274 @@
+//! Distances between a triggering entity and a target (an entity or a position), as the
+//! distance-based conditions measure them (OpenSCENARIO 1.3 §6.4 "Distances"; attributes
+//! `freespace`, `coordinateSystem`, `relativeDistanceType`, `routingAlgorithm`), through the
+//! OpenSCENARIO 2.0 §8.7 methods of `domain`.
+//!
+//! Who measures and with which sign (pitfalls 12–13): the triggering entity measures, in its
+//! own frame. Longitudinal and lateral values are signed, positive when the target lies ahead
+//! of / left of the triggering entity; Euclidean values are ≥ 0. The conditions compare the
+//! magnitude (§6.4: "distances [are] greater than or equal to zero"); TimeHeadway and
+//! TimeToCollision use the sign to tell ahead from behind and closing from opening.
+//!
+//! | coordinateSystem | longitudinal / lateral | euclidianDistance |
+//! | --- | --- | --- |
+//! | entity (default) | §8.7.2.1.1 object_distance() on the entity's x / y axis; freespace: gap between the boxes' intervals on that axis, 0 when they overlap | 3D distance of the reference points; freespace: 2D distance between the boxes' ground footprints, 0 when they overlap |
+//! | road, lane | §8.7.5.1.3 space_gap() along the road s / t (boxes when freespace, points otherwise), turned to the triggering entity's direction of travel; across roads along the shortest road path | √(ds² + dt²) of those |
+//! | world | Δx / Δy of the world axes (box intervals when freespace) | as entity |
+//! | trajectory | not supported (the entity's trajectory is not part of `EntityView`) | not supported |
+//!
+//! Lane coordinates are measured as road coordinates (along the reference line, not the lane
+//! centre line), and every `routingAlgorithm` uses the shortest path along roads: both noted
+//! in docs/conformance.md. A measurement that needs a road position fails softly (`None`,
+//! the condition is false) while an entity is off the roads or the roads are not joined.
+
+use opendrive::{Pose, Real, RoadNetwork};
+use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType};
+
+use super::ConditionErrorKind;
+use crate::domain::{
+    BoundingBox, DistanceDirection, DistanceMode, MovableObject, Physical, PhysicalObject,
+    TrafficParticipant,
+};
+use crate::position::{local_to_world, EntityView};
+
+/// Half-width of the central difference that turns a distance into its rate (s).
+const RATE_STEP: Real = 1e-3;
+
+/// What a distance is measured to.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Target<'a> {
+    /// Another entity, with its box and motion.
+    Entity(EntityView<'a>),
+    /// A fixed point (a resolved Position), with no extent.
+    Point(Pose),
+}
+
+/// A box of no extent at the reference point.
+fn point_box() -> BoundingBox {
+    // Invariant: BoundingBox::new accepts finite, non-negative values, and these are 0.
+    BoundingBox::new(crate::domain::Position3d::ZERO, 0.0, 0.0, 0.0).expect("zero box is valid")
+}
+
+impl Target<'_> {
+    /// The target as a §8.7 object with its velocity (`freespace`: with its box).
+    fn participant(&self, freespace: bool) -> TrafficParticipant {
+        match self {
+            Target::Entity(e) => participant(e, freespace),
+            Target::Point(pose) => TrafficParticipant::new(
+                MovableObject::new(PhysicalObject::new(point_box(), *pose)),
+                Vec::new(),
+            ),
+        }
+    }
+
+    /// The target moved along its velocity for `dt` seconds.
+    fn advanced(&self, dt: Real) -> Self {
+        match self {
+            Target::Entity(e) => Target::Entity(advanced(e, dt)),
+            Target::Point(p) => Target::Point(*p),
+        }
+    }
+}
+
+/// The entity as a §8.7 traffic participant; with a point box unless `freespace`.
+fn participant(e: &EntityView<'_>, freespace: bool) -> TrafficParticipant {
+    let mut p = e.traffic_participant();
+    if !freespace {
+        p.movable.object.bounding_box = point_box();
+    }
+    p
+}
+
+/// The entity moved along its world velocity for `dt` seconds (pose only).
+pub(crate) fn advanced<'a>(e: &EntityView<'a>, dt: Real) -> EntityView<'a> {
+    let v = e.velocity.translational;
+    let [vx, vy, vz] = local_to_world(&e.pose, v.x, v.y, v.z);
+    let mut moved = *e;
+    moved.pose.x += vx * dt;
+    moved.pose.y += vy * dt;
+    moved.pose.z += vz * dt;
+    moved
+}
+
+/// The world velocity of an entity (m/s).
+pub(crate) fn world_velocity(e: &EntityView<'_>) -> [Real; 3] {
+    let v = e.velocity.translational;
+    local_to_world(&e.pose, v.x, v.y, v.z)
+}
+
+/// Signed distance from `from` to `target` under `measure` (see the module table); `None`
+/// when a road-based measure has no answer now.
+pub(crate) fn distance(
+    network: &RoadNetwork,
+    from: &EntityView<'_>,
+    target: &Target<'_>,
+    measure: &DistanceMeasure,
+) -> Result<Option<Real>, ConditionErrorKind> {
+    let cs = measure
+        .coordinate_system
+        .unwrap_or(CoordinateSystem::Entity);
+    let ty = measure
+        .relative_distance_type
+        .unwrap_or(RelativeDistanceType::EuclidianDistance);
+    let free = measure.freespace;
+    let a = participant(from, free);
+    let b = target.participant(free);
+    let mode = if free {
+        DistanceMode::BoundingBoxes
+    } else {
+        DistanceMode::ReferencePoints
+    };
+    let along = |d| match d {
+        RelativeDistanceType::Longitudinal => Some(DistanceDirection::Longitudinal),
+        RelativeDistanceType::Lateral => Some(DistanceDirection::Lateral),
+        _ => None,
+    };
+    match cs {
+        CoordinateSystem::Entity | CoordinateSystem::World => match along(ty) {
+            Some(dir) if cs == CoordinateSystem::Entity => {
+                Ok(Some(a.object_distance(&b, dir, mode)))
+            }
+            Some(dir) => {
+                // World axes: the same measure in a frame at the entity's point, heading 0.
+                let mut world_frame = a.physical_object().clone();
+                world_frame.pose.h = 0.0;
+                world_frame.pose.p = 0.0;
+                world_frame.pose.r = 0.0;
+                if !free {
+                    world_frame.bounding_box = point_box();
+                }
+                Ok(Some(world_frame.object_distance(&b, dir, mode)))
+            }
+            None if free => Ok(Some(footprint_distance(
+                a.physical_object(),
+                b.physical_object(),
+            ))),
+            None => {
+                let (p, q) = (&from.pose, &b.physical_object().pose);
+                Ok(Some(
+                    ((q.x - p.x).powi(2) + (q.y - p.y).powi(2) + (q.z - p.z).powi(2)).sqrt(),
+                ))
+            }
+        },
+        CoordinateSystem::Road | CoordinateSystem::Lane => {
+            // space_gap is positive when the caller is ahead along +s (left along +t); turned
+            // here to "target ahead / left of the triggering entity's travel".
+            let travel = match from.road_position {
+                Some(rp) if rp.relative_heading.cos() < 0.0 => -1.0,
+                _ => 1.0,
+            };
+            let gap = |dir| a.space_gap(network, &b, dir).ok().map(|g| -travel * g);
+            Ok(match along(ty) {
+                Some(dir) => gap(dir),
+                None => gap(DistanceDirection::Longitudinal)
+                    .zip(gap(DistanceDirection::Lateral))
+                    .map(|(s, t)| s.hypot(t)),
+            })
+        }
+        CoordinateSystem::Trajectory => Err(ConditionErrorKind::Unsupported {
+            expected: "coordinateSystem entity, road, lane or world",
+            found: "coordinateSystem trajectory",
+        }),
+        _ => Err(ConditionErrorKind::Unsupported {
+            expected: "coordinateSystem entity, road, lane or world",
+            found: "another coordinate system",
+        }),
+    }
+}
+
+/// The rate of change of |distance| (m/s) under the same measure, by a central difference of
+/// ±`RATE_STEP` s with both objects moving along their current velocities; `None` when either
+/// sample has no answer.
+pub(crate) fn distance_rate(
+    network: &RoadNetwork,
+    from: &EntityView<'_>,
+    target: &Target<'_>,
+    measure: &DistanceMeasure,
+) -> Result<Option<Real>, ConditionErrorKind> {
+    let later = distance(
+        network,
+        &advanced(from, RATE_STEP),
+        &target.advanced(RATE_STEP),
+        measure,
+    )?;
+    let earlier = distance(
+        network,
+        &advanced(from, -RATE_STEP),
+        &target.advanced(-RATE_STEP),
+        measure,
+    )?;
+    Ok(later
+        .zip(earlier)
+        .map(|(l, e)| (l.abs() - e.abs()) / (2.0 * RATE_STEP)))
+}
+
+/// The time until `from`'s box touches the target's, both keeping their velocities
+/// (§8.7.5.1.1 time_to_collision()); `None` when they never do.
+pub(crate) fn box_time_to_collision(from: &EntityView<'_>, target: &Target<'_>) -> Option<Real> {
+    let b = target.participant(true);
+    from.traffic_participant().time_to_collision(&b)
+}
+
+/// The 2D distance between the ground footprints of two objects' boxes, 0 when they touch or
+/// overlap: the smallest distance from a corner of one rectangle to an edge of the other
+/// (two disjoint convex polygons are closest at a vertex of one of them).
+pub(crate) fn footprint_distance(a: &PhysicalObject, b: &PhysicalObject) -> Real {
+    let ca = a.bounding_box.footprint(&a.pose).corners();
+    let cb = b.bounding_box.footprint(&b.pose).corners();
+    if overlap(&ca, &cb) {
+        return 0.0;
+    }
+    let mut best = Real::INFINITY;
+    for (p, poly) in ca
+        .iter()
+        .map(|p| (p, &cb))
+        .chain(cb.iter().map(|p| (p, &ca)))
+    {
+        for i in 0..4 {
+            best = best.min(point_segment(*p, poly[i], poly[(i + 1) % 4]));
+        }
+    }
+    best
+}
+
+/// Separating-axis test of two convex quadrilaterals (corners in order around each).
+fn overlap(a: &[[Real; 2]; 4], b: &[[Real; 2]; 4]) -> bool {
+    for poly in [a, b] {
+        for i in 0..4 {
+            let (p, q) = (poly[i], poly[(i + 1) % 4]);
+            let n = [q[1] - p[1], p[0] - q[0]];
+            if n[0] == 0.0 && n[1] == 0.0 {
+                continue;
+            }
+            let proj = |c: &[Real; 2]| c[0] * n[0] + c[1] * n[1];
+            let (amin, amax) = a
+                .iter()
+                .map(proj)
+                .fold((Real::INFINITY, Real::NEG_INFINITY), |(l, h), v| {
+                    (l.min(v), h.max(v))
+                });
+            let (bmin, bmax) = b
+                .iter()
+                .map(proj)
+                .fold((Real::INFINITY, Real::NEG_INFINITY), |(l, h), v| {
+                    (l.min(v), h.max(v))
+                });
+            if amax < bmin || bmax < amin {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Distance from point `p` to the segment `a`–`b`.
+fn point_segment(p: [Real; 2], a: [Real; 2], b: [Real; 2]) -> Real {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    let u = if len2 > 0.0 {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p[0] - a[0] - u * dx).hypot(p[1] - a[1] - u * dy)
+}
