@@ -1,6 +1,6 @@
 //! Bad input never panics or hangs: each fixture `tests/files/errors/NAME.xosc` fails with
 //! the exact message and 1-based line:column in `NAME.expected` ("line:col: message", the
-//! file path left out and the fixture folder written `$DIR/` so the text does not depend on
+//! file path left out and other paths written from `tests/files` as `$FILES/` so the text does not depend on
 //! the checkout). The positions were counted by hand in the fixtures; `tests/files/errors/
 //! README.md` says what each position points at.
 
@@ -17,10 +17,13 @@ fn check(name: &str) {
     let expected = std::fs::read_to_string(fixture(&format!("{name}.expected"))).unwrap();
     let err = Scenario::load(&path).expect_err("the fixture is broken on purpose");
     assert!(err.pos().file.ends_with(format!("{name}.xosc")), "{err}");
-    // Paths in messages are shown relative to the fixture folder, as `$DIR/…`.
-    let dir = fixture("").display().to_string();
+    // Paths in messages are shown relative to `tests/files`, as `$FILES/…`.
+    let files = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/files/")
+        .display()
+        .to_string();
     let actual =
-        format!("{}:{}: {}", err.pos().line, err.pos().col, err.kind()).replace(&dir, "$DIR/");
+        format!("{}:{}: {}", err.pos().line, err.pos().col, err.kind()).replace(&files, "$FILES/");
     assert_eq!(actual, expected.trim_end(), "{name}");
     // Display appends "at file:line:col".
     let shown = err.to_string();

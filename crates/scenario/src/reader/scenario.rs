@@ -263,9 +263,24 @@ fn load_distribution<'a>(
 }
 
 /// `written` relative to the directory of `base` (absolute paths stay as they are).
+/// `..` steps are folded into the path as text (no file system access, so links are not
+/// followed), which keeps messages short: `xosc/../xodr/a.xodr` reads `xodr/a.xodr`.
 pub(crate) fn resolve_path(base: &Path, written: &str) -> PathBuf {
+    use std::path::Component;
     let dir = base.parent().unwrap_or_else(|| Path::new(""));
-    dir.join(written.trim())
+    let mut out = PathBuf::new();
+    for c in dir.join(written.trim()).components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir
+                if matches!(out.components().next_back(), Some(Component::Normal(_))) =>
+            {
+                out.pop();
+            }
+            other => out.push(other),
+        }
+    }
+    out
 }
 
 /// Reads XSD `FileHeader`.
@@ -536,4 +551,28 @@ fn read_road_network<'a>(ctx: &mut Ctx<'a>, n: Node<'a>, path: &Path) -> Result<
         }
     }
     Ok(road)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::resolve_path;
+    use std::path::Path;
+
+    #[test]
+    fn resolved_paths_fold_parent_steps_but_keep_leading_ones() {
+        let base = Path::new("/c/esmini/xosc/cut-in.xosc");
+        assert_eq!(
+            resolve_path(base, "../xodr/e6mini.xodr"),
+            Path::new("/c/esmini/xodr/e6mini.xodr")
+        );
+        assert_eq!(
+            resolve_path(base, "./Catalogs/V"),
+            Path::new("/c/esmini/xosc/Catalogs/V")
+        );
+        assert_eq!(
+            resolve_path(Path::new("a.xosc"), "../../r.xodr"),
+            Path::new("../../r.xodr")
+        );
+        assert_eq!(resolve_path(base, "/abs/r.xodr"), Path::new("/abs/r.xodr"));
+    }
 }
