@@ -373,3 +373,18 @@ pub fn eval_error(w: &FakeWorld, c: &scenario::Condition) -> String {
         Err(e) => e.to_string(),
     }
 }
+
+/// The raw value of `c` at simulation time `t`, with the condition's memory `state` kept by
+/// the caller across calls (duration conditions).
+pub fn eval_at(
+    w: &mut FakeWorld,
+    t: f64,
+    c: &scenario::Condition,
+    state: &mut engine::condition::ConditionState,
+) -> bool {
+    w.time = t;
+    match engine::condition::evaluate(c, &*w, state) {
+        Ok(v) => v,
+        Err(e) => panic!("condition failed: {e}"),
+    }
+}

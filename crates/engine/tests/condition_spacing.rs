@@ -1,0 +1,237 @@
+//! Distance, RelativeDistance, ReachPosition, TimeHeadway and TimeToCollision
+//! (OpenSCENARIO 1.3 §6.4, §7.6.3), hand-computed on esmini's straight_500m.xodr.
+//!
+//! Set-up: road "1" along +x; lane −1's centre at y = −1.535 (driven towards +x), lane 1's at
+//! y = +1.535 (towards −x). Cars have a 4.5 m × 1.8 m box whose centre is 1.4 m ahead of the
+//! rear axle, so a car heading +x at x spans [x − 0.85, x + 3.65].
+//! Ego at x = 50 and Lead at x = 80, both on lane −1 heading +x:
+//! reference points 30 m apart; boxes [49.15, 53.65] and [79.15, 83.65], gap 25.5 m.
+
+mod condition_support;
+
+use condition_support::{at, by_entity, corpus_road, eval, measure, FakeWorld};
+use scenario::{
+    CoordinateSystem, DistanceMeasure, EntityCondition, PositionKind, RelativeDistanceType, Rule,
+    TimeToCollisionTarget,
+};
+
+use CoordinateSystem::{Entity, Road};
+use RelativeDistanceType::{EuclidianDistance, Lateral, Longitudinal};
+
+fn world() -> FakeWorld {
+    let mut w = FakeWorld::new(corpus_road("esmini/xodr/straight_500m.xodr"));
+    w.place_on_lane("Ego", "1", -1, 50.0, true);
+    w.place_on_lane("Lead", "1", -1, 80.0, true);
+    w
+}
+
+fn rel_distance(m: DistanceMeasure, value: f64) -> scenario::Condition {
+    by_entity(
+        &["Ego"],
+        false,
+        EntityCondition::RelativeDistance {
+            entity_ref: "Lead".into(),
+            value,
+            rule: Rule::EqualTo,
+            measure: m,
+        },
+    )
+}
+
+#[test]
+fn relative_distance_in_each_measure() {
+    let mut w = world();
+    for (m, d) in [
+        (measure(false, None, None), 30.0),
+        (measure(false, Some(Entity), Some(Longitudinal)), 30.0),
+        (measure(true, Some(Entity), Some(Longitudinal)), 25.5),
+        (measure(true, None, Some(EuclidianDistance)), 25.5),
+        (measure(false, Some(Road), Some(Longitudinal)), 30.0),
+        (measure(true, Some(Road), Some(Longitudinal)), 25.5),
+    ] {
+        assert!(eval(&w, &rel_distance(m, d)), "{m:?} should give {d}");
+        assert!(
+            !eval(&w, &rel_distance(m, d + 0.01)),
+            "{m:?} should not give {}",
+            d + 0.01
+        );
+    }
+    // Lead on lane 1 beside Ego (same x): lateral 3.07 between reference points; the boxes
+    // (1.8 m wide) leave 3.07 − 1.8 = 1.27 m. Euclidean between the points: 3.07.
+    w.place_on_lane("Lead", "1", 1, 50.0, true);
+    for (m, d) in [
+        (measure(false, Some(Entity), Some(Lateral)), 3.07),
+        (measure(true, Some(Entity), Some(Lateral)), 1.27),
+        (measure(false, Some(Road), Some(Lateral)), 3.07),
+        (measure(false, None, None), 3.07),
+    ] {
+        assert!(eval(&w, &rel_distance(m, d)), "{m:?} should give {d}");
+    }
+}
+
+#[test]
+fn distance_to_a_position_and_reach_position() {
+    let w = world();
+    let target = || {
+        at(PositionKind::World {
+            x: 100.0,
+            y: -1.535,
+            z: Some(0.0),
+            h: None,
+            p: None,
+            r: None,
+        })
+    };
+    let c = by_entity(
+        &["Ego"],
+        false,
+        EntityCondition::Distance {
+            position: target(),
+            value: 50.0,
+            rule: Rule::LessOrEqual,
+            measure: measure(false, None, None),
+        },
+    );
+    assert!(eval(&w, &c));
+    // Freespace: from Ego's front (53.65) to the point: 46.35.
+    let c = by_entity(
+        &["Ego"],
+        false,
+        EntityCondition::Distance {
+            position: target(),
+            value: 46.35,
+            rule: Rule::EqualTo,
+            measure: measure(true, None, None),
+        },
+    );
+    assert!(eval(&w, &c));
+    let reach = |tolerance| {
+        by_entity(
+            &["Ego"],
+            false,
+            EntityCondition::ReachPosition {
+                position: target(),
+                tolerance,
+            },
+        )
+    };
+    assert!(!eval(&w, &reach(49.9)));
+    assert!(eval(&w, &reach(50.0)));
+}
+
+fn headway(value: f64, m: DistanceMeasure) -> scenario::Condition {
+    by_entity(
+        &["Ego"],
+        false,
+        EntityCondition::TimeHeadway {
+            entity_ref: "Lead".into(),
+            value,
+            rule: Rule::EqualTo,
+            measure: m,
+        },
+    )
+}
+
+#[test]
+fn time_headway_is_measured_by_the_trailing_triggering_entity() {
+    let mut w = world();
+    w.set_speed("Ego", 10.0);
+    // Lead's speed does not enter (1.3 text). 30 m at 10 m/s: 3 s; freespace 25.5 m: 2.55 s.
+    w.set_speed("Lead", 50.0);
+    assert!(eval(&w, &headway(3.0, measure(false, None, None))));
+    assert!(eval(&w, &headway(2.55, measure(true, None, None))));
+    assert!(eval(
+        &w,
+        &headway(3.0, measure(false, Some(Road), Some(Longitudinal)))
+    ));
+    // Pitfall 12: the reference behind gives no headway at all (not 3 s, not −3 s).
+    w.place_on_lane("Lead", "1", -1, 20.0, true);
+    for value in [3.0, -3.0] {
+        assert!(!eval(&w, &headway(value, measure(false, None, None))));
+    }
+    // A standing triggering entity never reaches the reference: no headway.
+    w.place_on_lane("Lead", "1", -1, 80.0, true);
+    w.set_speed("Ego", 0.0);
+    assert!(!eval(&w, &headway(3.0, measure(false, None, None))));
+}
+
+#[test]
+fn time_headway_along_a_lane_driven_towards_minus_s() {
+    let mut w = world();
+    // Both on lane 1 heading −x: Ego at x = 80, Lead at x = 50 ahead of it in its travel.
+    w.place_on_lane("Ego", "1", 1, 80.0, false);
+    w.place_on_lane("Lead", "1", 1, 50.0, false);
+    w.set_speed("Ego", 10.0);
+    assert!(eval(
+        &w,
+        &headway(3.0, measure(false, Some(Road), Some(Longitudinal)))
+    ));
+    assert!(eval(&w, &headway(3.0, measure(false, None, None))));
+}
+
+fn ttc(value: f64, rule: Rule, m: DistanceMeasure) -> scenario::Condition {
+    by_entity(
+        &["Ego"],
+        false,
+        EntityCondition::TimeToCollision {
+            target: TimeToCollisionTarget::EntityRef("Lead".into()),
+            value,
+            rule,
+            measure: m,
+        },
+    )
+}
+
+#[test]
+fn time_to_collision_uses_the_closing_speed() {
+    let mut w = world();
+    w.set_speed("Ego", 20.0);
+    w.set_speed("Lead", 10.0);
+    // Closing at 10 m/s: reference points 30 m → 3 s; boxes 25.5 m → 2.55 s (exact box TTC).
+    assert!(eval(
+        &w,
+        &ttc(3.0, Rule::EqualTo, measure(false, None, None))
+    ));
+    assert!(eval(
+        &w,
+        &ttc(
+            3.0,
+            Rule::EqualTo,
+            measure(false, Some(Entity), Some(Longitudinal))
+        )
+    ));
+    assert!(eval(
+        &w,
+        &ttc(2.55, Rule::EqualTo, measure(true, None, None))
+    ));
+    // Moving apart: no TTC, whatever the rule (1.3: "evaluates to false").
+    w.set_speed("Lead", 25.0);
+    for rule in [Rule::LessThan, Rule::GreaterThan] {
+        assert!(!eval(&w, &ttc(3.0, rule, measure(false, None, None))));
+        assert!(!eval(&w, &ttc(3.0, rule, measure(true, None, None))));
+    }
+}
+
+#[test]
+fn oncoming_traffic_in_the_next_lane_has_no_box_collision() {
+    // Pitfall 11 (esmini #569, #617): Lead on lane 1 at x = 150 coming towards Ego at
+    // 10 m/s, Ego at 10 m/s on lane −1. The boxes pass 1.27 m apart: no collision, so the
+    // freespace TTC condition is false however large its threshold.
+    let mut w = world();
+    w.place_on_lane("Lead", "1", 1, 150.0, false);
+    w.set_speed("Ego", 10.0);
+    w.set_speed("Lead", 10.0);
+    assert!(!eval(
+        &w,
+        &ttc(1000.0, Rule::LessThan, measure(true, None, None))
+    ));
+    // Laterally they do not close either.
+    assert!(!eval(
+        &w,
+        &ttc(
+            1000.0,
+            Rule::LessThan,
+            measure(false, Some(Entity), Some(Lateral))
+        )
+    ));
+}
