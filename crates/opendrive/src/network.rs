@@ -1,4 +1,4 @@
-//! [`RoadNetwork`]: a loaded `.xodr` file (OpenDRIVE 1.8 §6, file structure) with its id
+//! [`RoadNetwork`]: a loaded `.xodr` file (OpenDRIVE 1.8, `<OpenDRIVE>` root element) with its id
 //! tables and spatial index, and the loaders.
 
 use std::collections::HashMap;

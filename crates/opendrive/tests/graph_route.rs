@@ -1,4 +1,4 @@
-//! Lane graph and routes (OpenDRIVE 1.8 §10 junctions, §11 lane linkage, `road/@rule`),
+//! Lane graph and routes (OpenDRIVE 1.8 §12 junctions, §11 lane linkage, `road/@rule`),
 //! against lengths read from the files by hand.
 
 mod common;

@@ -117,7 +117,7 @@ fn lane_heights(net: &RoadNetwork, road: &str, lane: i32, s: f64) -> (f64, f64) 
 fn exception(file: &str, s: f64) -> Option<(f64, f64)> {
     match file {
         // esmini steps poly3 arc length along chords of up to 10 m and is off by up to 2.6 cm
-        // for s in [10, 40.24]; oscsim inverts the arc length exactly (OpenDRIVE 1.8 §9.8: s
+        // for s in [10, 40.24]; oscsim inverts the arc length exactly (OpenDRIVE 1.8 §9.7: s
         // is arc length along the curve). Allow 3 cm and 3e-4 rad (README: 2.6 cm, 2.9e-4 rad).
         "poly3_road" if (10.0..=40.24).contains(&s) => Some((0.03, 3e-4)),
         _ => None,

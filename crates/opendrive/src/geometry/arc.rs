@@ -1,4 +1,4 @@
-//! `<arc curvature>` (OpenDRIVE 1.8 §9.6): a circular arc of constant curvature, in closed form.
+//! `<arc curvature>` (OpenDRIVE 1.8 §9.5): a circular arc of constant curvature, in closed form.
 
 use super::LocalPoint;
 

@@ -1,4 +1,4 @@
-//! `<line>` (OpenDRIVE 1.8 §9.4): a straight reference line.
+//! `<line>` (OpenDRIVE 1.8 §9.3): a straight reference line.
 
 use super::LocalPoint;
 

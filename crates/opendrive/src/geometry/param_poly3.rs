@@ -1,4 +1,4 @@
-//! `<paramPoly3>` (OpenDRIVE 1.8 §9.7): u(p), v(p) cubic in a parameter p.
+//! `<paramPoly3>` (OpenDRIVE 1.8 §9.6): u(p), v(p) cubic in a parameter p.
 //!
 //! p ↔ s: OpenDRIVE 1.8 gives the range of p, "arcLength: p in [0, @length of <geometry>];
 //! normalized: p in [0, 1]", and nothing else, so p runs linearly with s over the geometry:

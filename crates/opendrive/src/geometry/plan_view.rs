@@ -1,4 +1,4 @@
-//! `<planView>` and `<geometry>` (OpenDRIVE 1.8 §9.2–9.3): the road reference line as a
+//! `<planView>` and `<geometry>` (OpenDRIVE 1.8 §9.1–9.2): the road reference line as a
 //! sequence of geometries, each placed at (x, y, hdg) in the inertial frame; the geometry
 //! valid at s is found by binary search.
 

@@ -1,4 +1,4 @@
-//! `<poly3 a b c d>` (OpenDRIVE 1.8 §9.8, deprecated but still read): a cubic v(u) in the
+//! `<poly3 a b c d>` (OpenDRIVE 1.8 §9.7, deprecated but still read): a cubic v(u) in the
 //! geometry's local u/v frame, traversed by arc length.
 //!
 //! s is arc length, so u(s) inverts s(u) = ∫₀ᵘ √(1 + v′(τ)²) dτ exactly: the integral is

@@ -1,4 +1,4 @@
-//! `<spiral curvStart curvEnd>` (OpenDRIVE 1.8 §9.5): a clothoid, curvature linear in arc
+//! `<spiral curvStart curvEnd>` (OpenDRIVE 1.8 §9.4): a clothoid, curvature linear in arc
 //! length, including spirals that start at non-zero curvature and the degenerate
 //! `curvStart == curvEnd` (an arc, or a line when both are 0).
 //!

@@ -1,4 +1,4 @@
-//! `<header>` with `<geoReference>` and `<offset>` (OpenDRIVE 1.8 §6.3 header, §8.5
+//! `<header>` with `<geoReference>` and `<offset>` (OpenDRIVE 1.8 header element, §8
 //! georeferencing). Kept as data; oscsim works in the file's inertial frame.
 
 /// `<header>`: file metadata.

@@ -1,4 +1,4 @@
-//! `<junction>` with connections and lane links (OpenDRIVE 1.8 §10, junctions: common and
+//! `<junction>` with connections and lane links (OpenDRIVE 1.8 §12, junctions: common and
 //! direct junctions).
 
 /// Where a connecting or linked road is entered: its start (s = 0) or its end (s = length).

@@ -3,7 +3,7 @@
 
 use crate::math::{Cubic, Real};
 
-/// `lane/@type` (OpenDRIVE 1.8 §11.7, e_laneType).
+/// `lane/@type` (OpenDRIVE 1.8 §11, XSD `e_laneType`).
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum LaneType {
@@ -96,7 +96,7 @@ impl LaneType {
 
     /// Whether motor vehicles may drive on lanes of this type: driving, entry, exit, onRamp,
     /// offRamp, connectingRamp, bidirectional, slipLane, bus, taxi and HOV (the lane types
-    /// the OpenDRIVE 1.8 §11.7 table describes as lanes for vehicle traffic). Parking, stop,
+    /// the OpenDRIVE 1.8 §11 lane-type table describes as lanes for vehicle traffic). Parking, stop,
     /// shoulder, border and the others are not drivable for routing.
     pub fn is_drivable(&self) -> bool {
         matches!(

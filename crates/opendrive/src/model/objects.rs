@@ -1,4 +1,4 @@
-//! `<object>` and `<signal>` of a road (OpenDRIVE 1.8 §13 objects, §14 signals), kept as data
+//! `<object>` and `<signal>` of a road (OpenDRIVE 1.8 chapters "Objects" and "Signals"), kept as data
 //! for later use (OSI stationary objects, traffic signs).
 
 /// `<object>`.

@@ -1,5 +1,5 @@
-//! Reads `<header>` (OpenDRIVE 1.8 §6.3, XSD `t_header`) with `<geoReference>` and
-//! `<offset>` (§8.5).
+//! Reads `<header>` (OpenDRIVE 1.8, XSD `t_header`) with `<geoReference>` and
+//! `<offset>` (§8, georeferencing).
 
 use roxmltree::Node;
 

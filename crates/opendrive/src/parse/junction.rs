@@ -1,4 +1,4 @@
-//! Reads `<junction>` (OpenDRIVE 1.8 §10, junctions; XSD `t_junction`): connections with
+//! Reads `<junction>` (OpenDRIVE 1.8 §12, junctions; XSD `t_junction`): connections with
 //! `connectingRoad` (common junctions) or `linkedRoad` (direct junctions) and lane links.
 
 use roxmltree::Node;

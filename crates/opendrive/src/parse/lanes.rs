@@ -46,7 +46,7 @@ fn read_section(r: &Reader, node: Node, road_length: f64) -> Result<LaneSection,
     })
 }
 
-/// Lane ids on a side must be 1, 2, 3, … (or −1, −2, …) without gaps (§11.2).
+/// Lane ids on a side must be 1, 2, 3, … (or −1, −2, …) without gaps (§11).
 fn check_ids(r: &Reader, section: Node, lanes: &[Lane], sign: i32) -> Result<(), Error> {
     for (k, lane) in lanes.iter().enumerate() {
         let expected = sign * (k as i32 + 1);

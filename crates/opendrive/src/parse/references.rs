@@ -1,5 +1,5 @@
 //! Checks that every reference in the file names something that exists: road links
-//! (OpenDRIVE 1.8 §10.3), `road/@junction`, junction connections and their lane links (§10).
+//! (OpenDRIVE 1.8 §10), `road/@junction`, junction connections and their lane links (§12).
 //! Runs over the XML a second time so that errors point at the referring attribute.
 
 use std::collections::HashMap;

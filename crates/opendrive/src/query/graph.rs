@@ -1,7 +1,7 @@
-//! The lane-level road graph (OpenDRIVE 1.8 §10.3 road linkage, §11.4 lane linkage, §10
+//! The lane-level road graph (OpenDRIVE 1.8 §10 road linkage, §11 lane linkage, §12
 //! junction connections and lane links): which lanes follow a lane in its driving direction.
 //!
-//! Driving direction (§10.2 `road/@rule`, §11.2): with right-hand traffic, lanes with negative
+//! Driving direction (§10 `road/@rule`, §11): with right-hand traffic, lanes with negative
 //! ids run towards +s and positive ids towards −s; left-hand traffic swaps the two. Lane
 //! `<successor>` links name the lane at the section's end side (larger s), `<predecessor>` the
 //! lane at its start side, whatever the driving direction.

@@ -1,4 +1,4 @@
-//! Lateral extent of lanes at s (OpenDRIVE 1.8 §11.3 lane offset, §11.5 lane width and
+//! Lateral extent of lanes at s (OpenDRIVE 1.8 §11.4 lane offset, §11.6 lane width and
 //! border): the centre lane lies at laneOffset; lane n's inner border is lane n−1's outer
 //! border, its outer border the inner one plus (left) or minus (right) its width.
 

@@ -84,7 +84,9 @@ impl Road {
 }
 
 /// The lane's `<height>` at `ds` from the section start and lateral position `t`: linear from
-/// `inner` at the inner border to `outer` at the outer border (OpenDRIVE 1.8 §11.6).
+/// `inner` at the inner border to `outer` at the outer border; each record holds until the next
+/// ("a specific lane geometry shall remain valid until another lane geometry of that type is
+/// defined", OpenDRIVE 1.8 §11.6; esmini interpolates between records instead).
 fn lane_height(lane: &Lane, ds: Real, span: &LaneSpan, t: Real) -> Real {
     if lane.heights.is_empty() {
         return 0.0;

@@ -1,0 +1,179 @@
+//! Criterion benchmarks of the road model: load time (largest corpus file and a generated
+//! network over 50 MB), (road, s, t) → world evaluations per geometry type, and world → road
+//! look-ups on `multi_intersections.xodr`. Short runs (sample size 10) so the whole file takes
+//! about two minutes.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use opendrive::RoadNetwork;
+
+fn corpus(rel: &str) -> PathBuf {
+    PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus/"
+    ))
+    .join(rel)
+}
+
+/// One road of the generated network: line, spiral, arc, spiral, paramPoly3 and poly3 pieces,
+/// three lanes each side, elevation and a lane offset. About 3 kB of XML.
+fn generated_road(out: &mut String, id: usize, x: f64, y: f64) {
+    let _ = write!(
+        out,
+        r#"  <road id="{id}" length="160" junction="-1">
+    <link/>
+    <planView>
+      <geometry s="0" x="{x}" y="{y}" hdg="0" length="40"><line/></geometry>
+      <geometry s="40" x="{x1}" y="{y}" hdg="0" length="30"><spiral curvStart="0" curvEnd="0.01"/></geometry>
+      <geometry s="70" x="{x2}" y="{y2}" hdg="0.15" length="30"><arc curvature="0.01"/></geometry>
+      <geometry s="100" x="{x3}" y="{y3}" hdg="0.45" length="30"><paramPoly3 aU="0" bU="1" cU="0" dU="0" aV="0" bV="0" cV="0.001" dV="0" pRange="arcLength"/></geometry>
+      <geometry s="130" x="{x4}" y="{y4}" hdg="0.5" length="30"><poly3 a="0" b="0" c="-0.001" d="0"/></geometry>
+    </planView>
+    <elevationProfile><elevation s="0" a="0" b="0.01" c="0" d="0"/></elevationProfile>
+    <lateralProfile><superelevation s="0" a="0" b="0" c="0" d="0"/></lateralProfile>
+    <lanes>
+      <laneOffset s="0" a="0" b="0" c="0" d="0"/>
+      <laneSection s="0">
+        <left>
+          <lane id="3" type="sidewalk" level="false"><width sOffset="0" a="2" b="0" c="0" d="0"/><height sOffset="0" inner="0.12" outer="0.12"/></lane>
+          <lane id="2" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/><roadMark sOffset="0" type="broken" weight="standard" color="standard" width="0.12"/></lane>
+          <lane id="1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/><roadMark sOffset="0" type="broken" weight="standard" color="standard" width="0.12"/></lane>
+        </left>
+        <center><lane id="0" type="none" level="false"><roadMark sOffset="0" type="solid" weight="standard" color="standard" width="0.12"/></lane></center>
+        <right>
+          <lane id="-1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/><roadMark sOffset="0" type="broken" weight="standard" color="standard" width="0.12"/></lane>
+          <lane id="-2" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/><roadMark sOffset="0" type="broken" weight="standard" color="standard" width="0.12"/></lane>
+          <lane id="-3" type="sidewalk" level="false"><width sOffset="0" a="2" b="0" c="0" d="0"/><height sOffset="0" inner="0.12" outer="0.12"/></lane>
+        </right>
+      </laneSection>
+    </lanes>
+    <objects><object id="{id}0" s="20" t="-12" type="pole" zOffset="0" hdg="0" orientation="none" height="3" radius="0.1"/></objects>
+    <signals><signal id="{id}1" s="10" t="-11" zOffset="2" orientation="+" dynamic="no" country="DE" type="274" subtype="120" value="120" unit="km/h"/></signals>
+  </road>
+"#,
+        x1 = x + 40.0,
+        x2 = x + 70.0,
+        y2 = y + 1.5,
+        x3 = x + 99.0,
+        y3 = y + 7.0,
+        x4 = x + 126.0,
+        y4 = y + 20.0,
+    );
+}
+
+/// A network of disjoint generated roads on a grid, at least `bytes` long.
+fn generated_network(bytes: usize) -> String {
+    let mut out = String::with_capacity(bytes + 4096);
+    out.push_str("<?xml version=\"1.0\"?>\n<OpenDRIVE>\n  <header revMajor=\"1\" revMinor=\"8\" name=\"generated\"/>\n");
+    let mut id = 0;
+    while out.len() < bytes {
+        let (row, col) = (id / 100, id % 100);
+        generated_road(&mut out, id, col as f64 * 250.0, row as f64 * 120.0);
+        id += 1;
+    }
+    out.push_str("</OpenDRIVE>\n");
+    out
+}
+
+fn load(c: &mut Criterion) {
+    let mut g = c.benchmark_group("load");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(5));
+    let path = corpus("esmini/xodr/multi_intersections.xodr");
+    let text = std::fs::read_to_string(&path).unwrap_or_default();
+    g.throughput(Throughput::Bytes(text.len() as u64));
+    g.bench_function("multi_intersections.xodr", |b| {
+        b.iter(|| RoadNetwork::from_str(black_box(&text), &path).map(|n| n.roads().len()))
+    });
+    let big = generated_network(50 * 1024 * 1024);
+    let big_path = Path::new("generated.xodr");
+    g.throughput(Throughput::Bytes(big.len() as u64));
+    g.bench_function("generated_50MB", |b| {
+        b.iter(|| RoadNetwork::from_str(black_box(&big), big_path).map(|n| n.roads().len()))
+    });
+    g.finish();
+}
+
+/// One road of a single geometry type, 100 m long.
+fn single_geometry(curve: &str) -> RoadNetwork {
+    let text = format!(
+        r#"<OpenDRIVE><header/><road id="1" length="100" junction="-1"><planView>
+<geometry s="0" x="0" y="0" hdg="0.3" length="100">{curve}</geometry></planView>
+<lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>
+<lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+</laneSection></lanes></road></OpenDRIVE>"#
+    );
+    RoadNetwork::from_str(&text, Path::new("bench.xodr")).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn road_pose(c: &mut Criterion) {
+    let mut g = c.benchmark_group("road_pose");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(2));
+    let cases = [
+        ("line", "<line/>"),
+        ("arc", r#"<arc curvature="0.01"/>"#),
+        ("spiral", r#"<spiral curvStart="0.001" curvEnd="0.03"/>"#),
+        ("poly3", r#"<poly3 a="0" b="0" c="0.002" d="-0.00001"/>"#),
+        (
+            "paramPoly3",
+            r#"<paramPoly3 aU="0" bU="1" cU="0" dU="0" aV="0" bV="0" cV="0.002" dV="-0.00001" pRange="arcLength"/>"#,
+        ),
+    ];
+    const N: usize = 1000;
+    g.throughput(Throughput::Elements(N as u64));
+    for (name, curve) in cases {
+        let net = single_geometry(curve);
+        g.bench_with_input(BenchmarkId::from_parameter(name), &net, |b, net| {
+            b.iter(|| {
+                let mut acc = 0.0;
+                for k in 0..N {
+                    let s = 100.0 * k as f64 / N as f64;
+                    if let Ok(p) = net.road_pose("1", s, -1.75) {
+                        acc += p.x + p.y;
+                    }
+                }
+                acc
+            })
+        });
+    }
+    g.finish();
+}
+
+fn locate(c: &mut Criterion) {
+    let mut g = c.benchmark_group("locate");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(3));
+    let net = RoadNetwork::from_file(&corpus("esmini/xodr/multi_intersections.xodr"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    // 1000 lane-centre points spread over all roads, shifted sideways by up to ±1.5 m.
+    let mut points = Vec::new();
+    let roads = net.roads();
+    for k in 0..1000usize {
+        let r = &roads[k % roads.len()];
+        let s = r.length * ((k * 7919) % 1000) as f64 / 1000.0;
+        let lane = r.lane_section_at(s).lanes().nth(k % 3).map_or(0, |l| l.id);
+        if let Ok(p) = r.lane_pose(lane, s, ((k % 7) as f64 - 3.0) * 0.5) {
+            points.push((p.x, p.y, p.h));
+        }
+    }
+    g.throughput(Throughput::Elements(points.len() as u64));
+    g.bench_function("multi_intersections", |b| {
+        b.iter(|| {
+            points
+                .iter()
+                .filter_map(|&(x, y, h)| net.locate(x, y, Some(h)))
+                .count()
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, load, road_pose, locate);
+criterion_main!(benches);
