@@ -144,3 +144,34 @@ fn parallel_starts_regardless() {
     assert_eq!(calls, ["start 3 @0", "start 1 @1", "start 2 @3"]);
     assert_eq!(states, [ElementState::Running; 3]);
 }
+
+#[test]
+fn events_without_trigger_meet_the_priority_rule_in_document_order() {
+    // Both Events inherit the Act's (fired) trigger and start with their Maneuver at t = 0, in
+    // document order: F2 (override) finds F1 running and stops it in the same step.
+    let mg = group(
+        1,
+        vec![
+            event("F1", Priority::Parallel, 1, None, 1),
+            event("F2", Priority::Override, 1, None, 2),
+        ],
+    );
+    let mut sb = build(&storyboard(act(None, None, mg)));
+    let mut conditions = ScriptedConditions::default();
+    let mut actions = ScriptedActions::default();
+    actions.set(1, 100).set(2, 100);
+    let log = run(&mut sb, 2, &mut conditions, &mut actions);
+    let events: Vec<String> = lines(&log).split_off(5);
+    assert_eq!(
+        events,
+        [
+            "0.000 F1 standbyState -> startTransition -> runningState",
+            "0.000 A1 initState -> startTransition -> runningState",
+            "0.000 F1 runningState -> stopTransition -> completeState",
+            "0.000 A1 runningState -> stopTransition -> completeState",
+            "0.000 F2 standbyState -> startTransition -> runningState",
+            "0.000 A2 initState -> startTransition -> runningState",
+        ]
+    );
+    assert_eq!(actions.calls, ["start 1 @0", "stop 1 @0", "start 2 @0"]);
+}
