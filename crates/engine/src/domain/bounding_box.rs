@@ -107,13 +107,17 @@ impl BoundingBox {
     /// moves with the full pose, the rectangle turns with the heading only (pitch and roll
     /// are ignored for the outline, see `Footprint`).
     pub(crate) fn footprint(&self, pose: &Pose) -> Footprint {
-        let c = Frame::new(pose).world_point(self.center);
-        Footprint::new([c.x, c.y], pose.h, 0.5 * self.length, 0.5 * self.width)
+        self.placed(&Frame::new(pose), pose.h).0
     }
 
-    /// World z range `(bottom, top)` of the box at `pose`, pitch and roll ignored.
-    pub(crate) fn z_range(&self, pose: &Pose) -> (Real, Real) {
-        let c = Frame::new(pose).world_point(self.center);
-        (c.z - 0.5 * self.height, c.z + 0.5 * self.height)
+    /// The footprint and the world z range `(bottom, top)` of the box when its object's frame
+    /// is `frame` with heading `h` (pitch and roll ignored for both, as in `footprint`).
+    pub(crate) fn placed(&self, frame: &Frame, h: Real) -> (Footprint, (Real, Real)) {
+        let c = frame.world_point(self.center);
+        let footprint = Footprint::new([c.x, c.y], h, 0.5 * self.length, 0.5 * self.width);
+        (
+            footprint,
+            (c.z - 0.5 * self.height, c.z + 0.5 * self.height),
+        )
     }
 }

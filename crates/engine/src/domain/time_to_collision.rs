@@ -44,15 +44,14 @@ pub(crate) fn time_to_collision(
     reference: &impl Physical,
 ) -> Option<Real> {
     let b = reference.physical_object();
-    let (a_bottom, a_top) = a.bounding_box.z_range(&a.pose);
-    let (b_bottom, b_top) = b.bounding_box.z_range(&b.pose);
+    let (frame_a, frame_b) = (Frame::new(&a.pose), Frame::new(&b.pose));
+    let (fa, (a_bottom, a_top)) = a.bounding_box.placed(&frame_a, a.pose.h);
+    let (fb, (b_bottom, b_top)) = b.bounding_box.placed(&frame_b, b.pose.h);
     if b_bottom > a_top + LENGTH_EPSILON || a_bottom > b_top + LENGTH_EPSILON {
         return None;
     }
-    let fa = a.bounding_box.footprint(&a.pose);
-    let fb = b.bounding_box.footprint(&b.pose);
-    let wa = Frame::new(&a.pose).rotate(va.translational);
-    let wb = Frame::new(&b.pose).rotate(reference.velocity().translational);
+    let wa = frame_a.rotate(va.translational);
+    let wb = frame_b.rotate(reference.velocity().translational);
     footprint_time_to_collision(&fa, &fb, [wb.x - wa.x, wb.y - wa.y])
 }
 
