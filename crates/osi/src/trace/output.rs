@@ -59,7 +59,8 @@ pub struct TraceOptions {
     pub mcap_info: McapTraceInfo,
 }
 
-/// A trace file being written (see the module doc).
+/// A trace file being written (see the module doc). Call [`TraceFile::finish`] at the
+/// end: a trace dropped unfinished keeps its part-file name in the directory case.
 pub struct TraceFile {
     writer: Box<dyn TraceWriter>,
     /// Where the bytes go now.
