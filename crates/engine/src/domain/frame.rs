@@ -70,3 +70,71 @@ impl Frame {
         )
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_6};
+
+    /// Object axes in world coordinates for single rotations, from the conventions in the
+    /// module doc: heading π/2 turns x to +y; pitch π/6 (nose down) turns x to
+    /// (cos, 0, −sin); roll π/6 (right side down) lifts the left-pointing y axis to
+    /// (0, cos, sin).
+    #[test]
+    fn single_rotations_follow_the_documented_conventions() {
+        let x = Vector3::new(1.0, 0.0, 0.0);
+        let y = Vector3::new(0.0, 1.0, 0.0);
+        let (s, c) = FRAC_PI_6.sin_cos();
+        let cases = [
+            (
+                Pose {
+                    h: FRAC_PI_2,
+                    ..Pose::default()
+                },
+                x,
+                [0.0, 1.0, 0.0],
+            ),
+            (
+                Pose {
+                    p: FRAC_PI_6,
+                    ..Pose::default()
+                },
+                x,
+                [c, 0.0, -s],
+            ),
+            (
+                Pose {
+                    r: FRAC_PI_6,
+                    ..Pose::default()
+                },
+                y,
+                [0.0, c, s],
+            ),
+        ];
+        for (pose, v, expected) in cases {
+            let w = Frame::new(&pose).rotate(v);
+            for (got, e) in [w.x, w.y, w.z].into_iter().zip(expected) {
+                assert!((got - e).abs() < 1e-15, "{pose:?}: {w:?}");
+            }
+        }
+    }
+
+    /// `local_point` undoes `world_point` (the rotation is orthonormal) for a pose turned
+    /// about all three axes.
+    #[test]
+    fn local_point_inverts_world_point() {
+        let pose = Pose {
+            x: 3.0,
+            y: -4.0,
+            z: 1.0,
+            h: 2.0,
+            p: -0.3,
+            r: 0.7,
+        };
+        let f = Frame::new(&pose);
+        let p = Vector3::new(1.5, -0.25, 0.75);
+        let back = f.local_point(f.world_point(p));
+        assert!((back.x - p.x).abs() < 1e-12 && (back.y - p.y).abs() < 1e-12);
+        assert!((back.z - p.z).abs() < 1e-12, "{back:?}");
+    }
+}
