@@ -20,8 +20,10 @@ pub mod condition;
 pub mod domain;
 pub mod output;
 pub mod position;
+pub mod routing;
 pub mod runtime;
 pub mod storyboard;
+pub mod trajectory;
 
 pub use output::{EventRecord, EventSink, Frame, FrameSink};
 pub use runtime::{Engine, EngineConfig, EntityId, RuntimeError, RuntimeErrorKind, StopReason};

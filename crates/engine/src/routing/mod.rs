@@ -1,0 +1,27 @@
+//! Route planning at runtime (OpenSCENARIO 1.3 §7.5 "Routes", XSD `Route`, `Waypoint`,
+//! `RouteStrategy`; used by AssignRouteAction, AcquirePositionAction, RoutePosition and the
+//! default controller): a lane-level path through a route's waypoints on the OpenDRIVE lane
+//! graph, leg by leg with each waypoint's routeStrategy, as the lane stretches to drive, the
+//! lane changes they need, and a [`domain::Route`](crate::domain::Route) for
+//! distance_along_route and InRoutePosition.
+//!
+//! | module | implements |
+//! | --- | --- |
+//! | `error` | `RoutingError`, `RoutingErrorKind` |
+//! | `cost` | the cost of driving a lane stretch, changing lanes and entering a junction per RouteStrategy |
+//! | `random` | the seeded, order-independent lane weights of routeStrategy `random` |
+//! | `search` | Dijkstra's algorithm over the lane graph with a strategy's cost |
+//! | `planned` | `PlannedRoute`: stretches, lane changes, waypoints' path s, look-ups by path s |
+//! | `plan` | `plan_route` (Route with waypoints, closed routes) and `plan_between` (AcquirePositionAction) |
+
+mod cost;
+mod error;
+mod plan;
+mod planned;
+mod random;
+mod search;
+
+pub use cost::{RoutingOptions, DEFAULT_SPEED, UNLIMITED_ROAD_SPEED};
+pub use error::{RoutingError, RoutingErrorKind};
+pub use plan::{plan_between, plan_route};
+pub use planned::{LaneChange, PlannedRoute, RoutedWaypoint};

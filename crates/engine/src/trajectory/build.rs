@@ -1,0 +1,403 @@
+//! Building a [`Trajectory`] from the scenario model (OpenSCENARIO 1.3 §7.6, XSD `Shape`):
+//! each vertex, control point and start position is resolved to a world pose by
+//! [`position::resolve`](crate::position::resolve), the shape is checked, and its pieces and
+//! times are laid out.
+//!
+//! Rules taken here, each from the XSD element it concerns:
+//! * `Polyline`: at least two vertices; a `closed` trajectory also runs from the last vertex
+//!   back to the first (that closing piece has no time). Coincident vertices add no length;
+//!   with times they are a stop.
+//! * `Clothoid`: starts at its Position's point and heading; times only when both
+//!   `startTime` and `stopTime` are given.
+//! * `ClothoidSpline` (1.3): the first segment needs `PositionStart`; a later segment starts
+//!   at its own `PositionStart` if it has one, else where the previous one ended; its heading
+//!   is that start's heading plus `hOffset` (default 0). Times when every segment has
+//!   `timeStart` and the spline has `timeEnd`.
+//! * `Nurbs`: order k in 2..=n for n control points, n + k knots in non-decreasing order
+//!   spanning a range, weights > 0 (default 1). Control points' orientations are not used.
+//! * Times: all points of a shape have a time or none has; times never decrease.
+//! * `closed` has no effect on Clothoid, ClothoidSpline and Nurbs (their geometry is
+//!   complete as written).
+
+use opendrive::{Real, LENGTH_EPSILON};
+use scenario::{Position, Shape, SourcePos};
+
+use super::bspline::HPoint;
+use super::clothoid::Clothoid;
+use super::error::{check_finite, TrajectoryError, TrajectoryErrorKind};
+use super::line::Line;
+use super::nurbs::Nurbs;
+use super::path::{Piece, ShapeKind};
+use super::time_table::TimeTable;
+use super::Trajectory;
+use crate::position::{resolve, EntityQuery};
+
+type Result<T> = std::result::Result<T, TrajectoryError>;
+
+/// A resolved point of a shape: where, facing where, at which time, written where.
+struct Point {
+    xyz: [Real; 3],
+    heading: Real,
+    time: Option<Real>,
+    pos: SourcePos,
+}
+
+fn point<Q: EntityQuery + ?Sized>(
+    position: &Position,
+    time: Option<Real>,
+    ctx: &Q,
+) -> Result<Point> {
+    let r = resolve(position, ctx)?;
+    Ok(Point {
+        xyz: [r.pose.x, r.pose.y, r.pose.z],
+        heading: r.pose.h,
+        time,
+        pos: position.pos.clone(),
+    })
+}
+
+/// Builds the runtime trajectory of `trajectory`, resolving its positions through `ctx`.
+/// `pos` names the element that uses it (FollowTrajectoryAction, TrajectoryPosition) for
+/// errors about the shape as a whole; errors about one point name that point's Position.
+pub fn build<Q: EntityQuery + ?Sized>(
+    trajectory: &scenario::Trajectory,
+    ctx: &Q,
+    pos: &SourcePos,
+) -> Result<Trajectory> {
+    let name = &trajectory.name;
+    let (kind, pieces, times) = match &trajectory.shape {
+        Shape::Polyline(vertices) => {
+            if vertices.len() < 2 {
+                return Err(TrajectoryError::new(
+                    TrajectoryErrorKind::TooFewVertices {
+                        trajectory: name.clone(),
+                        found: vertices.len(),
+                    },
+                    pos,
+                ));
+            }
+            let points = vertices
+                .iter()
+                .map(|v| point(&v.position, v.time, ctx))
+                .collect::<Result<Vec<_>>>()?;
+            let (pieces, times) = polyline(&points, trajectory.closed)?;
+            (ShapeKind::Polyline, pieces, times)
+        }
+        Shape::Clothoid(c) => {
+            let (piece, times) = clothoid(c, ctx, pos)?;
+            (ShapeKind::Clothoid, vec![piece], times)
+        }
+        Shape::ClothoidSpline(spline) => {
+            let (pieces, times) = clothoid_spline(spline, ctx, pos)?;
+            (ShapeKind::ClothoidSpline, pieces, times)
+        }
+        Shape::Nurbs(n) => {
+            let (piece, times) = nurbs(name, n, ctx, pos)?;
+            (ShapeKind::Nurbs, vec![piece], times)
+        }
+        _ => {
+            return Err(TrajectoryError::new(
+                TrajectoryErrorKind::UnknownShape("another shape"),
+                pos,
+            ))
+        }
+    };
+    let t = Trajectory::new(name, kind, trajectory.closed, pieces, times);
+    if t.length() <= LENGTH_EPSILON {
+        return Err(TrajectoryError::new(
+            TrajectoryErrorKind::ZeroLength(t.length()),
+            pos,
+        ));
+    }
+    Ok(t)
+}
+
+/// The times of `points` if every one has a time (non-decreasing), `None` if none has.
+fn point_times(points: &[Point], element: &'static str) -> Result<Option<Vec<Real>>> {
+    if points.iter().all(|p| p.time.is_none()) {
+        return Ok(None);
+    }
+    let mut times = Vec::with_capacity(points.len());
+    for (i, p) in points.iter().enumerate() {
+        let t = p.time.ok_or_else(|| {
+            TrajectoryError::new(
+                TrajectoryErrorKind::PartialTimes {
+                    element,
+                    index: i + 1,
+                },
+                &p.pos,
+            )
+        })?;
+        check_finite(&[("time", t)], &p.pos)?;
+        ordered_time(times.last().copied(), t, element, i, &p.pos)?;
+        times.push(t);
+    }
+    Ok(Some(times))
+}
+
+/// `Err` when `t` comes before `previous`.
+fn ordered_time(
+    previous: Option<Real>,
+    t: Real,
+    element: &'static str,
+    i: usize,
+    pos: &SourcePos,
+) -> Result<()> {
+    match previous {
+        Some(previous) if t < previous => Err(TrajectoryError::new(
+            TrajectoryErrorKind::TimesOutOfOrder {
+                element,
+                index: i + 1,
+                previous,
+                found: t,
+            },
+            pos,
+        )),
+        _ => Ok(()),
+    }
+}
+
+fn polyline(points: &[Point], closed: bool) -> Result<(Vec<Piece>, Option<TimeTable>)> {
+    let times = point_times(points, "Vertex")?;
+    let mut pieces = Vec::with_capacity(points.len());
+    let mut s_at_vertex = vec![0.0];
+    let mut s = 0.0;
+    let mut ends: Vec<(&Point, &Point)> = points.windows(2).map(|w| (&w[0], &w[1])).collect();
+    if closed {
+        ends.push((&points[points.len() - 1], &points[0]));
+    }
+    for (i, (a, b)) in ends.into_iter().enumerate() {
+        if let Some(line) = Line::new(a.xyz, b.xyz) {
+            s += line.length();
+            pieces.push(Piece::Line(line));
+        }
+        if i + 1 < points.len() {
+            s_at_vertex.push(s);
+        }
+    }
+    let table = times.map(|t| TimeTable::new(s_at_vertex.into_iter().zip(t).collect()));
+    Ok((pieces, table))
+}
+
+fn positive_length(what: &'static str, length: Real, pos: &SourcePos) -> Result<()> {
+    check_finite(&[(what, length)], pos)?;
+    if length <= 0.0 {
+        return Err(TrajectoryError::new(
+            TrajectoryErrorKind::NonPositiveLength {
+                what,
+                found: length,
+            },
+            pos,
+        ));
+    }
+    Ok(())
+}
+
+fn clothoid<Q: EntityQuery + ?Sized>(
+    c: &scenario::Clothoid,
+    ctx: &Q,
+    pos: &SourcePos,
+) -> Result<(Piece, Option<TimeTable>)> {
+    check_finite(
+        &[
+            ("Clothoid curvature", c.curvature),
+            ("Clothoid curvaturePrime", c.curvature_prime),
+        ],
+        pos,
+    )?;
+    positive_length("Clothoid length", c.length, pos)?;
+    let start = point(&c.position, None, ctx)?;
+    let piece = Clothoid::new(
+        start.xyz,
+        start.heading,
+        c.curvature,
+        c.curvature_prime,
+        c.length,
+    );
+    let times = match (c.start_time, c.stop_time) {
+        (Some(t0), Some(t1)) => {
+            check_finite(
+                &[("Clothoid startTime", t0), ("Clothoid stopTime", t1)],
+                pos,
+            )?;
+            ordered_time(Some(t0), t1, "Clothoid stopTime", 0, pos)?;
+            Some(TimeTable::new(vec![(0.0, t0), (c.length, t1)]))
+        }
+        _ => None,
+    };
+    Ok((Piece::Clothoid(piece), times))
+}
+
+fn clothoid_spline<Q: EntityQuery + ?Sized>(
+    spline: &scenario::ClothoidSpline,
+    ctx: &Q,
+    pos: &SourcePos,
+) -> Result<(Vec<Piece>, Option<TimeTable>)> {
+    if spline.segments.is_empty() {
+        return Err(TrajectoryError::new(TrajectoryErrorKind::NoSegments, pos));
+    }
+    let mut pieces = Vec::with_capacity(spline.segments.len());
+    let mut end: Option<([Real; 3], Real)> = None;
+    let mut pairs = Vec::with_capacity(spline.segments.len() + 1);
+    let mut s = 0.0;
+    let all_timed = spline.segments.iter().all(|g| g.time_start.is_some());
+    let any_timed = spline.segments.iter().any(|g| g.time_start.is_some());
+    for (i, seg) in spline.segments.iter().enumerate() {
+        let h_offset = seg.h_offset.unwrap_or(0.0);
+        check_finite(
+            &[
+                ("ClothoidSplineSegment curvatureStart", seg.curvature_start),
+                ("ClothoidSplineSegment curvatureEnd", seg.curvature_end),
+                ("ClothoidSplineSegment hOffset", h_offset),
+            ],
+            pos,
+        )?;
+        positive_length("ClothoidSplineSegment length", seg.length, pos)?;
+        let (xyz, heading) = match (&seg.position_start, end) {
+            (Some(p), _) => {
+                let p = point(p, None, ctx)?;
+                (p.xyz, p.heading)
+            }
+            (None, Some(e)) => e,
+            (None, None) => {
+                return Err(TrajectoryError::new(
+                    TrajectoryErrorKind::MissingPositionStart,
+                    pos,
+                ))
+            }
+        };
+        let rate = (seg.curvature_end - seg.curvature_start) / seg.length;
+        let c = Clothoid::new(
+            xyz,
+            heading + h_offset,
+            seg.curvature_start,
+            rate,
+            seg.length,
+        );
+        let last = c.eval(seg.length);
+        end = Some(([last.x, last.y, last.z], last.heading));
+        if any_timed {
+            let t = seg.time_start.ok_or_else(|| {
+                TrajectoryError::new(
+                    TrajectoryErrorKind::PartialTimes {
+                        element: "ClothoidSplineSegment",
+                        index: i + 1,
+                    },
+                    pos,
+                )
+            })?;
+            check_finite(&[("ClothoidSplineSegment timeStart", t)], pos)?;
+            ordered_time(
+                pairs.last().map(|p: &(Real, Real)| p.1),
+                t,
+                "ClothoidSplineSegment",
+                i,
+                pos,
+            )?;
+            pairs.push((s, t));
+        }
+        s += seg.length;
+        pieces.push(Piece::Clothoid(c));
+    }
+    let times = if all_timed {
+        let t_end = spline
+            .time_end
+            .ok_or_else(|| TrajectoryError::new(TrajectoryErrorKind::MissingTimeEnd, pos))?;
+        check_finite(&[("ClothoidSpline timeEnd", t_end)], pos)?;
+        let n = spline.segments.len();
+        ordered_time(
+            pairs.last().map(|p| p.1),
+            t_end,
+            "ClothoidSplineSegment",
+            n,
+            pos,
+        )?;
+        pairs.push((s, t_end));
+        Some(TimeTable::new(pairs))
+    } else {
+        None
+    };
+    Ok((pieces, times))
+}
+
+fn nurbs<Q: EntityQuery + ?Sized>(
+    name: &str,
+    n: &scenario::Nurbs,
+    ctx: &Q,
+    pos: &SourcePos,
+) -> Result<(Piece, Option<TimeTable>)> {
+    let count = n.control_points.len();
+    let err = |kind| Err(TrajectoryError::new(kind, pos));
+    if count < 2 {
+        return err(TrajectoryErrorKind::TooFewControlPoints {
+            trajectory: name.to_string(),
+            found: count,
+        });
+    }
+    if n.order < 2 || n.order as usize > count {
+        return err(TrajectoryErrorKind::Order {
+            order: n.order,
+            points: count,
+        });
+    }
+    let order = n.order as usize;
+    if n.knots.len() != count + order {
+        return err(TrajectoryErrorKind::KnotCount {
+            expected: count + order,
+            found: n.knots.len(),
+        });
+    }
+    for (i, &k) in n.knots.iter().enumerate() {
+        check_finite(&[("Knot value", k)], pos)?;
+        if i > 0 && k < n.knots[i - 1] {
+            return err(TrajectoryErrorKind::KnotsOutOfOrder {
+                index: i + 1,
+                previous: n.knots[i - 1],
+                found: k,
+            });
+        }
+    }
+    let degree = order - 1;
+    if n.knots[degree] >= n.knots[count] {
+        return err(TrajectoryErrorKind::EmptyKnotRange {
+            first: degree + 1,
+            last: count + 1,
+            value: n.knots[degree],
+        });
+    }
+    let mut points = Vec::with_capacity(count);
+    let mut control: Vec<HPoint> = Vec::with_capacity(count);
+    for (i, cp) in n.control_points.iter().enumerate() {
+        let w = cp.weight.unwrap_or(1.0);
+        if !(w.is_finite() && w > 0.0) {
+            return Err(TrajectoryError::new(
+                TrajectoryErrorKind::Weight {
+                    index: i + 1,
+                    found: w,
+                },
+                &cp.position.pos,
+            ));
+        }
+        let p = point(&cp.position, cp.time, ctx)?;
+        let [x, y, z] = p.xyz;
+        control.push([w * x, w * y, w * z, w, w * p.time.unwrap_or(0.0)]);
+        points.push(p);
+    }
+    let timed = point_times(&points, "ControlPoint")?.is_some();
+    let curve = Nurbs::new(degree, n.knots.clone(), control);
+    let times = timed.then(|| {
+        // Sampled at the arc-length table's rows; the running maximum keeps the table
+        // monotone against round-off (non-decreasing control times give a non-decreasing
+        // t(u) by the variation-diminishing property of B-splines).
+        let mut t_max = Real::NEG_INFINITY;
+        let pairs = curve
+            .table_s()
+            .map(|s| {
+                t_max = t_max.max(curve.eval(s).1);
+                (s, t_max)
+            })
+            .collect();
+        TimeTable::new(pairs)
+    });
+    Ok((Piece::Nurbs(Box::new(curve)), times))
+}

@@ -1,0 +1,84 @@
+//! The point of a trajectory closest to a world position (for FollowTrajectoryAction's
+//! `initialDistanceOffset` and TrajectoryFollowingMode `follow`, OpenSCENARIO 1.3 §7.6.5 and
+//! XSD `TrajectoryFollowingMode`), measured horizontally.
+//!
+//! Method: the horizontal distance is sampled every [`SCAN_STEP`] (at least 64 samples), and
+//! the best sample's neighbourhood of ± one step is refined by golden-section search to
+//! `opendrive::SOLVER_TOLERANCE`. The answer is the global minimum unless two branches of the
+//! trajectory come within one step of the position at distances differing by less than the
+//! curve's change over one step.
+
+use opendrive::{Real, SOLVER_TOLERANCE};
+
+use super::{Trajectory, TrajectoryPoint};
+
+/// Largest arc-length step of the coarse scan (m).
+pub const SCAN_STEP: Real = 0.5;
+
+/// The point of a trajectory closest to a position.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Closest {
+    /// The trajectory point (its `s` is the arc length there).
+    pub point: TrajectoryPoint,
+    /// Horizontal distance from the position to the point (m).
+    pub distance: Real,
+    /// Signed lateral offset of the position from the point (m), positive left of the
+    /// trajectory's heading.
+    pub t: Real,
+}
+
+impl Trajectory {
+    /// The point closest (horizontally) to (x, y); see the module doc for the method.
+    pub fn closest(&self, x: Real, y: Real) -> Closest {
+        let length = self.length();
+        let samples = ((length / SCAN_STEP).ceil() as usize).max(64);
+        let step = length / samples as Real;
+        let d2 = |s: Real| {
+            let p = self.eval(s);
+            (p.x - x).powi(2) + (p.y - y).powi(2)
+        };
+        let best = (0..=samples)
+            .map(|i| {
+                let s = (i as Real * step).min(length);
+                (s, d2(s))
+            })
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map_or(0.0, |(s, _)| s);
+        let s = golden_section((best - step).max(0.0), (best + step).min(length), d2);
+        let point = self.eval(s);
+        let (dx, dy) = (x - point.x, y - point.y);
+        let (sin_h, cos_h) = point.heading.sin_cos();
+        Closest {
+            point,
+            distance: dx.hypot(dy),
+            t: -dx * sin_h + dy * cos_h,
+        }
+    }
+}
+
+/// The minimiser of `f` on [a, b] (unimodal there) by golden-section search.
+fn golden_section(mut a: Real, mut b: Real, f: impl Fn(Real) -> Real) -> Real {
+    const INV_PHI: Real = 0.618_033_988_749_894_9;
+    let mut c = b - INV_PHI * (b - a);
+    let mut d = a + INV_PHI * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..200 {
+        if b - a <= SOLVER_TOLERANCE {
+            break;
+        }
+        if fc <= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - INV_PHI * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + INV_PHI * (b - a);
+            fd = f(d);
+        }
+    }
+    0.5 * (a + b)
+}

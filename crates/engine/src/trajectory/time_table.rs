@@ -1,0 +1,99 @@
+//! Times along a trajectory (OpenSCENARIO 1.3 §7.6: `Vertex/@time`, `Clothoid/@startTime`
+//! and `@stopTime`, `ClothoidSplineSegment/@timeStart` with `ClothoidSpline/@timeEnd`,
+//! `ControlPoint/@time`): pairs (s, t) in order, the time at which the trajectory point at s
+//! is reached. Between two pairs both vary linearly (constant speed from one vertex to the
+//! next, the reading of esmini and of the standard's examples); two pairs at one s are a
+//! stop, two at one t a jump.
+
+use opendrive::Real;
+
+/// Non-decreasing arc lengths (m) and trajectory times (s), at least two pairs.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct TimeTable {
+    s: Vec<Real>,
+    t: Vec<Real>,
+}
+
+impl TimeTable {
+    /// A table of (s, t) pairs, both non-decreasing (checked by the caller), at least two.
+    pub(crate) fn new(pairs: Vec<(Real, Real)>) -> Self {
+        debug_assert!(pairs.len() >= 2);
+        let (s, t) = pairs.into_iter().unzip();
+        Self { s, t }
+    }
+
+    /// Trajectory time of the first pair (s).
+    pub(crate) fn start(&self) -> Real {
+        self.t[0]
+    }
+
+    /// Trajectory time of the last pair (s).
+    pub(crate) fn end(&self) -> Real {
+        self.t[self.t.len() - 1]
+    }
+
+    /// The time at which s is reached (the first such time where the trajectory stops at s);
+    /// clamped to the table's ends.
+    pub(crate) fn t_at(&self, s: Real) -> Real {
+        interpolate(&self.s, &self.t, s)
+    }
+
+    /// Arc length at trajectory time `t`, clamped to the table's ends.
+    pub(crate) fn s_at(&self, t: Real) -> Real {
+        interpolate(&self.t, &self.s, t)
+    }
+
+    /// ds/dt (m/s) at trajectory time `t`: the slope of the pair interval holding t (the later
+    /// one at a pair's time); 0 outside the table.
+    pub(crate) fn speed_at(&self, t: Real) -> Real {
+        if t < self.start() || t >= self.end() {
+            return 0.0;
+        }
+        let i = self.t.partition_point(|&x| x <= t);
+        let dt = self.t[i] - self.t[i - 1];
+        if dt > 0.0 {
+            (self.s[i] - self.s[i - 1]) / dt
+        } else {
+            0.0
+        }
+    }
+}
+
+/// y at x on the piecewise-linear graph through (xs, ys), xs non-decreasing: the first
+/// interval whose end reaches x, so that a flat stretch of y answers its start.
+fn interpolate(xs: &[Real], ys: &[Real], x: Real) -> Real {
+    let last = xs.len() - 1;
+    if x <= xs[0] {
+        return ys[0];
+    }
+    if x >= xs[last] {
+        return ys[last];
+    }
+    let i = xs.partition_point(|&v| v < x).clamp(1, last);
+    let (x0, x1) = (xs[i - 1], xs[i]);
+    if x1 > x0 {
+        ys[i - 1] + (x - x0) / (x1 - x0) * (ys[i] - ys[i - 1])
+    } else {
+        ys[i]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stop_and_constant_speed() {
+        // 0 m at 0 s, 10 m at 2 s (5 m/s), stop at 10 m until 4 s, 20 m at 6 s.
+        let tt = TimeTable::new(vec![(0.0, 0.0), (10.0, 2.0), (10.0, 4.0), (20.0, 6.0)]);
+        assert!((tt.s_at(1.0) - 5.0).abs() < 1e-12);
+        assert!((tt.s_at(3.0) - 10.0).abs() < 1e-12);
+        assert!((tt.s_at(5.0) - 15.0).abs() < 1e-12);
+        // s = 10 is first reached at 2 s.
+        assert!((tt.t_at(10.0) - 2.0).abs() < 1e-12);
+        assert!((tt.t_at(15.0) - 5.0).abs() < 1e-12);
+        assert!((tt.speed_at(1.0) - 5.0).abs() < 1e-12);
+        assert!(tt.speed_at(3.0).abs() < 1e-12);
+        assert!((tt.s_at(-1.0)).abs() < 1e-12 && (tt.s_at(9.0) - 20.0).abs() < 1e-12);
+    }
+}
