@@ -18,7 +18,9 @@
 //! | `MiscObject` other categories (barrier, building, pole, tree, …) | stationary_object at its initial pose |
 //!
 //! 1.x has no colour for entities, so `color` stays unset; `ExternalObjectReference` objects
-//! (they live in the road network, without a bounding box here) are not mapped.
+//! (they live in the road network, without a bounding box here) are not mapped. A 1.3
+//! `Trailer` is an entity of its own and maps like any vehicle; the hitch/coupler joint has
+//! no counterpart in §8.7 and is left to the runtime.
 
 use opendrive::Pose;
 use scenario::{EntityObject, MiscObjectCategory, PedestrianCategory, ScenarioObject};
