@@ -19,7 +19,9 @@
 //! - `source_reference`: type `net.asam.opendrive`, identifiers [road id, lane_section s,
 //!   lane id] as OSI 3.8 asks for OpenDRIVE lanes.
 
-use opendrive::{Direction, LaneHandle, LaneType, Road, RoadNetwork, S_TOLERANCE};
+use opendrive::{
+    Direction, LaneHandle, LaneType, Road, RoadNetwork, RoadPosition, LENGTH_EPSILON, S_TOLERANCE,
+};
 
 use crate::error::{Error, ErrorKind};
 use crate::ids::{IdAllocator, IdKey};
@@ -100,6 +102,25 @@ pub fn assigned_lane(
 ) -> Option<Identifier> {
     let road = network.road(road_id)?;
     ids.get(&lane_key(road, road.lane_section_index(s), lane_id))
+}
+
+/// The OSI id of the lane a road position (as `RoadNetwork::locate` gives it) lies on;
+/// `None` off the road surface (`distance` > 0) or if the lanes were not built with `ids`.
+pub fn assigned_lane_at(
+    ids: &IdAllocator,
+    network: &RoadNetwork,
+    position: &RoadPosition,
+) -> Option<Identifier> {
+    if position.distance > LENGTH_EPSILON {
+        return None;
+    }
+    assigned_lane(
+        ids,
+        network,
+        &position.road_id,
+        position.lane_id,
+        position.s,
+    )
 }
 
 /// Lanes and boundaries of every road of `network`, ids from `ids`, polylines sampled

@@ -231,3 +231,27 @@ fn neighbours_on_a_straight_road() {
         vec![road.id.clone(), "0".into(), "-1".into()]
     );
 }
+
+#[test]
+fn located_positions_map_to_their_lane() {
+    // straight_500m: lane −1 is 3.07 m wide right of the reference line (y from 0 to
+    // −3.07), lane −2 (shoulder, 1.68 m) beyond it, then lane −3 (border, 6 m) to y = −10.75.
+    let (net, ids, _) = build("straight_500m");
+    let road = net.roads()[0].id.clone();
+    let lane = |l| {
+        ids.get(&IdKey::Lane {
+            road: road.clone(),
+            lane_section: 0,
+            lane: l,
+        })
+    };
+    let on = |x: f64, y: f64| {
+        let p = net.locate(x, y, Some(0.0)).unwrap();
+        osi::lanes::assigned_lane_at(&ids, &net, &p)
+    };
+    assert_eq!(on(100.0, -1.5), lane(-1));
+    assert_eq!(on(100.0, -4.0), lane(-2));
+    assert_eq!(on(100.0, 1.5), lane(1));
+    // 20 m right of the reference line is 9.25 m off the road surface: no lane.
+    assert_eq!(on(100.0, -20.0), None);
+}
