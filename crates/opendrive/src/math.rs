@@ -61,8 +61,12 @@ impl approx::AbsDiffEq for Pose {
 }
 
 /// Wraps an angle into (−π, π].
+#[inline]
 pub fn normalize_angle(a: Real) -> Real {
     use std::f64::consts::{PI, TAU};
+    if a > -PI && a <= PI {
+        return a; // the common case, without a division
+    }
     let mut w = a.rem_euclid(TAU);
     if w > PI {
         w -= TAU;

@@ -77,7 +77,13 @@ impl Poly3 {
             .min(last - 1);
         let u0 = self.du * i as f64;
         let s0 = self.table[i];
-        let mut u = u0 + (s - s0) / self.speed(u0);
+        // Start from linear interpolation of s(u) inside the panel: two or three Newton steps.
+        let s1 = self.table[i + 1];
+        let mut u = if s1 > s0 && s <= s1 {
+            u0 + (s - s0) / (s1 - s0) * self.du
+        } else {
+            u0 + (s - s0) / self.speed(u0)
+        };
         for _ in 0..MAX_NEWTON {
             let f = s0 + gauss8(u0, u, |x| self.speed(x)) - s;
             let step = f / self.speed(u);

@@ -6,7 +6,7 @@
 //! the point is (∫cos θ, ∫sin θ) from 0 to ds: the Fresnel integrals, shifted. The shift
 //! (σ₀ = κ₀/c) makes the closed Fresnel form lose digits when c is small, so the integrals are
 //! evaluated directly by composite 8-point Gauss–Legendre quadrature (see `quadrature`), on
-//! panels over which θ changes by at most 0.5 rad: error at f64 round-off (< 1e-12 m for
+//! panels over which θ changes by at most 0.5 rad, tabulated once per spiral: error at f64 round-off (< 1e-12 m for
 //! any spiral in the corpus; checked against tabulated Fresnel values in the tests).
 
 use super::quadrature::gauss8_pair;
@@ -18,7 +18,10 @@ const MAX_PHASE_PER_PANEL: f64 = 0.5;
 const MAX_PANELS: usize = 10_000;
 
 /// `<spiral>`: curvature from `curv_start` to `curv_end` over the geometry's length.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// The integrals are tabulated at construction on a grid of step ≤ 0.5 rad of turning, so a
+/// query integrates only one panel (8 nodes) from the grid point below it.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Spiral {
     /// `curvStart` (1/m).
     pub curv_start: f64,
@@ -26,16 +29,44 @@ pub struct Spiral {
     pub curv_end: f64,
     /// Curvature rate c = (curvEnd − curvStart)/length (1/m²).
     pub(crate) rate: f64,
+    /// Grid step along the spiral (m).
+    step: f64,
+    /// (u, v) at s = k·step, k = 0, 1, ….
+    table: Vec<(f64, f64)>,
 }
 
 impl Spiral {
     /// A spiral of `length` metres (length > 0, checked by the parser).
     pub fn new(curv_start: f64, curv_end: f64, length: f64) -> Self {
-        Self {
+        let rate = (curv_end - curv_start) / length;
+        let max_k = curv_start.abs().max(curv_end.abs());
+        let panels = ((max_k * length / MAX_PHASE_PER_PANEL).ceil() as usize).clamp(1, MAX_PANELS);
+        let step = length / panels as f64;
+        let mut me = Self {
             curv_start,
             curv_end,
-            rate: (curv_end - curv_start) / length,
+            rate,
+            step,
+            table: Vec::with_capacity(panels + 1),
+        };
+        let mut acc = (0.0, 0.0);
+        me.table.push(acc);
+        for k in 0..panels {
+            let (du, dv) = me.integrate(step * k as f64, step * (k + 1) as f64);
+            acc = (acc.0 + du, acc.1 + dv);
+            me.table.push(acc);
         }
+        me
+    }
+
+    /// (∫cos θ, ∫sin θ) over [a, b], one 8-point panel.
+    #[inline]
+    fn integrate(&self, a: f64, b: f64) -> (f64, f64) {
+        let (k0, c) = (self.curv_start, self.rate);
+        gauss8_pair(a, b, 1, |s| {
+            let (sn, cs) = (s * (k0 + 0.5 * c * s)).sin_cos();
+            (cs, sn)
+        })
     }
 
     /// Point at arc length `ds` from the spiral's start.
@@ -44,21 +75,15 @@ impl Spiral {
         if c == 0.0 {
             return arc::eval_constant_curvature(k0, ds);
         }
-        let k_end = k0 + c * ds;
-        // Bound on |θ'| over [0, ds]: the curvature is linear, so its extremes are at the ends.
-        let max_k = k0.abs().max(k_end.abs());
-        let panels =
-            ((max_k * ds.abs() / MAX_PHASE_PER_PANEL).ceil() as usize).clamp(1, MAX_PANELS);
-        let (u, v) = gauss8_pair(0.0, ds, panels, |s| {
-            let th = s * (k0 + 0.5 * c * s);
-            let (sn, cs) = th.sin_cos();
-            (cs, sn)
-        });
+        let k = ((ds / self.step).floor().max(0.0) as usize).min(self.table.len() - 1);
+        let s0 = self.step * k as f64;
+        let (u0, v0) = self.table[k];
+        let (du, dv) = self.integrate(s0, ds);
         LocalPoint {
-            u,
-            v,
+            u: u0 + du,
+            v: v0 + dv,
             hdg: ds * (k0 + 0.5 * c * ds),
-            curvature: k_end,
+            curvature: k0 + c * ds,
         }
     }
 }
