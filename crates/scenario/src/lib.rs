@@ -3,7 +3,7 @@
 //! [`Scenario::load`] parses a `.xosc` file (on roxmltree) into typed data: every `$name`
 //! parameter and `${…}` expression resolved (OpenSCENARIO 1.3 §9.1–9.2), every catalog
 //! reference replaced by its entry with the reference's parameter assignments (§9.4), entity
-//! selections expanded and every entity reference checked (§7.2–7.3), deprecated 1.0–1.2
+//! selections expanded and every entity reference checked (§7.2.2 "Entities"), deprecated 1.0–1.2
 //! forms mapped onto the 1.3 model with a [`Warning`]. Every action, condition and position
 //! of 1.3 is typed data with units; model elements the runtime reports on carry a
 //! [`SourcePos`]. The runtime reads only this model, never XML.
@@ -39,7 +39,7 @@ use std::path::Path;
 
 pub use error::{Error, ErrorKind, Result, Warning};
 pub use model::*;
-pub use reader::scenario::MAX_FILE_BYTES;
+pub use reader::files::MAX_FILE_BYTES;
 pub use source::SourcePos;
 
 impl Scenario {

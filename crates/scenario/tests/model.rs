@@ -1,5 +1,5 @@
 //! The resolved model: deprecated 1.0 forms on the 1.3 model, version warnings, parameter
-//! scopes (OpenSCENARIO 1.3 §9.1), entity selections (§7.3), ParameterValueDistribution
+//! scopes (OpenSCENARIO 1.3 §9.1), entity selections (§7.2.2), ParameterValueDistribution
 //! files. Expected values are worked out by hand from the fixtures in `tests/files/`.
 
 use std::path::{Path, PathBuf};

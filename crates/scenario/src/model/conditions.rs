@@ -1,4 +1,4 @@
-//! Entity and value conditions (OpenSCENARIO 1.3 §7.6.2–7.6.3, XSD `EntityCondition` and
+//! Entity and value conditions (OpenSCENARIO 1.3 "Conditions", XSD `EntityCondition` and
 //! `ByValueCondition` with all their choices). Distances in m, speeds in m/s, accelerations in
 //! m/s², times in s, angles in rad.
 

@@ -1,4 +1,4 @@
-//! Entities (OpenSCENARIO 1.3 §7.2 "Entities", XSD `Entities`, `ScenarioObject`, `Vehicle`,
+//! Entities (OpenSCENARIO 1.3 §7.2.2 "Entities", XSD `Entities`, `ScenarioObject`, `Vehicle`,
 //! `Pedestrian`, `MiscObject`, `ExternalObjectReference`, `EntitySelection`, `Controller`).
 //! Lengths in m, mass in kg, speeds in m/s, accelerations in m/s², angles in rad.
 

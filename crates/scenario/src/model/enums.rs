@@ -76,7 +76,7 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// When a condition reports true: on its level (`none`) or on a change of it (§7.6). XSD `ConditionEdge`.
+    /// When a condition reports true: on its level (`none`) or on a change of it ("Conditions and triggers"). XSD `ConditionEdge`.
     ConditionEdge {
         /// `falling`.
         Falling = "falling",
@@ -376,7 +376,7 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// What starting an Event does to other running Events of its Maneuver (§8.4.3). XSD `Priority`.
+    /// What starting an Event does to other running Events of its Maneuver (§8.4, storyboard execution). XSD `Priority`.
     Priority {
         /// `override`.
         Override = "override" | "overwrite",

@@ -1,4 +1,4 @@
-//! Environment (OpenSCENARIO 1.3 §7.8 "Environment", XSD `Environment`, `TimeOfDay`,
+//! Environment (OpenSCENARIO 1.3 "Environment", XSD `Environment`, `TimeOfDay`,
 //! `Weather`, `Sun`, `Fog`, `Precipitation`, `Wind`, `DomeImage`, `RoadCondition`).
 
 use crate::model::{

@@ -1,4 +1,4 @@
-//! Positions (OpenSCENARIO 1.3 §6.3 "Coordinate systems" and §7.4 "Positions", XSD
+//! Positions (OpenSCENARIO 1.3 "Coordinate systems" and "Positions", XSD
 //! `Position` and its ten choices). Distances in m, angles in rad.
 
 use crate::model::routing::{Route, Trajectory};

@@ -1,4 +1,4 @@
-//! Routes and trajectories (OpenSCENARIO 1.3 §7.5 "Routes" and §7.6 "Trajectories", XSD
+//! Routes and trajectories (OpenSCENARIO 1.3 "Routes" and "Trajectories", XSD
 //! `Route`, `Waypoint`, `Trajectory`, `Shape`, `Polyline`, `Clothoid`, `ClothoidSpline`,
 //! `Nurbs`). Lengths in m, times in s, curvature in 1/m.
 

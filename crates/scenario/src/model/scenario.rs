@@ -1,4 +1,4 @@
-//! The scenario as a whole (OpenSCENARIO 1.3 §7.1, XSD `OpenScenario` with group
+//! The scenario as a whole (OpenSCENARIO 1.3, XSD `OpenScenario` with group
 //! `ScenarioDefinition`, `RoadNetwork`, `TrafficSignals`).
 
 use std::path::PathBuf;

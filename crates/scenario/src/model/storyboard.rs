@@ -1,5 +1,6 @@
-//! The storyboard (OpenSCENARIO 1.3 §7.2.1 and §8 "Storyboard", XSD `Storyboard`, `Init`,
-//! `Story`, `Act`, `ManeuverGroup`, `Actors`, `Maneuver`, `Event`, `Action`).
+//! The storyboard (OpenSCENARIO 1.3 §7.2.1 "Storyboard", §7.3.1 "ManeuverGroups and
+//! Actors"; XSD `Storyboard`, `Init`, `Story`, `Act`, `ManeuverGroup`, `Actors`, `Maneuver`,
+//! `Event`, `Action`).
 
 use crate::model::{
     CatalogOrigin, GlobalAction, Priority, PrivateAction, Trigger, UserDefinedAction,

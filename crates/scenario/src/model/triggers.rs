@@ -1,4 +1,4 @@
-//! Triggers and conditions (OpenSCENARIO 1.3 §7.6 "Conditions and triggers", XSD
+//! Triggers and conditions (OpenSCENARIO 1.3 "Conditions and triggers", XSD
 //! `Trigger`, `ConditionGroup`, `Condition`, `ByEntityCondition`, `TriggeringEntities`).
 //! A trigger fires when any of its groups holds; a group holds when all its conditions do.
 

@@ -1,4 +1,4 @@
-//! Readers for controller-value overrides and appearance actions (OpenSCENARIO 1.3 §7.7.2,
+//! Readers for controller-value overrides and appearance actions (OpenSCENARIO 1.3, "Actions",
 //! XSD `OverrideControllerValueAction`, `AppearanceAction`, `LightStateAction`,
 //! `AnimationAction`, `Color`). The deprecated `value` of brake overrides (1.0–1.1) reads
 //! as BrakePercent and the deprecated `number` of OverrideGearAction as a ManualGear.

@@ -1,4 +1,4 @@
-//! Readers for triggers and conditions (OpenSCENARIO 1.3 §7.6, XSD `Trigger`,
+//! Readers for triggers and conditions (OpenSCENARIO 1.3, "Conditions and triggers", XSD `Trigger`,
 //! `ConditionGroup`, `Condition`, `ByEntityCondition`, `EntityCondition`,
 //! `ByValueCondition`). The deprecated `alongRoute` attribute (1.0) is read as
 //! `relativeDistanceType`/`coordinateSystem` left unset, with a warning.

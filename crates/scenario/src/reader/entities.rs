@@ -1,4 +1,4 @@
-//! Readers for entities (OpenSCENARIO 1.3 §7.2, XSD `Entities`, `ScenarioObject`,
+//! Readers for entities (OpenSCENARIO 1.3 §7.2.2 "Entities", XSD `Entities`, `ScenarioObject`,
 //! `Vehicle`, `Pedestrian`, `MiscObject`, `Controller`, `ObjectController`,
 //! `EntitySelection`). Catalog references are resolved in place.
 

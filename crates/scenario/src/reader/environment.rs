@@ -1,4 +1,4 @@
-//! Readers for the environment (OpenSCENARIO 1.3 §7.8, XSD `Environment`, `TimeOfDay`,
+//! Readers for the environment (OpenSCENARIO 1.3, "Environment", XSD `Environment`, `TimeOfDay`,
 //! `Weather`, `Sun`, `Fog`, `Precipitation`, `Wind`, `DomeImage`, `RoadCondition`).
 //! Deprecated attributes (Sun@intensity, Weather@cloudState) are kept or mapped with a warning.
 

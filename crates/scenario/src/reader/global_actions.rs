@@ -1,4 +1,4 @@
-//! Readers for global and user-defined actions (OpenSCENARIO 1.3 §7.7.1 and §7.7.3, XSD
+//! Readers for global and user-defined actions (OpenSCENARIO 1.3, "Actions", XSD
 //! `GlobalAction`, `EnvironmentAction`, `EntityAction`, `InfrastructureAction`,
 //! `SetMonitorAction`, `ParameterAction`, `VariableAction`, `UserDefinedAction`).
 

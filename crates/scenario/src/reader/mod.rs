@@ -4,10 +4,12 @@
 pub(crate) mod appearance;
 pub(crate) mod attr;
 pub(crate) mod catalog;
+pub(crate) mod compat;
 pub(crate) mod conditions;
 pub(crate) mod context;
 pub(crate) mod entities;
 pub(crate) mod environment;
+pub(crate) mod files;
 pub(crate) mod global_actions;
 pub(crate) mod params;
 pub(crate) mod positions;

@@ -1,4 +1,4 @@
-//! Readers for positions (OpenSCENARIO 1.3 §7.4, XSD `Position`, `Orientation`,
+//! Readers for positions (OpenSCENARIO 1.3, "Positions", XSD `Position`, `Orientation`,
 //! `InRoutePosition`). The 1.0 GeoPosition attributes `latitude`/`longitude` (rad) and
 //! `height` are read into the 1.3 `latitudeDeg`/`longitudeDeg`/`altitude`, with a warning.
 

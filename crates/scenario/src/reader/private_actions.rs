@@ -1,4 +1,4 @@
-//! Readers for private actions (OpenSCENARIO 1.3 §7.7.2, XSD `PrivateAction`,
+//! Readers for private actions (OpenSCENARIO 1.3, "Actions", XSD `PrivateAction`,
 //! `LongitudinalAction`, `LateralAction`, `VisibilityAction`, `SynchronizeAction`,
 //! `ControllerAction`, `TeleportAction`, `RoutingAction`, `TrailerAction`).
 //!

@@ -1,5 +1,5 @@
-//! Checks of names the storyboard refers to (OpenSCENARIO 1.3 §7.6.3.4
-//! StoryboardElementStateCondition, §7.7.1.6 VariableAction, §7.6.3.8 VariableCondition):
+//! Checks of names the storyboard refers to (OpenSCENARIO 1.3, "Conditions" and
+//! "Actions": StoryboardElementStateCondition, VariableAction, VariableCondition):
 //! a StoryboardElementStateCondition must name a storyboard element of its type, and
 //! VariableAction/VariableCondition a declared variable. Run once the storyboard is read.
 

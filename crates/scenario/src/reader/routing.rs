@@ -1,4 +1,4 @@
-//! Readers for routes and trajectories (OpenSCENARIO 1.3 §7.5–7.6, XSD `Route`, `RouteRef`,
+//! Readers for routes and trajectories (OpenSCENARIO 1.3, "Routes" and "Trajectories", XSD `Route`, `RouteRef`,
 //! `Trajectory`, `TrajectoryRef`, `Shape`). The deprecated `Clothoid@curvatureDot` is read as
 //! `curvaturePrime`.
 

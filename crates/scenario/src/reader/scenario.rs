@@ -1,9 +1,9 @@
-//! The top level of a scenario file (OpenSCENARIO 1.3 §7.1, XSD `OpenScenario`,
+//! The top level of a scenario file (OpenSCENARIO 1.3, XSD `OpenScenario`,
 //! `FileHeader`, group `ScenarioDefinition`, `ParameterValueDistribution`/`ScenarioFile`,
 //! `CatalogLocations`, `RoadNetwork`, `VariableDeclarations`, `MonitorDeclarations`) and the
 //! load sequence:
 //!
-//! 1. read the file (at most [`MAX_FILE_BYTES`]) and parse it with roxmltree (no DTD, so no
+//! 1. read the file (at most [`MAX_FILE_BYTES`](crate::MAX_FILE_BYTES)) and parse it with roxmltree (no DTD, so no
 //!    entity expansion);
 //! 2. FileHeader, global ParameterDeclarations (with `--param` overrides), CatalogLocations;
 //! 3. parse every `.xosc` of the catalog directories;
@@ -12,7 +12,6 @@
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::expr::Value;
@@ -23,16 +22,14 @@ use crate::model::{
 use crate::reader::catalog::{CatalogFile, CatalogIndex};
 use crate::reader::context::{Ctx, Doc, Node, Scope};
 use crate::reader::entities::read_entities;
+use crate::reader::files::{
+    declared_rev_minor, parse, read_catalog_sources, read_source, resolve_path,
+};
 use crate::reader::params::{declare, read_parameter_type};
 use crate::reader::positions::read_position;
 use crate::reader::references::check_references;
 use crate::reader::selections::{check_entity_names, expand_selections};
 use crate::reader::storyboard::read_storyboard;
-use crate::source::{LineIndex, SourcePos};
-
-/// Largest scenario or catalog file read, bytes (64 MiB; the largest real scenarios are a
-/// few hundred kB). Larger files are refused before reading.
-pub const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
 
 /// The children of XSD `CatalogLocations`, one per catalog kind.
 const CATALOG_KINDS: [&str; 8] = [
@@ -45,76 +42,6 @@ const CATALOG_KINDS: [&str; 8] = [
     "TrajectoryCatalog",
     "RouteCatalog",
 ];
-
-/// A file's path and text.
-struct Source {
-    path: Arc<Path>,
-    text: String,
-}
-
-/// Reads `path` for `what`, refusing files over [`MAX_FILE_BYTES`].
-fn read_source(path: &Path, what: &'static str) -> Result<Source> {
-    let arc: Arc<Path> = Arc::from(path);
-    let io_err = |e: std::io::Error| {
-        Error::new(
-            ErrorKind::Io {
-                what,
-                path: path.to_path_buf(),
-                message: e.to_string(),
-            },
-            SourcePos::start_of(arc.clone()),
-        )
-    };
-    let size = std::fs::metadata(path).map_err(io_err)?.len();
-    if size > MAX_FILE_BYTES {
-        return Err(Error::new(
-            ErrorKind::FileTooLarge {
-                path: path.to_path_buf(),
-                size,
-                limit: MAX_FILE_BYTES,
-            },
-            SourcePos::start_of(arc),
-        ));
-    }
-    let bytes = std::fs::read(path).map_err(io_err)?;
-    // A UTF-8 byte order mark is allowed before the XML declaration; roxmltree wants text.
-    let text = String::from_utf8(bytes).map_err(|e| {
-        let offset = e.utf8_error().valid_up_to();
-        Error::new(
-            ErrorKind::Xml {
-                message: format!("invalid UTF-8 at byte {offset}"),
-            },
-            SourcePos::start_of(arc.clone()),
-        )
-    })?;
-    Ok(Source { path: arc, text })
-}
-
-/// Parses `source` into a document.
-fn parse(source: &Source) -> Result<Doc<'_>> {
-    let text = source.text.strip_prefix('\u{feff}').unwrap_or(&source.text);
-    let lines = LineIndex::new(text);
-    let doc = roxmltree::Document::parse(text).map_err(|e| {
-        let p = e.pos();
-        let message = e.to_string();
-        let suffix = format!(" at {}:{}", p.row, p.col);
-        let message = message.strip_suffix(&suffix).unwrap_or(&message).to_owned();
-        Error::new(
-            ErrorKind::Xml { message },
-            SourcePos {
-                file: source.path.clone(),
-                line: p.row,
-                col: p.col,
-            },
-        )
-    })?;
-    Ok(Doc {
-        path: source.path.clone(),
-        text,
-        lines,
-        doc,
-    })
-}
 
 /// Loads the scenario at `path`, overriding global parameters with `overrides`.
 pub(crate) fn load(path: &Path, overrides: &[(String, String)]) -> Result<Scenario> {
@@ -262,27 +189,6 @@ fn load_distribution<'a>(
     Ok(scenario)
 }
 
-/// `written` relative to the directory of `base` (absolute paths stay as they are).
-/// `..` steps are folded into the path as text (no file system access, so links are not
-/// followed), which keeps messages short: `xosc/../xodr/a.xodr` reads `xodr/a.xodr`.
-pub(crate) fn resolve_path(base: &Path, written: &str) -> PathBuf {
-    use std::path::Component;
-    let dir = base.parent().unwrap_or_else(|| Path::new(""));
-    let mut out = PathBuf::new();
-    for c in dir.join(written.trim()).components() {
-        match c {
-            Component::CurDir => {}
-            Component::ParentDir
-                if matches!(out.components().next_back(), Some(Component::Normal(_))) =>
-            {
-                out.pop();
-            }
-            other => out.push(other),
-        }
-    }
-    out
-}
-
 /// Reads XSD `FileHeader`.
 fn read_file_header<'a>(ctx: &mut Ctx<'a>, root: Node<'a>) -> Result<FileHeader> {
     let h = ctx.child(root, "FileHeader")?;
@@ -319,17 +225,6 @@ fn read_file_header<'a>(ctx: &mut Ctx<'a>, root: Node<'a>) -> Result<FileHeader>
         author: ctx.opt(h, "author")?.unwrap_or_default(),
         license,
     })
-}
-
-/// revMinor of a document's FileHeader, read without resolution (3 when absent or odd; the
-/// scenario's own header is checked by [`read_file_header`]).
-fn declared_rev_minor(doc: &Doc<'_>) -> u32 {
-    let root = doc.doc.root_element();
-    root.children()
-        .find(|c| c.is_element() && c.tag_name().name() == "FileHeader")
-        .and_then(|h| h.attribute("revMinor"))
-        .and_then(|v| v.trim().parse().ok())
-        .unwrap_or(3)
 }
 
 /// Global ParameterDeclarations with overrides; an override of an undeclared name is an error.
@@ -439,27 +334,6 @@ fn read_catalog_locations<'a>(
     Ok(out)
 }
 
-/// Reads every `.xosc` of the catalog directories, in sorted order, each file once.
-fn read_catalog_sources(locations: &[(String, PathBuf)]) -> Result<Vec<Source>> {
-    let mut files: Vec<PathBuf> = Vec::new();
-    for (_, dir) in locations {
-        let Ok(entries) = std::fs::read_dir(dir) else {
-            continue;
-        };
-        let mut found: Vec<PathBuf> = entries
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "xosc") && p.is_file())
-            .collect();
-        found.sort();
-        for f in found {
-            if !files.contains(&f) {
-                files.push(f);
-            }
-        }
-    }
-    files.iter().map(|f| read_source(f, "catalog")).collect()
-}
-
 /// Indexes the `Catalog` elements of documents 1.. by name.
 fn index_catalogs<'a>(docs: &'a [Doc<'a>], locations: &[(String, PathBuf)]) -> CatalogIndex<'a> {
     let mut index = CatalogIndex {
@@ -551,28 +425,4 @@ fn read_road_network<'a>(ctx: &mut Ctx<'a>, n: Node<'a>, path: &Path) -> Result<
         }
     }
     Ok(road)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::resolve_path;
-    use std::path::Path;
-
-    #[test]
-    fn resolved_paths_fold_parent_steps_but_keep_leading_ones() {
-        let base = Path::new("/c/esmini/xosc/cut-in.xosc");
-        assert_eq!(
-            resolve_path(base, "../xodr/e6mini.xodr"),
-            Path::new("/c/esmini/xodr/e6mini.xodr")
-        );
-        assert_eq!(
-            resolve_path(base, "./Catalogs/V"),
-            Path::new("/c/esmini/xosc/Catalogs/V")
-        );
-        assert_eq!(
-            resolve_path(Path::new("a.xosc"), "../../r.xodr"),
-            Path::new("../../r.xodr")
-        );
-        assert_eq!(resolve_path(base, "/abs/r.xodr"), Path::new("/abs/r.xodr"));
-    }
 }

@@ -1,5 +1,5 @@
-//! Entity name checks and EntitySelection expansion (OpenSCENARIO 1.3 §7.2.2 "Entities" and
-//! §7.3 "Entity selections"; XSD `EntitySelection`, `SelectedEntities`).
+//! Entity name checks and EntitySelection expansion (OpenSCENARIO 1.3 §7.2.2 "Entities";
+//! XSD `EntitySelection`, `SelectedEntities`).
 //!
 //! Every entity reference read anywhere in the scenario (and its catalogs) must name a
 //! ScenarioObject or an EntitySelection. A selection's members expand to scenario objects:

@@ -1,4 +1,4 @@
-//! Readers for traffic actions (OpenSCENARIO 1.3 §7.7.1.4, XSD `TrafficAction`,
+//! Readers for traffic actions (OpenSCENARIO 1.3, "Actions", XSD `TrafficAction`,
 //! `TrafficSourceAction`, `TrafficSinkAction`, `TrafficSwarmAction`, `TrafficAreaAction`,
 //! `TrafficStopAction`, `TrafficDefinition`, `TrafficDistribution`, `TrafficArea`).
 

@@ -1,4 +1,4 @@
-//! Controller-value overrides and appearance (OpenSCENARIO 1.3 §7.7.2, XSD
+//! Controller-value overrides and appearance (OpenSCENARIO 1.3, "Actions", XSD
 //! `OverrideControllerValueAction`, `LightStateAction`, `AnimationAction`).
 
 use crate::model::{

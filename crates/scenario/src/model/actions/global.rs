@@ -1,4 +1,4 @@
-//! Global and user-defined actions (OpenSCENARIO 1.3 §7.7.1 and §7.7.3, XSD `GlobalAction`,
+//! Global and user-defined actions (OpenSCENARIO 1.3, "Actions", XSD `GlobalAction`,
 //! `EntityAction`, `InfrastructureAction`, `ParameterAction`, `VariableAction`,
 //! `SetMonitorAction`, `TrafficAction`, `UserDefinedAction`).
 

@@ -1,4 +1,4 @@
-//! Actions (OpenSCENARIO 1.3 §7.7): private, global, traffic, appearance.
+//! Actions (OpenSCENARIO 1.3, "Actions"): private, global, traffic, appearance.
 
 mod appearance;
 mod global;

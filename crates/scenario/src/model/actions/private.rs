@@ -1,4 +1,4 @@
-//! Private actions (OpenSCENARIO 1.3 §7.7.2 "Private actions", XSD `PrivateAction` and its
+//! Private actions (OpenSCENARIO 1.3, "Actions", XSD `PrivateAction` and its
 //! choices): longitudinal, lateral, visibility, synchronize, controller, teleport, routing,
 //! appearance, trailer. Speeds m/s, distances m, times s, angles rad.
 

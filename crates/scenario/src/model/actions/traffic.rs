@@ -1,4 +1,4 @@
-//! Traffic actions (OpenSCENARIO 1.3 §7.7.1.4, XSD `TrafficAction` choices and
+//! Traffic actions (OpenSCENARIO 1.3, "Actions", XSD `TrafficAction` choices and
 //! `TrafficDefinition`/`TrafficDistribution`). Radii and distances in m, rates in 1/s,
 //! speeds in m/s.
 
