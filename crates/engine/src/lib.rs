@@ -26,4 +26,6 @@ pub mod storyboard;
 pub mod trajectory;
 
 pub use output::{EventRecord, EventSink, Frame, FrameSink};
-pub use runtime::{Engine, EngineConfig, EntityId, RuntimeError, RuntimeErrorKind, StopReason};
+pub use runtime::{
+    Engine, EngineConfig, EntityId, LoadError, RuntimeError, RuntimeErrorKind, StopReason,
+};

@@ -285,8 +285,12 @@ impl Builder<'_> {
         ActionDesc { name, id }
     }
 
+    /// A trigger's description. An empty `<StartTrigger/>` or `<StopTrigger/>` (allowed since
+    /// 1.0, and how the ASAM ALKS examples write "start with the parent") is read as no
+    /// trigger: a start trigger then starts the element with its parent, as esmini does, and
+    /// an absent stop trigger never fires, as an empty one would.
     fn trigger(&mut self, trigger: Option<&Trigger>) -> Option<TriggerDesc> {
-        let trigger = trigger?;
+        let trigger = trigger.filter(|t| !t.condition_groups.is_empty())?;
         let mut groups = Vec::new();
         for g in &trigger.condition_groups {
             let mut conditions = Vec::new();

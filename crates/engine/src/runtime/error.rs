@@ -80,6 +80,9 @@ pub enum RuntimeErrorKind {
         /// Where.
         pos: SourcePos,
     },
+    /// A position did not resolve (the position module's error names file:line:col).
+    #[error("{0}")]
+    Position(crate::position::PositionError),
     /// The storyboard rejected its description or a step.
     #[error("storyboard: {0}")]
     Storyboard(#[from] StoryboardError),

@@ -78,15 +78,6 @@ pub fn lane_shift(lane: i32, n: i32, direction: Direction) -> i32 {
     id
 }
 
-/// The direction of travel of a lane of `road` (right-hand traffic: negative ids towards +s).
-pub fn lane_direction(net: &RoadNetwork, road_id: &str, lane: i32, s: Real) -> Direction {
-    match net.lane_handle(road_id, lane, s) {
-        Some(h) => net.driving_direction(h),
-        None if lane < 0 => Direction::Forward,
-        None => Direction::Backward,
-    }
-}
-
 /// Moves `track` by `distance` m of travel along s in its direction, following lane links
 /// (the first successor, in the road model's order, or the one `prefer` picks). Returns the
 /// distance that could not be driven because the lane ends with no successor.

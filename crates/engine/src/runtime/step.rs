@@ -211,8 +211,8 @@ impl Engine {
             self.stopped = Some(StopReason::StoriesComplete);
         }
         let world = self.world.get_mut();
-        if self.step == 0 || self.stopped.is_some() {
-            // The frame at t: the initial state after the Init actions, or the last one.
+        if self.step == 0 {
+            // The frame at t = 0: the initial state after the Init actions.
             let clock = Instant::now();
             frames
                 .frame(&Frame {

@@ -5,11 +5,11 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use opendrive::{normalize_angle, Direction, Pose, Real, RoadNetwork};
+use opendrive::{normalize_angle, Direction, Pose, Real, RoadNetwork, RoadPosition};
 use scenario::expr::Value;
 
 use super::entity::{Entity, EntityId, LaneTrack};
-use super::lanes::{lane_at, lane_direction, road_position};
+use super::lanes::lane_at;
 use crate::condition::ConditionContext;
 use crate::position::{EntityQuery, EntityView};
 use crate::storyboard::StateView;
@@ -20,13 +20,6 @@ const ON_ROAD_TOLERANCE: Real = 0.5;
 /// An entity whose heading differs from its lane's direction of travel by more than this
 /// (rad) crosses the road rather than following it.
 const ALIGNED_TOLERANCE: Real = 0.5;
-
-/// A heading given absolutely or relative to a lane's direction of travel (rad).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Heading {
-    Absolute(Real),
-    Relative(Real),
-}
 
 /// Road network, entities and global values of one run.
 #[derive(Debug)]
@@ -91,16 +84,15 @@ impl World {
         self.variables.get(name)
     }
 
-    /// Places entity `id` at `pose`: finds its road position and, when it stands on a lane
-    /// roughly along the lane's direction of travel, the lane the default controller follows.
-    pub(crate) fn place(&mut self, id: EntityId, pose: Pose) {
-        let found = self.network.locate(pose.x, pose.y, Some(pose.h));
+    /// Places entity `id` at `pose` with road position `found`; when it stands on a lane
+    /// roughly along the lane's direction of travel, the default controller follows that lane.
+    pub(crate) fn place_resolved(&mut self, id: EntityId, pose: Pose, found: Option<RoadPosition>) {
         let e = &mut self.entities[id.index()];
         e.placed = true;
         e.pose = pose;
         e.track = None;
         e.road_position = None;
-        let Some(rp) = found else {
+        let Some(mut rp) = found else {
             return;
         };
         let on_road = rp.distance <= ON_ROAD_TOLERANCE;
@@ -113,6 +105,14 @@ impl World {
                 normalize_angle(rel - std::f64::consts::PI),
             )
         };
+        if let Some((lane, offset)) = self
+            .network
+            .road(&rp.road_id)
+            .and_then(|road| lane_at(road, rp.s, rp.t))
+        {
+            rp.lane_id = lane;
+            rp.offset = offset;
+        }
         if on_road && along.abs() <= ALIGNED_TOLERANCE {
             e.track = Some(LaneTrack {
                 road_id: rp.road_id.clone(),
@@ -128,65 +128,6 @@ impl World {
         e.road_position = Some(rp);
     }
 
-    /// Places entity `id` on lane `lane` of road `road_id` at `s`, `offset` m left of the lane
-    /// centre, with `heading` absolute or relative to the lane's direction of travel. Fails
-    /// with the road model's message.
-    pub(crate) fn place_on_lane(
-        &mut self,
-        id: EntityId,
-        road_id: &str,
-        lane: i32,
-        s: Real,
-        offset: Real,
-        heading: Heading,
-    ) -> Result<(), opendrive::Error> {
-        let mut pose = self.network.lane_pose(road_id, lane, s, offset)?;
-        let direction = lane_direction(&self.network, road_id, lane, s);
-        let travel = if direction == Direction::Forward {
-            pose.h
-        } else {
-            normalize_angle(pose.h + std::f64::consts::PI)
-        };
-        pose.h = match heading {
-            Heading::Absolute(h) => h,
-            Heading::Relative(h) => normalize_angle(travel + h),
-        };
-        self.place(id, pose);
-        // Keep the lane asked for, even where lanes overlap (junctions) and look-up chose
-        // another road.
-        let e = &mut self.entities[id.index()];
-        if let (Some(road), true) = (
-            self.network.road(road_id),
-            angle_difference_small(pose.h, travel),
-        ) {
-            let t = road.lane_span(lane, s)?.center() + offset;
-            e.track = Some(LaneTrack {
-                road_id: road_id.to_owned(),
-                lane_id: lane,
-                s,
-                t,
-                offset,
-                direction,
-                relative_heading: normalize_angle(pose.h - travel),
-                blend: None,
-            });
-            let road_h = if direction == Direction::Forward {
-                travel
-            } else {
-                normalize_angle(travel - std::f64::consts::PI)
-            };
-            if let Some(track) = &e.track {
-                e.road_position = road_position(&self.network, track, pose.h - road_h);
-            }
-        }
-        Ok(())
-    }
-
-    /// Lane id and offset at road coordinates, for positions given as (road, s, t).
-    pub(crate) fn lane_and_offset(&self, road_id: &str, s: Real, t: Real) -> Option<(i32, Real)> {
-        lane_at(self.network.road(road_id)?, s, t)
-    }
-
     /// The view of entity `e` for positions and conditions.
     pub(crate) fn view<'a>(&'a self, e: &'a Entity) -> EntityView<'a> {
         EntityView {
@@ -199,10 +140,6 @@ impl World {
             ..EntityView::new(&e.name, e.kind.object_type(), e.pose, e.bounding_box)
         }
     }
-}
-
-fn angle_difference_small(a: Real, b: Real) -> bool {
-    opendrive::angle_difference(a, b).abs() <= ALIGNED_TOLERANCE
 }
 
 impl EntityQuery for World {

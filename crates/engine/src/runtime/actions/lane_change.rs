@@ -104,13 +104,38 @@ pub(crate) fn begin(
     let road = net.road(&track.road_id).ok_or_else(|| {
         RuntimeError::at("the actor's road", format!("road '{}'", track.road_id), pos)
     })?;
-    let span_to = road.lane_span(lane, track.s).map_err(|_| {
+    // A lane beyond the road's outermost lane (a scenario driving off the road) is reached as
+    // that many lane widths outside the outermost lane on its side.
+    let (lane, offset) = match road.lane_span(lane, track.s) {
+        Ok(_) => (lane, offset),
+        Err(_) => {
+            let section = road.lane_section_at(track.s);
+            let outer = if lane > 0 {
+                section.left.last().map(|l| l.id)
+            } else {
+                section.right.last().map(|l| l.id)
+            };
+            let outer = outer
+                .filter(|&o| o != 0 && o.signum() == lane.signum())
+                .ok_or_else(|| {
+                    RuntimeError::at(
+                        "a target lane on a side of the road that has lanes",
+                        format!(
+                            "lane {lane} on road '{}' at s={:.3}",
+                            track.road_id, track.s
+                        ),
+                        pos,
+                    )
+                })?;
+            let width = road.lane_span(outer, track.s).map_or(0.0, |sp| sp.width());
+            let extra = f64::from(lane.abs() - outer.abs()) * width * f64::from(lane.signum());
+            (outer, offset + extra)
+        }
+    };
+    let span_to = road.lane_span(lane, track.s).map_err(|e| {
         RuntimeError::at(
             "a target lane that exists at the actor's position",
-            format!(
-                "lane {lane} on road '{}' at s={:.3}",
-                track.road_id, track.s
-            ),
+            e.to_string(),
             pos,
         )
     })?;

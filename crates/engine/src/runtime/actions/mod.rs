@@ -95,8 +95,7 @@ impl ActionTable {
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) {
         for (index, slot) in self.slots.iter_mut().enumerate() {
             let id = ActionId(index as u32);
-            for (i, part) in slot.parts.iter_mut().enumerate() {
-                let actor = slot.actors[i];
+            for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
                 let next = match part {
                     Part::Done(_) => continue,
                     Part::Speed(s) => speed::step(world, actor, s, now, dt),
@@ -146,8 +145,8 @@ impl Host<'_> {
         };
         if let Some(old) = held.filter(|&old| old != id) {
             if let Some(slot) = self.table.slots.get_mut(old.0 as usize) {
-                for (i, part) in slot.parts.iter_mut().enumerate() {
-                    if slot.actors[i] == actor && part.status() == ActionStatus::Running {
+                for (part, &a) in slot.parts.iter_mut().zip(&slot.actors) {
+                    if a == actor && part.status() == ActionStatus::Running {
                         if domain == Domain::Lateral {
                             lane_change::abandon(self.world, actor);
                         }
@@ -322,9 +321,8 @@ impl Host<'_> {
         let Some(slot) = self.table.slots.get_mut(id.0 as usize) else {
             return;
         };
-        for (i, part) in slot.parts.iter_mut().enumerate() {
+        for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
             if part.status() == ActionStatus::Running {
-                let actor = slot.actors[i];
                 let e = self.world.entity_mut(actor);
                 if e.lateral_action == Some(id) {
                     lane_change::abandon(self.world, actor);

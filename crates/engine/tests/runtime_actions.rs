@@ -1,0 +1,93 @@
+//! Actions against closed forms (OpenSCENARIO 1.3 §7.7.2): SpeedAction with a linear shape,
+//! LaneChangeAction with a sinusoidal shape, TeleportAction to a LanePosition.
+
+mod runtime_support;
+
+use approx::assert_abs_diff_eq;
+use opendrive::{normalize_angle, RoadNetwork};
+use runtime_support::{file, run};
+
+/// Tolerance for values that are sums of a few dozen f64 terms.
+const EXACT: f64 = 1e-9;
+
+/// speed_linear.xosc: from rest to 20 m/s in T = 4 s, linear in time, from s0 = 10 m, dt = 0.05 s.
+///
+/// Continuous closed forms: v(t) = 5 t, s(t) = s0 + 2.5 t². The runtime sets in step k the speed
+/// of the step's end, v((k+1)·dt), and moves with it (stage 2 before stage 3), so after n steps
+/// s = s0 + Σ_{i=1..n} 5·i·dt·dt = s0 + 2.5·t² + 2.5·t·dt, t = n·dt: the closed form plus the
+/// scheme's first-order term a·t·dt/2 (a = 5 m/s²). After T the speed stays 20 m/s.
+#[test]
+fn speed_action_linear_time_matches_closed_form() {
+    let (_, frames, _) = run("speed_linear.xosc");
+    let dt = 0.05;
+    for t in [0.5, 1.0, 2.0, 3.0, 4.0] {
+        let row = frames.at("Ego", t);
+        assert_abs_diff_eq!(row.speed, 5.0 * t, epsilon = EXACT);
+        let s = row.road.as_ref().map(|r| r.2).unwrap_or(f64::NAN);
+        assert_abs_diff_eq!(s, 10.0 + 2.5 * t * t + 2.5 * t * dt, epsilon = EXACT);
+        // The scheme's distance exceeds the continuous one by a·t·dt/2 only.
+        assert!((s - (10.0 + 2.5 * t * t) - 2.5 * t * dt).abs() < EXACT);
+    }
+    // t = 6 s: 2 s more at 20 m/s from 50.5 m.
+    let row = frames.at("Ego", 6.0);
+    assert_abs_diff_eq!(row.speed, 20.0, epsilon = EXACT);
+    assert_abs_diff_eq!(row.x, 90.5, epsilon = EXACT);
+}
+
+/// lane_change_sinusoidal.xosc: lane -1 to lane 1 of straight_500m.xodr, each 3.07 m wide
+/// (`<width a="3.07…">`), so the centres are at t = −1.535 and +1.535 and Δt = 3.07 m. The
+/// change starts at 1.0 s and lasts 2 s; at half time f(½) = (1 − cos(π/2))/2 = ½, so t = 0.
+/// At 1.5 s (p = ¼) f = (1 − cos(π/4))/2 ≈ 0.1464466, so t = −1.535 + 3.07·f.
+#[test]
+fn lane_change_sinusoidal_is_halfway_at_half_time() {
+    let (_, frames, events) = run("lane_change_sinusoidal.xosc");
+    let lateral = |time: f64| {
+        frames
+            .at("Ego", time)
+            .road
+            .as_ref()
+            .map(|r| r.3)
+            .unwrap_or(f64::NAN)
+    };
+    assert_abs_diff_eq!(lateral(1.0), -1.535, epsilon = EXACT);
+    assert_abs_diff_eq!(lateral(2.0), 0.0, epsilon = EXACT);
+    let quarter = (1.0 - std::f64::consts::FRAC_PI_4.cos()) / 2.0;
+    assert_abs_diff_eq!(lateral(1.5), -1.535 + 3.07 * quarter, epsilon = EXACT);
+    let end = frames.at("Ego", 3.5);
+    let (_, lane, _, t, offset) = end.road.clone().unwrap_or_default();
+    assert_eq!(lane, 1);
+    assert_abs_diff_eq!(t, 1.535, epsilon = EXACT);
+    assert_abs_diff_eq!(offset, 0.0, epsilon = EXACT);
+    // Zero slope at both ends: heading equals the road's (0 rad) once the change is over.
+    assert_abs_diff_eq!(end.h, 0.0, epsilon = EXACT);
+    // The action starts at 1.0 s and ends when p reaches 1, in the step of 3.0 s.
+    let started = events.iter().any(|e| {
+        matches!(e, engine::EventRecord::Transition(r)
+        if r.name == "Action" && r.transition == engine::storyboard::Transition::Start
+            && (r.time - 1.0).abs() < 1e-9)
+    });
+    assert!(started, "the lane change starts at 1.0 s");
+}
+
+/// teleport_lane.xosc: LanePosition road 0, lane 1, s = 50, offset 0.3 → exactly the road
+/// model's lane_pose, heading turned by π because lane 1 is driven towards −s (right-hand
+/// traffic, OpenDRIVE 1.8 §11.2; semantics-pitfalls #15).
+#[test]
+fn teleport_to_lane_position_is_lane_pose() {
+    let (_, frames, _) = run("teleport_lane.xosc");
+    let net = RoadNetwork::from_file(&file("junction_trippel_twoway0.xodr")).expect("road loads");
+    let pose = net.lane_pose("0", 1, 50.0, 0.3).expect("lane exists");
+    let row = frames.at("Ego", 0.0);
+    assert_abs_diff_eq!(row.x, pose.x, epsilon = EXACT);
+    assert_abs_diff_eq!(row.y, pose.y, epsilon = EXACT);
+    assert_abs_diff_eq!(row.z, pose.z, epsilon = EXACT);
+    assert_abs_diff_eq!(
+        normalize_angle(row.h - pose.h - std::f64::consts::PI),
+        0.0,
+        epsilon = EXACT
+    );
+    let (road, lane, s, _, offset) = row.road.clone().unwrap_or_default();
+    assert_eq!((road.as_str(), lane), ("0", 1));
+    assert_abs_diff_eq!(s, 50.0, epsilon = 1e-6);
+    assert_abs_diff_eq!(offset, 0.3, epsilon = 1e-6);
+}

@@ -1,0 +1,35 @@
+//! The default controller (OpenSCENARIO 1.3 §7.5.1): follows its lane through a junction.
+
+mod runtime_support;
+
+use approx::assert_abs_diff_eq;
+use opendrive::{normalize_angle, RoadNetwork};
+use runtime_support::{file, run};
+
+/// junction_follow.xosc: road 0 lane −1 from s = 90 at 10 m/s for 6 s (60 m of travel).
+/// Road 0 ends at s = 100 in junction 1, whose first connection from road 0 lane −1 is
+/// connecting road 1 (a 30 m spiral, lane −1 → −1) ending at the start of road 2. So the
+/// entity passes road 1 and ends on road 2, lane −1, travelling towards +s, at
+/// s = 60 − 10 − (its travel on road 1), about 20 m (the travel along lane −1 of the spiral
+/// differs from the reference line's 30 m by the factor 1 − κ·t). Its pose there is the road
+/// model's lane pose.
+#[test]
+fn default_controller_follows_lane_through_junction() {
+    let (_, frames, _) = run("junction_follow.xosc");
+    let net = RoadNetwork::from_file(&file("junction_trippel_twoway0.xodr")).expect("road loads");
+    let on_connecting = frames
+        .0
+        .iter()
+        .any(|r| r.road.as_ref().is_some_and(|p| p.0 == "1" && p.1 == -1));
+    assert!(on_connecting, "the entity drives through connecting road 1");
+    let row = frames.at("Ego", 6.0);
+    let (road, lane, s, _, offset) = row.road.clone().unwrap_or_default();
+    assert_eq!((road.as_str(), lane), ("2", -1));
+    assert!(s > 15.0 && s < 25.0, "s on road 2 = {s}");
+    let pose = net.lane_pose("2", -1, s, offset).expect("lane exists");
+    assert_abs_diff_eq!(row.x, pose.x, epsilon = 1e-9);
+    assert_abs_diff_eq!(row.y, pose.y, epsilon = 1e-9);
+    assert_abs_diff_eq!(normalize_angle(row.h - pose.h), 0.0, epsilon = 1e-9);
+    // The speed is kept: 10 m/s throughout.
+    assert!(frames.0.iter().all(|r| (r.speed - 10.0).abs() < 1e-12));
+}

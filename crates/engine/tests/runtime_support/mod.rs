@@ -1,0 +1,80 @@
+//! Shared helpers of the runtime tests: paths, a frame recorder, a run to the end.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+
+use engine::output::{EventRecord, Frame, FrameSink};
+use engine::{Engine, EngineConfig};
+
+/// A test scenario in `tests/files/runtime`.
+pub fn file(name: &str) -> PathBuf {
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/runtime")).join(name)
+}
+
+/// A file of the shared corpus.
+pub fn corpus(rel: &str) -> PathBuf {
+    PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus"
+    ))
+    .join(rel)
+}
+
+/// One entity in one frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    pub time: f64,
+    pub name: String,
+    pub x: f64,
+    pub y: f64,
+    pub z: f64,
+    pub h: f64,
+    pub speed: f64,
+    pub road: Option<(String, i32, f64, f64, f64)>,
+}
+
+/// Records every frame.
+#[derive(Default)]
+pub struct Recorder(pub Vec<Row>);
+
+impl FrameSink for Recorder {
+    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+        for e in frame.objects() {
+            self.0.push(Row {
+                time: frame.time,
+                name: e.name.to_owned(),
+                x: e.pose.x,
+                y: e.pose.y,
+                z: e.pose.z,
+                h: e.pose.h,
+                speed: e.speed,
+                road: e
+                    .road_position
+                    .map(|r| (r.road_id.clone(), r.lane_id, r.s, r.t, r.offset)),
+            });
+        }
+        Ok(())
+    }
+}
+
+impl Recorder {
+    /// The row of `name` at time `t` (within 1 ms).
+    pub fn at(&self, name: &str, t: f64) -> &Row {
+        self.0
+            .iter()
+            .find(|r| r.name == name && (r.time - t).abs() < 1e-3)
+            .unwrap_or_else(|| panic!("no row for {name} at {t}"))
+    }
+}
+
+/// Loads and runs a test scenario to its end with the default settings.
+pub fn run(name: &str) -> (Engine, Recorder, Vec<EventRecord>) {
+    let mut engine = Engine::load(&file(name), &[], EngineConfig::default())
+        .unwrap_or_else(|e| panic!("{name} does not load: {e}"));
+    let mut frames = Recorder::default();
+    let mut events = Vec::new();
+    engine
+        .run(&mut frames, &mut events)
+        .unwrap_or_else(|e| panic!("{name} fails: {e}"));
+    (engine, frames, events)
+}
