@@ -115,6 +115,12 @@ pub struct FrameBuilder<'a> {
 }
 
 impl FrameBuilder<'_> {
+    /// The run's id allocator, for lane look-ups while the frame is open
+    /// ([`crate::lanes::assigned_lane_at`]).
+    pub fn ids(&self) -> &IdAllocator {
+        &self.owner.ids
+    }
+
     /// Adds a vehicle or pedestrian in `state`, on OSI lanes `lanes`; returns its id.
     pub fn add_entity(
         &mut self,

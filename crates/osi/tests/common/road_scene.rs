@@ -11,7 +11,7 @@
 
 use osi::entity::{EntityInfo, EntityKind};
 use osi::ground_truth::GroundTruthBuilder;
-use osi::lanes::assigned_lane;
+use osi::lanes::assigned_lane_at;
 use osi::osi3::GroundTruth;
 use osi::polyline::Sampling;
 use osi::rigid_body::RigidBodyState;
@@ -45,8 +45,6 @@ pub fn frame(net: &opendrive::RoadNetwork, b: &mut GroundTruthBuilder, k: u64) -
     let target_s = 400.0 - 15.0 * t;
     let ego_pose = net.lane_pose("1", -1, ego_s, 0.0).expect("on the road");
     let target_pose = net.lane_pose("1", 1, target_s, 0.0).expect("on the road");
-    let ego_lane = assigned_lane(b.ids(), net, "1", -1, ego_s).expect("lane built");
-    let target_lane = assigned_lane(b.ids(), net, "1", 1, target_s).expect("lane built");
     let car = |name, color| EntityInfo {
         name,
         kind: EntityKind::Vehicle { category: "car" },
@@ -56,6 +54,13 @@ pub fn frame(net: &opendrive::RoadNetwork, b: &mut GroundTruthBuilder, k: u64) -
         trailer: None,
     };
     let mut f = b.begin_frame(k * STEP_NANOS);
+    // Lanes as the engine finds them: locate the reference point on the road network.
+    let lane_at = |f: &osi::ground_truth::FrameBuilder<'_>, x, y, h| {
+        let position = net.locate(x, y, Some(h)).expect("on the road");
+        assigned_lane_at(f.ids(), net, &position).expect("lane built")
+    };
+    let ego_lane = lane_at(&f, ego_pose.x, ego_pose.y, ego_pose.h);
+    let target_lane = lane_at(&f, target_pose.x, target_pose.y, PI);
     let ego = RigidBodyState {
         reference_point: [ego_pose.x, ego_pose.y, ego_pose.z],
         orientation: [ego_pose.h, 0.0, 0.0],
