@@ -206,3 +206,14 @@ fn time_to_collision_uses_lateral_velocity() {
     let t = a.time_to_collision(&b).expect("B drifts into A");
     assert!((t - 2.0).abs() < TOL, "got {t}");
 }
+
+#[test]
+fn non_finite_input_gives_no_time() {
+    // A NaN position or an infinite speed must not be read as a collision.
+    let a = car(0.0, 0.0, 0.0, 10.0);
+    let mut b = car(f64::NAN, 0.0, 0.0, 0.0);
+    assert_eq!(a.time_to_collision(&b), None);
+    b = car(30.0, 0.0, 0.0, f64::INFINITY);
+    assert_eq!(a.time_to_collision(&b), None);
+    assert_eq!(b.time_to_collision(&a), None);
+}

@@ -68,7 +68,7 @@ fn convoy_in_lane_1_faces_minus_s() {
 #[test]
 fn vehicle_group_errors() {
     let net = network();
-    // Three vehicles 10 m apart from s = 5: the second would stand at s = −5, off the road.
+    // Three vehicles 10 m apart from s = 5: the last would stand at s = −15, off the road.
     let err = VehicleGroup::single_lane(&net, &template(), 3, "0", -1, 5.0, 6.0)
         .expect_err("falls off the road start");
     assert_eq!(
@@ -76,15 +76,30 @@ fn vehicle_group_errors() {
         &DomainErrorKind::LanePosition {
             road_id: "0".into(),
             lane_id: -1,
-            s: -5.0
+            s: -15.0
         }
     );
     assert_eq!(
         err.to_string(),
-        "expected a position in lane -1 of road 0, found s = -5 outside it"
+        "expected a position in lane -1 of road 0, found s = -15 outside it"
     );
     let err = VehicleGroup::single_lane(&net, &template(), 2, "0", -1, 100.0, -1.0)
         .expect_err("negative gap");
+    assert!(matches!(
+        err.kind(),
+        DomainErrorKind::InvalidParameter { .. }
+    ));
+    // A huge count fails at once on the last vehicle's s, without building any.
+    let err = VehicleGroup::single_lane(&net, &template(), usize::MAX, "0", -1, 100.0, 1.0)
+        .expect_err("far longer than the road");
+    assert!(matches!(err.kind(), DomainErrorKind::LanePosition { .. }));
+    // A point-sized template with no gap would stack every vehicle on one spot.
+    let mut point = template();
+    point.participant.movable.object.bounding_box =
+        engine::domain::BoundingBox::new(engine::domain::Position3d::ZERO, 0.0, 0.0, 0.0)
+            .expect("zero box is valid");
+    let err =
+        VehicleGroup::single_lane(&net, &point, 3, "0", -1, 100.0, 0.0).expect_err("zero spacing");
     assert!(matches!(
         err.kind(),
         DomainErrorKind::InvalidParameter { .. }

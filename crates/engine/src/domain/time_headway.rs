@@ -13,7 +13,7 @@
 //! moving (its speed therefore does not enter). It is positive when the reference is ahead and
 //! the caller drives towards it, negative when the reference is behind (the time since the
 //! caller was there), and `None` when the caller stands still (speed exactly 0: it never gets
-//! there). Measured along the road, not straight (esmini #139).
+//! there) or its speed is not finite. Measured along the road, not straight (esmini #139).
 
 use opendrive::{Real, RoadNetwork};
 
@@ -40,6 +40,6 @@ impl Vehicle {
         };
         let ahead = travel * (s_reference - caller.s);
         let speed = self.speed();
-        Ok((speed != 0.0).then(|| ahead / speed))
+        Ok((speed != 0.0 && speed.is_finite()).then(|| ahead / speed))
     }
 }

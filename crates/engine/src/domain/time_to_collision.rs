@@ -16,7 +16,8 @@
 //! is that intersection's lower end clipped at 0: `Some(0)` when the boxes already overlap or
 //! touch, `None` when the intersection is empty or lies wholly in the past (receding).
 //! Touching counts as collision (grazing contact gives a time), with intervals widened by
-//! `LENGTH_EPSILON` so that round-off cannot turn a grazing contact into a miss.
+//! `LENGTH_EPSILON` so that round-off cannot turn a grazing contact into a miss. A pose or
+//! velocity that is not finite (NaN, ∞) gives `None`: no time can be computed from it.
 //!
 //! Why by hand: the exact interval computation is some thirty lines over the rectangle
 //! projections that `space_gap` also uses; parry's shape casting would bring nalgebra and an
@@ -44,6 +45,16 @@ pub(crate) fn time_to_collision(
     reference: &impl Physical,
 ) -> Option<Real> {
     let b = reference.physical_object();
+    let vb = reference.velocity();
+    let inputs = [&a.pose, &b.pose]
+        .into_iter()
+        .flat_map(|p| [p.x, p.y, p.z, p.h, p.p, p.r]);
+    let speeds = [va, &vb]
+        .into_iter()
+        .flat_map(|v| [v.translational.x, v.translational.y]);
+    if !inputs.chain(speeds).all(Real::is_finite) {
+        return None;
+    }
     let (frame_a, frame_b) = (Frame::new(&a.pose), Frame::new(&b.pose));
     let (fa, (a_bottom, a_top)) = a.bounding_box.placed(&frame_a, a.pose.h);
     let (fb, (b_bottom, b_top)) = b.bounding_box.placed(&frame_b, b.pose.h);
@@ -51,7 +62,7 @@ pub(crate) fn time_to_collision(
         return None;
     }
     let wa = frame_a.rotate(va.translational);
-    let wb = frame_b.rotate(reference.velocity().translational);
+    let wb = frame_b.rotate(vb.translational);
     footprint_time_to_collision(&fa, &fb, [wb.x - wa.x, wb.y - wa.y])
 }
 

@@ -26,8 +26,9 @@ impl VehicleGroup {
     /// ahead (so reference points are `length + gap` apart along s), all centred in the lane
     /// and heading in its driving direction. Velocity and acceleration are the template's.
     ///
-    /// Errors with `InvalidParameter` for a negative or non-finite gap, and `NotOnLane` when
-    /// the lane does not exist at some vehicle's s or s leaves the road.
+    /// Errors with `InvalidParameter` for a negative or non-finite gap or a zero spacing (box
+    /// length + gap), and `LanePosition` when the lane does not exist at some vehicle's s or
+    /// the formation reaches beyond the road (reported at the last vehicle's s).
     pub fn single_lane(
         network: &RoadNetwork,
         template: &Vehicle,
@@ -61,6 +62,19 @@ impl VehicleGroup {
             Direction::Backward => (1.0, PI),
         };
         let pitch = template.participant.bounding_box.length() + gap;
+        if pitch <= 0.0 {
+            return Err(DomainError::parameter(
+                "vehicle_group spacing (bounding_box.length + gap)",
+                "a length > 0 m",
+                pitch,
+            ));
+        }
+        // The last vehicle first: a formation longer than the road fails before any work.
+        let last = s_head + behind * pitch * count.saturating_sub(1) as Real;
+        let road = network.road(road_id).ok_or_else(|| off_lane(s_head))?;
+        if !(0.0..=road.length).contains(&last) {
+            return Err(off_lane(last));
+        }
         let mut vehicles = Vec::with_capacity(count);
         for i in 0..count {
             let s = s_head + behind * pitch * i as Real;
