@@ -6,7 +6,8 @@
 use crate::reader::attr::xsd_enum;
 
 xsd_enum! {
-    /// Which rotation angle a condition compares (AngleCondition, RelativeAngleCondition). XSD `AngleType`.
+    /// Which rotation angle a condition compares (AngleCondition, RelativeAngleCondition). XSD
+    /// `AngleType`.
     AngleType {
         /// `heading`.
         Heading = "heading",
@@ -76,7 +77,8 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// When a condition reports true: on its level (`none`) or on a change of it ("Conditions and triggers"). XSD `ConditionEdge`.
+    /// When a condition reports true: on its level (`none`) or on a change of it ("Conditions and
+    /// triggers"). XSD `ConditionEdge`.
     ConditionEdge {
         /// `falling`.
         Falling = "falling",
@@ -126,7 +128,8 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// Axis of a directional measurement (AccelerationCondition, SpeedCondition). XSD `DirectionalDimension`.
+    /// Axis of a directional measurement (AccelerationCondition, SpeedCondition). XSD
+    /// `DirectionalDimension`.
     DirectionalDimension {
         /// `longitudinal`.
         Longitudinal = "longitudinal",
@@ -138,7 +141,8 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// What a transition's `value` measures: a distance (m), a rate (per s) or a time (s). XSD `DynamicsDimension`.
+    /// What a transition's `value` measures: a distance (m), a rate (per s) or a time (s). XSD
+    /// `DynamicsDimension`.
     DynamicsDimension {
         /// `distance`.
         Distance = "distance",
@@ -200,7 +204,8 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// Required lateral side relative to a referenced entity (LateralDistanceAction, 1.3 displacement). XSD `LateralDisplacement`.
+    /// Required lateral side relative to a referenced entity (LateralDistanceAction, 1.3
+    /// displacement). XSD `LateralDisplacement`.
     LateralDisplacement {
         /// `any`.
         Any = "any",
@@ -224,7 +229,8 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// Required longitudinal order relative to a referenced entity (LongitudinalDistanceAction). XSD `LongitudinalDisplacement`.
+    /// Required longitudinal order relative to a referenced entity (LongitudinalDistanceAction).
+    /// XSD `LongitudinalDisplacement`.
     LongitudinalDisplacement {
         /// `any`.
         Any = "any",
@@ -376,7 +382,8 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// What starting an Event does to other running Events of its Maneuver (§8.4, storyboard execution). XSD `Priority`.
+    /// What starting an Event does to other running Events of its Maneuver (§8.4, storyboard
+    /// execution). XSD `Priority`.
     Priority {
         /// `override`.
         Override = "override" | "overwrite",
@@ -528,7 +535,8 @@ xsd_enum! {
 }
 
 xsd_enum! {
-    /// Whether any or all triggering entities must meet an entity condition. XSD `TriggeringEntitiesRule`.
+    /// Whether any or all triggering entities must meet an entity condition. XSD
+    /// `TriggeringEntitiesRule`.
     TriggeringEntitiesRule {
         /// `all`.
         All = "all",

@@ -11,10 +11,11 @@ use crate::model::{
 use crate::reader::context::{Ctx, Node};
 use crate::reader::positions::read_position_child;
 
-const ENTITY_CONDITIONS: &str = "EndOfRoadCondition, CollisionCondition, OffroadCondition, TimeHeadwayCondition, \
-TimeToCollisionCondition, AccelerationCondition, StandStillCondition, SpeedCondition, RelativeSpeedCondition, \
-TraveledDistanceCondition, ReachPositionCondition, DistanceCondition, RelativeDistanceCondition, \
-RelativeClearanceCondition, AngleCondition, RelativeAngleCondition";
+const ENTITY_CONDITIONS: &str = "EndOfRoadCondition, CollisionCondition, OffroadCondition, \
+TimeHeadwayCondition, TimeToCollisionCondition, AccelerationCondition, StandStillCondition, \
+SpeedCondition, RelativeSpeedCondition, TraveledDistanceCondition, ReachPositionCondition, \
+DistanceCondition, RelativeDistanceCondition, RelativeClearanceCondition, AngleCondition, \
+RelativeAngleCondition";
 
 const VALUE_CONDITIONS: &str = "ParameterCondition, TimeOfDayCondition, SimulationTimeCondition, \
 StoryboardElementStateCondition, UserDefinedValueCondition, TrafficSignalCondition, \

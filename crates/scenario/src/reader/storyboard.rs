@@ -1,7 +1,7 @@
-//! Readers for the storyboard (OpenSCENARIO 1.3 §7.2.1 "Storyboard", §7.3.1 "ManeuverGroups and Actors", XSD `Storyboard`, `Init`,
-//! `InitActions`, `Private`, `Story`, `Act`, `ManeuverGroup`, `Actors`, `Maneuver`, `Event`,
-//! `Action`). ManeuverGroup CatalogReferences are resolved into Maneuvers; Event@priority
-//! `overwrite` (deprecated) reads as `override`.
+//! Readers for the storyboard (OpenSCENARIO 1.3 §7.2.1 "Storyboard", §7.3.1 "ManeuverGroups and
+//! Actors"; XSD `Storyboard`, `Init`, `InitActions`, `Private`, `Story`, `Act`, `ManeuverGroup`,
+//! `Actors`, `Maneuver`, `Event`, `Action`). ManeuverGroup CatalogReferences are resolved into
+//! Maneuvers; Event@priority `overwrite` (deprecated) reads as `override`.
 
 use crate::error::Result;
 use crate::model::{
