@@ -175,7 +175,8 @@ fn mcap_round_trip_with_osi_layout() {
         // publish_time = the GroundTruth timestamp in ns = k · 50 ms.
         assert_eq!(frame.publish_time, k as u64 * common::STEP_NANOS);
         assert_eq!(frame.log_time, frame.publish_time);
-        assert_eq!(frame.sequence, k as u32);
+        // Sequence counts from 1 (OSI 3.8 §2.2.6.1.2: 0 means "no reliable sequence").
+        assert_eq!(frame.sequence, k as u32 + 1);
     }
     let back: Vec<GroundTruth> = trace.frames.into_iter().map(|f| f.ground_truth).collect();
     assert_eq!(back, frames);

@@ -7,7 +7,7 @@
 //! encoding `protobuf` and the channel metadata `net.asam.osi.trace.channel.osi_version`,
 //! `…protobuf_version` and `…description`; and each message with
 //! `publish_time = log_time =` the GroundTruth timestamp in nanoseconds and `sequence` the
-//! frame counter.
+//! frame counter from 1 (the standard reserves 0 for "no reliable sequence number").
 //!
 //! Chunks stay uncompressed so that the crate builds without C code (the zstd and lz4
 //! features of `mcap` are off); the standard allows uncompressed chunks.
@@ -146,8 +146,8 @@ impl<W: Write + Seek> TraceWriter for McapTraceWriter<W> {
         let time = self.time.next(ground_truth, &self.path)?;
         let header = mcap::records::MessageHeader {
             channel_id: self.channel,
-            // The MCAP sequence field is 32 bits; a trace longer than that wraps.
-            sequence: (self.frames & u64::from(u32::MAX)) as u32,
+            // Counting from 1; the MCAP sequence field is 32 bits, a longer trace wraps.
+            sequence: ((self.frames + 1) & u64::from(u32::MAX)) as u32,
             log_time: time,
             publish_time: time,
         };
