@@ -155,3 +155,29 @@ fn left_hand_traffic_flips_the_driving_direction() {
     assert!(rht.route(&at("0", 2, 10.0), &at("0", 2, 500.0)).is_none());
     assert!(rht.route(&at("0", -2, 10.0), &at("0", -3, 500.0)).is_some());
 }
+
+#[test]
+fn direct_junction_both_ways() {
+    // direct_junction_creator0.xodr: junction 100 (direct) links road 1's end to road 2's
+    // start (lanes −1 → −1), road 1 lane −3 to road 10 lane −1 (an exit), and road 20 lane 1
+    // with road 2 lane 3 (an entry, written from road 20's side).
+    let net = load(&corpus().join("generated/xodr/direct_junction_creator0.xodr"));
+    // Road 1 (200 m) lane −1 from s = 100 to road 2 lane −1 at s = 20: 100 + 20.
+    let r = net
+        .route(&at("1", -1, 100.0), &at("2", -1, 20.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!((r.length - 120.0).abs() < 1e-9, "{r:?}");
+    // Exit: road 1 lane −3 at s = 150 to road 10 lane −1 at s = 40: 50 + 40.
+    let r = net
+        .route(&at("1", -3, 150.0), &at("10", -1, 40.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!((r.length - 90.0).abs() < 1e-9, "{r:?}");
+    // Lane 3 of road 2 runs towards −s into the junction, then road 20 (150 m) lane 1 from its
+    // end: from s = 30 on road 2 to s = 100 on road 20 is 30 + 50.
+    let r = net
+        .route(&at("2", 3, 30.0), &at("20", 1, 100.0))
+        .unwrap_or_else(|| panic!("no route"));
+    assert!((r.length - 80.0).abs() < 1e-9, "{r:?}");
+    // Against the driving direction there is no way back.
+    assert!(net.route(&at("2", -1, 20.0), &at("1", -1, 100.0)).is_none());
+}

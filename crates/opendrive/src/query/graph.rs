@@ -146,8 +146,9 @@ impl RoadNetwork {
 
     /// Lanes of the roads of junction `junction_id` joined to the end of lane `h` that is
     /// reached travelling `dir`: from the junction's `<laneLink>`s whose `incomingRoad` is the
-    /// road, and from the connecting roads' own road and lane links back to the road (files
-    /// often write a connection in one direction only).
+    /// road, from those whose connecting/linked road is the road (read backwards), and from the
+    /// connecting roads' own road and lane links back to the road (files often write a
+    /// connection in one direction only).
     fn through_junction(
         &self,
         h: LaneHandle,
@@ -170,6 +171,37 @@ impl RoadNetwork {
             for ll in c.lane_links.iter().filter(|ll| ll.from == h.lane) {
                 if let Some(e) = self.entry(ci, c.contact_point, ll.to) {
                     out.push(e);
+                }
+            }
+        }
+        // Connections written from the other side: this road is the connecting (or linked)
+        // road, entered at the end we are leaving; go back to the incoming road's lane.
+        for c in j
+            .connections
+            .iter()
+            .filter(|c| c.connecting_road == road.id && c.contact_point == our_end)
+        {
+            let Some(&ii) = self.road_index.get(&c.incoming_road) else {
+                continue;
+            };
+            let inc = &self.roads[ii];
+            let touches = |l: &Option<RoadLink>| {
+                l.as_ref().is_some_and(|l| {
+                    l.element_type == ElementType::Junction && l.element_id == j.id
+                })
+            };
+            let inc_end = if touches(&inc.links.successor) {
+                ContactPoint::End
+            } else if touches(&inc.links.predecessor) {
+                ContactPoint::Start
+            } else {
+                continue;
+            };
+            for ll in c.lane_links.iter().filter(|ll| ll.to == h.lane) {
+                if let Some(e) = self.entry(ii, inc_end, ll.from) {
+                    if !out.contains(&e) {
+                        out.push(e);
+                    }
                 }
             }
         }
