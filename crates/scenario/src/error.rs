@@ -145,6 +145,11 @@ pub enum ErrorKind {
         /// The name written.
         name: String,
     },
+    /// A SetMonitorAction naming an undeclared monitor.
+    UnknownMonitor {
+        /// The name written.
+        name: String,
+    },
     /// A file larger than the loader accepts.
     FileTooLarge {
         /// The file.
@@ -289,6 +294,12 @@ impl fmt::Display for ErrorKind {
                 write!(
                     f,
                     "expected a declared variable, found unknown variable '{name}'"
+                )
+            }
+            Self::UnknownMonitor { name } => {
+                write!(
+                    f,
+                    "expected a declared monitor, found unknown monitor '{name}'"
                 )
             }
             Self::NotAScenario { found } => {

@@ -61,6 +61,7 @@ error_cases!(
     unknown_storyboard_element,
     unknown_variable,
     duplicate_entity,
+    unknown_monitor,
 );
 
 #[test]

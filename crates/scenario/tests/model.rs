@@ -193,3 +193,38 @@ fn a_parameter_value_distribution_loads_its_scenario_file() {
     assert_eq!(s.parameter_value_distribution.as_deref(), Some(path));
     assert!(s.path.ends_with("esmini/xosc/cut-in.xosc"));
 }
+
+/// semantics-pitfalls.md #10 (scenario_runner #655): `$name` resolves in catalog references'
+/// entry names too. esmini's cut-in.xosc references `entryName="$HostVehicle"` with
+/// HostVehicle = "car_white", and `--param` overrides reach it.
+#[test]
+fn pitfall_10_parameters_resolve_in_catalog_entry_names() {
+    let path = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus/esmini/xosc/cut-in.xosc"
+    ));
+    let s = Scenario::load(path).unwrap();
+    let EntityObject::Vehicle(ego) = &s.entities.object("Ego").unwrap().entity_object else {
+        panic!()
+    };
+    assert_eq!(ego.catalog.as_ref().unwrap().entry_name, "car_white");
+    assert_eq!(ego.name, "car_white");
+    let s =
+        Scenario::load_with_parameters(path, &[("HostVehicle".into(), "car_blue".into())]).unwrap();
+    let EntityObject::Vehicle(ego) = &s.entities.object("Ego").unwrap().entity_object else {
+        panic!()
+    };
+    assert_eq!(ego.name, "car_blue");
+}
+
+#[test]
+fn a_catalog_file_is_not_a_scenario() {
+    let path = fixture("catalogs/Vehicles/TestVehicles.xosc");
+    let err = Scenario::load(&path).unwrap_err();
+    assert_eq!(
+        err.kind().to_string(),
+        "expected a scenario definition or parameter value distribution, found a Catalog"
+    );
+    // `  <Catalog name="TestVehicles">` on line 4.
+    assert_eq!((err.pos().line, err.pos().col), (4, 3));
+}

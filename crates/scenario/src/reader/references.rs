@@ -1,14 +1,14 @@
 //! Checks of names the storyboard refers to (OpenSCENARIO 1.3, "Conditions" and
 //! "Actions": StoryboardElementStateCondition, VariableAction, VariableCondition):
-//! a StoryboardElementStateCondition must name a storyboard element of its type, and
-//! VariableAction/VariableCondition a declared variable. Run once the storyboard is read.
+//! a StoryboardElementStateCondition must name a storyboard element of its type,
+//! VariableAction/VariableCondition a declared variable, SetMonitorAction a declared monitor. Run once the storyboard is read.
 
 use std::collections::HashSet;
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::model::{
-    ActionKind, ByValueCondition, ConditionKind, GlobalAction, Storyboard, StoryboardElementType,
-    Trigger, VariableDeclaration,
+    ActionKind, ByValueCondition, ConditionKind, GlobalAction, MonitorDeclaration, Storyboard,
+    StoryboardElementType, Trigger, VariableDeclaration,
 };
 
 /// Names of the storyboard's elements, by type.
@@ -49,6 +49,7 @@ impl<'s> Names<'s> {
 pub(crate) fn check_references(
     storyboard: &Storyboard,
     variables: &[VariableDeclaration],
+    monitors: &[MonitorDeclaration],
 ) -> Result<()> {
     let names = Names::of(storyboard);
     let variable = |name: &str| variables.iter().any(|v| v.name == name);
@@ -101,15 +102,26 @@ pub(crate) fn check_references(
         }
     }
     for a in actions {
-        if let ActionKind::Global(GlobalAction::Variable { variable_ref, .. }) = &a.kind {
-            if !variable(variable_ref) {
+        match &a.kind {
+            ActionKind::Global(GlobalAction::Variable { variable_ref, .. })
+                if !variable(variable_ref) =>
+            {
+                let name = variable_ref.clone();
                 return Err(Error::new(
-                    ErrorKind::UnknownVariable {
-                        name: variable_ref.clone(),
-                    },
+                    ErrorKind::UnknownVariable { name },
                     a.pos.clone(),
                 ));
             }
+            ActionKind::Global(GlobalAction::SetMonitor { monitor_ref, .. })
+                if !monitors.iter().any(|m| &m.name == monitor_ref) =>
+            {
+                let name = monitor_ref.clone();
+                return Err(Error::new(
+                    ErrorKind::UnknownMonitor { name },
+                    a.pos.clone(),
+                ));
+            }
+            _ => {}
         }
     }
     Ok(())

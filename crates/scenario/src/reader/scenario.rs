@@ -122,7 +122,7 @@ fn load_inner(
     let storyboard = read_storyboard(&mut ctx, storyboard_node)?;
     check_entity_names(&entities, &ctx.entity_uses)?;
     expand_selections(&mut entities)?;
-    check_references(&storyboard, &variable_declarations)?;
+    check_references(&storyboard, &variable_declarations, &monitor_declarations)?;
     Ok(Scenario {
         path: path.to_path_buf(),
         file_header: header,
