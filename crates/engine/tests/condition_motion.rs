@@ -24,16 +24,20 @@ fn speed(value: f64, rule: Rule, direction: Option<DirectionalDimension>) -> Ent
 }
 
 #[test]
-fn total_speed_is_the_velocity_magnitude() {
+fn speed_without_direction_is_the_signed_speed() {
     let mut w = world();
-    // Velocity (3, 4) m/s in the entity's axes: total 5, longitudinal 3, lateral 4.
-    w.entity_mut("Ego").velocity = Vector3::new(3.0, 4.0, 0.0);
+    // Reversing at 2 m/s while drifting left at 0.5 m/s: speed −2 (the corpus' light-state
+    // catalog switches reversing lights on at "SpeedCondition lessThan −0.01"); longitudinal
+    // component −2, lateral 0.5.
+    w.entity_mut("Ego").speed = -2.0;
+    w.entity_mut("Ego").velocity = Vector3::new(-2.0, 0.5, 0.0);
     let ego = |c| by_entity(&["Ego"], false, c);
-    assert!(eval(&w, &ego(speed(5.0, Rule::EqualTo, None))));
+    assert!(eval(&w, &ego(speed(-0.01, Rule::LessThan, None))));
+    assert!(eval(&w, &ego(speed(-2.0, Rule::EqualTo, None))));
     assert!(eval(
         &w,
         &ego(speed(
-            3.0,
+            -2.0,
             Rule::EqualTo,
             Some(DirectionalDimension::Longitudinal)
         ))
@@ -41,12 +45,16 @@ fn total_speed_is_the_velocity_magnitude() {
     assert!(eval(
         &w,
         &ego(speed(
-            4.0,
+            0.5,
             Rule::EqualTo,
             Some(DirectionalDimension::Lateral)
         ))
     ));
-    assert!(eval(&w, &ego(speed(4.9, Rule::GreaterThan, None))));
+    // A stand-still threshold uses |speed|: −2 m/s is not standing still.
+    assert!(!eval(
+        &w,
+        &ego(EntityCondition::StandStill { duration: 0.0 })
+    ));
 }
 
 #[test]
@@ -84,9 +92,9 @@ fn relative_speed_is_triggering_minus_reference() {
 }
 
 #[test]
-fn acceleration_total_and_signed() {
+fn acceleration_is_signed() {
     let mut w = world();
-    // Braking at 6 m/s²: total 6 (a magnitude), longitudinal −6.
+    // Braking at 6 m/s²: −6 with or without direction="longitudinal", 0 laterally.
     w.entity_mut("Ego").acceleration = Vector3::new(-6.0, 0.0, 0.0);
     let acc = |value, rule, direction| {
         by_entity(
@@ -99,7 +107,11 @@ fn acceleration_total_and_signed() {
             },
         )
     };
-    assert!(eval(&w, &acc(6.0, Rule::EqualTo, None)));
+    assert!(eval(&w, &acc(-6.0, Rule::EqualTo, None)));
+    assert!(eval(
+        &w,
+        &acc(0.0, Rule::EqualTo, Some(DirectionalDimension::Lateral))
+    ));
     assert!(eval(
         &w,
         &acc(

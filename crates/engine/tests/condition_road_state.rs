@@ -70,6 +70,21 @@ fn offroad_beyond_the_road_surface() {
 }
 
 #[test]
+fn offroad_on_a_lane_of_type_none() {
+    // esmini's jolengatan.xodr, road "1": lane −1 driving 3.57 m, lane −2 border 1.68 m,
+    // lane −3 of type none 6 m. t = −5 is on the border lane (on the road); t = −6.25 lies
+    // 1 m into the `none` lane: off the road (OpenDRIVE 1.8 §11.3).
+    let mut w = FakeWorld::new(corpus_road("esmini/xodr/jolengatan.xodr"));
+    let c = by_entity(&["Ego"], false, EntityCondition::Offroad { duration: 0.0 });
+    for (t, off) in [(-5.0, false), (-6.25, true)] {
+        let mut pose = w.network.road_pose("1", 100.0, t).unwrap();
+        pose.h = 0.0;
+        w.place("Ego", pose);
+        assert_eq!(eval(&w, &c), off, "t = {t}");
+    }
+}
+
+#[test]
 fn collision_with_an_entity_or_a_type() {
     let mut w = world();
     // Car boxes span [x − 0.85, x + 3.65]: cars at x = 50 and x = 54 give [49.15, 53.65] and

@@ -84,7 +84,9 @@ fn holds<C: ConditionContext + ?Sized>(
         EntityCondition::EndOfRoad { duration } => {
             held(state, e, at_end_of_road(network, e), now, *duration)
         }
-        EntityCondition::Offroad { duration } => held(state, e, off_road(e), now, *duration),
+        EntityCondition::Offroad { duration } => {
+            held(state, e, off_road(network, e), now, *duration)
+        }
         EntityCondition::StandStill { duration } => held(state, e, stands_still(e), now, *duration),
         EntityCondition::Collision(CollisionTarget::EntityRef(name)) => {
             reference(ctx, name)?;

@@ -3,15 +3,18 @@
 //! `TraveledDistanceCondition`).
 //!
 //! * SpeedCondition: with `direction` (1.2+) the component of the entity's velocity along its
-//!   own longitudinal (x), lateral (y) or vertical (z) axis; without, "the total speed": the
-//!   magnitude of the velocity vector.
+//!   own longitudinal (x), lateral (y) or vertical (z) axis. Without `direction`, the entity's
+//!   signed speed along its heading (`EntityView::speed`, negative when reversing), as in 1.0
+//!   ("the speed of the entity") and as esmini reads it. The 1.2 annotation "the total speed is
+//!   considered" would make a magnitude of it, which no scenario of the corpus expects: its
+//!   1.3 light-state catalog switches reversing lights on at `SpeedCondition lessThan −0.01`.
 //! * RelativeSpeedCondition: the triggering entity's speed minus the reference entity's ("the
-//!   relative speed of the triggering entity to the reference entity"): total speeds without
+//!   relative speed of the triggering entity to the reference entity"): signed speeds without
 //!   `direction`; with it, the component of the velocity difference (both in world axes) along
 //!   the triggering entity's axis.
-//! * AccelerationCondition: as SpeedCondition on the acceleration vector (a braking vehicle's
-//!   total acceleration is positive; use `direction="longitudinal"` for a signed value).
-//! * StandStillCondition: total speed at most [`STAND_STILL_SPEED`] without a break for
+//! * AccelerationCondition: with `direction` as SpeedCondition on the acceleration vector;
+//!   without, the signed longitudinal acceleration (negative when braking), for the same reason.
+//! * StandStillCondition: |speed| at most [`STAND_STILL_SPEED`] without a break for
 //!   `duration` s (memory in `ConditionState`).
 //! * TraveledDistanceCondition: the odometer has reached `value` m.
 
@@ -30,19 +33,21 @@ pub const STAND_STILL_SPEED: Real = 1e-3;
 /// is reached at that step despite the round-off of summed times.
 pub const DURATION_TOLERANCE: Real = 1e-9;
 
-/// A vector's component along `direction` of the object's own axes, or its magnitude.
+/// A vector's component along `direction` of the object's own axes (x when absent).
 pub(crate) fn component(v: Vector3, direction: Option<DirectionalDimension>) -> Real {
     match direction {
-        Some(DirectionalDimension::Longitudinal) => v.x,
         Some(DirectionalDimension::Lateral) => v.y,
         Some(DirectionalDimension::Vertical) => v.z,
-        _ => (v.x * v.x + v.y * v.y + v.z * v.z).sqrt(),
+        _ => v.x,
     }
 }
 
 /// SpeedCondition's measured value.
 pub(crate) fn speed(e: &EntityView<'_>, direction: Option<DirectionalDimension>) -> Real {
-    component(e.velocity.translational, direction)
+    match direction {
+        None => e.speed,
+        Some(_) => component(e.velocity.translational, direction),
+    }
 }
 
 /// AccelerationCondition's measured value.
@@ -78,5 +83,5 @@ fn to_local(pose: &Pose, d: [Real; 3]) -> Vector3 {
 
 /// True while the entity stands still.
 pub(crate) fn stands_still(e: &EntityView<'_>) -> bool {
-    speed(e, None) <= STAND_STILL_SPEED
+    e.speed.abs() <= STAND_STILL_SPEED
 }
