@@ -1,6 +1,6 @@
 //! `<paramPoly3>` (OpenDRIVE 1.8 §9.6): u(p), v(p) cubic in a parameter p.
 //!
-//! p ↔ s: OpenDRIVE 1.8 gives the range of p, "arcLength: p in [0, @length of <geometry>];
+//! p ↔ s: OpenDRIVE 1.8 gives the range of p, "arcLength: p in [0, @length of `<geometry>`];
 //! normalized: p in [0, 1]", and nothing else, so p runs linearly with s over the geometry:
 //! p = ds for `arcLength`, p = ds/length for `normalized`. This is the reading of pyxodr and
 //! the direct evaluation in the corpus README; esmini instead maps s to p by the curve's arc
