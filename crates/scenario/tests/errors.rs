@@ -62,6 +62,7 @@ error_cases!(
     unknown_variable,
     duplicate_entity,
     unknown_monitor,
+    dtd_entities,
 );
 
 #[test]
