@@ -129,6 +129,40 @@ fn time_headway_across_a_junction() {
 }
 
 #[test]
+fn time_headway_into_a_connecting_road_and_back_across_the_junction() {
+    let net = network("generated/xodr/common_junction_creator0.xodr");
+    // B in lane 1 of connecting road 101 (junction 100, entered at its start from road 1's
+    // end) at s = 60, past the part where the junction's roads overlap, heading along the
+    // road. Along the roads B is (100 − 90) + 60 = 70 m ahead of A; at 10 m/s → 7 s.
+    let a = car(
+        Pose {
+            x: 90.0,
+            y: -1.5,
+            ..Pose::default()
+        },
+        10.0,
+    );
+    let b = car(
+        net.lane_pose("101", 1, 60.0, 0.0)
+            .expect("road 101 is 80 m long"),
+        10.0,
+    );
+    let got = headway(&net, &a, &b).expect("moving");
+    assert!((got - 7.0).abs() < TOL, "{got}");
+    // Seen from C on road 3 (s = 20, lane −1, heading +x), A is behind: the path leaves
+    // road 3 at its start into the junction, runs road 100 backwards and enters road 1 at its
+    // end: 20 + L100 + 10 = 130.00000012397831 m behind → −13.000000012397831 s at 10 m/s.
+    let c = car(
+        net.lane_pose("3", -1, 20.0, 0.0)
+            .expect("road 3 is 100 m long"),
+        10.0,
+    );
+    let got = headway(&net, &c, &a).expect("moving");
+    let expected = -(20.0 + 100.000_000_123_978_31 + 10.0) / 10.0;
+    assert!((got - expected).abs() < TOL, "{got}");
+}
+
+#[test]
 fn time_headway_errors() {
     let curve = network("esmini/xodr/curve_r100.xodr");
     let a = car(
