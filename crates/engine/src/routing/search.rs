@@ -16,10 +16,14 @@ use opendrive::{Direction, LaneHandle, LanePosition, Real, RouteSegment, LENGTH_
 
 use super::cost::{Cost, CostModel};
 
+/// A node of the search: a lane, and whether this is the start itself (the start lane
+/// reached again later, e.g. round a closed loop, is a different node).
+type Key = (LaneHandle, bool);
+
 #[derive(Clone, Copy)]
 struct Queued {
     cost: Cost,
-    node: Option<LaneHandle>,
+    node: Option<Key>,
 }
 
 impl PartialEq for Queued {
@@ -50,7 +54,7 @@ impl PartialOrd for Queued {
 struct Label {
     cost: Cost,
     entry: Real,
-    prev: Option<LaneHandle>,
+    prev: Option<Key>,
     lane_change: bool,
 }
 
@@ -90,10 +94,10 @@ pub(crate) fn search(
     let net = model.network;
     let start = net.lane_handle(&from.road_id, from.lane_id, from.s)?;
     let goal = net.lane_handle(&to.road_id, to.lane_id, to.s)?;
-    let mut labels: HashMap<LaneHandle, Label> = HashMap::new();
+    let mut labels: HashMap<Key, Label> = HashMap::new();
     let mut heap = BinaryHeap::new();
     labels.insert(
-        start,
+        (start, true),
         Label {
             cost: Cost::default(),
             entry: from.s,
@@ -103,12 +107,13 @@ pub(crate) fn search(
     );
     heap.push(Queued {
         cost: Cost::default(),
-        node: Some(start),
+        node: Some((start, true)),
     });
-    let mut best_goal: Option<(Cost, Real)> = None;
+    let mut best_goal: Option<(Cost, Key)> = None;
     while let Some(Queued { cost, node }) = heap.pop() {
-        let Some(h) = node else { break };
-        let label = labels[&h];
+        let Some(key) = node else { break };
+        let (h, is_start) = key;
+        let label = labels[&key];
         if cost.total_cmp(&label.cost) == Ordering::Greater {
             continue;
         }
@@ -120,7 +125,7 @@ pub(crate) fn search(
             if ahead {
                 let total = cost.plus(model.along(h, label.entry, (to.s - label.entry).abs()));
                 if best_goal.map_or(true, |(c, _)| total.total_cmp(&c) == Ordering::Less) {
-                    best_goal = Some((total, label.entry));
+                    best_goal = Some((total, key));
                     heap.push(Queued {
                         cost: total,
                         node: None,
@@ -132,22 +137,24 @@ pub(crate) fn search(
             if n != goal && !drivable(model, n) {
                 return;
             }
+            // A lane change keeps the start's own node kind; every other move leaves it.
+            let nk = (n, lane_change && is_start);
             if labels
-                .get(&n)
+                .get(&nk)
                 .map_or(true, |l| c.total_cmp(&l.cost) == Ordering::Less)
             {
                 labels.insert(
-                    n,
+                    nk,
                     Label {
                         cost: c,
                         entry,
-                        prev: Some(h),
+                        prev: Some(key),
                         lane_change,
                     },
                 );
                 heap.push(Queued {
                     cost: c,
-                    node: Some(n),
+                    node: Some(nk),
                 });
             }
         };
@@ -164,8 +171,8 @@ pub(crate) fn search(
             }
         }
     }
-    let (_, goal_entry) = best_goal?;
-    Some(segments(model, &labels, goal, goal_entry, to.s))
+    let (_, goal_key) = best_goal?;
+    Some(segments(model, &labels, goal_key, to.s))
 }
 
 /// A lane change of a leg: on road `road_id` at `s`, `path_s` metres after the leg's start.
@@ -185,25 +192,24 @@ pub(crate) struct LegPath {
     pub(crate) lane_changes: Vec<LegChange>,
 }
 
-/// The stretches from the start to `goal` (entered at `goal_entry`, left at `goal_s`).
+/// The stretches from the start to the node `goal` (left at `goal_s`).
 fn segments(
     model: &CostModel<'_>,
-    labels: &HashMap<LaneHandle, Label>,
-    goal: LaneHandle,
-    goal_entry: Real,
+    labels: &HashMap<Key, Label>,
+    goal: Key,
     goal_s: Real,
 ) -> LegPath {
     // (lane, entry s, exit s, whether it is left by a lane change), goal first.
-    let mut chain = vec![(goal, goal_entry, goal_s, false)];
     let mut label = labels[&goal];
+    let mut chain = vec![(goal.0, label.entry, goal_s, false)];
     while let Some(p) = label.prev {
         let exit = if label.lane_change {
             label.entry
         } else {
-            exit_s(model, p)
+            exit_s(model, p.0)
         };
         let pl = labels[&p];
-        chain.push((p, pl.entry, exit, label.lane_change));
+        chain.push((p.0, pl.entry, exit, label.lane_change));
         label = pl;
     }
     chain.reverse();

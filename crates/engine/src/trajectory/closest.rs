@@ -3,8 +3,8 @@
 //! XSD `TrajectoryFollowingMode`), measured horizontally.
 //!
 //! Method: the horizontal distance is sampled every [`SCAN_STEP`] (at least 64 samples), and
-//! the best sample's neighbourhood of ± one step is refined by golden-section search to
-//! `opendrive::SOLVER_TOLERANCE`. The answer is the global minimum unless two branches of the
+//! the best sample's neighbourhood of ± one step is searched by golden sections, and the foot
+//! point polished by Newton's method on the tangential offset to `opendrive::SOLVER_TOLERANCE`. The answer is the global minimum unless two branches of the
 //! trajectory come within one step of the position at distances differing by less than the
 //! curve's change over one step.
 
@@ -44,7 +44,8 @@ impl Trajectory {
             })
             .min_by(|a, b| a.1.total_cmp(&b.1))
             .map_or(0.0, |(s, _)| s);
-        let s = golden_section((best - step).max(0.0), (best + step).min(length), d2);
+        let (lo, hi) = ((best - step).max(0.0), (best + step).min(length));
+        let s = self.newton_foot(x, y, golden_section(lo, hi, d2), lo, hi);
         let point = self.eval(s);
         let (dx, dy) = (x - point.x, y - point.y);
         let (sin_h, cos_h) = point.heading.sin_cos();
@@ -53,6 +54,27 @@ impl Trajectory {
             distance: dx.hypot(dy),
             t: -dx * sin_h + dy * cos_h,
         }
+    }
+}
+
+impl Trajectory {
+    /// Polishes `s` by Newton's method on f(s) = (P(s) − Q)·T(s), the tangential component
+    /// of the offset, with f'(s) = 1 + κ·(P − Q)·N (N the left normal), staying in [lo, hi].
+    /// The squared distance is flat at its minimum, so golden-section search alone resolves
+    /// s only to about √ε·distance; the foot-point equation is well conditioned.
+    fn newton_foot(&self, x: Real, y: Real, mut s: Real, lo: Real, hi: Real) -> Real {
+        for _ in 0..8 {
+            let p = self.eval(s);
+            let (sn, cs) = p.heading.sin_cos();
+            let (dx, dy) = (p.x - x, p.y - y);
+            let f = dx * cs + dy * sn;
+            let df = 1.0 + p.curvature * (-dx * sn + dy * cs);
+            if df <= 0.0 || f.abs() <= SOLVER_TOLERANCE {
+                break;
+            }
+            s = (s - f / df).clamp(lo, hi);
+        }
+        s
     }
 }
 
