@@ -40,7 +40,9 @@ impl LaneSpan {
 }
 
 /// Width of `lane` and its derivative at `ds` from the section start; from `<border>` records
-/// (outer border distance from the centre lane) when the lane has no `<width>`.
+/// when the lane has no `<width>` (OpenDRIVE 1.8 §11.6.2: the border gives the lane's outer
+/// limit independent of its inner border; read here as the distance of the outer border from
+/// the centre lane, so width = border − inner distance).
 #[inline]
 fn width(lane: &Lane, ds: Real, inner_abs: Real, d_inner_abs: Real) -> (Real, Real) {
     if !lane.widths.is_empty() || lane.borders.is_empty() {
@@ -163,6 +165,21 @@ mod tests {
         assert!((r1.d_outer - (0.01 + 0.216)).abs() < tol, "{r1:?}");
         assert!((r1.center() - (0.66 - 1.534)).abs() < tol);
         assert!(lane_span(&road, &section, 3, 16.0).is_none());
+        // Borders instead of widths: lane −1 outer border 4 + 0.1·ds, lane −2 outer border 7.
+        // At ds = 6: lane −1 spans [0.66, 0.66 − 4.6], lane −2 [0.66 − 4.6, 0.66 − 7], width 2.4.
+        let mut bordered = section.clone();
+        bordered.right = vec![lane(-1, vec![]), lane(-2, vec![])];
+        bordered.right[0].borders = vec![cubic(0.0, 4.0, 0.1, 0.0, 0.0)];
+        bordered.right[1].borders = vec![cubic(0.0, 7.0, 0.0, 0.0, 0.0)];
+        let b2 = lane_span(&road, &bordered, -2, 16.0).unwrap();
+        assert!(
+            (b2.inner - (0.66 - 4.6)).abs() < tol && (b2.outer - (0.66 - 7.0)).abs() < tol,
+            "{b2:?}"
+        );
+        assert!(
+            (b2.width() - 2.4).abs() < tol && (b2.d_outer - 0.01).abs() < tol,
+            "{b2:?}"
+        );
         assert!(lane_span(&road, &section, -2, 16.0).is_none());
     }
 }
