@@ -63,6 +63,7 @@ error_cases!(
     duplicate_entity,
     unknown_monitor,
     dtd_entities,
+    unclosed_expression,
 );
 
 #[test]

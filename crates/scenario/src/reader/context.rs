@@ -178,6 +178,16 @@ impl<'a> Ctx<'a> {
             }
             return result;
         }
+        if trimmed.starts_with("${") {
+            // `${` without its closing `}` at the end of the value.
+            return Err(Error::new(
+                ErrorKind::Expression {
+                    attribute: attribute(),
+                    message: "expected '}' at the end of the value, found none".into(),
+                },
+                self.pos_at(a.range_value().start + lead),
+            ));
+        }
         if let Some(name) = trimmed.strip_prefix('$') {
             return self.lookup(name).map(|v| v.to_string()).ok_or_else(|| {
                 Error::new(
