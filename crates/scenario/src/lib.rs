@@ -54,4 +54,15 @@ impl Scenario {
     pub fn load_with_parameters(path: &Path, overrides: &[(String, String)]) -> Result<Scenario> {
         reader::scenario::load(path, overrides)
     }
+
+    /// Loads scenario `text` as if it had been read from `path`: positions name `path` and
+    /// relative paths in the scenario (road network, catalogs) resolve against its directory.
+    /// For tests and tools that build scenarios in memory.
+    pub fn load_from_str(
+        text: &str,
+        path: &Path,
+        overrides: &[(String, String)],
+    ) -> Result<Scenario> {
+        reader::scenario::load_text(text, path, overrides)
+    }
 }

@@ -12,6 +12,7 @@
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::expr::Value;
@@ -23,7 +24,7 @@ use crate::reader::catalog::{CatalogFile, CatalogIndex};
 use crate::reader::context::{Ctx, Doc, Node, Scope};
 use crate::reader::entities::read_entities;
 use crate::reader::files::{
-    declared_rev_minor, parse, read_catalog_sources, read_source, resolve_path,
+    declared_rev_minor, parse, read_catalog_sources, read_source, resolve_path, Source,
 };
 use crate::reader::params::{declare, read_parameter_type};
 use crate::reader::positions::read_position;
@@ -45,7 +46,21 @@ const CATALOG_KINDS: [&str; 8] = [
 
 /// Loads the scenario at `path`, overriding global parameters with `overrides`.
 pub(crate) fn load(path: &Path, overrides: &[(String, String)]) -> Result<Scenario> {
-    load_inner(path, overrides, true)
+    load_source(read_source(path, "scenario")?, overrides, true)
+}
+
+/// Loads scenario `text` as if read from `path` (positions name `path`; relative paths in
+/// the scenario resolve against its directory).
+pub(crate) fn load_text(
+    text: &str,
+    path: &Path,
+    overrides: &[(String, String)],
+) -> Result<Scenario> {
+    let source = Source {
+        path: Arc::from(path),
+        text: text.to_owned(),
+    };
+    load_source(source, overrides, true)
 }
 
 fn load_inner(
@@ -53,7 +68,19 @@ fn load_inner(
     overrides: &[(String, String)],
     follow_distribution: bool,
 ) -> Result<Scenario> {
-    let main = read_source(path, "scenario")?;
+    load_source(
+        read_source(path, "scenario")?,
+        overrides,
+        follow_distribution,
+    )
+}
+
+fn load_source(
+    main: Source,
+    overrides: &[(String, String)],
+    follow_distribution: bool,
+) -> Result<Scenario> {
+    let path: &Path = &main.path.clone();
     let mut docs = vec![parse(&main)?];
     let root = docs[0].doc.root_element();
     let mut ctx = new_ctx(&docs);
