@@ -1,6 +1,6 @@
 //! Criterion benchmarks of the road model: load time (largest corpus file and a generated
 //! network over 50 MB), (road, s, t) → world evaluations per geometry type, and world → road
-//! look-ups on `multi_intersections.xodr`. Short runs (sample size 10) so the whole file takes
+//! look-ups and lane routes on `multi_intersections.xodr`. Short runs (sample size 10) so the whole file takes
 //! about two minutes.
 
 use std::fmt::Write as _;
@@ -175,5 +175,43 @@ fn locate(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, load, road_pose, locate);
+fn route(c: &mut Criterion) {
+    let mut g = c.benchmark_group("route");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(2));
+    let net = load_corpus_network("esmini/xodr/multi_intersections.xodr");
+    // From every drivable right lane at s = 1 of the first 20 roads to the same lane kind of the
+    // last 20: a mix of reachable and unreachable targets across the grid of junctions.
+    let roads = net.roads();
+    let pick = |r: &opendrive::Road| {
+        r.lane_section_at(1.0)
+            .right
+            .iter()
+            .find(|l| l.lane_type.is_drivable())
+            .map(|l| opendrive::LanePosition {
+                road_id: r.id.clone(),
+                lane_id: l.id,
+                s: 1.0,
+                offset: 0.0,
+            })
+    };
+    let pairs: Vec<_> = roads
+        .iter()
+        .take(20)
+        .zip(roads.iter().rev().take(20))
+        .filter_map(|(a, b)| Some((pick(a)?, pick(b)?)))
+        .collect();
+    g.throughput(Throughput::Elements(pairs.len() as u64));
+    g.bench_function("multi_intersections", |b| {
+        b.iter(|| pairs.iter().filter_map(|(a, z)| net.route(a, z)).count())
+    });
+    g.finish();
+}
+
+fn load_corpus_network(rel: &str) -> RoadNetwork {
+    RoadNetwork::from_file(&corpus(rel)).unwrap_or_else(|e| panic!("{e}"))
+}
+
+criterion_group!(benches, load, road_pose, locate, route);
 criterion_main!(benches);
