@@ -271,6 +271,15 @@ fn read_controller_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Controll
     const EXPECTED: &str =
         "AssignControllerAction, OverrideControllerValueAction, ActivateControllerAction";
     let c = ctx.choice(n, EXPECTED)?;
+    if n.children().filter(Node::is_element).count() > 1 {
+        ctx.warn(
+            n,
+            format!(
+                "ControllerAction holds more than one action (the 1.0 form); only {} is read",
+                c.tag_name().name()
+            ),
+        );
+    }
     Ok(match c.tag_name().name() {
         "AssignControllerAction" => {
             let activate = ControllerDomains {
