@@ -6,7 +6,7 @@
 
 mod trajectory_support;
 
-use engine::routing::{plan_route, PlannedRoute, RoutingErrorKind, RoutingOptions};
+use engine::routing::{plan_between, plan_route, PlannedRoute, RoutingErrorKind, RoutingOptions};
 use scenario::RouteStrategy;
 use trajectory_support::{fixture, here, lane, route};
 
@@ -126,4 +126,43 @@ fn waypoint_on_an_unknown_road() {
     let e = plan_route(&r, &roads, &RoutingOptions::default(), &here()).unwrap_err();
     assert!(matches!(e.kind(), RoutingErrorKind::Position(_)), "{e}");
     assert!(e.to_string().ends_with("at test.xosc:3:5"), "{e}");
+}
+
+#[test]
+fn acquire_position_plans_from_the_entity_to_the_target() {
+    // AcquirePositionAction: from road 1 lane −1 at s = 10 to road 4 at s = 50, fastest:
+    // the 360 m way by road 2 (see fastest_takes_the_fast_road); backwards it is unreachable.
+    let roads = fixture("two_junction_choice.xodr");
+    let at = |road: &str, s: f64| opendrive::LanePosition {
+        road_id: road.into(),
+        lane_id: -1,
+        s,
+        offset: 0.0,
+    };
+    let options = RoutingOptions::default();
+    let p = plan_between(
+        &roads.0,
+        &at("1", 10.0),
+        &at("4", 50.0),
+        RouteStrategy::Fastest,
+        &options,
+        &here(),
+    )
+    .unwrap();
+    assert!((p.length() - 360.0).abs() < TOL);
+    let e = plan_between(
+        &roads.0,
+        &at("4", 50.0),
+        &at("1", 10.0),
+        RouteStrategy::Fastest,
+        &options,
+        &here(),
+    )
+    .unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "expected a path through the road network from waypoint 1 (road \"4\", lane -1, s = 50.000) \
+         to waypoint 2 (road \"1\", lane -1, s = 10.000) of route \"AcquirePositionAction\", \
+         found none at test.xosc:3:5"
+    );
 }
