@@ -49,14 +49,16 @@ pub(crate) fn road_network(scenario: &Scenario) -> Result<RoadNetwork, RuntimeEr
 
 /// Builds world, storyboard description and tables from `scenario` on `network`.
 pub(crate) fn build(scenario: &Scenario, network: RoadNetwork) -> Result<Built, RuntimeError> {
-    let entities = scenario
+    let mut entities = scenario
         .entities
         .scenario_objects
         .iter()
         .enumerate()
         .map(|(i, o)| entity(EntityId(i as u32), o))
         .collect::<Result<Vec<_>, _>>()?;
+    let trailers = super::trailer::from_definitions(scenario, &mut entities, entity)?;
     let mut world = World::new(network, entities);
+    world.trailers = trailers;
     world.parameters = scenario
         .parameter_declarations
         .iter()

@@ -148,6 +148,9 @@ pub struct Entity {
     pub longitudinal_action: Option<ActionId>,
     /// The action controlling the lateral domain, if any.
     pub lateral_action: Option<ActionId>,
+    /// The pose was set by an action for this step (FollowTrajectoryAction): the controller
+    /// takes measurements without moving the entity.
+    pub held: bool,
     /// Lateral velocity along t set by the lateral action of this step (m per m of travel
     /// along s): the slope added to the road heading.
     pub lateral_slope: Real,
@@ -178,6 +181,7 @@ impl Entity {
             longitudinal_action: None,
             lateral_action: None,
             lateral_slope: 0.0,
+            held: false,
         }
     }
 

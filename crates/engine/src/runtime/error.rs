@@ -83,6 +83,9 @@ pub enum RuntimeErrorKind {
     /// A position did not resolve (the position module's error names file:line:col).
     #[error("{0}")]
     Position(crate::position::PositionError),
+    /// A trajectory could not be built (the trajectory module's error names file:line:col).
+    #[error("{0}")]
+    Trajectory(crate::trajectory::TrajectoryError),
     /// The storyboard rejected its description or a step.
     #[error("storyboard: {0}")]
     Storyboard(#[from] StoryboardError),

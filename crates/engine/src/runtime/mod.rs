@@ -14,6 +14,7 @@
 //! | `shapes` | transition shapes and dimensions |
 //! | `actions/*` | one file per action kind, and the `ActionHost` |
 //! | `controller/default` | the default controller |
+//! | `trailer` | trailer connections and the one-axle trailer kinematics |
 //! | `step` | `Engine` and its five stages |
 
 mod actions;
@@ -26,6 +27,7 @@ mod error;
 mod lanes;
 mod shapes;
 mod step;
+mod trailer;
 mod world;
 
 pub use config::{EngineConfig, DEFAULT_DT, DEFAULT_MAX_TIME};

@@ -212,6 +212,8 @@ impl Engine {
         }
         let world = self.world.get_mut();
         if self.step == 0 {
+            // Trailers connected at definition stand behind their tows from the first frame.
+            super::trailer::follow(world, 0.0);
             // The frame at t = 0: the initial state after the Init actions.
             let clock = Instant::now();
             frames
@@ -239,6 +241,8 @@ impl Engine {
         for e in world.entities.iter_mut() {
             move_entity(net, e, dt);
         }
+        // Towed vehicles follow their tows' hitches (runtime/trailer.rs).
+        super::trailer::follow(world, dt);
         self.counters.controllers += clock.elapsed();
 
         // Stage 4: time advance and measurements (taken by the controllers' move).

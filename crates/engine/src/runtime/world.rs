@@ -34,6 +34,8 @@ pub struct World {
     pub(crate) variables: BTreeMap<String, Value>,
     pub(crate) signals: BTreeMap<String, String>,
     pub(crate) signal_phases: BTreeMap<String, String>,
+    /// Trailer mounting points and connections (§7.2.2.6).
+    pub(crate) trailers: super::trailer::Trailers,
 }
 
 impl World {
@@ -52,6 +54,7 @@ impl World {
             variables: BTreeMap::new(),
             signals: BTreeMap::new(),
             signal_phases: BTreeMap::new(),
+            trailers: super::trailer::Trailers::default(),
         }
     }
 

@@ -11,9 +11,11 @@
 mod controller;
 mod custom;
 mod distance;
+mod follow_trajectory;
 mod lane_change;
 mod lane_offset;
 mod parameter;
+mod routing;
 mod speed;
 mod speed_profile;
 mod teleport;
@@ -22,6 +24,7 @@ mod visibility;
 
 use scenario::{
     Action, ActionKind, GlobalAction, LateralAction, LongitudinalAction, PrivateAction,
+    RoutingAction,
 };
 
 use super::entity::EntityId;
@@ -45,6 +48,7 @@ pub(crate) enum Part {
     Lateral(lane_change::LateralState),
     LongitudinalDistance(distance::LongitudinalState),
     LateralDistance(distance::LateralState),
+    Trajectory(follow_trajectory::TrajectoryState),
     Done(ActionStatus),
 }
 
@@ -105,6 +109,7 @@ impl ActionTable {
                         distance::step_longitudinal(world, actor, s, dt)
                     }
                     Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
+                    Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
                 };
                 if next != ActionStatus::Running {
                     release(world, actor, id);
@@ -113,6 +118,17 @@ impl ActionTable {
             }
         }
     }
+}
+
+/// Stops a running part midway: a lateral transition keeps the lateral position reached, a
+/// trajectory hands the actor back to the default controller where it stands.
+fn interrupt(world: &mut World, actor: EntityId, part: &mut Part) {
+    match part {
+        Part::Lateral(_) => lane_change::abandon(world, actor),
+        Part::Trajectory(_) => follow_trajectory::release(world, actor, false),
+        _ => {}
+    }
+    *part = Part::Done(ActionStatus::Stopped);
 }
 
 /// Frees the control domains `actor` gave to action `id`.
@@ -147,10 +163,7 @@ impl Host<'_> {
             if let Some(slot) = self.table.slots.get_mut(old.0 as usize) {
                 for (part, &a) in slot.parts.iter_mut().zip(&slot.actors) {
                     if a == actor && part.status() == ActionStatus::Running {
-                        if domain == Domain::Lateral {
-                            lane_change::abandon(self.world, actor);
-                        }
-                        *part = Part::Done(ActionStatus::Stopped);
+                        interrupt(self.world, actor, part);
                     }
                 }
             }
@@ -210,10 +223,68 @@ impl Host<'_> {
                 controller::start(c, &name, pos, time, self.events)?;
                 Ok(Part::Done(ActionStatus::Ended))
             }
+            PrivateAction::Routing(r) => self.start_routing(id, r, actor),
             other => {
                 let name = self.table.slots[id.0 as usize].name.clone();
                 self.events
                     .push(EventRecord::unsupported(time, &name, kind_name(other), pos));
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+        }
+    }
+
+    /// Starts a RoutingAction on one actor.
+    fn start_routing(
+        &mut self,
+        id: ActionId,
+        action: &RoutingAction,
+        actor: EntityId,
+    ) -> Result<Part, RuntimeError> {
+        let slot = &self.table.slots[id.0 as usize];
+        let (pos, name, time) = (slot.action.pos.clone(), slot.name.clone(), self.time);
+        match action {
+            RoutingAction::AssignRoute(route) => {
+                routing::assign(self.world, actor, route, &pos, &name, time, self.events);
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+            RoutingAction::AcquirePosition(target) => {
+                routing::acquire(self.world, actor, target, &name, time, self.events);
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+            RoutingAction::FollowTrajectory {
+                trajectory,
+                time_reference,
+                initial_distance_offset,
+                ..
+            } => {
+                self.claim(actor, Domain::Lateral, id);
+                if time_reference.is_some() {
+                    self.claim(actor, Domain::Longitudinal, id);
+                }
+                let started = follow_trajectory::start(
+                    self.world,
+                    actor,
+                    trajectory,
+                    time_reference.as_ref(),
+                    *initial_distance_offset,
+                    time,
+                    &pos,
+                );
+                // A trajectory that cannot be built skips the action (recorded in the event
+                // log); the actor drives on under the default controller.
+                Ok(started.unwrap_or_else(|e| {
+                    self.events.push(EventRecord::error(time, &name, &e));
+                    release(self.world, actor, id);
+                    Part::Done(ActionStatus::Stopped)
+                }))
+            }
+            _ => {
+                self.events.push(EventRecord::unsupported(
+                    time,
+                    &name,
+                    "RandomRouteAction",
+                    &pos,
+                ));
                 Ok(Part::Done(ActionStatus::Ended))
             }
         }
@@ -323,11 +394,7 @@ impl Host<'_> {
         };
         for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
             if part.status() == ActionStatus::Running {
-                let e = self.world.entity_mut(actor);
-                if e.lateral_action == Some(id) {
-                    lane_change::abandon(self.world, actor);
-                }
-                *part = Part::Done(ActionStatus::Stopped);
+                interrupt(self.world, actor, part);
             }
         }
         for &actor in &slot.actors {

@@ -26,6 +26,27 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     let old_h = e.pose.h;
     let old_v = e.velocity.translational.x;
     let distance = e.speed * dt;
+    if e.held {
+        // An action set the pose for this step: measure only.
+        e.held = false;
+        if e.track.is_none() {
+            e.road_position = net.locate(e.pose.x, e.pose.y, Some(e.pose.h));
+        }
+    } else {
+        advance_entity(net, e, distance);
+    }
+    e.velocity = Velocity6d {
+        translational: Vector3::new(e.speed, 0.0, 0.0),
+        rotational: Vector3::new(0.0, 0.0, normalize_angle(e.pose.h - old_h) / dt),
+    };
+    e.acceleration = Acceleration6d {
+        translational: Vector3::new((e.speed - old_v) / dt, 0.0, 0.0),
+        rotational: Vector3::ZERO,
+    };
+}
+
+/// Moves `e` by `distance` m: along its lane track, or straight along its heading.
+fn advance_entity(net: &RoadNetwork, e: &mut Entity, distance: Real) {
     match e.track.take() {
         Some(mut track) => {
             let route = e.route.as_ref();
@@ -61,14 +82,6 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
             e.road_position = net.locate(e.pose.x, e.pose.y, Some(e.pose.h));
         }
     }
-    e.velocity = Velocity6d {
-        translational: Vector3::new(e.speed, 0.0, 0.0),
-        rotational: Vector3::new(0.0, 0.0, normalize_angle(e.pose.h - old_h) / dt),
-    };
-    e.acceleration = Acceleration6d {
-        translational: Vector3::new((e.speed - old_v) / dt, 0.0, 0.0),
-        rotational: Vector3::ZERO,
-    };
 }
 
 /// Ratio of reference-line length to travelled length at lateral position t: 1 / (1 − κ·t).

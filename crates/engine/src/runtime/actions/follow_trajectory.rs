@@ -1,0 +1,125 @@
+//! FollowTrajectoryAction (OpenSCENARIO 1.3 §7.7.2.6 "RoutingAction", §7.6.5 time references,
+//! XSD `FollowTrajectoryAction`): move the actor along a trajectory (built by the `trajectory`
+//! module). With a Timing time reference the trajectory's times drive the motion and the action
+//! holds both domains; without one it holds the lateral domain only and the actor keeps its own
+//! speed along the trajectory (semantics-pitfalls #7).
+//!
+//! The actor starts at `initialDistanceOffset` along the trajectory, else at the trajectory
+//! point closest to it; its pose is the trajectory point's (heading = the trajectory's
+//! tangent). The action ends at the end of an open trajectory; the actor then drives on under
+//! the default controller from where it stands.
+
+use scenario::{SourcePos, Timing};
+
+use super::Part;
+use crate::runtime::entity::EntityId;
+use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
+use crate::runtime::world::World;
+use crate::storyboard::ActionStatus;
+use crate::trajectory::{build, Trajectory, TrajectoryClock};
+
+/// A running FollowTrajectoryAction on one actor.
+#[derive(Debug, Clone)]
+pub(crate) struct TrajectoryState {
+    trajectory: Box<Trajectory>,
+    clock: Option<TrajectoryClock>,
+    s: f64,
+}
+
+/// Starts the action.
+pub(crate) fn start(
+    world: &mut World,
+    actor: EntityId,
+    trajectory: &scenario::Trajectory,
+    timing: Option<&Timing>,
+    initial_distance_offset: Option<f64>,
+    now: f64,
+    pos: &SourcePos,
+) -> Result<Part, RuntimeError> {
+    let to_error = |e| RuntimeError::new(RuntimeErrorKind::Trajectory(e));
+    let trajectory = build(trajectory, &*world, pos).map_err(to_error)?;
+    let clock = timing
+        .map(|t| TrajectoryClock::new(t, now, pos))
+        .transpose()
+        .map_err(to_error)?;
+    let e = world.entity(actor);
+    let s = match (initial_distance_offset, clock.as_ref()) {
+        (Some(d), _) => d.clamp(0.0, trajectory.length()),
+        (None, Some(c)) => trajectory
+            .s_at_simulation_time(c, now)
+            .unwrap_or_else(|| trajectory.closest(e.pose.x, e.pose.y).point.s),
+        (None, None) => trajectory.closest(e.pose.x, e.pose.y).point.s,
+    };
+    let mut state = TrajectoryState {
+        trajectory: Box::new(trajectory),
+        clock,
+        s,
+    };
+    place(world, actor, &state.trajectory, s, false);
+    Ok(match step(world, actor, &mut state, now - 1e-12, 0.0) {
+        ActionStatus::Running => Part::Trajectory(state),
+        done => Part::Done(done),
+    })
+}
+
+/// Puts `actor` at arc length `s` of the trajectory; `hold` marks the pose as set for the
+/// step, so the controller takes measurements without moving the actor again.
+fn place(world: &mut World, actor: EntityId, trajectory: &Trajectory, s: f64, hold: bool) {
+    let p = trajectory.eval(s);
+    let e = world.entity_mut(actor);
+    e.pose.x = p.x;
+    e.pose.y = p.y;
+    e.pose.z = p.z;
+    e.pose.h = p.heading;
+    e.track = None;
+    e.held = hold;
+    e.placed = true;
+}
+
+/// Advances the actor to the step's end, `now + dt`.
+pub(crate) fn step(
+    world: &mut World,
+    actor: EntityId,
+    st: &mut TrajectoryState,
+    now: f64,
+    dt: f64,
+) -> ActionStatus {
+    let length = st.trajectory.length();
+    let t = now + dt;
+    let s = match &st.clock {
+        Some(clock) => {
+            if let Some(v) = st.trajectory.speed_at_simulation_time(clock, t) {
+                world.entity_mut(actor).speed = v;
+            }
+            st.trajectory
+                .s_at_simulation_time(clock, t)
+                .unwrap_or(st.s + world.entity(actor).speed * dt)
+        }
+        None => st.s + world.entity(actor).speed * dt,
+    };
+    let s = if st.trajectory.closed() && length > 0.0 {
+        s.rem_euclid(length)
+    } else {
+        s.clamp(0.0, length)
+    };
+    let moved = (s - st.s).abs();
+    st.s = s;
+    place(world, actor, &st.trajectory, s, true);
+    world.entity_mut(actor).odometer += moved;
+    let at_end = !st.trajectory.closed() && s >= length - 1e-9;
+    if at_end && dt > 0.0 {
+        release(world, actor, true);
+        ActionStatus::Ended
+    } else {
+        ActionStatus::Running
+    }
+}
+
+/// The action is over (ended, or stopped with `hold` false): the default controller takes
+/// the actor on from its pose; `hold` keeps it in place for the rest of this step.
+pub(crate) fn release(world: &mut World, actor: EntityId, hold: bool) {
+    let pose = world.entity(actor).pose;
+    let found = world.network.locate(pose.x, pose.y, Some(pose.h));
+    world.place_resolved(actor, pose, found);
+    world.entity_mut(actor).held = hold;
+}

@@ -1,0 +1,84 @@
+//! AssignRouteAction and AcquirePositionAction (OpenSCENARIO 1.3 §7.7.2.6 "RoutingAction",
+//! XSD `AssignRouteAction`, `AcquirePositionAction`): give the actor a route, which the
+//! default controller follows at junctions (module `controller::default`). Planning is the
+//! `routing` module's.
+//!
+//! AcquirePositionAction plans the shortest route from the actor's lane position to the target
+//! and ends at once; reaching the target is the default controller's job along that route.
+//! A route that cannot be planned is recorded in the event log and the actor keeps driving by
+//! lane links.
+
+use opendrive::LanePosition;
+use scenario::{Position, Route, RouteStrategy, SourcePos};
+
+use crate::output::EventRecord;
+use crate::position::resolve;
+use crate::routing::{plan_between, plan_route, RoutingOptions};
+use crate::runtime::entity::EntityId;
+use crate::runtime::world::World;
+
+/// AssignRouteAction: plans `route` and assigns it.
+pub(crate) fn assign(
+    world: &mut World,
+    actor: EntityId,
+    route: &Route,
+    pos: &SourcePos,
+    name: &str,
+    time: f64,
+    events: &mut Vec<EventRecord>,
+) {
+    match plan_route(route, &*world, &RoutingOptions::default(), pos) {
+        Ok(planned) => world.entity_mut(actor).route = Some(planned.route().clone()),
+        Err(e) => events.push(EventRecord::Error {
+            time,
+            element: name.to_owned(),
+            message: format!("{e} (the route is not assigned)"),
+        }),
+    }
+}
+
+/// AcquirePositionAction: plans a route from the actor to `target` and assigns it.
+pub(crate) fn acquire(
+    world: &mut World,
+    actor: EntityId,
+    target: &Position,
+    name: &str,
+    time: f64,
+    events: &mut Vec<EventRecord>,
+) {
+    let mut fail = |message: String| {
+        events.push(EventRecord::Error {
+            time,
+            element: name.to_owned(),
+            message: format!("{message} (the route is not assigned)"),
+        })
+    };
+    let to = match resolve(target, &*world) {
+        Ok(r) => r.road_position,
+        Err(e) => return fail(e.to_string()),
+    };
+    let from = world.entity(actor).road_position.clone();
+    let (Some(from), Some(to)) = (from, to) else {
+        return fail(format!(
+            "expected the actor and the target on roads, found one off the road at {}",
+            target.pos
+        ));
+    };
+    let lane = |r: &opendrive::RoadPosition| LanePosition {
+        road_id: r.road_id.clone(),
+        lane_id: r.lane_id,
+        s: r.s,
+        offset: r.offset,
+    };
+    match plan_between(
+        &world.network,
+        &lane(&from),
+        &lane(&to),
+        RouteStrategy::Shortest,
+        &RoutingOptions::default(),
+        &target.pos,
+    ) {
+        Ok(planned) => world.entity_mut(actor).route = Some(planned.route().clone()),
+        Err(e) => fail(e.to_string()),
+    }
+}

@@ -1,0 +1,323 @@
+//! Trailers at runtime (OpenSCENARIO 1.3 §7.2.2.6 "Trailer modeling", XSD `TrailerHitch`,
+//! `TrailerCoupler`, `Trailer`, `ConnectTrailerAction`, `DisconnectTrailerAction`): which
+//! vehicle tows which, and the one-axle trailer kinematics that move a towed vehicle.
+//!
+//! A trailer's reference point is its rear axle; its coupler lies `L` = coupler dx ahead of it
+//! on its x axis, the tow vehicle's hitch `hitch dx` ahead of the tow's reference point. The
+//! coupler is pinned to the hitch; the axle follows the hitch as a tractrix,
+//! dθ/ds = sin(α − θ) / L, with α the direction in which the hitch moves and s its travel.
+//! Over one step the hitch is taken to move along the straight segment from its previous to its
+//! new position (α constant), where the equation has the closed-form solution
+//! tan(φ/2) = tan(φ₀/2) · e^(−d/L), φ = θ − α, d the segment's length. The heading is thus
+//! integrated exactly for the piecewise-straight hitch path, and the axle is then placed at
+//! hitch − L·(cos θ, sin θ), so the coupler sits on the hitch to rounding error whatever dt.
+//!
+//! Chains (truck → trailer → trailer) are moved tow first. A connection made at definition
+//! (`Vehicle/Trailer`) lines the trailer up straight behind its tow at the first step, as esmini
+//! does; ConnectTrailerAction keeps the trailer where it stands, turned towards the hitch, or
+//! lines it up when it has not been placed yet. Inline trailers (`Trailer/Trailer`) become
+//! entities named after their tow with a `+` appended (esmini's names: `Ego+`, `Ego++`).
+//!
+//! Written by hand: no maintained crate models articulated vehicles in this form.
+
+use std::collections::BTreeMap;
+
+use opendrive::{normalize_angle, Pose, Real};
+use scenario::{EntityObject, Scenario, ScenarioObject, SourcePos, Trailer};
+
+use super::entity::{Entity, EntityId};
+use super::error::RuntimeError;
+use super::world::World;
+use crate::domain::{Acceleration6d, Vector3, Velocity6d};
+
+/// Mounting points of one vehicle (m along its x axis from the reference point).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Joints {
+    /// TrailerHitch dx, where a trailer attaches.
+    pub hitch: Option<Real>,
+    /// TrailerCoupler dx, where this vehicle attaches to a tow.
+    pub coupler: Option<Real>,
+}
+
+/// One tow → trailer connection.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Link {
+    /// The towing vehicle.
+    pub tow: EntityId,
+    /// The towed vehicle.
+    pub trailer: EntityId,
+    /// Line the trailer up behind the tow at its first placement.
+    align: bool,
+    /// Hitch position of the previous step, once placed.
+    last_hitch: Option<(Real, Real)>,
+    /// The trailer's odometer after the previous step.
+    odometer: Real,
+}
+
+/// Every vehicle's mounting points and the connections in force.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Trailers {
+    joints: BTreeMap<EntityId, Joints>,
+    links: Vec<Link>,
+}
+
+impl Trailers {
+    /// The trailer `tow` pulls, if any.
+    pub fn trailer_of(&self, tow: EntityId) -> Option<EntityId> {
+        self.links.iter().find(|l| l.tow == tow).map(|l| l.trailer)
+    }
+
+    /// The vehicle pulling `trailer`, if any.
+    pub fn tow_of(&self, trailer: EntityId) -> Option<EntityId> {
+        self.links
+            .iter()
+            .find(|l| l.trailer == trailer)
+            .map(|l| l.tow)
+    }
+
+    /// Connects `trailer` to `tow` (ConnectTrailerAction, or `Vehicle/Trailer` with
+    /// `align`). Errors name `pos`: a missing hitch or coupler, a coupler dx ≤ 0, a tow that
+    /// already pulls a trailer (§7.2.2.6: one at a time), a trailer already towed, or a cycle.
+    pub(crate) fn connect(
+        &mut self,
+        world_names: &dyn Fn(EntityId) -> String,
+        tow: EntityId,
+        trailer: EntityId,
+        align: bool,
+        pos: &SourcePos,
+    ) -> Result<(), RuntimeError> {
+        let name = |id| format!("'{}'", world_names(id));
+        let joints = |id| self.joints.get(&id).copied().unwrap_or_default();
+        if joints(tow).hitch.is_none() {
+            return Err(RuntimeError::at(
+                "a tow vehicle with a TrailerHitch",
+                format!("{} without one", name(tow)),
+                pos,
+            ));
+        }
+        match joints(trailer).coupler {
+            Some(dx) if dx > 0.0 && dx.is_finite() => {}
+            Some(dx) => {
+                return Err(RuntimeError::at(
+                    "a TrailerCoupler dx > 0 m (ahead of the trailer's rear axle)",
+                    format!("dx = {dx} on {}", name(trailer)),
+                    pos,
+                ))
+            }
+            None => {
+                return Err(RuntimeError::at(
+                    "a trailer with a TrailerCoupler",
+                    format!("{} without one", name(trailer)),
+                    pos,
+                ))
+            }
+        }
+        if let Some(old) = self.trailer_of(tow) {
+            return Err(RuntimeError::at(
+                "a tow vehicle without a trailer (one trailer at a time)",
+                format!("{} already pulling {}", name(tow), name(old)),
+                pos,
+            ));
+        }
+        if let Some(old) = self.tow_of(trailer) {
+            return Err(RuntimeError::at(
+                "a trailer not yet connected",
+                format!("{} already towed by {}", name(trailer), name(old)),
+                pos,
+            ));
+        }
+        // Walking up from the tow must not reach the trailer.
+        let mut up = Some(tow);
+        while let Some(id) = up {
+            if id == trailer {
+                return Err(RuntimeError::at(
+                    "a trailer chain without a cycle",
+                    format!("{} towing {} in a loop", name(tow), name(trailer)),
+                    pos,
+                ));
+            }
+            up = self.tow_of(id);
+        }
+        self.links.push(Link {
+            tow,
+            trailer,
+            align,
+            last_hitch: None,
+            odometer: 0.0,
+        });
+        Ok(())
+    }
+
+    /// Disconnects the trailer `tow` pulls (DisconnectTrailerAction); true if there was one.
+    pub(crate) fn disconnect(&mut self, tow: EntityId) -> bool {
+        let before = self.links.len();
+        self.links.retain(|l| l.tow != tow);
+        self.links.len() != before
+    }
+
+    /// Links in chain order: a tow's own link comes before the link it tows.
+    fn order(&self) -> Vec<usize> {
+        let depth = |l: &Link| {
+            let mut d = 0usize;
+            let mut up = self.tow_of(l.tow);
+            // Connect refuses cycles, so the walk ends; the bound guards it anyway.
+            while let Some(id) = up.filter(|_| d <= self.links.len()) {
+                d += 1;
+                up = self.tow_of(id);
+            }
+            d
+        };
+        let mut order = (0..self.links.len()).collect::<Vec<_>>();
+        order.sort_by_key(|&i| depth(&self.links[i]));
+        order
+    }
+}
+
+/// The world position of a point `dx` ahead of the reference point of a vehicle at `pose`.
+pub fn mount_point(pose: &Pose, dx: Real) -> (Real, Real) {
+    (pose.x + dx * pose.h.cos(), pose.y + dx * pose.h.sin())
+}
+
+/// The trailer heading after its hitch moved from `from` to `to`, the trailer's heading
+/// having been `heading` (the tractrix over a straight segment, module doc), for a
+/// coupler-to-axle distance `l`.
+pub fn tractrix_heading(heading: Real, from: (Real, Real), to: (Real, Real), l: Real) -> Real {
+    let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+    let d = dx.hypot(dy);
+    if d <= f64::EPSILON * l.max(1.0) {
+        return heading;
+    }
+    let alpha = dy.atan2(dx);
+    let phi0 = normalize_angle(heading - alpha);
+    let phi = 2.0 * ((phi0 / 2.0).tan() * (-d / l).exp()).atan();
+    normalize_angle(alpha + phi)
+}
+
+/// Reads the mounting points and the connections at definition: each vehicle's TrailerHitch
+/// and TrailerCoupler, `TrailerRef` links, and inline `Trailer` objects, which are appended
+/// to `entities` (named `<tow>+`) through `make`.
+pub(crate) fn from_definitions(
+    scenario: &Scenario,
+    entities: &mut Vec<Entity>,
+    make: impl Fn(EntityId, &ScenarioObject) -> Result<Entity, RuntimeError>,
+) -> Result<Trailers, RuntimeError> {
+    let mut trailers = Trailers::default();
+    // (tow, its object, the reference or inline trailer) to connect once all exist.
+    let mut pending = Vec::new();
+    let mut stack = scenario
+        .entities
+        .scenario_objects
+        .iter()
+        .enumerate()
+        .map(|(i, o)| (EntityId(i as u32), o.clone()))
+        .collect::<Vec<_>>();
+    while let Some((id, object)) = stack.pop() {
+        let EntityObject::Vehicle(v) = &object.entity_object else {
+            continue;
+        };
+        trailers.joints.insert(
+            id,
+            Joints {
+                hitch: v.trailer_hitch.map(|j| j.dx),
+                coupler: v.trailer_coupler.map(|j| j.dx),
+            },
+        );
+        match &v.trailer {
+            Some(Trailer::Trailer(inline)) => {
+                let trailer_id = EntityId(entities.len() as u32);
+                let mut e = make(trailer_id, inline)?;
+                e.name = format!("{}+", entities[id.index()].name);
+                entities.push(e);
+                pending.push((id, trailer_id, object.pos.clone()));
+                stack.push((trailer_id, (**inline).clone()));
+            }
+            Some(Trailer::TrailerRef(name)) => {
+                let found = entities.iter().find(|e| &e.name == name).ok_or_else(|| {
+                    RuntimeError::at(
+                        "a declared entity",
+                        format!("TrailerRef '{name}'"),
+                        &object.pos,
+                    )
+                })?;
+                pending.push((id, found.id, object.pos.clone()));
+            }
+            _ => {}
+        }
+    }
+    pending.sort_by_key(|p| p.0);
+    for (tow, trailer, pos) in pending {
+        let names = |id: EntityId| entities[id.index()].name.clone();
+        trailers.connect(&names, tow, trailer, true, &pos)?;
+    }
+    Ok(trailers)
+}
+
+/// The trailer stage: after the controllers moved every tow vehicle over `dt`, places each
+/// connected trailer, tow first along a chain, and sets its speed, velocity, yaw rate,
+/// acceleration and odometer. With `dt` = 0 (the initial frame) it only places.
+pub(crate) fn follow(world: &mut World, dt: Real) {
+    let order = world.trailers.order();
+    for i in order {
+        let link = world.trailers.links[i].clone();
+        let Some(updated) = follow_link(world, link, dt) else {
+            continue;
+        };
+        world.trailers.links[i] = updated;
+    }
+}
+
+/// Places the trailer of `link`; the updated link, or `None` when the tow is not placed.
+fn follow_link(world: &mut World, mut link: Link, dt: Real) -> Option<Link> {
+    let joints = |id: EntityId| world.trailers.joints.get(&id).copied().unwrap_or_default();
+    let (hitch_dx, l) = (joints(link.tow).hitch?, joints(link.trailer).coupler?);
+    let tow = world.entity(link.tow);
+    if !tow.placed {
+        return None;
+    }
+    let (tow_pose, tow_speed) = (tow.pose, tow.speed);
+    let hitch = mount_point(&tow_pose, hitch_dx);
+    let trailer = world.entity(link.trailer);
+    let (old_pose, old_speed) = (trailer.pose, trailer.speed);
+    let heading = match link.last_hitch {
+        Some(from) => tractrix_heading(old_pose.h, from, hitch, l),
+        None if link.align || !trailer.placed => tow_pose.h,
+        // Connected where it stands: turned towards the hitch.
+        None => (hitch.1 - old_pose.y).atan2(hitch.0 - old_pose.x),
+    };
+    let pose = Pose {
+        x: hitch.0 - l * heading.cos(),
+        y: hitch.1 - l * heading.sin(),
+        z: tow_pose.z,
+        h: heading,
+        ..tow_pose
+    };
+    let moved = (pose.x - old_pose.x).hypot(pose.y - old_pose.y);
+    let first = link.last_hitch.is_none();
+    let found = world.network.locate(pose.x, pose.y, Some(pose.h));
+    world.place_resolved(link.trailer, pose, found);
+    let e = world.entity_mut(link.trailer);
+    // The trailer is moved here, not by the default controller.
+    e.track = None;
+    if !first && dt > 0.0 {
+        let speed = if tow_speed < 0.0 { -moved } else { moved } / dt;
+        e.speed = speed;
+        e.odometer = link.odometer + moved;
+        e.velocity = Velocity6d {
+            translational: Vector3::new(speed, 0.0, 0.0),
+            rotational: Vector3::new(0.0, 0.0, normalize_angle(heading - old_pose.h) / dt),
+        };
+        e.acceleration = Acceleration6d {
+            translational: Vector3::new((speed - old_speed) / dt, 0.0, 0.0),
+            rotational: Vector3::ZERO,
+        };
+    } else {
+        e.speed = tow_speed;
+        e.velocity = Velocity6d {
+            translational: Vector3::new(tow_speed, 0.0, 0.0),
+            rotational: Vector3::ZERO,
+        };
+    }
+    link.odometer = e.odometer;
+    link.last_hitch = Some(hitch);
+    Some(link)
+}
