@@ -93,6 +93,29 @@ impl Geometry {
         }
     }
 
+    /// The reference line at `s` with the sine and cosine of its heading (a line reuses its
+    /// start heading's, computed once).
+    #[inline]
+    pub(crate) fn eval_trig(&self, s: Real) -> (RefPoint, Real, Real) {
+        match self.kind {
+            GeometryKind::Line => {
+                let ds = s - self.s;
+                let rp = RefPoint {
+                    x: self.x + ds * self.cos_h,
+                    y: self.y + ds * self.sin_h,
+                    hdg: normalize_angle(self.hdg),
+                    curvature: 0.0,
+                };
+                (rp, self.sin_h, self.cos_h)
+            }
+            _ => {
+                let rp = self.eval(s);
+                let (sin_h, cos_h) = rp.hdg.sin_cos();
+                (rp, sin_h, cos_h)
+            }
+        }
+    }
+
     /// The reference line at road coordinate `s` (within or slightly outside this geometry).
     #[inline]
     pub fn eval(&self, s: Real) -> RefPoint {
@@ -135,6 +158,12 @@ impl PlanView {
     #[inline]
     pub fn eval(&self, s: Real) -> RefPoint {
         self.geometries[self.index_at(s)].eval(s)
+    }
+
+    /// The reference line at `s` with sin and cos of its heading.
+    #[inline]
+    pub(crate) fn eval_trig(&self, s: Real) -> (RefPoint, Real, Real) {
+        self.geometries[self.index_at(s)].eval_trig(s)
     }
 }
 

@@ -28,14 +28,23 @@ pub(crate) struct RoadFrame {
 /// The frame of `road` at `s` (s already within [0, length]).
 #[inline]
 pub(crate) fn road_frame(road: &Road, s: Real) -> RoadFrame {
-    let rp = road.plan_view.eval(s);
+    let (rp, sin_h, cos_h) = road.plan_view.eval_trig(s);
     let (z, dz) = eval_piecewise(&road.elevation, s);
     let (roll, _) = eval_piecewise(&road.superelevation, s);
-    // Positive pitch is nose down (rotation about the left-pointing y axis).
-    let pitch = 0.0 - dz.atan(); // 0 − x, not −x: no negative zero on flat roads
-    let (sin_h, cos_h) = rp.hdg.sin_cos();
-    let (sin_p, cos_p) = pitch.sin_cos();
-    let (sin_r, cos_r) = roll.sin_cos();
+    // Positive pitch is nose down (rotation about the left-pointing y axis). Flat and unbanked
+    // roads skip the trigonometry.
+    let (pitch, sin_p, cos_p) = if dz == 0.0 {
+        (0.0, 0.0, 1.0)
+    } else {
+        let p = -dz.atan();
+        let (sp, cp) = p.sin_cos();
+        (p, sp, cp)
+    };
+    let (sin_r, cos_r) = if roll == 0.0 {
+        (0.0, 1.0)
+    } else {
+        roll.sin_cos()
+    };
     RoadFrame {
         x: rp.x,
         y: rp.y,

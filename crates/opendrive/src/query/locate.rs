@@ -89,7 +89,13 @@ impl RoadNetwork {
         if !(x.is_finite() && y.is_finite()) {
             return None;
         }
-        let best = self.best_candidate(self.spatial.nearest(x, y), x, y, heading);
+        // Pieces whose box holds the point first: on a road surface that settles it, since
+        // every other piece's surface is farther than its box.
+        let inside = self.spatial.containing(x, y).map(|pi| (pi, 0.0));
+        let best = match self.best_candidate(inside, x, y, heading) {
+            Some(c) if c.distance <= LENGTH_EPSILON => Some(c),
+            _ => self.best_candidate(self.spatial.nearest(x, y), x, y, heading),
+        };
         best.map(|c| self.position(c, heading))
     }
 

@@ -113,6 +113,11 @@ impl SpatialIndex {
         Some([lo[0], lo[1], hi[0], hi[1]])
     }
 
+    /// Index entries whose box holds (x, y).
+    pub(crate) fn containing(&self, x: Real, y: Real) -> impl Iterator<Item = usize> + '_ {
+        self.tree.locate_all_at_point(&[x, y]).map(|e| e.piece)
+    }
+
     /// Index entries in order of their box's distance to (x, y), with squared distance.
     pub(crate) fn nearest(&self, x: Real, y: Real) -> impl Iterator<Item = (usize, Real)> + '_ {
         self.tree
