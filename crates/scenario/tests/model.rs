@@ -228,3 +228,25 @@ fn a_catalog_file_is_not_a_scenario() {
     // `  <Catalog name="TestVehicles">` on line 4.
     assert_eq!((err.pos().line, err.pos().col), (4, 3));
 }
+
+#[test]
+fn the_1_2_spelling_of_traffic_signal_group_state_is_read() {
+    let s = Scenario::load(&fixture("traffic_signals_1_2.xosc")).unwrap();
+    let controller = &s.road_network.traffic_signal_controllers[0];
+    assert_eq!(controller.name, "Crossing");
+    assert!((controller.delay.unwrap() - 2.5).abs() < TOL);
+    let phases: Vec<(&str, f64)> = controller
+        .phases
+        .iter()
+        .map(|p| (p.name.as_str(), p.duration))
+        .collect();
+    assert_eq!(phases.len(), 2);
+    assert!((phases[1].1 - 25.5).abs() < TOL);
+    assert_eq!(controller.phases[0].group_state.as_deref(), Some("green"));
+    assert_eq!(
+        controller.phases[0].signal_states,
+        [("1".to_owned(), "off;off;on".to_owned())]
+    );
+    assert_eq!(s.warnings.len(), 1, "{:?}", s.warnings);
+    assert_eq!((s.warnings[0].pos.line, s.warnings[0].pos.col), (10, 11));
+}

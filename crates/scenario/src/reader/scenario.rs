@@ -425,7 +425,12 @@ fn read_road_network<'a>(ctx: &mut Ctx<'a>, n: Node<'a>, path: &Path) -> Result<
                 for s in ctx.children(p, "TrafficSignalState") {
                     signal_states.push((ctx.req(s, "trafficSignalId")?, ctx.req(s, "state")?));
                 }
-                let group_state = match ctx.opt_child(p, "TrafficSignalGroupState") {
+                // The 1.2 XSD spells it `TrafficeSignalGroupState`; 1.3 corrected the name.
+                let misspelt = ctx.opt_child(p, "TrafficeSignalGroupState");
+                if let Some(g) = misspelt {
+                    ctx.warn(g, "TrafficeSignalGroupState (the 1.2 spelling) read as TrafficSignalGroupState".into());
+                }
+                let group_state = match ctx.opt_child(p, "TrafficSignalGroupState").or(misspelt) {
                     Some(g) => Some(ctx.req(g, "state")?),
                     None => None,
                 };
