@@ -12,7 +12,8 @@ use crate::entity::{moving_object, stationary_object, EntityInfo, MiscObjectInfo
 use crate::error::Error;
 use crate::ids::{IdAllocator, IdKey};
 use crate::lanes::{from_network, RoadLanes};
-use crate::osi3::{GroundTruth, Identifier, Timestamp};
+use crate::osi3::ground_truth::ProjFrameOffset;
+use crate::osi3::{GroundTruth, Identifier, Timestamp, Vector3d};
 use crate::polyline::Sampling;
 use crate::rigid_body::RigidBodyState;
 use crate::version::interface_version;
@@ -38,7 +39,9 @@ pub struct GroundTruthBuilder {
     static_data: StaticData,
     host: Option<String>,
     map_reference: Option<String>,
+    model_reference: Option<String>,
     proj_string: Option<String>,
+    proj_frame_offset: Option<ProjFrameOffset>,
     frames: u64,
 }
 
@@ -53,7 +56,10 @@ impl GroundTruthBuilder {
     }
 
     /// Builds the lanes of `network` (ids first, so lane ids are the same whatever the
-    /// entities), takes `proj_string` from its `geoReference` and `map_reference` as given.
+    /// entities), takes `proj_string` from its `geoReference`, `proj_frame_offset` from
+    /// its header `<offset>` (OpenDRIVE 1.8 §6.4: translate by x, y, z, then rotate by hdg
+    /// about the new origin, which is OSI's x_proj = R(yaw)·x_osi + position with
+    /// yaw = hdg), and `map_reference` as given.
     pub fn set_road_network(
         &mut self,
         network: &opendrive::RoadNetwork,
@@ -68,7 +74,21 @@ impl GroundTruthBuilder {
             .as_ref()
             .map(|g| g.0.trim().to_string())
             .filter(|s| !s.is_empty());
+        self.proj_frame_offset = network.header().offset.as_ref().map(|o| ProjFrameOffset {
+            position: Some(Vector3d {
+                x: Some(o.x),
+                y: Some(o.y),
+                z: Some(o.z),
+            }),
+            yaw: Some(o.hdg),
+        });
         Ok(())
+    }
+
+    /// Sets `model_reference`, the 3D model of the environment (e.g. the scenario's
+    /// `SceneGraphFile`).
+    pub fn set_model_reference(&mut self, model_reference: Option<&str>) {
+        self.model_reference = model_reference.map(str::to_string);
     }
 
     /// Names the host vehicle (`--osi-host`); `None` returns to the default
@@ -100,7 +120,9 @@ impl GroundTruthBuilder {
                 nanos: Some(nanos),
             }),
             map_reference: self.map_reference.clone(),
+            model_reference: self.model_reference.clone(),
             proj_string: self.proj_string.clone(),
+            proj_frame_offset: self.proj_frame_offset,
             ..Default::default()
         };
         FrameBuilder { owner: self, gt }

@@ -135,8 +135,13 @@ pub fn from_network(
     for (ri, road) in network.roads().iter().enumerate() {
         for (k, section) in road.lane_sections.iter().enumerate() {
             let s0 = section.s;
-            // The last sample stays inside the section: at its end the next one applies.
-            let s1 = (road.lane_section_end(k) - S_TOLERANCE).max(s0);
+            // Inside a road the last sample stays 1 µm before the section end, where the
+            // next section applies; the last section runs to the road's end exactly.
+            let s1 = if k + 1 == road.lane_sections.len() {
+                road.length
+            } else {
+                (road.lane_section_end(k) - S_TOLERANCE).max(s0)
+            };
             if s1 - s0 < S_TOLERANCE {
                 continue;
             }

@@ -156,3 +156,53 @@ fn host_vehicle_by_name_or_none() {
     let frames = run(StaticData::First, Some("Nobody"));
     assert!(frames.iter().all(|f| f.host_vehicle_id.is_none()));
 }
+
+#[test]
+fn header_offset_becomes_proj_frame_offset() {
+    // A one-road network whose header carries <geoReference> and <offset>; OSI 3.8
+    // GroundTruth.proj_frame_offset takes x, y, z as position and hdg as yaw.
+    let xodr = r#"<?xml version="1.0"?>
+<OpenDRIVE>
+  <header revMajor="1" revMinor="6">
+    <geoReference><![CDATA[+proj=utm +zone=32 +ellps=WGS84]]></geoReference>
+    <offset x="500000.0" y="5400000.0" z="12.5" hdg="0.25"/>
+  </header>
+  <road id="7" length="50" junction="-1">
+    <planView><geometry s="0" x="0" y="0" hdg="0" length="50"><line/></geometry></planView>
+    <lanes><laneSection s="0">
+      <center><lane id="0" type="none" level="false"/></center>
+      <right><lane id="-1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+    </laneSection></lanes>
+  </road>
+</OpenDRIVE>"#;
+    let net = opendrive::RoadNetwork::from_str(xodr, std::path::Path::new("offset.xodr")).unwrap();
+    let mut b = osi::ground_truth::GroundTruthBuilder::new(StaticData::First);
+    b.set_road_network(
+        &net,
+        Some("offset.xodr"),
+        &osi::polyline::Sampling::default(),
+    )
+    .unwrap();
+    b.set_model_reference(Some("scene.osgb"));
+    let gt = b.begin_frame(0).finish();
+    let offset = gt.proj_frame_offset.unwrap();
+    let p = offset.position.unwrap();
+    assert_eq!(
+        (p.x, p.y, p.z),
+        (Some(500000.0), Some(5400000.0), Some(12.5))
+    );
+    assert_eq!(offset.yaw, Some(0.25));
+    assert_eq!(
+        gt.proj_string.as_deref(),
+        Some("+proj=utm +zone=32 +ellps=WGS84")
+    );
+    assert_eq!(gt.model_reference.as_deref(), Some("scene.osgb"));
+    // One lane (−1) with two boundaries (centre line, outer border); 50 m straight at
+    // ≤ 10 m steps: 6 points each.
+    assert_eq!(gt.lane.len(), 1);
+    assert_eq!(gt.lane_boundary.len(), 2);
+    let centre = &gt.lane[0].classification.as_ref().unwrap().centerline;
+    assert_eq!(centre.len(), 6);
+    assert_relative_eq!(centre[5].x.unwrap(), 50.0, epsilon = 1e-12);
+    assert_relative_eq!(centre[5].y.unwrap(), -1.75, epsilon = 1e-12);
+}
