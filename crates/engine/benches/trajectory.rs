@@ -4,60 +4,20 @@
 //! multi_intersections.xodr (63 roads, 5 junctions) with each strategy.
 
 use std::hint::black_box;
-use std::path::Path;
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use engine::position::{EntityQuery, EntityView};
 use engine::routing::{plan_route, RoutingOptions};
 use engine::trajectory::{build, Trajectory};
-use opendrive::RoadNetwork;
 use scenario::{
-    Clothoid, ControlPoint, Nurbs, Position, PositionKind, Route, RouteStrategy, Shape, SourcePos,
-    Vertex, Waypoint,
+    Clothoid, ControlPoint, Nurbs, Position, PositionKind, Route, RouteStrategy, Shape, Vertex,
+    Waypoint,
 };
 
-/// A road network and no entities.
-struct Roads(RoadNetwork);
+#[path = "../tests/trajectory_support/mod.rs"]
+mod support;
 
-impl EntityQuery for Roads {
-    fn entity(&self, _: &str) -> Option<EntityView<'_>> {
-        None
-    }
-    fn entities(&self) -> Box<dyn Iterator<Item = EntityView<'_>> + '_> {
-        Box::new(std::iter::empty())
-    }
-    fn road_network(&self) -> &RoadNetwork {
-        &self.0
-    }
-}
-
-fn roads(rel: &str) -> Roads {
-    let path = format!(
-        "{}/../../../shared/corpus/esmini/xodr/{rel}",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    // The corpus is part of the benchmark's fixture.
-    Roads(RoadNetwork::from_file(Path::new(&path)).expect("corpus road network loads"))
-}
-
-fn pos() -> SourcePos {
-    SourcePos::start_of(std::sync::Arc::from(Path::new("bench.xosc")))
-}
-
-fn world(x: f64, y: f64) -> Position {
-    Position {
-        kind: PositionKind::World {
-            x,
-            y,
-            z: Some(0.0),
-            h: Some(0.0),
-            p: None,
-            r: None,
-        },
-        pos: pos(),
-    }
-}
+use support::{corpus as roads, here as pos, world, Roads};
 
 /// 40 points on a sine wave of amplitude 20 m and wavelength 200 m, 10 m apart in x.
 fn wave() -> Vec<(f64, f64)> {
@@ -102,7 +62,7 @@ fn trajectory(shape: Shape, ctx: &Roads) -> Trajectory {
 }
 
 fn shapes(c: &mut Criterion) {
-    let ctx = roads("straight_500m.xodr");
+    let ctx = roads("esmini/xodr/straight_500m.xodr");
     let mut g = c.benchmark_group("trajectory");
     g.sample_size(10).measurement_time(Duration::from_secs(2));
     g.bench_function("build_nurbs_40_cubic", |b| {
@@ -169,7 +129,7 @@ fn lane(road: &str, s: f64) -> Waypoint {
 }
 
 fn routes(c: &mut Criterion) {
-    let ctx = roads("multi_intersections.xodr");
+    let ctx = roads("esmini/xodr/multi_intersections.xodr");
     let mut g = c.benchmark_group("routing");
     g.sample_size(10).measurement_time(Duration::from_secs(2));
     for strategy in [

@@ -226,3 +226,32 @@ fn rational_quadratic_nurbs_is_an_exact_circle() {
         assert!((p.curvature - 0.01).abs() < 1e-8, "{p:?}");
     }
 }
+
+#[test]
+fn nurbs_with_a_cusp_stays_finite() {
+    // Quadratic B-spline on (0,0), (10,0), (10,0), (20,0), knots (0,0,0,1,2,2,2): every point
+    // lies on the x-axis between 0 and 20 and x(u) is non-decreasing, so the curve is the
+    // segment [0, 20] run once, with speed 0 where the doubled control point pulls it to a
+    // stop. Length 20; the point at s is (s, 0).
+    let t = built(
+        nurbs(
+            3,
+            &[
+                (0.0, 0.0, None, None),
+                (10.0, 0.0, None, None),
+                (10.0, 0.0, None, None),
+                (20.0, 0.0, None, None),
+            ],
+            &[0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0],
+        ),
+        false,
+    );
+    assert!((t.length() - 20.0).abs() < 1e-6, "{}", t.length());
+    for s in [0.0, 5.0, 10.0, 15.0, 20.0] {
+        let p = t.eval(s);
+        assert!((p.x - s).abs() < 1e-6 && p.y.abs() < 1e-12, "{p:?}");
+    }
+    // NaN and out-of-range arc lengths are clamped, never a panic.
+    assert!(t.eval(f64::NAN).x.abs() < 1e-12);
+    assert!((t.eval(1e300).x - 20.0).abs() < 1e-6);
+}

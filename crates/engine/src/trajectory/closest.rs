@@ -2,7 +2,7 @@
 //! `initialDistanceOffset` and TrajectoryFollowingMode `follow`, OpenSCENARIO 1.3 §7.6.5 and
 //! XSD `TrajectoryFollowingMode`), measured horizontally.
 //!
-//! Method: the horizontal distance is sampled every [`SCAN_STEP`] (at least 64 samples), and
+//! Method: the horizontal distance is sampled every [`SCAN_STEP`] (64 to 100 000 samples), and
 //! the best sample's neighbourhood of ± one step is searched by golden sections, and the foot
 //! point polished by Newton's method on the tangential offset to `opendrive::SOLVER_TOLERANCE`. The answer is the global minimum unless two branches of the
 //! trajectory come within one step of the position at distances differing by less than the
@@ -14,6 +14,8 @@ use super::{Trajectory, TrajectoryPoint};
 
 /// Largest arc-length step of the coarse scan (m).
 pub const SCAN_STEP: Real = 0.5;
+/// Most samples of the coarse scan (a trajectory longer than 50 km is scanned more coarsely).
+const MAX_SAMPLES: usize = 100_000;
 
 /// The point of a trajectory closest to a position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -31,7 +33,7 @@ impl Trajectory {
     /// The point closest (horizontally) to (x, y); see the module doc for the method.
     pub fn closest(&self, x: Real, y: Real) -> Closest {
         let length = self.length();
-        let samples = ((length / SCAN_STEP).ceil() as usize).max(64);
+        let samples = ((length / SCAN_STEP).ceil() as usize).clamp(64, MAX_SAMPLES);
         let step = length / samples as Real;
         let d2 = |s: Real| {
             let p = self.eval(s);

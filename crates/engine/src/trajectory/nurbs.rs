@@ -10,7 +10,7 @@
 //!
 //! Arc length: s(u) = ∫|C'_xy| du, tabulated at build time by adaptive 5-point
 //! Gauss–Legendre quadrature: an interval is accepted when its one-panel and two-panel sums
-//! differ by less than [`ARC_LENGTH_TOLERANCE`], else halved (at most 24 times). The table's
+//! differ by less than [`ARC_LENGTH_TOLERANCE`], else halved (at most 12 times). The table's
 //! error is therefore of the order of that tolerance per interval. s → u inverts the table by
 //! Newton's method on the interval holding s, safeguarded by bisection, to
 //! `opendrive::SOLVER_TOLERANCE`.
@@ -22,8 +22,10 @@ use super::TrajectoryPoint;
 
 /// Accepted difference (m) between the one- and two-panel quadrature of one table interval.
 pub const ARC_LENGTH_TOLERANCE: Real = 1e-10;
-/// Deepest halving of a knot span when building the arc-length table.
-const MAX_DEPTH: u32 = 24;
+/// Deepest halving of a start interval when building the arc-length table (at most 2¹²
+/// leaves each): bounds the work on curves whose speed has a kink (a cusp where control
+/// points coincide), where the quadrature converges slowly.
+const MAX_DEPTH: u32 = 12;
 /// Intervals each knot span starts with before adaptive halving.
 const START_PANELS: usize = 4;
 

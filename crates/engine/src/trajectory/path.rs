@@ -112,7 +112,9 @@ impl Trajectory {
         self.length
     }
 
-    /// The point at arc length `s`, clamped to [0, length].
+    /// The point at arc length `s`, clamped to [0, length]. At a joint between two pieces
+    /// (polyline vertex, spline segment start) the later piece answers, so the heading there
+    /// is the next piece's (they differ at a polyline corner or a segment's `hOffset`).
     pub fn eval(&self, s: Real) -> TrajectoryPoint {
         let s = if s.is_nan() {
             0.0
