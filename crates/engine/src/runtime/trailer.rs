@@ -50,6 +50,9 @@ pub(crate) struct Link {
     align: bool,
     /// Hitch position of the previous step, once placed.
     last_hitch: Option<(Real, Real)>,
+    /// The trailer's pose after the previous step (the default controller may have moved the
+    /// entity in between).
+    last_pose: Pose,
     /// The trailer's odometer after the previous step.
     odometer: Real,
 }
@@ -143,6 +146,7 @@ impl Trailers {
             trailer,
             align,
             last_hitch: None,
+            last_pose: Pose::default(),
             odometer: 0.0,
         });
         Ok(())
@@ -170,6 +174,24 @@ impl Trailers {
         let mut order = (0..self.links.len()).collect::<Vec<_>>();
         order.sort_by_key(|&i| depth(&self.links[i]));
         order
+    }
+}
+
+impl World {
+    /// The trailer entity `tow` pulls now, if any (§7.2.2.6).
+    pub fn trailer_of(&self, tow: EntityId) -> Option<EntityId> {
+        self.trailers.trailer_of(tow)
+    }
+
+    /// The entity pulling `trailer` now, if any.
+    pub fn tow_of(&self, trailer: EntityId) -> Option<EntityId> {
+        self.trailers.tow_of(trailer)
+    }
+
+    /// TrailerHitch and TrailerCoupler dx of vehicle `id` (m), where defined.
+    pub fn trailer_joints(&self, id: EntityId) -> (Option<Real>, Option<Real>) {
+        let j = self.trailers.joints.get(&id).copied().unwrap_or_default();
+        (j.hitch, j.coupler)
     }
 }
 
@@ -277,7 +299,12 @@ fn follow_link(world: &mut World, mut link: Link, dt: Real) -> Option<Link> {
     let (tow_pose, tow_speed) = (tow.pose, tow.speed);
     let hitch = mount_point(&tow_pose, hitch_dx);
     let trailer = world.entity(link.trailer);
-    let (old_pose, old_speed) = (trailer.pose, trailer.speed);
+    let old_pose = if link.last_hitch.is_some() {
+        link.last_pose
+    } else {
+        trailer.pose
+    };
+    let old_speed = trailer.speed;
     let heading = match link.last_hitch {
         Some(from) => tractrix_heading(old_pose.h, from, hitch, l),
         None if link.align || !trailer.placed => tow_pose.h,
@@ -319,5 +346,6 @@ fn follow_link(world: &mut World, mut link: Link, dt: Real) -> Option<Link> {
     }
     link.odometer = e.odometer;
     link.last_hitch = Some(hitch);
+    link.last_pose = pose;
     Some(link)
 }

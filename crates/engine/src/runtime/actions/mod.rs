@@ -19,6 +19,7 @@ mod routing;
 mod speed;
 mod speed_profile;
 mod teleport;
+mod trailer;
 mod variable;
 mod visibility;
 
@@ -224,6 +225,10 @@ impl Host<'_> {
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Routing(r) => self.start_routing(id, r, actor),
+            PrivateAction::Trailer(t) => {
+                trailer::start(self.world, actor, t, pos)?;
+                Ok(Part::Done(ActionStatus::Ended))
+            }
             other => {
                 let name = self.table.slots[id.0 as usize].name.clone();
                 self.events
