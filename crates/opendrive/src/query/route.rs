@@ -88,7 +88,9 @@ struct Label {
 
 impl RoadNetwork {
     /// The shortest route from `from` to `to` (see the module doc for the cost), or `None` if
-    /// either position is unknown or `to` cannot be reached in the driving direction.
+    /// either position is unknown or `to` cannot be reached in the driving direction. Each lane
+    /// section is entered once, so a goal behind the start on the start's own lane section is
+    /// not reached by driving round a loop of the network.
     pub fn route(&self, from: &LanePosition, to: &LanePosition) -> Option<LaneRoute> {
         let start = self.lane_handle(&from.road_id, from.lane_id, from.s)?;
         let goal = self.lane_handle(&to.road_id, to.lane_id, to.s)?;

@@ -3,6 +3,8 @@
 
 use std::path::PathBuf;
 
+use opendrive::{GeometryKind, ParamRange, RoadNetwork};
+
 /// The shared test corpus (read-only), relative to this crate.
 pub fn corpus() -> PathBuf {
     PathBuf::from(concat!(
@@ -51,4 +53,45 @@ pub fn num(field: &str) -> f64 {
     field
         .parse()
         .unwrap_or_else(|_| panic!("reference field {field:?} is not a number"))
+}
+
+/// Simpson steps per paramPoly3 for the arc-length table.
+const STEPS: usize = 1000;
+
+/// The s at which oscsim's linear p equals esmini's arc-length p for road `road` at `s`
+/// (identity off paramPoly3 geometries).
+pub fn esmini_s(net: &RoadNetwork, road: &str, s: f64) -> f64 {
+    let Some(r) = net.road(road) else { return s };
+    let geoms = r.plan_view.geometries();
+    let i = geoms.partition_point(|g| g.s <= s).saturating_sub(1);
+    let g = &geoms[i];
+    let GeometryKind::ParamPoly3(pp) = &g.kind else {
+        return s;
+    };
+    let p_end = match pp.range {
+        ParamRange::ArcLength => g.length,
+        ParamRange::Normalized => 1.0,
+    };
+    let speed = |p: f64| {
+        let du = pp.u[1] + p * (2.0 * pp.u[2] + 3.0 * pp.u[3] * p);
+        let dv = pp.v[1] + p * (2.0 * pp.v[2] + 3.0 * pp.v[3] * p);
+        du.hypot(dv)
+    };
+    // Cumulative arc length at STEPS nodes by Simpson's rule on each step.
+    let h = p_end / STEPS as f64;
+    let mut cum = vec![0.0; STEPS + 1];
+    for k in 0..STEPS {
+        let a = k as f64 * h;
+        cum[k + 1] = cum[k] + h / 6.0 * (speed(a) + 4.0 * speed(a + 0.5 * h) + speed(a + h));
+    }
+    let target = (s - g.s) / g.length * cum[STEPS];
+    let k = cum.partition_point(|&c| c <= target).clamp(1, STEPS);
+    let (c0, c1) = (cum[k - 1], cum[k]);
+    let p = (k - 1) as f64 * h
+        + if c1 > c0 {
+            (target - c0) / (c1 - c0) * h
+        } else {
+            0.0
+        };
+    g.s + p / p_end * g.length
 }
