@@ -27,7 +27,8 @@ pub trait ConditionContext: EntityQuery {
     fn storyboard(&self) -> StateView<'_>;
 
     /// The current value of user-defined value `name` (UserDefinedValueCondition), as the
-    /// runtime's registry of external values holds it; `None` when nothing has been
+    /// runtime's registry of external values holds it (e.g. a
+    /// [`UserValueRegistry`](super::UserValueRegistry)); `None` when nothing has been
     /// registered under that name.
     fn user_defined_value(&self, name: &str) -> Option<Value>;
 

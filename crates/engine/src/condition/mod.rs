@@ -7,6 +7,7 @@
 //! | --- | --- |
 //! | `context` | `ConditionContext`: what a condition may ask the runtime |
 //! | `state` | `ConditionState`: memory of the duration conditions, keyed by condition id |
+//! | `registry` | `UserValueRegistry`: the external values UserDefinedValueCondition reads |
 //! | `error` | `ConditionError`, `ConditionErrorKind` |
 //! | `rule` | XSD `Rule` on numbers (with the equalTo tolerance) and typed values |
 //! | `time_of_day` | xsd:dateTime → seconds since the epoch |
@@ -29,6 +30,7 @@ mod error;
 mod evaluate;
 mod measure;
 mod motion;
+mod registry;
 mod road_state;
 mod rule;
 mod spacing;
@@ -39,6 +41,7 @@ pub use context::ConditionContext;
 pub use error::{ConditionError, ConditionErrorKind};
 pub use evaluate::evaluate;
 pub use motion::{DURATION_TOLERANCE, STAND_STILL_SPEED};
+pub use registry::UserValueRegistry;
 pub use road_state::END_OF_ROAD_TOLERANCE;
 pub use rule::{compare, EQUAL_TOLERANCE};
 pub use state::{ConditionState, ConditionStates};
