@@ -250,3 +250,29 @@ fn the_1_2_spelling_of_traffic_signal_group_state_is_read() {
     assert_eq!(s.warnings.len(), 1, "{:?}", s.warnings);
     assert_eq!((s.warnings[0].pos.line, s.warnings[0].pos.col), (10, 11));
 }
+
+#[test]
+fn a_name_declared_twice_in_one_block_warns_and_the_last_wins() {
+    let path = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus/esmini/xosc/follow_reference.xosc"
+    ));
+    let s = Scenario::load(path).unwrap();
+    // Lines 6 and 9 of follow_reference.xosc both declare lane_change_duration = 2; the
+    // warning points at the second name, line 9, column 35.
+    let w = s
+        .warnings
+        .iter()
+        .find(|w| {
+            w.message
+                .contains("'lane_change_duration' is declared twice")
+        })
+        .unwrap();
+    assert_eq!((w.pos.line, w.pos.col), (9, 35));
+    let n = s
+        .parameter_declarations
+        .iter()
+        .filter(|p| p.name == "lane_change_duration")
+        .count();
+    assert_eq!(n, 2);
+}

@@ -66,6 +66,19 @@ pub(crate) fn declare<'a>(
         });
     }
     let names: Vec<String> = pending.iter().map(|p| p.name.clone()).collect();
+    // Names should be unique in one block, but esmini's corpus repeats some; the last
+    // declaration wins (as in esmini), with a warning.
+    for dup in (1..names.len()).filter(|&i| names[..i].contains(&names[i])) {
+        let node = pending[dup].node;
+        let pos = ctx
+            .raw_attr(node, "name")
+            .map_or_else(|| ctx.pos(node), |a| ctx.attr_pos(&a));
+        let message = format!(
+            "parameter '{}' is declared twice in one ParameterDeclarations; the last declaration wins",
+            names[dup]
+        );
+        ctx.warnings.push(Warning { message, pos });
+    }
     for (i, p) in pending.iter_mut().enumerate() {
         if p.given.is_none() {
             let raw = ctx
@@ -76,7 +89,7 @@ pub(crate) fn declare<'a>(
             // is one (`Speed = ${$Speed * 2}` in a Story); otherwise it is a self-reference.
             let outer = ctx.lookup(&p.name).is_some();
             p.deps = referenced_names(raw)
-                .filter_map(|r| names.iter().position(|n| n == r))
+                .filter_map(|r| names.iter().rposition(|n| n == r))
                 .filter(|&j| !(j == i && outer))
                 .collect();
         }
