@@ -72,8 +72,9 @@ fn expand(
             .map(|&s| entities.entity_selections[s].name.clone())
             .collect();
         cycle.push(selection.name.clone());
-        // The selection that refers back is the last one entered.
-        let closing = &entities.entity_selections[stack[stack.len() - 1]];
+        // The selection that refers back is the last one entered (`stack` holds `i`, so it is
+        // not empty).
+        let closing = &entities.entity_selections[stack.last().copied().unwrap_or(i)];
         return Err(Error::new(
             ErrorKind::SelectionCycle { cycle },
             closing.pos.clone(),
