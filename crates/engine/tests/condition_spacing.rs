@@ -235,3 +235,33 @@ fn oncoming_traffic_in_the_next_lane_has_no_box_collision() {
         )
     ));
 }
+
+#[test]
+fn assigned_route_distance_runs_along_the_route() {
+    use engine::domain::{Route, RouteStretch};
+    use scenario::RoutingAlgorithm;
+    let mut w = world();
+    // Ego's route runs the whole road towards −s; Ego on lane 1 at x = 80 heading −x, Lead at
+    // x = 50 on lane 1: 30 m further along the route (route s 420 vs 450).
+    w.place_on_lane("Ego", "1", 1, 80.0, false);
+    w.place_on_lane("Lead", "1", 1, 50.0, false);
+    let route = Route::new(
+        &w.network,
+        vec![RouteStretch {
+            road_id: "1".into(),
+            lane_id: None,
+            s_start: 500.0,
+            s_end: 0.0,
+        }],
+    )
+    .unwrap();
+    w.entity_mut("Ego").route = Some(route);
+    let on_route = |freespace| DistanceMeasure {
+        routing_algorithm: Some(RoutingAlgorithm::AssignedRoute),
+        ..measure(freespace, Some(Road), Some(Longitudinal))
+    };
+    assert!(eval(&w, &rel_distance(on_route(false), 30.0)));
+    // Boxes: Ego's front reaches 3.65 m ahead of its reference point, Lead's rear 0.85 m
+    // behind its own: 30 − 3.65 − 0.85 = 25.5.
+    assert!(eval(&w, &rel_distance(on_route(true), 25.5)));
+}

@@ -17,17 +17,21 @@
 //! | trajectory | not supported (the entity's trajectory is not part of `EntityView`) | not supported |
 //!
 //! Lane coordinates are measured as road coordinates (along the reference line, not the lane
-//! centre line), and every `routingAlgorithm` uses the shortest path along roads: both noted
-//! in docs/conformance.md. A measurement that needs a road position fails softly (`None`,
+//! centre line). `routingAlgorithm="assignedRoute"` measures longitudinal road and lane
+//! distances along the triggering entity's assigned route (§8.7.4.1.1 distance_along_route()
+//! of both, reference points; with `freespace` the boxes' extents ahead of / behind the
+//! reference points are taken off, 0 when they overlap); without an assigned route, and for
+//! every other algorithm, the shortest path along roads is used (the only one the road model
+//! offers). A measurement that needs a road position fails softly (`None`,
 //! the condition is false) while an entity is off the roads or the roads are not joined.
 
 use opendrive::{Pose, Real, RoadNetwork};
-use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType};
+use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, RoutingAlgorithm};
 
 use super::ConditionErrorKind;
 use crate::domain::{
     BoundingBox, DistanceDirection, DistanceMode, MovableObject, Physical, PhysicalObject,
-    TrafficParticipant,
+    RouteDistanceEnum, TrafficParticipant,
 };
 use crate::position::{local_to_world, EntityView};
 
@@ -150,6 +154,13 @@ pub(crate) fn distance(
                 ))
             }
         },
+        CoordinateSystem::Road | CoordinateSystem::Lane
+            if ty == RelativeDistanceType::Longitudinal
+                && measure.routing_algorithm == Some(RoutingAlgorithm::AssignedRoute)
+                && from.route.is_some() =>
+        {
+            Ok(along_assigned_route(network, from, &a, &b, free))
+        }
         CoordinateSystem::Road | CoordinateSystem::Lane => {
             // space_gap is positive when the caller is ahead along +s (left along +t); turned
             // here to "target ahead / left of the triggering entity's travel".
@@ -174,6 +185,39 @@ pub(crate) fn distance(
             found: "another coordinate system",
         }),
     }
+}
+
+/// Longitudinal distance from `a` to `b` along `from`'s assigned route (positive when `b` is
+/// further along it); `None` when either is off the route.
+fn along_assigned_route(
+    network: &RoadNetwork,
+    from: &EntityView<'_>,
+    a: &TrafficParticipant,
+    b: &TrafficParticipant,
+    freespace: bool,
+) -> Option<Real> {
+    let route = from.route?;
+    let start = RouteDistanceEnum::FromStart;
+    let sa = a.distance_along_route(network, route, start).ok()?;
+    let sb = b.distance_along_route(network, route, start).ok()?;
+    let d = sb - sa;
+    if !freespace {
+        return Some(d);
+    }
+    // Extents of the boxes ahead of (front) and behind (rear) their reference points.
+    let front = |p: &TrafficParticipant| {
+        let bb = &p.physical_object().bounding_box;
+        bb.center().x + 0.5 * bb.length()
+    };
+    let rear = |p: &TrafficParticipant| {
+        let bb = &p.physical_object().bounding_box;
+        0.5 * bb.length() - bb.center().x
+    };
+    Some(if d >= 0.0 {
+        (d - front(a) - rear(b)).max(0.0)
+    } else {
+        (d + rear(a) + front(b)).min(0.0)
+    })
 }
 
 /// The rate of change of |distance| (m/s) under the same measure, by a central difference of
