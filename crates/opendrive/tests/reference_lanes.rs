@@ -87,14 +87,9 @@ fn exception(file: &str, s: f64) -> Option<(f64, f64)> {
 fn lane_centres_match_esmini_reference_on_every_corpus_road_file() {
     let mut failures = Vec::new();
     let mut checked = 0usize;
-    for (xodr, stem) in road_files() {
-        let file = stem
-            .file_name()
-            .unwrap_or_default()
-            .to_string_lossy()
-            .into_owned();
-        let net = RoadNetwork::from_file(&xodr).unwrap_or_else(|e| panic!("{e}"));
-        let rows = csv_rows(&stem.with_extension("csv"));
+    for rf in road_files() {
+        let (file, net) = (rf.name.clone(), rf.load());
+        let rows = csv_rows(&rf.stem.with_extension("csv"));
         let mut worst = (0.0f64, 0.0f64);
         for row in rows {
             let (road, s, lane) = (

@@ -50,14 +50,9 @@ fn lookups_match_the_exact_inverse_of_the_reference() {
     let mut failures = Vec::new();
     let mut compared = 0;
     let mut other_road = 0;
-    for (xodr, stem) in road_files() {
-        let file = stem
-            .file_name()
-            .unwrap_or_default()
-            .to_string_lossy()
-            .into_owned();
-        let net = RoadNetwork::from_file(&xodr).unwrap_or_else(|e| panic!("{e}"));
-        for row in csv_rows(&stem.with_extension("lookup.csv")) {
+    for rf in road_files() {
+        let (file, net) = (rf.name.clone(), rf.load());
+        for row in csv_rows(&rf.stem.with_extension("lookup.csv")) {
             let (x, y, h) = (num(&row[0]), num(&row[1]), num(&row[2]));
             let Some(found) = net.locate(x, y, Some(h)) else {
                 failures.push(format!("{file}: no road found at {x},{y}"));
@@ -137,8 +132,8 @@ fn world_road_world_round_trip_within_a_micrometre_on_every_corpus_road() {
     let mut worst = 0.0f64;
     let mut failures = Vec::new();
     let mut n = 0;
-    for (xodr, _) in road_files() {
-        let net = RoadNetwork::from_file(&xodr).unwrap_or_else(|e| panic!("{e}"));
+    for rf in road_files() {
+        let net = rf.load();
         for road in net.roads() {
             let steps = (road.length / 2.0).ceil() as usize;
             for k in 0..=steps {
@@ -154,11 +149,8 @@ fn world_road_world_round_trip_within_a_micrometre_on_every_corpus_road() {
                         };
                         let t = span.center() + offset;
                         let Some(found) = net.locate_on_road(&road.id, p.x, p.y) else {
-                            failures.push(format!(
-                                "{}: {} s {s} t {t}: not found",
-                                xodr.display(),
-                                road.id
-                            ));
+                            failures
+                                .push(format!("{}: {} s {s} t {t}: not found", rf.name, road.id));
                             continue;
                         };
                         let back = road
@@ -173,10 +165,7 @@ fn world_road_world_round_trip_within_a_micrometre_on_every_corpus_road() {
                         if d > ROUND_TRIP_TOL && failures.len() < 30 {
                             failures.push(format!(
                                 "{}: road {} s {s} t {t} → s {} t {} (Δ {d:.2e})",
-                                xodr.display(),
-                                road.id,
-                                found.s,
-                                found.t
+                                rf.name, road.id, found.s, found.t
                             ));
                         }
                     }

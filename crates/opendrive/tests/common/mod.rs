@@ -13,8 +13,25 @@ pub fn corpus() -> PathBuf {
     ))
 }
 
-/// Every road file of the corpus with its reference stem: (xodr path, reference path stem).
-pub fn road_files() -> Vec<(PathBuf, PathBuf)> {
+/// A road file of the corpus and its reference data.
+pub struct RoadFile {
+    /// File stem, e.g. `mixed_geometry`.
+    pub name: String,
+    /// The `.xodr` file.
+    pub xodr: PathBuf,
+    /// Reference path without extension (`.csv`, `.lookup.csv` are added).
+    pub stem: PathBuf,
+}
+
+impl RoadFile {
+    /// Loads the network (panics with the loader's message: corpus files must load).
+    pub fn load(&self) -> RoadNetwork {
+        RoadNetwork::from_file(&self.xodr).unwrap_or_else(|e| panic!("{e}"))
+    }
+}
+
+/// Every road file of the corpus (`esmini/xodr`, `generated/xodr`), sorted by name.
+pub fn road_files() -> Vec<RoadFile> {
     let mut out = Vec::new();
     for group in ["esmini", "generated"] {
         let dir = corpus().join(group).join("xodr");
@@ -24,15 +41,13 @@ pub fn road_files() -> Vec<(PathBuf, PathBuf)> {
             .filter(|p| p.extension().is_some_and(|x| x == "xodr"))
             .collect();
         names.sort();
-        for p in names {
-            let stem = p
+        for xodr in names {
+            let name = xodr
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_default();
-            out.push((
-                p,
-                corpus().join("reference/opendrive").join(group).join(stem),
-            ));
+            let stem = corpus().join("reference/opendrive").join(group).join(&name);
+            out.push(RoadFile { name, xodr, stem });
         }
     }
     out
