@@ -6,6 +6,5 @@
 //! [`prost::Message::encode`] produces are the standard's wire format. Optional scalar
 //! fields are `Option<_>` (proto2 presence), enums are `Option<i32>` with typed accessors.
 #![allow(missing_docs)] // generated code: each message and field carries the proto comment, enum values do not
-#![allow(clippy::doc_lazy_continuation, clippy::large_enum_variant)]
 
 include!(concat!(env!("OUT_DIR"), "/osi3.rs"));
