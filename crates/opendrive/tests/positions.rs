@@ -161,3 +161,13 @@ fn lane_offset_and_lane_height() {
     // Heading of the centre lane: atan(d offset/ds) = atan(0.01) on a straight road.
     assert!((c.h - 0.01_f64.atan()).abs() < 1e-15);
 }
+
+#[test]
+fn network_can_be_shared_between_threads() {
+    // Simulations run in parallel on one loaded network: it must be Send + Sync.
+    fn shared<T: Send + Sync>(_: &T) {}
+    let net = road("<line/>", "", LANE_4M);
+    shared(&net);
+    let p = std::thread::scope(|sc| sc.spawn(|| net.road_pose("r", 1.0, 0.0)).join());
+    assert!(p.is_ok_and(|p| p.is_ok_and(|p| (p.x - 1.0).abs() < 1e-15)));
+}

@@ -2,7 +2,9 @@
 //! reference-line and local coordinate systems, §11 lanes for the lane centre and lane height).
 //!
 //! Heading of a lane pose: the true tangent of the curve t(s) = lane centre + offset,
-//! h = road heading + atan2(dt/ds, 1 − κ·t), κ the reference line's curvature. esmini uses
+//! h = road heading + atan2(dt/ds, 1 − κ·t), κ the reference line's curvature (in the road
+//! plane; on banked roads the horizontal projection's small extra turn from a changing roll is
+//! not included). esmini uses
 //! h = road heading + atan(dt/ds) instead; the reference tests reproduce that convention in the
 //! comparison only. Pitch and roll of a lane pose are the road's.
 
