@@ -9,7 +9,9 @@
 //!   with times they are a stop.
 //! * `Clothoid`: starts at its Position's point and heading; times only when both
 //!   `startTime` and `stopTime` are given.
-//! * `ClothoidSpline` (1.3): the first segment needs `PositionStart`; a later segment starts
+//! * `ClothoidSpline` (1.3): the first segment starts at its `PositionStart`, or without one
+//!   where the actor stands (esmini's reading, which the corpus scenario
+//!   lane-change_clothoid_spline_based_trajectory.xosc relies on); a later segment starts
 //!   at its own `PositionStart` if it has one, else where the previous one ended; its heading
 //!   is that start's heading plus `hOffset` (default 0). Times when every segment has
 //!   `timeStart` and the spline has `timeEnd`.
@@ -19,7 +21,7 @@
 //! * `closed` has no effect on Clothoid, ClothoidSpline and Nurbs (their geometry is
 //!   complete as written).
 
-use opendrive::{Real, LENGTH_EPSILON};
+use opendrive::{Pose, Real, LENGTH_EPSILON};
 use scenario::{Position, Shape, SourcePos};
 
 use super::bspline::HPoint;
@@ -59,9 +61,22 @@ fn point<Q: EntityQuery + ?Sized>(
 /// Builds the runtime trajectory of `trajectory`, resolving its positions through `ctx`.
 /// `pos` names the element that uses it (FollowTrajectoryAction, TrajectoryPosition) for
 /// errors about the shape as a whole; errors about one point name that point's Position.
+/// A ClothoidSpline whose first segment has no PositionStart is an error here; see
+/// [`build_for_actor`].
 pub fn build<Q: EntityQuery + ?Sized>(
     trajectory: &scenario::Trajectory,
     ctx: &Q,
+    pos: &SourcePos,
+) -> Result<Trajectory> {
+    build_for_actor(trajectory, ctx, None, pos)
+}
+
+/// As [`build`], for the trajectory of a FollowTrajectoryAction whose actor stands at
+/// `actor`: a ClothoidSpline's first segment without PositionStart starts there.
+pub fn build_for_actor<Q: EntityQuery + ?Sized>(
+    trajectory: &scenario::Trajectory,
+    ctx: &Q,
+    actor: Option<&Pose>,
     pos: &SourcePos,
 ) -> Result<Trajectory> {
     let name = &trajectory.name;
@@ -88,7 +103,7 @@ pub fn build<Q: EntityQuery + ?Sized>(
             (ShapeKind::Clothoid, vec![piece], times)
         }
         Shape::ClothoidSpline(spline) => {
-            let (pieces, times) = clothoid_spline(spline, ctx, pos)?;
+            let (pieces, times) = clothoid_spline(spline, ctx, actor, pos)?;
             (ShapeKind::ClothoidSpline, pieces, times)
         }
         Shape::Nurbs(n) => {
@@ -231,6 +246,7 @@ fn clothoid<Q: EntityQuery + ?Sized>(
 fn clothoid_spline<Q: EntityQuery + ?Sized>(
     spline: &scenario::ClothoidSpline,
     ctx: &Q,
+    actor: Option<&Pose>,
     pos: &SourcePos,
 ) -> Result<(Vec<Piece>, Option<TimeTable>)> {
     if spline.segments.is_empty() {
@@ -259,6 +275,10 @@ fn clothoid_spline<Q: EntityQuery + ?Sized>(
                 (p.xyz, p.heading)
             }
             (None, Some(e)) => e,
+            (None, None) if actor.is_some() => {
+                let a = actor.copied().unwrap_or_default();
+                ([a.x, a.y, a.z], a.h)
+            }
             (None, None) => {
                 return Err(TrajectoryError::new(
                     TrajectoryErrorKind::MissingPositionStart,

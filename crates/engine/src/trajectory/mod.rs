@@ -31,7 +31,7 @@ mod point;
 mod time_table;
 mod timing;
 
-pub use build::build;
+pub use build::{build, build_for_actor};
 pub use closest::Closest;
 pub use closest::SCAN_STEP;
 pub use error::{TrajectoryError, TrajectoryErrorKind};

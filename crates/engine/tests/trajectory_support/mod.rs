@@ -182,3 +182,30 @@ pub fn route(positions: Vec<Position>, strategy: RouteStrategy, closed: bool) ->
         catalog: None,
     }
 }
+
+/// A road network with one vehicle, "Car", at `pose`.
+pub struct WithCar {
+    pub roads: RoadNetwork,
+    pub pose: opendrive::Pose,
+}
+
+impl EntityQuery for WithCar {
+    fn entity(&self, name: &str) -> Option<EntityView<'_>> {
+        // A 4.5 × 1.8 × 1.5 m box 1.4 m ahead of the rear axle: constant, valid dimensions.
+        let bb = engine::domain::BoundingBox::new(
+            engine::domain::Position3d::new(1.4, 0.0, 0.75),
+            4.5,
+            1.8,
+            1.5,
+        )
+        .expect("valid box");
+        (name == "Car")
+            .then(|| EntityView::new("Car", scenario::ObjectType::Vehicle, self.pose, bb))
+    }
+    fn entities(&self) -> Box<dyn Iterator<Item = EntityView<'_>> + '_> {
+        Box::new(self.entity("Car").into_iter())
+    }
+    fn road_network(&self) -> &RoadNetwork {
+        &self.roads
+    }
+}
