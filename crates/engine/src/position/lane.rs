@@ -15,8 +15,10 @@
 //!   by dLane at that s. The arc length is summed over chords of `LANE_STEP` of s (chord
 //!   error below 1e-8 relative on a 100 m radius).
 //!
-//! Both stay on the entity's road (connecting roads are not followed yet; an s beyond the
-//! road is an error). Orientation: relative headings count from the target lane's driving
+//! With `ds` the walk follows the entity's lane through lane sections and onto connecting
+//! roads (`lane_walk`, the 1.3 continuation rule), and dLane is counted on the road reached
+//! (negated where that road runs against the start road). `dsLane` stays on the entity's road
+//! (an s beyond it is an error). Orientation: relative headings count from the target lane's driving
 //! direction (see `orientation`).
 
 use std::f64::consts::PI;
@@ -25,6 +27,7 @@ use opendrive::{Direction, Pose, Real, RoadNetwork};
 use scenario::{Orientation, SourcePos};
 
 use super::error::road_error;
+use super::lane_walk::walk;
 use super::orientation::on_surface;
 use super::world::{entity, finite};
 use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
@@ -118,25 +121,32 @@ pub(crate) fn relative_lane<Q: EntityQuery + ?Sized>(
     let rp = e.road_position.ok_or_else(|| {
         PositionError::new(PositionErrorKind::EntityOffRoad(entity_ref.into()), pos)
     })?;
-    let s = match along {
+    let (road_id, from_lane, s, d_lane) = match along {
         Along::Road(ds) => {
             finite(&[("ds", ds)], pos)?;
-            rp.s + ds
+            match walk(network, &rp.road_id, rp.lane_id, rp.s, ds) {
+                Some(end) => {
+                    let d = if end.flipped { -d_lane } else { d_lane };
+                    (end.road_id, end.lane_id, end.s, d)
+                }
+                None => (rp.road_id.clone(), rp.lane_id, rp.s + ds, d_lane),
+            }
         }
         Along::Lane(ds_lane) => {
             finite(&[("dsLane", ds_lane)], pos)?;
             let forward = rp.relative_heading.abs() <= PI / 2.0;
-            s_after_lane_distance(network, &rp.road_id, rp.lane_id, rp.s, ds_lane, forward)
-                .map_err(|e| road_error(e, pos))?
+            let s = s_after_lane_distance(network, &rp.road_id, rp.lane_id, rp.s, ds_lane, forward)
+                .map_err(|e| road_error(e, pos))?;
+            (rp.road_id.clone(), rp.lane_id, s, d_lane)
         }
     };
-    let target = add_lanes(rp.lane_id, d_lane);
-    if let Err(err) = network.lane_boundaries(&rp.road_id, target, s) {
+    let target = add_lanes(from_lane, d_lane);
+    if let Err(err) = network.lane_boundaries(&road_id, target, s) {
         return Err(match err.kind() {
             opendrive::ErrorKind::NoSuchLane { .. } => PositionError::new(
                 PositionErrorKind::NoTargetLane {
-                    road: rp.road_id.clone(),
-                    from: rp.lane_id,
+                    road: road_id.clone(),
+                    from: from_lane,
                     d_lane,
                     lane: target,
                     s,
@@ -146,7 +156,7 @@ pub(crate) fn relative_lane<Q: EntityQuery + ?Sized>(
             _ => road_error(err, pos),
         });
     }
-    lane(network, &rp.road_id, target, [s, offset], orientation, pos)
+    lane(network, &road_id, target, [s, offset], orientation, pos)
 }
 
 /// The s reached after travelling `distance` m (signed: negative goes the other way) along

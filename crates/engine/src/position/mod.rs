@@ -12,12 +12,14 @@
 //! | `world` | WorldPosition, RelativeWorldPosition, RelativeObjectPosition |
 //! | `road` | RoadPosition, RelativeRoadPosition |
 //! | `lane` | LanePosition, RelativeLanePosition (ds and dsLane) |
+//! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
 //! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) |
 //! | `trajectory` | TrajectoryPosition on a polyline |
 //! | `resolve` | `resolve`: the dispatcher; GeoPosition |
 
 mod error;
 mod lane;
+mod lane_walk;
 mod orientation;
 mod query;
 mod resolve;

@@ -3,9 +3,10 @@
 //!
 //! * RoadPosition: the point (s, t) of road `roadId` (OpenDRIVE s along the reference line,
 //!   t positive left), on the road surface.
-//! * RelativeRoadPosition: the reference entity's (s, t) on its road plus (ds, dt), on the
-//!   same road. The 1.3 text lets the target continue on a connecting road; oscsim does not
-//!   follow road links here yet and reports an s outside the road as an error.
+//! * RelativeRoadPosition: the reference entity's (s, t) on its road plus (ds, dt). Beyond the
+//!   road's end the reference line continues on the road that the entity's lane continues on
+//!   (`lane_walk`); where that road runs the other way, t changes sign so that the point stays
+//!   on the same side. Where nothing continues, s outside the road is an error.
 //!
 //! Orientation: relative headings count from the road's s-tangent at the target
 //! (`orientation::on_surface`).
@@ -14,6 +15,7 @@ use opendrive::{Real, RoadNetwork};
 use scenario::{Orientation, SourcePos};
 
 use super::error::road_error;
+use super::lane_walk::walk;
 use super::orientation::on_surface;
 use super::world::{entity, finite};
 use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
@@ -53,8 +55,18 @@ pub(crate) fn relative_road<Q: EntityQuery + ?Sized>(
     let rp = e.road_position.ok_or_else(|| {
         PositionError::new(PositionErrorKind::EntityOffRoad(entity_ref.into()), pos)
     })?;
+    let network = ctx.road_network();
+    let inside = network
+        .road(&rp.road_id)
+        .is_some_and(|r| (0.0..=r.length).contains(&(rp.s + ds)));
+    if !inside {
+        if let Some(end) = walk(network, &rp.road_id, rp.lane_id, rp.s, ds) {
+            let t = if end.flipped { -(rp.t + dt) } else { rp.t + dt };
+            return road(network, &end.road_id, [end.s, t], orientation, pos);
+        }
+    }
     road(
-        ctx.road_network(),
+        network,
         &rp.road_id,
         [rp.s + ds, rp.t + dt],
         orientation,
