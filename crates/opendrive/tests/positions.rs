@@ -171,3 +171,33 @@ fn network_can_be_shared_between_threads() {
     let p = std::thread::scope(|sc| sc.spawn(|| net.road_pose("r", 1.0, 0.0)).join());
     assert!(p.is_ok_and(|p| p.is_ok_and(|p| (p.x - 1.0).abs() < 1e-15)));
 }
+
+#[test]
+fn round_trip_at_georeferenced_coordinates() {
+    // UTM-sized coordinates (the OpenDRIVE 1.8 §9.6 example sits at x ≈ 6.8e5, y ≈ 5.4e6): f64
+    // resolves about 1e-9 m there, and the round trip must still hold to 1e-6 m.
+    let text = r#"<OpenDRIVE><header/><road id="g" length="65.65893957370" junction="-1"><planView>
+<geometry s="0" x="6.804539427645e+05" y="5.422483642942e+06" hdg="5.287405485081e+00" length="6.565893957370e+01">
+<paramPoly3 aU="0" bU="1" cU="-4.666602734948e-09" dU="-2.629787927644e-08" aV="0" bV="1.665334536938e-16"
+ cV="-1.987729787588e-04" dV="-1.317158625579e-09" pRange="arcLength"/></geometry></planView>
+<lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>
+<lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes>
+</road></OpenDRIVE>"#;
+    let net = RoadNetwork::from_str(text, Path::new("utm.xodr")).unwrap_or_else(|e| panic!("{e}"));
+    for s in [0.0, 10.0, 33.3, 65.0] {
+        let p = net
+            .lane_pose("g", -1, s, 0.3)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let found = net
+            .locate(p.x, p.y, Some(p.h))
+            .unwrap_or_else(|| panic!("not found"));
+        let back = net
+            .road_pose("g", found.s, found.t)
+            .unwrap_or_else(|e| panic!("{e}"));
+        assert!((back.x - p.x).hypot(back.y - p.y) < 1e-6, "{found:?}");
+        assert!(
+            (found.s - s).abs() < 1e-6 && found.lane_id == -1 && (found.offset - 0.3).abs() < 1e-6,
+            "{found:?}"
+        );
+    }
+}

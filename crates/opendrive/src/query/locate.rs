@@ -73,7 +73,10 @@ fn project(road: &Road, px: Real, py: Real, lo: Real, hi: Real) -> Option<(Real,
         let moved = (s_new - s).abs();
         s = s_new;
         t += dt;
-        if moved < SOLVER_TOLERANCE && dt.abs() < SOLVER_TOLERANCE {
+        // Converged when the step is below the tolerance, or below the resolution of f64 at
+        // the size of the coordinates (georeferenced files put roads at 10⁶ m and more).
+        let resolution = 4.0 * f64::EPSILON * (px.abs() + py.abs());
+        if (moved < SOLVER_TOLERANCE && dt.abs() < SOLVER_TOLERANCE) || ex.hypot(ey) < resolution {
             break;
         }
     }
