@@ -10,23 +10,11 @@
 
 mod condition_support;
 
-use condition_support::{at, corpus_road, FakeWorld};
+use condition_support::{corpus_road, relative_lane_to_ego, relative_road_to, FakeWorld};
 use engine::position::resolve;
-use scenario::PositionKind;
 
 /// Tolerance of positions computed in closed form or by the road model (m).
 const TOL: f64 = 1e-6;
-
-fn relative_lane(d_lane: i32, ds: f64) -> scenario::Position {
-    at(PositionKind::RelativeLane {
-        entity_ref: "Ego".into(),
-        d_lane,
-        ds: Some(ds),
-        ds_lane: None,
-        offset: None,
-        orientation: None,
-    })
-}
 
 #[test]
 fn continues_onto_the_successor_road() {
@@ -35,21 +23,16 @@ fn continues_onto_the_successor_road() {
     ));
     w.place_on_lane("Ego", "1", -1, 90.0, true);
     // 10 m to the end of road 1, 10 m more on road 2: road 2 s = 10, lane −1 (t = −1.5).
-    let r = resolve(&relative_lane(0, 20.0), &w).unwrap();
+    let r = resolve(&relative_lane_to_ego(0, 20.0), &w).unwrap();
     let rp = r.road_position.unwrap();
     assert_eq!((rp.road_id.as_str(), rp.lane_id), ("2", -1));
     assert!((r.pose.x - 110.0).abs() < TOL && (r.pose.y + 1.5).abs() < TOL);
-    let p = at(PositionKind::RelativeRoad {
-        entity_ref: "Ego".into(),
-        ds: 20.0,
-        dt: 0.5,
-        orientation: None,
-    });
+    let p = relative_road_to("Ego", 20.0, 0.5);
     let r = resolve(&p, &w).unwrap();
     assert!((r.pose.x - 110.0).abs() < TOL && (r.pose.y + 1.0).abs() < TOL);
     // Against the traffic of lane 1 (driven towards −s) from road 2 back onto road 1.
     w.place_on_lane("Ego", "2", 1, 10.0, false);
-    let r = resolve(&relative_lane(0, -20.0), &w).unwrap();
+    let r = resolve(&relative_lane_to_ego(0, -20.0), &w).unwrap();
     assert_eq!(r.road_position.unwrap().road_id, "1");
     assert!((r.pose.x - 90.0).abs() < TOL && (r.pose.y - 1.5).abs() < TOL);
 }
@@ -62,21 +45,16 @@ fn continues_onto_a_road_running_the_other_way() {
     // end towards −s: s = 230 − (10 − 4.908 143).
     let s = 230.0 - (10.0 - (24.908_143_168_284_15 - 20.0));
     let lane1 = w.network.lane_pose("1", 1, s, 0.0).unwrap();
-    let r = resolve(&relative_lane(0, 10.0), &w).unwrap();
+    let r = resolve(&relative_lane_to_ego(0, 10.0), &w).unwrap();
     assert!((r.pose.x - lane1.x).abs() < TOL && (r.pose.y - lane1.y).abs() < TOL);
     // dLane +1 is to the left of road 102's s, which on road 1 is its right: lane 1 − 1 → −1.
     let lane_m1 = w.network.lane_pose("1", -1, s, 0.0).unwrap();
-    let r = resolve(&relative_lane(1, 10.0), &w).unwrap();
+    let r = resolve(&relative_lane_to_ego(1, 10.0), &w).unwrap();
     assert_eq!(r.road_position.as_ref().unwrap().lane_id, -1);
     assert!((r.pose.x - lane_m1.x).abs() < TOL && (r.pose.y - lane_m1.y).abs() < TOL);
     // RelativeRoadPosition keeps the side: t = −1.5 on road 102 is t = +1.5 on road 1, the
     // centre of lane 1 there.
-    let p = at(PositionKind::RelativeRoad {
-        entity_ref: "Ego".into(),
-        ds: 10.0,
-        dt: 0.0,
-        orientation: None,
-    });
+    let p = relative_road_to("Ego", 10.0, 0.0);
     let r = resolve(&p, &w).unwrap();
     assert!((r.pose.x - lane1.x).abs() < TOL && (r.pose.y - lane1.y).abs() < TOL);
 }

@@ -3,7 +3,7 @@
 
 mod condition_support;
 
-use condition_support::{at, corpus_road, FakeWorld};
+use condition_support::{at, corpus_road, relative_road_to, FakeWorld};
 use engine::position::resolve;
 use scenario::PositionKind;
 
@@ -49,15 +49,7 @@ fn error_messages_name_expectation_finding_and_place() {
         "expected lane -6 (lane -1 + dLane -5) on road \"1\" at s = 100, found no such lane at test.xosc:7:9"
     );
     assert_eq!(
-        message(
-            PositionKind::RelativeRoad {
-                entity_ref: "Nobody".into(),
-                ds: 1.0,
-                dt: 0.0,
-                orientation: None,
-            },
-            &w
-        ),
+        message(relative_road_to("Nobody", 1.0, 0.0).kind, &w),
         "expected a placed entity named \"Nobody\", found none at test.xosc:7:9"
     );
     assert_eq!(
@@ -88,14 +80,10 @@ fn entity_off_every_road_cannot_anchor_a_road_position() {
             ..Default::default()
         },
     );
-    let kind = PositionKind::RelativeRoad {
-        entity_ref: "Far".into(),
-        ds: 1.0,
-        dt: 0.0,
-        orientation: None,
-    };
     assert_eq!(
-        message(kind, &w),
+        resolve(&relative_road_to("Far", 1.0, 0.0), &w)
+            .unwrap_err()
+            .to_string(),
         "expected entity \"Far\" on a road, found it off every road at test.xosc:7:9"
     );
 }

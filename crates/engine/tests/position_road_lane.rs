@@ -8,7 +8,9 @@ mod condition_support;
 
 use std::f64::consts::PI;
 
-use condition_support::{at, corpus_road, orientation, FakeWorld};
+use condition_support::{
+    at, corpus_road, orientation, relative_lane_to_ego, relative_road_to, FakeWorld,
+};
 use engine::position::resolve;
 use scenario::PositionKind;
 
@@ -91,12 +93,7 @@ fn lane_position_on_the_arc() {
 fn relative_road_position_adds_ds_and_dt() {
     let mut w = FakeWorld::new(corpus_road("esmini/xodr/straight_500m.xodr"));
     w.place_on_lane("Ego", "1", -1, 100.0, true);
-    let p = at(PositionKind::RelativeRoad {
-        entity_ref: "Ego".into(),
-        ds: 20.0,
-        dt: 3.0,
-        orientation: None,
-    });
+    let p = relative_road_to("Ego", 20.0, 3.0);
     // (s, t) = (100 + 20, −1.535 + 3) on a road along +x: (120, 1.465), heading along s.
     let r = resolve(&p, &w).unwrap();
     assert!((r.pose.x - 120.0).abs() < TOL && (r.pose.y - 1.465).abs() < TOL);
@@ -107,16 +104,7 @@ fn relative_road_position_adds_ds_and_dt() {
 fn relative_lane_position_with_ds_skips_the_centre_lane() {
     let mut w = FakeWorld::new(corpus_road("esmini/xodr/straight_500m.xodr"));
     w.place_on_lane("Ego", "1", -1, 100.0, true);
-    let rel = |d_lane, ds| {
-        at(PositionKind::RelativeLane {
-            entity_ref: "Ego".into(),
-            d_lane,
-            ds: Some(ds),
-            ds_lane: None,
-            offset: None,
-            orientation: None,
-        })
-    };
+    let rel = relative_lane_to_ego;
     // −1 + 1 = 1 (lane 0 has no width and is no target): centre t = 1.535, driven towards −s.
     let r = resolve(&rel(1, 10.0), &w).unwrap();
     assert!((r.pose.x - 110.0).abs() < TOL && (r.pose.y - 1.535).abs() < TOL);

@@ -388,3 +388,25 @@ pub fn eval_at(
         Err(e) => panic!("condition failed: {e}"),
     }
 }
+
+/// A RelativeLanePosition to "Ego": `d_lane` lanes and `ds` m along the reference line.
+pub fn relative_lane_to_ego(d_lane: i32, ds: f64) -> Position {
+    at(PositionKind::RelativeLane {
+        entity_ref: "Ego".into(),
+        d_lane,
+        ds: Some(ds),
+        ds_lane: None,
+        offset: None,
+        orientation: None,
+    })
+}
+
+/// A RelativeRoadPosition to `entity`: (ds, dt).
+pub fn relative_road_to(entity: &str, ds: f64, dt: f64) -> Position {
+    at(PositionKind::RelativeRoad {
+        entity_ref: entity.into(),
+        ds,
+        dt,
+        orientation: None,
+    })
+}
