@@ -148,6 +148,8 @@ pub struct Entity {
     pub longitudinal_action: Option<ActionId>,
     /// The action controlling the lateral domain, if any.
     pub lateral_action: Option<ActionId>,
+    /// Speed at the start of the step, before stage 2 (m/s).
+    pub start_speed: Real,
     /// The pose was set by an action for this step (FollowTrajectoryAction): the controller
     /// takes measurements without moving the entity.
     pub held: bool,
@@ -182,6 +184,7 @@ impl Entity {
             lateral_action: None,
             lateral_slope: 0.0,
             held: false,
+            start_speed: 0.0,
         }
     }
 

@@ -232,6 +232,9 @@ impl Engine {
 
         // Stage 2: actions.
         let clock = Instant::now();
+        for e in world.entities.iter_mut() {
+            e.start_speed = e.speed;
+        }
         self.actions.step_all(world, time, dt);
         self.counters.actions += clock.elapsed();
 

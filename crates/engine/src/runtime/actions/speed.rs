@@ -6,6 +6,9 @@
 //! A `distance` dimension is turned into the time a linear change covers that distance in,
 //! T = 2·d / (v₀ + v₁), so that a change starting from rest still progresses (a change linear
 //! in distance would never leave v = 0); the shape then runs over T.
+//!
+//! A vehicle's Performance (maxAcceleration, maxDeceleration, maxSpeed) bounds the change per
+//! step; the action then ends once the target is reached.
 
 use scenario::{
     DynamicsDimension, SourcePos, SpeedTarget, SpeedTargetValueType, TransitionDynamics,
@@ -150,8 +153,18 @@ pub(crate) fn step(
         s.start_speed + (v1 - s.start_speed) * f
     };
     let e = world.entity_mut(actor);
+    // The vehicle's performance bounds the change per step (semantics-pitfalls #9); a step
+    // shape (Span::Instant) is an ideal jump and is not limited.
+    let v = match (s.span, e.performance) {
+        (Span::Instant, _) | (_, None) => v,
+        (_, Some(perf)) => v.clamp(
+            e.speed - perf.max_deceleration.abs() * dt,
+            e.speed + perf.max_acceleration.abs() * dt,
+        ),
+    };
     e.speed = v.min(e.max_speed());
-    if p >= 1.0 && !s.target.continuous() {
+    let reached = (e.speed - v1.min(e.max_speed())).abs() <= 1e-9;
+    if p >= 1.0 && reached && !s.target.continuous() {
         ActionStatus::Ended
     } else {
         ActionStatus::Running

@@ -25,7 +25,16 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     }
     let old_h = e.pose.h;
     let old_v = e.velocity.translational.x;
-    let distance = e.speed * dt;
+    // Under a lateral action the entity travels at the speed of the step's start: esmini's
+    // lateral actions move the entity before its longitudinal actions change the speed, and
+    // the reference runs show it (a·dt² per step of combined braking and lane change).
+    // Otherwise it travels at the speed the longitudinal domain set for this step.
+    let speed = if e.lateral_action.is_some() {
+        e.start_speed
+    } else {
+        e.speed
+    };
+    let distance = speed * dt;
     if e.held {
         // An action set the pose for this step: measure only.
         e.held = false;
@@ -61,7 +70,8 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, distance: Real) {
                 .road(&track.road_id)
                 .map_or(1.0, |r| along_scale(r, track.s, track.t));
             // Speed is along the heading: lateral motion at slope dt/ds takes its share.
-            let slope = lateral_slope(net, &track);
+            // The slope of the lateral motion at the step's start.
+            let slope = e.lateral_slope;
             let along = signed / (1.0 + slope * slope).sqrt();
             let left = advance(net, &mut track, along * road_scale, &prefer);
             if distance < 0.0 {
@@ -124,13 +134,6 @@ fn lateral(road: &Road, track: &LaneTrack) -> Option<(Real, Real)> {
         + b.weight * span.d_center()
         + (target - t0) * b.weight_per_m * sign(track.direction);
     Some((t, slope))
-}
-
-/// The slope dt/ds of the lateral motion of a track, 0 off the road model.
-fn lateral_slope(net: &RoadNetwork, track: &LaneTrack) -> Real {
-    net.road(&track.road_id)
-        .and_then(|r| lateral(r, track))
-        .map_or(0.0, |(_, slope)| slope)
 }
 
 /// Sets t, pose and road position of `e` from its track after a move.
