@@ -135,7 +135,8 @@ fn world_road_world_round_trip_within_a_micrometre_on_every_corpus_road() {
     for rf in road_files() {
         let net = rf.load();
         for road in net.roads() {
-            let steps = (road.length / 2.0).ceil() as usize;
+            // Every 5 m (and both ends), every lane, at the centre and 0.4 m either side.
+            let steps = (road.length / 5.0).ceil() as usize;
             for k in 0..=steps {
                 let s = road.length * k as f64 / steps as f64;
                 let section = road.lane_section_at(s);
