@@ -66,20 +66,14 @@ fn corpus(rel: &str) -> String {
     )
 }
 
-/// name → (x, y, z, h) at t = 0 in a reference CSV.
-fn reference_at_zero(path: &str) -> HashMap<String, [f64; 4]> {
+/// name → (x, y, z, h, p, r) at t = 0 in a reference CSV.
+fn reference_at_zero(path: &str) -> HashMap<String, [f64; 6]> {
     let text = std::fs::read_to_string(path).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').map(str::trim).collect();
     let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    let (t, n, x, y, z, h) = (
-        col("time"),
-        col("name"),
-        col("x"),
-        col("y"),
-        col("z"),
-        col("h"),
-    );
+    let (t, n) = (col("time"), col("name"));
+    let cols = ["x", "y", "z", "h", "p", "r"].map(col);
     let mut out = HashMap::new();
     for line in lines {
         let f: Vec<&str> = line.split(',').map(str::trim).collect();
@@ -87,7 +81,7 @@ fn reference_at_zero(path: &str) -> HashMap<String, [f64; 4]> {
             break;
         }
         let v = |i: usize| f[i].parse::<f64>().unwrap();
-        out.insert(f[n].to_string(), [v(x), v(y), v(z), v(h)]);
+        out.insert(f[n].to_string(), cols.map(v));
     }
     out
 }
@@ -127,7 +121,7 @@ fn init_teleports_agree_with_esmini_at_time_zero() {
                 if EXCLUDED.iter().any(|&(s, e, _)| s == name && e == entity) {
                     continue;
                 }
-                let Some(&[x, y, z, h]) = reference.get(entity) else {
+                let Some(&[x, y, z, h, pitch, roll]) = reference.get(entity) else {
                     continue;
                 };
                 let p = resolved.pose;
@@ -136,6 +130,8 @@ fn init_teleports_agree_with_esmini_at_time_zero() {
                     (p.y - y).abs(),
                     (p.z - z).abs(),
                     opendrive::angle_difference(p.h, h).abs(),
+                    opendrive::angle_difference(p.p, pitch).abs(),
+                    opendrive::angle_difference(p.r, roll).abs(),
                 ]
                 .into_iter()
                 .fold(0.0, f64::max);
@@ -144,8 +140,8 @@ fn init_teleports_agree_with_esmini_at_time_zero() {
                 }
                 if err > TOL {
                     failures.push(format!(
-                        "{name} {entity}: ours ({:.4}, {:.4}, {:.4}, h {:.4}), esmini ({x}, {y}, {z}, h {h})",
-                        p.x, p.y, p.z, p.h
+                        "{name} {entity}: ours ({:.4}, {:.4}, {:.4}, h {:.4} p {:.4} r {:.4}), esmini ({x}, {y}, {z}, h {h} p {pitch} r {roll})",
+                        p.x, p.y, p.z, p.h, p.p, p.r
                     ));
                 }
                 checked += 1;

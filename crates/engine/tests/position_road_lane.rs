@@ -147,3 +147,38 @@ fn relative_lane_position_with_ds_lane_measures_along_the_lane_centre() {
     let r = resolve(&p, &w).unwrap();
     assert!((r.pose.x - 290.0).abs() < 1e-6, "x = {}", r.pose.x);
 }
+
+#[test]
+fn pitch_and_roll_follow_the_road_surface_for_the_heading() {
+    // esmini's curves_elevation.xodr climbs and falls, without superelevation. Facing along the
+    // road an entity takes the road's pitch P; turned to the left by π/2 it looks across the
+    // slope (pitch 0) with its right side towards +s, so its roll is P (right side down when
+    // the road falls along +s, OpenDRIVE signs); facing back (lane 1, driven towards −s) its
+    // pitch is −P.
+    let w = FakeWorld::new(corpus_road("esmini/xodr/curves_elevation.xodr"));
+    let road = w.network.roads()[0].id.clone();
+    let s = (0..200)
+        .map(|i| f64::from(i) * 10.0)
+        .find(|&s| {
+            w.network
+                .road_pose(&road, s, 0.0)
+                .is_ok_and(|p| p.p.abs() > 0.01)
+        })
+        .expect("the road has a slope");
+    let slope = w.network.road_pose(&road, s, 0.0).unwrap();
+    assert!(slope.r.abs() < 1e-12, "no superelevation expected");
+    let along = |h| {
+        at(PositionKind::Road {
+            road_id: road.clone(),
+            s,
+            t: 0.0,
+            orientation: orientation(h, false),
+        })
+    };
+    let r = resolve(&along(0.0), &w).unwrap();
+    assert!((r.pose.p - slope.p).abs() < TOL && r.pose.r.abs() < TOL);
+    let r = resolve(&along(std::f64::consts::FRAC_PI_2), &w).unwrap();
+    assert!(r.pose.p.abs() < TOL && (r.pose.r - slope.p).abs() < TOL);
+    let r = resolve(&lane_pos(&road, "1", s, None, None), &w).unwrap();
+    assert!((r.pose.p + slope.p).abs() < TOL, "p = {}", r.pose.p);
+}
