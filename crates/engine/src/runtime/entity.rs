@@ -148,13 +148,15 @@ pub struct Entity {
     pub longitudinal_action: Option<ActionId>,
     /// The action controlling the lateral domain, if any.
     pub lateral_action: Option<ActionId>,
+    /// The last step could not move the entity: its lane ends with no successor.
+    pub at_lane_end: bool,
     /// Speed at the start of the step, before stage 2 (m/s).
     pub start_speed: Real,
     /// The pose was set by an action for this step (FollowTrajectoryAction): the controller
     /// takes measurements without moving the entity.
     pub held: bool,
-    /// Lateral velocity along t set by the lateral action of this step (m per m of travel
-    /// along s): the slope added to the road heading.
+    /// Lateral speed of the running lateral transition as a share of the speed (m of lateral
+    /// motion per m travelled), at the end of the last step.
     pub lateral_slope: Real,
 }
 
@@ -185,6 +187,7 @@ impl Entity {
             lateral_slope: 0.0,
             held: false,
             start_speed: 0.0,
+            at_lane_end: false,
         }
     }
 

@@ -69,19 +69,26 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, distance: Real) {
             let road_scale = net
                 .road(&track.road_id)
                 .map_or(1.0, |r| along_scale(r, track.s, track.t));
-            // Speed is along the heading: lateral motion at slope dt/ds takes its share.
-            // The slope of the lateral motion at the step's start.
-            let slope = e.lateral_slope;
-            let along = signed / (1.0 + slope * slope).sqrt();
+            // The speed is along the path: a lateral transition moving sideways at x·v leaves
+            // v·√(1 − x²) along the lane (x taken over the step: mean of its start and end).
+            let end_share = net
+                .road(&track.road_id)
+                .and_then(|r| lateral(r, &track))
+                .map_or(0.0, |(_, _, x)| x);
+            let x = (0.5 * (e.lateral_slope + end_share)).clamp(-1.0, 1.0);
+            let along = signed * (1.0 - x * x).sqrt();
             let left = advance(net, &mut track, along * road_scale, &prefer);
             if distance < 0.0 {
                 track.direction = track.direction.reverse();
             }
             e.odometer += signed - (left / road_scale).min(signed);
-            if left > 0.0 {
-                // The lane ends with no successor: the entity stops at its end (as esmini does).
+            // The lane ends with no successor: after a second step standing at its end the
+            // entity stops (speed 0), as in esmini's runs.
+            let blocked = left > 0.0 && left >= along * road_scale - 1e-9;
+            if blocked && e.at_lane_end {
                 e.speed = 0.0;
             }
+            e.at_lane_end = blocked;
             place_on_track(net, e, &mut track);
             e.track = Some(track);
         }
@@ -117,23 +124,24 @@ fn on_route(
     })
 }
 
-/// Lateral position t of a track at its s and the slope dt/ds of the path it follows there:
-/// the lane centre plus offset, or the blend of a lateral transition.
-fn lateral(road: &Road, track: &LaneTrack) -> Option<(Real, Real)> {
+/// Lateral position t of a track at its s, the slope dt/ds of the path it follows there (the
+/// lane centre plus offset, or the blend of a lateral transition), and the lateral transition's
+/// share of the motion: lateral speed / speed (0 without a transition).
+fn lateral(road: &Road, track: &LaneTrack) -> Option<(Real, Real, Real)> {
     let span = road.lane_span(track.lane_id, track.s).ok()?;
     let target = span.center() + track.offset;
     let Some(b) = track.blend else {
-        return Some((target, span.d_center()));
+        return Some((target, span.d_center(), 0.0));
     };
     let Ok(from) = road.lane_span(b.from_lane, track.s) else {
-        return Some((target, span.d_center()));
+        return Some((target, span.d_center(), 0.0));
     };
     let t0 = from.center() + b.from_offset;
     let t = (1.0 - b.weight) * t0 + b.weight * target;
     let slope = (1.0 - b.weight) * from.d_center()
         + b.weight * span.d_center()
         + (target - t0) * b.weight_per_m * sign(track.direction);
-    Some((t, slope))
+    Some((t, slope, (target - t0) * b.weight_per_m))
 }
 
 /// Sets t, pose and road position of `e` from its track after a move.
@@ -141,7 +149,7 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity, track: &mut Lane
     let Some(road) = net.road(&track.road_id) else {
         return;
     };
-    let Some((t, dt_ds)) = lateral(road, track) else {
+    let Some((t, dt_ds, share)) = lateral(road, track) else {
         return;
     };
     track.t = t;
@@ -158,7 +166,7 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity, track: &mut Lane
         }
     };
     e.pose = pose;
-    e.lateral_slope = dt_ds;
+    e.lateral_slope = share;
     e.road_position = road_position(net, track, normalize_angle(pose.h - road_h));
 }
 
