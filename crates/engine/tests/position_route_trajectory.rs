@@ -187,3 +187,52 @@ fn geo_position_is_reported_unsupported_with_the_geo_reference() {
     assert!(msg.starts_with("expected a road network geoReference that oscsim can invert for a GeoPosition, found \"+proj=utm"), "{msg}");
     assert!(msg.ends_with(" at test.xosc:7:9"), "{msg}");
 }
+
+#[test]
+fn trajectory_position_on_a_clothoid_spline_arc() {
+    use scenario::{ClothoidSpline, ClothoidSplineSegment};
+    let w = straight();
+    // One segment of constant curvature 0.01 from the origin heading +x: a circle of radius 100
+    // about (0, 100). At s = 50 the angle is 0.5 rad; t = 1 to the left is radius 99.
+    let spline = ClothoidSpline {
+        time_end: None,
+        segments: vec![ClothoidSplineSegment {
+            curvature_start: 0.01,
+            curvature_end: 0.01,
+            length: 60.0,
+            h_offset: None,
+            time_start: None,
+            position_start: Some(at(PositionKind::World {
+                x: 0.0,
+                y: 0.0,
+                z: Some(0.0),
+                h: Some(0.0),
+                p: None,
+                r: None,
+            })),
+        }],
+    };
+    let p = at(PositionKind::Trajectory {
+        trajectory: Box::new(Trajectory {
+            name: "Arc".into(),
+            closed: false,
+            shape: Shape::ClothoidSpline(spline),
+            catalog: None,
+        }),
+        s: 50.0,
+        t: Some(1.0),
+        orientation: None,
+    });
+    let r = resolve(&p, &w).unwrap();
+    assert!(
+        (r.pose.x - 99.0 * 0.5f64.sin()).abs() < TOL,
+        "x = {}",
+        r.pose.x
+    );
+    assert!(
+        (r.pose.y - (100.0 - 99.0 * 0.5f64.cos())).abs() < TOL,
+        "y = {}",
+        r.pose.y
+    );
+    assert!((r.pose.h - 0.5).abs() < TOL);
+}

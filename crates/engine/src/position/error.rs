@@ -84,7 +84,7 @@ pub enum PositionErrorKind {
         /// Trajectory length, m.
         length: f64,
     },
-    /// A form oscsim does not support (yet), e.g. a TrajectoryPosition on a NURBS.
+    /// A form oscsim does not support (yet).
     #[error("expected {expected}, found {found} (not supported by oscsim)")]
     Unsupported {
         /// What oscsim supports.
@@ -92,14 +92,9 @@ pub enum PositionErrorKind {
         /// What was found.
         found: &'static str,
     },
-    /// A polyline with fewer than two vertices.
-    #[error("expected at least 2 vertices in trajectory \"{trajectory}\", found {found}")]
-    TooFewVertices {
-        /// Trajectory name.
-        trajectory: String,
-        /// Vertices found.
-        found: usize,
-    },
+    /// The trajectory of a TrajectoryPosition cannot be built (it names its own place).
+    #[error("{0}")]
+    Trajectory(crate::trajectory::TrajectoryError),
     /// A value that must be finite is not.
     #[error("expected a finite {what}, found {value}")]
     NotFinite {
@@ -113,7 +108,7 @@ pub enum PositionErrorKind {
 /// A position that could not be resolved: the kind and where the position was written.
 /// Boxed, so that `Result<_, PositionError>` stays one pointer wide.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{} at {}", .0.kind, .0.pos)]
+#[error("{}", display(.0))]
 pub struct PositionError(Box<Inner>);
 
 /// The contents of a [`PositionError`].
@@ -121,6 +116,14 @@ pub struct PositionError(Box<Inner>);
 struct Inner {
     kind: PositionErrorKind,
     pos: SourcePos,
+}
+
+/// A trajectory error already names its own place; every other kind gets the position's.
+fn display(inner: &Inner) -> String {
+    match &inner.kind {
+        PositionErrorKind::Trajectory(e) => e.to_string(),
+        kind => format!("{kind} at {}", inner.pos),
+    }
 }
 
 impl PositionError {
