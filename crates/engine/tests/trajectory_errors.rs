@@ -1,6 +1,6 @@
-//! Bad trajectories give clear errors, never panics (OpenSCENARIO 1.3 §7.6, XSD `Polyline`:
-//! at least two vertices by the standard's §7.6.1; `Nurbs`: order, knot vector of control
-//! points + order non-decreasing values (§7.6.4); `Timing/@scale`). Each message is checked
+//! Bad trajectories give clear errors, never panics (OpenSCENARIO 1.3 §7.6 "Trajectories";
+//! XSD `Polyline`: a line needs two vertices; `Nurbs`: order, a knot vector of control points
+//! + order non-decreasing values; `Timing/@scale`). Each message is checked
 //! in full: what was expected, what was found, and where.
 
 mod trajectory_support;

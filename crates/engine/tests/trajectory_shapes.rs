@@ -205,7 +205,7 @@ fn nurbs_of_degree_one_is_the_polyline_through_its_control_points() {
 fn rational_quadratic_nurbs_is_an_exact_circle() {
     // The quarter circle of radius 100 about the origin from (100, 0) to (0, 100): control
     // points (100,0), (100,100), (0,100) with weights 1, √2/2, 1 and knots (0,0,0,1,1,1)
-    // (The NURBS Book, §7.3). Length 50π; at s the point is 100·(cos(s/100), sin(s/100)),
+    // (the standard rational quadratic arc, The NURBS Book, ch. 7). Length 50π; at s the point is 100·(cos(s/100), sin(s/100)),
     // heading s/100 + π/2, curvature 0.01.
     let w = FRAC_PI_4.cos();
     let shape = nurbs(
@@ -254,4 +254,28 @@ fn nurbs_with_a_cusp_stays_finite() {
     // NaN and out-of-range arc lengths are clamped, never a panic.
     assert!(t.eval(f64::NAN).x.abs() < 1e-12);
     assert!((t.eval(1e300).x - 20.0).abs() < 1e-6);
+}
+
+#[test]
+fn lateral_offset_from_an_arc_is_a_concentric_arc() {
+    // Quarter circle of radius 100 about (0, 100) turning left from the origin. 10 m to the
+    // left at s = 50π (the end, heading π/2) is (90, 100); the offset curve has radius 90, so
+    // curvature 1/90.
+    let t = built(arc(0.01, 50.0 * PI, world(0.0, 0.0)), false);
+    let p = t.point_at(50.0 * PI, 10.0);
+    assert_point(p, 90.0, 100.0, FRAC_PI_2, 1e-9);
+    assert!((p.curvature - 1.0 / 90.0).abs() < 1e-12);
+}
+
+#[test]
+fn high_degree_nurbs_keeps_linear_precision() {
+    // Degree 8 (order 9) Bézier on nine equally spaced collinear points (0,0) … (80,0):
+    // B-splines reproduce linear functions, so x(u) = 80·u and the curve is the segment,
+    // length 80, the point at s being (s, 0).
+    let pts: Vec<_> = (0..9).map(|i| (10.0 * i as f64, 0.0, None, None)).collect();
+    let mut knots = vec![0.0; 9];
+    knots.extend([1.0; 9]);
+    let t = built(nurbs(9, &pts, &knots), false);
+    assert!((t.length() - 80.0).abs() < 1e-9, "{}", t.length());
+    assert_point(t.eval(33.0), 33.0, 0.0, 0.0, 1e-9);
 }

@@ -1,13 +1,13 @@
-//! B-spline curves (the non-rational core of OpenSCENARIO 1.3 §7.6.4 `Nurbs`), evaluated by
-//! de Boor's algorithm, the numerically stable form of the Cox–de Boor recursion
-//! (Piegl & Tiller, "The NURBS Book", 2nd ed., §2.2 and algorithm A3.1 in its de Boor form),
-//! and differentiated by the derivative-control-point formula (ibid. eq. 3.8):
+//! B-spline curves (the non-rational core of OpenSCENARIO 1.3 §7.6 `Nurbs`), evaluated by
+//! de Boor's algorithm (C. de Boor, "On calculating with B-splines", J. Approx. Theory 6,
+//! 1972), the numerically stable form of the Cox–de Boor recursion, and differentiated by
+//! the derivative-control-point formula (Piegl & Tiller, "The NURBS Book", 2nd ed., §3.3):
 //! Qᵢ = p·(Pᵢ₊₁ − Pᵢ)/(uᵢ₊ₚ₊₁ − uᵢ₊₁), a B-spline of degree p − 1 on the knots without their
 //! first and last entries.
 //!
-//! Written by hand: the Rust NURBS crates (e.g. `curvo`) come with a linear-algebra stack and a
-//! geometry kernel for what is some eighty lines here, and none documents the knot-vector
-//! checks the scenario format needs.
+//! Written by hand: a general NURBS crate (e.g. `curvo`, built on nalgebra) brings a geometry
+//! kernel for what is some eighty lines here, and the scenario format needs its own knot
+//! checks with positioned errors anyway.
 //!
 //! Points are homogeneous `[w·x, w·y, w·z, w, w·t]`: the rational curve divides by `w`, and
 //! the control points' times ride along as a fifth coordinate.
@@ -19,6 +19,9 @@ pub(crate) const DIM: usize = 5;
 
 /// A homogeneous point.
 pub(crate) type HPoint = [Real; DIM];
+
+/// Degrees below this evaluate without allocating.
+const STACK_POINTS: usize = 8;
 
 /// A B-spline curve of degree `degree` (checked by the caller: control points ≥ degree + 1,
 /// knots = control points + degree + 1, non-decreasing, a non-empty parameter range).
@@ -74,7 +77,16 @@ impl BSpline {
         let u = u.clamp(lo, hi);
         let p = self.degree;
         let k = self.span(u);
-        let mut d: Vec<HPoint> = (0..=p).map(|j| self.control[j + k - p]).collect();
+        // The p + 1 points of de Boor's triangle, on the stack for the usual degrees.
+        let mut stack = [[0.0; DIM]; STACK_POINTS];
+        let mut heap = Vec::new();
+        let d: &mut [HPoint] = if p < STACK_POINTS {
+            &mut stack[..=p]
+        } else {
+            heap.resize(p + 1, [0.0; DIM]);
+            &mut heap
+        };
+        d.copy_from_slice(&self.control[k - p..=k]);
         for r in 1..=p {
             for j in (r..=p).rev() {
                 let left = self.knots[j + k - p];

@@ -1,5 +1,5 @@
-//! One straight piece of a `Polyline` (OpenSCENARIO 1.3 §7.6.1, XSD `Polyline`: "a
-//! concatenation of straight lines"): from one vertex to the next, z interpolated linearly,
+//! One straight piece of a `Polyline` (OpenSCENARIO 1.3 §7.6, XSD `Polyline`: straight
+//! lines joining the vertices in order): from one vertex to the next, z interpolated linearly,
 //! s measured horizontally.
 
 use opendrive::Real;

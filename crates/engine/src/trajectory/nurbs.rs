@@ -1,11 +1,11 @@
-//! `Nurbs` (OpenSCENARIO 1.3 §7.6.4, XSD `Nurbs`, `ControlPoint`, `Knot`): a non-uniform
+//! `Nurbs` (OpenSCENARIO 1.3 §7.6, XSD `Nurbs`, `ControlPoint`, `Knot`): a non-uniform
 //! rational B-spline of order k (degree k − 1) with weighted control points and a knot vector
 //! of (control points + order) non-decreasing values; the curve runs over
 //! [u_(k−1), u_n] (0-based knots, n control points).
 //!
-//! Rational form (Piegl & Tiller, "The NURBS Book", §4.2): with A(u) the B-spline of the
-//! homogeneous points (w·P, w) and C = A/w, the derivatives are C' = (A' − w'C)/w and
-//! C'' = (A'' − 2w'C' − w''C)/w (ibid. eq. 4.8). Control-point times are a further
+//! Rational form (Piegl & Tiller, "The NURBS Book", 2nd ed., §4.2–4.3): with A(u) the
+//! B-spline of the homogeneous points (w·P, w) and C = A/w, the derivatives are
+//! C' = (A' − w'C)/w and C'' = (A'' − 2w'C' − w''C)/w (differentiate A = w·C twice). Control-point times are a further
 //! homogeneous coordinate, so t(u) is the same rational curve's time component.
 //!
 //! Arc length: s(u) = ∫|C'_xy| du, tabulated at build time by adaptive 5-point
@@ -106,10 +106,15 @@ impl Nurbs {
         jet
     }
 
-    /// |dC_xy/du| at u.
+    /// |dC_xy/du| at u (from A and A' only).
     fn speed(&self, u: Real) -> Real {
-        let j = self.jet(u);
-        j.d1[0].hypot(j.d1[1])
+        let a = self.curve.eval(u);
+        let Some(d1) = &self.d1 else { return 0.0 };
+        let a1 = d1.eval(u);
+        let (w, w1) = (a[3], a1[3]);
+        let dx = (a1[0] - w1 * a[0] / w) / w;
+        let dy = (a1[1] - w1 * a[1] / w) / w;
+        dx.hypot(dy)
     }
 
     /// ∫ₐᵇ |C'_xy| du by one 5-point Gauss–Legendre panel.

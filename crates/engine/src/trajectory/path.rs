@@ -1,6 +1,6 @@
 //! [`Trajectory`]: a shape of OpenSCENARIO 1.3 §7.6 ("Trajectories", XSD `Shape`) as pieces
 //! laid end to end, evaluated by horizontal arc length s from its start, with its times where
-//! the shape has them (§7.6.5).
+//! the shape has them (§7.6).
 //!
 //! s is measured in the horizontal plane, as road s is along an OpenDRIVE reference line and
 //! as `position::resolve` measures TrajectoryPosition s; z follows the shape.
@@ -128,6 +128,26 @@ impl Trajectory {
             - 1;
         let p = self.pieces[i].eval(s - self.starts[i]);
         TrajectoryPoint { s, ..p }
+    }
+
+    /// The point at arc length `s` moved `t` metres to the left of the trajectory's heading
+    /// (TrajectoryPosition's `s` and `t`, OpenSCENARIO 1.3 XSD `TrajectoryPosition`), with
+    /// the curvature of that offset curve, κ/(1 − κt) (0 where 1 − κt vanishes, the centre
+    /// of curvature).
+    pub fn point_at(&self, s: Real, t: Real) -> TrajectoryPoint {
+        let p = self.eval(s);
+        let (sin_h, cos_h) = p.heading.sin_cos();
+        let scale = 1.0 - p.curvature * t;
+        TrajectoryPoint {
+            x: p.x - t * sin_h,
+            y: p.y + t * cos_h,
+            curvature: if scale != 0.0 {
+                p.curvature / scale
+            } else {
+                0.0
+            },
+            ..p
+        }
     }
 
     /// Whether the shape carries times (every vertex, control point or segment has one).

@@ -1,12 +1,12 @@
-//! `TimeReference` and `Timing` of FollowTrajectoryAction (OpenSCENARIO 1.3 §7.6.5 "Time
-//! references", XSD `TimeReference`, `Timing`): the trajectory's own times map to simulation
+//! `TimeReference` and `Timing` of FollowTrajectoryAction (OpenSCENARIO 1.3 §7.6
+//! "Trajectories", XSD `TimeReference`, `Timing`): the trajectory's own times map to simulation
 //! time as t_sim = t_traj · scale + offset, where t_sim counts from the start of the
 //! simulation (`domainAbsoluteRelative="absolute"`) or from the start of the action
 //! (`"relative"`).
 //!
 //! Without a TimeReference (XSD `TimeReference/None`) the times are ignored and the action
 //! controls the lateral domain only: the entity keeps its own longitudinal motion along the
-//! trajectory (OpenSCENARIO 1.3 §7.6.5; semantics-pitfalls #7). With Timing it controls both.
+//! trajectory (OpenSCENARIO 1.3 §7.6; semantics-pitfalls #7). With Timing it controls both.
 
 use opendrive::Real;
 use scenario::{ReferenceContext, SourcePos, Timing};
