@@ -91,3 +91,26 @@ fn teleport_to_lane_position_is_lane_pose() {
     assert_abs_diff_eq!(s, 50.0, epsilon = 1e-6);
     assert_abs_diff_eq!(offset, 0.3, epsilon = 1e-6);
 }
+
+/// lane_offset_sinusoidal.xosc: offset 0 → 1.0 m, sinusoidal, maxLateralAcc a = π²/8 m/s².
+/// A sinusoidal change d over T peaks at d·π²/(2T²) lateral acceleration, so T = π·√(d/(2a))
+/// = 2 s, starting at 1.0 s: offset ½ at 2.0 s, 1 at 3.0 s. At half time the lateral speed is
+/// d·(π/2)/T = π/4 m/s, at 20 m/s a slope of π/80, so the heading is atan(π/80) (road heading 0).
+#[test]
+fn lane_offset_sinusoidal_duration_from_max_lateral_acc() {
+    let (_, frames, _) = run("lane_offset_sinusoidal.xosc");
+    let offset = |time: f64| {
+        frames
+            .at("Ego", time)
+            .road
+            .as_ref()
+            .map(|r| r.4)
+            .unwrap_or(f64::NAN)
+    };
+    assert_abs_diff_eq!(offset(1.0), 0.0, epsilon = EXACT);
+    assert_abs_diff_eq!(offset(2.0), 0.5, epsilon = EXACT);
+    assert_abs_diff_eq!(offset(3.0), 1.0, epsilon = EXACT);
+    assert_abs_diff_eq!(offset(3.5), 1.0, epsilon = EXACT);
+    let slope = std::f64::consts::PI / 80.0;
+    assert_abs_diff_eq!(frames.at("Ego", 2.0).h, slope.atan(), epsilon = EXACT);
+}

@@ -1,0 +1,86 @@
+//! Global and user-defined actions (OpenSCENARIO 1.3 §7.7.1, §7.7.3) and controller actions
+//! (§7.7.2.5), and the event log's JSON lines.
+
+mod runtime_support;
+
+use engine::output::{EventSink, JsonlWriter};
+use engine::EventRecord;
+use runtime_support::run;
+use scenario::expr::Value;
+
+/// global_actions.xosc at t = 1 s: Gap (double 10) + 5 = 15; Count (int 1) := 7.
+#[test]
+fn parameter_modify_and_variable_set_change_values() {
+    let (engine, _, _) = run("global_actions.xosc");
+    let world = engine.world();
+    assert_eq!(world.parameter_value("Gap"), Some(&Value::Double(15.0)));
+    assert_eq!(world.variable_value("Count"), Some(&Value::Int(7)));
+}
+
+/// The CustomCommandAction is recorded with its type and content, and its JSON line escapes
+/// the quotes of the content.
+#[test]
+fn custom_command_is_recorded_in_the_event_log() {
+    let (_, _, events) = run("global_actions.xosc");
+    let command = events
+        .iter()
+        .find(|e| matches!(e, EventRecord::CustomCommand { .. }))
+        .expect("a custom command record");
+    let EventRecord::CustomCommand {
+        time,
+        element,
+        command_type,
+        content,
+    } = command
+    else {
+        unreachable!("matched above");
+    };
+    assert!((time - 1.0).abs() < 1e-9);
+    assert_eq!(element, "CommandAction");
+    assert_eq!(command_type, "log");
+    assert_eq!(content, "hello, \"world\"");
+    let mut out = JsonlWriter::new(Vec::new());
+    out.event(command).expect("writes");
+    assert_eq!(
+        String::from_utf8(out.into_inner()).expect("utf-8"),
+        "{\"time\":1.000,\"element\":\"CommandAction\",\"kind\":\"customCommand\",\
+         \"type\":\"log\",\"content\":\"hello, \\\"world\\\"\"}\n"
+    );
+}
+
+/// A controller other than the default one is rejected in the event log, naming it and the
+/// action's position; the action still ends (the default controller keeps driving).
+#[test]
+fn other_controllers_are_rejected_clearly() {
+    let (_, frames, events) = run("global_actions.xosc");
+    let message = events
+        .iter()
+        .find_map(|e| match e {
+            EventRecord::Unsupported { message, .. } => Some(message.clone()),
+            _ => None,
+        })
+        .expect("an unsupported record");
+    assert!(message.contains("controller 'ACC'"), "{message}");
+    assert!(message.contains("global_actions.xosc:99:15"), "{message}");
+    // 20 m/s under the default controller from s = 20: s = 20 + 20·t.
+    let row = frames.at("Ego", 4.0);
+    assert!((row.x - 100.0).abs() < 1e-9, "x = {}", row.x);
+}
+
+/// A transition's JSON line: the issue's six keys, the standard's state names and the short
+/// transition name compare_run.py reads.
+#[test]
+fn transition_json_line_has_the_issue_layout() {
+    let (_, _, events) = run("global_actions.xosc");
+    let start = events
+        .iter()
+        .find(|e| matches!(e, EventRecord::Transition(t) if t.name == "Modify"))
+        .expect("the Modify event starts");
+    let mut out = JsonlWriter::new(Vec::new());
+    out.event(start).expect("writes");
+    assert_eq!(
+        String::from_utf8(out.into_inner()).expect("utf-8"),
+        "{\"time\":1.000,\"element\":\"Modify\",\"kind\":\"event\",\"from\":\"standbyState\",\
+         \"transition\":\"start\",\"to\":\"runningState\"}\n"
+    );
+}
