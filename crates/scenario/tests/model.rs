@@ -104,7 +104,7 @@ fn deprecated_forms_and_too_new_features_warn_with_their_position() {
         "32:39 GeoPosition@latitude/longitude/height are deprecated (rad), read as latitudeDeg/longitudeDeg/altitude",
         "35:13 PrivateAction/ActivateControllerAction is deprecated, read as ControllerAction/ActivateControllerAction",
         // Line 45: the value of priority starts at col 39.
-        "45:39 Event@priority: 'overwrite' is a deprecated literal, read as its 1.3 form",
+        "45:39 Event@priority: 'overwrite' is a deprecated literal, read as 'override'",
         "50:23 FollowTrajectoryAction/Trajectory is deprecated, read as TrajectoryRef",
         "52:27 Clothoid@curvatureDot is deprecated, read as curvaturePrime",
         "66:21 SpeedProfileAction needs OpenSCENARIO 1.2, but the file declares 1.0",
@@ -117,10 +117,10 @@ fn deprecated_forms_and_too_new_features_warn_with_their_position() {
         );
     }
     assert!(
-        shown
-            .iter()
-            .any(|w| w.starts_with("78:")
-                && w.contains("'cartesianDistance' is a deprecated literal")),
+        shown.iter().any(|w| w.starts_with("78:")
+            && w.contains(
+                "'cartesianDistance' is a deprecated literal, read as 'euclidianDistance'"
+            )),
         "{shown:?}"
     );
 }

@@ -11,6 +11,10 @@ pub(crate) trait FromAttr: Sized {
     fn from_attr(text: &str) -> Option<(Self, bool)>;
     /// What the schema expects, for error messages ("a double", "one of a, b").
     fn expected() -> String;
+    /// The value as its 1.3 literal, for messages about deprecated spellings.
+    fn literal(&self) -> String {
+        String::new()
+    }
 }
 
 impl FromAttr for f64 {
@@ -116,6 +120,9 @@ macro_rules! xsd_enum {
             fn expected() -> String {
                 let all: &[&str] = &[$($lit),+];
                 format!("one of {}", all.join(", "))
+            }
+            fn literal(&self) -> String {
+                self.as_str().to_owned()
             }
         }
     };

@@ -230,9 +230,10 @@ impl<'a> Ctx<'a> {
             Some((value, deprecated)) => {
                 if deprecated {
                     let message = format!(
-                        "{}@{name}: '{}' is a deprecated literal, read as its 1.3 form",
+                        "{}@{name}: '{}' is a deprecated literal, read as '{}'",
                         n.tag_name().name(),
-                        text.trim()
+                        text.trim(),
+                        value.literal()
                     );
                     let pos = self.attr_pos(&a);
                     self.warnings.push(Warning { message, pos });
