@@ -87,3 +87,39 @@ fn entity_off_every_road_cannot_anchor_a_road_position() {
         "expected entity \"Far\" on a road, found it off every road at test.xosc:7:9"
     );
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(200))]
+
+    /// Any lane position or relative lane position, sensible or not, resolves or errors: no
+    /// panic, no hang (dsLane walks at most the road's length).
+    #[test]
+    fn lane_positions_never_panic(
+        road in proptest::sample::select(vec!["0", "1", "7", ""]),
+        lane in -6i32..6,
+        s in -1e3f64..1e4,
+        offset in -50f64..50.0,
+        d_lane in -8i32..8,
+        ds in -2e3f64..2e3,
+        along_lane in proptest::bool::ANY,
+    ) {
+        let mut w = FakeWorld::new(corpus_road("esmini/xodr/curve_r100.xodr"));
+        w.place_on_lane("Ego", "0", -1, 300.0, true);
+        let _ = resolve(&at(PositionKind::Lane {
+            road_id: road.into(),
+            lane_id: lane.to_string(),
+            s,
+            offset: Some(offset),
+            orientation: None,
+        }), &w);
+        let _ = resolve(&at(PositionKind::RelativeLane {
+            entity_ref: "Ego".into(),
+            d_lane,
+            ds: (!along_lane).then_some(ds),
+            ds_lane: along_lane.then_some(ds),
+            offset: Some(offset),
+            orientation: None,
+        }), &w);
+        let _ = resolve(&relative_road_to("Ego", ds, offset), &w);
+    }
+}

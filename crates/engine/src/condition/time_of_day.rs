@@ -70,5 +70,41 @@ mod tests {
         assert_eq!(parse_date_time("2000-03-01T14:30:15.5+02:00"), Some(t));
         assert_eq!(parse_date_time("2000-13-01T00:00:00"), None);
         assert_eq!(parse_date_time("noon"), None);
+        assert_eq!(parse_date_time("2000-03-01T-"), None);
+        assert_eq!(parse_date_time("2000-03-01T12:00:00+ä"), None);
+    }
+
+    proptest::proptest! {
+        /// Bad input gives `None`, never a panic.
+        #[test]
+        fn never_panics(text in "\\PC{0,40}") {
+            let _ = parse_date_time(&text);
+        }
+
+        /// Every well-formed UTC instant of 1970–2100 reads back to its day and second.
+        #[test]
+        fn reads_back(days in 0i64..47_482, second in 0i64..86_400) {
+            let (y, m, d) = civil_from_days(days);
+            let text = format!(
+                "{y:04}-{m:02}-{d:02}T{:02}:{:02}:{:02}Z",
+                second / 3600,
+                second / 60 % 60,
+                second % 60
+            );
+            proptest::prop_assert_eq!(parse_date_time(&text), Some((days * 86_400 + second) as f64));
+        }
+    }
+
+    /// The inverse of `days_from_civil` (H. Hinnant's `civil_from_days`), for the round trip.
+    fn civil_from_days(z: i64) -> (i64, i64, i64) {
+        let z = z + 719_468;
+        let era = z.div_euclid(146_097);
+        let doe = z - era * 146_097;
+        let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+        let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+        let mp = (5 * doy + 2) / 153;
+        let d = doy - (153 * mp + 2) / 5 + 1;
+        let m = if mp < 10 { mp + 3 } else { mp - 9 };
+        (yoe + era * 400 + i64::from(m <= 2), m, d)
     }
 }
