@@ -21,8 +21,8 @@ pub const S_TOLERANCE: Real = 1e-6;
 /// road projection), in metres.
 pub const SOLVER_TOLERANCE: Real = 1e-10;
 
-/// Largest gap tolerated between the end of one plan-view geometry and the start of the next
-/// before the file is reported as inconsistent (m). Not an error, kept for diagnostics.
+/// Largest gap between the end of one plan-view geometry and the start of the next before the
+/// loader warns (m). Not an error: each geometry is placed by its own start.
 pub const GEOMETRY_GAP_TOLERANCE: Real = 1e-3;
 
 /// Vehicle pose in the OpenDRIVE inertial frame: position (m) and heading, pitch, roll (rad).

@@ -65,8 +65,9 @@ impl RoadNetwork {
         };
         let mut roads = Vec::new();
         let mut road_index = HashMap::new();
+        let mut warnings = Vec::new();
         for node in root.children().filter(|n| n.has_tag_name("road")) {
-            let road = read_road(&r, node)?;
+            let road = read_road(&r, node, &mut warnings)?;
             if road_index.insert(road.id.clone(), roads.len()).is_some() {
                 return Err(r.invalid(node, "id", "a road id not used before", &road.id));
             }
@@ -84,7 +85,7 @@ impl RoadNetwork {
             }
             junctions.push(j);
         }
-        let warnings = check_references(
+        warnings.extend(check_references(
             &r,
             root,
             &Ids {
@@ -92,7 +93,7 @@ impl RoadNetwork {
                 road_list: &roads,
                 junctions: &junction_index,
             },
-        )?;
+        )?);
         let spatial = SpatialIndex::build(&roads);
         Ok(Self {
             header,
@@ -106,7 +107,8 @@ impl RoadNetwork {
     }
 
     /// Problems the loader tolerated, each with file and position: junction lane links that
-    /// name a lane the road does not have (the lane graph ignores them).
+    /// name a lane the road does not have (the lane graph ignores them), and plan-view
+    /// geometries that do not start where the previous one ends.
     pub fn warnings(&self) -> &[Error] {
         &self.warnings
     }

@@ -83,6 +83,21 @@ fn unknown_lane_in_a_lane_link_is_a_warning_with_position() {
 }
 
 #[test]
+fn geometry_gap_is_a_warning_with_position() {
+    // The second line starts at (50, 0.5) where the first ends at (50, 0): a 0.5 m gap.
+    let net = RoadNetwork::from_file(&files().join("geometry_gap.xodr"))
+        .unwrap_or_else(|e| panic!("{e}"));
+    let w: Vec<String> = net.warnings().iter().map(ToString::to_string).collect();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with("expected a start within 0.001 m of the previous geometry's end in <geometry>, found a gap of 0.5000 m at ")
+            && w[0].ends_with("geometry_gap.xodr:10:13"),
+        "{}",
+        w[0]
+    );
+}
+
+#[test]
 fn missing_file_is_an_io_error_naming_the_file() {
     let err = RoadNetwork::from_file(Path::new("no/such/file.xodr"))
         .err()

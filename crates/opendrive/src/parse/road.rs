@@ -10,14 +10,14 @@ use crate::error::{Error, ErrorKind};
 use crate::geometry::{
     Arc, Geometry, GeometryKind, ParamPoly3, ParamRange, PlanView, Poly3, Spiral,
 };
-use crate::math::Cubic;
+use crate::math::{Cubic, GEOMETRY_GAP_TOLERANCE};
 use crate::model::{
     ContactPoint, ElementType, Object, Road, RoadLink, RoadLinks, RoadType, Signal, Speed,
     TrafficRule,
 };
 
-/// XSD `t_road`.
-pub(crate) fn read_road(r: &Reader, node: Node) -> Result<Road, Error> {
+/// XSD `t_road`; tolerated problems (plan-view gaps) go to `warnings`.
+pub(crate) fn read_road(r: &Reader, node: Node, warnings: &mut Vec<Error>) -> Result<Road, Error> {
     let id = r.req_str(node, "id")?.to_string();
     let length = r.req_positive(node, "length")?;
     let junction = match node.attribute("junction").map(str::trim) {
@@ -44,7 +44,7 @@ pub(crate) fn read_road(r: &Reader, node: Node) -> Result<Road, Error> {
     }
     types.sort_by(|a, b| a.s.total_cmp(&b.s));
     let plan_view = match child(node, "planView") {
-        Some(pv) => read_plan_view(r, pv, length)?,
+        Some(pv) => read_plan_view(r, pv, length, warnings)?,
         None => return Err(missing(r, node, "planView")),
     };
     let elevation = match child(node, "elevationProfile") {
@@ -143,17 +143,43 @@ fn read_type(r: &Reader, node: Node) -> Result<RoadType, Error> {
     })
 }
 
-/// XSD `t_road_planView`: at least one `<geometry>`, sorted by s.
-fn read_plan_view(r: &Reader, node: Node, road_length: f64) -> Result<PlanView, Error> {
+/// XSD `t_road_planView`: at least one `<geometry>`, sorted by s. A geometry starting more
+/// than [`GEOMETRY_GAP_TOLERANCE`] from where the previous one ends is a warning (OpenDRIVE
+/// 1.8 §9.2: the reference line is continuous; each geometry is still placed by its own x, y).
+fn read_plan_view(
+    r: &Reader,
+    node: Node,
+    road_length: f64,
+    warnings: &mut Vec<Error>,
+) -> Result<PlanView, Error> {
     let mut geometries = Vec::new();
     for g in children(node, "geometry") {
-        geometries.push(read_geometry(r, g, road_length)?);
+        geometries.push((read_geometry(r, g, road_length)?, g));
     }
     if geometries.is_empty() {
         return Err(missing(r, node, "geometry"));
     }
-    geometries.sort_by(|a, b| a.s.total_cmp(&b.s));
-    Ok(PlanView::new(geometries))
+    geometries.sort_by(|a, b| a.0.s.total_cmp(&b.0.s));
+    for pair in geometries.windows(2) {
+        let ((prev, _), (next, next_node)) = (&pair[0], &pair[1]);
+        let end = prev.eval(next.s);
+        let gap = (end.x - next.x).hypot(end.y - next.y);
+        if gap > GEOMETRY_GAP_TOLERANCE {
+            warnings.push(r.error_at(
+                *next_node,
+                ErrorKind::Inconsistent {
+                    element: "geometry".into(),
+                    expected: format!(
+                        "a start within {GEOMETRY_GAP_TOLERANCE} m of the previous geometry's end"
+                    ),
+                    found: format!("a gap of {gap:.4} m"),
+                },
+            ));
+        }
+    }
+    Ok(PlanView::new(
+        geometries.into_iter().map(|(g, _)| g).collect(),
+    ))
 }
 
 /// XSD `t_road_planView_geometry` and its curve element.

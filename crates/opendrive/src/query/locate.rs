@@ -87,7 +87,8 @@ fn project(road: &Road, px: Real, py: Real, lo: Real, hi: Real) -> Option<(Real,
 
 impl RoadNetwork {
     /// The road position of world point (x, y); `heading` (rad) helps choose between
-    /// overlapping roads (junctions). `None` only for an empty network or non-finite input.
+    /// overlapping roads (junctions). `None` for an empty network, non-finite input, or (in
+    /// theory) a point where no road's projection is defined (a centre of curvature).
     pub fn locate(&self, x: Real, y: Real, heading: Option<Real>) -> Option<RoadPosition> {
         if !(x.is_finite() && y.is_finite()) {
             return None;
