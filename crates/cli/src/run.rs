@@ -32,6 +32,9 @@ pub struct RunArgs {
     /// Hard cap on simulated seconds.
     #[arg(long, default_value_t = engine::runtime::DEFAULT_MAX_TIME)]
     max_time: f64,
+    /// Seed of the random streams (spawned traffic); the same seed gives the same run.
+    #[arg(long, default_value_t = engine::runtime::DEFAULT_SEED)]
+    seed: u64,
     /// Override a global parameter, NAME=VALUE (repeatable).
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = name_value)]
     params: Vec<(String, String)>,
@@ -44,6 +47,19 @@ pub struct RunArgs {
     /// Do not show the progress bar.
     #[arg(long)]
     quiet: bool,
+    /// Write OSI 3.8.0 GroundTruth here: FILE.osi, FILE.mcap, or a directory (file named by
+    /// the OSI convention; its UTC timestamp is the wall clock unless SOURCE_DATE_EPOCH is set).
+    #[arg(long, value_name = "PATH")]
+    osi: Option<PathBuf>,
+    /// Host vehicle of the OSI ground truth (default: the entity named Ego, else none).
+    #[arg(long, value_name = "NAME")]
+    osi_host: Option<String>,
+    /// Lanes and lane boundaries in the first OSI frame only, or in every frame.
+    #[arg(long, value_enum, default_value_t = crate::osi_sink::OsiStatic::First)]
+    osi_static: crate::osi_sink::OsiStatic,
+    /// Write every Nth step to the OSI trace.
+    #[arg(long, value_name = "N", default_value = "1")]
+    osi_every: std::num::NonZeroU64,
 }
 
 /// Splits `NAME=VALUE` (a leading `$` on the name is dropped).
@@ -90,6 +106,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         dt: args.dt,
         duration: args.duration,
         max_time: args.max_time,
+        seed: args.seed,
     };
     let wall = Instant::now();
     let mut engine = Engine::load(&args.scenario, &args.params, config)
@@ -97,6 +114,16 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     let mut frames: Vec<Box<dyn FrameSink>> = Vec::new();
     if let Some(path) = &args.csv {
         frames.push(Box::new(CsvWriter::new(create(path)?)));
+    }
+    if let Some(path) = &args.osi {
+        let options = crate::osi_sink::OsiOptions {
+            path: path.clone(),
+            host: args.osi_host.clone(),
+            static_data: args.osi_static,
+            every: args.osi_every,
+        };
+        let sink = crate::osi_sink::OsiSink::create(&engine, &args.scenario, &args.params, &options)?;
+        frames.push(Box::new(sink));
     }
     let mut events = Events {
         out: args

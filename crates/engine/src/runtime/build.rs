@@ -59,6 +59,8 @@ pub(crate) fn build(scenario: &Scenario, network: RoadNetwork) -> Result<Built, 
     let trailers = super::trailer::from_definitions(scenario, &mut entities, entity)?;
     let mut world = World::new(network, entities);
     world.trailers = trailers;
+    super::selection::check_multiplicity(scenario)?;
+    world.selections = super::selection::Selections::new(scenario);
     world.parameters = scenario
         .parameter_declarations
         .iter()
@@ -74,9 +76,11 @@ pub(crate) fn build(scenario: &Scenario, network: RoadNetwork) -> Result<Built, 
         world: &world,
         actions: ActionTable::default(),
         conditions: Vec::new(),
+        selection_actors: Vec::new(),
     };
     let desc = b.storyboard()?;
     let (actions, conditions) = (b.actions, b.conditions);
+    world.selections.set_actors(b.selection_actors);
     Ok(Built {
         world,
         desc,
@@ -94,7 +98,8 @@ fn bounding_box(
         .map_err(|e| RuntimeError::at("a valid BoundingBox", e.to_string(), pos))
 }
 
-fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entity, RuntimeError> {
+/// The entity of scenario object `o` (also the template of spawned vehicles).
+pub(crate) fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entity, RuntimeError> {
     let color_of = |props: &scenario::Properties| {
         props
             .properties
@@ -140,6 +145,8 @@ struct Builder<'a> {
     world: &'a World,
     actions: ActionTable,
     conditions: Vec<scenario::Condition>,
+    /// Actions whose ManeuverGroup actors name a selection, re-expanded at each start.
+    selection_actors: Vec<(crate::storyboard::ActionId, Vec<String>)>,
 }
 
 /// The XSD element name of an action, for Init action names.
@@ -205,7 +212,11 @@ impl Builder<'_> {
                             let actions = ev
                                 .actions
                                 .iter()
-                                .map(|a| self.action(a.name.clone(), a, actors.clone()))
+                                .map(|a| {
+                                    let d = self.action(a.name.clone(), a, actors.clone());
+                                    self.note_selection_actors(d.id, &mg.actors.entity_refs);
+                                    d
+                                })
                                 .collect();
                             events.push(EventDesc {
                                 name: ev.name.clone(),
@@ -280,6 +291,13 @@ impl Builder<'_> {
             }
         }
         Ok(out)
+    }
+
+    fn note_selection_actors(&mut self, id: crate::storyboard::ActionId, refs: &[String]) {
+        let selections = &self.scenario.entities.entity_selections;
+        if refs.iter().any(|r| selections.iter().any(|s| &s.name == r)) {
+            self.selection_actors.push((id, refs.to_vec()));
+        }
     }
 
     fn action(&mut self, name: String, action: &Action, actors: Vec<EntityId>) -> ActionDesc {

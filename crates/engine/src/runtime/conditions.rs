@@ -37,7 +37,9 @@ impl ConditionSource for Conditions<'_> {
             world: &world,
             storyboard: *storyboard,
         };
-        match evaluate(condition, &ctx, self.states.get_mut(id)) {
+        // Selections among the triggering entities stand for their members now.
+        let expanded = world.selections.expand_condition(&world, condition);
+        match evaluate(&expanded, &ctx, self.states.get_mut(id)) {
             Ok(v) => v,
             Err(e) => {
                 if !self.reported[index] {

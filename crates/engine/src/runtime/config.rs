@@ -6,6 +6,8 @@ use super::error::{RuntimeError, RuntimeErrorKind};
 pub const DEFAULT_DT: f64 = 0.05;
 /// Default hard cap on simulated time (s): a run without a stop trigger ends here.
 pub const DEFAULT_MAX_TIME: f64 = 3600.0;
+/// Default seed of the run's random streams.
+pub const DEFAULT_SEED: u64 = 1;
 
 /// Settings of one run.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -16,6 +18,9 @@ pub struct EngineConfig {
     pub duration: Option<f64>,
     /// Hard cap on simulated time (s), so that no run is endless.
     pub max_time: f64,
+    /// Seed of the run's random streams (spawned traffic); each traffic action draws from its
+    /// own stream keyed by its name. Default [`DEFAULT_SEED`].
+    pub seed: u64,
 }
 
 impl Default for EngineConfig {
@@ -24,6 +29,7 @@ impl Default for EngineConfig {
             dt: DEFAULT_DT,
             duration: None,
             max_time: DEFAULT_MAX_TIME,
+            seed: DEFAULT_SEED,
         }
     }
 }

@@ -14,7 +14,9 @@
 //! | `shapes` | transition shapes and dimensions |
 //! | `actions/*` | one file per action kind, and the `ActionHost` |
 //! | `controller/default` | the default controller |
+//! | `traffic/*` | spawned traffic: sources, sinks, swarms |
 //! | `trailer` | trailer connections and the one-axle trailer kinematics |
+//! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
 //! | `step` | `Engine` and its five stages |
 
 mod actions;
@@ -25,12 +27,14 @@ mod controller;
 mod entity;
 mod error;
 mod lanes;
+mod selection;
 mod shapes;
 mod step;
+mod traffic;
 mod trailer;
 mod world;
 
-pub use config::{EngineConfig, DEFAULT_DT, DEFAULT_MAX_TIME};
+pub use config::{EngineConfig, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
 pub use entity::{Blend, Entity, EntityId, EntityKind, LaneTrack, Visibility};
 pub use error::{RuntimeError, RuntimeErrorKind};
 pub use shapes::{shape_value, Span};

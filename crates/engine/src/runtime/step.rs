@@ -97,7 +97,8 @@ impl Engine {
     pub fn build(scenario: &Scenario, config: EngineConfig) -> Result<Engine, RuntimeError> {
         config.validate()?;
         let network = road_network(scenario)?;
-        let built = build(scenario, network)?;
+        let mut built = build(scenario, network)?;
+        built.world.traffic.seed = config.seed;
         let storyboard = Storyboard::new(&built.desc)?;
         Ok(Engine {
             world: RefCell::new(built.world),
@@ -246,6 +247,8 @@ impl Engine {
         }
         // Towed vehicles follow their tows' hitches (runtime/trailer.rs).
         super::trailer::follow(world, dt);
+        // Traffic sources, sinks and swarms (runtime/traffic).
+        super::traffic::step(world, dt);
         self.counters.controllers += clock.elapsed();
 
         // Stage 4: time advance and measurements (taken by the controllers' move).

@@ -36,6 +36,10 @@ pub struct World {
     pub(crate) signal_phases: BTreeMap<String, String>,
     /// Trailer mounting points and connections (§7.2.2.6).
     pub(crate) trailers: super::trailer::Trailers,
+    /// Running traffic actions and the run's seed (runtime/traffic).
+    pub(crate) traffic: super::traffic::Traffic,
+    /// The scenario's entity selections, expanded when used (runtime/selection.rs).
+    pub(crate) selections: super::selection::Selections,
 }
 
 impl World {
@@ -55,7 +59,19 @@ impl World {
             signals: BTreeMap::new(),
             signal_phases: BTreeMap::new(),
             trailers: super::trailer::Trailers::default(),
+            traffic: super::traffic::Traffic::default(),
+            selections: super::selection::Selections::default(),
         }
+    }
+
+    /// Adds entity `e` to the store (a spawned object, OpenSCENARIO 1.3 §7.2.2.3), giving it
+    /// the next id; its name must be new.
+    pub(crate) fn spawn(&mut self, mut e: Entity) -> EntityId {
+        let id = EntityId(self.entities.len() as u32);
+        e.id = id;
+        self.names.insert(e.name.clone(), id);
+        self.entities.push(e);
+        id
     }
 
     /// All entities in declaration order.

@@ -11,6 +11,7 @@
 mod controller;
 mod custom;
 mod distance;
+mod entity;
 mod follow_trajectory;
 mod lane_change;
 mod lane_offset;
@@ -306,6 +307,19 @@ impl Host<'_> {
             GlobalAction::Variable { variable_ref, rule } => {
                 variable::apply(self.world, variable_ref, rule, &pos)
             }
+            GlobalAction::Entity { entity_ref, add_at } => {
+                entity::apply(self.world, entity_ref, add_at.as_ref(), &pos)
+            }
+            GlobalAction::Traffic {
+                traffic_name,
+                action,
+            } if crate::runtime::traffic::supports(action) => crate::runtime::traffic::start(
+                self.world,
+                &name,
+                traffic_name.as_deref(),
+                action,
+                &pos,
+            ),
             GlobalAction::TrafficSignal(scenario::TrafficSignalAction::State { name, state }) => {
                 self.world.signals.insert(name.clone(), state.clone());
                 Ok(())
@@ -335,6 +349,10 @@ impl Host<'_> {
         let slot = &mut self.table.slots[id.0 as usize];
         slot.started_at = self.time;
         slot.parts.clear();
+        // Selection actors (ByType, spawned vehicles) are the members at the start.
+        if let Some(now) = self.world.selections.actors_now(id, self.world) {
+            slot.actors = now;
+        }
         let action = slot.action.clone();
         let actors = slot.actors.clone();
         match &action.kind {

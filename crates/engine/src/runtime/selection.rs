@@ -1,0 +1,284 @@
+//! EntitySelection at runtime (OpenSCENARIO 1.3 §7.2.2.2 "Entity selections", §7.2.2.3
+//! "Spawned objects", §7.2.2.4, §7.2.2.5 "Generalization of entities").
+//!
+//! A selection's members are worked out against the world when they are used, not once at
+//! load: EntityRef members (objects, or nested selections recursively) and ByType members,
+//! which take every entity of that type in the store, spawned vehicles included. Only placed
+//! entities are members, so a deleted or sunk vehicle drops out, and a vehicle spawned in a
+//! step counts from the next step's triggers on. Members come once each, in id order.
+//!
+//! Where a selection is used:
+//! * as `TriggeringEntities` (each condition evaluation): the condition is evaluated for every
+//!   current member and combined by `any`/`all` (§7.2.2.2);
+//! * as ManeuverGroup actors: the build expands it and each private action runs per member.
+//!
+//! §7.2.2.5 restricts references that need one position, lane or box: a RelativeTargetLane,
+//! RelativeTargetLaneOffset, RelativeTargetSpeed, Longitudinal/LateralDistanceAction or
+//! SpeedProfileAction reference, and the reference entity of TimeHeadway, TimeToCollision,
+//! RelativeSpeed, RelativeDistance and RelativeAngle conditions must be a ScenarioObject;
+//! [`check_multiplicity`] rejects a selection there when the engine is built. Selection
+//! cycles are rejected by the scenario loader.
+
+use std::borrow::Cow;
+use std::collections::BTreeMap;
+
+use scenario::{
+    Action, ActionKind, Condition, ConditionKind, EntityCondition, EntitySelection, LateralAction,
+    LongitudinalAction, PrivateAction, Scenario, SelectionMember, SourcePos, SpeedTarget,
+    TimeToCollisionTarget, Trigger,
+};
+
+use super::entity::EntityId;
+use super::error::RuntimeError;
+use super::world::World;
+use crate::storyboard::ActionId;
+
+/// The scenario's entity selections, as declared.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Selections {
+    defs: Vec<EntitySelection>,
+    /// Actions whose actors name a selection, with the ManeuverGroup's actor names.
+    actors: BTreeMap<ActionId, Vec<String>>,
+}
+
+impl Selections {
+    /// The selections of `scenario`.
+    pub(crate) fn new(scenario: &Scenario) -> Self {
+        Selections {
+            defs: scenario.entities.entity_selections.clone(),
+            actors: BTreeMap::new(),
+        }
+    }
+
+    /// Records the actions whose ManeuverGroup actors name a selection.
+    pub(crate) fn set_actors(&mut self, actors: Vec<(ActionId, Vec<String>)>) {
+        self.actors = actors.into_iter().collect();
+    }
+
+    /// The actors of action `id` now, if its ManeuverGroup names a selection: objects as
+    /// named, selections by their current members, each once, in the order written.
+    pub(crate) fn actors_now(&self, id: ActionId, world: &World) -> Option<Vec<EntityId>> {
+        let refs = self.actors.get(&id)?;
+        let mut out: Vec<EntityId> = Vec::new();
+        for r in refs {
+            let ids = self
+                .members(world, r)
+                .unwrap_or_else(|| world.id(r).into_iter().collect());
+            for id in ids {
+                if !out.contains(&id) {
+                    out.push(id);
+                }
+            }
+        }
+        Some(out)
+    }
+
+    fn find(&self, name: &str) -> Option<&EntitySelection> {
+        self.defs.iter().find(|s| s.name == name)
+    }
+
+    /// The placed members of selection `name` now, in id order; `None` if `name` is not a
+    /// selection.
+    pub(crate) fn members(&self, world: &World, name: &str) -> Option<Vec<EntityId>> {
+        let selection = self.find(name)?;
+        let mut flags = vec![false; world.entities().len()];
+        let mut visiting = Vec::new();
+        self.collect(world, selection, &mut visiting, &mut flags);
+        Some(
+            world
+                .entities()
+                .iter()
+                .zip(flags)
+                .filter(|(e, f)| *f && e.placed)
+                .map(|(e, _)| e.id)
+                .collect(),
+        )
+    }
+
+    fn collect<'s>(
+        &'s self,
+        world: &World,
+        selection: &'s EntitySelection,
+        visiting: &mut Vec<&'s str>,
+        flags: &mut [bool],
+    ) {
+        // The loader rejects cycles; a revisit is skipped all the same.
+        if visiting.contains(&selection.name.as_str()) {
+            return;
+        }
+        visiting.push(&selection.name);
+        for m in &selection.members {
+            match m {
+                SelectionMember::EntityRef(name) => {
+                    if let Some(nested) = self.find(name) {
+                        self.collect(world, nested, visiting, flags);
+                    } else if let Some(id) = world.id(name) {
+                        flags[id.index()] = true;
+                    }
+                }
+                SelectionMember::ByType(t) => {
+                    for e in world.entities() {
+                        if e.kind.object_type() == *t {
+                            flags[e.id.index()] = true;
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        visiting.pop();
+    }
+
+    /// `condition` with every selection among its triggering entities replaced by the names
+    /// of its current members (unchanged when it names none).
+    pub(crate) fn expand_condition<'c>(
+        &self,
+        world: &World,
+        condition: &'c Condition,
+    ) -> Cow<'c, Condition> {
+        let ConditionKind::ByEntity {
+            triggering_entities,
+            ..
+        } = &condition.kind
+        else {
+            return Cow::Borrowed(condition);
+        };
+        if !triggering_entities
+            .entity_refs
+            .iter()
+            .any(|n| self.find(n).is_some())
+        {
+            return Cow::Borrowed(condition);
+        }
+        let mut names: Vec<String> = Vec::new();
+        for n in &triggering_entities.entity_refs {
+            match self.members(world, n) {
+                Some(ids) => names.extend(ids.iter().map(|&id| world.entity(id).name.clone())),
+                None => names.push(n.clone()),
+            }
+        }
+        names.dedup();
+        let mut expanded = condition.clone();
+        if let ConditionKind::ByEntity {
+            triggering_entities,
+            ..
+        } = &mut expanded.kind
+        {
+            triggering_entities.entity_refs = names;
+        }
+        Cow::Owned(expanded)
+    }
+}
+
+/// Rejects an EntitySelection where §7.2.2.5 requires a single ScenarioObject (module doc).
+pub(crate) fn check_multiplicity(scenario: &Scenario) -> Result<(), RuntimeError> {
+    let selections = &scenario.entities.entity_selections;
+    let check = |name: &str, what: &str, pos: &SourcePos| {
+        if selections.iter().any(|s| s.name == name) {
+            return Err(RuntimeError::at(
+                format!("a ScenarioObject as the reference of {what} (§7.2.2.5)"),
+                format!("EntitySelection '{name}'"),
+                pos,
+            ));
+        }
+        Ok(())
+    };
+    let sb = &scenario.storyboard;
+    let mut actions: Vec<&Action> = sb.init.actions.iter().collect();
+    actions.extend(sb.init.privates.iter().flat_map(|p| p.actions.iter()));
+    let mut triggers: Vec<&Trigger> = sb.stop_trigger.iter().collect();
+    for act in sb.stories.iter().flat_map(|s| &s.acts) {
+        triggers.extend(act.start_trigger.iter().chain(act.stop_trigger.iter()));
+        for ev in act
+            .maneuver_groups
+            .iter()
+            .flat_map(|g| &g.maneuvers)
+            .flat_map(|m| &m.events)
+        {
+            actions.extend(ev.actions.iter());
+            triggers.extend(ev.start_trigger.iter());
+        }
+    }
+    for a in actions {
+        if let Some((name, what)) = action_reference(a) {
+            check(name, what, &a.pos)?;
+        }
+    }
+    for c in triggers
+        .iter()
+        .flat_map(|t| &t.condition_groups)
+        .flat_map(|g| &g.conditions)
+    {
+        if let Some((name, what)) = condition_reference(c) {
+            check(name, what, &c.pos)?;
+        }
+    }
+    Ok(())
+}
+
+/// The single-entity reference of a private action, with the element's name.
+fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
+    let ActionKind::Private(p) = &a.kind else {
+        return None;
+    };
+    match p {
+        PrivateAction::Longitudinal(l) => match l {
+            LongitudinalAction::Speed {
+                target: SpeedTarget::Relative { entity_ref, .. },
+                ..
+            } => Some((entity_ref, "a RelativeTargetSpeed")),
+            LongitudinalAction::LongitudinalDistance { entity_ref, .. } => {
+                Some((entity_ref, "a LongitudinalDistanceAction"))
+            }
+            LongitudinalAction::SpeedProfile {
+                entity_ref: Some(entity_ref),
+                ..
+            } => Some((entity_ref, "a SpeedProfileAction")),
+            _ => None,
+        },
+        PrivateAction::Lateral(l) => match l {
+            LateralAction::LaneChange {
+                target: scenario::LaneChangeTarget::Relative { entity_ref, .. },
+                ..
+            } => Some((entity_ref, "a RelativeTargetLane")),
+            LateralAction::LaneOffset {
+                target: scenario::LaneOffsetTarget::Relative { entity_ref, .. },
+                ..
+            } => Some((entity_ref, "a RelativeTargetLaneOffset")),
+            LateralAction::LateralDistance { entity_ref, .. } => {
+                Some((entity_ref, "a LateralDistanceAction"))
+            }
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// The reference entity of an EntityCondition, with the element's name.
+fn condition_reference(c: &Condition) -> Option<(&str, &'static str)> {
+    let ConditionKind::ByEntity {
+        entity_condition, ..
+    } = &c.kind
+    else {
+        return None;
+    };
+    match entity_condition {
+        EntityCondition::TimeHeadway { entity_ref, .. } => {
+            Some((entity_ref, "a TimeHeadwayCondition"))
+        }
+        EntityCondition::TimeToCollision {
+            target: TimeToCollisionTarget::EntityRef(entity_ref),
+            ..
+        } => Some((entity_ref, "a TimeToCollisionCondition")),
+        EntityCondition::RelativeSpeed { entity_ref, .. } => {
+            Some((entity_ref, "a RelativeSpeedCondition"))
+        }
+        EntityCondition::RelativeDistance { entity_ref, .. } => {
+            Some((entity_ref, "a RelativeDistanceCondition"))
+        }
+        EntityCondition::RelativeAngle { entity_ref, .. } => {
+            Some((entity_ref, "a RelativeAngleCondition"))
+        }
+        _ => None,
+    }
+}

@@ -1,0 +1,160 @@
+//! The running traffic actions (OpenSCENARIO 1.3 XSD `TrafficAction`) and the traffic stage of
+//! the step.
+//!
+//! A traffic action starts, registers here and ends at once in the storyboard (it has no
+//! completion of its own); its source, sink or swarm then works at every step, after the
+//! controllers and trailers moved, until the run ends or a TrafficStopAction names it.
+//! Vehicles spawned in a step appear in that step's frame (t + dt) and in conditions and ByType
+//! selections from the next step's triggers on. TrafficStopAction stops spawning and removing;
+//! the vehicles already spawned drive on. Positions (source, sink) are resolved once, at the
+//! start.
+
+use rand_chacha::ChaCha8Rng;
+use scenario::{SourcePos, TrafficAction};
+
+use super::random::stream;
+use super::source_sink::{Sink, Source};
+use super::swarm::Swarm;
+use crate::position::resolve;
+use crate::runtime::entity::EntityId;
+use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
+use crate::runtime::world::World;
+
+/// The run's seed and the traffic actions at work.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Traffic {
+    /// The run's seed ([`crate::EngineConfig::seed`]).
+    pub seed: u64,
+    running: Vec<Running>,
+}
+
+/// One traffic action at work.
+#[derive(Debug, Clone)]
+pub(crate) struct Running {
+    /// `trafficName`, else the action's name: the prefix of its vehicles' names.
+    pub name: String,
+    /// Its random stream.
+    pub rng: ChaCha8Rng,
+    /// Vehicles spawned so far (the n of `<name>.entity_<n>`).
+    pub spawned: u32,
+    /// Its spawned vehicles still in the scenario.
+    pub members: Vec<EntityId>,
+    kind: Kind,
+}
+
+#[derive(Debug, Clone)]
+enum Kind {
+    Swarm(Box<Swarm>),
+    Source(Box<Source>),
+    Sink(Sink),
+}
+
+impl Running {
+    /// The name of the next vehicle.
+    pub fn next_name(&mut self) -> String {
+        self.spawned += 1;
+        format!("{}.entity_{}", self.name, self.spawned)
+    }
+}
+
+/// Whether oscsim runs this traffic action (TrafficAreaAction is not supported).
+pub(crate) fn supports(action: &TrafficAction) -> bool {
+    matches!(
+        action,
+        TrafficAction::Source { .. }
+            | TrafficAction::Sink { .. }
+            | TrafficAction::Swarm { .. }
+            | TrafficAction::Stop
+    )
+}
+
+/// Starts a traffic action called `action_name` (its `trafficName` if given).
+pub(crate) fn start(
+    world: &mut World,
+    action_name: &str,
+    traffic_name: Option<&str>,
+    action: &TrafficAction,
+    pos: &SourcePos,
+) -> Result<(), RuntimeError> {
+    let name = traffic_name.unwrap_or(action_name).to_owned();
+    let point = |world: &World, position| {
+        resolve(position, world)
+            .map(|r| (r.pose.x, r.pose.y))
+            .map_err(|e| RuntimeError::new(RuntimeErrorKind::Position(e)))
+    };
+    let positive = |what: &str, v: f64| {
+        if v.is_finite() && v >= 0.0 {
+            Ok(v)
+        } else {
+            Err(RuntimeError::at(format!("{what} >= 0"), v.to_string(), pos))
+        }
+    };
+    let kind = match action {
+        TrafficAction::Stop => {
+            let Some(target) = traffic_name else {
+                return Err(RuntimeError::at(
+                    "a trafficName on the TrafficAction of a TrafficStopAction",
+                    "none",
+                    pos,
+                ));
+            };
+            world.traffic.running.retain(|r| r.name != target);
+            return Ok(());
+        }
+        TrafficAction::Swarm { .. } => Kind::Swarm(Box::new(Swarm::new(action, pos)?)),
+        TrafficAction::Source {
+            position,
+            radius,
+            rate,
+            speed,
+            traffic,
+        } => Kind::Source(Box::new(Source::new(
+            point(world, position)?,
+            positive("radius", *radius)?,
+            positive("rate", *rate)?,
+            *speed,
+            traffic.clone(),
+        ))),
+        TrafficAction::Sink {
+            position,
+            radius,
+            rate,
+            ..
+        } => Kind::Sink(Sink::new(
+            point(world, position)?,
+            positive("radius", *radius)?,
+            rate.map(|r| positive("rate", r)).transpose()?,
+        )),
+        _ => return Err(RuntimeError::unsupported("TrafficAreaAction", pos)),
+    };
+    let rng = stream(world.traffic.seed, &name);
+    world.traffic.running.push(Running {
+        name,
+        rng,
+        spawned: 0,
+        members: Vec::new(),
+        kind,
+    });
+    Ok(())
+}
+
+/// The traffic stage: every running action spawns or removes over one step of `dt` s. An
+/// action's spawn failures (a vehicle template that does not build) end that action.
+pub(crate) fn step(world: &mut World, dt: f64) {
+    let mut running = std::mem::take(&mut world.traffic.running);
+    running.retain_mut(|r| {
+        r.members.retain(|&id| world.entity(id).placed);
+        let mut kind = r.kind.clone();
+        let result = match &mut kind {
+            Kind::Swarm(s) => s.step(world, r),
+            Kind::Source(s) => s.step(world, r, dt),
+            Kind::Sink(s) => {
+                s.step(world, dt);
+                Ok(())
+            }
+        };
+        r.kind = kind;
+        result.is_ok()
+    });
+    world.traffic.running = running;
+}

@@ -1,0 +1,69 @@
+//! AddEntityAction and DeleteEntityAction (OpenSCENARIO 1.3 XSD `EntityAction`): an entity
+//! leaves the scenario and comes back; conditions on it while it is away.
+
+mod runtime_support;
+
+use std::path::PathBuf;
+
+use engine::output::EventRecord;
+use engine::{Engine, EngineConfig};
+use runtime_support::Recorder;
+
+fn file(name: &str) -> PathBuf {
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
+}
+
+/// Car1 drives 10 m/s from s = 20. DeleteEntityAction starts at the first step with t > 2
+/// (2.05 s): the frame of 2.05 s was written the step before, so Car1 is in it (x = 20 + 20.5
+/// = 40.5) and in no frame after until AddEntityAction at 4.05 s puts it at s = 200 at rest
+/// (frames from 4.10 s on). While Car1 is away, the condition "Car1 within 10 m of Car2"
+/// cannot be evaluated: it reads false (logged once as an error naming the condition's
+/// place); after the re-entry, 5 m from the parked Car2, it holds at once (4.05 s).
+#[test]
+fn deleted_entity_leaves_and_reenters_at_rest() {
+    let mut engine =
+        Engine::load(&file("add_delete.xosc"), &[], EngineConfig::default()).expect("loads");
+    let mut frames = Recorder::default();
+    let mut events = Vec::new();
+    engine.run(&mut frames, &mut events).expect("runs");
+    let car1 = |t: f64| {
+        frames
+            .0
+            .iter()
+            .find(|r| r.name == "Car1" && (r.time - t).abs() < 1e-6)
+    };
+    let last = car1(2.05).expect("Car1 still in the frame of 2.05 s");
+    assert!((last.x - 40.5).abs() < 1e-9, "{last:?}");
+    for step in 42..=81 {
+        let t = step as f64 * 0.05;
+        assert!(car1(t).is_none(), "Car1 in the frame of {t} s");
+    }
+    let back = car1(4.1).expect("Car1 back at 4.10 s");
+    assert!(
+        (back.x - 200.0).abs() < 1e-9 && back.speed == 0.0,
+        "{back:?}"
+    );
+    let later = car1(6.0).expect("Car1 stays");
+    assert!((later.x - 200.0).abs() < 1e-9, "{later:?}");
+    let errors: Vec<_> = events
+        .iter()
+        .filter_map(|e| match e {
+            EventRecord::Error {
+                element, message, ..
+            } => Some((element, message)),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(errors.len(), 1, "{errors:?}");
+    assert_eq!(errors[0].0, "car1 near car2");
+    assert!(
+        errors[0].1.contains("add_delete.xosc:59:51"),
+        "{}",
+        errors[0].1
+    );
+    let near = events.iter().find_map(|e| match e {
+        EventRecord::Transition(t) if t.name == "car1 near" => Some(t.time),
+        _ => None,
+    });
+    assert!(near.is_some_and(|t| (t - 4.05).abs() < 1e-9), "{near:?}");
+}

@@ -1,0 +1,79 @@
+//! Entity selections at runtime (OpenSCENARIO 1.3 §7.2.2.2 "Entity selections", §7.2.2.5
+//! "Generalization of entities"): ManeuverGroup actors, nested selections, the multiplicity
+//! restriction and cycles.
+
+mod runtime_support;
+
+use std::path::PathBuf;
+
+use engine::{Engine, EngineConfig, LoadError, RuntimeErrorKind};
+use runtime_support::Recorder;
+
+fn file(name: &str) -> PathBuf {
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
+}
+
+/// §7.2.2.2: "all private actions within the maneuver group are applied individually, to each
+/// ScenarioObject instance in the entity selection". Actor `Cars` = Car1 + nested `Rest`
+/// (Car2, Car3). All drive 10 m/s from s = 20, 60 (lane −1) and 100 (lane 1, towards −s);
+/// the step SpeedAction to 20 m/s starts at the first step with t > 1, t = 1.05 s. At t = 2 s
+/// each has covered 10 · 1.05 + 20 · 0.95 = 29.5 m: Car1 x = 49.5, Car2 x = 89.5, Car3
+/// x = 100 − 29.5 = 70.5. Car4, not a member, keeps 10 m/s: x = 140 + 20 = 160.
+#[test]
+fn maneuver_group_actor_selection_of_three_vehicles_changes_all_three() {
+    const TOLERANCE: f64 = 1e-9;
+    let mut engine =
+        Engine::load(&file("selection_actors.xosc"), &[], EngineConfig::default()).expect("loads");
+    let mut frames = Recorder::default();
+    engine.run(&mut frames, &mut Vec::new()).expect("runs");
+    for (name, x, speed) in [
+        ("Car1", 49.5, 20.0),
+        ("Car2", 89.5, 20.0),
+        ("Car3", 70.5, 20.0),
+        ("Car4", 160.0, 10.0),
+    ] {
+        let row = frames.at(name, 2.0);
+        assert!((row.x - x).abs() < TOLERANCE, "{row:?}, want x = {x}");
+        assert!((row.speed - speed).abs() < TOLERANCE, "{row:?}");
+    }
+}
+
+/// §7.2.2.5: "the interpretation of the distance to an EntitySelection is ambiguous … A
+/// reference to an Entity should be restricted to an instance of a ScenarioObject". A
+/// RelativeDistanceCondition to the selection `Pair` is refused when the engine is built, at
+/// the condition's position.
+#[test]
+fn distance_to_a_selection_is_rejected_with_its_position() {
+    let err = Engine::load(
+        &file("selection_distance.xosc"),
+        &[],
+        EngineConfig::default(),
+    )
+    .expect_err("a distance to a selection must be refused");
+    let LoadError::Runtime(e) = &err else {
+        panic!("expected a runtime build error, found {err}");
+    };
+    assert!(matches!(e.kind(), RuntimeErrorKind::Invalid { .. }));
+    let text = err.to_string();
+    assert!(
+        text.starts_with(
+            "expected a ScenarioObject as the reference of a RelativeDistanceCondition (§7.2.2.5), found EntitySelection 'Pair' at "
+        ) && text.ends_with("selection_distance.xosc:69:51"),
+        "{text}"
+    );
+}
+
+/// §7.2.2.2: A includes B, which includes A. Refused at load, naming the cycle and the
+/// declaration that closes it (line 18, column 9 of the file).
+#[test]
+fn cyclic_selection_is_rejected_at_load() {
+    let err = Engine::load(&file("selection_cycle.xosc"), &[], EngineConfig::default())
+        .expect_err("a selection cycle must be refused");
+    assert!(matches!(err, LoadError::Scenario(_)), "{err}");
+    let text = err.to_string();
+    assert!(
+        text.starts_with("entity selection cycle: A → B → A at ")
+            && text.ends_with("selection_cycle.xosc:18:9"),
+        "{text}"
+    );
+}
