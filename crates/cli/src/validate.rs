@@ -43,16 +43,32 @@ fn parse_param(text: &str) -> Result<(String, String), String> {
 /// Runs `oscsim validate`.
 pub fn run(args: ValidateArgs) -> anyhow::Result<ExitCode> {
     let stdout = std::io::stdout();
-    let mut out = stdout.lock();
-    let mut all_ok = true;
-    for file in &args.files {
-        all_ok &= validate_file(file, &args, &mut out)?;
-    }
+    let all_ok = validate_all(&args, &mut stdout.lock())?;
     Ok(if all_ok {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
     })
+}
+
+/// Validates every file of `args`, then, for more than one, a summary line; `true` when all
+/// load.
+fn validate_all(args: &ValidateArgs, out: &mut impl Write) -> anyhow::Result<bool> {
+    let mut failed = 0;
+    for file in &args.files {
+        if !validate_file(file, args, out)? {
+            failed += 1;
+        }
+    }
+    if args.files.len() > 1 {
+        writeln!(
+            out,
+            "{} of {} files loaded, {failed} failed",
+            args.files.len() - failed,
+            args.files.len()
+        )?;
+    }
+    Ok(failed == 0)
 }
 
 /// Validates one file, writing its report to `out`; `true` when it loads.
@@ -171,6 +187,19 @@ mod tests {
         let (ok, text) = report(corpus("esmini/xosc/cut-in.xosc"), false, bad);
         assert!(!ok);
         assert!(text.contains("found unknown 'NoSuch'"), "{text}");
+    }
+
+    #[test]
+    fn several_files_end_with_a_summary_and_fail_if_one_fails() {
+        let files = vec![
+            corpus("esmini/xosc/cut-in.xosc"),
+            corpus("esmini/xosc/auto_light.xosc"),
+        ];
+        let mut out = Vec::new();
+        let ok = validate_all(&args(files, false, vec![]), &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        assert!(!ok);
+        assert!(text.ends_with("1 of 2 files loaded, 1 failed\n"), "{text}");
     }
 
     #[test]
