@@ -6,7 +6,8 @@
 //! the point is (∫cos θ, ∫sin θ) from 0 to ds: the Fresnel integrals, shifted. The shift
 //! (σ₀ = κ₀/c) makes the closed Fresnel form lose digits when c is small, so the integrals are
 //! evaluated directly by composite 8-point Gauss–Legendre quadrature (see `quadrature`), on
-//! panels over which θ changes by at most 0.5 rad, tabulated once per spiral: error at f64 round-off (< 1e-12 m for
+//! panels over which θ changes by at most 0.5 rad, tabulated once per spiral (a Fresnel
+//! function from a special-functions crate would have the same cancellation problem): error at f64 round-off (< 1e-12 m for
 //! any spiral in the corpus; checked against tabulated Fresnel values in the tests).
 
 use super::quadrature::gauss8_pair;

@@ -1,5 +1,5 @@
-//! Questions asked of a loaded network: poses, lane extents, world → road look-up, the
-//! lane graph and routes.
+//! Questions asked of a loaded network (OpenDRIVE 1.8 §8 coordinate systems, §11 lanes, §12
+//! junctions): poses, lane extents, world → road look-up, the lane graph and routes.
 
 mod frame;
 mod graph;

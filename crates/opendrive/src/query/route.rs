@@ -6,6 +6,11 @@
 //! driving direction within a lane section. A lane change takes no length of its own: it
 //! happens at the point where the previous lane was entered. Only drivable lanes
 //! ([`LaneType::is_drivable`](crate::LaneType::is_drivable)) are used between start and end.
+//!
+//! Written by hand rather than with `petgraph`: the lane graph is implicit (successors are
+//! derived on demand from road, lane and junction links, nothing is materialised), start and
+//! goal lie inside lanes, and the route needs its path with entry and exit s per lane, which
+//! `petgraph::algo::dijkstra` (costs only) does not give; the search is a plain binary heap.
 
 use std::cmp::Ordering;
 use std::collections::{BinaryHeap, HashMap};
