@@ -163,4 +163,10 @@ fn traveled_distance_and_triggering_rules() {
     assert!(!eval(&w, &travelled(&["Ego", "Lead"], true)));
     w.entity_mut("Lead").odometer = 100.0;
     assert!(eval(&w, &travelled(&["Ego", "Lead"], true)));
+    // An EntitySelection stands for its members (OpenSCENARIO 1.3 §7.2.2).
+    w.selections
+        .insert("Cars".into(), vec!["Ego".into(), "Lead".into()]);
+    w.entity_mut("Lead").odometer = 99.0;
+    assert!(eval(&w, &travelled(&["Cars"], false)));
+    assert!(!eval(&w, &travelled(&["Cars"], true)));
 }

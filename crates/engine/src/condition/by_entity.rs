@@ -1,7 +1,7 @@
 //! ByEntityCondition (OpenSCENARIO 1.3 §7.6.3, XSD `ByEntityCondition`,
 //! `TriggeringEntities`): an EntityCondition tested for each triggering entity, combined by
 //! `triggeringEntitiesRule` — `any`: true when it holds for at least one, `all`: when it holds
-//! for every one. Every triggering entity is evaluated each time (no short cut), so that the
+//! for every one. An EntityRef naming an EntitySelection stands for all its members. Every triggering entity is evaluated each time (no short cut), so that the
 //! duration conditions keep their memory of each.
 
 use opendrive::Real;
@@ -31,12 +31,22 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
     let mut any = false;
     let mut all = !triggering.entity_refs.is_empty();
     for name in &triggering.entity_refs {
-        let e = ctx.entity(name).ok_or_else(|| {
-            ConditionError::new(ConditionErrorKind::UnknownEntity(name.clone()), pos)
-        })?;
-        let holds = holds(condition, ctx, &e, state).map_err(|k| ConditionError::new(k, pos))?;
-        any |= holds;
-        all &= holds;
+        // An EntityRef may name an EntitySelection: each member is a triggering entity.
+        let members = match ctx.entity(name) {
+            Some(_) => vec![name.clone()],
+            None => ctx.entity_selection(name).ok_or_else(|| {
+                ConditionError::new(ConditionErrorKind::UnknownEntity(name.clone()), pos)
+            })?,
+        };
+        for member in &members {
+            let e = ctx.entity(member).ok_or_else(|| {
+                ConditionError::new(ConditionErrorKind::UnknownEntity(member.clone()), pos)
+            })?;
+            let holds =
+                holds(condition, ctx, &e, state).map_err(|k| ConditionError::new(k, pos))?;
+            any |= holds;
+            all &= holds;
+        }
     }
     Ok(match triggering.rule {
         TriggeringEntitiesRule::All => all,

@@ -45,6 +45,14 @@ pub trait ConditionContext: EntityQuery {
     /// `animation` is true; `None` when no TimeOfDay was ever set.
     fn time_of_day(&self) -> Option<f64>;
 
+    /// The member entities of EntitySelection `name` (OpenSCENARIO 1.3 §7.2.2; expanded, in
+    /// declaration order), for TriggeringEntities that name a selection; `None` when `name` is
+    /// no selection. The default knows no selections.
+    fn entity_selection(&self, name: &str) -> Option<Vec<String>> {
+        let _ = name;
+        None
+    }
+
     /// True when the bounding boxes of entities `a` and `b` touch or overlap now
     /// (CollisionCondition). The default implementation tests the two boxes'
     /// ground-plane footprints (OpenSCENARIO 2.0 §8.7.5.1.1 time_to_collision() being 0);

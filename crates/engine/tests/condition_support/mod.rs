@@ -155,6 +155,7 @@ pub struct FakeWorld {
     pub controller_phases: HashMap<String, String>,
     pub time_of_day: Option<f64>,
     pub storyboard: Storyboard,
+    pub selections: HashMap<String, Vec<String>>,
 }
 
 impl FakeWorld {
@@ -171,6 +172,7 @@ impl FakeWorld {
             controller_phases: HashMap::new(),
             time_of_day: None,
             storyboard: small_storyboard(),
+            selections: HashMap::new(),
         }
     }
 
@@ -309,6 +311,9 @@ impl ConditionContext for FakeWorld {
     }
     fn time_of_day(&self) -> Option<f64> {
         self.time_of_day
+    }
+    fn entity_selection(&self, name: &str) -> Option<Vec<String>> {
+        self.selections.get(name).cloned()
     }
 }
 
