@@ -105,6 +105,12 @@ pub enum ErrorKind {
         /// Those of `searched` that do not exist.
         missing: Vec<PathBuf>,
     },
+    /// Catalog entries that refer to each other in a circle (a vehicle whose trailer is
+    /// itself).
+    CatalogCycle {
+        /// "catalog/entry" along the cycle, first repeated at the end.
+        cycle: Vec<String>,
+    },
     /// A catalog that exists but has no entry of that name.
     CatalogEntryNotFound {
         /// The catalog name.
@@ -296,6 +302,11 @@ impl fmt::Display for ErrorKind {
                     "expected a declared variable, found unknown variable '{name}'"
                 )
             }
+            Self::CatalogCycle { cycle } => write!(
+                f,
+                "expected catalog references without cycles, found {}",
+                cycle.join(" → ")
+            ),
             Self::UnknownMonitor { name } => {
                 write!(
                     f,

@@ -134,3 +134,19 @@ fn deeply_nested_elements_do_not_overflow_the_stack() {
         .to_string()
         .starts_with("expected one of Init, Story, StopTrigger in Storyboard, found element Deep"));
 }
+
+#[test]
+fn a_catalog_entry_that_contains_itself_is_a_cycle_not_a_stack_overflow() {
+    // catalog_cycle.xosc references Cyclic/truck, whose Trailer references Cyclic/truck again.
+    let err = Scenario::load(&fixture("catalog_cycle.xosc")).unwrap_err();
+    assert_eq!(
+        err.kind().to_string(),
+        "expected catalog references without cycles, found Cyclic/truck → Cyclic/truck"
+    );
+    // The inner reference, line 12 of catalogs_cyclic/Cyclic.xosc, indented by 10.
+    assert!(
+        err.pos().file.ends_with("catalogs_cyclic/Cyclic.xosc"),
+        "{err}"
+    );
+    assert_eq!((err.pos().line, err.pos().col), (12, 11));
+}

@@ -116,12 +116,33 @@ pub(crate) fn read_catalog_reference<'a, T>(
         file: ctx.docs[doc].path.to_path_buf(),
         pos,
     };
+    // An entry that (through a Trailer, say) refers to itself would recurse for ever.
+    let label = format!("{}/{}", origin.catalog_name, origin.entry_name);
+    if ctx
+        .entry_stack
+        .iter()
+        .any(|(d, id, _)| *d == doc && *id == entry.id())
+    {
+        let from = ctx
+            .entry_stack
+            .iter()
+            .position(|(d, id, _)| *d == doc && *id == entry.id())
+            .unwrap_or(0);
+        let mut cycle: Vec<String> = ctx.entry_stack[from..]
+            .iter()
+            .map(|(_, _, l)| l.clone())
+            .collect();
+        cycle.push(label);
+        return Err(Error::new(ErrorKind::CatalogCycle { cycle }, origin.pos));
+    }
+    ctx.entry_stack.push((doc, entry.id(), label));
     let saved_cur = std::mem::replace(&mut ctx.cur, doc);
     let globals = ctx.scopes.first().cloned().unwrap_or_default();
     let saved_scopes = std::mem::replace(&mut ctx.scopes, vec![globals]);
     let result = read_entry(ctx, entry, &assignments, read);
     ctx.scopes = saved_scopes;
     ctx.cur = saved_cur;
+    ctx.entry_stack.pop();
     result.map(|value| (value, origin))
 }
 

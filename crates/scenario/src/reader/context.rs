@@ -64,6 +64,8 @@ pub(crate) struct Ctx<'a> {
     /// The catalog entry (document, node) whose declarations are already in scope, with the
     /// reference's ParameterAssignments applied; [`Ctx::scoped`] must not declare them again.
     pub entry_scoped: Option<(usize, roxmltree::NodeId)>,
+    /// Catalog entries being read, outermost first: (document, node, "catalog/entry").
+    pub entry_stack: Vec<(usize, roxmltree::NodeId, String)>,
     /// Warnings found where only `&self` is at hand; merged by [`Ctx::take_warnings`].
     pub warnings_later: RefCell<Vec<Warning>>,
 }

@@ -175,6 +175,7 @@ fn new_ctx<'a>(docs: &'a [Doc<'a>]) -> Ctx<'a> {
         catalogs: CatalogIndex::default(),
         entity_uses: Vec::new(),
         entry_scoped: None,
+        entry_stack: Vec::new(),
         warnings_later: RefCell::new(Vec::new()),
     }
 }
