@@ -63,6 +63,50 @@ fn relative_clearance_counts_lanes_from_the_triggering_entity() {
         &w,
         &clearance(false, vec![(Some(0), Some(0))], 0.0, 5.0)
     ));
+    // The area must exist: straight_500m has lanes −3 … 3, so from lane −1 three lanes to the
+    // right (relative −3: lane −4) is no area, and the condition is false although empty.
+    w.place_on_lane("Other", "1", 1, 400.0, false);
+    assert!(eval(
+        &w,
+        &clearance(true, vec![(Some(-2), Some(-2))], 10.0, 10.0)
+    ));
+    assert!(!eval(
+        &w,
+        &clearance(true, vec![(Some(-3), Some(-3))], 10.0, 10.0)
+    ));
+}
+
+#[test]
+fn relative_clearance_with_free_space_counts_the_whole_box() {
+    let mut w = FakeWorld::new(corpus_road("esmini/xodr/straight_500m.xodr"));
+    w.place_on_lane("Ego", "1", -1, 100.0, true);
+    // Other's reference point is on lane −2 (the shoulder, t from −3.07 to −4.75) at
+    // t = −3.5; its 1.8 m wide box reaches t = −2.6, inside lane −1 (t from 0 to −3.07).
+    let mut pose = w.network.road_pose("1", 105.0, -3.5).unwrap();
+    pose.h = 0.0;
+    w.place("Other", pose);
+    let own_lane = |free_space| {
+        by_entity(
+            &["Ego"],
+            false,
+            EntityCondition::RelativeClearance {
+                opposite_lanes: false,
+                distance_forward: Some(20.0),
+                distance_backward: Some(0.0),
+                free_space,
+                relative_lane_ranges: vec![(Some(0), Some(0))],
+                entity_refs: vec![],
+            },
+        )
+    };
+    assert!(
+        eval(&w, &own_lane(false)),
+        "reference point on lane −2: lane −1 clear"
+    );
+    assert!(
+        !eval(&w, &own_lane(true)),
+        "box reaches into lane −1: occupied"
+    );
 }
 
 fn angle(angle: f64, cs: Option<CoordinateSystem>) -> scenario::Condition {

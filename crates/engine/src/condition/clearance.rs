@@ -1,15 +1,20 @@
-//! RelativeClearanceCondition (OpenSCENARIO 1.3 §7.6.3, 1.2+): true when no other entity
-//! occupies the given lanes within the given longitudinal range around the triggering entity.
+//! RelativeClearanceCondition (OpenSCENARIO 1.3 §7.6.3, 1.2+): "evaluates to true, if the
+//! specified area exists and is free, otherwise evaluates to false".
 //!
 //! oscsim's reading:
+//! * The area exists when every lane a bounded `relativeLaneRange` names exists on the
+//!   triggering entity's road at its s (a range reaching past the road's edge does not).
 //! * Lanes are counted relative to the triggering entity's lane, positive to the left of its
 //!   direction of travel, the centre lane 0 skipped (lane −1 next to lane 1 is one lane away).
 //!   `relativeLaneRange` entries (from, to) are inclusive; an absent bound is open; no entry
 //!   means every lane. Only entities on the triggering entity's road are compared.
 //! * `oppositeLanes` false ignores entities on lanes driven the other way.
-//! * The longitudinal range is [−distanceBackward, distanceForward] (absent: 0) along the
-//!   road in the triggering entity's direction of travel, between reference points, or
-//!   between boxes with `freeSpace` (overlapping boxes are at 0).
+//! * The longitudinal range is [−distanceBackward, distanceForward] (absent: 0, as the XSD
+//!   says) along the road in the direction the triggering entity faces, between reference
+//!   points, or between boxes with `freeSpace` (overlapping boxes are at 0). The standard
+//!   measures along the centre line of the entity's lane; oscsim along the reference line.
+//! * Without `freeSpace` another entity occupies the lane of its reference point; with it,
+//!   every lane a corner of its box stands on ("the whole bounding box is considered").
 //! * `EntityRef` entries restrict the check to those entities; none means all.
 
 use opendrive::{Direction, Real, RoadNetwork};
@@ -17,7 +22,7 @@ use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType};
 
 use super::measure::{distance, Target};
 use super::ConditionErrorKind;
-use crate::position::{EntityQuery, EntityView};
+use crate::position::{add_lanes, EntityQuery, EntityView};
 
 /// The attributes of a RelativeClearanceCondition.
 pub(crate) struct Clearance<'c> {
@@ -36,6 +41,21 @@ fn lane_index(id: i32) -> i32 {
     } else {
         id
     }
+}
+
+/// The lanes of road `road_id` that the corners of `e`'s box stand on.
+fn box_lanes<'n>(
+    network: &'n RoadNetwork,
+    e: &EntityView<'_>,
+    road_id: &'n str,
+) -> impl Iterator<Item = i32> + 'n {
+    let corners = e.bounding_box.footprint(&e.pose).corners();
+    corners.into_iter().filter_map(move |[x, y]| {
+        network
+            .locate_on_road(road_id, x, y)
+            .filter(|p| p.distance <= opendrive::LENGTH_EPSILON)
+            .map(|p| p.lane_id)
+    })
 }
 
 fn direction(network: &RoadNetwork, road: &str, lane: i32, s: Real) -> Option<Direction> {
@@ -60,6 +80,18 @@ pub(crate) fn clear<Q: EntityQuery + ?Sized>(
         -1
     };
     let own_dir = direction(network, &own.road_id, own.lane_id, own.s);
+    // The area must exist: every lane a bounded range names, on the entity's road at its s.
+    for &(from, to) in c.relative_lane_ranges {
+        let (Some(from), Some(to)) = (from, to) else {
+            continue;
+        };
+        for k in from.min(to)..=from.max(to) {
+            let lane = add_lanes(own.lane_id, travel * k);
+            if network.lane_boundaries(&own.road_id, lane, own.s).is_err() {
+                return Ok(false);
+            }
+        }
+    }
     let measure = DistanceMeasure {
         freespace: c.free_space,
         coordinate_system: Some(CoordinateSystem::Road),
@@ -85,11 +117,15 @@ pub(crate) fn clear<Q: EntityQuery + ?Sized>(
         if !c.opposite_lanes && direction(network, &rp.road_id, rp.lane_id, rp.s) != own_dir {
             continue;
         }
-        let lanes = travel * (lane_index(rp.lane_id) - lane_index(own.lane_id));
-        let in_lanes = c.relative_lane_ranges.is_empty()
-            || c.relative_lane_ranges.iter().any(|&(from, to)| {
-                from.map_or(true, |f| f <= lanes) && to.map_or(true, |t| lanes <= t)
-            });
+        let in_range = |lane: i32| {
+            let k = travel * (lane_index(lane) - lane_index(own.lane_id));
+            c.relative_lane_ranges.is_empty()
+                || c.relative_lane_ranges
+                    .iter()
+                    .any(|&(from, to)| from.map_or(true, |f| f <= k) && to.map_or(true, |t| k <= t))
+        };
+        let in_lanes = in_range(rp.lane_id)
+            || (c.free_space && box_lanes(network, &other, &rp.road_id).any(in_range));
         if !in_lanes {
             continue;
         }

@@ -34,5 +34,5 @@ pub use query::{EntityQuery, EntityView};
 pub use resolve::resolve;
 pub use resolved::ResolvedPosition;
 
-pub(crate) use lane::driving_heading as lane_driving_heading;
+pub(crate) use lane::{add_lanes, driving_heading as lane_driving_heading};
 pub(crate) use orientation::local_to_world;
