@@ -6,8 +6,9 @@
 //! Distances are measured along the road (s difference, when both are on the same road; else
 //! along the actor's heading). Without DynamicConstraints the actor is put at the distance at
 //! once and takes the reference's speed (longitudinal) — the standard leaves the approach to the
-//! implementation. With them, a critically damped spring (ω = 1 rad/s) drives the gap error to
-//! zero within the acceleration, deceleration and speed limits. A non-continuous action ends
+//! implementation. With them, a critically damped spring drives the gap error to zero within
+//! the acceleration, deceleration, rate and speed limits; its stiffness grows with the limit it
+//! works against (0.4/m × limit), the tuning esmini uses, so that the corpus runs compare. A non-continuous action ends
 //! when the gap is within 0.1 m and the relative speed within 0.1 m/s.
 
 use opendrive::Direction;
@@ -26,8 +27,9 @@ use crate::storyboard::ActionStatus;
 
 /// Gap error (m) and speed difference (m/s) at which a non-continuous action has arrived.
 const ARRIVED: f64 = 0.1;
-/// Natural frequency (rad/s) of the constrained gap controller.
-const OMEGA: f64 = 1.0;
+/// Stiffness per m/s² of acceleration limit (1/m) of the constrained gap controller: the
+/// spring constant is this times the limit in the direction of the correction.
+const STIFFNESS_PER_LIMIT: f64 = 0.4;
 
 /// A running LongitudinalDistanceAction.
 #[derive(Debug, Clone)]
@@ -40,6 +42,8 @@ pub(crate) struct LongitudinalState {
     side: f64,
     continuous: bool,
     limits: Option<scenario::DynamicConstraints>,
+    /// Acceleration of the last step (m/s²), for the jerk limits.
+    acceleration: f64,
 }
 
 /// A running LateralDistanceAction.
@@ -110,6 +114,7 @@ pub(crate) fn start_longitudinal(
         side,
         continuous: *continuous,
         limits: *dynamic_constraints,
+        acceleration: 0.0,
     };
     Ok(match step_longitudinal(world, actor, &mut state, 0.0) {
         ActionStatus::Running => Part::LongitudinalDistance(state),
@@ -170,9 +175,25 @@ pub(crate) fn step_longitudinal(
                 .or(perf.map(|p| p.max_deceleration))
                 .unwrap_or(f64::INFINITY);
             let max_speed = limits.max_speed.unwrap_or(a.max_speed());
-            let closing = (v_ref - v) * s.side;
-            let acc = (OMEGA * OMEGA * error + 2.0 * OMEGA * closing) * s.side;
-            let acc = acc.clamp(-max_dec, max_acc);
+            // A critically damped spring on the gap error whose stiffness scales with the
+            // limit it works against (k = 0.4/m × limit, damping 2√k), clamped to the limits,
+            // with the change of acceleration bounded by the rate limits when given.
+            let toward = if error * s.side < 0.0 {
+                max_acc
+            } else {
+                max_dec
+            };
+            let k = STIFFNESS_PER_LIMIT * toward.min(1e6);
+            let acc = (k * error) * s.side - 2.0 * k.sqrt() * (v - v_ref);
+            let mut acc = acc.clamp(-max_dec, max_acc);
+            if acc < st_acc(s) {
+                if let Some(rate) = limits.max_deceleration_rate {
+                    acc = acc.max(st_acc(s) - rate * dt);
+                }
+            } else if let Some(rate) = limits.max_acceleration_rate {
+                acc = acc.min(st_acc(s) + rate * dt);
+            }
+            s.acceleration = acc;
             world.entity_mut(actor).speed = (v + acc * dt).clamp(0.0, max_speed);
         }
         Some(_) => {}
@@ -183,6 +204,11 @@ pub(crate) fn step_longitudinal(
     } else {
         ActionStatus::Running
     }
+}
+
+/// The acceleration of the previous step.
+fn st_acc(s: &LongitudinalState) -> f64 {
+    s.acceleration
 }
 
 /// Starts a LateralDistanceAction.
