@@ -66,4 +66,19 @@ fn deleted_entity_leaves_and_reenters_at_rest() {
         _ => None,
     });
     assert!(near.is_some_and(|t| (t - 4.05).abs() < 1e-9), "{near:?}");
+    let changes: Vec<(f64, &str)> = events
+        .iter()
+        .filter_map(|e| match e {
+            EventRecord::Entity {
+                time,
+                entity,
+                change,
+                ..
+            } if entity == "Car1" => Some((*time, change.as_str())),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(changes.len(), 2, "{changes:?}");
+    assert!((changes[0].0 - 2.05).abs() < 1e-9 && changes[0].1 == "deleted");
+    assert!((changes[1].0 - 4.05).abs() < 1e-9 && changes[1].1 == "added");
 }

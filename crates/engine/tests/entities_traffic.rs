@@ -57,11 +57,27 @@ fn by_type_counts_a_spawned_vehicle_the_step_after_it_appears() {
 /// those spawned by t = 10 s (x ≈ 100 + 20 (20 − n) ≥ 295) have all been removed.
 #[test]
 fn sink_removes_vehicles_that_reach_it() {
-    let (frames, _) = run(&file("traffic_source_sink.xosc"), EngineConfig::default());
+    let (frames, events) = run(&file("traffic_source_sink.xosc"), EngineConfig::default());
     let end = frames.0.last().map_or(0.0, |r| r.time);
+    let logged = |entity: &str, what: &str| {
+        events.iter().find_map(|e| match e {
+            EventRecord::Entity {
+                time,
+                element,
+                entity: n,
+                change,
+            } if n == entity && change == what => Some((*time, element.clone())),
+            _ => None,
+        })
+    };
     let mut removed = 0;
     for n in 1..=20 {
         let name = format!("src.entity_{n}");
+        let (t, by) = logged(&name, "spawned").expect("spawn logged");
+        assert!(
+            (t - n as f64).abs() < 1e-9 && by == "src",
+            "{name}: {t} {by}"
+        );
         let last = rows(&frames, &name)
             .last()
             .unwrap_or_else(|| panic!("{name} never appeared"));
@@ -71,6 +87,12 @@ fn sink_removes_vehicles_that_reach_it() {
         );
         if last.time < end - 1e-9 {
             assert!((294.0..295.0).contains(&last.x), "{name} left at {last:?}");
+            // The log names the sink and the first frame without the vehicle.
+            let (t, by) = logged(&name, "removed").expect("removal logged");
+            assert!(
+                (t - last.time - 0.05).abs() < 1e-9 && by == "sink",
+                "{t} {by}"
+            );
             removed += 1;
         }
     }

@@ -32,6 +32,20 @@ pub enum EventRecord {
         /// What was skipped and where, e.g. "SynchronizeAction at x.xosc:10:5".
         message: String,
     },
+    /// An entity changed outside its motion: it entered or left the scenario
+    /// (AddEntityAction, DeleteEntityAction, a traffic source, sink or swarm), or an
+    /// AppearanceAction set one of its lights or animations (runtime/actions/appearance.rs).
+    Entity {
+        /// Simulation time (s): of the action's start, or for traffic actions of the first frame
+        /// that shows the vehicle (or its absence).
+        time: f64,
+        /// The action's or traffic action's name.
+        element: String,
+        /// The entity's name.
+        entity: String,
+        /// What changed, e.g. "spawned", "removed", "light lowBeam on".
+        change: String,
+    },
     /// An action failed; the run stops with this error.
     Error {
         /// Simulation time (s).
@@ -66,6 +80,7 @@ impl EventRecord {
             EventRecord::Transition(t) => t.time,
             EventRecord::CustomCommand { time, .. }
             | EventRecord::Unsupported { time, .. }
+            | EventRecord::Entity { time, .. }
             | EventRecord::Error { time, .. } => *time,
         }
     }

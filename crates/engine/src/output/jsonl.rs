@@ -81,6 +81,18 @@ impl<W: Write> EventSink for JsonlWriter<W> {
                 string(element),
                 string(message)
             ),
+            EventRecord::Entity {
+                time,
+                element,
+                entity,
+                change,
+            } => writeln!(
+                self.out,
+                "{{\"time\":{time:.3},\"element\":{},\"kind\":\"entity\",\"entity\":{},\"change\":{}}}",
+                string(element),
+                string(entity),
+                string(change)
+            ),
             EventRecord::Error {
                 time,
                 element,

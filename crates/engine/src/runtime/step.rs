@@ -260,6 +260,8 @@ impl Engine {
 
         // Stage 5: output.
         let clock = Instant::now();
+        // Vehicles spawned and removed by traffic actions in this step (runtime/traffic).
+        log.borrow_mut().append(&mut world.traffic.events);
         frames
             .frame(&Frame {
                 time,

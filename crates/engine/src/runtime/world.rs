@@ -40,6 +40,10 @@ pub struct World {
     pub(crate) traffic: super::traffic::Traffic,
     /// The scenario's entity selections, expanded when used (runtime/selection.rs).
     pub(crate) selections: super::selection::Selections,
+    /// Lights and animations set by AppearanceActions (runtime/actions/appearance.rs).
+    pub(crate) appearance: super::actions::Appearances,
+    /// Environment set by EnvironmentActions (runtime/actions/environment.rs).
+    pub(crate) environment: super::actions::EnvironmentState,
 }
 
 impl World {
@@ -61,6 +65,8 @@ impl World {
             trailers: super::trailer::Trailers::default(),
             traffic: super::traffic::Traffic::default(),
             selections: super::selection::Selections::default(),
+            appearance: super::actions::Appearances::default(),
+            environment: super::actions::EnvironmentState::default(),
         }
     }
 

@@ -8,10 +8,12 @@
 //! in the control domain (longitudinal, lateral) of an actor stops the one running there
 //! (§7.5.1, semantics-pitfalls #7).
 
+mod appearance;
 mod controller;
 mod custom;
 mod distance;
 mod entity;
+mod environment;
 mod follow_trajectory;
 mod lane_change;
 mod lane_offset;
@@ -28,6 +30,9 @@ use scenario::{
     Action, ActionKind, GlobalAction, LateralAction, LongitudinalAction, PrivateAction,
     RoutingAction,
 };
+
+pub(crate) use appearance::Appearances;
+pub(crate) use environment::EnvironmentState;
 
 use super::entity::EntityId;
 use super::error::RuntimeError;
@@ -226,6 +231,11 @@ impl Host<'_> {
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Routing(r) => self.start_routing(id, r, actor),
+            PrivateAction::Appearance(a) => {
+                let name = self.table.slots[id.0 as usize].name.clone();
+                appearance::start(self.world, actor, a, &name, time, self.events);
+                Ok(Part::Done(ActionStatus::Ended))
+            }
             PrivateAction::Trailer(t) => {
                 trailer::start(self.world, actor, t, pos)?;
                 Ok(Part::Done(ActionStatus::Ended))
@@ -307,8 +317,20 @@ impl Host<'_> {
             GlobalAction::Variable { variable_ref, rule } => {
                 variable::apply(self.world, variable_ref, rule, &pos)
             }
+            GlobalAction::Environment(environment) => {
+                environment::start(self.world, environment, self.time);
+                Ok(())
+            }
             GlobalAction::Entity { entity_ref, add_at } => {
-                entity::apply(self.world, entity_ref, add_at.as_ref(), &pos)
+                entity::apply(self.world, entity_ref, add_at.as_ref(), &pos)?;
+                let change = if add_at.is_some() { "added" } else { "deleted" };
+                self.events.push(EventRecord::Entity {
+                    time: self.time,
+                    element: name,
+                    entity: entity_ref.clone(),
+                    change: change.to_owned(),
+                });
+                Ok(())
             }
             GlobalAction::Traffic {
                 traffic_name,

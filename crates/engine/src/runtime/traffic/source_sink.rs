@@ -11,7 +11,7 @@
 use opendrive::Real;
 use scenario::TrafficMix;
 
-use super::spawn::{enter, in_disc, lane_point, leave, template};
+use super::spawn::{enter, in_disc, lane_point, remove, template};
 use super::state::Running;
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
 use crate::runtime::entity::EntityKind;
@@ -74,7 +74,7 @@ impl Source {
             self.due -= 1.0;
             let name = run.next_name();
             let e = template(&mut run.rng, &self.mix, name)?;
-            let id = enter(world, e, pose, self.speed);
+            let id = enter(world, &run.name, e, pose, self.speed);
             run.members.push(id);
         }
         Ok(())
@@ -102,7 +102,7 @@ impl Sink {
     }
 
     /// One step of `dt` s.
-    pub(crate) fn step(&mut self, world: &mut World, dt: Real) {
+    pub(crate) fn step(&mut self, world: &mut World, name: &str, dt: Real) {
         let inside = world
             .entities()
             .iter()
@@ -120,7 +120,7 @@ impl Sink {
             }
         };
         for id in inside.into_iter().take(take) {
-            leave(world, id);
+            remove(world, name, id);
         }
     }
 }

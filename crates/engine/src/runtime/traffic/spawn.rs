@@ -112,14 +112,29 @@ pub(crate) fn lane_point(world: &World, x: Real, y: Real) -> Option<Pose> {
     free.then_some(pose)
 }
 
-/// Adds `e` at `pose` with `speed`, on the lane there; returns its id.
-pub(crate) fn enter(world: &mut World, e: Entity, pose: Pose, speed: Real) -> EntityId {
+/// Adds `e` at `pose` with `speed`, on the lane there, for traffic action `element` (logged);
+/// returns its id.
+pub(crate) fn enter(
+    world: &mut World,
+    element: &str,
+    e: Entity,
+    pose: Pose,
+    speed: Real,
+) -> EntityId {
+    world.traffic.note(element, &e.name, "spawned");
     let id = world.spawn(e);
     let found = world.network.locate(pose.x, pose.y, Some(pose.h));
     world.place_resolved(id, pose, found);
     let e = world.entity_mut(id);
     e.speed = speed;
     id
+}
+
+/// Takes entity `id` out of the scenario for traffic action `element` (logged).
+pub(crate) fn remove(world: &mut World, element: &str, id: EntityId) {
+    let name = world.entity(id).name.clone();
+    world.traffic.note(element, &name, "removed");
+    leave(world, id);
 }
 
 /// Takes entity `id` out of the scenario: not placed, at rest, no actions, no track.

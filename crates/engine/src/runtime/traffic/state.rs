@@ -15,6 +15,7 @@ use scenario::{SourcePos, TrafficAction};
 use super::random::stream;
 use super::source_sink::{Sink, Source};
 use super::swarm::Swarm;
+use crate::output::EventRecord;
 use crate::position::resolve;
 use crate::runtime::entity::EntityId;
 use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
@@ -26,6 +27,22 @@ pub(crate) struct Traffic {
     /// The run's seed ([`crate::EngineConfig::seed`]).
     pub seed: u64,
     running: Vec<Running>,
+    /// Vehicles spawned and removed in this step, for the event log (step.rs drains them).
+    pub events: Vec<EventRecord>,
+    /// Time of the frame that first shows this step's changes (s).
+    frame_time: f64,
+}
+
+impl Traffic {
+    /// Records that `entity` underwent `change` (spawned, removed) by traffic action `element`.
+    pub(crate) fn note(&mut self, element: &str, entity: &str, change: &str) {
+        self.events.push(EventRecord::Entity {
+            time: self.frame_time,
+            element: element.to_owned(),
+            entity: entity.to_owned(),
+            change: change.to_owned(),
+        });
+    }
 }
 
 /// One traffic action at work.
@@ -141,6 +158,7 @@ pub(crate) fn start(
 /// The traffic stage: every running action spawns or removes over one step of `dt` s. An
 /// action's spawn failures (a vehicle template that does not build) end that action.
 pub(crate) fn step(world: &mut World, dt: f64) {
+    world.traffic.frame_time = world.time + dt;
     let mut running = std::mem::take(&mut world.traffic.running);
     running.retain_mut(|r| {
         r.members.retain(|&id| world.entity(id).placed);
@@ -149,7 +167,7 @@ pub(crate) fn step(world: &mut World, dt: f64) {
             Kind::Swarm(s) => s.step(world, r),
             Kind::Source(s) => s.step(world, r, dt),
             Kind::Sink(s) => {
-                s.step(world, dt);
+                s.step(world, &r.name, dt);
                 Ok(())
             }
         };

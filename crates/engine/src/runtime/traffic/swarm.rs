@@ -15,7 +15,7 @@ use opendrive::Real;
 use rand::Rng;
 use scenario::{SourcePos, TrafficAction, TrafficMix};
 
-use super::spawn::{enter, lane_point, leave, template};
+use super::spawn::{enter, lane_point, remove, template};
 use super::state::Running;
 use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
@@ -128,7 +128,7 @@ impl Swarm {
             })
             .collect::<Vec<_>>();
         for id in outside {
-            leave(world, id);
+            remove(world, &run.name, id);
         }
         run.members.retain(|&id| world.entity(id).placed);
         if run.members.len() >= self.count {
@@ -151,7 +151,7 @@ impl Swarm {
             let speed = lo + (hi - lo) * run.rng.gen::<f64>();
             let name = run.next_name();
             let e = template(&mut run.rng, &self.mix, name)?;
-            let id = enter(world, e, pose, speed);
+            let id = enter(world, &run.name, e, pose, speed);
             run.members.push(id);
             break;
         }
