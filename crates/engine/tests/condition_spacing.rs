@@ -265,3 +265,19 @@ fn assigned_route_distance_runs_along_the_route() {
     // behind its own: 30 − 3.65 − 0.85 = 25.5.
     assert!(eval(&w, &rel_distance(on_route(true), 25.5)));
 }
+
+#[test]
+fn lane_distance_runs_along_the_lane_centre() {
+    // curve_r100.xodr: the arc from s = 500 to 657.08 has radius 100 about (500, 100); lane
+    // −1's centre (t = −1.535) has radius 101.535. Ego at s = 500 and Lead at s = 550 on lane
+    // −1: 50 m along the reference line, 101.535 · 0.5 = 50.7675 m along the lane centre.
+    let mut w = FakeWorld::new(corpus_road("esmini/xodr/curve_r100.xodr"));
+    w.place_on_lane("Ego", "0", -1, 500.0, true);
+    w.place_on_lane("Lead", "0", -1, 550.0, true);
+    let lane = measure(false, Some(CoordinateSystem::Lane), Some(Longitudinal));
+    let road = measure(false, Some(Road), Some(Longitudinal));
+    assert!(eval(&w, &rel_distance(road, 50.0)));
+    // Simpson's rule is exact for the constant integrand of an arc (up to round-off).
+    assert!(eval(&w, &rel_distance(lane, 50.7675)));
+    assert!(!eval(&w, &rel_distance(lane, 50.0)));
+}

@@ -11,8 +11,8 @@
 //! * `oppositeLanes` false ignores entities on lanes driven the other way.
 //! * The longitudinal range is [−distanceBackward, distanceForward] (absent: 0, as the XSD
 //!   says) along the road in the direction the triggering entity faces, between reference
-//!   points, or between boxes with `freeSpace` (overlapping boxes are at 0). The standard
-//!   measures along the centre line of the entity's lane; oscsim along the reference line.
+//!   points, or between boxes with `freeSpace` (overlapping boxes are at 0), along the centre
+//!   line of the entity's lane as the standard says (lane coordinates of `measure`).
 //! * Without `freeSpace` another entity occupies the lane of its reference point; with it,
 //!   every lane a corner of its box stands on ("the whole bounding box is considered").
 //! * `EntityRef` entries restrict the check to those entities; none means all.
@@ -94,7 +94,7 @@ pub(crate) fn clear<Q: EntityQuery + ?Sized>(
     }
     let measure = DistanceMeasure {
         freespace: c.free_space,
-        coordinate_system: Some(CoordinateSystem::Road),
+        coordinate_system: Some(CoordinateSystem::Lane),
         relative_distance_type: Some(RelativeDistanceType::Longitudinal),
         routing_algorithm: None,
     };

@@ -12,12 +12,14 @@
 //! | coordinateSystem | longitudinal / lateral | euclidianDistance |
 //! | --- | --- | --- |
 //! | entity (default) | §8.7.2.1.1 object_distance() on the entity's x / y axis; freespace: gap between the boxes' intervals on that axis, 0 when they overlap | 3D distance of the reference points; freespace: 2D distance between the boxes' ground footprints, 0 when they overlap |
-//! | road, lane | §8.7.5.1.3 space_gap() along the road s / t (boxes when freespace, points otherwise), turned to the triggering entity's direction of travel; across roads along the shortest road path | √(ds² + dt²) of those |
+//! | road, lane | §8.7.5.1.3 space_gap() along the road s / t (lane: along the lane centre, see below) (boxes when freespace, points otherwise), turned to the triggering entity's direction of travel; across roads along the shortest road path | √(ds² + dt²) of those |
 //! | world | Δx / Δy of the world axes (box intervals when freespace) | as entity |
 //! | trajectory | not supported (the entity's trajectory is not part of `EntityView`) | not supported |
 //!
-//! Lane coordinates are measured as road coordinates (along the reference line, not the lane
-//! centre line). `routingAlgorithm="assignedRoute"` measures longitudinal road and lane
+//! Lane coordinates: as road coordinates, with the longitudinal value stretched by the ratio
+//! of the triggering entity's lane centre line length to the reference-line length between
+//! the two reference points (`lane_length`; exact between reference points on one road,
+//! the same ratio applied to box gaps; across roads the reference-line value is kept). `routingAlgorithm="assignedRoute"` measures longitudinal road and lane
 //! distances along the triggering entity's assigned route (§8.7.4.1.1 distance_along_route()
 //! of both, reference points; with `freespace` the boxes' extents ahead of / behind the
 //! reference points are taken off, 0 when they overlap); without an assigned route, and for
@@ -28,6 +30,7 @@
 use opendrive::{Pose, Real, RoadNetwork};
 use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, RoutingAlgorithm};
 
+use super::lane_length::lane_arc_length;
 use super::ConditionErrorKind;
 use crate::domain::{
     BoundingBox, DistanceDirection, DistanceMode, MovableObject, Physical, PhysicalObject,
@@ -169,9 +172,18 @@ pub(crate) fn distance(
                 _ => 1.0,
             };
             let gap = |dir| a.space_gap(network, &b, dir).ok().map(|g| -travel * g);
+            let longitudinal = || {
+                let d = gap(DistanceDirection::Longitudinal)?;
+                Some(if cs == CoordinateSystem::Lane {
+                    d * lane_stretch(network, from, target).unwrap_or(1.0)
+                } else {
+                    d
+                })
+            };
             Ok(match along(ty) {
+                Some(DistanceDirection::Longitudinal) => longitudinal(),
                 Some(dir) => gap(dir),
-                None => gap(DistanceDirection::Longitudinal)
+                None => longitudinal()
                     .zip(gap(DistanceDirection::Lateral))
                     .map(|(s, t)| s.hypot(t)),
             })
@@ -185,6 +197,22 @@ pub(crate) fn distance(
             found: "another coordinate system",
         }),
     }
+}
+
+/// How much longer the centre line of `from`'s lane is than the reference line between the
+/// two reference points' s (both on `from`'s road); `None` when they are on different roads
+/// or at the same s.
+fn lane_stretch(network: &RoadNetwork, from: &EntityView<'_>, target: &Target<'_>) -> Option<Real> {
+    let own = from.road_position?;
+    let other_s = match target {
+        Target::Entity(e) => e.road_position.filter(|rp| rp.road_id == own.road_id)?.s,
+        Target::Point(p) => network.locate_on_road(&own.road_id, p.x, p.y)?.s,
+    };
+    let ds = (other_s - own.s).abs();
+    if ds <= opendrive::LENGTH_EPSILON {
+        return None;
+    }
+    Some(lane_arc_length(network, &own.road_id, own.lane_id, own.s, other_s)? / ds)
 }
 
 /// Longitudinal distance from `a` to `b` along `from`'s assigned route (positive when `b` is
