@@ -2,6 +2,7 @@
 //!
 //! Exit status: 0 on success, 1 when the input is invalid or a run fails, 2 on a usage error.
 
+mod osi_sink;
 mod road;
 mod run;
 mod validate;

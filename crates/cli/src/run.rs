@@ -122,7 +122,8 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
             static_data: args.osi_static,
             every: args.osi_every,
         };
-        let sink = crate::osi_sink::OsiSink::create(&engine, &args.scenario, &args.params, &options)?;
+        let sink =
+            crate::osi_sink::OsiSink::create(&engine, &args.scenario, &args.params, &options)?;
         frames.push(Box::new(sink));
     }
     let mut events = Events {
