@@ -156,6 +156,13 @@ pub enum ErrorKind {
         /// The name written.
         name: String,
     },
+    /// Elements nested deeper than the reader follows.
+    TooDeep {
+        /// The element at the limit.
+        element: String,
+        /// The limit (levels of elements).
+        limit: usize,
+    },
     /// A file larger than the loader accepts.
     FileTooLarge {
         /// The file.
@@ -306,6 +313,10 @@ impl fmt::Display for ErrorKind {
                 f,
                 "expected catalog references without cycles, found {}",
                 cycle.join(" → ")
+            ),
+            Self::TooDeep { element, limit } => write!(
+                f,
+                "expected elements nested at most {limit} deep, found {element} deeper"
             ),
             Self::UnknownMonitor { name } => {
                 write!(

@@ -100,7 +100,7 @@ fn a_100_mb_file_is_refused_before_reading() {
 }
 
 #[test]
-fn a_file_just_under_the_limit_of_whitespace_is_malformed_xml_not_a_hang() {
+fn an_8_mb_blank_file_is_malformed_xml_not_a_hang() {
     let dir = std::env::temp_dir().join(format!("oscsim-scenario-ws-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("blank.xosc");
@@ -149,4 +149,28 @@ fn a_catalog_entry_that_contains_itself_is_a_cycle_not_a_stack_overflow() {
         "{err}"
     );
     assert_eq!((err.pos().line, err.pos().col), (12, 11));
+}
+
+#[test]
+fn recursively_nested_positions_stop_at_the_nesting_limit() {
+    // valid.xosc with its TeleportAction position replaced by RoutePositions nested 2000 deep
+    // (Position → RoutePosition → RouteRef → Route → Waypoint → Position …), which the
+    // readers would otherwise follow recursively.
+    let valid = std::fs::read_to_string(fixture("valid.xosc")).unwrap();
+    let levels = 2000;
+    let open = r#"<Position><RoutePosition><RouteRef><Route name="r" closed="false"><Waypoint routeStrategy="shortest">"#;
+    let close = r#"</Waypoint></Route></RouteRef><InRoutePosition><FromRoadCoordinates pathS="0" t="0"/></InRoutePosition></RoutePosition></Position>"#;
+    let inner = r#"<Position><WorldPosition x="0" y="0"/></Position>"#;
+    let nested = format!("{}{inner}{}", open.repeat(levels), close.repeat(levels));
+    let teleport = r#"<Position><LanePosition roadId="1" laneId="-1" s="10"/></Position>"#;
+    assert!(valid.contains(teleport));
+    let text = valid.replacen(teleport, &nested, 1);
+    let path = fixture("valid.xosc");
+    let err = Scenario::load_from_str(&text, &path, &[]).unwrap_err();
+    let ErrorKind::TooDeep { limit, .. } = err.kind() else {
+        panic!("{err}")
+    };
+    assert_eq!(*limit, 256);
+    // All of it is on line 23 of valid.xosc.
+    assert_eq!(err.pos().line, 23, "{err}");
 }

@@ -17,6 +17,9 @@ use crate::reader::attr::FromAttr;
 use crate::reader::catalog::CatalogIndex;
 use crate::source::{LineIndex, SourcePos};
 
+/// Deepest element nesting read (real scenarios nest about 25 deep).
+pub(crate) const MAX_NESTING: usize = 256;
+
 /// An element of one of the loaded documents.
 pub(crate) type Node<'a> = roxmltree::Node<'a, 'a>;
 
@@ -376,6 +379,22 @@ impl<'a> Ctx<'a> {
                 },
             )
         })
+    }
+
+    /// Refuses elements nested deeper than [`MAX_NESTING`]: positions (RoutePosition →
+    /// Route → Waypoint → Position) and trailers (Trailer → ScenarioObject → Vehicle →
+    /// Trailer) nest recursively, and their readers recurse with them.
+    pub fn check_depth(&self, n: Node<'a>) -> Result<()> {
+        if n.ancestors().nth(MAX_NESTING).is_some() {
+            return Err(self.err(
+                n,
+                ErrorKind::TooDeep {
+                    element: n.tag_name().name().to_owned(),
+                    limit: MAX_NESTING,
+                },
+            ));
+        }
+        Ok(())
     }
 
     /// Checks that every child element of the sequence element `n` is one of `allowed`, so a

@@ -45,6 +45,7 @@ pub(crate) fn read_scenario_object_body<'a>(
     n: Node<'a>,
     name: String,
 ) -> Result<ScenarioObject> {
+    ctx.check_depth(n)?;
     let object = n
         .children()
         .find(|c| c.is_element() && c.tag_name().name() != "ObjectController")

@@ -22,6 +22,7 @@ pub(crate) fn read_position_child<'a>(
 
 /// Reads XSD `Position`.
 pub(crate) fn read_position<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Position> {
+    ctx.check_depth(n)?;
     let c = ctx.choice(n, POSITIONS)?;
     let pos = ctx.pos(c);
     let orientation = read_orientation_child(ctx, c)?;
