@@ -134,6 +134,25 @@ mod tests {
     }
 
     #[test]
+    fn poses_compare_angles_modulo_two_pi() {
+        use approx::AbsDiffEq;
+        let a = Pose {
+            x: 1.0,
+            y: 2.0,
+            z: 3.0,
+            h: std::f64::consts::PI - 1e-12,
+            p: 0.0,
+            r: 0.0,
+        };
+        let b = Pose {
+            h: -std::f64::consts::PI + 1e-12,
+            ..a
+        };
+        assert!(a.abs_diff_eq(&b, 1e-9));
+        assert!(!a.abs_diff_eq(&Pose { x: 1.1, ..a }, 1e-9));
+    }
+
+    #[test]
     fn piecewise_cubic_picks_the_last_record_started() {
         // Records at 0 (v = 1 + ds) and 10 (v = 5 + 2·ds²): at x = 12, ds = 2 → 5 + 8 = 13,
         // dv = 4·ds = 8; at x = 9 the first record gives 10, slope 1.

@@ -5,7 +5,7 @@
 use std::f64::consts::{FRAC_PI_2, PI};
 use std::path::Path;
 
-use opendrive::RoadNetwork;
+use opendrive::{Pose, RoadNetwork};
 
 /// A one-road network: `curve` on a 200 m geometry starting at the origin heading +x, with the
 /// given extra road children and right lanes.
@@ -34,11 +34,15 @@ fn lane_centre_on_a_quarter_circle() {
     let p = net
         .lane_pose("r", -1, 50.0 * PI, 0.0)
         .unwrap_or_else(|e| panic!("{e}"));
-    assert!(
-        (p.x - 102.0).abs() < 1e-9 && (p.y - 100.0).abs() < 1e-9,
-        "{p:?}"
-    );
-    assert!((p.h - FRAC_PI_2).abs() < 1e-12);
+    let expected = Pose {
+        x: 102.0,
+        y: 100.0,
+        z: 0.0,
+        h: FRAC_PI_2,
+        p: 0.0,
+        r: 0.0,
+    };
+    approx::assert_abs_diff_eq!(p, expected, epsilon = 1e-9);
     // 0.5 m left of the lane centre is t = −1.5: radius 101.5.
     let q = net
         .lane_pose("r", -1, 50.0 * PI, 0.5)
