@@ -207,3 +207,45 @@ fn esmini_trailers_scenario_matches_the_reference_within_half_a_metre() {
     }
     assert_eq!(compared, 5 * 151);
 }
+
+/// (time, name, trailer name) of every vehicle that tows, per frame.
+#[derive(Default)]
+struct Towing(Vec<(f64, String, String)>);
+
+impl engine::FrameSink for Towing {
+    fn frame(&mut self, frame: &engine::Frame<'_>) -> std::io::Result<()> {
+        for o in frame.objects() {
+            if let Some(t) = o.trailer {
+                let name = frame.entities[t as usize].name.clone();
+                self.0.push((frame.time, o.name.to_owned(), name));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The frames name each tow's trailer (what OSI writes as vehicle_classification.trailer_id):
+/// in the chain file Truck → Trailer1 → Trailer2 from the first frame on; in trailer_example0
+/// Ego tows `trailer` only between ConnectTrailerAction (5.45 s) and DisconnectTrailerAction
+/// (8.05 s), so from the frame of 5.50 s to that of 8.05 s.
+#[test]
+fn frames_carry_the_trailer_of_each_tow() {
+    let mut engine = load(&file("trailer_chain.xosc"));
+    let mut towing = Towing::default();
+    engine.step(&mut towing, &mut Vec::new()).expect("runs");
+    let first: Vec<(&str, &str)> = towing
+        .0
+        .iter()
+        .filter(|r| r.0 == 0.0)
+        .map(|r| (r.1.as_str(), r.2.as_str()))
+        .collect();
+    assert_eq!(first, [("Trailer1", "Trailer2"), ("Truck", "Trailer1")]);
+    let mut engine = load(&corpus("generated/xosc/trailer_example0.xosc"));
+    let mut towing = Towing::default();
+    engine.run(&mut towing, &mut Vec::new()).expect("runs");
+    assert!(towing.0.iter().all(|r| r.1 == "Ego" && r.2 == "trailer"));
+    let times: Vec<f64> = towing.0.iter().map(|r| r.0).collect();
+    let (from, to) = (times[0], times[times.len() - 1]);
+    assert!((from - 5.5).abs() < 1e-9 && (to - 8.05).abs() < 1e-9, "{from} {to}");
+    assert_eq!(times.len(), 52);
+}

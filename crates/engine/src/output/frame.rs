@@ -65,6 +65,9 @@ pub struct EntityFrame<'a> {
     pub model3d: Option<&'a str>,
     /// Visible to sensors (VisibilityAction).
     pub visible_to_sensors: bool,
+    /// Id of the trailer this vehicle tows (OSI `vehicle_classification.trailer_id`); the
+    /// trailer's name is `frame.entities[id].name`.
+    pub trailer: Option<u32>,
 }
 
 impl<'a> EntityFrame<'a> {
@@ -87,6 +90,7 @@ impl<'a> EntityFrame<'a> {
             color: e.color,
             model3d: e.model3d.as_deref(),
             visible_to_sensors: e.visibility.sensors,
+            trailer: e.trailer.map(|t| t.0),
         }
     }
 }

@@ -158,6 +158,8 @@ pub struct Entity {
     /// Lateral speed of the running lateral transition as a share of the speed (m of lateral
     /// motion per m travelled), at the end of the last step.
     pub lateral_slope: Real,
+    /// The trailer this vehicle tows now (§7.2.2.6; runtime/trailer.rs keeps it).
+    pub trailer: Option<EntityId>,
 }
 
 impl Entity {
@@ -188,6 +190,7 @@ impl Entity {
             held: false,
             start_speed: 0.0,
             at_lane_end: false,
+            trailer: None,
         }
     }
 

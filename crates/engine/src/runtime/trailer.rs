@@ -279,6 +279,9 @@ pub(crate) fn from_definitions(
 /// acceleration and odometer. With `dt` = 0 (the initial frame) it only places.
 pub(crate) fn follow(world: &mut World, dt: Real) {
     let order = world.trailers.order();
+    for link in world.trailers.links.clone() {
+        world.entity_mut(link.tow).trailer = Some(link.trailer);
+    }
     for i in order {
         let link = world.trailers.links[i].clone();
         let Some(updated) = follow_link(world, link, dt) else {

@@ -39,6 +39,7 @@ pub(crate) fn start(
         _ => {
             if let Some(trailer) = world.trailers.trailer_of(actor) {
                 world.trailers.disconnect(actor);
+                world.entity_mut(actor).trailer = None;
                 let e = world.entity_mut(trailer);
                 e.speed = 0.0;
                 e.longitudinal_action = None;
