@@ -246,6 +246,9 @@ fn frames_carry_the_trailer_of_each_tow() {
     assert!(towing.0.iter().all(|r| r.1 == "Ego" && r.2 == "trailer"));
     let times: Vec<f64> = towing.0.iter().map(|r| r.0).collect();
     let (from, to) = (times[0], times[times.len() - 1]);
-    assert!((from - 5.5).abs() < 1e-9 && (to - 8.05).abs() < 1e-9, "{from} {to}");
+    assert!(
+        (from - 5.5).abs() < 1e-9 && (to - 8.05).abs() < 1e-9,
+        "{from} {to}"
+    );
     assert_eq!(times.len(), 52);
 }
