@@ -2,11 +2,12 @@
 //! `initialDistanceOffset` and TrajectoryFollowingMode `follow`, OpenSCENARIO 1.3 §7.6 and
 //! XSD `TrajectoryFollowingMode`), measured horizontally.
 //!
-//! Method: the horizontal distance is sampled every [`SCAN_STEP`] (64 to 100 000 samples), and
-//! the best sample's neighbourhood of ± one step is searched by golden sections, and the foot
-//! point polished by Newton's method on the tangential offset to `opendrive::SOLVER_TOLERANCE`. The answer is the global minimum unless two branches of the
-//! trajectory come within one step of the position at distances differing by less than the
-//! curve's change over one step.
+//! Method: the horizontal distance is sampled every [`SCAN_STEP`] (64 to 100 000 samples);
+//! around each local minimum of the samples (the 16 lowest) ± one step is searched by golden
+//! sections and the foot point polished by Newton's method on the tangential offset to
+//! `opendrive::SOLVER_TOLERANCE`; the joints between pieces (polyline vertices, segment
+//! starts) are candidates too; the nearest candidate wins. This misses the global minimum
+//! only where the distance has two minima within one step of each other.
 
 use opendrive::{Real, SOLVER_TOLERANCE};
 
@@ -16,6 +17,8 @@ use super::{Trajectory, TrajectoryPoint};
 pub const SCAN_STEP: Real = 0.5;
 /// Most samples of the coarse scan (a trajectory longer than 50 km is scanned more coarsely).
 const MAX_SAMPLES: usize = 100_000;
+/// Most local minima of the scan that are refined.
+const MAX_CANDIDATES: usize = 16;
 
 /// The point of a trajectory closest to a position.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -39,15 +42,34 @@ impl Trajectory {
             let p = self.eval(s);
             (p.x - x).powi(2) + (p.y - y).powi(2)
         };
-        let best = (0..=samples)
+        let scan: Vec<(Real, Real)> = (0..=samples)
             .map(|i| {
                 let s = (i as Real * step).min(length);
                 (s, d2(s))
             })
+            .collect();
+        // Every local minimum of the scan is refined (the nearest MAX_CANDIDATES of them), and
+        // the joints between pieces are candidates of their own: at a corner the distance has
+        // a kink that a sample may straddle.
+        let mut minima: Vec<(Real, Real)> = (0..scan.len())
+            .filter(|&i| {
+                let left = i.checked_sub(1).map_or(Real::INFINITY, |j| scan[j].1);
+                let right = scan.get(i + 1).map_or(Real::INFINITY, |r| r.1);
+                scan[i].1 <= left && scan[i].1 <= right
+            })
+            .map(|i| scan[i])
+            .collect();
+        minima.sort_by(|a, b| a.1.total_cmp(&b.1));
+        minima.truncate(MAX_CANDIDATES);
+        let refined = minima.iter().map(|&(best, _)| {
+            let (lo, hi) = ((best - step).max(0.0), (best + step).min(length));
+            self.newton_foot(x, y, golden_section(lo, hi, d2), lo, hi)
+        });
+        let s = refined
+            .chain(self.joints().iter().copied())
+            .map(|s| (s, d2(s)))
             .min_by(|a, b| a.1.total_cmp(&b.1))
             .map_or(0.0, |(s, _)| s);
-        let (lo, hi) = ((best - step).max(0.0), (best + step).min(length));
-        let s = self.newton_foot(x, y, golden_section(lo, hi, d2), lo, hi);
         let point = self.eval(s);
         let (dx, dy) = (x - point.x, y - point.y);
         let (sin_h, cos_h) = point.heading.sin_cos();
@@ -65,8 +87,9 @@ impl Trajectory {
     /// The squared distance is flat at its minimum, so golden-section search alone resolves
     /// s only to about √ε·distance; the foot-point equation is well conditioned.
     fn newton_foot(&self, x: Real, y: Real, mut s: Real, lo: Real, hi: Real) -> Real {
+        let mut p = self.eval(s);
+        let mut d2 = (p.x - x).powi(2) + (p.y - y).powi(2);
         for _ in 0..8 {
-            let p = self.eval(s);
             let (sn, cs) = p.heading.sin_cos();
             let (dx, dy) = (p.x - x, p.y - y);
             let f = dx * cs + dy * sn;
@@ -74,7 +97,15 @@ impl Trajectory {
             if df <= 0.0 || f.abs() <= SOLVER_TOLERANCE {
                 break;
             }
-            s = (s - f / df).clamp(lo, hi);
+            // Only steps that bring the point closer count: at a corner (a polyline vertex,
+            // a heading offset) the foot-point equation has no root and Newton would wander.
+            let next = (s - f / df).clamp(lo, hi);
+            let q = self.eval(next);
+            let e2 = (q.x - x).powi(2) + (q.y - y).powi(2);
+            if e2 > d2 {
+                break;
+            }
+            (s, p, d2) = (next, q, e2);
         }
         s
     }

@@ -150,6 +150,11 @@ impl Trajectory {
         }
     }
 
+    /// The arc lengths where pieces meet (polyline vertices, spline segment starts).
+    pub(crate) fn joints(&self) -> &[Real] {
+        &self.starts
+    }
+
     /// Whether the shape carries times (every vertex, control point or segment has one).
     pub fn has_times(&self) -> bool {
         self.times.is_some()
