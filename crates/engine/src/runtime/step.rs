@@ -197,6 +197,7 @@ impl Engine {
                 log: &log,
                 errors: &mut errors,
                 time,
+                dt,
             };
             self.storyboard
                 .step(time, dt, &mut conditions, &mut host, &mut Transitions(&log))?;
@@ -327,6 +328,7 @@ struct HostCell<'a> {
     log: &'a RefCell<Vec<EventRecord>>,
     errors: &'a mut Vec<RuntimeError>,
     time: f64,
+    dt: f64,
 }
 
 impl HostCell<'_> {
@@ -354,7 +356,7 @@ impl crate::storyboard::ActionHost for HostCell<'_> {
     }
 
     fn status(&self, id: crate::storyboard::ActionId) -> crate::storyboard::ActionStatus {
-        super::actions::status(self.table, id)
+        super::actions::status(self.table, id, self.time + self.dt)
     }
 }
 

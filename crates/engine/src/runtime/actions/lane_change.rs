@@ -32,6 +32,13 @@ pub(crate) struct LateralState {
     pub continuous: bool,
 }
 
+impl LateralState {
+    /// True when a fixed-time transition that does not hold its target reaches its end by `t`.
+    pub(crate) fn completes_by(&self, t: f64) -> bool {
+        !self.continuous && matches!(self.span, Span::Time(d) if t - self.start_time >= d - 1e-9)
+    }
+}
+
 /// Starts a lane change: sets the track's target lane and offset and a blend from the current.
 pub(crate) fn start(
     world: &mut World,

@@ -448,14 +448,28 @@ impl Host<'_> {
     }
 }
 
-/// The status of action `id`: running while any actor's part runs, else stopped if any part
-/// was stopped, else ended.
-pub(crate) fn status(table: &ActionTable, id: ActionId) -> ActionStatus {
+/// The status of action `id` as the storyboard sees it in the step that ends at `step_end`:
+/// running while any actor's part runs, else stopped if any part was stopped, else ended.
+///
+/// A transition over a fixed time that reaches its goal by `step_end` reports ended in this
+/// step: its last stretch of motion is this step's (stage 2 still applies it). This is how
+/// esmini's logs time the end of such actions (e.g. a 3 s lane change started at 6.500 ends at
+/// 9.450, the step whose motion completes it), and an Event that ends so can restart in the
+/// next step instead of being overridden there.
+pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> ActionStatus {
     let Some(slot) = table.slots.get(id.0 as usize) else {
         return ActionStatus::Ended;
     };
     let mut status = ActionStatus::Ended;
     for part in &slot.parts {
+        let finishing = match part {
+            Part::Speed(s) => s.completes_by(step_end),
+            Part::Lateral(s) => s.completes_by(step_end),
+            _ => false,
+        };
+        if finishing {
+            continue;
+        }
         match part.status() {
             ActionStatus::Running => return ActionStatus::Running,
             ActionStatus::Stopped => status = ActionStatus::Stopped,

@@ -29,6 +29,8 @@ pub(crate) struct SpeedState {
     start_speed: f64,
     start_time: f64,
     span: Span,
+    /// A performance limit bounded the last step's change.
+    limited: bool,
 }
 
 /// The target speed: fixed, or read from a reference entity every step.
@@ -125,6 +127,7 @@ pub(crate) fn start(
         start_speed: v0,
         start_time: now,
         span,
+        limited: false,
     };
     if span == Span::Instant {
         world.entity_mut(actor).speed = v1;
@@ -134,6 +137,16 @@ pub(crate) fn start(
         state.start_speed = v1;
     }
     Ok(Part::Speed(state))
+}
+
+impl SpeedState {
+    /// True when a fixed-time transition without a continuous target reaches its end by `t`
+    /// and no performance limit holds it back.
+    pub(crate) fn completes_by(&self, t: f64) -> bool {
+        !self.target.continuous()
+            && !self.limited
+            && matches!(self.span, Span::Time(d) if t - self.start_time >= d - 1e-9)
+    }
 }
 
 /// Sets the speed for the step from `now` to `now + dt`: the shape at the step's end.
@@ -155,13 +168,15 @@ pub(crate) fn step(
     let e = world.entity_mut(actor);
     // The vehicle's performance bounds the change per step (semantics-pitfalls #9); a step
     // shape (Span::Instant) is an ideal jump and is not limited.
-    let v = match (s.span, e.performance) {
+    let bounded = match (s.span, e.performance) {
         (Span::Instant, _) | (_, None) => v,
         (_, Some(perf)) => v.clamp(
             e.speed - perf.max_deceleration.abs() * dt,
             e.speed + perf.max_acceleration.abs() * dt,
         ),
     };
+    s.limited = (bounded - v).abs() > 1e-9;
+    let v = bounded;
     e.speed = v.min(e.max_speed());
     let reached = (e.speed - v1.min(e.max_speed())).abs() <= 1e-9;
     if p >= 1.0 && reached && !s.target.continuous() {
