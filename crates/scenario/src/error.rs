@@ -72,6 +72,12 @@ pub enum ErrorKind {
         /// The names along the cycle, first repeated at the end.
         cycle: Vec<String>,
     },
+    /// Declarations of one block that refer to each other in a chain longer than the
+    /// loader follows.
+    ParameterChainTooLong {
+        /// The limit (declarations in the chain).
+        limit: usize,
+    },
     /// A `${…}` expression that does not evaluate.
     Expression {
         /// The attribute holding the expression.
@@ -317,6 +323,10 @@ impl fmt::Display for ErrorKind {
             Self::TooDeep { element, limit } => write!(
                 f,
                 "expected elements nested at most {limit} deep, found {element} deeper"
+            ),
+            Self::ParameterChainTooLong { limit } => write!(
+                f,
+                "expected parameter declarations referring to each other at most {limit} deep, found a longer chain"
             ),
             Self::UnknownMonitor { name } => {
                 write!(

@@ -174,3 +174,35 @@ fn recursively_nested_positions_stop_at_the_nesting_limit() {
     // All of it is on line 23 of valid.xosc.
     assert_eq!(err.pos().line, 23, "{err}");
 }
+
+#[test]
+fn a_long_chain_of_parameter_references_is_refused_not_overflowed() {
+    // 10 000 declarations p0 = $p1, p1 = $p2, …, p9999 = 1 in one block.
+    let valid = std::fs::read_to_string(fixture("valid.xosc")).unwrap();
+    let n = 10_000;
+    let mut decls = String::new();
+    for i in 0..n - 1 {
+        decls.push_str(&format!(
+            "<ParameterDeclaration name=\"p{i}\" parameterType=\"double\" value=\"$p{}\"/>\n",
+            i + 1
+        ));
+    }
+    decls.push_str(&format!(
+        "<ParameterDeclaration name=\"p{}\" parameterType=\"double\" value=\"1\"/>\n",
+        n - 1
+    ));
+    let text = valid.replacen(
+        "  <ParameterDeclarations>\n",
+        &format!("  <ParameterDeclarations>\n{decls}"),
+        1,
+    );
+    let err = Scenario::load_from_str(&text, &fixture("valid.xosc"), &[]).unwrap_err();
+    assert!(
+        matches!(err.kind(), ErrorKind::ParameterChainTooLong { limit: 256 }),
+        "{err}"
+    );
+    // The declarations start on line 5; the 257th link, p256, is on line 5 + 256 = 261, its
+    // value after `<ParameterDeclaration name="p256" parameterType="double" value="` (64
+    // characters).
+    assert_eq!((err.pos().line, err.pos().col), (261, 65), "{err}");
+}

@@ -7,11 +7,16 @@
 //! value attribute that closes it, instead of looping. A declaration that names itself refers
 //! to the enclosing scope's parameter of that name if there is one (shadowing).
 
+use std::collections::HashMap;
+
 use crate::error::{Error, ErrorKind, Result, Warning};
 use crate::expr::{Value, ValueType};
 use crate::model::{ParameterDeclaration, Rule};
 use crate::reader::attr::FromAttr;
 use crate::reader::context::{Ctx, Node, Scope};
+
+/// Longest chain of declarations of one block that refer to each other (a → b → c …).
+const MAX_CHAIN: usize = 256;
 
 /// One declaration before resolution.
 struct Pending<'a> {
@@ -65,19 +70,20 @@ pub(crate) fn declare<'a>(
             deps: Vec::new(),
         });
     }
-    let names: Vec<String> = pending.iter().map(|p| p.name.clone()).collect();
-    // Names should be unique in one block, but esmini's corpus repeats some; the last
-    // declaration wins (as in esmini), with a warning.
-    for dup in (1..names.len()).filter(|&i| names[..i].contains(&names[i])) {
-        let node = pending[dup].node;
-        let pos = ctx
-            .raw_attr(node, "name")
-            .map_or_else(|| ctx.pos(node), |a| ctx.attr_pos(&a));
-        let message = format!(
-            "parameter '{}' is declared twice in one ParameterDeclarations; the last declaration wins",
-            names[dup]
-        );
-        ctx.warnings.push(Warning { message, pos });
+    // Name → index of its last declaration. Names should be unique in one block, but
+    // esmini's corpus repeats some; the last declaration wins (as in esmini), with a warning.
+    let mut last: HashMap<String, usize> = HashMap::with_capacity(pending.len());
+    for (i, p) in pending.iter().enumerate() {
+        if last.insert(p.name.clone(), i).is_some() {
+            let pos = ctx
+                .raw_attr(p.node, "name")
+                .map_or_else(|| ctx.pos(p.node), |a| ctx.attr_pos(&a));
+            let message = format!(
+                "parameter '{}' is declared twice in one ParameterDeclarations; the last declaration wins",
+                p.name
+            );
+            ctx.warnings.push(Warning { message, pos });
+        }
     }
     for (i, p) in pending.iter_mut().enumerate() {
         if p.given.is_none() {
@@ -89,7 +95,7 @@ pub(crate) fn declare<'a>(
             // is one (`Speed = ${$Speed * 2}` in a Story); otherwise it is a self-reference.
             let outer = ctx.lookup(&p.name).is_some();
             p.deps = referenced_names(raw)
-                .filter_map(|r| names.iter().rposition(|n| n == r))
+                .filter_map(|r| last.get(r).copied())
                 .filter(|&j| !(j == i && outer))
                 .collect();
         }
@@ -142,6 +148,17 @@ fn visit<'a>(
             return Err(Error::new(ErrorKind::ParameterCycle { cycle }, pos));
         }
         State::Pending => {}
+    }
+    if stack.len() >= MAX_CHAIN {
+        // Each link is a recursive call; a chain this long is not a real scenario.
+        let node = pending[i].node;
+        let pos = ctx
+            .raw_attr(node, "value")
+            .map_or_else(|| ctx.pos(node), |a| ctx.attr_pos(&a));
+        return Err(Error::new(
+            ErrorKind::ParameterChainTooLong { limit: MAX_CHAIN },
+            pos,
+        ));
     }
     state[i] = State::InProgress;
     stack.push(i);
