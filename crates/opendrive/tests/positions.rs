@@ -205,3 +205,30 @@ fn round_trip_at_georeferenced_coordinates() {
         );
     }
 }
+
+#[test]
+fn lane_heading_on_a_banked_curve_is_the_horizontal_tangent() {
+    // Arc κ = 0.01 with roll growing 0 → 0.2 rad over 100 m and a widening lane: the heading
+    // must equal the direction of the lane centre's horizontal track (central difference of
+    // positions, O(h²) ≈ 1e-9 here).
+    let lane =
+        r#"<lane id="-1" type="driving"><width sOffset="0" a="3" b="0.02" c="0" d="0"/></lane>"#;
+    let net = road(
+        r#"<arc curvature="0.01"/>"#,
+        r#"<lateralProfile><superelevation s="0" a="0" b="0.002" c="0" d="0"/></lateralProfile>"#,
+        lane,
+    );
+    for s in [10.0, 50.0, 90.0] {
+        let p = net
+            .lane_pose("r", -1, s, 0.0)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let a = net
+            .lane_pose("r", -1, s - 1e-4, 0.0)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let b = net
+            .lane_pose("r", -1, s + 1e-4, 0.0)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let track = (b.y - a.y).atan2(b.x - a.x);
+        assert!((track - p.h).abs() < 1e-8, "s {s}: {} vs {}", p.h, track);
+    }
+}

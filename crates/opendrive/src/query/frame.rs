@@ -17,6 +17,8 @@ pub(crate) struct RoadFrame {
     pub(crate) curvature: Real,
     pub(crate) pitch: Real,
     pub(crate) roll: Real,
+    /// d(roll)/ds (rad/m).
+    pub(crate) roll_rate: Real,
     sin_h: Real,
     cos_h: Real,
     sin_p: Real,
@@ -30,7 +32,7 @@ pub(crate) struct RoadFrame {
 pub(crate) fn road_frame(road: &Road, s: Real) -> RoadFrame {
     let (rp, sin_h, cos_h) = road.plan_view.eval_trig(s);
     let (z, dz) = eval_piecewise(&road.elevation, s);
-    let (roll, _) = eval_piecewise(&road.superelevation, s);
+    let (roll, roll_rate) = eval_piecewise(&road.superelevation, s);
     // Positive pitch is nose down (rotation about the left-pointing y axis). Flat and unbanked
     // roads skip the trigonometry.
     let (pitch, sin_p, cos_p) = if dz == 0.0 {
@@ -53,6 +55,7 @@ pub(crate) fn road_frame(road: &Road, s: Real) -> RoadFrame {
         curvature: rp.curvature,
         pitch,
         roll,
+        roll_rate,
         sin_h,
         cos_h,
         sin_p,
@@ -75,6 +78,18 @@ impl RoadFrame {
             self.y + fwd * self.sin_h + a * self.cos_h,
             self.z + b * self.cos_p,
         ]
+    }
+
+    /// Heading of the curve s ↦ place(t(s), height) in the horizontal plane, given dt/ds:
+    /// the horizontal lateral offset is a = t·cos r − height·sin r, so the tangent is
+    /// (1 − κa)·T + a′·N with a′ = t′·cos r − (t·sin r + height·cos r)·r′. The small forward
+    /// shift b·sin p of banked, sloped cross-sections is left out of the derivative.
+    #[inline]
+    pub(crate) fn tangent_heading(&self, t: Real, dt_ds: Real, height: Real) -> Real {
+        let a = t * self.cos_r - height * self.sin_r;
+        let b = t * self.sin_r + height * self.cos_r;
+        let da = dt_ds * self.cos_r - b * self.roll_rate;
+        self.hdg + da.atan2(1.0 - self.curvature * a)
     }
 
     /// Horizontal derivatives of [`place`](Self::place) with respect to s and t (used by the

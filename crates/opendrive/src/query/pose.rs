@@ -1,10 +1,10 @@
 //! (road, s, t) → world pose and (road, lane, s, offset) → world pose (OpenDRIVE 1.8 §8.3–8.4
 //! reference-line and local coordinate systems, §11 lanes for the lane centre and lane height).
 //!
-//! Heading of a lane pose: the true tangent of the curve t(s) = lane centre + offset,
-//! h = road heading + atan2(dt/ds, 1 − κ·t), κ the reference line's curvature (in the road
-//! plane; on banked roads the horizontal projection's small extra turn from a changing roll is
-//! not included). esmini uses
+//! Heading of a lane pose: the true tangent of the curve t(s) = lane centre + offset in the
+//! horizontal plane, h = road heading + atan2(dt/ds, 1 − κ·t), κ the reference line's
+//! curvature; on banked roads t is first projected (t·cos r, and the change of roll along s
+//! counts), see `RoadFrame::tangent_heading`. esmini uses
 //! h = road heading + atan(dt/ds) instead; the reference tests reproduce that convention in the
 //! comparison only. Pitch and roll of a lane pose are the road's.
 
@@ -73,7 +73,7 @@ impl Road {
             .map_or(0.0, |l| lane_height(l, s - section.s, &span, t));
         let f = road_frame(self, s);
         let [x, y, z] = f.place(t, height);
-        let h = normalize_angle(f.hdg + span.d_center().atan2(1.0 - f.curvature * t));
+        let h = normalize_angle(f.tangent_heading(t, span.d_center(), height));
         Ok(Pose {
             x,
             y,
