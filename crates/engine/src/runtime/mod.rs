@@ -16,6 +16,7 @@
 //! | `controller/default` | the default controller |
 //! | `traffic/*` | spawned traffic: sources, sinks, swarms |
 //! | `trailer` | trailer connections and the one-axle trailer kinematics |
+//! | `external` | ExternalObjectReference entities placed at their OpenDRIVE objects |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
 //! | `step` | `Engine` and its five stages |
 
@@ -26,6 +27,7 @@ mod config;
 mod controller;
 mod entity;
 mod error;
+mod external;
 mod lanes;
 mod selection;
 mod shapes;
