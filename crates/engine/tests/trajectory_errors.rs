@@ -1,6 +1,6 @@
 //! Bad trajectories give clear errors, never panics (OpenSCENARIO 1.3 §7.6 "Trajectories";
-//! XSD `Polyline`: a line needs two vertices; `Nurbs`: order, a knot vector of control points
-//! + order non-decreasing values; `Timing/@scale`). Each message is checked
+//! XSD `Polyline`: a line needs two vertices; `Nurbs`: order, a knot vector of (control
+//! points plus order) non-decreasing values; `Timing/@scale`). Each message is checked
 //! in full: what was expected, what was found, and where.
 
 mod trajectory_support;
