@@ -26,8 +26,8 @@
 //!   [`LaneSection`] (`left` 1, 2, …; `center`; `right` −1, −2, …), [`Lane`], [`Junction`],
 //!   [`Header`]; [`RoadNetwork::bounding_box`] of all road surfaces.
 //!
-//! Semantics worth knowing: a lane pose's heading is the true tangent of the offset curve,
-//! road heading + atan2(dt/ds, 1 − κt); `paramPoly3` maps s to p linearly (§9.6); lane
+//! Semantics worth knowing: a lane pose's heading is the true (horizontal) tangent of the
+//! offset curve, road heading + atan2(dt/ds, 1 − κt) on unbanked roads; `paramPoly3` maps s to p linearly (§9.6); lane
 //! `<height>` records hold until the next (§11.6); at a lane-section start the new section
 //! applies; s up to [`S_TOLERANCE`] beyond a road's ends is clamped.
 //!
