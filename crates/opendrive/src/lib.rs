@@ -19,17 +19,18 @@
 //! - Lane graph: [`RoadNetwork::lane_handle`], [`RoadNetwork::successors`],
 //!   [`RoadNetwork::predecessors`], [`RoadNetwork::driving_direction`], [`is_drivable`];
 //!   routes: [`RoadNetwork::route`] from one [`LanePosition`] to another → [`LaneRoute`].
-//! - Errors: [`Error`] with [`ErrorKind`], file and 1-based [`TextPos`]; problems the loader
-//!   tolerates (junction lane links to missing lanes) are in [`RoadNetwork::warnings`].
+//! - Errors: [`Error`] with [`ErrorKind`], file and 1-based [`TextPos`].
 //! - Data: [`Road`] (`id`, `length`, `junction`, `rule`, `links`, `types`, `plan_view`,
 //!   `elevation`, `superelevation`, `lane_offsets`, `lane_sections`, `objects`, `signals`),
 //!   [`LaneSection`] (`left` 1, 2, …; `center`; `right` −1, −2, …), [`Lane`], [`Junction`],
 //!   [`Header`]; [`RoadNetwork::bounding_box`] of all road surfaces.
 //!
 //! Semantics worth knowing: a lane pose's heading is the true (horizontal) tangent of the
-//! offset curve, road heading + atan2(dt/ds, 1 − κt) on unbanked roads; `paramPoly3` maps s to p linearly (§9.6); lane
-//! `<height>` records hold until the next (§11.6); at a lane-section start the new section
-//! applies; s up to [`S_TOLERANCE`] beyond a road's ends is clamped.
+//! offset curve, road heading + atan2(dt/ds, 1 − κt) on unbanked roads; `paramPoly3` maps s
+//! to p linearly (§9.6); lane `<height>` records hold until the next (§11.6); at a
+//! lane-section start the new section applies; s up to [`S_TOLERANCE`] beyond a road's ends
+//! is clamped; problems tolerated on load (plan-view gaps, lane links to missing lanes) are
+//! in [`RoadNetwork::warnings`].
 //!
 //! Conventions (OpenDRIVE 1.8 §8): s along the reference line, t positive to the left, lane
 //! ids positive left; heading counter-clockwise from +x; pitch positive nose down; roll
