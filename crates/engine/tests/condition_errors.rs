@@ -4,7 +4,7 @@
 mod condition_support;
 
 use condition_support::{at, by_entity, corpus_road, eval_error, measure, FakeWorld};
-use scenario::{CoordinateSystem, EntityCondition, PositionKind, RelativeDistanceType, Rule};
+use scenario::{AngleType, CoordinateSystem, EntityCondition, PositionKind, Rule};
 
 fn relative_distance(entity: &str, m: scenario::DistanceMeasure) -> scenario::Condition {
     by_entity(
@@ -42,16 +42,18 @@ fn error_messages() {
     assert_eq!(
         eval_error(
             &w,
-            &relative_distance(
-                "Lead",
-                measure(
-                    false,
-                    Some(CoordinateSystem::Trajectory),
-                    Some(RelativeDistanceType::Longitudinal)
-                )
+            &by_entity(
+                &["Ego"],
+                false,
+                EntityCondition::Angle {
+                    angle_type: AngleType::Heading,
+                    angle: 0.0,
+                    angle_tolerance: 0.1,
+                    coordinate_system: Some(CoordinateSystem::Trajectory),
+                }
             )
         ),
-        "expected coordinateSystem entity, road, lane or world, found coordinateSystem trajectory (not supported by oscsim) at test.xosc:7:9"
+        "expected coordinateSystem world, entity, road or lane, found coordinateSystem trajectory (not supported by oscsim) at test.xosc:7:9"
     );
     // A bad position inside the condition: its own place, then the condition's.
     let c = by_entity(

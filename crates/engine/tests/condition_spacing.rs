@@ -281,3 +281,39 @@ fn lane_distance_runs_along_the_lane_centre() {
     assert!(eval(&w, &rel_distance(lane, 50.7675)));
     assert!(!eval(&w, &rel_distance(lane, 50.0)));
 }
+
+#[test]
+fn trajectory_distance_runs_along_the_followed_trajectory() {
+    use scenario::{Shape, Trajectory, Vertex};
+    let mut w = world();
+    // Ego follows a polyline along lane −1's centre (y = −1.535) from x = 0 to 500: its s/t
+    // frame is the road's here, so Lead 30 m ahead is 30 (boxes 25.5), and on lane 1 beside
+    // it 3.07 to the left.
+    let vertex = |x: f64| Vertex {
+        time: None,
+        position: at(PositionKind::World {
+            x,
+            y: -1.535,
+            z: Some(0.0),
+            h: None,
+            p: None,
+            r: None,
+        }),
+    };
+    let shape = Trajectory {
+        name: "T".into(),
+        closed: false,
+        shape: Shape::Polyline(vec![vertex(0.0), vertex(500.0)]),
+        catalog: None,
+    };
+    let path = engine::trajectory::build(&shape, &w, &condition_support::here()).unwrap();
+    w.entity_mut("Ego").trajectory = Some(path);
+    let on = |free, ty| measure(free, Some(CoordinateSystem::Trajectory), Some(ty));
+    assert!(eval(&w, &rel_distance(on(false, Longitudinal), 30.0)));
+    assert!(eval(&w, &rel_distance(on(true, Longitudinal), 25.5)));
+    w.place_on_lane("Lead", "1", 1, 50.0, true);
+    assert!(eval(&w, &rel_distance(on(false, Lateral), 3.07)));
+    // Without a trajectory there is no such frame: false, not an error.
+    w.entity_mut("Ego").trajectory = None;
+    assert!(!eval(&w, &rel_distance(on(false, Lateral), 3.07)));
+}

@@ -14,7 +14,7 @@
 //! | entity (default) | §8.7.2.1.1 object_distance() on the entity's x / y axis; freespace: gap between the boxes' intervals on that axis, 0 when they overlap | 3D distance of the reference points; freespace: 2D distance between the boxes' ground footprints, 0 when they overlap |
 //! | road, lane | §8.7.5.1.3 space_gap() along the road s / t (lane: along the lane centre, see below) (boxes when freespace, points otherwise), turned to the triggering entity's direction of travel; across roads along the shortest road path | √(ds² + dt²) of those |
 //! | world | Δx / Δy of the world axes (box intervals when freespace) | as entity |
-//! | trajectory | not supported (the entity's trajectory is not part of `EntityView`) | not supported |
+//! | trajectory | difference of the closest-point s / t on the trajectory the triggering entity follows (box corners' intervals when freespace); none without one | √(ds² + dt²) of those |
 //!
 //! Lane coordinates: as road coordinates, with the longitudinal value stretched by the ratio
 //! of the triggering entity's lane centre line length to the reference-line length between
@@ -42,6 +42,9 @@ use crate::position::{local_to_world, EntityView};
 const RATE_STEP: Real = 1e-3;
 
 /// What a distance is measured to.
+// A short-lived stack value built once per evaluation; boxing the view would cost an
+// allocation per condition per step for nothing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Target<'a> {
     /// Another entity, with its box and motion.
@@ -188,15 +191,52 @@ pub(crate) fn distance(
                     .map(|(s, t)| s.hypot(t)),
             })
         }
-        CoordinateSystem::Trajectory => Err(ConditionErrorKind::Unsupported {
-            expected: "coordinateSystem entity, road, lane or world",
-            found: "coordinateSystem trajectory",
-        }),
+        CoordinateSystem::Trajectory => Ok(from
+            .trajectory
+            .and_then(|path| along_trajectory(path, &a, &b, ty))),
         _ => Err(ConditionErrorKind::Unsupported {
             expected: "coordinateSystem entity, road, lane or world",
             found: "another coordinate system",
         }),
     }
+}
+
+/// Signed distance from `a` to `b` in the s/t frame of trajectory `path` (closest points);
+/// with boxes (non-zero extents) the gap between the corners' intervals, 0 when they overlap.
+fn along_trajectory(
+    path: &crate::trajectory::Trajectory,
+    a: &TrafficParticipant,
+    b: &TrafficParticipant,
+    ty: RelativeDistanceType,
+) -> Option<Real> {
+    let interval = |p: &TrafficParticipant| {
+        let o = p.physical_object();
+        let mut lo = [Real::INFINITY; 2];
+        let mut hi = [Real::NEG_INFINITY; 2];
+        for [x, y] in o.bounding_box.footprint(&o.pose).corners() {
+            let c = path.closest(x, y);
+            for (k, v) in [c.point.s, c.t].into_iter().enumerate() {
+                lo[k] = lo[k].min(v);
+                hi[k] = hi[k].max(v);
+            }
+        }
+        (lo, hi)
+    };
+    let ((alo, ahi), (blo, bhi)) = (interval(a), interval(b));
+    let gap = |k: usize| {
+        if blo[k] > ahi[k] {
+            blo[k] - ahi[k]
+        } else if bhi[k] < alo[k] {
+            bhi[k] - alo[k]
+        } else {
+            0.0
+        }
+    };
+    Some(match ty {
+        RelativeDistanceType::Longitudinal => gap(0),
+        RelativeDistanceType::Lateral => gap(1),
+        _ => gap(0).hypot(gap(1)),
+    })
 }
 
 /// How much longer the centre line of `from`'s lane is than the reference line between the

@@ -14,6 +14,7 @@ use crate::domain::{
     Acceleration6d, BoundingBox, MovableObject, PhysicalObject, Route, TrafficParticipant,
     Velocity6d,
 };
+use crate::trajectory::Trajectory;
 
 /// One entity as positions and conditions see it at the current moment.
 ///
@@ -47,6 +48,9 @@ pub struct EntityView<'a> {
     /// The route assigned by an AssignRouteAction, if any: used for
     /// `routingAlgorithm="assignedRoute"` and RoutePosition `FromCurrentEntity`.
     pub route: Option<&'a Route>,
+    /// The trajectory the entity follows (FollowTrajectoryAction), if any: the frame of
+    /// `coordinateSystem="trajectory"` distances.
+    pub trajectory: Option<&'a Trajectory>,
 }
 
 impl<'a> EntityView<'a> {
@@ -69,6 +73,7 @@ impl<'a> EntityView<'a> {
             odometer: 0.0,
             bounding_box,
             route: None,
+            trajectory: None,
         }
     }
 

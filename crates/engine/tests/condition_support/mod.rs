@@ -77,6 +77,7 @@ pub struct FakeEntity {
     pub odometer: f64,
     pub bounding_box: BoundingBox,
     pub route: Option<Route>,
+    pub trajectory: Option<engine::trajectory::Trajectory>,
 }
 
 /// Storyboard hosts for the fake: every condition false, every action ends at once.
@@ -210,6 +211,7 @@ impl FakeWorld {
             odometer: 0.0,
             bounding_box: car_box(),
             route: None,
+            trajectory: None,
         });
         // Just pushed.
         self.entities.last_mut().expect("entity just placed")
@@ -270,6 +272,7 @@ fn view(e: &FakeEntity) -> EntityView<'_> {
     v.acceleration.translational = e.acceleration;
     v.odometer = e.odometer;
     v.route = e.route.as_ref();
+    v.trajectory = e.trajectory.as_ref();
     v
 }
 
