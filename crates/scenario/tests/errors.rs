@@ -206,3 +206,13 @@ fn a_long_chain_of_parameter_references_is_refused_not_overflowed() {
     // characters).
     assert_eq!((err.pos().line, err.pos().col), (261, 65), "{err}");
 }
+
+#[test]
+fn a_file_of_millions_of_elements_is_refused_at_the_node_limit() {
+    // 5 000 000 empty elements (35 MB) inside the root: more nodes than the 4 000 000 the
+    // loader parses, so memory stays bounded.
+    let text = format!("<OpenSCENARIO>{}</OpenSCENARIO>", "<a/>".repeat(5_000_000));
+    let err = Scenario::load_from_str(&text, &fixture("huge.xosc"), &[]).unwrap_err();
+    assert!(matches!(err.kind(), ErrorKind::Xml { .. }), "{err}");
+    assert!(err.to_string().contains("nodes limit reached"), "{err}");
+}

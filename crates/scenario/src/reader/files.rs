@@ -13,6 +13,11 @@ use crate::source::{LineIndex, SourcePos};
 /// few hundred kB). Larger files are refused before reading.
 pub const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
 
+/// Most XML nodes (elements, text, comments) parsed from one file. The 68 kB
+/// `parking_demo.xosc` has about 1 700; the limit keeps a hostile file within a few hundred
+/// MB of memory.
+pub(crate) const MAX_NODES: u32 = 4_000_000;
+
 /// A file's path and text.
 pub(crate) struct Source {
     /// The path as opened.
@@ -63,7 +68,12 @@ pub(crate) fn read_source(path: &Path, what: &'static str) -> Result<Source> {
 pub(crate) fn parse(source: &Source) -> Result<Doc<'_>> {
     let text = source.text.strip_prefix('\u{feff}').unwrap_or(&source.text);
     let lines = LineIndex::new(text);
-    let doc = roxmltree::Document::parse(text).map_err(|e| {
+    let options = roxmltree::ParsingOptions {
+        allow_dtd: false,
+        nodes_limit: MAX_NODES,
+        ..roxmltree::ParsingOptions::default()
+    };
+    let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
         let p = e.pos();
         let message = e.to_string();
         let suffix = format!(" at {}:{}", p.row, p.col);
