@@ -3,12 +3,18 @@
 //! [`Scenario::load`] parses a `.xosc` file (on roxmltree) into typed data: every `$name`
 //! parameter and `${…}` expression resolved (OpenSCENARIO 1.3 §9.1–9.2), every catalog
 //! reference replaced by its entry with the reference's parameter assignments (§9.4), entity
-//! selections expanded and every entity reference checked (§7.2.2 "Entities"), deprecated 1.0–1.2
-//! forms mapped onto the 1.3 model with a [`Warning`]. Every action, condition and position
+//! selections expanded and every entity reference checked (§7.2.2 "Entities"), deprecated
+//! 1.0–1.2 forms mapped onto the 1.3 model with a [`Warning`]. Every action, condition and position
 //! of 1.3 is typed data with units; model elements the runtime reports on carry a
 //! [`SourcePos`]. The runtime reads only this model, never XML.
 //!
 //! Errors ([`Error`], kind [`ErrorKind`]) read "expected X, found Y at file:line:col".
+//!
+//! Hostile input is bounded: files over [`MAX_FILE_BYTES`] are refused unread, XML with a DTD
+//! is refused, at most 4 million XML nodes are parsed per file, recursive elements (positions
+//! within routes, trailers) nest at most 256 deep, chains of parameters referring to each
+//! other at most 256 long, and catalog entries that refer to themselves are reported as
+//! cycles.
 //!
 //! ```no_run
 //! let scenario = scenario::Scenario::load(std::path::Path::new("cut-in.xosc"))?;

@@ -1,14 +1,15 @@
-//! The top level of a scenario file (OpenSCENARIO 1.3, XSD `OpenScenario`,
-//! `FileHeader`, group `ScenarioDefinition`, `ParameterValueDistribution`/`ScenarioFile`,
+//! The top level of a scenario file (OpenSCENARIO 1.3, XSD `OpenScenario`, `FileHeader`,
+//! group `ScenarioDefinition`, `ParameterValueDistribution`/`ScenarioFile`,
 //! `CatalogLocations`, `RoadNetwork`, `VariableDeclarations`, `MonitorDeclarations`) and the
 //! load sequence:
 //!
-//! 1. read the file (at most [`MAX_FILE_BYTES`](crate::MAX_FILE_BYTES)) and parse it with roxmltree (no DTD, so no
-//!    entity expansion);
+//! 1. read the file (at most [`MAX_FILE_BYTES`](crate::MAX_FILE_BYTES)) and parse it with
+//!    roxmltree (no DTD, so no entity expansion; at most 4 million nodes);
 //! 2. FileHeader, global ParameterDeclarations (with `--param` overrides), CatalogLocations;
 //! 3. parse every `.xosc` of the catalog directories;
 //! 4. RoadNetwork, Entities, Storyboard, reading catalog entries where referenced;
-//! 5. check entity names and expand entity selections.
+//! 5. check entity names, expand entity selections, check storyboard element, variable and
+//!    monitor references.
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
