@@ -154,3 +154,41 @@ fn angle_in_world_road_and_lane_frames() {
     );
     assert!(eval(&w, &rel));
 }
+
+#[test]
+fn angle_relative_to_a_followed_trajectory() {
+    use condition_support::{at, here};
+    use scenario::{PositionKind, Shape, Trajectory, Vertex};
+    let mut w = FakeWorld::new(corpus_road("esmini/xodr/straight_500m.xodr"));
+    w.place_on_lane("Ego", "1", -1, 100.0, true);
+    w.entity_mut("Ego").pose.h = 0.9;
+    // A polyline from (0, 0) to (200, 200): heading π/4 everywhere; Ego heads 0.9, so its
+    // heading relative to the trajectory is 0.9 − π/4.
+    let vertex = |v: f64| Vertex {
+        time: None,
+        position: at(PositionKind::World {
+            x: v,
+            y: v,
+            z: Some(0.0),
+            h: None,
+            p: None,
+            r: None,
+        }),
+    };
+    let shape = Trajectory {
+        name: "Diagonal".into(),
+        closed: false,
+        shape: Shape::Polyline(vec![vertex(0.0), vertex(200.0)]),
+        catalog: None,
+    };
+    let expected = 0.9 - std::f64::consts::FRAC_PI_4;
+    let c = angle(expected, Some(CoordinateSystem::Trajectory));
+    // No trajectory followed: no such frame, false.
+    assert!(!eval(&w, &c));
+    w.entity_mut("Ego").trajectory = Some(engine::trajectory::build(&shape, &w, &here()).unwrap());
+    assert!(eval(&w, &c));
+    assert!(!eval(
+        &w,
+        &angle(expected + 0.02, Some(CoordinateSystem::Trajectory))
+    ));
+}

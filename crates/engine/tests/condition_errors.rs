@@ -4,7 +4,7 @@
 mod condition_support;
 
 use condition_support::{at, by_entity, corpus_road, eval_error, measure, FakeWorld};
-use scenario::{AngleType, CoordinateSystem, EntityCondition, PositionKind, Rule};
+use scenario::{EntityCondition, PositionKind, Rule};
 
 fn relative_distance(entity: &str, m: scenario::DistanceMeasure) -> scenario::Condition {
     by_entity(
@@ -39,22 +39,6 @@ fn error_messages() {
         "expected a placed entity named \"Ghost\", found none at test.xosc:7:9"
     );
     w.place_on_lane("Lead", "1", -1, 80.0, true);
-    assert_eq!(
-        eval_error(
-            &w,
-            &by_entity(
-                &["Ego"],
-                false,
-                EntityCondition::Angle {
-                    angle_type: AngleType::Heading,
-                    angle: 0.0,
-                    angle_tolerance: 0.1,
-                    coordinate_system: Some(CoordinateSystem::Trajectory),
-                }
-            )
-        ),
-        "expected coordinateSystem world, entity, road or lane, found coordinateSystem trajectory (not supported by oscsim) at test.xosc:7:9"
-    );
     // A bad position inside the condition: its own place, then the condition's.
     let c = by_entity(
         &["Ego"],

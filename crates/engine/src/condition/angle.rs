@@ -5,10 +5,12 @@
 //! * AngleCondition: the entity's own angle in `coordinateSystem`: world (and entity, or
 //!   absent: the world frame, the only one an entity's own absolute angle can be read in);
 //!   road: minus the road's reference-line angle at the entity's s; lane: heading minus the
-//!   lane's driving direction (pitfall 15), pitch and roll as for road. Trajectory is not
-//!   supported.
+//!   lane's driving direction (pitfall 15), pitch and roll as for road; trajectory: heading
+//!   minus the heading of the followed trajectory at its point closest to the entity (false
+//!   while the entity follows none).
 //! * RelativeAngleCondition: the triggering entity's angle minus the reference entity's (the
-//!   frame cancels out for all systems but trajectory).
+//!   frame's own angle cancels out of the difference, so every coordinate system gives the
+//!   same value).
 //!
 //! An entity off the roads has no road or lane angle: the condition is false.
 
@@ -55,9 +57,17 @@ pub(crate) fn own_angle(
             }
             Ok(Some(angle_difference(own, pick(&road, angle_type))))
         }
+        Some(CoordinateSystem::Trajectory) => Ok(e.trajectory.map(|path| {
+            let c = path.closest(e.pose.x, e.pose.y);
+            match angle_type {
+                AngleType::Heading => angle_difference(own, c.point.heading),
+                // A trajectory is a plane curve: its pitch and roll are 0.
+                _ => own,
+            }
+        })),
         _ => Err(ConditionErrorKind::Unsupported {
-            expected: "coordinateSystem world, entity, road or lane",
-            found: "coordinateSystem trajectory",
+            expected: "coordinateSystem world, entity, road, lane or trajectory",
+            found: "another coordinate system",
         }),
     }
 }
@@ -72,16 +82,6 @@ pub(crate) fn relative_angle(
     e: &EntityView<'_>,
     reference: &EntityView<'_>,
     angle_type: AngleType,
-    cs: Option<CoordinateSystem>,
-) -> Result<Real, ConditionErrorKind> {
-    if cs == Some(CoordinateSystem::Trajectory) {
-        return Err(ConditionErrorKind::Unsupported {
-            expected: "coordinateSystem world, entity, road or lane",
-            found: "coordinateSystem trajectory",
-        });
-    }
-    Ok(angle_difference(
-        pick(&e.pose, angle_type),
-        pick(&reference.pose, angle_type),
-    ))
+) -> Real {
+    angle_difference(pick(&e.pose, angle_type), pick(&reference.pose, angle_type))
 }

@@ -222,14 +222,11 @@ fn holds<C: ConditionContext + ?Sized>(
             angle_type,
             angle,
             angle_tolerance,
-            coordinate_system,
+            // Every frame gives the same difference (see `angle`).
+            coordinate_system: _,
         } => {
             let r = reference(ctx, entity_ref)?;
-            within(
-                relative_angle(e, &r, *angle_type, *coordinate_system)?,
-                *angle,
-                *angle_tolerance,
-            )
+            within(relative_angle(e, &r, *angle_type), *angle, *angle_tolerance)
         }
         _ => {
             return Err(ConditionErrorKind::Unsupported {
