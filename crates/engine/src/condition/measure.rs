@@ -12,20 +12,24 @@
 //! | coordinateSystem | longitudinal / lateral | euclidianDistance |
 //! | --- | --- | --- |
 //! | entity (default) | §8.7.2.1.1 object_distance() on the entity's x / y axis; freespace: gap between the boxes' intervals on that axis, 0 when they overlap | 3D distance of the reference points; freespace: 2D distance between the boxes' ground footprints, 0 when they overlap |
-//! | road, lane | §8.7.5.1.3 space_gap() along the road s / t (lane: along the lane centre, see below) (boxes when freespace, points otherwise), turned to the triggering entity's direction of travel; across roads along the shortest road path | √(ds² + dt²) of those |
+//! | road, lane | §8.7.5.1.3 space_gap() along the road s / t (boxes when freespace, points otherwise), turned to the triggering entity's direction of travel; across roads along the shortest road path; lane: along the lane centre (below) | √(ds² + dt²) of those |
 //! | world | Δx / Δy of the world axes (box intervals when freespace) | as entity |
 //! | trajectory | difference of the closest-point s / t on the trajectory the triggering entity follows (box corners' intervals when freespace); none without one | √(ds² + dt²) of those |
 //!
 //! Lane coordinates: as road coordinates, with the longitudinal value stretched by the ratio
 //! of the triggering entity's lane centre line length to the reference-line length between
-//! the two reference points (`lane_length`; exact between reference points on one road,
-//! the same ratio applied to box gaps; across roads the reference-line value is kept). `routingAlgorithm="assignedRoute"` measures longitudinal road and lane
-//! distances along the triggering entity's assigned route (§8.7.4.1.1 distance_along_route()
-//! of both, reference points; with `freespace` the boxes' extents ahead of / behind the
-//! reference points are taken off, 0 when they overlap); without an assigned route, and for
-//! every other algorithm, the shortest path along roads is used (the only one the road model
-//! offers). A measurement that needs a road position fails softly (`None`,
-//! the condition is false) while an entity is off the roads or the roads are not joined.
+//! the two reference points (`lane_length`; exact between reference points on one road, the
+//! same ratio applied to box gaps; across roads the reference-line value is kept).
+//!
+//! `routingAlgorithm="assignedRoute"` measures longitudinal road and lane distances along the
+//! triggering entity's assigned route (§8.7.4.1.1 distance_along_route() of both, reference
+//! points; with `freespace` the boxes' extents ahead of / behind the reference points are
+//! taken off, 0 when they overlap). Without an assigned route, and for every other
+//! algorithm, the shortest path along roads is used (the only one the road model offers).
+//!
+//! A measurement that needs a road position or a trajectory fails softly (`None`: the
+//! condition is false) while an entity is off the roads, the roads are not joined, or the
+//! entity follows no trajectory.
 
 use opendrive::{Pose, Real, RoadNetwork};
 use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, RoutingAlgorithm};
