@@ -317,3 +317,25 @@ fn trajectory_distance_runs_along_the_followed_trajectory() {
     w.entity_mut("Ego").trajectory = None;
     assert!(!eval(&w, &rel_distance(on(false, Lateral), 3.07)));
 }
+
+#[test]
+fn road_distance_across_linked_roads_and_lanes() {
+    // Pitfall 14: a road distance needs a path between the two positions. On
+    // road_link_unequal_number_of_lanes0.xodr road 1 (100 m along +x) ends where road 2
+    // starts; Ego on road 1 lane −1 at s = 90, Lead on road 2 lane −2 at s = 10 (another lane):
+    // 10 + 10 = 20 m along the roads, whatever the lanes (the path runs along roads, not lanes).
+    let mut w = FakeWorld::new(corpus_road(
+        "generated/xodr/road_link_unequal_number_of_lanes0.xodr",
+    ));
+    w.place_on_lane("Ego", "1", -1, 90.0, true);
+    w.place_on_lane("Lead", "2", -2, 10.0, true);
+    assert!(eval(
+        &w,
+        &rel_distance(measure(false, Some(Road), Some(Longitudinal)), 20.0)
+    ));
+    // Lateral: lane −1 centre t = −1.5, lane −2 centre t = −4.5: Lead 3 m to the right, |−3|.
+    assert!(eval(
+        &w,
+        &rel_distance(measure(false, Some(Road), Some(Lateral)), 3.0)
+    ));
+}
