@@ -115,7 +115,7 @@ def run(path, name, timeout):
 
 
 def log_summary(events):
-    """(events started, {unsupported message: count}) from an oscsim event log."""
+    """(events started, {unsupported/error message: count}) from an oscsim event log."""
     started, unsupported = 0, {}
     if not os.path.exists(events):
         return started, unsupported
@@ -126,8 +126,8 @@ def log_summary(events):
         e = json.loads(line)
         if e.get("kind") == "event" and e.get("transition") == "start":
             started += 1
-        elif e.get("kind") == "unsupported":
-            m = re.sub(r" at /.*", "", e.get("message", ""))
+        elif e.get("kind") in ("unsupported", "error"):
+            m = e["kind"] + ": " + re.sub(r" at /.*", "", e.get("message", ""))
             unsupported[m] = unsupported.get(m, 0) + 1
     return started, unsupported
 
@@ -202,7 +202,8 @@ def main():
         reason = notes.get(name, "")
         out.append(f"| {source}/{name} | {verdict} | {pos} | {speed} | {cell(ev)} | {cell(reason)} |")
     if all_unsupported:
-        out.append("\nReported unsupported by the runtime in the event logs (message: scenarios):\n")
+        out.append("\nReported as unsupported or as an error in the event logs (conditions and "
+                   "actions that read false or did nothing; message: scenarios):\n")
         for m, names in sorted(all_unsupported.items(), key=lambda kv: -len(kv[1])):
             out.append(f"- {m}: {', '.join(sorted(names))}")
     with open(REPORT, "w", encoding="utf-8") as f:
