@@ -276,3 +276,55 @@ fn a_name_declared_twice_in_one_block_warns_and_the_last_wins() {
         .count();
     assert_eq!(n, 2);
 }
+
+/// 1.0's `alongRoute="true"` (distance along the road) reads as the 1.3 road-longitudinal
+/// measure; esmini's cut-in_sumo.xosc line 148:
+/// `<TimeHeadwayCondition alongRoute="true" entityRef="Target1" freespace="true" …/>`.
+#[test]
+fn along_route_true_reads_as_road_longitudinal() {
+    let path = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus/esmini/xosc/cut-in_sumo.xosc"
+    ));
+    let s = Scenario::load(path).unwrap();
+    let mut measures = Vec::new();
+    for act in &s.storyboard.stories[0].acts {
+        for m in act.maneuver_groups.iter().flat_map(|g| &g.maneuvers) {
+            for e in &m.events {
+                let Some(t) = &e.start_trigger else { continue };
+                for c in t.condition_groups.iter().flat_map(|g| &g.conditions) {
+                    if let ConditionKind::ByEntity {
+                        entity_condition: EntityCondition::TimeHeadway { measure, .. },
+                        ..
+                    } = &c.kind
+                    {
+                        measures.push((c.pos.line, *measure));
+                    }
+                }
+            }
+        }
+    }
+    let (_, measure) = measures
+        .iter()
+        .find(|(line, _)| *line < 148 && *line > 140)
+        .unwrap();
+    assert_eq!(
+        measure.coordinate_system,
+        Some(scenario::CoordinateSystem::Road)
+    );
+    assert_eq!(
+        measure.relative_distance_type,
+        Some(RelativeDistanceType::Longitudinal)
+    );
+    assert!(measure.freespace);
+    let w = s
+        .warnings
+        .iter()
+        .find(|w| w.message.contains("alongRoute"))
+        .unwrap();
+    assert_eq!(
+        w.message,
+        "TimeHeadwayCondition@alongRoute=\"true\" is deprecated, read as coordinateSystem=\"road\" relativeDistanceType=\"longitudinal\""
+    );
+    assert_eq!(w.pos.line, 148);
+}

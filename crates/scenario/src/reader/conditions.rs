@@ -1,12 +1,13 @@
 //! Readers for triggers and conditions (OpenSCENARIO 1.3, "Conditions and triggers", XSD `Trigger`,
 //! `ConditionGroup`, `Condition`, `ByEntityCondition`, `EntityCondition`,
-//! `ByValueCondition`). The deprecated `alongRoute` attribute (1.0) is read as
-//! `relativeDistanceType`/`coordinateSystem` left unset, with a warning.
+//! `ByValueCondition`). The deprecated `alongRoute` attribute (1.0) is mapped onto
+//! `coordinateSystem`/`relativeDistanceType` (see [`read_distance_measure`]).
 
 use crate::error::{ErrorKind, Result};
 use crate::model::{
-    ByValueCondition, CollisionTarget, Condition, ConditionGroup, ConditionKind, DistanceMeasure,
-    EntityCondition, TimeToCollisionTarget, Trigger, TriggeringEntities,
+    ByValueCondition, CollisionTarget, Condition, ConditionGroup, ConditionKind, CoordinateSystem,
+    DistanceMeasure, EntityCondition, RelativeDistanceType, TimeToCollisionTarget, Trigger,
+    TriggeringEntities,
 };
 use crate::reader::context::{Ctx, Node};
 use crate::reader::positions::read_position_child;
@@ -80,30 +81,39 @@ fn read_condition<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Condition> {
     })
 }
 
-/// Warns about the deprecated `alongRoute` attribute.
-fn along_route<'a>(ctx: &mut Ctx<'a>, c: Node<'a>) -> Result<()> {
-    let along: Option<bool> = ctx.opt(c, "alongRoute")?;
-    if along.is_some() {
-        let name = c.tag_name().name();
-        ctx.warn(
-            c,
-            format!(
-                "{name}@alongRoute is deprecated; use coordinateSystem and relativeDistanceType"
-            ),
-        );
-    }
-    Ok(())
-}
-
 /// Reads the measurement attributes shared by the distance-based conditions.
+///
+/// The deprecated `alongRoute` (1.0) meant "true: along the road, routing taken into
+/// account; false: straight-line distance". Where the 1.1 attributes are absent,
+/// `alongRoute="true"` reads as `coordinateSystem="road"` with
+/// `relativeDistanceType="longitudinal"`, and `false` as the 1.3 defaults (entity frame,
+/// euclidian distance), with a warning either way.
 fn read_distance_measure<'a>(ctx: &mut Ctx<'a>, c: Node<'a>) -> Result<DistanceMeasure> {
-    along_route(ctx, c)?;
-    Ok(DistanceMeasure {
+    let mut measure = DistanceMeasure {
         freespace: ctx.req(c, "freespace")?,
         coordinate_system: ctx.opt(c, "coordinateSystem")?,
         relative_distance_type: ctx.opt(c, "relativeDistanceType")?,
         routing_algorithm: ctx.opt(c, "routingAlgorithm")?,
-    })
+    };
+    let Some(along_route) = ctx.opt::<bool>(c, "alongRoute")? else {
+        return Ok(measure);
+    };
+    let name = c.tag_name().name();
+    let explicit = measure.coordinate_system.is_some() || measure.relative_distance_type.is_some();
+    let read_as = if explicit {
+        "ignored: coordinateSystem/relativeDistanceType are given"
+    } else if along_route {
+        measure.coordinate_system = Some(CoordinateSystem::Road);
+        measure.relative_distance_type = Some(RelativeDistanceType::Longitudinal);
+        "read as coordinateSystem=\"road\" relativeDistanceType=\"longitudinal\""
+    } else {
+        "read as the default straight-line distance"
+    };
+    ctx.warn(
+        c,
+        format!("{name}@alongRoute=\"{along_route}\" is deprecated, {read_as}"),
+    );
+    Ok(measure)
 }
 
 /// Reads XSD `EntityCondition`.
