@@ -304,10 +304,8 @@ fn along_route_true_reads_as_road_longitudinal() {
             }
         }
     }
-    let (_, measure) = measures
-        .iter()
-        .find(|(line, _)| *line < 148 && *line > 140)
-        .unwrap();
+    // Its Condition element ("redtrigger") starts on line 142.
+    let (_, measure) = measures.iter().find(|(line, _)| *line == 142).unwrap();
     assert_eq!(
         measure.coordinate_system,
         Some(scenario::CoordinateSystem::Road)
