@@ -9,7 +9,11 @@
 //!   are those of that point (the `osi::rigid_body` kinematics), `orientation_rate` the yaw
 //!   rate; lanes go to `moving_object_classification.assigned_lane_id` (the lane the engine
 //!   reports, when the reference point is on the road surface).
-//! - `MiscObject` and `ExternalObjectReference` → `StationaryObject`.
+//! - `MiscObject` and `ExternalObjectReference` → `StationaryObject`. An external object
+//!   has no BoundingBox in the scenario; its box is that of the road network's `<object>`
+//!   of the same name (length, width or 2·radius, height; centre half the height above the
+//!   object's origin, OpenDRIVE 1.8 §13.2). One without such a box is left out, with one
+//!   warning on stderr, since OSI requires a positive dimension.
 //! - `source_reference` = {scenario file, `net.asam.openscenario`, [kind, entity name]},
 //!   `model_reference` from `model3d`, `color_description` from the entity's colour,
 //!   `host_vehicle_id` from `--osi-host` (default the entity named `Ego`, else none),
@@ -26,7 +30,7 @@
 //! directory. `SOURCE_DATE_EPOCH` (Unix seconds, the reproducible-builds convention) pins
 //! it, and then also fills the MCAP `creation_time`, which stays unset otherwise.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::num::NonZeroU64;
 use std::path::{Path, PathBuf};
 
@@ -82,6 +86,19 @@ pub struct OsiSink {
     network: RoadNetwork,
     scenario_file: String,
     categories: BTreeMap<String, Category>,
+    /// Boxes of the road objects that ExternalObjectReferences name.
+    external_boxes: BTreeMap<String, ExternalBox>,
+    /// ExternalObjectReferences without a box, reported once and left out.
+    unboxed: BTreeSet<String>,
+}
+
+/// The bounding box of an OpenDRIVE `<object>`: centre relative to the object's origin
+/// (its base, so `height / 2` up) and length, width, height (OpenDRIVE 1.8 §13.2; a
+/// round object of `radius` r is 2r × 2r).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct ExternalBox {
+    centre: [f64; 3],
+    dimension: [f64; 3],
 }
 
 impl OsiSink {
@@ -134,9 +151,11 @@ impl OsiSink {
         Ok(OsiSink {
             builder,
             trace,
+            external_boxes: external_boxes(&scenario, &network),
             network,
             scenario_file: scenario_path.display().to_string(),
             categories: categories(&scenario),
+            unboxed: BTreeSet::new(),
         })
     }
 
@@ -146,9 +165,14 @@ impl OsiSink {
         network: &RoadNetwork,
         scenario_file: &str,
         category: Option<Category>,
+        external: Option<&ExternalBox>,
         e: &EntityFrame<'_>,
     ) -> Result<(), osi::Error> {
-        let state = rigid_body_state(e);
+        let mut state = rigid_body_state(e);
+        if let Some(b) = external {
+            state.bbox_centre = b.centre;
+            state.dimension = b.dimension;
+        }
         let lanes: Vec<Identifier> = e
             .road_position
             .and_then(|p| osi::lanes::assigned_lane_at(frame.ids(), network, p))
@@ -203,14 +227,34 @@ impl FrameSink for OsiSink {
         let mut gt = self.builder.begin_frame(nanos);
         for e in frame.objects() {
             let category = self.categories.get(e.name).copied();
-            Self::add(&mut gt, &self.network, &self.scenario_file, category, &e).map_err(
-                |err| {
-                    std::io::Error::other(format!(
-                        "OSI frame at t = {:.3} s, entity '{}': {err}",
-                        frame.time, e.name
-                    ))
-                },
-            )?;
+            let external = (e.kind == EngineKind::External && !has_box(&e))
+                .then(|| self.external_boxes.get(e.name));
+            if external == Some(None) {
+                if self.unboxed.insert(e.name.to_owned()) {
+                    eprintln!(
+                        "warning: OSI: ExternalObjectReference '{}' has no bounding box and \
+                         names no <object> with length, width (or radius) and height in the \
+                         road network; left out of the ground truth",
+                        e.name
+                    );
+                }
+                continue;
+            }
+            let external = external.flatten();
+            Self::add(
+                &mut gt,
+                &self.network,
+                &self.scenario_file,
+                category,
+                external,
+                &e,
+            )
+            .map_err(|err| {
+                std::io::Error::other(format!(
+                    "OSI frame at t = {:.3} s, entity '{}': {err}",
+                    frame.time, e.name
+                ))
+            })?;
         }
         let gt = gt.finish();
         self.trace.offer(&gt).map_err(std::io::Error::other)
@@ -244,6 +288,42 @@ fn rigid_body_state(e: &EntityFrame<'_>) -> RigidBodyState {
         ],
         ..Default::default()
     }
+}
+
+/// Whether the engine knows a positive box for `e`.
+fn has_box(e: &EntityFrame<'_>) -> bool {
+    let b = e.bounding_box;
+    b.length() > 0.0 && b.width() > 0.0 && b.height() > 0.0
+}
+
+/// Boxes of the road-network objects named by the scenario's ExternalObjectReferences
+/// (the first `<object>` of that name, roads in file order).
+fn external_boxes(scenario: &Scenario, network: &RoadNetwork) -> BTreeMap<String, ExternalBox> {
+    let objects: Vec<&opendrive::Object> =
+        network.roads().iter().flat_map(|r| &r.objects).collect();
+    scenario
+        .entities
+        .scenario_objects
+        .iter()
+        .filter_map(|o| match &o.entity_object {
+            EntityObject::ExternalObjectReference(name) => {
+                let object = objects.iter().find(|x| x.name == *name)?;
+                let dimension = match (object.length, object.width, object.radius) {
+                    (Some(l), Some(w), _) => [l, w, object.height?],
+                    (_, _, Some(r)) => [2.0 * r, 2.0 * r, object.height?],
+                    _ => return None,
+                };
+                dimension
+                    .iter()
+                    .all(|d| d.is_finite() && *d > 0.0)
+                    .then(|| {
+                        let centre = [0.0, 0.0, dimension[2] / 2.0];
+                        (o.name.clone(), ExternalBox { centre, dimension })
+                    })
+            }
+            _ => None,
+        })
+        .collect()
 }
 
 /// The entity's colour as an OSI `ColorDescription` (sRGB channels 0–255 → 0–1).

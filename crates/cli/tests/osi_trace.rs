@@ -20,7 +20,10 @@ use engine::runtime::EntityKind;
 use osi::osi3::moving_object::Type as MovingType;
 use osi::osi3::{GroundTruth, Identifier};
 use osi::trace::{read_mcap, read_osi};
-use osi_common::{corpus, engine_frames, oscsim_ok, out_dir, rotate, State, DURATION};
+use osi_common::{
+    assert_close, corpus, engine_frames, object_ids, oscsim_ok, out_dir, rotate, xyz, State,
+    DURATION,
+};
 
 /// f64 agreement of two evaluation orders of the same few products and sums; the
 /// coordinates are below 10⁴ m, so rounding stays near 10⁻¹² m.
@@ -29,20 +32,6 @@ const TOLERANCE: f64 = 1e-9;
 fn id(i: Option<Identifier>) -> u64 {
     i.and_then(|i| i.value)
         .expect("every OSI id this crate writes is set")
-}
-
-fn xyz(v: Option<osi::osi3::Vector3d>) -> [f64; 3] {
-    let v = v.expect("position, velocity are set on every object");
-    [v.x, v.y, v.z].map(|c| c.expect("all three components are set"))
-}
-
-fn assert_close(what: &str, found: [f64; 3], expected: [f64; 3]) {
-    for k in 0..3 {
-        assert!(
-            (found[k] - expected[k]).abs() < TOLERANCE,
-            "{what}: expected {expected:?}, found {found:?}"
-        );
-    }
 }
 
 /// Lane id → (road id, lane id) from the lanes' source_reference.
@@ -83,11 +72,8 @@ fn compare(trace: &[GroundTruth], engine: &[(f64, Vec<State>)]) -> usize {
         }
         // Ids unique across objects, lanes and boundaries (OSI is_globally_unique).
         let mut all = BTreeSet::new();
-        let frame_ids = gt
-            .moving_object
-            .iter()
-            .map(|o| o.id)
-            .chain(gt.stationary_object.iter().map(|o| o.id))
+        let frame_ids = object_ids(gt)
+            .into_iter()
             .chain(gt.lane.iter().map(|l| l.id))
             .chain(gt.lane_boundary.iter().map(|b| b.id));
         for fid in frame_ids {
@@ -130,11 +116,16 @@ fn compare(trace: &[GroundTruth], engine: &[(f64, Vec<State>)]) -> usize {
             let c = rotate(h, p, r, s.bbox_centre);
             let base = o.base.as_ref().expect("every moving object has a base");
             let what = format!("frame {i} ({time} s), {}", s.name);
-            assert_close(&what, xyz(base.position), [x + c[0], y + c[1], z + c[2]]);
+            assert_close(
+                &what,
+                xyz(base.position),
+                [x + c[0], y + c[1], z + c[2]],
+                TOLERANCE,
+            );
             let w = s.yaw_rate;
             let v = s.velocity;
             let expected_v = [v[0] - w * c[1], v[1] + w * c[0], v[2]];
-            assert_close(&what, xyz(base.velocity), expected_v);
+            assert_close(&what, xyz(base.velocity), expected_v, TOLERANCE);
             let assigned = &o
                 .moving_object_classification
                 .as_ref()

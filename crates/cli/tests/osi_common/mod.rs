@@ -139,3 +139,28 @@ pub fn rotate(h: f64, p: f64, r: f64, v: [f64; 3]) -> [f64; 3] {
     };
     apply(rz, apply(ry, apply(rx, v)))
 }
+
+/// `[x, y, z]` of a set OSI vector.
+pub fn xyz(v: Option<osi::osi3::Vector3d>) -> [f64; 3] {
+    let v = v.expect("the vectors this crate writes are set");
+    [v.x, v.y, v.z].map(|c| c.expect("all three components are set"))
+}
+
+/// Asserts each component of `found` within `tolerance` of `expected`.
+pub fn assert_close(what: &str, found: [f64; 3], expected: [f64; 3], tolerance: f64) {
+    for k in 0..3 {
+        assert!(
+            (found[k] - expected[k]).abs() < tolerance,
+            "{what}: expected {expected:?}, found {found:?}"
+        );
+    }
+}
+
+/// Ids of the frame's moving then stationary objects.
+pub fn object_ids(gt: &osi::osi3::GroundTruth) -> Vec<Option<osi::osi3::Identifier>> {
+    gt.moving_object
+        .iter()
+        .map(|o| o.id)
+        .chain(gt.stationary_object.iter().map(|o| o.id))
+        .collect()
+}
