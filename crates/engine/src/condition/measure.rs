@@ -18,7 +18,7 @@
 //!
 //! Lane coordinates: as road coordinates, with the longitudinal value stretched by the ratio
 //! of the triggering entity's lane centre line length to the reference-line length between
-//! the two reference points (`lane_length`; exact between reference points on one road, the
+//! the two reference points (`position::lane_length`; exact between reference points on one road, the
 //! same ratio applied to box gaps; across roads the reference-line value is kept).
 //!
 //! `routingAlgorithm="assignedRoute"` measures longitudinal road and lane distances along the
@@ -34,13 +34,12 @@
 use opendrive::{Pose, Real, RoadNetwork};
 use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, RoutingAlgorithm};
 
-use super::lane_length::lane_arc_length;
 use super::ConditionErrorKind;
 use crate::domain::{
     BoundingBox, DistanceDirection, DistanceMode, MovableObject, Physical, PhysicalObject,
     RouteDistanceEnum, TrafficParticipant,
 };
-use crate::position::{local_to_world, EntityView};
+use crate::position::{lane_arc_length, local_to_world, EntityView};
 
 /// Half-width of the central difference that turns a distance into its rate (s).
 const RATE_STEP: Real = 1e-3;

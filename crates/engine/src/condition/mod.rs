@@ -13,7 +13,6 @@
 //! | `time_of_day` | xsd:dateTime → seconds since the epoch |
 //! | `by_value` | SimulationTime, Parameter, Variable, UserDefinedValue, StoryboardElementState, TimeOfDay, TrafficSignal, TrafficSignalController |
 //! | `measure` | distances: freespace, coordinateSystem, relativeDistanceType; their rates |
-//! | `lane_length` | arc length along a lane centre line (lane coordinate distances) |
 //! | `motion` | Speed, RelativeSpeed, Acceleration, StandStill, TraveledDistance |
 //! | `road_state` | EndOfRoad, Offroad, Collision |
 //! | `spacing` | Distance, RelativeDistance, ReachPosition, TimeHeadway, TimeToCollision |
@@ -29,7 +28,6 @@ mod clearance;
 mod context;
 mod error;
 mod evaluate;
-mod lane_length;
 mod measure;
 mod motion;
 mod registry;
@@ -42,7 +40,6 @@ mod time_of_day;
 pub use context::ConditionContext;
 pub use error::{ConditionError, ConditionErrorKind};
 pub use evaluate::evaluate;
-pub use lane_length::SIMPSON_STEP;
 pub use motion::{DURATION_TOLERANCE, STAND_STILL_SPEED};
 pub use registry::UserValueRegistry;
 pub use road_state::END_OF_ROAD_TOLERANCE;

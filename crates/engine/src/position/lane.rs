@@ -12,8 +12,8 @@
 //!   reference entity is facing" — is followed literally: the distance is measured along the
 //!   centre line of the entity's lane (arc length, not reference-line s), forwards when the
 //!   entity faces along +s (|relative heading| ≤ π/2), else backwards; then the lane changes
-//!   by dLane at that s. The arc length is summed over chords of `LANE_STEP` of s (chord
-//!   error below 1e-8 relative on a 100 m radius).
+//!   by dLane at that s. The arc length is integrated by `lane_length` (Simpson's rule on the
+//!   exact centre-line speed, exact on arcs and straights).
 //!
 //! With `ds` the walk follows the entity's lane through lane sections and onto connecting
 //! roads (`lane_walk`, the 1.3 continuation rule), and dLane is counted on the road reached
@@ -27,13 +27,11 @@ use opendrive::{Direction, Pose, Real, RoadNetwork};
 use scenario::{Orientation, SourcePos};
 
 use super::error::road_error;
+use super::lane_length::s_at_lane_distance;
 use super::lane_walk::walk;
 use super::orientation::on_surface;
 use super::world::{entity, finite};
 use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
-
-/// Step of s (m) for summing the arc length of a lane centre line.
-const LANE_STEP: Real = 0.1;
 
 /// Heading of lane `lane_id`'s driving direction at a point where its centre line heads
 /// `centre_h`: `centre_h`, turned by π for lanes driven towards −s.
@@ -135,8 +133,17 @@ pub(crate) fn relative_lane<Q: EntityQuery + ?Sized>(
         Along::Lane(ds_lane) => {
             finite(&[("dsLane", ds_lane)], pos)?;
             let forward = rp.relative_heading.abs() <= PI / 2.0;
-            let s = s_after_lane_distance(network, &rp.road_id, rp.lane_id, rp.s, ds_lane, forward)
-                .map_err(|e| road_error(e, pos))?;
+            // A negative dsLane goes the other way.
+            let forward = forward == (ds_lane >= 0.0);
+            let s = s_at_lane_distance(
+                network,
+                &rp.road_id,
+                rp.lane_id,
+                rp.s,
+                ds_lane.abs(),
+                forward,
+            )
+            .map_err(|e| road_error(e, pos))?;
             (rp.road_id.clone(), rp.lane_id, s, d_lane)
         }
     };
@@ -157,50 +164,4 @@ pub(crate) fn relative_lane<Q: EntityQuery + ?Sized>(
         });
     }
     lane(network, &road_id, target, [s, offset], orientation, pos)
-}
-
-/// The s reached after travelling `distance` m (signed: negative goes the other way) along
-/// the centre line of `lane_id` from `s0`, towards +s when `forward`.
-fn s_after_lane_distance(
-    network: &RoadNetwork,
-    road_id: &str,
-    lane_id: i32,
-    s0: Real,
-    distance: Real,
-    forward: bool,
-) -> Result<Real, opendrive::Error> {
-    let sign = if forward == (distance >= 0.0) {
-        1.0
-    } else {
-        -1.0
-    };
-    let goal = distance.abs();
-    let length = network.road(road_id).map_or(Real::INFINITY, |r| r.length);
-    let mut s = s0;
-    let mut prev = network.lane_pose(road_id, lane_id, s, 0.0)?;
-    let mut travelled = 0.0;
-    while travelled < goal {
-        // Clamped to the road so that a goal at its very end is reached; a step that cannot
-        // move any more asks for the unclamped s, which reports the s-out-of-range error.
-        let mut next_s = (s + sign * LANE_STEP).clamp(0.0, length);
-        if next_s == s {
-            next_s = s + sign * LANE_STEP;
-        }
-        let next = network.lane_pose(road_id, lane_id, next_s, 0.0)?;
-        let chord = (next.x - prev.x)
-            .hypot(next.y - prev.y)
-            .hypot(next.z - prev.z);
-        if travelled + chord >= goal {
-            let fraction = if chord > 0.0 {
-                (goal - travelled) / chord
-            } else {
-                0.0
-            };
-            return Ok(s + (next_s - s) * fraction);
-        }
-        travelled += chord;
-        s = next_s;
-        prev = next;
-    }
-    Ok(s)
 }

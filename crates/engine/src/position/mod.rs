@@ -12,6 +12,7 @@
 //! | `world` | WorldPosition, RelativeWorldPosition, RelativeObjectPosition |
 //! | `road` | RoadPosition, RelativeRoadPosition |
 //! | `lane` | LanePosition, RelativeLanePosition (ds and dsLane) |
+//! | `lane_length` | arc length along a lane centre line; s after a distance along it |
 //! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
 //! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) |
 //! | `trajectory` | TrajectoryPosition on a polyline |
@@ -19,6 +20,7 @@
 
 mod error;
 mod lane;
+mod lane_length;
 mod lane_walk;
 mod orientation;
 mod query;
@@ -35,4 +37,6 @@ pub use resolve::resolve;
 pub use resolved::ResolvedPosition;
 
 pub(crate) use lane::{add_lanes, driving_heading as lane_driving_heading};
+pub(crate) use lane_length::lane_arc_length;
+pub use lane_length::SIMPSON_STEP;
 pub(crate) use orientation::local_to_world;
