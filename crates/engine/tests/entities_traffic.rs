@@ -191,3 +191,21 @@ fn same_seed_same_traffic_other_seed_other_traffic() {
     assert_eq!(a, swarm_traffic(1));
     assert_ne!(a, swarm_traffic(2));
 }
+
+/// TrafficStopAction names `src` and starts at the first step with t > 3 s (3.05 s): the
+/// source has spawned its vehicles of 1, 2 and 3 s and no more; those drive on (entity_3 at
+/// about 100 + 20 · (8.05 − 3) = 201 m in the last frame).
+#[test]
+fn traffic_stop_action_ends_the_named_source() {
+    let (frames, _) = run(&file("traffic_stop.xosc"), EngineConfig::default());
+    let end = frames.0.last().map_or(0.0, |r| r.time);
+    for n in 1..=3 {
+        assert!(rows(&frames, &format!("src.entity_{n}")).next().is_some());
+    }
+    assert!(rows(&frames, "src.entity_4").next().is_none());
+    let last = frames.at("src.entity_3", end);
+    assert!(
+        (last.x - 201.0).abs() <= 1.0 && (last.speed - 20.0).abs() < 1e-12,
+        "{last:?}"
+    );
+}
