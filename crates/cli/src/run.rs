@@ -162,7 +162,9 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
             break reason;
         }
     };
-    frames.finish().context("cannot write the CSV")?;
+    frames
+        .finish()
+        .context("cannot finish the CSV or the OSI trace")?;
     events.finish().context("cannot write the event log")?;
     if let Some(bar) = bar {
         bar.finish_and_clear();

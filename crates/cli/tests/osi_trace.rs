@@ -7,7 +7,8 @@
 //!   R = Rz·Ry·Rx multiplied out from its three factors (OpenSCENARIO 1.3 §6.3, OSI 3.8
 //!   osi_common.proto Orientation3d: both z-y'-x'');
 //! - its velocity = v_ref + ω × r with ω = (0, 0, yaw rate) (yaw turns about world z; the
-//!   engine reports no pitch or roll rate), r the rotated box centre;
+//!   engine reports no pitch or roll rate), r the rotated box centre; its acceleration
+//!   a_ref + ω × (ω × r) (no angular acceleration); orientation and dimension as given;
 //! - the assigned lane: the OSI Lane whose source_reference identifiers are the engine's
 //!   road id and lane id (OSI 3.8 osi_lane.proto: [road id, lane_section s, lane id]).
 
@@ -126,6 +127,16 @@ fn compare(trace: &[GroundTruth], engine: &[(f64, Vec<State>)]) -> usize {
             let v = s.velocity;
             let expected_v = [v[0] - w * c[1], v[1] + w * c[0], v[2]];
             assert_close(&what, xyz(base.velocity), expected_v, TOLERANCE);
+            // a = a_ref + ω × (ω × r) (no angular acceleration reported): -ψ̇²·(r_x, r_y, 0).
+            let a = s.acceleration;
+            let expected_a = [a[0] - w * w * c[0], a[1] - w * w * c[1], a[2]];
+            assert_close(&what, xyz(base.acceleration), expected_a, TOLERANCE);
+            let angles = base.orientation.expect("orientation set");
+            let found = [angles.yaw, angles.pitch, angles.roll].map(|v| v.expect("angle set"));
+            assert_close(&what, found, [h, p, r], TOLERANCE);
+            let d = base.dimension.expect("dimension set");
+            let found = [d.length, d.width, d.height].map(|v| v.expect("extent set"));
+            assert_close(&what, found, s.dimension, TOLERANCE);
             let assigned = &o
                 .moving_object_classification
                 .as_ref()

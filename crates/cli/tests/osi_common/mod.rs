@@ -67,8 +67,12 @@ pub struct State {
     pub bbox_centre: [f64; 3],
     /// Velocity of the reference point, world frame (m/s).
     pub velocity: [f64; 3],
+    /// Acceleration of the reference point, world frame (m/s²).
+    pub acceleration: [f64; 3],
     /// Yaw rate (rad/s).
     pub yaw_rate: f64,
+    /// Length, width, height (m).
+    pub dimension: [f64; 3],
     /// Road id and lane id when the reference point is on the road surface.
     pub lane: Option<(String, i32)>,
 }
@@ -89,7 +93,13 @@ impl FrameSink for Recorder {
                     pose: [e.pose.x, e.pose.y, e.pose.z, e.pose.h, e.pose.p, e.pose.r],
                     bbox_centre: [c.x, c.y, c.z],
                     velocity: [e.velocity.x, e.velocity.y, e.velocity.z],
+                    acceleration: [e.acceleration.x, e.acceleration.y, e.acceleration.z],
                     yaw_rate: e.yaw_rate,
+                    dimension: [
+                        e.bounding_box.length(),
+                        e.bounding_box.width(),
+                        e.bounding_box.height(),
+                    ],
                     lane: e
                         .road_position
                         .filter(|p| p.distance <= 1e-9)
