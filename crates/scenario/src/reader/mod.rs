@@ -15,6 +15,8 @@ pub(crate) mod params;
 pub(crate) mod positions;
 pub(crate) mod private_actions;
 pub(crate) mod references;
+pub(crate) mod resolve;
+pub(crate) mod road_network;
 pub(crate) mod routing;
 pub(crate) mod scenario;
 pub(crate) mod selections;
