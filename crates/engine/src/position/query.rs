@@ -33,20 +33,24 @@ pub struct EntityView<'a> {
     /// Where the reference point lies on the road network (`RoadNetwork::locate` of the
     /// pose); `None` when the runtime found no road at all.
     pub road_position: Option<&'a RoadPosition>,
-    /// Signed longitudinal speed, m/s (negative when reversing): the value SpeedCondition
-    /// compares when it has no `direction`.
+    /// Signed speed along the entity's heading, m/s (negative when reversing): what
+    /// SpeedCondition and RelativeSpeedCondition compare when they have no `direction`, what
+    /// TimeHeadwayCondition divides by, and what StandStillCondition tests (|speed|).
     pub speed: Real,
-    /// Velocity in the entity's own axes (x forward, y left, z up), world as reference.
+    /// Velocity in the entity's own axes (x forward, y left, z up), world as reference: the
+    /// components of directional speed conditions, and the motion that TimeToCollision
+    /// extrapolates.
     pub velocity: Velocity6d,
-    /// Acceleration in the entity's own axes, world as reference.
+    /// Acceleration in the entity's own axes, world as reference (AccelerationCondition; x
+    /// when it has no `direction`).
     pub acceleration: Acceleration6d,
     /// Distance travelled since the start of the simulation along the path (odometer), m:
     /// what TraveledDistanceCondition compares.
     pub odometer: Real,
     /// The bounding box, centre relative to the reference point (XSD `BoundingBox`).
     pub bounding_box: BoundingBox,
-    /// The route assigned by an AssignRouteAction, if any: used for
-    /// `routingAlgorithm="assignedRoute"` and RoutePosition `FromCurrentEntity`.
+    /// The route assigned by an AssignRouteAction, if any: the path of
+    /// `routingAlgorithm="assignedRoute"` distances.
     pub route: Option<&'a Route>,
     /// The trajectory the entity follows (FollowTrajectoryAction), if any: the frame of
     /// `coordinateSystem="trajectory"` distances.
