@@ -326,3 +326,50 @@ fn along_route_true_reads_as_road_longitudinal() {
     );
     assert_eq!(w.pos.line, 148);
 }
+
+/// The esmini habits accepted for its corpus (reader/compat.rs, reader/resolve.rs), each
+/// with a warning where it departs from the standard.
+#[test]
+fn esmini_compatibility_forms() {
+    let corpus = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus/esmini/xosc"
+    ));
+    // traffic_lights.xosc line 285: `value="${$RedLightDistance - 6}"` with the *string*
+    // parameter RedLightDistance = "50": read as the number 50, so 50 − 6 = 44.
+    let s = Scenario::load(&corpus.join("traffic_lights.xosc")).unwrap();
+    let mut found = None;
+    for story in &s.storyboard.stories {
+        for act in &story.acts {
+            for m in act.maneuver_groups.iter().flat_map(|g| &g.maneuvers) {
+                for e in &m.events {
+                    for a in &e.actions {
+                        if a.name == "StopOnYellowAction" {
+                            found = Some(a.kind.clone());
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let Some(ActionKind::Private(PrivateAction::Longitudinal(LongitudinalAction::Speed {
+        dynamics,
+        ..
+    }))) = found
+    else {
+        panic!("{found:?}")
+    };
+    assert!((dynamics.value - 44.0).abs() < TOL);
+    assert!(s.warnings.iter().any(|w| w.pos.line == 285
+        && w.message == "SpeedActionDynamics@value: a string parameter holding a number is used as a number"));
+
+    // cut-in.xosc line 162: `<Condition name="${BrakeCondition_HWT + _ + $HeadwayTime_Brake}"`
+    // is no 1.3 expression; the name is kept as written.
+    let s = Scenario::load(&corpus.join("cut-in.xosc")).unwrap();
+    let w = s
+        .warnings
+        .iter()
+        .find(|w| w.message.starts_with("Condition@name kept as written"))
+        .unwrap();
+    assert_eq!(w.pos.line, 162);
+}
