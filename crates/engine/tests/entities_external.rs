@@ -70,3 +70,18 @@ fn unknown_external_object_is_rejected() {
         "{text}"
     );
 }
+
+/// §7.2.2.5: actions that make no sense for an entity type are restricted. An
+/// ExternalObjectReference is part of the road network: a SpeedAction on it is refused at
+/// build, at the action's place.
+#[test]
+fn speed_action_on_an_external_object_is_rejected() {
+    let err = Engine::load(&file("external_speed.xosc"), &[], EngineConfig::default())
+        .expect_err("must be refused");
+    let text = err.to_string();
+    assert!(
+        text.starts_with("expected a Vehicle, Pedestrian or MiscObject as the actor of a LongitudinalAction (§7.2.2.5), found ExternalObjectReference 'CallBox' at ")
+            && text.ends_with("external_speed.xosc:14:17"),
+        "{text}"
+    );
+}

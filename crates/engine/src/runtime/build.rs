@@ -60,6 +60,7 @@ pub(crate) fn build(scenario: &Scenario, network: RoadNetwork) -> Result<Built, 
     let mut world = World::new(network, entities);
     world.trailers = trailers;
     super::selection::check_multiplicity(scenario)?;
+    super::selection::check_actor_kinds(scenario)?;
     super::external::place_external_objects(scenario, &mut world)?;
     world.selections = super::selection::Selections::new(scenario);
     world.parameters = scenario

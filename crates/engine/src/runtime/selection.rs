@@ -10,22 +10,24 @@
 //! Where a selection is used:
 //! * as `TriggeringEntities` (each condition evaluation): the condition is evaluated for every
 //!   current member and combined by `any`/`all` (§7.2.2.2);
-//! * as ManeuverGroup actors: the build expands it and each private action runs per member.
+//! * as ManeuverGroup actors: each private action runs per member, the members taken when the
+//!   action starts.
 //!
 //! §7.2.2.5 restricts references that need one position, lane or box: a RelativeTargetLane,
 //! RelativeTargetLaneOffset, RelativeTargetSpeed, Longitudinal/LateralDistanceAction or
 //! SpeedProfileAction reference, and the reference entity of TimeHeadway, TimeToCollision,
 //! RelativeSpeed, RelativeDistance and RelativeAngle conditions must be a ScenarioObject;
-//! [`check_multiplicity`] rejects a selection there when the engine is built. Selection
-//! cycles are rejected by the scenario loader.
+//! [`check_multiplicity`] rejects a selection there when the engine is built, and
+//! [`check_actor_kinds`] actions on entity types they cannot apply to. Selection cycles are
+//! rejected by the scenario loader.
 
 use std::borrow::Cow;
 use std::collections::BTreeMap;
 
 use scenario::{
-    Action, ActionKind, Condition, ConditionKind, EntityCondition, EntitySelection, LateralAction,
-    LongitudinalAction, PrivateAction, Scenario, SelectionMember, SourcePos, SpeedTarget,
-    TimeToCollisionTarget, Trigger,
+    Action, ActionKind, Condition, ConditionKind, EntityCondition, EntityObject, EntitySelection,
+    LateralAction, LongitudinalAction, PrivateAction, Scenario, SelectionMember, SourcePos,
+    SpeedTarget, TimeToCollisionTarget, Trigger,
 };
 
 use super::entity::EntityId;
@@ -211,6 +213,70 @@ pub(crate) fn check_multiplicity(scenario: &Scenario) -> Result<(), RuntimeError
     {
         if let Some((name, what)) = condition_reference(c) {
             check(name, what, &c.pos)?;
+        }
+    }
+    Ok(())
+}
+
+/// Rejects private actions on entities they cannot apply to (§7.2.2.5, first restriction):
+/// motion (Longitudinal, Lateral, Synchronize) on an ExternalObjectReference (an object of the
+/// road network; §7.2.2 lets Vehicle, Pedestrian and MiscObject instances move), and
+/// TrailerAction on anything but a Vehicle. Actors are the Init `Private` entity and the
+/// ManeuverGroup actors with selections expanded to their declared members.
+pub(crate) fn check_actor_kinds(scenario: &Scenario) -> Result<(), RuntimeError> {
+    let entities = &scenario.entities;
+    let check = |actor_refs: &[String], a: &Action| {
+        let ActionKind::Private(p) = &a.kind else {
+            return Ok(());
+        };
+        let (what, vehicle_only) = match p {
+            PrivateAction::Longitudinal(_) => ("a LongitudinalAction", false),
+            PrivateAction::Lateral(_) => ("a LateralAction", false),
+            PrivateAction::Synchronize(_) => ("a SynchronizeAction", false),
+            PrivateAction::Trailer(_) => ("a TrailerAction", true),
+            _ => return Ok(()),
+        };
+        for name in actor_refs.iter().flat_map(|r| entities.resolve(r)) {
+            let Some(object) = entities.object(name) else {
+                continue;
+            };
+            let (kind, allowed) = match &object.entity_object {
+                EntityObject::Vehicle(_) => ("Vehicle", true),
+                EntityObject::Pedestrian(_) => ("Pedestrian", !vehicle_only),
+                EntityObject::MiscObject(_) => ("MiscObject", !vehicle_only),
+                _ => ("ExternalObjectReference", false),
+            };
+            if !allowed {
+                let expected = if vehicle_only {
+                    format!("a Vehicle as the actor of {what} (§7.2.2.5)")
+                } else {
+                    format!("a Vehicle, Pedestrian or MiscObject as the actor of {what} (§7.2.2.5)")
+                };
+                return Err(RuntimeError::at(
+                    expected,
+                    format!("{kind} '{name}'"),
+                    &a.pos,
+                ));
+            }
+        }
+        Ok(())
+    };
+    let sb = &scenario.storyboard;
+    for p in &sb.init.privates {
+        for a in &p.actions {
+            check(std::slice::from_ref(&p.entity_ref), a)?;
+        }
+    }
+    for act in sb.stories.iter().flat_map(|s| &s.acts) {
+        for g in &act.maneuver_groups {
+            for a in g
+                .maneuvers
+                .iter()
+                .flat_map(|m| &m.events)
+                .flat_map(|e| &e.actions)
+            {
+                check(&g.actors.entity_refs, a)?;
+            }
         }
     }
     Ok(())
