@@ -150,6 +150,9 @@ pub struct Entity {
     pub lateral_action: Option<ActionId>,
     /// The last step could not move the entity: its lane ends with no successor.
     pub at_lane_end: bool,
+    /// The running lateral action started before the running longitudinal one (or there is
+    /// none): the lateral motion of this step uses the speed of the step's start.
+    pub lateral_first: bool,
     /// Speed at the start of the step, before stage 2 (m/s).
     pub start_speed: Real,
     /// The pose was set by an action for this step (FollowTrajectoryAction): the controller
@@ -190,6 +193,7 @@ impl Entity {
             held: false,
             start_speed: 0.0,
             at_lane_end: false,
+            lateral_first: false,
             trailer: None,
         }
     }

@@ -7,8 +7,9 @@
 //! T = 2·d / (v₀ + v₁), so that a change starting from rest still progresses (a change linear
 //! in distance would never leave v = 0); the shape then runs over T.
 //!
-//! A vehicle's Performance (maxAcceleration, maxDeceleration, maxSpeed) bounds the change per
-//! step; the action then ends once the target is reached.
+//! A vehicle's Performance bounds the change: a transition whose peak rate would exceed
+//! maxAcceleration (maxDeceleration) is stretched in time to meet it, keeping its shape, as
+//! esmini does; the change per step is also clamped to the limits and to maxSpeed.
 
 use scenario::{
     DynamicsDimension, SourcePos, SpeedTarget, SpeedTargetValueType, TransitionDynamics,
@@ -17,7 +18,7 @@ use scenario::{
 use super::Part;
 use crate::runtime::entity::EntityId;
 use crate::runtime::error::RuntimeError;
-use crate::runtime::shapes::{progress, shape_value, span, Span};
+use crate::runtime::shapes::{peak_slope, progress, shape_value, span, Span};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 
@@ -120,6 +121,20 @@ pub(crate) fn start(
         } else {
             Span::Instant
         };
+    }
+    // The vehicle's acceleration limit stretches the transition so that the shape's peak rate,
+    // max f′·|Δv|/T, stays within it (the shape is kept, only slower).
+    if let (Span::Time(t), Some(perf)) = (span, world.entity(actor).performance) {
+        let limit = if v1 >= v0 {
+            perf.max_acceleration
+        } else {
+            perf.max_deceleration
+        }
+        .abs();
+        if limit > 0.0 {
+            let shortest = peak_slope(dynamics.dynamics_shape) * (v1 - v0).abs() / limit;
+            span = Span::Time(t.max(shortest));
+        }
     }
     let mut state = SpeedState {
         dynamics: *dynamics,

@@ -25,11 +25,10 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     }
     let old_h = e.pose.h;
     let old_v = e.velocity.translational.x;
-    // Under a lateral action the entity travels at the speed of the step's start: esmini's
-    // lateral actions move the entity before its longitudinal actions change the speed, and
-    // the reference runs show it (a·dt² per step of combined braking and lane change).
-    // Otherwise it travels at the speed the longitudinal domain set for this step.
-    let speed = if e.lateral_action.is_some() {
+    // Actions act in the order they started (as in esmini): a lateral action started before
+    // the running longitudinal one moves the entity before the speed changes, so the entity
+    // travels at the speed of the step's start; otherwise at the speed set for this step.
+    let speed = if e.lateral_first {
         e.start_speed
     } else {
         e.speed
