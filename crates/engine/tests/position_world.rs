@@ -124,3 +124,41 @@ fn relative_object_position_follows_pitch() {
     assert!((r.pose.z - (5.0 - 10.0 * 0.1f64.sin())).abs() < TOL);
     assert!((r.pose.p - 0.1).abs() < TOL);
 }
+
+#[test]
+fn relative_object_position_follows_roll() {
+    let mut w = straight();
+    // Roll 0.1 rad, right side down (OpenDRIVE sign): a point 1 m to the left at dz = 0 lies
+    // sin 0.1 = 0.099833 m higher and cos 0.1 = 0.995004 m to the left; with heading π/2
+    // "left" is −x.
+    w.place(
+        "Ego",
+        Pose {
+            x: 50.0,
+            y: 0.0,
+            z: 1.0,
+            h: FRAC_PI_2,
+            r: 0.1,
+            ..Pose::default()
+        },
+    );
+    let p = at(PositionKind::RelativeObject {
+        entity_ref: "Ego".into(),
+        dx: 0.0,
+        dy: 1.0,
+        dz: Some(0.0),
+        orientation: None,
+    });
+    let r = resolve(&p, &w).unwrap();
+    assert!(
+        (r.pose.x - (50.0 - 0.1f64.cos())).abs() < TOL,
+        "x = {}",
+        r.pose.x
+    );
+    assert!(r.pose.y.abs() < TOL, "y = {}", r.pose.y);
+    assert!(
+        (r.pose.z - (1.0 + 0.1f64.sin())).abs() < TOL,
+        "z = {}",
+        r.pose.z
+    );
+}
