@@ -10,6 +10,13 @@ fn file(name: &str) -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
 }
 
+/// The message of the build error of test file `name`.
+fn refused(name: &str) -> String {
+    Engine::load(&file(name), &[], EngineConfig::default())
+        .expect_err("must be refused")
+        .to_string()
+}
+
 /// (time, name, kind, x, y, z, h, height, speed) of every object in every frame.
 #[derive(Default)]
 struct Objects(Vec<(f64, String, EntityKind, [f64; 6])>);
@@ -61,9 +68,7 @@ fn external_objects_stand_at_their_road_network_objects() {
 /// ScenarioObject's place.
 #[test]
 fn unknown_external_object_is_rejected() {
-    let err = Engine::load(&file("external_unknown.xosc"), &[], EngineConfig::default())
-        .expect_err("must be refused");
-    let text = err.to_string();
+    let text = refused("external_unknown.xosc");
     assert!(
         text.starts_with("expected an object of the road network with this name, found ExternalObjectReference 'noSuchObject' at ")
             && text.ends_with("external_unknown.xosc:7:9"),
@@ -76,9 +81,7 @@ fn unknown_external_object_is_rejected() {
 /// build, at the action's place.
 #[test]
 fn speed_action_on_an_external_object_is_rejected() {
-    let err = Engine::load(&file("external_speed.xosc"), &[], EngineConfig::default())
-        .expect_err("must be refused");
-    let text = err.to_string();
+    let text = refused("external_speed.xosc");
     assert!(
         text.starts_with("expected a Vehicle, Pedestrian or MiscObject as the actor of a LongitudinalAction (§7.2.2.5), found ExternalObjectReference 'CallBox' at ")
             && text.ends_with("external_speed.xosc:14:17"),
