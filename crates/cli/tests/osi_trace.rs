@@ -22,8 +22,8 @@ use osi::osi3::moving_object::Type as MovingType;
 use osi::osi3::{GroundTruth, Identifier};
 use osi::trace::{read_mcap, read_osi};
 use osi_common::{
-    assert_close, corpus, engine_frames, object_ids, oscsim_ok, out_dir, rotate, xyz, State,
-    DURATION,
+    assert_close, corpus, engine_frames, engine_frames_for, object_ids, oscsim_for, oscsim_ok,
+    out_dir, rotate, xyz, State, DURATION,
 };
 
 /// f64 agreement of two evaluation orders of the same few products and sums; the
@@ -57,8 +57,8 @@ fn compare(trace: &[GroundTruth], engine: &[(f64, Vec<State>)]) -> usize {
         engine.len(),
         "one GroundTruth per engine frame"
     );
+    // Empty for a scenario without road network; then no object has a lane either.
     let lanes = lane_table(&trace[0]);
-    assert!(!lanes.is_empty(), "the first frame carries the lanes");
     let mut ids_by_name: BTreeMap<String, u64> = BTreeMap::new();
     let mut compared = 0;
     for (i, (gt, (time, states))) in trace.iter().zip(engine).enumerate() {
@@ -176,6 +176,7 @@ fn check(scenario: &str, test: &str) -> usize {
     );
     let engine = engine_frames(&path);
     let osi = read_osi(&osi_path).expect("the .osi trace reads back");
+    assert!(!osi[0].lane.is_empty(), "the first frame carries the lanes");
     let compared = compare(&osi, &engine);
     let mcap = read_mcap(&mcap_path).expect("the .mcap trace reads back");
     let frames: Vec<GroundTruth> = mcap.frames.iter().map(|f| f.ground_truth.clone()).collect();
@@ -239,4 +240,45 @@ fn out_dir_trace(test: &str) -> std::path::PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR"))
         .join(test)
         .join("trace.osi")
+}
+
+#[test]
+fn every_corpus_scenario_matches_the_engine_for_its_first_2_s() {
+    // Every scenario of the corpus (esmini's and the generated ones), 2 s each to keep the
+    // debug-build test short; the full runs go through scripts/osi_corpus_check.sh.
+    const SECONDS: f64 = 2.0;
+    let dir = out_dir("osi_corpus");
+    let mut scenarios: Vec<_> = ["esmini/xosc", "generated/xosc"]
+        .iter()
+        .flat_map(|folder| std::fs::read_dir(corpus(folder)).expect("corpus folder readable"))
+        .map(|e| e.expect("corpus entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "xosc"))
+        .collect();
+    scenarios.sort();
+    let (mut checked, mut objects, mut skipped) = (0, 0, Vec::new());
+    for scenario in &scenarios {
+        let trace = dir.join("trace.osi");
+        let out = oscsim_for(
+            scenario,
+            SECONDS,
+            &["--osi", trace.to_str().expect("UTF-8")],
+        );
+        match engine_frames_for(scenario, SECONDS) {
+            Ok(engine) => {
+                assert!(out.status.success(), "{}: {:?}", scenario.display(), out);
+                let osi = read_osi(&trace).expect("the .osi trace reads back");
+                objects += compare(&osi, &engine);
+                checked += 1;
+            }
+            Err(why) => {
+                // Does not run in-process: the binary must refuse it too, with exit 1.
+                assert_eq!(out.status.code(), Some(1), "{}: {why}", scenario.display());
+                skipped.push(scenario.file_name().expect("file").to_owned());
+            }
+        }
+    }
+    // The corpus README names the two broken esmini scenarios.
+    assert_eq!(skipped, ["auto_light.xosc", "car_walk.xosc"]);
+    assert_eq!(checked, scenarios.len() - 2);
+    assert!(objects > 0);
 }

@@ -33,10 +33,15 @@ pub fn out_dir(test: &str) -> PathBuf {
 
 /// Runs `oscsim run SCENARIO --duration DURATION --quiet EXTRA…` with the clock pinned.
 pub fn oscsim(scenario: &Path, extra: &[&str]) -> Output {
+    oscsim_for(scenario, DURATION, extra)
+}
+
+/// Runs `oscsim run SCENARIO --duration SECONDS --quiet EXTRA…` with the clock pinned.
+pub fn oscsim_for(scenario: &Path, seconds: f64, extra: &[&str]) -> Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_oscsim"))
         .arg("run")
         .arg(scenario)
-        .args(["--duration", &DURATION.to_string(), "--quiet"])
+        .args(["--duration", &seconds.to_string(), "--quiet"])
         .args(extra)
         .env("SOURCE_DATE_EPOCH", "0")
         .output()
@@ -114,16 +119,22 @@ impl FrameSink for Recorder {
 
 /// Runs `scenario` in-process for [`DURATION`] s with the binary's defaults.
 pub fn engine_frames(scenario: &Path) -> Vec<(f64, Vec<State>)> {
+    engine_frames_for(scenario, DURATION).expect("the corpus scenario loads and runs")
+}
+
+/// Runs `scenario` in-process for `seconds` with the binary's defaults; the error says why
+/// it does not load or run.
+pub fn engine_frames_for(scenario: &Path, seconds: f64) -> Result<Vec<(f64, Vec<State>)>, String> {
     let config = EngineConfig {
-        duration: Some(DURATION),
+        duration: Some(seconds),
         ..EngineConfig::default()
     };
-    let mut engine = Engine::load(scenario, &[], config).expect("the corpus scenario loads");
+    let mut engine = Engine::load(scenario, &[], config).map_err(|e| e.to_string())?;
     let mut recorder = Recorder::default();
     engine
         .run(&mut recorder, &mut ())
-        .expect("the corpus scenario runs");
-    recorder.0
+        .map_err(|e| e.to_string())?;
+    Ok(recorder.0)
 }
 
 /// R(h, p, r)·v with R = Rz(h)·Ry(p)·Rx(r), each factor written out and multiplied here
