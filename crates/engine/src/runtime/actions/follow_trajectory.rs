@@ -4,9 +4,9 @@
 //! holds both domains; without one it holds the lateral domain only and the actor keeps its own
 //! speed along the trajectory (semantics-pitfalls #7).
 //!
-//! The actor starts at `initialDistanceOffset` along the trajectory, else at the trajectory
-//! point closest to it; its pose is the trajectory point's (heading = the trajectory's
-//! tangent). The action ends at the end of an open trajectory; the actor then drives on under
+//! The actor starts at `initialDistanceOffset` along the trajectory (default 0, its start; with
+//! Timing, where the trajectory's clock says); its pose is the trajectory point's (heading = the
+//! trajectory's tangent). The action ends at the end of an open trajectory; the actor then drives on under
 //! the default controller from where it stands.
 
 use scenario::{SourcePos, Timing};
@@ -42,13 +42,12 @@ pub(crate) fn start(
         .map(|t| TrajectoryClock::new(t, now, pos))
         .transpose()
         .map_err(to_error)?;
-    let e = world.entity(actor);
+    // initialDistanceOffset (default 0: the trajectory's start), or with Timing the arc length
+    // the trajectory's own clock gives for now.
     let s = match (initial_distance_offset, clock.as_ref()) {
         (Some(d), _) => d.clamp(0.0, trajectory.length()),
-        (None, Some(c)) => trajectory
-            .s_at_simulation_time(c, now)
-            .unwrap_or_else(|| trajectory.closest(e.pose.x, e.pose.y).point.s),
-        (None, None) => trajectory.closest(e.pose.x, e.pose.y).point.s,
+        (None, Some(c)) => trajectory.s_at_simulation_time(c, now).unwrap_or(0.0),
+        (None, None) => 0.0,
     };
     let mut state = TrajectoryState {
         trajectory: Box::new(trajectory),
