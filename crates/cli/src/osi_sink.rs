@@ -126,6 +126,14 @@ impl OsiSink {
             .context("cannot build the OSI lanes of the road network")?;
         builder.set_model_reference(scenario.road_network.scene_graph_file.as_deref());
         builder.set_host(options.host.as_deref());
+        if let Some(host) = options.host.as_deref() {
+            if scenario.entities.object(host).is_none() {
+                eprintln!(
+                    "warning: --osi-host '{host}' names no entity of the scenario; \
+                     host_vehicle_id is set only if an entity of that name appears"
+                );
+            }
+        }
         make_room(&options.path)?;
         let pinned = source_date_epoch()?;
         let start = pinned.unwrap_or_else(now_unix_seconds);

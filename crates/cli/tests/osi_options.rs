@@ -67,7 +67,9 @@ fn host_is_ego_by_default_the_named_entity_or_none() {
         let path = dir.join(format!("{name}.osi"));
         let mut args = vec!["--osi", s(&path)];
         args.extend_from_slice(extra);
-        oscsim_ok(&cut_in(), &args);
+        let out = oscsim_ok(&cut_in(), &args);
+        let warned = String::from_utf8_lossy(&out.stderr).contains("names no entity");
+        assert_eq!(warned, name == "none", "warning only for an unknown host");
         let trace = read_osi(&path).expect("trace reads back");
         let id_of = |who: &str| {
             trace[0]
