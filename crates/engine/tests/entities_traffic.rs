@@ -209,3 +209,25 @@ fn traffic_stop_action_ends_the_named_source() {
         "{last:?}"
     );
 }
+
+/// A one-off TrafficAreaAction (1.3) on the road range s = 100 … 300 of lane −1: five vehicles
+/// from its distribution (a van, 5.5 m long), one per step, so in the frames of 0.05 … 0.25 s,
+/// each appearing inside the range, and never a sixth.
+#[test]
+fn traffic_area_action_fills_its_road_range_once() {
+    let path = file("traffic_area.xosc");
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+    let mut frames = Recorder::default();
+    engine.run(&mut frames, &mut Vec::new()).expect("runs");
+    for n in 1..=5 {
+        let name = format!("area.entity_{n}");
+        let first = rows(&frames, &name).next().expect("spawned");
+        assert!((first.time - 0.05 * n as f64).abs() < 1e-9, "{first:?}");
+        assert!((100.0..=300.0).contains(&first.x), "{first:?}");
+        assert_eq!(first.road.as_ref().map(|r| r.1), Some(-1));
+        let world = engine.world();
+        let id = world.id(&name).expect("in the store");
+        assert!((world.entity(id).bounding_box.length() - 5.5).abs() < 1e-12);
+    }
+    assert!(rows(&frames, "area.entity_6").next().is_none());
+}

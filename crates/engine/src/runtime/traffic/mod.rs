@@ -1,14 +1,17 @@
 //! Spawned traffic (OpenSCENARIO 1.3 §7.2.2.3 "Spawned objects", XSD `TrafficAction`):
-//! TrafficSourceAction, TrafficSinkAction, TrafficSwarmAction, TrafficStopAction.
+//! TrafficSourceAction, TrafficSinkAction, TrafficSwarmAction, TrafficAreaAction,
+//! TrafficStopAction.
 //!
 //! | module | job |
 //! | --- | --- |
+//! | `area` | TrafficAreaAction: a number of vehicles in a polygon or road ranges |
 //! | `random` | the per-action random streams, split from the run's seed |
 //! | `spawn` | vehicle templates, free lane points, adding and removing spawned vehicles |
 //! | `state` | the running traffic actions, their start and the traffic stage of the step |
 //! | `swarm` | TrafficSwarmAction: a ring of traffic around a central object |
 //! | `source_sink` | TrafficSourceAction and TrafficSinkAction |
 
+mod area;
 mod random;
 mod source_sink;
 mod spawn;

@@ -9,9 +9,11 @@
 //! the vehicles already spawned drive on. Positions (source, sink) are resolved once, at the
 //! start.
 
+use opendrive::Real;
 use rand_chacha::ChaCha8Rng;
-use scenario::{SourcePos, TrafficAction};
+use scenario::{SourcePos, TrafficAction, TrafficArea};
 
+use super::area::{Area, Shape};
 use super::random::stream;
 use super::source_sink::{Sink, Source};
 use super::swarm::Swarm;
@@ -56,6 +58,8 @@ pub(crate) struct Running {
     pub spawned: u32,
     /// Its spawned vehicles still in the scenario.
     pub members: Vec<EntityId>,
+    /// Nothing left to do (a one-off TrafficAreaAction that spawned all its vehicles).
+    done: bool,
     kind: Kind,
 }
 
@@ -64,6 +68,7 @@ enum Kind {
     Swarm(Box<Swarm>),
     Source(Box<Source>),
     Sink(Sink),
+    Area(Box<Area>),
 }
 
 impl Running {
@@ -74,13 +79,14 @@ impl Running {
     }
 }
 
-/// Whether oscsim runs this traffic action (TrafficAreaAction is not supported).
+/// Whether oscsim runs this traffic action (every kind of 1.3).
 pub(crate) fn supports(action: &TrafficAction) -> bool {
     matches!(
         action,
         TrafficAction::Source { .. }
             | TrafficAction::Sink { .. }
             | TrafficAction::Swarm { .. }
+            | TrafficAction::Area { .. }
             | TrafficAction::Stop
     )
 }
@@ -142,7 +148,41 @@ pub(crate) fn start(
             positive("radius", *radius)?,
             rate.map(|r| positive("rate", r)).transpose()?,
         )),
-        _ => return Err(RuntimeError::unsupported("TrafficAreaAction", pos)),
+        TrafficAction::Area {
+            continuous,
+            number_of_entities,
+            area,
+            distribution,
+        } => {
+            let shape = match area {
+                TrafficArea::Polygon(corners) => Shape::Polygon(
+                    corners
+                        .iter()
+                        .map(|c| point(world, c))
+                        .collect::<Result<_, _>>()?,
+                ),
+                TrafficArea::RoadRanges(ranges) => Shape::Ranges(
+                    ranges
+                        .iter()
+                        .flat_map(|r| {
+                            r.cursors.iter().map(move |(road, s, lanes)| {
+                                let from = s.unwrap_or(0.0);
+                                let to = r.length.map_or(Real::INFINITY, |l| from + l);
+                                (road.clone(), from, to, lanes.clone())
+                            })
+                        })
+                        .collect(),
+                ),
+                _ => return Err(RuntimeError::unsupported("this TrafficArea", pos)),
+            };
+            Kind::Area(Box::new(Area::new(
+                shape,
+                *number_of_entities,
+                *continuous,
+                distribution,
+            )))
+        }
+        _ => return Err(RuntimeError::unsupported("this TrafficAction", pos)),
     };
     let rng = stream(world.traffic.seed, &name);
     world.traffic.running.push(Running {
@@ -150,6 +190,7 @@ pub(crate) fn start(
         rng,
         spawned: 0,
         members: Vec::new(),
+        done: false,
         kind,
     });
     Ok(())
@@ -170,9 +211,14 @@ pub(crate) fn step(world: &mut World, dt: f64) {
                 s.step(world, &r.name, dt);
                 Ok(())
             }
+            Kind::Area(a) => a.step(world, r).map(|more| {
+                if !more {
+                    r.done = true;
+                }
+            }),
         };
         r.kind = kind;
-        result.is_ok()
+        result.is_ok() && !r.done
     });
     world.traffic.running = running;
 }
