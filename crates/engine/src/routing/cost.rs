@@ -158,3 +158,51 @@ pub(crate) fn enters_junction_by_id(network: &RoadNetwork, from: &str, to: &str)
 fn entered(from: Option<&str>, to: Option<&str>) -> bool {
     to.is_some() && to != from
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Road "1": type speed 108 km/h; lane −1 has its own 18 km/h, lane −2 none. Road "2": no
+    /// type at all. Road "3": type speed "no limit".
+    const XODR: &str = r#"<OpenDRIVE><header revMajor="1" revMinor="6"/>
+      <road id="1" length="10" junction="-1"><type s="0" type="town"><speed max="108" unit="km/h"/></type>
+        <planView><geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry></planView>
+        <lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>
+          <lane id="-1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/><speed sOffset="0" max="18" unit="km/h"/></lane>
+          <lane id="-2" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/></lane>
+        </right></laneSection></lanes></road>
+      <road id="2" length="10" junction="-1">
+        <planView><geometry s="0" x="0" y="50" hdg="0" length="10"><line/></geometry></planView>
+        <lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>
+          <lane id="-1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/></lane>
+        </right></laneSection></lanes></road>
+      <road id="3" length="10" junction="-1"><type s="0" type="motorway"><speed max="no limit"/></type>
+        <planView><geometry s="0" x="0" y="100" hdg="0" length="10"><line/></geometry></planView>
+        <lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>
+          <lane id="-1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/></lane>
+        </right></laneSection></lanes></road>
+    </OpenDRIVE>"#;
+
+    #[test]
+    fn speed_comes_from_lane_then_road_type_then_default() {
+        // A constant fixture that parses.
+        let net = RoadNetwork::from_str(XODR, std::path::Path::new("speeds.xodr")).unwrap();
+        let model = CostModel {
+            network: &net,
+            strategy: RouteStrategy::Fastest,
+            random_key: 0,
+            default_speed: DEFAULT_SPEED,
+        };
+        let h = |road: &str, lane: i32| net.lane_handle(road, lane, 5.0).unwrap();
+        // 18 km/h = 5 m/s on lane −1; 108 km/h = 30 m/s from the road type on lane −2;
+        // 50 km/h by default on road 2; 130 km/h for "no limit" on road 3.
+        assert!((model.speed(h("1", -1), 5.0) - 5.0).abs() < 1e-12);
+        assert!((model.speed(h("1", -2), 5.0) - 30.0).abs() < 1e-12);
+        assert!((model.speed(h("2", -1), 5.0) - 50.0 / 3.6).abs() < 1e-12);
+        assert!((model.speed(h("3", -1), 5.0) - 130.0 / 3.6).abs() < 1e-12);
+        // Fastest: 10 m on lane −1 take 2 s; a lane change there costs 10 m / 5 m/s = 2 s.
+        assert!((model.along(h("1", -1), 0.0, 10.0).primary - 2.0).abs() < 1e-12);
+        assert!((model.lane_change(h("1", -1), 0.0).primary - 2.0).abs() < 1e-12);
+    }
+}
