@@ -2,6 +2,7 @@
 //! bad one becomes an [`Error`] naming the file, row:col, element, attribute and what was
 //! expected (OpenDRIVE 1.8 XSD types `t_grEqZero`, `t_grZero`, `double`).
 
+use std::cell::OnceCell;
 use std::path::Path;
 
 use roxmltree::{Document, Node};
@@ -13,20 +14,39 @@ use crate::math::S_TOLERANCE;
 pub(crate) struct Reader<'a, 'input> {
     doc: &'a Document<'input>,
     path: &'a Path,
+    /// Byte offsets where lines start, built on the first position asked for, so that each
+    /// position costs a binary search, not a scan from the file's start (files with many
+    /// warnings would otherwise take quadratic time).
+    line_starts: OnceCell<Vec<usize>>,
 }
 
 impl<'a, 'input> Reader<'a, 'input> {
     /// A reader over a parsed document.
     pub(crate) fn new(doc: &'a Document<'input>, path: &'a Path) -> Self {
-        Self { doc, path }
+        Self {
+            doc,
+            path,
+            line_starts: OnceCell::new(),
+        }
     }
 
-    /// 1-based position of a byte offset.
+    /// 1-based position of a byte offset: row from the line table, column in characters (as
+    /// roxmltree counts them).
     pub(crate) fn pos(&self, byte: usize) -> TextPos {
-        let p = self.doc.text_pos_at(byte);
+        let text = self.doc.input_text();
+        let starts = self.line_starts.get_or_init(|| {
+            std::iter::once(0)
+                .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+                .collect()
+        });
+        let byte = byte.min(text.len());
+        let line = starts.partition_point(|&st| st <= byte).saturating_sub(1);
+        let col = text
+            .get(starts[line]..byte)
+            .map_or(0, |l| l.chars().count());
         TextPos {
-            row: p.row,
-            col: p.col,
+            row: u32::try_from(line + 1).unwrap_or(u32::MAX),
+            col: u32::try_from(col + 1).unwrap_or(u32::MAX),
         }
     }
 
