@@ -66,6 +66,23 @@ fn error_messages_name_expectation_finding_and_place() {
         ),
         "expected a finite x, found NaN at test.xosc:7:9"
     );
+    assert_eq!(
+        message(
+            PositionKind::Road {
+                road_id: "1".into(),
+                s: 1.0,
+                t: 0.0,
+                orientation: Some(scenario::Orientation {
+                    h: f64::INFINITY,
+                    p: 0.0,
+                    r: 0.0,
+                    reference: None,
+                }),
+            },
+            &w
+        ),
+        "expected a finite Orientation h, found inf at test.xosc:7:9"
+    );
 }
 
 #[test]

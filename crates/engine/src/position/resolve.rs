@@ -7,13 +7,13 @@
 //! Mercator definitions with datum shifts. oscsim therefore reports GeoPosition as
 //! unsupported, naming the network's geoReference (or its absence).
 
-use scenario::{Position, PositionKind};
+use scenario::{Orientation, Position, PositionKind};
 
 use super::lane::{lane, parse_lane_id, relative_lane, Along};
 use super::road::{relative_road, road};
 use super::route::route_position;
 use super::trajectory::trajectory_position;
-use super::world::{relative, world};
+use super::world::{finite, relative, world};
 use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
 
 /// Resolves `position` to a world pose and road position, reading reference entities and the
@@ -24,6 +24,16 @@ pub fn resolve<Q: EntityQuery + ?Sized>(
 ) -> Result<ResolvedPosition, PositionError> {
     let pos = &position.pos;
     let network = ctx.road_network();
+    if let Some(o) = orientation_of(&position.kind) {
+        finite(
+            &[
+                ("Orientation h", o.h),
+                ("Orientation p", o.p),
+                ("Orientation r", o.r),
+            ],
+            pos,
+        )?;
+    }
     match &position.kind {
         PositionKind::World { x, y, z, h, p, r } => world(network, *x, *y, *z, [*h, *p, *r], pos),
         PositionKind::RelativeWorld {
@@ -140,5 +150,21 @@ pub fn resolve<Q: EntityQuery + ?Sized>(
             },
             pos,
         )),
+    }
+}
+
+/// The Orientation element of a position, if it has one.
+fn orientation_of(kind: &PositionKind) -> Option<&Orientation> {
+    match kind {
+        PositionKind::RelativeWorld { orientation, .. }
+        | PositionKind::RelativeObject { orientation, .. }
+        | PositionKind::Road { orientation, .. }
+        | PositionKind::RelativeRoad { orientation, .. }
+        | PositionKind::Lane { orientation, .. }
+        | PositionKind::RelativeLane { orientation, .. }
+        | PositionKind::Route { orientation, .. }
+        | PositionKind::Geo { orientation, .. }
+        | PositionKind::Trajectory { orientation, .. } => orientation.as_ref(),
+        _ => None,
     }
 }

@@ -67,6 +67,7 @@ pub(crate) fn world(
     finite(&[("x", x), ("y", y), ("z", z.unwrap_or(0.0))], pos)?;
     let z = z.unwrap_or_else(|| surface_z(network, x, y).unwrap_or(0.0));
     let [h, p, r] = angles.map(|a| a.unwrap_or(0.0));
+    finite(&[("h", h), ("p", p), ("r", r)], pos)?;
     let pose = Pose {
         x,
         y,
