@@ -8,6 +8,7 @@
 use opendrive::{Direction, Pose, Real, RoadPosition};
 use scenario::{ObjectType, Performance, VehicleCategory};
 
+use super::actions::ControllerOverrides;
 use crate::domain::{Acceleration6d, BoundingBox, Color, Route, Velocity6d};
 use crate::storyboard::ActionId;
 
@@ -163,6 +164,8 @@ pub struct Entity {
     pub lateral_slope: Real,
     /// The trailer this vehicle tows now (§7.2.2.6; runtime/trailer.rs keeps it).
     pub trailer: Option<EntityId>,
+    /// Driver inputs overridden by OverrideControllerValueAction (§7.7.2.5), recorded only.
+    pub overrides: ControllerOverrides,
 }
 
 impl Entity {
@@ -195,6 +198,7 @@ impl Entity {
             at_lane_end: false,
             lateral_first: false,
             trailer: None,
+            overrides: ControllerOverrides::default(),
         }
     }
 

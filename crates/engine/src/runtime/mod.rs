@@ -36,6 +36,7 @@ mod traffic;
 mod trailer;
 mod world;
 
+pub use actions::ControllerOverrides;
 pub use config::{EngineConfig, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
 pub use entity::{Blend, Entity, EntityId, EntityKind, LaneTrack, Visibility};
 pub use error::{RuntimeError, RuntimeErrorKind};

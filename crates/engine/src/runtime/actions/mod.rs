@@ -17,22 +17,25 @@ mod environment;
 mod follow_trajectory;
 mod lane_change;
 mod lane_offset;
+mod override_controller;
 mod parameter;
 mod routing;
 mod speed;
 mod speed_profile;
+mod synchronize;
 mod teleport;
 mod trailer;
 mod variable;
 mod visibility;
 
 use scenario::{
-    Action, ActionKind, GlobalAction, LateralAction, LongitudinalAction, PrivateAction,
-    RoutingAction,
+    Action, ActionKind, ControllerAction, GlobalAction, LateralAction, LongitudinalAction,
+    PrivateAction, RoutingAction,
 };
 
 pub(crate) use appearance::Appearances;
 pub(crate) use environment::EnvironmentState;
+pub use override_controller::ControllerOverrides;
 
 use super::entity::EntityId;
 use super::error::RuntimeError;
@@ -56,6 +59,7 @@ pub(crate) enum Part {
     LongitudinalDistance(distance::LongitudinalState),
     LateralDistance(distance::LateralState),
     Trajectory(follow_trajectory::TrajectoryState),
+    Synchronize(synchronize::SyncState),
     Done(ActionStatus),
 }
 
@@ -122,6 +126,7 @@ impl ActionTable {
                     }
                     Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
                     Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
+                    Part::Synchronize(s) => synchronize::step(world, actor, s, dt),
                 };
                 if next != ActionStatus::Running {
                     release(world, actor, id);
@@ -242,9 +247,17 @@ impl Host<'_> {
                 visibility::start(self.world, actor, v);
                 Ok(Part::Done(ActionStatus::Ended))
             }
+            PrivateAction::Synchronize(s) => {
+                self.claim(actor, Domain::Longitudinal, id);
+                synchronize::start(self.world, s, pos)
+            }
             PrivateAction::Controller(c) => {
                 let name = self.table.slots[id.0 as usize].name.clone();
-                controller::start(c, &name, pos, time, self.events)?;
+                if let ControllerAction::OverrideValues(o) = &**c {
+                    override_controller::start(self.world, actor, o, &name, time, self.events);
+                } else {
+                    controller::start(c, &name, pos, time, self.events)?;
+                }
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Routing(r) => self.start_routing(id, r, actor),
