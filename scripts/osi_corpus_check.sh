@@ -42,8 +42,9 @@ case "$duration" in
     *) limit=(--duration "$duration") ;;
 esac
 
-rm -rf "$out"
 mkdir -p "$out"
+# Only what an earlier run of this script left there (OUT_DIR may be any folder).
+rm -f "$out"/*.osi "$out"/*.mcap "$out"/*.log "$out/osi_check.txt"
 # Same bytes on every run: pin the clock-dependent parts (see crates/cli/src/osi_sink.rs).
 export SOURCE_DATE_EPOCH="${SOURCE_DATE_EPOCH:-0}"
 
