@@ -231,3 +231,36 @@ fn traffic_area_action_fills_its_road_range_once() {
     }
     assert!(rows(&frames, "area.entity_6").next().is_none());
 }
+
+/// DirectionOfTravelDistribution (1.2): on the straight road, lane −1 runs Ego's way (+x) and
+/// lane 1 the opposite way. With same = 1, opposite = 0 every swarm vehicle is on lane −1
+/// heading 0; with same = 0, opposite = 1 every one is on lane 1 heading π. Speeds are drawn
+/// from InitialSpeedRange [8, 12] m/s.
+#[test]
+fn swarm_direction_of_travel_picks_the_lanes() {
+    let path = file("swarm_direction.xosc");
+    for (same, lane, heading) in [("1", -1, 0.0), ("0", 1, std::f64::consts::PI)] {
+        let params = [
+            ("Same".to_owned(), same.to_owned()),
+            (
+                "Opposite".to_owned(),
+                if same == "1" { "0" } else { "1" }.to_owned(),
+            ),
+        ];
+        let mut engine = Engine::load(&path, &params, EngineConfig::default()).expect("loads");
+        let mut frames = Recorder::default();
+        engine.run(&mut frames, &mut Vec::new()).expect("runs");
+        let swarm: Vec<&Row> = frames
+            .0
+            .iter()
+            .filter(|r| r.name.starts_with("swarm.entity_"))
+            .collect();
+        assert!(swarm.len() > 100, "{} rows", swarm.len());
+        for r in swarm {
+            assert_eq!(r.road.as_ref().map(|p| p.1), Some(lane), "{r:?}");
+            let dh = (r.h - heading).rem_euclid(std::f64::consts::TAU);
+            assert!(dh.min(std::f64::consts::TAU - dh) < 1e-9, "{r:?}");
+            assert!((8.0..=12.0).contains(&r.speed), "{r:?}");
+        }
+    }
+}

@@ -7,9 +7,13 @@
 //! than `numberOfVehicles` remain, one vehicle appears at a random free lane point of the
 //! ring (at most [`ATTEMPTS`] points drawn per step, one vehicle per step, so the swarm fills
 //! over some seconds as esmini's does). Start speed: uniform in `InitialSpeedRange` (1.2),
-//! else `velocity`, else [`DEFAULT_SPEED`]; vehicles take their lane's driving direction
-//! (`DirectionOfTravelDistribution` is not used). Nothing appears while the central object is
-//! not placed.
+//! else `velocity`, else [`DEFAULT_SPEED`]; vehicles take their lane's driving direction. With a
+//! `DirectionOfTravelDistribution` (1.2) each new vehicle first draws whether it travels the
+//! central object's way (heading within 90° of it) or the opposite way, with probabilities in
+//! proportion to `same` and `opposite`, and only lane points of that kind are taken. Nothing
+//! appears while the central object is not placed.
+
+use std::f64::consts::FRAC_PI_2;
 
 use opendrive::Real;
 use rand::Rng;
@@ -35,6 +39,8 @@ pub(crate) struct Swarm {
     offset: Real,
     count: usize,
     speed: (Real, Real),
+    /// (same, opposite) weights of the direction of travel.
+    direction: Option<(Real, Real)>,
     mix: TrafficMix,
 }
 
@@ -50,8 +56,8 @@ impl Swarm {
             number_of_vehicles,
             velocity,
             initial_speed_range,
+            direction_of_travel,
             traffic,
-            ..
         } = action
         else {
             return Err(RuntimeError::at(
@@ -86,6 +92,7 @@ impl Swarm {
             offset: *offset,
             count: *number_of_vehicles as usize,
             speed,
+            direction: direction_of_travel.filter(|(s, o)| s + o > 0.0),
             mix: traffic.clone(),
         })
     }
@@ -134,6 +141,9 @@ impl Swarm {
         if run.members.len() >= self.count {
             return Ok(());
         }
+        let same_way = self
+            .direction
+            .map(|(same, opposite)| run.rng.gen::<f64>() * (same + opposite) < same);
         for _ in 0..ATTEMPTS {
             let u = (run.rng.gen::<f64>() * 2.0 - 1.0) * self.major;
             let v = (run.rng.gen::<f64>() * 2.0 - 1.0) * self.minor;
@@ -145,6 +155,10 @@ impl Swarm {
             };
             let r = (pose.x - c.0).hypot(pose.y - c.1);
             if r < self.inner || !self.in_ellipse(c, pose.x, pose.y) {
+                continue;
+            }
+            let along = opendrive::normalize_angle(pose.h - c.2).abs() <= FRAC_PI_2;
+            if same_way.is_some_and(|same| same != along) {
                 continue;
             }
             let (lo, hi) = self.speed;
