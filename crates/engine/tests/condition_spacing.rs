@@ -339,3 +339,21 @@ fn road_distance_across_linked_roads_and_lanes() {
         &rel_distance(measure(false, Some(Road), Some(Lateral)), 3.0)
     ));
 }
+
+#[test]
+fn overlapping_boxes_are_at_distance_zero() {
+    // Pitfall 13 (§6.4: distances are ≥ 0; boxes that overlap are 0 apart in every freespace
+    // measure): Lead 3 m ahead of Ego, boxes [49.15, 53.65] and [52.15, 56.65] overlap.
+    let mut w = world();
+    w.place_on_lane("Lead", "1", -1, 53.0, true);
+    for m in [
+        measure(true, None, None),
+        measure(true, Some(Entity), Some(Longitudinal)),
+        measure(true, Some(Road), Some(Longitudinal)),
+        measure(true, Some(CoordinateSystem::Lane), Some(Longitudinal)),
+    ] {
+        assert!(eval(&w, &rel_distance(m, 0.0)), "{m:?} should give 0");
+    }
+    // Without freespace the reference points stay 3 m apart.
+    assert!(eval(&w, &rel_distance(measure(false, None, None), 3.0)));
+}

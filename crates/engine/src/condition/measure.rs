@@ -177,7 +177,20 @@ pub(crate) fn distance(
                 Some(rp) if rp.relative_heading.cos() < 0.0 => -1.0,
                 _ => 1.0,
             };
-            let gap = |dir| a.space_gap(network, &b, dir).ok().map(|g| -travel * g);
+            let gap = |dir| {
+                let g = a.space_gap(network, &b, dir).ok()?;
+                if !free {
+                    return Some(-travel * g);
+                }
+                // §8.7.5.1.3 space_gap() reports overlapping boxes as a gap of the sign opposite
+                // to who is ahead (the overlap, seen from the other side); §6.4 puts overlapping
+                // boxes at distance 0. Who is ahead: the reference points' order.
+                let points = participant(from, false)
+                    .space_gap(network, &target.participant(false), dir)
+                    .ok()?;
+                let overlap = g == 0.0 || (points != 0.0 && g.signum() != points.signum());
+                Some(if overlap { 0.0 } else { -travel * g })
+            };
             let longitudinal = || {
                 let d = gap(DistanceDirection::Longitudinal)?;
                 Some(if cs == CoordinateSystem::Lane {
