@@ -24,6 +24,27 @@ pub(crate) struct TrajectoryState {
     trajectory: Box<Trajectory>,
     clock: Option<TrajectoryClock>,
     s: f64,
+    /// Speed along the trajectory in the last step (m/s) and the time it reached `s`.
+    speed: f64,
+    at: f64,
+}
+
+impl TrajectoryState {
+    /// True when the motion up to `step_end` reaches the end of an open trajectory (the
+    /// action then ends in this step, as fixed-time transitions do).
+    pub(crate) fn completes_by(&self, step_end: f64) -> bool {
+        if self.trajectory.closed() {
+            return false;
+        }
+        let next = match &self.clock {
+            Some(clock) => self
+                .trajectory
+                .s_at_simulation_time(clock, step_end)
+                .unwrap_or(self.s),
+            None => self.s + self.speed * (step_end - self.at),
+        };
+        next >= self.trajectory.length() - 1e-9
+    }
 }
 
 /// Starts the action.
@@ -53,6 +74,8 @@ pub(crate) fn start(
         trajectory: Box::new(trajectory),
         clock,
         s,
+        speed: world.entity(actor).speed,
+        at: now,
     };
     place(world, actor, &state.trajectory, s, false);
     Ok(match step(world, actor, &mut state, now - 1e-12, 0.0) {
@@ -103,6 +126,8 @@ pub(crate) fn step(
     };
     let moved = (s - st.s).abs();
     st.s = s;
+    st.speed = world.entity(actor).speed;
+    st.at = t;
     place(world, actor, &st.trajectory, s, true);
     world.entity_mut(actor).odometer += moved;
     let at_end = !st.trajectory.closed() && s >= length - 1e-9;

@@ -498,6 +498,7 @@ pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> Action
         let finishing = match part {
             Part::Speed(s) => s.completes_by(step_end),
             Part::Lateral(s) => s.completes_by(step_end),
+            Part::Trajectory(s) => s.completes_by(step_end),
             _ => false,
         };
         if finishing {
