@@ -17,7 +17,12 @@
 //!   `timeStart` and the spline has `timeEnd`.
 //! * `Nurbs`: order k in 2..=n for n control points, n + k knots in non-decreasing order
 //!   spanning a range, weights > 0 (default 1). Control points' orientations are not used.
-//! * Times: all points of a shape have a time or none has; times never decrease.
+//! * Times: all points of a shape have a time or none has; times never decrease. A NURBS
+//!   carries `ControlPoint/@time` as one more coordinate of the rational curve (the control
+//!   point's time dimension), so t(u) uses the same basis functions and weights as x and y.
+//!   esmini reads it differently (each time pinned where its control point's basis function
+//!   peaks, linear in u between); the paths agree, the moments along them do not
+//!   (test trajectory_esmini_nurbs).
 //! * `closed` has no effect on Clothoid, ClothoidSpline and Nurbs (their geometry is
 //!   complete as written).
 

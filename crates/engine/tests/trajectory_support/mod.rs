@@ -209,3 +209,47 @@ impl EntityQuery for WithCar {
         &self.roads
     }
 }
+
+/// A road network with one vehicle `name` at `pose`, standing where `locate` finds it.
+pub struct Placed {
+    pub roads: RoadNetwork,
+    pub name: &'static str,
+    pub pose: opendrive::Pose,
+    pub road_position: Option<opendrive::RoadPosition>,
+}
+
+impl Placed {
+    /// `name` at `pose` on `roads`, its road position looked up with its heading.
+    pub fn new(roads: RoadNetwork, name: &'static str, pose: opendrive::Pose) -> Self {
+        let road_position = roads.locate(pose.x, pose.y, Some(pose.h));
+        Self {
+            roads,
+            name,
+            pose,
+            road_position,
+        }
+    }
+}
+
+impl EntityQuery for Placed {
+    fn entity(&self, name: &str) -> Option<EntityView<'_>> {
+        // A 4.5 × 1.8 × 1.5 m box 1.4 m ahead of the rear axle: constant, valid dimensions.
+        let bb = engine::domain::BoundingBox::new(
+            engine::domain::Position3d::new(1.4, 0.0, 0.75),
+            4.5,
+            1.8,
+            1.5,
+        )
+        .expect("valid box");
+        (name == self.name).then(|| EntityView {
+            road_position: self.road_position.as_ref(),
+            ..EntityView::new(self.name, scenario::ObjectType::Vehicle, self.pose, bb)
+        })
+    }
+    fn entities(&self) -> Box<dyn Iterator<Item = EntityView<'_>> + '_> {
+        Box::new(self.entity(self.name).into_iter())
+    }
+    fn road_network(&self) -> &RoadNetwork {
+        &self.roads
+    }
+}
