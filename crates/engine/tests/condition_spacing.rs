@@ -356,4 +356,15 @@ fn overlapping_boxes_are_at_distance_zero() {
     }
     // Without freespace the reference points stay 3 m apart.
     assert!(eval(&w, &rel_distance(measure(false, None, None), 3.0)));
+    // Touching boxes have collided: TTC 0 in every freespace measure, even standing still.
+    for m in [
+        measure(true, None, None),
+        measure(true, Some(Entity), Some(Longitudinal)),
+        measure(true, Some(Road), Some(Longitudinal)),
+    ] {
+        assert!(
+            eval(&w, &ttc(0.0, Rule::EqualTo, m)),
+            "{m:?} should give TTC 0"
+        );
+    }
 }

@@ -19,9 +19,10 @@
 //!   false." oscsim: with the default measure and `freespace` (entity system, Euclidean) the
 //!   exact box time of §8.7.5.1.1 time_to_collision() (boxes moving on their velocities);
 //!   otherwise |distance| / closing speed, the closing speed being minus the rate of
-//!   |distance| under the same measure (`measure::distance_rate`). Objects not closing have
-//!   no TTC (pitfall 11): oncoming traffic in the next lane closes in Euclidean distance but
-//!   not in lateral distance, so choose the measure accordingly.
+//!   |distance| under the same measure (`measure::distance_rate`); boxes already touching
+//!   (freespace distance 0) have TTC 0. Objects not closing have no TTC (pitfall 11):
+//!   oncoming traffic in the next lane closes in Euclidean distance but not in lateral
+//!   distance, and its boxes never meet, so choose the measure accordingly.
 
 use opendrive::Real;
 use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, Rule};
@@ -94,6 +95,10 @@ pub(crate) fn time_to_collision<Q: EntityQuery + ?Sized>(
     let Some(d) = distance(network, e, target, measure)? else {
         return Ok(None);
     };
+    if measure.freespace && d == 0.0 {
+        // Boxes that touch or overlap have collided: no time is left.
+        return Ok(Some(0.0));
+    }
     let Some(rate) = distance_rate(network, e, target, measure)? else {
         return Ok(None);
     };
