@@ -1,8 +1,9 @@
 //! ByEntityCondition (OpenSCENARIO 1.3 §7.6.3, XSD `ByEntityCondition`,
 //! `TriggeringEntities`): an EntityCondition tested for each triggering entity, combined by
 //! `triggeringEntitiesRule` — `any`: true when it holds for at least one, `all`: when it holds
-//! for every one. An EntityRef naming an EntitySelection stands for all its members. Every triggering entity is evaluated each time (no short cut), so that the
-//! duration conditions keep their memory of each.
+//! for every one. An EntityRef naming an EntitySelection stands for all its members. Every
+//! triggering entity is evaluated each time (no short cut), so that the duration conditions
+//! keep their memory of each.
 
 use opendrive::Real;
 use scenario::{

@@ -18,8 +18,8 @@
 //!
 //! Lane coordinates: as road coordinates, with the longitudinal value stretched by the ratio
 //! of the triggering entity's lane centre line length to the reference-line length between
-//! the two reference points (`position::lane_length`; exact between reference points on one road, the
-//! same ratio applied to box gaps; across roads the reference-line value is kept).
+//! the two reference points (`position::lane_length`; exact between reference points on one
+//! road, the same ratio applied to box gaps; across roads the reference-line value is kept).
 //!
 //! `routingAlgorithm="assignedRoute"` measures longitudinal road and lane distances along the
 //! triggering entity's assigned route (§8.7.4.1.1 distance_along_route() of both, reference
