@@ -1,7 +1,8 @@
 //! AssignControllerAction and ActivateControllerAction (OpenSCENARIO 1.3 §7.7.2.5,
 //! XSD `ControllerAction`). oscsim has only the default controller (§7.5.1): activating or
-//! deactivating it is accepted (the default controller always runs when no other does), and
-//! OverrideControllerValueAction has nothing to override. Assigning any other controller is
+//! deactivating it is accepted (the default controller always runs when no other does).
+//! OverrideControllerValueAction is handled by `override_controller` (the `OverrideValues` arm
+//! here is not reached from the action host). Assigning any other controller is
 //! rejected with a record in the event log naming the controller and the action's position;
 //! the entity keeps its default controller, so the scenario runs as the reference runs with
 //! controllers disabled.
