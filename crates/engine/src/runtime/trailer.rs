@@ -15,7 +15,8 @@
 //! Chains (truck → trailer → trailer) are moved tow first. A connection made at definition
 //! (`Vehicle/Trailer`) lines the trailer up straight behind its tow at the first step, as esmini
 //! does; ConnectTrailerAction keeps the trailer where it stands, turned towards the hitch, or
-//! lines it up when it has not been placed yet. Inline trailers (`Trailer/Trailer`) become
+//! lines it up when it has not been placed yet. When the hitch jumps (the tow is teleported),
+//! the trailer is lined up behind it again. Inline trailers (`Trailer/Trailer`) become
 //! entities named after their tow with a `+` appended (esmini's names: `Ego+`, `Ego++`).
 //!
 //! Written by hand: no maintained crate models articulated vehicles in this form.
@@ -29,6 +30,9 @@ use super::entity::{Entity, EntityId};
 use super::error::RuntimeError;
 use super::world::World;
 use crate::domain::{Acceleration6d, Vector3, Velocity6d};
+
+/// Hitch travel beyond the tow's own distance per step (m) that counts as a jump.
+const JUMP_SLACK: Real = 1.0;
 
 /// Mounting points of one vehicle (m along its x axis from the reference point).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -308,8 +312,14 @@ fn follow_link(world: &mut World, mut link: Link, dt: Real) -> Option<Link> {
         trailer.pose
     };
     let old_speed = trailer.speed;
-    let heading = match link.last_hitch {
+    // A hitch that jumped farther than the tow can drive in a step (a TeleportAction on the
+    // tow) takes its trailer along in line, as at definition.
+    let jumped = link.last_hitch.is_some_and(|from| {
+        (hitch.0 - from.0).hypot(hitch.1 - from.1) > tow_speed.abs() * dt + JUMP_SLACK
+    });
+    let heading = match link.last_hitch.filter(|_| !jumped) {
         Some(from) => tractrix_heading(old_pose.h, from, hitch, l),
+        None if jumped => tow_pose.h,
         None if link.align || !trailer.placed => tow_pose.h,
         // Connected where it stands: turned towards the hitch.
         None => (hitch.1 - old_pose.y).atan2(hitch.0 - old_pose.x),
@@ -322,7 +332,7 @@ fn follow_link(world: &mut World, mut link: Link, dt: Real) -> Option<Link> {
         ..tow_pose
     };
     let moved = (pose.x - old_pose.x).hypot(pose.y - old_pose.y);
-    let first = link.last_hitch.is_none();
+    let first = link.last_hitch.is_none() || jumped;
     let found = world.network.locate(pose.x, pose.y, Some(pose.h));
     world.place_resolved(link.trailer, pose, found);
     let e = world.entity_mut(link.trailer);
