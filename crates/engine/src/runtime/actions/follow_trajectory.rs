@@ -12,6 +12,7 @@
 use scenario::{SourcePos, Timing};
 
 use super::Part;
+use crate::runtime::controller::advance_by;
 use crate::runtime::entity::EntityId;
 use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
@@ -119,6 +120,12 @@ pub(crate) fn step(
         }
         None => st.s + world.entity(actor).speed * dt,
     };
+    // Travel beyond the end of an open trajectory, continued by the default controller.
+    let beyond = if st.trajectory.closed() {
+        0.0
+    } else {
+        (s - length).max(0.0)
+    };
     let s = if st.trajectory.closed() && length > 0.0 {
         s.rem_euclid(length)
     } else {
@@ -133,6 +140,9 @@ pub(crate) fn step(
     let at_end = !st.trajectory.closed() && s >= length - 1e-9;
     if at_end && dt > 0.0 {
         release(world, actor, true);
+        // The rest of the step's travel goes on from the trajectory's end.
+        let net = &world.network;
+        advance_by(net, &mut world.entities[actor.index()], beyond);
         ActionStatus::Ended
     } else {
         ActionStatus::Running
