@@ -7,27 +7,14 @@
 
 mod trajectory_support;
 
-use std::path::Path;
-
 use engine::routing::{plan_route, RoutingOptions};
-use scenario::{ActionKind, PrivateAction, RoutingAction, Scenario};
-use trajectory_support::Roads;
+use scenario::{ActionKind, PrivateAction, RoutingAction};
+use trajectory_support::{corpus_scenario, scenario_roads, Roads};
 
 #[test]
 fn complex_catalog_route_follows_esmini() {
-    let path = format!(
-        "{}/../../../shared/corpus/esmini/xosc/routing-test.xosc",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    // A corpus scenario that loads (checked by the scenario crate's own corpus tests).
-    let sc = Scenario::load(Path::new(&path)).expect("corpus scenario loads");
-    let logic = sc
-        .road_network
-        .logic_file
-        .as_ref()
-        .expect("the scenario names its road");
-    // The scenario's road network is part of the corpus.
-    let roads = Roads(opendrive::RoadNetwork::from_file(logic).expect("road network loads"));
+    let sc = corpus_scenario("esmini/xosc/routing-test.xosc");
+    let roads = Roads(scenario_roads(&sc));
     let (route, pos) = sc
         .storyboard
         .init

@@ -7,61 +7,21 @@
 
 mod trajectory_support;
 
-use std::path::Path;
-
 use engine::trajectory::{build_for_actor, Trajectory, TrajectoryClock};
 use opendrive::Pose;
-use scenario::{ActionKind, PrivateAction, RoutingAction, Scenario};
-use trajectory_support::WithCar;
+use trajectory_support::{corpus_scenario, follow_trajectory_of, scenario_roads, Placed};
 
 /// The CSV's start poses and end points are rounded to 0.5 mm each; agreement within 2 mm
 /// (found: 0.4 mm at most).
 const REF_TOL: f64 = 0.002;
 
-fn scenario() -> Scenario {
-    let path = format!(
-        "{}/../../../shared/corpus/esmini/xosc/lane-change_clothoid_spline_based_trajectory.xosc",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    // A corpus scenario that loads (checked by the scenario crate's own corpus tests).
-    Scenario::load(Path::new(&path)).expect("corpus scenario loads")
-}
-
 /// The trajectory of event `event`, built with the car at `car`.
 fn trajectory_of(event: &str, car: Pose) -> (Trajectory, Option<scenario::Timing>) {
-    let sc = scenario();
-    let ev = sc
-        .storyboard
-        .stories
-        .iter()
-        .flat_map(|s| &s.acts)
-        .flat_map(|a| &a.maneuver_groups)
-        .flat_map(|g| &g.maneuvers)
-        .flat_map(|m| &m.events)
-        .find(|e| e.name == event)
-        .unwrap_or_else(|| panic!("no event {event}"));
-    let action = &ev.actions[0];
-    let ActionKind::Private(PrivateAction::Routing(r)) = &action.kind else {
-        panic!("{event} is not a routing action");
-    };
-    let RoutingAction::FollowTrajectory {
-        trajectory,
-        time_reference,
-        ..
-    } = r.as_ref()
-    else {
-        panic!("{event} is not a FollowTrajectoryAction");
-    };
-    let logic = sc
-        .road_network
-        .logic_file
-        .as_ref()
-        .expect("the scenario names its road");
-    // The scenario's road (esmini's straight_500m.xodr) is part of the corpus.
-    let roads = opendrive::RoadNetwork::from_file(logic).expect("road network loads");
-    let world = WithCar { roads, pose: car };
-    let t = build_for_actor(trajectory, &world, Some(&car), &action.pos).unwrap();
-    (t, *time_reference)
+    let sc = corpus_scenario("esmini/xosc/lane-change_clothoid_spline_based_trajectory.xosc");
+    let (trajectory, time_reference, pos) = follow_trajectory_of(&sc, event);
+    let world = Placed::new(scenario_roads(&sc), "Car", car);
+    let t = build_for_actor(trajectory, &world, Some(&car), pos).unwrap();
+    (t, time_reference)
 }
 
 fn at(x: f64, y: f64, h: f64) -> Pose {
@@ -130,12 +90,7 @@ fn timestamps_set_the_speed_per_segment() {
     // 10/3 = 3.333, 6.5/1 = 6.5 m/s, which esmini reports at 19.5, 21.5, 24.0 and 26.5 s.
     let (t, time_reference) = trajectory_of("TrajectoryWithTimestamps", at(204.0, 2.011, 0.0));
     let timing = time_reference.expect("Timing");
-    let clock = TrajectoryClock::new(
-        &timing,
-        18.75,
-        &scenario::SourcePos::start_of(std::sync::Arc::from(Path::new("x"))),
-    )
-    .unwrap();
+    let clock = TrajectoryClock::new(&timing, 18.75, &trajectory_support::here()).unwrap();
     for (time, esmini) in [(19.5, 5.0), (21.5, 7.0), (24.0, 3.333), (26.5, 6.5)] {
         let v = t.speed_at_simulation_time(&clock, time).unwrap();
         assert!(

@@ -13,50 +13,17 @@
 
 mod trajectory_support;
 
-use std::path::Path;
-
 use engine::trajectory::{build, TrajectoryClock};
 use opendrive::Pose;
-use scenario::{ActionKind, PrivateAction, RoutingAction, Scenario};
-use trajectory_support::Placed;
-
-fn corpus(rel: &str) -> String {
-    format!(
-        "{}/../../../shared/corpus/{rel}",
-        env!("CARGO_MANIFEST_DIR")
-    )
-}
+use trajectory_support::{
+    corpus_path, corpus_scenario, follow_trajectory_of, scenario_roads, Placed,
+};
 
 #[test]
 fn timed_nurbs_follows_esmini() {
-    let path = corpus("esmini/xosc/trajectory-test.xosc");
-    // A corpus scenario that loads (checked by the scenario crate's own corpus tests).
-    let sc = Scenario::load(Path::new(&path)).expect("corpus scenario loads");
-    let ev = sc
-        .storyboard
-        .stories
-        .iter()
-        .flat_map(|s| &s.acts)
-        .flat_map(|a| &a.maneuver_groups)
-        .flat_map(|g| &g.maneuvers)
-        .flat_map(|m| &m.events)
-        .find(|e| e.name == "FollowTrajectoryNurbsEvent")
-        .expect("the NURBS event");
-    let action = &ev.actions[0];
-    let ActionKind::Private(PrivateAction::Routing(r)) = &action.kind else {
-        panic!("not a routing action");
-    };
-    let RoutingAction::FollowTrajectory {
-        trajectory,
-        time_reference,
-        ..
-    } = r.as_ref()
-    else {
-        panic!("not a FollowTrajectoryAction");
-    };
-    let logic = sc.road_network.logic_file.as_ref().expect("a road network");
-    // The scenario's road network is part of the corpus.
-    let roads = opendrive::RoadNetwork::from_file(logic).expect("road network loads");
+    let sc = corpus_scenario("esmini/xosc/trajectory-test.xosc");
+    let (trajectory, time_reference, pos) = follow_trajectory_of(&sc, "FollowTrajectoryNurbsEvent");
+    let roads = scenario_roads(&sc);
     // Target at 12.0 s, when the event starts (reference row).
     let start = Pose {
         x: 201.282,
@@ -66,9 +33,9 @@ fn timed_nurbs_follows_esmini() {
         ..Pose::default()
     };
     let world = Placed::new(roads, "Target", start);
-    let t = build(trajectory, &world, &action.pos).unwrap();
-    let clock = TrajectoryClock::new(&time_reference.expect("Timing"), 12.0, &action.pos).unwrap();
-    let csv = std::fs::read_to_string(corpus("reference/esmini/trajectory-test.csv"))
+    let t = build(trajectory, &world, pos).unwrap();
+    let clock = TrajectoryClock::new(&time_reference.expect("Timing"), 12.0, pos).unwrap();
+    let csv = std::fs::read_to_string(corpus_path("reference/esmini/trajectory-test.csv"))
         // The reference is part of the corpus.
         .expect("reference csv");
     let mut worst: f64 = 0.0;

@@ -7,24 +7,13 @@
 
 mod trajectory_support;
 
-use std::path::Path;
-
 use engine::trajectory::build;
-use scenario::{ActionKind, PrivateAction, RoutingAction, Scenario};
-use trajectory_support::straight;
-
-fn corpus(rel: &str) -> String {
-    format!(
-        "{}/../../../shared/corpus/{rel}",
-        env!("CARGO_MANIFEST_DIR")
-    )
-}
+use scenario::{ActionKind, PrivateAction, RoutingAction};
+use trajectory_support::{corpus_path, corpus_scenario, straight};
 
 #[test]
 fn esmini_drives_on_the_polyline() {
-    let path = corpus("esmini/xosc/lane-change_trajectory_wp.xosc");
-    // A corpus scenario that loads (checked by the scenario crate's own corpus tests).
-    let sc = Scenario::load(Path::new(&path)).expect("corpus scenario loads");
+    let sc = corpus_scenario("esmini/xosc/lane-change_trajectory_wp.xosc");
     let (trajectory, pos) = sc
         .storyboard
         .init
@@ -45,9 +34,11 @@ fn esmini_drives_on_the_polyline() {
     // First vertex (50.00, −1.53), last (160.94, 1.53).
     let (a, b) = (t.eval(0.0), t.eval(t.length()));
     assert!((a.x - 50.0).abs() < 1e-12 && (b.x - 160.94).abs() < 1e-12);
-    let csv = std::fs::read_to_string(corpus("reference/esmini/lane-change_trajectory_wp.csv"))
-        // The reference is part of the corpus.
-        .expect("reference csv");
+    let csv = std::fs::read_to_string(corpus_path(
+        "reference/esmini/lane-change_trajectory_wp.csv",
+    ))
+    // The reference is part of the corpus.
+    .expect("reference csv");
     let mut worst: f64 = 0.0;
     let mut rows = 0;
     let mut last_s = -1.0;

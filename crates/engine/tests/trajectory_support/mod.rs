@@ -183,33 +183,6 @@ pub fn route(positions: Vec<Position>, strategy: RouteStrategy, closed: bool) ->
     }
 }
 
-/// A road network with one vehicle, "Car", at `pose`.
-pub struct WithCar {
-    pub roads: RoadNetwork,
-    pub pose: opendrive::Pose,
-}
-
-impl EntityQuery for WithCar {
-    fn entity(&self, name: &str) -> Option<EntityView<'_>> {
-        // A 4.5 × 1.8 × 1.5 m box 1.4 m ahead of the rear axle: constant, valid dimensions.
-        let bb = engine::domain::BoundingBox::new(
-            engine::domain::Position3d::new(1.4, 0.0, 0.75),
-            4.5,
-            1.8,
-            1.5,
-        )
-        .expect("valid box");
-        (name == "Car")
-            .then(|| EntityView::new("Car", scenario::ObjectType::Vehicle, self.pose, bb))
-    }
-    fn entities(&self) -> Box<dyn Iterator<Item = EntityView<'_>> + '_> {
-        Box::new(self.entity("Car").into_iter())
-    }
-    fn road_network(&self) -> &RoadNetwork {
-        &self.roads
-    }
-}
-
 /// A road network with one vehicle `name` at `pose`, standing where `locate` finds it.
 pub struct Placed {
     pub roads: RoadNetwork,
@@ -252,4 +225,60 @@ impl EntityQuery for Placed {
     fn road_network(&self) -> &RoadNetwork {
         &self.roads
     }
+}
+
+/// A corpus path, relative to `shared/corpus/`.
+pub fn corpus_path(rel: &str) -> String {
+    format!(
+        "{}/../../../shared/corpus/{rel}",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+/// A corpus scenario, relative to `shared/corpus/`.
+pub fn corpus_scenario(rel: &str) -> scenario::Scenario {
+    // A corpus scenario that loads (checked by the scenario crate's own corpus tests).
+    scenario::Scenario::load(Path::new(&corpus_path(rel))).expect("corpus scenario loads")
+}
+
+/// The road network a loaded scenario names.
+pub fn scenario_roads(sc: &scenario::Scenario) -> RoadNetwork {
+    let logic = sc
+        .road_network
+        .logic_file
+        .as_ref()
+        .expect("the scenario names its road");
+    // The scenario's road network is part of the corpus.
+    RoadNetwork::from_file(logic).expect("road network loads")
+}
+
+/// The FollowTrajectoryAction of the story event `event`: its trajectory, time reference and
+/// the action's source position.
+pub fn follow_trajectory_of<'a>(
+    sc: &'a scenario::Scenario,
+    event: &str,
+) -> (&'a Trajectory, Option<Timing>, &'a SourcePos) {
+    let ev = sc
+        .storyboard
+        .stories
+        .iter()
+        .flat_map(|s| &s.acts)
+        .flat_map(|a| &a.maneuver_groups)
+        .flat_map(|g| &g.maneuvers)
+        .flat_map(|m| &m.events)
+        .find(|e| e.name == event)
+        .unwrap_or_else(|| panic!("no event {event}"));
+    let action = &ev.actions[0];
+    let scenario::ActionKind::Private(scenario::PrivateAction::Routing(r)) = &action.kind else {
+        panic!("{event} is not a routing action");
+    };
+    let scenario::RoutingAction::FollowTrajectory {
+        trajectory,
+        time_reference,
+        ..
+    } = r.as_ref()
+    else {
+        panic!("{event} is not a FollowTrajectoryAction");
+    };
+    (trajectory, *time_reference, &action.pos)
 }
