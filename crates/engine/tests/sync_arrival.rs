@@ -1,4 +1,4 @@
-//! SynchronizeAction (OpenSCENARIO 1.3 §7.7.2.1.4) against hand computations.
+//! SynchronizeAction (OpenSCENARIO 1.3 §7.7.2 private actions) against hand computations.
 //!
 //! Every scenario in tests/files/sync shares one set-up on the straight 500 m road (lane −1,
 //! along +x): the master Ego starts at s = 50 m at a constant 10 m/s and its target is at
@@ -9,6 +9,7 @@ mod runtime_support;
 
 use engine::output::EventRecord;
 use engine::storyboard::{ElementState, TransitionRecord};
+use engine::{Engine, EngineConfig};
 use runtime_support::{Recorder, Row};
 
 /// The step length (s).
@@ -161,4 +162,19 @@ fn performance_limits_bound_the_profile() {
         .find(|r| r.time >= T - 1e-9)
         .map_or(f64::NAN, |r| s_of(r));
     assert!(s20 <= 200.0 + 1.0, "s at 20 s: {s20}");
+}
+
+/// sync_bad_master.xosc: masterEntityRef="Nobody" at line 73, column 49. Loading fails with an
+/// error naming the attribute, the name and the place.
+#[test]
+fn unknown_master_names_the_attribute() {
+    let path = runtime_support::file("../sync/sync_bad_master.xosc");
+    let err = Engine::load(&path, &[], EngineConfig::default()).expect_err("Nobody is unknown");
+    let message = err.to_string();
+    assert!(
+        message.contains("SynchronizeAction@masterEntityRef"),
+        "{message}"
+    );
+    assert!(message.contains("Nobody"), "{message}");
+    assert!(message.contains("sync_bad_master.xosc:73:49"), "{message}");
 }

@@ -1,5 +1,5 @@
-//! SynchronizeAction (OpenSCENARIO 1.3 §7.7.2.1.4) on corpus scenarios against esmini's
-//! recorded runs (shared/corpus/reference/esmini/*.csv), at compare_run.py's default
+//! SynchronizeAction (OpenSCENARIO 1.3 §7.7.2 private actions) on corpus scenarios against
+//! esmini's recorded runs (shared/corpus/reference/esmini/*.csv), at compare_run.py's default
 //! tolerances (0.10 m, 0.10 m/s).
 //!
 //! synchronize.xosc: four NPCs synchronise with Ego (20 m/s, 200 m to its target → 10 s) with

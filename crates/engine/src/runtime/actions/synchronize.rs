@@ -1,4 +1,4 @@
-//! SynchronizeAction (OpenSCENARIO 1.3 §7.7.2.1.4 "SynchronizeAction", XSD
+//! SynchronizeAction (OpenSCENARIO 1.3 §7.7.2 private actions, "SynchronizeAction", XSD
 //! `SynchronizeAction`, `FinalSpeed`, `SteadyState`): the actor reaches its target position at
 //! the moment the master entity reaches its own, optionally with a final speed (absolute, or
 //! relative to the master's speed) that it holds over a steady-state stretch (a distance, or a
