@@ -12,7 +12,6 @@
 use scenario::{SourcePos, Timing};
 
 use super::Part;
-use crate::runtime::controller::advance_by;
 use crate::runtime::entity::EntityId;
 use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
@@ -139,10 +138,13 @@ pub(crate) fn step(
     world.entity_mut(actor).odometer += moved;
     let at_end = !st.trajectory.closed() && s >= length - 1e-9;
     if at_end && dt > 0.0 {
+        // The rest of the step's travel goes on straight along the trajectory's end tangent;
+        // then the default controller takes over from there.
+        let e = world.entity_mut(actor);
+        e.pose.x += beyond * e.pose.h.cos();
+        e.pose.y += beyond * e.pose.h.sin();
+        e.odometer += beyond;
         release(world, actor, true);
-        // The rest of the step's travel goes on from the trajectory's end.
-        let net = &world.network;
-        advance_by(net, &mut world.entities[actor.index()], beyond);
         ActionStatus::Ended
     } else {
         ActionStatus::Running

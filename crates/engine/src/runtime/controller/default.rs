@@ -53,13 +53,6 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     };
 }
 
-/// Moves `e` by `distance` m outside the controller's own step (an action's leftover travel).
-pub(crate) fn advance_by(net: &RoadNetwork, e: &mut Entity, distance: Real) {
-    if distance > 0.0 {
-        advance_entity(net, e, distance);
-    }
-}
-
 /// Moves `e` by `distance` m: along its lane track, or straight along its heading.
 fn advance_entity(net: &RoadNetwork, e: &mut Entity, distance: Real) {
     match e.track.take() {

@@ -3,4 +3,4 @@
 
 mod default;
 
-pub(crate) use default::{advance_by, move_entity, place_on_track};
+pub(crate) use default::{move_entity, place_on_track};
