@@ -8,51 +8,50 @@ use engine::{Engine, EngineConfig};
 use runtime_support::corpus;
 use scenario::LightMode;
 
-/// Steps `engine` until its time passes `t`, collecting the event records.
-fn run_until(engine: &mut Engine, t: f64, events: &mut Vec<EventRecord>) {
-    while engine.time() <= t + 1e-9 {
-        engine.step(&mut (), events).expect("runs");
+/// The first `entity` record of Car1 with `change` (time, element).
+fn change(events: &[EventRecord], what: &str) -> Option<(f64, String)> {
+    events.iter().find_map(|e| match e {
+        EventRecord::Entity {
+            time,
+            element,
+            entity,
+            change,
+        } if entity == "Car1" && change == what => Some((*time, element.clone())),
+        _ => None,
+    })
+}
+
+/// Steps `engine` until Car1's `what` record is in `events`.
+fn step_until(engine: &mut Engine, events: &mut Vec<EventRecord>, what: &str) -> (f64, String) {
+    loop {
+        if let Some(found) = change(events, what) {
+            return found;
+        }
+        let stopped = engine.step(&mut (), events).expect("runs");
+        assert!(stopped.is_none(), "no '{what}' record");
     }
 }
 
 /// esmini's light_state.xosc: "actionBlinkingLeft" (line 207) sets Car1's indicatorLeft to
-/// `flashing` with luminousIntensity 500; "actionStopBlinkingLeft" turns it `off` later. The
-/// state follows, and every change is an `entity` record naming the action and the light.
+/// `flashing` with luminousIntensity 500; "actionStopBlinkingLeft" turns it `off` later. Right
+/// after each record the state is the one the action wrote, and each change is an `entity`
+/// record naming the action and the light.
 #[test]
 fn light_state_action_is_kept_and_logged() {
     let path = corpus("esmini/xosc/light_state.xosc");
     let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
     let mut events = Vec::new();
-    let changes = |events: &Vec<EventRecord>, what: &str| {
-        events
-            .iter()
-            .filter_map(|e| match e {
-                EventRecord::Entity {
-                    time,
-                    element,
-                    entity,
-                    change,
-                } if entity == "Car1" && change == what => Some((*time, element.clone())),
-                _ => None,
-            })
-            .collect::<Vec<_>>()
-    };
-    run_until(&mut engine, 9.0, &mut events);
     let car1 = engine.world().id("Car1").expect("declared");
-    let on = changes(&events, "light indicatorLeft flashing");
-    assert_eq!(on.len(), 1, "{on:?}");
-    assert_eq!(on[0].1, "actionBlinkingLeft");
+    let on = step_until(&mut engine, &mut events, "light indicatorLeft flashing");
+    assert_eq!(on.1, "actionBlinkingLeft");
     {
         let world = engine.world();
         let state = world.light_state(car1, "indicatorLeft").expect("set");
         assert_eq!(state.mode, LightMode::Flashing);
         assert_eq!(state.luminous_intensity, Some(500.0));
     }
-    run_until(&mut engine, 12.0, &mut events);
-    let off = changes(&events, "light indicatorLeft off");
-    assert!(off
-        .iter()
-        .any(|(t, e)| e == "actionStopBlinkingLeft" && *t > on[0].0));
+    let off = step_until(&mut engine, &mut events, "light indicatorLeft off");
+    assert!(off.1 == "actionStopBlinkingLeft" && off.0 > on.0, "{off:?}");
     let world = engine.world();
     let state = world.light_state(car1, "indicatorLeft").expect("set");
     assert_eq!(state.mode, LightMode::Off);

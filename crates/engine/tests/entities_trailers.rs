@@ -226,8 +226,9 @@ impl engine::FrameSink for Towing {
 
 /// The frames name each tow's trailer (what OSI writes as vehicle_classification.trailer_id):
 /// in the chain file Truck → Trailer1 → Trailer2 from the first frame on; in trailer_example0
-/// Ego tows `trailer` only between ConnectTrailerAction (5.45 s) and DisconnectTrailerAction
-/// (8.05 s), so from the frame of 5.50 s to that of 8.05 s.
+/// Ego tows `trailer` only between ConnectTrailerAction and DisconnectTrailerAction (5.45 s and
+/// 8.05 s when written), in every frame from the one after the connection to that of the
+/// disconnection's step.
 #[test]
 fn frames_carry_the_trailer_of_each_tow() {
     let mut engine = load(&file("trailer_chain.xosc"));
@@ -242,15 +243,31 @@ fn frames_carry_the_trailer_of_each_tow() {
     assert_eq!(first, [("Trailer1", "Trailer2"), ("Truck", "Trailer1")]);
     let mut engine = load(&corpus("generated/xosc/trailer_example0.xosc"));
     let mut towing = Towing::default();
-    engine.run(&mut towing, &mut Vec::new()).expect("runs");
+    let mut events = Vec::new();
+    engine.run(&mut towing, &mut events).expect("runs");
+    let start = |name: &str| {
+        events
+            .iter()
+            .find_map(|e| match e {
+                engine::EventRecord::Transition(t) if t.name == name => Some(t.time),
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("{name} never started"))
+    };
+    let (connect, disconnect) = (start("connect trailer"), start("disconnect trailer"));
     assert!(towing.0.iter().all(|r| r.1 == "Ego" && r.2 == "trailer"));
     let times: Vec<f64> = towing.0.iter().map(|r| r.0).collect();
     let (from, to) = (times[0], times[times.len() - 1]);
+    // The connection acts from the next frame; the frame of the disconnect's step was written
+    // the step before, with the trailer still on.
     assert!(
-        (from - 5.5).abs() < 1e-9 && (to - 8.05).abs() < 1e-9,
-        "{from} {to}"
+        (from - (connect + 0.05)).abs() < 1e-9 && (to - disconnect).abs() < 1e-9,
+        "{from} {to}, connect {connect}, disconnect {disconnect}"
     );
-    assert_eq!(times.len(), 52);
+    assert_eq!(
+        times.len(),
+        ((disconnect - connect) / 0.05).round() as usize
+    );
 }
 
 /// A TeleportAction on the tow (at 1.05 s, to s = 160 on the straight that runs along +y from
