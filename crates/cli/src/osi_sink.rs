@@ -18,6 +18,11 @@
 //!   `model_reference` from `model3d`, `color_description` from the entity's colour,
 //!   `host_vehicle_id` from `--osi-host` (default the entity named `Ego`, else none),
 //!   lanes and boundaries in the first frame or every frame (`--osi-static first|every`).
+//! - A vehicle towing a trailer (`TrailerHitch` connected by the scenario's `Trailer` or a
+//!   `ConnectTrailerAction`, OpenSCENARIO 1.3 §7.2.2.6) gets
+//!   `vehicle_classification.has_trailer = true` and `trailer_id` = the OSI id of the
+//!   trailer's `MovingObject` (OSI 3.8 osi_object.proto); every other vehicle
+//!   `has_trailer = false` and no `trailer_id`.
 //!
 //! The engine's runtime entity does not keep the `pedestrianCategory` and
 //! `miscObjectCategory` OSI needs, so the adapter reads them from the scenario model,
@@ -174,6 +179,7 @@ impl OsiSink {
         scenario_file: &str,
         category: Option<Category>,
         external: Option<&ExternalBox>,
+        trailer: Option<&str>,
         e: &EntityFrame<'_>,
     ) -> Result<(), osi::Error> {
         let mut state = rigid_body_state(e);
@@ -222,7 +228,7 @@ impl OsiSink {
             scenario_file: Some(scenario_file),
             model3d: e.model3d,
             color,
-            trailer: None,
+            trailer,
         };
         frame.add_entity(&info, &state, &lanes).map(drop)
     }
@@ -249,12 +255,18 @@ impl FrameSink for OsiSink {
                 continue;
             }
             let external = external.flatten();
+            // The engine's trailer id indexes the frame's entity store (EntityFrame::trailer).
+            let trailer = e
+                .trailer
+                .and_then(|t| frame.entities.get(t as usize))
+                .map(|t| t.name.as_str());
             Self::add(
                 &mut gt,
                 &self.network,
                 &self.scenario_file,
                 category,
                 external,
+                trailer,
                 &e,
             )
             .map_err(|err| {
