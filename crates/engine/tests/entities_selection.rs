@@ -77,3 +77,38 @@ fn cyclic_selection_is_rejected_at_load() {
         "{text}"
     );
 }
+
+/// §7.2.2.3: spawned objects may be actors through ByType. The ManeuverGroup's actor is the
+/// ByType vehicle selection; its step SpeedAction to 5 m/s starts at 3.05 s and reaches every
+/// vehicle present then: Ego and the source's vehicles of 1, 2 and 3 s (20 m/s before). A
+/// vehicle spawned later (the fourth, once the slowed third has cleared the 10 m spawn gap)
+/// is not an actor and keeps the source's 20 m/s.
+#[test]
+fn by_type_actor_selection_reaches_spawned_vehicles_present_at_the_start() {
+    let mut engine = Engine::load(
+        &file("selection_spawned_actors.xosc"),
+        &[],
+        EngineConfig::default(),
+    )
+    .expect("loads");
+    let mut frames = Recorder::default();
+    engine.run(&mut frames, &mut Vec::new()).expect("runs");
+    for name in ["Ego", "src.entity_1", "src.entity_2", "src.entity_3"] {
+        let before = frames.at(name, 3.0);
+        let after = frames.at(name, 4.0);
+        let was = if name == "Ego" { 0.0 } else { 20.0 };
+        assert!((before.speed - was).abs() < 1e-12, "{before:?}");
+        assert!((after.speed - 5.0).abs() < 1e-12, "{after:?}");
+    }
+    let late: Vec<_> = frames
+        .0
+        .iter()
+        .filter(|r| r.name == "src.entity_4")
+        .collect();
+    assert!(
+        late.first().is_some_and(|r| r.time > 3.05),
+        "{:?}",
+        late.first()
+    );
+    assert!(late.iter().all(|r| (r.speed - 20.0).abs() < 1e-12));
+}
