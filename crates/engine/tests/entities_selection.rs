@@ -6,7 +6,7 @@ mod runtime_support;
 
 use std::path::PathBuf;
 
-use engine::{Engine, EngineConfig, LoadError, RuntimeErrorKind};
+use engine::{Engine, EngineConfig, EventRecord, LoadError, RuntimeErrorKind};
 use runtime_support::Recorder;
 
 fn file(name: &str) -> PathBuf {
@@ -111,4 +111,33 @@ fn by_type_actor_selection_reaches_spawned_vehicles_present_at_the_start() {
         late.first()
     );
     assert!(late.iter().all(|r| (r.speed - 20.0).abs() < 1e-12));
+}
+
+/// §7.2.2.2: a selection as TriggeringEntities aggregates its members with `any` / `all`.
+/// Cars = Car1 + Car2 at 10 m/s; "speed > 15 m/s" holds for Car1 from its step to 20 m/s at
+/// 1.05 s, for Car2 from 2.05 s. So `any` starts at 1.05 s and `all` only at 2.05 s (both in
+/// the step where the later speed action takes effect, the actions running before the
+/// conditions that follow them in the storyboard).
+#[test]
+fn any_and_all_over_a_triggering_selection() {
+    let mut engine = Engine::load(
+        &file("selection_triggering.xosc"),
+        &[],
+        EngineConfig::default(),
+    )
+    .expect("loads");
+    let mut events = Vec::new();
+    engine.run(&mut (), &mut events).expect("runs");
+    let start = |name: &str| {
+        events.iter().find_map(|e| match e {
+            EventRecord::Transition(t) if t.name == name => Some(t.time),
+            _ => None,
+        })
+    };
+    let any = start("any fast").expect("any fired");
+    let all = start("all fast").expect("all fired");
+    assert!(
+        (any - 1.05).abs() < 1e-9 && (all - 2.05).abs() < 1e-9,
+        "{any} {all}"
+    );
 }
