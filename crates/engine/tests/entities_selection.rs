@@ -13,6 +13,12 @@ fn file(name: &str) -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
 }
 
+/// Loads test file `name`.
+fn load(name: &str) -> Engine {
+    Engine::load(&file(name), &[], EngineConfig::default())
+        .unwrap_or_else(|e| panic!("{name} does not load: {e}"))
+}
+
 /// §7.2.2.2: "all private actions within the maneuver group are applied individually, to each
 /// ScenarioObject instance in the entity selection". Actor `Cars` = Car1 + nested `Rest`
 /// (Car2, Car3). All drive 10 m/s from s = 20, 60 (lane −1) and 100 (lane 1, towards −s);
@@ -22,8 +28,7 @@ fn file(name: &str) -> PathBuf {
 #[test]
 fn maneuver_group_actor_selection_of_three_vehicles_changes_all_three() {
     const TOLERANCE: f64 = 1e-9;
-    let mut engine =
-        Engine::load(&file("selection_actors.xosc"), &[], EngineConfig::default()).expect("loads");
+    let mut engine = load("selection_actors.xosc");
     let mut frames = Recorder::default();
     engine.run(&mut frames, &mut Vec::new()).expect("runs");
     for (name, x, speed) in [
@@ -85,12 +90,7 @@ fn cyclic_selection_is_rejected_at_load() {
 /// is not an actor and keeps the source's 20 m/s.
 #[test]
 fn by_type_actor_selection_reaches_spawned_vehicles_present_at_the_start() {
-    let mut engine = Engine::load(
-        &file("selection_spawned_actors.xosc"),
-        &[],
-        EngineConfig::default(),
-    )
-    .expect("loads");
+    let mut engine = load("selection_spawned_actors.xosc");
     let mut frames = Recorder::default();
     engine.run(&mut frames, &mut Vec::new()).expect("runs");
     for name in ["Ego", "src.entity_1", "src.entity_2", "src.entity_3"] {
@@ -120,12 +120,7 @@ fn by_type_actor_selection_reaches_spawned_vehicles_present_at_the_start() {
 /// conditions that follow them in the storyboard).
 #[test]
 fn any_and_all_over_a_triggering_selection() {
-    let mut engine = Engine::load(
-        &file("selection_triggering.xosc"),
-        &[],
-        EngineConfig::default(),
-    )
-    .expect("loads");
+    let mut engine = load("selection_triggering.xosc");
     let mut events = Vec::new();
     engine.run(&mut (), &mut events).expect("runs");
     let start = |name: &str| {
