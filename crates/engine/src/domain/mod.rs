@@ -56,6 +56,7 @@ pub use object::{
     Actor, Animal, MovableObject, Person, Physical, PhysicalObject, StationaryObject,
     TrafficParticipant,
 };
+pub(crate) use road_path::shortest_road_path;
 pub use route::{Route, RouteStretch};
 pub use route_coords::{RouteElement, RoutePoint};
 pub use vehicle::{Axle, Vehicle};

@@ -17,9 +17,9 @@
 //!   after T − t_ss, t_ss = d_ss / v₁) and then holds v₁.
 //!
 //! The actor's Performance bounds every step (maxAcceleration, maxDeceleration, maxSpeed);
-//! speeds stay ≥ 0 (the action never reverses). Remaining distances are measured along s
-//! when the entity and its target lie on the same road, else in a straight line (no route
-//! search: the corpus scenarios synchronise along one road).
+//! speeds stay ≥ 0 (the action never reverses). Remaining distances are measured along the
+//! roads: |Δs| on one road, the shortest chain of linked roads (`domain::road_path`) between
+//! two; only off road, or with no linked path, in a straight line.
 //!
 //! The action ends when the actor is within `targetTolerance` of its target, the master within
 //! `targetToleranceMaster` of its own, either of them has passed its target (its remaining
@@ -33,6 +33,7 @@ use scenario::{FinalSpeed, SourcePos, SpeedTargetValueType, SteadyState, Synchro
 
 use super::speed::entity_ref;
 use super::Part;
+use crate::domain::shortest_road_path;
 use crate::position::resolve;
 use crate::runtime::entity::EntityId;
 use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
@@ -95,12 +96,17 @@ fn target(world: &World, position: &scenario::Position) -> Result<Target, Runtim
     })
 }
 
-/// Remaining distance (m) of entity `id` to `target`: |Δs| on a shared road, else straight.
+/// Remaining distance (m) of entity `id` to `target`: |Δs| on a shared road, the shortest
+/// path along the roads' reference lines between two roads, else (off road, or no linked
+/// path) the straight line.
 fn remaining(world: &World, id: EntityId, target: &Target) -> f64 {
     let e = world.entity(id);
     if let (Some((road, s)), Some(rp)) = (&target.road, &e.road_position) {
         if *road == rp.road_id {
             return (s - rp.s).abs();
+        }
+        if let Some(path) = shortest_road_path(&world.network, &rp.road_id, rp.s, road, *s) {
+            return path.length;
         }
     }
     (target.pose.x - e.pose.x).hypot(target.pose.y - e.pose.y)
