@@ -304,3 +304,52 @@ pub(crate) fn profile_speed(
         (line, true)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::profile_speed;
+
+    const DT: f64 = 0.05;
+
+    /// On the line: 100 m in 10 s from 10 to 10 m/s needs no acceleration.
+    #[test]
+    fn on_the_line_keeps_the_speed() {
+        let (v, _) = profile_speed(100.0, 10.0, 10.0, 10.0, DT, false);
+        assert!((v - 10.0).abs() < 1e-12, "{v}");
+    }
+
+    /// Peak: 300 m in 20 s from 5 to 20 m/s; v_x = 15 + √25000 / 20 = 22.90569 m/s and
+    /// a = (2·v_x − 25) / 20 = 1.040569 m/s², so after one step v = 5 + a·dt.
+    #[test]
+    fn peak_profile_accelerates_at_the_closed_form_rate() {
+        let a = (2.0 * (15.0 + 25_000f64.sqrt() / 20.0) - 25.0) / 20.0;
+        let (v, last) = profile_speed(300.0, 20.0, 5.0, 20.0, DT, false);
+        assert!((v - (5.0 + a * DT)).abs() < 1e-12, "{v}");
+        assert!(!last);
+    }
+
+    /// Trough below zero: 20 m in 100 s from 10 to 10 m/s. Stop-and-go covers 20 m at the rate
+    /// (10² + 10²) / (2·20) = 5 m/s², so one step brakes by 0.25 m/s; at rest it waits.
+    #[test]
+    fn negative_trough_brakes_to_a_stop_and_waits() {
+        let (v, _) = profile_speed(20.0, 100.0, 10.0, 10.0, DT, false);
+        assert!((v - 9.75).abs() < 1e-12, "{v}");
+        let (v, _) = profile_speed(20.0, 100.0, 0.0, 10.0, DT, false);
+        assert!(v.abs() < 1e-12, "{v}");
+    }
+
+    /// Last phase: the speed is the line's, 2·s/t − v1 = 2·50/4 − 20 = 5 m/s.
+    #[test]
+    fn last_phase_follows_the_line() {
+        let (v, last) = profile_speed(50.0, 4.0, 6.0, 20.0, DT, true);
+        assert!((v - 5.0).abs() < 1e-12, "{v}");
+        assert!(last);
+    }
+
+    /// A master at rest gives no arrival time: the speed is kept.
+    #[test]
+    fn no_arrival_time_keeps_the_speed() {
+        let (v, _) = profile_speed(50.0, f64::INFINITY, 7.0, 20.0, DT, false);
+        assert!((v - 7.0).abs() < 1e-12, "{v}");
+    }
+}
