@@ -36,6 +36,8 @@ pub(crate) struct Area {
     count: usize,
     continuous: bool,
     mix: TrafficMix,
+    /// Vehicles spawned so far.
+    made: usize,
 }
 
 impl Area {
@@ -54,6 +56,7 @@ impl Area {
                 definition: None,
                 distribution: distribution.to_vec(),
             },
+            made: 0,
         }
     }
 
@@ -132,7 +135,7 @@ impl Area {
                 remove(world, &run.name, id);
             }
             run.members.retain(|&id| world.entity(id).placed);
-        } else if run.spawned as usize >= self.count {
+        } else if self.made >= self.count {
             return Ok(false);
         }
         if run.members.len() >= self.count {
@@ -150,10 +153,11 @@ impl Area {
             if !self.contains(pose.x, pose.y, at) {
                 continue;
             }
-            let name = run.next_name();
+            let name = run.next_name(world);
             let e = template(&mut run.rng, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, DEFAULT_SPEED);
             run.members.push(id);
+            self.made += 1;
             break;
         }
         Ok(true)

@@ -72,7 +72,7 @@ impl Source {
                 break;
             };
             self.due -= 1.0;
-            let name = run.next_name();
+            let name = run.next_name(world);
             let e = template(&mut run.rng, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, self.speed);
             run.members.push(id);

@@ -72,10 +72,16 @@ enum Kind {
 }
 
 impl Running {
-    /// The name of the next vehicle.
-    pub fn next_name(&mut self) -> String {
-        self.spawned += 1;
-        format!("{}.entity_{}", self.name, self.spawned)
+    /// The name of the next vehicle: `<name>.entity_<n>`, n counting on past any name the
+    /// world already has (a declared entity may carry such a name).
+    pub fn next_name(&mut self, world: &World) -> String {
+        loop {
+            self.spawned += 1;
+            let name = format!("{}.entity_{}", self.name, self.spawned);
+            if world.id(&name).is_none() {
+                return name;
+            }
+        }
     }
 }
 

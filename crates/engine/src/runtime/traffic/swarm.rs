@@ -163,7 +163,7 @@ impl Swarm {
             }
             let (lo, hi) = self.speed;
             let speed = lo + (hi - lo) * run.rng.gen::<f64>();
-            let name = run.next_name();
+            let name = run.next_name(world);
             let e = template(&mut run.rng, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, speed);
             run.members.push(id);
