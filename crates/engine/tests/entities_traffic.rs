@@ -264,3 +264,32 @@ fn swarm_direction_of_travel_picks_the_lanes() {
         }
     }
 }
+
+/// A continuous TrafficAreaAction keeps 2 vehicles in s = 100 … 150 of lane −1. Driving at
+/// 50/3.6 m/s they leave within 50 / 13.9 = 3.6 s and are removed in the step they cross
+/// s = 150, so no frame shows one beyond it and never more than 2 at once; replacements keep
+/// coming, so over 12 s more than 2 vehicles have been spawned.
+#[test]
+fn continuous_traffic_area_replaces_vehicles_that_leave() {
+    let (frames, _) = run(
+        &file("traffic_area_continuous.xosc"),
+        EngineConfig::default(),
+    );
+    let area: Vec<&Row> = frames
+        .0
+        .iter()
+        .filter(|r| r.name.starts_with("area.entity_"))
+        .collect();
+    let mut times: Vec<f64> = area.iter().map(|r| r.time).collect();
+    times.dedup();
+    for t in times {
+        let now = area.iter().filter(|r| (r.time - t).abs() < 1e-9).count();
+        assert!(now <= 2, "{now} area vehicles at {t}");
+    }
+    assert!(
+        area.iter().all(|r| (100.0..=150.0).contains(&r.x)),
+        "a vehicle beyond the range"
+    );
+    let spawned: std::collections::HashSet<&str> = area.iter().map(|r| r.name.as_str()).collect();
+    assert!(spawned.len() >= 6, "{} spawned", spawned.len());
+}
