@@ -12,6 +12,10 @@
 //! integrated exactly for the piecewise-straight hitch path, and the axle is then placed at
 //! hitch − L·(cos θ, sin θ), so the coupler sits on the hitch to rounding error whatever dt.
 //!
+//! A trailer's speed is that of its own reference point (the distance its axle moved in the
+//! step over dt, signed as the tow's), so it is lower than the tow's in a curve; esmini reports
+//! the tow's speed for its trailers (up to 3.6 m/s apart in its `trailers` run).
+//!
 //! Chains (truck → trailer → trailer) are moved tow first. A connection made at definition
 //! (`Vehicle/Trailer`) lines the trailer up straight behind its tow at the first step, as esmini
 //! does; ConnectTrailerAction keeps the trailer where it stands, turned towards the hitch, or
