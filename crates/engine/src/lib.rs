@@ -11,6 +11,8 @@
 //! | `storyboard` | OpenSCENARIO 1.3 §7.2.1 / §8.3–8.4 storyboard state machine and triggers |
 //! | `position` | OpenSCENARIO 1.3 §7.4 positions resolved to world poses and road positions |
 //! | `condition` | OpenSCENARIO 1.3 §7.6 condition evaluation |
+//! | `trajectory` | OpenSCENARIO 1.3 trajectory shapes (Polyline, Clothoid, ClothoidSpline, Nurbs) by arc length and time |
+//! | `routing` | OpenSCENARIO 1.3 routes: waypoints and routeStrategy planned on the OpenDRIVE lane graph |
 //! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: world, entities, actions, controllers, the step |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
 #![forbid(unsafe_code)]
