@@ -33,3 +33,21 @@ fn default_controller_follows_lane_through_junction() {
     // The speed is kept: 10 m/s throughout.
     assert!(frames.0.iter().all(|r| (r.speed - 10.0).abs() < 1e-12));
 }
+
+/// velocity_init.xosc: Init places Ego at heading h = 0.3 rad and sets 10 m/s with a step
+/// SpeedAction. The frame at t = 0 carries the velocity along the heading (world axes):
+/// vx = 10·cos 0.3 = 9.553364891, vy = 10·sin 0.3 = 2.955202067, vz = 0; and the frame after
+/// the first step the same (straight travel, no speed change).
+#[test]
+fn first_frame_velocity_follows_speed_and_heading() {
+    let (_, frames, _) = run("velocity_init.xosc");
+    let first = frames.at("Ego", 0.0);
+    assert_abs_diff_eq!(first.speed, 10.0, epsilon = 1e-12);
+    assert_abs_diff_eq!(first.h, 0.3, epsilon = 1e-12);
+    assert_abs_diff_eq!(first.velocity.0, 9.553364891, epsilon = 1e-9);
+    assert_abs_diff_eq!(first.velocity.1, 2.955202067, epsilon = 1e-9);
+    assert_abs_diff_eq!(first.velocity.2, 0.0, epsilon = 1e-12);
+    let next = frames.at("Ego", 0.05);
+    assert_abs_diff_eq!(next.velocity.0, first.velocity.0, epsilon = 1e-9);
+    assert_abs_diff_eq!(next.velocity.1, first.velocity.1, epsilon = 1e-9);
+}

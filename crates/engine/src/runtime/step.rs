@@ -15,6 +15,7 @@ use super::controller::move_entity;
 use super::error::{RuntimeError, RuntimeErrorKind};
 use super::world::World;
 use crate::condition::ConditionStates;
+use crate::domain::Vector3;
 use crate::output::{EventRecord, EventSink, Frame, FrameSink};
 use crate::storyboard::{Storyboard, TransitionRecord, TransitionSink};
 
@@ -214,6 +215,11 @@ impl Engine {
         }
         let world = self.world.get_mut();
         if self.step == 0 {
+            // The Init actions set speeds without a move: the velocity follows the speed along
+            // the heading from the first frame (the trailer stage sets its trailers' own).
+            for e in world.entities.iter_mut().filter(|e| e.placed) {
+                e.velocity.translational = Vector3::new(e.speed, 0.0, 0.0);
+            }
             // Trailers connected at definition stand behind their tows from the first frame.
             super::trailer::follow(world, 0.0);
             // The frame at t = 0: the initial state after the Init actions.

@@ -30,6 +30,8 @@ pub struct Row {
     pub z: f64,
     pub h: f64,
     pub speed: f64,
+    /// Velocity in world axes (vx, vy, vz).
+    pub velocity: (f64, f64, f64),
     pub road: Option<(String, i32, f64, f64, f64)>,
 }
 
@@ -48,6 +50,7 @@ impl FrameSink for Recorder {
                 z: e.pose.z,
                 h: e.pose.h,
                 speed: e.speed,
+                velocity: (e.velocity.x, e.velocity.y, e.velocity.z),
                 road: e
                     .road_position
                     .map(|r| (r.road_id.clone(), r.lane_id, r.s, r.t, r.offset)),
