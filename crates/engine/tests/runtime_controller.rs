@@ -34,8 +34,8 @@ fn default_controller_follows_lane_through_junction() {
     assert!(frames.0.iter().all(|r| (r.speed - 10.0).abs() < 1e-12));
 }
 
-/// velocity_init.xosc: Init places Ego at heading h = 0.3 rad and sets 10 m/s with a step
-/// SpeedAction. The frame at t = 0 carries the velocity along the heading (world axes):
+/// velocity_init.xosc: Init places Ego off the road (50 m left of straight_500m.xodr, so it
+/// moves along its heading) at heading h = 0.3 rad and sets 10 m/s with a step SpeedAction. The frame at t = 0 carries the velocity along the heading (world axes):
 /// vx = 10·cos 0.3 = 9.553364891, vy = 10·sin 0.3 = 2.955202067, vz = 0; and the frame after
 /// the first step the same (straight travel, no speed change).
 #[test]
@@ -50,4 +50,22 @@ fn first_frame_velocity_follows_speed_and_heading() {
     let next = frames.at("Ego", 0.05);
     assert_abs_diff_eq!(next.velocity.0, first.velocity.0, epsilon = 1e-9);
     assert_abs_diff_eq!(next.velocity.1, first.velocity.1, epsilon = 1e-9);
+}
+
+/// turned_follow.xosc: Ego on lane −1 of straight_500m.xodr (reference line along +x from the
+/// origin, so s = x) at (20, −1.5), turned h = 1.2 rad from the road, at 10 m/s. The default
+/// controller keeps the lane (§7.5.1) whatever the heading: after 1 s it is at x = 20 + 10·1 = 30,
+/// still at y = t = −1.5 (the lane offset kept) and h = 1.2; the velocity is that of the travel,
+/// (10, 0) in world axes, not along the heading (10·cos 1.2, 10·sin 1.2) = (3.62, 9.32).
+#[test]
+fn turned_entity_follows_its_lane() {
+    let (_, frames, _) = run("turned_follow.xosc");
+    for (t, x) in [(0.0, 20.0), (0.5, 25.0), (1.0, 30.0)] {
+        let row = frames.at("Ego", t);
+        assert_abs_diff_eq!(row.x, x, epsilon = 1e-9);
+        assert_abs_diff_eq!(row.y, -1.5, epsilon = 1e-9);
+        assert_abs_diff_eq!(row.h, 1.2, epsilon = 1e-9);
+        assert_abs_diff_eq!(row.velocity.0, 10.0, epsilon = 1e-9);
+        assert_abs_diff_eq!(row.velocity.1, 0.0, epsilon = 1e-9);
+    }
 }

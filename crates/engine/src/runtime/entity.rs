@@ -9,7 +9,7 @@ use opendrive::{Direction, Pose, Real, RoadPosition};
 use scenario::{ObjectType, Performance, VehicleCategory};
 
 use super::actions::ControllerOverrides;
-use crate::domain::{Acceleration6d, BoundingBox, Color, Route, Velocity6d};
+use crate::domain::{Acceleration6d, BoundingBox, Color, Route, Vector3, Velocity6d};
 use crate::storyboard::ActionId;
 
 /// Handle of an entity in the world's store: its index in declaration order.
@@ -200,6 +200,26 @@ impl Entity {
             trailer: None,
             overrides: ControllerOverrides::default(),
         }
+    }
+
+    /// Translational velocity in the entity's axes (x forward, y left) of travel at its speed:
+    /// along the heading, or, on a lane track whose heading is turned by `relative_heading`
+    /// from the direction of travel, along the lane: speed·(cos rel, −sin rel, 0).
+    pub fn travel_velocity(&self) -> Vector3 {
+        self.along_travel(self.speed)
+    }
+
+    /// The vector of length `value` along the direction of travel, in the entity's axes (see
+    /// [`Entity::travel_velocity`]).
+    pub fn along_travel(&self, value: Real) -> Vector3 {
+        let rel = self.track.as_ref().map_or(0.0, |t| t.relative_heading);
+        Vector3::new(value * rel.cos(), -value * rel.sin(), 0.0)
+    }
+
+    /// Component of `v` (entity axes) along the direction of travel.
+    pub fn travel_component(&self, v: Vector3) -> Real {
+        let rel = self.track.as_ref().map_or(0.0, |t| t.relative_heading);
+        v.x * rel.cos() - v.y * rel.sin()
     }
 
     /// Maximum speed (m/s): the performance limit, unlimited for non-vehicles.

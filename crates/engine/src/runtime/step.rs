@@ -15,7 +15,6 @@ use super::controller::move_entity;
 use super::error::{RuntimeError, RuntimeErrorKind};
 use super::world::World;
 use crate::condition::ConditionStates;
-use crate::domain::Vector3;
 use crate::output::{EventRecord, EventSink, Frame, FrameSink};
 use crate::storyboard::{Storyboard, TransitionRecord, TransitionSink};
 
@@ -218,7 +217,7 @@ impl Engine {
             // The Init actions set speeds without a move: the velocity follows the speed along
             // the heading from the first frame (the trailer stage sets its trailers' own).
             for e in world.entities.iter_mut().filter(|e| e.placed) {
-                e.velocity.translational = Vector3::new(e.speed, 0.0, 0.0);
+                e.velocity.translational = e.travel_velocity();
             }
             // Trailers connected at definition stand behind their tows from the first frame.
             super::trailer::follow(world, 0.0);

@@ -17,9 +17,6 @@ use crate::storyboard::StateView;
 /// A located point farther than this (m) from every lane is off the road: the entity then
 /// moves straight along its heading instead of following a lane.
 const ON_ROAD_TOLERANCE: Real = 0.5;
-/// An entity whose heading differs from its lane's direction of travel by more than this
-/// (rad) crosses the road rather than following it.
-const ALIGNED_TOLERANCE: Real = 0.5;
 
 /// Road network, entities and global values of one run.
 #[derive(Debug)]
@@ -109,8 +106,11 @@ impl World {
         self.variables.get(name)
     }
 
-    /// Places entity `id` at `pose` with road position `found`; when it stands on a lane
-    /// roughly along the lane's direction of travel, the default controller follows that lane.
+    /// Places entity `id` at `pose` with road position `found`; when it stands on a lane, the
+    /// default controller follows that lane (OpenSCENARIO 1.3 §7.5.1: it keeps the lane),
+    /// whatever its heading: the heading relative to the lane's direction of travel is kept, so
+    /// an object turned sideways on a vehicle (drop-bike.xosc) travels along the lane with it.
+    /// An entity turned more than 90° from the reference line's direction travels towards −s.
     pub(crate) fn place_resolved(&mut self, id: EntityId, pose: Pose, found: Option<RoadPosition>) {
         let e = &mut self.entities[id.index()];
         e.placed = true;
@@ -138,7 +138,7 @@ impl World {
             rp.lane_id = lane;
             rp.offset = offset;
         }
-        if on_road && along.abs() <= ALIGNED_TOLERANCE {
+        if on_road {
             e.track = Some(LaneTrack {
                 road_id: rp.road_id.clone(),
                 lane_id: rp.lane_id,

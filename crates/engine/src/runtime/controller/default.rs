@@ -9,7 +9,7 @@
 //! then its lateral position t is set from the lane centre plus offset, or from the lateral
 //! transition in progress. Heading = direction of travel along the road + the slope of the
 //! lateral motion, h = h_road + atan2(dt/ds, 1 − κ·t), plus the entity's own relative heading.
-//! An entity off every lane, or crossing the road, moves straight along its heading.
+//! An entity off every lane moves straight along its heading.
 
 use opendrive::{normalize_angle, Direction, LaneHandle, Real, Road, RoadNetwork};
 
@@ -24,7 +24,7 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
         return;
     }
     let old_h = e.pose.h;
-    let old_v = e.velocity.translational.x;
+    let old_v = e.travel_component(e.velocity.translational);
     // Actions act in the order they started (as in esmini): a lateral action started before
     // the running longitudinal one moves the entity before the speed changes, so the entity
     // travels at the speed of the step's start; otherwise at the speed set for this step.
@@ -44,11 +44,11 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
         advance_entity(net, e, distance);
     }
     e.velocity = Velocity6d {
-        translational: Vector3::new(e.speed, 0.0, 0.0),
+        translational: e.travel_velocity(),
         rotational: Vector3::new(0.0, 0.0, normalize_angle(e.pose.h - old_h) / dt),
     };
     e.acceleration = Acceleration6d {
-        translational: Vector3::new((e.speed - old_v) / dt, 0.0, 0.0),
+        translational: e.along_travel((e.speed - old_v) / dt),
         rotational: Vector3::ZERO,
     };
 }
