@@ -114,3 +114,24 @@ fn lane_offset_sinusoidal_duration_from_max_lateral_acc() {
     let slope = std::f64::consts::PI / 80.0;
     assert_abs_diff_eq!(frames.at("Ego", 2.0).h, slope.atan(), epsilon = EXACT);
 }
+
+/// trajectory_reverse.xosc: Init sets −5 m/s, then FollowTrajectoryAction (no time reference)
+/// on the polyline (20, 50) → (40, 50), 20 m long with tangent +x, 50 m off the road. Reverse
+/// gear: Ego travels the polyline from its start at |v| = 5 m/s, facing against the tangent
+/// (h = π): x(t) = 20 + 5·t, so x(1) = 25, and the end x = 40 at t = 4 s. Then the default
+/// controller moves it on at −5 m/s along h = π, i.e. towards +x: x(5) = 40 + 5 = 45.
+#[test]
+fn negative_speed_drives_a_trajectory_in_reverse() {
+    let (_, frames, _) = run("trajectory_reverse.xosc");
+    for (t, x) in [(0.0, 20.0), (1.0, 25.0), (4.0, 40.0), (5.0, 45.0)] {
+        let row = frames.at("Ego", t);
+        assert_abs_diff_eq!(row.x, x, epsilon = 1e-9);
+        assert_abs_diff_eq!(row.y, 50.0, epsilon = 1e-9);
+        assert_abs_diff_eq!(
+            normalize_angle(row.h - std::f64::consts::PI),
+            0.0,
+            epsilon = 1e-9
+        );
+        assert_abs_diff_eq!(row.speed, -5.0, epsilon = 1e-12);
+    }
+}

@@ -8,7 +8,14 @@
 //! Timing, where the trajectory's clock says); its pose is the trajectory point's (heading = the
 //! trajectory's tangent). The action ends at the end of an open trajectory; the actor then drives on under
 //! the default controller from where it stands.
+//!
+//! A negative speed without a Timing time reference drives the trajectory in reverse gear: the
+//! actor still travels from the trajectory's start towards its end, at |speed|, facing against
+//! the tangent (heading = tangent + π). The standard does not say what a negative speed means
+//! on a trajectory; this is esmini's reading, which the reversing manoeuvres of the corpus
+//! (parking_demo.xosc: a ClothoidSpline starting at the car's heading + π) are written for.
 
+use opendrive::normalize_angle;
 use scenario::{SourcePos, Timing};
 
 use super::Part;
@@ -41,7 +48,7 @@ impl TrajectoryState {
                 .trajectory
                 .s_at_simulation_time(clock, step_end)
                 .unwrap_or(self.s),
-            None => self.s + self.speed * (step_end - self.at),
+            None => self.s + self.speed.abs() * (step_end - self.at),
         };
         next >= self.trajectory.length() - 1e-9
     }
@@ -77,22 +84,35 @@ pub(crate) fn start(
         speed: world.entity(actor).speed,
         at: now,
     };
-    place(world, actor, &state.trajectory, s, false);
+    let reversing = state.clock.is_none() && state.speed < 0.0;
+    place(world, actor, &state.trajectory, s, false, reversing);
     Ok(match step(world, actor, &mut state, now - 1e-12, 0.0) {
         ActionStatus::Running => Part::Trajectory(state),
         done => Part::Done(done),
     })
 }
 
-/// Puts `actor` at arc length `s` of the trajectory; `hold` marks the pose as set for the
-/// step, so the controller takes measurements without moving the actor again.
-fn place(world: &mut World, actor: EntityId, trajectory: &Trajectory, s: f64, hold: bool) {
+/// Puts `actor` at arc length `s` of the trajectory, facing along the tangent (against it when
+/// `reversing`); `hold` marks the pose as set for the step, so the controller takes
+/// measurements without moving the actor again.
+fn place(
+    world: &mut World,
+    actor: EntityId,
+    trajectory: &Trajectory,
+    s: f64,
+    hold: bool,
+    reversing: bool,
+) {
     let p = trajectory.eval(s);
     let e = world.entity_mut(actor);
     e.pose.x = p.x;
     e.pose.y = p.y;
     e.pose.z = p.z;
-    e.pose.h = p.heading;
+    e.pose.h = if reversing {
+        normalize_angle(p.heading + std::f64::consts::PI)
+    } else {
+        p.heading
+    };
     e.track = None;
     e.held = hold;
     e.placed = true;
@@ -117,8 +137,9 @@ pub(crate) fn step(
                 .s_at_simulation_time(clock, t)
                 .unwrap_or(st.s + world.entity(actor).speed * dt)
         }
-        None => st.s + world.entity(actor).speed * dt,
+        None => st.s + world.entity(actor).speed.abs() * dt,
     };
+    let reversing = st.clock.is_none() && world.entity(actor).speed < 0.0;
     // Travel beyond the end of an open trajectory, continued by the default controller.
     let beyond = if st.trajectory.closed() {
         0.0
@@ -134,15 +155,16 @@ pub(crate) fn step(
     st.s = s;
     st.speed = world.entity(actor).speed;
     st.at = t;
-    place(world, actor, &st.trajectory, s, true);
+    place(world, actor, &st.trajectory, s, true, reversing);
     world.entity_mut(actor).odometer += moved;
     let at_end = !st.trajectory.closed() && s >= length - 1e-9;
     if at_end && dt > 0.0 {
         // The rest of the step's travel goes on straight along the trajectory's end tangent;
-        // then the default controller takes over from there.
+        // then the default controller takes over from there (backwards when reversing).
+        let along = if reversing { -beyond } else { beyond };
         let e = world.entity_mut(actor);
-        e.pose.x += beyond * e.pose.h.cos();
-        e.pose.y += beyond * e.pose.h.sin();
+        e.pose.x += along * e.pose.h.cos();
+        e.pose.y += along * e.pose.h.sin();
         e.odometer += beyond;
         release(world, actor, true);
         ActionStatus::Ended
