@@ -74,9 +74,11 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
         ByValueCondition::TimeOfDay { rule, date_time } => {
             let wanted = parse_date_time(date_time)
                 .ok_or_else(|| err(ConditionErrorKind::InvalidDateTime(date_time.clone())))?;
+            // Compared as a difference: the rule's relative tolerance on two epoch times
+            // (~1.8e9 s) would be almost two seconds wide.
             Ok(ctx
                 .time_of_day()
-                .is_some_and(|now| compare(now, *rule, wanted)))
+                .is_some_and(|now| compare(now - wanted, *rule, 0.0)))
         }
         ByValueCondition::TrafficSignal { name, state } => Ok(ctx
             .traffic_signal_state(name)
