@@ -135,3 +135,21 @@ fn negative_speed_drives_a_trajectory_in_reverse() {
         assert_abs_diff_eq!(row.speed, -5.0, epsilon = 1e-12);
     }
 }
+
+/// trajectory_timed_start.xosc: Ego, at rest and never teleported, follows from Init a polyline
+/// on lane −1 of straight_500m.xodr (s = x, centre t = −1.535) from x = 20 at time 0 to x = 40 at
+/// time 2 (Timing relative, offset 0, scale 1): 20 m / 2 s = 10 m/s. The frame at t = 0 already
+/// shows that speed and the road position (road 1, lane −1, s = 20); at t = 1 s, x = 30.
+#[test]
+fn timed_trajectory_sets_speed_and_road_position_from_the_first_frame() {
+    let (_, frames, _) = run("trajectory_timed_start.xosc");
+    let first = frames.at("Ego", 0.0);
+    assert_abs_diff_eq!(first.speed, 10.0, epsilon = 1e-9);
+    let (road, lane, s, t, _) = first.road.clone().expect("on the road at t = 0");
+    assert_eq!((road.as_str(), lane), ("1", -1));
+    assert_abs_diff_eq!(s, 20.0, epsilon = 1e-9);
+    assert_abs_diff_eq!(t, -1.535, epsilon = 1e-9);
+    let later = frames.at("Ego", 1.0);
+    assert_abs_diff_eq!(later.x, 30.0, epsilon = 1e-9);
+    assert_abs_diff_eq!(later.speed, 10.0, epsilon = 1e-9);
+}

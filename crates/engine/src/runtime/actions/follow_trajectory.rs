@@ -86,7 +86,10 @@ pub(crate) fn start(
     };
     let reversing = state.clock.is_none() && state.speed < 0.0;
     place(world, actor, &state.trajectory, s, false, reversing);
-    Ok(match step(world, actor, &mut state, now - 1e-12, 0.0) {
+    // Measured at once: the frame of the start shows the road position of the new pose.
+    let pose = world.entity(actor).pose;
+    world.entity_mut(actor).road_position = world.network.locate(pose.x, pose.y, Some(pose.h));
+    Ok(match step(world, actor, &mut state, now, 0.0) {
         ActionStatus::Running => Part::Trajectory(state),
         done => Part::Done(done),
     })
