@@ -23,7 +23,7 @@ use crate::runtime::entity::EntityId;
 use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
-use crate::trajectory::{build, Trajectory, TrajectoryClock};
+use crate::trajectory::{build_for_actor, Trajectory, TrajectoryClock};
 
 /// A running FollowTrajectoryAction on one actor.
 #[derive(Debug, Clone)]
@@ -65,7 +65,11 @@ pub(crate) fn start(
     pos: &SourcePos,
 ) -> Result<Part, RuntimeError> {
     let to_error = |e| RuntimeError::new(RuntimeErrorKind::Trajectory(e));
-    let trajectory = build(trajectory, &*world, pos).map_err(to_error)?;
+    // A ClothoidSpline whose first segment has no PositionStart starts at the actor (1.3 XSD
+    // `ClothoidSplineSegment`: positionStart is optional).
+    let actor_pose = world.entity(actor).pose;
+    let trajectory =
+        build_for_actor(trajectory, &*world, Some(&actor_pose), pos).map_err(to_error)?;
     let clock = timing
         .map(|t| TrajectoryClock::new(t, now, pos))
         .transpose()
