@@ -1,7 +1,8 @@
 //! Runtime cost: (1) wall time of the whole esmini cut-in scenario (build from the loaded
 //! model, 22 s simulated at dt = 0.05 s, CSV and event log to memory); (2) entity-steps per
 //! second for 1 000 vehicles on a 200 km straight road with 4 lanes under the default
-//! controller (the scenario is written to a temporary folder at start-up).
+//! controller (the scenario is written to a temporary folder at start-up); (3) the whole
+//! esmini synchronize scenario (SynchronizeAction).
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use engine::output::{CsvWriter, JsonlWriter};
@@ -16,20 +17,21 @@ const VEHICLES: usize = 1_000;
 /// Steps per measured iteration of the traffic benchmark.
 const STEPS: u64 = 20;
 
-fn cut_in(c: &mut Criterion) {
+/// Wall time of a whole run of the esmini corpus scenario `file`: build from the loaded model,
+/// run to the storyboard's end, CSV and event log to memory.
+fn whole_run(c: &mut Criterion, group: &str, file: &str, measurement: Duration) {
     let path = PathBuf::from(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/corpus/esmini/xosc/cut-in.xosc"
-    ));
+        "/../../../shared/corpus/esmini/xosc"
+    ))
+    .join(file);
     let Ok(scenario) = scenario::Scenario::load(&path) else {
-        eprintln!("cut-in.xosc not found; skipping");
+        eprintln!("{file} not found; skipping");
         return;
     };
-    let mut group = c.benchmark_group("runtime");
-    group
-        .sample_size(10)
-        .measurement_time(Duration::from_secs(5));
-    group.bench_function("cut-in whole run", |b| {
+    let mut group = c.benchmark_group(group);
+    group.sample_size(10).measurement_time(measurement);
+    group.bench_function(format!("{file} whole run"), |b| {
         b.iter(|| {
             let mut engine = Engine::build(&scenario, EngineConfig::default()).expect("builds");
             let mut csv = CsvWriter::new(Vec::new());
@@ -39,6 +41,16 @@ fn cut_in(c: &mut Criterion) {
         })
     });
     group.finish();
+}
+
+fn cut_in(c: &mut Criterion) {
+    whole_run(c, "runtime", "cut-in.xosc", Duration::from_secs(5));
+}
+
+/// SynchronizeAction cost: synchronize.xosc, 32.2 s simulated = 644 steps, seven vehicles of
+/// which four synchronise with the master for 10 s.
+fn synchronize(c: &mut Criterion) {
+    whole_run(c, "synchronize", "synchronize.xosc", Duration::from_secs(3));
 }
 
 /// Writes the straight road and a scenario with `VEHICLES` vehicles to a temporary folder.
@@ -106,5 +118,5 @@ fn traffic(c: &mut Criterion) {
     let _ = std::fs::remove_dir_all(path.parent().unwrap_or(&path));
 }
 
-criterion_group!(benches, cut_in, traffic);
+criterion_group!(benches, cut_in, traffic, synchronize);
 criterion_main!(benches);
