@@ -14,7 +14,10 @@ docs/conformance.md: one line per scenario with the outcome, the worst position 
 errors over its entities, the events whose start time disagrees, and a hand-written reason
 read from docs/conformance-notes.tsv (scenario <TAB> reason; kept across regenerations, edited
 by hand). Options: --no-build (use the existing binary), --timeout SECONDS (per run, default
-120), --only NAME (substring filter, for quick checks; the report then covers those only).
+120), --only NAME (substring filter, for quick checks: prints the rows and leaves
+docs/conformance.md alone unless --report is given), --bin PATH (the oscsim binary to run, e.g.
+target/debug/oscsim with --no-build), --out DIR (where runs are written, default
+target/conformance), --report PATH (where the report is written).
 Standard library only.
 """
 import argparse
@@ -141,7 +144,14 @@ def main():
     ap.add_argument("--no-build", action="store_true")
     ap.add_argument("--timeout", type=float, default=120.0)
     ap.add_argument("--only", default="")
+    ap.add_argument("--bin", default=None)
+    ap.add_argument("--out", default=None)
+    ap.add_argument("--report", default=None)
     a = ap.parse_args()
+    global BIN, OUT
+    BIN = os.path.abspath(a.bin) if a.bin else BIN
+    OUT = os.path.abspath(a.out) if a.out else OUT
+    report = a.report or (None if a.only else REPORT)
     if not a.no_build:
         subprocess.run(["cargo", "build", "--release", "-p", "oscsim-cli"], cwd=ROOT, check=True)
     os.makedirs(OUT, exist_ok=True)
@@ -206,9 +216,14 @@ def main():
                    "actions that read false or did nothing; message: scenarios):\n")
         for m, names in sorted(all_unsupported.items(), key=lambda kv: -len(kv[1])):
             out.append(f"- {m}: {', '.join(sorted(names))}")
-    with open(REPORT, "w", encoding="utf-8") as f:
+    if report is None:
+        for source, name, verdict, err, wall, result in rows:
+            extra = f" pos {result['pos']:.3f} speed {result['speed']:.3f} events {result['events']} entities {result['entities']}" if result else ""
+            print(f"{source}/{name}: {verdict}{extra}")
+        return
+    with open(report, "w", encoding="utf-8") as f:
         f.write("\n".join(out) + "\n")
-    print(f"wrote {os.path.relpath(REPORT, ROOT)}", file=sys.stderr)
+    print(f"wrote {os.path.relpath(report, ROOT)}", file=sys.stderr)
 
 
 if __name__ == "__main__":
