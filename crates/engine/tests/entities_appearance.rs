@@ -4,6 +4,7 @@
 mod runtime_support;
 
 use engine::output::EventRecord;
+use engine::storyboard::Transition;
 use engine::{Engine, EngineConfig};
 use runtime_support::corpus;
 use scenario::LightMode;
@@ -55,6 +56,81 @@ fn light_state_action_is_kept_and_logged() {
     let world = engine.world();
     let state = world.light_state(car1, "indicatorLeft").expect("set");
     assert_eq!(state.mode, LightMode::Off);
+}
+
+/// The time of `element`'s `transition` ("start" or "end") in esmini's reference log of
+/// light_state (lines `TIME NAME from -> startTransition -> to`).
+fn reference_time(element: &str, transition: &str) -> f64 {
+    let path = corpus("reference/esmini/light_state.events.txt");
+    let text = std::fs::read_to_string(&path).expect("reference log");
+    let wanted = format!("{transition}Transition");
+    text.lines()
+        .find_map(|line| {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            let n = words.len();
+            let hit = n >= 7 && words[1..n - 5].join(" ") == element && words[n - 3] == wanted;
+            hit.then(|| words[0].parse().expect("a time"))
+        })
+        .unwrap_or_else(|| panic!("{element} {transition} not in the reference"))
+}
+
+/// XSD `LightStateAction`: `transitionTime` is the "time to transition from current lightState
+/// to given new lightState", and LightState the state "after execution": the action runs for
+/// its transition time. In light_state.xosc (dt 0.05 s) actionLowBeamOn (line 532),
+/// actionDRLOn (556) and actionHighBeamOn (580) have transitionTime 1 and start 33.150, 34.150
+/// and 35.150 s (esmini's reference log, which these starts must match). Each ends in the step
+/// whose advance reaches start + 1 s: at start + 0.95 s (esmini records start + 1.00 s). So
+/// eventLowBeamOn and eventDRLOn have ended when the next override Event starts (end
+/// transitions, as in esmini, not stops). eventManyLightsOn waits for eventHighBeamOn's end
+/// with delay 1 and starts 1.05 s after it (the condition sees the end one step later):
+/// 36.100 + 1.05 = 37.150 s, esmini 37.200 s. actionStartLPI (transitionTime 0, line 133)
+/// starts and ends in one step.
+#[test]
+fn light_state_action_ends_after_its_transition_time() {
+    let path = corpus("esmini/xosc/light_state.xosc");
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+    let mut events = Vec::new();
+    engine.run(&mut (), &mut events).expect("runs");
+    let find = |element: &str, transition: Transition| {
+        events.iter().find_map(|e| match e {
+            EventRecord::Transition(t) if t.name == element && t.transition == transition => {
+                Some(t.time)
+            }
+            _ => None,
+        })
+    };
+    let ours = |element: &str, transition: Transition| {
+        find(element, transition).unwrap_or_else(|| panic!("no {transition:?} of {element}"))
+    };
+    for action in ["actionLowBeamOn", "actionDRLOn", "actionHighBeamOn"] {
+        let start = ours(action, Transition::Start);
+        assert!(
+            (start - reference_time(action, "start")).abs() < 1e-6,
+            "{action} start"
+        );
+        let end = ours(action, Transition::End);
+        assert!(
+            (end - start - 0.95).abs() < 1e-9,
+            "{action}: {start} → {end}"
+        );
+        assert!(
+            (reference_time(action, "end") - end - 0.05).abs() < 1e-6,
+            "{action} end"
+        );
+    }
+    for event in ["eventLowBeamOn", "eventDRLOn"] {
+        assert!(
+            find(event, Transition::Stop).is_none(),
+            "{event} was stopped"
+        );
+        assert!((ours(event, Transition::End) - reference_time(event, "end") + 0.05).abs() < 1e-6);
+    }
+    let lpi = ours("actionStartLPI", Transition::Start);
+    assert!((ours("actionStartLPI", Transition::End) - lpi).abs() < 1e-9);
+    let many = ours("eventManyLightsOn", Transition::Start);
+    assert!((many - ours("eventHighBeamOn", Transition::End) - 1.05).abs() < 1e-9);
+    assert!((many - 37.15).abs() < 1e-9, "{many}");
+    assert!((reference_time("eventManyLightsOn", "start") - many - 0.05).abs() < 1e-6);
 }
 
 /// esmini's cut-in_environment.xosc: "nightTimeAction" sets TimeOfDay 00:00 (line 92),

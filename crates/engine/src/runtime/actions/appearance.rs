@@ -1,8 +1,23 @@
 //! AppearanceAction (OpenSCENARIO 1.3 §7.7.2 private actions, XSD `AppearanceAction`,
 //! `LightStateAction`, `AnimationAction`): lights and animations of an entity. They change
 //! nothing in the motion; oscsim keeps the state each one set, per entity, and writes every
-//! change to the event log (kind `entity`). Instantaneous: a `transitionTime` or
-//! `animationDuration` is kept with the state, not played out.
+//! change to the event log (kind `entity`).
+//!
+//! When each ends: a LightStateAction ends `transitionTime` after its start (XSD
+//! `LightStateAction`: "Time to transition from current lightState to given new lightState
+//! (default: transitionTime = 0)"; its `LightState` is the state "after execution of the
+//! LightStateAction", so the action executes for the transition time). The end is recorded in
+//! the step whose advance reaches start + transitionTime, as for every transition over a fixed
+//! time (actions::status): transitionTime 1 s from 35.150 s ends at 36.100 s. The state records
+//! the new light state from the start; the fading in between is not modelled.
+//!
+//! esmini 3.6.0 also runs the action for its transitionTime (its `light_state` log:
+//! actionHighBeamOn, transitionTime 1, 35.150 → 36.150 s, one step later than oscsim because
+//! it counts the time after its check), but never ends an action whose new mode is `flashing`
+//! (it keeps the action running to blink the light, until the storyboard stops). The standard
+//! makes `flashing` a LightMode like `on`, a state the transition reaches (XSD `LightMode`), so
+//! oscsim ends those too. AnimationAction is instantaneous here: its `animationDuration` is
+//! kept with the state, not played out.
 
 use std::collections::BTreeMap;
 
@@ -11,6 +26,33 @@ use scenario::{AnimationAction, AnimationType, AppearanceAction, LightKind, Ligh
 use crate::output::EventRecord;
 use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
+use crate::storyboard::ActionStatus;
+
+/// A LightStateAction running through its `transitionTime`.
+#[derive(Debug, Clone)]
+pub(crate) struct LightTransition {
+    /// Simulation time at which the new light state is reached, s.
+    ends_at: f64,
+}
+
+impl LightTransition {
+    /// Whether the transition reaches the new state by `step_end`, the end of the step the
+    /// runtime is in: then the action ends in this step, like every transition over a fixed
+    /// time (actions::status). The 1e-9 s absorbs the rounding of summed steps, as for the
+    /// SpeedAction and LaneChangeAction durations.
+    pub(crate) fn completes_by(&self, step_end: f64) -> bool {
+        step_end >= self.ends_at - 1e-9
+    }
+
+    /// The status after the step from `now` to `now + dt`.
+    pub(crate) fn step(&self, now: f64, dt: f64) -> ActionStatus {
+        if self.completes_by(now + dt) {
+            ActionStatus::Ended
+        } else {
+            ActionStatus::Running
+        }
+    }
+}
 
 /// The lights and animations set so far, per entity.
 #[derive(Debug, Clone, Default)]
@@ -58,7 +100,8 @@ fn animation_name(kind: &AnimationType) -> String {
     }
 }
 
-/// Applies `action` to `actor` at `time` on behalf of the action called `element`.
+/// Applies `action` to `actor` at `time` on behalf of the action called `element`; returns the
+/// light transition still to run, if any (`transitionTime` > 0).
 pub(crate) fn start(
     world: &mut World,
     actor: EntityId,
@@ -66,9 +109,14 @@ pub(crate) fn start(
     element: &str,
     time: f64,
     events: &mut Vec<EventRecord>,
-) {
+) -> Option<LightTransition> {
+    let mut transition = None;
     let change = match action {
         AppearanceAction::LightState(l) => {
+            transition = l
+                .transition_time
+                .filter(|&d| d > 0.0)
+                .map(|d| LightTransition { ends_at: time + d });
             let name = light_name(&l.light_type);
             let change = format!("light {name} {}", l.light_state.mode.as_str());
             world
@@ -86,7 +134,7 @@ pub(crate) fn start(
             world.appearance.animations.insert((actor, name), a.clone());
             change
         }
-        _ => return,
+        _ => return None,
     };
     events.push(EventRecord::Entity {
         time,
@@ -94,4 +142,5 @@ pub(crate) fn start(
         entity: world.entity(actor).name.clone(),
         change,
     });
+    transition
 }
