@@ -145,6 +145,9 @@ pub struct Entity {
     pub visibility: Visibility,
     /// Route assigned by AssignRouteAction.
     pub route: Option<Route>,
+    /// The planned route the default controller follows, with the entity's progress along it
+    /// (AssignRouteAction, AcquirePositionAction; runtime/controller/route.rs).
+    pub route_follow: Option<super::controller::RouteFollow>,
     /// The action controlling the longitudinal domain, if any (§7.5.1 control domains).
     pub longitudinal_action: Option<ActionId>,
     /// The action controlling the lateral domain, if any.
@@ -190,6 +193,7 @@ impl Entity {
             odometer: 0.0,
             visibility: Visibility::default(),
             route: None,
+            route_follow: None,
             longitudinal_action: None,
             lateral_action: None,
             lateral_slope: 0.0,

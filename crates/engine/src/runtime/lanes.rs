@@ -79,13 +79,14 @@ pub fn lane_shift(lane: i32, n: i32, direction: Direction) -> i32 {
 }
 
 /// Moves `track` by `distance` m of travel along s in its direction, following lane links
-/// (the first successor, in the road model's order, or the one `prefer` picks). Returns the
-/// distance that could not be driven because the lane ends with no successor.
+/// (the first successor, in the road model's order, or the one `prefer` picks from the
+/// successors where the road named by its first argument ends). Returns the distance that
+/// could not be driven because the lane ends with no successor.
 pub fn advance(
     net: &RoadNetwork,
     track: &mut LaneTrack,
     mut distance: Real,
-    prefer: &dyn Fn(&[LaneHandle], &RoadNetwork) -> Option<LaneHandle>,
+    prefer: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
 ) -> Real {
     for _ in 0..MAX_HOPS {
         let Some(road) = net.road(&track.road_id) else {
@@ -108,7 +109,9 @@ pub fn advance(
             return distance;
         };
         let successors = net.successors(handle);
-        let Some(next) = prefer(&successors, net).or_else(|| successors.first().copied()) else {
+        let Some(next) =
+            prefer(&track.road_id, &successors).or_else(|| successors.first().copied())
+        else {
             return distance;
         };
         let next_road = net.handle_road(next);

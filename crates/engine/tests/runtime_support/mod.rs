@@ -72,8 +72,23 @@ impl Recorder {
 
 /// Loads and runs a test scenario to its end with the default settings.
 pub fn run(name: &str) -> (Engine, Recorder, Vec<EventRecord>) {
-    let mut engine = Engine::load(&file(name), &[], EngineConfig::default())
-        .unwrap_or_else(|e| panic!("{name} does not load: {e}"));
+    run_with(&file(name), &[], EngineConfig::default())
+}
+
+/// Loads the scenario at `path` with parameter overrides `(name, value)` and runs it to its
+/// end under `config`.
+pub fn run_with(
+    path: &std::path::Path,
+    params: &[(&str, &str)],
+    config: EngineConfig,
+) -> (Engine, Recorder, Vec<EventRecord>) {
+    let params: Vec<(String, String)> = params
+        .iter()
+        .map(|(k, v)| (k.to_string(), v.to_string()))
+        .collect();
+    let name = path.display();
+    let mut engine =
+        Engine::load(path, &params, config).unwrap_or_else(|e| panic!("{name} does not load: {e}"));
     let mut frames = Recorder::default();
     let mut events = Vec::new();
     engine

@@ -1,7 +1,8 @@
 //! AssignRouteAction and AcquirePositionAction (OpenSCENARIO 1.3 §7.7.2.6 "RoutingAction",
 //! XSD `AssignRouteAction`, `AcquirePositionAction`): give the actor a route, which the
-//! default controller follows at junctions (module `controller::default`). Planning is the
-//! `routing` module's.
+//! default controller follows through junctions, changing lanes where the route needs it
+//! (module `controller::route`). Planning is the `routing` module's, with the run's seed for
+//! routeStrategy `random`.
 //!
 //! AcquirePositionAction plans the shortest route from the actor's lane position to the target
 //! and ends at once; reaching the target is the default controller's job along that route.
@@ -13,9 +14,27 @@ use scenario::{Position, Route, RouteStrategy, SourcePos};
 
 use crate::output::EventRecord;
 use crate::position::resolve;
-use crate::routing::{plan_between, plan_route, RoutingOptions};
+use crate::routing::{plan_between, plan_route, PlannedRoute, RoutingOptions};
+use crate::runtime::controller::RouteFollow;
 use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
+
+/// The run's routing options: routeStrategy `random` draws from the run's seed
+/// ([`EngineConfig::seed`](crate::EngineConfig), `oscsim run --seed`).
+fn options(world: &World) -> RoutingOptions {
+    RoutingOptions {
+        seed: world.traffic.seed,
+        ..RoutingOptions::default()
+    }
+}
+
+/// Gives `actor` the planned route: for conditions and positions (`Entity::route`) and for the
+/// default controller to follow (`Entity::route_follow`).
+fn give(world: &mut World, actor: EntityId, planned: PlannedRoute) {
+    let e = world.entity_mut(actor);
+    e.route = Some(planned.route().clone());
+    e.route_follow = Some(RouteFollow::new(planned));
+}
 
 /// AssignRouteAction: plans `route` and assigns it.
 pub(crate) fn assign(
@@ -27,8 +46,8 @@ pub(crate) fn assign(
     time: f64,
     events: &mut Vec<EventRecord>,
 ) {
-    match plan_route(route, &*world, &RoutingOptions::default(), pos) {
-        Ok(planned) => world.entity_mut(actor).route = Some(planned.route().clone()),
+    match plan_route(route, &*world, &options(world), pos) {
+        Ok(planned) => give(world, actor, planned),
         Err(e) => events.push(EventRecord::Error {
             time,
             element: name.to_owned(),
@@ -75,10 +94,10 @@ pub(crate) fn acquire(
         &lane(&from),
         &lane(&to),
         RouteStrategy::Shortest,
-        &RoutingOptions::default(),
+        &options(world),
         &target.pos,
     ) {
-        Ok(planned) => world.entity_mut(actor).route = Some(planned.route().clone()),
+        Ok(planned) => give(world, actor, planned),
         Err(e) => fail(e.to_string()),
     }
 }

@@ -1,8 +1,9 @@
 //! The default controller (OpenSCENARIO 1.3 §7.5.1 "Default controller"): keeps the speed the
 //! longitudinal domain last set and the lane offset the lateral domain last set, and follows
-//! its lane along the road, through lane sections and junctions (the assigned route's lane when
-//! one is on offer, else the first lane link in the road model's order, so the choice is
-//! deterministic).
+//! its lane along the road, through lane sections and junctions. With an assigned route it
+//! takes the route's successor where a road ends and changes lanes where the route needs it
+//! (`route`, `lane_change`); without one, or off it, the first lane link in the road model's
+//! order, so the choice is deterministic (§7.5.1 leaves the choice at junctions open).
 //!
 //! Longitudinal then lateral, each step: the entity travels `speed · dt` metres along its lane
 //! (at its lateral position t the reference line's s advances by that distance / (1 − κ·t)),
@@ -11,9 +12,11 @@
 //! lateral motion, h = h_road + atan2(dt/ds, 1 − κ·t), plus the entity's own relative heading.
 //! An entity off every lane moves straight along its heading.
 
-use opendrive::{normalize_angle, Direction, LaneHandle, Real, Road, RoadNetwork};
+use opendrive::{normalize_angle, Direction, Real, Road, RoadNetwork};
 
-use crate::domain::{Acceleration6d, Route, Vector3, Velocity6d};
+use super::lane_change;
+use super::route::RouteFollow;
+use crate::domain::{Acceleration6d, Vector3, Velocity6d};
 use crate::runtime::entity::{Entity, LaneTrack};
 use crate::runtime::lanes::{advance, curvature, road_position};
 
@@ -33,7 +36,6 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     } else {
         e.speed
     };
-    let distance = speed * dt;
     if e.held {
         // An action set the pose for this step: measure only.
         e.held = false;
@@ -41,7 +43,7 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
             e.road_position = net.locate(e.pose.x, e.pose.y, Some(e.pose.h));
         }
     } else {
-        advance_entity(net, e, distance);
+        advance_entity(net, e, speed, dt);
     }
     e.velocity = Velocity6d {
         translational: e.travel_velocity(),
@@ -53,12 +55,16 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     };
 }
 
-/// Moves `e` by `distance` m: along its lane track, or straight along its heading.
-fn advance_entity(net: &RoadNetwork, e: &mut Entity, distance: Real) {
+/// Moves `e` over `dt` s at `speed`: along its lane track, or straight along its heading.
+fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
+    let distance = speed * dt;
     match e.track.take() {
         Some(mut track) => {
-            let route = e.route.as_ref();
-            let prefer = |c: &[LaneHandle], n: &RoadNetwork| on_route(c, n, route);
+            if let Some(follow) = &mut e.route_follow {
+                let lateral_free = e.lateral_action.is_none();
+                let at = (e.odometer, speed, dt);
+                follow_route(net, follow, &mut track, lateral_free, at);
+            }
             let signed = if distance >= 0.0 {
                 distance
             } else {
@@ -76,7 +82,12 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, distance: Real) {
                 .map_or(0.0, |(_, _, x)| x);
             let x = (0.5 * (e.lateral_slope + end_share)).clamp(-1.0, 1.0);
             let along = signed * (1.0 - x * x).sqrt();
-            let left = advance(net, &mut track, along * road_scale, &prefer);
+            let left = match &mut e.route_follow {
+                Some(follow) => advance(net, &mut track, along * road_scale, &mut |road, c| {
+                    follow.choose(net, road, c)
+                }),
+                None => advance(net, &mut track, along * road_scale, &mut |_, _| None),
+            };
             if distance < 0.0 {
                 track.direction = track.direction.reverse();
             }
@@ -110,17 +121,47 @@ fn along_scale(road: &Road, s: Real, t: Real) -> Real {
     }
 }
 
-/// The successor on the assigned route, if one of `candidates` lies on it.
-fn on_route(
-    candidates: &[LaneHandle],
+/// The route's part of a step, before the move: finds the entity on its route, steps the lane
+/// change the route needs or starts it. `(odometer, speed, dt)`: the odometer reading and the
+/// step's speed and length. A lateral action owns the lateral domain (§7.5.1): while
+/// `lateral_free` is false the route's lane change gives way.
+fn follow_route(
     net: &RoadNetwork,
-    route: Option<&Route>,
-) -> Option<LaneHandle> {
-    let route = route?;
-    candidates.iter().copied().find(|h| {
-        let id = &net.handle_road(*h).id;
-        route.stretches().iter().any(|st| &st.road_id == id)
-    })
+    follow: &mut RouteFollow,
+    track: &mut LaneTrack,
+    lateral_free: bool,
+    (odometer, speed, dt): (Real, Real, Real),
+) {
+    let distance = speed * dt;
+    follow.sync(track);
+    if !lateral_free {
+        follow.change = None;
+        return;
+    }
+    if let Some(change) = follow.change {
+        if !lane_change::step(&change, track, odometer, distance) {
+            follow.change = None;
+        }
+        return;
+    }
+    if track.blend.is_some() || distance == 0.0 {
+        return;
+    }
+    let Some(lane) = follow.needed_lane(net, track) else {
+        return;
+    };
+    let room = net
+        .road(&track.road_id)
+        .map_or(0.0, |r| match track.direction {
+            Direction::Forward => r.length - track.s,
+            Direction::Backward => track.s,
+        });
+    follow.change = lane_change::begin(net, track, lane, speed, odometer, room);
+    if let Some(change) = follow.change {
+        if !lane_change::step(&change, track, odometer, distance) {
+            follow.change = None;
+        }
+    }
 }
 
 /// Lateral position t of a track at its s, the slope dt/ds of the path it follows there (the

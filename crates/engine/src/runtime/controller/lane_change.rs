@@ -1,0 +1,111 @@
+//! The lane change a route needs (OpenSCENARIO 1.3 §7.5 "Routes": the default controller
+//! follows the assigned route; how it changes lanes is not given by the standard).
+//!
+//! Dynamics: the `cubic` transition shape of OpenSCENARIO 1.3 (XSD `DynamicsShape`; zero
+//! lateral speed at both ends) along the lane, over the distance that keeps the peak lateral
+//! acceleration at [`MAX_LATERAL_ACCELERATION`]. For a cubic y = Δ·(3u² − 2u³), u = x/D, at
+//! speed v the lateral acceleration is v²·y″(x) = Δ·v²·(6 − 12u)/D², largest at the ends:
+//! 6·Δ·v²/D². So D = v·√(6·Δ/a), a duration of √(6·Δ/a) whatever the speed: 4.58 s for a
+//! 3.5 m lane. The change starts as soon as the route needs it and ends, at the latest, where
+//! the road does (shorter, and so sharper, when less road is left).
+//!
+//! The lateral position is the blend of the two lanes' centres that LaneChangeAction uses
+//! ([`Blend`]), so lane width changes along the way are followed.
+
+use opendrive::{Real, RoadNetwork};
+use scenario::DynamicsShape;
+
+use crate::runtime::entity::{Blend, LaneTrack};
+use crate::runtime::lanes::lane_at;
+use crate::runtime::shapes::shape_value;
+
+/// Largest lateral acceleration of a route's lane change (m/s²): the limit UN Regulation
+/// No. 79 sets for the lane change manoeuvre of an automatically commanded steering function
+/// of category C (paragraph 5.6.4 and its lane change test in Annex 8: lateral acceleration
+/// not above 1 m/s², the manoeuvre done within 5 s for an M1 car; 4.58 s here for 3.5 m).
+pub const MAX_LATERAL_ACCELERATION: Real = 1.0;
+
+/// A lane change in progress: from the odometer reading where it started, over `length` m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RouteLaneChange {
+    start_odometer: Real,
+    length: Real,
+}
+
+/// The distance (m) of a lane change moving `delta` m sideways at `speed` m/s (module doc).
+pub fn change_length(delta: Real, speed: Real) -> Real {
+    speed.abs() * (6.0 * delta.abs() / MAX_LATERAL_ACCELERATION).sqrt()
+}
+
+/// Starts moving `track` into lane `lane` (keeping its offset from the lane centre) over the
+/// distance [`change_length`] gives, at most `room` m. `None` when the change is done at once
+/// (no room left): the track is then already in the new lane.
+pub(crate) fn begin(
+    net: &RoadNetwork,
+    track: &mut LaneTrack,
+    lane: i32,
+    speed: Real,
+    odometer: Real,
+    room: Real,
+) -> Option<RouteLaneChange> {
+    let road = net.road(&track.road_id)?;
+    let target = road.lane_span(lane, track.s).ok()?.center() + track.offset;
+    let (from_lane, from_offset) =
+        lane_at(road, track.s, track.t).unwrap_or((track.lane_id, track.offset));
+    let length = change_length(target - track.t, speed).min(room.max(0.0));
+    track.lane_id = lane;
+    if length <= opendrive::LENGTH_EPSILON {
+        track.blend = None;
+        return None;
+    }
+    track.blend = Some(Blend {
+        from_lane,
+        from_offset,
+        weight: 0.0,
+        weight_per_m: 0.0,
+    });
+    Some(RouteLaneChange {
+        start_odometer: odometer,
+        length,
+    })
+}
+
+/// Sets the blend weight for the end of a step that will travel `distance` m; `false` once the
+/// change is complete (the blend is then removed).
+pub(crate) fn step(
+    change: &RouteLaneChange,
+    track: &mut LaneTrack,
+    odometer: Real,
+    distance: Real,
+) -> bool {
+    let p = (odometer + distance.abs() - change.start_odometer) / change.length;
+    if p >= 1.0 {
+        track.blend = None;
+        return false;
+    }
+    let (f, df_dp) = shape_value(DynamicsShape::Cubic, p);
+    match &mut track.blend {
+        Some(b) => {
+            b.weight = f;
+            b.weight_per_m = df_dp / change.length;
+            true
+        }
+        None => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn length_keeps_the_peak_lateral_acceleration() {
+        // 3.5 m at 10 m/s: D = 10·√(6·3.5/1) = 10·√21 = 45.8258 m; the peak lateral
+        // acceleration 6·Δ·v²/D² = 6·3.5·100/2100 = 1 m/s².
+        let d = change_length(3.5, 10.0);
+        assert!((d - 45.825_756_949_558_4).abs() < 1e-9, "{d}");
+        assert!((6.0 * 3.5 * 100.0 / (d * d) - MAX_LATERAL_ACCELERATION).abs() < 1e-12);
+        // Direction and sign of the move do not matter.
+        assert!((change_length(-3.5, -10.0) - d).abs() < 1e-12);
+    }
+}

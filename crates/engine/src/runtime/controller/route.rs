@@ -1,0 +1,217 @@
+//! Following a planned route (OpenSCENARIO 1.3 §7.5 "Routes", §7.7.2.6 "RoutingAction": the
+//! default controller of an entity with an assigned route follows it): which stretch of the
+//! [`PlannedRoute`] the entity drives, which successor to take where its road ends (the
+//! connecting road of a junction the route names), and which lane the route needs when the
+//! entity's lane does not lead on to the route's next road.
+//!
+//! The route is followed by road: at a road's end the entity takes the successor on the
+//! route's next road, in the planned lane if its lane links lead there, else in any lane of
+//! that road. It changes lanes only where its own lane does not lead to the next road (a turn
+//! reached from another lane); the planner's lane choices elsewhere are not imposed, so a
+//! LaneChangeAction of the scenario is not undone. The standard leaves this open; it is also
+//! how esmini 3.6.0 follows routes (road by road, its `Route::minimal_waypoints_`).
+//!
+//! A closed route wraps: after its last stretch, which ends at the first waypoint, the first
+//! stretch follows again. An open route ends at its last waypoint; from there on the entity
+//! takes successors as without a route.
+
+use opendrive::{Direction, LaneHandle, Real, RoadNetwork, RouteSegment, S_TOLERANCE};
+
+use crate::routing::PlannedRoute;
+use crate::runtime::entity::LaneTrack;
+
+use super::lane_change::RouteLaneChange;
+
+/// The route the default controller follows and the entity's progress along it.
+#[derive(Debug, Clone)]
+pub struct RouteFollow {
+    plan: PlannedRoute,
+    /// Index of the stretch the entity drives, or reaches next on its road.
+    cursor: usize,
+    /// An open route driven to its end: no longer followed.
+    ended: bool,
+    /// The lane change the route needs, while it runs.
+    pub(crate) change: Option<RouteLaneChange>,
+}
+
+/// Whether `s` has not yet passed the end of `seg` travelling in its direction.
+fn not_past_end(seg: &RouteSegment, s: Real) -> bool {
+    match seg.direction {
+        Direction::Forward => s <= seg.s_end + S_TOLERANCE,
+        Direction::Backward => s >= seg.s_end - S_TOLERANCE,
+    }
+}
+
+/// Whether `b` continues `a` on the same road without a road end between them (a lane change,
+/// or a waypoint between them).
+fn continues(a: &RouteSegment, b: &RouteSegment) -> bool {
+    a.road_id == b.road_id
+        && a.direction == b.direction
+        && (a.s_end - b.s_start).abs() <= S_TOLERANCE
+}
+
+impl RouteFollow {
+    /// Starts following `plan` from its first stretch (the first move finds the entity on it).
+    pub fn new(plan: PlannedRoute) -> Self {
+        Self {
+            plan,
+            cursor: 0,
+            ended: false,
+            change: None,
+        }
+    }
+
+    /// The planned route.
+    pub fn plan(&self) -> &PlannedRoute {
+        &self.plan
+    }
+
+    /// The stretch the entity drives now (or reaches next on its road); `None` once an open
+    /// route has been driven to its end.
+    pub fn current(&self) -> Option<&RouteSegment> {
+        if self.ended {
+            return None;
+        }
+        self.plan.segments.get(self.cursor)
+    }
+
+    /// The stretch after `i`, wrapping round a closed route; `None` after an open route's end.
+    fn next_index(&self, i: usize) -> Option<usize> {
+        let n = self.plan.segments.len();
+        if i + 1 < n {
+            Some(i + 1)
+        } else if self.plan.closed && n > 0 {
+            Some(0)
+        } else {
+            None
+        }
+    }
+
+    /// The first stretch after the current one that starts on a road end (another road, or the
+    /// same road entered again): the one the successor at the current road's end must match.
+    fn next_entry(&self) -> Option<usize> {
+        let segs = &self.plan.segments;
+        let mut prev = self.cursor;
+        for _ in 0..segs.len() {
+            let i = self.next_index(prev)?;
+            if !continues(&segs[prev], &segs[i]) {
+                return Some(i);
+            }
+            prev = i;
+        }
+        None
+    }
+
+    /// Brings the cursor to where `track` is: on the current stretch, moved on to a stretch
+    /// continuing it once its end is passed, or (after a teleport or a detour) the first
+    /// stretch from the cursor on (round a closed route, ahead along an open one) that lies on
+    /// the track's road, in its direction, not yet passed. Off the route the cursor stays. Passing the end of an open route's last stretch
+    /// ends the route.
+    pub(crate) fn sync(&mut self, track: &LaneTrack) {
+        let segs = &self.plan.segments;
+        let n = segs.len();
+        if self.ended {
+            return;
+        }
+        let on = |seg: &RouteSegment| {
+            seg.road_id == track.road_id
+                && seg.direction == track.direction
+                && not_past_end(seg, track.s)
+        };
+        if self.cursor < n && segs[self.cursor].road_id == track.road_id {
+            // Passed the current stretch's end: on to the stretches continuing it.
+            for _ in 0..n {
+                let seg = &segs[self.cursor];
+                let passed = match seg.direction {
+                    Direction::Forward => track.s >= seg.s_end - S_TOLERANCE,
+                    Direction::Backward => track.s <= seg.s_end + S_TOLERANCE,
+                };
+                match self.next_index(self.cursor) {
+                    Some(i) if passed && continues(seg, &segs[i]) => self.cursor = i,
+                    None if passed => {
+                        self.ended = true;
+                        return;
+                    }
+                    _ => break,
+                }
+            }
+            if on(&segs[self.cursor]) {
+                return;
+            }
+        }
+        // Round a closed route from the cursor; along an open one, only ahead of it.
+        let ahead = if self.plan.closed { n } else { n - self.cursor };
+        if let Some(i) = (0..ahead)
+            .map(|k| (self.cursor + k) % n)
+            .find(|&i| on(&segs[i]))
+        {
+            self.cursor = i;
+        }
+    }
+
+    /// Where the track's road ends: the successor of `candidates` on the route's next road
+    /// (in the planned lane if it is one of them); `None` when none is on it or the route has
+    /// ended, which leaves the choice to the caller. Moves the cursor onto the chosen stretch.
+    pub(crate) fn choose(
+        &mut self,
+        net: &RoadNetwork,
+        from_road: &str,
+        candidates: &[LaneHandle],
+    ) -> Option<LaneHandle> {
+        let current = self.current()?;
+        if current.road_id != from_road {
+            return None;
+        }
+        let Some(j) = self.next_entry() else {
+            // Leaving the road of an open route's last stretch: the route is done.
+            self.ended = true;
+            return None;
+        };
+        let next = &self.plan.segments[j];
+        let on_road = |h: &&LaneHandle| net.handle_road(**h).id == next.road_id;
+        let pick = candidates
+            .iter()
+            .filter(on_road)
+            .find(|h| h.lane == next.lane_id)
+            .or_else(|| candidates.iter().find(on_road))
+            .copied()?;
+        self.cursor = j;
+        Some(pick)
+    }
+
+    /// The lane the entity must change to on its current road: the planned lane at this road's
+    /// end, when the track's own lane does not lead to the route's next road from there.
+    /// `None` when its lane leads on, when the route ends on this road, or when the entity is
+    /// off the route.
+    pub(crate) fn needed_lane(&self, net: &RoadNetwork, track: &LaneTrack) -> Option<i32> {
+        let current = self.current()?;
+        if current.road_id != track.road_id || current.direction != track.direction {
+            return None;
+        }
+        let j = self.next_entry()?;
+        let next = &self.plan.segments[j];
+        let road = net.road(&track.road_id)?;
+        let end = match track.direction {
+            Direction::Forward => road.length,
+            Direction::Backward => 0.0,
+        };
+        let leads_on = net
+            .lane_handle(&track.road_id, track.lane_id, end)
+            .is_some_and(|h| {
+                net.successors(h)
+                    .iter()
+                    .any(|n| net.handle_road(*n).id == next.road_id)
+            });
+        if leads_on {
+            return None;
+        }
+        // The stretch before the next entry is the planned one at this road's end.
+        let n = self.plan.segments.len();
+        let exit = &self.plan.segments[(j + n - 1) % n];
+        let wanted = exit.lane_id;
+        (exit.road_id == track.road_id
+            && wanted != track.lane_id
+            && road.lane_span(wanted, track.s).is_ok())
+        .then_some(wanted)
+    }
+}
