@@ -1,0 +1,65 @@
+//! LaneChangeAction and LaneOffsetAction (OpenSCENARIO 1.3 §7.7.2.2 "LateralAction", with the
+//! TransitionDynamics of §7.7.2: shapes and dimensions) against hand computations.
+//!
+//! The road is esmini's straight_500m.xodr along +x: lane −1's centre at t = −1.535, lane 1's
+//! at t = +1.535 (3.07 m wide lanes), so on it s = x and t = y.
+
+mod runtime_support;
+
+use approx::assert_abs_diff_eq;
+use runtime_support::run;
+
+/// Tolerance for positions that the runtime computes exactly up to rounding.
+const EXACT: f64 = 1e-9;
+
+/// The cubic shape of §7.7.2: f(u) = 3u² − 2u³.
+fn cubic(u: f64) -> f64 {
+    3.0 * u * u - 2.0 * u * u * u
+}
+
+/// lateral_distance_cubic.xosc: a cubic lane change of Δ = 3.5 m (lane −1's centre, t = −1.535,
+/// to 0.43 m left of lane 1's centre, t = 1.965) over D = 50 m, at 10 m/s, starting at 1.0 s
+/// where s = 20 + 10·1 = 30 m.
+///
+/// `dynamicsDimension="distance"` is the distance along the road (the brief of §7.7.2's
+/// DynamicsDimension: the transition is spread over a distance; for a lane change the lateral
+/// position is a function of the longitudinal one, as in esmini's LatLaneChangeAction, which
+/// advances the shape by the longitudinal part of each step). On a straight road the distance
+/// along the road is s − 30, so at every frame t = −1.535 + 3.5·f((s − 30)/50); half-way,
+/// at s = 55, f(½) = ¾ − ¼ = ½ and t = −1.535 + 1.75 = 0.215. The path is longer than 50 m:
+/// ∫√(1 + t′²) ds = 50·(1 + (3.5/50)²·⟨f′²⟩/2) ≈ 50.147 m with ⟨f′²⟩ = 36/30 = 1.2, so
+/// measuring the path instead would put t 3.5·1.5·0.0735/50 ≈ 7.7 mm ahead at half-way.
+#[test]
+fn lane_change_over_a_distance_follows_the_cubic_of_the_distance_along_the_road() {
+    let (_, frames, _) = run("lateral_distance_cubic.xosc");
+    let (s0, t0, delta, d) = (30.0, -1.535, 3.5, 50.0);
+    let mut checked = 0;
+    let mut half = None;
+    let mut previous: Option<(f64, f64)> = None;
+    for row in frames.0.iter().filter(|r| r.name == "Ego" && r.time >= 1.0) {
+        let (_, _, s, t, _) = row.road.clone().unwrap_or_default();
+        let u = (s - s0) / d;
+        if u >= 1.0 {
+            // Done: 0.43 m left of lane 1's centre.
+            assert_abs_diff_eq!(t, 1.965, epsilon = EXACT);
+            continue;
+        }
+        assert_abs_diff_eq!(t, t0 + delta * cubic(u), epsilon = EXACT);
+        checked += 1;
+        if let Some((s_prev, t_prev)) = previous {
+            if s_prev <= s0 + 25.0 && s > s0 + 25.0 {
+                // Linear interpolation between the two frames around s = 55 m, off by at
+                // most h²/8·|t″| with h = 0.5 m and t″ = 3.5·(6 − 12u)/50² ≤ 8.4·10⁻⁵ /m
+                // within a step of u = ½: 2.6·10⁻⁶ m.
+                half = Some(t_prev + (t - t_prev) * (s0 + 25.0 - s_prev) / (s - s_prev));
+            }
+        }
+        previous = Some((s, t));
+    }
+    assert!(
+        checked > 90,
+        "the change takes some 100 steps of 0.5 m: {checked}"
+    );
+    let half = half.unwrap_or(f64::NAN);
+    assert_abs_diff_eq!(half - t0, 1.75, epsilon = 3e-6);
+}
