@@ -15,9 +15,8 @@
 mod runtime_support;
 
 use approx::assert_abs_diff_eq;
-use engine::storyboard::Transition;
-use engine::{Engine, EngineConfig, EventRecord};
-use runtime_support::{corpus, file, Recorder};
+use engine::{EngineConfig, EventRecord};
+use runtime_support::{corpus, end_time, file, run_with, Recorder};
 
 /// Tolerance for speeds that are a few f64 operations from the closed form.
 const EXACT: f64 = 1e-9;
@@ -25,40 +24,22 @@ const EXACT: f64 = 1e-9;
 const DT: f64 = 0.05;
 
 /// Runs speed_profile_modes.xosc with T2 and T3 set.
-fn run_modes(t2: f64, t3: f64) -> (Recorder, Vec<EventRecord>) {
-    let params = [
-        ("T2".to_owned(), t2.to_string()),
-        ("T3".to_owned(), t3.to_string()),
-    ];
+fn run_modes(t2: &str, t3: &str) -> (Recorder, Vec<EventRecord>) {
     let path = file("speed_profile_modes.xosc");
-    let mut engine = Engine::load(&path, &params, EngineConfig::default())
-        .unwrap_or_else(|e| panic!("speed_profile_modes.xosc does not load: {e}"));
-    let mut frames = Recorder::default();
-    let mut events = Vec::new();
-    engine
-        .run(&mut frames, &mut events)
-        .unwrap_or_else(|e| panic!("speed_profile_modes.xosc fails: {e}"));
+    let (_, frames, events) = run_with(&path, &[("T2", t2), ("T3", t3)], EngineConfig::default());
     (frames, events)
 }
 
-/// Time of the end transition of action `name`.
-fn end_time(events: &[EventRecord], name: &str) -> f64 {
-    events
-        .iter()
-        .find_map(|e| match e {
-            EventRecord::Transition(r) if r.name == name && r.transition == Transition::End => {
-                Some(r.time)
-            }
-            _ => None,
-        })
-        .unwrap_or_else(|| panic!("{name} never ends"))
+/// Time of the step in which action `name` ends.
+fn end_step(events: &[EventRecord], name: &str) -> f64 {
+    end_time(events, name).unwrap_or_else(|| panic!("{name} never ends"))
 }
 
 /// `position`: vertices (1, 0), (5, 8), (9, 4), (12, 10) joined by straight lines, whatever the
 /// constraints: v = 2(t − 1) up to 5 s, 8 − (t − 5) up to 9 s, 4 + 2(t − 9) up to 12 s.
 #[test]
 fn position_mode_reaches_each_entry_at_its_time() {
-    let (frames, events) = run_modes(4.0, 3.0);
+    let (frames, events) = run_modes("4", "3");
     for (t, v) in [
         (1.0, 0.0),
         (3.0, 4.0),
@@ -72,7 +53,7 @@ fn position_mode_reaches_each_entry_at_its_time() {
         assert_abs_diff_eq!(frames.at("Position", t).speed, v, epsilon = EXACT);
     }
     // The last entry is reached at 12 s: the action ends in the step that ends there.
-    assert_abs_diff_eq!(end_time(&events, "PositionProfile"), 12.0, epsilon = EXACT);
+    assert_abs_diff_eq!(end_step(&events, "PositionProfile"), 12.0, epsilon = EXACT);
 }
 
 /// `follow` on the same profile. The lines of the segments are L0: v = 2t − 2, L1: v = 13 − t,
@@ -91,7 +72,7 @@ fn position_mode_reaches_each_entry_at_its_time() {
 ///   v(12) = 9.5 + 2·0.25 − ½·4·0.25² = 9.875, and 10 from 12.25 s, where the action ends.
 #[test]
 fn follow_mode_rounds_each_corner_with_a_jerk_ramp() {
-    let (frames, events) = run_modes(4.0, 3.0);
+    let (frames, events) = run_modes("4", "3");
     for (t, v) in [
         (1.0, 0.0),
         (1.5, 0.25),
@@ -110,7 +91,7 @@ fn follow_mode_rounds_each_corner_with_a_jerk_ramp() {
     ] {
         assert_abs_diff_eq!(frames.at("Follow", t).speed, v, epsilon = EXACT);
     }
-    assert_abs_diff_eq!(end_time(&events, "FollowProfile"), 12.25, epsilon = EXACT);
+    assert_abs_diff_eq!(end_step(&events, "FollowProfile"), 12.25, epsilon = EXACT);
 }
 
 /// `follow` keeps within the constraints: per step, the mean acceleration stays within
@@ -119,7 +100,7 @@ fn follow_mode_rounds_each_corner_with_a_jerk_ramp() {
 /// at 0.
 #[test]
 fn follow_mode_stays_within_the_dynamic_constraints() {
-    let (frames, _) = run_modes(4.0, 3.0);
+    let (frames, _) = run_modes("4", "3");
     let speeds: Vec<f64> = frames
         .0
         .iter()
@@ -155,7 +136,7 @@ fn follow_mode_stays_within_the_dynamic_constraints() {
 ///   from 9 s, where the action ends.
 #[test]
 fn follow_mode_lands_on_the_last_speed_when_corners_crowd() {
-    let (frames, events) = run_modes(2.0, 1.5);
+    let (frames, events) = run_modes("2", "1.5");
     let at = |t: f64| frames.at("Follow", t).speed;
     // The frames are every 0.05 s; 8.875 s is not one, so check the ramp at 8.85 and 8.9.
     assert_abs_diff_eq!(at(5.25), 6.5 + 2.0 * 0.5 - 2.0 * 0.25, epsilon = EXACT);
@@ -164,7 +145,7 @@ fn follow_mode_lands_on_the_last_speed_when_corners_crowd() {
     assert_abs_diff_eq!(at(8.85), 9.5 + 0.4 - 8.0 * 0.01, epsilon = EXACT);
     assert_abs_diff_eq!(at(8.9), 9.5 + 0.6 - 8.0 * 0.0225, epsilon = EXACT);
     assert_abs_diff_eq!(at(9.0), 10.0, epsilon = EXACT);
-    assert_abs_diff_eq!(end_time(&events, "FollowProfile"), 9.0, epsilon = EXACT);
+    assert_abs_diff_eq!(end_step(&events, "FollowProfile"), 9.0, epsilon = EXACT);
     // Position mode meets every vertex on time: (5, 8), (7, 4), (8.5, 10).
     let pos = |t: f64| frames.at("Position", t).speed;
     assert_abs_diff_eq!(pos(5.0), 8.0, epsilon = EXACT);
@@ -178,13 +159,7 @@ fn follow_mode_lands_on_the_last_speed_when_corners_crowd() {
 #[test]
 fn speed_profile_corpus_speeds_match_the_esmini_reference() {
     let path = corpus("esmini/xosc/speed-profile.xosc");
-    let mut engine = Engine::load(&path, &[], EngineConfig::default())
-        .unwrap_or_else(|e| panic!("speed-profile.xosc does not load: {e}"));
-    let mut frames = Recorder::default();
-    let mut events = Vec::new();
-    engine
-        .run(&mut frames, &mut events)
-        .unwrap_or_else(|e| panic!("speed-profile.xosc fails: {e}"));
+    let (_, frames, _) = run_with(&path, &[], EngineConfig::default());
     let reference = std::fs::read_to_string(corpus("reference/esmini/speed-profile.csv"))
         .unwrap_or_else(|e| panic!("reference/esmini/speed-profile.csv: {e}"));
     let mut compared = 0;

@@ -96,3 +96,15 @@ pub fn run_with(
         .unwrap_or_else(|e| panic!("{name} fails: {e}"));
     (engine, frames, events)
 }
+
+/// Time of the step in which storyboard element `name` ended (its end transition), if it did.
+pub fn end_time(events: &[EventRecord], name: &str) -> Option<f64> {
+    events.iter().find_map(|e| match e {
+        EventRecord::Transition(r)
+            if r.name == name && r.transition == engine::storyboard::Transition::End =>
+        {
+            Some(r.time)
+        }
+        _ => None,
+    })
+}

@@ -3,16 +3,19 @@
 //! a factor, under a transition shape (see `shapes`). With `continuous="true"` a relative
 //! target keeps being followed after the transition, so the action never ends by itself.
 //!
-//! A `distance` dimension is turned into the time a linear change covers that distance in,
-//! T = 2·d / (v₀ + v₁), so that a change starting from rest still progresses (a change linear
-//! in distance would never leave v = 0); the shape then runs over T.
+//! A `distance` dimension is turned into the time in which the change covers that distance,
+//! T = 2·d / |v₀ + v₁| (see `distance_to_time`, also for a change of direction), so that a
+//! change starting from rest still progresses (a change linear in distance would never leave
+//! v = 0); the shape then runs over T.
 //!
 //! A vehicle's Performance bounds the change: a transition whose peak rate would exceed
 //! maxAcceleration (maxDeceleration) is stretched in time to meet it, keeping its shape, as
-//! esmini does; the change per step is also clamped to the limits and to maxSpeed.
+//! esmini does; the change per step is also clamped to the limits, and the speed to ±maxSpeed.
+//! A TransitionDynamics with followingMode `position` ignores these Performance limits.
 
 use scenario::{
-    DynamicsDimension, SourcePos, SpeedTarget, SpeedTargetValueType, TransitionDynamics,
+    DynamicsDimension, FollowingMode, Performance, SourcePos, SpeedTarget, SpeedTargetValueType,
+    TransitionDynamics,
 };
 
 use super::Part;
@@ -25,6 +28,8 @@ use crate::storyboard::ActionStatus;
 /// A running SpeedAction on one actor.
 #[derive(Debug, Clone)]
 pub(crate) struct SpeedState {
+    /// The vehicle's Performance when it bounds the change (see `bounded_by_performance`).
+    performance: Option<Performance>,
     dynamics: TransitionDynamics,
     target: Target,
     start_speed: f64,
@@ -115,16 +120,14 @@ pub(crate) fn start(
     let v1 = target.speed(world);
     let mut span = span(dynamics, v1 - v0);
     if let (DynamicsDimension::Distance, Span::Distance(d)) = (dynamics.dynamics_dimension, span) {
-        let mean = 0.5 * (v0 + v1).abs();
-        span = if mean > 1e-9 {
-            Span::Time(d / mean)
-        } else {
-            Span::Instant
-        };
+        span = distance_to_time(d, v0, v1);
     }
     // The vehicle's acceleration limit stretches the transition so that the shape's peak rate,
     // max f′·|Δv|/T, stays within it (the shape is kept, only slower).
-    if let (Span::Time(t), Some(perf)) = (span, world.entity(actor).performance) {
+    let performance = bounded_by_performance(dynamics)
+        .then_some(world.entity(actor).performance)
+        .flatten();
+    if let (Span::Time(t), Some(perf)) = (span, performance) {
         let limit = if v1 >= v0 {
             perf.max_acceleration
         } else {
@@ -137,6 +140,7 @@ pub(crate) fn start(
         }
     }
     let mut state = SpeedState {
+        performance,
         dynamics: *dynamics,
         target,
         start_speed: v0,
@@ -152,6 +156,43 @@ pub(crate) fn start(
         state.start_speed = v1;
     }
     Ok(Part::Speed(state))
+}
+
+/// True unless the transition's followingMode is `position`, which follows the shape "exactly by
+/// ignoring the dynamic constraints of the entity" (OpenSCENARIO 1.3 `FollowingMode`); `follow`
+/// observes them, and without a followingMode (as before 1.2) oscsim observes them too, as
+/// esmini does.
+fn bounded_by_performance(dynamics: &TransitionDynamics) -> bool {
+    dynamics.following_mode != Some(FollowingMode::Position)
+}
+
+/// The duration of a change from `v0` to `v1` that travels the path length `d`, for the speed
+/// shape run over time: T = 2·d / |v0 + v1| when the direction is kept (every shape covers
+/// (v0 + v1)·T/2, since f(p) + f(1 − p) = 1). When the speed changes sign the path runs out to
+/// the stop and back, |v0|·T₀/2 + |v1|·T₁/2 with T₀/T₁ = |v0|/|v1| for the linear shape, so
+/// T = 2·d·(|v0| + |v1|) / (v0² + v1²).
+fn distance_to_time(d: f64, v0: f64, v1: f64) -> Span {
+    let time = if v0 * v1 < 0.0 {
+        2.0 * d * (v0.abs() + v1.abs()) / (v0 * v0 + v1 * v1)
+    } else {
+        let mean = 0.5 * (v0 + v1).abs();
+        if mean > 1e-9 {
+            d / mean
+        } else {
+            0.0
+        }
+    };
+    if time.is_finite() && time > 0.0 {
+        Span::Time(time)
+    } else {
+        Span::Instant
+    }
+}
+
+/// `v` limited to [`lo`, `hi`]; unlike `f64::clamp` it never panics (a NaN limit from a
+/// malformed Performance leaves that side open).
+fn within(v: f64, lo: f64, hi: f64) -> f64 {
+    v.max(lo).min(hi)
 }
 
 impl SpeedState {
@@ -183,17 +224,18 @@ pub(crate) fn step(
     let e = world.entity_mut(actor);
     // The vehicle's performance bounds the change per step (semantics-pitfalls #9); a step
     // shape (Span::Instant) is an ideal jump and is not limited.
-    let bounded = match (s.span, e.performance) {
+    let bounded = match (s.span, s.performance) {
         (Span::Instant, _) | (_, None) => v,
-        (_, Some(perf)) => v.clamp(
+        (_, Some(perf)) => within(
+            v,
             e.speed - perf.max_deceleration.abs() * dt,
             e.speed + perf.max_acceleration.abs() * dt,
         ),
     };
     s.limited = (bounded - v).abs() > 1e-9;
-    let v = bounded;
-    e.speed = v.min(e.max_speed());
-    let reached = (e.speed - v1.min(e.max_speed())).abs() <= 1e-9;
+    let max_speed = s.performance.map_or(f64::INFINITY, |p| p.max_speed.abs());
+    e.speed = within(bounded, -max_speed, max_speed);
+    let reached = (e.speed - within(v1, -max_speed, max_speed)).abs() <= 1e-9;
     if p >= 1.0 && reached && !s.target.continuous() {
         ActionStatus::Ended
     } else {
