@@ -52,8 +52,9 @@ fn position_mode_reaches_each_entry_at_its_time() {
     ] {
         assert_abs_diff_eq!(frames.at("Position", t).speed, v, epsilon = EXACT);
     }
-    // The last entry is reached at 12 s: the action ends in the step that ends there.
-    assert_abs_diff_eq!(end_step(&events, "PositionProfile"), 12.0, epsilon = EXACT);
+    // The last entry is reached at 12 s: the action ends in the step 11.95 … 12 s whose motion
+    // completes it (esmini's log: 11.950 for Car2 of speed-profile.xosc).
+    assert_abs_diff_eq!(end_step(&events, "PositionProfile"), 11.95, epsilon = EXACT);
 }
 
 /// `follow` on the same profile. The lines of the segments are L0: v = 2t − 2, L1: v = 13 − t,
@@ -69,7 +70,8 @@ fn position_mode_reaches_each_entry_at_its_time() {
 /// - L1 meets L2 at 9 s; Δk = +3 at jerk 2 lasts 1.5 s, from 8.25 s (v = 4.75):
 ///   v(9) = 4.75 − 0.75 + ½·2·0.75² = 4.5625; on L2 from 9.75 s: v(11) = 8.
 /// - L2 meets v = 10 at 12 s; Δk = −2 at jerk 4 lasts 0.5 s, from 11.75 s (v = 9.5):
-///   v(12) = 9.5 + 2·0.25 − ½·4·0.25² = 9.875, and 10 from 12.25 s, where the action ends.
+///   v(12) = 9.5 + 2·0.25 − ½·4·0.25² = 9.875, and 10 from 12.25 s, where the action is
+///   complete.
 #[test]
 fn follow_mode_rounds_each_corner_with_a_jerk_ramp() {
     let (frames, events) = run_modes("4", "3");
@@ -91,7 +93,8 @@ fn follow_mode_rounds_each_corner_with_a_jerk_ramp() {
     ] {
         assert_abs_diff_eq!(frames.at("Follow", t).speed, v, epsilon = EXACT);
     }
-    assert_abs_diff_eq!(end_step(&events, "FollowProfile"), 12.25, epsilon = EXACT);
+    // Complete at 12.25 s: it ends in the step 12.2 … 12.25 s.
+    assert_abs_diff_eq!(end_step(&events, "FollowProfile"), 12.2, epsilon = EXACT);
 }
 
 /// `follow` keeps within the constraints: per step, the mean acceleration stays within
@@ -145,7 +148,7 @@ fn follow_mode_lands_on_the_last_speed_when_corners_crowd() {
     assert_abs_diff_eq!(at(8.85), 9.5 + 0.4 - 8.0 * 0.01, epsilon = EXACT);
     assert_abs_diff_eq!(at(8.9), 9.5 + 0.6 - 8.0 * 0.0225, epsilon = EXACT);
     assert_abs_diff_eq!(at(9.0), 10.0, epsilon = EXACT);
-    assert_abs_diff_eq!(end_step(&events, "FollowProfile"), 9.0, epsilon = EXACT);
+    assert_abs_diff_eq!(end_step(&events, "FollowProfile"), 8.95, epsilon = EXACT);
     // Position mode meets every vertex on time: (5, 8), (7, 4), (8.5, 10).
     let pos = |t: f64| frames.at("Position", t).speed;
     assert_abs_diff_eq!(pos(5.0), 8.0, epsilon = EXACT);
@@ -155,11 +158,22 @@ fn follow_mode_lands_on_the_last_speed_when_corners_crowd() {
 
 /// esmini's speed-profile.xosc (Car1 follow, Car2 position, the same four entries and
 /// DynamicConstraints) against esmini 3.6.0's run in reference/esmini/speed-profile.csv: the
-/// speeds agree at every reference row to within the CSV's rounding (3 decimals).
+/// speeds agree at every reference row to within the CSV's rounding (3 decimals), and each
+/// action ends in the step esmini's log (speed-profile.events.txt) gives.
 #[test]
 fn speed_profile_corpus_speeds_match_the_esmini_reference() {
     let path = corpus("esmini/xosc/speed-profile.xosc");
-    let (_, frames, _) = run_with(&path, &[], EngineConfig::default());
+    let (_, frames, events) = run_with(&path, &[], EngineConfig::default());
+    let log = std::fs::read_to_string(corpus("reference/esmini/speed-profile.events.txt"))
+        .unwrap_or_else(|e| panic!("reference/esmini/speed-profile.events.txt: {e}"));
+    for action in ["SpeedProfileAction1", "SpeedProfileAction2"] {
+        let esmini = log
+            .lines()
+            .find(|l| l.contains(&format!(" {action} ")) && l.contains("endTransition"))
+            .and_then(|l| l.split_whitespace().next()?.parse::<f64>().ok())
+            .unwrap_or_else(|| panic!("no end of {action} in esmini's log"));
+        assert_abs_diff_eq!(end_step(&events, action), esmini, epsilon = 1e-6);
+    }
     let reference = std::fs::read_to_string(corpus("reference/esmini/speed-profile.csv"))
         .unwrap_or_else(|e| panic!("reference/esmini/speed-profile.csv: {e}"));
     let mut compared = 0;

@@ -499,6 +499,7 @@ pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> Action
     for part in &slot.parts {
         let finishing = match part {
             Part::Speed(s) => s.completes_by(step_end),
+            Part::Profile(s) => s.completes_by(step_end),
             Part::Lateral(s) => s.completes_by(step_end),
             Part::Trajectory(s) => s.completes_by(step_end),
             Part::Light(s) => s.completes_by(step_end),
