@@ -100,6 +100,21 @@ fn closed_route_round_a_circle() {
     assert!((p.path_s_of("1", Some(-1), 5.0, 100.0).unwrap() - 295.0).abs() < TOL);
     assert!((p.path_s_of("1", Some(-1), 50.0, 0.0).unwrap() - 40.0).abs() < TOL);
     assert!(p.path_s_of("1", Some(1), 50.0, 0.0).is_none());
+    // The opendrive router is the same search (`RoadNetwork::route_by` with the cost of
+    // length): from s = 100 to s = 10, behind the start, it drives round the circle,
+    // 300 − 100 + 10 = 210 m, in two stretches (100 → 300, 0 → 10).
+    let lp = |s: f64| LanePosition {
+        road_id: "1".into(),
+        lane_id: -1,
+        s,
+        offset: 0.0,
+    };
+    let od = roads
+        .0
+        .route(&lp(100.0), &lp(10.0))
+        .expect("round the circle");
+    assert!((od.length - 210.0).abs() < TOL, "{}", od.length);
+    assert_eq!(od.segments.len(), 2);
 }
 
 #[test]

@@ -18,7 +18,8 @@
 //!   projection) and [`RoadNetwork::locate_on_road`], both giving a [`RoadPosition`].
 //! - Lane graph: [`RoadNetwork::lane_handle`], [`RoadNetwork::successors`],
 //!   [`RoadNetwork::predecessors`], [`RoadNetwork::driving_direction`], [`is_drivable`];
-//!   routes: [`RoadNetwork::route`] from one [`LanePosition`] to another → [`LaneRoute`].
+//!   routes: [`RoadNetwork::route`] from one [`LanePosition`] to another → [`LaneRoute`];
+//!   [`RoadNetwork::route_by`] under a caller's [`LaneCost`] → [`LanePath`].
 //! - Errors: [`Error`] with [`ErrorKind`], file and 1-based [`TextPos`].
 //! - Data: [`Road`] (`id`, `length`, `junction`, `rule`, `links`, `types`, `plan_view`,
 //!   `elevation`, `superelevation`, `lane_offsets`, `lane_sections`, `objects`, `signals`),
@@ -70,6 +71,6 @@ pub use model::{
 };
 pub use network::RoadNetwork;
 pub use query::{
-    Direction, LaneHandle, LanePosition, LaneRoute, LaneSpan, RoadPosition, RouteSegment,
-    LANE_CHANGE_COST,
+    Direction, LaneChange, LaneCost, LaneHandle, LanePath, LanePosition, LaneRoute, LaneSpan,
+    PathCost, RoadPosition, RouteSegment, LANE_CHANGE_COST,
 };

@@ -14,7 +14,9 @@
 //! [`UNLIMITED_ROAD_SPEED`]. A junction is entered when the path moves onto a road of a
 //! junction from a road that is not part of it.
 
-use opendrive::{LaneHandle, Real, RoadNetwork, LANE_CHANGE_COST};
+use std::cmp::Ordering;
+
+use opendrive::{LaneCost, LaneHandle, PathCost, Real, RoadNetwork, LANE_CHANGE_COST};
 use scenario::RouteStrategy;
 
 use super::random::lane_weight;
@@ -54,15 +56,15 @@ pub(crate) struct Cost {
     pub(crate) secondary: Real,
 }
 
-impl Cost {
-    pub(crate) fn plus(self, other: Cost) -> Cost {
+impl PathCost for Cost {
+    fn plus(self, other: Cost) -> Cost {
         Cost {
             primary: self.primary + other.primary,
             secondary: self.secondary + other.secondary,
         }
     }
 
-    pub(crate) fn total_cmp(&self, other: &Cost) -> std::cmp::Ordering {
+    fn total_cmp(&self, other: &Cost) -> Ordering {
         self.primary
             .total_cmp(&other.primary)
             .then_with(|| self.secondary.total_cmp(&other.secondary))
@@ -94,9 +96,14 @@ impl CostModel<'_> {
             self.default_speed
         }
     }
+}
+
+/// The moves of the lane-graph search (`opendrive::RoadNetwork::route_by`) under a strategy.
+impl LaneCost for CostModel<'_> {
+    type Cost = Cost;
 
     /// Driving `length` metres of lane `h`, entered at `s`.
-    pub(crate) fn along(&self, h: LaneHandle, s: Real, length: Real) -> Cost {
+    fn along(&self, h: LaneHandle, s: Real, length: Real) -> Cost {
         match self.strategy {
             RouteStrategy::Fastest => Cost {
                 primary: length / self.speed(h, s),
@@ -119,7 +126,7 @@ impl CostModel<'_> {
 
     /// One lane change on lane `h` at `s`: driving `LANE_CHANGE_COST` metres more, unweighted
     /// under `random` (the weights choose among roads, not lane changes).
-    pub(crate) fn lane_change(&self, h: LaneHandle, s: Real) -> Cost {
+    fn lane_change(&self, h: LaneHandle, s: Real) -> Cost {
         match self.strategy {
             RouteStrategy::Random => Cost {
                 primary: LANE_CHANGE_COST,
@@ -130,7 +137,7 @@ impl CostModel<'_> {
     }
 
     /// Moving from lane `from` onto lane `to` (next section, next road, through a junction).
-    pub(crate) fn enter(&self, from: LaneHandle, to: LaneHandle) -> Cost {
+    fn enter(&self, from: LaneHandle, to: LaneHandle) -> Cost {
         let entered = self.strategy == RouteStrategy::LeastIntersections
             && enters_junction(self.network, from, to);
         Cost {

@@ -8,9 +8,8 @@
 //! | module | implements |
 //! | --- | --- |
 //! | `error` | `RoutingError`, `RoutingErrorKind` |
-//! | `cost` | the cost of driving a lane stretch, changing lanes and entering a junction per RouteStrategy |
+//! | `cost` | the cost of driving a lane stretch, changing lanes and entering a junction per RouteStrategy, for the lane-graph search `opendrive::RoadNetwork::route_by` |
 //! | `random` | the seeded, order-independent lane weights of routeStrategy `random` |
-//! | `search` | Dijkstra's algorithm over the lane graph with a strategy's cost |
 //! | `planned` | `PlannedRoute`: stretches, lane changes, waypoints' path s, look-ups by path s |
 //! | `plan` | `plan_route` (Route with waypoints, closed routes) and `plan_between` (AcquirePositionAction) |
 
@@ -19,9 +18,9 @@ mod error;
 mod plan;
 mod planned;
 mod random;
-mod search;
 
 pub use cost::{RoutingOptions, DEFAULT_SPEED, UNLIMITED_ROAD_SPEED};
 pub use error::{RoutingError, RoutingErrorKind};
+pub use opendrive::LaneChange;
 pub use plan::{plan_between, plan_route};
-pub use planned::{LaneChange, PlannedRoute, RoutedWaypoint};
+pub use planned::{PlannedRoute, RoutedWaypoint};

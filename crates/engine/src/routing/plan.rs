@@ -12,7 +12,6 @@ use scenario::{Route, RouteStrategy, SourcePos};
 
 use super::cost::{enters_junction_by_id, CostModel, RoutingOptions};
 use super::random::leg_key;
-use super::search::search;
 use super::{LaneChange, PlannedRoute, RoutedWaypoint, RoutingError, RoutingErrorKind};
 use crate::domain;
 use crate::position::{resolve, EntityQuery};
@@ -139,25 +138,24 @@ fn plan_legs(
             default_speed: options.default_speed,
         };
         let (from, to) = (&stops[a], &stops[b]);
-        let path = search(&model, &from.lane, &to.lane).ok_or_else(|| {
-            RoutingError::new(
-                RoutingErrorKind::NotConnected {
-                    route: name.to_string(),
-                    from: a + 1,
-                    from_at: describe(&from.lane),
-                    to: b + 1,
-                    to_at: describe(&to.lane),
-                },
-                &to.pos,
-            )
-        })?;
+        let path = network
+            .route_by(&model, &from.lane, &to.lane)
+            .ok_or_else(|| {
+                RoutingError::new(
+                    RoutingErrorKind::NotConnected {
+                        route: name.to_string(),
+                        from: a + 1,
+                        from_at: describe(&from.lane),
+                        to: b + 1,
+                        to_at: describe(&to.lane),
+                    },
+                    &to.pos,
+                )
+            })?;
         for c in path.lane_changes {
             lane_changes.push(LaneChange {
                 path_s: path_s + c.path_s,
-                road_id: c.road_id,
-                s: c.s,
-                from_lane: c.from_lane,
-                to_lane: c.to_lane,
+                ..c
             });
         }
         for seg in path.segments {

@@ -4,7 +4,7 @@
 //! s-axis (path s, from the first waypoint, along the roads' reference lines) is the one of
 //! RoutePosition's `pathS` and of OpenSCENARIO 2.0 §8.7.4.1.1 distance_along_route.
 
-use opendrive::{LanePosition, Real, RouteSegment, S_TOLERANCE};
+use opendrive::{LaneChange, LanePosition, Real, RouteSegment, S_TOLERANCE};
 
 use crate::domain::Route;
 
@@ -16,23 +16,6 @@ pub struct RoutedWaypoint {
     /// Path s of the waypoint (m); a closed route's first waypoint also ends the route, at
     /// its total length.
     pub path_s: Real,
-}
-
-/// A lane change the route needs: at `path_s`, on road `road_id` at `s`, from one lane to
-/// the adjacent one.
-#[derive(Debug, Clone, PartialEq)]
-pub struct LaneChange {
-    /// Path s where the route moves to the new lane (m); the latest point is the end of the
-    /// lane section (the next stretch on `to_lane` says how far the route stays there).
-    pub path_s: Real,
-    /// Road id.
-    pub road_id: String,
-    /// Road s of the change (m).
-    pub s: Real,
-    /// Lane left.
-    pub from_lane: i32,
-    /// Lane entered.
-    pub to_lane: i32,
 }
 
 /// A planned route.
@@ -68,7 +51,7 @@ impl PlannedRoute {
         &self.segments
     }
 
-    /// The lane changes in driving order.
+    /// The lane changes in driving order, their `path_s` along this route.
     pub fn lane_changes(&self) -> &[LaneChange] {
         &self.lane_changes
     }

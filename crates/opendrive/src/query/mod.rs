@@ -7,10 +7,12 @@ mod lane_span;
 mod locate;
 mod pose;
 mod route;
+mod route_search;
 mod spatial;
 
 pub use graph::{Direction, LaneHandle};
 pub use lane_span::LaneSpan;
 pub use locate::RoadPosition;
 pub use route::{LanePosition, LaneRoute, RouteSegment, LANE_CHANGE_COST};
+pub use route_search::{LaneChange, LaneCost, LanePath, PathCost};
 pub(crate) use spatial::SpatialIndex;
