@@ -23,6 +23,11 @@
 //!   `vehicle_classification.has_trailer = true` and `trailer_id` = the OSI id of the
 //!   trailer's `MovingObject` (OSI 3.8 osi_object.proto); every other vehicle
 //!   `has_trailer = false` and no `trailer_id`.
+//! - VisibilityAction (OpenSCENARIO 1.3 XSD `VisibilityAction`): an entity with `sensors`
+//!   false is left out of the GroundTruth while the flag is off (it keeps its id for when it
+//!   returns), except the host vehicle, which carries the sensors; a vehicle whose trailer is
+//!   left out so has `has_trailer = false` in those frames. `graphics` and `traffic` change
+//!   nothing here. Why: docs/osi.md "Visibility".
 //!
 //! The engine's runtime entity does not keep the `pedestrianCategory` and
 //! `miscObjectCategory` OSI needs, so the adapter reads them from the scenario model,
@@ -41,7 +46,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use engine::output::{EntityFrame, Frame};
-use engine::runtime::EntityKind as EngineKind;
+use engine::runtime::{EntityKind as EngineKind, Visibility};
 use engine::{Engine, FrameSink};
 use opendrive::RoadNetwork;
 use osi::entity::{EntityInfo, EntityKind, MiscObjectInfo};
@@ -95,6 +100,8 @@ pub struct OsiSink {
     external_boxes: BTreeMap<String, ExternalBox>,
     /// ExternalObjectReferences without a box, reported once and left out.
     unboxed: BTreeSet<String>,
+    /// The host vehicle's entity name (`--osi-host`, else `Ego`).
+    host: String,
 }
 
 /// The bounding box of an OpenDRIVE `<object>`: centre relative to the object's origin
@@ -169,6 +176,10 @@ impl OsiSink {
             scenario_file: scenario_path.display().to_string(),
             categories: categories(&scenario),
             unboxed: BTreeSet::new(),
+            host: options
+                .host
+                .clone()
+                .unwrap_or_else(|| osi::ground_truth::DEFAULT_HOST.to_owned()),
         })
     }
 
@@ -234,12 +245,22 @@ impl OsiSink {
     }
 }
 
+/// Whether the entity `name` with `visibility` belongs in the GroundTruth: visible to sensors,
+/// or the host vehicle `host` (module doc, docs/osi.md "Visibility").
+fn in_ground_truth(name: &str, visibility: Visibility, host: &str) -> bool {
+    visibility.sensors || name == host
+}
+
 impl FrameSink for OsiSink {
     fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
         // Simulation time is non-negative and far below u64::MAX ns (584 years).
         let nanos = (frame.time * 1e9).round() as u64;
         let mut gt = self.builder.begin_frame(nanos);
-        for e in frame.objects() {
+        let host = self.host.as_str();
+        for e in frame
+            .objects()
+            .filter(|e| in_ground_truth(e.name, e.visibility, host))
+        {
             let category = self.categories.get(e.name).copied();
             let external = (e.kind == EngineKind::External && !has_box(&e))
                 .then(|| self.external_boxes.get(e.name));
@@ -259,6 +280,7 @@ impl FrameSink for OsiSink {
             let trailer = e
                 .trailer
                 .and_then(|t| frame.entities.get(t as usize))
+                .filter(|t| in_ground_truth(&t.name, t.visibility, host))
                 .map(|t| t.name.as_str());
             Self::add(
                 &mut gt,

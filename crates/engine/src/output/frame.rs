@@ -5,13 +5,14 @@
 //! `StationaryObject`): name, kind, the pose of the reference point (OpenSCENARIO: rear-axle
 //! centre on the ground; OSI's base.position is the bounding-box centre, the box centre is given
 //! relative to the reference point so the OSI side can convert), bounding box, velocity,
-//! acceleration, yaw rate, road and lane position, vehicle category, colour and model3d.
+//! acceleration, yaw rate, road and lane position, vehicle category, colour, model3d, the
+//! VisibilityAction flags and the towed trailer.
 
 use opendrive::{Pose, Real, RoadPosition};
 use scenario::VehicleCategory;
 
 use crate::domain::{BoundingBox, Color, Vector3};
-use crate::runtime::{Entity, EntityKind};
+use crate::runtime::{Entity, EntityKind, Visibility};
 
 /// The state of every entity at one simulation time.
 #[derive(Debug, Clone, Copy)]
@@ -63,8 +64,9 @@ pub struct EntityFrame<'a> {
     pub color: Option<Color>,
     /// `model3d`, if given.
     pub model3d: Option<&'a str>,
-    /// Visible to sensors (VisibilityAction).
-    pub visible_to_sensors: bool,
+    /// Seen by image generators, sensors and other traffic (VisibilityAction, OpenSCENARIO
+    /// 1.3 XSD `VisibilityAction`; all true unless an action changed them).
+    pub visibility: Visibility,
     /// Id of the trailer this vehicle tows (OSI `vehicle_classification.trailer_id`); the
     /// trailer's name is `frame.entities[id].name`.
     pub trailer: Option<u32>,
@@ -89,7 +91,7 @@ impl<'a> EntityFrame<'a> {
             vehicle_category: e.vehicle_category,
             color: e.color,
             model3d: e.model3d.as_deref(),
-            visible_to_sensors: e.visibility.sensors,
+            visibility: e.visibility,
             trailer: e.trailer.map(|t| t.0),
         }
     }

@@ -246,7 +246,8 @@ impl Host<'_> {
                 }
             }
             PrivateAction::Visibility(v) => {
-                visibility::start(self.world, actor, v);
+                let name = self.table.slots[id.0 as usize].name.clone();
+                visibility::start(self.world, actor, v, &name, time, self.events);
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Synchronize(s) => {
