@@ -165,3 +165,33 @@ fn closest_point_on_an_arc() {
     let c = t.closest(100.0, 150.0);
     assert!((c.point.s - 50.0 * PI).abs() < 1e-6 && (c.point.heading - FRAC_PI_2).abs() < 1e-8);
 }
+
+#[test]
+fn skipping_deducts_the_time_to_the_initial_distance_offset() {
+    // FollowTrajectoryAction/@initialDistanceOffset: "the time that would be taken to reach
+    // this point is deducted from all calculated waypoint time values". Offset 80 m on the
+    // timed polyline is reached at 6.5 s; relative timing, scale 2, offset 1, action started
+    // at 10 s: the vertex at 8 s (110 m) is reached at 10 + 1 + 2·(8 − 6.5) = 14 s, and the
+    // start of the motion (trajectory time 6.5 s, s = 80 m) at 11 s.
+    let t = timed_polyline();
+    let skipped = t.time_at(80.0).unwrap() - t.time_at(0.0).unwrap();
+    assert!((skipped - 6.5).abs() < 1e-12);
+    let clock = TrajectoryClock::new(&timing(false, 2.0, 1.0), 10.0, &here())
+        .unwrap()
+        .skipping(skipped);
+    assert!((t.s_at_simulation_time(&clock, 11.0).unwrap() - 80.0).abs() < 1e-9);
+    assert!((t.simulation_time_at(&clock, 110.0).unwrap() - 14.0).abs() < 1e-12);
+    // Half-way in simulation time, 12.5 s: trajectory time 6.5 + 1.5/2 = 7.25 s → 95 m.
+    assert!((t.s_at_simulation_time(&clock, 12.5).unwrap() - 95.0).abs() < 1e-9);
+}
+
+#[test]
+fn arrival_speed_is_the_last_interval_over_the_scale() {
+    // The last piece of the timed polyline is 60 m from 5 s to 8 s: 20 m/s of trajectory
+    // time, 10 m/s of simulation time at scale 2.
+    let t = timed_polyline();
+    let clock = TrajectoryClock::new(&timing(false, 2.0, 0.0), 0.0, &here()).unwrap();
+    assert!((t.arrival_speed(&clock).unwrap() - 10.0).abs() < 1e-12);
+    let untimed = built(polyline(&[(0.0, 0.0, None), (10.0, 0.0, None)]));
+    assert!(untimed.arrival_speed(&clock).is_none());
+}

@@ -195,6 +195,15 @@ impl Trajectory {
             .map(|tt| tt.speed_at(clock.trajectory_time(sim_time)) * clock.rate())
     }
 
+    /// Speed (m/s of simulation time) on arrival at the trajectory's end under `clock`: the
+    /// slope of s over the last timed interval, divided by the timing's scale. `None` without
+    /// times.
+    pub fn arrival_speed(&self, clock: &TrajectoryClock) -> Option<Real> {
+        self.times
+            .as_ref()
+            .map(|tt| tt.arrival_speed() * clock.rate())
+    }
+
     /// Simulation time at which s is reached under `clock`, if the shape has times.
     pub fn simulation_time_at(&self, clock: &TrajectoryClock, s: Real) -> Option<Real> {
         self.time_at(s).map(|t| clock.simulation_time(t))

@@ -57,6 +57,18 @@ impl TimeTable {
             0.0
         }
     }
+
+    /// ds/dt (m/s) on arrival at the last pair: the slope of the last interval of positive
+    /// duration (0 if the table has none, or ends in a stop).
+    pub(crate) fn arrival_speed(&self) -> Real {
+        let n = self.t.len();
+        (1..n)
+            .rev()
+            .find(|&i| self.t[i] > self.t[i - 1])
+            .map_or(0.0, |i| {
+                (self.s[i] - self.s[i - 1]) / (self.t[i] - self.t[i - 1])
+            })
+    }
 }
 
 /// y at x on the piecewise-linear graph through (xs, ys), xs non-decreasing: the first
@@ -95,5 +107,10 @@ mod tests {
         assert!((tt.speed_at(1.0) - 5.0).abs() < 1e-12);
         assert!(tt.speed_at(3.0).abs() < 1e-12);
         assert!((tt.s_at(-1.0)).abs() < 1e-12 && (tt.s_at(9.0) - 20.0).abs() < 1e-12);
+        // Arrival at 20 m over the last interval: 10 m in 2 s.
+        assert!((tt.arrival_speed() - 5.0).abs() < 1e-12);
+        // A table ending in a stop arrives at rest.
+        let stop = TimeTable::new(vec![(0.0, 0.0), (10.0, 2.0), (10.0, 4.0)]);
+        assert!(stop.arrival_speed().abs() < 1e-12);
     }
 }

@@ -4,6 +4,11 @@
 //! simulation (`domainAbsoluteRelative="absolute"`) or from the start of the action
 //! (`"relative"`).
 //!
+//! With `initialDistanceOffset` d the trajectory is logically truncated at d and "the time that
+//! would be taken to reach this point is deducted from all calculated waypoint time values"
+//! (OpenSCENARIO 1.3, FollowTrajectoryAction/@initialDistanceOffset): the clock then reads
+//! t_traj = (t_sim − offset)/scale + (T(d) − T(0)), see [`TrajectoryClock::skipping`].
+//!
 //! Without a TimeReference (XSD `TimeReference/None`) the times are ignored and the action
 //! controls the lateral domain only: the entity keeps its own longitudinal motion along the
 //! trajectory (OpenSCENARIO 1.3 §7.6; semantics-pitfalls #7). With Timing it controls both.
@@ -26,6 +31,8 @@ pub struct TrajectoryClock {
     offset: Real,
     scale: Real,
     action_start: Real,
+    /// Trajectory time skipped by initialDistanceOffset (s), added to every reading.
+    skipped: Real,
 }
 
 impl TrajectoryClock {
@@ -55,24 +62,35 @@ impl TrajectoryClock {
             offset: timing.offset,
             scale: timing.scale,
             action_start,
+            skipped: 0.0,
         })
     }
 
+    /// This clock with `skipped` seconds of trajectory time deducted from every waypoint time:
+    /// for an action that starts `initialDistanceOffset` into the trajectory, `skipped` is the
+    /// trajectory time from the start to that point. A non-finite `skipped` is ignored.
+    pub fn skipping(self, skipped: Real) -> Self {
+        Self {
+            skipped: if skipped.is_finite() { skipped } else { 0.0 },
+            ..self
+        }
+    }
+
     /// The trajectory time at simulation time `sim_time`: (t_sim − offset)/scale, with t_sim
-    /// counted from the action's start when relative.
+    /// counted from the action's start when relative, plus the skipped time.
     pub fn trajectory_time(&self, sim_time: Real) -> Real {
         let reference = if self.relative {
             sim_time - self.action_start
         } else {
             sim_time
         };
-        (reference - self.offset) / self.scale
+        (reference - self.offset) / self.scale + self.skipped
     }
 
-    /// The simulation time of trajectory time `t`: t · scale + offset (+ the action's start
-    /// when relative).
+    /// The simulation time of trajectory time `t`: (t − skipped) · scale + offset (+ the
+    /// action's start when relative).
     pub fn simulation_time(&self, t: Real) -> Real {
-        let reference = t * self.scale + self.offset;
+        let reference = (t - self.skipped) * self.scale + self.offset;
         if self.relative {
             reference + self.action_start
         } else {

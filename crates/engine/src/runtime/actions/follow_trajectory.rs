@@ -36,21 +36,37 @@ pub(crate) struct TrajectoryState {
     at: f64,
 }
 
+/// Tolerance (s, m) of reaching a trajectory's last time or its end: round-off of s and t
+/// summed over a run's steps.
+const END_EPSILON: f64 = 1e-9;
+
 impl TrajectoryState {
-    /// True when the motion up to `step_end` reaches the end of an open trajectory (the
-    /// action then ends in this step, as fixed-time transitions do).
+    /// The clock when the motion is timed: a Timing time reference and a shape with times.
+    /// With Timing but no times on the shape the actor keeps its own speed, as without one.
+    fn timed(&self) -> Option<&TrajectoryClock> {
+        self.clock.as_ref().filter(|_| self.trajectory.has_times())
+    }
+
+    /// The simulation time at which a timed trajectory's last time is reached.
+    fn end_time(&self) -> Option<f64> {
+        let clock = self.timed()?;
+        let (_, last) = self.trajectory.time_range()?;
+        Some(clock.simulation_time(last))
+    }
+
+    /// True when the motion up to `step_end` reaches the end of the trajectory (the action
+    /// then ends in this step, as fixed-time transitions do): a timed trajectory at its last
+    /// time (closed or not: the times say where the actor is, and they end there), an untimed
+    /// open one at its last point. An untimed closed trajectory has no end.
     pub(crate) fn completes_by(&self, step_end: f64) -> bool {
+        if let Some(end) = self.end_time() {
+            return step_end >= end - END_EPSILON;
+        }
         if self.trajectory.closed() {
             return false;
         }
-        let next = match &self.clock {
-            Some(clock) => self
-                .trajectory
-                .s_at_simulation_time(clock, step_end)
-                .unwrap_or(self.s),
-            None => self.s + self.speed.abs() * (step_end - self.at),
-        };
-        next >= self.trajectory.length() - 1e-9
+        let next = self.s + self.speed.abs() * (step_end - self.at);
+        next >= self.trajectory.length() - END_EPSILON
     }
 }
 
@@ -80,6 +96,15 @@ pub(crate) fn start(
         (Some(d), _) => d.clamp(0.0, trajectory.length()),
         (None, Some(c)) => trajectory.s_at_simulation_time(c, now).unwrap_or(0.0),
         (None, None) => 0.0,
+    };
+    // "The time that would be taken to reach this point is deducted from all calculated
+    // waypoint time values" (FollowTrajectoryAction/@initialDistanceOffset).
+    let clock = match (clock, initial_distance_offset) {
+        (Some(c), Some(_)) => {
+            let skipped = trajectory.time_at(s).zip(trajectory.time_at(0.0));
+            Some(c.skipping(skipped.map_or(0.0, |(at_s, at_0)| at_s - at_0)))
+        }
+        (c, _) => c,
     };
     let mut state = TrajectoryState {
         trajectory: Box::new(trajectory),
@@ -126,6 +151,13 @@ fn place(
 }
 
 /// Advances the actor to the step's end, `now + dt`.
+///
+/// Timed, the actor is where the clock says; its speed is the distance of the step over dt
+/// (at the action's start, dt = 0, the speed of the interval ahead), and once the last time
+/// has passed it keeps the speed it arrived with: the standard does not stop an entity at the
+/// end of a timed trajectory, and esmini 3.6.0 drives on at that speed too
+/// (lane-change_clothoid_spline_based_trajectory, trajectory-test). Untimed, the actor
+/// travels its own speed along the trajectory.
 pub(crate) fn step(
     world: &mut World,
     actor: EntityId,
@@ -135,37 +167,52 @@ pub(crate) fn step(
 ) -> ActionStatus {
     let length = st.trajectory.length();
     let t = now + dt;
-    let s = match &st.clock {
-        Some(clock) => {
-            if let Some(v) = st.trajectory.speed_at_simulation_time(clock, t) {
-                world.entity_mut(actor).speed = v;
-            }
-            st.trajectory
-                .s_at_simulation_time(clock, t)
-                .unwrap_or(st.s + world.entity(actor).speed * dt)
+    let reversing = st.timed().is_none() && world.entity(actor).speed < 0.0;
+    // The arc length reached by t, the distance travelled on the trajectory, the travel past
+    // its end within this step, and whether the trajectory is over by t.
+    let (s, moved, beyond, over) = match (st.timed().copied(), st.end_time()) {
+        (Some(clock), Some(end)) => {
+            let s = st
+                .trajectory
+                .s_at_simulation_time(&clock, t)
+                .unwrap_or(st.s);
+            let arrival = st.trajectory.arrival_speed(&clock).unwrap_or(0.0);
+            let speed = if dt <= 0.0 {
+                st.trajectory
+                    .speed_at_simulation_time(&clock, t)
+                    .unwrap_or(0.0)
+            } else if t <= end + END_EPSILON {
+                (s - st.s) / dt
+            } else {
+                arrival
+            };
+            world.entity_mut(actor).speed = speed;
+            let beyond = (t - end).max(0.0) * arrival;
+            (s, (s - st.s).abs(), beyond, t >= end - END_EPSILON)
         }
-        None => st.s + world.entity(actor).speed.abs() * dt,
+        _ => {
+            let travel = world.entity(actor).speed.abs() * dt;
+            let s = st.s + travel;
+            if st.trajectory.closed() {
+                (s.rem_euclid(length), travel, 0.0, false)
+            } else {
+                let beyond = (s - length).max(0.0);
+                (
+                    s.min(length),
+                    travel - beyond,
+                    beyond,
+                    s >= length - END_EPSILON,
+                )
+            }
+        }
     };
-    let reversing = st.clock.is_none() && world.entity(actor).speed < 0.0;
-    // Travel beyond the end of an open trajectory, continued by the default controller.
-    let beyond = if st.trajectory.closed() {
-        0.0
-    } else {
-        (s - length).max(0.0)
-    };
-    let s = if st.trajectory.closed() && length > 0.0 {
-        s.rem_euclid(length)
-    } else {
-        s.clamp(0.0, length)
-    };
-    let moved = (s - st.s).abs();
+    let s = s.clamp(0.0, length);
     st.s = s;
     st.speed = world.entity(actor).speed;
     st.at = t;
     place(world, actor, &st.trajectory, s, true, reversing);
     world.entity_mut(actor).odometer += moved;
-    let at_end = !st.trajectory.closed() && s >= length - 1e-9;
-    if at_end && dt > 0.0 {
+    if over && dt > 0.0 {
         // The rest of the step's travel goes on straight along the trajectory's end tangent;
         // then the default controller takes over from there (backwards when reversing).
         let along = if reversing { -beyond } else { beyond };
