@@ -195,3 +195,36 @@ fn arrival_speed_is_the_last_interval_over_the_scale() {
     let untimed = built(polyline(&[(0.0, 0.0, None), (10.0, 0.0, None)]));
     assert!(untimed.arrival_speed(&clock).is_none());
 }
+
+#[test]
+fn clothoid_spline_segments_without_time_run_at_the_speed_between_timed_points() {
+    // The 1.3 XSD makes ClothoidSplineSegment/@timeStart optional and asks only for
+    // ClothoidSpline/@timeEnd once one is given. Straight segments of 10, 10, 20 and 10 m;
+    // timeStart on the second (2 s) and fourth (8 s), timeEnd 10 s. Timed points: (10 m, 2 s),
+    // (40 m, 8 s), (50 m, 10 s). The third segment starts at 20 m, a third of the way from
+    // 10 m to 40 m: 2 + 6/3 = 4 s. The first segment continues the 5 m/s of the first timed
+    // stretch backwards: it starts at 2 − 10/5 = 0 s.
+    let seg = |length: f64, time: Option<f64>| ClothoidSplineSegment {
+        curvature_start: 0.0,
+        curvature_end: 0.0,
+        length,
+        h_offset: None,
+        time_start: time,
+        position_start: None,
+    };
+    let mut first = seg(10.0, None);
+    first.position_start = Some(world(0.0, 0.0));
+    let t = built(Shape::ClothoidSpline(ClothoidSpline {
+        time_end: Some(10.0),
+        segments: vec![
+            first,
+            seg(10.0, Some(2.0)),
+            seg(20.0, None),
+            seg(10.0, Some(8.0)),
+        ],
+    }));
+    assert_eq!(t.time_range(), Some((0.0, 10.0)));
+    assert!((t.time_at(20.0).unwrap() - 4.0).abs() < 1e-12);
+    assert!((t.s_at_time(1.0).unwrap() - 5.0).abs() < 1e-12);
+    assert!((t.s_at_time(9.0).unwrap() - 45.0).abs() < 1e-12);
+}

@@ -13,8 +13,9 @@
 //!   where the actor stands (esmini's reading, which the corpus scenario
 //!   lane-change_clothoid_spline_based_trajectory.xosc relies on); a later segment starts
 //!   at its own `PositionStart` if it has one, else where the previous one ended; its heading
-//!   is that start's heading plus `hOffset` (default 0). Times when every segment has
-//!   `timeStart` and the spline has `timeEnd`.
+//!   is that start's heading plus `hOffset` (default 0). Times when a segment has
+//!   `timeStart` (then the spline needs `timeEnd`); untimed segments in between are timed
+//!   at constant speed between the timed points around them (see `lead_in`).
 //! * `Nurbs`: order k in 2..=n for n control points, n + k knots in non-decreasing order
 //!   spanning a range, weights > 0 (default 1). Control points' orientations are not used.
 //! * Times: all points of a shape have a time or none has; times never decrease. A NURBS
@@ -261,7 +262,6 @@ fn clothoid_spline<Q: EntityQuery + ?Sized>(
     let mut end: Option<([Real; 3], Real)> = None;
     let mut pairs = Vec::with_capacity(spline.segments.len() + 1);
     let mut s = 0.0;
-    let all_timed = spline.segments.iter().all(|g| g.time_start.is_some());
     let any_timed = spline.segments.iter().any(|g| g.time_start.is_some());
     for (i, seg) in spline.segments.iter().enumerate() {
         let h_offset = seg.h_offset.unwrap_or(0.0);
@@ -301,16 +301,7 @@ fn clothoid_spline<Q: EntityQuery + ?Sized>(
         );
         let last = c.eval(seg.length);
         end = Some(([last.x, last.y, last.z], last.heading));
-        if any_timed {
-            let t = seg.time_start.ok_or_else(|| {
-                TrajectoryError::new(
-                    TrajectoryErrorKind::PartialTimes {
-                        element: "ClothoidSplineSegment",
-                        index: i + 1,
-                    },
-                    pos,
-                )
-            })?;
+        if let Some(t) = seg.time_start {
             check_finite(&[("ClothoidSplineSegment timeStart", t)], pos)?;
             ordered_time(
                 pairs.last().map(|p: &(Real, Real)| p.1),
@@ -324,7 +315,7 @@ fn clothoid_spline<Q: EntityQuery + ?Sized>(
         s += seg.length;
         pieces.push(Piece::Clothoid(c));
     }
-    let times = if all_timed {
+    let times = if any_timed {
         let t_end = spline
             .time_end
             .ok_or_else(|| TrajectoryError::new(TrajectoryErrorKind::MissingTimeEnd, pos))?;
@@ -338,11 +329,28 @@ fn clothoid_spline<Q: EntityQuery + ?Sized>(
             pos,
         )?;
         pairs.push((s, t_end));
-        Some(TimeTable::new(pairs))
+        Some(TimeTable::new(lead_in(pairs)))
     } else {
         None
     };
     Ok((pieces, times))
+}
+
+/// The (s, t) pairs of a ClothoidSpline whose timed segment starts and end are `anchors` (at
+/// least two, s increasing), from the spline's start. A segment without `timeStart` is no
+/// timing point: between two timed points the speed is constant, and segments before the
+/// first timed one continue the speed of the first timed stretch backwards to s = 0. The 1.3
+/// XSD makes every `timeStart` optional and asks only for `timeEnd` once one is given; the
+/// standard does not say how untimed segments are timed, this is oscsim's reading.
+fn lead_in(mut anchors: Vec<(Real, Real)>) -> Vec<(Real, Real)> {
+    if let (Some(&(s0, t0)), Some(&(s1, t1))) = (anchors.first(), anchors.get(1)) {
+        // s1 > s0 > 0: anchors sit at distinct segment starts or the spline's end, each
+        // segment of positive length.
+        if s0 > 0.0 && s1 > s0 {
+            anchors.insert(0, (0.0, t0 - s0 * (t1 - t0) / (s1 - s0)));
+        }
+    }
+    anchors
 }
 
 fn nurbs<Q: EntityQuery + ?Sized>(
