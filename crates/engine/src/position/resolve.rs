@@ -154,7 +154,7 @@ pub fn resolve<Q: EntityQuery + ?Sized>(
 }
 
 /// The Orientation element of a position, if it has one.
-fn orientation_of(kind: &PositionKind) -> Option<&Orientation> {
+pub(crate) fn orientation_of(kind: &PositionKind) -> Option<&Orientation> {
     match kind {
         PositionKind::RelativeWorld { orientation, .. }
         | PositionKind::RelativeObject { orientation, .. }

@@ -6,7 +6,8 @@
 //! Rules taken here, each from the XSD element it concerns:
 //! * `Polyline`: at least two vertices; a `closed` trajectory also runs from the last vertex
 //!   back to the first (that closing piece has no time). Coincident vertices add no length;
-//!   with times they are a stop.
+//!   with times they are a stop. When every vertex's Position states a heading the
+//!   trajectory is six-dimensional (§6.9) and carries those headings (`orientation`).
 //! * `Clothoid`: starts at its Position's point and heading; times only when both
 //!   `startTime` and `stopTime` are given.
 //! * `ClothoidSpline` (1.3): the first segment starts at its `PositionStart`, or without one
@@ -28,26 +29,37 @@
 //!   complete as written).
 
 use opendrive::{Pose, Real, LENGTH_EPSILON};
-use scenario::{Position, Shape, SourcePos};
+use scenario::{Position, PositionKind, Shape, SourcePos};
 
 use super::bspline::HPoint;
 use super::clothoid::Clothoid;
 use super::error::{check_finite, TrajectoryError, TrajectoryErrorKind};
 use super::line::Line;
 use super::nurbs::Nurbs;
+use super::orientation::Orientations;
 use super::path::{Piece, ShapeKind};
 use super::time_table::TimeTable;
 use super::Trajectory;
-use crate::position::{resolve, EntityQuery};
+use crate::position::{orientation_of, resolve, EntityQuery};
 
 type Result<T> = std::result::Result<T, TrajectoryError>;
 
-/// A resolved point of a shape: where, facing where, at which time, written where.
+/// A resolved point of a shape: where, facing where (and whether the position states that
+/// heading), at which time, written where.
 struct Point {
     xyz: [Real; 3],
     heading: Real,
+    oriented: bool,
     time: Option<Real>,
     pos: SourcePos,
+}
+
+/// Whether `position` states a heading: an `Orientation` element, or `h` on a WorldPosition.
+fn states_heading(position: &Position) -> bool {
+    match &position.kind {
+        PositionKind::World { h, .. } => h.is_some(),
+        kind => orientation_of(kind).is_some(),
+    }
 }
 
 fn point<Q: EntityQuery + ?Sized>(
@@ -59,6 +71,7 @@ fn point<Q: EntityQuery + ?Sized>(
     Ok(Point {
         xyz: [r.pose.x, r.pose.y, r.pose.z],
         heading: r.pose.h,
+        oriented: states_heading(position),
         time,
         pos: position.pos.clone(),
     })
@@ -86,6 +99,7 @@ pub fn build_for_actor<Q: EntityQuery + ?Sized>(
     pos: &SourcePos,
 ) -> Result<Trajectory> {
     let name = &trajectory.name;
+    let mut orientations = None;
     let (kind, pieces, times) = match &trajectory.shape {
         Shape::Polyline(vertices) => {
             if vertices.len() < 2 {
@@ -101,7 +115,8 @@ pub fn build_for_actor<Q: EntityQuery + ?Sized>(
                 .iter()
                 .map(|v| point(&v.position, v.time, ctx))
                 .collect::<Result<Vec<_>>>()?;
-            let (pieces, times) = polyline(&points, trajectory.closed)?;
+            let (pieces, times, headings) = polyline(&points, trajectory.closed)?;
+            orientations = headings;
             (ShapeKind::Polyline, pieces, times)
         }
         Shape::Clothoid(c) => {
@@ -123,7 +138,10 @@ pub fn build_for_actor<Q: EntityQuery + ?Sized>(
             ))
         }
     };
-    let t = Trajectory::new(name, kind, trajectory.closed, pieces, times);
+    let mut t = Trajectory::new(name, kind, trajectory.closed, pieces, times);
+    if let Some(o) = orientations {
+        t = t.with_orientations(o);
+    }
     if t.length() <= LENGTH_EPSILON {
         return Err(TrajectoryError::new(
             TrajectoryErrorKind::ZeroLength(t.length()),
@@ -178,7 +196,12 @@ fn ordered_time(
     }
 }
 
-fn polyline(points: &[Point], closed: bool) -> Result<(Vec<Piece>, Option<TimeTable>)> {
+/// The pieces of a Polyline, its times, and its vertex headings when every vertex states one
+/// (a six-dimensional trajectory, §6.9).
+fn polyline(
+    points: &[Point],
+    closed: bool,
+) -> Result<(Vec<Piece>, Option<TimeTable>, Option<Orientations>)> {
     let times = point_times(points, "Vertex")?;
     let mut pieces = Vec::with_capacity(points.len());
     let mut s_at_vertex = vec![0.0];
@@ -196,8 +219,19 @@ fn polyline(points: &[Point], closed: bool) -> Result<(Vec<Piece>, Option<TimeTa
             s_at_vertex.push(s);
         }
     }
+    let mut headings: Vec<Real> = points.iter().map(|p| p.heading).collect();
+    let mut s_headings = s_at_vertex.clone();
+    if closed {
+        // The closing piece turns back to the first vertex's heading.
+        s_headings.push(s);
+        headings.push(points[0].heading);
+    }
+    let orientations = points
+        .iter()
+        .all(|p| p.oriented)
+        .then(|| Orientations::new(s_headings, headings));
     let table = times.map(|t| TimeTable::new(s_at_vertex.into_iter().zip(t).collect()));
-    Ok((pieces, table))
+    Ok((pieces, table, orientations))
 }
 
 fn positive_length(what: &'static str, length: Real, pos: &SourcePos) -> Result<()> {

@@ -13,6 +13,7 @@
 //! | `clothoid` | one clothoid piece (Clothoid, ClothoidSplineSegment) on the opendrive spiral |
 //! | `bspline` | B-spline evaluation by de Boor's algorithm (Cox–de Boor recursion) and its derivative |
 //! | `nurbs` | Nurbs: rational curve, validation, arc-length table |
+//! | `orientation` | the headings along a six-dimensional Polyline (§6.9) |
 //! | `time_table` | the (s, t) pairs of vertices and segment times; s(t), t(s) |
 //! | `timing` | TimeReference / Timing: simulation time ↔ trajectory time |
 //! | `path` | `Trajectory`: the pieces in order, evaluation by s, lengths |
@@ -26,6 +27,7 @@ mod clothoid;
 mod error;
 mod line;
 mod nurbs;
+mod orientation;
 mod path;
 mod point;
 mod time_table;

@@ -10,6 +10,7 @@ use opendrive::Real;
 use super::clothoid::Clothoid;
 use super::line::Line;
 use super::nurbs::Nurbs;
+use super::orientation::Orientations;
 use super::time_table::TimeTable;
 use super::{TrajectoryClock, TrajectoryPoint};
 
@@ -64,6 +65,8 @@ pub struct Trajectory {
     starts: Vec<Real>,
     length: Real,
     times: Option<TimeTable>,
+    /// The headings of a six-dimensional Polyline (every vertex states one).
+    orientations: Option<Orientations>,
 }
 
 impl Trajectory {
@@ -89,6 +92,15 @@ impl Trajectory {
             starts,
             length,
             times,
+            orientations: None,
+        }
+    }
+
+    /// This trajectory with the vertex headings of a six-dimensional Polyline.
+    pub(crate) fn with_orientations(self, orientations: Orientations) -> Self {
+        Self {
+            orientations: Some(orientations),
+            ..self
         }
     }
 
@@ -148,6 +160,13 @@ impl Trajectory {
             },
             ..p
         }
+    }
+
+    /// The heading an entity on the trajectory has at arc length `s` when the shape states
+    /// one (a Polyline whose every vertex has an orientation, OpenSCENARIO 1.3 §6.9); `None`
+    /// where the entity faces along the tangent ([`TrajectoryPoint::heading`]).
+    pub fn orientation_at(&self, s: Real) -> Option<Real> {
+        self.orientations.as_ref().map(|o| o.at(s))
     }
 
     /// The arc lengths where pieces meet (polyline vertices, spline segment starts).

@@ -124,8 +124,9 @@ pub(crate) fn start(
     })
 }
 
-/// Puts `actor` at arc length `s` of the trajectory, facing along the tangent (against it when
-/// `reversing`); `hold` marks the pose as set for the step, so the controller takes
+/// Puts `actor` at arc length `s` of the trajectory, facing along the tangent, or as the
+/// trajectory's vertices say where it states orientations (§6.9), and turned by π when
+/// `reversing`; `hold` marks the pose as set for the step, so the controller takes
 /// measurements without moving the actor again.
 fn place(
     world: &mut World,
@@ -136,14 +137,15 @@ fn place(
     reversing: bool,
 ) {
     let p = trajectory.eval(s);
+    let heading = trajectory.orientation_at(s).unwrap_or(p.heading);
     let e = world.entity_mut(actor);
     e.pose.x = p.x;
     e.pose.y = p.y;
     e.pose.z = p.z;
     e.pose.h = if reversing {
-        normalize_angle(p.heading + std::f64::consts::PI)
+        normalize_angle(heading + std::f64::consts::PI)
     } else {
-        p.heading
+        heading
     };
     e.track = None;
     e.held = hold;

@@ -1,0 +1,162 @@
+//! FollowTrajectoryAction at runtime (OpenSCENARIO 1.3 §6.9 "Trajectories", XSD
+//! `FollowTrajectoryAction`, `Timing`): the timed motion, initialDistanceOffset, the speed an
+//! entity keeps after a timed trajectory, six-dimensional polylines and partially timed
+//! ClothoidSplines, on this crate's fixtures (`tests/files/trajectory/`) and corpus scenarios.
+
+mod runtime_support;
+
+use std::path::{Path, PathBuf};
+
+use engine::output::EventRecord;
+use engine::storyboard::Transition;
+use engine::{Engine, EngineConfig};
+use runtime_support::{corpus, Recorder};
+
+/// Positions and speeds here are sums of a few exact steps: 1e-6 m, m/s, rad.
+const TOL: f64 = 1e-6;
+
+/// Runs `path` to its end (or `max_time`).
+fn run(path: &Path, max_time: f64) -> (Recorder, Vec<EventRecord>) {
+    let config = EngineConfig {
+        max_time,
+        ..EngineConfig::default()
+    };
+    let mut engine = Engine::load(path, &[], config)
+        .unwrap_or_else(|e| panic!("{} does not load: {e}", path.display()));
+    let mut frames = Recorder::default();
+    let mut events = Vec::new();
+    engine
+        .run(&mut frames, &mut events)
+        .unwrap_or_else(|e| panic!("{} does not run: {e}", path.display()));
+    (frames, events)
+}
+
+fn fixture(name: &str) -> PathBuf {
+    PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/files/trajectory"
+    ))
+    .join(name)
+}
+
+/// The time of the end transition of storyboard element `element`.
+fn ended_at(events: &[EventRecord], element: &str) -> Option<f64> {
+    events.iter().find_map(|e| match e {
+        EventRecord::Transition(t) if t.name == element && t.transition == Transition::End => {
+            Some(t.time)
+        }
+        _ => None,
+    })
+}
+
+#[test]
+fn initial_distance_offset_deducts_the_time_to_reach_it() {
+    // Vertices (100, −1.535) at 0 s and (200, −1.535) at 10 s: 10 m/s. initialDistanceOffset
+    // 40 m takes 4 s, deducted from the vertex times (FollowTrajectoryAction/
+    // @initialDistanceOffset): with relative timing from 0 s the car is at x = 140 + 10·t,
+    // reaches the end x = 200 at 6 s (the action ends in the step that gets there, 5.95 s),
+    // and drives on at the 10 m/s it arrived with: x = 210 at 7 s.
+    let (frames, events) = run(&fixture("timed_offset.xosc"), 10.0);
+    for (t, x) in [
+        (0.0, 140.0),
+        (1.0, 150.0),
+        (3.5, 175.0),
+        (6.0, 200.0),
+        (7.0, 210.0),
+    ] {
+        let r = frames.at("Ego", t);
+        assert!((r.x - x).abs() < TOL, "x at {t} s: {} (expected {x})", r.x);
+        assert!((r.speed - 10.0).abs() < TOL, "speed at {t} s: {}", r.speed);
+    }
+    let end = ended_at(&events, "Init Ego RoutingAction").expect("the action ends");
+    assert!((end - 5.95).abs() < 1e-9, "ended at {end}");
+}
+
+#[test]
+fn six_dimensional_polyline_turns_between_its_vertex_headings() {
+    // Vertices 10 m apart on a straight line state headings 0, 0.4, 0 rad (§6.9: the path
+    // then also gives the entity's orientation). At 10 m/s from x = 100: 0.2 rad at s = 5 m
+    // (0.5 s) and 15 m (1.5 s), 0.4 rad at the middle vertex (1 s), 0 at the last (2 s); the
+    // position stays on the line.
+    let (frames, _) = run(&fixture("oriented_polyline.xosc"), 3.0);
+    for (t, x, h) in [
+        (0.5, 105.0, 0.2),
+        (1.0, 110.0, 0.4),
+        (1.5, 115.0, 0.2),
+        (2.0, 120.0, 0.0),
+    ] {
+        let r = frames.at("Ego", t);
+        assert!((r.x - x).abs() < TOL && (r.y + 1.535).abs() < TOL, "{r:?}");
+        assert!(
+            (r.h - h).abs() < TOL,
+            "heading at {t} s: {} (expected {h})",
+            r.h
+        );
+    }
+}
+
+#[test]
+fn clothoid_spline_with_one_timed_segment_runs_at_constant_speed() {
+    // The scenariogeneration example clothoid_spline_shape_trajectory0.xosc: segment 1 (10 m)
+    // has no timeStart, segment 2 (10 m) starts at 5 s, timeEnd 10 s. The 1.3 XSD makes each
+    // timeStart optional, so the file is valid; between timed points the speed is constant
+    // (10 m / 5 s = 2 m/s) and the untimed first segment continues it backwards: it starts at
+    // 5 − 10/2 = 0 s. The event starts at 0.05 s (SimulationTime > 0), so Ego moves at
+    // 2 m/s from then to 10.05 s; the run stops when its story completes, at 10 s.
+    let (frames, events) = run(
+        &corpus("generated/xosc/clothoid_spline_shape_trajectory0.xosc"),
+        20.0,
+    );
+    assert!(
+        !events
+            .iter()
+            .any(|e| matches!(e, EventRecord::Error { .. })),
+        "an error was logged: {events:?}"
+    );
+    for t in [1.0, 5.0, 5.05, 9.0, 10.0] {
+        let r = frames.at("Ego", t);
+        assert!((r.speed - 2.0).abs() < TOL, "speed at {t} s: {}", r.speed);
+    }
+    // 9 s at 2 m/s between 1 s and 10 s: 18 m of the spline's 20.
+    let ego: Vec<_> = frames
+        .0
+        .iter()
+        .filter(|r| r.name == "Ego" && r.time >= 1.0 - 1e-9)
+        .collect();
+    let path: f64 = ego
+        .windows(2)
+        .map(|w| (w[1].x - w[0].x).hypot(w[1].y - w[0].y))
+        .sum();
+    // The path is the curve's chords every 0.05 s (0.1 m): shorter than the arc by
+    // ≈ κ²·ℓ³/24 per chord, under 1e-5 m in all for κ ≤ 0.08.
+    assert!((path - 18.0).abs() < 1e-4, "travelled {path} m");
+}
+
+#[test]
+fn speed_after_a_timed_trajectory_is_the_arrival_speed() {
+    // esmini's lane-change_clothoid_spline_based_trajectory.xosc, event
+    // TrajectoryWithTimestamps: the last segment is 6.5 m from 7 s to timeEnd 8 s, so the car
+    // arrives at 6.5 m/s and drives on at it along the straight road (esmini 3.6.0's
+    // reference has 6.500 m/s from the end on, too). The event starts at 18.70 s here, so the
+    // trajectory ends at 26.70 s.
+    let (frames, _) = run(
+        &corpus("esmini/xosc/lane-change_clothoid_spline_based_trajectory.xosc"),
+        30.0,
+    );
+    let a = frames.at("Car", 27.0);
+    let b = frames.at("Car", 29.0);
+    assert!((a.speed - 6.5).abs() < TOL && (b.speed - 6.5).abs() < TOL);
+    assert!((b.x - a.x - 13.0).abs() < 1e-3, "{a:?} {b:?}");
+}
+
+#[test]
+fn speed_at_a_vertex_is_that_of_the_step_arriving_there() {
+    // esmini's trajectory-test.xosc: Target's timed Polyline has vertices at 2 s and 4 s of
+    // trajectory time, started at 2 s. The frame at 6.00 s is the vertex; the step into it
+    // ran on the interval 2 s → 4 s, and esmini 3.6.0's reference row at 6.000 s has that
+    // interval's 24.524 m/s (the next interval's 27.341 m/s from 6.05 s on); the CSV has
+    // 3 decimals.
+    let (frames, _) = run(&corpus("esmini/xosc/trajectory-test.xosc"), 8.0);
+    assert!((frames.at("Target", 6.0).speed - 24.524).abs() < 1e-3);
+    assert!((frames.at("Target", 6.1).speed - 27.341).abs() < 1e-3);
+}
