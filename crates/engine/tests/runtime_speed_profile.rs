@@ -156,6 +156,35 @@ fn follow_mode_lands_on_the_last_speed_when_corners_crowd() {
     assert_abs_diff_eq!(pos(8.5), 10.0, epsilon = EXACT);
 }
 
+/// speed_profile_untimed.xosc: from rest at 1 s, 10 m/s without a time, then 4 m/s with time 0,
+/// held for 1 s; maxAcceleration 4, maxDeceleration 6, no jerk limit. The entry without a time
+/// is reached at the acceleration limit: 10/4 = 2.5 s, at 3.5 s, in both modes (v(2) = 4,
+/// v(3.45) = 9.8). Time 0 is a jump in `position` (4 m/s from the 3.5 s frame); `follow`
+/// observes maxDeceleration instead, v = 10 − 6(t − 3.5), reaching 4 at 4.5 s (v(4) = 7).
+/// Without a jerk limit the corners stay sharp. Both end at 4.5 s, in the step 4.45 … 4.5 s.
+#[test]
+fn entries_without_time_or_with_time_zero() {
+    let (_, frames, events) = run_with(
+        &file("speed_profile_untimed.xosc"),
+        &[],
+        EngineConfig::default(),
+    );
+    for (t, follow, position) in [
+        (2.0, 4.0, 4.0),
+        (3.45, 9.8, 9.8),
+        (3.5, 10.0, 4.0),
+        (4.0, 7.0, 4.0),
+        (4.5, 4.0, 4.0),
+        (5.0, 4.0, 4.0),
+    ] {
+        assert_abs_diff_eq!(frames.at("Follow", t).speed, follow, epsilon = EXACT);
+        assert_abs_diff_eq!(frames.at("Position", t).speed, position, epsilon = EXACT);
+    }
+    for action in ["FollowProfile", "PositionProfile"] {
+        assert_abs_diff_eq!(end_step(&events, action), 4.45, epsilon = EXACT);
+    }
+}
+
 /// esmini's speed-profile.xosc (Car1 follow, Car2 position, the same four entries and
 /// DynamicConstraints) against esmini 3.6.0's run in reference/esmini/speed-profile.csv: the
 /// speeds agree at every reference row to within the CSV's rounding (3 decimals), and each
