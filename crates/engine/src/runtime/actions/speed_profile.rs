@@ -22,7 +22,9 @@
 //!
 //! Limits: DynamicConstraints "has precedence over any Performance settings" (model
 //! documentation of SpeedProfileAction), so each limit is the action's where given, else the
-//! vehicle's Performance, else 5 m/s² for accelerations and none for jerk and speed.
+//! vehicle's Performance, else 5 m/s² for accelerations and none for jerk and speed. (esmini
+//! instead truncates the action's limits at the Performance; the two agree whenever the action
+//! asks for less than the vehicle can do, as in every corpus scenario.)
 
 use scenario::{DynamicConstraints, FollowingMode, LongitudinalAction, Performance, SourcePos};
 
