@@ -45,4 +45,5 @@ pub use registry::UserValueRegistry;
 pub use road_state::END_OF_ROAD_TOLERANCE;
 pub use rule::{compare, EQUAL_TOLERANCE};
 pub use state::{ConditionState, ConditionStates};
+pub(crate) use measure::{distance as measured_distance, Target as MeasureTarget};
 pub(crate) use time_of_day::parse_date_time;

@@ -155,7 +155,7 @@ impl ActionTable {
 /// trajectory hands the actor back to the default controller where it stands.
 fn interrupt(world: &mut World, actor: EntityId, part: &mut Part) {
     match part {
-        Part::Lateral(_) => lane_change::abandon(world, actor),
+        Part::Lateral(_) | Part::LateralDistance(_) => lane_change::abandon(world, actor),
         Part::Trajectory(_) => follow_trajectory::release(world, actor, false),
         _ => {}
     }

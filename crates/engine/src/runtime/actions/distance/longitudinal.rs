@@ -1,81 +1,65 @@
-//! LongitudinalDistanceAction and LateralDistanceAction (OpenSCENARIO 1.3 §7.7.2.1–7.7.2.2,
-//! XSD `LongitudinalDistanceAction`, `LateralDistanceAction`): keep a distance (or, longitudinally,
-//! a time gap × own speed) to a reference entity, between reference points or bounding boxes
-//! (`freespace`).
+//! LongitudinalDistanceAction (OpenSCENARIO 1.3 §7.7.2.1, XSD `LongitudinalDistanceAction`):
+//! "activates a controller for the longitudinal behavior of an entity in a way that a given
+//! distance or time gap to the reference entity is maintained".
 //!
-//! Distances are measured along the road (s difference, when both are on the same road; else
-//! along the actor's heading). Without DynamicConstraints the actor is put at the distance at
-//! once and takes the reference's speed (longitudinal) — the standard leaves the approach to the
-//! implementation. With them, a critically damped spring drives the gap error to zero within
-//! the acceleration, deceleration, rate and speed limits; its stiffness grows with the limit it
-//! works against (0.4/m × limit), the tuning esmini uses, so that the corpus runs compare. A non-continuous action ends
-//! when the gap is within 0.1 m and the relative speed within 0.1 m/s.
+//! * What is kept: `distance` (m), or `timeGap` (s) × the reference's speed. The standard does
+//!   not say whose speed turns a time gap into a distance; oscsim takes the reference's, as
+//!   esmini does: the wanted distance then does not depend on the speed being controlled, and
+//!   once the gap is kept both speeds are equal.
+//! * Measured (module `gauge`) in `coordinateSystem` (absent: entity, the actor's frame), between
+//!   reference points or, with `freespace`, bounding boxes.
+//! * `displacement`: trailingReferencedEntity (the default) keeps the reference ahead,
+//!   leadingReferencedEntity keeps it behind, `any` keeps the side it is on at the start.
+//! * Without DynamicConstraints ("unlimited dynamics") the actor is put at the distance along its
+//!   lane each step and takes the reference's speed. With them, the actor's speed follows the
+//!   critically damped law of module `law` (tension: maxAcceleration when the actor must drop
+//!   back, maxDeceleration when it must close up — esmini's pairing), the acceleration clamped
+//!   to [−maxDeceleration, maxAcceleration] after the jerk limits, the speed to [0, maxSpeed]
+//!   (a distance controller does not reverse).
+//! * `continuous="false"`: "the action ends when the target distance is reached", oscsim: when
+//!   the distance error is at most 0.1 m (esmini's threshold; the standard gives none).
 
 use opendrive::Direction;
-use scenario::{
-    LateralAction, LateralDisplacement, LongitudinalAction, LongitudinalDisplacement, SourcePos,
-};
+use scenario::{LongitudinalAction, LongitudinalDisplacement, SourcePos};
 
-use super::speed::entity_ref;
-use super::Part;
+use super::gauge::{Axis, Gauge};
+use super::law::{limit_jerk, spring, Limits};
+use crate::runtime::actions::speed::entity_ref;
+use crate::runtime::actions::Part;
 use crate::runtime::controller::place_on_track;
 use crate::runtime::entity::EntityId;
 use crate::runtime::error::RuntimeError;
-use crate::runtime::lanes::lane_at;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 
-/// Gap error (m) and speed difference (m/s) at which a non-continuous action has arrived.
-const ARRIVED: f64 = 0.1;
-/// Stiffness per m/s² of acceleration limit (1/m) of the constrained gap controller: the
-/// spring constant is this times the limit in the direction of the correction.
-const STIFFNESS_PER_LIMIT: f64 = 0.4;
+/// Distance error (m) at which a non-continuous action has reached its distance.
+pub(crate) const REACHED: f64 = 0.1;
 
-/// A running LongitudinalDistanceAction.
+/// What the action keeps.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Wanted {
+    /// A distance, m.
+    Distance(f64),
+    /// A time gap, s, at the reference's speed.
+    TimeGap(f64),
+}
+
+/// A running LongitudinalDistanceAction on one actor.
 #[derive(Debug, Clone)]
 pub(crate) struct LongitudinalState {
     reference: EntityId,
-    distance: Option<f64>,
-    time_gap: Option<f64>,
-    freespace: bool,
-    /// +1: the actor trails the reference; −1: it leads.
-    side: f64,
+    wanted: Wanted,
+    gauge: Gauge,
+    /// +1: the reference stays ahead (the actor trails); −1: behind (the actor leads).
+    toward: f64,
     continuous: bool,
-    limits: Option<scenario::DynamicConstraints>,
-    /// Acceleration of the last step (m/s²), for the jerk limits.
+    /// `None`: unlimited dynamics.
+    limits: Option<Limits>,
+    /// The acceleration the last step asked for (m/s²), for the jerk limits.
     acceleration: f64,
 }
 
-/// A running LateralDistanceAction.
-#[derive(Debug, Clone)]
-pub(crate) struct LateralState {
-    reference: EntityId,
-    distance: f64,
-    freespace: bool,
-    /// +1: the actor stays left of the reference; −1: right.
-    side: f64,
-    continuous: bool,
-    max_speed: Option<f64>,
-}
-
-/// Signed distance (m) from the actor to the reference along the actor's direction of travel.
-fn longitudinal_gap(world: &World, actor: EntityId, reference: EntityId) -> f64 {
-    let (a, r) = (world.entity(actor), world.entity(reference));
-    if let (Some(ta), Some(tr)) = (&a.track, &r.track) {
-        if ta.road_id == tr.road_id {
-            let sign = if ta.direction == Direction::Forward {
-                1.0
-            } else {
-                -1.0
-            };
-            return (tr.s - ta.s) * sign;
-        }
-    }
-    let (dx, dy) = (r.pose.x - a.pose.x, r.pose.y - a.pose.y);
-    dx * a.pose.h.cos() + dy * a.pose.h.sin()
-}
-
-/// Starts a LongitudinalDistanceAction.
+/// Starts a LongitudinalDistanceAction on `actor` and takes its first step (no motion yet).
 pub(crate) fn start_longitudinal(
     world: &mut World,
     actor: EntityId,
@@ -89,31 +73,54 @@ pub(crate) fn start_longitudinal(
         time_gap,
         freespace,
         displacement,
+        coordinate_system,
         dynamic_constraints,
-        ..
     } = action
     else {
         return Err(RuntimeError::unsupported("this LongitudinalAction", pos));
     };
     let reference = entity_ref(world, name, pos)?;
-    if distance.is_none() && time_gap.is_none() {
-        return Err(RuntimeError::at("a distance or a timeGap", "neither", pos));
-    }
-    let side = match displacement {
-        Some(LongitudinalDisplacement::LeadingReferencedEntity) => -1.0,
-        Some(LongitudinalDisplacement::Any) if longitudinal_gap(world, actor, reference) < 0.0 => {
-            -1.0
+    let wanted = match (distance, time_gap) {
+        (Some(d), None) => Wanted::Distance(d.abs()),
+        (None, Some(g)) => Wanted::TimeGap(g.abs()),
+        (Some(_), Some(_)) => {
+            return Err(RuntimeError::at(
+                "a LongitudinalDistanceAction with either distance or timeGap",
+                "both",
+                pos,
+            ))
         }
+        (None, None) => {
+            return Err(RuntimeError::at(
+                "a LongitudinalDistanceAction with a distance or a timeGap",
+                "neither",
+                pos,
+            ))
+        }
+    };
+    let (gauge, now) = Gauge::at_start(
+        world,
+        (actor, reference),
+        Axis::Longitudinal,
+        *coordinate_system,
+        *freespace,
+        pos,
+    )?;
+    let toward = match displacement {
+        Some(LongitudinalDisplacement::LeadingReferencedEntity) => -1.0,
+        Some(LongitudinalDisplacement::Any) if now < 0.0 => -1.0,
         _ => 1.0,
     };
+    let limits = dynamic_constraints
+        .as_ref()
+        .map(|c| Limits::longitudinal(c, world.entity(actor)));
     let mut state = LongitudinalState {
         reference,
-        distance: *distance,
-        time_gap: *time_gap,
-        freespace: *freespace,
-        side,
+        wanted,
+        gauge,
+        toward,
         continuous: *continuous,
-        limits: *dynamic_constraints,
+        limits,
         acceleration: 0.0,
     };
     Ok(match step_longitudinal(world, actor, &mut state, 0.0) {
@@ -122,188 +129,71 @@ pub(crate) fn start_longitudinal(
     })
 }
 
-/// One step of a LongitudinalDistanceAction (`dt` = 0 at the start: no integration).
+/// One step of a LongitudinalDistanceAction over `dt` s (0 at the start: no integration).
 pub(crate) fn step_longitudinal(
     world: &mut World,
     actor: EntityId,
     s: &mut LongitudinalState,
     dt: f64,
 ) -> ActionStatus {
-    let (a, r) = (world.entity(actor), world.entity(s.reference));
-    let mut wanted = s
-        .distance
-        .unwrap_or_else(|| s.time_gap.unwrap_or(0.0) * a.speed.abs());
-    if s.freespace {
-        let front = a.bounding_box.center().x + a.bounding_box.length() / 2.0;
-        let rear = r.bounding_box.length() / 2.0 - r.bounding_box.center().x;
-        let (lead, trail) = if s.side > 0.0 {
-            (rear, front)
-        } else {
-            (front, rear)
-        };
-        wanted += lead + trail;
-    }
-    let gap = longitudinal_gap(world, actor, s.reference) * s.side;
-    let (v, v_ref) = (a.speed, r.speed);
-    let error = gap - wanted;
+    let Some(clearance) = s.gauge.clearance(world, actor, s.reference, s.toward) else {
+        // No measurement now (e.g. off the roads in a road frame): hold the speed.
+        return ActionStatus::Running;
+    };
+    let (v, v_ref) = (world.entity(actor).speed, world.entity(s.reference).speed);
+    let wanted = match s.wanted {
+        Wanted::Distance(d) => d,
+        Wanted::TimeGap(g) => g * v_ref.abs(),
+    };
+    let error = clearance - wanted;
+    // Positive: the actor must move forward to remove the error.
+    let forward = s.toward * error;
     match s.limits {
         None => {
-            // Ideal following: put the actor at the distance, at the reference's speed.
-            let e = world.entity_mut(actor);
-            e.speed = v_ref;
-            if let Some(mut track) = e.track.take() {
-                let sign = if track.direction == Direction::Forward {
-                    1.0
-                } else {
-                    -1.0
-                };
-                track.s = (track.s + error * s.side * sign).max(0.0);
-                let net = &world.network;
-                let e = &mut world.entities[actor.index()];
-                place_on_track(net, e, &mut track);
-                e.track = Some(track);
+            shift_along_lane(world, actor, forward);
+            world.entity_mut(actor).speed = v_ref;
+            if !s.continuous {
+                return ActionStatus::Ended;
             }
         }
         Some(limits) if dt > 0.0 => {
-            let perf = a.performance;
-            let max_acc = limits
-                .max_acceleration
-                .or(perf.map(|p| p.max_acceleration))
-                .unwrap_or(f64::INFINITY);
-            let max_dec = limits
-                .max_deceleration
-                .or(perf.map(|p| p.max_deceleration))
-                .unwrap_or(f64::INFINITY);
-            let max_speed = limits.max_speed.unwrap_or(a.max_speed());
-            // A critically damped spring on the gap error whose stiffness scales with the
-            // limit it works against (k = 0.4/m × limit, damping 2√k), clamped to the limits,
-            // with the change of acceleration bounded by the rate limits when given.
-            let toward = if error * s.side < 0.0 {
-                max_acc
+            let tension = if forward < 0.0 {
+                limits.acceleration
             } else {
-                max_dec
+                limits.deceleration
             };
-            let k = STIFFNESS_PER_LIMIT * toward.min(1e6);
-            let acc = (k * error) * s.side - 2.0 * k.sqrt() * (v - v_ref);
-            let mut acc = acc.clamp(-max_dec, max_acc);
-            if acc < st_acc(s) {
-                if let Some(rate) = limits.max_deceleration_rate {
-                    acc = acc.max(st_acc(s) - rate * dt);
-                }
-            } else if let Some(rate) = limits.max_acceleration_rate {
-                acc = acc.min(st_acc(s) + rate * dt);
-            }
+            let acc = spring(forward, v - v_ref, tension, dt)
+                .clamp(-limits.deceleration, limits.acceleration);
+            let acc = limit_jerk(acc, s.acceleration, &limits, dt);
             s.acceleration = acc;
-            world.entity_mut(actor).speed = (v + acc * dt).clamp(0.0, max_speed);
+            world.entity_mut(actor).speed = (v + acc * dt).clamp(0.0, limits.speed);
         }
         Some(_) => {}
     }
-    let arrived = error.abs() <= ARRIVED && (v - v_ref).abs() <= ARRIVED || s.limits.is_none();
-    if arrived && !s.continuous {
+    if !s.continuous && error.abs() <= REACHED {
         ActionStatus::Ended
     } else {
         ActionStatus::Running
     }
 }
 
-/// The acceleration of the previous step.
-fn st_acc(s: &LongitudinalState) -> f64 {
-    s.acceleration
-}
-
-/// Starts a LateralDistanceAction.
-pub(crate) fn start_lateral(
-    world: &mut World,
-    actor: EntityId,
-    action: &LateralAction,
-    pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
-    let LateralAction::LateralDistance {
-        entity_ref: name,
-        continuous,
-        distance,
-        freespace,
-        displacement,
-        dynamic_constraints,
-        ..
-    } = action
-    else {
-        return Err(RuntimeError::unsupported("this LateralAction", pos));
+/// Moves `actor` by `forward` m along its lane (negative: back), within its road.
+fn shift_along_lane(world: &mut World, actor: EntityId, forward: f64) {
+    let net = &world.network;
+    let e = &mut world.entities[actor.index()];
+    let Some(mut track) = e.track.take() else {
+        e.pose.x += forward * e.pose.h.cos();
+        e.pose.y += forward * e.pose.h.sin();
+        e.road_position = net.locate(e.pose.x, e.pose.y, Some(e.pose.h));
+        return;
     };
-    let reference = entity_ref(world, name, pos)?;
-    let (a, r) = (world.entity(actor), world.entity(reference));
-    let (Some(ta), Some(tr)) = (&a.track, &r.track) else {
-        return Err(RuntimeError::at(
-            "actor and reference on lanes",
-            "an entity off the road",
-            pos,
-        ));
-    };
-    let side = match displacement {
-        Some(LateralDisplacement::LeftToReferencedEntity) => 1.0,
-        Some(LateralDisplacement::RightToReferencedEntity) => -1.0,
-        _ if ta.t >= tr.t => 1.0,
-        _ => -1.0,
-    };
-    let mut state = LateralState {
-        reference,
-        distance: distance.unwrap_or(0.0),
-        freespace: *freespace,
-        side,
-        continuous: *continuous,
-        max_speed: dynamic_constraints.and_then(|c| c.max_speed),
-    };
-    Ok(match step_lateral(world, actor, &mut state, 0.0) {
-        ActionStatus::Running => Part::LateralDistance(state),
-        done => Part::Done(done),
-    })
-}
-
-/// One step of a LateralDistanceAction: moves t towards the reference's t ± distance.
-pub(crate) fn step_lateral(
-    world: &mut World,
-    actor: EntityId,
-    s: &mut LateralState,
-    dt: f64,
-) -> ActionStatus {
-    let (a, r) = (world.entity(actor), world.entity(s.reference));
-    let (Some(ta), Some(tr)) = (&a.track, &r.track) else {
-        return ActionStatus::Ended;
-    };
-    let mut d = s.distance;
-    if s.freespace {
-        d += (a.bounding_box.width() + r.bounding_box.width()) / 2.0;
-    }
-    // t grows to the left of +s; "left of the reference" flips for travel towards −s.
-    let sign = if ta.direction == Direction::Forward {
+    let sign = if track.direction == Direction::Forward {
         1.0
     } else {
         -1.0
     };
-    let target = tr.t + s.side * sign * d;
-    let error = target - ta.t;
-    let step = match (s.max_speed, dt > 0.0) {
-        (Some(v), true) => error.clamp(-v * dt, v * dt),
-        _ => error,
-    };
-    let net = &world.network;
-    let e = &mut world.entities[actor.index()];
-    if let Some(mut track) = e.track.take() {
-        let t = track.t + step;
-        if let Some((lane, offset)) = net
-            .road(&track.road_id)
-            .and_then(|road| lane_at(road, track.s, t))
-        {
-            track.lane_id = lane;
-            track.offset = offset;
-            track.blend = None;
-        }
-        place_on_track(net, e, &mut track);
-        e.track = Some(track);
-    }
-    if (error - step).abs() <= ARRIVED && !s.continuous {
-        ActionStatus::Ended
-    } else {
-        ActionStatus::Running
-    }
+    let length = net.road(&track.road_id).map_or(f64::INFINITY, |r| r.length);
+    track.s = (track.s + forward * sign).clamp(0.0, length);
+    place_on_track(net, e, &mut track);
+    e.track = Some(track);
 }
