@@ -3,7 +3,8 @@
 //! `triggeringEntitiesRule` — `any`: true when it holds for at least one, `all`: when it holds
 //! for every one. An EntityRef naming an EntitySelection stands for all its members. Every
 //! triggering entity is evaluated each time (no short cut), so that the duration conditions
-//! keep their memory of each.
+//! keep their memory of each. The entities for which it held are reported to the context
+//! ([`ConditionContext::note_triggering`]) for `selectTriggeringEntities` (§7.3.1).
 
 use opendrive::Real;
 use scenario::{
@@ -31,6 +32,7 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
 ) -> Result<bool, ConditionError> {
     let mut any = false;
     let mut all = !triggering.entity_refs.is_empty();
+    let mut held = Vec::new();
     for name in &triggering.entity_refs {
         // An EntityRef may name an EntitySelection: each member is a triggering entity.
         let members = match ctx.entity(name) {
@@ -47,12 +49,17 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
                 holds(condition, ctx, &e, state).map_err(|k| ConditionError::new(k, pos))?;
             any |= holds;
             all &= holds;
+            if holds {
+                held.push(member.clone());
+            }
         }
     }
-    Ok(match triggering.rule {
+    let value = match triggering.rule {
         TriggeringEntitiesRule::All => all,
         _ => any,
-    })
+    };
+    ctx.note_triggering(pos, value, &held);
+    Ok(value)
 }
 
 /// The reference entity `name`.

@@ -4,6 +4,7 @@
 //! CollisionCondition reads).
 
 use scenario::expr::Value;
+use scenario::SourcePos;
 
 use crate::position::EntityQuery;
 use crate::storyboard::StateView;
@@ -51,6 +52,14 @@ pub trait ConditionContext: EntityQuery {
     fn entity_selection(&self, name: &str) -> Option<Vec<String>> {
         let _ = name;
         None
+    }
+
+    /// Told after each evaluation of the condition written at `pos`: its raw value (false when
+    /// it could not be evaluated) and, for a ByEntityCondition, the triggering entities for
+    /// which its EntityCondition held, in order. The runtime keeps them for
+    /// `Actors/@selectTriggeringEntities` (OpenSCENARIO 1.3 §7.3.1); the default forgets them.
+    fn note_triggering(&self, pos: &SourcePos, value: bool, held: &[String]) {
+        let _ = (pos, value, held);
     }
 
     /// True when the bounding boxes of entities `a` and `b` touch or overlap now

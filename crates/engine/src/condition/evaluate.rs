@@ -22,6 +22,22 @@ pub fn evaluate<C: ConditionContext + ?Sized>(
     ctx: &C,
     state: &mut ConditionState,
 ) -> Result<bool, ConditionError> {
+    let result = dispatch(condition, ctx, state);
+    // A ByEntityCondition reports its value and entities itself; the others report their
+    // value here, and a failed evaluation reads false ([`ConditionContext::note_triggering`]).
+    match (&condition.kind, &result) {
+        (ConditionKind::ByEntity { .. }, Ok(_)) => {}
+        (_, r) => ctx.note_triggering(&condition.pos, matches!(r, Ok(true)), &[]),
+    }
+    result
+}
+
+/// The raw value of `condition` by its kind.
+fn dispatch<C: ConditionContext + ?Sized>(
+    condition: &Condition,
+    ctx: &C,
+    state: &mut ConditionState,
+) -> Result<bool, ConditionError> {
     match &condition.kind {
         ConditionKind::ByValue(c) => by_value::evaluate(c, ctx, &condition.pos),
         ConditionKind::ByEntity {

@@ -147,8 +147,9 @@ struct Builder<'a> {
     world: &'a World,
     actions: ActionTable,
     conditions: Vec<scenario::Condition>,
-    /// Actions whose ManeuverGroup actors name a selection, re-expanded at each start.
-    selection_actors: Vec<(crate::storyboard::ActionId, Vec<String>)>,
+    /// Actions whose ManeuverGroup actors name a selection or select triggering entities,
+    /// worked out at each start.
+    selection_actors: Vec<(crate::storyboard::ActionId, super::selection::ActorSpec)>,
 }
 
 /// The XSD element name of an action, for Init action names.
@@ -216,7 +217,11 @@ impl Builder<'_> {
                                 .iter()
                                 .map(|a| {
                                     let d = self.action(a.name.clone(), a, actors.clone());
-                                    self.note_selection_actors(d.id, &mg.actors.entity_refs);
+                                    self.note_runtime_actors(
+                                        d.id,
+                                        &mg.actors,
+                                        act.start_trigger.as_ref(),
+                                    );
                                     d
                                 })
                                 .collect();
@@ -295,10 +300,30 @@ impl Builder<'_> {
         Ok(out)
     }
 
-    fn note_selection_actors(&mut self, id: crate::storyboard::ActionId, refs: &[String]) {
+    /// Notes action `id` for actors worked out at its start: when its ManeuverGroup names a
+    /// selection, or selects the triggering entities of the Act's `start_trigger`
+    /// (runtime/selection.rs).
+    fn note_runtime_actors(
+        &mut self,
+        id: crate::storyboard::ActionId,
+        actors: &Actors,
+        start_trigger: Option<&Trigger>,
+    ) {
         let selections = &self.scenario.entities.entity_selections;
-        if refs.iter().any(|r| selections.iter().any(|s| &s.name == r)) {
-            self.selection_actors.push((id, refs.to_vec()));
+        let refs = &actors.entity_refs;
+        let triggering = actors.select_triggering_entities.then(|| {
+            start_trigger
+                .iter()
+                .flat_map(|t| &t.condition_groups)
+                .map(|g| g.conditions.iter().map(|c| c.pos.clone()).collect())
+                .collect()
+        });
+        if triggering.is_some() || refs.iter().any(|r| selections.iter().any(|s| &s.name == r)) {
+            let spec = super::selection::ActorSpec {
+                refs: refs.to_vec(),
+                triggering,
+            };
+            self.selection_actors.push((id, spec));
         }
     }
 

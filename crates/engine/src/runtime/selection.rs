@@ -13,6 +13,21 @@
 //! * as ManeuverGroup actors: each private action runs per member, the members taken when the
 //!   action starts.
 //!
+//! `Actors/@selectTriggeringEntities` (§7.3.1 "ManeuverGroups and Actors"): when true, the
+//! entities that made the parent Act's start trigger fire are actors too, in addition to (the
+//! union with) the EntityRefs. "Entities become actors if … their states are used by the
+//! logical expressions in Conditions, the Conditions using the states evaluate to true, [and
+//! are] contained in ConditionGroups that evaluate to true", the condition groups being those
+//! of the parent Act. oscsim reads this as: the TriggeringEntities of the Act's
+//! ByEntityConditions for which the EntityCondition held when the Act started, over the
+//! condition groups whose conditions were all true then. Each condition reports its raw value
+//! (and a ByEntityCondition those entities) at every evaluation
+//! ([`Selections::note_triggering`]); an Act's start trigger is evaluated only until the Act
+//! starts, so its last report is the one of the firing step.
+//! When a condition's `delay` or edge makes the group fire although no group holds at that
+//! moment, every group's entities are taken (the per-entity history a delay shifts is not
+//! kept). An Act without a start trigger starts with its Story and selects no one.
+//!
 //! §7.2.2.5 restricts references that need one position, lane or box: a RelativeTargetLane,
 //! RelativeTargetLaneOffset, RelativeTargetSpeed, Longitudinal/LateralDistanceAction or
 //! SpeedProfileAction reference, and the reference entity of TimeHeadway, TimeToCollision,
@@ -22,7 +37,8 @@
 //! rejected by the scenario loader.
 
 use std::borrow::Cow;
-use std::collections::BTreeMap;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, HashMap};
 
 use scenario::{
     Action, ActionKind, Condition, ConditionKind, EntityCondition, EntityObject, EntitySelection,
@@ -35,12 +51,28 @@ use super::error::RuntimeError;
 use super::world::World;
 use crate::storyboard::ActionId;
 
+/// The actors of the actions of one ManeuverGroup, worked out when each action starts.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct ActorSpec {
+    /// The EntityRefs of `Actors` (objects or selections).
+    pub refs: Vec<String>,
+    /// With `selectTriggeringEntities`: the positions of the conditions of the parent Act's
+    /// start trigger, per condition group.
+    pub triggering: Option<Vec<Vec<SourcePos>>>,
+}
+
+/// The last report of one ByEntityCondition: its raw value and the entities it held for.
+type Report = (bool, Vec<String>);
+
 /// The scenario's entity selections, as declared.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Selections {
     defs: Vec<EntitySelection>,
-    /// Actions whose actors name a selection, with the ManeuverGroup's actor names.
-    actors: BTreeMap<ActionId, Vec<String>>,
+    /// Actions whose actors name a selection or select triggering entities.
+    actors: BTreeMap<ActionId, ActorSpec>,
+    /// The last report of each condition, by its position in the file. Written while
+    /// conditions are evaluated (they see the world read-only).
+    reports: RefCell<HashMap<SourcePos, Report>>,
 }
 
 impl Selections {
@@ -49,30 +81,73 @@ impl Selections {
         Selections {
             defs: scenario.entities.entity_selections.clone(),
             actors: BTreeMap::new(),
+            reports: RefCell::new(HashMap::new()),
         }
     }
 
-    /// Records the actions whose ManeuverGroup actors name a selection.
-    pub(crate) fn set_actors(&mut self, actors: Vec<(ActionId, Vec<String>)>) {
+    /// Records the actions whose ManeuverGroup actors name a selection or select triggering
+    /// entities.
+    pub(crate) fn set_actors(&mut self, actors: Vec<(ActionId, ActorSpec)>) {
         self.actors = actors.into_iter().collect();
     }
 
-    /// The actors of action `id` now, if its ManeuverGroup names a selection: objects as
-    /// named, selections by their current members, each once, in the order written.
+    /// Keeps the raw value of the condition at `pos` and the triggering entities it held for
+    /// (module doc).
+    pub(crate) fn note_triggering(&self, pos: &SourcePos, value: bool, held: &[String]) {
+        self.reports
+            .borrow_mut()
+            .insert(pos.clone(), (value, held.to_vec()));
+    }
+
+    /// The actors of action `id` now, if its ManeuverGroup names a selection or selects
+    /// triggering entities: objects as named, selections by their current members, then the
+    /// triggering entities, each once, in that order.
     pub(crate) fn actors_now(&self, id: ActionId, world: &World) -> Option<Vec<EntityId>> {
-        let refs = self.actors.get(&id)?;
+        let spec = self.actors.get(&id)?;
         let mut out: Vec<EntityId> = Vec::new();
-        for r in refs {
-            let ids = self
-                .members(world, r)
-                .unwrap_or_else(|| world.id(r).into_iter().collect());
+        let mut add = |ids: Vec<EntityId>| {
             for id in ids {
                 if !out.contains(&id) {
                     out.push(id);
                 }
             }
+        };
+        for r in &spec.refs {
+            add(self
+                .members(world, r)
+                .unwrap_or_else(|| world.id(r).into_iter().collect()));
+        }
+        if let Some(groups) = &spec.triggering {
+            let names = self.triggering_entities(groups);
+            add(names
+                .iter()
+                .filter_map(|n| world.id(n))
+                .filter(|&id| world.entity(id).placed)
+                .collect());
         }
         Some(out)
+    }
+
+    /// The triggering entities of a start trigger with these condition `groups` as last
+    /// reported (module doc): over the groups whose conditions all held, else over all.
+    fn triggering_entities(&self, groups: &[Vec<SourcePos>]) -> Vec<String> {
+        let reports = self.reports.borrow();
+        let holds = |g: &Vec<SourcePos>| g.iter().all(|p| reports.get(p).is_some_and(|r| r.0));
+        let firing: Vec<&Vec<SourcePos>> = groups.iter().filter(|g| holds(g)).collect();
+        let chosen = if firing.is_empty() {
+            groups.iter().collect()
+        } else {
+            firing
+        };
+        let mut names: Vec<String> = Vec::new();
+        for pos in chosen.into_iter().flatten() {
+            for n in reports.get(pos).map_or(&[][..], |r| &r.1[..]) {
+                if !names.contains(n) {
+                    names.push(n.clone());
+                }
+            }
+        }
+        names
     }
 
     fn find(&self, name: &str) -> Option<&EntitySelection> {

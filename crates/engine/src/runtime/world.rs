@@ -239,6 +239,10 @@ impl ConditionContext for ConditionWorld<'_> {
         self.world.signal_phases.get(name).map(String::as_str)
     }
 
+    fn note_triggering(&self, pos: &scenario::SourcePos, value: bool, held: &[String]) {
+        self.world.selections.note_triggering(pos, value, held);
+    }
+
     /// The time of day of the EnvironmentAction in force (seconds since the epoch): its
     /// dateTime, plus the simulation time since it was set when its `animation` is true.
     fn time_of_day(&self) -> Option<f64> {
