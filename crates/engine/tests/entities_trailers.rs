@@ -271,17 +271,17 @@ fn frames_carry_the_trailer_of_each_tow() {
 }
 
 /// A TeleportAction on the tow (at 1.05 s, to s = 160 on the straight that runs along +y from
-/// (90, 40) after the curve) takes the chain along in line: in the frame of 1.10 s the truck is
-/// at s = 160.5, x = 90 + 1.75 (lane −1 lies to the right, +x), y = 40 + (160.5 − 112.832)
-/// = 87.668, and the trailers' axles 7 and 14 m behind it on x = 91.75, heading π/2, at the
-/// truck's speed 10 m/s.
+/// (90, 40) after the curve) takes the chain along in line: in the frame of 1.10 s, the end of
+/// the teleport's step, the truck stands at its target (runtime/actions/teleport.rs) s = 160,
+/// x = 90 + 1.75 (lane −1 lies to the right, +x), y = 40 + (160 − 112.832) = 87.168, and the
+/// trailers' axles 7 and 14 m behind it on x = 91.75, heading π/2, at the truck's speed 10 m/s.
 #[test]
 fn teleported_tow_takes_its_trailers_along_in_line() {
     const TOLERANCE: f64 = 1e-6;
     let mut engine = load(&file("trailer_teleport.xosc"));
     let mut frames = Recorder::default();
     engine.run(&mut frames, &mut Vec::new()).expect("runs");
-    let y = 40.0 + (160.5 - (50.0 + 20.0 * std::f64::consts::PI));
+    let y = 40.0 + (160.0 - (50.0 + 20.0 * std::f64::consts::PI));
     for (name, back) in [("Truck", 0.0), ("Trailer1", 7.0), ("Trailer2", 14.0)] {
         let r = frames.at(name, 1.1);
         assert!(

@@ -35,9 +35,10 @@ fn time_of_day_condition_follows_the_environment_clock() {
         "a frozen clock never passes noon"
     );
     let noon = start_time(&events, "NoonOrLater").expect("NoonOrLater starts");
-    // An instantaneous action acts when its Event starts, inside the storyboard's trigger walk
-    // (runtime/step.rs); "NoonOrLater" comes after "Frozen" in document order, so its trigger
-    // already sees the frozen noon in the same step. Whether all triggers of a step should see
-    // the state at the step's start instead is an open question of the runtime (issue 5 note).
+    // The time of day is a value of the scenario, not a measurement of an entity: an
+    // EnvironmentAction sets it when its Event starts, and conditions evaluated after it in the
+    // same step read the new value (runtime/trigger_view.rs: only the entities are read as the
+    // step began). "NoonOrLater" comes after "Frozen" in document order, so it starts in the
+    // same step.
     assert!((noon - 12.0).abs() < 1e-9, "NoonOrLater started at {noon}");
 }

@@ -11,6 +11,7 @@
 
 use std::cell::RefCell;
 
+use super::trigger_view::TriggerView;
 use super::world::{ConditionWorld, World};
 use crate::condition::{evaluate, ConditionErrorKind, ConditionStates};
 use crate::output::EventRecord;
@@ -24,6 +25,8 @@ pub(crate) struct Conditions<'a> {
     /// Per condition: its failure has been logged.
     pub reported: &'a mut Vec<bool>,
     pub log: &'a RefCell<Vec<EventRecord>>,
+    /// The world as this step's triggers see it (runtime/trigger_view.rs).
+    pub view: &'a RefCell<TriggerView>,
 }
 
 impl ConditionSource for Conditions<'_> {
@@ -32,14 +35,18 @@ impl ConditionSource for Conditions<'_> {
         let Some(condition) = self.conditions.get(index) else {
             return false;
         };
-        let world = self.world.borrow();
-        let ctx = ConditionWorld {
-            world: &world,
-            storyboard: *storyboard,
-        };
-        // Selections among the triggering entities stand for their members now.
-        let expanded = world.selections.expand_condition(&world, condition);
-        match evaluate(&expanded, &ctx, self.states.get_mut(id)) {
+        let mut world = self.world.borrow_mut();
+        let state = self.states.get_mut(id);
+        let result = self.view.borrow_mut().evaluate(&mut world, |world| {
+            let ctx = ConditionWorld {
+                world,
+                storyboard: *storyboard,
+            };
+            // Selections among the triggering entities stand for their members now.
+            let expanded = world.selections.expand_condition(world, condition);
+            evaluate(&expanded, &ctx, state)
+        });
+        match result {
             Ok(v) => v,
             Err(e) => {
                 if !self.reported[index] {

@@ -11,6 +11,7 @@
 //! | `lanes` | lane look-up, curvature, lane arithmetic, following lanes through links |
 //! | `build` | scenario model → world, storyboard description, action and condition tables |
 //! | `conditions` | the storyboard's `ConditionSource` |
+//! | `trigger_view` | the step-start world that all triggers of a step see |
 //! | `shapes` | transition shapes and dimensions |
 //! | `actions/*` | one file per action kind, and the `ActionHost` |
 //! | `controller/default` | the default controller |
@@ -34,6 +35,7 @@ mod shapes;
 mod step;
 mod traffic;
 mod trailer;
+mod trigger_view;
 mod world;
 
 pub use actions::ControllerOverrides;

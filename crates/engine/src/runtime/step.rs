@@ -13,6 +13,7 @@ use super::conditions::Conditions;
 use super::config::EngineConfig;
 use super::controller::move_entity;
 use super::error::{RuntimeError, RuntimeErrorKind};
+use super::trigger_view::TriggerView;
 use super::world::World;
 use crate::condition::ConditionStates;
 use crate::output::{EventRecord, EventSink, Frame, FrameSink};
@@ -155,7 +156,9 @@ impl Engine {
     /// 1. `triggers`: [`Storyboard::step`] at t: in the first step the Init actions start (and
     ///    the instantaneous ones, such as TeleportAction and step-shaped SpeedAction, take effect
     ///    and end) before any story trigger is evaluated; then stop triggers, start triggers and
-    ///    completions with the conditions measured at t. Actions started here take effect now.
+    ///    completions with the conditions measured at t. Actions started here take effect now;
+    ///    every trigger of the step sees the world as it was when trigger evaluation began
+    ///    (runtime/trigger_view.rs).
     /// 2. `actions`: every running action advances to t + dt (sets the speed and lateral target
     ///    the controllers use over the step) and may end or be replaced in its domain.
     /// 3. `controllers`: the default controller moves each entity over [t, t + dt], longitudinal
@@ -179,6 +182,7 @@ impl Engine {
         let time = self.time();
         let log = RefCell::new(Vec::new());
         let mut errors = Vec::new();
+        let view = RefCell::new(TriggerView::default());
 
         // Stage 1: triggers and transitions.
         let clock = Instant::now();
@@ -190,12 +194,15 @@ impl Engine {
                 states: &mut self.condition_states,
                 reported: &mut self.reported,
                 log: &log,
+                view: &view,
             };
             let mut host = HostCell {
                 table: &mut self.actions,
                 world: &self.world,
                 log: &log,
                 errors: &mut errors,
+                view: &view,
+                story: self.step > 0,
                 time,
                 dt,
             };
@@ -332,6 +339,9 @@ struct HostCell<'a> {
     world: &'a RefCell<World>,
     log: &'a RefCell<Vec<EventRecord>>,
     errors: &'a mut Vec<RuntimeError>,
+    view: &'a RefCell<TriggerView>,
+    /// The Init actions have started: actions started now belong to the Stories.
+    story: bool,
     time: f64,
     dt: f64,
 }
@@ -339,12 +349,15 @@ struct HostCell<'a> {
 impl HostCell<'_> {
     fn with<R>(&mut self, f: impl FnOnce(&mut Host<'_>) -> R) -> R {
         let mut world = self.world.borrow_mut();
+        // Conditions still to be evaluated in this step see the world as it was before.
+        self.view.borrow_mut().before_change(&world);
         let mut events = self.log.borrow_mut();
         let mut host = Host {
             table: self.table,
             world: &mut world,
             events: &mut events,
             errors: self.errors,
+            story: self.story,
             time: self.time,
         };
         f(&mut host)
@@ -362,6 +375,10 @@ impl crate::storyboard::ActionHost for HostCell<'_> {
 
     fn status(&self, id: crate::storyboard::ActionId) -> crate::storyboard::ActionStatus {
         super::actions::status(self.table, id, self.time + self.dt)
+    }
+
+    fn init_complete(&mut self) {
+        self.story = true;
     }
 }
 

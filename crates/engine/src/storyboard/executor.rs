@@ -181,6 +181,7 @@ impl Storyboard {
             self.start(self.nodes[init.index()].children[i], ctx);
         }
         self.completions(init, ctx);
+        ctx.actions.init_complete();
         self.start(self.root, ctx);
     }
 

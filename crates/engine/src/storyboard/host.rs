@@ -43,4 +43,7 @@ pub trait ActionHost {
     fn stop(&mut self, id: ActionId);
     /// The status of action `id`, which the storyboard started and has not stopped.
     fn status(&self, id: ActionId) -> ActionStatus;
+    /// Called once, in the first step, when the Init actions have started and before the
+    /// storyboard itself starts (§8.5.1): actions started from then on belong to the Stories.
+    fn init_complete(&mut self) {}
 }

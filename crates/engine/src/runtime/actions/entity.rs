@@ -36,7 +36,7 @@ pub(crate) fn apply(
                 e.longitudinal_action = None;
                 e.lateral_action = None;
             }
-            teleport::start(world, id, position)
+            teleport::start(world, id, position, false)
         }
         None => {
             leave(world, id);

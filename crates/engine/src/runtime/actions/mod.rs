@@ -60,7 +60,6 @@ pub(crate) enum Part {
     LateralDistance(distance::LateralState),
     Trajectory(follow_trajectory::TrajectoryState),
     Synchronize(synchronize::SyncState),
-    Light(appearance::LightTransition),
     Done(ActionStatus),
 }
 
@@ -128,7 +127,6 @@ impl ActionTable {
                     Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
                     Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
                     Part::Synchronize(s) => synchronize::step(world, actor, s, dt),
-                    Part::Light(s) => s.step(now, dt),
                 };
                 if next != ActionStatus::Running {
                     release(world, actor, id);
@@ -155,7 +153,7 @@ impl ActionTable {
 /// trajectory hands the actor back to the default controller where it stands.
 fn interrupt(world: &mut World, actor: EntityId, part: &mut Part) {
     match part {
-        Part::Lateral(_) | Part::LateralDistance(_) => lane_change::abandon(world, actor),
+        Part::Lateral(_) => lane_change::abandon(world, actor),
         Part::Trajectory(_) => follow_trajectory::release(world, actor, false),
         _ => {}
     }
@@ -179,6 +177,8 @@ pub(crate) struct Host<'a> {
     pub world: &'a mut World,
     pub events: &'a mut Vec<EventRecord>,
     pub errors: &'a mut Vec<RuntimeError>,
+    /// The Init actions have started: this action belongs to a Story.
+    pub story: bool,
     pub time: f64,
 }
 
@@ -212,7 +212,7 @@ impl Host<'_> {
         let time = self.time;
         match action {
             PrivateAction::Teleport(position) => {
-                teleport::start(self.world, actor, position)?;
+                teleport::start(self.world, actor, position, self.story)?;
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Longitudinal(l) => {
@@ -246,8 +246,7 @@ impl Host<'_> {
                 }
             }
             PrivateAction::Visibility(v) => {
-                let name = self.table.slots[id.0 as usize].name.clone();
-                visibility::start(self.world, actor, v, &name, time, self.events);
+                visibility::start(self.world, actor, v);
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Synchronize(s) => {
@@ -266,8 +265,8 @@ impl Host<'_> {
             PrivateAction::Routing(r) => self.start_routing(id, r, actor),
             PrivateAction::Appearance(a) => {
                 let name = self.table.slots[id.0 as usize].name.clone();
-                let transition = appearance::start(self.world, actor, a, &name, time, self.events);
-                Ok(transition.map_or(Part::Done(ActionStatus::Ended), Part::Light))
+                appearance::start(self.world, actor, a, &name, time, self.events);
+                Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Trailer(t) => {
                 trailer::start(self.world, actor, t, pos)?;
@@ -500,10 +499,8 @@ pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> Action
     for part in &slot.parts {
         let finishing = match part {
             Part::Speed(s) => s.completes_by(step_end),
-            Part::Profile(s) => s.completes_by(step_end),
             Part::Lateral(s) => s.completes_by(step_end),
             Part::Trajectory(s) => s.completes_by(step_end),
-            Part::Light(s) => s.completes_by(step_end),
             _ => false,
         };
         if finishing {
