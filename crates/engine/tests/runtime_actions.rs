@@ -95,7 +95,9 @@ fn teleport_to_lane_position_is_lane_pose() {
 /// lane_offset_sinusoidal.xosc: offset 0 → 1.0 m, sinusoidal, maxLateralAcc a = π²/8 m/s².
 /// A sinusoidal change d over T peaks at d·π²/(2T²) lateral acceleration, so T = π·√(d/(2a))
 /// = 2 s, starting at 1.0 s: offset ½ at 2.0 s, 1 at 3.0 s. At half time the lateral speed is
-/// d·(π/2)/T = π/4 m/s, at 20 m/s a slope of π/80, so the heading is atan(π/80) (road heading 0).
+/// d·(π/2)/T = π/4 m/s, a share π/80 of the 20 m/s along the path, so the path leaves the lane
+/// at asin(π/80) and that is the heading (road heading 0; runtime_lateral.rs shows the
+/// heading follows the motion).
 #[test]
 fn lane_offset_sinusoidal_duration_from_max_lateral_acc() {
     let (_, frames, _) = run("lane_offset_sinusoidal.xosc");
@@ -111,8 +113,8 @@ fn lane_offset_sinusoidal_duration_from_max_lateral_acc() {
     assert_abs_diff_eq!(offset(2.0), 0.5, epsilon = EXACT);
     assert_abs_diff_eq!(offset(3.0), 1.0, epsilon = EXACT);
     assert_abs_diff_eq!(offset(3.5), 1.0, epsilon = EXACT);
-    let slope = std::f64::consts::PI / 80.0;
-    assert_abs_diff_eq!(frames.at("Ego", 2.0).h, slope.atan(), epsilon = EXACT);
+    let share = std::f64::consts::PI / 80.0;
+    assert_abs_diff_eq!(frames.at("Ego", 2.0).h, share.asin(), epsilon = EXACT);
 }
 
 /// trajectory_reverse.xosc: Init sets −5 m/s, then FollowTrajectoryAction (no time reference)

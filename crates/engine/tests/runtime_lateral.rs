@@ -63,3 +63,28 @@ fn lane_change_over_a_distance_follows_the_cubic_of_the_distance_along_the_road(
     let half = half.unwrap_or(f64::NAN);
     assert_abs_diff_eq!(half - t0, 1.75, epsilon = 3e-6);
 }
+
+/// lateral_slow_heading.xosc: a sinusoidal lane change of Δ = 3.07 m in T = 2 s at 5 m/s,
+/// starting at 1.0 s, on a road along +x (road heading 0).
+///
+/// At half time, 2.0 s, the lateral speed peaks at Δ·π/(2T) = 3.07·π/4 = 2.411172 m/s. The
+/// speed is the speed along the path, so the path leaves the lane at θ with
+/// sin θ = 2.411172/5 = 0.482234 and θ = asin(0.482234) = 0.503204 rad; the heading is θ
+/// (the longitudinal speed is 5·cos θ = 4.380 m/s, and 2.411172/4.380 = tan θ). Reading the
+/// lateral speed over the whole speed as the slope would give atan(0.482234) = 0.449334 rad,
+/// 3° off the direction the car moves in. The frames either side, 1.95 s and 2.05 s, show
+/// that direction: their chord's slope Δy/Δx is tan θ up to the O(dt²) change of θ around its
+/// peak, (5·0.05)²·|θ″| ≈ 10⁻³.
+#[test]
+fn heading_follows_the_motion_during_a_slow_lane_change() {
+    let (_, frames, _) = run("lateral_slow_heading.xosc");
+    let theta = (3.07 * std::f64::consts::PI / 4.0 / 5.0).asin();
+    assert_abs_diff_eq!(theta, 0.503_203_571_711_707_8, epsilon = EXACT);
+    let mid = frames.at("Ego", 2.0);
+    assert_abs_diff_eq!(mid.h, theta, epsilon = EXACT);
+    let (before, after) = (frames.at("Ego", 1.95), frames.at("Ego", 2.05));
+    let chord = ((after.y - before.y) / (after.x - before.x)).atan();
+    assert_abs_diff_eq!(chord, theta, epsilon = 1e-3);
+    // Zero slope at both ends (§7.7.2, sinusoidal): the heading is the road's again at 3.0 s.
+    assert_abs_diff_eq!(frames.at("Ego", 3.5).h, 0.0, epsilon = EXACT);
+}

@@ -180,9 +180,16 @@ pub(crate) fn begin(
     }))
 }
 
-/// Sets the blend weight for the step's end, `now + dt`, and its rate: the lateral share of
-/// the motion there (lateral speed / speed) per metre of Δt, which the default controller
-/// turns into the step's heading and the part of the step left along the road.
+/// Sets the blend weight for the step's end, `now + dt`, and its rate per metre along the
+/// lane: (Δt·dw/ds) is the slope tan θ of the path against the lane there, from which the
+/// default controller takes the heading (θ off the lane) and the step's part along the road
+/// (cos θ of it; the speed is the speed along the path).
+///
+/// Under a `time` span the lateral speed is Δ·f′(p)/T, so sin θ = Δ·f′(p)/(T·v): the heading
+/// of a car that changes lane at 5 m/s by 3.5 m in 2 s (sinusoidal, peak lateral speed
+/// 3.5·π/4 = 2.75 m/s) peaks at asin(0.550) = 0.582 rad, not atan(0.550) = 0.503 rad. esmini
+/// takes the same angle, atan2(lateral step, longitudinal step), but from the lateral speed at
+/// the step's start, so its heading lags the motion by one step.
 ///
 /// A `time` span runs on the clock. A `distance` span runs on the distance travelled along the
 /// road (§7.7.2 DynamicsDimension `distance`; for a lateral transition the lateral position is
@@ -204,23 +211,24 @@ pub(crate) fn step(
         e.speed
     }
     .abs();
-    let (p, share) = match s.span {
+    let (p, tan) = match s.span {
         Span::Instant => (1.0, 0.0),
         Span::Time(t) => {
             let p = ((now + dt - s.start_time) / t).min(1.0);
             let (_, df) = shape_value(s.shape, p);
-            // Lateral speed Δ·f′/T over the speed; none at a standstill.
-            let share = if speed > 1e-9 {
-                s.delta * df / (t * speed)
+            // sin θ = lateral speed Δ·f′/T over the speed (at most 1: sideways); no heading
+            // change at a standstill.
+            let sin = if speed > 1e-9 {
+                (s.delta * df / (t * speed)).clamp(-1.0, 1.0)
             } else {
                 0.0
             };
-            (p, share)
+            (p, sin / (1.0 - sin * sin).sqrt().max(1e-9))
         }
         Span::Distance(d) => {
-            let (along, share) = along_road(s, d, speed * dt, e.lateral_slope);
+            let (along, tan) = along_road(s, d, speed * dt, e.lateral_slope);
             s.along += along;
-            ((s.along / d).min(1.0), share)
+            ((s.along / d).min(1.0), tan)
         }
     };
     let (f, _) = shape_value(s.shape, p);
@@ -238,7 +246,7 @@ pub(crate) fn step(
     if let Some(b) = &mut track.blend {
         b.weight = f;
         b.weight_per_m = if s.delta.abs() > 1e-12 {
-            share / s.delta
+            tan / s.delta
         } else {
             0.0
         };
@@ -246,31 +254,31 @@ pub(crate) fn step(
     ActionStatus::Running
 }
 
-/// The part along the road of a step of `length` m of a distance span `d`, and the lateral
-/// share sin θ the step ends with, from the share `x0` it starts with.
+/// The part along the road of a step of `length` m of a distance span `d`, and the slope
+/// tan θ of the path the step ends with, from the lateral share sin θ₀ = `x0` it starts with.
 ///
 /// The default controller moves a step of length ℓ whose lateral share goes from x₀ to x₁ by
 /// ℓ·√(1 − x̄²) along the road, x̄ = (x₀ + x₁)/2 (controller::default). At the step's end the
-/// path's slope against the road is tan θ = Δ·f′(p)/d, p = (along + ℓ·√(1 − x̄²))/d, so x₁
-/// depends on the step it ends: a fixed point, contracting by about ℓ·x̄·Δ·|f″|/(2d²) (2·10⁻⁴
-/// for 3.5 m over 50 m in 0.5 m steps), so four rounds leave it at rounding level.
+/// path's slope against the road is tan θ = Δ·f′(p)/d, p = (along + ℓ·√(1 − x̄²))/d, and
+/// x₁ = sin θ, so x₁ depends on the step it ends: a fixed point, contracting by about
+/// ℓ·x̄·Δ·|f″|/(2d²) (2·10⁻⁴ for 3.5 m over 50 m in 0.5 m steps), so four rounds leave it at
+/// rounding level.
 fn along_road(s: &LateralState, d: f64, length: f64, x0: f64) -> (f64, f64) {
     let along = |x1: f64| {
         let mean = (0.5 * (x0 + x1)).clamp(-1.0, 1.0);
         length * (1.0 - mean * mean).sqrt()
     };
-    let share_at = |a: f64| {
+    let tan_at = |a: f64| {
         let (_, df) = shape_value(s.shape, ((s.along + a) / d).min(1.0));
-        let tan = s.delta * df / d;
-        tan / (1.0 + tan * tan).sqrt()
+        s.delta * df / d
     };
     let mut a = along(x0);
-    let mut x1 = share_at(a);
+    let mut tan = tan_at(a);
     for _ in 0..4 {
-        a = along(x1);
-        x1 = share_at(a);
+        a = along(tan.atan().sin());
+        tan = tan_at(a);
     }
-    (a, x1)
+    (a, tan)
 }
 
 /// A lateral action stopped midway: the actor keeps the lateral position it has, in the lane

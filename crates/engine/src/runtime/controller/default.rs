@@ -181,7 +181,8 @@ fn lateral(road: &Road, track: &LaneTrack) -> Option<(Real, Real, Real)> {
     let slope = (1.0 - b.weight) * from.d_center()
         + b.weight * span.d_center()
         + (target - t0) * b.weight_per_m * sign(track.direction);
-    Some((t, slope, (target - t0) * b.weight_per_m))
+    // (target − t0)·dw/ds is the path's slope tan θ against the lane; its share is sin θ.
+    Some((t, slope, ((target - t0) * b.weight_per_m).atan().sin()))
 }
 
 /// Sets t, pose and road position of `e` from its track after a move.
