@@ -60,6 +60,7 @@ pub(crate) enum Part {
     LateralDistance(distance::LateralState),
     Trajectory(follow_trajectory::TrajectoryState),
     Synchronize(synchronize::SyncState),
+    Light(appearance::LightTransition),
     Done(ActionStatus),
 }
 
@@ -127,6 +128,7 @@ impl ActionTable {
                     Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
                     Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
                     Part::Synchronize(s) => synchronize::step(world, actor, s, dt),
+                    Part::Light(s) => s.step(now, dt),
                 };
                 if next != ActionStatus::Running {
                     release(world, actor, id);
@@ -153,7 +155,7 @@ impl ActionTable {
 /// trajectory hands the actor back to the default controller where it stands.
 fn interrupt(world: &mut World, actor: EntityId, part: &mut Part) {
     match part {
-        Part::Lateral(_) => lane_change::abandon(world, actor),
+        Part::Lateral(_) | Part::LateralDistance(_) => lane_change::abandon(world, actor),
         Part::Trajectory(_) => follow_trajectory::release(world, actor, false),
         _ => {}
     }
@@ -246,7 +248,8 @@ impl Host<'_> {
                 }
             }
             PrivateAction::Visibility(v) => {
-                visibility::start(self.world, actor, v);
+                let name = self.table.slots[id.0 as usize].name.clone();
+                visibility::start(self.world, actor, v, &name, time, self.events);
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Synchronize(s) => {
@@ -265,8 +268,8 @@ impl Host<'_> {
             PrivateAction::Routing(r) => self.start_routing(id, r, actor),
             PrivateAction::Appearance(a) => {
                 let name = self.table.slots[id.0 as usize].name.clone();
-                appearance::start(self.world, actor, a, &name, time, self.events);
-                Ok(Part::Done(ActionStatus::Ended))
+                let transition = appearance::start(self.world, actor, a, &name, time, self.events);
+                Ok(transition.map_or(Part::Done(ActionStatus::Ended), Part::Light))
             }
             PrivateAction::Trailer(t) => {
                 trailer::start(self.world, actor, t, pos)?;
@@ -499,8 +502,10 @@ pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> Action
     for part in &slot.parts {
         let finishing = match part {
             Part::Speed(s) => s.completes_by(step_end),
+            Part::Profile(s) => s.completes_by(step_end),
             Part::Lateral(s) => s.completes_by(step_end),
             Part::Trajectory(s) => s.completes_by(step_end),
+            Part::Light(s) => s.completes_by(step_end),
             _ => false,
         };
         if finishing {
