@@ -15,7 +15,7 @@
 mod runtime_support;
 
 use approx::assert_abs_diff_eq;
-use engine::{EngineConfig, EventRecord};
+use engine::{Engine, EngineConfig, EventRecord};
 use runtime_support::{corpus, end_time, file, run_with, Recorder};
 
 /// Tolerance for speeds that are a few f64 operations from the closed form.
@@ -183,6 +183,29 @@ fn entries_without_time_or_with_time_zero() {
     for action in ["FollowProfile", "PositionProfile"] {
         assert_abs_diff_eq!(end_step(&events, action), 4.45, epsilon = EXACT);
     }
+}
+
+/// XSD SpeedProfileEntry@time has the range [0..inf[: a negative time ($T2 = −1, the second
+/// entry) stops the run with an error naming it and the Action's place (line 72, column 15 of
+/// speed_profile_modes.xosc), instead of being read as a missing time.
+#[test]
+fn negative_entry_time_is_an_error_with_its_place() {
+    let path = file("speed_profile_modes.xosc");
+    let params = [("T2".to_owned(), "-1".to_owned())];
+    let mut engine = Engine::load(&path, &params, EngineConfig::default())
+        .unwrap_or_else(|e| panic!("speed_profile_modes.xosc does not load: {e}"));
+    let mut frames = Recorder::default();
+    let mut events = Vec::new();
+    let Err(error) = engine.run(&mut frames, &mut events) else {
+        panic!("a negative SpeedProfileEntry time ran");
+    };
+    let message = error.to_string();
+    assert!(
+        message.contains(
+            "expected a SpeedProfileEntry time of 0 s or more, found time -1 in SpeedProfileEntry 2"
+        ) && message.contains("speed_profile_modes.xosc:72:15"),
+        "{message}"
+    );
 }
 
 /// esmini's speed-profile.xosc (Car1 follow, Car2 position, the same four entries and

@@ -147,6 +147,18 @@ pub(crate) fn start(
     else {
         return Err(RuntimeError::unsupported("this LongitudinalAction", pos));
     };
+    // XSD SpeedProfileEntry@time: "Range: [0..inf[".
+    if let Some((index, time)) = entries
+        .iter()
+        .enumerate()
+        .find_map(|(i, x)| x.time.filter(|t| *t < 0.0).map(|t| (i, t)))
+    {
+        return Err(RuntimeError::at(
+            "a SpeedProfileEntry time of 0 s or more",
+            format!("time {time} in SpeedProfileEntry {}", index + 1),
+            pos,
+        ));
+    }
     // Relative entries are offsets from the reference's speed when the action starts.
     let base = match reference {
         Some(name) => world.entity(entity_ref(world, name, pos)?).speed,
@@ -174,13 +186,14 @@ pub(crate) fn start(
 }
 
 /// The profile's vertices (time, speed), starting at (`now`, `v0`): each target `time` seconds
-/// after the previous one, or, without a usable time, after |Δv| / the acceleration limit.
+/// after the previous one (times are checked ≥ 0 and the reader admits only finite numbers),
+/// or, without a time, after |Δv| / the acceleration limit.
 fn schedule(now: f64, v0: f64, targets: &[(Option<f64>, f64)], limits: &Limits) -> Vec<(f64, f64)> {
     let mut vertices = vec![(now, v0)];
     let (mut t, mut v) = (now, v0);
     for &(time, target) in targets {
         t += match time {
-            Some(d) if d.is_finite() && d >= 0.0 => d,
+            Some(d) => d,
             _ => (target - v).abs() / limits.for_change(target - v),
         };
         v = target;
