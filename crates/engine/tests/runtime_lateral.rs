@@ -155,3 +155,27 @@ fn alks_cut_out_lane_change_is_esmini_s_one_step_earlier() {
     }
     assert_eq!(compared, 23, "reference rows 2.3 s to 4.5 s");
 }
+
+/// lateral_offset_linear.xosc: LaneOffsetAction, linear, 0 → 1.5 m, maxLateralAcc a = 1 m/s²,
+/// from 1.0 s at 20 m/s.
+///
+/// A linear change has an infinite lateral acceleration at its ends whatever its duration
+/// (§7.7.2.2 LaneOffsetActionDynamics gives maxLateralAcc, the shapes of §7.7.2 give no more);
+/// oscsim takes the cubic's duration, T = √(6Δ/a) = √(6·1.5/1) = 3 s, as esmini does
+/// (lane_offset.rs). So the offset is 1.5·(2.5 − 1)/3 = 0.75 m at 2.5 s and 1.5 m at 4.0 s.
+/// The lateral speed is Δ/T = 0.5 m/s all along, sin θ = 0.5/20 = 0.025: heading asin(0.025).
+#[test]
+fn linear_lane_offset_takes_the_cubic_duration() {
+    let (_, frames, events) = run("lateral_offset_linear.xosc");
+    let offset = |time: f64| frames.at("Ego", time).road.clone().unwrap_or_default().4;
+    assert_abs_diff_eq!(offset(1.0), 0.0, epsilon = EXACT);
+    assert_abs_diff_eq!(offset(2.5), 0.75, epsilon = EXACT);
+    assert_abs_diff_eq!(offset(4.0), 1.5, epsilon = EXACT);
+    assert_abs_diff_eq!(offset(4.5), 1.5, epsilon = EXACT);
+    assert_abs_diff_eq!(frames.at("Ego", 2.5).h, 0.025f64.asin(), epsilon = EXACT);
+    assert_abs_diff_eq!(frames.at("Ego", 4.5).h, 0.0, epsilon = EXACT);
+    // The step from 3.95 s reaches p = 1 at 4.0 s and ends the action; the log carries the
+    // step's start.
+    let ended = runtime_support::end_time(&events, "Action").unwrap_or(f64::NAN);
+    assert_abs_diff_eq!(ended, 3.95, epsilon = EXACT);
+}

@@ -4,8 +4,10 @@
 //!
 //! The peak lateral acceleration of a change Δ over duration T is Δ·π²/(2T²) for sinusoidal
 //! and 6Δ/T² for cubic, so T = π·√(Δ/(2a)) and T = √(6Δ/a). A linear change has unbounded
-//! acceleration at its ends; oscsim gives it T = 2·√(Δ/a), the time of an accelerate-brake
-//! manoeuvre at a. Without `maxLateralAcc` a = 0.5 m/s² (a gentle, comfortable value).
+//! acceleration at its ends whatever its duration, and the standard gives it none; oscsim
+//! takes the cubic's, T = √(6Δ/a), as esmini does (TransitionDynamics::
+//! GetTargetParamValByPrimPrimPeak), so that the two agree. Without `maxLateralAcc`
+//! a = 0.5 m/s², esmini's default too (a gentle, comfortable value).
 //! `continuous="true"` keeps the action running (holding the offset) until it is replaced.
 
 use scenario::{
@@ -73,8 +75,7 @@ pub(crate) fn start(
     let delta = (offset - current).abs();
     let duration = match dynamics_shape {
         DynamicsShape::Sinusoidal => std::f64::consts::PI * (delta / (2.0 * a)).sqrt(),
-        DynamicsShape::Cubic => (6.0 * delta / a).sqrt(),
-        DynamicsShape::Linear => 2.0 * (delta / a).sqrt(),
+        DynamicsShape::Cubic | DynamicsShape::Linear => (6.0 * delta / a).sqrt(),
         _ => 0.0,
     };
     let dynamics = TransitionDynamics {
