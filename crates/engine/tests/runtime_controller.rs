@@ -1,10 +1,12 @@
-//! The default controller (OpenSCENARIO 1.3 §7.5.1): follows its lane through a junction.
+//! The default controller (OpenSCENARIO 1.3 §7.5.1): follows its lane through a junction and
+//! into the next lane section by the lanes' links.
 
 mod runtime_support;
 
 use approx::assert_abs_diff_eq;
+use engine::EngineConfig;
 use opendrive::{normalize_angle, RoadNetwork};
-use runtime_support::{file, run};
+use runtime_support::{file, run, run_with};
 
 /// junction_follow.xosc: road 0 lane −1 from s = 90 at 10 m/s for 6 s (60 m of travel).
 /// Road 0 ends at s = 100 in junction 1, whose first connection from road 0 lane −1 is
@@ -67,5 +69,29 @@ fn turned_entity_follows_its_lane() {
         assert_abs_diff_eq!(row.h, 1.2, epsilon = 1e-9);
         assert_abs_diff_eq!(row.velocity.0, 10.0, epsilon = 1e-9);
         assert_abs_diff_eq!(row.velocity.1, 0.0, epsilon = 1e-9);
+    }
+}
+
+/// routing/section_link.xosc: Ego on lane −2 of section_link.xodr (reference line along +x from
+/// the origin, so s = x, y = t) at s = 10, 10 m/s, no route. Lane −1 is 3.5 m wide to s = 20,
+/// then narrows to nothing at s = 50, where lane −2 continues as lane −1 of the next lane
+/// section by its link (OpenDRIVE 1.8 §11.4). At s = 30 (2 s) lane −1 is
+/// 3.5 − 3.5·10/30 = 2.3333 m wide, so lane −2's centre is at t = −(2.3333 + 1.75) = −4.0833,
+/// and the heading follows the centre's slope, atan(3.5/30) = 0.116143 rad. From s = 50 on Ego
+/// is in lane −1, centre t = −1.75, heading 0: at 7 s, (80, −1.75).
+#[test]
+fn lane_link_carries_the_entity_into_the_next_lane_section() {
+    let path = runtime_support::file("../routing/section_link.xosc");
+    let (_, frames, _) = run_with(&path, &[], EngineConfig::default());
+    let at = |t: f64| frames.at("Ego", t);
+    assert_abs_diff_eq!(at(2.0).x, 30.0, epsilon = 1e-9);
+    assert_abs_diff_eq!(at(2.0).y, -(3.5 - 3.5 * 10.0 / 30.0 + 1.75), epsilon = 1e-9);
+    assert_abs_diff_eq!(at(2.0).h, (3.5f64 / 30.0).atan(), epsilon = 1e-6);
+    for t in [4.0, 7.0, 8.0] {
+        let row = at(t);
+        assert_abs_diff_eq!(row.x, 10.0 + 10.0 * t, epsilon = 1e-9);
+        assert_abs_diff_eq!(row.y, -1.75, epsilon = 1e-9);
+        assert_abs_diff_eq!(row.h, 0.0, epsilon = 1e-9);
+        assert_eq!(row.road.as_ref().map(|p| p.1), Some(-1), "lane at {t} s");
     }
 }

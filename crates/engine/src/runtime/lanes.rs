@@ -99,11 +99,13 @@ pub fn advance(
         };
         let target = track.s + sign * distance;
         if (0.0..=road.length).contains(&target) {
+            cross_sections(net, road, track, target);
             track.s = target;
             return 0.0;
         }
         let end = if sign > 0.0 { road.length } else { 0.0 };
         distance -= (end - track.s).abs();
+        cross_sections(net, road, track, end);
         track.s = end;
         let Some(handle) = net.lane_handle(&track.road_id, track.lane_id, end) else {
             return distance;
@@ -126,6 +128,38 @@ pub fn advance(
         };
     }
     distance
+}
+
+/// Carries the lane of `track` (at its s) across the lane-section boundaries of `road` up to
+/// s `to` by the lanes' links (OpenDRIVE 1.8 §11.4 "Lane linkage"): a lane linked to another id
+/// in the next section continues as that lane; without a link the id is kept.
+fn cross_sections(net: &RoadNetwork, road: &Road, track: &mut LaneTrack, to: Real) {
+    let last = road.lane_section_index(to);
+    let Some(mut h) = net.lane_handle(&track.road_id, track.lane_id, track.s) else {
+        return;
+    };
+    let step: i64 = if last as i64 > i64::from(h.section) {
+        1
+    } else {
+        -1
+    };
+    while h.section as usize != last {
+        let along = track.direction == net.driving_direction(h);
+        let linked = if along {
+            net.successors(h)
+        } else {
+            net.predecessors(h)
+        };
+        let next_section = (i64::from(h.section) + step) as u32;
+        h = linked
+            .into_iter()
+            .find(|n| n.road == h.road && n.section == next_section)
+            .unwrap_or(LaneHandle {
+                section: next_section,
+                ..h
+            });
+    }
+    track.lane_id = h.lane;
 }
 
 /// A road position built from a lane track (no look-up: the track knows its road);
