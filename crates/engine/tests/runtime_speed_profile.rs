@@ -185,6 +185,28 @@ fn entries_without_time_or_with_time_zero() {
     }
 }
 
+/// speed_relative.xosc, entity Profile: a `position` SpeedProfileAction with entityRef Lead
+/// ("the speed values will be interpreted as relative delta to the speed of the referenced
+/// entity") from 10 m/s at 1 s: Lead − 5 after 2 s, Lead + 5 2 s later. oscsim takes Lead's
+/// speed when the action starts (20 m/s, as esmini does; the standard does not say when), so
+/// the vertices are (1, 10), (3, 15), (5, 25): v(2) = 12.5, v(4) = 20, and Lead's step to
+/// 30 m/s at 4 s does not move them.
+#[test]
+fn relative_profile_is_offset_from_the_reference_speed_at_the_start() {
+    let (_, frames, _) = run_with(&file("speed_relative.xosc"), &[], EngineConfig::default());
+    for (t, v) in [
+        (2.0, 12.5),
+        (3.0, 15.0),
+        (4.0, 20.0),
+        (4.5, 22.5),
+        (5.0, 25.0),
+        (7.0, 25.0),
+    ] {
+        assert_abs_diff_eq!(frames.at("Profile", t).speed, v, epsilon = EXACT);
+    }
+    assert_abs_diff_eq!(frames.at("Lead", 4.5).speed, 30.0, epsilon = EXACT);
+}
+
 /// XSD SpeedProfileEntry@time has the range [0..inf[: a negative time ($T2 = −1, the second
 /// entry) stops the run with an error naming it and the Action's place (line 72, column 15 of
 /// speed_profile_modes.xosc), instead of being read as a missing time.
