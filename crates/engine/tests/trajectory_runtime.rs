@@ -160,3 +160,44 @@ fn speed_at_a_vertex_is_that_of_the_step_arriving_there() {
     assert!((frames.at("Target", 6.0).speed - 24.524).abs() < 1e-3);
     assert!((frames.at("Target", 6.1).speed - 27.341).abs() < 1e-3);
 }
+
+#[test]
+fn follow_mode_closes_a_speed_jump_within_the_performance_limits() {
+    // TrajectoryFollowingMode follow ("observing the dynamic constraints of the entity"): the
+    // timed Polyline runs at 10 m/s to x = 150 at 5 s, then at 20 m/s to x = 250 at 10 s; the
+    // car (maxAcceleration = maxDeceleration = 10 m/s²) cannot jump. Time-optimal closing from
+    // 5 s, τ after: accelerate at 10 while the gap e = 10τ − 5τ² grows, until the speed
+    // 10 + 10τ meets the braking curve 20 + √(2·10·e): squared, τ² − 2τ + ½ = 0, whose root
+    // with a speed above 20 is τ = 1 + √½ = 1.707 s (e = 2.5 m, 20 + 5√2 = 27.07 m/s); then
+    // brake for 0.707 s onto the reference at τ = 1 + √2 = 2.414 s (7.414 s). In 0.05 s steps the peak is at
+    // most that and at least one step's 0.5 m/s below it, and the car is on the reference by
+    // 7.5 s.
+    let (frames, events) = run(&fixture("follow_speed_jump.xosc"), 12.0);
+    let ego: Vec<_> = frames.0.iter().filter(|r| r.name == "Ego").collect();
+    let before = frames.at("Ego", 4.0);
+    assert!((before.x - 140.0).abs() < TOL && (before.speed - 10.0).abs() < TOL);
+    for w in ego.windows(2).filter(|w| w[1].time <= 10.0 + 1e-9) {
+        let dv = w[1].speed - w[0].speed;
+        assert!(
+            dv.abs() <= 10.0 * 0.05 + 1e-9,
+            "{dv} m/s in a step at {}",
+            w[1].time
+        );
+    }
+    let peak = ego.iter().map(|r| r.speed).fold(0.0, f64::max);
+    let optimal = 20.0 + 5.0 * 2f64.sqrt();
+    assert!(
+        peak <= optimal + TOL && peak >= optimal - 0.5,
+        "peak {peak}"
+    );
+    for (t, x) in [(7.5, 200.0), (9.0, 230.0)] {
+        let r = frames.at("Ego", t);
+        assert!(
+            (r.x - x).abs() < TOL && (r.speed - 20.0).abs() < TOL,
+            "{r:?}"
+        );
+    }
+    // On the reference at its end: the action ends in the step that reaches x = 250 at 10 s.
+    let end = ended_at(&events, "Init Ego RoutingAction").expect("the action ends");
+    assert!((end - 9.95).abs() < 1e-9, "ended at {end}");
+}

@@ -15,6 +15,7 @@
 //! | `nurbs` | Nurbs: rational curve, validation, arc-length table |
 //! | `orientation` | the headings along a six-dimensional Polyline (§6.9) |
 //! | `time_table` | the (s, t) pairs of vertices and segment times; s(t), t(s) |
+//! | `follow` | TrajectoryFollowingMode `follow`: the timed motion within Performance limits |
 //! | `timing` | TimeReference / Timing: simulation time ↔ trajectory time |
 //! | `path` | `Trajectory`: the pieces in order, evaluation by s, lengths |
 //! | `closest` | the point of a trajectory closest to a world position |
@@ -25,6 +26,7 @@ mod build;
 mod closest;
 mod clothoid;
 mod error;
+mod follow;
 mod line;
 mod nurbs;
 mod orientation;
@@ -37,6 +39,7 @@ pub use build::{build, build_for_actor};
 pub use closest::Closest;
 pub use closest::SCAN_STEP;
 pub use error::{TrajectoryError, TrajectoryErrorKind};
+pub use follow::FollowLimits;
 pub use nurbs::ARC_LENGTH_TOLERANCE;
 pub use path::{ShapeKind, Trajectory};
 pub use point::TrajectoryPoint;

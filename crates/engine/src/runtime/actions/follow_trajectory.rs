@@ -9,6 +9,12 @@
 //! trajectory's tangent). The action ends at the end of an open trajectory; the actor then drives on under
 //! the default controller from where it stands.
 //!
+//! TrajectoryFollowingMode `position` follows the path and its times exactly; `follow`
+//! observes the entity's Performance on a timed trajectory (see `trajectory::FollowLimits`):
+//! the actor tracks the timed arc length within its acceleration, deceleration and speed
+//! limits and the action ends when it reaches the trajectory's end. Untimed, the two modes
+//! agree: the speed is the actor's own and the runtime keeps no lateral constraint.
+//!
 //! A negative speed without a Timing time reference drives the trajectory in reverse gear: the
 //! actor still travels from the trajectory's start towards its end, at |speed|, facing against
 //! the tangent (heading = tangent + π). The standard does not say what a negative speed means
@@ -16,20 +22,22 @@
 //! (parking_demo.xosc: a ClothoidSpline starting at the car's heading + π) are written for.
 
 use opendrive::normalize_angle;
-use scenario::{SourcePos, Timing};
+use scenario::{FollowingMode, SourcePos, Timing};
 
 use super::Part;
 use crate::runtime::entity::EntityId;
 use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
-use crate::trajectory::{build_for_actor, Trajectory, TrajectoryClock};
+use crate::trajectory::{build_for_actor, FollowLimits, Trajectory, TrajectoryClock};
 
 /// A running FollowTrajectoryAction on one actor.
 #[derive(Debug, Clone)]
 pub(crate) struct TrajectoryState {
     trajectory: Box<Trajectory>,
     clock: Option<TrajectoryClock>,
+    /// The actor's Performance limits in `follow` mode (`None`: followed exactly).
+    limits: Option<FollowLimits>,
     s: f64,
     /// Speed along the trajectory in the last step (m/s) and the time it reached `s`.
     speed: f64,
@@ -59,6 +67,16 @@ impl TrajectoryState {
     /// time (closed or not: the times say where the actor is, and they end there), an untimed
     /// open one at its last point. An untimed closed trajectory has no end.
     pub(crate) fn completes_by(&self, step_end: f64) -> bool {
+        if let (Some(clock), Some(limits)) = (self.timed(), self.limits) {
+            let at = |t| {
+                self.trajectory
+                    .s_at_simulation_time(clock, t)
+                    .unwrap_or(self.s)
+            };
+            let dt = step_end - self.at;
+            let v = limits.tracking_speed(self.speed, self.s, at(self.at), at(step_end), dt);
+            return self.s + v * dt >= self.trajectory.length() - END_EPSILON;
+        }
         if let Some(end) = self.end_time() {
             return step_end >= end - END_EPSILON;
         }
@@ -70,16 +88,32 @@ impl TrajectoryState {
     }
 }
 
-/// Starts the action.
+/// What a FollowTrajectoryAction asks for (XSD `FollowTrajectoryAction`).
+pub(crate) struct Request<'a> {
+    /// The trajectory (TrajectoryRef, resolved).
+    pub trajectory: &'a scenario::Trajectory,
+    /// TimeReference: `None`, or Timing.
+    pub timing: Option<&'a Timing>,
+    /// TrajectoryFollowingMode/@followingMode.
+    pub following_mode: FollowingMode,
+    /// @initialDistanceOffset (m).
+    pub initial_distance_offset: Option<f64>,
+}
+
+/// Starts the action at simulation time `now`.
 pub(crate) fn start(
     world: &mut World,
     actor: EntityId,
-    trajectory: &scenario::Trajectory,
-    timing: Option<&Timing>,
-    initial_distance_offset: Option<f64>,
+    request: Request<'_>,
     now: f64,
     pos: &SourcePos,
 ) -> Result<Part, RuntimeError> {
+    let Request {
+        trajectory,
+        timing,
+        following_mode,
+        initial_distance_offset,
+    } = request;
     let to_error = |e| RuntimeError::new(RuntimeErrorKind::Trajectory(e));
     // A ClothoidSpline whose first segment has no PositionStart starts at the actor (1.3 XSD
     // `ClothoidSplineSegment`: positionStart is optional).
@@ -106,9 +140,17 @@ pub(crate) fn start(
         }
         (c, _) => c,
     };
+    let limits = match following_mode {
+        FollowingMode::Follow => world
+            .entity(actor)
+            .performance
+            .and_then(|p| FollowLimits::new(p.max_acceleration, p.max_deceleration, p.max_speed)),
+        _ => None,
+    };
     let mut state = TrajectoryState {
         trajectory: Box::new(trajectory),
         clock,
+        limits,
         s,
         speed: world.entity(actor).speed,
         at: now,
@@ -172,8 +214,28 @@ pub(crate) fn step(
     let reversing = st.timed().is_none() && world.entity(actor).speed < 0.0;
     // The arc length reached by t, the distance travelled on the trajectory, the travel past
     // its end within this step, and whether the trajectory is over by t.
-    let (s, moved, beyond, over) = match (st.timed().copied(), st.end_time()) {
-        (Some(clock), Some(end)) => {
+    let (s, moved, beyond, over) = match (st.timed().copied(), st.end_time(), st.limits) {
+        (Some(clock), Some(_), Some(limits)) => {
+            // `follow`: towards the timed arc length within the Performance limits; over at
+            // the trajectory's end, early or late.
+            let at = |t| {
+                st.trajectory
+                    .s_at_simulation_time(&clock, t)
+                    .unwrap_or(st.s)
+            };
+            let v0 = world.entity(actor).speed;
+            let v = limits.tracking_speed(v0, st.s, at(now), at(t), dt);
+            world.entity_mut(actor).speed = v;
+            let s = st.s + v * dt;
+            let beyond = (s - length).max(0.0);
+            (
+                s.min(length),
+                v * dt - beyond,
+                beyond,
+                s >= length - END_EPSILON,
+            )
+        }
+        (Some(clock), Some(end), None) => {
             let s = st
                 .trajectory
                 .s_at_simulation_time(&clock, t)

@@ -305,22 +305,20 @@ impl Host<'_> {
             RoutingAction::FollowTrajectory {
                 trajectory,
                 time_reference,
+                following_mode,
                 initial_distance_offset,
-                ..
             } => {
                 self.claim(actor, Domain::Lateral, id);
                 if time_reference.is_some() {
                     self.claim(actor, Domain::Longitudinal, id);
                 }
-                let started = follow_trajectory::start(
-                    self.world,
-                    actor,
+                let request = follow_trajectory::Request {
                     trajectory,
-                    time_reference.as_ref(),
-                    *initial_distance_offset,
-                    time,
-                    &pos,
-                );
+                    timing: time_reference.as_ref(),
+                    following_mode: *following_mode,
+                    initial_distance_offset: *initial_distance_offset,
+                };
+                let started = follow_trajectory::start(self.world, actor, request, time, &pos);
                 // A trajectory that cannot be built skips the action (recorded in the event
                 // log); the actor drives on under the default controller.
                 Ok(started.unwrap_or_else(|e| {
