@@ -201,3 +201,18 @@ fn follow_mode_closes_a_speed_jump_within_the_performance_limits() {
     let end = ended_at(&events, "Init Ego RoutingAction").expect("the action ends");
     assert!((end - 9.95).abs() < 1e-9, "ended at {end}");
 }
+
+#[test]
+fn trajectory_from_a_catalog_with_a_parameter_assignment() {
+    // TrajectoryRef/CatalogReference to "straight" (catalogs/Trajectories.xosc): from
+    // x = 100 at 0 s to x = 100 + Length at 5 s, Length assigned 80: 16 m/s, x = 116 at 1 s,
+    // 180 at 5 s, and on at 16 m/s after the end.
+    let (frames, _) = run(&fixture("catalog_ref.xosc"), 8.0);
+    for (t, x) in [(1.0, 116.0), (5.0, 180.0), (6.0, 196.0)] {
+        let r = frames.at("Ego", t);
+        assert!(
+            (r.x - x).abs() < TOL && (r.speed - 16.0).abs() < TOL,
+            "{r:?}"
+        );
+    }
+}
