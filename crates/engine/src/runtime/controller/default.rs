@@ -82,11 +82,14 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
                 .map_or(0.0, |(_, _, x)| x);
             let x = (0.5 * (e.lateral_slope + end_share)).clamp(-1.0, 1.0);
             let along = signed * (1.0 - x * x).sqrt();
+            // Reversing runs the route backwards: no route successor is on offer then.
             let left = match &mut e.route_follow {
-                Some(follow) => advance(net, &mut track, along * road_scale, &mut |road, c| {
-                    follow.choose(net, road, c)
-                }),
-                None => advance(net, &mut track, along * road_scale, &mut |_, _| None),
+                Some(follow) if distance >= 0.0 => {
+                    advance(net, &mut track, along * road_scale, &mut |road, c| {
+                        follow.choose(net, road, c)
+                    })
+                }
+                _ => advance(net, &mut track, along * road_scale, &mut |_, _| None),
             };
             if distance < 0.0 {
                 track.direction = track.direction.reverse();
@@ -138,25 +141,17 @@ fn follow_route(
         follow.change = None;
         return;
     }
-    if let Some(change) = follow.change {
-        if !lane_change::step(&change, track, odometer, distance) {
-            follow.change = None;
+    if follow.change.is_none() && track.blend.is_none() && distance != 0.0 {
+        if let Some(lane) = follow.needed_lane(net, track) {
+            let room = net
+                .road(&track.road_id)
+                .map_or(0.0, |r| match track.direction {
+                    Direction::Forward => r.length - track.s,
+                    Direction::Backward => track.s,
+                });
+            follow.change = lane_change::begin(net, track, lane, speed, odometer, room);
         }
-        return;
     }
-    if track.blend.is_some() || distance == 0.0 {
-        return;
-    }
-    let Some(lane) = follow.needed_lane(net, track) else {
-        return;
-    };
-    let room = net
-        .road(&track.road_id)
-        .map_or(0.0, |r| match track.direction {
-            Direction::Forward => r.length - track.s,
-            Direction::Backward => track.s,
-        });
-    follow.change = lane_change::begin(net, track, lane, speed, odometer, room);
     if let Some(change) = follow.change {
         if !lane_change::step(&change, track, odometer, distance) {
             follow.change = None;
