@@ -1,4 +1,4 @@
-//! Bad trajectories give clear errors, never panics (OpenSCENARIO 1.3 §7.6 "Trajectories";
+//! Bad trajectories give clear errors, never panics (OpenSCENARIO 1.3 §6.9 "Trajectories";
 //! XSD `Polyline`: a line needs two vertices; `Nurbs`: order, a knot vector of (control
 //! points plus order) non-decreasing values; `Timing/@scale`). Each message is checked
 //! in full: what was expected, what was found, and where.

@@ -1,5 +1,5 @@
 //! The ClothoidSpline trajectories of esmini's lane-change_clothoid_spline_based_trajectory.xosc
-//! (OpenSCENARIO 1.3 §7.6, XSD `ClothoidSpline`, `ClothoidSplineSegment`, `Timing`), loaded
+//! (OpenSCENARIO 1.3 §6.9, XSD `ClothoidSpline`, `ClothoidSplineSegment`, `Timing`), loaded
 //! with the scenario crate and checked against hand computations and against esmini 3.6.0's
 //! run of the same scenario (shared/corpus/reference/esmini/…csv: 0.1 s rows, 3 decimals).
 //! The car drives at 30 km/h = 8.333 m/s; each trajectory starts at the car's pose when its

@@ -1,4 +1,4 @@
-//! The timed NURBS of esmini's trajectory-test.xosc (OpenSCENARIO 1.3 §7.6, XSD `Nurbs`: order
+//! The timed NURBS of esmini's trajectory-test.xosc (OpenSCENARIO 1.3 §6.9, XSD `Nurbs`: order
 //! 3, five control points given relative to the entity "Target", with weights and times,
 //! knots 0 0 0 ⅓ ⅔ 1 1 1; Timing relative, scale 1) against esmini 3.6.0's run
 //! (shared/corpus/reference/esmini/trajectory-test.csv).

@@ -1,4 +1,4 @@
-//! The 33-vertex Polyline of esmini's lane-change_trajectory_wp.xosc (OpenSCENARIO 1.3 §7.6,
+//! The 33-vertex Polyline of esmini's lane-change_trajectory_wp.xosc (OpenSCENARIO 1.3 §6.9,
 //! XSD `Polyline`, `Vertex` with WorldPositions; FollowTrajectoryAction in Init without a time
 //! reference, 0–8 s) against the path esmini 3.6.0's car took
 //! (shared/corpus/reference/esmini/lane-change_trajectory_wp.csv, 0.1 s rows, 3 decimals):

@@ -1,4 +1,4 @@
-//! Properties over random input (OpenSCENARIO 1.3 §7.6): building any NURBS or polyline
+//! Properties over random input (OpenSCENARIO 1.3 §6.9): building any NURBS or polyline
 //! either fails with an error or gives a trajectory whose points are finite everywhere, whose
 //! s(t) never runs backwards, and whose closest point is no farther than any sampled point.
 

@@ -1,4 +1,4 @@
-//! Trajectory shapes by arc length (OpenSCENARIO 1.3 §7.6, XSD `Polyline`, `Clothoid`,
+//! Trajectory shapes by arc length (OpenSCENARIO 1.3 §6.9, XSD `Polyline`, `Clothoid`,
 //! `ClothoidSpline`, `Nurbs`), against hand computations and closed forms written out at
 //! each test.
 

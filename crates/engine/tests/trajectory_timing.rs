@@ -1,4 +1,4 @@
-//! Times along trajectories and the TimeReference/Timing rules (OpenSCENARIO 1.3 §7.6,
+//! Times along trajectories and the TimeReference/Timing rules (OpenSCENARIO 1.3 §6.9,
 //! XSD `Vertex/@time`, `Clothoid/@startTime`/`@stopTime`, `ClothoidSplineSegment/@timeStart`,
 //! `ControlPoint/@time`, `Timing`: t_sim = t_traj · scale + offset, absolute or relative to
 //! the action's start), and the closest point used for initialDistanceOffset and follow mode.
@@ -78,7 +78,7 @@ fn absolute_timing_ignores_the_action_start() {
 
 #[test]
 fn without_time_reference_only_the_lateral_domain_is_controlled() {
-    // §7.6 / semantics-pitfalls #7: TimeReference/None → lateral only.
+    // §6.9 / semantics-pitfalls #7: TimeReference/None → lateral only.
     assert!(!controls_longitudinal(None));
     assert!(controls_longitudinal(Some(&timing(true, 1.0, 0.0))));
     // An untimed shape has no s(t).

@@ -1,4 +1,4 @@
-//! B-spline curves (the non-rational core of OpenSCENARIO 1.3 §7.6 `Nurbs`), evaluated by
+//! B-spline curves (the non-rational core of OpenSCENARIO 1.3 §6.9 `Nurbs`), evaluated by
 //! de Boor's algorithm (C. de Boor, "On calculating with B-splines", J. Approx. Theory 6,
 //! 1972), the numerically stable form of the Cox–de Boor recursion, and differentiated by
 //! the derivative-control-point formula (Piegl & Tiller, "The NURBS Book", 2nd ed., §3.3):

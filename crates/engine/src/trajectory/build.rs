@@ -1,4 +1,4 @@
-//! Building a [`Trajectory`] from the scenario model (OpenSCENARIO 1.3 §7.6, XSD `Shape`):
+//! Building a [`Trajectory`] from the scenario model (OpenSCENARIO 1.3 §6.9, XSD `Shape`):
 //! each vertex, control point and start position is resolved to a world pose by
 //! [`position::resolve`](crate::position::resolve), the shape is checked, and its pieces and
 //! times are laid out.

@@ -1,5 +1,5 @@
 //! The point of a trajectory closest to a world position (for FollowTrajectoryAction's
-//! `initialDistanceOffset` and TrajectoryFollowingMode `follow`, OpenSCENARIO 1.3 §7.6 and
+//! `initialDistanceOffset` and TrajectoryFollowingMode `follow`, OpenSCENARIO 1.3 §6.9 and
 //! XSD `TrajectoryFollowingMode`), measured horizontally.
 //!
 //! Method: the horizontal distance is sampled every [`SCAN_STEP`] (64 to 100 000 samples);

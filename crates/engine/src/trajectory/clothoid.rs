@@ -1,4 +1,4 @@
-//! One clothoid piece (OpenSCENARIO 1.3 §7.6, XSD `Clothoid` and `ClothoidSplineSegment`):
+//! One clothoid piece (OpenSCENARIO 1.3 §6.9, XSD `Clothoid` and `ClothoidSplineSegment`):
 //! curvature linear in arc length, κ(s) = κ₀ + κ'·s, from a start pose.
 //!
 //! The curve is the OpenDRIVE `<spiral>` (OpenDRIVE 1.8 §9.5): this module places an

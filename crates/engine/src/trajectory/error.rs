@@ -1,4 +1,4 @@
-//! Errors of building a trajectory (OpenSCENARIO 1.3 §7.6 "Trajectories", XSD `Polyline`,
+//! Errors of building a trajectory (OpenSCENARIO 1.3 §6.9 "Trajectories", XSD `Polyline`,
 //! `Clothoid`, `ClothoidSpline`, `Nurbs`, `Timing`): what was expected, what was found, and
 //! where ("expected X, found Y at file:line:col"). The place is the vertex or control point's
 //! own Position where the fault is in one point, else the position the caller names (the

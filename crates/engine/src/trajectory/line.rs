@@ -1,4 +1,4 @@
-//! One straight piece of a `Polyline` (OpenSCENARIO 1.3 §7.6, XSD `Polyline`: straight
+//! One straight piece of a `Polyline` (OpenSCENARIO 1.3 §6.9, XSD `Polyline`: straight
 //! lines joining the vertices in order): from one vertex to the next, z interpolated linearly,
 //! s measured horizontally.
 

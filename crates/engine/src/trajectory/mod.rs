@@ -1,4 +1,4 @@
-//! Trajectory shapes at runtime (OpenSCENARIO 1.3 §7.6 "Trajectories", XSD `Trajectory`,
+//! Trajectory shapes at runtime (OpenSCENARIO 1.3 §6.9 "Trajectories", XSD `Trajectory`,
 //! `Shape`, `Polyline`, `Clothoid`, `ClothoidSpline`, `Nurbs`, `TimeReference`, `Timing`):
 //! a [`Trajectory`] evaluated by horizontal arc length s, with s(t) and t(s) where the shape
 //! carries times, and the closest point to a world position.

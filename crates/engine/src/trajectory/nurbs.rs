@@ -1,4 +1,4 @@
-//! `Nurbs` (OpenSCENARIO 1.3 §7.6, XSD `Nurbs`, `ControlPoint`, `Knot`): a non-uniform
+//! `Nurbs` (OpenSCENARIO 1.3 §6.9, XSD `Nurbs`, `ControlPoint`, `Knot`): a non-uniform
 //! rational B-spline of order k (degree k − 1) with weighted control points and a knot vector
 //! of (control points + order) non-decreasing values; the curve runs over
 //! [u_(k−1), u_n] (0-based knots, n control points).

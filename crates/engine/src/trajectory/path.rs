@@ -1,6 +1,6 @@
-//! [`Trajectory`]: a shape of OpenSCENARIO 1.3 §7.6 ("Trajectories", XSD `Shape`) as pieces
+//! [`Trajectory`]: a shape of OpenSCENARIO 1.3 §6.9 ("Trajectories", XSD `Shape`) as pieces
 //! laid end to end, evaluated by horizontal arc length s from its start, with its times where
-//! the shape has them (§7.6).
+//! the shape has them (§6.9).
 //!
 //! s is measured in the horizontal plane, as road s is along an OpenDRIVE reference line and
 //! as `position::resolve` measures TrajectoryPosition s; z follows the shape.

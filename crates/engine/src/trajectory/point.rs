@@ -1,4 +1,4 @@
-//! A point of a trajectory (OpenSCENARIO 1.3 §7.6): where the trajectory is at arc length s.
+//! A point of a trajectory (OpenSCENARIO 1.3 §6.9): where the trajectory is at arc length s.
 //! Coordinates are the world frame of OpenSCENARIO 1.3 §6.3.1 (the OpenDRIVE inertial frame).
 
 use opendrive::Real;

@@ -1,4 +1,4 @@
-//! Times along a trajectory (OpenSCENARIO 1.3 §7.6: `Vertex/@time`, `Clothoid/@startTime`
+//! Times along a trajectory (OpenSCENARIO 1.3 §6.9: `Vertex/@time`, `Clothoid/@startTime`
 //! and `@stopTime`, `ClothoidSplineSegment/@timeStart` with `ClothoidSpline/@timeEnd`,
 //! `ControlPoint/@time`): pairs (s, t) in order, the time at which the trajectory point at s
 //! is reached. Between two pairs both vary linearly (constant speed from one vertex to the

@@ -1,4 +1,4 @@
-//! `TimeReference` and `Timing` of FollowTrajectoryAction (OpenSCENARIO 1.3 §7.6
+//! `TimeReference` and `Timing` of FollowTrajectoryAction (OpenSCENARIO 1.3 §6.9
 //! "Trajectories", XSD `TimeReference`, `Timing`): the trajectory's own times map to simulation
 //! time as t_sim = t_traj · scale + offset, where t_sim counts from the start of the
 //! simulation (`domainAbsoluteRelative="absolute"`) or from the start of the action
@@ -11,7 +11,7 @@
 //!
 //! Without a TimeReference (XSD `TimeReference/None`) the times are ignored and the action
 //! controls the lateral domain only: the entity keeps its own longitudinal motion along the
-//! trajectory (OpenSCENARIO 1.3 §7.6; semantics-pitfalls #7). With Timing it controls both.
+//! trajectory (OpenSCENARIO 1.3 §6.9; semantics-pitfalls #7). With Timing it controls both.
 
 use opendrive::Real;
 use scenario::{ReferenceContext, SourcePos, Timing};

@@ -1,13 +1,15 @@
-//! FollowTrajectoryAction (OpenSCENARIO 1.3 §7.7.2.6 "RoutingAction", §7.6.5 time references,
-//! XSD `FollowTrajectoryAction`): move the actor along a trajectory (built by the `trajectory`
-//! module). With a Timing time reference the trajectory's times drive the motion and the action
-//! holds both domains; without one it holds the lateral domain only and the actor keeps its own
-//! speed along the trajectory (semantics-pitfalls #7).
+//! FollowTrajectoryAction (OpenSCENARIO 1.3 §6.9 "Trajectories", XSD `FollowTrajectoryAction`,
+//! `TimeReference`, `TrajectoryFollowingMode`): move the actor along a trajectory (built by the
+//! `trajectory` module). With a Timing time reference the trajectory's times drive the motion
+//! and the action holds both domains; without one it holds the lateral domain only and the
+//! actor keeps its own speed along the trajectory (semantics-pitfalls #7).
 //!
 //! The actor starts at `initialDistanceOffset` along the trajectory (default 0, its start; with
-//! Timing, where the trajectory's clock says); its pose is the trajectory point's (heading = the
-//! trajectory's tangent). The action ends at the end of an open trajectory; the actor then drives on under
-//! the default controller from where it stands.
+//! Timing and no offset, where the trajectory's clock says); its position is the trajectory
+//! point's, its heading the tangent's, or the vertex headings' of a six-dimensional Polyline
+//! (§6.9). The action ends at the end of an open trajectory, or at the last time of a timed
+//! one; the actor then drives on under the default controller from where it stands, at the
+//! speed it arrived with.
 //!
 //! TrajectoryFollowingMode `position` follows the path and its times exactly; `follow`
 //! observes the entity's Performance on a timed trajectory (see `trajectory::FollowLimits`):
