@@ -68,19 +68,12 @@ pub fn span(dynamics: &TransitionDynamics, delta: f64) -> Span {
     }
 }
 
-/// Progress of a transition along its span after `elapsed` s and `travelled` m, and dp per
-/// metre of travel at `speed` m/s (for the heading of lateral motion).
-pub fn progress(span: Span, elapsed: f64, travelled: f64, speed: f64) -> (f64, f64) {
+/// Progress p ∈ [0, 1] of a transition along its span after `elapsed` s and `travelled` m
+/// (for a lateral transition, metres along the road: actions::lane_change).
+pub fn progress(span: Span, elapsed: f64, travelled: f64) -> f64 {
     match span {
-        Span::Instant => (1.0, 0.0),
-        Span::Time(t) => {
-            let dp_ds = if speed.abs() > 1e-9 {
-                1.0 / (t * speed.abs())
-            } else {
-                0.0
-            };
-            ((elapsed / t).min(1.0), dp_ds)
-        }
-        Span::Distance(d) => ((travelled / d).min(1.0), 1.0 / d),
+        Span::Instant => 1.0,
+        Span::Time(t) => (elapsed / t).min(1.0),
+        Span::Distance(d) => (travelled / d).min(1.0),
     }
 }

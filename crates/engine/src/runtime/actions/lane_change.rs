@@ -19,7 +19,7 @@ use super::Part;
 use crate::runtime::entity::{Blend, EntityId};
 use crate::runtime::error::RuntimeError;
 use crate::runtime::lanes::{lane_at, lane_shift};
-use crate::runtime::shapes::{shape_value, span, Span};
+use crate::runtime::shapes::{progress, shape_value, span, Span};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use scenario::DynamicsShape;
@@ -211,11 +211,15 @@ pub(crate) fn step(
         e.speed
     }
     .abs();
-    let (p, tan) = match s.span {
-        Span::Instant => (1.0, 0.0),
+    if let Span::Distance(d) = s.span {
+        s.along += along_road(s, d, speed * dt, e.lateral_slope);
+    }
+    let p = progress(s.span, now + dt - s.start_time, s.along);
+    let (f, df) = shape_value(s.shape, p);
+    // The path's slope tan θ against the lane at the step's end.
+    let tan = match s.span {
+        Span::Instant => 0.0,
         Span::Time(t) => {
-            let p = ((now + dt - s.start_time) / t).min(1.0);
-            let (_, df) = shape_value(s.shape, p);
             // sin θ = lateral speed Δ·f′/T over the speed (at most 1: sideways); no heading
             // change at a standstill.
             let sin = if speed > 1e-9 {
@@ -223,15 +227,10 @@ pub(crate) fn step(
             } else {
                 0.0
             };
-            (p, sin / (1.0 - sin * sin).sqrt().max(1e-9))
+            sin / (1.0 - sin * sin).sqrt().max(1e-9)
         }
-        Span::Distance(d) => {
-            let (along, tan) = along_road(s, d, speed * dt, e.lateral_slope);
-            s.along += along;
-            ((s.along / d).min(1.0), tan)
-        }
+        Span::Distance(d) => s.delta * df / d,
     };
-    let (f, _) = shape_value(s.shape, p);
     let Some(track) = &mut e.track else {
         return ActionStatus::Ended;
     };
@@ -254,16 +253,16 @@ pub(crate) fn step(
     ActionStatus::Running
 }
 
-/// The part along the road of a step of `length` m of a distance span `d`, and the slope
-/// tan θ of the path the step ends with, from the lateral share sin θ₀ = `x0` it starts with.
+/// The part along the road of a step of `length` m of a distance span `d`, from the lateral
+/// share sin θ₀ = `x0` the step starts with.
 ///
 /// The default controller moves a step of length ℓ whose lateral share goes from x₀ to x₁ by
 /// ℓ·√(1 − x̄²) along the road, x̄ = (x₀ + x₁)/2 (controller::default). At the step's end the
 /// path's slope against the road is tan θ = Δ·f′(p)/d, p = (along + ℓ·√(1 − x̄²))/d, and
 /// x₁ = sin θ, so x₁ depends on the step it ends: a fixed point, contracting by about
-/// ℓ·x̄·Δ·|f″|/(2d²) (2·10⁻⁴ for 3.5 m over 50 m in 0.5 m steps), so four rounds leave it at
+/// ℓ·x̄·Δ·|f″|/(2d²) (2·10⁻⁴ for 3.5 m over 50 m in 0.5 m steps), so five rounds leave it at
 /// rounding level.
-fn along_road(s: &LateralState, d: f64, length: f64, x0: f64) -> (f64, f64) {
+fn along_road(s: &LateralState, d: f64, length: f64, x0: f64) -> f64 {
     let along = |x1: f64| {
         let mean = (0.5 * (x0 + x1)).clamp(-1.0, 1.0);
         length * (1.0 - mean * mean).sqrt()
@@ -273,12 +272,10 @@ fn along_road(s: &LateralState, d: f64, length: f64, x0: f64) -> (f64, f64) {
         s.delta * df / d
     };
     let mut a = along(x0);
-    let mut tan = tan_at(a);
-    for _ in 0..4 {
-        a = along(tan.atan().sin());
-        tan = tan_at(a);
+    for _ in 0..5 {
+        a = along(tan_at(a).atan().sin());
     }
-    (a, tan)
+    a
 }
 
 /// A lateral action stopped midway: the actor keeps the lateral position it has, in the lane

@@ -214,7 +214,7 @@ pub(crate) fn step(
     dt: f64,
 ) -> ActionStatus {
     let v1 = s.target.speed(world);
-    let (p, _) = progress(s.span, now + dt - s.start_time, 0.0, 0.0);
+    let p = progress(s.span, now + dt - s.start_time, 0.0);
     let (f, _) = shape_value(s.dynamics.dynamics_shape, p);
     let v = if p >= 1.0 {
         v1
