@@ -10,6 +10,7 @@ mod trajectory_support;
 
 use engine::output::EventRecord;
 use engine::routing::{plan_route, RoutingOptions};
+use engine::storyboard::ElementState;
 use engine::EngineConfig;
 use runtime_support::{run_with, Recorder};
 use scenario::{RouteStrategy, Waypoint};
@@ -151,6 +152,55 @@ fn turn_reached_from_another_lane_changes_lane_in_time() {
         .road
         .as_ref()
         .is_some_and(|p| p.1 == -1 && (p.3 - LANE_1).abs() < 1e-9)));
+}
+
+#[test]
+fn lateral_action_takes_the_lateral_domain_from_the_route() {
+    // turn_lane_override.xosc: as turn_lane.xosc, but at 1 s a LaneChangeAction back to lane −1
+    // (cubic, 2 s) takes the lateral domain (§7.5.1 control domains): the route's lane change
+    // gives way, Ego moves back towards lane −1 (t rises) until the action ends. Then the route
+    // still needs lane −2 and starts again from where the action left Ego, t_e at time T_e:
+    // t(T) = t_e + (−5.25 − t_e)·f(u), u = 10·(T − T_e)/D, D = 10·√(6·|−5.25 − t_e|), f the
+    // cubic 3u² − 2u³ (controller::lane_change), until u = 1; then lane −2 and road 12.
+    let (frames, events) = run("turn_lane_override.xosc", &[], 1);
+    let ended = events
+        .iter()
+        .find_map(|e| match e {
+            EventRecord::Transition(t)
+                if t.name == "LaneChangeAction" && t.to == ElementState::Complete =>
+            {
+                Some(t.time)
+            }
+            _ => None,
+        })
+        .expect("the LaneChangeAction ends");
+    let t_at = |time: f64| frames.at("Ego", time).road.clone().expect("on road").3;
+    assert!(
+        t_at(1.5) > t_at(1.05) && t_at(2.5) > t_at(1.5),
+        "moving back towards lane −1"
+    );
+    let t_e = t_at(ended);
+    assert!((t_e - LANE_1).abs() < 0.01, "the action's end: t = {t_e}");
+    let d = 10.0 * (6.0 * (LANE_2 - t_e).abs()).sqrt();
+    for dt in [0.05, 1.0, 2.0, 4.0] {
+        let u: f64 = 10.0 * dt / d;
+        let hand = t_e + (LANE_2 - t_e) * (3.0 * u * u - 2.0 * u * u * u);
+        let time = ended + dt;
+        assert!(
+            (t_at(time) - hand).abs() < 1e-9,
+            "t({time}) = {}",
+            t_at(time)
+        );
+    }
+    let done = ended + d / 10.0 + DT;
+    let after = frames
+        .at("Ego", (done / DT).ceil() * DT)
+        .road
+        .clone()
+        .expect("on road");
+    assert_eq!(after.1, -2);
+    assert!((after.3 - LANE_2).abs() < 1e-9);
+    assert_eq!(ids(&roads(&frames)), ["1", "12", "3"]);
 }
 
 #[test]
