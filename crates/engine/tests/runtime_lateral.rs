@@ -7,10 +7,26 @@
 mod runtime_support;
 
 use approx::assert_abs_diff_eq;
-use runtime_support::run;
+use runtime_support::{run, Recorder, Row};
 
 /// Tolerance for positions that the runtime computes exactly up to rounding.
 const EXACT: f64 = 1e-9;
+
+/// Lateral position t of a frame (m).
+fn t(row: &Row) -> f64 {
+    row.road.clone().unwrap_or_default().3
+}
+
+/// Asserts `value` of Ego's frame at each `(time, expected)`, to [`EXACT`].
+fn assert_ego(frames: &Recorder, value: impl Fn(&Row) -> f64, expected: &[(f64, f64)]) {
+    for &(time, want) in expected {
+        let got = value(frames.at("Ego", time));
+        assert!(
+            (got - want).abs() < EXACT,
+            "at {time} s: {got}, want {want}"
+        );
+    }
+}
 
 /// The cubic shape of §7.7.2: f(u) = 3u² − 2u³.
 fn cubic(u: f64) -> f64 {
@@ -89,6 +105,41 @@ fn heading_follows_the_motion_during_a_slow_lane_change() {
     assert_abs_diff_eq!(frames.at("Ego", 3.5).h, 0.0, epsilon = EXACT);
 }
 
+/// lateral_rate_linear.xosc: a linear lane change at a rate of 1 m/s (§7.7.2: `rate` is the
+/// rate of change of the value, here the lateral speed) over Δ = 3.07 m, at 20 m/s, from
+/// 1.0 s: it takes 3.07 s, so t = −1.535 + 1·(T − 1) until 4.07 s; at 2.0 s t = −0.535 and
+/// at 3.0 s t = 0.465. The lateral speed is 1 m/s throughout: sin θ = 1/20, heading
+/// asin(0.05). The step from 4.05 s passes 4.07 s and ends the change in lane 1.
+#[test]
+fn linear_lane_change_at_a_rate_moves_at_that_lateral_speed() {
+    let (_, frames, events) = run("lateral_rate_linear.xosc");
+    let lateral = [
+        (1.0, -1.535),
+        (2.0, -0.535),
+        (3.0, 0.465),
+        (4.05, 1.515),
+        (4.1, 1.535),
+    ];
+    assert_ego(&frames, t, &lateral);
+    assert_ego(&frames, |r| r.h, &[(2.0, 0.05f64.asin()), (4.5, 0.0)]);
+    let ended = runtime_support::end_time(&events, "Action").unwrap_or(f64::NAN);
+    assert_abs_diff_eq!(ended, 4.05, epsilon = EXACT);
+}
+
+/// lateral_step.xosc: the step shape takes no time (§7.7.2 DynamicsShape `step`, whatever the
+/// value says; semantics-pitfalls #8): the change started at 1.0 s is done in that step, so
+/// the frame at 1.05 s is on lane 1's centre (t = 1.535), heading along the road, and the
+/// action ends in the step it starts in.
+#[test]
+fn step_lane_change_takes_no_time() {
+    let (_, frames, events) = run("lateral_step.xosc");
+    assert_ego(&frames, t, &[(1.0, -1.535), (1.05, 1.535)]);
+    assert_eq!(frames.at("Ego", 1.05).road.clone().unwrap_or_default().1, 1);
+    assert_ego(&frames, |r| r.h, &[(1.05, 0.0)]);
+    let ended = runtime_support::end_time(&events, "Action").unwrap_or(f64::NAN);
+    assert_abs_diff_eq!(ended, 1.0, epsilon = EXACT);
+}
+
 /// lateral_offset_linear.xosc: LaneOffsetAction, linear, 0 → 1.5 m, maxLateralAcc a = 1 m/s²,
 /// from 1.0 s at 20 m/s.
 ///
@@ -100,13 +151,13 @@ fn heading_follows_the_motion_during_a_slow_lane_change() {
 #[test]
 fn linear_lane_offset_takes_the_cubic_duration() {
     let (_, frames, events) = run("lateral_offset_linear.xosc");
-    let offset = |time: f64| frames.at("Ego", time).road.clone().unwrap_or_default().4;
-    assert_abs_diff_eq!(offset(1.0), 0.0, epsilon = EXACT);
-    assert_abs_diff_eq!(offset(2.5), 0.75, epsilon = EXACT);
-    assert_abs_diff_eq!(offset(4.0), 1.5, epsilon = EXACT);
-    assert_abs_diff_eq!(offset(4.5), 1.5, epsilon = EXACT);
-    assert_abs_diff_eq!(frames.at("Ego", 2.5).h, 0.025f64.asin(), epsilon = EXACT);
-    assert_abs_diff_eq!(frames.at("Ego", 4.5).h, 0.0, epsilon = EXACT);
+    let offset = |r: &Row| r.road.clone().unwrap_or_default().4;
+    assert_ego(
+        &frames,
+        offset,
+        &[(1.0, 0.0), (2.5, 0.75), (4.0, 1.5), (4.5, 1.5)],
+    );
+    assert_ego(&frames, |r| r.h, &[(2.5, 0.025f64.asin()), (4.5, 0.0)]);
     // The step from 3.95 s reaches p = 1 at 4.0 s and ends the action; the log carries the
     // step's start.
     let ended = runtime_support::end_time(&events, "Action").unwrap_or(f64::NAN);
