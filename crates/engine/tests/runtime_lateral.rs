@@ -37,10 +37,10 @@ fn cubic(u: f64) -> f64 {
 /// to 0.43 m left of lane 1's centre, t = 1.965) over D = 50 m, at 10 m/s, starting at 1.0 s
 /// where s = 20 + 10·1 = 30 m.
 ///
-/// `dynamicsDimension="distance"` is the distance along the road (the brief of §7.7.2's
-/// DynamicsDimension: the transition is spread over a distance; for a lane change the lateral
-/// position is a function of the longitudinal one, as in esmini's LatLaneChangeAction, which
-/// advances the shape by the longitudinal part of each step). On a straight road the distance
+/// `dynamicsDimension="distance"` is the distance along the road (LaneChangeAction: "time and
+/// distance are measured between the start position and the end position of the action"; the
+/// lateral position is a function of the longitudinal one, as in esmini's LatLaneChangeAction,
+/// which advances the shape by the longitudinal part of each step). On a straight road the distance
 /// along the road is s − 30, so at every frame t = −1.535 + 3.5·f((s − 30)/50); half-way,
 /// at s = 55, f(½) = ¾ − ¼ = ½ and t = −1.535 + 1.75 = 0.215. The path is longer than 50 m:
 /// ∫√(1 + t′²) ds = 50·(1 + (3.5/50)²·⟨f′²⟩/2) ≈ 50.147 m with ⟨f′²⟩ = 36/30 = 1.2, so

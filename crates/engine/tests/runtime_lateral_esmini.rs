@@ -161,9 +161,9 @@ fn cut_in_sloppy_lane_change_agrees_and_the_brake_comes_one_step_early() {
 ///    v·∫(1 − cos θ)dt, sin θ = x̂·sin(πτ/T), x̂ = 3.742/20 = 0.18709:
 ///    v·T·(x̂²/4 + 3x̂⁴/64 + …) = 20·3.3585·(0.0087505 + 0.0000574) = 0.5916 m.
 ///
-/// oscsim follows §7.7.2.2 here: the action changes the lane offset from its start, and a
-/// LaneOffsetAction moves the car sideways at the speed set by the longitudinal domain as a
-/// LaneChangeAction does. (With both traits copied, as an experiment, Ego agrees with esmini
+/// oscsim follows §7.7.2.2 here: "lane offset keeping starts immediately at start of the
+/// action" (LaneOffsetAction in the model documentation), and a LaneOffsetAction moves the car
+/// sideways at the speed set by the longitudinal domain as a LaneChangeAction does. (With both traits copied, as an experiment, Ego agrees with esmini
 /// to 0.011 m.)
 #[test]
 fn lane_change_offset_differs_from_esmini_by_its_lag_and_its_extra_travel() {

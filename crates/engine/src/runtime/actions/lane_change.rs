@@ -4,7 +4,11 @@
 //! transition shape over time, distance or lateral rate. Progress p runs on the clock for
 //! `time` and `rate` (the rate read as the peak lateral speed, [`crate::runtime::shapes`]) and
 //! on the distance travelled along the road for `distance` (not the longer path the entity
-//! drives: at 3.5 m over 50 m the two differ by 0.15 m).
+//! drives: at 3.5 m over 50 m the two differ by 0.15 m). The model documentation of
+//! LaneChangeAction: "Time and distance are measured between the start position and the end
+//! position of the action"; between two road positions oscsim reads that distance along the
+//! road, as esmini does (LatLaneChangeAction steps the shape by the longitudinal part of each
+//! step).
 //!
 //! The lateral position during the change is a blend of the two lanes' centres at the current
 //! s, t = (1 − f)·(centre(from) + offset₀) + f·(centre(to) + offset₁), so lane width changes
