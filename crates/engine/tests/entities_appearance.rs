@@ -3,6 +3,8 @@
 
 mod runtime_support;
 
+use std::path::PathBuf;
+
 use engine::output::EventRecord;
 use engine::storyboard::Transition;
 use engine::{Engine, EngineConfig};
@@ -131,6 +133,39 @@ fn light_state_action_ends_after_its_transition_time() {
     assert!((many - ours("eventHighBeamOn", Transition::End) - 1.05).abs() < 1e-9);
     assert!((many - 37.15).abs() < 1e-9, "{many}");
     assert!((reference_time("eventManyLightsOn", "start") - many - 0.05).abs() < 1e-6);
+}
+
+/// OpenSCENARIO 1.3 Annex A ("Action ends") for AnimationAction, on animation.xosc (dt 0.05 s),
+/// every action started in the step at 1 s: "door" (loop false, animationDuration 2) ends in
+/// the step whose advance reaches 3 s, at 2.95 s; "mirrors" (no duration) ends at once;
+/// "window" (loop true: "no regular ending") and "walk" (a pedestrian motion, performed
+/// continuously) run until the storyboard's stop trigger (first step with t > 4 s, 4.05 s)
+/// stops them: stop transitions, no end.
+#[test]
+fn animation_actions_end_as_the_action_table_says() {
+    let path = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities"))
+        .join("animation.xosc");
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+    let mut events = Vec::new();
+    engine.run(&mut (), &mut events).expect("runs");
+    let at = |element: &str, transition: Transition| {
+        events.iter().find_map(|e| match e {
+            EventRecord::Transition(t) if t.name == element && t.transition == transition => {
+                Some(t.time)
+            }
+            _ => None,
+        })
+    };
+    let close = |t: Option<f64>, expected: f64| t.is_some_and(|t| (t - expected).abs() < 1e-9);
+    for action in ["door", "mirrors", "window", "walk"] {
+        assert!(close(at(action, Transition::Start), 1.0), "{action} start");
+    }
+    assert!(close(at("door", Transition::End), 2.95));
+    assert!(close(at("mirrors", Transition::End), 1.0));
+    for action in ["window", "walk"] {
+        assert_eq!(at(action, Transition::End), None, "{action} ended");
+        assert!(close(at(action, Transition::Stop), 4.05), "{action} stop");
+    }
 }
 
 /// esmini's cut-in_environment.xosc: "nightTimeAction" sets TimeOfDay 00:00 (line 92),

@@ -16,8 +16,14 @@
 //! it counts the time after its check), but never ends an action whose new mode is `flashing`
 //! (it keeps the action running to blink the light, until the storyboard stops). The standard
 //! makes `flashing` a LightMode like `on`, a state the transition reaches (XSD `LightMode`), so
-//! oscsim ends those too. AnimationAction is instantaneous here: its `animationDuration` is
-//! kept with the state, not played out.
+//! oscsim ends those too.
+//!
+//! An AnimationAction ends as the standard's action table says (Annex A, "Action ends"): with
+//! `loop` true it performs the animation continuously and has "no regular ending", like a
+//! PedestrianAnimation (a motion or gestures, performed continuously) unless `loop` is false;
+//! otherwise it ends "after animationDuration", and at once without one. An action with no
+//! regular ending runs until the storyboard stops it (its Event's stop trigger or an
+//! override). The animation itself is not played out: the state records the action.
 
 use std::collections::BTreeMap;
 
@@ -28,20 +34,21 @@ use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 
-/// A LightStateAction running through its `transitionTime`.
+/// A LightStateAction running through its `transitionTime`, or an AnimationAction through its
+/// `animationDuration` or without a regular ending.
 #[derive(Debug, Clone)]
-pub(crate) struct LightTransition {
-    /// Simulation time at which the new light state is reached, s.
-    ends_at: f64,
+pub(crate) struct Transition {
+    /// Simulation time at which the action reaches its goal, s; `None`: no regular ending.
+    ends_at: Option<f64>,
 }
 
-impl LightTransition {
-    /// Whether the transition reaches the new state by `step_end`, the end of the step the
-    /// runtime is in: then the action ends in this step, like every transition over a fixed
-    /// time (actions::status). The 1e-9 s absorbs the rounding of summed steps, as for the
+impl Transition {
+    /// Whether the action reaches its goal by `step_end`, the end of the step the runtime is
+    /// in: then it ends in this step, like every transition over a fixed time
+    /// (actions::status). The 1e-9 s absorbs the rounding of summed steps, as for the
     /// SpeedAction and LaneChangeAction durations.
     pub(crate) fn completes_by(&self, step_end: f64) -> bool {
-        step_end >= self.ends_at - 1e-9
+        self.ends_at.is_some_and(|end| step_end >= end - 1e-9)
     }
 
     /// The status after the step from `now` to `now + dt`.
@@ -100,8 +107,23 @@ fn animation_name(kind: &AnimationType) -> String {
     }
 }
 
+/// When an AnimationAction started at `time` ends (module doc): `None` at once, else the
+/// transition to run.
+fn animation_end(a: &AnimationAction, time: f64) -> Option<Transition> {
+    let pedestrian = matches!(a.animation_type, AnimationType::Pedestrian { .. });
+    if a.looping == Some(true) || (pedestrian && a.looping != Some(false)) {
+        return Some(Transition { ends_at: None });
+    }
+    a.animation_duration
+        .filter(|&d| d > 0.0)
+        .map(|d| Transition {
+            ends_at: Some(time + d),
+        })
+}
+
 /// Applies `action` to `actor` at `time` on behalf of the action called `element`; returns the
-/// light transition still to run, if any (`transitionTime` > 0).
+/// transition still to run, if any (a LightStateAction's `transitionTime` > 0, an
+/// AnimationAction's duration or continuous animation).
 pub(crate) fn start(
     world: &mut World,
     actor: EntityId,
@@ -109,21 +131,19 @@ pub(crate) fn start(
     element: &str,
     time: f64,
     events: &mut Vec<EventRecord>,
-) -> Option<LightTransition> {
-    let mut transition = None;
-    let change = match action {
+) -> Option<Transition> {
+    let (change, transition) = match action {
         AppearanceAction::LightState(l) => {
-            transition = l
-                .transition_time
-                .filter(|&d| d > 0.0)
-                .map(|d| LightTransition { ends_at: time + d });
+            let transition = l.transition_time.filter(|&d| d > 0.0).map(|d| Transition {
+                ends_at: Some(time + d),
+            });
             let name = light_name(&l.light_type);
             let change = format!("light {name} {}", l.light_state.mode.as_str());
             world
                 .appearance
                 .lights
                 .insert((actor, name), l.light_state.clone());
-            change
+            (change, transition)
         }
         AppearanceAction::Animation(a) => {
             let name = animation_name(&a.animation_type);
@@ -132,7 +152,7 @@ pub(crate) fn start(
                 None => format!("animation {name}"),
             };
             world.appearance.animations.insert((actor, name), a.clone());
-            change
+            (change, animation_end(a, time))
         }
         _ => return None,
     };

@@ -60,7 +60,7 @@ pub(crate) enum Part {
     LateralDistance(distance::LateralState),
     Trajectory(follow_trajectory::TrajectoryState),
     Synchronize(synchronize::SyncState),
-    Light(appearance::LightTransition),
+    Appearance(appearance::Transition),
     Done(ActionStatus),
 }
 
@@ -128,7 +128,7 @@ impl ActionTable {
                     Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
                     Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
                     Part::Synchronize(s) => synchronize::step(world, actor, s, dt),
-                    Part::Light(s) => s.step(now, dt),
+                    Part::Appearance(s) => s.step(now, dt),
                 };
                 if next != ActionStatus::Running {
                     release(world, actor, id);
@@ -269,7 +269,7 @@ impl Host<'_> {
             PrivateAction::Appearance(a) => {
                 let name = self.table.slots[id.0 as usize].name.clone();
                 let transition = appearance::start(self.world, actor, a, &name, time, self.events);
-                Ok(transition.map_or(Part::Done(ActionStatus::Ended), Part::Light))
+                Ok(transition.map_or(Part::Done(ActionStatus::Ended), Part::Appearance))
             }
             PrivateAction::Trailer(t) => {
                 trailer::start(self.world, actor, t, pos)?;
@@ -503,7 +503,7 @@ pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> Action
             Part::Profile(s) => s.completes_by(step_end),
             Part::Lateral(s) => s.completes_by(step_end),
             Part::Trajectory(s) => s.completes_by(step_end),
-            Part::Light(s) => s.completes_by(step_end),
+            Part::Appearance(s) => s.completes_by(step_end),
             _ => false,
         };
         if finishing {
