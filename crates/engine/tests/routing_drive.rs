@@ -133,6 +133,20 @@ fn turn_reached_from_another_lane_changes_lane_in_time() {
             t_at(time)
         );
     }
+    // The heading is the direction of the motion: the lateral share of the travel is
+    // sin θ = Δ·f′(u)/D, f′ = 6u − 6u², on this straight road h = θ. T = 2 s: f′ = 1.475758,
+    // sin θ = −3.5·1.475758/45.826 = −0.112713, h = −0.112953 rad.
+    let h_at = |time: f64| frames.at("Ego", time).h;
+    assert!((h_at(2.0) - (-0.112_953)).abs() < 1e-6, "{}", h_at(2.0));
+    for time in [0.5, 1.0, 3.0, 4.0] {
+        let u: f64 = 10.0 * time / d;
+        let hand = (-3.5 * (6.0 * u - 6.0 * u * u) / d).asin();
+        assert!(
+            (h_at(time) - hand).abs() < 1e-9,
+            "h({time}) = {}",
+            h_at(time)
+        );
+    }
     // Done after D/v = 4.583 s, about 55 m of road before road 1 ends at s = 200.
     for time in [4.6, 10.0, 18.0] {
         let p = frames.at("Ego", time).road.clone().expect("on road");

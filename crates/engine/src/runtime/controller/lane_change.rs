@@ -25,11 +25,13 @@ use crate::runtime::shapes::shape_value;
 /// not above 1 m/s², the manoeuvre done within 5 s for an M1 car; 4.58 s here for 3.5 m).
 pub const MAX_LATERAL_ACCELERATION: Real = 1.0;
 
-/// A lane change in progress: from the odometer reading where it started, over `length` m.
+/// A lane change in progress: from the odometer reading where it started, over `length` m of
+/// travel, moving `delta` m sideways.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RouteLaneChange {
     start_odometer: Real,
     length: Real,
+    delta: Real,
 }
 
 /// The distance (m) of a lane change moving `delta` m sideways at `speed` m/s (module doc).
@@ -52,7 +54,8 @@ pub(crate) fn begin(
     let target = road.lane_span(lane, track.s).ok()?.center() + track.offset;
     let (from_lane, from_offset) =
         lane_at(road, track.s, track.t).unwrap_or((track.lane_id, track.offset));
-    let length = change_length(target - track.t, speed).min(room.max(0.0));
+    let delta = target - track.t;
+    let length = change_length(delta, speed).min(room.max(0.0));
     track.lane_id = lane;
     if length <= opendrive::LENGTH_EPSILON {
         track.blend = None;
@@ -67,11 +70,14 @@ pub(crate) fn begin(
     Some(RouteLaneChange {
         start_odometer: odometer,
         length,
+        delta,
     })
 }
 
 /// Sets the blend weight for the end of a step that will travel `distance` m; `false` once the
-/// change is complete (the blend is then removed).
+/// change is complete (the blend is then removed). Progress is by distance travelled, so the
+/// lateral share of the motion is sin θ = Δ·f′(p)/D and the blend's dw per metre along the
+/// lane ([`Blend::weight_per_m`]) is f′(p)/D / cos θ.
 pub(crate) fn step(
     change: &RouteLaneChange,
     track: &mut LaneTrack,
@@ -86,8 +92,10 @@ pub(crate) fn step(
     let (f, df_dp) = shape_value(DynamicsShape::Cubic, p);
     match &mut track.blend {
         Some(b) => {
+            let per_m = df_dp / change.length;
+            let sin = (change.delta * per_m).clamp(-1.0, 1.0);
             b.weight = f;
-            b.weight_per_m = df_dp / change.length;
+            b.weight_per_m = per_m / (1.0 - sin * sin).sqrt().max(Real::EPSILON);
             true
         }
         None => false,
