@@ -60,6 +60,24 @@ fn light_state_action_is_kept_and_logged() {
     assert_eq!(state.mode, LightMode::Off);
 }
 
+/// Runs the scenario at `path` to its end; returns its event log.
+fn run_log(path: &std::path::Path) -> Vec<EventRecord> {
+    let mut engine = Engine::load(path, &[], EngineConfig::default()).expect("loads");
+    let mut events = Vec::new();
+    engine.run(&mut (), &mut events).expect("runs");
+    events
+}
+
+/// The time of the first `transition` of storyboard element `element` in `events`.
+fn transition_time(events: &[EventRecord], element: &str, transition: Transition) -> Option<f64> {
+    events.iter().find_map(|e| match e {
+        EventRecord::Transition(t) if t.name == element && t.transition == transition => {
+            Some(t.time)
+        }
+        _ => None,
+    })
+}
+
 /// The time of `element`'s `transition` ("start" or "end") in esmini's reference log of
 /// light_state (lines `TIME NAME from -> startTransition -> to`).
 fn reference_time(element: &str, transition: &str) -> f64 {
@@ -89,18 +107,9 @@ fn reference_time(element: &str, transition: &str) -> f64 {
 /// starts and ends in one step.
 #[test]
 fn light_state_action_ends_after_its_transition_time() {
-    let path = corpus("esmini/xosc/light_state.xosc");
-    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
-    let mut events = Vec::new();
-    engine.run(&mut (), &mut events).expect("runs");
-    let find = |element: &str, transition: Transition| {
-        events.iter().find_map(|e| match e {
-            EventRecord::Transition(t) if t.name == element && t.transition == transition => {
-                Some(t.time)
-            }
-            _ => None,
-        })
-    };
+    let events = run_log(&corpus("esmini/xosc/light_state.xosc"));
+    let find =
+        |element: &str, transition: Transition| transition_time(&events, element, transition);
     let ours = |element: &str, transition: Transition| {
         find(element, transition).unwrap_or_else(|| panic!("no {transition:?} of {element}"))
     };
@@ -143,19 +152,11 @@ fn light_state_action_ends_after_its_transition_time() {
 /// stops them: stop transitions, no end.
 #[test]
 fn animation_actions_end_as_the_action_table_says() {
-    let path = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities"))
-        .join("animation.xosc");
-    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
-    let mut events = Vec::new();
-    engine.run(&mut (), &mut events).expect("runs");
-    let at = |element: &str, transition: Transition| {
-        events.iter().find_map(|e| match e {
-            EventRecord::Transition(t) if t.name == element && t.transition == transition => {
-                Some(t.time)
-            }
-            _ => None,
-        })
-    };
+    let events = run_log(
+        &PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities"))
+            .join("animation.xosc"),
+    );
+    let at = |element: &str, transition: Transition| transition_time(&events, element, transition);
     let close = |t: Option<f64>, expected: f64| t.is_some_and(|t| (t - expected).abs() < 1e-9);
     for action in ["door", "mirrors", "window", "walk"] {
         assert!(close(at(action, Transition::Start), 1.0), "{action} start");
