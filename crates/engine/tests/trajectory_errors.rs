@@ -189,3 +189,69 @@ fn timing_with_zero_scale() {
         "expected Timing scale > 0, found 0 at test.xosc:3:5"
     );
 }
+
+/// A straight ClothoidSpline segment of `length` m starting at `time` (the first at the
+/// origin).
+fn timed_segment(length: f64, time: Option<f64>, first: bool) -> ClothoidSplineSegment {
+    ClothoidSplineSegment {
+        curvature_start: 0.0,
+        curvature_end: 0.0,
+        length,
+        h_offset: None,
+        time_start: time,
+        position_start: first.then(|| world(0.0, 0.0)),
+    }
+}
+
+#[test]
+fn clothoid_spline_with_a_time_needs_time_end() {
+    // 1.3 XSD ClothoidSpline/@timeEnd: required once a segment has timeStart (one timed
+    // segment of two is enough to ask for it).
+    let e = error(Shape::ClothoidSpline(ClothoidSpline {
+        time_end: None,
+        segments: vec![
+            timed_segment(10.0, None, true),
+            timed_segment(10.0, Some(2.0), false),
+        ],
+    }));
+    assert_eq!(
+        e.to_string(),
+        "expected ClothoidSpline timeEnd when its segments have timeStart, found none at test.xosc:3:5"
+    );
+}
+
+#[test]
+fn clothoid_spline_times_going_back() {
+    // Segment 3 starts at 1 s, before segment 1's 4 s (segment 2 has no time); and a timeEnd
+    // before the last timeStart.
+    let e = error(Shape::ClothoidSpline(ClothoidSpline {
+        time_end: Some(9.0),
+        segments: vec![
+            timed_segment(10.0, Some(4.0), true),
+            timed_segment(10.0, None, false),
+            timed_segment(10.0, Some(1.0), false),
+        ],
+    }));
+    assert!(
+        matches!(
+            e.kind(),
+            TrajectoryErrorKind::TimesOutOfOrder { index: 3, .. }
+        ),
+        "{e}"
+    );
+    assert_eq!(
+        e.to_string(),
+        "expected the time of ClothoidSplineSegment 3 >= 4 s, found 1 s at test.xosc:3:5"
+    );
+    let e = error(Shape::ClothoidSpline(ClothoidSpline {
+        time_end: Some(3.0),
+        segments: vec![
+            timed_segment(10.0, Some(0.0), true),
+            timed_segment(10.0, Some(5.0), false),
+        ],
+    }));
+    assert_eq!(
+        e.to_string(),
+        "expected ClothoidSpline timeEnd >= 5 s (the last timeStart), found 3 s at test.xosc:3:5"
+    );
+}

@@ -354,14 +354,15 @@ fn clothoid_spline<Q: EntityQuery + ?Sized>(
             .time_end
             .ok_or_else(|| TrajectoryError::new(TrajectoryErrorKind::MissingTimeEnd, pos))?;
         check_finite(&[("ClothoidSpline timeEnd", t_end)], pos)?;
-        let n = spline.segments.len();
-        ordered_time(
-            pairs.last().map(|p| p.1),
-            t_end,
-            "ClothoidSplineSegment",
-            n,
-            pos,
-        )?;
+        if let Some(&(_, previous)) = pairs.last().filter(|p| t_end < p.1) {
+            return Err(TrajectoryError::new(
+                TrajectoryErrorKind::TimeEndTooEarly {
+                    previous,
+                    found: t_end,
+                },
+                pos,
+            ));
+        }
         pairs.push((s, t_end));
         Some(TimeTable::new(lead_in(pairs)))
     } else {

@@ -116,6 +116,16 @@ pub enum TrajectoryErrorKind {
         /// This time, s.
         found: f64,
     },
+    /// A ClothoidSpline whose `timeEnd` comes before its last segment's `timeStart`.
+    #[error(
+        "expected ClothoidSpline timeEnd >= {previous} s (the last timeStart), found {found} s"
+    )]
+    TimeEndTooEarly {
+        /// The last timeStart, s.
+        previous: f64,
+        /// timeEnd, s.
+        found: f64,
+    },
     /// A ClothoidSpline whose segments have times but which has no `timeEnd`.
     #[error("expected ClothoidSpline timeEnd when its segments have timeStart, found none")]
     MissingTimeEnd,
