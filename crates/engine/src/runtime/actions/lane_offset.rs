@@ -8,7 +8,10 @@
 //! takes the cubic's, T = √(6Δ/a), as esmini does (TransitionDynamics::
 //! GetTargetParamValByPrimPrimPeak), so that the two agree. Without `maxLateralAcc`
 //! a = 0.5 m/s², esmini's default too (a gentle, comfortable value).
-//! `continuous="true"` keeps the action running (holding the offset) until it is replaced.
+//! `continuous="true"` keeps the action running (holding the offset) until it is replaced. A
+//! relative target is read once, at the start: with `continuous="true"` the offset is not
+//! kept relative to a reference that moves on (the 1.0 model documentation's "continuously
+//! kept lane offset"; not done).
 
 use scenario::{
     DynamicsDimension, DynamicsShape, LaneOffsetTarget, LateralAction, SourcePos,
