@@ -78,6 +78,19 @@ fn drives_the_shortest_route_through_two_junctions() {
 }
 
 #[test]
+fn entity_behind_the_route_joins_it() {
+    // The route starts on connecting road 12 (s = 5) of junction 100, ahead of Ego on road 1:
+    // where road 1 ends, of the junction's connecting roads 11 (first) and 12 Ego takes the one
+    // on the route, then follows it: 12, 3, 31, 4 (without the route: 11, 2).
+    let (frames, _) = run(
+        "two_junctions.xosc",
+        &[("FromRoad", "12"), ("FromS", "5")],
+        1,
+    );
+    assert_eq!(ids(&roads(&frames)), ["1", "12", "3", "31", "4"]);
+}
+
+#[test]
 fn unconnected_waypoints_are_reported_and_the_entity_drives_on() {
     // Road 1 s = 5 lies behind Ego's start on a one-way network with no loop: no path leads
     // there. The action logs the planner's error with the waypoint's place in the file and
@@ -100,7 +113,7 @@ fn unconnected_waypoints_are_reported_and_the_entity_drives_on() {
         format!(
             "expected a path through the road network from waypoint 1 (road \"1\", lane -1, \
              s = 10.000) to waypoint 2 (road \"1\", lane -1, s = 5.000) of route \"R\", found \
-             none at {path}:63:71 (the route is not assigned)"
+             none at {path}:65:71 (the route is not assigned)"
         )
     );
     assert_eq!(ids(&roads(&frames)), ["1", "11", "2"]);

@@ -11,9 +11,10 @@
 //! LaneChangeAction of the scenario is not undone. The standard leaves this open; it is also
 //! how esmini 3.6.0 follows routes (road by road, its `Route::minimal_waypoints_`).
 //!
-//! A closed route wraps: after its last stretch, which ends at the first waypoint, the first
-//! stretch follows again. An open route ends at its last waypoint; from there on the entity
-//! takes successors as without a route.
+//! An entity not yet on the route (or off it) takes, where its road ends, a successor on a
+//! road of the route ahead, and so joins it. A closed route wraps: after its last stretch,
+//! which ends at the first waypoint, the first stretch follows again. An open route ends at
+//! its last waypoint; from there on the entity takes successors as without a route.
 
 use opendrive::{Direction, LaneHandle, Real, RoadNetwork, RouteSegment, S_TOLERANCE};
 
@@ -150,33 +151,48 @@ impl RouteFollow {
     }
 
     /// Where the track's road ends: the successor of `candidates` on the route's next road
-    /// (in the planned lane if it is one of them); `None` when none is on it or the route has
-    /// ended, which leaves the choice to the caller. Moves the cursor onto the chosen stretch.
+    /// (in the planned lane if it is one of them). Off the route (not yet on it, or its lane
+    /// does not lead on) the first successor on a road of the route ahead, so the entity joins
+    /// it. `None` when no successor is on the route or the route has ended, which leaves the
+    /// choice to the caller. Moves the cursor onto the chosen stretch.
     pub(crate) fn choose(
         &mut self,
         net: &RoadNetwork,
         from_road: &str,
         candidates: &[LaneHandle],
     ) -> Option<LaneHandle> {
-        let current = self.current()?;
-        if current.road_id != from_road {
-            return None;
+        let on_route = self.current()?.road_id == from_road;
+        let road_of = |h: &LaneHandle| net.handle_road(*h).id.as_str();
+        if on_route {
+            let Some(j) = self.next_entry() else {
+                // Leaving the road of an open route's last stretch: the route is done.
+                self.ended = true;
+                return None;
+            };
+            let next = &self.plan.segments[j];
+            let pick = candidates
+                .iter()
+                .filter(|h| road_of(h) == next.road_id)
+                .find(|h| h.lane == next.lane_id)
+                .or_else(|| candidates.iter().find(|h| road_of(h) == next.road_id));
+            if let Some(&h) = pick {
+                self.cursor = j;
+                return Some(h);
+            }
         }
-        let Some(j) = self.next_entry() else {
-            // Leaving the road of an open route's last stretch: the route is done.
-            self.ended = true;
-            return None;
-        };
-        let next = &self.plan.segments[j];
-        let on_road = |h: &&LaneHandle| net.handle_road(**h).id == next.road_id;
-        let pick = candidates
-            .iter()
-            .filter(on_road)
-            .find(|h| h.lane == next.lane_id)
-            .or_else(|| candidates.iter().find(on_road))
-            .copied()?;
-        self.cursor = j;
-        Some(pick)
+        // Join the route: the nearest stretch ahead (round a closed route) that a successor
+        // enters.
+        let n = self.plan.segments.len();
+        let ahead = if self.plan.closed { n } else { n - self.cursor };
+        let (k, h) = (0..ahead).map(|k| (self.cursor + k) % n).find_map(|k| {
+            let seg = &self.plan.segments[k];
+            candidates
+                .iter()
+                .find(|h| road_of(h) == seg.road_id && net.driving_direction(**h) == seg.direction)
+                .map(|&h| (k, h))
+        })?;
+        self.cursor = k;
+        Some(h)
     }
 
     /// The lane the entity must change to on its current road: the planned lane at this road's
