@@ -21,7 +21,11 @@ fn file(name: &str) -> PathBuf {
 /// selected. The actors of "to 25" are Car1 (EntityRef) ∪ {Car2}: both at 25 m/s from the first
 /// frame, Car3 stays at 10 m/s. Act "both" ("Car1 and Car2 > 20 m/s", rule all, and "time ≥
 /// 0.5 s") fires at 0.5 s with both cars holding; "to 5" has no EntityRef, so exactly Car1 and
-/// Car2 step to 5 m/s, shown from the frame after that step (0.55 s); Car3 is never touched.
+/// Car2 step to 5 m/s, shown from the frame after that step (0.55 s). Act "delayed" ("some
+/// car > 22 m/s", rising edge, delay 0.7 s): the triggers first see 25 m/s in the step at
+/// 0.05 s (a step's triggers see the world as the step began), so it fires at 0.75 s, when all
+/// cars are slower; a delay shifts the condition's value (storyboard::delay), so the entities
+/// are those of 0.05 s: Car1 and Car2 step to 12 m/s (frame 0.80 s). Car3 is never touched.
 #[test]
 fn triggering_entities_of_the_firing_groups_join_the_actors() {
     const TOLERANCE: f64 = 1e-9;
@@ -40,7 +44,9 @@ fn triggering_entities_of_the_firing_groups_join_the_actors() {
         (0.0, 25.0, 25.0, 10.0),
         (0.5, 25.0, 25.0, 10.0),
         (0.55, 5.0, 5.0, 10.0),
-        (1.0, 5.0, 5.0, 10.0),
+        (0.75, 5.0, 5.0, 10.0),
+        (0.8, 12.0, 12.0, 10.0),
+        (1.0, 12.0, 12.0, 10.0),
     ] {
         assert!((speed("Car1", t) - car1).abs() < TOLERANCE, "Car1 at {t}");
         assert!((speed("Car2", t) - car2).abs() < TOLERANCE, "Car2 at {t}");

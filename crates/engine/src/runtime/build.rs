@@ -126,6 +126,7 @@ pub(crate) fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entit
         EntityObject::Vehicle(v) => {
             e.vehicle_category = Some(v.vehicle_category);
             e.performance = Some(v.performance);
+            e.max_curvature = crate::trajectory::max_curvature(&v.axles);
             e.model3d.clone_from(&v.model3d);
             e.color = color_of(&v.properties);
         }
@@ -315,7 +316,15 @@ impl Builder<'_> {
             start_trigger
                 .iter()
                 .flat_map(|t| &t.condition_groups)
-                .map(|g| g.conditions.iter().map(|c| c.pos.clone()).collect())
+                .map(|g| {
+                    g.conditions
+                        .iter()
+                        .map(|c| super::selection::ConditionRef {
+                            pos: c.pos.clone(),
+                            delay: c.delay,
+                        })
+                        .collect()
+                })
                 .collect()
         });
         if triggering.is_some() || refs.iter().any(|r| selections.iter().any(|s| &s.name == r)) {

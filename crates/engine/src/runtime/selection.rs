@@ -13,28 +13,16 @@
 //! * as ManeuverGroup actors: each private action runs per member, the members taken when the
 //!   action starts.
 //!
-//! `Actors/@selectTriggeringEntities` (§7.3.1 "ManeuverGroups and Actors"): when true, the
-//! entities that made the parent Act's start trigger fire are actors too, in addition to (the
-//! union with) the EntityRefs. "Entities become actors if … their states are used by the
-//! logical expressions in Conditions, the Conditions using the states evaluate to true, [and
-//! are] contained in ConditionGroups that evaluate to true", the condition groups being those
-//! of the parent Act. oscsim reads this as: the TriggeringEntities of the Act's
-//! ByEntityConditions for which the EntityCondition held when the Act started, over the
-//! condition groups whose conditions were all true then. Each condition reports its raw value
-//! (and a ByEntityCondition those entities) at every evaluation
-//! ([`Selections::note_triggering`]); an Act's start trigger is evaluated only until the Act
-//! starts, so its last report is the one of the firing step.
-//! When a condition's `delay` or edge makes the group fire although no group holds at that
-//! moment, every group's entities are taken (the per-entity history a delay shifts is not
-//! kept). An Act without a start trigger starts with its Story and selects no one.
+//! * with `Actors/@selectTriggeringEntities` (§7.3.1): the entities that made the parent Act's
+//!   start trigger fire join the actors when each action starts (`triggering`); an Act without
+//!   a start trigger starts with its Story and selects no one.
 //!
 //! The §7.2.2.5 restrictions on where a selection may stand and which entity types an action
 //! applies to are checked when the engine is built (`restrictions`, [`check_multiplicity`],
 //! [`check_actor_kinds`]). Selection cycles are rejected by the scenario loader.
 
 use std::borrow::Cow;
-use std::cell::RefCell;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 
 use scenario::{Condition, ConditionKind, EntitySelection, Scenario, SelectionMember, SourcePos};
 
@@ -43,21 +31,21 @@ use super::world::World;
 use crate::storyboard::ActionId;
 
 mod restrictions;
+mod triggering;
 
 pub(crate) use restrictions::{check_actor_kinds, check_multiplicity};
+pub(crate) use triggering::ConditionRef;
+use triggering::TriggerReports;
 
 /// The actors of the actions of one ManeuverGroup, worked out when each action starts.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct ActorSpec {
     /// The EntityRefs of `Actors` (objects or selections).
     pub refs: Vec<String>,
-    /// With `selectTriggeringEntities`: the positions of the conditions of the parent Act's
-    /// start trigger, per condition group.
-    pub triggering: Option<Vec<Vec<SourcePos>>>,
+    /// With `selectTriggeringEntities`: the conditions of the parent Act's start trigger, per
+    /// condition group.
+    pub triggering: Option<Vec<Vec<ConditionRef>>>,
 }
-
-/// The last report of one ByEntityCondition: its raw value and the entities it held for.
-type Report = (bool, Vec<String>);
 
 /// The scenario's entity selections, as declared.
 #[derive(Debug, Clone, Default)]
@@ -65,9 +53,8 @@ pub(crate) struct Selections {
     defs: Vec<EntitySelection>,
     /// Actions whose actors name a selection or select triggering entities.
     actors: BTreeMap<ActionId, ActorSpec>,
-    /// The last report of each condition, by its position in the file. Written while
-    /// conditions are evaluated (they see the world read-only).
-    reports: RefCell<HashMap<SourcePos, Report>>,
+    /// What the conditions of those Acts' start triggers reported.
+    reports: TriggerReports,
 }
 
 impl Selections {
@@ -76,22 +63,28 @@ impl Selections {
         Selections {
             defs: scenario.entities.entity_selections.clone(),
             actors: BTreeMap::new(),
-            reports: RefCell::new(HashMap::new()),
+            reports: TriggerReports::default(),
         }
     }
 
     /// Records the actions whose ManeuverGroup actors name a selection or select triggering
     /// entities.
     pub(crate) fn set_actors(&mut self, actors: Vec<(ActionId, ActorSpec)>) {
+        for c in actors
+            .iter()
+            .filter_map(|(_, spec)| spec.triggering.as_ref())
+            .flatten()
+            .flatten()
+        {
+            self.reports.watch(c);
+        }
         self.actors = actors.into_iter().collect();
     }
 
-    /// Keeps the raw value of the condition at `pos` and the triggering entities it held for
-    /// (module doc).
-    pub(crate) fn note_triggering(&self, pos: &SourcePos, value: bool, held: &[String]) {
-        self.reports
-            .borrow_mut()
-            .insert(pos.clone(), (value, held.to_vec()));
+    /// Records an evaluation of the condition at `pos` at `time`: its raw value and the
+    /// triggering entities it held for (`triggering`).
+    pub(crate) fn note_triggering(&self, pos: &SourcePos, time: f64, value: bool, held: &[String]) {
+        self.reports.note(pos, time, value, held);
     }
 
     /// The actors of action `id` now, if its ManeuverGroup names a selection or selects
@@ -113,7 +106,7 @@ impl Selections {
                 .unwrap_or_else(|| world.id(r).into_iter().collect()));
         }
         if let Some(groups) = &spec.triggering {
-            let names = self.triggering_entities(groups);
+            let names = self.reports.entities(groups);
             add(names
                 .iter()
                 .filter_map(|n| world.id(n))
@@ -121,28 +114,6 @@ impl Selections {
                 .collect());
         }
         Some(out)
-    }
-
-    /// The triggering entities of a start trigger with these condition `groups` as last
-    /// reported (module doc): over the groups whose conditions all held, else over all.
-    fn triggering_entities(&self, groups: &[Vec<SourcePos>]) -> Vec<String> {
-        let reports = self.reports.borrow();
-        let holds = |g: &Vec<SourcePos>| g.iter().all(|p| reports.get(p).is_some_and(|r| r.0));
-        let firing: Vec<&Vec<SourcePos>> = groups.iter().filter(|g| holds(g)).collect();
-        let chosen = if firing.is_empty() {
-            groups.iter().collect()
-        } else {
-            firing
-        };
-        let mut names: Vec<String> = Vec::new();
-        for pos in chosen.into_iter().flatten() {
-            for n in reports.get(pos).map_or(&[][..], |r| &r.1[..]) {
-                if !names.contains(n) {
-                    names.push(n.clone());
-                }
-            }
-        }
-        names
     }
 
     fn find(&self, name: &str) -> Option<&EntitySelection> {

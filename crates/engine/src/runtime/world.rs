@@ -240,7 +240,10 @@ impl ConditionContext for ConditionWorld<'_> {
     }
 
     fn note_triggering(&self, pos: &scenario::SourcePos, value: bool, held: &[String]) {
-        self.world.selections.note_triggering(pos, value, held);
+        let time = self.world.time;
+        self.world
+            .selections
+            .note_triggering(pos, time, value, held);
     }
 
     /// The time of day of the EnvironmentAction in force (seconds since the epoch): its

@@ -1,0 +1,185 @@
+//! `Actors/@selectTriggeringEntities` (OpenSCENARIO 1.3 §7.3.1 "ManeuverGroups and Actors"):
+//! which entities made the parent Act's start trigger fire.
+//!
+//! The standard: "entities become actors if … [their] states … are used by the logical
+//! expressions in Conditions, the Conditions using the states evaluate to true, [and are]
+//! contained in ConditionGroups that evaluate to true", the condition groups being those of the
+//! parent Act; with EntityRefs the actors are the union. oscsim reads this as: the
+//! TriggeringEntities of the Act's ByEntityConditions for which the EntityCondition held, over
+//! the condition groups whose conditions were all true, as each condition's value reached the
+//! trigger when the Act started.
+//!
+//! Each condition reports its raw value, and a ByEntityCondition the entities it held for, at
+//! every evaluation ([`TriggerReports::note`]). A condition's `delay` shifts its value in time
+//! (storyboard::delay): the trigger fires on the value of `delay` seconds before, so the
+//! entities are taken from the report of that step too (the nearest report, as the delay line
+//! rounds to the nearest step). An Act's start trigger is evaluated only until the Act starts,
+//! so the newest report of its conditions is the one of the firing step. Only the conditions
+//! of such Acts are kept, and only as far back as their delay reaches.
+//!
+//! The group test uses the raw values: a condition with a `falling` edge fires while its raw
+//! value is false; if so no group counts as true and every group's entities are taken (a falling
+//! condition holds for no entity then, so it adds none).
+
+use std::cell::RefCell;
+use std::collections::{HashMap, VecDeque};
+
+use scenario::SourcePos;
+
+/// A condition of an Act's start trigger: its place in the file and its `delay` (s).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct ConditionRef {
+    /// Where the Condition is written: the key of its reports.
+    pub pos: SourcePos,
+    /// Its `delay`, s.
+    pub delay: f64,
+}
+
+/// One evaluation of a condition.
+#[derive(Debug, Clone, PartialEq)]
+struct Report {
+    time: f64,
+    value: bool,
+    held: Vec<String>,
+}
+
+/// The reports of the watched conditions, written while conditions are evaluated (they see the
+/// world read-only, hence the cell).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct TriggerReports {
+    /// The conditions to keep, with the longest delay each is used with.
+    watched: HashMap<SourcePos, f64>,
+    history: RefCell<HashMap<SourcePos, VecDeque<Report>>>,
+}
+
+impl TriggerReports {
+    /// Keeps the reports of condition `c` from now on.
+    pub(crate) fn watch(&mut self, c: &ConditionRef) {
+        let delay = self.watched.entry(c.pos.clone()).or_insert(c.delay);
+        *delay = delay.max(c.delay);
+    }
+
+    /// Records an evaluation of the condition at `pos` at simulation `time`: its raw `value`
+    /// and the triggering entities it `held` for.
+    pub(crate) fn note(&self, pos: &SourcePos, time: f64, value: bool, held: &[String]) {
+        let Some(&delay) = self.watched.get(pos) else {
+            return;
+        };
+        let mut history = self.history.borrow_mut();
+        let reports = history.entry(pos.clone()).or_default();
+        reports.push_back(Report {
+            time,
+            value,
+            held: held.to_vec(),
+        });
+        // A report is needed while it may be the nearest to `now − delay` of a later lookup:
+        // the front goes once the next one is itself no later than that.
+        // (1e-9 s: the rounding of summed steps.)
+        while reports.len() > 1 && reports[1].time <= time - delay + 1e-9 {
+            reports.pop_front();
+        }
+    }
+
+    /// The report of `c` whose time is nearest to its newest report's time minus `c.delay`;
+    /// `None` if the condition was never evaluated or has no report that old (then its delayed
+    /// value was false).
+    fn delayed(reports: &VecDeque<Report>, c: &ConditionRef) -> Option<Report> {
+        let newest = reports.back()?;
+        let target = newest.time - c.delay;
+        let step = reports
+            .len()
+            .checked_sub(2)
+            .map_or(0.0, |i| newest.time - reports[i].time);
+        let nearest = reports
+            .iter()
+            .min_by(|a, b| (a.time - target).abs().total_cmp(&(b.time - target).abs()))?;
+        (nearest.time <= target + 0.5 * step).then(|| nearest.clone())
+    }
+
+    /// The triggering entities of a start trigger with these condition `groups` (module doc),
+    /// each once, in the order of the conditions.
+    pub(crate) fn entities(&self, groups: &[Vec<ConditionRef>]) -> Vec<String> {
+        let history = self.history.borrow();
+        let report = |c: &ConditionRef| history.get(&c.pos).and_then(|r| Self::delayed(r, c));
+        let firing: Vec<&Vec<ConditionRef>> = groups
+            .iter()
+            .filter(|g| g.iter().all(|c| report(c).is_some_and(|r| r.value)))
+            .collect();
+        let chosen = if firing.is_empty() {
+            groups.iter().collect()
+        } else {
+            firing
+        };
+        let mut names: Vec<String> = Vec::new();
+        for c in chosen.into_iter().flatten() {
+            for n in report(c).map(|r| r.held).unwrap_or_default() {
+                if !names.contains(&n) {
+                    names.push(n);
+                }
+            }
+        }
+        names
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+    use std::sync::Arc;
+
+    use super::*;
+
+    fn at(line: u32, delay: f64) -> ConditionRef {
+        ConditionRef {
+            pos: SourcePos {
+                file: Arc::from(Path::new("t.xosc")),
+                line,
+                col: 1,
+            },
+            delay,
+        }
+    }
+
+    /// A condition with delay 0.2 s at dt 0.1 s: the entities come from the report 0.2 s
+    /// before the newest, and only reports that may still be needed are kept.
+    #[test]
+    fn delayed_condition_selects_the_entities_of_its_delayed_value() {
+        let c = at(1, 0.2);
+        let mut reports = TriggerReports::default();
+        reports.watch(&c);
+        let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        reports.note(&c.pos, 0.0, true, &names(&["A"]));
+        reports.note(&c.pos, 0.1, true, &names(&["A", "B"]));
+        reports.note(&c.pos, 0.2, false, &[]);
+        // At 0.2 the value of 0.0 reaches the trigger: A.
+        assert_eq!(reports.entities(&[vec![c.clone()]]), ["A"]);
+        reports.note(&c.pos, 0.3, false, &[]);
+        assert_eq!(reports.entities(&[vec![c.clone()]]), ["A", "B"]);
+        assert_eq!(reports.history.borrow()[&c.pos].len(), 3, "0.0 dropped");
+        // An unwatched condition keeps nothing.
+        let other = at(2, 0.0);
+        reports.note(&other.pos, 0.3, true, &names(&["C"]));
+        assert!(reports.entities(&[vec![other]]).is_empty());
+    }
+
+    /// Two groups: only the one whose conditions all hold gives its entities; when none
+    /// holds, every group does.
+    #[test]
+    fn only_true_groups_select_unless_none_is_true() {
+        let (a, b, c) = (at(1, 0.0), at(2, 0.0), at(3, 0.0));
+        let mut reports = TriggerReports::default();
+        for x in [&a, &b, &c] {
+            reports.watch(x);
+        }
+        let one = |s: &str| vec![s.to_string()];
+        reports.note(&a.pos, 1.0, true, &one("A"));
+        reports.note(&b.pos, 1.0, true, &one("B"));
+        reports.note(&c.pos, 1.0, false, &[]);
+        let groups = [vec![a.clone()], vec![b.clone(), c.clone()]];
+        assert_eq!(reports.entities(&groups), ["A"]);
+        reports.note(&a.pos, 1.1, false, &[]);
+        reports.note(&b.pos, 1.1, true, &one("B"));
+        reports.note(&c.pos, 1.1, false, &[]);
+        assert_eq!(reports.entities(&groups), ["B"]);
+    }
+}
