@@ -182,6 +182,42 @@ fn turn_reached_from_another_lane_changes_lane_in_time() {
 }
 
 #[test]
+fn lane_change_across_a_lane_section_follows_the_lane_links() {
+    // turn_lane_sections.xodr: on road 1 lane −1 narrows to nothing at s = 50 (width
+    // w₁(s) = 3.5 − 0.07·s) and lanes −2, −3 continue as −1, −2 of the next lane section, of
+    // which only −2 (before s = 50: −3) turns to road 3. Ego starts in lane −2 at s = 10,
+    // 10 m/s: its lane, carried by the links to the road's end, goes straight on, so the route
+    // needs lane −3 at once. Both lanes' centres move with w₁: lane −2's is at −(w₁ + 1.75),
+    // lane −3's at −(w₁ + 5.25), so the cubic over D = 10·√21 m gives
+    // t = −w₁(s) − 1.75 − 3.5·f(u), u = 10·T/D, with w₁ = 0 from s = 50 on, where the blend's
+    // two lanes (−2 → −1, −3 → −2) are carried across the section boundary by their links.
+    let (frames, _) = run("turn_lane_sections.xosc", &[], 1);
+    let d = 10.0 * 21f64.sqrt();
+    for time in [1.0, 2.0, 3.0, 3.95, 4.0, 4.05, 4.1, 4.5] {
+        let p = frames.at("Ego", time).road.clone().expect("on road");
+        let w1 = if p.2 < 50.0 { 3.5 - 0.07 * p.2 } else { 0.0 };
+        let u: f64 = 10.0 * time / d;
+        let hand = -w1 - 1.75 - 3.5 * (3.0 * u * u - 2.0 * u * u * u);
+        assert!(
+            (p.3 - hand).abs() < 1e-9,
+            "t({time}) = {}, hand {hand}",
+            p.3
+        );
+    }
+    assert!(frames
+        .at("Ego", 3.95)
+        .road
+        .as_ref()
+        .is_some_and(|p| p.2 < 50.0));
+    assert!(frames
+        .at("Ego", 4.05)
+        .road
+        .as_ref()
+        .is_some_and(|p| p.2 > 50.0));
+    assert_eq!(ids(&roads(&frames)), ["1", "12", "3"]);
+}
+
+#[test]
 fn lateral_action_takes_the_lateral_domain_from_the_route() {
     // turn_lane_override.xosc: as turn_lane.xosc, but at 1 s a LaneChangeAction back to lane −1
     // (cubic, 2 s) takes the lateral domain (§7.5.1 control domains): the route's lane change

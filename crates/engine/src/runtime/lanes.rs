@@ -99,13 +99,13 @@ pub fn advance(
         };
         let target = track.s + sign * distance;
         if (0.0..=road.length).contains(&target) {
-            cross_sections(net, road, track, target);
+            cross_sections(net, track, target);
             track.s = target;
             return 0.0;
         }
         let end = if sign > 0.0 { road.length } else { 0.0 };
         distance -= (end - track.s).abs();
-        cross_sections(net, road, track, end);
+        cross_sections(net, track, end);
         track.s = end;
         let Some(handle) = net.lane_handle(&track.road_id, track.lane_id, end) else {
             return distance;
@@ -130,22 +130,29 @@ pub fn advance(
     distance
 }
 
-/// Carries the lane of `track` (at its s) across the lane-section boundaries of `road` up to
-/// s `to` by the lanes' links (OpenDRIVE 1.8 §11.4 "Lane linkage"): a lane linked to another id
-/// in the next section continues as that lane; without a link the id is kept.
-fn cross_sections(net: &RoadNetwork, road: &Road, track: &mut LaneTrack, to: Real) {
-    let last = road.lane_section_index(to);
-    let Some(mut h) = net.lane_handle(&track.road_id, track.lane_id, track.s) else {
-        return;
+/// The id that lane `lane` of road `road_id` at s `from` has at s `to`, travelling in
+/// `direction`: lane links carry it across lane-section boundaries (OpenDRIVE 1.8 §11.4 "Lane
+/// linkage"); a lane without a link into the next section keeps its id.
+pub fn carry_lane(
+    net: &RoadNetwork,
+    road_id: &str,
+    lane: i32,
+    from: Real,
+    to: Real,
+    direction: Direction,
+) -> i32 {
+    let (Some(road), Some(mut h)) = (net.road(road_id), net.lane_handle(road_id, lane, from))
+    else {
+        return lane;
     };
+    let last = road.lane_section_index(to);
     let step: i64 = if last as i64 > i64::from(h.section) {
         1
     } else {
         -1
     };
     while h.section as usize != last {
-        let along = track.direction == net.driving_direction(h);
-        let linked = if along {
+        let linked = if direction == net.driving_direction(h) {
             net.successors(h)
         } else {
             net.predecessors(h)
@@ -159,7 +166,19 @@ fn cross_sections(net: &RoadNetwork, road: &Road, track: &mut LaneTrack, to: Rea
                 ..h
             });
     }
-    track.lane_id = h.lane;
+    h.lane
+}
+
+/// Carries the lane `track` follows, and the lane a lateral transition comes from, from its s
+/// to s `to` across lane sections ([`carry_lane`]).
+fn cross_sections(net: &RoadNetwork, track: &mut LaneTrack, to: Real) {
+    let carry = |lane| carry_lane(net, &track.road_id, lane, track.s, to, track.direction);
+    let lane = carry(track.lane_id);
+    let from = track.blend.map(|b| carry(b.from_lane));
+    track.lane_id = lane;
+    if let (Some(b), Some(from)) = (&mut track.blend, from) {
+        b.from_lane = from;
+    }
 }
 
 /// A road position built from a lane track (no look-up: the track knows its road);

@@ -20,6 +20,7 @@ use opendrive::{Direction, LaneHandle, Real, RoadNetwork, RouteSegment, S_TOLERA
 
 use crate::routing::PlannedRoute;
 use crate::runtime::entity::LaneTrack;
+use crate::runtime::lanes::carry_lane;
 
 use super::lane_change::RouteLaneChange;
 
@@ -195,10 +196,11 @@ impl RouteFollow {
         Some(h)
     }
 
-    /// The lane the entity must change to on its current road: the planned lane at this road's
-    /// end, when the track's own lane does not lead to the route's next road from there.
-    /// `None` when its lane leads on, when the route ends on this road, or when the entity is
-    /// off the route.
+    /// The lane the entity must change to on its current road, when the lane it follows (as
+    /// lane links carry it to the road's end) does not lead to the route's next road: the
+    /// planned lane where the entity is (the stretch of this road that covers its s, or the
+    /// first one ahead in its lane section). `None` when its lane leads on, when the route ends
+    /// on this road, or when the entity is off the route.
     pub(crate) fn needed_lane(&self, net: &RoadNetwork, track: &LaneTrack) -> Option<i32> {
         let current = self.current()?;
         if current.road_id != track.road_id || current.direction != track.direction {
@@ -211,8 +213,16 @@ impl RouteFollow {
             Direction::Forward => road.length,
             Direction::Backward => 0.0,
         };
+        let exit_lane = carry_lane(
+            net,
+            &track.road_id,
+            track.lane_id,
+            track.s,
+            end,
+            track.direction,
+        );
         let leads_on = net
-            .lane_handle(&track.road_id, track.lane_id, end)
+            .lane_handle(&track.road_id, exit_lane, end)
             .is_some_and(|h| {
                 net.successors(h)
                     .iter()
@@ -221,13 +231,28 @@ impl RouteFollow {
         if leads_on {
             return None;
         }
-        // The stretch before the next entry is the planned one at this road's end.
+        // The stretches of this road from the cursor up to the next entry; the last that
+        // covers the entity's s (a lane change point is covered by the stretches on both sides).
         let n = self.plan.segments.len();
-        let exit = &self.plan.segments[(j + n - 1) % n];
-        let wanted = exit.lane_id;
-        (exit.road_id == track.road_id
-            && wanted != track.lane_id
-            && road.lane_span(wanted, track.s).is_ok())
-        .then_some(wanted)
+        let mut covering = None;
+        let mut i = self.cursor;
+        while i != j {
+            let seg = &self.plan.segments[i];
+            let (lo, hi) = (seg.s_start.min(seg.s_end), seg.s_start.max(seg.s_end));
+            if (lo - S_TOLERANCE..=hi + S_TOLERANCE).contains(&track.s) {
+                covering = Some(seg);
+            }
+            i = (i + 1) % n;
+        }
+        let wanted = match covering {
+            Some(seg) => seg.lane_id,
+            None if road.lane_section_index(current.s_start)
+                == road.lane_section_index(track.s) =>
+            {
+                current.lane_id
+            }
+            None => return None,
+        };
+        (wanted != track.lane_id && road.lane_span(wanted, track.s).is_ok()).then_some(wanted)
     }
 }
