@@ -4,9 +4,11 @@
 //!
 //! The standard says what the limits are, not how the distance is reached: the element
 //! "assigns either unlimited dynamics (if omitted) or limited maxAcceleration/maxDeceleration/
-//! maxSpeed to the action". oscsim reads an attribute left out as no limit from the action;
-//! a vehicle's Performance still bounds longitudinal motion (semantics-pitfalls #9: the
-//! entity's own limits hold whatever the action asks), and has nothing to say laterally.
+//! maxSpeed to the action", each the most "the distance controller is allowed to use". oscsim
+//! reads an attribute left out as no limit from the action; a vehicle's Performance still
+//! bounds longitudinal motion (semantics-pitfalls #9: the entity's own limits hold whatever
+//! the action allows; unlike SpeedProfileAction's, the distance actions' text gives their
+//! DynamicConstraints no precedence over Performance), and has nothing to say laterally.
 //!
 //! The approach is a critically damped spring on the distance error u (m, positive when the
 //! actor must move forward / to the left) with the actor's speed relative to the reference w

@@ -4,8 +4,9 @@
 //!
 //! * What is kept: `distance` (m), or `timeGap` (s) × the reference's speed. The standard does
 //!   not say whose speed turns a time gap into a distance; oscsim takes the reference's, as
-//!   esmini does: the wanted distance then does not depend on the speed being controlled, and
-//!   once the gap is kept both speeds are equal.
+//!   esmini does: the wanted distance then does not depend on the speed being controlled, once
+//!   the gap is kept both speeds are equal, and with leadingReferencedEntity it is the speed
+//!   of the follower, as in a time headway.
 //! * Measured (module `gauge`) in `coordinateSystem` (absent: entity, the actor's frame), between
 //!   reference points or, with `freespace`, bounding boxes.
 //! * `displacement`: trailingReferencedEntity (the default) keeps the reference ahead,
