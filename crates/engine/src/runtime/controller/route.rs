@@ -89,6 +89,18 @@ impl RouteFollow {
         }
     }
 
+    /// The stretches from the cursor on: round a closed route, to the end of an open one.
+    fn ahead(&self) -> impl Iterator<Item = usize> {
+        let n = self.plan.segments.len();
+        let count = if self.plan.closed {
+            n
+        } else {
+            n.saturating_sub(self.cursor)
+        };
+        let cursor = self.cursor;
+        (0..count).map(move |k| (cursor + k) % n)
+    }
+
     /// The first stretch after the current one that starts on a road end (another road, or the
     /// same road entered again): the one the successor at the current road's end must match.
     fn next_entry(&self) -> Option<usize> {
@@ -106,9 +118,9 @@ impl RouteFollow {
 
     /// Brings the cursor to where `track` is: on the current stretch, moved on to a stretch
     /// continuing it once its end is passed, or (after a teleport or a detour) the first
-    /// stretch from the cursor on (round a closed route, ahead along an open one) that lies on
-    /// the track's road, in its direction, not yet passed. Off the route the cursor stays. Passing the end of an open route's last stretch
-    /// ends the route.
+    /// stretch [`ahead`](Self::ahead) that lies on the track's road, in its direction, not yet
+    /// passed. Off the route the cursor stays. Passing the end of an open route's last
+    /// stretch ends the route.
     pub(crate) fn sync(&mut self, track: &LaneTrack) {
         let segs = &self.plan.segments;
         let n = segs.len();
@@ -141,12 +153,7 @@ impl RouteFollow {
                 return;
             }
         }
-        // Round a closed route from the cursor; along an open one, only ahead of it.
-        let ahead = if self.plan.closed { n } else { n - self.cursor };
-        if let Some(i) = (0..ahead)
-            .map(|k| (self.cursor + k) % n)
-            .find(|&i| on(&segs[i]))
-        {
+        if let Some(i) = self.ahead().find(|&i| on(&segs[i])) {
             self.cursor = i;
         }
     }
@@ -181,11 +188,8 @@ impl RouteFollow {
                 return Some(h);
             }
         }
-        // Join the route: the nearest stretch ahead (round a closed route) that a successor
-        // enters.
-        let n = self.plan.segments.len();
-        let ahead = if self.plan.closed { n } else { n - self.cursor };
-        let (k, h) = (0..ahead).map(|k| (self.cursor + k) % n).find_map(|k| {
+        // Join the route: the nearest stretch ahead that a successor enters.
+        let (k, h) = self.ahead().find_map(|k| {
             let seg = &self.plan.segments[k];
             candidates
                 .iter()
