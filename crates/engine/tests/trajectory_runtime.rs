@@ -216,3 +216,61 @@ fn trajectory_from_a_catalog_with_a_parameter_assignment() {
         );
     }
 }
+
+/// The car of the follow fixtures: FrontAxle maxSteering 0.5 rad at 2.98 m, RearAxle at 0:
+/// κ_max = tan 0.5 / 2.98 (kinematic bicycle), minimum turning radius 5.455 m.
+fn fixture_max_curvature() -> f64 {
+    0.5f64.tan() / 2.98
+}
+
+#[test]
+fn follow_mode_steers_a_circle_it_can_drive_exactly() {
+    // A Clothoid of constant curvature 0.1 < κ_max = 0.1833 (radius 10 about (100, 8.465))
+    // from the car's pose. Pure pursuit aims at the circle point a look-ahead further on; the
+    // arc tangent to the heading through it is the circle itself (2·sin α/ℓ = 1/R), so the
+    // car stays at 10 m from the centre. 5π m at 10 m/s: over in the step to 1.6 s (1.55 s).
+    let (frames, events) = run(&fixture("follow_circle.xosc"), 3.0);
+    assert!(fixture_max_curvature() > 0.1);
+    for r in frames
+        .0
+        .iter()
+        .filter(|r| r.name == "Ego" && r.time <= 1.55)
+    {
+        let radius = (r.x - 100.0).hypot(r.y - 8.465);
+        assert!((radius - 10.0).abs() < 1e-6, "{r:?} at {radius} m");
+        // Heading along the circle: the angle swept, d/R = 10·t/10.
+        assert!((r.h - r.time).abs() < 1e-6, "{r:?}");
+    }
+    let end = ended_at(&events, "Init Ego RoutingAction").expect("the action ends");
+    assert!((end - 1.55).abs() < 1e-9, "ended at {end}");
+}
+
+#[test]
+fn follow_mode_takes_a_corner_within_the_steering_limit() {
+    // A right-angle left corner at (130, −1.535) from x = 100, at 10 m/s (0.5 m a step). The
+    // look-ahead is the minimum turning radius L = 1/κ_max = 5.455 m: the car is exactly on
+    // the first leg until the look-ahead point passes the corner, s > 30 − L = 24.55 m
+    // (2.455 s); every step's arc turns at most κ_max·0.5 m; it comes back onto the second
+    // leg (within 0.1 m from 4.8 s) and the action ends when the nearest trajectory point is
+    // the end.
+    let (frames, events) = run(&fixture("follow_corner.xosc"), 8.0);
+    let ego: Vec<_> = frames.0.iter().filter(|r| r.name == "Ego").collect();
+    let end = ended_at(&events, "Init Ego RoutingAction").expect("the action ends");
+    for r in ego.iter().filter(|r| r.time <= 2.45 + 1e-9) {
+        assert!((r.y + 1.535).abs() < 1e-9 && r.h.abs() < 1e-9, "{r:?}");
+        assert!((r.x - 100.0 - 10.0 * r.time).abs() < 1e-6, "{r:?}");
+    }
+    let limit = fixture_max_curvature() * 0.5 + 1e-9;
+    for w in ego.windows(2).filter(|w| w[1].time <= end + 1e-9) {
+        let turn = opendrive::normalize_angle(w[1].h - w[0].h);
+        assert!(turn.abs() <= limit, "{turn} rad in a step at {}", w[1].time);
+    }
+    assert!(
+        ego.iter().any(|r| r.x > 130.5),
+        "the corner is cut and overshot"
+    );
+    for r in ego.iter().filter(|r| r.time >= 4.8 && r.time <= end) {
+        assert!((r.x - 130.0).abs() < 0.1, "{r:?}");
+    }
+    assert!(end > 4.8 && end < 6.0, "ended at {end}");
+}

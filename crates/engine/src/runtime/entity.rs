@@ -122,6 +122,8 @@ pub struct Entity {
     pub performance: Option<Performance>,
     /// Colour, from a `Property name="color"` when one names a §8.7.11 colour.
     pub color: Option<Color>,
+    /// The largest curvature a vehicle can drive (1/m), from its axles (trajectory::max_curvature).
+    pub max_curvature: Option<Real>,
     /// `model3d`, as written.
     pub model3d: Option<String>,
     /// True once a TeleportAction (or AddEntityAction) placed the entity.
@@ -185,6 +187,7 @@ impl Entity {
             model3d: None,
             placed: false,
             pose: Pose::default(),
+            max_curvature: None,
             road_position: None,
             track: None,
             speed: 0.0,

@@ -70,6 +70,41 @@ impl Trajectory {
             .map(|s| (s, d2(s)))
             .min_by(|a, b| a.1.total_cmp(&b.1))
             .map_or(0.0, |(s, _)| s);
+        self.closest_at(x, y, s)
+    }
+}
+
+impl Trajectory {
+    /// The point closest (horizontally) to (x, y) among arc lengths within `window` of
+    /// `s_guess` (for an entity that moved a known distance since it was at `s_guess`): golden
+    /// sections on that stretch, polished by Newton's method; the stretch's joints are
+    /// candidates too.
+    pub fn closest_near(&self, x: Real, y: Real, s_guess: Real, window: Real) -> Closest {
+        let length = self.length();
+        let (lo, hi) = (
+            (s_guess - window).clamp(0.0, length),
+            (s_guess + window).clamp(0.0, length),
+        );
+        let d2 = |s: Real| {
+            let p = self.eval(s);
+            (p.x - x).powi(2) + (p.y - y).powi(2)
+        };
+        let refined = self.newton_foot(x, y, golden_section(lo, hi, d2), lo, hi);
+        let s = std::iter::once(refined)
+            .chain(
+                self.joints()
+                    .iter()
+                    .copied()
+                    .filter(|&j| j >= lo && j <= hi),
+            )
+            .map(|s| (s, d2(s)))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map_or(refined, |(s, _)| s);
+        self.closest_at(x, y, s)
+    }
+
+    /// (x, y) seen from the trajectory point at arc length `s`.
+    fn closest_at(&self, x: Real, y: Real, s: Real) -> Closest {
         let point = self.eval(s);
         let (dx, dy) = (x - point.x, y - point.y);
         let (sin_h, cos_h) = point.heading.sin_cos();
@@ -79,9 +114,7 @@ impl Trajectory {
             t: -dx * sin_h + dy * cos_h,
         }
     }
-}
 
-impl Trajectory {
     /// Polishes `s` by Newton's method on f(s) = (P(s) − Q)·T(s), the tangential component
     /// of the offset, with f'(s) = 1 + κ·(P − Q)·N (N the left normal), staying in [lo, hi].
     /// The squared distance is flat at its minimum, so golden-section search alone resolves

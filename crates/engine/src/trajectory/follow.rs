@@ -19,8 +19,9 @@
 //! Performance (a pedestrian, a misc object) has no dynamic constraint to observe and moves as
 //! in `position`.
 //!
-//! The lateral target is the path: the runtime keeps no lateral constraint of an entity
-//! (Performance has none; steering limits are not modelled), so the entity stays on the path.
+//! Laterally, a vehicle whose axles bound its curvature steers along an open trajectory by
+//! pure pursuit (`steer`); other entities (no axles: pedestrians, misc objects) have no lateral
+//! constraint to observe and stay on the path.
 
 use opendrive::Real;
 

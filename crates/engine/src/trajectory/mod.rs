@@ -16,6 +16,7 @@
 //! | `orientation` | the headings along a six-dimensional Polyline (§6.9) |
 //! | `time_table` | the (s, t) pairs of vertices and segment times; s(t), t(s) |
 //! | `follow` | TrajectoryFollowingMode `follow`: the timed motion within Performance limits |
+//! | `steer` | TrajectoryFollowingMode `follow` of a steering-limited vehicle: pure pursuit |
 //! | `timing` | TimeReference / Timing: simulation time ↔ trajectory time |
 //! | `path` | `Trajectory`: the pieces in order, evaluation by s, lengths |
 //! | `closest` | the point of a trajectory closest to a world position |
@@ -32,6 +33,7 @@ mod nurbs;
 mod orientation;
 mod path;
 mod point;
+mod steer;
 mod time_table;
 mod timing;
 
@@ -43,4 +45,5 @@ pub use follow::FollowLimits;
 pub use nurbs::ARC_LENGTH_TOLERANCE;
 pub use path::{ShapeKind, Trajectory};
 pub use point::TrajectoryPoint;
+pub use steer::{drive_arc, max_curvature, pursuit_curvature, Pursuit};
 pub use timing::{controls_longitudinal, TrajectoryClock};

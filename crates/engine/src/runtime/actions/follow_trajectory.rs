@@ -11,11 +11,13 @@
 //! one; the actor then drives on under the default controller from where it stands, at the
 //! speed it arrived with.
 //!
-//! TrajectoryFollowingMode `position` follows the path and its times exactly; `follow`
-//! observes the entity's Performance on a timed trajectory (see `trajectory::FollowLimits`):
-//! the actor tracks the timed arc length within its acceleration, deceleration and speed
-//! limits and the action ends when it reaches the trajectory's end. Untimed, the two modes
-//! agree: the speed is the actor's own and the runtime keeps no lateral constraint.
+//! TrajectoryFollowingMode `position` follows the path and its times exactly. `follow`
+//! observes the actor's dynamic constraints: on a timed trajectory it tracks the timed arc
+//! length within its Performance (see `trajectory::FollowLimits`), and a vehicle whose axles
+//! bound its curvature steers onto and along an open trajectory by pure pursuit from its own
+//! pose (see `trajectory::Pursuit`; forwards only, reverse gear is followed exactly); the
+//! action then ends when the actor reaches the trajectory's end, early or late. Entities
+//! without such constraints follow as in `position`.
 //!
 //! A negative speed without a Timing time reference drives the trajectory in reverse gear: the
 //! actor still travels from the trajectory's start towards its end, at |speed|, facing against
@@ -31,7 +33,7 @@ use crate::runtime::entity::EntityId;
 use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
-use crate::trajectory::{build_for_actor, FollowLimits, Trajectory, TrajectoryClock};
+use crate::trajectory::{build_for_actor, FollowLimits, Pursuit, Trajectory, TrajectoryClock};
 
 /// A running FollowTrajectoryAction on one actor.
 #[derive(Debug, Clone)]
@@ -40,6 +42,11 @@ pub(crate) struct TrajectoryState {
     clock: Option<TrajectoryClock>,
     /// The actor's Performance limits in `follow` mode (`None`: followed exactly).
     limits: Option<FollowLimits>,
+    /// The steering of a curvature-limited vehicle in `follow` mode on an open trajectory
+    /// (`None`: on the trajectory) and its own pose [x, y, h] while it steers.
+    pursuit: Option<Pursuit>,
+    pose: [f64; 3],
+    /// Arc length reached (steering: of the trajectory point nearest to the actor).
     s: f64,
     /// Speed along the trajectory in the last step (m/s) and the time it reached `s`.
     speed: f64,
@@ -69,14 +76,15 @@ impl TrajectoryState {
     /// time (closed or not: the times say where the actor is, and they end there), an untimed
     /// open one at its last point. An untimed closed trajectory has no end.
     pub(crate) fn completes_by(&self, step_end: f64) -> bool {
-        if let (Some(clock), Some(limits)) = (self.timed(), self.limits) {
-            let at = |t| {
-                self.trajectory
-                    .s_at_simulation_time(clock, t)
-                    .unwrap_or(self.s)
-            };
-            let dt = step_end - self.at;
-            let v = limits.tracking_speed(self.speed, self.s, at(self.at), at(step_end), dt);
+        let dt = step_end - self.at;
+        if let Some(pursuit) = self.pursuit {
+            let v = self
+                .timed_speed(self.speed, self.at, dt)
+                .unwrap_or(self.speed);
+            let (_, s) = pursuit.advance(&self.trajectory, self.pose, self.s, v.abs() * dt);
+            return s >= self.trajectory.length() - END_EPSILON;
+        }
+        if let (Some(v), Some(_)) = (self.timed_speed(self.speed, self.at, dt), self.limits) {
             return self.s + v * dt >= self.trajectory.length() - END_EPSILON;
         }
         if let Some(end) = self.end_time() {
@@ -85,8 +93,28 @@ impl TrajectoryState {
         if self.trajectory.closed() {
             return false;
         }
-        let next = self.s + self.speed.abs() * (step_end - self.at);
+        let next = self.s + self.speed.abs() * dt;
         next >= self.trajectory.length() - END_EPSILON
+    }
+
+    /// In `follow` mode on a timed trajectory, the speed for the step from `now` over `dt`
+    /// from speed `v0`: towards the timed arc length within the Performance limits, or
+    /// without usable limits the speed that reaches it. `None` in `position` mode or untimed.
+    fn timed_speed(&self, v0: f64, now: f64, dt: f64) -> Option<f64> {
+        if self.limits.is_none() && self.pursuit.is_none() {
+            return None;
+        }
+        let clock = self.timed()?;
+        let at = |t| {
+            self.trajectory
+                .s_at_simulation_time(clock, t)
+                .unwrap_or(self.s)
+        };
+        Some(match self.limits {
+            Some(l) => l.tracking_speed(v0, self.s, at(now), at(now + dt), dt),
+            None if dt > 0.0 => ((at(now + dt) - self.s) / dt).max(0.0),
+            None => v0,
+        })
     }
 }
 
@@ -149,16 +177,39 @@ pub(crate) fn start(
             .and_then(|p| FollowLimits::new(p.max_acceleration, p.max_deceleration, p.max_speed)),
         _ => None,
     };
+    // A vehicle whose axles bound its curvature steers onto and along an open trajectory in
+    // `follow` mode, driving forwards (reverse gear is followed exactly).
+    let entity = world.entity(actor);
+    let pursuit = match following_mode {
+        FollowingMode::Follow if !trajectory.closed() && entity.speed >= 0.0 => {
+            entity.max_curvature.and_then(Pursuit::new)
+        }
+        _ => None,
+    };
+    let pose = [entity.pose.x, entity.pose.y, entity.pose.h];
+    let s = match pursuit {
+        Some(p) => {
+            trajectory
+                .closest_near(pose[0], pose[1], s, p.look_ahead())
+                .point
+                .s
+        }
+        None => s,
+    };
     let mut state = TrajectoryState {
         trajectory: Box::new(trajectory),
         clock,
         limits,
+        pursuit,
+        pose,
         s,
-        speed: world.entity(actor).speed,
+        speed: entity.speed,
         at: now,
     };
     let reversing = state.clock.is_none() && state.speed < 0.0;
-    place(world, actor, &state.trajectory, s, false, reversing);
+    if state.pursuit.is_none() {
+        place(world, actor, &state.trajectory, s, false, reversing);
+    }
     // Measured at once: the frame of the start shows the road position of the new pose.
     let pose = world.entity(actor).pose;
     world.entity_mut(actor).road_position = world.network.locate(pose.x, pose.y, Some(pose.h));
@@ -211,22 +262,20 @@ pub(crate) fn step(
     now: f64,
     dt: f64,
 ) -> ActionStatus {
+    if let Some(pursuit) = st.pursuit {
+        return steer(world, actor, st, pursuit, now, dt);
+    }
     let length = st.trajectory.length();
     let t = now + dt;
     let reversing = st.timed().is_none() && world.entity(actor).speed < 0.0;
     // The arc length reached by t, the distance travelled on the trajectory, the travel past
     // its end within this step, and whether the trajectory is over by t.
     let (s, moved, beyond, over) = match (st.timed().copied(), st.end_time(), st.limits) {
-        (Some(clock), Some(_), Some(limits)) => {
+        (Some(_), Some(_), Some(_)) => {
             // `follow`: towards the timed arc length within the Performance limits; over at
             // the trajectory's end, early or late.
-            let at = |t| {
-                st.trajectory
-                    .s_at_simulation_time(&clock, t)
-                    .unwrap_or(st.s)
-            };
             let v0 = world.entity(actor).speed;
-            let v = limits.tracking_speed(v0, st.s, at(now), at(t), dt);
+            let v = st.timed_speed(v0, now, dt).unwrap_or(v0);
             world.entity_mut(actor).speed = v;
             let s = st.s + v * dt;
             let beyond = (s - length).max(0.0);
@@ -286,6 +335,49 @@ pub(crate) fn step(
         e.pose.x += along * e.pose.h.cos();
         e.pose.y += along * e.pose.h.sin();
         e.odometer += beyond;
+        release(world, actor, true);
+        ActionStatus::Ended
+    } else {
+        ActionStatus::Running
+    }
+}
+
+/// One step of a steering vehicle in `follow` mode (see `trajectory::Pursuit`): its own pose
+/// along the pursuit arc, at the timed speed (see `TrajectoryState::timed_speed`) or its own;
+/// over when the trajectory point nearest to it is the end.
+fn steer(
+    world: &mut World,
+    actor: EntityId,
+    st: &mut TrajectoryState,
+    pursuit: Pursuit,
+    now: f64,
+    dt: f64,
+) -> ActionStatus {
+    let v0 = world.entity(actor).speed;
+    let v = match st.timed_speed(v0, now, dt) {
+        Some(v) => {
+            world.entity_mut(actor).speed = v;
+            v
+        }
+        None => v0,
+    };
+    let distance = v.abs() * dt;
+    let (pose, s) = pursuit.advance(&st.trajectory, st.pose, st.s, distance);
+    st.pose = pose;
+    st.s = s;
+    st.speed = v;
+    st.at = now + dt;
+    let z = st.trajectory.eval(s).z;
+    let e = world.entity_mut(actor);
+    e.pose.x = pose[0];
+    e.pose.y = pose[1];
+    e.pose.z = z;
+    e.pose.h = pose[2];
+    e.track = None;
+    e.held = true;
+    e.placed = true;
+    e.odometer += distance;
+    if dt > 0.0 && s >= st.trajectory.length() - END_EPSILON {
         release(world, actor, true);
         ActionStatus::Ended
     } else {

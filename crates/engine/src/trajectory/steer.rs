@@ -1,0 +1,148 @@
+//! Steering along a trajectory in TrajectoryFollowingMode `follow` (OpenSCENARIO 1.3 XSD
+//! `FollowingMode`: "follow: Follow the lateral and/or longitudinal target value as good as
+//! possible by observing the dynamic constraints of the entity") for a vehicle whose axles
+//! bound its curvature.
+//!
+//! Dynamic constraint: a vehicle with front axle steering angle δ ≤ maxSteering and wheelbase
+//! b (XSD `Axles`: FrontAxle/@positionX − RearAxle/@positionX) drives, about its rear axle (its
+//! reference point), curvatures |κ| ≤ tan(maxSteering)/b (the kinematic bicycle model,
+//! Rajamani, "Vehicle Dynamics and Control", 2nd ed., §2.2): the minimum turning radius is
+//! R = b/tan(maxSteering).
+//!
+//! Controller: pure pursuit (R. C. Coulter, "Implementation of the Pure Pursuit Path Tracking
+//! Algorithm", CMU-RI-TR-92-01, 1992). The goal G is the trajectory point a look-ahead L
+//! beyond the point nearest to the vehicle; the arc through the vehicle, tangent to its
+//! heading, through G has curvature κ = 2·sin α / ℓ (α the bearing of G from the heading, ℓ
+//! the distance to G), clamped to ±1/R, and the vehicle drives that arc for the step's
+//! distance. On a circle of radius ≥ R the arc to a goal on the circle is the circle itself,
+//! so such a trajectory is followed exactly. L = R: from a lateral offset e of a straight
+//! trajectory the pursuit arc is 2e/(L² + e²) ≤ 1/L = 1/R for every e, so the command never
+//! needs more than the steering limit to return to the trajectory.
+
+use opendrive::{normalize_angle, Real};
+use scenario::Axles;
+
+use super::Trajectory;
+
+/// Pure pursuit of one vehicle along an open trajectory.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pursuit {
+    max_curvature: Real,
+}
+
+impl Pursuit {
+    /// The pursuit of a vehicle that drives curvatures up to `max_curvature` (1/m, finite and
+    /// > 0, else `None`).
+    pub fn new(max_curvature: Real) -> Option<Self> {
+        (max_curvature.is_finite() && max_curvature > 0.0).then_some(Self { max_curvature })
+    }
+
+    /// The look-ahead L (m): the minimum turning radius 1/κ_max (see the module doc).
+    pub fn look_ahead(&self) -> Real {
+        1.0 / self.max_curvature
+    }
+
+    /// From `pose` ([x, y, h]) with progress `s` (the arc length of the trajectory point
+    /// nearest to it), drives `distance` m on the pursuit arc: the new pose and progress
+    /// (never less than `s`).
+    pub fn advance(
+        &self,
+        trajectory: &Trajectory,
+        pose: [Real; 3],
+        s: Real,
+        distance: Real,
+    ) -> ([Real; 3], Real) {
+        let look = self.look_ahead();
+        let goal = trajectory.eval((s + look).min(trajectory.length()));
+        let k = pursuit_curvature(pose, [goal.x, goal.y], self.max_curvature);
+        let next = drive_arc(pose, k, distance);
+        let near = trajectory.closest_near(next[0], next[1], s + distance, distance + look);
+        (next, near.point.s.max(s))
+    }
+}
+
+/// The largest curvature (1/m) a vehicle with `axles` can drive: tan(maxSteering)/wheelbase,
+/// from its FrontAxle and RearAxle; `None` without a front axle, with a wheelbase ≤ 0 or a
+/// maxSteering outside (0, π/2) (no usable constraint).
+pub fn max_curvature(axles: &Axles) -> Option<Real> {
+    let front = axles.front_axle?;
+    let wheelbase = front.position_x - axles.rear_axle.position_x;
+    let steering = front.max_steering.abs();
+    let ok = wheelbase.is_finite()
+        && wheelbase > 0.0
+        && steering.is_finite()
+        && steering > 0.0
+        && steering < std::f64::consts::FRAC_PI_2;
+    ok.then(|| steering.tan() / wheelbase)
+}
+
+/// The pure-pursuit curvature (1/m) from (x, y) heading `h` to the goal (gx, gy), clamped to
+/// ±`max_curvature`; 0 when the goal coincides with the vehicle.
+pub fn pursuit_curvature([x, y, h]: [Real; 3], [gx, gy]: [Real; 2], max_curvature: Real) -> Real {
+    let (dx, dy) = (gx - x, gy - y);
+    let l = dx.hypot(dy);
+    if l <= opendrive::LENGTH_EPSILON {
+        return 0.0;
+    }
+    let alpha = normalize_angle(dy.atan2(dx) - h);
+    (2.0 * alpha.sin() / l).clamp(-max_curvature, max_curvature)
+}
+
+/// The pose after driving `distance` m on an arc of `curvature` from (x, y) heading `h`.
+pub fn drive_arc([x, y, h]: [Real; 3], curvature: Real, distance: Real) -> [Real; 3] {
+    let turn = curvature * distance;
+    if turn.abs() < 1e-9 {
+        // Straight to within 1e-9 rad: the arc's sagitta is below 1e-9·distance.
+        return [x + distance * h.cos(), y + distance * h.sin(), h];
+    }
+    let h1 = h + turn;
+    [
+        x + (h1.sin() - h.sin()) / curvature,
+        y - (h1.cos() - h.cos()) / curvature,
+        normalize_angle(h1),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_6, PI};
+
+    #[test]
+    fn a_goal_on_the_circle_gives_the_circle() {
+        // On the circle of radius 10 about (0, 10), at the origin heading 0: the goal at arc
+        // 5 m further is (10 sin 0.5, 10 − 10 cos 0.5); 2 sin α/ℓ with α = 0.25, ℓ = 20 sin 0.25
+        // is 1/10.
+        let g = [10.0 * 0.5f64.sin(), 10.0 - 10.0 * 0.5f64.cos()];
+        assert!((pursuit_curvature([0.0, 0.0, 0.0], g, 1.0) - 0.1).abs() < 1e-12);
+        // Driving 5π m on it reaches the top of the circle, heading π.
+        let [x, y, h] = drive_arc([0.0, 0.0, 0.0], 0.1, 5.0 * PI * 2.0);
+        assert!(x.abs() < 1e-9 && (y - 20.0).abs() < 1e-9 && (h.abs() - PI).abs() < 1e-9);
+        // The limit clamps: a goal straight to the left asks 2/ℓ.
+        assert!((pursuit_curvature([0.0, 0.0, 0.0], [0.0, 1.0], 0.5) - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn curvature_limit_from_the_axles() {
+        // The esmini catalog car: maxSteering 0.523598775598 rad (30°, written so in the
+        // catalog), wheelbase 2.98 m: tan 30° / 2.98 = 0.57735/2.98 = 0.19374 1/m.
+        let axle = |x: f64, steer: f64| scenario::Axle {
+            max_steering: steer,
+            wheel_diameter: 0.8,
+            track_width: 1.68,
+            position_x: x,
+            position_z: 0.4,
+        };
+        let mut axles = Axles {
+            front_axle: Some(axle(2.98, FRAC_PI_6)),
+            rear_axle: axle(0.0, FRAC_PI_6),
+            additional_axles: Vec::new(),
+        };
+        let k = max_curvature(&axles).unwrap();
+        assert!((k - (1.0 / 3f64.sqrt()) / 2.98).abs() < 1e-9);
+        axles.front_axle = Some(axle(2.98, FRAC_PI_2));
+        assert!(max_curvature(&axles).is_none());
+        axles.front_axle = None;
+        assert!(max_curvature(&axles).is_none());
+    }
+}
