@@ -17,8 +17,9 @@
 //!   back, maxDeceleration when it must close up — esmini's pairing), the acceleration clamped
 //!   to [−maxDeceleration, maxAcceleration] after the jerk limits, the speed to [0, maxSpeed]
 //!   (a distance controller does not reverse).
-//! * `continuous="false"`: "the action ends when the target distance is reached", oscsim: when
-//!   the distance error is at most 0.1 m (esmini's threshold; the standard gives none).
+//! * `continuous="false"`: "the action ends when the target distance is reached", oscsim: in
+//!   the step whose motion brings the distance error to at most 0.1 m (esmini's threshold; the
+//!   standard gives none), the reference driving on at its speed.
 
 use opendrive::Direction;
 use scenario::{LongitudinalAction, LongitudinalDisplacement, SourcePos};
@@ -167,15 +168,21 @@ pub(crate) fn step_longitudinal(
                 .clamp(-limits.deceleration, limits.acceleration);
             let acc = limit_jerk(acc, s.acceleration, &limits, dt);
             s.acceleration = acc;
-            world.entity_mut(actor).speed = (v + acc * dt).clamp(0.0, limits.speed);
+            let v_next = (v + acc * dt).clamp(0.0, limits.speed);
+            world.entity_mut(actor).speed = v_next;
+            // The error at the step's end, both driving on at their speeds.
+            let reached = (error + s.toward * (v_ref - v_next) * dt).abs() <= REACHED;
+            if !s.continuous && reached {
+                return ActionStatus::Ended;
+            }
         }
-        Some(_) => {}
+        Some(_) => {
+            if !s.continuous && error.abs() <= REACHED {
+                return ActionStatus::Ended;
+            }
+        }
     }
-    if !s.continuous && error.abs() <= REACHED {
-        ActionStatus::Ended
-    } else {
-        ActionStatus::Running
-    }
+    ActionStatus::Running
 }
 
 /// Moves `actor` by `forward` m along its lane (negative: back), within its road.
