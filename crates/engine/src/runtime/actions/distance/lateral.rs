@@ -1,7 +1,10 @@
 //! LateralDistanceAction (OpenSCENARIO 1.3 §7.7.2.2, XSD `LateralDistanceAction`): keep a
 //! lateral distance to a reference entity ("Missing value is interpreted as 0"), between
 //! reference points or, with `freespace`, bounding boxes, measured in `coordinateSystem`
-//! (absent: entity, the actor's frame; module `gauge`).
+//! (absent: entity, the actor's frame; module `gauge`). In the entity frame the heading the
+//! sideways motion gives the actor turns its axes too, so with the reference ahead or behind
+//! the measured distance moves with it (by the longitudinal offset × sin of the heading); the
+//! road and lane frames measure across the road, as the corpus scenarios do.
 //!
 //! * `displacement`: leftToReferencedEntity puts the actor left of the reference,
 //!   rightToReferencedEntity right of it, `any` (the default) keeps the side it is on at the
