@@ -81,15 +81,26 @@ impl Target {
     }
 }
 
-/// Looks up entity `name` for an action at `pos`.
+/// Looks up entity `name` for an action at `pos`: a declared entity that is in the scenario
+/// now. A deleted entity (DeleteEntityAction), or one not placed yet, has no state an action
+/// could refer to (its last pose and speed are stale), so it is refused as a position's
+/// `entityRef` is (position/error.rs).
 pub(crate) fn entity_ref(
     world: &World,
     name: &str,
     pos: &SourcePos,
 ) -> Result<EntityId, RuntimeError> {
-    world
+    let id = world
         .id(name)
-        .ok_or_else(|| RuntimeError::at("a declared entity", format!("entityRef '{name}'"), pos))
+        .ok_or_else(|| RuntimeError::at("a declared entity", format!("entityRef '{name}'"), pos))?;
+    if !world.entity(id).placed {
+        return Err(RuntimeError::at(
+            format!("a placed entity named \"{name}\""),
+            "none (deleted, or not yet placed)",
+            pos,
+        ));
+    }
+    Ok(id)
 }
 
 /// Starts the action: a step change takes effect at once.
