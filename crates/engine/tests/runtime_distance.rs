@@ -12,9 +12,8 @@ mod runtime_support;
 use std::path::PathBuf;
 
 use engine::output::EventRecord;
-use engine::storyboard::Transition;
 use engine::EngineConfig;
-use runtime_support::{run_with, Recorder, Row};
+use runtime_support::{end_time, run_with, Recorder, Row};
 
 /// The default step (s).
 const DT: f64 = 0.05;
@@ -46,16 +45,6 @@ fn accelerations(frames: &Recorder, name: &str) -> Vec<f64> {
         .windows(2)
         .map(|w| (w[1].speed - w[0].speed) / DT)
         .collect()
-}
-
-/// The time of the end transition of storyboard element `element`, if any.
-fn end_time(events: &[EventRecord], element: &str) -> Option<f64> {
-    events.iter().find_map(|e| match e {
-        EventRecord::Transition(t) if t.name == element && t.transition == Transition::End => {
-            Some(t.time)
-        }
-        _ => None,
-    })
 }
 
 /// longitudinal_distance.xosc: Ego 50 m behind Ref, both 20 m/s, keeps 30 m between reference
