@@ -32,7 +32,8 @@ pub struct RunArgs {
     /// Hard cap on simulated seconds.
     #[arg(long, default_value_t = engine::runtime::DEFAULT_MAX_TIME)]
     max_time: f64,
-    /// Seed of the random streams (spawned traffic); the same seed gives the same run.
+    /// Seed of the random streams (spawned traffic, routeStrategy random); the same seed gives
+    /// the same run.
     #[arg(long, default_value_t = engine::runtime::DEFAULT_SEED)]
     seed: u64,
     /// Override a global parameter, NAME=VALUE (repeatable).

@@ -46,7 +46,10 @@ pub enum EventRecord {
         /// What changed, e.g. "spawned", "removed", "light lowBeam on".
         change: String,
     },
-    /// An action failed; the run stops with this error.
+    /// Something failed at runtime: an action that could not start (the run stops with this
+    /// error), or a condition that could not be evaluated, a route that could not be planned or
+    /// a trajectory that could not be built (logged once; the condition reads false, the action
+    /// does nothing, and the run goes on).
     Error {
         /// Simulation time (s).
         time: f64,

@@ -18,8 +18,9 @@ pub struct EngineConfig {
     pub duration: Option<f64>,
     /// Hard cap on simulated time (s), so that no run is endless.
     pub max_time: f64,
-    /// Seed of the run's random streams (spawned traffic); each traffic action draws from its
-    /// own stream keyed by its name. Default [`DEFAULT_SEED`].
+    /// Seed of the run's random streams: spawned traffic (each traffic action draws from its own
+    /// stream keyed by its name) and routes with routeStrategy `random` (keyed by the route's
+    /// name). Default [`DEFAULT_SEED`].
     pub seed: u64,
 }
 
