@@ -80,6 +80,32 @@ fn lane_change_over_a_distance_follows_the_cubic_of_the_distance_along_the_road(
     assert_abs_diff_eq!(half - t0, 1.75, epsilon = 3e-6);
 }
 
+/// lateral_distance_accel.xosc: the lane change of lateral_distance_cubic.xosc (Δ = 3.5 m over
+/// D = 50 m along the road, from 1.0 s) while a SpeedAction, started at 0.5 s, takes the speed
+/// from 10 to 20 m/s in 4 s (a = 2.5 m/s²). The lane change's action steps first in each step,
+/// before the speed action sets the speed the step is driven with, so it foresees each step's
+/// travel a·dt² = 2.5·0.05² m short; the next step takes the distance actually driven (the
+/// odometer), so the error does not add up. One step's worth at most, Δ·max f′·a·dt²/D =
+/// 3.5·1.5·0.00625/50 = 6.6·10⁻⁴ m, is left against t = t₀ + Δ·f((s − s₀)/D); adding up, it
+/// reached 2.7 cm.
+#[test]
+fn lane_change_over_a_distance_follows_the_road_distance_while_the_speed_changes() {
+    let (_, frames, _) = run("lateral_distance_accel.xosc");
+    let s0 = frames.at("Ego", 1.0).road.clone().unwrap_or_default().2;
+    let bound = 3.5 * 1.5 * 2.5 * 0.05 * 0.05 / 50.0;
+    let mut checked = 0;
+    for row in frames.0.iter().filter(|r| r.name == "Ego" && r.time >= 1.0) {
+        let (_, _, s, t, _) = row.road.clone().unwrap_or_default();
+        let u = (s - s0) / 50.0;
+        if u < 1.0 {
+            let off = t - (-1.535 + 3.5 * cubic(u));
+            assert!(off.abs() <= bound, "{off} m off at {} s", row.time);
+            checked += 1;
+        }
+    }
+    assert!(checked > 50, "{checked} frames during the change");
+}
+
 /// lateral_slow_heading.xosc: a sinusoidal lane change of Δ = 3.07 m in T = 2 s at 5 m/s,
 /// starting at 1.0 s, on a road along +x (road heading 0).
 ///

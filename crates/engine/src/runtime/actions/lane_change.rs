@@ -38,8 +38,19 @@ pub(crate) struct LateralState {
     pub delta: f64,
     /// Distance (m) travelled along the road since the start (drives a distance span).
     pub along: f64,
+    /// The previous step of a distance span as it was foreseen, checked against the move.
+    pub foreseen: Option<Foreseen>,
     /// Keep running after the transition (continuous LaneOffsetAction).
     pub continuous: bool,
+}
+
+/// A step of a distance span as foreseen before the default controller moved the entity: the
+/// odometer reading and lateral share at its start and the part along the road assumed.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Foreseen {
+    odometer: f64,
+    share: f64,
+    along: f64,
 }
 
 impl LateralState {
@@ -180,6 +191,7 @@ pub(crate) fn begin(
         start_time: now,
         delta,
         along: 0.0,
+        foreseen: None,
         continuous,
     }))
 }
@@ -216,7 +228,20 @@ pub(crate) fn step(
     }
     .abs();
     if let Span::Distance(d) = s.span {
-        s.along += along_road(s, d, speed * dt, e.lateral_slope);
+        if let Some(f) = s.foreseen.take() {
+            // The path the controller drove (odometer), along the road at the mean share of
+            // the step (controller::default), replaces what was assumed: a SpeedAction
+            // stepped after this action changes the speed the controller moves with.
+            let mean = (0.5 * (f.share + e.lateral_slope)).clamp(-1.0, 1.0);
+            s.along += (e.odometer - f.odometer).abs() * (1.0 - mean * mean).sqrt() - f.along;
+        }
+        let along = along_road(s, d, speed * dt, e.lateral_slope);
+        s.foreseen = Some(Foreseen {
+            odometer: e.odometer,
+            share: e.lateral_slope,
+            along,
+        });
+        s.along += along;
     }
     let p = progress(s.span, now + dt - s.start_time, s.along);
     let (f, df) = shape_value(s.shape, p);
