@@ -74,8 +74,13 @@ fn name_value(text: &str) -> Result<(String, String), String> {
 /// Creates `path` (and its parent folder) for writing.
 fn create(path: &PathBuf) -> anyhow::Result<BufWriter<File>> {
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir)
-            .with_context(|| format!("cannot create folder {}", dir.display()))?;
+        std::fs::create_dir_all(dir).with_context(|| {
+            format!(
+                "cannot create folder {} for {}",
+                dir.display(),
+                path.display()
+            )
+        })?;
     }
     let file = File::create(path).with_context(|| format!("cannot create {}", path.display()))?;
     Ok(BufWriter::new(file))

@@ -1,0 +1,157 @@
+//! `oscsim run` on bad input: a missing scenario, malformed XML, an output path that cannot
+//! be created, a step length of 0, a parameter set to NaN, a run that fails half-way. Each
+//! exits with status 1 (invalid input or failed run, `oscsim --help`), prints no panic, and
+//! its error names the file at fault (and, for a scenario, the line:column).
+
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+/// A scenario of the engine's robustness fixtures (`crates/engine/tests/files/robustness`).
+fn fixture(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../engine/tests/files/robustness/cases")
+        .join(name)
+}
+
+/// A fresh folder for this test's files.
+fn scratch(test: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli_errors")
+        .join(test);
+    // Left-overs of an earlier run may or may not be there.
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
+    dir
+}
+
+/// Runs `oscsim` with `args`.
+fn oscsim(args: &[&str]) -> Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_oscsim"))
+        .args(args)
+        .output()
+        .unwrap_or_else(|e| panic!("cannot start oscsim: {e}"))
+}
+
+/// The run failed with status 1 and no panic; its stderr contains each of `parts`.
+fn assert_fails(out: &Output, parts: &[&str]) -> String {
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    for part in parts {
+        assert!(stderr.contains(part), "{stderr}\n  lacks {part}");
+    }
+    stderr
+}
+
+fn text(path: &Path) -> &str {
+    path.to_str().expect("test paths are UTF-8")
+}
+
+#[test]
+fn missing_scenario_file_is_named() {
+    let dir = scratch("missing");
+    let missing = dir.join("none.xosc");
+    let out = oscsim(&["run", text(&missing)]);
+    assert_fails(
+        &out,
+        &[&format!("cannot read scenario file {}", missing.display())],
+    );
+}
+
+/// The FileHeader element is not closed: line 4 starts `</OpenSCENARIO>` where an attribute
+/// or `/>` was expected.
+#[test]
+fn malformed_xml_is_named_with_line_and_column() {
+    let dir = scratch("malformed");
+    let file = dir.join("malformed.xosc");
+    std::fs::write(
+        &file,
+        "<?xml version=\"1.0\"?>\n<OpenSCENARIO>\n  <FileHeader revMajor=\"1\" revMinor=\"3\"\n</OpenSCENARIO>\n",
+    )
+    .expect("scratch file");
+    let out = oscsim(&["run", text(&file)]);
+    assert_fails(
+        &out,
+        &[
+            "expected well-formed XML",
+            &format!("{}:4:1", file.display()),
+        ],
+    );
+}
+
+/// An output path below a regular file cannot be created (whoever runs the test, root
+/// included): `--csv` and `--events` name the folder and the file; nothing is written.
+#[test]
+fn output_path_that_cannot_be_created_is_named() {
+    let dir = scratch("unwritable");
+    let blocker = dir.join("a_file");
+    std::fs::write(&blocker, "not a folder").expect("scratch file");
+    let scenario = fixture("speed_param.xosc");
+    for flag in ["--csv", "--events"] {
+        let target = blocker.join("out.txt");
+        let out = oscsim(&["run", text(&scenario), flag, text(&target)]);
+        assert_fails(
+            &out,
+            &[&format!(
+                "cannot create folder {} for {}",
+                blocker.display(),
+                target.display()
+            )],
+        );
+    }
+    let target = blocker.join("gt.osi");
+    let out = oscsim(&["run", text(&scenario), "--osi", text(&target)]);
+    assert_fails(
+        &out,
+        &[&format!("cannot create folder {}", blocker.display())],
+    );
+}
+
+#[test]
+fn step_length_zero_is_refused() {
+    let out = oscsim(&["run", text(&fixture("speed_param.xosc")), "--dt", "0"]);
+    assert_fails(
+        &out,
+        &["expected a finite step length > 0 s, found 0 for dt"],
+    );
+}
+
+/// `--param Speed=NaN`: refused where $Speed is first used, AbsoluteTargetSpeed@value at
+/// line 41, column 64 of the scenario.
+#[test]
+fn parameter_set_to_nan_is_refused_at_its_use() {
+    let scenario = fixture("speed_param.xosc");
+    let out = oscsim(&["run", text(&scenario), "--param", "Speed=NaN"]);
+    assert_fails(
+        &out,
+        &[
+            "expected a double for AbsoluteTargetSpeed@value, found 'NaN'",
+            &format!("{}:41:64", scenario.display()),
+        ],
+    );
+}
+
+/// A TeleportAction to s = 600 on a 500 m road at t = 1 s: the run fails there with the
+/// LanePosition's place (line 57, column 31); the CSV keeps the 21 frames until then
+/// (t = 0, 0.05, …, 1.0) and its header.
+#[test]
+fn run_failing_half_way_names_the_element_and_keeps_the_frames() {
+    let dir = scratch("half_way");
+    let scenario = fixture("teleport_s_beyond_road.xosc");
+    let csv = dir.join("out.csv");
+    let out = oscsim(&["run", text(&scenario), "--csv", text(&csv)]);
+    assert_fails(
+        &out,
+        &[
+            "failed at t = 1.000 s",
+            "expected s in [0, 500] on road \"1\", found 600",
+            &format!("{}:57:31", scenario.display()),
+        ],
+    );
+    let written = std::fs::read_to_string(&csv).expect("the CSV exists");
+    assert_eq!(written.lines().count(), 1 + 21, "{written}");
+    assert!(written
+        .lines()
+        .last()
+        .is_some_and(|l| l.starts_with("1.000,")));
+}
