@@ -6,7 +6,9 @@
 //! 0, −1, ±1e300, ±1e-300, integers beyond `i32`/`u32`/`i64` and expressions whose value is
 //! not finite (`${0 / 0}`), and their global parameters
 //! overridden the same way (`--param`). Each damaged scenario is loaded, built and run for at
-//! most 300 steps (`EngineConfig::duration` 15 s at dt 0.05 s). Whatever happens:
+//! most 300 steps of a step length drawn from 1 ms to 1e9 s (`EngineConfig::duration` = 300
+//! steps; valid, if unusual, steps that move an entity far past its road's end in one step).
+//! Whatever happens:
 //!
 //! - nothing panics (proptest reports a panic as a failure);
 //! - nothing hangs: the case runs on a thread watched with a generous deadline (a hang
@@ -81,8 +83,11 @@ const BAD_VALUES: [&str; 20] = [
     "1e20",
 ];
 
-/// Steps of a run at most: 15 s at the default 0.05 s.
-const DURATION: f64 = 15.0;
+/// Step lengths (s) a run may take: valid values (finite, > 0) far from the usual 0.05 s.
+const STEPS: [f64; 7] = [1e-3, 0.05, 0.37, 1.0, 10.0, 1e3, 1e9];
+
+/// Steps of a run at most.
+const MAX_STEPS: f64 = 300.0;
 
 /// Deadline of one case: far beyond the ≈0.1–1 s a case takes in debug, so that only a hang
 /// trips it.
@@ -185,15 +190,18 @@ enum Outcome {
     Corrupt(String),
 }
 
-/// Loads `text` as `name` with `params`, builds and runs it; classifies the result.
-fn run_case(name: &str, text: &str, params: &[(String, String)]) -> Outcome {
+/// Loads `text` as `name` with `params`, builds and runs it at step `dt` for at most
+/// [`MAX_STEPS`] steps; classifies the result.
+fn run_case(name: &str, text: &str, params: &[(String, String)], dt: f64) -> Outcome {
     let path = fixture(name);
     let scenario = match Scenario::load_from_str(text, &path, params) {
         Ok(s) => s,
         Err(e) => return Outcome::Refused(e.to_string()),
     };
     let config = EngineConfig {
-        duration: Some(DURATION),
+        dt,
+        duration: Some(MAX_STEPS * dt),
+        max_time: MAX_STEPS * dt,
         ..EngineConfig::default()
     };
     let mut engine = match Engine::build(&scenario, config) {
@@ -214,11 +222,17 @@ fn run_case(name: &str, text: &str, params: &[(String, String)]) -> Outcome {
 
 /// Runs [`run_case`] on its own thread; a panic or a hang becomes a test failure that names
 /// the damage.
-fn run_watched(name: &'static str, text: String, params: Vec<(String, String)>, damage: String) {
+fn run_watched(
+    name: &'static str,
+    text: String,
+    params: Vec<(String, String)>,
+    dt: f64,
+    damage: String,
+) {
     let (send, receive) = mpsc::channel();
     let worker = std::thread::spawn(move || {
         // The receiver is gone only when the watcher gave up on a hang; nothing to report to.
-        let _ = send.send(run_case(name, &text, &params));
+        let _ = send.send(run_case(name, &text, &params, dt));
     });
     let outcome = match receive.recv_timeout(HANG_DEADLINE) {
         Ok(outcome) => outcome,
@@ -270,7 +284,7 @@ fn names_a_place(message: &str) -> bool {
 #[test]
 fn the_undamaged_scenarios_run_to_their_end() {
     for (name, text) in SCENARIOS {
-        match run_case(name, text, &[]) {
+        match run_case(name, text, &[], 0.05) {
             Outcome::Ran => {}
             other => panic!("{name}: {other:?}"),
         }
@@ -298,6 +312,50 @@ fn every_scenario_has_numbers_to_damage() {
     assert_eq!(global_parameters(SCENARIOS[6].1), ["T2", "T3"]);
 }
 
+/// The frame check catches a non-finite number (so that the property can fail): a placed
+/// entity whose speed is NaN, then one whose road s is infinite.
+#[test]
+fn the_frame_check_catches_a_nan() {
+    use engine::domain::{BoundingBox, Position3d};
+    use engine::runtime::EntityKind;
+    use engine::EntityId;
+    let bb = BoundingBox::new(Position3d::new(1.4, 0.0, 0.75), 5.0, 2.0, 1.5).expect("valid box");
+    let mut e = engine::runtime::Entity::new(EntityId(0), "Ego", EntityKind::Vehicle, bb);
+    e.placed = true;
+    let frame = |entities: &[engine::runtime::Entity]| {
+        let mut check = FiniteCheck::default();
+        check
+            .frame(&Frame {
+                time: 0.5,
+                step: 10,
+                entities,
+            })
+            .expect("the check never fails the run");
+        check.corrupt
+    };
+    assert_eq!(frame(std::slice::from_ref(&e)), None);
+    e.speed = f64::NAN;
+    assert_eq!(
+        frame(std::slice::from_ref(&e)).as_deref(),
+        Some("Ego has speed = NaN at t = 0.5 s")
+    );
+    e.speed = 0.0;
+    e.road_position = Some(opendrive::RoadPosition {
+        road_id: "1".to_owned(),
+        lane_id: -1,
+        s: f64::INFINITY,
+        t: -1.5,
+        offset: 0.0,
+        junction_id: None,
+        relative_heading: 0.0,
+        distance: 0.0,
+    });
+    assert_eq!(
+        frame(std::slice::from_ref(&e)).as_deref(),
+        Some("Ego has s = inf at t = 0.5 s")
+    );
+}
+
 #[test]
 fn a_place_is_file_line_col() {
     assert!(names_a_place("expected x, found y at /a/b.xosc:12:7"));
@@ -314,6 +372,7 @@ proptest! {
         which in 0..SCENARIOS.len(),
         edits in proptest::collection::vec((any::<Index>(), 0..BAD_VALUES.len()), 1..=3),
         param in proptest::option::of((any::<Index>(), 0..BAD_VALUES.len())),
+        dt in proptest::sample::select(&STEPS[..]),
     ) {
         let (name, original) = SCENARIOS[which];
         let ranges = numeric_values(original);
@@ -340,6 +399,7 @@ proptest! {
             }
             _ => Vec::new(),
         };
-        run_watched(name, text, params, damage.join(", "));
+        damage.push(format!("dt {dt} s"));
+        run_watched(name, text, params, dt, damage.join(", "));
     }
 }
