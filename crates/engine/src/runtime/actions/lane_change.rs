@@ -16,6 +16,7 @@
 //! heading + slope of the lateral motion). The state [`LateralState`] is shared with
 //! LaneOffsetAction, which blends within one lane.
 
+use opendrive::LENGTH_EPSILON;
 use scenario::{LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics};
 
 use super::speed::entity_ref;
@@ -249,14 +250,14 @@ pub(crate) fn step(
     let tan = match s.span {
         Span::Instant => 0.0,
         Span::Time(t) => {
-            // sin θ = lateral speed Δ·f′/T over the speed (at most 1: sideways); no heading
-            // change at a standstill.
-            let sin = if speed > 1e-9 {
+            // sin θ = lateral speed Δ·f′/T over the speed (at most 1: sideways, where tan θ
+            // stays finite in f64); no heading change at a standstill.
+            let sin = if speed * dt > LENGTH_EPSILON {
                 (s.delta * df / (t * speed)).clamp(-1.0, 1.0)
             } else {
                 0.0
             };
-            sin / (1.0 - sin * sin).sqrt().max(1e-9)
+            sin.asin().tan()
         }
         Span::Distance(d) => s.delta * df / d,
     };
@@ -273,7 +274,7 @@ pub(crate) fn step(
     }
     if let Some(b) = &mut track.blend {
         b.weight = f;
-        b.weight_per_m = if s.delta.abs() > 1e-12 {
+        b.weight_per_m = if s.delta.abs() > LENGTH_EPSILON {
             tan / s.delta
         } else {
             0.0
