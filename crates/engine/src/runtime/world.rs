@@ -9,7 +9,7 @@ use opendrive::{normalize_angle, Direction, Pose, Real, RoadNetwork, RoadPositio
 use scenario::expr::Value;
 
 use super::entity::{Entity, EntityId, LaneTrack};
-use super::lanes::lane_at;
+use super::lanes::{curvature, lane_at};
 use crate::condition::ConditionContext;
 use crate::position::{EntityQuery, EntityView};
 use crate::storyboard::StateView;
@@ -121,23 +121,30 @@ impl World {
             return;
         };
         let on_road = rp.distance <= ON_ROAD_TOLERANCE;
+        // The heading of the lane's centre line (plus the constant offset) relative to the
+        // reference line, atan2(t′, 1 − κ·t): what the default controller adds to the road's
+        // heading (controller/default.rs, place_on_track), so it is taken out of the kept
+        // relative heading; `rp.relative_heading` counts from the reference line, and keeping
+        // it whole would count a widening lane's slope twice.
+        let mut slope = 0.0;
+        if let Some(road) = self.network.road(&rp.road_id) {
+            if let Some((lane, offset)) = lane_at(road, rp.s, rp.t) {
+                rp.lane_id = lane;
+                rp.offset = offset;
+                if let Ok(span) = road.lane_span(lane, rp.s) {
+                    slope = span.d_center().atan2(1.0 - curvature(road, rp.s) * rp.t);
+                }
+            }
+        }
         let rel = normalize_angle(rp.relative_heading);
         let (direction, along) = if rel.abs() <= std::f64::consts::FRAC_PI_2 {
-            (Direction::Forward, rel)
+            (Direction::Forward, normalize_angle(rel - slope))
         } else {
             (
                 Direction::Backward,
-                normalize_angle(rel - std::f64::consts::PI),
+                normalize_angle(rel - std::f64::consts::PI - slope),
             )
         };
-        if let Some((lane, offset)) = self
-            .network
-            .road(&rp.road_id)
-            .and_then(|road| lane_at(road, rp.s, rp.t))
-        {
-            rp.lane_id = lane;
-            rp.offset = offset;
-        }
         if on_road {
             e.track = Some(LaneTrack {
                 road_id: rp.road_id.clone(),
