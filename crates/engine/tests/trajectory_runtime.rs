@@ -274,3 +274,34 @@ fn follow_mode_takes_a_corner_within_the_steering_limit() {
     }
     assert!(end > 4.8 && end < 6.0, "ended at {end}");
 }
+
+#[test]
+fn untimed_trajectory_leaves_the_speed_to_other_actions() {
+    // TimeReference None: the trajectory gives no speed (§6.9) and the action holds the
+    // lateral domain only (semantics-pitfalls #7). A SpeedAction from 1 s (10 → 20 m/s,
+    // linear over 2 s: 15 m/s at 2 s) runs to its end beside it, and the car stays on the
+    // Polyline (100, −1.535) → (130, −1.535) → (230, 8.465) at the speed it sets.
+    let (frames, events) = run(&fixture("lateral_only.xosc"), 8.0);
+    let faster = events.iter().find_map(|e| match e {
+        EventRecord::Transition(t) if t.name == "FasterAction" => {
+            (t.transition != Transition::Start).then_some(t.transition)
+        }
+        _ => None,
+    });
+    assert_eq!(faster, Some(Transition::End), "{events:?}");
+    assert!((frames.at("Ego", 2.0).speed - 15.0).abs() < TOL);
+    assert!((frames.at("Ego", 4.0).speed - 20.0).abs() < TOL);
+    let end = ended_at(&events, "Init Ego RoutingAction").expect("the trajectory ends");
+    for r in frames.0.iter().filter(|r| r.name == "Ego" && r.time <= end) {
+        // Distance to the polyline: to the first leg for x ≤ 130, else to the second, whose
+        // unit normal is (−0.1, 1)/√1.01.
+        let off = if r.x <= 130.0 {
+            (r.y + 1.535).abs()
+        } else {
+            (-(r.x - 130.0) * 0.1 + (r.y + 1.535)).abs() / 1.01f64.sqrt()
+        };
+        assert!(off < 1e-9, "{r:?} is {off} m off the polyline");
+    }
+    // 130.5 m: 10 m by 1 s, about 30 m during the speed change, the rest at 20 m/s.
+    assert!(end > 7.0 && end < 8.0, "ended at {end}");
+}
