@@ -249,6 +249,38 @@ fn actions_referring_to_a_deleted_entity_are_refused() {
     }
 }
 
+/// A ParameterModifyAction / VariableModifyAction whose double result overflows (1e308 +
+/// 1e308 = 2e308 and 1e10 · 1e300 = 1e310, both beyond f64::MAX ≈ 1.8e308) is refused at
+/// its Action, as a non-finite declared value or expression result is at load; the value
+/// keeps what it was (before, it became inf, and NaN after a further · 0).
+#[test]
+fn parameter_or_variable_modified_beyond_the_largest_double_is_refused() {
+    assert_run_fails(
+        "parameter_overflow",
+        1.0,
+        (55, 15),
+        "Action",
+        &["expected a finite value of parameter 'Big', found 1e308 + 1e308 = inf at "],
+    );
+    assert_run_fails(
+        "variable_overflow",
+        1.0,
+        (57, 15),
+        "Action",
+        &["expected a finite value of variable 'Huge', found 1e10 * 1e300 = inf at "],
+    );
+    let mut engine =
+        Engine::load(&case("parameter_overflow"), &[], EngineConfig::default()).expect("loads");
+    let _ = engine.run(&mut Recorder::default(), &mut Vec::new());
+    assert_eq!(
+        engine
+            .world()
+            .parameter_value("Big")
+            .and_then(|v| v.as_f64()),
+        Some(1e308)
+    );
+}
+
 /// A Polyline of one vertex is no trajectory (XSD `Polyline`: a line needs two vertices).
 /// The FollowTrajectoryAction (its Action element) is skipped with the error in the event log (the runtime's rule
 /// for a trajectory that cannot be built, runtime/actions/mod.rs), and Ego drives on at

@@ -53,11 +53,20 @@ pub(crate) fn modify_value(
                     pos,
                 ));
             };
-            let y = if matches!(rule, ModifyRule::AddValue(_)) {
-                x + v
+            let (y, op) = if matches!(rule, ModifyRule::AddValue(_)) {
+                (x + v, "+")
             } else {
-                x * v
+                (x * v, "*")
             };
+            // A double overflows to ±inf (then NaN): refused as a declared value or an
+            // expression result that is not finite is (scenario crate, Value::parse).
+            if !y.is_finite() {
+                return Err(RuntimeError::at(
+                    format!("a finite value of {what} '{name}'"),
+                    format!("{x:e} {op} {v:e} = {y}"),
+                    pos,
+                ));
+            }
             Value::Double(y).convert_to(ty).map_err(|e| {
                 RuntimeError::at(
                     format!("a value of type {}", ty.xsd_name()),
