@@ -28,6 +28,8 @@
 //!   returns), except the host vehicle, which carries the sensors; a vehicle whose trailer is
 //!   left out so has `has_trailer = false` in those frames. `graphics` and `traffic` change
 //!   nothing here. Why: docs/osi.md "Visibility".
+//! - LightStateAction: a vehicle's lights go to `vehicle_classification.light_state` by the
+//!   table of `osi::lights` (unset while no action touched a light).
 //!
 //! The engine's runtime entity does not keep the `pedestrianCategory` and
 //! `miscObjectCategory` OSI needs, so the adapter reads them from the scenario model,
@@ -51,6 +53,7 @@ use engine::{Engine, FrameSink};
 use opendrive::RoadNetwork;
 use osi::entity::{EntityInfo, EntityKind, MiscObjectInfo};
 use osi::ground_truth::{GroundTruthBuilder, StaticData};
+use osi::lights::{LightMode, VehicleLight};
 use osi::osi3::{ColorDescription, Identifier};
 use osi::polyline::Sampling;
 use osi::rigid_body::RigidBodyState;
@@ -233,6 +236,10 @@ impl OsiSink {
                 return frame.add_misc_object(&info, &lanes).map(drop);
             }
         };
+        let lights = match kind {
+            EntityKind::Vehicle { .. } => osi::lights::light_state(&vehicle_lights(e)),
+            EntityKind::Pedestrian { .. } => None,
+        };
         let info = EntityInfo {
             name: e.name,
             kind,
@@ -240,6 +247,7 @@ impl OsiSink {
             model3d: e.model3d,
             color,
             trailer,
+            lights,
         };
         frame.add_entity(&info, &state, &lanes).map(drop)
     }
@@ -311,6 +319,26 @@ impl FrameSink for OsiSink {
         );
         Ok(())
     }
+}
+
+/// The lights LightStateActions set on `e`, in the form `osi::lights` takes.
+fn vehicle_lights<'e>(e: &EntityFrame<'e>) -> Vec<VehicleLight<'e>> {
+    e.lights
+        .iter()
+        .filter_map(|(light, state)| {
+            let mode = match state.mode.as_str() {
+                "on" => LightMode::On,
+                "off" => LightMode::Off,
+                "flashing" => LightMode::Flashing,
+                _ => return None,
+            };
+            Some(VehicleLight {
+                light,
+                mode,
+                color_type: state.color.as_ref().map(|c| c.color_type.as_str()),
+            })
+        })
+        .collect()
 }
 
 /// The reference-point state of `e` in the form `osi::rigid_body` takes.

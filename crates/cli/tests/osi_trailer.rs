@@ -17,11 +17,9 @@
 mod osi_common;
 
 use std::collections::BTreeMap;
-use std::path::Path;
 
 use osi::osi3::{GroundTruth, MovingObject};
-use osi::trace::read_osi;
-use osi_common::{corpus, oscsim_for, out_dir};
+use osi_common::{corpus, traced_run as run};
 
 /// `(has_trailer, trailer_id)` of every vehicle of one frame, by entity name, and the OSI
 /// id of every moving object by entity name.
@@ -48,32 +46,6 @@ fn classify(gt: &GroundTruth) -> Classified {
         }
     }
     Classified { trailer, ids }
-}
-
-/// Runs `scenario` for `seconds` with `--osi` (and `--events`), returns the decoded trace
-/// and the event log's text.
-fn run(test: &str, scenario: &Path, seconds: f64) -> (Vec<GroundTruth>, String) {
-    let dir = out_dir(test);
-    let trace = dir.join("trace.osi");
-    let events = dir.join("events.jsonl");
-    let out = oscsim_for(
-        scenario,
-        seconds,
-        &[
-            "--osi",
-            trace.to_str().expect("the target dir path is UTF-8"),
-            "--events",
-            events.to_str().expect("the target dir path is UTF-8"),
-        ],
-    );
-    assert!(
-        out.status.success(),
-        "oscsim failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let trace = read_osi(&trace).expect("the trace reads back");
-    let events = std::fs::read_to_string(events).expect("the event log was written");
-    (trace, events)
 }
 
 /// Time of the `start` transition of the action named `action` in the JSON-lines log.

@@ -15,8 +15,7 @@ mod osi_common;
 use std::path::Path;
 
 use osi::osi3::GroundTruth;
-use osi::trace::read_osi;
-use osi_common::{oscsim_for, out_dir};
+use osi_common::traced_run;
 
 fn scenario() -> std::path::PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/files/osi_visibility.xosc")
@@ -57,26 +56,7 @@ fn visibility_records(events: &str, entity: &str) -> Vec<(f64, String)> {
 
 #[test]
 fn entity_invisible_to_sensors_leaves_the_ground_truth_and_returns_with_its_id() {
-    let dir = out_dir("osi_visibility");
-    let trace = dir.join("trace.osi");
-    let events = dir.join("events.jsonl");
-    let out = oscsim_for(
-        &scenario(),
-        3.0,
-        &[
-            "--osi",
-            trace.to_str().expect("the target dir path is UTF-8"),
-            "--events",
-            events.to_str().expect("the target dir path is UTF-8"),
-        ],
-    );
-    assert!(
-        out.status.success(),
-        "oscsim failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let trace = read_osi(&trace).expect("the trace reads back");
-    let events = std::fs::read_to_string(events).expect("the event log was written");
+    let (trace, events) = traced_run("osi_visibility", &scenario(), 3.0);
 
     // The log names each change; the times are the steps the three actions ran in.
     let ego = visibility_records(&events, "Ego");
@@ -85,7 +65,10 @@ fn entity_invisible_to_sensors_leaves_the_ground_truth_and_returns_with_its_id()
     let target = visibility_records(&events, "Target");
     assert_eq!(target.len(), 2, "{target:?}");
     assert_eq!(target[0].1, "visibility graphics on sensors off traffic on");
-    assert_eq!(target[1].1, "visibility graphics off sensors on traffic off");
+    assert_eq!(
+        target[1].1,
+        "visibility graphics off sensors on traffic off"
+    );
     let (hidden, shown) = (target[0].0, target[1].0);
     assert!(ego[0].0 < hidden && hidden < shown);
 

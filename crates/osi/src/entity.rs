@@ -12,6 +12,7 @@
 use crate::classification::{pedestrian_type, stationary_type, vehicle_type};
 use crate::error::Error;
 use crate::ids::{IdAllocator, IdKey};
+use crate::osi3::moving_object::vehicle_classification::LightState;
 use crate::osi3::moving_object::{
     MovingObjectClassification, PedestrianAttributes, Type as MovingType, VehicleAttributes,
     VehicleClassification,
@@ -57,6 +58,8 @@ pub struct EntityInfo<'a> {
     pub color: Option<ColorDescription>,
     /// Entity name of the trailer hitched to this vehicle, if any.
     pub trailer: Option<&'a str>,
+    /// The vehicle's light states (see [`crate::lights`]), if any light was set.
+    pub lights: Option<LightState>,
 }
 
 /// OSI needs a positive, finite bounding box at a finite place (osi_check: "dimension
@@ -127,6 +130,7 @@ pub fn moving_object(
             r#type: Some(vehicle as i32),
             has_trailer: Some(trailer_id.is_some()),
             trailer_id,
+            light_state: info.lights,
             ..Default::default()
         });
         object.vehicle_attributes = Some(VehicleAttributes {
@@ -228,6 +232,7 @@ mod tests {
             model3d: None,
             color: None,
             trailer: Some("Trailer"),
+            lights: None,
         }
     }
 

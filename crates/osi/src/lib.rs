@@ -11,6 +11,7 @@
 //! - [`lanes::from_network`]: `Lane` / `LaneBoundary` from an OpenDRIVE road network,
 //!   polylines sampled from the exact road model by [`polyline`].
 //! - [`classification`], [`color`]: OpenSCENARIO categories and colours → OSI.
+//! - [`lights`]: OpenSCENARIO vehicle light states → `VehicleClassification.LightState`.
 //! - [`entity`]: a scenario entity → `MovingObject` / `StationaryObject` with the OSI rules.
 //! - [`trace`]: the [`trace::TraceWriter`] seam, `.osi` and `.mcap` writers and readers,
 //!   the OSI file naming convention, and [`trace::TraceFile`] for `--osi PATH`.
@@ -30,6 +31,7 @@
 //!     model3d: None,
 //!     color: None,
 //!     trailer: None,
+//!     lights: None,
 //! };
 //! for step in 0..3u64 {
 //!     let state = RigidBodyState {
@@ -61,6 +63,7 @@ mod error;
 pub mod ground_truth;
 pub mod ids;
 pub mod lanes;
+pub mod lights;
 pub mod osi3;
 pub mod polyline;
 pub mod rigid_body;

@@ -9,6 +9,8 @@ use std::process::Output;
 use engine::output::{Frame, FrameSink};
 use engine::runtime::EntityKind;
 use engine::{Engine, EngineConfig};
+use osi::osi3::GroundTruth;
+use osi::trace::read_osi;
 
 /// Simulated seconds the tests run (short: debug builds).
 pub const DURATION: f64 = 6.0;
@@ -57,6 +59,32 @@ pub fn oscsim_ok(scenario: &Path, extra: &[&str]) -> Output {
         String::from_utf8_lossy(&out.stderr)
     );
     out
+}
+
+/// Runs `scenario` for `seconds` with `--osi` and `--events` into the folder of `test`, asserts
+/// the run succeeded; returns the decoded trace and the event log's text.
+pub fn traced_run(test: &str, scenario: &Path, seconds: f64) -> (Vec<GroundTruth>, String) {
+    let dir = out_dir(test);
+    let trace = dir.join("trace.osi");
+    let events = dir.join("events.jsonl");
+    let out = oscsim_for(
+        scenario,
+        seconds,
+        &[
+            "--osi",
+            trace.to_str().expect("the target dir path is UTF-8"),
+            "--events",
+            events.to_str().expect("the target dir path is UTF-8"),
+        ],
+    );
+    assert!(
+        out.status.success(),
+        "oscsim failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let trace = read_osi(&trace).expect("the trace reads back");
+    let events = std::fs::read_to_string(events).expect("the event log was written");
+    (trace, events)
 }
 
 /// One entity at one step, as the engine reports it.

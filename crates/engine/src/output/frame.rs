@@ -6,10 +6,12 @@
 //! centre on the ground; OSI's base.position is the bounding-box centre, the box centre is given
 //! relative to the reference point so the OSI side can convert), bounding box, velocity,
 //! acceleration, yaw rate, road and lane position, vehicle category, colour, model3d, the
-//! VisibilityAction flags and the towed trailer.
+//! VisibilityAction flags, the LightStateAction light states and the towed trailer.
+
+use std::collections::BTreeMap;
 
 use opendrive::{Pose, Real, RoadPosition};
-use scenario::VehicleCategory;
+use scenario::{LightState, VehicleCategory};
 
 use crate::domain::{BoundingBox, Color, Vector3};
 use crate::runtime::{Entity, EntityKind, Visibility};
@@ -67,6 +69,9 @@ pub struct EntityFrame<'a> {
     /// Seen by image generators, sensors and other traffic (VisibilityAction, OpenSCENARIO
     /// 1.3 XSD `VisibilityAction`; all true unless an action changed them).
     pub visibility: Visibility,
+    /// The state LightStateAction last gave each light, by light: an XSD `VehicleLightType`
+    /// (e.g. `lowBeam`) or a user-defined light's type. Lights no action touched are absent.
+    pub lights: &'a BTreeMap<String, LightState>,
     /// Id of the trailer this vehicle tows (OSI `vehicle_classification.trailer_id`); the
     /// trailer's name is `frame.entities[id].name`.
     pub trailer: Option<u32>,
@@ -92,6 +97,7 @@ impl<'a> EntityFrame<'a> {
             color: e.color,
             model3d: e.model3d.as_deref(),
             visibility: e.visibility,
+            lights: &e.lights,
             trailer: e.trailer.map(|t| t.0),
         }
     }

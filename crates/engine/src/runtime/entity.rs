@@ -5,8 +5,10 @@
 //!
 //! Entities live in the [`World`](super::World)'s store, addressed by [`EntityId`].
 
+use std::collections::BTreeMap;
+
 use opendrive::{Direction, Pose, Real, RoadPosition};
-use scenario::{ObjectType, Performance, VehicleCategory};
+use scenario::{LightState, ObjectType, Performance, VehicleCategory};
 
 use super::actions::ControllerOverrides;
 use crate::domain::{Acceleration6d, BoundingBox, Color, Route, Vector3, Velocity6d};
@@ -145,6 +147,8 @@ pub struct Entity {
     pub odometer: Real,
     /// Visibility flags.
     pub visibility: Visibility,
+    /// The state LightStateAction last gave each light (runtime/actions/appearance.rs).
+    pub lights: BTreeMap<String, LightState>,
     /// Route assigned by AssignRouteAction.
     pub route: Option<Route>,
     /// The planned route the default controller follows, with the entity's progress along it
@@ -195,6 +199,7 @@ impl Entity {
             acceleration: Acceleration6d::ZERO,
             odometer: 0.0,
             visibility: Visibility::default(),
+            lights: BTreeMap::new(),
             route: None,
             route_follow: None,
             longitudinal_action: None,

@@ -149,6 +149,7 @@ pub fn frame(ids: &mut IdAllocator, k: usize, vehicles: usize, with_lanes: bool)
             model3d: Some("car_white.osgb"),
             color: osi::color::from_color_type("white").expect("known colour"),
             trailer: None,
+            lights: None,
         };
         let state = RigidBodyState {
             reference_point: [5.0 + 30.0 * i as f64 + vehicle_speed(i) * t, -1.75, 0.0],
@@ -214,6 +215,7 @@ pub fn walker_info(scenario_file: &'static str) -> EntityInfo<'static> {
         model3d: None,
         color: None,
         trailer: None,
+        lights: None,
     }
 }
 

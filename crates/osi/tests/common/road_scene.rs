@@ -52,6 +52,7 @@ pub fn frame(net: &opendrive::RoadNetwork, b: &mut GroundTruthBuilder, k: u64) -
         model3d: Some("car_white.osgb"),
         color,
         trailer: None,
+        lights: None,
     };
     let mut f = b.begin_frame(k * STEP_NANOS);
     // Lanes as the engine finds them: locate the reference point on the road network.

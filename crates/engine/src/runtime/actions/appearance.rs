@@ -1,7 +1,8 @@
 //! AppearanceAction (OpenSCENARIO 1.3 §7.7.2 private actions, XSD `AppearanceAction`,
 //! `LightStateAction`, `AnimationAction`): lights and animations of an entity. They change
-//! nothing in the motion; oscsim keeps the state each one set, per entity, and writes every
-//! change to the event log (kind `entity`).
+//! nothing in the motion; oscsim keeps the state each one set, per entity (the lights on the
+//! entity, so that they reach the frames and OSI), and writes every change to the event log
+//! (kind `entity`).
 //!
 //! When each ends: a LightStateAction ends `transitionTime` after its start (XSD
 //! `LightStateAction`: "Time to transition from current lightState to given new lightState
@@ -61,10 +62,9 @@ impl Transition {
     }
 }
 
-/// The lights and animations set so far, per entity.
+/// The animations set so far, per entity.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Appearances {
-    lights: BTreeMap<(EntityId, String), LightState>,
     animations: BTreeMap<(EntityId, String), AnimationAction>,
 }
 
@@ -72,7 +72,7 @@ impl World {
     /// The state LightStateAction last gave light `light` of entity `id` (a VehicleLight
     /// type as written in the XSD, e.g. `lowBeam`, or a user-defined light's type).
     pub fn light_state(&self, id: EntityId, light: &str) -> Option<&LightState> {
-        self.appearance.lights.get(&(id, light.to_owned()))
+        self.entity(id).lights.get(light)
     }
 
     /// The AnimationAction last applied to animation `name` of entity `id` (the component,
@@ -140,9 +140,9 @@ pub(crate) fn start(
             let name = light_name(&l.light_type);
             let change = format!("light {name} {}", l.light_state.mode.as_str());
             world
-                .appearance
+                .entity_mut(actor)
                 .lights
-                .insert((actor, name), l.light_state.clone());
+                .insert(name, l.light_state.clone());
             (change, transition)
         }
         AppearanceAction::Animation(a) => {
