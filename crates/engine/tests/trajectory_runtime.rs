@@ -305,3 +305,29 @@ fn untimed_trajectory_leaves_the_speed_to_other_actions() {
     // 130.5 m: 10 m by 1 s, about 30 m during the speed change, the rest at 20 m/s.
     assert!(end > 7.0 && end < 8.0, "ended at {end}");
 }
+
+#[test]
+fn initial_distance_offset_beyond_the_end_is_refused() {
+    // Range of FollowTrajectoryAction/@initialDistanceOffset: [0, arc length]; 150 m on the
+    // 100 m Polyline is refused with the PrivateAction's place (line 44, column 11), and the
+    // car drives on under the default controller from x = 100 at its 10 m/s.
+    let path = fixture("offset_beyond_end.xosc");
+    let (frames, events) = run(&path, 2.0);
+    let message = events
+        .iter()
+        .find_map(|e| match e {
+            EventRecord::Error { message, .. } => Some(message.clone()),
+            _ => None,
+        })
+        .expect("an error is logged");
+    let expected = format!(
+        "expected initialDistanceOffset in [0, 100] m (the trajectory's length), found 150 m at {}:44:11",
+        path.display()
+    );
+    assert_eq!(message, expected);
+    let r = frames.at("Ego", 1.0);
+    assert!(
+        (r.x - 110.0).abs() < TOL && (r.speed - 10.0).abs() < TOL,
+        "{r:?}"
+    );
+}

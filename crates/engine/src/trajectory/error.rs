@@ -135,6 +135,15 @@ pub enum TrajectoryErrorKind {
     /// A ClothoidSpline without segments.
     #[error("expected at least 1 ClothoidSplineSegment, found 0")]
     NoSegments,
+    /// `FollowTrajectoryAction/@initialDistanceOffset` outside [0, arc length] (its range in
+    /// OpenSCENARIO 1.3) or not a number.
+    #[error("expected initialDistanceOffset in [0, {length}] m (the trajectory's length), found {found} m")]
+    InitialDistanceOffset {
+        /// The offset given, m.
+        found: f64,
+        /// The trajectory's length, m.
+        length: f64,
+    },
     /// `Timing/@scale` is not a finite number > 0.
     #[error("expected Timing scale > 0, found {0}")]
     Scale(f64),

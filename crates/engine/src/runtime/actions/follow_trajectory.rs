@@ -33,7 +33,10 @@ use crate::runtime::entity::EntityId;
 use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
-use crate::trajectory::{build_for_actor, FollowLimits, Pursuit, Trajectory, TrajectoryClock};
+use crate::trajectory::{
+    build_for_actor, FollowLimits, Pursuit, Trajectory, TrajectoryClock, TrajectoryError,
+    TrajectoryErrorKind,
+};
 
 /// A running FollowTrajectoryAction on one actor.
 #[derive(Debug, Clone)]
@@ -156,8 +159,15 @@ pub(crate) fn start(
         .map_err(to_error)?;
     // initialDistanceOffset (default 0: the trajectory's start), or with Timing the arc length
     // the trajectory's own clock gives for now.
+    let length = trajectory.length();
+    if let Some(d) = initial_distance_offset.filter(|d| !(0.0..=length).contains(d)) {
+        return Err(to_error(TrajectoryError::new(
+            TrajectoryErrorKind::InitialDistanceOffset { found: d, length },
+            pos,
+        )));
+    }
     let s = match (initial_distance_offset, clock.as_ref()) {
-        (Some(d), _) => d.clamp(0.0, trajectory.length()),
+        (Some(d), _) => d,
         (None, Some(c)) => trajectory.s_at_simulation_time(c, now).unwrap_or(0.0),
         (None, None) => 0.0,
     };
