@@ -189,3 +189,26 @@ fn linear_lane_offset_takes_the_cubic_duration() {
     let ended = runtime_support::end_time(&events, "Action").unwrap_or(f64::NAN);
     assert_abs_diff_eq!(ended, 3.95, epsilon = EXACT);
 }
+
+/// lateral_reversed_successor.xosc: a sinusoidal lane change of 3.5 m (lane −1 to lane −2,
+/// y = −1.75 to −5.25) over 2 s from 1.0 s at 10 m/s, starting 10 m before road 1 ends. Road 1
+/// runs along +x from x = 0; road 2 runs from x = 200 back to x = 100 and meets road 1 end to
+/// end, so at 2.0 s the entity passes onto road 2, in its lanes 1 and 2, where t points the
+/// other way (t = −y). The world position does not care: y(T) = −1.75 − 3.5·(1 − cos(π(T −
+/// 1)/2))/2 at every frame, through the crossing, and the entity ends in road 2's lane 2.
+#[test]
+fn lane_change_runs_on_across_a_reversed_successor() {
+    let (_, frames, _) = run("lateral_reversed_successor.xosc");
+    for row in frames.0.iter().filter(|r| r.name == "Ego") {
+        let p = ((row.time - 1.0) / 2.0).clamp(0.0, 1.0);
+        let y = -1.75 - 3.5 * (1.0 - (std::f64::consts::PI * p).cos()) / 2.0;
+        assert!(
+            (row.y - y).abs() < EXACT,
+            "y({}) = {}, want {y}",
+            row.time,
+            row.y
+        );
+    }
+    let end = frames.at("Ego", 3.5).road.clone().unwrap_or_default();
+    assert_eq!((end.0.as_str(), end.1), ("2", 2));
+}

@@ -118,8 +118,23 @@ pub fn advance(
         };
         let next_road = net.handle_road(next);
         let direction = net.driving_direction(next);
+        // A lateral transition in progress goes on from the lane followed, which the link
+        // carries onto the next road: its start point is re-expressed from that lane's centre.
+        anchor_blend(road, track, end);
+        if direction != track.direction {
+            // The roads meet end to end (or start to start): the next road's t axis points
+            // the other way, so offsets from the lane centre change sign (0 − x keeps a zero
+            // offset +0).
+            track.offset = 0.0 - track.offset;
+            if let Some(b) = &mut track.blend {
+                b.from_offset = 0.0 - b.from_offset;
+            }
+        }
         track.road_id.clone_from(&next_road.id);
         track.lane_id = next.lane;
+        if let Some(b) = &mut track.blend {
+            b.from_lane = next.lane;
+        }
         track.direction = direction;
         track.s = if direction == Direction::Forward {
             next_road.lane_sections[next.section as usize].s
@@ -178,6 +193,22 @@ fn cross_sections(net: &RoadNetwork, track: &mut LaneTrack, to: Real) {
     track.lane_id = lane;
     if let (Some(b), Some(from)) = (&mut track.blend, from) {
         b.from_lane = from;
+    }
+}
+
+/// Re-expresses the lateral transition in progress on `track` (if any) from its own lane at
+/// `s` of `road`: the lane it left becomes the lane it goes to, at the offset from that lane's
+/// centre its start point has (the transition then follows that lane's centre at both ends).
+fn anchor_blend(road: &Road, track: &mut LaneTrack, s: Real) {
+    let Some(b) = &mut track.blend else {
+        return;
+    };
+    if let (Ok(from), Ok(to)) = (
+        road.lane_span(b.from_lane, s),
+        road.lane_span(track.lane_id, s),
+    ) {
+        b.from_offset += from.center() - to.center();
+        b.from_lane = track.lane_id;
     }
 }
 
