@@ -346,6 +346,28 @@ fn world_position_on_an_empty_road_network_drives_off_road() {
     assert!((end.speed - 20.0).abs() < 1e-9, "{end:?}");
 }
 
+/// A lane that runs in a loop of two 1 mm roads (`loop.xodr`): at 30–40 m/s a step of
+/// 0.05 s would pass 1500–2000 roads. The lane follower takes at most 16 road hops per step
+/// (runtime/lanes.rs), so every step ends: the run reaches its stop trigger at t = 5 s with
+/// the entity on lane −1 of road 1 or 2, inside the loop's 2 mm, every number finite, and
+/// its speed where the SpeedAction took it (40 m/s).
+#[test]
+fn lane_looping_through_millimetre_roads_never_hangs() {
+    let mut engine = Engine::load(&case("lane_loop"), &[], EngineConfig::default()).expect("loads");
+    let mut frames = Recorder::default();
+    let reason = engine.run(&mut frames, &mut Vec::new()).expect("runs");
+    assert_eq!(reason, engine::StopReason::StopTrigger);
+    assert_eq!(engine.steps(), 100);
+    assert_finite(&frames);
+    for r in &frames.0 {
+        let (road, lane, ..) = r.road.as_ref().expect("on the road");
+        assert!(road == "1" || road == "2", "{r:?}");
+        assert_eq!(*lane, -1, "{r:?}");
+        assert!((-1e-9..=0.002 + 1e-9).contains(&r.x), "{r:?}");
+    }
+    assert!((frames.at("Ego", 5.0).speed - 40.0).abs() < 1e-9);
+}
+
 /// LogicFile names `nowhere.xodr`, which does not exist: the message names the file and the
 /// LogicFile@filepath of the scenario (line 10, column 26).
 #[test]
