@@ -38,24 +38,10 @@ pub enum PositionErrorKind {
         "expected a road network geoReference that oscsim can invert for a GeoPosition, found {0}"
     )]
     GeoUnsupported(String),
-    /// Two consecutive waypoints of a route are not joined by the lane graph.
-    #[error("expected a path through the road network from waypoint {from} to waypoint {to} of route \"{route}\", found none")]
-    NoRoute {
-        /// Route name.
-        route: String,
-        /// 0-based index of the first waypoint.
-        from: usize,
-        /// 0-based index of the second waypoint.
-        to: usize,
-    },
-    /// A route has fewer than two waypoints.
-    #[error("expected at least 2 waypoints in route \"{route}\", found {found}")]
-    TooFewWaypoints {
-        /// Route name.
-        route: String,
-        /// Waypoints found.
-        found: usize,
-    },
+    /// The route of a RoutePosition cannot be planned (too few waypoints, waypoints not
+    /// joined by the road network); it names its own place.
+    #[error("{0}")]
+    Route(crate::routing::RoutingError),
     /// `pathS` lies beyond the route.
     #[error("expected pathS in [0, {length}] along route \"{route}\", found {path_s}")]
     OutsideRoute {
@@ -118,10 +104,12 @@ struct Inner {
     pos: SourcePos,
 }
 
-/// A trajectory error already names its own place; every other kind gets the position's.
+/// A trajectory or route error already names its own place; every other kind gets the
+/// position's.
 fn display(inner: &Inner) -> String {
     match &inner.kind {
         PositionErrorKind::Trajectory(e) => e.to_string(),
+        PositionErrorKind::Route(e) => e.to_string(),
         kind => format!("{kind} at {}", inner.pos),
     }
 }

@@ -14,6 +14,7 @@ use crate::domain::{
     Acceleration6d, BoundingBox, MovableObject, PhysicalObject, Route, TrafficParticipant,
     Velocity6d,
 };
+use crate::routing::RoutingOptions;
 use crate::trajectory::Trajectory;
 
 /// One entity as positions and conditions see it at the current moment.
@@ -111,4 +112,11 @@ pub trait EntityQuery {
 
     /// The road network the scenario runs on.
     fn road_network(&self) -> &RoadNetwork;
+
+    /// The settings routes are planned with (RoutePosition, AssignRouteAction): the runtime
+    /// gives its run's seed for routeStrategy `random`, so that one route plans one path for
+    /// positions, the controller and conditions. Default: [`RoutingOptions::default`].
+    fn routing_options(&self) -> RoutingOptions {
+        RoutingOptions::default()
+    }
 }

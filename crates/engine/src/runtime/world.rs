@@ -12,6 +12,7 @@ use super::entity::{Entity, EntityId, LaneTrack};
 use super::lanes::{curvature, lane_at};
 use crate::condition::ConditionContext;
 use crate::position::{EntityQuery, EntityView};
+use crate::routing::RoutingOptions;
 use crate::storyboard::StateView;
 
 /// A located point farther than this (m) from every lane is off the road: the entity then
@@ -192,6 +193,14 @@ impl EntityQuery for World {
     fn road_network(&self) -> &RoadNetwork {
         &self.network
     }
+
+    /// The run's seed for routeStrategy `random` ([`EngineConfig::seed`](crate::EngineConfig)).
+    fn routing_options(&self) -> RoutingOptions {
+        RoutingOptions {
+            seed: self.traffic.seed,
+            ..RoutingOptions::default()
+        }
+    }
 }
 
 /// The world together with the storyboard's element states: what conditions read.
@@ -213,6 +222,10 @@ impl EntityQuery for ConditionWorld<'_> {
 
     fn road_network(&self) -> &RoadNetwork {
         &self.world.network
+    }
+
+    fn routing_options(&self) -> RoutingOptions {
+        EntityQuery::routing_options(self.world)
     }
 }
 

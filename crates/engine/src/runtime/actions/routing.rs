@@ -22,10 +22,7 @@ use crate::runtime::world::World;
 /// The run's routing options: routeStrategy `random` draws from the run's seed
 /// ([`EngineConfig::seed`](crate::EngineConfig), `oscsim run --seed`).
 fn options(world: &World) -> RoutingOptions {
-    RoutingOptions {
-        seed: world.traffic.seed,
-        ..RoutingOptions::default()
-    }
+    crate::position::EntityQuery::routing_options(world)
 }
 
 /// Gives `actor` the planned route: for conditions and positions (`Entity::route`) and for the
