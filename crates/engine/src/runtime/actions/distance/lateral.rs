@@ -26,7 +26,7 @@
 //!   reference's lateral motion (at its present lateral speed) over this step and the next.
 //! * The heading turns with the sideways motion: h = road heading + atan(v / speed), the
 //!   motion being handed to the default controller as a one-step lateral blend of the lane.
-//! * `continuous="false"`: the action ends in the step whose motion brings the lateral error to
+//! * `continuous="false"`: the action ends when the lateral error measured at a step's start is
 //!   at most 0.01 m (esmini's threshold; the standard gives none); the actor keeps the lateral
 //!   position reached.
 
@@ -187,12 +187,6 @@ pub(crate) fn step_lateral(
             shift
         }
     };
-    // The error at the step's end, the reference moving on at its lateral speed.
-    if !s.continuous && (left - shift + v_ref * dt).abs() <= REACHED {
-        // The last stretch, without the heading of a motion that stops here.
-        move_sideways(world, actor, shift, dt, false);
-        return ActionStatus::Ended;
-    }
     move_sideways(world, actor, shift, dt, s.limits.is_some());
     ActionStatus::Running
 }

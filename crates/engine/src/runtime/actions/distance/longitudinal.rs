@@ -17,9 +17,10 @@
 //!   back, maxDeceleration when it must close up — esmini's pairing), the acceleration clamped
 //!   to [−maxDeceleration, maxAcceleration] after the jerk limits, the speed to [0, maxSpeed]
 //!   (a distance controller does not reverse).
-//! * `continuous="false"`: "the action ends when the target distance is reached", oscsim: in
-//!   the step whose motion brings the distance error to at most 0.1 m (esmini's threshold; the
-//!   standard gives none), the reference driving on at its speed.
+//! * `continuous="false"`: "the action ends when the target distance is reached", oscsim: when
+//!   the distance error measured at a step's start is at most 0.1 m (esmini's threshold; the
+//!   standard gives none); that step's control still applies, and the storyboard logs the end
+//!   with the next step, as esmini does (its log shows the end at the frame of that step).
 
 use opendrive::Direction;
 use scenario::{LongitudinalAction, LongitudinalDisplacement, SourcePos};
@@ -168,21 +169,15 @@ pub(crate) fn step_longitudinal(
                 .clamp(-limits.deceleration, limits.acceleration);
             let acc = limit_jerk(acc, s.acceleration, &limits, dt);
             s.acceleration = acc;
-            let v_next = (v + acc * dt).clamp(0.0, limits.speed);
-            world.entity_mut(actor).speed = v_next;
-            // The error at the step's end, both driving on at their speeds.
-            let reached = (error + s.toward * (v_ref - v_next) * dt).abs() <= REACHED;
-            if !s.continuous && reached {
-                return ActionStatus::Ended;
-            }
+            world.entity_mut(actor).speed = (v + acc * dt).clamp(0.0, limits.speed);
         }
-        Some(_) => {
-            if !s.continuous && error.abs() <= REACHED {
-                return ActionStatus::Ended;
-            }
-        }
+        Some(_) => {}
     }
-    ActionStatus::Running
+    if !s.continuous && error.abs() <= REACHED {
+        ActionStatus::Ended
+    } else {
+        ActionStatus::Running
+    }
 }
 
 /// Moves `actor` by `forward` m along its lane (negative: back), within its road.
