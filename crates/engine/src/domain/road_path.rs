@@ -7,9 +7,24 @@
 //! road at its contact point). Dijkstra's algorithm over (road, direction of travel) nodes,
 //! with the length of every road passed as the edge weight.
 //!
-//! Why not `RoadNetwork::route`: that is a lane route in the driving direction, which has no
-//! answer for an object in an oncoming lane or on a sidewalk; the distance along s between two
-//! objects is a question about the road geometry only.
+//! A junction end is read as `opendrive`'s lane graph reads it (`query/graph.rs`,
+//! `through_junction`), at road level: the connections whose incoming road this is, the
+//! connections whose connecting (or linked) road this is, back to their incoming road, and
+//! the connecting roads whose own road link names this road's end. Files often write a
+//! connection from one side only; without the last two, a path that leaves a road backwards
+//! into a junction (from the road a junction leads to, back towards the road it came from)
+//! had no way through, so the distance from A to B existed and the one from B to A did not.
+//!
+//! Why not `opendrive`'s search (`RoadNetwork::route_by`, `query/route_search.rs`): its nodes
+//! are lanes driven in their driving direction, it moves only along lane links and over
+//! drivable lanes. The distance along s between two objects is a question about the road
+//! geometry only: it must have an answer for an object in an oncoming lane, on a sidewalk, on
+//! a one-way road driven backwards, or where roads are linked but their lanes are not (a lane
+//! that ends at the road's end). Served by that search it would lose those answers; made to
+//! give them, the search would need road nodes beside lane nodes and moves against the driving
+//! direction, which no route means. What the two share is the reading of road and junction
+//! links at a road's end; a road-level "roads joined at this end" in `opendrive` could serve
+//! both `neighbours` here and the lane graph there.
 
 use std::cmp::Ordering;
 use std::collections::{BinaryHeap, HashMap};
@@ -65,11 +80,7 @@ pub(crate) fn shortest_road_path(
     to_s: Real,
 ) -> Option<RoadPath> {
     let roads = network.roads();
-    let index: HashMap<&str, usize> = roads
-        .iter()
-        .enumerate()
-        .map(|(i, r)| (r.id.as_str(), i))
-        .collect();
+    let index = road_indices(network);
     let (&start, &goal) = (index.get(from_road)?, index.get(to_road)?);
     // best[road][forward as usize]: cheapest known entry cost; first[..]: direction the path
     // left the start road with.
@@ -143,6 +154,16 @@ pub(crate) fn shortest_road_path(
     found
 }
 
+/// Each road's index in [`RoadNetwork::roads`], by id: the node numbers of `neighbours`.
+pub(crate) fn road_indices(network: &RoadNetwork) -> HashMap<&str, usize> {
+    network
+        .roads()
+        .iter()
+        .enumerate()
+        .map(|(i, r)| (r.id.as_str(), i))
+        .collect()
+}
+
 /// Records a cheaper way to enter `road` travelling `forward`.
 fn relax(
     best: &mut [[Real; 2]],
@@ -166,7 +187,7 @@ fn relax(
 }
 
 /// Roads entered when leaving road `road` travelling `forward` (at its end) or backward (at
-/// its start), with the direction of travel on each.
+/// its start), with the direction of travel on each (see the module doc for junctions).
 pub(crate) fn neighbours(
     network: &RoadNetwork,
     index: &HashMap<&str, usize>,
@@ -179,6 +200,7 @@ pub(crate) fn neighbours(
     } else {
         &r.links.predecessor
     };
+    // Entering a road at its start means travelling towards +s on it.
     let entered = |cp: ContactPoint| cp == ContactPoint::Start;
     let mut out = Vec::new();
     match link {
@@ -197,9 +219,59 @@ pub(crate) fn neighbours(
             ..
         }) => {
             if let Some(j) = network.junction(element_id) {
-                for c in j.connections.iter().filter(|c| c.incoming_road == r.id) {
-                    if let Some(&i) = index.get(c.connecting_road.as_str()) {
-                        out.push((i, entered(c.contact_point)));
+                let our_end = if forward {
+                    ContactPoint::End
+                } else {
+                    ContactPoint::Start
+                };
+                let mut add = |n: (usize, bool)| {
+                    if !out.contains(&n) {
+                        out.push(n);
+                    }
+                };
+                for c in &j.connections {
+                    // Written from this side: this road is the incoming road.
+                    if c.incoming_road == r.id {
+                        if let Some(&i) = index.get(c.connecting_road.as_str()) {
+                            add((i, entered(c.contact_point)));
+                        }
+                    }
+                    // Written from the other side: this road is the connecting (or linked)
+                    // road, left at the end the connection names; back to the incoming road,
+                    // entered at the end that touches the junction.
+                    if c.connecting_road == r.id && c.contact_point == our_end {
+                        if let Some((i, inc)) = index
+                            .get(c.incoming_road.as_str())
+                            .map(|&i| (i, &network.roads()[i]))
+                        {
+                            let touches = |l: &Option<RoadLink>| {
+                                l.as_ref().is_some_and(|l| {
+                                    l.element_type == ElementType::Junction && l.element_id == j.id
+                                })
+                            };
+                            if touches(&inc.links.successor) {
+                                add((i, false));
+                            } else if touches(&inc.links.predecessor) {
+                                add((i, true));
+                            }
+                        }
+                    }
+                    // A connecting road whose own link names this road's end.
+                    if let Some(&ci) = index.get(c.connecting_road.as_str()) {
+                        let conn = &network.roads()[ci];
+                        let joins_us = |l: &Option<RoadLink>| {
+                            l.as_ref().is_some_and(|l| {
+                                l.element_type == ElementType::Road
+                                    && l.element_id == r.id
+                                    && l.contact_point.map_or(true, |cp| cp == our_end)
+                            })
+                        };
+                        if joins_us(&conn.links.predecessor) {
+                            add((ci, true));
+                        }
+                        if joins_us(&conn.links.successor) {
+                            add((ci, false));
+                        }
                     }
                 }
             }
@@ -207,4 +279,81 @@ pub(crate) fn neighbours(
         None => {}
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    use super::*;
+
+    /// Tolerance of lengths summed from the file's road lengths (m).
+    const TOL: Real = 1e-9;
+
+    /// `tests/files/two_junction_choice.xodr`: road 1 (100 m) → junction 100 (connecting
+    /// roads 11, 12 of 10 m) → road 2 (200 m) or road 3 (100 m) → junction 200 (connecting
+    /// roads 21, 31 of 10 m) → road 4 (100 m). The junctions' connections are written from
+    /// roads 1, 2 and 3 only; roads 2, 3 and 4 reach back into them only through the
+    /// connecting roads' own links.
+    fn network() -> RoadNetwork {
+        fixture("two_junction_choice.xodr")
+    }
+
+    /// A road network of `tests/files/`.
+    fn fixture(name: &str) -> RoadNetwork {
+        let path = format!("{}/tests/files/{name}", env!("CARGO_MANIFEST_DIR"));
+        // The fixture is part of the test; a missing file is a broken checkout.
+        RoadNetwork::from_file(Path::new(&path)).expect("fixture road network loads")
+    }
+
+    /// The path from `a` to `b` (road, s) is `length` m long leaving and entering towards
+    /// +s, and the path back is as long, towards −s at both ends.
+    fn both_ways(net: &RoadNetwork, a: (&str, Real), b: (&str, Real), length: Real) {
+        let there = shortest_road_path(net, a.0, a.1, b.0, b.1).expect("a path there");
+        assert!((there.length - length).abs() < TOL, "{}", there.length);
+        assert_eq!((there.start_direction, there.end_direction), (1.0, 1.0));
+        let back = shortest_road_path(net, b.0, b.1, a.0, a.1).expect("a path back");
+        assert!((back.length - length).abs() < TOL, "{}", back.length);
+        assert_eq!((back.start_direction, back.end_direction), (-1.0, -1.0));
+    }
+
+    #[test]
+    fn the_distance_along_roads_is_the_same_both_ways_through_junctions() {
+        let net = network();
+        // Road 1 from s = 10 to its end (90 m), connecting road 12 (10), road 3 (100),
+        // connecting road 31 (10), road 4 to s = 50 (50): 260 m, towards +s on both ends.
+        // Back: road 4 from s = 50 to its start, into junction 200 by road 31's successor
+        // link, road 3, into junction 100 by road 12's, road 1 from its end to s = 10: the
+        // same 260 m, towards −s on both ends.
+        both_ways(&net, ("1", 10.0), ("4", 50.0), 260.0);
+    }
+
+    #[test]
+    fn a_road_reaches_back_into_a_junction_written_from_the_other_side() {
+        let net = network();
+        let roads = net.roads();
+        let index = road_indices(&net);
+        let ids = |road: &str, forward: bool| {
+            let mut v: Vec<(&str, bool)> = neighbours(&net, &index, index[road], forward)
+                .into_iter()
+                .map(|(i, f)| (roads[i].id.as_str(), f))
+                .collect();
+            v.sort();
+            v
+        };
+        // Leaving road 4 at its start: connecting roads 21 and 31, entered at their ends.
+        assert_eq!(ids("4", false), [("21", false), ("31", false)]);
+        // Leaving road 1 at its end (connections written from road 1): 11 and 12, at their
+        // starts, once each although their own links name road 1 too.
+        assert_eq!(ids("1", true), [("11", true), ("12", true)]);
+    }
+
+    #[test]
+    fn a_linked_road_reaches_back_to_the_incoming_road_of_a_direct_junction() {
+        // Road A (100 m) → direct junction D → road B (50 m), the connection written from A's
+        // side only. A, s = 30 to B, s = 20: 70 + 20 = 90 m towards +s; back from B, s = 20
+        // (20 m to B's start, then A from its end to s = 30: 70 m) the same 90 m towards −s.
+        let net = fixture("position/direct_junction.xodr");
+        both_ways(&net, ("A", 30.0), ("B", 20.0), 90.0);
+    }
 }

@@ -8,11 +8,9 @@
 //! in the sequence (OpenDRIVE road links and junction connections), towards +s when it has
 //! none.
 
-use std::collections::HashMap;
-
 use opendrive::{Direction, LaneRoute, Real, RoadNetwork, S_TOLERANCE};
 
-use super::road_path::neighbours;
+use super::road_path::{neighbours, road_indices};
 use super::{DomainError, DomainErrorKind, RouteElement};
 
 /// One stretch of a route (§8.7.4.1.1 route / compound_route): road `road_id` (only lane `lane_id` of it, if given) from
@@ -75,12 +73,7 @@ impl Route {
     /// module doc for the direction each is run in.
     pub fn compound(network: &RoadNetwork, elements: &[RouteElement]) -> Result<Self, DomainError> {
         let invalid = |found: String| DomainError::new(DomainErrorKind::InvalidRoute { found });
-        let index: HashMap<&str, usize> = network
-            .roads()
-            .iter()
-            .enumerate()
-            .map(|(i, r)| (r.id.as_str(), i))
-            .collect();
+        let index = road_indices(network);
         let road_index = |e: &RouteElement| {
             let id = element_road(e);
             index
