@@ -3,7 +3,10 @@
 //! longitudinal target value as good as possible by observing the dynamic constraints of the
 //! entity"; "position: … exactly by ignoring the dynamic constraints").
 //!
-//! The longitudinal target is the arc length s_ref(t) the trajectory's times give. Each step
+//! The longitudinal target is the arc length s_ref(t) the trajectory's times give, in the
+//! speed-continuous reading of the times (`TimeTable::continuous_speeds`: each vertex reached
+//! on time, the speed changing linearly between vertices, from the entity's speed at the
+//! start), which a vehicle can drive where the linear reading's speed jumps. Each step
 //! from t to t + dt the entity wants the reference's own advance, (s_ref(t + dt) − s_ref(t))/dt,
 //! plus a correction c of its gap e = s_ref(t) − s, signed as e: the time-optimal approach
 //! of a double integrator whose speed changes by at most a·dt per step (a: maxDeceleration

@@ -201,6 +201,32 @@ impl Trajectory {
         self.s_at_time(clock.trajectory_time(sim_time))
     }
 
+    /// The speed-continuous reading of the times for `follow` mode (see
+    /// `TimeTable::continuous_speeds`), starting at `v_start` m/s of simulation time; `None`
+    /// without times.
+    pub(crate) fn continuous_speeds(
+        &self,
+        clock: &TrajectoryClock,
+        v_start: Real,
+    ) -> Option<Vec<(Real, Real)>> {
+        self.times
+            .as_ref()
+            .map(|tt| tt.continuous_speeds(v_start / clock.rate()))
+    }
+
+    /// Arc length at simulation time `sim_time` under `clock` on the reading `speeds` of
+    /// [`continuous_speeds`](Self::continuous_speeds); `None` without times.
+    pub(crate) fn s_at_simulation_time_continuous(
+        &self,
+        clock: &TrajectoryClock,
+        speeds: &[(Real, Real)],
+        sim_time: Real,
+    ) -> Option<Real> {
+        self.times
+            .as_ref()
+            .map(|tt| tt.s_at_continuous(speeds, clock.trajectory_time(sim_time)))
+    }
+
     /// Speed along the trajectory (m/s of simulation time) at `sim_time` under `clock`: the
     /// slope of s over the vertex interval, divided by the timing's scale; 0 before the first
     /// and after the last time. `None` without times.

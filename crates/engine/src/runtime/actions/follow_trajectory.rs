@@ -13,7 +13,9 @@
 //!
 //! TrajectoryFollowingMode `position` follows the path and its times exactly. `follow`
 //! observes the actor's dynamic constraints: on a timed trajectory it tracks the timed arc
-//! length within its Performance (see `trajectory::FollowLimits`), and a vehicle whose axles
+//! length of the speed-continuous reading of the times within its Performance (see
+//! `trajectory::FollowLimits`), waits at the end until the last time and leaves with that
+//! reading's final speed; a vehicle whose axles
 //! bound its curvature steers onto and along an open trajectory by pure pursuit from its own
 //! pose (see `trajectory::Pursuit`; forwards only, reverse gear is followed exactly); the
 //! action then ends when the actor reaches the trajectory's end, early or late. Entities
@@ -48,6 +50,9 @@ pub(crate) struct TrajectoryState {
     /// The steering of a curvature-limited vehicle in `follow` mode on an open trajectory
     /// (`None`: on the trajectory) and its own pose [x, y, h] while it steers.
     pursuit: Option<Pursuit>,
+    /// In `follow` mode on a timed trajectory, the speed-continuous reading of its times from
+    /// the actor's speed at the start (`Trajectory::continuous_speeds`): the reference tracked.
+    reference: Option<Vec<(f64, f64)>>,
     pose: [f64; 3],
     /// Arc length reached (steering: of the trajectory point nearest to the actor).
     s: f64,
@@ -85,10 +90,11 @@ impl TrajectoryState {
                 .timed_speed(self.speed, self.at, dt)
                 .unwrap_or(self.speed);
             let (_, s) = pursuit.advance(&self.trajectory, self.pose, self.s, v.abs() * dt);
-            return s >= self.trajectory.length() - END_EPSILON;
+            return s >= self.trajectory.length() - END_EPSILON && !self.waits(step_end);
         }
         if let (Some(v), Some(_)) = (self.timed_speed(self.speed, self.at, dt), self.limits) {
-            return self.s + v * dt >= self.trajectory.length() - END_EPSILON;
+            return self.s + v * dt >= self.trajectory.length() - END_EPSILON
+                && !self.waits(step_end);
         }
         if let Some(end) = self.end_time() {
             return step_end >= end - END_EPSILON;
@@ -100,6 +106,36 @@ impl TrajectoryState {
         next >= self.trajectory.length() - END_EPSILON
     }
 
+    /// In `follow` mode on the continuous reference, an actor at the trajectory's end before
+    /// its last time waits there until that time: the action lasts as long as the times say,
+    /// and a reference still on its way cannot take the actor beyond the end
+    /// (bicycle_fall_over: at rest on the last vertex from 3.5 s to 4 s).
+    fn waits(&self, step_end: f64) -> bool {
+        self.reference.is_some()
+            && self
+                .end_time()
+                .is_some_and(|end| step_end < end - END_EPSILON)
+    }
+
+    /// At the end of a `follow` trajectory tracked on its continuous reference, the actor
+    /// leaves with the reference's final speed, as far as its Performance lets it change speed
+    /// in one step (bicycle_fall_over: the timed vertices end at rest, so the cyclist stops at
+    /// its last vertex instead of rolling on at its last step's 0.25 m/s).
+    fn arrive(&self, world: &mut World, actor: EntityId, dt: f64) {
+        let (Some(speeds), Some(clock)) = (&self.reference, self.timed()) else {
+            return;
+        };
+        let Some(&(_, last)) = speeds.last() else {
+            return;
+        };
+        let e = world.entity_mut(actor);
+        let wanted = last * clock.rate();
+        e.speed = match self.limits {
+            Some(l) => wanted.clamp(e.speed - l.deceleration * dt, e.speed + l.acceleration * dt),
+            None => wanted,
+        };
+    }
+
     /// In `follow` mode on a timed trajectory, the speed for the step from `now` over `dt`
     /// from speed `v0`: towards the timed arc length within the Performance limits, or
     /// without usable limits the speed that reaches it. `None` in `position` mode or untimed.
@@ -109,9 +145,13 @@ impl TrajectoryState {
         }
         let clock = self.timed()?;
         let at = |t| {
-            self.trajectory
-                .s_at_simulation_time(clock, t)
-                .unwrap_or(self.s)
+            match &self.reference {
+                Some(speeds) => self
+                    .trajectory
+                    .s_at_simulation_time_continuous(clock, speeds, t),
+                None => self.trajectory.s_at_simulation_time(clock, t),
+            }
+            .unwrap_or(self.s)
         };
         Some(match self.limits {
             Some(l) => l.tracking_speed(v0, self.s, at(now), at(now + dt), dt),
@@ -187,6 +227,13 @@ pub(crate) fn start(
             .and_then(|p| FollowLimits::new(p.max_acceleration, p.max_deceleration, p.max_speed)),
         _ => None,
     };
+    // An entity that no action has placed yet (an Init FollowTrajectoryAction without a
+    // TeleportAction, bicycle_fall_over.xosc) has no position to steer from: the trajectory
+    // gives its first one, at the start point, in every following mode.
+    let unplaced = !world.entity(actor).placed;
+    if unplaced {
+        place(world, actor, &trajectory, s, false, false);
+    }
     // A vehicle whose axles bound its curvature steers onto and along an open trajectory in
     // `follow` mode, driving forwards (reverse gear is followed exactly).
     let entity = world.entity(actor);
@@ -197,6 +244,16 @@ pub(crate) fn start(
         _ => None,
     };
     let pose = [entity.pose.x, entity.pose.y, entity.pose.h];
+    // `follow` tracks a reference it can drive: the timed vertices reached on time with a
+    // speed that changes linearly between them, from the actor's own (the linear reading's
+    // speed jumps at every vertex). esmini reads timed polylines in `follow` mode the same
+    // way (bicycle_fall_over: 10 m/s braking to rest over the vertex interval 2.5 .. 3.5 s).
+    let reference = match (following_mode, clock.as_ref()) {
+        (FollowingMode::Follow, Some(c)) if limits.is_some() || pursuit.is_some() => {
+            trajectory.continuous_speeds(c, entity.speed)
+        }
+        _ => None,
+    };
     let s = match pursuit {
         Some(p) => {
             trajectory
@@ -211,6 +268,7 @@ pub(crate) fn start(
         clock,
         limits,
         pursuit,
+        reference,
         pose,
         s,
         speed: entity.speed,
@@ -285,16 +343,17 @@ pub(crate) fn step(
             // `follow`: towards the timed arc length within the Performance limits; over at
             // the trajectory's end, early or late.
             let v0 = world.entity(actor).speed;
-            let v = st.timed_speed(v0, now, dt).unwrap_or(v0);
+            let mut v = st.timed_speed(v0, now, dt).unwrap_or(v0);
+            let s = st.s + v * dt;
+            let over = s >= length - END_EPSILON && !st.waits(t);
+            if !over && s > length && dt > 0.0 {
+                // Waiting at the end: the step's motion stops there.
+                v = (length - st.s) / dt;
+            }
             world.entity_mut(actor).speed = v;
             let s = st.s + v * dt;
             let beyond = (s - length).max(0.0);
-            (
-                s.min(length),
-                v * dt - beyond,
-                beyond,
-                s >= length - END_EPSILON,
-            )
+            (s.min(length), v * dt - beyond, beyond, over)
         }
         (Some(clock), Some(end), None) => {
             let s = st
@@ -345,6 +404,7 @@ pub(crate) fn step(
         e.pose.x += along * e.pose.h.cos();
         e.pose.y += along * e.pose.h.sin();
         e.odometer += beyond;
+        st.arrive(world, actor, dt);
         release(world, actor, true);
         ActionStatus::Ended
     } else {
@@ -364,13 +424,16 @@ fn steer(
     dt: f64,
 ) -> ActionStatus {
     let v0 = world.entity(actor).speed;
+    let waiting = st.reference.is_some() && st.s >= st.trajectory.length() - END_EPSILON;
     let v = match st.timed_speed(v0, now, dt) {
-        Some(v) => {
-            world.entity_mut(actor).speed = v;
-            v
-        }
+        // At the end before the last time: it waits there (`TrajectoryState::waits`).
+        Some(_) if waiting => 0.0,
+        Some(v) => v,
         None => v0,
     };
+    if st.timed().is_some() {
+        world.entity_mut(actor).speed = v;
+    }
     let distance = v.abs() * dt;
     let (pose, s) = pursuit.advance(&st.trajectory, st.pose, st.s, distance);
     st.pose = pose;
@@ -387,7 +450,8 @@ fn steer(
     e.held = true;
     e.placed = true;
     e.odometer += distance;
-    if dt > 0.0 && s >= st.trajectory.length() - END_EPSILON {
+    if dt > 0.0 && s >= st.trajectory.length() - END_EPSILON && !st.waits(now + dt) {
+        st.arrive(world, actor, dt);
         release(world, actor, true);
         ActionStatus::Ended
     } else {
