@@ -3,9 +3,9 @@
 //! Seven small scenarios (five of the corpus' `generated/xosc`, two of this crate's runtime
 //! fixtures with numeric parameters, copied with their road files and the vehicle catalog into
 //! `tests/files/robustness/`) have numeric attribute values replaced at random by NaN, ±inf,
-//! 0, −1, ±1e300, ±1e-300, integers beyond `i32`/`u32`/`i64` and expressions whose value is
-//! not finite (`${0 / 0}`), and their global parameters
-//! overridden the same way (`--param`). Each damaged scenario is loaded, built and run for at
+//! 0, −1, ±1e300, 1.7e308, ±1e-300, integers beyond `i32`/`u32`/`i64` and expressions whose
+//! value is not finite (`${0 / 0}`), and their global parameters overridden the same way
+//! (`--param`). Each damaged scenario is loaded, built and run for at
 //! most 300 steps of a step length drawn from 1 ms to 1e9 s (`EngineConfig::duration` = 300
 //! steps; valid, if unusual, steps that move an entity far past its road's end in one step).
 //! Whatever happens:
@@ -15,14 +15,16 @@
 //!   detector, not a speed requirement: one case takes well under a second in debug);
 //! - no frame carries a NaN or infinite pose, speed, velocity, acceleration, yaw rate or
 //!   road coordinate: a value that would corrupt the state must be refused with an error;
-//! - every error names the file and a line:column in it.
+//! - every error names the file and a line:column in it, except the step's overflow guard
+//!   (finite extremes that combine into inf, runtime/finite.rs), which names the entity, the
+//!   quantity and the time.
 
 use std::path::PathBuf;
 use std::sync::mpsc;
 use std::time::Duration;
 
 use engine::output::{EventRecord, Frame, FrameSink};
-use engine::{Engine, EngineConfig};
+use engine::{Engine, EngineConfig, RuntimeErrorKind};
 use proptest::prelude::*;
 use proptest::sample::Index;
 use scenario::Scenario;
@@ -60,7 +62,7 @@ const SCENARIOS: [(&str, &str); 7] = [
 ];
 
 /// The values written over numeric attributes and parameters.
-const BAD_VALUES: [&str; 20] = [
+const BAD_VALUES: [&str; 21] = [
     "${1e300 * 1e300}",
     "${0 / 0}",
     "${-1 / 0}",
@@ -73,6 +75,7 @@ const BAD_VALUES: [&str; 20] = [
     "-1",
     "1e300",
     "-1e300",
+    "1.7e308",
     "1e-300",
     "-1e-300",
     "2147483647",
@@ -186,6 +189,9 @@ enum Outcome {
     Refused(String),
     /// Ran to its end.
     Ran,
+    /// Stopped by the step's guard: finite extremes combined into a state that is not finite
+    /// (runtime/finite.rs); the message names the entity, the quantity and the time.
+    Overflow(String),
     /// A frame carried a non-finite number.
     Corrupt(String),
 }
@@ -216,6 +222,9 @@ fn run_case(name: &str, text: &str, params: &[(String, String)], dt: f64) -> Out
     }
     match result {
         Ok(_) => Outcome::Ran,
+        Err(e) if matches!(e.kind(), RuntimeErrorKind::NonFinite { .. }) => {
+            Outcome::Overflow(e.to_string())
+        }
         Err(e) => Outcome::Refused(e.to_string()),
     }
 }
@@ -253,6 +262,10 @@ fn run_watched(
     };
     match outcome {
         Outcome::Ran => {}
+        Outcome::Overflow(message) => assert!(
+            message.starts_with("expected a finite ") && message.contains(" of entity '"),
+            "{name} with {damage}: {message}"
+        ),
         Outcome::Corrupt(what) => panic!("{name} with {damage}: corrupt state: {what}"),
         Outcome::Refused(message) => {
             assert!(

@@ -99,6 +99,21 @@ pub enum RuntimeErrorKind {
         /// The value found.
         found: f64,
     },
+    /// An entity's state became a non-finite number: finite extremes combined into an
+    /// overflow (runtime/finite.rs). The step is refused before its frame is written.
+    #[error(
+        "expected a finite {quantity} of entity '{entity}' at t = {time:.3} s, found {value} (an overflow of extreme values)"
+    )]
+    NonFinite {
+        /// The entity's name.
+        entity: String,
+        /// The state value (`x`, `speed`, `acceleration x`, …).
+        quantity: &'static str,
+        /// What it became.
+        value: f64,
+        /// Simulation time of the state (s).
+        time: f64,
+    },
     /// Writing output failed.
     #[error("cannot write {what}: {message}")]
     Output {

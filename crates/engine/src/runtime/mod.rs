@@ -18,6 +18,7 @@
 //! | `traffic/*` | spawned traffic: sources, sinks, swarms |
 //! | `trailer` | trailer connections and the one-axle trailer kinematics |
 //! | `external` | ExternalObjectReference entities placed at their OpenDRIVE objects |
+//! | `finite` | the step's guard: no non-finite entity state reaches a frame |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
 //! | `step` | `Engine` and its five stages |
 
@@ -29,6 +30,7 @@ mod controller;
 mod entity;
 mod error;
 mod external;
+mod finite;
 mod lanes;
 mod selection;
 mod shapes;

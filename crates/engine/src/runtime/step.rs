@@ -229,6 +229,7 @@ impl Engine {
             // Trailers connected at definition stand behind their tows from the first frame.
             super::trailer::follow(world, 0.0);
             // The frame at t = 0: the initial state after the Init actions.
+            super::finite::check(&world.entities, time).map_err(|(_, e)| e)?;
             let clock = Instant::now();
             frames
                 .frame(&Frame {
@@ -271,10 +272,16 @@ impl Engine {
         world.time = time;
         self.counters.measurements += clock.elapsed();
 
-        // Stage 5: output.
+        // Stage 5: output. Vehicles spawned and removed by traffic actions in this step
+        // (runtime/traffic); a state that is not finite is refused with the step's records
+        // (runtime/finite.rs).
         let clock = Instant::now();
-        // Vehicles spawned and removed by traffic actions in this step (runtime/traffic).
         log.borrow_mut().append(&mut world.traffic.events);
+        if let Err((entity, e)) = super::finite::check(&world.entities, time) {
+            log.borrow_mut().push(EventRecord::error(time, &entity, &e));
+            self.emit(&log.into_inner(), events)?;
+            return Err(e);
+        }
         frames
             .frame(&Frame {
                 time,
