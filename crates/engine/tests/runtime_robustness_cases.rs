@@ -281,6 +281,85 @@ fn parameter_or_variable_modified_beyond_the_largest_double_is_refused() {
     );
 }
 
+/// Lead, off the road at (100, 50) where nothing stops it, jumps to 1e300 m/s at t = 0.5 s;
+/// at t = 1 s Ego's SpeedAction to 1e10 times Lead's speed would be 1e310 m/s, beyond
+/// f64::MAX ≈ 1.8e308: refused at its Action.
+#[test]
+fn relative_target_speed_beyond_the_largest_double_is_refused() {
+    assert_run_fails(
+        "relative_speed_overflow",
+        1.0,
+        (77, 15),
+        "Action",
+        &["expected a finite target speed, found inf m/s at "],
+    );
+}
+
+/// The same with Lead's jump at t = 2 s: Ego's continuous SpeedAction started at t = 1 s
+/// towards 1e10 · 0 = 0 m/s, linearly over 2 s (10 → 5 m/s by t = 2 s); when the target
+/// overflows the action stops (its stop transition in the log, in the step that ends at
+/// 2.05 s) and Ego keeps its 5 m/s: x(5) = x(2) + 3 · 5 = 67.375 + 15 = 82.375 m, with
+/// x(2) = 60 + Σ_{k=1..20} 0.05 · (10 − 0.25 k) = 60 + 0.05 · (200 − 52.5) = 67.375 m.
+#[test]
+fn relative_target_speed_overflowing_later_stops_the_action() {
+    let path = case("relative_speed_overflow");
+    let params = [("LeadAt".to_owned(), "2".to_owned())];
+    let mut engine = Engine::load(&path, &params, EngineConfig::default()).expect("loads");
+    let mut frames = Recorder::default();
+    let mut events = Vec::new();
+    engine.run(&mut frames, &mut events).expect("runs");
+    assert_finite(&frames);
+    let stopped = events.iter().find_map(|e| match e {
+        EventRecord::Transition(r)
+            if r.name == "Action" && r.transition == engine::storyboard::Transition::Stop =>
+        {
+            Some(r.time)
+        }
+        _ => None,
+    });
+    assert!(
+        stopped.is_some_and(|t| (t - 2.05).abs() < 1e-9),
+        "{stopped:?}"
+    );
+    let end = frames.at("Ego", 5.0);
+    assert!((end.speed - 5.0).abs() < 1e-9, "{end:?}");
+    assert!((end.x - 82.375).abs() < 1e-9, "{end:?}");
+}
+
+/// Lead jumps from rest to 1.7e308 m/s at t = 2 s: a finite speed, but the acceleration of
+/// the step, 1.7e308 / 0.05 = 3.4e309 m/s², is beyond f64::MAX. The step's guard
+/// (runtime/finite.rs) refuses the step that ends at 2.05 s before its frame is written: the
+/// frames end at t = 2 s, the error names Lead, the quantity and the time, and is logged.
+#[test]
+fn state_overflowing_from_finite_extremes_is_refused_before_its_frame() {
+    let path = case("relative_speed_overflow");
+    let params = [
+        ("LeadAt".to_owned(), "2".to_owned()),
+        ("LeadSpeed".to_owned(), "1.7e308".to_owned()),
+    ];
+    let mut engine = Engine::load(&path, &params, EngineConfig::default()).expect("loads");
+    let mut frames = Recorder::default();
+    let mut events = Vec::new();
+    let error = engine
+        .run(&mut frames, &mut events)
+        .expect_err("the overflow is refused");
+    let expected = "expected a finite acceleration x of entity 'Lead' at t = 2.050 s, found inf \
+                    (an overflow of extreme values)";
+    assert_eq!(error.to_string(), expected);
+    assert!(matches!(
+        error.kind(),
+        engine::RuntimeErrorKind::NonFinite { .. }
+    ));
+    assert!(events.iter().any(|e| matches!(
+        e,
+        EventRecord::Error { time, element, message }
+            if (*time - 2.05).abs() < 1e-9 && element == "Lead" && message == expected
+    )));
+    assert_finite(&frames);
+    let last = frames.0.last().map_or(f64::NAN, |r| r.time);
+    assert!((last - 2.0).abs() < 1e-9, "last frame at {last}");
+}
+
 /// A Polyline of one vertex is no trajectory (XSD `Polyline`: a line needs two vertices).
 /// The FollowTrajectoryAction (its Action element) is skipped with the error in the event log (the runtime's rule
 /// for a trajectory that cannot be built, runtime/actions/mod.rs), and Ego drives on at

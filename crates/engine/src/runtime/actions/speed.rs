@@ -129,6 +129,15 @@ pub(crate) fn start(
     };
     let v0 = world.entity(actor).speed;
     let v1 = target.speed(world);
+    // A relative target can overflow (a factor of 1e10 on 1e300 m/s): refused, as a
+    // non-finite value in the file is.
+    if !v1.is_finite() {
+        return Err(RuntimeError::at(
+            "a finite target speed",
+            format!("{v1} m/s"),
+            pos,
+        ));
+    }
     let mut span = span(dynamics, v1 - v0);
     if let (DynamicsDimension::Distance, Span::Distance(d)) = (dynamics.dynamics_dimension, span) {
         span = distance_to_time(d, v0, v1);
@@ -225,6 +234,11 @@ pub(crate) fn step(
     dt: f64,
 ) -> ActionStatus {
     let v1 = s.target.speed(world);
+    // A continuous relative target that overflows later stops the action; the actor keeps
+    // the speed it has (the step stage has no error channel; the stop shows in the log).
+    if !v1.is_finite() {
+        return ActionStatus::Stopped;
+    }
     let p = progress(s.span, now + dt - s.start_time, 0.0);
     let (f, _) = shape_value(s.dynamics.dynamics_shape, p);
     let v = if p >= 1.0 {
