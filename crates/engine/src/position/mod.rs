@@ -14,7 +14,7 @@
 //! | `lane` | LanePosition, RelativeLanePosition (ds and dsLane) |
 //! | `lane_length` | arc length along a lane centre line; s after a distance along it |
 //! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
-//! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) |
+//! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) on the path of `routing::plan_route` |
 //! | `trajectory` | TrajectoryPosition on a polyline |
 //! | `resolve` | `resolve`: the dispatcher; GeoPosition |
 
