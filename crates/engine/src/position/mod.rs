@@ -33,8 +33,8 @@ mod world;
 
 pub use error::{PositionError, PositionErrorKind};
 pub use query::{EntityQuery, EntityView};
-pub use resolve::resolve;
 pub(crate) use resolve::orientation_of;
+pub use resolve::resolve;
 pub use resolved::ResolvedPosition;
 
 pub(crate) use lane::{add_lanes, driving_heading as lane_driving_heading};
