@@ -160,8 +160,8 @@ pub struct Entity {
     pub lateral_action: Option<ActionId>,
     /// The last step could not move the entity: its lane ends with no successor.
     pub at_lane_end: bool,
-    /// The running lateral action started before the running longitudinal one (or there is
-    /// none): the lateral motion of this step uses the speed of the step's start.
+    /// The running lateral action comes before the running longitudinal one in the storyboard
+    /// (or there is none): the lateral motion of this step uses the speed of the step's start.
     pub lateral_first: bool,
     /// Speed at the start of the step, before stage 2 (m/s).
     pub start_speed: Real,

@@ -86,16 +86,12 @@ pub(crate) struct ActionSlot {
     pub parts: Vec<Part>,
     /// Simulation time of the start.
     pub started_at: f64,
-    /// Order of the last start among all actions (0 before the first start).
-    pub start_order: u64,
 }
 
 /// Every action of the storyboard, indexed by [`ActionId`].
 #[derive(Debug, Clone, Default)]
 pub(crate) struct ActionTable {
     pub slots: Vec<ActionSlot>,
-    /// Starts so far (numbers `start_order`).
-    pub starts: u64,
 }
 
 impl ActionTable {
@@ -107,7 +103,6 @@ impl ActionTable {
             actors,
             parts: Vec::new(),
             started_at: 0.0,
-            start_order: 0,
         });
         ActionId(self.slots.len() as u32 - 1)
     }
@@ -136,12 +131,10 @@ impl ActionTable {
                 }
             }
         }
-        // Which domain's action started first, for the controller's choice of speed.
+        // Which domain's action comes first in the storyboard, for the controller's choice of
+        // speed: action ids number the actions in document order (runtime/build.rs).
         for e in world.entities.iter_mut() {
-            let order = |id: Option<ActionId>| {
-                id.and_then(|id| self.slots.get(id.0 as usize))
-                    .map(|s| s.start_order)
-            };
+            let order = |id: Option<ActionId>| id.map(|id| id.0);
             e.lateral_first = match (order(e.lateral_action), order(e.longitudinal_action)) {
                 (Some(lat), Some(lon)) => lat < lon,
                 (Some(_), None) => true,
@@ -403,9 +396,6 @@ impl Host<'_> {
     fn try_start(&mut self, id: ActionId) -> Result<(), RuntimeError> {
         let slot = &mut self.table.slots[id.0 as usize];
         slot.started_at = self.time;
-        self.table.starts += 1;
-        let slot = &mut self.table.slots[id.0 as usize];
-        slot.start_order = self.table.starts;
         slot.parts.clear();
         // Selection actors (ByType, spawned vehicles) are the members at the start.
         if let Some(now) = self.world.selections.actors_now(id, self.world) {

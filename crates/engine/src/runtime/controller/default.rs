@@ -28,9 +28,13 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     }
     let old_h = e.pose.h;
     let old_v = e.travel_component(e.velocity.translational);
-    // Actions act in the order they started (as in esmini): a lateral action started before
-    // the running longitudinal one moves the entity before the speed changes, so the entity
-    // travels at the speed of the step's start; otherwise at the speed set for this step.
+    // The running actions of a step act in storyboard (document) order, as in esmini: a
+    // lateral action written before the running longitudinal one moves the entity before the
+    // speed changes, so the entity travels at the speed of the step's start; otherwise at the
+    // speed set for this step. The standard leaves the order within a step open; the
+    // document order is fixed by the file alone (lane_change_simple: the Lane change
+    // maneuver precedes the End Of Road speed maneuver, and esmini's lane change runs at the
+    // speed of the step's start while the speed action accelerates).
     let speed = if e.lateral_first {
         e.start_speed
     } else {
