@@ -130,6 +130,36 @@ fn assert_run_fails(name: &str, time: f64, at: (usize, usize), element: &str, pa
     }
 }
 
+/// Loads `name` with `params` and runs it to its end, which must succeed with every frame
+/// finite; the frames and the event log.
+fn run_ok(name: &str, params: &[(&str, &str)]) -> (Recorder, Vec<EventRecord>) {
+    let params: Vec<(String, String)> = params
+        .iter()
+        .map(|(k, v)| ((*k).to_owned(), (*v).to_owned()))
+        .collect();
+    let mut engine = Engine::load(&case(name), &params, EngineConfig::default())
+        .unwrap_or_else(|e| panic!("{name} does not load: {e}"));
+    let mut frames = Recorder::default();
+    let mut events = Vec::new();
+    engine
+        .run(&mut frames, &mut events)
+        .unwrap_or_else(|e| panic!("{name} fails: {e}"));
+    assert_finite(&frames);
+    (frames, events)
+}
+
+/// Time of the stop transition of storyboard element `name`, if it had one.
+fn stop_time(events: &[EventRecord], name: &str) -> Option<f64> {
+    events.iter().find_map(|e| match e {
+        EventRecord::Transition(r)
+            if r.name == name && r.transition == engine::storyboard::Transition::Stop =>
+        {
+            Some(r.time)
+        }
+        _ => None,
+    })
+}
+
 /// `EngineConfig::validate`: dt must be finite and > 0, duration and cap finite and ≥ 0. The
 /// message names the setting (a setting has no place in a file).
 #[test]
@@ -249,6 +279,36 @@ fn actions_referring_to_a_deleted_entity_are_refused() {
     }
 }
 
+/// Lead (20 m/s) is deleted at t = 2 s while Ego's continuous SpeedAction to Lead's speed
+/// (from t = 1 s, linear over 2 s from 10 m/s) and, in the second file, a SynchronizeAction
+/// with Lead as master are running. Lead has no speed or arrival any more: the action stops
+/// (its stop transition is logged at 2.05 s, the step that sees it) and Ego keeps its speed.
+/// Following: 15 m/s at t = 2 s, x(2) = 60 + Σ_{k=1..20} 0.05 · (10 + 0.25 k) = 72.625 m, and
+/// x(5) = 72.625 + 3 · 15 = 117.625 m (before, Ego braked to 0 behind the vanished Lead and
+/// stood at 83.5 m).
+#[test]
+fn actions_following_an_entity_that_is_deleted_stop() {
+    for (name, speed) in [
+        ("deleted_while_following", Some(15.0)),
+        ("deleted_while_synchronizing", None),
+    ] {
+        let (frames, events) = run_ok(name, &[]);
+        let stopped = stop_time(&events, "Action");
+        assert!(
+            stopped.is_some_and(|t| (t - 2.05).abs() < 1e-9),
+            "{name}: {stopped:?}"
+        );
+        // From the stop on, Ego's speed holds.
+        let at_stop = frames.at("Ego", 2.0).speed;
+        let end = frames.at("Ego", 5.0);
+        assert!((end.speed - at_stop).abs() < 1e-9, "{name}: {end:?}");
+        if let Some(v) = speed {
+            assert!((at_stop - v).abs() < 1e-9, "{name}: {at_stop}");
+            assert!((end.x - 117.625).abs() < 1e-9, "{name}: {end:?}");
+        }
+    }
+}
+
 /// A ParameterModifyAction / VariableModifyAction whose double result overflows (1e308 +
 /// 1e308 = 2e308 and 1e10 · 1e300 = 1e310, both beyond f64::MAX ≈ 1.8e308) is refused at
 /// its Action, as a non-finite declared value or expression result is at load; the value
@@ -302,21 +362,8 @@ fn relative_target_speed_beyond_the_largest_double_is_refused() {
 /// x(2) = 60 + Σ_{k=1..20} 0.05 · (10 − 0.25 k) = 60 + 0.05 · (200 − 52.5) = 67.375 m.
 #[test]
 fn relative_target_speed_overflowing_later_stops_the_action() {
-    let path = case("relative_speed_overflow");
-    let params = [("LeadAt".to_owned(), "2".to_owned())];
-    let mut engine = Engine::load(&path, &params, EngineConfig::default()).expect("loads");
-    let mut frames = Recorder::default();
-    let mut events = Vec::new();
-    engine.run(&mut frames, &mut events).expect("runs");
-    assert_finite(&frames);
-    let stopped = events.iter().find_map(|e| match e {
-        EventRecord::Transition(r)
-            if r.name == "Action" && r.transition == engine::storyboard::Transition::Stop =>
-        {
-            Some(r.time)
-        }
-        _ => None,
-    });
+    let (frames, events) = run_ok("relative_speed_overflow", &[("LeadAt", "2")]);
+    let stopped = stop_time(&events, "Action");
     assert!(
         stopped.is_some_and(|t| (t - 2.05).abs() < 1e-9),
         "{stopped:?}"
@@ -361,16 +408,13 @@ fn state_overflowing_from_finite_extremes_is_refused_before_its_frame() {
 }
 
 /// A Polyline of one vertex is no trajectory (XSD `Polyline`: a line needs two vertices).
-/// The FollowTrajectoryAction (its Action element) is skipped with the error in the event log (the runtime's rule
-/// for a trajectory that cannot be built, runtime/actions/mod.rs), and Ego drives on at
-/// 10 m/s on its lane: x(5 s) = 50 + 10 · 5 = 100 m.
+/// The FollowTrajectoryAction (its Action element) is skipped with the error in the event
+/// log (the runtime's rule for a trajectory that cannot be built, runtime/actions/mod.rs),
+/// and Ego drives on at 10 m/s on its lane: x(5 s) = 50 + 10 · 5 = 100 m.
 #[test]
 fn trajectory_of_one_vertex_is_refused_and_logged() {
     let path = case("trajectory_one_vertex");
-    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
-    let mut frames = Recorder::default();
-    let mut events = Vec::new();
-    engine.run(&mut frames, &mut events).expect("runs on");
+    let (frames, events) = run_ok("trajectory_one_vertex", &[]);
     let message = events
         .iter()
         .find_map(|e| match e {
@@ -387,7 +431,6 @@ fn trajectory_of_one_vertex_is_refused_and_logged() {
         "Action",
         &["expected at least 2 vertices in Polyline of trajectory \"One\", found 1 at "],
     );
-    assert_finite(&frames);
     let end = frames.at("Ego", 5.0);
     assert!((end.x - 100.0).abs() < 1e-9, "{end:?}");
     assert!((end.speed - 10.0).abs() < 1e-9, "{end:?}");
@@ -413,11 +456,7 @@ fn lane_position_on_an_empty_road_network_is_refused() {
 /// 20 m/s 40 m: x(5) = 130.25 m.
 #[test]
 fn world_position_on_an_empty_road_network_drives_off_road() {
-    let mut engine =
-        Engine::load(&case("empty_road_world"), &[], EngineConfig::default()).expect("loads");
-    let mut frames = Recorder::default();
-    engine.run(&mut frames, &mut Vec::new()).expect("runs");
-    assert_finite(&frames);
+    let (frames, _) = run_ok("empty_road_world", &[]);
     assert!(frames.0.iter().all(|r| r.road.is_none()));
     let end = frames.at("Ego", 5.0);
     assert!((end.x - 130.25).abs() < 1e-9, "{end:?}");

@@ -233,9 +233,16 @@ pub(crate) fn step(
     now: f64,
     dt: f64,
 ) -> ActionStatus {
+    // A reference entity that left the scenario (DeleteEntityAction) has no speed to follow,
+    // and a continuous relative target may overflow later: either stops the action, the actor
+    // keeping the speed it has (the step stage has no error channel; the stop shows in the
+    // log). At the start both are errors (`entity_ref`, `start`).
+    if let Target::Relative { entity, .. } = &s.target {
+        if !world.entity(*entity).placed {
+            return ActionStatus::Stopped;
+        }
+    }
     let v1 = s.target.speed(world);
-    // A continuous relative target that overflows later stops the action; the actor keeps
-    // the speed it has (the step stage has no error channel; the stop shows in the log).
     if !v1.is_finite() {
         return ActionStatus::Stopped;
     }

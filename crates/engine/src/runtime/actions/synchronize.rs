@@ -174,6 +174,11 @@ impl SyncState {
 
 /// Sets the actor's speed for the step from `now` to `now + dt`.
 pub(crate) fn step(world: &mut World, actor: EntityId, s: &mut SyncState, dt: f64) -> ActionStatus {
+    // A master that left the scenario (DeleteEntityAction) has no arrival to synchronise
+    // with: the action stops and the actor keeps its speed (refused at the start, `entity_ref`).
+    if !world.entity(s.master).placed {
+        return ActionStatus::Stopped;
+    }
     let distance = remaining(world, actor, &s.target);
     let master_distance = remaining(world, s.master, &s.master_target);
     let passed =
