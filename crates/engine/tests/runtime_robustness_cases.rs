@@ -279,18 +279,26 @@ fn actions_referring_to_a_deleted_entity_are_refused() {
     }
 }
 
-/// Lead (20 m/s) is deleted at t = 2 s while Ego's continuous SpeedAction to Lead's speed
-/// (from t = 1 s, linear over 2 s from 10 m/s) and, in the second file, a SynchronizeAction
-/// with Lead as master are running. Lead has no speed or arrival any more: the action stops
-/// (its stop transition is logged at 2.05 s, the step that sees it) and Ego keeps its speed.
-/// Following: 15 m/s at t = 2 s, x(2) = 60 + Σ_{k=1..20} 0.05 · (10 + 0.25 k) = 72.625 m, and
-/// x(5) = 72.625 + 3 · 15 = 117.625 m (before, Ego braked to 0 behind the vanished Lead and
-/// stood at 83.5 m).
+/// Lead (20 m/s) is deleted at t = 2 s while Ego runs, from t = 1 s, a continuous
+/// SpeedAction to Lead's speed (linear over 2 s from 10 m/s), a SynchronizeAction with Lead
+/// as master, a continuous LongitudinalDistanceAction 10 m behind Lead (maxAcceleration
+/// 3 m/s²) or a continuous LateralDistanceAction. Lead has no speed, place or arrival any
+/// more: the action stops (its stop transition is logged at 2.05 s, the step that sees it)
+/// and Ego keeps its speed.
+/// - following: 15 m/s at t = 2 s, x(2) = 60 + Σ_{k=1..20} 0.05 · (10 + 0.25 k) = 72.625 m,
+///   x(5) = 72.625 + 3 · 15 = 117.625 m (before: Ego braked to 0 behind nothing, 83.5 m);
+/// - keeping distance: Lead far ahead, Ego gains 3 m/s² · 0.05 s = 0.15 m/s per step, 13 m/s
+///   at t = 2 s, x(2) = 60 + Σ_{k=1..20} 0.05 · (10 + 0.15 k) = 71.575 m, x(5) = 71.575 +
+///   3 · 13 = 110.575 m (before: it closed in on Lead's last place, 12.3 m/s at 118.8 m);
+/// - synchronising, keeping a lateral distance: the speed and lateral place at the stop
+///   hold.
 #[test]
 fn actions_following_an_entity_that_is_deleted_stop() {
-    for (name, speed) in [
-        ("deleted_while_following", Some(15.0)),
+    for (name, expected) in [
+        ("deleted_while_following", Some((15.0, 117.625))),
+        ("deleted_while_keeping_distance", Some((13.0, 110.575))),
         ("deleted_while_synchronizing", None),
+        ("deleted_while_keeping_lateral_distance", None),
     ] {
         let (frames, events) = run_ok(name, &[]);
         let stopped = stop_time(&events, "Action");
@@ -298,13 +306,17 @@ fn actions_following_an_entity_that_is_deleted_stop() {
             stopped.is_some_and(|t| (t - 2.05).abs() < 1e-9),
             "{name}: {stopped:?}"
         );
-        // From the stop on, Ego's speed holds.
+        // From the stop on, Ego's speed and lateral place hold.
         let at_stop = frames.at("Ego", 2.0).speed;
         let end = frames.at("Ego", 5.0);
         assert!((end.speed - at_stop).abs() < 1e-9, "{name}: {end:?}");
-        if let Some(v) = speed {
+        assert!(
+            (end.y - frames.at("Ego", 2.05).y).abs() < 1e-9,
+            "{name}: {end:?}"
+        );
+        if let Some((v, x)) = expected {
             assert!((at_stop - v).abs() < 1e-9, "{name}: {at_stop}");
-            assert!((end.x - 117.625).abs() < 1e-9, "{name}: {end:?}");
+            assert!((end.x - x).abs() < 1e-9, "{name}: {end:?}");
         }
     }
 }

@@ -139,6 +139,12 @@ pub(crate) fn step_lateral(
     if world.entity(actor).track.is_none() {
         return ActionStatus::Ended;
     }
+    // A reference that left the scenario (DeleteEntityAction) has no place to keep a distance
+    // to: the action stops where the actor is (as the longitudinal one does).
+    if !world.entity(s.reference).placed {
+        abandon(world, actor);
+        return ActionStatus::Stopped;
+    }
     let Some(clearance) = s.gauge.clearance(world, actor, s.reference, s.toward) else {
         return ActionStatus::Running;
     };

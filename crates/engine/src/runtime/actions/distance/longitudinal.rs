@@ -139,6 +139,11 @@ pub(crate) fn step_longitudinal(
     s: &mut LongitudinalState,
     dt: f64,
 ) -> ActionStatus {
+    // A reference that left the scenario (DeleteEntityAction) has no place to keep a distance
+    // to: the action stops and the actor keeps its speed (as SpeedAction does, speed.rs).
+    if !world.entity(s.reference).placed {
+        return ActionStatus::Stopped;
+    }
     let Some(clearance) = s.gauge.clearance(world, actor, s.reference, s.toward) else {
         // No measurement now (e.g. off the roads in a road frame): hold the speed.
         return ActionStatus::Running;
