@@ -277,11 +277,12 @@ fn a_name_declared_twice_in_one_block_warns_and_the_last_wins() {
     assert_eq!(n, 2);
 }
 
-/// 1.0's `alongRoute="true"` (distance along the road) reads as the 1.3 road-longitudinal
-/// measure; esmini's cut-in_sumo.xosc line 148:
+/// 1.0's `alongRoute="true"` ("routing is taken into account") names the coordinate system
+/// only: it reads as the 1.3 `coordinateSystem="road"`, and `relativeDistanceType` stays
+/// unset, i.e. its 1.3 default `euclidianDistance`; esmini's cut-in_sumo.xosc line 148:
 /// `<TimeHeadwayCondition alongRoute="true" entityRef="Target1" freespace="true" …/>`.
 #[test]
-fn along_route_true_reads_as_road_longitudinal() {
+fn along_route_true_reads_as_the_road_coordinate_system() {
     let path = Path::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/../../../shared/corpus/esmini/xosc/cut-in_sumo.xosc"
@@ -310,10 +311,7 @@ fn along_route_true_reads_as_road_longitudinal() {
         measure.coordinate_system,
         Some(scenario::CoordinateSystem::Road)
     );
-    assert_eq!(
-        measure.relative_distance_type,
-        Some(RelativeDistanceType::Longitudinal)
-    );
+    assert_eq!(measure.relative_distance_type, None);
     assert!(measure.freespace);
     let w = s
         .warnings
@@ -322,7 +320,7 @@ fn along_route_true_reads_as_road_longitudinal() {
         .unwrap();
     assert_eq!(
         w.message,
-        "TimeHeadwayCondition@alongRoute=\"true\" is deprecated, read as coordinateSystem=\"road\" relativeDistanceType=\"longitudinal\""
+        "TimeHeadwayCondition@alongRoute=\"true\" is deprecated, read as coordinateSystem=\"road\" (relativeDistanceType keeps its default)"
     );
     assert_eq!(w.pos.line, 148);
 }

@@ -6,8 +6,7 @@
 use crate::error::{ErrorKind, Result};
 use crate::model::{
     ByValueCondition, CollisionTarget, Condition, ConditionGroup, ConditionKind, CoordinateSystem,
-    DistanceMeasure, EntityCondition, RelativeDistanceType, TimeToCollisionTarget, Trigger,
-    TriggeringEntities,
+    DistanceMeasure, EntityCondition, TimeToCollisionTarget, Trigger, TriggeringEntities,
 };
 use crate::reader::context::{Ctx, Node};
 use crate::reader::positions::read_position_child;
@@ -84,10 +83,13 @@ fn read_condition<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Condition> {
 /// Reads the measurement attributes shared by the distance-based conditions.
 ///
 /// The deprecated `alongRoute` (1.0) meant "true: along the road, routing taken into
-/// account; false: straight-line distance". Where the 1.1 attributes are absent,
-/// `alongRoute="true"` reads as `coordinateSystem="road"` with
-/// `relativeDistanceType="longitudinal"`, and `false` as the 1.3 defaults (entity frame,
-/// euclidian distance), with a warning either way.
+/// account; false: straight-line distance". It speaks of the coordinate system only, so where
+/// the 1.1 attributes are absent `alongRoute="true"` reads as `coordinateSystem="road"` with
+/// `relativeDistanceType` left at its 1.3 default (`euclidianDistance`: √(ds² + dt²) in road
+/// coordinates), and `false` as the 1.3 defaults (entity frame, euclidian distance), with a
+/// warning either way. (An earlier reading also set `longitudinal`, which the attribute does
+/// not say; esmini's cut-in_external reference measures the headway of two cars in adjacent
+/// lanes with the lateral part included.)
 fn read_distance_measure<'a>(ctx: &mut Ctx<'a>, c: Node<'a>) -> Result<DistanceMeasure> {
     let mut measure = DistanceMeasure {
         freespace: ctx.req(c, "freespace")?,
@@ -104,8 +106,7 @@ fn read_distance_measure<'a>(ctx: &mut Ctx<'a>, c: Node<'a>) -> Result<DistanceM
         "ignored: coordinateSystem/relativeDistanceType are given"
     } else if along_route {
         measure.coordinate_system = Some(CoordinateSystem::Road);
-        measure.relative_distance_type = Some(RelativeDistanceType::Longitudinal);
-        "read as coordinateSystem=\"road\" relativeDistanceType=\"longitudinal\""
+        "read as coordinateSystem=\"road\" (relativeDistanceType keeps its default)"
     } else {
         "read as the default straight-line distance"
     };
