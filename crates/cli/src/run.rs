@@ -86,10 +86,12 @@ fn create(path: &PathBuf) -> anyhow::Result<BufWriter<File>> {
     Ok(BufWriter::new(file))
 }
 
-/// Event sink that forwards to an optional writer and counts records.
+/// Event sink that forwards to an optional writer, counts records and prints errors.
 struct Events {
     out: Option<JsonlWriter<BufWriter<File>>>,
     count: usize,
+    /// The last error printed, so that a run failing on it does not print it twice.
+    last_error: Option<String>,
 }
 
 impl EventSink for Events {
@@ -97,6 +99,7 @@ impl EventSink for Events {
         self.count += 1;
         if let EventRecord::Error { message, .. } = record {
             eprintln!("error: {message}");
+            self.last_error = Some(message.clone());
         }
         self.out.as_mut().map_or(Ok(()), |o| o.event(record))
     }
@@ -140,6 +143,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
             .transpose()?
             .map(JsonlWriter::new),
         count: 0,
+        last_error: None,
     };
     let end = config.end_time();
     let bar = (!args.quiet && std::io::stderr().is_terminal()).then(|| {
@@ -151,13 +155,22 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         bar
     });
     let reason = loop {
-        let step = engine.step(&mut frames, &mut events).with_context(|| {
-            format!(
-                "run of {} failed at t = {:.3} s",
-                args.scenario.display(),
-                engine.time()
-            )
-        })?;
+        let step = match engine.step(&mut frames, &mut events) {
+            Ok(step) => step,
+            Err(e) => {
+                let failed = format!(
+                    "run of {} failed at t = {:.3} s",
+                    args.scenario.display(),
+                    engine.time()
+                );
+                // An action's error was printed as the event log received it: name it once.
+                return Err(if events.last_error.as_deref() == Some(&e.to_string()) {
+                    anyhow::anyhow!("{failed} (the error above)")
+                } else {
+                    anyhow::Error::new(e).context(failed)
+                });
+            }
+        };
         if let Some(bar) = &bar {
             if engine.steps() % 20 == 0 {
                 bar.set_position((engine.time() * 1000.0) as u64);

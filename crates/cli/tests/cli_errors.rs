@@ -140,7 +140,7 @@ fn run_failing_half_way_names_the_element_and_keeps_the_frames() {
     let scenario = fixture("teleport_s_beyond_road.xosc");
     let csv = dir.join("out.csv");
     let out = oscsim(&["run", text(&scenario), "--csv", text(&csv)]);
-    assert_fails(
+    let stderr = assert_fails(
         &out,
         &[
             "failed at t = 1.000 s",
@@ -148,6 +148,8 @@ fn run_failing_half_way_names_the_element_and_keeps_the_frames() {
             &format!("{}:57:31", scenario.display()),
         ],
     );
+    // The action's error is printed once (as the event log gets it), the failure refers to it.
+    assert_eq!(stderr.matches("found 600").count(), 1, "{stderr}");
     let written = std::fs::read_to_string(&csv).expect("the CSV exists");
     assert_eq!(written.lines().count(), 1 + 21, "{written}");
     assert!(written

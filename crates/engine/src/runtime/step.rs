@@ -293,7 +293,8 @@ impl Engine {
         self.counters.output += clock.elapsed();
 
         let end = self.config.end_time();
-        if time >= end - 1e-9 {
+        // Within a millionth of a step of the end: round-off of steps · dt, at any dt.
+        if time >= end - dt * 1e-6 {
             self.stopped = Some(match self.config.duration {
                 Some(d) if d <= self.config.max_time => StopReason::Duration,
                 _ => StopReason::TimeCap,

@@ -1,0 +1,25 @@
+//! When a run with `duration` ends: at the first step whose time reaches it, whatever the step
+//! length (runtime/step.rs: a tolerance of a millionth of a step for the round-off of
+//! steps · dt).
+
+mod runtime_support;
+
+use engine::{EngineConfig, StopReason};
+use runtime_support::{file, run_with};
+
+/// duration / dt steps: 1 s at 0.05 s is 20 steps; 0.3 s at 0.1 s is 3 (3 · 0.1 =
+/// 0.30000000000000004, past 0.3 by round-off only); 5e-10 s at 1e-10 s is 5 (a fixed 1e-9 s
+/// tolerance stopped this run after its first step).
+#[test]
+fn duration_ends_the_run_at_its_step_for_any_step_length() {
+    for (dt, duration, steps) in [(0.05, 1.0, 20), (0.1, 0.3, 3), (1e-10, 5e-10, 5)] {
+        let config = EngineConfig {
+            dt,
+            duration: Some(duration),
+            ..EngineConfig::default()
+        };
+        let (engine, _, _) = run_with(&file("speed_linear.xosc"), &[], config);
+        assert_eq!(engine.steps(), steps, "dt {dt}, duration {duration}");
+        assert_eq!(engine.stop_reason(), Some(StopReason::Duration));
+    }
+}
