@@ -1,6 +1,7 @@
 //! `oscsim`: run OpenSCENARIO scenarios on OpenDRIVE road networks, headless and deterministic.
 //!
-//! Exit status: 0 on success, 1 when the input is invalid or a run fails, 2 on a usage error.
+//! Exit status: 0 on success, 1 when the input is invalid or a run fails (or completes but logs
+//! runtime errors), 2 on a usage error.
 
 mod osi_sink;
 mod road;
@@ -14,7 +15,8 @@ use clap::{Parser, Subcommand};
 /// Command-line arguments of `oscsim`.
 #[derive(Parser, Debug)]
 #[command(name = "oscsim", version, about, long_about = None,
-    after_help = "Exit status: 0 success, 1 invalid input or failed run, 2 usage error.")]
+    after_help = "Exit status: 0 success, 1 invalid input or failed run (or runtime errors \
+                  logged), 2 usage error.")]
 struct Cli {
     #[command(subcommand)]
     command: Command,

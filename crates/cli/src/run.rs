@@ -92,6 +92,9 @@ struct Events {
     count: usize,
     /// The last error printed, so that a run failing on it does not print it twice.
     last_error: Option<String>,
+    /// Errors logged by a run that went on (a route that could not be planned, a trajectory
+    /// that could not be built, a condition that could not be evaluated).
+    errors: usize,
 }
 
 impl EventSink for Events {
@@ -100,6 +103,7 @@ impl EventSink for Events {
         if let EventRecord::Error { message, .. } = record {
             eprintln!("error: {message}");
             self.last_error = Some(message.clone());
+            self.errors += 1;
         }
         self.out.as_mut().map_or(Ok(()), |o| o.event(record))
     }
@@ -144,6 +148,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
             .map(JsonlWriter::new),
         count: 0,
         last_error: None,
+        errors: 0,
     };
     let end = config.end_time();
     let bar = (!args.quiet && std::io::stderr().is_terminal()).then(|| {
@@ -197,5 +202,13 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         wall.elapsed().as_secs_f64(),
         reason
     );
+    if events.errors > 0 {
+        // The outputs are complete, but the scenario did not run as written: a failed run.
+        eprintln!(
+            "error: the run logged {} error(s) (above, and in the event log); exit status 1",
+            events.errors
+        );
+        return Ok(ExitCode::from(1));
+    }
     Ok(ExitCode::SUCCESS)
 }

@@ -157,3 +157,39 @@ fn run_failing_half_way_names_the_element_and_keeps_the_frames() {
         .last()
         .is_some_and(|l| l.starts_with("1.000,")));
 }
+
+/// A run that goes on past a runtime error (a route whose waypoints are not connected:
+/// engine test routing_drive::unconnected_waypoints_are_reported_and_the_entity_drives_on)
+/// writes its complete outputs but exits with status 1, naming the error and its place.
+#[test]
+fn run_that_logs_a_runtime_error_completes_and_exits_with_one() {
+    let dir = scratch("logged_error");
+    let scenario = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../engine/tests/files/routing/two_junctions.xosc"
+    ));
+    let events = dir.join("events.jsonl");
+    let out = oscsim(&[
+        "run",
+        text(&scenario),
+        "--param",
+        "ToRoad=1",
+        "--param",
+        "ToS=5",
+        "--events",
+        text(&events),
+    ]);
+    let stderr = assert_fails(
+        &out,
+        &[
+            "expected a path through the road network",
+            ":65:71",
+            "logged 1 error",
+        ],
+    );
+    assert_eq!(stderr.matches("expected a path").count(), 1, "{stderr}");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("stopped because"), "{stdout}");
+    let log = std::fs::read_to_string(&events).expect("the event log");
+    assert_eq!(log.matches("\"kind\":\"error\"").count(), 1, "{log}");
+}
