@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use engine::output::EventRecord;
 use engine::storyboard::Transition;
 use engine::{Engine, EngineConfig};
-use runtime_support::corpus;
+use runtime_support::{corpus, esmini_reference_events, first_transition};
 use scenario::LightMode;
 
 /// The first `entity` record of Car1 with `change` (time, element).
@@ -78,19 +78,9 @@ fn transition_time(events: &[EventRecord], element: &str, transition: Transition
     })
 }
 
-/// The time of `element`'s `transition` ("start" or "end") in esmini's reference log of
-/// light_state (lines `TIME NAME from -> startTransition -> to`).
-fn reference_time(element: &str, transition: &str) -> f64 {
-    let path = corpus("reference/esmini/light_state.events.txt");
-    let text = std::fs::read_to_string(&path).expect("reference log");
-    let wanted = format!("{transition}Transition");
-    text.lines()
-        .find_map(|line| {
-            let words: Vec<&str> = line.split_whitespace().collect();
-            let n = words.len();
-            let hit = n >= 7 && words[1..n - 5].join(" ") == element && words[n - 3] == wanted;
-            hit.then(|| words[0].parse().expect("a time"))
-        })
+/// The time of `element`'s first `transition` in esmini's reference log of light_state.
+fn reference_time(element: &str, transition: Transition) -> f64 {
+    first_transition(&esmini_reference_events("light_state"), element, transition)
         .unwrap_or_else(|| panic!("{element} {transition} not in the reference"))
 }
 
@@ -116,7 +106,7 @@ fn light_state_action_ends_after_its_transition_time() {
     for action in ["actionLowBeamOn", "actionDRLOn", "actionHighBeamOn"] {
         let start = ours(action, Transition::Start);
         assert!(
-            (start - reference_time(action, "start")).abs() < 1e-6,
+            (start - reference_time(action, Transition::Start)).abs() < 1e-6,
             "{action} start"
         );
         let end = ours(action, Transition::End);
@@ -125,7 +115,7 @@ fn light_state_action_ends_after_its_transition_time() {
             "{action}: {start} → {end}"
         );
         assert!(
-            (reference_time(action, "end") - end - 0.05).abs() < 1e-6,
+            (reference_time(action, Transition::End) - end - 0.05).abs() < 1e-6,
             "{action} end"
         );
     }
@@ -134,14 +124,17 @@ fn light_state_action_ends_after_its_transition_time() {
             find(event, Transition::Stop).is_none(),
             "{event} was stopped"
         );
-        assert!((ours(event, Transition::End) - reference_time(event, "end") + 0.05).abs() < 1e-6);
+        assert!(
+            (ours(event, Transition::End) - reference_time(event, Transition::End) + 0.05).abs()
+                < 1e-6
+        );
     }
     let lpi = ours("actionStartLPI", Transition::Start);
     assert!((ours("actionStartLPI", Transition::End) - lpi).abs() < 1e-9);
     let many = ours("eventManyLightsOn", Transition::Start);
     assert!((many - ours("eventHighBeamOn", Transition::End) - 1.05).abs() < 1e-9);
     assert!((many - 37.15).abs() < 1e-9, "{many}");
-    assert!((reference_time("eventManyLightsOn", "start") - many - 0.05).abs() < 1e-6);
+    assert!((reference_time("eventManyLightsOn", Transition::Start) - many - 0.05).abs() < 1e-6);
 }
 
 /// OpenSCENARIO 1.3 Annex A ("Action ends") for AnimationAction, on animation.xosc (dt 0.05 s),

@@ -8,7 +8,7 @@ mod runtime_support;
 use std::path::{Path, PathBuf};
 
 use engine::{Engine, EngineConfig};
-use runtime_support::{corpus, Recorder};
+use runtime_support::{corpus, esmini_reference, Recorder};
 
 fn file(name: &str) -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
@@ -149,24 +149,6 @@ fn trailer_example0_connects_pulls_and_disconnects() {
     );
 }
 
-/// One row of an esmini reference CSV: (time, name, x, y).
-fn reference(name: &str) -> Vec<(f64, String, f64, f64)> {
-    let text = std::fs::read_to_string(corpus(&format!("reference/esmini/{name}.csv")))
-        .expect("reference present");
-    text.lines()
-        .skip(1)
-        .filter_map(|l| {
-            let f: Vec<&str> = l.split(',').map(str::trim).collect();
-            Some((
-                f[0].parse().ok()?,
-                f[2].to_owned(),
-                f[3].parse().ok()?,
-                f[4].parse().ok()?,
-            ))
-        })
-        .collect()
-}
-
 /// esmini's `trailers` run: the inline catalog trailers get esmini's names (`Ego+`, `…++`) and
 /// start where esmini puts them (Ego at x = 401, heading π; Ego+ 1.5 + 2.95 = 4.45 m behind,
 /// x = 405.45). Over 15 s the trailers of the tows that follow the same path as in esmini
@@ -196,12 +178,13 @@ fn esmini_trailers_scenario_matches_the_reference_within_half_a_metre() {
         "Truck_trailer2",
     ];
     let mut compared = 0;
-    for (time, name, x, y) in reference("trailers") {
-        if !names.contains(&name.as_str()) {
+    for esmini in esmini_reference("trailers") {
+        let (time, name) = (esmini.time, esmini.name.as_str());
+        if !names.contains(&name) {
             continue;
         }
-        let ours = frames.at(&name, time);
-        let d = (ours.x - x).hypot(ours.y - y);
+        let ours = frames.at(name, time);
+        let d = (ours.x - esmini.x).hypot(ours.y - esmini.y);
         assert!(d < 0.5, "{name} at {time}: {d} m from esmini");
         compared += 1;
     }

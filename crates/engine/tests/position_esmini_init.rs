@@ -10,12 +10,14 @@
 //! resolution.
 
 mod condition_support;
+mod runtime_support;
 
 use std::collections::HashMap;
 use std::path::Path;
 
 use condition_support::FakeWorld;
 use engine::position::resolve;
+use runtime_support::esmini_reference;
 use scenario::{ActionKind, PrivateAction, Scenario};
 
 /// 1 cm / 10 mrad. The CSV rounds to 1 mm and 1 mrad, and on the roads built of paramPoly3
@@ -66,24 +68,13 @@ fn corpus(rel: &str) -> String {
     )
 }
 
-/// name → (x, y, z, h, p, r) at t = 0 in a reference CSV.
-fn reference_at_zero(path: &str) -> HashMap<String, [f64; 6]> {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').map(str::trim).collect();
-    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    let (t, n) = (col("time"), col("name"));
-    let cols = ["x", "y", "z", "h", "p", "r"].map(col);
-    let mut out = HashMap::new();
-    for line in lines {
-        let f: Vec<&str> = line.split(',').map(str::trim).collect();
-        if f[t].parse::<f64>().unwrap() != 0.0 {
-            break;
-        }
-        let v = |i: usize| f[i].parse::<f64>().unwrap();
-        out.insert(f[n].to_string(), cols.map(v));
-    }
-    out
+/// name → (x, y, z, h, p, r) at t = 0 in the reference CSV of `scenario`.
+fn reference_at_zero(scenario: &str) -> HashMap<String, [f64; 6]> {
+    esmini_reference(scenario)
+        .into_iter()
+        .take_while(|r| r.time == 0.0)
+        .map(|r| (r.name, [r.x, r.y, r.z, r.h, r.p, r.r]))
+        .collect()
 }
 
 #[test]
@@ -107,7 +98,7 @@ fn init_teleports_agree_with_esmini_at_time_zero() {
             continue;
         };
         let network = opendrive::RoadNetwork::from_file(xodr).unwrap();
-        let reference = reference_at_zero(&corpus(&format!("reference/esmini/{name}.csv")));
+        let reference = reference_at_zero(&name);
         let mut world = FakeWorld::new(network);
         for private in &scenario.storyboard.init.privates {
             for action in &private.actions {

@@ -5,7 +5,7 @@
 mod runtime_support;
 
 use engine::EngineConfig;
-use runtime_support::{corpus, run_with};
+use runtime_support::{corpus, esmini_reference, run_with};
 
 /// lane_change_simple.xosc, first lap: Ego accelerates under the End Of Road speed action
 /// (started 35.65 s) while the Lane change action (started 40.75 s, sinusoidal, 4 s) moves it
@@ -21,15 +21,9 @@ fn running_actions_act_in_document_order() {
         ..EngineConfig::default()
     };
     let (_, frames, _) = run_with(&corpus("esmini/xosc/lane_change_simple.xosc"), &[], config);
-    let reference = std::fs::read_to_string(corpus("reference/esmini/lane_change_simple.csv"))
-        .expect("the esmini reference");
     let mut rows = 0;
-    for line in reference.lines().skip(1) {
-        let f: Vec<f64> = line
-            .split(',')
-            .map(|v| v.trim().parse().unwrap_or(f64::NAN))
-            .collect();
-        let (t, x, y) = (f[0], f[3], f[4]);
+    for row in esmini_reference("lane_change_simple") {
+        let (t, x, y) = (row.time, row.x, row.y);
         if !(35.0..=60.0).contains(&t) {
             continue;
         }

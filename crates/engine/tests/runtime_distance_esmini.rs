@@ -8,41 +8,12 @@ mod runtime_support;
 
 use engine::storyboard::Transition;
 use engine::{EngineConfig, EventRecord};
-use runtime_support::{corpus, run_with, Recorder};
+use runtime_support::{
+    corpus, esmini_reference, esmini_reference_events, first_transition, run_with, Recorder, RefRow,
+};
 
 /// esmini writes positions and speeds to 1 mm and 1 mm/s.
 const ESMINI_ROUNDING: f64 = 1e-3;
-
-/// One reference row: time, name, x, y, lateral position t, speed.
-struct Row {
-    time: f64,
-    name: String,
-    x: f64,
-    y: f64,
-    t: f64,
-    speed: f64,
-}
-
-/// Every row of esmini's reference run of `scenario`.
-fn reference(scenario: &str) -> Vec<Row> {
-    let path = corpus(&format!("reference/esmini/{scenario}.csv"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
-    text.lines()
-        .skip(1)
-        .filter_map(|line| {
-            let f: Vec<&str> = line.split(',').map(str::trim).collect();
-            let num = |i: usize| f.get(i).and_then(|v| v.parse::<f64>().ok());
-            Some(Row {
-                time: num(0)?,
-                name: (*f.get(2)?).to_owned(),
-                x: num(3)?,
-                y: num(4)?,
-                t: num(12)?,
-                speed: num(14)?,
-            })
-        })
-        .collect()
-}
 
 /// Runs corpus scenario `scenario` (esmini/xosc) with the default settings.
 fn run(scenario: &str) -> (Recorder, Vec<EventRecord>) {
@@ -53,7 +24,7 @@ fn run(scenario: &str) -> (Recorder, Vec<EventRecord>) {
 
 /// The largest position (m) and speed (m/s) differences of `entity` from the reference over
 /// the reference rows oscsim also has.
-fn worst(frames: &Recorder, rows: &[Row], entity: &str) -> (f64, f64) {
+fn worst(frames: &Recorder, rows: &[RefRow], entity: &str) -> (f64, f64) {
     let mut worst = (0.0_f64, 0.0_f64);
     for r in rows.iter().filter(|r| r.name == entity) {
         let Some(o) = frames
@@ -82,16 +53,10 @@ fn ours(events: &[EventRecord], element: &str, transition: Transition) -> f64 {
         .unwrap_or_else(|| panic!("{element} has no {transition:?}"))
 }
 
-/// The time of the first `transition` ("start", "end") of `element` in esmini's log.
-fn esmini(scenario: &str, element: &str, transition: &str) -> f64 {
-    let path = corpus(&format!("reference/esmini/{scenario}.events.txt"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
-    let needle = format!(" {element} ");
-    let kind = format!("-> {transition}Transition ->");
-    text.lines()
-        .find(|l| l.contains(&needle) && l.contains(&kind))
-        .and_then(|l| l.split(' ').next()?.parse().ok())
-        .unwrap_or_else(|| panic!("{element}: no {transition} in {path:?}"))
+/// The time of the first `transition` of `element` in esmini's log of `scenario`.
+fn esmini(scenario: &str, element: &str, transition: Transition) -> f64 {
+    first_transition(&esmini_reference_events(scenario), element, transition)
+        .unwrap_or_else(|| panic!("{element}: no {transition} in {scenario}.events.txt"))
 }
 
 /// highway_merge: A2 keeps timeGap 1 s (freespace) behind A1, A3 1.5 s behind A2, both with
@@ -102,7 +67,7 @@ fn esmini(scenario: &str, element: &str, transition: &str) -> f64 {
 /// × maxDeceleration when closing up; the other pairing is 0.5 m off in highway_merge_advanced).
 #[test]
 fn highway_merge_time_gaps_agree_with_esmini() {
-    let rows = reference("highway_merge");
+    let rows = esmini_reference("highway_merge");
     let (frames, _) = run("highway_merge");
     for entity in ["A2", "A3"] {
         let (pos, speed) = worst(&frames, &rows, entity);
@@ -115,7 +80,7 @@ fn highway_merge_time_gaps_agree_with_esmini() {
 /// maxAcceleration 5, which it never needs), maxDeceleration 7.
 #[test]
 fn highway_merge_advanced_gap_closing_agrees_with_esmini() {
-    let rows = reference("highway_merge_advanced");
+    let rows = esmini_reference("highway_merge_advanced");
     let (frames, _) = run("highway_merge_advanced");
     let (pos, speed) = worst(&frames, &rows, "A3");
     assert!(pos < 0.01 && speed < 0.01, "A3: {pos} m, {speed} m/s");
@@ -133,7 +98,7 @@ fn highway_merge_advanced_gap_closing_agrees_with_esmini() {
 #[test]
 fn keep_lateral_distance_approaches_gradually_like_esmini() {
     let scenario = "keep_lateral_distance";
-    let rows = reference(scenario);
+    let rows = esmini_reference(scenario);
     let (frames, events) = run(scenario);
     for (time, want) in [(1.1, -3.925), (1.2, -4.125)] {
         let ours = frames.at("OverTaker", time).road.as_ref().map(|r| r.3);
@@ -150,7 +115,7 @@ fn keep_lateral_distance_approaches_gradually_like_esmini() {
     for element in ["LaneChange1Event", "LateralDistanceMaxSpeedAndAccEvent"] {
         let (o, e) = (
             ours(&events, element, Transition::Start),
-            esmini(scenario, element, "start"),
+            esmini(scenario, element, Transition::Start),
         );
         assert!((o - e).abs() < 1e-6, "{element}: {o} vs {e}");
     }
@@ -171,7 +136,7 @@ fn distance_test_non_continuous_end_within_a_step_of_esmini() {
     let at = |t: f64| frames.at("Ego", t).x - frames.at("Dummy", t).x - 3.97 - 1.12 - 4.0;
     assert!((at(16.75) - 0.1014).abs() < 1e-3 && (at(16.8) - 0.0941).abs() < 1e-3);
     let o = ours(&events, "NonContinuousDistEvent", Transition::End);
-    let e = esmini("distance_test", "NonContinuousDistEvent", "end");
+    let e = esmini("distance_test", "NonContinuousDistEvent", Transition::End);
     assert!(
         (o - 16.85).abs() < 1e-6 && (e - 16.8).abs() < 1e-6,
         "{o} vs {e}"

@@ -9,7 +9,9 @@ mod runtime_support;
 use approx::assert_abs_diff_eq;
 use engine::storyboard::Transition;
 use engine::{EngineConfig, EventRecord};
-use runtime_support::{corpus, run_with, Recorder};
+use runtime_support::{
+    corpus, esmini_reference, esmini_reference_events, run_with, Recorder, RefRow,
+};
 
 /// Tolerance for values that the runtime computes exactly up to rounding.
 const EXACT: f64 = 1e-9;
@@ -17,36 +19,11 @@ const EXACT: f64 = 1e-9;
 /// esmini writes positions to 1 mm.
 const ESMINI_ROUNDING: f64 = 1e-3;
 
-/// One row of a reference CSV (`time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,speed`).
-struct Reference {
-    time: f64,
-    x: f64,
-    y: f64,
-    offset: f64,
-    t: f64,
-    s: f64,
-}
-
 /// The reference rows of `entity` in scenario `name` with `from <= time < to`.
-fn reference(name: &str, entity: &str, from: f64, to: f64) -> Vec<Reference> {
-    let path = corpus(&format!("reference/esmini/{name}.csv"));
-    let csv = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
-    csv.lines()
-        .skip(1)
-        .filter_map(|line| {
-            let f: Vec<&str> = line.split(',').map(str::trim).collect();
-            let num = |i: usize| f.get(i).and_then(|v| v.parse::<f64>().ok());
-            (f.get(2) == Some(&entity)).then_some(())?;
-            Some(Reference {
-                time: num(0)?,
-                x: num(3)?,
-                y: num(4)?,
-                offset: num(11)?,
-                t: num(12)?,
-                s: num(13)?,
-            })
-        })
-        .filter(|r| (from..to).contains(&r.time))
+fn reference(name: &str, entity: &str, from: f64, to: f64) -> Vec<RefRow> {
+    esmini_reference(name)
+        .into_iter()
+        .filter(|r| r.name == entity && (from..to).contains(&r.time))
         .collect()
 }
 
@@ -59,14 +36,9 @@ fn assert_starts(events: &[EventRecord], scenario: &str, element: &str, want: (f
         }
         _ => None,
     });
-    let path = corpus(&format!("reference/esmini/{scenario}.events.txt"));
-    let log = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
-    let start = format!("{element} standbyState -> startTransition");
-    let esmini = log.lines().find_map(|l| {
-        let (time, rest) = l.split_once(' ')?;
-        rest.starts_with(&start)
-            .then(|| time.parse().ok())
-            .flatten()
+    let esmini = esmini_reference_events(scenario).into_iter().find_map(|e| {
+        (e.element == element && e.from == "standbyState" && e.transition == Transition::Start)
+            .then_some(e.time)
     });
     assert_abs_diff_eq!(ours.unwrap_or(f64::NAN), want.0, epsilon = EXACT);
     assert_abs_diff_eq!(esmini.unwrap_or(f64::NAN), want.1, epsilon = EXACT);

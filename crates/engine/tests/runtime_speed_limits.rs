@@ -15,7 +15,7 @@
 mod runtime_support;
 
 use engine::EngineConfig;
-use runtime_support::{corpus, run_with};
+use runtime_support::{corpus, esmini_reference, run_with};
 
 /// Dummy's speed follows the reference at every 0.1 s row (to the CSV's rounding), and over the
 /// first 2 s it gains exactly 5 m/s² · t.
@@ -32,20 +32,12 @@ fn distance_test_dummy_accelerates_at_its_performance_limit() {
             15.0 + 5.0 * t
         );
     }
-    let reference = std::fs::read_to_string(corpus("reference/esmini/distance_test.csv"))
-        .unwrap_or_else(|e| panic!("reference/esmini/distance_test.csv: {e}"));
     let mut compared = 0;
-    for line in reference.lines().skip(1) {
-        let cols: Vec<&str> = line.split(',').map(str::trim).collect();
-        if cols.get(2) != Some(&"Dummy") {
+    for esmini in esmini_reference("distance_test") {
+        if esmini.name != "Dummy" {
             continue;
         }
-        let (Some(Ok(time)), Some(Ok(speed))) = (
-            cols.first().map(|c| c.parse::<f64>()),
-            cols.last().map(|c| c.parse::<f64>()),
-        ) else {
-            continue;
-        };
+        let (time, speed) = (esmini.time, esmini.speed);
         let ours = frames.at("Dummy", time).speed;
         assert!(
             (ours - speed).abs() <= 5e-3,

@@ -15,8 +15,12 @@
 mod runtime_support;
 
 use approx::assert_abs_diff_eq;
+use engine::storyboard::Transition;
 use engine::{Engine, EngineConfig, EventRecord};
-use runtime_support::{corpus, end_time, file, run_with, Recorder};
+use runtime_support::{
+    corpus, end_time, esmini_reference, esmini_reference_events, file, first_transition, run_with,
+    Recorder,
+};
 
 /// Tolerance for speeds that are a few f64 operations from the closed form.
 const EXACT: f64 = 1e-9;
@@ -238,27 +242,15 @@ fn negative_entry_time_is_an_error_with_its_place() {
 fn speed_profile_corpus_speeds_match_the_esmini_reference() {
     let path = corpus("esmini/xosc/speed-profile.xosc");
     let (_, frames, events) = run_with(&path, &[], EngineConfig::default());
-    let log = std::fs::read_to_string(corpus("reference/esmini/speed-profile.events.txt"))
-        .unwrap_or_else(|e| panic!("reference/esmini/speed-profile.events.txt: {e}"));
+    let log = esmini_reference_events("speed-profile");
     for action in ["SpeedProfileAction1", "SpeedProfileAction2"] {
-        let esmini = log
-            .lines()
-            .find(|l| l.contains(&format!(" {action} ")) && l.contains("endTransition"))
-            .and_then(|l| l.split_whitespace().next()?.parse::<f64>().ok())
+        let esmini = first_transition(&log, action, Transition::End)
             .unwrap_or_else(|| panic!("no end of {action} in esmini's log"));
         assert_abs_diff_eq!(end_step(&events, action), esmini, epsilon = 1e-6);
     }
-    let reference = std::fs::read_to_string(corpus("reference/esmini/speed-profile.csv"))
-        .unwrap_or_else(|e| panic!("reference/esmini/speed-profile.csv: {e}"));
     let mut compared = 0;
-    for line in reference.lines().skip(1) {
-        let cols: Vec<&str> = line.split(',').map(str::trim).collect();
-        let (Some(time), Some(name), Some(speed)) = (cols.first(), cols.get(2), cols.last()) else {
-            continue;
-        };
-        let (Ok(time), Ok(speed)) = (time.parse::<f64>(), speed.parse::<f64>()) else {
-            continue;
-        };
+    for esmini in esmini_reference("speed-profile") {
+        let (time, name, speed) = (esmini.time, esmini.name.as_str(), esmini.speed);
         if time > 14.0 {
             continue;
         }

@@ -10,40 +10,11 @@
 
 mod runtime_support;
 
-use runtime_support::{corpus, Recorder};
+use runtime_support::{corpus, esmini_reference, Recorder};
 
 /// compare_run.py's default tolerances.
 const TOL_POS: f64 = 0.10;
 const TOL_SPEED: f64 = 0.10;
-
-/// One row of a reference CSV: time, name, x, y, speed.
-struct RefRow {
-    time: f64,
-    name: String,
-    x: f64,
-    y: f64,
-    speed: f64,
-}
-
-/// Reads esmini's CSV `time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,speed`.
-fn reference(name: &str) -> Vec<RefRow> {
-    let path = corpus(&format!("reference/esmini/{name}.csv"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
-    text.lines()
-        .skip(1)
-        .filter_map(|line| {
-            let f: Vec<&str> = line.split(',').map(str::trim).collect();
-            let num = |i: usize| f.get(i).and_then(|v| v.parse::<f64>().ok());
-            Some(RefRow {
-                time: num(0)?,
-                name: f.get(2)?.to_string(),
-                x: num(3)?,
-                y: num(4)?,
-                speed: num(14)?,
-            })
-        })
-        .collect()
-}
 
 /// Runs corpus scenario `rel` and compares `entities` with the reference `name` at every
 /// reference row.
@@ -51,7 +22,7 @@ fn compare(rel: &str, name: &str, entities: &[&str]) -> Recorder {
     // An absolute path replaces the test folder in `runtime_support::file`'s join.
     let path = corpus(rel);
     let (_, frames, _) = runtime_support::run(&path.to_string_lossy());
-    let rows = reference(name);
+    let rows = esmini_reference(name);
     let mut compared = 0;
     for r in rows.iter().filter(|r| entities.contains(&r.name.as_str())) {
         let Some(ours) = frames

@@ -11,13 +11,13 @@
 //! between them; positions at one moment therefore differ along the path (up to about 6 m
 //! here), but both start at 0 s and end at the last control point's 12.2 s.
 
+mod runtime_support;
 mod trajectory_support;
 
 use engine::trajectory::{build, TrajectoryClock};
 use opendrive::Pose;
-use trajectory_support::{
-    corpus_path, corpus_scenario, follow_trajectory_of, scenario_roads, Placed,
-};
+use runtime_support::esmini_reference;
+use trajectory_support::{corpus_scenario, follow_trajectory_of, scenario_roads, Placed};
 
 #[test]
 fn timed_nurbs_follows_esmini() {
@@ -35,19 +35,13 @@ fn timed_nurbs_follows_esmini() {
     let world = Placed::new(roads, "Target", start);
     let t = build(trajectory, &world, pos).unwrap();
     let clock = TrajectoryClock::new(&time_reference.expect("Timing"), 12.0, pos).unwrap();
-    let csv = std::fs::read_to_string(corpus_path("reference/esmini/trajectory-test.csv"))
-        // The reference is part of the corpus.
-        .expect("reference csv");
     let mut worst: f64 = 0.0;
     let mut rows = 0;
-    for line in csv.lines().skip(1) {
-        let f: Vec<&str> = line.split(',').collect();
-        let num = |i: usize| f[i].parse::<f64>().unwrap();
-        let time = num(0);
-        if f[2] != "Target" || !(12.05..24.1).contains(&time) {
+    for row in esmini_reference("trajectory-test") {
+        if row.name != "Target" || !(12.05..24.1).contains(&row.time) {
             continue;
         }
-        worst = worst.max(t.closest(num(3), num(4)).distance);
+        worst = worst.max(t.closest(row.x, row.y).distance);
         rows += 1;
     }
     assert_eq!(rows, 120);

@@ -5,11 +5,13 @@
 //! every sampled position lies on the polyline, and the distance along it grows with the
 //! car's speed.
 
+mod runtime_support;
 mod trajectory_support;
 
 use engine::trajectory::build;
+use runtime_support::esmini_reference;
 use scenario::{ActionKind, PrivateAction, RoutingAction};
-use trajectory_support::{corpus_path, corpus_scenario, straight};
+use trajectory_support::{corpus_scenario, straight};
 
 #[test]
 fn esmini_drives_on_the_polyline() {
@@ -34,22 +36,15 @@ fn esmini_drives_on_the_polyline() {
     // First vertex (50.00, −1.53), last (160.94, 1.53).
     let (a, b) = (t.eval(0.0), t.eval(t.length()));
     assert!((a.x - 50.0).abs() < 1e-12 && (b.x - 160.94).abs() < 1e-12);
-    let csv = std::fs::read_to_string(corpus_path(
-        "reference/esmini/lane-change_trajectory_wp.csv",
-    ))
-    // The reference is part of the corpus.
-    .expect("reference csv");
     let mut worst: f64 = 0.0;
     let mut rows = 0;
     let mut last_s = -1.0;
-    for line in csv.lines().skip(1) {
-        let f: Vec<&str> = line.split(',').collect();
-        let num = |i: usize| f[i].parse::<f64>().unwrap();
-        let time = num(0);
+    for row in esmini_reference("lane-change_trajectory_wp") {
+        let time = row.time;
         if time > 7.95 {
             break;
         }
-        let c = t.closest(num(3), num(4));
+        let c = t.closest(row.x, row.y);
         worst = worst.max(c.distance);
         assert!(c.point.s >= last_s, "backwards at {time} s");
         last_s = c.point.s;

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use engine::output::EventRecord;
 use engine::storyboard::Transition;
 use engine::{Engine, EngineConfig};
-use runtime_support::{corpus, Recorder};
+use runtime_support::{corpus, esmini_reference, Recorder};
 
 /// Positions and speeds here are sums of a few exact steps: 1e-6 m, m/s, rad.
 const TOL: f64 = 1e-6;
@@ -207,15 +207,9 @@ fn follow_mode_tracks_the_speed_continuous_reading_of_the_times() {
 #[test]
 fn unplaced_cyclist_starts_on_its_trajectory_and_stops_on_the_last_vertex() {
     let (frames, _) = run(&corpus("esmini/xosc/bicycle_fall_over.xosc"), 6.0);
-    let reference = std::fs::read_to_string(corpus("reference/esmini/bicycle_fall_over.csv"))
-        .expect("reference");
     let mut rows = 0;
-    for line in reference.lines().skip(1) {
-        let f: Vec<f64> = line
-            .split(',')
-            .map(|v| v.trim().parse().unwrap_or(f64::NAN))
-            .collect();
-        let (t, x, speed) = (f[0], f[3], f[14]);
+    for row in esmini_reference("bicycle_fall_over") {
+        let (t, x, speed) = (row.time, row.x, row.speed);
         if t > 6.0 + 1e-9 {
             break;
         }

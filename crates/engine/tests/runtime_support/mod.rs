@@ -1,10 +1,20 @@
-//! Shared helpers of the runtime tests: paths, a frame recorder, a run to the end.
+//! Shared helpers of the runtime tests: paths, a frame recorder, a run to the end, and the
+//! readers of esmini's reference runs (`esmini_reference`).
 #![allow(dead_code)]
+
+mod esmini_reference;
 
 use std::path::PathBuf;
 
 use engine::output::{EventRecord, Frame, FrameSink};
 use engine::{Engine, EngineConfig};
+
+// Each test binary uses a different part, as with `dead_code` above.
+#[allow(unused_imports)]
+pub use esmini_reference::{
+    esmini_reference, esmini_reference_events, first_transition, parse_reference,
+    parse_reference_events, RefEvent, RefRow,
+};
 
 /// A test scenario in `tests/files/runtime`.
 pub fn file(name: &str) -> PathBuf {
