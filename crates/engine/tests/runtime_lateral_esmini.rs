@@ -82,7 +82,8 @@ fn alks_cut_out_lane_change_is_esmini_s_one_step_earlier() {
 /// cut-in_sloppy: OverTaker's sinusoidal cut-in over 3 s (from 7.25 s in both runs) agrees
 /// with esmini to 3 mm up to the brake. The 1.8 m the comparison reports come after it:
 /// OvertakerBrakeEvent starts on Ego's TimeHeadwayCondition to OverTaker, greaterThan 2.7 s,
-/// alongRoute="true", which oscsim measures along the road (§7.6.3; see cut-in_external's note)
+/// alongRoute="true", which oscsim measures in road coordinates (√(ds² + dt²); the cars share a
+/// lane by then, so along the road; see cut-in_sloppy's note in docs/conformance-notes.tsv)
 /// and esmini straight. At 17.90 s Ego (30 m/s) is 81.15 m of road behind OverTaker, 2.705 s,
 /// but only 80.97 m away in a straight line, 2.699 s, so oscsim brakes one step (0.05 s)
 /// before esmini. OverTaker then brakes at 4 m/s² from 36 m/s, 0.2 m/s slower than esmini's
