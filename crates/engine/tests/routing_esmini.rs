@@ -8,24 +8,16 @@
 mod trajectory_support;
 
 use engine::routing::{plan_route, RoutingOptions};
-use scenario::{ActionKind, PrivateAction, RoutingAction};
-use trajectory_support::{corpus_scenario, scenario_roads, Roads};
+use scenario::RoutingAction;
+use trajectory_support::{corpus_scenario, init_routing_actions, scenario_roads, Roads};
 
 #[test]
 fn complex_catalog_route_follows_esmini() {
     let sc = corpus_scenario("esmini/xosc/routing-test.xosc");
     let roads = Roads(scenario_roads(&sc));
-    let (route, pos) = sc
-        .storyboard
-        .init
-        .privates
-        .iter()
-        .flat_map(|p| &p.actions)
-        .find_map(|a| match &a.kind {
-            ActionKind::Private(PrivateAction::Routing(r)) => match r.as_ref() {
-                RoutingAction::AssignRoute(route) => Some((route.clone(), a.pos.clone())),
-                _ => None,
-            },
+    let (route, pos) = init_routing_actions(&sc)
+        .find_map(|(r, pos)| match r {
+            RoutingAction::AssignRoute(route) => Some((route.clone(), pos.clone())),
             _ => None,
         })
         .expect("an AssignRouteAction in Init");

@@ -10,25 +10,17 @@ mod trajectory_support;
 
 use engine::trajectory::build;
 use runtime_support::esmini_reference;
-use scenario::{ActionKind, PrivateAction, RoutingAction};
-use trajectory_support::{corpus_scenario, straight};
+use scenario::RoutingAction;
+use trajectory_support::{corpus_scenario, init_routing_actions, straight};
 
 #[test]
 fn esmini_drives_on_the_polyline() {
     let sc = corpus_scenario("esmini/xosc/lane-change_trajectory_wp.xosc");
-    let (trajectory, pos) = sc
-        .storyboard
-        .init
-        .privates
-        .iter()
-        .flat_map(|p| &p.actions)
-        .find_map(|a| match &a.kind {
-            ActionKind::Private(PrivateAction::Routing(r)) => match r.as_ref() {
-                RoutingAction::FollowTrajectory { trajectory, .. } => {
-                    Some((trajectory.clone(), a.pos.clone()))
-                }
-                _ => None,
-            },
+    let (trajectory, pos) = init_routing_actions(&sc)
+        .find_map(|(r, pos)| match r {
+            RoutingAction::FollowTrajectory { trajectory, .. } => {
+                Some((trajectory.clone(), pos.clone()))
+            }
             _ => None,
         })
         .expect("a FollowTrajectoryAction in Init");

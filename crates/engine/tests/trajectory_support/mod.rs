@@ -252,6 +252,23 @@ pub fn scenario_roads(sc: &scenario::Scenario) -> RoadNetwork {
     RoadNetwork::from_file(logic).expect("road network loads")
 }
 
+/// The RoutingActions of the scenario's Init section, each with its action's source position.
+pub fn init_routing_actions(
+    sc: &scenario::Scenario,
+) -> impl Iterator<Item = (&scenario::RoutingAction, &SourcePos)> {
+    sc.storyboard
+        .init
+        .privates
+        .iter()
+        .flat_map(|p| &p.actions)
+        .filter_map(|a| match &a.kind {
+            scenario::ActionKind::Private(scenario::PrivateAction::Routing(r)) => {
+                Some((r.as_ref(), &a.pos))
+            }
+            _ => None,
+        })
+}
+
 /// The FollowTrajectoryAction of the story event `event`: its trajectory, time reference and
 /// the action's source position.
 pub fn follow_trajectory_of<'a>(
