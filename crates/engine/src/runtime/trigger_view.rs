@@ -37,25 +37,13 @@
 use super::entity::Entity;
 use super::world::World;
 
-/// The entities at the start of the step's trigger evaluation.
-#[derive(Debug)]
-struct Frozen {
-    entities: Vec<Entity>,
-}
-
-impl Frozen {
-    fn swap(&mut self, world: &mut World) {
-        std::mem::swap(&mut self.entities, &mut world.entities);
-    }
-}
-
 /// The state conditions read during one step's trigger evaluation; make a new one per step.
 #[derive(Debug, Default)]
 pub(crate) struct TriggerView {
     /// A condition has been evaluated in this step.
     begun: bool,
-    /// The copy taken before the first change after `begun`.
-    frozen: Option<Frozen>,
+    /// The entity store as it was before the first change after `begun`.
+    frozen: Option<Vec<Entity>>,
 }
 
 impl TriggerView {
@@ -63,9 +51,7 @@ impl TriggerView {
     /// still see, if a condition has been evaluated in this step and nothing was kept yet.
     pub(crate) fn before_change(&mut self, world: &World) {
         if self.begun && self.frozen.is_none() {
-            self.frozen = Some(Frozen {
-                entities: world.entities.clone(),
-            });
+            self.frozen = Some(world.entities.clone());
         }
     }
 
@@ -77,13 +63,12 @@ impl TriggerView {
         };
         // Entities added to the store during the walk (spawned objects) keep their ids, which
         // index the store: the copy gets them as they are now, so every id stays valid.
-        if frozen.entities.len() < world.entities.len() {
-            let added = world.entities[frozen.entities.len()..].to_vec();
-            frozen.entities.extend(added);
+        if frozen.len() < world.entities.len() {
+            frozen.extend_from_slice(&world.entities[frozen.len()..]);
         }
-        frozen.swap(world);
+        std::mem::swap(frozen, &mut world.entities);
         let result = f(world);
-        frozen.swap(world);
+        std::mem::swap(frozen, &mut world.entities);
         result
     }
 }
