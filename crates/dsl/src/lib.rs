@@ -1,0 +1,11 @@
+//! The OpenSCENARIO DSL 2.x front end (ASAM OpenSCENARIO DSL 2.1, compatible with 2.0).
+//!
+//! | module | implements |
+//! | --- | --- |
+//! | `syntax` | lexer, parser and lossless concrete syntax tree with spans; canonical formatting (language reference: lexical structure, grammar) |
+//! | `semantics` | name resolution, types and physical units, the standard library, constraint solving |
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod semantics;
+pub mod syntax;
