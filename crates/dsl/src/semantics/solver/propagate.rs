@@ -1,0 +1,241 @@
+//! Bounds propagation to a fixpoint over the active constraints.
+//!
+//! A linear constraint `Σ aᵢxᵢ + k ≤ 0` bounds each `xᵢ` by the extreme values the other terms
+//! can take (interval arithmetic); `==` is `≤` both ways; `!=` is only checked once all its
+//! variables are fixed. Member constraints intersect member sets. Each new bound records the
+//! constraint and the bounds it was computed from, so an emptied domain names its causes.
+
+use super::domain::{union, Domain, Interval, Why, BOUND_TOLERANCE};
+use super::ir::{Constraint, ConstraintId, ConstraintKind, Linear, Relation};
+
+/// Upper limit on propagation passes; past it propagation stops early, which is sound (domains
+/// are only wider than they could be) and sampling still checks every constraint.
+const MAX_PASSES: usize = 1000;
+
+/// The current domain of every variable.
+#[derive(Debug, Clone)]
+pub struct Store {
+    /// Indexed by `VarId`.
+    pub doms: Vec<Domain>,
+}
+
+impl Store {
+    /// Propagates `active` (pairs of id and constraint) to a fixpoint; `Err` names the
+    /// constraints of a conflict.
+    pub fn propagate(&mut self, active: &[(ConstraintId, &Constraint)]) -> Result<(), Why> {
+        for _ in 0..MAX_PASSES {
+            let mut changed = false;
+            for (id, c) in active {
+                changed |= self.apply(*id, &c.kind)?;
+            }
+            if !changed {
+                return Ok(());
+            }
+        }
+        Ok(())
+    }
+
+    fn interval(&self, v: super::ir::VarId) -> Option<&Interval> {
+        match &self.doms[v.0 as usize] {
+            Domain::Number(i) => Some(i),
+            _ => None,
+        }
+    }
+
+    /// One constraint once; true when a domain changed.
+    fn apply(&mut self, id: ConstraintId, kind: &ConstraintKind) -> Result<bool, Why> {
+        match kind {
+            ConstraintKind::Linear { expr, rel } => match rel {
+                Relation::Le => self.linear_le(id, expr, false),
+                Relation::Lt => self.linear_le(id, expr, true),
+                Relation::Eq => {
+                    let a = self.linear_le(id, expr, false)?;
+                    let b = self.linear_le(id, &expr.clone().scale(-1.0), false)?;
+                    Ok(a || b)
+                }
+                Relation::Ne => self.linear_ne(id, expr).map(|_| false),
+            },
+            ConstraintKind::Member { var, set, negated } => {
+                let Domain::Members { allowed, why } = &mut self.doms[var.0 as usize] else {
+                    return Ok(false);
+                };
+                let mut changed = false;
+                for (m, a) in allowed.iter_mut().enumerate() {
+                    let listed = set.contains(&(m as u32));
+                    if *a && listed == *negated {
+                        *a = false;
+                        changed = true;
+                    }
+                }
+                if changed {
+                    *why = union(why, &vec![id]);
+                }
+                self.check(*var)?;
+                Ok(changed)
+            }
+            ConstraintKind::SameMember { a, b, negated } => {
+                let (Some((aa, wa)), Some((ab, wb))) = (self.members(*a), self.members(*b)) else {
+                    return Ok(false);
+                };
+                let mut changed = false;
+                if *negated {
+                    let why = union(&union(&wa, &wb), &vec![id]);
+                    if let Some(m) = single(&aa) {
+                        changed |= self.remove(*b, m, why.clone());
+                    }
+                    if let Some(m) = single(&ab) {
+                        changed |= self.remove(*a, m, why);
+                    }
+                } else {
+                    let both: Vec<bool> = aa.iter().zip(&ab).map(|(x, y)| *x && *y).collect();
+                    let why = union(&union(&wa, &wb), &vec![id]);
+                    for v in [*a, *b] {
+                        for (m, keep) in both.iter().enumerate() {
+                            if !keep {
+                                changed |= self.remove(v, m, why.clone());
+                            }
+                        }
+                    }
+                }
+                self.check(*a)?;
+                self.check(*b)?;
+                Ok(changed)
+            }
+            ConstraintKind::Text {
+                var,
+                value,
+                negated,
+            } => {
+                let Domain::Text {
+                    fixed,
+                    excluded,
+                    why,
+                } = &mut self.doms[var.0 as usize]
+                else {
+                    return Ok(false);
+                };
+                let mut changed = false;
+                if *negated {
+                    if !excluded.contains(value) {
+                        excluded.push(value.clone());
+                        *why = union(why, &vec![id]);
+                        changed = true;
+                    }
+                } else {
+                    match fixed {
+                        None => {
+                            *fixed = Some(value.clone());
+                            *why = union(why, &vec![id]);
+                            changed = true;
+                        }
+                        Some(f) if f != value => return Err(union(why, &vec![id])),
+                        Some(_) => {}
+                    }
+                }
+                self.check(*var)?;
+                Ok(changed)
+            }
+        }
+    }
+
+    fn members(&self, v: super::ir::VarId) -> Option<(Vec<bool>, Why)> {
+        match &self.doms[v.0 as usize] {
+            Domain::Members { allowed, why } => Some((allowed.clone(), why.clone())),
+            _ => None,
+        }
+    }
+
+    fn remove(&mut self, v: super::ir::VarId, m: usize, reason: Why) -> bool {
+        if let Domain::Members { allowed, why } = &mut self.doms[v.0 as usize] {
+            if allowed.get(m).copied().unwrap_or(false) {
+                allowed[m] = false;
+                *why = union(why, &reason);
+                return true;
+            }
+        }
+        false
+    }
+
+    fn check(&self, v: super::ir::VarId) -> Result<(), Why> {
+        match self.doms[v.0 as usize].conflict() {
+            Some(why) => Err(why),
+            None => Ok(()),
+        }
+    }
+
+    /// `expr ≤ 0` (`< 0` when `strict`).
+    fn linear_le(&mut self, id: ConstraintId, expr: &Linear, strict: bool) -> Result<bool, Why> {
+        // The least value of each term, with whether it is attained and why.
+        let mut mins = Vec::with_capacity(expr.terms.len());
+        for &(v, a) in &expr.terms {
+            let Some(i) = self.interval(v) else {
+                return Ok(false);
+            };
+            let b = if a > 0.0 { &i.lo } else { &i.hi };
+            mins.push((a * b.value, b.open, b.why.clone()));
+        }
+        if expr.terms.is_empty() {
+            let holds = if strict {
+                expr.constant < 0.0
+            } else {
+                expr.constant <= 0.0
+            };
+            return if holds { Ok(false) } else { Err(vec![id]) };
+        }
+        let mut changed = false;
+        for (i, &(v, a)) in expr.terms.iter().enumerate() {
+            // a·x ≤ -(k + Σ_{j≠i} min_j)
+            let mut rest = expr.constant;
+            let mut open = strict;
+            let mut why = vec![id];
+            for (j, (m, o, w)) in mins.iter().enumerate() {
+                if j != i {
+                    rest += m;
+                    open |= *o;
+                    why = union(&why, w);
+                }
+            }
+            if !rest.is_finite() {
+                continue;
+            }
+            let bound = -rest / a;
+            let Domain::Number(iv) = &mut self.doms[v.0 as usize] else {
+                continue;
+            };
+            let moved = if a > 0.0 {
+                iv.lower(bound, open, why)
+            } else {
+                iv.raise(bound, open, why)
+            };
+            changed |= moved;
+            self.check(v)?;
+        }
+        Ok(changed)
+    }
+
+    /// `expr != 0`: a conflict only when every variable is fixed and the value is 0.
+    fn linear_ne(&self, id: ConstraintId, expr: &Linear) -> Result<(), Why> {
+        let mut value = expr.constant;
+        let mut why = vec![id];
+        for &(v, a) in &expr.terms {
+            let Some(i) = self.interval(v) else {
+                return Ok(());
+            };
+            let Some(x) = i.fixed() else { return Ok(()) };
+            value += a * x;
+            why = union(&why, &union(&i.lo.why, &i.hi.why));
+        }
+        let scale = expr.constant.abs().max(1.0);
+        if value.abs() <= BOUND_TOLERANCE * scale {
+            Err(why)
+        } else {
+            Ok(())
+        }
+    }
+}
+
+fn single(allowed: &[bool]) -> Option<usize> {
+    let mut it = allowed.iter().enumerate().filter(|(_, a)| **a);
+    let first = it.next()?.0;
+    it.next().is_none().then_some(first)
+}
