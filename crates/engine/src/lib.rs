@@ -12,6 +12,7 @@
 //! | `position` | OpenSCENARIO 1.3 §7.4 positions resolved to world poses and road positions |
 //! | `condition` | OpenSCENARIO 1.3 §7.6 condition evaluation |
 //! | `trajectory` | OpenSCENARIO 1.3 trajectory shapes (Polyline, Clothoid, ClothoidSpline, Nurbs) by arc length and time |
+//! | `models` | driver and vehicle models of the built-in controllers: IDM, MOBIL, ACC, single-track vehicle |
 //! | `routing` | OpenSCENARIO 1.3 routes: waypoints and routeStrategy planned on the OpenDRIVE lane graph |
 //! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: world, entities, actions, controllers, the step |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
@@ -20,6 +21,7 @@
 
 pub mod condition;
 pub mod domain;
+pub mod models;
 pub mod output;
 pub mod position;
 pub mod routing;

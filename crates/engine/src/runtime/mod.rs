@@ -8,6 +8,7 @@
 //! | `error` | `RuntimeError` |
 //! | `entity` | entity state (pose, road position, speed, …) and `EntityId` |
 //! | `world` | road network + entity store + values; `EntityQuery` / `ConditionContext` |
+//! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |
 //! | `lanes` | lane look-up, curvature, lane arithmetic, following lanes through links |
 //! | `build` | scenario model → world, storyboard description, action and condition tables |
 //! | `conditions` | the storyboard's `ConditionSource` |
@@ -31,6 +32,9 @@ mod entity;
 mod error;
 mod external;
 mod finite;
+// Read by the controllers stage (issue 13), which lands with the controllers.
+#[allow(dead_code)]
+mod lane_index;
 mod lanes;
 mod selection;
 mod shapes;

@@ -62,6 +62,8 @@ pub struct CatalogOrigin {
 pub struct Properties {
     /// `Property` name/value pairs.
     pub properties: Vec<(String, String)>,
+    /// Where each `Property` element was written, in the order of `properties`.
+    pub positions: Vec<SourcePos>,
     /// `File` paths as written.
     pub files: Vec<String>,
     /// `CustomContent` texts (1.2+), trimmed.

@@ -219,6 +219,8 @@ pub struct Controller {
     pub properties: Properties,
     /// Set when it came from a catalog.
     pub catalog: Option<CatalogOrigin>,
+    /// Where the `Controller` element was written (in the catalog file for a catalog entry).
+    pub pos: SourcePos,
 }
 
 /// A controller assigned to an object (XSD `ObjectController`).

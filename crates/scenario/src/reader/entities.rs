@@ -282,6 +282,7 @@ pub(crate) fn read_properties<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Prop
     for c in ctx.children(p, "Property") {
         out.properties
             .push((ctx.req(c, "name")?, ctx.req(c, "value")?));
+        out.positions.push(ctx.pos(c));
     }
     for f in ctx.children(p, "File") {
         out.files.push(ctx.req(f, "filepath")?);
@@ -297,6 +298,7 @@ pub(crate) fn read_properties<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Prop
 pub(crate) fn read_controller<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Controller> {
     ctx.scoped(n, |ctx| {
         Ok(Controller {
+            pos: ctx.pos(n),
             name: ctx.req(n, "name")?,
             controller_type: ctx.opt(n, "controllerType")?,
             properties: read_properties(ctx, n)?,

@@ -1,0 +1,565 @@
+//! A per-lane index of the entities on the road, built once per step, for the gap searches of
+//! the driver models: "the nearest entity ahead (or behind) whose bounding box overlaps the
+//! lane, along the lane the entity will take" (issue 13; OpenDRIVE 1.8 §11 lanes, §11.4 lane
+//! linkage, §12 junctions).
+//!
+//! **Footprints.** Each placed entity that stands on a road and is visible to traffic
+//! (VisibilityAction `traffic`, OpenSCENARIO 1.3 §7.7.2.3) gets the footprint of its bounding
+//! box in its road's reference-line frame: the box corners turned by the heading relative to
+//! the road, giving an s-range and a t-range (the local linearisation at the reference point;
+//! on a curve of radius R the box's length is off by a factor 1 ± t/R, under 1 % for a
+//! highway's R ≥ 1 km). The entity is entered in every lane of that lane section whose borders
+//! its t-range overlaps, so a vehicle changing lanes is in both lanes. An entity on a road of a
+//! junction is entered as well on the other roads of that junction whose surface holds the
+//! centre of its box, in the lanes its box overlaps there: crossing traffic inside a junction
+//! is seen from the connecting road taken.
+//!
+//! **Queries.** [`LaneIndex::nearest`] walks from an s on a lane in a direction of travel,
+//! section by section and through lane links and junctions (the successor the caller's choice
+//! picks, else the first in the road model's order, as the default controller drives), and
+//! returns the first entity whose footprint reaches past the start point, with the gap between
+//! the start point and the near end of its footprint (0 when they overlap). The distances are
+//! reference-line distances (Δs), which is the distance along a lane up to the factor
+//! 1 − κ·t of a curved road.
+//!
+//! **Cost.** Building is O(n log n) for n entities (one sort per lane); a query is a binary
+//! search per lane visited plus a short scan bounded by the longest footprint in that lane, so
+//! a step of n queries is O(n log n), not the O(n²) of comparing every pair.
+
+use std::collections::HashMap;
+
+use opendrive::{Direction, LaneHandle, Real, Road, RoadNetwork};
+
+use super::entity::{Entity, EntityId};
+
+/// Overlap (m) of a box's t-range with a lane's borders below which the box is not in the lane
+/// (a box touching the lane marking is not in the next lane).
+const LANE_OVERLAP: Real = 1e-3;
+/// A located point farther than this (m) from every lane is off the road (runtime/world.rs
+/// uses the same for lane tracks).
+const ON_ROAD: Real = 0.5;
+/// Most lane sections a query walks through (short junction roads, loops).
+const MAX_HOPS: usize = 64;
+
+/// Where an entity's bounding box lies on its road.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Footprint {
+    /// The lane holding the reference point.
+    pub handle: LaneHandle,
+    /// s of the reference point (m).
+    pub s: Real,
+    /// s-range of the box (m).
+    pub s_range: (Real, Real),
+    /// t-range of the box (m).
+    pub t_range: (Real, Real),
+    /// Velocity component along +s (m/s).
+    pub speed_s: Real,
+}
+
+impl Footprint {
+    /// The end of the box reached first travelling `direction` from its inside: the front
+    /// bumper of a vehicle driving that way.
+    pub fn front(&self, direction: Direction) -> Real {
+        match direction {
+            Direction::Forward => self.s_range.1,
+            Direction::Backward => self.s_range.0,
+        }
+    }
+
+    /// The other end: the rear bumper.
+    pub fn rear(&self, direction: Direction) -> Real {
+        self.front(direction.reverse())
+    }
+
+    /// The speed along `direction` of travel (m/s).
+    pub fn speed_along(&self, direction: Direction) -> Real {
+        match direction {
+            Direction::Forward => self.speed_s,
+            Direction::Backward => -self.speed_s,
+        }
+    }
+}
+
+/// One entity's footprint in one lane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Entry {
+    lo: Real,
+    hi: Real,
+    id: EntityId,
+}
+
+/// The entries of one lane section's lane, sorted by (lo, id).
+#[derive(Debug, Clone, Default)]
+struct LaneEntries {
+    entries: Vec<Entry>,
+    /// Longest footprint (hi − lo) in the lane: bounds the backward scans.
+    max_len: Real,
+}
+
+/// What a query found.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Neighbour {
+    /// The entity.
+    pub id: EntityId,
+    /// Gap from the query's start point to the near end of its footprint (m of s, ≥ 0).
+    pub gap: Real,
+}
+
+/// The per-lane index of one step (module doc).
+#[derive(Debug, Clone, Default)]
+pub struct LaneIndex {
+    footprints: Vec<Option<Footprint>>,
+    lanes: HashMap<LaneHandle, LaneEntries>,
+}
+
+/// The s- and t-ranges of `e`'s box on a road where its reference point is at (s, t) and its
+/// heading relative to the road's +s is `rel`.
+fn box_ranges(e: &Entity, s: Real, t: Real, rel: Real) -> ((Real, Real), (Real, Real)) {
+    let b = &e.bounding_box;
+    let c = b.center();
+    let (hl, hw) = (0.5 * b.length(), 0.5 * b.width());
+    let (sin, cos) = rel.sin_cos();
+    let mut s_range = (Real::INFINITY, Real::NEG_INFINITY);
+    let mut t_range = s_range;
+    for (dx, dy) in [(hl, hw), (hl, -hw), (-hl, hw), (-hl, -hw)] {
+        let (x, y) = (c.x + dx, c.y + dy);
+        let ds = x * cos - y * sin;
+        let dt = x * sin + y * cos;
+        s_range = (s_range.0.min(s + ds), s_range.1.max(s + ds));
+        t_range = (t_range.0.min(t + dt), t_range.1.max(t + dt));
+    }
+    (s_range, t_range)
+}
+
+/// The lanes of `road`'s section at `s` whose borders overlap `t_range`.
+fn overlapped_lanes(road: &Road, s: Real, t_range: (Real, Real)) -> impl Iterator<Item = i32> + '_ {
+    road.lane_section_at(s)
+        .lanes()
+        .filter(|l| l.id != 0)
+        .filter_map(move |l| {
+            let span = road.lane_span(l.id, s).ok()?;
+            let (lo, hi) = (span.inner.min(span.outer), span.inner.max(span.outer));
+            (t_range.1.min(hi) - t_range.0.max(lo) > LANE_OVERLAP).then_some(l.id)
+        })
+}
+
+impl LaneIndex {
+    /// Builds the index of `entities` on `net` (module doc).
+    pub fn build(net: &RoadNetwork, entities: &[Entity]) -> Self {
+        let mut index = LaneIndex {
+            footprints: vec![None; entities.len()],
+            lanes: HashMap::new(),
+        };
+        for e in entities {
+            if !e.placed || !e.visibility.traffic {
+                continue;
+            }
+            let Some(rp) = e.road_position.as_ref().filter(|rp| rp.distance <= ON_ROAD) else {
+                continue;
+            };
+            let Some(road) = net.road(&rp.road_id) else {
+                continue;
+            };
+            let (s_range, t_range) = box_ranges(e, rp.s, rp.t, rp.relative_heading);
+            let speed_s = match &e.track {
+                Some(track) if track.direction == Direction::Forward => e.speed,
+                Some(_) => -e.speed,
+                None => e.speed * rp.relative_heading.cos(),
+            };
+            let Some(handle) = net.lane_handle(&rp.road_id, rp.lane_id, rp.s) else {
+                continue;
+            };
+            index.insert(net, road, rp.s, s_range, t_range, e.id);
+            if let Some(junction) = road.junction.as_deref().and_then(|j| net.junction(j)) {
+                index.insert_in_junction(net, junction, road, e);
+            }
+            index.footprints[e.id.index()] = Some(Footprint {
+                handle,
+                s: rp.s,
+                s_range,
+                t_range,
+                speed_s,
+            });
+        }
+        for lane in index.lanes.values_mut() {
+            lane.entries
+                .sort_by(|a, b| a.lo.total_cmp(&b.lo).then(a.id.cmp(&b.id)));
+        }
+        index
+    }
+
+    fn insert(
+        &mut self,
+        net: &RoadNetwork,
+        road: &Road,
+        s: Real,
+        s_range: (Real, Real),
+        t_range: (Real, Real),
+        id: EntityId,
+    ) {
+        for lane in overlapped_lanes(road, s, t_range) {
+            let Some(h) = net.lane_handle(&road.id, lane, s) else {
+                continue;
+            };
+            let entries = self.lanes.entry(h).or_default();
+            entries.max_len = entries.max_len.max(s_range.1 - s_range.0);
+            entries.entries.push(Entry {
+                lo: s_range.0,
+                hi: s_range.1,
+                id,
+            });
+        }
+    }
+
+    /// Enters `e` (on `road`, a road of `junction`) on the junction's other roads whose surface
+    /// holds its box centre.
+    fn insert_in_junction(
+        &mut self,
+        net: &RoadNetwork,
+        junction: &opendrive::Junction,
+        road: &Road,
+        e: &Entity,
+    ) {
+        let c = e.bounding_box.center();
+        let (sin, cos) = e.pose.h.sin_cos();
+        let (x, y) = (
+            e.pose.x + c.x * cos - c.y * sin,
+            e.pose.y + c.x * sin + c.y * cos,
+        );
+        let mut seen: Vec<&str> = vec![road.id.as_str()];
+        for conn in &junction.connections {
+            let other = conn.connecting_road.as_str();
+            if seen.contains(&other) {
+                continue;
+            }
+            seen.push(other);
+            let Some(rp) = net
+                .locate_on_road(other, x, y)
+                .filter(|rp| rp.distance <= 0.0)
+            else {
+                continue;
+            };
+            let (Some(other_road), Ok(pose)) = (net.road(other), net.road_pose(other, rp.s, rp.t))
+            else {
+                continue;
+            };
+            // The footprint about the box centre found on the other road: move back to the
+            // reference point along the entity's heading relative to that road.
+            let rel = e.pose.h - pose.h;
+            let (rs, rc) = rel.sin_cos();
+            let ref_s = rp.s - (c.x * rc - c.y * rs);
+            let ref_t = rp.t - (c.x * rs + c.y * rc);
+            let (s_range, t_range) = box_ranges(e, ref_s, ref_t, rel);
+            self.insert(net, other_road, rp.s, s_range, t_range, e.id);
+        }
+    }
+
+    /// The footprint of entity `id` in this step, if it stands on a road.
+    pub fn footprint(&self, id: EntityId) -> Option<&Footprint> {
+        self.footprints.get(id.index())?.as_ref()
+    }
+
+    /// The entities whose footprint lies in lane `h` and overlaps the s-range `lo..hi`, other
+    /// than `exclude`.
+    pub fn overlapping(
+        &self,
+        h: LaneHandle,
+        (lo, hi): (Real, Real),
+        exclude: EntityId,
+    ) -> impl Iterator<Item = EntityId> + '_ {
+        let lane = self.lanes.get(&h);
+        let entries = lane.map_or(&[][..], |l| &l.entries[..]);
+        let max_len = lane.map_or(0.0, |l| l.max_len);
+        let end = entries.partition_point(|e| e.lo < hi);
+        entries[..end]
+            .iter()
+            .rev()
+            .take_while(move |e| e.lo >= lo - max_len)
+            .filter(move |e| e.hi > lo && e.id != exclude)
+            .map(|e| e.id)
+    }
+
+    /// The nearest entity other than `exclude` whose footprint reaches past `from` travelling
+    /// `direction` from s `from` on lane `start`, within `horizon` m (module doc). `choose`
+    /// picks the successor where the road whose id it is given ends (`None`: the first).
+    #[allow(clippy::too_many_arguments)]
+    pub fn nearest(
+        &self,
+        net: &RoadNetwork,
+        start: LaneHandle,
+        from: Real,
+        direction: Direction,
+        exclude: EntityId,
+        horizon: Real,
+        choose: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
+    ) -> Option<Neighbour> {
+        let (mut h, mut at, mut direction) = (start, from, direction);
+        // Distance travelled to `at`.
+        let mut walked = 0.0;
+        for _ in 0..MAX_HOPS {
+            if let Some(found) = self.in_lane(h, at, direction, exclude) {
+                let gap = walked + found.gap;
+                return (gap <= horizon).then_some(Neighbour { gap, ..found });
+            }
+            let road = net.handle_road(h);
+            let k = h.section as usize;
+            let end = match direction {
+                Direction::Forward => road.lane_section_end(k),
+                Direction::Backward => road.lane_sections[k].s,
+            };
+            walked += (end - at).abs();
+            if walked > horizon {
+                return None;
+            }
+            let with_traffic = direction == net.driving_direction(h);
+            let next = if with_traffic {
+                net.successors(h)
+            } else {
+                net.predecessors(h)
+            };
+            // The next section of the same road, else the caller's choice at the road's end.
+            let pick = match next.iter().find(|n| n.road == h.road) {
+                Some(&n) => n,
+                None => choose(&road.id, &next).or_else(|| next.first().copied())?,
+            };
+            direction = if with_traffic {
+                net.driving_direction(pick)
+            } else {
+                net.driving_direction(pick).reverse()
+            };
+            let next_road = net.handle_road(pick);
+            at = match direction {
+                Direction::Forward => next_road.lane_sections[pick.section as usize].s,
+                Direction::Backward => next_road.lane_section_end(pick.section as usize),
+            };
+            h = pick;
+        }
+        None
+    }
+
+    /// The nearest entry of lane `h` reaching past `from` in `direction`, with its gap.
+    fn in_lane(
+        &self,
+        h: LaneHandle,
+        from: Real,
+        direction: Direction,
+        exclude: EntityId,
+    ) -> Option<Neighbour> {
+        let lane = self.lanes.get(&h)?;
+        let entries = &lane.entries;
+        let p = entries.partition_point(|e| e.lo < from);
+        match direction {
+            Direction::Forward => {
+                // An entry starting before `from` but reaching past it overlaps: gap 0.
+                let overlapping = entries[..p]
+                    .iter()
+                    .rev()
+                    .take_while(|e| e.lo >= from - lane.max_len)
+                    .find(|e| e.hi > from && e.id != exclude);
+                if let Some(e) = overlapping {
+                    return Some(Neighbour { id: e.id, gap: 0.0 });
+                }
+                entries[p..]
+                    .iter()
+                    .find(|e| e.id != exclude)
+                    .map(|e| Neighbour {
+                        id: e.id,
+                        gap: e.lo - from,
+                    })
+            }
+            Direction::Backward => {
+                // Entries starting before `from`: the one whose far end hi is largest.
+                let mut best: Option<&Entry> = None;
+                for e in entries[..p].iter().rev() {
+                    if best.is_some_and(|b| e.lo + lane.max_len < b.hi) {
+                        break;
+                    }
+                    if e.id != exclude && best.map_or(true, |b| e.hi > b.hi) {
+                        best = Some(e);
+                    }
+                }
+                best.map(|e| Neighbour {
+                    id: e.id,
+                    gap: (from - e.hi).max(0.0),
+                })
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::domain::{BoundingBox, Vector3};
+    use crate::runtime::entity::EntityKind;
+    use crate::runtime::world::World;
+
+    const EPS: Real = 1e-9;
+
+    /// Road "A": 100 m along +x, lanes −1 (t −3.5..0) and −2 (t −7..−3.5) towards +s, lane 1
+    /// towards −s; its successor road "B" (200 m, same lanes) continues at x = 100.
+    fn network() -> RoadNetwork {
+        let lanes = r#"<lanes><laneSection s="0"><left><lane id="1" type="driving"><link><predecessor id="1"/><successor id="1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><link><predecessor id="-1"/><successor id="-1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane><lane id="-2" type="driving"><link><predecessor id="-2"/><successor id="-2"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes>"#;
+        let xodr = format!(
+            r#"<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="A" junction="-1" length="100"><link><successor elementType="road" elementId="B" contactPoint="start"/></link><planView><geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry></planView>{lanes}</road>
+<road id="B" junction="-1" length="200"><link><predecessor elementType="road" elementId="A" contactPoint="end"/></link><planView><geometry s="0" x="100" y="0" hdg="0" length="200"><line/></geometry></planView>{lanes}</road>
+</OpenDRIVE>"#
+        );
+        RoadNetwork::from_str(&xodr, std::path::Path::new("index_test.xodr")).expect("road")
+    }
+
+    /// A 5 m × 2 m car whose box centre is 1.4 m ahead of its reference point.
+    fn car(i: u32) -> Entity {
+        let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 5.0, 2.0, 1.5).expect("box");
+        Entity::new(EntityId(i), &format!("c{i}"), EntityKind::Vehicle, b)
+    }
+
+    /// A world with one car per (road, s, t, heading).
+    fn world(cars: &[(&str, Real, Real, Real)]) -> World {
+        let net = network();
+        let entities = (0..cars.len() as u32).map(car).collect();
+        let mut w = World::new(net, entities);
+        for (i, &(road, s, t, h)) in cars.iter().enumerate() {
+            let mut pose = w.network.road_pose(road, s, t).expect("on road");
+            pose.h += h;
+            let found = w.network.locate(pose.x, pose.y, Some(pose.h));
+            w.place_resolved(EntityId(i as u32), pose, found);
+        }
+        w
+    }
+
+    fn ahead(w: &World, index: &LaneIndex, me: u32) -> Option<Neighbour> {
+        let f = index.footprint(EntityId(me)).expect("on road");
+        let dir = w
+            .entity(EntityId(me))
+            .track
+            .as_ref()
+            .expect("track")
+            .direction;
+        index.nearest(
+            &w.network,
+            f.handle,
+            f.front(dir),
+            dir,
+            EntityId(me),
+            500.0,
+            &mut |_, _| None,
+        )
+    }
+
+    /// Car 0 on A lane −1 at s 10 (box s 8.9..13.9), car 1 at s 40 (box 38.9..43.9): gap
+    /// 38.9 − 13.9 = 25 m. Car 2 in lane −2 at s 20 is not in lane −1.
+    #[test]
+    fn leader_in_the_same_lane() {
+        let w = world(&[
+            ("A", 10.0, -1.75, 0.0),
+            ("A", 40.0, -1.75, 0.0),
+            ("A", 20.0, -5.25, 0.0),
+        ]);
+        let index = LaneIndex::build(&w.network, w.entities());
+        let f = index.footprint(EntityId(0)).expect("on road");
+        assert!((f.s_range.0 - 8.9).abs() < EPS && (f.s_range.1 - 13.9).abs() < EPS);
+        let n = ahead(&w, &index, 0).expect("a leader");
+        assert_eq!(n.id, EntityId(1));
+        assert!((n.gap - 25.0).abs() < EPS, "{}", n.gap);
+        // Car 2's leader in lane −2: none.
+        assert!(ahead(&w, &index, 2).is_none());
+        // Car 1 has nobody ahead.
+        assert!(ahead(&w, &index, 1).is_none());
+    }
+
+    /// A car on the marking between lanes −1 and −2 (t = −3.5, box t −4.5..−2.5) is in both
+    /// lanes: the leader of a car in either lane.
+    #[test]
+    fn a_box_across_the_marking_is_in_both_lanes() {
+        let w = world(&[
+            ("A", 10.0, -1.75, 0.0),
+            ("A", 10.0, -5.25, 0.0),
+            ("A", 30.0, -3.5, 0.0),
+        ]);
+        let index = LaneIndex::build(&w.network, w.entities());
+        for me in [0, 1] {
+            let n = ahead(&w, &index, me).expect("a leader");
+            assert_eq!(n.id, EntityId(2));
+            assert!((n.gap - 15.0).abs() < EPS);
+        }
+    }
+
+    /// Through the road link: car 0 on A at s 90 (front 93.9), car 1 on B at s 20 (rear 18.9):
+    /// gap 6.1 + 18.9 = 25 m.
+    #[test]
+    fn leader_across_a_road_link() {
+        let w = world(&[("A", 90.0, -1.75, 0.0), ("B", 20.0, -1.75, 0.0)]);
+        let index = LaneIndex::build(&w.network, w.entities());
+        let n = ahead(&w, &index, 0).expect("a leader");
+        assert_eq!(n.id, EntityId(1));
+        assert!((n.gap - 25.0).abs() < EPS, "{}", n.gap);
+        // Within a 20 m horizon there is none.
+        let f = index.footprint(EntityId(0)).expect("on road");
+        let near = index.nearest(
+            &w.network,
+            f.handle,
+            f.front(Direction::Forward),
+            Direction::Forward,
+            EntityId(0),
+            20.0,
+            &mut |_, _| None,
+        );
+        assert!(near.is_none());
+    }
+
+    /// Behind: from car 1's rear on B (s 18.9) travelling backwards the nearest is car 0 on A
+    /// with front 93.9: 18.9 + 6.1 = 25 m. A box reaching past the start point overlaps: gap 0.
+    #[test]
+    fn follower_behind_and_overlap() {
+        let w = world(&[
+            ("A", 90.0, -1.75, 0.0),
+            ("B", 20.0, -1.75, 0.0),
+            ("B", 23.0, -1.75, 0.0),
+        ]);
+        let index = LaneIndex::build(&w.network, w.entities());
+        let f = index.footprint(EntityId(1)).expect("on road");
+        let back = index
+            .nearest(
+                &w.network,
+                f.handle,
+                f.rear(Direction::Forward),
+                Direction::Backward,
+                EntityId(1),
+                500.0,
+                &mut |_, _| None,
+            )
+            .expect("a follower");
+        assert_eq!(back.id, EntityId(0));
+        assert!((back.gap - 25.0).abs() < EPS, "{}", back.gap);
+        // Car 2 (box 21.9..26.9) overlaps car 1 (18.9..23.9): ahead at gap 0.
+        let n = ahead(&w, &index, 1).expect("a leader");
+        assert_eq!((n.id, n.gap), (EntityId(2), 0.0));
+        let beside: Vec<_> = index
+            .overlapping(f.handle, f.s_range, EntityId(1))
+            .collect();
+        assert_eq!(beside, vec![EntityId(2)]);
+    }
+
+    /// A car driving lane 1 (towards −s) at s 60 sees the car at s 20 of the same lane ahead:
+    /// its front is 60 − 1.4 − 2.5 = 56.1, the other's far end 20 − 1.4 + 2.5 = 21.1 → 35 m.
+    /// Invisible entities are not indexed.
+    #[test]
+    fn oncoming_lane_and_invisible_entities() {
+        let pi = std::f64::consts::PI;
+        let mut w = world(&[
+            ("A", 60.0, 1.75, pi),
+            ("A", 20.0, 1.75, pi),
+            ("A", 40.0, 1.75, pi),
+        ]);
+        w.entity_mut(EntityId(2)).visibility.traffic = false;
+        let index = LaneIndex::build(&w.network, w.entities());
+        assert!(index.footprint(EntityId(2)).is_none());
+        let n = ahead(&w, &index, 0).expect("a leader");
+        assert_eq!(n.id, EntityId(1));
+        assert!((n.gap - 35.0).abs() < 1e-6, "{}", n.gap);
+        let f = index.footprint(EntityId(1)).expect("on road");
+        assert!(f.speed_along(Direction::Backward) == 0.0 && f.speed_s == 0.0);
+    }
+}
