@@ -30,6 +30,7 @@
 //! | `reader` | XML → model, one reader per XSD element |
 //! | `expr` | `${…}` expressions (§9.2) |
 //! | `distribution` | parameter value distributions (§9.5) |
+//! | `provider` | where files come from: [`DiskFiles`], [`MemoryFiles`], or your [`FileProvider`] |
 //! | `source`, `error` | positions and errors |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -38,6 +39,7 @@ pub mod distribution;
 mod error;
 pub mod expr;
 mod model;
+mod provider;
 mod reader;
 mod source;
 
@@ -45,6 +47,7 @@ use std::path::Path;
 
 pub use error::{Error, ErrorKind, Result, Warning};
 pub use model::*;
+pub use provider::{DiskFiles, FileProvider, MemoryFiles};
 pub use reader::files::MAX_FILE_BYTES;
 pub use source::SourcePos;
 
@@ -52,13 +55,24 @@ impl Scenario {
     /// Loads the scenario at `path` with its catalogs, checking that its road network file
     /// exists. A ParameterValueDistribution file loads its ScenarioFile.
     pub fn load(path: &Path) -> Result<Scenario> {
-        reader::scenario::load(path, &[])
+        reader::scenario::load(&DiskFiles, path, &[])
     }
 
     /// As [`Scenario::load`], with global parameters overridden by (name, value) pairs (the
     /// values are parsed as the declared types; an undeclared name is an error).
     pub fn load_with_parameters(path: &Path, overrides: &[(String, String)]) -> Result<Scenario> {
-        reader::scenario::load(path, overrides)
+        reader::scenario::load(&DiskFiles, path, overrides)
+    }
+
+    /// As [`Scenario::load_with_parameters`], reading the scenario, its catalogs and the
+    /// scenario a ParameterValueDistribution names from `files`, where the road network's
+    /// LogicFile must exist too (e.g. a [`MemoryFiles`], so nothing touches the disk).
+    pub fn load_with_files(
+        files: &dyn FileProvider,
+        path: &Path,
+        overrides: &[(String, String)],
+    ) -> Result<Scenario> {
+        reader::scenario::load(files, path, overrides)
     }
 
     /// Loads scenario `text` as if it had been read from `path`: positions name `path` and
@@ -69,6 +83,6 @@ impl Scenario {
         path: &Path,
         overrides: &[(String, String)],
     ) -> Result<Scenario> {
-        reader::scenario::load_text(text, path, overrides)
+        reader::scenario::load_text(&DiskFiles, text, path, overrides)
     }
 }

@@ -13,6 +13,7 @@ use roxmltree::{Attribute, Document};
 
 use crate::error::{Error, ErrorKind, Result, Warning};
 use crate::expr::Value;
+use crate::provider::FileProvider;
 use crate::reader::attr::FromAttr;
 use crate::reader::catalog::CatalogIndex;
 use crate::source::{LineIndex, SourcePos};
@@ -50,6 +51,8 @@ pub(crate) struct EntityUse {
 
 /// The state of one load.
 pub(crate) struct Ctx<'a> {
+    /// Where files are read and looked up.
+    pub files: &'a dyn FileProvider,
     /// Index 0 is the scenario; catalogs follow.
     pub docs: &'a [Doc<'a>],
     /// The document the nodes being read belong to.

@@ -1,11 +1,12 @@
-//! Reading scenario and catalog files from disk: the size limit, UTF-8 and XML parsing with
-//! positions, and the resolution of paths written in a scenario (relative paths
+//! Reading scenario and catalog files through a [`FileProvider`]: the size limit, UTF-8 and
+//! XML parsing with positions, and the resolution of paths written in a scenario (relative paths
 //! resolve against the directory of the file that names them).
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::error::{Error, ErrorKind, Result};
+use crate::provider::FileProvider;
 use crate::reader::context::Doc;
 use crate::source::{LineIndex, SourcePos};
 
@@ -27,7 +28,11 @@ pub(crate) struct Source {
 }
 
 /// Reads `path` for `what`, refusing files over [`MAX_FILE_BYTES`].
-pub(crate) fn read_source(path: &Path, what: &'static str) -> Result<Source> {
+pub(crate) fn read_source(
+    files: &dyn FileProvider,
+    path: &Path,
+    what: &'static str,
+) -> Result<Source> {
     let arc: Arc<Path> = Arc::from(path);
     let io_err = |e: std::io::Error| {
         Error::new(
@@ -39,7 +44,7 @@ pub(crate) fn read_source(path: &Path, what: &'static str) -> Result<Source> {
             SourcePos::start_of(arc.clone()),
         )
     };
-    let size = std::fs::metadata(path).map_err(io_err)?.len();
+    let size = files.size(path).map_err(io_err)?;
     if size > MAX_FILE_BYTES {
         return Err(Error::new(
             ErrorKind::FileTooLarge {
@@ -50,7 +55,7 @@ pub(crate) fn read_source(path: &Path, what: &'static str) -> Result<Source> {
             SourcePos::start_of(arc),
         ));
     }
-    let bytes = std::fs::read(path).map_err(io_err)?;
+    let bytes = files.read(path).map_err(io_err)?;
     // A UTF-8 byte order mark is allowed before the XML declaration; roxmltree wants text.
     let text = String::from_utf8(bytes).map_err(|e| {
         let offset = e.utf8_error().valid_up_to();
@@ -128,15 +133,18 @@ pub(crate) fn declared_rev_minor(doc: &Doc<'_>) -> u32 {
 }
 
 /// Reads every `.xosc` of the catalog directories, in sorted order, each file once.
-pub(crate) fn read_catalog_sources(locations: &[(String, PathBuf)]) -> Result<Vec<Source>> {
+pub(crate) fn read_catalog_sources(
+    provider: &dyn FileProvider,
+    locations: &[(String, PathBuf)],
+) -> Result<Vec<Source>> {
     let mut files: Vec<PathBuf> = Vec::new();
     for (_, dir) in locations {
-        let Ok(entries) = std::fs::read_dir(dir) else {
+        let Ok(entries) = provider.list_dir(dir) else {
             continue;
         };
         let mut found: Vec<PathBuf> = entries
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "xosc") && p.is_file())
+            .into_iter()
+            .filter(|p| p.extension().is_some_and(|x| x == "xosc") && provider.is_file(p))
             .collect();
         found.sort();
         for f in found {
@@ -145,7 +153,10 @@ pub(crate) fn read_catalog_sources(locations: &[(String, PathBuf)]) -> Result<Ve
             }
         }
     }
-    files.iter().map(|f| read_source(f, "catalog")).collect()
+    files
+        .iter()
+        .map(|f| read_source(provider, f, "catalog"))
+        .collect()
 }
 
 #[cfg(test)]

@@ -1,6 +1,6 @@
 //! The road network reference (OpenSCENARIO 1.3, XSD `RoadNetwork`, `TrafficSignals`,
 //! `TrafficSignalController`, `Phase`, `UsedArea`). The LogicFile path resolves against the
-//! scenario's directory and must exist; parsing it is the opendrive crate's job.
+//! scenario's directory and must exist (in the load's file provider); parsing it is the opendrive crate's job.
 
 use std::path::Path;
 
@@ -24,7 +24,7 @@ pub(crate) fn read_road_network<'a>(
     if let Some(l) = ctx.opt_child(n, "LogicFile") {
         let written: String = ctx.req(l, "filepath")?;
         let resolved = resolve_path(path, &written);
-        if !resolved.is_file() {
+        if !ctx.files.is_file(&resolved) {
             let pos = ctx
                 .raw_attr(l, "filepath")
                 .map_or_else(|| ctx.pos(l), |a| ctx.attr_pos(&a));

@@ -20,6 +20,7 @@ use crate::expr::Value;
 use crate::model::{
     FileHeader, License, MonitorDeclaration, ParameterDeclaration, Scenario, VariableDeclaration,
 };
+use crate::provider::FileProvider;
 use crate::reader::catalog::{CatalogFile, CatalogIndex};
 use crate::reader::context::{Ctx, Doc, Node, Scope};
 use crate::reader::entities::read_entities;
@@ -44,14 +45,24 @@ const CATALOG_KINDS: [&str; 8] = [
     "RouteCatalog",
 ];
 
-/// Loads the scenario at `path`, overriding global parameters with `overrides`.
-pub(crate) fn load(path: &Path, overrides: &[(String, String)]) -> Result<Scenario> {
-    load_source(read_source(path, "scenario")?, overrides, true)
+/// Loads the scenario at `path` from `files`, overriding global parameters with `overrides`.
+pub(crate) fn load(
+    files: &dyn FileProvider,
+    path: &Path,
+    overrides: &[(String, String)],
+) -> Result<Scenario> {
+    load_source(
+        files,
+        read_source(files, path, "scenario")?,
+        overrides,
+        true,
+    )
 }
 
 /// Loads scenario `text` as if read from `path` (positions name `path`; relative paths in
 /// the scenario resolve against its directory).
 pub(crate) fn load_text(
+    files: &dyn FileProvider,
     text: &str,
     path: &Path,
     overrides: &[(String, String)],
@@ -60,22 +71,11 @@ pub(crate) fn load_text(
         path: Arc::from(path),
         text: text.to_owned(),
     };
-    load_source(source, overrides, true)
-}
-
-fn load_inner(
-    path: &Path,
-    overrides: &[(String, String)],
-    follow_distribution: bool,
-) -> Result<Scenario> {
-    load_source(
-        read_source(path, "scenario")?,
-        overrides,
-        follow_distribution,
-    )
+    load_source(files, source, overrides, true)
 }
 
 fn load_source(
+    files: &dyn FileProvider,
     main: Source,
     overrides: &[(String, String)],
     follow_distribution: bool,
@@ -83,7 +83,7 @@ fn load_source(
     let path: &Path = &main.path.clone();
     let mut docs = vec![parse(&main)?];
     let root = docs[0].doc.root_element();
-    let mut ctx = new_ctx(&docs);
+    let mut ctx = new_ctx(files, &docs);
     // `OpenScenario` is the XSD's second global element of the same type.
     if !matches!(root.tag_name().name(), "OpenSCENARIO" | "OpenScenario") {
         return Err(ctx.err(
@@ -114,16 +114,16 @@ fn load_source(
     let locations = read_catalog_locations(&mut ctx, root, path)?;
     let warnings = ctx.take_warnings();
     drop(ctx);
-    let catalog_sources = read_catalog_sources(&locations)?;
+    let catalog_sources = read_catalog_sources(files, &locations)?;
     for s in &catalog_sources {
         docs.push(parse(s)?);
     }
     // Phase 2: everything, with the catalogs indexed.
     let root = docs[0].doc.root_element();
-    let mut ctx = new_ctx(&docs);
+    let mut ctx = new_ctx(files, &docs);
     ctx.doc_rev_minor = docs.iter().map(declared_rev_minor).collect();
     ctx.warnings = warnings;
-    ctx.catalogs = index_catalogs(&docs, &locations);
+    ctx.catalogs = index_catalogs(files, &docs, &locations);
     let (globals, parameter_declarations) = read_globals(&mut ctx, root, overrides)?;
     ctx.scopes.push(globals);
     ctx.expect_children(
@@ -165,8 +165,9 @@ fn load_source(
     })
 }
 
-fn new_ctx<'a>(docs: &'a [Doc<'a>]) -> Ctx<'a> {
+fn new_ctx<'a>(files: &'a dyn FileProvider, docs: &'a [Doc<'a>]) -> Ctx<'a> {
     Ctx {
+        files,
         docs,
         cur: 0,
         scopes: Vec::new(),
@@ -199,7 +200,7 @@ fn load_distribution<'a>(
     }
     let written: String = ctx.req(file, "filepath")?;
     let resolved = resolve_path(path, &written);
-    if !resolved.is_file() {
+    if !ctx.files.is_file(&resolved) {
         let pos = ctx
             .raw_attr(file, "filepath")
             .map_or_else(|| ctx.pos(file), |a| ctx.attr_pos(&a));
@@ -212,7 +213,9 @@ fn load_distribution<'a>(
             pos,
         ));
     }
-    let mut scenario = load_inner(&resolved, overrides, false)?;
+    let files = ctx.files;
+    let source = read_source(files, &resolved, "scenario")?;
+    let mut scenario = load_source(files, source, overrides, false)?;
     scenario.parameter_value_distribution = Some(path.to_path_buf());
     Ok(scenario)
 }
@@ -348,7 +351,7 @@ fn read_catalog_locations<'a>(
         let dir = ctx.child(kind, "Directory")?;
         let written: String = ctx.req(dir, "path")?;
         let resolved = resolve_path(path, &written);
-        if !resolved.is_dir() {
+        if !ctx.files.is_dir(&resolved) {
             ctx.warn(
                 dir,
                 format!(
@@ -363,12 +366,16 @@ fn read_catalog_locations<'a>(
 }
 
 /// Indexes the `Catalog` elements of documents 1.. by name.
-fn index_catalogs<'a>(docs: &'a [Doc<'a>], locations: &[(String, PathBuf)]) -> CatalogIndex<'a> {
+fn index_catalogs<'a>(
+    files: &dyn FileProvider,
+    docs: &'a [Doc<'a>],
+    locations: &[(String, PathBuf)],
+) -> CatalogIndex<'a> {
     let mut index = CatalogIndex {
         dirs: locations.iter().map(|(_, d)| d.clone()).collect(),
         missing_dirs: locations
             .iter()
-            .filter(|(_, d)| !d.is_dir())
+            .filter(|(_, d)| !files.is_dir(d))
             .map(|(_, d)| d.clone())
             .collect(),
         files: Vec::new(),

@@ -1,0 +1,166 @@
+//! Where the loader gets its files: the scenario, the catalog directories' `.xosc` files, and
+//! the existence checks of the files a scenario names (`RoadNetwork/LogicFile`,
+//! `ParameterValueDistribution/ScenarioFile`; OpenSCENARIO 1.3 §9.4 "catalogs" and §9.5).
+//!
+//! [`DiskFiles`] reads the file system (what [`Scenario::load`](crate::Scenario::load) uses);
+//! [`MemoryFiles`] holds files in memory, for tools, tests and fuzzing that load a scenario
+//! with its catalogs without touching the disk
+//! ([`Scenario::load_with_files`](crate::Scenario::load_with_files)). Paths reach a provider
+//! as the loader resolved them: relative paths written in a file are joined to its directory
+//! and `..` steps folded as text, so `xosc/../Catalogs/V` arrives as `Catalogs/V`.
+
+use std::collections::BTreeMap;
+use std::io;
+use std::path::{Path, PathBuf};
+
+/// A source of files for the scenario loader.
+pub trait FileProvider {
+    /// Size of the file at `path` in bytes (checked against
+    /// [`MAX_FILE_BYTES`](crate::MAX_FILE_BYTES) before reading).
+    fn size(&self, path: &Path) -> io::Result<u64>;
+    /// The bytes of the file at `path`.
+    fn read(&self, path: &Path) -> io::Result<Vec<u8>>;
+    /// Whether `path` names a file.
+    fn is_file(&self, path: &Path) -> bool;
+    /// Whether `path` names a directory.
+    fn is_dir(&self, path: &Path) -> bool;
+    /// The paths of the entries directly in directory `dir`, in any order.
+    fn list_dir(&self, dir: &Path) -> io::Result<Vec<PathBuf>>;
+}
+
+/// The file system.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct DiskFiles;
+
+impl FileProvider for DiskFiles {
+    fn size(&self, path: &Path) -> io::Result<u64> {
+        Ok(std::fs::metadata(path)?.len())
+    }
+
+    fn read(&self, path: &Path) -> io::Result<Vec<u8>> {
+        std::fs::read(path)
+    }
+
+    fn is_file(&self, path: &Path) -> bool {
+        path.is_file()
+    }
+
+    fn is_dir(&self, path: &Path) -> bool {
+        path.is_dir()
+    }
+
+    fn list_dir(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
+        std::fs::read_dir(dir)?
+            .map(|e| e.map(|e| e.path()))
+            .collect()
+    }
+}
+
+/// Files held in memory, keyed by path. A directory exists when some file lies under it.
+///
+/// ```
+/// use scenario::{MemoryFiles, FileProvider};
+/// use std::path::Path;
+/// let mut files = MemoryFiles::new();
+/// files.insert("s/Catalogs/Vehicles/cars.xosc", "<OpenSCENARIO/>");
+/// assert!(files.is_dir(Path::new("s/Catalogs")));
+/// assert!(files.is_file(Path::new("s/Catalogs/Vehicles/cars.xosc")));
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct MemoryFiles {
+    files: BTreeMap<PathBuf, Vec<u8>>,
+}
+
+impl MemoryFiles {
+    /// No files.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Adds (or replaces) the file at `path`.
+    pub fn insert(&mut self, path: impl Into<PathBuf>, contents: impl Into<Vec<u8>>) -> &mut Self {
+        self.files.insert(path.into(), contents.into());
+        self
+    }
+
+    /// The contents of the file at `path`, if there is one.
+    pub fn get(&self, path: &Path) -> Option<&[u8]> {
+        self.files.get(path).map(Vec::as_slice)
+    }
+
+    fn not_found(path: &Path) -> io::Error {
+        io::Error::new(
+            io::ErrorKind::NotFound,
+            format!("no file {} in memory", path.display()),
+        )
+    }
+}
+
+impl FileProvider for MemoryFiles {
+    fn size(&self, path: &Path) -> io::Result<u64> {
+        self.get(path)
+            .map(|b| b.len() as u64)
+            .ok_or_else(|| Self::not_found(path))
+    }
+
+    fn read(&self, path: &Path) -> io::Result<Vec<u8>> {
+        self.get(path)
+            .map(<[u8]>::to_vec)
+            .ok_or_else(|| Self::not_found(path))
+    }
+
+    fn is_file(&self, path: &Path) -> bool {
+        self.files.contains_key(path)
+    }
+
+    fn is_dir(&self, path: &Path) -> bool {
+        self.files
+            .keys()
+            .any(|f| f.starts_with(path) && f.as_path() != path)
+    }
+
+    fn list_dir(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
+        if !self.is_dir(dir) {
+            return Err(Self::not_found(dir));
+        }
+        let mut out: Vec<PathBuf> = Vec::new();
+        for f in self.files.keys().filter(|f| f.starts_with(dir)) {
+            // The first component below `dir`: a file, or a subdirectory listed once.
+            let rest = f.strip_prefix(dir).unwrap_or(f);
+            if let Some(first) = rest.components().next() {
+                let entry = dir.join(first);
+                if out.last() != Some(&entry) {
+                    out.push(entry);
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{FileProvider, MemoryFiles};
+    use std::path::{Path, PathBuf};
+
+    #[test]
+    fn memory_directories_list_files_and_subdirectories_once() {
+        let mut m = MemoryFiles::new();
+        m.insert("c/V/a.xosc", "a")
+            .insert("c/V/b.xosc", "bb")
+            .insert("c/V/sub/x.xosc", "x")
+            .insert("c/V/sub/y.xosc", "y");
+        let listed = m.list_dir(Path::new("c/V")).unwrap();
+        let expected: Vec<PathBuf> = ["c/V/a.xosc", "c/V/b.xosc", "c/V/sub"]
+            .iter()
+            .map(PathBuf::from)
+            .collect();
+        assert_eq!(listed, expected);
+        assert!(m.is_dir(Path::new("c/V/sub")));
+        assert!(!m.is_file(Path::new("c/V/sub")));
+        assert!(!m.is_dir(Path::new("c/V/a.xosc")));
+        assert_eq!(m.size(Path::new("c/V/b.xosc")).unwrap(), 2);
+        assert!(m.list_dir(Path::new("c/W")).is_err());
+        assert!(m.read(Path::new("c/V/none.xosc")).is_err());
+    }
+}
