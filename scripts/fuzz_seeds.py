@@ -40,8 +40,10 @@ XOSC_SOURCES = [
 ]
 DSL_SOURCES = [
     (REPO, "crates/dsl/**/*.osc"),
-    (REPO.parent / "shared" / "seeds", "**/*.osc"),
+    (REPO, "examples/**/*.osc"),
 ]
+# The OpenSCENARIO DSL excerpt whose "Code N." and "Prototype" blocks are seeds too.
+DSL_EXCERPTS = sorted((REPO.parent / "shared" / "seeds").glob("000_*.txt"))
 
 # Expressions the corpus has few of: every operator, function and literal form (§9.2).
 EXPR_SEEDS = [
@@ -121,6 +123,28 @@ def xosc_bundle(path: Path) -> bytes | None:
     return b"".join(parts)
 
 
+def dsl_blocks(text: str):
+    """The code under each "Code N." or "Prototype" line of a standard excerpt, up to the next
+    section number, caption or blank line followed by unindented prose."""
+    block = None
+    for line in text.splitlines():
+        if line.startswith("Code ") or line.strip() == "Prototype":
+            if block:
+                yield "\n".join(block).strip() + "\n"
+            block = []
+            continue
+        if block is None:
+            continue
+        if re.match(r"^\d+(\.\d+)+ ", line) or line.startswith(("Table ", "Parameter Type")):
+            if block:
+                yield "\n".join(block).strip() + "\n"
+            block = None
+            continue
+        block.append(line)
+    if block:
+        yield "\n".join(block).strip() + "\n"
+
+
 def corpus(max_len: int) -> None:
     counts = {}
 
@@ -144,6 +168,9 @@ def corpus(max_len: int) -> None:
         add("expr", e.encode())
     for f in files(DSL_SOURCES):
         add("dsl", f.read_bytes())
+    for f in DSL_EXCERPTS:
+        for block in dsl_blocks(f.read_text(encoding="utf-8", errors="replace")):
+            add("dsl", block.encode())
     for target, n in sorted(counts.items()):
         print(f"{target}: {n} seeds")
 
