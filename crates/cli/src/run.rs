@@ -39,6 +39,14 @@ pub struct RunArgs {
     /// Override a global parameter, NAME=VALUE (repeatable).
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = name_value)]
     params: Vec<(String, String)>,
+    /// Set a value for UserDefinedValueConditions from the start, NAME=VALUE (repeatable; a
+    /// number is a double, true/false a boolean, anything else a string).
+    #[arg(long = "value", value_name = "NAME=VALUE", value_parser = name_value)]
+    values: Vec<(String, String)>,
+    /// Values for UserDefinedValueConditions over time: a CSV file with the header
+    /// time,name,value, one row per change.
+    #[arg(long = "values", value_name = "FILE.csv")]
+    values_file: Option<PathBuf>,
     /// Write trajectories here (long CSV: time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,speed).
     #[arg(long, value_name = "FILE")]
     csv: Option<PathBuf>,
@@ -124,6 +132,12 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     let wall = Instant::now();
     let mut engine = Engine::load(&args.scenario, &args.params, config)
         .with_context(|| format!("cannot run {}", args.scenario.display()))?;
+    for (name, text) in &args.values {
+        engine.set_user_value(name, engine::user_values::parse_value(text));
+    }
+    if let Some(path) = &args.values_file {
+        engine.schedule_user_values(&engine::user_values::read_csv(path)?);
+    }
     let mut frames: Vec<Box<dyn FrameSink>> = Vec::new();
     if let Some(path) = &args.csv {
         frames.push(Box::new(CsvWriter::new(create(path)?)));

@@ -193,3 +193,57 @@ fn run_that_logs_a_runtime_error_completes_and_exits_with_one() {
     let log = std::fs::read_to_string(&events).expect("the event log");
     assert_eq!(log.matches("\"kind\":\"error\"").count(), 1, "{log}");
 }
+
+/// `--value` and `--values` feed UserDefinedValueConditions; a bad values file is refused with
+/// its file:line:col before the run starts.
+#[test]
+fn user_values_from_the_command_line_and_a_file() {
+    let dir = scratch("user_values");
+    let scenario = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../engine/tests/files/runtime/user_values.xosc");
+    let scenario = scenario.to_str().unwrap();
+    let series = dir.join("values.csv");
+    std::fs::write(&series, "time,name,value\n2.0,Mode,go\n3.0,Speed,12.5\n").unwrap();
+    let log = dir.join("events.jsonl");
+    let out = oscsim(&[
+        "run",
+        scenario,
+        "--quiet",
+        "--value",
+        "Armed=true",
+        "--values",
+        series.to_str().unwrap(),
+        "--events",
+        log.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let log = std::fs::read_to_string(&log).unwrap();
+    // Armed from the start, Mode at 2 s, Speed 12.5 > 10 at 3 s (each Event sets a monitor).
+    for line in [
+        r#"{"time":0.000,"element":"ArmedSeen","kind":"monitor","value":true}"#,
+        r#"{"time":2.000,"element":"ModeGoSeen","kind":"monitor","value":true}"#,
+        r#"{"time":3.000,"element":"FastSeen","kind":"monitor","value":true}"#,
+    ] {
+        assert!(log.lines().any(|l| l == line), "{line} missing from\n{log}");
+    }
+    std::fs::write(&series, "time,name,value\n2.0,Mode,go\n1.0,Speed,12.5\n").unwrap();
+    let out = oscsim(&[
+        "run",
+        scenario,
+        "--quiet",
+        "--values",
+        series.to_str().unwrap(),
+    ]);
+    assert_fails(
+        &out,
+        &[
+            "expected times in non-decreasing order, found '1.0' at",
+            "values.csv:3:1",
+        ],
+    );
+}

@@ -14,6 +14,8 @@
 //! | `trajectory` | OpenSCENARIO 1.3 trajectory shapes (Polyline, Clothoid, ClothoidSpline, Nurbs) by arc length and time |
 //! | `models` | driver and vehicle models of the built-in controllers: IDM, MOBIL, ACC, single-track vehicle |
 //! | `routing` | OpenSCENARIO 1.3 routes: waypoints and routeStrategy planned on the OpenDRIVE lane graph |
+//! | `signals` | OpenSCENARIO 1.3 traffic signal controllers: phases cycling, reference and delay, signal states |
+//! | `user_values` | values from outside for UserDefinedValueCondition: typed text, time series, CSV file |
 //! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: world, entities, actions, controllers, the step |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
 #![forbid(unsafe_code)]
@@ -26,8 +28,10 @@ pub mod output;
 pub mod position;
 pub mod routing;
 pub mod runtime;
+pub mod signals;
 pub mod storyboard;
 pub mod trajectory;
+pub mod user_values;
 
 pub use output::{EventRecord, EventSink, Frame, FrameSink};
 pub use runtime::{

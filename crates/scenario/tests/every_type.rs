@@ -454,13 +454,12 @@ fn entities_of_every_kind() {
     assert!(
         matches!(&s.entities.object("Trailer").unwrap().entity_object, EntityObject::Vehicle(t) if t.trailer_coupler.is_some())
     );
-    assert_eq!(
-        s.monitor_declarations,
-        [MonitorDeclaration {
-            name: "Safe".into(),
-            value: true
-        }]
-    );
+    let monitors: Vec<(&str, bool)> = s
+        .monitor_declarations
+        .iter()
+        .map(|m| (m.name.as_str(), m.value))
+        .collect();
+    assert_eq!(monitors, [("Safe", true)]);
     // The only deprecated form in the file is ReachPositionCondition.
     assert_eq!(s.warnings.len(), 1, "{:?}", s.warnings);
     assert!(s.warnings[0]

@@ -1,5 +1,6 @@
 //! Records of the event log: every storyboard state transition (OpenSCENARIO 1.3 §8.2), every
-//! CustomCommandAction (§7.7.3), actions and features skipped as unsupported, and errors.
+//! CustomCommandAction (§7.7.3), entities entering and leaving, traffic signal phases and
+//! states, monitor values, actions and features skipped as unsupported, and errors.
 
 use scenario::SourcePos;
 
@@ -46,6 +47,30 @@ pub enum EventRecord {
         /// What changed, e.g. "spawned", "removed", "light lowBeam on".
         change: String,
     },
+    /// A traffic signal controller entered a phase, or a traffic signal changed state
+    /// (crate::signals).
+    Signal {
+        /// Simulation time (s).
+        time: f64,
+        /// The controller's name or the signal's id.
+        element: String,
+        /// Controller or signal.
+        kind: crate::signals::SignalKind,
+        /// The phase or state before; `None` for the first one.
+        from: Option<String>,
+        /// The phase or state now.
+        to: String,
+    },
+    /// A monitor (MonitorDeclaration, OpenSCENARIO 1.3) took a value: its declared value at the
+    /// start, then every SetMonitorAction that changes it.
+    Monitor {
+        /// Simulation time (s).
+        time: f64,
+        /// The monitor's name.
+        element: String,
+        /// The value now.
+        value: bool,
+    },
     /// Something failed at runtime: an action that could not start (the run stops with this
     /// error), or a condition that could not be evaluated, a route that could not be planned or
     /// a trajectory that could not be built (logged once; the condition reads false, the action
@@ -84,6 +109,8 @@ impl EventRecord {
             EventRecord::CustomCommand { time, .. }
             | EventRecord::Unsupported { time, .. }
             | EventRecord::Entity { time, .. }
+            | EventRecord::Signal { time, .. }
+            | EventRecord::Monitor { time, .. }
             | EventRecord::Error { time, .. } => *time,
         }
     }

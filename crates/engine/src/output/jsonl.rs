@@ -3,7 +3,11 @@
 //! name and kind (`act`, `event`, …), the states' standard names (`standbyState`) and the
 //! transition as `start`, `end`, `stop` or `skip` (the form `compare_run.py` reads); a custom
 //! command is `{"time", "element", "kind": "customCommand", "type", "content"}`; skipped
-//! features and errors are `{"time", "element", "kind": "unsupported"|"error", "message"}`.
+//! features and errors are `{"time", "element", "kind": "unsupported"|"error", "message"}`;
+//! an entity entering or leaving is `{"time", "element", "kind": "entity", "entity", "change"}`;
+//! a signal controller's phase or a signal's state is `{"time", "element", "kind":
+//! "trafficSignalController"|"trafficSignal", "from", "to"}` (`from` null for the first); a
+//! monitor's value is `{"time", "element", "kind": "monitor", "value"}`.
 //! Times have 3 decimals, so logs of identical runs are byte-identical.
 
 use std::io::Write;
@@ -92,6 +96,29 @@ impl<W: Write> EventSink for JsonlWriter<W> {
                 string(element),
                 string(entity),
                 string(change)
+            ),
+            EventRecord::Signal {
+                time,
+                element,
+                kind,
+                from,
+                to,
+            } => writeln!(
+                self.out,
+                "{{\"time\":{time:.3},\"element\":{},\"kind\":\"{}\",\"from\":{},\"to\":{}}}",
+                string(element),
+                kind.name(),
+                from.as_deref().map_or_else(|| "null".to_owned(), string),
+                string(to)
+            ),
+            EventRecord::Monitor {
+                time,
+                element,
+                value,
+            } => writeln!(
+                self.out,
+                "{{\"time\":{time:.3},\"element\":{},\"kind\":\"monitor\",\"value\":{value}}}",
+                string(element),
             ),
             EventRecord::Error {
                 time,

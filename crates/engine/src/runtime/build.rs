@@ -68,6 +68,13 @@ pub(crate) fn build(scenario: &Scenario, network: RoadNetwork) -> Result<Built, 
         .iter()
         .map(|p| (p.name.clone(), p.value.clone()))
         .collect::<BTreeMap<_, _>>();
+    world.signals =
+        crate::signals::Signals::new(&scenario.road_network.traffic_signal_controllers)?;
+    world.monitors = scenario
+        .monitor_declarations
+        .iter()
+        .map(|m| (m.name.clone(), m.value))
+        .collect();
     world.variables = scenario
         .variable_declarations
         .iter()

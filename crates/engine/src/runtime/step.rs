@@ -72,6 +72,8 @@ pub struct Engine {
     step: u64,
     stopped: Option<StopReason>,
     counters: StageCounters,
+    /// User-defined values still to be set, by time (user_values.rs).
+    scheduled_values: std::collections::VecDeque<crate::user_values::TimedValue>,
 }
 
 /// Collects transitions into the step's event list.
@@ -113,6 +115,7 @@ impl Engine {
             step: 0,
             stopped: None,
             counters: StageCounters::default(),
+            scheduled_values: std::collections::VecDeque::new(),
         })
     }
 
@@ -144,6 +147,44 @@ impl Engine {
     /// Why the run ended, once it has.
     pub fn stop_reason(&self) -> Option<StopReason> {
         self.stopped
+    }
+
+    /// Sets the user-defined value `name` (UserDefinedValueCondition) from now on: conditions
+    /// evaluated in the next step read it.
+    pub fn set_user_value(&mut self, name: &str, value: scenario::expr::Value) {
+        self.world.get_mut().user_values.set(name, value);
+    }
+
+    /// Sets each of `values` at the start of the first step at or after its time (before the
+    /// step's triggers), in time order; values of equal time in the order given.
+    pub fn schedule_user_values(&mut self, values: &[crate::user_values::TimedValue]) {
+        let mut all: Vec<_> = self
+            .scheduled_values
+            .drain(..)
+            .chain(values.iter().cloned())
+            .collect();
+        all.sort_by(|a, b| a.time.total_cmp(&b.time));
+        self.scheduled_values = all.into();
+    }
+
+    /// The current value of every monitor (MonitorDeclaration), by name.
+    pub fn monitors(&self) -> Vec<(String, bool)> {
+        let world = self.world.borrow();
+        world
+            .monitors
+            .iter()
+            .map(|(k, v)| (k.clone(), *v))
+            .collect()
+    }
+
+    /// The current state of every traffic signal that has one, by signal id.
+    pub fn signal_states(&self) -> Vec<(String, String)> {
+        let world = self.world.borrow();
+        world
+            .signals
+            .states()
+            .map(|(k, v)| (k.to_owned(), v.to_owned()))
+            .collect()
     }
 
     /// Wall time per stage so far.
@@ -187,6 +228,31 @@ impl Engine {
         // Stage 1: triggers and transitions.
         let clock = Instant::now();
         self.world.get_mut().time = time;
+        // Values from outside due by now (within a millionth of a step of round-off).
+        while let Some(v) = self
+            .scheduled_values
+            .front()
+            .filter(|v| v.time <= time + dt * 1e-6)
+        {
+            let v = v.clone();
+            self.scheduled_values.pop_front();
+            self.world.get_mut().user_values.set(v.name, v.value);
+        }
+        if self.step == 0 {
+            // Signal controllers enter their phases at t = 0 and monitors show their declared
+            // values, before the Init actions (which may set a signal's state).
+            let world = self.world.get_mut();
+            world.signals.advance(time, &mut log.borrow_mut());
+            let monitors = world
+                .monitors
+                .iter()
+                .map(|(name, &value)| EventRecord::Monitor {
+                    time,
+                    element: name.clone(),
+                    value,
+                });
+            log.borrow_mut().extend(monitors);
+        }
         {
             let mut conditions = Conditions {
                 world: &self.world,
@@ -270,6 +336,7 @@ impl Engine {
         self.step += 1;
         let time = self.step as f64 * dt;
         world.time = time;
+        world.signals.advance(time, &mut log.borrow_mut());
         self.counters.measurements += clock.elapsed();
 
         // Stage 5: output. Vehicles spawned and removed by traffic actions in this step

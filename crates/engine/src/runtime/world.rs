@@ -30,8 +30,12 @@ pub struct World {
     pub time: f64,
     pub(crate) parameters: BTreeMap<String, Value>,
     pub(crate) variables: BTreeMap<String, Value>,
-    pub(crate) signals: BTreeMap<String, String>,
-    pub(crate) signal_phases: BTreeMap<String, String>,
+    /// Traffic signal controllers and signal states (crate::signals).
+    pub(crate) signals: crate::signals::Signals,
+    /// Monitors (MonitorDeclaration, OpenSCENARIO 1.3) and their values, by name.
+    pub(crate) monitors: BTreeMap<String, bool>,
+    /// Values set from outside for UserDefinedValueCondition.
+    pub(crate) user_values: crate::condition::UserValueRegistry,
     /// Trailer mounting points and connections (§7.2.2.6).
     pub(crate) trailers: super::trailer::Trailers,
     /// Running traffic actions and the run's seed (runtime/traffic).
@@ -58,8 +62,9 @@ impl World {
             time: 0.0,
             parameters: BTreeMap::new(),
             variables: BTreeMap::new(),
-            signals: BTreeMap::new(),
-            signal_phases: BTreeMap::new(),
+            signals: crate::signals::Signals::default(),
+            monitors: BTreeMap::new(),
+            user_values: crate::condition::UserValueRegistry::default(),
             trailers: super::trailer::Trailers::default(),
             traffic: super::traffic::Traffic::default(),
             selections: super::selection::Selections::default(),
@@ -246,17 +251,16 @@ impl ConditionContext for ConditionWorld<'_> {
         self.storyboard
     }
 
-    fn user_defined_value(&self, _name: &str) -> Option<Value> {
-        // No external value registry: the runtime runs headless.
-        None
+    fn user_defined_value(&self, name: &str) -> Option<Value> {
+        self.world.user_values.get(name).cloned()
     }
 
     fn traffic_signal_state(&self, name: &str) -> Option<&str> {
-        self.world.signals.get(name).map(String::as_str)
+        self.world.signals.state(name)
     }
 
     fn traffic_signal_controller_phase(&self, name: &str) -> Option<&str> {
-        self.world.signal_phases.get(name).map(String::as_str)
+        self.world.signals.phase(name)
     }
 
     fn note_triggering(&self, pos: &scenario::SourcePos, value: bool, held: &[String]) {

@@ -118,3 +118,19 @@ pub fn end_time(events: &[EventRecord], name: &str) -> Option<f64> {
         _ => None,
     })
 }
+
+/// (time, value) of every record of monitor `name` in the event log: its declared value at
+/// t = 0, then each change.
+pub fn monitor_values(events: &[EventRecord], name: &str) -> Vec<(f64, bool)> {
+    events
+        .iter()
+        .filter_map(|e| match e {
+            EventRecord::Monitor {
+                time,
+                element,
+                value,
+            } if element == name => Some((*time, *value)),
+            _ => None,
+        })
+        .collect()
+}

@@ -40,6 +40,8 @@ pub struct MonitorDeclaration {
     pub name: String,
     /// Initial value.
     pub value: bool,
+    /// Where the declaration is.
+    pub pos: SourcePos,
 }
 
 /// Where a catalog element came from (XSD `CatalogReference`, §9.4).

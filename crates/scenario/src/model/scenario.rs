@@ -8,6 +8,7 @@ use crate::model::{
     Entities, FileHeader, MonitorDeclaration, ParameterDeclaration, Position, Storyboard,
     VariableDeclaration,
 };
+use crate::source::SourcePos;
 
 /// A loaded scenario: every parameter, expression and catalog reference resolved.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,6 +62,8 @@ pub struct TrafficSignalController {
     pub reference: Option<String>,
     /// Phases in order.
     pub phases: Vec<Phase>,
+    /// Where the element is.
+    pub pos: SourcePos,
 }
 
 /// A signal phase (XSD `Phase`).
@@ -74,4 +77,6 @@ pub struct Phase {
     pub signal_states: Vec<(String, String)>,
     /// TrafficSignalGroupState@state (1.2+).
     pub group_state: Option<String>,
+    /// Where the element is.
+    pub pos: SourcePos,
 }

@@ -64,6 +64,7 @@ pub(crate) fn read_road_network<'a>(
                     duration: ctx.req(p, "duration")?,
                     signal_states,
                     group_state,
+                    pos: ctx.pos(p),
                 });
             }
             road.traffic_signal_controllers
@@ -72,6 +73,7 @@ pub(crate) fn read_road_network<'a>(
                     delay: ctx.opt(c, "delay")?,
                     reference: ctx.opt(c, "reference")?,
                     phases,
+                    pos: ctx.pos(c),
                 });
         }
     }

@@ -329,6 +329,7 @@ fn read_monitor_declarations<'a>(
         out.push(MonitorDeclaration {
             name: ctx.req(d, "name")?,
             value: ctx.req(d, "value")?,
+            pos: ctx.pos(d),
         });
     }
     Ok(out)

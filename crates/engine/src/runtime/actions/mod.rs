@@ -320,11 +320,15 @@ impl Host<'_> {
                     Part::Done(ActionStatus::Stopped)
                 }))
             }
+            RoutingAction::RandomRoute => {
+                routing::random(self.world, actor, &pos, &name, time, self.events);
+                Ok(Part::Done(ActionStatus::Ended))
+            }
             _ => {
                 self.events.push(EventRecord::unsupported(
                     time,
                     &name,
-                    "RandomRouteAction",
+                    "this RoutingAction",
                     &pos,
                 ));
                 Ok(Part::Done(ActionStatus::Ended))
@@ -369,16 +373,31 @@ impl Host<'_> {
                 &pos,
             ),
             GlobalAction::TrafficSignal(scenario::TrafficSignalAction::State { name, state }) => {
-                self.world.signals.insert(name.clone(), state.clone());
+                self.world
+                    .signals
+                    .set_state(name, state, self.time, self.events);
                 Ok(())
             }
             GlobalAction::TrafficSignal(scenario::TrafficSignalAction::Controller {
                 traffic_signal_controller_ref,
                 phase,
-            }) => {
-                self.world
-                    .signal_phases
-                    .insert(traffic_signal_controller_ref.clone(), phase.clone());
+            }) => self.world.signals.set_phase(
+                traffic_signal_controller_ref,
+                phase,
+                self.time,
+                &pos,
+                self.events,
+            ),
+            GlobalAction::SetMonitor { monitor_ref, value } => {
+                // The reader checks that monitorRef names a MonitorDeclaration.
+                let old = self.world.monitors.insert(monitor_ref.clone(), *value);
+                if old != Some(*value) {
+                    self.events.push(EventRecord::Monitor {
+                        time: self.time,
+                        element: monitor_ref.clone(),
+                        value: *value,
+                    });
+                }
                 Ok(())
             }
             _ => {

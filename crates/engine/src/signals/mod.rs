@@ -1,0 +1,190 @@
+//! Traffic signals at runtime (OpenSCENARIO 1.3: RoadNetwork/TrafficSignals with
+//! `TrafficSignalController`, `Phase`, `TrafficSignalState`, `TrafficSignalGroupState`;
+//! `TrafficSignalControllerAction`, `TrafficSignalStateAction`; read by
+//! `TrafficSignalCondition` and `TrafficSignalControllerCondition`).
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `schedule` | which phase each controller is in at a time: cycling, reference and delay, a phase set by an action |
+//!
+//! [`Signals`] keeps the live state: each controller's phase and each signal's state (the
+//! strings of the scenario, e.g. `"off;off;on"`). When a controller enters a phase, the phase's
+//! TrafficSignalStates set their signals; a TrafficSignalStateAction sets one signal until the
+//! next phase of a controller that lists it sets it again. The state at time t is what the
+//! step that begins at t reads in its conditions and what the frame at t shows. Every change is
+//! an event record (`kind` `trafficSignalController` with the phases, `trafficSignal` with the
+//! states), so a run's log shows when each light switched.
+
+mod schedule;
+
+use std::collections::BTreeMap;
+
+use scenario::{SourcePos, TrafficSignalController};
+
+use crate::output::EventRecord;
+use crate::runtime::RuntimeError;
+use schedule::Schedule;
+
+/// One controller's names and states, in the scenario's order.
+#[derive(Debug, Clone)]
+struct Controller {
+    name: String,
+    /// Phase names and their (signal id, state) lists.
+    phases: Vec<(String, Vec<(String, String)>)>,
+}
+
+/// The traffic signal controllers of a run and the current state of every signal.
+#[derive(Debug, Clone, Default)]
+pub struct Signals {
+    controllers: Vec<Controller>,
+    schedule: Schedule,
+    /// The phase each controller is in (index), once entered.
+    current: Vec<Option<usize>>,
+    /// Signal id → state.
+    states: BTreeMap<String, String>,
+}
+
+impl Signals {
+    /// The controllers of a scenario (errors name the controller's or phase's file:line:col).
+    /// No phase is entered yet: [`Signals::advance`] at t = 0 enters the first ones.
+    pub(crate) fn new(controllers: &[TrafficSignalController]) -> Result<Self, RuntimeError> {
+        let schedule = Schedule::new(controllers)?;
+        Ok(Signals {
+            controllers: controllers
+                .iter()
+                .map(|c| Controller {
+                    name: c.name.clone(),
+                    phases: c
+                        .phases
+                        .iter()
+                        .map(|p| (p.name.clone(), p.signal_states.clone()))
+                        .collect(),
+                })
+                .collect(),
+            schedule,
+            current: vec![None; controllers.len()],
+            states: BTreeMap::new(),
+        })
+    }
+
+    /// The current state of signal `id`, if any was set.
+    pub fn state(&self, id: &str) -> Option<&str> {
+        self.states.get(id).map(String::as_str)
+    }
+
+    /// The phase controller `name` is in, if it is declared and has phases.
+    pub fn phase(&self, name: &str) -> Option<&str> {
+        let i = self.controllers.iter().position(|c| c.name == name)?;
+        let k = self.current[i]?;
+        Some(self.controllers[i].phases[k].0.as_str())
+    }
+
+    /// Every signal id with a state, and the state, in id order.
+    pub fn states(&self) -> impl Iterator<Item = (&str, &str)> {
+        self.states.iter().map(|(k, v)| (k.as_str(), v.as_str()))
+    }
+
+    /// Brings every controller to time `t`: a controller that enters a new phase sets the
+    /// phase's signal states. The changes are pushed to `log`, controllers in declaration order.
+    pub(crate) fn advance(&mut self, t: f64, log: &mut Vec<EventRecord>) {
+        for i in 0..self.controllers.len() {
+            let phase = self.schedule.clocks()[i].phase_at(t);
+            if phase.is_some() && phase != self.current[i] {
+                self.enter(i, phase, t, log);
+            }
+        }
+    }
+
+    /// Controller `i` enters `phase` at `t`.
+    fn enter(&mut self, i: usize, phase: Option<usize>, t: f64, log: &mut Vec<EventRecord>) {
+        let Some(k) = phase else { return };
+        let c = &self.controllers[i];
+        let from = self.current[i].map(|j| c.phases[j].0.clone());
+        log.push(EventRecord::Signal {
+            time: t,
+            element: c.name.clone(),
+            kind: SignalKind::Controller,
+            from,
+            to: c.phases[k].0.clone(),
+        });
+        self.current[i] = Some(k);
+        let states = self.controllers[i].phases[k].1.clone();
+        for (id, state) in states {
+            self.set_state(&id, &state, t, log);
+        }
+    }
+
+    /// TrafficSignalStateAction: signal `id` shows `state` from `t` on.
+    pub(crate) fn set_state(&mut self, id: &str, state: &str, t: f64, log: &mut Vec<EventRecord>) {
+        let from = self.states.get(id).cloned();
+        if from.as_deref() == Some(state) {
+            return;
+        }
+        log.push(EventRecord::Signal {
+            time: t,
+            element: id.to_owned(),
+            kind: SignalKind::Signal,
+            from,
+            to: state.to_owned(),
+        });
+        self.states.insert(id.to_owned(), state.to_owned());
+    }
+
+    /// TrafficSignalControllerAction: controller `name` enters `phase` at `t` and cycles on
+    /// from there; controllers connected to it keep their delay to it (schedule.rs).
+    pub(crate) fn set_phase(
+        &mut self,
+        name: &str,
+        phase: &str,
+        t: f64,
+        pos: &SourcePos,
+        log: &mut Vec<EventRecord>,
+    ) -> Result<(), RuntimeError> {
+        let Some(i) = self.controllers.iter().position(|c| c.name == name) else {
+            return Err(RuntimeError::at(
+                "the name of a TrafficSignalController of the RoadNetwork",
+                format!("'{name}'"),
+                pos,
+            ));
+        };
+        let Some(k) = self.controllers[i].phases.iter().position(|p| p.0 == phase) else {
+            let names: Vec<&str> = self.controllers[i]
+                .phases
+                .iter()
+                .map(|p| p.0.as_str())
+                .collect();
+            return Err(RuntimeError::at(
+                format!("a phase of controller '{name}' ({})", names.join(", ")),
+                format!("'{phase}'"),
+                pos,
+            ));
+        };
+        self.schedule.set_phase(i, k, t);
+        self.enter(i, Some(k), t, log);
+        // Connected controllers take their new place in the cycle at once.
+        self.advance(t, log);
+        Ok(())
+    }
+}
+
+/// What an [`EventRecord::Signal`] is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SignalKind {
+    /// A TrafficSignalController changed phase.
+    Controller,
+    /// A traffic signal changed state.
+    Signal,
+}
+
+impl SignalKind {
+    /// The `kind` of the event log.
+    pub fn name(self) -> &'static str {
+        match self {
+            SignalKind::Controller => "trafficSignalController",
+            SignalKind::Signal => "trafficSignal",
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;
