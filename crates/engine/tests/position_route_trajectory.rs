@@ -1,5 +1,5 @@
 //! RoutePosition (OpenSCENARIO 1.3 §7.5, InRoutePosition), TrajectoryPosition (§7.6, 1.1+)
-//! and GeoPosition, hand-computed on esmini's straight_500m.xodr (road "1" along +x; lane −1
+//! hand-computed on esmini's straight_500m.xodr (road "1" along +x; lane −1
 //! centre at t = −1.535 driven towards +s, lane 1 at t = 1.535 driven towards −s).
 
 mod condition_support;
@@ -169,23 +169,6 @@ fn trajectory_position_on_a_polyline() {
         e.to_string(),
         "expected s in [0, 20] along trajectory \"T\", found 25 at test.xosc:7:9"
     );
-}
-
-#[test]
-fn geo_position_is_reported_unsupported_with_the_geo_reference() {
-    let w = straight();
-    let p = at(PositionKind::Geo {
-        latitude_deg: 37.35,
-        longitude_deg: -122.08,
-        altitude: None,
-        vertical_road_selection: None,
-        orientation: None,
-    });
-    let e = resolve(&p, &w).unwrap_err();
-    let msg = e.to_string();
-    assert!(matches!(e.kind(), PositionErrorKind::GeoUnsupported(_)));
-    assert!(msg.starts_with("expected a road network geoReference that oscsim can invert for a GeoPosition, found \"+proj=utm"), "{msg}");
-    assert!(msg.ends_with(" at test.xosc:7:9"), "{msg}");
 }
 
 #[test]

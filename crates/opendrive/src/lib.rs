@@ -20,6 +20,8 @@
 //!   [`RoadNetwork::predecessors`], [`RoadNetwork::driving_direction`], [`is_drivable`];
 //!   routes: [`RoadNetwork::route`] from one [`LanePosition`] to another → [`LaneRoute`];
 //!   [`RoadNetwork::route_by`] under a caller's [`LaneCost`] → [`LanePath`].
+//! - Georeferencing (§8.5): [`GeoTransform`] between local x/y and WGS 84 latitude/longitude
+//!   through the header's `<geoReference>` and `<offset>`.
 //! - Errors: [`Error`] with [`ErrorKind`], file and 1-based [`TextPos`].
 //! - Data: [`Road`] (`id`, `length`, `junction`, `rule`, `links`, `types`, `plan_view`,
 //!   `elevation`, `superelevation`, `lane_offsets`, `lane_sections`, `objects`, `signals`),
@@ -48,6 +50,7 @@
 #![deny(missing_docs)]
 
 mod error;
+mod geo;
 mod geometry;
 mod math;
 mod model;
@@ -56,6 +59,7 @@ mod parse;
 mod query;
 
 pub use error::{Error, ErrorKind, TextPos};
+pub use geo::{GeoError, GeoTransform};
 pub use geometry::{
     Arc, Geometry, GeometryKind, LocalPoint, ParamPoly3, ParamRange, PlanView, Poly3, RefPoint,
     Spiral,

@@ -33,11 +33,10 @@ pub enum PositionErrorKind {
         /// s, m.
         s: f64,
     },
-    /// GeoPosition on a road network whose geoReference oscsim cannot invert.
-    #[error(
-        "expected a road network geoReference that oscsim can invert for a GeoPosition, found {0}"
-    )]
-    GeoUnsupported(String),
+    /// A GeoPosition that the road network's georeference cannot map (no geoReference, not a
+    /// PROJ string, a point outside the projection).
+    #[error("{0}")]
+    Geo(opendrive::GeoError),
     /// The route of a RoutePosition cannot be planned (too few waypoints, waypoints not
     /// joined by the road network); it names its own place.
     #[error("{0}")]

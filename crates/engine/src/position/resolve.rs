@@ -1,11 +1,13 @@
 //! The front door: [`resolve`] dispatches a `scenario::Position` (OpenSCENARIO 1.3 §7.4, XSD
 //! `Position` and its ten choices) to the module of its form.
 //!
-//! GeoPosition (WGS84 latitude/longitude) needs the road network's `geoReference` (a PROJ
-//! string) inverted into the network's x/y; doing that right needs a projection library
-//! (PROJ itself is a C library), and the corpus' geoReferences are full UTM/transverse
-//! Mercator definitions with datum shifts. oscsim therefore reports GeoPosition as
-//! unsupported, naming the network's geoReference (or its absence).
+//! GeoPosition (WGS 84 latitude/longitude, OpenSCENARIO 1.3 XSD `GeoPosition`) goes through the
+//! road network's `geoReference` and `offset` to the network's x/y (opendrive's
+//! `GeoTransform`, OpenDRIVE 1.8 §8.5), and from there it is a WorldPosition: `altitude` is
+//! the height above the WGS 84 ellipsoid, which oscsim does not map (no geoid model), so z is
+//! the road surface's as for a WorldPosition without z; an Orientation (absent `type` too) is
+//! absolute in the network's x/y frame, and `type="relative"` is refused: a GeoPosition has no
+//! reference to be relative to.
 
 use scenario::{Orientation, Position, PositionKind};
 
@@ -13,7 +15,7 @@ use super::lane::{lane, parse_lane_id, relative_lane, Along};
 use super::road::{relative_road, road};
 use super::route::route_position;
 use super::trajectory::trajectory_position;
-use super::world::{finite, relative, world};
+use super::world::{finite, geo, relative, world};
 use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
 
 /// Resolves `position` to a world pose and road position, reading reference entities and the
@@ -133,16 +135,19 @@ pub fn resolve<Q: EntityQuery + ?Sized>(
             orientation.as_ref(),
             pos,
         ),
-        PositionKind::Geo { .. } => {
-            let found = match &network.header().geo_reference {
-                Some(g) => format!("\"{}\"", g.0.trim()),
-                None => "none".to_string(),
-            };
-            Err(PositionError::new(
-                PositionErrorKind::GeoUnsupported(found),
-                pos,
-            ))
-        }
+        PositionKind::Geo {
+            latitude_deg,
+            longitude_deg,
+            altitude,
+            orientation,
+            ..
+        } => geo(
+            network,
+            [*latitude_deg, *longitude_deg],
+            *altitude,
+            orientation.as_ref(),
+            pos,
+        ),
         _ => Err(PositionError::new(
             PositionErrorKind::Unsupported {
                 expected: "one of the ten Position forms of OpenSCENARIO 1.3",

@@ -106,3 +106,41 @@ pub(crate) fn relative<Q: EntityQuery + ?Sized>(
     let pose = Pose { x, y, z, h, p, r };
     Ok(ResolvedPosition::located(ctx.road_network(), pose))
 }
+
+/// `GeoPosition`: latitude and longitude (degrees) through the network's georeference to x/y,
+/// then as a WorldPosition with z on the road surface (resolve.rs says why).
+pub(crate) fn geo(
+    network: &RoadNetwork,
+    [latitude, longitude]: [Real; 2],
+    altitude: Option<Real>,
+    orientation: Option<&Orientation>,
+    pos: &SourcePos,
+) -> Result<ResolvedPosition, PositionError> {
+    finite(
+        &[
+            ("latitudeDeg", latitude),
+            ("longitudeDeg", longitude),
+            ("altitude", altitude.unwrap_or(0.0)),
+        ],
+        pos,
+    )?;
+    let transform = opendrive::GeoTransform::new(network.header())
+        .map_err(|e| PositionError::new(PositionErrorKind::Geo(e), pos))?;
+    let (x, y) = transform
+        .to_local(latitude, longitude)
+        .map_err(|e| PositionError::new(PositionErrorKind::Geo(e), pos))?;
+    let angles = match orientation {
+        None => [None; 3],
+        Some(o) if o.reference == Some(scenario::ReferenceContext::Relative) => {
+            return Err(PositionError::new(
+                PositionErrorKind::Unsupported {
+                    expected: "an absolute Orientation for a GeoPosition",
+                    found: "type=\"relative\" (a GeoPosition has no reference)",
+                },
+                pos,
+            ))
+        }
+        Some(o) => [Some(o.h), Some(o.p), Some(o.r)],
+    };
+    world(network, x, y, None, angles, pos)
+}

@@ -1,5 +1,5 @@
 //! `<header>` with `<geoReference>` and `<offset>` (OpenDRIVE 1.8 header element, §8
-//! georeferencing). Kept as data; oscsim works in the file's inertial frame.
+//! georeferencing). oscsim works in the file's inertial frame; `geo.rs` maps it to WGS 84.
 
 /// `<header>`: file metadata.
 #[derive(Debug, Clone, Default, PartialEq)]
