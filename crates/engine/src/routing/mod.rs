@@ -11,6 +11,7 @@
 //! | `cost` | the cost of driving a lane stretch, changing lanes and entering a junction per RouteStrategy, for the lane-graph search `opendrive::RoadNetwork::route_by` |
 //! | `random` | the seeded, order-independent lane weights of routeStrategy `random` |
 //! | `planned` | `PlannedRoute`: stretches, lane changes, waypoints' path s, look-ups by path s |
+//! | `random_route` | `plan_random`: RandomRouteAction's seeded walk over the lane graph |
 //! | `plan` | `plan_route` (Route with waypoints, closed routes) and `plan_between` (AcquirePositionAction) |
 
 mod cost;
@@ -18,9 +19,13 @@ mod error;
 mod plan;
 mod planned;
 mod random;
+mod random_route;
 
 pub use cost::{RoutingOptions, DEFAULT_SPEED, UNLIMITED_ROAD_SPEED};
 pub use error::{RoutingError, RoutingErrorKind};
 pub use opendrive::LaneChange;
 pub use plan::{plan_between, plan_route};
 pub use planned::{PlannedRoute, RoutedWaypoint};
+pub use random_route::{
+    plan_random, HORIZON as RANDOM_ROUTE_HORIZON, MAX_DECISIONS as RANDOM_ROUTE_MAX_DECISIONS,
+};

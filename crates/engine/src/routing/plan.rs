@@ -17,9 +17,10 @@ use crate::domain;
 use crate::position::{resolve, EntityQuery};
 
 /// A point the route must pass: where, and where it was written.
-struct Stop {
-    lane: LanePosition,
-    pos: SourcePos,
+#[derive(Clone)]
+pub(crate) struct Stop {
+    pub(crate) lane: LanePosition,
+    pub(crate) pos: SourcePos,
 }
 
 /// Plans `route` (inline or from the Route catalog, as the scenario model gives it),
@@ -115,7 +116,8 @@ fn describe(p: &LanePosition) -> String {
     format!("road \"{}\", lane {}, s = {:.3}", p.road_id, p.lane_id, p.s)
 }
 
-fn plan_legs(
+/// Plans the legs `(from stop, to stop, strategy)` of route `name` through `stops`.
+pub(crate) fn plan_legs(
     network: &RoadNetwork,
     name: &str,
     closed: bool,

@@ -4,6 +4,9 @@
 //! (module `controller::route`). Planning is the `routing` module's, with the run's seed for
 //! routeStrategy `random`.
 //!
+//! RandomRouteAction plans a seeded random walk from the actor's lane (routing/random_route.rs)
+//! and assigns it like a route.
+//!
 //! AcquirePositionAction plans the shortest route from the actor's lane position to the target
 //! and ends at once; reaching the target is the default controller's job along that route.
 //! A route that cannot be planned is recorded in the event log and the actor keeps driving by
@@ -14,7 +17,7 @@ use scenario::{Position, Route, RouteStrategy, SourcePos};
 
 use crate::output::EventRecord;
 use crate::position::resolve;
-use crate::routing::{plan_between, plan_route, PlannedRoute, RoutingOptions};
+use crate::routing::{plan_between, plan_random, plan_route, PlannedRoute, RoutingOptions};
 use crate::runtime::controller::RouteFollow;
 use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
@@ -96,5 +99,43 @@ pub(crate) fn acquire(
     ) {
         Ok(planned) => give(world, actor, planned),
         Err(e) => fail(e.to_string()),
+    }
+}
+
+/// RandomRouteAction: plans a random route from the actor's lane and assigns it.
+pub(crate) fn random(
+    world: &mut World,
+    actor: EntityId,
+    pos: &SourcePos,
+    name: &str,
+    time: f64,
+    events: &mut Vec<EventRecord>,
+) {
+    let e = world.entity(actor);
+    let Some(rp) = e.road_position.clone() else {
+        events.push(EventRecord::Error {
+            time,
+            element: name.to_owned(),
+            message: format!(
+                "expected entity '{}' on a road for a RandomRouteAction, found it off the road at {pos} (the route is not assigned)",
+                e.name
+            ),
+        });
+        return;
+    };
+    let from = LanePosition {
+        road_id: rp.road_id,
+        lane_id: rp.lane_id,
+        s: rp.s,
+        offset: rp.offset,
+    };
+    let entity = e.name.clone();
+    match plan_random(&world.network, &entity, &from, &options(world), pos) {
+        Ok(planned) => give(world, actor, planned),
+        Err(e) => events.push(EventRecord::Error {
+            time,
+            element: name.to_owned(),
+            message: format!("{e} (the route is not assigned)"),
+        }),
     }
 }
