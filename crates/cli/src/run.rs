@@ -12,7 +12,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::Context;
-use engine::output::{CsvWriter, JsonlWriter};
+use engine::output::{CsvWriter, JsonlWriter, SignalsCsvWriter};
 use engine::{Engine, EngineConfig, EventRecord, EventSink, FrameSink};
 
 /// Arguments of `oscsim run`.
@@ -50,6 +50,10 @@ pub struct RunArgs {
     /// Write trajectories here (long CSV: time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,speed).
     #[arg(long, value_name = "FILE")]
     csv: Option<PathBuf>,
+    /// Write the traffic signal states here (CSV: time,signal,state; one row per signal per
+    /// frame).
+    #[arg(long, value_name = "FILE.csv")]
+    signals: Option<PathBuf>,
     /// Write the event log here (JSON lines, one storyboard transition per line).
     #[arg(long, value_name = "FILE.jsonl")]
     events: Option<PathBuf>,
@@ -141,6 +145,9 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     let mut frames: Vec<Box<dyn FrameSink>> = Vec::new();
     if let Some(path) = &args.csv {
         frames.push(Box::new(CsvWriter::new(create(path)?)));
+    }
+    if let Some(path) = &args.signals {
+        frames.push(Box::new(SignalsCsvWriter::new(create(path)?)));
     }
     if let Some(path) = &args.osi {
         let options = crate::osi_sink::OsiOptions {

@@ -36,7 +36,7 @@ impl<W: Write> CsvWriter<W> {
 }
 
 /// `name` quoted per RFC 4180 when it holds a comma, quote or line break.
-fn field(name: &str) -> std::borrow::Cow<'_, str> {
+pub(super) fn field(name: &str) -> std::borrow::Cow<'_, str> {
     if name.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", name.replace('"', "\"\"")).into()
     } else {

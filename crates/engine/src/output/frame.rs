@@ -25,6 +25,8 @@ pub struct Frame<'a> {
     pub step: u64,
     /// The entities in declaration order.
     pub entities: &'a [Entity],
+    /// Traffic signal controllers' phases and signal states (crate::signals).
+    pub signals: &'a crate::signals::Signals,
 }
 
 impl<'a> Frame<'a> {

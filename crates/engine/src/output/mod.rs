@@ -8,13 +8,16 @@
 //! | `event` | event records (storyboard transitions, custom commands, errors) and `EventSink` |
 //! | `csv` | the long-layout trajectory CSV |
 //! | `jsonl` | the JSON-lines event log |
+//! | `signals_csv` | the traffic signal states per frame, companion of the trajectory CSV |
 
 mod csv;
 mod event;
 mod frame;
 mod jsonl;
+mod signals_csv;
 
 pub use csv::CsvWriter;
 pub use event::{EventRecord, EventSink};
 pub use frame::{EntityFrame, Frame, FrameSink};
 pub use jsonl::JsonlWriter;
+pub use signals_csv::{SignalsCsvWriter, SIGNALS_HEADER};

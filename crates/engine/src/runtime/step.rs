@@ -302,6 +302,7 @@ impl Engine {
                     time,
                     step: self.step,
                     entities: &world.entities,
+                    signals: &world.signals,
                 })
                 .map_err(output_error("frames"))?;
             self.counters.output += clock.elapsed();
@@ -354,6 +355,7 @@ impl Engine {
                 time,
                 step: self.step,
                 entities: &world.entities,
+                signals: &world.signals,
             })
             .map_err(output_error("frames"))?;
         self.emit(&log.into_inner(), events)?;
