@@ -29,7 +29,7 @@ enum Command {
     /// Load scenarios with their road networks and catalogs and report errors.
     Validate(validate::ValidateArgs),
     /// Run a scenario headless and write trajectories and the event log.
-    Run(run::RunArgs),
+    Run(Box<run::RunArgs>),
 }
 
 fn main() -> ExitCode {
@@ -37,7 +37,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Road(args) => road::run(args),
         Command::Validate(args) => validate::run(args),
-        Command::Run(args) => run::run(args),
+        Command::Run(args) => run::run(*args),
     };
     match result {
         Ok(code) => code,
