@@ -214,14 +214,21 @@ impl BinaryOp {
                     unsigned: ub,
                 },
             ) if self != Self::Div => {
-                // |a|, |b| < 2^64, so the sum, difference and product fit 128 bits.
+                // |a|, |b| < 2^64: the sum and difference fit 128 bits, the product may not
+                // ((2^64 − 1)² > 2^127 − 1), so it is checked; beyond 128 bits it is beyond 64.
                 let exact = match self {
-                    Self::Add => a + b,
-                    Self::Sub => a - b,
-                    Self::Mul => a * b,
-                    _ => a % b,
+                    Self::Add => a.checked_add(b),
+                    Self::Sub => a.checked_sub(b),
+                    Self::Mul => a.checked_mul(b),
+                    _ => a.checked_rem(b),
                 };
-                integer(exact, ua && ub, op, offset)
+                match exact {
+                    Some(exact) => integer(exact, ua && ub, op, offset),
+                    None => Err(ExprError::new(
+                        ExprErrorKind::IntegerOverflow { operator: op },
+                        offset,
+                    )),
+                }
             }
             _ => {
                 let (a, b) = (lhs.to_f64(), rhs.to_f64());

@@ -1,0 +1,34 @@
+//! Inputs the fuzzers found (fuzz/, docs/robustness.md), kept as regression tests: each test is
+//! named after the bug, its input is in `tests/files/fuzz/` as the fuzzer wrote it (or cut down
+//! by hand where the comment says so).
+
+use scenario::expr::{evaluate, ExprErrorKind, Value};
+
+fn no_parameters(_: &str) -> Option<Value> {
+    None
+}
+
+/// The product of two unsigned literals near 2^64 overflowed the 128-bit intermediate
+/// ((2^64 − 1)² > 2^127 − 1): a panic with overflow checks, a wrap-around without. It is now
+/// the 64-bit overflow error at the `*`.
+#[test]
+fn expr_unsigned_product_overflows_i128() {
+    // 13333333666666666666² ≈ 1.78e38 > i128::MAX ≈ 1.70e38; the `*` is at byte 20.
+    let err = evaluate("13333333666666666666*13333333666666666666", &no_parameters).unwrap_err();
+    assert!(matches!(
+        err.kind(),
+        ExprErrorKind::IntegerOverflow { operator: "*" }
+    ));
+    assert_eq!(err.offset(), 20);
+    assert_eq!(
+        err.to_string(),
+        "expected a result of * within the 64-bit integer range, found an overflow"
+    );
+    // The fuzzer's input: the same product inside a longer sum, an error too.
+    let found = include_str!("files/fuzz/expr_unsigned_product_overflows_i128.txt");
+    let err = evaluate(found, &no_parameters).unwrap_err();
+    assert!(
+        matches!(err.kind(), ExprErrorKind::IntegerOverflow { .. }),
+        "{err}"
+    );
+}
