@@ -2,6 +2,9 @@
 //! named after the bug, its input is in `tests/files/fuzz/` as the fuzzer wrote it (or cut down
 //! by hand where the comment says so).
 
+use std::path::Path;
+
+use scenario::distribution::{DistributionErrorKind, DistributionPlan, MAX_REJECTED_DRAWS};
 use scenario::expr::{evaluate, ExprErrorKind, Value};
 
 fn no_parameters(_: &str) -> Option<Value> {
@@ -31,4 +34,31 @@ fn expr_unsigned_product_overflows_i128() {
         matches!(err.kind(), ExprErrorKind::IntegerOverflow { .. }),
         "{err}"
     );
+}
+
+/// A truncation Range that accepts one draw in a few hundred, over 100 000 runs and several
+/// parameters, took billions of draws (the per-value limit of MAX_ATTEMPTS never tripped): a
+/// hang. Discarded draws are now limited over the whole plan.
+#[test]
+fn distribution_truncation_draws_unbounded() {
+    let path = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/files/fuzz/distribution_truncation_draws_unbounded.xosc"
+    ));
+    let err = DistributionPlan::load(path).unwrap_err();
+    assert!(
+        matches!(
+            err.kind(),
+            DistributionErrorKind::RangeRarelyReached {
+                limit: MAX_REJECTED_DRAWS
+            }
+        ),
+        "{err}"
+    );
+    // At the StochasticDistribution element: line 11, column 7.
+    assert_eq!((err.pos().row, err.pos().col), (11, 7));
+    assert!(err.to_string().ends_with(&format!(
+        "found more than {MAX_REJECTED_DRAWS} draws outside them at {}:11:7",
+        path.display()
+    )));
 }

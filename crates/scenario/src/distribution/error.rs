@@ -97,6 +97,13 @@ pub enum DistributionErrorKind {
         /// How many draws were tried for one value.
         attempts: u32,
     },
+    /// Truncation ranges discarded more draws over the plan than
+    /// [`MAX_REJECTED_DRAWS`](super::stochastic::MAX_REJECTED_DRAWS); reported at the
+    /// distribution whose draw went over.
+    RangeRarelyReached {
+        /// The limit on discarded draws.
+        limit: u64,
+    },
 }
 
 impl std::fmt::Display for DistributionErrorKind {
@@ -126,6 +133,10 @@ impl std::fmt::Display for DistributionErrorKind {
             Self::RangeUnreachable { attempts } => write!(
                 f,
                 "expected a Range the distribution reaches, found no sample inside it in {attempts} draws"
+            ),
+            Self::RangeRarelyReached { limit } => write!(
+                f,
+                "expected Ranges the distributions reach more often, found more than {limit} draws outside them"
             ),
         }
     }

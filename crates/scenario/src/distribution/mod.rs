@@ -20,4 +20,4 @@ mod stochastic;
 
 pub use error::{DistributionError, DistributionErrorKind, TextPos};
 pub use plan::{read, DistributionPlan, MAX_RUNS};
-pub use stochastic::{seed_for, MAX_ATTEMPTS};
+pub use stochastic::{seed_for, MAX_ATTEMPTS, MAX_REJECTED_DRAWS};

@@ -19,8 +19,10 @@
 //! - `ProbabilityDistributionSet`: a value by `WeightedIndex` over the weights.
 //!
 //! A `Range` on Normal, LogNormal or Poisson truncates the distribution: draws outside
-//! [lower, upper] are discarded and drawn again, at most [`MAX_ATTEMPTS`] times per value
-//! (then an error, never a hang). The same seed gives the same values on every machine whose
+//! [lower, upper] are discarded and drawn again, at most [`MAX_ATTEMPTS`] times per value and
+//! [`MAX_REJECTED_DRAWS`] times over the whole plan (then an error, never a hang: a Range
+//! that accepts one draw in a few hundred, on many parameters and runs, would otherwise take
+//! billions of draws). The same seed gives the same values on every machine whose
 //! `f64` `ln`/`exp` (used by the ziggurat tails and Poisson) agree, which holds for one target.
 
 use std::collections::BTreeMap;
@@ -36,6 +38,9 @@ use super::plan::MAX_RUNS;
 
 /// Most draws tried for one value of a truncated distribution.
 pub const MAX_ATTEMPTS: u32 = 10_000;
+
+/// Most draws discarded by truncation ranges over one plan (about a second of drawing).
+pub const MAX_REJECTED_DRAWS: u64 = 10_000_000;
 
 /// The generator seed for `randomSeed` (see the module doc).
 pub fn seed_for(random_seed: Option<f64>) -> u64 {
@@ -88,6 +93,7 @@ pub(crate) fn sample(
         .map(|d| sampler(&d.kind).map_err(|kind| (kind, d.pos)))
         .collect::<Result<Vec<_>, _>>()?;
     let mut rng = ChaCha20Rng::seed_from_u64(seed_for(stochastic.random_seed));
+    let mut rejected = 0u64;
     (0..runs)
         .map(|_| {
             stochastic
@@ -97,7 +103,7 @@ pub(crate) fn sample(
                 .map(|(d, s)| {
                     Ok((
                         d.parameter_name.clone(),
-                        draw(s, &mut rng).map_err(|kind| (kind, d.pos))?,
+                        draw(s, &mut rng, &mut rejected).map_err(|kind| (kind, d.pos))?,
                     ))
                 })
                 .collect()
@@ -158,13 +164,18 @@ fn sampler(kind: &Sto) -> Result<Sampler<'_>, Kind> {
     })
 }
 
-fn draw(sampler: &Sampler<'_>, rng: &mut ChaCha20Rng) -> Result<String, Kind> {
+/// One value; `rejected` counts the plan's draws discarded by truncation so far.
+fn draw(sampler: &Sampler<'_>, rng: &mut ChaCha20Rng, rejected: &mut u64) -> Result<String, Kind> {
     Ok(match sampler {
         Sampler::Uniform(range) => uniform(range, rng).to_string(),
-        Sampler::Normal(d, range) => truncated(|r| d.sample(r), *range, rng)?.to_string(),
-        Sampler::LogNormal(d, range) => truncated(|r| d.sample(r), *range, rng)?.to_string(),
+        Sampler::Normal(d, range) => truncated(|r| d.sample(r), *range, rng, rejected)?.to_string(),
+        Sampler::LogNormal(d, range) => {
+            truncated(|r| d.sample(r), *range, rng, rejected)?.to_string()
+        }
         // Poisson samples are integral doubles; `{}` writes them without a fraction.
-        Sampler::Poisson(d, range) => truncated(|r| d.sample(r), *range, rng)?.to_string(),
+        Sampler::Poisson(d, range) => {
+            truncated(|r| d.sample(r), *range, rng, rejected)?.to_string()
+        }
         Sampler::Histogram(index, bins) => uniform(&bins[index.sample(rng)].0, rng).to_string(),
         Sampler::Set(index, elements) => elements[index.sample(rng)].0.clone(),
     })
@@ -175,11 +186,13 @@ fn uniform(range: &Range, rng: &mut ChaCha20Rng) -> f64 {
     range.lower_limit + (range.upper_limit - range.lower_limit) * u
 }
 
-/// Draws until the value lies in `range` (if any), at most [`MAX_ATTEMPTS`] times.
+/// Draws until the value lies in `range` (if any), at most [`MAX_ATTEMPTS`] times, and while
+/// the plan's discarded draws (`rejected`) stay within [`MAX_REJECTED_DRAWS`].
 fn truncated(
     mut draw: impl FnMut(&mut ChaCha20Rng) -> f64,
     range: Option<Range>,
     rng: &mut ChaCha20Rng,
+    rejected: &mut u64,
 ) -> Result<f64, Kind> {
     let Some(range) = range else {
         return Ok(draw(rng));
@@ -188,6 +201,12 @@ fn truncated(
         let x = draw(rng);
         if (range.lower_limit..=range.upper_limit).contains(&x) {
             return Ok(x);
+        }
+        *rejected += 1;
+        if *rejected > MAX_REJECTED_DRAWS {
+            return Err(Kind::RangeRarelyReached {
+                limit: MAX_REJECTED_DRAWS,
+            });
         }
     }
     Err(Kind::RangeUnreachable {
