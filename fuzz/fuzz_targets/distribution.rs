@@ -6,9 +6,12 @@
 use std::path::Path;
 
 use libfuzzer_sys::fuzz_target;
+
+mod support;
 use scenario::distribution::{self, DistributionPlan, MAX_RUNS};
 
 fuzz_target!(|data: &[u8]| {
+    support::watchdog::start(data);
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };

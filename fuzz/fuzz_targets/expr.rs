@@ -4,6 +4,8 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
+
+mod support;
 use scenario::expr::{Expression, Value};
 
 fn lookup(name: &str) -> Option<Value> {
@@ -19,6 +21,7 @@ fn lookup(name: &str) -> Option<Value> {
 }
 
 fuzz_target!(|data: &[u8]| {
+    support::watchdog::start(data);
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };

@@ -21,6 +21,7 @@ fn finite(values: &[f64]) -> bool {
 }
 
 fuzz_target!(|data: &[u8]| {
+    support::watchdog::start(data);
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };

@@ -19,7 +19,7 @@
 use std::path::Path;
 use std::sync::OnceLock;
 
-use arbitrary::Arbitrary;
+use arbitrary::{Arbitrary, Unstructured};
 use engine::storyboard::{ElementState as S, Transition as T};
 use engine::{Engine, EngineConfig, EventRecord};
 use libfuzzer_sys::fuzz_target;
@@ -27,6 +27,7 @@ use scenario::{MemoryFiles, Scenario};
 
 #[path = "structured/gen.rs"]
 mod gen;
+mod support;
 
 /// Most steps run per input (30 s at the default 0.05 s step).
 const MAX_STEPS: u64 = 600;
@@ -62,11 +63,17 @@ fn road_path() -> &'static str {
     })
 }
 
-fuzz_target!(|input: Input| {
+fuzz_target!(|data: &[u8]| {
+    support::watchdog::start(data);
+    let Ok(input) = Input::arbitrary_take_rest(Unstructured::new(data)) else {
+        return;
+    };
     let text = gen::scenario_xml(&input.plan, road_path());
     let main = Path::new("/fuzz/xosc/structured.xosc");
     let mut files = MemoryFiles::new();
-    files.insert(main, text.as_bytes()).insert(road_path(), ROAD);
+    files
+        .insert(main, text.as_bytes())
+        .insert(road_path(), ROAD);
     let scenario = match Scenario::load_with_files(&files, main, &[]) {
         Ok(s) => s,
         Err(e) => panic!("generated scenario rejected: {e}\n{text}"),

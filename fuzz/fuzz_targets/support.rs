@@ -1,12 +1,12 @@
 //! Shared by the fuzz targets: deterministic numbers drawn from the input (so a crash input
-//! replays exactly).
+//! replays exactly), and the hang watchdog.
+#![allow(dead_code)] // Each target uses a part.
 
 use std::hash::{DefaultHasher, Hash, Hasher};
 
 /// A splitmix64 stream seeded by the input's hash.
 pub struct Draws(u64);
 
-#[allow(dead_code)] // Not every target draws every kind of number.
 impl Draws {
     /// Seeded by `data`.
     pub fn new(data: &[u8]) -> Self {
@@ -37,5 +37,81 @@ impl Draws {
     /// A coin toss.
     pub fn bool(&mut self) -> bool {
         self.next() & 1 == 1
+    }
+}
+
+/// A hang detector that does not rely on libFuzzer's `-timeout`: its SIGALRM handler
+/// allocates, and without a sanitizer's allocator that deadlocks when the alarm interrupts the
+/// target inside `malloc` (seen on the distribution target). A thread samples the process's CPU
+/// time once a second; when one input has used more than [`HANG_CPU_SECONDS`] of CPU (not wall
+/// time: the machine is shared and the fuzzers run at nice 19), it writes the input to
+/// `$FUZZ_ARTIFACTS/hang-<hash>` (or `./`) and exits with status 70.
+pub mod watchdog {
+    use std::hash::{DefaultHasher, Hash, Hasher};
+    use std::sync::atomic::{AtomicU64, Ordering};
+    use std::sync::{Mutex, Once};
+    use std::time::Duration;
+
+    /// CPU seconds one input may take before it counts as a hang.
+    pub const HANG_CPU_SECONDS: f64 = 10.0;
+
+    static GENERATION: AtomicU64 = AtomicU64::new(0);
+    static INPUT: Mutex<Vec<u8>> = Mutex::new(Vec::new());
+    static START: Once = Once::new();
+
+    /// Process CPU time (user + system) in seconds, from /proc/self/stat.
+    fn cpu_seconds() -> Option<f64> {
+        let stat = std::fs::read_to_string("/proc/self/stat").ok()?;
+        // Fields after the command name (in parentheses): state is field 3, utime 14, stime 15.
+        let rest = &stat[stat.rfind(')')? + 2..];
+        let fields: Vec<&str> = rest.split(' ').collect();
+        let utime: f64 = fields.get(11)?.parse().ok()?;
+        let stime: f64 = fields.get(12)?.parse().ok()?;
+        // Clock ticks per second: 100 on Linux (USER_HZ).
+        Some((utime + stime) / 100.0)
+    }
+
+    fn watch() {
+        let mut generation = GENERATION.load(Ordering::Relaxed);
+        let mut since = cpu_seconds().unwrap_or(0.0);
+        loop {
+            std::thread::sleep(Duration::from_secs(1));
+            let now_generation = GENERATION.load(Ordering::Relaxed);
+            let now = cpu_seconds().unwrap_or(since);
+            if now_generation != generation {
+                generation = now_generation;
+                since = now;
+                continue;
+            }
+            if now - since > HANG_CPU_SECONDS {
+                let input = INPUT.lock().map(|v| v.clone()).unwrap_or_default();
+                let mut h = DefaultHasher::new();
+                input.hash(&mut h);
+                let dir = std::env::var("FUZZ_ARTIFACTS").unwrap_or_else(|_| ".".into());
+                let path = format!("{dir}/hang-{:016x}", h.finish());
+                let written = std::fs::write(&path, &input).is_ok();
+                eprintln!(
+                    "==WATCHDOG== one input ran over {HANG_CPU_SECONDS} s of CPU; {} {path}",
+                    if written {
+                        "written to"
+                    } else {
+                        "could not write"
+                    }
+                );
+                std::process::exit(70);
+            }
+        }
+    }
+
+    /// Marks the start of an input (call first in the fuzz target).
+    pub fn start(data: &[u8]) {
+        START.call_once(|| {
+            std::thread::spawn(watch);
+        });
+        if let Ok(mut v) = INPUT.lock() {
+            v.clear();
+            v.extend_from_slice(data);
+        }
+        GENERATION.fetch_add(1, Ordering::Relaxed);
     }
 }

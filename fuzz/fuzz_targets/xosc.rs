@@ -11,11 +11,14 @@
 use std::path::{Path, PathBuf};
 
 use libfuzzer_sys::fuzz_target;
+
+mod support;
 use scenario::{MemoryFiles, Scenario};
 
 const ROOT: &str = "/fuzz";
 
 fuzz_target!(|data: &[u8]| {
+    support::watchdog::start(data);
     let mut parts = data.split(|&b| b == 0);
     let main = parts.next().unwrap_or_default();
     let root = Path::new(ROOT);
