@@ -7,6 +7,8 @@
 //! `OSC_BLESS=1 cargo test -p oscsim-dsl --test syntax` writes the expectation files from the
 //! current parser: review their diff before committing.
 
+mod support;
+
 use dsl::syntax::{debug_dump, parse, LineIndex};
 use std::path::{Path, PathBuf};
 
@@ -85,4 +87,135 @@ cases! {
     seed_driving_alongside_group,
     // One file with every construct of the grammar.
     all_constructs,
+    // Small cases, one construct or one error each (index: tests/files/syntax/README.md).
+    lex_comments,
+    lex_line_continuation,
+    lex_bracket_joining,
+    lex_quoted_identifier,
+    lex_strings,
+    lex_numbers,
+    lex_physical_literals,
+    lex_tabs_indentation,
+    lex_crlf,
+    lex_no_final_newline,
+    lex_unicode_identifiers,
+    lex_empty_file,
+    lex_only_comments,
+    err_unterminated_string,
+    err_unterminated_long_string,
+    err_unterminated_quoted_identifier,
+    err_bad_dedent,
+    err_unexpected_character,
+    err_backslash_not_at_end,
+    err_empty_quoted_identifier,
+    err_integer_too_large,
+    err_negative_integer_too_large,
+    err_float_out_of_range,
+    int_limits,
+    import_statements,
+    namespace_statements,
+    export_statements,
+    physical_type,
+    unit_decl,
+    enum_decl,
+    enum_extension,
+    enum_value_reference,
+    global_parameter,
+    struct_without_body,
+    struct_inherits_condition,
+    actor_members,
+    scenario_qualified_name,
+    action_decl,
+    modifier_decl,
+    extend_types,
+    err_import_after_declaration,
+    err_si_unknown_base_unit,
+    err_si_factor_in_physical_type,
+    err_si_order,
+    err_enum_missing_bracket,
+    err_enum_trailing_comma,
+    err_struct_missing_block,
+    err_inherits_condition_expression,
+    err_top_level_do,
+    err_top_level_number,
+    err_unexpected_indent,
+    err_declaration_in_struct,
+    field_declarations,
+    var_sample,
+    param_with_block,
+    keep_qualifiers,
+    keep_qualifier_as_name,
+    remove_default,
+    method_declarations,
+    event_declarations,
+    coverage,
+    keywords_as_field_names,
+    for_constraint,
+    err_sample_in_parameter,
+    err_method_missing_is,
+    err_method_bad_body,
+    err_do_in_struct,
+    err_emit_in_scenario,
+    err_field_missing_type,
+    err_keep_without_parens,
+    err_remove_default_expression,
+    err_list_of_list,
+    err_until_in_struct,
+    do_invocation,
+    do_nested_compositions,
+    composition_arguments,
+    labels,
+    with_blocks,
+    composition_with,
+    wait_forms,
+    emit_and_call,
+    on_directive,
+    modifier_application,
+    err_invocation_in_on,
+    err_wait_in_with,
+    err_invocation_without_call,
+    err_composition_without_block,
+    label_keyword_name,
+    err_missing_with_colon,
+    expr_arithmetic_precedence,
+    expr_logic_precedence,
+    expr_ternary,
+    expr_relations,
+    expr_postfix_chain,
+    expr_unary_minus,
+    expr_lists_ranges,
+    expr_qualified_names,
+    expr_it,
+    expr_arguments,
+    expr_not_precedence,
+    err_positional_after_named,
+    err_missing_operand,
+    err_unclosed_paren,
+    err_unclosed_list,
+    err_trailing_comma_args,
+    err_several_errors,
+    err_range_missing_end,
+    err_event_field_without_if,
+    err_every_bad_offset,
+    err_deep_nesting,
+    err_deep_blocks,
+}
+
+/// `fmt` on every fixture that parses: the result parses to the same tree (dump without trivia
+/// and layout), and formatting it again changes nothing.
+#[test]
+fn fmt_round_trips_every_fixture() {
+    let mut checked = 0;
+    for entry in std::fs::read_dir(dir()).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "osc") {
+            continue;
+        }
+        let source = std::fs::read_to_string(&path).unwrap();
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        if support::assert_fmt_round_trips(&name, &source) {
+            checked += 1;
+        }
+    }
+    assert!(checked >= 7, "only {checked} fixtures formatted");
 }

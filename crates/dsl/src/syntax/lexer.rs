@@ -396,7 +396,7 @@ impl Lexer<'_> {
         loop {
             let Some(c) = self.peek() else {
                 self.push(ERROR_TOKEN, start);
-                let what = if long { "a long string" } else { "a string" };
+                let what = if long { "long string" } else { "string" };
                 self.error(
                     start..self.pos,
                     format!(

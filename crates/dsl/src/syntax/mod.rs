@@ -40,12 +40,16 @@
 //! keywords are contextual (§7.2.1.5.1). A number with a glued unit is `INT_NUMBER`/`FLOAT_NUMBER`
 //! then `UNIT` inside one `LITERAL` node.
 //!
+//! A statement's node ends before its NEWLINE (the NEWLINE follows it in the parent BLOCK or
+//! SOURCE_FILE), so a node's range is exactly the statement's text; a member with a block ends
+//! with its BLOCK, which holds `NEWLINE INDENT … DEDENT`.
+//!
 //! Node kinds, one per production (children in order, `?` optional, `*` repeated):
 //!
 //! | node | children |
 //! | --- | --- |
 //! | `SOURCE_FILE` | statements and declarations |
-//! | `IMPORT_STMT` | `import`, `STRING` or `IDENT (. IDENT)*`, NEWLINE |
+//! | `IMPORT_STMT` | `import`, `STRING` or `IDENT (. IDENT)*` |
 //! | `NAMESPACE_STMT` | `namespace`, NAME, (`use`, NAME_REF (`,` NAME_REF)*)? |
 //! | `EXPORT_STMT` | `export`, EXPORT_SPEC (`,` EXPORT_SPEC)* |
 //! | `PHYSICAL_TYPE_DECL` | `type`, NAME, `is`, SI_SPEC |
@@ -109,6 +113,12 @@
 //! | `CAST_EXPR` / `TYPE_TEST_EXPR` | expression, `.`, `as`/`is`, `(`, type, `)` |
 //! | `ERROR` | tokens the parser could not place (a diagnostic says why) |
 //!
+//! # Formatting
+//!
+//! [`format`] prints a file in canonical layout from its tree (see the `fmt` module doc for the
+//! rules); it is idempotent and keeps the tree: `parse(format(s))` dumps the same as `parse(s)`
+//! ([`debug_dump`] leaves out trivia and layout).
+//!
 //! # Why hand-written
 //!
 //! The lexer and the recursive-descent / precedence-climbing parser are written by hand (the
@@ -141,6 +151,7 @@
 pub mod ast;
 mod diagnostic;
 mod dump;
+mod fmt;
 mod grammar;
 mod kind;
 mod lexer;
@@ -150,6 +161,7 @@ mod validate;
 pub use ast::AstNode;
 pub use diagnostic::{LineIndex, SyntaxError, SyntaxErrorKind};
 pub use dump::debug_dump;
+pub use fmt::{format, format_tree};
 pub use kind::{OscLanguage, SyntaxElement, SyntaxKind, SyntaxNode, SyntaxToken};
 pub use lexer::{lex, LexError, Lexed, Token};
 pub use parser::MAX_DEPTH;
@@ -193,11 +205,10 @@ pub fn parse(source: &str) -> Parse {
     let mut p = parser::Parser::new(source, &lexed);
     grammar::source_file(&mut p);
     let (green, parse_errors) = p.finish();
-    let lexical: Vec<_> = lexed.errors.iter().map(|e| e.range.start).collect();
     let mut errors: Vec<SyntaxError> = parse_errors
         .into_iter()
         .map(|e| {
-            let kind = if lexical.contains(&e.range.start) {
+            let kind = if e.lexical {
                 SyntaxErrorKind::Lexical
             } else {
                 SyntaxErrorKind::Grammar

@@ -26,6 +26,8 @@ pub const MAX_DEPTH: u32 = 128;
 pub struct ParseError {
     /// Byte range of the offending text (empty at the position where something is missing).
     pub range: Range<usize>,
+    /// Whether the lexer found it.
+    pub lexical: bool,
     /// Lowercase message without position, e.g. "expected `:`, found identifier `x`".
     pub message: String,
 }
@@ -39,8 +41,12 @@ pub(crate) struct Parser<'s> {
     pos: usize,
     builder: GreenNodeBuilder<'static>,
     errors: Vec<ParseError>,
+    /// Start offsets of the errors recorded (one error per offset).
+    error_starts: std::collections::HashSet<usize>,
     /// Current nesting of expressions / blocks.
     pub(crate) depth: u32,
+    /// Errors starting before this offset are follow-ons of a reported one and are dropped.
+    quiet_until: usize,
 }
 
 impl<'s> Parser<'s> {
@@ -55,11 +61,12 @@ impl<'s> Parser<'s> {
                 (kind, start, offset)
             })
             .collect();
-        let errors = lexed
+        let errors: Vec<ParseError> = lexed
             .errors
             .iter()
             .map(|e| ParseError {
                 range: e.range.clone(),
+                lexical: true,
                 message: e.message.clone(),
             })
             .collect();
@@ -68,8 +75,10 @@ impl<'s> Parser<'s> {
             tokens,
             pos: 0,
             builder: GreenNodeBuilder::new(),
+            error_starts: errors.iter().map(|e| e.range.start).collect(),
             errors,
             depth: 0,
+            quiet_until: 0,
         }
     }
 
@@ -225,14 +234,19 @@ impl<'s> Parser<'s> {
 
     /// How the next token is named in "found …".
     pub(crate) fn found(&self) -> String {
-        let kind = self.current();
+        let mut n = 0;
+        while self.nth(n) == DEDENT {
+            n += 1;
+        }
+        let kind = self.nth(n);
         match kind {
+            NEWLINE if self.nth_text(n).is_empty() => "end of file".to_string(),
             SyntaxKind::__LAST => "end of file".to_string(),
             NEWLINE => "end of line".to_string(),
             INDENT => "an indented block".to_string(),
             DEDENT => "end of block".to_string(),
             IDENT | INT_NUMBER | FLOAT_NUMBER | UNIT | STRING | ERROR_TOKEN => {
-                let text = self.nth_text(0);
+                let text = self.nth_text(n);
                 let shown: String = text.chars().take(40).collect();
                 let dots = if shown.len() < text.len() { "…" } else { "" };
                 format!("{} `{shown}{dots}`", kind.describe())
@@ -243,11 +257,12 @@ impl<'s> Parser<'s> {
 
     /// Records an error at `range`, unless one is already recorded at the same start.
     pub(crate) fn error_at(&mut self, range: Range<usize>, message: impl Into<String>) {
-        if self.errors.iter().any(|e| e.range.start == range.start) {
+        if range.start < self.quiet_until || !self.error_starts.insert(range.start) {
             return;
         }
         self.errors.push(ParseError {
             range,
+            lexical: false,
             message: message.into(),
         });
     }
@@ -349,5 +364,7 @@ impl<'s> Parser<'s> {
             self.bump();
         }
         self.finish_node();
+        // The enclosing levels' missing `)` and `]` at the line's end are follow-ons.
+        self.quiet_until = self.current_range().end + 1;
     }
 }

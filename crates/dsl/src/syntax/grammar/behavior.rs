@@ -58,12 +58,14 @@ pub(super) fn do_member(p: &mut Parser) {
         BEHAVIOR_INVOCATION
     };
     p.start_at(cp, node);
+    // The NEWLINE goes after the node, so a statement's span is its text.
+    let mut eol = false;
     match node {
         COMPOSITION => composition(p),
         WAIT_DIRECTIVE => {
             p.bump_as(WAIT_KW);
             event_spec(p);
-            p.end_of_line();
+            eol = true;
         }
         EMIT_DIRECTIVE => {
             // emit-directive ::= 'emit' event-name ['(' argument-list ')'] NEWLINE
@@ -72,23 +74,26 @@ pub(super) fn do_member(p: &mut Parser) {
             if p.at(L_PAREN) {
                 arg_list(p);
             }
-            p.end_of_line();
+            eol = true;
         }
         CALL_DIRECTIVE => {
             p.bump_as(CALL_KW);
             call_expression(p, "a method call `path.method(arguments)`");
-            p.end_of_line();
+            eol = true;
         }
         _ => {
             // behavior-invocation ::= [actor-expression '.'] behavior-name '(' [argument-list]
             //   ')' (behavior-with-declaration | NEWLINE)
             call_expression(p, "a behavior invocation `actor.behavior(arguments)`");
             if !behavior_with(p) {
-                p.end_of_line();
+                eol = true;
             }
         }
     }
     p.finish_node();
+    if eol {
+        p.end_of_line();
+    }
 }
 
 /// `composition ::= composition-operator ['(' [unqualified-argument-list] ')'] ':' NEWLINE
@@ -114,12 +119,12 @@ fn composition(p: &mut Parser) {
 /// `behavior-with-declaration ::= 'with' ':' NEWLINE INDENT behavior-with-member+ DEDENT`, if
 /// one is next.
 fn behavior_with(p: &mut Parser) -> bool {
-    if !(p.at_word("with") && p.nth(1) == COLON) {
+    if !(p.at_word("with") && matches!(p.nth(1), COLON | NEWLINE)) {
         return false;
     }
     p.start(BEHAVIOR_WITH);
     p.bump_as(WITH_KW);
-    p.bump();
+    p.expect(COLON);
     block(p, Ctx::BehaviorWith);
     p.finish_node();
     true
@@ -130,6 +135,6 @@ pub(super) fn until(p: &mut Parser) {
     p.start(UNTIL_DIRECTIVE);
     p.bump_as(UNTIL_KW);
     event_spec(p);
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }

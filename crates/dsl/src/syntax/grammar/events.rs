@@ -54,7 +54,10 @@ pub(crate) fn event_condition(p: &mut Parser) {
     expr(p);
     // every-expression ::= 'every' '(' duration [',' 'offset' ':' duration] ')'
     if node == EVERY_EXPR && p.eat(COMMA) {
-        p.expect_word("offset", OFFSET_KW);
+        if !p.expect_word("offset", OFFSET_KW) && p.at(IDENT) && p.nth(1) == COLON {
+            // A wrong argument name: reported; take it so the rest still parses.
+            p.bump();
+        }
         p.expect(COLON);
         expr(p);
     }

@@ -251,16 +251,12 @@ fn primary(p: &mut Parser) -> Option<SyntaxKind> {
         },
         COLON2 => name_or_enum_value(p),
         L_PAREN => {
-            if !p.enter() {
-                p.skip_too_deep();
-                return None;
-            }
+            // The depth is counted by `expr` inside.
             p.start(PAREN_EXPR);
             p.bump();
             expr(p);
             p.expect(R_PAREN);
             p.finish_node();
-            p.leave();
             PAREN_EXPR
         }
         L_BRACK => list_or_range(p)?,
@@ -293,10 +289,7 @@ fn name_or_enum_value(p: &mut Parser) -> SyntaxKind {
 /// `'[' expression '..' expression ']'` or `'[' expression (',' expression)* ']'`; `[]` is
 /// accepted as the empty list.
 fn list_or_range(p: &mut Parser) -> Option<SyntaxKind> {
-    if !p.enter() {
-        p.skip_too_deep();
-        return None;
-    }
+    // The depth is counted by `expr` inside.
     let cp = p.checkpoint();
     p.bump();
     let kind = if p.at(R_BRACK) {
@@ -318,7 +311,6 @@ fn list_or_range(p: &mut Parser) -> Option<SyntaxKind> {
     p.expect(R_BRACK);
     p.start_at(cp, kind);
     p.finish_node();
-    p.leave();
     Some(kind)
 }
 
@@ -327,7 +319,7 @@ pub(crate) fn arg_list(p: &mut Parser) {
     p.start(ARG_LIST);
     p.expect(L_PAREN);
     let mut seen_named = false;
-    if !p.at(R_PAREN) {
+    if !p.at(R_PAREN) && !p.at(NEWLINE) {
         loop {
             if p.at(IDENT) && p.nth(1) == COLON {
                 seen_named = true;

@@ -16,8 +16,8 @@ pub(super) fn import(p: &mut Parser) {
     if !p.eat(STRING) {
         structured_identifier(p);
     }
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `structured-identifier ::= identifier | structured-identifier '.' identifier`, its tokens
@@ -45,8 +45,8 @@ pub(super) fn namespace(p: &mut Parser) {
             }
         }
     }
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `namespace-name ::= identifier | 'null'`.
@@ -88,8 +88,8 @@ pub(super) fn export(p: &mut Parser) {
             break;
         }
     }
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `physical-type-declaration ::= 'type' physical-type-name 'is' base-unit-specifier NEWLINE`.
@@ -100,8 +100,8 @@ pub(super) fn physical_type(p: &mut Parser) {
     if p.expect_word("is", IS_KW) {
         si_spec(p, false);
     }
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `unit-declaration ::= 'unit' unit-name 'of' physical-type-name 'is' unit-specifier NEWLINE`.
@@ -115,8 +115,8 @@ pub(super) fn unit(p: &mut Parser) {
             si_spec(p, true);
         }
     }
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `SI-base-unit-name`s (§7.2.2.2.1).
@@ -175,8 +175,8 @@ pub(super) fn enum_decl(p: &mut Parser) {
     if p.expect(COLON) {
         enum_member_list(p);
     }
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `'[' enum-member-decl (',' enum-member-decl)* ']'`, `enum-member-decl ::= enum-member-name
@@ -215,17 +215,25 @@ pub(super) fn structured(p: &mut Parser, node: SyntaxKind, keyword: SyntaxKind) 
         inherits(p);
     }
     let ctx = if behavior { Ctx::Scenario } else { Ctx::Struct };
-    body(p, ctx);
+    let eol = body(p, ctx);
     p.finish_node();
+    if eol {
+        p.end_of_line();
+    }
 }
 
-/// `( ':' NEWLINE INDENT member+ DEDENT ) | NEWLINE`.
-fn body(p: &mut Parser, ctx: Ctx) {
+/// `( ':' NEWLINE INDENT member+ DEDENT ) | NEWLINE`; true when there is no block, and the
+/// NEWLINE is for the caller to read after closing its node.
+fn body(p: &mut Parser, ctx: Ctx) -> bool {
     if p.eat(COLON) {
         block(p, ctx);
-    } else if !p.eat(NEWLINE) && !p.at_eof() {
+        false
+    } else if p.at(NEWLINE) || p.at_eof() {
+        true
+    } else {
         p.error_expected("`:` or end of line");
         p.skip_line();
+        false
     }
 }
 
@@ -261,8 +269,11 @@ pub(super) fn modifier(p: &mut Parser) {
     if p.eat_word("of", OF_KW) {
         named_type(p);
     }
-    body(p, Ctx::Modifier);
+    let eol = body(p, Ctx::Modifier);
     p.finish_node();
+    if eol {
+        p.end_of_line();
+    }
 }
 
 /// `type-extension`: `extend name: [members]` (enum, [`ENUM_EXTENSION`]), `extend name:` block
@@ -282,10 +293,10 @@ pub(super) fn extend(p: &mut Parser) {
         p.finish_node();
         return;
     }
-    if p.at(L_BRACK) {
+    let enum_extension = p.at(L_BRACK);
+    if enum_extension {
         p.start_at(cp, ENUM_EXTENSION);
         enum_member_list(p);
-        p.end_of_line();
     } else {
         p.start_at(cp, EXTEND_DECL);
         block(
@@ -298,12 +309,18 @@ pub(super) fn extend(p: &mut Parser) {
         );
     }
     p.finish_node();
+    if enum_extension {
+        p.end_of_line();
+    }
 }
 
 /// `global-parameter-declaration ::= 'global' parameter-declaration`.
 pub(super) fn global(p: &mut Parser) {
     p.start(GLOBAL_PARAM_DECL);
     p.bump_as(GLOBAL_KW);
-    members::field(p, PARAM_DECL);
+    let eol = members::field_node(p, PARAM_DECL);
     p.finish_node();
+    if eol {
+        p.end_of_line();
+    }
 }

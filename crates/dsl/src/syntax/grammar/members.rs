@@ -22,8 +22,8 @@ pub(super) fn event(p: &mut Parser) {
     if p.eat_word("is", IS_KW) {
         event_spec(p);
     }
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `parameter-declaration ::= field-name (',' field-name)* ':' type-declarator ['='
@@ -31,7 +31,15 @@ pub(super) fn event(p: &mut Parser) {
 /// `variable-declaration ::= 'var' field-name (',' field-name)* ':' type-declarator ['='
 /// (default-value | sample-expression)] NEWLINE` ([`VAR_DECL`]).
 pub(crate) fn field(p: &mut Parser, node: SyntaxKind) {
+    if field_node(p, node) {
+        p.end_of_line();
+    }
+}
+
+/// [`field`] without its NEWLINE; true if the NEWLINE is still to be read (no `with:` block).
+pub(crate) fn field_node(p: &mut Parser, node: SyntaxKind) -> bool {
     p.start(node);
+    let mut eol = false;
     if node == VAR_DECL {
         p.bump_as(VAR_KW);
     }
@@ -64,12 +72,13 @@ pub(crate) fn field(p: &mut Parser, node: SyntaxKind) {
             block(p, Ctx::ParamWith);
             p.finish_node();
         } else {
-            p.end_of_line();
+            eol = true;
         }
     } else {
         p.skip_line();
     }
     p.finish_node();
+    eol
 }
 
 /// Whether the word at the cursor is a constraint qualifier (`default`, `hard`) rather than the
@@ -92,7 +101,11 @@ fn at_qualifier(p: &Parser) -> bool {
 pub(super) fn keep(p: &mut Parser) {
     p.start(KEEP_CONSTRAINT);
     p.bump_as(KEEP_KW);
-    p.expect(L_PAREN);
+    if !p.expect(L_PAREN) {
+        p.skip_line();
+        p.finish_node();
+        return;
+    }
     if at_qualifier(p) {
         p.bump_as(if p.at_word("default") {
             DEFAULT_KW
@@ -102,8 +115,8 @@ pub(super) fn keep(p: &mut Parser) {
     }
     expr(p);
     p.expect(R_PAREN);
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `remove-default-declaration ::= 'remove_default' '(' parameter-reference ')' NEWLINE`,
@@ -111,7 +124,11 @@ pub(super) fn keep(p: &mut Parser) {
 pub(super) fn remove_default(p: &mut Parser) {
     p.start(REMOVE_DEFAULT);
     p.bump_as(REMOVE_DEFAULT_KW);
-    p.expect(L_PAREN);
+    if !p.expect(L_PAREN) {
+        p.skip_line();
+        p.finish_node();
+        return;
+    }
     let range = p.current_range();
     if let Some(kind) = expr(p) {
         if !matches!(kind, NAME_EXPR | FIELD_EXPR) {
@@ -119,8 +136,8 @@ pub(super) fn remove_default(p: &mut Parser) {
         }
     }
     p.expect(R_PAREN);
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `method-declaration ::= 'def' method-name '(' [argument-list-specification] ')' ['->'
@@ -162,8 +179,8 @@ pub(super) fn method(p: &mut Parser) {
         }
     }
     p.finish_node();
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `coverage-declaration ::= ('cover' | 'record') '(' argument-list ')' NEWLINE`.
@@ -175,8 +192,8 @@ pub(super) fn coverage(p: &mut Parser) {
         RECORD_KW
     });
     arg_list(p);
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// `modifier-application ::= [actor-expression '.'] modifier-name '(' [argument-list] ')'
@@ -184,8 +201,8 @@ pub(super) fn coverage(p: &mut Parser) {
 pub(super) fn modifier_application(p: &mut Parser) {
     p.start(MODIFIER_APPLICATION);
     call_expression(p, "a modifier application `name(arguments)`");
-    p.end_of_line();
     p.finish_node();
+    p.end_of_line();
 }
 
 /// A postfix expression that must end in a call: `[actor-expression '.'] name '(' args ')'`.

@@ -114,13 +114,13 @@ pub(crate) fn type_decl(p: &mut Parser) {
         if p.at_word("list") && p.nth_word(1, "of") {
             let range = p.current_range();
             p.error_at(range, "expected a non-list type after `list of`, found `list of` (lists of lists are not in the language)");
+            // Take every further `list of` flat: reported once, no recursion.
+            while p.at_word("list") && p.nth_word(1, "of") {
+                p.bump_as(LIST_KW);
+                p.bump_as(OF_KW);
+            }
         }
-        if p.enter() {
-            type_decl(p);
-            p.leave();
-        } else {
-            p.skip_too_deep();
-        }
+        type_decl(p);
         p.finish_node();
     } else if p.at_word("range") && p.nth_word(1, "of") {
         p.start(RANGE_TYPE);
