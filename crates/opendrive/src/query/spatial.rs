@@ -1,5 +1,6 @@
 //! Spatial index over the road surfaces: every geometry is cut into pieces of at most
-//! [`PIECE_LENGTH`] metres, and each piece's axis-aligned box (reference line ± the outermost
+//! [`PIECE_LENGTH`] metres (longer pieces, at most [`MAX_PIECES`] per geometry, on geometries
+//! over 100 km, so that a file with an absurd length builds in bounded time), and each piece's axis-aligned box (reference line ± the outermost
 //! lane borders, plus a margin for curvature between samples) goes into an R*-tree (`rstar`).
 //! A look-up visits only pieces whose box is near the point, then projects exactly.
 
@@ -12,8 +13,11 @@ use super::lane_span::road_extent;
 use crate::math::Real;
 use crate::model::Road;
 
-/// Longest piece of road per index entry (m).
+/// Longest piece of road per index entry (m), on geometries up to `MAX_PIECES` of them long.
 const PIECE_LENGTH: Real = 10.0;
+/// Most pieces per geometry (100 km at [`PIECE_LENGTH`]); a longer geometry gets longer pieces,
+/// whose boxes still hold its surface (the sagitta margin grows with the piece).
+const MAX_PIECES: usize = 10_000;
 /// Samples per piece (ends included).
 const SAMPLES: usize = 5;
 /// Margin added around each box (m): lane heights on banked roads, cubic lane widths
@@ -76,7 +80,7 @@ impl SpatialIndex {
                     .map_or(road.length, |n| n.s)
                     .min(road.length);
                 let g_start = g.s.min(g_end);
-                let n = (((g_end - g_start) / PIECE_LENGTH).ceil() as usize).max(1);
+                let n = (((g_end - g_start) / PIECE_LENGTH).ceil() as usize).clamp(1, MAX_PIECES);
                 let h = (g_end - g_start) / n as Real;
                 for k in 0..n {
                     let s0 = g_start + h * k as Real;
