@@ -3,6 +3,7 @@
 //! Exit status: 0 on success, 1 when the input is invalid or a run fails (or completes but logs
 //! runtime errors), 2 on a usage error.
 
+mod dsl;
 mod osi_sink;
 mod road;
 mod run;
@@ -30,6 +31,9 @@ enum Command {
     Validate(validate::ValidateArgs),
     /// Run a scenario headless and write trajectories and the event log.
     Run(Box<run::RunArgs>),
+    /// OpenSCENARIO DSL 2.x tools (`.osc` files).
+    #[command(subcommand)]
+    Dsl(dsl::DslCommand),
 }
 
 fn main() -> ExitCode {
@@ -38,6 +42,7 @@ fn main() -> ExitCode {
         Command::Road(args) => road::run(args),
         Command::Validate(args) => validate::run(args),
         Command::Run(args) => run::run(*args),
+        Command::Dsl(command) => dsl::run(command),
     };
     match result {
         Ok(code) => code,

@@ -1,7 +1,8 @@
 //! `oscsim validate FILE...`: load each scenario with its catalogs and road network and
 //! report OK or the error (file:line:col, element, what was expected); exit status 1 when
 //! any file fails. `--print` shows the resolved model, `--param NAME=VALUE` overrides a
-//! global parameter (OpenSCENARIO 1.3 §9.1).
+//! global parameter (OpenSCENARIO 1.3 §9.1). `--syntax-only FILE.osc` parses OpenSCENARIO DSL
+//! files and reports every syntax error (see `dsl.rs`).
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -27,6 +28,9 @@ pub struct ValidateArgs {
     /// Do not list warnings (deprecated forms, features newer than the declared version).
     #[arg(long)]
     quiet: bool,
+    /// OpenSCENARIO DSL files (.osc): parse only and report every syntax error.
+    #[arg(long)]
+    syntax_only: bool,
 }
 
 /// Splits `NAME=VALUE`.
@@ -73,6 +77,19 @@ fn validate_all(args: &ValidateArgs, out: &mut impl Write) -> anyhow::Result<boo
 
 /// Validates one file, writing its report to `out`; `true` when it loads.
 fn validate_file(file: &Path, args: &ValidateArgs, out: &mut impl Write) -> anyhow::Result<bool> {
+    let is_dsl = file.extension().is_some_and(|e| e == "osc");
+    if is_dsl && args.syntax_only {
+        return crate::dsl::validate_syntax(file, out);
+    }
+    if is_dsl || args.syntax_only {
+        let why = if is_dsl {
+            "resolution and type checking of OpenSCENARIO DSL files are not in oscsim yet; --syntax-only checks the syntax"
+        } else {
+            "--syntax-only applies to OpenSCENARIO DSL files (.osc)"
+        };
+        writeln!(out, "FAIL {}\n  error: {why}", file.display())?;
+        return Ok(false);
+    }
     let scenario = match Scenario::load_with_parameters(file, &args.params) {
         Ok(s) => s,
         Err(e) => {
@@ -134,6 +151,7 @@ mod tests {
             print,
             params,
             quiet: false,
+            syntax_only: false,
         }
     }
 
