@@ -219,3 +219,33 @@ fn fmt_round_trips_every_fixture() {
     }
     assert!(checked >= 7, "only {checked} fixtures formatted");
 }
+
+/// The standard library shipped as .osc source (crates/dsl/stdlib) parses without error and
+/// round-trips through fmt.
+#[test]
+fn stdlib_sources_parse_and_format() {
+    let mut stack = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join("stdlib")];
+    let mut checked = 0;
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "osc") {
+                let source = std::fs::read_to_string(&path).unwrap();
+                let parse = parse(&source);
+                let index = LineIndex::new(&source);
+                let name = path.display().to_string();
+                let errors: Vec<String> = parse
+                    .errors()
+                    .iter()
+                    .map(|e| e.display(&name, &index).to_string())
+                    .collect();
+                assert!(errors.is_empty(), "{errors:#?}");
+                assert!(support::assert_fmt_round_trips(&name, &source));
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked >= 1, "no stdlib .osc file found");
+}
