@@ -52,6 +52,7 @@
 mod error;
 mod geo;
 mod geometry;
+mod handles;
 mod math;
 mod model;
 mod network;
@@ -64,6 +65,7 @@ pub use geometry::{
     Arc, Geometry, GeometryKind, LocalPoint, ParamPoly3, ParamRange, PlanView, Poly3, RefPoint,
     Spiral,
 };
+pub use handles::{JunctionHandle, RoadHandle};
 pub use math::{
     angle_difference, normalize_angle, Cubic, Pose, Real, GEOMETRY_GAP_TOLERANCE, LENGTH_EPSILON,
     SOLVER_TOLERANCE, S_TOLERANCE,
@@ -76,5 +78,5 @@ pub use model::{
 pub use network::RoadNetwork;
 pub use query::{
     Direction, LaneChange, LaneCost, LaneHandle, LanePath, LanePosition, LaneRoute, LaneSpan,
-    PathCost, RoadPosition, RouteSegment, LANE_CHANGE_COST,
+    PathCost, RoadPoint, RoadPosition, RouteSegment, LANE_CHANGE_COST,
 };

@@ -1,12 +1,14 @@
 //! [`RoadNetwork`]: a loaded `.xodr` file (OpenDRIVE 1.8, `<OpenDRIVE>` root element) with its id
 //! tables and spatial index, and the loaders.
 
-use std::collections::HashMap;
 use std::path::Path;
 
+use rustc_hash::FxHashMap;
+
 use crate::error::{Error, ErrorKind};
+use crate::handles::{JunctionHandle, RoadHandle, Topology};
 use crate::model::{Header, Junction, Road};
-use crate::parse::{check_references, child, read_header, read_junction, read_road, Ids, Reader};
+use crate::parse::{load, Loaded};
 use crate::query::SpatialIndex;
 
 /// A loaded OpenDRIVE road network. Immutable after loading; all queries take `&self`.
@@ -14,9 +16,10 @@ use crate::query::SpatialIndex;
 pub struct RoadNetwork {
     pub(crate) header: Header,
     pub(crate) roads: Vec<Road>,
-    pub(crate) road_index: HashMap<String, usize>,
+    pub(crate) road_index: FxHashMap<String, usize>,
     pub(crate) junctions: Vec<Junction>,
-    pub(crate) junction_index: HashMap<String, usize>,
+    pub(crate) junction_index: FxHashMap<String, usize>,
+    pub(crate) topology: Topology,
     pub(crate) spatial: SpatialIndex,
     pub(crate) warnings: Vec<Error>,
 }
@@ -32,75 +35,28 @@ impl RoadNetwork {
     /// Parses `.xodr` text; `path` is used in error messages only.
     #[allow(clippy::should_implement_trait)] // FromStr cannot carry the path for messages.
     pub fn from_str(text: &str, path: &Path) -> Result<Self, Error> {
-        let opts = roxmltree::ParsingOptions {
-            allow_dtd: true,
-            ..Default::default()
-        };
-        let doc = roxmltree::Document::parse_with_options(text, opts).map_err(|e| {
-            let p = e.pos();
-            // roxmltree's message ends in " at row:col"; the position is reported once.
-            let msg = e.to_string();
-            let suffix = format!(" at {}:{}", p.row, p.col);
-            let msg = msg.strip_suffix(&suffix).unwrap_or(&msg).to_string();
-            Error::at(
-                ErrorKind::Xml(msg),
-                path,
-                crate::error::TextPos {
-                    row: p.row,
-                    col: p.col,
-                },
-            )
-        })?;
-        let r = Reader::new(&doc, path);
-        let root = doc.root_element();
-        if root.tag_name().name() != "OpenDRIVE" {
-            return Err(r.error_at(
-                root,
-                ErrorKind::NotOpenDrive(root.tag_name().name().to_string()),
-            ));
-        }
-        let header = match child(root, "header") {
-            Some(h) => read_header(&r, h)?,
-            None => Header::default(),
-        };
-        let mut roads = Vec::new();
-        let mut road_index = HashMap::new();
-        let mut warnings = Vec::new();
-        for node in root.children().filter(|n| n.has_tag_name("road")) {
-            let road = read_road(&r, node, &mut warnings)?;
-            if road_index.insert(road.id.clone(), roads.len()).is_some() {
-                return Err(r.invalid(node, "id", "a road id not used before", &road.id));
-            }
-            roads.push(road);
-        }
-        let mut junctions = Vec::new();
-        let mut junction_index = HashMap::new();
-        for node in root.children().filter(|n| n.has_tag_name("junction")) {
-            let j = read_junction(&r, node)?;
-            if junction_index
-                .insert(j.id.clone(), junctions.len())
-                .is_some()
-            {
-                return Err(r.invalid(node, "id", "a junction id not used before", &j.id));
-            }
-            junctions.push(j);
-        }
-        warnings.extend(check_references(
-            &r,
-            root,
-            &Ids {
-                roads: &road_index,
-                road_list: &roads,
-                junctions: &junction_index,
-            },
-        )?);
+        let Loaded {
+            header,
+            roads,
+            road_index,
+            junctions,
+            junction_index,
+            warnings,
+        } = load(text, path)?;
         let spatial = SpatialIndex::build(&roads);
+        let topology = Topology::build(
+            &roads,
+            &junctions,
+            |id| road_index.get(id).map(|&i| i as u32),
+            |id| junction_index.get(id).map(|&i| i as u32),
+        );
         Ok(Self {
             header,
             roads,
             road_index,
             junctions,
             junction_index,
+            topology,
             spatial,
             warnings,
         })
@@ -136,6 +92,42 @@ impl RoadNetwork {
     /// The junction with this id.
     pub fn junction(&self, id: &str) -> Option<&Junction> {
         self.junction_index.get(id).map(|&i| &self.junctions[i])
+    }
+
+    /// The handle of the road with this id (one hash of the id; keep the handle).
+    pub fn road_handle(&self, id: &str) -> Option<RoadHandle> {
+        self.road_index.get(id).map(|&i| RoadHandle(i as u32))
+    }
+
+    /// The road of a handle this network gave.
+    ///
+    /// # Panics
+    /// If the handle is of another, larger network.
+    #[inline]
+    pub fn road_at(&self, h: RoadHandle) -> &Road {
+        &self.roads[h.index()]
+    }
+
+    /// The handle of the junction with this id.
+    pub fn junction_handle(&self, id: &str) -> Option<JunctionHandle> {
+        self.junction_index
+            .get(id)
+            .map(|&i| JunctionHandle(i as u32))
+    }
+
+    /// The junction of a handle this network gave.
+    ///
+    /// # Panics
+    /// If the handle is of another, larger network.
+    #[inline]
+    pub fn junction_at(&self, h: JunctionHandle) -> &Junction {
+        &self.junctions[h.index()]
+    }
+
+    /// The junction road `h` belongs to (`road/@junction`), if any.
+    #[inline]
+    pub fn road_junction(&self, h: RoadHandle) -> Option<JunctionHandle> {
+        self.topology.junction_of[h.index()].map(JunctionHandle)
     }
 
     /// The road with this id, or a [`ErrorKind::NoSuchRoad`] error.

@@ -181,3 +181,41 @@ fn direct_junction_both_ways() {
     // Against the driving direction there is no way back.
     assert!(net.route(&at("2", -1, 20.0), &at("1", -1, 100.0)).is_none());
 }
+
+#[test]
+fn handles_resolve_ids_once_and_agree_with_the_string_api() {
+    // Road "100" is a connecting road of junction "100" (road/@junction="100" in the file);
+    // road "1" belongs to no junction. A handle names the same road as its id, and locating a
+    // point by handle gives the string API's answer with the ids left out.
+    let net = junction_file();
+    let h = net.road_handle("100").unwrap_or_else(|| panic!("road 100"));
+    assert_eq!(net.road_at(h).id, "100");
+    assert_eq!(net.roads()[h.index()].id, "100");
+    let j = net
+        .road_junction(h)
+        .unwrap_or_else(|| panic!("junction of road 100"));
+    assert_eq!(net.junction_at(j).id, "100");
+    assert_eq!(net.junction_handle("100"), Some(j));
+    let one = net.road_handle("1").unwrap_or_else(|| panic!("road 1"));
+    assert_eq!(net.road_junction(one), None);
+    assert_eq!(net.road_handle("no such road"), None);
+    let lane = net
+        .lane_handle("1", -1, 50.0)
+        .unwrap_or_else(|| panic!("lane"));
+    assert_eq!(lane.road_handle(), one);
+    let pose = net
+        .lane_pose("1", -1, 50.0, 0.25)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let by_id = net.locate(pose.x, pose.y, Some(pose.h));
+    let point = net
+        .locate_point(pose.x, pose.y, Some(pose.h))
+        .unwrap_or_else(|| panic!("no point"));
+    assert_eq!(point.road, one);
+    assert_eq!(by_id, Some(net.road_position(&point)));
+    let on_road = net
+        .locate_point_on_road(one, pose.x, pose.y)
+        .unwrap_or_else(|| panic!("not on road 1"));
+    // s = 50 and the offset 0.25 m from lane −1's centre, to the solver's tolerance.
+    assert!((on_road.s - 50.0).abs() < 1e-9 && (on_road.offset - 0.25).abs() < 1e-9);
+    assert_eq!(on_road.lane_id, -1);
+}

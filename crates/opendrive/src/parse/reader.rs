@@ -3,6 +3,7 @@
 //! expected (OpenDRIVE 1.8 XSD types `t_grEqZero`, `t_grZero`, `double`).
 
 use std::cell::OnceCell;
+use std::marker::PhantomData;
 use std::path::Path;
 
 use roxmltree::{Document, Node};
@@ -12,28 +13,44 @@ use crate::math::S_TOLERANCE;
 
 /// The document being read and its path, for positions in errors.
 pub(crate) struct Reader<'a, 'input> {
-    doc: &'a Document<'input>,
     path: &'a Path,
+    /// The whole file's text (a chunk's document holds only a part of it).
+    text: &'a str,
+    /// Where the document's text starts in `text`, and how many bytes were put before it
+    /// (a chunk's wrapping start tag): document byte b is file byte `start + b − prefix`.
+    start: usize,
+    prefix: usize,
     /// Byte offsets where lines start, built on the first position asked for, so that each
     /// position costs a binary search, not a scan from the file's start (files with many
     /// warnings would otherwise take quadratic time).
     line_starts: OnceCell<Vec<usize>>,
+    _doc: PhantomData<&'a Document<'input>>,
 }
 
-impl<'a, 'input> Reader<'a, 'input> {
-    /// A reader over a parsed document.
+impl<'a, 'input: 'a> Reader<'a, 'input> {
+    /// A reader over a parsed document of the whole file.
     pub(crate) fn new(doc: &'a Document<'input>, path: &'a Path) -> Self {
+        Self::chunk(doc.input_text(), path, 0, 0)
+    }
+
+    /// A reader over the document of a part of the file `text` that starts at byte `start`,
+    /// parsed with `prefix` bytes put before it.
+    pub(crate) fn chunk(text: &'a str, path: &'a Path, start: usize, prefix: usize) -> Self {
         Self {
-            doc,
             path,
+            text,
+            start,
+            prefix,
             line_starts: OnceCell::new(),
+            _doc: PhantomData,
         }
     }
 
-    /// 1-based position of a byte offset: row from the line table, column in characters (as
-    /// roxmltree counts them).
+    /// 1-based position of a byte offset of the document: row from the line table, column in
+    /// characters (as roxmltree counts them).
     pub(crate) fn pos(&self, byte: usize) -> TextPos {
-        let text = self.doc.input_text();
+        let text = self.text;
+        let byte = self.start + byte.saturating_sub(self.prefix);
         let starts = self.line_starts.get_or_init(|| {
             std::iter::once(0)
                 .chain(text.match_indices('\n').map(|(i, _)| i + 1))

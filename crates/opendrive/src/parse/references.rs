@@ -2,9 +2,8 @@
 //! (OpenDRIVE 1.8 §10), `road/@junction`, junction connections and their lane links (§12).
 //! Runs over the XML a second time so that errors point at the referring attribute.
 
-use std::collections::HashMap;
-
 use roxmltree::Node;
+use rustc_hash::FxHashMap;
 
 use super::reader::{child, children, Reader};
 use crate::error::Error;
@@ -13,11 +12,11 @@ use crate::model::Road;
 /// Lookup tables of the ids read in the first pass.
 pub(crate) struct Ids<'a> {
     /// Road id → road.
-    pub(crate) roads: &'a HashMap<String, usize>,
+    pub(crate) roads: &'a FxHashMap<String, usize>,
     /// All roads.
     pub(crate) road_list: &'a [Road],
     /// Junction id → index.
-    pub(crate) junctions: &'a HashMap<String, usize>,
+    pub(crate) junctions: &'a FxHashMap<String, usize>,
 }
 
 /// Whether any lane section of `road` holds lane `id`.

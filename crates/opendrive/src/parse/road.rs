@@ -223,9 +223,12 @@ fn read_geometry(r: &Reader, node: Node, road_length: f64) -> Result<Geometry, E
             };
             let mut u = [0.0; 4];
             let mut v = [0.0; 4];
-            for (i, k) in ["a", "b", "c", "d"].iter().enumerate() {
-                u[i] = r.req_f64(curve, &format!("{k}U"))?;
-                v[i] = r.req_f64(curve, &format!("{k}V"))?;
+            for (i, (ku, kv)) in [("aU", "aV"), ("bU", "bV"), ("cU", "cV"), ("dU", "dV")]
+                .into_iter()
+                .enumerate()
+            {
+                u[i] = r.req_f64(curve, ku)?;
+                v[i] = r.req_f64(curve, kv)?;
             }
             GeometryKind::ParamPoly3(ParamPoly3::new(u, v, range, length))
         }

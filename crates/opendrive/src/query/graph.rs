@@ -6,7 +6,8 @@
 //! `<successor>` links name the lane at the section's end side (larger s), `<predecessor>` the
 //! lane at its start side, whatever the driving direction.
 
-use crate::model::{ContactPoint, ElementType, Road, RoadLink, TrafficRule};
+use crate::handles::{Link, RoadHandle};
+use crate::model::{ContactPoint, Road, TrafficRule};
 use crate::network::RoadNetwork;
 
 /// Travel along a road: towards increasing or decreasing s.
@@ -37,6 +38,14 @@ pub struct LaneHandle {
     pub section: u32,
     /// Lane id.
     pub lane: i32,
+}
+
+impl LaneHandle {
+    /// The road the lane belongs to.
+    #[inline]
+    pub fn road_handle(self) -> RoadHandle {
+        RoadHandle(self.road)
+    }
 }
 
 /// Driving direction of lane `id` on `road`.
@@ -100,8 +109,16 @@ impl RoadNetwork {
             return Vec::new();
         };
         let (next_id, next_k, link) = match dir {
-            Direction::Forward => (lane.successor, k + 1, &road.links.successor),
-            Direction::Backward => (lane.predecessor, k.wrapping_sub(1), &road.links.predecessor),
+            Direction::Forward => (
+                lane.successor,
+                k + 1,
+                self.topology.links[h.road as usize][1],
+            ),
+            Direction::Backward => (
+                lane.predecessor,
+                k.wrapping_sub(1),
+                self.topology.links[h.road as usize][0],
+            ),
         };
         let mut out = Vec::new();
         if next_k < road.lane_sections.len() {
@@ -120,110 +137,91 @@ impl RoadNetwork {
             return out;
         }
         match link {
-            Some(RoadLink {
-                element_type: ElementType::Road,
-                element_id,
-                contact_point,
-            }) => {
-                if let (Some(id), Some(&ri)) = (next_id, self.road_index.get(element_id)) {
+            Some(Link::Road(ri, contact_point)) => {
+                if let Some(id) = next_id {
                     let cp = contact_point.unwrap_or(ContactPoint::Start);
-                    if let Some(e) = self.entry(ri, cp, id) {
+                    if let Some(e) = self.entry(ri as usize, cp, id) {
                         out.push(e);
                     }
                 }
             }
-            Some(RoadLink {
-                element_type: ElementType::Junction,
-                element_id,
-                ..
-            }) => {
-                self.through_junction(h, road, element_id, dir, &mut out);
+            Some(Link::Junction(ji)) => {
+                self.through_junction(h, ji as usize, dir, &mut out);
             }
             None => {}
         }
         out
     }
 
-    /// Lanes of the roads of junction `junction_id` joined to the end of lane `h` that is
-    /// reached travelling `dir`: from the junction's `<laneLink>`s whose `incomingRoad` is the
-    /// road, from those whose connecting/linked road is the road (read backwards), and from the
+    /// Lanes of the roads of junction `ji` joined to the end of lane `h` that is reached
+    /// travelling `dir`: from the junction's `<laneLink>`s whose `incomingRoad` is the road,
+    /// from those whose connecting/linked road is the road (read backwards), and from the
     /// connecting roads' own road and lane links back to the road (files often write a
     /// connection in one direction only).
     fn through_junction(
         &self,
         h: LaneHandle,
-        road: &Road,
-        junction_id: &str,
+        ji: usize,
         dir: Direction,
         out: &mut Vec<(LaneHandle, Direction)>,
     ) {
-        let Some(j) = self.junction(junction_id) else {
-            return;
-        };
+        let (j, resolved) = (&self.junctions[ji], &self.topology.connections[ji]);
+        let here = Some(h.road);
         let our_end = match dir {
             Direction::Forward => ContactPoint::End,
             Direction::Backward => ContactPoint::Start,
         };
-        for c in j.connections.iter().filter(|c| c.incoming_road == road.id) {
-            let Some(&ci) = self.road_index.get(&c.connecting_road) else {
+        for (c, rc) in j.connections.iter().zip(resolved) {
+            let (true, Some(ci)) = (rc.incoming == here, rc.connecting) else {
                 continue;
             };
             for ll in c.lane_links.iter().filter(|ll| ll.from == h.lane) {
-                if let Some(e) = self.entry(ci, c.contact_point, ll.to) {
+                if let Some(e) = self.entry(ci as usize, c.contact_point, ll.to) {
                     out.push(e);
                 }
             }
         }
         // Connections written from the other side: this road is the connecting (or linked)
         // road, entered at the end we are leaving; go back to the incoming road's lane.
-        for c in j
-            .connections
-            .iter()
-            .filter(|c| c.connecting_road == road.id && c.contact_point == our_end)
-        {
-            let Some(&ii) = self.road_index.get(&c.incoming_road) else {
+        for (c, rc) in j.connections.iter().zip(resolved) {
+            let (true, true, Some(ii)) = (
+                rc.connecting == here,
+                c.contact_point == our_end,
+                rc.incoming,
+            ) else {
                 continue;
             };
-            let inc = &self.roads[ii];
-            let touches = |l: &Option<RoadLink>| {
-                l.as_ref().is_some_and(|l| {
-                    l.element_type == ElementType::Junction && l.element_id == j.id
-                })
-            };
-            let inc_end = if touches(&inc.links.successor) {
+            let touches = |l: Option<Link>| l == Some(Link::Junction(ji as u32));
+            let [pred, succ] = self.topology.links[ii as usize];
+            let inc_end = if touches(succ) {
                 ContactPoint::End
-            } else if touches(&inc.links.predecessor) {
+            } else if touches(pred) {
                 ContactPoint::Start
             } else {
                 continue;
             };
             for ll in c.lane_links.iter().filter(|ll| ll.to == h.lane) {
-                if let Some(e) = self.entry(ii, inc_end, ll.from) {
+                if let Some(e) = self.entry(ii as usize, inc_end, ll.from) {
                     if !out.contains(&e) {
                         out.push(e);
                     }
                 }
             }
         }
-        let mut seen: Vec<&str> = Vec::new();
-        for c in &j.connections {
-            if seen.contains(&c.connecting_road.as_str()) {
+        let mut seen: Vec<u32> = Vec::new();
+        for rc in resolved {
+            let Some(ci) = rc.connecting else { continue };
+            if seen.contains(&ci) {
                 continue;
             }
-            seen.push(&c.connecting_road);
-            let Some(&ci) = self.road_index.get(&c.connecting_road) else {
-                continue;
-            };
-            let conn = &self.roads[ci];
-            let ends = [
-                (ContactPoint::Start, &conn.links.predecessor),
-                (ContactPoint::End, &conn.links.successor),
-            ];
-            for (conn_end, link) in ends {
-                let Some(l) = link else { continue };
-                let joins_us = l.element_type == ElementType::Road
-                    && l.element_id == road.id
-                    && l.contact_point.map_or(true, |cp| cp == our_end);
+            seen.push(ci);
+            let conn = &self.roads[ci as usize];
+            let [pred, succ] = self.topology.links[ci as usize];
+            for (conn_end, link) in [(ContactPoint::Start, pred), (ContactPoint::End, succ)] {
+                let joins_us = match link {
+                    Some(Link::Road(r, cp)) => r == h.road && cp.map_or(true, |cp| cp == our_end),
+                    _ => false,
+                };
                 if !joins_us {
                     continue;
                 }
@@ -237,7 +235,7 @@ impl RoadNetwork {
                         ContactPoint::End => lane.successor,
                     };
                     if back == Some(h.lane) {
-                        if let Some(e) = self.entry(ci, conn_end, lane.id) {
+                        if let Some(e) = self.entry(ci as usize, conn_end, lane.id) {
                             if !out.contains(&e) {
                                 out.push(e);
                             }

@@ -93,6 +93,90 @@ pub(crate) fn lane_span(road: &Road, section: &LaneSection, id: i32, s: Real) ->
     })
 }
 
+/// The lanes of one side of a lane section with their spans at some s, from the centre
+/// outwards: each lane's inner border is the previous lane's outer one, so walking a side
+/// costs what its outermost lane's [`lane_span`] alone does; each span equals [`lane_span`]'s
+/// bit for bit (the same sums in the same order).
+pub(crate) struct SideSpans<'a> {
+    lanes: std::slice::Iter<'a, Lane>,
+    off: Real,
+    d_off: Real,
+    ds: Real,
+    sign: Real,
+    inner: Real,
+    d_inner: Real,
+}
+
+impl<'a> Iterator for SideSpans<'a> {
+    type Item = (&'a Lane, LaneSpan);
+
+    #[inline]
+    fn next(&mut self) -> Option<Self::Item> {
+        let lane = self.lanes.next()?;
+        let (w, dw) = width(lane, self.ds, self.inner, self.d_inner);
+        let span = LaneSpan {
+            inner: self.off + self.sign * self.inner,
+            outer: self.off + self.sign * (self.inner + w),
+            d_inner: self.d_off + self.sign * self.d_inner,
+            d_outer: self.d_off + self.sign * (self.d_inner + dw),
+        };
+        self.inner += w;
+        self.d_inner += dw;
+        Some((lane, span))
+    }
+}
+
+/// The left (`left`) or right lanes of `section` with their spans at `s`, centre outwards.
+#[inline]
+pub(crate) fn side_spans<'a>(
+    road: &Road,
+    section: &'a LaneSection,
+    s: Real,
+    left: bool,
+) -> SideSpans<'a> {
+    let (off, d_off) = lane_offset(road, s);
+    let (lanes, sign) = if left {
+        (&section.left, 1.0)
+    } else {
+        (&section.right, -1.0)
+    };
+    SideSpans {
+        lanes: lanes.iter(),
+        off,
+        d_off,
+        ds: s - section.s,
+        sign,
+        inner: 0.0,
+        d_inner: 0.0,
+    }
+}
+
+/// Calls `f` with every lane of `section` and its span at `s`, from the centre outwards: the
+/// centre lane, left lanes 1, 2, …, then right lanes −1, −2, … (see [`SideSpans`]).
+pub(crate) fn for_each_span(
+    road: &Road,
+    section: &LaneSection,
+    s: Real,
+    mut f: impl FnMut(&Lane, LaneSpan),
+) {
+    let (off, d_off) = lane_offset(road, s);
+    // lane_span's arithmetic for lane 0 (no widths: inner = outer = laneOffset).
+    f(
+        &section.center,
+        LaneSpan {
+            inner: off + 0.0,
+            outer: off + (0.0 + 0.0),
+            d_inner: d_off + 0.0,
+            d_outer: d_off + (0.0 + 0.0),
+        },
+    );
+    for left in [true, false] {
+        for (lane, span) in side_spans(road, section, s, left) {
+            f(lane, span);
+        }
+    }
+}
+
 /// t of the outermost left and right borders at s: (right t, left t), i.e. (min, max) of the
 /// road surface across all lanes of the section.
 pub(crate) fn road_extent(road: &Road, section: &LaneSection, s: Real) -> (Real, Real) {
@@ -181,5 +265,24 @@ mod tests {
             "{b2:?}"
         );
         assert!(lane_span(&road, &section, -2, 16.0).is_none());
+        // The one-pass walk gives every lane, centre outwards, with lane_span's span bit for
+        // bit (borders included).
+        for sec in [&section, &bordered] {
+            let mut seen = Vec::new();
+            for_each_span(&road, sec, 16.0, |lane, span| {
+                assert_eq!(
+                    Some(span),
+                    lane_span(&road, sec, lane.id, 16.0),
+                    "{}",
+                    lane.id
+                );
+                seen.push(lane.id);
+            });
+            let expected: Vec<i32> = std::iter::once(0)
+                .chain(sec.left.iter().map(|l| l.id))
+                .chain(sec.right.iter().map(|l| l.id))
+                .collect();
+            assert_eq!(seen, expected);
+        }
     }
 }

@@ -9,8 +9,9 @@
 
 use super::frame::road_frame;
 use super::graph::{driving_direction, Direction};
-use super::lane_span::{lane_span, road_extent};
+use super::lane_span::{road_extent, side_spans};
 use super::spatial::Piece;
+use crate::handles::RoadHandle;
 use crate::math::{angle_difference, normalize_angle, Real, LENGTH_EPSILON, SOLVER_TOLERANCE};
 use crate::model::Road;
 use crate::network::RoadNetwork;
@@ -36,6 +37,26 @@ pub struct RoadPosition {
     pub offset: Real,
     /// The junction the road belongs to, if any.
     pub junction_id: Option<String>,
+    /// Query heading minus the road's heading at s, in (−π, π] (0 when no heading was given).
+    pub relative_heading: Real,
+    /// Horizontal distance from the road surface (m); 0 when the point is on a lane.
+    pub distance: Real,
+}
+
+/// A position on a road as handles, as returned by [`RoadNetwork::locate_point`] (no
+/// allocation); [`RoadNetwork::road_position`] turns it into a [`RoadPosition`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RoadPoint {
+    /// The road.
+    pub road: RoadHandle,
+    /// Lane whose borders enclose t (the outermost lane if t lies beyond the road surface).
+    pub lane_id: i32,
+    /// s along the reference line (m).
+    pub s: Real,
+    /// t from the reference line, positive left (m).
+    pub t: Real,
+    /// Offset from the lane centre, positive left (m).
+    pub offset: Real,
     /// Query heading minus the road's heading at s, in (−π, π] (0 when no heading was given).
     pub relative_heading: Real,
     /// Horizontal distance from the road surface (m); 0 when the point is on a lane.
@@ -90,6 +111,12 @@ impl RoadNetwork {
     /// overlapping roads (junctions). `None` for an empty network, non-finite input, or (in
     /// theory) a point where no road's projection is defined (a centre of curvature).
     pub fn locate(&self, x: Real, y: Real, heading: Option<Real>) -> Option<RoadPosition> {
+        self.locate_point(x, y, heading)
+            .map(|p| self.road_position(&p))
+    }
+
+    /// [`locate`](Self::locate) with the road as a handle: no allocation.
+    pub fn locate_point(&self, x: Real, y: Real, heading: Option<Real>) -> Option<RoadPoint> {
         if !(x.is_finite() && y.is_finite()) {
             return None;
         }
@@ -106,7 +133,16 @@ impl RoadNetwork {
     /// The position of (x, y) projected onto one given road (the nearest point of its
     /// surface if (x, y) lies off it); `None` for an unknown road or non-finite input.
     pub fn locate_on_road(&self, road_id: &str, x: Real, y: Real) -> Option<RoadPosition> {
-        let (ri, _) = self.road_or_err(road_id).ok()?;
+        let p = self.locate_point_on_road(self.road_handle(road_id)?, x, y)?;
+        Some(self.road_position(&p))
+    }
+
+    /// [`locate_on_road`](Self::locate_on_road) by handle: no string look-up.
+    pub fn locate_point_on_road(&self, road: RoadHandle, x: Real, y: Real) -> Option<RoadPoint> {
+        let ri = road.index();
+        if ri >= self.roads.len() {
+            return None;
+        }
         if !(x.is_finite() && y.is_finite()) {
             return None;
         }
@@ -183,18 +219,32 @@ impl RoadNetwork {
         })
     }
 
-    fn position(&self, c: Candidate, heading: Option<Real>) -> RoadPosition {
+    fn position(&self, c: Candidate, heading: Option<Real>) -> RoadPoint {
         let road = &self.roads[c.road];
         let (lane_id, offset) = lane_at(road, c.s, c.t);
-        RoadPosition {
-            road_id: road.id.clone(),
+        RoadPoint {
+            road: RoadHandle(c.road as u32),
             lane_id,
             s: c.s,
             t: c.t,
             offset,
-            junction_id: road.junction.clone(),
             relative_heading: heading.map_or(0.0, |h| normalize_angle(h - c.road_hdg)),
             distance: c.distance,
+        }
+    }
+
+    /// The [`RoadPosition`] of a point: the road's and its junction's ids added.
+    pub fn road_position(&self, p: &RoadPoint) -> RoadPosition {
+        let road = self.road_at(p.road);
+        RoadPosition {
+            road_id: road.id.clone(),
+            lane_id: p.lane_id,
+            s: p.s,
+            t: p.t,
+            offset: p.offset,
+            junction_id: road.junction.clone(),
+            relative_heading: p.relative_heading,
+            distance: p.distance,
         }
     }
 }
@@ -222,21 +272,19 @@ pub(crate) fn lane_at(road: &Road, s: Real, t: Real) -> (i32, Real) {
         (_, _, true) => (-1, right_n),
         _ => return (0, t - off),
     };
-    let mut chosen = sign * n;
-    for k in 1..=n {
-        let id = sign * k;
-        if let Some(sp) = lane_span(road, section, id, s) {
-            let beyond = if sign > 0 {
-                sp.outer >= t
-            } else {
-                sp.outer <= t
-            };
-            if beyond && sp.width() > LENGTH_EPSILON {
-                chosen = id;
-                break;
-            }
+    // The first lane outwards whose outer border lies beyond t; else the outermost.
+    let mut last = None;
+    for (lane, sp) in side_spans(road, section, s, sign > 0) {
+        let beyond = if sign > 0 {
+            sp.outer >= t
+        } else {
+            sp.outer <= t
+        };
+        last = Some((lane.id, sp.center()));
+        if beyond && sp.width() > LENGTH_EPSILON {
+            break;
         }
     }
-    let center = lane_span(road, section, chosen, s).map_or(off, |sp| sp.center());
+    let (chosen, center) = last.unwrap_or((sign * n, off));
     (chosen, t - center)
 }

@@ -12,7 +12,7 @@ mod spatial;
 
 pub use graph::{Direction, LaneHandle};
 pub use lane_span::LaneSpan;
-pub use locate::RoadPosition;
+pub use locate::{RoadPoint, RoadPosition};
 pub use route::{LanePosition, LaneRoute, RouteSegment, LANE_CHANGE_COST};
 pub use route_search::{LaneChange, LaneCost, LanePath, PathCost};
 pub(crate) use spatial::SpatialIndex;

@@ -9,7 +9,7 @@
 //! comparison only. Pitch and roll of a lane pose are the road's.
 
 use super::frame::road_frame;
-use super::lane_span::{lane_span, LaneSpan};
+use super::lane_span::{for_each_span, lane_span, LaneSpan};
 use crate::error::{Error, ErrorKind};
 use crate::math::{normalize_angle, Pose, Real, S_TOLERANCE};
 use crate::model::{Lane, Road};
@@ -51,6 +51,15 @@ impl Road {
         let s = self.check_s(s)?;
         let section = self.lane_section_at(s);
         lane_span(self, section, lane_id, s).ok_or_else(|| self.no_lane(lane_id, s))
+    }
+
+    /// Every lane of the lane section at `s` with its span there, from the centre outwards
+    /// (centre lane, left 1, 2, …, right −1, −2, …), in one pass; each span is the one
+    /// [`lane_span`](Self::lane_span) gives.
+    pub fn lane_spans(&self, s: Real, f: impl FnMut(&Lane, LaneSpan)) -> Result<(), Error> {
+        let s = self.check_s(s)?;
+        for_each_span(self, self.lane_section_at(s), s, f);
+        Ok(())
     }
 
     fn no_lane(&self, lane: i32, s: Real) -> Error {

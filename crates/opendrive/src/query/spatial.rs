@@ -6,6 +6,7 @@
 
 use std::ops::Range;
 
+use rayon::prelude::*;
 use rstar::{PointDistance, RTree, RTreeObject, AABB};
 
 use super::frame::road_frame;
@@ -68,26 +69,22 @@ pub(crate) struct SpatialIndex {
 impl SpatialIndex {
     /// Builds the index for all roads.
     pub(crate) fn build(roads: &[Road]) -> Self {
-        let mut pieces = Vec::new();
-        let mut boxes = Vec::new();
+        // Each road's pieces on their own (in parallel: a piece's box reads its road only),
+        // then joined in road order, so the index is the same whatever the thread count.
+        let per_road_pieces: Vec<Vec<(Piece, AABB<[Real; 2]>)>> = roads
+            .par_iter()
+            .enumerate()
+            .map(|(ri, road)| road_pieces(ri, road))
+            .collect();
+        let total = per_road_pieces.iter().map(Vec::len).sum();
+        let mut pieces = Vec::with_capacity(total);
+        let mut boxes = Vec::with_capacity(total);
         let mut per_road = Vec::with_capacity(roads.len());
-        for (ri, road) in roads.iter().enumerate() {
+        for list in per_road_pieces {
             let first = pieces.len();
-            let geoms = road.plan_view.geometries();
-            for (gi, g) in geoms.iter().enumerate() {
-                let g_end = geoms
-                    .get(gi + 1)
-                    .map_or(road.length, |n| n.s)
-                    .min(road.length);
-                let g_start = g.s.min(g_end);
-                let n = (((g_end - g_start) / PIECE_LENGTH).ceil() as usize).clamp(1, MAX_PIECES);
-                let h = (g_end - g_start) / n as Real;
-                for k in 0..n {
-                    let s0 = g_start + h * k as Real;
-                    let s1 = if k + 1 == n { g_end } else { s0 + h };
-                    boxes.push(piece_box(road, s0, s1));
-                    pieces.push(Piece { road: ri, s0, s1 });
-                }
+            for (piece, env) in list {
+                pieces.push(piece);
+                boxes.push(env);
             }
             per_road.push(first..pieces.len());
         }
@@ -128,6 +125,28 @@ impl SpatialIndex {
             .nearest_neighbor_iter_with_distance_2(&[x, y])
             .map(|(e, d2)| (e.piece, d2))
     }
+}
+
+/// The pieces of road `ri` with their boxes, in order of s: each geometry cut into equal
+/// pieces of at most [`PIECE_LENGTH`].
+fn road_pieces(ri: usize, road: &Road) -> Vec<(Piece, AABB<[Real; 2]>)> {
+    let mut out = Vec::new();
+    let geoms = road.plan_view.geometries();
+    for (gi, g) in geoms.iter().enumerate() {
+        let g_end = geoms
+            .get(gi + 1)
+            .map_or(road.length, |n| n.s)
+            .min(road.length);
+        let g_start = g.s.min(g_end);
+        let n = (((g_end - g_start) / PIECE_LENGTH).ceil() as usize).clamp(1, MAX_PIECES);
+        let h = (g_end - g_start) / n as Real;
+        for k in 0..n {
+            let s0 = g_start + h * k as Real;
+            let s1 = if k + 1 == n { g_end } else { s0 + h };
+            out.push((Piece { road: ri, s0, s1 }, piece_box(road, s0, s1)));
+        }
+    }
+    out
 }
 
 /// Box of the road surface over [s0, s1]: sampled at the ends, interior points and either
