@@ -16,12 +16,17 @@
 //! | `routing` | OpenSCENARIO 1.3 routes: waypoints and routeStrategy planned on the OpenDRIVE lane graph |
 //! | `signals` | OpenSCENARIO 1.3 traffic signal controllers: phases cycling, reference and delay, signal states |
 //! | `user_values` | values from outside for UserDefinedValueCondition: typed text, time series, CSV file |
-//! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: world, entities, actions, controllers, the step |
+//! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: world, entities, building, the step |
+//! | `actions` | OpenSCENARIO 1.3 §7.7 actions at runtime: one file per action kind, the action table |
+//! | `controller` | OpenSCENARIO 1.3 §7.5 controllers: the default controller, route following |
+//! | `traffic` | OpenSCENARIO 1.3 §7.2.2.3 spawned traffic: sources, sinks, swarms, areas |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+mod actions;
 pub mod condition;
+mod controller;
 pub mod domain;
 pub mod models;
 pub mod output;
@@ -30,6 +35,7 @@ pub mod routing;
 pub mod runtime;
 pub mod signals;
 pub mod storyboard;
+mod traffic;
 pub mod trajectory;
 pub mod user_values;
 

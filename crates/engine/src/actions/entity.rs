@@ -11,8 +11,8 @@ use scenario::{Position, SourcePos};
 
 use super::teleport;
 use crate::runtime::error::RuntimeError;
-use crate::runtime::traffic::leave;
 use crate::runtime::world::World;
+use crate::traffic::leave;
 
 /// Adds `entity_ref` at `add_at`, or deletes it when `add_at` is `None`.
 pub(crate) fn apply(

@@ -37,10 +37,10 @@ pub(crate) use appearance::Appearances;
 pub(crate) use environment::EnvironmentState;
 pub use override_controller::ControllerOverrides;
 
-use super::entity::EntityId;
-use super::error::RuntimeError;
-use super::world::World;
 use crate::output::EventRecord;
+use crate::runtime::entity::EntityId;
+use crate::runtime::error::RuntimeError;
+use crate::runtime::world::World;
 use crate::storyboard::{ActionId, ActionStatus};
 
 /// The control domain an action occupies on its actor.
@@ -365,13 +365,9 @@ impl Host<'_> {
             GlobalAction::Traffic {
                 traffic_name,
                 action,
-            } if crate::runtime::traffic::supports(action) => crate::runtime::traffic::start(
-                self.world,
-                &name,
-                traffic_name.as_deref(),
-                action,
-                &pos,
-            ),
+            } if crate::traffic::supports(action) => {
+                crate::traffic::start(self.world, &name, traffic_name.as_deref(), action, &pos)
+            }
             GlobalAction::TrafficSignal(scenario::TrafficSignalAction::State { name, state }) => {
                 self.world
                     .signals

@@ -15,10 +15,10 @@
 use opendrive::LanePosition;
 use scenario::{Position, Route, RouteStrategy, SourcePos};
 
+use crate::controller::RouteFollow;
 use crate::output::EventRecord;
 use crate::position::resolve;
 use crate::routing::{plan_between, plan_random, plan_route, PlannedRoute, RoutingOptions};
-use crate::runtime::controller::RouteFollow;
 use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 

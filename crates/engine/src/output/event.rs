@@ -35,7 +35,7 @@ pub enum EventRecord {
     },
     /// An entity changed outside its motion: it entered or left the scenario
     /// (AddEntityAction, DeleteEntityAction, a traffic source, sink or swarm), or an
-    /// AppearanceAction set one of its lights or animations (runtime/actions/appearance.rs).
+    /// AppearanceAction set one of its lights or animations (actions/appearance.rs).
     Entity {
         /// Simulation time (s): of the action's start, or for traffic actions of the first frame
         /// that shows the vehicle (or its absence).

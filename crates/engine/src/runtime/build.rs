@@ -13,10 +13,10 @@ use scenario::{
     Action, ActionKind, Actors, EntityObject, GlobalAction, PrivateAction, Scenario, Trigger,
 };
 
-use super::actions::ActionTable;
 use super::entity::{Entity, EntityId, EntityKind};
 use super::error::{RuntimeError, RuntimeErrorKind};
 use super::world::World;
+use crate::actions::ActionTable;
 use crate::domain::{BoundingBox, Color, Position3d};
 use crate::storyboard::{
     ActDesc, ActionDesc, ConditionDesc, ConditionEdge, ConditionGroupDesc, ConditionId, EventDesc,

@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 use opendrive::{Direction, Pose, Real, RoadPosition};
 use scenario::{LightState, ObjectType, Performance, VehicleCategory};
 
-use super::actions::ControllerOverrides;
+use crate::actions::ControllerOverrides;
 use crate::domain::{Acceleration6d, BoundingBox, Color, Route, Vector3, Velocity6d};
 use crate::storyboard::ActionId;
 
@@ -147,13 +147,13 @@ pub struct Entity {
     pub odometer: Real,
     /// Visibility flags.
     pub visibility: Visibility,
-    /// The state LightStateAction last gave each light (runtime/actions/appearance.rs).
+    /// The state LightStateAction last gave each light (actions/appearance.rs).
     pub lights: BTreeMap<String, LightState>,
     /// Route assigned by AssignRouteAction.
     pub route: Option<Route>,
     /// The planned route the default controller follows, with the entity's progress along it
-    /// (AssignRouteAction, AcquirePositionAction; runtime/controller/route.rs).
-    pub route_follow: Option<super::controller::RouteFollow>,
+    /// (AssignRouteAction, AcquirePositionAction; controller/route.rs).
+    pub route_follow: Option<crate::controller::RouteFollow>,
     /// The action controlling the longitudinal domain, if any (§7.5.1 control domains).
     pub longitudinal_action: Option<ActionId>,
     /// The action controlling the lateral domain, if any.

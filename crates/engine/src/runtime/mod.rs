@@ -1,6 +1,7 @@
 //! The scenario runtime (OpenSCENARIO 1.3 §8 "Scenario at runtime"): the world and its entity
-//! store, building from the scenario model, the fixed step, the default controller and the
-//! actions.
+//! store, building from the scenario model and the fixed step. The actions, the controllers
+//! and spawned traffic it drives are the crate's top-level modules `actions`, `controller`
+//! and `traffic`.
 //!
 //! | module | job |
 //! | --- | --- |
@@ -14,37 +15,31 @@
 //! | `conditions` | the storyboard's `ConditionSource` |
 //! | `trigger_view` | the step-start world that all triggers of a step see |
 //! | `shapes` | transition shapes and dimensions |
-//! | `actions/*` | one file per action kind, and the `ActionHost` |
-//! | `controller/default` | the default controller |
-//! | `traffic/*` | spawned traffic: sources, sinks, swarms |
 //! | `trailer` | trailer connections and the one-axle trailer kinematics |
 //! | `external` | ExternalObjectReference entities placed at their OpenDRIVE objects |
 //! | `finite` | the step's guard: no non-finite entity state reaches a frame |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
 //! | `step` | `Engine` and its five stages |
 
-mod actions;
-mod build;
+pub(crate) mod build;
 mod conditions;
 mod config;
-mod controller;
-mod entity;
-mod error;
+pub(crate) mod entity;
+pub(crate) mod error;
 mod external;
 mod finite;
 // Read by the controllers stage (issue 13), which lands with the controllers.
 #[allow(dead_code)]
 mod lane_index;
-mod lanes;
-mod selection;
-mod shapes;
+pub(crate) mod lanes;
+pub(crate) mod selection;
+pub(crate) mod shapes;
 mod step;
-mod traffic;
-mod trailer;
-mod trigger_view;
-mod world;
+pub(crate) mod trailer;
+pub(crate) mod trigger_view;
+pub(crate) mod world;
 
-pub use actions::ControllerOverrides;
+pub use crate::actions::ControllerOverrides;
 pub use config::{EngineConfig, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
 pub use entity::{Blend, Entity, EntityId, EntityKind, LaneTrack, Visibility};
 pub use error::{RuntimeError, RuntimeErrorKind};

@@ -7,15 +7,15 @@ use std::time::{Duration, Instant};
 
 use scenario::Scenario;
 
-use super::actions::{ActionTable, Host};
 use super::build::{build, road_network};
 use super::conditions::Conditions;
 use super::config::EngineConfig;
-use super::controller::move_entity;
 use super::error::{RuntimeError, RuntimeErrorKind};
 use super::trigger_view::TriggerView;
 use super::world::World;
+use crate::actions::{ActionTable, Host};
 use crate::condition::ConditionStates;
+use crate::controller::move_entity;
 use crate::output::{EventRecord, EventSink, Frame, FrameSink};
 use crate::storyboard::{Storyboard, TransitionRecord, TransitionSink};
 
@@ -328,8 +328,8 @@ impl Engine {
         }
         // Towed vehicles follow their tows' hitches (runtime/trailer.rs).
         super::trailer::follow(world, dt);
-        // Traffic sources, sinks and swarms (runtime/traffic).
-        super::traffic::step(world, dt);
+        // Traffic sources, sinks and swarms (traffic).
+        crate::traffic::step(world, dt);
         self.counters.controllers += clock.elapsed();
 
         // Stage 4: time advance and measurements (taken by the controllers' move).
@@ -341,7 +341,7 @@ impl Engine {
         self.counters.measurements += clock.elapsed();
 
         // Stage 5: output. Vehicles spawned and removed by traffic actions in this step
-        // (runtime/traffic); a state that is not finite is refused with the step's records
+        // (traffic); a state that is not finite is refused with the step's records
         // (runtime/finite.rs).
         let clock = Instant::now();
         log.borrow_mut().append(&mut world.traffic.events);
@@ -451,7 +451,7 @@ impl crate::storyboard::ActionHost for HostCell<'_> {
     }
 
     fn status(&self, id: crate::storyboard::ActionId) -> crate::storyboard::ActionStatus {
-        super::actions::status(self.table, id, self.time + self.dt)
+        crate::actions::status(self.table, id, self.time + self.dt)
     }
 
     fn init_complete(&mut self) {

@@ -38,14 +38,14 @@ pub struct World {
     pub(crate) user_values: crate::condition::UserValueRegistry,
     /// Trailer mounting points and connections (§7.2.2.6).
     pub(crate) trailers: super::trailer::Trailers,
-    /// Running traffic actions and the run's seed (runtime/traffic).
-    pub(crate) traffic: super::traffic::Traffic,
+    /// Running traffic actions and the run's seed (traffic).
+    pub(crate) traffic: crate::traffic::Traffic,
     /// The scenario's entity selections, expanded when used (runtime/selection.rs).
     pub(crate) selections: super::selection::Selections,
-    /// Lights and animations set by AppearanceActions (runtime/actions/appearance.rs).
-    pub(crate) appearance: super::actions::Appearances,
-    /// Environment set by EnvironmentActions (runtime/actions/environment.rs).
-    pub(crate) environment: super::actions::EnvironmentState,
+    /// Lights and animations set by AppearanceActions (actions/appearance.rs).
+    pub(crate) appearance: crate::actions::Appearances,
+    /// Environment set by EnvironmentActions (actions/environment.rs).
+    pub(crate) environment: crate::actions::EnvironmentState,
 }
 
 impl World {
@@ -66,10 +66,10 @@ impl World {
             monitors: BTreeMap::new(),
             user_values: crate::condition::UserValueRegistry::default(),
             trailers: super::trailer::Trailers::default(),
-            traffic: super::traffic::Traffic::default(),
+            traffic: crate::traffic::Traffic::default(),
             selections: super::selection::Selections::default(),
-            appearance: super::actions::Appearances::default(),
-            environment: super::actions::EnvironmentState::default(),
+            appearance: crate::actions::Appearances::default(),
+            environment: crate::actions::EnvironmentState::default(),
         }
     }
 

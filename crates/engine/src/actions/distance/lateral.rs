@@ -35,9 +35,9 @@ use scenario::{LateralAction, LateralDisplacement, SourcePos};
 
 use super::gauge::{Axis, Gauge};
 use super::law::{spring, Limits};
-use crate::runtime::actions::lane_change::abandon;
-use crate::runtime::actions::speed::entity_ref;
-use crate::runtime::actions::Part;
+use crate::actions::lane_change::abandon;
+use crate::actions::speed::entity_ref;
+use crate::actions::Part;
 use crate::runtime::entity::{Blend, EntityId};
 use crate::runtime::error::RuntimeError;
 use crate::runtime::lanes::lane_at;

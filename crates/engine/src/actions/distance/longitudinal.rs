@@ -27,9 +27,9 @@ use scenario::{LongitudinalAction, LongitudinalDisplacement, SourcePos};
 
 use super::gauge::{Axis, Gauge};
 use super::law::{limit_jerk, spring, Limits};
-use crate::runtime::actions::speed::entity_ref;
-use crate::runtime::actions::Part;
-use crate::runtime::controller::place_on_track;
+use crate::actions::speed::entity_ref;
+use crate::actions::Part;
+use crate::controller::place_on_track;
 use crate::runtime::entity::EntityId;
 use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
