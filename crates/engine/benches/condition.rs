@@ -2,8 +2,10 @@
 //! esmini's curve_r100.xodr through the test harness's fake runtime: the per-call price the
 //! runtime pays for each condition of each evaluated trigger every step.
 
-#[path = "../tests/condition_support/mod.rs"]
+#[path = "../tests/support/condition.rs"]
 mod condition_support;
+#[path = "../tests/support/corpus.rs"]
+mod corpus;
 
 use std::hint::black_box;
 use std::time::Duration;

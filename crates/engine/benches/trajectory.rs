@@ -14,7 +14,9 @@ use scenario::{
     Waypoint,
 };
 
-#[path = "../tests/trajectory_support/mod.rs"]
+#[path = "../tests/support/corpus.rs"]
+mod corpus;
+#[path = "../tests/support/trajectory.rs"]
 mod support;
 
 use support::{corpus as roads, here as pos, world, Roads};

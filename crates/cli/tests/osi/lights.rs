@@ -13,7 +13,7 @@
 //!   light ON, brake lights NORMAL;
 //! - to 2 s: indicator OFF, head light OFF, the other three as before.
 
-mod osi_common;
+use crate::osi_common;
 
 use std::path::Path;
 

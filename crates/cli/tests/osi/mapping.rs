@@ -12,7 +12,7 @@
 //! - Pylon (ExternalObjectReference "pylon"): the road's `<object>` 0.4 × 0.4 × 1.0 m at
 //!   s = 60, t = -5, i.e. world (60, -5); box centre half its height up: (60, -5, 0.5).
 
-mod osi_common;
+use crate::osi_common;
 
 use std::path::{Path, PathBuf};
 

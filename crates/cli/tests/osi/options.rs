@@ -2,7 +2,7 @@
 //! directory mode), determinism of the trace bytes, and bad input, all on esmini's
 //! `cut-in.xosc` (two vehicles, Ego and OverTaker) run for 6 s at dt = 0.05 s: 121 frames.
 
-mod osi_common;
+use crate::osi_common;
 
 use std::path::PathBuf;
 

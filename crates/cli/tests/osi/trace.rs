@@ -12,7 +12,7 @@
 //! - the assigned lane: the OSI Lane whose source_reference identifiers are the engine's
 //!   road id and lane id (OSI 3.8 osi_lane.proto: [road id, lane_section s, lane id]).
 
-mod osi_common;
+use crate::osi_common;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;

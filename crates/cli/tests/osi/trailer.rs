@@ -14,7 +14,7 @@
 //!   `reference/esmini/trailers.csv`): Ego → Ego+, Semi_truck → Semi_truck+,
 //!   Semi_truck_with_extra_trailer → …+ → …++.
 
-mod osi_common;
+use crate::osi_common;
 
 use std::collections::BTreeMap;
 

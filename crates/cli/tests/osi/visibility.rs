@@ -10,7 +10,7 @@
 //! run's own event log; an action started in the step at time T shapes the frames after T
 //! (the frame at T shows the state before that step's actions).
 
-mod osi_common;
+use crate::osi_common;
 
 use std::path::Path;
 

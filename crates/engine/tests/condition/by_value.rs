@@ -1,6 +1,6 @@
 //! ByValueConditions (OpenSCENARIO 1.3 §7.6.2) against a fake runtime.
 
-mod condition_support;
+use crate::condition_support;
 
 use condition_support::{condition, corpus_road, eval, eval_error, FakeWorld};
 use scenario::expr::Value;

@@ -2,7 +2,7 @@
 //! straight_500m.xodr (road "1" along +x, heading 0; lane −1 driven towards +x, lane 1
 //! towards −x).
 
-mod condition_support;
+use crate::condition_support;
 
 use condition_support::{by_entity, corpus_road, eval, FakeWorld};
 use scenario::{AngleType, CoordinateSystem, EntityCondition};

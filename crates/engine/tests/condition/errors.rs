@@ -1,7 +1,7 @@
 //! Condition errors name what was expected, what was found and where the condition (or the
 //! position inside it) was written; nothing panics.
 
-mod condition_support;
+use crate::condition_support;
 
 use condition_support::{at, by_entity, corpus_road, eval_error, measure, FakeWorld};
 use scenario::{EntityCondition, PositionKind, Rule};

@@ -3,7 +3,7 @@
 //! expressions. `files/condition/NAME.xosc` holds one condition per ConditionGroup of its Act's
 //! start trigger; `NAME.expected` gives each condition's expected raw value and why.
 
-mod condition_support;
+use crate::condition_support;
 
 use std::path::Path;
 
@@ -12,10 +12,10 @@ use engine::position::resolve;
 use scenario::{ActionKind, PrivateAction, Scenario};
 
 fn fixture(name: &str) -> String {
-    format!(
-        "{}/tests/files/condition/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    )
+    crate::corpus::fixture("condition")
+        .join(name)
+        .display()
+        .to_string()
 }
 
 /// Loads NAME.xosc, places its Init teleports, sets `speeds`, and checks every condition of

@@ -1,7 +1,7 @@
 //! Motion conditions (OpenSCENARIO 1.3 §7.6.3: Speed, RelativeSpeed, Acceleration,
 //! StandStill, TraveledDistance) and triggeringEntitiesRule any / all.
 
-mod condition_support;
+use crate::condition_support;
 
 use condition_support::{by_entity, corpus_road, eval, eval_at, FakeWorld};
 use engine::condition::ConditionState;

@@ -2,7 +2,7 @@
 //! straight_500m.xodr: one road "1", 500 m along +x, with no predecessor or successor, its
 //! surface reaching 1.535 + 1.535 + 1.68 + 6 = 10.75 m to either side of the reference line.
 
-mod condition_support;
+use crate::condition_support;
 
 use condition_support::{by_entity, corpus_road, eval, eval_at, FakeWorld};
 use engine::condition::ConditionState;

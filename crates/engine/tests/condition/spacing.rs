@@ -7,7 +7,7 @@
 //! Ego at x = 50 and Lead at x = 80, both on lane −1 heading +x:
 //! reference points 30 m apart; boxes [49.15, 53.65] and [79.15, 83.65], gap 25.5 m.
 
-mod condition_support;
+use crate::condition_support;
 
 use condition_support::{at, by_entity, corpus_road, eval, measure, FakeWorld};
 use scenario::{

@@ -1,6 +1,6 @@
 //! Same inputs → byte-identical CSV and event log (the determinism requirement).
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::output::{CsvWriter, JsonlWriter};
 use engine::{Engine, EngineConfig};

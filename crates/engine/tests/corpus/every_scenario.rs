@@ -2,7 +2,7 @@
 //! error naming the missing file (corpus README). Also: a bad input in a test scenario gives
 //! an error with file:line:col.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::{Engine, EngineConfig, LoadError};
 use runtime_support::{corpus, file, Recorder};

@@ -33,31 +33,31 @@ use scenario::Scenario;
 const SCENARIOS: [(&str, &str); 7] = [
     (
         "one_action_example0.xosc",
-        include_str!("files/robustness/one_action_example0.xosc"),
+        include_str!("../files/robustness/one_action_example0.xosc"),
     ),
     (
         "Stop_on_offroad0.xosc",
-        include_str!("files/robustness/Stop_on_offroad0.xosc"),
+        include_str!("../files/robustness/Stop_on_offroad0.xosc"),
     ),
     (
         "trajectory_example0.xosc",
-        include_str!("files/robustness/trajectory_example0.xosc"),
+        include_str!("../files/robustness/trajectory_example0.xosc"),
     ),
     (
         "syncronize_straight_example0.xosc",
-        include_str!("files/robustness/syncronize_straight_example0.xosc"),
+        include_str!("../files/robustness/syncronize_straight_example0.xosc"),
     ),
     (
         "trailer_example0.xosc",
-        include_str!("files/robustness/trailer_example0.xosc"),
+        include_str!("../files/robustness/trailer_example0.xosc"),
     ),
     (
         "speed_shapes.xosc",
-        include_str!("files/robustness/speed_shapes.xosc"),
+        include_str!("../files/robustness/speed_shapes.xosc"),
     ),
     (
         "speed_profile_modes.xosc",
-        include_str!("files/robustness/speed_profile_modes.xosc"),
+        include_str!("../files/robustness/speed_profile_modes.xosc"),
     ),
 ];
 
@@ -97,11 +97,7 @@ const MAX_STEPS: f64 = 300.0;
 const HANG_DEADLINE: Duration = Duration::from_secs(120);
 
 fn fixture(name: &str) -> PathBuf {
-    PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/files/robustness"
-    ))
-    .join(name)
+    crate::corpus::fixture("robustness").join(name)
 }
 
 /// Byte ranges of the attribute values of `text` that read as numbers.

@@ -7,7 +7,7 @@
 //! error carries a NaN. Fixtures: `tests/files/robustness/cases/` (each says its case in a
 //! comment), on `straight_500m.xodr` (road "1", 500 m, lanes −3…3).
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::path::PathBuf;
 
@@ -16,11 +16,7 @@ use runtime_support::Recorder;
 
 /// A fixture of `tests/files/robustness/cases/`.
 fn case(name: &str) -> PathBuf {
-    PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/files/robustness/cases"
-    ))
-    .join(format!("{name}.xosc"))
+    crate::corpus::fixture("robustness/cases").join(format!("{name}.xosc"))
 }
 
 /// The name of the element that the 1-based `line`:`col` of `file` lies in (or starts).
@@ -421,7 +417,7 @@ fn state_overflowing_from_finite_extremes_is_refused_before_its_frame() {
 
 /// A Polyline of one vertex is no trajectory (XSD `Polyline`: a line needs two vertices).
 /// The FollowTrajectoryAction (its Action element) is skipped with the error in the event
-/// log (the runtime's rule for a trajectory that cannot be built, runtime/actions/mod.rs),
+/// log (the runtime's rule for a trajectory that cannot be built, actions/mod.rs),
 /// and Ego drives on at 10 m/s on its lane: x(5 s) = 50 + 10 · 5 = 100 m.
 #[test]
 fn trajectory_of_one_vertex_is_refused_and_logged() {

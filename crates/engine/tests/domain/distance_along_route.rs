@@ -9,7 +9,7 @@ use engine::domain::{
 };
 use opendrive::{LanePosition, Pose, RoadNetwork};
 
-mod domain_support;
+use crate::domain_support;
 use domain_support::participant;
 
 use RouteDistanceEnum::{FromEnd, FromStart};

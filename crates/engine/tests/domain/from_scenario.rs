@@ -1,18 +1,13 @@
 //! Mapping OpenSCENARIO 1.x entities onto the 2.0 §8.7 actors (`from_scenario` module table),
 //! checked on esmini corpus scenarios against the values written in their XML.
 
-use std::path::Path;
-
 use engine::domain::{Actor, DomainErrorKind, IntendedInfrastructure, Physical, VehicleCategory};
 use opendrive::Pose;
 use scenario::Scenario;
 
 fn load(name: &str) -> Scenario {
-    let path = format!(
-        "{}/../../../shared/corpus/esmini/xosc/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    Scenario::load(Path::new(&path)).expect("corpus scenario loads")
+    let path = crate::corpus::corpus(&format!("esmini/xosc/{name}"));
+    Scenario::load(&path).expect("corpus scenario loads")
 }
 
 fn actor(s: &Scenario, name: &str, pose: Pose) -> Actor {

@@ -15,7 +15,7 @@ use std::f64::consts::PI;
 use engine::domain::{DomainErrorKind, OnRouteType, PhysicalObject, RouteElement};
 use opendrive::Pose;
 
-mod domain_support;
+use crate::domain_support;
 use domain_support::{arc_pose, car_box, network};
 
 /// Round-trip tolerance: the road model inverts world → road by Newton iteration to 1e-10 m.

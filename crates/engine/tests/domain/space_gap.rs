@@ -14,7 +14,7 @@ use std::sync::OnceLock;
 use engine::domain::{DistanceDirection, DomainErrorKind, TrafficParticipant};
 use opendrive::{Pose, RoadNetwork};
 
-mod domain_support;
+use crate::domain_support;
 use domain_support::{arc_pose, network, participant};
 use proptest::prelude::*;
 

@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 use engine::domain::{DomainErrorKind, Vehicle, VehicleCategory};
 use opendrive::{Pose, RoadNetwork};
 
-mod domain_support;
+use crate::domain_support;
 use domain_support::{assert_close_opt, car_box, network, participant_with};
 
 /// Road positions are Newton solutions to 1e-10 m; divided by speeds ≥ 10 m/s.

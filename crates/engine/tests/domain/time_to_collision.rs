@@ -11,7 +11,7 @@ use engine::domain::{
 };
 use opendrive::Pose;
 
-mod domain_support;
+use crate::domain_support;
 use domain_support::{assert_close_opt, car_box, participant_with};
 
 /// Tolerance of the closed forms below: they involve a handful of operations on numbers of

@@ -10,7 +10,7 @@ use engine::domain::{
 };
 use opendrive::{Pose, RoadNetwork};
 
-mod domain_support;
+use crate::domain_support;
 
 /// Poses come from the road model's forward evaluation on a straight line.
 const TOL: f64 = 1e-9;

@@ -1,7 +1,7 @@
 //! AddEntityAction and DeleteEntityAction (OpenSCENARIO 1.3 XSD `EntityAction`): an entity
 //! leaves the scenario and comes back; conditions on it while it is away.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::path::PathBuf;
 
@@ -10,7 +10,7 @@ use engine::{Engine, EngineConfig};
 use runtime_support::Recorder;
 
 fn file(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
+    crate::corpus::fixture("entities").join(name)
 }
 
 /// Car1 drives 10 m/s from s = 20. DeleteEntityAction starts at the first step with t > 2

@@ -1,9 +1,7 @@
 //! AppearanceAction and EnvironmentAction state (OpenSCENARIO 1.3 XSD `LightStateAction`,
 //! `EnvironmentAction`): kept per entity / in the world and written to the event log.
 
-mod runtime_support;
-
-use std::path::PathBuf;
+use crate::runtime_support;
 
 use engine::output::EventRecord;
 use engine::storyboard::Transition;
@@ -145,10 +143,7 @@ fn light_state_action_ends_after_its_transition_time() {
 /// stops them: stop transitions, no end.
 #[test]
 fn animation_actions_end_as_the_action_table_says() {
-    let events = run_log(
-        &PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities"))
-            .join("animation.xosc"),
-    );
+    let events = run_log(&crate::corpus::fixture("entities").join("animation.xosc"));
     let at = |element: &str, transition: Transition| transition_time(&events, element, transition);
     let close = |t: Option<f64>, expected: f64| t.is_some_and(|t| (t - expected).abs() < 1e-9);
     for action in ["door", "mirrors", "window", "walk"] {

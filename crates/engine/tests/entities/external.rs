@@ -7,7 +7,7 @@ use engine::runtime::EntityKind;
 use engine::{Engine, EngineConfig, Frame, FrameSink};
 
 fn file(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
+    crate::corpus::fixture("entities").join(name)
 }
 
 /// The message of the build error of test file `name`.

@@ -4,7 +4,7 @@
 //! evaluate to true", the condition groups of the parent Act; with EntityRefs "the resulting
 //! actors are the union".
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::path::PathBuf;
 
@@ -12,7 +12,7 @@ use engine::{Engine, EngineConfig};
 use runtime_support::Recorder;
 
 fn file(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
+    crate::corpus::fixture("entities").join(name)
 }
 
 /// select_triggering.xosc: Car1, Car2, Car3 start at 10, 20, 10 m/s. Act "pick" fires in the

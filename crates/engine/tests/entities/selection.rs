@@ -2,7 +2,7 @@
 //! "Generalization of entities"): ManeuverGroup actors, nested selections, the multiplicity
 //! restriction and cycles.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::path::PathBuf;
 
@@ -10,7 +10,7 @@ use engine::{Engine, EngineConfig, EventRecord, LoadError, RuntimeErrorKind};
 use runtime_support::Recorder;
 
 fn file(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
+    crate::corpus::fixture("entities").join(name)
 }
 
 /// Loads test file `name`.

@@ -2,7 +2,7 @@
 //! TrafficSinkAction and TrafficSwarmAction, ByType selections over spawned vehicles, and
 //! seeded, reproducible streams.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::path::{Path, PathBuf};
 
@@ -11,7 +11,7 @@ use engine::{Engine, EngineConfig};
 use runtime_support::{corpus, Recorder, Row};
 
 fn file(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
+    crate::corpus::fixture("entities").join(name)
 }
 
 fn run(path: &Path, config: EngineConfig) -> (Recorder, Vec<EventRecord>) {

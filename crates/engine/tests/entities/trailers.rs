@@ -3,7 +3,7 @@
 //! DisconnectTrailerAction, and the corpus scenarios `trailers` (esmini reference) and
 //! `trailer_example0`.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::path::{Path, PathBuf};
 
@@ -11,7 +11,7 @@ use engine::{Engine, EngineConfig};
 use runtime_support::{corpus, esmini_reference, Recorder};
 
 fn file(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/entities")).join(name)
+    crate::corpus::fixture("entities").join(name)
 }
 
 fn load(path: &Path) -> Engine {
@@ -255,7 +255,7 @@ fn frames_carry_the_trailer_of_each_tow() {
 
 /// A TeleportAction on the tow (at 1.05 s, to s = 160 on the straight that runs along +y from
 /// (90, 40) after the curve) takes the chain along in line: in the frame of 1.10 s, the end of
-/// the teleport's step, the truck stands at its target (runtime/actions/teleport.rs) s = 160,
+/// the teleport's step, the truck stands at its target (actions/teleport.rs) s = 160,
 /// x = 90 + 1.75 (lane −1 lies to the right, +x), y = 40 + (160 − 112.832) = 87.168, and the
 /// trailers' axles 7 and 14 m behind it on x = 91.75, heading π/2, at the truck's speed 10 m/s.
 #[test]

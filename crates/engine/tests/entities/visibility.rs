@@ -1,7 +1,7 @@
 //! VisibilityAction in the engine's frames (OpenSCENARIO 1.3 XSD `VisibilityAction`: the actor
 //! is visible in image generators `graphics`, in sensors `sensors`, for other traffic
 //! participants `traffic`; all three true until an action changes them). The OSI side is
-//! `crates/cli/tests/osi_visibility.rs`, on the same scenario.
+//! `crates/cli/tests/osi/visibility.rs`, on the same scenario.
 
 use std::path::PathBuf;
 

@@ -8,7 +8,7 @@
 //!   of road "1" (230 m; contact point end): road 1's s runs against road 102's. Lane −1 of
 //!   road 102 continues as lane 1 of road 1.
 
-mod condition_support;
+use crate::condition_support;
 
 use condition_support::{corpus_road, relative_lane_to_ego, relative_road_to, FakeWorld};
 use engine::position::resolve;

@@ -1,7 +1,7 @@
 //! Bad positions give errors that name what was expected, what was found and where the
 //! position was written (never a panic).
 
-mod condition_support;
+use crate::condition_support;
 
 use condition_support::{at, corpus_road, relative_road_to, FakeWorld};
 use engine::position::resolve;

@@ -9,8 +9,8 @@
 //! change within t = 0 (listed in `EXCLUDED` with the action), which are not position
 //! resolution.
 
-mod condition_support;
-mod runtime_support;
+use crate::condition_support;
+use crate::runtime_support;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -62,10 +62,7 @@ const EXCLUDED: &[(&str, &str, &str)] = &[
 ];
 
 fn corpus(rel: &str) -> String {
-    format!(
-        "{}/../../../shared/corpus/{rel}",
-        env!("CARGO_MANIFEST_DIR")
-    )
+    crate::corpus::corpus(rel).display().to_string()
 }
 
 /// name → (x, y, z, h, p, r) at t = 0 in the reference CSV of `scenario`.

@@ -4,7 +4,7 @@
 //! curve_r100.xodr (road "0": 500 m along +x, then an arc of curvature 0.01 turning left
 //! about the centre (500, 100), then straight along +y; lanes ±1 3.07 m wide).
 
-mod condition_support;
+use crate::condition_support;
 
 use std::f64::consts::PI;
 

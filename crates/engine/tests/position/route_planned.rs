@@ -15,7 +15,7 @@
 //! * `shortest` (road 3, 260 m against 360 m): road 3, s = 75, x = 110 + 75 = 185,
 //!   y = −1.75, heading 0.
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use engine::position::{resolve, EntityQuery, EntityView, PositionErrorKind};
 use engine::routing::{plan_route, RoutingErrorKind, RoutingOptions};

@@ -8,9 +8,7 @@
 //! waypoint, so at t = 175 / 25 = 7 s it is at pathS 175; Marker is teleported to pathS 175
 //! of the same route at t = 0. Both must be on the same road, at s = 75.
 
-mod runtime_support;
-
-use std::path::PathBuf;
+use crate::runtime_support;
 
 use engine::EngineConfig;
 use runtime_support::run_with;
@@ -20,8 +18,7 @@ const TOL: f64 = 1e-6;
 
 #[test]
 fn a_random_route_is_one_path_to_a_route_position_and_to_the_controller() {
-    let path = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/position"))
-        .join("route_seed.xosc");
+    let path = crate::corpus::fixture("position").join("route_seed.xosc");
     let mut roads_seen = Vec::new();
     for seed in 0..200 {
         let config = EngineConfig {

@@ -2,7 +2,7 @@
 //! hand-computed on esmini's straight_500m.xodr (road "1" along +x; lane −1
 //! centre at t = −1.535 driven towards +s, lane 1 at t = 1.535 driven towards −s).
 
-mod condition_support;
+use crate::condition_support;
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

@@ -20,7 +20,7 @@
 //! taken as relative to the lane) would give atan(−0.02) + atan(−0.02) ≈ −0.04 from the
 //! first step on.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::f64::consts::PI;
 use std::path::PathBuf;
@@ -33,8 +33,7 @@ use runtime_support::{run_with, Recorder};
 const TOL: f64 = 1e-9;
 
 fn fixture() -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/position"))
-        .join("teleport_widening.xosc")
+    crate::corpus::fixture("position").join("teleport_widening.xosc")
 }
 
 /// a − b wrapped to (−π, π].

@@ -2,7 +2,7 @@
 //! §6.3.2), hand-computed on esmini's straight_500m.xodr (one straight road "1" along +x,
 //! flat; lanes ±1 are 3.07 m wide, so lane −1's centre is at t = −1.535).
 
-mod condition_support;
+use crate::condition_support;
 
 use std::f64::consts::FRAC_PI_2;
 

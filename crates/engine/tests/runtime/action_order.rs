@@ -1,8 +1,8 @@
-//! The order in which the running actions of one step act (runtime/actions/mod.rs,
+//! The order in which the running actions of one step act (actions/mod.rs,
 //! controller/default.rs): storyboard (document) order. The standard leaves it open; esmini
 //! 3.6.0 uses document order, which its lane_change_simple reference shows.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::EngineConfig;
 use runtime_support::{corpus, esmini_reference, run_with};

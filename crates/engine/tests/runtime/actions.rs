@@ -1,7 +1,7 @@
 //! Actions against closed forms (OpenSCENARIO 1.3 §7.7.2): SpeedAction with a linear shape,
 //! LaneChangeAction with a sinusoidal shape, TeleportAction to a LanePosition.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use approx::assert_abs_diff_eq;
 use opendrive::{normalize_angle, RoadNetwork};

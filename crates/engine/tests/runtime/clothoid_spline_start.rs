@@ -2,7 +2,7 @@
 //! (OpenSCENARIO 1.3 XSD `ClothoidSplineSegment`: positionStart is optional) starts the spline at
 //! the actor's pose instead of being refused.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::{Engine, EngineConfig};
 use runtime_support::{corpus, Recorder};

@@ -1,7 +1,7 @@
 //! The default controller (OpenSCENARIO 1.3 §7.5.1): follows its lane through a junction and
 //! into the next lane section by the lanes' links.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use approx::assert_abs_diff_eq;
 use engine::EngineConfig;

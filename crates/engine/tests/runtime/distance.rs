@@ -1,13 +1,13 @@
 //! LongitudinalDistanceAction and LateralDistanceAction (OpenSCENARIO 1.3 §7.7.2.1, §7.7.2.2)
 //! against hand computations, on the scenarios of `tests/files/distance` (README there).
 //!
-//! The law under test (runtime/actions/distance): a critically damped spring a = k·u − 2√k·w,
+//! The law under test (actions/distance): a critically damped spring a = k·u − 2√k·w,
 //! k = 0.4 /m × the tension limit, clamped to the DynamicConstraints; time gap × the
 //! reference's speed; freespace = reference-point distance less the boxes' extents. The cars of
 //! the fixtures are 5 m × 2 m with the box centre 1.4 m ahead of the reference point: front
 //! extent 3.9 m, rear 1.1 m, 1 m to each side. dt = 0.05 s; the actions start at t = 1 s.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::path::PathBuf;
 
@@ -21,7 +21,7 @@ const DT: f64 = 0.05;
 const EXACT: f64 = 1e-9;
 
 fn fixture(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/distance")).join(name)
+    crate::corpus::fixture("distance").join(name)
 }
 
 fn run(name: &str, params: &[(&str, &str)]) -> (Recorder, Vec<EventRecord>) {

@@ -4,7 +4,7 @@
 //! §7.7.2.1) in highway_merge, highway_merge_advanced and distance_test, LateralDistanceAction
 //! (§7.7.2.2) in keep_lateral_distance. Each test states what pins the numbers down.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::storyboard::Transition;
 use engine::{EngineConfig, EventRecord};
@@ -93,7 +93,7 @@ fn highway_merge_advanced_gap_closing_agrees_with_esmini() {
 /// starts LaneChange1Event at 2.75 s, and the next LateralDistanceAction at 5.75 s, as esmini.
 /// The largest position difference, 0.083 m at 12 s, is in OverTaker's tracking of Ego's 4 s
 /// lane change with maxAcceleration 5 and maxSpeed 3: oscsim's lateral law is its own damped
-/// spring (runtime/actions/distance/lateral.rs); esmini's lateral source was not at hand, and
+/// spring (actions/distance/lateral.rs); esmini's lateral source was not at hand, and
 /// the two differ there by less than the 0.1 m tolerance.
 #[test]
 fn keep_lateral_distance_approaches_gradually_like_esmini() {

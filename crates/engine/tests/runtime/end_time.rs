@@ -2,7 +2,7 @@
 //! length (runtime/step.rs: a tolerance of a millionth of a step for the round-off of
 //! steps · dt).
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::{EngineConfig, StopReason};
 use runtime_support::{file, run_with};

@@ -3,7 +3,7 @@
 //! small texts written here: columns found by header name, element names with spaces, and the
 //! place named when a line cannot be read.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::storyboard::Transition;
 use runtime_support::{

@@ -1,7 +1,7 @@
 //! Global and user-defined actions (OpenSCENARIO 1.3 §7.7.1, §7.7.3) and controller actions
 //! (§7.7.2.5), and the event log's JSON lines.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::output::{EventSink, JsonlWriter};
 use engine::EventRecord;

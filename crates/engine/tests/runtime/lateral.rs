@@ -4,7 +4,7 @@
 //! The road is esmini's straight_500m.xodr along +x: lane −1's centre at t = −1.535, lane 1's
 //! at t = +1.535 (3.07 m wide lanes), so on it s = x and t = y.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use approx::assert_abs_diff_eq;
 use runtime_support::{run, Recorder, Row};

@@ -4,7 +4,7 @@
 //! LaneChangeAction / LaneOffsetAction (OpenSCENARIO 1.3 §7.7.2.2) agree with esmini's and
 //! shows, in numbers, the cause of each difference that remains.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use approx::assert_abs_diff_eq;
 use engine::storyboard::Transition;

@@ -1,13 +1,13 @@
 //! OverrideControllerValueAction (OpenSCENARIO 1.3 §7.7.2.5, XSD
 //! `OverrideControllerValueAction`): the overrides are kept per input on the entity, each
 //! change is in the event log, and the default controller's motion is unchanged (the standard
-//! maps none of the inputs to motion; runtime/actions/override_controller.rs).
+//! maps none of the inputs to motion; actions/override_controller.rs).
 //!
 //! tests/files/sync/override_values.xosc: Ego drives at 10 m/s; at 1 s one action releases the
 //! throttle and overrides brake (50 %), clutch (0.25), parking brake (800 N), steering wheel
 //! (0.1 rad) and gear (manual 2); at 2 s another releases brake and parking brake only.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::output::EventRecord;
 use scenario::{BrakeInput, Gear};

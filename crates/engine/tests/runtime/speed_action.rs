@@ -10,7 +10,7 @@
 //! step the speed of the step's end and moves with it, so the frame at t shows v(t) and the
 //! distance is Σ v(tₖ)·dt over the step ends tₖ.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::f64::consts::PI;
 

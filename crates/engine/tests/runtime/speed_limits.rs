@@ -12,7 +12,7 @@
 //! the motion whatever the action allows (semantics-pitfalls #9). oscsim once took 15 m/s²
 //! (16.5 vs 15.5 m/s at 0.1 s).
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::EngineConfig;
 use runtime_support::{corpus, esmini_reference, run_with};

@@ -12,7 +12,7 @@
 //! The runtime sets in each step the speed planned for the step's end, so the frame at time t
 //! shows v(t).
 
-mod runtime_support;
+use crate::runtime_support;
 
 use approx::assert_abs_diff_eq;
 use engine::storyboard::Transition;

@@ -5,7 +5,7 @@
 //! s = 250 m, so it arrives at T = 200 / 10 = 20 s. The NPC starts at s = 0 m at 5 m/s and
 //! its target is at s = 300 m. Both tolerances are 0. The step is dt = 0.05 s.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::output::EventRecord;
 use engine::storyboard::{ElementState, TransitionRecord};
@@ -65,7 +65,7 @@ fn sync_end(events: &[EventRecord]) -> f64 {
         .unwrap_or(f64::NAN)
 }
 
-/// Final speed 20 m/s. The profile (module doc of runtime/actions/synchronize.rs) covers
+/// Final speed 20 m/s. The profile (module doc of actions/synchronize.rs) covers
 /// s = 300 m in t = 20 s from v0 = 5 to v1 = 20 with a peak, since s/t = 15 > (v0 + v1)/2 =
 /// 12.5: v_x = 15 + √(((300 − 100)² + (300 − 400)²) / 2) / 20 = 15 + √25000 / 20 = 22.9057 m/s,
 /// a = (2·22.9057 − 25) / 20 = 1.04057 m/s², reached at x = (22.9057 − 5) / 1.04057 = 17.207 s.

@@ -8,7 +8,7 @@
 //! up to 7.3 and 5.9 m/s² (its SynchronizeAction ignores Performance); oscsim keeps the limit
 //! (semantics-pitfalls #9), which this test checks instead.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use runtime_support::{corpus, esmini_reference, Recorder};
 

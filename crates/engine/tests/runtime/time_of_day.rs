@@ -2,7 +2,7 @@
 //! XSD `TimeOfDayCondition`, `TimeOfDay`: with `animation` true the time runs on with the
 //! simulation, with `animation` false it stands still).
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::output::EventRecord;
 use engine::storyboard::Transition;

@@ -3,7 +3,7 @@
 //! ManeuverGroups of a Story run concurrently; document order has no meaning), and a Story's
 //! TeleportAction shows its target in the step's frame.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::output::EventRecord;
 use runtime_support::run;

@@ -3,7 +3,7 @@
 //! condition groups evaluates to true". Here on an Act's start trigger
 //! T = (C1 ∧ C2) ∨ C3, all edges none, steps k at t = 0.1·k.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ConditionEdge, ConditionGroupDesc, TriggerDesc};
 use storyboard_support::*;

@@ -7,7 +7,7 @@
 //! The Act's start trigger is one condition group; steps are k at t = 0.1·k, delay 0.5 s = 5
 //! steps.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ConditionEdge, TriggerDesc};
 use storyboard_support::*;

@@ -6,7 +6,7 @@
 //! Each test puts one condition on the start trigger of the Act, which waits from t = 0, and
 //! reads the time of the Act's start transition. Steps are k = 0, 1, … at t = 0.1·k.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ConditionEdge, Priority, TriggerDesc};
 use storyboard_support::*;

@@ -2,7 +2,7 @@
 //! panics. Limits from OpenSCENARIO 1.3: `Condition/@delay` has range [0..inf[,
 //! `ConditionGroup` holds 1..* conditions.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{
     ConditionEdge, ConditionGroupDesc, ErrorKind, Storyboard, StoryboardDesc, TriggerDesc,

@@ -11,7 +11,7 @@
 //! stopTransition" (OpenSCENARIO 1.3 §8.4.2.2); esmini logs the terminated Event and its action
 //! with endTransition.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ConditionEdge, StoryDesc, StoryboardDesc, TriggerDesc};
 use storyboard_support::*;

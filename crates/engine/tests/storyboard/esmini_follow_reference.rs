@@ -9,7 +9,7 @@
 //! stages (an Event's end is seen by triggers from the next step, hence esmini's 9.050 = 5.000 +
 //! 0.050 + 4), and children handled in their parent's step.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ConditionEdge, StoryDesc, StoryboardDesc, TriggerDesc};
 use storyboard_support::*;

@@ -5,7 +5,7 @@
 //!
 //! Steps are k at t = 0.1·k.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ElementState, Priority};
 use storyboard_support::*;

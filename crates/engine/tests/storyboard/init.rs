@@ -9,7 +9,7 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ActionDesc, ActionId, ElementState, Priority, StoryboardDesc};
 use storyboard_support::*;

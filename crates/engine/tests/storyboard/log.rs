@@ -2,7 +2,7 @@
 //! literal state and transition names. JSON objects for `--events FILE.jsonl`; text lines in
 //! the format of esmini's reference logs (corpus `reference/esmini/*.events.txt`).
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ElementKind, ElementState, Priority, Transition, TransitionRecord};
 use storyboard_support::*;

@@ -7,7 +7,7 @@
 //! Every test has E1 (parallel, count 3, trigger k ≥ 1, action A1 of 100 steps) running from
 //! t = 0.1, and E2 with the priority under test and trigger k ≥ 3. Steps are k at t = 0.1·k.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ElementState, EventDesc, ManeuverDesc, Priority};
 use storyboard_support::*;

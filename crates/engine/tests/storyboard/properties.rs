@@ -10,7 +10,7 @@
 //!   storyboard's stop;
 //! - two runs of the same input give the same log (determinism).
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use std::collections::{HashMap, HashSet};
 

@@ -2,7 +2,7 @@
 //! semantics-pitfalls.md), shown by the per-stage counters of the first step:
 //! init phase → stop triggers → start triggers → completions.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{StageCount, StageCounters};
 use storyboard_support::*;

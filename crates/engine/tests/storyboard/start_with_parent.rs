@@ -3,7 +3,7 @@
 //! in all other cases", and §8.3.1: only start triggers, actions and stop triggers take simulation
 //! time, so a just-started element's children are handled in the same step.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ElementKind, Priority, Transition};
 use storyboard_support::*;

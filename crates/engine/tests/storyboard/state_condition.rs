@@ -8,7 +8,7 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ElementKind, ElementState, Priority, Transition};
 use storyboard_support::*;

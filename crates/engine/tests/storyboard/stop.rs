@@ -7,7 +7,7 @@
 //!
 //! Steps are k at t = 0.1·k.
 
-mod storyboard_support;
+use crate::storyboard_support;
 
 use engine::storyboard::{ActionDesc, ActionId, Priority, StoryboardDesc};
 use storyboard_support::*;

@@ -22,12 +22,8 @@ use scenario::{ObjectType, Orientation, Position, PositionKind, ReferenceContext
 
 /// A corpus road network, by path relative to `shared/corpus/`.
 pub fn corpus_road(rel: &str) -> RoadNetwork {
-    let path = format!(
-        "{}/../../../shared/corpus/{rel}",
-        env!("CARGO_MANIFEST_DIR")
-    );
     // The corpus is part of the test fixture; a missing file is a broken checkout.
-    RoadNetwork::from_file(Path::new(&path)).expect("corpus road network loads")
+    RoadNetwork::from_file(&crate::corpus::corpus(rel)).expect("corpus road network loads")
 }
 
 /// The source position every test position claims to come from.

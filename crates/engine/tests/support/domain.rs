@@ -4,8 +4,6 @@
 //! Not every test file uses every helper.
 #![allow(dead_code)]
 
-use std::path::Path;
-
 use engine::domain::{
     BoundingBox, MovableObject, PhysicalObject, Position3d, TrafficParticipant, Vector3,
 };
@@ -13,11 +11,8 @@ use opendrive::{Pose, RoadNetwork};
 
 /// A road network of the shared corpus, by its path below `corpus/`.
 pub fn network(name: &str) -> RoadNetwork {
-    let path = format!(
-        "{}/../../../shared/corpus/{name}",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    RoadNetwork::from_file(Path::new(&path)).expect("corpus road network loads")
+    // The corpus is part of the test fixture; a missing file is a broken checkout.
+    RoadNetwork::from_file(&crate::corpus::corpus(name)).expect("corpus road network loads")
 }
 
 /// The test car's box: length 4, width 2, height 1.5, centre (1.5, 0, 0.75), so that from the

@@ -303,13 +303,10 @@ pub fn simple_act() -> ActDesc {
 
 /// esmini 3.6.0's reference transition log `NAME.events.txt` from the shared corpus.
 pub fn esmini_events(name: &str) -> String {
-    let path = format!(
-        "{}/../../../shared/corpus/reference/esmini/{name}.events.txt",
-        env!("CARGO_MANIFEST_DIR")
-    );
+    let path = crate::corpus::corpus(&format!("reference/esmini/{name}.events.txt"));
     match std::fs::read_to_string(&path) {
         Ok(text) => text,
-        Err(error) => panic!("cannot read {path}: {error}"),
+        Err(error) => panic!("cannot read {}: {error}", path.display()),
     }
 }
 

@@ -30,19 +30,16 @@ impl EntityQuery for Roads {
 
 /// A corpus road network, by path relative to `shared/corpus/`.
 pub fn corpus(rel: &str) -> Roads {
-    let path = format!(
-        "{}/../../../shared/corpus/{rel}",
-        env!("CARGO_MANIFEST_DIR")
-    );
     // The corpus is part of the test fixture; a missing file is a broken checkout.
-    Roads(RoadNetwork::from_file(Path::new(&path)).expect("corpus road network loads"))
+    Roads(RoadNetwork::from_file(&crate::corpus::corpus(rel)).expect("corpus road network loads"))
 }
 
 /// A road network of this crate's `tests/files/`.
 pub fn fixture(name: &str) -> Roads {
-    let path = format!("{}/tests/files/{name}", env!("CARGO_MANIFEST_DIR"));
     // The fixture is part of the test; a missing file is a broken checkout.
-    Roads(RoadNetwork::from_file(Path::new(&path)).expect("fixture road network loads"))
+    Roads(
+        RoadNetwork::from_file(&crate::corpus::fixture(name)).expect("fixture road network loads"),
+    )
 }
 
 /// The straight 500 m road of esmini (road "1" along +x from the origin).
@@ -227,18 +224,10 @@ impl EntityQuery for Placed {
     }
 }
 
-/// A corpus path, relative to `shared/corpus/`.
-pub fn corpus_path(rel: &str) -> String {
-    format!(
-        "{}/../../../shared/corpus/{rel}",
-        env!("CARGO_MANIFEST_DIR")
-    )
-}
-
 /// A corpus scenario, relative to `shared/corpus/`.
 pub fn corpus_scenario(rel: &str) -> scenario::Scenario {
     // A corpus scenario that loads (checked by the scenario crate's own corpus tests).
-    scenario::Scenario::load(Path::new(&corpus_path(rel))).expect("corpus scenario loads")
+    scenario::Scenario::load(&crate::corpus::corpus(rel)).expect("corpus scenario loads")
 }
 
 /// The road network a loaded scenario names.

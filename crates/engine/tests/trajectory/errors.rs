@@ -3,7 +3,7 @@
 //! points plus order) non-decreasing values; `Timing/@scale`). Each message is checked
 //! in full: what was expected, what was found, and where.
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use engine::trajectory::{build, TrajectoryClock, TrajectoryErrorKind};
 use scenario::{ClothoidSpline, ClothoidSplineSegment, Shape};

@@ -5,7 +5,7 @@
 //! The car drives at 30 km/h = 8.333 m/s; each trajectory starts at the car's pose when its
 //! event starts (times from the reference's events.txt).
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use engine::trajectory::{build_for_actor, Trajectory, TrajectoryClock};
 use opendrive::Pose;

@@ -11,8 +11,8 @@
 //! between them; positions at one moment therefore differ along the path (up to about 6 m
 //! here), but both start at 0 s and end at the last control point's 12.2 s.
 
-mod runtime_support;
-mod trajectory_support;
+use crate::runtime_support;
+use crate::trajectory_support;
 
 use engine::trajectory::{build, TrajectoryClock};
 use opendrive::Pose;

@@ -5,8 +5,8 @@
 //! every sampled position lies on the polyline, and the distance along it grows with the
 //! car's speed.
 
-mod runtime_support;
-mod trajectory_support;
+use crate::runtime_support;
+use crate::trajectory_support;
 
 use engine::trajectory::build;
 use runtime_support::esmini_reference;

@@ -2,7 +2,7 @@
 //! either fails with an error or gives a trajectory whose points are finite everywhere, whose
 //! s(t) never runs backwards, and whose closest point is no farther than any sampled point.
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use engine::trajectory::build;
 use proptest::prelude::*;

@@ -3,7 +3,7 @@
 //! a lane change on a two-lane road. Expected paths and lengths are worked out by hand from
 //! the files' road links and lengths, quoted at each test.
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use engine::routing::{plan_route, PlannedRoute, RoutingOptions};
 use opendrive::{Direction, LanePosition};

@@ -5,8 +5,8 @@
 //! written for these tests (each file's comment describes it); every expected road, time and
 //! lateral position is worked out by hand at the test.
 
-mod runtime_support;
-mod trajectory_support;
+use crate::runtime_support;
+use crate::trajectory_support;
 
 use engine::output::EventRecord;
 use engine::routing::{plan_route, RoutingOptions};
@@ -14,7 +14,6 @@ use engine::storyboard::ElementState;
 use engine::EngineConfig;
 use runtime_support::{run_with, Recorder};
 use scenario::{RouteStrategy, Waypoint};
-use std::path::Path;
 use trajectory_support::{fixture, here, lane};
 
 /// Step length of the runs (s), `EngineConfig::default().dt`.
@@ -22,7 +21,7 @@ const DT: f64 = 0.05;
 
 /// Runs `tests/files/routing/NAME` with parameter overrides and a seed.
 fn run(name: &str, params: &[(&str, &str)], seed: u64) -> (Recorder, Vec<EventRecord>) {
-    let path = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/routing")).join(name);
+    let path = crate::corpus::fixture("routing").join(name);
     let config = EngineConfig {
         seed,
         ..EngineConfig::default()

@@ -5,7 +5,7 @@
 //! (shared/corpus/reference/esmini/routing-test.csv, until the AcquirePositionAction at
 //! 25.45 s).
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use engine::routing::{plan_route, RoutingOptions};
 use scenario::RoutingAction;

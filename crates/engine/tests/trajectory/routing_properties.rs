@@ -4,7 +4,7 @@
 //! the previous one ended, or on the next road); and `shortest` is never beaten on its own
 //! cost (length + `LANE_CHANGE_COST` per lane change) by any other strategy.
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use engine::routing::{plan_route, PlannedRoute, RoutingErrorKind, RoutingOptions};
 use opendrive::LANE_CHANGE_COST;

@@ -4,7 +4,7 @@
 //! 10 m/s), then junction 200 and road 4. Connecting roads 11, 12, 21, 31 are 10 m long with
 //! no speed (so `DEFAULT_SPEED`). All lanes are lane −1, driven towards +s.
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use engine::routing::{plan_between, plan_route, PlannedRoute, RoutingErrorKind, RoutingOptions};
 use scenario::RouteStrategy;

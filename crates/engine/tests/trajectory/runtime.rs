@@ -3,7 +3,7 @@
 //! entity keeps after a timed trajectory, six-dimensional polylines and partially timed
 //! ClothoidSplines, on this crate's fixtures (`tests/files/trajectory/`) and corpus scenarios.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use std::path::{Path, PathBuf};
 
@@ -32,11 +32,7 @@ fn run(path: &Path, max_time: f64) -> (Recorder, Vec<EventRecord>) {
 }
 
 fn fixture(name: &str) -> PathBuf {
-    PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/files/trajectory"
-    ))
-    .join(name)
+    crate::corpus::fixture("trajectory").join(name)
 }
 
 /// The time of the end transition of storyboard element `element`.

@@ -2,7 +2,7 @@
 //! `ClothoidSpline`, `Nurbs`), against hand computations and closed forms written out at
 //! each test.
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, FRAC_PI_6, PI};
 

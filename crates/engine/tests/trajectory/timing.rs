@@ -3,7 +3,7 @@
 //! `ControlPoint/@time`, `Timing`: t_sim = t_traj · scale + offset, absolute or relative to
 //! the action's start), and the closest point used for initialDistanceOffset and follow mode.
 
-mod trajectory_support;
+use crate::trajectory_support;
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

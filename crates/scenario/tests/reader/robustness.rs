@@ -6,7 +6,7 @@ use std::path::Path;
 use proptest::prelude::*;
 use scenario::Scenario;
 
-const VALID: &str = include_str!("files/errors/valid.xosc");
+const VALID: &str = include_str!("../files/errors/valid.xosc");
 
 fn fixture_path() -> &'static Path {
     Path::new(concat!(

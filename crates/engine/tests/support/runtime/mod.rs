@@ -18,17 +18,11 @@ pub use esmini_reference::{
 
 /// A test scenario in `tests/files/runtime`.
 pub fn file(name: &str) -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/runtime")).join(name)
+    crate::corpus::fixture("runtime").join(name)
 }
 
 /// A file of the shared corpus.
-pub fn corpus(rel: &str) -> PathBuf {
-    PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/corpus"
-    ))
-    .join(rel)
-}
+pub use crate::corpus::corpus;
 
 /// One entity in one frame.
 #[derive(Debug, Clone, PartialEq)]

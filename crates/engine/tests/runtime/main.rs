@@ -1,0 +1,31 @@
+//! The fixed-step runtime (OpenSCENARIO 1.3 §8): actions (speed, lateral, distance, synchronize),
+//! the default controller, the trigger view, action order, end of the run, global values, and
+//! esmini's reference runs and the reader of them.
+//!
+//! One test target per area (crates/engine/tests/<area>/main.rs); each file below is one
+//! module, the helpers are shared from `tests/support/`.
+
+#[path = "../support/corpus.rs"]
+mod corpus;
+#[path = "../support/runtime/mod.rs"]
+mod runtime_support;
+
+mod action_order;
+mod actions;
+mod clothoid_spline_start;
+mod controller;
+mod distance;
+mod distance_esmini;
+mod end_time;
+mod esmini_reference_reader;
+mod global;
+mod lateral;
+mod lateral_esmini;
+mod override_values;
+mod speed_action;
+mod speed_limits;
+mod speed_profile;
+mod sync_arrival;
+mod sync_esmini;
+mod time_of_day;
+mod trigger_view;
