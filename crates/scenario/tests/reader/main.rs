@@ -8,5 +8,6 @@ mod corpus;
 mod coverage;
 mod errors;
 mod every_type;
+mod memory_files;
 mod model;
 mod robustness;
