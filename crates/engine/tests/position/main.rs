@@ -17,6 +17,7 @@ mod trajectory_support;
 mod continuation;
 mod errors;
 mod esmini_init;
+mod geo;
 mod road_lane;
 mod route_planned;
 mod route_seed;

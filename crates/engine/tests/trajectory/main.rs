@@ -21,6 +21,7 @@ mod routing_corpus;
 mod routing_drive;
 mod routing_esmini;
 mod routing_properties;
+mod routing_random_route;
 mod routing_strategies;
 mod runtime;
 mod shapes;

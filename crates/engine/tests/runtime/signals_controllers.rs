@@ -9,7 +9,7 @@
 //! restarts (go [31, 39), attention [39, 41), stop [41, 51)), and B keeps its 3 s delay to A:
 //! go from 34.
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::output::EventRecord;
 use engine::signals::SignalKind;

@@ -6,9 +6,7 @@
 //! about 0.1 mm (PROJ's `utm` is the extended transverse Mercator; proj4rs follows it); the
 //! issue asks for 1 cm.
 
-mod condition_support;
-
-use std::path::Path;
+use crate::condition_support;
 
 use condition_support::{at, corpus_road, orientation, FakeWorld};
 use engine::position::{resolve, PositionErrorKind};
@@ -29,8 +27,7 @@ fn geo(latitude_deg: f64, longitude_deg: f64) -> scenario::Position {
 }
 
 fn offset_network() -> RoadNetwork {
-    let path =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/files/position/geo_utm32_offset.xodr");
+    let path = crate::corpus::fixture("position/geo_utm32_offset.xodr");
     RoadNetwork::from_file(&path).expect("fixture loads")
 }
 

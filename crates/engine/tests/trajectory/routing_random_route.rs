@@ -7,9 +7,7 @@
 //! lead to road 2 and road 3: the one draw of the walk there decides the road. At t = 7 s the
 //! car has driven 175 m: 90 m on road 1, 10 m on the connecting road, 75 m on road 2 or 3.
 
-mod runtime_support;
-
-use std::path::PathBuf;
+use crate::runtime_support;
 
 use engine::EngineConfig;
 use runtime_support::run_with;
@@ -18,8 +16,7 @@ use runtime_support::run_with;
 const TOL: f64 = 1e-6;
 
 fn road_at_7s(seed: u64) -> String {
-    let path = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/files/position"))
-        .join("random_route.xosc");
+    let path = crate::corpus::fixture("position").join("random_route.xosc");
     let config = EngineConfig {
         seed,
         ..EngineConfig::default()

@@ -4,7 +4,7 @@
 //! `tests/files/runtime/user_values.xosc` (three Events, each setting a monitor when it starts:
 //! Mode equalTo "go", Speed greaterThan 10, Armed equalTo true).
 
-mod runtime_support;
+use crate::runtime_support;
 
 use engine::output::EventRecord;
 use engine::user_values::{parse_csv, parse_value};
