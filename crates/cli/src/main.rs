@@ -4,9 +4,11 @@
 //! runtime errors), 2 on a usage error.
 
 mod dsl;
+mod batch_cmd;
 mod osi_sink;
 mod road;
 mod run;
+mod step_args;
 mod validate;
 
 use std::process::ExitCode;
@@ -34,6 +36,8 @@ enum Command {
     /// OpenSCENARIO DSL 2.x tools (`.osc` files).
     #[command(subcommand)]
     Dsl(dsl::DslCommand),
+    /// Run every variant of a parameter value distribution; `batch merge` joins shard outputs.
+    Batch(Box<batch_cmd::BatchArgs>),
 }
 
 fn main() -> ExitCode {
@@ -43,6 +47,7 @@ fn main() -> ExitCode {
         Command::Validate(args) => validate::run(args),
         Command::Run(args) => run::run(*args),
         Command::Dsl(command) => dsl::run(command),
+        Command::Batch(args) => batch_cmd::run(*args),
     };
     match result {
         Ok(code) => code,

@@ -13,7 +13,7 @@ use std::time::Instant;
 
 use anyhow::Context;
 use engine::output::{CsvWriter, JsonlWriter, SignalsCsvWriter};
-use engine::{Engine, EngineConfig, EventRecord, EventSink, FrameSink};
+use engine::{Engine, EventRecord, EventSink, FrameSink};
 
 /// Arguments of `oscsim run`.
 #[derive(clap::Args, Debug)]
@@ -23,19 +23,8 @@ use engine::{Engine, EngineConfig, EventRecord, EventSink, FrameSink};
 pub struct RunArgs {
     /// The scenario (.xosc).
     scenario: PathBuf,
-    /// Step length in seconds.
-    #[arg(long, default_value_t = engine::runtime::DEFAULT_DT)]
-    dt: f64,
-    /// Simulated seconds to run (default: until the storyboard ends).
-    #[arg(long)]
-    duration: Option<f64>,
-    /// Hard cap on simulated seconds.
-    #[arg(long, default_value_t = engine::runtime::DEFAULT_MAX_TIME)]
-    max_time: f64,
-    /// Seed of the random streams (spawned traffic, routeStrategy random); the same seed gives
-    /// the same run.
-    #[arg(long, default_value_t = engine::runtime::DEFAULT_SEED)]
-    seed: u64,
+    #[command(flatten)]
+    step: crate::step_args::StepArgs,
     /// Override a global parameter, NAME=VALUE (repeatable).
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = name_value)]
     params: Vec<(String, String)>,
@@ -127,12 +116,7 @@ impl EventSink for Events {
 
 /// Runs `oscsim run`.
 pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
-    let config = EngineConfig {
-        dt: args.dt,
-        duration: args.duration,
-        max_time: args.max_time,
-        seed: args.seed,
-    };
+    let config = args.step.config();
     let wall = Instant::now();
     let mut engine = Engine::load(&args.scenario, &args.params, config)
         .with_context(|| format!("cannot run {}", args.scenario.display()))?;

@@ -59,5 +59,6 @@ pub use object::{
 pub(crate) use road_path::shortest_road_path;
 pub use route::{Route, RouteStretch};
 pub use route_coords::{RouteElement, RoutePoint};
+pub use time_headway::time_headway_between;
 pub use vehicle::{Axle, Vehicle};
 pub use vehicle_group::VehicleGroup;

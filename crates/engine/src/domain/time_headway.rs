@@ -15,7 +15,7 @@
 //! caller was there), and `None` when the caller stands still (speed exactly 0: it never gets
 //! there) or its speed is not finite. Measured along the road, not straight (esmini #139).
 
-use opendrive::{Real, RoadNetwork};
+use opendrive::{Real, RoadNetwork, RoadPosition};
 
 use super::road_locate::{locate, AxisMap};
 use super::{DomainError, Physical, Vehicle};
@@ -31,15 +31,27 @@ impl Vehicle {
     ) -> Result<Option<Real>, DomainError> {
         let caller = locate(network, self.physical_object())?;
         let other = locate(network, reference.physical_object())?;
-        let map = AxisMap::between(network, &caller, &other)?;
-        let (s_reference, _) = map.apply(other.s, other.t);
-        let travel = if caller.relative_heading.cos() >= 0.0 {
-            1.0
-        } else {
-            -1.0
-        };
-        let ahead = travel * (s_reference - caller.s);
-        let speed = self.speed();
-        Ok((speed != 0.0 && speed.is_finite()).then(|| ahead / speed))
+        time_headway_between(network, &caller, self.speed(), &other)
     }
+}
+
+/// [`Vehicle::time_headway`] for a caller and a reference whose road positions are known (the
+/// runtime has located every entity already): the caller's road position (its
+/// `relative_heading` gives the direction of travel) and signed speed, and the reference's
+/// road position.
+pub fn time_headway_between(
+    network: &RoadNetwork,
+    caller: &RoadPosition,
+    speed: Real,
+    reference: &RoadPosition,
+) -> Result<Option<Real>, DomainError> {
+    let map = AxisMap::between(network, caller, reference)?;
+    let (s_reference, _) = map.apply(reference.s, reference.t);
+    let travel = if caller.relative_heading.cos() >= 0.0 {
+        1.0
+    } else {
+        -1.0
+    };
+    let ahead = travel * (s_reference - caller.s);
+    Ok((speed != 0.0 && speed.is_finite()).then(|| ahead / speed))
 }

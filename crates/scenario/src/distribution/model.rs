@@ -8,6 +8,8 @@ use super::error::TextPos;
 pub struct ParameterValueDistribution {
     /// `ScenarioFile@filepath` as written.
     pub scenario_file: String,
+    /// Position of the `ScenarioFile` element.
+    pub scenario_file_pos: TextPos,
     /// `Deterministic` or `Stochastic`.
     pub definition: DistributionDefinition,
 }

@@ -195,6 +195,7 @@ impl<'d, 'i> Reader<'d, 'i> {
         }
         Ok(ParameterValueDistribution {
             scenario_file,
+            scenario_file_pos: self.node_pos(file),
             definition,
         })
     }

@@ -1,0 +1,36 @@
+//! Variation at scale (OpenSCENARIO 1.3 §9.5 "Parameter value distributions"): run every
+//! variant of a ParameterValueDistribution file and tabulate what happened in each.
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `plan` | the distribution file → numbered variants, checked against the ScenarioFile |
+//! | `seed` | each variant's random seed from the batch seed and its number |
+//! | `shard` | disjoint shares for several processes: `--shard I/N`, Slurm arrays, Kubernetes Indexed Jobs |
+//! | `metrics` | collision, time to collision, headway and gap of the host, by the §8.7 methods |
+//! | `run` | the variants on a rayon pool, results by variant number |
+//! | `table` | the results table and `results.csv` |
+//! | `parquet_file` | `results.parquet` |
+//! | `merge` | shard outputs joined into what one unsharded run writes |
+//! | `report` | the summary and `report.html` |
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+mod merge;
+mod metrics;
+mod parquet_file;
+mod plan;
+mod report;
+mod run;
+mod seed;
+mod shard;
+mod table;
+
+pub use merge::{merge, write_outputs, MergeError};
+pub use metrics::{Measures, Observer};
+pub use parquet_file::{to_parquet, ParquetError};
+pub use plan::{Plan, PlanError};
+pub use report::{report_html, summary};
+pub use run::{run, selected, variant_dir, Options, RunError, Save};
+pub use seed::variant_seed;
+pub use shard::{Shard, ShardError};
+pub use table::{quantize, quantize_time, CsvError, Outcome, Row, Stop, Table, FIXED_COLUMNS};

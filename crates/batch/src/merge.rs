@@ -1,0 +1,137 @@
+//! Joining shard outputs (`oscsim batch merge DIR… --out DIR`) into exactly what one unsharded
+//! run writes: the rows of every shard's `results.csv`, by variant number, then `results.csv`,
+//! `results.parquet` and `report.html` written from that table by [`write_outputs`] — the same
+//! function the unsharded run uses, on the same values (table.rs keeps numbers as written), so
+//! the files are equal byte for byte. Per-variant folders (`variants/NNNNN`) are copied.
+
+use std::path::{Path, PathBuf};
+
+use crate::parquet_file::{to_parquet, ParquetError};
+use crate::report::report_html;
+use crate::table::{CsvError, Table};
+
+/// Why shard outputs could not be merged or outputs written.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum MergeError {
+    /// A file could not be read, written or copied.
+    #[error("{what} {path}: {message}")]
+    Io {
+        /// What was being done.
+        what: &'static str,
+        /// The path.
+        path: String,
+        /// The I/O error.
+        message: String,
+    },
+    /// A shard's results.csv is not a results table.
+    #[error(transparent)]
+    Csv(#[from] CsvError),
+    /// Shards of different batches: other parameters or monitors.
+    #[error(
+        "expected shards of one batch with the header of {first}, found another header in {other}"
+    )]
+    DifferentBatches {
+        /// The first shard's file.
+        first: String,
+        /// The shard that differs.
+        other: String,
+    },
+    /// Two shards ran the same variant.
+    #[error("expected disjoint shards, found variant {variant} in {first} and in {other}")]
+    Overlap {
+        /// The variant.
+        variant: u64,
+        /// One shard's file.
+        first: String,
+        /// The other's.
+        other: String,
+    },
+    /// The Parquet writer failed.
+    #[error(transparent)]
+    Parquet(#[from] ParquetError),
+}
+
+fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> MergeError + 'a {
+    move |e| MergeError::Io {
+        what,
+        path: path.display().to_string(),
+        message: e.to_string(),
+    }
+}
+
+/// Writes `results.csv`, `results.parquet` and `report.html` of `table` into `dir`.
+pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
+    std::fs::create_dir_all(dir).map_err(io("cannot create", dir))?;
+    let csv = dir.join("results.csv");
+    std::fs::write(&csv, table.to_csv()).map_err(io("cannot write", &csv))?;
+    let parquet = dir.join("results.parquet");
+    std::fs::write(&parquet, to_parquet(table)?).map_err(io("cannot write", &parquet))?;
+    let html = dir.join("report.html");
+    std::fs::write(&html, report_html(table)).map_err(io("cannot write", &html))?;
+    Ok(())
+}
+
+/// Merges the shard folders `shards` into `out` (module doc); returns the merged table.
+pub fn merge(shards: &[PathBuf], out: &Path) -> Result<Table, MergeError> {
+    let mut merged: Option<(Table, String)> = None;
+    let mut owner: std::collections::BTreeMap<u64, String> = Default::default();
+    for dir in shards {
+        let path = dir.join("results.csv");
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(&path).map_err(io("cannot read", &path))?;
+        let table = Table::from_csv(&text, &name)?;
+        for row in &table.rows {
+            if let Some(first) = owner.insert(row.variant, name.clone()) {
+                return Err(MergeError::Overlap {
+                    variant: row.variant,
+                    first,
+                    other: name,
+                });
+            }
+        }
+        match &mut merged {
+            None => merged = Some((table, name)),
+            Some((m, first)) => {
+                if m.parameters != table.parameters || m.monitors != table.monitors {
+                    return Err(MergeError::DifferentBatches {
+                        first: first.clone(),
+                        other: name,
+                    });
+                }
+                m.rows.extend(table.rows);
+            }
+        }
+        copy_variants(&dir.join("variants"), &out.join("variants"))?;
+    }
+    let mut table = merged.map(|(t, _)| t).unwrap_or_default();
+    table.rows.sort_by_key(|r| r.variant);
+    write_outputs(out, &table)?;
+    Ok(table)
+}
+
+/// Copies the variant folders under `from` into `to` (nothing when `from` does not exist or is
+/// `to`).
+fn copy_variants(from: &Path, to: &Path) -> Result<(), MergeError> {
+    if !from.is_dir() || same(from, to) {
+        return Ok(());
+    }
+    for entry in std::fs::read_dir(from).map_err(io("cannot read", from))? {
+        let entry = entry.map_err(io("cannot read", from))?;
+        let target = to.join(entry.file_name());
+        std::fs::create_dir_all(&target).map_err(io("cannot create", &target))?;
+        for file in std::fs::read_dir(entry.path()).map_err(io("cannot read", &entry.path()))? {
+            let file = file.map_err(io("cannot read", &entry.path()))?;
+            let dest = target.join(file.file_name());
+            std::fs::copy(file.path(), &dest).map_err(io("cannot copy to", &dest))?;
+        }
+    }
+    Ok(())
+}
+
+fn same(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    }
+}

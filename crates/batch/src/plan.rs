@@ -1,0 +1,191 @@
+//! What a batch runs: the variants of a ParameterValueDistribution file (OpenSCENARIO 1.3 §9.5)
+//! on its ScenarioFile, checked before any variant runs.
+//!
+//! The variants are the parameter sets of `scenario::distribution::DistributionPlan`, numbered
+//! from 0 in its order: for a Deterministic distribution the cross product with the first
+//! distribution of the file varying slowest and the last fastest (ValueSetDistribution: each
+//! ParameterValueSet one alternative); for a Stochastic one, run 1's draws then run 2's, all
+//! from one ChaCha20 stream seeded by `randomSeed`. The numbering is therefore a property of
+//! the file alone: variant 17 is the same parameter set on every machine, in every shard.
+//!
+//! Checked here, each an error naming the distribution file's line:column: the ScenarioFile
+//! exists and loads, and every parameter the distribution varies is a global parameter the
+//! scenario declares. The distribution reader itself refuses empty sets, a stepWidth ≤ 0, an
+//! inverted range, UserDefinedDistribution and the like, with their positions.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use opendrive::RoadNetwork;
+
+use scenario::distribution::model::{
+    DeterministicKind, DistributionDefinition, ParameterValueDistribution,
+};
+use scenario::distribution::{DistributionPlan, TextPos};
+use scenario::Scenario;
+
+/// Why a batch cannot start.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum PlanError {
+    /// The distribution file cannot be read.
+    #[error("expected a readable distribution file, found {message} at {file}")]
+    Io {
+        /// The file.
+        file: String,
+        /// The I/O error.
+        message: String,
+    },
+    /// The distribution file is not a valid ParameterValueDistribution (its own position).
+    #[error(transparent)]
+    Distribution(#[from] scenario::distribution::DistributionError),
+    /// The ScenarioFile does not exist.
+    #[error(
+        "expected an existing ScenarioFile, found none at {path} (ScenarioFile at {file}:{pos})"
+    )]
+    MissingScenario {
+        /// The distribution file.
+        file: String,
+        /// The ScenarioFile element.
+        pos: TextPos,
+        /// The path tried.
+        path: String,
+    },
+    /// The ScenarioFile does not load (its own position in its own file).
+    #[error("the ScenarioFile does not load: {0}")]
+    Scenario(scenario::Error),
+    /// The scenario's road network does not load (its own file and position).
+    #[error("the ScenarioFile's road network does not load: {0}")]
+    RoadNetwork(opendrive::Error),
+    /// A varied parameter the scenario does not declare.
+    #[error(
+        "expected a global parameter of the scenario ({declared}), found '{name}' at {file}:{pos}"
+    )]
+    UndeclaredParameter {
+        /// The distribution file.
+        file: String,
+        /// The distribution that names it.
+        pos: TextPos,
+        /// The name.
+        name: String,
+        /// The scenario's parameters, comma-separated.
+        declared: String,
+    },
+}
+
+/// A batch ready to run.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The distribution file.
+    pub distribution: PathBuf,
+    /// The scenario it names, loaded with its declared parameter values.
+    pub scenario: Scenario,
+    /// Its road network (the measurements' roads).
+    pub network: Arc<RoadNetwork>,
+    /// The varied parameters, in the order the distribution first names them.
+    pub parameters: Vec<String>,
+    /// Each variant's parameter values, by name; variant i is `variants[i]`.
+    pub variants: Vec<BTreeMap<String, String>>,
+}
+
+impl Plan {
+    /// Reads `path`, expands it and checks it against its ScenarioFile.
+    pub fn load(path: &Path) -> Result<Plan, PlanError> {
+        let text = std::fs::read_to_string(path).map_err(|e| PlanError::Io {
+            file: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        let distribution = scenario::distribution::read(&text, path)?;
+        let expanded = DistributionPlan::from_distribution(&distribution, path)?;
+        let file = path.display().to_string();
+        if !expanded.scenario_file.is_file() {
+            return Err(PlanError::MissingScenario {
+                file,
+                pos: distribution.scenario_file_pos,
+                path: expanded.scenario_file.display().to_string(),
+            });
+        }
+        let scenario = Scenario::load(&expanded.scenario_file).map_err(PlanError::Scenario)?;
+        let network = match &scenario.road_network.logic_file {
+            Some(path) => RoadNetwork::from_file(path).map_err(PlanError::RoadNetwork)?,
+            None => RoadNetwork::from_str(
+                r#"<OpenDRIVE><header revMajor="1" revMinor="6"/></OpenDRIVE>"#,
+                &scenario.path,
+            )
+            .map_err(PlanError::RoadNetwork)?,
+        };
+        let named = varied(&distribution);
+        for (name, pos) in &named {
+            if !scenario
+                .parameter_declarations
+                .iter()
+                .any(|p| &p.name == name)
+            {
+                let declared: Vec<&str> = scenario
+                    .parameter_declarations
+                    .iter()
+                    .map(|p| p.name.as_str())
+                    .collect();
+                return Err(PlanError::UndeclaredParameter {
+                    file,
+                    pos: *pos,
+                    name: name.clone(),
+                    declared: if declared.is_empty() {
+                        "it declares none".into()
+                    } else {
+                        declared.join(", ")
+                    },
+                });
+            }
+        }
+        let mut parameters: Vec<String> = Vec::new();
+        for (name, _) in named {
+            if !parameters.contains(&name) {
+                parameters.push(name);
+            }
+        }
+        Ok(Plan {
+            distribution: path.to_path_buf(),
+            scenario,
+            network: Arc::new(network),
+            parameters,
+            variants: expanded.runs,
+        })
+    }
+
+    /// The values of variant `i` in the order of [`Plan::parameters`] (empty text for a
+    /// parameter the variant does not set, which a ValueSetDistribution may leave out).
+    pub fn values(&self, i: usize) -> Vec<String> {
+        self.parameters
+            .iter()
+            .map(|p| self.variants[i].get(p).cloned().unwrap_or_default())
+            .collect()
+    }
+}
+
+/// Every parameter the distribution varies, with the position of the distribution naming it,
+/// in document order.
+fn varied(d: &ParameterValueDistribution) -> Vec<(String, TextPos)> {
+    match &d.definition {
+        DistributionDefinition::Deterministic(list) => list
+            .iter()
+            .flat_map(|dist| {
+                let names: Vec<String> = match &dist.kind {
+                    DeterministicKind::Single { parameter_name, .. } => {
+                        vec![parameter_name.clone()]
+                    }
+                    DeterministicKind::ValueSetDistribution(sets) => {
+                        sets.iter().flatten().map(|(n, _)| n.clone()).collect()
+                    }
+                };
+                names.into_iter().map(move |n| (n, dist.pos))
+            })
+            .collect(),
+        DistributionDefinition::Stochastic(s) => s
+            .distributions
+            .iter()
+            .map(|dist| (dist.parameter_name.clone(), dist.pos))
+            .collect(),
+    }
+}

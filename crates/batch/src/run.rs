@@ -1,0 +1,233 @@
+//! Running the variants of a [`Plan`]: on a rayon pool of `jobs` threads, each variant an
+//! independent engine with its own seed (seed.rs), the rows collected by variant number, so
+//! the table is the same for any number of jobs.
+//!
+//! A variant that fails — its parameters make the scenario invalid, a runtime error stops it —
+//! gives a row with its error message; the batch goes on.
+
+use std::fs::File;
+use std::io::BufWriter;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use engine::output::{CsvWriter, JsonlWriter};
+use engine::storyboard::{ElementKind, Transition};
+use engine::{Engine, EngineConfig, EventRecord, EventSink, FrameSink};
+use rayon::prelude::*;
+
+use crate::metrics::Observer;
+use crate::plan::Plan;
+use crate::seed::variant_seed;
+use crate::shard::Shard;
+use crate::table::{Outcome, Row, Stop, Table};
+
+/// Which per-variant outputs to keep in `DIR/variants/NNNNN/`.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Save {
+    /// `trajectories.csv` (the `oscsim run --csv` layout).
+    pub csv: bool,
+    /// `events.jsonl` (the `oscsim run --events` layout).
+    pub events: bool,
+}
+
+/// How to run a batch.
+#[derive(Debug, Clone)]
+pub struct Options {
+    /// The batch's seed; each variant's is derived from it (seed.rs).
+    pub seed: u64,
+    /// Step length, s.
+    pub dt: f64,
+    /// Simulated seconds per variant (default: until the storyboard ends).
+    pub duration: Option<f64>,
+    /// Cap on simulated seconds per variant.
+    pub max_time: f64,
+    /// The entity measured against the others (metrics.rs).
+    pub host: String,
+    /// Worker threads (at least 1).
+    pub jobs: usize,
+    /// This process's share of the variants.
+    pub shard: Shard,
+    /// Run only this variant (if it is in the shard).
+    pub only: Option<u64>,
+    /// Per-variant outputs, under this folder.
+    pub save: Option<(Save, PathBuf)>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            seed: engine::runtime::DEFAULT_SEED,
+            dt: engine::runtime::DEFAULT_DT,
+            duration: None,
+            max_time: engine::runtime::DEFAULT_MAX_TIME,
+            host: "Ego".into(),
+            jobs: 1,
+            shard: Shard::ALL,
+            only: None,
+            save: None,
+        }
+    }
+}
+
+/// Why the batch as a whole could not run (a variant's own failure is a row, not this).
+#[derive(Debug, thiserror::Error)]
+#[error("cannot start {jobs} worker threads: {message}")]
+pub struct RunError {
+    jobs: usize,
+    message: String,
+}
+
+/// The variant numbers this process runs, ascending.
+pub fn selected(plan: &Plan, options: &Options) -> Vec<u64> {
+    (0..plan.variants.len() as u64)
+        .filter(|&v| options.shard.contains(v) && options.only.map_or(true, |o| o == v))
+        .collect()
+}
+
+/// Runs the selected variants of `plan`; `progress(done, total)` is called after each.
+pub fn run(
+    plan: &Plan,
+    options: &Options,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Table, RunError> {
+    let variants = selected(plan, options);
+    let total = variants.len();
+    let done = AtomicUsize::new(0);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(options.jobs.max(1))
+        .build()
+        .map_err(|e| RunError {
+            jobs: options.jobs,
+            message: e.to_string(),
+        })?;
+    let rows: Vec<Row> = pool.install(|| {
+        variants
+            .par_iter()
+            .map(|&v| {
+                let row = Row {
+                    variant: v,
+                    params: plan.values(v as usize),
+                    result: run_variant(plan, options, v),
+                };
+                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                row
+            })
+            .collect()
+    });
+    let monitors = plan
+        .scenario
+        .monitor_declarations
+        .iter()
+        .map(|m| m.name.clone())
+        .collect::<std::collections::BTreeSet<_>>()
+        .into_iter()
+        .collect();
+    Ok(Table {
+        parameters: plan.parameters.clone(),
+        monitors,
+        rows,
+    })
+}
+
+/// Counts Event starts and forwards records to an optional event log.
+struct Events {
+    started: u64,
+    log: Option<JsonlWriter<BufWriter<File>>>,
+}
+
+impl EventSink for Events {
+    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+        if let EventRecord::Transition(t) = record {
+            if t.kind == ElementKind::Event && t.transition == Transition::Start {
+                self.started += 1;
+            }
+        }
+        self.log.as_mut().map_or(Ok(()), |l| l.event(record))
+    }
+
+    fn finish(&mut self) -> std::io::Result<()> {
+        self.log.as_mut().map_or(Ok(()), |l| l.finish())
+    }
+}
+
+/// The folder of variant `v`'s outputs.
+pub fn variant_dir(root: &Path, v: u64) -> PathBuf {
+    root.join("variants").join(format!("{v:05}"))
+}
+
+fn create(path: &Path) -> Result<BufWriter<File>, String> {
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    }
+    File::create(path)
+        .map(BufWriter::new)
+        .map_err(|e| format!("cannot create {}: {e}", path.display()))
+}
+
+/// Runs variant `v`: the outcome, or the message of what failed.
+fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String> {
+    let params: Vec<(String, String)> = plan.variants[v as usize]
+        .iter()
+        .map(|(k, x)| (k.clone(), x.clone()))
+        .collect();
+    let config = EngineConfig {
+        dt: options.dt,
+        duration: options.duration,
+        max_time: options.max_time,
+        seed: variant_seed(options.seed, v),
+    };
+    let mut engine =
+        Engine::load(&plan.scenario.path, &params, config).map_err(|e| e.to_string())?;
+    let mut observer = Observer::new(&plan.network, &options.host);
+    let mut trajectories = None;
+    let mut events = Events {
+        started: 0,
+        log: None,
+    };
+    if let Some((save, root)) = &options.save {
+        let dir = variant_dir(root, v);
+        if save.csv {
+            trajectories = Some(CsvWriter::new(create(&dir.join("trajectories.csv"))?));
+        }
+        if save.events {
+            events.log = Some(JsonlWriter::new(create(&dir.join("events.jsonl"))?));
+        }
+    }
+    let reason = {
+        let mut sinks: Vec<&mut dyn FrameSink> = vec![&mut observer];
+        if let Some(t) = trajectories.as_mut() {
+            sinks.push(t);
+        }
+        let mut frames = Fanout(sinks);
+        engine
+            .run(&mut frames, &mut events)
+            .map_err(|e| format!("{e} (at t = {:.3} s)", engine.time()))?
+    };
+    let m = observer.measures;
+    Ok(Outcome {
+        stop: Some(Stop::of(reason)),
+        end_time: engine.time(),
+        collision: m.collision,
+        first_collision_time: m.first_collision_time,
+        min_ttc: m.min_ttc,
+        min_headway: m.min_headway,
+        min_gap: m.min_gap,
+        events_started: events.started,
+        monitors: engine.monitors(),
+    }
+    .quantized())
+}
+
+/// Feeds several borrowed sinks.
+struct Fanout<'a>(Vec<&'a mut dyn FrameSink>);
+
+impl FrameSink for Fanout<'_> {
+    fn frame(&mut self, frame: &engine::Frame<'_>) -> std::io::Result<()> {
+        self.0.iter_mut().try_for_each(|s| s.frame(frame))
+    }
+
+    fn finish(&mut self) -> std::io::Result<()> {
+        self.0.iter_mut().try_for_each(|s| s.finish())
+    }
+}

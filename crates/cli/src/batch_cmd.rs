@@ -1,0 +1,167 @@
+//! `oscsim batch DIST.xosc --out DIR`: every variant of a parameter value distribution, on all
+//! cores or one shard of them; `oscsim batch merge DIR… --out DIR` joins shard outputs. The
+//! work is the batch crate's; this is argument handling and glue.
+
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use anyhow::Context;
+
+/// Arguments of `oscsim batch`.
+#[derive(clap::Args, Debug)]
+#[command(
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true,
+    after_help = "Outputs in DIR: results.csv, results.parquet, report.html (and variants/NNNNN/ with --save).\n\
+Variant numbers follow the distribution file (docs/batch.md). Sharding: --shard I/N, or the\n\
+environment of a Slurm array task (SLURM_ARRAY_TASK_ID, SLURM_ARRAY_TASK_COUNT) or of a\n\
+Kubernetes Indexed Job (JOB_COMPLETION_INDEX with --shards N).\n\
+Exit status: 0 when every variant ran, 1 when loading fails or a variant failed, 2 on a usage error."
+)]
+pub struct BatchArgs {
+    #[command(subcommand)]
+    merge: Option<BatchCommand>,
+    /// The ParameterValueDistribution file (.xosc).
+    #[arg(required = true)]
+    distribution: Option<PathBuf>,
+    /// Output folder.
+    #[arg(long, required = true)]
+    out: Option<PathBuf>,
+    /// Worker threads (default: every core).
+    #[arg(long)]
+    jobs: Option<usize>,
+    #[command(flatten)]
+    step: crate::step_args::StepArgs,
+    /// The entity measured against all others.
+    #[arg(long, default_value = "Ego")]
+    host: String,
+    /// Run share I of N (0-based), e.g. 2/8.
+    #[arg(long, value_name = "I/N")]
+    shard: Option<String>,
+    /// Number of shards when the share comes from JOB_COMPLETION_INDEX (Kubernetes).
+    #[arg(long, value_name = "N")]
+    shards: Option<u64>,
+    /// Run only this variant (and print the equivalent `oscsim run` command).
+    #[arg(long, value_name = "N")]
+    only: Option<u64>,
+    /// Keep per-variant outputs in DIR/variants/NNNNN/: csv, events (comma-separated).
+    #[arg(long, value_delimiter = ',', value_name = "KINDS")]
+    save: Vec<String>,
+    /// Do not show the progress bar.
+    #[arg(long)]
+    quiet: bool,
+}
+
+/// `oscsim batch merge`.
+#[derive(clap::Subcommand, Debug)]
+enum BatchCommand {
+    /// Join the output folders of shards into what the unsharded batch writes.
+    Merge {
+        /// The shards' output folders.
+        #[arg(required = true)]
+        shards: Vec<PathBuf>,
+        /// The merged output folder.
+        #[arg(long)]
+        out: PathBuf,
+    },
+}
+
+/// Runs `oscsim batch`.
+pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
+    if let Some(BatchCommand::Merge { shards, out }) = &args.merge {
+        let table = batch::merge(shards, out)?;
+        println!("{}", batch::summary(&table));
+        return Ok(exit_code(&table));
+    }
+    let (Some(distribution), Some(out)) = (&args.distribution, &args.out) else {
+        anyhow::bail!("expected DIST.xosc and --out DIR");
+    };
+    let plan = batch::Plan::load(distribution)
+        .with_context(|| format!("cannot run the batch of {}", distribution.display()))?;
+    let shard = batch::Shard::resolve(args.shard.as_deref(), args.shards, |k| {
+        std::env::var(k).ok()
+    })?;
+    let mut save = batch::Save::default();
+    for kind in &args.save {
+        match kind.as_str() {
+            "csv" => save.csv = true,
+            "events" => save.events = true,
+            other => anyhow::bail!("expected csv or events in --save, found '{other}'"),
+        }
+    }
+    let options = batch::Options {
+        seed: args.step.seed,
+        dt: args.step.dt,
+        duration: args.step.duration,
+        max_time: args.step.max_time,
+        host: args.host.clone(),
+        jobs: args
+            .jobs
+            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
+        shard,
+        only: args.only,
+        save: (save != batch::Save::default()).then(|| (save, out.clone())),
+    };
+    if let Some(v) = args.only {
+        if v as usize >= plan.variants.len() {
+            anyhow::bail!(
+                "expected a variant number below {}, found {v}",
+                plan.variants.len()
+            );
+        }
+        let params: Vec<String> = plan.variants[v as usize]
+            .iter()
+            .map(|(k, x)| format!(" --param {k}={x}"))
+            .collect();
+        println!(
+            "variant {v} alone: oscsim run {}{} --seed {} --dt {}",
+            plan.scenario.path.display(),
+            params.concat(),
+            batch::variant_seed(args.step.seed, v),
+            args.step.dt
+        );
+    }
+    let total = batch::selected(&plan, &options).len();
+    let bar = (!args.quiet && std::io::stderr().is_terminal()).then(|| {
+        let bar = indicatif::ProgressBar::new(total as u64);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{bar:40} {pos}/{len} variants, {per_sec}, ETA {eta}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let wall = Instant::now();
+    let table = batch::run(&plan, &options, &|done, _| {
+        if let Some(bar) = &bar {
+            bar.set_position(done as u64);
+        }
+    })?;
+    if let Some(bar) = bar {
+        bar.finish_and_clear();
+    }
+    batch::write_outputs(out, &table)?;
+    let seconds = wall.elapsed().as_secs_f64();
+    println!(
+        "{}\n{} in {:.2} s ({:.1} variants/s on {} jobs); results in {}",
+        batch::summary(&table),
+        plan.distribution.display(),
+        seconds,
+        table.rows.len() as f64 / seconds.max(1e-9),
+        options.jobs,
+        out.display()
+    );
+    Ok(exit_code(&table))
+}
+
+/// 1 when a variant failed, else 0.
+fn exit_code(table: &batch::Table) -> ExitCode {
+    if table.rows.iter().any(|r| r.result.is_err()) {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    }
+}
