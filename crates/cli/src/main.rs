@@ -3,8 +3,8 @@
 //! Exit status: 0 on success, 1 when the input is invalid or a run fails (or completes but logs
 //! runtime errors), 2 on a usage error.
 
-mod dsl;
 mod batch_cmd;
+mod dsl;
 mod osi_sink;
 mod road;
 mod run;
