@@ -152,6 +152,16 @@ pub enum ErrorKind {
         /// The name written.
         name: String,
     },
+    /// A StoryboardElementStateCondition whose (qualified) name designates more than one
+    /// storyboard element of its type.
+    AmbiguousStoryboardElement {
+        /// The type written.
+        element_type: crate::model::StoryboardElementType,
+        /// The reference written.
+        name: String,
+        /// The name paths of the elements it designates, in document order.
+        candidates: Vec<String>,
+    },
     /// A VariableAction or VariableCondition naming an undeclared variable.
     UnknownVariable {
         /// The name written.
@@ -308,6 +318,17 @@ impl fmt::Display for ErrorKind {
             Self::UnknownStoryboardElement { element_type, name } => write!(
                 f,
                 "expected a storyboard element of type {element_type} named '{name}', found none"
+            ),
+            Self::AmbiguousStoryboardElement {
+                element_type,
+                name,
+                candidates,
+            } => write!(
+                f,
+                "expected '{name}' to name one storyboard element of type {element_type}, found {} ({}); \
+                 prefix it with enclosing names (Maneuver::Event)",
+                candidates.len(),
+                candidates.join(", ")
             ),
             Self::UnknownVariable { name } => {
                 write!(

@@ -30,6 +30,7 @@
 //! | `reader` | XML → model, one reader per XSD element |
 //! | `expr` | `${…}` expressions (§9.2) |
 //! | `distribution` | parameter value distributions (§9.5) |
+//! | `names` | `::`-qualified storyboard element references and how they match |
 //! | `provider` | where files come from: [`DiskFiles`], [`MemoryFiles`], or your [`FileProvider`] |
 //! | `source`, `error` | positions and errors |
 #![forbid(unsafe_code)]
@@ -39,6 +40,7 @@ pub mod distribution;
 mod error;
 pub mod expr;
 mod model;
+pub mod names;
 mod provider;
 mod reader;
 mod source;

@@ -6,7 +6,8 @@
 //!   `rule` the condition's value read as the same type (`rule::compare_value`). An
 //!   undeclared parameter or variable is an error; a user-defined value nothing has
 //!   registered reads false (it may appear later, from outside).
-//! * StoryboardElementStateCondition: a state (standby, running, complete) holds while the
+//! * StoryboardElementStateCondition: the reference designates exactly one element of its
+//!   type, by name or by `::`-qualified name (`StateView::find_ref`); a state (standby, running, complete) holds while the
 //!   element is in it; a transition (start, end, stop, skip) holds in the step it happens and
 //!   the next (`StateView::transition_happened`: the second step lets elements earlier in
 //!   document order see it).
@@ -118,12 +119,22 @@ fn element_state<C: ConditionContext + ?Sized>(
 ) -> Result<bool, ConditionErrorKind> {
     let view = ctx.storyboard();
     let (kind, literal) = element_kind(element_type);
-    let id = view
-        .find_kind(kind, name)
-        .ok_or_else(|| ConditionErrorKind::UnknownElement {
-            kind: literal,
-            name: name.to_string(),
-        })?;
+    let id = match view.find_ref(kind, name).as_slice() {
+        [one] => *one,
+        [] => {
+            return Err(ConditionErrorKind::UnknownElement {
+                kind: literal,
+                name: name.to_string(),
+            })
+        }
+        several => {
+            return Err(ConditionErrorKind::AmbiguousElement {
+                kind: literal,
+                name: name.to_string(),
+                found: several.len(),
+            })
+        }
+    };
     let in_state = |s| view.state(id) == s;
     let happened = |t| view.transition_happened(id, t);
     Ok(match state {

@@ -26,6 +26,17 @@ pub enum ConditionErrorKind {
         /// The name.
         name: String,
     },
+    /// A StoryboardElementStateCondition's (qualified) name designates several elements of
+    /// that type.
+    #[error("expected \"{name}\" to name one storyboard element {kind}, found {found}; prefix it with enclosing names (Maneuver::Event)")]
+    AmbiguousElement {
+        /// The XSD storyboardElementType literal.
+        kind: &'static str,
+        /// The reference.
+        name: String,
+        /// How many elements it designates.
+        found: usize,
+    },
     /// The condition's `value` cannot be read as the type of the value it is compared with.
     #[error("expected a {expected} value, found \"{found}\"")]
     InvalidValue {

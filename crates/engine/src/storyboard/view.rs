@@ -10,7 +10,11 @@
 //!
 //! Names are not unique in OpenSCENARIO files (esmini's `acc-test.xosc` has two Events named
 //! `EgoSpeedEvent`); [`StateView::find`] returns the first in document order and
-//! [`StateView::find_all`] all of them.
+//! [`StateView::find_all`] all of them. A condition's reference may carry `::`-separated
+//! prefixes (OpenSCENARIO 1.1 User Guide §1.4.5, 1.3 "Naming"); [`StateView::find_ref`]
+//! matches it against the elements' name paths.
+
+use scenario::names::QualifiedName;
 
 use super::element::{ElementId, ElementKind};
 use super::state::{ElementState, StoryboardElementState, Transition};
@@ -55,10 +59,40 @@ impl<'a> StateView<'a> {
         self.ids().filter(move |id| nodes[id.index()].name == name)
     }
 
-    /// The first element of `kind` named `name` (the XSD's `storyboardElementType` plus
-    /// `storyboardElementRef`).
-    pub fn find_kind(&self, kind: ElementKind, name: &str) -> Option<ElementId> {
-        self.find_all(name).find(|&id| self.kind(id) == kind)
+    /// The elements of `kind` that `reference` designates: a name, optionally prefixed with
+    /// the names of enclosing elements separated by `::` (`Maneuver::Event`), matched against
+    /// each element's name path from its Story down (`scenario::names`: unique-suffix
+    /// matching, a leading `::` for the whole path). In document order.
+    pub fn find_ref(&self, kind: ElementKind, reference: &str) -> Vec<ElementId> {
+        let q = QualifiedName::parse(reference);
+        let last = q.parts.last().copied().unwrap_or_default();
+        self.find_all(last)
+            .filter(|&id| self.kind(id) == kind && q.matches(&self.name_path(id)))
+            .collect()
+    }
+
+    /// The element of `kind` that `reference` designates ([`find_ref`](Self::find_ref));
+    /// none if it designates none or several.
+    pub fn find_kind(&self, kind: ElementKind, reference: &str) -> Option<ElementId> {
+        match self.find_ref(kind, reference).as_slice() {
+            [one] => Some(*one),
+            _ => None,
+        }
+    }
+
+    /// The names of the element and its enclosing storyboard elements, outermost (the Story)
+    /// first; the root and Init are not storyboard elements and have no part in it.
+    pub fn name_path(&self, id: ElementId) -> Vec<&'a str> {
+        let mut path = Vec::new();
+        let mut at = Some(id);
+        while let Some(e) = at {
+            if !matches!(self.kind(e), ElementKind::Storyboard | ElementKind::Init) {
+                path.push(self.name(e));
+            }
+            at = self.parent(e);
+        }
+        path.reverse();
+        path
     }
 
     /// The element's current state. Panics if `id` is not from this storyboard.

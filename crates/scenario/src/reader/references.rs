@@ -1,57 +1,222 @@
 //! Checks of names the storyboard refers to (OpenSCENARIO 1.3, "Conditions" and
-//! "Actions": StoryboardElementStateCondition, VariableAction, VariableCondition):
-//! a StoryboardElementStateCondition must name a storyboard element of its type,
-//! VariableAction/VariableCondition a declared variable, SetMonitorAction a declared monitor. Run once the storyboard is read.
-
-use std::collections::HashSet;
+//! "Actions": StoryboardElementStateCondition, VariableAction, VariableCondition), run once
+//! the storyboard is read.
+//!
+//! * StoryboardElementStateCondition: the reference — a name, optionally prefixed with the
+//!   `::`-separated names of enclosing elements ([`crate::names`], OpenSCENARIO 1.1 User Guide
+//!   §1.4.5, 1.3 "Naming" / "References") — must designate exactly one element of its type.
+//!   It is looked for from where it is written outwards: in the subtree of the element whose
+//!   trigger holds the condition (an Event, an Act; the Storyboard for its stop trigger), then
+//!   in each enclosing element's, the innermost scope with a match deciding. A Maneuver taken
+//!   from a catalog into several ManeuverGroups (esmini's synchronize.xosc) thus watches its own
+//!   Events. The reader then writes the reference in its absolute form `::Story::…::Name`.
+//! * VariableAction/VariableCondition must name a declared variable, SetMonitorAction a
+//!   declared monitor.
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::model::{
     ActionKind, ByValueCondition, ConditionKind, GlobalAction, MonitorDeclaration, Storyboard,
     StoryboardElementType, Trigger, VariableDeclaration,
 };
+use crate::names::{join_path, QualifiedName, SEPARATOR};
 
-/// Names of the storyboard's elements, by type.
-#[derive(Default)]
-struct Names<'s> {
-    by_type: HashSet<(StoryboardElementType, &'s str)>,
+/// One storyboard element: type, name, parent (index into [`Tree::elements`]).
+struct Element {
+    kind: StoryboardElementType,
+    name: String,
+    parent: Option<usize>,
 }
 
-impl<'s> Names<'s> {
-    fn of(storyboard: &'s Storyboard) -> Self {
-        let mut names = Names::default();
-        let mut add = |t, n: &'s str| {
-            names.by_type.insert((t, n));
-        };
+/// The storyboard's elements in depth-first document order, and the owner of each trigger in
+/// the order of [`triggers_mut`] (`None`: the Storyboard's stop trigger).
+#[derive(Default)]
+struct Tree {
+    elements: Vec<Element>,
+    owners: Vec<Option<usize>>,
+}
+
+impl Tree {
+    fn of(storyboard: &Storyboard) -> Self {
+        let mut tree = Tree::default();
+        if storyboard.stop_trigger.is_some() {
+            tree.owners.push(None);
+        }
         for story in &storyboard.stories {
-            add(StoryboardElementType::Story, &story.name);
+            let s = tree.add(StoryboardElementType::Story, &story.name, None);
             for act in &story.acts {
-                add(StoryboardElementType::Act, &act.name);
+                let a = tree.add(StoryboardElementType::Act, &act.name, Some(s));
+                for trigger in [&act.start_trigger, &act.stop_trigger] {
+                    if trigger.is_some() {
+                        tree.owners.push(Some(a));
+                    }
+                }
                 for group in &act.maneuver_groups {
-                    add(StoryboardElementType::ManeuverGroup, &group.name);
+                    let g = tree.add(StoryboardElementType::ManeuverGroup, &group.name, Some(a));
                     for m in &group.maneuvers {
-                        add(StoryboardElementType::Maneuver, &m.name);
+                        let mi = tree.add(StoryboardElementType::Maneuver, &m.name, Some(g));
                         for e in &m.events {
-                            add(StoryboardElementType::Event, &e.name);
-                            for a in &e.actions {
-                                add(StoryboardElementType::Action, &a.name);
+                            let ei = tree.add(StoryboardElementType::Event, &e.name, Some(mi));
+                            if e.start_trigger.is_some() {
+                                tree.owners.push(Some(ei));
+                            }
+                            for action in &e.actions {
+                                tree.add(StoryboardElementType::Action, &action.name, Some(ei));
                             }
                         }
                     }
                 }
             }
         }
-        names
+        tree
+    }
+
+    fn add(&mut self, kind: StoryboardElementType, name: &str, parent: Option<usize>) -> usize {
+        self.elements.push(Element {
+            kind,
+            name: name.to_owned(),
+            parent,
+        });
+        self.elements.len() - 1
+    }
+
+    /// The names from the Story down to element `i`.
+    fn path(&self, i: usize) -> Vec<&str> {
+        let mut path = Vec::new();
+        let mut at = Some(i);
+        while let Some(k) = at {
+            path.push(self.elements[k].name.as_str());
+            at = self.elements[k].parent;
+        }
+        path.reverse();
+        path
+    }
+
+    /// True if `ancestor` is `i` or encloses it.
+    fn within(&self, i: usize, ancestor: usize) -> bool {
+        let mut at = Some(i);
+        while let Some(k) = at {
+            if k == ancestor {
+                return true;
+            }
+            at = self.elements[k].parent;
+        }
+        false
+    }
+
+    /// The elements of type `t` that `reference`, written in a trigger of `owner`, designates:
+    /// those whose name path ends with the reference, looked for in the owner's subtree first,
+    /// then in each enclosing element's, then in the whole storyboard (the innermost scope with
+    /// a match decides, so a Maneuver taken from a catalog several times refers to its own
+    /// Events).
+    fn designated(
+        &self,
+        owner: Option<usize>,
+        t: StoryboardElementType,
+        reference: &str,
+    ) -> Vec<usize> {
+        let q = QualifiedName::parse(reference);
+        let matching: Vec<usize> = (0..self.elements.len())
+            .filter(|&i| self.elements[i].kind == t && q.matches(&self.path(i)))
+            .collect();
+        let mut scope = owner;
+        while let Some(s) = scope {
+            let inside: Vec<usize> = matching
+                .iter()
+                .copied()
+                .filter(|&i| self.within(i, s))
+                .collect();
+            if !inside.is_empty() {
+                return inside;
+            }
+            scope = self.elements[s].parent;
+        }
+        matching
     }
 }
 
-/// Checks every StoryboardElementStateCondition, VariableCondition and VariableAction.
+/// The storyboard's triggers in the order of [`Tree::owners`].
+fn triggers_mut(storyboard: &mut Storyboard) -> Vec<&mut Trigger> {
+    let mut triggers: Vec<&mut Trigger> = storyboard.stop_trigger.iter_mut().collect();
+    for story in &mut storyboard.stories {
+        for act in &mut story.acts {
+            triggers.extend(
+                act.start_trigger
+                    .iter_mut()
+                    .chain(act.stop_trigger.iter_mut()),
+            );
+            for m in act
+                .maneuver_groups
+                .iter_mut()
+                .flat_map(|g| &mut g.maneuvers)
+            {
+                triggers.extend(m.events.iter_mut().filter_map(|e| e.start_trigger.as_mut()));
+            }
+        }
+    }
+    triggers
+}
+
+/// Resolves every StoryboardElementStateCondition's reference ([`Tree::designated`]) and
+/// writes it in its absolute form (`::Story::Act::…::Name`), which designates the same element
+/// from anywhere, so that the runtime needs no scope. A reference designating none, or several
+/// in its innermost scope, is an error at the condition's place; so is one whose element has a
+/// sibling of the same type and name (its absolute form would designate both).
+fn resolve_element_refs(storyboard: &mut Storyboard) -> Result<()> {
+    let tree = Tree::of(storyboard);
+    for (trigger, owner) in triggers_mut(storyboard).into_iter().zip(&tree.owners) {
+        for c in trigger
+            .condition_groups
+            .iter_mut()
+            .flat_map(|g| &mut g.conditions)
+        {
+            let ConditionKind::ByValue(ByValueCondition::StoryboardElementState {
+                storyboard_element_type: t,
+                storyboard_element_ref: reference,
+                ..
+            }) = &mut c.kind
+            else {
+                continue;
+            };
+            let found = tree.designated(*owner, *t, reference);
+            let same_path = |i: usize| {
+                let path = tree.path(i);
+                (0..tree.elements.len())
+                    .filter(|&k| tree.elements[k].kind == *t && tree.path(k) == path)
+                    .collect::<Vec<_>>()
+            };
+            let unique = match found.as_slice() {
+                [one] => same_path(*one),
+                _ => found.clone(),
+            };
+            let kind = match unique.as_slice() {
+                [one] => {
+                    *reference = format!("{SEPARATOR}{}", join_path(&tree.path(*one)));
+                    continue;
+                }
+                [] => ErrorKind::UnknownStoryboardElement {
+                    element_type: *t,
+                    name: reference.clone(),
+                },
+                several => ErrorKind::AmbiguousStoryboardElement {
+                    element_type: *t,
+                    name: reference.clone(),
+                    candidates: several.iter().map(|&i| join_path(&tree.path(i))).collect(),
+                },
+            };
+            return Err(Error::new(kind, c.pos.clone()));
+        }
+    }
+    Ok(())
+}
+
+/// Resolves every StoryboardElementStateCondition ([`resolve_element_refs`]); checks every
+/// VariableCondition, VariableAction and SetMonitorAction.
 pub(crate) fn check_references(
-    storyboard: &Storyboard,
+    storyboard: &mut Storyboard,
     variables: &[VariableDeclaration],
     monitors: &[MonitorDeclaration],
 ) -> Result<()> {
-    let names = Names::of(storyboard);
+    resolve_element_refs(storyboard)?;
     let variable = |name: &str| variables.iter().any(|v| v.name == name);
     let mut triggers: Vec<&Trigger> = storyboard.stop_trigger.iter().collect();
     let mut actions: Vec<_> = storyboard.init.actions.iter().collect();
@@ -72,22 +237,6 @@ pub(crate) fn check_references(
         .flat_map(|g| &g.conditions)
     {
         match &c.kind {
-            ConditionKind::ByValue(ByValueCondition::StoryboardElementState {
-                storyboard_element_type,
-                storyboard_element_ref,
-                ..
-            }) if !names
-                .by_type
-                .contains(&(*storyboard_element_type, storyboard_element_ref.as_str())) =>
-            {
-                return Err(Error::new(
-                    ErrorKind::UnknownStoryboardElement {
-                        element_type: *storyboard_element_type,
-                        name: storyboard_element_ref.clone(),
-                    },
-                    c.pos.clone(),
-                ));
-            }
             ConditionKind::ByValue(ByValueCondition::Variable { variable_ref, .. })
                 if !variable(variable_ref) =>
             {

@@ -146,10 +146,14 @@ fn load_source(
     let entities_node = ctx.child(root, "Entities")?;
     let mut entities = read_entities(&mut ctx, entities_node)?;
     let storyboard_node = ctx.child(root, "Storyboard")?;
-    let storyboard = read_storyboard(&mut ctx, storyboard_node)?;
+    let mut storyboard = read_storyboard(&mut ctx, storyboard_node)?;
     check_entity_names(&entities, &ctx.entity_uses)?;
     expand_selections(&mut entities)?;
-    check_references(&storyboard, &variable_declarations, &monitor_declarations)?;
+    check_references(
+        &mut storyboard,
+        &variable_declarations,
+        &monitor_declarations,
+    )?;
     Ok(Scenario {
         path: path.to_path_buf(),
         file_header: header,

@@ -1,0 +1,10 @@
+//! Scenarios from the field (issue 16): the semantics the visible corpus does not exercise,
+//! one module per class, each with the standard's rule in its doc and hand-computed
+//! expectations in its comments. Fixtures in `tests/files/field/`.
+
+#[path = "../runtime_support/mod.rs"]
+mod runtime_support;
+
+mod support;
+
+mod qualified_names;
