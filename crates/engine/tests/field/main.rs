@@ -2,7 +2,9 @@
 //! one module per class, each with the standard's rule in its doc and hand-computed
 //! expectations in its comments. Fixtures in `tests/files/field/`.
 
-#[path = "../runtime_support/mod.rs"]
+#[path = "../support/corpus.rs"]
+mod corpus;
+#[path = "../support/runtime/mod.rs"]
 mod runtime_support;
 
 mod support;
