@@ -154,14 +154,12 @@ impl UnitTable {
         self.types.iter().find(|t| t.dimension == d)
     }
 
-    /// The unit in which values of physical type `ty` are printed: its first unit of factor 1
-    /// and offset 0 (the SI unit: `m`, `mps`, `K`), else its first unit.
+    /// The unit in which values of physical type `ty` are printed: its shortest-named unit of
+    /// factor 1 and offset 0 (the SI unit: `m`, `mps`, `K`), else its first unit.
     pub fn display_unit(&self, ty: &str) -> Option<&Unit> {
-        let mut of_type = self.units.iter().filter(|u| u.physical_type == ty);
+        let of_type = self.units.iter().filter(|u| u.physical_type == ty);
         let first = of_type.clone().next();
-        of_type
-            .find(|u| u.factor == 1.0 && u.offset == 0.0)
-            .or(first)
+        of_type.filter(|u| u.factor == 1.0 && u.offset == 0.0).min_by_key(|u| u.name.len()).or(first)
     }
 
     /// Every physical type, in declaration order.

@@ -1,0 +1,152 @@
+//! Behaviors (ASAM OpenSCENARIO DSL 2.1 §7.3.9): compositions, invocations of actions and
+//! scenarios on actors with their arguments, `with:` blocks, and modifier applicability
+//! (§8.9: a modifier declared `of B` applies to `B` and to behaviors inheriting from it).
+
+use super::super::diagnostic::DiagnosticKind as K;
+use super::super::hir::{Arg, Behavior, CompoundKind, Labeled, ModifierApp, Span, WithMember};
+use super::super::model::ParamDef;
+use super::super::types::{CompoundId, Ty};
+use super::{Cx, Local, Scope, TExpr, TKind};
+
+impl Cx<'_> {
+    /// The parameters of a behavior or modifier, for argument matching: own fields first, then
+    /// inherited ones (so `change_speed(20kph)` sets `target`, not the inherited `duration`);
+    /// all optional (an action's unset parameter has no value).
+    fn behavior_params(&self, id: CompoundId) -> Vec<ParamDef> {
+        self.model
+            .ancestry(id)
+            .into_iter()
+            .flat_map(|c| self.model.compound(c).fields.iter())
+            .filter(|f| !f.is_var)
+            .map(|f| ParamDef { name: f.name.clone(), ty: f.ty.clone(), optional: true })
+            .collect()
+    }
+
+    pub(crate) fn behavior(&mut self, b: &Labeled, scope: &Scope) {
+        match &b.behavior {
+            Behavior::Composition { args, children, .. } => {
+                for a in args {
+                    self.expr(&a.value, scope, None);
+                }
+                for c in children {
+                    self.behavior(c, scope);
+                }
+            }
+            Behavior::Invocation { actor, name, args, with, span } => {
+                let target = match actor {
+                    Some(e) => {
+                        let t = self.expr(e, scope, None);
+                        match t.ty {
+                            Ty::Compound(c) if self.model.compound(c).kind == CompoundKind::Actor => Some(c),
+                            Ty::Error => return,
+                            other => {
+                                let n = self.model.type_name(&other);
+                                self.err(K::Type, e.span, format!("expected an actor before `.{}`, found {n}", name.text));
+                                return;
+                            }
+                        }
+                    }
+                    None => scope.actor,
+                };
+                let found = match target {
+                    Some(a) => self.model.behavior_of(a, &name.text),
+                    None => self.model.behaviors.get(&name.text).copied(),
+                };
+                let Some(bid) = found else {
+                    let on = target.map(|a| format!(" on actor `{}`", self.model.compound(a).name)).unwrap_or_default();
+                    self.err(K::UnknownName, name.span, format!("unknown action or scenario `{}`{on}", name.text));
+                    return;
+                };
+                let params = self.behavior_params(bid);
+                let label = format!("`{}`", self.model.compound(bid).name);
+                self.args(&params, args, &label, scope, *span);
+                let mut inner = scope.clone();
+                inner.locals.push(Local { name: "it".into(), value: TExpr { kind: TKind::Opaque("invocation"), ty: Ty::Compound(bid), span: *span } });
+                for w in with {
+                    match w {
+                        WithMember::Modifier(app) => self.applied_modifier(app, bid, &inner),
+                        WithMember::Keep(k) => {
+                            self.expect(&k.expr, &Ty::Bool, &inner, "a constraint");
+                        }
+                        WithMember::Until(e, _) => {
+                            self.expect(e, &Ty::Event, &inner, "`until`");
+                        }
+                    }
+                }
+            }
+            Behavior::Wait(e, _) => {
+                self.expect(e, &Ty::Event, scope, "`wait`");
+            }
+            Behavior::Emit(name, args, _) => {
+                if scope.this.is_some_and(|t| !self.has_event(t, &name.text)) {
+                    self.err(K::UnknownName, name.span, format!("unknown event `{}`", name.text));
+                }
+                for a in args {
+                    self.expr(&a.value, scope, None);
+                }
+            }
+            Behavior::Call(e, _) => {
+                self.expr(e, scope, None);
+            }
+        }
+    }
+
+    /// A modifier in the `with:` block of an invocation of behavior `bid`.
+    fn applied_modifier(&mut self, app: &ModifierApp, bid: CompoundId, scope: &Scope) {
+        if let Some(t) = &app.target {
+            self.expr(t, scope, None);
+        }
+        let named = self.model.modifiers_named(&app.name.text);
+        let chain = self.model.ancestry(bid);
+        let applicable = named.iter().copied().find(|m| self.model.compound(*m).of.is_some_and(|of| chain.contains(&of)));
+        match applicable {
+            Some(m) => self.modifier_args(m, &app.args, scope, app.span),
+            None if named.is_empty() => {
+                self.err(K::UnknownName, app.name.span, format!("unknown modifier `{}`", app.name.text));
+            }
+            None => {
+                let of: Vec<String> = named
+                    .iter()
+                    .filter_map(|m| self.model.compound(*m).of)
+                    .map(|o| format!("`{}`", self.model.compound(o).name))
+                    .collect();
+                let b = self.model.compound(bid).name.clone();
+                let to = if of.is_empty() { "actors, not to actions".to_string() } else { of.join(", ") };
+                self.err(K::Modifier, app.name.span, format!("modifier `{}` applies to {to}, not to `{b}`", app.name.text));
+            }
+        }
+    }
+
+    /// A modifier applied as a member: `my_building.location(my_pose)`.
+    pub(crate) fn member_modifier(&mut self, app: &ModifierApp, scope: &Scope) {
+        let target_ty = match &app.target {
+            Some(t) => self.expr(t, scope, None).ty,
+            None => scope.actor.map(Ty::Compound).unwrap_or(Ty::Error),
+        };
+        let named = self.model.modifiers_named(&app.name.text);
+        let Ty::Compound(actor) = target_ty else {
+            if target_ty != Ty::Error || app.target.is_none() {
+                self.err(K::Modifier, app.name.span, format!("modifier `{}` needs an actor to apply to", app.name.text));
+            }
+            return;
+        };
+        let fits = named.iter().copied().find(|m| {
+            let d = self.model.compound(*m);
+            d.of.is_none() && d.actor.is_some_and(|a| self.model.is_subtype(actor, a))
+        });
+        match fits {
+            Some(m) => self.modifier_args(m, &app.args, scope, app.span),
+            None if named.is_empty() => self.err(K::UnknownName, app.name.span, format!("unknown modifier `{}`", app.name.text)),
+            None => {
+                let a = self.model.compound(actor).name.clone();
+                self.err(K::Modifier, app.name.span, format!("modifier `{}` does not apply to actor `{a}`", app.name.text));
+            }
+        }
+    }
+
+    fn modifier_args(&mut self, m: CompoundId, args: &[Arg], scope: &Scope, span: Span) {
+        let params = self.behavior_params(m);
+        let label = format!("modifier `{}`", self.model.compound(m).short);
+        self.args(&params, args, &label, scope, span);
+    }
+}

@@ -1,0 +1,210 @@
+//! The front door: load a file with its imports and the standard library, check it, resolve it.
+//!
+//! Files `0..L` of a program are the standard library (`osc.standard`, always loaded: a file
+//! with or without `import osc.standard` sees the same declarations, as ASAM OpenSCENARIO DSL
+//! 2.1 §7.7 keeps the import for 2.0 compatibility); then the main file and the files it
+//! imports by relative path (§7.7 library mechanisms), each once.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use crate::syntax::{parse, LineIndex};
+
+use super::check::{check_model, Template};
+use super::collect::collect;
+use super::diagnostic::{Diagnostic, DiagnosticKind as K};
+use super::hir::{FileId, ImportTarget, Item, SourceFile, Span};
+use super::lower_ast::lower_file;
+use super::model::Model;
+use super::resolve::{resolve, Resolution};
+use super::stdlib;
+
+/// One source file of a program.
+#[derive(Debug, Clone)]
+pub struct Source {
+    /// Its name in messages (the path as given, or `osc/standard/objects.osc`).
+    pub name: String,
+    /// Its text.
+    pub text: String,
+    index: LineIndex,
+}
+
+impl Source {
+    fn new(name: String, text: String) -> Source {
+        let index = LineIndex::new(&text);
+        Source { name, text, index }
+    }
+
+    /// 1-based line and column of a byte offset.
+    pub fn line_col(&self, offset: u32) -> (usize, usize) {
+        self.index.line_col(offset as usize)
+    }
+}
+
+/// Errors of a program, with the files they point into.
+#[derive(Debug, Clone)]
+pub struct Diagnostics {
+    /// The errors, in the order found.
+    pub items: Vec<Diagnostic>,
+    files: Arc<Vec<Source>>,
+}
+
+impl Diagnostics {
+    /// `FILE:LINE:COL` of a span.
+    pub fn position(&self, span: Span) -> String {
+        match self.files.get(span.file.0 as usize) {
+            Some(f) => {
+                let (l, c) = f.line_col(span.start);
+                format!("{}:{l}:{c}", f.name)
+            }
+            None => "?:1:1".into(),
+        }
+    }
+
+    /// One line per error: "MESSAGE at FILE:LINE:COL", each related place on an indented
+    /// line "LABEL at FILE:LINE:COL".
+    pub fn lines(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        for d in &self.items {
+            out.push(format!("{} at {}", d.message, self.position(d.span)));
+            for (s, label) in &d.related {
+                out.push(format!("  {label} at {}", self.position(*s)));
+            }
+        }
+        out
+    }
+
+    /// A miette report per error, with the source snippet and the related places labelled.
+    pub fn reports(&self) -> Vec<miette::Report> {
+        self.items
+            .iter()
+            .map(|d| {
+                let file = self.files.get(d.span.file.0 as usize);
+                let mut m = miette::MietteDiagnostic::new(d.message.clone())
+                    .with_code(d.kind.code())
+                    .with_label(miette::LabeledSpan::at(d.span.start as usize..d.span.end as usize, "here"));
+                for (s, label) in &d.related {
+                    if s.file == d.span.file {
+                        m = m.and_label(miette::LabeledSpan::at(s.start as usize..s.end as usize, label.clone()));
+                    } else {
+                        m = m.with_help(format!("{label} at {}", self.position(*s)));
+                    }
+                }
+                let report = miette::Report::new(m);
+                match file {
+                    Some(f) => report.with_source_code(miette::NamedSource::new(f.name.clone(), f.text.clone())),
+                    None => report,
+                }
+            })
+            .collect()
+    }
+}
+
+impl fmt::Display for Diagnostics {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.lines().join("\n"))
+    }
+}
+
+impl std::error::Error for Diagnostics {}
+
+/// A program that passed the checks: its declarations and constraints.
+#[derive(Debug, Clone)]
+pub struct CheckedProgram {
+    /// The declarations.
+    pub model: Model,
+    /// The constraints (including field defaults).
+    pub templates: Vec<Template>,
+    files: Arc<Vec<Source>>,
+}
+
+impl CheckedProgram {
+    /// Concrete values of every field of every global, top-level field and scenario, sampled
+    /// with `seed` where the constraints leave a choice (same seed, same values).
+    pub fn resolve(&self, seed: u64) -> Result<Resolution, Diagnostics> {
+        resolve(&self.model, &self.templates, seed).map_err(|items| Diagnostics { items, files: self.files.clone() })
+    }
+
+    /// The program's files (library first).
+    pub fn files(&self) -> &[Source] {
+        &self.files
+    }
+}
+
+/// Checks the file at `path` with its imports.
+pub fn check(path: &Path) -> Result<CheckedProgram, Diagnostics> {
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        let files = Arc::new(vec![Source::new(path.display().to_string(), String::new())]);
+        let span = Span { file: FileId(0), start: 0, end: 0 };
+        Diagnostics { items: vec![Diagnostic::new(K::Import, span, format!("cannot read {}: {e}", path.display()))], files }
+    })?;
+    check_source_with(&path.display().to_string(), &text, &|p: &Path| std::fs::read_to_string(p).ok())
+}
+
+/// Checks a source text; relative imports are read from disk next to `name`.
+pub fn check_source(name: &str, text: &str) -> Result<CheckedProgram, Diagnostics> {
+    check_source_with(name, text, &|p: &Path| std::fs::read_to_string(p).ok())
+}
+
+/// Checks a source text, reading relative imports through `load`.
+pub fn check_source_with(name: &str, text: &str, load: &dyn Fn(&Path) -> Option<String>) -> Result<CheckedProgram, Diagnostics> {
+    let mut files: Vec<Source> = stdlib::STANDARD.iter().map(|f| Source::new(f.name.to_string(), f.text.to_string())).collect();
+    let library = files.len() as u32;
+    let mut paths: Vec<PathBuf> = Vec::new();
+    files.push(Source::new(name.to_string(), text.to_string()));
+    paths.push(PathBuf::from(name));
+    let mut hir: Vec<SourceFile> = Vec::new();
+    let mut diags = Vec::new();
+    let mut i = 0;
+    while i < files.len() {
+        let parsed = parse(&files[i].text);
+        for e in parsed.errors() {
+            let r = e.range();
+            diags.push(Diagnostic::new(K::Syntax, Span { file: FileId(i as u32), start: r.start as u32, end: r.end as u32 }, e.message()));
+        }
+        let file = lower_file(&parsed.tree(), FileId(i as u32));
+        for item in &file.items {
+            let Item::Import { target, span } = item else { continue };
+            match target {
+                ImportTarget::Library(q) => {
+                    if stdlib::module(&q.text()).is_none() {
+                        diags.push(Diagnostic::new(K::Import, *span, format!("unknown library `{}` (known: osc.standard)", q.text())));
+                    }
+                }
+                ImportTarget::File(rel) if (i as u32) >= library => {
+                    let base = paths[i - library as usize].parent().map(Path::to_path_buf).unwrap_or_default();
+                    let full = base.join(rel);
+                    if paths.contains(&full) {
+                        continue;
+                    }
+                    match load(&full) {
+                        Some(t) => {
+                            files.push(Source::new(full.display().to_string(), t));
+                            paths.push(full);
+                        }
+                        None => diags.push(Diagnostic::new(K::Import, *span, format!("cannot read imported file {}", full.display()))),
+                    }
+                }
+                ImportTarget::File(_) => {}
+            }
+        }
+        hir.push(file);
+        i += 1;
+    }
+    let files = Arc::new(files);
+    if !diags.is_empty() {
+        return Err(Diagnostics { items: diags, files });
+    }
+    let mut model = collect(&hir, &mut diags);
+    model.library_files = library;
+    let checked = check_model(&model);
+    diags.extend(checked.diags);
+    if !diags.is_empty() {
+        return Err(Diagnostics { items: diags, files });
+    }
+    let program = CheckedProgram { model, templates: checked.templates, files };
+    // A program whose constraints cannot be lowered or have no solution is not valid.
+    program.resolve(0)?;
+    Ok(program)
+}
