@@ -9,3 +9,8 @@
 
 pub mod semantics;
 pub mod syntax;
+
+pub use semantics::program::{
+    check, check_source, check_source_with, CheckedProgram, Diagnostics, Source,
+};
+pub use semantics::resolve::{Resolution, Value};

@@ -3,7 +3,7 @@
 //! DSL 2.1 §7.3.4 physical types, §7.3.5 enums, §7.3.7 compound types, §7.3.8 extension).
 
 use super::diagnostic::{Diagnostic, DiagnosticKind};
-use super::hir::{CompoundKind, ExprKind, Item, Member, QualName, SiArg, SourceFile, Span, TypeRef};
+use super::hir::{CompoundKind, ExprKind, Item, Member, QualName, SiArg, SourceFile, TypeRef};
 use super::model::{CompoundDef, EnumDef, FieldDef, MethodDef, Model, ParamDef, TypeName};
 use super::types::{CompoundId, EnumId, Ty};
 use super::units::{Dimension, PhysicalType, Unit};
@@ -16,7 +16,10 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
         match item {
             Item::PhysicalType { name, si, span } => {
                 let (dim, _, _) = si_spec(si, diags);
-                if !m.units.add_type(PhysicalType { name: name.text.clone(), dimension: dim }) {
+                if !m.units.add_type(PhysicalType {
+                    name: name.text.clone(),
+                    dimension: dim,
+                }) {
                     diags.push(Diagnostic::new(
                         DiagnosticKind::Duplicate,
                         name.span,
@@ -26,7 +29,11 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                 }
                 m.declare_type(&name.text, TypeName::Physical(dim), *span, diags);
             }
-            Item::Enum { name, members, span } => {
+            Item::Enum {
+                name,
+                members,
+                span,
+            } => {
                 let id = EnumId(m.enums.len() as u32);
                 let mut list: Vec<String> = Vec::new();
                 for mem in members {
@@ -40,7 +47,11 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                         list.push(mem.text.clone());
                     }
                 }
-                m.enums.push(EnumDef { name: name.text.clone(), members: list, span: *span });
+                m.enums.push(EnumDef {
+                    name: name.text.clone(),
+                    members: list,
+                    span: *span,
+                });
                 m.declare_type(&name.text, TypeName::Enum(id), *span, diags);
             }
             Item::Compound(c) => {
@@ -49,10 +60,11 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                 m.compounds.push(CompoundDef {
                     kind: c.kind,
                     name: full.clone(),
-                    short: c.name.last().text.clone(),
+                    short: c.name.last_text().to_string(),
                     actor: None,
                     parent: None,
                     of: None,
+                    condition: c.inherits.as_ref().and_then(|i| i.condition.clone()),
                     fields: Vec::new(),
                     methods: Vec::new(),
                     members: c.members.clone(),
@@ -63,7 +75,7 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                         m.declare_type(&full, TypeName::Compound(id), c.name.span, diags)
                     }
                     _ => {
-                        let key = behavior_key(c.kind, &c.name);
+                        let key = c.name.text();
                         if let Some(first) = m.behaviors.get(&key) {
                             let first = m.compound(*first).span;
                             diags.push(
@@ -126,23 +138,33 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
         let Item::Compound(c) = item else { continue };
         let id = CompoundId(index);
         index += 1;
-        if c.name.parts.len() > 1 && c.kind != CompoundKind::Struct && c.kind != CompoundKind::Actor {
+        if c.name.parts.len() > 1 && c.kind != CompoundKind::Struct && c.kind != CompoundKind::Actor
+        {
             let actor_name = QualName {
                 parts: c.name.parts[..c.name.parts.len() - 1].to_vec(),
                 span: c.name.parts[0].span,
             };
-            m.compounds[id.0 as usize].actor = compound_named(&m, &actor_name, Some(CompoundKind::Actor), diags);
+            m.compounds[id.0 as usize].actor =
+                compound_named(&m, &actor_name, Some(CompoundKind::Actor), diags);
         }
         if let Some(inh) = &c.inherits {
             let parent = match c.kind {
-                CompoundKind::Struct | CompoundKind::Actor => compound_named(&m, &inh.parent, Some(c.kind), diags),
+                CompoundKind::Struct | CompoundKind::Actor => {
+                    compound_named(&m, &inh.parent, Some(c.kind), diags)
+                }
                 _ => match m.behaviors.get(&inh.parent.text()) {
                     Some(p) if m.compound(*p).kind == c.kind => Some(*p),
                     _ => {
                         diags.push(Diagnostic::new(
                             DiagnosticKind::Inheritance,
                             inh.parent.span,
-                            format!("{} `{}` inherits from unknown {} `{}`", c.kind.keyword(), c.name.text(), c.kind.keyword(), inh.parent.text()),
+                            format!(
+                                "{} `{}` inherits from unknown {} `{}`",
+                                c.kind.keyword(),
+                                c.name.text(),
+                                c.kind.keyword(),
+                                inh.parent.text()
+                            ),
                         ));
                         None
                     }
@@ -152,11 +174,17 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
         }
         if let Some(of) = &c.of {
             match m.behaviors.get(&of.text()) {
-                Some(b) if m.compound(*b).kind != CompoundKind::Modifier => m.compounds[id.0 as usize].of = Some(*b),
+                Some(b) if m.compound(*b).kind != CompoundKind::Modifier => {
+                    m.compounds[id.0 as usize].of = Some(*b)
+                }
                 _ => diags.push(Diagnostic::new(
                     DiagnosticKind::UnknownName,
                     of.span,
-                    format!("modifier `{}` is declared of unknown action or scenario `{}`", c.name.text(), of.text()),
+                    format!(
+                        "modifier `{}` is declared of unknown action or scenario `{}`",
+                        c.name.text(),
+                        of.text()
+                    ),
                 )),
             }
         }
@@ -184,9 +212,15 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                 index += 1;
                 add_members(&mut m, id, &c.members, diags);
             }
-            Item::Extend { target, members, .. } => {
-                let Some(id) = compound_named(&m, target, None, diags) else { continue };
-                m.compounds[id.0 as usize].members.extend(members.iter().cloned());
+            Item::Extend {
+                target, members, ..
+            } => {
+                let Some(id) = compound_named(&m, target, None, diags) else {
+                    continue;
+                };
+                m.compounds[id.0 as usize]
+                    .members
+                    .extend(members.iter().cloned());
                 add_members(&mut m, id, members, diags);
             }
             Item::EnumExtension { name, members, .. } => match m.types.get(&name.text()) {
@@ -195,13 +229,21 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                     for mem in members {
                         let def = &mut m.enums[e.0 as usize];
                         if def.members.contains(&mem.text) {
-                            diags.push(Diagnostic::new(DiagnosticKind::Duplicate, mem.span, format!("enum `{}` already has member `{}`", def.name, mem.text)));
+                            diags.push(Diagnostic::new(
+                                DiagnosticKind::Duplicate,
+                                mem.span,
+                                format!("enum `{}` already has member `{}`", def.name, mem.text),
+                            ));
                         } else {
                             def.members.push(mem.text.clone());
                         }
                     }
                 }
-                _ => diags.push(Diagnostic::new(DiagnosticKind::UnknownName, name.span, format!("unknown enum `{}`", name.text()))),
+                _ => diags.push(Diagnostic::new(
+                    DiagnosticKind::UnknownName,
+                    name.span,
+                    format!("unknown enum `{}`", name.text()),
+                )),
             },
             Item::Global(f) => {
                 for def in field_defs(&m, f, diags) {
@@ -220,16 +262,15 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
     m
 }
 
-fn behavior_key(kind: CompoundKind, name: &QualName) -> String {
-    let _ = kind;
-    name.text()
-}
-
 fn push_global(m: &mut Model, def: FieldDef, diags: &mut Vec<Diagnostic>) {
     if let Some(first) = m.globals.iter().find(|g| g.name == def.name) {
         diags.push(
-            Diagnostic::new(DiagnosticKind::Duplicate, def.span, format!("`{}` is declared twice", def.name))
-                .with(first.span, "first declared here"),
+            Diagnostic::new(
+                DiagnosticKind::Duplicate,
+                def.span,
+                format!("`{}` is declared twice", def.name),
+            )
+            .with(first.span, "first declared here"),
         );
         return;
     }
@@ -246,7 +287,11 @@ fn add_members(m: &mut Model, id: CompoundId, members: &[Member], diags: &mut Ve
                             Diagnostic::new(
                                 DiagnosticKind::Duplicate,
                                 def.span,
-                                format!("`{}` already has a field `{}`", m.compound(id).name, def.name),
+                                format!(
+                                    "`{}` already has a field `{}`",
+                                    m.compound(id).name,
+                                    def.name
+                                ),
                             )
                             .with(first.span, "first declared here"),
                         );
@@ -259,12 +304,25 @@ fn add_members(m: &mut Model, id: CompoundId, members: &[Member], diags: &mut Ve
                 let params = md
                     .params
                     .iter()
-                    .map(|p| ParamDef { name: p.name.text.clone(), ty: resolve_type(m, &p.ty, diags), optional: p.default.is_some() })
+                    .map(|p| ParamDef {
+                        name: p.name.text.clone(),
+                        ty: resolve_type(m, &p.ty, diags),
+                        optional: p.default.is_some(),
+                    })
                     .collect();
                 let ret = md.ret.as_ref().map(|t| resolve_type(m, t, diags));
-                let def = MethodDef { name: md.name.text.clone(), params, ret, span: md.span };
+                let def = MethodDef {
+                    name: md.name.text.clone(),
+                    params,
+                    ret,
+                    span: md.span,
+                };
                 if m.compound(id).methods.iter().any(|x| x.name == def.name) {
-                    diags.push(Diagnostic::new(DiagnosticKind::Duplicate, md.name.span, format!("method `{}` is declared twice", def.name)));
+                    diags.push(Diagnostic::new(
+                        DiagnosticKind::Duplicate,
+                        md.name.span,
+                        format!("method `{}` is declared twice", def.name),
+                    ));
                     continue;
                 }
                 m.compounds[id.0 as usize].methods.push(def);
@@ -299,7 +357,11 @@ pub fn resolve_type(m: &Model, t: &TypeRef, diags: &mut Vec<Diagnostic>) -> Ty {
             "float" => Ty::Float,
             "string" => Ty::Str,
             other => {
-                diags.push(Diagnostic::new(DiagnosticKind::UnknownName, n.span, format!("unknown type `{other}`")));
+                diags.push(Diagnostic::new(
+                    DiagnosticKind::UnknownName,
+                    n.span,
+                    format!("unknown type `{other}`"),
+                ));
                 Ty::Error
             }
         },
@@ -308,14 +370,22 @@ pub fn resolve_type(m: &Model, t: &TypeRef, diags: &mut Vec<Diagnostic>) -> Ty {
             Some((TypeName::Enum(e), _)) => Ty::Enum(*e),
             Some((TypeName::Compound(c), _)) => Ty::Compound(*c),
             None => {
-                diags.push(Diagnostic::new(DiagnosticKind::UnknownName, q.span, format!("unknown type `{}`", q.text())));
+                diags.push(Diagnostic::new(
+                    DiagnosticKind::UnknownName,
+                    q.span,
+                    format!("unknown type `{}`", q.text()),
+                ));
                 Ty::Error
             }
         },
         TypeRef::List(inner, span) => {
             let t = resolve_type(m, inner, diags);
             if matches!(t, Ty::List(_)) {
-                diags.push(Diagnostic::new(DiagnosticKind::Type, *span, "a list cannot hold lists"));
+                diags.push(Diagnostic::new(
+                    DiagnosticKind::Type,
+                    *span,
+                    "a list cannot hold lists",
+                ));
                 return Ty::Error;
             }
             Ty::List(Box::new(t))
@@ -325,17 +395,32 @@ pub fn resolve_type(m: &Model, t: &TypeRef, diags: &mut Vec<Diagnostic>) -> Ty {
 }
 
 /// The struct or actor named `q` (of `kind` when given).
-fn compound_named(m: &Model, q: &QualName, kind: Option<CompoundKind>, diags: &mut Vec<Diagnostic>) -> Option<CompoundId> {
+fn compound_named(
+    m: &Model,
+    q: &QualName,
+    kind: Option<CompoundKind>,
+    diags: &mut Vec<Diagnostic>,
+) -> Option<CompoundId> {
     match m.types.get(&q.text()) {
-        Some((TypeName::Compound(c), _)) if kind.is_none_or(|k| m.compound(*c).kind == k) => Some(*c),
+        Some((TypeName::Compound(c), _)) if kind.map_or(true, |k| m.compound(*c).kind == k) => {
+            Some(*c)
+        }
         Some(_) => {
             let want = kind.map_or("struct or actor", |k| k.keyword());
-            diags.push(Diagnostic::new(DiagnosticKind::Inheritance, q.span, format!("`{}` is not a {want}", q.text())));
+            diags.push(Diagnostic::new(
+                DiagnosticKind::Inheritance,
+                q.span,
+                format!("`{}` is not a {want}", q.text()),
+            ));
             None
         }
         None => {
             let what = kind.map_or("type", |k| k.keyword());
-            diags.push(Diagnostic::new(DiagnosticKind::UnknownName, q.span, format!("unknown {what} `{}`", q.text())));
+            diags.push(Diagnostic::new(
+                DiagnosticKind::UnknownName,
+                q.span,
+                format!("unknown {what} `{}`", q.text()),
+            ));
             None
         }
     }
@@ -349,7 +434,11 @@ fn si_spec(args: &[SiArg], diags: &mut Vec<Diagnostic>) -> (Dimension, f64, f64)
         let value = match number(&a.value.kind) {
             Some(v) => v,
             None => {
-                diags.push(Diagnostic::new(DiagnosticKind::Type, a.value.span, format!("expected a number for `{}`", a.name.text)));
+                diags.push(Diagnostic::new(
+                    DiagnosticKind::Type,
+                    a.value.span,
+                    format!("expected a number for `{}`", a.name.text),
+                ));
                 continue;
             }
         };
@@ -380,9 +469,4 @@ fn number(e: &ExprKind) -> Option<f64> {
         ExprKind::Neg(inner) => number(&inner.kind).map(|v| -v),
         _ => None,
     }
-}
-
-/// Span helper for callers that hold only a file-level position.
-pub fn start_of(span: Span) -> Span {
-    Span { end: span.start, ..span }
 }

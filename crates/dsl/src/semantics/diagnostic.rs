@@ -67,7 +67,12 @@ pub struct Diagnostic {
 impl Diagnostic {
     /// A diagnostic without related places.
     pub fn new(kind: DiagnosticKind, span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic { kind, message: message.into(), span, related: Vec::new() }
+        Diagnostic {
+            kind,
+            message: message.into(),
+            span,
+            related: Vec::new(),
+        }
     }
 
     /// Adds a related place.

@@ -38,13 +38,16 @@ pub struct QualName {
 impl QualName {
     /// The dotted text.
     pub fn text(&self) -> String {
-        self.parts.iter().map(|p| p.text.as_str()).collect::<Vec<_>>().join(".")
+        self.parts
+            .iter()
+            .map(|p| p.text.as_str())
+            .collect::<Vec<_>>()
+            .join(".")
     }
 
-    /// The last part.
-    pub fn last(&self) -> &Name {
-        // A QualName is built from at least one part (lower_ast never makes an empty one).
-        &self.parts[self.parts.len() - 1]
+    /// The last part (the name itself, without qualifier); empty for an empty name.
+    pub fn last_text(&self) -> &str {
+        self.parts.last().map_or("", |p| p.text.as_str())
     }
 }
 
@@ -72,61 +75,27 @@ impl TypeRef {
     }
 }
 
-/// Binary operators (§7.4.2, table of operators).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum BinOp {
-    /// `+`
-    Add,
-    /// `-`
-    Sub,
-    /// `*`
-    Mul,
-    /// `/`
-    Div,
-    /// `%`
-    Rem,
-    /// `==`
-    Eq,
-    /// `!=`
-    Ne,
-    /// `<`
-    Lt,
-    /// `<=`
-    Le,
-    /// `>`
-    Gt,
-    /// `>=`
-    Ge,
-    /// `and`
-    And,
-    /// `or`
-    Or,
-    /// `=>`
-    Implies,
-    /// `in`
-    In,
-}
+/// Binary operators: the parser's (ASAM OpenSCENARIO DSL 2.1 §7.2.2.6).
+pub use crate::syntax::ast::BinaryOp as BinOp;
 
-impl BinOp {
-    /// The operator as written.
-    pub fn text(self) -> &'static str {
-        match self {
-            BinOp::Add => "+",
-            BinOp::Sub => "-",
-            BinOp::Mul => "*",
-            BinOp::Div => "/",
-            BinOp::Rem => "%",
-            BinOp::Eq => "==",
-            BinOp::Ne => "!=",
-            BinOp::Lt => "<",
-            BinOp::Le => "<=",
-            BinOp::Gt => ">",
-            BinOp::Ge => ">=",
-            BinOp::And => "and",
-            BinOp::Or => "or",
-            BinOp::Implies => "=>",
-            BinOp::In => "in",
-        }
+/// An operator as written, for messages.
+pub fn op_text(op: BinOp) -> &'static str {
+    match op {
+        BinOp::Add => "+",
+        BinOp::Sub => "-",
+        BinOp::Mul => "*",
+        BinOp::Div => "/",
+        BinOp::Rem => "%",
+        BinOp::Eq => "==",
+        BinOp::Ne => "!=",
+        BinOp::Lt => "<",
+        BinOp::Le => "<=",
+        BinOp::Gt => ">",
+        BinOp::Ge => ">=",
+        BinOp::And => "and",
+        BinOp::Or => "or",
+        BinOp::Implies => "=>",
+        BinOp::In => "in",
     }
 }
 
@@ -218,8 +187,6 @@ pub struct FieldDecl {
     pub default: Option<Expr>,
     /// A `var` (state variable) rather than a parameter.
     pub is_var: bool,
-    /// `var x := sample(...)`-style initialiser for variables.
-    pub sample: Option<Expr>,
     /// Constraints in its `with:` block (over `it`).
     pub keeps: Vec<Keep>,
     /// The whole declaration.

@@ -51,9 +51,18 @@ impl Tree {
     /// Builds the tree; `sizes` holds the decided size of lists by path.
     pub fn build(model: &Model, sizes: &HashMap<String, usize>) -> Tree {
         let mut t = Tree::default();
-        let mut b = Builder { model, sizes, tree: &mut t, stack: Vec::new() };
+        let mut b = Builder {
+            model,
+            sizes,
+            tree: &mut t,
+            stack: Vec::new(),
+        };
         for g in &model.globals {
-            let n = if g.is_var { b.push(Node::State(g.ty.clone()), g.name.clone()) } else { b.node(&g.ty, g.name.clone()) };
+            let n = if g.is_var {
+                b.push(Node::State(g.ty.clone()), g.name.clone())
+            } else {
+                b.node(&g.ty, g.name.clone())
+            };
             b.tree.roots.push((g.name.clone(), n));
         }
         for (i, c) in model.compounds.iter().enumerate() {
@@ -67,7 +76,9 @@ impl Tree {
 
     /// Lists whose size is not decided yet, in tree order.
     pub fn unsized_lists(&self) -> Vec<NodeId> {
-        (0..self.nodes.len()).filter(|n| matches!(self.nodes[*n], Node::List(_, _, None))).collect()
+        (0..self.nodes.len())
+            .filter(|n| matches!(self.nodes[*n], Node::List(_, _, None)))
+            .collect()
     }
 }
 
@@ -95,7 +106,11 @@ impl Builder<'_> {
     }
 
     fn node(&mut self, ty: &Ty, path: String) -> NodeId {
-        let num = |integer, lo| VarKind::Number { integer, lo, hi: None };
+        let num = |integer, lo| VarKind::Number {
+            integer,
+            lo,
+            hi: None,
+        };
         match ty {
             Ty::Bool => {
                 let v = self.var(&path, VarKind::Enum { count: 2 });
@@ -120,7 +135,10 @@ impl Builder<'_> {
                 self.push(Node::Scalar(v, ty.clone()), path)
             }
             Ty::Compound(c) => {
-                if is_reference(self.model, *c) || self.stack.contains(c) || self.stack.len() >= MAX_DEPTH {
+                if is_reference(self.model, *c)
+                    || self.stack.contains(c)
+                    || self.stack.len() >= MAX_DEPTH
+                {
                     return self.push(Node::Reference(ty.clone()), path);
                 }
                 let id = self.push(Node::Compound(*c, Vec::new()), path.clone());
@@ -129,7 +147,11 @@ impl Builder<'_> {
                 let mut fields = Vec::new();
                 for f in self.model.all_fields(*c) {
                     let p = format!("{path}.{}", f.name);
-                    let n = if f.is_var { self.push(Node::State(f.ty.clone()), p) } else { self.node(&f.ty, p) };
+                    let n = if f.is_var {
+                        self.push(Node::State(f.ty.clone()), p)
+                    } else {
+                        self.node(&f.ty, p)
+                    };
                     fields.push((f.name.clone(), n));
                 }
                 self.stack.pop();
@@ -140,7 +162,9 @@ impl Builder<'_> {
                 let size = self.var(&format!("{path}.size()"), num(true, Some(0.0)));
                 let id = self.push(Node::List((**elem).clone(), size, None), path.clone());
                 if let Some(&n) = self.sizes.get(&path) {
-                    let items = (0..n).map(|i| self.node(elem, format!("{path}[{i}]"))).collect();
+                    let items = (0..n)
+                        .map(|i| self.node(elem, format!("{path}[{i}]")))
+                        .collect();
                     self.tree.nodes[id] = Node::List((**elem).clone(), size, Some(items));
                 }
                 id

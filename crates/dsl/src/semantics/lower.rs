@@ -48,7 +48,12 @@ pub fn lower(model: &Model, templates: &[Template], tree: &mut Tree) -> Lowered 
     for (ti, t) in templates.iter().enumerate() {
         let contexts: Vec<Option<NodeId>> = match t.owner {
             Owner::Top => vec![None],
-            Owner::Compound(c) => tree.instances.iter().filter(|(_, ty)| model.is_subtype(*ty, c)).map(|(n, _)| Some(*n)).collect(),
+            Owner::Compound(c) => tree
+                .instances
+                .iter()
+                .filter(|(_, ty)| model.is_subtype(*ty, c))
+                .map(|(n, _)| Some(*n))
+                .collect(),
         };
         for this in contexts {
             let depth = match (t.strength, this) {
@@ -62,10 +67,18 @@ pub fn lower(model: &Model, templates: &[Template], tree: &mut Tree) -> Lowered 
     for (_, ti, this) in work {
         let t = &templates[ti];
         {
-            let mut env = Env { this, locals: Vec::new() };
+            let mut env = Env {
+                this,
+                locals: Vec::new(),
+            };
             let origin = out.origins.len() as u32;
             out.origins.push(t.span);
-            let mut lw = Lowerer { tree, out: &mut out, origin, strength: t.strength };
+            let mut lw = Lowerer {
+                tree,
+                out: &mut out,
+                origin,
+                strength: t.strength,
+            };
             if let Err(Fail::Unsupported(span, msg)) = lw.loops(t, 0, &mut env) {
                 if reported.insert(ti) {
                     out.diags.push(Diagnostic::new(K::Unsupported, span, msg));
@@ -90,7 +103,10 @@ impl Lowerer<'_> {
         }
         let list = self.node(&t.loops[k], env)?;
         let Node::List(_, _, items) = &self.tree.nodes[list] else {
-            return Err(Fail::Unsupported(t.loops[k].span, "expected a list of the instance".into()));
+            return Err(Fail::Unsupported(
+                t.loops[k].span,
+                "expected a list of the instance".into(),
+            ));
         };
         let Some(items) = items.clone() else {
             self.out.pending.insert(list);
@@ -110,7 +126,10 @@ impl Lowerer<'_> {
     }
 
     fn unsupported(e: &TExpr, what: &str) -> Fail {
-        Fail::Unsupported(e.span, format!("the solver does not handle {what} in a constraint"))
+        Fail::Unsupported(
+            e.span,
+            format!("the solver does not handle {what} in a constraint"),
+        )
     }
 
     /// The node a path expression names.
@@ -133,13 +152,21 @@ impl Lowerer<'_> {
                     .ok_or_else(|| Self::unsupported(e, "a field of a subtype"))?,
                 (Seg::Index(i), Node::List(_, size, items)) => {
                     let (size, items) = (*size, items.clone());
-                    let TKind::Number(x) = i.kind else { return Err(Self::unsupported(i, "a computed list index")) };
+                    let TKind::Number(x) = i.kind else {
+                        return Err(Self::unsupported(i, "a computed list index"));
+                    };
                     if x < 0.0 || x.fract() != 0.0 {
-                        return Err(Fail::Unsupported(i.span, format!("list index {x} is not a whole number ≥ 0")));
+                        return Err(Fail::Unsupported(
+                            i.span,
+                            format!("list index {x} is not a whole number ≥ 0"),
+                        ));
                     }
                     // Indexing element i needs at least i + 1 elements.
                     let need = Linear::constant(x + 1.0).add_scaled(&Linear::var(size), -1.0);
-                    self.add(ConstraintKind::Linear { expr: need, rel: Relation::Le });
+                    self.add(ConstraintKind::Linear {
+                        expr: need,
+                        rel: Relation::Le,
+                    });
                     match items {
                         Some(items) => *items.get(x as usize).ok_or(Fail::Pending)?,
                         None => {
@@ -148,8 +175,18 @@ impl Lowerer<'_> {
                         }
                     }
                 }
-                (_, Node::Reference(_)) => return Err(Self::unsupported(e, "a road-network reference (resolved at run time)")),
-                (_, Node::State(_)) => return Err(Self::unsupported(e, "a state variable (`var`, known only at run time)")),
+                (_, Node::Reference(_)) => {
+                    return Err(Self::unsupported(
+                        e,
+                        "a road-network reference (resolved at run time)",
+                    ))
+                }
+                (_, Node::State(_)) => {
+                    return Err(Self::unsupported(
+                        e,
+                        "a state variable (`var`, known only at run time)",
+                    ))
+                }
                 _ => return Err(Self::unsupported(e, "this path")),
             };
         }
@@ -160,8 +197,14 @@ impl Lowerer<'_> {
         let n = self.node(e, env)?;
         match &self.tree.nodes[n] {
             Node::Scalar(v, _) => Ok(*v),
-            Node::State(_) => Err(Self::unsupported(e, "a state variable (`var`, known only at run time)")),
-            Node::Reference(_) => Err(Self::unsupported(e, "a road-network reference (resolved at run time)")),
+            Node::State(_) => Err(Self::unsupported(
+                e,
+                "a state variable (`var`, known only at run time)",
+            )),
+            Node::Reference(_) => Err(Self::unsupported(
+                e,
+                "a road-network reference (resolved at run time)",
+            )),
             _ => Err(Self::unsupported(e, "a whole struct or list")),
         }
     }
@@ -174,7 +217,10 @@ impl Lowerer<'_> {
                 let n = self.node(list, env)?;
                 match &self.tree.nodes[n] {
                     Node::List(_, size, _) => Ok(Linear::var(*size)),
-                    _ => Err(Self::unsupported(list, "`size()` of something other than a list field")),
+                    _ => Err(Self::unsupported(
+                        list,
+                        "`size()` of something other than a list field",
+                    )),
                 }
             }
             TKind::Neg(a) => Ok(self.linear(a, env)?.scale(-1.0)),
@@ -185,7 +231,9 @@ impl Lowerer<'_> {
                     BinOp::Sub => Ok(la.add_scaled(&lb, -1.0)),
                     BinOp::Mul if lb.terms.is_empty() => Ok(la.scale(lb.constant)),
                     BinOp::Mul if la.terms.is_empty() => Ok(lb.scale(la.constant)),
-                    BinOp::Div if lb.terms.is_empty() && lb.constant != 0.0 => Ok(la.scale(1.0 / lb.constant)),
+                    BinOp::Div if lb.terms.is_empty() && lb.constant != 0.0 => {
+                        Ok(la.scale(1.0 / lb.constant))
+                    }
                     _ => Err(Self::unsupported(e, "a product or quotient of two fields")),
                 }
             }
@@ -198,7 +246,10 @@ impl Lowerer<'_> {
         match &e.kind {
             TKind::Bool(b) => {
                 if *b == negate {
-                    self.add(ConstraintKind::Linear { expr: Linear::constant(1.0), rel: Relation::Le });
+                    self.add(ConstraintKind::Linear {
+                        expr: Linear::constant(1.0),
+                        rel: Relation::Le,
+                    });
                 }
                 Ok(())
             }
@@ -209,21 +260,38 @@ impl Lowerer<'_> {
             }
             TKind::Path(..) if e.ty == Ty::Bool => {
                 let var = self.scalar(e, env)?;
-                self.add(ConstraintKind::Member { var, set: vec![1], negated: negate });
+                self.add(ConstraintKind::Member {
+                    var,
+                    set: vec![1],
+                    negated: negate,
+                });
                 Ok(())
             }
-            TKind::Binary(op @ (BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge), a, b) => {
+            TKind::Binary(
+                op @ (BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge),
+                a,
+                b,
+            ) => {
                 let op = if negate { flip(*op) } else { *op };
                 self.compare(op, a, b, env, e)
             }
             TKind::Binary(BinOp::In, a, b) => self.membership(a, b, env, negate, e),
-            TKind::Binary(BinOp::Or | BinOp::Implies, ..) => Err(Self::unsupported(e, "`or` and `=>`")),
+            TKind::Binary(BinOp::Or | BinOp::Implies, ..) => {
+                Err(Self::unsupported(e, "`or` and `=>`"))
+            }
             TKind::Binary(BinOp::And, ..) => Err(Self::unsupported(e, "`not (a and b)`")),
             _ => Err(Self::unsupported(e, describe(e))),
         }
     }
 
-    fn compare(&mut self, op: BinOp, a: &TExpr, b: &TExpr, env: &Env, whole: &TExpr) -> Result<(), Fail> {
+    fn compare(
+        &mut self,
+        op: BinOp,
+        a: &TExpr,
+        b: &TExpr,
+        env: &Env,
+        whole: &TExpr,
+    ) -> Result<(), Fail> {
         match (&a.ty, &b.ty) {
             (Ty::Enum(_) | Ty::Bool, _) | (_, Ty::Enum(_) | Ty::Bool) => {
                 let negated = match op {
@@ -234,20 +302,35 @@ impl Lowerer<'_> {
                 match (member(a), member(b)) {
                     (Some(x), Some(y)) => {
                         if (x == y) == negated {
-                            self.add(ConstraintKind::Linear { expr: Linear::constant(1.0), rel: Relation::Le });
+                            self.add(ConstraintKind::Linear {
+                                expr: Linear::constant(1.0),
+                                rel: Relation::Le,
+                            });
                         }
                     }
                     (None, Some(m)) => {
                         let var = self.scalar(a, env)?;
-                        self.add(ConstraintKind::Member { var, set: vec![m], negated });
+                        self.add(ConstraintKind::Member {
+                            var,
+                            set: vec![m],
+                            negated,
+                        });
                     }
                     (Some(m), None) => {
                         let var = self.scalar(b, env)?;
-                        self.add(ConstraintKind::Member { var, set: vec![m], negated });
+                        self.add(ConstraintKind::Member {
+                            var,
+                            set: vec![m],
+                            negated,
+                        });
                     }
                     (None, None) => {
                         let (x, y) = (self.scalar(a, env)?, self.scalar(b, env)?);
-                        self.add(ConstraintKind::SameMember { a: x, b: y, negated });
+                        self.add(ConstraintKind::SameMember {
+                            a: x,
+                            b: y,
+                            negated,
+                        });
                     }
                 }
                 Ok(())
@@ -263,7 +346,11 @@ impl Lowerer<'_> {
                     (TKind::Str(s), _) => (self.scalar(b, env)?, s.clone()),
                     _ => return Err(Self::unsupported(whole, "equality of two string fields")),
                 };
-                self.add(ConstraintKind::Text { var, value: text, negated });
+                self.add(ConstraintKind::Text {
+                    var,
+                    value: text,
+                    negated,
+                });
                 Ok(())
             }
             _ => {
@@ -282,7 +369,14 @@ impl Lowerer<'_> {
         }
     }
 
-    fn membership(&mut self, a: &TExpr, b: &TExpr, env: &Env, negated: bool, whole: &TExpr) -> Result<(), Fail> {
+    fn membership(
+        &mut self,
+        a: &TExpr,
+        b: &TExpr,
+        env: &Env,
+        negated: bool,
+        whole: &TExpr,
+    ) -> Result<(), Fail> {
         match &b.kind {
             TKind::Range(lo, hi) => {
                 if negated {
@@ -290,13 +384,21 @@ impl Lowerer<'_> {
                 }
                 let x = self.linear(a, env)?;
                 let (l, h) = (self.linear(lo, env)?, self.linear(hi, env)?);
-                self.add(ConstraintKind::Linear { expr: l.add_scaled(&x, -1.0), rel: Relation::Le });
-                self.add(ConstraintKind::Linear { expr: x.add_scaled(&h, -1.0), rel: Relation::Le });
+                self.add(ConstraintKind::Linear {
+                    expr: l.add_scaled(&x, -1.0),
+                    rel: Relation::Le,
+                });
+                self.add(ConstraintKind::Linear {
+                    expr: x.add_scaled(&h, -1.0),
+                    rel: Relation::Le,
+                });
                 Ok(())
             }
             TKind::List(items) if matches!(a.ty, Ty::Enum(_) | Ty::Bool) => {
                 let set: Option<Vec<u32>> = items.iter().map(member).collect();
-                let Some(set) = set else { return Err(Self::unsupported(b, "a list of fields after `in`")) };
+                let Some(set) = set else {
+                    return Err(Self::unsupported(b, "a list of fields after `in`"));
+                };
                 let var = self.scalar(a, env)?;
                 self.add(ConstraintKind::Member { var, set, negated });
                 Ok(())
@@ -305,7 +407,10 @@ impl Lowerer<'_> {
                 let op = if negated { BinOp::Ne } else { BinOp::Eq };
                 self.compare(op, a, &items[0], env, whole)
             }
-            _ => Err(Self::unsupported(whole, "membership in a list of numbers (a disjunction)")),
+            _ => Err(Self::unsupported(
+                whole,
+                "membership in a list of numbers (a disjunction)",
+            )),
         }
     }
 }

@@ -9,7 +9,9 @@ use super::hir::*;
 /// Lowers one parsed file (file `file` of the program).
 pub fn lower_file(tree: &ast::SourceFile, file: FileId) -> SourceFile {
     let cx = Cx { file };
-    SourceFile { items: tree.items().filter_map(|i| cx.item(&i)).collect() }
+    SourceFile {
+        items: tree.items().filter_map(|i| cx.item(&i)).collect(),
+    }
 }
 
 struct Cx {
@@ -19,15 +21,25 @@ struct Cx {
 impl Cx {
     fn span(&self, n: &impl AstNode) -> Span {
         let r = n.syntax().text_range();
-        Span { file: self.file, start: r.start().into(), end: r.end().into() }
+        Span {
+            file: self.file,
+            start: r.start().into(),
+            end: r.end().into(),
+        }
     }
 
     fn name(&self, n: &ast::Name) -> Name {
-        Name { text: n.text(), span: self.span(n) }
+        Name {
+            text: n.text(),
+            span: self.span(n),
+        }
     }
 
     fn name_ref(&self, n: &ast::NameRef) -> Name {
-        Name { text: n.text(), span: self.span(n) }
+        Name {
+            text: n.text(),
+            span: self.span(n),
+        }
     }
 
     fn qual(&self, parts: Vec<Name>, span: Span) -> QualName {
@@ -50,7 +62,11 @@ impl Cx {
         let span = self.span(t);
         match t {
             ast::Type::Primitive(p) => {
-                let text = p.kind().and_then(|k| k.keyword_text()).unwrap_or("?").to_string();
+                let text = p
+                    .kind()
+                    .and_then(|k| k.keyword_text())
+                    .unwrap_or("?")
+                    .to_string();
                 TypeRef::Primitive(Name { text, span })
             }
             ast::Type::Named(n) => TypeRef::Named(self.named_type(n)),
@@ -62,7 +78,10 @@ impl Cx {
     fn opt_ty(&self, t: Option<ast::Type>, span: Span) -> TypeRef {
         match t {
             Some(t) => self.ty(&t),
-            None => TypeRef::Primitive(Name { text: "?".into(), span }),
+            None => TypeRef::Primitive(Name {
+                text: "?".into(),
+                span,
+            }),
         }
     }
 
@@ -74,7 +93,13 @@ impl Cx {
                 let target = if i.is_path() {
                     ImportTarget::File(r)
                 } else {
-                    let parts = r.split('.').map(|p| Name { text: p.to_string(), span }).collect();
+                    let parts = r
+                        .split('.')
+                        .map(|p| Name {
+                            text: p.to_string(),
+                            span,
+                        })
+                        .collect();
                     ImportTarget::Library(self.qual(parts, span))
                 };
                 Item::Import { target, span }
@@ -97,37 +122,93 @@ impl Cx {
             },
             ast::Item::Enum(e) => Item::Enum {
                 name: self.name(&e.name()?),
-                members: e.members().filter_map(|m| m.name().map(|n| self.name(&n))).collect(),
+                members: e
+                    .members()
+                    .filter_map(|m| m.name().map(|n| self.name(&n)))
+                    .collect(),
                 span,
             },
             ast::Item::EnumExtension(e) => Item::EnumExtension {
                 name: self.named_type(&e.target()?),
-                members: e.members().filter_map(|m| m.name().map(|n| self.name(&n))).collect(),
+                members: e
+                    .members()
+                    .filter_map(|m| m.name().map(|n| self.name(&n)))
+                    .collect(),
                 span,
             },
-            ast::Item::Struct(d) => self.compound(CompoundKind::Struct, self.simple(d.name()), None, d.inherits(), d.members(), span)?,
-            ast::Item::Actor(d) => self.compound(CompoundKind::Actor, self.simple(d.name()), None, d.inherits(), d.members(), span)?,
-            ast::Item::Scenario(d) => self.compound(CompoundKind::Scenario, d.name().map(|b| self.behavior_name(&b)), None, d.inherits(), d.members(), span)?,
-            ast::Item::Action(d) => self.compound(CompoundKind::Action, d.name().map(|b| self.behavior_name(&b)), None, d.inherits(), d.members(), span)?,
+            ast::Item::Struct(d) => self.compound(
+                CompoundKind::Struct,
+                self.simple(d.name()),
+                None,
+                d.inherits(),
+                d.members(),
+                span,
+            )?,
+            ast::Item::Actor(d) => self.compound(
+                CompoundKind::Actor,
+                self.simple(d.name()),
+                None,
+                d.inherits(),
+                d.members(),
+                span,
+            )?,
+            ast::Item::Scenario(d) => self.compound(
+                CompoundKind::Scenario,
+                d.name().map(|b| self.behavior_name(&b)),
+                None,
+                d.inherits(),
+                d.members(),
+                span,
+            )?,
+            ast::Item::Action(d) => self.compound(
+                CompoundKind::Action,
+                d.name().map(|b| self.behavior_name(&b)),
+                None,
+                d.inherits(),
+                d.members(),
+                span,
+            )?,
             ast::Item::Modifier(d) => {
                 let of = d.of().map(|t| self.named_type(&t));
-                self.compound(CompoundKind::Modifier, d.name().map(|b| self.behavior_name(&b)), of, d.inherits(), d.members(), span)?
+                self.compound(
+                    CompoundKind::Modifier,
+                    d.name().map(|b| self.behavior_name(&b)),
+                    of,
+                    d.inherits(),
+                    d.members(),
+                    span,
+                )?
             }
             ast::Item::Extend(d) => {
                 let target = match d.target()? {
                     ast::Type::Named(n) => self.named_type(&n),
                     other => {
                         let s = self.span(&other);
-                        self.qual(vec![Name { text: other.syntax().text().to_string(), span: s }], s)
+                        self.qual(
+                            vec![Name {
+                                text: other.syntax().text().to_string(),
+                                span: s,
+                            }],
+                            s,
+                        )
                     }
                 };
-                Item::Extend { target, members: self.members(d.members()), span }
+                Item::Extend {
+                    target,
+                    members: self.members(d.members()),
+                    span,
+                }
             }
             ast::Item::Global(g) => Item::Global(self.field(&g.param()?, false)?),
             ast::Item::Param(p) => Item::Member(Member::Field(self.field(p, false)?)),
             ast::Item::Keep(k) => Item::Member(Member::Keep(self.keep(k)?)),
-            ast::Item::RemoveDefault(r) => Item::Member(Member::RemoveDefault(self.opt_expr(r.parameter(), span), span)),
-            ast::Item::ModifierApplication(m) => Item::Member(Member::Modifier(self.modifier_app(m)?)),
+            ast::Item::RemoveDefault(r) => Item::Member(Member::RemoveDefault(
+                self.opt_expr(r.parameter(), span),
+                span,
+            )),
+            ast::Item::ModifierApplication(m) => {
+                Item::Member(Member::Modifier(self.modifier_app(m)?))
+            }
             ast::Item::For(f) => Item::Member(self.for_member(f)?),
         })
     }
@@ -152,15 +233,32 @@ impl Cx {
                 parent: self.named_type(&i.parent()?),
                 condition: i.condition().map(|c| {
                     let cs = self.span(&c);
-                    let field = c.field().map(|f| Expr { kind: ExprKind::Name(f.text()), span: self.span(&f) });
+                    let field = c.field().map(|f| Expr {
+                        kind: ExprKind::Name(f.text()),
+                        span: self.span(&f),
+                    });
                     let value = self.opt_expr(c.value(), cs);
-                    let lhs = field.unwrap_or(Expr { kind: ExprKind::Error, span: cs });
-                    Expr { kind: ExprKind::Binary(BinOp::Eq, Box::new(lhs), Box::new(value)), span: cs }
+                    let lhs = field.unwrap_or(Expr {
+                        kind: ExprKind::Error,
+                        span: cs,
+                    });
+                    Expr {
+                        kind: ExprKind::Binary(BinOp::Eq, Box::new(lhs), Box::new(value)),
+                        span: cs,
+                    }
                 }),
             }),
             None => None,
         };
-        Some(Item::Compound(CompoundDecl { kind, name: name?, of, inherits, members: self.members(members), span }))
+        let name = name.filter(|n| !n.parts.is_empty())?;
+        Some(Item::Compound(CompoundDecl {
+            kind,
+            name,
+            of,
+            inherits,
+            members: self.members(members),
+            span,
+        }))
     }
 
     fn si(&self, si: Option<ast::SiSpec>) -> Vec<SiArg> {
@@ -168,7 +266,13 @@ impl Cx {
             .flat_map(|s| s.args())
             .filter_map(|a| {
                 let span = self.span(&a);
-                Some(SiArg { name: Name { text: a.name()?, span }, value: self.opt_expr(a.value(), span) })
+                Some(SiArg {
+                    name: Name {
+                        text: a.name()?,
+                        span,
+                    },
+                    value: self.opt_expr(a.value(), span),
+                })
             })
             .collect()
     }
@@ -183,7 +287,9 @@ impl Cx {
             ast::Member::Param(p) => Member::Field(self.field(p, false)?),
             ast::Member::Var(v) => Member::Field(self.var_field(v)?),
             ast::Member::Keep(k) => Member::Keep(self.keep(k)?),
-            ast::Member::RemoveDefault(r) => Member::RemoveDefault(self.opt_expr(r.parameter(), span), span),
+            ast::Member::RemoveDefault(r) => {
+                Member::RemoveDefault(self.opt_expr(r.parameter(), span), span)
+            }
             ast::Member::Method(md) => Member::Method(self.method(md)?),
             ast::Member::Event(e) => Member::Event(EventDecl {
                 name: self.name(&e.name()?),
@@ -192,7 +298,13 @@ impl Cx {
             }),
             ast::Member::Coverage(c) => Member::Coverage(self.args(c.args()), span),
             ast::Member::ModifierApplication(a) => Member::Modifier(self.modifier_app(a)?),
-            ast::Member::On(o) => Member::On(o.event().map(|e| self.event_spec(&e)).unwrap_or(Expr { kind: ExprKind::Error, span }), span),
+            ast::Member::On(o) => Member::On(
+                o.event().map(|e| self.event_spec(&e)).unwrap_or(Expr {
+                    kind: ExprKind::Error,
+                    span,
+                }),
+                span,
+            ),
             ast::Member::Do(d) => Member::Do(self.behavior(&d.member()?)?, span),
             ast::Member::For(f) => self.for_member(f)?,
             // Behaviors written directly as members (inside `do` bodies) are reached through
@@ -223,9 +335,11 @@ impl Cx {
         Some(FieldDecl {
             names: p.names().map(|n| self.name(&n)).collect(),
             ty: self.opt_ty(p.ty(), span),
-            default: p.default().map(|e| self.expr(&e)).or_else(|| p.sample().map(|s| self.sample(&s))),
+            default: p
+                .default()
+                .map(|e| self.expr(&e))
+                .or_else(|| p.sample().map(|s| self.sample(&s))),
             is_var,
-            sample: None,
             keeps,
             span,
         })
@@ -236,9 +350,11 @@ impl Cx {
         Some(FieldDecl {
             names: v.names().map(|n| self.name(&n)).collect(),
             ty: self.opt_ty(v.ty(), span),
-            default: v.default().map(|e| self.expr(&e)).or_else(|| v.sample().map(|s| self.sample(&s))),
+            default: v
+                .default()
+                .map(|e| self.expr(&e))
+                .or_else(|| v.sample().map(|s| self.sample(&s))),
             is_var: true,
-            sample: None,
             keeps: Vec::new(),
             span,
         })
@@ -261,7 +377,11 @@ impl Cx {
             .flat_map(|l| l.params())
             .filter_map(|p| {
                 let ps = self.span(&p);
-                Some(Param { name: self.name(&p.name()?), ty: self.opt_ty(p.ty(), ps), default: p.default().map(|e| self.expr(&e)) })
+                Some(Param {
+                    name: self.name(&p.name()?),
+                    ty: self.opt_ty(p.ty(), ps),
+                    default: p.default().map(|e| self.expr(&e)),
+                })
             })
             .collect();
         let body = match md.body().and_then(|b| b.implementation()) {
@@ -270,7 +390,13 @@ impl Cx {
             Some(ast::MethodImpl::External(_)) => MethodBody::External,
             None => MethodBody::Missing,
         };
-        Some(MethodDecl { name: self.name(&md.name()?), params, ret: md.return_type().map(|t| self.ty(&t)), body, span })
+        Some(MethodDecl {
+            name: self.name(&md.name()?),
+            params,
+            ret: md.return_type().map(|t| self.ty(&t)),
+            body,
+            span,
+        })
     }
 
     fn modifier_app(&self, a: &ast::ModifierApplication) -> Option<ModifierApp> {
@@ -305,7 +431,12 @@ impl Cx {
             },
             ast::Member::Invocation(i) => {
                 let call = i.call()?;
-                let with = i.with().iter().flat_map(|w| w.members()).filter_map(|m| self.with_member(&m)).collect();
+                let with = i
+                    .with()
+                    .iter()
+                    .flat_map(|w| w.members())
+                    .filter_map(|m| self.with_member(&m))
+                    .collect();
                 Labeled {
                     label: self.label(i.label()),
                     behavior: Behavior::Invocation {
@@ -319,7 +450,13 @@ impl Cx {
             }
             ast::Member::Wait(w) => Labeled {
                 label: self.label(w.label()),
-                behavior: Behavior::Wait(w.event().map(|e| self.event_spec(&e)).unwrap_or(Expr { kind: ExprKind::Error, span }), span),
+                behavior: Behavior::Wait(
+                    w.event().map(|e| self.event_spec(&e)).unwrap_or(Expr {
+                        kind: ExprKind::Error,
+                        span,
+                    }),
+                    span,
+                ),
             },
             ast::Member::Emit(e) => Labeled {
                 label: self.label(e.label()),
@@ -327,7 +464,15 @@ impl Cx {
             },
             ast::Member::Call(c) => Labeled {
                 label: self.label(c.label()),
-                behavior: Behavior::Call(c.call().map(|c| self.expr(&ast::Expr::Call(c))).unwrap_or(Expr { kind: ExprKind::Error, span }), span),
+                behavior: Behavior::Call(
+                    c.call()
+                        .map(|c| self.expr(&ast::Expr::Call(c)))
+                        .unwrap_or(Expr {
+                            kind: ExprKind::Error,
+                            span,
+                        }),
+                    span,
+                ),
             },
             ast::Member::Do(d) => return self.behavior(&d.member()?),
             _ => return None,
@@ -339,7 +484,13 @@ impl Cx {
         Some(match m {
             ast::Member::Keep(k) => WithMember::Keep(self.keep(k)?),
             ast::Member::ModifierApplication(a) => WithMember::Modifier(self.modifier_app(a)?),
-            ast::Member::Until(u) => WithMember::Until(u.event().map(|e| self.event_spec(&e)).unwrap_or(Expr { kind: ExprKind::Error, span }), span),
+            ast::Member::Until(u) => WithMember::Until(
+                u.event().map(|e| self.event_spec(&e)).unwrap_or(Expr {
+                    kind: ExprKind::Error,
+                    span,
+                }),
+                span,
+            ),
             ast::Member::Invocation(i) => {
                 // `speed(50kph)` in a with-block may parse as an invocation: it is a modifier.
                 let call = i.call()?;
@@ -360,11 +511,17 @@ impl Cx {
             .map(|a| match a {
                 ast::Argument::Positional(p) => {
                     let s = self.span(&p);
-                    Arg { name: None, value: self.opt_expr(p.value(), s) }
+                    Arg {
+                        name: None,
+                        value: self.opt_expr(p.value(), s),
+                    }
                 }
                 ast::Argument::Named(n) => {
                     let s = self.span(&n);
-                    Arg { name: n.name().map(|x| self.name_ref(&x)), value: self.opt_expr(n.value(), s) }
+                    Arg {
+                        name: n.name().map(|x| self.name_ref(&x)),
+                        value: self.opt_expr(n.value(), s),
+                    }
                 }
             })
             .collect()
@@ -377,9 +534,24 @@ impl Cx {
             None => match s.event_ref().and_then(|r| r.path()) {
                 Some(p) => {
                     let e = self.expr(&p);
-                    Expr { kind: ExprKind::Temporal(Name { text: "@".into(), span }, vec![Arg { name: None, value: e }]), span }
+                    Expr {
+                        kind: ExprKind::Temporal(
+                            Name {
+                                text: "@".into(),
+                                span,
+                            },
+                            vec![Arg {
+                                name: None,
+                                value: e,
+                            }],
+                        ),
+                        span,
+                    }
                 }
-                None => Expr { kind: ExprKind::Error, span },
+                None => Expr {
+                    kind: ExprKind::Error,
+                    span,
+                },
             },
         }
     }
@@ -387,14 +559,28 @@ impl Cx {
     fn event_condition(&self, c: &ast::EventCondition) -> Expr {
         let span = self.span(c);
         let temporal = |name: &str, args: Vec<Expr>| Expr {
-            kind: ExprKind::Temporal(Name { text: name.into(), span }, args.into_iter().map(|value| Arg { name: None, value }).collect()),
+            kind: ExprKind::Temporal(
+                Name {
+                    text: name.into(),
+                    span,
+                },
+                args.into_iter()
+                    .map(|value| Arg { name: None, value })
+                    .collect(),
+            ),
             span,
         };
         match c {
             ast::EventCondition::Expr(e) => self.expr(e),
-            ast::EventCondition::Rise(r) => temporal("rise", vec![self.opt_expr(r.operand(), span)]),
-            ast::EventCondition::Fall(r) => temporal("fall", vec![self.opt_expr(r.operand(), span)]),
-            ast::EventCondition::Elapsed(r) => temporal("elapsed", vec![self.opt_expr(r.operand(), span)]),
+            ast::EventCondition::Rise(r) => {
+                temporal("rise", vec![self.opt_expr(r.operand(), span)])
+            }
+            ast::EventCondition::Fall(r) => {
+                temporal("fall", vec![self.opt_expr(r.operand(), span)])
+            }
+            ast::EventCondition::Elapsed(r) => {
+                temporal("elapsed", vec![self.opt_expr(r.operand(), span)])
+            }
             ast::EventCondition::Every(r) => {
                 let mut args = vec![self.opt_expr(r.period(), span)];
                 args.extend(r.offset().map(|o| self.expr(&o)));
@@ -405,17 +591,35 @@ impl Cx {
 
     fn sample(&self, s: &ast::SampleExpr) -> Expr {
         let span = self.span(s);
-        let mut args = vec![Arg { name: None, value: self.opt_expr(s.expr(), span) }];
+        let mut args = vec![Arg {
+            name: None,
+            value: self.opt_expr(s.expr(), span),
+        }];
         if let Some(e) = s.event() {
-            args.push(Arg { name: None, value: self.event_spec(&e) });
+            args.push(Arg {
+                name: None,
+                value: self.event_spec(&e),
+            });
         }
-        Expr { kind: ExprKind::Temporal(Name { text: "sample".into(), span }, args), span }
+        Expr {
+            kind: ExprKind::Temporal(
+                Name {
+                    text: "sample".into(),
+                    span,
+                },
+                args,
+            ),
+            span,
+        }
     }
 
     fn opt_expr(&self, e: Option<ast::Expr>, span: Span) -> Expr {
         match e {
             Some(e) => self.expr(&e),
-            None => Expr { kind: ExprKind::Error, span },
+            None => Expr {
+                kind: ExprKind::Error,
+                span,
+            },
         }
     }
 
@@ -454,16 +658,23 @@ impl Cx {
                 _ => ExprKind::Error,
             },
             ast::Expr::Bin(x) => match x.op() {
-                Some(op) => ExprKind::Binary(bin_op(op), b(x.lhs()), b(x.rhs())),
+                Some(op) => ExprKind::Binary(op, b(x.lhs()), b(x.rhs())),
                 None => ExprKind::Error,
             },
             ast::Expr::Prefix(p) => match p.op() {
                 Some(ast::PrefixOp::Not) => ExprKind::Not(b(p.operand())),
                 Some(ast::PrefixOp::Neg) => match p.operand() {
                     // `-5` is the literal -5 (integers keep `int` rather than negated `uint`).
-                    Some(ast::Expr::Literal(l)) if matches!(l.value(), Ok(ast::LiteralValue::Number(ast::Number::UInt(_)))) => {
+                    Some(ast::Expr::Literal(l))
+                        if matches!(
+                            l.value(),
+                            Ok(ast::LiteralValue::Number(ast::Number::UInt(_)))
+                        ) =>
+                    {
                         match l.value() {
-                            Ok(ast::LiteralValue::Number(ast::Number::UInt(u))) => ExprKind::Int(-(u as i128)),
+                            Ok(ast::LiteralValue::Number(ast::Number::UInt(u))) => {
+                                ExprKind::Int(-(u as i128))
+                            }
                             _ => ExprKind::Error,
                         }
                     }
@@ -471,7 +682,9 @@ impl Cx {
                 },
                 None => ExprKind::Error,
             },
-            ast::Expr::Ternary(t) => ExprKind::Ternary(b(t.condition()), b(t.then_expr()), b(t.else_expr())),
+            ast::Expr::Ternary(t) => {
+                ExprKind::Ternary(b(t.condition()), b(t.then_expr()), b(t.else_expr()))
+            }
             ast::Expr::Field(f) => match f.field() {
                 Some(n) => ExprKind::Field(b(f.receiver()), self.name_ref(&n)),
                 None => ExprKind::Error,
@@ -481,7 +694,9 @@ impl Cx {
                 let callee = c.callee();
                 let args = self.args(c.args());
                 match (&callee, c.name()) {
-                    (Some(ast::Expr::Name(_)), Some(n)) if is_temporal(&n.text()) => ExprKind::Temporal(self.name_ref(&n), args),
+                    (Some(ast::Expr::Name(_)), Some(n)) if is_temporal(&n.text()) => {
+                        ExprKind::Temporal(self.name_ref(&n), args)
+                    }
                     _ => ExprKind::Call(b(callee), args),
                 }
             }
@@ -501,25 +716,5 @@ fn number(n: ast::Number) -> ExprKind {
         ast::Number::UInt(u) => ExprKind::Int(u as i128),
         ast::Number::Int(i) => ExprKind::Int(i as i128),
         ast::Number::Float(f) => ExprKind::Float(f),
-    }
-}
-
-fn bin_op(op: ast::BinaryOp) -> BinOp {
-    match op {
-        ast::BinaryOp::Implies => BinOp::Implies,
-        ast::BinaryOp::Or => BinOp::Or,
-        ast::BinaryOp::And => BinOp::And,
-        ast::BinaryOp::Eq => BinOp::Eq,
-        ast::BinaryOp::Ne => BinOp::Ne,
-        ast::BinaryOp::Lt => BinOp::Lt,
-        ast::BinaryOp::Le => BinOp::Le,
-        ast::BinaryOp::Gt => BinOp::Gt,
-        ast::BinaryOp::Ge => BinOp::Ge,
-        ast::BinaryOp::In => BinOp::In,
-        ast::BinaryOp::Add => BinOp::Add,
-        ast::BinaryOp::Sub => BinOp::Sub,
-        ast::BinaryOp::Mul => BinOp::Mul,
-        ast::BinaryOp::Div => BinOp::Div,
-        ast::BinaryOp::Rem => BinOp::Rem,
     }
 }

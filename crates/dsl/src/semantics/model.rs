@@ -76,6 +76,9 @@ pub struct CompoundDef {
     pub parent: Option<CompoundId>,
     /// The behavior a modifier applies to (`of …`).
     pub of: Option<CompoundId>,
+    /// The condition of a conditional `inherits Parent(field == value)`: every instance
+    /// satisfies it (ASAM OpenSCENARIO DSL 2.1 §7.3.7.1 conditional inheritance).
+    pub condition: Option<Expr>,
     /// Own fields (inherited ones live on the parents).
     pub fields: Vec<FieldDef>,
     /// Own methods.
@@ -159,7 +162,10 @@ impl Model {
     pub fn all_fields(&self, id: CompoundId) -> Vec<&FieldDef> {
         let mut chain = self.ancestry(id);
         chain.reverse();
-        chain.into_iter().flat_map(|c| self.compound(c).fields.iter()).collect()
+        chain
+            .into_iter()
+            .flat_map(|c| self.compound(c).fields.iter())
+            .collect()
     }
 
     /// The method `name` of `id` or of an ancestor.
@@ -230,8 +236,12 @@ impl Model {
     ) {
         if let Some((_, first)) = self.types.get(name) {
             diags.push(
-                Diagnostic::new(DiagnosticKind::Duplicate, span, format!("type `{name}` is declared twice"))
-                    .with(*first, "first declared here"),
+                Diagnostic::new(
+                    DiagnosticKind::Duplicate,
+                    span,
+                    format!("type `{name}` is declared twice"),
+                )
+                .with(*first, "first declared here"),
             );
             return;
         }

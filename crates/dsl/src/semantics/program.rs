@@ -83,17 +83,24 @@ impl Diagnostics {
                 let file = self.files.get(d.span.file.0 as usize);
                 let mut m = miette::MietteDiagnostic::new(d.message.clone())
                     .with_code(d.kind.code())
-                    .with_label(miette::LabeledSpan::at(d.span.start as usize..d.span.end as usize, "here"));
+                    .with_label(miette::LabeledSpan::at(
+                        d.span.start as usize..d.span.end as usize,
+                        "here",
+                    ));
                 for (s, label) in &d.related {
                     if s.file == d.span.file {
-                        m = m.and_label(miette::LabeledSpan::at(s.start as usize..s.end as usize, label.clone()));
+                        m = m.and_label(miette::LabeledSpan::at(
+                            s.start as usize..s.end as usize,
+                            label.clone(),
+                        ));
                     } else {
                         m = m.with_help(format!("{label} at {}", self.position(*s)));
                     }
                 }
                 let report = miette::Report::new(m);
                 match file {
-                    Some(f) => report.with_source_code(miette::NamedSource::new(f.name.clone(), f.text.clone())),
+                    Some(f) => report
+                        .with_source_code(miette::NamedSource::new(f.name.clone(), f.text.clone())),
                     None => report,
                 }
             })
@@ -123,7 +130,10 @@ impl CheckedProgram {
     /// Concrete values of every field of every global, top-level field and scenario, sampled
     /// with `seed` where the constraints leave a choice (same seed, same values).
     pub fn resolve(&self, seed: u64) -> Result<Resolution, Diagnostics> {
-        resolve(&self.model, &self.templates, seed).map_err(|items| Diagnostics { items, files: self.files.clone() })
+        resolve(&self.model, &self.templates, seed).map_err(|items| Diagnostics {
+            items,
+            files: self.files.clone(),
+        })
     }
 
     /// The program's files (library first).
@@ -136,10 +146,23 @@ impl CheckedProgram {
 pub fn check(path: &Path) -> Result<CheckedProgram, Diagnostics> {
     let text = std::fs::read_to_string(path).map_err(|e| {
         let files = Arc::new(vec![Source::new(path.display().to_string(), String::new())]);
-        let span = Span { file: FileId(0), start: 0, end: 0 };
-        Diagnostics { items: vec![Diagnostic::new(K::Import, span, format!("cannot read {}: {e}", path.display()))], files }
+        let span = Span {
+            file: FileId(0),
+            start: 0,
+            end: 0,
+        };
+        Diagnostics {
+            items: vec![Diagnostic::new(
+                K::Import,
+                span,
+                format!("cannot read {}: {e}", path.display()),
+            )],
+            files,
+        }
     })?;
-    check_source_with(&path.display().to_string(), &text, &|p: &Path| std::fs::read_to_string(p).ok())
+    check_source_with(&path.display().to_string(), &text, &|p: &Path| {
+        std::fs::read_to_string(p).ok()
+    })
 }
 
 /// Checks a source text; relative imports are read from disk next to `name`.
@@ -148,8 +171,15 @@ pub fn check_source(name: &str, text: &str) -> Result<CheckedProgram, Diagnostic
 }
 
 /// Checks a source text, reading relative imports through `load`.
-pub fn check_source_with(name: &str, text: &str, load: &dyn Fn(&Path) -> Option<String>) -> Result<CheckedProgram, Diagnostics> {
-    let mut files: Vec<Source> = stdlib::STANDARD.iter().map(|f| Source::new(f.name.to_string(), f.text.to_string())).collect();
+pub fn check_source_with(
+    name: &str,
+    text: &str,
+    load: &dyn Fn(&Path) -> Option<String>,
+) -> Result<CheckedProgram, Diagnostics> {
+    let mut files: Vec<Source> = stdlib::STANDARD
+        .iter()
+        .map(|f| Source::new(f.name.to_string(), f.text.to_string()))
+        .collect();
     let library = files.len() as u32;
     let mut paths: Vec<PathBuf> = Vec::new();
     files.push(Source::new(name.to_string(), text.to_string()));
@@ -161,19 +191,36 @@ pub fn check_source_with(name: &str, text: &str, load: &dyn Fn(&Path) -> Option<
         let parsed = parse(&files[i].text);
         for e in parsed.errors() {
             let r = e.range();
-            diags.push(Diagnostic::new(K::Syntax, Span { file: FileId(i as u32), start: r.start as u32, end: r.end as u32 }, e.message()));
+            diags.push(Diagnostic::new(
+                K::Syntax,
+                Span {
+                    file: FileId(i as u32),
+                    start: r.start as u32,
+                    end: r.end as u32,
+                },
+                e.message(),
+            ));
         }
         let file = lower_file(&parsed.tree(), FileId(i as u32));
         for item in &file.items {
-            let Item::Import { target, span } = item else { continue };
+            let Item::Import { target, span } = item else {
+                continue;
+            };
             match target {
                 ImportTarget::Library(q) => {
                     if stdlib::module(&q.text()).is_none() {
-                        diags.push(Diagnostic::new(K::Import, *span, format!("unknown library `{}` (known: osc.standard)", q.text())));
+                        diags.push(Diagnostic::new(
+                            K::Import,
+                            *span,
+                            format!("unknown library `{}` (known: osc.standard)", q.text()),
+                        ));
                     }
                 }
                 ImportTarget::File(rel) if (i as u32) >= library => {
-                    let base = paths[i - library as usize].parent().map(Path::to_path_buf).unwrap_or_default();
+                    let base = paths[i - library as usize]
+                        .parent()
+                        .map(Path::to_path_buf)
+                        .unwrap_or_default();
                     let full = base.join(rel);
                     if paths.contains(&full) {
                         continue;
@@ -183,7 +230,11 @@ pub fn check_source_with(name: &str, text: &str, load: &dyn Fn(&Path) -> Option<
                             files.push(Source::new(full.display().to_string(), t));
                             paths.push(full);
                         }
-                        None => diags.push(Diagnostic::new(K::Import, *span, format!("cannot read imported file {}", full.display()))),
+                        None => diags.push(Diagnostic::new(
+                            K::Import,
+                            *span,
+                            format!("cannot read imported file {}", full.display()),
+                        )),
                     }
                 }
                 ImportTarget::File(_) => {}
@@ -194,16 +245,28 @@ pub fn check_source_with(name: &str, text: &str, load: &dyn Fn(&Path) -> Option<
     }
     let files = Arc::new(files);
     if !diags.is_empty() {
-        return Err(Diagnostics { items: diags, files });
+        return Err(Diagnostics {
+            items: diags,
+            files,
+        });
     }
     let mut model = collect(&hir, &mut diags);
     model.library_files = library;
     let checked = check_model(&model);
     diags.extend(checked.diags);
+    // Report in source order, whichever pass found them.
+    diags.sort_by_key(|d| (d.span.file, d.span.start));
     if !diags.is_empty() {
-        return Err(Diagnostics { items: diags, files });
+        return Err(Diagnostics {
+            items: diags,
+            files,
+        });
     }
-    let program = CheckedProgram { model, templates: checked.templates, files };
+    let program = CheckedProgram {
+        model,
+        templates: checked.templates,
+        files,
+    };
     // A program whose constraints cannot be lowered or have no solution is not valid.
     program.resolve(0)?;
     Ok(program)

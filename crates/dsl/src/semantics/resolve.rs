@@ -13,8 +13,13 @@ use super::hir::Span;
 use super::instance::{Node, NodeId, Tree};
 use super::lower::lower;
 use super::model::Model;
-use super::solver::{ConstraintKind, Domain, Linear, Relation, SolveError, Solver, Strength, Value as SolverValue};
+use super::solver::{
+    ConstraintKind, Domain, Linear, Relation, SolveError, Solver, Strength, Value as SolverValue,
+};
 use super::types::Ty;
+
+/// Most elements of one list (each element is a whole instance with its own variables).
+const MAX_LIST_LEN: usize = 1000;
 
 /// Most sizing stages (each expands one level of nested lists).
 const MAX_STAGES: usize = 16;
@@ -77,7 +82,8 @@ impl Resolution {
             .roots
             .iter()
             .filter(|(n, _)| {
-                path.strip_prefix(n.as_str()).is_some_and(|r| r.is_empty() || r.starts_with('.') || r.starts_with('['))
+                path.strip_prefix(n.as_str())
+                    .is_some_and(|r| r.is_empty() || r.starts_with('.') || r.starts_with('['))
             })
             .max_by_key(|(n, _)| n.len())
             .map(|(n, v)| (v, &path[n.len()..]))?;
@@ -103,7 +109,11 @@ impl Resolution {
 }
 
 fn split_path(path: &str) -> Vec<String> {
-    path.replace('[', ".").replace(']', "").split('.').map(str::to_string).collect()
+    path.replace('[', ".")
+        .replace(']', "")
+        .split('.')
+        .map(str::to_string)
+        .collect()
 }
 
 fn flatten(path: &str, v: &Value, out: &mut Vec<String>) {
@@ -139,7 +149,11 @@ pub fn show(v: &Value) -> String {
 }
 
 /// Resolves every instance of `model` under `templates` with `seed`.
-pub fn resolve(model: &Model, templates: &[Template], seed: u64) -> Result<Resolution, Vec<Diagnostic>> {
+pub fn resolve(
+    model: &Model,
+    templates: &[Template],
+    seed: u64,
+) -> Result<Resolution, Vec<Diagnostic>> {
     let mut sizes: HashMap<String, usize> = HashMap::new();
     for stage in 0..MAX_STAGES {
         let mut tree = Tree::build(model, &sizes);
@@ -151,16 +165,30 @@ pub fn resolve(model: &Model, templates: &[Template], seed: u64) -> Result<Resol
             if let Some(id) = tree.paths.iter().position(|p| p == path) {
                 if let Node::List(_, size, _) = &tree.nodes[id] {
                     let expr = Linear::var(*size).add_scaled(&Linear::constant(*n as f64), -1.0);
-                    tree.problem.add(ConstraintKind::Linear { expr, rel: Relation::Eq }, Strength::Hard, DECIDED);
+                    tree.problem.add(
+                        ConstraintKind::Linear {
+                            expr,
+                            rel: Relation::Eq,
+                        },
+                        Strength::Hard,
+                        DECIDED,
+                    );
                 }
             }
         }
         let stage_seed = seed ^ (stage as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
         let unsized_lists = tree.unsized_lists();
-        let mut solver = Solver::new(&tree.problem, stage_seed).map_err(|e| unsat(&tree, &lowered.origins, e))?;
+        let mut solver = Solver::new(&tree.problem, stage_seed)
+            .map_err(|e| unsat(&tree, &lowered.origins, e))?;
         if unsized_lists.is_empty() {
-            let sol = solver.finish().map_err(|e| unsat(&tree, &lowered.origins, e))?;
-            let roots = tree.roots.iter().map(|(n, id)| (n.clone(), value(model, &tree, *id, &sol.values))).collect();
+            let sol = solver
+                .finish()
+                .map_err(|e| unsat(&tree, &lowered.origins, e))?;
+            let roots = tree
+                .roots
+                .iter()
+                .map(|(n, id)| (n.clone(), value(model, &tree, *id, &sol.values)))
+                .collect();
             return Ok(Resolution { roots });
         }
         let size_vars: Vec<_> = unsized_lists
@@ -170,15 +198,43 @@ pub fn resolve(model: &Model, templates: &[Template], seed: u64) -> Result<Resol
                 _ => None,
             })
             .collect();
-        solver.sample(&size_vars).map_err(|e| unsat(&tree, &lowered.origins, e))?;
+        solver
+            .sample(&size_vars)
+            .map_err(|e| unsat(&tree, &lowered.origins, e))?;
         for (list, var) in unsized_lists.iter().zip(&size_vars) {
             if let Domain::Number(i) = solver.domain(*var) {
-                sizes.insert(tree.paths[*list].clone(), i.lo.value.max(0.0) as usize);
+                let n = i.lo.value.max(0.0);
+                if n > MAX_LIST_LEN as f64 {
+                    let mut spans: Vec<Span> = Vec::new();
+                    for c in i.lo.why.iter().chain(&i.hi.why) {
+                        let origin = tree.problem.constraints[c.0 as usize].origin as usize;
+                        if let Some(s) = lowered.origins.get(origin).filter(|s| !spans.contains(s))
+                        {
+                            spans.push(*s);
+                        }
+                    }
+                    let span = spans.first().copied().unwrap_or(Span {
+                        file: super::hir::FileId(0),
+                        start: 0,
+                        end: 0,
+                    });
+                    let msg = format!("list `{}` would have {n} elements; oscsim resolves lists of at most {MAX_LIST_LEN}", tree.paths[*list]);
+                    return Err(vec![Diagnostic::new(K::Unsupported, span, msg)]);
+                }
+                sizes.insert(tree.paths[*list].clone(), n as usize);
             }
         }
     }
-    let span = templates.first().map(|t| t.span).unwrap_or(Span { file: super::hir::FileId(0), start: 0, end: 0 });
-    Err(vec![Diagnostic::new(K::Unsupported, span, format!("lists nested deeper than {MAX_STAGES} levels"))])
+    let span = templates.first().map(|t| t.span).unwrap_or(Span {
+        file: super::hir::FileId(0),
+        start: 0,
+        end: 0,
+    });
+    Err(vec![Diagnostic::new(
+        K::Unsupported,
+        span,
+        format!("lists nested deeper than {MAX_STAGES} levels"),
+    )])
 }
 
 fn unsat(tree: &Tree, origins: &[Span], e: SolveError) -> Vec<Diagnostic> {
@@ -197,13 +253,27 @@ fn unsat(tree: &Tree, origins: &[Span], e: SolveError) -> Vec<Diagnostic> {
     }
     spans.sort();
     let Some((first, rest)) = spans.split_first() else {
-        let span = origins.first().copied().unwrap_or(Span { file: super::hir::FileId(0), start: 0, end: 0 });
-        return vec![Diagnostic::new(K::Unsatisfiable, span, "the constraints have no solution")];
+        let span = origins.first().copied().unwrap_or(Span {
+            file: super::hir::FileId(0),
+            start: 0,
+            end: 0,
+        });
+        return vec![Diagnostic::new(
+            K::Unsatisfiable,
+            span,
+            "the constraints have no solution",
+        )];
     };
     let msg = match var {
-        Some(v) => format!("no value of `{}` satisfies the constraints", tree.problem.vars[v.0 as usize].name),
+        Some(v) => format!(
+            "no value of `{}` satisfies the constraints",
+            tree.problem.vars[v.0 as usize].name
+        ),
         None if rest.is_empty() => "this constraint cannot hold".to_string(),
-        None => format!("the constraints have no solution: this constraint conflicts with {} other(s)", rest.len()),
+        None => format!(
+            "the constraints have no solution: this constraint conflicts with {} other(s)",
+            rest.len()
+        ),
     };
     let mut d = Diagnostic::new(K::Unsatisfiable, *first, msg);
     for s in rest {
@@ -217,11 +287,18 @@ fn value(model: &Model, tree: &Tree, id: NodeId, values: &[SolverValue]) -> Valu
         Node::Scalar(v, ty) => scalar(model, ty, &values[v.0 as usize]),
         Node::Compound(c, fields) => Value::Compound {
             ty: model.compound(*c).name.clone(),
-            fields: fields.iter().map(|(n, f)| (n.clone(), value(model, tree, *f, values))).collect(),
+            fields: fields
+                .iter()
+                .map(|(n, f)| (n.clone(), value(model, tree, *f, values)))
+                .collect(),
         },
-        Node::List(_, _, items) => {
-            Value::List(items.iter().flatten().map(|i| value(model, tree, *i, values)).collect())
-        }
+        Node::List(_, _, items) => Value::List(
+            items
+                .iter()
+                .flatten()
+                .map(|i| value(model, tree, *i, values))
+                .collect(),
+        ),
         Node::Reference(ty) | Node::State(ty) => Value::RunTime(model.type_name(ty)),
     }
 }
@@ -235,12 +312,19 @@ fn scalar(model: &Model, ty: &Ty, v: &SolverValue) -> Value {
         (Ty::Physical(d), SolverValue::Number(x)) => {
             let x = &(*x + 0.0);
             let ty = model.type_name(&Ty::Physical(*d));
-            let unit = model.units.display_unit(&ty).map(|u| u.name.clone()).unwrap_or_else(|| d.to_string());
+            let unit = model
+                .units
+                .display_unit(&ty)
+                .map(|u| u.name.clone())
+                .unwrap_or_else(|| d.to_string());
             Value::Quantity { si: *x, ty, unit }
         }
         (Ty::Enum(e), SolverValue::Member(m)) => {
             let def = model.enum_def(*e);
-            Value::Enum { ty: def.name.clone(), member: def.members.get(*m as usize).cloned().unwrap_or_default() }
+            Value::Enum {
+                ty: def.name.clone(),
+                member: def.members.get(*m as usize).cloned().unwrap_or_default(),
+            }
         }
         (_, SolverValue::Text(s)) => Value::Str(s.clone()),
         (ty, _) => Value::RunTime(model.type_name(ty)),

@@ -159,7 +159,10 @@ impl UnitTable {
     pub fn display_unit(&self, ty: &str) -> Option<&Unit> {
         let of_type = self.units.iter().filter(|u| u.physical_type == ty);
         let first = of_type.clone().next();
-        of_type.filter(|u| u.factor == 1.0 && u.offset == 0.0).min_by_key(|u| u.name.len()).or(first)
+        of_type
+            .filter(|u| u.factor == 1.0 && u.offset == 0.0)
+            .min_by_key(|u| u.name.len())
+            .or(first)
     }
 
     /// Every physical type, in declaration order.

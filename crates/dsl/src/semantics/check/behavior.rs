@@ -18,7 +18,11 @@ impl Cx<'_> {
             .into_iter()
             .flat_map(|c| self.model.compound(c).fields.iter())
             .filter(|f| !f.is_var)
-            .map(|f| ParamDef { name: f.name.clone(), ty: f.ty.clone(), optional: true })
+            .map(|f| ParamDef {
+                name: f.name.clone(),
+                ty: f.ty.clone(),
+                optional: true,
+            })
             .collect()
     }
 
@@ -32,16 +36,30 @@ impl Cx<'_> {
                     self.behavior(c, scope);
                 }
             }
-            Behavior::Invocation { actor, name, args, with, span } => {
+            Behavior::Invocation {
+                actor,
+                name,
+                args,
+                with,
+                span,
+            } => {
                 let target = match actor {
                     Some(e) => {
                         let t = self.expr(e, scope, None);
                         match t.ty {
-                            Ty::Compound(c) if self.model.compound(c).kind == CompoundKind::Actor => Some(c),
+                            Ty::Compound(c)
+                                if self.model.compound(c).kind == CompoundKind::Actor =>
+                            {
+                                Some(c)
+                            }
                             Ty::Error => return,
                             other => {
                                 let n = self.model.type_name(&other);
-                                self.err(K::Type, e.span, format!("expected an actor before `.{}`, found {n}", name.text));
+                                self.err(
+                                    K::Type,
+                                    e.span,
+                                    format!("expected an actor before `.{}`, found {n}", name.text),
+                                );
                                 return;
                             }
                         }
@@ -53,15 +71,28 @@ impl Cx<'_> {
                     None => self.model.behaviors.get(&name.text).copied(),
                 };
                 let Some(bid) = found else {
-                    let on = target.map(|a| format!(" on actor `{}`", self.model.compound(a).name)).unwrap_or_default();
-                    self.err(K::UnknownName, name.span, format!("unknown action or scenario `{}`{on}", name.text));
+                    let on = target
+                        .map(|a| format!(" on actor `{}`", self.model.compound(a).name))
+                        .unwrap_or_default();
+                    self.err(
+                        K::UnknownName,
+                        name.span,
+                        format!("unknown action or scenario `{}`{on}", name.text),
+                    );
                     return;
                 };
                 let params = self.behavior_params(bid);
                 let label = format!("`{}`", self.model.compound(bid).name);
                 self.args(&params, args, &label, scope, *span);
                 let mut inner = scope.clone();
-                inner.locals.push(Local { name: "it".into(), value: TExpr { kind: TKind::Opaque("invocation"), ty: Ty::Compound(bid), span: *span } });
+                inner.locals.push(Local {
+                    name: "it".into(),
+                    value: TExpr {
+                        kind: TKind::Opaque("invocation"),
+                        ty: Ty::Compound(bid),
+                        span: *span,
+                    },
+                });
                 for w in with {
                     match w {
                         WithMember::Modifier(app) => self.applied_modifier(app, bid, &inner),
@@ -79,7 +110,11 @@ impl Cx<'_> {
             }
             Behavior::Emit(name, args, _) => {
                 if scope.this.is_some_and(|t| !self.has_event(t, &name.text)) {
-                    self.err(K::UnknownName, name.span, format!("unknown event `{}`", name.text));
+                    self.err(
+                        K::UnknownName,
+                        name.span,
+                        format!("unknown event `{}`", name.text),
+                    );
                 }
                 for a in args {
                     self.expr(&a.value, scope, None);
@@ -98,11 +133,20 @@ impl Cx<'_> {
         }
         let named = self.model.modifiers_named(&app.name.text);
         let chain = self.model.ancestry(bid);
-        let applicable = named.iter().copied().find(|m| self.model.compound(*m).of.is_some_and(|of| chain.contains(&of)));
+        let applicable = named.iter().copied().find(|m| {
+            self.model
+                .compound(*m)
+                .of
+                .is_some_and(|of| chain.contains(&of))
+        });
         match applicable {
             Some(m) => self.modifier_args(m, &app.args, scope, app.span),
             None if named.is_empty() => {
-                self.err(K::UnknownName, app.name.span, format!("unknown modifier `{}`", app.name.text));
+                self.err(
+                    K::UnknownName,
+                    app.name.span,
+                    format!("unknown modifier `{}`", app.name.text),
+                );
             }
             None => {
                 let of: Vec<String> = named
@@ -111,8 +155,16 @@ impl Cx<'_> {
                     .map(|o| format!("`{}`", self.model.compound(o).name))
                     .collect();
                 let b = self.model.compound(bid).name.clone();
-                let to = if of.is_empty() { "actors, not to actions".to_string() } else { of.join(", ") };
-                self.err(K::Modifier, app.name.span, format!("modifier `{}` applies to {to}, not to `{b}`", app.name.text));
+                let to = if of.is_empty() {
+                    "actors, not to actions".to_string()
+                } else {
+                    of.join(", ")
+                };
+                self.err(
+                    K::Modifier,
+                    app.name.span,
+                    format!("modifier `{}` applies to {to}, not to `{b}`", app.name.text),
+                );
             }
         }
     }
@@ -126,7 +178,11 @@ impl Cx<'_> {
         let named = self.model.modifiers_named(&app.name.text);
         let Ty::Compound(actor) = target_ty else {
             if target_ty != Ty::Error || app.target.is_none() {
-                self.err(K::Modifier, app.name.span, format!("modifier `{}` needs an actor to apply to", app.name.text));
+                self.err(
+                    K::Modifier,
+                    app.name.span,
+                    format!("modifier `{}` needs an actor to apply to", app.name.text),
+                );
             }
             return;
         };
@@ -136,10 +192,18 @@ impl Cx<'_> {
         });
         match fits {
             Some(m) => self.modifier_args(m, &app.args, scope, app.span),
-            None if named.is_empty() => self.err(K::UnknownName, app.name.span, format!("unknown modifier `{}`", app.name.text)),
+            None if named.is_empty() => self.err(
+                K::UnknownName,
+                app.name.span,
+                format!("unknown modifier `{}`", app.name.text),
+            ),
             None => {
                 let a = self.model.compound(actor).name.clone();
-                self.err(K::Modifier, app.name.span, format!("modifier `{}` does not apply to actor `{a}`", app.name.text));
+                self.err(
+                    K::Modifier,
+                    app.name.span,
+                    format!("modifier `{}` does not apply to actor `{a}`", app.name.text),
+                );
             }
         }
     }

@@ -12,20 +12,43 @@ use crate::semantics::hir::BinOp;
 
 /// Checks every member of every compound and of the top level.
 pub fn check_model(model: &Model) -> Checked {
-    let mut cx = Cx { model, out: Checked::default() };
+    let mut cx = Cx {
+        model,
+        out: Checked::default(),
+    };
     let top = Scope::default();
     for (i, g) in model.globals.iter().enumerate() {
-        let here = TExpr { kind: TKind::Path(Place::Global(i), Vec::new()), ty: g.ty.clone(), span: g.span };
+        let here = TExpr {
+            kind: TKind::Path(Place::Global(i), Vec::new()),
+            ty: g.ty.clone(),
+            span: g.span,
+        };
         cx.field_decl(g, here, &top, Owner::Top);
     }
     cx.members(&model.top, &top, Owner::Top, &[]);
     for i in 0..model.compounds.len() {
         let id = CompoundId(i as u32);
         let c = model.compound(id);
-        let scope = Scope { this: Some(id), actor: c.actor, locals: Vec::new() };
+        let scope = Scope {
+            this: Some(id),
+            actor: c.actor,
+            locals: Vec::new(),
+        };
         for f in &c.fields {
-            let here = TExpr { kind: TKind::Path(Place::This, vec![Seg::Field(f.name.clone())]), ty: f.ty.clone(), span: f.span };
+            let here = TExpr {
+                kind: TKind::Path(Place::This, vec![Seg::Field(f.name.clone())]),
+                ty: f.ty.clone(),
+                span: f.span,
+            };
             cx.field_decl(f, here, &scope, Owner::Compound(id));
+        }
+        if let Some(cond) = &c.condition {
+            let k = Keep {
+                default: false,
+                expr: cond.clone(),
+                span: cond.span,
+            };
+            cx.keep(&k, &scope, Owner::Compound(id), &[]);
         }
         cx.members(&c.members, &scope, Owner::Compound(id), &[]);
     }
@@ -38,12 +61,25 @@ impl Cx<'_> {
         if let Some(d) = &f.default {
             let v = self.expect(d, &f.ty, scope, &format!("field `{}`", f.name));
             if !f.is_var {
-                let eq = TExpr { kind: TKind::Binary(BinOp::Eq, Box::new(here.clone()), Box::new(v)), ty: Ty::Bool, span: d.span };
-                self.out.templates.push(Template { owner, strength: Strength::Default, expr: eq, loops: Vec::new(), span: d.span });
+                let eq = TExpr {
+                    kind: TKind::Binary(BinOp::Eq, Box::new(here.clone()), Box::new(v)),
+                    ty: Ty::Bool,
+                    span: d.span,
+                };
+                self.out.templates.push(Template {
+                    owner,
+                    strength: Strength::Default,
+                    expr: eq,
+                    loops: Vec::new(),
+                    span: d.span,
+                });
             }
         }
         let mut inner = scope.clone();
-        inner.locals.push(Local { name: "it".into(), value: here });
+        inner.locals.push(Local {
+            name: "it".into(),
+            value: here,
+        });
         for k in &f.keeps {
             self.keep(k, &inner, owner, &[]);
         }
@@ -51,8 +87,18 @@ impl Cx<'_> {
 
     pub(crate) fn keep(&mut self, k: &Keep, scope: &Scope, owner: Owner, loops: &[TExpr]) {
         let t = self.expect(&k.expr, &Ty::Bool, scope, "a constraint");
-        let strength = if k.default { Strength::Default } else { Strength::Hard };
-        self.out.templates.push(Template { owner, strength, expr: t, loops: loops.to_vec(), span: k.span });
+        let strength = if k.default {
+            Strength::Default
+        } else {
+            Strength::Hard
+        };
+        self.out.templates.push(Template {
+            owner,
+            strength,
+            expr: t,
+            loops: loops.to_vec(),
+            span: k.span,
+        });
     }
 
     fn members(&mut self, members: &[Member], scope: &Scope, owner: Owner, loops: &[TExpr]) {
@@ -63,18 +109,37 @@ impl Cx<'_> {
                 Member::RemoveDefault(e, _) => {
                     self.expr(e, scope, None);
                 }
-                Member::For { var, list, body, span } => self.for_loop(&var.text, list, body, *span, scope, owner, loops),
+                Member::For {
+                    var,
+                    list,
+                    body,
+                    span,
+                } => self.for_loop(&var.text, list, body, *span, scope, owner, loops),
                 Member::Method(md) => {
                     let mut inner = scope.clone();
-                    let def = scope.this.and_then(|t| self.model.method(t, &md.name.text).cloned());
+                    let def = scope
+                        .this
+                        .and_then(|t| self.model.method(t, &md.name.text).cloned());
                     for p in def.iter().flat_map(|d| d.params.iter()) {
-                        let value = TExpr { kind: TKind::Opaque("method parameter"), ty: p.ty.clone(), span: md.span };
-                        inner.locals.push(Local { name: p.name.clone(), value });
+                        let value = TExpr {
+                            kind: TKind::Opaque("method parameter"),
+                            ty: p.ty.clone(),
+                            span: md.span,
+                        };
+                        inner.locals.push(Local {
+                            name: p.name.clone(),
+                            value,
+                        });
                     }
                     if let MethodBody::Expression(e) = &md.body {
                         match def.and_then(|d| d.ret) {
                             Some(ret) => {
-                                self.expect(e, &ret, &inner, &format!("the result of `{}`", md.name.text));
+                                self.expect(
+                                    e,
+                                    &ret,
+                                    &inner,
+                                    &format!("the result of `{}`", md.name.text),
+                                );
                             }
                             None => {
                                 self.expr(e, &inner, None);
@@ -84,7 +149,12 @@ impl Cx<'_> {
                 }
                 Member::Event(ev) => {
                     if let Some(spec) = &ev.spec {
-                        self.expect(spec, &Ty::Event, scope, &format!("event `{}`", ev.name.text));
+                        self.expect(
+                            spec,
+                            &Ty::Event,
+                            scope,
+                            &format!("event `{}`", ev.name.text),
+                        );
                     }
                 }
                 Member::Modifier(app) => self.member_modifier(app, scope),
@@ -94,7 +164,7 @@ impl Cx<'_> {
                 }
                 Member::Coverage(args, _) => {
                     for a in args {
-                        if a.name.as_ref().is_none_or(|n| n.text == "expression") {
+                        if a.name.as_ref().map_or(true, |n| n.text == "expression") {
                             self.expr(&a.value, scope, None);
                         }
                     }
@@ -104,28 +174,54 @@ impl Cx<'_> {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn for_loop(&mut self, var: &str, list: &Expr, body: &[Member], span: Span, scope: &Scope, owner: Owner, loops: &[TExpr]) {
+    fn for_loop(
+        &mut self,
+        var: &str,
+        list: &Expr,
+        body: &[Member],
+        span: Span,
+        scope: &Scope,
+        owner: Owner,
+        loops: &[TExpr],
+    ) {
         let l = self.expr(list, scope, None);
         let elem = match &l.ty {
             Ty::List(e) => (**e).clone(),
             Ty::Error => Ty::Error,
             other => {
                 let t = self.model.type_name(other);
-                self.err(K::Type, list.span, format!("expected a list after `in`, found {t}"));
+                self.err(
+                    K::Type,
+                    list.span,
+                    format!("expected a list after `in`, found {t}"),
+                );
                 Ty::Error
             }
         };
         let k = loops.len();
         let mut inner = scope.clone();
-        inner.locals.push(Local { name: var.into(), value: TExpr { kind: TKind::Path(Place::Local(k), Vec::new()), ty: elem, span } });
+        inner.locals.push(Local {
+            name: var.into(),
+            value: TExpr {
+                kind: TKind::Path(Place::Local(k), Vec::new()),
+                ty: elem,
+                span,
+            },
+        });
         let mut nested = loops.to_vec();
         nested.push(l);
         for m in body {
             match m {
-                Member::Keep(_) | Member::For { .. } => self.members(std::slice::from_ref(m), &inner, owner, &nested),
+                Member::Keep(_) | Member::For { .. } => {
+                    self.members(std::slice::from_ref(m), &inner, owner, &nested)
+                }
                 other => {
                     let s = member_span(other).unwrap_or(span);
-                    self.err(K::Unsupported, s, "only `keep` constraints may appear in a `for` block");
+                    self.err(
+                        K::Unsupported,
+                        s,
+                        "only `keep` constraints may appear in a `for` block",
+                    );
                 }
             }
         }
@@ -138,7 +234,10 @@ fn member_span(m: &Member) -> Option<Span> {
         Member::Method(md) => Some(md.span),
         Member::Event(e) => Some(e.span),
         Member::Modifier(a) => Some(a.span),
-        Member::Do(_, s) | Member::On(_, s) | Member::Coverage(_, s) | Member::RemoveDefault(_, s) => Some(*s),
+        Member::Do(_, s)
+        | Member::On(_, s)
+        | Member::Coverage(_, s)
+        | Member::RemoveDefault(_, s) => Some(*s),
         Member::Keep(k) => Some(k.span),
         Member::For { span, .. } => Some(*span),
     }

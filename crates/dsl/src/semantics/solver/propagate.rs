@@ -6,36 +6,108 @@
 //! constraint and the bounds it was computed from, so an emptied domain names its causes.
 
 use super::domain::{union, Domain, Interval, Why, BOUND_TOLERANCE};
-use super::ir::{Constraint, ConstraintId, ConstraintKind, Linear, Relation};
+use super::ir::{Constraint, ConstraintId, ConstraintKind, Linear, Relation, VarId};
 
-/// Upper limit on propagation passes; past it propagation stops early, which is sound (domains
-/// are only wider than they could be) and sampling still checks every constraint.
+/// Propagation budget: this many applications per constraint; past it propagation stops early,
+/// which is sound (domains are only wider than they could be) and sampling still checks every
+/// constraint.
 const MAX_PASSES: usize = 1000;
 
-/// The current domain of every variable.
+/// The current domain of every variable, with a trail of replaced domains so that a failed
+/// choice is undone in the time of its own changes (not a copy of every domain).
 #[derive(Debug, Clone)]
 pub struct Store {
     /// Indexed by `VarId`.
     pub doms: Vec<Domain>,
+    /// `(variable, domain before)` for each domain about to change, oldest first.
+    trail: Vec<(u32, Domain)>,
 }
 
 impl Store {
-    /// Propagates `active` (pairs of id and constraint) to a fixpoint; `Err` names the
-    /// constraints of a conflict.
-    pub fn propagate(&mut self, active: &[(ConstraintId, &Constraint)]) -> Result<(), Why> {
-        for _ in 0..MAX_PASSES {
-            let mut changed = false;
-            for (id, c) in active {
-                changed |= self.apply(*id, &c.kind)?;
+    /// A store with these domains.
+    pub fn new(doms: Vec<Domain>) -> Store {
+        Store {
+            doms,
+            trail: Vec::new(),
+        }
+    }
+
+    /// A point to [`undo`](Self::undo) to.
+    pub fn checkpoint(&self) -> usize {
+        self.trail.len()
+    }
+
+    /// Restores every domain changed since `mark`.
+    pub fn undo(&mut self, mark: usize) {
+        while self.trail.len() > mark {
+            if let Some((v, d)) = self.trail.pop() {
+                self.doms[v as usize] = d;
             }
-            if !changed {
+        }
+    }
+
+    /// Sets a domain (recorded on the trail).
+    pub fn set(&mut self, v: VarId, d: Domain) {
+        *self.dom_mut(v) = d;
+    }
+
+    fn dom_mut(&mut self, v: VarId) -> &mut Domain {
+        let i = v.0 as usize;
+        self.trail.push((v.0, self.doms[i].clone()));
+        &mut self.doms[i]
+    }
+
+    /// Propagates to a fixpoint with a work list: starts from `seeds`, and each time a
+    /// constraint narrows a domain, queues the active constraints watching its variables.
+    /// `Err` names the constraints of a conflict.
+    pub fn propagate(
+        &mut self,
+        constraints: &[Constraint],
+        active: &[bool],
+        watch: &[Vec<u32>],
+        seeds: impl IntoIterator<Item = u32>,
+    ) -> Result<(), Why> {
+        let mut queued = vec![false; constraints.len()];
+        let mut queue = std::collections::VecDeque::new();
+        for c in seeds {
+            if active[c as usize] && !queued[c as usize] {
+                queued[c as usize] = true;
+                queue.push_back(c);
+            }
+        }
+        let mut budget = MAX_PASSES * (constraints.len() + 1);
+        while let Some(c) = queue.pop_front() {
+            queued[c as usize] = false;
+            if budget == 0 {
+                return Ok(());
+            }
+            budget -= 1;
+            let kind = &constraints[c as usize].kind;
+            if self.apply(ConstraintId(c), kind)? {
+                for v in kind.vars() {
+                    for &w in &watch[v.0 as usize] {
+                        if active[w as usize] && !queued[w as usize] {
+                            queued[w as usize] = true;
+                            queue.push_back(w);
+                        }
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Propagates one constraint alone to a fixpoint.
+    pub fn propagate_one(&mut self, id: ConstraintId, c: &Constraint) -> Result<(), Why> {
+        for _ in 0..MAX_PASSES {
+            if !self.apply(id, &c.kind)? {
                 return Ok(());
             }
         }
         Ok(())
     }
 
-    fn interval(&self, v: super::ir::VarId) -> Option<&Interval> {
+    fn interval(&self, v: VarId) -> Option<&Interval> {
         match &self.doms[v.0 as usize] {
             Domain::Number(i) => Some(i),
             _ => None,
@@ -56,7 +128,7 @@ impl Store {
                 Relation::Ne => self.linear_ne(id, expr).map(|_| false),
             },
             ConstraintKind::Member { var, set, negated } => {
-                let Domain::Members { allowed, why } = &mut self.doms[var.0 as usize] else {
+                let Domain::Members { allowed, why } = self.dom_mut(*var) else {
                     return Ok(false);
                 };
                 let mut changed = false;
@@ -110,7 +182,7 @@ impl Store {
                     fixed,
                     excluded,
                     why,
-                } = &mut self.doms[var.0 as usize]
+                } = self.dom_mut(*var)
                 else {
                     return Ok(false);
                 };
@@ -138,15 +210,15 @@ impl Store {
         }
     }
 
-    fn members(&self, v: super::ir::VarId) -> Option<(Vec<bool>, Why)> {
+    fn members(&self, v: VarId) -> Option<(Vec<bool>, Why)> {
         match &self.doms[v.0 as usize] {
             Domain::Members { allowed, why } => Some((allowed.clone(), why.clone())),
             _ => None,
         }
     }
 
-    fn remove(&mut self, v: super::ir::VarId, m: usize, reason: Why) -> bool {
-        if let Domain::Members { allowed, why } = &mut self.doms[v.0 as usize] {
+    fn remove(&mut self, v: VarId, m: usize, reason: Why) -> bool {
+        if let Domain::Members { allowed, why } = self.dom_mut(v) {
             if allowed.get(m).copied().unwrap_or(false) {
                 allowed[m] = false;
                 *why = union(why, &reason);
@@ -156,7 +228,7 @@ impl Store {
         false
     }
 
-    fn check(&self, v: super::ir::VarId) -> Result<(), Why> {
+    fn check(&self, v: VarId) -> Result<(), Why> {
         match self.doms[v.0 as usize].conflict() {
             Some(why) => Err(why),
             None => Ok(()),
@@ -199,7 +271,7 @@ impl Store {
                 continue;
             }
             let bound = -rest / a;
-            let Domain::Number(iv) = &mut self.doms[v.0 as usize] else {
+            let Domain::Number(iv) = self.dom_mut(v) else {
                 continue;
             };
             let moved = if a > 0.0 {

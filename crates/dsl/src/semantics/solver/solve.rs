@@ -46,7 +46,10 @@ pub struct Solution {
 pub struct Solver<'p> {
     problem: &'p Problem,
     store: Store,
-    active: Vec<ConstraintId>,
+    /// Unconstrained domains, for working out hints.
+    fresh: Store,
+    active: Vec<bool>,
+    watch: Vec<Vec<u32>>,
     hints: Vec<Option<Domain>>,
     dropped: Vec<ConstraintId>,
     rng: ChaCha8Rng,
@@ -56,13 +59,19 @@ impl<'p> Solver<'p> {
     /// Applies the hard constraints (`Err` on a conflict), then each default constraint in order
     /// unless a hard constraint mentions one of its variables or it conflicts with those taken.
     pub fn new(problem: &'p Problem, seed: u64) -> Result<Solver<'p>, SolveError> {
-        let store = Store {
-            doms: problem.vars.iter().map(|v| Domain::of(&v.kind)).collect(),
-        };
+        let store = Store::new(problem.vars.iter().map(|v| Domain::of(&v.kind)).collect());
+        let mut watch = vec![Vec::new(); problem.vars.len()];
+        for (i, c) in problem.constraints.iter().enumerate() {
+            for v in c.kind.vars() {
+                watch[v.0 as usize].push(i as u32);
+            }
+        }
         let mut s = Solver {
             problem,
+            fresh: store.clone(),
             store,
-            active: Vec::new(),
+            active: vec![false; problem.constraints.len()],
+            watch,
             hints: vec![None; problem.vars.len()],
             dropped: Vec::new(),
             rng: ChaCha8Rng::seed_from_u64(seed),
@@ -70,13 +79,13 @@ impl<'p> Solver<'p> {
         let mut hard_vars = vec![false; problem.vars.len()];
         for (i, c) in problem.constraints.iter().enumerate() {
             if c.strength == Strength::Hard {
-                s.active.push(ConstraintId(i as u32));
+                s.active[i] = true;
                 for v in c.kind.vars() {
                     hard_vars[v.0 as usize] = true;
                 }
             }
         }
-        s.run()
+        s.run(0..problem.constraints.len() as u32)
             .map_err(|constraints| SolveError::Unsat { constraints })?;
         for (i, c) in problem.constraints.iter().enumerate() {
             if c.strength != Strength::Default {
@@ -89,11 +98,11 @@ impl<'p> Solver<'p> {
                 s.record_hint(&vars, c, id);
                 continue;
             }
-            let saved = s.store.clone();
-            s.active.push(id);
-            if s.run().is_err() {
-                s.active.pop();
-                s.store = saved;
+            let mark = s.store.checkpoint();
+            s.active[i] = true;
+            if s.run([id.0]).is_err() {
+                s.active[i] = false;
+                s.store.undo(mark);
                 s.dropped.push(id);
             }
         }
@@ -124,30 +133,20 @@ impl<'p> Solver<'p> {
         })
     }
 
-    fn run(&mut self) -> Result<(), Why> {
-        let active: Vec<(ConstraintId, &Constraint)> = self
-            .active
-            .iter()
-            .map(|&id| (id, &self.problem.constraints[id.0 as usize]))
-            .collect();
-        self.store.propagate(&active)
+    fn run(&mut self, seeds: impl IntoIterator<Item = u32>) -> Result<(), Why> {
+        self.store
+            .propagate(&self.problem.constraints, &self.active, &self.watch, seeds)
     }
 
     /// A dropped default over one variable still says where its values usually lie: sampling
     /// prefers that range where the hard constraints leave room in it.
     fn record_hint(&mut self, vars: &[VarId], c: &Constraint, id: ConstraintId) {
         let [v] = vars else { return };
-        let mut alone = Store {
-            doms: self
-                .problem
-                .vars
-                .iter()
-                .map(|v| Domain::of(&v.kind))
-                .collect(),
-        };
-        if alone.propagate(&[(id, c)]).is_ok() {
-            self.hints[v.0 as usize] = Some(alone.doms[v.0 as usize].clone());
+        let mark = self.fresh.checkpoint();
+        if self.fresh.propagate_one(id, c).is_ok() {
+            self.hints[v.0 as usize] = Some(self.fresh.doms[v.0 as usize].clone());
         }
+        self.fresh.undo(mark);
     }
 
     fn sample_one(&mut self, v: VarId) -> Result<(), SolveError> {
@@ -158,13 +157,16 @@ impl<'p> Solver<'p> {
         let mut last_why = Vec::new();
         for attempt in 0..TRIES + 1 {
             let choice = self.choose(idx, attempt == TRIES);
-            let saved = self.store.clone();
-            fix(&mut self.store.doms[idx], &choice);
-            match self.run() {
+            let mark = self.store.checkpoint();
+            let mut fixed = self.store.doms[idx].clone();
+            fix(&mut fixed, &choice);
+            self.store.set(v, fixed);
+            let watchers = self.watch[idx].clone();
+            match self.run(watchers) {
                 Ok(()) => return Ok(()),
                 Err(why) => {
                     last_why = why;
-                    self.store = saved;
+                    self.store.undo(mark);
                 }
             }
         }
