@@ -1,6 +1,8 @@
-//! `oscsim dsl …`: tools for OpenSCENARIO DSL 2.x files (`.osc`), and the syntax check behind
-//! `oscsim validate --syntax-only`. Glue only: parsing, diagnostics and formatting live in the
-//! `dsl` crate (`dsl::syntax`).
+//! `oscsim dsl …`: tools for OpenSCENARIO DSL 2.x files (`.osc`), and the checks behind
+//! `oscsim validate FILE.osc` (names, types, units, modifiers, constraints) and
+//! `oscsim validate --syntax-only`. Glue only: parsing, checking, solving, diagnostics and
+//! formatting live in the `dsl` crate. `oscsim dsl resolve FILE.osc --seed N` prints the value the
+//! constraint solver chose for every field (`path = value`, numbers in SI units).
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -19,6 +21,22 @@ pub enum DslCommand {
                             errors or, with --check, a file not in canonical format, 2 usage error."
     )]
     Fmt(FmtArgs),
+    /// Check an .osc file and print the values the constraint solver chose for every field of
+    /// every global, top-level field and scenario (`path = value`, numbers in SI units).
+    #[command(
+        after_help = "Exit status: 0 resolved, 1 invalid file or unsatisfiable constraints, 2 usage error."
+    )]
+    Resolve(ResolveArgs),
+}
+
+/// Arguments of `oscsim dsl resolve`.
+#[derive(clap::Args, Debug)]
+pub struct ResolveArgs {
+    /// The OpenSCENARIO DSL file.
+    file: PathBuf,
+    /// Seed of the sampling of values the constraints leave free (same seed, same values).
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
 }
 
 /// Arguments of `oscsim dsl fmt`.
@@ -39,7 +57,60 @@ pub struct FmtArgs {
 pub fn run(command: DslCommand) -> anyhow::Result<ExitCode> {
     match command {
         DslCommand::Fmt(args) => fmt(&args, &mut std::io::stdout().lock()),
+        DslCommand::Resolve(args) => resolve(&args, &mut std::io::stdout().lock()),
     }
+}
+
+fn resolve(args: &ResolveArgs, out: &mut impl Write) -> anyhow::Result<ExitCode> {
+    match dsl::check(&args.file).and_then(|p| p.resolve(args.seed)) {
+        Ok(r) => {
+            for line in r.lines() {
+                writeln!(out, "{line}")?;
+            }
+            Ok(ExitCode::SUCCESS)
+        }
+        Err(d) => {
+            write_diagnostics(&d, out)?;
+            Ok(ExitCode::from(1))
+        }
+    }
+}
+
+/// `oscsim validate FILE.osc`: the full check (imports, names, types and units, arguments,
+/// modifiers, constraints solved once); `OK` or `FAIL` with every error; `true` when it checks.
+pub fn validate_file(file: &Path, out: &mut impl Write) -> anyhow::Result<bool> {
+    match dsl::check(file) {
+        Ok(p) => {
+            let files = p.files().len() - p.model.library_files as usize;
+            writeln!(
+                out,
+                "OK   {} (OpenSCENARIO DSL, {files} file(s), {} constraints)",
+                file.display(),
+                p.templates.len()
+            )?;
+            Ok(true)
+        }
+        Err(d) => {
+            writeln!(out, "FAIL {} ({} errors)", file.display(), d.items.len())?;
+            write_diagnostics(&d, out)?;
+            Ok(false)
+        }
+    }
+}
+
+/// Writes every semantic error as a report with its source lines and labelled spans (the
+/// other constraints of a conflict labelled too); lines are not wrapped below 160 columns, so a
+/// message stays on one line for tools that grep it.
+fn write_diagnostics(d: &dsl::Diagnostics, out: &mut impl Write) -> anyhow::Result<()> {
+    let handler =
+        miette::GraphicalReportHandler::new_themed(miette::GraphicalTheme::unicode_nocolor())
+            .with_width(160);
+    for report in d.reports() {
+        let mut text = String::new();
+        handler.render_report(&mut text, report.as_ref())?;
+        write!(out, "{text}")?;
+    }
+    Ok(())
 }
 
 fn read(file: &Path) -> anyhow::Result<String> {

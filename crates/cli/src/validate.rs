@@ -1,8 +1,8 @@
 //! `oscsim validate FILE...`: load each scenario with its catalogs and road network and
 //! report OK or the error (file:line:col, element, what was expected); exit status 1 when
 //! any file fails. `--print` shows the resolved model, `--param NAME=VALUE` overrides a
-//! global parameter (OpenSCENARIO 1.3 §9.1). `--syntax-only FILE.osc` parses OpenSCENARIO DSL
-//! files and reports every syntax error (see `dsl.rs`).
+//! global parameter (OpenSCENARIO 1.3 §9.1). A `.osc` file is checked as OpenSCENARIO DSL
+//! (`--syntax-only`: parsed only); see `dsl.rs`.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -81,13 +81,15 @@ fn validate_file(file: &Path, args: &ValidateArgs, out: &mut impl Write) -> anyh
     if is_dsl && args.syntax_only {
         return crate::dsl::validate_syntax(file, out);
     }
-    if is_dsl || args.syntax_only {
-        let why = if is_dsl {
-            "resolution and type checking of OpenSCENARIO DSL files are not in oscsim yet; --syntax-only checks the syntax"
-        } else {
-            "--syntax-only applies to OpenSCENARIO DSL files (.osc)"
-        };
-        writeln!(out, "FAIL {}\n  error: {why}", file.display())?;
+    if is_dsl {
+        return crate::dsl::validate_file(file, out);
+    }
+    if args.syntax_only {
+        writeln!(
+            out,
+            "FAIL {}\n  error: --syntax-only applies to OpenSCENARIO DSL files (.osc)",
+            file.display()
+        )?;
         return Ok(false);
     }
     let scenario = match Scenario::load_with_parameters(file, &args.params) {
