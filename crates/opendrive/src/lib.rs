@@ -25,7 +25,8 @@
 //! - Errors: [`Error`] with [`ErrorKind`], file and 1-based [`TextPos`].
 //! - Data: [`Road`] (`id`, `length`, `junction`, `rule`, `links`, `types`, `plan_view`,
 //!   `elevation`, `superelevation`, `lane_offsets`, `lane_sections`, `objects`, `signals`),
-//!   [`LaneSection`] (`left` 1, 2, …; `center`; `right` −1, −2, …), [`Lane`], [`Junction`],
+//!   [`LaneSection`] (`left` 1, 2, …; `center`; `right` −1, −2, …), [`Lane`] (with its
+//!   [`RoadMark`]s), [`Junction`],
 //!   [`Header`]; [`RoadNetwork::bounding_box`] of all road surfaces.
 //!
 //! Semantics worth knowing: a lane pose's heading is the true (horizontal) tangent of the
@@ -73,7 +74,8 @@ pub use math::{
 pub use model::{
     is_drivable, Connection, ContactPoint, ElementType, GeoReference, Header, Junction,
     JunctionKind, Lane, LaneHeight, LaneLink, LaneSection, LaneType, Object, Offset, Road,
-    RoadLink, RoadLinks, RoadType, Signal, Speed, TrafficRule,
+    RoadLink, RoadLinks, RoadMark, RoadMarkColor, RoadMarkLine, RoadMarkType, RoadType, Signal,
+    Speed, TrafficRule,
 };
 pub use network::RoadNetwork;
 pub use query::{

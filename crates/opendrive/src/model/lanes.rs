@@ -1,6 +1,7 @@
 //! `<laneSection>` and `<lane>` (OpenDRIVE 1.8 §11, lanes): lane types, width and border
 //! polynomials, height, and lane links.
 
+use super::RoadMark;
 use crate::math::{Cubic, Real};
 
 /// `lane/@type` (OpenDRIVE 1.8 §11, XSD `e_laneType`).
@@ -94,6 +95,38 @@ impl LaneType {
         }
     }
 
+    /// The `e_laneType` value (`mwyEntry` and `mwyExit` read as `entry` and `exit`).
+    pub fn name(&self) -> &str {
+        match self {
+            Self::Driving => "driving",
+            Self::Shoulder => "shoulder",
+            Self::Border => "border",
+            Self::Stop => "stop",
+            Self::None => "none",
+            Self::Restricted => "restricted",
+            Self::Parking => "parking",
+            Self::Median => "median",
+            Self::Biking => "biking",
+            Self::Sidewalk => "sidewalk",
+            Self::Curb => "curb",
+            Self::Entry => "entry",
+            Self::Exit => "exit",
+            Self::OnRamp => "onRamp",
+            Self::OffRamp => "offRamp",
+            Self::ConnectingRamp => "connectingRamp",
+            Self::Bidirectional => "bidirectional",
+            Self::SlipLane => "slipLane",
+            Self::Bus => "bus",
+            Self::Taxi => "taxi",
+            Self::Hov => "HOV",
+            Self::Tram => "tram",
+            Self::Rail => "rail",
+            Self::Walking => "walking",
+            Self::RoadWorks => "roadWorks",
+            Self::Other(text) => text,
+        }
+    }
+
     /// Whether motor vehicles may drive on lanes of this type: driving, entry, exit, onRamp,
     /// offRamp, connectingRamp, bidirectional, slipLane, bus, taxi and HOV (the lane types
     /// the OpenDRIVE 1.8 §11 lane-type table describes as lanes for vehicle traffic). Parking, stop,
@@ -153,6 +186,8 @@ pub struct Lane {
     pub heights: Vec<LaneHeight>,
     /// `<speed max>` of the first speed record (m/s), if any.
     pub speed_limit: Option<Real>,
+    /// `<roadMark>` records along the lane's outer border, sorted by `s_offset`.
+    pub road_marks: Vec<RoadMark>,
 }
 
 /// `<laneSection>`: lanes valid from `s` to the next section's `s`.

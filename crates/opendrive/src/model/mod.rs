@@ -5,9 +5,11 @@ mod junction;
 mod lanes;
 mod objects;
 mod road;
+mod road_mark;
 
 pub use header::{GeoReference, Header, Offset};
 pub use junction::{Connection, ContactPoint, Junction, JunctionKind, LaneLink};
 pub use lanes::{is_drivable, Lane, LaneHeight, LaneSection, LaneType};
 pub use objects::{Object, Signal};
 pub use road::{ElementType, Road, RoadLink, RoadLinks, RoadType, Speed, TrafficRule};
+pub use road_mark::{RoadMark, RoadMarkColor, RoadMarkLine, RoadMarkType};

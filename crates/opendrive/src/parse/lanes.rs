@@ -6,7 +6,9 @@ use roxmltree::Node;
 use super::reader::{child, children, read_nested, Reader};
 use super::road::{missing, read_cubics};
 use crate::error::Error;
-use crate::model::{Lane, LaneHeight, LaneSection, LaneType};
+use crate::model::{
+    Lane, LaneHeight, LaneSection, LaneType, RoadMark, RoadMarkColor, RoadMarkLine, RoadMarkType,
+};
 
 /// All `<laneSection>`s of a road of `road_length` metres, sorted by s.
 pub(crate) fn read_lanes(
@@ -112,5 +114,34 @@ fn read_lane(r: &Reader, node: Node) -> Result<Lane, Error> {
         borders: read_cubics(r, node, "border", "sOffset")?,
         heights,
         speed_limit,
+        road_marks: read_road_marks(r, node)?,
     })
+}
+
+/// The `<roadMark>`s of a lane (OpenDRIVE 1.8 §11.8), sorted by `sOffset`; the `<line>`s of
+/// a `<type>` child give the dash pattern.
+fn read_road_marks(r: &Reader, lane: Node) -> Result<Vec<RoadMark>, Error> {
+    let mut marks = Vec::new();
+    for m in children(lane, "roadMark") {
+        let mut lines = Vec::new();
+        for line in children(m, "type").flat_map(|t| children(t, "line")) {
+            lines.push(RoadMarkLine {
+                length: r.opt_non_negative(line, "length", 0.0)?,
+                space: r.opt_non_negative(line, "space", 0.0)?,
+                t_offset: r.opt_f64(line, "tOffset", 0.0)?,
+                s_offset: r.opt_non_negative(line, "sOffset", 0.0)?,
+                width: r.maybe_f64(line, "width")?,
+            });
+        }
+        marks.push(RoadMark {
+            s_offset: r.req_non_negative(m, "sOffset")?,
+            mark_type: RoadMarkType::parse(m.attribute("type").unwrap_or("none")),
+            bold: m.attribute("weight") == Some("bold"),
+            color: RoadMarkColor::parse(m.attribute("color").unwrap_or("standard")),
+            width: r.maybe_f64(m, "width")?,
+            lines,
+        });
+    }
+    marks.sort_by(|a, b| a.s_offset.total_cmp(&b.s_offset));
+    Ok(marks)
 }

@@ -175,6 +175,19 @@ impl<'a, 'input: 'a> Reader<'a, 'input> {
         }
     }
 
+    /// An optional number ≥ 0 (XSD `t_grEqZero`), `default` when absent.
+    pub(crate) fn opt_non_negative(
+        &self,
+        node: Node<'a, 'input>,
+        name: &str,
+        default: f64,
+    ) -> Result<f64, Error> {
+        match node.attribute(name) {
+            Some(_) => self.req_non_negative(node, name),
+            None => Ok(default),
+        }
+    }
+
     /// A required `s` attribute in [0, road_length] (+ [`S_TOLERANCE`]); `what` names the
     /// element's start in the message.
     pub(crate) fn req_s_within(

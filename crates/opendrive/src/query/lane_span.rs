@@ -202,6 +202,7 @@ mod tests {
             successor: None,
             widths,
             borders: Vec::new(),
+            road_marks: Vec::new(),
             heights: Vec::new(),
             speed_limit: None,
         }
