@@ -138,3 +138,35 @@ pub enum ActionKind {
     /// PrivateAction (for the actors).
     Private(PrivateAction),
 }
+
+impl ActionKind {
+    /// The XSD element name of the action's choice: `LongitudinalAction`, `LateralAction`,
+    /// `TeleportAction`, … for a PrivateAction; `EnvironmentAction`, `EntityAction`,
+    /// `TrafficSignalAction`, `SetMonitorAction`, `ParameterAction`, `TrafficAction`,
+    /// `VariableAction` for a GlobalAction; `UserDefinedAction`.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            ActionKind::Private(p) => match p {
+                PrivateAction::Longitudinal(_) => "LongitudinalAction",
+                PrivateAction::Lateral(_) => "LateralAction",
+                PrivateAction::Visibility(_) => "VisibilityAction",
+                PrivateAction::Synchronize(_) => "SynchronizeAction",
+                PrivateAction::Controller(_) => "ControllerAction",
+                PrivateAction::Teleport(_) => "TeleportAction",
+                PrivateAction::Routing(_) => "RoutingAction",
+                PrivateAction::Appearance(_) => "AppearanceAction",
+                PrivateAction::Trailer(_) => "TrailerAction",
+            },
+            ActionKind::Global(g) => match g {
+                GlobalAction::Environment(_) => "EnvironmentAction",
+                GlobalAction::Entity { .. } => "EntityAction",
+                GlobalAction::TrafficSignal(_) => "TrafficSignalAction",
+                GlobalAction::SetMonitor { .. } => "SetMonitorAction",
+                GlobalAction::Parameter { .. } => "ParameterAction",
+                GlobalAction::Traffic { .. } => "TrafficAction",
+                GlobalAction::Variable { .. } => "VariableAction",
+            },
+            ActionKind::UserDefined(_) => "UserDefinedAction",
+        }
+    }
+}
