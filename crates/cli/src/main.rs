@@ -8,8 +8,10 @@ mod dsl;
 mod osi_sink;
 mod road;
 mod run;
+mod run_record;
 mod step_args;
 mod validate;
+mod view;
 
 use std::process::ExitCode;
 
@@ -38,6 +40,11 @@ enum Command {
     Dsl(dsl::DslCommand),
     /// Run every variant of a parameter value distribution; `batch merge` joins shard outputs.
     Batch(Box<batch_cmd::BatchArgs>),
+    /// Write a run (or a scenario, run first) as one self-contained HTML replay.
+    View(view::ViewArgs),
+    /// Draw SVG and PNG charts of a run (or a scenario, run first): trajectories, speeds,
+    /// distances and time to collision from the host.
+    Plot(view::PlotArgs),
 }
 
 fn main() -> ExitCode {
@@ -48,6 +55,8 @@ fn main() -> ExitCode {
         Command::Run(args) => run::run(*args),
         Command::Dsl(command) => dsl::run(command),
         Command::Batch(args) => batch_cmd::run(*args),
+        Command::View(args) => view::view(args),
+        Command::Plot(args) => view::plot(args),
     };
     match result {
         Ok(code) => code,

@@ -62,10 +62,12 @@ pub struct RunArgs {
     /// Write every Nth step to the OSI trace.
     #[arg(long, value_name = "N", default_value = "1")]
     osi_every: std::num::NonZeroU64,
+    #[command(flatten)]
+    replay: crate::run_record::ReplayArgs,
 }
 
 /// Splits `NAME=VALUE` (a leading `$` on the name is dropped).
-fn name_value(text: &str) -> Result<(String, String), String> {
+pub(crate) fn name_value(text: &str) -> Result<(String, String), String> {
     text.split_once('=')
         .filter(|(n, _)| !n.trim().is_empty())
         .map(|(n, v)| (n.trim().trim_start_matches('$').to_owned(), v.to_owned()))
@@ -96,6 +98,8 @@ struct Events {
     /// Errors logged by a run that went on (a route that could not be planned, a trajectory
     /// that could not be built, a condition that could not be evaluated).
     errors: usize,
+    /// The replay's recording of the log (run_record.rs).
+    record: Option<crate::run_record::Events>,
 }
 
 impl EventSink for Events {
@@ -105,6 +109,9 @@ impl EventSink for Events {
             eprintln!("error: {message}");
             self.last_error = Some(message.clone());
             self.errors += 1;
+        }
+        if let Some(r) = &mut self.record {
+            r.event(record)?;
         }
         self.out.as_mut().map_or(Ok(()), |o| o.event(record))
     }
@@ -144,6 +151,8 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
             crate::osi_sink::OsiSink::create(&engine, &args.scenario, &args.params, &options)?;
         frames.push(Box::new(sink));
     }
+    let record = crate::run_record::RunRecord::new(&args.replay, args.csv.as_deref());
+    frames.extend(record.frame_sink());
     let mut events = Events {
         out: args
             .events
@@ -154,6 +163,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         count: 0,
         last_error: None,
         errors: 0,
+        record: record.event_sink(),
     };
     let end = config.end_time();
     let bar = (!args.quiet && std::io::stderr().is_terminal()).then(|| {
@@ -195,6 +205,15 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         .finish()
         .context("cannot finish the CSV or the OSI trace")?;
     events.finish().context("cannot write the event log")?;
+    drop(events.record.take());
+    drop(frames);
+    record.finish(
+        &args.scenario,
+        &args.params,
+        &config,
+        args.csv.as_deref(),
+        args.events.as_deref(),
+    )?;
     if let Some(bar) = bar {
         bar.finish_and_clear();
     }

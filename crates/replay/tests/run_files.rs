@@ -1,0 +1,126 @@
+//! A run opened from what `oscsim run` writes equals the same run made in memory, and the
+//! conditions' series agree with the event log: the cut-in's OverTakerAhead
+//! (RelativeDistanceCondition, road, longitudinal, freespace, greaterThan 10, rising edge)
+//! starts CutInEvent at 5.650 s, so its distance is above 10 m at 5.65 s and not at 5.60 s.
+
+use std::path::{Path, PathBuf};
+
+use engine::output::{CsvWriter, JsonlWriter};
+use engine::{Engine, EngineConfig};
+use replay::recorder::EntityCatalog;
+use replay::{manifest_for, OpenOptions, Run, RunManifest};
+
+fn cut_in() -> PathBuf {
+    PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/scenarios/cut_in_highway.xosc"
+    ))
+}
+
+/// Writes the cut-in's CSV, log and manifest into `dir` as `oscsim run --csv --events` does.
+fn write_run(dir: &Path) -> PathBuf {
+    let _ = std::fs::remove_dir_all(dir);
+    std::fs::create_dir_all(dir).expect("scratch folder");
+    let scenario = scenario::Scenario::load(&cut_in()).expect("the cut-in loads");
+    let config = EngineConfig::default();
+    let mut engine = Engine::build(&scenario, config).expect("builds");
+    let csv = dir.join("cut_in.csv");
+    let mut frames: Vec<Box<dyn engine::FrameSink>> = vec![Box::new(CsvWriter::new(
+        std::fs::File::create(&csv).expect("csv"),
+    ))];
+    let catalog = std::rc::Rc::new(std::cell::RefCell::new(EntityCatalog::new()));
+    struct Shared(std::rc::Rc<std::cell::RefCell<EntityCatalog>>);
+    impl engine::FrameSink for Shared {
+        fn frame(&mut self, f: &engine::Frame<'_>) -> std::io::Result<()> {
+            self.0.borrow_mut().frame(f)
+        }
+    }
+    frames.push(Box::new(Shared(catalog.clone())));
+    let mut log = JsonlWriter::new(std::fs::File::create(dir.join("cut_in.jsonl")).expect("log"));
+    engine.run(&mut frames, &mut log).expect("runs");
+    drop(frames);
+    let entities = std::rc::Rc::try_unwrap(catalog)
+        .expect("the run dropped its sinks")
+        .into_inner()
+        .into_entities();
+    let mut m = manifest_for(&scenario, &cut_in(), &[], &config, entities, dir);
+    m.trajectories = Some("cut_in.csv".into());
+    m.events = Some("cut_in.jsonl".into());
+    m.write(&RunManifest::beside(&csv)).expect("manifest");
+    csv
+}
+
+#[test]
+fn a_run_from_files_equals_the_run_in_memory() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("replay_run_files");
+    let csv = write_run(&dir);
+    let from_files = Run::open(&csv, &OpenOptions::default()).expect("opens");
+    let in_memory = Run::simulate(&cut_in(), &[], EngineConfig::default()).expect("runs");
+    assert_eq!(from_files.trajectories, in_memory.trajectories);
+    assert_eq!(from_files.events, in_memory.events);
+    assert_eq!(from_files.manifest.entities, in_memory.manifest.entities);
+    assert_eq!(
+        replay::html::render(&from_files),
+        replay::html::render(&in_memory)
+    );
+    // Manifest paths are relative to its folder.
+    let m = RunManifest::read(&RunManifest::beside(&csv)).expect("reads");
+    assert!(
+        m.scenario.as_ref().is_some_and(|p| p.is_relative()),
+        "{:?}",
+        m.scenario
+    );
+    assert_eq!(m.entities[0].box_size, [5.0, 2.0, 1.5]);
+    assert_eq!(m.entities[1].color, Some([255, 0, 0]));
+}
+
+#[test]
+fn the_cut_in_condition_series_crosses_its_threshold_when_the_event_starts() {
+    let run = Run::simulate(&cut_in(), &[], EngineConfig::default()).expect("runs");
+    let start = run
+        .events
+        .iter()
+        .find(|e| e.element == "CutInEvent" && e.transition.as_deref() == Some("start"))
+        .expect("CutInEvent starts");
+    assert_eq!(start.time, 5.65);
+    let series = replay::measures::series(&run);
+    assert_eq!(series.len(), 1);
+    let s = &series[0];
+    assert_eq!(
+        (s.spec.entity.as_str(), s.spec.reference.as_str()),
+        ("OverTaker", "Ego")
+    );
+    assert_eq!(
+        s.thresholds,
+        vec![("OverTakerAhead".to_owned(), "greaterThan".to_owned(), 10.0)]
+    );
+    let frame = |t: f64| {
+        run.trajectories
+            .times
+            .iter()
+            .position(|&x| (x - t).abs() < 1e-9)
+            .expect("a frame")
+    };
+    let at = |t: f64| s.values[frame(t)].expect("both on the road");
+    assert!(at(5.65) > 10.0, "{}", at(5.65));
+    assert!(at(5.60) <= 10.0, "{}", at(5.60));
+}
+
+#[test]
+fn a_csv_without_manifest_needs_the_scenario() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("replay_no_manifest");
+    let csv = write_run(&dir);
+    std::fs::remove_file(RunManifest::beside(&csv)).expect("remove the manifest");
+    let err = Run::open(&csv, &OpenOptions::default()).expect_err("no manifest");
+    assert!(err.to_string().starts_with("no run manifest"), "{err}");
+    let run = Run::open(
+        &csv,
+        &OpenOptions {
+            scenario: Some(cut_in()),
+            events: None,
+        },
+    )
+    .expect("opens with the scenario");
+    assert_eq!(run.manifest.entities[0].box_size, [5.0, 2.0, 1.5]);
+    assert!(run.network.is_some());
+}
