@@ -5,7 +5,8 @@
 //! a screenshot is written to `target/tmp/replay/cut_in_t5.png`.
 //!
 //! Needs Debian's `chromium` (`.ci/run` installs it); without a browser the test says so and
-//! passes without checking. `OSCSIM_CHROMIUM` names another binary.
+//! passes without checking, unless `OSCSIM_REQUIRE_BROWSER` is set (as `.ci/run` does).
+//! `OSCSIM_CHROMIUM` names another binary.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -156,6 +157,10 @@ fn cut_in_replay_draws_ego_where_the_csv_puts_it() {
     assert!(page.contains("Content-Security-Policy\" content=\"default-src 'none'"));
 
     let Some(browser) = chromium() else {
+        assert!(
+            std::env::var_os("OSCSIM_REQUIRE_BROWSER").is_none(),
+            "OSCSIM_REQUIRE_BROWSER is set but no Chromium was found"
+        );
         eprintln!("skipped: no Chromium (/usr/bin/chromium; `apt-get install -y chromium`, or set OSCSIM_CHROMIUM)");
         return;
     };
