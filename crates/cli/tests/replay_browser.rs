@@ -1,8 +1,9 @@
 //! The replay page of the bundled cut-in (`oscsim run --csv --events`, then `oscsim view`)
 //! opened in headless Chromium with the network refused: it loads without a console error or a
 //! blocked request, the slider set to t = 5 s draws Ego where the CSV row puts it, the road is
-//! drawn where OpenDRIVE puts it (a centre-line point of highway.xodr worked out by hand), and
-//! a screenshot is written to `target/tmp/replay/cut_in_t5.png`.
+//! drawn where OpenDRIVE puts it (a centre-line point of highway.xodr worked out by hand), the
+//! arrow key steps a frame, `]` speeds up, a click on the timeline jumps to the event under it,
+//! and a screenshot is written to `target/tmp/replay/cut_in_t5.png`.
 //!
 //! Needs Debian's `chromium` (`.ci/run` installs it); without a browser the test says so and
 //! passes without checking, unless `OSCSIM_REQUIRE_BROWSER` is set (as `.ci/run` does).
@@ -55,17 +56,28 @@ fn repo(path: &str) -> String {
 
 /// Scripts put into a copy of the page: the first (in `<head>`) collects errors, console
 /// errors and Content-Security-Policy violations (a blocked request); the second checks the
-/// road, sets the slider to 5 s like a user and writes the page's state as JSON into
-/// `<pre id="test-result">`.
+/// road, sets the slider to 5 s like a user, waits until the page's own loop has drawn that
+/// time (polling on timers: headless Chromium's virtual clock does not promise animation
+/// frames to a waiting script), reads the state and the pixels, presses keys, clicks the
+/// timeline, and writes it all as JSON into `<pre id="test-result">`.
 const CATCH: &str = r#"<script>window.__errors=[];addEventListener('error',e=>__errors.push('error: '+e.message));addEventListener('unhandledrejection',e=>__errors.push('rejection: '+e.reason));document.addEventListener('securitypolicyviolation',e=>__errors.push('blocked: '+e.violatedDirective+' '+e.blockedURI));const __ce=console.error;console.error=(...a)=>{__errors.push('console: '+a.join(' '));__ce.apply(console,a);};</script>"#;
 const DRIVE: &str = r#"<script>(async function(){const out=document.createElement('pre');out.id='test-result';
+const sleep=(ms)=>new Promise(r=>setTimeout(r,ms));
 try{const R=window.oscsimReplay;await R.ready;
+const drawn=async(t)=>{for(let i=0;i<100&&R.state().drawnTime!==t;i++)await sleep(20);if(R.state().drawnTime!==t)throw new Error('time '+t+' was not drawn');};
 const road={};for(const [name,x,y] of ROAD_POINTS){R.setView(x,y,40);const p=R.worldToScreen(x,y);road[name]=R.pixel(p[0],p[1]);}
 R.fit();
 const s=document.getElementById('slider');s.value='5';s.dispatchEvent(new Event('input',{bubbles:true}));
-await new Promise(r=>requestAnimationFrame(()=>requestAnimationFrame(r)));
+await drawn(5);
 const st=R.state();const px={};for(const e of st.entities){if(e.present)px[e.name]=R.pixel(e.center[0],e.center[1]);}
-out.textContent=JSON.stringify({state:st,pixels:px,road,errors:__errors});
+const key=(k)=>document.dispatchEvent(new KeyboardEvent('keydown',{key:k,bubbles:true}));
+key('ArrowRight');const afterRight=R.state().time;key(']');const rate=R.state().rate;
+const tl=document.getElementById('timeline');const box=tl.getBoundingClientRect();
+const x=64+(5.65/10)*(tl.clientWidth-68);
+tl.dispatchEvent(new MouseEvent('click',{clientX:box.left+x+2,clientY:box.top+20,bubbles:true}));
+const afterClick=R.state().time;
+s.value='5';s.dispatchEvent(new Event('input',{bubbles:true}));await drawn(5);
+out.textContent=JSON.stringify({state:st,pixels:px,road,afterRight,rate,afterClick,errors:__errors});
 }catch(e){out.textContent=JSON.stringify({failure:String(e),errors:__errors});}
 document.body.appendChild(out);})();</script>"#;
 
@@ -262,6 +274,13 @@ fn cut_in_replay_draws_ego_where_the_csv_puts_it() {
         "{}",
         r["road"]
     );
+
+    // Keys: → steps one frame (0.05 s), ] doubles the playback speed (1× → 2×).
+    assert_eq!(r["afterRight"].as_f64(), Some(5.05));
+    assert_eq!(r["rate"].as_f64(), Some(2.0));
+    // A click 2 px right of the timeline's mark of CutInEvent's start (5.650 s, the event log)
+    // jumps to that record's time (the x of t is 64 + t/10 · (width − 68), timeline.js).
+    assert_eq!(r["afterClick"].as_f64(), Some(5.65));
 
     // The screenshot artifact: the same page at t = 5 s.
     let shot = dir.join("cut_in_t5.png");

@@ -124,3 +124,69 @@ fn a_csv_without_manifest_needs_the_scenario() {
     assert_eq!(run.manifest.entities[0].box_size, [5.0, 2.0, 1.5]);
     assert!(run.network.is_some());
 }
+
+/// The shared corpus beside the repository.
+fn corpus(path: &str) -> PathBuf {
+    PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus"
+    ))
+    .join(path)
+}
+
+#[test]
+fn spawned_traffic_appears_and_leaves() {
+    // esmini's swarm.xosc: a TrafficSwarmAction spawns vehicles around Ego and removes those
+    // that fall outside its radius.
+    let config = EngineConfig {
+        duration: Some(20.0),
+        ..EngineConfig::default()
+    };
+    let run = Run::simulate(&corpus("esmini/xosc/swarm.xosc"), &[], config).expect("runs");
+    let last = run.trajectories.times.len() as u32 - 1;
+    let tracks = &run.trajectories.tracks;
+    let late = tracks.iter().filter(|t| t.samples[0].frame > 0).count();
+    let gone = tracks
+        .iter()
+        .filter(|t| t.samples.last().is_some_and(|s| s.frame < last))
+        .count();
+    assert!(
+        late > 0 && gone > 0,
+        "{late} appear later, {gone} leave early"
+    );
+    // Every entity that appeared has its box in the manifest.
+    for t in tracks {
+        let info = run
+            .manifest
+            .entities
+            .iter()
+            .find(|e| e.id == t.id)
+            .expect("in the manifest");
+        assert!(info.box_size[0] > 0.0, "{}", info.name);
+    }
+    assert!(run.events.iter().any(|e| e.kind == "entity"));
+}
+
+#[test]
+fn trailers_are_linked_in_the_manifest() {
+    let config = EngineConfig {
+        duration: Some(2.0),
+        ..EngineConfig::default()
+    };
+    let run = Run::simulate(&corpus("esmini/xosc/trailers.xosc"), &[], config).expect("runs");
+    let linked: Vec<_> = run
+        .manifest
+        .entities
+        .iter()
+        .filter(|e| e.trailer.is_some())
+        .collect();
+    assert!(!linked.is_empty());
+    for tow in linked {
+        let trailer = tow.trailer.expect("filtered");
+        assert!(
+            run.manifest.entities.iter().any(|e| e.id == trailer),
+            "{} tows a known entity",
+            tow.name
+        );
+    }
+}

@@ -2,7 +2,7 @@
 // controls, keyboard shortcuts; redraws only when something changed; and `window.oscsimReplay`,
 // the page's state for tests and tools (time, camera, each entity's drawn pose and place).
 
-const S = { M: null, t: 0, playing: false, rate: 1, selected: -1, hovered: -1, dirty: true,
+const S = { M: null, t: 0, drawnT: NaN, playing: false, rate: 1, selected: -1, hovered: -1, dirty: true,
   lastNow: 0, drawMs: 0, poses: [], frame: [0, 0] };
 const $ = (id) => document.getElementById(id);
 let readyResolve, readyReject;
@@ -78,6 +78,7 @@ function draw() {
   const M = S.M, start = performance.now();
   const [k, f] = frameAt(M, S.t);
   S.frame = [k, f];
+  S.drawnT = S.t;
   S.poses = posesAt(M, k, f);
   if (Cam.follow >= 0 && S.poses[Cam.follow]) {
     Cam.cx = S.poses[Cam.follow].x;
@@ -214,7 +215,7 @@ function pixel(x, y) {
 function state() {
   const M = S.M;
   return {
-    time: S.t, frame: S.frame[0], fraction: S.frame[1], playing: S.playing, rate: S.rate,
+    time: S.t, drawnTime: S.drawnT, frame: S.frame[0], fraction: S.frame[1], playing: S.playing, rate: S.rate,
     camera: { cx: Cam.cx + M.ox, cy: Cam.cy + M.oy, scale: Cam.scale, width: Cam.width, height: Cam.height, dpr: Cam.dpr, follow: Cam.follow },
     drawMs: S.drawMs,
     entities: M.entities.map((e, i) => {
