@@ -6,7 +6,6 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use anyhow::Context;
-use engine::EngineConfig;
 use replay::{OpenOptions, Run};
 
 /// Which run to show, and how to run a scenario.
@@ -24,18 +23,9 @@ pub struct RunInput {
     /// Running a scenario: override a global parameter, NAME=VALUE (repeatable).
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = crate::run::name_value)]
     params: Vec<(String, String)>,
-    /// Running a scenario: step length in seconds.
-    #[arg(long, default_value_t = engine::runtime::DEFAULT_DT)]
-    dt: f64,
-    /// Running a scenario: simulated seconds (default: until the storyboard ends).
-    #[arg(long)]
-    duration: Option<f64>,
-    /// Running a scenario: hard cap on simulated seconds.
-    #[arg(long, default_value_t = engine::runtime::DEFAULT_MAX_TIME)]
-    max_time: f64,
-    /// Running a scenario: seed of the random streams.
-    #[arg(long, default_value_t = engine::runtime::DEFAULT_SEED)]
-    seed: u64,
+    /// Running a scenario: the step flags of `oscsim run`.
+    #[command(flatten)]
+    step: crate::step_args::StepArgs,
 }
 
 impl RunInput {
@@ -46,12 +36,7 @@ impl RunInput {
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("xosc"));
         if is_scenario {
-            let config = EngineConfig {
-                dt: self.dt,
-                duration: self.duration,
-                max_time: self.max_time,
-                seed: self.seed,
-            };
+            let config = self.step.config();
             Run::simulate(&self.run, &self.params, config)
                 .with_context(|| format!("cannot run {}", self.run.display()))
         } else {
