@@ -66,7 +66,8 @@ cases! {
     enum_user_declared, extend_adds_field, field_default_overridden, field_default_value,
     field_with_keep, float_field, for_over_group, for_over_list, global_parameter, import_file,
     import_standard, inheritance_conditional, inheritance_fields, int_negative,
-    keep_default_applies, keep_default_overridden, keep_hard_qualifier, linear_chain,
+    keep_default_applies, keep_default_overridden, namespace_prefixed_global,
+    namespace_reexport, namespace_shadowing, namespace_use_export, keep_hard_qualifier, linear_chain,
     linear_divided, linear_negated, linear_scaled, method_expression, nested_lists,
     person_walks, range_sampled_inside, range_single_point, scenario_actions, scenario_events,
     scenario_fields, scenario_modifiers, seed_category_alias, string_field, struct_with_list,
@@ -77,7 +78,7 @@ cases! {
 
 cases! {
     err_action_of_other_actor, err_actor_modifier_wrong_actor, err_add_length_time,
-    err_and_not_bool, err_argument_twice, err_argument_type, err_compare_length_number,
+    err_and_not_bool, err_namespace_ambiguous, err_namespace_not_exported, err_argument_twice, err_argument_type, err_compare_length_number,
     err_compare_speed_length, err_conditional_inherits_field, err_duplicate_enum_member,
     err_duplicate_field, err_duplicate_type, err_elapsed_not_time, err_emit_unknown_event,
     err_enum_ordering, err_field_type_units, err_for_over_non_list, err_import_missing_file,

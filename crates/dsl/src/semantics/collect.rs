@@ -60,7 +60,14 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                 m.compounds.push(CompoundDef {
                     kind: c.kind,
                     name: full.clone(),
-                    short: c.name.last_text().to_string(),
+                    // Modifiers are applied by their bare name (namespace.rs).
+                    short: c
+                        .name
+                        .last_text()
+                        .rsplit("::")
+                        .next()
+                        .unwrap_or_default()
+                        .to_string(),
                     actor: None,
                     parent: None,
                     of: None,

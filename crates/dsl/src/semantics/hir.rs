@@ -423,6 +423,22 @@ pub struct SiArg {
 /// A top-level item.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Item {
+    /// `namespace name [use a, b]` (§7.7.4): `""` is the global (`null`) namespace.
+    Namespace {
+        /// The namespace switched to.
+        name: String,
+        /// The namespaces after `use`.
+        uses: Vec<Name>,
+        /// Where.
+        span: Span,
+    },
+    /// `export a, ns::b, *, ns::*` (§7.7.4.1).
+    Export {
+        /// The specifications.
+        specs: Vec<ExportSpec>,
+        /// Where.
+        span: Span,
+    },
     /// `import a.b` / `import "file.osc"`.
     Import {
         /// A library name or a relative file path.
@@ -484,6 +500,15 @@ pub enum Item {
     /// A member written at the top level (the seed's examples declare `my_wide_car: vehicle`
     /// and its `keep`s there).
     Member(Member),
+}
+
+/// One specification of an `export` statement.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExportSpec {
+    /// A name, possibly prefixed (`bar`, `foo::ay`).
+    Name(Name),
+    /// `*` (`None`: the active namespace) or `ns::*` (`Some("")`: the global namespace).
+    Wildcard(Option<String>, Span),
 }
 
 /// What an `import` names.

@@ -30,14 +30,14 @@ impl Cx {
 
     fn name(&self, n: &ast::Name) -> Name {
         Name {
-            text: n.text(),
+            text: n.qualified_text(),
             span: self.span(n),
         }
     }
 
     fn name_ref(&self, n: &ast::NameRef) -> Name {
         Name {
-            text: n.text(),
+            text: n.qualified_text(),
             span: self.span(n),
         }
     }
@@ -104,7 +104,24 @@ impl Cx {
                 };
                 Item::Import { target, span }
             }
-            ast::Item::Namespace(_) | ast::Item::Export(_) => return None,
+            ast::Item::Namespace(n) => Item::Namespace {
+                name: n.name().map(|x| x.text()).unwrap_or_default(),
+                uses: n.uses().map(|u| self.name_ref(&u)).collect(),
+                span,
+            },
+            ast::Item::Export(e) => Item::Export {
+                specs: e
+                    .specs()
+                    .filter_map(|x| {
+                        if x.is_wildcard() {
+                            Some(ExportSpec::Wildcard(x.wildcard_namespace(), self.span(&x)))
+                        } else {
+                            x.name().map(|n| ExportSpec::Name(self.name_ref(&n)))
+                        }
+                    })
+                    .collect(),
+                span,
+            },
             ast::Item::PhysicalType(p) => Item::PhysicalType {
                 name: self.name(&p.name()?),
                 si: self.si(p.si()),
@@ -645,7 +662,7 @@ impl Cx {
             ast::Expr::Range(r) => ExprKind::Range(b(r.start()), b(r.end())),
             ast::Expr::Paren(p) => return self.opt_expr(p.expr(), span),
             ast::Expr::Name(n) => match n.name() {
-                Some(n) => ExprKind::Name(n.text()),
+                Some(n) => ExprKind::Name(n.qualified_text()),
                 None => ExprKind::Error,
             },
             ast::Expr::It(_) => ExprKind::It,

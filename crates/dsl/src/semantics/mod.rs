@@ -7,6 +7,7 @@
 //! | `solver` | constraint solving for `keep` (§7.3.6): interval propagation, defaults, seeded sampling |
 //! | `stdlib` | the standard library `osc.standard` as shipped `.osc` source (chapter 8) |
 //! | `hir` | the checker's view of a file (declarations, members, behaviors, expressions) |
+//! | `namespace` | namespace resolution: top-level names to their qualified form (§7.7.3–§7.7.4) |
 //! | `collect` | declarations of all files into a `Model`: names, inheritance, fields, methods (§7.3) |
 //! | `model` | the declaration tables and lookups (fields and methods through inheritance) |
 //! | `types` | static types; physical types identified by dimension (§7.3.1) |
@@ -24,6 +25,7 @@ pub mod instance;
 pub mod lower;
 pub mod lower_ast;
 pub mod model;
+pub mod namespace;
 pub mod program;
 pub mod resolve;
 pub mod solver;

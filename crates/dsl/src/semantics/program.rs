@@ -17,6 +17,7 @@ use super::diagnostic::{Diagnostic, DiagnosticKind as K};
 use super::hir::{FileId, ImportTarget, Item, SourceFile, Span};
 use super::lower_ast::lower_file;
 use super::model::Model;
+use super::namespace::resolve_namespaces;
 use super::resolve::{resolve, Resolution};
 use super::stdlib;
 
@@ -250,12 +251,17 @@ pub fn check_source_with(
             files,
         });
     }
+    resolve_namespaces(&mut hir, library as usize, &mut diags);
     let mut model = collect(&hir, &mut diags);
     model.library_files = library;
     let checked = check_model(&model);
     diags.extend(checked.diags);
     // Report in source order, whichever pass found them.
     diags.sort_by_key(|d| (d.span.file, d.span.start));
+    // A name the namespace pass explained is not reported again as unknown by the checker.
+    diags.dedup_by(|later, first| {
+        later.span == first.span && later.kind == K::UnknownName && first.kind == K::UnknownName
+    });
     if !diags.is_empty() {
         return Err(Diagnostics {
             items: diags,

@@ -104,6 +104,13 @@ impl ExportSpec {
     pub fn is_wildcard(&self) -> bool {
         token(&self.0, STAR).is_some()
     }
+    /// The namespace of a wildcard: `None` for `*` (the active one), `Some("")` for `::*` and
+    /// `null::*`, `Some(ns)` for `ns::*`.
+    pub fn wildcard_namespace(&self) -> Option<String> {
+        token(&self.0, COLON2)?;
+        let ns = token(&self.0, IDENT).map_or(String::new(), |t| identifier_text(&t).to_string());
+        Some(if ns == "null" { String::new() } else { ns })
+    }
 }
 
 impl PhysicalTypeDecl {

@@ -186,10 +186,26 @@ fn name_parts(node: &SyntaxNode) -> (Option<String>, Option<String>) {
     (namespace, Some(identifier_text(last).to_string()))
 }
 
+/// `ns::name` as written (a `null::` prefix written `::`), or the bare name.
+fn qualified_text(node: &SyntaxNode) -> String {
+    match name_parts(node) {
+        (Some(ns), Some(n)) if ns == "null" => format!("::{n}"),
+        (Some(ns), Some(n)) => format!("{ns}::{n}"),
+        (None, Some(n)) => n,
+        (_, None) => String::new(),
+    }
+}
+
 impl Name {
     /// The identifier, without namespace prefix or `|…|` quotes.
     pub fn text(&self) -> String {
         name_parts(&self.0).1.unwrap_or_default()
+    }
+
+    /// The identifier with its namespace prefix as written (`ns::name`; `::name` for the
+    /// global namespace, however it was spelled), without `|…|` quotes.
+    pub fn qualified_text(&self) -> String {
+        qualified_text(&self.0)
     }
 
     /// The namespace prefix of `ns::name` (`""` for `::name`), if any.
@@ -202,6 +218,11 @@ impl NameRef {
     /// The identifier, without namespace prefix or `|…|` quotes.
     pub fn text(&self) -> String {
         name_parts(&self.0).1.unwrap_or_default()
+    }
+
+    /// The identifier with its namespace prefix as written (see [`Name::qualified_text`]).
+    pub fn qualified_text(&self) -> String {
+        qualified_text(&self.0)
     }
 
     /// The namespace prefix of `ns::name` (`""` for the global `::name`), if any.
