@@ -24,6 +24,9 @@ pub struct Lowered {
     pub pending: BTreeSet<NodeId>,
 }
 
+/// Most alternatives one constraint's `or`s may expand to (disjunctive normal form).
+const MAX_ALTERNATIVES: usize = 64;
+
 struct Env {
     this: Option<NodeId>,
     locals: Vec<NodeId>,
@@ -123,6 +126,68 @@ impl Lowerer<'_> {
 
     fn add(&mut self, kind: ConstraintKind) {
         self.tree.problem.add(kind, self.strength, self.origin);
+    }
+
+    /// `e` (negated when `negate`) in disjunctive normal form: alternatives, each a conjunction
+    /// of constraints the leaves lower to. `a or b`, `a => b` (= `not a or b`) and `not (a and
+    /// b)` join their sides' alternatives; `a and b`, `not (a or b)` and `not (a => b)` combine
+    /// every alternative of one side with every one of the other (at most
+    /// [`MAX_ALTERNATIVES`]).
+    fn alternatives(
+        &mut self,
+        e: &TExpr,
+        env: &Env,
+        negate: bool,
+    ) -> Result<Vec<Vec<ConstraintKind>>, Fail> {
+        let (join, a, b, neg_a, neg_b) = match (&e.kind, negate) {
+            (TKind::Not(a), _) => return self.alternatives(a, env, !negate),
+            (TKind::Binary(BinOp::Or, a, b), false) => (true, a, b, false, false),
+            (TKind::Binary(BinOp::Implies, a, b), false) => (true, a, b, true, false),
+            (TKind::Binary(BinOp::And, a, b), true) => (true, a, b, true, true),
+            (TKind::Binary(BinOp::And, a, b), false) => (false, a, b, false, false),
+            (TKind::Binary(BinOp::Or, a, b), true) => (false, a, b, true, true),
+            (TKind::Binary(BinOp::Implies, a, b), true) => (false, a, b, false, true),
+            _ => {
+                // A leaf: lower it as usual, then take back what it added.
+                let start = self.tree.problem.constraints.len();
+                let r = self.constraint(e, env, negate);
+                let added: Vec<ConstraintKind> = self
+                    .tree
+                    .problem
+                    .constraints
+                    .drain(start..)
+                    .map(|c| c.kind)
+                    .collect();
+                r?;
+                return Ok(vec![added]);
+            }
+        };
+        let left = self.alternatives(a, env, neg_a)?;
+        let right = self.alternatives(b, env, neg_b)?;
+        let out: Vec<Vec<ConstraintKind>> = if join {
+            left.into_iter().chain(right).collect()
+        } else {
+            if left.len() * right.len() > MAX_ALTERNATIVES {
+                return Err(Self::unsupported(
+                    e,
+                    &format!("more than {MAX_ALTERNATIVES} alternatives of `or`"),
+                ));
+            }
+            left.iter()
+                .flat_map(|l| {
+                    right
+                        .iter()
+                        .map(move |r| l.iter().chain(r).cloned().collect())
+                })
+                .collect()
+        };
+        if out.len() > MAX_ALTERNATIVES {
+            return Err(Self::unsupported(
+                e,
+                &format!("more than {MAX_ALTERNATIVES} alternatives of `or`"),
+            ));
+        }
+        Ok(out)
     }
 
     fn unsupported(e: &TExpr, what: &str) -> Fail {
@@ -276,10 +341,23 @@ impl Lowerer<'_> {
                 self.compare(op, a, b, env, e)
             }
             TKind::Binary(BinOp::In, a, b) => self.membership(a, b, env, negate, e),
-            TKind::Binary(BinOp::Or | BinOp::Implies, ..) => {
-                Err(Self::unsupported(e, "`or` and `=>`"))
+            TKind::Binary(BinOp::Or | BinOp::Implies, a, b) if negate => {
+                // not (a or b) = not a and not b; not (a => b) = a and not b.
+                let first_negated = matches!(e.kind, TKind::Binary(BinOp::Or, ..));
+                self.constraint(a, env, first_negated)?;
+                self.constraint(b, env, true)
             }
-            TKind::Binary(BinOp::And, ..) => Err(Self::unsupported(e, "`not (a and b)`")),
+            TKind::Binary(BinOp::Or | BinOp::Implies | BinOp::And, ..) => {
+                let mut alternatives = self.alternatives(e, env, negate)?;
+                if alternatives.len() == 1 {
+                    for kind in alternatives.pop().unwrap_or_default() {
+                        self.add(kind);
+                    }
+                } else {
+                    self.add(ConstraintKind::Any(alternatives));
+                }
+                Ok(())
+            }
             _ => Err(Self::unsupported(e, describe(e))),
         }
     }

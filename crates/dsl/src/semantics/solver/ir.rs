@@ -140,6 +140,9 @@ pub enum ConstraintKind {
         /// `!=`.
         negated: bool,
     },
+    /// At least one of the alternatives holds, each a conjunction (`a or b`, `a => b`, in
+    /// disjunctive normal form; alternatives hold no `Any` themselves).
+    Any(Vec<Vec<ConstraintKind>>),
 }
 
 impl ConstraintKind {
@@ -149,6 +152,13 @@ impl ConstraintKind {
             ConstraintKind::Linear { expr, .. } => expr.terms.iter().map(|t| t.0).collect(),
             ConstraintKind::Member { var, .. } | ConstraintKind::Text { var, .. } => vec![*var],
             ConstraintKind::SameMember { a, b, .. } => vec![*a, *b],
+            ConstraintKind::Any(alternatives) => {
+                let mut vars: Vec<VarId> =
+                    alternatives.iter().flatten().flat_map(Self::vars).collect();
+                vars.sort_unstable();
+                vars.dedup();
+                vars
+            }
         }
     }
 }

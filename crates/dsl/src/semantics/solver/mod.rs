@@ -29,8 +29,15 @@
 //! lists known so far are sampled ([`Solver::sample`]) after propagation, then the elements
 //! are created and their constraints added, until no list is left unsized.
 //!
+//! Disjunctions (`or`, `=>`, `not (a and b)`) are lowered to disjunctive normal form (at most
+//! 64 alternatives) and kept as one constraint: propagation narrows domains once a single
+//! alternative is possible and reports a conflict when none is (naming the constraints that
+//! ruled each out); before sampling, each disjunction still open takes one of its possible
+//! alternatives, chosen with the seeded generator (others tried in turn if its propagation
+//! fails), so `keep(x < 10m or x > 90m)` samples from either side, never in between.
+//!
 //! # Out of scope
-//! Products or quotients of two variables, disjunctions (`or`, `=>` with an undecided premise),
+//! Products or quotients of two variables,
 //! constraints over `var` fields and method results other than `size()` (they hold at run
 //! time, not at resolution) — the checker reports these as unsupported by the solver. `!=`
 //! between numbers is only checked once its variables are fixed, so it is met by resampling

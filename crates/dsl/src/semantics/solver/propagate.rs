@@ -2,7 +2,8 @@
 //!
 //! A linear constraint `Σ aᵢxᵢ + k ≤ 0` bounds each `xᵢ` by the extreme values the other terms
 //! can take (interval arithmetic); `==` is `≤` both ways; `!=` is only checked once all its
-//! variables are fixed. Member constraints intersect member sets. Each new bound records the
+//! variables are fixed. Member constraints intersect member sets. A disjunction narrows
+//! domains once only one of its alternatives is still possible, and is a conflict when none is. Each new bound records the
 //! constraint and the bounds it was computed from, so an emptied domain names its causes.
 
 use super::domain::{union, Domain, Interval, Why, BOUND_TOLERANCE};
@@ -173,6 +174,11 @@ impl Store {
                 self.check(*b)?;
                 Ok(changed)
             }
+            // A disjunction narrows domains only once a single alternative is left.
+            ConstraintKind::Any(alternatives) => match self.alive(id, alternatives)?.as_slice() {
+                [only] => self.apply_all(id, &alternatives[*only]),
+                _ => Ok(false),
+            },
             ConstraintKind::Text {
                 var,
                 value,
@@ -207,6 +213,46 @@ impl Store {
                 self.check(*var)?;
                 Ok(changed)
             }
+        }
+    }
+
+    /// Applies every constraint of a conjunction until none narrows a domain (the budget of
+    /// [`propagate_one`](Self::propagate_one)); true when a domain changed.
+    pub fn apply_all(&mut self, id: ConstraintId, kinds: &[ConstraintKind]) -> Result<bool, Why> {
+        let mut any = false;
+        for _ in 0..MAX_PASSES {
+            let mut changed = false;
+            for k in kinds {
+                changed |= self.apply(id, k)?;
+            }
+            if !changed {
+                break;
+            }
+            any = true;
+        }
+        Ok(any)
+    }
+
+    /// The alternatives of a disjunction that the current domains still allow, or why none.
+    pub fn alive(
+        &mut self,
+        id: ConstraintId,
+        alternatives: &[Vec<ConstraintKind>],
+    ) -> Result<Vec<usize>, Why> {
+        let mut alive = Vec::new();
+        let mut why: Why = vec![id];
+        for (k, alt) in alternatives.iter().enumerate() {
+            let mark = self.checkpoint();
+            match self.apply_all(id, alt) {
+                Ok(_) => alive.push(k),
+                Err(w) => why = union(&why, &w),
+            }
+            self.undo(mark);
+        }
+        if alive.is_empty() {
+            Err(why)
+        } else {
+            Ok(alive)
         }
     }
 

@@ -4,7 +4,7 @@ use rand_chacha::rand_core::{RngCore, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use super::domain::{Domain, Interval, Why};
-use super::ir::{Constraint, ConstraintId, Problem, Strength, Value, VarId};
+use super::ir::{Constraint, ConstraintId, ConstraintKind, Problem, Strength, Value, VarId};
 use super::propagate::Store;
 
 /// Samples tried for one variable before the solver gives up on it.
@@ -114,8 +114,10 @@ impl<'p> Solver<'p> {
         &self.store.doms[v.0 as usize]
     }
 
-    /// Chooses a value for each of `vars` in order, each choice propagated before the next.
+    /// Chooses a value for each of `vars` in order, each choice propagated before the next;
+    /// first, each disjunction over them still open takes one of its possible alternatives.
     pub fn sample(&mut self, vars: &[VarId]) -> Result<(), SolveError> {
+        self.decide(vars);
         for &v in vars {
             self.sample_one(v)?;
         }
@@ -131,6 +133,47 @@ impl<'p> Solver<'p> {
             values,
             dropped_defaults: self.dropped,
         })
+    }
+
+    /// For each active disjunction over one of `vars` with more than one alternative still
+    /// possible, in constraint order: takes one of them, chosen uniformly with the seeded
+    /// generator, and propagates it; one that fails is undone and the next (in a rotation
+    /// from the chosen one) is tried. Taking an alternative only narrows domains; the
+    /// disjunction itself stays active, so every sampled value is checked against all of it.
+    fn decide(&mut self, vars: &[VarId]) {
+        let mut mentioned = vec![false; self.problem.vars.len()];
+        for v in vars {
+            mentioned[v.0 as usize] = true;
+        }
+        for (i, c) in self.problem.constraints.iter().enumerate() {
+            let ConstraintKind::Any(alternatives) = &c.kind else {
+                continue;
+            };
+            if !self.active[i] || !c.kind.vars().iter().any(|v| mentioned[v.0 as usize]) {
+                continue;
+            }
+            let id = ConstraintId(i as u32);
+            let Ok(alive) = self.store.alive(id, alternatives) else {
+                continue;
+            };
+            if alive.len() < 2 {
+                continue;
+            }
+            let first = ((self.next_unit() * alive.len() as f64) as usize).min(alive.len() - 1);
+            for k in 0..alive.len() {
+                let alt = &alternatives[alive[(first + k) % alive.len()]];
+                let mark = self.store.checkpoint();
+                let seeds: Vec<u32> = alt
+                    .iter()
+                    .flat_map(ConstraintKind::vars)
+                    .flat_map(|v| self.watch[v.0 as usize].clone())
+                    .collect();
+                if self.store.apply_all(id, alt).is_ok() && self.run(seeds).is_ok() {
+                    break;
+                }
+                self.store.undo(mark);
+            }
+        }
     }
 
     fn run(&mut self, seeds: impl IntoIterator<Item = u32>) -> Result<(), Why> {
