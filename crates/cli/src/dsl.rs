@@ -76,6 +76,43 @@ fn resolve(args: &ResolveArgs, out: &mut impl Write) -> anyhow::Result<ExitCode>
     }
 }
 
+/// Whether `path` is an OpenSCENARIO DSL file (`.osc`).
+pub fn is_dsl(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("osc"))
+}
+
+/// `oscsim run FILE.osc --road ROAD.xodr`: checks, resolves (with `--seed`), plans and lowers
+/// the DSL scenario to the model the engine runs (`dsl_runtime`). Check errors are printed as
+/// miette reports on stderr; every error names FILE:LINE:COL.
+pub fn planned(
+    file: &Path,
+    road: Option<&Path>,
+    step: &crate::step_args::StepArgs,
+) -> anyhow::Result<scenario::Scenario> {
+    let road = road.ok_or_else(|| {
+        anyhow::anyhow!(
+            "cannot run {}: expected --road FILE.xodr for an OpenSCENARIO DSL scenario, found none",
+            file.display()
+        )
+    })?;
+    let options = dsl_runtime::Options {
+        seed: step.seed,
+        dt: step.dt,
+        open_end: step.duration.is_some(),
+    };
+    match dsl_runtime::load(file, road, &options) {
+        Ok(lowered) => Ok(lowered.scenario),
+        Err(dsl_runtime::LoadError::Check(d)) => {
+            let mut text = Vec::new();
+            write_diagnostics(&d, &mut text)?;
+            eprint!("{}", String::from_utf8_lossy(&text));
+            Err(anyhow::anyhow!("cannot run {}:\n{d}", file.display()))
+        }
+        Err(e) => Err(anyhow::anyhow!("cannot run {}: {e}", file.display())),
+    }
+}
+
 /// `oscsim validate FILE.osc`: the full check (imports, names, types and units, arguments,
 /// modifiers, constraints solved once); `OK` or `FAIL` with every error; `true` when it checks.
 pub fn validate_file(file: &Path, out: &mut impl Write) -> anyhow::Result<bool> {

@@ -117,15 +117,13 @@ struct ExternalBox {
 }
 
 impl OsiSink {
-    /// Prepares the OSI output of `engine`, built from `scenario_path` with `params`.
+    /// Prepares the OSI output of `engine`, built from `scenario` (read from `scenario_path`).
     pub fn create(
         engine: &Engine,
+        scenario: &Scenario,
         scenario_path: &Path,
-        params: &[(String, String)],
         options: &OsiOptions,
     ) -> anyhow::Result<Self> {
-        let scenario = Scenario::load_with_parameters(scenario_path, params)
-            .with_context(|| format!("cannot read {} for --osi", scenario_path.display()))?;
         let network = engine.world().network.clone();
         let map_reference = scenario
             .road_network
@@ -174,10 +172,10 @@ impl OsiSink {
         Ok(OsiSink {
             builder,
             trace,
-            external_boxes: external_boxes(&scenario, &network),
+            external_boxes: external_boxes(scenario, &network),
             network,
             scenario_file: scenario_path.display().to_string(),
-            categories: categories(&scenario),
+            categories: categories(scenario),
             unboxed: BTreeSet::new(),
             host: options
                 .host

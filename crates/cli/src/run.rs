@@ -21,8 +21,11 @@ use engine::{Engine, EventRecord, EventSink, FrameSink};
     after_help = "Exit status: 0 when the run completes, 1 when loading or running fails, 2 on a usage error."
 )]
 pub struct RunArgs {
-    /// The scenario (.xosc).
+    /// The scenario: OpenSCENARIO 1.x (.xosc), or OpenSCENARIO DSL 2.x (.osc, with --road).
     scenario: PathBuf,
+    /// The OpenDRIVE road network an OpenSCENARIO DSL scenario (.osc) runs on.
+    #[arg(long, value_name = "FILE.xodr")]
+    road: Option<PathBuf>,
     #[command(flatten)]
     step: crate::step_args::StepArgs,
     /// Override a global parameter, NAME=VALUE (repeatable).
@@ -125,7 +128,13 @@ impl EventSink for Events {
 pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     let config = args.step.config();
     let wall = Instant::now();
-    let mut engine = Engine::load(&args.scenario, &args.params, config)
+    let scenario = if crate::dsl::is_dsl(&args.scenario) {
+        crate::dsl::planned(&args.scenario, args.road.as_deref(), &args.step)?
+    } else {
+        scenario::Scenario::load_with_parameters(&args.scenario, &args.params)
+            .with_context(|| format!("cannot run {}", args.scenario.display()))?
+    };
+    let mut engine = Engine::build(&scenario, config)
         .with_context(|| format!("cannot run {}", args.scenario.display()))?;
     for (name, text) in &args.values {
         engine.set_user_value(name, engine::user_values::parse_value(text));
@@ -147,8 +156,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
             static_data: args.osi_static,
             every: args.osi_every,
         };
-        let sink =
-            crate::osi_sink::OsiSink::create(&engine, &args.scenario, &args.params, &options)?;
+        let sink = crate::osi_sink::OsiSink::create(&engine, &scenario, &args.scenario, &options)?;
         frames.push(Box::new(sink));
     }
     let record = crate::run_record::RunRecord::new(&args.replay, args.csv.as_deref());
@@ -208,6 +216,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     drop(events.record.take());
     drop(frames);
     record.finish(
+        &scenario,
         &args.scenario,
         &args.params,
         &config,

@@ -7,7 +7,6 @@ use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
-use anyhow::Context;
 use engine::{EngineConfig, EventRecord, EventSink, Frame, FrameSink};
 use replay::recorder::{EventRecorder, Recorder};
 use replay::RunManifest;
@@ -76,6 +75,7 @@ impl RunRecord {
     /// After the run: writes the manifest beside `csv` and the page.
     pub fn finish(
         self,
+        scenario: &scenario::Scenario,
         scenario_path: &Path,
         params: &[(String, String)],
         config: &EngineConfig,
@@ -89,20 +89,11 @@ impl RunRecord {
             .map_err(|_| anyhow::anyhow!("the run's sinks are still alive"))?
             .into_inner();
         let (csv_text, entities) = shared.frames.into_parts();
-        // The engine parsed the scenario already; read once more for the manifest (the model
-        // is not handed out by Engine::load).
-        let scenario = scenario::Scenario::load_with_parameters(scenario_path, params)
-            .with_context(|| {
-                format!(
-                    "cannot read {} for the run manifest",
-                    scenario_path.display()
-                )
-            })?;
         let folder = |p: &Path| p.parent().unwrap_or(Path::new("")).to_owned();
         if let Some(csv) = csv {
             let dir = folder(csv);
             let mut m = replay::manifest_for(
-                &scenario,
+                scenario,
                 scenario_path,
                 params,
                 config,
@@ -115,7 +106,7 @@ impl RunRecord {
         }
         if let Some(html) = self.html {
             let run = replay::Run::from_memory(
-                &scenario,
+                scenario,
                 scenario_path,
                 params,
                 config,

@@ -1,0 +1,257 @@
+//! `until` and `wait` conditions as OpenSCENARIO 1.x triggers (ASAM OpenSCENARIO DSL 2.1 §7.3.9
+//! `until`, §7.3.10 events `rise`/`fall`; §8.7 methods of the domain model). The §8.7 methods
+//! become the 1.x conditions the engine evaluates each step with its own domain functions:
+//!
+//! | DSL | OpenSCENARIO 1.x condition |
+//! | --- | --- |
+//! | `a.time_headway(b) < x` | TimeHeadwayCondition, reference points, road coordinates, longitudinal |
+//! | `a.time_to_collision(b) < x` | TimeToCollisionCondition on entity b, bounding boxes (freespace) |
+//! | `a.space_gap(b, d) < x` | RelativeDistanceCondition, freespace, road coordinates, direction d |
+//! | `a.object_distance(b, d, mode) < x` | RelativeDistanceCondition, freespace when mode is bounding_boxes |
+//! | `a.speed > x` | SpeedCondition |
+//! | `rise(c)` / `fall(c)` / `c` | edge rising / falling / none (a plain condition ends the phase at the first step it holds) |
+//! | `c1 and c2`, `c1 or c2` | one ConditionGroup, two ConditionGroups |
+//!
+//! Conditions measure the world as it stood at the step's start (the engine's trigger rule).
+
+use dsl::semantics::hir::{BinOp, Expr, ExprKind};
+use scenario::{
+    ByValueCondition, Condition, ConditionEdge, ConditionGroup, ConditionKind, CoordinateSystem,
+    DistanceMeasure, EntityCondition, RelativeDistanceType, Rule, StoryboardElementState,
+    StoryboardElementType, TimeToCollisionTarget, Trigger, TriggeringEntities,
+    TriggeringEntitiesRule,
+};
+
+use crate::error::{Error, ErrorKind as K};
+use crate::value::{Ctx, Val};
+
+/// A trigger for a DSL condition; `entity` maps an actor path to its entity name (or `None`
+/// when the path is no vehicle of the plan).
+pub(crate) fn trigger(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    entity: &dyn Fn(&str) -> Option<String>,
+) -> Result<Trigger, Error> {
+    Ok(Trigger {
+        condition_groups: groups(ctx, e, ConditionEdge::None, entity)?,
+    })
+}
+
+fn groups(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    edge: ConditionEdge,
+    entity: &dyn Fn(&str) -> Option<String>,
+) -> Result<Vec<ConditionGroup>, Error> {
+    match &e.kind {
+        ExprKind::Binary(BinOp::Or, a, b) => {
+            let mut g = groups(ctx, a, edge, entity)?;
+            g.extend(groups(ctx, b, edge, entity)?);
+            Ok(g)
+        }
+        ExprKind::Binary(BinOp::And, a, b) => {
+            let (ga, gb) = (groups(ctx, a, edge, entity)?, groups(ctx, b, edge, entity)?);
+            let mut out = Vec::new();
+            for x in &ga {
+                for y in &gb {
+                    let mut c = x.conditions.clone();
+                    c.extend(y.conditions.iter().cloned());
+                    out.push(ConditionGroup { conditions: c });
+                }
+            }
+            Ok(out)
+        }
+        ExprKind::Temporal(n, args) if n.text == "rise" || n.text == "fall" => {
+            let inner = args.first().ok_or_else(|| {
+                ctx.files.err(
+                    K::Condition,
+                    e.span,
+                    format!("expected a condition in {}(…), found none", n.text),
+                )
+            })?;
+            let edge = if n.text == "rise" {
+                ConditionEdge::Rising
+            } else {
+                ConditionEdge::Falling
+            };
+            groups(ctx, &inner.value, edge, entity)
+        }
+        ExprKind::Binary(op, a, b) => {
+            let (rule, flip) = match op {
+                BinOp::Lt => (Rule::LessThan, Rule::GreaterThan),
+                BinOp::Le => (Rule::LessOrEqual, Rule::GreaterOrEqual),
+                BinOp::Gt => (Rule::GreaterThan, Rule::LessThan),
+                BinOp::Ge => (Rule::GreaterOrEqual, Rule::LessOrEqual),
+                BinOp::Eq => (Rule::EqualTo, Rule::EqualTo),
+                BinOp::Ne => (Rule::NotEqualTo, Rule::NotEqualTo),
+                _ => return Err(unsupported(ctx, e)),
+            };
+            let (measure, value, rule) = match (ctx.number(b), ctx.number(a)) {
+                (Ok(v), _) => (a, v, rule),
+                (Err(_), Ok(v)) => (b, v, flip),
+                (Err(err), Err(_)) => return Err(err),
+            };
+            let condition = measured(ctx, measure, value, rule, entity)?;
+            Ok(vec![ConditionGroup {
+                conditions: vec![Condition {
+                    name: format!("until@{}", ctx.files.at(e.span)),
+                    condition_edge: edge,
+                    delay: 0.0,
+                    kind: condition,
+                    pos: ctx.files.pos(e.span),
+                }],
+            }])
+        }
+        _ => Err(unsupported(ctx, e)),
+    }
+}
+
+fn unsupported(ctx: &Ctx<'_>, e: &Expr) -> Error {
+    ctx.files.err(
+        K::Condition,
+        e.span,
+        "expected a comparison of a §8.7 method or speed with a value (or rise/fall/and/or of such), found another expression",
+    )
+}
+
+fn measured(
+    ctx: &Ctx<'_>,
+    measure: &Expr,
+    value: f64,
+    rule: Rule,
+    entity: &dyn Fn(&str) -> Option<String>,
+) -> Result<ConditionKind, Error> {
+    let actor = |e: &Expr| -> Result<String, Error> {
+        ctx.path_of(e).and_then(|p| entity(&p)).ok_or_else(|| {
+            ctx.files.err(
+                K::UnknownActor,
+                e.span,
+                "expected a vehicle of the scenario, found another expression",
+            )
+        })
+    };
+    let by = |who: String, c: EntityCondition| ConditionKind::ByEntity {
+        triggering_entities: TriggeringEntities {
+            rule: TriggeringEntitiesRule::Any,
+            entity_refs: vec![who],
+        },
+        entity_condition: c,
+    };
+    let measure_of = |freespace: bool, dir: Option<RelativeDistanceType>| DistanceMeasure {
+        freespace,
+        coordinate_system: Some(CoordinateSystem::Road),
+        relative_distance_type: dir,
+        routing_algorithm: None,
+    };
+    match &measure.kind {
+        ExprKind::Field(obj, f) if f.text == "speed" => Ok(by(
+            actor(obj)?,
+            EntityCondition::Speed {
+                value,
+                rule,
+                direction: None,
+            },
+        )),
+        ExprKind::Call(callee, args) => {
+            let ExprKind::Field(obj, method) = &callee.kind else {
+                return Err(unsupported(ctx, measure));
+            };
+            let who = actor(obj)?;
+            let arg = |name: &str, i: usize| {
+                args.iter()
+                    .find(|a| a.name.as_ref().is_some_and(|n| n.text == name))
+                    .or_else(|| args.get(i).filter(|a| a.name.is_none()))
+                    .map(|a| &a.value)
+            };
+            let reference = match arg("reference", 0) {
+                Some(r) => actor(r)?,
+                None => {
+                    return Err(ctx.files.err(
+                        K::Condition,
+                        measure.span,
+                        "expected a reference argument, found none",
+                    ))
+                }
+            };
+            let direction = |i: usize| -> Result<Option<RelativeDistanceType>, Error> {
+                Ok(
+                    match arg("direction", i).map(|d| ctx.eval(d)).transpose()? {
+                        Some(Val::Enum(d)) if d == "lateral" => Some(RelativeDistanceType::Lateral),
+                        _ => Some(RelativeDistanceType::Longitudinal),
+                    },
+                )
+            };
+            let c = match method.text.as_str() {
+                "time_headway" => EntityCondition::TimeHeadway {
+                    entity_ref: reference,
+                    value,
+                    rule,
+                    measure: measure_of(false, Some(RelativeDistanceType::Longitudinal)),
+                },
+                "time_to_collision" => EntityCondition::TimeToCollision {
+                    target: TimeToCollisionTarget::EntityRef(reference),
+                    value,
+                    rule,
+                    measure: DistanceMeasure {
+                        freespace: true,
+                        coordinate_system: None,
+                        relative_distance_type: None,
+                        routing_algorithm: None,
+                    },
+                },
+                "space_gap" => EntityCondition::RelativeDistance {
+                    entity_ref: reference,
+                    value,
+                    rule,
+                    measure: measure_of(true, direction(1)?),
+                },
+                "object_distance" => {
+                    let boxes = matches!(
+                        arg("mode", 2).map(|m| ctx.eval(m)).transpose()?,
+                        Some(Val::Enum(m)) if m == "bounding_boxes"
+                    );
+                    EntityCondition::RelativeDistance {
+                        entity_ref: reference,
+                        value,
+                        rule,
+                        measure: measure_of(boxes, direction(1)?),
+                    }
+                }
+                _ => return Err(unsupported(ctx, measure)),
+            };
+            Ok(by(who, c))
+        }
+        _ => Err(unsupported(ctx, measure)),
+    }
+}
+
+/// A condition on the state of the phase `act` (a storyboard Act), reported `delay` s later.
+pub(crate) fn act_state(
+    act: &str,
+    state: StoryboardElementState,
+    delay: f64,
+    pos: scenario::SourcePos,
+) -> Condition {
+    Condition {
+        name: format!("{act}:{}", state.as_str()),
+        condition_edge: ConditionEdge::None,
+        delay,
+        kind: ConditionKind::ByValue(ByValueCondition::StoryboardElementState {
+            storyboard_element_type: StoryboardElementType::Act,
+            storyboard_element_ref: act.to_string(),
+            state,
+        }),
+        pos,
+    }
+}
+
+/// `SimulationTime rule t`.
+pub(crate) fn sim_time(t: f64, rule: Rule, pos: scenario::SourcePos) -> Condition {
+    Condition {
+        name: format!("time {} {t}", rule.as_str()),
+        condition_edge: ConditionEdge::None,
+        delay: 0.0,
+        kind: ConditionKind::ByValue(ByValueCondition::SimulationTime { value: t, rule }),
+        pos,
+    }
+}

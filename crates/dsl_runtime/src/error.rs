@@ -1,0 +1,90 @@
+//! Errors of planning and lowering, each with the place in the `.osc` file it is about
+//! (`FILE:LINE:COL`), found before the run starts.
+
+use std::fmt;
+
+use dsl::semantics::hir::Span;
+use dsl::Source;
+
+/// What went wrong.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// The file has no scenario with a `do` to run, or several.
+    NoScenario,
+    /// An actor expression that names no vehicle of the program.
+    UnknownActor,
+    /// A modifier the action does not take, or that the runtime does not run.
+    Modifier,
+    /// An action or behavior the runtime does not run.
+    Unsupported,
+    /// A phase that cannot end (no duration, no `until`, nothing that ends it).
+    NoEnd,
+    /// Constraints the planner cannot meet (`at: end` out of the vehicle's limits, a lane that
+    /// does not exist).
+    Unsatisfiable,
+    /// A value that is not a constant the planner can compute.
+    Value,
+    /// A condition (`until`, `wait`) the runtime cannot evaluate.
+    Condition,
+    /// The road network does not offer what the scenario needs.
+    Road,
+}
+
+/// A planning error.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub struct Error {
+    /// What went wrong.
+    pub kind: ErrorKind,
+    /// Lowercase message ("expected …, found …").
+    pub message: String,
+    /// `FILE:LINE:COL` of the construct.
+    pub at: String,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} at {}", self.message, self.at)
+    }
+}
+
+/// Places spans in the program's files.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Files<'a>(pub &'a [Source]);
+
+impl Files<'_> {
+    /// `FILE:LINE:COL` of `span`.
+    pub(crate) fn at(&self, span: Span) -> String {
+        match self.0.get(span.file.0 as usize) {
+            Some(f) => {
+                let (l, c) = f.line_col(span.start);
+                format!("{}:{l}:{c}", f.name)
+            }
+            None => "?:1:1".into(),
+        }
+    }
+
+    /// An error of `kind` at `span`.
+    pub(crate) fn err(&self, kind: ErrorKind, span: Span, message: impl Into<String>) -> Error {
+        Error {
+            kind,
+            message: message.into(),
+            at: self.at(span),
+        }
+    }
+}
+
+impl Files<'_> {
+    /// The scenario model's position of `span` (for runtime errors that point into the `.osc`).
+    pub(crate) fn pos(&self, span: Span) -> scenario::SourcePos {
+        let (name, (line, col)) = match self.0.get(span.file.0 as usize) {
+            Some(f) => (f.name.as_str(), f.line_col(span.start)),
+            None => ("?", (1, 1)),
+        };
+        scenario::SourcePos {
+            file: std::sync::Arc::from(std::path::Path::new(name)),
+            line: line as u32,
+            col: col as u32,
+        }
+    }
+}

@@ -1,0 +1,225 @@
+//! The plan as an OpenSCENARIO 1.x scenario model (`scenario::Scenario`), which the engine runs
+//! as it runs an XML scenario (OpenSCENARIO 1.3 §7.2.1 Storyboard, §7.3.1 ManeuverGroups).
+//!
+//! | plan | OpenSCENARIO 1.x |
+//! | --- | --- |
+//! | the scenario | one Story named after it |
+//! | a phase | an Act named by the phase's path; StartTrigger: its start (none at 0 s); StopTrigger: its end |
+//! | a phase lasting until its end | a ManeuverGroup `PATH/hold` whose Event waits on a condition that is never true, so only the StopTrigger ends the Act (its `stopTransition` is the phase's end line) |
+//! | an actor's actions in a phase | a ManeuverGroup `PATH/ACTOR` with one Event per action (starting with the Act, or at an absolute time) |
+//! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step) |
+//! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
+//!
+//! Acts are written children first, so that a composition that ends with its members sees
+//! their end in the same step.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use scenario::{
+    Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
+    EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup, Position,
+    PositionKind, Priority, Private, PrivateAction, RoadNetwork, Rule, Scenario, ScenarioObject,
+    SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics, Trigger,
+};
+
+use crate::condition::sim_time;
+use crate::plan::{Plan, When};
+
+/// Builds the scenario model of `plan`; `file` is the `.osc` path, `road` the OpenDRIVE file.
+pub(crate) fn lower(
+    plan: &Plan,
+    name: &str,
+    file: &Path,
+    road: &Path,
+    files: crate::error::Files<'_>,
+) -> Scenario {
+    let origin = SourcePos::start_of(Arc::from(file));
+    let mut privates = Vec::new();
+    let mut objects = Vec::new();
+    for e in &plan.entities {
+        let lane = e.track.lane(0.0);
+        let (s, v) = e.track.at(0.0);
+        objects.push(ScenarioObject {
+            name: e.name.clone(),
+            entity_object: EntityObject::Vehicle(Box::new(e.vehicle.clone())),
+            object_controllers: Vec::new(),
+            pos: origin.clone(),
+        });
+        let action = |kind| Action {
+            name: String::new(),
+            kind: ActionKind::Private(kind),
+            pos: origin.clone(),
+        };
+        privates.push(Private {
+            entity_ref: e.name.clone(),
+            actions: vec![
+                action(PrivateAction::Teleport(Position {
+                    kind: PositionKind::Lane {
+                        road_id: plan.road.clone(),
+                        lane_id: lane.to_string(),
+                        s,
+                        offset: Some(0.0),
+                        orientation: None,
+                    },
+                    pos: origin.clone(),
+                })),
+                action(PrivateAction::Longitudinal(LongitudinalAction::Speed {
+                    dynamics: TransitionDynamics {
+                        dynamics_shape: DynamicsShape::Step,
+                        dynamics_dimension: DynamicsDimension::Time,
+                        value: 0.0,
+                        following_mode: None,
+                    },
+                    target: SpeedTarget::Absolute(v),
+                })),
+            ],
+        });
+    }
+    let acts = plan
+        .phases
+        .iter()
+        .map(|ph| {
+            let pos = files.pos(ph.span);
+            let mut groups = vec![hold_group(&ph.path, pos.clone())];
+            let mut actors: Vec<&str> = Vec::new();
+            for a in &ph.actions {
+                if !actors.contains(&a.entity.as_str()) {
+                    actors.push(&a.entity);
+                }
+            }
+            for actor in actors {
+                let events = ph
+                    .actions
+                    .iter()
+                    .filter(|a| a.entity == actor)
+                    .map(|a| {
+                        let pos = files.pos(a.span);
+                        Event {
+                            name: a.name.clone(),
+                            priority: Priority::Parallel,
+                            maximum_execution_count: 1,
+                            actions: vec![Action {
+                                name: a.name.clone(),
+                                kind: ActionKind::Private(a.action.clone()),
+                                pos: pos.clone(),
+                            }],
+                            start_trigger: a.at.map(|t| Trigger {
+                                condition_groups: vec![ConditionGroup {
+                                    conditions: vec![sim_time(
+                                        t,
+                                        Rule::GreaterOrEqual,
+                                        pos.clone(),
+                                    )],
+                                }],
+                            }),
+                            pos,
+                        }
+                    })
+                    .collect();
+                let name = format!("{}/{actor}", ph.path);
+                groups.push(ManeuverGroup {
+                    name: name.clone(),
+                    maximum_execution_count: 1,
+                    actors: Actors {
+                        select_triggering_entities: false,
+                        entity_refs: vec![actor.to_string()],
+                    },
+                    maneuvers: vec![Maneuver {
+                        name,
+                        events,
+                        catalog: None,
+                        pos: pos.clone(),
+                    }],
+                    pos: pos.clone(),
+                });
+            }
+            Act {
+                name: ph.path.clone(),
+                maneuver_groups: groups,
+                start_trigger: match &ph.start {
+                    When::At(t) if *t <= 0.0 => None,
+                    w => trigger_of(w),
+                },
+                stop_trigger: trigger_of(&ph.end),
+                pos,
+            }
+        })
+        .collect();
+    Scenario {
+        path: file.to_path_buf(),
+        file_header: FileHeader {
+            rev_major: 1,
+            rev_minor: 3,
+            date: String::new(),
+            description: format!("OpenSCENARIO DSL scenario {name}, planned by oscsim"),
+            author: String::new(),
+            license: None,
+        },
+        parameter_declarations: Vec::new(),
+        variable_declarations: Vec::new(),
+        monitor_declarations: Vec::new(),
+        catalog_locations: Vec::new(),
+        road_network: RoadNetwork {
+            logic_file: Some(PathBuf::from(road)),
+            ..RoadNetwork::default()
+        },
+        entities: Entities {
+            scenario_objects: objects,
+            entity_selections: Vec::new(),
+        },
+        storyboard: Storyboard {
+            init: Init {
+                actions: Vec::new(),
+                privates,
+            },
+            stories: vec![Story {
+                name: name.to_string(),
+                acts,
+                pos: origin,
+            }],
+            stop_trigger: None,
+        },
+        parameter_value_distribution: None,
+        warnings: Vec::new(),
+    }
+}
+
+fn trigger_of(w: &When) -> Option<Trigger> {
+    let groups = w.groups();
+    (!groups.is_empty()).then_some(Trigger {
+        condition_groups: groups,
+    })
+}
+
+/// The group that keeps a phase's Act running until its StopTrigger: an Event whose start
+/// condition (simulation time below 0 s) never holds.
+fn hold_group(path: &str, pos: SourcePos) -> ManeuverGroup {
+    let name = format!("{path}/hold");
+    ManeuverGroup {
+        name: name.clone(),
+        maximum_execution_count: 1,
+        actors: Actors {
+            select_triggering_entities: false,
+            entity_refs: Vec::new(),
+        },
+        maneuvers: vec![Maneuver {
+            name: name.clone(),
+            events: vec![Event {
+                name: name.clone(),
+                priority: Priority::Parallel,
+                maximum_execution_count: 1,
+                actions: Vec::new(),
+                start_trigger: Some(Trigger {
+                    condition_groups: vec![ConditionGroup {
+                        conditions: vec![sim_time(0.0, Rule::LessThan, pos.clone())],
+                    }],
+                }),
+                pos: pos.clone(),
+            }],
+            catalog: None,
+            pos: pos.clone(),
+        }],
+        pos,
+    }
+}

@@ -1,0 +1,250 @@
+//! Initial placement (ASAM OpenSCENARIO DSL 2.1 §8.9, constraints `at: start` / `at: all` of
+//! an actor's first phase): lane, s along the plan's road and speed of every vehicle at time 0.
+//!
+//! - `lane(n [, from: left])`: the n-th driving lane from the right (left); `lane(same_as: x)`,
+//!   `lane(side_of: x, side: s)` (n lanes beside x, `side` left by default), `left_of` /
+//!   `right_of`. No lane constraint: lane 1 (the rightmost driving lane).
+//! - `position(d, ahead_of: x)` / `behind: x`: d between the reference points (the rear axle
+//!   centres, as the engine's positions); `time: t` for d = t · x's speed; `position(d)` alone:
+//!   s = d. A vehicle group's members: member 0 where the group is placed (beside its lane
+//!   reference when it has no position), each next one behind the previous with
+//!   [`GROUP_GAP`] between bumpers. Nothing places an actor: it floats, and floating actors are
+//!   shifted together so that the rearmost bumper is at [`FLOAT_REAR`].
+//! - `speed(v)`, `speed(v, faster_than: x)` (x's speed + v), `slower_than`, `same_as`; nothing:
+//!   [`DEFAULT_SPEED`].
+
+use std::collections::HashMap;
+
+use crate::error::{Error, ErrorKind as K};
+use crate::modifier::{At, Mod, ModKind};
+use crate::road::PlanRoad;
+use crate::value::{Ctx, Val};
+
+/// Bumper-to-bumper gap between members of a group (m).
+pub(crate) const GROUP_GAP: f64 = 10.0;
+/// s of the rearmost bumper of actors nothing places (m).
+pub(crate) const FLOAT_REAR: f64 = 10.0;
+/// Speed of an actor nothing gives a speed (m/s): 50 km/h.
+pub(crate) const DEFAULT_SPEED: f64 = 50.0 / 3.6;
+
+/// One actor to place: its placing modifiers, and for a group member its group's place.
+pub(crate) struct ToPlace<'m, 'p> {
+    /// Entity name.
+    pub name: String,
+    /// The modifiers of its first phase that hold at the start.
+    pub mods: Vec<&'m Mod<'p>>,
+    /// For a group member: the previous member (None for the first one).
+    pub member_after: Option<Option<String>>,
+    /// Front and rear overhang of the bounding box from the reference point (m).
+    pub front: f64,
+    /// Rear overhang (m).
+    pub rear: f64,
+    /// Its first phase (for errors when no modifier places it).
+    pub span: dsl::semantics::hir::Span,
+}
+
+/// Where an actor starts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Start {
+    /// Lane id.
+    pub lane: i32,
+    /// s (m).
+    pub s: f64,
+    /// Speed (m/s).
+    pub v: f64,
+}
+
+/// Places every actor of `all`.
+pub(crate) fn place(
+    ctx: &Ctx<'_>,
+    road: &PlanRoad<'_>,
+    all: &[ToPlace<'_, '_>],
+    entity: &dyn Fn(&str) -> Option<String>,
+) -> Result<HashMap<String, Start>, Error> {
+    let mut lane: HashMap<String, i32> = HashMap::new();
+    let mut s: HashMap<String, (f64, bool)> = HashMap::new();
+    let mut v: HashMap<String, f64> = HashMap::new();
+    fn find<'m, 'p>(p: &ToPlace<'m, 'p>, kind: ModKind) -> Option<&'m Mod<'p>> {
+        p.mods
+            .iter()
+            .find(|m| m.kind == kind && m.at != At::End)
+            .copied()
+    }
+    let reference = |m: &Mod<'_>, names: &[&str]| -> Result<Option<(String, String)>, Error> {
+        for n in names {
+            if let Some(e) = m.arg(n) {
+                let ent = ctx.path_of(e).and_then(|p| entity(&p)).ok_or_else(|| {
+                    ctx.files.err(
+                        K::UnknownActor,
+                        e.span,
+                        format!("expected a vehicle for `{n}:`, found another value"),
+                    )
+                })?;
+                return Ok(Some((n.to_string(), ent)));
+            }
+        }
+        Ok(None)
+    };
+    let number = |m: &Mod<'_>, n: &str| m.arg(n).map(|e| ctx.number(e)).transpose();
+    for _round in 0..=all.len() {
+        let mut progress = false;
+        for p in all {
+            // Speed.
+            if !v.contains_key(&p.name) {
+                let value = match find(p, ModKind::Speed) {
+                    None => Some(DEFAULT_SPEED),
+                    Some(m) => {
+                        let own = number(m, "speed")?;
+                        match reference(m, &["faster_than", "slower_than", "same_as"])? {
+                            None => Some(own.unwrap_or(DEFAULT_SPEED)),
+                            Some((how, x)) => v.get(&x).map(|vx| match how.as_str() {
+                                "faster_than" => vx + own.unwrap_or(0.0),
+                                "slower_than" => vx - own.unwrap_or(0.0),
+                                _ => *vx,
+                            }),
+                        }
+                    }
+                };
+                if let Some(x) = value {
+                    v.insert(p.name.clone(), x);
+                    progress = true;
+                }
+            }
+            // Lane.
+            if !lane.contains_key(&p.name) {
+                let at_s = s.get(&p.name).map_or(0.0, |x| x.0);
+                let value = match find(p, ModKind::Lane) {
+                    None => Some(road.numbered(1, false, at_s)),
+                    Some(m) => {
+                        let n = number(m, "lane")?.map_or(1, |x| x.round() as i64);
+                        let from_left = matches!(m.arg("from").map(|e| ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
+                        match reference(m, &["same_as", "side_of", "left_of", "right_of"])? {
+                            None => Some(road.numbered(n, from_left, at_s)),
+                            Some((how, x)) => lane.get(&x).map(|lx| match how.as_str() {
+                                "same_as" => Some(*lx),
+                                "left_of" => road.beside(*lx, true, n, at_s),
+                                "right_of" => road.beside(*lx, false, n, at_s),
+                                _ => {
+                                    let left = !matches!(m.arg("side").map(|e| ctx.eval(e)).transpose(), Ok(Some(Val::Enum(sd))) if sd == "right");
+                                    road.beside(*lx, left, n, at_s)
+                                }
+                            }),
+                        }
+                    }
+                };
+                if let Some(l) = value {
+                    let Some(l) = l else {
+                        let span = find(p, ModKind::Lane).map_or(p.span, |m| m.app.span);
+                        return Err(ctx.files.err(
+                            K::Unsatisfiable,
+                            span,
+                            format!(
+                                "expected a driving lane for `{}` on road {}, found none there",
+                                p.name,
+                                road.id()
+                            ),
+                        ));
+                    };
+                    lane.insert(p.name.clone(), l);
+                    progress = true;
+                }
+            }
+            // Position.
+            if !s.contains_key(&p.name) {
+                let value = match find(p, ModKind::Position) {
+                    Some(m) => {
+                        let r = reference(m, &["ahead_of", "behind"])?;
+                        let d = match (number(m, "distance")?, number(m, "time")?, &r) {
+                            (Some(d), _, _) => Some(d),
+                            (None, Some(t), Some((_, x))) => v.get(x).map(|vx| t * vx),
+                            _ => {
+                                return Err(ctx.files.err(
+                                    K::Unsatisfiable,
+                                    m.app.span,
+                                    "expected a distance (or a time and a reference) in position(…), found neither",
+                                ))
+                            }
+                        };
+                        match (d, r) {
+                            (None, _) => None,
+                            (Some(d), None) => Some((d, false)),
+                            (Some(d), Some((how, x))) => s.get(&x).map(|(sx, fl)| {
+                                (if how == "ahead_of" { sx + d } else { sx - d }, *fl)
+                            }),
+                        }
+                    }
+                    None => match &p.member_after {
+                        Some(Some(prev)) => {
+                            let prev_rear =
+                                all.iter().find(|q| &q.name == prev).map_or(0.0, |q| q.rear);
+                            s.get(prev)
+                                .map(|(sp, fl)| (sp - prev_rear - GROUP_GAP - p.front, *fl))
+                        }
+                        _ => match find(p, ModKind::Lane)
+                            .map(|m| reference(m, &["same_as", "side_of", "left_of", "right_of"]))
+                            .transpose()?
+                            .flatten()
+                        {
+                            // Beside (or in the lane of) a reference: alongside it.
+                            Some((how, x)) if how != "same_as" => s.get(&x).copied(),
+                            _ => Some((0.0, true)),
+                        },
+                    },
+                };
+                if let Some(x) = value {
+                    s.insert(p.name.clone(), x);
+                    progress = true;
+                }
+            }
+        }
+        if !progress {
+            break;
+        }
+    }
+    // Shift floating actors behind the start of the road.
+    let rearmost = all
+        .iter()
+        .filter_map(|p| s.get(&p.name).filter(|x| x.1).map(|x| x.0 - p.rear))
+        .fold(f64::INFINITY, f64::min);
+    let shift = if rearmost.is_finite() {
+        FLOAT_REAR - rearmost
+    } else {
+        0.0
+    };
+    let mut out = HashMap::new();
+    for p in all {
+        let (Some(l), Some((sv, fl)), Some(vv)) =
+            (lane.get(&p.name), s.get(&p.name), v.get(&p.name))
+        else {
+            let span = p.mods.first().map_or(p.span, |m| m.app.span);
+            return Err(ctx.files.err(
+                K::Unsatisfiable,
+                span,
+                format!("expected a placement of `{}` that does not depend on itself, found a cycle of references", p.name),
+            ));
+        };
+        let sv = if *fl { sv + shift } else { *sv };
+        if sv - p.rear < 0.0 || sv + p.front > road.length() {
+            let span = p.mods.first().map_or(p.span, |m| m.app.span);
+            return Err(ctx.files.err(
+                K::Road,
+                span,
+                format!(
+                    "expected `{}` on road {} (0 m to {:.1} m), found it placed at s = {sv:.2} m",
+                    p.name,
+                    road.id(),
+                    road.length()
+                ),
+            ));
+        }
+        out.insert(
+            p.name.clone(),
+            Start {
+                lane: *l,
+                s: sv,
+                v: *vv,
+            },
+        );
+    }
+    Ok(out)
+}

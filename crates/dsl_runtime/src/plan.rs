@@ -1,0 +1,916 @@
+//! The plan: when each phase starts and ends, and what each actor does in it (ASAM OpenSCENARIO
+//! DSL 2.1 §7.3.9 composition semantics, §8.9 movement modifiers).
+//!
+//! # When phases start and end
+//!
+//! - `serial`: a member starts when the one before it ends; the composition ends with its last
+//!   member. `parallel`: members start together; it ends with its own `duration`/`until`, else
+//!   when the last member that has an end of its own ends, and members without one end with it.
+//!   `one_of`: the member drawn from the seed, as a one-member serial.
+//! - A phase's `duration` (a range is drawn from the seed) or `until` (whichever comes first)
+//!   ends it; an invocation without either ends with its composition, or when the motion the
+//!   planner chose for a `position(…, at: end)` meets it (a constant-speed closing).
+//! - A phase that nothing ends is an error before the run, unless it is the last thing the
+//!   scenario does and the run is bounded (`--duration`).
+//!
+//! Times the plan knows are absolute (a SimulationTimeCondition); after an `until` or a `wait`
+//! on a condition, the next phase starts on the state of the one that ended (same step), and a
+//! `duration` there counts from the phase's own start.
+//!
+//! # What actors do
+//!
+//! `speed(v)` (`at: all`/`start`): the actor's speed from the phase start (a step: `at: all`
+//! cannot hold otherwise); in its first phase, its initial speed. `speed(v, at: end)` and
+//! `change_speed(v)`: a linear change over the phase. `position(d, ahead_of|behind: x, at:
+//! end)`: a speed profile of two linear halves, v0 → vm over T/2 and vm → ve over T/2, with vm =
+//! (4·Δs/T − v0 − ve)/2 so that the distance covered is Δs (ve is the phase's end speed: its
+//! `speed(…)`, else v0). `lane(…, at: end)` and `change_lane(n, side)`: a sinusoidal lane change
+//! over the phase. Limits: speeds 0 to 70 m/s, accelerations up to 10 m/s²; beyond them the
+//! constraint is unsatisfiable, an error naming the modifier.
+
+use std::collections::HashMap;
+
+use dsl::semantics::hir::{Expr, Span};
+use scenario::{
+    ConditionGroup, DynamicsDimension, DynamicsShape, LaneChangeTarget, LateralAction,
+    LongitudinalAction, PrivateAction, SpeedTarget, SpeedTargetValueType, StoryboardElementState,
+    TransitionDynamics, Trigger, Vehicle,
+};
+
+use crate::actors::{self, ActorKind, MAX_ACCELERATION, MAX_SPEED};
+use crate::condition::{act_state, sim_time, trigger};
+use crate::error::{Error, ErrorKind as K};
+use crate::modifier::{read, At, Mod, ModKind};
+use crate::phase::{Invoke, Kind, Phase};
+use crate::place::{place, ToPlace};
+use crate::road::PlanRoad;
+use crate::track::Track;
+use crate::value::{Ctx, Val};
+
+/// How far from a constraint's value the plan may end (m), for `position(…, at: end)` checked
+/// against a constant speed.
+pub const POSITION_TOLERANCE: f64 = 0.5;
+
+/// A moment of the plan.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum When {
+    /// At this simulation time (s).
+    At(f64),
+    /// When this trigger fires.
+    Dyn(Trigger),
+    /// Never (the run's bound ends it).
+    Never,
+    /// With the enclosing parallel (filled in once it is known).
+    Pending,
+}
+
+impl When {
+    /// The earlier of two ends.
+    fn or(self, other: When) -> When {
+        match (self, other) {
+            (When::Pending, x) | (x, When::Pending) => x,
+            (When::Never, x) | (x, When::Never) => x,
+            (When::At(a), When::At(b)) => When::At(a.min(b)),
+            (a, b) => {
+                let mut groups = a.groups();
+                groups.extend(b.groups());
+                When::Dyn(Trigger {
+                    condition_groups: groups,
+                })
+            }
+        }
+    }
+
+    /// As OR-ed condition groups.
+    pub(crate) fn groups(&self) -> Vec<ConditionGroup> {
+        match self {
+            When::At(t) => vec![ConditionGroup {
+                conditions: vec![sim_time(
+                    *t,
+                    scenario::Rule::GreaterOrEqual,
+                    scenario::SourcePos::start_of(std::sync::Arc::from(std::path::Path::new(""))),
+                )],
+            }],
+            When::Dyn(t) => t.condition_groups.clone(),
+            When::Never | When::Pending => Vec::new(),
+        }
+    }
+
+    fn time(&self) -> Option<f64> {
+        match self {
+            When::At(t) => Some(*t),
+            _ => None,
+        }
+    }
+}
+
+/// One phase of the plan.
+#[derive(Debug, Clone)]
+pub(crate) struct PhasePlan {
+    /// Its path (the Act's name).
+    pub path: String,
+    /// Where it is written.
+    pub span: Span,
+    /// Start.
+    pub start: When,
+    /// End.
+    pub end: When,
+    /// What the actors do.
+    pub actions: Vec<Planned>,
+}
+
+/// An action of a phase.
+#[derive(Debug, Clone)]
+pub(crate) struct Planned {
+    /// The entity.
+    pub entity: String,
+    /// Absolute start time, when it does not start with the phase.
+    pub at: Option<f64>,
+    /// Its name.
+    pub name: String,
+    /// The action.
+    pub action: PrivateAction,
+    /// The modifier it comes from.
+    pub span: Span,
+}
+
+/// A vehicle of the plan.
+#[derive(Debug, Clone)]
+pub(crate) struct Entity {
+    /// Its name (the actor's path).
+    pub name: String,
+    /// The engine's model of it.
+    pub vehicle: Vehicle,
+    /// Planned motion.
+    pub track: Track,
+}
+
+/// The whole plan.
+#[derive(Debug, Clone)]
+pub(crate) struct Plan {
+    /// The road everything is placed on.
+    pub road: String,
+    /// The vehicles, in the order the `do` tree first names them.
+    pub entities: Vec<Entity>,
+    /// The phases, children before their composition.
+    pub phases: Vec<PhasePlan>,
+}
+
+/// Options of planning.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Settings {
+    /// The engine's step (s).
+    pub dt: f64,
+    /// A phase may have no end (the run is bounded from outside).
+    pub open_end: bool,
+}
+
+struct Planner<'c, 'a> {
+    ctx: &'c Ctx<'a>,
+    settings: Settings,
+    entities: Vec<Entity>,
+    index: HashMap<String, usize>,
+    groups: HashMap<String, Vec<String>>,
+    first_leaf: HashMap<String, String>,
+    phases: Vec<PhasePlan>,
+}
+
+/// Plans `root` on `road`.
+pub(crate) fn plan(
+    ctx: &Ctx<'_>,
+    road: &PlanRoad<'_>,
+    root: &Phase<'_>,
+    settings: Settings,
+) -> Result<Plan, Error> {
+    let mut p = Planner {
+        ctx,
+        settings,
+        entities: Vec::new(),
+        index: HashMap::new(),
+        groups: HashMap::new(),
+        first_leaf: HashMap::new(),
+        phases: Vec::new(),
+    };
+    // Actors, in the order the tree names them, and each one's first phase.
+    let mut leaves_mods: Vec<(&Phase<'_>, Vec<Mod<'_>>)> = Vec::new();
+    for leaf in root.leaves() {
+        let Kind::Invoke(inv) = &leaf.kind else {
+            continue;
+        };
+        let names = p.register(&inv.actor, inv.actor_expr.span)?;
+        let mut mods = Vec::new();
+        for m in &inv.modifiers {
+            let m = read(ctx, m)?;
+            for key in [
+                "ahead_of",
+                "behind",
+                "same_as",
+                "side_of",
+                "left_of",
+                "right_of",
+                "faster_than",
+                "slower_than",
+            ] {
+                if let Some(e) = m.arg(key) {
+                    let path = ctx.path_of(e).ok_or_else(|| {
+                        ctx.files.err(
+                            K::UnknownActor,
+                            e.span,
+                            format!("expected a vehicle for `{key}:`, found an expression"),
+                        )
+                    })?;
+                    p.register(&path, e.span)?;
+                }
+            }
+            mods.push(m);
+        }
+        for n in names {
+            p.first_leaf.entry(n).or_insert_with(|| leaf.path.clone());
+        }
+        leaves_mods.push((leaf, mods));
+    }
+    // Initial placement from each actor's first phase.
+    let mut to_place = Vec::new();
+    for e in &p.entities {
+        let first = p.first_leaf.get(&e.name);
+        let (mods, span, actor): (Vec<&Mod<'_>>, Span, Option<&str>) =
+            match leaves_mods.iter().find(|(l, _)| Some(&l.path) == first) {
+                Some((l, m)) => (
+                    m.iter().filter(|m| m.at != At::End).collect(),
+                    l.span,
+                    match &l.kind {
+                        Kind::Invoke(i) => Some(i.actor.as_str()),
+                        _ => None,
+                    },
+                ),
+                None => (Vec::new(), root.span, None),
+            };
+        let member_after = actor.and_then(|a| p.groups.get(a)).map(|members| {
+            let i = members.iter().position(|m| *m == e.name).unwrap_or(0);
+            (i > 0).then(|| members[i - 1].clone())
+        });
+        let bb = e.vehicle.bounding_box;
+        to_place.push(ToPlace {
+            name: e.name.clone(),
+            mods,
+            member_after,
+            front: bb.center[0] + bb.length / 2.0,
+            rear: bb.length / 2.0 - bb.center[0],
+            span,
+        });
+    }
+    let entity = |path: &str| p.index.contains_key(path).then(|| path.to_string());
+    let starts = place(ctx, road, &to_place, &entity)?;
+    for e in &mut p.entities {
+        let s = starts[&e.name];
+        e.track = Track::new(s.s, s.v, s.lane);
+    }
+    let mods: HashMap<String, &Vec<Mod<'_>>> = leaves_mods
+        .iter()
+        .map(|(l, m)| (l.path.clone(), m))
+        .collect();
+    let end = p.schedule(root, When::At(0.0), None, &mods)?;
+    if end == When::Never && !settings.open_end {
+        return Err(no_end(ctx, root));
+    }
+    Ok(Plan {
+        road: road.id().to_string(),
+        entities: p.entities,
+        phases: p.phases,
+    })
+}
+
+fn no_end(ctx: &Ctx<'_>, p: &Phase<'_>) -> Error {
+    ctx.files.err(
+        K::NoEnd,
+        p.span,
+        format!(
+            "expected a way for phase `{}` to end (a duration, an until, or a member that ends), found none; give it one or bound the run with --duration",
+            p.path
+        ),
+    )
+}
+
+impl Planner<'_, '_> {
+    /// Registers the vehicle(s) `path` names; returns the entity names.
+    fn register(&mut self, path: &str, span: Span) -> Result<Vec<String>, Error> {
+        let names = match actors::classify(self.ctx, path) {
+            Some(ActorKind::Vehicle) => vec![path.to_string()],
+            Some(ActorKind::Group(members)) => {
+                self.groups.insert(path.to_string(), members.clone());
+                members
+            }
+            None => {
+                return Err(self.ctx.files.err(
+                    K::UnknownActor,
+                    span,
+                    format!("expected a vehicle or vehicle group of the scenario, found `{path}`"),
+                ))
+            }
+        };
+        for n in &names {
+            if !self.index.contains_key(n) {
+                self.index.insert(n.clone(), self.entities.len());
+                self.entities.push(Entity {
+                    name: n.clone(),
+                    vehicle: actors::vehicle(self.ctx, n),
+                    track: Track::new(0.0, 0.0, -1),
+                });
+            }
+        }
+        Ok(names)
+    }
+
+    fn track(&self, name: &str) -> &Track {
+        &self.entities[self.index[name]].track
+    }
+
+    fn track_mut(&mut self, name: &str) -> &mut Track {
+        let i = self.index[name];
+        &mut self.entities[i].track
+    }
+
+    /// The own end of `p` (duration, until), given its start.
+    fn own_end(&self, p: &Phase<'_>, start: &When) -> Result<Option<When>, Error> {
+        let mut end = None;
+        if let Some(d) = p.duration {
+            end = Some(match start {
+                When::At(t) => When::At(t + d),
+                _ => When::Dyn(Trigger {
+                    condition_groups: vec![ConditionGroup {
+                        conditions: vec![act_state(
+                            &p.path,
+                            StoryboardElementState::RunningState,
+                            // The Act's stop trigger is first sampled one step after it starts.
+                            (d - self.settings.dt).max(0.0),
+                            self.ctx.files.pos(p.span),
+                        )],
+                    }],
+                }),
+            });
+        }
+        if let Some(u) = p.until {
+            let index = &self.index;
+            let t = trigger(self.ctx, u, &|path| {
+                index.contains_key(path).then(|| path.to_string())
+            })?;
+            let w = When::Dyn(t);
+            end = Some(match end {
+                Some(e) => e.or(w),
+                None => w,
+            });
+        }
+        Ok(end)
+    }
+
+    fn schedule(
+        &mut self,
+        p: &Phase<'_>,
+        start: When,
+        inherit: Option<When>,
+        mods: &HashMap<String, &Vec<Mod<'_>>>,
+    ) -> Result<When, Error> {
+        let own = self.own_end(p, &start)?;
+        let first_index = self.phases.len();
+        let end = match &p.kind {
+            Kind::Invoke(_) | Kind::Wait => {
+                let mut actions = Vec::new();
+                let mut derived = None;
+                if let Kind::Invoke(inv) = &p.kind {
+                    let cap = own.as_ref().or(inherit.as_ref()).and_then(When::time);
+                    let empty = Vec::new();
+                    let ms = mods.get(&p.path).copied().unwrap_or(&empty);
+                    derived = self.plan_invoke(p, inv, ms, start.time(), cap, &mut actions)?;
+                }
+                let end = match (own, derived, inherit) {
+                    (Some(o), _, i) => o.or(i.unwrap_or(When::Pending)),
+                    (None, Some(t), i) => When::At(t).or(i.unwrap_or(When::Pending)),
+                    (None, None, Some(i)) => i,
+                    (None, None, None) if self.settings.open_end => When::Never,
+                    (None, None, None) => return Err(no_end(self.ctx, p)),
+                };
+                self.phases.push(PhasePlan {
+                    path: p.path.clone(),
+                    span: p.span,
+                    start,
+                    end: end.clone(),
+                    actions,
+                });
+                return Ok(end);
+            }
+            Kind::Serial | Kind::OneOf(_) => {
+                let mut cur = start.clone();
+                let n = p.children.len();
+                for (i, c) in p.children.iter().enumerate() {
+                    let inh = if i + 1 == n {
+                        match (&own, &inherit) {
+                            (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
+                            (Some(o), None) => Some(o.clone()),
+                            (None, i) => i.clone(),
+                        }
+                    } else {
+                        None
+                    };
+                    cur = self.schedule(c, cur.clone(), inh, mods)?;
+                    if i + 1 < n {
+                        cur = match cur {
+                            When::At(t) => When::At(t),
+                            When::Dyn(_) => When::Dyn(Trigger {
+                                condition_groups: vec![ConditionGroup {
+                                    conditions: vec![act_state(
+                                        &c.path,
+                                        StoryboardElementState::CompleteState,
+                                        0.0,
+                                        self.ctx.files.pos(c.span),
+                                    )],
+                                }],
+                            }),
+                            When::Never | When::Pending => return Err(no_end(self.ctx, c)),
+                        };
+                    }
+                }
+                match own {
+                    Some(o) => o,
+                    None => cur,
+                }
+            }
+            Kind::Parallel => {
+                // Members planned (and written) first: those whose motion others refer to, and
+                // those that end on their own, so that members ending with the parallel see
+                // their end in the same step.
+                let mut order: Vec<&Phase<'_>> = p.children.iter().collect();
+                order.sort_by_key(|c| {
+                    (
+                        relative_end(c, mods),
+                        c.duration.is_none() && c.until.is_none(),
+                    )
+                });
+                let inh = match (&own, &inherit) {
+                    (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
+                    (Some(o), None) => Some(o.clone()),
+                    (None, _) => Some(When::Pending),
+                };
+                let mut ends = Vec::new();
+                for c in order {
+                    let e = self.schedule(c, start.clone(), inh.clone(), mods)?;
+                    ends.push((c, e));
+                }
+                match own {
+                    Some(o) => o,
+                    None => {
+                        let with_end: Vec<&(&Phase<'_>, When)> =
+                            ends.iter().filter(|(_, e)| *e != When::Pending).collect();
+                        if with_end.iter().any(|(_, e)| *e == When::Never) {
+                            When::Never
+                        } else if with_end.is_empty() {
+                            match inherit {
+                                Some(i) => i,
+                                None if self.settings.open_end => When::Never,
+                                None => return Err(no_end(self.ctx, p)),
+                            }
+                        } else if with_end.iter().all(|(_, e)| matches!(e, When::At(_))) {
+                            When::At(
+                                with_end
+                                    .iter()
+                                    .filter_map(|(_, e)| e.time())
+                                    .fold(f64::NEG_INFINITY, f64::max),
+                            )
+                        } else {
+                            When::Dyn(Trigger {
+                                condition_groups: vec![ConditionGroup {
+                                    conditions: with_end
+                                        .iter()
+                                        .map(|(c, _)| {
+                                            act_state(
+                                                &c.path,
+                                                StoryboardElementState::CompleteState,
+                                                0.0,
+                                                self.ctx.files.pos(c.span),
+                                            )
+                                        })
+                                        .collect(),
+                                }],
+                            })
+                        }
+                    }
+                }
+            }
+        };
+        // Members that end with this composition.
+        if end != When::Pending {
+            for ph in &mut self.phases[first_index..] {
+                if ph.end == When::Pending {
+                    ph.end = end.clone();
+                }
+            }
+        }
+        self.phases.push(PhasePlan {
+            path: p.path.clone(),
+            span: p.span,
+            start,
+            end: end.clone(),
+            actions: Vec::new(),
+        });
+        Ok(end)
+    }
+
+    /// Plans one invocation: its actions, and the time its `position(…, at: end)` is met when
+    /// nothing else ends it.
+    #[allow(clippy::too_many_arguments)]
+    fn plan_invoke(
+        &mut self,
+        p: &Phase<'_>,
+        inv: &Invoke<'_>,
+        mods: &[Mod<'_>],
+        t0: Option<f64>,
+        end: Option<f64>,
+        out: &mut Vec<Planned>,
+    ) -> Result<Option<f64>, Error> {
+        let ctx = self.ctx;
+        if inv.action != "drive" {
+            return Err(ctx.files.err(
+                K::Unsupported,
+                p.span,
+                format!(
+                    "expected drive() (the movement action the runtime plans), found `{}`",
+                    inv.action
+                ),
+            ));
+        }
+        let targets: Vec<String> = match self.groups.get(&inv.actor) {
+            Some(m) => m.clone(),
+            None => vec![inv.actor.clone()],
+        };
+        let mut derived = None;
+        for target in &targets {
+            let first = self.first_leaf.get(target) == Some(&p.path);
+            let mut n = 0;
+            let mut name = |what: &str| {
+                n += 1;
+                format!("{}/{target}/{n}:{what}", p.path)
+            };
+            // Speed first, position at end last: it builds on the phase's speed.
+            let mut ordered: Vec<&Mod<'_>> = mods.iter().collect();
+            ordered.sort_by_key(|m| (m.kind == ModKind::Position && m.at == At::End) as u8);
+            for m in ordered {
+                let need_t = |what: &str| -> Result<f64, Error> {
+                    t0.ok_or_else(|| {
+                        ctx.files.err(
+                            K::Unsatisfiable,
+                            m.app.span,
+                            format!("expected a phase start the plan knows for {what}, found one after a run-time condition"),
+                        )
+                    })
+                };
+                let need_len = |what: &str| -> Result<(f64, f64), Error> {
+                    match (t0, end) {
+                        (Some(a), Some(b)) if b > a => Ok((a, b - a)),
+                        _ => Err(ctx.files.err(
+                            K::Unsatisfiable,
+                            m.app.span,
+                            format!("expected a phase duration the plan knows for {what}, found none (give the phase a duration)"),
+                        )),
+                    }
+                };
+                match (m.kind, m.at) {
+                    (ModKind::Kept, _) => {}
+                    (ModKind::Speed, At::Start | At::All) => {
+                        let (v, relative) = self.speed_value(m, t0)?;
+                        if first {
+                            continue;
+                        }
+                        let target_speed = match relative {
+                            Some((x, delta)) => SpeedTarget::Relative {
+                                entity_ref: x,
+                                value: delta,
+                                speed_target_value_type: SpeedTargetValueType::Delta,
+                                continuous: m.at == At::All,
+                            },
+                            None => SpeedTarget::Absolute(v),
+                        };
+                        out.push(Planned {
+                            entity: target.clone(),
+                            at: None,
+                            name: name("speed"),
+                            action: speed_action(DynamicsShape::Step, 0.0, target_speed),
+                            span: m.app.span,
+                        });
+                        if let Some(t) = t0 {
+                            self.track_mut(target).ramp(t, t, v);
+                        }
+                    }
+                    (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
+                        let (t, len) = need_len("a speed at the phase end")?;
+                        let (v1, _) = self.speed_value(m, Some(t + len))?;
+                        let v0 = self.track(target).at(t).1;
+                        check_speed(ctx, m, v1)?;
+                        check_accel(ctx, m, (v1 - v0) / len)?;
+                        out.push(Planned {
+                            entity: target.clone(),
+                            at: None,
+                            name: name("speed"),
+                            action: speed_action(
+                                DynamicsShape::Linear,
+                                len,
+                                SpeedTarget::Absolute(v1),
+                            ),
+                            span: m.app.span,
+                        });
+                        self.track_mut(target).ramp(t, t + len, v1);
+                    }
+                    (ModKind::Position, At::Start | At::All)
+                    | (ModKind::Lane, At::Start | At::All) => {
+                        if first {
+                            continue;
+                        }
+                        let t = need_t("a constraint at the phase start")?;
+                        self.check_start(m, target, t)?;
+                    }
+                    (ModKind::Position, At::End) => {
+                        let t = need_t("position(…, at: end)")?;
+                        let (x, sign, d) = self.position_target(m, t)?;
+                        let ve_given = mods.iter().find(|q| {
+                            (q.kind == ModKind::Speed && q.at == At::End)
+                                || q.kind == ModKind::ChangeSpeed
+                        });
+                        let hold = mods
+                            .iter()
+                            .any(|q| q.kind == ModKind::Speed && q.at == At::All);
+                        let (s_a, v0) = self.track(target).at(t);
+                        match end {
+                            None => {
+                                // Constant speeds: when does the gap reach its value?
+                                let (s_x, v_x) =
+                                    x.as_ref().map_or((0.0, 0.0), |x| self.track(x).at(t));
+                                let gap = s_x + sign * d - s_a;
+                                let closing = v0 - v_x;
+                                let tau = gap / closing;
+                                if !(tau.is_finite() && tau > 0.0) {
+                                    return Err(ctx.files.err(
+                                        K::Unsatisfiable,
+                                        m.app.span,
+                                        format!("expected the actors to close the {gap:.2} m to this position at their speeds ({v0:.2} m/s and {v_x:.2} m/s), found they never do"),
+                                    ));
+                                }
+                                let te = t + tau;
+                                derived = Some(derived.map_or(te, |d: f64| d.max(te)));
+                            }
+                            Some(te) => {
+                                let len = te - t;
+                                let s_x = x.as_ref().map_or(0.0, |x| self.track(x).at(te).0);
+                                let want = s_x + sign * d;
+                                let ds = want - s_a;
+                                if hold && ve_given.is_none() {
+                                    let got = s_a + v0 * len;
+                                    if (got - want).abs() > POSITION_TOLERANCE {
+                                        return Err(ctx.files.err(
+                                            K::Unsatisfiable,
+                                            m.app.span,
+                                            format!("expected position(…, at: end) met at the constant speed {v0:.2} m/s, found it {:.2} m off at the phase end", got - want),
+                                        ));
+                                    }
+                                    continue;
+                                }
+                                let ve = match ve_given {
+                                    Some(q) => self.speed_value(q, Some(te))?.0,
+                                    None => v0,
+                                };
+                                let vm = (4.0 * ds / len - v0 - ve) / 2.0;
+                                check_speed(ctx, m, vm)?;
+                                check_accel(ctx, m, (vm - v0) / (len / 2.0))?;
+                                check_accel(ctx, m, (ve - vm) / (len / 2.0))?;
+                                // Drop a speed ramp this phase planned already (change_speed).
+                                out.retain(|a| {
+                                    !(a.entity == *target && a.name.ends_with(":speed"))
+                                });
+                                out.push(Planned {
+                                    entity: target.clone(),
+                                    at: None,
+                                    name: name("position.1"),
+                                    action: speed_action(
+                                        DynamicsShape::Linear,
+                                        len / 2.0,
+                                        SpeedTarget::Absolute(vm),
+                                    ),
+                                    span: m.app.span,
+                                });
+                                out.push(Planned {
+                                    entity: target.clone(),
+                                    at: Some(t + len / 2.0),
+                                    name: name("position.2"),
+                                    action: speed_action(
+                                        DynamicsShape::Linear,
+                                        len / 2.0,
+                                        SpeedTarget::Absolute(ve),
+                                    ),
+                                    span: m.app.span,
+                                });
+                                let tr = self.track_mut(target);
+                                tr.ramp(t, t + len / 2.0, vm);
+                                tr.ramp(t + len / 2.0, te, ve);
+                            }
+                        }
+                    }
+                    (ModKind::Lane, At::End) | (ModKind::ChangeLane, _) => {
+                        let (t, len) = need_len("a lane change")?;
+                        let (target_lane, planned) = self.lane_target(m, target, t, len)?;
+                        out.push(Planned {
+                            entity: target.clone(),
+                            at: None,
+                            name: name("lane"),
+                            action: PrivateAction::Lateral(LateralAction::LaneChange {
+                                target_lane_offset: None,
+                                dynamics: TransitionDynamics {
+                                    dynamics_shape: DynamicsShape::Sinusoidal,
+                                    dynamics_dimension: DynamicsDimension::Time,
+                                    value: len,
+                                    following_mode: None,
+                                },
+                                target: target_lane,
+                            }),
+                            span: m.app.span,
+                        });
+                        if let Some(l) = planned {
+                            self.track_mut(target).set_lane(t + len, l);
+                        }
+                    }
+                }
+            }
+        }
+        Ok(derived)
+    }
+
+    /// The speed a speed-like modifier asks for at time `t`, and its relative form.
+    fn speed_value(
+        &self,
+        m: &Mod<'_>,
+        t: Option<f64>,
+    ) -> Result<(f64, Option<(String, f64)>), Error> {
+        let own = m.arg("speed").map(|e| self.ctx.number(e)).transpose()?;
+        for (key, sign) in [
+            ("faster_than", 1.0),
+            ("slower_than", -1.0),
+            ("same_as", 0.0),
+        ] {
+            if let Some(e) = m.arg(key) {
+                let x = self.entity_of(e)?;
+                let delta = sign * own.unwrap_or(0.0);
+                let vx = t.map_or(0.0, |t| self.track(&x).at(t).1);
+                return Ok((vx + delta, Some((x, delta))));
+            }
+        }
+        match own {
+            Some(v) => Ok((v, None)),
+            None => Err(self.ctx.files.err(
+                K::Modifier,
+                m.app.span,
+                "expected a speed (or faster_than/slower_than/same_as) in this modifier, found none",
+            )),
+        }
+    }
+
+    fn entity_of(&self, e: &Expr) -> Result<String, Error> {
+        self.ctx
+            .path_of(e)
+            .filter(|p| self.index.contains_key(p))
+            .ok_or_else(|| {
+                self.ctx.files.err(
+                    K::UnknownActor,
+                    e.span,
+                    "expected a vehicle of the scenario, found another value",
+                )
+            })
+    }
+
+    /// (reference entity, +1 ahead / −1 behind, distance) of a position modifier.
+    fn position_target(&self, m: &Mod<'_>, t: f64) -> Result<(Option<String>, f64, f64), Error> {
+        let (x, sign) = match (m.arg("ahead_of"), m.arg("behind")) {
+            (Some(e), _) => (Some(self.entity_of(e)?), 1.0),
+            (None, Some(e)) => (Some(self.entity_of(e)?), -1.0),
+            (None, None) => (None, 1.0),
+        };
+        let d =
+            match (m.arg("distance"), m.arg("time"), &x) {
+                (Some(e), _, _) => self.ctx.number(e)?,
+                (None, Some(e), Some(x)) => self.ctx.number(e)? * self.track(x).at(t).1,
+                _ => return Err(self.ctx.files.err(
+                    K::Unsatisfiable,
+                    m.app.span,
+                    "expected a distance (or a time and a reference) in position(…), found neither",
+                )),
+            };
+        Ok((x, sign, d))
+    }
+
+    /// Checks a constraint at the start of a phase that is not the actor's first.
+    fn check_start(&self, m: &Mod<'_>, target: &str, t: f64) -> Result<(), Error> {
+        let here = self.track(target);
+        if m.kind == ModKind::Position {
+            let (x, sign, d) = self.position_target(m, t)?;
+            let want = x.as_ref().map_or(0.0, |x| self.track(x).at(t).0) + sign * d;
+            let got = here.at(t).0;
+            if (got - want).abs() > POSITION_TOLERANCE {
+                return Err(self.ctx.files.err(
+                    K::Unsatisfiable,
+                    m.app.span,
+                    format!("expected this position at the phase start, found `{target}` {:.2} m from it (plan an earlier phase to reach it)", got - want),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The LaneChangeAction target of a lane modifier at the phase end, and the lane the plan
+    /// expects there.
+    fn lane_target(
+        &self,
+        m: &Mod<'_>,
+        target: &str,
+        t: f64,
+        len: f64,
+    ) -> Result<(LaneChangeTarget, Option<i32>), Error> {
+        let n = m
+            .arg("lane")
+            .map(|e| self.ctx.number(e))
+            .transpose()?
+            .map_or(1, |x| x.round() as i32);
+        let left = !matches!(m.arg("side").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(s)) if s == "right");
+        let shift = if left { n } else { -n };
+        if m.kind == ModKind::ChangeLane {
+            let now = self.track(target).lane(t);
+            return Ok((
+                LaneChangeTarget::Relative {
+                    entity_ref: target.to_string(),
+                    value: shift,
+                },
+                Some(now + shift),
+            ));
+        }
+        for (key, value) in [
+            ("same_as", 0),
+            ("side_of", shift),
+            ("left_of", n),
+            ("right_of", -n),
+        ] {
+            if let Some(e) = m.arg(key) {
+                let x = self.entity_of(e)?;
+                let lx = self.track(&x).lane(t + len);
+                return Ok((
+                    LaneChangeTarget::Relative {
+                        entity_ref: x,
+                        value,
+                    },
+                    Some(lx + value),
+                ));
+            }
+        }
+        Err(self.ctx.files.err(
+            K::Modifier,
+            m.app.span,
+            "expected same_as, side_of, left_of or right_of in lane(…, at: end), found none (lane numbers at the end are not planned yet)",
+        ))
+    }
+}
+
+/// 1 for an invocation with a `position(…, at: end)` relative to another actor, else 0: the
+/// order in which a parallel plans its members.
+fn relative_end(p: &Phase<'_>, mods: &HashMap<String, &Vec<Mod<'_>>>) -> u8 {
+    mods.get(&p.path).is_some_and(|ms| {
+        ms.iter()
+            .any(|m| m.kind == ModKind::Position && m.at == At::End)
+    }) as u8
+}
+
+fn speed_action(shape: DynamicsShape, time: f64, target: SpeedTarget) -> PrivateAction {
+    PrivateAction::Longitudinal(LongitudinalAction::Speed {
+        dynamics: TransitionDynamics {
+            dynamics_shape: shape,
+            dynamics_dimension: DynamicsDimension::Time,
+            value: time,
+            following_mode: None,
+        },
+        target,
+    })
+}
+
+fn check_speed(ctx: &Ctx<'_>, m: &Mod<'_>, v: f64) -> Result<(), Error> {
+    if !(0.0..=MAX_SPEED).contains(&v) {
+        return Err(ctx.files.err(
+            K::Unsatisfiable,
+            m.app.span,
+            format!("expected a plan within 0 to {MAX_SPEED} m/s, found it needs {v:.2} m/s"),
+        ));
+    }
+    Ok(())
+}
+
+fn check_accel(ctx: &Ctx<'_>, m: &Mod<'_>, a: f64) -> Result<(), Error> {
+    if a.abs() > MAX_ACCELERATION + 1e-9 {
+        return Err(ctx.files.err(
+            K::Unsatisfiable,
+            m.app.span,
+            format!("expected a plan within ±{MAX_ACCELERATION} m/s², found it needs {a:.2} m/s²"),
+        ));
+    }
+    Ok(())
+}

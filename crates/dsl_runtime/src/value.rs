@@ -1,0 +1,217 @@
+//! Constant values of the scenario as the planner reads them (ASAM OpenSCENARIO DSL 2.1 §7.4
+//! expressions): literals with units in SI, ranges `[a..b]` drawn from the run's seed, and
+//! references to fields the constraint solver resolved (`npc_speed`, `ego.bounding_box.length`).
+
+use std::cell::RefCell;
+
+use dsl::semantics::hir::{Arg, BinOp, Expr, ExprKind};
+use dsl::semantics::model::Model;
+use dsl::semantics::types::CompoundId;
+use dsl::{Resolution, Value};
+use rand_chacha::rand_core::{RngCore, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+use crate::error::{Error, ErrorKind as K, Files};
+
+/// A value the planner computed.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Val {
+    /// A number in SI units.
+    Num(f64),
+    /// An enumeration member.
+    Enum(String),
+    /// A boolean.
+    Bool(bool),
+    /// An actor or struct instance: its path in the resolution (`ego`, `g.vehicles[1]`).
+    Instance(String),
+}
+
+/// What the planner reads values with.
+pub(crate) struct Ctx<'a> {
+    /// Declarations.
+    pub model: &'a Model,
+    /// The solver's values.
+    pub res: &'a Resolution,
+    /// The scenario's root in the resolution (`cut_in`, `dut.driving_alongside_group`).
+    pub root: String,
+    /// For positions in messages.
+    pub files: Files<'a>,
+    /// Draws of ranges and `one_of` choices, in plan order.
+    rng: RefCell<ChaCha8Rng>,
+}
+
+impl<'a> Ctx<'a> {
+    /// A context drawing from `seed` (the stream is separate from the solver's: it is keyed by
+    /// a constant so that the same seed does not give correlated draws).
+    pub(crate) fn new(
+        model: &'a Model,
+        res: &'a Resolution,
+        root: String,
+        files: Files<'a>,
+        seed: u64,
+    ) -> Self {
+        Ctx {
+            model,
+            res,
+            root,
+            files,
+            rng: RefCell::new(ChaCha8Rng::seed_from_u64(seed ^ 0x6473_6c5f_706c_616e)),
+        }
+    }
+
+    /// A uniform draw in [0, 1) from the top 53 bits (integer-only mapping, the same on every
+    /// machine).
+    pub(crate) fn uniform(&self) -> f64 {
+        (self.rng.borrow_mut().next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+
+    /// A draw among `n` choices.
+    pub(crate) fn choose(&self, n: usize) -> usize {
+        ((self.uniform() * n as f64) as usize).min(n.saturating_sub(1))
+    }
+
+    /// The dotted path an actor or field expression names (`dut.vehicle`, `g.vehicles[0]`).
+    pub(crate) fn path_of(&self, e: &Expr) -> Option<String> {
+        match &e.kind {
+            ExprKind::Name(n) => Some(n.clone()),
+            ExprKind::Field(inner, n) => Some(format!("{}.{}", self.path_of(inner)?, n.text)),
+            ExprKind::Index(inner, i) => match i.kind {
+                ExprKind::Int(i) => Some(format!("{}[{i}]", self.path_of(inner)?)),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    /// The resolved value at `path`: a field of the scenario first, then a global.
+    pub(crate) fn lookup(&self, path: &str) -> Option<(String, &'a Value)> {
+        let scoped = format!("{}.{path}", self.root);
+        if let Some(v) = self.res.get(&scoped) {
+            return Some((path.to_string(), v));
+        }
+        self.res.get(path).map(|v| (path.to_string(), v))
+    }
+
+    /// The compound type of a resolved instance.
+    pub(crate) fn type_of(&self, v: &Value) -> Option<CompoundId> {
+        match v {
+            Value::Compound { ty, .. } => match self.model.types.get(ty.as_str()) {
+                Some((dsl::semantics::model::TypeName::Compound(c), _)) => Some(*c),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    /// Whether the resolved instance is of type `name` or inherits from it.
+    pub(crate) fn is_a(&self, v: &Value, name: &str) -> bool {
+        let Some(sup) = (match self.model.types.get(name) {
+            Some((dsl::semantics::model::TypeName::Compound(c), _)) => Some(*c),
+            _ => None,
+        }) else {
+            return false;
+        };
+        self.type_of(v)
+            .is_some_and(|c| self.model.is_subtype(c, sup))
+    }
+
+    /// Evaluates a constant expression.
+    pub(crate) fn eval(&self, e: &Expr) -> Result<Val, Error> {
+        let bad = |what: &str| {
+            self.files.err(
+                K::Value,
+                e.span,
+                format!("expected a constant value, found {what}"),
+            )
+        };
+        Ok(match &e.kind {
+            ExprKind::Int(i) => Val::Num(*i as f64),
+            ExprKind::Float(f) => Val::Num(*f),
+            ExprKind::Bool(b) => Val::Bool(*b),
+            ExprKind::Physical(v, unit) => match self.model.units.unit(&unit.text) {
+                Some(u) => Val::Num(u.to_si(*v)),
+                None => return Err(bad(&format!("the unknown unit `{}`", unit.text))),
+            },
+            ExprKind::Neg(inner) => match self.eval(inner)? {
+                Val::Num(x) => Val::Num(-x),
+                _ => return Err(bad("a negated non-number")),
+            },
+            ExprKind::Binary(op, a, b) => {
+                let (Val::Num(x), Val::Num(y)) = (self.eval(a)?, self.eval(b)?) else {
+                    return Err(bad("arithmetic on non-numbers"));
+                };
+                Val::Num(match op {
+                    BinOp::Add => x + y,
+                    BinOp::Sub => x - y,
+                    BinOp::Mul => x * y,
+                    BinOp::Div if y != 0.0 => x / y,
+                    _ => return Err(bad("an operator other than + - * / on numbers")),
+                })
+            }
+            ExprKind::Range(a, b) => {
+                let (Val::Num(lo), Val::Num(hi)) = (self.eval(a)?, self.eval(b)?) else {
+                    return Err(bad("a range of non-numbers"));
+                };
+                if hi < lo {
+                    return Err(bad("a range whose upper end is below its lower end"));
+                }
+                Val::Num(lo + (hi - lo) * self.uniform())
+            }
+            ExprKind::EnumValue(_, m) => Val::Enum(m.text.clone()),
+            ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
+                let path = self
+                    .path_of(e)
+                    .ok_or_else(|| bad("an index that is not a number"))?;
+                match self.lookup(&path) {
+                    Some((p, v)) => from_value(p, v).ok_or_else(|| bad("a run-time value"))?,
+                    None => match &e.kind {
+                        ExprKind::Name(n) => Val::Enum(n.clone()),
+                        _ => return Err(bad(&format!("`{path}`, which has no value"))),
+                    },
+                }
+            }
+            _ => return Err(bad("an expression the planner does not compute")),
+        })
+    }
+
+    /// Evaluates to a number in SI units.
+    pub(crate) fn number(&self, e: &Expr) -> Result<f64, Error> {
+        match self.eval(e)? {
+            Val::Num(x) if x.is_finite() => Ok(x),
+            _ => Err(self
+                .files
+                .err(K::Value, e.span, "expected a number, found another value")),
+        }
+    }
+}
+
+fn from_value(path: String, v: &Value) -> Option<Val> {
+    Some(match v {
+        Value::Bool(b) => Val::Bool(*b),
+        Value::Int(i) => Val::Num(*i as f64),
+        Value::Float(f) => Val::Num(*f),
+        Value::Quantity { si, .. } => Val::Num(*si),
+        Value::Enum { member, .. } => Val::Enum(member.clone()),
+        Value::Compound { .. } | Value::List(_) => Val::Instance(path),
+        Value::Str(_) | Value::RunTime(_) => return None,
+    })
+}
+
+/// Arguments matched to parameter names: positional ones take `params` in order, named ones
+/// their name.
+pub(crate) fn bind<'e>(args: &'e [Arg], params: &[String]) -> Vec<(String, &'e Expr)> {
+    let mut out = Vec::new();
+    let mut next = 0;
+    for a in args {
+        match &a.name {
+            Some(n) => out.push((n.text.clone(), &a.value)),
+            None => {
+                if let Some(p) = params.get(next) {
+                    out.push((p.clone(), &a.value));
+                }
+                next += 1;
+            }
+        }
+    }
+    out
+}

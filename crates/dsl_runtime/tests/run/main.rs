@@ -1,0 +1,210 @@
+//! DSL scenarios planned, lowered and run on the engine; every expectation is worked by hand in
+//! the scenario file's comment (straight road: s is the distance travelled). Times are on the
+//! 0.05 s step grid.
+
+mod support;
+
+use support::{error, run, DT};
+
+/// Positions: the engine integrates speed exactly on a straight road; allow float round-off.
+const S_TOL: f64 = 1e-6;
+/// Event times are step times.
+const T_TOL: f64 = 1e-9;
+
+#[test]
+fn constant_speed_position_after_t() {
+    let r = run("constant_speed", 0, None);
+    let ego = r.at(0.0, "ego");
+    assert_eq!(ego.lane, -3);
+    assert!((ego.s - 50.0).abs() < S_TOL);
+    assert!(
+        (ego.y + 8.75).abs() < S_TOL,
+        "lane -3 centre at t = -8.75 m"
+    );
+    assert!((r.at(2.5, "ego").s - 100.0).abs() < S_TOL);
+    assert!((r.at(5.0, "ego").s - 150.0).abs() < S_TOL);
+    let (start, end) = r.phase("do");
+    assert!((start - 0.0).abs() < T_TOL && (end - 5.0).abs() < T_TOL);
+    assert!(
+        (r.last_time() - 5.0).abs() < T_TOL,
+        "the run ends with the phase"
+    );
+}
+
+#[test]
+fn serial_phases_follow_each_other() {
+    let r = run("serial_speeds", 0, None);
+    let (s0, e0) = r.phase("do.slow");
+    let (s1, e1) = r.phase("do.fast");
+    let (s, e) = r.phase("do");
+    assert_eq!((s0, e0, s1, e1, s, e), (0.0, 2.0, 2.0, 5.0, 0.0, 5.0));
+    assert_eq!(r.at(0.0, "ego").lane, -2);
+    assert!((r.at(2.0, "ego").s - 120.0).abs() < S_TOL);
+    assert!((r.at(5.0, "ego").s - 180.0).abs() < S_TOL);
+    assert!((r.at(3.0, "ego").speed - 20.0).abs() < S_TOL);
+}
+
+#[test]
+fn parallel_ends_with_its_longest_member_or_its_duration() {
+    let r = run("parallel_timing", 0, None);
+    assert_eq!(r.phase("do.both.0"), (0.0, 2.0));
+    assert_eq!(r.phase("do.both.1"), (0.0, 3.0));
+    assert_eq!(r.phase("do.both"), (0.0, 3.0));
+    let (s, e) = r.phase("do.shared");
+    assert!((s - 3.0).abs() < T_TOL && (e - 7.0).abs() < T_TOL);
+    let (s, e) = r.phase("do.shared.0");
+    assert!((s - 3.0).abs() < T_TOL && (e - 7.0).abs() < T_TOL);
+    assert_eq!(r.at(0.0, "npc").lane, -1);
+    assert!((r.at(7.0, "ego").s - 170.0).abs() < S_TOL);
+    assert!((r.at(7.0, "npc").s - 225.0).abs() < S_TOL);
+}
+
+#[test]
+fn wait_elapsed_holds_the_serial_for_its_time() {
+    let r = run("wait_elapsed", 0, None);
+    assert_eq!(r.phase("do.0"), (0.0, 1.0));
+    let (s, e) = r.phase("do.1");
+    assert!((s - 1.0).abs() < T_TOL && (e - 4.0).abs() < T_TOL);
+    let (s, e) = r.phase("do.2");
+    assert!((s - 4.0).abs() < T_TOL && (e - 5.0).abs() < T_TOL);
+    assert!((r.at(4.0, "ego").s - 60.0).abs() < S_TOL);
+    assert!((r.at(5.0, "ego").s - 60.0).abs() < S_TOL);
+}
+
+#[test]
+fn duration_range_is_drawn_from_the_seed() {
+    let mut seen = Vec::new();
+    for seed in [1, 2, 3] {
+        let a = support::lower("duration_range", seed, None).expect("plans");
+        let b = support::lower("duration_range", seed, None).expect("plans");
+        let end = a
+            .phases
+            .iter()
+            .find(|p| p.path == "do")
+            .and_then(|p| p.end)
+            .expect("known end");
+        assert_eq!(
+            Some(end),
+            b.phases.iter().find(|p| p.path == "do").and_then(|p| p.end),
+            "same seed, same draw"
+        );
+        assert!((2.0..=6.0).contains(&end), "{end} within [2 s, 6 s]");
+        seen.push(end);
+    }
+    assert!(
+        seen[0] != seen[1] && seen[1] != seen[2],
+        "different seeds draw differently: {seen:?}"
+    );
+    // The run ends at the first step at or after the drawn end, where s = 10 + 10·t.
+    let r = run("duration_range", 1, None);
+    let t = r.last_time();
+    assert!(
+        t >= seen[0] - T_TOL && t < seen[0] + DT,
+        "{t} is the step of {}",
+        seen[0]
+    );
+    assert!((r.at(t, "ego").s - (10.0 + 10.0 * t)).abs() < S_TOL);
+}
+
+#[test]
+fn one_of_runs_the_member_the_seed_draws() {
+    let mut branches = std::collections::BTreeSet::new();
+    for seed in 0..12 {
+        let r = run("one_of", seed, None);
+        let slow = r.when("do.slow", "Start").is_some();
+        let fast = r.when("do.fast", "Start").is_some();
+        assert!(slow != fast, "exactly one member runs");
+        let want = if slow { 30.0 } else { 70.0 };
+        assert!((r.at(2.0, "ego").s - want).abs() < S_TOL);
+        branches.insert(slow);
+        // Same seed, same branch.
+        let again = run("one_of", seed, None);
+        assert_eq!(again.when("do.slow", "Start").is_some(), slow);
+    }
+    assert_eq!(branches.len(), 2, "both members are drawn over 12 seeds");
+}
+
+#[test]
+fn position_at_end_is_met_by_the_planned_speed_profile() {
+    let r = run("position_end", 0, None);
+    assert!((r.at(0.0, "npc").s - 90.0).abs() < S_TOL);
+    assert_eq!(r.at(0.0, "npc").lane, -1);
+    // The speed profile's corner: 30 m/s at 3 s, 165 m.
+    assert!((r.at(3.0, "npc").speed - 30.0).abs() < 1e-6);
+    let (_, end) = r.phase("do");
+    assert!((end - 6.0).abs() < T_TOL);
+    let (ego, npc) = (r.at(6.0, "ego"), r.at(6.0, "npc"));
+    assert!((ego.s - 220.0).abs() < S_TOL);
+    // Met within the plan's 0.5 m at the phase end (the engine's linear speed change is
+    // integrated per step: 165 m and 240 m up to its discretisation).
+    let gap = npc.s - ego.s;
+    assert!(
+        (gap - 20.0).abs() < dsl_runtime::POSITION_TOLERANCE,
+        "gap {gap}"
+    );
+    assert!((r.at(3.0, "npc").s - 165.0).abs() < dsl_runtime::POSITION_TOLERANCE);
+}
+
+#[test]
+fn lane_at_end_is_met_by_a_lane_change_over_the_phase() {
+    let r = run("lane_end", 0, None);
+    assert_eq!(r.at(0.0, "npc").lane, -1);
+    let npc = r.at(3.0, "npc");
+    assert_eq!(npc.lane, r.at(3.0, "ego").lane);
+    assert_eq!(npc.lane, -2);
+    assert!(
+        (npc.y + 5.25).abs() < 1e-6,
+        "on the lane centre: y = {}",
+        npc.y
+    );
+    // Half way through the sinusoidal change it is half way between the lane centres.
+    assert!(
+        (r.at(1.5, "npc").y + 3.5).abs() < 0.05,
+        "y(1.5) = {}",
+        r.at(1.5, "npc").y
+    );
+}
+
+#[test]
+fn until_ends_a_phase_at_the_step_its_method_condition_first_holds() {
+    let r = run("until_headway", 0, None);
+    let (s, e) = r.phase("do.close.1");
+    assert!(
+        (s - 0.0).abs() < T_TOL && (e - 3.9).abs() < T_TOL,
+        "ego phase [{s}, {e}]"
+    );
+    // The parallel ends with its member that has an end, and lead's drive with it.
+    assert!((r.phase("do.close").1 - 3.9).abs() < T_TOL);
+    assert!((r.phase("do.close.0").1 - 3.9).abs() < T_TOL);
+    // The next phase starts in the same step and lasts its 2 s.
+    let (s, e) = r.phase("do.follow");
+    assert!(
+        (s - 3.9).abs() < T_TOL && (e - 5.9).abs() < T_TOL,
+        "follow [{s}, {e}]"
+    );
+    assert!((r.at(3.9, "ego").s - 178.0).abs() < S_TOL);
+    assert!((r.at(5.9, "ego").s - 202.0).abs() < S_TOL);
+}
+
+#[test]
+fn errors_name_the_place_before_the_run() {
+    let e = error("err_unsatisfiable_end");
+    assert!(e.contains("err_unsatisfiable_end.osc:14:13"), "{e}");
+    assert!(e.contains("70 m/s") && e.contains("270.00 m/s"), "{e}");
+    let e = error("err_unknown_actor");
+    assert!(
+        e.contains("unknown name `npc` at ") && e.contains("err_unknown_actor.osc:6:9"),
+        "{e}"
+    );
+    let e = error("err_modifier_wrong_action");
+    assert!(
+        e.contains("modifier `speed` applies to `movable_object.action_for_movable_object`, not to `vehicle.honk`")
+            && e.contains("err_modifier_wrong_action.osc:8:9"),
+        "{e}"
+    );
+    let e = error("err_no_end");
+    assert!(
+        e.contains("expected a way for phase `do.0` to end") && e.contains("err_no_end.osc:5:9"),
+        "{e}"
+    );
+}

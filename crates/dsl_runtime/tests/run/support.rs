@@ -1,0 +1,154 @@
+//! Runs a DSL scenario of `tests/scenarios` on `tests/roads/straight.xodr` through the engine
+//! and keeps every frame and every storyboard transition.
+
+use std::path::PathBuf;
+
+use engine::{Engine, EngineConfig, EventRecord, EventSink, Frame, FrameSink};
+
+/// One entity in one frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Obj {
+    pub name: String,
+    pub x: f64,
+    pub y: f64,
+    pub s: f64,
+    pub lane: i32,
+    pub speed: f64,
+}
+
+/// A run.
+pub struct Run {
+    /// (time, entities).
+    pub frames: Vec<(f64, Vec<Obj>)>,
+    /// (time, element, transition).
+    pub events: Vec<(f64, String, String)>,
+}
+
+struct Frames(Vec<(f64, Vec<Obj>)>);
+
+impl FrameSink for Frames {
+    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+        let objs = frame
+            .objects()
+            .map(|o| Obj {
+                name: o.name.to_string(),
+                x: o.pose.x,
+                y: o.pose.y,
+                s: o.road_position.map_or(f64::NAN, |r| r.s),
+                lane: o.road_position.map_or(0, |r| r.lane_id),
+                speed: o.speed,
+            })
+            .collect();
+        self.0.push((frame.time, objs));
+        Ok(())
+    }
+}
+
+struct Events(Vec<(f64, String, String)>);
+
+impl EventSink for Events {
+    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+        if let EventRecord::Transition(t) = record {
+            self.0
+                .push((t.time, t.name.clone(), format!("{:?}", t.transition)));
+        }
+        Ok(())
+    }
+}
+
+pub fn path(rel: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(rel)
+}
+
+pub const DT: f64 = 0.05;
+
+/// Plans `tests/scenarios/NAME.osc` with `seed`.
+pub fn lower(
+    name: &str,
+    seed: u64,
+    duration: Option<f64>,
+) -> Result<dsl_runtime::Lowered, dsl_runtime::LoadError> {
+    let options = dsl_runtime::Options {
+        seed,
+        dt: DT,
+        open_end: duration.is_some(),
+    };
+    dsl_runtime::load(
+        &path(&format!("tests/scenarios/{name}.osc")),
+        &path("tests/roads/straight.xodr"),
+        &options,
+    )
+}
+
+/// Plans and runs `tests/scenarios/NAME.osc`.
+pub fn run(name: &str, seed: u64, duration: Option<f64>) -> Run {
+    let lowered = lower(name, seed, duration).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let config = EngineConfig {
+        dt: DT,
+        duration,
+        max_time: 120.0,
+        seed,
+    };
+    let mut engine =
+        Engine::build(&lowered.scenario, config).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let mut frames = Frames(Vec::new());
+    let mut events = Events(Vec::new());
+    loop {
+        match engine.step(&mut frames, &mut events) {
+            Ok(Some(_)) => break,
+            Ok(None) => {}
+            Err(e) => panic!("{name}: {e}"),
+        }
+    }
+    Run {
+        frames: frames.0,
+        events: events.0,
+    }
+}
+
+impl Run {
+    /// `name` in the frame at time `t` (within half a step).
+    pub fn at(&self, t: f64, name: &str) -> &Obj {
+        let (_, objs) = self
+            .frames
+            .iter()
+            .find(|(ft, _)| (ft - t).abs() < DT / 2.0)
+            .unwrap_or_else(|| panic!("no frame at {t}"));
+        objs.iter()
+            .find(|o| o.name == name)
+            .unwrap_or_else(|| panic!("no {name} at {t}"))
+    }
+
+    /// Time of the first `transition` ("Start", "End", "Stop") of element `name`.
+    pub fn when(&self, name: &str, transition: &str) -> Option<f64> {
+        self.events
+            .iter()
+            .find(|(_, n, tr)| n == name && tr == transition)
+            .map(|(t, _, _)| *t)
+    }
+
+    /// Start and end (stop) time of the phase `path`.
+    pub fn phase(&self, path: &str) -> (f64, f64) {
+        let start = self
+            .when(path, "Start")
+            .unwrap_or_else(|| panic!("{path} never started"));
+        let end = self
+            .when(path, "Stop")
+            .or_else(|| self.when(path, "End"))
+            .unwrap_or_else(|| panic!("{path} never ended"));
+        (start, end)
+    }
+
+    /// The time of the last frame.
+    pub fn last_time(&self) -> f64 {
+        self.frames.last().map_or(0.0, |f| f.0)
+    }
+}
+
+/// The error message of a scenario that must not plan.
+pub fn error(name: &str) -> String {
+    match lower(name, 0, None) {
+        Ok(_) => panic!("{name} planned"),
+        Err(e) => e.to_string(),
+    }
+}
