@@ -173,6 +173,9 @@ struct Planner<'c, 'a> {
     groups: HashMap<String, Vec<String>>,
     first_leaf: HashMap<String, String>,
     phases: Vec<PhasePlan>,
+    /// The speed each actor's last planned speed change ends at (known also when the times
+    /// are not).
+    last_v: HashMap<String, f64>,
 }
 
 /// Plans `root` on `road`.
@@ -190,6 +193,7 @@ pub(crate) fn plan(
         groups: HashMap::new(),
         first_leaf: HashMap::new(),
         phases: Vec::new(),
+        last_v: HashMap::new(),
     };
     // Actors, in the order the tree names them, and each one's first phase.
     let mut leaves_mods: Vec<(&Phase<'_>, Vec<Mod<'_>>)> = Vec::new();
@@ -264,12 +268,13 @@ pub(crate) fn plan(
     for e in &mut p.entities {
         let s = starts[&e.name];
         e.track = Track::new(s.s, s.v, s.lane);
+        p.last_v.insert(e.name.clone(), s.v);
     }
     let mods: HashMap<String, &Vec<Mod<'_>>> = leaves_mods
         .iter()
         .map(|(l, m)| (l.path.clone(), m))
         .collect();
-    let end = p.schedule(root, When::At(0.0), None, &mods)?;
+    let end = p.schedule(root, When::At(0.0), None, None, &mods)?;
     if end == When::Never && !settings.open_end {
         return Err(no_end(ctx, root));
     }
@@ -368,6 +373,7 @@ impl Planner<'_, '_> {
         p: &Phase<'_>,
         start: When,
         inherit: Option<When>,
+        len_hint: Option<f64>,
         mods: &HashMap<String, &Vec<Mod<'_>>>,
     ) -> Result<When, Error> {
         let own = self.own_end(p, &start)?;
@@ -380,11 +386,12 @@ impl Planner<'_, '_> {
                     let cap = own.as_ref().or(inherit.as_ref()).and_then(When::time);
                     let empty = Vec::new();
                     let ms = mods.get(&p.path).copied().unwrap_or(&empty);
-                    derived = self.plan_invoke(p, inv, ms, start.time(), cap, &mut actions)?;
+                    let len = p.duration.or(len_hint);
+                    derived = self.plan_invoke(p, inv, ms, start.time(), cap, len, &mut actions)?;
                 }
                 let end = match (own, derived, inherit) {
                     (Some(o), _, i) => o.or(i.unwrap_or(When::Pending)),
-                    (None, Some(t), i) => When::At(t).or(i.unwrap_or(When::Pending)),
+                    (None, Some(d), i) => d.or(i.unwrap_or(When::Pending)),
                     (None, None, Some(i)) => i,
                     (None, None, None) if self.settings.open_end => When::Never,
                     (None, None, None) => return Err(no_end(self.ctx, p)),
@@ -411,7 +418,11 @@ impl Planner<'_, '_> {
                     } else {
                         None
                     };
-                    cur = self.schedule(c, cur.clone(), inh, mods)?;
+                    let hint = match p.kind {
+                        Kind::OneOf(_) => p.duration.or(len_hint),
+                        _ => None,
+                    };
+                    cur = self.schedule(c, cur.clone(), inh, hint, mods)?;
                     if i + 1 < n {
                         cur = match cur {
                             When::At(t) => When::At(t),
@@ -452,7 +463,13 @@ impl Planner<'_, '_> {
                 };
                 let mut ends = Vec::new();
                 for c in order {
-                    let e = self.schedule(c, start.clone(), inh.clone(), mods)?;
+                    let e = self.schedule(
+                        c,
+                        start.clone(),
+                        inh.clone(),
+                        p.duration.or(len_hint),
+                        mods,
+                    )?;
                     ends.push((c, e));
                 }
                 match own {
@@ -524,8 +541,9 @@ impl Planner<'_, '_> {
         mods: &[Mod<'_>],
         t0: Option<f64>,
         end: Option<f64>,
+        len: Option<f64>,
         out: &mut Vec<Planned>,
-    ) -> Result<Option<f64>, Error> {
+    ) -> Result<Option<When>, Error> {
         let ctx = self.ctx;
         if inv.action != "drive" {
             return Err(ctx.files.err(
@@ -562,9 +580,11 @@ impl Planner<'_, '_> {
                         )
                     })
                 };
-                let need_len = |what: &str| -> Result<(f64, f64), Error> {
-                    match (t0, end) {
-                        (Some(a), Some(b)) if b > a => Ok((a, b - a)),
+                // The phase's start (when the plan knows it) and duration.
+                let need_len = |what: &str| -> Result<(Option<f64>, f64), Error> {
+                    match (t0, end, len) {
+                        (Some(a), Some(b), _) if b > a => Ok((Some(a), b - a)),
+                        (_, _, Some(l)) if l > 0.0 => Ok((t0, l)),
                         _ => Err(ctx.files.err(
                             K::Unsatisfiable,
                             m.app.span,
@@ -598,11 +618,12 @@ impl Planner<'_, '_> {
                         if let Some(t) = t0 {
                             self.track_mut(target).ramp(t, t, v);
                         }
+                        self.last_v.insert(target.clone(), v);
                     }
                     (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
                         let (t, len) = need_len("a speed at the phase end")?;
-                        let (v1, _) = self.speed_value(m, Some(t + len))?;
-                        let v0 = self.track(target).at(t).1;
+                        let (v1, _) = self.speed_value(m, t.map(|t| t + len))?;
+                        let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
                         check_speed(ctx, m, v1)?;
                         check_accel(ctx, m, (v1 - v0) / len)?;
                         out.push(Planned {
@@ -616,7 +637,10 @@ impl Planner<'_, '_> {
                             ),
                             span: m.app.span,
                         });
-                        self.track_mut(target).ramp(t, t + len, v1);
+                        if let Some(t) = t {
+                            self.track_mut(target).ramp(t, t + len, v1);
+                        }
+                        self.last_v.insert(target.clone(), v1);
                     }
                     (ModKind::Position, At::Start | At::All)
                     | (ModKind::Lane, At::Start | At::All) => {
@@ -652,8 +676,26 @@ impl Planner<'_, '_> {
                                         format!("expected the actors to close the {gap:.2} m to this position at their speeds ({v0:.2} m/s and {v_x:.2} m/s), found they never do"),
                                     ));
                                 }
-                                let te = t + tau;
-                                derived = Some(derived.map_or(te, |d: f64| d.max(te)));
+                                // The phase ends when the engine measures the gap reached
+                                // (the same step an XML trigger on it would fire).
+                                let w = self.gap_reached(m, target, x.as_deref(), sign, d)?;
+                                derived = Some(match derived {
+                                    None => w,
+                                    Some(When::Dyn(mut a)) => {
+                                        // Both gaps reached: one group with every condition.
+                                        if let (Some(ga), When::Dyn(b)) =
+                                            (a.condition_groups.first_mut(), &w)
+                                        {
+                                            ga.conditions.extend(
+                                                b.condition_groups
+                                                    .iter()
+                                                    .flat_map(|g| g.conditions.clone()),
+                                            );
+                                        }
+                                        When::Dyn(a)
+                                    }
+                                    Some(other) => other,
+                                });
                             }
                             Some(te) => {
                                 let len = te - t;
@@ -675,6 +717,7 @@ impl Planner<'_, '_> {
                                     Some(q) => self.speed_value(q, Some(te))?.0,
                                     None => v0,
                                 };
+                                self.last_v.insert(target.clone(), ve);
                                 let vm = (4.0 * ds / len - v0 - ve) / 2.0;
                                 check_speed(ctx, m, vm)?;
                                 check_accel(ctx, m, (vm - v0) / (len / 2.0))?;
@@ -713,7 +756,8 @@ impl Planner<'_, '_> {
                     }
                     (ModKind::Lane, At::End) | (ModKind::ChangeLane, _) => {
                         let (t, len) = need_len("a lane change")?;
-                        let (target_lane, planned) = self.lane_target(m, target, t, len)?;
+                        let (target_lane, planned) =
+                            self.lane_target(m, target, t.unwrap_or(0.0), len)?;
                         out.push(Planned {
                             entity: target.clone(),
                             at: None,
@@ -730,7 +774,7 @@ impl Planner<'_, '_> {
                             }),
                             span: m.app.span,
                         });
-                        if let Some(l) = planned {
+                        if let (Some(l), Some(t)) = (planned, t) {
                             self.track_mut(target).set_lane(t + len, l);
                         }
                     }
@@ -738,6 +782,59 @@ impl Planner<'_, '_> {
             }
         }
         Ok(derived)
+    }
+
+    /// The moment the gap of a `position(d, ahead_of|behind: x)` is reached, as the engine
+    /// measures it: a RelativeDistanceCondition (longitudinal, road coordinates, reference
+    /// points) of the actor in front over the one behind rising through d. Without a reference: s ≥ d is
+    /// not measured by a 1.x condition, so it is an error.
+    fn gap_reached(
+        &self,
+        m: &Mod<'_>,
+        target: &str,
+        x: Option<&str>,
+        sign: f64,
+        d: f64,
+    ) -> Result<When, Error> {
+        let Some(x) = x else {
+            return Err(self.ctx.files.err(
+                K::Unsatisfiable,
+                m.app.span,
+                "expected a duration for position(d, at: end) without a reference, found none",
+            ));
+        };
+        let (front, back) = if sign > 0.0 { (target, x) } else { (x, target) };
+        Ok(When::Dyn(Trigger {
+            condition_groups: vec![ConditionGroup {
+                conditions: vec![scenario::Condition {
+                    name: format!("{front} {d} m ahead of {back}"),
+                    // The engine's longitudinal distance has no sign: the gap is reached when
+                    // it grows through d (an actor behind first closes, passes, then opens it).
+                    condition_edge: scenario::ConditionEdge::Rising,
+                    delay: 0.0,
+                    kind: scenario::ConditionKind::ByEntity {
+                        triggering_entities: scenario::TriggeringEntities {
+                            rule: scenario::TriggeringEntitiesRule::Any,
+                            entity_refs: vec![front.to_string()],
+                        },
+                        entity_condition: scenario::EntityCondition::RelativeDistance {
+                            entity_ref: back.to_string(),
+                            value: d,
+                            rule: scenario::Rule::GreaterOrEqual,
+                            measure: scenario::DistanceMeasure {
+                                freespace: false,
+                                coordinate_system: Some(scenario::CoordinateSystem::Road),
+                                relative_distance_type: Some(
+                                    scenario::RelativeDistanceType::Longitudinal,
+                                ),
+                                routing_algorithm: None,
+                            },
+                        },
+                    },
+                    pos: self.ctx.files.pos(m.app.span),
+                }],
+            }],
+        }))
     }
 
     /// The speed a speed-like modifier asks for at time `t`, and its relative form.

@@ -208,3 +208,113 @@ fn errors_name_the_place_before_the_run() {
         "{e}"
     );
 }
+
+#[test]
+fn driving_alongside_group_runs_beside_the_dut() {
+    // The seed's §8.7.18.1.1 Code 4 as written, on the bundled highway (right lanes -1, -2, -3),
+    // bounded by --duration as it has no end of its own.
+    for seed in 0..6 {
+        let lowered = support::lower_at(
+            "../dsl/tests/files/seed/driving_alongside_group.osc",
+            "../../examples/roads/highway.xodr",
+            seed,
+            Some(2.0),
+        )
+        .unwrap_or_else(|e| panic!("seed {seed}: {e}"));
+        let objects = &lowered.scenario.entities.scenario_objects;
+        let members: Vec<&scenario::ScenarioObject> = objects
+            .iter()
+            .filter(|o| o.name.starts_with("g.vehicles["))
+            .collect();
+        assert!(
+            (2..=4).contains(&members.len()),
+            "seed {seed}: {} members",
+            members.len()
+        );
+        for m in &members {
+            let scenario::EntityObject::Vehicle(v) = &m.entity_object else {
+                panic!("{} is no vehicle", m.name)
+            };
+            assert!(
+                matches!(
+                    v.vehicle_category,
+                    scenario::VehicleCategory::Bus | scenario::VehicleCategory::Truck
+                ),
+                "seed {seed}: {} is a {:?}",
+                m.name,
+                v.vehicle_category
+            );
+        }
+        let r = support::run_scenario(
+            "driving_alongside_group",
+            &lowered.scenario,
+            seed,
+            Some(2.0),
+        );
+        let dut = r.at(0.0, "dut.vehicle");
+        let mut previous_s = f64::INFINITY;
+        for (i, _) in members.iter().enumerate() {
+            let m = r.at(0.0, &format!("g.vehicles[{i}]"));
+            // Beside the dut: the lane to its left (ids grow towards the centre on the right
+            // side), all members in that one lane (single-lane group), in list order from the
+            // front, member 0 alongside the dut.
+            assert_eq!(
+                m.lane,
+                dut.lane + 1,
+                "seed {seed}: member {i} in lane {} beside {}",
+                m.lane,
+                dut.lane
+            );
+            assert!(
+                m.s < previous_s,
+                "seed {seed}: member {i} behind member {}",
+                i.saturating_sub(1)
+            );
+            if i == 0 {
+                assert!((m.s - dut.s).abs() < 1e-6, "member 0 alongside the dut");
+            }
+            previous_s = m.s;
+        }
+        assert!((r.last_time() - 2.0).abs() < T_TOL);
+    }
+}
+
+#[test]
+fn dsl_cut_in_matches_the_xml_cut_in_within_a_tenth_of_a_metre() {
+    // examples/scenarios/cut_in_highway.osc against cut_in_highway.xosc: same start states,
+    // the lane change on the same freespace condition, the brake 0.5 s after it.
+    const MATCH: f64 = 0.1;
+    let lowered = support::lower_at(
+        "../../examples/scenarios/cut_in_highway.osc",
+        "../../examples/roads/highway.xodr",
+        0,
+        Some(10.0),
+    )
+    .expect("plans");
+    let dsl = support::run_scenario("cut_in_highway.osc", &lowered.scenario, 0, Some(10.0));
+    let xml_model = scenario::Scenario::load(&support::path(
+        "../../examples/scenarios/cut_in_highway.xosc",
+    ))
+    .expect("loads");
+    let xml = support::run_scenario("cut_in_highway.xosc", &xml_model, 0, None);
+    assert_eq!(dsl.frames.len(), xml.frames.len());
+    let mut worst: f64 = 0.0;
+    for ((t, a), (u, b)) in dsl.frames.iter().zip(&xml.frames) {
+        assert!((t - u).abs() < T_TOL);
+        for (dsl_name, xml_name) in [("ego", "Ego"), ("overtaker", "OverTaker")] {
+            let p = a.iter().find(|o| o.name == dsl_name).expect("dsl entity");
+            let q = b.iter().find(|o| o.name == xml_name).expect("xml entity");
+            worst = worst.max(((p.x - q.x).powi(2) + (p.y - q.y).powi(2)).sqrt());
+        }
+    }
+    assert!(worst < MATCH, "largest distance {worst} m");
+    // The phases' lines in the event log: the cut-in starts where the XML's CutInEvent does.
+    assert_eq!(
+        dsl.when("do.cut_in", "Start"),
+        xml.when("CutInEvent", "Start")
+    );
+    assert_eq!(
+        dsl.when("do.brake", "Start"),
+        xml.when("BrakeEvent", "Start")
+    );
+}

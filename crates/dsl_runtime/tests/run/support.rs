@@ -68,29 +68,49 @@ pub fn lower(
     seed: u64,
     duration: Option<f64>,
 ) -> Result<dsl_runtime::Lowered, dsl_runtime::LoadError> {
+    lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        "tests/roads/straight.xodr",
+        seed,
+        duration,
+    )
+}
+
+/// Plans the `.osc` at `osc` (relative to the crate) on `road`.
+pub fn lower_at(
+    osc: &str,
+    road: &str,
+    seed: u64,
+    duration: Option<f64>,
+) -> Result<dsl_runtime::Lowered, dsl_runtime::LoadError> {
     let options = dsl_runtime::Options {
         seed,
         dt: DT,
         open_end: duration.is_some(),
     };
-    dsl_runtime::load(
-        &path(&format!("tests/scenarios/{name}.osc")),
-        &path("tests/roads/straight.xodr"),
-        &options,
-    )
+    dsl_runtime::load(&path(osc), &path(road), &options)
 }
 
 /// Plans and runs `tests/scenarios/NAME.osc`.
 pub fn run(name: &str, seed: u64, duration: Option<f64>) -> Run {
     let lowered = lower(name, seed, duration).unwrap_or_else(|e| panic!("{name}: {e}"));
+    run_scenario(name, &lowered.scenario, seed, duration)
+}
+
+/// Runs a scenario model.
+pub fn run_scenario(
+    name: &str,
+    scenario: &scenario::Scenario,
+    seed: u64,
+    duration: Option<f64>,
+) -> Run {
     let config = EngineConfig {
         dt: DT,
         duration,
         max_time: 120.0,
         seed,
     };
-    let mut engine =
-        Engine::build(&lowered.scenario, config).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let mut engine = Engine::build(scenario, config).unwrap_or_else(|e| panic!("{name}: {e}"));
     let mut frames = Frames(Vec::new());
     let mut events = Events(Vec::new());
     loop {
