@@ -113,3 +113,77 @@ fn resolve_of_unsatisfiable_constraints_names_both_and_fails() {
     );
     assert!(stdout.contains("╰── conflicting constraint"), "{stdout}");
 }
+
+fn repo(rel: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(rel)
+}
+
+#[test]
+fn run_dsl_scenario_writes_the_same_outputs_as_an_xml_one() {
+    let dir = std::env::temp_dir().join(format!("oscsim_dsl_run_{}", std::process::id()));
+    let (csv, events) = (dir.join("t.csv"), dir.join("e.jsonl"));
+    let osc = repo("examples/scenarios/cut_in_highway.osc");
+    let road = repo("examples/roads/highway.xodr");
+    let out = oscsim(&[
+        "run",
+        osc.to_str().unwrap_or_default(),
+        "--road",
+        road.to_str().unwrap_or_default(),
+        "--duration",
+        "10",
+        "--quiet",
+        "--csv",
+        csv.to_str().unwrap_or_default(),
+        "--events",
+        events.to_str().unwrap_or_default(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}{}",
+        text(&out.stdout),
+        text(&out.stderr)
+    );
+    let csv_text = std::fs::read_to_string(&csv).unwrap_or_default();
+    assert!(csv_text.starts_with("time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,speed\n"));
+    // 10 s at 0.05 s: 201 frames of two vehicles.
+    assert_eq!(csv_text.lines().count(), 1 + 201 * 2);
+    let log = std::fs::read_to_string(&events).unwrap_or_default();
+    // One line per phase start and end, named by the phase path.
+    for line in [
+        r#"{"time":5.650,"element":"do.cut_in","kind":"act","from":"standbyState","transition":"start","to":"runningState"}"#,
+        r#"{"time":7.650,"element":"do.cut_in","kind":"act","from":"runningState","transition":"stop","to":"completeState"}"#,
+    ] {
+        assert!(log.lines().any(|l| l == line), "{line} not in\n{log}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn run_dsl_scenario_needs_a_road_and_reports_plan_errors_with_positions() {
+    let osc = repo("examples/scenarios/cut_in_highway.osc");
+    let out = oscsim(&["run", osc.to_str().unwrap_or_default()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out.stderr).contains("expected --road FILE.xodr"),
+        "{}",
+        text(&out.stderr)
+    );
+    let bad = repo("crates/dsl_runtime/tests/scenarios/err_no_end.osc");
+    let road = repo("crates/dsl_runtime/tests/roads/straight.xodr");
+    let out = oscsim(&[
+        "run",
+        bad.to_str().unwrap_or_default(),
+        "--road",
+        road.to_str().unwrap_or_default(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out.stderr).contains("expected a way for phase `do.0` to end")
+            && text(&out.stderr).contains("err_no_end.osc:5:9"),
+        "{}",
+        text(&out.stderr)
+    );
+}

@@ -318,3 +318,139 @@ fn dsl_cut_in_matches_the_xml_cut_in_within_a_tenth_of_a_metre() {
         xml.when("BrakeEvent", "Start")
     );
 }
+
+/// The engine moves each step with the speed at the step's end, so during a linear speed change
+/// at `a` m/s² it is ahead of the exact integral by a·dt/2 per second of the change.
+fn ramp_lead(a: f64, seconds: f64) -> f64 {
+    0.5 * a * DT * seconds
+}
+
+#[test]
+fn change_speed_is_a_linear_change_over_the_phase() {
+    let r = run("change_speed", 0, None);
+    assert!((r.at(2.0, "ego").speed - 20.0).abs() < S_TOL);
+    assert!((r.at(2.0, "ego").s - (50.0 + ramp_lead(5.0, 2.0))).abs() < S_TOL);
+    assert!((r.at(4.0, "ego").s - (100.0 + ramp_lead(5.0, 4.0))).abs() < S_TOL);
+    assert!((r.at(5.0, "ego").s - (130.0 + ramp_lead(5.0, 4.0))).abs() < S_TOL);
+    assert_eq!(r.phase("do.0"), (0.0, 4.0));
+    assert_eq!(r.phase("do.1"), (4.0, 5.0));
+}
+
+#[test]
+fn speed_at_end_brakes_to_a_stop_over_the_phase() {
+    let r = run("speed_end", 0, None);
+    assert!((r.at(2.5, "ego").speed - 10.0).abs() < S_TOL);
+    assert!((r.at(2.5, "ego").s - (77.5 - ramp_lead(4.0, 2.5))).abs() < S_TOL);
+    assert!(r.at(5.0, "ego").speed.abs() < S_TOL);
+    assert!((r.at(5.0, "ego").s - (90.0 - ramp_lead(4.0, 5.0))).abs() < S_TOL);
+}
+
+#[test]
+fn speed_faster_than_another_actor() {
+    let r = run("faster_than", 0, None);
+    assert!((r.at(0.0, "npc").speed - 20.0).abs() < S_TOL);
+    assert_eq!((r.at(0.0, "ego").lane, r.at(0.0, "npc").lane), (-2, -3));
+    assert!((r.at(4.0, "ego").s - 160.0).abs() < S_TOL);
+    assert!((r.at(4.0, "npc").s - 170.0).abs() < S_TOL);
+}
+
+#[test]
+fn change_lane_moves_one_lane_left_over_the_phase() {
+    let r = run("change_lane", 0, None);
+    assert!((r.at(0.0, "ego").y + 8.75).abs() < S_TOL);
+    assert!((r.at(2.0, "ego").y + 7.0).abs() < 1e-6, "half way at 2 s");
+    let end = r.at(4.0, "ego");
+    assert_eq!(end.lane, -2);
+    assert!((end.y + 5.25).abs() < 1e-6);
+    // 10 m/s along a path that also moves 3.5 m sideways: a little less than 40 m of s.
+    assert!(end.s < 70.0 && end.s > 69.5, "s = {}", end.s);
+}
+
+#[test]
+fn position_by_time_behind_a_reference() {
+    let r = run("position_time", 0, None);
+    assert!((r.at(0.0, "npc").s - 160.0).abs() < S_TOL);
+    assert_eq!(r.at(0.0, "npc").lane, r.at(0.0, "ego").lane);
+    assert!((r.at(3.0, "ego").s - 260.0).abs() < S_TOL);
+    assert!((r.at(3.0, "npc").s - 220.0).abs() < S_TOL);
+}
+
+#[test]
+fn lanes_counted_from_the_right_or_from_the_left() {
+    let r = run("lane_from_left", 0, None);
+    assert_eq!(r.at(0.0, "a").lane, -1);
+    assert_eq!(r.at(0.0, "b").lane, -2);
+    assert_eq!(r.at(0.0, "c").lane, -1);
+    // No speed given: 50 km/h.
+    assert!((r.at(0.0, "a").speed - 50.0 / 3.6).abs() < S_TOL);
+}
+
+#[test]
+fn until_time_to_collision_ends_at_its_first_step() {
+    let r = run("until_ttc", 0, None);
+    let (_, end) = r.phase("do.0");
+    assert!((end - 2.95).abs() < T_TOL, "ends at {end}");
+    assert!((r.phase("do").1 - 2.95).abs() < T_TOL);
+    assert!(
+        (r.phase("do.1").1 - 2.95).abs() < T_TOL,
+        "lead ends with the parallel"
+    );
+}
+
+#[test]
+fn wait_on_a_space_gap_then_the_next_phase() {
+    let r = run("wait_condition", 0, None);
+    let (s, e) = r.phase("do.approach.1");
+    assert!(
+        (s - 1.0).abs() < T_TOL && (e - 1.55).abs() < T_TOL,
+        "wait [{s}, {e}]"
+    );
+    let (s, e) = r.phase("do.approach.2");
+    assert!(
+        (s - 1.55).abs() < T_TOL && (e - 2.55).abs() < T_TOL,
+        "drive [{s}, {e}]"
+    );
+    assert!((r.phase("do.approach").1 - 2.55).abs() < T_TOL);
+    assert!(
+        (r.phase("do").1 - 6.0).abs() < T_TOL,
+        "lead's 6 s end the parallel"
+    );
+    assert!((r.at(1.55, "ego").s - 131.0).abs() < S_TOL);
+    assert!((r.at(2.55, "ego").s - 141.0).abs() < S_TOL);
+}
+
+#[test]
+fn serial_inside_a_parallel() {
+    let r = run("nested", 0, None);
+    assert_eq!(r.phase("do.ego_part.0"), (0.0, 2.0));
+    assert_eq!(r.phase("do.ego_part.1"), (2.0, 4.0));
+    assert_eq!(r.phase("do.ego_part"), (0.0, 4.0));
+    assert_eq!(r.phase("do.1"), (0.0, 5.0));
+    assert_eq!(r.phase("do"), (0.0, 5.0));
+    assert!((r.at(4.0, "ego").s - 70.0).abs() < S_TOL);
+    assert!((r.at(5.0, "ego").s - 90.0).abs() < S_TOL);
+    assert!((r.at(5.0, "npc").s - 105.0).abs() < S_TOL);
+}
+
+#[test]
+fn serial_duration_gives_the_rest_to_its_last_member() {
+    let r = run("serial_duration", 0, None);
+    assert_eq!(r.phase("do.0"), (0.0, 2.0));
+    assert_eq!(r.phase("do.1"), (2.0, 6.0));
+    assert!((r.at(6.0, "ego").s - 110.0).abs() < S_TOL);
+}
+
+#[test]
+fn until_rise_of_speed_during_a_speed_change() {
+    let r = run("until_rise_speed", 0, None);
+    let (_, e) = r.phase("do.speed_up");
+    assert!((e - 1.1).abs() < T_TOL, "ends at {e}");
+    let (s, e) = r.phase("do.settle");
+    assert!(
+        (s - 1.1).abs() < T_TOL && (e - 2.1).abs() < T_TOL,
+        "settle [{s}, {e}]"
+    );
+    assert!((r.at(1.05, "ego").speed - 14.9875).abs() < 1e-9);
+    assert!((r.at(1.1, "ego").speed - 15.225).abs() < 1e-9);
+    assert!((r.at(2.1, "ego").speed - 12.0).abs() < S_TOL);
+}
