@@ -195,7 +195,23 @@ pub(crate) fn build<'p>(
             for w in with {
                 match w {
                     WithMember::Modifier(m) => modifiers.push(m),
-                    WithMember::Until(e, _) => until = Some(e),
+                    // `until elapsed(d)`: the phase lasts at most d.
+                    WithMember::Until(e, _) => match &e.kind {
+                        ExprKind::Temporal(n, a) if n.text == "elapsed" => {
+                            let d = match a.first() {
+                                Some(a) => positive(ctx, &a.value)?,
+                                None => {
+                                    return Err(ctx.files.err(
+                                        K::Value,
+                                        e.span,
+                                        "expected a time in elapsed(…), found none",
+                                    ))
+                                }
+                            };
+                            duration = Some(duration.map_or(d, |x: f64| x.min(d)));
+                        }
+                        _ => until = Some(e),
+                    },
                     WithMember::Keep(k) => {
                         return Err(ctx.files.err(
                             K::Unsupported,

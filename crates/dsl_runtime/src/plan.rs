@@ -167,6 +167,7 @@ pub(crate) struct Settings {
 
 struct Planner<'c, 'a> {
     ctx: &'c Ctx<'a>,
+    road: PlanRoad<'a>,
     settings: Settings,
     entities: Vec<Entity>,
     index: HashMap<String, usize>,
@@ -179,14 +180,15 @@ struct Planner<'c, 'a> {
 }
 
 /// Plans `root` on `road`.
-pub(crate) fn plan(
-    ctx: &Ctx<'_>,
-    road: &PlanRoad<'_>,
+pub(crate) fn plan<'a>(
+    ctx: &Ctx<'a>,
+    road: &PlanRoad<'a>,
     root: &Phase<'_>,
     settings: Settings,
 ) -> Result<Plan, Error> {
     let mut p = Planner {
         ctx,
+        road: *road,
         settings,
         entities: Vec::new(),
         index: HashMap::new(),
@@ -328,6 +330,14 @@ impl Planner<'_, '_> {
 
     fn track(&self, name: &str) -> &Track {
         &self.entities[self.index[name]].track
+    }
+
+    /// s of `name` at time `t`: its track's distance along its lane's centre line from its
+    /// start, as s of the road (the engine moves vehicles along lane centres).
+    fn s_at(&self, name: &str, t: f64) -> f64 {
+        let tr = self.track(name);
+        let s0 = tr.at(0.0).0;
+        self.road.s_after(tr.lane(0.0), s0, tr.at(t).0 - s0)
     }
 
     fn track_mut(&mut self, name: &str) -> &mut Track {
@@ -660,7 +670,9 @@ impl Planner<'_, '_> {
                         let hold = mods
                             .iter()
                             .any(|q| q.kind == ModKind::Speed && q.at == At::All);
-                        let (s_a, v0) = self.track(target).at(t);
+                        let v0 = self.track(target).at(t).1;
+                        let s_a = self.s_at(target, t);
+                        let lane_a = self.track(target).lane(t);
                         match end {
                             None => {
                                 // Constant speeds: when does the gap reach its value?
@@ -699,11 +711,12 @@ impl Planner<'_, '_> {
                             }
                             Some(te) => {
                                 let len = te - t;
-                                let s_x = x.as_ref().map_or(0.0, |x| self.track(x).at(te).0);
+                                let s_x = x.as_ref().map_or(0.0, |x| self.s_at(x, te));
                                 let want = s_x + sign * d;
-                                let ds = want - s_a;
+                                // The distance to cover along the actor's lane.
+                                let ds = self.road.lane_distance(lane_a, s_a, want);
                                 if hold && ve_given.is_none() {
-                                    let got = s_a + v0 * len;
+                                    let got = self.road.s_after(lane_a, s_a, v0 * len);
                                     if (got - want).abs() > POSITION_TOLERANCE {
                                         return Err(ctx.files.err(
                                             K::Unsatisfiable,
@@ -901,11 +914,10 @@ impl Planner<'_, '_> {
 
     /// Checks a constraint at the start of a phase that is not the actor's first.
     fn check_start(&self, m: &Mod<'_>, target: &str, t: f64) -> Result<(), Error> {
-        let here = self.track(target);
         if m.kind == ModKind::Position {
             let (x, sign, d) = self.position_target(m, t)?;
-            let want = x.as_ref().map_or(0.0, |x| self.track(x).at(t).0) + sign * d;
-            let got = here.at(t).0;
+            let want = x.as_ref().map_or(0.0, |x| self.s_at(x, t)) + sign * d;
+            let got = self.s_at(target, t);
             if (got - want).abs() > POSITION_TOLERANCE {
                 return Err(self.ctx.files.err(
                     K::Unsatisfiable,

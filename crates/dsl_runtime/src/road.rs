@@ -69,3 +69,79 @@ impl<'a> PlanRoad<'a> {
         usize::try_from(j).ok().and_then(|j| lanes.get(j).copied())
     }
 }
+
+/// Sampling step in s of lane centre lengths (m).
+const LENGTH_STEP: f64 = 0.25;
+
+impl PlanRoad<'_> {
+    /// Length of the centre line of lane `lane` from `s0` to `s1` (negative when s1 < s0): the
+    /// distance a vehicle following the lane covers, which differs from s on curves (a lane
+    /// on the outside of a bend is longer). Summed over chords every
+    /// [`LENGTH_STEP`] m of s; outside the road, or where the lane is missing, 1 m per m of s.
+    pub(crate) fn lane_distance(&self, lane: i32, s0: f64, s1: f64) -> f64 {
+        if s1 < s0 {
+            return -self.lane_distance(lane, s1, s0);
+        }
+        let mut total = 0.0;
+        let mut s = s0;
+        while s < s1 {
+            let next = (s + LENGTH_STEP).min(s1);
+            total += self.chord(lane, s, next);
+            s = next;
+        }
+        total
+    }
+
+    /// The s reached from `s0` after `distance` along lane `lane`'s centre line.
+    pub(crate) fn s_after(&self, lane: i32, s0: f64, distance: f64) -> f64 {
+        let dir = if distance < 0.0 { -1.0 } else { 1.0 };
+        let mut left = distance.abs();
+        let mut s = s0;
+        while left > 0.0 {
+            let next = s + dir * LENGTH_STEP;
+            let piece = self.chord(lane, s.min(next), s.max(next));
+            if piece >= left {
+                return s + dir * LENGTH_STEP * left / piece;
+            }
+            left -= piece;
+            s = next;
+        }
+        s
+    }
+
+    /// Length of the chord of lane `lane` between s `a` < `b`.
+    fn chord(&self, lane: i32, a: f64, b: f64) -> f64 {
+        let inside = |s: f64| (0.0..=self.road.length).contains(&s);
+        if !(inside(a) && inside(b)) {
+            return b - a;
+        }
+        match (
+            self.road.lane_pose(lane, a, 0.0),
+            self.road.lane_pose(lane, b, 0.0),
+        ) {
+            (Ok(p), Ok(q)) => (q.x - p.x).hypot(q.y - p.y),
+            _ => b - a,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lane_length_on_an_arc() {
+        // A 100 m arc of radius 100 m (curvature 0.01, a left bend); lane -1 of 3.5 m is centred
+        // at t = -1.75 m, radius 101.75 m: its centre line is 100·101.75/100 = 101.75 m long
+        // (chords of 0.25 m shorten it by under 1e-6 m).
+        let xodr = r#"<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="7" length="100" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="100"><arc curvature="0.01"/></geometry></planView>
+<lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road></OpenDRIVE>"#;
+        let net = RoadNetwork::from_str(xodr, std::path::Path::new("arc.xodr")).expect("parses");
+        let road = PlanRoad::pick(&net).expect("a road");
+        let d = road.lane_distance(-1, 0.0, 100.0);
+        assert!((d - 101.75).abs() < 1e-4, "{d}");
+        assert!((road.s_after(-1, 0.0, 101.75) - 100.0).abs() < 1e-4);
+        assert!((road.s_after(-1, 20.0, 50.875) - 70.0).abs() < 1e-4);
+    }
+}

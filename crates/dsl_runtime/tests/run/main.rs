@@ -454,3 +454,77 @@ fn until_rise_of_speed_during_a_speed_change() {
     assert!((r.at(1.1, "ego").speed - 15.225).abs() < 1e-9);
     assert!((r.at(2.1, "ego").speed - 12.0).abs() < S_TOL);
 }
+
+#[test]
+fn every_checked_fixture_plans_or_fails_with_a_position_never_a_panic() {
+    // The language front end's fixtures (semantic cases, seed examples): whatever they do,
+    // planning them on the test road gives a plan or an error at FILE:LINE:COL.
+    let root = support::path("../dsl/tests/files");
+    let mut files = Vec::new();
+    for dir in ["semantics", "seed", "syntax"] {
+        if let Ok(entries) = std::fs::read_dir(root.join(dir)) {
+            files.extend(
+                entries
+                    .flatten()
+                    .map(|e| e.path())
+                    .filter(|p| p.extension().is_some_and(|x| x == "osc")),
+            );
+        }
+    }
+    files.sort();
+    assert!(files.len() > 100, "{} fixtures", files.len());
+    let road = support::path("tests/roads/straight.xodr");
+    let (mut planned, mut refused) = (0, 0);
+    // Bounded runs (open ends allowed), so that open-ended fixtures such as the seed's plan too.
+    let options = dsl_runtime::Options {
+        seed: 3,
+        dt: DT,
+        open_end: true,
+    };
+    for f in &files {
+        match dsl_runtime::load(f, &road, &options) {
+            Ok(_) => planned += 1,
+            Err(dsl_runtime::LoadError::Plan(e)) => {
+                refused += 1;
+                let at = e.at.rsplitn(3, ':').collect::<Vec<_>>();
+                assert!(
+                    at.len() == 3 && at[0].parse::<u32>().is_ok() && at[1].parse::<u32>().is_ok(),
+                    "{}: {e}",
+                    f.display()
+                );
+            }
+            Err(_) => {}
+        }
+    }
+    assert!(
+        planned > 0 && refused > 0,
+        "planned {planned}, refused {refused}"
+    );
+}
+
+#[test]
+fn position_at_end_holds_in_road_s_on_a_curved_road() {
+    let lowered = support::lower_at(
+        "tests/scenarios/position_end_curved.osc",
+        "../../examples/roads/highway.xodr",
+        0,
+        None,
+    )
+    .expect("plans");
+    let r = support::run_scenario("position_end_curved", &lowered.scenario, 0, None);
+    assert!((r.phase("do").1 - 6.0).abs() < T_TOL);
+    let (ego, npc) = (r.at(6.0, "ego"), r.at(6.0, "npc"));
+    let gap = npc.s - ego.s;
+    assert!(
+        (gap - 15.0).abs() < dsl_runtime::POSITION_TOLERANCE,
+        "gap {gap} m in s"
+    );
+}
+
+#[test]
+fn until_elapsed_caps_the_duration() {
+    let r = run("until_elapsed", 0, None);
+    let (s, e) = r.phase("do");
+    assert!(s.abs() < T_TOL && (e - 1.5).abs() < T_TOL, "[{s}, {e}]");
+    assert!((r.at(1.5, "ego").s - 48.0).abs() < S_TOL);
+}
