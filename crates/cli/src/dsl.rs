@@ -82,7 +82,7 @@ pub fn is_dsl(path: &Path) -> bool {
         .is_some_and(|e| e.eq_ignore_ascii_case("osc"))
 }
 
-/// `oscsim run FILE.osc --road ROAD.xodr`: checks, resolves (with `--seed`), plans and lowers
+/// `oscsim run FILE.osc [--road ROAD.xodr]`: checks, resolves (with `--seed`), plans and lowers
 /// the DSL scenario to the model the engine runs (`dsl_runtime`). Check errors are printed as
 /// miette reports on stderr; every error names FILE:LINE:COL.
 pub fn planned(
@@ -90,12 +90,6 @@ pub fn planned(
     road: Option<&Path>,
     step: &crate::step_args::StepArgs,
 ) -> anyhow::Result<scenario::Scenario> {
-    let road = road.ok_or_else(|| {
-        anyhow::anyhow!(
-            "cannot run {}: expected --road FILE.xodr for an OpenSCENARIO DSL scenario, found none",
-            file.display()
-        )
-    })?;
     let options = dsl_runtime::Options {
         seed: step.seed,
         dt: step.dt,

@@ -23,7 +23,8 @@ use engine::{Engine, EventRecord, EventSink, FrameSink};
 pub struct RunArgs {
     /// The scenario: OpenSCENARIO 1.x (.xosc), or OpenSCENARIO DSL 2.x (.osc, with --road).
     scenario: PathBuf,
-    /// The OpenDRIVE road network an OpenSCENARIO DSL scenario (.osc) runs on.
+    /// The OpenDRIVE road network an OpenSCENARIO DSL scenario (.osc) runs on (default: the
+    /// file its `map.set_map_file(…)` names).
     #[arg(long, value_name = "FILE.xodr")]
     road: Option<PathBuf>,
     #[command(flatten)]

@@ -11,6 +11,8 @@
 //! | `a.speed > x` | SpeedCondition |
 //! | `rise(c)` / `fall(c)` / `c` | edge rising / falling / none (a plain condition ends the phase at the first step it holds) |
 //! | `c1 and c2`, `c1 or c2` | one ConditionGroup, two ConditionGroups |
+//! | `@e` of an `emit e` | StoryboardElementStateCondition: an emitting phase's startTransition |
+//! | `@e` of `event e is c` | the condition c |
 //!
 //! Conditions measure the world as it stood at the step's start (the engine's trigger rule).
 
@@ -25,15 +27,21 @@ use scenario::{
 use crate::error::{Error, ErrorKind as K};
 use crate::value::{Ctx, Val};
 
-/// A trigger for a DSL condition; `entity` maps an actor path to its entity name (or `None`
-/// when the path is no vehicle of the plan).
-pub(crate) fn trigger(
-    ctx: &Ctx<'_>,
-    e: &Expr,
-    entity: &dyn Fn(&str) -> Option<String>,
-) -> Result<Trigger, Error> {
+/// The condition groups of an event's occurrence; `None`: no such event.
+pub(crate) type EventLookup<'n> = &'n dyn Fn(&str) -> Option<Result<Vec<ConditionGroup>, Error>>;
+
+/// What a condition's names refer to.
+pub(crate) struct Names<'n> {
+    /// An actor path to its entity name (`None`: no vehicle of the plan).
+    pub entity: &'n dyn Fn(&str) -> Option<String>,
+    /// An event name to the condition groups of its occurrence (`None`: no such event).
+    pub event: EventLookup<'n>,
+}
+
+/// A trigger for a DSL condition.
+pub(crate) fn trigger(ctx: &Ctx<'_>, e: &Expr, names: &Names<'_>) -> Result<Trigger, Error> {
     Ok(Trigger {
-        condition_groups: groups(ctx, e, ConditionEdge::None, entity)?,
+        condition_groups: groups(ctx, e, ConditionEdge::None, names)?,
     })
 }
 
@@ -41,16 +49,31 @@ fn groups(
     ctx: &Ctx<'_>,
     e: &Expr,
     edge: ConditionEdge,
-    entity: &dyn Fn(&str) -> Option<String>,
+    names: &Names<'_>,
 ) -> Result<Vec<ConditionGroup>, Error> {
+    let entity = names.entity;
     match &e.kind {
+        ExprKind::Temporal(n, args) if n.text == "@" => {
+            let name = args.first().and_then(|a| match &a.value.kind {
+                ExprKind::Name(x) => Some(x.clone()),
+                _ => None,
+            });
+            match name.and_then(|x| (names.event)(&x).map(|g| (x, g))) {
+                Some((_, groups)) => groups,
+                None => Err(ctx.files.err(
+                    K::Condition,
+                    e.span,
+                    "expected an event of the scenario that an emit raises or that has a condition, found none",
+                )),
+            }
+        }
         ExprKind::Binary(BinOp::Or, a, b) => {
-            let mut g = groups(ctx, a, edge, entity)?;
-            g.extend(groups(ctx, b, edge, entity)?);
+            let mut g = groups(ctx, a, edge, names)?;
+            g.extend(groups(ctx, b, edge, names)?);
             Ok(g)
         }
         ExprKind::Binary(BinOp::And, a, b) => {
-            let (ga, gb) = (groups(ctx, a, edge, entity)?, groups(ctx, b, edge, entity)?);
+            let (ga, gb) = (groups(ctx, a, edge, names)?, groups(ctx, b, edge, names)?);
             let mut out = Vec::new();
             for x in &ga {
                 for y in &gb {
@@ -74,7 +97,7 @@ fn groups(
             } else {
                 ConditionEdge::Falling
             };
-            groups(ctx, &inner.value, edge, entity)
+            groups(ctx, &inner.value, edge, names)
         }
         ExprKind::Binary(op, a, b) => {
             let (rule, flip) = match op {

@@ -94,11 +94,54 @@ pub enum LoadError {
     Plan(Error),
 }
 
-/// Checks `osc`, resolves it with the seed, reads `road` and plans and lowers the scenario.
-pub fn load(osc: &Path, road: &Path, options: &Options) -> Result<Lowered, LoadError> {
+/// Checks `osc`, resolves it with the seed, reads the road network and plans and lowers the
+/// scenario. The road network is `road` when given, else the file the program names with the
+/// standard library's `map.set_map_file(file)` (relative to the `.osc` file).
+pub fn load(osc: &Path, road: Option<&Path>, options: &Options) -> Result<Lowered, LoadError> {
     let program = dsl::check(osc).map_err(LoadError::Check)?;
-    let net = opendrive::RoadNetwork::from_file(road).map_err(LoadError::Road)?;
-    lower_program(&program, osc, road, &net, options)
+    let road = match road {
+        Some(r) => r.to_path_buf(),
+        None => map_file(&program, osc).ok_or_else(|| {
+            LoadError::Plan(Error {
+                kind: ErrorKind::Road,
+                message: "expected a road network (--road FILE.xodr, or map.set_map_file(\"FILE.xodr\") in the scenario), found none".into(),
+                at: format!("{}:1:1", osc.display()),
+            })
+        })?,
+    };
+    let net = opendrive::RoadNetwork::from_file(&road).map_err(LoadError::Road)?;
+    lower_program(&program, osc, &road, &net, options)
+}
+
+/// The OpenDRIVE file the program names with `set_map_file(file)` on a `map` (ASAM
+/// OpenSCENARIO DSL 2.1 domain model, map), at top level or in a scenario of the main file,
+/// resolved against the `.osc` file's folder.
+pub fn map_file(program: &CheckedProgram, osc: &Path) -> Option<std::path::PathBuf> {
+    use dsl::semantics::hir::ExprKind;
+    let model = &program.model;
+    let main = dsl::semantics::hir::FileId(model.library_files);
+    let members = model.top.iter().chain(
+        model
+            .compounds
+            .iter()
+            .filter(|c| c.span.file >= main)
+            .flat_map(|c| c.members.iter()),
+    );
+    members
+        .into_iter()
+        .find_map(|m| match m {
+            Member::Modifier(app) if app.name.text == "set_map_file" => {
+                app.args
+                    .iter()
+                    .find_map(|a| match (&a.name, &a.value.kind) {
+                        (None, ExprKind::Str(f)) => Some(f.clone()),
+                        (Some(n), ExprKind::Str(f)) if n.text == "file" => Some(f.clone()),
+                        _ => None,
+                    })
+            }
+            _ => None,
+        })
+        .map(|f| osc.parent().unwrap_or(Path::new("")).join(f))
 }
 
 /// Plans and lowers the one scenario of `program`'s main file that has a `do`.
@@ -157,7 +200,26 @@ pub fn lower_program(
         dt: options.dt,
         open_end: options.open_end,
     };
-    let plan = plan::plan(&ctx, &plan_road, &phases, settings).map_err(LoadError::Plan)?;
+    // Events the scenario declares with a condition (`event e is c`); `on` handlers are not run.
+    let mut events = Vec::new();
+    for m in &decl.members {
+        match m {
+            Member::Event(e) => {
+                if let Some(spec) = &e.spec {
+                    events.push((e.name.text.clone(), spec));
+                }
+            }
+            Member::On(_, span) => {
+                return Err(LoadError::Plan(files.err(
+                    ErrorKind::Unsupported,
+                    *span,
+                    "expected a scenario without `on` handlers (not run yet), found one",
+                )))
+            }
+            _ => {}
+        }
+    }
+    let plan = plan::plan(&ctx, &plan_road, &phases, events, settings).map_err(LoadError::Plan)?;
     let info = plan
         .phases
         .iter()

@@ -81,7 +81,11 @@ pub(crate) fn lower(
         .iter()
         .map(|ph| {
             let pos = files.pos(ph.span);
-            let mut groups = vec![hold_group(&ph.path, pos.clone())];
+            let mut groups = if ph.hold {
+                vec![hold_group(&ph.path, pos.clone())]
+            } else {
+                Vec::new()
+            };
             let mut actors: Vec<&str> = Vec::new();
             for a in &ph.actions {
                 if !actors.contains(&a.entity.as_str()) {

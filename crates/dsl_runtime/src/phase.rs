@@ -40,6 +40,8 @@ pub(crate) enum Kind<'p> {
     OneOf(usize),
     /// `wait`.
     Wait,
+    /// `emit event`: an instant phase that `@event` conditions observe.
+    Emit(String),
     /// `actor.action(args) with: …`.
     Invoke(Invoke<'p>),
 }
@@ -235,10 +237,18 @@ pub(crate) fn build<'p>(
                 children: Vec::new(),
             })
         }
-        Behavior::Emit(_, _, span) | Behavior::Call(_, span) => Err(ctx.files.err(
+        Behavior::Emit(name, _, span) => Ok(Phase {
+            path,
+            span: *span,
+            kind: Kind::Emit(name.text.clone()),
+            duration: None,
+            until: None,
+            children: Vec::new(),
+        }),
+        Behavior::Call(_, span) => Err(ctx.files.err(
             K::Unsupported,
             *span,
-            "expected a composition, wait or action invocation, found emit/call (not run yet)",
+            "expected a composition, wait, emit or action invocation, found call (not run yet)",
         )),
     }
 }

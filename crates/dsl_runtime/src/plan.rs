@@ -8,14 +8,16 @@
 //!   when the last member that has an end of its own ends, and members without one end with it.
 //!   `one_of`: the member drawn from the seed, as a one-member serial.
 //! - A phase's `duration` (a range is drawn from the seed) or `until` (whichever comes first)
-//!   ends it; an invocation without either ends with its composition, or when the motion the
-//!   planner chose for a `position(…, at: end)` meets it (a constant-speed closing).
+//!   ends it; an invocation without either ends with its composition, or when the engine
+//!   measures its `position(…, at: end)` gap reached. A composition's own end also stops its
+//!   running members (and a serial's later members never start). `emit e` is an instant.
 //! - A phase that nothing ends is an error before the run, unless it is the last thing the
 //!   scenario does and the run is bounded (`--duration`).
 //!
 //! Times the plan knows are absolute (a SimulationTimeCondition); after an `until` or a `wait`
 //! on a condition, the next phase starts on the state of the one that ended (same step), and a
-//! `duration` there counts from the phase's own start.
+//! `duration` there counts from the phase's own start. Actors are planned in lane lengths
+//! (the engine moves along lane centres) converted to s of the road.
 //!
 //! # What actors do
 //!
@@ -38,7 +40,7 @@ use scenario::{
 };
 
 use crate::actors::{self, ActorKind, MAX_ACCELERATION, MAX_SPEED};
-use crate::condition::{act_state, sim_time, trigger};
+use crate::condition::{act_state, sim_time, trigger, Names};
 use crate::error::{Error, ErrorKind as K};
 use crate::modifier::{read, At, Mod, ModKind};
 use crate::phase::{Invoke, Kind, Phase};
@@ -117,6 +119,8 @@ pub(crate) struct PhasePlan {
     pub end: When,
     /// What the actors do.
     pub actions: Vec<Planned>,
+    /// The phase lasts until its end (all but `emit`, an instant).
+    pub hold: bool,
 }
 
 /// An action of a phase.
@@ -177,6 +181,10 @@ struct Planner<'c, 'a> {
     /// The speed each actor's last planned speed change ends at (known also when the times
     /// are not).
     last_v: HashMap<String, f64>,
+    /// Event name → the paths of the phases that emit it.
+    emits: HashMap<String, Vec<(String, Span)>>,
+    /// Event name → its declared condition (`event e is c`).
+    events: HashMap<String, &'a Expr>,
 }
 
 /// Plans `root` on `road`.
@@ -184,6 +192,7 @@ pub(crate) fn plan<'a>(
     ctx: &Ctx<'a>,
     road: &PlanRoad<'a>,
     root: &Phase<'_>,
+    events: Vec<(String, &'a Expr)>,
     settings: Settings,
 ) -> Result<Plan, Error> {
     let mut p = Planner {
@@ -196,7 +205,20 @@ pub(crate) fn plan<'a>(
         first_leaf: HashMap::new(),
         phases: Vec::new(),
         last_v: HashMap::new(),
+        emits: HashMap::new(),
+        events: HashMap::new(),
     };
+    root.walk(&mut |ph| {
+        if let Kind::Emit(e) = &ph.kind {
+            p.emits
+                .entry(e.clone())
+                .or_default()
+                .push((ph.path.clone(), ph.span));
+        }
+    });
+    for (name, spec) in events {
+        p.events.insert(name, spec);
+    }
     // Actors, in the order the tree names them, and each one's first phase.
     let mut leaves_mods: Vec<(&Phase<'_>, Vec<Mod<'_>>)> = Vec::new();
     for leaf in root.leaves() {
@@ -276,7 +298,7 @@ pub(crate) fn plan<'a>(
         .iter()
         .map(|(l, m)| (l.path.clone(), m))
         .collect();
-    let end = p.schedule(root, When::At(0.0), None, None, &mods)?;
+    let end = p.schedule(root, When::At(0.0), None, None, None, &mods)?;
     if end == When::Never && !settings.open_end {
         return Err(no_end(ctx, root));
     }
@@ -345,6 +367,44 @@ impl Planner<'_, '_> {
         &mut self.entities[i].track
     }
 
+    /// A DSL condition as a trigger; `depth` counts nested event definitions.
+    fn condition(&self, e: &Expr, depth: usize) -> Result<Trigger, Error> {
+        let index = &self.index;
+        let entity = |path: &str| index.contains_key(path).then(|| path.to_string());
+        let event = |name: &str| -> Option<Result<Vec<ConditionGroup>, Error>> {
+            if let Some(emits) = self.emits.get(name) {
+                return Some(Ok(emits
+                    .iter()
+                    .map(|(path, span)| ConditionGroup {
+                        conditions: vec![act_state(
+                            path,
+                            StoryboardElementState::StartTransition,
+                            0.0,
+                            self.ctx.files.pos(*span),
+                        )],
+                    })
+                    .collect()));
+            }
+            let spec = self.events.get(name)?;
+            if depth > 16 {
+                return Some(Err(self.ctx.files.err(
+                    K::Condition,
+                    spec.span,
+                    "expected events defined without a cycle, found one defined through itself",
+                )));
+            }
+            Some(self.condition(spec, depth + 1).map(|t| t.condition_groups))
+        };
+        trigger(
+            self.ctx,
+            e,
+            &Names {
+                entity: &entity,
+                event: &event,
+            },
+        )
+    }
+
     /// The own end of `p` (duration, until), given its start.
     fn own_end(&self, p: &Phase<'_>, start: &When) -> Result<Option<When>, Error> {
         let mut end = None;
@@ -365,11 +425,7 @@ impl Planner<'_, '_> {
             });
         }
         if let Some(u) = p.until {
-            let index = &self.index;
-            let t = trigger(self.ctx, u, &|path| {
-                index.contains_key(path).then(|| path.to_string())
-            })?;
-            let w = When::Dyn(t);
+            let w = When::Dyn(self.condition(u, 0)?);
             end = Some(match end {
                 Some(e) => e.or(w),
                 None => w,
@@ -383,10 +439,19 @@ impl Planner<'_, '_> {
         p: &Phase<'_>,
         start: When,
         inherit: Option<When>,
+        cap: Option<When>,
         len_hint: Option<f64>,
         mods: &HashMap<String, &Vec<Mod<'_>>>,
     ) -> Result<When, Error> {
         let own = self.own_end(p, &start)?;
+        // The latest end: an enclosing composition's own end (duration, until) stops its
+        // running member too.
+        let capped = |w: When| match (&cap, w) {
+            // Filled in with the enclosing parallel's end, which is capped itself.
+            (_, When::Pending) => When::Pending,
+            (Some(c), w) => w.or(c.clone()),
+            (None, w) => w,
+        };
         let first_index = self.phases.len();
         let end = match &p.kind {
             Kind::Invoke(_) | Kind::Wait => {
@@ -406,19 +471,43 @@ impl Planner<'_, '_> {
                     (None, None, None) if self.settings.open_end => When::Never,
                     (None, None, None) => return Err(no_end(self.ctx, p)),
                 };
+                let end = capped(end);
                 self.phases.push(PhasePlan {
                     path: p.path.clone(),
                     span: p.span,
                     start,
                     end: end.clone(),
                     actions,
+                    hold: true,
                 });
                 return Ok(end);
+            }
+            Kind::Emit(_) => {
+                // An instant: its Act starts and, with nothing to do, completes in its step.
+                self.phases.push(PhasePlan {
+                    path: p.path.clone(),
+                    span: p.span,
+                    start: start.clone(),
+                    end: When::Never,
+                    actions: Vec::new(),
+                    hold: false,
+                });
+                return Ok(start);
             }
             Kind::Serial | Kind::OneOf(_) => {
                 let mut cur = start.clone();
                 let n = p.children.len();
+                let own_cap = match (&own, &cap) {
+                    (Some(o), Some(c)) => Some(o.clone().or(c.clone())),
+                    (o, c) => o.clone().or(c.clone()),
+                };
                 for (i, c) in p.children.iter().enumerate() {
+                    // Members that would start when the serial has ended never run.
+                    if let (When::At(t), Some(When::At(end))) = (&cur, &own_cap) {
+                        if i > 0 && *t >= *end {
+                            break;
+                        }
+                    }
                     let inh = if i + 1 == n {
                         match (&own, &inherit) {
                             (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
@@ -432,28 +521,44 @@ impl Planner<'_, '_> {
                         Kind::OneOf(_) => p.duration.or(len_hint),
                         _ => None,
                     };
-                    cur = self.schedule(c, cur.clone(), inh, hint, mods)?;
+                    cur = self.schedule(c, cur.clone(), inh, own_cap.clone(), hint, mods)?;
+                    // After a run-time end, the next member starts on the state of the one that
+                    // ended (and only while this serial runs, which its own end may stop).
+                    let mut ended = vec![act_state(
+                        &c.path,
+                        StoryboardElementState::CompleteState,
+                        0.0,
+                        self.ctx.files.pos(c.span),
+                    )];
                     if i + 1 < n {
+                        if matches!(own_cap, Some(When::Dyn(_))) {
+                            ended.push(act_state(
+                                &p.path,
+                                StoryboardElementState::RunningState,
+                                0.0,
+                                self.ctx.files.pos(p.span),
+                            ));
+                        }
                         cur = match cur {
                             When::At(t) => When::At(t),
                             When::Dyn(_) => When::Dyn(Trigger {
-                                condition_groups: vec![ConditionGroup {
-                                    conditions: vec![act_state(
-                                        &c.path,
-                                        StoryboardElementState::CompleteState,
-                                        0.0,
-                                        self.ctx.files.pos(c.span),
-                                    )],
-                                }],
+                                condition_groups: vec![ConditionGroup { conditions: ended }],
                             }),
                             When::Never | When::Pending => return Err(no_end(self.ctx, c)),
                         };
+                    } else if matches!(cur, When::Dyn(_)) {
+                        // Ends with its last member: on that member's state (its condition
+                        // could hold before the member runs).
+                        ended.truncate(1);
+                        cur = When::Dyn(Trigger {
+                            condition_groups: vec![ConditionGroup { conditions: ended }],
+                        });
                     }
                 }
-                match own {
+                capped(match own {
                     Some(o) => o,
                     None => cur,
-                }
+                })
             }
             Kind::Parallel => {
                 // Members planned (and written) first: those whose motion others refer to, and
@@ -471,18 +576,23 @@ impl Planner<'_, '_> {
                     (Some(o), None) => Some(o.clone()),
                     (None, _) => Some(When::Pending),
                 };
+                let own_cap = match (&own, &cap) {
+                    (Some(o), Some(c)) => Some(o.clone().or(c.clone())),
+                    (o, c) => o.clone().or(c.clone()),
+                };
                 let mut ends = Vec::new();
                 for c in order {
                     let e = self.schedule(
                         c,
                         start.clone(),
                         inh.clone(),
+                        own_cap.clone(),
                         p.duration.or(len_hint),
                         mods,
                     )?;
                     ends.push((c, e));
                 }
-                match own {
+                capped(match own {
                     Some(o) => o,
                     None => {
                         let with_end: Vec<&(&Phase<'_>, When)> =
@@ -520,7 +630,7 @@ impl Planner<'_, '_> {
                             })
                         }
                     }
-                }
+                })
             }
         };
         // Members that end with this composition.
@@ -537,6 +647,7 @@ impl Planner<'_, '_> {
             start,
             end: end.clone(),
             actions: Vec::new(),
+            hold: true,
         });
         Ok(end)
     }

@@ -482,7 +482,7 @@ fn every_checked_fixture_plans_or_fails_with_a_position_never_a_panic() {
         open_end: true,
     };
     for f in &files {
-        match dsl_runtime::load(f, &road, &options) {
+        match dsl_runtime::load(f, Some(&road), &options) {
             Ok(_) => planned += 1,
             Err(dsl_runtime::LoadError::Plan(e)) => {
                 refused += 1;
@@ -527,4 +527,68 @@ fn until_elapsed_caps_the_duration() {
     let (s, e) = r.phase("do");
     assert!(s.abs() < T_TOL && (e - 1.5).abs() < T_TOL, "[{s}, {e}]");
     assert!((r.at(1.5, "ego").s - 48.0).abs() < S_TOL);
+}
+
+#[test]
+fn the_scenario_names_its_road_network() {
+    let options = dsl_runtime::Options {
+        seed: 0,
+        dt: DT,
+        open_end: false,
+    };
+    let lowered = dsl_runtime::load(
+        &support::path("tests/scenarios/map_file.osc"),
+        None,
+        &options,
+    )
+    .expect("plans on the map it names");
+    let road = lowered
+        .scenario
+        .road_network
+        .logic_file
+        .clone()
+        .expect("a road");
+    assert!(road.ends_with("roads/straight.xodr"), "{}", road.display());
+    let r = support::run_scenario("map_file", &lowered.scenario, 0, None);
+    assert!((r.at(2.0, "ego").s - 41.0).abs() < S_TOL);
+    // Without a map and without --road: an error before the run.
+    let e = dsl_runtime::load(
+        &support::path("tests/scenarios/constant_speed.osc"),
+        None,
+        &options,
+    )
+    .expect_err("no road");
+    assert!(e.to_string().contains("expected a road network"), "{e}");
+}
+
+#[test]
+fn a_serial_duration_stops_its_running_member_and_skips_the_rest() {
+    let r = run("serial_cap", 0, None);
+    assert_eq!(r.phase("do.0"), (0.0, 2.0));
+    assert_eq!(r.phase("do"), (0.0, 2.0));
+    assert_eq!(r.when("do.1", "Start"), None);
+    assert!((r.at(2.0, "ego").s - 30.0).abs() < S_TOL);
+    assert!((r.last_time() - 2.0).abs() < T_TOL);
+}
+
+#[test]
+fn emit_and_wait_on_events() {
+    let r = run("events", 0, None);
+    // The emit is an instant at 2 s.
+    assert_eq!(r.when("do.ego_part.1", "Start"), Some(2.0));
+    assert_eq!(r.when("do.ego_part.1", "End"), Some(2.0));
+    let (_, e) = r.phase("do.npc_part.0");
+    assert!((e - 2.05).abs() < T_TOL, "until @passed ends at {e}");
+    let (s, e) = r.phase("do.npc_part.1");
+    assert!((s - 2.05).abs() < T_TOL && (e - 3.05).abs() < T_TOL);
+    assert!((r.at(2.05, "npc").s - 30.25).abs() < S_TOL);
+    assert!((r.at(3.05, "npc").s - 30.25).abs() < S_TOL);
+    // wait @fast (a condition true from the start) ends in the step after it starts, and the
+    // serial with it.
+    let (s, e) = r.phase("do.ego_part.3");
+    assert!(
+        (s - 3.0).abs() < T_TOL && (e - 3.05).abs() < T_TOL,
+        "wait [{s}, {e}]"
+    );
+    assert!((r.phase("do.ego_part").1 - 3.05).abs() < T_TOL);
 }

@@ -88,7 +88,7 @@ pub fn lower_at(
         dt: DT,
         open_end: duration.is_some(),
     };
-    dsl_runtime::load(&path(osc), &path(road), &options)
+    dsl_runtime::load(&path(osc), Some(&path(road)), &options)
 }
 
 /// Plans and runs `tests/scenarios/NAME.osc`.

@@ -596,6 +596,9 @@ impl Cx<'_> {
                 }
                 self.opaque(Ty::Event, span, "event")
             }
+            // `@event`: the event's name is resolved where the events of the scenario are known
+            // (the runtime reports an unknown one at its position).
+            ("@", Some(_)) => self.opaque(Ty::Event, span, "event"),
             ("sample", Some(e)) => {
                 let t = self.expr(e, scope, None);
                 for a in &args[1..] {
