@@ -167,7 +167,9 @@ fn run_dsl_scenario_needs_a_road_and_reports_plan_errors_with_positions() {
     let out = oscsim(&["run", osc.to_str().unwrap_or_default()]);
     assert_eq!(out.status.code(), Some(1));
     assert!(
-        text(&out.stderr).contains("expected --road FILE.xodr"),
+        text(&out.stderr).contains(
+            "expected a road network (--road FILE.xodr, or map.set_map_file(\"FILE.xodr\") in the scenario), found none at "
+        ) && text(&out.stderr).contains("cut_in_highway.osc:1:1"),
         "{}",
         text(&out.stderr)
     );
