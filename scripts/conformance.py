@@ -135,6 +135,38 @@ def log_summary(events):
     return started, unsupported
 
 
+def controller_summary(path, events):
+    """The user controllers of a scenario: {(entity, controller): (model, activated, notes)} from
+    its event log's `controller` records, plus the ObjectControllers and
+    AssignControllerActions written in the file that the log does not show (assigned and never
+    activated: {(None, name): ("", False, [])})."""
+    found = {}
+    if os.path.exists(events):
+        for line in open(events, encoding="utf-8"):
+            line = line.strip()
+            if not line:
+                continue
+            e = json.loads(line)
+            if e.get("kind") != "controller":
+                continue
+            key = (e["entity"], e["controller"])
+            model, active, notes = found.get(key, (e["model"], False, []))
+            active = active or e["longitudinal"] or e["lateral"]
+            note = re.sub(r"^(assigned|activation changed);? ?", "", e.get("note", ""))
+            if note and note not in notes:
+                notes.append(note)
+            found[key] = (model, active, notes)
+    text = open(path, encoding="utf-8", errors="replace").read()
+    text = re.sub(r"<!--.*?-->", "", text, flags=re.S)
+    written = re.findall(r"<Controller\s+name=\"([^\"]*)\"", text)
+    written += re.findall(r"entryName=\"([^\"]*)\"[^>]*/>\s*</(?:ObjectController|AssignControllerAction)", text)
+    shown = {c for (_, c) in found}
+    for name in written:
+        if name not in shown:
+            found.setdefault((None, name), ("", False, []))
+    return found
+
+
 def cell(text):
     return text.replace("|", "\\|").replace("\n", " ")
 
@@ -158,6 +190,7 @@ def main():
     notes = read_notes()
     rows = []
     all_unsupported = {}
+    controllers = []
     for source, folder in SOURCES:
         directory = os.path.join(CORPUS, folder)
         for file in sorted(os.listdir(directory)):
@@ -173,6 +206,9 @@ def main():
                 verdict = "ran (no reference)" if not has_ref else "ran"
             else:
                 verdict = "pass" if result["ok"] else "fail"
+            found = controller_summary(os.path.join(directory, file), events)
+            if found:
+                controllers.append((source, name, found))
             started, unsupported = log_summary(events)
             for m, n in unsupported.items():
                 all_unsupported.setdefault(m, set()).add(name)
@@ -216,6 +252,28 @@ def main():
                    "actions that read false or did nothing; message: scenarios):\n")
         for m, names in sorted(all_unsupported.items(), key=lambda kv: -len(kv[1])):
             out.append(f"- {m}: {', '.join(sorted(names))}")
+    if controllers:
+        out.append("\nUser controllers (OpenSCENARIO 1.3 §6.6; engine module `controller`). esmini's "
+                   "own controllers are not oscsim models: oscsim keeps them off and the default "
+                   "controller drives those entities, as in esmini's reference runs (made with "
+                   "`--disable_controllers`). None of them is mapped onto an oscsim model: none "
+                   "computes what an oscsim model computes (esmini's ACCController follows its own "
+                   "speed law, not the constant-time-gap law with ISO 15622 limits of `acc`; its "
+                   "ALKS, ghost, reference, interactive, sloppy, SUMO, HID and external controllers "
+                   "have no counterpart). Each assignment and activation is in the event log as a "
+                   "`controller` record naming the controller, `model` `none`.\n")
+        out.append("| scenario | entity: controller | oscsim model | what oscsim does |")
+        out.append("| --- | --- | --- | --- |")
+        for source, name, found in controllers:
+            for (entity, controller), (model, active, notes) in found.items():
+                who = f"{entity}: {controller}" if entity else f"{controller} (never activated)"
+                if model in ("", "none"):
+                    what = ("kept off; the default controller drives, as in the reference"
+                            if active else "assigned, never activated; the default controller drives")
+                    model = "none"
+                else:
+                    what = "; ".join(notes) or ("runs" if active else "assigned, never activated")
+                out.append(f"| {source}/{name} | {cell(who)} | {model} | {cell(what)} |")
     if report is None:
         for source, name, verdict, err, wall, result in rows:
             extra = f" pos {result['pos']:.3f} speed {result['speed']:.3f} events {result['events']} entities {result['entities']}" if result else ""

@@ -41,6 +41,9 @@ pub struct Options {
     pub duration: Option<f64>,
     /// Cap on simulated seconds per variant.
     pub max_time: f64,
+    /// The driver model of spawned traffic without a controller of its own
+    /// ([`engine::EngineConfig::traffic_model`]).
+    pub traffic_model: Option<engine::runtime::TrafficModel>,
     /// The entity measured against the others (metrics.rs).
     pub host: String,
     /// Worker threads (at least 1).
@@ -60,6 +63,7 @@ impl Default for Options {
             dt: engine::runtime::DEFAULT_DT,
             duration: None,
             max_time: engine::runtime::DEFAULT_MAX_TIME,
+            traffic_model: None,
             host: "Ego".into(),
             jobs: 1,
             shard: Shard::ALL,
@@ -176,6 +180,7 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         duration: options.duration,
         max_time: options.max_time,
         seed: variant_seed(options.seed, v),
+        traffic_model: options.traffic_model,
     };
     let mut engine =
         Engine::load(&plan.scenario.path, &params, config).map_err(|e| e.to_string())?;

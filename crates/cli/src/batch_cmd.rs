@@ -96,6 +96,7 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
         dt: args.step.dt,
         duration: args.step.duration,
         max_time: args.step.max_time,
+        traffic_model: args.step.config().traffic_model,
         host: args.host.clone(),
         jobs: args
             .jobs

@@ -1,9 +1,19 @@
 //! The stepping flags `oscsim run` and `oscsim batch` share: step length, duration, time cap and
-//! seed, turned into the engine's configuration.
+//! seed, the driver model of spawned traffic, turned into the engine's configuration.
 
+use engine::runtime::TrafficModel;
 use engine::EngineConfig;
 
-/// `--dt`, `--duration`, `--max-time`, `--seed`.
+/// `--traffic-model` values.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum TrafficModelArg {
+    /// Intelligent Driver Model.
+    Idm,
+    /// IDM and MOBIL lane changes.
+    Mobil,
+}
+
+/// `--dt`, `--duration`, `--max-time`, `--seed`, `--traffic-model`.
 #[derive(clap::Args, Debug, Clone, Copy)]
 pub struct StepArgs {
     /// Step length in seconds.
@@ -19,6 +29,11 @@ pub struct StepArgs {
     /// the same run (for a batch: each variant's seed is derived from it and its number).
     #[arg(long, default_value_t = engine::runtime::DEFAULT_SEED)]
     pub seed: u64,
+    /// Give every vehicle spawned by a traffic action (TrafficSwarm/Source/AreaAction) that the
+    /// scenario gives no controller this driver model, with its default parameters: `idm`
+    /// (car following) or `mobil` (car following and lane changes).
+    #[arg(long, value_enum, value_name = "MODEL")]
+    pub traffic_model: Option<TrafficModelArg>,
 }
 
 impl StepArgs {
@@ -29,6 +44,10 @@ impl StepArgs {
             duration: self.duration,
             max_time: self.max_time,
             seed: self.seed,
+            traffic_model: self.traffic_model.map(|m| match m {
+                TrafficModelArg::Idm => TrafficModel::Idm,
+                TrafficModelArg::Mobil => TrafficModel::Mobil,
+            }),
         }
     }
 }

@@ -7,6 +7,7 @@
 //!
 //! | module | implements |
 //! | --- | --- |
+//! | `controller` | OpenSCENARIO 1.3 §6.6 user controllers: the `Controller` trait, `idm`, `mobil`, `acc`, `vehicle_dynamics`, `external`, the controllers stage |
 //! | `domain` | OpenSCENARIO 2.0 §8.7 physical-object actors and their measurement methods |
 //! | `storyboard` | OpenSCENARIO 1.3 §7.2.1 / §8.3–8.4 storyboard state machine and triggers |
 //! | `position` | OpenSCENARIO 1.3 §7.4 positions resolved to world poses and road positions |
@@ -26,7 +27,7 @@
 
 mod actions;
 pub mod condition;
-mod controller;
+pub mod controller;
 pub mod domain;
 pub mod models;
 pub mod output;

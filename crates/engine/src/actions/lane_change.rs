@@ -77,7 +77,27 @@ pub(crate) fn start(
     else {
         return Err(RuntimeError::unsupported("this LateralAction", pos));
     };
-    let lane = match target {
+    let lane = target_lane(world, target, pos)?;
+    begin(
+        world,
+        actor,
+        lane,
+        target_lane_offset.unwrap_or(0.0),
+        dynamics,
+        now,
+        false,
+        pos,
+    )
+}
+
+/// The lane id a LaneChangeTarget names: absolute, or counted from the reference entity's lane
+/// as seen in its direction of travel.
+pub(crate) fn target_lane(
+    world: &World,
+    target: &LaneChangeTarget,
+    pos: &SourcePos,
+) -> Result<i32, RuntimeError> {
+    Ok(match target {
         LaneChangeTarget::Absolute(id) => id.trim().parse::<i32>().map_err(|_| {
             RuntimeError::at("an OpenDRIVE lane id (integer)", format!("'{id}'"), pos)
         })?,
@@ -96,17 +116,7 @@ pub(crate) fn start(
             lane_shift(rp.lane_id, *value, track.direction)
         }
         _ => return Err(RuntimeError::unsupported("this LaneChangeTarget", pos)),
-    };
-    begin(
-        world,
-        actor,
-        lane,
-        target_lane_offset.unwrap_or(0.0),
-        dynamics,
-        now,
-        false,
-        pos,
-    )
+    })
 }
 
 /// Starts a blend of `actor` from where it is to (`lane`, `offset`).

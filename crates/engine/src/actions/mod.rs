@@ -9,7 +9,6 @@
 //! (§7.5.1, semantics-pitfalls #7).
 
 mod appearance;
-mod controller;
 mod custom;
 mod distance;
 mod entity;
@@ -35,7 +34,14 @@ use scenario::{
 
 pub(crate) use appearance::Appearances;
 pub(crate) use environment::EnvironmentState;
+pub(crate) use lane_change::{abandon as lane_change_abandon, target_lane};
 pub use override_controller::ControllerOverrides;
+pub(crate) use speed::target_speed;
+
+/// Puts `actor` back on the lane at its pose (the default controller keeps that lane).
+pub(crate) fn release_to_road(world: &mut World, actor: EntityId) {
+    follow_trajectory::release(world, actor, false);
+}
 
 use crate::output::EventRecord;
 use crate::runtime::entity::EntityId;
@@ -166,6 +172,32 @@ fn release(world: &mut World, actor: EntityId, id: ActionId) {
     }
 }
 
+/// Stops the action of `table` running in `domain` of `actor`, if any, and frees the domain
+/// (a user controller took it).
+pub(crate) fn stop_domain(
+    table: &mut ActionTable,
+    world: &mut World,
+    actor: EntityId,
+    domain: Domain,
+) {
+    let e = world.entity_mut(actor);
+    let held = match domain {
+        Domain::Longitudinal => e.longitudinal_action.take(),
+        Domain::Lateral => e.lateral_action.take(),
+    };
+    let Some(old) = held else {
+        return;
+    };
+    if let Some(slot) = table.slots.get_mut(old.0 as usize) {
+        for (part, &a) in slot.parts.iter_mut().zip(&slot.actors) {
+            if a == actor && part.status() == ActionStatus::Running {
+                interrupt(world, actor, part);
+            }
+        }
+    }
+    release(world, actor, old);
+}
+
 /// The storyboard's [`ActionHost`] over the table and the world for one step.
 pub(crate) struct Host<'a> {
     pub table: &'a mut ActionTable,
@@ -196,6 +228,11 @@ impl Host<'_> {
         }
     }
 
+    /// Stops the action running in `domain` of `actor`, if any, and frees the domain.
+    fn stop_domain(&mut self, actor: EntityId, domain: Domain) {
+        stop_domain(self.table, self.world, actor, domain);
+    }
+
     /// Starts a private action on one actor.
     fn start_private(
         &mut self,
@@ -205,6 +242,24 @@ impl Host<'_> {
     ) -> Result<Part, RuntimeError> {
         let pos = &self.table.slots[id.0 as usize].action.pos.clone();
         let time = self.time;
+        // A motion action on a domain a user controller holds goes to that controller and
+        // completes at once (engine module `controller`).
+        let name = self.table.slots[id.0 as usize].name.clone();
+        let origin = crate::controller::Origin {
+            element: &name,
+            time,
+            pos,
+        };
+        if crate::controller::hand_over(
+            self.world,
+            actor,
+            action,
+            !self.story,
+            &origin,
+            self.events,
+        )? {
+            return Ok(Part::Done(ActionStatus::Ended));
+        }
         match action {
             PrivateAction::Teleport(position) => {
                 teleport::start(self.world, actor, position, self.story)?;
@@ -251,10 +306,48 @@ impl Host<'_> {
             }
             PrivateAction::Controller(c) => {
                 let name = self.table.slots[id.0 as usize].name.clone();
-                if let ControllerAction::OverrideValues(o) = &**c {
-                    override_controller::start(self.world, actor, o, &name, time, self.events);
-                } else {
-                    controller::start(c, &name, pos, time, self.events)?;
+                let origin = crate::controller::Origin {
+                    element: &name,
+                    time,
+                    pos,
+                };
+                let taken = match &**c {
+                    ControllerAction::OverrideValues(o) => {
+                        override_controller::start(self.world, actor, o, &name, time, self.events);
+                        crate::controller::Taken::default()
+                    }
+                    ControllerAction::Assign {
+                        controller,
+                        object_controller_name,
+                        activate,
+                    } => crate::controller::assign(
+                        self.world,
+                        actor,
+                        controller,
+                        object_controller_name.as_deref(),
+                        activate,
+                        &origin,
+                        self.events,
+                    )?,
+                    ControllerAction::Activate {
+                        object_controller_ref,
+                        domains,
+                    } => crate::controller::activate(
+                        self.world,
+                        actor,
+                        object_controller_ref.as_deref(),
+                        domains,
+                        &origin,
+                        self.events,
+                    )?,
+                    _ => return Err(RuntimeError::unsupported("this ControllerAction", pos)),
+                };
+                // A user controller that takes a domain ends the action running there.
+                if taken.longitudinal {
+                    self.stop_domain(actor, Domain::Longitudinal);
+                }
+                if taken.lateral {
+                    self.stop_domain(actor, Domain::Lateral);
                 }
                 Ok(Part::Done(ActionStatus::Ended))
             }

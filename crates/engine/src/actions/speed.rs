@@ -103,6 +103,40 @@ pub(crate) fn entity_ref(
     Ok(id)
 }
 
+/// The speed (m/s) `target` asks for now, a relative one read from its entity's speed; for a
+/// user controller holding the longitudinal domain (engine module `controller`).
+pub(crate) fn target_speed(
+    world: &World,
+    target: &SpeedTarget,
+    pos: &SourcePos,
+) -> Result<f64, RuntimeError> {
+    let v = match target {
+        SpeedTarget::Absolute(v) => *v,
+        SpeedTarget::Relative {
+            entity_ref: name,
+            value,
+            speed_target_value_type,
+            ..
+        } => {
+            let v = world.entity(entity_ref(world, name, pos)?).speed;
+            match speed_target_value_type {
+                SpeedTargetValueType::Delta => v + value,
+                _ => v * value,
+            }
+        }
+        _ => return Err(RuntimeError::unsupported("this SpeedActionTarget", pos)),
+    };
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(RuntimeError::at(
+            "a finite target speed",
+            format!("{v} m/s"),
+            pos,
+        ))
+    }
+}
+
 /// Starts the action: a step change takes effect at once.
 pub(crate) fn start(
     world: &mut World,

@@ -21,8 +21,9 @@ use crate::runtime::entity::{Entity, LaneTrack};
 use crate::runtime::lanes::{advance, curvature, road_position};
 
 /// Moves entity `e` over one step of `dt` s: position, heading, road position, velocity,
-/// acceleration, yaw rate and odometer.
-pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
+/// acceleration, yaw rate and odometer. `travel`, when given, is the distance to travel (a
+/// user controller's longitudinal command, controller/stage.rs) instead of speed × dt.
+pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real, travel: Option<Real>) {
     if !e.placed {
         return;
     }
@@ -35,10 +36,10 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     // document order is fixed by the file alone (lane_change_simple: the Lane change
     // maneuver precedes the End Of Road speed maneuver, and esmini's lane change runs at the
     // speed of the step's start while the speed action accelerates).
-    let speed = if e.lateral_first {
-        e.start_speed
-    } else {
-        e.speed
+    let speed = match travel {
+        Some(d) => d / dt,
+        None if e.lateral_first => e.start_speed,
+        None => e.speed,
     };
     if e.held {
         // An action set the pose for this step: measure only.
@@ -49,6 +50,12 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real) {
     } else {
         advance_entity(net, e, speed, dt);
     }
+    measure(e, old_h, old_v, dt);
+}
+
+/// Sets velocity, yaw rate and acceleration of `e` after a move of `dt` s from heading
+/// `old_h` and speed along the travel `old_v`.
+pub(crate) fn measure(e: &mut Entity, old_h: Real, old_v: Real, dt: Real) {
     e.velocity = Velocity6d {
         translational: e.travel_velocity(),
         rotational: Vector3::new(0.0, 0.0, normalize_angle(e.pose.h - old_h) / dt),

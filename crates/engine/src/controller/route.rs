@@ -200,6 +200,17 @@ impl RouteFollow {
         Some(h)
     }
 
+    /// The successor [`choose`](Self::choose) would take, without moving the cursor: the lane
+    /// a gap search follows where the road ends.
+    pub(crate) fn peek(
+        &self,
+        net: &RoadNetwork,
+        from_road: &str,
+        candidates: &[LaneHandle],
+    ) -> Option<LaneHandle> {
+        self.clone().choose(net, from_road, candidates)
+    }
+
     /// The lane the entity must change to on its current road, when the lane it follows (as
     /// lane links carry it to the road's end) does not lead to the route's next road: the
     /// planned lane where the entity is (the stretch of this road that covers its s, or the

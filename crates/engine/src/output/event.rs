@@ -71,6 +71,25 @@ pub enum EventRecord {
         /// The value now.
         value: bool,
     },
+    /// A user controller of an entity was assigned, (de)activated, or given a motion action of
+    /// the scenario (OpenSCENARIO 1.3 §6.6, §7.7.2.5; engine module `controller`): the
+    /// controller's active domains after the change, the state a ControllerCondition reads.
+    Controller {
+        /// Simulation time (s).
+        time: f64,
+        /// The action's name ("ObjectController" for one assigned with the entity).
+        element: String,
+        /// The entity's name.
+        entity: String,
+        /// `Controller@name`.
+        controller: String,
+        /// Its model (`idm`, …), `default`, or `none` for a controller that is not oscsim's.
+        model: String,
+        /// Its active domains after the change.
+        active: crate::controller::ActiveDomains,
+        /// What happened ("assigned", "activation changed", "desired speed 25 m/s", …).
+        note: String,
+    },
     /// Something failed at runtime: an action that could not start (the run stops with this
     /// error), or a condition that could not be evaluated, a route that could not be planned or
     /// a trajectory that could not be built (logged once; the condition reads false, the action
@@ -111,6 +130,7 @@ impl EventRecord {
             | EventRecord::Entity { time, .. }
             | EventRecord::Signal { time, .. }
             | EventRecord::Monitor { time, .. }
+            | EventRecord::Controller { time, .. }
             | EventRecord::Error { time, .. } => *time,
         }
     }

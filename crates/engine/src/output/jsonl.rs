@@ -120,6 +120,27 @@ impl<W: Write> EventSink for JsonlWriter<W> {
                 "{{\"time\":{time:.3},\"element\":{},\"kind\":\"monitor\",\"value\":{value}}}",
                 string(element),
             ),
+            EventRecord::Controller {
+                time,
+                element,
+                entity,
+                controller,
+                model,
+                active,
+                note,
+            } => writeln!(
+                self.out,
+                "{{\"time\":{time:.3},\"element\":{},\"kind\":\"controller\",\"entity\":{},\"controller\":{},\"model\":{},\"longitudinal\":{},\"lateral\":{},\"lighting\":{},\"animation\":{},\"note\":{}}}",
+                string(element),
+                string(entity),
+                string(controller),
+                string(model),
+                active.longitudinal,
+                active.lateral,
+                active.lighting,
+                active.animation,
+                string(note)
+            ),
             EventRecord::Error {
                 time,
                 element,

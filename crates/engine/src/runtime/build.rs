@@ -90,6 +90,11 @@ pub(crate) fn build(scenario: &Scenario, network: RoadNetwork) -> Result<Built, 
     let desc = b.storyboard()?;
     let (actions, conditions) = (b.actions, b.conditions);
     world.selections.set_actors(b.selection_actors);
+    crate::controller::set_up(
+        scenario,
+        &mut world,
+        actions.slots.iter().map(|slot| &slot.action),
+    )?;
     Ok(Built {
         world,
         desc,
@@ -134,6 +139,8 @@ pub(crate) fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entit
             e.vehicle_category = Some(v.vehicle_category);
             e.performance = Some(v.performance);
             e.max_curvature = crate::trajectory::max_curvature(&v.axles);
+            e.axles = Some(v.axles.clone());
+            e.mass = v.mass;
             e.model3d.clone_from(&v.model3d);
             e.color = color_of(&v.properties);
         }

@@ -9,6 +9,15 @@ pub const DEFAULT_MAX_TIME: f64 = 3600.0;
 /// Default seed of the run's random streams.
 pub const DEFAULT_SEED: u64 = 1;
 
+/// A controller model for spawned traffic ([`EngineConfig::traffic_model`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TrafficModel {
+    /// `idm`: the Intelligent Driver Model (longitudinal), the model's default parameters.
+    Idm,
+    /// `mobil`: IDM and MOBIL lane changes (both domains), the models' default parameters.
+    Mobil,
+}
+
 /// Settings of one run.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EngineConfig {
@@ -22,6 +31,11 @@ pub struct EngineConfig {
     /// stream keyed by its name) and routes with routeStrategy `random` (keyed by the route's
     /// name). Default [`DEFAULT_SEED`].
     pub seed: u64,
+    /// The controller every vehicle spawned by a traffic action gets when the scenario gives
+    /// it none (no ControllerDistribution, no template ObjectController): `idm` or `mobil`,
+    /// assigned and activated at the spawn (runtime/traffic/controllers.rs). Default `None`:
+    /// the default controller.
+    pub traffic_model: Option<TrafficModel>,
 }
 
 impl Default for EngineConfig {
@@ -31,6 +45,7 @@ impl Default for EngineConfig {
             duration: None,
             max_time: DEFAULT_MAX_TIME,
             seed: DEFAULT_SEED,
+            traffic_model: None,
         }
     }
 }

@@ -126,6 +126,10 @@ pub struct Entity {
     pub color: Option<Color>,
     /// The largest curvature a vehicle can drive (1/m), from its axles (trajectory::max_curvature).
     pub max_curvature: Option<Real>,
+    /// Axles (vehicles only): the wheelbase and steering of the `vehicle_dynamics` model.
+    pub axles: Option<scenario::Axles>,
+    /// `mass` (kg, vehicles of 1.2+).
+    pub mass: Option<Real>,
     /// `model3d`, as written.
     pub model3d: Option<String>,
     /// True once a TeleportAction (or AddEntityAction) placed the entity.
@@ -192,6 +196,8 @@ impl Entity {
             placed: false,
             pose: Pose::default(),
             max_curvature: None,
+            axles: None,
+            mass: None,
             road_position: None,
             track: None,
             speed: 0.0,

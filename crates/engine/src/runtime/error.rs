@@ -114,6 +114,13 @@ pub enum RuntimeErrorKind {
         /// Simulation time of the state (s).
         time: f64,
     },
+    /// A host program gave an input to an entity that has no active `external` controller
+    /// (engine module `controller`).
+    #[error("expected an entity with an active external controller, found {found}")]
+    NotExternal {
+        /// The entity and what it has.
+        found: String,
+    },
     /// Writing output failed.
     #[error("cannot write {what}: {message}")]
     Output {

@@ -103,6 +103,8 @@ pub struct Neighbour {
     pub id: EntityId,
     /// Gap from the query's start point to the near end of its footprint (m of s, ≥ 0).
     pub gap: Real,
+    /// The query's direction of travel on the lane where the entity was found.
+    pub direction: Direction,
 }
 
 /// The per-lane index of one step (module doc).
@@ -357,7 +359,11 @@ impl LaneIndex {
                     .take_while(|e| e.lo >= from - lane.max_len)
                     .find(|e| e.hi > from && e.id != exclude);
                 if let Some(e) = overlapping {
-                    return Some(Neighbour { id: e.id, gap: 0.0 });
+                    return Some(Neighbour {
+                        id: e.id,
+                        gap: 0.0,
+                        direction,
+                    });
                 }
                 entries[p..]
                     .iter()
@@ -365,6 +371,7 @@ impl LaneIndex {
                     .map(|e| Neighbour {
                         id: e.id,
                         gap: e.lo - from,
+                        direction,
                     })
             }
             Direction::Backward => {
@@ -381,6 +388,7 @@ impl LaneIndex {
                 best.map(|e| Neighbour {
                     id: e.id,
                     gap: (from - e.hi).max(0.0),
+                    direction,
                 })
             }
         }
@@ -536,6 +544,7 @@ mod tests {
         // Car 2 (box 21.9..26.9) overlaps car 1 (18.9..23.9): ahead at gap 0.
         let n = ahead(&w, &index, 1).expect("a leader");
         assert_eq!((n.id, n.gap), (EntityId(2), 0.0));
+        assert_eq!(back.direction, Direction::Backward);
         let beside: Vec<_> = index
             .overlapping(f.handle, f.s_range, EntityId(1))
             .collect();

@@ -28,9 +28,7 @@ pub(crate) mod entity;
 pub(crate) mod error;
 mod external;
 mod finite;
-// Read by the controllers stage (issue 13), which lands with the controllers.
-#[allow(dead_code)]
-mod lane_index;
+pub(crate) mod lane_index;
 pub(crate) mod lanes;
 pub(crate) mod selection;
 pub(crate) mod shapes;
@@ -40,9 +38,12 @@ pub(crate) mod trigger_view;
 pub(crate) mod world;
 
 pub use crate::actions::ControllerOverrides;
-pub use config::{EngineConfig, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
+pub use config::{EngineConfig, TrafficModel, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
 pub use entity::{Blend, Entity, EntityId, EntityKind, LaneTrack, Visibility};
 pub use error::{RuntimeError, RuntimeErrorKind};
 pub use shapes::{shape_value, Span};
 pub use step::{Engine, LoadError, StageCounters, StopReason};
 pub use world::{ConditionWorld, World};
+
+// For the controllers stage (engine module `controller`).
+pub(crate) use world::place_on_lane;

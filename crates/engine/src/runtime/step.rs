@@ -13,9 +13,8 @@ use super::config::EngineConfig;
 use super::error::{RuntimeError, RuntimeErrorKind};
 use super::trigger_view::TriggerView;
 use super::world::World;
-use crate::actions::{ActionTable, Host};
+use crate::actions::{stop_domain, ActionTable, Domain, Host};
 use crate::condition::ConditionStates;
-use crate::controller::move_entity;
 use crate::output::{EventRecord, EventSink, Frame, FrameSink};
 use crate::storyboard::{Storyboard, TransitionRecord, TransitionSink};
 
@@ -74,6 +73,9 @@ pub struct Engine {
     counters: StageCounters,
     /// User-defined values still to be set, by time (user_values.rs).
     scheduled_values: std::collections::VecDeque<crate::user_values::TimedValue>,
+    /// Records of changes the host program made between steps (a controller attached), written
+    /// with the next step's records.
+    host_events: Vec<EventRecord>,
 }
 
 /// Collects transitions into the step's event list.
@@ -102,6 +104,7 @@ impl Engine {
         let network = road_network(scenario)?;
         let mut built = build(scenario, network)?;
         built.world.traffic.seed = config.seed;
+        built.world.traffic.model = config.traffic_model;
         let storyboard = Storyboard::new(&built.desc)?;
         Ok(Engine {
             world: RefCell::new(built.world),
@@ -116,6 +119,7 @@ impl Engine {
             stopped: None,
             counters: StageCounters::default(),
             scheduled_values: std::collections::VecDeque::new(),
+            host_events: Vec::new(),
         })
     }
 
@@ -192,6 +196,88 @@ impl Engine {
         &self.counters
     }
 
+    /// Hands entity `name` to the host program: assigns it an `external` controller (named
+    /// "external") activated on the longitudinal and lateral domains, as an
+    /// AssignControllerAction with both `activate*` flags would, and stops the motion actions
+    /// running on it (engine module `controller`). Until the first
+    /// [`set_external_input`](Self::set_external_input) the entity drives as under the default
+    /// controller. Logged with the next step's records (element "host").
+    pub fn attach_external(&mut self, name: &str) -> Result<(), RuntimeError> {
+        let time = self.time();
+        let world = self.world.get_mut();
+        let id = world.id(name).ok_or_else(|| {
+            RuntimeError::new(RuntimeErrorKind::NotExternal {
+                found: format!("no entity named '{name}'"),
+            })
+        })?;
+        let pos = scenario::SourcePos::start_of(std::sync::Arc::from(Path::new("<host>")));
+        let controller = scenario::Controller {
+            name: "external".to_owned(),
+            controller_type: None,
+            properties: scenario::Properties {
+                properties: vec![("model".to_owned(), "external".to_owned())],
+                ..scenario::Properties::default()
+            },
+            catalog: None,
+            pos: pos.clone(),
+        };
+        let origin = crate::controller::Origin {
+            element: "host",
+            time,
+            pos: &pos,
+        };
+        let both = scenario::ControllerDomains {
+            longitudinal: Some(true),
+            lateral: Some(true),
+            ..scenario::ControllerDomains::default()
+        };
+        let taken = crate::controller::assign(
+            world,
+            id,
+            &controller,
+            None,
+            &both,
+            &origin,
+            &mut self.host_events,
+        )?;
+        if taken.longitudinal {
+            stop_domain(&mut self.actions, world, id, Domain::Longitudinal);
+        }
+        if taken.lateral {
+            stop_domain(&mut self.actions, world, id, Domain::Lateral);
+        }
+        Ok(())
+    }
+
+    /// Gives entity `name`'s active `external` controller its input for the next steps (engine
+    /// module `controller`, `external`): a pose, an acceleration with an optional wheel angle,
+    /// or driver inputs. The input holds until the next call. Errors when the entity does not
+    /// exist or no active `external` controller holds one of its motion domains.
+    pub fn set_external_input(
+        &mut self,
+        name: &str,
+        input: crate::controller::ExternalInput,
+    ) -> Result<(), RuntimeError> {
+        let world = self.world.get_mut();
+        let not_external =
+            |found: String| RuntimeError::new(RuntimeErrorKind::NotExternal { found });
+        let id = world
+            .id(name)
+            .ok_or_else(|| not_external(format!("no entity named '{name}'")))?;
+        let ctrl = world.controllers.of_mut(id.index());
+        let external = ctrl
+            .assigned
+            .iter()
+            .any(|a| a.model_name() == "external" && a.holds() != Default::default());
+        if !external {
+            return Err(not_external(format!(
+                "'{name}' without one (assign a Controller with <Property name=\"model\" value=\"external\"/> and activate it)"
+            )));
+        }
+        ctrl.external = Some(input);
+        Ok(())
+    }
+
     /// Runs one step at time t = steps · dt, in five fixed stages:
     ///
     /// 1. `triggers`: [`Storyboard::step`] at t: in the first step the Init actions start (and
@@ -221,7 +307,7 @@ impl Engine {
         }
         let dt = self.config.dt;
         let time = self.time();
-        let log = RefCell::new(Vec::new());
+        let log = RefCell::new(std::mem::take(&mut self.host_events));
         let mut errors = Vec::new();
         let view = RefCell::new(TriggerView::default());
 
@@ -322,10 +408,8 @@ impl Engine {
 
         // Stage 3: controllers.
         let clock = Instant::now();
-        let net = &world.network;
-        for e in world.entities.iter_mut() {
-            move_entity(net, e, dt);
-        }
+        // User controllers give their commands, then every entity moves (controller/stage.rs).
+        crate::controller::stage::step(world, time, dt);
         // Towed vehicles follow their tows' hitches (runtime/trailer.rs).
         super::trailer::follow(world, dt);
         // Traffic sources, sinks and swarms (traffic).

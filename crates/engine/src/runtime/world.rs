@@ -46,6 +46,8 @@ pub struct World {
     pub(crate) appearance: crate::actions::Appearances,
     /// Environment set by EnvironmentActions (actions/environment.rs).
     pub(crate) environment: crate::actions::EnvironmentState,
+    /// The user controllers of each entity (engine module `controller`).
+    pub(crate) controllers: crate::controller::ControllerTable,
 }
 
 impl World {
@@ -70,6 +72,7 @@ impl World {
             selections: super::selection::Selections::default(),
             appearance: crate::actions::Appearances::default(),
             environment: crate::actions::EnvironmentState::default(),
+            controllers: crate::controller::ControllerTable::default(),
         }
     }
 
@@ -118,52 +121,7 @@ impl World {
     /// an object turned sideways on a vehicle (drop-bike.xosc) travels along the lane with it.
     /// An entity turned more than 90° from the reference line's direction travels towards −s.
     pub(crate) fn place_resolved(&mut self, id: EntityId, pose: Pose, found: Option<RoadPosition>) {
-        let e = &mut self.entities[id.index()];
-        e.placed = true;
-        e.pose = pose;
-        e.track = None;
-        e.road_position = None;
-        let Some(mut rp) = found else {
-            return;
-        };
-        let on_road = rp.distance <= ON_ROAD_TOLERANCE;
-        // The heading of the lane's centre line (plus the constant offset) relative to the
-        // reference line, atan2(t′, 1 − κ·t): what the default controller adds to the road's
-        // heading (controller/default.rs, place_on_track), so it is taken out of the kept
-        // relative heading; `rp.relative_heading` counts from the reference line, and keeping
-        // it whole would count a widening lane's slope twice.
-        let mut slope = 0.0;
-        if let Some(road) = self.network.road(&rp.road_id) {
-            if let Some((lane, offset)) = lane_at(road, rp.s, rp.t) {
-                rp.lane_id = lane;
-                rp.offset = offset;
-                if let Ok(span) = road.lane_span(lane, rp.s) {
-                    slope = span.d_center().atan2(1.0 - curvature(road, rp.s) * rp.t);
-                }
-            }
-        }
-        let rel = normalize_angle(rp.relative_heading);
-        let (direction, along) = if rel.abs() <= std::f64::consts::FRAC_PI_2 {
-            (Direction::Forward, normalize_angle(rel - slope))
-        } else {
-            (
-                Direction::Backward,
-                normalize_angle(rel - std::f64::consts::PI - slope),
-            )
-        };
-        if on_road {
-            e.track = Some(LaneTrack {
-                road_id: rp.road_id.clone(),
-                lane_id: rp.lane_id,
-                s: rp.s,
-                t: rp.t,
-                offset: rp.offset,
-                direction,
-                relative_heading: along,
-                blend: None,
-            });
-        }
-        e.road_position = Some(rp);
+        place_on_lane(&self.network, &mut self.entities[id.index()], pose, found);
     }
 
     /// The view of entity `e` for positions and conditions.
@@ -178,6 +136,61 @@ impl World {
             ..EntityView::new(&e.name, e.kind.object_type(), e.pose, e.bounding_box)
         }
     }
+}
+
+/// [`World::place_resolved`] for one entity: places `e` at `pose` with road position `found`
+/// and, on a lane, gives it the lane track the default controller follows.
+pub(crate) fn place_on_lane(
+    net: &RoadNetwork,
+    e: &mut Entity,
+    pose: Pose,
+    found: Option<RoadPosition>,
+) {
+    e.placed = true;
+    e.pose = pose;
+    e.track = None;
+    e.road_position = None;
+    let Some(mut rp) = found else {
+        return;
+    };
+    let on_road = rp.distance <= ON_ROAD_TOLERANCE;
+    // The heading of the lane's centre line (plus the constant offset) relative to the
+    // reference line, atan2(t′, 1 − κ·t): what the default controller adds to the road's
+    // heading (controller/default.rs, place_on_track), so it is taken out of the kept
+    // relative heading; `rp.relative_heading` counts from the reference line, and keeping
+    // it whole would count a widening lane's slope twice.
+    let mut slope = 0.0;
+    if let Some(road) = net.road(&rp.road_id) {
+        if let Some((lane, offset)) = lane_at(road, rp.s, rp.t) {
+            rp.lane_id = lane;
+            rp.offset = offset;
+            if let Ok(span) = road.lane_span(lane, rp.s) {
+                slope = span.d_center().atan2(1.0 - curvature(road, rp.s) * rp.t);
+            }
+        }
+    }
+    let rel = normalize_angle(rp.relative_heading);
+    let (direction, along) = if rel.abs() <= std::f64::consts::FRAC_PI_2 {
+        (Direction::Forward, normalize_angle(rel - slope))
+    } else {
+        (
+            Direction::Backward,
+            normalize_angle(rel - std::f64::consts::PI - slope),
+        )
+    };
+    if on_road {
+        e.track = Some(LaneTrack {
+            road_id: rp.road_id.clone(),
+            lane_id: rp.lane_id,
+            s: rp.s,
+            t: rp.t,
+            offset: rp.offset,
+            direction,
+            relative_heading: along,
+            blend: None,
+        });
+    }
+    e.road_position = Some(rp);
 }
 
 impl EntityQuery for World {

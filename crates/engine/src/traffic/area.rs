@@ -14,6 +14,7 @@ use opendrive::Real;
 use rand::Rng;
 use scenario::{TrafficDistributionEntry, TrafficMix};
 
+use super::controllers::equip;
 use super::spawn::{enter, lane_point, remove, template};
 use super::state::Running;
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
@@ -154,8 +155,9 @@ impl Area {
                 continue;
             }
             let name = run.next_name(world);
-            let e = template(&mut run.rng, &self.mix, name)?;
+            let (e, templates) = template(&mut run.rng, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, DEFAULT_SPEED);
+            equip(world, id, &self.mix, &templates, &run.name)?;
             run.members.push(id);
             self.made += 1;
             break;

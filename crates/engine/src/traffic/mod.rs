@@ -5,6 +5,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `area` | TrafficAreaAction: a number of vehicles in a polygon or road ranges |
+//! | `controllers` | the controller a spawned vehicle gets: ControllerDistribution, template ObjectControllers, run option |
 //! | `random` | the per-action random streams, split from the run's seed |
 //! | `spawn` | vehicle templates, free lane points, adding and removing spawned vehicles |
 //! | `state` | the running traffic actions, their start and the traffic stage of the step |
@@ -12,6 +13,7 @@
 //! | `source_sink` | TrafficSourceAction and TrafficSinkAction |
 
 mod area;
+mod controllers;
 mod random;
 mod source_sink;
 mod spawn;

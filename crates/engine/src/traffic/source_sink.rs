@@ -11,6 +11,7 @@
 use opendrive::Real;
 use scenario::TrafficMix;
 
+use super::controllers::equip;
 use super::spawn::{enter, in_disc, lane_point, remove, template};
 use super::state::Running;
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
@@ -73,8 +74,9 @@ impl Source {
             };
             self.due -= 1.0;
             let name = run.next_name(world);
-            let e = template(&mut run.rng, &self.mix, name)?;
+            let (e, templates) = template(&mut run.rng, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, self.speed);
+            equip(world, id, &self.mix, &templates, &run.name)?;
             run.members.push(id);
         }
         Ok(())

@@ -13,7 +13,7 @@
 use opendrive::{Direction, Pose, Real};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
-use scenario::{Performance, TrafficMix, VehicleCategory};
+use scenario::{ObjectController, Performance, TrafficMix, VehicleCategory};
 
 use super::random::weighted;
 use crate::domain::{BoundingBox, Position3d};
@@ -46,19 +46,22 @@ fn default_box(category: VehicleCategory) -> (Real, Real, Real, Real) {
 }
 
 /// A new, unplaced vehicle for a traffic action: from the mix's distribution or categories.
+/// Also returns the template's ObjectControllers (traffic/controllers.rs gives them to the
+/// vehicle).
 pub(crate) fn template(
     rng: &mut ChaCha8Rng,
     mix: &TrafficMix,
     name: String,
-) -> Result<Entity, RuntimeError> {
+) -> Result<(Entity, Vec<ObjectController>), RuntimeError> {
     let id = EntityId(u32::MAX);
     if let Some(entry) =
         weighted(rng, mix.distribution.iter().map(|e| e.weight)).map(|i| &mix.distribution[i])
     {
         if let Some(i) = weighted(rng, entry.entities.iter().map(|(_, w)| *w)) {
-            let mut e = crate::runtime::build::entity(id, &entry.entities[i].0)?;
+            let template = &entry.entities[i].0;
+            let mut e = crate::runtime::build::entity(id, template)?;
             e.name = name;
-            return Ok(e);
+            return Ok((e, template.object_controllers.clone()));
         }
     }
     let category = mix
@@ -81,7 +84,7 @@ pub(crate) fn template(
     let mut e = Entity::new(id, &name, EntityKind::Vehicle, bb);
     e.vehicle_category = Some(category);
     e.performance = Some(DEFAULT_PERFORMANCE);
-    Ok(e)
+    Ok((e, Vec::new()))
 }
 
 /// The pose on the centre line of the drivable lane nearest to (x, y), facing the lane's

@@ -28,6 +28,9 @@ use crate::runtime::world::World;
 pub(crate) struct Traffic {
     /// The run's seed ([`crate::EngineConfig::seed`]).
     pub seed: u64,
+    /// The controller model spawned vehicles get without one from the scenario
+    /// ([`crate::EngineConfig::traffic_model`]).
+    pub model: Option<crate::runtime::TrafficModel>,
     running: Vec<Running>,
     /// Vehicles spawned and removed in this step, for the event log (step.rs drains them).
     pub events: Vec<EventRecord>,

@@ -19,6 +19,7 @@ use opendrive::Real;
 use rand::Rng;
 use scenario::{SourcePos, TrafficAction, TrafficMix};
 
+use super::controllers::equip;
 use super::spawn::{enter, lane_point, remove, template};
 use super::state::Running;
 use crate::runtime::error::RuntimeError;
@@ -164,8 +165,9 @@ impl Swarm {
             let (lo, hi) = self.speed;
             let speed = lo + (hi - lo) * run.rng.gen::<f64>();
             let name = run.next_name(world);
-            let e = template(&mut run.rng, &self.mix, name)?;
+            let (e, templates) = template(&mut run.rng, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, speed);
+            equip(world, id, &self.mix, &templates, &run.name)?;
             run.members.push(id);
             break;
         }

@@ -48,20 +48,38 @@ fn custom_command_is_recorded_in_the_event_log() {
     );
 }
 
-/// A controller other than the default one is rejected in the event log, naming it and the
-/// action's position; the action still ends (the default controller keeps driving).
+/// A controller that is not one of oscsim's models (no `model` property) is recorded in the
+/// event log as assigned with model `none`, saying that the default controller keeps its
+/// domains; the action still ends and the default controller keeps driving (engine module
+/// `controller`).
 #[test]
-fn other_controllers_are_rejected_clearly() {
+fn other_controllers_are_kept_off_clearly() {
     let (_, frames, events) = run("global_actions.xosc");
-    let message = events
+    let (element, model, note) = events
         .iter()
         .find_map(|e| match e {
-            EventRecord::Unsupported { message, .. } => Some(message.clone()),
+            EventRecord::Controller {
+                controller,
+                element,
+                model,
+                note,
+                ..
+            } if controller == "ACC" => Some((element.clone(), model.clone(), note.clone())),
             _ => None,
         })
-        .expect("an unsupported record");
-    assert!(message.contains("controller 'ACC'"), "{message}");
-    assert!(message.contains("global_actions.xosc:99:15"), "{message}");
+        .expect("a controller record");
+    assert_eq!(
+        (element.as_str(), model.as_str()),
+        ("ControllerAction", "none")
+    );
+    assert!(
+        note.contains("'ACC' (no model property) is not an oscsim controller model"),
+        "{note}"
+    );
+    assert!(
+        note.contains("the default controller keeps its domains"),
+        "{note}"
+    );
     // 20 m/s under the default controller from s = 20: s = 20 + 20·t.
     let row = frames.at("Ego", 4.0);
     assert!((row.x - 100.0).abs() < 1e-9, "x = {}", row.x);

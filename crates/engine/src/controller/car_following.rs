@@ -1,0 +1,155 @@
+//! The longitudinal built-in controllers `idm` and `acc` (OpenSCENARIO 1.3 §6.6: user-defined
+//! controllers of the longitudinal domain): each step the acceleration of their model
+//! ([`crate::models::idm`], [`crate::models::acc`]) behind the leader the view finds.
+//!
+//! The desired speed (`idm`) or set speed (`acc`) is the property's value, else the entity's
+//! speed when the controller is activated (when that is 0: 120 km/h, the IDM paper's), capped
+//! at the vehicle's Performance `maxSpeed`. A SpeedAction (or SpeedProfileAction) of the
+//! scenario on the domain the controller holds sets it anew (the controller's reading of that
+//! control strategy, module `controller`).
+
+use opendrive::Real;
+
+use super::command::{Command, Controller, Strategy};
+use super::view::ControllerView;
+use crate::models::acc::AccParameters;
+use crate::models::idm::{IdmParameters, Leader};
+
+/// The desired speed when neither the properties nor the entity give one (m/s): 120 km/h.
+pub const FALLBACK_DESIRED_SPEED: Real = 120.0 / 3.6;
+
+/// The leader in the view as the models read it.
+pub(crate) fn leader(view: &ControllerView<'_>) -> Option<Leader> {
+    view.leader().map(|g| Leader {
+        gap: g.gap,
+        speed: g.speed,
+    })
+}
+
+/// A desired speed from the entity at activation: its speed, or the fallback at rest; capped
+/// at its maximum speed.
+pub(crate) fn speed_at_activation(view: &ControllerView<'_>) -> Real {
+    let e = view.entity();
+    let v = if e.speed > 0.0 {
+        e.speed
+    } else {
+        FALLBACK_DESIRED_SPEED
+    };
+    v.min(e.max_speed())
+}
+
+/// The `idm` controller.
+#[derive(Debug, Clone)]
+pub struct IdmController {
+    /// The parameters (the desired speed as in use).
+    pub params: IdmParameters,
+    desired_given: bool,
+    max_speed: Real,
+}
+
+impl IdmController {
+    /// A controller with `params`; `desired_given` false: the desired speed is taken at
+    /// activation.
+    pub fn new(params: IdmParameters, desired_given: bool) -> Self {
+        IdmController {
+            params,
+            desired_given,
+            max_speed: Real::INFINITY,
+        }
+    }
+
+    /// The acceleration in the view.
+    pub(crate) fn acceleration(&self, view: &ControllerView<'_>) -> Real {
+        self.params
+            .acceleration(view.entity().speed.max(0.0), leader(view))
+    }
+
+    pub(crate) fn on_activate(&mut self, view: &ControllerView<'_>) {
+        self.max_speed = view.entity().max_speed();
+        if self.desired_given {
+            self.params.desired_speed = self.params.desired_speed.min(self.max_speed);
+        } else {
+            self.params.desired_speed = speed_at_activation(view);
+        }
+    }
+
+    pub(crate) fn on_strategy(&mut self, strategy: Strategy) -> Option<String> {
+        let Strategy::Speed(v) = strategy else {
+            return None;
+        };
+        self.params.desired_speed = v.max(0.0).min(self.max_speed);
+        Some(format!("desired speed {} m/s", self.params.desired_speed))
+    }
+}
+
+impl Controller for IdmController {
+    fn model(&self) -> &'static str {
+        "idm"
+    }
+
+    fn activate(&mut self, view: &ControllerView<'_>) {
+        self.on_activate(view);
+    }
+
+    fn strategy(&mut self, strategy: Strategy) -> Option<String> {
+        self.on_strategy(strategy)
+    }
+
+    fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
+        Command::acceleration(self.acceleration(view))
+    }
+}
+
+/// The `acc` controller.
+#[derive(Debug, Clone)]
+pub struct AccController {
+    /// The settings (the set speed as in use).
+    pub params: AccParameters,
+    set_given: bool,
+    max_speed: Real,
+    /// The last step's command (for the jerk limit).
+    previous: Real,
+}
+
+impl AccController {
+    /// A controller with `params`; `set_given` false: the set speed is taken at activation.
+    pub fn new(params: AccParameters, set_given: bool) -> Self {
+        AccController {
+            params,
+            set_given,
+            max_speed: Real::INFINITY,
+            previous: 0.0,
+        }
+    }
+}
+
+impl Controller for AccController {
+    fn model(&self) -> &'static str {
+        "acc"
+    }
+
+    fn activate(&mut self, view: &ControllerView<'_>) {
+        self.max_speed = view.entity().max_speed();
+        self.previous = 0.0;
+        if self.set_given {
+            self.params.set_speed = self.params.set_speed.min(self.max_speed);
+        } else {
+            self.params.set_speed = speed_at_activation(view);
+        }
+    }
+
+    fn strategy(&mut self, strategy: Strategy) -> Option<String> {
+        let Strategy::Speed(v) = strategy else {
+            return None;
+        };
+        self.params.set_speed = v.max(0.0).min(self.max_speed);
+        Some(format!("set speed {} m/s", self.params.set_speed))
+    }
+
+    fn step(&mut self, view: &ControllerView<'_>, dt: Real) -> Command {
+        let v = view.entity().speed.max(0.0);
+        let a = self.params.command(v, leader(view), self.previous, dt);
+        self.previous = a;
+        Command::acceleration(a)
+    }
+}

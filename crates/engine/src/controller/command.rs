@@ -1,0 +1,112 @@
+//! The [`Controller`] trait and the commands a controller gives for one step (OpenSCENARIO
+//! 1.3 §6.6 "Controllers": a controller controls the longitudinal and/or lateral motion
+//! domain of its entity; §7.2.2.1: the default controller takes every domain no user
+//! controller holds).
+//!
+//! A controller sees the step's world from its entity ([`ControllerView`]) and answers with a
+//! [`Command`]: per domain it holds, what the entity does over the step. A domain it leaves
+//! without a command is driven as the default controller drives it (keep the speed the
+//! scenario set, follow the lane), so a longitudinal controller such as `idm` gives only an
+//! acceleration and the entity keeps its lane, its lane changes and its route as before.
+
+use opendrive::{Pose, Real};
+
+use super::view::ControllerView;
+
+/// What moves the entity along its path over the step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Longitudinal {
+    /// Accelerate at this rate (m/s², along the direction of travel) over the step; the
+    /// vehicle's Performance bounds it, the speed does not turn negative, and the distance is
+    /// that of the constant acceleration (ballistic update).
+    Acceleration(Real),
+    /// The motion a vehicle model worked out: speed at the end of the step (m/s, negative
+    /// backwards), signed distance travelled (m) and the acceleration (m/s²).
+    Motion {
+        /// Speed at the end of the step.
+        speed: Real,
+        /// Distance travelled.
+        distance: Real,
+        /// Acceleration over the step.
+        acceleration: Real,
+    },
+}
+
+/// What moves the entity across its path over the step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Lateral {
+    /// Change into lane `lane` of the entity's road (cubic lateral shape over the distance
+    /// that keeps the peak lateral acceleration at 1 m/s², as the route's lane changes).
+    ChangeLane(i32),
+    /// Leave the lane and drive along a circular arc of this curvature (1/m, positive left).
+    Curvature(Real),
+}
+
+/// A controller's answer for one step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Command {
+    /// Per domain; `None` leaves the domain to the default controller's way of driving.
+    Motion {
+        /// The longitudinal command.
+        longitudinal: Option<Longitudinal>,
+        /// The lateral command.
+        lateral: Option<Lateral>,
+    },
+    /// The pose the entity has at the end of the step (both domains); the speed is the
+    /// distance moved along the heading per step.
+    Pose(Pose),
+}
+
+impl Command {
+    /// No command in either domain: drive as the default controller.
+    pub const NONE: Command = Command::Motion {
+        longitudinal: None,
+        lateral: None,
+    };
+
+    /// A longitudinal acceleration only.
+    pub fn acceleration(a: Real) -> Command {
+        Command::Motion {
+            longitudinal: Some(Longitudinal::Acceleration(a)),
+            lateral: None,
+        }
+    }
+}
+
+/// A motion action of the scenario handed to the user controller holding its domain
+/// (module `controller` doc): what the controller may take from it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum Strategy {
+    /// A SpeedAction or SpeedProfileAction: the speed it asks for in the end (m/s).
+    Speed(Real),
+    /// A LaneChangeAction: the lane of the entity's road it asks for.
+    Lane(i32),
+}
+
+/// A controller of one entity's motion (OpenSCENARIO 1.3 §6.6): each step it gets the world
+/// as seen from its entity and gives the [`Command`] for the domains it holds.
+pub trait Controller: std::fmt::Debug + Send {
+    /// The model's name (`idm`, `mobil`, `acc`, `vehicle_dynamics`, `external`).
+    fn model(&self) -> &'static str;
+
+    /// The controller was activated on a domain; `view` shows the entity at that moment (a
+    /// model reads its defaults from it, such as the desired speed).
+    fn activate(&mut self, view: &ControllerView<'_>) {
+        let _ = view;
+    }
+
+    /// A motion action of the scenario on a domain this controller holds. Returns what was
+    /// done with it, for the event log ("desired speed 25 m/s"), or `None` when the
+    /// controller does not take such a strategy (the action is then ignored).
+    fn strategy(&mut self, strategy: Strategy) -> Option<String> {
+        let _ = strategy;
+        None
+    }
+
+    /// The command for the step of `dt` s starting at `view.time()`.
+    fn step(&mut self, view: &ControllerView<'_>, dt: Real) -> Command;
+}

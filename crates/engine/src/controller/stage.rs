@@ -1,0 +1,175 @@
+//! The controllers stage of a step (OpenSCENARIO 1.3 §7.2.2.1 motion control): every user
+//! controller holding a domain gives its [`Command`] from a [`ControllerView`] of the world
+//! at the step's start, then every entity moves, the domains without a command as the default
+//! controller moves them.
+//!
+//! The lane index ([`LaneIndex`]) is built once per step, and only when some built-in model
+//! holds a domain, so runs without user controllers cost what they did. All commands are
+//! worked out before any entity moves (a synchronous update): the result does not depend on
+//! the order of the entities.
+//!
+//! Applying a command: an acceleration is bounded by the vehicle's Performance
+//! (`maxAcceleration`, `maxDeceleration`) and integrated ballistically (the speed stops at 0,
+//! models::idm); the distance travelled then follows the lane as the default controller does,
+//! through route, lane changes and links. A lane change command starts the same lateral
+//! transition the route's lane changes use. A curvature moves the entity along an arc off its
+//! lane track (its road position looked up after the move); a pose places it.
+
+use opendrive::{Direction, Pose, Real, RoadNetwork};
+
+use super::command::{Command, Lateral, Longitudinal};
+use super::default::{measure, move_entity};
+use super::lane_change::{begin as begin_route_lane_change, step as step_route_lane_change};
+use super::table::EntityControllers;
+use super::view::ControllerView;
+use crate::models::idm::ballistic_step;
+use crate::models::properties::MotionDomains;
+use crate::models::single_track::arc_step;
+use crate::runtime::lane_index::LaneIndex;
+use crate::runtime::{Entity, World};
+
+/// The commands of one entity's controllers, merged per domain.
+#[derive(Debug, Clone, Copy, Default)]
+struct Merged {
+    longitudinal: Option<Longitudinal>,
+    lateral: Option<Lateral>,
+    pose: Option<Pose>,
+}
+
+/// Stage 3: commands, then moves (module doc).
+pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
+    let mut merged: Vec<Option<Merged>> = Vec::new();
+    if world.controllers.any_held() {
+        let index = LaneIndex::build(&world.network, &world.entities);
+        merged.resize(world.entities.len(), None);
+        let (entities, network) = (&world.entities, &world.network);
+        for (i, ctrl) in world.controllers.iter_mut() {
+            let Some(e) = entities.get(i).filter(|e| e.placed) else {
+                continue;
+            };
+            let external = ctrl.external;
+            let mut m = Merged::default();
+            let mut any = false;
+            for a in &mut ctrl.assigned {
+                let held = a.holds();
+                let Some(instance) = a
+                    .instance
+                    .as_mut()
+                    .filter(|_| held != MotionDomains::default())
+                else {
+                    continue;
+                };
+                let view = ControllerView::new(time, e, entities, network, &index, external);
+                any = true;
+                match instance.step(&view, dt) {
+                    Command::Pose(p) if held == MotionDomains::BOTH => m.pose = Some(p),
+                    Command::Pose(_) => {}
+                    Command::Motion {
+                        longitudinal,
+                        lateral,
+                    } => {
+                        if held.longitudinal {
+                            m.longitudinal = longitudinal;
+                        }
+                        if held.lateral {
+                            m.lateral = lateral;
+                        }
+                    }
+                }
+            }
+            if any {
+                merged[i] = Some(m);
+            }
+        }
+    }
+    let net = &world.network;
+    for (i, e) in world.entities.iter_mut().enumerate() {
+        match merged.get(i).copied().flatten() {
+            Some(m) if e.placed => apply(net, e, world.controllers.of_mut(i), m, dt),
+            _ => move_entity(net, e, dt, None),
+        }
+    }
+}
+
+/// Moves `e` by the merged command `m` over `dt` s.
+fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: Merged, dt: Real) {
+    let old_h = e.pose.h;
+    let old_v = e.travel_component(e.velocity.translational);
+    if let Some(p) = m.pose {
+        let (dx, dy) = (p.x - e.pose.x, p.y - e.pose.y);
+        let along = dx * p.h.cos() + dy * p.h.sin();
+        e.pose = p;
+        e.track = None;
+        e.speed = along / dt;
+        e.odometer += dx.hypot(dy);
+        e.road_position = net.locate(p.x, p.y, Some(p.h));
+        ctrl.steered = true;
+        measure(e, old_h, old_v, dt);
+        return;
+    }
+    // The longitudinal motion: (speed at the end, distance), or the default controller's.
+    let motion = match m.longitudinal {
+        Some(Longitudinal::Acceleration(a)) => {
+            let a = match e.performance {
+                Some(p) => a.clamp(-p.max_deceleration, p.max_acceleration),
+                None => a,
+            };
+            let (v, d) = ballistic_step(e.speed.max(0.0), a, dt);
+            Some((v.min(e.max_speed()), d))
+        }
+        Some(Longitudinal::Motion {
+            speed, distance, ..
+        }) => Some((speed, distance)),
+        None => None,
+    };
+    if let Some(Lateral::Curvature(k)) = m.lateral {
+        let (v, d) = motion.unwrap_or((e.speed, e.speed * dt));
+        let (x, y, h) = arc_step(e.pose.x, e.pose.y, e.pose.h, d, k);
+        e.pose.x = x;
+        e.pose.y = y;
+        e.pose.h = opendrive::normalize_angle(h);
+        e.track = None;
+        e.speed = v;
+        e.odometer += d.abs();
+        e.road_position = net.locate(x, y, Some(e.pose.h));
+        if let Some(rp) = &e.road_position {
+            // Follow the ground: the height of the road surface under the entity.
+            if let Ok(ground) = net.road_pose(&rp.road_id, rp.s, rp.t) {
+                e.pose.z = ground.z;
+            }
+        }
+        ctrl.steered = true;
+        measure(e, old_h, old_v, dt);
+        return;
+    }
+    if std::mem::take(&mut ctrl.steered) {
+        // Back from steering or a pose: the default controller keeps the lane it is on.
+        e.track = None;
+        if let Some(rp) = net.locate(e.pose.x, e.pose.y, Some(e.pose.h)) {
+            crate::runtime::place_on_lane(net, e, e.pose, Some(rp));
+        }
+    }
+    let distance = motion.map(|(_, d)| d);
+    if let Some(track) = e.track.as_mut() {
+        if let Some(Lateral::ChangeLane(lane)) = m.lateral {
+            let speed = motion.map_or(e.speed, |(v, _)| v);
+            let room = net
+                .road(&track.road_id)
+                .map_or(0.0, |r| match track.direction {
+                    Direction::Forward => r.length - track.s,
+                    Direction::Backward => track.s,
+                });
+            ctrl.lane_change = begin_route_lane_change(net, track, lane, speed, e.odometer, room);
+        }
+        if let Some(change) = ctrl.lane_change {
+            let d = distance.unwrap_or(e.speed * dt);
+            if !step_route_lane_change(&change, track, e.odometer, d) {
+                ctrl.lane_change = None;
+            }
+        }
+    }
+    if let Some((v, _)) = motion {
+        e.speed = v;
+    }
+    move_entity(net, e, dt, distance);
+}

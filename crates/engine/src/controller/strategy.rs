@@ -1,0 +1,130 @@
+//! Motion actions on a domain a user controller holds are handed to it (the rule and the
+//! models' readings are in the module doc of `controller`).
+
+use scenario::{LateralAction, LongitudinalAction, PrivateAction, RoutingAction};
+
+use super::assign::Origin;
+use super::command::Strategy;
+use crate::actions::{target_lane, target_speed};
+use crate::output::EventRecord;
+use crate::runtime::{EntityId, RuntimeError, World};
+
+/// The motion domains `action` would take (longitudinal, lateral), and its element name.
+fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
+    Some(match action {
+        PrivateAction::Longitudinal(l) => (
+            true,
+            false,
+            match l {
+                LongitudinalAction::Speed { .. } => "SpeedAction",
+                LongitudinalAction::SpeedProfile { .. } => "SpeedProfileAction",
+                _ => "LongitudinalDistanceAction",
+            },
+        ),
+        PrivateAction::Lateral(l) => (
+            false,
+            true,
+            match l {
+                LateralAction::LaneChange { .. } => "LaneChangeAction",
+                LateralAction::LaneOffset { .. } => "LaneOffsetAction",
+                _ => "LateralDistanceAction",
+            },
+        ),
+        PrivateAction::Synchronize(_) => (true, false, "SynchronizeAction"),
+        PrivateAction::Routing(r) => match &**r {
+            RoutingAction::FollowTrajectory { time_reference, .. } => {
+                (time_reference.is_some(), true, "FollowTrajectoryAction")
+            }
+            _ => return None,
+        },
+        _ => return None,
+    })
+}
+
+/// The strategy a model can take from `action`, if any.
+fn strategy(
+    world: &World,
+    action: &PrivateAction,
+    origin: &Origin<'_>,
+) -> Result<Option<Strategy>, RuntimeError> {
+    Ok(match action {
+        PrivateAction::Longitudinal(LongitudinalAction::Speed { target, .. }) => {
+            Some(Strategy::Speed(target_speed(world, target, origin.pos)?))
+        }
+        PrivateAction::Longitudinal(LongitudinalAction::SpeedProfile {
+            entity_ref,
+            entries,
+            ..
+        }) => {
+            let base = match entity_ref {
+                Some(name) => {
+                    let id = world.id(name).ok_or_else(|| {
+                        RuntimeError::at(
+                            "a declared entity",
+                            format!("entityRef '{name}'"),
+                            origin.pos,
+                        )
+                    })?;
+                    world.entity(id).speed
+                }
+                None => 0.0,
+            };
+            entries.last().map(|e| Strategy::Speed(base + e.speed))
+        }
+        PrivateAction::Lateral(LateralAction::LaneChange { target, .. }) => {
+            Some(Strategy::Lane(target_lane(world, target, origin.pos)?))
+        }
+        _ => None,
+    })
+}
+
+/// When `action` is a motion action on a domain a user controller of `actor` holds, hands it
+/// to that controller, logs what the controller made of it and returns `true`: the action
+/// then completes at once. `init`: the action belongs to the Init (a SpeedAction also sets
+/// the speed).
+pub(crate) fn hand_over(
+    world: &mut World,
+    actor: EntityId,
+    action: &PrivateAction,
+    init: bool,
+    origin: &Origin<'_>,
+    events: &mut Vec<EventRecord>,
+) -> Result<bool, RuntimeError> {
+    let Some((lon, lat, kind)) = domains(action) else {
+        return Ok(false);
+    };
+    let Some(ctrl) = world.controllers.of(actor.index()) else {
+        return Ok(false);
+    };
+    let holder = (lon.then(|| ctrl.holder(true)).flatten())
+        .or_else(|| lat.then(|| ctrl.holder(false)).flatten());
+    let Some(slot) = holder else {
+        return Ok(false);
+    };
+    let s = strategy(world, action, origin)?;
+    if let (true, Some(Strategy::Speed(v))) = (init, s) {
+        let e = world.entity_mut(actor);
+        e.speed = v.clamp(-e.max_speed(), e.max_speed());
+    }
+    let entity = world.entity(actor).name.clone();
+    let ctrl = world.controllers.of_mut(actor.index());
+    let a = &mut ctrl.assigned[slot];
+    let taken = match (s, a.instance.as_mut()) {
+        (Some(s), Some(instance)) => instance.strategy(s),
+        _ => None,
+    };
+    let note = match taken {
+        Some(what) => format!("{kind} handed to the controller: {what}"),
+        None => format!("{kind} ignored: its domain is held by the controller"),
+    };
+    events.push(EventRecord::Controller {
+        time: origin.time,
+        element: origin.element.to_owned(),
+        entity,
+        controller: a.name.clone(),
+        model: a.model_name(),
+        active: a.active,
+        note,
+    });
+    Ok(true)
+}

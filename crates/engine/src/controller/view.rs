@@ -1,0 +1,252 @@
+//! What a controller sees in a step (issue 13 "the step's world view for its entity"): its
+//! entity's state (pose, road position, lane track, speed, performance, route, the driver
+//! inputs overridden by OverrideControllerValueAction), the road network, and the entities
+//! around it with their gaps along the lanes, from the step's [`LaneIndex`]
+//! (runtime/lane_index.rs).
+//!
+//! Gaps are bumper to bumper along the lane (reference-line distance), to the nearest entity
+//! whose bounding box overlaps the lane, through lane sections, road links and junctions along
+//! the lane the entity will take: the successor its route picks where its road ends, else the
+//! first in the road model's order, as the default controller drives. The speed of an entity
+//! found is its speed along the searching entity's direction of travel (negative when it comes
+//! the other way). All views of one step are taken before any entity moves, so the order in
+//! which controllers run does not matter.
+
+use opendrive::{Direction, LaneHandle, Real, RoadNetwork, TrafficRule};
+
+use super::external::ExternalInput;
+use crate::runtime::lane_index::{LaneIndex, Neighbour};
+use crate::runtime::lanes::lane_shift;
+use crate::runtime::{Entity, EntityId};
+
+/// Base distance (m) a gap search looks ahead or behind; it adds [`HORIZON_TIME`] seconds of
+/// the entity's speed. At 33 m/s that is 483 m, more than the IDM's desired gap when closing
+/// in on a standing vehicle from that speed (s* = 2 + 53 + 33²·1/2.21 ≈ 460 m, idm module).
+pub const HORIZON_BASE: Real = 150.0;
+/// Seconds of travel added to [`HORIZON_BASE`].
+pub const HORIZON_TIME: Real = 10.0;
+
+/// Another entity seen from the controller's entity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Gap {
+    /// The entity.
+    pub id: EntityId,
+    /// Bumper-to-bumper distance along the lane (m, ≥ 0).
+    pub gap: Real,
+    /// Its speed along the controller's entity's direction of travel (m/s).
+    pub speed: Real,
+}
+
+/// A lane beside the entity's, as a lane change would find it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NeighbourLane {
+    /// The lane id on the entity's road.
+    pub lane: i32,
+    /// The nearest entity ahead in it, from the entity's front bumper.
+    pub leader: Option<Gap>,
+    /// The nearest entity behind in it, from the entity's rear bumper.
+    pub follower: Option<Gap>,
+    /// An entity's box overlaps the entity's own length in that lane (a change now would
+    /// collide).
+    pub occupied: bool,
+    /// The lane lies towards the keep side of the road's traffic rule (right under right-hand
+    /// traffic).
+    pub toward_keep_side: bool,
+}
+
+/// Which side of the direction of travel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// Left of the direction of travel.
+    Left,
+    /// Right of it.
+    Right,
+}
+
+/// The world of one step as the controller of one entity sees it (module doc).
+#[derive(Debug, Clone, Copy)]
+pub struct ControllerView<'a> {
+    time: Real,
+    entity: &'a Entity,
+    entities: &'a [Entity],
+    network: &'a RoadNetwork,
+    index: &'a LaneIndex,
+    external: Option<ExternalInput>,
+}
+
+impl<'a> ControllerView<'a> {
+    /// The view of `entity` at `time`; `external` is the host's input for an `external`
+    /// controller.
+    pub(crate) fn new(
+        time: Real,
+        entity: &'a Entity,
+        entities: &'a [Entity],
+        network: &'a RoadNetwork,
+        index: &'a LaneIndex,
+        external: Option<ExternalInput>,
+    ) -> Self {
+        ControllerView {
+            time,
+            entity,
+            entities,
+            network,
+            index,
+            external,
+        }
+    }
+
+    /// The input the host program gave the entity's `external` controller, if any (module
+    /// `external`).
+    pub fn external_input(&self) -> Option<ExternalInput> {
+        self.external
+    }
+
+    /// Simulation time at the step's start (s).
+    pub fn time(&self) -> Real {
+        self.time
+    }
+
+    /// The controller's entity.
+    pub fn entity(&self) -> &'a Entity {
+        self.entity
+    }
+
+    /// Another entity.
+    pub fn other(&self, id: EntityId) -> &'a Entity {
+        &self.entities[id.index()]
+    }
+
+    /// The road network.
+    pub fn network(&self) -> &'a RoadNetwork {
+        self.network
+    }
+
+    /// How far gap searches look (m): [`HORIZON_BASE`] + [`HORIZON_TIME`] × speed.
+    pub fn horizon(&self) -> Real {
+        HORIZON_BASE + HORIZON_TIME * self.entity.speed.abs()
+    }
+
+    /// The lane handle of the entity's lane `lane` at its s, and its direction of travel.
+    fn lane_handle(&self, lane: i32) -> Option<(LaneHandle, Direction)> {
+        let track = self.entity.track.as_ref()?;
+        let h = self.network.lane_handle(&track.road_id, lane, track.s)?;
+        Some((h, track.direction))
+    }
+
+    /// A found neighbour as a [`Gap`]; `behind` when found searching backwards.
+    fn gap(&self, n: Neighbour, behind: bool) -> Gap {
+        let along = self
+            .index
+            .footprint(n.id)
+            .map_or(0.0, |f| f.speed_along(n.direction));
+        Gap {
+            id: n.id,
+            gap: n.gap,
+            speed: if behind { -along } else { along },
+        }
+    }
+
+    /// The nearest entity ahead in `lane` from the front bumper, along the lane the entity
+    /// will take (its route's choice at road ends).
+    fn ahead_in(&self, lane: i32) -> Option<Gap> {
+        let me = self.index.footprint(self.entity.id)?;
+        let (h, dir) = self.lane_handle(lane)?;
+        let net = self.network;
+        let route = self.entity.route_follow.as_ref();
+        let mut choose = |road: &str, c: &[LaneHandle]| route.and_then(|r| r.peek(net, road, c));
+        let n = self.index.nearest(
+            net,
+            h,
+            me.front(dir),
+            dir,
+            self.entity.id,
+            self.horizon(),
+            &mut choose,
+        )?;
+        Some(self.gap(n, false))
+    }
+
+    /// The nearest entity behind in `lane` from the rear bumper.
+    fn behind_in(&self, lane: i32) -> Option<Gap> {
+        let me = self.index.footprint(self.entity.id)?;
+        let (h, dir) = self.lane_handle(lane)?;
+        let n = self.index.nearest(
+            self.network,
+            h,
+            me.rear(dir),
+            dir.reverse(),
+            self.entity.id,
+            self.horizon(),
+            &mut |_, _| None,
+        )?;
+        Some(self.gap(n, true))
+    }
+
+    /// The vehicle (or any entity) ahead: the nearest in the entity's lane, and during a lane
+    /// change also in the lane it leaves.
+    pub fn leader(&self) -> Option<Gap> {
+        let track = self.entity.track.as_ref()?;
+        let here = self.ahead_in(track.lane_id);
+        let left = track
+            .blend
+            .filter(|b| b.from_lane != track.lane_id)
+            .and_then(|b| self.ahead_in(b.from_lane));
+        match (here, left) {
+            (Some(a), Some(b)) => Some(if b.gap < a.gap { b } else { a }),
+            (a, b) => a.or(b),
+        }
+    }
+
+    /// The nearest entity behind in the entity's own lane.
+    pub fn follower(&self) -> Option<Gap> {
+        let track = self.entity.track.as_ref()?;
+        self.behind_in(track.lane_id)
+    }
+
+    /// The lane on `side` of the entity's lane, when it is a drivable lane of the road at the
+    /// entity's s driven the same way; with its leader, follower and occupancy.
+    pub fn neighbour_lane(&self, side: Side) -> Option<NeighbourLane> {
+        let track = self.entity.track.as_ref()?;
+        let me = self.index.footprint(self.entity.id)?;
+        let n = match side {
+            Side::Left => 1,
+            Side::Right => -1,
+        };
+        let lane = lane_shift(track.lane_id, n, track.direction);
+        let road = self.network.road(&track.road_id)?;
+        let drivable = road
+            .lane_section_at(track.s)
+            .lane(lane)
+            .is_some_and(|l| l.lane_type.is_drivable());
+        let (own, _) = self.lane_handle(track.lane_id)?;
+        let (h, _) = self.lane_handle(lane)?;
+        let same_way = self.network.driving_direction(h) == self.network.driving_direction(own);
+        if !drivable || !same_way {
+            return None;
+        }
+        let keep = match road.rule {
+            TrafficRule::LeftHand => Side::Left,
+            _ => Side::Right,
+        };
+        Some(NeighbourLane {
+            lane,
+            leader: self.ahead_in(lane),
+            follower: self.behind_in(lane),
+            occupied: self
+                .index
+                .overlapping(h, me.s_range, self.entity.id)
+                .next()
+                .is_some(),
+            toward_keep_side: side == keep,
+        })
+    }
+
+    /// The entity's length along its direction of travel (m): its box's s-range.
+    pub fn length(&self) -> Real {
+        self.index
+            .footprint(self.entity.id)
+            .map_or(self.entity.bounding_box.length(), |f| {
+                f.s_range.1 - f.s_range.0
+            })
+    }
+}

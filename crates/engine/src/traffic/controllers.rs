@@ -1,0 +1,101 @@
+//! Controllers of spawned vehicles (OpenSCENARIO 1.3 §7.2.2.3 spawned objects; XSD
+//! `TrafficDefinition/ControllerDistribution`, `TrafficDistributionEntry/EntityDistribution`
+//! templates with ObjectControllers).
+//!
+//! A spawned vehicle has no Init that could activate a controller, so the controller it gets
+//! is assigned and activated at once on every motion domain it is defined for. Which one: a
+//! draw from the TrafficDefinition's ControllerDistribution by weight; else the
+//! ObjectControllers of the EntityDistribution template it was made from; else the run option
+//! [`EngineConfig::traffic_model`](crate::EngineConfig::traffic_model) (`idm` or `mobil` with
+//! the models' default parameters); else none (the default controller). The draw uses a
+//! stream of its own per vehicle (the run's seed, stream keyed by the vehicle's name and
+//! "/controller"), so the positions, speeds and templates drawn are those of a run without
+//! controllers.
+
+use scenario::{Controller, ControllerDomains, ObjectController, Properties, TrafficMix};
+
+use super::random::{stream, weighted};
+use crate::controller::{assign, Origin};
+use crate::runtime::entity::EntityId;
+use crate::runtime::error::RuntimeError;
+use crate::runtime::world::World;
+use crate::runtime::TrafficModel;
+
+/// Every domain a controller is defined for.
+const ALL: ControllerDomains = ControllerDomains {
+    longitudinal: Some(true),
+    lateral: Some(true),
+    animation: None,
+    lighting: None,
+};
+
+/// The controller of the run option.
+fn option_controller(model: TrafficModel) -> Controller {
+    let name = match model {
+        TrafficModel::Idm => "idm",
+        TrafficModel::Mobil => "mobil",
+    };
+    Controller {
+        name: format!("traffic {name}"),
+        controller_type: None,
+        properties: Properties {
+            properties: vec![("model".to_owned(), name.to_owned())],
+            ..Properties::default()
+        },
+        catalog: None,
+        pos: scenario::SourcePos::start_of(std::sync::Arc::from(std::path::Path::new(
+            "run option traffic_model",
+        ))),
+    }
+}
+
+/// Gives the vehicle `id`, just spawned by traffic action `element` from `mix` (template ObjectControllers `templates`), its controller (module doc).
+pub(crate) fn equip(
+    world: &mut World,
+    id: EntityId,
+    mix: &TrafficMix,
+    templates: &[ObjectController],
+    element: &str,
+) -> Result<(), RuntimeError> {
+    let distribution = mix
+        .definition
+        .as_ref()
+        .map_or(&[][..], |d| &d.controllers[..]);
+    let chosen: Vec<(Controller, Option<String>)> = if !distribution.is_empty() {
+        let name = format!("{}/controller", world.entity(id).name);
+        let mut rng = stream(world.traffic.seed, &name);
+        weighted(&mut rng, distribution.iter().map(|(_, w)| *w))
+            .map(|i| (distribution[i].0.clone(), None))
+            .into_iter()
+            .collect()
+    } else if !templates.is_empty() {
+        templates
+            .iter()
+            .map(|oc| (oc.controller.clone(), oc.name.clone()))
+            .collect()
+    } else if let Some(model) = world.traffic.model {
+        vec![(option_controller(model), None)]
+    } else {
+        Vec::new()
+    };
+    let time = world.time;
+    let mut events = Vec::new();
+    for (controller, object) in &chosen {
+        let origin = Origin {
+            element,
+            time,
+            pos: &controller.pos,
+        };
+        assign(
+            world,
+            id,
+            controller,
+            object.as_deref(),
+            &ALL,
+            &origin,
+            &mut events,
+        )?;
+    }
+    world.traffic.events.append(&mut events);
+    Ok(())
+}
