@@ -7,7 +7,7 @@
 //!
 //! The scenario: Ego keeps 25 m/s in lane −2; OverTaker passes at 32 m/s, cuts in 10 m ahead
 //! of Ego and brakes at 4 m/s² to 15 m/s. Under the default controller Ego keeps its speed and
-//! runs into OverTaker at 14.55 s. Here the program takes Ego over with [`Engine::attach_external`], and
+//! runs into OverTaker at 14.55 s (the run goes on to [`END_TIME`]). Here the program takes Ego over with [`Engine::attach_external`], and
 //! before every step its AEB reads the world (the road positions of Ego and of everything in
 //! its path), works out the time to collision and sets Ego's acceleration with
 //! [`Engine::set_external_input`]; the lateral domain keeps the lane, as the default controller
@@ -35,6 +35,9 @@ pub const FULL_TTC: f64 = 0.9;
 pub const PARTIAL_BRAKE: f64 = -4.0;
 /// Full braking (m/s²).
 pub const FULL_BRAKE: f64 = -9.0;
+/// The end of the run (s), the scenario's parameter `EndTime` (its default, 10 s, ends before
+/// the collision).
+pub const END_TIME: f64 = 16.0;
 
 /// What a run showed.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -52,6 +55,12 @@ pub struct Outcome {
 /// The bundled scenario.
 pub fn scenario_path() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenarios/cut_in_highway.xosc")
+}
+
+/// The scenario's parameters for this run: past the default end (10 s) to 16 s, beyond the
+/// collision at 14.55 s.
+pub fn params() -> Vec<(String, String)> {
+    vec![("EndTime".to_owned(), END_TIME.to_string())]
 }
 
 /// The gap from `ego`'s front bumper to the rear of `other` along Ego's heading, when `other`'s
@@ -105,7 +114,7 @@ pub fn aeb(world: &World, ego: &Entity, braking: bool) -> f64 {
 /// Runs the scenario at `path`, with the AEB driving Ego or (`with_aeb` false) under the
 /// default controller.
 pub fn run(path: &Path, with_aeb: bool) -> Result<Outcome, Box<dyn Error>> {
-    let mut engine = Engine::load(path, &[], EngineConfig::default())?;
+    let mut engine = Engine::load(path, &params(), EngineConfig::default())?;
     if with_aeb {
         engine.attach_external("Ego")?;
     }
