@@ -74,8 +74,8 @@ pub use math::{
 pub use model::{
     is_drivable, Connection, ContactPoint, ElementType, GeoReference, Header, Junction,
     JunctionKind, Lane, LaneHeight, LaneLink, LaneSection, LaneType, Object, Offset, Road,
-    RoadLink, RoadLinks, RoadMark, RoadMarkColor, RoadMarkLine, RoadMarkType, RoadType, Signal,
-    Speed, TrafficRule,
+    RoadLink, RoadLinks, RoadMark, RoadMarkColor, RoadMarkLaneChange, RoadMarkLine, RoadMarkType,
+    RoadType, Signal, Speed, TrafficRule,
 };
 pub use network::RoadNetwork;
 pub use query::{

@@ -4,7 +4,9 @@
 //! the right.
 //!
 //! A candidate lane is one the view offers ([`ControllerView::neighbour_lane`]: drivable, on
-//! the entity's road at its s, driven the same way) with no entity alongside the entity in it.
+//! the entity's road at its s, driven the same way) with no entity alongside the entity in it,
+//! behind a road mark that may be crossed towards it where the entity is (OpenDRIVE 1.8 §11.8:
+//! `laneChange`, else the paint; a solid line is not crossed, [`opendrive::RoadMark::permits_lane_change`]).
 //! The accelerations MOBIL weighs are the IDM's, with this controller's parameters for the
 //! changer and for both followers (the model's usual reading: the others' behaviour is not
 //! known, MOBIL evaluates them with the same car-following model):
@@ -60,9 +62,9 @@ impl MobilController {
     }
 
     /// The MOBIL verdict on changing into `lane` (module doc); `None` when the lane is
-    /// occupied alongside.
+    /// occupied alongside or its road mark may not be crossed.
     fn judge(&self, view: &ControllerView<'_>, lane: &NeighbourLane) -> Option<Real> {
-        if lane.occupied {
+        if lane.occupied || !lane.crossing_permitted {
             return None;
         }
         let p = &self.idm.params;

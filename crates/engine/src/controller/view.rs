@@ -52,6 +52,10 @@ pub struct NeighbourLane {
     /// The lane lies towards the keep side of the road's traffic rule (right under right-hand
     /// traffic).
     pub toward_keep_side: bool,
+    /// The road mark between the entity's lane and this one, where the entity is, lets it
+    /// cross (OpenDRIVE 1.8 §11.8 `laneChange`, else the paint:
+    /// [`opendrive::RoadMark::permits_lane_change`]).
+    pub crossing_permitted: bool,
 }
 
 /// Which side of the direction of travel.
@@ -204,7 +208,8 @@ impl<'a> ControllerView<'a> {
     }
 
     /// The lane on `side` of the entity's lane, when it is a drivable lane of the road at the
-    /// entity's s driven the same way; with its leader, follower and occupancy.
+    /// entity's s driven the same way; with its leader, follower, occupancy and whether the
+    /// road mark between lets the entity cross.
     pub fn neighbour_lane(&self, side: Side) -> Option<NeighbourLane> {
         let track = self.entity.track.as_ref()?;
         let me = self.index.footprint(self.entity.id)?;
@@ -214,8 +219,8 @@ impl<'a> ControllerView<'a> {
         };
         let lane = lane_shift(track.lane_id, n, track.direction);
         let road = self.network.road(&track.road_id)?;
-        let drivable = road
-            .lane_section_at(track.s)
+        let section = road.lane_section_at(track.s);
+        let drivable = section
             .lane(lane)
             .is_some_and(|l| l.lane_type.is_drivable());
         let (own, _) = self.lane_handle(track.lane_id)?;
@@ -238,6 +243,11 @@ impl<'a> ControllerView<'a> {
                 .next()
                 .is_some(),
             toward_keep_side: side == keep,
+            crossing_permitted: section.permits_lane_change(
+                track.lane_id,
+                lane,
+                track.s - section.s,
+            ),
         })
     }
 

@@ -223,6 +223,48 @@ fn mobil_does_not_cut_in_front_of_a_faster_follower() {
     );
 }
 
+/// Issue 13 ("lane changes … respect lane types and road marks you can read"):
+/// mobil_truck.xosc on straight_10km_no_passing.xodr, the left lane free (Fast 5 km away) as in
+/// [`mobil_changes_lane_past_a_slow_truck`], where MOBIL wants lane −1 at once; but the mark
+/// between lanes −1 and −2 is solid up to s = 600 m (OpenDRIVE 1.8 §11.8, no `laneChange`: the
+/// paint decides). Ego keeps the centre of lane −2 (t = −5.25) while its reference point is
+/// before 600 m, brakes behind the truck without touching it, and changes to lane −1 once
+/// the mark is broken.
+#[test]
+fn mobil_does_not_cross_a_solid_line() {
+    let (rows, _) = run_with(
+        "mobil_truck.xosc",
+        &[("FastS", "5000"), ("Road", "straight_10km_no_passing.xodr")],
+    );
+    let mut before = 0;
+    for e in rows.of("Ego").filter(|e| e.s < 600.0) {
+        before += 1;
+        assert!(
+            (e.t - LANE_2_CENTRE).abs() < 1e-9,
+            "t = {}: Ego at t {} (s {})",
+            e.time,
+            e.t,
+            e.s
+        );
+        let truck = rows.at("Truck", e.time);
+        assert!(
+            truck.s - 2.0 - (e.s + FRONT) > 0.0,
+            "Ego touches the truck at {}",
+            e.time
+        );
+    }
+    assert!(before > 100, "{before} frames before 600 m");
+    let first_off = rows
+        .of("Ego")
+        .find(|e| (e.t - LANE_2_CENTRE).abs() > 1e-9)
+        .expect("Ego leaves lane -2 once the line is broken");
+    assert!(first_off.s >= 600.0, "left the lane at s {}", first_off.s);
+    assert!(
+        rows.of("Ego").any(|r| r.lane == -1),
+        "Ego changes to lane -1"
+    );
+}
+
 /// Issue 13: brake_override.xosc, Ego (vehicle_dynamics) at 30 m/s; a full brake override
 /// (BrakePercent 1.0) with maxDeceleration 10 m/s² stops it within v²/(2·d) = 900/20 = 45 m of
 /// where the override started, ±5 %.

@@ -221,6 +221,29 @@ impl LaneSection {
         }
     }
 
+    /// Whether a vehicle may change from lane `from` to the adjacent lane `to` at `ds` metres
+    /// from the section's start, by the road mark in effect there on the border between them
+    /// ([`RoadMark::permits_lane_change`]). A lane's marks lie along its outer border and the
+    /// centre lane's between the left and right lanes (§11.8), so the border of two lanes is
+    /// the record of the one nearer the centre, or the centre lane's when they lie on either
+    /// side of it. No mark there (or no such lane): the change is permitted.
+    pub fn permits_lane_change(&self, from: i32, to: i32, ds: Real) -> bool {
+        let border_of = if from.signum() * to.signum() < 0 {
+            0
+        } else if from.abs() < to.abs() {
+            from
+        } else {
+            to
+        };
+        let mark = self.lane(border_of).and_then(|lane| {
+            lane.road_marks
+                .iter()
+                .take_while(|m| m.s_offset <= ds)
+                .last()
+        });
+        mark.map_or(true, |m| m.permits_lane_change(border_of, to > from))
+    }
+
     /// All lanes, left outermost to right outermost (the centre lane included).
     pub fn lanes(&self) -> impl Iterator<Item = &Lane> {
         self.left

@@ -12,4 +12,4 @@ pub use junction::{Connection, ContactPoint, Junction, JunctionKind, LaneLink};
 pub use lanes::{is_drivable, Lane, LaneHeight, LaneSection, LaneType};
 pub use objects::{Object, Signal};
 pub use road::{ElementType, Road, RoadLink, RoadLinks, RoadType, Speed, TrafficRule};
-pub use road_mark::{RoadMark, RoadMarkColor, RoadMarkLine, RoadMarkType};
+pub use road_mark::{RoadMark, RoadMarkColor, RoadMarkLaneChange, RoadMarkLine, RoadMarkType};

@@ -1,7 +1,8 @@
 //! `<roadMark>` (OpenDRIVE 1.8 §11.8 "Road markings", XSD `t_road_lanes_laneSection_lcr_lane_roadMark`):
 //! the marking along a lane's outer border (the centre lane's: along the lane-offset line),
-//! valid from its `sOffset` to the next record's. Kept as data: the engine does not use it;
-//! viewers and OSI lane boundaries do.
+//! valid from its `sOffset` to the next record's. Viewers and OSI lane boundaries draw it; the
+//! engine's lane-changing driver model asks [`RoadMark::permits_lane_change`] whether it may
+//! cross it.
 
 use crate::math::Real;
 
@@ -155,4 +156,71 @@ pub struct RoadMark {
     pub width: Option<Real>,
     /// The `<line>`s of the `<type>` child, if any (the dash pattern).
     pub lines: Vec<RoadMarkLine>,
+    /// `laneChange`, if given.
+    pub lane_change: Option<RoadMarkLaneChange>,
+}
+
+/// `roadMark/@laneChange` (XSD `e_road_lanes_laneSection_lcr_lane_roadMark_laneChange`): the
+/// directions in which a lane change across the mark is allowed, "taking into account that
+/// lanes are numbered in ascending order from right to left" (§11.8).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RoadMarkLaneChange {
+    /// `increase`: towards the lane with the larger id only.
+    Increase,
+    /// `decrease`: towards the lane with the smaller id only.
+    Decrease,
+    /// `both`.
+    Both,
+    /// `none`.
+    None,
+}
+
+impl RoadMarkLaneChange {
+    /// Reads a `laneChange` value; `None` for a value the schema does not have.
+    pub fn parse(text: &str) -> Option<Self> {
+        Some(match text {
+            "increase" => Self::Increase,
+            "decrease" => Self::Decrease,
+            "both" => Self::Both,
+            "none" => Self::None,
+            _ => return None,
+        })
+    }
+}
+
+impl RoadMark {
+    /// Whether a vehicle may cross this mark, the record of lane `border_of` (0: the centre
+    /// lane), moving towards larger lane ids (`increasing`) or smaller ones.
+    ///
+    /// `laneChange`, when given, decides (§11.8). Without it the standard's default is
+    /// `both`; oscsim reads the paint instead, as a driver does, so that a solid line keeps
+    /// traffic in lane on roads that do not write `laneChange` (most do not): `solid`,
+    /// `solid solid`, `curb`, `grass` and `edge` may not be crossed; `solid broken` and
+    /// `broken solid` may be crossed from the side of their broken line (double types name
+    /// their lines from the inside of the road outwards, so the first line faces the lane
+    /// `border_of`; on the centre line, where there is no inside, neither way); every other
+    /// type, `none` and `custom` included, may be crossed.
+    pub fn permits_lane_change(&self, border_of: i32, increasing: bool) -> bool {
+        match self.lane_change {
+            Some(RoadMarkLaneChange::Both) => return true,
+            Some(RoadMarkLaneChange::None) => return false,
+            Some(RoadMarkLaneChange::Increase) => return increasing,
+            Some(RoadMarkLaneChange::Decrease) => return !increasing,
+            None => {}
+        }
+        // Leaving lane `border_of` outwards: away from the centre.
+        let outwards = (border_of > 0) == increasing;
+        match self.mark_type {
+            RoadMarkType::Solid
+            | RoadMarkType::SolidSolid
+            | RoadMarkType::Curb
+            | RoadMarkType::Grass
+            | RoadMarkType::Edge => false,
+            // Inner line solid: only from the outside inwards.
+            RoadMarkType::SolidBroken => border_of != 0 && !outwards,
+            // Inner line broken: only from the inside outwards.
+            RoadMarkType::BrokenSolid => border_of != 0 && outwards,
+            _ => true,
+        }
+    }
 }

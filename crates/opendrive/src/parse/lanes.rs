@@ -7,7 +7,8 @@ use super::reader::{child, children, read_nested, Reader};
 use super::road::{missing, read_cubics};
 use crate::error::Error;
 use crate::model::{
-    Lane, LaneHeight, LaneSection, LaneType, RoadMark, RoadMarkColor, RoadMarkLine, RoadMarkType,
+    Lane, LaneHeight, LaneSection, LaneType, RoadMark, RoadMarkColor, RoadMarkLaneChange,
+    RoadMarkLine, RoadMarkType,
 };
 
 /// All `<laneSection>`s of a road of `road_length` metres, sorted by s.
@@ -133,6 +134,12 @@ fn read_road_marks(r: &Reader, lane: Node) -> Result<Vec<RoadMark>, Error> {
                 width: r.maybe_f64(line, "width")?,
             });
         }
+        let lane_change = match m.attribute("laneChange") {
+            None => None,
+            Some(text) => Some(RoadMarkLaneChange::parse(text).ok_or_else(|| {
+                r.invalid(m, "laneChange", "increase, decrease, both or none", text)
+            })?),
+        };
         marks.push(RoadMark {
             s_offset: r.req_non_negative(m, "sOffset")?,
             mark_type: RoadMarkType::parse(m.attribute("type").unwrap_or("none")),
@@ -140,6 +147,7 @@ fn read_road_marks(r: &Reader, lane: Node) -> Result<Vec<RoadMark>, Error> {
             color: RoadMarkColor::parse(m.attribute("color").unwrap_or("standard")),
             width: r.maybe_f64(m, "width")?,
             lines,
+            lane_change,
         });
     }
     marks.sort_by(|a, b| a.s_offset.total_cmp(&b.s_offset));
