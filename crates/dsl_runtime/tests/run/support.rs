@@ -109,6 +109,7 @@ pub fn run_scenario(
         duration,
         max_time: 120.0,
         seed,
+        ..EngineConfig::default()
     };
     let mut engine = Engine::build(scenario, config).unwrap_or_else(|e| panic!("{name}: {e}"));
     let mut frames = Frames(Vec::new());
