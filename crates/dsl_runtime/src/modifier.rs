@@ -15,6 +15,9 @@ pub(crate) enum ModKind {
     Speed,
     /// `change_speed(…)`: the speed at the phase end.
     ChangeSpeed,
+    /// `acceleration(a)`: the rate of the phase's speed change (alone: a constant
+    /// acceleration over the phase).
+    Acceleration,
     /// `position(…)`
     Position,
     /// `lane(…)`
@@ -63,6 +66,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
     let kind = match name {
         "speed" => ModKind::Speed,
         "change_speed" => ModKind::ChangeSpeed,
+        "acceleration" => ModKind::Acceleration,
         "position" => ModKind::Position,
         "lane" => ModKind::Lane,
         "change_lane" => ModKind::ChangeLane,
@@ -74,7 +78,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
                 K::Modifier,
                 app.span,
                 format!(
-                    "expected a modifier the runtime plans (speed, change_speed, position, lane, change_lane, keep_lane, keep_speed, along), found `{other}`"
+                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, lane, change_lane, keep_lane, keep_speed, along), found `{other}`"
                 ),
             ))
         }

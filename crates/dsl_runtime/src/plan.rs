@@ -746,11 +746,79 @@ impl Planner<'_, '_> {
                         let (v1, _) = self.speed_value(m, t.map(|t| t + len))?;
                         let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
                         check_speed(ctx, m, v1)?;
-                        check_accel(ctx, m, (v1 - v0) / len)?;
+                        // With acceleration(a): the change at that rate, done within the phase.
+                        let rate = match mods.iter().find(|q| q.kind == ModKind::Acceleration) {
+                            Some(q) => Some((q, self.acceleration_value(q)?.abs())),
+                            None => None,
+                        };
+                        let (action, ramp) = match rate {
+                            Some((q, a)) => {
+                                check_accel(ctx, q, a)?;
+                                let needed = (v1 - v0).abs() / a;
+                                if needed > len + 1e-9 {
+                                    return Err(ctx.files.err(
+                                        K::Unsatisfiable,
+                                        q.app.span,
+                                        format!("expected the speed change from {v0:.2} m/s to {v1:.2} m/s at {a} m/s² within the phase's {len} s, found it needs {needed:.2} s"),
+                                    ));
+                                }
+                                let dynamics = TransitionDynamics {
+                                    dynamics_shape: DynamicsShape::Linear,
+                                    dynamics_dimension: DynamicsDimension::Rate,
+                                    value: a,
+                                    following_mode: None,
+                                };
+                                (
+                                    PrivateAction::Longitudinal(LongitudinalAction::Speed {
+                                        dynamics,
+                                        target: SpeedTarget::Absolute(v1),
+                                    }),
+                                    needed,
+                                )
+                            }
+                            None => {
+                                check_accel(ctx, m, (v1 - v0) / len)?;
+                                (
+                                    speed_action(
+                                        DynamicsShape::Linear,
+                                        len,
+                                        SpeedTarget::Absolute(v1),
+                                    ),
+                                    len,
+                                )
+                            }
+                        };
                         out.push(Planned {
                             entity: target.clone(),
                             at: None,
                             name: name("speed"),
+                            action,
+                            span: m.app.span,
+                        });
+                        if let Some(t) = t {
+                            self.track_mut(target).ramp(t, t + ramp, v1);
+                        }
+                        self.last_v.insert(target.clone(), v1);
+                    }
+                    (ModKind::Acceleration, _) => {
+                        // Alone: a constant acceleration over the phase.
+                        let paired = mods.iter().any(|q| {
+                            q.kind == ModKind::ChangeSpeed
+                                || (q.kind == ModKind::Speed && q.at == At::End)
+                        });
+                        if paired {
+                            continue;
+                        }
+                        let (t, len) = need_len("acceleration(…)")?;
+                        let a = self.acceleration_value(m)?;
+                        check_accel(ctx, m, a)?;
+                        let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
+                        let v1 = v0 + a * len;
+                        check_speed(ctx, m, v1)?;
+                        out.push(Planned {
+                            entity: target.clone(),
+                            at: None,
+                            name: name("acceleration"),
                             action: speed_action(
                                 DynamicsShape::Linear,
                                 len,
@@ -986,6 +1054,18 @@ impl Planner<'_, '_> {
                 K::Modifier,
                 m.app.span,
                 "expected a speed (or faster_than/slower_than/same_as) in this modifier, found none",
+            )),
+        }
+    }
+
+    /// The acceleration of an `acceleration(a)` modifier (m/s²).
+    fn acceleration_value(&self, m: &Mod<'_>) -> Result<f64, Error> {
+        match m.arg("acceleration") {
+            Some(e) => self.ctx.number(e),
+            None => Err(self.ctx.files.err(
+                K::Modifier,
+                m.app.span,
+                "expected an acceleration in acceleration(…), found none (relative forms are not planned yet)",
             )),
         }
     }

@@ -592,3 +592,18 @@ fn emit_and_wait_on_events() {
     );
     assert!((r.phase("do.ego_part").1 - 3.05).abs() < T_TOL);
 }
+
+#[test]
+fn acceleration_sets_the_rate_of_the_speed_change() {
+    let r = run("acceleration", 0, None);
+    assert!((r.at(3.0, "ego").speed - 16.0).abs() < S_TOL);
+    assert!((r.at(3.0, "ego").s - (59.0 + ramp_lead(2.0, 3.0))).abs() < S_TOL);
+    assert!((r.at(5.0, "ego").speed - 10.0).abs() < S_TOL);
+    assert!((r.at(5.0, "ego").s - 85.0).abs() < S_TOL);
+    assert!((r.at(7.0, "ego").s - 105.0).abs() < S_TOL);
+    let e = error("err_acceleration_too_slow");
+    assert!(
+        e.contains("found it needs 20.00 s") && e.contains("err_acceleration_too_slow.osc:7:9"),
+        "{e}"
+    );
+}
