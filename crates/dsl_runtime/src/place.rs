@@ -223,6 +223,18 @@ pub(crate) fn place(
                 format!("expected a placement of `{}` that does not depend on itself, found a cycle of references", p.name),
             ));
         };
+        if !(0.0..=crate::actors::MAX_SPEED).contains(vv) {
+            let span = find(p, ModKind::Speed).map_or(p.span, |m| m.app.span);
+            return Err(ctx.files.err(
+                K::Unsatisfiable,
+                span,
+                format!(
+                    "expected a start speed of `{}` within 0 to {} m/s, found {vv:.2} m/s",
+                    p.name,
+                    crate::actors::MAX_SPEED
+                ),
+            ));
+        }
         let sv = if *fl { sv + shift } else { *sv };
         if sv - p.rear < 0.0 || sv + p.front > road.length() {
             let span = p.mods.first().map_or(p.span, |m| m.app.span);

@@ -202,6 +202,12 @@ fn errors_name_the_place_before_the_run() {
             && e.contains("err_modifier_wrong_action.osc:8:9"),
         "{e}"
     );
+    let e = error("err_start_speed");
+    assert!(
+        e.contains("expected a start speed of `npc` within 0 to 70 m/s, found -3.00 m/s")
+            && e.contains("err_start_speed.osc:10:13"),
+        "{e}"
+    );
     let e = error("err_no_end");
     assert!(
         e.contains("expected a way for phase `do.0` to end") && e.contains("err_no_end.osc:5:9"),
