@@ -161,7 +161,9 @@ impl VehicleDynamicsController {
         }
     }
 
-    /// Steps the vehicle with `inputs` (after the overrides) from the view's entity.
+    /// Steps the vehicle from the view's entity with `driver`'s inputs (the host's, for
+    /// `external`), else its own driver's, after the overrides. The host's steering wheel
+    /// steers; its own driver does not steer (the lane is kept) unless the wheel is overridden.
     pub(crate) fn drive(
         &mut self,
         view: &ControllerView<'_>,
@@ -172,8 +174,10 @@ impl VehicleDynamicsController {
         let p = *self.params.get_or_insert_with(|| {
             vehicle_parameters(e, self.steering_ratio, self.steering_inertia)
         });
+        let host = driver.is_some();
         let own = driver.unwrap_or_else(|| self.driver(&p, e.speed));
-        let (inputs, limits, steered) = overridden(own, &e.overrides);
+        let (inputs, limits, overridden_wheel) = overridden(own, &e.overrides);
+        let steered = host || overridden_wheel;
         let m = p.step(&mut self.state, &inputs, &limits, e.speed, dt);
         Command::Motion {
             longitudinal: Some(Longitudinal::Motion {

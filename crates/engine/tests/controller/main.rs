@@ -9,4 +9,5 @@
 mod aeb;
 
 mod aeb_example;
+mod external_driver;
 mod user_controllers;

@@ -1,0 +1,89 @@
+//! The `external` controller driven with pedals, gear and steering wheel (issue 13: "pedal +
+//! steering inputs (through `vehicle_dynamics`)"), as a library user drives it: only the public
+//! API (`Engine::attach_external`, `Engine::set_external_input`, `ExternalInput::Driver`,
+//! `models::single_track::DriverInputs`). Ego of idm_free_road.xosc: at rest on the straight
+//! road along +x, Performance maxAcceleration = maxDeceleration = 10 m/s², wheelbase 2.98 m
+//! (front axle positionX − rear), front axle maxSteering 0.5 rad; the vehicle model's steering
+//! ratio is its default 15 (models/single_track.rs).
+
+use std::path::PathBuf;
+
+use engine::controller::ExternalInput;
+use engine::models::single_track::{Brake, DriverInputs, GearSelection};
+use engine::{Engine, EngineConfig};
+
+/// Exact up to rounding: each phase has constant inputs, for which ballistic steps and arc
+/// steps are exact.
+const EXACT: f64 = 1e-9;
+
+fn ego(engine: &Engine) -> (f64, f64, f64) {
+    let w = engine.world();
+    let e = w.entity(w.id("Ego").expect("Ego is in the scenario"));
+    (e.pose.x, e.speed, e.pose.h)
+}
+
+fn steps(engine: &mut Engine, input: DriverInputs, n: usize) {
+    engine
+        .set_external_input("Ego", ExternalInput::Driver(input))
+        .expect("Ego has an external controller");
+    for _ in 0..n {
+        engine.step(&mut (), &mut ()).expect("steps");
+    }
+}
+
+/// Throttle 0.25 in `d` for 1 s (20 steps of 0.05 s): a = 0.25 · 10 = 2.5 m/s², v = 2.5 m/s,
+/// x advances ½ · 2.5 · 1² = 1.25 m. Then no throttle, steering wheel 1.5 rad for 1 s: no
+/// resistance in the model, so v stays 2.5 m/s; the front wheel angle δ = 1.5 / 15 = 0.1 rad,
+/// the curvature κ = tan 0.1 / 2.98 = 0.100335 / 2.98 = 0.0336693 1/m, over 2.5 m the heading turns by
+/// 0.0841733 rad (left). Then neutral with full throttle for 0.5 s: no drive, v stays. Then
+/// BrakePercent 0.5: 5 m/s² stops it in 0.5 s, and it stays stopped (brakes never reverse).
+#[test]
+fn external_driver_inputs_drive_the_vehicle_model() {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/files/controller/idm_free_road.xosc");
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+    engine.attach_external("Ego").expect("attached");
+    engine.step(&mut (), &mut ()).expect("init step");
+    let (x0, v0, h0) = ego(&engine);
+    assert_eq!((v0, h0), (0.0, 0.0));
+
+    let throttle = DriverInputs {
+        throttle: 0.25,
+        gear: GearSelection::Drive,
+        ..DriverInputs::default()
+    };
+    steps(&mut engine, throttle, 20);
+    let (x1, v1, h1) = ego(&engine);
+    assert!((v1 - 2.5).abs() < EXACT, "{v1}");
+    assert!((x1 - x0 - 1.25).abs() < EXACT, "{x1} from {x0}");
+    assert!(h1.abs() < EXACT);
+
+    let steer = DriverInputs {
+        steering_wheel: 1.5,
+        ..DriverInputs::default()
+    };
+    steps(&mut engine, steer, 20);
+    let (_, v2, h2) = ego(&engine);
+    assert!((v2 - 2.5).abs() < EXACT, "{v2}");
+    let turn = 0.1_f64.tan() / 2.98 * 2.5;
+    assert!((turn - 0.0841733).abs() < 1e-6);
+    assert!((h2 - turn).abs() < EXACT, "heading {h2}, expected {turn}");
+
+    let neutral = DriverInputs {
+        throttle: 1.0,
+        gear: GearSelection::Neutral,
+        ..DriverInputs::default()
+    };
+    steps(&mut engine, neutral, 10);
+    assert!((ego(&engine).1 - 2.5).abs() < EXACT);
+
+    let brake = DriverInputs {
+        brake: Brake::Percent(0.5),
+        ..DriverInputs::default()
+    };
+    steps(&mut engine, brake, 9);
+    // 0.45 s of 5 m/s²: 2.5 − 2.25 = 0.25 m/s left.
+    assert!((ego(&engine).1 - 0.25).abs() < EXACT, "{}", ego(&engine).1);
+    steps(&mut engine, brake, 11);
+    assert_eq!(ego(&engine).1, 0.0);
+}
