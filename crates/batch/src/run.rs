@@ -44,6 +44,9 @@ pub struct Options {
     /// The driver model of spawned traffic without a controller of its own
     /// ([`engine::EngineConfig::traffic_model`]).
     pub traffic_model: Option<engine::runtime::TrafficModel>,
+    /// The driver model of the scenario's vehicles without an ObjectController
+    /// ([`engine::EngineConfig::vehicle_model`]).
+    pub vehicle_model: Option<engine::runtime::TrafficModel>,
     /// The entity measured against the others (metrics.rs).
     pub host: String,
     /// Worker threads (at least 1).
@@ -64,6 +67,7 @@ impl Default for Options {
             duration: None,
             max_time: engine::runtime::DEFAULT_MAX_TIME,
             traffic_model: None,
+            vehicle_model: None,
             host: "Ego".into(),
             jobs: 1,
             shard: Shard::ALL,
@@ -181,6 +185,7 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         max_time: options.max_time,
         seed: variant_seed(options.seed, v),
         traffic_model: options.traffic_model,
+        vehicle_model: options.vehicle_model,
     };
     let mut engine =
         Engine::load(&plan.scenario.path, &params, config).map_err(|e| e.to_string())?;

@@ -97,6 +97,7 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
         duration: args.step.duration,
         max_time: args.step.max_time,
         traffic_model: args.step.config().traffic_model,
+        vehicle_model: args.step.config().vehicle_model,
         host: args.host.clone(),
         jobs: args
             .jobs

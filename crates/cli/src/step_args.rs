@@ -1,5 +1,5 @@
 //! The stepping flags `oscsim run` and `oscsim batch` share: step length, duration, time cap and
-//! seed, the driver model of spawned traffic, turned into the engine's configuration.
+//! seed, the driver models of spawned traffic and of the scenario's vehicles, turned into the engine's configuration.
 
 use engine::runtime::TrafficModel;
 use engine::EngineConfig;
@@ -13,7 +13,16 @@ pub enum TrafficModelArg {
     Mobil,
 }
 
-/// `--dt`, `--duration`, `--max-time`, `--seed`, `--traffic-model`.
+impl TrafficModelArg {
+    fn model(self) -> TrafficModel {
+        match self {
+            TrafficModelArg::Idm => TrafficModel::Idm,
+            TrafficModelArg::Mobil => TrafficModel::Mobil,
+        }
+    }
+}
+
+/// `--dt`, `--duration`, `--max-time`, `--seed`, `--traffic-model`, `--vehicle-model`.
 #[derive(clap::Args, Debug, Clone, Copy)]
 pub struct StepArgs {
     /// Step length in seconds.
@@ -34,6 +43,11 @@ pub struct StepArgs {
     /// (car following) or `mobil` (car following and lane changes).
     #[arg(long, value_enum, value_name = "MODEL")]
     pub traffic_model: Option<TrafficModelArg>,
+    /// Give every vehicle of the scenario that has no ObjectController this driver model
+    /// (the scale scenarios' vehicles, say), activated before the Init, whose SpeedAction
+    /// becomes the desired speed: `idm` or `mobil`, default parameters.
+    #[arg(long, value_enum, value_name = "MODEL")]
+    pub vehicle_model: Option<TrafficModelArg>,
 }
 
 impl StepArgs {
@@ -44,10 +58,8 @@ impl StepArgs {
             duration: self.duration,
             max_time: self.max_time,
             seed: self.seed,
-            traffic_model: self.traffic_model.map(|m| match m {
-                TrafficModelArg::Idm => TrafficModel::Idm,
-                TrafficModelArg::Mobil => TrafficModel::Mobil,
-            }),
+            traffic_model: self.traffic_model.map(TrafficModelArg::model),
+            vehicle_model: self.vehicle_model.map(TrafficModelArg::model),
         }
     }
 }

@@ -9,7 +9,8 @@ pub const DEFAULT_MAX_TIME: f64 = 3600.0;
 /// Default seed of the run's random streams.
 pub const DEFAULT_SEED: u64 = 1;
 
-/// A controller model for spawned traffic ([`EngineConfig::traffic_model`]).
+/// A controller model for spawned traffic ([`EngineConfig::traffic_model`]) or the scenario's
+/// vehicles ([`EngineConfig::vehicle_model`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum TrafficModel {
     /// `idm`: the Intelligent Driver Model (longitudinal), the model's default parameters.
@@ -36,6 +37,11 @@ pub struct EngineConfig {
     /// assigned and activated at the spawn (runtime/traffic/controllers.rs). Default `None`:
     /// the default controller.
     pub traffic_model: Option<TrafficModel>,
+    /// The controller every vehicle ScenarioObject without an ObjectController gets (the
+    /// scale scenarios' vehicles, say): `idm` or `mobil`, assigned and activated when the
+    /// engine is built, before the Init, whose SpeedAction then gives the desired speed
+    /// (runtime/traffic/controllers.rs). Default `None`: the default controller.
+    pub vehicle_model: Option<TrafficModel>,
 }
 
 impl Default for EngineConfig {
@@ -46,6 +52,7 @@ impl Default for EngineConfig {
             max_time: DEFAULT_MAX_TIME,
             seed: DEFAULT_SEED,
             traffic_model: None,
+            vehicle_model: None,
         }
     }
 }

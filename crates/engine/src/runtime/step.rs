@@ -105,6 +105,10 @@ impl Engine {
         let mut built = build(scenario, network)?;
         built.world.traffic.seed = config.seed;
         built.world.traffic.model = config.traffic_model;
+        let mut host_events = Vec::new();
+        if let Some(model) = config.vehicle_model {
+            crate::traffic::equip_scenario_vehicles(&mut built.world, model, &mut host_events)?;
+        }
         let storyboard = Storyboard::new(&built.desc)?;
         Ok(Engine {
             world: RefCell::new(built.world),
@@ -119,7 +123,7 @@ impl Engine {
             stopped: None,
             counters: StageCounters::default(),
             scheduled_values: std::collections::VecDeque::new(),
-            host_events: Vec::new(),
+            host_events,
         })
     }
 

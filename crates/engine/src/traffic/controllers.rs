@@ -11,12 +11,19 @@
 //! stream of its own per vehicle (the run's seed, stream keyed by the vehicle's name and
 //! "/controller"), so the positions, speeds and templates drawn are those of a run without
 //! controllers.
+//!
+//! The run option [`EngineConfig::vehicle_model`](crate::EngineConfig::vehicle_model) gives
+//! the same controller to the scenario's own vehicles that have no ObjectController, when the
+//! engine is built ([`equip_scenario_vehicles`]): assigned and activated before the Init, so
+//! that the Init's SpeedAction sets the speed and the desired speed (engine module
+//! `controller`).
 
 use scenario::{Controller, ControllerDomains, ObjectController, Properties, TrafficMix};
 
 use super::random::{stream, weighted};
 use crate::controller::{assign, Origin};
-use crate::runtime::entity::EntityId;
+use crate::output::EventRecord;
+use crate::runtime::entity::{EntityId, EntityKind};
 use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 use crate::runtime::TrafficModel;
@@ -29,23 +36,22 @@ const ALL: ControllerDomains = ControllerDomains {
     lighting: None,
 };
 
-/// The controller of the run option.
-fn option_controller(model: TrafficModel) -> Controller {
+/// The controller of a run option, named `prefix` and the model (`option`: the option's name,
+/// as the source of the controller).
+fn option_controller(model: TrafficModel, prefix: &str, option: &str) -> Controller {
     let name = match model {
         TrafficModel::Idm => "idm",
         TrafficModel::Mobil => "mobil",
     };
     Controller {
-        name: format!("traffic {name}"),
+        name: format!("{prefix} {name}"),
         controller_type: None,
         properties: Properties {
             properties: vec![("model".to_owned(), name.to_owned())],
             ..Properties::default()
         },
         catalog: None,
-        pos: scenario::SourcePos::start_of(std::sync::Arc::from(std::path::Path::new(
-            "run option traffic_model",
-        ))),
+        pos: scenario::SourcePos::start_of(std::sync::Arc::from(std::path::Path::new(option))),
     }
 }
 
@@ -74,7 +80,10 @@ pub(crate) fn equip(
             .map(|oc| (oc.controller.clone(), oc.name.clone()))
             .collect()
     } else if let Some(model) = world.traffic.model {
-        vec![(option_controller(model), None)]
+        vec![(
+            option_controller(model, "traffic", "run option traffic_model"),
+            None,
+        )]
     } else {
         Vec::new()
     };
@@ -97,5 +106,37 @@ pub(crate) fn equip(
         )?;
     }
     world.traffic.events.append(&mut events);
+    Ok(())
+}
+
+/// Gives every vehicle of the scenario without a controller of its own (no ObjectController)
+/// the controller of run option `vehicle_model`, assigned and activated on every domain it is
+/// defined for; the records go to `events`.
+pub(crate) fn equip_scenario_vehicles(
+    world: &mut World,
+    model: TrafficModel,
+    events: &mut Vec<EventRecord>,
+) -> Result<(), RuntimeError> {
+    let controller = option_controller(model, "vehicle", "run option vehicle_model");
+    let bare: Vec<EntityId> = world
+        .entities()
+        .iter()
+        .filter(|e| e.kind == EntityKind::Vehicle)
+        .filter(|e| {
+            world
+                .controllers
+                .of(e.id.index())
+                .map_or(true, |c| c.assigned.is_empty())
+        })
+        .map(|e| e.id)
+        .collect();
+    for id in bare {
+        let origin = Origin {
+            element: "run option vehicle_model",
+            time: 0.0,
+            pos: &controller.pos,
+        };
+        assign(world, id, &controller, None, &ALL, &origin, events)?;
+    }
     Ok(())
 }

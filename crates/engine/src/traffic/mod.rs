@@ -5,7 +5,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `area` | TrafficAreaAction: a number of vehicles in a polygon or road ranges |
-//! | `controllers` | the controller a spawned vehicle gets: ControllerDistribution, template ObjectControllers, run option |
+//! | `controllers` | the controller a spawned vehicle gets: ControllerDistribution, template ObjectControllers, run option; run option `vehicle_model` for the scenario's vehicles |
 //! | `random` | the per-action random streams, split from the run's seed |
 //! | `spawn` | vehicle templates, free lane points, adding and removing spawned vehicles |
 //! | `state` | the running traffic actions, their start and the traffic stage of the step |
@@ -20,5 +20,6 @@ mod spawn;
 mod state;
 mod swarm;
 
+pub(crate) use controllers::equip_scenario_vehicles;
 pub(crate) use spawn::leave;
 pub(crate) use state::{start, step, supports, Traffic};

@@ -516,3 +516,42 @@ fn catalog_controller_with_parameter_assignment() {
     assert!((v - 15.0).abs() < 0.015, "{v}");
     assert!(rows.of("Ego").all(|r| r.speed <= 15.0));
 }
+
+/// Issue 13 ("the scale scenarios can give … vehicles idm"): column.xosc has no controllers,
+/// like the scale scenarios. On the default controller Ego (26 m/s) closes the 80 m gap to
+/// Leader (20 m/s) at 6 m/s and drives into it after 80/6 = 13.3 s. With the run option
+/// `vehicle_model` = idm both get the IDM (default parameters: s0 = 2 m, T = 1.6 s, δ = 4) and
+/// the Init's SpeedAction as desired speed: Leader keeps 20 m/s (free road at v = v0), Ego
+/// settles behind it at s_e = (2 + 20·1.6)/√(1 − (20/26)⁴) = 34/√0.649872 = 42.176 m and
+/// 20 m/s, never touching it; the activation is in the event log.
+#[test]
+fn vehicle_model_option_gives_scenario_vehicles_the_idm() {
+    let gap = |rows: &Rows, t: f64| (rows.at("Leader", t).s - REAR) - (rows.at("Ego", t).s + FRONT);
+    let (rows, _) = run_config("column.xosc", EngineConfig::default());
+    assert!((gap(&rows, 0.0) - 80.0).abs() < 1e-9);
+    assert!(
+        gap(&rows, 14.0) < 0.0,
+        "the default controller drives through"
+    );
+    let config = EngineConfig {
+        vehicle_model: Some(engine::runtime::TrafficModel::Idm),
+        ..EngineConfig::default()
+    };
+    let (rows, events) = run_config("column.xosc", config);
+    assert!(rows.of("Ego").all(|r| gap(&rows, r.time) > 0.0));
+    let expected = 34.0 / (1.0 - (20.0_f64 / 26.0).powi(4)).sqrt();
+    assert!((expected - 42.176).abs() < 1e-3);
+    let end = gap(&rows, 120.0);
+    assert!((end - expected).abs() < GAP_TOLERANCE, "gap {end} m");
+    let v = rows.at("Ego", 120.0).speed;
+    assert!((v - 20.0).abs() < SPEED_TOLERANCE, "speed {v}");
+    assert!((rows.at("Leader", 120.0).speed - 20.0).abs() < 1e-9);
+    for name in ["Ego", "Leader"] {
+        assert!(
+            events.iter().any(|r| matches!(r,
+                EventRecord::Controller { entity, model, active, .. }
+                    if entity == name && model == "idm" && active.longitudinal)),
+            "{name}'s activation is logged"
+        );
+    }
+}
