@@ -10,4 +10,5 @@ mod aeb;
 
 mod aeb_example;
 mod external_driver;
+mod idm_junction;
 mod user_controllers;
