@@ -24,8 +24,7 @@ use std::error::Error;
 use std::path::{Path, PathBuf};
 
 use engine::controller::ExternalInput;
-use engine::runtime::{Entity, World};
-use engine::{Engine, EngineConfig};
+use engine::{Engine, EngineConfig, EntityState};
 
 /// TTC below which the AEB brakes partly (s).
 pub const PARTIAL_TTC: f64 = 1.6;
@@ -66,7 +65,7 @@ pub fn params() -> Vec<(String, String)> {
 /// The gap from `ego`'s front bumper to the rear of `other` along Ego's heading, when `other`'s
 /// box overlaps Ego's width and lies ahead: what a forward sensor measures (boxes taken as
 /// aligned with Ego).
-fn gap_ahead(ego: &Entity, other: &Entity) -> Option<f64> {
+fn gap_ahead(ego: &EntityState, other: &EntityState) -> Option<f64> {
     let (dx, dy) = (other.pose.x - ego.pose.x, other.pose.y - ego.pose.y);
     let (sin, cos) = ego.pose.h.sin_cos();
     let (along, across) = (dx * cos + dy * sin, -dx * sin + dy * cos);
@@ -82,19 +81,19 @@ fn gap_ahead(ego: &Entity, other: &Entity) -> Option<f64> {
 }
 
 /// The nearest object in Ego's path: (gap, its speed).
-fn in_path(world: &World, ego: &Entity) -> Option<(f64, f64)> {
-    world
-        .entities()
+fn in_path(scene: &[EntityState], ego: &EntityState) -> Option<(f64, f64)> {
+    scene
         .iter()
-        .filter(|o| o.placed && o.id != ego.id)
+        .filter(|o| o.id != ego.id)
         .filter_map(|o| gap_ahead(ego, o).map(|g| (g, o.speed)))
         .min_by(|a, b| a.0.total_cmp(&b.0))
 }
 
-/// The AEB's acceleration for Ego now (module doc); `braking`: it braked in the last step
-/// (once braking it holds at least the partial level until Ego no longer closes in).
-pub fn aeb(world: &World, ego: &Entity, braking: bool) -> f64 {
-    let Some((gap, speed)) = in_path(world, ego) else {
+/// The AEB's acceleration for Ego now (module doc), from the entities in the scene (`scene`,
+/// [`Engine::entities`]); `braking`: it braked in the last step (once braking it holds at
+/// least the partial level until Ego no longer closes in).
+pub fn aeb(scene: &[EntityState], ego: &EntityState, braking: bool) -> f64 {
+    let Some((gap, speed)) = in_path(scene, ego) else {
         return 0.0;
     };
     let closing = ego.speed - speed;
@@ -127,11 +126,9 @@ pub fn run(path: &Path, with_aeb: bool) -> Result<Outcome, Box<dyn Error>> {
     };
     loop {
         if with_aeb && engine.steps() > 0 {
-            let acceleration = {
-                let world = engine.world();
-                let id = world.id("Ego").ok_or("no Ego")?;
-                aeb(&world, world.entity(id), braking)
-            };
+            let scene = engine.entities();
+            let ego = scene.iter().find(|e| e.name == "Ego").ok_or("no Ego")?;
+            let acceleration = aeb(&scene, ego, braking);
             braking = acceleration < 0.0;
             if acceleration < 0.0 && outcome.braked_at.is_none() {
                 outcome.braked_at = Some(engine.time());
@@ -145,9 +142,9 @@ pub fn run(path: &Path, with_aeb: bool) -> Result<Outcome, Box<dyn Error>> {
             )?;
         }
         let stop = engine.step(&mut (), &mut ())?;
-        let world = engine.world();
-        let ego = world.entity(world.id("Ego").ok_or("no Ego")?);
-        if let Some((gap, _)) = in_path(&world, ego) {
+        let scene = engine.entities();
+        let ego = scene.iter().find(|e| e.name == "Ego").ok_or("no Ego")?;
+        if let Some((gap, _)) = in_path(&scene, ego) {
             outcome.min_gap = outcome.min_gap.min(gap);
             outcome.collided |= gap <= 0.0;
         }

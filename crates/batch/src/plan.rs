@@ -81,7 +81,7 @@ pub struct Plan {
     pub distribution: PathBuf,
     /// The scenario it names, loaded with its declared parameter values.
     pub scenario: Scenario,
-    /// Its road network (the measurements' roads).
+    /// Its road network, read once: every variant's engine and the measurements share it.
     pub network: Arc<RoadNetwork>,
     /// The varied parameters, in the order the distribution first names them.
     pub parameters: Vec<String>,
@@ -107,14 +107,7 @@ impl Plan {
             });
         }
         let scenario = Scenario::load(&expanded.scenario_file).map_err(PlanError::Scenario)?;
-        let network = match &scenario.road_network.logic_file {
-            Some(path) => RoadNetwork::from_file(path).map_err(PlanError::RoadNetwork)?,
-            None => RoadNetwork::from_str(
-                r#"<OpenDRIVE><header revMajor="1" revMinor="6"/></OpenDRIVE>"#,
-                &scenario.path,
-            )
-            .map_err(PlanError::RoadNetwork)?,
-        };
+        let network = engine::load::road_network(&scenario).map_err(PlanError::RoadNetwork)?;
         let named = varied(&distribution);
         for (name, pos) in &named {
             if !scenario
@@ -148,7 +141,7 @@ impl Plan {
         Ok(Plan {
             distribution: path.to_path_buf(),
             scenario,
-            network: Arc::new(network),
+            network,
             parameters,
             variants: expanded.runs,
         })

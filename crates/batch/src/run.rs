@@ -9,6 +9,7 @@ use std::fs::File;
 use std::io::BufWriter;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
 
 use engine::output::{CsvWriter, JsonlWriter};
 use engine::storyboard::{ElementKind, Transition};
@@ -187,8 +188,14 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         traffic_model: options.traffic_model,
         vehicle_model: options.vehicle_model,
     };
+    // The variant from the scenario's files kept at the first load and the road network read
+    // once for the whole batch: no file is read per variant.
+    let scenario = plan
+        .scenario
+        .with_parameters(&params)
+        .map_err(|e| e.to_string())?;
     let mut engine =
-        Engine::load(&plan.scenario.path, &params, config).map_err(|e| e.to_string())?;
+        Engine::new(&scenario, Arc::clone(&plan.network), config).map_err(|e| e.to_string())?;
     let mut observer = Observer::new(&plan.network, &options.host);
     let mut trajectories = None;
     let mut events = Events {

@@ -96,7 +96,7 @@ enum Category {
 pub struct OsiSink {
     builder: GroundTruthBuilder,
     trace: TraceFile,
-    network: RoadNetwork,
+    network: std::sync::Arc<RoadNetwork>,
     scenario_file: String,
     categories: BTreeMap<String, Category>,
     /// Boxes of the road objects that ExternalObjectReferences name.
@@ -124,7 +124,7 @@ impl OsiSink {
         scenario_path: &Path,
         options: &OsiOptions,
     ) -> anyhow::Result<Self> {
-        let network = engine.world().network.clone();
+        let network = engine.road_network();
         let map_reference = scenario
             .road_network
             .logic_file

@@ -135,7 +135,9 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         scenario::Scenario::load_with_parameters(&args.scenario, &args.params)
             .with_context(|| format!("cannot run {}", args.scenario.display()))?
     };
-    let mut engine = Engine::build(&scenario, config)
+    let network = engine::load::road_network(&scenario)
+        .with_context(|| format!("cannot run {}", args.scenario.display()))?;
+    let mut engine = Engine::new(&scenario, network, config)
         .with_context(|| format!("cannot run {}", args.scenario.display()))?;
     for (name, text) in &args.values {
         engine.set_user_value(name, engine::user_values::parse_value(text));

@@ -186,6 +186,7 @@ pub(crate) fn lower(
         },
         parameter_value_distribution: None,
         warnings: Vec::new(),
+        sources: scenario::Sources::default(),
     }
 }
 

@@ -16,7 +16,8 @@ fn whole_run(scenario: &scenario::Scenario, duration: Option<f64>) -> u64 {
         duration,
         ..EngineConfig::default()
     };
-    let mut engine = Engine::build(scenario, config).expect("builds");
+    let network = engine::load::road_network(scenario).expect("road network loads");
+    let mut engine = Engine::new(scenario, network, config).expect("builds");
     engine.run(&mut (), &mut ()).expect("runs");
     engine.steps()
 }

@@ -33,7 +33,10 @@ fn whole_run(c: &mut Criterion, group: &str, file: &str, measurement: Duration) 
     group.sample_size(10).measurement_time(measurement);
     group.bench_function(format!("{file} whole run"), |b| {
         b.iter(|| {
-            let mut engine = Engine::build(&scenario, EngineConfig::default()).expect("builds");
+            // The road network is read in every iteration, as a one-off run reads it.
+            let network = engine::load::road_network(&scenario).expect("road network loads");
+            let mut engine =
+                Engine::new(&scenario, network, EngineConfig::default()).expect("builds");
             let mut csv = CsvWriter::new(Vec::new());
             let mut events = JsonlWriter::new(Vec::new());
             engine.run(&mut csv, &mut events).expect("runs");

@@ -1,9 +1,42 @@
-//! The oscsim runtime: entity state, storyboard, actions, conditions, controllers and the
+//! The oscsim runtime: an OpenSCENARIO 1.3 scenario on an ASAM OpenDRIVE road network, run
+//! headless in fixed steps; entity state, storyboard, conditions, actions, controllers, and the
 //! physical-object domain model of OpenSCENARIO 2.0 §8.7.
 //!
-//! [`Engine::build`] turns a loaded [`scenario::Scenario`] and its road network into a runnable
-//! engine; [`Engine::step`] advances it by one fixed step and pushes a [`Frame`] to a
-//! [`FrameSink`] and the step's [`EventRecord`]s to an [`EventSink`].
+//! The front door: load a [`scenario::Scenario`] and its road network once
+//! ([`load::road_network`], an `Arc` that engines share), build an [`Engine`] with
+//! [`Engine::new`] (or [`Engine::load`] for one run from a path), and step it:
+//! [`Engine::step`] advances one fixed step and pushes a [`Frame`] to a [`FrameSink`] and the
+//! step's [`EventRecord`]s to an [`EventSink`]. Between steps, [`Engine::entities`] gives each
+//! entity's state as plain values ([`EntityState`]). Variants of a scenario for a batch come
+//! from [`scenario::Scenario::with_parameters`], which reads no file.
+//!
+//! ```
+//! use std::path::Path;
+//! use std::sync::Arc;
+//! use engine::{load, output::CsvWriter, Engine, EngineConfig, EventRecord};
+//!
+//! let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/scenarios/cut_in_highway.xosc");
+//! let scenario = scenario::Scenario::load(Path::new(path))?;
+//! let network = load::road_network(&scenario)?; // read once, shared
+//! let config = EngineConfig { duration: Some(2.0), ..EngineConfig::default() };
+//!
+//! let mut engine = Engine::new(&scenario, Arc::clone(&network), config)?;
+//! let mut csv = CsvWriter::new(Vec::new());
+//! let mut events: Vec<EventRecord> = Vec::new();
+//! engine.run(&mut csv, &mut events)?;
+//!
+//! // 2 s at the default 0.05 s step: 40 steps; Ego drives at its $EgoSpeed (25 m/s).
+//! assert_eq!(engine.steps(), 40);
+//! let ego = engine.entity("Ego").expect("in the scene");
+//! assert_eq!(ego.speed, 25.0);
+//!
+//! // A variant with another parameter value, on the same road network.
+//! let slower = scenario.with_parameters(&[("EgoSpeed".into(), "20".into())])?;
+//! let mut engine = Engine::new(&slower, network, config)?;
+//! engine.run(&mut (), &mut ())?;
+//! assert_eq!(engine.entity("Ego").expect("in the scene").speed, 20.0);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 //!
 //! | module | implements |
 //! | --- | --- |
@@ -22,6 +55,8 @@
 //! | `controller` | OpenSCENARIO 1.3 §7.5 controllers: the default controller, route following |
 //! | `traffic` | OpenSCENARIO 1.3 §7.2.2.3 spawned traffic: sources, sinks, swarms, areas |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
+//! | `load` | the loading layer: road networks read once and shared, `Engine::load` |
+//! | `snapshot` | entity and environment state as plain values (`Engine::entities`) |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
@@ -29,18 +64,24 @@ mod actions;
 pub mod condition;
 pub mod controller;
 pub mod domain;
+pub mod load;
 pub mod models;
 pub mod output;
 pub mod position;
 pub mod routing;
 pub mod runtime;
 pub mod signals;
+mod snapshot;
 pub mod storyboard;
 mod traffic;
 pub mod trajectory;
 pub mod user_values;
 
+pub use load::{LoadError, RoadNetworks};
+pub use output::{CsvWriter, EntityFrame, JsonlWriter};
 pub use output::{EventRecord, EventSink, Frame, FrameSink};
 pub use runtime::{
-    Engine, EngineConfig, EntityId, LoadError, RuntimeError, RuntimeErrorKind, StopReason,
+    Engine, EngineConfig, EntityId, EntityKind, RuntimeError, RuntimeErrorKind, StageCounters,
+    StopReason, Visibility,
 };
+pub use snapshot::{EntityState, EnvironmentState};

@@ -122,7 +122,8 @@ impl Run {
         config: EngineConfig,
     ) -> Result<Run> {
         let scenario = Scenario::load_with_parameters(scenario_path, params)?;
-        let mut engine = Engine::build(&scenario, config)
+        let network = engine::load::road_network(&scenario)?;
+        let mut engine = Engine::new(&scenario, network, config)
             .map_err(|e| Error::new(ErrorKind::Run(e.to_string())))?;
         let mut recorder = Recorder::new();
         let mut log = EventRecorder::new();

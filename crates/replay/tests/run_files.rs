@@ -23,7 +23,8 @@ fn write_run(dir: &Path) -> PathBuf {
     std::fs::create_dir_all(dir).expect("scratch folder");
     let scenario = scenario::Scenario::load(&cut_in()).expect("the cut-in loads");
     let config = EngineConfig::default();
-    let mut engine = Engine::build(&scenario, config).expect("builds");
+    let network = engine::load::road_network(&scenario).expect("its road loads");
+    let mut engine = Engine::new(&scenario, network, config).expect("builds");
     let csv = dir.join("cut_in.csv");
     let mut frames: Vec<Box<dyn engine::FrameSink>> = vec![Box::new(CsvWriter::new(
         std::fs::File::create(&csv).expect("csv"),

@@ -9,7 +9,8 @@
 //! as the loader resolved them: relative paths written in a file are joined to its directory
 //! and `..` steps folded as text, so `xosc/../Catalogs/V` arrives as `Catalogs/V`.
 
-use std::collections::BTreeMap;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, BTreeSet};
 use std::io;
 use std::path::{Path, PathBuf};
 
@@ -56,7 +57,8 @@ impl FileProvider for DiskFiles {
     }
 }
 
-/// Files held in memory, keyed by path. A directory exists when some file lies under it.
+/// Files held in memory, keyed by path. A directory exists when some file lies under it, or
+/// when it was added with [`MemoryFiles::insert_dir`].
 ///
 /// ```
 /// use scenario::{MemoryFiles, FileProvider};
@@ -66,9 +68,10 @@ impl FileProvider for DiskFiles {
 /// assert!(files.is_dir(Path::new("s/Catalogs")));
 /// assert!(files.is_file(Path::new("s/Catalogs/Vehicles/cars.xosc")));
 /// ```
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct MemoryFiles {
     files: BTreeMap<PathBuf, Vec<u8>>,
+    dirs: BTreeSet<PathBuf>,
 }
 
 impl MemoryFiles {
@@ -80,6 +83,12 @@ impl MemoryFiles {
     /// Adds (or replaces) the file at `path`.
     pub fn insert(&mut self, path: impl Into<PathBuf>, contents: impl Into<Vec<u8>>) -> &mut Self {
         self.files.insert(path.into(), contents.into());
+        self
+    }
+
+    /// Adds the directory `path`, which then exists even with no file under it.
+    pub fn insert_dir(&mut self, path: impl Into<PathBuf>) -> &mut Self {
+        self.dirs.insert(path.into());
         self
     }
 
@@ -114,9 +123,11 @@ impl FileProvider for MemoryFiles {
     }
 
     fn is_dir(&self, path: &Path) -> bool {
-        self.files
-            .keys()
-            .any(|f| f.starts_with(path) && f.as_path() != path)
+        self.dirs.contains(path)
+            || self
+                .files
+                .keys()
+                .any(|f| f.starts_with(path) && f.as_path() != path)
     }
 
     fn list_dir(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
@@ -135,6 +146,110 @@ impl FileProvider for MemoryFiles {
             }
         }
         Ok(out)
+    }
+}
+
+/// The files a scenario was loaded from, kept in memory with the parameter overrides it was
+/// loaded with, so that [`Scenario::with_parameters`](crate::Scenario::with_parameters) loads
+/// it again with other values without reading a file. Shared (an `Arc`) by every scenario
+/// derived from the same load.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Sources {
+    /// The path the scenario (or its ParameterValueDistribution) was opened at.
+    pub(crate) opened: PathBuf,
+    pub(crate) files: std::sync::Arc<MemoryFiles>,
+    pub(crate) overrides: Vec<(String, String)>,
+}
+
+impl Sources {
+    /// The files as the loader read them: the scenario, its catalog files (and, for a
+    /// ParameterValueDistribution, the scenario it names); the road network only as an
+    /// (empty) entry that exists, since the scenario loader does not read it.
+    pub fn files(&self) -> &MemoryFiles {
+        &self.files
+    }
+
+    /// The global parameter overrides the scenario was loaded with, in order.
+    pub fn overrides(&self) -> &[(String, String)] {
+        &self.overrides
+    }
+
+    /// The overrides of this load with `more` applied on top (a name given again takes the
+    /// new value).
+    pub(crate) fn merged(&self, more: &[(String, String)]) -> Vec<(String, String)> {
+        let mut out = self.overrides.clone();
+        for (name, value) in more {
+            match out.iter_mut().find(|(n, _)| n == name) {
+                Some(slot) => slot.1.clone_from(value),
+                None => out.push((name.clone(), value.clone())),
+            }
+        }
+        out
+    }
+}
+
+/// A provider that answers from `inner` and keeps what it answered: the bytes of every file
+/// read, the files and directories found to exist. [`Recording::into_memory`] then gives a
+/// [`MemoryFiles`] that answers the loader's questions as `inner` did, so that the same
+/// scenario loads again without `inner` (OpenSCENARIO 1.3 §9.1: other parameter values,
+/// [`Scenario::with_parameters`](crate::Scenario::with_parameters)).
+pub(crate) struct Recording<'a> {
+    inner: &'a dyn FileProvider,
+    kept: RefCell<MemoryFiles>,
+}
+
+impl<'a> Recording<'a> {
+    pub(crate) fn new(inner: &'a dyn FileProvider) -> Self {
+        Recording {
+            inner,
+            kept: RefCell::new(MemoryFiles::new()),
+        }
+    }
+
+    /// Keeps `text` as the file at `path` (a scenario given as text).
+    pub(crate) fn keep(&self, path: &Path, text: &str) {
+        self.kept.borrow_mut().insert(path, text.as_bytes());
+    }
+
+    pub(crate) fn into_memory(self) -> MemoryFiles {
+        self.kept.into_inner()
+    }
+}
+
+impl FileProvider for Recording<'_> {
+    fn size(&self, path: &Path) -> io::Result<u64> {
+        self.inner.size(path)
+    }
+
+    fn read(&self, path: &Path) -> io::Result<Vec<u8>> {
+        let bytes = self.inner.read(path)?;
+        self.kept.borrow_mut().insert(path, bytes.clone());
+        Ok(bytes)
+    }
+
+    fn is_file(&self, path: &Path) -> bool {
+        let found = self.inner.is_file(path);
+        let mut kept = self.kept.borrow_mut();
+        // A file only checked to exist (the road network) is kept empty; one read later
+        // replaces it with its bytes.
+        if found && kept.get(path).is_none() {
+            kept.insert(path, Vec::new());
+        }
+        found
+    }
+
+    fn is_dir(&self, path: &Path) -> bool {
+        let found = self.inner.is_dir(path);
+        if found {
+            self.kept.borrow_mut().insert_dir(path);
+        }
+        found
+    }
+
+    fn list_dir(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
+        let entries = self.inner.list_dir(dir)?;
+        self.kept.borrow_mut().insert_dir(dir);
+        Ok(entries)
     }
 }
 

@@ -111,7 +111,9 @@ pub fn run_scenario(
         seed,
         ..EngineConfig::default()
     };
-    let mut engine = Engine::build(scenario, config).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let network = engine::load::road_network(scenario).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let mut engine =
+        Engine::new(scenario, network, config).unwrap_or_else(|e| panic!("{name}: {e}"));
     let mut frames = Frames(Vec::new());
     let mut events = Events(Vec::new());
     loop {

@@ -28,7 +28,7 @@
 
 use std::collections::BTreeMap;
 
-use scenario::{AnimationAction, AnimationType, AppearanceAction, LightKind, LightState};
+use scenario::{AnimationAction, AnimationType, AppearanceAction, LightKind};
 
 use crate::output::EventRecord;
 use crate::runtime::entity::EntityId;
@@ -69,15 +69,9 @@ pub(crate) struct Appearances {
 }
 
 impl World {
-    /// The state LightStateAction last gave light `light` of entity `id` (a VehicleLight
-    /// type as written in the XSD, e.g. `lowBeam`, or a user-defined light's type).
-    pub fn light_state(&self, id: EntityId, light: &str) -> Option<&LightState> {
-        self.entity(id).lights.get(light)
-    }
-
     /// The AnimationAction last applied to animation `name` of entity `id` (the component,
     /// pedestrian motion, file path or user-defined type, as in the event log).
-    pub fn animation(&self, id: EntityId, name: &str) -> Option<&AnimationAction> {
+    pub(crate) fn animation(&self, id: EntityId, name: &str) -> Option<&AnimationAction> {
         self.appearance.animations.get(&(id, name.to_owned()))
     }
 }

@@ -10,30 +10,27 @@ use scenario::{Environment, RoadCondition, TimeOfDay, Weather};
 use crate::runtime::world::World;
 
 /// The environment in force and when its time of day was set.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct EnvironmentState {
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct EnvironmentState {
     time_of_day: Option<(TimeOfDay, f64)>,
     weather: Option<Weather>,
     road_condition: Option<RoadCondition>,
 }
 
-impl World {
+impl EnvironmentState {
     /// The TimeOfDay in force and the simulation time (s) it was set at.
     pub fn time_of_day_setting(&self) -> Option<(&TimeOfDay, f64)> {
-        self.environment
-            .time_of_day
-            .as_ref()
-            .map(|(t, at)| (t, *at))
+        self.time_of_day.as_ref().map(|(t, at)| (t, *at))
     }
 
     /// The Weather in force.
     pub fn weather(&self) -> Option<&Weather> {
-        self.environment.weather.as_ref()
+        self.weather.as_ref()
     }
 
     /// The RoadCondition in force.
     pub fn road_condition(&self) -> Option<&RoadCondition> {
-        self.environment.road_condition.as_ref()
+        self.road_condition.as_ref()
     }
 }
 

@@ -63,11 +63,6 @@ impl RouteFollow {
         }
     }
 
-    /// The planned route.
-    pub fn plan(&self) -> &PlannedRoute {
-        &self.plan
-    }
-
     /// The stretch the entity drives now (or reaches next on its road); `None` once an open
     /// route has been driven to its end.
     pub fn current(&self) -> Option<&RouteSegment> {

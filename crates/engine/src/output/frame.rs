@@ -14,7 +14,8 @@ use opendrive::{Pose, Real, RoadPosition};
 use scenario::{LightState, VehicleCategory};
 
 use crate::domain::{BoundingBox, Color, Vector3};
-use crate::runtime::{Entity, EntityKind, Visibility};
+use crate::runtime::{ControllerOverrides, Entity, EntityId, EntityKind, Visibility};
+use crate::snapshot::EntityState;
 
 /// The state of every entity at one simulation time.
 #[derive(Debug, Clone, Copy)]
@@ -60,6 +61,8 @@ pub struct EntityFrame<'a> {
     pub yaw_rate: Real,
     /// Signed speed (m/s).
     pub speed: Real,
+    /// Distance travelled since the start (m).
+    pub odometer: Real,
     /// Road and lane position, if on a road.
     pub road_position: Option<&'a RoadPosition>,
     /// Vehicle category (vehicles only).
@@ -77,6 +80,8 @@ pub struct EntityFrame<'a> {
     /// Id of the trailer this vehicle tows (OSI `vehicle_classification.trailer_id`); the
     /// trailer's name is `frame.entities[id].name`.
     pub trailer: Option<u32>,
+    /// Driver inputs overridden by OverrideControllerValueAction (OpenSCENARIO 1.3 §7.7.2.5).
+    pub overrides: &'a ControllerOverrides,
 }
 
 impl<'a> EntityFrame<'a> {
@@ -94,6 +99,7 @@ impl<'a> EntityFrame<'a> {
             acceleration: to_world(e.acceleration.translational),
             yaw_rate: e.velocity.rotational.z,
             speed: e.speed,
+            odometer: e.odometer,
             road_position: e.road_position.as_ref(),
             vehicle_category: e.vehicle_category,
             color: e.color,
@@ -101,6 +107,31 @@ impl<'a> EntityFrame<'a> {
             visibility: e.visibility,
             lights: &e.lights,
             trailer: e.trailer.map(|t| t.0),
+            overrides: &e.overrides,
+        }
+    }
+
+    /// The same state as owned values, e.g. to keep it past the step.
+    pub fn to_state(&self) -> EntityState {
+        EntityState {
+            id: EntityId(self.id),
+            name: self.name.to_owned(),
+            kind: self.kind,
+            pose: self.pose,
+            bounding_box: self.bounding_box,
+            velocity: self.velocity,
+            acceleration: self.acceleration,
+            yaw_rate: self.yaw_rate,
+            speed: self.speed,
+            odometer: self.odometer,
+            road_position: self.road_position.cloned(),
+            vehicle_category: self.vehicle_category,
+            color: self.color,
+            model3d: self.model3d.map(str::to_owned),
+            visibility: self.visibility,
+            lights: self.lights.clone(),
+            trailer: self.trailer.map(EntityId),
+            overrides: self.overrides.clone(),
         }
     }
 }

@@ -1,5 +1,5 @@
-//! Building a runnable engine from the loaded scenario (OpenSCENARIO 1.3 §7.1–7.3 and §8.5):
-//! the road network, one [`Entity`] per ScenarioObject, parameter and variable values, and the
+//! Building a runnable engine from the loaded scenario and its road network (OpenSCENARIO 1.3
+//! §7.1–7.3 and §8.5): one [`Entity`] per ScenarioObject, parameter and variable values, and the
 //! storyboard description with a table entry per action and per condition.
 //!
 //! Names in the event log: storyboard elements keep their names; Init actions, which have none
@@ -7,6 +7,7 @@
 //! `Init ACTIONTYPE`.
 
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 use opendrive::RoadNetwork;
 use scenario::{
@@ -14,7 +15,7 @@ use scenario::{
 };
 
 use super::entity::{Entity, EntityId, EntityKind};
-use super::error::{RuntimeError, RuntimeErrorKind};
+use super::error::RuntimeError;
 use super::world::World;
 use crate::actions::ActionTable;
 use crate::domain::{BoundingBox, Color, Position3d};
@@ -22,9 +23,6 @@ use crate::storyboard::{
     ActDesc, ActionDesc, ConditionDesc, ConditionEdge, ConditionGroupDesc, ConditionId, EventDesc,
     ManeuverDesc, ManeuverGroupDesc, Priority, StoryDesc, StoryboardDesc, TriggerDesc,
 };
-
-/// An empty road network, for scenarios that name none.
-const EMPTY_NETWORK: &str = r#"<OpenDRIVE><header revMajor="1" revMinor="6"/></OpenDRIVE>"#;
 
 /// What [`build`] produces.
 pub(crate) struct Built {
@@ -34,21 +32,8 @@ pub(crate) struct Built {
     pub conditions: Vec<scenario::Condition>,
 }
 
-/// Loads the road network named by the scenario.
-pub(crate) fn road_network(scenario: &Scenario) -> Result<RoadNetwork, RuntimeError> {
-    let loaded = match &scenario.road_network.logic_file {
-        Some(path) => RoadNetwork::from_file(path),
-        None => RoadNetwork::from_str(EMPTY_NETWORK, &scenario.path),
-    };
-    loaded.map_err(|e| {
-        RuntimeError::new(RuntimeErrorKind::RoadNetwork {
-            message: e.to_string(),
-        })
-    })
-}
-
 /// Builds world, storyboard description and tables from `scenario` on `network`.
-pub(crate) fn build(scenario: &Scenario, network: RoadNetwork) -> Result<Built, RuntimeError> {
+pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Built, RuntimeError> {
     let mut entities = scenario
         .entities
         .scenario_objects

@@ -74,7 +74,7 @@ impl Default for Visibility {
 /// Where the default controller keeps an entity: the lane it follows and its offset from that
 /// lane's centre, and the direction of travel along s.
 #[derive(Debug, Clone, PartialEq)]
-pub struct LaneTrack {
+pub(crate) struct LaneTrack {
     /// Road id.
     pub road_id: String,
     /// Lane id followed.
@@ -96,7 +96,7 @@ pub struct LaneTrack {
 /// A lateral transition from one (lane, offset) to the track's own: the lateral position is
 /// t = (1 − w)·(centre(from_lane) + from_offset) + w·(centre(lane_id) + offset).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Blend {
+pub(crate) struct Blend {
     /// The lane left.
     pub from_lane: i32,
     /// Offset from its centre at the start (m).
@@ -107,7 +107,10 @@ pub struct Blend {
     pub weight_per_m: Real,
 }
 
-/// One entity: static description and the state of the current step.
+/// One entity: static description and the state of the current step. What the default
+/// controller keeps between steps (the lane it follows, the route it drives, the actions that
+/// hold each control domain) is crate-private; library users read entities as
+/// [`EntityState`](crate::EntityState) values or in frames.
 #[derive(Debug, Clone)]
 pub struct Entity {
     /// Handle.
@@ -140,7 +143,7 @@ pub struct Entity {
     pub road_position: Option<RoadPosition>,
     /// The lane the default controller follows; `None` moves the entity straight along its
     /// heading.
-    pub track: Option<LaneTrack>,
+    pub(crate) track: Option<LaneTrack>,
     /// Signed longitudinal speed (m/s).
     pub speed: Real,
     /// Velocity in the entity's axes (x forward, y left, z up).
@@ -157,24 +160,24 @@ pub struct Entity {
     pub route: Option<Route>,
     /// The planned route the default controller follows, with the entity's progress along it
     /// (AssignRouteAction, AcquirePositionAction; controller/route.rs).
-    pub route_follow: Option<crate::controller::RouteFollow>,
+    pub(crate) route_follow: Option<crate::controller::RouteFollow>,
     /// The action controlling the longitudinal domain, if any (§7.5.1 control domains).
-    pub longitudinal_action: Option<ActionId>,
+    pub(crate) longitudinal_action: Option<ActionId>,
     /// The action controlling the lateral domain, if any.
-    pub lateral_action: Option<ActionId>,
+    pub(crate) lateral_action: Option<ActionId>,
     /// The last step could not move the entity: its lane ends with no successor.
-    pub at_lane_end: bool,
+    pub(crate) at_lane_end: bool,
     /// The running lateral action comes before the running longitudinal one in the storyboard
     /// (or there is none): the lateral motion of this step uses the speed of the step's start.
-    pub lateral_first: bool,
+    pub(crate) lateral_first: bool,
     /// Speed at the start of the step, before stage 2 (m/s).
-    pub start_speed: Real,
+    pub(crate) start_speed: Real,
     /// The pose was set by an action for this step (FollowTrajectoryAction): the controller
     /// takes measurements without moving the entity.
-    pub held: bool,
+    pub(crate) held: bool,
     /// Lateral speed of the running lateral transition as a share of the speed (m of lateral
     /// motion per m travelled), at the end of the last step.
-    pub lateral_slope: Real,
+    pub(crate) lateral_slope: Real,
     /// The trailer this vehicle tows now (§7.2.2.6; runtime/trailer.rs keeps it).
     pub trailer: Option<EntityId>,
     /// Driver inputs overridden by OverrideControllerValueAction (§7.7.2.5), recorded only.

@@ -56,12 +56,6 @@ pub enum RuntimeErrorKind {
         /// The scenario file.
         file: String,
     },
-    /// The road network failed to load.
-    #[error("cannot load the road network: {message}")]
-    RoadNetwork {
-        /// The road crate's message (it names the file and row:col).
-        message: String,
-    },
     /// A value or reference in the scenario that the runtime cannot use.
     #[error("expected {expected}, found {found} at {pos}")]
     Invalid {

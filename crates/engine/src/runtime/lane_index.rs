@@ -427,7 +427,7 @@ mod tests {
     fn world(cars: &[(&str, Real, Real, Real)]) -> World {
         let net = network();
         let entities = (0..cars.len() as u32).map(car).collect();
-        let mut w = World::new(net, entities);
+        let mut w = World::new(std::sync::Arc::new(net), entities);
         for (i, &(road, s, t, h)) in cars.iter().enumerate() {
             let mut pose = w.network.road_pose(road, s, t).expect("on road");
             pose.h += h;

@@ -39,11 +39,10 @@ pub(crate) mod world;
 
 pub use crate::actions::ControllerOverrides;
 pub use config::{EngineConfig, TrafficModel, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
-pub use entity::{Blend, Entity, EntityId, EntityKind, LaneTrack, Visibility};
+pub use entity::{Entity, EntityId, EntityKind, Visibility};
 pub use error::{RuntimeError, RuntimeErrorKind};
 pub use shapes::{shape_value, Span};
-pub use step::{Engine, LoadError, StageCounters, StopReason};
-pub use world::{ConditionWorld, World};
+pub use step::{Engine, StageCounters, StopReason};
 
 // For the controllers stage (engine module `controller`).
-pub(crate) use world::place_on_lane;
+pub(crate) use world::{place_on_lane, World};

@@ -2,12 +2,13 @@
 //! semantics-pitfalls #6 for the order of work).
 
 use std::cell::{Ref, RefCell};
-use std::path::Path;
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
+use opendrive::RoadNetwork;
 use scenario::Scenario;
 
-use super::build::{build, road_network};
+use super::build::build;
 use super::conditions::Conditions;
 use super::config::EngineConfig;
 use super::error::{RuntimeError, RuntimeErrorKind};
@@ -88,20 +89,16 @@ impl TransitionSink for Transitions<'_> {
 }
 
 impl Engine {
-    /// Loads `path` (with `--param` overrides) and its road network and builds the engine.
-    pub fn load(
-        path: &Path,
-        params: &[(String, String)],
+    /// Builds an engine for `scenario` on `network`, the road network its
+    /// `RoadNetwork/LogicFile` names ([`load::road_network`](crate::load::road_network)). The
+    /// network is shared, not copied: every engine of a batch can run on one `Arc`. Reads no
+    /// file.
+    pub fn new(
+        scenario: &Scenario,
+        network: Arc<RoadNetwork>,
         config: EngineConfig,
-    ) -> Result<Engine, LoadError> {
-        let scenario = Scenario::load_with_parameters(path, params).map_err(LoadError::Scenario)?;
-        Engine::build(&scenario, config).map_err(LoadError::Runtime)
-    }
-
-    /// Builds an engine for `scenario`, loading the road network it names.
-    pub fn build(scenario: &Scenario, config: EngineConfig) -> Result<Engine, RuntimeError> {
+    ) -> Result<Engine, RuntimeError> {
         config.validate()?;
-        let network = road_network(scenario)?;
         let mut built = build(scenario, network)?;
         built.world.traffic.seed = config.seed;
         built.world.traffic.model = config.traffic_model;
@@ -128,7 +125,7 @@ impl Engine {
     }
 
     /// The world (entities, road network, values) as it is now.
-    pub fn world(&self) -> Ref<'_, World> {
+    pub(crate) fn world(&self) -> Ref<'_, World> {
         self.world.borrow()
     }
 
@@ -214,7 +211,8 @@ impl Engine {
                 found: format!("no entity named '{name}'"),
             })
         })?;
-        let pos = scenario::SourcePos::start_of(std::sync::Arc::from(Path::new("<host>")));
+        let pos =
+            scenario::SourcePos::start_of(std::sync::Arc::from(std::path::Path::new("<host>")));
         let controller = scenario::Controller {
             name: "external".to_owned(),
             controller_type: None,
@@ -545,15 +543,4 @@ impl crate::storyboard::ActionHost for HostCell<'_> {
     fn init_complete(&mut self) {
         self.story = true;
     }
-}
-
-/// Why loading failed: the scenario (with its file position) or building the engine.
-#[derive(Debug, thiserror::Error)]
-pub enum LoadError {
-    /// The scenario did not load.
-    #[error(transparent)]
-    Scenario(scenario::Error),
-    /// The engine could not be built.
-    #[error(transparent)]
-    Runtime(RuntimeError),
 }

@@ -185,24 +185,6 @@ impl Trailers {
     }
 }
 
-impl World {
-    /// The trailer entity `tow` pulls now, if any (§7.2.2.6).
-    pub fn trailer_of(&self, tow: EntityId) -> Option<EntityId> {
-        self.trailers.trailer_of(tow)
-    }
-
-    /// The entity pulling `trailer` now, if any.
-    pub fn tow_of(&self, trailer: EntityId) -> Option<EntityId> {
-        self.trailers.tow_of(trailer)
-    }
-
-    /// TrailerHitch and TrailerCoupler dx of vehicle `id` (m), where defined.
-    pub fn trailer_joints(&self, id: EntityId) -> (Option<Real>, Option<Real>) {
-        let j = self.trailers.joints.get(&id).copied().unwrap_or_default();
-        (j.hitch, j.coupler)
-    }
-}
-
 /// The world position of a point `dx` ahead of the reference point of a vehicle at `pose`.
 pub fn mount_point(pose: &Pose, dx: Real) -> (Real, Real) {
     (pose.x + dx * pose.h.cos(), pose.y + dx * pose.h.sin())

@@ -4,6 +4,7 @@
 //! [`EntityQuery`] and [`ConditionContext`].
 
 use std::collections::{BTreeMap, HashMap};
+use std::sync::Arc;
 
 use opendrive::{normalize_angle, Direction, Pose, Real, RoadNetwork, RoadPosition};
 use scenario::expr::Value;
@@ -23,7 +24,7 @@ const ON_ROAD_TOLERANCE: Real = 0.5;
 #[derive(Debug)]
 pub struct World {
     /// The road network.
-    pub network: RoadNetwork,
+    pub network: Arc<RoadNetwork>,
     pub(crate) entities: Vec<Entity>,
     names: HashMap<String, EntityId>,
     /// Simulation time of the current step (s).
@@ -52,7 +53,7 @@ pub struct World {
 
 impl World {
     /// A world on `network` with `entities` (ids must be their indices).
-    pub(crate) fn new(network: RoadNetwork, entities: Vec<Entity>) -> Self {
+    pub(crate) fn new(network: Arc<RoadNetwork>, entities: Vec<Entity>) -> Self {
         let names = entities
             .iter()
             .map(|e| (e.name.clone(), e.id))
@@ -286,7 +287,7 @@ impl ConditionContext for ConditionWorld<'_> {
     /// The time of day of the EnvironmentAction in force (seconds since the epoch): its
     /// dateTime, plus the simulation time since it was set when its `animation` is true.
     fn time_of_day(&self) -> Option<f64> {
-        let (time_of_day, set_at) = self.world.time_of_day_setting()?;
+        let (time_of_day, set_at) = self.world.environment.time_of_day_setting()?;
         let start = crate::condition::parse_date_time(&time_of_day.date_time)?;
         let elapsed = if time_of_day.animation {
             self.world.time - set_at

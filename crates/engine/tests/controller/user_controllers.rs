@@ -389,10 +389,9 @@ fn external_controller_follows_the_host() {
     engine.attach_external("Ego").expect("attached");
     engine.step(&mut (), &mut ()).expect("init step");
     let s0 = engine
-        .world()
-        .entity(engine.world().id("Ego").expect("Ego"))
+        .entity("Ego")
+        .expect("Ego")
         .road_position
-        .clone()
         .expect("on road")
         .s;
     engine
@@ -408,9 +407,8 @@ fn external_controller_follows_the_host() {
         engine.step(&mut (), &mut ()).expect("steps");
     }
     let (s, v, pose) = {
-        let w = engine.world();
-        let e = w.entity(w.id("Ego").expect("Ego"));
-        (e.road_position.clone().expect("on road").s, e.speed, e.pose)
+        let e = engine.entity("Ego").expect("Ego");
+        (e.road_position.expect("on road").s, e.speed, e.pose)
     };
     assert!((v - 2.0).abs() < 1e-9, "{v}");
     assert!((s - s0 - 1.0).abs() < 1e-9, "{s} from {s0}");
@@ -420,8 +418,7 @@ fn external_controller_follows_the_host() {
         .set_external_input("Ego", ExternalInput::Pose(target))
         .expect("accepted");
     engine.step(&mut (), &mut ()).expect("steps");
-    let w = engine.world();
-    let e = w.entity(w.id("Ego").expect("Ego"));
+    let e = engine.entity("Ego").expect("Ego");
     assert!((e.pose.x - target.x).abs() < 1e-12);
     // 0.5 m in one 0.05 s step along the heading (the road runs along +x): 10 m/s.
     assert!((e.speed - 10.0).abs() < 1e-9, "{}", e.speed);

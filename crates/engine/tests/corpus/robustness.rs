@@ -206,7 +206,11 @@ fn run_case(name: &str, text: &str, params: &[(String, String)], dt: f64) -> Out
         max_time: MAX_STEPS * dt,
         ..EngineConfig::default()
     };
-    let mut engine = match Engine::build(&scenario, config) {
+    let network = match engine::load::road_network(&scenario) {
+        Ok(n) => n,
+        Err(e) => return Outcome::Refused(e.to_string()),
+    };
+    let mut engine = match Engine::new(&scenario, network, config) {
         Ok(e) => e,
         Err(e) => return Outcome::Refused(e.to_string()),
     };

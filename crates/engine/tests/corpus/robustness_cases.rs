@@ -341,10 +341,7 @@ fn parameter_or_variable_modified_beyond_the_largest_double_is_refused() {
         Engine::load(&case("parameter_overflow"), &[], EngineConfig::default()).expect("loads");
     let _ = engine.run(&mut Recorder::default(), &mut Vec::new());
     assert_eq!(
-        engine
-            .world()
-            .parameter_value("Big")
-            .and_then(|v| v.as_f64()),
+        engine.parameter("Big").and_then(|v| v.as_f64()),
         Some(1e308)
     );
 }

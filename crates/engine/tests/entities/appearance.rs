@@ -42,20 +42,18 @@ fn light_state_action_is_kept_and_logged() {
     let path = corpus("esmini/xosc/light_state.xosc");
     let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
     let mut events = Vec::new();
-    let car1 = engine.world().id("Car1").expect("declared");
+    let light = |engine: &Engine| {
+        let car1 = engine.entity("Car1").expect("in the scene");
+        car1.lights.get("indicatorLeft").cloned().expect("set")
+    };
     let on = step_until(&mut engine, &mut events, "light indicatorLeft flashing");
     assert_eq!(on.1, "actionBlinkingLeft");
-    {
-        let world = engine.world();
-        let state = world.light_state(car1, "indicatorLeft").expect("set");
-        assert_eq!(state.mode, LightMode::Flashing);
-        assert_eq!(state.luminous_intensity, Some(500.0));
-    }
+    let state = light(&engine);
+    assert_eq!(state.mode, LightMode::Flashing);
+    assert_eq!(state.luminous_intensity, Some(500.0));
     let off = step_until(&mut engine, &mut events, "light indicatorLeft off");
     assert!(off.1 == "actionStopBlinkingLeft" && off.0 > on.0, "{off:?}");
-    let world = engine.world();
-    let state = world.light_state(car1, "indicatorLeft").expect("set");
-    assert_eq!(state.mode, LightMode::Off);
+    assert_eq!(light(&engine).mode, LightMode::Off);
 }
 
 /// Runs the scenario at `path` to its end; returns its event log.
@@ -171,12 +169,14 @@ fn environment_action_sets_the_time_of_day() {
             _ => None,
         })
     };
-    assert!(engine.world().time_of_day_setting().is_none());
+    assert!(engine.environment().time_of_day_setting().is_none());
     while start_of(&events, "morningTimeEvent").is_none() {
         let night = start_of(&events, "nightTimeEvent");
         if let Some(at) = night {
-            let world = engine.world();
-            let (tod, set_at) = world.time_of_day_setting().expect("set by the night event");
+            let environment = engine.environment();
+            let (tod, set_at) = environment
+                .time_of_day_setting()
+                .expect("set by the night event");
             assert_eq!(tod.date_time, "2025-06-13T00:00:00.000+00:00");
             assert!(tod.animation && (set_at - at).abs() < 1e-9);
         }
@@ -184,8 +184,8 @@ fn environment_action_sets_the_time_of_day() {
         assert!(stopped.is_none(), "morningTimeEvent never started");
     }
     let at = start_of(&events, "morningTimeEvent").expect("started");
-    let world = engine.world();
-    let (tod, set_at) = world.time_of_day_setting().expect("set");
+    let environment = engine.environment();
+    let (tod, set_at) = environment.time_of_day_setting().expect("set");
     assert_eq!(tod.date_time, "2025-06-13T06:00:00.000+00:00");
     assert!((set_at - at).abs() < 1e-9);
 }

@@ -225,9 +225,8 @@ fn traffic_area_action_fills_its_road_range_once() {
         assert!((first.time - 0.05 * n as f64).abs() < 1e-9, "{first:?}");
         assert!((100.0..=300.0).contains(&first.x), "{first:?}");
         assert_eq!(first.road.as_ref().map(|r| r.1), Some(-1));
-        let world = engine.world();
-        let id = world.id(&name).expect("in the store");
-        assert!((world.entity(id).bounding_box.length() - 5.5).abs() < 1e-12);
+        let spawned = engine.entity(&name).expect("in the scene");
+        assert!((spawned.bounding_box.length() - 5.5).abs() < 1e-12);
     }
     assert!(rows(&frames, "area.entity_6").next().is_none());
 }

@@ -31,12 +31,11 @@ fn mount(x: f64, y: f64, h: f64, dx: f64) -> (f64, f64) {
 fn three_unit_chain_keeps_couplers_on_hitches_through_a_90_degree_curve() {
     const TOLERANCE: f64 = 1e-3;
     let mut engine = load(&file("trailer_chain.xosc"));
-    let world = engine.world();
-    let ids = ["Truck", "Trailer1", "Trailer2"].map(|n| world.id(n).expect("declared"));
-    assert_eq!(world.trailer_of(ids[0]), Some(ids[1]));
-    assert_eq!(world.trailer_of(ids[1]), Some(ids[2]));
-    assert_eq!(world.tow_of(ids[2]), Some(ids[1]));
-    drop(world);
+    engine.step(&mut (), &mut Vec::new()).expect("runs");
+    let units = ["Truck", "Trailer1", "Trailer2"].map(|n| engine.entity(n).expect("placed"));
+    assert_eq!(units[0].trailer, Some(units[1].id));
+    assert_eq!(units[1].trailer, Some(units[2].id));
+    assert_eq!(units[2].trailer, None);
     let pairs = [(0, -1.0, 1, 6.0), (1, -2.0, 2, 5.0)];
     let mut steps = 0;
     let mut worst: f64 = 0.0;
@@ -46,14 +45,14 @@ fn three_unit_chain_keeps_couplers_on_hitches_through_a_90_degree_curve() {
         .expect("runs")
         .is_none()
     {
-        let world = engine.world();
+        let pose = |i: usize| engine.entity(&units[i].name).expect("placed").pose;
         for (tow, hitch_dx, trailer, coupler_dx) in pairs {
-            let (t, r) = (world.entity(ids[tow]).pose, world.entity(ids[trailer]).pose);
+            let (t, r) = (pose(tow), pose(trailer));
             let h = mount(t.x, t.y, t.h, hitch_dx);
             let c = mount(r.x, r.y, r.h, coupler_dx);
             worst = worst.max((h.0 - c.0).hypot(h.1 - c.1));
         }
-        heading_change = heading_change.max(world.entity(ids[2]).pose.h);
+        heading_change = heading_change.max(pose(2).h);
         steps += 1;
     }
     assert!(steps >= 290, "ran {steps} steps");
@@ -77,26 +76,26 @@ fn trailers_settle_on_the_one_axle_steady_state_radii() {
     let expected = [r0, (r0 * r0 - 35.0).sqrt(), (r0 * r0 - 56.0).sqrt()];
     assert!((expected[1] - 41.3287).abs() < 1e-4 && (expected[2] - 41.0739).abs() < 1e-4);
     let mut engine = load(&file("trailer_chain.xosc"));
-    let ids = ["Truck", "Trailer1", "Trailer2"].map(|n| engine.world().id(n).expect("declared"));
+    let names = ["Truck", "Trailer1", "Trailer2"];
     let mut checked = 0;
     while engine
         .step(&mut (), &mut Vec::new())
         .expect("runs")
         .is_none()
     {
-        let world = engine.world();
-        let s = world
-            .entity(ids[0])
-            .road_position
-            .as_ref()
-            .map_or(0.0, |r| r.s);
+        let units = names.map(|n| engine.entity(n).expect("placed"));
+        let s = units[0].road_position.as_ref().map_or(0.0, |r| r.s);
         if !(100.0..=112.8).contains(&s) {
             continue;
         }
-        for (id, want) in ids.iter().zip(expected) {
-            let p = world.entity(*id).pose;
+        for (unit, want) in units.iter().zip(expected) {
+            let p = unit.pose;
             let r = (p.x - 50.0).hypot(p.y - 40.0);
-            assert!((r - want).abs() < TOLERANCE, "{id:?}: r = {r}, want {want}");
+            assert!(
+                (r - want).abs() < TOLERANCE,
+                "{}: r = {r}, want {want}",
+                unit.name
+            );
         }
         checked += 1;
     }

@@ -12,9 +12,8 @@ use scenario::expr::Value;
 #[test]
 fn parameter_modify_and_variable_set_change_values() {
     let (engine, _, _) = run("global_actions.xosc");
-    let world = engine.world();
-    assert_eq!(world.parameter_value("Gap"), Some(&Value::Double(15.0)));
-    assert_eq!(world.variable_value("Count"), Some(&Value::Int(7)));
+    assert_eq!(engine.parameter("Gap"), Some(Value::Double(15.0)));
+    assert_eq!(engine.variable("Count"), Some(Value::Int(7)));
 }
 
 /// The CustomCommandAction is recorded with its type and content, and its JSON line escapes

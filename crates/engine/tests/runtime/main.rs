@@ -12,6 +12,7 @@ mod runtime_support;
 
 mod action_order;
 mod actions;
+mod batch_variants;
 mod clothoid_spline_start;
 mod controller;
 mod distance;

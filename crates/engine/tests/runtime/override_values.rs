@@ -61,13 +61,7 @@ fn overrides_are_recorded_per_input_and_logged() {
     }
     // The state after the run: the second action released brake and parking brake and left
     // the other inputs as the first set them.
-    let world = engine.world();
-    let ego = world
-        .entities()
-        .iter()
-        .find(|e| e.name == "Ego")
-        .map(|e| e.overrides.clone())
-        .unwrap_or_default();
+    let ego = engine.entity("Ego").expect("in the scene").overrides;
     let brake = ego.brake.map(|b| (b.active, b.input));
     assert_eq!(brake, Some((false, BrakeInput::Percent(0.0))));
     assert_eq!(ego.parking_brake.map(|b| b.active), Some(false));

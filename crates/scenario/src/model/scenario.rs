@@ -36,6 +36,8 @@ pub struct Scenario {
     pub parameter_value_distribution: Option<PathBuf>,
     /// Deprecated forms and features newer than the declared version, in document order.
     pub warnings: Vec<Warning>,
+    /// The files it was loaded from, kept for [`Scenario::with_parameters`].
+    pub sources: crate::Sources,
 }
 
 /// The road network (XSD `RoadNetwork`).

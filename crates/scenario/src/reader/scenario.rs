@@ -166,6 +166,7 @@ fn load_source(
         storyboard,
         parameter_value_distribution: None,
         warnings: ctx.take_warnings(),
+        sources: crate::Sources::default(),
     })
 }
 

@@ -11,3 +11,4 @@ mod every_type;
 mod memory_files;
 mod model;
 mod robustness;
+mod with_parameters;

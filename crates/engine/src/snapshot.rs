@@ -1,0 +1,110 @@
+//! The state of a running scenario as plain values, for library users (bindings, batch runs,
+//! tools): each entity in the scene (OpenSCENARIO 1.3 §7.2.2 "Entities"; poses in the world
+//! frame of §6.3), the parameter and variable values (§9.1, §7.7.1), the environment in force.
+//! Owned copies: they stay valid while the engine steps on, and reading them never exposes the
+//! engine's internal state.
+
+use std::collections::BTreeMap;
+use std::sync::Arc;
+
+use opendrive::{Pose, Real, RoadNetwork, RoadPosition};
+use scenario::expr::Value;
+use scenario::{AnimationAction, LightState, VehicleCategory};
+
+use crate::domain::{BoundingBox, Color, Vector3};
+use crate::output::EntityFrame;
+use crate::runtime::{ControllerOverrides, Engine, EntityId, EntityKind, Visibility};
+
+pub use crate::actions::EnvironmentState;
+
+/// One entity in the scene at one moment: what a frame carries, owned.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EntityState {
+    /// Handle: index in declaration order (spawned entities after), stable through the run.
+    pub id: EntityId,
+    /// `ScenarioObject/@name` (spawned traffic: the name the traffic action gave).
+    pub name: String,
+    /// Vehicle, pedestrian, misc object or external object.
+    pub kind: EntityKind,
+    /// Pose of the reference point in the world frame (a vehicle's rear-axle centre, on the
+    /// ground).
+    pub pose: Pose,
+    /// Bounding box, centre relative to the reference point.
+    pub bounding_box: BoundingBox,
+    /// Velocity of the reference point in world axes (m/s).
+    pub velocity: Vector3,
+    /// Acceleration of the reference point in world axes (m/s²).
+    pub acceleration: Vector3,
+    /// Yaw rate (rad/s).
+    pub yaw_rate: Real,
+    /// Signed longitudinal speed (m/s).
+    pub speed: Real,
+    /// Distance travelled since the start (m).
+    pub odometer: Real,
+    /// Road and lane position of the reference point, if on a road.
+    pub road_position: Option<RoadPosition>,
+    /// Vehicle category (vehicles only).
+    pub vehicle_category: Option<VehicleCategory>,
+    /// Colour, if known.
+    pub color: Option<Color>,
+    /// `model3d`, if given.
+    pub model3d: Option<String>,
+    /// VisibilityAction flags (all true unless an action changed them).
+    pub visibility: Visibility,
+    /// The state LightStateAction last gave each light, by light type; lights no action
+    /// touched are absent.
+    pub lights: BTreeMap<String, LightState>,
+    /// The trailer this vehicle tows now.
+    pub trailer: Option<EntityId>,
+    /// Driver inputs overridden by OverrideControllerValueAction (recorded, not applied).
+    pub overrides: ControllerOverrides,
+}
+
+impl Engine {
+    /// Every entity in the scene (placed by its Init or an AddEntityAction, not deleted), in
+    /// id order.
+    pub fn entities(&self) -> Vec<EntityState> {
+        let world = self.world();
+        world
+            .entities()
+            .iter()
+            .filter(|e| e.placed)
+            .map(|e| EntityFrame::of(e).to_state())
+            .collect()
+    }
+
+    /// The entity called `name`, if it is in the scene.
+    pub fn entity(&self, name: &str) -> Option<EntityState> {
+        let world = self.world();
+        let e = world.entity(world.id(name)?);
+        e.placed.then(|| EntityFrame::of(e).to_state())
+    }
+
+    /// The current value of global parameter `name` (ParameterSetAction and
+    /// ParameterModifyAction change it during the run).
+    pub fn parameter(&self, name: &str) -> Option<Value> {
+        self.world().parameter_value(name).cloned()
+    }
+
+    /// The current value of variable `name` (OpenSCENARIO 1.2+ VariableDeclaration).
+    pub fn variable(&self, name: &str) -> Option<Value> {
+        self.world().variable_value(name).cloned()
+    }
+
+    /// The AnimationAction last applied to animation `name` of entity `entity` (the
+    /// component, pedestrian motion, file path or user-defined type, as in the event log).
+    pub fn animation(&self, entity: &str, name: &str) -> Option<AnimationAction> {
+        let world = self.world();
+        world.animation(world.id(entity)?, name).cloned()
+    }
+
+    /// The environment in force (EnvironmentAction: time of day, weather, road condition).
+    pub fn environment(&self) -> EnvironmentState {
+        self.world().environment.clone()
+    }
+
+    /// The road network the engine runs on (shared with every engine built on it).
+    pub fn road_network(&self) -> Arc<RoadNetwork> {
+        self.world().network.clone()
+    }
+}
