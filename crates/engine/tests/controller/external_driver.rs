@@ -17,8 +17,7 @@ use engine::{Engine, EngineConfig};
 const EXACT: f64 = 1e-9;
 
 fn ego(engine: &Engine) -> (f64, f64, f64) {
-    let w = engine.world();
-    let e = w.entity(w.id("Ego").expect("Ego is in the scenario"));
+    let e = engine.entity("Ego").expect("Ego is in the scene");
     (e.pose.x, e.speed, e.pose.h)
 }
 
