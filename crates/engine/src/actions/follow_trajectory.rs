@@ -5,7 +5,10 @@
 //! actor keeps its own speed along the trajectory (semantics-pitfalls #7).
 //!
 //! The actor starts at `initialDistanceOffset` along the trajectory (default 0, its start; with
-//! Timing and no offset, where the trajectory's clock says); its position is the trajectory
+//! Timing and no offset, where the trajectory's clock says). The XSD bounds the offset by the
+//! trajectory's arc length; an offset past the end by no more than rounding (1 cm, or 10⁻⁴ of
+//! the length) means the end, since authors write lengths rounded (issue 16 class 8); a
+//! larger or negative one stops the action with an error at its place. its position is the trajectory
 //! point's, its heading the tangent's, or the vertex headings' of a six-dimensional Polyline
 //! (§6.9). The action ends at the end of an open trajectory, or at the last time of a timed
 //! one; the actor then drives on under the default controller from where it stands, at the
@@ -200,12 +203,15 @@ pub(crate) fn start(
     // initialDistanceOffset (default 0: the trajectory's start), or with Timing the arc length
     // the trajectory's own clock gives for now.
     let length = trajectory.length();
-    if let Some(d) = initial_distance_offset.filter(|d| !(0.0..=length).contains(d)) {
-        return Err(to_error(TrajectoryError::new(
-            TrajectoryErrorKind::InitialDistanceOffset { found: d, length },
-            pos,
-        )));
-    }
+    let initial_distance_offset = initial_distance_offset
+        .map(|d| within_length(d, length))
+        .transpose()
+        .map_err(|found| {
+            to_error(TrajectoryError::new(
+                TrajectoryErrorKind::InitialDistanceOffset { found, length },
+                pos,
+            ))
+        })?;
     let s = match (initial_distance_offset, clock.as_ref()) {
         (Some(d), _) => d,
         (None, Some(c)) => trajectory.s_at_simulation_time(c, now).unwrap_or(0.0),
@@ -285,6 +291,26 @@ pub(crate) fn start(
         ActionStatus::Running => Part::Trajectory(state),
         done => Part::Done(done),
     })
+}
+
+/// How far an initialDistanceOffset may lie past the trajectory's end and still mean its end
+/// (m): an author writes the length rounded (90 for a computed 89.99868 m, issue 16), so
+/// 1 cm, or 10⁻⁴ of the length on long trajectories.
+pub(crate) const OFFSET_ROUNDING_TOLERANCE: f64 = 0.01;
+
+/// `offset` as an arc length on a trajectory of `length` m: within [0, length] as given, past
+/// the end by no more than rounding ([`OFFSET_ROUNDING_TOLERANCE`], or 10⁻⁴ × length) the
+/// end; else `Err(offset)`. The XSD gives the range [0..arcLength(trajectory)]
+/// (FollowTrajectoryAction/@initialDistanceOffset, OpenSCENARIO 1.3).
+fn within_length(offset: f64, length: f64) -> Result<f64, f64> {
+    let rounding = OFFSET_ROUNDING_TOLERANCE.max(1e-4 * length);
+    if (0.0..=length).contains(&offset) {
+        Ok(offset)
+    } else if offset > length && offset <= length + rounding {
+        Ok(length)
+    } else {
+        Err(offset)
+    }
 }
 
 /// Puts `actor` at arc length `s` of the trajectory, facing along the tangent, or as the

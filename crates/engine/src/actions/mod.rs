@@ -528,6 +528,10 @@ impl Host<'_> {
                 custom::record(u, &name, self.time, self.events);
                 self.table.slots[id.0 as usize].parts = vec![Part::Done(ActionStatus::Ended)];
             }
+            // Read with a warning at load; it ends in the step it starts.
+            ActionKind::Empty => {
+                self.table.slots[id.0 as usize].parts = vec![Part::Done(ActionStatus::Ended)];
+            }
             _ => {
                 let name = self.table.slots[id.0 as usize].name.clone();
                 self.events.push(EventRecord::unsupported(

@@ -137,6 +137,9 @@ pub struct Entity {
     pub model3d: Option<String>,
     /// True once a TeleportAction (or AddEntityAction) placed the entity.
     pub placed: bool,
+    /// True once the entity has left the scenario (DeleteEntityAction, a traffic sink); while
+    /// it is not placed, `pose` is where it left.
+    pub departed: bool,
     /// Pose of the reference point in world coordinates.
     pub pose: Pose,
     /// Road position of the reference point (`RoadNetwork::locate` of the pose), if on a road.
@@ -197,6 +200,7 @@ impl Entity {
             color: None,
             model3d: None,
             placed: false,
+            departed: false,
             pose: Pose::default(),
             max_curvature: None,
             axles: None,

@@ -144,6 +144,7 @@ pub(crate) fn remove(world: &mut World, element: &str, id: EntityId) {
 pub(crate) fn leave(world: &mut World, id: EntityId) {
     let e = world.entity_mut(id);
     e.placed = false;
+    e.departed = true;
     e.speed = 0.0;
     e.track = None;
     e.road_position = None;

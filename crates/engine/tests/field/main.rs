@@ -9,4 +9,5 @@ mod runtime_support;
 
 mod support;
 
+mod other_suites;
 mod qualified_names;

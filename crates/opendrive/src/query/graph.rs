@@ -60,7 +60,8 @@ impl RoadNetwork {
     /// The handle of lane `lane_id` in the lane section of `road_id` at `s`.
     pub fn lane_handle(&self, road_id: &str, lane_id: i32, s: f64) -> Option<LaneHandle> {
         let (ri, road) = self.road_or_err(road_id).ok()?;
-        let k = road.lane_section_index(s);
+        // A lane ending at s is found at its end (`Road::lane_section_holding`).
+        let k = road.lane_section_index_holding(lane_id, s);
         road.lane_sections[k].lane(lane_id)?;
         Some(LaneHandle {
             road: ri as u32,

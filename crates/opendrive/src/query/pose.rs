@@ -12,7 +12,7 @@ use super::frame::road_frame;
 use super::lane_span::{for_each_span, lane_span, LaneSpan};
 use crate::error::{Error, ErrorKind};
 use crate::math::{normalize_angle, Pose, Real, S_TOLERANCE};
-use crate::model::{Lane, Road};
+use crate::model::{Lane, LaneSection, Road};
 use crate::network::RoadNetwork;
 
 impl Road {
@@ -46,11 +46,37 @@ impl Road {
         })
     }
 
-    /// Lateral extent of lane `lane_id` at `s` (lane section looked up from s).
+    /// Lateral extent of lane `lane_id` at `s` (lane section looked up from s; a lane ending
+    /// at s is found at its end, see [`Road::lane_section_holding`]).
     pub fn lane_span(&self, lane_id: i32, s: Real) -> Result<LaneSpan, Error> {
         let s = self.check_s(s)?;
-        let section = self.lane_section_at(s);
+        let section = self.lane_section_holding(lane_id, s);
         lane_span(self, section, lane_id, s).ok_or_else(|| self.no_lane(lane_id, s))
+    }
+
+    /// The lane section that holds lane `lane_id` at `s`: the one valid at `s`
+    /// ([`Road::lane_section_at`]), or, where `s` is the end of the previous section and the
+    /// lane is in that one only, the previous one. A lane's centre line and borders are
+    /// defined on its section's closed interval [s_start, s_end] (OpenDRIVE 1.8 §11.3: the
+    /// lane section's polynomials hold up to the next section's start), so a lane that ends
+    /// at a section boundary has a position at its end, as the one that begins there does.
+    pub fn lane_section_holding(&self, lane_id: i32, s: Real) -> &LaneSection {
+        &self.lane_sections[self.lane_section_index_holding(lane_id, s)]
+    }
+
+    /// Index of [`Road::lane_section_holding`].
+    pub fn lane_section_index_holding(&self, lane_id: i32, s: Real) -> usize {
+        let i = self.lane_section_index(s);
+        let section = &self.lane_sections[i];
+        if i == 0 || section.lane(lane_id).is_some() {
+            return i;
+        }
+        let previous = &self.lane_sections[i - 1];
+        if (s - section.s).abs() <= S_TOLERANCE && previous.lane(lane_id).is_some() {
+            i - 1
+        } else {
+            i
+        }
     }
 
     /// Every lane of the lane section at `s` with its span there, from the centre outwards
@@ -71,10 +97,11 @@ impl Road {
     }
 
     /// World pose of a point `offset` metres left of the centre of lane `lane_id` at `s`,
-    /// lifted by the lane's `<height>`.
+    /// lifted by the lane's `<height>` (a lane ending at s is found at its end, see
+    /// [`Road::lane_section_holding`]).
     pub fn lane_pose(&self, lane_id: i32, s: Real, offset: Real) -> Result<Pose, Error> {
         let s = self.check_s(s)?;
-        let section = self.lane_section_at(s);
+        let section = self.lane_section_holding(lane_id, s);
         let span = lane_span(self, section, lane_id, s).ok_or_else(|| self.no_lane(lane_id, s))?;
         let t = span.center() + offset;
         let height = section

@@ -137,6 +137,11 @@ pub enum ActionKind {
     UserDefined(UserDefinedAction),
     /// PrivateAction (for the actors).
     Private(PrivateAction),
+    /// An `<Action>` with no child element. The XSD requires one of the three choices; the
+    /// reader accepts the empty element with a warning (as esmini's own test scenarios write
+    /// it) and the engine runs it as a no-op that ends at once, so that conditions on its
+    /// state still see a start and an end.
+    Empty,
 }
 
 impl ActionKind {
@@ -167,6 +172,7 @@ impl ActionKind {
                 GlobalAction::Variable { .. } => "VariableAction",
             },
             ActionKind::UserDefined(_) => "UserDefinedAction",
+            ActionKind::Empty => "Action",
         }
     }
 }

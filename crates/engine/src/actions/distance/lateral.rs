@@ -24,6 +24,9 @@
 //!   going, as in esmini's runs). The error the new v works on is the one expected when it
 //!   acts: the error measured at the step's start, less this step's own motion, plus the
 //!   reference's lateral motion (at its present lateral speed) over this step and the next.
+//! * An actor off every lane needs no lane: in a frame that can measure there (entity, world)
+//!   it moves along its own y axis (left of its heading) and keeps its heading; the road and
+//!   lane frames refuse it at the start, having no distance to measure (issue 16 class 8).
 //! * The heading turns with the sideways motion: h = road heading + atan(v / speed), the
 //!   motion being handed to the default controller as a one-step lateral blend of the lane.
 //! * `continuous="false"`: the action ends when the lateral error measured at a step's start is
@@ -91,13 +94,6 @@ pub(crate) fn start_lateral(
     };
     let reference = entity_ref(world, name, pos)?;
     let e = world.entity(actor);
-    if e.track.is_none() {
-        return Err(RuntimeError::at(
-            "an actor on a lane",
-            format!("'{}' off the road", e.name),
-            pos,
-        ));
-    }
     let (gauge, now) = Gauge::at_start(
         world,
         (actor, reference),
@@ -136,9 +132,6 @@ pub(crate) fn step_lateral(
     s: &mut LateralState,
     dt: f64,
 ) -> ActionStatus {
-    if world.entity(actor).track.is_none() {
-        return ActionStatus::Ended;
-    }
     // A reference that left the scenario (DeleteEntityAction) has no place to keep a distance
     // to: the action stops where the actor is (as the longitudinal one does).
     if !world.entity(s.reference).placed {
@@ -205,6 +198,10 @@ fn move_sideways(world: &mut World, actor: EntityId, left: f64, dt: f64, smooth:
     let e = &mut world.entities[actor.index()];
     let travel = (e.speed * dt).abs();
     let Some(track) = &mut e.track else {
+        // Off the lanes: sideways in the entity frame, along its y axis; the heading stays
+        // (there is no lane to blend along, and turning it would turn the frame measured in).
+        e.pose.x -= left * e.pose.h.sin();
+        e.pose.y += left * e.pose.h.cos();
         return;
     };
     let Some(road) = net.road(&track.road_id) else {
