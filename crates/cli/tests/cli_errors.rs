@@ -131,27 +131,37 @@ fn parameter_set_to_nan_is_refused_at_its_use() {
     );
 }
 
-/// A TeleportAction to s = 600 on a 500 m road at t = 1 s: the run fails there with the
-/// LanePosition's place (line 57, column 31); the CSV keeps the 21 frames until then
-/// (t = 0, 0.05, …, 1.0) and its header.
+/// A TeleportAction relative to a deleted entity at t = 1 s: the run fails there with the
+/// RelativeObjectPosition's place (line 88, column 31); the CSV keeps the frames of the 21
+/// times until then (t = 0, 0.05, …, 1.0) and its header.
 #[test]
 fn run_failing_half_way_names_the_element_and_keeps_the_frames() {
     let dir = scratch("half_way");
-    let scenario = fixture("teleport_s_beyond_road.xosc");
+    // Lead is deleted at 0.5 s; a TeleportAction at 1 s to a RelativeObjectPosition of Lead
+    // (line 88, column 31) fails then. (A LanePosition past a road's end is refused at load
+    // since issue 16 class 2.)
+    let scenario = fixture("deleted_relative_position.xosc");
     let csv = dir.join("out.csv");
     let out = oscsim(&["run", text(&scenario), "--csv", text(&csv)]);
     let stderr = assert_fails(
         &out,
         &[
             "failed at t = 1.000 s",
-            "expected s in [0, 500] on road \"1\", found 600",
-            &format!("{}:57:31", scenario.display()),
+            "expected a placed entity named \"Lead\", found none",
+            &format!("{}:88:31", scenario.display()),
         ],
     );
     // The action's error is printed once (as the event log gets it), the failure refers to it.
-    assert_eq!(stderr.matches("found 600").count(), 1, "{stderr}");
+    assert_eq!(stderr.matches("found none").count(), 1, "{stderr}");
     let written = std::fs::read_to_string(&csv).expect("the CSV exists");
-    assert_eq!(written.lines().count(), 1 + 21, "{written}");
+    // Frames at 0.000, 0.050, …, 1.000: 21 times.
+    let mut times: Vec<&str> = written
+        .lines()
+        .skip(1)
+        .filter_map(|l| l.split(',').next())
+        .collect();
+    times.dedup();
+    assert_eq!(times.len(), 21, "{written}");
     assert!(written
         .lines()
         .last()

@@ -2,7 +2,8 @@
 //! `LanePosition`, `RelativeLanePosition`).
 //!
 //! * LanePosition: s along road `roadId`'s reference line, then `offset` from the centre of
-//!   lane `laneId` along the road's t-axis (positive left of the reference line).
+//!   lane `laneId` along the road's t-axis (positive left of the reference line). An s past
+//!   the road's ends continues on the connecting road (module `beyond`).
 //! * RelativeLanePosition with `ds`: s of the reference entity plus ds along the reference
 //!   line; lane = the entity's lane plus dLane (lane ids counted across the reference line,
 //!   so positive dLane moves towards the road's left, and the centre lane 0 is skipped:
@@ -17,17 +18,18 @@
 //!
 //! With `ds` the walk follows the entity's lane through lane sections and onto connecting
 //! roads (`lane_walk`, the 1.3 continuation rule), and dLane is counted on the road reached
-//! (negated where that road runs against the start road). `dsLane` stays on the entity's road
-//! (an s beyond it is an error). Orientation: relative headings count from the target lane's driving
+//! (negated where that road runs against the start road). `dsLane` continues the same way
+//! along the lane centre lines of the roads passed (module `beyond`). Orientation: relative headings count from the target lane's driving
 //! direction (see `orientation`).
 
 use std::f64::consts::PI;
 
-use opendrive::{Direction, Pose, Real, RoadNetwork};
+use opendrive::{Direction, Pose, Real, RoadNetwork, LENGTH_EPSILON};
 use scenario::{Orientation, SourcePos};
 
+use super::beyond::carried;
 use super::error::road_error;
-use super::lane_length::s_at_lane_distance;
+use super::lane_length::{lane_arc_length, s_at_lane_distance};
 use super::lane_walk::walk;
 use super::orientation::on_surface;
 use super::world::{entity, finite};
@@ -79,6 +81,18 @@ pub(crate) fn lane(
     pos: &SourcePos,
 ) -> Result<ResolvedPosition, PositionError> {
     finite(&[("s", s), ("offset", offset)], pos)?;
+    // Past the road's ends: carried onto the connecting road (module `beyond`).
+    if let Some(end) = carried(network, road_id, Some(lane_id), s, 0.0) {
+        let offset = if end.flipped { -offset } else { offset };
+        return lane(
+            network,
+            &end.road_id,
+            end.lane_id,
+            [end.s, offset],
+            orientation,
+            pos,
+        );
+    }
     let surface = network
         .lane_pose(road_id, lane_id, s, offset)
         .map_err(|e| road_error(e, pos))?;
@@ -135,7 +149,7 @@ pub(crate) fn relative_lane<Q: EntityQuery + ?Sized>(
             let forward = rp.relative_heading.abs() <= PI / 2.0;
             // A negative dsLane goes the other way.
             let forward = forward == (ds_lane >= 0.0);
-            let s = s_at_lane_distance(
+            let (road_id, lane_id, s, flipped) = along_lane(
                 network,
                 &rp.road_id,
                 rp.lane_id,
@@ -144,7 +158,7 @@ pub(crate) fn relative_lane<Q: EntityQuery + ?Sized>(
                 forward,
             )
             .map_err(|e| road_error(e, pos))?;
-            (rp.road_id.clone(), rp.lane_id, s, d_lane)
+            (road_id, lane_id, s, if flipped { -d_lane } else { d_lane })
         }
     };
     let target = add_lanes(from_lane, d_lane);
@@ -165,3 +179,49 @@ pub(crate) fn relative_lane<Q: EntityQuery + ?Sized>(
     }
     lane(network, &road_id, target, [s, offset], orientation, pos)
 }
+
+/// Roads a `dsLane` walk may pass before it is abandoned (a guard against cyclic road graphs).
+const MAX_ROADS: usize = 1_000;
+
+/// Travels `distance` m along the centre line of `lane_id` from s on `road_id` (towards +s
+/// when `forward`), onto the connecting roads where the road ends (module `beyond`'s rule for
+/// dsLane): the road, lane and s reached, and whether that road runs against the first.
+/// Where nothing connects, the road model's error for the s past the end.
+fn along_lane(
+    network: &RoadNetwork,
+    road_id: &str,
+    lane_id: i32,
+    s: Real,
+    distance: Real,
+    forward: bool,
+) -> Result<(String, i32, Real, bool), opendrive::Error> {
+    let (mut road, mut lane, mut s, mut forward) = (road_id.to_owned(), lane_id, s, forward);
+    let (mut left, mut flipped) = (distance, false);
+    for _ in 0..MAX_ROADS {
+        let end = match network.road(&road) {
+            Some(r) if forward => r.length,
+            _ => 0.0,
+        };
+        let room = lane_arc_length(network, &road, lane, s, end);
+        let next = match room {
+            Some(room) if left > room + LENGTH_EPSILON => {
+                // Over the road's end by a hair: the walk lands on the connecting lane.
+                let hair = if forward { HAIR } else { -HAIR };
+                walk(network, &road, lane, end, hair).map(|w| (room, w))
+            }
+            _ => None,
+        };
+        let Some((room, w)) = next else {
+            let s = s_at_lane_distance(network, &road, lane, s, left, forward)?;
+            return Ok((road, lane, s, flipped));
+        };
+        left -= room + HAIR;
+        flipped ^= w.flipped;
+        forward ^= w.flipped;
+        (road, lane, s) = (w.road_id, w.lane_id, w.s);
+    }
+    s_at_lane_distance(network, &road, lane, s, left, forward).map(|s| (road, lane, s, flipped))
+}
+
+/// The step (m) that carries a dsLane walk over a road's end onto the connecting lane.
+const HAIR: Real = 1e-6;

@@ -14,10 +14,14 @@
 //! | `lane` | LanePosition, RelativeLanePosition (ds and dsLane) |
 //! | `lane_length` | arc length along a lane centre line; s after a distance along it |
 //! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
+//! | `beyond` | s past a road's ends: the same continuation for every road-based form |
+//! | `check` | entity-free positions of a scenario resolved at load |
 //! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) on the path of `routing::plan_route` |
 //! | `trajectory` | TrajectoryPosition on a polyline |
 //! | `resolve` | `resolve`: the dispatcher; GeoPosition |
 
+mod beyond;
+mod check;
 mod error;
 mod lane;
 mod lane_length;
@@ -31,6 +35,7 @@ mod route;
 mod trajectory;
 mod world;
 
+pub use check::check_positions;
 pub use error::{PositionError, PositionErrorKind};
 pub use query::{EntityQuery, EntityView};
 pub(crate) use resolve::orientation_of;

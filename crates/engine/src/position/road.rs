@@ -2,7 +2,8 @@
 //! `RoadPosition`, `RelativeRoadPosition`).
 //!
 //! * RoadPosition: the point (s, t) of road `roadId` (OpenDRIVE s along the reference line,
-//!   t positive left), on the road surface.
+//!   t positive left), on the road surface; an s past the road's ends continues on the
+//!   connecting road (module `beyond`).
 //! * RelativeRoadPosition: the reference entity's (s, t) on its road plus (ds, dt). Beyond the
 //!   road's end the reference line continues on the road that the entity's lane continues on
 //!   (`lane_walk`); where that road runs the other way, t changes sign so that the point stays
@@ -14,6 +15,7 @@
 use opendrive::{Real, RoadNetwork};
 use scenario::{Orientation, SourcePos};
 
+use super::beyond::carried;
 use super::error::road_error;
 use super::lane_walk::walk;
 use super::orientation::on_surface;
@@ -29,6 +31,11 @@ pub(crate) fn road(
     pos: &SourcePos,
 ) -> Result<ResolvedPosition, PositionError> {
     finite(&[("s", s), ("t", t)], pos)?;
+    // Past the road's ends: carried onto the connecting road (module `beyond`).
+    if let Some(end) = carried(network, road_id, None, s, t) {
+        let t = if end.flipped { -t } else { t };
+        return road(network, &end.road_id, [end.s, t], orientation, pos);
+    }
     let surface = network
         .road_pose(road_id, s, t)
         .map_err(|e| road_error(e, pos))?;

@@ -99,6 +99,9 @@ impl Engine {
         config: EngineConfig,
     ) -> Result<Engine, RuntimeError> {
         config.validate()?;
+        // Places the road network does not have are refused now, not when first needed.
+        crate::position::check_positions(scenario, &network)
+            .map_err(|e| RuntimeError::new(RuntimeErrorKind::Position(e)))?;
         let mut built = build(scenario, network)?;
         built.world.traffic.seed = config.seed;
         built.world.traffic.model = config.traffic_model;

@@ -216,24 +216,28 @@ fn speed_parameter_set_to_nan_or_inf_is_refused_where_it_is_used() {
     }
 }
 
-/// A LanePosition at s = 600 on the 500 m road 1, teleported to at t = 1 s.
+/// A LanePosition at s = 600 on the 500 m road 1 (nothing connected at its end), teleported
+/// to at t = 1 s: refused at load (`position::check`, issue 16 class 2).
 #[test]
 fn teleport_beyond_the_end_of_the_road_is_refused() {
-    assert_run_fails(
-        "teleport_s_beyond_road",
-        1.0,
+    let message = load_error("teleport_s_beyond_road", &[]);
+    assert_names(
+        &message,
+        &case("teleport_s_beyond_road"),
         (57, 31),
         "LanePosition",
         &["expected s in [0, 500] on road \"1\", found 600 at "],
     );
 }
 
-/// A LanePosition on lane −7 of road 1 (lanes −3…3), teleported to at t = 1 s.
+/// A LanePosition on lane −7 of road 1 (lanes −3…3), teleported to at t = 1 s: refused at
+/// load.
 #[test]
 fn teleport_to_a_lane_that_does_not_exist_is_refused() {
-    assert_run_fails(
-        "teleport_missing_lane",
-        1.0,
+    let message = load_error("teleport_missing_lane", &[]);
+    assert_names(
+        &message,
+        &case("teleport_missing_lane"),
         (57, 31),
         "LanePosition",
         &["expected an existing lane, found lane -7 on road \"1\" at s = 100 at "],
@@ -442,12 +446,13 @@ fn trajectory_of_one_vertex_is_refused_and_logged() {
 }
 
 /// A road network without roads: an Init TeleportAction to a LanePosition on road 1 is
-/// refused in the first step, at the LanePosition.
+/// refused at load, at the LanePosition.
 #[test]
 fn lane_position_on_an_empty_road_network_is_refused() {
-    assert_run_fails(
-        "empty_road_lane",
-        0.0,
+    let message = load_error("empty_road_lane", &[]);
+    assert_names(
+        &message,
+        &case("empty_road_lane"),
         (34, 25),
         "LanePosition",
         &["expected an existing road, found road id \"1\" at "],

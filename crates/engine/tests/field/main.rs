@@ -10,4 +10,5 @@ mod runtime_support;
 mod support;
 
 mod other_suites;
+mod past_road_end;
 mod qualified_names;

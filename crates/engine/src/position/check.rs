@@ -1,0 +1,78 @@
+//! Positions that depend on no entity (RoadPosition, LanePosition) resolved at load, so that a
+//! scenario naming a place the road network does not have (an s past a road's end with
+//! nothing connected, an unknown road or lane) is refused with the position's file, line and
+//! column before it runs, not when the action that holds it starts (issue 16 class 2; module
+//! `beyond`). Looked at: the Init actions and every Event's actions — TeleportAction,
+//! AcquirePositionAction, SynchronizeAction's two targets and AddEntityAction. Positions
+//! relative to an entity depend on where it is when they are needed and are resolved then.
+
+use opendrive::RoadNetwork;
+use scenario::{
+    Action, ActionKind, GlobalAction, Position, PositionKind, PrivateAction, RoutingAction,
+    Scenario,
+};
+
+use super::{resolve, EntityQuery, EntityView, PositionError};
+
+/// Resolves every entity-free position of `scenario`'s actions on `network`; the first that
+/// does not resolve, in document order.
+pub fn check_positions(scenario: &Scenario, network: &RoadNetwork) -> Result<(), PositionError> {
+    let query = NoEntities(network);
+    let sb = &scenario.storyboard;
+    let init = sb.init.actions.iter();
+    let privates = sb.init.privates.iter().flat_map(|p| p.actions.iter());
+    let events = sb
+        .stories
+        .iter()
+        .flat_map(|s| &s.acts)
+        .flat_map(|a| &a.maneuver_groups)
+        .flat_map(|g| &g.maneuvers)
+        .flat_map(|m| &m.events)
+        .flat_map(|e| &e.actions);
+    for action in init.chain(privates).chain(events) {
+        for position in positions(action) {
+            if matches!(
+                position.kind,
+                PositionKind::Road { .. } | PositionKind::Lane { .. }
+            ) {
+                resolve(position, &query)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The positions an action names directly.
+fn positions(action: &Action) -> Vec<&Position> {
+    match &action.kind {
+        ActionKind::Private(PrivateAction::Teleport(p)) => vec![p],
+        ActionKind::Private(PrivateAction::Routing(r)) => match r.as_ref() {
+            RoutingAction::AcquirePosition(p) => vec![p],
+            _ => Vec::new(),
+        },
+        ActionKind::Private(PrivateAction::Synchronize(s)) => {
+            vec![&s.target_position_master, &s.target_position]
+        }
+        ActionKind::Global(GlobalAction::Entity {
+            add_at: Some(p), ..
+        }) => vec![p],
+        _ => Vec::new(),
+    }
+}
+
+/// A world without entities: what an entity-free position needs.
+struct NoEntities<'a>(&'a RoadNetwork);
+
+impl EntityQuery for NoEntities<'_> {
+    fn entity(&self, _: &str) -> Option<EntityView<'_>> {
+        None
+    }
+
+    fn entities(&self) -> Box<dyn Iterator<Item = EntityView<'_>> + '_> {
+        Box::new(std::iter::empty())
+    }
+
+    fn road_network(&self) -> &RoadNetwork {
+        self.0
+    }
+}
