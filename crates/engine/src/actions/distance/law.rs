@@ -94,3 +94,25 @@ pub(crate) fn limit_jerk(acc: f64, last: f64, limits: &Limits, dt: f64) -> f64 {
         acc.min(last + limits.acceleration_rate * dt)
     }
 }
+
+/// The acceleration bounds (lowest, highest; m/s²) that still let the jerk limits bring the
+/// acceleration back to 0 before the speed `v` (m/s) leaves [0, `limits.speed`] over steps of
+/// `dt` s. Ramping an acceleration a down to 0 at the rate J takes a/J s and adds a²/(2J) m/s
+/// (continuous), a²/(2J) + a·dt/2 in steps of dt (a the step-wise ramp's first value); the
+/// bound solves a²/(2J) + a·dt = room, which covers both. Without a rate limit there is no
+/// bound (the acceleration may change at once, and the speed clamp does it). Clamping the speed afterwards would change the acceleration at once,
+/// against the jerk limits; within these bounds the clamp has nothing to do.
+pub(crate) fn speed_room(v: f64, limits: &Limits, dt: f64) -> (f64, f64) {
+    let bound = |room: f64, rate: f64| {
+        let room = room.max(0.0);
+        if rate.is_finite() && rate > 0.0 {
+            rate * (-dt + (dt * dt + 2.0 * room / rate).sqrt())
+        } else {
+            f64::INFINITY
+        }
+    };
+    (
+        -bound(v, limits.acceleration_rate),
+        bound(limits.speed - v, limits.deceleration_rate),
+    )
+}

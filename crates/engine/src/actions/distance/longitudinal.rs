@@ -15,8 +15,10 @@
 //!   lane each step and takes the reference's speed. With them, the actor's speed follows the
 //!   critically damped law of module `law` (tension: maxAcceleration when the actor must drop
 //!   back, maxDeceleration when it must close up — esmini's pairing), the acceleration clamped
-//!   to [−maxDeceleration, maxAcceleration] after the jerk limits, the speed to [0, maxSpeed]
-//!   (a distance controller does not reverse).
+//!   to [−maxDeceleration, maxAcceleration] and to what still lets the jerk limits bring it
+//!   back to 0 before the speed leaves [0, maxSpeed] (`law::speed_room`), then limited in its
+//!   change by maxAccelerationRate / maxDecelerationRate; the speed stays in [0, maxSpeed]
+//!   (a distance controller does not reverse) without a jump in the acceleration.
 //! * `continuous="false"`: "the action ends when the target distance is reached", oscsim: when
 //!   the distance error measured at a step's start is at most 0.1 m (esmini's threshold; the
 //!   standard gives none); that step's control still applies, and the storyboard logs the end
@@ -26,7 +28,7 @@ use opendrive::Direction;
 use scenario::{LongitudinalAction, LongitudinalDisplacement, SourcePos};
 
 use super::gauge::{Axis, Gauge};
-use super::law::{limit_jerk, spring, Limits};
+use super::law::{limit_jerk, speed_room, spring, Limits};
 use crate::actions::speed::entity_ref;
 use crate::actions::Part;
 use crate::controller::place_on_track;
@@ -170,8 +172,10 @@ pub(crate) fn step_longitudinal(
             } else {
                 limits.deceleration
             };
+            let (lowest, highest) = speed_room(v, &limits, dt);
             let acc = spring(forward, v - v_ref, tension, dt)
-                .clamp(-limits.deceleration, limits.acceleration);
+                .clamp(-limits.deceleration, limits.acceleration)
+                .clamp(lowest.min(0.0), highest.max(0.0));
             let acc = limit_jerk(acc, s.acceleration, &limits, dt);
             s.acceleration = acc;
             world.entity_mut(actor).speed = (v + acc * dt).clamp(0.0, limits.speed);
