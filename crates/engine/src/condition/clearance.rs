@@ -7,7 +7,16 @@
 //! * Lanes are counted relative to the triggering entity's lane, positive to the left of its
 //!   direction of travel, the centre lane 0 skipped (lane −1 next to lane 1 is one lane away).
 //!   `relativeLaneRange` entries (from, to) are inclusive; an absent bound is open; no entry
-//!   means every lane. Only entities on the triggering entity's road are compared.
+//!   means every lane.
+//! * Where the other entity is, its lane is counted from the lane the triggering entity's lane
+//!   becomes there, followed through lane sections and onto connecting roads along the lane
+//!   links (`position::lane_walk`, the 1.3 continuation rule), not by lane id: on a 2+1 road
+//!   a lane that appears on the left renumbers the lanes to its right, and lane −2 after the
+//!   section boundary may be the same lane as −1 before it. Where the triggering entity's lane
+//!   ends before the other entity's place (the passing lane of a 2+1 road), the nearest lane
+//!   beside it that does continue is followed (one driven the same way first, then the left
+//!   one) and the count shifted by the lanes between them at the triggering entity. An entity whose place no followed lane reaches (another branch
+//!   of a junction) is not in the area. (issue 16 class 7)
 //! * `oppositeLanes` false ignores entities on lanes driven the other way.
 //! * The longitudinal range is [−distanceBackward, distanceForward] (absent: 0, as the XSD
 //!   says) along the road in the direction the triggering entity faces, between reference
@@ -22,7 +31,7 @@ use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType};
 
 use super::measure::{distance, Target};
 use super::ConditionErrorKind;
-use crate::position::{add_lanes, EntityQuery, EntityView};
+use crate::position::{add_lanes, lane_walk, EntityQuery, EntityView};
 
 /// The attributes of a RelativeClearanceCondition.
 pub(crate) struct Clearance<'c> {
@@ -111,14 +120,14 @@ pub(crate) fn clear<Q: EntityQuery + ?Sized>(
         let Some(rp) = other.road_position else {
             continue;
         };
-        if rp.road_id != own.road_id {
-            continue;
-        }
         if !c.opposite_lanes && direction(network, &rp.road_id, rp.lane_id, rp.s) != own_dir {
             continue;
         }
+        let Some(count) = LaneCount::to(network, e, own, &other, travel)? else {
+            continue;
+        };
         let in_range = |lane: i32| {
-            let k = travel * (lane_index(lane) - lane_index(own.lane_id));
+            let k = count.relative(lane);
             c.relative_lane_ranges.is_empty()
                 || c.relative_lane_ranges
                     .iter()
@@ -137,4 +146,85 @@ pub(crate) fn clear<Q: EntityQuery + ?Sized>(
         }
     }
     Ok(true)
+}
+
+/// How lanes at another entity's place are counted from the triggering entity's lane: the
+/// lane `reference` there is `shift` lanes left of the triggering entity's, and lane ids there
+/// grow to the left of the triggering entity's travel when `sign` is +1.
+struct LaneCount {
+    reference: i32,
+    shift: i32,
+    sign: i32,
+}
+
+/// Lanes beside the triggering entity's own (lanes to its left) tried when its lane ends before
+/// the other's place.
+const NEIGHBOURS: [i32; 7] = [0, 1, -1, 2, -2, 3, -3];
+
+impl LaneCount {
+    /// The count at `other`'s place, or `None` when no followed lane reaches its road there.
+    fn to(
+        network: &RoadNetwork,
+        e: &EntityView<'_>,
+        own: &opendrive::RoadPosition,
+        other: &EntityView<'_>,
+        travel: i32,
+    ) -> Result<Option<LaneCount>, ConditionErrorKind> {
+        let Some(rp) = other.road_position else {
+            return Ok(None);
+        };
+        if rp.road_id == own.road_id
+            && network
+                .road(&own.road_id)
+                .is_some_and(|r| r.lane_section_index(rp.s) == r.lane_section_index(own.s))
+        {
+            return Ok(Some(LaneCount {
+                reference: own.lane_id,
+                shift: 0,
+                sign: travel,
+            }));
+        }
+        // Reference-line distance to the other's reference point, ahead of the travel.
+        let along = DistanceMeasure {
+            freespace: false,
+            coordinate_system: Some(CoordinateSystem::Road),
+            relative_distance_type: Some(RelativeDistanceType::Longitudinal),
+            routing_algorithm: None,
+        };
+        let Some(d) = distance(network, e, &Target::Entity(*other), &along)? else {
+            return Ok(None);
+        };
+        let ds = Real::from(travel) * d;
+        // The own lane first, then nearer lanes before farther ones, lanes driven the own
+        // lane's way before opposite ones, left before right.
+        let own_dir = direction(network, &own.road_id, own.lane_id, own.s);
+        let mut candidates: Vec<(i32, i32)> = NEIGHBOURS
+            .iter()
+            .map(|&j| (j, add_lanes(own.lane_id, travel * j)))
+            .filter(|&(_, lane)| network.lane_boundaries(&own.road_id, lane, own.s).is_ok())
+            .collect();
+        candidates.sort_by_key(|&(j, lane)| {
+            let opposite = direction(network, &own.road_id, lane, own.s) != own_dir;
+            (j.abs(), opposite, j < 0)
+        });
+        for (j, lane) in candidates {
+            let Some(end) = lane_walk(network, &own.road_id, lane, own.s, ds) else {
+                continue;
+            };
+            if end.road_id != rp.road_id {
+                continue;
+            }
+            return Ok(Some(LaneCount {
+                reference: end.lane_id,
+                shift: j,
+                sign: if end.flipped { -travel } else { travel },
+            }));
+        }
+        Ok(None)
+    }
+
+    /// Lane `lane` at the other's place, counted from the triggering entity's lane.
+    fn relative(&self, lane: i32) -> i32 {
+        self.shift + self.sign * (lane_index(lane) - lane_index(self.reference))
+    }
 }

@@ -10,6 +10,7 @@ mod runtime_support;
 mod support;
 
 mod against_s;
+mod clearance;
 mod jerk;
 mod other_suites;
 mod past_road_end;
