@@ -164,6 +164,15 @@ impl TrajectoryState {
     }
 }
 
+impl TrajectoryState {
+    /// Arc length (m) from the actor's place on the trajectory to the trajectory point
+    /// nearest (x, y); 0 when that point is behind it. A SynchronizeAction measures its
+    /// actor's remaining distance with it (synchronize.rs).
+    pub(crate) fn remaining_to(&self, x: f64, y: f64) -> f64 {
+        (self.trajectory.closest(x, y).point.s - self.s).max(0.0)
+    }
+}
+
 /// What a FollowTrajectoryAction asks for (XSD `FollowTrajectoryAction`).
 pub(crate) struct Request<'a> {
     /// The trajectory (TrajectoryRef, resolved).

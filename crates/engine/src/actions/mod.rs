@@ -115,6 +115,7 @@ impl ActionTable {
 
     /// Stage 2: advances every running part by one step from `now` over `dt`.
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) {
+        self.synchronize_along_trajectories();
         for (index, slot) in self.slots.iter_mut().enumerate() {
             let id = ActionId(index as u32);
             for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
@@ -146,6 +147,34 @@ impl ActionTable {
                 (Some(_), None) => true,
                 _ => false,
             };
+        }
+    }
+}
+
+impl ActionTable {
+    /// Gives every running SynchronizeAction its actor's remaining distance along the
+    /// trajectory the actor follows, if it follows one (synchronize.rs).
+    fn synchronize_along_trajectories(&mut self) {
+        let mut syncs = Vec::new();
+        for (i, slot) in self.slots.iter().enumerate() {
+            for (j, (part, &actor)) in slot.parts.iter().zip(&slot.actors).enumerate() {
+                if let Part::Synchronize(s) = part {
+                    syncs.push((i, j, actor, s.target_point()));
+                }
+            }
+        }
+        for (i, j, actor, (x, y)) in syncs {
+            let along = self
+                .slots
+                .iter()
+                .flat_map(|slot| slot.parts.iter().zip(&slot.actors))
+                .find_map(|(part, &a)| match part {
+                    Part::Trajectory(t) if a == actor => Some(t.remaining_to(x, y)),
+                    _ => None,
+                });
+            if let Part::Synchronize(s) = &mut self.slots[i].parts[j] {
+                s.set_along_path(along);
+            }
         }
     }
 }

@@ -18,8 +18,12 @@
 //!
 //! The actor's Performance bounds every step (maxAcceleration, maxDeceleration, maxSpeed);
 //! speeds stay ≥ 0 (the action never reverses). Remaining distances are measured along the
-//! roads: |Δs| on one road, the shortest chain of linked roads (`domain::road_path`) between
-//! two; only off road, or with no linked path, in a straight line.
+//! path the entity travels: for an actor that follows a trajectory (a FollowTrajectoryAction
+//! without a time reference holds the lateral domain and leaves the speed to this action:
+//! a pedestrian crossing the road, issue 16 class 5), the arc length along the trajectory to
+//! the point nearest the target; otherwise along the roads: |Δs| on one road, the shortest
+//! chain of linked roads (`domain::road_path`) between two; only off road, or with no linked
+//! path, in a straight line.
 //!
 //! The action ends when the actor is within `targetTolerance` of its target, the master within
 //! `targetToleranceMaster` of its own, either of them has passed its target (its remaining
@@ -84,6 +88,9 @@ pub(crate) struct SyncState {
     /// Remaining distances of the last step (m), to see a target passed.
     last_distance: f64,
     last_master_distance: f64,
+    /// The actor's remaining distance along the trajectory it follows, when it follows one
+    /// (set before each step by the action table, `set_along_path`).
+    along_path: Option<f64>,
 }
 
 /// Resolves `position` of the action at `pos` to a [`Target`].
@@ -156,11 +163,23 @@ pub(crate) fn start(
         last_phase: false,
         last_distance: f64::INFINITY,
         last_master_distance: f64::INFINITY,
+        along_path: None,
     };
     Ok(Part::Synchronize(state))
 }
 
 impl SyncState {
+    /// Where the actor's target is, in world x and y.
+    pub(crate) fn target_point(&self) -> (f64, f64) {
+        (self.target.pose.x, self.target.pose.y)
+    }
+
+    /// The actor's remaining distance along the trajectory it follows now (`None`: it
+    /// follows none; its lane or a straight line counts then).
+    pub(crate) fn set_along_path(&mut self, remaining: Option<f64>) {
+        self.along_path = remaining;
+    }
+
     /// The final speed now (m/s), if the action has one.
     fn final_speed(&self, world: &World) -> Option<f64> {
         let v_master = world.entity(self.master).speed;
@@ -179,7 +198,9 @@ pub(crate) fn step(world: &mut World, actor: EntityId, s: &mut SyncState, dt: f6
     if !world.entity(s.master).placed {
         return ActionStatus::Stopped;
     }
-    let distance = remaining(world, actor, &s.target);
+    let distance = s
+        .along_path
+        .unwrap_or_else(|| remaining(world, actor, &s.target));
     let master_distance = remaining(world, s.master, &s.master_target);
     let passed =
         distance > s.last_distance + SMALL || master_distance > s.last_master_distance + SMALL;

@@ -14,4 +14,5 @@ mod clearance;
 mod jerk;
 mod other_suites;
 mod past_road_end;
+mod pedestrian_sync;
 mod qualified_names;
