@@ -61,19 +61,60 @@ impl Pursuit {
     }
 }
 
-/// The largest curvature (1/m) a vehicle with `axles` can drive: tan(maxSteering)/wheelbase,
-/// from its FrontAxle and RearAxle; `None` without a front axle, with a wheelbase ≤ 0 or a
-/// maxSteering outside (0, π/2) (no usable constraint).
+/// The largest curvature (1/m) the reference point of a vehicle with `axles` can drive
+/// (rigid body, wheels rolling without slip: every wheel's axis points at the instantaneous
+/// centre of rotation, which lies on the line across the vehicle through its non-steering
+/// axles).
+///
+/// * The RearAxle is taken as non-steering: OpenSCENARIO puts the reference point at its
+///   centre and every other element (positions, trajectories) moves that point. (Catalogs,
+///   esmini's among them, often give it the front's maxSteering; read literally that would
+///   make every such car a four-wheel-steering one.) AdditionalAxle entries with
+///   maxSteering 0 are non-steering too; several non-steering axles (a tandem) put the
+///   centre's line at their mean position x_c, the usual approximation (their tyres scrub).
+/// * Each steering axle (the FrontAxle, AdditionalAxle entries with maxSteering in
+///   (0, π/2)) at x_i bounds the curvature on the centre's line to tan(δ_i) / |x_i − x_c|;
+///   the tightest bound holds.
+/// * The reference point (x = 0) runs on a circle of radius √(R² + x_c²), R the radius on the
+///   centre's line: κ = κ_c / √(1 + (x_c·κ_c)²). Two axles with the rear one at 0 give
+///   tan(δ_front) / wheelbase.
+///
+/// `None` when no axle steers within (0, π/2) or a steering axle lies on the centre's line
+/// (no usable constraint).
 pub fn max_curvature(axles: &Axles) -> Option<Real> {
-    let front = axles.front_axle?;
-    let wheelbase = front.position_x - axles.rear_axle.position_x;
-    let steering = front.max_steering.abs();
-    let ok = wheelbase.is_finite()
-        && wheelbase > 0.0
-        && steering.is_finite()
-        && steering > 0.0
-        && steering < std::f64::consts::FRAC_PI_2;
-    ok.then(|| steering.tan() / wheelbase)
+    let steers = |a: &scenario::Axle| {
+        let d = a.max_steering.abs();
+        d.is_finite() && d > 0.0 && d < std::f64::consts::FRAC_PI_2
+    };
+    let mut fixed = vec![axles.rear_axle.position_x];
+    fixed.extend(
+        axles
+            .additional_axles
+            .iter()
+            .filter(|a| a.max_steering == 0.0)
+            .map(|a| a.position_x),
+    );
+    let x_c = fixed.iter().sum::<Real>() / fixed.len() as Real;
+    let steering = axles
+        .front_axle
+        .iter()
+        .chain(axles.additional_axles.iter())
+        .filter(|a| steers(a));
+    let mut kappa: Option<Real> = None;
+    for a in steering {
+        let arm = (a.position_x - x_c).abs();
+        if !(arm.is_finite() && arm > 0.0) {
+            return None;
+        }
+        let k = a.max_steering.abs().tan() / arm;
+        kappa = Some(kappa.map_or(k, |old: Real| old.min(k)));
+    }
+    let kappa = kappa?;
+    Some(if x_c == 0.0 {
+        kappa
+    } else {
+        kappa / (1.0 + (x_c * kappa).powi(2)).sqrt()
+    })
 }
 
 /// The pure-pursuit curvature (1/m) from (x, y) heading `h` to the goal (gx, gy), clamped to

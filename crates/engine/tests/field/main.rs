@@ -16,3 +16,4 @@ mod other_suites;
 mod past_road_end;
 mod pedestrian_sync;
 mod qualified_names;
+mod trailers;
