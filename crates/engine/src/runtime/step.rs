@@ -163,6 +163,30 @@ impl Engine {
         self.world.get_mut().user_values.set(name, value);
     }
 
+    /// Sets global parameter `name` from outside between steps, as a ParameterSetAction would
+    /// (OpenSCENARIO 1.3 §7.7.1): `value` is converted to the parameter's declared type without
+    /// loss ([`scenario::expr::Value::convert_to`]; text is parsed as the type); conditions of
+    /// the next step read it. Returns `Ok(false)`, changing nothing, when the scenario declares
+    /// no global parameter `name`.
+    pub fn set_parameter(
+        &mut self,
+        name: &str,
+        value: &scenario::expr::Value,
+    ) -> Result<bool, scenario::expr::ExprError> {
+        use scenario::expr::Value;
+        let parameters = &mut self.world.get_mut().parameters;
+        let Some(old) = parameters.get(name) else {
+            return Ok(false);
+        };
+        let ty = old.value_type();
+        let new = match value {
+            Value::String(text) => Value::parse(ty, text)?,
+            v => v.convert_to(ty)?,
+        };
+        parameters.insert(name.to_owned(), new);
+        Ok(true)
+    }
+
     /// Sets each of `values` at the start of the first step at or after its time (before the
     /// step's triggers), in time order; values of equal time in the order given.
     pub fn schedule_user_values(&mut self, values: &[crate::user_values::TimedValue]) {

@@ -1,0 +1,408 @@
+//! `oscsim.Simulation` (the native part; `python/oscsim/__init__.py` adds the Python-side
+//! conveniences): one run of a scenario by the engine's fixed step (OpenSCENARIO 1.3 §8
+//! "Scenario at runtime"), with its trajectories and event log kept for Python.
+//!
+//! The engine sits behind a mutex so that the class is `Sync` as PyO3 requires; the GIL is
+//! held throughout (no call releases it), so the lock is never contended. A panic inside a
+//! call that holds the lock poisons it: the call raises `InternalError`, and so does every
+//! later call on that simulation, whose state can no longer be trusted.
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex, MutexGuard};
+
+use engine::{Engine, EngineConfig, StopReason};
+use pyo3::exceptions::{PyKeyError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyBytes, PyDict, PyList};
+
+use crate::entity::Entity;
+use crate::error::{guard, load_error, step_error, InternalError, SimulationError};
+use crate::model::{overrides, Scenario};
+use crate::record::{Events, Trajectories};
+use crate::value;
+
+/// The engine and what the simulation keeps for Python.
+struct Inner {
+    engine: Engine,
+    trajectories: Trajectories,
+    events: Events,
+    /// The error a step failed with: the run cannot go on.
+    failed: Option<String>,
+}
+
+/// One run of a scenario, stepped from Python.
+#[pyclass(subclass, module = "oscsim")]
+pub struct Simulation {
+    inner: Mutex<Inner>,
+    network: Arc<opendrive::RoadNetwork>,
+    scenario_path: String,
+    config: EngineConfig,
+}
+
+/// The standard-like name of a stop reason.
+fn reason_name(reason: StopReason) -> &'static str {
+    match reason {
+        StopReason::StopTrigger => "stop_trigger",
+        StopReason::StoriesComplete => "stories_complete",
+        StopReason::Duration => "duration",
+        StopReason::TimeCap => "time_cap",
+    }
+}
+
+/// `values` as a NumPy float64 array (copied once through a bytes buffer).
+fn float_array<'py>(
+    py: Python<'py>,
+    numpy: &Bound<'py, PyModule>,
+    values: &[f64],
+) -> PyResult<Bound<'py, PyAny>> {
+    let bytes: Vec<u8> = values.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let buffer = PyBytes::new(py, &bytes);
+    numpy
+        .call_method1("frombuffer", (buffer, "<f8"))?
+        .call_method0("copy")
+}
+
+/// `values` as a NumPy int64 array.
+fn int_array<'py>(
+    py: Python<'py>,
+    numpy: &Bound<'py, PyModule>,
+    values: &[i64],
+) -> PyResult<Bound<'py, PyAny>> {
+    let bytes: Vec<u8> = values.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let buffer = PyBytes::new(py, &bytes);
+    numpy
+        .call_method1("frombuffer", (buffer, "<i8"))?
+        .call_method0("copy")
+}
+
+/// `values` as a NumPy object array of str.
+fn str_array<'py>(
+    py: Python<'py>,
+    numpy: &Bound<'py, PyModule>,
+    values: &[String],
+) -> PyResult<Bound<'py, PyAny>> {
+    let list = PyList::new(py, values)?;
+    let kwargs = PyDict::new(py);
+    kwargs.set_item("dtype", "object")?;
+    numpy.call_method("array", (list,), Some(&kwargs))
+}
+
+impl Simulation {
+    fn lock(&self) -> PyResult<MutexGuard<'_, Inner>> {
+        self.inner.lock().map_err(|_| {
+            InternalError::new_err(
+                "this simulation is unusable: an earlier call panicked inside oscsim \
+                 (InternalError); build a new Simulation",
+            )
+        })
+    }
+
+    /// One step on a locked simulation.
+    fn step_locked(py: Python<'_>, inner: &mut Inner) -> PyResult<Option<StopReason>> {
+        if let Some(message) = &inner.failed {
+            return Err(SimulationError::new_err(format!(
+                "the simulation stopped after an error: {message}"
+            )));
+        }
+        let Inner {
+            engine,
+            trajectories,
+            events,
+            failed,
+        } = inner;
+        engine.step(trajectories, events).map_err(|e| {
+            *failed = Some(e.to_string());
+            step_error(py, &e)
+        })
+    }
+
+    fn snapshot(&self, e: &engine::runtime::Entity, time: f64) -> Entity {
+        Entity {
+            state: e.clone(),
+            time,
+            network: Arc::clone(&self.network),
+        }
+    }
+}
+
+#[pymethods]
+impl Simulation {
+    /// A simulation of `scenario` (a `Scenario`, or the path of a .xosc file, loaded with
+    /// `params`) stepped every `dt` seconds; `seed` fixes the random streams (spawned traffic,
+    /// random routes). The run ends at the storyboard's end, after `duration` seconds if
+    /// given, at the latest at `max_time`. `record=False` keeps no trajectories. Raises
+    /// `ScenarioError` (with `file`, `line`, `column`) when the scenario does not load or the
+    /// engine cannot be built from it.
+    #[new]
+    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None))]
+    #[allow(clippy::too_many_arguments)] // Python keyword arguments
+    fn new(
+        py: Python<'_>,
+        scenario: &Bound<'_, PyAny>,
+        dt: f64,
+        seed: u64,
+        duration: Option<f64>,
+        max_time: f64,
+        record: bool,
+        params: Option<&Bound<'_, PyDict>>,
+    ) -> PyResult<Self> {
+        guard(|| {
+            let loaded;
+            let scenario: &scenario::Scenario = if let Ok(s) = scenario.cast::<Scenario>() {
+                if params.is_some() {
+                    return Err(PyValueError::new_err(
+                        "params apply when loading: pass them to Scenario.load",
+                    ));
+                }
+                loaded = Arc::clone(&s.get().inner);
+                &loaded
+            } else {
+                let path: PathBuf = scenario.extract()?;
+                let overrides = overrides(params)?;
+                loaded = Arc::new(
+                    scenario::Scenario::load_with_parameters(&path, &overrides)
+                        .map_err(|e| load_error(py, &engine::LoadError::Scenario(e)))?,
+                );
+                &loaded
+            };
+            let config = EngineConfig {
+                dt,
+                duration,
+                max_time,
+                seed,
+            };
+            let engine = Engine::build(scenario, config)
+                .map_err(|e| load_error(py, &engine::LoadError::Runtime(e)))?;
+            // The engine owns its road network until the library redesign shares it; the
+            // snapshots need one that outlives a step.
+            let network = Arc::new(engine.world().network.clone());
+            Ok(Simulation {
+                inner: Mutex::new(Inner {
+                    engine,
+                    trajectories: Trajectories {
+                        enabled: record,
+                        ..Trajectories::default()
+                    },
+                    events: Events::default(),
+                    failed: None,
+                }),
+                network,
+                scenario_path: scenario.path.display().to_string(),
+                config,
+            })
+        })
+    }
+
+    /// Runs one step of `dt`: triggers, actions, controllers, measurements, output. The first
+    /// step runs the Init actions and records the frame at t = 0 too. Returns None while the
+    /// run goes on, then why it ended (`stop_trigger`, `stories_complete`, `duration`,
+    /// `time_cap`); a step after the end does nothing. Raises `SimulationError` when the step
+    /// fails (the simulation then refuses further steps).
+    fn step(&self, py: Python<'_>) -> PyResult<Option<&'static str>> {
+        guard(|| {
+            let mut inner = self.lock()?;
+            Ok(Self::step_locked(py, &mut inner)?.map(reason_name))
+        })
+    }
+
+    /// Steps until the run ends; returns why (see `step`).
+    fn run(&self, py: Python<'_>) -> PyResult<&'static str> {
+        guard(|| {
+            let mut inner = self.lock()?;
+            loop {
+                if let Some(reason) = Self::step_locked(py, &mut inner)? {
+                    return Ok(reason_name(reason));
+                }
+            }
+        })
+    }
+
+    /// Simulation time (s): that of the latest frame (0 before the first step).
+    #[getter]
+    fn time(&self) -> PyResult<f64> {
+        guard(|| Ok(self.lock()?.engine.time()))
+    }
+
+    /// Steps run so far.
+    #[getter]
+    fn steps(&self) -> PyResult<u64> {
+        guard(|| Ok(self.lock()?.engine.steps()))
+    }
+
+    /// The step length (s).
+    #[getter]
+    fn dt(&self) -> f64 {
+        self.config.dt
+    }
+
+    /// The seed of the random streams.
+    #[getter]
+    fn seed(&self) -> u64 {
+        self.config.seed
+    }
+
+    /// The scenario file.
+    #[getter]
+    fn scenario_path(&self) -> &str {
+        &self.scenario_path
+    }
+
+    /// Why the run ended, None while it goes on.
+    #[getter]
+    fn stop_reason(&self) -> PyResult<Option<&'static str>> {
+        guard(|| Ok(self.lock()?.engine.stop_reason().map(reason_name)))
+    }
+
+    /// True until the run ends (or a step fails).
+    #[getter]
+    fn running(&self) -> PyResult<bool> {
+        guard(|| {
+            let inner = self.lock()?;
+            Ok(inner.engine.stop_reason().is_none() && inner.failed.is_none())
+        })
+    }
+
+    /// The entities in the scenario now (placed or spawned), in declaration order: snapshots
+    /// at the current time. Empty before the first step, which runs the Init actions.
+    #[getter]
+    fn entities(&self) -> PyResult<Vec<Entity>> {
+        guard(|| {
+            let inner = self.lock()?;
+            let (world, time) = (inner.engine.world(), inner.engine.time());
+            let placed = world.entities().iter().filter(|e| e.placed);
+            Ok(placed.map(|e| self.snapshot(e, time)).collect())
+        })
+    }
+
+    /// The entity called `name` now (its `placed` is False before it enters the scenario).
+    /// Raises `KeyError` when the scenario has no such entity.
+    fn entity(&self, name: &str) -> PyResult<Entity> {
+        guard(|| {
+            let inner = self.lock()?;
+            let (world, time) = (inner.engine.world(), inner.engine.time());
+            let id = world.id(name).ok_or_else(|| {
+                PyKeyError::new_err(format!("expected an entity name, found '{name}'"))
+            })?;
+            Ok(self.snapshot(world.entity(id), time))
+        })
+    }
+
+    /// The event log so far as JSON text lines, one storyboard transition (or other record)
+    /// per line: the lines `oscsim run --events` writes. `Simulation.events()` parses them.
+    fn event_lines(&self) -> PyResult<Vec<String>> {
+        guard(|| Ok(self.lock()?.events.lines.clone()))
+    }
+
+    /// The recorded trajectories as NumPy arrays by column, one row per placed entity per
+    /// frame (the trajectory CSV's rows): `time`, `id` (int64), `name` (object), `x`, `y`,
+    /// `z`, `h`, `p`, `r`, `road_id` (object, '' off the roads), `lane_id` (int64, 0 off the
+    /// roads), `offset`, `t`, `s` (NaN off the roads), `speed`, then world-axes `vx`, `vy`,
+    /// `vz`, `ax`, `ay`, `az` and `yaw_rate`.
+    fn trajectories<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        guard(|| {
+            let inner = self.lock()?;
+            let t = &inner.trajectories;
+            let numpy = py.import("numpy")?;
+            let d = PyDict::new(py);
+            d.set_item("time", float_array(py, &numpy, &t.time)?)?;
+            d.set_item("id", int_array(py, &numpy, &t.id)?)?;
+            d.set_item("name", str_array(py, &numpy, &t.name)?)?;
+            let numeric = Trajectories::NUMERIC.iter().zip(&t.values);
+            for (name, column) in numeric.clone().take(6) {
+                d.set_item(name, float_array(py, &numpy, column)?)?;
+            }
+            d.set_item("road_id", str_array(py, &numpy, &t.road_id)?)?;
+            d.set_item("lane_id", int_array(py, &numpy, &t.lane_id)?)?;
+            for (name, column) in numeric.skip(6) {
+                d.set_item(name, float_array(py, &numpy, column)?)?;
+            }
+            Ok(d)
+        })
+    }
+
+    /// Rows of trajectory recorded so far.
+    #[getter]
+    fn trajectory_rows(&self) -> PyResult<usize> {
+        guard(|| Ok(self.lock()?.trajectories.len()))
+    }
+
+    /// Forgets the recorded trajectories (recording goes on).
+    fn clear_trajectories(&self) -> PyResult<()> {
+        guard(|| {
+            self.lock()?.trajectories.clear();
+            Ok(())
+        })
+    }
+
+    /// Sets the value of a UserDefinedValueCondition's `name` (bool, int, float or str) from
+    /// the next step on.
+    fn set_user_value(&self, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
+        let value = value::from_py(value)?;
+        guard(|| {
+            self.lock()?.engine.set_user_value(name, value);
+            Ok(())
+        })
+    }
+
+    /// Sets global parameter `name` from the next step on, as a ParameterSetAction would; the
+    /// value is converted to the declared type without loss. Raises `KeyError` for an
+    /// undeclared parameter, `ValueError` when the value does not convert.
+    fn set_parameter(&self, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
+        let value = value::from_py(value)?;
+        let name = name.trim_start_matches('$');
+        guard(|| {
+            let set = self.lock()?.engine.set_parameter(name, &value);
+            match set {
+                Ok(true) => Ok(()),
+                Ok(false) => Err(PyKeyError::new_err(format!(
+                    "expected a declared global parameter, found '{name}'"
+                ))),
+                Err(e) => Err(PyValueError::new_err(format!(
+                    "parameter '{name}': {e}"
+                ))),
+            }
+        })
+    }
+
+    /// The value of global parameter `name` now. Raises `KeyError` for an undeclared one.
+    fn parameter<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
+        let name = name.trim_start_matches('$');
+        guard(|| {
+            let inner = self.lock()?;
+            let world = inner.engine.world();
+            let v = world.parameter_value(name).ok_or_else(|| {
+                PyKeyError::new_err(format!("expected a declared global parameter, found '{name}'"))
+            })?;
+            value::to_py(py, v)
+        })
+    }
+
+    /// The value of every monitor (MonitorDeclaration), by name.
+    fn monitors(&self) -> PyResult<Vec<(String, bool)>> {
+        guard(|| Ok(self.lock()?.engine.monitors()))
+    }
+
+    /// The state of every traffic signal that has one, by signal id.
+    fn signal_states(&self) -> PyResult<Vec<(String, String)>> {
+        guard(|| Ok(self.lock()?.engine.signal_states()))
+    }
+
+    /// Panics inside oscsim while holding the simulation, for tests of the boundary: raises
+    /// `InternalError`, and the simulation refuses every later call.
+    fn _debug_panic(&self) -> PyResult<()> {
+        guard(|| {
+            let _inner = self.lock()?;
+            panic!("Simulation._debug_panic was called");
+        })
+    }
+
+    fn __repr__(&self) -> PyResult<String> {
+        Ok(format!(
+            "Simulation({:?}, dt={}, seed={}, time={})",
+            self.scenario_path,
+            self.config.dt,
+            self.config.seed,
+            self.time()?
+        ))
+    }
+}
