@@ -1,1 +1,29 @@
-//! C API (placeholder)
+//! C API of oscsim: a `cdylib` (`liboscsim.so`) and the header `include/oscsim.h` that
+//! cbindgen generates from this crate. A thin layer over the engine's library API: opaque
+//! handles, plain C structs and status codes; no Rust type crosses the boundary, and no panic
+//! either (each call catches it and returns [`OscsimStatus::Panic`]).
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `error` | status codes, the last error message, the panic guard |
+//! | `simulation` | the simulation handle: load, step, run, time, entities by index or name |
+//! | `state` | entity states as C values, copied from each step's frame |
+//!
+//! `examples/c/run_scenario.c` shows the calls; `tests/c_example.rs` compiles and runs it.
+//! The crate's job is FFI, hence `unsafe`: each use says why it holds.
+#![deny(missing_docs)]
+#![deny(unsafe_op_in_unsafe_fn)]
+
+mod error;
+mod simulation;
+mod state;
+
+pub use error::{oscsim_last_error_message, oscsim_test_panic, OscsimStatus};
+pub use simulation::{
+    oscsim_config_default, oscsim_simulation_entity_count, oscsim_simulation_entity_name,
+    oscsim_simulation_entity_road_id, oscsim_simulation_entity_state,
+    oscsim_simulation_find_entity, oscsim_simulation_free, oscsim_simulation_new,
+    oscsim_simulation_run, oscsim_simulation_step, oscsim_simulation_test_panic,
+    oscsim_simulation_time, OscsimConfig, OscsimParameter, OscsimSimulation, OscsimStopReason,
+};
+pub use state::{OscsimEntityKind, OscsimEntityState};

@@ -28,6 +28,9 @@ create_exception!(
      not joined. The message names the case and the point."
 );
 
+/// A route stretch as Python gives it: `(road_id, s_start, s_end, lane_id or None)`.
+type Stretch = (String, f64, f64, Option<i32>);
+
 /// The state of one entity at one simulation time.
 #[pyclass(frozen, module = "oscsim")]
 pub struct Entity {
@@ -307,15 +310,11 @@ impl Entity {
 
     /// §8.7.4.1.1 `distance_along_route(route, from)`: the distance along `route` from its
     /// start (`from_start`, the default) or to its end (`from_end`) (m). `route` is a list of
-    /// stretches `(road_id, s_start, s_end)` or `(road_id, s_start, s_end, lane_id)` in travel
+    /// stretches `(road_id, s_start, s_end, lane_id)` (`lane_id` None: the whole road) in travel
     /// order (`s_end < s_start` runs towards −s); None takes the route the scenario assigned
     /// to this entity (AssignRouteAction). Raises `DomainError` when the entity is not on it.
     #[pyo3(signature = (route = None, from_ = "from_start"))]
-    fn distance_along_route(
-        &self,
-        route: Option<Vec<(String, f64, f64, Option<i32>)>>,
-        from_: &str,
-    ) -> PyResult<f64> {
+    fn distance_along_route(&self, route: Option<Vec<Stretch>>, from_: &str) -> PyResult<f64> {
         let from = route_distance(from_)?;
         guard(|| {
             let route = match route {
@@ -347,7 +346,11 @@ impl Entity {
     /// touches `reference`'s, both keeping their current velocities (s); 0 when they overlap,
     /// None when they never touch.
     fn time_to_collision(&self, reference: &Entity) -> PyResult<Option<f64>> {
-        guard(|| Ok(self.participant().time_to_collision(&reference.participant())))
+        guard(|| {
+            Ok(self
+                .participant()
+                .time_to_collision(&reference.participant()))
+        })
     }
 
     /// §8.7.5.1.2 `time_headway(reference)` (a vehicle method): the distance along s from this

@@ -59,7 +59,13 @@ impl FrameSink for Trajectories {
             self.id.push(i64::from(e.id));
             self.name.push(e.name.to_owned());
             let (road, lane, offset, t, s) = match e.road_position {
-                Some(rp) => (rp.road_id.clone(), i64::from(rp.lane_id), rp.offset, rp.t, rp.s),
+                Some(rp) => (
+                    rp.road_id.clone(),
+                    i64::from(rp.lane_id),
+                    rp.offset,
+                    rp.t,
+                    rp.s,
+                ),
                 None => (String::new(), 0, f64::NAN, f64::NAN, f64::NAN),
             };
             self.road_id.push(road);

@@ -357,9 +357,7 @@ impl Simulation {
                 Ok(false) => Err(PyKeyError::new_err(format!(
                     "expected a declared global parameter, found '{name}'"
                 ))),
-                Err(e) => Err(PyValueError::new_err(format!(
-                    "parameter '{name}': {e}"
-                ))),
+                Err(e) => Err(PyValueError::new_err(format!("parameter '{name}': {e}"))),
             }
         })
     }
@@ -371,7 +369,9 @@ impl Simulation {
             let inner = self.lock()?;
             let world = inner.engine.world();
             let v = world.parameter_value(name).ok_or_else(|| {
-                PyKeyError::new_err(format!("expected a declared global parameter, found '{name}'"))
+                PyKeyError::new_err(format!(
+                    "expected a declared global parameter, found '{name}'"
+                ))
             })?;
             value::to_py(py, v)
         })

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# The Python package in CI: installs it into a venv with the README's command
+# (`pip install ./crates/python`, maturin fetched from PyPI by pip), then runs its pytest suite
+# (crates/python/tests) and the worked example examples/python/aeb_in_the_loop.py.
+#
+# Usage: scripts/python_check.sh [PYTEST ARGS...]
+#   OSCSIM_PY_VENV  the venv (default .venv at the repository root, shared with the OSI check:
+#                   the same pinned osi-python decodes the ground truth there).
+#   OSCSIM          the oscsim binary the tests compare with (default target/release/oscsim;
+#                   .ci/run builds it first).
+# Exit status: 0 when the package installs and every test passes; 1 otherwise.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+venv="${OSCSIM_PY_VENV:-$root/.venv}"
+cd "$root"
+if [ ! -x "$venv/bin/python" ]; then
+    python3 -m venv "$venv"
+fi
+py="$venv/bin/python"
+"$py" -m pip install --quiet --upgrade pip
+# The test tools: pytest, the official OSI bindings (pinned as in scripts/osi_check.sh),
+# pandas for the data-frame path.
+"$py" -m pip install --quiet pytest "osi-python==3.8.0" pandas
+# The README's install command.
+"$py" -m pip install --quiet ./crates/python
+export OSCSIM="${OSCSIM:-$root/target/release/oscsim}"
+# Run from outside the source tree so that the installed package, not crates/python/python,
+# is imported.
+cd "$root/crates/python/tests"
+"$py" -m pytest -q "$@" .
