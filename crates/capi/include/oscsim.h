@@ -71,6 +71,10 @@ typedef struct OscsimConfig {
   double duration;
   // Hard cap on simulated time (s).
   double max_time;
+  // 1: make the ASAM OSI GroundTruth of every frame, as `oscsim run --osi` does (host
+  // vehicle `Ego`, lanes in the first frame), read with
+  // [`oscsim_simulation_osi_ground_truth`]; 0: none.
+  int32_t osi;
 } OscsimConfig;
 
 // One global parameter override at load time, as `oscsim run --param NAME=VALUE`.
@@ -153,7 +157,7 @@ const char *oscsim_last_error_message(void);
 // message that contains `oscsim_test_panic`; the program goes on.
 enum OscsimStatus oscsim_test_panic(void);
 
-// The engine's defaults: dt 0.05 s, seed 1, no duration, max_time 3600 s.
+// The engine's defaults: dt 0.05 s, seed 1, no duration, max_time 3600 s; no OSI.
 struct OscsimConfig oscsim_config_default(void);
 
 // Loads the scenario at `path` with `n_params` overrides from `params` (may be null when 0)
@@ -248,6 +252,27 @@ enum OscsimStatus oscsim_simulation_find_entity(struct OscsimSimulation *sim,
 // # Safety
 // `sim` is a live handle.
 enum OscsimStatus oscsim_simulation_test_panic(struct OscsimSimulation *sim);
+
+// Writes the number of OSI GroundTruths the latest step made to `*count`: 2 after the first
+// step (t = 0, which carries the lanes, and t = dt), 1 after later ones, 0 before the first
+// and after a step past the end.
+// [`OscsimStatus::Argument`] unless the simulation was made with `osi` = 1.
+//
+// # Safety
+// `sim` is a live handle; `count` is writable.
+enum OscsimStatus oscsim_simulation_osi_frame_count(struct OscsimSimulation *sim, size_t *count);
+
+// Writes GroundTruth `index` of the latest step (0 ≤ index < the frame count; the last is
+// the current state) as protobuf bytes (ASAM OSI 3.8 osi_groundtruth.proto, the message
+// `oscsim run --osi` writes for that frame) to `*data` and its length to `*len`. The bytes
+// are the library's, valid until the next step or free.
+//
+// # Safety
+// `sim` is a live handle; `data` and `len` are writable.
+enum OscsimStatus oscsim_simulation_osi_ground_truth(struct OscsimSimulation *sim,
+                                                     size_t index,
+                                                     const uint8_t **data,
+                                                     size_t *len);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -6,7 +6,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `error` | status codes, the last error message, the panic guard |
-//! | `simulation` | the simulation handle: load, step, run, time, entities by index or name |
+//! | `simulation` | the simulation handle: load, step, run, time, entities by index or name, OSI bytes |
 //! | `state` | entity states as C values, copied from each step's frame |
 //!
 //! `examples/c/run_scenario.c` shows the calls; `tests/c_example.rs` compiles and runs it.
@@ -23,7 +23,8 @@ pub use simulation::{
     oscsim_config_default, oscsim_simulation_entity_count, oscsim_simulation_entity_name,
     oscsim_simulation_entity_road_id, oscsim_simulation_entity_state,
     oscsim_simulation_find_entity, oscsim_simulation_free, oscsim_simulation_new,
-    oscsim_simulation_run, oscsim_simulation_step, oscsim_simulation_test_panic,
-    oscsim_simulation_time, OscsimConfig, OscsimParameter, OscsimSimulation, OscsimStopReason,
+    oscsim_simulation_osi_frame_count, oscsim_simulation_osi_ground_truth, oscsim_simulation_run,
+    oscsim_simulation_step, oscsim_simulation_test_panic, oscsim_simulation_time, OscsimConfig,
+    OscsimParameter, OscsimSimulation, OscsimStopReason,
 };
 pub use state::{OscsimEntityKind, OscsimEntityState};

@@ -11,7 +11,10 @@
 use std::ffi::{c_char, CStr};
 use std::path::Path;
 
+use engine::output::{Frame, FrameSink};
 use engine::{Engine, EngineConfig, StopReason};
+use osi::sink::{GroundTruthSink, SinkOptions, StepFrames};
+use scenario::Scenario;
 
 use crate::error::{guard, Failure, OscsimStatus};
 use crate::state::{OscsimEntityState, Scene};
@@ -56,6 +59,10 @@ pub struct OscsimConfig {
     pub duration: f64,
     /// Hard cap on simulated time (s).
     pub max_time: f64,
+    /// 1: make the ASAM OSI GroundTruth of every frame, as `oscsim run --osi` does (host
+    /// vehicle `Ego`, lanes in the first frame), read with
+    /// [`oscsim_simulation_osi_ground_truth`]; 0: none.
+    pub osi: i32,
 }
 
 /// One global parameter override at load time, as `oscsim run --param NAME=VALUE`.
@@ -72,6 +79,8 @@ pub struct OscsimParameter {
 pub struct OscsimSimulation {
     pub(crate) engine: Engine,
     pub(crate) scene: Scene,
+    /// The OSI GroundTruths of the latest step, when asked for.
+    osi: Option<StepFrames>,
     /// The error a step failed with: the run cannot go on.
     failed: Option<String>,
     /// Set while a call works on the simulation; still set on entry when an earlier call
@@ -79,7 +88,7 @@ pub struct OscsimSimulation {
     busy: bool,
 }
 
-/// The engine's defaults: dt 0.05 s, seed 1, no duration, max_time 3600 s.
+/// The engine's defaults: dt 0.05 s, seed 1, no duration, max_time 3600 s; no OSI.
 #[no_mangle]
 pub extern "C" fn oscsim_config_default() -> OscsimConfig {
     let d = EngineConfig::default();
@@ -88,6 +97,7 @@ pub extern "C" fn oscsim_config_default() -> OscsimConfig {
         seed: d.seed,
         duration: d.duration.unwrap_or(0.0),
         max_time: d.max_time,
+        osi: 0,
     }
 }
 
@@ -220,11 +230,23 @@ pub unsafe extern "C" fn oscsim_simulation_new(
             max_time: c.max_time,
             ..EngineConfig::default()
         };
-        let engine = Engine::load(Path::new(path), &overrides, config)
-            .map_err(|e| Failure::new(OscsimStatus::Load, e.to_string()))?;
+        let load_failure =
+            |e: &dyn std::fmt::Display| Failure::new(OscsimStatus::Load, e.to_string());
+        let scenario = Scenario::load_with_parameters(Path::new(path), &overrides)
+            .map_err(|e| load_failure(&e))?;
+        let engine = Engine::build(&scenario, config).map_err(|e| load_failure(&e))?;
+        let osi = if c.osi != 0 {
+            let sink =
+                GroundTruthSink::new(&scenario, &engine.world().network, &SinkOptions::default())
+                    .map_err(|e| load_failure(&format!("cannot make the OSI ground truth: {e}")))?;
+            Some(StepFrames::new(sink))
+        } else {
+            None
+        };
         let sim = Box::new(OscsimSimulation {
             engine,
             scene: Scene::default(),
+            osi,
             failed: None,
             busy: false,
         });
@@ -250,6 +272,22 @@ pub unsafe extern "C" fn oscsim_simulation_free(sim: *mut OscsimSimulation) {
     }
 }
 
+/// What a step reports to: the scene, and the OSI frames when asked for.
+struct Sinks<'a> {
+    scene: &'a mut Scene,
+    osi: Option<&'a mut StepFrames>,
+}
+
+impl FrameSink for Sinks<'_> {
+    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+        self.scene.frame(frame)?;
+        match &mut self.osi {
+            Some(osi) => osi.frame(frame),
+            None => Ok(()),
+        }
+    }
+}
+
 impl OscsimSimulation {
     fn step(&mut self) -> Result<OscsimStopReason, Failure> {
         if let Some(message) = &self.failed {
@@ -258,7 +296,14 @@ impl OscsimSimulation {
                 format!("the simulation stopped after an error: {message}"),
             ));
         }
-        let reason = self.engine.step(&mut self.scene, &mut ()).map_err(|e| {
+        if let Some(osi) = self.osi.as_mut() {
+            osi.begin_step();
+        }
+        let mut sinks = Sinks {
+            scene: &mut self.scene,
+            osi: self.osi.as_mut(),
+        };
+        let reason = self.engine.step(&mut sinks, &mut ()).map_err(|e| {
             self.failed = Some(e.to_string());
             Failure::new(OscsimStatus::Step, e.to_string())
         })?;
@@ -433,4 +478,57 @@ pub unsafe extern "C" fn oscsim_simulation_find_entity(
 pub unsafe extern "C" fn oscsim_simulation_test_panic(sim: *mut OscsimSimulation) -> OscsimStatus {
     // SAFETY: the caller's contract.
     unsafe { with_sim(sim, |_| panic!("oscsim_simulation_test_panic was called")) }
+}
+
+/// Writes the number of OSI GroundTruths the latest step made to `*count`: 2 after the first
+/// step (t = 0, which carries the lanes, and t = dt), 1 after later ones, 0 before the first
+/// and after a step past the end.
+/// [`OscsimStatus::Argument`] unless the simulation was made with `osi` = 1.
+///
+/// # Safety
+/// `sim` is a live handle; `count` is writable.
+#[no_mangle]
+pub unsafe extern "C" fn oscsim_simulation_osi_frame_count(
+    sim: *mut OscsimSimulation,
+    count: *mut usize,
+) -> OscsimStatus {
+    // SAFETY: the caller's contract.
+    unsafe { with_sim(sim, |sim| write(count, osi_frames(sim)?.len())) }
+}
+
+/// Writes GroundTruth `index` of the latest step (0 ≤ index < the frame count; the last is
+/// the current state) as protobuf bytes (ASAM OSI 3.8 osi_groundtruth.proto, the message
+/// `oscsim run --osi` writes for that frame) to `*data` and its length to `*len`. The bytes
+/// are the library's, valid until the next step or free.
+///
+/// # Safety
+/// `sim` is a live handle; `data` and `len` are writable.
+#[no_mangle]
+pub unsafe extern "C" fn oscsim_simulation_osi_ground_truth(
+    sim: *mut OscsimSimulation,
+    index: usize,
+    data: *mut *const u8,
+    len: *mut usize,
+) -> OscsimStatus {
+    // SAFETY: the caller's contract.
+    unsafe {
+        with_sim(sim, |sim| {
+            let frames = osi_frames(sim)?;
+            let frame = frames.get(index).ok_or_else(|| {
+                Failure::argument(format!(
+                    "expected a frame index below {}, found {index}",
+                    frames.len()
+                ))
+            })?;
+            write(data, frame.as_ptr())?;
+            write(len, frame.len())
+        })
+    }
+}
+
+fn osi_frames(sim: &OscsimSimulation) -> Result<&[Vec<u8>], Failure> {
+    let osi = sim.osi.as_ref().ok_or_else(|| {
+        Failure::argument("expected a simulation made with osi = 1, found one without OSI output")
+    })?;
+    Ok(osi.frames())
 }

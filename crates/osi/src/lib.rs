@@ -13,6 +13,8 @@
 //! - [`classification`], [`color`]: OpenSCENARIO categories and colours → OSI.
 //! - [`lights`]: OpenSCENARIO vehicle light states → `VehicleClassification.LightState`.
 //! - [`entity`]: a scenario entity → `MovingObject` / `StationaryObject` with the OSI rules.
+//! - [`sink`]: the engine→OSI mapping, one GroundTruth per engine frame
+//!   ([`sink::GroundTruthSink`]).
 //! - [`trace`]: the [`trace::TraceWriter`] seam, `.osi` and `.mcap` writers and readers,
 //!   the OSI file naming convention, and [`trace::TraceFile`] for `--osi PATH`.
 //!
@@ -68,6 +70,7 @@ pub mod osi3;
 pub mod polyline;
 pub mod rigid_body;
 pub mod schema;
+pub mod sink;
 pub mod trace;
 pub mod version;
 

@@ -4,6 +4,7 @@
 //! `engine::output::JsonlWriter` (the same text `oscsim run --events` writes).
 
 use engine::output::{EventRecord, EventSink, Frame, FrameSink, JsonlWriter};
+use osi::sink::StepFrames;
 
 /// The numeric columns, in the order of [`Trajectories::NUMERIC`].
 #[derive(Debug, Default)]
@@ -99,5 +100,23 @@ impl EventSink for Events {
             .map_err(|e| std::io::Error::new(std::io::ErrorKind::InvalidData, e))?;
         self.lines.extend(text.lines().map(str::to_owned));
         Ok(())
+    }
+}
+
+/// Everything a step reports to: the trajectories, and the ground truth when asked for.
+pub struct Recorders<'a> {
+    /// The trajectories.
+    pub trajectories: &'a mut Trajectories,
+    /// The ground truth, if the simulation makes it.
+    pub osi: Option<&'a mut StepFrames>,
+}
+
+impl FrameSink for Recorders<'_> {
+    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+        self.trajectories.frame(frame)?;
+        match &mut self.osi {
+            Some(osi) => osi.frame(frame),
+            None => Ok(()),
+        }
     }
 }

@@ -16,15 +16,19 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
 use crate::entity::Entity;
-use crate::error::{guard, load_error, step_error, InternalError, SimulationError};
+use crate::error::{
+    guard, load_error, step_error, InternalError, OscsimError, ScenarioError, SimulationError,
+};
 use crate::model::{overrides, Scenario};
-use crate::record::{Events, Trajectories};
+use crate::record::{Events, Recorders, Trajectories};
 use crate::value;
 
 /// The engine and what the simulation keeps for Python.
 struct Inner {
     engine: Engine,
     trajectories: Trajectories,
+    /// The OSI ground truth, when the simulation was made with `osi=True`.
+    osi: Option<osi::sink::StepFrames>,
     events: Events,
     /// The error a step failed with: the run cannot go on.
     failed: Option<String>,
@@ -107,13 +111,30 @@ impl Simulation {
         let Inner {
             engine,
             trajectories,
+            osi,
             events,
             failed,
         } = inner;
-        engine.step(trajectories, events).map_err(|e| {
+        if let Some(osi) = osi.as_mut() {
+            osi.begin_step();
+        }
+        let mut recorders = Recorders {
+            trajectories,
+            osi: osi.as_mut(),
+        };
+        engine.step(&mut recorders, events).map_err(|e| {
             *failed = Some(e.to_string());
             step_error(py, &e)
         })
+    }
+
+    fn osi(inner: &Inner) -> PyResult<&osi::sink::StepFrames> {
+        let osi = inner.osi.as_ref().ok_or_else(|| {
+            OscsimError::new_err(
+                "expected a simulation made with osi=True, found one without OSI output",
+            )
+        })?;
+        Ok(osi)
     }
 
     fn snapshot(&self, e: &engine::runtime::Entity, time: f64) -> Entity {
@@ -130,11 +151,14 @@ impl Simulation {
     /// A simulation of `scenario` (a `Scenario`, or the path of a .xosc file, loaded with
     /// `params`) stepped every `dt` seconds; `seed` fixes the random streams (spawned traffic,
     /// random routes). The run ends at the storyboard's end, after `duration` seconds if
-    /// given, at the latest at `max_time`. `record=False` keeps no trajectories. Raises
+    /// given, at the latest at `max_time`. `record=False` keeps no trajectories. `osi=True`
+    /// makes the OSI GroundTruth of every step (`osi_ground_truth()`), with `osi_host` as the
+    /// host vehicle (default `Ego`) and lanes in the first frame only, as `oscsim run --osi`
+    /// does, or in every frame with `osi_static="every"`. Raises
     /// `ScenarioError` (with `file`, `line`, `column`) when the scenario does not load or the
     /// engine cannot be built from it.
     #[new]
-    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None))]
+    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first"))]
     #[allow(clippy::too_many_arguments)] // Python keyword arguments
     fn new(
         py: Python<'_>,
@@ -145,7 +169,19 @@ impl Simulation {
         max_time: f64,
         record: bool,
         params: Option<&Bound<'_, PyDict>>,
+        osi: bool,
+        osi_host: Option<String>,
+        osi_static: &str,
     ) -> PyResult<Self> {
+        let static_data = match osi_static {
+            "first" => osi::ground_truth::StaticData::First,
+            "every" => osi::ground_truth::StaticData::Every,
+            _ => {
+                return Err(PyValueError::new_err(format!(
+                    "expected osi_static 'first' or 'every', found {osi_static:?}"
+                )))
+            }
+        };
         guard(|| {
             let loaded;
             let scenario: &scenario::Scenario = if let Ok(s) = scenario.cast::<Scenario>() {
@@ -176,6 +212,19 @@ impl Simulation {
             // The engine owns its road network until the library redesign shares it; the
             // snapshots need one that outlives a step.
             let network = Arc::new(engine.world().network.clone());
+            let osi = osi
+                .then(|| {
+                    let options = osi::sink::SinkOptions {
+                        host: osi_host,
+                        static_data,
+                        scenario_file: None,
+                    };
+                    osi::sink::GroundTruthSink::new(scenario, &network, &options).map_err(|e| {
+                        ScenarioError::new_err(format!("cannot make the OSI ground truth: {e}"))
+                    })
+                })
+                .transpose()?
+                .map(osi::sink::StepFrames::new);
             Ok(Simulation {
                 inner: Mutex::new(Inner {
                     engine,
@@ -183,6 +232,7 @@ impl Simulation {
                         enabled: record,
                         ..Trajectories::default()
                     },
+                    osi,
                     events: Events::default(),
                     failed: None,
                 }),
@@ -317,6 +367,28 @@ impl Simulation {
                 d.set_item(name, float_array(py, &numpy, column)?)?;
             }
             Ok(d)
+        })
+    }
+
+    /// The ASAM OSI 3.8 GroundTruth of the latest step as protobuf bytes (decode with the
+    /// official bindings: `osi3.osi_groundtruth_pb2.GroundTruth.FromString(b)`), the message
+    /// `oscsim run --osi` writes for that frame; empty before the first step. Raises
+    /// `OscsimError` unless the simulation was made with `osi=True`.
+    fn osi_ground_truth<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyBytes>> {
+        guard(|| {
+            let inner = self.lock()?;
+            Ok(PyBytes::new(py, Self::osi(&inner)?.latest()))
+        })
+    }
+
+    /// Every GroundTruth the latest `step()` made, in time order: after the first step two
+    /// (t = 0, which carries the lanes and lane boundaries, and t = dt), after later steps one,
+    /// after a step past the end none.
+    fn osi_ground_truths<'py>(&self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyBytes>>> {
+        guard(|| {
+            let inner = self.lock()?;
+            let frames = Self::osi(&inner)?.frames();
+            Ok(frames.iter().map(|f| PyBytes::new(py, f)).collect())
         })
     }
 
