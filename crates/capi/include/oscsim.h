@@ -149,6 +149,53 @@ typedef struct OscsimEntityState {
 extern "C" {
 #endif // __cplusplus
 
+// Hands entity `name` to the program: assigns it an `external` controller active on the
+// longitudinal and lateral domains and stops the motion actions running on it. Call it after
+// the first step, which places the entities; an entity the scenario already gives an active
+// `external` controller needs no call. [`OscsimStatus::NotExternal`] when there is no such
+// entity.
+//
+// # Safety
+// `sim` is a live handle; `name` is a NUL-terminated string.
+enum OscsimStatus oscsim_simulation_attach_external(struct OscsimSimulation *sim, const char *name);
+
+// From the next step on, drives entity `name` at `acceleration` (m/s², along its direction of
+// travel) with front wheel angle `steering` (rad, positive left; NaN keeps the lane as the
+// default controller does). [`OscsimStatus::NotExternal`] unless an `external` controller
+// holds the entity.
+//
+// # Safety
+// `sim` is a live handle; `name` is a NUL-terminated string.
+enum OscsimStatus oscsim_simulation_set_acceleration(struct OscsimSimulation *sim,
+                                                     const char *name,
+                                                     double acceleration,
+                                                     double steering);
+
+// From the next step on, drives vehicle `name` by pedals (`throttle`, `brake`: 0..1) and
+// steering wheel angle (rad, positive left), in drive, through the engine's vehicle model.
+//
+// # Safety
+// `sim` is a live handle; `name` is a NUL-terminated string.
+enum OscsimStatus oscsim_simulation_set_pedals(struct OscsimSimulation *sim,
+                                               const char *name,
+                                               double throttle,
+                                               double brake,
+                                               double steering_wheel);
+
+// Places entity `name` at the end of the next step at world pose x, y, z (m), heading, pitch,
+// roll (rad); it stays there until the next input.
+//
+// # Safety
+// `sim` is a live handle; `name` is a NUL-terminated string.
+enum OscsimStatus oscsim_simulation_set_pose(struct OscsimSimulation *sim,
+                                             const char *name,
+                                             double x,
+                                             double y,
+                                             double z,
+                                             double h,
+                                             double p,
+                                             double r);
+
 // The message of the calling thread's last failed call (empty before any failed): UTF-8,
 // NUL-terminated, owned by the library and valid until the thread's next failing call.
 const char *oscsim_last_error_message(void);

@@ -5,6 +5,7 @@
 //!
 //! | module | job |
 //! | --- | --- |
+//! | `control` | inputs of entities under an `external` controller (the system under test) |
 //! | `error` | status codes, the last error message, the panic guard |
 //! | `simulation` | the simulation handle: load, step, run, time, entities by index or name, OSI bytes |
 //! | `state` | entity states as C values, copied from each step's frame |
@@ -14,10 +15,15 @@
 #![deny(missing_docs)]
 #![deny(unsafe_op_in_unsafe_fn)]
 
+mod control;
 mod error;
 mod simulation;
 mod state;
 
+pub use control::{
+    oscsim_simulation_attach_external, oscsim_simulation_set_acceleration,
+    oscsim_simulation_set_pedals, oscsim_simulation_set_pose,
+};
 pub use error::{oscsim_last_error_message, oscsim_test_panic, OscsimStatus};
 pub use simulation::{
     oscsim_config_default, oscsim_simulation_entity_count, oscsim_simulation_entity_name,

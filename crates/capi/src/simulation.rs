@@ -222,7 +222,6 @@ pub unsafe extern "C" fn oscsim_simulation_new(
             .copied()
             .unwrap_or_else(|| oscsim_config_default());
         // Settings the C struct does not have keep the engine's defaults.
-        #[allow(clippy::needless_update)]
         let config = EngineConfig {
             dt: c.dt,
             seed: c.seed,

@@ -12,11 +12,13 @@
 //! | `state` | `Pose`, `Vector3`, `RoadPosition`, `BoundingBox` |
 //! | `entity` | `Entity` snapshots and the §8.7 methods, `RoutePoint`, `DomainError` |
 //! | `record` | the trajectories and event log a simulation keeps |
-//! | `simulation` | `Simulation`: step, run, state, values from outside |
+//! | `control` | inputs of entities under an `external` controller (the system under test) |
+//! | `simulation` | `Simulation`: step, run, state, values from outside, control, OSI bytes |
 #![deny(missing_docs)]
 
 use pyo3::prelude::*;
 
+mod control;
 mod entity;
 mod error;
 mod model;

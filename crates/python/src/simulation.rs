@@ -15,12 +15,14 @@ use pyo3::exceptions::{PyKeyError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
 
+use crate::control::Control;
 use crate::entity::Entity;
 use crate::error::{
     guard, load_error, step_error, InternalError, OscsimError, ScenarioError, SimulationError,
 };
 use crate::model::{overrides, Scenario};
 use crate::record::{Events, Recorders, Trajectories};
+use crate::state::Pose;
 use crate::value;
 
 /// The engine and what the simulation keeps for Python.
@@ -206,6 +208,7 @@ impl Simulation {
                 duration,
                 max_time,
                 seed,
+                ..EngineConfig::default()
             };
             let engine = Engine::build(scenario, config)
                 .map_err(|e| load_error(py, &engine::LoadError::Runtime(e)))?;
@@ -431,6 +434,52 @@ impl Simulation {
                 ))),
                 Err(e) => Err(PyValueError::new_err(format!("parameter '{name}': {e}"))),
             }
+        })
+    }
+
+    /// Hands entity `name` to Python: assigns it an `external` controller active on the
+    /// longitudinal and lateral domains and stops the motion actions running on it; until the
+    /// first `control` it drives as under the default controller. Call it after the first
+    /// step (which places the entities); an entity the scenario already gives an active
+    /// `external` controller needs no call. Raises `SimulationError` for an unknown entity.
+    fn attach_external(&self, name: &str) -> PyResult<()> {
+        guard(|| {
+            let attached = self.lock()?.engine.attach_external(name);
+            attached.map_err(|e| SimulationError::new_err(e.to_string()))
+        })
+    }
+
+    /// The input of entity `name`'s `external` controller from the next step on, in one of
+    /// three forms: `acceleration` (m/s², along the direction of travel) with an optional front
+    /// wheel angle `steering` (rad, positive left; None keeps the lane); pedals `throttle` and
+    /// `brake` (0..1) with a `steering_wheel` angle (rad) through the engine's vehicle model;
+    /// or the `pose` at the end of the step. It holds until the next call. Raises
+    /// `SimulationError` unless an `external` controller holds the entity, `ValueError` for
+    /// inputs out of range or of more than one form.
+    #[pyo3(signature = (name, *, acceleration = None, steering = None, throttle = None, brake = None, steering_wheel = None, pose = None))]
+    #[allow(clippy::too_many_arguments)] // Python keyword arguments
+    fn control(
+        &self,
+        name: &str,
+        acceleration: Option<f64>,
+        steering: Option<f64>,
+        throttle: Option<f64>,
+        brake: Option<f64>,
+        steering_wheel: Option<f64>,
+        pose: Option<PyRef<'_, Pose>>,
+    ) -> PyResult<()> {
+        let input = Control {
+            acceleration,
+            steering,
+            throttle,
+            brake,
+            steering_wheel,
+            pose: pose.map(|p| *p),
+        }
+        .input()?;
+        guard(|| {
+            let set = self.lock()?.engine.set_external_input(name, input);
+            set.map_err(|e| SimulationError::new_err(e.to_string()))
         })
     }
 

@@ -143,3 +143,53 @@ def test_record_off_and_clear():
     assert sim.trajectory_rows == 42
     sim.clear_trajectories()
     assert sim.trajectory_rows == 0
+
+
+def test_control_forms_and_errors():
+    # Ego at 25 m/s after the first step; 1 s at −5 m/s² under external control: 25 − 5 = 20.
+    sim = oscsim.Simulation(BUNDLED)
+    sim.step()
+    with pytest.raises(oscsim.SimulationError, match="external"):
+        sim.control("Ego", acceleration=-5.0)
+    sim.attach_external("Ego")
+    sim.control("Ego", acceleration=-5.0)
+    for _ in range(20):
+        sim.step()
+    assert sim.entity("Ego").speed == pytest.approx(20.0, abs=1e-9)
+    # A pose: where Ego stands at the end of the next step.
+    target = oscsim.Pose(100.0, -4.5, 0.0, 0.0)
+    sim.control("Ego", pose=target)
+    sim.step()
+    assert sim.entity("Ego").pose.x == pytest.approx(100.0) and sim.entity("Ego").pose.y == pytest.approx(-4.5)
+    with pytest.raises(ValueError, match="one of"):
+        sim.control("Ego", acceleration=1.0, throttle=0.5)
+    with pytest.raises(ValueError, match="0..1"):
+        sim.control("Ego", throttle=1.5)
+    with pytest.raises(ValueError, match="finite"):
+        sim.control("Ego", acceleration=float("nan"))
+    with pytest.raises(oscsim.SimulationError):
+        sim.attach_external("Nobody")
+    sim.control("Ego", throttle=0.0, brake=1.0)
+    v = sim.entity("Ego").speed
+    sim.step()
+    assert sim.entity("Ego").speed < v
+
+
+def test_python_controller_class():
+    class Brake:
+        calls = 0
+
+        def step(self, sim, entity):
+            Brake.calls += 1
+            assert entity.name == "Ego" and entity.time == sim.time
+            return oscsim.Acceleration(-2.0)
+
+    sim = oscsim.Simulation(BUNDLED, duration=1.0)
+    sim.set_controller("Ego", Brake())
+    assert sim.run() == "duration"
+    # Called before each step after the first (which places Ego): 19 times; 19 steps of
+    # −2 m/s² · 0.05 s from 25 m/s.
+    assert Brake.calls == 19
+    assert sim.entity("Ego").speed == pytest.approx(25.0 - 2.0 * 0.05 * 19, abs=1e-9)
+    with pytest.raises(TypeError):
+        sim.set_controller("Ego", object())

@@ -17,7 +17,13 @@ conveniences: parsed events, per-entity trajectories and data frames.
 from __future__ import annotations
 
 import json
-from typing import Any, Dict, List, Optional
+from dataclasses import dataclass
+from typing import Any, Dict, List, Optional, Union
+
+try:  # Python >= 3.8
+    from typing import Protocol
+except ImportError:  # pragma: no cover
+    Protocol = object  # type: ignore
 
 from . import _oscsim
 from ._oscsim import (
@@ -38,11 +44,14 @@ from ._oscsim import (
 )
 
 __all__ = [
+    "Acceleration",
     "BoundingBox",
+    "Controller",
     "DomainError",
     "Entity",
     "InternalError",
     "OscsimError",
+    "Pedals",
     "Pose",
     "RoadNetwork",
     "RoadPosition",
@@ -56,13 +65,109 @@ __all__ = [
 ]
 
 
+@dataclass(frozen=True)
+class Acceleration:
+    """A command for an externally controlled entity: ``acceleration`` along its direction of
+    travel (m/s²) and, optionally, the front wheel angle ``steering`` (rad, positive left;
+    None keeps the lane as the default controller does)."""
+
+    acceleration: float
+    steering: Optional[float] = None
+
+
+@dataclass(frozen=True)
+class Pedals:
+    """A command for an externally controlled vehicle: ``throttle`` and ``brake`` pedals (0..1)
+    and the ``steering_wheel`` angle (rad, positive left), through the engine's vehicle
+    model."""
+
+    throttle: float = 0.0
+    brake: float = 0.0
+    steering_wheel: float = 0.0
+
+
+Command = Union[Acceleration, Pedals, Pose]
+
+
+class Controller(Protocol):
+    """What :meth:`Simulation.set_controller` takes: any object with this method."""
+
+    def step(self, sim: "Simulation", entity: Entity) -> Optional[Command]:
+        """The command for the next step, given the entity's state now; None keeps the last
+        command (before the first, the entity drives as under the default controller)."""
+        ...
+
+
 class Simulation(_oscsim.Simulation):
     """One run of a scenario, stepped from Python.
 
     ``Simulation(scenario, dt=0.05, seed=1, duration=None, max_time=3600.0, record=True,
     params=None)``: ``scenario`` is a :class:`Scenario` or the path of a .xosc file (loaded
     with ``params``, global parameter overrides by name).
+
+    Python controllers (:meth:`set_controller`) are called before each step with the state
+    of their entity at the current time.
     """
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        self._controllers: Dict[str, Any] = {}
+        self._attached: set = set()
+
+    def set_controller(self, name: str, controller: Any) -> None:
+        """Drives entity ``name`` by ``controller``, an object whose ``step(sim, entity)``
+        returns an :class:`Acceleration`, :class:`Pedals`, :class:`Pose` or None before each
+        step (see :class:`Controller`). The entity is handed to an ``external`` controller
+        (:meth:`attach_external`) when it first appears in the scene (also when the scenario
+        gave it one: then both its domains are held). ``controller=None`` removes it (the entity keeps its last
+        input)."""
+        if controller is None:
+            self._controllers.pop(name, None)
+            return
+        if not callable(getattr(controller, "step", None)):
+            raise TypeError(f"expected an object with a step(sim, entity) method, found {controller!r}")
+        self._controllers[name] = controller
+
+    def command(self, name: str, command: Command) -> None:
+        """Gives entity ``name``'s external controller ``command`` (:meth:`control` with the
+        command's fields)."""
+        if isinstance(command, Acceleration):
+            self.control(name, acceleration=command.acceleration, steering=command.steering)
+        elif isinstance(command, Pedals):
+            self.control(
+                name, throttle=command.throttle, brake=command.brake, steering_wheel=command.steering_wheel
+            )
+        elif isinstance(command, Pose):
+            self.control(name, pose=command)
+        else:
+            raise TypeError(f"expected an Acceleration, Pedals or Pose command, found {command!r}")
+
+    def _drive(self) -> None:
+        for name, controller in self._controllers.items():
+            entity = self.entity(name)
+            if not entity.placed:
+                continue
+            if name not in self._attached:
+                self.attach_external(name)
+                self._attached.add(name)
+            command = controller.step(self, entity)
+            if command is not None:
+                self.command(name, command)
+
+    def step(self) -> Optional[str]:
+        """Runs one step of ``dt`` after asking the Python controllers for their commands;
+        returns None while the run goes on, then why it ended (see the native ``step``)."""
+        if self._controllers and self.running:
+            self._drive()
+        return super().step()
+
+    def run(self) -> str:
+        """Steps until the run ends; returns why."""
+        if not self._controllers:
+            return super().run()
+        while True:
+            reason = self.step()
+            if reason is not None:
+                return reason
 
     def events(self) -> List[Dict[str, Any]]:
         """The event log so far, one dict per record (the objects of ``oscsim run --events``:
