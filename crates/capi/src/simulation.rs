@@ -10,6 +10,7 @@
 
 use std::ffi::{c_char, CStr};
 use std::path::Path;
+use std::sync::Arc;
 
 use engine::output::{Frame, FrameSink};
 use engine::{Engine, EngineConfig, StopReason};
@@ -233,11 +234,13 @@ pub unsafe extern "C" fn oscsim_simulation_new(
             |e: &dyn std::fmt::Display| Failure::new(OscsimStatus::Load, e.to_string());
         let scenario = Scenario::load_with_parameters(Path::new(path), &overrides)
             .map_err(|e| load_failure(&e))?;
-        let engine = Engine::build(&scenario, config).map_err(|e| load_failure(&e))?;
+        let network = engine::load::road_network(&scenario)
+            .map_err(|e| load_failure(&engine::LoadError::RoadNetwork(e)))?;
+        let engine =
+            Engine::new(&scenario, Arc::clone(&network), config).map_err(|e| load_failure(&e))?;
         let osi = if c.osi != 0 {
-            let sink =
-                GroundTruthSink::new(&scenario, &engine.world().network, &SinkOptions::default())
-                    .map_err(|e| load_failure(&format!("cannot make the OSI ground truth: {e}")))?;
+            let sink = GroundTruthSink::new(&scenario, network, &SinkOptions::default())
+                .map_err(|e| load_failure(&format!("cannot make the OSI ground truth: {e}")))?;
             Some(StepFrames::new(sink))
         } else {
             None

@@ -9,8 +9,9 @@
 use std::sync::Arc;
 
 use engine::domain::{
-    DistanceDirection, DistanceMode, MovableObject, OnRouteType, PhysicalObject, Route,
-    RouteDistanceEnum, RouteElement, RouteStretch, TrafficParticipant, Vehicle, VehicleCategory,
+    Acceleration6d, DistanceDirection, DistanceMode, MovableObject, OnRouteType, PhysicalObject,
+    Route, RouteDistanceEnum, RouteElement, RouteStretch, TrafficParticipant, Vector3 as Vector3d,
+    Vehicle, VehicleCategory, Velocity6d,
 };
 use engine::runtime::EntityKind;
 use pyo3::create_exception;
@@ -34,7 +35,7 @@ type Stretch = (String, f64, f64, Option<i32>);
 /// The state of one entity at one simulation time.
 #[pyclass(frozen, module = "oscsim")]
 pub struct Entity {
-    pub(crate) state: engine::runtime::Entity,
+    pub(crate) state: engine::EntityState,
     pub(crate) time: f64,
     pub(crate) network: Arc<opendrive::RoadNetwork>,
 }
@@ -44,10 +45,23 @@ impl Entity {
         PhysicalObject::new(self.state.bounding_box, self.state.pose)
     }
 
+    /// `v` (world axes, as the snapshot gives velocity and acceleration) in the entity's own
+    /// axes, as §8.7.4 defines them: the inverse of the snapshot's rotation by the heading.
+    fn local(&self, v: Vector3d) -> Vector3d {
+        let (c, s) = (self.state.pose.h.cos(), self.state.pose.h.sin());
+        Vector3d::new(c * v.x + s * v.y, -s * v.x + c * v.y, v.z)
+    }
+
     fn participant(&self) -> TrafficParticipant {
         let mut movable = MovableObject::new(self.physical());
-        movable.velocity = self.state.velocity;
-        movable.acceleration = self.state.acceleration;
+        movable.velocity = Velocity6d {
+            translational: self.local(self.state.velocity),
+            rotational: Vector3d::new(0.0, 0.0, self.state.yaw_rate),
+        };
+        movable.acceleration = Acceleration6d {
+            translational: self.local(self.state.acceleration),
+            rotational: Vector3d::ZERO,
+        };
         TrafficParticipant::new(movable, Vec::new())
     }
 }
@@ -208,12 +222,6 @@ impl Entity {
         self.time
     }
 
-    /// Whether the entity is in the scenario now (placed by an Init action or spawned).
-    #[getter]
-    fn placed(&self) -> bool {
-        self.state.placed
-    }
-
     /// Pose of the reference point (rear-axle centre on the ground for vehicles), world
     /// coordinates.
     #[getter]
@@ -231,19 +239,19 @@ impl Entity {
     /// §8.7.4 defines `velocity`.
     #[getter]
     fn velocity(&self) -> Vector3 {
-        self.state.velocity.translational.into()
+        self.local(self.state.velocity).into()
     }
 
     /// Translational acceleration in the entity's own axes (m/s²), §8.7.4 `acceleration`.
     #[getter]
     fn acceleration(&self) -> Vector3 {
-        self.state.acceleration.translational.into()
+        self.local(self.state.acceleration).into()
     }
 
     /// Yaw rate (rad/s, positive counter-clockwise).
     #[getter]
     fn yaw_rate(&self) -> f64 {
-        self.state.velocity.rotational.z
+        self.state.yaw_rate
     }
 
     /// Distance travelled since the start (m).
@@ -311,32 +319,22 @@ impl Entity {
     /// §8.7.4.1.1 `distance_along_route(route, from)`: the distance along `route` from its
     /// start (`from_start`, the default) or to its end (`from_end`) (m). `route` is a list of
     /// stretches `(road_id, s_start, s_end, lane_id)` (`lane_id` None: the whole road) in travel
-    /// order (`s_end < s_start` runs towards −s); None takes the route the scenario assigned
-    /// to this entity (AssignRouteAction). Raises `DomainError` when the entity is not on it.
-    #[pyo3(signature = (route = None, from_ = "from_start"))]
-    fn distance_along_route(&self, route: Option<Vec<Stretch>>, from_: &str) -> PyResult<f64> {
+    /// order (`s_end < s_start` runs towards −s). Raises `DomainError` when the entity is not
+    /// on it.
+    #[pyo3(signature = (route, from_ = "from_start"))]
+    fn distance_along_route(&self, route: Vec<Stretch>, from_: &str) -> PyResult<f64> {
         let from = route_distance(from_)?;
         guard(|| {
-            let route = match route {
-                Some(stretches) => {
-                    let stretches = stretches
-                        .into_iter()
-                        .map(|(road_id, s_start, s_end, lane_id)| RouteStretch {
-                            road_id,
-                            lane_id,
-                            s_start,
-                            s_end,
-                        })
-                        .collect();
-                    Route::new(&self.network, stretches).map_err(domain_error)?
-                }
-                None => self.state.route.clone().ok_or_else(|| {
-                    PyValueError::new_err(format!(
-                        "expected a route: entity '{}' has none assigned; pass one",
-                        self.state.name
-                    ))
-                })?,
-            };
+            let stretches = route
+                .into_iter()
+                .map(|(road_id, s_start, s_end, lane_id)| RouteStretch {
+                    road_id,
+                    lane_id,
+                    s_start,
+                    s_end,
+                })
+                .collect();
+            let route = Route::new(&self.network, stretches).map_err(domain_error)?;
             let participant = self.participant();
             (participant.distance_along_route(&self.network, &route, from)).map_err(domain_error)
         })

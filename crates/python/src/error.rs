@@ -114,11 +114,12 @@ pub fn runtime_pos(e: &engine::RuntimeError) -> Option<&SourcePos> {
 
 /// A load or build error as [`ScenarioError`].
 pub fn load_error(py: Python<'_>, e: &engine::LoadError) -> PyErr {
-    let pos = match e {
-        engine::LoadError::Scenario(e) => Some(e.pos()),
-        engine::LoadError::Runtime(e) => runtime_pos(e),
+    let place = match e {
+        engine::LoadError::Scenario(e) => Some(e.pos()).into(),
+        engine::LoadError::RoadNetwork(e) => e.into(),
+        engine::LoadError::Runtime(e) => runtime_pos(e).into(),
     };
-    positioned::<ScenarioError>(py, e.to_string(), pos.into())
+    positioned::<ScenarioError>(py, e.to_string(), place)
 }
 
 /// A failed step as [`SimulationError`].

@@ -20,7 +20,7 @@ use crate::entity::Entity;
 use crate::error::{
     guard, load_error, step_error, InternalError, OscsimError, ScenarioError, SimulationError,
 };
-use crate::model::{overrides, Scenario};
+use crate::model::{overrides, RoadNetwork, Scenario};
 use crate::record::{Events, Recorders, Trajectories};
 use crate::state::Pose;
 use crate::value;
@@ -139,9 +139,9 @@ impl Simulation {
         Ok(osi)
     }
 
-    fn snapshot(&self, e: &engine::runtime::Entity, time: f64) -> Entity {
+    fn snapshot(&self, state: engine::EntityState, time: f64) -> Entity {
         Entity {
-            state: e.clone(),
+            state,
             time,
             network: Arc::clone(&self.network),
         }
@@ -156,11 +156,13 @@ impl Simulation {
     /// given, at the latest at `max_time`. `record=False` keeps no trajectories. `osi=True`
     /// makes the OSI GroundTruth of every step (`osi_ground_truth()`), with `osi_host` as the
     /// host vehicle (default `Ego`) and lanes in the first frame only, as `oscsim run --osi`
-    /// does, or in every frame with `osi_static="every"`. Raises
+    /// does, or in every frame with `osi_static="every"`. `road_network` (a `RoadNetwork`) is
+    /// the road network to run on, shared with every simulation given the same; by default
+    /// the one the scenario names is read. Raises
     /// `ScenarioError` (with `file`, `line`, `column`) when the scenario does not load or the
     /// engine cannot be built from it.
     #[new]
-    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first"))]
+    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first", road_network = None))]
     #[allow(clippy::too_many_arguments)] // Python keyword arguments
     fn new(
         py: Python<'_>,
@@ -174,6 +176,7 @@ impl Simulation {
         osi: bool,
         osi_host: Option<String>,
         osi_static: &str,
+        road_network: Option<PyRef<'_, RoadNetwork>>,
     ) -> PyResult<Self> {
         let static_data = match osi_static {
             "first" => osi::ground_truth::StaticData::First,
@@ -210,11 +213,13 @@ impl Simulation {
                 seed,
                 ..EngineConfig::default()
             };
-            let engine = Engine::build(scenario, config)
+            let network = match road_network {
+                Some(n) => Arc::clone(&n.inner),
+                None => engine::load::road_network(scenario)
+                    .map_err(|e| load_error(py, &engine::LoadError::RoadNetwork(e)))?,
+            };
+            let engine = Engine::new(scenario, Arc::clone(&network), config)
                 .map_err(|e| load_error(py, &engine::LoadError::Runtime(e)))?;
-            // The engine owns its road network until the library redesign shares it; the
-            // snapshots need one that outlives a step.
-            let network = Arc::new(engine.world().network.clone());
             let osi = osi
                 .then(|| {
                     let options = osi::sink::SinkOptions {
@@ -222,9 +227,10 @@ impl Simulation {
                         static_data,
                         scenario_file: None,
                     };
-                    osi::sink::GroundTruthSink::new(scenario, &network, &options).map_err(|e| {
-                        ScenarioError::new_err(format!("cannot make the OSI ground truth: {e}"))
-                    })
+                    osi::sink::GroundTruthSink::new(scenario, Arc::clone(&network), &options)
+                        .map_err(|e| {
+                            ScenarioError::new_err(format!("cannot make the OSI ground truth: {e}"))
+                        })
                 })
                 .transpose()?
                 .map(osi::sink::StepFrames::new);
@@ -321,23 +327,27 @@ impl Simulation {
     fn entities(&self) -> PyResult<Vec<Entity>> {
         guard(|| {
             let inner = self.lock()?;
-            let (world, time) = (inner.engine.world(), inner.engine.time());
-            let placed = world.entities().iter().filter(|e| e.placed);
-            Ok(placed.map(|e| self.snapshot(e, time)).collect())
+            let time = inner.engine.time();
+            let states = inner.engine.entities().into_iter();
+            Ok(states.map(|e| self.snapshot(e, time)).collect())
         })
     }
 
-    /// The entity called `name` now (its `placed` is False before it enters the scenario).
-    /// Raises `KeyError` when the scenario has no such entity.
+    /// The entity called `name` now. Raises `KeyError` when no entity of that name is in the
+    /// scene (before the first step, which places the entities, none is).
     fn entity(&self, name: &str) -> PyResult<Entity> {
         guard(|| {
             let inner = self.lock()?;
-            let (world, time) = (inner.engine.world(), inner.engine.time());
-            let id = world.id(name).ok_or_else(|| {
-                PyKeyError::new_err(format!("expected an entity name, found '{name}'"))
+            let state = inner.engine.entity(name).ok_or_else(|| {
+                PyKeyError::new_err(format!("expected an entity in the scene, found '{name}'"))
             })?;
-            Ok(self.snapshot(world.entity(id), time))
+            Ok(self.snapshot(state, inner.engine.time()))
         })
+    }
+
+    /// Whether an entity called `name` is in the scene now.
+    fn in_scene(&self, name: &str) -> PyResult<bool> {
+        guard(|| Ok(self.lock()?.engine.entity(name).is_some()))
     }
 
     /// The event log so far as JSON text lines, one storyboard transition (or other record)
@@ -487,14 +497,12 @@ impl Simulation {
     fn parameter<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
         let name = name.trim_start_matches('$');
         guard(|| {
-            let inner = self.lock()?;
-            let world = inner.engine.world();
-            let v = world.parameter_value(name).ok_or_else(|| {
+            let v = self.lock()?.engine.parameter(name).ok_or_else(|| {
                 PyKeyError::new_err(format!(
                     "expected a declared global parameter, found '{name}'"
                 ))
             })?;
-            value::to_py(py, v)
+            value::to_py(py, &v)
         })
     }
 

@@ -216,6 +216,6 @@ def test_distance_along_route(tmp_path: Path):
         b.distance_along_route([("1", 0.0, 100.0, None)])
     with pytest.raises(oscsim.DomainError):
         a.distance_along_route([("no such road", 0.0, 1.0, None)])
-    # Without a route assigned by the scenario there is none to default to.
-    with pytest.raises(ValueError, match="route"):
+    # The route is required.
+    with pytest.raises(TypeError):
         a.distance_along_route()

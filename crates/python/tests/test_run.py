@@ -90,7 +90,7 @@ def test_entity_state():
     # engine's lane following differs from the first-order value by O(dt²) terms in κ'
     # (a few 1e-6 m here): tolerance 1e-5 m.
     assert ego.time == pytest.approx(0.05)
-    assert ego.placed and ego.kind == "vehicle" and ego.vehicle_category == "car"
+    assert sim.in_scene("Ego") and ego.kind == "vehicle" and ego.vehicle_category == "car"
     assert ego.speed == 25.0
     rp = ego.road_position
     assert rp is not None and (rp.road_id, rp.lane_id) == ("0", -2)
@@ -101,6 +101,11 @@ def test_entity_state():
     assert (bb.center.x, bb.length, bb.width, bb.height) == (1.4, 5.0, 2.0, 1.5)
     with pytest.raises(KeyError):
         sim.entity("Nobody")
+    # Before the first step no entity is in the scene.
+    fresh = oscsim.Simulation(BUNDLED)
+    assert not fresh.in_scene("Ego")
+    with pytest.raises(KeyError):
+        fresh.entity("Ego")
 
 
 def test_trajectory_of_one_entity_and_frame():
@@ -114,6 +119,17 @@ def test_trajectory_of_one_entity_and_frame():
     pandas = pytest.importorskip("pandas")
     frame = sim.trajectory_frame()
     assert isinstance(frame, pandas.DataFrame) and len(frame) == sim.trajectory_rows
+
+
+def test_shared_road_network():
+    # One RoadNetwork for several simulations: the same results as each reading its own.
+    net = oscsim.RoadNetwork.load(BUNDLED.parent.parent / "roads" / "highway.xodr")
+    a = oscsim.Simulation(BUNDLED, road_network=net, duration=2.0)
+    b = oscsim.Simulation(BUNDLED, road_network=net, duration=2.0)
+    c = oscsim.Simulation(BUNDLED, duration=2.0)
+    for s in (a, b, c):
+        s.run()
+    assert a.entity("Ego").pose == b.entity("Ego").pose == c.entity("Ego").pose
 
 
 def test_parameters_at_load_and_between_steps():

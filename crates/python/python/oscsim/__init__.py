@@ -102,8 +102,10 @@ class Simulation(_oscsim.Simulation):
     """One run of a scenario, stepped from Python.
 
     ``Simulation(scenario, dt=0.05, seed=1, duration=None, max_time=3600.0, record=True,
-    params=None)``: ``scenario`` is a :class:`Scenario` or the path of a .xosc file (loaded
-    with ``params``, global parameter overrides by name).
+    params=None, osi=False, osi_host=None, osi_static="first", road_network=None)``:
+    ``scenario`` is a :class:`Scenario` or the path of a .xosc file (loaded with ``params``,
+    global parameter overrides by name); ``road_network`` a :class:`RoadNetwork` shared by
+    the simulations given it.
 
     Python controllers (:meth:`set_controller`) are called before each step with the state
     of their entity at the current time.
@@ -143,9 +145,9 @@ class Simulation(_oscsim.Simulation):
 
     def _drive(self) -> None:
         for name, controller in self._controllers.items():
-            entity = self.entity(name)
-            if not entity.placed:
+            if not self.in_scene(name):
                 continue
+            entity = self.entity(name)
             if name not in self._attached:
                 self.attach_external(name)
                 self._attached.add(name)
