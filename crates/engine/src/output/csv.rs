@@ -8,6 +8,7 @@
 
 use std::io::Write;
 
+use super::fixed::push_fixed;
 use super::frame::{Frame, FrameSink};
 
 /// The header line.
@@ -18,6 +19,8 @@ pub const HEADER: &str = "time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,spee
 pub struct CsvWriter<W: Write> {
     out: W,
     header_written: bool,
+    /// The row being put together.
+    row: Vec<u8>,
 }
 
 impl<W: Write> CsvWriter<W> {
@@ -26,6 +29,7 @@ impl<W: Write> CsvWriter<W> {
         CsvWriter {
             out,
             header_written: false,
+            row: Vec::with_capacity(256),
         }
     }
 
@@ -35,7 +39,8 @@ impl<W: Write> CsvWriter<W> {
     }
 }
 
-/// `name` quoted per RFC 4180 when it holds a comma, quote or line break.
+/// `name` quoted per RFC 4180 when it holds a comma, quote or line break (borrowed, so no
+/// allocation, when it holds none).
 pub(super) fn field(name: &str) -> std::borrow::Cow<'_, str> {
     if name.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", name.replace('"', "\"\"")).into()
@@ -50,34 +55,40 @@ impl<W: Write> FrameSink for CsvWriter<W> {
             writeln!(self.out, "{HEADER}")?;
             self.header_written = true;
         }
+        // Rows are put together in a buffer kept from frame to frame and written in one call:
+        // no allocation per row, the numbers formatted by `fixed` (the bytes of `{:.3}` /
+        // `{:.6}`).
+        let row = &mut self.row;
+        let mut ids = itoa::Buffer::new();
         for e in frame.objects() {
+            row.clear();
             let p = e.pose;
-            write!(
-                self.out,
-                "{:.3},{},{},{:.6},{:.6},{:.6},{:.6},{:.6},{:.6},",
-                frame.time,
-                e.id,
-                field(e.name),
-                p.x,
-                p.y,
-                p.z,
-                p.h,
-                p.p,
-                p.r
-            )?;
-            match e.road_position {
-                Some(rp) => write!(
-                    self.out,
-                    "{},{},{:.6},{:.6},{:.6},",
-                    field(&rp.road_id),
-                    rp.lane_id,
-                    rp.offset,
-                    rp.t,
-                    rp.s
-                )?,
-                None => write!(self.out, ",,,,,")?,
+            push_fixed(row, frame.time, 3);
+            row.push(b',');
+            row.extend_from_slice(ids.format(e.id).as_bytes());
+            row.push(b',');
+            row.extend_from_slice(field(e.name).as_bytes());
+            for v in [p.x, p.y, p.z, p.h, p.p, p.r] {
+                row.push(b',');
+                push_fixed(row, v, 6);
             }
-            writeln!(self.out, "{:.6}", e.speed)?;
+            row.push(b',');
+            match e.road_position {
+                Some(rp) => {
+                    row.extend_from_slice(field(&rp.road_id).as_bytes());
+                    row.push(b',');
+                    row.extend_from_slice(ids.format(rp.lane_id).as_bytes());
+                    for v in [rp.offset, rp.t, rp.s] {
+                        row.push(b',');
+                        push_fixed(row, v, 6);
+                    }
+                    row.push(b',');
+                }
+                None => row.extend_from_slice(b",,,,,"),
+            }
+            push_fixed(row, e.speed, 6);
+            row.push(b'\n');
+            self.out.write_all(row)?;
         }
         Ok(())
     }

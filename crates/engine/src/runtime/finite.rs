@@ -18,7 +18,7 @@ fn first_non_finite(e: &Entity) -> Option<(&'static str, f64)> {
     let p = &e.pose;
     let v = &e.velocity;
     let a = &e.acceleration;
-    let mut values = vec![
+    let values = [
         ("x", p.x),
         ("y", p.y),
         ("z", p.z),
@@ -34,10 +34,15 @@ fn first_non_finite(e: &Entity) -> Option<(&'static str, f64)> {
         ("acceleration y", a.translational.y),
         ("acceleration z", a.translational.z),
     ];
-    if let Some(r) = &e.road_position {
-        values.extend([("road s", r.s), ("road t", r.t), ("lane offset", r.offset)]);
-    }
-    values.into_iter().find(|(_, value)| !value.is_finite())
+    let road = e
+        .road_position
+        .as_ref()
+        .map(|r| [("road s", r.s), ("road t", r.t), ("lane offset", r.offset)]);
+    // On the stack, in the order of the message: no allocation per entity and step.
+    values
+        .into_iter()
+        .chain(road.into_iter().flatten())
+        .find(|(_, value)| !value.is_finite())
 }
 
 /// Checks every placed entity of `entities` at simulation time `time`; the first entity whose
