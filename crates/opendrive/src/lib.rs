@@ -80,5 +80,5 @@ pub use model::{
 pub use network::RoadNetwork;
 pub use query::{
     Direction, LaneChange, LaneCost, LaneHandle, LanePath, LanePosition, LaneRoute, LaneSpan,
-    PathCost, RoadPoint, RoadPosition, RouteSegment, LANE_CHANGE_COST,
+    PathCost, RoadPoint, RoadPosition, RouteSegment, CONSTANT_MARGIN, LANE_CHANGE_COST,
 };

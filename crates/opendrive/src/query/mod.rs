@@ -1,6 +1,7 @@
 //! Questions asked of a loaded network (OpenDRIVE 1.8 §8 coordinate systems, §11 lanes, §12
 //! junctions): poses, lane extents, world → road look-up, the lane graph and routes.
 
+mod constant_lanes;
 mod frame;
 mod graph;
 mod lane_span;
@@ -10,6 +11,7 @@ mod route;
 mod route_search;
 mod spatial;
 
+pub use constant_lanes::CONSTANT_MARGIN;
 pub use graph::{Direction, LaneHandle};
 pub use lane_span::LaneSpan;
 pub use locate::{RoadPoint, RoadPosition};

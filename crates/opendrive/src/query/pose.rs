@@ -46,6 +46,13 @@ impl Road {
         })
     }
 
+    /// Heading of the reference line at `s`: the `h` of [`pose`](Self::pose) at any t, bit for
+    /// bit, without evaluating the elevation and lateral profiles.
+    pub fn heading(&self, s: Real) -> Result<Real, Error> {
+        let s = self.check_s(s)?;
+        Ok(self.plan_view.eval_trig(s).0.hdg)
+    }
+
     /// Lateral extent of lane `lane_id` at `s` (lane section looked up from s; a lane ending
     /// at s is found at its end, see [`Road::lane_section_holding`]).
     pub fn lane_span(&self, lane_id: i32, s: Real) -> Result<LaneSpan, Error> {
