@@ -53,7 +53,12 @@ timed "scale load only (0 s)" 0 "$oscsim" run "$scale60" --quiet --duration 0.05
 rm -f "$out/scale.csv" "$out/scale.osi"
 
 "$root/target/release/examples/grid_xodr" "$out/grid.xodr" 60
-rm -f "$out/grid.xodr"
+# World → road look-ups on the grid: points on the lane centres every 2 m (oscsim road
+# sample), as x,y,h; the load of the grid (above) is part of the wall time.
+"$oscsim" road sample "$out/grid.xodr" --step 2 | awk -F, 'NR > 1 && NR <= 1000001 { print $4 "," $5 "," $7 }' >"$out/points.csv"
+points=$(wc -l <"$out/points.csv")
+timed "road locate ($points points, grid)" "$points" bash -c '"$1" road locate "$2" <"$3"' _ "$oscsim" "$out/grid.xodr" "$out/points.csv"
+rm -f "$out/grid.xodr" "$out/points.csv"
 
 # The esmini corpus loop: every scenario, one process each, dt 0.05, no output.
 start=$(date +%s.%N)

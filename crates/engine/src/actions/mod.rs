@@ -98,6 +98,11 @@ pub(crate) struct ActionSlot {
 #[derive(Debug, Clone, Default)]
 pub(crate) struct ActionTable {
     pub slots: Vec<ActionSlot>,
+    /// The slots that may have a running part, ascending: stage 2 visits these only (a slot
+    /// whose parts are all done does nothing there; 1,000 Init actions that ended at t = 0
+    /// would otherwise be walked every step). A start with parts adds its slot; stage 2 drops
+    /// the slots it finds done.
+    live: Vec<u32>,
 }
 
 impl ActionTable {
@@ -113,11 +118,20 @@ impl ActionTable {
         ActionId(self.slots.len() as u32 - 1)
     }
 
-    /// Stage 2: advances every running part by one step from `now` over `dt`.
+    /// Marks slot `id` as possibly running (after its start set its parts).
+    fn mark_live(&mut self, id: ActionId) {
+        if let Err(at) = self.live.binary_search(&id.0) {
+            self.live.insert(at, id.0);
+        }
+    }
+
+    /// Stage 2: advances every running part by one step from `now` over `dt`, in slot order.
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) {
         self.synchronize_along_trajectories();
-        for (index, slot) in self.slots.iter_mut().enumerate() {
-            let id = ActionId(index as u32);
+        let mut live = std::mem::take(&mut self.live);
+        live.retain(|&index| {
+            let slot = &mut self.slots[index as usize];
+            let id = ActionId(index);
             for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
                 let next = match part {
                     Part::Done(_) => continue,
@@ -137,7 +151,11 @@ impl ActionTable {
                     *part = Part::Done(next);
                 }
             }
-        }
+            slot.parts
+                .iter()
+                .any(|p| p.status() == ActionStatus::Running)
+        });
+        self.live = live;
         // Which domain's action comes first in the storyboard, for the controller's choice of
         // speed: action ids number the actions in document order (runtime/build.rs).
         for e in world.entities.iter_mut() {
@@ -155,8 +173,11 @@ impl ActionTable {
     /// Gives every running SynchronizeAction its actor's remaining distance along the
     /// trajectory the actor follows, if it follows one (synchronize.rs).
     fn synchronize_along_trajectories(&mut self) {
+        // Synchronize and Trajectory parts run: only the live slots can hold them (in slot
+        // order, so the first trajectory found is the same).
         let mut syncs = Vec::new();
-        for (i, slot) in self.slots.iter().enumerate() {
+        for &i in &self.live {
+            let (i, slot) = (i as usize, &self.slots[i as usize]);
             for (j, (part, &actor)) in slot.parts.iter().zip(&slot.actors).enumerate() {
                 if let Part::Synchronize(s) = part {
                     syncs.push((i, j, actor, s.target_point()));
@@ -165,8 +186,9 @@ impl ActionTable {
         }
         for (i, j, actor, (x, y)) in syncs {
             let along = self
-                .slots
+                .live
                 .iter()
+                .map(|&k| &self.slots[k as usize])
                 .flat_map(|slot| slot.parts.iter().zip(&slot.actors))
                 .find_map(|(part, &a)| match part {
                     Part::Trajectory(t) if a == actor => Some(t.remaining_to(x, y)),
@@ -547,6 +569,7 @@ impl Host<'_> {
                     parts.push(self.start_private(id, p, actor)?);
                 }
                 self.table.slots[id.0 as usize].parts = parts;
+                self.table.mark_live(id);
             }
             ActionKind::Global(g) => {
                 self.start_global(id, g)?;

@@ -17,8 +17,10 @@ use opendrive::{normalize_angle, Direction, Real, Road, RoadNetwork};
 use super::lane_change;
 use super::route::RouteFollow;
 use crate::domain::{Acceleration6d, Vector3, Velocity6d};
-use crate::runtime::entity::{Entity, LaneTrack};
-use crate::runtime::lanes::{advance, curvature, road_position};
+use crate::runtime::entity::{CurvatureAt, Entity, LaneTrack};
+use crate::runtime::lanes::{
+    advance, curvature_with_heading, set_road_position, track_curvature, track_span,
+};
 
 /// Moves entity `e` over one step of `dt` s: position, heading, road position, velocity,
 /// acceleration, yaw rate and odometer. `travel`, when given, is the distance to travel (a
@@ -67,67 +69,65 @@ pub(crate) fn measure(e: &mut Entity, old_h: Real, old_v: Real, dt: Real) {
 }
 
 /// Moves `e` over `dt` s at `speed`: along its lane track, or straight along its heading.
+/// The track is changed where it lies in the entity (no copy of it per step).
 fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
     let distance = speed * dt;
-    match e.track.take() {
-        Some(mut track) => {
-            if let Some(follow) = &mut e.route_follow {
-                let lateral_free = e.lateral_action.is_none();
-                let at = (e.odometer, speed, dt);
-                follow_route(net, follow, &mut track, lateral_free, at);
-            }
-            let signed = if distance >= 0.0 {
-                distance
-            } else {
-                track.direction = track.direction.reverse();
-                -distance
-            };
-            let road_scale = net
-                .road(&track.road_id)
-                .map_or(1.0, |r| along_scale(r, track.s, track.t));
-            // The speed is along the path: a lateral transition moving sideways at x·v leaves
-            // v·√(1 − x²) along the lane (x taken over the step: mean of its start and end).
-            let end_share = net
-                .road(&track.road_id)
-                .and_then(|r| lateral(r, &track))
-                .map_or(0.0, |(_, _, x)| x);
-            let x = (0.5 * (e.lateral_slope + end_share)).clamp(-1.0, 1.0);
-            let along = signed * (1.0 - x * x).sqrt();
-            // Reversing runs the route backwards: no route successor is on offer then.
-            let left = match &mut e.route_follow {
-                Some(follow) if distance >= 0.0 => {
-                    advance(net, &mut track, along * road_scale, &mut |road, c| {
-                        follow.choose(net, road, c)
-                    })
-                }
-                _ => advance(net, &mut track, along * road_scale, &mut |_, _| None),
-            };
-            if distance < 0.0 {
-                track.direction = track.direction.reverse();
-            }
-            e.odometer += signed - (left / road_scale).min(signed);
-            // The lane ends with no successor: after a second step standing at its end the
-            // entity stops (speed 0), as in esmini's runs.
-            let blocked = left > 0.0 && left >= along * road_scale - 1e-9;
-            if blocked && e.at_lane_end {
-                e.speed = 0.0;
-            }
-            e.at_lane_end = blocked;
-            place_on_track(net, e, &mut track);
-            e.track = Some(track);
-        }
-        None => {
-            e.pose.x += distance * e.pose.h.cos();
-            e.pose.y += distance * e.pose.h.sin();
-            e.odometer += distance.abs();
-            e.road_position = net.locate(e.pose.x, e.pose.y, Some(e.pose.h));
-        }
+    let Some(track) = e.track.as_mut() else {
+        e.pose.x += distance * e.pose.h.cos();
+        e.pose.y += distance * e.pose.h.sin();
+        e.odometer += distance.abs();
+        e.road_position = net.locate(e.pose.x, e.pose.y, Some(e.pose.h));
+        return;
+    };
+    if let Some(follow) = &mut e.route_follow {
+        let lateral_free = e.lateral_action.is_none();
+        let at = (e.odometer, speed, dt);
+        follow_route(net, follow, track, lateral_free, at);
     }
+    let signed = if distance >= 0.0 {
+        distance
+    } else {
+        track.direction = track.direction.reverse();
+        -distance
+    };
+    let road = net.road_at(track.road);
+    let road_scale = along_scale(track_curvature(road, track), track.t);
+    // The speed is along the path: a lateral transition moving sideways at x·v leaves
+    // v·√(1 − x²) along the lane (x taken over the step: mean of its start and end). Without
+    // a transition the share is 0.
+    let end_share = match track.blend {
+        Some(_) => lateral(road, track).map_or(0.0, |(_, _, x)| x),
+        None => 0.0,
+    };
+    let x = (0.5 * (e.lateral_slope + end_share)).clamp(-1.0, 1.0);
+    let along = signed * (1.0 - x * x).sqrt();
+    // Reversing runs the route backwards: no route successor is on offer then.
+    let left = match &mut e.route_follow {
+        Some(follow) if distance >= 0.0 => {
+            advance(net, track, along * road_scale, &mut |road, c| {
+                follow.choose(net, road, c)
+            })
+        }
+        _ => advance(net, track, along * road_scale, &mut |_, _| None),
+    };
+    if distance < 0.0 {
+        track.direction = track.direction.reverse();
+    }
+    e.odometer += signed - (left / road_scale).min(signed);
+    // The lane ends with no successor: after a second step standing at its end the entity
+    // stops (speed 0), as in esmini's runs.
+    let blocked = left > 0.0 && left >= along * road_scale - 1e-9;
+    if blocked && e.at_lane_end {
+        e.speed = 0.0;
+    }
+    e.at_lane_end = blocked;
+    place_on_track(net, e);
 }
 
-/// Ratio of reference-line length to travelled length at lateral position t: 1 / (1 − κ·t).
-fn along_scale(road: &Road, s: Real, t: Real) -> Real {
-    let k = 1.0 - curvature(road, s) * t;
+/// Ratio of reference-line length to travelled length at lateral position t where the
+/// reference line's curvature is `curvature`: 1 / (1 − κ·t).
+fn along_scale(curvature: Real, t: Real) -> Real {
+    let k = 1.0 - curvature * t;
     if k > 0.1 {
         1.0 / k
     } else {
@@ -154,12 +154,10 @@ fn follow_route(
     }
     if follow.change.is_none() && track.blend.is_none() && distance != 0.0 {
         if let Some(lane) = follow.needed_lane(net, track) {
-            let room = net
-                .road(&track.road_id)
-                .map_or(0.0, |r| match track.direction {
-                    Direction::Forward => r.length - track.s,
-                    Direction::Backward => track.s,
-                });
+            let room = match track.direction {
+                Direction::Forward => net.road_at(track.road).length - track.s,
+                Direction::Backward => track.s,
+            };
             follow.change = lane_change::begin(net, track, lane, speed, odometer, room);
         }
     }
@@ -173,8 +171,9 @@ fn follow_route(
 /// Lateral position t of a track at its s, the slope dt/ds of the path it follows there (the
 /// lane centre plus offset, or the blend of a lateral transition), and the lateral transition's
 /// share of the motion: lateral speed / speed (0 without a transition).
-fn lateral(road: &Road, track: &LaneTrack) -> Option<(Real, Real, Real)> {
-    let span = road.lane_span(track.lane_id, track.s).ok()?;
+fn lateral(road: &Road, track: &mut LaneTrack) -> Option<(Real, Real, Real)> {
+    let lane = track.lane_id;
+    let span = track_span(road, track, lane).ok()?;
     let target = span.center() + track.offset;
     let Some(b) = track.blend else {
         return Some((target, span.d_center(), 0.0));
@@ -191,11 +190,12 @@ fn lateral(road: &Road, track: &LaneTrack) -> Option<(Real, Real, Real)> {
     Some((t, slope, ((target - t0) * b.weight_per_m).atan().sin()))
 }
 
-/// Sets t, pose and road position of `e` from its track after a move.
-pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity, track: &mut LaneTrack) {
-    let Some(road) = net.road(&track.road_id) else {
+/// Sets t, pose and road position of `e` from its track after a move (nothing without one).
+pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity) {
+    let Some(track) = e.track.as_mut() else {
         return;
     };
+    let road = net.road_at(track.road);
     let Some((t, dt_ds, share)) = lateral(road, track) else {
         return;
     };
@@ -203,7 +203,14 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity, track: &mut Lane
     let Ok(mut pose) = road.pose(track.s, t) else {
         return;
     };
-    let k = curvature(road, track.s);
+    // The pose's heading is the reference line's at s; the next move starts here and reads
+    // the curvature back (runtime/entity.rs CurvatureAt).
+    let k = curvature_with_heading(road, track.s, pose.h);
+    track.curvature = Some(CurvatureAt {
+        road: track.road,
+        s_bits: track.s.to_bits(),
+        value: k,
+    });
     let slope = dt_ds.atan2(1.0 - k * t);
     let road_h = pose.h;
     pose.h = match track.direction {
@@ -214,7 +221,12 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity, track: &mut Lane
     };
     e.pose = pose;
     e.lateral_slope = share;
-    e.road_position = road_position(net, track, normalize_angle(pose.h - road_h));
+    set_road_position(
+        net,
+        track,
+        normalize_angle(pose.h - road_h),
+        &mut e.road_position,
+    );
 }
 
 fn sign(d: Direction) -> Real {

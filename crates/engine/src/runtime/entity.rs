@@ -7,7 +7,7 @@
 
 use std::collections::BTreeMap;
 
-use opendrive::{Direction, Pose, Real, RoadPosition};
+use opendrive::{Direction, LaneSpan, Pose, Real, RoadHandle, RoadPosition};
 use scenario::{LightState, ObjectType, Performance, VehicleCategory};
 
 use crate::actions::ControllerOverrides;
@@ -77,6 +77,10 @@ impl Default for Visibility {
 pub(crate) struct LaneTrack {
     /// Road id.
     pub road_id: String,
+    /// The same road as `road_id`, by handle: the step finds the road without hashing its id.
+    /// The track's two writers (`world::place_on_lane`, which makes it, and
+    /// `lanes::advance`, which carries it onto the next road) set both.
+    pub road: RoadHandle,
     /// Lane id followed.
     pub lane_id: i32,
     /// s along the road's reference line (m).
@@ -91,6 +95,55 @@ pub(crate) struct LaneTrack {
     pub relative_heading: Real,
     /// A lateral transition in progress (lane change or lane offset), if any.
     pub blend: Option<Blend>,
+    /// The reference line's curvature at the track's s, as the last move computed it there
+    /// (runtime/lanes.rs `curvature`; `None` until then).
+    pub(crate) curvature: Option<CurvatureAt>,
+    /// The followed lane's span and the lane look-up over an s-range where the road's lanes do
+    /// not change (runtime/lanes.rs; `None` where they do).
+    pub(crate) lanes: Option<LanesMemo>,
+}
+
+/// Lane answers that stay the same over an s-range of one road
+/// ([`Road::constant_lanes`](opendrive::Road::constant_lanes): every lane border is the same
+/// number at every s there), kept while the track moves inside it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct LanesMemo {
+    /// The road.
+    pub(crate) road: RoadHandle,
+    /// The s-range.
+    pub(crate) lo: Real,
+    /// The s-range's end.
+    pub(crate) hi: Real,
+    /// The lane whose span is kept.
+    pub(crate) lane: i32,
+    /// Its span.
+    pub(crate) span: LaneSpan,
+    /// `lanes::lane_at` at the lateral position with these bits, once asked.
+    pub(crate) at: Option<(u64, Option<(i32, Real)>)>,
+}
+
+/// The reference line's curvature of one road at one s (`lanes::curvature`, a pure function
+/// of both): a move ends by computing it where the entity now stands, and the next move starts
+/// there, so it is computed once per step instead of twice. Keyed by road and the bits of s,
+/// so that a track moved by anything else (an action, a teleport) never reads a stale value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct CurvatureAt {
+    /// The road.
+    pub(crate) road: RoadHandle,
+    /// `s.to_bits()`.
+    pub(crate) s_bits: u64,
+    /// The curvature (1/m).
+    pub(crate) value: Real,
+}
+
+impl LaneTrack {
+    /// The curvature memo, if it holds the track's road and s.
+    #[inline]
+    pub(crate) fn curvature_here(&self) -> Option<Real> {
+        self.curvature
+            .filter(|c| c.road == self.road && c.s_bits == self.s.to_bits())
+            .map(|c| c.value)
+    }
 }
 
 /// A lateral transition from one (lane, offset) to the track's own: the lateral position is
@@ -237,14 +290,26 @@ impl Entity {
     /// The vector of length `value` along the direction of travel, in the entity's axes (see
     /// [`Entity::travel_velocity`]).
     pub fn along_travel(&self, value: Real) -> Vector3 {
-        let rel = self.track.as_ref().map_or(0.0, |t| t.relative_heading);
-        Vector3::new(value * rel.cos(), -value * rel.sin(), 0.0)
+        let (cos, sin) = self.travel_cos_sin();
+        Vector3::new(value * cos, -value * sin, 0.0)
     }
 
     /// Component of `v` (entity axes) along the direction of travel.
     pub fn travel_component(&self, v: Vector3) -> Real {
+        let (cos, sin) = self.travel_cos_sin();
+        v.x * cos - v.y * sin
+    }
+
+    /// Cosine and sine of the heading relative to the direction of travel; for the common 0
+    /// (±0) without calling them, with the same values (cos ±0 = 1, sin ±0 = ±0).
+    #[inline]
+    fn travel_cos_sin(&self) -> (Real, Real) {
         let rel = self.track.as_ref().map_or(0.0, |t| t.relative_heading);
-        v.x * rel.cos() - v.y * rel.sin()
+        if rel == 0.0 {
+            (1.0, rel)
+        } else {
+            (rel.cos(), rel.sin())
+        }
     }
 
     /// Maximum speed (m/s): the performance limit, unlimited for non-vehicles.

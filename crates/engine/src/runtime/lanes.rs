@@ -6,9 +6,11 @@
 //! Written here because the road crate answers single queries (pose, span, successors) and the
 //! runtime needs them combined per step; it adds no geometry of its own.
 
-use opendrive::{angle_difference, Direction, LaneHandle, Real, Road, RoadNetwork, RoadPosition};
+use opendrive::{
+    angle_difference, Direction, LaneHandle, LaneSpan, Real, Road, RoadNetwork, RoadPosition,
+};
 
-use super::entity::LaneTrack;
+use super::entity::{LaneTrack, LanesMemo};
 
 /// Step (m) of the finite difference that gives the reference line's curvature.
 const CURVATURE_STEP: Real = 0.01;
@@ -18,44 +20,140 @@ const MAX_HOPS: usize = 16;
 /// The drivable lane of `road` whose borders enclose `t` at `s`, with the offset from its
 /// centre; beyond the drivable lanes, the nearest one (so an entity on the shoulder keeps its
 /// driving lane, with a large offset). Roads without drivable lanes use every lane. Lane 0
-/// (the centre lane, zero width) is never chosen.
+/// (the centre lane, zero width) is never chosen. Where two lanes are equally near (`t` on
+/// the marking between them) the first in the section's order (left lanes outermost first,
+/// then right lanes innermost first, [`LaneSection::lanes`](opendrive::LaneSection::lanes))
+/// wins.
+///
+/// One pass over the section's spans ([`Road::lane_spans`]: each lane's inner border is its
+/// neighbour's outer one), every step for every entity: the per-lane look-up it replaces
+/// summed the inner lanes' widths again for each lane.
 pub fn lane_at(road: &Road, s: Real, t: Real) -> Option<(i32, Real)> {
-    let section = road.lane_section_at(s);
-    let nearest = |drivable_only: bool| {
-        let mut best: Option<(Real, i32, Real)> = None;
-        for lane in section
-            .lanes()
-            .filter(|l| l.id != 0 && (!drivable_only || l.lane_type.is_drivable()))
-        {
-            let Ok(span) = road.lane_span(lane.id, s) else {
-                continue;
-            };
-            let (lo, hi) = if span.inner <= span.outer {
-                (span.inner, span.outer)
-            } else {
-                (span.outer, span.inner)
-            };
-            let gap = (lo - t).max(t - hi).max(0.0);
-            if best.map_or(true, |(g, _, _)| gap < g) {
-                best = Some((gap, lane.id, t - span.center()));
-            }
+    let left = road.lane_section_at(s).left.len() as i64;
+    // (gap, place in the section's order, id, offset) of the nearest drivable lane and of the
+    // nearest lane of any type.
+    type Best = Option<(Real, i64, i32, Real)>;
+    let (mut drivable, mut any): (Best, Best) = (None, None);
+    let keep = |best: &mut Best, candidate: (Real, i64, i32, Real)| {
+        if best.map_or(true, |(g, order, _, _)| {
+            candidate.0 < g || (candidate.0 == g && candidate.1 < order)
+        }) {
+            *best = Some(candidate);
         }
-        best.map(|(_, id, offset)| (id, offset))
     };
-    nearest(true).or_else(|| nearest(false))
+    road.lane_spans(s, |lane, span| {
+        if lane.id == 0 {
+            return;
+        }
+        let (lo, hi) = if span.inner <= span.outer {
+            (span.inner, span.outer)
+        } else {
+            (span.outer, span.inner)
+        };
+        let gap = (lo - t).max(t - hi).max(0.0);
+        // Place in LaneSection::lanes order: left lanes from the outermost (id = left, place
+        // 0) inwards, the centre lane (place `left`), then the right lanes outwards.
+        let order = left - i64::from(lane.id);
+        let candidate = (gap, order, lane.id, t - span.center());
+        if lane.lane_type.is_drivable() {
+            keep(&mut drivable, candidate);
+        }
+        keep(&mut any, candidate);
+    })
+    .ok()?;
+    drivable.or(any).map(|(_, _, id, offset)| (id, offset))
 }
 
 /// Curvature (1/m) of the reference line of `road` at `s`, by a forward (or, at the road's
 /// end, backward) difference of the heading.
 pub fn curvature(road: &Road, s: Real) -> Real {
-    let (a, b) = if s + CURVATURE_STEP <= road.length {
+    road.heading(s)
+        .map_or(0.0, |h| curvature_with_heading(road, s, h))
+}
+
+/// [`curvature`] given the reference line's heading at `s` (the `h` of any [`Road::pose`] at
+/// that `s`, which does not depend on t): one pose less to evaluate, the same value bit for
+/// bit.
+pub(crate) fn curvature_with_heading(road: &Road, s: Real, heading: Real) -> Real {
+    let forward = s + CURVATURE_STEP <= road.length;
+    let (a, b) = if forward {
         (s, s + CURVATURE_STEP)
     } else {
         ((s - CURVATURE_STEP).max(0.0), s)
     };
-    match (road.pose(a, 0.0), road.pose(b, 0.0)) {
-        (Ok(pa), Ok(pb)) if b > a => angle_difference(pb.h, pa.h) / (b - a),
+    match road.heading(if forward { b } else { a }) {
+        Ok(other) if b > a => {
+            let (ha, hb) = if forward {
+                (heading, other)
+            } else {
+                (other, heading)
+            };
+            angle_difference(hb, ha) / (b - a)
+        }
         _ => 0.0,
+    }
+}
+
+/// [`curvature`] at the track's road and s: the value the last move left there, else
+/// computed.
+pub(crate) fn track_curvature(road: &Road, track: &LaneTrack) -> Real {
+    track
+        .curvature_here()
+        .unwrap_or_else(|| curvature(road, track.s))
+}
+
+/// The track's lane memo, if it holds the track's road and s.
+fn memo(track: &mut LaneTrack) -> Option<&mut LanesMemo> {
+    let (road, s) = (track.road, track.s);
+    track
+        .lanes
+        .as_mut()
+        .filter(|m| m.road == road && m.lo <= s && s <= m.hi)
+}
+
+/// The span of the followed lane `lane` of the track's road at its s ([`Road::lane_span`]):
+/// from the track's memo while the lanes stay the same, else computed, and the memo made anew
+/// where the lanes are constant around s.
+pub(crate) fn track_span(
+    road: &Road,
+    track: &mut LaneTrack,
+    lane: i32,
+) -> Result<LaneSpan, opendrive::Error> {
+    let s = track.s;
+    if let Some(m) = memo(track) {
+        if m.lane != lane {
+            // Another lane followed (a lane change ended): its span from now on.
+            m.span = road.lane_span(lane, s)?;
+            m.lane = lane;
+        }
+        return Ok(m.span);
+    }
+    let span = road.lane_span(lane, s)?;
+    track.lanes = road.constant_lanes(track.s).map(|(lo, hi)| LanesMemo {
+        road: track.road,
+        lo,
+        hi,
+        lane,
+        span,
+        at: None,
+    });
+    Ok(span)
+}
+
+/// [`lane_at`] at the track's road, s and t: from the memo while the lanes and t stay the
+/// same.
+pub(crate) fn track_lane_at(road: &Road, track: &mut LaneTrack) -> Option<(i32, Real)> {
+    let (s, t) = (track.s, track.t);
+    let Some(m) = memo(track) else {
+        return lane_at(road, s, t);
+    };
+    match m.at {
+        Some((bits, found)) if bits == t.to_bits() => found,
+        _ => {
+            let found = lane_at(road, s, t);
+            m.at = Some((t.to_bits(), found));
+            found
+        }
     }
 }
 
@@ -89,9 +187,7 @@ pub fn advance(
     prefer: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
 ) -> Real {
     for _ in 0..MAX_HOPS {
-        let Some(road) = net.road(&track.road_id) else {
-            return distance;
-        };
+        let road = net.road_at(track.road);
         let sign = if track.direction == Direction::Forward {
             1.0
         } else {
@@ -99,13 +195,13 @@ pub fn advance(
         };
         let target = track.s + sign * distance;
         if (0.0..=road.length).contains(&target) {
-            cross_sections(net, track, target);
+            cross_sections(net, road, track, target);
             track.s = target;
             return 0.0;
         }
         let end = if sign > 0.0 { road.length } else { 0.0 };
         distance -= (end - track.s).abs();
-        cross_sections(net, track, end);
+        cross_sections(net, road, track, end);
         track.s = end;
         let Some(handle) = net.lane_handle(&track.road_id, track.lane_id, end) else {
             return distance;
@@ -131,6 +227,7 @@ pub fn advance(
             }
         }
         track.road_id.clone_from(&next_road.id);
+        track.road = next.road_handle();
         track.lane_id = next.lane;
         if let Some(b) = &mut track.blend {
             b.from_lane = next.lane;
@@ -184,9 +281,13 @@ pub fn carry_lane(
     h.lane
 }
 
-/// Carries the lane `track` follows, and the lane a lateral transition comes from, from its s
-/// to s `to` across lane sections ([`carry_lane`]).
-fn cross_sections(net: &RoadNetwork, track: &mut LaneTrack, to: Real) {
+/// Carries the lane `track` follows (on `road`), and the lane a lateral transition comes
+/// from, from its s to s `to` across lane sections ([`carry_lane`]); within one lane section
+/// (most steps) both stay as they are.
+fn cross_sections(net: &RoadNetwork, road: &Road, track: &mut LaneTrack, to: Real) {
+    if road.lane_section_index(track.s) == road.lane_section_index(to) {
+        return;
+    }
     let carry = |lane| carry_lane(net, &track.road_id, lane, track.s, to, track.direction);
     let lane = carry(track.lane_id);
     let from = track.blend.map(|b| carry(b.from_lane));
@@ -212,23 +313,56 @@ fn anchor_blend(road: &Road, track: &mut LaneTrack, s: Real) {
     }
 }
 
-/// A road position built from a lane track (no look-up: the track knows its road);
-/// `relative_heading` is the entity's heading minus the road's.
-pub fn road_position(
+/// Sets `out` to the road position of `track` (no look-up: the track knows its road);
+/// `relative_heading` is the entity's heading minus the road's. The strings of the position
+/// `out` held are reused, so that a step allocates nothing. `None` where the track's lane
+/// section has no lanes at its s.
+pub fn set_road_position(
     net: &RoadNetwork,
-    track: &LaneTrack,
+    track: &mut LaneTrack,
     relative_heading: Real,
-) -> Option<RoadPosition> {
-    let road = net.road(&track.road_id)?;
-    let (lane_id, offset) = lane_at(road, track.s, track.t)?;
-    Some(RoadPosition {
-        road_id: track.road_id.clone(),
-        lane_id,
-        s: track.s,
-        t: track.t,
-        offset,
-        junction_id: road.junction.clone(),
-        relative_heading,
-        distance: 0.0,
-    })
+    out: &mut Option<RoadPosition>,
+) {
+    let road = net.road_at(track.road);
+    let Some((lane_id, offset)) = track_lane_at(road, track) else {
+        *out = None;
+        return;
+    };
+    let Some(rp) = out else {
+        *out = Some(RoadPosition {
+            road_id: track.road_id.clone(),
+            lane_id,
+            s: track.s,
+            t: track.t,
+            offset,
+            junction_id: road.junction.clone(),
+            relative_heading,
+            distance: 0.0,
+        });
+        return;
+    };
+    // In place (every field named, so that a new one cannot be missed); the ids are copied
+    // only when the road changed.
+    let RoadPosition {
+        road_id: rp_road,
+        lane_id: rp_lane,
+        s: rp_s,
+        t: rp_t,
+        offset: rp_offset,
+        junction_id: rp_junction,
+        relative_heading: rp_heading,
+        distance: rp_distance,
+    } = rp;
+    if *rp_road != track.road_id {
+        rp_road.clone_from(&track.road_id);
+        rp_junction.clone_from(&road.junction);
+    } else if *rp_junction != road.junction {
+        rp_junction.clone_from(&road.junction);
+    }
+    *rp_lane = lane_id;
+    *rp_s = track.s;
+    *rp_t = track.t;
+    *rp_offset = offset;
+    *rp_heading = relative_heading;
+    *rp_distance = 0.0;
 }

@@ -179,9 +179,11 @@ pub(crate) fn place_on_lane(
             normalize_angle(rel - std::f64::consts::PI - slope),
         )
     };
-    if on_road {
+    let road = net.road_handle(&rp.road_id);
+    if let (true, Some(road)) = (on_road, road) {
         e.track = Some(LaneTrack {
             road_id: rp.road_id.clone(),
+            road,
             lane_id: rp.lane_id,
             s: rp.s,
             t: rp.t,
@@ -189,6 +191,8 @@ pub(crate) fn place_on_lane(
             direction,
             relative_heading: along,
             blend: None,
+            curvature: None,
+            lanes: None,
         });
     }
     e.road_position = Some(rp);

@@ -193,7 +193,7 @@ pub(crate) fn step_longitudinal(
 fn shift_along_lane(world: &mut World, actor: EntityId, forward: f64) {
     let net = &world.network;
     let e = &mut world.entities[actor.index()];
-    let Some(mut track) = e.track.take() else {
+    let Some(track) = e.track.as_mut() else {
         e.pose.x += forward * e.pose.h.cos();
         e.pose.y += forward * e.pose.h.sin();
         e.road_position = net.locate(e.pose.x, e.pose.y, Some(e.pose.h));
@@ -206,6 +206,5 @@ fn shift_along_lane(world: &mut World, actor: EntityId, forward: f64) {
     };
     let length = net.road(&track.road_id).map_or(f64::INFINITY, |r| r.length);
     track.s = (track.s + forward * sign).clamp(0.0, length);
-    place_on_track(net, e, &mut track);
-    e.track = Some(track);
+    place_on_track(net, e);
 }

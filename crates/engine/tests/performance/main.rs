@@ -1,0 +1,136 @@
+//! Issue 17 "no allocation in the step for a scenario whose entity set does not change": the
+//! step of the scale highway (tests/support/scale.rs) is run under a counting global
+//! allocator. Speed itself is measured in the benchmarks (benches/scale.rs), not here.
+//!
+//! Its own test target because the counting allocator is the whole binary's: the tests of this
+//! target run one at a time (a lock) so that each counts only its own steps.
+
+#[path = "../support/scale.rs"]
+mod scale;
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+
+use engine::output::CsvWriter;
+use engine::{Engine, EngineConfig};
+
+/// The system allocator, counting allocations and reallocations.
+struct Counting;
+
+static ALLOCATIONS: AtomicU64 = AtomicU64::new(0);
+
+// SAFETY: every call is forwarded unchanged to the system allocator; the counter is atomic.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        // SAFETY: the caller's contract is passed on.
+        unsafe { System.alloc(layout) }
+    }
+
+    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        // SAFETY: as above.
+        unsafe { System.alloc_zeroed(layout) }
+    }
+
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        // SAFETY: as above.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: as above.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// One test at a time: the counter is global.
+static SERIAL: Mutex<()> = Mutex::new(());
+
+/// Vehicles of the test's highway (enough for every lane to hold many; the per-entity work is
+/// the same as with 1,000).
+const VEHICLES: usize = 200;
+/// Steps before counting: the first step runs the Init actions and writes the t = 0 frame, and
+/// buffers reach their working size.
+const WARM_UP: usize = 5;
+/// Steps counted.
+const COUNTED: usize = 100;
+
+/// Allocations made by `f`.
+fn allocations(f: impl FnOnce()) -> u64 {
+    let before = ALLOCATIONS.load(Ordering::Relaxed);
+    f();
+    ALLOCATIONS.load(Ordering::Relaxed) - before
+}
+
+fn engine(what: &str) -> (Engine, std::path::PathBuf) {
+    let dir = scale::scratch(what);
+    let path = scale::write_scale(&dir, VEHICLES, 300.0);
+    let engine = Engine::load(&path, &[], EngineConfig::default()).expect("the highway loads");
+    (engine, dir)
+}
+
+/// The default controller's step over 200 vehicles on the highway, no output: not one
+/// allocation in 100 steps once warm (before this issue: two strings per entity per step for
+/// its road position, among others).
+#[test]
+fn the_step_allocates_nothing() {
+    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let (mut engine, dir) = engine("alloc-step");
+    for _ in 0..WARM_UP {
+        engine.step(&mut (), &mut ()).expect("steps");
+    }
+    let n = allocations(|| {
+        for _ in 0..COUNTED {
+            assert_eq!(engine.step(&mut (), &mut ()).expect("steps"), None);
+        }
+    });
+    assert_eq!(
+        n, 0,
+        "allocations in {COUNTED} steps of {VEHICLES} vehicles"
+    );
+    // The run went on: 105 steps at 0.05 s.
+    assert!((engine.time() - 5.25).abs() < 1e-9, "{}", engine.time());
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+/// With the trajectory CSV (rows formatted in a reused buffer, output/fixed.rs) the step
+/// allocates nothing either; the bytes go to a sink so that no growing buffer is counted.
+#[test]
+fn the_csv_writer_allocates_nothing() {
+    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let (mut engine, dir) = engine("alloc-csv");
+    let mut csv = CsvWriter::new(std::io::sink());
+    for _ in 0..WARM_UP {
+        engine.step(&mut csv, &mut ()).expect("steps");
+    }
+    let n = allocations(|| {
+        for _ in 0..COUNTED {
+            engine.step(&mut csv, &mut ()).expect("steps");
+        }
+    });
+    assert_eq!(n, 0, "allocations in {COUNTED} steps with CSV");
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+/// The counter counts: building the engine allocates (so a zero above is not a counter that
+/// never moves).
+#[test]
+fn the_counter_sees_allocations() {
+    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let mut n = 0;
+    let dir = scale::scratch("alloc-load");
+    let path = scale::write_scale(&dir, 4, 1.0);
+    let count = allocations(|| {
+        let engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+        n = engine.world().entities().len();
+    });
+    assert_eq!(n, 4);
+    assert!(count > 100, "{count}");
+    let _ = std::fs::remove_dir_all(dir);
+}
