@@ -1,14 +1,16 @@
 //! What `oscsim run` records for the replay: with `--csv`, the run manifest `NAME.run.json`
 //! beside the CSV (entity boxes, kinds, colours, trailers, road network, the conditions'
 //! measured quantities, action actors); with `--html`, the replay page, from the run kept in
-//! memory.
+//! memory. Only the page needs the run in memory: for the manifest alone the frames feed the
+//! entity catalog, so the memory of a `--csv` run stays flat however long it runs (issue 17).
 
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
 use engine::{EngineConfig, EventRecord, EventSink, Frame, FrameSink};
-use replay::recorder::{EventRecorder, Recorder};
+use replay::manifest::EntityInfo;
+use replay::recorder::{EntityCatalog, EventRecorder, Recorder};
 use replay::RunManifest;
 
 /// `oscsim run`'s replay flags.
@@ -20,10 +22,26 @@ pub struct ReplayArgs {
 }
 
 /// The run's recording, shared between the sinks the engine feeds and the end of the run.
-#[derive(Default)]
 struct Shared {
-    frames: Recorder,
-    events: EventRecorder,
+    frames: FrameRecord,
+    /// The event log, for the page only.
+    events: Option<EventRecorder>,
+}
+
+/// What the frames feed: the whole run for the page, else the catalog the manifest needs.
+enum FrameRecord {
+    Run(Recorder),
+    Catalog(EntityCatalog),
+}
+
+impl FrameRecord {
+    /// The CSV text (empty without the page) and the entities seen.
+    fn into_parts(self) -> (Vec<u8>, Vec<EntityInfo>) {
+        match self {
+            FrameRecord::Run(r) => r.into_parts(),
+            FrameRecord::Catalog(c) => (Vec::new(), c.into_entities()),
+        }
+    }
 }
 
 /// Records the run when the manifest or the page is wanted.
@@ -37,7 +55,10 @@ struct Frames(Rc<RefCell<Shared>>);
 
 impl FrameSink for Frames {
     fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
-        self.0.borrow_mut().frames.frame(frame)
+        match &mut self.0.borrow_mut().frames {
+            FrameRecord::Run(r) => r.frame(frame),
+            FrameRecord::Catalog(c) => c.frame(frame),
+        }
     }
 }
 
@@ -46,16 +67,29 @@ pub struct Events(Rc<RefCell<Shared>>);
 
 impl EventSink for Events {
     fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
-        self.0.borrow_mut().events.event(record)
+        match &mut self.0.borrow_mut().events {
+            Some(events) => events.event(record),
+            None => Ok(()),
+        }
     }
 }
 
 impl RunRecord {
     /// Records when `args` asks for a page or the run writes a CSV (its manifest).
     pub fn new(args: &ReplayArgs, csv: Option<&Path>) -> Self {
-        let wanted = args.html.is_some() || csv.is_some();
+        let page = args.html.is_some();
+        let shared = (page || csv.is_some()).then(|| {
+            Rc::new(RefCell::new(Shared {
+                frames: if page {
+                    FrameRecord::Run(Recorder::new())
+                } else {
+                    FrameRecord::Catalog(EntityCatalog::new())
+                },
+                events: page.then(EventRecorder::default),
+            }))
+        });
         RunRecord {
-            shared: wanted.then(|| Rc::new(RefCell::new(Shared::default()))),
+            shared,
             html: args.html.clone(),
         }
     }
@@ -111,7 +145,7 @@ impl RunRecord {
                 params,
                 config,
                 (&csv_text, entities),
-                &shared.events.into_inner(),
+                &shared.events.unwrap_or_default().into_inner(),
             )?;
             replay::html::write(&run, &html)?;
         }
