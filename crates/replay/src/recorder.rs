@@ -3,8 +3,6 @@
 //! trajectory CSV and the event log in memory, written by the engine's own writers, so that
 //! a replay of a scenario run here reads exactly what `oscsim run` would have written.
 
-use std::collections::BTreeMap;
-
 use engine::output::{CsvWriter, EntityFrame, JsonlWriter};
 use engine::runtime::EntityKind;
 use engine::{EventRecord, EventSink, Frame, FrameSink};
@@ -42,7 +40,9 @@ fn info(e: &EntityFrame<'_>) -> EntityInfo {
 /// box and kind, a later frame only adds a trailer link made during the run.
 #[derive(Debug, Default)]
 pub struct EntityCatalog {
-    entities: BTreeMap<u32, EntityInfo>,
+    /// By id: the engine's ids index its entity store, so they are dense (a vector instead of
+    /// a map: this runs for every entity of every frame of a `--csv` run).
+    entities: Vec<Option<EntityInfo>>,
 }
 
 impl EntityCatalog {
@@ -53,14 +53,18 @@ impl EntityCatalog {
 
     /// The entities seen, by id.
     pub fn into_entities(self) -> Vec<EntityInfo> {
-        self.entities.into_values().collect()
+        self.entities.into_iter().flatten().collect()
     }
 }
 
 impl FrameSink for EntityCatalog {
     fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
         for e in frame.objects() {
-            let entry = self.entities.entry(e.id).or_insert_with(|| info(&e));
+            let i = e.id as usize;
+            if i >= self.entities.len() {
+                self.entities.resize(i + 1, None);
+            }
+            let entry = self.entities[i].get_or_insert_with(|| info(&e));
             if entry.trailer.is_none() {
                 entry.trailer = e.trailer;
             }

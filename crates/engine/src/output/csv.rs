@@ -19,7 +19,7 @@ pub const HEADER: &str = "time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,spee
 pub struct CsvWriter<W: Write> {
     out: W,
     header_written: bool,
-    /// The row being put together.
+    /// The frame's rows being put together.
     row: Vec<u8>,
 }
 
@@ -42,7 +42,10 @@ impl<W: Write> CsvWriter<W> {
 /// `name` quoted per RFC 4180 when it holds a comma, quote or line break (borrowed, so no
 /// allocation, when it holds none).
 pub(super) fn field(name: &str) -> std::borrow::Cow<'_, str> {
-    if name.contains([',', '"', '\n', '\r']) {
+    if name
+        .bytes()
+        .any(|b| matches!(b, b',' | b'"' | b'\n' | b'\r'))
+    {
         format!("\"{}\"", name.replace('"', "\"\"")).into()
     } else {
         name.into()
@@ -55,13 +58,13 @@ impl<W: Write> FrameSink for CsvWriter<W> {
             writeln!(self.out, "{HEADER}")?;
             self.header_written = true;
         }
-        // Rows are put together in a buffer kept from frame to frame and written in one call:
-        // no allocation per row, the numbers formatted by `fixed` (the bytes of `{:.3}` /
-        // `{:.6}`).
+        // The frame's rows are put together in a buffer kept from frame to frame and written
+        // in one call: no allocation per row once the buffer holds a frame, the numbers
+        // formatted by `fixed` (the bytes of `{:.3}` / `{:.6}`).
         let row = &mut self.row;
+        row.clear();
         let mut ids = itoa::Buffer::new();
         for e in frame.objects() {
-            row.clear();
             let p = e.pose;
             push_fixed(row, frame.time, 3);
             row.push(b',');
@@ -88,9 +91,8 @@ impl<W: Write> FrameSink for CsvWriter<W> {
             }
             push_fixed(row, e.speed, 6);
             row.push(b'\n');
-            self.out.write_all(row)?;
         }
-        Ok(())
+        self.out.write_all(row)
     }
 
     fn finish(&mut self) -> std::io::Result<()> {

@@ -43,13 +43,25 @@ pub fn push_fixed(out: &mut Vec<u8>, x: f64, decimals: usize) {
     if x.is_sign_negative() {
         out.push(b'-');
     }
-    let scale = u128::from(POW10[decimals]);
-    let n = scaled_round(a, scale);
+    let scale = POW10[decimals];
+    let n = scaled_round(a, u128::from(scale));
     let mut digits = itoa::Buffer::new();
-    out.extend_from_slice(digits.format(n / scale).as_bytes());
+    // Integer and fraction digits in 64 bits where the value fits (every value below 1.8e13
+    // at 6 decimals): 128-bit division is several times slower.
+    let frac = match u64::try_from(n) {
+        Ok(n) => {
+            out.extend_from_slice(digits.format(n / scale).as_bytes());
+            n % scale
+        }
+        Err(_) => {
+            let wide = u128::from(scale);
+            out.extend_from_slice(digits.format(n / wide).as_bytes());
+            // Below scale ≤ 10^9: fits in u64.
+            (n % wide) as u64
+        }
+    };
     if decimals > 0 {
         out.push(b'.');
-        let frac = n % scale;
         let text = digits.format(frac).as_bytes();
         out.resize(out.len() + decimals - text.len(), b'0');
         out.extend_from_slice(text);
