@@ -285,7 +285,15 @@ pub fn carry_lane(
 /// from, from its s to s `to` across lane sections ([`carry_lane`]); within one lane section
 /// (most steps) both stay as they are.
 fn cross_sections(net: &RoadNetwork, road: &Road, track: &mut LaneTrack, to: Real) {
-    if road.lane_section_index(track.s) == road.lane_section_index(to) {
+    // carry_lane's own test: the section holding the lane at s (net.lane_handle) is the one
+    // at `to`.
+    let last = road.lane_section_index(to);
+    let stays = |lane| road.lane_section_index_holding(lane, track.s) == last;
+    let blend_stays = match track.blend {
+        Some(b) => stays(b.from_lane),
+        None => true,
+    };
+    if stays(track.lane_id) && blend_stays {
         return;
     }
     let carry = |lane| carry_lane(net, &track.road_id, lane, track.s, to, track.direction);
