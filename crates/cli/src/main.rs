@@ -9,6 +9,7 @@ mod osi_sink;
 mod road;
 mod run;
 mod run_record;
+mod snippet;
 mod step_args;
 mod validate;
 mod view;

@@ -1,8 +1,9 @@
 //! `oscsim validate FILE...`: load each scenario with its catalogs and road network and
-//! report OK or the error (file:line:col, element, what was expected); exit status 1 when
-//! any file fails. `--print` shows the resolved model, `--param NAME=VALUE` overrides a
-//! global parameter (OpenSCENARIO 1.3 §9.1). A `.osc` file is checked as OpenSCENARIO DSL
-//! (`--syntax-only`: parsed only); see `dsl.rs`.
+//! report OK or the error (file:line:col, element, what was expected, and the source lines
+//! with the offending span marked, `snippet.rs`); exit status 1 when any file fails.
+//! `--print` shows the resolved model, `--param NAME=VALUE` overrides a global parameter
+//! (OpenSCENARIO 1.3 §9.1). A `.osc` file is checked as OpenSCENARIO DSL (`--syntax-only`:
+//! parsed only); see `dsl.rs`.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -96,6 +97,9 @@ fn validate_file(file: &Path, args: &ValidateArgs, out: &mut impl Write) -> anyh
         Ok(s) => s,
         Err(e) => {
             writeln!(out, "FAIL {}\n  error: {e}", file.display())?;
+            if let Some(snippet) = crate::snippet::render(&e.to_string(), e.pos()) {
+                write!(out, "{snippet}")?;
+            }
             return Ok(false);
         }
     };
@@ -183,6 +187,24 @@ mod tests {
         assert!(text.starts_with("FAIL "), "{text}");
         assert!(text.contains("expected road network file 'c:/eknabe1/GIT/esmini_dev/resources/xodr/straight_500m.xodr', found no file at "), "{text}");
         assert!(text.contains("car_walk.xosc:10:"), "{text}");
+        // The snippet: line 10 of the file with the LogicFile's filepath value marked (column
+        // 30 to its closing quote, 59 characters), between lines 9 and 11.
+        assert!(text.contains("car_walk.xosc:10:30]"), "{text}");
+        assert!(text.contains(" 9 │     <RoadNetwork>\n"), "{text}");
+        assert!(
+            text.contains(" 10 │         <LogicFile filepath=\"c:/eknabe1/"),
+            "{text}"
+        );
+        // The underline: the gutter's space, 29 characters before column 30, then 59 marks
+        // with the label's ┬ in the middle (29 + 1 + 29).
+        let marks = format!(
+            "·{}{}┬{}\n",
+            " ".repeat(1 + 29),
+            "─".repeat(29),
+            "─".repeat(29)
+        );
+        assert!(text.contains(&marks), "{text}");
+        assert!(text.contains("╰── here"), "{text}");
     }
 
     #[test]
