@@ -62,3 +62,23 @@ fn distribution_truncation_draws_unbounded() {
         path.display()
     )));
 }
+
+/// A DistributionRange of 1.1e83 in steps of 0.3 (3.7e83 values) overflowed the count of its
+/// values (`as u128` saturates, the `+ 1` after it did not): now "too many parameter sets",
+/// the count saturated at u128::MAX, at the range's element.
+#[test]
+fn distribution_range_count_overflows_u128() {
+    let path = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/files/fuzz/distribution_range_count_overflows_u128.xosc"
+    ));
+    let err = DistributionPlan::load(path).unwrap_err();
+    assert!(
+        matches!(
+            err.kind(),
+            DistributionErrorKind::TooManyRuns { found, .. } if *found == u128::MAX
+        ),
+        "{err}"
+    );
+    assert!(err.to_string().contains("parameter sets, found"), "{err}");
+}

@@ -108,8 +108,10 @@ fn range_values(lower: f64, upper: f64, step: f64) -> Result<Vec<String>, Kind> 
     // `steps` is ≥ 0 (upper ≥ lower, step > 0, checked by the reader) and never NaN; it is
     // +∞ when the step is tiny enough for q to overflow.
     if steps >= MAX_RUNS as f64 {
+        // `as` saturates at u128::MAX for a finite q beyond it (1e83 steps), so the + 1 must
+        // too (fuzz finding distribution_range_count_overflows_u128).
         let found = if steps.is_finite() {
-            steps as u128 + 1
+            (steps as u128).saturating_add(1)
         } else {
             u128::MAX
         };
