@@ -2,7 +2,10 @@
 //! (`dsl::syntax::parse`, which never fails), the typed AST walked. Must not panic or hang; the
 //! tokens cover the text exactly, in order; the tree is lossless (its text is the input byte for
 //! byte); every lexer and parser error's range lies inside the text on character boundaries and
-//! renders with its line and column.
+//! renders with its line and column. A text that parses without error is formatted (`fmt`):
+//! the result parses without error to the same tree and formats to itself. Every text is then
+//! checked and resolved (`dsl::check_source_with`, imports unreadable): every semantic error
+//! lies inside the text and renders with its position.
 #![no_main]
 
 use dsl::syntax::{self, AstNode, LineIndex};
@@ -44,5 +47,24 @@ fuzz_target!(|data: &[u8]| {
     for item in file.items() {
         let _ = item.syntax().kind();
     }
-    let _ = syntax::debug_dump(&parse.syntax());
+    let dump = syntax::debug_dump(&parse.syntax());
+    if parse.errors().is_empty() {
+        if let Ok(formatted) = syntax::format(text) {
+            let again = syntax::parse(&formatted);
+            assert!(again.errors().is_empty(), "formatted text has errors");
+            assert_eq!(syntax::debug_dump(&again.syntax()), dump, "fmt changed the tree");
+            assert_eq!(
+                syntax::format(&formatted).ok().as_deref(),
+                Some(formatted.as_str()),
+                "fmt is not idempotent"
+            );
+        }
+    }
+    if let Err(d) = dsl::check_source_with("fuzz.osc", text, &|_| None) {
+        for item in &d.items {
+            let at = d.position(item.span);
+            assert!(!at.starts_with("?:"), "{} points into no file", item.message);
+        }
+        let _ = d.lines();
+    }
 });
