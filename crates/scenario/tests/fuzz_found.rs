@@ -7,6 +7,13 @@ use std::path::Path;
 use scenario::distribution::{DistributionErrorKind, DistributionPlan, MAX_REJECTED_DRAWS};
 use scenario::expr::{evaluate, ExprErrorKind, Value};
 
+/// A file of `tests/files/fuzz/`.
+fn fuzz_file(name: &str) -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/files/fuzz")
+        .join(name)
+}
+
 fn no_parameters(_: &str) -> Option<Value> {
     None
 }
@@ -41,10 +48,7 @@ fn expr_unsigned_product_overflows_i128() {
 /// hang. Discarded draws are now limited over the whole plan.
 #[test]
 fn distribution_truncation_draws_unbounded() {
-    let path = Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/files/fuzz/distribution_truncation_draws_unbounded.xosc"
-    ));
+    let path = &fuzz_file("distribution_truncation_draws_unbounded.xosc");
     let err = DistributionPlan::load(path).unwrap_err();
     assert!(
         matches!(
@@ -68,10 +72,7 @@ fn distribution_truncation_draws_unbounded() {
 /// the count saturated at u128::MAX, at the range's element.
 #[test]
 fn distribution_range_count_overflows_u128() {
-    let path = Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/files/fuzz/distribution_range_count_overflows_u128.xosc"
-    ));
+    let path = &fuzz_file("distribution_range_count_overflows_u128.xosc");
     let err = DistributionPlan::load(path).unwrap_err();
     assert!(
         matches!(
