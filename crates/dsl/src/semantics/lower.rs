@@ -164,15 +164,21 @@ impl Lowerer<'_> {
         };
         let left = self.alternatives(a, env, neg_a)?;
         let right = self.alternatives(b, env, neg_b)?;
-        let out: Vec<Vec<ConstraintKind>> = if join {
+        // Checked before the product is built, so a blow-up is never allocated.
+        let count = if join {
+            left.len() + right.len()
+        } else {
+            left.len() * right.len()
+        };
+        if count > MAX_ALTERNATIVES {
+            return Err(Self::unsupported(
+                e,
+                &format!("more than {MAX_ALTERNATIVES} alternatives of `or`"),
+            ));
+        }
+        Ok(if join {
             left.into_iter().chain(right).collect()
         } else {
-            if left.len() * right.len() > MAX_ALTERNATIVES {
-                return Err(Self::unsupported(
-                    e,
-                    &format!("more than {MAX_ALTERNATIVES} alternatives of `or`"),
-                ));
-            }
             left.iter()
                 .flat_map(|l| {
                     right
@@ -180,14 +186,7 @@ impl Lowerer<'_> {
                         .map(move |r| l.iter().chain(r).cloned().collect())
                 })
                 .collect()
-        };
-        if out.len() > MAX_ALTERNATIVES {
-            return Err(Self::unsupported(
-                e,
-                &format!("more than {MAX_ALTERNATIVES} alternatives of `or`"),
-            ));
-        }
-        Ok(out)
+        })
     }
 
     fn unsupported(e: &TExpr, what: &str) -> Fail {
