@@ -16,6 +16,7 @@
 //! | `modifier` | movement modifiers read (§8.9) |
 //! | `actors` | vehicles and vehicle groups of the plan, their 1.x Vehicle (§8.7.6, §8.7.18) |
 //! | `road` | the road of the plan and the DSL's lane numbering |
+//! | `route` | routes of `along(…)` on the plan's road (§8.9, §8.12) |
 //! | `place` | initial placement from `at: start`/`all` constraints |
 //! | `track` | planned speed profile and lanes of an actor |
 //! | `plan` | phase timing and motion planning |
@@ -36,6 +37,7 @@ mod phase;
 mod place;
 mod plan;
 mod road;
+mod route;
 mod track;
 mod value;
 
@@ -185,17 +187,36 @@ pub fn lower_program(
     };
     let resolution = program.resolve(options.seed).map_err(LoadError::Check)?;
     let ctx = value::Ctx::new(model, &resolution, decl.name.clone(), files, options.seed);
-    let plan_road = road::PlanRoad::pick(road).ok_or_else(|| {
-        LoadError::Plan(files.err(
-            ErrorKind::Road,
-            decl.span,
-            format!(
-                "expected a road with driving lanes in {}, found none",
-                road_path.display()
-            ),
-        ))
-    })?;
     let phases = phase::build(&ctx, root, "do".into()).map_err(LoadError::Plan)?;
+    // The plan drives on the road its named routes are on, else on the first road.
+    let mut apps = Vec::new();
+    phases.walk(&mut |p| {
+        if let phase::Kind::Invoke(inv) = &p.kind {
+            apps.extend(inv.modifiers.iter().copied());
+        }
+    });
+    let plan_road = match route::named_road(&ctx, &apps).map_err(LoadError::Plan)? {
+        Some((id, span)) => road::PlanRoad::by_id(road, &id).ok_or_else(|| {
+            LoadError::Plan(files.err(
+                ErrorKind::Road,
+                span,
+                format!(
+                    "expected road {id} with driving lanes in {}, found none",
+                    road_path.display()
+                ),
+            ))
+        })?,
+        None => road::PlanRoad::pick(road).ok_or_else(|| {
+            LoadError::Plan(files.err(
+                ErrorKind::Road,
+                decl.span,
+                format!(
+                    "expected a road with driving lanes in {}, found none",
+                    road_path.display()
+                ),
+            ))
+        })?,
+    };
     let settings = plan::Settings {
         dt: options.dt,
         open_end: options.open_end,
@@ -208,6 +229,18 @@ pub fn lower_program(
                 if let Some(spec) = &e.spec {
                     events.push((e.name.text.clone(), spec));
                 }
+            }
+            // `m.set_map_file(f)` names the road network (see `map_file`); other modifiers of
+            // the scenario itself are not run.
+            Member::Modifier(app) if app.name.text != "set_map_file" => {
+                return Err(LoadError::Plan(files.err(
+                    ErrorKind::Modifier,
+                    app.span,
+                    format!(
+                        "expected modifiers on the actions of the `do` (the runtime plans those), found `{}(…)` applied to the scenario",
+                        app.name.text
+                    ),
+                )))
             }
             Member::On(_, span) => {
                 return Err(LoadError::Plan(files.err(

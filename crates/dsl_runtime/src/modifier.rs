@@ -24,9 +24,18 @@ pub(crate) enum ModKind {
     Lane,
     /// `change_lane(…)`: a lane change during the phase.
     ChangeLane,
-    /// `keep_lane()`, `keep_speed()`, `along(…)`, `physical_movement(…)`,
-    /// `avoid_collisions(…)`: what the engine's default motion already does.
-    Kept,
+    /// `along(route)`: the actor follows a route (`route` module).
+    Along,
+    /// `keep_lane()`: no lane change in the phase (the engine's default motion follows the
+    /// lane; a lane change modifier beside it is an error).
+    KeepLane,
+    /// `keep_speed()`: no speed change in the phase (a speed change beside it is an error).
+    KeepSpeed,
+    /// `physical_movement(option)`: `must_be_physical` forbids speed steps in the phase.
+    PhysicalMovement,
+    /// `avoid_collisions(false)`: the engine's vehicles do not avoid collisions (`true` is an
+    /// error).
+    AvoidCollisions,
 }
 
 /// When a modifier's constraint holds.
@@ -47,6 +56,8 @@ pub(crate) struct Mod<'p> {
     pub kind: ModKind,
     /// When.
     pub at: At,
+    /// `movement_mode: monotonous` (§8.9.1.1): the planned quantity changes in one direction.
+    pub monotonous: bool,
     /// Arguments by parameter name.
     pub args: Vec<(String, &'p Expr)>,
     /// The application.
@@ -70,15 +81,17 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
         "position" => ModKind::Position,
         "lane" => ModKind::Lane,
         "change_lane" => ModKind::ChangeLane,
-        "keep_lane" | "keep_speed" | "along" | "physical_movement" | "avoid_collisions" => {
-            ModKind::Kept
-        }
+        "along" => ModKind::Along,
+        "keep_lane" => ModKind::KeepLane,
+        "keep_speed" => ModKind::KeepSpeed,
+        "physical_movement" => ModKind::PhysicalMovement,
+        "avoid_collisions" => ModKind::AvoidCollisions,
         other => {
             return Err(ctx.files.err(
                 K::Modifier,
                 app.span,
                 format!(
-                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, lane, change_lane, keep_lane, keep_speed, along), found `{other}`"
+                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, lane, change_lane, keep_lane, keep_speed, along, physical_movement, avoid_collisions), found `{other}`"
                 ),
             ))
         }
@@ -121,10 +134,129 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
             }
         },
     };
+    // The common parameters (§8.9.1.1): `movement_mode` is planned (see `Mod::monotonous`),
+    // `track: actual` is what the engine measures; a projected track and `shape` are not run.
+    let mut monotonous = false;
+    for (n, e) in &args {
+        match n.as_str() {
+            "movement_mode" => {
+                monotonous = matches!(ctx.eval(e)?, Val::Enum(m) if m == "monotonous");
+            }
+            "track" if !matches!(ctx.eval(e)?, Val::Enum(t) if t == "actual") => {
+                return Err(ctx.files.err(
+                    K::Modifier,
+                    e.span,
+                    "expected track: actual (the engine plans and measures the actual track), found another track (projected tracks are not run)",
+                ));
+            }
+            "shape" => {
+                return Err(ctx.files.err(
+                    K::Modifier,
+                    e.span,
+                    format!("expected `{name}(…)` without shape: (the engine's own speed and lane change shapes are planned), found one"),
+                ))
+            }
+            _ => {}
+        }
+    }
+    match kind {
+        ModKind::AvoidCollisions => {
+            let avoid = match args.iter().find(|(n, _)| n == "avoid") {
+                Some((_, e)) => ctx.eval(e)?,
+                None => Val::Bool(true),
+            };
+            if avoid != Val::Bool(false) {
+                return Err(ctx.files.err(
+                    K::Modifier,
+                    app.span,
+                    "expected avoid_collisions(false) (the engine's vehicles follow their plan and do not avoid others), found a request to avoid collisions",
+                ));
+            }
+        }
+        ModKind::PhysicalMovement => {
+            if let Some((_, e)) = args.iter().find(|(n, _)| n == "option") {
+                if !matches!(ctx.eval(e)?, Val::Enum(_)) {
+                    return Err(ctx.files.err(
+                        K::Modifier,
+                        e.span,
+                        "expected prefer_physical, prefer_non_physical or must_be_physical, found another value",
+                    ));
+                }
+            }
+        }
+        _ => {}
+    }
     Ok(Mod {
         kind,
         at,
+        monotonous,
         args,
         app,
     })
+}
+
+/// Checks `keep_lane()`, `keep_speed()` and `physical_movement(must_be_physical)` against the
+/// other modifiers of their invocation: a lane change beside `keep_lane`, a speed change beside
+/// `keep_speed`, or a step of speed (`speed(v)` in a later phase, `step`: the speeds before and
+/// after) beside either `keep_speed` or `must_be_physical` is an error at that modifier.
+pub(crate) fn check_keeps(
+    ctx: &Ctx<'_>,
+    mods: &[Mod<'_>],
+    step: Option<(&Mod<'_>, f64, f64)>,
+) -> Result<(), Error> {
+    let step = step.filter(|(_, v0, v1)| (v1 - v0).abs() > 1e-9);
+    for k in mods {
+        match k.kind {
+            ModKind::KeepLane => {
+                if let Some(c) = mods.iter().find(|m| {
+                    m.kind == ModKind::ChangeLane || (m.kind == ModKind::Lane && m.at == At::End)
+                }) {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        c.app.span,
+                        format!(
+                            "expected no lane change beside keep_lane() at {}, found `{}(…)`",
+                            ctx.files.at(k.app.span),
+                            c.app.name.text
+                        ),
+                    ));
+                }
+            }
+            ModKind::KeepSpeed => {
+                if let Some(c) = mods.iter().find(|m| {
+                    matches!(m.kind, ModKind::ChangeSpeed | ModKind::Acceleration)
+                        || (matches!(m.kind, ModKind::Speed | ModKind::Position) && m.at == At::End)
+                }) {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        c.app.span,
+                        format!(
+                            "expected no speed change beside keep_speed() at {}, found `{}(…)`",
+                            ctx.files.at(k.app.span),
+                            c.app.name.text
+                        ),
+                    ));
+                }
+                if let Some((c, v0, v1)) = step {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        c.app.span,
+                        format!("expected the speed kept beside keep_speed() at {}, found a step from {v0:.2} m/s to {v1:.2} m/s", ctx.files.at(k.app.span)),
+                    ));
+                }
+            }
+            ModKind::PhysicalMovement => {
+                let must = matches!(k.arg("option").map(|e| ctx.eval(e)).transpose()?, Some(Val::Enum(o)) if o == "must_be_physical");
+                if let (true, Some((c, v0, v1))) = (must, step) {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        c.app.span,
+                        format!("expected a physical movement (physical_movement(must_be_physical) at {}), found a step of speed from {v0:.2} m/s to {v1:.2} m/s at the phase start; use change_speed(…) or speed(…, at: end)", ctx.files.at(k.app.span)),
+                    ));
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
 }

@@ -41,6 +41,9 @@ pub(crate) struct ToPlace<'m, 'p> {
     pub rear: f64,
     /// Its first phase (for errors when no modifier places it).
     pub span: dsl::semantics::hir::Span,
+    /// Lane and s of the start of a named route it follows in its first phase (`along`):
+    /// where it starts when no `lane`/`position` places it.
+    pub route: Option<(i32, f64)>,
 }
 
 /// Where an actor starts.
@@ -114,6 +117,7 @@ pub(crate) fn place(
             if !lane.contains_key(&p.name) {
                 let at_s = s.get(&p.name).map_or(0.0, |x| x.0);
                 let value = match find(p, ModKind::Lane) {
+                    None if p.route.is_some() => p.route.map(|r| Some(r.0)),
                     None => Some(road.numbered(1, false, at_s)),
                     Some(m) => {
                         let n = number(m, "lane")?.map_or(1, |x| x.round() as i64);
@@ -174,6 +178,9 @@ pub(crate) fn place(
                         }
                     }
                     None => match &p.member_after {
+                        _ if p.route.is_some() && !matches!(p.member_after, Some(Some(_))) => {
+                            p.route.map(|r| (r.1.max(p.rear), false))
+                        }
                         Some(Some(prev)) => {
                             let prev_rear =
                                 all.iter().find(|q| &q.name == prev).map_or(0.0, |q| q.rear);

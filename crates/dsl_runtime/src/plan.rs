@@ -29,6 +29,11 @@
 //! `speed(…)`, else v0). `lane(…, at: end)` and `change_lane(n, side)`: a sinusoidal lane change
 //! over the phase. Limits: speeds 0 to 70 m/s, accelerations up to 10 m/s²; beyond them the
 //! constraint is unsatisfiable, an error naming the modifier.
+//!
+//! Modifiers that constrain the motion without adding to it are checked against the plan:
+//! `along(r)` (the `route` module: the actor on its route at the phase start and end),
+//! `keep_lane`, `keep_speed`, `physical_movement(must_be_physical)` (no contradicting change;
+//! `modifier::check_keeps`) and `movement_mode: monotonous` on `position(…, at: end)`.
 
 use std::collections::HashMap;
 
@@ -46,6 +51,7 @@ use crate::modifier::{read, At, Mod, ModKind};
 use crate::phase::{Invoke, Kind, Phase};
 use crate::place::{place, ToPlace};
 use crate::road::PlanRoad;
+use crate::route::{self, Along, OnRoute};
 use crate::track::Track;
 use crate::value::{Ctx, Val};
 
@@ -185,6 +191,10 @@ struct Planner<'c, 'a> {
     emits: HashMap<String, Vec<(String, Span)>>,
     /// Event name → its declared condition (`event e is c`).
     events: HashMap<String, &'a Expr>,
+    /// Leaf path → its `along(…)` routes, with when each holds.
+    alongs: HashMap<String, Vec<(At, Along)>>,
+    /// Free one-lane route → its lane and the first actor along it.
+    route_lanes: HashMap<String, (i32, String)>,
 }
 
 /// Plans `root` on `road`.
@@ -207,6 +217,8 @@ pub(crate) fn plan<'a>(
         last_v: HashMap::new(),
         emits: HashMap::new(),
         events: HashMap::new(),
+        alongs: HashMap::new(),
+        route_lanes: HashMap::new(),
     };
     root.walk(&mut |ph| {
         if let Kind::Emit(e) = &ph.kind {
@@ -250,6 +262,14 @@ pub(crate) fn plan<'a>(
                     p.register(&path, e.span)?;
                 }
             }
+            if m.kind == ModKind::Along {
+                let a = route::read(ctx, &m)?;
+                route::on_plan_road(ctx, road, &a)?;
+                p.alongs
+                    .entry(leaf.path.clone())
+                    .or_default()
+                    .push((m.at, a));
+            }
             mods.push(m);
         }
         for n in names {
@@ -278,7 +298,19 @@ pub(crate) fn plan<'a>(
             (i > 0).then(|| members[i - 1].clone())
         });
         let bb = e.vehicle.bounding_box;
+        // A named route of the first phase places the actor at its start.
+        let route = first
+            .and_then(|f| p.alongs.get(f))
+            .into_iter()
+            .flatten()
+            .find_map(|(at, a)| match (&a.route, at) {
+                (route::Route::Lane { lane, s, .. }, At::Start | At::All) => {
+                    Some((*lane, s + a.start_offset))
+                }
+                _ => None,
+            });
         to_place.push(ToPlace {
+            route,
             name: e.name.clone(),
             mods,
             member_after,
@@ -688,6 +720,18 @@ impl Planner<'_, '_> {
                 n += 1;
                 format!("{}/{target}/{n}:{what}", p.path)
             };
+            // A step of speed at the phase start (`speed(v)` after the first phase).
+            let step = match (t0, first) {
+                (Some(t), false) => match mods
+                    .iter()
+                    .find(|m| m.kind == ModKind::Speed && m.at != At::End)
+                {
+                    Some(m) => Some((m, self.track(target).at(t).1, self.speed_value(m, t0)?.0)),
+                    None => None,
+                },
+                _ => None,
+            };
+            crate::modifier::check_keeps(ctx, mods, step)?;
             // Speed first, position at end last: it builds on the phase's speed.
             let mut ordered: Vec<&Mod<'_>> = mods.iter().collect();
             ordered.sort_by_key(|m| (m.kind == ModKind::Position && m.at == At::End) as u8);
@@ -714,7 +758,15 @@ impl Planner<'_, '_> {
                     }
                 };
                 match (m.kind, m.at) {
-                    (ModKind::Kept, _) => {}
+                    // Checked against the planned motion (see check_keeps, route::check).
+                    (
+                        ModKind::Along
+                        | ModKind::KeepLane
+                        | ModKind::KeepSpeed
+                        | ModKind::PhysicalMovement
+                        | ModKind::AvoidCollisions,
+                        _,
+                    ) => {}
                     (ModKind::Speed, At::Start | At::All) => {
                         let (v, relative) = self.speed_value(m, t0)?;
                         if first {
@@ -911,6 +963,14 @@ impl Planner<'_, '_> {
                                 };
                                 self.last_v.insert(target.clone(), ve);
                                 let vm = (4.0 * ds / len - v0 - ve) / 2.0;
+                                // movement_mode: monotonous: the speed only rises or only falls.
+                                if m.monotonous && (vm - v0) * (ve - vm) < -1e-9 {
+                                    return Err(ctx.files.err(
+                                        K::Unsatisfiable,
+                                        m.app.span,
+                                        format!("expected a monotonous speed profile (movement_mode: monotonous) from {v0:.2} m/s to {ve:.2} m/s, found it needs {vm:.2} m/s half way"),
+                                    ));
+                                }
                                 check_speed(ctx, m, vm)?;
                                 check_accel(ctx, m, (vm - v0) / (len / 2.0))?;
                                 check_accel(ctx, m, (ve - vm) / (len / 2.0))?;
@@ -972,6 +1032,29 @@ impl Planner<'_, '_> {
                     }
                 }
             }
+            // The routes, against the motion just planned.
+            let te = match (t0, end, len) {
+                (Some(a), Some(b), _) if b > a => Some(b),
+                (Some(a), _, Some(l)) => Some(a + l),
+                _ => None,
+            };
+            let alongs = self.alongs.get(&p.path).cloned().unwrap_or_default();
+            let mut shared = std::mem::take(&mut self.route_lanes);
+            let track = self.track(target).clone();
+            let lane = |t: f64| track.lane(t);
+            let s = |t: f64| self.s_at(target, t);
+            let on = OnRoute {
+                actor: target,
+                t0,
+                te,
+                lane: &lane,
+                s: &s,
+            };
+            let checked = alongs.iter().try_for_each(|(at, a)| {
+                route::check(ctx, &self.road, a, *at, mods, &on, &mut shared)
+            });
+            self.route_lanes = shared;
+            checked?;
         }
         Ok(derived)
     }

@@ -25,6 +25,19 @@ impl<'a> PlanRoad<'a> {
             .map(|road| PlanRoad { road })
     }
 
+    /// The road `id`, if it has a driving lane on its right side.
+    pub(crate) fn by_id(net: &'a RoadNetwork, id: &str) -> Option<Self> {
+        net.roads()
+            .iter()
+            .find(|r| {
+                r.id == id
+                    && r.lane_sections
+                        .first()
+                        .is_some_and(|ls| ls.right.iter().any(|l| l.lane_type.is_drivable()))
+            })
+            .map(|road| PlanRoad { road })
+    }
+
     /// The OpenDRIVE id.
     pub(crate) fn id(&self) -> &str {
         &self.road.id

@@ -1,0 +1,439 @@
+//! Routes of the `along(route, start_offset, end_offset)` modifier (ASAM OpenSCENARIO DSL 2.1
+//! §8.9 movement modifiers, `along`; §8.12 road abstraction: `route`, `road`, `lane`, the map's
+//! `create_odr_point`) resolved on the plan's road.
+//!
+//! The constraint solver leaves every road-network value to the runtime (a constraint over a
+//! route is a check error), so a route reaches the planner in one of two forms:
+//!
+//! - **a route field nothing defines** (`r: route`, `r: road`, `r: lane`): the scenario leaves
+//!   the route to the runtime. The planner binds it to the plan road, driven in +s: a `route`,
+//!   `road`, `lane_section` or `compound_route` is the whole road (actors along it may change
+//!   lanes), a `lane` or `compound_lane` one lane of it (actors along it keep that lane, and all
+//!   actors along the same field share it). Its ends are where the actors drive, so offsets from
+//!   them are not defined: a non-zero `start_offset`/`end_offset` is an error.
+//! - **`m.create_odr_point(road_id, lane_id, s, t)`** on a `map` field (`t` = 0 m): lane
+//!   `lane_id` of OpenDRIVE road `road_id` from `s` to the road's end. The plan drives on that
+//!   road; an actor along it is placed (its first phase, without `position`/`lane` at start) at
+//!   `s + start_offset` in that lane, and must be in that lane between `s + start_offset` and the
+//!   road's end minus `end_offset` at the phase start and at its end.
+//!
+//! Everything else (paths, crossings, points, list elements of the map, other map methods) is
+//! an error naming the argument.
+
+use std::collections::HashMap;
+
+use dsl::semantics::hir::{Expr, ExprKind, Span};
+use dsl::Value;
+
+use crate::error::{Error, ErrorKind as K};
+use crate::modifier::{At, Mod, ModKind};
+use crate::road::PlanRoad;
+use crate::value::{bind, Ctx};
+
+/// What an `along(…)` route is.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Route {
+    /// A route field the scenario leaves to the runtime: the plan road.
+    Free {
+        /// The field's path (`r`): actors along the same field share the route.
+        field: String,
+        /// A `lane`/`compound_lane`: one lane, kept.
+        one_lane: bool,
+    },
+    /// Lane `lane` of road `road` from s = `s` to the road's end.
+    Lane {
+        /// OpenDRIVE road id.
+        road: String,
+        /// OpenDRIVE lane id.
+        lane: i32,
+        /// Where the route starts (m of s).
+        s: f64,
+    },
+}
+
+/// An `along(…)` application, read.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Along {
+    /// The route.
+    pub route: Route,
+    /// Distance from the route's start where the movement starts (m).
+    pub start_offset: f64,
+    /// Distance before the route's end the movement stays within (m).
+    pub end_offset: f64,
+    /// The application.
+    pub span: Span,
+}
+
+/// Route types bound to the whole plan road.
+const WHOLE_ROAD: [&str; 5] = [
+    "route",
+    "route_element",
+    "road",
+    "lane_section",
+    "compound_route",
+];
+/// Route types bound to one lane.
+const ONE_LANE: [&str; 2] = ["lane", "compound_lane"];
+
+/// Reads the route and offsets of an `along(…)` modifier.
+pub(crate) fn read(ctx: &Ctx<'_>, m: &Mod<'_>) -> Result<Along, Error> {
+    let offset = |name: &str| -> Result<f64, Error> {
+        match m.arg(name) {
+            None => Ok(0.0),
+            Some(e) => {
+                let x = ctx.number(e)?;
+                if x < 0.0 {
+                    return Err(ctx.files.err(
+                        K::Value,
+                        e.span,
+                        format!("expected a {name} of 0 m or more, found {x} m"),
+                    ));
+                }
+                Ok(x)
+            }
+        }
+    };
+    let start_offset = offset("start_offset")?;
+    let end_offset = offset("end_offset")?;
+    let Some(e) = m.arg("route") else {
+        return Err(ctx.files.err(
+            K::Modifier,
+            m.app.span,
+            "expected a route in along(…), found none",
+        ));
+    };
+    let route = route_of(ctx, e)?;
+    if let Route::Free { field, .. } = &route {
+        for (name, x) in [("start_offset", start_offset), ("end_offset", end_offset)] {
+            if x != 0.0 {
+                let span = m.arg(name).map_or(m.app.span, |a| a.span);
+                return Err(ctx.files.err(
+                    K::Unsatisfiable,
+                    span,
+                    format!("expected no {name} on `{field}`, a route the runtime chooses (its ends are where the actors drive), found {x} m; name the route with map.create_odr_point(road_id, lane_id, s, t) to drive from a given place"),
+                ));
+            }
+        }
+    }
+    Ok(Along {
+        route,
+        start_offset,
+        end_offset,
+        span: m.app.span,
+    })
+}
+
+/// The route `e` names.
+fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
+    let unsupported = |what: &str| {
+        ctx.files.err(
+            K::Unsupported,
+            e.span,
+            format!("expected a route field nothing constrains (r: route, road or lane) or map.create_odr_point(road_id, lane_id, s, t) in along(…), found {what}"),
+        )
+    };
+    match &e.kind {
+        ExprKind::Call(callee, args) => {
+            let ExprKind::Field(obj, method) = &callee.kind else {
+                return Err(unsupported("a call of a function"));
+            };
+            let on_map = ctx
+                .path_of(obj)
+                .and_then(|p| ctx.lookup(&p))
+                .is_some_and(|(_, v)| matches!(v, Value::RunTime(t) if is_a(ctx, t, "map")));
+            if !on_map {
+                return Err(unsupported(&format!(
+                    "`{}` called on something other than a map field",
+                    method.text
+                )));
+            }
+            if method.text != "create_odr_point" {
+                return Err(unsupported(&format!("map.{}(…)", method.text)));
+            }
+            let params: Vec<String> = ["road_id", "lane_id", "s", "t"]
+                .iter()
+                .map(|s| s.to_string())
+                .collect();
+            let bound = bind(args, &params);
+            let arg = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+            let text = |n: &str| -> Result<String, Error> {
+                let a = arg(n).ok_or_else(|| {
+                    ctx.files.err(
+                        K::Value,
+                        e.span,
+                        format!("expected `{n}` in create_odr_point(…), found none"),
+                    )
+                })?;
+                string(ctx, a)
+            };
+            let road = text("road_id")?;
+            let lane_text = text("lane_id")?;
+            let lane: i32 = lane_text.trim().parse().map_err(|_| {
+                ctx.files.err(
+                    K::Value,
+                    arg("lane_id").map_or(e.span, |a| a.span),
+                    format!("expected an OpenDRIVE lane id (an integer) in lane_id, found {lane_text:?}"),
+                )
+            })?;
+            let s = arg("s").map(|a| ctx.number(a)).transpose()?.unwrap_or(0.0);
+            if let Some(t) = arg("t") {
+                let t = ctx.number(t)?;
+                if t != 0.0 {
+                    return Err(ctx.files.err(
+                        K::Unsupported,
+                        arg("t").map_or(e.span, |a| a.span),
+                        format!("expected t = 0 m (a route runs along the lane's centre line), found {t} m; use lateral(…) for an offset"),
+                    ));
+                }
+            }
+            Ok(Route::Lane { road, lane, s })
+        }
+        ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
+            let path = ctx.path_of(e).ok_or_else(|| unsupported("an expression"))?;
+            match ctx.lookup(&path) {
+                Some((_, Value::RunTime(ty))) => {
+                    if WHOLE_ROAD.iter().any(|t| is_exactly_or_user(ctx, ty, t)) {
+                        Ok(Route::Free {
+                            field: path,
+                            one_lane: false,
+                        })
+                    } else if ONE_LANE.iter().any(|t| is_a(ctx, ty, t)) {
+                        Ok(Route::Free {
+                            field: path,
+                            one_lane: true,
+                        })
+                    } else {
+                        Err(unsupported(&format!(
+                            "`{path}`, a {ty} (not run as a route)"
+                        )))
+                    }
+                }
+                _ => Err(unsupported(&format!("`{path}`"))),
+            }
+        }
+        _ => Err(unsupported("an expression")),
+    }
+}
+
+/// Whether type `ty` is `sup` or inherits from it.
+fn is_a(ctx: &Ctx<'_>, ty: &str, sup: &str) -> bool {
+    use dsl::semantics::model::TypeName;
+    match (ctx.model.types.get(ty), ctx.model.types.get(sup)) {
+        (Some((TypeName::Compound(a), _)), Some((TypeName::Compound(b), _))) => {
+            ctx.model.is_subtype(*a, *b)
+        }
+        _ => false,
+    }
+}
+
+/// Whether `ty` is `base` itself, or a user type inheriting from it that is none of the
+/// library's more specific route types (a `lane` inherits `route` but is one lane).
+fn is_exactly_or_user(ctx: &Ctx<'_>, ty: &str, base: &str) -> bool {
+    ty == base
+        || (is_a(ctx, ty, base)
+            && ![
+                "lane",
+                "compound_lane",
+                "path",
+                "crossing",
+                "route_point",
+                "xyz_point",
+                "odr_point",
+            ]
+            .iter()
+            .any(|t| is_a(ctx, ty, t)))
+}
+
+/// A string literal or a resolved string field.
+fn string(ctx: &Ctx<'_>, e: &Expr) -> Result<String, Error> {
+    if let ExprKind::Str(s) = &e.kind {
+        return Ok(s.clone());
+    }
+    if let Some((_, Value::Str(s))) = ctx.path_of(e).and_then(|p| ctx.lookup(&p)) {
+        return Ok(s.clone());
+    }
+    Err(ctx
+        .files
+        .err(K::Value, e.span, "expected a string, found another value"))
+}
+
+/// How far an actor may be outside a route's interval (m): the position tolerance of the plan.
+const ROUTE_TOLERANCE: f64 = crate::plan::POSITION_TOLERANCE;
+
+/// Where one actor is during a phase, as the plan knows it.
+pub(crate) struct OnRoute<'f> {
+    /// The actor.
+    pub actor: &'f str,
+    /// The phase's start (s), when the plan knows it.
+    pub t0: Option<f64>,
+    /// The phase's end (s), when the plan knows it.
+    pub te: Option<f64>,
+    /// Its lane at a time.
+    pub lane: &'f dyn Fn(f64) -> i32,
+    /// Its s on the plan road at a time.
+    pub s: &'f dyn Fn(f64) -> f64,
+}
+
+/// Checks that an actor follows `along` in its phase (`at`: when the modifier holds), with
+/// the invocation's other modifiers `mods`. `shared` records, per free one-lane route, the
+/// lane and the first actor found along it.
+pub(crate) fn check(
+    ctx: &Ctx<'_>,
+    road: &PlanRoad<'_>,
+    along: &Along,
+    at: At,
+    mods: &[Mod<'_>],
+    on: &OnRoute<'_>,
+    shared: &mut HashMap<String, (i32, String)>,
+) -> Result<(), Error> {
+    let actor = on.actor;
+    let one_lane = match &along.route {
+        Route::Free { one_lane, .. } => *one_lane,
+        Route::Lane { .. } => true,
+    };
+    let describe = match &along.route {
+        Route::Free { field, .. } => format!("route `{field}`"),
+        Route::Lane { road, lane, s } => {
+            format!("the route along lane {lane} of road {road} from s = {s} m")
+        }
+    };
+    if one_lane && at == At::All {
+        if let Some(c) = mods
+            .iter()
+            .find(|m| m.kind == ModKind::ChangeLane || (m.kind == ModKind::Lane && m.at == At::End))
+        {
+            return Err(ctx.files.err(
+                K::Unsatisfiable,
+                c.app.span,
+                format!(
+                    "expected no lane change along {describe} (one lane, along(…) at {}), found `{}(…)`",
+                    ctx.files.at(along.span),
+                    c.app.name.text
+                ),
+            ));
+        }
+    }
+    let (lo, hi) = match &along.route {
+        Route::Free { .. } => (0.0, road.length()),
+        Route::Lane { s, .. } => (s + along.start_offset, road.length() - along.end_offset),
+    };
+    let mut moments = Vec::new();
+    if at != At::End {
+        match (on.t0, &along.route) {
+            (Some(t), _) => moments.push(("start", t)),
+            (None, Route::Lane { .. }) => {
+                return Err(ctx.files.err(
+                    K::Unsatisfiable,
+                    along.span,
+                    "expected a phase start the plan knows for along(…) on a named route, found one after a run-time condition",
+                ))
+            }
+            (None, Route::Free { .. }) => {}
+        }
+        if let Route::Free {
+            field,
+            one_lane: true,
+        } = &along.route
+        {
+            // After a run-time start: the lane the actor was last planned in.
+            let lane = (on.lane)(on.t0.unwrap_or(f64::MAX));
+            match shared.get(field) {
+                Some((l, first)) if *l != lane => {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        along.span,
+                        format!("expected `{actor}` in the lane of {describe} (lane {l}, where `{first}` drives along it), found lane {lane}"),
+                    ))
+                }
+                Some(_) => {}
+                None => {
+                    shared.insert(field.clone(), (lane, actor.to_string()));
+                }
+            }
+        }
+    }
+    if at != At::Start {
+        match on.te {
+            Some(t) => moments.push(("end", t)),
+            None if along.end_offset > 0.0 => {
+                return Err(ctx.files.err(
+                    K::Unsatisfiable,
+                    along.span,
+                    "expected a phase end the plan knows for along(…, end_offset: …), found none (give the phase a duration)",
+                ))
+            }
+            None => {}
+        }
+    }
+    for (when, t) in moments {
+        if let Route::Lane { lane, .. } = &along.route {
+            let l = (on.lane)(t);
+            if l != *lane {
+                return Err(ctx.files.err(
+                    K::Unsatisfiable,
+                    along.span,
+                    format!("expected `{actor}` on {describe} at the phase {when}, found it in lane {l}"),
+                ));
+            }
+        }
+        let s = (on.s)(t);
+        if s < lo - ROUTE_TOLERANCE || s > hi + ROUTE_TOLERANCE {
+            return Err(ctx.files.err(
+                K::Unsatisfiable,
+                along.span,
+                format!("expected `{actor}` on {describe} between s = {lo:.2} m and {hi:.2} m at the phase {when}, found it at s = {s:.2} m"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks that a named route lies on the plan's road, in one of its driving lanes in +s.
+pub(crate) fn on_plan_road(ctx: &Ctx<'_>, road: &PlanRoad<'_>, along: &Along) -> Result<(), Error> {
+    let Route::Lane { road: id, lane, s } = &along.route else {
+        return Ok(());
+    };
+    if id != road.id() {
+        return Err(ctx.files.err(
+            K::Road,
+            along.span,
+            format!("expected every named route on road {} (the one road the plan drives on), found road {id}", road.id()),
+        ));
+    }
+    if !(0.0..=road.length()).contains(s) {
+        return Err(ctx.files.err(
+            K::Road,
+            along.span,
+            format!(
+                "expected the route's start on road {id} (0 m to {:.1} m), found s = {s} m",
+                road.length()
+            ),
+        ));
+    }
+    if !road.driving_lanes(*s).contains(lane) {
+        return Err(ctx.files.err(
+            K::Road,
+            along.span,
+            format!("expected a driving lane of road {id} in the direction of its reference line (right-hand traffic: lanes {:?}) at s = {s} m, found lane {lane}", road.driving_lanes(*s)),
+        ));
+    }
+    Ok(())
+}
+
+/// The road the named routes of `leaves` (their `along(…)` modifiers) are on: the first one,
+/// where the others must be too (checked by [`on_plan_road`]).
+pub(crate) fn named_road(
+    ctx: &Ctx<'_>,
+    apps: &[&dsl::semantics::hir::ModifierApp],
+) -> Result<Option<(String, Span)>, Error> {
+    for app in apps {
+        if app.name.text != "along" {
+            continue;
+        }
+        let m = crate::modifier::read(ctx, app)?;
+        if let Route::Lane { road, .. } = read(ctx, &m)?.route {
+            return Ok(Some((road, app.span)));
+        }
+    }
+    Ok(None)
+}
