@@ -17,6 +17,7 @@
 //! | `actors` | vehicles and vehicle groups of the plan, their 1.x Vehicle (§8.7.6, §8.7.18) |
 //! | `road` | the road of the plan and the DSL's lane numbering |
 //! | `route` | routes of `along(…)` on the plan's road (§8.9, §8.12) |
+//! | `lateral` | `lateral(…)` as an offset in the lane (§8.9) |
 //! | `place` | initial placement from `at: start`/`all` constraints |
 //! | `track` | planned speed profile and lanes of an actor |
 //! | `plan` | phase timing and motion planning |
@@ -31,6 +32,7 @@
 mod actors;
 mod condition;
 mod error;
+mod lateral;
 mod lower;
 mod modifier;
 mod phase;

@@ -59,7 +59,7 @@ pub(crate) fn lower(
                         road_id: plan.road.clone(),
                         lane_id: lane.to_string(),
                         s,
-                        offset: Some(0.0),
+                        offset: Some(e.track.offset(0.0)),
                         orientation: None,
                     },
                     pos: origin.clone(),

@@ -24,6 +24,8 @@ pub(crate) enum ModKind {
     Lane,
     /// `change_lane(…)`: a lane change during the phase.
     ChangeLane,
+    /// `lateral(…)`: an offset in the lane (`lateral` module).
+    Lateral,
     /// `along(route)`: the actor follows a route (`route` module).
     Along,
     /// `keep_lane()`: no lane change in the phase (the engine's default motion follows the
@@ -82,6 +84,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
         "lane" => ModKind::Lane,
         "change_lane" => ModKind::ChangeLane,
         "along" => ModKind::Along,
+        "lateral" => ModKind::Lateral,
         "keep_lane" => ModKind::KeepLane,
         "keep_speed" => ModKind::KeepSpeed,
         "physical_movement" => ModKind::PhysicalMovement,
@@ -91,7 +94,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
                 K::Modifier,
                 app.span,
                 format!(
-                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, lane, change_lane, keep_lane, keep_speed, along, physical_movement, avoid_collisions), found `{other}`"
+                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, lane, change_lane, lateral, keep_lane, keep_speed, along, physical_movement, avoid_collisions), found `{other}`"
                 ),
             ))
         }

@@ -10,6 +10,7 @@
 //!   reference when it has no position), each next one behind the previous with
 //!   [`GROUP_GAP`] between bumpers. Nothing places an actor: it floats, and floating actors are
 //!   shifted together so that the rearmost bumper is at [`FLOAT_REAR`].
+//! - `lateral(d, measure_by: …)`: the offset from the lane's centre (`lateral` module).
 //! - `speed(v)`, `speed(v, faster_than: x)` (x's speed + v), `slower_than`, `same_as`; nothing:
 //!   [`DEFAULT_SPEED`].
 
@@ -39,6 +40,8 @@ pub(crate) struct ToPlace<'m, 'p> {
     pub front: f64,
     /// Rear overhang (m).
     pub rear: f64,
+    /// Width of its bounding box (m), for `lateral(…)`.
+    pub width: f64,
     /// Its first phase (for errors when no modifier places it).
     pub span: dsl::semantics::hir::Span,
     /// Lane and s of the start of a named route it follows in its first phase (`along`):
@@ -55,6 +58,8 @@ pub(crate) struct Start {
     pub s: f64,
     /// Speed (m/s).
     pub v: f64,
+    /// Offset from the lane's centre (m, + left): `lateral(…)`.
+    pub offset: f64,
 }
 
 /// Places every actor of `all`.
@@ -256,12 +261,17 @@ pub(crate) fn place(
                 ),
             ));
         }
+        let offset = match find(p, ModKind::Lateral) {
+            Some(m) => crate::lateral::lane_offset(ctx, m, road.lane_width(*l, sv), p.width)?,
+            None => 0.0,
+        };
         out.insert(
             p.name.clone(),
             Start {
                 lane: *l,
                 s: sv,
                 v: *vv,
+                offset,
             },
         );
     }

@@ -59,6 +59,9 @@ use crate::value::{Ctx, Val};
 /// against a constant speed.
 pub const POSITION_TOLERANCE: f64 = 0.5;
 
+/// How far from a `lateral(…)` offset a later phase may start (m).
+const LATERAL_TOLERANCE: f64 = 0.01;
+
 /// A moment of the plan.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum When {
@@ -316,6 +319,7 @@ pub(crate) fn plan<'a>(
             member_after,
             front: bb.center[0] + bb.length / 2.0,
             rear: bb.length / 2.0 - bb.center[0],
+            width: bb.width,
             span,
         });
     }
@@ -324,6 +328,7 @@ pub(crate) fn plan<'a>(
     for e in &mut p.entities {
         let s = starts[&e.name];
         e.track = Track::new(s.s, s.v, s.lane);
+        e.track.set_offset(0.0, s.offset);
         p.last_v.insert(e.name.clone(), s.v);
     }
     let mods: HashMap<String, &Vec<Mod<'_>>> = leaves_mods
@@ -392,6 +397,11 @@ impl Planner<'_, '_> {
         let tr = self.track(name);
         let s0 = tr.at(0.0).0;
         self.road.s_after(tr.lane(0.0), s0, tr.at(t).0 - s0)
+    }
+
+    /// The width of `name`'s bounding box (m).
+    fn width(&self, name: &str) -> f64 {
+        self.entities[self.index[name]].vehicle.bounding_box.width
     }
 
     fn track_mut(&mut self, name: &str) -> &mut Track {
@@ -1010,12 +1020,33 @@ impl Planner<'_, '_> {
                         let (t, len) = need_len("a lane change")?;
                         let (target_lane, planned) =
                             self.lane_target(m, target, t.unwrap_or(0.0), len)?;
+                        // lateral(…, at: end): the offset in the target lane.
+                        let offset = match (lateral_end(mods), planned) {
+                            (Some(q), Some(l)) => {
+                                let s_end = t.map_or(0.0, |t| self.s_at(target, t + len));
+                                let w = self.width(target);
+                                Some(crate::lateral::lane_offset(
+                                    ctx,
+                                    q,
+                                    self.road.lane_width(l, s_end),
+                                    w,
+                                )?)
+                            }
+                            (Some(q), None) => {
+                                return Err(ctx.files.err(
+                                    K::Unsatisfiable,
+                                    q.app.span,
+                                    "expected a target lane the plan knows for lateral(…, at: end) with a lane change, found none",
+                                ))
+                            }
+                            (None, _) => None,
+                        };
                         out.push(Planned {
                             entity: target.clone(),
                             at: None,
                             name: name("lane"),
                             action: PrivateAction::Lateral(LateralAction::LaneChange {
-                                target_lane_offset: None,
+                                target_lane_offset: offset,
                                 dynamics: TransitionDynamics {
                                     dynamics_shape: DynamicsShape::Sinusoidal,
                                     dynamics_dimension: DynamicsDimension::Time,
@@ -1027,8 +1058,73 @@ impl Planner<'_, '_> {
                             span: m.app.span,
                         });
                         if let (Some(l), Some(t)) = (planned, t) {
-                            self.track_mut(target).set_lane(t + len, l);
+                            let tr = self.track_mut(target);
+                            tr.set_lane(t + len, l);
+                            tr.set_offset(t + len, offset.unwrap_or(0.0));
                         }
+                    }
+                    (ModKind::Lateral, At::Start | At::All) => {
+                        if m.at == At::All {
+                            if let Some(c) = lane_change(mods) {
+                                return Err(ctx.files.err(
+                                    K::Unsatisfiable,
+                                    c.app.span,
+                                    format!("expected no lane change while lateral(…) at {} holds throughout the phase, found `{}(…)`", ctx.files.at(m.app.span), c.app.name.text),
+                                ));
+                            }
+                        }
+                        if first {
+                            continue;
+                        }
+                        let t = need_t("a lateral position at the phase start")?;
+                        let tr = self.track(target);
+                        let lane = tr.lane(t);
+                        let w = self.road.lane_width(lane, self.s_at(target, t));
+                        let want = crate::lateral::lane_offset(ctx, m, w, self.width(target))?;
+                        let got = tr.offset(t);
+                        if (got - want).abs() > LATERAL_TOLERANCE {
+                            return Err(ctx.files.err(
+                                K::Unsatisfiable,
+                                m.app.span,
+                                format!("expected this lateral position at the phase start, found `{target}` {:.2} m from it (plan an earlier phase to reach it, with lateral(…, at: end))", got - want),
+                            ));
+                        }
+                    }
+                    (ModKind::Lateral, At::End) => {
+                        if lane_change(mods).is_some() {
+                            // Planned with the lane change.
+                            continue;
+                        }
+                        let (t, len) = need_len("a lateral position at the phase end")?;
+                        let t = t.ok_or_else(|| ctx.files.err(
+                            K::Unsatisfiable,
+                            m.app.span,
+                            "expected a phase start the plan knows for lateral(…, at: end), found one after a run-time condition",
+                        ))?;
+                        let tr = self.track(target);
+                        let lane = tr.lane(t);
+                        let o0 = tr.offset(t);
+                        let w = self.road.lane_width(lane, self.s_at(target, t + len));
+                        let o1 = crate::lateral::lane_offset(ctx, m, w, self.width(target))?;
+                        // A sinusoidal change of Δ has its peak lateral acceleration
+                        // π²Δ/(2T²): given as the action's maximum, the engine's change lasts T.
+                        let a = std::f64::consts::PI.powi(2) * (o1 - o0).abs() / (2.0 * len * len);
+                        check_accel(ctx, m, a)?;
+                        if a > 0.0 {
+                            out.push(Planned {
+                                entity: target.clone(),
+                                at: None,
+                                name: name("lateral"),
+                                action: PrivateAction::Lateral(LateralAction::LaneOffset {
+                                    continuous: false,
+                                    dynamics_shape: DynamicsShape::Sinusoidal,
+                                    max_lateral_acc: Some(a),
+                                    target: scenario::LaneOffsetTarget::Absolute(o1),
+                                }),
+                                span: m.app.span,
+                            });
+                        }
+                        self.track_mut(target).set_offset(t + len, o1);
                     }
                 }
             }
@@ -1253,6 +1349,18 @@ impl Planner<'_, '_> {
             "expected same_as, side_of, left_of or right_of in lane(…, at: end), found none (lane numbers at the end are not planned yet)",
         ))
     }
+}
+
+/// The lane change of an invocation (`change_lane`, `lane(…, at: end)`), if any.
+fn lane_change<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+    mods.iter()
+        .find(|m| m.kind == ModKind::ChangeLane || (m.kind == ModKind::Lane && m.at == At::End))
+}
+
+/// The `lateral(…, at: end)` of an invocation, if any.
+fn lateral_end<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+    mods.iter()
+        .find(|m| m.kind == ModKind::Lateral && m.at == At::End)
 }
 
 /// 1 for an invocation with a `position(…, at: end)` relative to another actor, else 0: the

@@ -83,6 +83,14 @@ impl<'a> PlanRoad<'a> {
     }
 }
 
+impl PlanRoad<'_> {
+    /// Width of lane `lane` at `s` (m); 0 where the lane is missing.
+    pub(crate) fn lane_width(&self, lane: i32, s: f64) -> f64 {
+        let s = s.clamp(0.0, self.road.length);
+        self.road.lane_span(lane, s).map_or(0.0, |sp| sp.width())
+    }
+}
+
 /// Sampling step in s of lane centre lengths (m).
 const LENGTH_STEP: f64 = 0.25;
 

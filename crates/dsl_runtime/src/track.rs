@@ -19,6 +19,8 @@ pub(crate) struct Track {
     ramps: Vec<Ramp>,
     /// (time from which, lane id).
     lanes: Vec<(f64, i32)>,
+    /// (time from which, offset from the lane centre, m).
+    offsets: Vec<(f64, f64)>,
 }
 
 impl Track {
@@ -29,7 +31,23 @@ impl Track {
             v0: v,
             ramps: Vec::new(),
             lanes: vec![(0.0, lane)],
+            offsets: vec![(0.0, 0.0)],
         }
+    }
+
+    /// The offset from the lane centre at time `t` (the last one planned from t or before).
+    pub(crate) fn offset(&self, t: f64) -> f64 {
+        self.offsets
+            .iter()
+            .rev()
+            .find(|(from, _)| *from <= t)
+            .map_or(0.0, |(_, o)| *o)
+    }
+
+    /// From time `t` on, the actor is `offset` from its lane's centre.
+    pub(crate) fn set_offset(&mut self, t: f64, offset: f64) {
+        self.offsets.retain(|(from, _)| *from < t);
+        self.offsets.push((t, offset));
     }
 
     /// s and speed at time `t` (≥ 0).
@@ -74,10 +92,11 @@ impl Track {
             .map_or(self.lanes[0].1, |(_, l)| *l)
     }
 
-    /// From time `t` on, the actor is in `lane`.
+    /// From time `t` on, the actor is in `lane`, at its centre (a lane change ends there).
     pub(crate) fn set_lane(&mut self, t: f64, lane: i32) {
         self.lanes.retain(|(from, _)| *from < t);
         self.lanes.push((t, lane));
+        self.set_offset(t, 0.0);
     }
 }
 

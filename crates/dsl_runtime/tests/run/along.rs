@@ -8,7 +8,7 @@ use crate::support::{error, lower_at, run, run_scenario};
 
 /// Asserts that `tests/scenarios/NAME.osc` does not plan, with `message` in the error at
 /// `NAME.osc:LINE:COL` (its own place, the end of the message).
-fn refused(name: &str, message: &str, at: &str) {
+pub(crate) fn refused(name: &str, message: &str, at: &str) {
     let e = error(name);
     assert!(
         e.contains(message) && e.ends_with(&format!("{name}.osc:{at}")),

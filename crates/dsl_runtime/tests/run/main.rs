@@ -3,6 +3,7 @@
 //! 0.05 s step grid.
 
 mod along;
+mod lateral;
 mod support;
 
 use support::{error, run, DT};

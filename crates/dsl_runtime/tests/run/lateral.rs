@@ -1,0 +1,42 @@
+//! `lateral(…)`: offsets in the lane at the start of the run, at a phase end (a lane offset
+//! over the phase) and with a lane change; expectations worked by hand in the scenario files.
+
+use crate::support::run;
+
+/// Lateral positions on the straight road: the sinusoidal shape is exact at its ends and half
+/// way; allow float round-off.
+const Y_TOL: f64 = 1e-6;
+
+#[test]
+fn lateral_offsets_at_start_and_end() {
+    let r = run("lateral_lane", 0, None);
+    let y = |t: f64| r.at(t, "ego").y;
+    assert_eq!(r.at(0.0, "ego").lane, -3);
+    assert!((y(0.0) + 9.0).abs() < Y_TOL, "{}", y(0.0));
+    assert!((y(2.0) + 9.0).abs() < Y_TOL, "{}", y(2.0));
+    assert!((y(4.0) + 8.625).abs() < Y_TOL, "{}", y(4.0));
+    assert!((y(6.0) + 8.25).abs() < Y_TOL, "{}", y(6.0));
+    assert_eq!(r.at(6.0, "ego").lane, -3);
+}
+
+#[test]
+fn lateral_at_end_with_a_lane_change() {
+    let r = run("lateral_lane_change", 0, None);
+    let ego = r.at(4.0, "ego");
+    assert_eq!(ego.lane, -2);
+    assert!((ego.y + 5.75).abs() < Y_TOL, "{ego:?}");
+}
+
+#[test]
+fn lateral_positions_that_cannot_hold_are_errors() {
+    crate::along::refused(
+        "err_lateral_start",
+        "expected this lateral position at the phase start, found `ego` 0.20 m from it",
+        "16:13",
+    );
+    crate::along::refused(
+        "err_lateral_outside",
+        "puts it 2.25 m from the lane's centre",
+        "8:9",
+    );
+}
