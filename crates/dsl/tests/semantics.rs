@@ -82,7 +82,7 @@ cases! {
     err_and_not_bool, err_namespace_ambiguous, err_or_unsat, err_namespace_not_exported, err_argument_twice, err_argument_type, err_compare_length_number,
     err_compare_speed_length, err_conditional_inherits_field, err_duplicate_enum_member,
     err_duplicate_field, err_duplicate_type, err_elapsed_not_time, err_emit_unknown_event,
-    err_enum_ordering, err_field_type_units, err_for_over_non_list, err_import_missing_file,
+    err_enum_ordering, err_field_type_units, err_on_emit_unknown_event, err_for_over_non_list, err_import_missing_file,
     err_import_unknown_library, err_in_non_list, err_index_not_list, err_index_type,
     err_inherit_cycle, err_inherit_unknown, err_it_outside_with, err_keep_not_bool,
     err_list_element_type, err_list_of_lists, err_list_too_long, err_member_of_other_enum,

@@ -45,7 +45,7 @@ mod value;
 
 use std::path::Path;
 
-use dsl::semantics::hir::{CompoundKind, Member};
+use dsl::semantics::hir::{Behavior, CompoundKind, Member};
 use dsl::CheckedProgram;
 
 pub use error::{Error, ErrorKind};
@@ -223,7 +223,8 @@ pub fn lower_program(
         dt: options.dt,
         open_end: options.open_end,
     };
-    // Events the scenario declares with a condition (`event e is c`); `on` handlers are not run.
+    // Events the scenario declares with a condition (`event e is c`), and the events `on`
+    // handlers emit, each with the condition that makes it occur.
     let mut events = Vec::new();
     for m in &decl.members {
         match m {
@@ -244,12 +245,28 @@ pub fn lower_program(
                     ),
                 )))
             }
-            Member::On(_, span) => {
-                return Err(LoadError::Plan(files.err(
-                    ErrorKind::Unsupported,
-                    *span,
-                    "expected a scenario without `on` handlers (not run yet), found one",
-                )))
+            // `on e: emit f`: f occurs whenever e does; a `call` runs a method for its side
+            // effects, which the runtime has none of (methods are expressions or external).
+            Member::On(spec, body, on_span) => {
+                for b in body {
+                    match &b.behavior {
+                        Behavior::Emit(name, _, _) => events.push((name.text.clone(), spec)),
+                        Behavior::Call(_, span) => {
+                            return Err(LoadError::Plan(files.err(
+                                ErrorKind::Unsupported,
+                                *span,
+                                "expected `emit` in an `on` handler, found `call` (methods with side effects are not run)",
+                            )))
+                        }
+                        _ => {
+                            return Err(LoadError::Plan(files.err(
+                                ErrorKind::Unsupported,
+                                *on_span,
+                                "expected `emit` or `call` in an `on` handler, found another member",
+                            )))
+                        }
+                    }
+                }
             }
             _ => {}
         }

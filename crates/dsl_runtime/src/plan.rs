@@ -192,8 +192,9 @@ struct Planner<'c, 'a> {
     last_v: HashMap<String, f64>,
     /// Event name → the paths of the phases that emit it.
     emits: HashMap<String, Vec<(String, Span)>>,
-    /// Event name → its declared condition (`event e is c`).
-    events: HashMap<String, &'a Expr>,
+    /// Event name → the conditions that make it occur: its declared one (`event e is c`) and
+    /// those of the `on c: emit e` handlers.
+    events: HashMap<String, Vec<&'a Expr>>,
     /// Leaf path → its `along(…)` routes, with when each holds.
     alongs: HashMap<String, Vec<(At, Along)>>,
     /// Free one-lane route → its lane and the first actor along it.
@@ -232,7 +233,7 @@ pub(crate) fn plan<'a>(
         }
     });
     for (name, spec) in events {
-        p.events.insert(name, spec);
+        p.events.entry(name).or_default().push(spec);
     }
     // Actors, in the order the tree names them, and each one's first phase.
     let mut leaves_mods: Vec<(&Phase<'_>, Vec<Mod<'_>>)> = Vec::new();
@@ -414,28 +415,38 @@ impl Planner<'_, '_> {
         let index = &self.index;
         let entity = |path: &str| index.contains_key(path).then(|| path.to_string());
         let event = |name: &str| -> Option<Result<Vec<ConditionGroup>, Error>> {
-            if let Some(emits) = self.emits.get(name) {
-                return Some(Ok(emits
-                    .iter()
-                    .map(|(path, span)| ConditionGroup {
-                        conditions: vec![act_state(
-                            path,
-                            StoryboardElementState::StartTransition,
-                            0.0,
-                            self.ctx.files.pos(*span),
-                        )],
-                    })
-                    .collect()));
+            let emits = self.emits.get(name);
+            let specs = self.events.get(name);
+            if emits.is_none() && specs.is_none() {
+                return None;
             }
-            let spec = self.events.get(name)?;
-            if depth > 16 {
-                return Some(Err(self.ctx.files.err(
-                    K::Condition,
-                    spec.span,
-                    "expected events defined without a cycle, found one defined through itself",
-                )));
+            // The event occurs when a phase emits it or one of its conditions holds.
+            let mut groups: Vec<ConditionGroup> = emits
+                .into_iter()
+                .flatten()
+                .map(|(path, span)| ConditionGroup {
+                    conditions: vec![act_state(
+                        path,
+                        StoryboardElementState::StartTransition,
+                        0.0,
+                        self.ctx.files.pos(*span),
+                    )],
+                })
+                .collect();
+            for spec in specs.into_iter().flatten() {
+                if depth > 16 {
+                    return Some(Err(self.ctx.files.err(
+                        K::Condition,
+                        spec.span,
+                        "expected events defined without a cycle, found one defined through itself",
+                    )));
+                }
+                match self.condition(spec, depth + 1) {
+                    Ok(t) => groups.extend(t.condition_groups),
+                    Err(e) => return Some(Err(e)),
+                }
             }
-            Some(self.condition(spec, depth + 1).map(|t| t.condition_groups))
+            Some(Ok(groups))
         };
         trigger(
             self.ctx,

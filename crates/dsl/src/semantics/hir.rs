@@ -350,8 +350,9 @@ pub enum Member {
     Modifier(ModifierApp),
     /// `do behavior`.
     Do(Labeled, Span),
-    /// `on event: …` (its body is not type checked beyond its event).
-    On(Expr, Span),
+    /// `on event: …`: the event and the body's `emit` / `call` members, checked as the
+    /// same members of a `do`.
+    On(Expr, Vec<Labeled>, Span),
     /// `cover(…)` / `record(…)`: arguments checked as expressions.
     Coverage(Vec<Arg>, Span),
 }

@@ -320,6 +320,7 @@ impl Cx {
                     kind: ExprKind::Error,
                     span,
                 }),
+                o.members().filter_map(|m| self.behavior(&m)).collect(),
                 span,
             ),
             ast::Member::Do(d) => Member::Do(self.behavior(&d.member()?)?, span),

@@ -368,7 +368,11 @@ impl Rewriter<'_> {
         match m {
             Member::Field(f) => self.field(f),
             Member::Keep(k) => self.expr(&mut k.expr),
-            Member::RemoveDefault(e, _) | Member::On(e, _) => self.expr(e),
+            Member::RemoveDefault(e, _) => self.expr(e),
+            Member::On(e, body, _) => {
+                self.expr(e);
+                body.iter_mut().for_each(|l| self.labeled(l));
+            }
             Member::For { list, body, .. } => {
                 self.expr(list);
                 self.members(body);

@@ -159,8 +159,11 @@ impl Cx<'_> {
                 }
                 Member::Modifier(app) => self.member_modifier(app, scope),
                 Member::Do(b, _) => self.behavior(b, scope),
-                Member::On(e, _) => {
+                Member::On(e, body, _) => {
                     self.expect(e, &Ty::Event, scope, "`on`");
+                    for b in body {
+                        self.behavior(b, scope);
+                    }
                 }
                 Member::Coverage(args, _) => {
                     for a in args {
@@ -235,7 +238,7 @@ fn member_span(m: &Member) -> Option<Span> {
         Member::Event(e) => Some(e.span),
         Member::Modifier(a) => Some(a.span),
         Member::Do(_, s)
-        | Member::On(_, s)
+        | Member::On(_, _, s)
         | Member::Coverage(_, s)
         | Member::RemoveDefault(_, s) => Some(*s),
         Member::Keep(k) => Some(k.span),
