@@ -18,8 +18,11 @@ pub(crate) const MAX_ACCELERATION: f64 = 10.0;
 pub(crate) enum ActorKind {
     /// A vehicle: its entity.
     Vehicle,
-    /// A vehicle group: its members' paths, in list order.
-    Group(Vec<String>),
+    /// A vehicle group: its members' paths, in list order, and whether its formation spreads
+    /// over the lanes (a `common_route_vehicle_group` that is not single-lane).
+    Group(Vec<String>, bool),
+    /// A `random_traffic_vehicle_group`: not planned.
+    RandomTraffic,
 }
 
 /// Classifies `path` (`None`: not a vehicle or vehicle group of the program).
@@ -28,13 +31,19 @@ pub(crate) fn classify(ctx: &Ctx<'_>, path: &str) -> Option<ActorKind> {
     if ctx.is_a(v, "vehicle") {
         return Some(ActorKind::Vehicle);
     }
+    if ctx.is_a(v, "random_traffic_vehicle_group") {
+        return Some(ActorKind::RandomTraffic);
+    }
     if ctx.is_a(v, "vehicle_group") {
+        let lanes =
+            ctx.is_a(v, "common_route_vehicle_group") && !ctx.is_a(v, "single_lane_vehicle_group");
         let n = match ctx.lookup(&format!("{path}.vehicles"))?.1 {
             dsl::Value::List(items) => items.len(),
             _ => 0,
         };
         return Some(ActorKind::Group(
             (0..n).map(|i| format!("{path}.vehicles[{i}]")).collect(),
+            lanes,
         ));
     }
     None

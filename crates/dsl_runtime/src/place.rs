@@ -7,8 +7,10 @@
 //! - `position(d, ahead_of: x)` / `behind: x`: d between the reference points (the rear axle
 //!   centres, as the engine's positions); `time: t` for d = t · x's speed; `position(d)` alone:
 //!   s = d. A vehicle group's members: member 0 where the group is placed (beside its lane
-//!   reference when it has no position), each next one behind the previous with
-//!   [`GROUP_GAP`] between bumpers. Nothing places an actor: it floats, and floating actors are
+//!   reference when it has no position); a single-lane group's next members each behind the
+//!   previous with [`GROUP_GAP`] between bumpers; a common-route group over several lanes
+//!   fills the lanes from member 0's leftwards a row at a time, each row [`GROUP_GAP`] behind
+//!   the one ahead. Nothing places an actor: it floats, and floating actors are
 //!   shifted together so that the rearmost bumper is at [`FLOAT_REAR`].
 //! - `lateral(d, measure_by: …)`: the offset from the lane's centre (`lateral` module).
 //! - `speed(v)`, `speed(v, faster_than: x)` (x's speed + v), `slower_than`, `same_as`; nothing:
@@ -36,6 +38,9 @@ pub(crate) struct ToPlace<'m, 'p> {
     pub mods: Vec<&'m Mod<'p>>,
     /// For a group member: the previous member (None for the first one).
     pub member_after: Option<Option<String>>,
+    /// For a member after the first of a common-route group over several lanes: the
+    /// members, in list order, and its index (see [`across`]).
+    pub across: Option<(Vec<String>, usize)>,
     /// Front and rear overhang of the bounding box from the reference point (m).
     pub front: f64,
     /// Rear overhang (m).
@@ -121,13 +126,18 @@ pub(crate) fn place(
             // Lane.
             if !lane.contains_key(&p.name) {
                 let at_s = s.get(&p.name).map_or(0.0, |x| x.0);
-                let value = match find(p, ModKind::Lane) {
-                    None if p.route.is_some() => p.route.map(|r| Some(r.0)),
-                    None => Some(road.numbered(1, false, at_s)),
-                    Some(m) => {
-                        let n = number(m, "lane")?.map_or(1, |x| x.round() as i64);
-                        let from_left = matches!(m.arg("from").map(|e| ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
-                        match reference(m, &["same_as", "side_of", "left_of", "right_of"])? {
+                let value = match (&p.across, find(p, ModKind::Lane)) {
+                    (Some((members, i)), _) => lane.get(&members[0]).map(|l0| {
+                        let lanes = leftwards(road, *l0, at_s);
+                        Some(lanes[i % lanes.len()])
+                    }),
+                    (None, m) => match m {
+                        None if p.route.is_some() => p.route.map(|r| Some(r.0)),
+                        None => Some(road.numbered(1, false, at_s)),
+                        Some(m) => {
+                            let n = number(m, "lane")?.map_or(1, |x| x.round() as i64);
+                            let from_left = matches!(m.arg("from").map(|e| ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
+                            match reference(m, &["same_as", "side_of", "left_of", "right_of"])? {
                             None => Some(road.numbered(n, from_left, at_s)),
                             Some((how, x)) => lane.get(&x).map(|lx| match how.as_str() {
                                 "same_as" => Some(*lx),
@@ -139,7 +149,8 @@ pub(crate) fn place(
                                 }
                             }),
                         }
-                    }
+                        }
+                    },
                 };
                 if let Some(l) = value {
                     let Some(l) = l else {
@@ -160,7 +171,10 @@ pub(crate) fn place(
             }
             // Position.
             if !s.contains_key(&p.name) {
-                let value = match find(p, ModKind::Position) {
+                // A group member after the first is placed by the formation; the group's
+                // position modifiers place its first member.
+                let follower = p.across.is_some() || matches!(p.member_after, Some(Some(_)));
+                let value = match find(p, ModKind::Position).filter(|_| !follower) {
                     Some(m) => {
                         let r = reference(m, &["ahead_of", "behind"])?;
                         let d = match (number(m, "distance")?, number(m, "time")?, &r) {
@@ -182,6 +196,23 @@ pub(crate) fn place(
                             }),
                         }
                     }
+                    None if p.across.is_some() => p.across.as_ref().and_then(|(members, i)| {
+                        let l0 = lane.get(&members[0])?;
+                        let n = leftwards(road, *l0, s.get(&members[0])?.0).len();
+                        if *i < n {
+                            // The first row: beside the first member.
+                            s.get(&members[0]).copied()
+                        } else {
+                            // A later row: behind the member n places ahead, in its lane.
+                            let ahead = &members[i - n];
+                            let rear = all
+                                .iter()
+                                .find(|q| &q.name == ahead)
+                                .map_or(0.0, |q| q.rear);
+                            s.get(ahead)
+                                .map(|(sa, fl)| (sa - rear - GROUP_GAP - p.front, *fl))
+                        }
+                    }),
                     None => match &p.member_after {
                         _ if p.route.is_some() && !matches!(p.member_after, Some(Some(_))) => {
                             p.route.map(|r| (r.1.max(p.rear), false))
@@ -276,4 +307,14 @@ pub(crate) fn place(
         );
     }
     Ok(out)
+}
+
+/// Driving lanes from `l0` leftwards at `s` (`l0` first): the lanes a common-route group's
+/// formation fills, a row at a time.
+fn leftwards(road: &PlanRoad<'_>, l0: i32, s: f64) -> Vec<i32> {
+    let mut out = vec![l0];
+    while let Some(l) = road.beside(l0, true, out.len() as i64, s) {
+        out.push(l);
+    }
+    out
 }

@@ -185,6 +185,8 @@ struct Planner<'c, 'a> {
     entities: Vec<Entity>,
     index: HashMap<String, usize>,
     groups: HashMap<String, Vec<String>>,
+    /// The groups whose formation spreads over the lanes (common route, not single-lane).
+    across: std::collections::HashSet<String>,
     first_leaf: HashMap<String, String>,
     phases: Vec<PhasePlan>,
     /// The speed each actor's last planned speed change ends at (known also when the times
@@ -216,6 +218,7 @@ pub(crate) fn plan<'a>(
         entities: Vec::new(),
         index: HashMap::new(),
         groups: HashMap::new(),
+        across: std::collections::HashSet::new(),
         first_leaf: HashMap::new(),
         phases: Vec::new(),
         last_v: HashMap::new(),
@@ -301,6 +304,14 @@ pub(crate) fn plan<'a>(
             let i = members.iter().position(|m| *m == e.name).unwrap_or(0);
             (i > 0).then(|| members[i - 1].clone())
         });
+        // A common-route group over several lanes: the members and this one's index.
+        let across = actor
+            .filter(|a| p.across.contains(*a))
+            .and_then(|a| p.groups.get(a))
+            .and_then(|members| {
+                let i = members.iter().position(|m| *m == e.name)?;
+                (i > 0).then(|| (members.clone(), i))
+            });
         let bb = e.vehicle.bounding_box;
         // A named route of the first phase places the actor at its start.
         let route = first
@@ -318,6 +329,7 @@ pub(crate) fn plan<'a>(
             name: e.name.clone(),
             mods,
             member_after,
+            across,
             front: bb.center[0] + bb.length / 2.0,
             rear: bb.length / 2.0 - bb.center[0],
             width: bb.width,
@@ -363,9 +375,19 @@ impl Planner<'_, '_> {
     fn register(&mut self, path: &str, span: Span) -> Result<Vec<String>, Error> {
         let names = match actors::classify(self.ctx, path) {
             Some(ActorKind::Vehicle) => vec![path.to_string()],
-            Some(ActorKind::Group(members)) => {
+            Some(ActorKind::Group(members, lanes)) => {
                 self.groups.insert(path.to_string(), members.clone());
+                if lanes {
+                    self.across.insert(path.to_string());
+                }
                 members
+            }
+            Some(ActorKind::RandomTraffic) => {
+                return Err(self.ctx.files.err(
+                    K::Unsupported,
+                    span,
+                    format!("expected a vehicle, or a vehicle group with a formation (single-lane or common-route), found `{path}`, a random_traffic_vehicle_group (random traffic is not planned)"),
+                ))
             }
             None => {
                 return Err(self.ctx.files.err(

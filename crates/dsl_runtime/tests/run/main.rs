@@ -3,6 +3,7 @@
 //! 0.05 s step grid.
 
 mod along;
+mod groups;
 mod handlers;
 mod lateral;
 mod support;
