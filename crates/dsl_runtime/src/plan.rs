@@ -201,6 +201,8 @@ struct Planner<'c, 'a> {
     alongs: HashMap<String, Vec<(At, Along)>>,
     /// Free one-lane route → its lane and the first actor along it.
     route_lanes: HashMap<String, (i32, String)>,
+    /// The side drawn for each `change_lane(…)` without one (by the modifier's span).
+    sides: std::cell::RefCell<HashMap<String, bool>>,
 }
 
 /// Plans `root` on `road`.
@@ -226,6 +228,7 @@ pub(crate) fn plan<'a>(
         events: HashMap::new(),
         alongs: HashMap::new(),
         route_lanes: HashMap::new(),
+        sides: std::cell::RefCell::new(HashMap::new()),
     };
     root.walk(&mut |ph| {
         if let Kind::Emit(e) = &ph.kind {
@@ -1346,10 +1349,37 @@ impl Planner<'_, '_> {
             .map(|e| self.ctx.number(e))
             .transpose()?
             .map_or(1, |x| x.round() as i32);
-        let left = !matches!(m.arg("side").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(s)) if s == "right");
+        let side = m.arg("side").map(|e| self.ctx.eval(e)).transpose()?;
+        let left = !matches!(&side, Some(Val::Enum(s)) if s == "right");
         let shift = if left { n } else { -n };
         if m.kind == ModKind::ChangeLane {
             let now = self.track(target).lane(t);
+            let s_now = self.s_at(target, t);
+            let exists = |left: bool| self.road.beside(now, left, n.into(), s_now).is_some();
+            // change_lane without a side: "the side is randomized" (§8.9 change_lane), drawn
+            // once per modifier from the run's seed among the sides that have the lane.
+            let left = match side {
+                Some(_) => left,
+                None => *self
+                    .sides
+                    .borrow_mut()
+                    .entry(format!("{:?}", m.app.span))
+                    .or_insert_with(|| match (exists(true), exists(false)) {
+                        (true, true) => self.ctx.choose(2) == 0,
+                        (l, _) => l,
+                    }),
+            };
+            let shift = if left { n } else { -n };
+            if !exists(left) {
+                return Err(self.ctx.files.err(
+                    K::Unsatisfiable,
+                    m.app.span,
+                    format!(
+                        "expected a driving lane {n} to the {} of `{target}`'s lane {now} at s = {s_now:.2} m, found none",
+                        if left { "left" } else { "right" }
+                    ),
+                ));
+            }
             return Ok((
                 LaneChangeTarget::Relative {
                     entity_ref: target.to_string(),

@@ -5,6 +5,7 @@
 mod along;
 mod groups;
 mod handlers;
+mod lane_side;
 mod lateral;
 mod support;
 
