@@ -26,6 +26,9 @@ pub(crate) enum ModKind {
     ChangeLane,
     /// `lateral(…)`: an offset in the lane (`lateral` module).
     Lateral,
+    /// `yaw(angle)` and `orientation(yaw, pitch, roll)` relative to the road: checked (the
+    /// engine's vehicles drive along their lane; see [`check_orientation`]).
+    Orientation,
     /// `along(route)`: the actor follows a route (`route` module).
     Along,
     /// `keep_lane()`: no lane change in the phase (the engine's default motion follows the
@@ -85,6 +88,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
         "change_lane" => ModKind::ChangeLane,
         "along" => ModKind::Along,
         "lateral" => ModKind::Lateral,
+        "yaw" | "orientation" => ModKind::Orientation,
         "keep_lane" => ModKind::KeepLane,
         "keep_speed" => ModKind::KeepSpeed,
         "physical_movement" => ModKind::PhysicalMovement,
@@ -94,7 +98,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
                 K::Modifier,
                 app.span,
                 format!(
-                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, lane, change_lane, lateral, keep_lane, keep_speed, along, physical_movement, avoid_collisions), found `{other}`"
+                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, lane, change_lane, lateral, yaw, orientation, keep_lane, keep_speed, along, physical_movement, avoid_collisions), found `{other}`"
                 ),
             ))
         }
@@ -259,6 +263,73 @@ pub(crate) fn check_keeps(
                 }
             }
             _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Checks `yaw(…)` and `orientation(…)` (§8.9 yaw, orientation) against the plan's motion: the
+/// engine's vehicles drive along their lane's centre line (or at a constant offset from it), so
+/// their yaw, pitch and roll relative to the road are 0 except while they change lane or lane
+/// offset, and 0 again when such a change ends (the sinusoidal shape ends with no lateral
+/// speed). A zero angle relative to the road (the default measure) therefore holds at the
+/// start and end of every phase, and throughout one without a lane change or a
+/// `lateral(…, at: end)`; anything else is an error: a non-zero angle, an angle relative to
+/// another object, to north, or absolute, which the planner does not steer.
+pub(crate) fn check_orientation(ctx: &Ctx<'_>, mods: &[Mod<'_>]) -> Result<(), Error> {
+    /// Angles within this of 0 are 0 (rad): a thousandth of a degree.
+    const ZERO: f64 = 1e-3 * std::f64::consts::PI / 180.0;
+    for m in mods.iter().filter(|m| m.kind == ModKind::Orientation) {
+        let name = m.app.name.text.as_str();
+        if let Some(e) = m.arg("relative_to") {
+            return Err(ctx.files.err(
+                K::Unsupported,
+                e.span,
+                format!("expected {name}(…) relative to the road, found relative_to: (orientations relative to another object are not planned yet)"),
+            ));
+        }
+        let measure = if name == "yaw" {
+            "measure_by"
+        } else {
+            "measured_by"
+        };
+        if let Some(e) = m.arg(measure) {
+            if !matches!(ctx.eval(e)?, Val::Enum(v) if v == "relative_to_road") {
+                return Err(ctx.files.err(
+                    K::Unsupported,
+                    e.span,
+                    format!("expected {measure}: relative_to_road, found another measure (absolute and north-relative orientations are not planned yet)"),
+                ));
+            }
+        }
+        let angles: &[&str] = if name == "yaw" {
+            &["angle"]
+        } else {
+            &["yaw", "pitch", "roll"]
+        };
+        for a in angles {
+            if let Some(e) = m.arg(a) {
+                let x = ctx.number(e)?;
+                if x.abs() > ZERO {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        e.span,
+                        format!("expected {a} 0 relative to the road (the engine's vehicles drive along their lane), found {x:.4} rad"),
+                    ));
+                }
+            }
+        }
+        if m.at == At::All {
+            if let Some(c) = mods.iter().find(|q| {
+                q.kind == ModKind::ChangeLane
+                    || (matches!(q.kind, ModKind::Lane | ModKind::Lateral) && q.at == At::End)
+            }) {
+                return Err(ctx.files.err(
+                    K::Unsatisfiable,
+                    c.app.span,
+                    format!("expected no lateral movement while {name}(…) at {} holds throughout the phase (the actor turns while it moves sideways), found `{}(…)`", ctx.files.at(m.app.span), c.app.name.text),
+                ));
+            }
         }
     }
     Ok(())

@@ -778,6 +778,7 @@ impl Planner<'_, '_> {
                 _ => None,
             };
             crate::modifier::check_keeps(ctx, mods, step)?;
+            crate::modifier::check_orientation(ctx, mods)?;
             // Speed first, position at end last: it builds on the phase's speed.
             let mut ordered: Vec<&Mod<'_>> = mods.iter().collect();
             ordered.sort_by_key(|m| (m.kind == ModKind::Position && m.at == At::End) as u8);
@@ -807,6 +808,7 @@ impl Planner<'_, '_> {
                     // Checked against the planned motion (see check_keeps, route::check).
                     (
                         ModKind::Along
+                        | ModKind::Orientation
                         | ModKind::KeepLane
                         | ModKind::KeepSpeed
                         | ModKind::PhysicalMovement

@@ -7,6 +7,7 @@ mod groups;
 mod handlers;
 mod lane_side;
 mod lateral;
+mod orientation;
 mod support;
 
 use support::{error, run, DT};

@@ -11,6 +11,8 @@ pub struct Obj {
     pub name: String,
     pub x: f64,
     pub y: f64,
+    /// Heading (rad).
+    pub h: f64,
     pub s: f64,
     pub lane: i32,
     pub speed: f64,
@@ -34,6 +36,7 @@ impl FrameSink for Frames {
                 name: o.name.to_string(),
                 x: o.pose.x,
                 y: o.pose.y,
+                h: o.pose.h,
                 s: o.road_position.map_or(f64::NAN, |r| r.s),
                 lane: o.road_position.map_or(0, |r| r.lane_id),
                 speed: o.speed,
