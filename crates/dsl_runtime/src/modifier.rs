@@ -24,6 +24,8 @@ pub(crate) enum ModKind {
     Lane,
     /// `change_lane(…)`: a lane change during the phase.
     ChangeLane,
+    /// `distance(d)`: the distance travelled in the phase.
+    Distance,
     /// `lateral(…)`: an offset in the lane (`lateral` module).
     Lateral,
     /// `yaw(angle)` and `orientation(yaw, pitch, roll)` relative to the road: checked (the
@@ -88,6 +90,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
         "change_lane" => ModKind::ChangeLane,
         "along" => ModKind::Along,
         "lateral" => ModKind::Lateral,
+        "distance" => ModKind::Distance,
         "yaw" | "orientation" => ModKind::Orientation,
         "keep_lane" => ModKind::KeepLane,
         "keep_speed" => ModKind::KeepSpeed,
@@ -98,7 +101,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
                 K::Modifier,
                 app.span,
                 format!(
-                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, lane, change_lane, lateral, yaw, orientation, keep_lane, keep_speed, along, physical_movement, avoid_collisions), found `{other}`"
+                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, distance, lane, change_lane, lateral, yaw, orientation, keep_lane, keep_speed, along, physical_movement, avoid_collisions), found `{other}`"
                 ),
             ))
         }

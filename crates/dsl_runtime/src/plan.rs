@@ -781,7 +781,10 @@ impl Planner<'_, '_> {
             crate::modifier::check_orientation(ctx, mods)?;
             // Speed first, position at end last: it builds on the phase's speed.
             let mut ordered: Vec<&Mod<'_>> = mods.iter().collect();
-            ordered.sort_by_key(|m| (m.kind == ModKind::Position && m.at == At::End) as u8);
+            ordered.sort_by_key(|m| {
+                ((m.kind == ModKind::Position && m.at == At::End) || m.kind == ModKind::Distance)
+                    as u8
+            });
             for m in ordered {
                 let need_t = |what: &str| -> Result<f64, Error> {
                     t0.ok_or_else(|| {
@@ -942,13 +945,7 @@ impl Planner<'_, '_> {
                     (ModKind::Position, At::End) => {
                         let t = need_t("position(…, at: end)")?;
                         let (x, sign, d) = self.position_target(m, t)?;
-                        let ve_given = mods.iter().find(|q| {
-                            (q.kind == ModKind::Speed && q.at == At::End)
-                                || q.kind == ModKind::ChangeSpeed
-                        });
-                        let hold = mods
-                            .iter()
-                            .any(|q| q.kind == ModKind::Speed && q.at == At::All);
+                        let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
                         let v0 = self.track(target).at(t).1;
                         let s_a = self.s_at(target, t);
                         let lane_a = self.track(target).lane(t);
@@ -1005,52 +1002,78 @@ impl Planner<'_, '_> {
                                     }
                                     continue;
                                 }
-                                let ve = match ve_given {
-                                    Some(q) => self.speed_value(q, Some(te))?.0,
-                                    None => v0,
-                                };
-                                self.last_v.insert(target.clone(), ve);
-                                let vm = (4.0 * ds / len - v0 - ve) / 2.0;
-                                // movement_mode: monotonous: the speed only rises or only falls.
-                                if m.monotonous && (vm - v0) * (ve - vm) < -1e-9 {
+                                let ve = self.end_speed(ve_given, te, v0)?;
+                                let names = (name("position.1"), name("position.2"));
+                                self.two_halves(m, target, (t, len), (v0, ds, ve), names, out)?;
+                            }
+                        }
+                    }
+                    (ModKind::Distance, at) => {
+                        if at == At::Start {
+                            return Err(ctx.files.err(
+                                K::Modifier,
+                                m.app.span,
+                                "expected distance(…) over the phase (at: all or end), found at: start",
+                            ));
+                        }
+                        let t = need_t("distance(…)")?;
+                        let d =
+                            match m.arg("distance").map(|e| ctx.number(e)).transpose()? {
+                                Some(d) if d >= 0.0 => d,
+                                _ => return Err(ctx.files.err(
+                                    K::Value,
+                                    m.app.span,
+                                    "expected a distance of 0 m or more in distance(…), found none",
+                                )),
+                            };
+                        let v0 = self.track(target).at(t).1;
+                        let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
+                        if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
+                            return Err(ctx.files.err(
+                                K::Unsatisfiable,
+                                q.app.span,
+                                format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", ctx.files.at(m.app.span)),
+                            ));
+                        }
+                        match end.filter(|te| *te > t) {
+                            Some(te) => {
+                                let len = te - t;
+                                if hold && ve_given.is_none() {
+                                    if (v0 * len - d).abs() > POSITION_TOLERANCE {
+                                        return Err(ctx.files.err(
+                                            K::Unsatisfiable,
+                                            m.app.span,
+                                            format!("expected distance({d} m) at the constant speed {v0:.2} m/s over {len} s, found {:.2} m", v0 * len),
+                                        ));
+                                    }
+                                    continue;
+                                }
+                                let ve = self.end_speed(ve_given, te, v0)?;
+                                let names = (name("distance.1"), name("distance.2"));
+                                self.two_halves(m, target, (t, len), (v0, d, ve), names, out)?;
+                            }
+                            None => {
+                                // No duration: the phase ends when d is travelled at the speed
+                                // it starts with.
+                                if let Some(q) = ve_given {
+                                    return Err(ctx.files.err(
+                                        K::Unsatisfiable,
+                                        q.app.span,
+                                        format!("expected a phase duration for a speed change beside distance(…) at {}, found none", ctx.files.at(m.app.span)),
+                                    ));
+                                }
+                                if v0 <= 0.0 && d > 0.0 {
                                     return Err(ctx.files.err(
                                         K::Unsatisfiable,
                                         m.app.span,
-                                        format!("expected a monotonous speed profile (movement_mode: monotonous) from {v0:.2} m/s to {ve:.2} m/s, found it needs {vm:.2} m/s half way"),
+                                        format!("expected `{target}` to move to travel {d} m, found it standing"),
                                     ));
                                 }
-                                check_speed(ctx, m, vm)?;
-                                check_accel(ctx, m, (vm - v0) / (len / 2.0))?;
-                                check_accel(ctx, m, (ve - vm) / (len / 2.0))?;
-                                // Drop a speed ramp this phase planned already (change_speed).
-                                out.retain(|a| {
-                                    !(a.entity == *target && a.name.ends_with(":speed"))
+                                let te = When::At(t + if d > 0.0 { d / v0 } else { 0.0 });
+                                derived = Some(match derived {
+                                    None => te,
+                                    Some(w) => w.or(te),
                                 });
-                                out.push(Planned {
-                                    entity: target.clone(),
-                                    at: None,
-                                    name: name("position.1"),
-                                    action: speed_action(
-                                        DynamicsShape::Linear,
-                                        len / 2.0,
-                                        SpeedTarget::Absolute(vm),
-                                    ),
-                                    span: m.app.span,
-                                });
-                                out.push(Planned {
-                                    entity: target.clone(),
-                                    at: Some(t + len / 2.0),
-                                    name: name("position.2"),
-                                    action: speed_action(
-                                        DynamicsShape::Linear,
-                                        len / 2.0,
-                                        SpeedTarget::Absolute(ve),
-                                    ),
-                                    span: m.app.span,
-                                });
-                                let tr = self.track_mut(target);
-                                tr.ramp(t, t + len / 2.0, vm);
-                                tr.ramp(t + len / 2.0, te, ve);
                             }
                         }
                     }
@@ -1191,6 +1214,63 @@ impl Planner<'_, '_> {
             checked?;
         }
         Ok(derived)
+    }
+
+    /// The speed at `te` an end-speed modifier asks for, else `v0`.
+    fn end_speed(&self, q: Option<&Mod<'_>>, te: f64, v0: f64) -> Result<f64, Error> {
+        Ok(match q {
+            Some(q) => self.speed_value(q, Some(te))?.0,
+            None => v0,
+        })
+    }
+
+    /// Plans a speed profile of two linear halves over [t, t + len] that covers `ds` (m along
+    /// the lane) from speed `v0` to `ve`: v0 → vm over len/2 and vm → ve over len/2, with vm =
+    /// (4·ds/len − v0 − ve)/2, within the limits (and monotonous when `m` asks). It replaces
+    /// a speed change the phase planned already.
+    fn two_halves(
+        &mut self,
+        m: &Mod<'_>,
+        target: &str,
+        (t, len): (f64, f64),
+        (v0, ds, ve): (f64, f64, f64),
+        names: (String, String),
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let ctx = self.ctx;
+        self.last_v.insert(target.to_string(), ve);
+        let vm = (4.0 * ds / len - v0 - ve) / 2.0;
+        // movement_mode: monotonous: the speed only rises or only falls.
+        if m.monotonous && (vm - v0) * (ve - vm) < -1e-9 {
+            return Err(ctx.files.err(
+                K::Unsatisfiable,
+                m.app.span,
+                format!("expected a monotonous speed profile (movement_mode: monotonous) from {v0:.2} m/s to {ve:.2} m/s, found it needs {vm:.2} m/s half way"),
+            ));
+        }
+        check_speed(ctx, m, vm)?;
+        check_accel(ctx, m, (vm - v0) / (len / 2.0))?;
+        check_accel(ctx, m, (ve - vm) / (len / 2.0))?;
+        // Drop a speed ramp this phase planned already (change_speed).
+        out.retain(|a| !(a.entity == target && a.name.ends_with(":speed")));
+        out.push(Planned {
+            entity: target.to_string(),
+            at: None,
+            name: names.0,
+            action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(vm)),
+            span: m.app.span,
+        });
+        out.push(Planned {
+            entity: target.to_string(),
+            at: Some(t + len / 2.0),
+            name: names.1,
+            action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(ve)),
+            span: m.app.span,
+        });
+        let tr = self.track_mut(target);
+        tr.ramp(t, t + len / 2.0, vm);
+        tr.ramp(t + len / 2.0, t + len, ve);
+        Ok(())
     }
 
     /// The moment the gap of a `position(d, ahead_of|behind: x)` is reached, as the engine
@@ -1414,6 +1494,18 @@ impl Planner<'_, '_> {
             "expected same_as, side_of, left_of or right_of in lane(…, at: end), found none (lane numbers at the end are not planned yet)",
         ))
     }
+}
+
+/// The `speed(…, at: end)` or `change_speed(…)` of an invocation, if any.
+fn end_speed_mod<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+    mods.iter()
+        .find(|q| (q.kind == ModKind::Speed && q.at == At::End) || q.kind == ModKind::ChangeSpeed)
+}
+
+/// Whether an invocation holds its speed throughout (`speed(v)`, at: all).
+fn holds_speed(mods: &[Mod<'_>]) -> bool {
+    mods.iter()
+        .any(|q| q.kind == ModKind::Speed && q.at == At::All)
 }
 
 /// The lane change of an invocation (`change_lane`, `lane(…, at: end)`), if any.

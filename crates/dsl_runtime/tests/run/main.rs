@@ -3,6 +3,7 @@
 //! 0.05 s step grid.
 
 mod along;
+mod distance;
 mod groups;
 mod handlers;
 mod lane_side;
