@@ -1488,11 +1488,22 @@ impl Planner<'_, '_> {
                 ));
             }
         }
-        Err(self.ctx.files.err(
-            K::Modifier,
-            m.app.span,
-            "expected same_as, side_of, left_of or right_of in lane(…, at: end), found none (lane numbers at the end are not planned yet)",
-        ))
+        // A lane number (1 = the rightmost driving lane, or the leftmost with from: left) at
+        // the phase end: an absolute target lane.
+        let from_left = matches!(m.arg("from").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
+        let s_end = self.s_at(target, t + len);
+        match self.road.numbered(n.into(), from_left, s_end) {
+            Some(l) => Ok((LaneChangeTarget::Absolute(l.to_string()), Some(l))),
+            None => Err(self.ctx.files.err(
+                K::Unsatisfiable,
+                m.app.span,
+                format!(
+                    "expected a driving lane numbered {n} from the {} on road {} at s = {s_end:.2} m, found none",
+                    if from_left { "left" } else { "right" },
+                    self.road.id()
+                ),
+            )),
+        }
     }
 }
 

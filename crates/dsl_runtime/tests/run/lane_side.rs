@@ -36,3 +36,18 @@ fn change_lane_side_is_drawn_from_the_seed() {
         "8:9",
     );
 }
+
+#[test]
+fn lane_number_at_the_end_is_an_absolute_target() {
+    let r = run("lane_number_end", 0, None);
+    let ego = r.at(4.0, "ego");
+    assert!(ego.lane == -1 && (ego.y + 1.75).abs() < Y_TOL, "{ego:?}");
+    assert!((r.at(2.0, "ego").y + 5.25).abs() < Y_TOL);
+    let npc = r.at(4.0, "npc");
+    assert!(npc.lane == -2 && (npc.y + 5.25).abs() < Y_TOL, "{npc:?}");
+    crate::along::refused(
+        "err_lane_number_end",
+        "expected a driving lane numbered 4 from the right on road 1 at s = ",
+        "7:9",
+    );
+}
