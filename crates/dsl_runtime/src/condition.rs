@@ -125,6 +125,11 @@ fn groups(
                 }],
             }])
         }
+        ExprKind::Temporal(n, _) if n.text == "every" => Err(ctx.files.err(
+            K::Condition,
+            e.span,
+            "expected an event the engine can observe, found every(…) (periodic events are not run yet)",
+        )),
         _ => Err(unsupported(ctx, e)),
     }
 }

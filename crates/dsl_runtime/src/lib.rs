@@ -230,7 +230,7 @@ pub fn lower_program(
         match m {
             Member::Event(e) => {
                 if let Some(spec) = &e.spec {
-                    events.push((e.name.text.clone(), spec));
+                    events.push((e.name.text.clone(), spec, false));
                 }
             }
             // `m.set_map_file(f)` names the road network (see `map_file`); other modifiers of
@@ -250,7 +250,7 @@ pub fn lower_program(
             Member::On(spec, body, on_span) => {
                 for b in body {
                     match &b.behavior {
-                        Behavior::Emit(name, _, _) => events.push((name.text.clone(), spec)),
+                        Behavior::Emit(name, _, _) => events.push((name.text.clone(), spec, true)),
                         Behavior::Call(_, span) => {
                             return Err(LoadError::Plan(files.err(
                                 ErrorKind::Unsupported,

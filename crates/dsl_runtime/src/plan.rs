@@ -205,12 +205,13 @@ struct Planner<'c, 'a> {
     sides: std::cell::RefCell<HashMap<String, bool>>,
 }
 
-/// Plans `root` on `road`.
+/// Plans `root` on `road`; `events` are the scenario's event conditions (name, condition,
+/// whether an `on` handler gives it).
 pub(crate) fn plan<'a>(
     ctx: &Ctx<'a>,
     road: &PlanRoad<'a>,
     root: &Phase<'_>,
-    events: Vec<(String, &'a Expr)>,
+    events: Vec<(String, &'a Expr, bool)>,
     settings: Settings,
 ) -> Result<Plan, Error> {
     let mut p = Planner {
@@ -238,8 +239,12 @@ pub(crate) fn plan<'a>(
                 .push((ph.path.clone(), ph.span));
         }
     });
-    for (name, spec) in events {
+    let mut handlers = Vec::new();
+    for (name, spec, handler) in events {
         p.events.entry(name).or_default().push(spec);
+        if handler {
+            handlers.push(spec);
+        }
     }
     // Actors, in the order the tree names them, and each one's first phase.
     let mut leaves_mods: Vec<(&Phase<'_>, Vec<Mod<'_>>)> = Vec::new();
@@ -351,6 +356,10 @@ pub(crate) fn plan<'a>(
         .iter()
         .map(|(l, m)| (l.path.clone(), m))
         .collect();
+    // An `on` handler's event is checked even when nothing waits on what it emits.
+    for spec in handlers {
+        p.condition(spec, 0)?;
+    }
     let end = p.schedule(root, When::At(0.0), None, None, None, &mods)?;
     if end == When::Never && !settings.open_end {
         return Err(no_end(ctx, root));

@@ -21,10 +21,15 @@ fn on_handler_emits_an_event_others_wait_on() {
 }
 
 #[test]
-fn call_in_a_handler_is_an_error() {
+fn call_or_every_in_a_handler_is_an_error() {
     crate::along::refused(
         "err_on_call",
         "expected `emit` in an `on` handler, found `call`",
         "8:9",
+    );
+    crate::along::refused(
+        "err_on_every",
+        "found every(…) (periodic events are not run yet)",
+        "6:8",
     );
 }
