@@ -1476,7 +1476,7 @@ impl Planner<'_, '_> {
                     entity_ref: target.to_string(),
                     value: shift,
                 },
-                Some(now + shift),
+                self.road.beside(now, left, n.into(), s_now),
             ));
         }
         for (key, value) in [
@@ -1488,12 +1488,28 @@ impl Planner<'_, '_> {
             if let Some(e) = m.arg(key) {
                 let x = self.entity_of(e)?;
                 let lx = self.track(&x).lane(t + len);
+                let s_end = self.s_at(&x, t + len);
+                let lane = match value {
+                    0 => Some(lx),
+                    v => self.road.beside(lx, v > 0, v.abs().into(), s_end),
+                };
+                if lane.is_none() {
+                    return Err(self.ctx.files.err(
+                        K::Unsatisfiable,
+                        m.app.span,
+                        format!(
+                            "expected a driving lane {} to the {} of `{x}`'s lane {lx} at the phase end (s = {s_end:.2} m), found none",
+                            value.abs(),
+                            if value > 0 { "left" } else { "right" }
+                        ),
+                    ));
+                }
                 return Ok((
                     LaneChangeTarget::Relative {
                         entity_ref: x,
                         value,
                     },
-                    Some(lx + value),
+                    lane,
                 ));
             }
         }

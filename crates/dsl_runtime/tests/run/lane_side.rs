@@ -50,4 +50,9 @@ fn lane_number_at_the_end_is_an_absolute_target() {
         "expected a driving lane numbered 4 from the right on road 1 at s = ",
         "7:9",
     );
+    crate::along::refused(
+        "err_lane_left_of_end",
+        "expected a driving lane 1 to the left of `ego`'s lane -1 at the phase end",
+        "13:13",
+    );
 }
