@@ -16,8 +16,17 @@
 //!
 //! The reference point must stay in the lane (|o| ≤ W/2), else the constraint is unsatisfiable.
 //! `closest` (the library's default) needs a second object to be defined and `distance_range`
-//! is not declared by the library: both are errors, as are the forms relative to another
-//! actor (`side_of`, `left_of`, `right_of`, `same_as`), which are not planned yet.
+//! is not declared by the library: both are errors.
+//!
+//! Relative to another actor x (`side_of: x, side: …`, `left_of: x`, `right_of: x`) the
+//! distance is measured in t from a line of x to a line of the actor, the actor on the given
+//! side: t_a + a = t_x + r + σ·d, with a and r the actor's and x's side terms (±w/2, 0) as
+//! above and σ = +1 on the left of x, −1 on its right. `closest` is then the gap between the
+//! facing sides (the actor's right side and x's left side when it is on x's left). The actor's
+//! lane is the one it is placed in by `lane(…)`, or else the driving lane containing t_a. This
+//! form places the actor at the start of the run (its first phase); `at: all` then holds while
+//! neither actor moves sideways (checked by the planner), and in later phases or `at: end` it
+//! is not planned (an error). `same_as` (the same t) is an error: two vehicles cannot share it.
 
 use crate::error::{Error, ErrorKind as K};
 use crate::modifier::Mod;
@@ -36,24 +45,11 @@ pub(crate) fn lane_offset(
             return Err(ctx.files.err(
                 K::Unsupported,
                 e.span,
-                format!("expected lateral(…) relative to the actor's lane, found `{key}:` (lateral distances to another actor are not planned yet)"),
+                format!("expected lateral(…) relative to the actor's lane here, found `{key}:` (lateral distances to another actor are planned at the start of the run only)"),
             ));
         }
     }
-    let d = match m.arg("distance") {
-        Some(e) => ctx.number(e)?,
-        None => {
-            return Err(ctx.files.err(
-                K::Modifier,
-                m.app.span,
-                "expected a distance in lateral(…), found none",
-            ))
-        }
-    };
-    let measure = match m.arg("measure_by").map(|e| ctx.eval(e)).transpose()? {
-        Some(Val::Enum(v)) => v,
-        _ => "closest".to_string(),
-    };
+    let (d, measure) = distance_and_measure(ctx, m)?;
     let Some((actor, lane)) = measure.split_once("_to_") else {
         return Err(ctx.files.err(
             K::Unsupported,
@@ -90,4 +86,80 @@ pub(crate) fn lane_offset(
         ));
     }
     Ok(o)
+}
+
+/// The reference actor of a `lateral(…)` and the side the actor is on (+1 left, −1 right), if
+/// it has one.
+pub(crate) fn reference<'e>(
+    ctx: &Ctx<'_>,
+    m: &Mod<'e>,
+) -> Result<Option<(&'e dsl::semantics::hir::Expr, f64)>, Error> {
+    if let Some(e) = m.arg("same_as") {
+        return Err(ctx.files.err(
+            K::Unsatisfiable,
+            e.span,
+            "expected lateral(…) beside another actor (side_of, left_of, right_of), found same_as: (two vehicles cannot share a lateral position)",
+        ));
+    }
+    if let Some(e) = m.arg("left_of") {
+        return Ok(Some((e, 1.0)));
+    }
+    if let Some(e) = m.arg("right_of") {
+        return Ok(Some((e, -1.0)));
+    }
+    let Some(e) = m.arg("side_of") else {
+        return Ok(None);
+    };
+    match m.arg("side").map(|x| ctx.eval(x)).transpose()? {
+        Some(Val::Enum(s)) if s == "left" => Ok(Some((e, 1.0))),
+        Some(Val::Enum(s)) if s == "right" => Ok(Some((e, -1.0))),
+        _ => Err(ctx.files.err(
+            K::Modifier,
+            m.app.span,
+            "expected side: left or right with side_of: in lateral(…), found none",
+        )),
+    }
+}
+
+/// t of the actor's reference line (its centre) for a `lateral(…)` relative to an actor whose
+/// centre is at t `t_x` and whose width is `w_x`: t_a = t_x + r + σ·d − a (module doc).
+pub(crate) fn beside(
+    ctx: &Ctx<'_>,
+    m: &Mod<'_>,
+    sigma: f64,
+    (t_x, w_x): (f64, f64),
+    width: f64,
+) -> Result<f64, Error> {
+    let (d, measure) = distance_and_measure(ctx, m)?;
+    let (actor, other) = match measure.split_once("_to_") {
+        Some(pair) => pair,
+        // The facing sides.
+        None if sigma > 0.0 => ("right", "left"),
+        None => ("left", "right"),
+    };
+    let side = |which: &str, w: f64| match which {
+        "left" => w / 2.0,
+        "right" => -w / 2.0,
+        _ => 0.0,
+    };
+    Ok(t_x + side(other, w_x) + sigma * d - side(actor, width))
+}
+
+/// The `distance` and `measure_by` (default `closest`) of a `lateral(…)`.
+fn distance_and_measure(ctx: &Ctx<'_>, m: &Mod<'_>) -> Result<(f64, String), Error> {
+    let d = match m.arg("distance") {
+        Some(e) => ctx.number(e)?,
+        None => {
+            return Err(ctx.files.err(
+                K::Modifier,
+                m.app.span,
+                "expected a distance in lateral(…), found none",
+            ))
+        }
+    };
+    let measure = match m.arg("measure_by").map(|e| ctx.eval(e)).transpose()? {
+        Some(Val::Enum(v)) => v,
+        _ => "closest".to_string(),
+    };
+    Ok((d, measure))
 }

@@ -67,6 +67,14 @@ pub(crate) struct Start {
     pub offset: f64,
 }
 
+/// The modifier of `kind` of `p`'s first phase that holds at the start.
+fn find<'m, 'p>(p: &ToPlace<'m, 'p>, kind: ModKind) -> Option<&'m Mod<'p>> {
+    p.mods
+        .iter()
+        .find(|m| m.kind == kind && m.at != At::End)
+        .copied()
+}
+
 /// Places every actor of `all`.
 pub(crate) fn place(
     ctx: &Ctx<'_>,
@@ -77,12 +85,6 @@ pub(crate) fn place(
     let mut lane: HashMap<String, i32> = HashMap::new();
     let mut s: HashMap<String, (f64, bool)> = HashMap::new();
     let mut v: HashMap<String, f64> = HashMap::new();
-    fn find<'m, 'p>(p: &ToPlace<'m, 'p>, kind: ModKind) -> Option<&'m Mod<'p>> {
-        p.mods
-            .iter()
-            .find(|m| m.kind == kind && m.at != At::End)
-            .copied()
-    }
     let reference = |m: &Mod<'_>, names: &[&str]| -> Result<Option<(String, String)>, Error> {
         for n in names {
             if let Some(e) = m.arg(n) {
@@ -293,6 +295,8 @@ pub(crate) fn place(
             ));
         }
         let offset = match find(p, ModKind::Lateral) {
+            // Beside another actor: placed below, once that one is.
+            Some(m) if crate::lateral::reference(ctx, m)?.is_some() => 0.0,
             Some(m) => crate::lateral::lane_offset(ctx, m, road.lane_width(*l, sv), p.width)?,
             None => 0.0,
         };
@@ -306,7 +310,121 @@ pub(crate) fn place(
             },
         );
     }
+    beside_others(ctx, road, all, entity, &mut out)?;
     Ok(out)
+}
+
+/// Places the actors whose first phase has `lateral(…)` relative to another actor, once that
+/// one is placed: the offset in its lane, or, without a lane of its own, the lane that holds
+/// the asked t (see the `lateral` module).
+fn beside_others(
+    ctx: &Ctx<'_>,
+    road: &PlanRoad<'_>,
+    all: &[ToPlace<'_, '_>],
+    entity: &dyn Fn(&str) -> Option<String>,
+    out: &mut HashMap<String, Start>,
+) -> Result<(), Error> {
+    let mut pending = Vec::new();
+    for p in all {
+        if let Some(m) = find(p, ModKind::Lateral) {
+            if let Some((e, sigma)) = crate::lateral::reference(ctx, m)? {
+                let x = ctx.path_of(e).and_then(|p| entity(&p)).ok_or_else(|| {
+                    ctx.files.err(
+                        K::UnknownActor,
+                        e.span,
+                        "expected a vehicle of the scenario beside which to place, found another value",
+                    )
+                })?;
+                pending.push((p, m, x, sigma));
+            }
+        }
+    }
+    // Whether an actor's lane modifier refers to `name` (placed by lane before this pass).
+    let refers = |name: &str| {
+        all.iter().any(|q| {
+            q.mods.iter().any(|m| {
+                m.kind == ModKind::Lane
+                    && ["same_as", "side_of", "left_of", "right_of"]
+                        .iter()
+                        .any(|k| {
+                            m.arg(k)
+                                .and_then(|e| ctx.path_of(e))
+                                .and_then(|p| entity(&p))
+                                .is_some_and(|x| x == name)
+                        })
+            })
+        })
+    };
+    let mut done: Vec<&str> = Vec::new();
+    for _round in 0..=pending.len() {
+        let mut progress = false;
+        for (p, m, x, sigma) in &pending {
+            let waits = |n: &str| {
+                pending
+                    .iter()
+                    .any(|(q, ..)| q.name == n && !done.contains(&n))
+            };
+            if done.contains(&p.name.as_str()) || waits(x) {
+                continue;
+            }
+            let (Some(sx), Some(q)) = (out.get(x).copied(), all.iter().find(|q| &q.name == x))
+            else {
+                continue;
+            };
+            let t_x = road.lane_center(sx.lane, sx.s) + sx.offset;
+            let t_a = crate::lateral::beside(ctx, m, *sigma, (t_x, q.width), p.width)?;
+            let st = out[&p.name];
+            let own_lane = p.mods.iter().any(|m| m.kind == ModKind::Lane)
+                || p.across.is_some()
+                || matches!(p.member_after, Some(Some(_)))
+                || p.route.is_some();
+            let lane = if own_lane {
+                st.lane
+            } else {
+                let l = road.lane_holding(st.s, t_a).ok_or_else(|| {
+                    ctx.files.err(
+                        K::Unsatisfiable,
+                        m.app.span,
+                        format!("expected a driving lane at t = {t_a:.2} m (where lateral(…) puts `{}`), found none", p.name),
+                    )
+                })?;
+                if l != st.lane && refers(&p.name) {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        m.app.span,
+                        format!("expected a lane(…) of `{}` beside this lateral(…): another actor's lane refers to it, and its lane follows from the lateral position only after that one is placed", p.name),
+                    ));
+                }
+                l
+            };
+            let offset = t_a - road.lane_center(lane, st.s);
+            let w = road.lane_width(lane, st.s);
+            if offset.abs() > w / 2.0 + 1e-9 {
+                return Err(ctx.files.err(
+                    K::Unsatisfiable,
+                    m.app.span,
+                    format!("expected `{}`'s reference point in its lane {lane} ({w:.2} m wide), found lateral(…) puts it {offset:.2} m from the lane's centre", p.name),
+                ));
+            }
+            out.insert(p.name.clone(), Start { lane, offset, ..st });
+            done.push(&p.name);
+            progress = true;
+        }
+        if !progress {
+            break;
+        }
+    }
+    if let Some((p, m, ..)) = pending
+        .iter()
+        .find(|(p, ..)| !done.contains(&p.name.as_str()))
+    {
+        return Err(ctx.files.err(
+            K::Unsatisfiable,
+            m.app.span,
+            format!("expected a lateral placement of `{}` that does not depend on itself, found a cycle of references", p.name),
+        ));
+    }
+    Ok(())
 }
 
 /// Driving lanes from `l0` leftwards at `s` (`l0` first): the lanes a common-route group's

@@ -201,6 +201,9 @@ struct Planner<'c, 'a> {
     alongs: HashMap<String, Vec<(At, Along)>>,
     /// Free one-lane route → its lane and the first actor along it.
     route_lanes: HashMap<String, (i32, String)>,
+    /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
+    /// the modifier), checked once every phase is planned.
+    beside_checks: Vec<(String, String, f64, Option<f64>, Span)>,
     /// The side drawn for each `change_lane(…)` without one (by the modifier's span).
     sides: std::cell::RefCell<HashMap<String, bool>>,
 }
@@ -230,6 +233,7 @@ pub(crate) fn plan<'a>(
         alongs: HashMap::new(),
         route_lanes: HashMap::new(),
         sides: std::cell::RefCell::new(HashMap::new()),
+        beside_checks: Vec::new(),
     };
     root.walk(&mut |ph| {
         if let Kind::Emit(e) = &ph.kind {
@@ -363,6 +367,17 @@ pub(crate) fn plan<'a>(
     let end = p.schedule(root, When::At(0.0), None, None, None, &mods)?;
     if end == When::Never && !settings.open_end {
         return Err(no_end(ctx, root));
+    }
+    for (a, x, t0, te, span) in &p.beside_checks {
+        for who in [a, x] {
+            if let Some(t) = p.track(who).moving_in(*t0, te.unwrap_or(f64::INFINITY)) {
+                return Err(ctx.files.err(
+                    K::Unsatisfiable,
+                    *span,
+                    format!("expected `{a}` and `{x}` to keep their lateral positions while this lateral(…) holds (at: all), found `{who}` moving sideways from {t:.2} s; write at: start"),
+                ));
+            }
+        }
     }
     Ok(Plan {
         road: road.id().to_string(),
@@ -1131,6 +1146,7 @@ impl Planner<'_, '_> {
                             let tr = self.track_mut(target);
                             tr.set_lane(t + len, l);
                             tr.set_offset(t + len, offset.unwrap_or(0.0));
+                            tr.add_move(t, t + len);
                         }
                     }
                     (ModKind::Lateral, At::Start | At::All) => {
@@ -1144,6 +1160,20 @@ impl Planner<'_, '_> {
                             }
                         }
                         if first {
+                            // Placed; beside another actor and throughout, both must keep
+                            // their lateral positions (checked once everything is planned).
+                            if m.at == At::All {
+                                if let Some((e, _)) = crate::lateral::reference(ctx, m)? {
+                                    let x = self.entity_of(e)?;
+                                    self.beside_checks.push((
+                                        target.clone(),
+                                        x,
+                                        t0.unwrap_or(0.0),
+                                        end.or(len.and_then(|l| t0.map(|t| t + l))),
+                                        m.app.span,
+                                    ));
+                                }
+                            }
                             continue;
                         }
                         let t = need_t("a lateral position at the phase start")?;
@@ -1194,7 +1224,11 @@ impl Planner<'_, '_> {
                                 span: m.app.span,
                             });
                         }
-                        self.track_mut(target).set_offset(t + len, o1);
+                        let tr = self.track_mut(target);
+                        tr.set_offset(t + len, o1);
+                        if a > 0.0 {
+                            tr.add_move(t, t + len);
+                        }
                     }
                 }
             }

@@ -84,6 +84,23 @@ impl<'a> PlanRoad<'a> {
 }
 
 impl PlanRoad<'_> {
+    /// t of the centre of lane `lane` at `s` (m); 0 where the lane is missing.
+    pub(crate) fn lane_center(&self, lane: i32, s: f64) -> f64 {
+        let s = s.clamp(0.0, self.road.length);
+        self.road.lane_span(lane, s).map_or(0.0, |sp| sp.center())
+    }
+
+    /// The driving lane of the right side whose span holds `t` at `s`, if any.
+    pub(crate) fn lane_holding(&self, s: f64, t: f64) -> Option<i32> {
+        let s = s.clamp(0.0, self.road.length);
+        self.driving_lanes(s).into_iter().find(|l| {
+            self.road.lane_span(*l, s).is_ok_and(|sp| {
+                let (a, b) = (sp.inner.min(sp.outer), sp.inner.max(sp.outer));
+                (a..=b).contains(&t)
+            })
+        })
+    }
+
     /// Width of lane `lane` at `s` (m); 0 where the lane is missing.
     pub(crate) fn lane_width(&self, lane: i32, s: f64) -> f64 {
         let s = s.clamp(0.0, self.road.length);

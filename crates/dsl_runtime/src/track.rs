@@ -21,6 +21,8 @@ pub(crate) struct Track {
     lanes: Vec<(f64, i32)>,
     /// (time from which, offset from the lane centre, m).
     offsets: Vec<(f64, f64)>,
+    /// Planned sideways movements (lane and offset changes): (start, end) times.
+    moves: Vec<(f64, f64)>,
 }
 
 impl Track {
@@ -32,7 +34,24 @@ impl Track {
             ramps: Vec::new(),
             lanes: vec![(0.0, lane)],
             offsets: vec![(0.0, 0.0)],
+            moves: Vec::new(),
         }
+    }
+
+    /// The actor moves sideways from `t0` to `t1` (a lane or lane offset change).
+    pub(crate) fn add_move(&mut self, t0: f64, t1: f64) {
+        self.moves.push((t0, t1));
+    }
+
+    /// The start of the first sideways movement that overlaps the open interval (a, b).
+    pub(crate) fn moving_in(&self, a: f64, b: f64) -> Option<f64> {
+        self.moves
+            .iter()
+            .filter(|(m0, m1)| *m0 < b && *m1 > a)
+            .map(|(m0, _)| *m0)
+            .fold(None, |acc: Option<f64>, x| {
+                Some(acc.map_or(x, |y| y.min(x)))
+            })
     }
 
     /// The offset from the lane centre at time `t` (the last one planned from t or before).

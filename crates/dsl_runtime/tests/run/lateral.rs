@@ -40,3 +40,23 @@ fn lateral_positions_that_cannot_hold_are_errors() {
         "8:9",
     );
 }
+
+#[test]
+fn lateral_beside_another_actor_places_at_the_start() {
+    let r = run("lateral_beside", 0, None);
+    for t in [0.0, 3.0] {
+        let npc = r.at(t, "npc");
+        assert_eq!(npc.lane, -3, "{npc:?}");
+        assert!((npc.y + 8.25).abs() < Y_TOL, "{npc:?}");
+    }
+    crate::along::refused(
+        "err_lateral_beside_lane",
+        "expected `npc`'s reference point in its lane -3 (3.50 m wide), found lateral(…) puts it 6.00 m from the lane's centre",
+        "16:13",
+    );
+    crate::along::refused(
+        "err_lateral_beside_move",
+        "expected `npc` and `ego` to keep their lateral positions while this lateral(…) holds (at: all), found `ego` moving sideways from 0.00 s",
+        "17:13",
+    );
+}
