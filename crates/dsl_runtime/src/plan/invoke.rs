@@ -1,0 +1,525 @@
+//! Planning one invocation (ASAM OpenSCENARIO DSL 2.1 §8.9 movement modifiers): the actions
+//! its modifiers lower to, checked against the vehicles' limits, and the end a
+//! `position(…, at: end)` or `distance(…)` gives a phase without a duration.
+
+use scenario::{
+    DynamicsDimension, DynamicsShape, LateralAction, LongitudinalAction, PrivateAction,
+    SpeedTarget, SpeedTargetValueType, TransitionDynamics,
+};
+
+use crate::error::{Error, ErrorKind as K};
+use crate::modifier::{At, Mod, ModKind};
+use crate::phase::{Invoke, Phase};
+use crate::route::{self, OnRoute};
+
+use super::motion::{
+    check_accel, check_speed, end_speed_mod, holds_speed, lane_change, lateral_end, speed_action,
+};
+use super::{Planned, Planner, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
+
+impl Planner<'_, '_> {
+    /// Plans one invocation: its actions, and the time its `position(…, at: end)` is met when
+    /// nothing else ends it.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn plan_invoke(
+        &mut self,
+        p: &Phase<'_>,
+        inv: &Invoke<'_>,
+        mods: &[Mod<'_>],
+        t0: Option<f64>,
+        end: Option<f64>,
+        len: Option<f64>,
+        out: &mut Vec<Planned>,
+    ) -> Result<Option<When>, Error> {
+        let ctx = self.ctx;
+        if inv.action != "drive" {
+            return Err(ctx.files.err(
+                K::Unsupported,
+                p.span,
+                format!(
+                    "expected drive() (the movement action the runtime plans), found `{}`",
+                    inv.action
+                ),
+            ));
+        }
+        let targets: Vec<String> = match self.groups.get(&inv.actor) {
+            Some(m) => m.clone(),
+            None => vec![inv.actor.clone()],
+        };
+        let mut derived = None;
+        for target in &targets {
+            let first = self.first_leaf.get(target) == Some(&p.path);
+            let mut n = 0;
+            let mut name = |what: &str| {
+                n += 1;
+                format!("{}/{target}/{n}:{what}", p.path)
+            };
+            // A step of speed at the phase start (`speed(v)` after the first phase).
+            let step = match (t0, first) {
+                (Some(t), false) => match mods
+                    .iter()
+                    .find(|m| m.kind == ModKind::Speed && m.at != At::End)
+                {
+                    Some(m) => Some((m, self.track(target).at(t).1, self.speed_value(m, t0)?.0)),
+                    None => None,
+                },
+                _ => None,
+            };
+            crate::modifier::check_keeps(ctx, mods, step)?;
+            crate::modifier::check_orientation(ctx, mods)?;
+            // Speed first, position at end last: it builds on the phase's speed.
+            let mut ordered: Vec<&Mod<'_>> = mods.iter().collect();
+            ordered.sort_by_key(|m| {
+                ((m.kind == ModKind::Position && m.at == At::End) || m.kind == ModKind::Distance)
+                    as u8
+            });
+            for m in ordered {
+                let need_t = |what: &str| -> Result<f64, Error> {
+                    t0.ok_or_else(|| {
+                        ctx.files.err(
+                            K::Unsatisfiable,
+                            m.app.span,
+                            format!("expected a phase start the plan knows for {what}, found one after a run-time condition"),
+                        )
+                    })
+                };
+                // The phase's start (when the plan knows it) and duration.
+                let need_len = |what: &str| -> Result<(Option<f64>, f64), Error> {
+                    match (t0, end, len) {
+                        (Some(a), Some(b), _) if b > a => Ok((Some(a), b - a)),
+                        (_, _, Some(l)) if l > 0.0 => Ok((t0, l)),
+                        _ => Err(ctx.files.err(
+                            K::Unsatisfiable,
+                            m.app.span,
+                            format!("expected a phase duration the plan knows for {what}, found none (give the phase a duration)"),
+                        )),
+                    }
+                };
+                match (m.kind, m.at) {
+                    // Checked against the planned motion (see check_keeps, route::check).
+                    (
+                        ModKind::Along
+                        | ModKind::Orientation
+                        | ModKind::KeepLane
+                        | ModKind::KeepSpeed
+                        | ModKind::PhysicalMovement
+                        | ModKind::AvoidCollisions,
+                        _,
+                    ) => {}
+                    (ModKind::Speed, At::Start | At::All) => {
+                        let (v, relative) = self.speed_value(m, t0)?;
+                        if first {
+                            continue;
+                        }
+                        let target_speed = match relative {
+                            Some((x, delta)) => SpeedTarget::Relative {
+                                entity_ref: x,
+                                value: delta,
+                                speed_target_value_type: SpeedTargetValueType::Delta,
+                                continuous: m.at == At::All,
+                            },
+                            None => SpeedTarget::Absolute(v),
+                        };
+                        out.push(Planned {
+                            entity: target.clone(),
+                            at: None,
+                            name: name("speed"),
+                            action: speed_action(DynamicsShape::Step, 0.0, target_speed),
+                            span: m.app.span,
+                        });
+                        if let Some(t) = t0 {
+                            self.track_mut(target).ramp(t, t, v);
+                        }
+                        self.last_v.insert(target.clone(), v);
+                    }
+                    (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
+                        let (t, len) = need_len("a speed at the phase end")?;
+                        let (v1, _) = self.speed_value(m, t.map(|t| t + len))?;
+                        let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
+                        check_speed(ctx, m, v1)?;
+                        // With acceleration(a): the change at that rate, done within the phase.
+                        let rate = match mods.iter().find(|q| q.kind == ModKind::Acceleration) {
+                            Some(q) => Some((q, self.acceleration_value(q)?.abs())),
+                            None => None,
+                        };
+                        let (action, ramp) = match rate {
+                            Some((q, a)) => {
+                                check_accel(ctx, q, a)?;
+                                let needed = (v1 - v0).abs() / a;
+                                if needed > len + 1e-9 {
+                                    return Err(ctx.files.err(
+                                        K::Unsatisfiable,
+                                        q.app.span,
+                                        format!("expected the speed change from {v0:.2} m/s to {v1:.2} m/s at {a} m/s² within the phase's {len} s, found it needs {needed:.2} s"),
+                                    ));
+                                }
+                                let dynamics = TransitionDynamics {
+                                    dynamics_shape: DynamicsShape::Linear,
+                                    dynamics_dimension: DynamicsDimension::Rate,
+                                    value: a,
+                                    following_mode: None,
+                                };
+                                (
+                                    PrivateAction::Longitudinal(LongitudinalAction::Speed {
+                                        dynamics,
+                                        target: SpeedTarget::Absolute(v1),
+                                    }),
+                                    needed,
+                                )
+                            }
+                            None => {
+                                check_accel(ctx, m, (v1 - v0) / len)?;
+                                (
+                                    speed_action(
+                                        DynamicsShape::Linear,
+                                        len,
+                                        SpeedTarget::Absolute(v1),
+                                    ),
+                                    len,
+                                )
+                            }
+                        };
+                        out.push(Planned {
+                            entity: target.clone(),
+                            at: None,
+                            name: name("speed"),
+                            action,
+                            span: m.app.span,
+                        });
+                        if let Some(t) = t {
+                            self.track_mut(target).ramp(t, t + ramp, v1);
+                        }
+                        self.last_v.insert(target.clone(), v1);
+                    }
+                    (ModKind::Acceleration, _) => {
+                        // Alone: a constant acceleration over the phase.
+                        let paired = mods.iter().any(|q| {
+                            q.kind == ModKind::ChangeSpeed
+                                || (q.kind == ModKind::Speed && q.at == At::End)
+                        });
+                        if paired {
+                            continue;
+                        }
+                        let (t, len) = need_len("acceleration(…)")?;
+                        let a = self.acceleration_value(m)?;
+                        check_accel(ctx, m, a)?;
+                        let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
+                        let v1 = v0 + a * len;
+                        check_speed(ctx, m, v1)?;
+                        out.push(Planned {
+                            entity: target.clone(),
+                            at: None,
+                            name: name("acceleration"),
+                            action: speed_action(
+                                DynamicsShape::Linear,
+                                len,
+                                SpeedTarget::Absolute(v1),
+                            ),
+                            span: m.app.span,
+                        });
+                        if let Some(t) = t {
+                            self.track_mut(target).ramp(t, t + len, v1);
+                        }
+                        self.last_v.insert(target.clone(), v1);
+                    }
+                    (ModKind::Position, At::Start | At::All)
+                    | (ModKind::Lane, At::Start | At::All) => {
+                        if first {
+                            continue;
+                        }
+                        let t = need_t("a constraint at the phase start")?;
+                        self.check_start(m, target, t)?;
+                    }
+                    (ModKind::Position, At::End) => {
+                        let t = need_t("position(…, at: end)")?;
+                        let (x, sign, d) = self.position_target(m, t)?;
+                        let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
+                        let v0 = self.track(target).at(t).1;
+                        let s_a = self.s_at(target, t);
+                        let lane_a = self.track(target).lane(t);
+                        match end {
+                            None => {
+                                // Constant speeds: when does the gap reach its value?
+                                let (s_x, v_x) =
+                                    x.as_ref().map_or((0.0, 0.0), |x| self.track(x).at(t));
+                                let gap = s_x + sign * d - s_a;
+                                let closing = v0 - v_x;
+                                let tau = gap / closing;
+                                if !(tau.is_finite() && tau > 0.0) {
+                                    return Err(ctx.files.err(
+                                        K::Unsatisfiable,
+                                        m.app.span,
+                                        format!("expected the actors to close the {gap:.2} m to this position at their speeds ({v0:.2} m/s and {v_x:.2} m/s), found they never do"),
+                                    ));
+                                }
+                                // The phase ends when the engine measures the gap reached
+                                // (the same step an XML trigger on it would fire).
+                                let w = self.gap_reached(m, target, x.as_deref(), sign, d)?;
+                                derived = Some(match derived {
+                                    None => w,
+                                    Some(When::Dyn(mut a)) => {
+                                        // Both gaps reached: one group with every condition.
+                                        if let (Some(ga), When::Dyn(b)) =
+                                            (a.condition_groups.first_mut(), &w)
+                                        {
+                                            ga.conditions.extend(
+                                                b.condition_groups
+                                                    .iter()
+                                                    .flat_map(|g| g.conditions.clone()),
+                                            );
+                                        }
+                                        When::Dyn(a)
+                                    }
+                                    Some(other) => other,
+                                });
+                            }
+                            Some(te) => {
+                                let len = te - t;
+                                let s_x = x.as_ref().map_or(0.0, |x| self.s_at(x, te));
+                                let want = s_x + sign * d;
+                                // The distance to cover along the actor's lane.
+                                let ds = self.road.lane_distance(lane_a, s_a, want);
+                                if hold && ve_given.is_none() {
+                                    let got = self.road.s_after(lane_a, s_a, v0 * len);
+                                    if (got - want).abs() > POSITION_TOLERANCE {
+                                        return Err(ctx.files.err(
+                                            K::Unsatisfiable,
+                                            m.app.span,
+                                            format!("expected position(…, at: end) met at the constant speed {v0:.2} m/s, found it {:.2} m off at the phase end", got - want),
+                                        ));
+                                    }
+                                    continue;
+                                }
+                                let ve = self.end_speed(ve_given, te, v0)?;
+                                let names = (name("position.1"), name("position.2"));
+                                self.two_halves(m, target, (t, len), (v0, ds, ve), names, out)?;
+                            }
+                        }
+                    }
+                    (ModKind::Distance, at) => {
+                        if at == At::Start {
+                            return Err(ctx.files.err(
+                                K::Modifier,
+                                m.app.span,
+                                "expected distance(…) over the phase (at: all or end), found at: start",
+                            ));
+                        }
+                        let t = need_t("distance(…)")?;
+                        let d =
+                            match m.arg("distance").map(|e| ctx.number(e)).transpose()? {
+                                Some(d) if d >= 0.0 => d,
+                                _ => return Err(ctx.files.err(
+                                    K::Value,
+                                    m.app.span,
+                                    "expected a distance of 0 m or more in distance(…), found none",
+                                )),
+                            };
+                        let v0 = self.track(target).at(t).1;
+                        let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
+                        if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
+                            return Err(ctx.files.err(
+                                K::Unsatisfiable,
+                                q.app.span,
+                                format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", ctx.files.at(m.app.span)),
+                            ));
+                        }
+                        match end.filter(|te| *te > t) {
+                            Some(te) => {
+                                let len = te - t;
+                                if hold && ve_given.is_none() {
+                                    if (v0 * len - d).abs() > POSITION_TOLERANCE {
+                                        return Err(ctx.files.err(
+                                            K::Unsatisfiable,
+                                            m.app.span,
+                                            format!("expected distance({d} m) at the constant speed {v0:.2} m/s over {len} s, found {:.2} m", v0 * len),
+                                        ));
+                                    }
+                                    continue;
+                                }
+                                let ve = self.end_speed(ve_given, te, v0)?;
+                                let names = (name("distance.1"), name("distance.2"));
+                                self.two_halves(m, target, (t, len), (v0, d, ve), names, out)?;
+                            }
+                            None => {
+                                // No duration: the phase ends when d is travelled at the speed
+                                // it starts with.
+                                if let Some(q) = ve_given {
+                                    return Err(ctx.files.err(
+                                        K::Unsatisfiable,
+                                        q.app.span,
+                                        format!("expected a phase duration for a speed change beside distance(…) at {}, found none", ctx.files.at(m.app.span)),
+                                    ));
+                                }
+                                if v0 <= 0.0 && d > 0.0 {
+                                    return Err(ctx.files.err(
+                                        K::Unsatisfiable,
+                                        m.app.span,
+                                        format!("expected `{target}` to move to travel {d} m, found it standing"),
+                                    ));
+                                }
+                                let te = When::At(t + if d > 0.0 { d / v0 } else { 0.0 });
+                                derived = Some(match derived {
+                                    None => te,
+                                    Some(w) => w.or(te),
+                                });
+                            }
+                        }
+                    }
+                    (ModKind::Lane, At::End) | (ModKind::ChangeLane, _) => {
+                        let (t, len) = need_len("a lane change")?;
+                        let (target_lane, planned) =
+                            self.lane_target(m, target, t.unwrap_or(0.0), len)?;
+                        // lateral(…, at: end): the offset in the target lane.
+                        let offset = match (lateral_end(mods), planned) {
+                            (Some(q), Some(l)) => {
+                                let s_end = t.map_or(0.0, |t| self.s_at(target, t + len));
+                                let w = self.width(target);
+                                Some(crate::lateral::lane_offset(
+                                    ctx,
+                                    q,
+                                    self.road.lane_width(l, s_end),
+                                    w,
+                                )?)
+                            }
+                            (Some(q), None) => {
+                                return Err(ctx.files.err(
+                                    K::Unsatisfiable,
+                                    q.app.span,
+                                    "expected a target lane the plan knows for lateral(…, at: end) with a lane change, found none",
+                                ))
+                            }
+                            (None, _) => None,
+                        };
+                        out.push(Planned {
+                            entity: target.clone(),
+                            at: None,
+                            name: name("lane"),
+                            action: PrivateAction::Lateral(LateralAction::LaneChange {
+                                target_lane_offset: offset,
+                                dynamics: TransitionDynamics {
+                                    dynamics_shape: DynamicsShape::Sinusoidal,
+                                    dynamics_dimension: DynamicsDimension::Time,
+                                    value: len,
+                                    following_mode: None,
+                                },
+                                target: target_lane,
+                            }),
+                            span: m.app.span,
+                        });
+                        if let (Some(l), Some(t)) = (planned, t) {
+                            let tr = self.track_mut(target);
+                            tr.set_lane(t + len, l);
+                            tr.set_offset(t + len, offset.unwrap_or(0.0));
+                            tr.add_move(t, t + len);
+                        }
+                    }
+                    (ModKind::Lateral, At::Start | At::All) => {
+                        if m.at == At::All {
+                            if let Some(c) = lane_change(mods) {
+                                return Err(ctx.files.err(
+                                    K::Unsatisfiable,
+                                    c.app.span,
+                                    format!("expected no lane change while lateral(…) at {} holds throughout the phase, found `{}(…)`", ctx.files.at(m.app.span), c.app.name.text),
+                                ));
+                            }
+                        }
+                        if first {
+                            // Placed; beside another actor and throughout, both must keep
+                            // their lateral positions (checked once everything is planned).
+                            if m.at == At::All {
+                                if let Some((e, _)) = crate::lateral::reference(ctx, m)? {
+                                    let x = self.entity_of(e)?;
+                                    self.beside_checks.push((
+                                        target.clone(),
+                                        x,
+                                        t0.unwrap_or(0.0),
+                                        end.or(len.and_then(|l| t0.map(|t| t + l))),
+                                        m.app.span,
+                                    ));
+                                }
+                            }
+                            continue;
+                        }
+                        let t = need_t("a lateral position at the phase start")?;
+                        let tr = self.track(target);
+                        let lane = tr.lane(t);
+                        let w = self.road.lane_width(lane, self.s_at(target, t));
+                        let want = crate::lateral::lane_offset(ctx, m, w, self.width(target))?;
+                        let got = tr.offset(t);
+                        if (got - want).abs() > LATERAL_TOLERANCE {
+                            return Err(ctx.files.err(
+                                K::Unsatisfiable,
+                                m.app.span,
+                                format!("expected this lateral position at the phase start, found `{target}` {:.2} m from it (plan an earlier phase to reach it, with lateral(…, at: end))", got - want),
+                            ));
+                        }
+                    }
+                    (ModKind::Lateral, At::End) => {
+                        if lane_change(mods).is_some() {
+                            // Planned with the lane change.
+                            continue;
+                        }
+                        let (t, len) = need_len("a lateral position at the phase end")?;
+                        let t = t.ok_or_else(|| ctx.files.err(
+                            K::Unsatisfiable,
+                            m.app.span,
+                            "expected a phase start the plan knows for lateral(…, at: end), found one after a run-time condition",
+                        ))?;
+                        let tr = self.track(target);
+                        let lane = tr.lane(t);
+                        let o0 = tr.offset(t);
+                        let w = self.road.lane_width(lane, self.s_at(target, t + len));
+                        let o1 = crate::lateral::lane_offset(ctx, m, w, self.width(target))?;
+                        // A sinusoidal change of Δ has its peak lateral acceleration
+                        // π²Δ/(2T²): given as the action's maximum, the engine's change lasts T.
+                        let a = std::f64::consts::PI.powi(2) * (o1 - o0).abs() / (2.0 * len * len);
+                        check_accel(ctx, m, a)?;
+                        if a > 0.0 {
+                            out.push(Planned {
+                                entity: target.clone(),
+                                at: None,
+                                name: name("lateral"),
+                                action: PrivateAction::Lateral(LateralAction::LaneOffset {
+                                    continuous: false,
+                                    dynamics_shape: DynamicsShape::Sinusoidal,
+                                    max_lateral_acc: Some(a),
+                                    target: scenario::LaneOffsetTarget::Absolute(o1),
+                                }),
+                                span: m.app.span,
+                            });
+                        }
+                        let tr = self.track_mut(target);
+                        tr.set_offset(t + len, o1);
+                        if a > 0.0 {
+                            tr.add_move(t, t + len);
+                        }
+                    }
+                }
+            }
+            // The routes, against the motion just planned.
+            let te = match (t0, end, len) {
+                (Some(a), Some(b), _) if b > a => Some(b),
+                (Some(a), _, Some(l)) => Some(a + l),
+                _ => None,
+            };
+            let alongs = self.alongs.get(&p.path).cloned().unwrap_or_default();
+            let mut shared = std::mem::take(&mut self.route_lanes);
+            let track = self.track(target).clone();
+            let lane = |t: f64| track.lane(t);
+            let s = |t: f64| self.s_at(target, t);
+            let on = OnRoute {
+                actor: target,
+                t0,
+                te,
+                lane: &lane,
+                s: &s,
+            };
+            let checked = alongs.iter().try_for_each(|(at, a)| {
+                route::check(ctx, &self.road, a, *at, mods, &on, &mut shared)
+            });
+            self.route_lanes = shared;
+            checked?;
+        }
+        Ok(derived)
+    }
+}

@@ -1,0 +1,386 @@
+//! Motion helpers of the planner: speed profiles (two linear halves), the values of speed,
+//! acceleration and position modifiers, lane change targets, and the limits they are checked
+//! against (ASAM OpenSCENARIO DSL 2.1 §8.9).
+
+use dsl::semantics::hir::Expr;
+use scenario::{
+    ConditionGroup, DynamicsDimension, DynamicsShape, LaneChangeTarget, LongitudinalAction,
+    PrivateAction, SpeedTarget, TransitionDynamics, Trigger,
+};
+
+use crate::actors::{MAX_ACCELERATION, MAX_SPEED};
+use crate::error::{Error, ErrorKind as K};
+use crate::modifier::{At, Mod, ModKind};
+use crate::value::{Ctx, Val};
+
+use super::{Planned, Planner, When, POSITION_TOLERANCE};
+
+impl Planner<'_, '_> {
+    /// The speed at `te` an end-speed modifier asks for, else `v0`.
+    pub(super) fn end_speed(&self, q: Option<&Mod<'_>>, te: f64, v0: f64) -> Result<f64, Error> {
+        Ok(match q {
+            Some(q) => self.speed_value(q, Some(te))?.0,
+            None => v0,
+        })
+    }
+
+    /// Plans a speed profile of two linear halves over [t, t + len] that covers `ds` (m along
+    /// the lane) from speed `v0` to `ve`: v0 → vm over len/2 and vm → ve over len/2, with vm =
+    /// (4·ds/len − v0 − ve)/2, within the limits (and monotonous when `m` asks). It replaces
+    /// a speed change the phase planned already.
+    pub(super) fn two_halves(
+        &mut self,
+        m: &Mod<'_>,
+        target: &str,
+        (t, len): (f64, f64),
+        (v0, ds, ve): (f64, f64, f64),
+        names: (String, String),
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let ctx = self.ctx;
+        self.last_v.insert(target.to_string(), ve);
+        let vm = (4.0 * ds / len - v0 - ve) / 2.0;
+        // movement_mode: monotonous: the speed only rises or only falls.
+        if m.monotonous && (vm - v0) * (ve - vm) < -1e-9 {
+            return Err(ctx.files.err(
+                K::Unsatisfiable,
+                m.app.span,
+                format!("expected a monotonous speed profile (movement_mode: monotonous) from {v0:.2} m/s to {ve:.2} m/s, found it needs {vm:.2} m/s half way"),
+            ));
+        }
+        check_speed(ctx, m, vm)?;
+        check_accel(ctx, m, (vm - v0) / (len / 2.0))?;
+        check_accel(ctx, m, (ve - vm) / (len / 2.0))?;
+        // Drop a speed ramp this phase planned already (change_speed).
+        out.retain(|a| !(a.entity == target && a.name.ends_with(":speed")));
+        out.push(Planned {
+            entity: target.to_string(),
+            at: None,
+            name: names.0,
+            action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(vm)),
+            span: m.app.span,
+        });
+        out.push(Planned {
+            entity: target.to_string(),
+            at: Some(t + len / 2.0),
+            name: names.1,
+            action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(ve)),
+            span: m.app.span,
+        });
+        let tr = self.track_mut(target);
+        tr.ramp(t, t + len / 2.0, vm);
+        tr.ramp(t + len / 2.0, t + len, ve);
+        Ok(())
+    }
+
+    /// The moment the gap of a `position(d, ahead_of|behind: x)` is reached, as the engine
+    /// measures it: a RelativeDistanceCondition (longitudinal, road coordinates, reference
+    /// points) of the actor in front over the one behind rising through d. Without a reference: s ≥ d is
+    /// not measured by a 1.x condition, so it is an error.
+    pub(super) fn gap_reached(
+        &self,
+        m: &Mod<'_>,
+        target: &str,
+        x: Option<&str>,
+        sign: f64,
+        d: f64,
+    ) -> Result<When, Error> {
+        let Some(x) = x else {
+            return Err(self.ctx.files.err(
+                K::Unsatisfiable,
+                m.app.span,
+                "expected a duration for position(d, at: end) without a reference, found none",
+            ));
+        };
+        let (front, back) = if sign > 0.0 { (target, x) } else { (x, target) };
+        Ok(When::Dyn(Trigger {
+            condition_groups: vec![ConditionGroup {
+                conditions: vec![scenario::Condition {
+                    name: format!("{front} {d} m ahead of {back}"),
+                    // The engine's longitudinal distance has no sign: the gap is reached when
+                    // it grows through d (an actor behind first closes, passes, then opens it).
+                    condition_edge: scenario::ConditionEdge::Rising,
+                    delay: 0.0,
+                    kind: scenario::ConditionKind::ByEntity {
+                        triggering_entities: scenario::TriggeringEntities {
+                            rule: scenario::TriggeringEntitiesRule::Any,
+                            entity_refs: vec![front.to_string()],
+                        },
+                        entity_condition: scenario::EntityCondition::RelativeDistance {
+                            entity_ref: back.to_string(),
+                            value: d,
+                            rule: scenario::Rule::GreaterOrEqual,
+                            measure: scenario::DistanceMeasure {
+                                freespace: false,
+                                coordinate_system: Some(scenario::CoordinateSystem::Road),
+                                relative_distance_type: Some(
+                                    scenario::RelativeDistanceType::Longitudinal,
+                                ),
+                                routing_algorithm: None,
+                            },
+                        },
+                    },
+                    pos: self.ctx.files.pos(m.app.span),
+                }],
+            }],
+        }))
+    }
+
+    /// The speed a speed-like modifier asks for at time `t`, and its relative form.
+    pub(super) fn speed_value(
+        &self,
+        m: &Mod<'_>,
+        t: Option<f64>,
+    ) -> Result<(f64, Option<(String, f64)>), Error> {
+        let own = m.arg("speed").map(|e| self.ctx.number(e)).transpose()?;
+        for (key, sign) in [
+            ("faster_than", 1.0),
+            ("slower_than", -1.0),
+            ("same_as", 0.0),
+        ] {
+            if let Some(e) = m.arg(key) {
+                let x = self.entity_of(e)?;
+                let delta = sign * own.unwrap_or(0.0);
+                let vx = t.map_or(0.0, |t| self.track(&x).at(t).1);
+                return Ok((vx + delta, Some((x, delta))));
+            }
+        }
+        match own {
+            Some(v) => Ok((v, None)),
+            None => Err(self.ctx.files.err(
+                K::Modifier,
+                m.app.span,
+                "expected a speed (or faster_than/slower_than/same_as) in this modifier, found none",
+            )),
+        }
+    }
+
+    /// The acceleration of an `acceleration(a)` modifier (m/s²).
+    pub(super) fn acceleration_value(&self, m: &Mod<'_>) -> Result<f64, Error> {
+        match m.arg("acceleration") {
+            Some(e) => self.ctx.number(e),
+            None => Err(self.ctx.files.err(
+                K::Modifier,
+                m.app.span,
+                "expected an acceleration in acceleration(…), found none (relative forms are not planned yet)",
+            )),
+        }
+    }
+
+    pub(super) fn entity_of(&self, e: &Expr) -> Result<String, Error> {
+        self.ctx
+            .path_of(e)
+            .filter(|p| self.index.contains_key(p))
+            .ok_or_else(|| {
+                self.ctx.files.err(
+                    K::UnknownActor,
+                    e.span,
+                    "expected a vehicle of the scenario, found another value",
+                )
+            })
+    }
+
+    /// (reference entity, +1 ahead / −1 behind, distance) of a position modifier.
+    pub(super) fn position_target(
+        &self,
+        m: &Mod<'_>,
+        t: f64,
+    ) -> Result<(Option<String>, f64, f64), Error> {
+        let (x, sign) = match (m.arg("ahead_of"), m.arg("behind")) {
+            (Some(e), _) => (Some(self.entity_of(e)?), 1.0),
+            (None, Some(e)) => (Some(self.entity_of(e)?), -1.0),
+            (None, None) => (None, 1.0),
+        };
+        let d =
+            match (m.arg("distance"), m.arg("time"), &x) {
+                (Some(e), _, _) => self.ctx.number(e)?,
+                (None, Some(e), Some(x)) => self.ctx.number(e)? * self.track(x).at(t).1,
+                _ => return Err(self.ctx.files.err(
+                    K::Unsatisfiable,
+                    m.app.span,
+                    "expected a distance (or a time and a reference) in position(…), found neither",
+                )),
+            };
+        Ok((x, sign, d))
+    }
+
+    /// Checks a constraint at the start of a phase that is not the actor's first.
+    pub(super) fn check_start(&self, m: &Mod<'_>, target: &str, t: f64) -> Result<(), Error> {
+        if m.kind == ModKind::Position {
+            let (x, sign, d) = self.position_target(m, t)?;
+            let want = x.as_ref().map_or(0.0, |x| self.s_at(x, t)) + sign * d;
+            let got = self.s_at(target, t);
+            if (got - want).abs() > POSITION_TOLERANCE {
+                return Err(self.ctx.files.err(
+                    K::Unsatisfiable,
+                    m.app.span,
+                    format!("expected this position at the phase start, found `{target}` {:.2} m from it (plan an earlier phase to reach it)", got - want),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The LaneChangeAction target of a lane modifier at the phase end, and the lane the plan
+    /// expects there.
+    pub(super) fn lane_target(
+        &self,
+        m: &Mod<'_>,
+        target: &str,
+        t: f64,
+        len: f64,
+    ) -> Result<(LaneChangeTarget, Option<i32>), Error> {
+        let n = m
+            .arg("lane")
+            .map(|e| self.ctx.number(e))
+            .transpose()?
+            .map_or(1, |x| x.round() as i32);
+        let side = m.arg("side").map(|e| self.ctx.eval(e)).transpose()?;
+        let left = !matches!(&side, Some(Val::Enum(s)) if s == "right");
+        let shift = if left { n } else { -n };
+        if m.kind == ModKind::ChangeLane {
+            let now = self.track(target).lane(t);
+            let s_now = self.s_at(target, t);
+            let exists = |left: bool| self.road.beside(now, left, n.into(), s_now).is_some();
+            // change_lane without a side: "the side is randomized" (§8.9 change_lane), drawn
+            // once per modifier from the run's seed among the sides that have the lane.
+            let left = match side {
+                Some(_) => left,
+                None => *self
+                    .sides
+                    .borrow_mut()
+                    .entry(format!("{:?}", m.app.span))
+                    .or_insert_with(|| match (exists(true), exists(false)) {
+                        (true, true) => self.ctx.choose(2) == 0,
+                        (l, _) => l,
+                    }),
+            };
+            let shift = if left { n } else { -n };
+            if !exists(left) {
+                return Err(self.ctx.files.err(
+                    K::Unsatisfiable,
+                    m.app.span,
+                    format!(
+                        "expected a driving lane {n} to the {} of `{target}`'s lane {now} at s = {s_now:.2} m, found none",
+                        if left { "left" } else { "right" }
+                    ),
+                ));
+            }
+            return Ok((
+                LaneChangeTarget::Relative {
+                    entity_ref: target.to_string(),
+                    value: shift,
+                },
+                self.road.beside(now, left, n.into(), s_now),
+            ));
+        }
+        for (key, value) in [
+            ("same_as", 0),
+            ("side_of", shift),
+            ("left_of", n),
+            ("right_of", -n),
+        ] {
+            if let Some(e) = m.arg(key) {
+                let x = self.entity_of(e)?;
+                let lx = self.track(&x).lane(t + len);
+                let s_end = self.s_at(&x, t + len);
+                let lane = match value {
+                    0 => Some(lx),
+                    v => self.road.beside(lx, v > 0, v.abs().into(), s_end),
+                };
+                if lane.is_none() {
+                    return Err(self.ctx.files.err(
+                        K::Unsatisfiable,
+                        m.app.span,
+                        format!(
+                            "expected a driving lane {} to the {} of `{x}`'s lane {lx} at the phase end (s = {s_end:.2} m), found none",
+                            value.abs(),
+                            if value > 0 { "left" } else { "right" }
+                        ),
+                    ));
+                }
+                return Ok((
+                    LaneChangeTarget::Relative {
+                        entity_ref: x,
+                        value,
+                    },
+                    lane,
+                ));
+            }
+        }
+        // A lane number (1 = the rightmost driving lane, or the leftmost with from: left) at
+        // the phase end: an absolute target lane.
+        let from_left = matches!(m.arg("from").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
+        let s_end = self.s_at(target, t + len);
+        match self.road.numbered(n.into(), from_left, s_end) {
+            Some(l) => Ok((LaneChangeTarget::Absolute(l.to_string()), Some(l))),
+            None => Err(self.ctx.files.err(
+                K::Unsatisfiable,
+                m.app.span,
+                format!(
+                    "expected a driving lane numbered {n} from the {} on road {} at s = {s_end:.2} m, found none",
+                    if from_left { "left" } else { "right" },
+                    self.road.id()
+                ),
+            )),
+        }
+    }
+}
+
+/// The `speed(…, at: end)` or `change_speed(…)` of an invocation, if any.
+pub(super) fn end_speed_mod<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+    mods.iter()
+        .find(|q| (q.kind == ModKind::Speed && q.at == At::End) || q.kind == ModKind::ChangeSpeed)
+}
+
+/// Whether an invocation holds its speed throughout (`speed(v)`, at: all).
+pub(super) fn holds_speed(mods: &[Mod<'_>]) -> bool {
+    mods.iter()
+        .any(|q| q.kind == ModKind::Speed && q.at == At::All)
+}
+
+/// The lane change of an invocation (`change_lane`, `lane(…, at: end)`), if any.
+pub(super) fn lane_change<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+    mods.iter()
+        .find(|m| m.kind == ModKind::ChangeLane || (m.kind == ModKind::Lane && m.at == At::End))
+}
+
+/// The `lateral(…, at: end)` of an invocation, if any.
+pub(super) fn lateral_end<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+    mods.iter()
+        .find(|m| m.kind == ModKind::Lateral && m.at == At::End)
+}
+
+pub(super) fn speed_action(shape: DynamicsShape, time: f64, target: SpeedTarget) -> PrivateAction {
+    PrivateAction::Longitudinal(LongitudinalAction::Speed {
+        dynamics: TransitionDynamics {
+            dynamics_shape: shape,
+            dynamics_dimension: DynamicsDimension::Time,
+            value: time,
+            following_mode: None,
+        },
+        target,
+    })
+}
+
+pub(super) fn check_speed(ctx: &Ctx<'_>, m: &Mod<'_>, v: f64) -> Result<(), Error> {
+    if !(0.0..=MAX_SPEED).contains(&v) {
+        return Err(ctx.files.err(
+            K::Unsatisfiable,
+            m.app.span,
+            format!("expected a plan within 0 to {MAX_SPEED} m/s, found it needs {v:.2} m/s"),
+        ));
+    }
+    Ok(())
+}
+
+pub(super) fn check_accel(ctx: &Ctx<'_>, m: &Mod<'_>, a: f64) -> Result<(), Error> {
+    if a.abs() > MAX_ACCELERATION + 1e-9 {
+        return Err(ctx.files.err(
+            K::Unsatisfiable,
+            m.app.span,
+            format!("expected a plan within ±{MAX_ACCELERATION} m/s², found it needs {a:.2} m/s²"),
+        ));
+    }
+    Ok(())
+}
