@@ -17,9 +17,9 @@
 //! | `actors` | vehicles and vehicle groups of the plan, their 1.x Vehicle (§8.7.6, §8.7.18) |
 //! | `road` | the road of the plan and the DSL's lane numbering |
 //! | `route` | routes of `along(…)` on the plan's road (§8.9, §8.12) |
-//! | `lateral` | `lateral(…)` as an offset in the lane (§8.9) |
+//! | `lateral` | `lateral(…)` as an offset in the lane or beside another actor (§8.9) |
 //! | `place` | initial placement from `at: start`/`all` constraints |
-//! | `track` | planned speed profile and lanes of an actor |
+//! | `track` | planned speed profile, lanes, offsets and sideways moves of an actor |
 //! | `plan` | phase timing and motion planning |
 //! | `condition` | `until`/`wait` conditions with §8.7 methods as 1.x conditions |
 //! | `lower` | the plan as a 1.x Storyboard |
