@@ -218,7 +218,53 @@ impl Planner<'_, '_> {
                 ));
             }
         }
+        if m.kind == ModKind::Lane {
+            let got = self.track(target).lane(t);
+            let want = self.lane_asked(m, target, t)?;
+            if want != Some(got) {
+                return Err(self.ctx.files.err(
+                    K::Unsatisfiable,
+                    m.app.span,
+                    format!(
+                        "expected `{target}` in {} at the phase start, found it in lane {got} (plan the change in an earlier phase, with lane(…, at: end) or change_lane)",
+                        want.map_or("a driving lane that does not exist".to_string(), |l| format!("lane {l}"))
+                    ),
+                ));
+            }
+        }
         Ok(())
+    }
+
+    /// The lane a `lane(…)` modifier of `target` asks for at time `t` (`None`: no such
+    /// driving lane).
+    fn lane_asked(&self, m: &Mod<'_>, target: &str, t: f64) -> Result<Option<i32>, Error> {
+        let n = m
+            .arg("lane")
+            .map(|e| self.ctx.number(e))
+            .transpose()?
+            .map_or(1, |x| x.round() as i64);
+        for (key, left) in [
+            ("same_as", None),
+            ("left_of", Some(true)),
+            ("right_of", Some(false)),
+            (
+                "side_of",
+                Some(
+                    !matches!(m.arg("side").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(s)) if s == "right"),
+                ),
+            ),
+        ] {
+            if let Some(e) = m.arg(key) {
+                let x = self.entity_of(e)?;
+                let lx = self.track(&x).lane(t);
+                return Ok(match left {
+                    None => Some(lx),
+                    Some(left) => self.road.beside(lx, left, n, self.s_at(&x, t)),
+                });
+            }
+        }
+        let from_left = matches!(m.arg("from").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
+        Ok(self.road.numbered(n, from_left, self.s_at(target, t)))
     }
 
     /// The LaneChangeAction target of a lane modifier at the phase end, and the lane the plan

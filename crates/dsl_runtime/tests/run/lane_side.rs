@@ -56,3 +56,20 @@ fn lane_number_at_the_end_is_an_absolute_target() {
         "13:13",
     );
 }
+
+#[test]
+fn lane_at_a_later_phase_start_is_checked() {
+    let r = run("lane_start_kept", 0, None);
+    for t in [3.0, 5.0, 7.0] {
+        let ego = r.at(t, "ego");
+        assert!(
+            ego.lane == -2 && (ego.y + 5.25).abs() < Y_TOL,
+            "{ego:?} at {t}"
+        );
+    }
+    crate::along::refused(
+        "err_lane_start",
+        "expected `ego` in lane -2 at the phase start, found it in lane -3",
+        "10:13",
+    );
+}
