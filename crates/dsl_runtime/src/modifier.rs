@@ -169,6 +169,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
             _ => {}
         }
     }
+    check_combination(ctx, name, &args)?;
     match kind {
         ModKind::AvoidCollisions => {
             let avoid = match args.iter().find(|(n, _)| n == "avoid") {
@@ -333,6 +334,76 @@ pub(crate) fn check_orientation(ctx: &Ctx<'_>, mods: &[Mod<'_>]) -> Result<(), E
                     format!("expected no lateral movement while {name}(…) at {} holds throughout the phase (the actor turns while it moves sideways), found `{}(…)`", ctx.files.at(m.app.span), c.app.name.text),
                 ));
             }
+        }
+    }
+    Ok(())
+}
+
+/// Rejects argument combinations where one argument would go unread: two references (or a
+/// distance and a time) where the planner takes one, `side` without `side_of`, `from` or an
+/// explicit lane number beside `same_as`, and the relative forms of `acceleration`.
+fn check_combination(ctx: &Ctx<'_>, name: &str, args: &[(String, &Expr)]) -> Result<(), Error> {
+    let has = |n: &str| args.iter().find(|(a, _)| a == n).map(|(_, e)| *e);
+    let refs: Vec<&str> = [
+        "same_as", "side_of", "left_of", "right_of", "ahead_of", "behind",
+    ]
+    .into_iter()
+    .chain(["faster_than", "slower_than"])
+    .filter(|r| has(r).is_some())
+    .collect();
+    let second = |what: &str, e: &Expr| {
+        ctx.files.err(
+            K::Modifier,
+            e.span,
+            format!("expected one of {what} in {name}(…), found a second one"),
+        )
+    };
+    if let [_, r, ..] = refs.as_slice() {
+        if let Some(e) = has(r) {
+            return Err(second("the reference objects", e));
+        }
+    }
+    if let (Some(_), Some(e)) = (has("distance"), has("time")) {
+        return Err(second("distance and time", e));
+    }
+    // lateral(…) without a reference reads side: from the lane's centre.
+    let side_unread = match name {
+        "lane" => has("side_of").is_none(),
+        "lateral" => has("left_of").is_some() || has("right_of").is_some(),
+        _ => false,
+    };
+    if side_unread {
+        if let Some(e) = has("side") {
+            return Err(ctx.files.err(
+                K::Modifier,
+                e.span,
+                format!("expected side: with side_of: in {name}(…), found it without (left_of/right_of name their side)"),
+            ));
+        }
+    }
+    if name == "lane" {
+        if let (Some(e), false) = (has("from"), refs.is_empty()) {
+            return Err(ctx.files.err(
+                K::Modifier,
+                e.span,
+                "expected from: in lane(…) without a reference object (it counts lanes from the road's edge), found both",
+            ));
+        }
+        if let (Some(e), Some(_)) = (has("lane"), has("same_as")) {
+            return Err(ctx.files.err(
+                K::Modifier,
+                e.span,
+                "expected no lane number beside same_as: in lane(…) (the lane is the other object's), found one",
+            ));
+        }
+    }
+    if name == "acceleration" {
+        if let Some(r) = refs.first().and_then(|r| has(r)) {
+            return Err(ctx.files.err(
+                K::Unsupported,
+                r.span,
+                "expected acceleration(a) (an absolute rate), found a relative form (faster_than, slower_than, same_as: not planned yet)",
+            ));
         }
     }
     Ok(())

@@ -166,3 +166,22 @@ fn modifiers_of_the_scenario_itself_are_refused() {
         "7:5",
     );
 }
+
+#[test]
+fn arguments_the_planner_would_not_read_are_errors() {
+    refused(
+        "err_two_references",
+        "expected one of the reference objects in position(…), found a second one",
+        "7:46",
+    );
+    refused(
+        "err_lane_from_reference",
+        "expected from: in lane(…) without a reference object",
+        "7:49",
+    );
+    refused(
+        "err_acceleration_relative",
+        "expected acceleration(a) (an absolute rate), found a relative form",
+        "7:42",
+    );
+}
