@@ -38,6 +38,9 @@ pub(crate) enum ModKind {
     KeepLane,
     /// `keep_speed()`: no speed change in the phase (a speed change beside it is an error).
     KeepSpeed,
+    /// `keep_position()`: standing still through the phase (a vehicle moving at its start, or
+    /// any movement modifier beside it, is an error).
+    KeepPosition,
     /// `physical_movement(option)`: `must_be_physical` forbids speed steps in the phase.
     PhysicalMovement,
     /// `avoid_collisions(false)`: the engine's vehicles do not avoid collisions (`true` is an
@@ -94,6 +97,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
         "yaw" | "orientation" => ModKind::Orientation,
         "keep_lane" => ModKind::KeepLane,
         "keep_speed" => ModKind::KeepSpeed,
+        "keep_position" => ModKind::KeepPosition,
         "physical_movement" => ModKind::PhysicalMovement,
         "avoid_collisions" => ModKind::AvoidCollisions,
         other => {
@@ -101,7 +105,7 @@ pub(crate) fn read<'p>(ctx: &Ctx<'_>, app: &'p ModifierApp) -> Result<Mod<'p>, E
                 K::Modifier,
                 app.span,
                 format!(
-                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, distance, lane, change_lane, lateral, yaw, orientation, keep_lane, keep_speed, along, physical_movement, avoid_collisions), found `{other}`"
+                    "expected a modifier the runtime plans (speed, change_speed, acceleration, position, distance, lane, change_lane, lateral, yaw, orientation, keep_lane, keep_speed, keep_position, along, physical_movement, avoid_collisions), found `{other}`"
                 ),
             ))
         }
@@ -227,6 +231,32 @@ pub(crate) fn check_keeps(
                         c.app.span,
                         format!(
                             "expected no lane change beside keep_lane() at {}, found `{}(…)`",
+                            ctx.files.at(k.app.span),
+                            c.app.name.text
+                        ),
+                    ));
+                }
+            }
+            ModKind::KeepPosition => {
+                let moves = |m: &&Mod<'_>| match m.kind {
+                    ModKind::ChangeSpeed
+                    | ModKind::Acceleration
+                    | ModKind::Distance
+                    | ModKind::ChangeLane => true,
+                    ModKind::Lane | ModKind::Position | ModKind::Lateral => m.at == At::End,
+                    // speed(0) (or 0 at the end) agrees; anything else moves.
+                    ModKind::Speed => !matches!(
+                        (m.arg("speed").map(|e| ctx.number(e)), m.arg("faster_than").or(m.arg("slower_than")).or(m.arg("same_as"))),
+                        (Some(Ok(v)), None) if v == 0.0
+                    ),
+                    _ => false,
+                };
+                if let Some(c) = mods.iter().find(moves) {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        c.app.span,
+                        format!(
+                            "expected no movement beside keep_position() at {}, found `{}(…)`",
                             ctx.files.at(k.app.span),
                             c.app.name.text
                         ),

@@ -13,6 +13,7 @@
 //!   the one ahead. Nothing places an actor: it floats, and floating actors are
 //!   shifted together so that the rearmost bumper is at [`FLOAT_REAR`].
 //! - `lateral(d, measure_by: …)`: the offset from the lane's centre (`lateral` module).
+//! - `keep_position()` without a speed: standing (0 m/s).
 //! - `speed(v)`, `speed(v, faster_than: x)` (x's speed + v), `slower_than`, `same_as`; nothing:
 //!   [`DEFAULT_SPEED`].
 
@@ -107,6 +108,8 @@ pub(crate) fn place(
             // Speed.
             if !v.contains_key(&p.name) {
                 let value = match find(p, ModKind::Speed) {
+                    // keep_position(): a vehicle standing from the start.
+                    None if find(p, ModKind::KeepPosition).is_some() => Some(0.0),
                     None => Some(DEFAULT_SPEED),
                     Some(m) => {
                         let own = number(m, "speed")?;

@@ -67,6 +67,20 @@ impl Planner<'_, '_> {
             };
             crate::modifier::check_keeps(ctx, mods, step)?;
             crate::modifier::check_orientation(ctx, mods)?;
+            // keep_position() in a later phase: the vehicle must stand when it starts.
+            if let Some(k) = mods.iter().find(|m| m.kind == ModKind::KeepPosition) {
+                let v = match t0 {
+                    Some(t) => self.track(target).at(t).1,
+                    None => self.last_v[target],
+                };
+                if !first && v.abs() > 1e-9 {
+                    return Err(ctx.files.err(
+                        K::Unsatisfiable,
+                        k.app.span,
+                        format!("expected `{target}` standing at the start of keep_position(), found it at {v:.2} m/s (stop it in an earlier phase)"),
+                    ));
+                }
+            }
             // Speed first, position at end last: it builds on the phase's speed.
             let mut ordered: Vec<&Mod<'_>> = mods.iter().collect();
             ordered.sort_by_key(|m| {
@@ -101,6 +115,7 @@ impl Planner<'_, '_> {
                         ModKind::Along
                         | ModKind::Orientation
                         | ModKind::KeepLane
+                        | ModKind::KeepPosition
                         | ModKind::KeepSpeed
                         | ModKind::PhysicalMovement
                         | ModKind::AvoidCollisions,

@@ -185,3 +185,30 @@ fn arguments_the_planner_would_not_read_are_errors() {
         "7:42",
     );
 }
+
+#[test]
+fn keep_position_stands_still() {
+    let r = crate::support::run("keep_position", 0, None);
+    for t in [0.0, 3.0, 6.0] {
+        let npc = r.at(t, "npc");
+        assert!(
+            npc.lane == -2 && (npc.s - 100.0).abs() < S_TOL && npc.speed == 0.0,
+            "{npc:?}"
+        );
+    }
+    assert!((r.at(3.0, "ego").s - 50.0).abs() < S_TOL);
+    // Braking at −5 m/s²: the engine's step lags the exact integral by 5·dt/2 per second.
+    let braked = 60.0 - crate::ramp_lead(5.0, 2.0);
+    assert!((r.at(5.0, "ego").s - braked).abs() < S_TOL);
+    assert!((r.at(6.0, "ego").s - braked).abs() < S_TOL);
+    refused(
+        "err_keep_position_moving",
+        "expected `ego` standing at the start of keep_position(), found it at 10.00 m/s",
+        "9:13",
+    );
+    refused(
+        "err_keep_position_change",
+        "expected no movement beside keep_position() at ",
+        "8:9",
+    );
+}
