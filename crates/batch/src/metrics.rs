@@ -123,7 +123,7 @@ impl<'n> Observer<'n> {
 }
 
 impl FrameSink for Observer<'_> {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         let objects: Vec<EntityFrame<'_>> = frame.objects().collect();
         let Some(host) = objects.iter().find(|e| e.name == self.host) else {
             return Ok(());

@@ -145,7 +145,7 @@ struct Events {
 }
 
 impl EventSink for Events {
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, record: &EventRecord) -> Result<(), engine::SinkError> {
         if let EventRecord::Transition(t) = record {
             if t.kind == ElementKind::Event && t.transition == Transition::Start {
                 self.started += 1;
@@ -154,7 +154,7 @@ impl EventSink for Events {
         self.log.as_mut().map_or(Ok(()), |l| l.event(record))
     }
 
-    fn finish(&mut self) -> std::io::Result<()> {
+    fn finish(&mut self) -> Result<(), engine::SinkError> {
         self.log.as_mut().map_or(Ok(()), |l| l.finish())
     }
 }
@@ -240,11 +240,11 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
 struct Fanout<'a>(Vec<&'a mut dyn FrameSink>);
 
 impl FrameSink for Fanout<'_> {
-    fn frame(&mut self, frame: &engine::Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &engine::Frame<'_>) -> Result<(), engine::SinkError> {
         self.0.iter_mut().try_for_each(|s| s.frame(frame))
     }
 
-    fn finish(&mut self) -> std::io::Result<()> {
+    fn finish(&mut self) -> Result<(), engine::SinkError> {
         self.0.iter_mut().try_for_each(|s| s.finish())
     }
 }

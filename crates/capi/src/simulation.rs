@@ -10,7 +10,6 @@
 
 use std::ffi::{c_char, CStr};
 use std::path::Path;
-use std::sync::Arc;
 
 use engine::output::{Frame, FrameSink};
 use engine::{Engine, EngineConfig, StopReason};
@@ -236,10 +235,9 @@ pub unsafe extern "C" fn oscsim_simulation_new(
             .map_err(|e| load_failure(&e))?;
         let network = engine::load::road_network(&scenario)
             .map_err(|e| load_failure(&engine::LoadError::RoadNetwork(e)))?;
-        let engine =
-            Engine::new(&scenario, Arc::clone(&network), config).map_err(|e| load_failure(&e))?;
+        let engine = Engine::new(&scenario, network, config).map_err(|e| load_failure(&e))?;
         let osi = if c.osi != 0 {
-            let sink = GroundTruthSink::new(&scenario, network, &SinkOptions::default())
+            let sink = GroundTruthSink::new(&engine, &SinkOptions::default())
                 .map_err(|e| load_failure(&format!("cannot make the OSI ground truth: {e}")))?;
             Some(StepFrames::new(sink))
         } else {
@@ -281,7 +279,7 @@ struct Sinks<'a> {
 }
 
 impl FrameSink for Sinks<'_> {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         self.scene.frame(frame)?;
         match &mut self.osi {
             Some(osi) => osi.frame(frame),

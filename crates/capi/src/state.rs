@@ -157,7 +157,7 @@ impl Scene {
 }
 
 impl FrameSink for Scene {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         self.states.clear();
         self.names.clear();
         self.road_ids.clear();

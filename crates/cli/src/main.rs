@@ -5,7 +5,7 @@
 
 mod batch_cmd;
 mod dsl;
-mod osi_sink;
+mod osi_args;
 mod road;
 mod run;
 mod run_record;

@@ -61,8 +61,8 @@ pub struct RunArgs {
     #[arg(long, value_name = "NAME")]
     osi_host: Option<String>,
     /// Lanes and lane boundaries in the first OSI frame only, or in every frame.
-    #[arg(long, value_enum, default_value_t = crate::osi_sink::OsiStatic::First)]
-    osi_static: crate::osi_sink::OsiStatic,
+    #[arg(long, value_enum, default_value_t = crate::osi_args::OsiStatic::First)]
+    osi_static: crate::osi_args::OsiStatic,
     /// Write every Nth step to the OSI trace.
     #[arg(long, value_name = "N", default_value = "1")]
     osi_every: std::num::NonZeroU64,
@@ -107,7 +107,7 @@ struct Events {
 }
 
 impl EventSink for Events {
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, record: &EventRecord) -> Result<(), engine::SinkError> {
         self.count += 1;
         if let EventRecord::Error { message, .. } = record {
             eprintln!("error: {message}");
@@ -120,7 +120,7 @@ impl EventSink for Events {
         self.out.as_mut().map_or(Ok(()), |o| o.event(record))
     }
 
-    fn finish(&mut self) -> std::io::Result<()> {
+    fn finish(&mut self) -> Result<(), engine::SinkError> {
         self.out.as_mut().map_or(Ok(()), |o| o.finish())
     }
 }
@@ -153,14 +153,13 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         frames.push(Box::new(SignalsCsvWriter::new(create(path)?)));
     }
     if let Some(path) = &args.osi {
-        let options = crate::osi_sink::OsiOptions {
+        let options = crate::osi_args::OsiOptions {
             path: path.clone(),
             host: args.osi_host.clone(),
             static_data: args.osi_static,
             every: args.osi_every,
         };
-        let sink = crate::osi_sink::OsiSink::create(&engine, &scenario, &args.scenario, &options)?;
-        frames.push(Box::new(sink));
+        frames.push(Box::new(crate::osi_args::create(&engine, &options)?));
     }
     let record = crate::run_record::RunRecord::new(&args.replay, args.csv.as_deref());
     frames.extend(record.frame_sink());

@@ -54,7 +54,7 @@ pub struct RunRecord {
 struct Frames(Rc<RefCell<Shared>>);
 
 impl FrameSink for Frames {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         match &mut self.0.borrow_mut().frames {
             FrameRecord::Run(r) => r.frame(frame),
             FrameRecord::Catalog(c) => c.frame(frame),
@@ -66,7 +66,7 @@ impl FrameSink for Frames {
 pub struct Events(Rc<RefCell<Shared>>);
 
 impl EventSink for Events {
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, record: &EventRecord) -> Result<(), engine::SinkError> {
         match &mut self.0.borrow_mut().events {
             Some(events) => events.event(record),
             None => Ok(()),

@@ -79,9 +79,9 @@ pub mod user_values;
 
 pub use load::{LoadError, RoadNetworks};
 pub use output::{CsvWriter, EntityFrame, JsonlWriter};
-pub use output::{EventRecord, EventSink, Frame, FrameSink};
+pub use output::{EventRecord, EventSink, Frame, FrameSink, SinkError};
 pub use runtime::{
     Engine, EngineConfig, EntityId, EntityKind, RuntimeError, RuntimeErrorKind, StageCounters,
     StopReason, Visibility,
 };
-pub use snapshot::{EntityState, EnvironmentState};
+pub use snapshot::{EntityState, EnvironmentState, ScenarioSource};

@@ -5,11 +5,14 @@
 //! engine's internal state.
 
 use std::collections::BTreeMap;
+use std::path::PathBuf;
 use std::sync::Arc;
 
 use opendrive::{Pose, Real, RoadNetwork, RoadPosition};
 use scenario::expr::Value;
-use scenario::{AnimationAction, LightState, VehicleCategory};
+use scenario::{
+    AnimationAction, LightState, MiscObjectCategory, PedestrianCategory, Scenario, VehicleCategory,
+};
 
 use crate::domain::{BoundingBox, Color, Vector3};
 use crate::output::EntityFrame;
@@ -45,6 +48,10 @@ pub struct EntityState {
     pub road_position: Option<RoadPosition>,
     /// Vehicle category (vehicles only).
     pub vehicle_category: Option<VehicleCategory>,
+    /// Pedestrian category (pedestrians declared in the scenario only).
+    pub pedestrian_category: Option<PedestrianCategory>,
+    /// Misc object category (misc objects only).
+    pub misc_object_category: Option<MiscObjectCategory>,
     /// Colour, if known.
     pub color: Option<Color>,
     /// `model3d`, if given.
@@ -60,6 +67,36 @@ pub struct EntityState {
     pub overrides: ControllerOverrides,
 }
 
+/// Where the scenario came from, for outputs that name their sources (an OSI
+/// `source_reference` and `map_reference`, a trace's metadata). Carried on every
+/// [`Frame`](crate::Frame) and given by [`Engine::source`].
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct ScenarioSource {
+    /// The scenario file as it was opened (for a ParameterValueDistribution, the distribution
+    /// file); the scenario's own path when it was not loaded from files.
+    pub file: PathBuf,
+    /// `RoadNetwork/LogicFile`, resolved against the scenario's folder.
+    pub road_network_file: Option<PathBuf>,
+    /// `RoadNetwork/SceneGraphFile`, as written.
+    pub scene_graph_file: Option<String>,
+}
+
+impl ScenarioSource {
+    /// The source of `scenario`.
+    pub fn of(scenario: &Scenario) -> Self {
+        let opened = scenario.sources.opened();
+        ScenarioSource {
+            file: if opened.as_os_str().is_empty() {
+                scenario.path.clone()
+            } else {
+                opened.to_path_buf()
+            },
+            road_network_file: scenario.road_network.logic_file.clone(),
+            scene_graph_file: scenario.road_network.scene_graph_file.clone(),
+        }
+    }
+}
+
 impl Engine {
     /// Every entity in the scene (placed by its Init or an AddEntityAction, not deleted), in
     /// id order.
@@ -71,6 +108,12 @@ impl Engine {
             .filter(|e| e.placed)
             .map(|e| EntityFrame::of(e).to_state())
             .collect()
+    }
+
+    /// The id of the entity called `name`: declared in the scenario (placed yet or not) or
+    /// spawned so far.
+    pub fn entity_id(&self, name: &str) -> Option<EntityId> {
+        self.world().id(name)
     }
 
     /// The entity called `name`, if it is in the scene.

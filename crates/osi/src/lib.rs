@@ -14,7 +14,8 @@
 //! - [`lights`]: OpenSCENARIO vehicle light states → `VehicleClassification.LightState`.
 //! - [`entity`]: a scenario entity → `MovingObject` / `StationaryObject` with the OSI rules.
 //! - [`sink`]: the engine→OSI mapping, one GroundTruth per engine frame
-//!   ([`sink::GroundTruthSink`]).
+//!   ([`sink::GroundTruthSink`]), and the engine frame sinks built on it: [`sink::OsiSink`]
+//!   (a trace file) and [`sink::StepFrames`] (the bindings).
 //! - [`trace`]: the [`trace::TraceWriter`] seam, `.osi` and `.mcap` writers and readers,
 //!   the OSI file naming convention, and [`trace::TraceFile`] for `--osi PATH`.
 //!

@@ -50,7 +50,7 @@ impl Trajectories {
 }
 
 impl FrameSink for Trajectories {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         if !self.enabled {
             return Ok(());
         }
@@ -93,7 +93,7 @@ pub struct Events {
 }
 
 impl EventSink for Events {
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, record: &EventRecord) -> Result<(), engine::SinkError> {
         let mut writer = JsonlWriter::new(Vec::new());
         writer.event(record)?;
         let text = String::from_utf8(writer.into_inner())
@@ -112,7 +112,7 @@ pub struct Recorders<'a> {
 }
 
 impl FrameSink for Recorders<'_> {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         self.trajectories.frame(frame)?;
         match &mut self.osi {
             Some(osi) => osi.frame(frame),

@@ -225,12 +225,10 @@ impl Simulation {
                     let options = osi::sink::SinkOptions {
                         host: osi_host,
                         static_data,
-                        scenario_file: None,
                     };
-                    osi::sink::GroundTruthSink::new(scenario, Arc::clone(&network), &options)
-                        .map_err(|e| {
-                            ScenarioError::new_err(format!("cannot make the OSI ground truth: {e}"))
-                        })
+                    osi::sink::GroundTruthSink::new(&engine, &options).map_err(|e| {
+                        ScenarioError::new_err(format!("cannot make the OSI ground truth: {e}"))
+                    })
                 })
                 .transpose()?
                 .map(osi::sink::StepFrames::new);

@@ -58,7 +58,7 @@ impl EntityCatalog {
 }
 
 impl FrameSink for EntityCatalog {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         for e in frame.objects() {
             let i = e.id as usize;
             if i >= self.entities.len() {
@@ -102,7 +102,7 @@ impl Recorder {
 }
 
 impl FrameSink for Recorder {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         self.csv.frame(frame)?;
         self.catalog.frame(frame)
     }
@@ -131,7 +131,7 @@ impl EventRecorder {
 }
 
 impl EventSink for EventRecorder {
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, record: &EventRecord) -> Result<(), engine::SinkError> {
         self.0.event(record)
     }
 }

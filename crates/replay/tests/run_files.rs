@@ -32,7 +32,7 @@ fn write_run(dir: &Path) -> PathBuf {
     let catalog = std::rc::Rc::new(std::cell::RefCell::new(EntityCatalog::new()));
     struct Shared(std::rc::Rc<std::cell::RefCell<EntityCatalog>>);
     impl engine::FrameSink for Shared {
-        fn frame(&mut self, f: &engine::Frame<'_>) -> std::io::Result<()> {
+        fn frame(&mut self, f: &engine::Frame<'_>) -> Result<(), engine::SinkError> {
             self.0.borrow_mut().frame(f)
         }
     }

@@ -169,6 +169,13 @@ impl Sources {
         &self.files
     }
 
+    /// The path the scenario was opened at, as given to the loader (for a
+    /// ParameterValueDistribution, the distribution file); empty for a scenario not loaded
+    /// from files (built in memory, e.g. lowered from the DSL).
+    pub fn opened(&self) -> &Path {
+        &self.opened
+    }
+
     /// The global parameter overrides the scenario was loaded with, in order.
     pub fn overrides(&self) -> &[(String, String)] {
         &self.overrides

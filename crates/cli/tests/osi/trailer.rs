@@ -29,7 +29,7 @@ struct Classified {
 }
 
 fn name(o: &MovingObject) -> String {
-    // Every object the adapter writes carries [kind, entity name] (osi_sink module doc).
+    // Every object the adapter writes carries [kind, entity name] (osi::sink module doc).
     o.source_reference[0].identifier[1].clone()
 }
 

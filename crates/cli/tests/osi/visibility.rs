@@ -30,7 +30,7 @@ fn seconds(gt: &GroundTruth) -> f64 {
 fn id_of(gt: &GroundTruth, name: &str) -> Option<u64> {
     gt.moving_object
         .iter()
-        // Every object the adapter writes carries [kind, entity name] (osi_sink module doc).
+        // Every object the adapter writes carries [kind, entity name] (osi::sink module doc).
         .find(|o| o.source_reference[0].identifier[1] == name)
         .map(|o| o.id.and_then(|i| i.value).expect("every object has an id"))
 }

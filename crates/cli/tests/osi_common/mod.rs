@@ -115,7 +115,7 @@ pub struct State {
 struct Recorder(Vec<(f64, Vec<State>)>);
 
 impl FrameSink for Recorder {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         let states = frame
             .objects()
             .map(|e| {

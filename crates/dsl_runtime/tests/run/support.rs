@@ -29,7 +29,7 @@ pub struct Run {
 struct Frames(Vec<(f64, Vec<Obj>)>);
 
 impl FrameSink for Frames {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         let objs = frame
             .objects()
             .map(|o| Obj {
@@ -50,7 +50,7 @@ impl FrameSink for Frames {
 struct Events(Vec<(f64, String, String)>);
 
 impl EventSink for Events {
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, record: &EventRecord) -> Result<(), engine::SinkError> {
         if let EventRecord::Transition(t) = record {
             self.0
                 .push((t.time, t.name.clone(), format!("{:?}", t.transition)));

@@ -10,6 +10,7 @@ use std::io::Write;
 
 use super::fixed::push_fixed;
 use super::frame::{Frame, FrameSink};
+use super::SinkError;
 
 /// The header line.
 pub const HEADER: &str = "time,id,name,x,y,z,h,p,r,roadId,laneId,offset,t,s,speed";
@@ -53,7 +54,7 @@ pub(super) fn field(name: &str) -> std::borrow::Cow<'_, str> {
 }
 
 impl<W: Write> FrameSink for CsvWriter<W> {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), SinkError> {
         if !self.header_written {
             writeln!(self.out, "{HEADER}")?;
             self.header_written = true;
@@ -92,10 +93,10 @@ impl<W: Write> FrameSink for CsvWriter<W> {
             push_fixed(row, e.speed, 6);
             row.push(b'\n');
         }
-        self.out.write_all(row)
+        Ok(self.out.write_all(row)?)
     }
 
-    fn finish(&mut self) -> std::io::Result<()> {
-        self.out.flush()
+    fn finish(&mut self) -> Result<(), SinkError> {
+        Ok(self.out.flush()?)
     }
 }

@@ -4,6 +4,7 @@
 
 use scenario::SourcePos;
 
+use super::SinkError;
 use crate::runtime::RuntimeError;
 use crate::storyboard::TransitionRecord;
 
@@ -139,24 +140,24 @@ impl EventRecord {
 /// Receives the event records of each step, in the order they happened.
 pub trait EventSink {
     /// Takes one record. An error ends the run.
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()>;
+    fn event(&mut self, record: &EventRecord) -> Result<(), SinkError>;
 
     /// Called once after the last record.
-    fn finish(&mut self) -> std::io::Result<()> {
+    fn finish(&mut self) -> Result<(), SinkError> {
         Ok(())
     }
 }
 
 /// Discards records.
 impl EventSink for () {
-    fn event(&mut self, _record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, _record: &EventRecord) -> Result<(), SinkError> {
         Ok(())
     }
 }
 
 /// Collects records (tests).
 impl EventSink for Vec<EventRecord> {
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, record: &EventRecord) -> Result<(), SinkError> {
         self.push(record.clone());
         Ok(())
     }

@@ -5,17 +5,19 @@
 //! `StationaryObject`): name, kind, the pose of the reference point (OpenSCENARIO: rear-axle
 //! centre on the ground; OSI's base.position is the bounding-box centre, the box centre is given
 //! relative to the reference point so the OSI side can convert), bounding box, velocity,
-//! acceleration, yaw rate, road and lane position, vehicle category, colour, model3d, the
-//! VisibilityAction flags, the LightStateAction light states and the towed trailer.
+//! acceleration, yaw rate, road and lane position, vehicle, pedestrian or misc-object category,
+//! colour, model3d, the VisibilityAction flags, the LightStateAction light states and the towed
+//! trailer; the frame names the scenario and road files ([`ScenarioSource`]).
 
 use std::collections::BTreeMap;
 
 use opendrive::{Pose, Real, RoadPosition};
-use scenario::{LightState, VehicleCategory};
+use scenario::{LightState, MiscObjectCategory, PedestrianCategory, VehicleCategory};
 
+use super::SinkError;
 use crate::domain::{BoundingBox, Color, Vector3};
 use crate::runtime::{ControllerOverrides, Entity, EntityId, EntityKind, Visibility};
-use crate::snapshot::EntityState;
+use crate::snapshot::{EntityState, ScenarioSource};
 
 /// The state of every entity at one simulation time.
 #[derive(Debug, Clone, Copy)]
@@ -28,6 +30,8 @@ pub struct Frame<'a> {
     pub entities: &'a [Entity],
     /// Traffic signal controllers' phases and signal states (crate::signals).
     pub signals: &'a crate::signals::Signals,
+    /// The scenario and road files of the run (for source references).
+    pub source: &'a ScenarioSource,
 }
 
 impl<'a> Frame<'a> {
@@ -67,6 +71,10 @@ pub struct EntityFrame<'a> {
     pub road_position: Option<&'a RoadPosition>,
     /// Vehicle category (vehicles only).
     pub vehicle_category: Option<VehicleCategory>,
+    /// Pedestrian category (pedestrians declared in the scenario only).
+    pub pedestrian_category: Option<PedestrianCategory>,
+    /// Misc object category (misc objects only).
+    pub misc_object_category: Option<MiscObjectCategory>,
     /// Colour, if known.
     pub color: Option<Color>,
     /// `model3d`, if given.
@@ -102,6 +110,8 @@ impl<'a> EntityFrame<'a> {
             odometer: e.odometer,
             road_position: e.road_position.as_ref(),
             vehicle_category: e.vehicle_category,
+            pedestrian_category: e.pedestrian_category,
+            misc_object_category: e.misc_object_category,
             color: e.color,
             model3d: e.model3d.as_deref(),
             visibility: e.visibility,
@@ -126,6 +136,8 @@ impl<'a> EntityFrame<'a> {
             odometer: self.odometer,
             road_position: self.road_position.cloned(),
             vehicle_category: self.vehicle_category,
+            pedestrian_category: self.pedestrian_category,
+            misc_object_category: self.misc_object_category,
             color: self.color,
             model3d: self.model3d.map(str::to_owned),
             visibility: self.visibility,
@@ -139,28 +151,52 @@ impl<'a> EntityFrame<'a> {
 /// Receives one frame per step (the initial state, then after each step's movement).
 pub trait FrameSink {
     /// Takes a frame. An error ends the run.
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()>;
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), SinkError>;
 
     /// Called once after the last frame (flush files, close streams).
-    fn finish(&mut self) -> std::io::Result<()> {
+    fn finish(&mut self) -> Result<(), SinkError> {
         Ok(())
     }
 }
 
 /// Discards frames.
 impl FrameSink for () {
-    fn frame(&mut self, _frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, _frame: &Frame<'_>) -> Result<(), SinkError> {
         Ok(())
     }
 }
 
 /// Feeds every sink of the list, in order.
 impl FrameSink for Vec<Box<dyn FrameSink>> {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), SinkError> {
         self.iter_mut().try_for_each(|s| s.frame(frame))
     }
 
-    fn finish(&mut self) -> std::io::Result<()> {
+    fn finish(&mut self) -> Result<(), SinkError> {
         self.iter_mut().try_for_each(|s| s.finish())
+    }
+}
+
+/// Feeds the sink if there is one.
+impl<S: FrameSink> FrameSink for Option<S> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), SinkError> {
+        self.as_mut().map_or(Ok(()), |s| s.frame(frame))
+    }
+
+    fn finish(&mut self) -> Result<(), SinkError> {
+        self.as_mut().map_or(Ok(()), FrameSink::finish)
+    }
+}
+
+/// Feeds both sinks, the first first.
+impl<A: FrameSink, B: FrameSink> FrameSink for (A, B) {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), SinkError> {
+        self.0.frame(frame)?;
+        self.1.frame(frame)
+    }
+
+    fn finish(&mut self) -> Result<(), SinkError> {
+        self.0.finish()?;
+        self.1.finish()
     }
 }

@@ -13,6 +13,7 @@
 use std::io::Write;
 
 use super::event::{EventRecord, EventSink};
+use super::SinkError;
 use crate::storyboard::Transition;
 
 /// Writes event records as JSON lines to `W`.
@@ -51,7 +52,18 @@ pub fn transition_name(t: Transition) -> &'static str {
 }
 
 impl<W: Write> EventSink for JsonlWriter<W> {
-    fn event(&mut self, record: &EventRecord) -> std::io::Result<()> {
+    fn event(&mut self, record: &EventRecord) -> Result<(), SinkError> {
+        self.write(record).map_err(SinkError::from)
+    }
+
+    fn finish(&mut self) -> Result<(), SinkError> {
+        Ok(self.out.flush()?)
+    }
+}
+
+impl<W: Write> JsonlWriter<W> {
+    /// Writes `record` as one line.
+    fn write(&mut self, record: &EventRecord) -> std::io::Result<()> {
         match record {
             EventRecord::Transition(t) => writeln!(
                 self.out,
@@ -152,9 +164,5 @@ impl<W: Write> EventSink for JsonlWriter<W> {
                 string(message)
             ),
         }
-    }
-
-    fn finish(&mut self) -> std::io::Result<()> {
-        self.out.flush()
     }
 }

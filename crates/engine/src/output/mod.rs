@@ -6,12 +6,14 @@
 //! | --- | --- |
 //! | `frame` | the per-step snapshot of every entity and the `FrameSink` seam |
 //! | `event` | event records (storyboard transitions, custom commands, errors) and `EventSink` |
+//! | `error` | the typed error sinks return |
 //! | `csv` | the long-layout trajectory CSV |
 //! | `fixed` | fixed-point float formatting without allocation (the bytes of `{:.N}`) |
 //! | `jsonl` | the JSON-lines event log |
 //! | `signals_csv` | the traffic signal states per frame, companion of the trajectory CSV |
 
 mod csv;
+mod error;
 mod event;
 mod fixed;
 mod frame;
@@ -19,6 +21,7 @@ mod jsonl;
 mod signals_csv;
 
 pub use csv::CsvWriter;
+pub use error::{SinkError, SinkErrorKind};
 pub use event::{EventRecord, EventSink};
 pub use fixed::push_fixed;
 pub use frame::{EntityFrame, Frame, FrameSink};

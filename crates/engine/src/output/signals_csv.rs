@@ -8,6 +8,7 @@ use std::io::Write;
 
 use super::csv::field;
 use super::frame::{Frame, FrameSink};
+use super::SinkError;
 
 /// The header line.
 pub const SIGNALS_HEADER: &str = "time,signal,state";
@@ -30,7 +31,7 @@ impl<W: Write> SignalsCsvWriter<W> {
 }
 
 impl<W: Write> FrameSink for SignalsCsvWriter<W> {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), SinkError> {
         if !self.header_written {
             writeln!(self.out, "{SIGNALS_HEADER}")?;
             self.header_written = true;
@@ -41,7 +42,7 @@ impl<W: Write> FrameSink for SignalsCsvWriter<W> {
         Ok(())
     }
 
-    fn finish(&mut self) -> std::io::Result<()> {
-        self.out.flush()
+    fn finish(&mut self) -> Result<(), SinkError> {
+        Ok(self.out.flush()?)
     }
 }

@@ -130,10 +130,12 @@ pub(crate) fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entit
             e.color = color_of(&v.properties);
         }
         EntityObject::Pedestrian(p) => {
+            e.pedestrian_category = Some(p.pedestrian_category);
             e.model3d.clone_from(&p.model3d);
             e.color = color_of(&p.properties);
         }
         EntityObject::MiscObject(m) => {
+            e.misc_object_category = Some(m.misc_object_category);
             e.model3d.clone_from(&m.model3d);
             e.color = color_of(&m.properties);
         }

@@ -8,7 +8,9 @@
 use std::collections::BTreeMap;
 
 use opendrive::{Direction, LaneSpan, Pose, Real, RoadHandle, RoadPosition};
-use scenario::{LightState, ObjectType, Performance, VehicleCategory};
+use scenario::{
+    LightState, MiscObjectCategory, ObjectType, PedestrianCategory, Performance, VehicleCategory,
+};
 
 use crate::actions::ControllerOverrides;
 use crate::domain::{Acceleration6d, BoundingBox, Color, Route, Vector3, Velocity6d};
@@ -176,6 +178,10 @@ pub struct Entity {
     pub bounding_box: BoundingBox,
     /// Vehicle category (vehicles only).
     pub vehicle_category: Option<VehicleCategory>,
+    /// Pedestrian category (pedestrians declared in the scenario only).
+    pub pedestrian_category: Option<PedestrianCategory>,
+    /// Misc object category (misc objects only).
+    pub misc_object_category: Option<MiscObjectCategory>,
     /// Performance limits (vehicles only).
     pub performance: Option<Performance>,
     /// Colour, from a `Property name="color"` when one names a §8.7.11 colour.
@@ -249,6 +255,8 @@ impl Entity {
             kind,
             bounding_box,
             vehicle_category: None,
+            pedestrian_category: None,
+            misc_object_category: None,
             performance: None,
             color: None,
             model3d: None,

@@ -115,13 +115,13 @@ pub enum RuntimeErrorKind {
         /// The entity and what it has.
         found: String,
     },
-    /// Writing output failed.
-    #[error("cannot write {what}: {message}")]
+    /// A sink refused a frame or a record, or could not finish.
+    #[error("cannot write {what}: {error}")]
     Output {
-        /// Which output.
-        what: String,
-        /// The I/O error's message.
-        message: String,
+        /// Which output (`frames`, `events`).
+        what: &'static str,
+        /// The sink's error (in the message, so not also given as `source()`).
+        error: crate::output::SinkError,
     },
 }
 

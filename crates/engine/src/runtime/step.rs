@@ -16,7 +16,8 @@ use super::trigger_view::TriggerView;
 use super::world::World;
 use crate::actions::{stop_domain, ActionTable, Domain, Host};
 use crate::condition::ConditionStates;
-use crate::output::{EventRecord, EventSink, Frame, FrameSink};
+use crate::output::{EventRecord, EventSink, Frame, FrameSink, SinkError};
+use crate::snapshot::ScenarioSource;
 use crate::storyboard::{Storyboard, TransitionRecord, TransitionSink};
 
 /// Why a run ended.
@@ -77,6 +78,8 @@ pub struct Engine {
     /// Records of changes the host program made between steps (a controller attached), written
     /// with the next step's records.
     host_events: Vec<EventRecord>,
+    /// The scenario and road files (on every frame).
+    source: ScenarioSource,
 }
 
 /// Collects transitions into the step's event list.
@@ -124,7 +127,13 @@ impl Engine {
             counters: StageCounters::default(),
             scheduled_values: std::collections::VecDeque::new(),
             host_events,
+            source: ScenarioSource::of(scenario),
         })
+    }
+
+    /// The scenario and road files the engine was built from.
+    pub fn source(&self) -> &ScenarioSource {
+        &self.source
     }
 
     /// The world (entities, road network, values) as it is now.
@@ -418,6 +427,7 @@ impl Engine {
                     step: self.step,
                     entities: &world.entities,
                     signals: &world.signals,
+                    source: &self.source,
                 })
                 .map_err(output_error("frames"))?;
             self.counters.output += clock.elapsed();
@@ -469,6 +479,7 @@ impl Engine {
                 step: self.step,
                 entities: &world.entities,
                 signals: &world.signals,
+                source: &self.source,
             })
             .map_err(output_error("frames"))?;
         self.emit(&log.into_inner(), events)?;
@@ -513,13 +524,8 @@ impl Engine {
     }
 }
 
-fn output_error(what: &'static str) -> impl Fn(std::io::Error) -> RuntimeError {
-    move |e| {
-        RuntimeError::new(RuntimeErrorKind::Output {
-            what: what.to_owned(),
-            message: e.to_string(),
-        })
-    }
+fn output_error(what: &'static str) -> impl Fn(SinkError) -> RuntimeError {
+    move |error| RuntimeError::new(RuntimeErrorKind::Output { what, error })
 }
 
 /// The action host of stage 1, borrowing the world through its cell (conditions read it in

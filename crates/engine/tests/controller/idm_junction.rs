@@ -18,7 +18,7 @@ const GAP_TOLERANCE: f64 = 0.3;
 struct Track(Vec<(f64, String, String, f64, f64)>);
 
 impl FrameSink for Track {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         for e in frame.objects() {
             let (road, s) = e
                 .road_position

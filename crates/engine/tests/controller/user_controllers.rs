@@ -40,7 +40,7 @@ struct Row {
 struct Rows(Vec<Row>);
 
 impl FrameSink for Rows {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         for e in frame.objects() {
             let (s, t, lane) = e
                 .road_position

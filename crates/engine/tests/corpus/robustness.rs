@@ -140,7 +140,7 @@ struct FiniteCheck {
 }
 
 impl FrameSink for FiniteCheck {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         self.frames += 1;
         if self.corrupt.is_some() {
             return Ok(());
@@ -343,6 +343,7 @@ fn the_frame_check_catches_a_nan() {
                 step: 10,
                 entities,
                 signals: &engine::signals::Signals::default(),
+                source: &engine::ScenarioSource::default(),
             })
             .expect("the check never fails the run");
         check.corrupt

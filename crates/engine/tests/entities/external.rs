@@ -22,7 +22,7 @@ fn refused(name: &str) -> String {
 struct Objects(Vec<(f64, String, EntityKind, [f64; 6])>);
 
 impl FrameSink for Objects {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         for o in frame.objects() {
             let p = o.pose;
             let values = [p.x, p.y, p.z, p.h, o.bounding_box.height(), o.speed];

@@ -195,7 +195,7 @@ fn esmini_trailers_scenario_matches_the_reference_within_half_a_metre() {
 struct Towing(Vec<(f64, String, String)>);
 
 impl engine::FrameSink for Towing {
-    fn frame(&mut self, frame: &engine::Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &engine::Frame<'_>) -> Result<(), engine::SinkError> {
         for o in frame.objects() {
             if let Some(t) = o.trailer {
                 let name = frame.entities[t as usize].name.clone();

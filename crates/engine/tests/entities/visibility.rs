@@ -14,7 +14,7 @@ use engine::{Engine, EngineConfig};
 struct Flags(Vec<(f64, String, Visibility)>);
 
 impl FrameSink for Flags {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         for e in frame.objects() {
             self.0.push((frame.time, e.name.to_owned(), e.visibility));
         }

@@ -34,15 +34,23 @@ pub fn trace_file_name(
 
 /// `YYYYMMDDTHHMMSSZ` for the given Unix time (UTC).
 pub fn utc_basic_timestamp(unix_seconds: i64) -> String {
+    let (y, m, d, hh, mm, ss) = utc_fields(unix_seconds);
+    format!("{y:04}{m:02}{d:02}T{hh:02}{mm:02}{ss:02}Z")
+}
+
+/// `YYYY-MM-DDTHH:MM:SSZ` (ISO 8601 extended, UTC) for the given Unix time: the MCAP
+/// `creation_time` of a pinned recording.
+pub fn utc_extended_timestamp(unix_seconds: i64) -> String {
+    let (y, m, d, hh, mm, ss) = utc_fields(unix_seconds);
+    format!("{y:04}-{m:02}-{d:02}T{hh:02}:{mm:02}:{ss:02}Z")
+}
+
+/// Year, month, day, hour, minute, second (UTC) of a Unix time.
+fn utc_fields(unix_seconds: i64) -> (i64, u32, u32, i64, i64, i64) {
     let days = unix_seconds.div_euclid(86_400);
     let secs = unix_seconds.rem_euclid(86_400);
     let (y, m, d) = civil_from_days(days);
-    format!(
-        "{y:04}{m:02}{d:02}T{:02}{:02}{:02}Z",
-        secs / 3600,
-        (secs % 3600) / 60,
-        secs % 60
-    )
+    (y, m, d, secs / 3600, (secs % 3600) / 60, secs % 60)
 }
 
 /// Proleptic Gregorian (year, month, day) of a day count since 1970-01-01.
@@ -88,11 +96,16 @@ mod tests {
         // days, + 229 days from Jan 1 to Aug 18 in a common year: 31+28+31+30+31+30+31+17),
         // 18857 * 86400 + 15*3600 + 5*60 + 42 = 1_629_299_142.
         assert_eq!(utc_basic_timestamp(1_629_299_142), "20210818T150542Z");
+        assert_eq!(
+            utc_extended_timestamp(1_629_299_142),
+            "2021-08-18T15:05:42Z"
+        );
     }
 
     #[test]
     fn leap_day_and_epoch() {
         assert_eq!(utc_basic_timestamp(0), "19700101T000000Z");
+        assert_eq!(utc_extended_timestamp(0), "1970-01-01T00:00:00Z");
         // 2024-02-29 00:00:00 = day 19782 (54 years = 19723 days incl. 13 leap days, + 59).
         assert_eq!(utc_basic_timestamp(19_782 * 86_400), "20240229T000000Z");
     }

@@ -8,7 +8,7 @@ mod output;
 mod read;
 mod writer;
 
-pub use file_name::{trace_file_name, utc_basic_timestamp};
+pub use file_name::{trace_file_name, utc_basic_timestamp, utc_extended_timestamp};
 pub use mcap_file::{
     McapTraceInfo, McapTraceWriter, CHANNEL_DESCRIPTION_KEY, CHANNEL_OSI_VERSION_KEY,
     CHANNEL_PROTOBUF_VERSION_KEY, GROUND_TRUTH_TOPIC, OSI_TRACE_METADATA_NAME,

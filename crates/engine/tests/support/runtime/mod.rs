@@ -44,7 +44,7 @@ pub struct Row {
 pub struct Recorder(pub Vec<Row>);
 
 impl FrameSink for Recorder {
-    fn frame(&mut self, frame: &Frame<'_>) -> std::io::Result<()> {
+    fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         for e in frame.objects() {
             self.0.push(Row {
                 time: frame.time,
