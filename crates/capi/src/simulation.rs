@@ -234,7 +234,7 @@ pub unsafe extern "C" fn oscsim_simulation_new(
         let scenario = Scenario::load_with_parameters(Path::new(path), &overrides)
             .map_err(|e| load_failure(&e))?;
         let network = engine::load::road_network(&scenario)
-            .map_err(|e| load_failure(&engine::LoadError::RoadNetwork(e)))?;
+            .map_err(|e| load_failure(&engine::Error::from(e)))?;
         let engine = Engine::new(&scenario, network, config).map_err(|e| load_failure(&e))?;
         let osi = if c.osi != 0 {
             let sink = GroundTruthSink::new(&engine, &SinkOptions::default())

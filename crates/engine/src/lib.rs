@@ -55,6 +55,7 @@
 //! | `controller` | OpenSCENARIO 1.3 §7.5 controllers: the default controller, route following |
 //! | `traffic` | OpenSCENARIO 1.3 §7.2.2.3 spawned traffic: sources, sinks, swarms, areas |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
+//! | `error` | `Error`, the one error of the public API: `kind()` an `ErrorKind`, `pos()` the scenario's file:line:col |
 //! | `load` | the loading layer: road networks read once and shared, `Engine::load` |
 //! | `snapshot` | entity and environment state as plain values (`Engine::entities`) |
 #![forbid(unsafe_code)]
@@ -64,6 +65,7 @@ mod actions;
 pub mod condition;
 pub mod controller;
 pub mod domain;
+mod error;
 pub mod load;
 pub mod models;
 pub mod output;
@@ -77,9 +79,10 @@ mod traffic;
 pub mod trajectory;
 pub mod user_values;
 
-pub use load::{LoadError, RoadNetworks};
+pub use error::{Error, ErrorKind};
+pub use load::RoadNetworks;
 pub use output::{CsvWriter, EntityFrame, JsonlWriter};
-pub use output::{EventRecord, EventSink, Frame, FrameSink, SinkError};
+pub use output::{EventRecord, EventSink, Frame, FrameSink, SinkError, SinkErrorKind};
 pub use runtime::{
     Engine, EngineConfig, EntityId, EntityKind, RuntimeError, RuntimeErrorKind, StageCounters,
     StopReason, Visibility,

@@ -29,25 +29,12 @@ use std::sync::Arc;
 use opendrive::RoadNetwork;
 use scenario::Scenario;
 
-use crate::runtime::{Engine, EngineConfig, RuntimeError};
+use crate::runtime::{Engine, EngineConfig};
+use crate::Error;
 
 /// The road network of a scenario that names none: no roads (entities then move in the
 /// world frame only).
 const EMPTY_NETWORK: &str = r#"<OpenDRIVE><header revMajor="1" revMinor="6"/></OpenDRIVE>"#;
-
-/// Why loading failed: the scenario, its road network, or building the engine.
-#[derive(Debug, thiserror::Error)]
-pub enum LoadError {
-    /// The scenario did not load (the error names file:line:col).
-    #[error(transparent)]
-    Scenario(scenario::Error),
-    /// The road network did not load (the error names the file and row:col).
-    #[error("cannot load the road network: {0}")]
-    RoadNetwork(opendrive::Error),
-    /// The engine could not be built.
-    #[error(transparent)]
-    Runtime(RuntimeError),
-}
 
 /// Reads the road network `scenario` names (`RoadNetwork/LogicFile`), or gives the empty
 /// network when it names none.
@@ -74,14 +61,14 @@ impl RoadNetworks {
 
     /// The road network `scenario` names: the one read before for the same file (the path
     /// as the scenario resolved it), else read now and kept.
-    pub fn get(&mut self, scenario: &Scenario) -> Result<Arc<RoadNetwork>, LoadError> {
+    pub fn get(&mut self, scenario: &Scenario) -> Result<Arc<RoadNetwork>, Error> {
         let Some(path) = &scenario.road_network.logic_file else {
-            return road_network(scenario).map_err(LoadError::RoadNetwork);
+            return Ok(road_network(scenario)?);
         };
         if let Some(network) = self.by_file.get(path) {
             return Ok(network.clone());
         }
-        let network = road_network(scenario).map_err(LoadError::RoadNetwork)?;
+        let network = road_network(scenario)?;
         self.by_file.insert(path.clone(), network.clone());
         Ok(network)
     }
@@ -105,9 +92,9 @@ impl Engine {
         path: &Path,
         params: &[(String, String)],
         config: EngineConfig,
-    ) -> Result<Engine, LoadError> {
-        let scenario = Scenario::load_with_parameters(path, params).map_err(LoadError::Scenario)?;
-        let network = road_network(&scenario).map_err(LoadError::RoadNetwork)?;
-        Engine::new(&scenario, network, config).map_err(LoadError::Runtime)
+    ) -> Result<Engine, Error> {
+        let scenario = Scenario::load_with_parameters(path, params)?;
+        let network = road_network(&scenario)?;
+        Engine::new(&scenario, network, config)
     }
 }

@@ -103,28 +103,18 @@ pub fn positioned<T: pyo3::PyTypeInfo>(py: Python<'_>, message: String, place: P
     err
 }
 
-/// The scenario position of a runtime error, where its kind carries one.
-pub fn runtime_pos(e: &engine::RuntimeError) -> Option<&SourcePos> {
-    use engine::RuntimeErrorKind as K;
-    match e.kind() {
-        K::Invalid { pos, .. } | K::Unsupported { pos, .. } => Some(pos),
-        _ => None,
-    }
-}
-
 /// A load or build error as [`ScenarioError`].
-pub fn load_error(py: Python<'_>, e: &engine::LoadError) -> PyErr {
-    let place = match e {
-        engine::LoadError::Scenario(e) => Some(e.pos()).into(),
-        engine::LoadError::RoadNetwork(e) => e.into(),
-        engine::LoadError::Runtime(e) => runtime_pos(e).into(),
+pub fn load_error(py: Python<'_>, e: &engine::Error) -> PyErr {
+    let place = match e.kind() {
+        engine::ErrorKind::RoadNetwork(e) => e.into(),
+        _ => e.pos().into(),
     };
     positioned::<ScenarioError>(py, e.to_string(), place)
 }
 
 /// A failed step as [`SimulationError`].
-pub fn step_error(py: Python<'_>, e: &engine::RuntimeError) -> PyErr {
-    positioned::<SimulationError>(py, e.to_string(), runtime_pos(e).into())
+pub fn step_error(py: Python<'_>, e: &engine::Error) -> PyErr {
+    positioned::<SimulationError>(py, e.to_string(), e.pos().into())
 }
 
 /// Registers the exception classes on the module.

@@ -30,7 +30,7 @@ impl Scenario {
             let overrides = overrides(params)?;
             scenario::Scenario::load_with_parameters(&path, &overrides)
                 .map(|s| Scenario { inner: Arc::new(s) })
-                .map_err(|e| load_error(py, &engine::LoadError::Scenario(e)))
+                .map_err(|e| load_error(py, &e.into()))
         })
     }
 

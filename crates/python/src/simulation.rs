@@ -202,7 +202,7 @@ impl Simulation {
                 let overrides = overrides(params)?;
                 loaded = Arc::new(
                     scenario::Scenario::load_with_parameters(&path, &overrides)
-                        .map_err(|e| load_error(py, &engine::LoadError::Scenario(e)))?,
+                        .map_err(|e| load_error(py, &e.into()))?,
                 );
                 &loaded
             };
@@ -215,11 +215,12 @@ impl Simulation {
             };
             let network = match road_network {
                 Some(n) => Arc::clone(&n.inner),
-                None => engine::load::road_network(scenario)
-                    .map_err(|e| load_error(py, &engine::LoadError::RoadNetwork(e)))?,
+                None => {
+                    engine::load::road_network(scenario).map_err(|e| load_error(py, &e.into()))?
+                }
             };
             let engine = Engine::new(scenario, Arc::clone(&network), config)
-                .map_err(|e| load_error(py, &engine::LoadError::Runtime(e)))?;
+                .map_err(|e| load_error(py, &e))?;
             let osi = osi
                 .then(|| {
                     let options = osi::sink::SinkOptions {

@@ -6,7 +6,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `config` | step length, duration, cap |
-//! | `error` | `RuntimeError` |
+//! | `error` | `RuntimeError`, the runtime's name for `crate::Error` |
 //! | `entity` | entity state (pose, road position, speed, …) and `EntityId` |
 //! | `world` | road network + entity store + values; `EntityQuery` / `ConditionContext` |
 //! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |

@@ -4,7 +4,7 @@
 
 use crate::runtime_support;
 
-use engine::{Engine, EngineConfig, LoadError};
+use engine::{Engine, EngineConfig, ErrorKind};
 use runtime_support::{corpus, file, Recorder};
 
 /// Simulated seconds per scenario: long enough to pass the interesting parts of most
@@ -47,7 +47,7 @@ fn every_corpus_scenario_runs_or_fails_cleanly() {
                 assert!(engine.time() <= CAP + 1e-9, "{name} respects the cap");
                 ran += 1;
             }
-            Err(LoadError::Scenario(e)) => {
+            Err(e) if matches!(e.kind(), ErrorKind::Scenario(_)) => {
                 let message = e.to_string();
                 match name.as_str() {
                     "auto_light.xosc" => assert!(message.contains("Vehicles"), "{message}"),

@@ -6,7 +6,7 @@ use crate::runtime_support;
 
 use std::path::PathBuf;
 
-use engine::{Engine, EngineConfig, EventRecord, LoadError, RuntimeErrorKind};
+use engine::{Engine, EngineConfig, ErrorKind, EventRecord};
 use runtime_support::Recorder;
 
 fn file(name: &str) -> PathBuf {
@@ -55,10 +55,9 @@ fn distance_to_a_selection_is_rejected_with_its_position() {
         EngineConfig::default(),
     )
     .expect_err("a distance to a selection must be refused");
-    let LoadError::Runtime(e) = &err else {
-        panic!("expected a runtime build error, found {err}");
-    };
-    assert!(matches!(e.kind(), RuntimeErrorKind::Invalid { .. }));
+    assert!(matches!(err.kind(), ErrorKind::Invalid { .. }), "{err}");
+    let pos = err.pos().expect("the condition's position");
+    assert_eq!((pos.line, pos.col), (69, 51));
     let text = err.to_string();
     assert!(
         text.starts_with(
@@ -74,7 +73,7 @@ fn distance_to_a_selection_is_rejected_with_its_position() {
 fn cyclic_selection_is_rejected_at_load() {
     let err = Engine::load(&file("selection_cycle.xosc"), &[], EngineConfig::default())
         .expect_err("a selection cycle must be refused");
-    assert!(matches!(err, LoadError::Scenario(_)), "{err}");
+    assert!(matches!(err.kind(), ErrorKind::Scenario(_)), "{err}");
     let text = err.to_string();
     assert!(
         text.starts_with("entity selection cycle: A → B → A at ")
