@@ -57,6 +57,7 @@
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
 //! | `error` | `Error`, the one error of the public API: `kind()` an `ErrorKind`, `pos()` the scenario's file:line:col |
 //! | `load` | the loading layer: road networks read once and shared, `Engine::load` |
+//! | `tolerance` | the named numeric tolerances (time, speed, length, turn, value, step fraction) |
 //! | `snapshot` | entity and environment state as plain values (`Engine::entities`) |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -75,6 +76,7 @@ pub mod runtime;
 pub mod signals;
 mod snapshot;
 pub mod storyboard;
+pub mod tolerance;
 mod traffic;
 pub mod trajectory;
 pub mod user_values;

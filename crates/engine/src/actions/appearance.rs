@@ -49,7 +49,8 @@ impl Transition {
     /// (actions::status). The 1e-9 s absorbs the rounding of summed steps, as for the
     /// SpeedAction and LaneChangeAction durations.
     pub(crate) fn completes_by(&self, step_end: f64) -> bool {
-        self.ends_at.is_some_and(|end| step_end >= end - 1e-9)
+        self.ends_at
+            .is_some_and(|end| step_end >= end - crate::tolerance::TIME)
     }
 
     /// The status after the step from `now` to `now + dt`.

@@ -66,7 +66,7 @@ pub(crate) struct TrajectoryState {
 
 /// Tolerance (s, m) of reaching a trajectory's last time or its end: round-off of s and t
 /// summed over a run's steps.
-const END_EPSILON: f64 = 1e-9;
+const END_EPSILON: f64 = crate::tolerance::TIME;
 
 impl TrajectoryState {
     /// The clock when the motion is timed: a Timing time reference and a shape with times.

@@ -57,7 +57,8 @@ pub(crate) struct Foreseen {
 impl LateralState {
     /// True when a fixed-time transition that does not hold its target reaches its end by `t`.
     pub(crate) fn completes_by(&self, t: f64) -> bool {
-        !self.continuous && matches!(self.span, Span::Time(d) if t - self.start_time >= d - 1e-9)
+        !self.continuous
+            && matches!(self.span, Span::Time(d) if t - self.start_time >= d - crate::tolerance::TIME)
     }
 }
 

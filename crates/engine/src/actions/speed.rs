@@ -230,7 +230,7 @@ fn distance_to_time(d: f64, v0: f64, v1: f64) -> Span {
         2.0 * d * (v0.abs() + v1.abs()) / (v0 * v0 + v1 * v1)
     } else {
         let mean = 0.5 * (v0 + v1).abs();
-        if mean > 1e-9 {
+        if mean > crate::tolerance::SPEED {
             d / mean
         } else {
             0.0
@@ -255,7 +255,7 @@ impl SpeedState {
     pub(crate) fn completes_by(&self, t: f64) -> bool {
         !self.target.continuous()
             && !self.limited
-            && matches!(self.span, Span::Time(d) if t - self.start_time >= d - 1e-9)
+            && matches!(self.span, Span::Time(d) if t - self.start_time >= d - crate::tolerance::TIME)
     }
 }
 
@@ -298,10 +298,10 @@ pub(crate) fn step(
             e.speed + perf.max_acceleration.abs() * dt,
         ),
     };
-    s.limited = (bounded - v).abs() > 1e-9;
+    s.limited = (bounded - v).abs() > crate::tolerance::SPEED;
     let max_speed = s.performance.map_or(f64::INFINITY, |p| p.max_speed.abs());
     e.speed = within(bounded, -max_speed, max_speed);
-    let reached = (e.speed - within(v1, -max_speed, max_speed)).abs() <= 1e-9;
+    let reached = (e.speed - within(v1, -max_speed, max_speed)).abs() <= crate::tolerance::SPEED;
     if p >= 1.0 && reached && !s.target.continuous() {
         ActionStatus::Ended
     } else {

@@ -39,7 +39,7 @@ use crate::storyboard::ActionStatus;
 const DEFAULT_ACCELERATION: f64 = 5.0;
 /// Times (s), speeds (m/s) and slopes (m/s²) closer than this are the same: the workspace's
 /// 1e-9 tolerance.
-const EPS: f64 = opendrive::LENGTH_EPSILON;
+const EPS: f64 = crate::tolerance::TIME;
 
 /// A running SpeedProfileAction on one actor: pieces of constant jerk, in time order.
 #[derive(Debug, Clone)]

@@ -45,7 +45,7 @@ use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 
 /// Distances (m), speeds (m/s) and times (s) below this count as zero.
-const SMALL: f64 = 1e-9;
+const SMALL: f64 = crate::tolerance::LENGTH;
 
 /// A resolved target: where it is and, when on a road, the road and s.
 #[derive(Debug, Clone)]

@@ -31,7 +31,7 @@ pub const STAND_STILL_SPEED: Real = 1e-3;
 
 /// Durations compare with this slack (s), so that a duration that is a multiple of the step
 /// is reached at that step despite the round-off of summed times.
-pub const DURATION_TOLERANCE: Real = 1e-9;
+pub const DURATION_TOLERANCE: Real = crate::tolerance::TIME;
 
 /// A vector's component along `direction` of the object's own axes (x when absent).
 pub(crate) fn component(v: Vector3, direction: Option<DirectionalDimension>) -> Real {

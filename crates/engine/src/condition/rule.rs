@@ -19,7 +19,7 @@ use scenario::Rule;
 use super::ConditionErrorKind;
 
 /// Relative (and, below 1, absolute) tolerance of `equalTo` on floats.
-pub const EQUAL_TOLERANCE: f64 = 1e-9;
+pub const EQUAL_TOLERANCE: f64 = crate::tolerance::VALUE;
 
 /// `a rule b` on numbers, with `equalTo` within [`EQUAL_TOLERANCE`].
 pub fn compare(a: f64, rule: Rule, b: f64) -> bool {

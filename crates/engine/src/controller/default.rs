@@ -116,7 +116,7 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
     e.odometer += signed - (left / road_scale).min(signed);
     // The lane ends with no successor: after a second step standing at its end the entity
     // stops (speed 0), as in esmini's runs.
-    let blocked = left > 0.0 && left >= along * road_scale - 1e-9;
+    let blocked = left > 0.0 && left >= along * road_scale - crate::tolerance::LENGTH;
     if blocked && e.at_lane_end {
         e.speed = 0.0;
     }

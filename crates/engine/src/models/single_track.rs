@@ -324,7 +324,7 @@ fn signed_ballistic(v: Real, a: Real, drive: Real, dt: Real) -> (Real, Real) {
 /// when κ·d is below 1e-9 rad.
 pub fn arc_step(x: Real, y: Real, h: Real, distance: Real, curvature: Real) -> (Real, Real, Real) {
     let turn = curvature * distance;
-    if turn.abs() < 1e-9 {
+    if turn.abs() < crate::tolerance::TURN {
         return (x + distance * h.cos(), y + distance * h.sin(), h + turn);
     }
     let h2 = h + turn;

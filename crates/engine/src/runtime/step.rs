@@ -356,7 +356,7 @@ impl Engine {
         while let Some(v) = self
             .scheduled_values
             .front()
-            .filter(|v| v.time <= time + dt * 1e-6)
+            .filter(|v| v.time <= time + dt * crate::tolerance::STEP_FRACTION)
         {
             let v = v.clone();
             self.scheduled_values.pop_front();
@@ -487,7 +487,7 @@ impl Engine {
 
         let end = self.config.end_time();
         // Within a millionth of a step of the end: round-off of steps · dt, at any dt.
-        if time >= end - dt * 1e-6 {
+        if time >= end - dt * crate::tolerance::STEP_FRACTION {
             self.stopped = Some(match self.config.duration {
                 Some(d) if d <= self.config.max_time => StopReason::Duration,
                 _ => StopReason::TimeCap,

@@ -29,7 +29,7 @@ use scenario::{SourcePos, TrafficSignalController};
 use crate::runtime::RuntimeError;
 
 /// A cycle position within this many seconds before a phase's start counts as that phase.
-pub(crate) const BOUNDARY: f64 = 1e-9;
+pub(crate) const BOUNDARY: f64 = crate::tolerance::TIME;
 
 /// The timing of one controller.
 #[derive(Debug, Clone)]

@@ -20,7 +20,7 @@ use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 
 /// Slack on the vehicles owed by a source (a count).
-const DUE_TOLERANCE: Real = 1e-9;
+const DUE_TOLERANCE: Real = crate::tolerance::VALUE;
 
 /// A source's settings and the vehicles it owes.
 #[derive(Debug, Clone)]

@@ -132,7 +132,7 @@ pub fn pursuit_curvature([x, y, h]: [Real; 3], [gx, gy]: [Real; 2], max_curvatur
 /// The pose after driving `distance` m on an arc of `curvature` from (x, y) heading `h`.
 pub fn drive_arc([x, y, h]: [Real; 3], curvature: Real, distance: Real) -> [Real; 3] {
     let turn = curvature * distance;
-    if turn.abs() < 1e-9 {
+    if turn.abs() < crate::tolerance::TURN {
         // Straight to within 1e-9 rad: the arc's sagitta is below 1e-9·distance.
         return [x + distance * h.cos(), y + distance * h.sin(), h];
     }

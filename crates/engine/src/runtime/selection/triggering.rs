@@ -75,7 +75,7 @@ impl TriggerReports {
         // A report is needed while it may be the nearest to `now − delay` of a later lookup:
         // the front goes once the next one is itself no later than that.
         // (1e-9 s: the rounding of summed steps.)
-        while reports.len() > 1 && reports[1].time <= time - delay + 1e-9 {
+        while reports.len() > 1 && reports[1].time <= time - delay + crate::tolerance::TIME {
             reports.pop_front();
         }
     }
