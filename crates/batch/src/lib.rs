@@ -25,12 +25,12 @@ mod seed;
 mod shard;
 mod table;
 
-pub use merge::{merge, write_outputs, MergeError};
+pub use merge::{merge, merge_tables, write_outputs, MergeError};
 pub use metrics::{Measures, Observer};
 pub use parquet_file::{to_parquet, ParquetError};
 pub use plan::{Plan, PlanError};
 pub use report::{report_html, summary};
-pub use run::{run, selected, variant_dir, Options, RunError, Save};
+pub use run::{run, run_variants, selected, variant_dir, Options, RunError, Save};
 pub use seed::variant_seed;
 pub use shard::{Shard, ShardError};
 pub use table::{quantize, quantize_time, CsvError, Outcome, Row, Stop, Table, FIXED_COLUMNS};

@@ -74,13 +74,26 @@ pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
 
 /// Merges the shard folders `shards` into `out` (module doc); returns the merged table.
 pub fn merge(shards: &[PathBuf], out: &Path) -> Result<Table, MergeError> {
-    let mut merged: Option<(Table, String)> = None;
-    let mut owner: std::collections::BTreeMap<u64, String> = Default::default();
+    let mut parts = Vec::with_capacity(shards.len());
     for dir in shards {
         let path = dir.join("results.csv");
         let name = path.display().to_string();
         let text = std::fs::read_to_string(&path).map_err(io("cannot read", &path))?;
-        let table = Table::from_csv(&text, &name)?;
+        parts.push((Table::from_csv(&text, &name)?, name));
+        copy_variants(&dir.join("variants"), &out.join("variants"))?;
+    }
+    let table = merge_tables(parts)?;
+    write_outputs(out, &table)?;
+    Ok(table)
+}
+
+/// Joins the tables of disjoint shares of one batch, each with the name its errors give it,
+/// into the table of the whole: rows by variant number. Refuses shares of different batches
+/// (other parameters or monitors) and a variant in two shares.
+pub fn merge_tables(parts: Vec<(Table, String)>) -> Result<Table, MergeError> {
+    let mut merged: Option<(Table, String)> = None;
+    let mut owner: std::collections::BTreeMap<u64, String> = Default::default();
+    for (table, name) in parts {
         for row in &table.rows {
             if let Some(first) = owner.insert(row.variant, name.clone()) {
                 return Err(MergeError::Overlap {
@@ -102,11 +115,9 @@ pub fn merge(shards: &[PathBuf], out: &Path) -> Result<Table, MergeError> {
                 m.rows.extend(table.rows);
             }
         }
-        copy_variants(&dir.join("variants"), &out.join("variants"))?;
     }
     let mut table = merged.map(|(t, _)| t).unwrap_or_default();
     table.rows.sort_by_key(|r| r.variant);
-    write_outputs(out, &table)?;
     Ok(table)
 }
 

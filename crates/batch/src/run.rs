@@ -80,10 +80,24 @@ impl Default for Options {
 
 /// Why the batch as a whole could not run (a variant's own failure is a row, not this).
 #[derive(Debug, thiserror::Error)]
-#[error("cannot start {jobs} worker threads: {message}")]
-pub struct RunError {
-    jobs: usize,
-    message: String,
+#[non_exhaustive]
+pub enum RunError {
+    /// The worker pool could not be started.
+    #[error("cannot start {jobs} worker threads: {message}")]
+    Threads {
+        /// The threads asked for.
+        jobs: usize,
+        /// The pool builder's error.
+        message: String,
+    },
+    /// A variant number that the plan does not have ([`run_variants`]).
+    #[error("expected a variant number below {count}, found {variant}")]
+    NoSuchVariant {
+        /// The number asked for.
+        variant: u64,
+        /// How many variants the plan has.
+        count: usize,
+    },
 }
 
 /// The variant numbers this process runs, ascending.
@@ -99,13 +113,29 @@ pub fn run(
     options: &Options,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Table, RunError> {
-    let variants = selected(plan, options);
+    run_variants(plan, options, &selected(plan, options), progress)
+}
+
+/// Runs the variants numbered `variants` of `plan` (each below `plan.variants.len()`; the
+/// options' shard and `only` are not consulted), rows in the order given: the work of one
+/// task of a driver that hands out its own shares (the Python package's Ray backend).
+/// `progress(done, total)` is called after each.
+pub fn run_variants(
+    plan: &Plan,
+    options: &Options,
+    variants: &[u64],
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Table, RunError> {
+    let count = plan.variants.len();
+    if let Some(&variant) = variants.iter().find(|&&v| v >= count as u64) {
+        return Err(RunError::NoSuchVariant { variant, count });
+    }
     let total = variants.len();
     let done = AtomicUsize::new(0);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.jobs.max(1))
         .build()
-        .map_err(|e| RunError {
+        .map_err(|e| RunError::Threads {
             jobs: options.jobs,
             message: e.to_string(),
         })?;

@@ -14,10 +14,12 @@
 //! | `record` | the trajectories and event log a simulation keeps |
 //! | `control` | inputs of entities under an `external` controller (the system under test) |
 //! | `simulation` | `Simulation`: step, run, state, values from outside, control, OSI bytes |
+//! | `batch` | `BatchPlan`, `merge_results`, `summary`: the variants of a distribution (`oscsim batch`) |
 #![deny(missing_docs)]
 
 use pyo3::prelude::*;
 
+mod batch;
 mod control;
 mod entity;
 mod error;
@@ -48,6 +50,9 @@ fn _oscsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<state::Vector3>()?;
     m.add_class::<state::RoadPosition>()?;
     m.add_class::<state::BoundingBox>()?;
+    m.add_class::<batch::BatchPlan>()?;
+    m.add_function(wrap_pyfunction!(batch::merge_results, m)?)?;
+    m.add_function(wrap_pyfunction!(batch::summary, m)?)?;
     m.add_function(wrap_pyfunction!(_debug_panic, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

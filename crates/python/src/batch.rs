@@ -1,0 +1,183 @@
+//! `oscsim.BatchPlan` and `merge_results`: the variants of a ParameterValueDistribution file
+//! (OpenSCENARIO 1.3 §9.5) run from Python, for the drivers of `oscsim.batch` (in-process or
+//! as Ray tasks). The work is the batch crate's — the same plan, runs, table and files as
+//! `oscsim batch` — so a table put together from shares run anywhere is the one the command
+//! line writes, byte for byte.
+//!
+//! Tables cross the boundary as the text of `results.csv`: that is what travels between Ray
+//! workers and the driver, and the table keeps its numbers as written (batch's table.rs), so
+//! nothing is lost on the way.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::error::{guard, positioned, OscsimError, Place, ScenarioError};
+
+/// A ParameterValueDistribution file expanded into numbered variants and checked against its
+/// ScenarioFile, the scenario and road network loaded once. Immutable; share it between
+/// threads.
+#[pyclass(frozen, module = "oscsim")]
+pub struct BatchPlan {
+    inner: Arc<batch::Plan>,
+}
+
+#[pymethods]
+impl BatchPlan {
+    /// Loads the distribution file `path` and the scenario it names. Raises `ScenarioError`
+    /// (with the message's file:line:col; `file`, `line`, `column` set where the error is in
+    /// the scenario or its road network) when the plan cannot run.
+    #[new]
+    fn new(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
+        guard(|| {
+            batch::Plan::load(&path)
+                .map(|p| BatchPlan { inner: Arc::new(p) })
+                .map_err(|e| {
+                    let place = match &e {
+                        batch::PlanError::Scenario(s) => Some(s.pos()).into(),
+                        batch::PlanError::RoadNetwork(r) => r.into(),
+                        _ => Place::default(),
+                    };
+                    let message = format!("cannot run the batch of {}: {e}", path.display());
+                    positioned::<ScenarioError>(py, message, place)
+                })
+        })
+    }
+
+    /// The distribution file.
+    #[getter]
+    fn distribution(&self) -> String {
+        self.inner.distribution.display().to_string()
+    }
+
+    /// The ScenarioFile it names.
+    #[getter]
+    fn scenario(&self) -> String {
+        self.inner.scenario.path.display().to_string()
+    }
+
+    /// How many variants the distribution has (numbered 0 … n − 1, docs/batch.md).
+    #[getter]
+    fn variant_count(&self) -> usize {
+        self.inner.variants.len()
+    }
+
+    /// The varied parameters, in column order.
+    #[getter]
+    fn parameters(&self) -> Vec<String> {
+        self.inner.parameters.clone()
+    }
+
+    /// Variant `i`'s parameter values by name (as text, as the distribution gives them).
+    fn variant<'py>(&self, py: Python<'py>, i: usize) -> PyResult<Bound<'py, PyDict>> {
+        let values = self.inner.variants.get(i).ok_or_else(|| {
+            pyo3::exceptions::PyIndexError::new_err(format!(
+                "expected a variant number below {}, found {i}",
+                self.inner.variants.len()
+            ))
+        })?;
+        let d = PyDict::new(py);
+        for (k, v) in values {
+            d.set_item(k, v)?;
+        }
+        Ok(d)
+    }
+
+    /// Runs the variants numbered `variants` (default: all) on `jobs` threads with the
+    /// options of `oscsim batch` and returns their rows as the text of a `results.csv` (rows
+    /// in the order given). A failing variant is a row with its error, as on the command line.
+    /// The interpreter's lock is released while the variants run.
+    #[pyo3(signature = (variants = None, *, seed = engine::runtime::DEFAULT_SEED,
+        dt = engine::runtime::DEFAULT_DT, duration = None,
+        max_time = engine::runtime::DEFAULT_MAX_TIME, host = "Ego".to_owned(), jobs = 1))]
+    #[allow(clippy::too_many_arguments)] // the keyword options of `oscsim batch`
+    fn run(
+        &self,
+        py: Python<'_>,
+        variants: Option<Vec<u64>>,
+        seed: u64,
+        dt: f64,
+        duration: Option<f64>,
+        max_time: f64,
+        host: String,
+        jobs: usize,
+    ) -> PyResult<String> {
+        guard(|| {
+            if !(dt.is_finite() && dt > 0.0) {
+                return Err(pyo3::exceptions::PyValueError::new_err(format!(
+                    "expected a positive finite dt, found {dt}"
+                )));
+            }
+            let options = batch::Options {
+                seed,
+                dt,
+                duration,
+                max_time,
+                host,
+                jobs: jobs.max(1),
+                ..batch::Options::default()
+            };
+            let variants =
+                variants.unwrap_or_else(|| (0..self.inner.variants.len() as u64).collect());
+            let plan = Arc::clone(&self.inner);
+            py.detach(move || batch::run_variants(&plan, &options, &variants, &|_, _| {}))
+                .map(|t| t.to_csv())
+                .map_err(|e| match e {
+                    batch::RunError::NoSuchVariant { .. } => {
+                        pyo3::exceptions::PyIndexError::new_err(e.to_string())
+                    }
+                    _ => OscsimError::new_err(e.to_string()),
+                })
+        })
+    }
+
+    fn __repr__(&self) -> String {
+        format!("BatchPlan({:?})", self.distribution())
+    }
+}
+
+/// Joins the `results.csv` texts of disjoint shares of one batch into the table of the
+/// whole (rows by variant number) and returns its text; with `out_dir`, writes
+/// `results.csv`, `results.parquet` and `report.html` there, the files `oscsim batch`
+/// writes. Raises `OscsimError` for shares of different batches, a variant in two shares or
+/// a text that is not a results table (naming the share, `part K`, and its line).
+#[pyfunction]
+#[pyo3(signature = (parts, out_dir = None))]
+pub fn merge_results(
+    py: Python<'_>,
+    parts: Vec<String>,
+    out_dir: Option<PathBuf>,
+) -> PyResult<String> {
+    guard(|| {
+        py.detach(move || {
+            let tables = parts
+                .iter()
+                .enumerate()
+                .map(|(k, text)| {
+                    let name = format!("part {k}");
+                    batch::Table::from_csv(text, &name).map(|t| (t, name))
+                })
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(|e| e.to_string())?;
+            let table = batch::merge_tables(tables).map_err(|e| e.to_string())?;
+            if let Some(dir) = &out_dir {
+                batch::write_outputs(dir, &table).map_err(|e| e.to_string())?;
+            }
+            Ok(table.to_csv())
+        })
+        .map_err(|message: String| OscsimError::new_err(message))
+    })
+}
+
+/// The summary `oscsim batch` prints (variants, failures, collisions, the worst min_ttc and
+/// its variant) of the table in `csv`, the text of a `results.csv`.
+#[pyfunction]
+pub fn summary(csv: &str) -> PyResult<String> {
+    guard(|| {
+        batch::Table::from_csv(csv, "results.csv")
+            .map(|t| batch::summary(&t))
+            .map_err(|e| OscsimError::new_err(e.to_string()))
+    })
+}

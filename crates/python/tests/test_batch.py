@@ -1,0 +1,134 @@
+"""oscsim.batch from Python (issue 15): the variants of a distribution run in this process or as
+Ray tasks on a local Ray cluster give the table `oscsim batch` writes — results.csv,
+results.parquet and report.html byte for byte, and the returned data frame row for row.
+
+Ray comes from PyPI (scripts/python_check.sh installs it). The Ray test is skipped only when
+OSCSIM_SKIP_RAY says why ray cannot be installed on this platform (python_check.sh sets it when
+`pip install ray` fails); without ray and without that variable it fails."""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+import oscsim
+import oscsim.batch
+from conftest import CORPUS, REPO
+
+# 3 x 2 x 4 = 24 variants of two cars following each other, 10 s each (crates/batch/tests).
+GRID = REPO / "crates" / "batch" / "tests" / "files" / "grid.xosc"
+# 2 x 2 x 3 = 12 variants of esmini's cut-in, with text parameters (vehicle catalog entries) and
+# a ValueSetDistribution whose second set leaves HostVehicle unset (an empty cell).
+CUT_IN_SET = CORPUS / "esmini" / "xosc" / "cut-in_parameter_set.xosc"
+OUTPUTS = ("results.csv", "results.parquet", "report.html")
+
+
+def cli_batch(oscsim_bin: Path, dist: Path, out: Path) -> None:
+    """`oscsim batch DIST --out OUT` (exit status 0 or 1: 1 means some variant failed)."""
+    done = subprocess.run(
+        [str(oscsim_bin), "batch", str(dist), "--out", str(out), "--jobs", "2", "--quiet"],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    assert done.returncode in (0, 1), done.stderr
+
+
+def assert_same_outputs(a: Path, b: Path) -> None:
+    for name in OUTPUTS:
+        assert (a / name).read_bytes() == (b / name).read_bytes(), name
+
+
+def assert_frame_is_csv(frame, results_csv: Path) -> None:
+    """Every cell of the frame equals the CLI's cell: numbers by value, empties as missing."""
+    with results_csv.open(newline="") as f:
+        rows = list(csv.reader(f))
+    header, body = rows[0], rows[1:]
+    assert list(frame.columns) == header
+    assert len(frame) == len(body)
+    records = frame.to_dict("records")
+    for row, record in zip(body, records):
+        for name, cell in zip(header, row):
+            value = record[name]
+            missing = value is None or value is getattr(__import__("pandas"), "NA", None) or (
+                isinstance(value, float) and math.isnan(value)
+            )
+            if cell == "":
+                assert missing or value == "", (name, row)
+            elif cell in ("true", "false"):
+                assert bool(value) == (cell == "true"), (name, row)
+            else:
+                try:
+                    assert float(value) == float(cell), (name, row)
+                except (TypeError, ValueError):
+                    assert value == cell, (name, row)
+
+
+def test_local_backend_equals_cli(tmp_path: Path, oscsim_bin: Path):
+    cli_batch(oscsim_bin, GRID, tmp_path / "cli")
+    frame = oscsim.batch.run(GRID, tmp_path / "py", backend="local", jobs=2)
+    assert_same_outputs(tmp_path / "cli", tmp_path / "py")
+    assert_frame_is_csv(frame, tmp_path / "cli" / "results.csv")
+    # The grid's parameters are numbers; variant 9 is EgoSpeed 25, TargetSpeed 10, Gap 20: the
+    # gap closes at 25 − 10 = 15 m/s, contact at 20 / 15 = 1.333 s.
+    assert frame["EgoSpeed"].dtype.kind == "f"
+    row = frame[frame["variant"] == 9].iloc[0]
+    assert (row["EgoSpeed"], row["TargetSpeed"], row["Gap"]) == (25.0, 10.0, 20.0)
+    # (The first frame at or after the instant, so within one step of dt = 0.05 s after it.)
+    assert bool(row["collision"]) and 20 / 15 <= row["first_collision_time"] <= 20 / 15 + 0.05
+
+
+def test_plan_and_errors(tmp_path: Path):
+    plan = oscsim.batch.BatchPlan(GRID)
+    assert plan.variant_count == 24
+    assert plan.parameters == ["EgoSpeed", "TargetSpeed", "Gap"]
+    # The first distribution varies slowest: variant 23 is the last of each.
+    assert plan.variant(23) == {"EgoSpeed": "30", "TargetSpeed": "20", "Gap": "80"}
+    with pytest.raises(IndexError):
+        plan.run([24])
+    bad = tmp_path / "bad.xosc"
+    bad.write_text(GRID.read_text().replace('parameterName="Gap"', 'parameterName="Gapp"').replace(
+        'filepath="following.xosc"', f'filepath="{GRID.parent / "following.xosc"}"'
+    ))
+    with pytest.raises(oscsim.ScenarioError, match=r"found 'Gapp' at .*bad.xosc:\d+:\d+"):
+        oscsim.batch.run(bad, backend="ray")  # refused before Ray is asked for anything
+    with pytest.raises(ValueError, match="expected backend"):
+        oscsim.batch.run(GRID, backend="dask")
+    # Shares of different batches are refused when joined.
+    a = plan.run([0])
+    b = plan.run([1]).replace("Gap", "Other", 1)
+    with pytest.raises(oscsim.OscsimError, match="expected shards of one batch"):
+        oscsim.batch.merge_results([a, b])
+
+
+def ray_or_skip():
+    try:
+        import ray
+    except ImportError:
+        reason = os.environ.get("OSCSIM_SKIP_RAY")
+        if reason:
+            pytest.skip(reason)
+        pytest.fail("ray is not installed (pip install ray; scripts/python_check.sh does)")
+    return ray
+
+
+@pytest.mark.parametrize("dist", [GRID, CUT_IN_SET], ids=["grid", "cut-in_parameter_set"])
+def test_ray_backend_equals_cli(tmp_path: Path, oscsim_bin: Path, dist: Path):
+    ray = ray_or_skip()
+    if not dist.is_file():
+        pytest.fail(f"missing {dist} (CORPUS names the shared corpus)")
+    cli_batch(oscsim_bin, dist, tmp_path / "cli")
+    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    try:
+        # 5 tasks for 24 (or 12) variants: uneven round-robin shares, joined by variant number.
+        frame = oscsim.batch.run(dist, tmp_path / "ray", backend="ray", tasks=5, timeout=300)
+    finally:
+        ray.shutdown()
+    assert_same_outputs(tmp_path / "cli", tmp_path / "ray")
+    assert_frame_is_csv(frame, tmp_path / "cli" / "results.csv")
+    assert list(frame["variant"]) == list(range(len(frame)))
