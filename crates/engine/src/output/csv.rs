@@ -22,6 +22,8 @@ pub struct CsvWriter<W: Write> {
     header_written: bool,
     /// The frame's rows being put together.
     row: Vec<u8>,
+    /// The frame's time as its rows start it: formatted once per frame.
+    time: Vec<u8>,
 }
 
 impl<W: Write> CsvWriter<W> {
@@ -31,6 +33,7 @@ impl<W: Write> CsvWriter<W> {
             out,
             header_written: false,
             row: Vec::with_capacity(256),
+            time: Vec::with_capacity(24),
         }
     }
 
@@ -64,11 +67,13 @@ impl<W: Write> FrameSink for CsvWriter<W> {
         // formatted by `fixed` (the bytes of `{:.3}` / `{:.6}`).
         let row = &mut self.row;
         row.clear();
+        self.time.clear();
+        push_fixed(&mut self.time, frame.time, 3);
+        self.time.push(b',');
         let mut ids = itoa::Buffer::new();
         for e in frame.objects() {
             let p = e.pose;
-            push_fixed(row, frame.time, 3);
-            row.push(b',');
+            row.extend_from_slice(&self.time);
             row.extend_from_slice(ids.format(e.id).as_bytes());
             row.push(b',');
             row.extend_from_slice(field(e.name).as_bytes());

@@ -43,6 +43,11 @@ pub fn push_fixed(out: &mut Vec<u8>, x: f64, decimals: usize) {
     if x.is_sign_negative() {
         out.push(b'-');
     }
+    if a == 0.0 {
+        // Zero (most of z, pitch and roll on flat roads): "0", the point and the zeros.
+        out.extend_from_slice(&ZEROS[..decimals + usize::from(decimals > 0) + 1]);
+        return;
+    }
     let scale = POW10[decimals];
     let n = scaled_round(a, u128::from(scale));
     let mut digits = itoa::Buffer::new();
@@ -62,10 +67,36 @@ pub fn push_fixed(out: &mut Vec<u8>, x: f64, decimals: usize) {
     };
     if decimals > 0 {
         out.push(b'.');
-        let text = digits.format(frac).as_bytes();
-        out.resize(out.len() + decimals - text.len(), b'0');
-        out.extend_from_slice(text);
+        push_padded(out, frac, decimals);
     }
+}
+
+/// "0.000000000": zero with up to 9 decimals is a prefix of it.
+const ZEROS: &[u8; 11] = b"0.000000000";
+
+/// "00", "01", … "99": two digits per table look-up.
+const PAIRS: &[u8; 200] = b"0001020304050607080910111213141516171819\
+2021222324252627282930313233343536373839\
+4041424344454647484950515253545556575859\
+6061626364656667686970717273747576777879\
+8081828384858687888990919293949596979899";
+
+/// Appends `v` (below 10^`width`, `width` ≤ 9) as exactly `width` digits, zeros in front.
+#[inline]
+fn push_padded(out: &mut Vec<u8>, mut v: u64, width: usize) {
+    let mut buf = [b'0'; 9];
+    let mut end = width;
+    while end >= 2 {
+        let pair = (v % 100) as usize * 2;
+        v /= 100;
+        buf[end - 2..end].copy_from_slice(&PAIRS[pair..pair + 2]);
+        end -= 2;
+    }
+    if end == 1 {
+        // v < 10 here: the last digit.
+        buf[0] = b'0' + v as u8;
+    }
+    out.extend_from_slice(&buf[..width]);
 }
 
 /// round(a · scale) to the nearest integer, ties to even, computed exactly: a = m · 2^e with
