@@ -50,24 +50,21 @@ pub fn push_fixed(out: &mut Vec<u8>, x: f64, decimals: usize) {
     }
     let scale = POW10[decimals];
     let n = scaled_round(a, u128::from(scale));
-    let mut digits = itoa::Buffer::new();
     // Integer and fraction digits in 64 bits where the value fits (every value below 1.8e13
     // at 6 decimals): 128-bit division is several times slower.
-    let frac = match u64::try_from(n) {
-        Ok(n) => {
-            out.extend_from_slice(digits.format(n / scale).as_bytes());
-            n % scale
-        }
+    match u64::try_from(n) {
+        Ok(n) => push_number(out, n / scale, n % scale, decimals),
         Err(_) => {
+            // n ≥ 2^64 with a < 10^15 needs scale > 10^4: decimals ≥ 5 here.
             let wide = u128::from(scale);
+            let mut digits = itoa::Buffer::new();
             out.extend_from_slice(digits.format(n / wide).as_bytes());
+            out.push(b'.');
             // Below scale ≤ 10^9: fits in u64.
-            (n % wide) as u64
+            let mut frac = [b'0'; 9];
+            write_digits(&mut frac[..decimals], (n % wide) as u64);
+            out.extend_from_slice(&frac[..decimals]);
         }
-    };
-    if decimals > 0 {
-        out.push(b'.');
-        push_padded(out, frac, decimals);
     }
 }
 
@@ -81,22 +78,41 @@ const PAIRS: &[u8; 200] = b"0001020304050607080910111213141516171819\
 6061626364656667686970717273747576777879\
 8081828384858687888990919293949596979899";
 
-/// Appends `v` (below 10^`width`, `width` ≤ 9) as exactly `width` digits, zeros in front.
+/// Appends `int`, then (when `decimals` > 0) the point and `frac` as exactly `decimals`
+/// digits. The text is put together in a 32-byte block appended whole and cut back to its
+/// length: one fixed-size copy instead of a call to `memcpy` per piece.
 #[inline]
-fn push_padded(out: &mut Vec<u8>, mut v: u64, width: usize) {
-    let mut buf = [b'0'; 9];
-    let mut end = width;
+fn push_number(out: &mut Vec<u8>, int: u64, frac: u64, decimals: usize) {
+    // int ≤ 10^15 (a < FAST_LIMIT rounds to at most 10^15): at most 16 digits, and with the
+    // point and at most 9 decimals the text fits the block.
+    let width = int.checked_ilog10().map_or(1, |l| l as usize + 1);
+    let mut block = [b'0'; 32];
+    write_digits(&mut block[..width], int);
+    let len = if decimals > 0 {
+        block[width] = b'.';
+        write_digits(&mut block[width + 1..width + 1 + decimals], frac);
+        width + 1 + decimals
+    } else {
+        width
+    };
+    let start = out.len();
+    out.extend_from_slice(&block);
+    out.truncate(start + len);
+}
+
+/// Writes the low `digits.len()` decimal digits of `v` into `digits`, zeros in front.
+#[inline]
+fn write_digits(digits: &mut [u8], mut v: u64) {
+    let mut end = digits.len();
     while end >= 2 {
         let pair = (v % 100) as usize * 2;
         v /= 100;
-        buf[end - 2..end].copy_from_slice(&PAIRS[pair..pair + 2]);
+        digits[end - 2..end].copy_from_slice(&PAIRS[pair..pair + 2]);
         end -= 2;
     }
     if end == 1 {
-        // v < 10 here: the last digit.
-        buf[0] = b'0' + v as u8;
+        digits[0] = b'0' + (v % 10) as u8;
     }
-    out.extend_from_slice(&buf[..width]);
 }
 
 /// round(a · scale) to the nearest integer, ties to even, computed exactly: a = m · 2^e with
