@@ -186,29 +186,13 @@ pub fn stationary_object(
         Some(category) => (stationary_type(category)?, "MiscObject"),
         None => (StationaryType::Other, "ExternalObjectReference"),
     };
-    let [x, y, z] = info.position;
-    let [yaw, pitch, roll] = info.orientation;
-    let [length, width, height] = info.dimension;
     Ok(StationaryObject {
         id: Some(ids.id(IdKey::StationaryObject(info.name.to_string()))),
-        base: Some(BaseStationary {
-            dimension: Some(Dimension3d {
-                length: Some(length),
-                width: Some(width),
-                height: Some(height),
-            }),
-            position: Some(Vector3d {
-                x: Some(x),
-                y: Some(y),
-                z: Some(z),
-            }),
-            orientation: Some(Orientation3d {
-                roll: Some(roll),
-                pitch: Some(pitch),
-                yaw: Some(yaw),
-            }),
-            ..Default::default()
-        }),
+        base: Some(base_stationary(
+            info.position,
+            info.orientation,
+            info.dimension,
+        )),
         classification: Some(StationaryClassification {
             r#type: Some(classification as i32),
             assigned_lane_id: lanes.to_vec(),
@@ -218,6 +202,33 @@ pub fn stationary_object(
         source_reference: vec![source_reference(info.scenario_file, entity_type, info.name)],
         color_description: info.color,
     })
+}
+
+/// A `BaseStationary` of box centre `[x, y, z]`, orientation `[yaw, pitch, roll]` and
+/// dimension `[length, width, height]` (world frame).
+pub(crate) fn base_stationary(
+    [x, y, z]: [f64; 3],
+    [yaw, pitch, roll]: [f64; 3],
+    [length, width, height]: [f64; 3],
+) -> BaseStationary {
+    BaseStationary {
+        dimension: Some(Dimension3d {
+            length: Some(length),
+            width: Some(width),
+            height: Some(height),
+        }),
+        position: Some(Vector3d {
+            x: Some(x),
+            y: Some(y),
+            z: Some(z),
+        }),
+        orientation: Some(Orientation3d {
+            roll: Some(roll),
+            pitch: Some(pitch),
+            yaw: Some(yaw),
+        }),
+        ..Default::default()
+    }
 }
 
 #[cfg(test)]

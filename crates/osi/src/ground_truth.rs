@@ -13,7 +13,7 @@ use crate::error::Error;
 use crate::ids::{IdAllocator, IdKey};
 use crate::lanes::{from_network, RoadLanes};
 use crate::osi3::ground_truth::ProjFrameOffset;
-use crate::osi3::{GroundTruth, Identifier, Timestamp, Vector3d};
+use crate::osi3::{GroundTruth, Identifier, Timestamp, TrafficLight, TrafficSign, Vector3d};
 use crate::polyline::Sampling;
 use crate::rigid_body::RigidBodyState;
 use crate::version::interface_version;
@@ -170,6 +170,31 @@ impl FrameBuilder<'_> {
         Ok(id)
     }
 
+    /// Adds a traffic light bulb under the id of `key`; returns the id.
+    pub fn add_traffic_light(&mut self, key: IdKey, mut light: TrafficLight) -> Identifier {
+        let id = self.owner.ids.id(key);
+        light.id = Some(id);
+        self.gt.traffic_light.push(light);
+        id
+    }
+
+    /// Adds a traffic sign under the id of `key`; returns the id.
+    pub fn add_traffic_sign(&mut self, key: IdKey, mut sign: TrafficSign) -> Identifier {
+        let id = self.owner.ids.id(key);
+        sign.id = Some(id);
+        self.gt.traffic_sign.push(sign);
+        id
+    }
+
+    /// Whether this frame carries the static data (lanes, static traffic signs), as
+    /// `--osi-static` asks: the first frame only, or every frame.
+    pub fn carries_static_data(&self) -> bool {
+        match self.owner.static_data {
+            StaticData::First => self.owner.frames == 0,
+            StaticData::Every => true,
+        }
+    }
+
     /// The finished message: host vehicle id (if the host entity is in the frame) and,
     /// as `--osi-static` asks, the lanes.
     pub fn finish(mut self) -> GroundTruth {
@@ -180,11 +205,7 @@ impl FrameBuilder<'_> {
             .get(&IdKey::MovingObject(host_name.to_string()));
         self.gt.host_vehicle_id =
             host.filter(|h| self.gt.moving_object.iter().any(|m| m.id == Some(*h)));
-        let with_lanes = match self.owner.static_data {
-            StaticData::First => self.owner.frames == 0,
-            StaticData::Every => true,
-        };
-        if with_lanes {
+        if self.carries_static_data() {
             self.gt.lane = self.owner.lanes.lanes.clone();
             self.gt.lane_boundary = self.owner.lanes.lane_boundaries.clone();
         }

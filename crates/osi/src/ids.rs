@@ -1,5 +1,5 @@
 //! Identifiers for a GroundTruth: ASAM OSI 3.8 requires every `id` of a moving object,
-//! stationary object, lane and lane boundary to be unique within a GroundTruth
+//! stationary object, lane, lane boundary, traffic light and traffic sign to be unique within a GroundTruth
 //! (rule `is_globally_unique`), and a tool reading a trace expects an object to keep its
 //! id from frame to frame.
 //!
@@ -38,6 +38,22 @@ pub enum IdKey {
         lane_section: usize,
         /// OpenDRIVE lane id whose outer border this is; 0 for the centre lane.
         lane: i32,
+    },
+    /// One bulb of an OpenDRIVE signal shown as `TrafficLight`s.
+    TrafficLight {
+        /// OpenDRIVE road id.
+        road: String,
+        /// 0-based index of the signal in the road's `<signals>`.
+        signal: usize,
+        /// 0-based index of the bulb, from the top.
+        bulb: usize,
+    },
+    /// An OpenDRIVE signal shown as a `TrafficSign`.
+    TrafficSign {
+        /// OpenDRIVE road id.
+        road: String,
+        /// 0-based index of the signal in the road's `<signals>`.
+        signal: usize,
     },
 }
 

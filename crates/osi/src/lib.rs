@@ -12,6 +12,8 @@
 //!   polylines sampled from the exact road model by [`polyline`].
 //! - [`classification`], [`color`]: OpenSCENARIO categories and colours → OSI.
 //! - [`lights`]: OpenSCENARIO vehicle light states → `VehicleClassification.LightState`.
+//! - [`traffic_signals`]: OpenDRIVE signals → `TrafficLight` (one per bulb, state from the
+//!   engine's signal controllers) and `TrafficSign`; [`signal_types`] the type tables.
 //! - [`entity`]: a scenario entity → `MovingObject` / `StationaryObject` with the OSI rules.
 //! - [`sink`]: the engine→OSI mapping, one GroundTruth per engine frame
 //!   ([`sink::GroundTruthSink`]), and the engine frame sinks built on it: [`sink::OsiSink`]
@@ -71,8 +73,10 @@ pub mod osi3;
 pub mod polyline;
 pub mod rigid_body;
 pub mod schema;
+pub mod signal_types;
 pub mod sink;
 pub mod trace;
+pub mod traffic_signals;
 pub mod version;
 
 pub use error::{Error, ErrorKind};

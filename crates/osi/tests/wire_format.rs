@@ -133,6 +133,8 @@ fn schema_is_proto2_with_imports_and_no_source_info() {
         "osi_common.proto",
         "osi_lane.proto",
         "osi_object.proto",
+        "osi_trafficlight.proto",
+        "osi_trafficsign.proto",
     ] {
         assert!(names.contains(&file), "{file}");
     }
@@ -150,6 +152,8 @@ fn schema_is_proto2_with_imports_and_no_source_info() {
         ("host_vehicle_id", 3),
         ("stationary_object", 4),
         ("moving_object", 5),
+        ("traffic_sign", 6),
+        ("traffic_light", 7),
         ("lane_boundary", 9),
         ("lane", 10),
         ("proj_string", 14),

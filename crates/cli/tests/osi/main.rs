@@ -10,5 +10,6 @@ mod lights;
 mod mapping;
 mod options;
 mod trace;
+mod traffic_signals;
 mod trailer;
 mod visibility;

@@ -61,10 +61,17 @@ pub struct Signal {
     pub value: Option<f64>,
     /// `unit`.
     pub unit: String,
-    /// `hOffset` (rad).
+    /// `hOffset` (rad): heading offset relative to `orientation` (to the reference line when
+    /// `orientation` is "none").
     pub h_offset: f64,
+    /// `pitch` (rad).
+    pub pitch: f64,
+    /// `roll` (rad).
+    pub roll: f64,
     /// `width` (m), if given.
     pub width: Option<f64>,
-    /// `height` (m), if given.
+    /// `height` (m), if given: measured up from the bottom edge (at `zOffset`).
     pub height: Option<f64>,
+    /// `length` (m), the signal's thickness, if given.
+    pub length: Option<f64>,
 }

@@ -305,7 +305,10 @@ fn read_signal(r: &Reader, node: Node) -> Result<Signal, Error> {
         value: r.maybe_f64(node, "value")?,
         unit: text("unit"),
         h_offset: r.opt_f64(node, "hOffset", 0.0)?,
+        pitch: r.opt_f64(node, "pitch", 0.0)?,
+        roll: r.opt_f64(node, "roll", 0.0)?,
         width: r.maybe_f64(node, "width")?,
         height: r.maybe_f64(node, "height")?,
+        length: r.maybe_f64(node, "length")?,
     })
 }

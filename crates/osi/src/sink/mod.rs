@@ -22,6 +22,9 @@
 //!   `model_reference` from `model3d`, `color_description` from the entity's colour,
 //!   `host_vehicle_id` from [`SinkOptions::host`] (default the entity named `Ego`, else none),
 //!   lanes and boundaries in the first frame or every frame ([`SinkOptions::static_data`]).
+//! - OpenDRIVE signals: `traffic_light` (one per bulb, mode from the engine's live signal
+//!   states, `Frame::signals`) and `traffic_sign`, by [`crate::traffic_signals`]; their ids
+//!   come after the first frame's entities'.
 //! - A vehicle towing a trailer (`TrailerHitch` connected by the scenario's `Trailer` or a
 //!   `ConnectTrailerAction`, OpenSCENARIO 1.3 §7.2.2.6) gets
 //!   `vehicle_classification.has_trailer = true` and `trailer_id` = the OSI id of the
@@ -59,6 +62,7 @@ use crate::lights::{LightMode, VehicleLight};
 use crate::osi3::{ColorDescription, GroundTruth, Identifier};
 use crate::polyline::Sampling;
 use crate::rigid_body::RigidBodyState;
+use crate::traffic_signals::TrafficSignals;
 use crate::Error;
 
 /// How the ground truth is made.
@@ -94,6 +98,8 @@ pub struct GroundTruthSink {
     warnings: Vec<String>,
     /// The host vehicle's entity name.
     host: String,
+    /// The road network's signals, placed.
+    signals: TrafficSignals,
 }
 
 impl GroundTruthSink {
@@ -119,7 +125,10 @@ impl GroundTruthSink {
                 ));
             }
         }
+        let (signals, signal_warnings) = TrafficSignals::new(&network, map_reference.as_deref());
+        warnings.extend(signal_warnings);
         Ok(GroundTruthSink {
+            signals,
             builder,
             network,
             scenario_file: source.file.display().to_string(),
@@ -172,6 +181,7 @@ impl GroundTruthSink {
                 }
             })?;
         }
+        self.signals.add_to(&mut gt, |id| frame.signals.state(id));
         Ok(gt.finish())
     }
 }
