@@ -48,6 +48,8 @@ pub struct Options {
     /// The driver model of the scenario's vehicles without an ObjectController
     /// ([`engine::EngineConfig::vehicle_model`]).
     pub vehicle_model: Option<engine::runtime::TrafficModel>,
+    /// Vehicles stop at red lights ([`engine::EngineConfig::stop_at_red_lights`]).
+    pub stop_at_red_lights: bool,
     /// The entity measured against the others (metrics.rs).
     pub host: String,
     /// Worker threads (at least 1).
@@ -69,6 +71,7 @@ impl Default for Options {
             max_time: engine::runtime::DEFAULT_MAX_TIME,
             traffic_model: None,
             vehicle_model: None,
+            stop_at_red_lights: false,
             host: "Ego".into(),
             jobs: 1,
             shard: Shard::ALL,
@@ -217,6 +220,7 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         seed: variant_seed(options.seed, v),
         traffic_model: options.traffic_model,
         vehicle_model: options.vehicle_model,
+        stop_at_red_lights: options.stop_at_red_lights,
     };
     // The variant from the scenario's files kept at the first load and the road network read
     // once for the whole batch: no file is read per variant.

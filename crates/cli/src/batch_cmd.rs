@@ -98,6 +98,7 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
         max_time: args.step.max_time,
         traffic_model: args.step.config().traffic_model,
         vehicle_model: args.step.config().vehicle_model,
+        stop_at_red_lights: args.step.stop_at_red_lights,
         host: args.host.clone(),
         jobs: args
             .jobs

@@ -48,6 +48,11 @@ pub struct StepArgs {
     /// becomes the desired speed: `idm` or `mobil`, default parameters.
     #[arg(long, value_enum, value_name = "MODEL")]
     pub vehicle_model: Option<TrafficModelArg>,
+    /// Vehicles the default controller moves stop before vehicle traffic lights (OpenDRIVE
+    /// type 1000001) showing red and drive on when they turn (docs/signals.md). Off by
+    /// default: signals do not change the motion.
+    #[arg(long)]
+    pub stop_at_red_lights: bool,
 }
 
 impl StepArgs {
@@ -60,6 +65,7 @@ impl StepArgs {
             seed: self.seed,
             traffic_model: self.traffic_model.map(TrafficModelArg::model),
             vehicle_model: self.vehicle_model.map(TrafficModelArg::model),
+            stop_at_red_lights: self.stop_at_red_lights,
         }
     }
 }

@@ -86,7 +86,11 @@ pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
     for (i, e) in world.entities.iter_mut().enumerate() {
         match merged.get(i).copied().flatten() {
             Some(m) if e.placed => apply(net, e, world.controllers.of_mut(i), m, dt),
-            _ => move_entity(net, e, dt, None),
+            _ => {
+                // Run option stop_at_red_lights (signals/red_light.rs); off: nothing.
+                world.signals.govern_speed(net, i, e, dt);
+                move_entity(net, e, dt, None);
+            }
         }
     }
 }

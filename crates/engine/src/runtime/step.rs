@@ -108,6 +108,10 @@ impl Engine {
         let mut built = build(scenario, network)?;
         built.world.traffic.seed = config.seed;
         built.world.traffic.model = config.traffic_model;
+        built
+            .world
+            .signals
+            .set_stop_at_red_lights(config.stop_at_red_lights);
         let mut host_events = Vec::new();
         if let Some(model) = config.vehicle_model {
             crate::traffic::equip_scenario_vehicles(&mut built.world, model, &mut host_events)?;

@@ -6,6 +6,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `schedule` | which phase each controller is in at a time: cycling, reference and delay, a phase set by an action |
+//! | `red_light` | run option `stop_at_red_lights`: default-controlled vehicles stop at red vehicle lights |
 //!
 //! [`Signals`] keeps the live state: each controller's phase and each signal's state (the
 //! strings of the scenario, e.g. `"off;off;on"`). When a controller enters a phase, the phase's
@@ -15,6 +16,7 @@
 //! an event record (`kind` `trafficSignalController` with the phases, `trafficSignal` with the
 //! states), so a run's log shows when each light switched.
 
+mod red_light;
 mod schedule;
 
 use std::collections::BTreeMap;
@@ -23,6 +25,7 @@ use scenario::{SourcePos, TrafficSignalController};
 
 use crate::output::EventRecord;
 use crate::runtime::RuntimeError;
+use red_light::{shows_red, RedLights};
 use schedule::Schedule;
 
 /// One controller's names and states, in the scenario's order.
@@ -42,6 +45,8 @@ pub struct Signals {
     current: Vec<Option<usize>>,
     /// Signal id → state.
     states: BTreeMap<String, String>,
+    /// Run option `stop_at_red_lights` and the vehicles it holds.
+    red_lights: RedLights,
 }
 
 impl Signals {
@@ -64,7 +69,30 @@ impl Signals {
             schedule,
             current: vec![None; controllers.len()],
             states: BTreeMap::new(),
+            red_lights: RedLights::default(),
         })
+    }
+
+    /// Turns run option `stop_at_red_lights` on or off (red_light.rs).
+    pub(crate) fn set_stop_at_red_lights(&mut self, on: bool) {
+        self.red_lights.enabled = on;
+    }
+
+    /// With `stop_at_red_lights` on: sets the speed of default-controlled vehicle `e` (entity
+    /// index `i`) for its coming move of `dt` s before red vehicle lights (red_light.rs).
+    pub(crate) fn govern_speed(
+        &mut self,
+        net: &opendrive::RoadNetwork,
+        i: usize,
+        e: &mut crate::runtime::Entity,
+        dt: f64,
+    ) {
+        if !self.red_lights.enabled {
+            return;
+        }
+        let states = &self.states;
+        let red = |id: &str| states.get(id).is_some_and(|s| shows_red(s));
+        self.red_lights.govern(net, red, i, e, dt);
     }
 
     /// The current state of signal `id`, if any was set.

@@ -23,6 +23,7 @@ mod global;
 mod lateral;
 mod lateral_esmini;
 mod override_values;
+mod red_light;
 mod signals_controllers;
 mod speed_action;
 mod speed_limits;
