@@ -13,10 +13,17 @@
 //! | `c1 and c2`, `c1 or c2` | one ConditionGroup, two ConditionGroups |
 //! | `@e` of an `emit e` | StoryboardElementStateCondition: an emitting phase's startTransition |
 //! | `@e` of `event e is c` | the condition c |
+//! | `every(p, offset: o)` in an `on` handler | SimulationTimeEvery (oscsim's periodic condition): the step reaching o + k·p, k ≥ 0 |
+//! | `every(p, offset: o)` in a `wait`/`until` (also through `@e`) | its first occurrence: o after the phase's start |
+//!
+//! `every` follows §7.3.10.4: occurrences at each multiple of the period from the start of the
+//! *event context* (an `on` handler's: the scenario's start; a `wait`'s or `until`'s: the
+//! phase's start; a declared event's: that of the place it is used), all shifted by `offset`;
+//! a point between two steps moves to the next step.
 //!
 //! Conditions measure the world as it stood at the step's start (the engine's trigger rule).
 
-use dsl::semantics::hir::{BinOp, Expr, ExprKind};
+use dsl::semantics::hir::{Arg, BinOp, Expr, ExprKind, Span};
 use scenario::{
     ByValueCondition, Condition, ConditionEdge, ConditionGroup, ConditionKind, CoordinateSystem,
     DistanceMeasure, EntityCondition, RelativeDistanceType, Rule, StoryboardElementState,
@@ -36,6 +43,49 @@ pub(crate) struct Names<'n> {
     pub entity: &'n dyn Fn(&str) -> Option<String>,
     /// An event name to the condition groups of its occurrence (`None`: no such event).
     pub event: EventLookup<'n>,
+    /// The condition groups of an `every(…)` in the event context of the condition.
+    pub every: &'n dyn Fn(Every, Span) -> Result<Vec<ConditionGroup>, Error>,
+}
+
+/// The arguments of `every(period [, offset: o])` (s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Every {
+    /// Above 0.
+    pub period: f64,
+    /// 0 or more (0 when not given: the first occurrence is the start of the event context).
+    pub offset: f64,
+}
+
+/// Reads `every(…)`'s arguments: a period above 0 s and an offset of 0 s or more.
+pub(crate) fn every_args(ctx: &Ctx<'_>, span: Span, args: &[Arg]) -> Result<Every, Error> {
+    let time = |a: &Arg, positive: bool| -> Result<f64, Error> {
+        match ctx.eval(&a.value)? {
+            Val::Num(x) if x.is_finite() && (x > 0.0 || (!positive && x == 0.0)) => Ok(x),
+            _ => Err(ctx.files.err(
+                K::Value,
+                a.value.span,
+                if positive {
+                    "expected a period above 0 s in every(…), found another value"
+                } else {
+                    "expected an offset of 0 s or more in every(…), found another value"
+                },
+            )),
+        }
+    };
+    let period = match args.first() {
+        Some(a) => time(a, true)?,
+        None => {
+            return Err(ctx
+                .files
+                .err(K::Value, span, "expected a period in every(…), found none"))
+        }
+    };
+    let offset = args
+        .get(1)
+        .map(|a| time(a, false))
+        .transpose()?
+        .unwrap_or(0.0);
+    Ok(Every { period, offset })
 }
 
 /// A trigger for a DSL condition.
@@ -125,11 +175,9 @@ fn groups(
                 }],
             }])
         }
-        ExprKind::Temporal(n, _) if n.text == "every" => Err(ctx.files.err(
-            K::Condition,
-            e.span,
-            "expected an event the engine can observe, found every(…) (periodic events are not run yet)",
-        )),
+        ExprKind::Temporal(n, args) if n.text == "every" => {
+            (names.every)(every_args(ctx, e.span, args)?, e.span)
+        }
         _ => Err(unsupported(ctx, e)),
     }
 }
@@ -268,6 +316,21 @@ pub(crate) fn act_state(
             storyboard_element_type: StoryboardElementType::Act,
             storyboard_element_ref: act.to_string(),
             state,
+        }),
+        pos,
+    }
+}
+
+/// `every(…)` counted from the start of the run: SimulationTimeEvery at the planner's step.
+pub(crate) fn every_from_start(every: Every, step: f64, pos: scenario::SourcePos) -> Condition {
+    Condition {
+        name: format!("every {} offset {}", every.period, every.offset),
+        condition_edge: ConditionEdge::None,
+        delay: 0.0,
+        kind: ConditionKind::ByValue(ByValueCondition::SimulationTimeEvery {
+            period: every.period,
+            offset: every.offset,
+            step,
         }),
         pos,
     }

@@ -226,11 +226,12 @@ pub fn lower_program(
     // Events the scenario declares with a condition (`event e is c`), and the events `on`
     // handlers emit, each with the condition that makes it occur.
     let mut events = Vec::new();
+    let mut handlers = 0;
     for m in &decl.members {
         match m {
             Member::Event(e) => {
                 if let Some(spec) = &e.spec {
-                    events.push((e.name.text.clone(), spec, false));
+                    events.push((e.name.text.clone(), spec, None));
                 }
             }
             // `m.set_map_file(f)` names the road network (see `map_file`); other modifiers of
@@ -248,9 +249,13 @@ pub fn lower_program(
             // `on e: emit f`: f occurs whenever e does; a `call` runs a method for its side
             // effects, which the runtime has none of (methods are expressions or external).
             Member::On(spec, body, on_span) => {
+                let index = handlers;
+                handlers += 1;
                 for b in body {
                     match &b.behavior {
-                        Behavior::Emit(name, _, _) => events.push((name.text.clone(), spec, true)),
+                        Behavior::Emit(name, _, span) => {
+                            events.push((name.text.clone(), spec, Some((index, *span))))
+                        }
                         Behavior::Call(_, span) => {
                             return Err(LoadError::Plan(files.err(
                                 ErrorKind::Unsupported,

@@ -7,6 +7,8 @@
 //! | a phase | an Act named by the phase's path; StartTrigger: its start (none at 0 s); StopTrigger: its end |
 //! | a phase lasting until its end | a ManeuverGroup `PATH/hold` whose Event waits on a condition that is never true, so only the StopTrigger ends the Act (its `stopTransition` is the phase's end line) |
 //! | an actor's actions in a phase | a ManeuverGroup `PATH/ACTOR` with one Event per action (starting with the Act, or at an absolute time) |
+//! | `emit e` (a phase) | in its Act, a ManeuverGroup `PATH/emit` whose Event `PATH/emit e` runs a CustomCommandAction (type `emit`, content `e`): one `customCommand` line in the event log per emission |
+//! | `on c: emit e` (the i-th `on` of the scenario) | an Act `on.i` from the start until the root phase's end, with the same group whose Event starts at each occurrence of c (maximumExecutionCount unbounded) |
 //! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step) |
 //! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
 //!
@@ -20,7 +22,7 @@ use scenario::{
     Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
     EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup, Position,
     PositionKind, Priority, Private, PrivateAction, RoadNetwork, Rule, Scenario, ScenarioObject,
-    SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics, Trigger,
+    SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics, Trigger, UserDefinedAction,
 };
 
 use crate::condition::sim_time;
@@ -86,6 +88,14 @@ pub(crate) fn lower(
             } else {
                 Vec::new()
             };
+            if let Some(e) = &ph.emit {
+                groups.push(emit_group(
+                    &ph.path,
+                    vec![(e.clone(), None, pos.clone())],
+                    1,
+                    pos.clone(),
+                ));
+            }
             let mut actors: Vec<&str> = Vec::new();
             for a in &ph.actions {
                 if !actors.contains(&a.entity.as_str()) {
@@ -149,7 +159,29 @@ pub(crate) fn lower(
                 pos,
             }
         })
-        .collect();
+        .collect::<Vec<Act>>();
+    // `on` handlers: one Act each, running until the root phase (written last) ends.
+    let run_end = plan.phases.last().and_then(|root| trigger_of(&root.end));
+    let mut acts = acts;
+    let mut handlers: Vec<(&str, Vec<Emission>)> = Vec::new();
+    for h in &plan.handlers {
+        let emit = (h.event.clone(), Some(h.trigger.clone()), files.pos(h.span));
+        match handlers.iter_mut().find(|(act, _)| *act == h.act) {
+            Some((_, emits)) => emits.push(emit),
+            None => handlers.push((&h.act, vec![emit])),
+        }
+    }
+    for (act, emits) in handlers {
+        // Each entry was created with one emission.
+        let pos = emits[0].2.clone();
+        acts.push(Act {
+            name: act.to_string(),
+            maneuver_groups: vec![emit_group(act, emits, u32::MAX, pos.clone())],
+            start_trigger: None,
+            stop_trigger: run_end.clone(),
+            pos,
+        });
+    }
     Scenario {
         path: file.to_path_buf(),
         file_header: FileHeader {
@@ -197,10 +229,57 @@ fn trigger_of(w: &When) -> Option<Trigger> {
     })
 }
 
+/// An emitted event's name, its Event's start trigger (`None`: with the Act) and position.
+type Emission = (String, Option<Trigger>, SourcePos);
+
+/// The group of element `path` that logs emissions: one Event `PATH/emit E` per emitted event
+/// E, running a CustomCommandAction (type `emit`, content E) which the engine records as one
+/// `customCommand` line of the event log. An Event starts on its trigger (`None`: with the
+/// Act) up to `count` times.
+fn emit_group(path: &str, emits: Vec<Emission>, count: u32, pos: SourcePos) -> ManeuverGroup {
+    let name = format!("{path}/emit");
+    let events = emits
+        .into_iter()
+        .map(|(event, start_trigger, pos)| Event {
+            name: format!("{name} {event}"),
+            priority: Priority::Parallel,
+            maximum_execution_count: count,
+            actions: vec![Action {
+                name: format!("{name} {event}"),
+                kind: ActionKind::UserDefined(UserDefinedAction {
+                    command_type: "emit".into(),
+                    content: event,
+                }),
+                pos: pos.clone(),
+            }],
+            start_trigger,
+            pos,
+        })
+        .collect();
+    actorless_group(name, events, pos)
+}
+
 /// The group that keeps a phase's Act running until its StopTrigger: an Event whose start
 /// condition (simulation time below 0 s) never holds.
 fn hold_group(path: &str, pos: SourcePos) -> ManeuverGroup {
     let name = format!("{path}/hold");
+    let event = Event {
+        name: name.clone(),
+        priority: Priority::Parallel,
+        maximum_execution_count: 1,
+        actions: Vec::new(),
+        start_trigger: Some(Trigger {
+            condition_groups: vec![ConditionGroup {
+                conditions: vec![sim_time(0.0, Rule::LessThan, pos.clone())],
+            }],
+        }),
+        pos: pos.clone(),
+    };
+    actorless_group(name, vec![event], pos)
+}
+
+/// A ManeuverGroup `name` with no actors and one Maneuver `name` holding `events`.
+fn actorless_group(name: String, events: Vec<Event>, pos: SourcePos) -> ManeuverGroup {
     ManeuverGroup {
         name: name.clone(),
         maximum_execution_count: 1,
@@ -209,19 +288,8 @@ fn hold_group(path: &str, pos: SourcePos) -> ManeuverGroup {
             entity_refs: Vec::new(),
         },
         maneuvers: vec![Maneuver {
-            name: name.clone(),
-            events: vec![Event {
-                name: name.clone(),
-                priority: Priority::Parallel,
-                maximum_execution_count: 1,
-                actions: Vec::new(),
-                start_trigger: Some(Trigger {
-                    condition_groups: vec![ConditionGroup {
-                        conditions: vec![sim_time(0.0, Rule::LessThan, pos.clone())],
-                    }],
-                }),
-                pos: pos.clone(),
-            }],
+            name,
+            events,
             catalog: None,
             pos: pos.clone(),
         }],

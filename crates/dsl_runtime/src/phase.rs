@@ -8,6 +8,7 @@ use dsl::semantics::hir::{
     Behavior, CompositionOp, Expr, ExprKind, Labeled, ModifierApp, Span, WithMember,
 };
 
+use crate::condition::every_args;
 use crate::error::{Error, ErrorKind as K};
 use crate::value::{bind, Ctx, Val};
 
@@ -21,7 +22,7 @@ pub(crate) struct Phase<'p> {
     /// What it is.
     pub kind: Kind<'p>,
     /// Its own duration (s): `duration:` argument (a range drawn from the seed), or
-    /// `wait elapsed(d)`.
+    /// `wait elapsed(d)`, or the first occurrence of `every(…)` in a `wait`/`until`.
     pub duration: Option<f64>,
     /// `until` condition, or the condition of a `wait`.
     pub until: Option<&'p Expr>,
@@ -149,6 +150,11 @@ pub(crate) fn build<'p>(
                     })?;
                     (Some(non_negative(ctx, &d.value)?), None)
                 }
+                // `wait every(p, offset: o)`: the wait ends at the first occurrence, o after
+                // its start (§7.3.10.4: the event context of a wait starts with the wait).
+                ExprKind::Temporal(n, args) if n.text == "every" => {
+                    (Some(every_args(ctx, e.span, args)?.offset), None)
+                }
                 _ => (None, Some(e)),
             };
             Ok(Phase {
@@ -210,6 +216,19 @@ pub(crate) fn build<'p>(
                                     ))
                                 }
                             };
+                            duration = Some(duration.map_or(d, |x: f64| x.min(d)));
+                        }
+                        // `until every(p, offset: o)`: the first occurrence, o after the
+                        // invocation's start, ends it; without an offset that is its start.
+                        ExprKind::Temporal(n, a) if n.text == "every" => {
+                            let d = every_args(ctx, e.span, a)?.offset;
+                            if d <= 0.0 {
+                                return Err(ctx.files.err(
+                                    K::Value,
+                                    e.span,
+                                    "expected an offset above 0 s in until every(…), found none (the first occurrence is the start of the phase, which would end it at once)",
+                                ));
+                            }
                             duration = Some(duration.map_or(d, |x: f64| x.min(d)));
                         }
                         _ => until = Some(e),

@@ -44,7 +44,7 @@ use dsl::semantics::hir::{Expr, Span};
 use scenario::{ConditionGroup, PrivateAction, StoryboardElementState, Trigger, Vehicle};
 
 use crate::actors::{self, ActorKind};
-use crate::condition::{act_state, sim_time, trigger, Names};
+use crate::condition::{act_state, every_from_start, sim_time, trigger, Every, Names};
 use crate::error::{Error, ErrorKind as K};
 use crate::modifier::{read, At, Mod, ModKind};
 use crate::phase::{Kind, Phase};
@@ -132,6 +132,8 @@ pub(crate) struct PhasePlan {
     pub actions: Vec<Planned>,
     /// The phase lasts until its end (all but `emit`, an instant).
     pub hold: bool,
+    /// The event an `emit` phase emits.
+    pub emit: Option<String>,
 }
 
 /// An action of a phase.
@@ -169,6 +171,41 @@ pub(crate) struct Plan {
     pub entities: Vec<Entity>,
     /// The phases, children before their composition.
     pub phases: Vec<PhasePlan>,
+    /// The emissions of the scenario's `on` handlers.
+    pub handlers: Vec<HandlerPlan>,
+}
+
+/// One `emit e` of an `on` handler: a repeatable 1.x Event that starts at each occurrence of
+/// the handler's event, so that each emission is logged.
+#[derive(Debug, Clone)]
+pub(crate) struct HandlerPlan {
+    /// `on.0`: the handler's index among the scenario's `on` directives.
+    pub act: String,
+    /// The emitted event's name.
+    pub event: String,
+    /// When the handler's event occurs.
+    pub trigger: Trigger,
+    /// The `emit` directive.
+    pub span: Span,
+}
+
+/// An event's condition: (event name, condition, for an `on` handler's emit the handler's index
+/// and the emit's span).
+pub(crate) type EventSpec<'a> = (String, &'a Expr, Option<(usize, Span)>);
+
+/// Where an event specification is used: what its event context starts with (ASAM
+/// OpenSCENARIO DSL 2.1 §7.3.10.4).
+#[derive(Debug, Clone, Copy)]
+enum EventCtx<'w> {
+    /// An `on` handler of the scenario: the start of the run.
+    Run,
+    /// The `wait` or `until` of a phase: the phase's start.
+    Phase {
+        path: &'w str,
+        span: Span,
+        start: &'w When,
+        until: bool,
+    },
 }
 
 /// Options of planning.
@@ -197,8 +234,8 @@ struct Planner<'c, 'a> {
     /// Event name → the paths of the phases that emit it.
     emits: HashMap<String, Vec<(String, Span)>>,
     /// Event name → the conditions that make it occur: its declared one (`event e is c`) and
-    /// those of the `on c: emit e` handlers.
-    events: HashMap<String, Vec<&'a Expr>>,
+    /// those of the `on c: emit e` handlers (true: a handler's, whose event context is the run).
+    events: HashMap<String, Vec<(&'a Expr, bool)>>,
     /// Leaf path → its `along(…)` routes, with when each holds.
     alongs: HashMap<String, Vec<(At, Along)>>,
     /// Free one-lane route → its lane and the first actor along it.
@@ -211,12 +248,12 @@ struct Planner<'c, 'a> {
 }
 
 /// Plans `root` on `road`; `events` are the scenario's event conditions (name, condition,
-/// whether an `on` handler gives it).
+/// and for an `on` handler's emit the handler's index and the emit's span).
 pub(crate) fn plan<'a>(
     ctx: &Ctx<'a>,
     road: &PlanRoad<'a>,
     root: &Phase<'_>,
-    events: Vec<(String, &'a Expr, bool)>,
+    events: Vec<EventSpec<'a>>,
     settings: Settings,
 ) -> Result<Plan, Error> {
     let mut p = Planner {
@@ -247,9 +284,12 @@ pub(crate) fn plan<'a>(
     });
     let mut handlers = Vec::new();
     for (name, spec, handler) in events {
-        p.events.entry(name).or_default().push(spec);
-        if handler {
-            handlers.push(spec);
+        p.events
+            .entry(name.clone())
+            .or_default()
+            .push((spec, handler.is_some()));
+        if let Some((i, span)) = handler {
+            handlers.push((format!("on.{i}"), name, spec, span));
         }
     }
     // Actors, in the order the tree names them, and each one's first phase.
@@ -362,9 +402,16 @@ pub(crate) fn plan<'a>(
         .iter()
         .map(|(l, m)| (l.path.clone(), m))
         .collect();
-    // An `on` handler's event is checked even when nothing waits on what it emits.
-    for spec in handlers {
-        p.condition(spec, 0)?;
+    // An `on` handler's event context starts with the run (the scenario's start); its event
+    // is translated (so checked) even when nothing waits on what it emits.
+    let mut handler_plans = Vec::new();
+    for (act, event, spec, span) in handlers {
+        handler_plans.push(HandlerPlan {
+            act,
+            event,
+            trigger: p.condition(spec, 0, EventCtx::Run)?,
+            span,
+        });
     }
     let end = p.schedule(root, When::At(0.0), None, None, None, &mods)?;
     if end == When::Never && !settings.open_end {
@@ -385,6 +432,7 @@ pub(crate) fn plan<'a>(
         road: road.id().to_string(),
         entities: p.entities,
         phases: p.phases,
+        handlers: handler_plans,
     })
 }
 
@@ -461,8 +509,27 @@ impl Planner<'_, '_> {
         &mut self.entities[i].track
     }
 
-    /// A DSL condition as a trigger; `depth` counts nested event definitions.
-    fn condition(&self, e: &Expr, depth: usize) -> Result<Trigger, Error> {
+    /// The moment `d` s after phase `path` (written at `span`) starts at `start`.
+    fn after(&self, path: &str, span: Span, start: &When, d: f64) -> When {
+        match start {
+            When::At(t) => When::At(t + d),
+            _ => When::Dyn(Trigger {
+                condition_groups: vec![ConditionGroup {
+                    conditions: vec![act_state(
+                        path,
+                        StoryboardElementState::RunningState,
+                        // The Act's stop trigger is first sampled one step after it starts.
+                        (d - self.settings.dt).max(0.0),
+                        self.ctx.files.pos(span),
+                    )],
+                }],
+            }),
+        }
+    }
+
+    /// A DSL condition as a trigger, used in event context `ectx`; `depth` counts nested event
+    /// definitions (a declared event's context is that of the place it is used).
+    fn condition(&self, e: &Expr, depth: usize, ectx: EventCtx<'_>) -> Result<Trigger, Error> {
         let index = &self.index;
         let entity = |path: &str| index.contains_key(path).then(|| path.to_string());
         let event = |name: &str| -> Option<Result<Vec<ConditionGroup>, Error>> {
@@ -484,7 +551,7 @@ impl Planner<'_, '_> {
                     )],
                 })
                 .collect();
-            for spec in specs.into_iter().flatten() {
+            for (spec, handler) in specs.into_iter().flatten() {
                 if depth > 16 {
                     return Some(Err(self.ctx.files.err(
                         K::Condition,
@@ -492,12 +559,38 @@ impl Planner<'_, '_> {
                         "expected events defined without a cycle, found one defined through itself",
                     )));
                 }
-                match self.condition(spec, depth + 1) {
+                // A handler's event counts from the run's start wherever it is waited on; a
+                // declared event takes the context of the place it is used.
+                let ectx = if *handler { EventCtx::Run } else { ectx };
+                match self.condition(spec, depth + 1, ectx) {
                     Ok(t) => groups.extend(t.condition_groups),
                     Err(e) => return Some(Err(e)),
                 }
             }
             Some(Ok(groups))
+        };
+        let every = |ev: Every, span: Span| -> Result<Vec<ConditionGroup>, Error> {
+            match ectx {
+                EventCtx::Run => Ok(vec![ConditionGroup {
+                    conditions: vec![every_from_start(
+                        ev,
+                        self.settings.dt,
+                        self.ctx.files.pos(span),
+                    )],
+                }]),
+                // Only the first occurrence can end a wait or an until.
+                EventCtx::Phase { until: true, .. } if ev.offset <= 0.0 => Err(self.ctx.files.err(
+                    K::Value,
+                    span,
+                    "expected an offset above 0 s in every(…) of an until, found none (the first occurrence is the start of the phase, which would end it at once)",
+                )),
+                EventCtx::Phase {
+                    path,
+                    span: at,
+                    start,
+                    ..
+                } => Ok(self.after(path, at, start, ev.offset).groups()),
+            }
         };
         trigger(
             self.ctx,
@@ -505,6 +598,7 @@ impl Planner<'_, '_> {
             &Names {
                 entity: &entity,
                 event: &event,
+                every: &every,
             },
         )
     }
@@ -513,23 +607,16 @@ impl Planner<'_, '_> {
     fn own_end(&self, p: &Phase<'_>, start: &When) -> Result<Option<When>, Error> {
         let mut end = None;
         if let Some(d) = p.duration {
-            end = Some(match start {
-                When::At(t) => When::At(t + d),
-                _ => When::Dyn(Trigger {
-                    condition_groups: vec![ConditionGroup {
-                        conditions: vec![act_state(
-                            &p.path,
-                            StoryboardElementState::RunningState,
-                            // The Act's stop trigger is first sampled one step after it starts.
-                            (d - self.settings.dt).max(0.0),
-                            self.ctx.files.pos(p.span),
-                        )],
-                    }],
-                }),
-            });
+            end = Some(self.after(&p.path, p.span, start, d));
         }
         if let Some(u) = p.until {
-            let w = When::Dyn(self.condition(u, 0)?);
+            let ectx = EventCtx::Phase {
+                path: &p.path,
+                span: p.span,
+                start,
+                until: !matches!(p.kind, Kind::Wait),
+            };
+            let w = When::Dyn(self.condition(u, 0, ectx)?);
             end = Some(match end {
                 Some(e) => e.or(w),
                 None => w,
@@ -583,10 +670,11 @@ impl Planner<'_, '_> {
                     end: end.clone(),
                     actions,
                     hold: true,
+                    emit: None,
                 });
                 return Ok(end);
             }
-            Kind::Emit(_) => {
+            Kind::Emit(event) => {
                 // An instant: its Act starts and, with nothing to do, completes in its step.
                 self.phases.push(PhasePlan {
                     path: p.path.clone(),
@@ -595,6 +683,7 @@ impl Planner<'_, '_> {
                     end: When::Never,
                     actions: Vec::new(),
                     hold: false,
+                    emit: Some(event.clone()),
                 });
                 return Ok(start);
             }
@@ -752,6 +841,7 @@ impl Planner<'_, '_> {
             end: end.clone(),
             actions: Vec::new(),
             hold: true,
+            emit: None,
         });
         Ok(end)
     }

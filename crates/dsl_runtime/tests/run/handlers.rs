@@ -1,7 +1,7 @@
 //! `on` handlers (ASAM OpenSCENARIO DSL 2.1 §7.3.10): `emit` in a handler makes the event occur
 //! whenever the handler's event does; `call` is an error. Expectations in the scenario files.
 
-use crate::support::run;
+use crate::support::{run, DT};
 
 /// Event times are step times.
 const T_TOL: f64 = 1e-9;
@@ -18,18 +18,99 @@ fn on_handler_emits_an_event_others_wait_on() {
     );
     assert!((r.at(1.10, "npc").s - 25.5).abs() < 1e-6);
     assert!((r.at(2.10, "npc").s - 25.5).abs() < 1e-6);
+    // The handler's emission is in the event log, once (speed stays above 15 m/s: no new rise).
+    let quick = r.emissions("on.0/emit quick", "quick");
+    assert!(
+        quick.len() == 1 && (quick[0] - 1.10).abs() < T_TOL,
+        "{quick:?}"
+    );
 }
 
 #[test]
-fn call_or_every_in_a_handler_is_an_error() {
+fn call_in_a_handler_is_an_error() {
     crate::along::refused(
         "err_on_call",
         "expected `emit` in an `on` handler, found `call`",
         "8:9",
     );
+}
+
+/// `on every(2s, offset: 1s): emit tick`: tick at 1, 3, 5 s (and 7 s, after the run); the third
+/// wait on it ends at 1 + 2·2 = 5 s (on_every.osc).
+#[test]
+fn on_every_emits_at_each_period_from_the_offset() {
+    let r = run("on_every", 0, None);
+    let (s1, e1) = r.phase("do.ticks.w1");
+    let (s2, e2) = r.phase("do.ticks.w2");
+    let (s3, e3) = r.phase("do.ticks.w3");
+    assert!(
+        s1.abs() < T_TOL && (e1 - 1.0).abs() < T_TOL,
+        "w1 [{s1}, {e1}]"
+    );
+    assert!(
+        (s2 - 1.0).abs() <= DT + T_TOL && (e2 - 3.0).abs() < T_TOL,
+        "w2 [{s2}, {e2}]"
+    );
+    assert!(
+        (s3 - 3.0).abs() <= DT + T_TOL && (e3 - 5.0).abs() < T_TOL,
+        "w3 [{s3}, {e3}]"
+    );
+    assert!((r.at(5.0, "ego").s - 70.0).abs() < 1e-6);
+    // The event log: one emit line per emission, with the emitter and the event's name.
+    let ticks = r.emissions("on.0/emit tick", "tick");
+    assert_eq!(ticks.len(), 3, "{ticks:?}");
+    for (t, want) in ticks.iter().zip([1.0, 3.0, 5.0]) {
+        assert!((t - want).abs() < T_TOL, "tick at {t}, expected {want}");
+    }
+    let done = r.emissions("do.ticks.emit_done/emit done", "done");
+    assert_eq!(done.len(), 1, "{done:?}");
+    assert!((done[0] - 5.0).abs() <= DT + T_TOL, "done at {}", done[0]);
+    // The wait after the emit starts on the emit's completion, seen a step later: [5.05, 6.55].
+    let (s, e) = r.phase("do.ticks.4");
+    assert!(
+        (s - 5.05).abs() < T_TOL && (e - 6.55).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+}
+
+/// every(…) in wait and until counts from the phase's start; only its first occurrence
+/// matters there (wait_every.osc).
+#[test]
+fn every_in_wait_and_until_ends_at_the_first_occurrence() {
+    let r = run("wait_every", 0, None);
+    let (s, e) = r.phase("do.0");
+    assert!(
+        s.abs() < T_TOL && (e - 2.0).abs() < T_TOL,
+        "do.0 [{s}, {e}]"
+    );
+    let (s, e) = r.phase("do.1");
+    assert!(
+        (s - 2.0).abs() < T_TOL && (e - 3.5).abs() < T_TOL,
+        "do.1 [{s}, {e}]"
+    );
+    let (s, _) = r.phase("do.2");
+    assert!((s - 3.5).abs() < T_TOL, "do.2 starts at {s}");
+    let (s, e) = r.phase("do.3");
+    assert!(
+        (s - 3.5).abs() < T_TOL && (e - 4.0).abs() < T_TOL,
+        "do.3 [{s}, {e}]"
+    );
+    let (s, _) = r.phase("do.4");
+    assert!((s - 4.0).abs() <= DT + T_TOL, "do.4 starts at {s}");
+    assert!((r.at(2.0, "ego").s - 40.0).abs() < 1e-6);
+    assert!((r.at(4.0, "ego").s - 60.0).abs() < 1e-6);
+}
+
+#[test]
+fn every_errors_name_the_argument() {
     crate::along::refused(
-        "err_on_every",
-        "found every(…) (periodic events are not run yet)",
-        "6:8",
+        "err_until_every",
+        "expected an offset above 0 s in until every(…)",
+        "8:15",
+    );
+    crate::along::refused(
+        "err_every_period",
+        "expected a period above 0 s in every(…)",
+        "6:14",
     );
 }

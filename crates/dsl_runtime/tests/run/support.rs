@@ -24,6 +24,8 @@ pub struct Run {
     pub frames: Vec<(f64, Vec<Obj>)>,
     /// (time, element, transition).
     pub events: Vec<(f64, String, String)>,
+    /// The event log's `customCommand` lines: (time, element, type, content).
+    pub commands: Vec<(f64, String, String, String)>,
 }
 
 struct Frames(Vec<(f64, Vec<Obj>)>);
@@ -47,13 +49,30 @@ impl FrameSink for Frames {
     }
 }
 
-struct Events(Vec<(f64, String, String)>);
+struct Events(
+    Vec<(f64, String, String)>,
+    Vec<(f64, String, String, String)>,
+);
 
 impl EventSink for Events {
     fn event(&mut self, record: &EventRecord) -> Result<(), engine::SinkError> {
-        if let EventRecord::Transition(t) = record {
-            self.0
-                .push((t.time, t.name.clone(), format!("{:?}", t.transition)));
+        match record {
+            EventRecord::Transition(t) => {
+                self.0
+                    .push((t.time, t.name.clone(), format!("{:?}", t.transition)))
+            }
+            EventRecord::CustomCommand {
+                time,
+                element,
+                command_type,
+                content,
+            } => self.1.push((
+                *time,
+                element.clone(),
+                command_type.clone(),
+                content.clone(),
+            )),
+            _ => {}
         }
         Ok(())
     }
@@ -118,7 +137,7 @@ pub fn run_scenario(
     let mut engine =
         Engine::new(scenario, network, config).unwrap_or_else(|e| panic!("{name}: {e}"));
     let mut frames = Frames(Vec::new());
-    let mut events = Events(Vec::new());
+    let mut events = Events(Vec::new(), Vec::new());
     loop {
         match engine.step(&mut frames, &mut events) {
             Ok(Some(_)) => break,
@@ -129,6 +148,7 @@ pub fn run_scenario(
     Run {
         frames: frames.0,
         events: events.0,
+        commands: events.1,
     }
 }
 
@@ -163,6 +183,16 @@ impl Run {
             .or_else(|| self.when(path, "End"))
             .unwrap_or_else(|| panic!("{path} never ended"));
         (start, end)
+    }
+
+    /// The times of the event log's emissions of `event` (CustomCommandAction type `emit`)
+    /// by element `by`.
+    pub fn emissions(&self, by: &str, event: &str) -> Vec<f64> {
+        self.commands
+            .iter()
+            .filter(|(_, el, ty, content)| el == by && ty == "emit" && content == event)
+            .map(|(t, ..)| *t)
+            .collect()
     }
 
     /// The time of the last frame.

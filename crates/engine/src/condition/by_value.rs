@@ -16,6 +16,8 @@
 //! * TrafficSignalCondition, TrafficSignalControllerCondition: the signal's state / the
 //!   controller's phase equals the one named (whitespace around it ignored); false for an
 //!   unknown signal or controller.
+//! * SimulationTimeEvery (oscsim extension for the DSL's `every(…)`, no XML form): true in the
+//!   step whose interval (t − step, t] reaches offset + k·period, k ≥ 0.
 
 use scenario::{ByValueCondition, SourcePos, StoryboardElementState, StoryboardElementType};
 
@@ -90,11 +92,35 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
         } => Ok(ctx
             .traffic_signal_controller_phase(traffic_signal_controller_ref)
             .is_some_and(|p| p.trim() == phase.trim())),
+        ByValueCondition::SimulationTimeEvery {
+            period,
+            offset,
+            step,
+        } => Ok(every_reached(
+            ctx.simulation_time(),
+            *period,
+            *offset,
+            *step,
+        )),
         _ => Err(err(ConditionErrorKind::Unsupported {
             expected: "a ByValueCondition of OpenSCENARIO 1.3",
             found: "another kind",
         })),
     }
+}
+
+/// Whether the step interval (t − step, t] reaches a trigger point offset + k·period, k ≥ 0
+/// (`SimulationTimeEvery`). Times within 1e-9 s of a trigger point count as reaching it, so
+/// that a step time summed in floating point (2.9999999999) still fires at 3 s and fires once.
+fn every_reached(t: f64, period: f64, offset: f64, step: f64) -> bool {
+    const EPS: f64 = 1e-9;
+    if !(period > 0.0 && step > 0.0 && t.is_finite()) || t + EPS < offset {
+        return false;
+    }
+    // The last trigger point at or before t (within EPS).
+    let k = ((t - offset + EPS) / period).floor();
+    let last = offset + k * period;
+    last > t - step + EPS
 }
 
 /// The storyboard's element kind and XSD literal for a `storyboardElementType`.
@@ -147,4 +173,43 @@ fn element_state<C: ConditionContext + ?Sized>(
         StoryboardElementState::SkipTransition => happened(Transition::Skip),
         _ => false,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::every_reached;
+
+    /// every(2 s, offset: 1 s) at a step of 0.05 s: trigger points 1, 3, 5 s; the steps are
+    /// summed as the engine sums them (0.05 is not exact in binary), and exactly the steps at
+    /// 1, 3 and 5 s (± rounding) hold.
+    #[test]
+    fn every_holds_once_per_period_at_the_step_reaching_it() {
+        let mut t = 0.0;
+        let mut hits = Vec::new();
+        for _ in 0..120 {
+            if every_reached(t, 2.0, 1.0, 0.05) {
+                hits.push(t);
+            }
+            t += 0.05;
+        }
+        assert_eq!(hits.len(), 3, "{hits:?}");
+        for (h, want) in hits.iter().zip([1.0, 3.0, 5.0]) {
+            assert!((h - want).abs() < 1e-9, "{h} vs {want}");
+        }
+    }
+
+    /// A trigger point between two steps (every 0.3 s at a 0.2 s step: 0, 0.3, 0.6, 0.9, 1.2)
+    /// moves to the next step (0, 0.4, 0.6, 1.0, 1.2); without an offset the first is at 0.
+    #[test]
+    fn a_point_between_steps_fires_at_the_next_step() {
+        let hits: Vec<f64> = (0..7)
+            .map(|i| f64::from(i) * 0.2)
+            .filter(|t| every_reached(*t, 0.3, 0.0, 0.2))
+            .collect();
+        let want = [0.0, 0.4, 0.6, 1.0, 1.2];
+        assert_eq!(hits.len(), want.len(), "{hits:?}");
+        for (h, w) in hits.iter().zip(want) {
+            assert!((h - w).abs() < 1e-9, "{h} vs {w}");
+        }
+    }
 }

@@ -258,4 +258,17 @@ pub enum ByValueCondition {
         /// Value as text.
         value: String,
     },
+    /// A periodic event on the simulation clock: ASAM OpenSCENARIO DSL 2.1 §7.3.10.4
+    /// `every(period, offset: offset)` counted from the start of the run. An oscsim extension
+    /// with no XML form (the DSL runtime writes it; the XML reader never does): it holds in the
+    /// step whose interval (t − step, t] reaches a trigger point offset + k·period, k ≥ 0 (the
+    /// standard moves a trigger point that falls between steps to the next step).
+    SimulationTimeEvery {
+        /// The period (s, above 0).
+        period: f64,
+        /// The first trigger point (s, 0 or more).
+        offset: f64,
+        /// The engine's step the scenario was planned for (s, above 0).
+        step: f64,
+    },
 }
