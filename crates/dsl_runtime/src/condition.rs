@@ -15,6 +15,7 @@
 //! | `@e` of `event e is c` | the condition c |
 //! | `every(p, offset: o)` in an `on` handler | SimulationTimeEvery (oscsim's periodic condition): the step reaching o + k·p, k ≥ 0 |
 //! | `every(p, offset: o)` in a `wait`/`until` (also through `@e`) | its first occurrence: o after the phase's start |
+//! | `elapsed(d)` in an `on` handler or an event declaration | from d after the event context's start on: SimulationTime ≥ d (an `on`), d after the phase's start (a `wait`/`until`) |
 //!
 //! `every` follows §7.3.10.4: occurrences at each multiple of the period from the start of the
 //! *event context* (an `on` handler's: the scenario's start; a `wait`'s or `until`'s: the
@@ -43,8 +44,18 @@ pub(crate) struct Names<'n> {
     pub entity: &'n dyn Fn(&str) -> Option<String>,
     /// An event name to the condition groups of its occurrence (`None`: no such event).
     pub event: EventLookup<'n>,
-    /// The condition groups of an `every(…)` in the event context of the condition.
-    pub every: &'n dyn Fn(Every, Span) -> Result<Vec<ConditionGroup>, Error>,
+    /// The condition groups of an `every(…)` or `elapsed(…)` in the event context of the
+    /// condition.
+    pub timed: &'n dyn Fn(Timed, Span) -> Result<Vec<ConditionGroup>, Error>,
+}
+
+/// An event condition on the time since the start of the event context (§7.3.10.4).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Timed {
+    /// `every(…)`.
+    Every(Every),
+    /// `elapsed(d)`: true from d on (s, 0 or more).
+    Elapsed(f64),
 }
 
 /// The arguments of `every(period [, offset: o])` (s).
@@ -176,7 +187,20 @@ fn groups(
             }])
         }
         ExprKind::Temporal(n, args) if n.text == "every" => {
-            (names.every)(every_args(ctx, e.span, args)?, e.span)
+            (names.timed)(Timed::Every(every_args(ctx, e.span, args)?), e.span)
+        }
+        ExprKind::Temporal(n, args) if n.text == "elapsed" => {
+            let d = match args.first().map(|a| ctx.eval(&a.value)).transpose()? {
+                Some(Val::Num(d)) if d.is_finite() && d >= 0.0 => d,
+                _ => {
+                    return Err(ctx.files.err(
+                        K::Value,
+                        e.span,
+                        "expected a time of 0 s or more in elapsed(…), found another value",
+                    ))
+                }
+            };
+            (names.timed)(Timed::Elapsed(d), e.span)
         }
         _ => Err(unsupported(ctx, e)),
     }

@@ -44,7 +44,7 @@ use dsl::semantics::hir::{Expr, Span};
 use scenario::{ConditionGroup, PrivateAction, StoryboardElementState, Trigger, Vehicle};
 
 use crate::actors::{self, ActorKind};
-use crate::condition::{act_state, every_from_start, sim_time, trigger, Every, Names};
+use crate::condition::{act_state, every_from_start, sim_time, trigger, Names, Timed};
 use crate::error::{Error, ErrorKind as K};
 use crate::modifier::{read, At, Mod, ModKind};
 use crate::phase::{Kind, Phase};
@@ -569,27 +569,38 @@ impl Planner<'_, '_> {
             }
             Some(Ok(groups))
         };
-        let every = |ev: Every, span: Span| -> Result<Vec<ConditionGroup>, Error> {
+        let timed = |tm: Timed, span: Span| -> Result<Vec<ConditionGroup>, Error> {
+            // The first moment the event occurs, after the context's start.
+            let first = match tm {
+                Timed::Every(ev) => ev.offset,
+                Timed::Elapsed(d) => d,
+            };
             match ectx {
                 EventCtx::Run => Ok(vec![ConditionGroup {
-                    conditions: vec![every_from_start(
-                        ev,
-                        self.settings.dt,
-                        self.ctx.files.pos(span),
-                    )],
+                    conditions: vec![match tm {
+                        Timed::Every(ev) => {
+                            every_from_start(ev, self.settings.dt, self.ctx.files.pos(span))
+                        }
+                        // True from d on (§7.3.10.4), so a handler on it emits at every step.
+                        Timed::Elapsed(d) => sim_time(
+                            d,
+                            scenario::Rule::GreaterOrEqual,
+                            self.ctx.files.pos(span),
+                        ),
+                    }],
                 }]),
                 // Only the first occurrence can end a wait or an until.
-                EventCtx::Phase { until: true, .. } if ev.offset <= 0.0 => Err(self.ctx.files.err(
+                EventCtx::Phase { until: true, .. } if first <= 0.0 => Err(self.ctx.files.err(
                     K::Value,
                     span,
-                    "expected an offset above 0 s in every(…) of an until, found none (the first occurrence is the start of the phase, which would end it at once)",
+                    "expected a time above 0 s in the event of an until, found 0 s (its first occurrence is the start of the phase, which would end it at once)",
                 )),
                 EventCtx::Phase {
                     path,
                     span: at,
                     start,
                     ..
-                } => Ok(self.after(path, at, start, ev.offset).groups()),
+                } => Ok(self.after(path, at, start, first).groups()),
             }
         };
         trigger(
@@ -598,7 +609,7 @@ impl Planner<'_, '_> {
             &Names {
                 entity: &entity,
                 event: &event,
-                every: &every,
+                timed: &timed,
             },
         )
     }

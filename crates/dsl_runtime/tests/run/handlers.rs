@@ -101,6 +101,32 @@ fn every_in_wait_and_until_ends_at_the_first_occurrence() {
     assert!((r.at(4.0, "ego").s - 60.0).abs() < 1e-6);
 }
 
+/// elapsed(…) declared as an event (the wait's context) and in an on handler (the run's, true at
+/// every step from then on) (elapsed_event.osc).
+#[test]
+fn elapsed_in_events_counts_from_the_context_start() {
+    let r = run("elapsed_event", 0, None);
+    let (s, e) = r.phase("do.1");
+    assert!(
+        (s - 1.5).abs() < T_TOL && (e - 2.5).abs() < T_TOL,
+        "do.1 [{s}, {e}]"
+    );
+    let (s, e) = r.phase("do.2");
+    for (t, want) in [(s, 2.5), (e, 3.5)] {
+        assert!((t - want).abs() < T_TOL, "do.2 [{s}, {e}]");
+    }
+    assert!((r.at(1.5, "ego").s - 35.0).abs() < 1e-6);
+    let past = r.emissions("on.0/emit past", "past");
+    assert_eq!(past.len(), 10, "{past:?}");
+    for (i, t) in past.iter().enumerate() {
+        let want = 3.0 + DT * i as f64;
+        assert!(
+            (t - want).abs() < T_TOL,
+            "emission {i} at {t}, expected {want}"
+        );
+    }
+}
+
 #[test]
 fn every_errors_name_the_argument() {
     crate::along::refused(
