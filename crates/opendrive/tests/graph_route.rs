@@ -219,3 +219,42 @@ fn handles_resolve_ids_once_and_agree_with_the_string_api() {
     assert!((on_road.s - 50.0).abs() < 1e-9 && (on_road.offset - 0.25).abs() < 1e-9);
     assert_eq!(on_road.lane_id, -1);
 }
+
+/// `RoadNetwork::joined_roads` on common_junction_creator0.xodr, read from the file by hand:
+/// roads 1, 2, 3 end at junction 100; connections (incoming → connecting, contactPoint):
+/// 3 → 100 end, 1 → 100 start, 1 → 101 start, 2 → 102 start; the connecting roads' links:
+/// 100 = 1 end … 3 start, 101 = 1 end … 2 start, 102 = 2 start … 3 start.
+#[test]
+fn roads_joined_at_a_junction_end_by_connections_and_road_links() {
+    let net = junction_file();
+    let joined = |road: &str, dir: Direction| -> Vec<(String, Direction)> {
+        let h = net.road_handle(road).expect("road");
+        net.joined_roads(h, dir)
+            .into_iter()
+            .map(|(r, d)| (net.roads()[r.index()].id.clone(), d))
+            .collect()
+    };
+    let pairs = |v: &[(&str, Direction)]| -> Vec<(String, Direction)> {
+        v.iter().map(|&(r, d)| (r.to_owned(), d)).collect()
+    };
+    use Direction::{Backward, Forward};
+    // Road 1's end: 100 (first found from 100's own predecessor link), 101; once each.
+    assert_eq!(
+        joined("1", Forward),
+        pairs(&[("100", Forward), ("101", Forward)])
+    );
+    // Road 2's start: 101 only by its successor link (entered at its end), 102 by connection 3.
+    assert_eq!(
+        joined("2", Backward),
+        pairs(&[("101", Backward), ("102", Forward)])
+    );
+    // Road 3's start: 100 by connection 0 (contactPoint end), 102 by its successor link.
+    assert_eq!(
+        joined("3", Backward),
+        pairs(&[("100", Backward), ("102", Backward)])
+    );
+    // A connecting road's end: its road link, road 2 entered at its start.
+    assert_eq!(joined("101", Forward), pairs(&[("2", Forward)]));
+    // Road 1's start links to nothing.
+    assert_eq!(joined("1", Backward), pairs(&[]));
+}

@@ -7,13 +7,13 @@
 //! road at its contact point). Dijkstra's algorithm over (road, direction of travel) nodes,
 //! with the length of every road passed as the edge weight.
 //!
-//! A junction end is read as `opendrive`'s lane graph reads it (`query/graph.rs`,
-//! `through_junction`), at road level: the connections whose incoming road this is, the
-//! connections whose connecting (or linked) road this is, back to their incoming road, and
-//! the connecting roads whose own road link names this road's end. Files often write a
-//! connection from one side only; without the last two, a path that leaves a road backwards
-//! into a junction (from the road a junction leads to, back towards the road it came from)
-//! had no way through, so the distance from A to B existed and the one from B to A did not.
+//! Which roads join a road's end is `opendrive`'s [`RoadNetwork::joined_roads`], the road-level
+//! reading of the links the lane graph (`query/graph.rs`) reads per lane: the road link, and
+//! through a junction the connections whose incoming road this is, the connections whose
+//! connecting (or linked) road this is, back to their incoming road, and the connecting roads
+//! whose own road link names this road's end. Files often write a connection from one side
+//! only; without the last two, a path that leaves a road backwards into a junction had no way
+//! through, so the distance from A to B existed and the one from B to A did not.
 //!
 //! Why not `opendrive`'s search (`RoadNetwork::route_by`, `query/route_search.rs`): its nodes
 //! are lanes driven in their driving direction, it moves only along lane links and over
@@ -22,14 +22,13 @@
 //! a one-way road driven backwards, or where roads are linked but their lanes are not (a lane
 //! that ends at the road's end). Served by that search it would lose those answers; made to
 //! give them, the search would need road nodes beside lane nodes and moves against the driving
-//! direction, which no route means. What the two share is the reading of road and junction
-//! links at a road's end; a road-level "roads joined at this end" in `opendrive` could serve
-//! both `neighbours` here and the lane graph there.
+//! direction, which no route means. What the two share, the reading of road and junction
+//! links at a road's end, is `joined_roads`.
 
 use std::cmp::Ordering;
 use std::collections::{BinaryHeap, HashMap};
 
-use opendrive::{ContactPoint, ElementType, Real, RoadLink, RoadNetwork};
+use opendrive::{Direction, Real, RoadHandle, RoadNetwork};
 
 /// A path from one road position to another along roads.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -95,7 +94,7 @@ pub(crate) fn shortest_road_path(
         } else {
             from_s
         };
-        for (next, next_forward) in neighbours(network, &index, start, forward) {
+        for (next, next_forward) in neighbours(network, start, forward) {
             relax(
                 &mut best,
                 &mut first,
@@ -139,7 +138,7 @@ pub(crate) fn shortest_road_path(
             continue;
         }
         let started_forward = first[road][forward as usize];
-        for (next, next_forward) in neighbours(network, &index, road, forward) {
+        for (next, next_forward) in neighbours(network, road, forward) {
             relax(
                 &mut best,
                 &mut first,
@@ -188,97 +187,21 @@ fn relax(
 
 /// Roads entered when leaving road `road` travelling `forward` (at its end) or backward (at
 /// its start), with the direction of travel on each (see the module doc for junctions).
-pub(crate) fn neighbours(
-    network: &RoadNetwork,
-    index: &HashMap<&str, usize>,
-    road: usize,
-    forward: bool,
-) -> Vec<(usize, bool)> {
-    let r = &network.roads()[road];
-    let link = if forward {
-        &r.links.successor
+/// The roads joined to the end of road `road` (an index of `network.roads()`) reached
+/// travelling `forward`, as (road index, entered at its start): opendrive's
+/// [`RoadNetwork::joined_roads`].
+pub(crate) fn neighbours(network: &RoadNetwork, road: usize, forward: bool) -> Vec<(usize, bool)> {
+    let dir = if forward {
+        Direction::Forward
     } else {
-        &r.links.predecessor
+        Direction::Backward
     };
-    // Entering a road at its start means travelling towards +s on it.
-    let entered = |cp: ContactPoint| cp == ContactPoint::Start;
-    let mut out = Vec::new();
-    match link {
-        Some(RoadLink {
-            element_type: ElementType::Road,
-            element_id,
-            contact_point,
-        }) => {
-            if let Some(&i) = index.get(element_id.as_str()) {
-                out.push((i, entered(contact_point.unwrap_or(ContactPoint::Start))));
-            }
-        }
-        Some(RoadLink {
-            element_type: ElementType::Junction,
-            element_id,
-            ..
-        }) => {
-            if let Some(j) = network.junction(element_id) {
-                let our_end = if forward {
-                    ContactPoint::End
-                } else {
-                    ContactPoint::Start
-                };
-                let mut add = |n: (usize, bool)| {
-                    if !out.contains(&n) {
-                        out.push(n);
-                    }
-                };
-                for c in &j.connections {
-                    // Written from this side: this road is the incoming road.
-                    if c.incoming_road == r.id {
-                        if let Some(&i) = index.get(c.connecting_road.as_str()) {
-                            add((i, entered(c.contact_point)));
-                        }
-                    }
-                    // Written from the other side: this road is the connecting (or linked)
-                    // road, left at the end the connection names; back to the incoming road,
-                    // entered at the end that touches the junction.
-                    if c.connecting_road == r.id && c.contact_point == our_end {
-                        if let Some((i, inc)) = index
-                            .get(c.incoming_road.as_str())
-                            .map(|&i| (i, &network.roads()[i]))
-                        {
-                            let touches = |l: &Option<RoadLink>| {
-                                l.as_ref().is_some_and(|l| {
-                                    l.element_type == ElementType::Junction && l.element_id == j.id
-                                })
-                            };
-                            if touches(&inc.links.successor) {
-                                add((i, false));
-                            } else if touches(&inc.links.predecessor) {
-                                add((i, true));
-                            }
-                        }
-                    }
-                    // A connecting road whose own link names this road's end.
-                    if let Some(&ci) = index.get(c.connecting_road.as_str()) {
-                        let conn = &network.roads()[ci];
-                        let joins_us = |l: &Option<RoadLink>| {
-                            l.as_ref().is_some_and(|l| {
-                                l.element_type == ElementType::Road
-                                    && l.element_id == r.id
-                                    && l.contact_point.map_or(true, |cp| cp == our_end)
-                            })
-                        };
-                        if joins_us(&conn.links.predecessor) {
-                            add((ci, true));
-                        }
-                        if joins_us(&conn.links.successor) {
-                            add((ci, false));
-                        }
-                    }
-                }
-            }
-        }
-        None => {}
-    }
-    out
+    // Road indices come from `network.roads()`, whose handles are u32 (opendrive::RoadHandle).
+    network
+        .joined_roads(RoadHandle(road as u32), dir)
+        .into_iter()
+        .map(|(h, d)| (h.index(), d == Direction::Forward))
+        .collect()
 }
 
 #[cfg(test)]
@@ -334,7 +257,7 @@ mod tests {
         let roads = net.roads();
         let index = road_indices(&net);
         let ids = |road: &str, forward: bool| {
-            let mut v: Vec<(&str, bool)> = neighbours(&net, &index, index[road], forward)
+            let mut v: Vec<(&str, bool)> = neighbours(&net, index[road], forward)
                 .into_iter()
                 .map(|(i, f)| (roads[i].id.as_str(), f))
                 .collect();

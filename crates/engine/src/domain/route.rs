@@ -103,17 +103,14 @@ impl Route {
                     network.driving_direction(h) == Direction::Forward
                 }
                 _ => match (previous, elements.get(i + 1)) {
-                    (Some((p, pf)), _) => neighbours(network, &index, p, pf)
+                    (Some((p, pf)), _) => neighbours(network, p, pf)
                         .into_iter()
                         .find(|&(n, _)| n == road)
                         .map_or(true, |(_, f)| f),
                     (None, Some(next)) => {
                         let next = road_index(next)?;
-                        let reaches = |f| {
-                            neighbours(network, &index, road, f)
-                                .iter()
-                                .any(|&(n, _)| n == next)
-                        };
+                        let reaches =
+                            |f| neighbours(network, road, f).iter().any(|&(n, _)| n == next);
                         reaches(true) || !reaches(false)
                     }
                     (None, None) => true,

@@ -154,6 +154,79 @@ impl RoadNetwork {
         out
     }
 
+    /// The roads joined to the end of road `road` reached travelling `dir` (its successor end
+    /// forward, its predecessor end backward), each with the direction of travel on it
+    /// (`Forward`: entered at its start), in a fixed order without repeats. Road level: lanes
+    /// and driving directions are not looked at (the lane graph, [`RoadNetwork::successors`],
+    /// reads the same links per lane). The road link (OpenDRIVE 1.8 §10.3; a missing
+    /// `contactPoint` is the start), or through a junction (§10.6–10.7), connection by
+    /// connection: the connecting road of a connection whose incoming road this is; the
+    /// incoming road of a connection whose connecting road this is, entered at this end
+    /// (connections written from the other side); a connecting road whose own road link names
+    /// this end.
+    pub fn joined_roads(&self, road: RoadHandle, dir: Direction) -> Vec<(RoadHandle, Direction)> {
+        let ri = road.index();
+        let entered = |cp: ContactPoint| match cp {
+            ContactPoint::Start => Direction::Forward,
+            ContactPoint::End => Direction::Backward,
+        };
+        let (link, our_end) = match dir {
+            Direction::Forward => (self.topology.links[ri][1], ContactPoint::End),
+            Direction::Backward => (self.topology.links[ri][0], ContactPoint::Start),
+        };
+        let mut out: Vec<(RoadHandle, Direction)> = Vec::new();
+        match link {
+            Some(Link::Road(next, cp)) => {
+                out.push((RoadHandle(next), entered(cp.unwrap_or(ContactPoint::Start))));
+            }
+            Some(Link::Junction(ji)) => {
+                let mut add = |n: (RoadHandle, Direction)| {
+                    if !out.contains(&n) {
+                        out.push(n);
+                    }
+                };
+                let (j, resolved) = (
+                    &self.junctions[ji as usize],
+                    &self.topology.connections[ji as usize],
+                );
+                let here = Some(road.0);
+                for (c, rc) in j.connections.iter().zip(resolved) {
+                    if let (true, Some(ci)) = (rc.incoming == here, rc.connecting) {
+                        add((RoadHandle(ci), entered(c.contact_point)));
+                    }
+                    if let (true, true, Some(ii)) = (
+                        rc.connecting == here,
+                        c.contact_point == our_end,
+                        rc.incoming,
+                    ) {
+                        let touches = |l: Option<Link>| l == Some(Link::Junction(ji));
+                        let [pred, succ] = self.topology.links[ii as usize];
+                        if touches(succ) {
+                            add((RoadHandle(ii), Direction::Backward));
+                        } else if touches(pred) {
+                            add((RoadHandle(ii), Direction::Forward));
+                        }
+                    }
+                    if let Some(ci) = rc.connecting {
+                        let joins_us = |l: Option<Link>| {
+                            matches!(l, Some(Link::Road(r, cp))
+                                if r == road.0 && cp.map_or(true, |cp| cp == our_end))
+                        };
+                        let [pred, succ] = self.topology.links[ci as usize];
+                        if joins_us(pred) {
+                            add((RoadHandle(ci), Direction::Forward));
+                        }
+                        if joins_us(succ) {
+                            add((RoadHandle(ci), Direction::Backward));
+                        }
+                    }
+                }
+            }
+            None => {}
+        }
+        out
+    }
+
     /// Lanes of the roads of junction `ji` joined to the end of lane `h` that is reached
     /// travelling `dir`: from the junction's `<laneLink>`s whose `incomingRoad` is the road,
     /// from those whose connecting/linked road is the road (read backwards), and from the
