@@ -89,4 +89,4 @@ pub use runtime::{
     Engine, EngineConfig, EntityId, EntityKind, RuntimeError, RuntimeErrorKind, StageCounters,
     StopReason, Visibility,
 };
-pub use snapshot::{EntityState, EnvironmentState, ScenarioSource};
+pub use snapshot::{Clock, EntityState, EnvironmentState, ScenarioSource};

@@ -18,7 +18,7 @@ use crate::domain::{BoundingBox, Color, Vector3};
 use crate::output::EntityFrame;
 use crate::runtime::{ControllerOverrides, Engine, EntityId, EntityKind, Visibility};
 
-pub use crate::actions::EnvironmentState;
+pub use crate::actions::{Clock, EnvironmentState};
 
 /// One entity in the scene at one moment: what a frame carries, owned.
 #[derive(Debug, Clone, PartialEq)]

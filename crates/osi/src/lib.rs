@@ -14,6 +14,8 @@
 //! - [`lights`]: OpenSCENARIO vehicle light states → `VehicleClassification.LightState`.
 //! - [`traffic_signals`]: OpenDRIVE signals → `TrafficLight` (one per bulb, state from the
 //!   engine's signal controllers) and `TrafficSign`; [`signal_types`] the type tables.
+//! - [`environment`]: the scenario's Environment (weather, sun, fog, time of day) →
+//!   `EnvironmentalConditions`, OSI's bands.
 //! - [`entity`]: a scenario entity → `MovingObject` / `StationaryObject` with the OSI rules.
 //! - [`sink`]: the engine→OSI mapping, one GroundTruth per engine frame
 //!   ([`sink::GroundTruthSink`]), and the engine frame sinks built on it: [`sink::OsiSink`]
@@ -64,6 +66,7 @@
 pub mod classification;
 pub mod color;
 pub mod entity;
+pub mod environment;
 mod error;
 pub mod ground_truth;
 pub mod ids;

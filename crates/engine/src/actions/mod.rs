@@ -33,7 +33,7 @@ use scenario::{
 };
 
 pub(crate) use appearance::Appearances;
-pub use environment::EnvironmentState;
+pub use environment::{Clock, EnvironmentState};
 pub(crate) use lane_change::{abandon as lane_change_abandon, target_lane};
 pub use override_controller::ControllerOverrides;
 pub(crate) use speed::target_speed;

@@ -46,4 +46,4 @@ pub use registry::UserValueRegistry;
 pub use road_state::END_OF_ROAD_TOLERANCE;
 pub use rule::{compare, EQUAL_TOLERANCE};
 pub use state::{ConditionState, ConditionStates};
-pub(crate) use time_of_day::parse_date_time;
+pub(crate) use time_of_day::parse_zoned_date_time;

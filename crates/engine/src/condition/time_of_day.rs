@@ -9,6 +9,12 @@
 
 /// Seconds since 1970-01-01T00:00:00Z of an xsd:dateTime, `None` if `text` is not one.
 pub(crate) fn parse_date_time(text: &str) -> Option<f64> {
+    parse_zoned_date_time(text).map(|(utc, _)| utc)
+}
+
+/// Seconds since 1970-01-01T00:00:00Z of an xsd:dateTime and its zone's offset from UTC (s; 0
+/// for `Z` or no zone), `None` if `text` is not one.
+pub(crate) fn parse_zoned_date_time(text: &str) -> Option<(f64, i64)> {
     let text = text.trim();
     let (date, rest) = text.split_once('T')?;
     let mut d = date.splitn(3, '-');
@@ -39,7 +45,10 @@ pub(crate) fn parse_date_time(text: &str) -> Option<f64> {
         return None;
     }
     let days = days_from_civil(year, month, day);
-    Some((days * 86_400 + hour * 3600 + minute * 60 - zone_seconds) as f64 + second)
+    Some((
+        (days * 86_400 + hour * 3600 + minute * 60 - zone_seconds) as f64 + second,
+        zone_seconds,
+    ))
 }
 
 /// Days from 1970-01-01 to the Gregorian date (y, m, d) (H. Hinnant, "chrono-Compatible
@@ -68,6 +77,10 @@ mod tests {
         let t = 11_017.0 * 86_400.0 + 12.0 * 3600.0 + 30.0 * 60.0 + 15.5;
         assert_eq!(parse_date_time("2000-03-01T12:30:15.5Z"), Some(t));
         assert_eq!(parse_date_time("2000-03-01T14:30:15.5+02:00"), Some(t));
+        assert_eq!(
+            parse_zoned_date_time("2000-03-01T09:00:15.5-03:30"),
+            Some((t, -12_600))
+        );
         assert_eq!(parse_date_time("2000-13-01T00:00:00"), None);
         assert_eq!(parse_date_time("noon"), None);
         assert_eq!(parse_date_time("2000-03-01T-"), None);

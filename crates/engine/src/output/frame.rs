@@ -7,7 +7,8 @@
 //! relative to the reference point so the OSI side can convert), bounding box, velocity,
 //! acceleration, yaw rate, road and lane position, vehicle, pedestrian or misc-object category,
 //! colour, model3d, the VisibilityAction flags, the LightStateAction light states and the towed
-//! trailer; the frame names the scenario and road files ([`ScenarioSource`]).
+//! trailer; the frame names the scenario and road files ([`ScenarioSource`]) and carries the
+//! environment in force ([`crate::EnvironmentState`]).
 
 use std::collections::BTreeMap;
 
@@ -30,6 +31,8 @@ pub struct Frame<'a> {
     pub entities: &'a [Entity],
     /// Traffic signal controllers' phases and signal states (crate::signals).
     pub signals: &'a crate::signals::Signals,
+    /// The environment in force (EnvironmentAction: time of day, weather, road condition).
+    pub environment: &'a crate::actions::EnvironmentState,
     /// The scenario and road files of the run (for source references).
     pub source: &'a ScenarioSource,
 }

@@ -431,6 +431,7 @@ impl Engine {
                     step: self.step,
                     entities: &world.entities,
                     signals: &world.signals,
+                    environment: &world.environment,
                     source: &self.source,
                 })
                 .map_err(output_error("frames"))?;
@@ -483,6 +484,7 @@ impl Engine {
                 step: self.step,
                 entities: &world.entities,
                 signals: &world.signals,
+                environment: &world.environment,
                 source: &self.source,
             })
             .map_err(output_error("frames"))?;

@@ -291,13 +291,7 @@ impl ConditionContext for ConditionWorld<'_> {
     /// The time of day of the EnvironmentAction in force (seconds since the epoch): its
     /// dateTime, plus the simulation time since it was set when its `animation` is true.
     fn time_of_day(&self) -> Option<f64> {
-        let (time_of_day, set_at) = self.world.environment.time_of_day_setting()?;
-        let start = crate::condition::parse_date_time(&time_of_day.date_time)?;
-        let elapsed = if time_of_day.animation {
-            self.world.time - set_at
-        } else {
-            0.0
-        };
-        Some(start + elapsed)
+        let clock = self.world.environment.clock_at(self.world.time)?;
+        Some(clock.unix_time)
     }
 }

@@ -343,6 +343,7 @@ fn the_frame_check_catches_a_nan() {
                 step: 10,
                 entities,
                 signals: &engine::signals::Signals::default(),
+                environment: &engine::EnvironmentState::default(),
                 source: &engine::ScenarioSource::default(),
             })
             .expect("the check never fails the run");

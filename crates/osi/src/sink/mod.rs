@@ -25,6 +25,10 @@
 //! - OpenDRIVE signals: `traffic_light` (one per bulb, mode from the engine's live signal
 //!   states, `Frame::signals`) and `traffic_sign`, by [`crate::traffic_signals`]; their ids
 //!   come after the first frame's entities'.
+//! - The environment in force (`Frame::environment`, EnvironmentAction) →
+//!   `environmental_conditions`, by [`crate::environment`], in every frame once an
+//!   EnvironmentAction has set something; the wind's north is turned by the OpenDRIVE
+//!   header `<offset>` heading.
 //! - A vehicle towing a trailer (`TrailerHitch` connected by the scenario's `Trailer` or a
 //!   `ConnectTrailerAction`, OpenSCENARIO 1.3 §7.2.2.6) gets
 //!   `vehicle_classification.has_trailer = true` and `trailer_id` = the OSI id of the
@@ -100,6 +104,9 @@ pub struct GroundTruthSink {
     host: String,
     /// The road network's signals, placed.
     signals: TrafficSignals,
+    /// Heading of the OpenDRIVE header `<offset>` (rad; 0 without one): world → projected
+    /// frame, where north is.
+    north_yaw: f64,
 }
 
 impl GroundTruthSink {
@@ -127,7 +134,9 @@ impl GroundTruthSink {
         }
         let (signals, signal_warnings) = TrafficSignals::new(&network, map_reference.as_deref());
         warnings.extend(signal_warnings);
+        let north_yaw = network.header().offset.as_ref().map_or(0.0, |o| o.hdg);
         Ok(GroundTruthSink {
+            north_yaw,
             signals,
             builder,
             network,
@@ -182,7 +191,13 @@ impl GroundTruthSink {
             })?;
         }
         self.signals.add_to(&mut gt, |id| frame.signals.state(id));
-        Ok(gt.finish())
+        let mut gt = gt.finish();
+        gt.environmental_conditions = crate::environment::environmental_conditions(
+            frame.environment,
+            frame.time,
+            self.north_yaw,
+        );
+        Ok(gt)
     }
 }
 
