@@ -7,7 +7,7 @@
 //! then, when a heading is given, the lane whose driving direction is closest to it; then the
 //! smallest |t|.
 
-use super::frame::road_frame;
+use super::frame::{road_frame, RoadFrame};
 use super::graph::{driving_direction, Direction};
 use super::lane_span::{road_extent, side_spans};
 use super::spatial::Piece;
@@ -74,8 +74,15 @@ struct Candidate {
     road_hdg: Real,
 }
 
-/// Solves place(s, t) = (px, py) on `road` with s kept in [lo, hi]; returns (s, t, residual).
-fn project(road: &Road, px: Real, py: Real, lo: Real, hi: Real) -> Option<(Real, Real, Real)> {
+/// Solves place(s, t) = (px, py) on `road` with s kept in [lo, hi]; returns (s, t, residual)
+/// and the road's frame at that s (which the caller needs again: computed once).
+fn project(
+    road: &Road,
+    px: Real,
+    py: Real,
+    lo: Real,
+    hi: Real,
+) -> Option<(Real, Real, Real, RoadFrame)> {
     let mut s = 0.5 * (lo + hi);
     let mut t = 0.0;
     let span = (hi - lo).max(1.0);
@@ -101,9 +108,10 @@ fn project(road: &Road, px: Real, py: Real, lo: Real, hi: Real) -> Option<(Real,
             break;
         }
     }
-    let [x, y, _] = road_frame(road, s).place(t, 0.0);
+    let f = road_frame(road, s);
+    let [x, y, _] = f.place(t, 0.0);
     let resid = (px - x).hypot(py - y);
-    resid.is_finite().then_some((s, t, resid))
+    resid.is_finite().then_some((s, t, resid, f))
 }
 
 impl RoadNetwork {
@@ -188,7 +196,7 @@ impl RoadNetwork {
         heading: Option<Real>,
     ) -> Option<Candidate> {
         let road = &self.roads[piece.road];
-        let (s, t, resid) = project(road, x, y, piece.s0, piece.s1)?;
+        let (s, t, resid, f) = project(road, x, y, piece.s0, piece.s1)?;
         // A foot point on a neighbouring piece leaves a residual along the road; the candidate
         // then counts that residual as distance, and the neighbouring piece (whose box is no
         // farther) gives the exact one.
@@ -200,7 +208,6 @@ impl RoadNetwork {
         } else {
             0.0
         };
-        let f = road_frame(road, s);
         let heading_gap = heading.map_or(0.0, |h| {
             let (lane, _) = lane_at(road, s, t);
             let drive = match driving_direction(road, lane) {
