@@ -195,9 +195,12 @@ fn sample(net: &RoadNetwork, step: f64, out: &mut impl Write) -> anyhow::Result<
     Ok(())
 }
 
-/// `road locate`: CSV x,y,h in, road positions out.
+/// `road locate`: CSV x,y,h in, road positions out. Numbers are written by
+/// `engine::output::push_fixed` (the bytes of `{:.6}` without `core::fmt`'s slow exact-decimal
+/// path) into one reused line buffer.
 fn locate(net: &RoadNetwork, input: impl BufRead, out: &mut impl Write) -> anyhow::Result<()> {
     writeln!(out, "x,y,h,road_id,lane_id,s,t,offset")?;
+    let mut row: Vec<u8> = Vec::with_capacity(128);
     for (i, line) in input.lines().enumerate() {
         let line = line.context("cannot read stdin")?;
         let text = line.trim();
@@ -216,14 +219,27 @@ fn locate(net: &RoadNetwork, input: impl BufRead, out: &mut impl Write) -> anyho
                 i + 1
             ),
         };
-        match net.locate(x, y, Some(h)) {
-            Some(p) => writeln!(
-                out,
-                "{x:.6},{y:.6},{h:.6},{},{},{:.6},{:.6},{:.6}",
-                p.road_id, p.lane_id, p.s, p.t, p.offset
-            )?,
-            None => writeln!(out, "{x:.6},{y:.6},{h:.6},,,,,")?,
+        row.clear();
+        for v in [x, y, h] {
+            engine::output::push_fixed(&mut row, v, 6);
+            row.push(b',');
         }
+        match net.locate(x, y, Some(h)) {
+            Some(p) => {
+                row.extend_from_slice(p.road_id.as_bytes());
+                // Writing to a Vec cannot fail.
+                let _ = write!(row, ",{},", p.lane_id);
+                for (k, v) in [p.s, p.t, p.offset].into_iter().enumerate() {
+                    if k > 0 {
+                        row.push(b',');
+                    }
+                    engine::output::push_fixed(&mut row, v, 6);
+                }
+            }
+            None => row.extend_from_slice(b",,,,"),
+        }
+        row.push(b'\n');
+        out.write_all(&row)?;
     }
     Ok(())
 }
