@@ -11,7 +11,8 @@ use std::sync::Arc;
 use opendrive::{Pose, Real, RoadNetwork, RoadPosition};
 use scenario::expr::Value;
 use scenario::{
-    AnimationAction, LightState, MiscObjectCategory, PedestrianCategory, Scenario, VehicleCategory,
+    AnimationAction, LightState, MiscObjectCategory, PedestrianCategory, Role, Scenario,
+    VehicleCategory,
 };
 
 use crate::domain::{BoundingBox, Color, Vector3};
@@ -52,6 +53,9 @@ pub struct EntityState {
     pub pedestrian_category: Option<PedestrianCategory>,
     /// Misc object category (misc objects only).
     pub misc_object_category: Option<MiscObjectCategory>,
+    /// Role in traffic (`role` of a Vehicle or Pedestrian; spawned vehicles: the role drawn
+    /// from their TrafficDefinition's VehicleRoleDistribution).
+    pub role: Option<Role>,
     /// Colour, if known.
     pub color: Option<Color>,
     /// `model3d`, if given.

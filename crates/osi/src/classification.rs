@@ -1,7 +1,8 @@
 //! From OpenSCENARIO 1.3 categories (XSD enumerations `VehicleCategory`,
 //! `PedestrianCategory`, `MiscObjectCategory`) to ASAM OSI 3.8 classifications
 //! (`MovingObject.Type`, `MovingObject.VehicleClassification.Type`,
-//! `StationaryObject.Classification.Type`).
+//! `StationaryObject.Classification.Type`), and the OpenSCENARIO 1.2+ `Role` of a vehicle to
+//! `MovingObject.VehicleClassification.Role`.
 //!
 //! Choices where the standards do not line up one to one:
 //! - `van` → `TYPE_DELIVERY_VAN` (OSI's `TYPE_VAN` is an alias of it), `truck` →
@@ -12,14 +13,22 @@
 //!   `parkingSpace`, `patch`, `roadMark`, `trafficIsland`, `none`, `wind`) →
 //!   `TYPE_OTHER`; `streetLamp` → `TYPE_POLE`, `railing` → `TYPE_BARRIER`,
 //!   `soundBarrier` → `TYPE_WALL`, `gantry` → `TYPE_OVERHEAD_STRUCTURE`.
+//! - role `none` ("no specific role": ordinary traffic) → `ROLE_CIVIL`, as `civil`: OSI 3.8
+//!   says `ROLE_UNKNOWN` must not be used in ground truth and `ROLE_OTHER` is a known role
+//!   outside the list; every other role has its namesake (`publicTransport` →
+//!   `ROLE_PUBLIC_TRANSPORT`, `roadAssistance` → `ROLE_ROAD_ASSISTANCE`, `military` →
+//!   `ROLE_MILITARY`).
 
 use crate::error::Error;
+use crate::osi3::moving_object::vehicle_classification::Role as VehicleRole;
 use crate::osi3::moving_object::vehicle_classification::Type as VehicleType;
 use crate::osi3::moving_object::Type as MovingType;
 use crate::osi3::stationary_object::classification::Type as StationaryType;
 
 const VEHICLE_CATEGORIES: &str = "one of bicycle, bus, car, motorbike, semitrailer, trailer, \
      train, tram, truck, van";
+const ROLES: &str = "one of ambulance, civil, fire, military, none, police, publicTransport, \
+     roadAssistance";
 const PEDESTRIAN_CATEGORIES: &str = "one of animal, pedestrian, wheelchair";
 const MISC_CATEGORIES: &str = "one of barrier, building, crosswalk, gantry, none, obstacle, \
      parkingSpace, patch, pole, railing, roadMark, soundBarrier, streetLamp, trafficIsland, \
@@ -39,6 +48,20 @@ pub fn vehicle_type(vehicle_category: &str) -> Result<VehicleType, Error> {
         "truck" => VehicleType::HeavyTruck,
         "van" => VehicleType::DeliveryVan,
         other => return Err(Error::invalid("vehicleCategory", VEHICLE_CATEGORIES, other)),
+    })
+}
+
+/// OSI vehicle role of an OpenSCENARIO `role` (module doc for `none`).
+pub fn vehicle_role(role: &str) -> Result<VehicleRole, Error> {
+    Ok(match role {
+        "none" | "civil" => VehicleRole::Civil,
+        "ambulance" => VehicleRole::Ambulance,
+        "fire" => VehicleRole::Fire,
+        "military" => VehicleRole::Military,
+        "police" => VehicleRole::Police,
+        "publicTransport" => VehicleRole::PublicTransport,
+        "roadAssistance" => VehicleRole::RoadAssistance,
+        other => return Err(Error::invalid("role", ROLES, other)),
     })
 }
 
@@ -100,6 +123,25 @@ mod tests {
         for (category, number) in table {
             assert_eq!(vehicle_type(category).unwrap() as i32, number, "{category}");
         }
+    }
+
+    #[test]
+    fn vehicle_roles_map_to_the_osi_numbers() {
+        // Numbers from OSI 3.8 MovingObject.VehicleClassification.Role.
+        let table = [
+            ("none", 2),
+            ("civil", 2),
+            ("ambulance", 3),
+            ("fire", 4),
+            ("police", 5),
+            ("publicTransport", 6),
+            ("roadAssistance", 7),
+            ("military", 10),
+        ];
+        for (role, number) in table {
+            assert_eq!(vehicle_role(role).unwrap() as i32, number, "{role}");
+        }
+        assert!(vehicle_role("Police").is_err());
     }
 
     #[test]

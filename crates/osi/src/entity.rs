@@ -9,7 +9,7 @@
 //! - `source_reference` = {reference: scenario file, type: `net.asam.openscenario`,
 //!   identifier: [`Vehicle` | `Pedestrian` | `MiscObject`, entity name]}.
 
-use crate::classification::{pedestrian_type, stationary_type, vehicle_type};
+use crate::classification::{pedestrian_type, stationary_type, vehicle_role, vehicle_type};
 use crate::error::Error;
 use crate::ids::{IdAllocator, IdKey};
 use crate::osi3::moving_object::vehicle_classification::LightState;
@@ -60,6 +60,9 @@ pub struct EntityInfo<'a> {
     pub trailer: Option<&'a str>,
     /// The vehicle's light states (see [`crate::lights`]), if any light was set.
     pub lights: Option<LightState>,
+    /// The vehicle's OpenSCENARIO `role` (e.g. `police`), if it has one: written to
+    /// `vehicle_classification.role` (see [`crate::classification`]).
+    pub role: Option<&'a str>,
 }
 
 /// OSI needs a positive, finite bounding box at a finite place (osi_check: "dimension
@@ -131,7 +134,7 @@ pub fn moving_object(
             has_trailer: Some(trailer_id.is_some()),
             trailer_id,
             light_state: info.lights,
-            ..Default::default()
+            role: info.role.map(vehicle_role).transpose()?.map(|r| r as i32),
         });
         object.vehicle_attributes = Some(VehicleAttributes {
             bbcenter_to_rear: Some(state.bbcenter_to_rear()),
@@ -244,6 +247,7 @@ mod tests {
             color: None,
             trailer: Some("Trailer"),
             lights: None,
+            role: None,
         }
     }
 

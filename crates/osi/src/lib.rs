@@ -39,6 +39,7 @@
 //!     color: None,
 //!     trailer: None,
 //!     lights: None,
+//!     role: None,
 //! };
 //! for step in 0..3u64 {
 //!     let state = RigidBodyState {

@@ -13,7 +13,7 @@
 use std::collections::BTreeMap;
 
 use opendrive::{Pose, Real, RoadPosition};
-use scenario::{LightState, MiscObjectCategory, PedestrianCategory, VehicleCategory};
+use scenario::{LightState, MiscObjectCategory, PedestrianCategory, Role, VehicleCategory};
 
 use super::SinkError;
 use crate::domain::{BoundingBox, Color, Vector3};
@@ -78,6 +78,9 @@ pub struct EntityFrame<'a> {
     pub pedestrian_category: Option<PedestrianCategory>,
     /// Misc object category (misc objects only).
     pub misc_object_category: Option<MiscObjectCategory>,
+    /// Role in traffic (vehicles and pedestrians with a `role`, spawned vehicles with a drawn
+    /// one).
+    pub role: Option<Role>,
     /// Colour, if known.
     pub color: Option<Color>,
     /// `model3d`, if given.
@@ -115,6 +118,7 @@ impl<'a> EntityFrame<'a> {
             vehicle_category: e.vehicle_category,
             pedestrian_category: e.pedestrian_category,
             misc_object_category: e.misc_object_category,
+            role: e.role,
             color: e.color,
             model3d: e.model3d.as_deref(),
             visibility: e.visibility,
@@ -141,6 +145,7 @@ impl<'a> EntityFrame<'a> {
             vehicle_category: self.vehicle_category,
             pedestrian_category: self.pedestrian_category,
             misc_object_category: self.misc_object_category,
+            role: self.role,
             color: self.color,
             model3d: self.model3d.map(str::to_owned),
             visibility: self.visibility,

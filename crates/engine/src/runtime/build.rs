@@ -126,11 +126,13 @@ pub(crate) fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entit
             e.max_curvature = crate::trajectory::max_curvature(&v.axles);
             e.axles = Some(v.axles.clone());
             e.mass = v.mass;
+            e.role = v.role;
             e.model3d.clone_from(&v.model3d);
             e.color = color_of(&v.properties);
         }
         EntityObject::Pedestrian(p) => {
             e.pedestrian_category = Some(p.pedestrian_category);
+            e.role = p.role;
             e.model3d.clone_from(&p.model3d);
             e.color = color_of(&p.properties);
         }

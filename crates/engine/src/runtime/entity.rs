@@ -182,6 +182,9 @@ pub struct Entity {
     pub pedestrian_category: Option<PedestrianCategory>,
     /// Misc object category (misc objects only).
     pub misc_object_category: Option<MiscObjectCategory>,
+    /// Role in traffic (`role` of a Vehicle or Pedestrian, OpenSCENARIO 1.2+; spawned
+    /// vehicles: drawn from the VehicleRoleDistribution, traffic/spawn.rs).
+    pub role: Option<scenario::Role>,
     /// Performance limits (vehicles only).
     pub performance: Option<Performance>,
     /// Colour, from a `Property name="color"` when one names a §8.7.11 colour.
@@ -257,6 +260,7 @@ impl Entity {
             vehicle_category: None,
             pedestrian_category: None,
             misc_object_category: None,
+            role: None,
             performance: None,
             color: None,
             model3d: None,

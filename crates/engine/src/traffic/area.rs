@@ -155,7 +155,7 @@ impl Area {
                 continue;
             }
             let name = run.next_name(world);
-            let (e, templates) = template(&mut run.rng, &self.mix, name)?;
+            let (e, templates) = template(&mut run.rng, world.traffic.seed, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, DEFAULT_SPEED);
             equip(world, id, &self.mix, &templates, &run.name)?;
             run.members.push(id);

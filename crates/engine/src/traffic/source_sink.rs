@@ -74,7 +74,7 @@ impl Source {
             };
             self.due -= 1.0;
             let name = run.next_name(world);
-            let (e, templates) = template(&mut run.rng, &self.mix, name)?;
+            let (e, templates) = template(&mut run.rng, world.traffic.seed, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, self.speed);
             equip(world, id, &self.mix, &templates, &run.name)?;
             run.members.push(id);

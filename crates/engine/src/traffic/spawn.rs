@@ -6,6 +6,12 @@
 //! §7.2.2.3 proposes), driven by the default controller at its start speed along the lane it
 //! appears on, in the lane's driving direction. Its template is drawn from the action's
 //! TrafficDistribution (1.3) or the vehicle categories of its TrafficDefinition, else a car.
+//! Its role (XSD `Role`) is drawn by weight from the TrafficDefinition's
+//! VehicleRoleDistribution, if it has one, else it is the template's `role`; the draw uses a
+//! stream of its own per vehicle (the run's seed, stream keyed by the vehicle's name and
+//! "/role", as the controller draw in traffic/controllers.rs), so that positions, speeds,
+//! templates and controllers are those of a run without roles. The spawn's event-log line
+//! names the role: `spawned (role police)`.
 //! It appears only on a drivable lane's centre line and at least [`MIN_GAP`] m from every
 //! other placed entity. A removed vehicle keeps its id and name but is no longer placed, so it
 //! leaves the frames, the conditions and the ByType selections.
@@ -15,7 +21,7 @@ use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use scenario::{ObjectController, Performance, TrafficMix, VehicleCategory};
 
-use super::random::weighted;
+use super::random::{stream, weighted};
 use crate::domain::{BoundingBox, Position3d};
 use crate::runtime::entity::{Entity, EntityId, EntityKind};
 use crate::runtime::error::RuntimeError;
@@ -45,10 +51,27 @@ fn default_box(category: VehicleCategory) -> (Real, Real, Real, Real) {
     }
 }
 
-/// A new, unplaced vehicle for a traffic action: from the mix's distribution or categories.
-/// Also returns the template's ObjectControllers (traffic/controllers.rs gives them to the
-/// vehicle).
+/// A new, unplaced vehicle for a traffic action: from the mix's distribution or categories,
+/// with its role drawn under the run's `seed` (module doc). Also returns the template's
+/// ObjectControllers (traffic/controllers.rs gives them to the vehicle).
 pub(crate) fn template(
+    rng: &mut ChaCha8Rng,
+    seed: u64,
+    mix: &TrafficMix,
+    name: String,
+) -> Result<(Entity, Vec<ObjectController>), RuntimeError> {
+    let (mut e, controllers) = body(rng, mix, name)?;
+    if let Some(roles) = mix.definition.as_ref().map(|d| &d.vehicle_roles) {
+        let mut rng = stream(seed, &format!("{}/role", e.name));
+        if let Some(i) = weighted(&mut rng, roles.iter().map(|(_, w)| *w)) {
+            e.role = Some(roles[i].0);
+        }
+    }
+    Ok((e, controllers))
+}
+
+/// The vehicle of [`template`] before its role is drawn.
+fn body(
     rng: &mut ChaCha8Rng,
     mix: &TrafficMix,
     name: String,
@@ -124,7 +147,11 @@ pub(crate) fn enter(
     pose: Pose,
     speed: Real,
 ) -> EntityId {
-    world.traffic.note(element, &e.name, "spawned");
+    let change = match e.role {
+        Some(role) => format!("spawned (role {})", role.as_str()),
+        None => "spawned".to_owned(),
+    };
+    world.traffic.note(element, &e.name, &change);
     let id = world.spawn(e);
     let found = world.network.locate(pose.x, pose.y, Some(pose.h));
     world.place_resolved(id, pose, found);

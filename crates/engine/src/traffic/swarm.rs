@@ -165,7 +165,7 @@ impl Swarm {
             let (lo, hi) = self.speed;
             let speed = lo + (hi - lo) * run.rng.gen::<f64>();
             let name = run.next_name(world);
-            let (e, templates) = template(&mut run.rng, &self.mix, name)?;
+            let (e, templates) = template(&mut run.rng, world.traffic.seed, &self.mix, name)?;
             let id = enter(world, &run.name, e, pose, speed);
             equip(world, id, &self.mix, &templates, &run.name)?;
             run.members.push(id);

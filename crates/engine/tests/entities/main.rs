@@ -15,5 +15,6 @@ mod external;
 mod select_triggering;
 mod selection;
 mod traffic;
+mod traffic_roles;
 mod trailers;
 mod visibility;

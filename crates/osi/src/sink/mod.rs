@@ -41,6 +41,9 @@
 //!   nothing here. Why: docs/osi.md "Visibility".
 //! - LightStateAction: a vehicle's lights go to `vehicle_classification.light_state` by the
 //!   table of `osi::lights` (unset while no action touched a light).
+//! - A vehicle's `role` (declared, or drawn for spawned traffic from its VehicleRoleDistribution)
+//!   goes to `vehicle_classification.role` by `osi::classification::vehicle_role` (unset
+//!   without a role).
 //!
 //!
 //! Everything comes from the engine ([`Engine::road_network`], [`Engine::source`]) and its
@@ -250,9 +253,12 @@ fn add(
             return frame.add_misc_object(&info, &lanes).map(drop);
         }
     };
-    let lights = match kind {
-        EntityKind::Vehicle { .. } => crate::lights::light_state(&vehicle_lights(e)),
-        EntityKind::Pedestrian { .. } => None,
+    let (lights, role) = match kind {
+        EntityKind::Vehicle { .. } => (
+            crate::lights::light_state(&vehicle_lights(e)),
+            e.role.map(|r| r.as_str()),
+        ),
+        EntityKind::Pedestrian { .. } => (None, None),
     };
     let info = EntityInfo {
         name: e.name,
@@ -262,6 +268,7 @@ fn add(
         color,
         trailer,
         lights,
+        role,
     };
     frame.add_entity(&info, &state, &lanes).map(drop)
 }

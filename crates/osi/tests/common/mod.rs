@@ -150,6 +150,7 @@ pub fn frame(ids: &mut IdAllocator, k: usize, vehicles: usize, with_lanes: bool)
             color: osi::color::from_color_type("white").expect("known colour"),
             trailer: None,
             lights: None,
+            role: None,
         };
         let state = RigidBodyState {
             reference_point: [5.0 + 30.0 * i as f64 + vehicle_speed(i) * t, -1.75, 0.0],
@@ -216,6 +217,7 @@ pub fn walker_info(scenario_file: &'static str) -> EntityInfo<'static> {
         color: None,
         trailer: None,
         lights: None,
+        role: None,
     }
 }
 

@@ -53,6 +53,7 @@ pub fn frame(net: &opendrive::RoadNetwork, b: &mut GroundTruthBuilder, k: u64) -
         color,
         trailer: None,
         lights: None,
+        role: None,
     };
     let mut f = b.begin_frame(k * STEP_NANOS);
     // Lanes as the engine finds them: locate the reference point on the road network.
