@@ -1,11 +1,17 @@
 //! ParameterSetAction and ParameterModifyAction (OpenSCENARIO 1.3 §7.7.1 "GlobalAction",
 //! XSD `ParameterAction`, deprecated since 1.2 in favour of variables): change a parameter's
 //! value at runtime. Shares the rule with VariableAction (`modify_value`).
+//!
+//! The new value must meet the parameter's ConstraintGroups (OpenSCENARIO 1.2+
+//! `ValueConstraintGroup`: every constraint of at least one group), as its declared and
+//! `--param` values must when the scenario loads; a value that does not is a run error at the
+//! action, naming the parameter and the constraints, and the parameter keeps its old value.
+//! (Variables have no constraints in 1.3: XSD `VariableDeclaration`.)
 
 use std::collections::BTreeMap;
 
 use scenario::expr::Value;
-use scenario::{ModifyRule, SourcePos};
+use scenario::{ModifyRule, SourcePos, ValueConstraintGroup};
 
 use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
@@ -17,17 +23,27 @@ pub(crate) fn apply(
     rule: &ModifyRule,
     pos: &SourcePos,
 ) -> Result<(), RuntimeError> {
-    modify_value(&mut world.parameters, "parameter", name, rule, pos)
+    modify_value(&mut world.parameters, "parameter", name, rule, pos, |new| {
+        let groups = world
+            .parameter_constraints
+            .get(name)
+            .map_or(&[][..], Vec::as_slice);
+        ValueConstraintGroup::check(groups, new).map_err(|expected| {
+            RuntimeError::at(format!("parameter {name} {expected}"), new.to_string(), pos)
+        })
+    })
 }
 
 /// Applies `rule` to entry `name` of `store` (parameters or variables): Set parses the text as
-/// the declared type; Add and Multiply need a numeric value and keep its type.
+/// the declared type; Add and Multiply need a numeric value and keep its type. The new value
+/// is stored once `accept` has accepted it.
 pub(crate) fn modify_value(
     store: &mut BTreeMap<String, Value>,
     what: &str,
     name: &str,
     rule: &ModifyRule,
     pos: &SourcePos,
+    accept: impl FnOnce(&Value) -> Result<(), RuntimeError>,
 ) -> Result<(), RuntimeError> {
     let Some(old) = store.get(name) else {
         return Err(RuntimeError::at(
@@ -77,6 +93,7 @@ pub(crate) fn modify_value(
         }
         _ => return Err(RuntimeError::unsupported("this modify rule", pos)),
     };
+    accept(&new)?;
     store.insert(name.to_owned(), new);
     Ok(())
 }

@@ -14,5 +14,12 @@ pub(crate) fn apply(
     rule: &ModifyRule,
     pos: &SourcePos,
 ) -> Result<(), RuntimeError> {
-    modify_value(&mut world.variables, "variable", name, rule, pos)
+    modify_value(
+        &mut world.variables,
+        "variable",
+        name,
+        rule,
+        pos,
+        |_| Ok(()),
+    )
 }

@@ -53,6 +53,12 @@ pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Bu
         .iter()
         .map(|p| (p.name.clone(), p.value.clone()))
         .collect::<BTreeMap<_, _>>();
+    world.parameter_constraints = scenario
+        .parameter_declarations
+        .iter()
+        .filter(|p| !p.constraint_groups.is_empty())
+        .map(|p| (p.name.clone(), p.constraint_groups.clone()))
+        .collect();
     world.signals =
         crate::signals::Signals::new(&scenario.road_network.traffic_signal_controllers)?;
     world.monitors = scenario

@@ -30,6 +30,8 @@ pub struct World {
     /// Simulation time of the current step (s).
     pub time: f64,
     pub(crate) parameters: BTreeMap<String, Value>,
+    /// The ConstraintGroups of the global parameters that have some, by name.
+    pub(crate) parameter_constraints: BTreeMap<String, Vec<scenario::ValueConstraintGroup>>,
     pub(crate) variables: BTreeMap<String, Value>,
     /// Traffic signal controllers and signal states (crate::signals).
     pub(crate) signals: crate::signals::Signals,
@@ -64,6 +66,7 @@ impl World {
             names,
             time: 0.0,
             parameters: BTreeMap::new(),
+            parameter_constraints: BTreeMap::new(),
             variables: BTreeMap::new(),
             signals: crate::signals::Signals::default(),
             monitors: BTreeMap::new(),

@@ -4,8 +4,8 @@
 use crate::runtime_support;
 
 use engine::output::{EventSink, JsonlWriter};
-use engine::EventRecord;
-use runtime_support::run;
+use engine::{Engine, EngineConfig, EventRecord};
+use runtime_support::{file, run, run_with};
 use scenario::expr::Value;
 
 /// global_actions.xosc at t = 1 s: Gap (double 10) + 5 = 15; Count (int 1) := 7.
@@ -100,4 +100,41 @@ fn transition_json_line_has_the_issue_layout() {
         "{\"time\":1.000,\"element\":\"Modify\",\"kind\":\"event\",\"from\":\"standbyState\",\
          \"transition\":\"start\",\"to\":\"runningState\"}\n"
     );
+}
+
+/// ConstraintGroups hold at run time as at load (parameter_constraints.xosc): Limit must lie in
+/// [0, 40] or equal 100. The ParameterSetAction of t = 1 s (30) meets the first group; with
+/// Step = 5 the ParameterModifyAction of t = 2 s gives 30 + 5 = 35, which meets it too, and
+/// the run ends normally at t = 3 s.
+#[test]
+fn parameter_values_that_meet_their_constraints_are_set() {
+    let (engine, _, events) = run_with(
+        &file("parameter_constraints.xosc"),
+        &[("Step", "5")],
+        EngineConfig::default(),
+    );
+    assert_eq!(engine.parameter("Limit"), Some(Value::Double(35.0)));
+    assert!(!events
+        .iter()
+        .any(|e| matches!(e, EventRecord::Error { .. })));
+}
+
+/// With the declared Step = 20 the ParameterModifyAction of t = 2 s would give 30 + 20 = 50,
+/// in neither group: the run fails at that Action (`<Action name="AddStep">`, line 69,
+/// column 15) with the message a declared value breaking the constraints gets at load, and
+/// Limit keeps 30.
+#[test]
+fn a_parameter_value_that_breaks_its_constraints_is_a_run_error_at_the_action() {
+    let path = file("parameter_constraints.xosc");
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+    let err = engine
+        .run(&mut (), &mut Vec::new())
+        .expect_err("the constraint is broken");
+    let message = err.to_string();
+    let expected = format!(
+        "expected parameter Limit greaterOrEqual 0 and lessOrEqual 40 or equalTo 100, found 50 at {}:69:15",
+        path.display()
+    );
+    assert!(message.starts_with(&expected), "{message}");
+    assert_eq!(engine.parameter("Limit"), Some(Value::Double(30.0)));
 }

@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use crate::expr::{Value, ValueType};
+use crate::model::Rule;
 use crate::source::SourcePos;
 
 /// A resolved parameter declaration (XSD `ParameterDeclaration`).
@@ -17,6 +18,77 @@ pub struct ParameterDeclaration {
     pub value: Value,
     /// Where the value was written.
     pub pos: SourcePos,
+    /// ConstraintGroups (1.2+): a value must meet every constraint of at least one group
+    /// ([`ValueConstraintGroup::check`]); empty: any value.
+    pub constraint_groups: Vec<ValueConstraintGroup>,
+}
+
+/// XSD `ValueConstraintGroup` (1.2+): constraints that must all hold.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ValueConstraintGroup {
+    /// The ValueConstraints.
+    pub constraints: Vec<ValueConstraint>,
+}
+
+/// XSD `ValueConstraint` (1.2+): `rule` against `value`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ValueConstraint {
+    /// Comparison rule.
+    pub rule: Rule,
+    /// The bound, as written after parameter resolution.
+    pub value: String,
+}
+
+impl ValueConstraintGroup {
+    /// Whether `value` meets every constraint of one of `groups` (true when there are none);
+    /// when it meets none, the groups described for an error message, e.g.
+    /// "greaterOrEqual 0 and lessThan 10 or equalTo 20".
+    pub fn check(groups: &[ValueConstraintGroup], value: &Value) -> Result<(), String> {
+        if groups.is_empty()
+            || groups
+                .iter()
+                .any(|g| g.constraints.iter().all(|c| meets(value, c.rule, &c.value)))
+        {
+            return Ok(());
+        }
+        Err(groups
+            .iter()
+            .map(|g| {
+                g.constraints
+                    .iter()
+                    .map(|c| format!("{} {}", c.rule, c.value))
+                    .collect::<Vec<_>>()
+                    .join(" and ")
+            })
+            .collect::<Vec<_>>()
+            .join(" or "))
+    }
+}
+
+/// Whether `value` `rule` `bound` holds; numbers compare as doubles, other values as text.
+pub(crate) fn meets(value: &Value, rule: Rule, bound: &str) -> bool {
+    use crate::reader::attr::FromAttr;
+    use std::cmp::Ordering;
+    let ordering = match (value.as_f64(), f64::from_attr(bound)) {
+        (Some(v), Some((b, _)))
+            if !matches!(
+                value,
+                Value::String(_) | Value::DateTime(_) | Value::Bool(_)
+            ) =>
+        {
+            v.partial_cmp(&b)
+        }
+        _ => Some(value.to_string().as_str().cmp(bound.trim())),
+    };
+    let Some(o) = ordering else { return false };
+    match rule {
+        Rule::EqualTo => o == Ordering::Equal,
+        Rule::NotEqualTo => o != Ordering::Equal,
+        Rule::GreaterThan => o == Ordering::Greater,
+        Rule::LessThan => o == Ordering::Less,
+        Rule::GreaterOrEqual => o != Ordering::Less,
+        Rule::LessOrEqual => o != Ordering::Greater,
+    }
 }
 
 /// A variable declaration (XSD `VariableDeclaration`, 1.2+): the initial value of a

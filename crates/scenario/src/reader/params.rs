@@ -11,8 +11,7 @@ use std::collections::HashMap;
 
 use crate::error::{Error, ErrorKind, Result, Warning};
 use crate::expr::{Value, ValueType};
-use crate::model::{ParameterDeclaration, Rule};
-use crate::reader::attr::FromAttr;
+use crate::model::{ParameterDeclaration, ValueConstraint, ValueConstraintGroup};
 use crate::reader::context::{Ctx, Node, Scope};
 
 /// Longest chain of declarations of one block that refer to each other (a → b → c …).
@@ -194,7 +193,7 @@ fn visit<'a>(
             Value::String(text.clone())
         }
     };
-    check_constraints(ctx, p.node, &p.name, &value)?;
+    let constraint_groups = check_constraints(ctx, p.node, &p.name, &value)?;
     if let Some(top) = ctx.scopes.last_mut() {
         top.params.push((p.name.clone(), value.clone()));
     }
@@ -203,6 +202,7 @@ fn visit<'a>(
         parameter_type: p.ty,
         value,
         pos,
+        constraint_groups,
     });
     state[i] = State::Done;
     Ok(())
@@ -254,66 +254,40 @@ pub(crate) fn referenced_names(raw: &str) -> impl Iterator<Item = &str> {
     })
 }
 
-/// ValueConstraintGroups (1.2+): the value must meet every constraint of at least one group.
+/// The ConstraintGroups (1.2+) of declaration `decl` of parameter `name`, checked on `value`
+/// (the value must meet every constraint of at least one group).
 fn check_constraints<'a>(
     ctx: &mut Ctx<'a>,
     decl: Node<'a>,
     name: &str,
     value: &Value,
-) -> Result<()> {
-    let groups: Vec<Node<'a>> = ctx.children(decl, "ConstraintGroup").collect();
-    if groups.is_empty() {
-        return Ok(());
+) -> Result<Vec<ValueConstraintGroup>> {
+    let nodes: Vec<Node<'a>> = ctx.children(decl, "ConstraintGroup").collect();
+    if let Some(first) = nodes.first() {
+        ctx.since(*first, 2);
     }
-    ctx.since(groups[0], 2);
-    let mut described = Vec::new();
-    for g in groups {
-        let mut all = true;
-        let mut text = Vec::new();
+    let mut groups = Vec::new();
+    for g in nodes {
+        let mut constraints = Vec::new();
         for c in ctx.children(g, "ValueConstraint") {
-            let rule: Rule = ctx.req(c, "rule")?;
-            let bound: String = ctx.req(c, "value")?;
-            text.push(format!("{rule} {bound}"));
-            all &= meets(value, rule, &bound);
+            constraints.push(ValueConstraint {
+                rule: ctx.req(c, "rule")?,
+                value: ctx.req(c, "value")?,
+            });
         }
-        if all {
-            return Ok(());
-        }
-        described.push(text.join(" and "));
+        groups.push(ValueConstraintGroup { constraints });
     }
-    Err(ctx.err(
-        decl,
-        ErrorKind::ConstraintViolated {
-            name: name.to_owned(),
-            value: value.to_string(),
-            expected: described.join(" or "),
-        },
-    ))
-}
-
-/// Whether `value` `rule` `bound` holds; numbers compare as doubles, other values as text.
-pub(crate) fn meets(value: &Value, rule: Rule, bound: &str) -> bool {
-    use std::cmp::Ordering;
-    let ordering = match (value.as_f64(), f64::from_attr(bound)) {
-        (Some(v), Some((b, _)))
-            if !matches!(
-                value,
-                Value::String(_) | Value::DateTime(_) | Value::Bool(_)
-            ) =>
-        {
-            v.partial_cmp(&b)
-        }
-        _ => Some(value.to_string().as_str().cmp(bound.trim())),
-    };
-    let Some(o) = ordering else { return false };
-    match rule {
-        Rule::EqualTo => o == Ordering::Equal,
-        Rule::NotEqualTo => o != Ordering::Equal,
-        Rule::GreaterThan => o == Ordering::Greater,
-        Rule::LessThan => o == Ordering::Less,
-        Rule::GreaterOrEqual => o != Ordering::Less,
-        Rule::LessOrEqual => o != Ordering::Greater,
+    if let Err(expected) = ValueConstraintGroup::check(&groups, value) {
+        return Err(ctx.err(
+            decl,
+            ErrorKind::ConstraintViolated {
+                name: name.to_owned(),
+                value: value.to_string(),
+                expected,
+            },
+        ));
     }
+    Ok(groups)
 }
 
 #[cfg(test)]
@@ -326,6 +300,19 @@ mod tests {
         assert_eq!(names, ["a", "b_1"]);
         assert_eq!(referenced_names("$x").collect::<Vec<_>>(), ["x"]);
         assert_eq!(referenced_names("plain").count(), 0);
+    }
+
+    use crate::model::Rule;
+
+    /// Whether `value` `rule` `bound` holds, through a one-constraint group.
+    fn meets(value: &Value, rule: Rule, bound: &str) -> bool {
+        let group = ValueConstraintGroup {
+            constraints: vec![ValueConstraint {
+                rule,
+                value: bound.to_owned(),
+            }],
+        };
+        ValueConstraintGroup::check(&[group], value).is_ok()
     }
 
     #[test]
