@@ -22,8 +22,9 @@ use opendrive::RoadNetwork;
 use scenario::distribution::model::{
     DeterministicKind, DistributionDefinition, ParameterValueDistribution,
 };
-use scenario::distribution::{DistributionPlan, TextPos};
+use scenario::distribution::DistributionPlan;
 use scenario::Scenario;
+use scenario::SourcePos;
 
 /// Why a batch cannot start.
 #[derive(Debug, thiserror::Error)]
@@ -41,14 +42,10 @@ pub enum PlanError {
     #[error(transparent)]
     Distribution(#[from] scenario::distribution::DistributionError),
     /// The ScenarioFile does not exist.
-    #[error(
-        "expected an existing ScenarioFile, found none at {path} (ScenarioFile at {file}:{pos})"
-    )]
+    #[error("expected an existing ScenarioFile, found none at {path} (ScenarioFile at {pos})")]
     MissingScenario {
-        /// The distribution file.
-        file: String,
-        /// The ScenarioFile element.
-        pos: TextPos,
+        /// The ScenarioFile element: the distribution file and where in it.
+        pos: SourcePos,
         /// The path tried.
         path: String,
     },
@@ -59,14 +56,10 @@ pub enum PlanError {
     #[error("the ScenarioFile's road network does not load: {0}")]
     RoadNetwork(opendrive::Error),
     /// A varied parameter the scenario does not declare.
-    #[error(
-        "expected a global parameter of the scenario ({declared}), found '{name}' at {file}:{pos}"
-    )]
+    #[error("expected a global parameter of the scenario ({declared}), found '{name}' at {pos}")]
     UndeclaredParameter {
-        /// The distribution file.
-        file: String,
-        /// The distribution that names it.
-        pos: TextPos,
+        /// The distribution that names it: the distribution file and where in it.
+        pos: SourcePos,
         /// The name.
         name: String,
         /// The scenario's parameters, comma-separated.
@@ -98,11 +91,9 @@ impl Plan {
         })?;
         let distribution = scenario::distribution::read(&text, path)?;
         let expanded = DistributionPlan::from_distribution(&distribution, path)?;
-        let file = path.display().to_string();
         if !expanded.scenario_file.is_file() {
             return Err(PlanError::MissingScenario {
-                file,
-                pos: distribution.scenario_file_pos,
+                pos: distribution.scenario_file_pos.clone(),
                 path: expanded.scenario_file.display().to_string(),
             });
         }
@@ -121,8 +112,7 @@ impl Plan {
                     .map(|p| p.name.as_str())
                     .collect();
                 return Err(PlanError::UndeclaredParameter {
-                    file,
-                    pos: *pos,
+                    pos: pos.clone(),
                     name: name.clone(),
                     declared: if declared.is_empty() {
                         "it declares none".into()
@@ -159,7 +149,7 @@ impl Plan {
 
 /// Every parameter the distribution varies, with the position of the distribution naming it,
 /// in document order.
-fn varied(d: &ParameterValueDistribution) -> Vec<(String, TextPos)> {
+fn varied(d: &ParameterValueDistribution) -> Vec<(String, SourcePos)> {
     match &d.definition {
         DistributionDefinition::Deterministic(list) => list
             .iter()
@@ -172,13 +162,13 @@ fn varied(d: &ParameterValueDistribution) -> Vec<(String, TextPos)> {
                         sets.iter().flatten().map(|(n, _)| n.clone()).collect()
                     }
                 };
-                names.into_iter().map(move |n| (n, dist.pos))
+                names.into_iter().map(move |n| (n, dist.pos.clone()))
             })
             .collect(),
         DistributionDefinition::Stochastic(s) => s
             .distributions
             .iter()
-            .map(|dist| (dist.parameter_name.clone(), dist.pos))
+            .map(|dist| (dist.parameter_name.clone(), dist.pos.clone()))
             .collect(),
     }
 }

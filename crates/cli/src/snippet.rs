@@ -5,6 +5,7 @@
 use std::ops::Range;
 
 use scenario::SourcePos;
+use source::LineIndex;
 
 /// Files larger than this are not read again for a snippet (the loader refuses them anyway).
 const MAX_SNIPPET_FILE: u64 = scenario::MAX_FILE_BYTES;
@@ -36,13 +37,9 @@ pub fn render(message: &str, pos: &SourcePos) -> Option<String> {
 /// attribute `name="value"` with its value, or else the run of characters up to white space,
 /// `>`, `/` or the end of the line (at least one character).
 fn span_at(text: &str, line: u32, col: u32) -> Option<Range<usize>> {
-    let line_start = if line <= 1 {
-        0
-    } else {
-        text.match_indices('\n').nth(line as usize - 2)?.0 + 1
-    };
-    let rest = &text[line_start..];
-    let line_text = rest.split('\n').next().unwrap_or_default();
+    let range = LineIndex::new(text).line_range(text, line.max(1))?;
+    let line_start = range.start;
+    let line_text = &text[range];
     let offset = line_text
         .char_indices()
         .nth(col.saturating_sub(1) as usize)
@@ -91,6 +88,8 @@ mod tests {
         // Line 3, column 26: the value no such.xodr (12 bytes), as the reader points at it.
         let value = XML.find("no such").expect("in the text");
         assert_eq!(span_at(XML, 3, 26), Some(value..value + 12));
+        // The empty line after the last line end: an empty span at the end, no panic.
+        assert_eq!(span_at(XML, 4, 1), Some(XML.len()..XML.len()));
         // A line past the end has no span.
         assert_eq!(span_at(XML, 9, 1), None);
     }

@@ -11,6 +11,7 @@ pub mod semantics;
 pub mod syntax;
 
 pub use semantics::program::{
-    check, check_source, check_source_with, CheckedProgram, Diagnostics, Source,
+    check, check_source, check_source_with, source_pos, CheckedProgram, Diagnostics, Source,
 };
 pub use semantics::resolve::{Resolution, Value};
+pub use source::SourcePos;

@@ -55,13 +55,7 @@ pub(crate) struct Files<'a>(pub &'a [Source]);
 impl Files<'_> {
     /// `FILE:LINE:COL` of `span`.
     pub(crate) fn at(&self, span: Span) -> String {
-        match self.0.get(span.file.0 as usize) {
-            Some(f) => {
-                let (l, c) = f.line_col(span.start);
-                format!("{}:{l}:{c}", f.name)
-            }
-            None => "?:1:1".into(),
-        }
+        self.pos(span).to_string()
     }
 
     /// An error of `kind` at `span`.
@@ -77,14 +71,6 @@ impl Files<'_> {
 impl Files<'_> {
     /// The scenario model's position of `span` (for runtime errors that point into the `.osc`).
     pub(crate) fn pos(&self, span: Span) -> scenario::SourcePos {
-        let (name, (line, col)) = match self.0.get(span.file.0 as usize) {
-            Some(f) => (f.name.as_str(), f.line_col(span.start)),
-            None => ("?", (1, 1)),
-        };
-        scenario::SourcePos {
-            file: std::sync::Arc::from(std::path::Path::new(name)),
-            line: line as u32,
-            col: col as u32,
-        }
+        dsl::source_pos(self.0, span)
     }
 }

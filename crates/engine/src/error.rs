@@ -76,7 +76,7 @@ pub enum ErrorKind {
     #[error("{0}")]
     Scenario(scenario::Error),
     /// The road network did not load (the OpenDRIVE reader's error, with the `.xodr` file and
-    /// row:col).
+    /// line:col).
     #[error("cannot load the road network: {0}")]
     RoadNetwork(opendrive::Error),
     /// The scenario names no road network (`RoadNetwork/LogicFile`).
@@ -180,7 +180,7 @@ mod tests {
     use super::*;
 
     /// The scenario position comes out of the kinds that carry one; a road-network error keeps
-    /// its OpenDRIVE error (file and row:col) typed, and has no scenario position.
+    /// its OpenDRIVE error (file and line:col) typed, and has no scenario position.
     #[test]
     fn pos_and_typed_sources() {
         let pos = SourcePos {

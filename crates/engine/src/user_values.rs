@@ -18,8 +18,10 @@
 //! free text.
 
 use std::path::Path;
+use std::sync::Arc;
 
 use scenario::expr::Value;
+use scenario::SourcePos;
 
 /// A value set at a time.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,14 +37,10 @@ pub struct TimedValue {
 /// Why a values file could not be read: the file, 1-based line and column, and what was
 /// expected.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("expected {expected}, found {found} at {file}:{line}:{col}")]
+#[error("expected {expected}, found {found} at {pos}")]
 pub struct ValuesFileError {
-    /// The file.
-    pub file: String,
-    /// 1-based line.
-    pub line: usize,
-    /// 1-based column.
-    pub col: usize,
+    /// The file and 1-based line and column.
+    pub pos: SourcePos,
     /// What was expected.
     pub expected: &'static str,
     /// What was found.
@@ -67,21 +65,22 @@ pub fn parse_value(text: &str) -> Value {
 /// Reads a values file (see the module doc).
 pub fn read_csv(path: &Path) -> Result<Vec<TimedValue>, ValuesFileError> {
     let text = std::fs::read_to_string(path).map_err(|e| ValuesFileError {
-        file: path.display().to_string(),
-        line: 1,
-        col: 1,
+        pos: SourcePos::start_of(Arc::from(path)),
         expected: "a readable values file",
         found: e.to_string(),
     })?;
-    parse_csv(&text, &path.display().to_string())
+    parse_csv(&text, path)
 }
 
 /// Reads the text of a values file named `file` (for messages).
-pub fn parse_csv(text: &str, file: &str) -> Result<Vec<TimedValue>, ValuesFileError> {
+pub fn parse_csv(text: &str, file: impl AsRef<Path>) -> Result<Vec<TimedValue>, ValuesFileError> {
+    let file: Arc<Path> = Arc::from(file.as_ref());
     let err = |line: usize, col: usize, expected: &'static str, found: &str| ValuesFileError {
-        file: file.to_owned(),
-        line,
-        col,
+        pos: SourcePos::new(
+            Arc::clone(&file),
+            u32::try_from(line).unwrap_or(u32::MAX),
+            u32::try_from(col).unwrap_or(u32::MAX),
+        ),
         expected,
         found: format!("'{found}'"),
     };

@@ -1,23 +1,12 @@
 //! The crate's error type: an opaque [`Error`] whose [`ErrorKind`] says what went wrong and
-//! whose position says where (file, 1-based `row:col`), in the style of roxmltree's errors.
+//! whose position says where (a [`SourcePos`]: file, 1-based `line:col`), in the style of
+//! roxmltree's errors.
 
 use std::fmt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
+use std::sync::Arc;
 
-/// A 1-based position in a text file, shown as `row:col`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct TextPos {
-    /// Line, starting at 1.
-    pub row: u32,
-    /// Column (in characters), starting at 1.
-    pub col: u32,
-}
-
-impl fmt::Display for TextPos {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}", self.row, self.col)
-    }
-}
+use source::SourcePos;
 
 /// What went wrong.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -109,7 +98,7 @@ pub enum ErrorKind {
 }
 
 /// An error of the OpenDRIVE crate: a kind, and for errors found in a file its path and
-/// position. Display: `"<kind> at <file>:<row>:<col>"`.
+/// position. Display: `"<kind> at <file>:<line>:<col>"`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Error(Box<Inner>);
 
@@ -117,8 +106,18 @@ pub struct Error(Box<Inner>);
 #[derive(Debug, Clone, PartialEq)]
 struct Inner {
     kind: ErrorKind,
-    file: Option<PathBuf>,
-    pos: Option<TextPos>,
+    place: Place,
+}
+
+/// Where an error was found.
+#[derive(Debug, Clone, PartialEq)]
+enum Place {
+    /// Nowhere in a file (queries on a loaded network).
+    None,
+    /// A file as a whole.
+    File(Arc<Path>),
+    /// A place in a file.
+    Pos(SourcePos),
 }
 
 impl Error {
@@ -126,8 +125,7 @@ impl Error {
     pub(crate) fn new(kind: ErrorKind) -> Self {
         Self(Box::new(Inner {
             kind,
-            file: None,
-            pos: None,
+            place: Place::None,
         }))
     }
 
@@ -135,17 +133,15 @@ impl Error {
     pub(crate) fn in_file(kind: ErrorKind, file: &Path) -> Self {
         Self(Box::new(Inner {
             kind,
-            file: Some(file.to_path_buf()),
-            pos: None,
+            place: Place::File(Arc::from(file)),
         }))
     }
 
     /// An error at a place in a file.
-    pub(crate) fn at(kind: ErrorKind, file: &Path, pos: TextPos) -> Self {
+    pub(crate) fn at(kind: ErrorKind, pos: SourcePos) -> Self {
         Self(Box::new(Inner {
             kind,
-            file: Some(file.to_path_buf()),
-            pos: Some(pos),
+            place: Place::Pos(pos),
         }))
     }
 
@@ -156,22 +152,29 @@ impl Error {
 
     /// The file the error was found in, if any.
     pub fn file(&self) -> Option<&Path> {
-        self.0.file.as_deref()
+        match &self.0.place {
+            Place::None => None,
+            Place::File(file) => Some(file),
+            Place::Pos(pos) => Some(&pos.file),
+        }
     }
 
-    /// The 1-based position in the file, if any.
-    pub fn pos(&self) -> Option<TextPos> {
-        self.0.pos
+    /// The file and 1-based line:col the error was found at, if any.
+    pub fn pos(&self) -> Option<&SourcePos> {
+        match &self.0.place {
+            Place::Pos(pos) => Some(pos),
+            _ => None,
+        }
     }
 }
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}", self.0.kind)?;
-        match (&self.0.file, self.0.pos) {
-            (Some(file), Some(pos)) => write!(f, " at {}:{}", file.display(), pos),
-            (Some(file), None) => write!(f, " in {}", file.display()),
-            _ => Ok(()),
+        match &self.0.place {
+            Place::Pos(pos) => write!(f, " at {pos}"),
+            Place::File(file) => write!(f, " in {}", file.display()),
+            Place::None => Ok(()),
         }
     }
 }

@@ -22,7 +22,8 @@
 //!   [`RoadNetwork::route_by`] under a caller's [`LaneCost`] → [`LanePath`].
 //! - Georeferencing (§8.5): [`GeoTransform`] between local x/y and WGS 84 latitude/longitude
 //!   through the header's `<geoReference>` and `<offset>`.
-//! - Errors: [`Error`] with [`ErrorKind`], file and 1-based [`TextPos`].
+//! - Errors: [`Error`] with [`ErrorKind`] and a [`SourcePos`] (file, 1-based line:col; the
+//!   workspace's one position type, from `oscsim-source`).
 //! - Data: [`Road`] (`id`, `length`, `junction`, `rule`, `links`, `types`, `plan_view`,
 //!   `elevation`, `superelevation`, `lane_offsets`, `lane_sections`, `objects`, `signals`),
 //!   [`LaneSection`] (`left` 1, 2, …; `center`; `right` −1, −2, …), [`Lane`] (with its
@@ -60,7 +61,7 @@ mod network;
 mod parse;
 mod query;
 
-pub use error::{Error, ErrorKind, TextPos};
+pub use error::{Error, ErrorKind};
 pub use geo::{GeoError, GeoTransform};
 pub use geometry::{
     Arc, Geometry, GeometryKind, LocalPoint, ParamPoly3, ParamRange, PlanView, Poly3, RefPoint,
@@ -82,3 +83,4 @@ pub use query::{
     Direction, LaneChange, LaneCost, LaneHandle, LanePath, LanePosition, LaneRoute, LaneSpan,
     PathCost, RoadPoint, RoadPosition, RouteSegment, CONSTANT_MARGIN, LANE_CHANGE_COST,
 };
+pub use source::SourcePos;

@@ -18,7 +18,7 @@ fn load_error(name: &str) -> String {
         Ok(_) => panic!("{name}.xodr loaded but should fail"),
         Err(e) => {
             assert!(
-                e.pos().is_some_and(|p| p.row >= 1 && p.col >= 1),
+                e.pos().is_some_and(|p| p.line >= 1 && p.col >= 1),
                 "{name}: no position in {e}"
             );
             e.to_string()

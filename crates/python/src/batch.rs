@@ -28,7 +28,7 @@ pub struct BatchPlan {
 impl BatchPlan {
     /// Loads the distribution file `path` and the scenario it names. Raises `ScenarioError`
     /// (with the message's file:line:col; `file`, `line`, `column` set where the error is in
-    /// the scenario or its road network) when the plan cannot run.
+    /// the distribution file, the scenario or its road network) when the plan cannot run.
     #[new]
     fn new(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
         guard(|| {
@@ -38,6 +38,9 @@ impl BatchPlan {
                     let place = match &e {
                         batch::PlanError::Scenario(s) => Some(s.pos()).into(),
                         batch::PlanError::RoadNetwork(r) => r.into(),
+                        batch::PlanError::Distribution(d) => Some(d.pos()).into(),
+                        batch::PlanError::MissingScenario { pos, .. }
+                        | batch::PlanError::UndeclaredParameter { pos, .. } => Some(pos).into(),
                         _ => Place::default(),
                     };
                     let message = format!("cannot run the batch of {}: {e}", path.display());

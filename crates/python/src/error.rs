@@ -81,10 +81,12 @@ impl From<Option<&SourcePos>> for Place {
 
 impl From<&opendrive::Error> for Place {
     fn from(e: &opendrive::Error) -> Self {
-        Place {
-            file: e.file().map(|f| f.display().to_string()),
-            line: e.pos().map(|p| p.row),
-            column: e.pos().map(|p| p.col),
+        match e.pos() {
+            Some(pos) => Some(pos).into(),
+            None => Place {
+                file: e.file().map(|f| f.display().to_string()),
+                ..Place::default()
+            },
         }
     }
 }

@@ -3,6 +3,9 @@
 
 use std::fmt;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use scenario::SourcePos;
 
 /// What went wrong.
 #[derive(Debug)]
@@ -42,9 +45,10 @@ pub enum ErrorKind {
 #[derive(Debug)]
 pub struct Error {
     kind: ErrorKind,
+    /// The file, when the error concerns one.
     file: Option<PathBuf>,
-    /// 1-based line and column, when known.
-    at: Option<(usize, usize)>,
+    /// The file and 1-based line and column, when known.
+    pos: Option<SourcePos>,
 }
 
 impl Error {
@@ -53,7 +57,7 @@ impl Error {
         Error {
             kind,
             file: None,
-            at: None,
+            pos: None,
         }
     }
 
@@ -71,7 +75,11 @@ impl Error {
                 found: found.into(),
             },
             file: Some(file.to_owned()),
-            at: Some((line, col)),
+            pos: Some(SourcePos::new(
+                Arc::from(file),
+                u32::try_from(line).unwrap_or(u32::MAX),
+                u32::try_from(col).unwrap_or(u32::MAX),
+            )),
         }
     }
 
@@ -80,7 +88,7 @@ impl Error {
         Error {
             kind: ErrorKind::Io { action, source },
             file: Some(file.to_owned()),
-            at: None,
+            pos: None,
         }
     }
 
@@ -94,9 +102,9 @@ impl Error {
         self.file.as_deref()
     }
 
-    /// The 1-based line and column in [`Error::file`], if known.
-    pub fn position(&self) -> Option<(usize, usize)> {
-        self.at
+    /// The file and 1-based line and column, if known.
+    pub fn pos(&self) -> Option<&SourcePos> {
+        self.pos.as_ref()
     }
 }
 
@@ -121,10 +129,10 @@ impl fmt::Display for Error {
             ErrorKind::Run(e) => write!(f, "run: {e}")?,
             ErrorKind::Plot(e) => write!(f, "chart: {e}")?,
         }
-        match (&self.file, self.at) {
-            (Some(file), Some((line, col))) => write!(f, " at {}:{line}:{col}", file.display()),
-            (Some(file), None) => write!(f, " in {}", file.display()),
-            _ => Ok(()),
+        match (&self.pos, &self.file) {
+            (Some(pos), _) => write!(f, " at {pos}"),
+            (None, Some(file)) => write!(f, " in {}", file.display()),
+            (None, None) => Ok(()),
         }
     }
 }

@@ -60,7 +60,7 @@ fn distribution_truncation_draws_unbounded() {
         "{err}"
     );
     // At the StochasticDistribution element: line 11, column 7.
-    assert_eq!((err.pos().row, err.pos().col), (11, 7));
+    assert_eq!((err.pos().line, err.pos().col), (11, 7));
     assert!(err.to_string().ends_with(&format!(
         "found more than {MAX_REJECTED_DRAWS} draws outside them at {}:11:7",
         path.display()

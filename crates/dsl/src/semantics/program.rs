@@ -9,7 +9,9 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use crate::syntax::{parse, LineIndex};
+use source::{LineIndex, SourcePos};
+
+use crate::syntax::parse;
 
 use super::check::{check_model, Template};
 use super::collect::collect;
@@ -28,18 +30,40 @@ pub struct Source {
     pub name: String,
     /// Its text.
     pub text: String,
+    /// `name` as the file of positions.
+    file: Arc<Path>,
     index: LineIndex,
 }
 
 impl Source {
     fn new(name: String, text: String) -> Source {
         let index = LineIndex::new(&text);
-        Source { name, text, index }
+        let file = Arc::from(Path::new(&name));
+        Source {
+            name,
+            text,
+            file,
+            index,
+        }
     }
 
     /// 1-based line and column of a byte offset.
     pub fn line_col(&self, offset: u32) -> (usize, usize) {
-        self.index.line_col(offset as usize)
+        let (line, col) = self.index.line_col(&self.text, offset as usize);
+        (line as usize, col as usize)
+    }
+
+    /// The position (this file, 1-based line:col) of a byte offset.
+    pub fn pos(&self, offset: u32) -> SourcePos {
+        self.index.pos(&self.file, &self.text, offset as usize)
+    }
+}
+
+/// The position of `span`'s start in `files`; a span into no file (none is made) is `?:1:1`.
+pub fn source_pos(files: &[Source], span: Span) -> SourcePos {
+    match files.get(span.file.0 as usize) {
+        Some(f) => f.pos(span.start),
+        None => SourcePos::start_of(Arc::from(Path::new("?"))),
     }
 }
 
@@ -52,15 +76,14 @@ pub struct Diagnostics {
 }
 
 impl Diagnostics {
+    /// The position (file, 1-based line:col) of a span's start.
+    pub fn source_pos(&self, span: Span) -> SourcePos {
+        source_pos(&self.files, span)
+    }
+
     /// `FILE:LINE:COL` of a span.
     pub fn position(&self, span: Span) -> String {
-        match self.files.get(span.file.0 as usize) {
-            Some(f) => {
-                let (l, c) = f.line_col(span.start);
-                format!("{}:{l}:{c}", f.name)
-            }
-            None => "?:1:1".into(),
-        }
+        self.source_pos(span).to_string()
     }
 
     /// One line per error: "MESSAGE at FILE:LINE:COL", each related place on an indented

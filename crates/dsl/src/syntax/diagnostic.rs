@@ -104,46 +104,27 @@ impl fmt::Display for DisplayError<'_> {
     }
 }
 
-/// Byte offsets of line starts, to turn offsets into 1-based line:column.
+/// A text with its line index, to turn offsets into 1-based line:column (the workspace's
+/// one offset → line:col look-up, [`source::LineIndex`], over a text of its own).
 #[derive(Debug, Clone)]
 pub struct LineIndex {
     text: String,
-    starts: Vec<usize>,
+    lines: source::LineIndex,
 }
 
 impl LineIndex {
     /// Indexes `text` (line breaks `\n`, `\r\n` and `\r`, as the lexer reads them).
     pub fn new(text: &str) -> LineIndex {
-        let bytes = text.as_bytes();
-        let mut starts = vec![0];
-        let mut i = 0;
-        while i < bytes.len() {
-            match bytes[i] {
-                b'\n' => starts.push(i + 1),
-                b'\r' if bytes.get(i + 1) != Some(&b'\n') => starts.push(i + 1),
-                _ => {}
-            }
-            i += 1;
-        }
         LineIndex {
             text: text.to_string(),
-            starts,
+            lines: source::LineIndex::new(text),
         }
     }
 
     /// 1-based (line, column) of a byte offset; the column counts characters.
     pub fn line_col(&self, offset: usize) -> (usize, usize) {
-        let offset = offset.min(self.text.len());
-        let line = self
-            .starts
-            .partition_point(|&s| s <= offset)
-            .saturating_sub(1);
-        let start = self.starts[line];
-        let col = self
-            .text
-            .get(start..offset)
-            .map_or(offset - start, |s| s.chars().count());
-        (line + 1, col + 1)
+        let (line, col) = self.lines.line_col(&self.text, offset);
+        (line as usize, col as usize)
     }
 }
 

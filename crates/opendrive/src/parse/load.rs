@@ -15,13 +15,15 @@
 //! file's).
 
 use std::path::Path;
+use std::sync::Arc;
 
 use rayon::prelude::*;
 use roxmltree::{Document, ParsingOptions};
 use rustc_hash::FxHashMap;
+use source::SourcePos;
 
 use super::{check_references, child, read_header, read_junction, read_road, Ids, Reader};
-use crate::error::{Error, ErrorKind, TextPos};
+use crate::error::{Error, ErrorKind};
 use crate::model::{Header, Junction, Road};
 
 /// Files below this size are read whole (bytes).
@@ -67,11 +69,7 @@ fn xml_error(e: &roxmltree::Error, path: &Path) -> Error {
     let msg = msg.strip_suffix(&suffix).unwrap_or(&msg).to_string();
     Error::at(
         ErrorKind::Xml(msg),
-        path,
-        TextPos {
-            row: p.row,
-            col: p.col,
-        },
+        SourcePos::new(Arc::from(path), p.row, p.col),
     )
 }
 

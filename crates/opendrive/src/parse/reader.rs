@@ -1,14 +1,16 @@
 //! Attribute access with positions: every value read from the file is checked here, and a
-//! bad one becomes an [`Error`] naming the file, row:col, element, attribute and what was
+//! bad one becomes an [`Error`] naming the file, line:col, element, attribute and what was
 //! expected (OpenDRIVE 1.8 XSD types `t_grEqZero`, `t_grZero`, `double`).
 
 use std::cell::OnceCell;
 use std::marker::PhantomData;
 use std::path::Path;
+use std::sync::Arc;
 
 use roxmltree::{Document, Node};
+use source::{LineIndex, SourcePos};
 
-use crate::error::{Error, ErrorKind, TextPos};
+use crate::error::{Error, ErrorKind};
 use crate::math::S_TOLERANCE;
 
 /// The document being read and its path, for positions in errors.
@@ -20,10 +22,10 @@ pub(crate) struct Reader<'a, 'input> {
     /// (a chunk's wrapping start tag): document byte b is file byte `start + b − prefix`.
     start: usize,
     prefix: usize,
-    /// Byte offsets where lines start, built on the first position asked for, so that each
-    /// position costs a binary search, not a scan from the file's start (files with many
-    /// warnings would otherwise take quadratic time).
-    line_starts: OnceCell<Vec<usize>>,
+    /// The file as shared by positions, and the index of its line starts, built on the first
+    /// position asked for, so that each position costs a binary search, not a scan from the
+    /// file's start (files with many warnings would otherwise take quadratic time).
+    lines: OnceCell<(Arc<Path>, LineIndex)>,
     _doc: PhantomData<&'a Document<'input>>,
 }
 
@@ -41,35 +43,24 @@ impl<'a, 'input: 'a> Reader<'a, 'input> {
             text,
             start,
             prefix,
-            line_starts: OnceCell::new(),
+            lines: OnceCell::new(),
             _doc: PhantomData,
         }
     }
 
-    /// 1-based position of a byte offset of the document: row from the line table, column in
-    /// characters (as roxmltree counts them).
-    pub(crate) fn pos(&self, byte: usize) -> TextPos {
-        let text = self.text;
+    /// The file and 1-based line:col of a byte offset of the document (column in
+    /// characters, as roxmltree counts them).
+    pub(crate) fn pos(&self, byte: usize) -> SourcePos {
         let byte = self.start + byte.saturating_sub(self.prefix);
-        let starts = self.line_starts.get_or_init(|| {
-            std::iter::once(0)
-                .chain(text.match_indices('\n').map(|(i, _)| i + 1))
-                .collect()
-        });
-        let byte = byte.min(text.len());
-        let line = starts.partition_point(|&st| st <= byte).saturating_sub(1);
-        let col = text
-            .get(starts[line]..byte)
-            .map_or(0, |l| l.chars().count());
-        TextPos {
-            row: u32::try_from(line + 1).unwrap_or(u32::MAX),
-            col: u32::try_from(col + 1).unwrap_or(u32::MAX),
-        }
+        let (file, lines) = self
+            .lines
+            .get_or_init(|| (Arc::from(self.path), LineIndex::new(self.text)));
+        lines.pos(file, self.text, byte)
     }
 
     /// An error at an element's start tag.
     pub(crate) fn error_at(&self, node: Node, kind: ErrorKind) -> Error {
-        Error::at(kind, self.path, self.pos(node.range().start))
+        Error::at(kind, self.pos(node.range().start))
     }
 
     /// An error at an attribute's value (or the element, if the attribute is absent).
@@ -77,7 +68,7 @@ impl<'a, 'input: 'a> Reader<'a, 'input> {
         let byte = node
             .attribute_node(name)
             .map_or(node.range().start, |a| a.range_value().start);
-        Error::at(kind, self.path, self.pos(byte))
+        Error::at(kind, self.pos(byte))
     }
 
     /// An "expected …, found …" error for an attribute.

@@ -17,12 +17,13 @@
 
 use std::collections::BTreeMap;
 
-use super::error::{DistributionErrorKind as Kind, TextPos};
+use super::error::DistributionErrorKind as Kind;
 use super::model::{
     DeterministicKind, DeterministicParameterDistribution,
     DeterministicSingleParameterDistributionType as Single,
 };
 use super::plan::MAX_RUNS;
+use crate::SourcePos;
 
 /// One distribution's alternatives: each a list of (parameter, value).
 type Alternatives = Vec<Vec<(String, String)>>;
@@ -31,12 +32,12 @@ type Alternatives = Vec<Vec<(String, String)>>;
 /// distribution at fault.
 pub(crate) fn expand(
     distributions: &[DeterministicParameterDistribution],
-) -> Result<Vec<BTreeMap<String, String>>, (Kind, TextPos)> {
+) -> Result<Vec<BTreeMap<String, String>>, (Kind, SourcePos)> {
     let mut seen = std::collections::BTreeSet::new();
     let mut runs = vec![BTreeMap::new()];
     for distribution in distributions {
         let alternatives =
-            alternatives(&distribution.kind).map_err(|kind| (kind, distribution.pos))?;
+            alternatives(&distribution.kind).map_err(|kind| (kind, distribution.pos.clone()))?;
         let names: std::collections::BTreeSet<&str> = alternatives
             .iter()
             .flatten()
@@ -47,7 +48,7 @@ pub(crate) fn expand(
                 Kind::DuplicateParameter {
                     name: (*name).to_owned(),
                 },
-                distribution.pos,
+                distribution.pos.clone(),
             ));
         }
         seen.extend(names.into_iter().map(str::to_owned));
@@ -58,7 +59,7 @@ pub(crate) fn expand(
                     limit: MAX_RUNS,
                     found: count,
                 },
-                distribution.pos,
+                distribution.pos.clone(),
             ));
         }
         runs = runs

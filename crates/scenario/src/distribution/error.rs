@@ -1,31 +1,7 @@
 //! Errors of reading and expanding an OpenSCENARIO 1.3 §9.5 parameter value distribution file,
-//! each with the file and the 1-based row:column of the element or attribute at fault.
+//! each with the file and the 1-based line:column (a [`SourcePos`]) of the element or attribute at fault.
 
-use std::path::PathBuf;
-
-/// A 1-based row and column in a file.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-pub struct TextPos {
-    /// Row, from 1.
-    pub row: u32,
-    /// Column in characters, from 1.
-    pub col: u32,
-}
-
-impl From<roxmltree::TextPos> for TextPos {
-    fn from(p: roxmltree::TextPos) -> Self {
-        Self {
-            row: p.row,
-            col: p.col,
-        }
-    }
-}
-
-impl std::fmt::Display for TextPos {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}:{}", self.row, self.col)
-    }
-}
+use crate::SourcePos;
 
 /// What went wrong. Each variant's Display reads "expected X, found Y".
 #[derive(Debug, Clone, PartialEq)]
@@ -144,18 +120,17 @@ impl std::fmt::Display for DistributionErrorKind {
 
 /// An error in a parameter value distribution file: kind, file and position.
 ///
-/// Display: "expected X, found Y at file:row:col".
+/// Display: "expected X, found Y at file:line:col".
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{kind} at {}:{pos}", file.display())]
+#[error("{kind} at {pos}")]
 pub struct DistributionError {
     kind: DistributionErrorKind,
-    file: PathBuf,
-    pos: TextPos,
+    pos: SourcePos,
 }
 
 impl DistributionError {
-    pub(crate) fn new(kind: DistributionErrorKind, file: PathBuf, pos: TextPos) -> Self {
-        Self { kind, file, pos }
+    pub(crate) fn new(kind: DistributionErrorKind, pos: SourcePos) -> Self {
+        Self { kind, pos }
     }
 
     /// What went wrong.
@@ -165,11 +140,11 @@ impl DistributionError {
 
     /// The distribution file.
     pub fn file(&self) -> &std::path::Path {
-        &self.file
+        &self.pos.file
     }
 
-    /// Where in the file (1:1 for errors of the whole file).
-    pub fn pos(&self) -> TextPos {
-        self.pos
+    /// The file and where in it (1:1 for errors of the whole file).
+    pub fn pos(&self) -> &SourcePos {
+        &self.pos
     }
 }

@@ -9,7 +9,7 @@
 //! | `deterministic` | cross product of `DistributionSet`, `DistributionRange`, `ValueSetDistribution` |
 //! | `stochastic` | seeded ChaCha20 draws of Normal, LogNormal, Uniform, Poisson, Histogram, ProbabilityDistributionSet |
 //! | `plan` | [`DistributionPlan`]: the front door |
-//! | `error` | [`DistributionError`] with file:row:col |
+//! | `error` | [`DistributionError`] with file:line:col |
 
 mod deterministic;
 mod error;
@@ -18,6 +18,6 @@ mod plan;
 mod reader;
 mod stochastic;
 
-pub use error::{DistributionError, DistributionErrorKind, TextPos};
+pub use error::{DistributionError, DistributionErrorKind};
 pub use plan::{read, DistributionPlan, MAX_RUNS};
 pub use stochastic::{seed_for, MAX_ATTEMPTS, MAX_REJECTED_DRAWS};

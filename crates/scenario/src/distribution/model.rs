@@ -1,7 +1,7 @@
 //! The typed content of an OpenSCENARIO 1.3 §9.5 parameter value distribution file, element
 //! for element as the XSD (`ParameterValueDistribution` and below) names it.
 
-use super::error::TextPos;
+use crate::SourcePos;
 
 /// XSD `ParameterValueDistribution`: the scenario to run and how to vary its parameters.
 #[derive(Debug, Clone, PartialEq)]
@@ -9,7 +9,7 @@ pub struct ParameterValueDistribution {
     /// `ScenarioFile@filepath` as written.
     pub scenario_file: String,
     /// Position of the `ScenarioFile` element.
-    pub scenario_file_pos: TextPos,
+    pub scenario_file_pos: SourcePos,
     /// `Deterministic` or `Stochastic`.
     pub definition: DistributionDefinition,
 }
@@ -29,7 +29,7 @@ pub struct DeterministicParameterDistribution {
     /// Single- or multi-parameter.
     pub kind: DeterministicKind,
     /// Position of the `Deterministic…Distribution` element.
-    pub pos: TextPos,
+    pub pos: SourcePos,
 }
 
 /// The two deterministic kinds.
@@ -81,7 +81,7 @@ pub struct Stochastic {
     /// The `StochasticDistribution`s in document order.
     pub distributions: Vec<StochasticDistribution>,
     /// Position of the `numberOfTestRuns` attribute.
-    pub pos: TextPos,
+    pub pos: SourcePos,
 }
 
 /// XSD `StochasticDistribution`, with its element's position.
@@ -92,7 +92,7 @@ pub struct StochasticDistribution {
     /// The distribution.
     pub kind: StochasticDistributionType,
     /// Position of the `StochasticDistribution` element.
-    pub pos: TextPos,
+    pub pos: SourcePos,
 }
 
 /// XSD group `StochasticDistributionType` (without `UserDefinedDistribution`).

@@ -3,11 +3,13 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
-use super::error::{DistributionError, DistributionErrorKind, TextPos};
+use super::error::{DistributionError, DistributionErrorKind};
 use super::model::{DistributionDefinition, ParameterValueDistribution};
 use super::reader::read_distribution;
 use super::{deterministic, stochastic};
+use crate::SourcePos;
 
 /// Most parameter sets one distribution file may produce (memory bound against typos such as a
 /// tiny `stepWidth`).
@@ -32,7 +34,7 @@ impl DistributionPlan {
             let kind = DistributionErrorKind::Io {
                 message: e.to_string(),
             };
-            DistributionError::new(kind, path.to_path_buf(), TextPos { row: 1, col: 1 })
+            DistributionError::new(kind, SourcePos::start_of(Arc::from(path)))
         })?;
         Self::from_text(&text, path)
     }
@@ -53,7 +55,7 @@ impl DistributionPlan {
             DistributionDefinition::Deterministic(list) => deterministic::expand(list),
             DistributionDefinition::Stochastic(s) => stochastic::sample(s),
         }
-        .map_err(|(kind, pos)| DistributionError::new(kind, path.to_path_buf(), pos))?;
+        .map_err(|(kind, pos)| DistributionError::new(kind, pos))?;
         let base = path.parent().unwrap_or_else(|| Path::new(""));
         Ok(Self {
             scenario_file: base.join(&distribution.scenario_file),

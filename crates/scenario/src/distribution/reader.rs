@@ -1,22 +1,25 @@
 //! Reads an OpenSCENARIO 1.3 §9.5 parameter value distribution file (XSD `OpenScenario` with
 //! the `ParameterValueDistributionDefinition` category) into the [`model`](super::model)
-//! types, checking every value's domain, with file:row:col on every error.
+//! types, checking every value's domain, with file:line:col on every error.
 //!
 //! Own small reader over roxmltree rather than the scenario reader: the distribution file is a
 //! separate document type with no parameters, catalogs or expressions. Elements outside the
 //! XSD's content model are errors; comments and whitespace are ignored.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
+use std::sync::Arc;
 
 use roxmltree::{Document, Node};
 
-use super::error::{DistributionError, DistributionErrorKind as Kind, TextPos};
+use super::error::{DistributionError, DistributionErrorKind as Kind};
 use super::model::{
     DeterministicKind, DeterministicParameterDistribution,
     DeterministicSingleParameterDistributionType as Single, DistributionDefinition,
     ParameterValueDistribution, Range, Stochastic, StochasticDistribution,
     StochasticDistributionType as Sto,
 };
+use crate::source::LineIndex;
+use crate::SourcePos;
 
 /// Parses distribution-file `text`; `file` names it in errors.
 pub fn read_distribution(text: &str, file: &Path) -> Result<ParameterValueDistribution> {
@@ -26,32 +29,35 @@ pub fn read_distribution(text: &str, file: &Path) -> Result<ParameterValueDistri
         // roxmltree ends its messages with " at row:col"; the position goes at the end anyway.
         let suffix = format!(" at {}:{}", pos.row, pos.col);
         let message = message.strip_suffix(&suffix).unwrap_or(&message).to_owned();
-        DistributionError::new(Kind::Xml { message }, file.to_path_buf(), pos.into())
+        let pos = SourcePos::new(Arc::from(file), pos.row, pos.col);
+        DistributionError::new(Kind::Xml { message }, pos)
     })?;
     let reader = Reader {
         doc: &doc,
-        file: file.to_path_buf(),
+        file: Arc::from(file),
+        lines: LineIndex::new(doc.input_text()),
     };
     reader.open_scenario(doc.root_element())
 }
 
 struct Reader<'d, 'i> {
     doc: &'d Document<'i>,
-    file: PathBuf,
+    file: Arc<Path>,
+    lines: LineIndex,
 }
 
 type Result<T> = std::result::Result<T, DistributionError>;
 
 impl<'d, 'i> Reader<'d, 'i> {
     fn error(&self, kind: Kind, byte: usize) -> DistributionError {
-        DistributionError::new(kind, self.file.clone(), self.pos(byte))
+        DistributionError::new(kind, self.pos(byte))
     }
 
-    fn pos(&self, byte: usize) -> TextPos {
-        self.doc.text_pos_at(byte).into()
+    fn pos(&self, byte: usize) -> SourcePos {
+        self.lines.pos(&self.file, self.doc.input_text(), byte)
     }
 
-    fn node_pos(&self, node: Node<'d, 'i>) -> TextPos {
+    fn node_pos(&self, node: Node<'d, 'i>) -> SourcePos {
         self.pos(node.range().start)
     }
 

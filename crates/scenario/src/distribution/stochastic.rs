@@ -32,9 +32,10 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha20Rng;
 use rand_distr::{LogNormal, Normal, Poisson};
 
-use super::error::{DistributionErrorKind as Kind, TextPos};
+use super::error::DistributionErrorKind as Kind;
 use super::model::{Range, Stochastic, StochasticDistributionType as Sto};
 use super::plan::MAX_RUNS;
+use crate::SourcePos;
 
 /// Most draws tried for one value of a truncated distribution.
 pub const MAX_ATTEMPTS: u32 = 10_000;
@@ -65,7 +66,7 @@ enum Sampler<'a> {
 /// Draws the runs. Errors carry the position of the distribution at fault.
 pub(crate) fn sample(
     stochastic: &Stochastic,
-) -> Result<Vec<BTreeMap<String, String>>, (Kind, TextPos)> {
+) -> Result<Vec<BTreeMap<String, String>>, (Kind, SourcePos)> {
     let runs = stochastic.number_of_test_runs as usize;
     if runs > MAX_RUNS {
         return Err((
@@ -73,7 +74,7 @@ pub(crate) fn sample(
                 limit: MAX_RUNS,
                 found: runs as u128,
             },
-            stochastic.pos,
+            stochastic.pos.clone(),
         ));
     }
     let mut seen = std::collections::BTreeSet::new();
@@ -83,14 +84,14 @@ pub(crate) fn sample(
                 Kind::DuplicateParameter {
                     name: d.parameter_name.clone(),
                 },
-                d.pos,
+                d.pos.clone(),
             ));
         }
     }
     let samplers = stochastic
         .distributions
         .iter()
-        .map(|d| sampler(&d.kind).map_err(|kind| (kind, d.pos)))
+        .map(|d| sampler(&d.kind).map_err(|kind| (kind, d.pos.clone())))
         .collect::<Result<Vec<_>, _>>()?;
     let mut rng = ChaCha20Rng::seed_from_u64(seed_for(stochastic.random_seed));
     let mut rejected = 0u64;
@@ -103,7 +104,7 @@ pub(crate) fn sample(
                 .map(|(d, s)| {
                     Ok((
                         d.parameter_name.clone(),
-                        draw(s, &mut rng, &mut rejected).map_err(|kind| (kind, d.pos))?,
+                        draw(s, &mut rng, &mut rejected).map_err(|kind| (kind, d.pos.clone()))?,
                     ))
                 })
                 .collect()

@@ -1,5 +1,5 @@
 //! Bad distribution files never panic or hang: each case asserts the exact message with
-//! file:row:col (1-based) of the element or attribute at fault.
+//! file:line:col (1-based) of the element or attribute at fault.
 
 use std::path::Path;
 
@@ -205,7 +205,7 @@ proptest::proptest! {
         let damaged = String::from_utf8_lossy(&bytes).into_owned();
         if let Err(e) = DistributionPlan::from_text(&damaged, Path::new(FILE)) {
             let rows = damaged.lines().count().max(1) as u32;
-            proptest::prop_assert!(e.pos().row >= 1 && e.pos().row <= rows + 1, "{e}");
+            proptest::prop_assert!(e.pos().line >= 1 && e.pos().line <= rows + 1, "{e}");
         }
     }
 }
