@@ -72,8 +72,9 @@ fn narrow(records: &[Cubic], origin: Real, s: Real, range: &mut (Real, Real)) ->
 mod tests {
     use super::*;
     use crate::math::Cubic;
-    use crate::model::{Lane, LaneSection, LaneType};
+    use crate::model::{Lane, LaneSection};
     use crate::query::frame::tests::straight_road;
+    use crate::query::lane_span::tests::lane;
 
     fn cubic(start: Real, a: Real, b: Real) -> Cubic {
         Cubic {
@@ -82,21 +83,6 @@ mod tests {
             b,
             c: -0.0,
             d: 0.0,
-        }
-    }
-
-    fn lane(id: i32, widths: Vec<Cubic>) -> Lane {
-        Lane {
-            id,
-            lane_type: LaneType::Driving,
-            level: false,
-            predecessor: None,
-            successor: None,
-            widths,
-            borders: Vec::new(),
-            road_marks: Vec::new(),
-            heights: Vec::new(),
-            speed_limit: None,
         }
     }
 

@@ -188,12 +188,13 @@ pub(crate) fn road_extent(road: &Road, section: &LaneSection, s: Real) -> (Real,
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::math::Cubic;
     use crate::model::LaneType;
 
-    fn lane(id: i32, widths: Vec<Cubic>) -> Lane {
+    /// A driving lane with the given id and width entries (no marks, links or heights).
+    pub(crate) fn lane(id: i32, widths: Vec<Cubic>) -> Lane {
         Lane {
             id,
             lane_type: LaneType::Driving,
