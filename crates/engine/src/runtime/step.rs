@@ -426,14 +426,7 @@ impl Engine {
             super::finite::check(&world.entities, time).map_err(|(_, e)| e)?;
             let clock = Instant::now();
             frames
-                .frame(&Frame {
-                    time,
-                    step: self.step,
-                    entities: &world.entities,
-                    signals: &world.signals,
-                    environment: &world.environment,
-                    source: &self.source,
-                })
+                .frame(&frame_of(world, &self.source, time, self.step))
                 .map_err(output_error("frames"))?;
             self.counters.output += clock.elapsed();
         }
@@ -479,14 +472,7 @@ impl Engine {
             return Err(e);
         }
         frames
-            .frame(&Frame {
-                time,
-                step: self.step,
-                entities: &world.entities,
-                signals: &world.signals,
-                environment: &world.environment,
-                source: &self.source,
-            })
+            .frame(&frame_of(world, &self.source, time, self.step))
             .map_err(output_error("frames"))?;
         self.emit(&log.into_inner(), events)?;
         self.counters.output += clock.elapsed();
@@ -527,6 +513,19 @@ impl Engine {
         frames.finish().map_err(output_error("frames"))?;
         events.finish().map_err(output_error("events"))?;
         Ok(reason)
+    }
+}
+
+/// The frame the output stage hands to the sinks: the world's state at `time` (both the t = 0
+/// frame and every step's frame are made here).
+fn frame_of<'a>(world: &'a World, source: &'a ScenarioSource, time: f64, step: u64) -> Frame<'a> {
+    Frame {
+        time,
+        step,
+        entities: &world.entities,
+        signals: &world.signals,
+        environment: &world.environment,
+        source,
     }
 }
 
