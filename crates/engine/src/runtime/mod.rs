@@ -19,11 +19,13 @@
 //! | `external` | ExternalObjectReference entities placed at their OpenDRIVE objects |
 //! | `finite` | the step's guard: no non-finite entity state reaches a frame |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
-//! | `step` | `Engine` and its five stages |
+//! | `engine` | `Engine`: the built scenario and its API |
+//! | `step` | the fixed step, one private method per stage |
 
 pub(crate) mod build;
 mod conditions;
 mod config;
+mod engine;
 pub(crate) mod entity;
 pub(crate) mod error;
 mod external;
@@ -39,10 +41,10 @@ pub(crate) mod world;
 
 pub use crate::actions::ControllerOverrides;
 pub use config::{EngineConfig, TrafficModel, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
+pub use engine::{Engine, StageCounters, StopReason};
 pub use entity::{Entity, EntityId, EntityKind, Visibility};
 pub use error::{RuntimeError, RuntimeErrorKind};
 pub use shapes::{shape_value, Span};
-pub use step::{Engine, StageCounters, StopReason};
 
 // For the controllers stage (engine module `controller`).
 pub(crate) use world::{place_on_lane, World};
