@@ -144,6 +144,18 @@ pub enum ErrorKind {
         /// The entity and what it has.
         found: String,
     },
+    /// A host program set a parameter ([`Engine::set_parameter`](crate::Engine::set_parameter))
+    /// to a value its declaration does not allow: one that does not convert to the declared
+    /// type, or one outside its ConstraintGroups. The parameter keeps its value.
+    #[error("expected {expected}, found {found}")]
+    ParameterValue {
+        /// The parameter's name.
+        name: String,
+        /// What the declaration allows.
+        expected: String,
+        /// The value given.
+        found: String,
+    },
     /// A sink refused a frame or a record, or could not finish.
     #[error("cannot write {what}: {error}")]
     Output {

@@ -429,8 +429,9 @@ impl Simulation {
     }
 
     /// Sets global parameter `name` from the next step on, as a ParameterSetAction would; the
-    /// value is converted to the declared type without loss. Raises `KeyError` for an
-    /// undeclared parameter, `ValueError` when the value does not convert.
+    /// value is converted to the declared type without loss and must meet the parameter's
+    /// ConstraintGroups. Raises `KeyError` for an undeclared parameter, `ValueError` when the
+    /// value does not convert or breaks the constraints (the parameter keeps its value).
     fn set_parameter(&self, name: &str, value: &Bound<'_, PyAny>) -> PyResult<()> {
         let value = value::from_py(value)?;
         let name = name.trim_start_matches('$');

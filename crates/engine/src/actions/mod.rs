@@ -17,7 +17,7 @@ mod follow_trajectory;
 mod lane_change;
 mod lane_offset;
 mod override_controller;
-mod parameter;
+pub(crate) mod parameter;
 mod routing;
 mod speed;
 mod speed_profile;

@@ -24,14 +24,22 @@ pub(crate) fn apply(
     pos: &SourcePos,
 ) -> Result<(), RuntimeError> {
     modify_value(&mut world.parameters, "parameter", name, rule, pos, |new| {
-        let groups = world
-            .parameter_constraints
-            .get(name)
-            .map_or(&[][..], Vec::as_slice);
-        ValueConstraintGroup::check(groups, new).map_err(|expected| {
-            RuntimeError::at(format!("parameter {name} {expected}"), new.to_string(), pos)
-        })
+        meets_constraints(&world.parameter_constraints, name, new)
+            .map_err(|expected| RuntimeError::at(expected, new.to_string(), pos))
     })
+}
+
+/// Whether `value` meets parameter `name`'s ConstraintGroups in `constraints` (a parameter
+/// without any meets them); `Err` says what they allow ("parameter Limit greaterOrEqual 0 and
+/// lessOrEqual 40 or equalTo 100"). Serves the actions here and `Engine::set_parameter`.
+pub(crate) fn meets_constraints(
+    constraints: &BTreeMap<String, Vec<ValueConstraintGroup>>,
+    name: &str,
+    value: &Value,
+) -> Result<(), String> {
+    let groups = constraints.get(name).map_or(&[][..], Vec::as_slice);
+    ValueConstraintGroup::check(groups, value)
+        .map_err(|allowed| format!("parameter {name} {allowed}"))
 }
 
 /// Applies `rule` to entry `name` of `store` (parameters or variables): Set parses the text as

@@ -169,24 +169,43 @@ impl Engine {
     /// Sets global parameter `name` from outside between steps, as a ParameterSetAction would
     /// (OpenSCENARIO 1.3 §7.7.1): `value` is converted to the parameter's declared type without
     /// loss ([`scenario::expr::Value::convert_to`]; text is parsed as the type); conditions of
-    /// the next step read it. Returns `Ok(false)`, changing nothing, when the scenario declares
-    /// no global parameter `name`.
+    /// the next step read it. The value must meet the parameter's ConstraintGroups, as a
+    /// ParameterSetAction's must (actions/parameter.rs). Returns `Ok(false)`, changing nothing,
+    /// when the scenario declares no global parameter `name`; an error
+    /// ([`ErrorKind::ParameterValue`](crate::ErrorKind::ParameterValue)), changing nothing,
+    /// when the value does not convert or breaks the constraints.
     pub fn set_parameter(
         &mut self,
         name: &str,
         value: &scenario::expr::Value,
-    ) -> Result<bool, scenario::expr::ExprError> {
+    ) -> Result<bool, RuntimeError> {
         use scenario::expr::Value;
-        let parameters = &mut self.world.get_mut().parameters;
-        let Some(old) = parameters.get(name) else {
+        let world = self.world.get_mut();
+        let Some(old) = world.parameters.get(name) else {
             return Ok(false);
         };
         let ty = old.value_type();
-        let new = match value {
-            Value::String(text) => Value::parse(ty, text)?,
-            v => v.convert_to(ty)?,
+        let refused = |expected: String, found: String| {
+            RuntimeError::new(RuntimeErrorKind::ParameterValue {
+                name: name.to_owned(),
+                expected,
+                found,
+            })
         };
-        parameters.insert(name.to_owned(), new);
+        let new = match value {
+            Value::String(text) => Value::parse(ty, text),
+            v => v.convert_to(ty),
+        }
+        .map_err(|e| {
+            let found = match value {
+                Value::String(text) => format!("'{text}' ({e})"),
+                v => format!("{v} ({e})"),
+            };
+            refused(format!("a value of type {}", ty.xsd_name()), found)
+        })?;
+        crate::actions::parameter::meets_constraints(&world.parameter_constraints, name, &new)
+            .map_err(|expected| refused(expected, new.to_string()))?;
+        world.parameters.insert(name.to_owned(), new);
         Ok(true)
     }
 

@@ -119,6 +119,49 @@ fn parameter_values_that_meet_their_constraints_are_set() {
         .any(|e| matches!(e, EventRecord::Error { .. })));
 }
 
+/// A host program's `Engine::set_parameter` meets the same ConstraintGroups
+/// (parameter_constraints.xosc: Limit in [0, 40] or equal to 100, declared 10): 100 meets the
+/// second group and is set; 40.5 is above the first group's bound and not 100, so it is refused
+/// and Limit keeps 100; text that is no double is refused as not of the declared type; an
+/// undeclared name changes nothing.
+#[test]
+fn set_parameter_from_the_host_meets_the_constraint_groups() {
+    let path = file("parameter_constraints.xosc");
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+    assert_eq!(engine.parameter("Limit"), Some(Value::Double(10.0)));
+    assert_eq!(
+        engine.set_parameter("Limit", &Value::Int(100)).ok(),
+        Some(true)
+    );
+    assert_eq!(engine.parameter("Limit"), Some(Value::Double(100.0)));
+
+    let err = engine
+        .set_parameter("Limit", &Value::Double(40.5))
+        .expect_err("40.5 is in neither group");
+    assert!(
+        matches!(err.kind(), engine::ErrorKind::ParameterValue { name, .. } if name == "Limit")
+    );
+    assert_eq!(
+        err.to_string(),
+        "expected parameter Limit greaterOrEqual 0 and lessOrEqual 40 or equalTo 100, found 40.5"
+    );
+    assert_eq!(engine.parameter("Limit"), Some(Value::Double(100.0)));
+
+    let err = engine
+        .set_parameter("Limit", &Value::String("fast".into()))
+        .expect_err("not a double");
+    assert!(
+        err.to_string()
+            .starts_with("expected a value of type double, found 'fast'"),
+        "{err}"
+    );
+    assert_eq!(engine.parameter("Limit"), Some(Value::Double(100.0)));
+    assert_eq!(
+        engine.set_parameter("NoSuch", &Value::Int(1)).ok(),
+        Some(false)
+    );
+}
+
 /// With the declared Step = 20 the ParameterModifyAction of t = 2 s would give 30 + 20 = 50,
 /// in neither group: the run fails at that Action (`<Action name="AddStep">`, line 69,
 /// column 15) with the message a declared value breaking the constraints gets at load, and
