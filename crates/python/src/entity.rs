@@ -216,6 +216,14 @@ impl Entity {
         self.state.vehicle_category.map(|c| c.as_str())
     }
 
+    /// The traffic role as the scenario writes it (`Vehicle/@role`, `Pedestrian/@role`, or drawn
+    /// from a TrafficDefinition's VehicleRoleDistribution: `civil`, `police`, `ambulance`, …),
+    /// None when none is given.
+    #[getter]
+    fn role(&self) -> Option<&'static str> {
+        self.state.role.map(|r| r.as_str())
+    }
+
     /// Simulation time of this state (s).
     #[getter]
     fn time(&self) -> f64 {

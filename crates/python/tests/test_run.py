@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import oscsim
-from conftest import BUNDLED, run_cli
+from conftest import BUNDLED, REPO, run_cli
 
 
 def csv_rows_from_python(sim: oscsim.Simulation) -> list:
@@ -91,6 +91,7 @@ def test_entity_state():
     # (a few 1e-6 m here): tolerance 1e-5 m.
     assert ego.time == pytest.approx(0.05)
     assert sim.in_scene("Ego") and ego.kind == "vehicle" and ego.vehicle_category == "car"
+    assert ego.role is None  # the bundled Vehicle has no role attribute
     assert ego.speed == 25.0
     rp = ego.road_position
     assert rp is not None and (rp.road_id, rp.lane_id) == ("0", -2)
@@ -209,3 +210,16 @@ def test_python_controller_class():
     assert sim.entity("Ego").speed == pytest.approx(25.0 - 2.0 * 0.05 * 19, abs=1e-9)
     with pytest.raises(TypeError):
         sim.set_controller("Ego", object())
+
+
+def test_roles_declared_and_drawn():
+    # traffic_roles.xosc (engine tests): the Ego is declared with role="ambulance"; the
+    # TrafficSourceAction spawns 2 vehicles/s whose roles are drawn from civil 3, police 1,
+    # ambulance 0, so after 2 s every spawned vehicle is civil or police, never ambulance.
+    path = REPO / "crates" / "engine" / "tests" / "files" / "entities" / "traffic_roles.xosc"
+    sim = oscsim.Simulation(path, duration=2.0)
+    sim.run()
+    assert sim.entity("Ego").role == "ambulance"
+    spawned = [e for e in sim.entities if e.name != "Ego"]
+    assert spawned, "the source spawned vehicles"
+    assert {e.role for e in spawned} <= {"civil", "police"}
