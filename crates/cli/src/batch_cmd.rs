@@ -149,12 +149,13 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
     batch::write_outputs(out, &table)?;
     let seconds = wall.elapsed().as_secs_f64();
     println!(
-        "{}\n{} in {:.2} s ({:.1} variants/s on {} jobs); results in {}",
+        "{}\n{} in {:.2} s ({:.1} variants/s on {} {}); results in {}",
         batch::summary(&table),
         plan.distribution.display(),
         seconds,
         table.rows.len() as f64 / seconds.max(1e-9),
         options.jobs,
+        if options.jobs == 1 { "job" } else { "jobs" },
         out.display()
     );
     Ok(exit_code(&table))
