@@ -23,6 +23,7 @@ use opendrive::{normalize_angle, Real};
 use scenario::Axles;
 
 use super::Trajectory;
+use crate::models::single_track::arc_step;
 
 /// Pure pursuit of one vehicle along an open trajectory.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -129,19 +130,15 @@ pub fn pursuit_curvature([x, y, h]: [Real; 3], [gx, gy]: [Real; 2], max_curvatur
     (2.0 * alpha.sin() / l).clamp(-max_curvature, max_curvature)
 }
 
-/// The pose after driving `distance` m on an arc of `curvature` from (x, y) heading `h`.
+/// The pose after driving `distance` m on an arc of `curvature` from (x, y) heading `h`: the
+/// single-track model's arc ([`arc_step`]) with the heading normalised to (−π, π]; on a
+/// straight (a turn below 1e-9 rad, whose sagitta is below 1e-9·distance) the heading is kept.
 pub fn drive_arc([x, y, h]: [Real; 3], curvature: Real, distance: Real) -> [Real; 3] {
-    let turn = curvature * distance;
-    if turn.abs() < crate::tolerance::TURN {
-        // Straight to within 1e-9 rad: the arc's sagitta is below 1e-9·distance.
-        return [x + distance * h.cos(), y + distance * h.sin(), h];
+    let (x1, y1, h1) = arc_step(x, y, h, distance, curvature);
+    if (curvature * distance).abs() < crate::tolerance::TURN {
+        return [x1, y1, h];
     }
-    let h1 = h + turn;
-    [
-        x + (h1.sin() - h.sin()) / curvature,
-        y - (h1.cos() - h.cos()) / curvature,
-        normalize_angle(h1),
-    ]
+    [x1, y1, normalize_angle(h1)]
 }
 
 #[cfg(test)]
