@@ -25,6 +25,15 @@ impl SourcePos {
     pub fn start_of(file: Arc<Path>) -> Self {
         Self::new(file, 1, 1)
     }
+
+    /// `message` without a trailing ` at line:col` naming this place: a library's message
+    /// (roxmltree ends every error so) whose position the caller reports as this `SourcePos`,
+    /// so that the place is shown once. Other messages are returned unchanged.
+    pub fn strip_from<'m>(&self, message: &'m str) -> &'m str {
+        message
+            .strip_suffix(&format!(" at {}:{}", self.line, self.col))
+            .unwrap_or(message)
+    }
 }
 
 impl fmt::Display for SourcePos {
@@ -44,5 +53,19 @@ mod tests {
         let start = SourcePos::start_of(Arc::from(Path::new("s.xosc")));
         assert_eq!((start.line, start.col), (1, 1));
         assert_eq!(start.to_string(), "s.xosc:1:1");
+    }
+
+    #[test]
+    fn strips_its_own_place_from_a_message() {
+        let pos = SourcePos::new(Arc::from(Path::new("a.xosc")), 3, 14);
+        // roxmltree's message for a bad closing tag at 3:14.
+        let message = "expected 'Init' tag, not 'Story' at 3:14";
+        assert_eq!(pos.strip_from(message), "expected 'Init' tag, not 'Story'");
+        // Another place, or none, is kept.
+        assert_eq!(
+            pos.strip_from("unexpected end at 3:15"),
+            "unexpected end at 3:15"
+        );
+        assert_eq!(pos.strip_from("no position"), "no position");
     }
 }

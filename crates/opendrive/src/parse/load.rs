@@ -63,13 +63,10 @@ fn options<'a>() -> ParsingOptions<'a> {
 /// The roxmltree error as this crate's, at its position.
 fn xml_error(e: &roxmltree::Error, path: &Path) -> Error {
     let p = e.pos();
-    // roxmltree's message ends in " at row:col"; the position is reported once.
-    let msg = e.to_string();
-    let suffix = format!(" at {}:{}", p.row, p.col);
-    let msg = msg.strip_suffix(&suffix).unwrap_or(&msg).to_string();
+    let pos = SourcePos::new(Arc::from(path), p.row, p.col);
     Error::at(
-        ErrorKind::Xml(msg),
-        SourcePos::new(Arc::from(path), p.row, p.col),
+        ErrorKind::Xml(pos.strip_from(&e.to_string()).to_owned()),
+        pos,
     )
 }
 

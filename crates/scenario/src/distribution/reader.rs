@@ -24,12 +24,9 @@ use crate::SourcePos;
 /// Parses distribution-file `text`; `file` names it in errors.
 pub fn read_distribution(text: &str, file: &Path) -> Result<ParameterValueDistribution> {
     let doc = Document::parse(text).map_err(|e| {
-        let message = e.to_string();
-        let pos = e.pos();
-        // roxmltree ends its messages with " at row:col"; the position goes at the end anyway.
-        let suffix = format!(" at {}:{}", pos.row, pos.col);
-        let message = message.strip_suffix(&suffix).unwrap_or(&message).to_owned();
-        let pos = SourcePos::new(Arc::from(file), pos.row, pos.col);
+        let p = e.pos();
+        let pos = SourcePos::new(Arc::from(file), p.row, p.col);
+        let message = pos.strip_from(&e.to_string()).to_owned();
         DistributionError::new(Kind::Xml { message }, pos)
     })?;
     let reader = Reader {

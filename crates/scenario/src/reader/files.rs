@@ -80,17 +80,9 @@ pub(crate) fn parse(source: &Source) -> Result<Doc<'_>> {
     };
     let doc = roxmltree::Document::parse_with_options(text, options).map_err(|e| {
         let p = e.pos();
-        let message = e.to_string();
-        let suffix = format!(" at {}:{}", p.row, p.col);
-        let message = message.strip_suffix(&suffix).unwrap_or(&message).to_owned();
-        Error::new(
-            ErrorKind::Xml { message },
-            SourcePos {
-                file: source.path.clone(),
-                line: p.row,
-                col: p.col,
-            },
-        )
+        let pos = SourcePos::new(source.path.clone(), p.row, p.col);
+        let message = pos.strip_from(&e.to_string()).to_owned();
+        Error::new(ErrorKind::Xml { message }, pos)
     })?;
     Ok(Doc {
         path: source.path.clone(),
