@@ -35,8 +35,10 @@
 //! `keep_lane`, `keep_speed`, `physical_movement(must_be_physical)` (no contradicting change;
 //! `modifier::check_keeps`) and `movement_mode: monotonous` on `position(…, at: end)`.
 //!
-//! This module schedules the phases; `invoke` plans one invocation's actions, `motion` holds
-//! the speed profiles, modifier values, lane targets and limits they use.
+//! This module holds the plan's types and walks the scenario's phases; `schedule` schedules one
+//! phase and its members, `events` turns conditions and events into triggers, `invoke` plans
+//! one invocation's actions, `motion` holds the speed profiles, modifier values, lane targets
+//! and limits they use.
 
 use std::collections::HashMap;
 
@@ -44,7 +46,7 @@ use dsl::semantics::hir::{Expr, Span};
 use scenario::{ConditionGroup, PrivateAction, StoryboardElementState, Trigger, Vehicle};
 
 use crate::actors::{self, ActorKind};
-use crate::condition::{act_state, every_from_start, sim_time, trigger, Names, Timed};
+use crate::condition::{act_state, sim_time};
 use crate::error::{Error, ErrorKind as K};
 use crate::modifier::{read, At, Mod, ModKind};
 use crate::phase::{Kind, Phase};
@@ -54,8 +56,12 @@ use crate::route::{self, Along};
 use crate::track::Track;
 use crate::value::Ctx;
 
+mod events;
 mod invoke;
 mod motion;
+mod schedule;
+
+use events::EventCtx;
 
 /// How far from a constraint's value the plan may end (m), for `position(…, at: end)` checked
 /// against a constant speed.
@@ -192,21 +198,6 @@ pub(crate) struct HandlerPlan {
 /// An event's condition: (event name, condition, for an `on` handler's emit the handler's index
 /// and the emit's span).
 pub(crate) type EventSpec<'a> = (String, &'a Expr, Option<(usize, Span)>);
-
-/// Where an event specification is used: what its event context starts with (ASAM
-/// OpenSCENARIO DSL 2.1 §7.3.10.4).
-#[derive(Debug, Clone, Copy)]
-enum EventCtx<'w> {
-    /// An `on` handler of the scenario: the start of the run.
-    Run,
-    /// The `wait` or `until` of a phase: the phase's start.
-    Phase {
-        path: &'w str,
-        span: Span,
-        start: &'w When,
-        until: bool,
-    },
-}
 
 /// Options of planning.
 #[derive(Debug, Clone, Copy)]
@@ -526,343 +517,4 @@ impl Planner<'_, '_> {
             }),
         }
     }
-
-    /// A DSL condition as a trigger, used in event context `ectx`; `depth` counts nested event
-    /// definitions (a declared event's context is that of the place it is used).
-    fn condition(&self, e: &Expr, depth: usize, ectx: EventCtx<'_>) -> Result<Trigger, Error> {
-        let index = &self.index;
-        let entity = |path: &str| index.contains_key(path).then(|| path.to_string());
-        let event = |name: &str| -> Option<Result<Vec<ConditionGroup>, Error>> {
-            let emits = self.emits.get(name);
-            let specs = self.events.get(name);
-            if emits.is_none() && specs.is_none() {
-                return None;
-            }
-            // The event occurs when a phase emits it or one of its conditions holds.
-            let mut groups: Vec<ConditionGroup> = emits
-                .into_iter()
-                .flatten()
-                .map(|(path, span)| ConditionGroup {
-                    conditions: vec![act_state(
-                        path,
-                        StoryboardElementState::StartTransition,
-                        0.0,
-                        self.ctx.files.pos(*span),
-                    )],
-                })
-                .collect();
-            for (spec, handler) in specs.into_iter().flatten() {
-                if depth > 16 {
-                    return Some(Err(self.ctx.files.err(
-                        K::Condition,
-                        spec.span,
-                        "expected events defined without a cycle, found one defined through itself",
-                    )));
-                }
-                // A handler's event counts from the run's start wherever it is waited on; a
-                // declared event takes the context of the place it is used.
-                let ectx = if *handler { EventCtx::Run } else { ectx };
-                match self.condition(spec, depth + 1, ectx) {
-                    Ok(t) => groups.extend(t.condition_groups),
-                    Err(e) => return Some(Err(e)),
-                }
-            }
-            Some(Ok(groups))
-        };
-        let timed = |tm: Timed, span: Span| -> Result<Vec<ConditionGroup>, Error> {
-            // The first moment the event occurs, after the context's start.
-            let first = match tm {
-                Timed::Every(ev) => ev.offset,
-                Timed::Elapsed(d) => d,
-            };
-            match ectx {
-                EventCtx::Run => Ok(vec![ConditionGroup {
-                    conditions: vec![match tm {
-                        Timed::Every(ev) => {
-                            every_from_start(ev, self.settings.dt, self.ctx.files.pos(span))
-                        }
-                        // True from d on (§7.3.10.4), so a handler on it emits at every step.
-                        Timed::Elapsed(d) => sim_time(
-                            d,
-                            scenario::Rule::GreaterOrEqual,
-                            self.ctx.files.pos(span),
-                        ),
-                    }],
-                }]),
-                // Only the first occurrence can end a wait or an until.
-                EventCtx::Phase { until: true, .. } if first <= 0.0 => Err(self.ctx.files.err(
-                    K::Value,
-                    span,
-                    "expected a time above 0 s in the event of an until, found 0 s (its first occurrence is the start of the phase, which would end it at once)",
-                )),
-                EventCtx::Phase {
-                    path,
-                    span: at,
-                    start,
-                    ..
-                } => Ok(self.after(path, at, start, first).groups()),
-            }
-        };
-        trigger(
-            self.ctx,
-            e,
-            &Names {
-                entity: &entity,
-                event: &event,
-                timed: &timed,
-            },
-        )
-    }
-
-    /// The own end of `p` (duration, until), given its start.
-    fn own_end(&self, p: &Phase<'_>, start: &When) -> Result<Option<When>, Error> {
-        let mut end = None;
-        if let Some(d) = p.duration {
-            end = Some(self.after(&p.path, p.span, start, d));
-        }
-        if let Some(u) = p.until {
-            let ectx = EventCtx::Phase {
-                path: &p.path,
-                span: p.span,
-                start,
-                until: !matches!(p.kind, Kind::Wait),
-            };
-            let w = When::Dyn(self.condition(u, 0, ectx)?);
-            end = Some(match end {
-                Some(e) => e.or(w),
-                None => w,
-            });
-        }
-        Ok(end)
-    }
-
-    fn schedule(
-        &mut self,
-        p: &Phase<'_>,
-        start: When,
-        inherit: Option<When>,
-        cap: Option<When>,
-        len_hint: Option<f64>,
-        mods: &HashMap<String, &Vec<Mod<'_>>>,
-    ) -> Result<When, Error> {
-        let own = self.own_end(p, &start)?;
-        // The latest end: an enclosing composition's own end (duration, until) stops its
-        // running member too.
-        let capped = |w: When| match (&cap, w) {
-            // Filled in with the enclosing parallel's end, which is capped itself.
-            (_, When::Pending) => When::Pending,
-            (Some(c), w) => w.or(c.clone()),
-            (None, w) => w,
-        };
-        let first_index = self.phases.len();
-        let end = match &p.kind {
-            Kind::Invoke(_) | Kind::Wait => {
-                let mut actions = Vec::new();
-                let mut derived = None;
-                if let Kind::Invoke(inv) = &p.kind {
-                    let cap = own.as_ref().or(inherit.as_ref()).and_then(When::time);
-                    let empty = Vec::new();
-                    let ms = mods.get(&p.path).copied().unwrap_or(&empty);
-                    let len = p.duration.or(len_hint);
-                    derived = self.plan_invoke(p, inv, ms, start.time(), cap, len, &mut actions)?;
-                }
-                let end = match (own, derived, inherit) {
-                    (Some(o), _, i) => o.or(i.unwrap_or(When::Pending)),
-                    (None, Some(d), i) => d.or(i.unwrap_or(When::Pending)),
-                    (None, None, Some(i)) => i,
-                    (None, None, None) if self.settings.open_end => When::Never,
-                    (None, None, None) => return Err(no_end(self.ctx, p)),
-                };
-                let end = capped(end);
-                self.phases.push(PhasePlan {
-                    path: p.path.clone(),
-                    span: p.span,
-                    start,
-                    end: end.clone(),
-                    actions,
-                    hold: true,
-                    emit: None,
-                });
-                return Ok(end);
-            }
-            Kind::Emit(event) => {
-                // An instant: its Act starts and, with nothing to do, completes in its step.
-                self.phases.push(PhasePlan {
-                    path: p.path.clone(),
-                    span: p.span,
-                    start: start.clone(),
-                    end: When::Never,
-                    actions: Vec::new(),
-                    hold: false,
-                    emit: Some(event.clone()),
-                });
-                return Ok(start);
-            }
-            Kind::Serial | Kind::OneOf(_) => {
-                let mut cur = start.clone();
-                let n = p.children.len();
-                let own_cap = match (&own, &cap) {
-                    (Some(o), Some(c)) => Some(o.clone().or(c.clone())),
-                    (o, c) => o.clone().or(c.clone()),
-                };
-                for (i, c) in p.children.iter().enumerate() {
-                    // Members that would start when the serial has ended never run.
-                    if let (When::At(t), Some(When::At(end))) = (&cur, &own_cap) {
-                        if i > 0 && *t >= *end {
-                            break;
-                        }
-                    }
-                    let inh = if i + 1 == n {
-                        match (&own, &inherit) {
-                            (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
-                            (Some(o), None) => Some(o.clone()),
-                            (None, i) => i.clone(),
-                        }
-                    } else {
-                        None
-                    };
-                    let hint = match p.kind {
-                        Kind::OneOf(_) => p.duration.or(len_hint),
-                        _ => None,
-                    };
-                    cur = self.schedule(c, cur.clone(), inh, own_cap.clone(), hint, mods)?;
-                    // After a run-time end, the next member starts on the state of the one that
-                    // ended (and only while this serial runs, which its own end may stop).
-                    let mut ended = vec![act_state(
-                        &c.path,
-                        StoryboardElementState::CompleteState,
-                        0.0,
-                        self.ctx.files.pos(c.span),
-                    )];
-                    if i + 1 < n {
-                        if matches!(own_cap, Some(When::Dyn(_))) {
-                            ended.push(act_state(
-                                &p.path,
-                                StoryboardElementState::RunningState,
-                                0.0,
-                                self.ctx.files.pos(p.span),
-                            ));
-                        }
-                        cur = match cur {
-                            When::At(t) => When::At(t),
-                            When::Dyn(_) => When::Dyn(Trigger {
-                                condition_groups: vec![ConditionGroup { conditions: ended }],
-                            }),
-                            When::Never | When::Pending => return Err(no_end(self.ctx, c)),
-                        };
-                    } else if matches!(cur, When::Dyn(_)) {
-                        // Ends with its last member: on that member's state (its condition
-                        // could hold before the member runs).
-                        ended.truncate(1);
-                        cur = When::Dyn(Trigger {
-                            condition_groups: vec![ConditionGroup { conditions: ended }],
-                        });
-                    }
-                }
-                capped(match own {
-                    Some(o) => o,
-                    None => cur,
-                })
-            }
-            Kind::Parallel => {
-                // Members planned (and written) first: those whose motion others refer to, and
-                // those that end on their own, so that members ending with the parallel see
-                // their end in the same step.
-                let mut order: Vec<&Phase<'_>> = p.children.iter().collect();
-                order.sort_by_key(|c| {
-                    (
-                        relative_end(c, mods),
-                        c.duration.is_none() && c.until.is_none(),
-                    )
-                });
-                let inh = match (&own, &inherit) {
-                    (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
-                    (Some(o), None) => Some(o.clone()),
-                    (None, _) => Some(When::Pending),
-                };
-                let own_cap = match (&own, &cap) {
-                    (Some(o), Some(c)) => Some(o.clone().or(c.clone())),
-                    (o, c) => o.clone().or(c.clone()),
-                };
-                let mut ends = Vec::new();
-                for c in order {
-                    let e = self.schedule(
-                        c,
-                        start.clone(),
-                        inh.clone(),
-                        own_cap.clone(),
-                        p.duration.or(len_hint),
-                        mods,
-                    )?;
-                    ends.push((c, e));
-                }
-                capped(match own {
-                    Some(o) => o,
-                    None => {
-                        let with_end: Vec<&(&Phase<'_>, When)> =
-                            ends.iter().filter(|(_, e)| *e != When::Pending).collect();
-                        if with_end.iter().any(|(_, e)| *e == When::Never) {
-                            When::Never
-                        } else if with_end.is_empty() {
-                            match inherit {
-                                Some(i) => i,
-                                None if self.settings.open_end => When::Never,
-                                None => return Err(no_end(self.ctx, p)),
-                            }
-                        } else if with_end.iter().all(|(_, e)| matches!(e, When::At(_))) {
-                            When::At(
-                                with_end
-                                    .iter()
-                                    .filter_map(|(_, e)| e.time())
-                                    .fold(f64::NEG_INFINITY, f64::max),
-                            )
-                        } else {
-                            When::Dyn(Trigger {
-                                condition_groups: vec![ConditionGroup {
-                                    conditions: with_end
-                                        .iter()
-                                        .map(|(c, _)| {
-                                            act_state(
-                                                &c.path,
-                                                StoryboardElementState::CompleteState,
-                                                0.0,
-                                                self.ctx.files.pos(c.span),
-                                            )
-                                        })
-                                        .collect(),
-                                }],
-                            })
-                        }
-                    }
-                })
-            }
-        };
-        // Members that end with this composition.
-        if end != When::Pending {
-            for ph in &mut self.phases[first_index..] {
-                if ph.end == When::Pending {
-                    ph.end = end.clone();
-                }
-            }
-        }
-        self.phases.push(PhasePlan {
-            path: p.path.clone(),
-            span: p.span,
-            start,
-            end: end.clone(),
-            actions: Vec::new(),
-            hold: true,
-            emit: None,
-        });
-        Ok(end)
-    }
-}
-
-/// 1 for an invocation with a `position(…, at: end)` relative to another actor, else 0: the
-/// order in which a parallel plans its members.
-fn relative_end(p: &Phase<'_>, mods: &HashMap<String, &Vec<Mod<'_>>>) -> u8 {
-    mods.get(&p.path).is_some_and(|ms| {
-        ms.iter()
-            .any(|m| m.kind == ModKind::Position && m.at == At::End)
-    }) as u8
 }

@@ -1,0 +1,245 @@
+//! Scheduling one phase and its members (ASAM OpenSCENARIO DSL 2.1 §7.3.9 composition
+//! semantics): when it starts and ends, and the storyboard phases it becomes (see the parent
+//! module's doc for the rules).
+
+use std::collections::HashMap;
+
+use scenario::{ConditionGroup, StoryboardElementState, Trigger};
+
+use super::{no_end, PhasePlan, Planner, When};
+use crate::condition::act_state;
+use crate::error::Error;
+use crate::modifier::{At, Mod, ModKind};
+use crate::phase::{Kind, Phase};
+
+impl Planner<'_, '_> {
+    pub(super) fn schedule(
+        &mut self,
+        p: &Phase<'_>,
+        start: When,
+        inherit: Option<When>,
+        cap: Option<When>,
+        len_hint: Option<f64>,
+        mods: &HashMap<String, &Vec<Mod<'_>>>,
+    ) -> Result<When, Error> {
+        let own = self.own_end(p, &start)?;
+        // The latest end: an enclosing composition's own end (duration, until) stops its
+        // running member too.
+        let capped = |w: When| match (&cap, w) {
+            // Filled in with the enclosing parallel's end, which is capped itself.
+            (_, When::Pending) => When::Pending,
+            (Some(c), w) => w.or(c.clone()),
+            (None, w) => w,
+        };
+        let first_index = self.phases.len();
+        let end = match &p.kind {
+            Kind::Invoke(_) | Kind::Wait => {
+                let mut actions = Vec::new();
+                let mut derived = None;
+                if let Kind::Invoke(inv) = &p.kind {
+                    let cap = own.as_ref().or(inherit.as_ref()).and_then(When::time);
+                    let empty = Vec::new();
+                    let ms = mods.get(&p.path).copied().unwrap_or(&empty);
+                    let len = p.duration.or(len_hint);
+                    derived = self.plan_invoke(p, inv, ms, start.time(), cap, len, &mut actions)?;
+                }
+                let end = match (own, derived, inherit) {
+                    (Some(o), _, i) => o.or(i.unwrap_or(When::Pending)),
+                    (None, Some(d), i) => d.or(i.unwrap_or(When::Pending)),
+                    (None, None, Some(i)) => i,
+                    (None, None, None) if self.settings.open_end => When::Never,
+                    (None, None, None) => return Err(no_end(self.ctx, p)),
+                };
+                let end = capped(end);
+                self.phases.push(PhasePlan {
+                    path: p.path.clone(),
+                    span: p.span,
+                    start,
+                    end: end.clone(),
+                    actions,
+                    hold: true,
+                    emit: None,
+                });
+                return Ok(end);
+            }
+            Kind::Emit(event) => {
+                // An instant: its Act starts and, with nothing to do, completes in its step.
+                self.phases.push(PhasePlan {
+                    path: p.path.clone(),
+                    span: p.span,
+                    start: start.clone(),
+                    end: When::Never,
+                    actions: Vec::new(),
+                    hold: false,
+                    emit: Some(event.clone()),
+                });
+                return Ok(start);
+            }
+            Kind::Serial | Kind::OneOf(_) => {
+                let mut cur = start.clone();
+                let n = p.children.len();
+                let own_cap = match (&own, &cap) {
+                    (Some(o), Some(c)) => Some(o.clone().or(c.clone())),
+                    (o, c) => o.clone().or(c.clone()),
+                };
+                for (i, c) in p.children.iter().enumerate() {
+                    // Members that would start when the serial has ended never run.
+                    if let (When::At(t), Some(When::At(end))) = (&cur, &own_cap) {
+                        if i > 0 && *t >= *end {
+                            break;
+                        }
+                    }
+                    let inh = if i + 1 == n {
+                        match (&own, &inherit) {
+                            (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
+                            (Some(o), None) => Some(o.clone()),
+                            (None, i) => i.clone(),
+                        }
+                    } else {
+                        None
+                    };
+                    let hint = match p.kind {
+                        Kind::OneOf(_) => p.duration.or(len_hint),
+                        _ => None,
+                    };
+                    cur = self.schedule(c, cur.clone(), inh, own_cap.clone(), hint, mods)?;
+                    // After a run-time end, the next member starts on the state of the one that
+                    // ended (and only while this serial runs, which its own end may stop).
+                    let mut ended = vec![act_state(
+                        &c.path,
+                        StoryboardElementState::CompleteState,
+                        0.0,
+                        self.ctx.files.pos(c.span),
+                    )];
+                    if i + 1 < n {
+                        if matches!(own_cap, Some(When::Dyn(_))) {
+                            ended.push(act_state(
+                                &p.path,
+                                StoryboardElementState::RunningState,
+                                0.0,
+                                self.ctx.files.pos(p.span),
+                            ));
+                        }
+                        cur = match cur {
+                            When::At(t) => When::At(t),
+                            When::Dyn(_) => When::Dyn(Trigger {
+                                condition_groups: vec![ConditionGroup { conditions: ended }],
+                            }),
+                            When::Never | When::Pending => return Err(no_end(self.ctx, c)),
+                        };
+                    } else if matches!(cur, When::Dyn(_)) {
+                        // Ends with its last member: on that member's state (its condition
+                        // could hold before the member runs).
+                        ended.truncate(1);
+                        cur = When::Dyn(Trigger {
+                            condition_groups: vec![ConditionGroup { conditions: ended }],
+                        });
+                    }
+                }
+                capped(match own {
+                    Some(o) => o,
+                    None => cur,
+                })
+            }
+            Kind::Parallel => {
+                // Members planned (and written) first: those whose motion others refer to, and
+                // those that end on their own, so that members ending with the parallel see
+                // their end in the same step.
+                let mut order: Vec<&Phase<'_>> = p.children.iter().collect();
+                order.sort_by_key(|c| {
+                    (
+                        relative_end(c, mods),
+                        c.duration.is_none() && c.until.is_none(),
+                    )
+                });
+                let inh = match (&own, &inherit) {
+                    (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
+                    (Some(o), None) => Some(o.clone()),
+                    (None, _) => Some(When::Pending),
+                };
+                let own_cap = match (&own, &cap) {
+                    (Some(o), Some(c)) => Some(o.clone().or(c.clone())),
+                    (o, c) => o.clone().or(c.clone()),
+                };
+                let mut ends = Vec::new();
+                for c in order {
+                    let e = self.schedule(
+                        c,
+                        start.clone(),
+                        inh.clone(),
+                        own_cap.clone(),
+                        p.duration.or(len_hint),
+                        mods,
+                    )?;
+                    ends.push((c, e));
+                }
+                capped(match own {
+                    Some(o) => o,
+                    None => {
+                        let with_end: Vec<&(&Phase<'_>, When)> =
+                            ends.iter().filter(|(_, e)| *e != When::Pending).collect();
+                        if with_end.iter().any(|(_, e)| *e == When::Never) {
+                            When::Never
+                        } else if with_end.is_empty() {
+                            match inherit {
+                                Some(i) => i,
+                                None if self.settings.open_end => When::Never,
+                                None => return Err(no_end(self.ctx, p)),
+                            }
+                        } else if with_end.iter().all(|(_, e)| matches!(e, When::At(_))) {
+                            When::At(
+                                with_end
+                                    .iter()
+                                    .filter_map(|(_, e)| e.time())
+                                    .fold(f64::NEG_INFINITY, f64::max),
+                            )
+                        } else {
+                            When::Dyn(Trigger {
+                                condition_groups: vec![ConditionGroup {
+                                    conditions: with_end
+                                        .iter()
+                                        .map(|(c, _)| {
+                                            act_state(
+                                                &c.path,
+                                                StoryboardElementState::CompleteState,
+                                                0.0,
+                                                self.ctx.files.pos(c.span),
+                                            )
+                                        })
+                                        .collect(),
+                                }],
+                            })
+                        }
+                    }
+                })
+            }
+        };
+        // Members that end with this composition.
+        if end != When::Pending {
+            for ph in &mut self.phases[first_index..] {
+                if ph.end == When::Pending {
+                    ph.end = end.clone();
+                }
+            }
+        }
+        self.phases.push(PhasePlan {
+            path: p.path.clone(),
+            span: p.span,
+            start,
+            end: end.clone(),
+            actions: Vec::new(),
+            hold: true,
+            emit: None,
+        });
+        Ok(end)
+    }
+}
+
+/// 1 for an invocation with a `position(…, at: end)` relative to another actor, else 0: the
+/// order in which a parallel plans its members.
+fn relative_end(p: &Phase<'_>, mods: &HashMap<String, &Vec<Mod<'_>>>) -> u8 {
+    mods.get(&p.path).is_some_and(|ms| {
+        ms.iter()
+            .any(|m| m.kind == ModKind::Position && m.at == At::End)
+    }) as u8
+}
