@@ -48,9 +48,9 @@ pub struct StepArgs {
     /// becomes the desired speed: `idm` or `mobil`, default parameters.
     #[arg(long, value_enum, value_name = "MODEL")]
     pub vehicle_model: Option<TrafficModelArg>,
-    /// Vehicles the default controller moves stop before vehicle traffic lights (OpenDRIVE
-    /// type 1000001) showing red and drive on when they turn (docs/signals.md). Off by
-    /// default: signals do not change the motion.
+    /// Vehicles the default controller or the `idm`/`mobil` driver models move stop before
+    /// vehicle traffic lights (OpenDRIVE type 1000001) showing red and drive on when they turn
+    /// (docs/signals.md). Off by default: signals do not change the motion.
     #[arg(long)]
     pub stop_at_red_lights: bool,
 }

@@ -259,6 +259,7 @@ fn set_domains(
             network,
             &index,
             None,
+            &world.signals,
         );
         let ctrl = world.controllers.of_mut(actor.index());
         if let Some(instance) = &mut ctrl.assigned[slot].instance {

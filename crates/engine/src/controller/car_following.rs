@@ -1,6 +1,8 @@
 //! The longitudinal built-in controllers `idm` and `acc` (OpenSCENARIO 1.3 §6.6: user-defined
 //! controllers of the longitudinal domain): each step the acceleration of their model
-//! ([`crate::models::idm`], [`crate::models::acc`]) behind the leader the view finds.
+//! ([`crate::models::idm`], [`crate::models::acc`]) behind the leader the view finds. With run
+//! option `stop_at_red_lights` the `idm` also stops for a red light ahead as for a standing
+//! vehicle ([`with_red_light`]); the `acc` does not (it models a driver-assistance function).
 //!
 //! The desired speed (`idm`) or set speed (`acc`) is the property's value, else the entity's
 //! speed when the controller is activated (when that is 0: 120 km/h, the IDM paper's), capped
@@ -24,6 +26,18 @@ pub(crate) fn leader(view: &ControllerView<'_>) -> Option<Leader> {
         gap: g.gap,
         speed: g.speed,
     })
+}
+
+/// `leader`, or the red light ahead as a standing obstacle at the signal (run option
+/// `stop_at_red_lights`, [`ControllerView::red_light`]) when it is nearer: the driver models
+/// (`idm`, `mobil`) stop for red lights as behind a standing vehicle. The `acc` controller, a
+/// driver-assistance function that does not see signals, does not use this.
+pub(crate) fn with_red_light(view: &ControllerView<'_>, leader: Option<Leader>) -> Option<Leader> {
+    let light = view.red_light().map(|gap| Leader { gap, speed: 0.0 });
+    match (leader, light) {
+        (Some(l), Some(r)) => Some(if r.gap < l.gap { r } else { l }),
+        (l, r) => l.or(r),
+    }
 }
 
 /// A desired speed from the entity at activation: its speed, or the fallback at rest; capped
@@ -60,8 +74,10 @@ impl IdmController {
 
     /// The acceleration in the view.
     pub(crate) fn acceleration(&self, view: &ControllerView<'_>) -> Real {
-        self.params
-            .acceleration(view.entity().speed.max(0.0), leader(view))
+        self.params.acceleration(
+            view.entity().speed.max(0.0),
+            with_red_light(view, leader(view)),
+        )
     }
 
     pub(crate) fn on_activate(&mut self, view: &ControllerView<'_>) {

@@ -27,7 +27,7 @@
 
 use opendrive::Real;
 
-use super::car_following::IdmController;
+use super::car_following::{with_red_light, IdmController};
 use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
 use super::view::{ControllerView, NeighbourLane, Side};
 use crate::models::idm::{IdmParameters, Leader};
@@ -75,8 +75,10 @@ impl MobilController {
             speed: g.speed,
         };
         let own_leader = view.leader();
-        let a_c = p.acceleration(v, own_leader.map(to));
-        let own_after = p.acceleration(v, lane.leader.map(to));
+        // A red light ahead (run option stop_at_red_lights) stands across both lanes: no
+        // incentive to change for it.
+        let a_c = p.acceleration(v, with_red_light(view, own_leader.map(to)));
+        let own_after = p.acceleration(v, with_red_light(view, lane.leader.map(to)));
         let old_follower = view.follower().map(|o| {
             let vo = o.speed.max(0.0);
             let behind_me = Leader {

@@ -42,7 +42,7 @@ pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
     if world.controllers.any_held() {
         let index = LaneIndex::build(&world.network, &world.entities);
         merged.resize(world.entities.len(), None);
-        let (entities, network) = (&world.entities, &world.network);
+        let (entities, network, signals) = (&world.entities, &world.network, &world.signals);
         for (i, ctrl) in world.controllers.iter_mut() {
             let Some(e) = entities.get(i).filter(|e| e.placed) else {
                 continue;
@@ -59,7 +59,8 @@ pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
                 else {
                     continue;
                 };
-                let view = ControllerView::new(time, e, entities, network, &index, external);
+                let view =
+                    ControllerView::new(time, e, entities, network, &index, external, signals);
                 any = true;
                 match instance.step(&view, dt) {
                     Command::Pose(p) if held == MotionDomains::BOTH => m.pose = Some(p),

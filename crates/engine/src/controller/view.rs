@@ -18,6 +18,7 @@ use super::external::ExternalInput;
 use crate::runtime::lane_index::{LaneIndex, Neighbour};
 use crate::runtime::lanes::lane_shift;
 use crate::runtime::{Entity, EntityId};
+use crate::signals::Signals;
 
 /// Base distance (m) a gap search looks ahead or behind; it adds [`HORIZON_TIME`] seconds of
 /// the entity's speed. At 33 m/s that is 483 m, more than the IDM's desired gap when closing
@@ -76,11 +77,12 @@ pub struct ControllerView<'a> {
     network: &'a RoadNetwork,
     index: &'a LaneIndex,
     external: Option<ExternalInput>,
+    signals: &'a Signals,
 }
 
 impl<'a> ControllerView<'a> {
     /// The view of `entity` at `time`; `external` is the host's input for an `external`
-    /// controller.
+    /// controller; `signals` the signal states (for [`red_light`](Self::red_light)).
     pub(crate) fn new(
         time: Real,
         entity: &'a Entity,
@@ -88,6 +90,7 @@ impl<'a> ControllerView<'a> {
         network: &'a RoadNetwork,
         index: &'a LaneIndex,
         external: Option<ExternalInput>,
+        signals: &'a Signals,
     ) -> Self {
         ControllerView {
             time,
@@ -96,7 +99,17 @@ impl<'a> ControllerView<'a> {
             network,
             index,
             external,
+            signals,
         }
+    }
+
+    /// With run option `stop_at_red_lights` on: the distance (m) from the entity's front
+    /// bumper to the nearest vehicle light ahead on its road showing red for its direction of
+    /// travel, when the entity can still stop before it at its `maxDeceleration` (engine
+    /// signals/red_light.rs); `None` when the option is off, there is none, or it is too close
+    /// to stop for.
+    pub fn red_light(&self) -> Option<Real> {
+        self.signals.red_light_ahead(self.network, self.entity)
     }
 
     /// The input the host program gave the entity's `external` controller, if any (module

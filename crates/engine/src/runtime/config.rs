@@ -42,8 +42,9 @@ pub struct EngineConfig {
     /// engine is built, before the Init, whose SpeedAction then gives the desired speed
     /// (runtime/traffic/controllers.rs). Default `None`: the default controller.
     pub vehicle_model: Option<TrafficModel>,
-    /// Vehicles the default controller moves stop before vehicle traffic lights showing red
-    /// and drive on when they no longer do (signals/red_light.rs, docs/signals.md). Default
+    /// Vehicles the default controller or the `idm`/`mobil` driver models move stop before
+    /// vehicle traffic lights showing red and drive on when they no longer do
+    /// (signals/red_light.rs, docs/signals.md). Default
     /// `false`: signals do not affect motion, so existing runs keep their results.
     pub stop_at_red_lights: bool,
 }

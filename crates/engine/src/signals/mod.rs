@@ -6,7 +6,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `schedule` | which phase each controller is in at a time: cycling, reference and delay, a phase set by an action |
-//! | `red_light` | run option `stop_at_red_lights`: default-controlled vehicles stop at red vehicle lights |
+//! | `red_light` | run option `stop_at_red_lights`: vehicles stop at red vehicle lights (default and car-following controllers) |
 //!
 //! [`Signals`] keeps the live state: each controller's phase and each signal's state (the
 //! strings of the scenario, e.g. `"off;off;on"`). When a controller enters a phase, the phase's
@@ -93,6 +93,22 @@ impl Signals {
         let states = &self.states;
         let red = |id: &str| states.get(id).is_some_and(|s| shows_red(s));
         self.red_lights.govern(net, red, i, e, dt);
+    }
+
+    /// With `stop_at_red_lights` on: the distance (m) from `e`'s front bumper to the nearest
+    /// vehicle light ahead on its road that shows red for its direction of travel, when `e`
+    /// can still stop before it at its maximum deceleration (red_light.rs); `None` when the
+    /// option is off, no such light is ahead, or it is too close to stop for.
+    pub(crate) fn red_light_ahead(
+        &self,
+        net: &opendrive::RoadNetwork,
+        e: &crate::runtime::Entity,
+    ) -> Option<f64> {
+        if !self.red_lights.enabled {
+            return None;
+        }
+        let red = |id: &str| self.states.get(id).is_some_and(|s| shows_red(s));
+        red_light::light_ahead(net, &red, e).filter(|&d| red_light::can_stop_within(e, d))
     }
 
     /// The current state of signal `id`, if any was set.

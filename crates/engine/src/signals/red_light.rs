@@ -19,6 +19,12 @@
 //! - Driving on: once no red light holds it, the vehicle returns to the speed it had when it
 //!   began to brake at [`COMFORT_ACCELERATION`] (or its `maxAcceleration`, if lower); a
 //!   SpeedAction that sets a speed meanwhile takes over from there.
+//! - Vehicles whose longitudinal motion a built-in car-following controller holds (`idm`,
+//!   `acc`, `mobil`; controller module `car_following`) see the red light as a standing
+//!   obstacle at the signal's s ([`crate::controller::ControllerView::red_light`]) and stop
+//!   the way their model stops behind a standing vehicle (the IDM at its minimum gap s0 before
+//!   the signal), unless stopping would need more than the vehicle's `maxDeceleration` (the
+//!   same dilemma zone as above: it drives through).
 
 use std::collections::BTreeMap;
 
@@ -78,9 +84,7 @@ impl RedLights {
                 h.resume = v;
             }
         }
-        let max_decel = e
-            .performance
-            .map_or(DEFAULT_MAX_DECELERATION, |p| p.max_deceleration);
+        let max_decel = max_deceleration(e);
         let accel = e.performance.map_or(COMFORT_ACCELERATION, |p| {
             p.max_acceleration.min(COMFORT_ACCELERATION)
         });
@@ -139,6 +143,20 @@ impl RedLights {
     }
 }
 
+/// The deceleration vehicle `e` can brake with (m/s²): its Performance `maxDeceleration`, else
+/// [`DEFAULT_MAX_DECELERATION`].
+fn max_deceleration(e: &Entity) -> Real {
+    e.performance
+        .map_or(DEFAULT_MAX_DECELERATION, |p| p.max_deceleration)
+}
+
+/// Whether vehicle `e` can still stop within `distance` m at its maximum deceleration; a light
+/// it cannot stop for it drives through (the dilemma zone, module doc).
+pub(crate) fn can_stop_within(e: &Entity, distance: Real) -> bool {
+    let v = e.speed.max(0.0);
+    v * v <= 2.0 * max_deceleration(e) * distance.max(0.0)
+}
+
 /// Sets the speed of the coming move (also when the lateral motion goes first, which moves at
 /// the step's start speed, controller/default.rs).
 fn set_speed(e: &mut Entity, v: Real) {
@@ -150,6 +168,16 @@ fn set_speed(e: &mut Entity, v: Real) {
 /// (module doc), if there is one; negative when the front is already past the stop point but
 /// not past the signal.
 fn stop_distance(net: &RoadNetwork, red: &impl Fn(&str) -> bool, e: &Entity) -> Option<Real> {
+    light_ahead(net, red, e).map(|ahead| ahead - STOP_GAP)
+}
+
+/// Distance from `e`'s front bumper to the nearest vehicle light ahead on its road that shows
+/// red and is valid for its direction of travel (module doc), if there is one.
+pub(crate) fn light_ahead(
+    net: &RoadNetwork,
+    red: &impl Fn(&str) -> bool,
+    e: &Entity,
+) -> Option<Real> {
     let track = e.track.as_ref()?;
     let road = net.road_at(track.road);
     let sign = match track.direction {
@@ -168,7 +196,7 @@ fn stop_distance(net: &RoadNetwork, red: &impl Fn(&str) -> bool, e: &Entity) -> 
         })
         .filter_map(|s| {
             let ahead = (s.s - track.s) * sign - front;
-            (ahead > 0.0 && red(&s.id)).then_some(ahead - STOP_GAP)
+            (ahead > 0.0 && red(&s.id)).then_some(ahead)
         })
         .min_by(|a, b| a.total_cmp(b))
 }

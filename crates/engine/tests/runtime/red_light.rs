@@ -13,6 +13,7 @@
 
 use crate::runtime_support;
 
+use engine::runtime::TrafficModel;
 use engine::{Engine, EngineConfig};
 use runtime_support::Recorder;
 
@@ -22,12 +23,18 @@ const STOP_X: f64 = 95.35;
 const EPS: f64 = 1e-6;
 
 fn run(stop_at_red_lights: bool) -> Recorder {
+    run_with(stop_at_red_lights, None)
+}
+
+/// The run with `vehicle_model` driving both vehicles (EngineConfig::vehicle_model).
+fn run_with(stop_at_red_lights: bool, vehicle_model: Option<TrafficModel>) -> Recorder {
     let path = std::path::PathBuf::from(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/tests/files/signals/red_light.xosc"
     ));
     let config = EngineConfig {
         stop_at_red_lights,
+        vehicle_model,
         ..EngineConfig::default()
     };
     let mut engine = Engine::load(&path, &[], config).expect("loads");
@@ -72,5 +79,47 @@ fn without_the_option_signals_do_not_change_the_motion() {
     for t in [5.0, 10.0, 15.0] {
         assert!((f.at("Ego", t).x - (10.0 + 10.0 * t)).abs() < EPS);
         assert_eq!(f.at("Ego", t).speed, 10.0);
+    }
+}
+
+/// The IDM stops for a red light as behind a standing vehicle at the signal (controller module
+/// car_following, `with_red_light`): both vehicles on `idm` (default parameters, desired speed
+/// 10 m/s from the Init SpeedAction). Ego can stop (10² / (2 · 8) = 6.25 m ≤ 86.35 m to the
+/// light), so it brakes from the start (s* = 2 + 10 · 1.6 + 10 · 10 / (2 √(0.73 · 1.67)) =
+/// 63.3 m against a gap of 86.35 m: a = −0.73 · (63.3 / 86.35)² = −0.39 m/s²) and comes to rest
+/// with its front the IDM's minimum gap s0 = 2 m before the signal, reference point at
+/// 100 − 2 − 3.65 = 94.35 (within the IDM model test's 0.3 m), never beyond it while red; at
+/// green it drives on past the light. Oncoming (lane 1, −s) is not held: no leader, at its
+/// desired speed, the IDM's acceleration is 0 and x = 200 − 10 t. Without the option the
+/// IDM Ego never brakes: x = 10 + 10 t.
+#[test]
+fn with_the_option_an_idm_vehicle_stops_at_its_minimum_gap_before_a_red_light() {
+    const IDM_STAND_X: f64 = 94.35;
+    const IDM_GAP_TOLERANCE: f64 = 0.3;
+    let f = run_with(true, Some(TrafficModel::Idm));
+    assert!(
+        f.at("Ego", 1.0).speed < 10.0 - 0.3,
+        "braking from the start"
+    );
+    for row in f.0.iter().filter(|r| r.name == "Ego" && r.time < 20.0) {
+        assert!(
+            row.x <= IDM_STAND_X + IDM_GAP_TOLERANCE,
+            "t = {}: x = {}",
+            row.time,
+            row.x
+        );
+    }
+    let standing = f.at("Ego", 19.95);
+    assert!(
+        (standing.x - IDM_STAND_X).abs() < IDM_GAP_TOLERANCE && standing.speed < 0.1,
+        "{standing:?}"
+    );
+    assert!(f.at("Ego", 30.0).x > 100.0, "drives on at green");
+    for t in [5.0, 10.0, 15.0] {
+        assert!((f.at("Oncoming", t).x - (200.0 - 10.0 * t)).abs() < EPS);
+    }
+    let free = run_with(false, Some(TrafficModel::Idm));
+    for t in [5.0, 10.0, 15.0] {
+        assert!((free.at("Ego", t).x - (10.0 + 10.0 * t)).abs() < EPS);
     }
 }
