@@ -16,10 +16,8 @@
 //! | world | Δx / Δy of the world axes (box intervals when freespace) | as entity |
 //! | trajectory | difference of the closest-point s / t on the trajectory the triggering entity follows (box corners' intervals when freespace); none without one | √(ds² + dt²) of those |
 //!
-//! Lane coordinates: as road coordinates, with the longitudinal value stretched by the ratio
-//! of the triggering entity's lane centre line length to the reference-line length between
-//! the two reference points (`position::lane_length`; exact between reference points on one
-//! road, the same ratio applied to box gaps; across roads the reference-line value is kept).
+//! Lane coordinates: as road coordinates, the longitudinal value stretched to the triggering
+//! entity's lane centre line (`road_distance`).
 //!
 //! `routingAlgorithm="assignedRoute"` measures longitudinal road and lane distances along the
 //! triggering entity's assigned route (§8.7.4.1.1 distance_along_route() of both, reference
@@ -34,12 +32,13 @@
 use opendrive::{Pose, Real, RoadNetwork};
 use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, RoutingAlgorithm};
 
+use super::road_distance::road_distance;
 use super::ConditionErrorKind;
 use crate::domain::{
     BoundingBox, DistanceDirection, DistanceMode, MovableObject, Physical, PhysicalObject,
     RouteDistanceEnum, TrafficParticipant,
 };
-use crate::position::{lane_arc_length, local_to_world, EntityView};
+use crate::position::{local_to_world, EntityView};
 
 /// Half-width of the central difference that turns a distance into its rate (s).
 const RATE_STEP: Real = 1e-3;
@@ -64,7 +63,7 @@ fn point_box() -> BoundingBox {
 
 impl Target<'_> {
     /// The target as a §8.7 object with its velocity (`freespace`: with its box).
-    fn participant(&self, freespace: bool) -> TrafficParticipant {
+    pub(super) fn participant(&self, freespace: bool) -> TrafficParticipant {
         match self {
             Target::Entity(e) => participant(e, freespace),
             Target::Point(pose) => TrafficParticipant::new(
@@ -84,7 +83,7 @@ impl Target<'_> {
 }
 
 /// The entity as a §8.7 traffic participant; with a point box unless `freespace`.
-fn participant(e: &EntityView<'_>, freespace: bool) -> TrafficParticipant {
+pub(super) fn participant(e: &EntityView<'_>, freespace: bool) -> TrafficParticipant {
     let mut p = e.traffic_participant();
     if !freespace {
         p.movable.object.bounding_box = point_box();
@@ -170,43 +169,15 @@ pub(crate) fn distance(
         {
             Ok(along_assigned_route(network, from, &a, &b, free))
         }
-        CoordinateSystem::Road | CoordinateSystem::Lane => {
-            // space_gap is positive when the caller is ahead along +s (left along +t); turned
-            // here to "target ahead / left of the triggering entity's travel".
-            let travel = match from.road_position {
-                Some(rp) if rp.relative_heading.cos() < 0.0 => -1.0,
-                _ => 1.0,
-            };
-            let gap = |dir| {
-                let g = a.space_gap(network, &b, dir).ok()?;
-                if !free {
-                    return Some(-travel * g);
-                }
-                // §8.7.5.1.3 space_gap() reports overlapping boxes as a gap of the sign opposite
-                // to who is ahead (the overlap, seen from the other side); §6.4 puts overlapping
-                // boxes at distance 0. Who is ahead: the reference points' order.
-                let points = participant(from, false)
-                    .space_gap(network, &target.participant(false), dir)
-                    .ok()?;
-                let overlap = g == 0.0 || (points != 0.0 && g.signum() != points.signum());
-                Some(if overlap { 0.0 } else { -travel * g })
-            };
-            let longitudinal = || {
-                let d = gap(DistanceDirection::Longitudinal)?;
-                Some(if cs == CoordinateSystem::Lane {
-                    d * lane_stretch(network, from, target).unwrap_or(1.0)
-                } else {
-                    d
-                })
-            };
-            Ok(match along(ty) {
-                Some(DistanceDirection::Longitudinal) => longitudinal(),
-                Some(dir) => gap(dir),
-                None => longitudinal()
-                    .zip(gap(DistanceDirection::Lateral))
-                    .map(|(s, t)| s.hypot(t)),
-            })
-        }
+        CoordinateSystem::Road | CoordinateSystem::Lane => Ok(road_distance(
+            network,
+            from,
+            target,
+            (&a, &b),
+            free,
+            cs == CoordinateSystem::Lane,
+            along(ty),
+        )),
         CoordinateSystem::Trajectory => Ok(from
             .trajectory
             .and_then(|path| along_trajectory(path, &a, &b, ty))),
@@ -253,22 +224,6 @@ fn along_trajectory(
         RelativeDistanceType::Lateral => gap(1),
         _ => gap(0).hypot(gap(1)),
     })
-}
-
-/// How much longer the centre line of `from`'s lane is than the reference line between the
-/// two reference points' s (both on `from`'s road); `None` when they are on different roads
-/// or at the same s.
-fn lane_stretch(network: &RoadNetwork, from: &EntityView<'_>, target: &Target<'_>) -> Option<Real> {
-    let own = from.road_position?;
-    let other_s = match target {
-        Target::Entity(e) => e.road_position.filter(|rp| rp.road_id == own.road_id)?.s,
-        Target::Point(p) => network.locate_on_road(&own.road_id, p.x, p.y)?.s,
-    };
-    let ds = (other_s - own.s).abs();
-    if ds <= opendrive::LENGTH_EPSILON {
-        return None;
-    }
-    Some(lane_arc_length(network, &own.road_id, own.lane_id, own.s, other_s)? / ds)
 }
 
 /// Longitudinal distance from `a` to `b` along `from`'s assigned route (positive when `b` is

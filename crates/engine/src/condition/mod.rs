@@ -13,6 +13,7 @@
 //! | `time_of_day` | xsd:dateTime → seconds since the epoch |
 //! | `by_value` | SimulationTime, Parameter, Variable, UserDefinedValue, StoryboardElementState, TimeOfDay, TrafficSignal, TrafficSignalController |
 //! | `measure` | distances: freespace, coordinateSystem, relativeDistanceType; their rates |
+//! | `road_distance` | the road and lane coordinate distances of `measure` |
 //! | `motion` | Speed, RelativeSpeed, Acceleration, StandStill, TraveledDistance |
 //! | `road_state` | EndOfRoad, Offroad, Collision |
 //! | `spacing` | Distance, RelativeDistance, ReachPosition, TimeHeadway, TimeToCollision |
@@ -31,6 +32,7 @@ mod evaluate;
 mod measure;
 mod motion;
 mod registry;
+mod road_distance;
 mod road_state;
 mod rule;
 mod spacing;

@@ -59,6 +59,7 @@ pub use object::{
 pub(crate) use road_path::shortest_road_path;
 pub use route::{Route, RouteStretch};
 pub use route_coords::{RouteElement, RoutePoint};
+pub(crate) use space_gap::{signed_gap, Interval, RoadPair};
 pub use time_headway::time_headway_between;
 pub use vehicle::{Axle, Vehicle};
 pub use vehicle_group::VehicleGroup;

@@ -9,7 +9,7 @@
 //! along the path. Its t keeps its sign when the path runs along both roads' s the same way,
 //! and flips otherwise.
 
-use opendrive::{Real, RoadNetwork, RoadPosition, LENGTH_EPSILON};
+use opendrive::{Real, RoadHandle, RoadNetwork, RoadPoint, RoadPosition, LENGTH_EPSILON};
 
 use super::road_path::shortest_road_path;
 use super::{DomainError, DomainErrorKind, PhysicalObject};
@@ -20,23 +20,31 @@ pub(crate) fn locate(
     network: &RoadNetwork,
     object: &PhysicalObject,
 ) -> Result<RoadPosition, DomainError> {
+    locate_point(network, object).map(|p| network.road_position(&p))
+}
+
+/// [`locate`] with the road as a handle (no allocation); the same point.
+pub(crate) fn locate_point(
+    network: &RoadNetwork,
+    object: &PhysicalObject,
+) -> Result<RoadPoint, DomainError> {
     let p = &object.pose;
-    match network.locate(p.x, p.y, Some(p.h)) {
+    match network.locate_point(p.x, p.y, Some(p.h)) {
         Some(pos) if pos.distance <= LENGTH_EPSILON => Ok(pos),
         _ => Err(DomainError::at(DomainErrorKind::NotOnRoad, p.x, p.y)),
     }
 }
 
-/// The world point (x, y) projected onto road `road_id` (s and t; the point may lie beside
-/// the road surface, as a box corner may).
+/// The world point (x, y) projected onto road `road` (s and t; the point may lie beside the
+/// road surface, as a box corner may).
 pub(crate) fn project(
     network: &RoadNetwork,
-    road_id: &str,
+    road: RoadHandle,
     x: Real,
     y: Real,
 ) -> Result<(Real, Real), DomainError> {
     network
-        .locate_on_road(road_id, x, y)
+        .locate_point_on_road(road, x, y)
         .map(|p| (p.s, p.t))
         .ok_or_else(|| DomainError::at(DomainErrorKind::NotOnRoad, x, y))
 }
@@ -59,6 +67,23 @@ impl AxisMap {
     /// (s, t) of the reference's road on the caller's axes.
     pub(crate) fn apply(&self, s: Real, t: Real) -> (Real, Real) {
         (self.offset + self.flip * s, self.flip * t)
+    }
+
+    /// [`between`](Self::between) for positions given by road handle: the identity without a
+    /// look-up when both are on one road, else the road ids are looked up for the path.
+    pub(crate) fn between_points(
+        network: &RoadNetwork,
+        caller: &RoadPoint,
+        reference: &RoadPoint,
+    ) -> Result<AxisMap, DomainError> {
+        if caller.road == reference.road {
+            return Ok(Self::IDENTITY);
+        }
+        Self::between(
+            network,
+            &network.road_position(caller),
+            &network.road_position(reference),
+        )
     }
 
     /// The map for `caller` and `reference` positions; see the module doc.

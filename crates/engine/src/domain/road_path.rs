@@ -79,8 +79,8 @@ pub(crate) fn shortest_road_path(
     to_s: Real,
 ) -> Option<RoadPath> {
     let roads = network.roads();
-    let index = road_indices(network);
-    let (&start, &goal) = (index.get(from_road)?, index.get(to_road)?);
+    let start = network.road_handle(from_road)?.index();
+    let goal = network.road_handle(to_road)?.index();
     // best[road][forward as usize]: cheapest known entry cost; first[..]: direction the path
     // left the start road with.
     let mut best = vec![[Real::INFINITY; 2]; roads.len()];
