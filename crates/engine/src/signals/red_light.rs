@@ -7,7 +7,8 @@
 //! - Which lights: OpenDRIVE signals of type `1000001` (the three-light vehicle signal of the
 //!   OpenDRIVE catalogue, red on top, matched whatever the `country`) on the road the vehicle
 //!   is on, ahead of it, valid for its direction of travel (`orientation` "+" for travel
-//!   towards +s, "-" towards −s, "none" for both). Red: the first field of the signal's
+//!   towards +s, "-" towards −s, "none" for both) and, when it has `<validity>` elements, for
+//!   the vehicle's lane (OpenDRIVE 1.8 §14.2). Red: the first field of the signal's
 //!   OpenSCENARIO state (`on;off;off`) is `on` or `flashing`; yellow and green are "go".
 //! - Stop point: the vehicle's front [`STOP_GAP`] before the signal's s.
 //! - Braking: when the distance d from the stop point falls to the braking distance at
@@ -194,6 +195,7 @@ pub(crate) fn light_ahead(
             "-" => sign < 0.0,
             _ => true,
         })
+        .filter(|s| s.valid_for_lane(track.lane_id))
         .filter_map(|s| {
             let ahead = (s.s - track.s) * sign - front;
             (ahead > 0.0 && red(&s.id)).then_some(ahead)

@@ -28,6 +28,11 @@ fn run(stop_at_red_lights: bool) -> Recorder {
 
 /// The run with `vehicle_model` driving both vehicles (EngineConfig::vehicle_model).
 fn run_with(stop_at_red_lights: bool, vehicle_model: Option<TrafficModel>) -> Recorder {
+    run_on("red_light.xodr", stop_at_red_lights, vehicle_model)
+}
+
+/// The run on road file `road` (the scenario's parameter Road).
+fn run_on(road: &str, stop_at_red_lights: bool, vehicle_model: Option<TrafficModel>) -> Recorder {
     let path = std::path::PathBuf::from(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/tests/files/signals/red_light.xosc"
@@ -37,7 +42,8 @@ fn run_with(stop_at_red_lights: bool, vehicle_model: Option<TrafficModel>) -> Re
         vehicle_model,
         ..EngineConfig::default()
     };
-    let mut engine = Engine::load(&path, &[], config).expect("loads");
+    let params = [("Road".to_owned(), road.to_owned())];
+    let mut engine = Engine::load(&path, &params, config).expect("loads");
     let mut frames = Recorder::default();
     engine.run(&mut frames, &mut Vec::new()).expect("runs");
     frames
@@ -121,5 +127,28 @@ fn with_the_option_an_idm_vehicle_stops_at_its_minimum_gap_before_a_red_light() 
     let free = run_with(false, Some(TrafficModel::Idm));
     for t in [5.0, 10.0, 15.0] {
         assert!((free.at("Ego", t).x - (10.0 + 10.0 * t)).abs() < EPS);
+    }
+}
+
+/// red_light_validity.xodr: the same light for both directions (orientation "none") but only
+/// for lane −1 (`<validity fromLane="-1" toLane="-1"/>`, OpenDRIVE 1.8 §14.2). Ego (lane −1)
+/// stops exactly as on red_light.xodr (x = 95.35 from 11 s to 20 s); Oncoming (lane 1, −s)
+/// would be held by orientation "none" alone, but its lane is outside the validity: it passes
+/// the light at t = 10 s and x = 200 − 10 t throughout.
+#[test]
+fn a_light_with_lane_validity_holds_only_its_lanes() {
+    let f = run_on("red_light_validity.xodr", true, None);
+    for t in [11.0, 15.0, 19.95] {
+        let row = f.at("Ego", t);
+        assert!(
+            (row.x - STOP_X).abs() < EPS && row.speed == 0.0,
+            "{t}: {row:?}"
+        );
+    }
+    for t in [5.0, 10.0, 15.0, 20.0] {
+        assert!(
+            (f.at("Oncoming", t).x - (200.0 - 10.0 * t)).abs() < EPS,
+            "{t}"
+        );
     }
 }

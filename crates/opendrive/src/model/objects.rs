@@ -74,4 +74,21 @@ pub struct Signal {
     pub height: Option<f64>,
     /// `length` (m), the signal's thickness, if given.
     pub length: Option<f64>,
+    /// The `<validity>` children as (`fromLane`, `toLane`), both inclusive (OpenDRIVE 1.8
+    /// §14.2 "Lane validity for signals"); empty: valid for every lane of the road in the
+    /// `orientation`'s direction of travel.
+    pub validity: Vec<(i32, i32)>,
+}
+
+impl Signal {
+    /// Whether the signal applies to lane `lane_id` by its `<validity>` elements (OpenDRIVE 1.8
+    /// §14.2): true when it has none, else when the id lies in one of their ranges. The
+    /// direction of travel is the `orientation`'s business, checked separately.
+    pub fn valid_for_lane(&self, lane_id: i32) -> bool {
+        self.validity.is_empty()
+            || self
+                .validity
+                .iter()
+                .any(|&(from, to)| from.min(to) <= lane_id && lane_id <= from.max(to))
+    }
 }

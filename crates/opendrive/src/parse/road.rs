@@ -310,5 +310,8 @@ fn read_signal(r: &Reader, node: Node) -> Result<Signal, Error> {
         width: r.maybe_f64(node, "width")?,
         height: r.maybe_f64(node, "height")?,
         length: r.maybe_f64(node, "length")?,
+        validity: children(node, "validity")
+            .map(|v| Ok((r.req_i32(v, "fromLane")?, r.req_i32(v, "toLane")?)))
+            .collect::<Result<_, Error>>()?,
     })
 }

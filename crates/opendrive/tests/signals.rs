@@ -1,0 +1,50 @@
+//! `<signal>` and its `<validity>` lanes (OpenDRIVE 1.8 §14.2 "Lane validity for signals").
+
+use std::path::Path;
+
+use opendrive::RoadNetwork;
+
+const ROAD: &str = r#"<OpenDRIVE><header revMajor="1" revMinor="8"/>
+<road id="1" length="100" junction="-1"><planView>
+<geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry></planView>
+<lanes><laneSection s="0"><center><lane id="0" type="none"/></center>
+<right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+<lane id="-2" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+<lane id="-3" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+</laneSection></lanes>
+<signals>SIGNALS</signals></road></OpenDRIVE>"#;
+
+fn load(signals: &str) -> Result<RoadNetwork, opendrive::Error> {
+    RoadNetwork::from_str(&ROAD.replace("SIGNALS", signals), Path::new("signals.xodr"))
+}
+
+/// Without `<validity>` a signal is valid for every lane (of its orientation's direction); with
+/// `<validity fromLane="-3" toLane="-2"/>` and `<validity fromLane="-1" toLane="-1"/>`… only
+/// for the lanes in the ranges, bounds included.
+#[test]
+fn validity_ranges_restrict_a_signal_to_their_lanes() {
+    let net = load(
+        r#"<signal s="50" t="-8" id="A" orientation="+" type="1000001"/>
+           <signal s="60" t="-8" id="B" orientation="+" type="1000001">
+             <validity fromLane="-3" toLane="-2"/></signal>"#,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let signals = &net.road("1").expect("road 1").signals;
+    assert!(signals[0].validity.is_empty());
+    assert!((-3..=-1).all(|l| signals[0].valid_for_lane(l)));
+    assert_eq!(signals[1].validity, vec![(-3, -2)]);
+    assert!(!signals[1].valid_for_lane(-1));
+    assert!(signals[1].valid_for_lane(-2) && signals[1].valid_for_lane(-3));
+    assert!(!signals[1].valid_for_lane(-4));
+}
+
+/// A `<validity>` without `toLane` is an error at the element.
+#[test]
+fn a_validity_without_to_lane_is_an_error() {
+    let err = load(
+        r#"<signal s="50" t="-8" id="A" orientation="+" type="1000001">
+             <validity fromLane="-1"/></signal>"#,
+    )
+    .expect_err("toLane is required");
+    assert!(err.to_string().contains("toLane"), "{err}");
+}
