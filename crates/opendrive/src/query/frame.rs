@@ -94,8 +94,9 @@ impl RoadFrame {
 
     /// Horizontal derivatives of [`place`](Self::place) with respect to s and t (used by the
     /// world → road Newton iteration): (∂xy/∂s, ∂xy/∂t), neglecting the change of roll and
-    /// pitch along s (the iteration converges on the exact residual regardless).
-    #[inline]
+    /// pitch along s (the iteration converges on the exact residual regardless). The
+    /// iteration itself uses `PlanFrame::jacobian`; this is its reference in the tests.
+    #[cfg(test)]
     pub(crate) fn jacobian(&self, t: Real) -> [[Real; 2]; 2] {
         let along = 1.0 - self.curvature * t * self.cos_r;
         [

@@ -209,6 +209,18 @@ pub(crate) mod tests {
         }
     }
 
+    /// A lane section at s = 0 with the centre lane only (the road surface is the reference
+    /// line).
+    pub(crate) fn centre_only_section() -> LaneSection {
+        LaneSection {
+            s: 0.0,
+            single_side: false,
+            left: vec![],
+            center: lane(0, vec![]),
+            right: vec![],
+        }
+    }
+
     fn cubic(start: f64, a: f64, b: f64, c: f64, d: f64) -> Cubic {
         Cubic { start, a, b, c, d }
     }

@@ -7,9 +7,10 @@
 //! then, when a heading is given, the lane whose driving direction is closest to it; then the
 //! smallest |t|.
 
-use super::frame::{road_frame, RoadFrame};
 use super::graph::{driving_direction, Direction};
 use super::lane_span::{road_extent, side_spans};
+use super::pieces_by_distance::PiecesByDistance;
+use super::plan_frame::plan_frame;
 use super::spatial::Piece;
 use crate::handles::RoadHandle;
 use crate::math::{angle_difference, normalize_angle, Real, LENGTH_EPSILON, SOLVER_TOLERANCE};
@@ -72,23 +73,30 @@ struct Candidate {
     distance: Real,
     heading_gap: Real,
     road_hdg: Real,
+    /// `lane_at(s, t)` where it was computed (a heading was given).
+    lane: Option<(i32, Real)>,
 }
 
 /// Solves place(s, t) = (px, py) on `road` with s kept in [lo, hi]; returns (s, t, residual)
-/// and the road's frame at that s (which the caller needs again: computed once).
+/// and the road's heading at that s (which the caller needs again: computed once). The frame
+/// is evaluated again only where s has changed (the same s gives the same frame).
 fn project(
     road: &Road,
     px: Real,
     py: Real,
     lo: Real,
     hi: Real,
-) -> Option<(Real, Real, Real, RoadFrame)> {
+) -> Option<(Real, Real, Real, Real)> {
     let mut s = 0.5 * (lo + hi);
     let mut t = 0.0;
     let span = (hi - lo).max(1.0);
+    let mut f = plan_frame(road, s);
+    let mut f_at = s;
     for _ in 0..MAX_ITER {
-        let f = road_frame(road, s);
-        let [x, y, _] = f.place(t, 0.0);
+        if f_at.to_bits() != s.to_bits() {
+            (f, f_at) = (plan_frame(road, s), s);
+        }
+        let [x, y] = f.place(t);
         let (ex, ey) = (px - x, py - y);
         let j = f.jacobian(t);
         let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
@@ -108,10 +116,12 @@ fn project(
             break;
         }
     }
-    let f = road_frame(road, s);
-    let [x, y, _] = f.place(t, 0.0);
+    if f_at.to_bits() != s.to_bits() {
+        f = plan_frame(road, s);
+    }
+    let [x, y] = f.place(t);
     let resid = (px - x).hypot(py - y);
-    resid.is_finite().then_some((s, t, resid, f))
+    resid.is_finite().then_some((s, t, resid, f.hdg))
 }
 
 impl RoadNetwork {
@@ -130,8 +140,11 @@ impl RoadNetwork {
         }
         // Pieces whose box holds the point first: on a road surface that settles it, since
         // every other piece's surface is farther than its box.
-        let inside = self.spatial.containing(x, y).map(|pi| (pi, 0.0));
-        let best = match self.best_candidate(inside, x, y, heading) {
+        let mut inside = None;
+        self.spatial.for_each_containing(x, y, |pi| {
+            self.consider(&mut inside, pi, x, y, heading);
+        });
+        let best = match inside {
             Some(c) if c.distance <= LENGTH_EPSILON => Some(c),
             _ => self.best_candidate(self.spatial.nearest(x, y), x, y, heading),
         };
@@ -154,12 +167,9 @@ impl RoadNetwork {
         if !(x.is_finite() && y.is_finite()) {
             return None;
         }
-        let range = self.spatial.per_road[ri].clone();
-        let mut order: Vec<(Real, usize)> = range
-            .map(|i| (self.spatial.boxes[i].distance_2(&[x, y]), i))
-            .collect();
-        order.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let best = self.best_candidate(order.into_iter().map(|(d2, pi)| (pi, d2)), x, y, None);
+        // The road's pieces nearest box first (ties by piece order), found a few at a time.
+        let pieces = PiecesByDistance::new(&self.spatial, ri, x, y);
+        let best = self.best_candidate(pieces, x, y, None);
         best.map(|c| self.position(c, None))
     }
 
@@ -179,13 +189,26 @@ impl RoadNetwork {
                     break;
                 }
             }
-            if let Some(c) = self.candidate(&self.spatial.pieces[pi], x, y, heading) {
-                if best.as_ref().map_or(true, |b| better(&c, b)) {
-                    best = Some(c);
-                }
-            }
+            self.consider(&mut best, pi, x, y, heading);
         }
         best
+    }
+
+    /// Projects onto piece `pi` and keeps the candidate if it is better than `best`.
+    #[inline]
+    fn consider(
+        &self,
+        best: &mut Option<Candidate>,
+        pi: usize,
+        x: Real,
+        y: Real,
+        heading: Option<Real>,
+    ) {
+        if let Some(c) = self.candidate(&self.spatial.pieces[pi], x, y, heading) {
+            if best.as_ref().map_or(true, |b| better(&c, b)) {
+                *best = Some(c);
+            }
+        }
     }
 
     fn candidate(
@@ -196,7 +219,7 @@ impl RoadNetwork {
         heading: Option<Real>,
     ) -> Option<Candidate> {
         let road = &self.roads[piece.road];
-        let (s, t, resid, f) = project(road, x, y, piece.s0, piece.s1)?;
+        let (s, t, resid, road_hdg) = project(road, x, y, piece.s0, piece.s1)?;
         // A foot point on a neighbouring piece leaves a residual along the road; the candidate
         // then counts that residual as distance, and the neighbouring piece (whose box is no
         // farther) gives the exact one.
@@ -208,27 +231,32 @@ impl RoadNetwork {
         } else {
             0.0
         };
-        let heading_gap = heading.map_or(0.0, |h| {
-            let (lane, _) = lane_at(road, s, t);
-            let drive = match driving_direction(road, lane) {
-                Direction::Forward => f.hdg,
-                Direction::Backward => f.hdg + std::f64::consts::PI,
-            };
-            angle_difference(h, drive).abs()
-        });
+        // The lane is needed here only to compare headings; kept for the result.
+        let lane = heading.map(|_| lane_at(road, s, t));
+        let heading_gap = match (heading, lane) {
+            (Some(h), Some((lane, _))) => {
+                let drive = match driving_direction(road, lane) {
+                    Direction::Forward => road_hdg,
+                    Direction::Backward => road_hdg + std::f64::consts::PI,
+                };
+                angle_difference(h, drive).abs()
+            }
+            _ => 0.0,
+        };
         Some(Candidate {
             road: piece.road,
             s,
             t,
             distance: outside.hypot(along),
             heading_gap,
-            road_hdg: f.hdg,
+            road_hdg,
+            lane,
         })
     }
 
     fn position(&self, c: Candidate, heading: Option<Real>) -> RoadPoint {
         let road = &self.roads[c.road];
-        let (lane_id, offset) = lane_at(road, c.s, c.t);
+        let (lane_id, offset) = c.lane.unwrap_or_else(|| lane_at(road, c.s, c.t));
         RoadPoint {
             road: RoadHandle(c.road as u32),
             lane_id,

@@ -11,6 +11,8 @@ use rstar::{PointDistance, RTree, RTreeObject, AABB};
 
 use super::frame::road_frame;
 use super::lane_span::road_extent;
+use super::pieces_by_distance::{PieceGroup, GROUP};
+use super::point_tree::PointTree;
 use crate::math::Real;
 use crate::model::Road;
 
@@ -39,8 +41,8 @@ pub(crate) struct Piece {
 /// An index entry: a piece's box and its index in [`SpatialIndex::pieces`].
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Entry {
-    env: AABB<[Real; 2]>,
-    piece: usize,
+    pub(crate) env: AABB<[Real; 2]>,
+    pub(crate) piece: usize,
 }
 
 impl RTreeObject for Entry {
@@ -60,10 +62,14 @@ impl PointDistance for Entry {
 #[derive(Debug, Clone)]
 pub(crate) struct SpatialIndex {
     pub(crate) tree: RTree<Entry>,
+    /// The same tree, flat, for point look-ups.
+    points: PointTree,
     pub(crate) pieces: Vec<Piece>,
     pub(crate) boxes: Vec<AABB<[Real; 2]>>,
-    /// Pieces of road i are `pieces[per_road[i]]`.
-    pub(crate) per_road: Vec<Range<usize>>,
+    /// Runs of consecutive pieces of one road with their joint boxes, road after road.
+    pub(crate) groups: Vec<PieceGroup>,
+    /// The runs of road i are `groups[groups_per_road[i]]`.
+    pub(crate) groups_per_road: Vec<Range<usize>>,
 }
 
 impl SpatialIndex {
@@ -88,6 +94,13 @@ impl SpatialIndex {
             }
             per_road.push(first..pieces.len());
         }
+        let mut groups = Vec::with_capacity(total / GROUP + roads.len());
+        let mut groups_per_road = Vec::with_capacity(roads.len());
+        for range in &per_road {
+            let first = groups.len();
+            groups.extend(PieceGroup::of_road(&boxes, range.clone()));
+            groups_per_road.push(first..groups.len());
+        }
         let entries = boxes
             .iter()
             .enumerate()
@@ -96,11 +109,14 @@ impl SpatialIndex {
                 piece: i,
             })
             .collect();
+        let tree = RTree::bulk_load(entries);
         Self {
-            tree: RTree::bulk_load(entries),
+            points: PointTree::new(&tree),
+            tree,
             pieces,
             boxes,
-            per_road,
+            groups,
+            groups_per_road,
         }
     }
 
@@ -114,9 +130,10 @@ impl SpatialIndex {
         Some([lo[0], lo[1], hi[0], hi[1]])
     }
 
-    /// Index entries whose box holds (x, y).
-    pub(crate) fn containing(&self, x: Real, y: Real) -> impl Iterator<Item = usize> + '_ {
-        self.tree.locate_all_at_point(&[x, y]).map(|e| e.piece)
+    /// Calls `f` with every piece whose box holds (x, y), in the order of the R*-tree's
+    /// `locate_all_at_point`.
+    pub(crate) fn for_each_containing(&self, x: Real, y: Real, f: impl FnMut(usize)) {
+        self.points.for_each_containing(x, y, f);
     }
 
     /// Index entries in order of their box's distance to (x, y), with squared distance.

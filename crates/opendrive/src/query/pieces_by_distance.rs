@@ -1,0 +1,205 @@
+//! The pieces of one road in order of their box's distance from a point, without allocation
+//! (for [`RoadNetwork::locate_point_on_road`](crate::RoadNetwork::locate_point_on_road), the
+//! inverse of OpenDRIVE 1.8 §8.3's reference-line coordinates on a given road).
+//!
+//! The order is exactly that of sorting the road's pieces by (squared box distance, piece
+//! index) — a stable sort by distance — but the caller usually stops after two or three
+//! pieces, so the pieces are found a few at a time: one pass over the road keeps the
+//! [`BATCH`] nearest not yet given, skipping every run of [`GROUP`] consecutive pieces whose
+//! joint box is farther than the farthest kept (the joint box holds its pieces' boxes, so none
+//! of them can be nearer). A long road (a 20 km highway has 2,000 pieces) then costs one pass
+//! over its runs' boxes and a few runs' pieces, not a sort of all its pieces.
+
+use std::ops::Range;
+
+use rstar::{Envelope, AABB};
+
+use super::spatial::SpatialIndex;
+use crate::math::Real;
+
+/// Consecutive pieces of a road per joint box.
+pub(crate) const GROUP: usize = 16;
+/// Pieces found per pass.
+const BATCH: usize = 4;
+
+/// A run of at most [`GROUP`] consecutive pieces of one road and a box holding all their
+/// boxes.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct PieceGroup {
+    /// The joint box; the whole plane when a piece's box is not finite (never skipped then).
+    env: AABB<[Real; 2]>,
+    /// The pieces, as indices into [`SpatialIndex::pieces`].
+    pieces: Range<usize>,
+}
+
+impl PieceGroup {
+    /// The groups of the pieces `range`, whose boxes are `boxes[range]`, in order.
+    pub(crate) fn of_road(
+        boxes: &[AABB<[Real; 2]>],
+        range: Range<usize>,
+    ) -> impl Iterator<Item = PieceGroup> + '_ {
+        range.clone().step_by(GROUP).map(move |first| {
+            let pieces = first..(first + GROUP).min(range.end);
+            let finite = boxes[pieces.clone()]
+                .iter()
+                .all(|b| b.lower().iter().chain(&b.upper()).all(|v| v.is_finite()));
+            let env = if finite {
+                boxes[pieces.clone()]
+                    .iter()
+                    .fold(AABB::new_empty(), |acc, b| acc.merged(b))
+            } else {
+                AABB::from_corners([Real::NEG_INFINITY; 2], [Real::INFINITY; 2])
+            };
+            PieceGroup { env, pieces }
+        })
+    }
+}
+
+/// A piece and its box's squared distance from the point: the sort key, compared by distance
+/// (`total_cmp`) and then by piece index.
+type Key = (Real, usize);
+
+fn before(a: Key, b: Key) -> bool {
+    a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).is_lt()
+}
+
+/// The pieces of one road, nearest box first, as (piece index, squared box distance).
+pub(crate) struct PiecesByDistance<'a> {
+    index: &'a SpatialIndex,
+    groups: &'a [PieceGroup],
+    point: [Real; 2],
+    /// The pieces of the current pass, in order; `batch[next..len]` are still to give.
+    batch: [Key; BATCH],
+    len: usize,
+    next: usize,
+    /// Whether no piece remains after the current pass's.
+    last_pass: bool,
+}
+
+impl<'a> PiecesByDistance<'a> {
+    /// The pieces of road `road` by distance from (x, y).
+    pub(crate) fn new(index: &'a SpatialIndex, road: usize, x: Real, y: Real) -> Self {
+        let mut it = Self {
+            index,
+            groups: &index.groups[index.groups_per_road[road].clone()],
+            point: [x, y],
+            batch: [(0.0, 0); BATCH],
+            len: 0,
+            next: 0,
+            last_pass: false,
+        };
+        it.pass(None);
+        it
+    }
+
+    /// Fills the batch with the (up to) [`BATCH`] nearest pieces after key `after`.
+    fn pass(&mut self, after: Option<Key>) {
+        self.len = 0;
+        self.next = 0;
+        for g in self.groups {
+            if self.len == BATCH && g.env.distance_2(&self.point) > self.batch[BATCH - 1].0 {
+                continue;
+            }
+            for i in g.pieces.clone() {
+                let key = (self.index.boxes[i].distance_2(&self.point), i);
+                if after.is_some_and(|a| !before(a, key)) {
+                    continue;
+                }
+                if self.len == BATCH && !before(key, self.batch[BATCH - 1]) {
+                    continue;
+                }
+                // Insert in order, dropping the farthest when full.
+                let mut at = self.len.min(BATCH - 1);
+                while at > 0 && before(key, self.batch[at - 1]) {
+                    self.batch[at] = self.batch[at - 1];
+                    at -= 1;
+                }
+                self.batch[at] = key;
+                self.len = (self.len + 1).min(BATCH);
+            }
+        }
+        self.last_pass = self.len < BATCH;
+    }
+}
+
+impl Iterator for PiecesByDistance<'_> {
+    type Item = (usize, Real);
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.next == self.len {
+            if self.last_pass {
+                return None;
+            }
+            self.pass(Some(self.batch[BATCH - 1]));
+            if self.len == 0 {
+                return None;
+            }
+        }
+        let (d2, i) = self.batch[self.next];
+        self.next += 1;
+        Some((i, d2))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::query::frame::tests::straight_road;
+    use crate::query::lane_span::tests::centre_only_section;
+
+    /// The reference order: every piece of the road, stably sorted by box distance.
+    fn sorted(index: &SpatialIndex, road: usize, x: Real, y: Real) -> Vec<(usize, Real)> {
+        let mut all: Vec<(usize, Real)> = (0..index.pieces.len())
+            .filter(|&i| index.pieces[i].road == road)
+            .map(|i| (i, index.boxes[i].distance_2(&[x, y])))
+            .collect();
+        all.sort_by(|a, b| a.1.total_cmp(&b.1));
+        all
+    }
+
+    #[test]
+    fn gives_the_stable_sort_order_of_every_piece() {
+        // A straight 1,000 m road without lanes: 100 pieces of 10 m, boxes [10k − 0.5,
+        // 10k + 10.5] × [−0.5, 0.5] (MARGIN 0.5), so neighbouring boxes overlap by 1 m and
+        // points there tie at distance 0 (the lower index comes first). Points on the road,
+        // on a shared margin, beside it and beyond both ends.
+        let centre_only = centre_only_section();
+        let roads = vec![
+            straight_road(30.0, vec![], vec![centre_only.clone()]),
+            straight_road(1000.0, vec![], vec![centre_only]),
+        ];
+        let index = SpatialIndex::build(&roads);
+        assert_eq!(index.pieces.iter().filter(|p| p.road == 1).count(), 100);
+        for (x, y) in [
+            (505.0, 0.0),
+            (500.2, 0.1),
+            (0.0, 0.0),
+            (733.3, 40.0),
+            (-50.0, 3.0),
+            (1200.0, -7.0),
+            (250.0, 1e6),
+        ] {
+            let got: Vec<(usize, Real)> = PiecesByDistance::new(&index, 1, x, y).collect();
+            let want = sorted(&index, 1, x, y);
+            assert_eq!(got.len(), 100, "({x}, {y})");
+            assert!(
+                got.iter().zip(&want).all(|(a, b)| a.0 == b.0 && a.1 == b.1),
+                "({x}, {y}): {:?} vs {:?}",
+                &got[..6],
+                &want[..6]
+            );
+        }
+        // (500.2, 0.1) lies in the boxes of pieces 49 (ends at 500.5) and 50 (starts at
+        // 499.5): both at distance 0, 49 first; road 1's pieces follow road 0's 3.
+        let first: Vec<(usize, Real)> = PiecesByDistance::new(&index, 1, 500.2, 0.1)
+            .take(3)
+            .collect();
+        let base = 3; // road 0's pieces come first
+        assert_eq!(first[0], (base + 49, 0.0));
+        assert_eq!(first[1], (base + 50, 0.0));
+        // The third: piece 51's box starts at 509.5, 9.3 m away (piece 48's ends at 490.5,
+        // 9.7 m away).
+        assert_eq!(first[2].0, base + 51);
+        assert!((first[2].1 - 9.3 * 9.3).abs() < 1e-9, "{:?}", first[2]);
+    }
+}
