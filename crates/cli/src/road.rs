@@ -195,44 +195,57 @@ fn sample(net: &RoadNetwork, step: f64, out: &mut impl Write) -> anyhow::Result<
     Ok(())
 }
 
-/// `road locate`: CSV x,y,h in, road positions out. Numbers are written by
-/// `engine::output::push_fixed` (the bytes of `{:.6}` without `core::fmt`'s slow exact-decimal
-/// path) into one reused line buffer.
-fn locate(net: &RoadNetwork, input: impl BufRead, out: &mut impl Write) -> anyhow::Result<()> {
+/// `road locate`: CSV x,y,h in, road positions out. Each input line is read into one reused
+/// buffer and its fields parsed in place; numbers are written by `engine::output::push_fixed`
+/// (the bytes of `{:.6}` without `core::fmt`'s slow exact-decimal path) into one reused line
+/// buffer; the road's id is copied from the network (no `String` per look-up).
+fn locate(net: &RoadNetwork, mut input: impl BufRead, out: &mut impl Write) -> anyhow::Result<()> {
     writeln!(out, "x,y,h,road_id,lane_id,s,t,offset")?;
+    let mut line: Vec<u8> = Vec::with_capacity(128);
     let mut row: Vec<u8> = Vec::with_capacity(128);
-    for (i, line) in input.lines().enumerate() {
-        let line = line.context("cannot read stdin")?;
-        let text = line.trim();
+    let mut digits = itoa::Buffer::new();
+    for i in 0.. {
+        line.clear();
+        if input
+            .read_until(b'\n', &mut line)
+            .context("cannot read stdin")?
+            == 0
+        {
+            break;
+        }
+        let text = std::str::from_utf8(&line)
+            .map_err(|_| {
+                std::io::Error::new(
+                    std::io::ErrorKind::InvalidData,
+                    "stream did not contain valid UTF-8",
+                )
+            })
+            .context("cannot read stdin")?
+            .trim();
         if text.is_empty() {
             continue;
         }
-        let fields: Vec<&str> = text.split(',').map(str::trim).collect();
-        let nums: Vec<Option<f64>> = fields.iter().map(|f| f.parse::<f64>().ok()).collect();
-        if i == 0 && nums.iter().all(Option::is_none) {
-            continue; // header line
-        }
-        let (x, y, h) = match nums.as_slice() {
-            [Some(x), Some(y), Some(h)] => (*x, *y, *h),
-            _ => anyhow::bail!(
+        let Some((x, y, h)) = parse_point(text) else {
+            if i == 0 && text.split(',').all(|f| f.trim().parse::<f64>().is_err()) {
+                continue; // header line
+            }
+            anyhow::bail!(
                 "expected three numbers x,y,h, found \"{text}\" at stdin line {}",
                 i + 1
-            ),
+            );
         };
         row.clear();
         for v in [x, y, h] {
             engine::output::push_fixed(&mut row, v, 6);
             row.push(b',');
         }
-        match net.locate(x, y, Some(h)) {
+        match net.locate_point(x, y, Some(h)) {
             Some(p) => {
-                row.extend_from_slice(p.road_id.as_bytes());
-                // Writing to a Vec cannot fail.
-                let _ = write!(row, ",{},", p.lane_id);
-                for (k, v) in [p.s, p.t, p.offset].into_iter().enumerate() {
-                    if k > 0 {
-                        row.push(b',');
-                    }
+                row.extend_from_slice(net.road_at(p.road).id.as_bytes());
+                row.push(b',');
+                row.extend_from_slice(digits.format(p.lane_id).as_bytes());
+                for v in [p.s, p.t, p.offset] {
+                    row.push(b',');
                     engine::output::push_fixed(&mut row, v, 6);
                 }
             }
@@ -242,6 +255,17 @@ fn locate(net: &RoadNetwork, input: impl BufRead, out: &mut impl Write) -> anyho
         out.write_all(&row)?;
     }
     Ok(())
+}
+
+/// The three numbers of a line `x,y,h` (fields trimmed); `None` unless there are exactly three
+/// fields and each is a number.
+fn parse_point(text: &str) -> Option<(f64, f64, f64)> {
+    let mut fields = text.split(',').map(|f| f.trim().parse::<f64>());
+    let (x, y, h) = (fields.next()?, fields.next()?, fields.next()?);
+    match (fields.next(), x, y, h) {
+        (None, Ok(x), Ok(y), Ok(h)) => Some((x, y, h)),
+        _ => None,
+    }
 }
 
 #[cfg(test)]
