@@ -77,24 +77,20 @@ struct Candidate {
     lane: Option<(i32, Real)>,
 }
 
-/// Solves place(s, t) = (px, py) on `road` with s kept in [lo, hi]; returns (s, t, residual)
+/// Solves place(s, t) = (px, py) on `road` with s kept in the piece's [s0, s1]; returns (s, t, residual)
 /// and the road's heading at that s (which the caller needs again: computed once). The frame
 /// is evaluated again only where s has changed (the same s gives the same frame).
-fn project(
-    road: &Road,
-    px: Real,
-    py: Real,
-    lo: Real,
-    hi: Real,
-) -> Option<(Real, Real, Real, Real)> {
+fn project(road: &Road, piece: &Piece, px: Real, py: Real) -> Option<(Real, Real, Real, Real)> {
+    let (lo, hi) = (piece.s0, piece.s1);
+    let frame = |s| plan_frame(road, s, piece.hints);
     let mut s = 0.5 * (lo + hi);
     let mut t = 0.0;
     let span = (hi - lo).max(1.0);
-    let mut f = plan_frame(road, s);
+    let mut f = frame(s);
     let mut f_at = s;
     for _ in 0..MAX_ITER {
         if f_at.to_bits() != s.to_bits() {
-            (f, f_at) = (plan_frame(road, s), s);
+            (f, f_at) = (frame(s), s);
         }
         let [x, y] = f.place(t);
         let (ex, ey) = (px - x, py - y);
@@ -117,7 +113,7 @@ fn project(
         }
     }
     if f_at.to_bits() != s.to_bits() {
-        f = plan_frame(road, s);
+        f = frame(s);
     }
     let [x, y] = f.place(t);
     let resid = (px - x).hypot(py - y);
@@ -219,12 +215,14 @@ impl RoadNetwork {
         heading: Option<Real>,
     ) -> Option<Candidate> {
         let road = &self.roads[piece.road];
-        let (s, t, resid, road_hdg) = project(road, x, y, piece.s0, piece.s1)?;
+        let (s, t, resid, road_hdg) = project(road, piece, x, y)?;
         // A foot point on a neighbouring piece leaves a residual along the road; the candidate
         // then counts that residual as distance, and the neighbouring piece (whose box is no
         // farther) gives the exact one.
-        let section = road.lane_section_at(s);
-        let (right, left) = road_extent(road, section, s);
+        let (right, left) = match piece.extent {
+            Some(e) if e.lo <= s && s <= e.hi => (e.right, e.left),
+            _ => road_extent(road, road.lane_section_at(s), s),
+        };
         let outside = (t - left).max(right - t).max(0.0);
         let along = if resid > RESIDUAL_TOLERANCE {
             resid

@@ -13,9 +13,65 @@
 //! −signum(dz) has; so b·(−signum(dz)) is the same fwd, signed zero and NaN included. A
 //! signed zero matters where the reference point itself has x or y = ±0. Banked roads
 //! (roll ≠ 0) compute the pitch as the full frame does.
+//!
+//! The geometry and the elevation and superelevation records valid at s are looked up from
+//! [`Hints`]: the indices valid on the piece being projected onto, checked first, then the
+//! binary search of `PlanView::eval_trig` and `eval_piecewise`. The parser sorts geometries
+//! and records by their start (finite numbers), so "the last one starting at or before s"
+//! holds for the hint exactly when the binary search would find it.
 
-use crate::math::{eval_piecewise, Real};
+use crate::math::{Cubic, Real, LENGTH_EPSILON};
 use crate::model::Road;
+
+/// Indices of the geometry, elevation record and superelevation record valid somewhere on a
+/// piece of road (usually all of it), tried first by [`plan_frame`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Hints {
+    geometry: u32,
+    elevation: u32,
+    superelevation: u32,
+}
+
+impl Hints {
+    /// The indices valid at `s` on `road`.
+    pub(crate) fn at(road: &Road, s: Real) -> Self {
+        let index = |i: usize| u32::try_from(i).unwrap_or(u32::MAX);
+        Self {
+            geometry: index(road.plan_view.index_at(s)),
+            elevation: index(record_index(&road.elevation, s, u32::MAX)),
+            superelevation: index(record_index(&road.superelevation, s, u32::MAX)),
+        }
+    }
+}
+
+/// `items.partition_point(pred).saturating_sub(1)` (the last item for which the ascending
+/// predicate holds, or 0), trying `hint` first.
+#[inline]
+fn last_holding<T>(items: &[T], hint: u32, pred: impl Fn(&T) -> bool) -> usize {
+    let h = hint as usize;
+    if let Some(item) = items.get(h) {
+        if pred(item) && items.get(h + 1).map_or(true, |next| !pred(next)) {
+            return h;
+        }
+    }
+    items.partition_point(pred).saturating_sub(1)
+}
+
+/// The record of `records` that `eval_piecewise` evaluates at `x`.
+#[inline]
+fn record_index(records: &[Cubic], x: Real, hint: u32) -> usize {
+    let bound = x + LENGTH_EPSILON;
+    last_holding(records, hint, |r| r.start <= bound)
+}
+
+/// `eval_piecewise(records, x)`, the record looked up from `hint` first.
+#[inline]
+fn eval_hinted(records: &[Cubic], x: Real, hint: u32) -> (Real, Real) {
+    if records.is_empty() {
+        return (0.0, 0.0);
+    }
+    records[record_index(records, x, hint)].eval(x)
+}
 
 /// The horizontal placement of a road's cross-section at some s.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -33,12 +89,15 @@ pub(crate) struct PlanFrame {
     cos_r: Real,
 }
 
-/// The horizontal frame of `road` at `s` (s already within [0, length]).
+/// The horizontal frame of `road` at `s` (s already within [0, length]), its geometry and
+/// records looked up from `hints` first.
 #[inline]
-pub(crate) fn plan_frame(road: &Road, s: Real) -> PlanFrame {
-    let (rp, sin_h, cos_h) = road.plan_view.eval_trig(s);
-    let (_, dz) = eval_piecewise(&road.elevation, s);
-    let (roll, _) = eval_piecewise(&road.superelevation, s);
+pub(crate) fn plan_frame(road: &Road, s: Real, hints: Hints) -> PlanFrame {
+    let geometries = road.plan_view.geometries();
+    let g = last_holding(geometries, hints.geometry, |g| g.s <= s);
+    let (rp, sin_h, cos_h) = geometries[g].eval_trig(s);
+    let (_, dz) = eval_hinted(&road.elevation, s, hints.elevation);
+    let (roll, _) = eval_hinted(&road.superelevation, s, hints.superelevation);
     let (sin_p, sin_r, cos_r) = if roll == 0.0 {
         (if dz == 0.0 { 0.0 } else { -dz.signum() }, 0.0, 1.0)
     } else {
@@ -156,7 +215,11 @@ mod tests {
         let mut compared = 0;
         for road in &roads {
             for s in [0.0, 0.5, 33.3, 100.0] {
-                let (f, p) = (road_frame(road, s), plan_frame(road, s));
+                let f = road_frame(road, s);
+                // Right hints, and hints of another s (the binary search then).
+                let p = plan_frame(road, s, Hints::at(road, s));
+                let other = plan_frame(road, s, Hints::at(road, 100.0 - s));
+                assert_eq!(p, other);
                 assert_eq!(f.hdg.to_bits(), p.hdg.to_bits());
                 for t in [0.0, -0.0, 1.5, -3.25, 1e-300, -7e5] {
                     let (xy, j) = full(&f, t);
@@ -169,5 +232,59 @@ mod tests {
             }
         }
         assert_eq!(compared, 18 * 4 * 6);
+    }
+    #[test]
+    fn hints_give_the_binary_search_answer() {
+        // Three geometries (a line to s = 10, an arc to 25, a line to 40), an elevation record
+        // every 5 m and two superelevation records: at every s on a 0.25 m grid and just
+        // around each start, the frame from any piece's hints is the full frame's, bit for bit.
+        let mut road = straight_road(40.0, vec![], vec![centre_only_section()]);
+        let arc_end = Arc { curvature: 0.02 }.eval(15.0);
+        road.plan_view = PlanView::new(vec![
+            Geometry::new(0.0, 0.0, 0.0, 0.0, 10.0, GeometryKind::Line),
+            Geometry::new(
+                10.0,
+                10.0,
+                0.0,
+                0.0,
+                15.0,
+                GeometryKind::Arc(Arc { curvature: 0.02 }),
+            ),
+            Geometry::new(
+                25.0,
+                10.0 + arc_end.u,
+                arc_end.v,
+                arc_end.hdg,
+                15.0,
+                GeometryKind::Line,
+            ),
+        ]);
+        road.elevation = (0..8)
+            .map(|k| cubic(5.0 * k as f64, 0.1 * k as f64, 0.01 * (k as f64 - 3.0)))
+            .collect();
+        road.superelevation = vec![cubic(0.0, 0.0, 0.0), cubic(20.0, 0.05, 0.0)];
+        let mut samples: Vec<f64> = (0..=160).map(|k| 0.25 * k as f64).collect();
+        for start in [5.0, 10.0, 15.0, 20.0, 25.0, 30.0, 35.0] {
+            samples.extend([start - 1e-9, start - 1e-12, start + 1e-12, start + 1e-9]);
+        }
+        let hints: Vec<Hints> = [0.0, 7.5, 12.0, 20.0, 24.9, 33.0, 40.0]
+            .iter()
+            .map(|&s| Hints::at(&road, s))
+            .collect();
+        for &s in &samples {
+            let f = road_frame(&road, s);
+            for &h in &hints {
+                let p = plan_frame(&road, s, h);
+                assert_eq!(p.hdg.to_bits(), f.hdg.to_bits(), "s {s}");
+                for t in [0.0, -2.5, 3.75] {
+                    let (xy, _) = full(&f, t);
+                    assert_eq!(
+                        p.place(t).map(Real::to_bits),
+                        xy.map(Real::to_bits),
+                        "s {s}"
+                    );
+                }
+            }
+        }
     }
 }

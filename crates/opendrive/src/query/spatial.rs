@@ -12,6 +12,7 @@ use rstar::{PointDistance, RTree, RTreeObject, AABB};
 use super::frame::road_frame;
 use super::lane_span::road_extent;
 use super::pieces_by_distance::{PieceGroup, GROUP};
+use super::plan_frame::Hints;
 use super::point_tree::PointTree;
 use crate::math::Real;
 use crate::model::Road;
@@ -27,7 +28,7 @@ const SAMPLES: usize = 5;
 /// between samples.
 const MARGIN: Real = 0.5;
 
-/// A stretch [s0, s1] of one road.
+/// A stretch [s0, s1] of one road, with what its look-ups need first.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Piece {
     /// Index of the road in the network.
@@ -36,6 +37,42 @@ pub(crate) struct Piece {
     pub(crate) s0: Real,
     /// End s (m).
     pub(crate) s1: Real,
+    /// The geometry and profile records valid at the piece's middle.
+    pub(crate) hints: Hints,
+    /// The road surface's extent where it is the same at every s around the piece's middle.
+    pub(crate) extent: Option<ConstantExtent>,
+}
+
+/// Over s ∈ [lo, hi] the road surface spans t ∈ [right, left], the same numbers bit for bit
+/// as `road_extent` gives at every such s ([`Road::constant_lanes`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ConstantExtent {
+    pub(crate) lo: Real,
+    pub(crate) hi: Real,
+    pub(crate) right: Real,
+    pub(crate) left: Real,
+}
+
+impl Piece {
+    fn new(road_index: usize, road: &Road, s0: Real, s1: Real) -> Self {
+        let mid = 0.5 * (s0 + s1);
+        let extent = road.constant_lanes(mid).map(|(lo, hi)| {
+            let (right, left) = road_extent(road, road.lane_section_at(mid), mid);
+            ConstantExtent {
+                lo,
+                hi,
+                right,
+                left,
+            }
+        });
+        Self {
+            road: road_index,
+            s0,
+            s1,
+            hints: Hints::at(road, mid),
+            extent,
+        }
+    }
 }
 
 /// An index entry: a piece's box and its index in [`SpatialIndex::pieces`].
@@ -160,7 +197,7 @@ fn road_pieces(ri: usize, road: &Road) -> Vec<(Piece, AABB<[Real; 2]>)> {
         for k in 0..n {
             let s0 = g_start + h * k as Real;
             let s1 = if k + 1 == n { g_end } else { s0 + h };
-            out.push((Piece { road: ri, s0, s1 }, piece_box(road, s0, s1)));
+            out.push((Piece::new(ri, road, s0, s1), piece_box(road, s0, s1)));
         }
     }
     out
