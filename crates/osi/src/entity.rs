@@ -11,7 +11,7 @@
 
 use crate::classification::{pedestrian_type, stationary_type, vehicle_role, vehicle_type};
 use crate::error::Error;
-use crate::ids::{IdAllocator, IdKey};
+use crate::ids::IdAllocator;
 use crate::osi3::moving_object::vehicle_classification::LightState;
 use crate::osi3::moving_object::{
     MovingObjectClassification, PedestrianAttributes, Type as MovingType, VehicleAttributes,
@@ -20,9 +20,10 @@ use crate::osi3::moving_object::{
 use crate::osi3::stationary_object::classification::Type as StationaryType;
 use crate::osi3::stationary_object::Classification as StationaryClassification;
 use crate::osi3::{
-    BaseStationary, ColorDescription, Dimension3d, ExternalReference, Identifier, MovingObject,
-    Orientation3d, StationaryObject, Vector3d,
+    BaseStationary, ColorDescription, Dimension3d, Identifier, MovingObject, Orientation3d,
+    StationaryObject, Vector3d,
 };
+use crate::reuse;
 use crate::rigid_body::RigidBodyState;
 
 /// `ExternalReference.type` of OpenSCENARIO sources.
@@ -85,14 +86,6 @@ fn check_box(position: [f64; 3], dimension: [f64; 3]) -> Result<(), Error> {
     Ok(())
 }
 
-fn source_reference(file: Option<&str>, entity_type: &str, name: &str) -> ExternalReference {
-    ExternalReference {
-        reference: file.map(str::to_string),
-        r#type: Some(OPENSCENARIO_REFERENCE_TYPE.to_string()),
-        identifier: vec![entity_type.to_string(), name.to_string()],
-    }
-}
-
 /// The `MovingObject` of `info` in state `state`, on lanes `lanes` (OSI lane ids).
 pub fn moving_object(
     ids: &mut IdAllocator,
@@ -100,6 +93,21 @@ pub fn moving_object(
     state: &RigidBodyState,
     lanes: &[Identifier],
 ) -> Result<MovingObject, Error> {
+    let mut object = MovingObject::default();
+    fill_moving_object(&mut object, ids, info, state, lanes)?;
+    Ok(object)
+}
+
+/// Writes the `MovingObject` of `info` in state `state`, on lanes `lanes`, over `object`
+/// (e.g. last frame's message of the same entity): the same message [`moving_object`] gives,
+/// reusing `object`'s strings and lists ([`crate::reuse`]). On error `object` is unchanged.
+pub fn fill_moving_object(
+    object: &mut MovingObject,
+    ids: &mut IdAllocator,
+    info: &EntityInfo<'_>,
+    state: &RigidBodyState,
+    lanes: &[Identifier],
+) -> Result<(), Error> {
     check_box(state.bbox_centre_position(), state.dimension)?;
     let (object_type, vehicle, entity_type) = match info.kind {
         EntityKind::Vehicle { category } => (
@@ -112,29 +120,38 @@ pub fn moving_object(
             (t, v, "Pedestrian")
         }
     };
-    let mut object = MovingObject {
-        id: Some(ids.id(IdKey::MovingObject(info.name.to_string()))),
+    let role = info.role.map(vehicle_role).transpose()?.map(|r| r as i32);
+    let old = std::mem::take(object);
+    let lane_ids = old
+        .moving_object_classification
+        .map(|c| c.assigned_lane_id)
+        .unwrap_or_default();
+    *object = MovingObject {
+        id: Some(ids.moving_object(info.name)),
         base: Some(state.base_moving()),
         r#type: Some(object_type as i32),
-        model_reference: info.model3d.map(str::to_string),
+        model_reference: reuse::string(old.model_reference, info.model3d),
         moving_object_classification: Some(MovingObjectClassification {
-            assigned_lane_id: lanes.to_vec(),
+            assigned_lane_id: reuse::ids(lane_ids, lanes),
             ..Default::default()
         }),
-        source_reference: vec![source_reference(info.scenario_file, entity_type, info.name)],
+        source_reference: reuse::source_reference(
+            old.source_reference,
+            info.scenario_file,
+            OPENSCENARIO_REFERENCE_TYPE,
+            &[entity_type, info.name],
+        ),
         color_description: info.color,
         ..Default::default()
     };
     if let Some(vehicle) = vehicle {
-        let trailer_id = info
-            .trailer
-            .map(|t| ids.id(IdKey::MovingObject(t.to_string())));
+        let trailer_id = info.trailer.map(|t| ids.moving_object(t));
         object.vehicle_classification = Some(VehicleClassification {
             r#type: Some(vehicle as i32),
             has_trailer: Some(trailer_id.is_some()),
             trailer_id,
             light_state: info.lights,
-            role: info.role.map(vehicle_role).transpose()?.map(|r| r as i32),
+            role,
         });
         object.vehicle_attributes = Some(VehicleAttributes {
             bbcenter_to_rear: Some(state.bbcenter_to_rear()),
@@ -152,7 +169,7 @@ pub fn moving_object(
             skeleton_bone: Vec::new(),
         });
     }
-    Ok(object)
+    Ok(())
 }
 
 /// A `MiscObject` or an `ExternalObjectReference` as a `StationaryObject`; `position` is
@@ -184,13 +201,32 @@ pub fn stationary_object(
     info: &MiscObjectInfo<'_>,
     lanes: &[Identifier],
 ) -> Result<StationaryObject, Error> {
+    let mut object = StationaryObject::default();
+    fill_stationary_object(&mut object, ids, info, lanes)?;
+    Ok(object)
+}
+
+/// Writes the `StationaryObject` of a MiscObject over `object`, as [`fill_moving_object`]
+/// does for moving objects: the message [`stationary_object`] gives, in `object`'s buffers.
+/// On error `object` is unchanged.
+pub fn fill_stationary_object(
+    object: &mut StationaryObject,
+    ids: &mut IdAllocator,
+    info: &MiscObjectInfo<'_>,
+    lanes: &[Identifier],
+) -> Result<(), Error> {
     check_box(info.position, info.dimension)?;
     let (classification, entity_type) = match info.category {
         Some(category) => (stationary_type(category)?, "MiscObject"),
         None => (StationaryType::Other, "ExternalObjectReference"),
     };
-    Ok(StationaryObject {
-        id: Some(ids.id(IdKey::StationaryObject(info.name.to_string()))),
+    let old = std::mem::take(object);
+    let lane_ids = old
+        .classification
+        .map(|c| c.assigned_lane_id)
+        .unwrap_or_default();
+    *object = StationaryObject {
+        id: Some(ids.stationary_object(info.name)),
         base: Some(base_stationary(
             info.position,
             info.orientation,
@@ -198,13 +234,19 @@ pub fn stationary_object(
         )),
         classification: Some(StationaryClassification {
             r#type: Some(classification as i32),
-            assigned_lane_id: lanes.to_vec(),
+            assigned_lane_id: reuse::ids(lane_ids, lanes),
             ..Default::default()
         }),
-        model_reference: info.model3d.map(str::to_string),
-        source_reference: vec![source_reference(info.scenario_file, entity_type, info.name)],
+        model_reference: reuse::string(old.model_reference, info.model3d),
+        source_reference: reuse::source_reference(
+            old.source_reference,
+            info.scenario_file,
+            OPENSCENARIO_REFERENCE_TYPE,
+            &[entity_type, info.name],
+        ),
         color_description: info.color,
-    })
+    };
+    Ok(())
 }
 
 /// A `BaseStationary` of box centre `[x, y, z]`, orientation `[yaw, pitch, roll]` and
@@ -237,6 +279,7 @@ pub(crate) fn base_stationary(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ids::IdKey;
 
     fn car() -> EntityInfo<'static> {
         EntityInfo {
@@ -315,5 +358,41 @@ mod tests {
             o.source_reference[0].identifier,
             vec!["ExternalObjectReference".to_string(), "Bridge".to_string()]
         );
+    }
+
+    /// A slot last written with a pedestrian on two lanes, then written with a vehicle on
+    /// none, holds exactly the vehicle's fresh message (no field of the pedestrian left).
+    #[test]
+    fn a_reused_object_equals_a_fresh_one() {
+        let mut ids = IdAllocator::new();
+        let state = RigidBodyState {
+            dimension: [4.5, 1.8, 1.5],
+            bbox_centre: [1.4, 0.0, 0.75],
+            ..Default::default()
+        };
+        let walker = EntityInfo {
+            name: "Walker-with-a-long-name",
+            kind: EntityKind::Pedestrian {
+                category: "pedestrian",
+            },
+            model3d: Some("walker.osgb"),
+            trailer: None,
+            ..car()
+        };
+        let lanes = [Identifier { value: Some(7) }, Identifier { value: Some(8) }];
+        let mut slot = moving_object(&mut ids, &walker, &state, &lanes).unwrap();
+        assert!(slot.pedestrian_attributes.is_some());
+        fill_moving_object(&mut slot, &mut ids, &car(), &state, &[]).unwrap();
+        let fresh = moving_object(&mut ids, &car(), &state, &[]).unwrap();
+        assert_eq!(slot, fresh);
+        // Walker 1, Ego 2, Trailer 3, in the order first asked.
+        assert_eq!(slot.id.unwrap().value, Some(2));
+        // A refused state leaves the slot as it was.
+        let flat = RigidBodyState {
+            dimension: [0.0; 3],
+            ..state
+        };
+        assert!(fill_moving_object(&mut slot, &mut ids, &walker, &flat, &lanes).is_err());
+        assert_eq!(slot, fresh);
     }
 }

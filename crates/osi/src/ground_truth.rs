@@ -7,14 +7,24 @@
 //! vehicle rule (`--osi-host NAME`; by default the entity named `Ego`, else none).
 //! Each step opens a [`FrameBuilder`], adds entities, and finishes it into a message that
 //! carries the interface version (3.8.0) in every frame.
+//!
+//! The builder keeps one `GroundTruth` for the whole run and writes each frame over the last
+//! ([`crate::reuse`]): the k-th object added in a frame overwrites the k-th object of the
+//! last one, lists are cut back or extended only where the frame has fewer or more objects,
+//! and the map strings are set once. A frame is byte for byte the message a fresh build
+//! would give; a run whose entity set does not change allocates nothing per frame.
 
-use crate::entity::{moving_object, stationary_object, EntityInfo, MiscObjectInfo};
+use crate::entity::{fill_moving_object, fill_stationary_object, EntityInfo, MiscObjectInfo};
 use crate::error::Error;
-use crate::ids::{IdAllocator, IdKey};
+use crate::ids::IdAllocator;
 use crate::lanes::{from_network, RoadLanes};
 use crate::osi3::ground_truth::ProjFrameOffset;
-use crate::osi3::{GroundTruth, Identifier, Timestamp, TrafficLight, TrafficSign, Vector3d};
+use crate::osi3::{
+    EnvironmentalConditions, GroundTruth, Identifier, Timestamp, TrafficLight, TrafficSign,
+    Vector3d,
+};
 use crate::polyline::Sampling;
+use crate::reuse::slot;
 use crate::rigid_body::RigidBodyState;
 use crate::version::interface_version;
 
@@ -38,11 +48,21 @@ pub struct GroundTruthBuilder {
     lanes: RoadLanes,
     static_data: StaticData,
     host: Option<String>,
-    map_reference: Option<String>,
-    model_reference: Option<String>,
-    proj_string: Option<String>,
-    proj_frame_offset: Option<ProjFrameOffset>,
+    /// The message of the last frame, written over by the next (module doc); the map and
+    /// projection fields are set here once.
+    gt: GroundTruth,
+    /// How many of each list the open frame has written so far.
+    filled: Filled,
     frames: u64,
+}
+
+/// The number of objects of each list written in the open frame.
+#[derive(Debug, Clone, Copy, Default)]
+struct Filled {
+    moving: usize,
+    stationary: usize,
+    lights: usize,
+    signs: usize,
 }
 
 impl GroundTruthBuilder {
@@ -67,14 +87,14 @@ impl GroundTruthBuilder {
         sampling: &Sampling,
     ) -> Result<(), Error> {
         self.lanes = from_network(network, &mut self.ids, sampling, map_reference)?;
-        self.map_reference = map_reference.map(str::to_string);
-        self.proj_string = network
+        self.gt.map_reference = map_reference.map(str::to_string);
+        self.gt.proj_string = network
             .header()
             .geo_reference
             .as_ref()
             .map(|g| g.0.trim().to_string())
             .filter(|s| !s.is_empty());
-        self.proj_frame_offset = network.header().offset.as_ref().map(|o| ProjFrameOffset {
+        self.gt.proj_frame_offset = network.header().offset.as_ref().map(|o| ProjFrameOffset {
             position: Some(Vector3d {
                 x: Some(o.x),
                 y: Some(o.y),
@@ -88,7 +108,7 @@ impl GroundTruthBuilder {
     /// Sets `model_reference`, the 3D model of the environment (e.g. the scenario's
     /// `SceneGraphFile`).
     pub fn set_model_reference(&mut self, model_reference: Option<&str>) {
-        self.model_reference = model_reference.map(str::to_string);
+        self.gt.model_reference = model_reference.map(str::to_string);
     }
 
     /// Names the host vehicle (`--osi-host`); `None` returns to the default
@@ -113,19 +133,15 @@ impl GroundTruthBuilder {
         let seconds = i64::try_from(timestamp_nanos / 1_000_000_000).unwrap_or(i64::MAX);
         // The remainder is below 10⁹ and fits in u32.
         let nanos = (timestamp_nanos % 1_000_000_000) as u32;
-        let gt = GroundTruth {
-            version: Some(interface_version()),
-            timestamp: Some(Timestamp {
-                seconds: Some(seconds),
-                nanos: Some(nanos),
-            }),
-            map_reference: self.map_reference.clone(),
-            model_reference: self.model_reference.clone(),
-            proj_string: self.proj_string.clone(),
-            proj_frame_offset: self.proj_frame_offset,
-            ..Default::default()
-        };
-        FrameBuilder { owner: self, gt }
+        let gt = &mut self.gt;
+        gt.version = Some(interface_version());
+        gt.timestamp = Some(Timestamp {
+            seconds: Some(seconds),
+            nanos: Some(nanos),
+        });
+        gt.environmental_conditions = None;
+        self.filled = Filled::default();
+        FrameBuilder { owner: self }
     }
 }
 
@@ -133,10 +149,9 @@ impl GroundTruthBuilder {
 #[derive(Debug)]
 pub struct FrameBuilder<'a> {
     owner: &'a mut GroundTruthBuilder,
-    gt: GroundTruth,
 }
 
-impl FrameBuilder<'_> {
+impl<'a> FrameBuilder<'a> {
     /// The run's id allocator, for lane look-ups while the frame is open
     /// ([`crate::lanes::assigned_lane_at`]).
     pub fn ids(&self) -> &IdAllocator {
@@ -150,11 +165,12 @@ impl FrameBuilder<'_> {
         state: &RigidBodyState,
         lanes: &[Identifier],
     ) -> Result<Identifier, Error> {
-        let object = moving_object(&mut self.owner.ids, info, state, lanes)?;
-        // `moving_object` always sets the id.
-        let id = object.id.unwrap_or_default();
-        self.gt.moving_object.push(object);
-        Ok(id)
+        let owner = &mut *self.owner;
+        let object = slot(&mut owner.gt.moving_object, owner.filled.moving);
+        fill_moving_object(object, &mut owner.ids, info, state, lanes)?;
+        owner.filled.moving += 1;
+        // `fill_moving_object` always sets the id.
+        Ok(object.id.unwrap_or_default())
     }
 
     /// Adds a MiscObject as a stationary object; returns its id.
@@ -163,27 +179,35 @@ impl FrameBuilder<'_> {
         info: &MiscObjectInfo<'_>,
         lanes: &[Identifier],
     ) -> Result<Identifier, Error> {
-        let object = stationary_object(&mut self.owner.ids, info, lanes)?;
-        // `stationary_object` always sets the id.
-        let id = object.id.unwrap_or_default();
-        self.gt.stationary_object.push(object);
-        Ok(id)
+        let owner = &mut *self.owner;
+        let object = slot(&mut owner.gt.stationary_object, owner.filled.stationary);
+        fill_stationary_object(object, &mut owner.ids, info, lanes)?;
+        owner.filled.stationary += 1;
+        // `fill_stationary_object` always sets the id.
+        Ok(object.id.unwrap_or_default())
     }
 
-    /// Adds a traffic light bulb under the id of `key`; returns the id.
-    pub fn add_traffic_light(&mut self, key: IdKey, mut light: TrafficLight) -> Identifier {
-        let id = self.owner.ids.id(key);
-        light.id = Some(id);
-        self.gt.traffic_light.push(light);
-        id
+    /// The next traffic light of this frame, to be written in place (last frame's light at
+    /// this place, or a new default one), and the run's id allocator for its id.
+    pub fn next_traffic_light(&mut self) -> (&mut TrafficLight, &mut IdAllocator) {
+        let owner = &mut *self.owner;
+        let light = slot(&mut owner.gt.traffic_light, owner.filled.lights);
+        owner.filled.lights += 1;
+        (light, &mut owner.ids)
     }
 
-    /// Adds a traffic sign under the id of `key`; returns the id.
-    pub fn add_traffic_sign(&mut self, key: IdKey, mut sign: TrafficSign) -> Identifier {
-        let id = self.owner.ids.id(key);
-        sign.id = Some(id);
-        self.gt.traffic_sign.push(sign);
-        id
+    /// The next traffic sign of this frame, to be written in place, as
+    /// [`Self::next_traffic_light`].
+    pub fn next_traffic_sign(&mut self) -> (&mut TrafficSign, &mut IdAllocator) {
+        let owner = &mut *self.owner;
+        let sign = slot(&mut owner.gt.traffic_sign, owner.filled.signs);
+        owner.filled.signs += 1;
+        (sign, &mut owner.ids)
+    }
+
+    /// Sets the frame's `environmental_conditions` (none unless set).
+    pub fn set_environmental_conditions(&mut self, conditions: Option<EnvironmentalConditions>) {
+        self.owner.gt.environmental_conditions = conditions;
     }
 
     /// Whether this frame carries the static data (lanes, static traffic signs), as
@@ -196,20 +220,33 @@ impl FrameBuilder<'_> {
     }
 
     /// The finished message: host vehicle id (if the host entity is in the frame) and,
-    /// as `--osi-static` asks, the lanes.
-    pub fn finish(mut self) -> GroundTruth {
-        let host_name = self.owner.host.as_deref().unwrap_or(DEFAULT_HOST);
-        let host = self
-            .owner
-            .ids
-            .get(&IdKey::MovingObject(host_name.to_string()));
-        self.gt.host_vehicle_id =
-            host.filter(|h| self.gt.moving_object.iter().any(|m| m.id == Some(*h)));
-        if self.carries_static_data() {
-            self.gt.lane = self.owner.lanes.lanes.clone();
-            self.gt.lane_boundary = self.owner.lanes.lane_boundaries.clone();
+    /// as `--osi-static` asks, the lanes. Objects of the last frame beyond this frame's count
+    /// are dropped here.
+    pub fn finish(self) -> &'a GroundTruth {
+        let carries_static_data = self.carries_static_data();
+        let owner = self.owner;
+        let gt = &mut owner.gt;
+        gt.moving_object.truncate(owner.filled.moving);
+        gt.stationary_object.truncate(owner.filled.stationary);
+        gt.traffic_light.truncate(owner.filled.lights);
+        gt.traffic_sign.truncate(owner.filled.signs);
+        let host_name = owner.host.as_deref().unwrap_or(DEFAULT_HOST);
+        let host = owner.ids.get_moving_object(host_name);
+        gt.host_vehicle_id = host.filter(|h| gt.moving_object.iter().any(|m| m.id == Some(*h)));
+        // The lanes do not change during a run: put in by the first frame, they stay there for
+        // `Every` and are taken out again for `First`.
+        match (carries_static_data, owner.frames) {
+            (true, 0) => {
+                gt.lane.clone_from(&owner.lanes.lanes);
+                gt.lane_boundary.clone_from(&owner.lanes.lane_boundaries);
+            }
+            (true, _) => {}
+            (false, _) => {
+                gt.lane.clear();
+                gt.lane_boundary.clear();
+            }
         }
-        self.owner.frames += 1;
-        self.gt
+        owner.frames += 1;
+        &owner.gt
     }
 }

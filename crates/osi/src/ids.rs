@@ -58,45 +58,153 @@ pub enum IdKey {
 }
 
 /// Hands out globally unique, stable OSI ids (see the module doc).
+///
+/// The ids live in one map per kind, so that the ids asked for in every frame (an entity's by
+/// its name, a lane's by road id, lane_section and lane) are found from borrowed keys
+/// ([`IdAllocator::moving_object`], [`IdAllocator::lane`]) without building an owned
+/// [`IdKey`]: no allocation per object and frame once the key has its id.
 #[derive(Debug, Clone, Default)]
 pub struct IdAllocator {
-    ids: HashMap<IdKey, u64>,
+    moving: HashMap<String, u64>,
+    stationary: HashMap<String, u64>,
+    /// Lanes and lane boundaries by road id, then (lane_section, lane, boundary?).
+    lanes: HashMap<String, HashMap<(usize, i32, bool), u64>>,
+    /// Traffic lights and signs.
+    signals: HashMap<IdKey, u64>,
     next: u64,
+    len: usize,
 }
 
 impl IdAllocator {
     /// An allocator whose first id is 1.
     pub fn new() -> Self {
         IdAllocator {
-            ids: HashMap::new(),
             next: 1,
+            ..Default::default()
         }
+    }
+
+    /// The next free value (from 1).
+    fn fresh(next: &mut u64, len: &mut usize) -> u64 {
+        let v = (*next).max(1);
+        *next = v + 1;
+        *len += 1;
+        v
     }
 
     /// The id of `key`: the one it got before, or the next free one.
     pub fn id(&mut self, key: IdKey) -> Identifier {
-        let next = &mut self.next;
-        let value = *self.ids.entry(key).or_insert_with(|| {
-            let v = (*next).max(1);
-            *next = v + 1;
-            v
-        });
+        let (next, len) = (&mut self.next, &mut self.len);
+        let value = match key {
+            IdKey::MovingObject(name) => *self
+                .moving
+                .entry(name)
+                .or_insert_with(|| Self::fresh(next, len)),
+            IdKey::StationaryObject(name) => *self
+                .stationary
+                .entry(name)
+                .or_insert_with(|| Self::fresh(next, len)),
+            IdKey::Lane {
+                road,
+                lane_section,
+                lane,
+            } => Self::lane_entry(
+                &mut self.lanes,
+                road,
+                (lane_section, lane, false),
+                next,
+                len,
+            ),
+            IdKey::LaneBoundary {
+                road,
+                lane_section,
+                lane,
+            } => Self::lane_entry(&mut self.lanes, road, (lane_section, lane, true), next, len),
+            key @ (IdKey::TrafficLight { .. } | IdKey::TrafficSign { .. }) => *self
+                .signals
+                .entry(key)
+                .or_insert_with(|| Self::fresh(next, len)),
+        };
         Identifier { value: Some(value) }
+    }
+
+    /// The value of a lane or boundary `key` of `road`, handed out if new.
+    fn lane_entry(
+        lanes: &mut HashMap<String, HashMap<(usize, i32, bool), u64>>,
+        road: String,
+        key: (usize, i32, bool),
+        next: &mut u64,
+        len: &mut usize,
+    ) -> u64 {
+        *lanes
+            .entry(road)
+            .or_default()
+            .entry(key)
+            .or_insert_with(|| Self::fresh(next, len))
+    }
+
+    /// The id of the `MovingObject` of entity `name`, as `id(IdKey::MovingObject(name))`
+    /// gives it; the name is copied only the first time.
+    pub fn moving_object(&mut self, name: &str) -> Identifier {
+        match self.moving.get(name) {
+            Some(&value) => Identifier { value: Some(value) },
+            None => self.id(IdKey::MovingObject(name.to_owned())),
+        }
+    }
+
+    /// The id of the `StationaryObject` of `name`, as `id(IdKey::StationaryObject(name))`
+    /// gives it; the name is copied only the first time.
+    pub fn stationary_object(&mut self, name: &str) -> Identifier {
+        match self.stationary.get(name) {
+            Some(&value) => Identifier { value: Some(value) },
+            None => self.id(IdKey::StationaryObject(name.to_owned())),
+        }
+    }
+
+    /// The id the lane `lane` of lane_section `lane_section` of road `road` already has
+    /// ([`IdKey::Lane`]), without allocating.
+    pub fn lane(&self, road: &str, lane_section: usize, lane: i32) -> Option<Identifier> {
+        let value = self.lanes.get(road)?.get(&(lane_section, lane, false))?;
+        Some(Identifier {
+            value: Some(*value),
+        })
     }
 
     /// The id `key` already has, without allocating one.
     pub fn get(&self, key: &IdKey) -> Option<Identifier> {
-        self.ids.get(key).map(|&v| Identifier { value: Some(v) })
+        let value = match key {
+            IdKey::MovingObject(name) => self.moving.get(name),
+            IdKey::StationaryObject(name) => self.stationary.get(name),
+            IdKey::Lane {
+                road,
+                lane_section,
+                lane,
+            } => self.lanes.get(road)?.get(&(*lane_section, *lane, false)),
+            IdKey::LaneBoundary {
+                road,
+                lane_section,
+                lane,
+            } => self.lanes.get(road)?.get(&(*lane_section, *lane, true)),
+            IdKey::TrafficLight { .. } | IdKey::TrafficSign { .. } => self.signals.get(key),
+        };
+        value.map(|&v| Identifier { value: Some(v) })
+    }
+
+    /// The id the `MovingObject` of entity `name` already has, without allocating.
+    pub fn get_moving_object(&self, name: &str) -> Option<Identifier> {
+        self.moving
+            .get(name)
+            .map(|&v| Identifier { value: Some(v) })
     }
 
     /// Number of ids handed out.
     pub fn len(&self) -> usize {
-        self.ids.len()
+        self.len
     }
 
     /// Whether no id was handed out yet.
     pub fn is_empty(&self) -> bool {
-        self.ids.is_empty()
+        self.len == 0
     }
 }
 
@@ -122,5 +230,13 @@ mod tests {
         assert_eq!(ids.id(IdKey::MovingObject("Ego".into())), ego);
         assert_eq!(ids.len(), 3);
         assert_eq!(ids.get(&IdKey::MovingObject("Target".into())), None);
+        // The borrowed look-ups give the same ids as the keys.
+        assert_eq!(ids.moving_object("Ego"), ego);
+        assert_eq!(ids.lane("0", 0, -1), Some(lane));
+        assert_eq!(ids.lane("0", 0, 1), None);
+        assert_eq!(ids.get_moving_object("Ego"), Some(ego));
+        // A new name through the borrowed path takes the next value, 4.
+        assert_eq!(ids.moving_object("Target").value, Some(4));
+        assert_eq!(ids.len(), 4);
     }
 }

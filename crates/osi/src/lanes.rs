@@ -101,7 +101,8 @@ pub fn assigned_lane(
     s: f64,
 ) -> Option<Identifier> {
     let road = network.road(road_id)?;
-    ids.get(&lane_key(road, road.lane_section_index(s), lane_id))
+    // Borrowed look-up: no key is built, nothing allocated per call.
+    ids.lane(&road.id, road.lane_section_index(s), lane_id)
 }
 
 /// The OSI id of the lane a road position (as `RoadNetwork::locate` gives it) lies on;

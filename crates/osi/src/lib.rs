@@ -17,6 +17,7 @@
 //! - [`environment`]: the scenario's Environment (weather, sun, fog, time of day) →
 //!   `EnvironmentalConditions`, OSI's bands.
 //! - [`entity`]: a scenario entity → `MovingObject` / `StationaryObject` with the OSI rules.
+//! - `reuse`: each frame written over the last one's message (no allocation per frame).
 //! - [`sink`]: the engine→OSI mapping, one GroundTruth per engine frame
 //!   ([`sink::GroundTruthSink`]), and the engine frame sinks built on it: [`sink::OsiSink`]
 //!   (a trace file) and [`sink::StepFrames`] (the bindings).
@@ -51,7 +52,7 @@
 //!     };
 //!     let mut frame = builder.begin_frame(step * 50_000_000);
 //!     frame.add_entity(&ego, &state, &[])?;
-//!     writer.write(&frame.finish())?;
+//!     writer.write(frame.finish())?;
 //! }
 //! let bytes = writer.into_inner()?.unwrap_or_default();
 //! let back = read_osi_bytes(&bytes, "mem.osi".as_ref())?;
@@ -75,6 +76,7 @@ pub mod lanes;
 pub mod lights;
 pub mod osi3;
 pub mod polyline;
+mod reuse;
 pub mod rigid_body;
 pub mod schema;
 pub mod signal_types;

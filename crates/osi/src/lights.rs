@@ -70,10 +70,18 @@ fn generic(l: &VehicleLight<'_>) -> GenericLightState {
 
 /// The OSI light state of `lights` (module doc); `None` when no light maps to OSI.
 pub fn light_state(lights: &[VehicleLight<'_>]) -> Option<LightState> {
+    light_state_of(lights.iter().copied())
+}
+
+/// [`light_state`] of the lights an iterator gives (no list to build per frame).
+pub fn light_state_of<'a>(
+    lights: impl IntoIterator<Item = VehicleLight<'a>>,
+) -> Option<LightState> {
     let mut state = LightState::default();
     let mut any = false;
     let (mut left, mut right, mut warning) = (None, None, None);
     for l in lights {
+        let l = &l;
         let value = Some(generic(l) as i32);
         let lit = l.mode != LightMode::Off;
         match l.light {

@@ -25,7 +25,9 @@
 //! - ids: from the run's [`crate::ids::IdAllocator`], keyed by road id, the signal's index in
 //!   its road's `<signals>` and the bulb (OpenDRIVE ids need not be unique across roads), so
 //!   they are globally unique and the same in every frame. They are handed out after the
-//!   first frame's entities, so a trace keeps its entity ids when signals are added.
+//!   first frame's entities, so a trace keeps its entity ids when signals are added, and kept
+//!   beside each signal; each frame writes its lights and signs over the last frame's
+//!   ([`crate::reuse`]), so the signals allocate nothing per frame.
 //! - `source_reference`: {reference: the OpenDRIVE file, type `net.asam.opendrive`,
 //!   identifier: [signal id]}.
 //! - Missing width, height or length leave that dimension 0 (the signal's size is unknown).
@@ -34,11 +36,12 @@ use opendrive::{normalize_angle, Road, RoadNetwork, Signal};
 
 use crate::entity::base_stationary;
 use crate::ground_truth::FrameBuilder;
-use crate::ids::IdKey;
+use crate::ids::{IdAllocator, IdKey};
 use crate::osi3::traffic_light::Classification as LightClassification;
 use crate::osi3::traffic_sign::main_sign::Classification as SignClassification;
 use crate::osi3::traffic_sign::{MainSign, Variability};
-use crate::osi3::{BaseStationary, ExternalReference, TrafficLight, TrafficSign, TrafficSignValue};
+use crate::osi3::{BaseStationary, Identifier, TrafficLight, TrafficSign, TrafficSignValue};
+use crate::reuse;
 use crate::signal_types::{bulb_modes, light_type, sign_type, value_unit, LightType};
 
 /// `ExternalReference.type` of OpenDRIVE sources.
@@ -85,6 +88,24 @@ struct Placed {
     signal: Signal,
     at: SignalPlacement,
     light: Option<LightType>,
+    /// The ids of its bulbs (of the sign: one), once handed out.
+    ids: Vec<Identifier>,
+}
+
+/// The id of bulb `bulb` (a sign: 0) kept in `kept`, handed out under `key()` the first
+/// time (bulbs are asked for in order).
+fn kept_id(
+    kept: &mut Vec<Identifier>,
+    ids: &mut IdAllocator,
+    bulb: usize,
+    key: impl FnOnce() -> IdKey,
+) -> Identifier {
+    if let Some(&id) = kept.get(bulb) {
+        return id;
+    }
+    let id = ids.id(key());
+    kept.push(id);
+    id
 }
 
 /// The signals of a road network, placed once for the run (module doc).
@@ -110,6 +131,7 @@ impl TrafficSignals {
                         signal: signal.clone(),
                         at,
                         light: light_type(&signal.signal_type),
+                        ids: Vec::new(),
                     }),
                     Err(e) => warnings.push(format!(
                         "OSI: signal '{}' of road '{}' left out of the ground truth: {e}",
@@ -136,109 +158,121 @@ impl TrafficSignals {
     /// Adds the lights (with the states `state` gives by signal id) and, where they belong in
     /// this frame, the signs to `frame`.
     pub fn add_to<'s>(
-        &self,
+        &mut self,
         frame: &mut FrameBuilder<'_>,
         state: impl Fn(&str) -> Option<&'s str>,
     ) {
         let with_static = frame.carries_static_data();
-        for p in &self.signals {
+        let map_reference = self.map_reference.as_deref();
+        for p in &mut self.signals {
             let current = state(&p.signal.id);
             match p.light {
-                Some(light) => self.add_light(frame, p, light, current),
-                None if p.signal.dynamic || with_static => self.add_sign(frame, p, current),
+                Some(light) => add_light(frame, map_reference, p, light, current),
+                None if p.signal.dynamic || with_static => {
+                    add_sign(frame, map_reference, p, current)
+                }
                 None => {}
             }
         }
     }
+}
 
-    /// One `TrafficLight` per bulb of `p`.
-    fn add_light(
-        &self,
-        frame: &mut FrameBuilder<'_>,
-        p: &Placed,
-        light: LightType,
-        state: Option<&str>,
-    ) {
-        let n = light.bulbs.len();
-        let [length, width, height] = p.at.dimension;
-        let bulb = if height > 0.0 {
-            height / n as f64
-        } else {
-            DEFAULT_BULB_HEIGHT
-        };
-        let modes = bulb_modes(state, n);
-        for (k, (&color, mode)) in light.bulbs.iter().zip(modes).enumerate() {
-            // Bulb k from the top: its centre (n − k − ½) bulb heights above the bottom edge.
-            let up = (n - k) as f64 * bulb - bulb / 2.0;
-            let key = IdKey::TrafficLight {
-                road: p.road.clone(),
-                signal: p.index,
-                bulb: k,
-            };
-            frame.add_traffic_light(
-                key,
-                TrafficLight {
-                    id: None,
-                    base: Some(base(&p.at, up, [length, width, bulb])),
-                    classification: Some(LightClassification {
-                        color: Some(color as i32),
-                        icon: Some(light.icon as i32),
-                        mode: Some(mode as i32),
-                        is_out_of_service: Some(false),
-                    }),
-                    source_reference: vec![self.source_reference(&p.signal)],
-                },
-            );
-        }
-    }
-
-    /// The `TrafficSign` of `p`.
-    fn add_sign(&self, frame: &mut FrameBuilder<'_>, p: &Placed, state: Option<&str>) {
-        let s = &p.signal;
-        let variability = if s.dynamic {
-            Variability::Variable
-        } else {
-            Variability::Fixed
-        };
-        let text = state.filter(|_| s.dynamic).map(str::to_owned);
-        let value = (s.value.is_some() || text.is_some()).then(|| TrafficSignValue {
-            value: s.value,
-            value_unit: s.value.map(|_| value_unit(&s.unit) as i32),
-            text,
-        });
-        let key = IdKey::TrafficSign {
+/// One `TrafficLight` per bulb of `p`, written over the frame's next lights.
+fn add_light(
+    frame: &mut FrameBuilder<'_>,
+    map_reference: Option<&str>,
+    p: &mut Placed,
+    light: LightType,
+    state: Option<&str>,
+) {
+    let n = light.bulbs.len();
+    let [length, width, height] = p.at.dimension;
+    let bulb = if height > 0.0 {
+        height / n as f64
+    } else {
+        DEFAULT_BULB_HEIGHT
+    };
+    let modes = bulb_modes(state, n);
+    for (k, (&color, mode)) in light.bulbs.iter().zip(modes).enumerate() {
+        // Bulb k from the top: its centre (n − k − ½) bulb heights above the bottom edge.
+        let up = (n - k) as f64 * bulb - bulb / 2.0;
+        let (slot, ids) = frame.next_traffic_light();
+        let id = kept_id(&mut p.ids, ids, k, || IdKey::TrafficLight {
             road: p.road.clone(),
             signal: p.index,
+            bulb: k,
+        });
+        let old = std::mem::take(slot);
+        *slot = TrafficLight {
+            id: Some(id),
+            base: Some(base(&p.at, up, [length, width, bulb])),
+            classification: Some(LightClassification {
+                color: Some(color as i32),
+                icon: Some(light.icon as i32),
+                mode: Some(mode as i32),
+                is_out_of_service: Some(false),
+            }),
+            source_reference: source_reference(old.source_reference, map_reference, &p.signal),
         };
-        let [length, width, height] = p.at.dimension;
-        frame.add_traffic_sign(
-            key,
-            TrafficSign {
-                id: None,
-                main_sign: Some(MainSign {
-                    base: Some(base(&p.at, height / 2.0, [length, width, height])),
-                    classification: Some(SignClassification {
-                        variability: Some(variability as i32),
-                        r#type: Some(sign_type(&s.country, &s.signal_type, &s.subtype) as i32),
-                        value,
-                        is_out_of_service: Some(false),
-                        country: Some(s.country.clone()),
-                        code: Some(s.signal_type.clone()),
-                        sub_code: Some(s.subtype.clone()),
-                    }),
-                }),
-                source_reference: vec![self.source_reference(s)],
-            },
-        );
     }
+}
 
-    fn source_reference(&self, signal: &Signal) -> ExternalReference {
-        ExternalReference {
-            reference: self.map_reference.clone(),
-            r#type: Some(OPENDRIVE_REFERENCE_TYPE.to_owned()),
-            identifier: vec![signal.id.clone()],
-        }
-    }
+/// The `TrafficSign` of `p`, written over the frame's next sign.
+fn add_sign(
+    frame: &mut FrameBuilder<'_>,
+    map_reference: Option<&str>,
+    p: &mut Placed,
+    state: Option<&str>,
+) {
+    let (slot, ids) = frame.next_traffic_sign();
+    let id = kept_id(&mut p.ids, ids, 0, || IdKey::TrafficSign {
+        road: p.road.clone(),
+        signal: p.index,
+    });
+    let s = &p.signal;
+    let variability = if s.dynamic {
+        Variability::Variable
+    } else {
+        Variability::Fixed
+    };
+    let old = std::mem::take(slot);
+    let old_class = old
+        .main_sign
+        .and_then(|m| m.classification)
+        .unwrap_or_default();
+    let text = state.filter(|_| s.dynamic);
+    let value = (s.value.is_some() || text.is_some()).then(|| TrafficSignValue {
+        value: s.value,
+        value_unit: s.value.map(|_| value_unit(&s.unit) as i32),
+        text: reuse::string(old_class.value.and_then(|v| v.text), text),
+    });
+    let [length, width, height] = p.at.dimension;
+    *slot = TrafficSign {
+        id: Some(id),
+        main_sign: Some(MainSign {
+            base: Some(base(&p.at, height / 2.0, [length, width, height])),
+            classification: Some(SignClassification {
+                variability: Some(variability as i32),
+                r#type: Some(sign_type(&s.country, &s.signal_type, &s.subtype) as i32),
+                value,
+                is_out_of_service: Some(false),
+                country: reuse::string(old_class.country, Some(&s.country)),
+                code: reuse::string(old_class.code, Some(&s.signal_type)),
+                sub_code: reuse::string(old_class.sub_code, Some(&s.subtype)),
+            }),
+        }),
+        source_reference: source_reference(old.source_reference, map_reference, s),
+    };
+}
+
+/// `source_reference` of `signal`: {the OpenDRIVE file, `net.asam.opendrive`, [signal id]},
+/// in the buffers of `old`.
+fn source_reference(
+    old: Vec<crate::osi3::ExternalReference>,
+    map_reference: Option<&str>,
+    signal: &Signal,
+) -> Vec<crate::osi3::ExternalReference> {
+    reuse::source_reference(old, map_reference, OPENDRIVE_REFERENCE_TYPE, &[&signal.id])
 }
 
 /// The box of a face part whose centre is `up` metres above the bottom edge of `at`.

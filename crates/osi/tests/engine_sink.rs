@@ -6,11 +6,9 @@
 //! `TYPE_TREE` — and the source reference names the scenario file as it was opened; declared
 //! and drawn vehicle roles reach `vehicle_classification.role`.
 
-use std::num::NonZeroU64;
 use std::path::Path;
 
 use engine::{load, Engine, EngineConfig};
-use osi::ground_truth::StaticData;
 use osi::osi3::moving_object::vehicle_classification::Role;
 use osi::osi3::moving_object::vehicle_classification::Type as VehicleType;
 use osi::osi3::moving_object::Type as MovingType;
@@ -33,11 +31,8 @@ fn run_to_trace(file: &str, duration: f64, tag: &str) -> (Engine, Vec<GroundTrut
     std::fs::create_dir_all(&dir).expect("temp dir");
     let trace = dir.join("gt.osi");
     let options = OsiSinkOptions {
-        path: trace.clone(),
-        host: None,
-        static_data: StaticData::First,
-        every: NonZeroU64::MIN,
         pinned_time: Some(0),
+        ..OsiSinkOptions::new(trace.clone())
     };
     let mut sink = OsiSink::create(&engine, &options).expect("sink");
     assert!(sink.take_warnings().is_empty());

@@ -8,49 +8,12 @@
 #[path = "../support/scale.rs"]
 mod scale;
 
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Mutex;
+#[path = "../support/counting.rs"]
+mod counting;
 
+use counting::{allocations, serial};
 use engine::output::CsvWriter;
 use engine::{Engine, EngineConfig};
-
-/// The system allocator, counting allocations and reallocations.
-struct Counting;
-
-static ALLOCATIONS: AtomicU64 = AtomicU64::new(0);
-
-// SAFETY: every call is forwarded unchanged to the system allocator; the counter is atomic.
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        // SAFETY: the caller's contract is passed on.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        // SAFETY: as above.
-        unsafe { System.alloc_zeroed(layout) }
-    }
-
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        // SAFETY: as above.
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        // SAFETY: as above.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
-
-/// One test at a time: the counter is global.
-static SERIAL: Mutex<()> = Mutex::new(());
 
 /// Vehicles of the test's highway (enough for every lane to hold many; the per-entity work is
 /// the same as with 1,000).
@@ -60,13 +23,6 @@ const VEHICLES: usize = 200;
 const WARM_UP: usize = 5;
 /// Steps counted.
 const COUNTED: usize = 100;
-
-/// Allocations made by `f`.
-fn allocations(f: impl FnOnce()) -> u64 {
-    let before = ALLOCATIONS.load(Ordering::Relaxed);
-    f();
-    ALLOCATIONS.load(Ordering::Relaxed) - before
-}
 
 fn engine(what: &str) -> (Engine, std::path::PathBuf) {
     let dir = scale::scratch(what);
@@ -80,7 +36,7 @@ fn engine(what: &str) -> (Engine, std::path::PathBuf) {
 /// its road position, among others).
 #[test]
 fn the_step_allocates_nothing() {
-    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let _serial = serial();
     let (mut engine, dir) = engine("alloc-step");
     for _ in 0..WARM_UP {
         engine.step(&mut (), &mut ()).expect("steps");
@@ -103,7 +59,7 @@ fn the_step_allocates_nothing() {
 /// allocates nothing either; the bytes go to a sink so that no growing buffer is counted.
 #[test]
 fn the_csv_writer_allocates_nothing() {
-    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let _serial = serial();
     let (mut engine, dir) = engine("alloc-csv");
     let mut csv = CsvWriter::new(std::io::sink());
     for _ in 0..WARM_UP {
@@ -122,7 +78,7 @@ fn the_csv_writer_allocates_nothing() {
 /// never moves).
 #[test]
 fn the_counter_sees_allocations() {
-    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let _serial = serial();
     let dir = scale::scratch("alloc-load");
     let path = scale::write_scale(&dir, 4, 1.0);
     let mut engine = None;

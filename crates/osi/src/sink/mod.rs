@@ -158,8 +158,9 @@ impl GroundTruthSink {
         std::mem::take(&mut self.warnings)
     }
 
-    /// The GroundTruth of `frame`.
-    pub fn ground_truth(&mut self, frame: &Frame<'_>) -> Result<GroundTruth, FrameError> {
+    /// The GroundTruth of `frame`. The message is the sink's, written over by the next frame
+    /// (see [`crate::ground_truth`]): encode or copy it before the next call.
+    pub fn ground_truth(&mut self, frame: &Frame<'_>) -> Result<&GroundTruth, FrameError> {
         // Simulation time is non-negative and far below u64::MAX ns (584 years).
         let nanos = (frame.time * 1e9).round() as u64;
         let mut gt = self.builder.begin_frame(nanos);
@@ -194,13 +195,12 @@ impl GroundTruthSink {
             })?;
         }
         self.signals.add_to(&mut gt, |id| frame.signals.state(id));
-        let mut gt = gt.finish();
-        gt.environmental_conditions = crate::environment::environmental_conditions(
+        gt.set_environmental_conditions(crate::environment::environmental_conditions(
             frame.environment,
             frame.time,
             self.north_yaw,
-        );
-        Ok(gt)
+        ));
+        Ok(gt.finish())
     }
 }
 
@@ -220,11 +220,10 @@ fn add(
     e: &EntityFrame<'_>,
 ) -> Result<(), Error> {
     let state = rigid_body_state(e);
-    let lanes: Vec<Identifier> = e
+    let lane: Option<Identifier> = e
         .road_position
-        .and_then(|p| crate::lanes::assigned_lane_at(frame.ids(), network, p))
-        .into_iter()
-        .collect();
+        .and_then(|p| crate::lanes::assigned_lane_at(frame.ids(), network, p));
+    let lanes = lane.as_slice();
     let color = color(e)?;
     let kind = match e.kind {
         EngineKind::Pedestrian => EntityKind::Pedestrian {
@@ -250,12 +249,12 @@ fn add(
                 orientation: state.orientation,
                 dimension: state.dimension,
             };
-            return frame.add_misc_object(&info, &lanes).map(drop);
+            return frame.add_misc_object(&info, lanes).map(drop);
         }
     };
     let (lights, role) = match kind {
         EntityKind::Vehicle { .. } => (
-            crate::lights::light_state(&vehicle_lights(e)),
+            crate::lights::light_state_of(vehicle_lights(e)),
             e.role.map(|r| r.as_str()),
         ),
         EntityKind::Pedestrian { .. } => (None, None),
@@ -270,27 +269,24 @@ fn add(
         lights,
         role,
     };
-    frame.add_entity(&info, &state, &lanes).map(drop)
+    frame.add_entity(&info, &state, lanes).map(drop)
 }
 
 /// The lights LightStateActions set on `e`, in the form `osi::lights` takes.
-fn vehicle_lights<'e>(e: &EntityFrame<'e>) -> Vec<VehicleLight<'e>> {
-    e.lights
-        .iter()
-        .filter_map(|(light, state)| {
-            let mode = match state.mode.as_str() {
-                "on" => LightMode::On,
-                "off" => LightMode::Off,
-                "flashing" => LightMode::Flashing,
-                _ => return None,
-            };
-            Some(VehicleLight {
-                light,
-                mode,
-                color_type: state.color.as_ref().map(|c| c.color_type.as_str()),
-            })
+fn vehicle_lights<'e>(e: &EntityFrame<'e>) -> impl Iterator<Item = VehicleLight<'e>> {
+    e.lights.iter().filter_map(|(light, state)| {
+        let mode = match state.mode.as_str() {
+            "on" => LightMode::On,
+            "off" => LightMode::Off,
+            "flashing" => LightMode::Flashing,
+            _ => return None,
+        };
+        Some(VehicleLight {
+            light,
+            mode,
+            color_type: state.color.as_ref().map(|c| c.color_type.as_str()),
         })
-        .collect()
+    })
 }
 
 /// The reference-point state of `e` in the form `osi::rigid_body` takes.

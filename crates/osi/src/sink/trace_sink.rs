@@ -34,6 +34,20 @@ pub struct OsiSinkOptions {
     pub pinned_time: Option<i64>,
 }
 
+impl OsiSinkOptions {
+    /// A trace at `path` as `oscsim run --osi PATH` writes it without further flags: the
+    /// default host, lanes in the first frame, every frame, the recording time from the clock.
+    pub fn new(path: PathBuf) -> Self {
+        OsiSinkOptions {
+            path,
+            host: None,
+            static_data: StaticData::First,
+            every: NonZeroU64::MIN,
+            pinned_time: None,
+        }
+    }
+}
+
 /// The OSI trace writer of one run (see the module doc).
 pub struct OsiSink {
     sink: GroundTruthSink,
@@ -100,7 +114,7 @@ impl OsiSink {
 impl FrameSink for OsiSink {
     fn frame(&mut self, frame: &Frame<'_>) -> Result<(), SinkError> {
         let gt = self.sink.ground_truth(frame).map_err(SinkError::sink)?;
-        self.trace.offer(&gt).map_err(SinkError::sink)
+        self.trace.offer(gt).map_err(SinkError::sink)
     }
 
     fn finish(&mut self) -> Result<(), SinkError> {

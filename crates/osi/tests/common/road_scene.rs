@@ -99,5 +99,5 @@ pub fn frame(net: &opendrive::RoadNetwork, b: &mut GroundTruthBuilder, k: u64) -
     };
     f.add_entity(&super::walker_info("road_scene.xosc"), &walker, &[])
         .expect("valid entity");
-    f.finish()
+    f.finish().clone()
 }

@@ -1,0 +1,93 @@
+//! Issue 17 "the OSI writer … reuses the message": a steady-state OSI frame of the scale
+//! highway's 200 vehicles allocates nothing. The engine steps with an `OsiSink` writing a
+//! `.osi` trace (`oscsim run --osi FILE`) under a counting global allocator (the engine's
+//! tests/support/counting.rs; the highway is its tests/support/scale.rs). Before the message
+//! was reused: about ten allocations per moving object and frame (docs/performance.md).
+//!
+//! Its own test target because the counting allocator is the whole binary's.
+
+#[path = "../../engine/tests/support/scale.rs"]
+mod scale;
+
+#[path = "../../engine/tests/support/counting.rs"]
+mod counting;
+
+use counting::{allocations, serial};
+use engine::{Engine, EngineConfig, FrameSink};
+use osi::sink::{OsiSink, OsiSinkOptions};
+
+/// Vehicles of the highway (as the engine's allocation test).
+const VEHICLES: usize = 200;
+/// Steps before counting: the first writes the frames at t = 0 (with the lanes) and t = dt;
+/// the message's lists and strings and the encoding buffer reach their size.
+const WARM_UP: usize = 5;
+/// Steps counted.
+const COUNTED: usize = 100;
+
+/// 100 steps of 200 vehicles with the OSI trace: not one allocation; the trace then holds
+/// the frames of t = 0 and the 105 steps, each with every vehicle at its hand-computed place.
+#[test]
+fn a_steady_osi_frame_allocates_nothing() {
+    let _serial = serial();
+    let dir = scale::scratch("alloc-osi");
+    let path = scale::write_scale(&dir, VEHICLES, 300.0);
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("the highway loads");
+    let trace = dir.join("trace.osi");
+    let options = OsiSinkOptions {
+        pinned_time: Some(0),
+        ..OsiSinkOptions::new(trace.clone())
+    };
+    let mut sink = OsiSink::create(&engine, &options).expect("trace created");
+    for _ in 0..WARM_UP {
+        engine.step(&mut sink, &mut ()).expect("steps");
+    }
+    let n = allocations(|| {
+        for _ in 0..COUNTED {
+            engine.step(&mut sink, &mut ()).expect("steps");
+        }
+    });
+    assert_eq!(
+        n, 0,
+        "allocations in {COUNTED} OSI frames of {VEHICLES} vehicles"
+    );
+    sink.finish().expect("trace finished");
+
+    let bytes = std::fs::read(&trace).expect("trace written");
+    let frames = osi::trace::read_osi_bytes(&bytes, &trace).expect("trace decodes");
+    // The frame at t = 0 and one per step: 1 + 5 + 100.
+    assert_eq!(frames.len(), 106);
+    // Ids: the road's 8 lanes and 9 boundaries (4 outer borders each side and the centre
+    // line) take 1..=17, so vehicle v{i} is 18 + i in every frame.
+    for (k, gt) in frames.iter().enumerate() {
+        assert_eq!(gt.moving_object.len(), VEHICLES, "frame {k}");
+        assert_eq!(gt.lane.len(), if k == 0 { 8 } else { 0 }, "frame {k}");
+        for (i, o) in gt.moving_object.iter().enumerate() {
+            assert_eq!(o.id.and_then(|id| id.value), Some(18 + i as u64));
+        }
+    }
+    // v0: lane −1 (centre y = −1.75), s = 100 m at 20 m/s; the box centre 1.4 m ahead and
+    // 0.75 m up: at t = 105 · 0.05 = 5.25 s, (100 + 20 · 5.25 + 1.4, −1.75, 0.75) =
+    // (206.4, −1.75, 0.75). v5: lane −2 (y = −5.25), s = 115 m at 25 m/s: x = 115 + 25 · 5.25
+    // + 1.4 = 247.65.
+    const TOLERANCE: f64 = 1e-9;
+    let last = &frames[105];
+    let at = |i: usize| {
+        let p = last.moving_object[i]
+            .base
+            .as_ref()
+            .and_then(|b| b.position)
+            .expect("set");
+        [
+            p.x.unwrap_or(f64::NAN),
+            p.y.unwrap_or(f64::NAN),
+            p.z.unwrap_or(f64::NAN),
+        ]
+    };
+    for (got, want) in at(0).iter().zip([206.4, -1.75, 0.75]) {
+        assert!((got - want).abs() < TOLERANCE, "v0 at {:?}", at(0));
+    }
+    for (got, want) in at(5).iter().zip([247.65, -5.25, 0.75]) {
+        assert!((got - want).abs() < TOLERANCE, "v5 at {:?}", at(5));
+    }
+    let _ = std::fs::remove_dir_all(dir);
+}
