@@ -8,6 +8,7 @@
 //! | `shard` | disjoint shares for several processes: `--shard I/N`, Slurm arrays, Kubernetes Indexed Jobs |
 //! | `metrics` | collision, time to collision, headway and gap of the host, by the §8.7 methods |
 //! | `run` | the variants on a rayon pool, results by variant number |
+//! | `save` | per-variant outputs: trajectories, event log, OSI trace (`--save csv,events,osi`) |
 //! | `table` | the results table and `results.csv` |
 //! | `parquet_file` | `results.parquet` |
 //! | `merge` | shard outputs joined into what one unsharded run writes |
@@ -21,6 +22,7 @@ mod parquet_file;
 mod plan;
 mod report;
 mod run;
+mod save;
 mod seed;
 mod shard;
 mod table;
@@ -30,7 +32,8 @@ pub use metrics::{Measures, Observer};
 pub use parquet_file::{to_parquet, ParquetError};
 pub use plan::{Plan, PlanError};
 pub use report::{report_html, summary};
-pub use run::{run, run_variants, selected, variant_dir, Options, RunError, Save};
+pub use run::{run, run_variants, selected, Options, RunError};
+pub use save::{variant_dir, Save};
 pub use seed::variant_seed;
 pub use shard::{Shard, ShardError};
 pub use table::{quantize, quantize_time, CsvError, Outcome, Row, Stop, Table, FIXED_COLUMNS};

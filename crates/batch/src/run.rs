@@ -7,29 +7,21 @@
 
 use std::fs::File;
 use std::io::BufWriter;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
-use engine::output::{CsvWriter, JsonlWriter};
+use engine::output::JsonlWriter;
 use engine::storyboard::{ElementKind, Transition};
 use engine::{Engine, EngineConfig, EventRecord, EventSink, FrameSink};
 use rayon::prelude::*;
 
 use crate::metrics::Observer;
 use crate::plan::Plan;
+use crate::save::{variant_dir, Outputs, Save};
 use crate::seed::variant_seed;
 use crate::shard::Shard;
 use crate::table::{Outcome, Row, Stop, Table};
-
-/// Which per-variant outputs to keep in `DIR/variants/NNNNN/`.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Save {
-    /// `trajectories.csv` (the `oscsim run --csv` layout).
-    pub csv: bool,
-    /// `events.jsonl` (the `oscsim run --events` layout).
-    pub events: bool,
-}
 
 /// How to run a batch.
 #[derive(Debug, Clone)]
@@ -60,6 +52,9 @@ pub struct Options {
     pub only: Option<u64>,
     /// Per-variant outputs, under this folder.
     pub save: Option<(Save, PathBuf)>,
+    /// The recording time of saved OSI traces, Unix seconds (the cli: `SOURCE_DATE_EPOCH`);
+    /// `None` takes the clock (save.rs).
+    pub recording_time: Option<i64>,
 }
 
 impl Default for Options {
@@ -77,6 +72,7 @@ impl Default for Options {
             shard: Shard::ALL,
             only: None,
             save: None,
+            recording_time: None,
         }
     }
 }
@@ -192,21 +188,6 @@ impl EventSink for Events {
     }
 }
 
-/// The folder of variant `v`'s outputs.
-pub fn variant_dir(root: &Path, v: u64) -> PathBuf {
-    root.join("variants").join(format!("{v:05}"))
-}
-
-fn create(path: &Path) -> Result<BufWriter<File>, String> {
-    if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
-    }
-    File::create(path)
-        .map(BufWriter::new)
-        .map_err(|e| format!("cannot create {}: {e}", path.display()))
-}
-
 /// Runs variant `v`: the outcome, or the message of what failed.
 fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String> {
     let params: Vec<(String, String)> = plan.variants[v as usize]
@@ -231,24 +212,27 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
     let mut engine =
         Engine::new(&scenario, Arc::clone(&plan.network), config).map_err(|e| e.to_string())?;
     let mut observer = Observer::new(&plan.network, &options.host);
-    let mut trajectories = None;
+    let mut outputs = match &options.save {
+        Some((save, root)) => Outputs::create(
+            *save,
+            &variant_dir(root, v),
+            &engine,
+            &options.host,
+            options.recording_time,
+        )?,
+        None => Outputs::default(),
+    };
     let mut events = Events {
         started: 0,
-        log: None,
+        log: outputs.events.take(),
     };
-    if let Some((save, root)) = &options.save {
-        let dir = variant_dir(root, v);
-        if save.csv {
-            trajectories = Some(CsvWriter::new(create(&dir.join("trajectories.csv"))?));
-        }
-        if save.events {
-            events.log = Some(JsonlWriter::new(create(&dir.join("events.jsonl"))?));
-        }
-    }
     let reason = {
         let mut sinks: Vec<&mut dyn FrameSink> = vec![&mut observer];
-        if let Some(t) = trajectories.as_mut() {
+        if let Some(t) = outputs.trajectories.as_mut() {
             sinks.push(t);
+        }
+        if let Some(o) = outputs.osi.as_mut() {
+            sinks.push(o);
         }
         let mut frames = Fanout(sinks);
         engine

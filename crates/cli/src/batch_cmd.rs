@@ -46,7 +46,8 @@ pub struct BatchArgs {
     /// Run only this variant (and print the equivalent `oscsim run` command).
     #[arg(long, value_name = "N")]
     only: Option<u64>,
-    /// Keep per-variant outputs in DIR/variants/NNNNN/: csv, events (comma-separated).
+    /// Keep per-variant outputs in DIR/variants/NNNNN/: csv, events, osi (comma-separated;
+    /// osi: the trace `oscsim run --osi DIR` writes, recording time from SOURCE_DATE_EPOCH).
     #[arg(long, value_delimiter = ',', value_name = "KINDS")]
     save: Vec<String>,
     /// Do not show the progress bar.
@@ -88,7 +89,8 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
         match kind.as_str() {
             "csv" => save.csv = true,
             "events" => save.events = true,
-            other => anyhow::bail!("expected csv or events in --save, found '{other}'"),
+            "osi" => save.osi = true,
+            other => anyhow::bail!("expected csv, events or osi in --save, found '{other}'"),
         }
     }
     let options = batch::Options {
@@ -106,6 +108,7 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
         shard,
         only: args.only,
         save: (save != batch::Save::default()).then(|| (save, out.clone())),
+        recording_time: crate::osi_args::source_date_epoch()?,
     };
     if let Some(v) = args.only {
         if v as usize >= plan.variants.len() {

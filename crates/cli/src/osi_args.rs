@@ -98,8 +98,9 @@ fn make_room(path: &Path) -> anyhow::Result<()> {
     }
 }
 
-/// `SOURCE_DATE_EPOCH` as Unix seconds, if set.
-fn source_date_epoch() -> anyhow::Result<Option<i64>> {
+/// `SOURCE_DATE_EPOCH` as Unix seconds, if set (also the recording time of
+/// `oscsim batch --save osi`).
+pub fn source_date_epoch() -> anyhow::Result<Option<i64>> {
     match std::env::var("SOURCE_DATE_EPOCH") {
         Ok(text) => {
             text.trim().parse().map(Some).with_context(|| {

@@ -200,3 +200,107 @@ fn only_one_variant_prints_how_to_run_it_alone() {
         "{csv}"
     );
 }
+
+/// The single `.osi` file in `dir`: its name and bytes.
+fn only_trace(dir: &Path) -> (String, Vec<u8>) {
+    let names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".osi"))
+        .collect();
+    assert_eq!(names.len(), 1, "{}: {names:?}", dir.display());
+    let bytes = read(dir, &names[0]);
+    (names[0].clone(), bytes)
+}
+
+/// `--save osi` (issue 15): each variant's OSI trace in DIR/variants/NNNNN/ is, name and bytes,
+/// what `oscsim run SCENARIO --param … --osi DIR` writes for that variant (the command
+/// `--only` prints), with the same SOURCE_DATE_EPOCH; 1 s at dt 0.05 is 1 / 0.05 + 1 = 21
+/// frames.
+#[test]
+fn saved_osi_traces_are_those_of_oscsim_run() {
+    let root = scratch("save_osi");
+    let grid = grid();
+    let epoch = [("SOURCE_DATE_EPOCH", "1764158400")];
+    let out = root.join("batch");
+    oscsim(
+        &[
+            "batch",
+            grid.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--duration",
+            "1",
+            "--jobs",
+            "2",
+            "--save",
+            "csv,osi",
+            "--quiet",
+        ],
+        &epoch,
+    );
+    // Every variant's trace: 21 frames, Ego and Target in each.
+    for v in 0..24 {
+        let dir = out.join(format!("variants/{v:05}"));
+        let (name, bytes) = only_trace(&dir);
+        // OSI 3.8 §2.2.6.2: <time>_gt_<osi>_<protobuf>_<frames>_<scenario>.osi (versions without
+        // their dots), the time being
+        // SOURCE_DATE_EPOCH 1764158400 = 2025-11-26T12:00:00Z.
+        assert_eq!(name, "20251126T120000Z_gt_380_0135_21_following.osi");
+        let frames = osi::trace::read_osi_bytes(&bytes, &dir).expect("decodes");
+        assert_eq!(frames.len(), 21, "variant {v}");
+        assert!(frames.iter().all(|f| f.moving_object.len() == 2));
+        assert!(dir.join("trajectories.csv").is_file());
+    }
+    // Variant 17 = (EgoSpeed 30, TargetSpeed 10, Gap 20) (see the --only test): at t = 1 s Ego's
+    // box centre is at x = 50 + 30 + 1.4 = 81.4, Target's at 50 + 20 + 5 + 10 + 1.4 = 86.4.
+    let (_, bytes) = only_trace(&out.join("variants/00017"));
+    let frames = osi::trace::read_osi_bytes(&bytes, &out).expect("decodes");
+    let x = |k: usize| {
+        frames[20].moving_object[k]
+            .base
+            .as_ref()
+            .and_then(|b| b.position?.x)
+            .unwrap()
+    };
+    assert!(
+        (x(0) - 81.4).abs() < 1e-9 && (x(1) - 86.4).abs() < 1e-9,
+        "{} {}",
+        x(0),
+        x(1)
+    );
+
+    // The same variant by `oscsim run`, as `--only 17` prints it.
+    let only = oscsim(
+        &[
+            "batch",
+            grid.to_str().unwrap(),
+            "--out",
+            root.join("only").to_str().unwrap(),
+            "--only",
+            "17",
+            "--quiet",
+        ],
+        &[],
+    );
+    let stdout = String::from_utf8_lossy(&only.stdout);
+    let command = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("variant 17 alone: oscsim "))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    let run_dir = root.join("run");
+    std::fs::create_dir_all(&run_dir).unwrap();
+    let mut args: Vec<&str> = command.split(' ').collect();
+    args.extend([
+        "--duration",
+        "1",
+        "--quiet",
+        "--osi",
+        run_dir.to_str().unwrap(),
+    ]);
+    oscsim(&args, &epoch);
+    assert_eq!(
+        only_trace(&run_dir),
+        only_trace(&out.join("variants/00017"))
+    );
+}
