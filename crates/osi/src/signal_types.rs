@@ -54,21 +54,24 @@ pub fn light_type(signal_type: &str) -> Option<LightType> {
 
 /// The mode of each of `bulbs` bulbs under OpenSCENARIO state `state` (module doc); `None`
 /// (no state set yet) leaves every bulb off.
-pub fn bulb_modes(state: Option<&str>, bulbs: usize) -> Vec<Mode> {
-    let Some(state) = state else {
-        return vec![Mode::Off; bulbs];
-    };
-    let mut fields = state.split(';').map(str::trim);
-    (0..bulbs)
-        .map(
-            |_| match fields.next().map(str::to_ascii_lowercase).as_deref() {
-                Some("on") => Mode::Constant,
-                Some("off") => Mode::Off,
-                Some("flashing") => Mode::Flashing,
-                _ => Mode::Other,
-            },
-        )
-        .collect()
+///
+/// An iterator, so that writing a frame's lights builds no list.
+pub fn bulb_modes(state: Option<&str>, bulbs: usize) -> impl Iterator<Item = Mode> + '_ {
+    let mut fields = state.map(|s| s.split(';').map(str::trim));
+    (0..bulbs).map(move |_| match fields.as_mut() {
+        None => Mode::Off,
+        Some(fields) => bulb_mode(fields.next()),
+    })
+}
+
+/// The mode of one field of a state (`on`, `off`, `flashing` in any case; else other).
+fn bulb_mode(field: Option<&str>) -> Mode {
+    match field {
+        Some(f) if f.eq_ignore_ascii_case("on") => Mode::Constant,
+        Some(f) if f.eq_ignore_ascii_case("off") => Mode::Off,
+        Some(f) if f.eq_ignore_ascii_case("flashing") => Mode::Flashing,
+        _ => Mode::Other,
+    }
 }
 
 /// The OSI type of a sign of `country` with `code` (OpenDRIVE `type`) and `sub_code`
@@ -126,14 +129,17 @@ mod tests {
     fn states_light_bulbs_from_the_top() {
         // Red of a three-light signal: the top bulb on, the others off.
         assert_eq!(
-            bulb_modes(Some("on;off;off"), 3),
+            bulb_modes(Some("on;off;off"), 3).collect::<Vec<_>>(),
             [Mode::Constant, Mode::Off, Mode::Off]
         );
         assert_eq!(
-            bulb_modes(Some("off; Flashing"), 3),
+            bulb_modes(Some("off; Flashing"), 3).collect::<Vec<_>>(),
             [Mode::Off, Mode::Flashing, Mode::Other]
         );
-        assert_eq!(bulb_modes(None, 2), [Mode::Off, Mode::Off]);
+        assert_eq!(
+            bulb_modes(None, 2).collect::<Vec<_>>(),
+            [Mode::Off, Mode::Off]
+        );
         assert_eq!(light_type("1000001").map(|l| l.bulbs.len()), Some(3));
         assert_eq!(
             light_type("1000002").map(|l| l.icon),

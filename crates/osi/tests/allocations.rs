@@ -91,3 +91,60 @@ fn a_steady_osi_frame_allocates_nothing() {
     }
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// Traffic lights and signs are written in place too: on the cli's osi_signals.xosc (a vehicle
+/// light S1, a pedestrian light S2 that turns green at t = 3 s, a static speed-limit sign), 100
+/// steps with the OSI sink allocate exactly what the same 100 steps of a second engine allocate
+/// without it, so the sink adds none (whatever the engine's own share).
+#[test]
+fn traffic_signals_add_no_allocation() {
+    use osi::osi3::traffic_light::classification::Mode;
+    let _serial = serial();
+    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../cli/tests/files/osi_signals.xosc");
+    let load = || Engine::load(&file, &[], EngineConfig::default()).expect("the scenario loads");
+    let (mut with, mut without) = (load(), load());
+    let dir = scale::scratch("alloc-osi-signals");
+    std::fs::create_dir_all(&dir).expect("scratch folder");
+    let trace = dir.join("trace.osi");
+    let options = OsiSinkOptions {
+        pinned_time: Some(0),
+        ..OsiSinkOptions::new(trace.clone())
+    };
+    let mut sink = OsiSink::create(&with, &options).expect("trace created");
+    for _ in 0..WARM_UP {
+        with.step(&mut sink, &mut ()).expect("steps");
+        without.step(&mut (), &mut ()).expect("steps");
+    }
+    let with_sink = allocations(|| {
+        for _ in 0..COUNTED {
+            with.step(&mut sink, &mut ()).expect("steps");
+        }
+    });
+    let engine_alone = allocations(|| {
+        for _ in 0..COUNTED {
+            without.step(&mut (), &mut ()).expect("steps");
+        }
+    });
+    assert_eq!(
+        with_sink, engine_alone,
+        "allocations with / without the OSI sink"
+    );
+    sink.finish().expect("trace finished");
+
+    let frames = osi::trace::read_osi(&trace).expect("trace decodes");
+    assert_eq!(frames.len(), 106);
+    // The sign goes with the static data (first frame only), the 3 + 2 bulbs in every frame.
+    assert_eq!(frames[0].traffic_sign.len(), 1);
+    assert!(frames[1..].iter().all(|f| f.traffic_sign.is_empty()));
+    assert!(frames.iter().all(|f| f.traffic_light.len() == 5));
+    // At t = 5.25 s: S1 in "go" (off;off;on), S2 in "walk" since 3 s (off;on).
+    let modes: Vec<Option<i32>> = frames[105]
+        .traffic_light
+        .iter()
+        .map(|l| l.classification.as_ref().and_then(|c| c.mode))
+        .collect();
+    let (off, on) = (Some(Mode::Off as i32), Some(Mode::Constant as i32));
+    assert_eq!(modes, [off, off, on, off, on]);
+    let _ = std::fs::remove_dir_all(dir);
+}
