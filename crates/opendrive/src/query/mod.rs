@@ -8,6 +8,7 @@ mod lane_span;
 mod locate;
 mod pieces_by_distance;
 mod plan_frame;
+mod point_grid;
 mod point_tree;
 mod pose;
 mod route;

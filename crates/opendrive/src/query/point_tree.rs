@@ -71,6 +71,28 @@ impl PointTree {
         index as u32
     }
 
+    /// The root's box (the union of all boxes).
+    pub(crate) fn root_envelope(&self) -> AABB<[Real; 2]> {
+        self.root_env
+    }
+
+    /// Every piece, in the order [`for_each_containing`](Self::for_each_containing) gives
+    /// them when all boxes hold the point.
+    pub(crate) fn leaves_in_order(&self) -> Vec<usize> {
+        fn walk(tree: &PointTree, node: usize, out: &mut Vec<usize>) {
+            for slot in tree.slots[tree.nodes[node].clone()].iter().rev() {
+                if slot.leaf {
+                    out.push(slot.id as usize);
+                } else {
+                    walk(tree, slot.id as usize, out);
+                }
+            }
+        }
+        let mut out = Vec::new();
+        walk(self, 0, &mut out);
+        out
+    }
+
     /// Calls `f` with every piece whose box holds (x, y), in `rstar`'s order.
     #[inline]
     pub(crate) fn for_each_containing(&self, x: Real, y: Real, mut f: impl FnMut(usize)) {

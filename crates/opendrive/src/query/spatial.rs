@@ -13,6 +13,7 @@ use super::frame::road_frame;
 use super::lane_span::road_extent;
 use super::pieces_by_distance::{PieceGroup, GROUP};
 use super::plan_frame::Hints;
+use super::point_grid::PointGrid;
 use super::point_tree::PointTree;
 use crate::math::Real;
 use crate::model::Road;
@@ -101,6 +102,8 @@ pub(crate) struct SpatialIndex {
     pub(crate) tree: RTree<Entry>,
     /// The same tree, flat, for point look-ups.
     points: PointTree,
+    /// A grid giving the same answers for most points, faster.
+    grid: Option<PointGrid>,
     pub(crate) pieces: Vec<Piece>,
     pub(crate) boxes: Vec<AABB<[Real; 2]>>,
     /// Runs of consecutive pieces of one road with their joint boxes, road after road.
@@ -147,8 +150,10 @@ impl SpatialIndex {
             })
             .collect();
         let tree = RTree::bulk_load(entries);
+        let points = PointTree::new(&tree);
         Self {
-            points: PointTree::new(&tree),
+            grid: PointGrid::new(&points, &boxes),
+            points,
             tree,
             pieces,
             boxes,
@@ -169,7 +174,12 @@ impl SpatialIndex {
 
     /// Calls `f` with every piece whose box holds (x, y), in the order of the R*-tree's
     /// `locate_all_at_point`.
-    pub(crate) fn for_each_containing(&self, x: Real, y: Real, f: impl FnMut(usize)) {
+    pub(crate) fn for_each_containing(&self, x: Real, y: Real, mut f: impl FnMut(usize)) {
+        if let Some(grid) = &self.grid {
+            if grid.for_each_containing(x, y, &mut f) {
+                return;
+            }
+        }
         self.points.for_each_containing(x, y, f);
     }
 
