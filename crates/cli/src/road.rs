@@ -350,6 +350,23 @@ mod tests {
     }
 
     #[test]
+    fn locate_parses_exactly_three_numbers_and_rejects_invalid_utf8() {
+        // Fields are trimmed; anything but three numbers is no point.
+        assert_eq!(parse_point(" 1.5 , -2 ,3e1"), Some((1.5, -2.0, 30.0)));
+        for text in ["1,2", "1,2,3,4", "1,x,3", "1,,3"] {
+            assert_eq!(parse_point(text), None, "{text}");
+        }
+        let (net, _) = highway();
+        let err = locate(&net, &b"x,y,h\n1,2,\xff\n"[..], &mut Vec::new())
+            .err()
+            .map(|e| format!("{e:#}"));
+        assert_eq!(
+            err.as_deref(),
+            Some("cannot read stdin: stream did not contain valid UTF-8")
+        );
+    }
+
+    #[test]
     fn info_lists_every_road_and_junction() {
         let (net, path) = highway();
         let mut buf = Vec::new();
