@@ -219,10 +219,9 @@ impl RoadNetwork {
         // A foot point on a neighbouring piece leaves a residual along the road; the candidate
         // then counts that residual as distance, and the neighbouring piece (whose box is no
         // farther) gives the exact one.
-        let (right, left) = match piece.extent {
-            Some(e) if e.lo <= s && s <= e.hi => (e.right, e.left),
-            _ => road_extent(road, road.lane_section_at(s), s),
-        };
+        let (right, left) = piece
+            .extent_at(s)
+            .unwrap_or_else(|| road_extent(road, road.lane_section_at(s), s));
         let outside = (t - left).max(right - t).max(0.0);
         let along = if resid > RESIDUAL_TOLERANCE {
             resid

@@ -80,7 +80,8 @@ pub(crate) struct PlanFrame {
     y: Real,
     /// Heading of the reference line (rad).
     pub(crate) hdg: Real,
-    curvature: Real,
+    /// Curvature of the reference line (1/m).
+    pub(crate) curvature: Real,
     sin_h: Real,
     cos_h: Real,
     /// sin p, or on unbanked roads a number with its sign (see the module doc).

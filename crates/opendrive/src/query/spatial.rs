@@ -9,10 +9,9 @@ use std::ops::Range;
 use rayon::prelude::*;
 use rstar::{PointDistance, RTree, RTreeObject, AABB};
 
-use super::frame::road_frame;
 use super::lane_span::road_extent;
 use super::pieces_by_distance::{PieceGroup, GROUP};
-use super::plan_frame::Hints;
+use super::plan_frame::{plan_frame, Hints};
 use super::point_grid::PointGrid;
 use super::point_tree::PointTree;
 use crate::math::Real;
@@ -55,6 +54,14 @@ pub(crate) struct ConstantExtent {
 }
 
 impl Piece {
+    /// The road surface's extent (right t, left t) at `s` if the piece knows it there.
+    #[inline]
+    pub(crate) fn extent_at(&self, s: Real) -> Option<(Real, Real)> {
+        self.extent
+            .filter(|e| e.lo <= s && s <= e.hi)
+            .map(|e| (e.right, e.left))
+    }
+
     fn new(road_index: usize, road: &Road, s0: Real, s1: Real) -> Self {
         let mid = 0.5 * (s0 + s1);
         let extent = road.constant_lanes(mid).map(|(lo, hi)| {
@@ -207,7 +214,8 @@ fn road_pieces(ri: usize, road: &Road) -> Vec<(Piece, AABB<[Real; 2]>)> {
         for k in 0..n {
             let s0 = g_start + h * k as Real;
             let s1 = if k + 1 == n { g_end } else { s0 + h };
-            out.push((Piece::new(ri, road, s0, s1), piece_box(road, s0, s1)));
+            let piece = Piece::new(ri, road, s0, s1);
+            out.push((piece, piece_box(road, &piece)));
         }
     }
     out
@@ -215,20 +223,24 @@ fn road_pieces(ri: usize, road: &Road) -> Vec<(Piece, AABB<[Real; 2]>)> {
 
 /// Box of the road surface over [s0, s1]: sampled at the ends, interior points and either
 /// side of every lane-section start inside, widened by the sagitta between samples and
-/// [`MARGIN`].
-fn piece_box(road: &Road, s0: Real, s1: Real) -> AABB<[Real; 2]> {
+/// [`MARGIN`]. The samples' places are `plan_frame`'s (the full frame's x and y, bit for bit,
+/// without the pitch) and the surface's extent the piece's where the lanes are constant.
+fn piece_box(road: &Road, piece: &Piece) -> AABB<[Real; 2]> {
+    let (s0, s1) = (piece.s0, piece.s1);
     let mut lo = [Real::INFINITY; 2];
     let mut hi = [Real::NEG_INFINITY; 2];
     let mut max_k: Real = 0.0;
     let mut max_t: Real = 0.0;
     let mut add = |s: Real| {
-        let f = road_frame(road, s);
-        let section = road.lane_section_at(s);
-        let (right, left) = road_extent(road, section, s);
+        let f = plan_frame(road, s, piece.hints);
+        let (right, left) = piece.extent_at(s).unwrap_or_else(|| {
+            let section = road.lane_section_at(s);
+            road_extent(road, section, s)
+        });
         max_k = max_k.max(f.curvature.abs());
         max_t = max_t.max(right.abs()).max(left.abs());
         for t in [right, left] {
-            let [x, y, _] = f.place(t, 0.0);
+            let [x, y] = f.place(t);
             lo = [lo[0].min(x), lo[1].min(y)];
             hi = [hi[0].max(x), hi[1].max(y)];
         }
