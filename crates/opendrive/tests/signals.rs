@@ -7,10 +7,12 @@ use opendrive::RoadNetwork;
 const ROAD: &str = r#"<OpenDRIVE><header revMajor="1" revMinor="8"/>
 <road id="1" length="100" junction="-1"><planView>
 <geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry></planView>
-<lanes><laneSection s="0"><center><lane id="0" type="none"/></center>
+<lanes><laneSection s="0">
+<left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left>
+<center><lane id="0" type="none"/></center>
 <right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
 <lane id="-2" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
-<lane id="-3" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+<lane id="-3" type="sidewalk"><width sOffset="0" a="2" b="0" c="0" d="0"/></lane></right>
 </laneSection></lanes>
 <signals>SIGNALS</signals></road></OpenDRIVE>"#;
 
@@ -31,7 +33,7 @@ fn validity_ranges_restrict_a_signal_to_their_lanes() {
     .unwrap_or_else(|e| panic!("{e}"));
     let signals = &net.road("1").expect("road 1").signals;
     assert!(signals[0].validity.is_empty());
-    assert!((-3..=-1).all(|l| signals[0].valid_for_lane(l)));
+    assert!((-3..=1).all(|l| signals[0].valid_for_lane(l)));
     assert_eq!(signals[1].validity, vec![(-3, -2)]);
     assert!(!signals[1].valid_for_lane(-1));
     assert!(signals[1].valid_for_lane(-2) && signals[1].valid_for_lane(-3));
@@ -47,4 +49,27 @@ fn a_validity_without_to_lane_is_an_error() {
     )
     .expect_err("toLane is required");
     assert!(err.to_string().contains("toLane"), "{err}");
+}
+
+/// The lanes a signal is for (`Road::signal_lanes`, left to right), on a right-hand-traffic
+/// road with lane 1 (driving, −s), lanes −1 and −2 (driving, +s) and −3 (sidewalk): without
+/// validity, "+" gives the drivable +s lanes −1, −2; "-" gives 1; "none" gives 1, −1, −2; with
+/// `<validity fromLane="-3" toLane="-2"/>` exactly −2 and −3 (the sidewalk too: the file
+/// says so).
+#[test]
+fn signal_lanes_follow_orientation_and_validity() {
+    let net = load(
+        r#"<signal s="50" t="-8" id="P" orientation="+" type="1000001"/>
+           <signal s="50" t="5" id="M" orientation="-" type="1000001"/>
+           <signal s="50" t="5" id="N" orientation="none" type="274"/>
+           <signal s="60" t="-8" id="V" orientation="+" type="1000001">
+             <validity fromLane="-3" toLane="-2"/></signal>"#,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let road = net.road("1").expect("road 1");
+    let lanes: Vec<Vec<i32>> = road.signals.iter().map(|s| road.signal_lanes(s)).collect();
+    assert_eq!(
+        lanes,
+        vec![vec![-1, -2], vec![1], vec![1, -1, -2], vec![-2, -3]]
+    );
 }

@@ -28,6 +28,10 @@
 //!   first frame's entities, so a trace keeps its entity ids when signals are added, and kept
 //!   beside each signal; each frame writes its lights and signs over the last frame's
 //!   ([`crate::reuse`]), so the signals allocate nothing per frame.
+//! - `classification.assigned_lane_id`: the OSI ids of the lanes the signal is for, in the
+//!   lane section at its s ([`Road::signal_lanes`], OpenDRIVE 1.8 §14.2): the lanes of its
+//!   `<validity>` ranges, else the drivable lanes of the direction its `orientation` names
+//!   (both for "none"); every bulb of a light carries the light's lanes.
 //! - `source_reference`: {reference: the OpenDRIVE file, type `net.asam.opendrive`,
 //!   identifier: [signal id]}.
 //! - Missing width, height or length leave that dimension 0 (the signal's size is unknown).
@@ -90,6 +94,24 @@ struct Placed {
     light: Option<LightType>,
     /// The ids of its bulbs (of the sign: one), once handed out.
     ids: Vec<Identifier>,
+    /// Its lane section and the OpenDRIVE ids of the lanes it is for
+    /// ([`Road::signal_lanes`]), for `assigned_lane_id`.
+    lanes: (usize, Vec<i32>),
+}
+
+impl Placed {
+    /// The OSI ids of the lanes `p` is for (those the lanes were built with), in the buffer
+    /// `old`.
+    fn assigned_lanes(&self, ids: &IdAllocator, mut old: Vec<Identifier>) -> Vec<Identifier> {
+        let (section, lanes) = &self.lanes;
+        old.clear();
+        old.extend(
+            lanes
+                .iter()
+                .filter_map(|&l| ids.lane(&self.road, *section, l)),
+        );
+        old
+    }
 }
 
 /// The id of bulb `bulb` (a sign: 0) kept in `kept`, handed out under `key()` the first
@@ -132,6 +154,7 @@ impl TrafficSignals {
                         at,
                         light: light_type(&signal.signal_type),
                         ids: Vec::new(),
+                        lanes: (road.lane_section_index(signal.s), road.signal_lanes(signal)),
                     }),
                     Err(e) => warnings.push(format!(
                         "OSI: signal '{}' of road '{}' left out of the ground truth: {e}",
@@ -203,6 +226,7 @@ fn add_light(
             bulb: k,
         });
         let old = std::mem::take(slot);
+        let old_lanes = old.classification.map(|c| c.assigned_lane_id);
         *slot = TrafficLight {
             id: Some(id),
             base: Some(base(&p.at, up, [length, width, bulb])),
@@ -210,6 +234,7 @@ fn add_light(
                 color: Some(color as i32),
                 icon: Some(light.icon as i32),
                 mode: Some(mode as i32),
+                assigned_lane_id: p.assigned_lanes(ids, old_lanes.unwrap_or_default()),
                 is_out_of_service: Some(false),
             }),
             source_reference: source_reference(old.source_reference, map_reference, &p.signal),
@@ -255,6 +280,7 @@ fn add_sign(
                 variability: Some(variability as i32),
                 r#type: Some(sign_type(&s.country, &s.signal_type, &s.subtype) as i32),
                 value,
+                assigned_lane_id: p.assigned_lanes(ids, old_class.assigned_lane_id),
                 is_out_of_service: Some(false),
                 country: reuse::string(old_class.country, Some(&s.country)),
                 code: reuse::string(old_class.code, Some(&s.signal_type)),

@@ -185,3 +185,48 @@ fn a_static_sign_is_a_traffic_sign_of_the_first_frame() {
     assert_eq!(source.r#type(), "net.asam.opendrive");
     assert_eq!(source.identifier, ["50"]);
 }
+
+/// `classification.assigned_lane_id` (osi::traffic_signals, OpenDRIVE 1.8 §14.2): neither
+/// signal of osi_signals.xodr has `<validity>`, so each is for the drivable lanes of the
+/// direction its orientation names. Both roads are right-hand traffic with lanes 1 (driven
+/// towards −s) and −1 (towards +s): S1 and the sign "50" ("+") are for lane −1 of road 1, each
+/// of S1's three bulbs alike; S2 ("-") for lane 1 of road 2. The OSI lane is found by its
+/// source reference [road, lane section s, lane], in every frame the same.
+#[test]
+fn signals_are_assigned_the_lanes_of_their_direction() {
+    let (trace, _) = traced_run("osi_signal_lanes", &scenario(), 1.0);
+    let first = &trace[0];
+    let lane = |road: &str, lane: &str| -> u64 {
+        let found = first.lane.iter().find(|l| {
+            l.source_reference
+                .first()
+                .is_some_and(|r| r.identifier == [road, "0", lane])
+        });
+        found.and_then(|l| l.id).expect("the OSI lane").value()
+    };
+    let assigned =
+        |ids: &[osi::osi3::Identifier]| -> Vec<u64> { ids.iter().map(|i| i.value()).collect() };
+    for gt in &trace {
+        for bulb in bulbs(gt, "S1") {
+            let c = bulb.classification.as_ref().expect("a classification");
+            assert_eq!(assigned(&c.assigned_lane_id), [lane("1", "-1")]);
+        }
+        for bulb in bulbs(gt, "S2") {
+            let c = bulb.classification.as_ref().expect("a classification");
+            assert_eq!(assigned(&c.assigned_lane_id), [lane("2", "1")]);
+        }
+    }
+    let sign = first
+        .traffic_sign
+        .iter()
+        .find(|s| s.source_reference[0].identifier == ["50"])
+        .expect("the sign in the first frame");
+    let c = sign
+        .main_sign
+        .as_ref()
+        .and_then(|m| m.classification.as_ref());
+    assert_eq!(
+        assigned(&c.expect("a classification").assigned_lane_id),
+        [lane("1", "-1")]
+    );
+}

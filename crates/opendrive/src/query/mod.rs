@@ -13,6 +13,7 @@ mod point_tree;
 mod pose;
 mod route;
 mod route_search;
+mod signal_lanes;
 mod spatial;
 
 pub use constant_lanes::CONSTANT_MARGIN;
