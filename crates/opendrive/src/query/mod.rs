@@ -9,7 +9,6 @@ mod locate;
 mod pieces_by_distance;
 mod plan_frame;
 mod point_grid;
-mod point_tree;
 mod pose;
 mod route;
 mod route_search;

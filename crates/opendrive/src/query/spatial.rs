@@ -13,7 +13,6 @@ use super::lane_span::road_extent;
 use super::pieces_by_distance::{PieceGroup, GROUP};
 use super::plan_frame::{plan_frame, Hints};
 use super::point_grid::PointGrid;
-use super::point_tree::PointTree;
 use crate::math::Real;
 use crate::model::Road;
 
@@ -107,9 +106,7 @@ impl PointDistance for Entry {
 #[derive(Debug, Clone)]
 pub(crate) struct SpatialIndex {
     pub(crate) tree: RTree<Entry>,
-    /// The same tree, flat, for point look-ups.
-    points: PointTree,
-    /// A grid giving the same answers for most points, faster.
+    /// A grid giving the tree's answers for most points, faster.
     grid: Option<PointGrid>,
     pub(crate) pieces: Vec<Piece>,
     pub(crate) boxes: Vec<AABB<[Real; 2]>>,
@@ -157,10 +154,8 @@ impl SpatialIndex {
             })
             .collect();
         let tree = RTree::bulk_load(entries);
-        let points = PointTree::new(&tree);
         Self {
-            grid: PointGrid::new(&points, &boxes),
-            points,
+            grid: PointGrid::new(&tree, &boxes),
             tree,
             pieces,
             boxes,
@@ -183,11 +178,13 @@ impl SpatialIndex {
     /// `locate_all_at_point`.
     pub(crate) fn for_each_containing(&self, x: Real, y: Real, mut f: impl FnMut(usize)) {
         if let Some(grid) = &self.grid {
-            if grid.for_each_containing(x, y, &mut f) {
+            if grid.for_each_containing(&self.boxes, x, y, &mut f) {
                 return;
             }
         }
-        self.points.for_each_containing(x, y, f);
+        self.tree
+            .locate_all_at_point(&[x, y])
+            .for_each(|e| f(e.piece));
     }
 
     /// Index entries in order of their box's distance to (x, y), with squared distance.
