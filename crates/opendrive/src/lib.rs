@@ -14,8 +14,9 @@
 //!   [`RoadNetwork::lane_width`], [`RoadNetwork::lane_boundaries`] ([`LaneSpan`]). The same
 //!   on a [`Road`] directly: [`Road::pose`], [`Road::lane_pose`], [`Road::lane_span`].
 //!   No allocation per call; geometry and lane section at s by binary search.
-//! - World → road: [`RoadNetwork::locate`] (R*-tree over road pieces, then exact Newton
-//!   projection) and [`RoadNetwork::locate_on_road`], both giving a [`RoadPosition`].
+//! - World → road: [`RoadNetwork::locate`] (a grid and an R*-tree over road pieces, then
+//!   exact Newton projection) and [`RoadNetwork::locate_on_road`], both giving a
+//!   [`RoadPosition`].
 //! - Lane graph: [`RoadNetwork::lane_handle`], [`RoadNetwork::successors`],
 //!   [`RoadNetwork::predecessors`], [`RoadNetwork::driving_direction`], [`is_drivable`];
 //!   routes: [`RoadNetwork::route`] from one [`LanePosition`] to another → [`LaneRoute`];

@@ -1,7 +1,8 @@
 //! Spatial index over the road surfaces: every geometry is cut into pieces of at most
 //! [`PIECE_LENGTH`] metres (longer pieces, at most [`MAX_PIECES`] per geometry, on geometries
 //! over 100 km, so that a file with an absurd length builds in bounded time), and each piece's axis-aligned box (reference line ± the outermost
-//! lane borders, plus a margin for curvature between samples) goes into an R*-tree (`rstar`).
+//! lane borders, plus a margin for curvature between samples) goes into an R*-tree (`rstar`)
+//! and a uniform grid (`point_grid`, for "which boxes hold this point", in the tree's order).
 //! A look-up visits only pieces whose box is near the point, then projects exactly.
 
 use std::ops::Range;
