@@ -26,6 +26,28 @@ pub struct Save {
     pub osi: bool,
 }
 
+impl Save {
+    /// The outputs named by `kinds` (`csv`, `events`, `osi`; repeats allowed); `Err` names the
+    /// first other word ("expected csv, events or osi, found '…'").
+    pub fn from_kinds<S: AsRef<str>>(kinds: &[S]) -> Result<Save, String> {
+        let mut save = Save::default();
+        for kind in kinds {
+            match kind.as_ref() {
+                "csv" => save.csv = true,
+                "events" => save.events = true,
+                "osi" => save.osi = true,
+                other => return Err(format!("expected csv, events or osi, found '{other}'")),
+            }
+        }
+        Ok(save)
+    }
+
+    /// Whether any output is kept.
+    pub fn any(&self) -> bool {
+        *self != Save::default()
+    }
+}
+
 /// The folder of variant `v`'s outputs.
 pub fn variant_dir(root: &Path, v: u64) -> PathBuf {
     root.join("variants").join(format!("{v:05}"))
@@ -84,4 +106,27 @@ fn create(path: &Path) -> Result<BufWriter<File>, String> {
     File::create(path)
         .map(BufWriter::new)
         .map_err(|e| format!("cannot create {}: {e}", path.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Save;
+
+    #[test]
+    fn kinds_name_the_outputs_and_other_words_are_errors() {
+        let save = Save::from_kinds(&["osi", "csv", "osi"]).expect("known kinds");
+        assert_eq!(
+            save,
+            Save {
+                csv: true,
+                events: false,
+                osi: true
+            }
+        );
+        assert!(save.any() && !Save::from_kinds::<&str>(&[]).expect("none").any());
+        assert_eq!(
+            Save::from_kinds(&["csv", "mcap"]),
+            Err("expected csv, events or osi, found 'mcap'".to_owned())
+        );
+    }
 }

@@ -84,15 +84,7 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
     let shard = batch::Shard::resolve(args.shard.as_deref(), args.shards, |k| {
         std::env::var(k).ok()
     })?;
-    let mut save = batch::Save::default();
-    for kind in &args.save {
-        match kind.as_str() {
-            "csv" => save.csv = true,
-            "events" => save.events = true,
-            "osi" => save.osi = true,
-            other => anyhow::bail!("expected csv, events or osi in --save, found '{other}'"),
-        }
-    }
+    let save = batch::Save::from_kinds(&args.save).map_err(|e| anyhow::anyhow!("--save: {e}"))?;
     let options = batch::Options {
         seed: args.step.seed,
         dt: args.step.dt,
@@ -107,7 +99,7 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
             .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
         shard,
         only: args.only,
-        save: (save != batch::Save::default()).then(|| (save, out.clone())),
+        save: save.any().then(|| (save, out.clone())),
         recording_time: crate::osi_args::source_date_epoch()?,
     };
     if let Some(v) = args.only {

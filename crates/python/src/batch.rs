@@ -91,10 +91,14 @@ impl BatchPlan {
     /// Runs the variants numbered `variants` (default: all) on `jobs` threads with the
     /// options of `oscsim batch` and returns their rows as the text of a `results.csv` (rows
     /// in the order given). A failing variant is a row with its error, as on the command line.
-    /// The interpreter's lock is released while the variants run.
+    /// `save` (`csv`, `events`, `osi`: `oscsim batch --save`) keeps each variant's outputs in
+    /// `out_dir/variants/NNNNN/`, OSI traces with `recording_time` (Unix seconds; default the
+    /// clock) as their recording time. The interpreter's lock is released while the variants
+    /// run.
     #[pyo3(signature = (variants = None, *, seed = engine::runtime::DEFAULT_SEED,
         dt = engine::runtime::DEFAULT_DT, duration = None,
-        max_time = engine::runtime::DEFAULT_MAX_TIME, host = "Ego".to_owned(), jobs = 1))]
+        max_time = engine::runtime::DEFAULT_MAX_TIME, host = "Ego".to_owned(), jobs = 1,
+        save = Vec::new(), out_dir = None, recording_time = None))]
     #[allow(clippy::too_many_arguments)] // the keyword options of `oscsim batch`
     fn run(
         &self,
@@ -106,13 +110,27 @@ impl BatchPlan {
         max_time: f64,
         host: String,
         jobs: usize,
+        save: Vec<String>,
+        out_dir: Option<PathBuf>,
+        recording_time: Option<i64>,
     ) -> PyResult<String> {
         guard(|| {
+            let invalid = |m: String| pyo3::exceptions::PyValueError::new_err(m);
             if !(dt.is_finite() && dt > 0.0) {
-                return Err(pyo3::exceptions::PyValueError::new_err(format!(
+                return Err(invalid(format!(
                     "expected a positive finite dt, found {dt}"
                 )));
             }
+            let save = batch::Save::from_kinds(&save).map_err(|e| invalid(format!("save: {e}")))?;
+            let save = match (save.any(), out_dir) {
+                (false, _) => None,
+                (true, Some(dir)) => Some((save, dir)),
+                (true, None) => {
+                    return Err(invalid(
+                        "expected an out_dir for the saved outputs, found none".to_owned(),
+                    ))
+                }
+            };
             let options = batch::Options {
                 seed,
                 dt,
@@ -120,6 +138,8 @@ impl BatchPlan {
                 max_time,
                 host,
                 jobs: jobs.max(1),
+                save,
+                recording_time,
                 ..batch::Options::default()
             };
             let variants =

@@ -28,15 +28,29 @@ CUT_IN_SET = CORPUS / "esmini" / "xosc" / "cut-in_parameter_set.xosc"
 OUTPUTS = ("results.csv", "results.parquet", "report.html")
 
 
-def cli_batch(oscsim_bin: Path, dist: Path, out: Path) -> None:
-    """`oscsim batch DIST --out OUT` (exit status 0 or 1: 1 means some variant failed)."""
+def cli_batch(oscsim_bin: Path, dist: Path, out: Path, *extra: str) -> None:
+    """`oscsim batch DIST --out OUT EXTRA…` with the OSI recording time pinned to 0 (exit status 0
+    or 1: 1 means some variant failed)."""
     done = subprocess.run(
-        [str(oscsim_bin), "batch", str(dist), "--out", str(out), "--jobs", "2", "--quiet"],
+        [str(oscsim_bin), "batch", str(dist), "--out", str(out), "--jobs", "2", "--quiet", *extra],
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
         text=True,
+        env=dict(os.environ, SOURCE_DATE_EPOCH="0"),
     )
     assert done.returncode in (0, 1), done.stderr
+
+
+def saved_files(out: Path) -> list:
+    """The files under OUT/variants, relative to OUT, sorted."""
+    return sorted(p.relative_to(out) for p in (out / "variants").rglob("*") if p.is_file())
+
+
+def assert_same_saved(a: Path, b: Path) -> None:
+    files = saved_files(a)
+    assert files == saved_files(b)
+    for name in files:
+        assert (a / name).read_bytes() == (b / name).read_bytes(), name
 
 
 def assert_same_outputs(a: Path, b: Path) -> None:
@@ -83,6 +97,21 @@ def test_local_backend_equals_cli(tmp_path: Path, oscsim_bin: Path):
     assert bool(row["collision"]) and 20 / 15 <= row["first_collision_time"] <= 20 / 15 + 0.05
 
 
+def test_saved_outputs_equal_the_cli(tmp_path: Path, oscsim_bin: Path, monkeypatch):
+    # `save` is `oscsim batch --save`: 24 variants × (trajectories.csv, events.jsonl, one OSI
+    # trace) = 72 files, byte for byte the CLI's (recording time pinned by SOURCE_DATE_EPOCH).
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "0")
+    cli_batch(oscsim_bin, GRID, tmp_path / "cli", "--save", "csv,events,osi", "--duration", "1")
+    oscsim.batch.run(GRID, tmp_path / "py", jobs=2, duration=1.0, save=("csv", "events", "osi"))
+    assert len(saved_files(tmp_path / "py")) == 24 * 3
+    assert_same_saved(tmp_path / "cli", tmp_path / "py")
+    assert_same_outputs(tmp_path / "cli", tmp_path / "py")
+    with pytest.raises(ValueError, match="out_dir"):
+        oscsim.batch.run(GRID, save=("csv",))
+    with pytest.raises(ValueError, match="found 'mcap'"):
+        oscsim.batch.run(GRID, tmp_path / "bad", save=("mcap",))
+
+
 def test_plan_and_errors(tmp_path: Path):
     plan = oscsim.batch.BatchPlan(GRID)
     assert plan.variant_count == 24
@@ -122,13 +151,16 @@ def test_ray_backend_equals_cli(tmp_path: Path, oscsim_bin: Path, dist: Path):
     ray = ray_or_skip()
     if not dist.is_file():
         pytest.fail(f"missing {dist} (CORPUS names the shared corpus)")
-    cli_batch(oscsim_bin, dist, tmp_path / "cli")
+    cli_batch(oscsim_bin, dist, tmp_path / "cli", "--save", "csv")
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
     try:
-        # 5 tasks for 24 (or 12) variants: uneven round-robin shares, joined by variant number.
-        frame = oscsim.batch.run(dist, tmp_path / "ray", backend="ray", tasks=5, timeout=300)
+        # 5 tasks for 24 (or 12) variants: uneven round-robin shares, joined by variant number;
+        # each task writes its variants' trajectories.
+        frame = oscsim.batch.run(dist, tmp_path / "ray", backend="ray", tasks=5, timeout=300, save=("csv",))
     finally:
         ray.shutdown()
     assert_same_outputs(tmp_path / "cli", tmp_path / "ray")
+    assert len(saved_files(tmp_path / "ray")) == len(frame)  # one trajectories.csv per variant
+    assert_same_saved(tmp_path / "cli", tmp_path / "ray")
     assert_frame_is_csv(frame, tmp_path / "cli" / "results.csv")
     assert list(frame["variant"]) == list(range(len(frame)))

@@ -246,6 +246,9 @@ class BatchPlan:
         max_time: float = 3600.0,
         host: str = "Ego",
         jobs: int = 1,
+        save: Sequence[str] = (),
+        out_dir: Optional[_Path] = None,
+        recording_time: Optional[int] = None,
     ) -> str: ...
 
 def merge_results(parts: Sequence[str], out_dir: Optional[_Path] = None) -> str: ...

@@ -49,11 +49,16 @@ def run_csv(
     jobs: Optional[int] = None,
     tasks: Optional[int] = None,
     timeout: Optional[float] = None,
+    save: Sequence[str] = (),
 ) -> str:
     """Runs every variant of ``distribution`` and returns the text of its ``results.csv``.
 
     ``seed``, ``dt``, ``duration``, ``max_time`` and ``host`` are ``oscsim batch``'s
-    ``--seed``, ``--dt``, ``--duration``, ``--max-time`` and ``--host``.
+    ``--seed``, ``--dt``, ``--duration``, ``--max-time`` and ``--host``; ``save`` (any of
+    ``"csv"``, ``"events"``, ``"osi"``) is its ``--save``: each variant's trajectories, event
+    log or OSI trace in ``out_dir/variants/NNNNN/`` (``out_dir`` required), the OSI traces'
+    recording time from ``SOURCE_DATE_EPOCH`` when it is set, as on the command line. With
+    Ray, each task writes its variants' files at that path on its own node.
 
     ``backend="local"``: the variants run in this process on ``jobs`` threads (default: every
     core), the interpreter's lock released.
@@ -68,8 +73,12 @@ def run_csv(
     (``ray.exceptions.GetTimeoutError`` after it; the tasks are cancelled).
     """
     path = os.fspath(distribution)
+    out = None if out_dir is None else os.path.abspath(os.fspath(out_dir))
     options = dict(seed=seed, dt=dt, duration=duration, max_time=max_time, host=host)
-    out = None if out_dir is None else os.fspath(out_dir)
+    if save:
+        if out is None:
+            raise ValueError("expected an out_dir for the saved outputs, found none")
+        options.update(save=list(save), out_dir=out, recording_time=_source_date_epoch())
     if backend == "local":
         plan = BatchPlan(path)
         text = plan.run(jobs=jobs or os.cpu_count() or 1, **options)
@@ -77,6 +86,17 @@ def run_csv(
     if backend == "ray":
         return merge_results(_ray_shares(path, options, tasks, timeout), out)
     raise ValueError(f"expected backend 'local' or 'ray', found {backend!r}")
+
+
+def _source_date_epoch() -> Optional[int]:
+    """``SOURCE_DATE_EPOCH`` as Unix seconds, if set (the recording time of saved OSI traces)."""
+    text = os.environ.get("SOURCE_DATE_EPOCH")
+    if text is None:
+        return None
+    try:
+        return int(text.strip())
+    except ValueError:
+        raise ValueError(f"expected Unix seconds in SOURCE_DATE_EPOCH, found {text!r}") from None
 
 
 def _ray_shares(path: str, options: Dict[str, Any], tasks: Optional[int], timeout: Optional[float]) -> List[str]:
