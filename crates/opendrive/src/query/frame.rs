@@ -27,6 +27,29 @@ pub(crate) struct RoadFrame {
     cos_r: Real,
 }
 
+/// The cross-section point (t, height) of a frame at reference point `xy` with heading,
+/// pitch and roll given by their sines and cosines: Rx(roll)·(0, t, height) = (0, a, b),
+/// Ry(pitch) moves it b·sin p forward, Rz(h) turns it. Returns its horizontal place and b
+/// (the height after roll, for z = b·cos p). [`RoadFrame::place`] and
+/// `PlanFrame::place` (plan_frame.rs) both place points with it.
+#[inline]
+pub(crate) fn cross_section(
+    t: Real,
+    height: Real,
+    [x, y]: [Real; 2],
+    [sin_h, cos_h]: [Real; 2],
+    sin_p: Real,
+    [sin_r, cos_r]: [Real; 2],
+) -> ([Real; 2], Real) {
+    let a = t * cos_r - height * sin_r;
+    let b = t * sin_r + height * cos_r;
+    let fwd = b * sin_p;
+    (
+        [x + fwd * cos_h - a * sin_h, y + fwd * sin_h + a * cos_h],
+        b,
+    )
+}
+
 /// The frame of `road` at `s` (s already within [0, length]).
 #[inline]
 pub(crate) fn road_frame(road: &Road, s: Real) -> RoadFrame {
@@ -69,15 +92,15 @@ impl RoadFrame {
     /// World position of the cross-section point (t, height above the road surface).
     #[inline]
     pub(crate) fn place(&self, t: Real, height: Real) -> [Real; 3] {
-        // Rx(roll)·(0, t, height) = (0, a, b); Ry(pitch) → (b·sin p, a, b·cos p); then Rz(h).
-        let a = t * self.cos_r - height * self.sin_r;
-        let b = t * self.sin_r + height * self.cos_r;
-        let fwd = b * self.sin_p;
-        [
-            self.x + fwd * self.cos_h - a * self.sin_h,
-            self.y + fwd * self.sin_h + a * self.cos_h,
-            self.z + b * self.cos_p,
-        ]
+        let ([x, y], b) = cross_section(
+            t,
+            height,
+            [self.x, self.y],
+            [self.sin_h, self.cos_h],
+            self.sin_p,
+            [self.sin_r, self.cos_r],
+        );
+        [x, y, self.z + b * self.cos_p]
     }
 
     /// Heading of the curve s ↦ place(t(s), height) in the horizontal plane, given dt/ds:

@@ -20,6 +20,7 @@
 //! and records by their start (finite numbers), so "the last one starting at or before s"
 //! holds for the hint exactly when the binary search would find it.
 
+use super::frame::cross_section;
 use crate::math::{Cubic, Real, LENGTH_EPSILON};
 use crate::model::Road;
 
@@ -128,14 +129,15 @@ impl PlanFrame {
     /// x and y of the cross-section point (t, height 0): [`RoadFrame::place`]'s first two.
     #[inline]
     pub(crate) fn place(&self, t: Real) -> [Real; 2] {
-        let height: Real = 0.0;
-        let a = t * self.cos_r - height * self.sin_r;
-        let b = t * self.sin_r + height * self.cos_r;
-        let fwd = b * self.sin_p;
-        [
-            self.x + fwd * self.cos_h - a * self.sin_h,
-            self.y + fwd * self.sin_h + a * self.cos_h,
-        ]
+        cross_section(
+            t,
+            0.0,
+            [self.x, self.y],
+            [self.sin_h, self.cos_h],
+            self.sin_p,
+            [self.sin_r, self.cos_r],
+        )
+        .0
     }
 
     /// [`RoadFrame::jacobian`]: (∂xy/∂s, ∂xy/∂t) at t.
