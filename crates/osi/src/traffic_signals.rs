@@ -97,20 +97,24 @@ struct Placed {
     /// Its lane section and the OpenDRIVE ids of the lanes it is for
     /// ([`Road::signal_lanes`]), for `assigned_lane_id`.
     lanes: (usize, Vec<i32>),
+    /// Their OSI ids, looked up once (the lanes' ids are handed out before the first frame
+    /// and never change).
+    lane_ids: Option<Vec<Identifier>>,
 }
 
 impl Placed {
     /// The OSI ids of the lanes `p` is for (those the lanes were built with), in the buffer
     /// `old`.
-    fn assigned_lanes(&self, ids: &IdAllocator, mut old: Vec<Identifier>) -> Vec<Identifier> {
+    fn assigned_lanes(&mut self, ids: &IdAllocator, old: Vec<Identifier>) -> Vec<Identifier> {
         let (section, lanes) = &self.lanes;
-        old.clear();
-        old.extend(
+        let road = &self.road;
+        let lane_ids = self.lane_ids.get_or_insert_with(|| {
             lanes
                 .iter()
-                .filter_map(|&l| ids.lane(&self.road, *section, l)),
-        );
-        old
+                .filter_map(|&l| ids.lane(road, *section, l))
+                .collect()
+        });
+        reuse::ids(old, lane_ids)
     }
 }
 
@@ -155,6 +159,7 @@ impl TrafficSignals {
                         light: light_type(&signal.signal_type),
                         ids: Vec::new(),
                         lanes: (road.lane_section_index(signal.s), road.signal_lanes(signal)),
+                        lane_ids: None,
                     }),
                     Err(e) => warnings.push(format!(
                         "OSI: signal '{}' of road '{}' left out of the ground truth: {e}",
@@ -254,17 +259,18 @@ fn add_sign(
         road: p.road.clone(),
         signal: p.index,
     });
+    let old = std::mem::take(slot);
+    let mut old_class = old
+        .main_sign
+        .and_then(|m| m.classification)
+        .unwrap_or_default();
+    let lanes = p.assigned_lanes(ids, std::mem::take(&mut old_class.assigned_lane_id));
     let s = &p.signal;
     let variability = if s.dynamic {
         Variability::Variable
     } else {
         Variability::Fixed
     };
-    let old = std::mem::take(slot);
-    let old_class = old
-        .main_sign
-        .and_then(|m| m.classification)
-        .unwrap_or_default();
     let text = state.filter(|_| s.dynamic);
     let value = (s.value.is_some() || text.is_some()).then(|| TrafficSignValue {
         value: s.value,
@@ -280,7 +286,7 @@ fn add_sign(
                 variability: Some(variability as i32),
                 r#type: Some(sign_type(&s.country, &s.signal_type, &s.subtype) as i32),
                 value,
-                assigned_lane_id: p.assigned_lanes(ids, old_class.assigned_lane_id),
+                assigned_lane_id: lanes,
                 is_out_of_service: Some(false),
                 country: reuse::string(old_class.country, Some(&s.country)),
                 code: reuse::string(old_class.code, Some(&s.signal_type)),
