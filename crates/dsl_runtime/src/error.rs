@@ -48,29 +48,48 @@ impl fmt::Display for Error {
     }
 }
 
+/// Where a construct is written: its span (which construct it is) and its place in the file
+/// (for messages, and the scenario model's positions). Every resolved item carries one, so the
+/// stages after `resolve` report errors without going back to the program's files.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Site {
+    /// The construct's bytes.
+    pub span: Span,
+    /// Its file, line and column.
+    pub pos: scenario::SourcePos,
+}
+
+impl Site {
+    /// `FILE:LINE:COL`.
+    pub(crate) fn at(&self) -> String {
+        self.pos.to_string()
+    }
+
+    /// An error of `kind` here.
+    pub(crate) fn err(&self, kind: ErrorKind, message: impl Into<String>) -> Error {
+        Error {
+            kind,
+            message: message.into(),
+            at: self.at(),
+        }
+    }
+}
+
 /// Places spans in the program's files.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Files<'a>(pub &'a [Source]);
 
 impl Files<'_> {
-    /// `FILE:LINE:COL` of `span`.
-    pub(crate) fn at(&self, span: Span) -> String {
-        self.pos(span).to_string()
+    /// The site of `span`.
+    pub(crate) fn site(&self, span: Span) -> Site {
+        Site {
+            span,
+            pos: dsl::source_pos(self.0, span),
+        }
     }
 
     /// An error of `kind` at `span`.
     pub(crate) fn err(&self, kind: ErrorKind, span: Span, message: impl Into<String>) -> Error {
-        Error {
-            kind,
-            message: message.into(),
-            at: self.at(span),
-        }
-    }
-}
-
-impl Files<'_> {
-    /// The scenario model's position of `span` (for runtime errors that point into the `.osc`).
-    pub(crate) fn pos(&self, span: Span) -> scenario::SourcePos {
-        dsl::source_pos(self.0, span)
+        self.site(span).err(kind, message)
     }
 }

@@ -1,51 +1,48 @@
 //! Running OpenSCENARIO DSL 2.x scenarios (ASAM OpenSCENARIO DSL 2.1 §7.3.9 behavior, §8.8
 //! movement actions, §8.9 movement modifiers) on the oscsim engine.
 //!
-//! A checked and resolved `.osc` program is **planned** — when each phase of the scenario's
-//! `do` tree starts and ends, where each vehicle starts, and which speed and lane changes meet
-//! its modifiers (`at: start`, `end`, `all`) within the vehicles' limits — and the plan is
-//! **lowered** to the OpenSCENARIO 1.x model the engine already runs (`scenario::Scenario`), so
-//! a DSL scenario gives the same outputs (CSV, event log, OSI) as an XML one. Everything that
-//! cannot be planned is an error with `FILE:LINE:COL` before the run. `docs/dsl.md` has the
-//! decision and the mapping table.
+//! A checked `.osc` program goes through three stages, each handing plain data to the next:
+//!
+//! 1. **resolve** (`resolve`): the program and the constraint solver's values (`--seed`) become
+//!    the scenario's phase tree, every invocation's action, arguments and modifiers evaluated
+//!    to SI values and instance paths, its event conditions, and the physical objects it names;
+//! 2. **plan** (`plan`): when each phase starts and ends, where each vehicle starts, and which
+//!    speed and lane changes meet the modifiers (`at: start`, `end`, `all`) within the
+//!    vehicles' limits, on the road (`road`);
+//! 3. **lower** (`lower`): the plan as the OpenSCENARIO 1.x model the engine already runs
+//!    (`scenario::Scenario`), so a DSL scenario gives the same outputs (CSV, event log, OSI)
+//!    as an XML one.
+//!
+//! Everything that cannot be run is an error with `FILE:LINE:COL` before the run. `docs/dsl.md`
+//! has the decision and the mapping table.
 //!
 //! | module | implements |
 //! | --- | --- |
-//! | `value` | constant values: units to SI, ranges drawn from the seed, resolved fields |
-//! | `phase` | the `do` tree as phases with paths (§7.3.9) |
-//! | `modifier` | movement modifiers read (§8.9) |
-//! | `actors` | vehicles and vehicle groups of the plan, their 1.x Vehicle (§8.7.6, §8.7.18) |
+//! | `error` | errors with positions; where each construct is written |
+//! | `resolve` | stage 1: the program as plain data (§7.3.9, §7.3.10, §8.7, §8.9) |
 //! | `road` | the road of the plan and the DSL's lane numbering |
-//! | `route` | routes of `along(…)` on the plan's road (§8.9, §8.12) |
-//! | `lateral` | `lateral(…)` as an offset in the lane or beside another actor (§8.9) |
-//! | `place` | initial placement from `at: start`/`all` constraints |
 //! | `track` | planned speed profile, lanes, offsets and sideways moves of an actor |
-//! | `plan` | phase timing and motion planning |
-//! | `condition` | `until`/`wait` conditions with §8.7 methods as 1.x conditions |
-//! | `lower` | the plan as a 1.x Storyboard |
-//! | `error` | errors with positions |
+//! | `trigger` | the 1.x conditions triggers are built from |
+//! | `plan` | stage 2: phase timing and motion planning |
+//! | `lower` | stage 3: the plan as a 1.x Storyboard |
 //!
-//! This crate depends on `dsl` and `scenario` (never on `engine`); the cli joins it to the engine.
+//! Each module uses only those above it in this table (and `plan`'s and `resolve`'s own tables
+//! order their modules the same way): no module cycles. This crate depends on `dsl` and
+//! `scenario` (never on `engine`); the cli joins it to the engine.
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
-mod actors;
-mod condition;
 mod error;
-mod lateral;
 mod lower;
-mod modifier;
-mod phase;
-mod place;
 mod plan;
+mod resolve;
 mod road;
-mod route;
 mod track;
-mod value;
+mod trigger;
 
 use std::path::Path;
 
-use dsl::semantics::hir::{Behavior, CompoundKind, Member};
+use dsl::semantics::hir::Member;
 use dsl::CheckedProgram;
 
 pub use error::{Error, ErrorKind};
@@ -156,52 +153,15 @@ pub fn lower_program(
     road: &opendrive::RoadNetwork,
     options: &Options,
 ) -> Result<Lowered, LoadError> {
-    let files = error::Files(program.files());
-    let model = &program.model;
-    let main = dsl::semantics::hir::FileId(model.library_files);
-    let scenarios: Vec<_> = model
-        .compounds
-        .iter()
-        .filter(|c| c.kind == CompoundKind::Scenario && c.span.file >= main)
-        .filter_map(|c| {
-            c.members.iter().find_map(|m| match m {
-                Member::Do(d, _) => Some((c, d)),
-                _ => None,
-            })
-        })
-        .collect();
-    let (decl, root) = match scenarios.as_slice() {
-        [one] => *one,
-        [] => {
-            return Err(LoadError::Plan(Error {
-                kind: ErrorKind::NoScenario,
-                message: "expected a scenario with a `do` to run, found none".into(),
-                at: format!("{}:1:1", osc.display()),
-            }))
-        }
-        [_, second, ..] => {
-            return Err(LoadError::Plan(files.err(
-                ErrorKind::NoScenario,
-                second.0.span,
-                "expected one scenario with a `do` to run, found several",
-            )))
-        }
-    };
-    let resolution = program.resolve(options.seed).map_err(LoadError::Check)?;
-    let ctx = value::Ctx::new(model, &resolution, decl.name.clone(), files, options.seed);
-    let phases = phase::build(&ctx, root, "do".into()).map_err(LoadError::Plan)?;
+    let resolved = resolve::resolve(program, osc, options.seed).map_err(|f| match f {
+        resolve::Failure::Check(d) => LoadError::Check(d),
+        resolve::Failure::Plan(e) => LoadError::Plan(e),
+    })?;
     // The plan drives on the road its named routes are on, else on the first road.
-    let mut apps = Vec::new();
-    phases.walk(&mut |p| {
-        if let phase::Kind::Invoke(inv) = &p.kind {
-            apps.extend(inv.modifiers.iter().copied());
-        }
-    });
-    let plan_road = match route::named_road(&ctx, &apps).map_err(LoadError::Plan)? {
-        Some((id, span)) => road::PlanRoad::by_id(road, &id).ok_or_else(|| {
-            LoadError::Plan(files.err(
+    let plan_road = match plan::named_road(&resolved.root) {
+        Some((id, site)) => road::PlanRoad::by_id(road, &id).ok_or_else(|| {
+            LoadError::Plan(site.err(
                 ErrorKind::Road,
-                span,
                 format!(
                     "expected road {id} with driving lanes in {}, found none",
                     road_path.display()
@@ -209,9 +169,8 @@ pub fn lower_program(
             ))
         })?,
         None => road::PlanRoad::pick(road).ok_or_else(|| {
-            LoadError::Plan(files.err(
+            LoadError::Plan(resolved.site.err(
                 ErrorKind::Road,
-                decl.span,
                 format!(
                     "expected a road with driving lanes in {}, found none",
                     road_path.display()
@@ -223,60 +182,7 @@ pub fn lower_program(
         dt: options.dt,
         open_end: options.open_end,
     };
-    // Events the scenario declares with a condition (`event e is c`), and the events `on`
-    // handlers emit, each with the condition that makes it occur.
-    let mut events = Vec::new();
-    let mut handlers = 0;
-    for m in &decl.members {
-        match m {
-            Member::Event(e) => {
-                if let Some(spec) = &e.spec {
-                    events.push((e.name.text.clone(), spec, None));
-                }
-            }
-            // `m.set_map_file(f)` names the road network (see `map_file`); other modifiers of
-            // the scenario itself are not run.
-            Member::Modifier(app) if app.name.text != "set_map_file" => {
-                return Err(LoadError::Plan(files.err(
-                    ErrorKind::Modifier,
-                    app.span,
-                    format!(
-                        "expected modifiers on the actions of the `do` (the runtime plans those), found `{}(…)` applied to the scenario",
-                        app.name.text
-                    ),
-                )))
-            }
-            // `on e: emit f`: f occurs whenever e does; a `call` runs a method for its side
-            // effects, which the runtime has none of (methods are expressions or external).
-            Member::On(spec, body, on_span) => {
-                let index = handlers;
-                handlers += 1;
-                for b in body {
-                    match &b.behavior {
-                        Behavior::Emit(name, _, span) => {
-                            events.push((name.text.clone(), spec, Some((index, *span))))
-                        }
-                        Behavior::Call(_, span) => {
-                            return Err(LoadError::Plan(files.err(
-                                ErrorKind::Unsupported,
-                                *span,
-                                "expected `emit` in an `on` handler, found `call` (methods with side effects are not run)",
-                            )))
-                        }
-                        _ => {
-                            return Err(LoadError::Plan(files.err(
-                                ErrorKind::Unsupported,
-                                *on_span,
-                                "expected `emit` or `call` in an `on` handler, found another member",
-                            )))
-                        }
-                    }
-                }
-            }
-            _ => {}
-        }
-    }
-    let plan = plan::plan(&ctx, &plan_road, &phases, events, settings).map_err(LoadError::Plan)?;
+    let plan = plan::plan(&resolved, &plan_road, settings).map_err(LoadError::Plan)?;
     let info = plan
         .phases
         .iter()
@@ -293,7 +199,7 @@ pub fn lower_program(
         })
         .collect();
     Ok(Lowered {
-        scenario: lower::lower(&plan, &decl.name, osc, road_path, files),
+        scenario: lower::lower(&plan, &resolved.name, osc, road_path),
         phases: info,
     })
 }

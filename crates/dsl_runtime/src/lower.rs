@@ -20,22 +20,17 @@ use std::sync::Arc;
 
 use scenario::{
     Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
-    EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup, Position,
-    PositionKind, Priority, Private, PrivateAction, RoadNetwork, Rule, Scenario, ScenarioObject,
-    SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics, Trigger, UserDefinedAction,
+    EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup,
+    Performance, Position, PositionKind, Priority, Private, PrivateAction, Properties, RoadNetwork,
+    Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics,
+    Trigger, UserDefinedAction, Vehicle,
 };
 
-use crate::condition::sim_time;
-use crate::plan::{Plan, When};
+use crate::plan::{Entity, Plan, When, MAX_ACCELERATION, MAX_SPEED};
+use crate::trigger::sim_time;
 
 /// Builds the scenario model of `plan`; `file` is the `.osc` path, `road` the OpenDRIVE file.
-pub(crate) fn lower(
-    plan: &Plan,
-    name: &str,
-    file: &Path,
-    road: &Path,
-    files: crate::error::Files<'_>,
-) -> Scenario {
+pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenario {
     let origin = SourcePos::start_of(Arc::from(file));
     let mut privates = Vec::new();
     let mut objects = Vec::new();
@@ -44,7 +39,7 @@ pub(crate) fn lower(
         let (s, v) = e.track.at(0.0);
         objects.push(ScenarioObject {
             name: e.name.clone(),
-            entity_object: EntityObject::Vehicle(Box::new(e.vehicle.clone())),
+            entity_object: EntityObject::Vehicle(Box::new(vehicle(e))),
             object_controllers: Vec::new(),
             pos: origin.clone(),
         });
@@ -82,7 +77,7 @@ pub(crate) fn lower(
         .phases
         .iter()
         .map(|ph| {
-            let pos = files.pos(ph.span);
+            let pos = ph.site.pos.clone();
             let mut groups = if ph.hold {
                 vec![hold_group(&ph.path, pos.clone())]
             } else {
@@ -108,7 +103,7 @@ pub(crate) fn lower(
                     .iter()
                     .filter(|a| a.entity == actor)
                     .map(|a| {
-                        let pos = files.pos(a.span);
+                        let pos = a.site.pos.clone();
                         Event {
                             name: a.name.clone(),
                             priority: Priority::Parallel,
@@ -165,7 +160,7 @@ pub(crate) fn lower(
     let mut acts = acts;
     let mut handlers: Vec<(&str, Vec<Emission>)> = Vec::new();
     for h in &plan.handlers {
-        let emit = (h.event.clone(), Some(h.trigger.clone()), files.pos(h.span));
+        let emit = (h.event.clone(), Some(h.trigger.clone()), h.site.pos.clone());
         match handlers.iter_mut().find(|(act, _)| *act == h.act) {
             Some((_, emits)) => emits.push(emit),
             None => handlers.push((&h.act, vec![emit])),
@@ -219,6 +214,32 @@ pub(crate) fn lower(
         parameter_value_distribution: None,
         warnings: Vec::new(),
         sources: scenario::Sources::default(),
+    }
+}
+
+/// The 1.x Vehicle of a planned vehicle: its fields, and the performance every DSL vehicle has
+/// (the DSL's vehicle has no such fields).
+fn vehicle(e: &Entity) -> Vehicle {
+    Vehicle {
+        name: e.name.clone(),
+        vehicle_category: e.data.category,
+        role: None,
+        mass: None,
+        model3d: None,
+        bounding_box: e.data.bounding_box,
+        performance: Performance {
+            max_speed: MAX_SPEED,
+            max_acceleration: MAX_ACCELERATION,
+            max_deceleration: MAX_ACCELERATION,
+            max_acceleration_rate: None,
+            max_deceleration_rate: None,
+        },
+        axles: e.data.axles.clone(),
+        properties: Properties::default(),
+        trailer_hitch: None,
+        trailer_coupler: None,
+        trailer: None,
+        catalog: None,
     }
 }
 

@@ -7,35 +7,34 @@ use scenario::{
     SpeedTarget, SpeedTargetValueType, TransitionDynamics,
 };
 
-use crate::error::{Error, ErrorKind as K};
-use crate::modifier::{At, Mod, ModKind};
-use crate::phase::{Invoke, Phase};
-use crate::route::{self, OnRoute};
-
+use super::checks::{check_keeps, check_orientation};
+use super::lateral;
 use super::motion::{
     check_accel, check_speed, end_speed_mod, holds_speed, lane_change, lateral_end, speed_action,
 };
-use super::{Planned, Planner, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
+use super::planner::Planner;
+use super::route::{self, OnRoute};
+use super::types::{Planned, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{Arg, At, Invoke, ModKind, Modifier, Phase};
 
-impl Planner<'_, '_> {
+impl Planner<'_> {
     /// Plans one invocation: its actions, and the time its `position(…, at: end)` is met when
     /// nothing else ends it.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn plan_invoke(
         &mut self,
-        p: &Phase<'_>,
-        inv: &Invoke<'_>,
-        mods: &[Mod<'_>],
+        p: &Phase,
+        inv: &Invoke,
+        mods: &[Modifier],
         t0: Option<f64>,
         end: Option<f64>,
         len: Option<f64>,
         out: &mut Vec<Planned>,
     ) -> Result<Option<When>, Error> {
-        let ctx = self.ctx;
         if inv.action != "drive" {
-            return Err(ctx.files.err(
+            return Err(p.site.err(
                 K::Unsupported,
-                p.span,
                 format!(
                     "expected drive() (the movement action the runtime plans), found `{}`",
                     inv.action
@@ -65,8 +64,8 @@ impl Planner<'_, '_> {
                 },
                 _ => None,
             };
-            crate::modifier::check_keeps(ctx, mods, step)?;
-            crate::modifier::check_orientation(ctx, mods)?;
+            check_keeps(mods, step)?;
+            check_orientation(mods)?;
             // keep_position() in a later phase: the vehicle must stand when it starts.
             if let Some(k) = mods.iter().find(|m| m.kind == ModKind::KeepPosition) {
                 let v = match t0 {
@@ -74,15 +73,14 @@ impl Planner<'_, '_> {
                     None => self.last_v[target],
                 };
                 if !first && v.abs() > 1e-9 {
-                    return Err(ctx.files.err(
+                    return Err(k.site.err(
                         K::Unsatisfiable,
-                        k.app.span,
                         format!("expected `{target}` standing at the start of keep_position(), found it at {v:.2} m/s (stop it in an earlier phase)"),
                     ));
                 }
             }
             // Speed first, position at end last: it builds on the phase's speed.
-            let mut ordered: Vec<&Mod<'_>> = mods.iter().collect();
+            let mut ordered: Vec<&Modifier> = mods.iter().collect();
             ordered.sort_by_key(|m| {
                 ((m.kind == ModKind::Position && m.at == At::End) || m.kind == ModKind::Distance)
                     as u8
@@ -90,9 +88,8 @@ impl Planner<'_, '_> {
             for m in ordered {
                 let need_t = |what: &str| -> Result<f64, Error> {
                     t0.ok_or_else(|| {
-                        ctx.files.err(
+                        m.site.err(
                             K::Unsatisfiable,
-                            m.app.span,
                             format!("expected a phase start the plan knows for {what}, found one after a run-time condition"),
                         )
                     })
@@ -102,9 +99,8 @@ impl Planner<'_, '_> {
                     match (t0, end, len) {
                         (Some(a), Some(b), _) if b > a => Ok((Some(a), b - a)),
                         (_, _, Some(l)) if l > 0.0 => Ok((t0, l)),
-                        _ => Err(ctx.files.err(
+                        _ => Err(m.site.err(
                             K::Unsatisfiable,
-                            m.app.span,
                             format!("expected a phase duration the plan knows for {what}, found none (give the phase a duration)"),
                         )),
                     }
@@ -140,7 +136,7 @@ impl Planner<'_, '_> {
                             at: None,
                             name: name("speed"),
                             action: speed_action(DynamicsShape::Step, 0.0, target_speed),
-                            span: m.app.span,
+                            site: m.site.clone(),
                         });
                         if let Some(t) = t0 {
                             self.track_mut(target).ramp(t, t, v);
@@ -151,7 +147,7 @@ impl Planner<'_, '_> {
                         let (t, len) = need_len("a speed at the phase end")?;
                         let (v1, _) = self.speed_value(m, t.map(|t| t + len))?;
                         let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
-                        check_speed(ctx, m, v1)?;
+                        check_speed(m, v1)?;
                         // With acceleration(a): the change at that rate, done within the phase.
                         let rate = match mods.iter().find(|q| q.kind == ModKind::Acceleration) {
                             Some(q) => Some((q, self.acceleration_value(q)?.abs())),
@@ -159,12 +155,11 @@ impl Planner<'_, '_> {
                         };
                         let (action, ramp) = match rate {
                             Some((q, a)) => {
-                                check_accel(ctx, q, a)?;
+                                check_accel(q, a)?;
                                 let needed = (v1 - v0).abs() / a;
                                 if needed > len + 1e-9 {
-                                    return Err(ctx.files.err(
+                                    return Err(q.site.err(
                                         K::Unsatisfiable,
-                                        q.app.span,
                                         format!("expected the speed change from {v0:.2} m/s to {v1:.2} m/s at {a} m/s² within the phase's {len} s, found it needs {needed:.2} s"),
                                     ));
                                 }
@@ -183,7 +178,7 @@ impl Planner<'_, '_> {
                                 )
                             }
                             None => {
-                                check_accel(ctx, m, (v1 - v0) / len)?;
+                                check_accel(m, (v1 - v0) / len)?;
                                 (
                                     speed_action(
                                         DynamicsShape::Linear,
@@ -199,7 +194,7 @@ impl Planner<'_, '_> {
                             at: None,
                             name: name("speed"),
                             action,
-                            span: m.app.span,
+                            site: m.site.clone(),
                         });
                         if let Some(t) = t {
                             self.track_mut(target).ramp(t, t + ramp, v1);
@@ -217,10 +212,10 @@ impl Planner<'_, '_> {
                         }
                         let (t, len) = need_len("acceleration(…)")?;
                         let a = self.acceleration_value(m)?;
-                        check_accel(ctx, m, a)?;
+                        check_accel(m, a)?;
                         let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
                         let v1 = v0 + a * len;
-                        check_speed(ctx, m, v1)?;
+                        check_speed(m, v1)?;
                         out.push(Planned {
                             entity: target.clone(),
                             at: None,
@@ -230,7 +225,7 @@ impl Planner<'_, '_> {
                                 len,
                                 SpeedTarget::Absolute(v1),
                             ),
-                            span: m.app.span,
+                            site: m.site.clone(),
                         });
                         if let Some(t) = t {
                             self.track_mut(target).ramp(t, t + len, v1);
@@ -261,9 +256,8 @@ impl Planner<'_, '_> {
                                 let closing = v0 - v_x;
                                 let tau = gap / closing;
                                 if !(tau.is_finite() && tau > 0.0) {
-                                    return Err(ctx.files.err(
+                                    return Err(m.site.err(
                                         K::Unsatisfiable,
-                                        m.app.span,
                                         format!("expected the actors to close the {gap:.2} m to this position at their speeds ({v0:.2} m/s and {v_x:.2} m/s), found they never do"),
                                     ));
                                 }
@@ -297,9 +291,8 @@ impl Planner<'_, '_> {
                                 if hold && ve_given.is_none() {
                                     let got = self.road.s_after(lane_a, s_a, v0 * len);
                                     if (got - want).abs() > POSITION_TOLERANCE {
-                                        return Err(ctx.files.err(
+                                        return Err(m.site.err(
                                             K::Unsatisfiable,
-                                            m.app.span,
                                             format!("expected position(…, at: end) met at the constant speed {v0:.2} m/s, found it {:.2} m off at the phase end", got - want),
                                         ));
                                     }
@@ -313,29 +306,26 @@ impl Planner<'_, '_> {
                     }
                     (ModKind::Distance, at) => {
                         if at == At::Start {
-                            return Err(ctx.files.err(
+                            return Err(m.site.err(
                                 K::Modifier,
-                                m.app.span,
                                 "expected distance(…) over the phase (at: all or end), found at: start",
                             ));
                         }
                         let t = need_t("distance(…)")?;
                         let d =
-                            match m.arg("distance").map(|e| ctx.number(e)).transpose()? {
+                            match m.arg("distance").map(Arg::number).transpose()? {
                                 Some(d) if d >= 0.0 => d,
-                                _ => return Err(ctx.files.err(
+                                _ => return Err(m.site.err(
                                     K::Value,
-                                    m.app.span,
                                     "expected a distance of 0 m or more in distance(…), found none",
                                 )),
                             };
                         let v0 = self.track(target).at(t).1;
                         let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
                         if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
-                            return Err(ctx.files.err(
+                            return Err(q.site.err(
                                 K::Unsatisfiable,
-                                q.app.span,
-                                format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", ctx.files.at(m.app.span)),
+                                format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", m.site.at()),
                             ));
                         }
                         match end.filter(|te| *te > t) {
@@ -343,9 +333,8 @@ impl Planner<'_, '_> {
                                 let len = te - t;
                                 if hold && ve_given.is_none() {
                                     if (v0 * len - d).abs() > POSITION_TOLERANCE {
-                                        return Err(ctx.files.err(
+                                        return Err(m.site.err(
                                             K::Unsatisfiable,
-                                            m.app.span,
                                             format!("expected distance({d} m) at the constant speed {v0:.2} m/s over {len} s, found {:.2} m", v0 * len),
                                         ));
                                     }
@@ -359,16 +348,14 @@ impl Planner<'_, '_> {
                                 // No duration: the phase ends when d is travelled at the speed
                                 // it starts with.
                                 if let Some(q) = ve_given {
-                                    return Err(ctx.files.err(
+                                    return Err(q.site.err(
                                         K::Unsatisfiable,
-                                        q.app.span,
-                                        format!("expected a phase duration for a speed change beside distance(…) at {}, found none", ctx.files.at(m.app.span)),
+                                        format!("expected a phase duration for a speed change beside distance(…) at {}, found none", m.site.at()),
                                     ));
                                 }
                                 if v0 <= 0.0 && d > 0.0 {
-                                    return Err(ctx.files.err(
+                                    return Err(m.site.err(
                                         K::Unsatisfiable,
-                                        m.app.span,
                                         format!("expected `{target}` to move to travel {d} m, found it standing"),
                                     ));
                                 }
@@ -389,17 +376,15 @@ impl Planner<'_, '_> {
                             (Some(q), Some(l)) => {
                                 let s_end = t.map_or(0.0, |t| self.s_at(target, t + len));
                                 let w = self.width(target);
-                                Some(crate::lateral::lane_offset(
-                                    ctx,
+                                Some(lateral::lane_offset(
                                     q,
                                     self.road.lane_width(l, s_end),
                                     w,
                                 )?)
                             }
                             (Some(q), None) => {
-                                return Err(ctx.files.err(
+                                return Err(q.site.err(
                                     K::Unsatisfiable,
-                                    q.app.span,
                                     "expected a target lane the plan knows for lateral(…, at: end) with a lane change, found none",
                                 ))
                             }
@@ -419,7 +404,7 @@ impl Planner<'_, '_> {
                                 },
                                 target: target_lane,
                             }),
-                            span: m.app.span,
+                            site: m.site.clone(),
                         });
                         if let (Some(l), Some(t)) = (planned, t) {
                             let tr = self.track_mut(target);
@@ -431,10 +416,9 @@ impl Planner<'_, '_> {
                     (ModKind::Lateral, At::Start | At::All) => {
                         if m.at == At::All {
                             if let Some(c) = lane_change(mods) {
-                                return Err(ctx.files.err(
+                                return Err(c.site.err(
                                     K::Unsatisfiable,
-                                    c.app.span,
-                                    format!("expected no lane change while lateral(…) at {} holds throughout the phase, found `{}(…)`", ctx.files.at(m.app.span), c.app.name.text),
+                                    format!("expected no lane change while lateral(…) at {} holds throughout the phase, found `{}(…)`", m.site.at(), c.name),
                                 ));
                             }
                         }
@@ -442,14 +426,14 @@ impl Planner<'_, '_> {
                             // Placed; beside another actor and throughout, both must keep
                             // their lateral positions (checked once everything is planned).
                             if m.at == At::All {
-                                if let Some((e, _)) = crate::lateral::reference(ctx, m)? {
+                                if let Some((e, _)) = lateral::reference(m)? {
                                     let x = self.entity_of(e)?;
                                     self.beside_checks.push((
                                         target.clone(),
                                         x,
                                         t0.unwrap_or(0.0),
                                         end.or(len.and_then(|l| t0.map(|t| t + l))),
-                                        m.app.span,
+                                        m.site.clone(),
                                     ));
                                 }
                             }
@@ -459,12 +443,11 @@ impl Planner<'_, '_> {
                         let tr = self.track(target);
                         let lane = tr.lane(t);
                         let w = self.road.lane_width(lane, self.s_at(target, t));
-                        let want = crate::lateral::lane_offset(ctx, m, w, self.width(target))?;
+                        let want = lateral::lane_offset(m, w, self.width(target))?;
                         let got = tr.offset(t);
                         if (got - want).abs() > LATERAL_TOLERANCE {
-                            return Err(ctx.files.err(
+                            return Err(m.site.err(
                                 K::Unsatisfiable,
-                                m.app.span,
                                 format!("expected this lateral position at the phase start, found `{target}` {:.2} m from it (plan an earlier phase to reach it, with lateral(…, at: end))", got - want),
                             ));
                         }
@@ -475,20 +458,19 @@ impl Planner<'_, '_> {
                             continue;
                         }
                         let (t, len) = need_len("a lateral position at the phase end")?;
-                        let t = t.ok_or_else(|| ctx.files.err(
+                        let t = t.ok_or_else(|| m.site.err(
                             K::Unsatisfiable,
-                            m.app.span,
                             "expected a phase start the plan knows for lateral(…, at: end), found one after a run-time condition",
                         ))?;
                         let tr = self.track(target);
                         let lane = tr.lane(t);
                         let o0 = tr.offset(t);
                         let w = self.road.lane_width(lane, self.s_at(target, t + len));
-                        let o1 = crate::lateral::lane_offset(ctx, m, w, self.width(target))?;
+                        let o1 = lateral::lane_offset(m, w, self.width(target))?;
                         // A sinusoidal change of Δ has its peak lateral acceleration
                         // π²Δ/(2T²): given as the action's maximum, the engine's change lasts T.
                         let a = std::f64::consts::PI.powi(2) * (o1 - o0).abs() / (2.0 * len * len);
-                        check_accel(ctx, m, a)?;
+                        check_accel(m, a)?;
                         if a > 0.0 {
                             out.push(Planned {
                                 entity: target.clone(),
@@ -500,7 +482,7 @@ impl Planner<'_, '_> {
                                     max_lateral_acc: Some(a),
                                     target: scenario::LaneOffsetTarget::Absolute(o1),
                                 }),
-                                span: m.app.span,
+                                site: m.site.clone(),
                             });
                         }
                         let tr = self.track_mut(target);
@@ -529,9 +511,9 @@ impl Planner<'_, '_> {
                 lane: &lane,
                 s: &s,
             };
-            let checked = alongs.iter().try_for_each(|(at, a)| {
-                route::check(ctx, &self.road, a, *at, mods, &on, &mut shared)
-            });
+            let checked = alongs
+                .iter()
+                .try_for_each(|(at, a)| route::check(&self.road, a, *at, mods, &on, &mut shared));
             self.route_lanes = shared;
             checked?;
         }

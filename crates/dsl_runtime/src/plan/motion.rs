@@ -2,22 +2,19 @@
 //! acceleration and position modifiers, lane change targets, and the limits they are checked
 //! against (ASAM OpenSCENARIO DSL 2.1 §8.9).
 
-use dsl::semantics::hir::Expr;
 use scenario::{
     ConditionGroup, DynamicsDimension, DynamicsShape, LaneChangeTarget, LongitudinalAction,
     PrivateAction, SpeedTarget, TransitionDynamics, Trigger,
 };
 
-use crate::actors::{MAX_ACCELERATION, MAX_SPEED};
+use super::planner::Planner;
+use super::types::{Planned, When, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
-use crate::modifier::{At, Mod, ModKind};
-use crate::value::{Ctx, Val};
+use crate::resolve::{Arg, At, ModKind, Modifier, Val};
 
-use super::{Planned, Planner, When, POSITION_TOLERANCE};
-
-impl Planner<'_, '_> {
+impl Planner<'_> {
     /// The speed at `te` an end-speed modifier asks for, else `v0`.
-    pub(super) fn end_speed(&self, q: Option<&Mod<'_>>, te: f64, v0: f64) -> Result<f64, Error> {
+    pub(super) fn end_speed(&self, q: Option<&Modifier>, te: f64, v0: f64) -> Result<f64, Error> {
         Ok(match q {
             Some(q) => self.speed_value(q, Some(te))?.0,
             None => v0,
@@ -30,27 +27,25 @@ impl Planner<'_, '_> {
     /// a speed change the phase planned already.
     pub(super) fn two_halves(
         &mut self,
-        m: &Mod<'_>,
+        m: &Modifier,
         target: &str,
         (t, len): (f64, f64),
         (v0, ds, ve): (f64, f64, f64),
         names: (String, String),
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
-        let ctx = self.ctx;
         self.last_v.insert(target.to_string(), ve);
         let vm = (4.0 * ds / len - v0 - ve) / 2.0;
         // movement_mode: monotonous: the speed only rises or only falls.
         if m.monotonous && (vm - v0) * (ve - vm) < -1e-9 {
-            return Err(ctx.files.err(
+            return Err(m.site.err(
                 K::Unsatisfiable,
-                m.app.span,
                 format!("expected a monotonous speed profile (movement_mode: monotonous) from {v0:.2} m/s to {ve:.2} m/s, found it needs {vm:.2} m/s half way"),
             ));
         }
-        check_speed(ctx, m, vm)?;
-        check_accel(ctx, m, (vm - v0) / (len / 2.0))?;
-        check_accel(ctx, m, (ve - vm) / (len / 2.0))?;
+        check_speed(m, vm)?;
+        check_accel(m, (vm - v0) / (len / 2.0))?;
+        check_accel(m, (ve - vm) / (len / 2.0))?;
         // Drop a speed ramp this phase planned already (change_speed).
         out.retain(|a| !(a.entity == target && a.name.ends_with(":speed")));
         out.push(Planned {
@@ -58,14 +53,14 @@ impl Planner<'_, '_> {
             at: None,
             name: names.0,
             action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(vm)),
-            span: m.app.span,
+            site: m.site.clone(),
         });
         out.push(Planned {
             entity: target.to_string(),
             at: Some(t + len / 2.0),
             name: names.1,
             action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(ve)),
-            span: m.app.span,
+            site: m.site.clone(),
         });
         let tr = self.track_mut(target);
         tr.ramp(t, t + len / 2.0, vm);
@@ -79,16 +74,15 @@ impl Planner<'_, '_> {
     /// not measured by a 1.x condition, so it is an error.
     pub(super) fn gap_reached(
         &self,
-        m: &Mod<'_>,
+        m: &Modifier,
         target: &str,
         x: Option<&str>,
         sign: f64,
         d: f64,
     ) -> Result<When, Error> {
         let Some(x) = x else {
-            return Err(self.ctx.files.err(
+            return Err(m.site.err(
                 K::Unsatisfiable,
-                m.app.span,
                 "expected a duration for position(d, at: end) without a reference, found none",
             ));
         };
@@ -120,7 +114,7 @@ impl Planner<'_, '_> {
                             },
                         },
                     },
-                    pos: self.ctx.files.pos(m.app.span),
+                    pos: m.site.pos.clone(),
                 }],
             }],
         }))
@@ -129,10 +123,10 @@ impl Planner<'_, '_> {
     /// The speed a speed-like modifier asks for at time `t`, and its relative form.
     pub(super) fn speed_value(
         &self,
-        m: &Mod<'_>,
+        m: &Modifier,
         t: Option<f64>,
     ) -> Result<(f64, Option<(String, f64)>), Error> {
-        let own = m.arg("speed").map(|e| self.ctx.number(e)).transpose()?;
+        let own = m.arg("speed").map(Arg::number).transpose()?;
         for (key, sign) in [
             ("faster_than", 1.0),
             ("slower_than", -1.0),
@@ -147,34 +141,31 @@ impl Planner<'_, '_> {
         }
         match own {
             Some(v) => Ok((v, None)),
-            None => Err(self.ctx.files.err(
+            None => Err(m.site.err(
                 K::Modifier,
-                m.app.span,
                 "expected a speed (or faster_than/slower_than/same_as) in this modifier, found none",
             )),
         }
     }
 
     /// The acceleration of an `acceleration(a)` modifier (m/s²).
-    pub(super) fn acceleration_value(&self, m: &Mod<'_>) -> Result<f64, Error> {
+    pub(super) fn acceleration_value(&self, m: &Modifier) -> Result<f64, Error> {
         match m.arg("acceleration") {
-            Some(e) => self.ctx.number(e),
-            None => Err(self.ctx.files.err(
+            Some(e) => e.number(),
+            None => Err(m.site.err(
                 K::Modifier,
-                m.app.span,
                 "expected an acceleration in acceleration(…), found none (relative forms are not planned yet)",
             )),
         }
     }
 
-    pub(super) fn entity_of(&self, e: &Expr) -> Result<String, Error> {
-        self.ctx
-            .path_of(e)
+    pub(super) fn entity_of(&self, e: &Arg) -> Result<String, Error> {
+        e.path
+            .clone()
             .filter(|p| self.index.contains_key(p))
             .ok_or_else(|| {
-                self.ctx.files.err(
+                e.site.err(
                     K::UnknownActor,
-                    e.span,
                     "expected a vehicle of the scenario, found another value",
                 )
             })
@@ -183,7 +174,7 @@ impl Planner<'_, '_> {
     /// (reference entity, +1 ahead / −1 behind, distance) of a position modifier.
     pub(super) fn position_target(
         &self,
-        m: &Mod<'_>,
+        m: &Modifier,
         t: f64,
     ) -> Result<(Option<String>, f64, f64), Error> {
         let (x, sign) = match (m.arg("ahead_of"), m.arg("behind")) {
@@ -193,11 +184,10 @@ impl Planner<'_, '_> {
         };
         let d =
             match (m.arg("distance"), m.arg("time"), &x) {
-                (Some(e), _, _) => self.ctx.number(e)?,
-                (None, Some(e), Some(x)) => self.ctx.number(e)? * self.track(x).at(t).1,
-                _ => return Err(self.ctx.files.err(
+                (Some(e), _, _) => e.number()?,
+                (None, Some(e), Some(x)) => e.number()? * self.track(x).at(t).1,
+                _ => return Err(m.site.err(
                     K::Unsatisfiable,
-                    m.app.span,
                     "expected a distance (or a time and a reference) in position(…), found neither",
                 )),
             };
@@ -205,15 +195,14 @@ impl Planner<'_, '_> {
     }
 
     /// Checks a constraint at the start of a phase that is not the actor's first.
-    pub(super) fn check_start(&self, m: &Mod<'_>, target: &str, t: f64) -> Result<(), Error> {
+    pub(super) fn check_start(&self, m: &Modifier, target: &str, t: f64) -> Result<(), Error> {
         if m.kind == ModKind::Position {
             let (x, sign, d) = self.position_target(m, t)?;
             let want = x.as_ref().map_or(0.0, |x| self.s_at(x, t)) + sign * d;
             let got = self.s_at(target, t);
             if (got - want).abs() > POSITION_TOLERANCE {
-                return Err(self.ctx.files.err(
+                return Err(m.site.err(
                     K::Unsatisfiable,
-                    m.app.span,
                     format!("expected this position at the phase start, found `{target}` {:.2} m from it (plan an earlier phase to reach it)", got - want),
                 ));
             }
@@ -222,9 +211,8 @@ impl Planner<'_, '_> {
             let got = self.track(target).lane(t);
             let want = self.lane_asked(m, target, t)?;
             if want != Some(got) {
-                return Err(self.ctx.files.err(
+                return Err(m.site.err(
                     K::Unsatisfiable,
-                    m.app.span,
                     format!(
                         "expected `{target}` in {} at the phase start, found it in lane {got} (plan the change in an earlier phase, with lane(…, at: end) or change_lane)",
                         want.map_or("a driving lane that does not exist".to_string(), |l| format!("lane {l}"))
@@ -237,10 +225,10 @@ impl Planner<'_, '_> {
 
     /// The lane a `lane(…)` modifier of `target` asks for at time `t` (`None`: no such
     /// driving lane).
-    fn lane_asked(&self, m: &Mod<'_>, target: &str, t: f64) -> Result<Option<i32>, Error> {
+    fn lane_asked(&self, m: &Modifier, target: &str, t: f64) -> Result<Option<i32>, Error> {
         let n = m
             .arg("lane")
-            .map(|e| self.ctx.number(e))
+            .map(Arg::number)
             .transpose()?
             .map_or(1, |x| x.round() as i64);
         for (key, left) in [
@@ -250,7 +238,7 @@ impl Planner<'_, '_> {
             (
                 "side_of",
                 Some(
-                    !matches!(m.arg("side").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(s)) if s == "right"),
+                    !matches!(m.arg("side").map(Arg::eval).transpose()?, Some(Val::Enum(s)) if s == "right"),
                 ),
             ),
         ] {
@@ -263,7 +251,8 @@ impl Planner<'_, '_> {
                 });
             }
         }
-        let from_left = matches!(m.arg("from").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
+        let from_left =
+            matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
         Ok(self.road.numbered(n, from_left, self.s_at(target, t)))
     }
 
@@ -271,17 +260,17 @@ impl Planner<'_, '_> {
     /// expects there.
     pub(super) fn lane_target(
         &self,
-        m: &Mod<'_>,
+        m: &Modifier,
         target: &str,
         t: f64,
         len: f64,
     ) -> Result<(LaneChangeTarget, Option<i32>), Error> {
         let n = m
             .arg("lane")
-            .map(|e| self.ctx.number(e))
+            .map(Arg::number)
             .transpose()?
             .map_or(1, |x| x.round() as i32);
-        let side = m.arg("side").map(|e| self.ctx.eval(e)).transpose()?;
+        let side = m.arg("side").map(Arg::eval).transpose()?;
         let left = !matches!(&side, Some(Val::Enum(s)) if s == "right");
         let shift = if left { n } else { -n };
         if m.kind == ModKind::ChangeLane {
@@ -295,17 +284,16 @@ impl Planner<'_, '_> {
                 None => *self
                     .sides
                     .borrow_mut()
-                    .entry(format!("{:?}", m.app.span))
+                    .entry(format!("{:?}", m.site.span))
                     .or_insert_with(|| match (exists(true), exists(false)) {
-                        (true, true) => self.ctx.choose(2) == 0,
+                        (true, true) => self.choose(2) == 0,
                         (l, _) => l,
                     }),
             };
             let shift = if left { n } else { -n };
             if !exists(left) {
-                return Err(self.ctx.files.err(
+                return Err(m.site.err(
                     K::Unsatisfiable,
-                    m.app.span,
                     format!(
                         "expected a driving lane {n} to the {} of `{target}`'s lane {now} at s = {s_now:.2} m, found none",
                         if left { "left" } else { "right" }
@@ -335,9 +323,8 @@ impl Planner<'_, '_> {
                     v => self.road.beside(lx, v > 0, v.abs().into(), s_end),
                 };
                 if lane.is_none() {
-                    return Err(self.ctx.files.err(
+                    return Err(m.site.err(
                         K::Unsatisfiable,
-                        m.app.span,
                         format!(
                             "expected a driving lane {} to the {} of `{x}`'s lane {lx} at the phase end (s = {s_end:.2} m), found none",
                             value.abs(),
@@ -356,13 +343,13 @@ impl Planner<'_, '_> {
         }
         // A lane number (1 = the rightmost driving lane, or the leftmost with from: left) at
         // the phase end: an absolute target lane.
-        let from_left = matches!(m.arg("from").map(|e| self.ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
+        let from_left =
+            matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
         let s_end = self.s_at(target, t + len);
         match self.road.numbered(n.into(), from_left, s_end) {
             Some(l) => Ok((LaneChangeTarget::Absolute(l.to_string()), Some(l))),
-            None => Err(self.ctx.files.err(
+            None => Err(m.site.err(
                 K::Unsatisfiable,
-                m.app.span,
                 format!(
                     "expected a driving lane numbered {n} from the {} on road {} at s = {s_end:.2} m, found none",
                     if from_left { "left" } else { "right" },
@@ -374,25 +361,25 @@ impl Planner<'_, '_> {
 }
 
 /// The `speed(…, at: end)` or `change_speed(…)` of an invocation, if any.
-pub(super) fn end_speed_mod<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+pub(super) fn end_speed_mod(mods: &[Modifier]) -> Option<&Modifier> {
     mods.iter()
         .find(|q| (q.kind == ModKind::Speed && q.at == At::End) || q.kind == ModKind::ChangeSpeed)
 }
 
 /// Whether an invocation holds its speed throughout (`speed(v)`, at: all).
-pub(super) fn holds_speed(mods: &[Mod<'_>]) -> bool {
+pub(super) fn holds_speed(mods: &[Modifier]) -> bool {
     mods.iter()
         .any(|q| q.kind == ModKind::Speed && q.at == At::All)
 }
 
 /// The lane change of an invocation (`change_lane`, `lane(…, at: end)`), if any.
-pub(super) fn lane_change<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+pub(super) fn lane_change(mods: &[Modifier]) -> Option<&Modifier> {
     mods.iter()
         .find(|m| m.kind == ModKind::ChangeLane || (m.kind == ModKind::Lane && m.at == At::End))
 }
 
 /// The `lateral(…, at: end)` of an invocation, if any.
-pub(super) fn lateral_end<'m, 'p>(mods: &'m [Mod<'p>]) -> Option<&'m Mod<'p>> {
+pub(super) fn lateral_end(mods: &[Modifier]) -> Option<&Modifier> {
     mods.iter()
         .find(|m| m.kind == ModKind::Lateral && m.at == At::End)
 }
@@ -409,22 +396,20 @@ pub(super) fn speed_action(shape: DynamicsShape, time: f64, target: SpeedTarget)
     })
 }
 
-pub(super) fn check_speed(ctx: &Ctx<'_>, m: &Mod<'_>, v: f64) -> Result<(), Error> {
+pub(super) fn check_speed(m: &Modifier, v: f64) -> Result<(), Error> {
     if !(0.0..=MAX_SPEED).contains(&v) {
-        return Err(ctx.files.err(
+        return Err(m.site.err(
             K::Unsatisfiable,
-            m.app.span,
             format!("expected a plan within 0 to {MAX_SPEED} m/s, found it needs {v:.2} m/s"),
         ));
     }
     Ok(())
 }
 
-pub(super) fn check_accel(ctx: &Ctx<'_>, m: &Mod<'_>, a: f64) -> Result<(), Error> {
+pub(super) fn check_accel(m: &Modifier, a: f64) -> Result<(), Error> {
     if a.abs() > MAX_ACCELERATION + 1e-9 {
-        return Err(ctx.files.err(
+        return Err(m.site.err(
             K::Unsatisfiable,
-            m.app.span,
             format!("expected a plan within ±{MAX_ACCELERATION} m/s², found it needs {a:.2} m/s²"),
         ));
     }

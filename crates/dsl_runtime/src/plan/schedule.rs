@@ -2,25 +2,22 @@
 //! semantics): when it starts and ends, and the storyboard phases it becomes (see the parent
 //! module's doc for the rules).
 
-use std::collections::HashMap;
-
 use scenario::{ConditionGroup, StoryboardElementState, Trigger};
 
-use super::{no_end, PhasePlan, Planner, When};
-use crate::condition::act_state;
+use super::planner::{no_end, Planner};
+use super::types::{PhasePlan, When};
 use crate::error::Error;
-use crate::modifier::{At, Mod, ModKind};
-use crate::phase::{Kind, Phase};
+use crate::resolve::{At, Kind, ModKind, Phase};
+use crate::trigger::act_state;
 
-impl Planner<'_, '_> {
+impl Planner<'_> {
     pub(super) fn schedule(
         &mut self,
-        p: &Phase<'_>,
+        p: &Phase,
         start: When,
         inherit: Option<When>,
         cap: Option<When>,
         len_hint: Option<f64>,
-        mods: &HashMap<String, &Vec<Mod<'_>>>,
     ) -> Result<When, Error> {
         let own = self.own_end(p, &start)?;
         // The latest end: an enclosing composition's own end (duration, until) stops its
@@ -38,9 +35,8 @@ impl Planner<'_, '_> {
                 let mut derived = None;
                 if let Kind::Invoke(inv) = &p.kind {
                     let cap = own.as_ref().or(inherit.as_ref()).and_then(When::time);
-                    let empty = Vec::new();
-                    let ms = mods.get(&p.path).copied().unwrap_or(&empty);
                     let len = p.duration.or(len_hint);
+                    let ms = &inv.modifiers;
                     derived = self.plan_invoke(p, inv, ms, start.time(), cap, len, &mut actions)?;
                 }
                 let end = match (own, derived, inherit) {
@@ -48,12 +44,12 @@ impl Planner<'_, '_> {
                     (None, Some(d), i) => d.or(i.unwrap_or(When::Pending)),
                     (None, None, Some(i)) => i,
                     (None, None, None) if self.settings.open_end => When::Never,
-                    (None, None, None) => return Err(no_end(self.ctx, p)),
+                    (None, None, None) => return Err(no_end(p)),
                 };
                 let end = capped(end);
                 self.phases.push(PhasePlan {
                     path: p.path.clone(),
-                    span: p.span,
+                    site: p.site.clone(),
                     start,
                     end: end.clone(),
                     actions,
@@ -66,7 +62,7 @@ impl Planner<'_, '_> {
                 // An instant: its Act starts and, with nothing to do, completes in its step.
                 self.phases.push(PhasePlan {
                     path: p.path.clone(),
-                    span: p.span,
+                    site: p.site.clone(),
                     start: start.clone(),
                     end: When::Never,
                     actions: Vec::new(),
@@ -102,14 +98,14 @@ impl Planner<'_, '_> {
                         Kind::OneOf(_) => p.duration.or(len_hint),
                         _ => None,
                     };
-                    cur = self.schedule(c, cur.clone(), inh, own_cap.clone(), hint, mods)?;
+                    cur = self.schedule(c, cur.clone(), inh, own_cap.clone(), hint)?;
                     // After a run-time end, the next member starts on the state of the one that
                     // ended (and only while this serial runs, which its own end may stop).
                     let mut ended = vec![act_state(
                         &c.path,
                         StoryboardElementState::CompleteState,
                         0.0,
-                        self.ctx.files.pos(c.span),
+                        c.site.pos.clone(),
                     )];
                     if i + 1 < n {
                         if matches!(own_cap, Some(When::Dyn(_))) {
@@ -117,7 +113,7 @@ impl Planner<'_, '_> {
                                 &p.path,
                                 StoryboardElementState::RunningState,
                                 0.0,
-                                self.ctx.files.pos(p.span),
+                                p.site.pos.clone(),
                             ));
                         }
                         cur = match cur {
@@ -125,7 +121,7 @@ impl Planner<'_, '_> {
                             When::Dyn(_) => When::Dyn(Trigger {
                                 condition_groups: vec![ConditionGroup { conditions: ended }],
                             }),
-                            When::Never | When::Pending => return Err(no_end(self.ctx, c)),
+                            When::Never | When::Pending => return Err(no_end(c)),
                         };
                     } else if matches!(cur, When::Dyn(_)) {
                         // Ends with its last member: on that member's state (its condition
@@ -145,13 +141,8 @@ impl Planner<'_, '_> {
                 // Members planned (and written) first: those whose motion others refer to, and
                 // those that end on their own, so that members ending with the parallel see
                 // their end in the same step.
-                let mut order: Vec<&Phase<'_>> = p.children.iter().collect();
-                order.sort_by_key(|c| {
-                    (
-                        relative_end(c, mods),
-                        c.duration.is_none() && c.until.is_none(),
-                    )
-                });
+                let mut order: Vec<&Phase> = p.children.iter().collect();
+                order.sort_by_key(|c| (relative_end(c), c.duration.is_none() && c.until.is_none()));
                 let inh = match (&own, &inherit) {
                     (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
                     (Some(o), None) => Some(o.clone()),
@@ -169,14 +160,13 @@ impl Planner<'_, '_> {
                         inh.clone(),
                         own_cap.clone(),
                         p.duration.or(len_hint),
-                        mods,
                     )?;
                     ends.push((c, e));
                 }
                 capped(match own {
                     Some(o) => o,
                     None => {
-                        let with_end: Vec<&(&Phase<'_>, When)> =
+                        let with_end: Vec<&(&Phase, When)> =
                             ends.iter().filter(|(_, e)| *e != When::Pending).collect();
                         if with_end.iter().any(|(_, e)| *e == When::Never) {
                             When::Never
@@ -184,7 +174,7 @@ impl Planner<'_, '_> {
                             match inherit {
                                 Some(i) => i,
                                 None if self.settings.open_end => When::Never,
-                                None => return Err(no_end(self.ctx, p)),
+                                None => return Err(no_end(p)),
                             }
                         } else if with_end.iter().all(|(_, e)| matches!(e, When::At(_))) {
                             When::At(
@@ -203,7 +193,7 @@ impl Planner<'_, '_> {
                                                 &c.path,
                                                 StoryboardElementState::CompleteState,
                                                 0.0,
-                                                self.ctx.files.pos(c.span),
+                                                c.site.pos.clone(),
                                             )
                                         })
                                         .collect(),
@@ -224,7 +214,7 @@ impl Planner<'_, '_> {
         }
         self.phases.push(PhasePlan {
             path: p.path.clone(),
-            span: p.span,
+            site: p.site.clone(),
             start,
             end: end.clone(),
             actions: Vec::new(),
@@ -237,9 +227,7 @@ impl Planner<'_, '_> {
 
 /// 1 for an invocation with a `position(…, at: end)` relative to another actor, else 0: the
 /// order in which a parallel plans its members.
-fn relative_end(p: &Phase<'_>, mods: &HashMap<String, &Vec<Mod<'_>>>) -> u8 {
-    mods.get(&p.path).is_some_and(|ms| {
-        ms.iter()
-            .any(|m| m.kind == ModKind::Position && m.at == At::End)
-    }) as u8
+fn relative_end(p: &Phase) -> u8 {
+    matches!(&p.kind, Kind::Invoke(inv) if inv.modifiers.iter().any(|m| m.kind == ModKind::Position && m.at == At::End))
+        as u8
 }

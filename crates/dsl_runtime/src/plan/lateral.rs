@@ -29,31 +29,23 @@
 //! is not planned (an error). `same_as` (the same t) is an error: two vehicles cannot share it.
 
 use crate::error::{Error, ErrorKind as K};
-use crate::modifier::Mod;
-use crate::value::{Ctx, Val};
+use crate::resolve::{Modifier, Val};
 
 /// The offset from the lane centre (m, + left) that `m` asks for in a lane `lane_width` wide,
 /// for an actor `width` wide.
-pub(crate) fn lane_offset(
-    ctx: &Ctx<'_>,
-    m: &Mod<'_>,
-    lane_width: f64,
-    width: f64,
-) -> Result<f64, Error> {
+pub(crate) fn lane_offset(m: &Modifier, lane_width: f64, width: f64) -> Result<f64, Error> {
     for key in ["side_of", "left_of", "right_of", "same_as"] {
         if let Some(e) = m.arg(key) {
-            return Err(ctx.files.err(
+            return Err(e.site.err(
                 K::Unsupported,
-                e.span,
                 format!("expected lateral(…) relative to the actor's lane here, found `{key}:` (lateral distances to another actor are planned at the start of the run only)"),
             ));
         }
     }
-    let (d, measure) = distance_and_measure(ctx, m)?;
+    let (d, measure) = distance_and_measure(m)?;
     let Some((actor, lane)) = measure.split_once("_to_") else {
-        return Err(ctx.files.err(
+        return Err(m.site.err(
             K::Unsupported,
-            m.app.span,
             format!("expected measure_by naming a side of the actor and a line of its lane (left_to_left, right_to_right, center_to_center …), found {measure} (it needs a reference object)"),
         ));
     };
@@ -65,13 +57,12 @@ pub(crate) fn lane_offset(
     let (r, sigma) = match lane {
         "left" => (lane_width / 2.0, -1.0),
         "right" => (-lane_width / 2.0, 1.0),
-        _ => match m.arg("side").map(|e| ctx.eval(e)).transpose()? {
+        _ => match m.arg("side").map(|e| e.eval()).transpose()? {
             Some(Val::Enum(s)) if s == "left" => (0.0, 1.0),
             Some(Val::Enum(s)) if s == "right" => (0.0, -1.0),
             _ => {
-                return Err(ctx.files.err(
+                return Err(m.site.err(
                     K::Modifier,
-                    m.app.span,
                     format!("expected side: left or right in lateral(…, measure_by: {measure}) (which side of the lane's centre), found none"),
                 ))
             }
@@ -79,9 +70,8 @@ pub(crate) fn lane_offset(
     };
     let o = r + sigma * d - a;
     if o.abs() > lane_width / 2.0 + 1e-9 {
-        return Err(ctx.files.err(
+        return Err(m.site.err(
             K::Unsatisfiable,
-            m.app.span,
             format!("expected the actor's reference point in its lane ({lane_width:.2} m wide), found lateral(…) puts it {o:.2} m from the lane's centre"),
         ));
     }
@@ -90,14 +80,10 @@ pub(crate) fn lane_offset(
 
 /// The reference actor of a `lateral(…)` and the side the actor is on (+1 left, −1 right), if
 /// it has one.
-pub(crate) fn reference<'e>(
-    ctx: &Ctx<'_>,
-    m: &Mod<'e>,
-) -> Result<Option<(&'e dsl::semantics::hir::Expr, f64)>, Error> {
+pub(crate) fn reference(m: &Modifier) -> Result<Option<(&crate::resolve::Arg, f64)>, Error> {
     if let Some(e) = m.arg("same_as") {
-        return Err(ctx.files.err(
+        return Err(e.site.err(
             K::Unsatisfiable,
-            e.span,
             "expected lateral(…) beside another actor (side_of, left_of, right_of), found same_as: (two vehicles cannot share a lateral position)",
         ));
     }
@@ -110,12 +96,11 @@ pub(crate) fn reference<'e>(
     let Some(e) = m.arg("side_of") else {
         return Ok(None);
     };
-    match m.arg("side").map(|x| ctx.eval(x)).transpose()? {
+    match m.arg("side").map(|x| x.eval()).transpose()? {
         Some(Val::Enum(s)) if s == "left" => Ok(Some((e, 1.0))),
         Some(Val::Enum(s)) if s == "right" => Ok(Some((e, -1.0))),
-        _ => Err(ctx.files.err(
+        _ => Err(m.site.err(
             K::Modifier,
-            m.app.span,
             "expected side: left or right with side_of: in lateral(…), found none",
         )),
     }
@@ -124,13 +109,12 @@ pub(crate) fn reference<'e>(
 /// t of the actor's reference line (its centre) for a `lateral(…)` relative to an actor whose
 /// centre is at t `t_x` and whose width is `w_x`: t_a = t_x + r + σ·d − a (module doc).
 pub(crate) fn beside(
-    ctx: &Ctx<'_>,
-    m: &Mod<'_>,
+    m: &Modifier,
     sigma: f64,
     (t_x, w_x): (f64, f64),
     width: f64,
 ) -> Result<f64, Error> {
-    let (d, measure) = distance_and_measure(ctx, m)?;
+    let (d, measure) = distance_and_measure(m)?;
     let (actor, other) = match measure.split_once("_to_") {
         Some(pair) => pair,
         // The facing sides.
@@ -146,18 +130,16 @@ pub(crate) fn beside(
 }
 
 /// The `distance` and `measure_by` (default `closest`) of a `lateral(…)`.
-fn distance_and_measure(ctx: &Ctx<'_>, m: &Mod<'_>) -> Result<(f64, String), Error> {
+fn distance_and_measure(m: &Modifier) -> Result<(f64, String), Error> {
     let d = match m.arg("distance") {
-        Some(e) => ctx.number(e)?,
+        Some(e) => e.number()?,
         None => {
-            return Err(ctx.files.err(
-                K::Modifier,
-                m.app.span,
-                "expected a distance in lateral(…), found none",
-            ))
+            return Err(m
+                .site
+                .err(K::Modifier, "expected a distance in lateral(…), found none"))
         }
     };
-    let measure = match m.arg("measure_by").map(|e| ctx.eval(e)).transpose()? {
+    let measure = match m.arg("measure_by").map(|e| e.eval()).transpose()? {
         Some(Val::Enum(v)) => v,
         _ => "closest".to_string(),
     };

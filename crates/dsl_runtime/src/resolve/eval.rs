@@ -1,33 +1,20 @@
-//! Constant values of the scenario as the planner reads them (ASAM OpenSCENARIO DSL 2.1 §7.4
+//! Constant values of the scenario as the resolver reads them (ASAM OpenSCENARIO DSL 2.1 §7.4
 //! expressions): literals with units in SI, ranges `[a..b]` drawn from the run's seed, and
 //! references to fields the constraint solver resolved (`npc_speed`, `ego.bounding_box.length`).
+//! Only the `resolve` stage reads the program; what it hands on is plain data.
 
 use std::cell::RefCell;
 
-use dsl::semantics::hir::{Arg, BinOp, Expr, ExprKind};
+use dsl::semantics::hir::{Arg as HirArg, BinOp, Expr, ExprKind, Span};
 use dsl::semantics::model::Model;
 use dsl::semantics::types::CompoundId;
 use dsl::{Resolution, Value};
-use rand_chacha::rand_core::{RngCore, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 
-use crate::error::{Error, ErrorKind as K, Files};
+use super::value::{Arg, Draws, Val};
+use crate::error::{Error, ErrorKind as K, Files, Site};
 
-/// A value the planner computed.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) enum Val {
-    /// A number in SI units.
-    Num(f64),
-    /// An enumeration member.
-    Enum(String),
-    /// A boolean.
-    Bool(bool),
-    /// An actor or struct instance: its path in the resolution (`ego`, `g.vehicles[1]`).
-    Instance(String),
-}
-
-/// What the planner reads values with.
-pub(crate) struct Ctx<'a> {
+/// What the resolver reads the program with.
+pub(crate) struct Eval<'a> {
     /// Declarations.
     pub model: &'a Model,
     /// The solver's values.
@@ -36,38 +23,58 @@ pub(crate) struct Ctx<'a> {
     pub root: String,
     /// For positions in messages.
     pub files: Files<'a>,
-    /// Draws of ranges and `one_of` choices, in plan order.
-    rng: RefCell<ChaCha8Rng>,
+    /// Draws of ranges and `one_of` choices, in resolution order.
+    draws: RefCell<Draws>,
 }
 
-impl<'a> Ctx<'a> {
-    /// A context drawing from `seed` (the stream is separate from the solver's: it is keyed by
-    /// a constant so that the same seed does not give correlated draws).
+impl<'a> Eval<'a> {
+    /// A reader of the scenario rooted at `root` in the resolution, drawing from `draws`.
     pub(crate) fn new(
         model: &'a Model,
         res: &'a Resolution,
         root: String,
         files: Files<'a>,
-        seed: u64,
+        draws: Draws,
     ) -> Self {
-        Ctx {
+        Eval {
             model,
             res,
             root,
             files,
-            rng: RefCell::new(ChaCha8Rng::seed_from_u64(seed ^ 0x6473_6c5f_706c_616e)),
+            draws: RefCell::new(draws),
         }
     }
 
-    /// A uniform draw in [0, 1) from the top 53 bits (integer-only mapping, the same on every
-    /// machine).
-    pub(crate) fn uniform(&self) -> f64 {
-        (self.rng.borrow_mut().next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    /// The draws left for the stages after this one.
+    pub(crate) fn into_draws(self) -> Draws {
+        self.draws.into_inner()
     }
 
     /// A draw among `n` choices.
     pub(crate) fn choose(&self, n: usize) -> usize {
-        ((self.uniform() * n as f64) as usize).min(n.saturating_sub(1))
+        self.draws.borrow_mut().choose(n)
+    }
+
+    /// The site of `span`.
+    pub(crate) fn site(&self, span: Span) -> Site {
+        self.files.site(span)
+    }
+
+    /// `e` evaluated as an argument: its value (or why it has none) and the path it names.
+    pub(crate) fn arg(&self, e: &Expr) -> Arg {
+        Arg {
+            site: self.site(e.span),
+            path: self.path_of(e),
+            value: self.eval(e),
+        }
+    }
+
+    /// `args` bound to `params` (see [`bind`]) and evaluated.
+    pub(crate) fn args(&self, args: &[HirArg], params: &[String]) -> super::value::Args {
+        bind(args, params)
+            .into_iter()
+            .map(|(n, e)| (n, self.arg(e)))
+            .collect()
     }
 
     /// The dotted path an actor or field expression names (`dut.vehicle`, `g.vehicles[0]`).
@@ -155,7 +162,7 @@ impl<'a> Ctx<'a> {
                 if hi < lo {
                     return Err(bad("a range whose upper end is below its lower end"));
                 }
-                Val::Num(lo + (hi - lo) * self.uniform())
+                Val::Num(lo + (hi - lo) * self.draws.borrow_mut().uniform())
             }
             ExprKind::EnumValue(_, m) => Val::Enum(m.text.clone()),
             ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
@@ -199,7 +206,7 @@ fn from_value(path: String, v: &Value) -> Option<Val> {
 
 /// Arguments matched to parameter names: positional ones take `params` in order, named ones
 /// their name.
-pub(crate) fn bind<'e>(args: &'e [Arg], params: &[String]) -> Vec<(String, &'e Expr)> {
+pub(crate) fn bind<'e>(args: &'e [HirArg], params: &[String]) -> Vec<(String, &'e Expr)> {
     let mut out = Vec::new();
     let mut next = 0;
     for a in args {

@@ -1,38 +1,42 @@
-//! The vehicles of a plan: every vehicle the `do` tree drives or refers to, and the members of
-//! every vehicle group it drives (`g.vehicles[i]`), with the OpenSCENARIO 1.x Vehicle the engine
-//! builds from the solver's values (bounding box, category, axles). The DSL's vehicle has no
-//! performance fields; oscsim gives every vehicle those of the bundled catalogs' cars: 70 m/s,
-//! 10 m/s² acceleration and deceleration.
+//! The physical objects a scenario's `do` tree names (ASAM OpenSCENARIO DSL 2.1 §8.7 physical
+//! object actors, §8.7.18 groups): what each path is, and the solver's values of its fields that
+//! the run needs — bounding box, category and axles of a vehicle (§8.7.6, §8.7.9, §8.7.10).
 
-use scenario::{Axle, Axles, BoundingBox, Performance, Properties, Vehicle, VehicleCategory};
+use scenario::{Axle, Axles, BoundingBox, VehicleCategory};
 
-use crate::value::Ctx;
-
-/// Maximum speed of a DSL vehicle (m/s).
-pub(crate) const MAX_SPEED: f64 = 70.0;
-/// Maximum acceleration and deceleration of a DSL vehicle (m/s²).
-pub(crate) const MAX_ACCELERATION: f64 = 10.0;
+use super::eval::Eval;
 
 /// What an actor path names.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) enum ActorKind {
-    /// A vehicle: its entity.
-    Vehicle,
-    /// A vehicle group: its members' paths, in list order, and whether its formation spreads
-    /// over the lanes (a `common_route_vehicle_group` that is not single-lane).
-    Group(Vec<String>, bool),
+pub(crate) enum Object {
+    /// A vehicle.
+    Vehicle(VehicleData),
+    /// A vehicle group: its members' paths and data, in list order, and whether its formation
+    /// spreads over the lanes (a `common_route_vehicle_group` that is not single-lane).
+    Group(Vec<(String, VehicleData)>, bool),
     /// A `random_traffic_vehicle_group`: not planned.
     RandomTraffic,
 }
 
+/// The fields of a vehicle the run needs, from the solver's values.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct VehicleData {
+    /// OpenSCENARIO 1.x category of its `vehicle_category`.
+    pub category: VehicleCategory,
+    /// Its bounding box (§8.7.9), in its own coordinates (origin: the rear axle's centre).
+    pub bounding_box: BoundingBox,
+    /// Its axles, rear first.
+    pub axles: Axles,
+}
+
 /// Classifies `path` (`None`: not a vehicle or vehicle group of the program).
-pub(crate) fn classify(ctx: &Ctx<'_>, path: &str) -> Option<ActorKind> {
+pub(crate) fn classify(ctx: &Eval<'_>, path: &str) -> Option<Object> {
     let (_, v) = ctx.lookup(path)?;
     if ctx.is_a(v, "vehicle") {
-        return Some(ActorKind::Vehicle);
+        return Some(Object::Vehicle(vehicle(ctx, path)));
     }
     if ctx.is_a(v, "random_traffic_vehicle_group") {
-        return Some(ActorKind::RandomTraffic);
+        return Some(Object::RandomTraffic);
     }
     if ctx.is_a(v, "vehicle_group") {
         let lanes =
@@ -41,16 +45,22 @@ pub(crate) fn classify(ctx: &Ctx<'_>, path: &str) -> Option<ActorKind> {
             dsl::Value::List(items) => items.len(),
             _ => 0,
         };
-        return Some(ActorKind::Group(
-            (0..n).map(|i| format!("{path}.vehicles[{i}]")).collect(),
+        return Some(Object::Group(
+            (0..n)
+                .map(|i| {
+                    let member = format!("{path}.vehicles[{i}]");
+                    let data = vehicle(ctx, &member);
+                    (member, data)
+                })
+                .collect(),
             lanes,
         ));
     }
     None
 }
 
-/// The vehicle at `path` as the engine's model.
-pub(crate) fn vehicle(ctx: &Ctx<'_>, path: &str) -> Vehicle {
+/// The vehicle at `path`.
+fn vehicle(ctx: &Eval<'_>, path: &str) -> VehicleData {
     let num = |p: &str, default: f64| match ctx.lookup(&format!("{path}.{p}")) {
         Some((_, dsl::Value::Quantity { si, .. })) => *si,
         Some((_, dsl::Value::Float(f))) => *f,
@@ -90,12 +100,8 @@ pub(crate) fn vehicle(ctx: &Ctx<'_>, path: &str) -> Vehicle {
     } else {
         Vec::new()
     };
-    Vehicle {
-        name: path.to_string(),
-        vehicle_category: category,
-        role: None,
-        mass: None,
-        model3d: None,
+    VehicleData {
+        category,
         bounding_box: BoundingBox {
             center: [
                 num("bounding_box.center.x", 1.4),
@@ -106,23 +112,11 @@ pub(crate) fn vehicle(ctx: &Ctx<'_>, path: &str) -> Vehicle {
             length: num("bounding_box.length", 5.0),
             height: num("bounding_box.height", 1.5),
         },
-        performance: Performance {
-            max_speed: MAX_SPEED,
-            max_acceleration: MAX_ACCELERATION,
-            max_deceleration: MAX_ACCELERATION,
-            max_acceleration_rate: None,
-            max_deceleration_rate: None,
-        },
         axles: Axles {
             front_axle: front,
             rear_axle: rear,
             additional_axles: additional,
         },
-        properties: Properties::default(),
-        trailer_hitch: None,
-        trailer_coupler: None,
-        trailer: None,
-        catalog: None,
     }
 }
 

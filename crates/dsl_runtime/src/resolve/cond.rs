@@ -1,6 +1,8 @@
-//! `until` and `wait` conditions as OpenSCENARIO 1.x triggers (ASAM OpenSCENARIO DSL 2.1 §7.3.9
-//! `until`, §7.3.10 events `rise`/`fall`; §8.7 methods of the domain model). The §8.7 methods
-//! become the 1.x conditions the engine evaluates each step with its own domain functions:
+//! `until` and `wait` conditions, event declarations and `on` handlers' events, read (ASAM
+//! OpenSCENARIO DSL 2.1 §7.3.9 `until`, §7.3.10 events `rise`/`fall`, `every`, `elapsed`; §8.7
+//! methods of the domain model). The §8.7 methods become the 1.x conditions the engine evaluates
+//! each step with its own domain functions; events and `every`/`elapsed` stay symbolic here and
+//! become triggers in the planner, which knows their event context:
 //!
 //! | DSL | OpenSCENARIO 1.x condition |
 //! | --- | --- |
@@ -24,29 +26,35 @@
 //!
 //! Conditions measure the world as it stood at the step's start (the engine's trigger rule).
 
-use dsl::semantics::hir::{Arg, BinOp, Expr, ExprKind, Span};
+use dsl::semantics::hir::{Arg as HirArg, BinOp, Expr, ExprKind, Span};
 use scenario::{
-    ByValueCondition, Condition, ConditionEdge, ConditionGroup, ConditionKind, CoordinateSystem,
-    DistanceMeasure, EntityCondition, RelativeDistanceType, Rule, StoryboardElementState,
-    StoryboardElementType, TimeToCollisionTarget, Trigger, TriggeringEntities,
-    TriggeringEntitiesRule,
+    Condition, ConditionEdge, ConditionKind, CoordinateSystem, DistanceMeasure, EntityCondition,
+    RelativeDistanceType, Rule, TimeToCollisionTarget, TriggeringEntities, TriggeringEntitiesRule,
 };
 
-use crate::error::{Error, ErrorKind as K};
-use crate::value::{Ctx, Val};
+use super::eval::Eval;
+use super::value::Val;
+use crate::error::{Error, ErrorKind as K, Site};
 
-/// The condition groups of an event's occurrence; `None`: no such event.
-pub(crate) type EventLookup<'n> = &'n dyn Fn(&str) -> Option<Result<Vec<ConditionGroup>, Error>>;
-
-/// What a condition's names refer to.
-pub(crate) struct Names<'n> {
-    /// An actor path to its entity name (`None`: no vehicle of the plan).
-    pub entity: &'n dyn Fn(&str) -> Option<String>,
-    /// An event name to the condition groups of its occurrence (`None`: no such event).
-    pub event: EventLookup<'n>,
-    /// The condition groups of an `every(…)` or `elapsed(…)` in the event context of the
-    /// condition.
-    pub timed: &'n dyn Fn(Timed, Span) -> Result<Vec<ConditionGroup>, Error>,
+/// A condition, read.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Cond {
+    /// `a or b`: the condition groups of both.
+    Or(Box<Cond>, Box<Cond>),
+    /// `a and b`: every group of a with every group of b.
+    And(Box<Cond>, Box<Cond>),
+    /// `@e`: the occurrence of the event named (`None`: not written as a name).
+    Event(Option<String>, Site),
+    /// A §8.7 method or `speed` compared with a value: the 1.x condition, and the actor paths
+    /// it names (the subject, then the reference), each of which must be an entity of the plan.
+    Measured {
+        /// The condition, entities named by their paths.
+        condition: Box<Condition>,
+        /// The actor paths and where each is written (`None`: not a path).
+        actors: Vec<(Option<String>, Site)>,
+    },
+    /// `every(…)` or `elapsed(…)`, counted in the condition's event context.
+    Timed(Timed, Site),
 }
 
 /// An event condition on the time since the start of the event context (§7.3.10.4).
@@ -68,8 +76,8 @@ pub(crate) struct Every {
 }
 
 /// Reads `every(…)`'s arguments: a period above 0 s and an offset of 0 s or more.
-pub(crate) fn every_args(ctx: &Ctx<'_>, span: Span, args: &[Arg]) -> Result<Every, Error> {
-    let time = |a: &Arg, positive: bool| -> Result<f64, Error> {
+pub(crate) fn every_args(ctx: &Eval<'_>, span: Span, args: &[HirArg]) -> Result<Every, Error> {
+    let time = |a: &HirArg, positive: bool| -> Result<f64, Error> {
         match ctx.eval(&a.value)? {
             Val::Num(x) if x.is_finite() && (x > 0.0 || (!positive && x == 0.0)) => Ok(x),
             _ => Err(ctx.files.err(
@@ -99,52 +107,28 @@ pub(crate) fn every_args(ctx: &Ctx<'_>, span: Span, args: &[Arg]) -> Result<Ever
     Ok(Every { period, offset })
 }
 
-/// A trigger for a DSL condition.
-pub(crate) fn trigger(ctx: &Ctx<'_>, e: &Expr, names: &Names<'_>) -> Result<Trigger, Error> {
-    Ok(Trigger {
-        condition_groups: groups(ctx, e, ConditionEdge::None, names)?,
-    })
+/// Reads a DSL condition.
+pub(crate) fn read(ctx: &Eval<'_>, e: &Expr) -> Result<Cond, Error> {
+    read_edge(ctx, e, ConditionEdge::None)
 }
 
-fn groups(
-    ctx: &Ctx<'_>,
-    e: &Expr,
-    edge: ConditionEdge,
-    names: &Names<'_>,
-) -> Result<Vec<ConditionGroup>, Error> {
-    let entity = names.entity;
+fn read_edge(ctx: &Eval<'_>, e: &Expr, edge: ConditionEdge) -> Result<Cond, Error> {
     match &e.kind {
         ExprKind::Temporal(n, args) if n.text == "@" => {
             let name = args.first().and_then(|a| match &a.value.kind {
                 ExprKind::Name(x) => Some(x.clone()),
                 _ => None,
             });
-            match name.and_then(|x| (names.event)(&x).map(|g| (x, g))) {
-                Some((_, groups)) => groups,
-                None => Err(ctx.files.err(
-                    K::Condition,
-                    e.span,
-                    "expected an event of the scenario that an emit raises or that has a condition, found none",
-                )),
-            }
+            Ok(Cond::Event(name, ctx.site(e.span)))
         }
-        ExprKind::Binary(BinOp::Or, a, b) => {
-            let mut g = groups(ctx, a, edge, names)?;
-            g.extend(groups(ctx, b, edge, names)?);
-            Ok(g)
-        }
-        ExprKind::Binary(BinOp::And, a, b) => {
-            let (ga, gb) = (groups(ctx, a, edge, names)?, groups(ctx, b, edge, names)?);
-            let mut out = Vec::new();
-            for x in &ga {
-                for y in &gb {
-                    let mut c = x.conditions.clone();
-                    c.extend(y.conditions.iter().cloned());
-                    out.push(ConditionGroup { conditions: c });
-                }
-            }
-            Ok(out)
-        }
+        ExprKind::Binary(BinOp::Or, a, b) => Ok(Cond::Or(
+            Box::new(read_edge(ctx, a, edge)?),
+            Box::new(read_edge(ctx, b, edge)?),
+        )),
+        ExprKind::Binary(BinOp::And, a, b) => Ok(Cond::And(
+            Box::new(read_edge(ctx, a, edge)?),
+            Box::new(read_edge(ctx, b, edge)?),
+        )),
         ExprKind::Temporal(n, args) if n.text == "rise" || n.text == "fall" => {
             let inner = args.first().ok_or_else(|| {
                 ctx.files.err(
@@ -158,7 +142,7 @@ fn groups(
             } else {
                 ConditionEdge::Falling
             };
-            groups(ctx, &inner.value, edge, names)
+            read_edge(ctx, &inner.value, edge)
         }
         ExprKind::Binary(op, a, b) => {
             let (rule, flip) = match op {
@@ -175,20 +159,23 @@ fn groups(
                 (Err(_), Ok(v)) => (b, v, flip),
                 (Err(err), Err(_)) => return Err(err),
             };
-            let condition = measured(ctx, measure, value, rule, entity)?;
-            Ok(vec![ConditionGroup {
-                conditions: vec![Condition {
-                    name: format!("until@{}", ctx.files.at(e.span)),
+            let mut actors = Vec::new();
+            let kind = measured(ctx, measure, value, rule, &mut actors)?;
+            Ok(Cond::Measured {
+                condition: Box::new(Condition {
+                    name: format!("until@{}", ctx.site(e.span).at()),
                     condition_edge: edge,
                     delay: 0.0,
-                    kind: condition,
-                    pos: ctx.files.pos(e.span),
-                }],
-            }])
+                    kind,
+                    pos: ctx.site(e.span).pos,
+                }),
+                actors,
+            })
         }
-        ExprKind::Temporal(n, args) if n.text == "every" => {
-            (names.timed)(Timed::Every(every_args(ctx, e.span, args)?), e.span)
-        }
+        ExprKind::Temporal(n, args) if n.text == "every" => Ok(Cond::Timed(
+            Timed::Every(every_args(ctx, e.span, args)?),
+            ctx.site(e.span),
+        )),
         ExprKind::Temporal(n, args) if n.text == "elapsed" => {
             let d = match args.first().map(|a| ctx.eval(&a.value)).transpose()? {
                 Some(Val::Num(d)) if d.is_finite() && d >= 0.0 => d,
@@ -200,13 +187,13 @@ fn groups(
                     ))
                 }
             };
-            (names.timed)(Timed::Elapsed(d), e.span)
+            Ok(Cond::Timed(Timed::Elapsed(d), ctx.site(e.span)))
         }
         _ => Err(unsupported(ctx, e)),
     }
 }
 
-fn unsupported(ctx: &Ctx<'_>, e: &Expr) -> Error {
+fn unsupported(ctx: &Eval<'_>, e: &Expr) -> Error {
     ctx.files.err(
         K::Condition,
         e.span,
@@ -214,21 +201,18 @@ fn unsupported(ctx: &Ctx<'_>, e: &Expr) -> Error {
     )
 }
 
+/// The 1.x condition of `measure rule value`; the actor paths it names are pushed on `actors`.
 fn measured(
-    ctx: &Ctx<'_>,
+    ctx: &Eval<'_>,
     measure: &Expr,
     value: f64,
     rule: Rule,
-    entity: &dyn Fn(&str) -> Option<String>,
+    actors: &mut Vec<(Option<String>, Site)>,
 ) -> Result<ConditionKind, Error> {
-    let actor = |e: &Expr| -> Result<String, Error> {
-        ctx.path_of(e).and_then(|p| entity(&p)).ok_or_else(|| {
-            ctx.files.err(
-                K::UnknownActor,
-                e.span,
-                "expected a vehicle of the scenario, found another expression",
-            )
-        })
+    let mut actor = |e: &Expr| -> String {
+        let path = ctx.path_of(e);
+        actors.push((path.clone(), ctx.site(e.span)));
+        path.unwrap_or_default()
     };
     let by = |who: String, c: EntityCondition| ConditionKind::ByEntity {
         triggering_entities: TriggeringEntities {
@@ -245,7 +229,7 @@ fn measured(
     };
     match &measure.kind {
         ExprKind::Field(obj, f) if f.text == "speed" => Ok(by(
-            actor(obj)?,
+            actor(obj),
             EntityCondition::Speed {
                 value,
                 rule,
@@ -256,7 +240,7 @@ fn measured(
             let ExprKind::Field(obj, method) = &callee.kind else {
                 return Err(unsupported(ctx, measure));
             };
-            let who = actor(obj)?;
+            let who = actor(obj);
             let arg = |name: &str, i: usize| {
                 args.iter()
                     .find(|a| a.name.as_ref().is_some_and(|n| n.text == name))
@@ -264,7 +248,7 @@ fn measured(
                     .map(|a| &a.value)
             };
             let reference = match arg("reference", 0) {
-                Some(r) => actor(r)?,
+                Some(r) => actor(r),
                 None => {
                     return Err(ctx.files.err(
                         K::Condition,
@@ -322,51 +306,5 @@ fn measured(
             Ok(by(who, c))
         }
         _ => Err(unsupported(ctx, measure)),
-    }
-}
-
-/// A condition on the state of the phase `act` (a storyboard Act), reported `delay` s later.
-pub(crate) fn act_state(
-    act: &str,
-    state: StoryboardElementState,
-    delay: f64,
-    pos: scenario::SourcePos,
-) -> Condition {
-    Condition {
-        name: format!("{act}:{}", state.as_str()),
-        condition_edge: ConditionEdge::None,
-        delay,
-        kind: ConditionKind::ByValue(ByValueCondition::StoryboardElementState {
-            storyboard_element_type: StoryboardElementType::Act,
-            storyboard_element_ref: act.to_string(),
-            state,
-        }),
-        pos,
-    }
-}
-
-/// `every(…)` counted from the start of the run: SimulationTimeEvery at the planner's step.
-pub(crate) fn every_from_start(every: Every, step: f64, pos: scenario::SourcePos) -> Condition {
-    Condition {
-        name: format!("every {} offset {}", every.period, every.offset),
-        condition_edge: ConditionEdge::None,
-        delay: 0.0,
-        kind: ConditionKind::ByValue(ByValueCondition::SimulationTimeEvery {
-            period: every.period,
-            offset: every.offset,
-            step,
-        }),
-        pos,
-    }
-}
-
-/// `SimulationTime rule t`.
-pub(crate) fn sim_time(t: f64, rule: Rule, pos: scenario::SourcePos) -> Condition {
-    Condition {
-        name: format!("time {} {t}", rule.as_str()),
-        condition_edge: ConditionEdge::None,
-        delay: 0.0,
-        kind: ConditionKind::ByValue(ByValueCondition::SimulationTime { value: t, rule }),
-        pos,
     }
 }

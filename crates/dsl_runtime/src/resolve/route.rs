@@ -20,15 +20,12 @@
 //! Everything else (paths, crossings, points, list elements of the map, other map methods) is
 //! an error naming the argument.
 
-use std::collections::HashMap;
-
-use dsl::semantics::hir::{Expr, ExprKind, Span};
+use dsl::semantics::hir::{Expr, ExprKind};
 use dsl::Value;
 
-use crate::error::{Error, ErrorKind as K};
-use crate::modifier::{At, Mod, ModKind};
-use crate::road::PlanRoad;
-use crate::value::{bind, Ctx};
+use super::eval::{bind, Eval as Ctx};
+use super::value::{arg, Args};
+use crate::error::{Error, ErrorKind as K, Site};
 
 /// What an `along(…)` route is.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,7 +58,7 @@ pub(crate) struct Along {
     /// Distance before the route's end the movement stays within (m).
     pub end_offset: f64,
     /// The application.
-    pub span: Span,
+    pub site: Site,
 }
 
 /// Route types bound to the whole plan road.
@@ -75,17 +72,22 @@ const WHOLE_ROAD: [&str; 5] = [
 /// Route types bound to one lane.
 const ONE_LANE: [&str; 2] = ["lane", "compound_lane"];
 
-/// Reads the route and offsets of an `along(…)` modifier.
-pub(crate) fn read(ctx: &Ctx<'_>, m: &Mod<'_>) -> Result<Along, Error> {
+/// Reads the route and offsets of an `along(…)` modifier (its evaluated arguments `args`, the
+/// route expression and where the application is written).
+pub(crate) fn read(
+    ctx: &Ctx<'_>,
+    args: &Args,
+    route: Option<&Expr>,
+    site: &Site,
+) -> Result<Along, Error> {
     let offset = |name: &str| -> Result<f64, Error> {
-        match m.arg(name) {
+        match arg(args, name) {
             None => Ok(0.0),
             Some(e) => {
-                let x = ctx.number(e)?;
+                let x = e.number()?;
                 if x < 0.0 {
-                    return Err(ctx.files.err(
+                    return Err(e.site.err(
                         K::Value,
-                        e.span,
                         format!("expected a {name} of 0 m or more, found {x} m"),
                     ));
                 }
@@ -95,21 +97,16 @@ pub(crate) fn read(ctx: &Ctx<'_>, m: &Mod<'_>) -> Result<Along, Error> {
     };
     let start_offset = offset("start_offset")?;
     let end_offset = offset("end_offset")?;
-    let Some(e) = m.arg("route") else {
-        return Err(ctx.files.err(
-            K::Modifier,
-            m.app.span,
-            "expected a route in along(…), found none",
-        ));
+    let Some(e) = route else {
+        return Err(site.err(K::Modifier, "expected a route in along(…), found none"));
     };
     let route = route_of(ctx, e)?;
     if let Route::Free { field, .. } = &route {
         for (name, x) in [("start_offset", start_offset), ("end_offset", end_offset)] {
             if x != 0.0 {
-                let span = m.arg(name).map_or(m.app.span, |a| a.span);
-                return Err(ctx.files.err(
+                let at = arg(args, name).map_or(site, |a| &a.site);
+                return Err(at.err(
                     K::Unsatisfiable,
-                    span,
                     format!("expected no {name} on `{field}`, a route the runtime chooses (its ends are where the actors drive), found {x} m; name the route with map.create_odr_point(road_id, lane_id, s, t) to drive from a given place"),
                 ));
             }
@@ -119,7 +116,7 @@ pub(crate) fn read(ctx: &Ctx<'_>, m: &Mod<'_>) -> Result<Along, Error> {
         route,
         start_offset,
         end_offset,
-        span: m.app.span,
+        site: site.clone(),
     })
 }
 
@@ -255,185 +252,4 @@ fn string(ctx: &Ctx<'_>, e: &Expr) -> Result<String, Error> {
     Err(ctx
         .files
         .err(K::Value, e.span, "expected a string, found another value"))
-}
-
-/// How far an actor may be outside a route's interval (m): the position tolerance of the plan.
-const ROUTE_TOLERANCE: f64 = crate::plan::POSITION_TOLERANCE;
-
-/// Where one actor is during a phase, as the plan knows it.
-pub(crate) struct OnRoute<'f> {
-    /// The actor.
-    pub actor: &'f str,
-    /// The phase's start (s), when the plan knows it.
-    pub t0: Option<f64>,
-    /// The phase's end (s), when the plan knows it.
-    pub te: Option<f64>,
-    /// Its lane at a time.
-    pub lane: &'f dyn Fn(f64) -> i32,
-    /// Its s on the plan road at a time.
-    pub s: &'f dyn Fn(f64) -> f64,
-}
-
-/// Checks that an actor follows `along` in its phase (`at`: when the modifier holds), with
-/// the invocation's other modifiers `mods`. `shared` records, per free one-lane route, the
-/// lane and the first actor found along it.
-pub(crate) fn check(
-    ctx: &Ctx<'_>,
-    road: &PlanRoad<'_>,
-    along: &Along,
-    at: At,
-    mods: &[Mod<'_>],
-    on: &OnRoute<'_>,
-    shared: &mut HashMap<String, (i32, String)>,
-) -> Result<(), Error> {
-    let actor = on.actor;
-    let one_lane = match &along.route {
-        Route::Free { one_lane, .. } => *one_lane,
-        Route::Lane { .. } => true,
-    };
-    let describe = match &along.route {
-        Route::Free { field, .. } => format!("route `{field}`"),
-        Route::Lane { road, lane, s } => {
-            format!("the route along lane {lane} of road {road} from s = {s} m")
-        }
-    };
-    if one_lane && at == At::All {
-        if let Some(c) = mods
-            .iter()
-            .find(|m| m.kind == ModKind::ChangeLane || (m.kind == ModKind::Lane && m.at == At::End))
-        {
-            return Err(ctx.files.err(
-                K::Unsatisfiable,
-                c.app.span,
-                format!(
-                    "expected no lane change along {describe} (one lane, along(…) at {}), found `{}(…)`",
-                    ctx.files.at(along.span),
-                    c.app.name.text
-                ),
-            ));
-        }
-    }
-    let (lo, hi) = match &along.route {
-        Route::Free { .. } => (0.0, road.length()),
-        Route::Lane { s, .. } => (s + along.start_offset, road.length() - along.end_offset),
-    };
-    let mut moments = Vec::new();
-    if at != At::End {
-        match (on.t0, &along.route) {
-            (Some(t), _) => moments.push(("start", t)),
-            (None, Route::Lane { .. }) => {
-                return Err(ctx.files.err(
-                    K::Unsatisfiable,
-                    along.span,
-                    "expected a phase start the plan knows for along(…) on a named route, found one after a run-time condition",
-                ))
-            }
-            (None, Route::Free { .. }) => {}
-        }
-        if let Route::Free {
-            field,
-            one_lane: true,
-        } = &along.route
-        {
-            // After a run-time start: the lane the actor was last planned in.
-            let lane = (on.lane)(on.t0.unwrap_or(f64::MAX));
-            match shared.get(field) {
-                Some((l, first)) if *l != lane => {
-                    return Err(ctx.files.err(
-                        K::Unsatisfiable,
-                        along.span,
-                        format!("expected `{actor}` in the lane of {describe} (lane {l}, where `{first}` drives along it), found lane {lane}"),
-                    ))
-                }
-                Some(_) => {}
-                None => {
-                    shared.insert(field.clone(), (lane, actor.to_string()));
-                }
-            }
-        }
-    }
-    if at != At::Start {
-        match on.te {
-            Some(t) => moments.push(("end", t)),
-            None if along.end_offset > 0.0 => {
-                return Err(ctx.files.err(
-                    K::Unsatisfiable,
-                    along.span,
-                    "expected a phase end the plan knows for along(…, end_offset: …), found none (give the phase a duration)",
-                ))
-            }
-            None => {}
-        }
-    }
-    for (when, t) in moments {
-        if let Route::Lane { lane, .. } = &along.route {
-            let l = (on.lane)(t);
-            if l != *lane {
-                return Err(ctx.files.err(
-                    K::Unsatisfiable,
-                    along.span,
-                    format!("expected `{actor}` on {describe} at the phase {when}, found it in lane {l}"),
-                ));
-            }
-        }
-        let s = (on.s)(t);
-        if s < lo - ROUTE_TOLERANCE || s > hi + ROUTE_TOLERANCE {
-            return Err(ctx.files.err(
-                K::Unsatisfiable,
-                along.span,
-                format!("expected `{actor}` on {describe} between s = {lo:.2} m and {hi:.2} m at the phase {when}, found it at s = {s:.2} m"),
-            ));
-        }
-    }
-    Ok(())
-}
-
-/// Checks that a named route lies on the plan's road, in one of its driving lanes in +s.
-pub(crate) fn on_plan_road(ctx: &Ctx<'_>, road: &PlanRoad<'_>, along: &Along) -> Result<(), Error> {
-    let Route::Lane { road: id, lane, s } = &along.route else {
-        return Ok(());
-    };
-    if id != road.id() {
-        return Err(ctx.files.err(
-            K::Road,
-            along.span,
-            format!("expected every named route on road {} (the one road the plan drives on), found road {id}", road.id()),
-        ));
-    }
-    if !(0.0..=road.length()).contains(s) {
-        return Err(ctx.files.err(
-            K::Road,
-            along.span,
-            format!(
-                "expected the route's start on road {id} (0 m to {:.1} m), found s = {s} m",
-                road.length()
-            ),
-        ));
-    }
-    if !road.driving_lanes(*s).contains(lane) {
-        return Err(ctx.files.err(
-            K::Road,
-            along.span,
-            format!("expected a driving lane of road {id} in the direction of its reference line (right-hand traffic: lanes {:?}) at s = {s} m, found lane {lane}", road.driving_lanes(*s)),
-        ));
-    }
-    Ok(())
-}
-
-/// The road the named routes of `leaves` (their `along(…)` modifiers) are on: the first one,
-/// where the others must be too (checked by [`on_plan_road`]).
-pub(crate) fn named_road(
-    ctx: &Ctx<'_>,
-    apps: &[&dsl::semantics::hir::ModifierApp],
-) -> Result<Option<(String, Span)>, Error> {
-    for app in apps {
-        if app.name.text != "along" {
-            continue;
-        }
-        let m = crate::modifier::read(ctx, app)?;
-        if let Route::Lane { road, .. } = read(ctx, &m)?.route {
-            return Ok(Some((road, app.span)));
-        }
-    }
-    Ok(None)
 }

@@ -19,10 +19,11 @@
 
 use std::collections::HashMap;
 
-use crate::error::{Error, ErrorKind as K};
-use crate::modifier::{At, Mod, ModKind};
+use super::lateral;
+use super::types::MAX_SPEED;
+use crate::error::{Error, ErrorKind as K, Site};
+use crate::resolve::{Arg, At, ModKind, Modifier, Val};
 use crate::road::PlanRoad;
-use crate::value::{Ctx, Val};
 
 /// Bumper-to-bumper gap between members of a group (m).
 pub(crate) const GROUP_GAP: f64 = 10.0;
@@ -32,11 +33,11 @@ pub(crate) const FLOAT_REAR: f64 = 10.0;
 pub(crate) const DEFAULT_SPEED: f64 = 50.0 / 3.6;
 
 /// One actor to place: its placing modifiers, and for a group member its group's place.
-pub(crate) struct ToPlace<'m, 'p> {
+pub(crate) struct ToPlace<'m> {
     /// Entity name.
     pub name: String,
     /// The modifiers of its first phase that hold at the start.
-    pub mods: Vec<&'m Mod<'p>>,
+    pub mods: Vec<&'m Modifier>,
     /// For a group member: the previous member (None for the first one).
     pub member_after: Option<Option<String>>,
     /// For a member after the first of a common-route group over several lanes: the
@@ -49,7 +50,7 @@ pub(crate) struct ToPlace<'m, 'p> {
     /// Width of its bounding box (m), for `lateral(…)`.
     pub width: f64,
     /// Its first phase (for errors when no modifier places it).
-    pub span: dsl::semantics::hir::Span,
+    pub site: Site,
     /// Lane and s of the start of a named route it follows in its first phase (`along`):
     /// where it starts when no `lane`/`position` places it.
     pub route: Option<(i32, f64)>,
@@ -69,7 +70,7 @@ pub(crate) struct Start {
 }
 
 /// The modifier of `kind` of `p`'s first phase that holds at the start.
-fn find<'m, 'p>(p: &ToPlace<'m, 'p>, kind: ModKind) -> Option<&'m Mod<'p>> {
+fn find<'m>(p: &ToPlace<'m>, kind: ModKind) -> Option<&'m Modifier> {
     p.mods
         .iter()
         .find(|m| m.kind == kind && m.at != At::End)
@@ -78,21 +79,19 @@ fn find<'m, 'p>(p: &ToPlace<'m, 'p>, kind: ModKind) -> Option<&'m Mod<'p>> {
 
 /// Places every actor of `all`.
 pub(crate) fn place(
-    ctx: &Ctx<'_>,
     road: &PlanRoad<'_>,
-    all: &[ToPlace<'_, '_>],
+    all: &[ToPlace<'_>],
     entity: &dyn Fn(&str) -> Option<String>,
 ) -> Result<HashMap<String, Start>, Error> {
     let mut lane: HashMap<String, i32> = HashMap::new();
     let mut s: HashMap<String, (f64, bool)> = HashMap::new();
     let mut v: HashMap<String, f64> = HashMap::new();
-    let reference = |m: &Mod<'_>, names: &[&str]| -> Result<Option<(String, String)>, Error> {
+    let reference = |m: &Modifier, names: &[&str]| -> Result<Option<(String, String)>, Error> {
         for n in names {
             if let Some(e) = m.arg(n) {
-                let ent = ctx.path_of(e).and_then(|p| entity(&p)).ok_or_else(|| {
-                    ctx.files.err(
+                let ent = e.path.as_deref().and_then(entity).ok_or_else(|| {
+                    e.site.err(
                         K::UnknownActor,
-                        e.span,
                         format!("expected a vehicle for `{n}:`, found another value"),
                     )
                 })?;
@@ -101,7 +100,7 @@ pub(crate) fn place(
         }
         Ok(None)
     };
-    let number = |m: &Mod<'_>, n: &str| m.arg(n).map(|e| ctx.number(e)).transpose();
+    let number = |m: &Modifier, n: &str| m.arg(n).map(Arg::number).transpose();
     for _round in 0..=all.len() {
         let mut progress = false;
         for p in all {
@@ -141,7 +140,7 @@ pub(crate) fn place(
                         None => Some(road.numbered(1, false, at_s)),
                         Some(m) => {
                             let n = number(m, "lane")?.map_or(1, |x| x.round() as i64);
-                            let from_left = matches!(m.arg("from").map(|e| ctx.eval(e)).transpose()?, Some(Val::Enum(f)) if f == "left");
+                            let from_left = matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
                             match reference(m, &["same_as", "side_of", "left_of", "right_of"])? {
                             None => Some(road.numbered(n, from_left, at_s)),
                             Some((how, x)) => lane.get(&x).map(|lx| match how.as_str() {
@@ -149,7 +148,7 @@ pub(crate) fn place(
                                 "left_of" => road.beside(*lx, true, n, at_s),
                                 "right_of" => road.beside(*lx, false, n, at_s),
                                 _ => {
-                                    let left = !matches!(m.arg("side").map(|e| ctx.eval(e)).transpose(), Ok(Some(Val::Enum(sd))) if sd == "right");
+                                    let left = !matches!(m.arg("side").map(Arg::eval).transpose(), Ok(Some(Val::Enum(sd))) if sd == "right");
                                     road.beside(*lx, left, n, at_s)
                                 }
                             }),
@@ -159,10 +158,9 @@ pub(crate) fn place(
                 };
                 if let Some(l) = value {
                     let Some(l) = l else {
-                        let span = find(p, ModKind::Lane).map_or(p.span, |m| m.app.span);
-                        return Err(ctx.files.err(
+                        let site = find(p, ModKind::Lane).map_or(&p.site, |m| &m.site);
+                        return Err(site.err(
                             K::Unsatisfiable,
-                            span,
                             format!(
                                 "expected a driving lane for `{}` on road {}, found none there",
                                 p.name,
@@ -186,9 +184,8 @@ pub(crate) fn place(
                             (Some(d), _, _) => Some(d),
                             (None, Some(t), Some((_, x))) => v.get(x).map(|vx| t * vx),
                             _ => {
-                                return Err(ctx.files.err(
+                                return Err(m.site.err(
                                     K::Unsatisfiable,
-                                    m.app.span,
                                     "expected a distance (or a time and a reference) in position(…), found neither",
                                 ))
                             }
@@ -264,31 +261,27 @@ pub(crate) fn place(
         let (Some(l), Some((sv, fl)), Some(vv)) =
             (lane.get(&p.name), s.get(&p.name), v.get(&p.name))
         else {
-            let span = p.mods.first().map_or(p.span, |m| m.app.span);
-            return Err(ctx.files.err(
+            let site = p.mods.first().map_or(&p.site, |m| &m.site);
+            return Err(site.err(
                 K::Unsatisfiable,
-                span,
                 format!("expected a placement of `{}` that does not depend on itself, found a cycle of references", p.name),
             ));
         };
-        if !(0.0..=crate::actors::MAX_SPEED).contains(vv) {
-            let span = find(p, ModKind::Speed).map_or(p.span, |m| m.app.span);
-            return Err(ctx.files.err(
+        if !(0.0..=MAX_SPEED).contains(vv) {
+            let site = find(p, ModKind::Speed).map_or(&p.site, |m| &m.site);
+            return Err(site.err(
                 K::Unsatisfiable,
-                span,
                 format!(
                     "expected a start speed of `{}` within 0 to {} m/s, found {vv:.2} m/s",
-                    p.name,
-                    crate::actors::MAX_SPEED
+                    p.name, MAX_SPEED
                 ),
             ));
         }
         let sv = if *fl { sv + shift } else { *sv };
         if sv - p.rear < 0.0 || sv + p.front > road.length() {
-            let span = p.mods.first().map_or(p.span, |m| m.app.span);
-            return Err(ctx.files.err(
+            let site = p.mods.first().map_or(&p.site, |m| &m.site);
+            return Err(site.err(
                 K::Road,
-                span,
                 format!(
                     "expected `{}` on road {} (0 m to {:.1} m), found it placed at s = {sv:.2} m",
                     p.name,
@@ -299,8 +292,8 @@ pub(crate) fn place(
         }
         let offset = match find(p, ModKind::Lateral) {
             // Beside another actor: placed below, once that one is.
-            Some(m) if crate::lateral::reference(ctx, m)?.is_some() => 0.0,
-            Some(m) => crate::lateral::lane_offset(ctx, m, road.lane_width(*l, sv), p.width)?,
+            Some(m) if lateral::reference(m)?.is_some() => 0.0,
+            Some(m) => lateral::lane_offset(m, road.lane_width(*l, sv), p.width)?,
             None => 0.0,
         };
         out.insert(
@@ -313,7 +306,7 @@ pub(crate) fn place(
             },
         );
     }
-    beside_others(ctx, road, all, entity, &mut out)?;
+    beside_others(road, all, entity, &mut out)?;
     Ok(out)
 }
 
@@ -321,20 +314,18 @@ pub(crate) fn place(
 /// one is placed: the offset in its lane, or, without a lane of its own, the lane that holds
 /// the asked t (see the `lateral` module).
 fn beside_others(
-    ctx: &Ctx<'_>,
     road: &PlanRoad<'_>,
-    all: &[ToPlace<'_, '_>],
+    all: &[ToPlace<'_>],
     entity: &dyn Fn(&str) -> Option<String>,
     out: &mut HashMap<String, Start>,
 ) -> Result<(), Error> {
     let mut pending = Vec::new();
     for p in all {
         if let Some(m) = find(p, ModKind::Lateral) {
-            if let Some((e, sigma)) = crate::lateral::reference(ctx, m)? {
-                let x = ctx.path_of(e).and_then(|p| entity(&p)).ok_or_else(|| {
-                    ctx.files.err(
+            if let Some((e, sigma)) = lateral::reference(m)? {
+                let x = e.path.as_deref().and_then(entity).ok_or_else(|| {
+                    e.site.err(
                         K::UnknownActor,
-                        e.span,
                         "expected a vehicle of the scenario beside which to place, found another value",
                     )
                 })?;
@@ -351,8 +342,8 @@ fn beside_others(
                         .iter()
                         .any(|k| {
                             m.arg(k)
-                                .and_then(|e| ctx.path_of(e))
-                                .and_then(|p| entity(&p))
+                                .and_then(|e| e.path.as_deref())
+                                .and_then(entity)
                                 .is_some_and(|x| x == name)
                         })
             })
@@ -375,7 +366,7 @@ fn beside_others(
                 continue;
             };
             let t_x = road.lane_center(sx.lane, sx.s) + sx.offset;
-            let t_a = crate::lateral::beside(ctx, m, *sigma, (t_x, q.width), p.width)?;
+            let t_a = lateral::beside(m, *sigma, (t_x, q.width), p.width)?;
             let st = out[&p.name];
             let own_lane = p.mods.iter().any(|m| m.kind == ModKind::Lane)
                 || p.across.is_some()
@@ -385,16 +376,14 @@ fn beside_others(
                 st.lane
             } else {
                 let l = road.lane_holding(st.s, t_a).ok_or_else(|| {
-                    ctx.files.err(
+                    m.site.err(
                         K::Unsatisfiable,
-                        m.app.span,
                         format!("expected a driving lane at t = {t_a:.2} m (where lateral(…) puts `{}`), found none", p.name),
                     )
                 })?;
                 if l != st.lane && refers(&p.name) {
-                    return Err(ctx.files.err(
+                    return Err(m.site.err(
                         K::Unsatisfiable,
-                        m.app.span,
                         format!("expected a lane(…) of `{}` beside this lateral(…): another actor's lane refers to it, and its lane follows from the lateral position only after that one is placed", p.name),
                     ));
                 }
@@ -403,9 +392,8 @@ fn beside_others(
             let offset = t_a - road.lane_center(lane, st.s);
             let w = road.lane_width(lane, st.s);
             if offset.abs() > w / 2.0 + 1e-9 {
-                return Err(ctx.files.err(
+                return Err(m.site.err(
                     K::Unsatisfiable,
-                    m.app.span,
                     format!("expected `{}`'s reference point in its lane {lane} ({w:.2} m wide), found lateral(…) puts it {offset:.2} m from the lane's centre", p.name),
                 ));
             }
@@ -421,9 +409,8 @@ fn beside_others(
         .iter()
         .find(|(p, ..)| !done.contains(&p.name.as_str()))
     {
-        return Err(ctx.files.err(
+        return Err(m.site.err(
             K::Unsatisfiable,
-            m.app.span,
             format!("expected a lateral placement of `{}` that does not depend on itself, found a cycle of references", p.name),
         ));
     }

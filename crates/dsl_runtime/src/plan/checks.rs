@@ -1,0 +1,155 @@
+//! Modifiers that constrain the motion without adding to it, checked against the plan (ASAM
+//! OpenSCENARIO DSL 2.1 §8.9 `keep_lane`, `keep_speed`, `keep_position`, `physical_movement`,
+//! `yaw`, `orientation`).
+
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{At, ModKind, Modifier, Val};
+
+/// Checks `keep_lane()`, `keep_speed()` and `physical_movement(must_be_physical)` against the
+/// other modifiers of their invocation: a lane change beside `keep_lane`, a speed change beside
+/// `keep_speed`, or a step of speed (`speed(v)` in a later phase, `step`: the speeds before and
+/// after) beside either `keep_speed` or `must_be_physical` is an error at that modifier.
+pub(crate) fn check_keeps(
+    mods: &[Modifier],
+    step: Option<(&Modifier, f64, f64)>,
+) -> Result<(), Error> {
+    let step = step.filter(|(_, v0, v1)| (v1 - v0).abs() > 1e-9);
+    for k in mods {
+        match k.kind {
+            ModKind::KeepLane => {
+                if let Some(c) = mods.iter().find(|m| {
+                    m.kind == ModKind::ChangeLane || (m.kind == ModKind::Lane && m.at == At::End)
+                }) {
+                    return Err(c.site.err(
+                        K::Unsatisfiable,
+                        format!(
+                            "expected no lane change beside keep_lane() at {}, found `{}(…)`",
+                            k.site.at(),
+                            c.name
+                        ),
+                    ));
+                }
+            }
+            ModKind::KeepPosition => {
+                let moves = |m: &&Modifier| match m.kind {
+                    ModKind::ChangeSpeed
+                    | ModKind::Acceleration
+                    | ModKind::Distance
+                    | ModKind::ChangeLane => true,
+                    ModKind::Lane | ModKind::Position | ModKind::Lateral => m.at == At::End,
+                    // speed(0) (or 0 at the end) agrees; anything else moves.
+                    ModKind::Speed => !matches!(
+                        (m.arg("speed").map(|e| e.number()), m.arg("faster_than").or(m.arg("slower_than")).or(m.arg("same_as"))),
+                        (Some(Ok(v)), None) if v == 0.0
+                    ),
+                    _ => false,
+                };
+                if let Some(c) = mods.iter().find(moves) {
+                    return Err(c.site.err(
+                        K::Unsatisfiable,
+                        format!(
+                            "expected no movement beside keep_position() at {}, found `{}(…)`",
+                            k.site.at(),
+                            c.name
+                        ),
+                    ));
+                }
+            }
+            ModKind::KeepSpeed => {
+                if let Some(c) = mods.iter().find(|m| {
+                    matches!(m.kind, ModKind::ChangeSpeed | ModKind::Acceleration)
+                        || (matches!(m.kind, ModKind::Speed | ModKind::Position) && m.at == At::End)
+                }) {
+                    return Err(c.site.err(
+                        K::Unsatisfiable,
+                        format!(
+                            "expected no speed change beside keep_speed() at {}, found `{}(…)`",
+                            k.site.at(),
+                            c.name
+                        ),
+                    ));
+                }
+                if let Some((c, v0, v1)) = step {
+                    return Err(c.site.err(
+                        K::Unsatisfiable,
+                        format!("expected the speed kept beside keep_speed() at {}, found a step from {v0:.2} m/s to {v1:.2} m/s", k.site.at()),
+                    ));
+                }
+            }
+            ModKind::PhysicalMovement => {
+                let must = matches!(k.arg("option").map(|e| e.eval()).transpose()?, Some(Val::Enum(o)) if o == "must_be_physical");
+                if let (true, Some((c, v0, v1))) = (must, step) {
+                    return Err(c.site.err(
+                        K::Unsatisfiable,
+                        format!("expected a physical movement (physical_movement(must_be_physical) at {}), found a step of speed from {v0:.2} m/s to {v1:.2} m/s at the phase start; use change_speed(…) or speed(…, at: end)", k.site.at()),
+                    ));
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Checks `yaw(…)` and `orientation(…)` (§8.9 yaw, orientation) against the plan's motion: the
+/// engine's vehicles drive along their lane's centre line (or at a constant offset from it), so
+/// their yaw, pitch and roll relative to the road are 0 except while they change lane or lane
+/// offset, and 0 again when such a change ends (the sinusoidal shape ends with no lateral
+/// speed). A zero angle relative to the road (the default measure) therefore holds at the
+/// start and end of every phase, and throughout one without a lane change or a
+/// `lateral(…, at: end)`; anything else is an error: a non-zero angle, an angle relative to
+/// another object, to north, or absolute, which the planner does not steer.
+pub(crate) fn check_orientation(mods: &[Modifier]) -> Result<(), Error> {
+    /// Angles within this of 0 are 0 (rad): a thousandth of a degree.
+    const ZERO: f64 = 1e-3 * std::f64::consts::PI / 180.0;
+    for m in mods.iter().filter(|m| m.kind == ModKind::Orientation) {
+        let name = m.name.as_str();
+        if let Some(e) = m.arg("relative_to") {
+            return Err(e.site.err(
+                K::Unsupported,
+                format!("expected {name}(…) relative to the road, found relative_to: (orientations relative to another object are not planned yet)"),
+            ));
+        }
+        let measure = if name == "yaw" {
+            "measure_by"
+        } else {
+            "measured_by"
+        };
+        if let Some(e) = m.arg(measure) {
+            if !matches!(e.eval()?, Val::Enum(v) if v == "relative_to_road") {
+                return Err(e.site.err(
+                    K::Unsupported,
+                    format!("expected {measure}: relative_to_road, found another measure (absolute and north-relative orientations are not planned yet)"),
+                ));
+            }
+        }
+        let angles: &[&str] = if name == "yaw" {
+            &["angle"]
+        } else {
+            &["yaw", "pitch", "roll"]
+        };
+        for a in angles {
+            if let Some(e) = m.arg(a) {
+                let x = e.number()?;
+                if x.abs() > ZERO {
+                    return Err(e.site.err(
+                        K::Unsatisfiable,
+                        format!("expected {a} 0 relative to the road (the engine's vehicles drive along their lane), found {x:.4} rad"),
+                    ));
+                }
+            }
+        }
+        if m.at == At::All {
+            if let Some(c) = mods.iter().find(|q| {
+                q.kind == ModKind::ChangeLane
+                    || (matches!(q.kind, ModKind::Lane | ModKind::Lateral) && q.at == At::End)
+            }) {
+                return Err(c.site.err(
+                    K::Unsatisfiable,
+                    format!("expected no lateral movement while {name}(…) at {} holds throughout the phase (the actor turns while it moves sideways), found `{}(…)`", m.site.at(), c.name),
+                ));
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,153 @@
+//! The planner's working state: the entities registered so far with their planned tracks, the
+//! phases planned, and what the scenario's events and routes are; the other `plan` modules add
+//! methods that plan phases, invocations and conditions on it.
+
+use std::cell::RefCell;
+use std::collections::{BTreeMap, HashMap, HashSet};
+
+use scenario::{ConditionGroup, StoryboardElementState, Trigger};
+
+use super::types::{Entity, PhasePlan, Settings, When};
+use crate::error::{Error, ErrorKind as K, Site};
+use crate::resolve::{Along, At, Cond, Draws, Object, Phase};
+use crate::road::PlanRoad;
+use crate::track::Track;
+use crate::trigger::act_state;
+
+/// An event condition the planner translates where the event is used: the condition (or why
+/// it cannot be run), where it is written, and whether it is an `on` handler's (whose event
+/// context is the run).
+pub(crate) type EventUse<'a> = (&'a Result<Cond, Error>, &'a Site, bool);
+
+pub(crate) struct Planner<'a> {
+    pub road: PlanRoad<'a>,
+    pub settings: Settings,
+    /// What each actor path of the tree is.
+    pub objects: &'a BTreeMap<String, Option<Object>>,
+    pub entities: Vec<Entity>,
+    pub index: HashMap<String, usize>,
+    pub groups: HashMap<String, Vec<String>>,
+    /// The groups whose formation spreads over the lanes (common route, not single-lane).
+    pub across: HashSet<String>,
+    pub first_leaf: HashMap<String, String>,
+    pub phases: Vec<PhasePlan>,
+    /// The speed each actor's last planned speed change ends at (known also when the times
+    /// are not).
+    pub last_v: HashMap<String, f64>,
+    /// Event name → the paths of the phases that emit it.
+    pub emits: HashMap<String, Vec<(String, Site)>>,
+    /// Event name → the conditions that make it occur: its declared one (`event e is c`) and
+    /// those of the `on c: emit e` handlers.
+    pub events: HashMap<String, Vec<EventUse<'a>>>,
+    /// Leaf path → its `along(…)` routes, with when each holds.
+    pub alongs: HashMap<String, Vec<(At, Along)>>,
+    /// Free one-lane route → its lane and the first actor along it.
+    pub route_lanes: HashMap<String, (i32, String)>,
+    /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
+    /// the modifier), checked once every phase is planned.
+    pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,
+    /// The side drawn for each `change_lane(…)` without one (by the modifier's span).
+    pub sides: RefCell<HashMap<String, bool>>,
+    /// The run's draws after the resolver's.
+    pub draws: RefCell<Draws>,
+}
+
+/// The error of a phase that nothing ends.
+pub(crate) fn no_end(p: &Phase) -> Error {
+    p.site.err(
+        K::NoEnd,
+        format!(
+            "expected a way for phase `{}` to end (a duration, an until, or a member that ends), found none; give it one or bound the run with --duration",
+            p.path
+        ),
+    )
+}
+
+impl Planner<'_> {
+    /// Registers the vehicle(s) `path` names (written at `site`); returns the entity names.
+    pub(crate) fn register(&mut self, path: &str, site: &Site) -> Result<Vec<String>, Error> {
+        let members = match self.objects.get(path).cloned().flatten() {
+            Some(Object::Vehicle(data)) => vec![(path.to_string(), data)],
+            Some(Object::Group(members, lanes)) => {
+                self.groups.insert(
+                    path.to_string(),
+                    members.iter().map(|(n, _)| n.clone()).collect(),
+                );
+                if lanes {
+                    self.across.insert(path.to_string());
+                }
+                members
+            }
+            Some(Object::RandomTraffic) => {
+                return Err(site.err(
+                    K::Unsupported,
+                    format!("expected a vehicle, or a vehicle group with a formation (single-lane or common-route), found `{path}`, a random_traffic_vehicle_group (random traffic is not planned)"),
+                ))
+            }
+            None => {
+                return Err(site.err(
+                    K::UnknownActor,
+                    format!("expected a vehicle or vehicle group of the scenario, found `{path}`"),
+                ))
+            }
+        };
+        let mut names = Vec::new();
+        for (n, data) in members {
+            if !self.index.contains_key(&n) {
+                self.index.insert(n.clone(), self.entities.len());
+                self.entities.push(Entity {
+                    name: n.clone(),
+                    data,
+                    track: Track::new(0.0, 0.0, -1),
+                });
+            }
+            names.push(n);
+        }
+        Ok(names)
+    }
+
+    pub(crate) fn track(&self, name: &str) -> &Track {
+        &self.entities[self.index[name]].track
+    }
+
+    /// s of `name` at time `t`: its track's distance along its lane's centre line from its
+    /// start, as s of the road (the engine moves vehicles along lane centres).
+    pub(crate) fn s_at(&self, name: &str, t: f64) -> f64 {
+        let tr = self.track(name);
+        let s0 = tr.at(0.0).0;
+        self.road.s_after(tr.lane(0.0), s0, tr.at(t).0 - s0)
+    }
+
+    /// The width of `name`'s bounding box (m).
+    pub(crate) fn width(&self, name: &str) -> f64 {
+        self.entities[self.index[name]].data.bounding_box.width
+    }
+
+    pub(crate) fn track_mut(&mut self, name: &str) -> &mut Track {
+        let i = self.index[name];
+        &mut self.entities[i].track
+    }
+
+    /// A draw among `n` choices.
+    pub(crate) fn choose(&self, n: usize) -> usize {
+        self.draws.borrow_mut().choose(n)
+    }
+
+    /// The moment `d` s after phase `path` (written at `site`) starts at `start`.
+    pub(crate) fn after(&self, path: &str, site: &Site, start: &When, d: f64) -> When {
+        match start {
+            When::At(t) => When::At(t + d),
+            _ => When::Dyn(Trigger {
+                condition_groups: vec![ConditionGroup {
+                    conditions: vec![act_state(
+                        path,
+                        StoryboardElementState::RunningState,
+                        // The Act's stop trigger is first sampled one step after it starts.
+                        (d - self.settings.dt).max(0.0),
+                        site.pos.clone(),
+                    )],
+                }],
+            }),
+        }
+    }
+}

@@ -1,0 +1,185 @@
+//! Routes of `along(…)` against the plan (ASAM OpenSCENARIO DSL 2.1 §8.9 movement modifiers,
+//! `along`; §8.12 road abstraction): the road the named routes are on, and each actor on its
+//! route at the phase start and end as the plan knows them (see `crate::resolve` for the forms
+//! a route takes).
+
+use std::collections::HashMap;
+
+use super::types::POSITION_TOLERANCE;
+use crate::error::{Error, ErrorKind as K, Site};
+use crate::resolve::{Along, At, Kind, ModKind, Modifier, Phase, Route};
+use crate::road::PlanRoad;
+
+/// How far an actor may be outside a route's interval (m): the position tolerance of the plan.
+const ROUTE_TOLERANCE: f64 = POSITION_TOLERANCE;
+
+/// Where one actor is during a phase, as the plan knows it.
+pub(crate) struct OnRoute<'f> {
+    /// The actor.
+    pub actor: &'f str,
+    /// The phase's start (s), when the plan knows it.
+    pub t0: Option<f64>,
+    /// The phase's end (s), when the plan knows it.
+    pub te: Option<f64>,
+    /// Its lane at a time.
+    pub lane: &'f dyn Fn(f64) -> i32,
+    /// Its s on the plan road at a time.
+    pub s: &'f dyn Fn(f64) -> f64,
+}
+
+/// Checks that an actor follows `along` in its phase (`at`: when the modifier holds), with
+/// the invocation's other modifiers `mods`. `shared` records, per free one-lane route, the
+/// lane and the first actor found along it.
+pub(crate) fn check(
+    road: &PlanRoad<'_>,
+    along: &Along,
+    at: At,
+    mods: &[Modifier],
+    on: &OnRoute<'_>,
+    shared: &mut HashMap<String, (i32, String)>,
+) -> Result<(), Error> {
+    let actor = on.actor;
+    let one_lane = match &along.route {
+        Route::Free { one_lane, .. } => *one_lane,
+        Route::Lane { .. } => true,
+    };
+    let describe = match &along.route {
+        Route::Free { field, .. } => format!("route `{field}`"),
+        Route::Lane { road, lane, s } => {
+            format!("the route along lane {lane} of road {road} from s = {s} m")
+        }
+    };
+    if one_lane && at == At::All {
+        if let Some(c) = mods
+            .iter()
+            .find(|m| m.kind == ModKind::ChangeLane || (m.kind == ModKind::Lane && m.at == At::End))
+        {
+            return Err(c.site.err(
+                K::Unsatisfiable,
+                format!(
+                    "expected no lane change along {describe} (one lane, along(…) at {}), found `{}(…)`",
+                    along.site.at(),
+                    c.name
+                ),
+            ));
+        }
+    }
+    let (lo, hi) = match &along.route {
+        Route::Free { .. } => (0.0, road.length()),
+        Route::Lane { s, .. } => (s + along.start_offset, road.length() - along.end_offset),
+    };
+    let mut moments = Vec::new();
+    if at != At::End {
+        match (on.t0, &along.route) {
+            (Some(t), _) => moments.push(("start", t)),
+            (None, Route::Lane { .. }) => {
+                return Err(along.site.err(
+                    K::Unsatisfiable,
+                    "expected a phase start the plan knows for along(…) on a named route, found one after a run-time condition",
+                ))
+            }
+            (None, Route::Free { .. }) => {}
+        }
+        if let Route::Free {
+            field,
+            one_lane: true,
+        } = &along.route
+        {
+            // After a run-time start: the lane the actor was last planned in.
+            let lane = (on.lane)(on.t0.unwrap_or(f64::MAX));
+            match shared.get(field) {
+                Some((l, first)) if *l != lane => {
+                    return Err(along.site.err(
+                        K::Unsatisfiable,
+                        format!("expected `{actor}` in the lane of {describe} (lane {l}, where `{first}` drives along it), found lane {lane}"),
+                    ))
+                }
+                Some(_) => {}
+                None => {
+                    shared.insert(field.clone(), (lane, actor.to_string()));
+                }
+            }
+        }
+    }
+    if at != At::Start {
+        match on.te {
+            Some(t) => moments.push(("end", t)),
+            None if along.end_offset > 0.0 => {
+                return Err(along.site.err(
+                    K::Unsatisfiable,
+                    "expected a phase end the plan knows for along(…, end_offset: …), found none (give the phase a duration)",
+                ))
+            }
+            None => {}
+        }
+    }
+    for (when, t) in moments {
+        if let Route::Lane { lane, .. } = &along.route {
+            let l = (on.lane)(t);
+            if l != *lane {
+                return Err(along.site.err(
+                    K::Unsatisfiable,
+                    format!("expected `{actor}` on {describe} at the phase {when}, found it in lane {l}"),
+                ));
+            }
+        }
+        let s = (on.s)(t);
+        if s < lo - ROUTE_TOLERANCE || s > hi + ROUTE_TOLERANCE {
+            return Err(along.site.err(
+                K::Unsatisfiable,
+                format!("expected `{actor}` on {describe} between s = {lo:.2} m and {hi:.2} m at the phase {when}, found it at s = {s:.2} m"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks that a named route lies on the plan's road, in one of its driving lanes in +s.
+pub(crate) fn on_plan_road(road: &PlanRoad<'_>, along: &Along) -> Result<(), Error> {
+    let Route::Lane { road: id, lane, s } = &along.route else {
+        return Ok(());
+    };
+    if id != road.id() {
+        return Err(along.site.err(
+            K::Road,
+            format!("expected every named route on road {} (the one road the plan drives on), found road {id}", road.id()),
+        ));
+    }
+    if !(0.0..=road.length()).contains(s) {
+        return Err(along.site.err(
+            K::Road,
+            format!(
+                "expected the route's start on road {id} (0 m to {:.1} m), found s = {s} m",
+                road.length()
+            ),
+        ));
+    }
+    if !road.driving_lanes(*s).contains(lane) {
+        return Err(along.site.err(
+            K::Road,
+            format!("expected a driving lane of road {id} in the direction of its reference line (right-hand traffic: lanes {:?}) at s = {s} m, found lane {lane}", road.driving_lanes(*s)),
+        ));
+    }
+    Ok(())
+}
+
+/// The road the named routes of the tree (its `along(…)` modifiers) are on: the first one,
+/// where the others must be too (checked by [`on_plan_road`]).
+pub(crate) fn named_road(root: &Phase) -> Option<(String, Site)> {
+    let mut found = None;
+    root.walk(&mut |p| {
+        if let (None, Kind::Invoke(inv)) = (&found, &p.kind) {
+            found = inv.modifiers.iter().find_map(|m| match (m.kind, &m.along) {
+                (
+                    ModKind::Along,
+                    Some(Along {
+                        route: Route::Lane { road, .. },
+                        ..
+                    }),
+                ) => Some((road.clone(), m.site.clone())),
+                _ => None,
+            });
+        }
+    });
+    found
+}

@@ -1,0 +1,158 @@
+//! The plan's data (ASAM OpenSCENARIO DSL 2.1 §7.3.9 phases, §8.9 movement modifiers): when
+//! each phase starts and ends, what the actors do in it, and the limits and tolerances the
+//! planner holds them to. The `lower` stage turns it into the 1.x model.
+
+use scenario::{ConditionGroup, PrivateAction, Trigger};
+
+use crate::error::Site;
+use crate::resolve::VehicleData;
+use crate::track::Track;
+use crate::trigger::sim_time;
+
+/// Maximum speed of a DSL vehicle (m/s): the DSL's vehicle has no performance fields, so every
+/// vehicle has those of the bundled catalogs' cars.
+pub(crate) const MAX_SPEED: f64 = 70.0;
+/// Maximum acceleration and deceleration of a DSL vehicle (m/s²).
+pub(crate) const MAX_ACCELERATION: f64 = 10.0;
+
+/// How far from a constraint's value the plan may end (m), for `position(…, at: end)` checked
+/// against a constant speed.
+pub const POSITION_TOLERANCE: f64 = 0.5;
+
+/// How far from a `lateral(…)` offset a later phase may start (m).
+pub(crate) const LATERAL_TOLERANCE: f64 = 0.01;
+
+/// A moment of the plan.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum When {
+    /// At this simulation time (s).
+    At(f64),
+    /// When this trigger fires.
+    Dyn(Trigger),
+    /// Never (the run's bound ends it).
+    Never,
+    /// With the enclosing parallel (filled in once it is known).
+    Pending,
+}
+
+impl When {
+    /// The earlier of two ends.
+    pub(crate) fn or(self, other: When) -> When {
+        match (self, other) {
+            (When::Pending, x) | (x, When::Pending) => x,
+            (When::Never, x) | (x, When::Never) => x,
+            (When::At(a), When::At(b)) => When::At(a.min(b)),
+            (a, b) => {
+                let mut groups = a.groups();
+                groups.extend(b.groups());
+                When::Dyn(Trigger {
+                    condition_groups: groups,
+                })
+            }
+        }
+    }
+
+    /// As OR-ed condition groups.
+    pub(crate) fn groups(&self) -> Vec<ConditionGroup> {
+        match self {
+            When::At(t) => vec![ConditionGroup {
+                conditions: vec![sim_time(
+                    *t,
+                    scenario::Rule::GreaterOrEqual,
+                    scenario::SourcePos::start_of(std::sync::Arc::from(std::path::Path::new(""))),
+                )],
+            }],
+            When::Dyn(t) => t.condition_groups.clone(),
+            When::Never | When::Pending => Vec::new(),
+        }
+    }
+
+    /// The time, when the plan knows it.
+    pub(crate) fn time(&self) -> Option<f64> {
+        match self {
+            When::At(t) => Some(*t),
+            _ => None,
+        }
+    }
+}
+
+/// One phase of the plan.
+#[derive(Debug, Clone)]
+pub(crate) struct PhasePlan {
+    /// Its path (the Act's name).
+    pub path: String,
+    /// Where it is written.
+    pub site: Site,
+    /// Start.
+    pub start: When,
+    /// End.
+    pub end: When,
+    /// What the actors do.
+    pub actions: Vec<Planned>,
+    /// The phase lasts until its end (all but `emit`, an instant).
+    pub hold: bool,
+    /// The event an `emit` phase emits.
+    pub emit: Option<String>,
+}
+
+/// An action of a phase.
+#[derive(Debug, Clone)]
+pub(crate) struct Planned {
+    /// The entity.
+    pub entity: String,
+    /// Absolute start time, when it does not start with the phase.
+    pub at: Option<f64>,
+    /// Its name.
+    pub name: String,
+    /// The action.
+    pub action: PrivateAction,
+    /// The modifier it comes from.
+    pub site: Site,
+}
+
+/// A vehicle of the plan.
+#[derive(Debug, Clone)]
+pub(crate) struct Entity {
+    /// Its name (the actor's path).
+    pub name: String,
+    /// Its fields (bounding box, category, axles).
+    pub data: VehicleData,
+    /// Planned motion.
+    pub track: Track,
+}
+
+/// The whole plan.
+#[derive(Debug, Clone)]
+pub(crate) struct Plan {
+    /// The road everything is placed on.
+    pub road: String,
+    /// The vehicles, in the order the `do` tree first names them.
+    pub entities: Vec<Entity>,
+    /// The phases, children before their composition.
+    pub phases: Vec<PhasePlan>,
+    /// The emissions of the scenario's `on` handlers.
+    pub handlers: Vec<HandlerPlan>,
+}
+
+/// One `emit e` of an `on` handler: a repeatable 1.x Event that starts at each occurrence of
+/// the handler's event, so that each emission is logged.
+#[derive(Debug, Clone)]
+pub(crate) struct HandlerPlan {
+    /// `on.0`: the handler's index among the scenario's `on` directives.
+    pub act: String,
+    /// The emitted event's name.
+    pub event: String,
+    /// When the handler's event occurs.
+    pub trigger: Trigger,
+    /// The `emit` directive.
+    pub site: Site,
+}
+
+/// Options of planning.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Settings {
+    /// The engine's step (s).
+    pub dt: f64,
+    /// A phase may have no end (the run is bounded from outside).
+    pub open_end: bool,
+}

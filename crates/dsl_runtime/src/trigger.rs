@@ -1,0 +1,60 @@
+//! The OpenSCENARIO 1.x conditions the pipeline builds its triggers from (OpenSCENARIO 1.3
+//! §7.5 conditions): a storyboard element's state, the simulation time, and oscsim's periodic
+//! SimulationTimeEvery.
+
+use scenario::{
+    ByValueCondition, Condition, ConditionEdge, ConditionKind, Rule, StoryboardElementState,
+    StoryboardElementType,
+};
+
+/// A condition on the state of the phase `act` (a storyboard Act), reported `delay` s later.
+pub(crate) fn act_state(
+    act: &str,
+    state: StoryboardElementState,
+    delay: f64,
+    pos: scenario::SourcePos,
+) -> Condition {
+    Condition {
+        name: format!("{act}:{}", state.as_str()),
+        condition_edge: ConditionEdge::None,
+        delay,
+        kind: ConditionKind::ByValue(ByValueCondition::StoryboardElementState {
+            storyboard_element_type: StoryboardElementType::Act,
+            storyboard_element_ref: act.to_string(),
+            state,
+        }),
+        pos,
+    }
+}
+
+/// `every(period, offset: offset)` counted from the start of the run: SimulationTimeEvery at
+/// the planner's step.
+pub(crate) fn every_from_start(
+    period: f64,
+    offset: f64,
+    step: f64,
+    pos: scenario::SourcePos,
+) -> Condition {
+    Condition {
+        name: format!("every {period} offset {offset}"),
+        condition_edge: ConditionEdge::None,
+        delay: 0.0,
+        kind: ConditionKind::ByValue(ByValueCondition::SimulationTimeEvery {
+            period,
+            offset,
+            step,
+        }),
+        pos,
+    }
+}
+
+/// `SimulationTime rule t`.
+pub(crate) fn sim_time(t: f64, rule: Rule, pos: scenario::SourcePos) -> Condition {
+    Condition {
+        name: format!("time {} {t}", rule.as_str()),
+        condition_edge: ConditionEdge::None,
+        delay: 0.0,
+        kind: ConditionKind::ByValue(ByValueCondition::SimulationTime { value: t, rule }),
+        pos,
+    }
+}
