@@ -77,6 +77,13 @@ cases! {
     units_mph, units_speed_times_time, units_sum_of_lengths, units_ton, units_user_type,
 }
 
+// Issue 30: what other implementations' files show (one block per class of the issue).
+cases! {
+    // Class 1: a file's own declarations win over the standard library's (§7.7.5.2).
+    library_own_declarations, library_own_declarations_imported, library_visible_without_import,
+    library_use_std, err_library_own_type_is_another, err_library_wrong_namespace,
+}
+
 cases! {
     err_action_of_other_actor, err_actor_modifier_wrong_actor, err_add_length_time,
     err_and_not_bool, err_namespace_ambiguous, err_or_unsat, err_namespace_not_exported, err_argument_twice, err_argument_type, err_compare_length_number,

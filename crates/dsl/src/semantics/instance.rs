@@ -178,6 +178,8 @@ impl Builder<'_> {
 fn is_reference(model: &Model, c: CompoundId) -> bool {
     model.ancestry(c).into_iter().any(|a| {
         let d = model.compound(a);
-        is_library(model, a) && matches!(d.name.as_str(), "route" | "junction" | "map")
+        // The library's name, whether or not a file's own `route` made it `std::route`.
+        let bare = d.name.strip_prefix("std::").unwrap_or(&d.name);
+        is_library(model, a) && matches!(bare, "route" | "junction" | "map")
     })
 }

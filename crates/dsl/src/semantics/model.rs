@@ -186,15 +186,18 @@ impl Model {
         })
     }
 
-    /// Modifiers called `name` (by short name).
+    /// Modifiers called `name` (by short name): the program's own first, then the standard
+    /// library's (a file's own `modifier speed` shadows the library's, §7.7.4.2).
     pub fn modifiers_named(&self, name: &str) -> Vec<CompoundId> {
-        (0..self.compounds.len() as u32)
+        let mut found: Vec<CompoundId> = (0..self.compounds.len() as u32)
             .map(CompoundId)
             .filter(|c| {
                 let d = self.compound(*c);
                 d.kind == CompoundKind::Modifier && d.short == name
             })
-            .collect()
+            .collect();
+        found.sort_by_key(|c| self.compound(*c).span.file.0 < self.library_files);
+        found
     }
 
     /// Enumerations that have a member `name`.

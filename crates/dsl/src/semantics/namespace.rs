@@ -17,9 +17,16 @@
 //!   name the namespace holds, wherever declared); an exported name is still the original.
 //!
 //! What oscsim decides where the standard leaves it to the implementation:
-//! - the standard library (§7.7.5.2) is reachable from every namespace unprefixed, behind the
-//!   active and used namespaces (an own `vehicle` shadows it), and as `std::name` or
-//!   `stdtypes::name`: oscsim provides it by built-in declarations, which the standard allows;
+//! - the standard library (§7.7.5.2) resides in `stdtypes` (the sub-module `types`: physical
+//!   types, units, basic structs) and `std` (the rest, §8.1.3). It is reachable from every
+//!   namespace unprefixed, behind the active and used namespaces, with or without an import,
+//!   and as `std::name` / `stdtypes::name`. A file's own declaration of a library name in the
+//!   global namespace is another identifier and shadows the library's (§7.7.4.2 rule 2): the
+//!   library's then takes the key `std::name` (or `stdtypes::name`) and the library's own
+//!   references go on naming it. Shadowing is per class of table (type, behavior, global,
+//!   unit): a file's `type speed` does not hide the library's modifier `speed`. oscsim
+//!   provides the library by built-in declarations, which the standard allows;
+//! - a file's own units are not namespaced (one program-wide table); they shadow the library's;
 //! - namespaces apply to the names of physical types, enums, structs, actors, actor-less
 //!   scenarios, actions and modifiers, and global parameters. Members (fields, methods,
 //!   events, enum members, behaviors declared on an actor) are named within their type and
@@ -38,17 +45,45 @@ use super::hir::*;
 struct Scope {
     active: String,
     uses: Vec<String>,
+    /// A file of the standard library: its names are the library's.
+    library: bool,
+}
+
+/// The table a top-level name goes into. A library declaration is shadowed only by a file's
+/// own declaration of the same class: a file's `type speed` hides the library's physical type
+/// `speed`, not its modifier `speed`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Class {
+    /// Physical types, enums, structs, actors.
+    Type,
+    /// Actor-less scenarios, actions and modifiers.
+    Behavior,
+    /// Global parameters and top-level fields.
+    Global,
+    /// Units (a file's own units are not namespaced: one table for the program).
+    Unit,
+}
+
+/// A declaration of the standard library.
+#[derive(Debug, Clone)]
+struct LibraryName {
+    /// Its key: the bare name, or `std::name` / `stdtypes::name` where a file of the program
+    /// declares the same name in the global namespace.
+    key: String,
+    /// Its namespace: `std` or `stdtypes` (§8.1.3: the `types` sub-module's in `stdtypes`,
+    /// the rest in `std`).
+    namespace: &'static str,
 }
 
 /// Declared and exported names per namespace.
 #[derive(Debug, Default)]
 struct Table {
-    /// Namespace → its identifiers.
+    /// Namespace → its identifiers (the program's files, not the library).
     declared: BTreeMap<String, BTreeSet<String>>,
     /// Namespace → qualified keys on its export list.
     exports: BTreeMap<String, BTreeSet<String>>,
-    /// Names the standard library declares (global namespace, library files).
-    library: BTreeSet<String>,
+    /// The standard library's declarations by class and name.
+    library: BTreeMap<(Class, String), LibraryName>,
 }
 
 /// Why a name has no key.
@@ -91,19 +126,55 @@ impl Table {
         self.declared.get(ns).is_some_and(|s| s.contains(name))
     }
 
-    /// The key `text` names from `scope`, or why none.
-    fn resolve(&self, scope: &Scope, text: &str) -> Result<String, Unresolved> {
+    /// The key `text` names as a name of any class (an `export` names any kind).
+    fn resolve_any(&self, scope: &Scope, text: &str) -> Result<String, Unresolved> {
+        let mut first = None;
+        for class in [Class::Type, Class::Behavior, Class::Global] {
+            match self.resolve(scope, text, class) {
+                Ok(k) => return Ok(k),
+                Err(e) => {
+                    first.get_or_insert(e);
+                }
+            }
+        }
+        Err(first.unwrap_or(Unresolved::Unknown))
+    }
+
+    /// The library's declaration of `name` in `class`, if the library declares one.
+    fn library(&self, class: Class, name: &str) -> Option<&LibraryName> {
+        self.library.get(&(class, name.to_string()))
+    }
+
+    /// The key `text` names from `scope` as a name of `class`, or why none.
+    fn resolve(&self, scope: &Scope, text: &str, class: Class) -> Result<String, Unresolved> {
         let (prefix, name) = split(text);
+        if scope.library {
+            // The library's own references never reach a file's declarations.
+            return match self.library(class, name) {
+                Some(l) if prefix.map_or(true, |p| p == l.namespace) => Ok(l.key.clone()),
+                _ => Err(Unresolved::Unknown),
+            };
+        }
         if let Some(ns) = prefix {
             if self.holds(ns, name) {
                 return Ok(key(ns, name));
             }
-            if (ns == "std" || ns == "stdtypes") && self.library.contains(name) {
-                return Ok(name.to_string());
+            if let Some(l) = self.library(class, name) {
+                // `std::vehicle`, `stdtypes::length`; the bare library stands in the global
+                // namespace where nothing of the program shadows it (`::vehicle`).
+                if ns == l.namespace || (ns.is_empty() && l.key == name) {
+                    return Ok(l.key.clone());
+                }
+                if ns == "std" || ns == "stdtypes" {
+                    return Err(Unresolved::Explained(format!(
+                        "namespace `{ns}` declares no `{name}`; the standard library puts it in `{}`",
+                        l.namespace
+                    )));
+                }
             }
             return Err(Unresolved::Explained(if ns.is_empty() {
                 format!("the global namespace declares no `{name}`")
-            } else if self.declared.contains_key(ns) {
+            } else if self.declared.contains_key(ns) || ns == "std" || ns == "stdtypes" {
                 format!("namespace `{ns}` declares no `{name}`")
             } else {
                 format!("unknown namespace `{ns}`")
@@ -117,10 +188,19 @@ impl Table {
             if let Some(list) = self.exports.get(u) {
                 found.extend(list.iter().filter(|k| split(k).1 == name).cloned());
             }
+            // A used `std` / `stdtypes` makes the library's names of that namespace
+            // accessible (§7.7.5.2.1).
+            if let Some(l) = self.library(class, name).filter(|l| l.namespace == u) {
+                found.insert(l.key.clone());
+            }
         }
         match found.len() {
             1 => Ok(found.into_iter().next().unwrap_or_default()),
-            0 if self.library.contains(name) => Ok(name.to_string()),
+            // oscsim: the library stands behind every namespace (docs/dsl.md, "Namespaces").
+            0 if self.library(class, name).is_some() => Ok(self
+                .library(class, name)
+                .map(|l| l.key.clone())
+                .unwrap_or_default()),
             0 => match scope.uses.iter().find(|u| self.holds(u, name)) {
                 Some(u) => Err(Unresolved::Explained(format!(
                     "`{name}` is declared in namespace `{u}`, which does not export it; write `{}`",
@@ -140,31 +220,62 @@ impl Table {
     }
 }
 
-/// Rewrites the top-level names of `files` (files `0..library` are the standard library) to
-/// their qualified keys, pushing a diagnostic for each name that cannot be resolved.
-pub fn resolve_namespaces(files: &mut [SourceFile], library: usize, diags: &mut Vec<Diagnostic>) {
+/// Rewrites the top-level names of `files` to their qualified keys, pushing a diagnostic for
+/// each name that cannot be resolved. Files `0..library.len()` are the standard library,
+/// `library[i]` the namespace of file `i` (`std` or `stdtypes`).
+pub fn resolve_namespaces(
+    files: &mut [SourceFile],
+    library: &[&'static str],
+    diags: &mut Vec<Diagnostic>,
+) {
     let mut t = Table::default();
-    // 1. Declarations.
-    for (i, f) in files.iter_mut().enumerate() {
+    // 1. Declarations: the program's files first, so the library knows what they shadow.
+    let (lib_files, own_files) = files.split_at_mut(library.len().min(files.len()));
+    let mut shadowed: BTreeSet<(Class, String)> = BTreeSet::new();
+    for f in own_files.iter_mut() {
         let mut active = String::new();
         for item in &mut f.items {
             if let Item::Namespace { name, .. } = item {
                 active = name.clone();
                 continue;
             }
-            for n in declared_names(item) {
+            for (n, class) in declared_names(item) {
                 let (ns, name) = match split(&n.text) {
                     (Some(p), name) => (p.to_string(), name.to_string()),
                     (None, name) => (active.clone(), name.to_string()),
                 };
-                if i < library {
-                    t.library.insert(name.clone());
+                // A file's units stay in one program-wide table (not namespaced).
+                if class == Class::Unit || ns.is_empty() {
+                    shadowed.insert((class, name.clone()));
+                }
+                if class == Class::Unit {
+                    continue;
                 }
                 t.declared
                     .entry(ns.clone())
                     .or_default()
                     .insert(name.clone());
                 n.text = key(&ns, &name);
+            }
+        }
+    }
+    for (f, namespace) in lib_files.iter_mut().zip(library) {
+        for item in &mut f.items {
+            for (n, class) in declared_names(item) {
+                let name = n.text.clone();
+                let own = shadowed.contains(&(class, name.clone()));
+                n.text = if own {
+                    key(namespace, &name)
+                } else {
+                    name.clone()
+                };
+                t.library.insert(
+                    (class, name),
+                    LibraryName {
+                        key: n.text.clone(),
+                        namespace,
+                    },
+                );
             }
         }
     }
@@ -192,7 +303,7 @@ pub fn resolve_namespaces(files: &mut [SourceFile], library: usize, diags: &mut 
                     let names = t.declared.get(&ns).cloned().unwrap_or_default();
                     names.iter().map(|n| key(&ns, n)).collect()
                 }
-                ExportSpec::Name(n) => match t.resolve(scope, &n.text) {
+                ExportSpec::Name(n) => match t.resolve_any(scope, &n.text) {
                     Ok(k) => vec![k],
                     Err(e) => {
                         unresolved.push((n.span, e.message(&n.text)));
@@ -217,13 +328,17 @@ pub fn resolve_namespaces(files: &mut [SourceFile], library: usize, diags: &mut 
         ));
     }
     // 3. References.
-    for f in files.iter_mut() {
-        let mut scope = Scope::default();
+    for (i, f) in files.iter_mut().enumerate() {
+        let mut scope = Scope {
+            library: i < library.len(),
+            ..Scope::default()
+        };
         for item in &mut f.items {
             if let Item::Namespace { name, uses, .. } = item {
                 scope = Scope {
                     active: name.clone(),
                     uses: uses.iter().map(|u| u.text.clone()).collect(),
+                    library: scope.library,
                 };
                 continue;
             }
@@ -246,18 +361,28 @@ fn scoped(f: &SourceFile) -> impl Iterator<Item = (Scope, &Item)> {
             scope = Scope {
                 active: name.clone(),
                 uses: uses.iter().map(|u| u.text.clone()).collect(),
+                library: false,
             };
         }
         (scope.clone(), item)
     })
 }
 
-/// The names an item declares at top level.
-fn declared_names(item: &mut Item) -> Vec<&mut Name> {
+/// The names an item declares at top level, each with its class.
+fn declared_names(item: &mut Item) -> Vec<(&mut Name, Class)> {
     match item {
-        Item::PhysicalType { name, .. } | Item::Enum { name, .. } => vec![name],
-        Item::Compound(c) if c.name.parts.len() == 1 => c.name.parts.iter_mut().collect(),
-        Item::Global(f) | Item::Member(Member::Field(f)) => f.names.iter_mut().collect(),
+        Item::PhysicalType { name, .. } | Item::Enum { name, .. } => vec![(name, Class::Type)],
+        Item::Unit { name, .. } => vec![(name, Class::Unit)],
+        Item::Compound(c) if c.name.parts.len() == 1 => {
+            let class = match c.kind {
+                CompoundKind::Struct | CompoundKind::Actor => Class::Type,
+                _ => Class::Behavior,
+            };
+            c.name.parts.iter_mut().map(|n| (n, class)).collect()
+        }
+        Item::Global(f) | Item::Member(Member::Field(f)) => {
+            f.names.iter_mut().map(|n| (n, Class::Global)).collect()
+        }
         _ => Vec::new(),
     }
 }
@@ -271,9 +396,9 @@ struct Rewriter<'a> {
 }
 
 impl Rewriter<'_> {
-    /// Rewrites a name that must be a top-level one.
-    fn top(&mut self, n: &mut Name) {
-        match self.t.resolve(self.scope, &n.text) {
+    /// Rewrites a name that must be a top-level one of `class`.
+    fn top(&mut self, n: &mut Name, class: Class) {
+        match self.t.resolve(self.scope, &n.text, class) {
             Ok(k) => n.text = k,
             // Left for the checker, which reports an unknown name in its own words.
             Err(Unresolved::Unknown) => {}
@@ -285,17 +410,23 @@ impl Rewriter<'_> {
         }
     }
 
-    /// The first part of a type or behavior name (`T`, `actor.behavior`).
-    fn qual(&mut self, q: &mut QualName) {
+    /// The first part of a type or behavior name (`T`, `actor.behavior`): a name of `class`
+    /// when it stands alone, else an actor's (a type).
+    fn qual(&mut self, q: &mut QualName, class: Class) {
+        let class = if q.parts.len() > 1 {
+            Class::Type
+        } else {
+            class
+        };
         if let Some(first) = q.parts.first_mut() {
-            self.top(first);
+            self.top(first, class);
         }
     }
 
     fn ty(&mut self, t: &mut TypeRef) {
         match t {
             TypeRef::Primitive(_) => {}
-            TypeRef::Named(q) => self.qual(q),
+            TypeRef::Named(q) => self.qual(q, Class::Type),
             TypeRef::List(inner, _) | TypeRef::Range(inner, _) => self.ty(inner),
         }
     }
@@ -305,20 +436,24 @@ impl Rewriter<'_> {
             Item::Namespace { .. } | Item::Export { .. } | Item::Import { .. } => {}
             Item::PhysicalType { si, .. } => si.iter_mut().for_each(|a| self.expr(&mut a.value)),
             Item::Unit { of, si, .. } => {
-                self.qual(of);
+                self.qual(of, Class::Type);
                 si.iter_mut().for_each(|a| self.expr(&mut a.value));
             }
             Item::Enum { .. } => {}
-            Item::EnumExtension { name, .. } => self.qual(name),
+            Item::EnumExtension { name, .. } => self.qual(name, Class::Type),
             Item::Compound(c) => {
                 if c.name.parts.len() > 1 {
-                    self.qual(&mut c.name);
+                    self.qual(&mut c.name, Class::Type);
                 }
                 if let Some(of) = &mut c.of {
-                    self.qual(of);
+                    self.qual(of, Class::Behavior);
                 }
                 if let Some(inh) = &mut c.inherits {
-                    self.qual(&mut inh.parent);
+                    let class = match c.kind {
+                        CompoundKind::Struct | CompoundKind::Actor => Class::Type,
+                        _ => Class::Behavior,
+                    };
+                    self.qual(&mut inh.parent, class);
                     if let Some(cond) = &mut inh.condition {
                         self.expr(cond);
                     }
@@ -328,7 +463,7 @@ impl Rewriter<'_> {
             Item::Extend {
                 target, members, ..
             } => {
-                self.qual(target);
+                self.qual(target, Class::Type);
                 self.members(members);
             }
             Item::Global(f) => self.field(f),
@@ -425,7 +560,7 @@ impl Rewriter<'_> {
                 match actor {
                     Some(a) => self.expr(a),
                     // An actor-less invocation names a top-level scenario or action.
-                    None => self.top(name),
+                    None => self.top(name, Class::Behavior),
                 }
                 self.args(args);
                 for w in with {
@@ -453,15 +588,20 @@ impl Rewriter<'_> {
                         text: text.clone(),
                         span: e.span,
                     };
-                    self.top(&mut n);
+                    self.top(&mut n, Class::Global);
                     *text = n.text;
                 } else if !self.shadow.contains(text.as_str()) {
-                    if let Ok(k) = self.t.resolve(self.scope, text) {
+                    if let Ok(k) = self.t.resolve(self.scope, text, Class::Global) {
                         *text = k;
                     }
                 }
             }
-            ExprKind::EnumValue(ty, _) => self.qual(ty),
+            ExprKind::Physical(_, unit) if self.scope.library => {
+                if let Some(l) = self.t.library(Class::Unit, &unit.text) {
+                    unit.text = l.key.clone();
+                }
+            }
+            ExprKind::EnumValue(ty, _) => self.qual(ty, Class::Type),
             ExprKind::Field(inner, _) | ExprKind::Neg(inner) | ExprKind::Not(inner) => {
                 self.expr(inner)
             }

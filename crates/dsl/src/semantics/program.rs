@@ -1,9 +1,9 @@
 //! The front door: load a file with its imports and the standard library, check it, resolve it.
 //!
 //! Files `0..L` of a program are the standard library (`osc.standard`, always loaded: a file
-//! with or without `import osc.standard` sees the same declarations, as ASAM OpenSCENARIO DSL
-//! 2.1 §7.7 keeps the import for 2.0 compatibility); then the main file and the files it
-//! imports by relative path (§7.7 library mechanisms), each once.
+//! with or without `import osc.standard` sees the same declarations, behind its own, see
+//! `namespace.rs`); then the main file and the files it imports by relative path (ASAM
+//! OpenSCENARIO DSL 2.1 §7.7.5 import mechanism), each once.
 
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -274,7 +274,8 @@ pub fn check_source_with(
             files,
         });
     }
-    resolve_namespaces(&mut hir, library as usize, &mut diags);
+    let namespaces: Vec<&'static str> = stdlib::STANDARD.iter().map(|f| f.namespace).collect();
+    resolve_namespaces(&mut hir, &namespaces, &mut diags);
     let mut model = collect(&hir, &mut diags);
     model.library_files = library;
     let checked = check_model(&model);

@@ -149,9 +149,15 @@ impl UnitTable {
         self.units.iter().find(|u| u.name == name)
     }
 
-    /// The physical type of dimension `d` (the first declared), for naming a computed quantity.
+    /// The physical type of dimension `d`, for naming a computed quantity: the first declared
+    /// whose name the program can write unprefixed (not a library type a file's own type of
+    /// that name shadows, `stdtypes::length`), else the first.
     pub fn type_of_dimension(&self, d: Dimension) -> Option<&PhysicalType> {
-        self.types.iter().find(|t| t.dimension == d)
+        let mut of_dim = self.types.iter().filter(|t| t.dimension == d);
+        let first = of_dim.clone().next();
+        of_dim
+            .find(|t| !t.name.starts_with("std::") && !t.name.starts_with("stdtypes::"))
+            .or(first)
     }
 
     /// The unit in which values of physical type `ty` are printed: its shortest-named unit of
