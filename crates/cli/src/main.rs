@@ -2,6 +2,21 @@
 //!
 //! Exit status: 0 on success, 1 when the input is invalid or a run fails (or completes but logs
 //! runtime errors), 2 on a usage error.
+//!
+//! Glue only: each subcommand's flags, turned into calls of the library crates.
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `run` | `oscsim run`: a scenario run headless; trajectory CSV, event log, progress, summary |
+//! | `step_args` | the stepping flags `run` and `batch` share, turned into the engine's configuration |
+//! | `osi_args` | the `--osi*` flags: the trace's folder, `SOURCE_DATE_EPOCH` |
+//! | `run_record` | what `run` records for the replay: the run manifest, the HTML page |
+//! | `validate` | `oscsim validate`: load and report OK or the error with its source lines |
+//! | `snippet` | source snippets of an error's file position, rendered by miette |
+//! | `batch_cmd` | `oscsim batch` and `oscsim batch merge`: glue over the batch crate |
+//! | `view` | `oscsim view` and `oscsim plot`: glue over the replay crate |
+//! | `road` | `oscsim road …`: inspect an OpenDRIVE network |
+//! | `dsl` | `oscsim dsl …` and the checks behind `oscsim validate FILE.osc` |
 
 mod batch_cmd;
 mod dsl;

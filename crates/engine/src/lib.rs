@@ -40,7 +40,7 @@
 //!
 //! | module | implements |
 //! | --- | --- |
-//! | `controller` | OpenSCENARIO 1.3 §6.6 user controllers: the `Controller` trait, `idm`, `mobil`, `acc`, `vehicle_dynamics`, `external`, the controllers stage |
+//! | `controller` | OpenSCENARIO 1.3 §7.5 controllers and §6.6 user controllers: the default controller, route following, the `Controller` trait, `idm`, `mobil`, `acc`, `vehicle_dynamics`, `external`, the controllers stage |
 //! | `domain` | OpenSCENARIO 2.0 §8.7 physical-object actors and their measurement methods |
 //! | `storyboard` | OpenSCENARIO 1.3 §7.2.1 / §8.3–8.4 storyboard state machine and triggers |
 //! | `position` | OpenSCENARIO 1.3 §7.4 positions resolved to world poses and road positions |
@@ -52,7 +52,6 @@
 //! | `user_values` | values from outside for UserDefinedValueCondition: typed text, time series, CSV file |
 //! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: world, entities, building, the step |
 //! | `actions` | OpenSCENARIO 1.3 §7.7 actions at runtime: one file per action kind, the action table |
-//! | `controller` | OpenSCENARIO 1.3 §7.5 controllers: the default controller, route following |
 //! | `traffic` | OpenSCENARIO 1.3 §7.2.2.3 spawned traffic: sources, sinks, swarms, areas |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
 //! | `error` | `Error`, the one error of the public API: `kind()` an `ErrorKind`, `pos()` the scenario's file:line:col |

@@ -32,6 +32,7 @@
 //! | `pack`, `page_data` | the page's compact data container |
 //! | `html` | the self-contained page (`web/` holds its scripts and style) |
 //! | `plot` | SVG and PNG charts |
+//! | `error` | `Error`: kind, file and 1-based line:col; "expected X, found Y at file:line:col" |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 

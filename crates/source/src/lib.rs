@@ -11,6 +11,11 @@
 //!
 //! No dependencies: every other crate may use it without the dependency graph gaining a
 //! second direction.
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `pos` | [`SourcePos`]: a file and a 1-based line and column, shown as `file:line:col` |
+//! | `line_index` | [`LineIndex`]: byte offset → line:col by a binary search over the line starts |
 
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
