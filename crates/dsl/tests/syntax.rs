@@ -85,6 +85,9 @@ cases! {
     seed_stationary_location,
     seed_prevent_collision,
     seed_driving_alongside_group,
+    // Issue 30: a keyword before a parenthesis (class 3), `extend ::name` (class 5).
+    keyword_before_parenthesis,
+    extend_global_prefix,
     // One file with every construct of the grammar.
     all_constructs,
     // Small cases, one construct or one error each (index: tests/files/syntax/README.md).

@@ -144,6 +144,19 @@ impl<'s> Parser<'s> {
         self.nth_word(0, word)
     }
 
+    /// Whether the last significant token of the current logical line (before its `NEWLINE`
+    /// or the end of input) is a `kind`.
+    pub(crate) fn line_ends_with(&self, kind: SyntaxKind) -> bool {
+        let mut last = None;
+        for t in self.tokens[self.pos..].iter().filter(|t| !t.0.is_trivia()) {
+            if matches!(t.0, NEWLINE | INDENT | DEDENT) {
+                break;
+            }
+            last = Some(t.0);
+        }
+        last == Some(kind)
+    }
+
     /// Whether trivia separate the `n`-th and `n+1`-th significant tokens.
     pub(crate) fn trivia_before(&self, n: usize) -> bool {
         match (self.nth_index(n), self.nth_index(n + 1)) {

@@ -45,13 +45,15 @@ pub(super) fn do_member(p: &mut Parser) {
         p.bump();
         p.finish_node();
     }
+    // `wait` and `call` are keywords here also before a parenthesised operand (`wait (x > 1)`):
+    // the grammar places them at the start of a do-member (§7.2.1.5.1).
     let node = if composition_start(p) {
         COMPOSITION
-    } else if p.at(IDENT) && p.nth(1) != L_PAREN && p.nth(1) != DOT {
-        match p.nth_text(0) {
-            "wait" => WAIT_DIRECTIVE,
-            "emit" => EMIT_DIRECTIVE,
-            "call" => CALL_DIRECTIVE,
+    } else if p.at(IDENT) && p.nth(1) != DOT {
+        match (p.nth_text(0), p.nth(1)) {
+            ("wait", _) => WAIT_DIRECTIVE,
+            ("emit", next) if next != L_PAREN => EMIT_DIRECTIVE,
+            ("call", _) => CALL_DIRECTIVE,
             _ => BEHAVIOR_INVOCATION,
         }
     } else {

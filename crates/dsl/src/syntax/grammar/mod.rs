@@ -233,33 +233,43 @@ fn classify(p: &Parser, ctx: Ctx) -> Member {
         return M::Field;
     }
     let word_next = next == IDENT;
+    // A declared or extended name may carry the global namespace's prefix: `extend ::foo:`
+    // (`prefixed-identifier ::= [namespace-name] '::' identifier`, §7.7.4.1).
+    let name_next = word_next || (next == COLON2 && p.nth(2) == IDENT);
     match p.nth_text(0) {
         "import" if word_next || next == STRING => M::Import,
         "namespace" if word_next => M::Namespace,
         "export" if word_next || matches!(next, STAR | COLON2) => M::Export,
-        "type" if word_next => M::PhysicalType,
-        "unit" if word_next => M::Unit,
-        "enum" if word_next => M::Enum,
-        "struct" if word_next => M::Struct,
-        "actor" if word_next => M::Actor,
-        "scenario" if word_next => M::Scenario,
-        "action" if word_next => M::Action,
-        "modifier" if word_next => M::Modifier,
-        "extend" if word_next => M::Extend,
-        "global" if word_next => M::Global,
+        "type" if name_next => M::PhysicalType,
+        "unit" if name_next => M::Unit,
+        "enum" if name_next => M::Enum,
+        "struct" if name_next => M::Struct,
+        "actor" if name_next => M::Actor,
+        "scenario" if name_next => M::Scenario,
+        "action" if name_next => M::Action,
+        "modifier" if name_next => M::Modifier,
+        "extend" if name_next => M::Extend,
+        "global" if name_next => M::Global,
         "event" if word_next => M::Event,
         "var" if word_next => M::Var,
         "keep" if next != DOT => M::Keep,
         "remove_default" if next != DOT => M::RemoveDefault,
         "def" if word_next => M::Def,
         "cover" | "record" if next != DOT => M::Coverage,
-        "on" if next != L_PAREN && next != DOT => M::On,
+        // A keyword is a keyword where the grammar places it (§7.2.1.5.1), also before a
+        // parenthesised condition (`until (a > b)`, `wait (x > 1)`, `on (c):`): in those
+        // places the word cannot be a modifier or behavior name.
+        "on" if next != DOT
+            && (next != L_PAREN || (M::On.allowed_in(ctx) && p.line_ends_with(COLON))) =>
+        {
+            M::On
+        }
         "do" if next != L_PAREN && next != DOT => M::Do,
         "for" if word_next && p.nth_word(2, "in") => M::For,
-        "until" if next != L_PAREN && next != DOT => M::Until,
-        "call" if next != L_PAREN && next != DOT => M::Call,
+        "until" if next != DOT && (next != L_PAREN || ctx == Ctx::BehaviorWith) => M::Until,
+        "call" if next != DOT && (next != L_PAREN || matches!(ctx, Ctx::Do | Ctx::On)) => M::Call,
         "emit" if word_next => M::Emit,
-        "wait" if next != L_PAREN && next != DOT => M::Wait,
+        "wait" if next != DOT && (next != L_PAREN || ctx == Ctx::Do) => M::Wait,
         _ => M::Invocation,
     }
 }
