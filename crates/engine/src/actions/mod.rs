@@ -8,6 +8,7 @@
 //! in the control domain (longitudinal, lateral) of an actor stops the one running there
 //! (§7.5.1, semantics-pitfalls #7).
 
+mod acceleration;
 mod appearance;
 mod custom;
 mod distance;
@@ -60,6 +61,7 @@ pub(crate) enum Domain {
 #[derive(Debug, Clone)]
 pub(crate) enum Part {
     Speed(speed::SpeedState),
+    Acceleration(acceleration::AccelerationState),
     Profile(speed_profile::ProfileState),
     Lateral(lane_change::LateralState),
     LongitudinalDistance(distance::LongitudinalState),
@@ -136,6 +138,7 @@ impl ActionTable {
                 let next = match part {
                     Part::Done(_) => continue,
                     Part::Speed(s) => speed::step(world, actor, s, now, dt),
+                    Part::Acceleration(s) => acceleration::step(world, actor, s, now, dt),
                     Part::Profile(s) => speed_profile::step(world, actor, s, now, dt),
                     Part::Lateral(s) => lane_change::step(world, actor, s, now, dt),
                     Part::LongitudinalDistance(s) => {
@@ -328,6 +331,9 @@ impl Host<'_> {
                     LongitudinalAction::LongitudinalDistance { .. } => {
                         distance::start_longitudinal(self.world, actor, l, pos)
                     }
+                    LongitudinalAction::Acceleration { target, dynamics } => Ok(
+                        acceleration::start(self.world, actor, *target, dynamics, time),
+                    ),
                     _ => Err(RuntimeError::unsupported("this LongitudinalAction", pos)),
                 }
             }

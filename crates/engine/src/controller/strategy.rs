@@ -18,6 +18,7 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
             match l {
                 LongitudinalAction::Speed { .. } => "SpeedAction",
                 LongitudinalAction::SpeedProfile { .. } => "SpeedProfileAction",
+                LongitudinalAction::Acceleration { .. } => "AccelerationAction",
                 _ => "LongitudinalDistanceAction",
             },
         ),

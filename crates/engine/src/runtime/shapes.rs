@@ -28,6 +28,23 @@ pub fn shape_value(shape: DynamicsShape, p: f64) -> (f64, f64) {
     }
 }
 
+/// ∫₀ᵖ f(q) dq of `shape` (p ≥ 0; f = 1 beyond p = 1): the share of a transition's change that
+/// a quantity integrating the transitioned value has gathered (a speed, of an acceleration).
+/// Closed forms: linear p²/2, cubic p³ − p⁴/2, sinusoidal (p − sin(πp)/π)/2; each is ½ at
+/// p = 1 (f(p) + f(1 − p) = 1); `step` gives p.
+pub fn shape_integral(shape: DynamicsShape, p: f64) -> f64 {
+    let q = p.clamp(0.0, 1.0);
+    let inside = match shape {
+        DynamicsShape::Linear => q * q / 2.0,
+        DynamicsShape::Cubic => q * q * q - q * q * q * q / 2.0,
+        DynamicsShape::Sinusoidal => {
+            (q - (std::f64::consts::PI * q).sin() / std::f64::consts::PI) / 2.0
+        }
+        _ => return p.max(0.0),
+    };
+    inside + (p - 1.0).max(0.0)
+}
+
 /// The largest slope f′ of `shape` over [0, 1].
 pub fn peak_slope(shape: DynamicsShape) -> f64 {
     match shape {
@@ -75,5 +92,33 @@ pub fn progress(span: Span, elapsed: f64, travelled: f64) -> f64 {
         Span::Instant => 1.0,
         Span::Time(t) => (elapsed / t).min(1.0),
         Span::Distance(d) => (travelled / d).min(1.0),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Closed forms against a midpoint sum of f over [0, p].
+    #[test]
+    fn shape_integral_is_the_integral_of_the_shape() {
+        const TOL: f64 = 1e-9;
+        for shape in [
+            DynamicsShape::Linear,
+            DynamicsShape::Cubic,
+            DynamicsShape::Sinusoidal,
+        ] {
+            for p in [0.0, 0.25, 0.5, 1.0, 1.75] {
+                let n = 200_000;
+                let h = p / n as f64;
+                let sum: f64 = (0..n)
+                    .map(|i| shape_value(shape, (i as f64 + 0.5) * h).0 * h)
+                    .sum();
+                let got = shape_integral(shape, p);
+                assert!((got - sum).abs() < TOL, "{shape:?} {p}: {got} vs {sum}");
+            }
+            // Half of the change's time at p = 1, for every shape.
+            assert!((shape_integral(shape, 1.0) - 0.5).abs() < TOL);
+        }
     }
 }

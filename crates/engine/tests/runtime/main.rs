@@ -10,6 +10,7 @@ mod corpus;
 #[path = "../support/runtime/mod.rs"]
 mod runtime_support;
 
+mod acceleration_action;
 mod action_order;
 mod actions;
 mod batch_variants;

@@ -92,6 +92,20 @@ pub enum LongitudinalAction {
         /// Limits.
         dynamic_constraints: Option<DynamicConstraints>,
     },
+    /// oscsim's AccelerationAction, an action with no XML form (the DSL runtime writes it for
+    /// ASAM OpenSCENARIO DSL 2.1 §8.8.2 `assign_acceleration`, `change_acceleration` and
+    /// `keep_acceleration`; the XML reader never does): the actor's longitudinal acceleration
+    /// goes from its value at the start to `target` (`None`: the value at the start) under
+    /// `dynamics` (`time`: over that duration; `rate`: at that peak jerk, m/s³; `step`: at
+    /// once), then holds. The speed follows it; the action ends when the speed reaches 0 or
+    /// the vehicle's maximum with the acceleration pushing past it, and otherwise runs until a
+    /// later longitudinal action replaces it.
+    Acceleration {
+        /// The acceleration to reach (m/s²); `None`: keep the one at the start.
+        target: Option<f64>,
+        /// How it is reached.
+        dynamics: TransitionDynamics,
+    },
     /// SpeedProfileAction (1.2+).
     SpeedProfile {
         /// Reference entity for relative speeds.

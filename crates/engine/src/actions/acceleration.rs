@@ -1,0 +1,107 @@
+//! oscsim's AccelerationAction (`scenario::LongitudinalAction::Acceleration`, an action with no
+//! XML form): the actor's longitudinal acceleration goes from a₀, its value at the start (the
+//! acceleration of the last step), to the target a₁ under a transition shape f
+//! ([`crate::runtime::shapes`]: over a time, at a peak jerk read as a rate, or at once), then
+//! holds. ASAM OpenSCENARIO DSL 2.1 §8.8.2 `assign_acceleration`, `change_acceleration` and
+//! `keep_acceleration` run through it: no OpenSCENARIO 1.x action holds an acceleration.
+//!
+//! The speed is the integral of that acceleration from the start, exactly: after τ s,
+//! v = v₀ + a₀·τ + (a₁ − a₀)·T·F(τ/T), F the integral of f ([`shape_integral`]), and the step
+//! sets the speed its end has (as SpeedAction does). A vehicle's Performance bounds the change
+//! per step like SpeedAction's (semantics-pitfalls #9). The action ends when the speed reaches
+//! 0 m/s while the acceleration pushes below it (a vehicle brakes to a stop, it does not
+//! reverse) or the maximum speed while it pushes above; otherwise it runs until a later
+//! longitudinal action replaces it (§7.5.1 control domains) or its Act ends.
+
+use scenario::TransitionDynamics;
+
+use super::Part;
+use crate::runtime::entity::EntityId;
+use crate::runtime::shapes::{shape_integral, span, Span};
+use crate::runtime::world::World;
+use crate::storyboard::ActionStatus;
+
+/// A running AccelerationAction on one actor.
+#[derive(Debug, Clone)]
+pub(crate) struct AccelerationState {
+    dynamics: TransitionDynamics,
+    /// Acceleration at the start and the target (m/s²).
+    from: f64,
+    to: f64,
+    /// Duration of the transition.
+    span: Span,
+    start_speed: f64,
+    start_time: f64,
+}
+
+/// Starts the action on `actor` at `now`.
+pub(crate) fn start(
+    world: &mut World,
+    actor: EntityId,
+    target: Option<f64>,
+    dynamics: &TransitionDynamics,
+    now: f64,
+) -> Part {
+    let e = world.entity(actor);
+    let from = e.travel_component(e.acceleration.translational);
+    let to = target.unwrap_or(from);
+    Part::Acceleration(AccelerationState {
+        dynamics: *dynamics,
+        from,
+        to,
+        span: span(dynamics, to - from),
+        start_speed: e.speed,
+        start_time: now,
+    })
+}
+
+/// The acceleration after `tau` s.
+fn acceleration(s: &AccelerationState, tau: f64) -> f64 {
+    let (f, _) = crate::runtime::shapes::shape_value(
+        s.dynamics.dynamics_shape,
+        match s.span {
+            Span::Time(t) => tau / t,
+            _ => 1.0,
+        },
+    );
+    s.from + (s.to - s.from) * f
+}
+
+/// Sets the speed for the step from `now` to `now + dt`.
+pub(crate) fn step(
+    world: &mut World,
+    actor: EntityId,
+    s: &mut AccelerationState,
+    now: f64,
+    dt: f64,
+) -> ActionStatus {
+    let tau = now + dt - s.start_time;
+    let gained = match s.span {
+        Span::Time(t) => {
+            s.from * tau + (s.to - s.from) * t * shape_integral(s.dynamics.dynamics_shape, tau / t)
+        }
+        _ => s.to * tau,
+    };
+    let wanted = s.start_speed + gained;
+    let e = world.entity_mut(actor);
+    let (max_speed, bounded) = match e.performance {
+        Some(perf) => (
+            perf.max_speed.abs(),
+            wanted
+                .max(e.speed - perf.max_deceleration.abs() * dt)
+                .min(e.speed + perf.max_acceleration.abs() * dt),
+        ),
+        None => (f64::INFINITY, wanted),
+    };
+    let a = acceleration(s, tau);
+    if bounded <= crate::tolerance::SPEED && a <= 0.0 {
+        e.speed = 0.0;
+        return ActionStatus::Ended;
+    }
+    if bounded >= max_speed - crate::tolerance::SPEED && a >= 0.0 {
+        e.speed = max_speed;
+        return ActionStatus::Ended;
+    }
+    e.speed = bounded;
+    ActionStatus::Running
+}
