@@ -117,6 +117,13 @@ pub enum ErrorKind {
         /// "catalog/entry" along the cycle, first repeated at the end.
         cycle: Vec<String>,
     },
+    /// Init actions whose positions or speeds refer to each other in a circle, so no order
+    /// resolves them (`init_order.rs`).
+    InitCycle {
+        /// "entity's action" along the cycle, each referring to the next one's entity, the
+        /// first entity repeated at the end.
+        cycle: Vec<String>,
+    },
     /// A catalog that exists but has no entry of that name.
     CatalogEntryNotFound {
         /// The catalog name.
@@ -339,6 +346,11 @@ impl fmt::Display for ErrorKind {
             Self::CatalogCycle { cycle } => write!(
                 f,
                 "expected catalog references without cycles, found {}",
+                cycle.join(" → ")
+            ),
+            Self::InitCycle { cycle } => write!(
+                f,
+                "expected Init actions whose positions and speeds can be resolved in some order, found a cycle {}",
                 cycle.join(" → ")
             ),
             Self::TooDeep { element, limit } => write!(

@@ -31,6 +31,7 @@
 //! | `expr` | `${…}` expressions (§9.2) |
 //! | `distribution` | parameter value distributions (§9.5) |
 //! | `names` | `::`-qualified storyboard element references and how they match |
+//! | `init_order` | the order in which the Init's private actions take effect: positions and speeds relative to other entities after those entities' own ([`init_order()`]) |
 //! | `provider` | where files come from: [`DiskFiles`], [`MemoryFiles`], or your [`FileProvider`]; the [`Sources`] a scenario keeps |
 //! | `source`, `error` | positions and errors |
 #![forbid(unsafe_code)]
@@ -39,6 +40,7 @@
 pub mod distribution;
 mod error;
 pub mod expr;
+mod init_order;
 mod model;
 pub mod names;
 mod provider;
@@ -48,6 +50,7 @@ mod source;
 use std::path::Path;
 
 pub use error::{Error, ErrorKind, Result, Warning};
+pub use init_order::{init_order, InitStep};
 pub use model::*;
 pub use provider::{DiskFiles, FileProvider, MemoryFiles, Sources};
 pub use reader::files::MAX_FILE_BYTES;
@@ -75,7 +78,7 @@ impl Scenario {
         overrides: &[(String, String)],
     ) -> Result<Scenario> {
         let recording = provider::Recording::new(files);
-        let scenario = reader::scenario::load(&recording, path, overrides)?;
+        let scenario = reader::scenario::load(&recording, path, overrides)?.checked()?;
         Ok(scenario.keeping(recording, path, overrides.to_vec()))
     }
 
@@ -89,7 +92,7 @@ impl Scenario {
     ) -> Result<Scenario> {
         let recording = provider::Recording::new(&DiskFiles);
         recording.keep(path, text);
-        let scenario = reader::scenario::load_text(&recording, text, path, overrides)?;
+        let scenario = reader::scenario::load_text(&recording, text, path, overrides)?.checked()?;
         Ok(scenario.keeping(recording, path, overrides.to_vec()))
     }
 
@@ -111,13 +114,21 @@ impl Scenario {
     pub fn with_parameters(&self, overrides: &[(String, String)]) -> Result<Scenario> {
         let merged = self.sources.merged(overrides);
         let mut scenario =
-            reader::scenario::load(&*self.sources.files, &self.sources.opened, &merged)?;
+            reader::scenario::load(&*self.sources.files, &self.sources.opened, &merged)?
+                .checked()?;
         scenario.sources = Sources {
             opened: self.sources.opened.clone(),
             files: self.sources.files.clone(),
             overrides: merged,
         };
         Ok(scenario)
+    }
+
+    /// The checks of the model as a whole, after reading: the Init's actions can be resolved
+    /// in some order ([`init_order()`]).
+    fn checked(self) -> Result<Scenario> {
+        init_order(&self.storyboard.init)?;
+        Ok(self)
     }
 
     /// Keeps what `recording` saw as this scenario's [`Sources`].

@@ -198,7 +198,11 @@ impl Builder<'_> {
             let name = format!("Init {}", action_type(&a.kind));
             init_actions.push(self.action(name, a, Vec::new()));
         }
-        for p in &sb.init.privates {
+        // The private actions take effect together: each in the order that resolves positions
+        // and speeds relative to other entities against those entities' initial ones
+        // (scenario::init_order; document order where nothing refers across).
+        for step in scenario::init_order(&sb.init)? {
+            let p = &sb.init.privates[step.private];
             let actor = self.actor(
                 &p.entity_ref,
                 &sb.init.actions.first().map_or_else(
@@ -206,10 +210,9 @@ impl Builder<'_> {
                     |a| a.pos.clone(),
                 ),
             )?;
-            for a in &p.actions {
-                let name = format!("Init {} {}", p.entity_ref, action_type(&a.kind));
-                init_actions.push(self.action(name, a, vec![actor]));
-            }
+            let a = &p.actions[step.action];
+            let name = format!("Init {} {}", p.entity_ref, action_type(&a.kind));
+            init_actions.push(self.action(name, a, vec![actor]));
         }
         let mut stories = Vec::new();
         for story in &sb.stories {

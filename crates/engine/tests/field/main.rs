@@ -1,4 +1,4 @@
-//! Scenarios from the field (issue 16): the semantics the visible corpus does not exercise,
+//! Scenarios from the field (issues 16 and 34): the semantics the visible corpus does not exercise,
 //! one module per class, each with the standard's rule in its doc and hand-computed
 //! expectations in its comments. Fixtures in `tests/files/field/`.
 
@@ -11,6 +11,7 @@ mod support;
 
 mod against_s;
 mod clearance;
+mod init_together;
 mod jerk;
 mod other_suites;
 mod past_road_end;
