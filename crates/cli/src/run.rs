@@ -135,6 +135,13 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         scenario::Scenario::load_with_parameters(&args.scenario, &args.params)
             .with_context(|| format!("cannot run {}", args.scenario.display()))?
     };
+    if !args.quiet {
+        // What the loader accepted but the schema does not (an empty ObjectController, a
+        // deprecated form): the run goes on, the author should know.
+        for w in &scenario.warnings {
+            eprintln!("warning: {w}");
+        }
+    }
     let network = engine::load::road_network(&scenario)
         .with_context(|| format!("cannot run {}", args.scenario.display()))?;
     let mut engine = Engine::new(&scenario, network, config)

@@ -11,6 +11,7 @@ mod support;
 
 mod against_s;
 mod clearance;
+mod empty_elements;
 mod init_together;
 mod jerk;
 mod other_suites;

@@ -61,6 +61,18 @@ pub(crate) fn read_scenario_object_body<'a>(
     let entity_object = read_entity_object(ctx, n, object)?;
     let mut object_controllers = Vec::new();
     for c in ctx.children(n, "ObjectController") {
+        if !c.children().any(|e| e.is_element()) {
+            // Invalid by the XSD (the choice of CatalogReference and Controller is required)
+            // but nothing is lost: no controller is named. ASAM's own 1.2 SimpleOvertake
+            // example writes `<ObjectController/>`.
+            ctx.warn(
+                c,
+                "ObjectController has none of CatalogReference, Controller; it is read as no \
+                 controller (the default controller drives)"
+                    .into(),
+            );
+            continue;
+        }
         object_controllers.push(read_object_controller(ctx, c)?);
     }
     if object_controllers.len() > 1 {
