@@ -30,7 +30,7 @@ use crate::runtime::{Entity, World};
 
 /// The commands of one entity's controllers, merged per domain.
 #[derive(Debug, Clone, Copy, Default)]
-struct Merged {
+pub(crate) struct Merged {
     longitudinal: Option<Longitudinal>,
     lateral: Option<Lateral>,
     pose: Option<Pose>,
@@ -38,9 +38,15 @@ struct Merged {
 
 /// Stage 3: commands, then moves (module doc).
 pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
-    let mut merged: Vec<Option<Merged>> = Vec::new();
+    // The stage's storage of the last step, taken out of the table while the table's
+    // controllers are stepped, and put back at the end.
+    let mut storage = std::mem::take(&mut world.controllers.stage);
+    let merged = &mut storage.merged;
+    merged.clear();
     if world.controllers.any_held() {
-        let index = LaneIndex::build(&world.network, &world.entities);
+        let index = &mut storage.index;
+        index.rebuild(&world.network, &world.entities);
+        let index: &LaneIndex = index;
         merged.resize(world.entities.len(), None);
         let (entities, network, signals) = (&world.entities, &world.network, &world.signals);
         for (i, ctrl) in world.controllers.iter_mut() {
@@ -60,7 +66,7 @@ pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
                     continue;
                 };
                 let view =
-                    ControllerView::new(time, e, entities, network, &index, external, signals);
+                    ControllerView::new(time, e, entities, network, index, external, signals);
                 any = true;
                 match instance.step(&view, dt) {
                     Command::Pose(p) if held == MotionDomains::BOTH => m.pose = Some(p),
@@ -94,6 +100,7 @@ pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
             }
         }
     }
+    world.controllers.stage = storage;
 }
 
 /// Moves `e` by the merged command `m` over `dt` s.

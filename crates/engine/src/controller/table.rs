@@ -26,6 +26,7 @@ use scenario::ControllerDomains;
 use super::command::Controller;
 use super::external::ExternalInput;
 use crate::models::properties::{ControllerKind, ModelSettings, MotionDomains};
+use crate::runtime::lane_index::LaneIndex;
 
 /// Domains active on one controller (the four of §6.6.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -132,6 +133,18 @@ pub(crate) struct ControllerTable {
     /// Number of (entity, domain) pairs a built-in model holds: the stage skips the lane
     /// index when none does.
     held: usize,
+    /// The controllers stage's storage, kept from step to step (stage.rs).
+    pub stage: StageStorage,
+}
+
+/// What the controllers stage rebuilds each step, kept so that a step allocates nothing once
+/// it has grown: the lane index and the merged commands.
+#[derive(Debug, Default)]
+pub(crate) struct StageStorage {
+    /// The lane index of the step.
+    pub index: LaneIndex,
+    /// The merged commands of the step, by entity index.
+    pub merged: Vec<Option<super::stage::Merged>>,
 }
 
 impl ControllerTable {

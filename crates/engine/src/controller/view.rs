@@ -146,7 +146,7 @@ impl<'a> ControllerView<'a> {
     /// The lane handle of the entity's lane `lane` at its s, and its direction of travel.
     fn lane_handle(&self, lane: i32) -> Option<(LaneHandle, Direction)> {
         let track = self.entity.track.as_ref()?;
-        let h = self.network.lane_handle(&track.road_id, lane, track.s)?;
+        let h = self.network.lane_handle_on(track.road, lane, track.s)?;
         Some((h, track.direction))
     }
 
@@ -231,7 +231,7 @@ impl<'a> ControllerView<'a> {
             Side::Right => -1,
         };
         let lane = lane_shift(track.lane_id, n, track.direction);
-        let road = self.network.road(&track.road_id)?;
+        let road = self.network.road_at(track.road);
         let section = road.lane_section_at(track.s);
         let drivable = section
             .lane(lane)

@@ -24,13 +24,18 @@
 //!
 //! **Cost.** Building is O(n log n) for n entities (one sort per lane); a query is a binary
 //! search per lane visited plus a short scan bounded by the longest footprint in that lane, so
-//! a step of n queries is O(n log n), not the O(n²) of comparing every pair.
+//! a step of n queries is O(n log n), not the O(n²) of comparing every pair. The index is
+//! rebuilt in place each step ([`LaneIndex::rebuild`]): its lanes are a vector by dense lane
+//! number and the lane borders are kept where the road's lanes are constant
+//! (runtime/lane_slots.rs), no road id is hashed, and the step allocates nothing once the
+//! vectors have grown (issue 31).
 
-use std::collections::HashMap;
+use std::sync::Arc;
 
-use opendrive::{Direction, LaneHandle, Real, Road, RoadNetwork};
+use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork};
 
 use super::entity::{Entity, EntityId};
+use super::lane_slots::{LaneBorders, LaneSlots};
 
 /// Overlap (m) of a box's t-range with a lane's borders below which the box is not in the lane
 /// (a box touching the lane marking is not in the next lane).
@@ -111,7 +116,12 @@ pub struct Neighbour {
 #[derive(Debug, Clone, Default)]
 pub struct LaneIndex {
     footprints: Vec<Option<Footprint>>,
-    lanes: HashMap<LaneHandle, LaneEntries>,
+    /// The network's lane numbering (made at the first build on a network).
+    slots: Option<LaneSlots>,
+    /// By slot; only the slots in `touched` have entries.
+    lanes: Vec<LaneEntries>,
+    touched: Vec<usize>,
+    borders: LaneBorders,
 }
 
 /// The s- and t-ranges of `e`'s box on a road where its reference point is at (s, t) and its
@@ -133,25 +143,34 @@ fn box_ranges(e: &Entity, s: Real, t: Real, rel: Real) -> ((Real, Real), (Real, 
     (s_range, t_range)
 }
 
-/// The lanes of `road`'s section at `s` whose borders overlap `t_range`.
-fn overlapped_lanes(road: &Road, s: Real, t_range: (Real, Real)) -> impl Iterator<Item = i32> + '_ {
-    road.lane_section_at(s)
-        .lanes()
-        .filter(|l| l.id != 0)
-        .filter_map(move |l| {
-            let span = road.lane_span(l.id, s).ok()?;
-            let (lo, hi) = (span.inner.min(span.outer), span.inner.max(span.outer));
-            (t_range.1.min(hi) - t_range.0.max(lo) > LANE_OVERLAP).then_some(l.id)
-        })
-}
-
 impl LaneIndex {
-    /// Builds the index of `entities` on `net` (module doc).
-    pub fn build(net: &RoadNetwork, entities: &[Entity]) -> Self {
-        let mut index = LaneIndex {
-            footprints: vec![None; entities.len()],
-            lanes: HashMap::new(),
-        };
+    /// The index of `entities` on `net` (module doc).
+    #[cfg(test)]
+    pub fn build(net: &Arc<RoadNetwork>, entities: &[Entity]) -> Self {
+        let mut index = LaneIndex::default();
+        index.rebuild(net, entities);
+        index
+    }
+
+    /// Makes this the index of `entities` on `net`, reusing its storage (module doc).
+    pub fn rebuild(&mut self, net: &Arc<RoadNetwork>, entities: &[Entity]) {
+        if !self.slots.as_ref().is_some_and(|s| s.numbers(net)) {
+            let slots = LaneSlots::new(net);
+            self.lanes.clear();
+            self.lanes.resize_with(slots.len(), LaneEntries::default);
+            self.touched.clear();
+            self.borders.clear();
+            self.slots = Some(slots);
+        }
+        for slot in self.touched.drain(..) {
+            let lane = &mut self.lanes[slot];
+            lane.entries.clear();
+            lane.max_len = 0.0;
+        }
+        self.footprints.clear();
+        self.footprints.resize(entities.len(), None);
+        // The road of the last entity: entities on one road look its id up once.
+        let mut last: Option<(&str, RoadHandle)> = None;
         for e in entities {
             if !e.placed || !e.visibility.traffic {
                 continue;
@@ -159,23 +178,31 @@ impl LaneIndex {
             let Some(rp) = e.road_position.as_ref().filter(|rp| rp.distance <= ON_ROAD) else {
                 continue;
             };
-            let Some(road) = net.road(&rp.road_id) else {
-                continue;
+            let road_handle = match last {
+                Some((id, h)) if id == rp.road_id => h,
+                _ => {
+                    let Some(h) = net.road_handle(&rp.road_id) else {
+                        continue;
+                    };
+                    last = Some((rp.road_id.as_str(), h));
+                    h
+                }
             };
+            let road = net.road_at(road_handle);
             let (s_range, t_range) = box_ranges(e, rp.s, rp.t, rp.relative_heading);
             let speed_s = match &e.track {
                 Some(track) if track.direction == Direction::Forward => e.speed,
                 Some(_) => -e.speed,
                 None => e.speed * rp.relative_heading.cos(),
             };
-            let Some(handle) = net.lane_handle(&rp.road_id, rp.lane_id, rp.s) else {
+            let Some(handle) = net.lane_handle_on(road_handle, rp.lane_id, rp.s) else {
                 continue;
             };
-            index.insert(net, road, rp.s, s_range, t_range, e.id);
+            self.insert(road_handle, road, rp.s, s_range, t_range, e.id);
             if let Some(junction) = road.junction.as_deref().and_then(|j| net.junction(j)) {
-                index.insert_in_junction(net, junction, road, e);
+                self.insert_in_junction(net, junction, road, e);
             }
-            index.footprints[e.id.index()] = Some(Footprint {
+            self.footprints[e.id.index()] = Some(Footprint {
                 handle,
                 s: rp.s,
                 s_range,
@@ -183,27 +210,47 @@ impl LaneIndex {
                 speed_s,
             });
         }
-        for lane in index.lanes.values_mut() {
-            lane.entries
-                .sort_by(|a, b| a.lo.total_cmp(&b.lo).then(a.id.cmp(&b.id)));
+        // (lo, id) orders the entries of a lane totally (an entity is entered in a lane
+        // once), so the unstable sort gives the one order there is, without a buffer.
+        for &slot in &self.touched {
+            self.lanes[slot]
+                .entries
+                .sort_unstable_by(|a, b| a.lo.total_cmp(&b.lo).then(a.id.cmp(&b.id)));
         }
-        index
     }
 
+    /// Enters `id` with footprint `s_range` × `t_range` in every lane of `road`'s section at
+    /// `s` whose borders its t-range overlaps.
     fn insert(
         &mut self,
-        net: &RoadNetwork,
+        road_handle: RoadHandle,
         road: &Road,
         s: Real,
         s_range: (Real, Real),
         t_range: (Real, Real),
         id: EntityId,
     ) {
-        for lane in overlapped_lanes(road, s, t_range) {
-            let Some(h) = net.lane_handle(&road.id, lane, s) else {
+        let Some(slots) = self.slots.as_ref() else {
+            return;
+        };
+        // The section `lane_handle` finds for a lane of the section at s is that section.
+        let section = road.lane_section_index(s) as u32;
+        for &(lane, lo, hi) in self.borders.at(road_handle, road, s) {
+            if t_range.1.min(hi) - t_range.0.max(lo) <= LANE_OVERLAP {
+                continue;
+            }
+            let h = LaneHandle {
+                road: road_handle.0,
+                section,
+                lane,
+            };
+            let Some(slot) = slots.slot(h) else {
                 continue;
             };
-            let entries = self.lanes.entry(h).or_default();
+            let entries = &mut self.lanes[slot];
+            if entries.entries.is_empty() {
+                self.touched.push(slot);
+            }
             entries.max_len = entries.max_len.max(s_range.1 - s_range.0);
             entries.entries.push(Entry {
                 lo: s_range.0,
@@ -217,7 +264,7 @@ impl LaneIndex {
     /// holds its box centre.
     fn insert_in_junction(
         &mut self,
-        net: &RoadNetwork,
+        net: &Arc<RoadNetwork>,
         junction: &opendrive::Junction,
         road: &Road,
         e: &Entity,
@@ -241,10 +288,12 @@ impl LaneIndex {
             else {
                 continue;
             };
-            let (Some(other_road), Ok(pose)) = (net.road(other), net.road_pose(other, rp.s, rp.t))
+            let (Some(other_handle), Ok(pose)) =
+                (net.road_handle(other), net.road_pose(other, rp.s, rp.t))
             else {
                 continue;
             };
+            let other_road = net.road_at(other_handle);
             // The footprint about the box centre found on the other road: move back to the
             // reference point along the entity's heading relative to that road.
             let rel = e.pose.h - pose.h;
@@ -252,8 +301,15 @@ impl LaneIndex {
             let ref_s = rp.s - (c.x * rc - c.y * rs);
             let ref_t = rp.t - (c.x * rs + c.y * rc);
             let (s_range, t_range) = box_ranges(e, ref_s, ref_t, rel);
-            self.insert(net, other_road, rp.s, s_range, t_range, e.id);
+            self.insert(other_handle, other_road, rp.s, s_range, t_range, e.id);
         }
+    }
+
+    /// The entries of lane `h` (empty where no entity is in it).
+    #[inline]
+    fn lane(&self, h: LaneHandle) -> Option<&LaneEntries> {
+        let slot = self.slots.as_ref()?.slot(h)?;
+        self.lanes.get(slot)
     }
 
     /// The footprint of entity `id` in this step, if it stands on a road.
@@ -269,7 +325,7 @@ impl LaneIndex {
         (lo, hi): (Real, Real),
         exclude: EntityId,
     ) -> impl Iterator<Item = EntityId> + '_ {
-        let lane = self.lanes.get(&h);
+        let lane = self.lane(h);
         let entries = lane.map_or(&[][..], |l| &l.entries[..]);
         let max_len = lane.map_or(0.0, |l| l.max_len);
         let end = entries.partition_point(|e| e.lo < hi);
@@ -347,7 +403,7 @@ impl LaneIndex {
         direction: Direction,
         exclude: EntityId,
     ) -> Option<Neighbour> {
-        let lane = self.lanes.get(&h)?;
+        let lane = self.lane(h)?;
         let entries = &lane.entries;
         let p = entries.partition_point(|e| e.lo < from);
         match direction {

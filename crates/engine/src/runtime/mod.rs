@@ -10,6 +10,7 @@
 //! | `entity` | entity state (pose, road position, speed, …) and `EntityId` |
 //! | `world` | road network + entity store + values; `EntityQuery` / `ConditionContext` |
 //! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |
+//! | `lane_slots` | the lane index's dense lane numbers and lane borders kept per road |
 //! | `lanes` | lane look-up, curvature, lane arithmetic, following lanes through links |
 //! | `build` | scenario model → world, storyboard description, action and condition tables |
 //! | `conditions` | the storyboard's `ConditionSource` |
@@ -31,6 +32,7 @@ pub(crate) mod error;
 mod external;
 mod finite;
 pub(crate) mod lane_index;
+mod lane_slots;
 pub(crate) mod lanes;
 pub(crate) mod selection;
 pub(crate) mod shapes;

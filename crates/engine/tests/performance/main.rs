@@ -55,6 +55,33 @@ fn the_step_allocates_nothing() {
     let _ = std::fs::remove_dir_all(dir);
 }
 
+/// The driver models' step (issue 31): the 200 vehicles driven by `idm`, and by `mobil`, whose
+/// lane index, gap searches and lane-change judgements reuse the storage of the steps before:
+/// not one allocation in 100 steps once warm (before: the lane index's hash map and lists,
+/// built anew at every step).
+#[test]
+fn the_driver_models_step_allocates_nothing() {
+    let _serial = serial();
+    for model in ["idm", "mobil"] {
+        let dir = scale::scratch(&format!("alloc-{model}"));
+        let path = scale::write_traffic(&dir, VEHICLES, 300.0, model);
+        let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+        for _ in 0..WARM_UP {
+            engine.step(&mut (), &mut ()).expect("steps");
+        }
+        let n = allocations(|| {
+            for _ in 0..COUNTED {
+                assert_eq!(engine.step(&mut (), &mut ()).expect("steps"), None);
+            }
+        });
+        assert_eq!(
+            n, 0,
+            "allocations in {COUNTED} steps of {VEHICLES} {model} vehicles"
+        );
+        let _ = std::fs::remove_dir_all(dir);
+    }
+}
+
 /// With the trajectory CSV (rows formatted in a reused buffer, output/fixed.rs) the step
 /// allocates nothing either; the bytes go to a sink so that no growing buffer is counted.
 #[test]

@@ -59,12 +59,21 @@ pub(crate) fn driving_direction(road: &Road, id: i32) -> Direction {
 impl RoadNetwork {
     /// The handle of lane `lane_id` in the lane section of `road_id` at `s`.
     pub fn lane_handle(&self, road_id: &str, lane_id: i32, s: f64) -> Option<LaneHandle> {
-        let (ri, road) = self.road_or_err(road_id).ok()?;
+        let (ri, _) = self.road_or_err(road_id).ok()?;
+        self.lane_handle_on(RoadHandle(ri as u32), lane_id, s)
+    }
+
+    /// [`lane_handle`](Self::lane_handle) on the road of handle `road` (no hash of its id).
+    ///
+    /// # Panics
+    /// If the handle is of another, larger network.
+    pub fn lane_handle_on(&self, road: RoadHandle, lane_id: i32, s: f64) -> Option<LaneHandle> {
+        let r = self.road_at(road);
         // A lane ending at s is found at its end (`Road::lane_section_holding`).
-        let k = road.lane_section_index_holding(lane_id, s);
-        road.lane_sections[k].lane(lane_id)?;
+        let k = r.lane_section_index_holding(lane_id, s);
+        r.lane_sections[k].lane(lane_id)?;
         Some(LaneHandle {
-            road: ri as u32,
+            road: road.0,
             section: k as u32,
             lane: lane_id,
         })
