@@ -33,7 +33,13 @@ pub(crate) fn leader(view: &ControllerView<'_>) -> Option<Leader> {
 /// (`idm`, `mobil`) stop for red lights as behind a standing vehicle. The `acc` controller, a
 /// driver-assistance function that does not see signals, does not use this.
 pub(crate) fn with_red_light(view: &ControllerView<'_>, leader: Option<Leader>) -> Option<Leader> {
-    let light = view.red_light().map(|gap| Leader { gap, speed: 0.0 });
+    nearer(leader, view.red_light())
+}
+
+/// `leader`, or a red light `light` m ahead as a standing obstacle when it is nearer: the
+/// rule of [`with_red_light`] for a caller that asked for the light once.
+pub(crate) fn nearer(leader: Option<Leader>, light: Option<Real>) -> Option<Leader> {
+    let light = light.map(|gap| Leader { gap, speed: 0.0 });
     match (leader, light) {
         (Some(l), Some(r)) => Some(if r.gap < l.gap { r } else { l }),
         (l, r) => l.or(r),

@@ -27,9 +27,9 @@
 
 use opendrive::Real;
 
-use super::car_following::{with_red_light, IdmController};
+use super::car_following::{nearer, IdmController};
 use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
-use super::view::{ControllerView, NeighbourLane, Side};
+use super::view::{Beside, ControllerView, Gap, Side};
 use crate::models::idm::{IdmParameters, Leader};
 use crate::models::mobil::{FollowerChange, LaneChangeCandidate, MobilParameters};
 
@@ -61,94 +61,171 @@ impl MobilController {
         }
     }
 
-    /// The MOBIL verdict on changing into `lane` (module doc); `None` when the lane is
-    /// occupied alongside or its road mark may not be crossed.
-    fn judge(&self, view: &ControllerView<'_>, lane: &NeighbourLane) -> Option<Real> {
-        if lane.occupied || !lane.crossing_permitted {
+    /// The MOBIL verdict on changing into the lane `b` (module doc): its margin when the
+    /// change is safe and worth it. The accelerations are those of the straightforward rule
+    /// ([`Self::judge_each`] in the tests), computed in an order that stops early: a lane that
+    /// is occupied or behind a mark not to be crossed costs no gap search, a change unsafe for
+    /// the changer no search of the new follower, an unsafe one for the new follower no
+    /// weighing of the old follower (each leaves the verdict "no change"); and the free-road
+    /// term of a speed is evaluated once for all the leaders weighed at that speed.
+    fn judge(&self, view: &ControllerView<'_>, own: &mut Own, b: &Beside) -> Option<Real> {
+        if b.occupied || !b.crossing_permitted {
             return None;
         }
         let p = &self.idm.params;
-        let v = view.entity().speed.max(0.0);
-        let len = view.length();
-        let to = |g: super::view::Gap| Leader {
-            gap: g.gap,
-            speed: g.speed,
-        };
-        let own_leader = view.leader();
+        let (v, len) = (own.v, own.len);
+        let lane_leader = view.leader_beside(b);
         // A red light ahead (run option stop_at_red_lights) stands across both lanes: no
         // incentive to change for it.
-        let a_c = p.acceleration(v, with_red_light(view, own_leader.map(to)));
-        let own_after = p.acceleration(v, with_red_light(view, lane.leader.map(to)));
-        let old_follower = view.follower().map(|o| {
-            let vo = o.speed.max(0.0);
-            let behind_me = Leader {
-                gap: o.gap,
-                speed: v,
-            };
-            let behind_leader = own_leader.map(|l| Leader {
-                gap: o.gap + len + l.gap,
-                speed: l.speed,
-            });
-            FollowerChange {
-                before: p.acceleration(vo, Some(behind_me)),
-                after: p.acceleration(vo, behind_leader),
-            }
-        });
-        let new_follower = lane.follower.map(|n| {
+        let own_after = p.acceleration_with_free(own.free, v, nearer(lane_leader.map(to), own.light));
+        if !self.mobil.safe_for_changer(own_after) {
+            return None;
+        }
+        let new_follower = view.follower_beside(b).map(|n| {
             let vn = n.speed.max(0.0);
-            let before = lane.leader.map(|l| Leader {
+            let free = p.free_acceleration(vn);
+            let before = lane_leader.map(|l| Leader {
                 gap: n.gap + len + l.gap,
                 speed: l.speed,
             });
+            let behind_me = Leader {
+                gap: n.gap,
+                speed: v,
+            };
             FollowerChange {
-                before: p.acceleration(vn, before),
-                after: p.acceleration(
-                    vn,
-                    Some(Leader {
-                        gap: n.gap,
-                        speed: v,
-                    }),
-                ),
+                before: p.acceleration_with_free(free, vn, before),
+                after: p.acceleration_with_free(free, vn, Some(behind_me)),
             }
         });
+        if new_follower.is_some_and(|n| !self.mobil.safe_for_follower(n.after)) {
+            return None;
+        }
+        let old_follower = *own
+            .old_follower
+            .get_or_insert_with(|| old_follower(p, view, v, len, own.leader));
         let verdict = self.mobil.judge(&LaneChangeCandidate {
             own: FollowerChange {
-                before: a_c,
+                before: own.a_c,
                 after: own_after,
             },
             old_follower,
             new_follower,
-            toward_keep_side: lane.toward_keep_side,
+            toward_keep_side: b.toward_keep_side,
         });
         verdict.change().then_some(verdict.margin)
     }
 
-    /// The lane to change to now, if any.
-    fn decide(&mut self, view: &ControllerView<'_>) -> Option<i32> {
+    /// Whether the controller may decide a lane change now, and a lane a LaneChangeAction
+    /// asked for: `Err(lane)` to take it, `Ok(false)` no decision this step.
+    fn may_decide(&mut self, view: &ControllerView<'_>) -> Result<bool, Option<i32>> {
         let e = view.entity();
-        let track = e.track.as_ref()?;
+        let Some(track) = e.track.as_ref() else {
+            return Ok(false);
+        };
         if track.blend.is_some() || e.lateral_action.is_some() {
-            return None;
+            return Ok(false);
         }
         if let Some(lane) = self.pending.take() {
-            return (lane != track.lane_id).then_some(lane);
+            return Err((lane != track.lane_id).then_some(lane));
         }
         if e.speed < MIN_CHANGE_SPEED || view.time() - self.last_change < MIN_CHANGE_INTERVAL {
-            return None;
+            return Ok(false);
+        }
+        Ok(true)
+    }
+
+    /// The lane to change to now, if any.
+    fn decide(&mut self, view: &ControllerView<'_>, own: &mut Own) -> Option<i32> {
+        match self.may_decide(view) {
+            Err(pending) => return pending,
+            Ok(false) => return None,
+            Ok(true) => {}
         }
         let mut best: Option<(Real, i32)> = None;
         for side in [Side::Left, Side::Right] {
-            let Some(lane) = view.neighbour_lane(side) else {
+            let Some(b) = view.beside(side) else {
                 continue;
             };
-            if let Some(margin) = self.judge(view, &lane) {
+            if let Some(margin) = self.judge(view, own, &b) {
                 if best.map_or(true, |(m, _)| margin > m) {
-                    best = Some((margin, lane.lane));
+                    best = Some((margin, b.lane));
                 }
             }
         }
         best.map(|(_, lane)| lane)
     }
+}
+
+/// What one step of a `mobil` controller knows of its entity's own lane: worked out once for
+/// both lanes beside it and for the longitudinal command.
+struct Own {
+    /// The entity's speed (≥ 0).
+    v: Real,
+    /// The free-road term at `v`.
+    free: Real,
+    /// Its length along the lane.
+    len: Real,
+    /// The leader in its lane.
+    leader: Option<Gap>,
+    /// The red light ahead, if any (run option stop_at_red_lights).
+    light: Option<Real>,
+    /// a_c: the IDM acceleration behind the leader (or the light): also the command.
+    a_c: Real,
+    /// The old follower's accelerations, once weighed.
+    old_follower: Option<Option<FollowerChange>>,
+}
+
+impl Own {
+    fn new(p: &IdmParameters, view: &ControllerView<'_>) -> Self {
+        let v = view.entity().speed.max(0.0);
+        let free = p.free_acceleration(v);
+        let leader = view.leader();
+        let light = view.red_light();
+        Own {
+            v,
+            free,
+            len: view.length(),
+            leader,
+            light,
+            a_c: p.acceleration_with_free(free, v, nearer(leader.map(to), light)),
+            old_follower: None,
+        }
+    }
+}
+
+/// A gap as the IDM's leader.
+fn to(g: Gap) -> Leader {
+    Leader {
+        gap: g.gap,
+        speed: g.speed,
+    }
+}
+
+/// The old follower o (module doc): behind the changer now, behind the changer's leader
+/// `leader` at gap g_o + length + g_c after the change; the changer at speed `v`, `len` long.
+fn old_follower(
+    p: &IdmParameters,
+    view: &ControllerView<'_>,
+    v: Real,
+    len: Real,
+    leader: Option<Gap>,
+) -> Option<FollowerChange> {
+    view.follower().map(|o| {
+        let vo = o.speed.max(0.0);
+        let free = p.free_acceleration(vo);
+        let behind_me = Leader {
+            gap: o.gap,
+            speed: v,
+        };
+        let behind_leader = leader.map(|l| Leader {
+            gap: o.gap + len + l.gap,
+            speed: l.speed,
+        });
+        FollowerChange {
+            before: p.acceleration_with_free(free, vo, Some(behind_me)),
+            after: p.acceleration_with_free(free, vo, behind_leader),
+        }
+    })
 }
 
 impl Controller for MobilController {
@@ -171,12 +248,15 @@ impl Controller for MobilController {
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
-        let lateral = self.decide(view).map(|lane| {
+        let mut own = Own::new(&self.idm.params, view);
+        let lateral = self.decide(view, &mut own).map(|lane| {
             self.last_change = view.time();
             Lateral::ChangeLane(lane)
         });
+        // a_c is the IDM controller's acceleration in this view (the same leader, light,
+        // speed and parameters).
         Command::Motion {
-            longitudinal: Some(Longitudinal::Acceleration(self.idm.acceleration(view))),
+            longitudinal: Some(Longitudinal::Acceleration(own.a_c)),
             lateral,
         }
     }

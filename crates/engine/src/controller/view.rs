@@ -59,6 +59,20 @@ pub struct NeighbourLane {
     pub crossing_permitted: bool,
 }
 
+/// A lane beside the entity's as [`ControllerView::beside`] finds it: a
+/// [`NeighbourLane`] whose leader and follower are not searched yet.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Beside {
+    /// As [`NeighbourLane::lane`].
+    pub lane: i32,
+    /// As [`NeighbourLane::occupied`].
+    pub occupied: bool,
+    /// As [`NeighbourLane::toward_keep_side`].
+    pub toward_keep_side: bool,
+    /// As [`NeighbourLane::crossing_permitted`].
+    pub crossing_permitted: bool,
+}
+
 /// Which side of the direction of travel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Side {
@@ -224,6 +238,22 @@ impl<'a> ControllerView<'a> {
     /// entity's s driven the same way; with its leader, follower, occupancy and whether the
     /// road mark between lets the entity cross.
     pub fn neighbour_lane(&self, side: Side) -> Option<NeighbourLane> {
+        let b = self.beside(side)?;
+        Some(NeighbourLane {
+            lane: b.lane,
+            leader: self.leader_beside(&b),
+            follower: self.follower_beside(&b),
+            occupied: b.occupied,
+            toward_keep_side: b.toward_keep_side,
+            crossing_permitted: b.crossing_permitted,
+        })
+    }
+
+    /// [`neighbour_lane`](Self::neighbour_lane) without its two gap searches, which
+    /// [`leader_beside`](Self::leader_beside) and [`follower_beside`](Self::follower_beside)
+    /// make when asked: a lane change that is ruled out without them (occupied, a mark not to
+    /// be crossed) costs no search.
+    pub(crate) fn beside(&self, side: Side) -> Option<Beside> {
         let track = self.entity.track.as_ref()?;
         let me = self.index.footprint(self.entity.id)?;
         let n = match side {
@@ -246,10 +276,8 @@ impl<'a> ControllerView<'a> {
             TrafficRule::LeftHand => Side::Left,
             _ => Side::Right,
         };
-        Some(NeighbourLane {
+        Some(Beside {
             lane,
-            leader: self.ahead_in(lane),
-            follower: self.behind_in(lane),
             occupied: self
                 .index
                 .overlapping(h, me.s_range, self.entity.id)
@@ -262,6 +290,16 @@ impl<'a> ControllerView<'a> {
                 track.s - section.s,
             ),
         })
+    }
+
+    /// The nearest entity ahead in the lane beside, from the entity's front bumper.
+    pub(crate) fn leader_beside(&self, b: &Beside) -> Option<Gap> {
+        self.ahead_in(b.lane)
+    }
+
+    /// The nearest entity behind in the lane beside, from the entity's rear bumper.
+    pub(crate) fn follower_beside(&self, b: &Beside) -> Option<Gap> {
+        self.behind_in(b.lane)
     }
 
     /// The entity's length along its direction of travel (m): its box's s-range.

@@ -93,7 +93,13 @@ impl IdmParameters {
 
     /// The IDM acceleration (m/s²) at speed `v` behind `leader` (none: free road).
     pub fn acceleration(&self, v: Real, leader: Option<Leader>) -> Real {
-        let free = self.free_acceleration(v);
+        self.acceleration_with_free(self.free_acceleration(v), v, leader)
+    }
+
+    /// [`acceleration`](Self::acceleration) given its free-road term `free` =
+    /// [`free_acceleration`](Self::free_acceleration)`(v)`: a caller weighing several leaders
+    /// for one speed (MOBIL) evaluates the power (v/v0)^δ once.
+    pub fn acceleration_with_free(&self, free: Real, v: Real, leader: Option<Leader>) -> Real {
         match leader {
             None => free,
             Some(l) => {

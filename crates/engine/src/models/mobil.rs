@@ -89,11 +89,25 @@ impl Verdict {
 }
 
 impl MobilParameters {
+    /// The safety criterion's part for the changing vehicle: ã_c ≥ −b_safe (module doc). A
+    /// caller may stop weighing a candidate where it fails: the verdict is no change.
+    #[inline]
+    pub fn safe_for_changer(&self, own_after: Real) -> bool {
+        own_after >= -self.safe_deceleration
+    }
+
+    /// The safety criterion's part for the new follower: not ã_n < −b_safe (module doc).
+    #[inline]
+    #[allow(clippy::neg_cmp_op_on_partial_ord)] // written so: a NaN is not "harder than b_safe"
+    pub fn safe_for_follower(&self, new_follower_after: Real) -> bool {
+        !(new_follower_after < -self.safe_deceleration)
+    }
+
     /// Judges `c` by the safety and incentive criteria (module doc).
     pub fn judge(&self, c: &LaneChangeCandidate) -> Verdict {
         let gain = |f: Option<FollowerChange>| f.map_or(0.0, |f| f.after - f.before);
-        let safe = c.own.after >= -self.safe_deceleration
-            && !matches!(c.new_follower, Some(n) if n.after < -self.safe_deceleration);
+        let safe = self.safe_for_changer(c.own.after)
+            && !matches!(c.new_follower, Some(n) if !self.safe_for_follower(n.after));
         let incentive = c.own.after - c.own.before
             + self.politeness * (gain(c.new_follower) + gain(c.old_follower));
         let threshold = if c.toward_keep_side {
