@@ -77,7 +77,8 @@ impl MobilController {
         let lane_leader = view.leader_beside(b);
         // A red light ahead (run option stop_at_red_lights) stands across both lanes: no
         // incentive to change for it.
-        let own_after = p.acceleration_with_free(own.free, v, nearer(lane_leader.map(to), own.light));
+        let own_after =
+            p.acceleration_with_free(own.free, v, nearer(lane_leader.map(to), own.light));
         if !self.mobil.safe_for_changer(own_after) {
             return None;
         }
@@ -261,3 +262,7 @@ impl Controller for MobilController {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "mobil_tests.rs"]
+mod tests;

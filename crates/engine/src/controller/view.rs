@@ -12,6 +12,8 @@
 //! the other way). All views of one step are taken before any entity moves, so the order in
 //! which controllers run does not matter.
 
+use std::sync::atomic::AtomicU32;
+
 use opendrive::{Direction, LaneHandle, Real, RoadNetwork, TrafficRule};
 
 use super::external::ExternalInput;
@@ -177,6 +179,19 @@ impl<'a> ControllerView<'a> {
         }
     }
 
+    /// The hint of the entity's searches of kind `query` (0 ahead, 1 behind, 2 alongside) in
+    /// `lane`: its own lane, the one with the larger id or the one with the smaller (lane
+    /// index "Hints").
+    fn hint(&self, lane: i32, query: usize) -> Option<&'a AtomicU32> {
+        let own = self.entity.track.as_ref().map_or(lane, |t| t.lane_id);
+        let which = match lane.cmp(&own) {
+            std::cmp::Ordering::Equal => 0,
+            std::cmp::Ordering::Greater => 1,
+            std::cmp::Ordering::Less => 2,
+        };
+        self.index.hint(self.entity.id, which * 3 + query)
+    }
+
     /// The nearest entity ahead in `lane` from the front bumper, along the lane the entity
     /// will take (its route's choice at road ends).
     fn ahead_in(&self, lane: i32) -> Option<Gap> {
@@ -193,6 +208,7 @@ impl<'a> ControllerView<'a> {
             self.entity.id,
             self.horizon(),
             &mut choose,
+            self.hint(lane, 0),
         )?;
         Some(self.gap(n, false))
     }
@@ -209,6 +225,7 @@ impl<'a> ControllerView<'a> {
             self.entity.id,
             self.horizon(),
             &mut |_, _| None,
+            self.hint(lane, 1),
         )?;
         Some(self.gap(n, true))
     }
@@ -280,7 +297,7 @@ impl<'a> ControllerView<'a> {
             lane,
             occupied: self
                 .index
-                .overlapping(h, me.s_range, self.entity.id)
+                .overlapping(h, me.s_range, self.entity.id, self.hint(lane, 2))
                 .next()
                 .is_some(),
             toward_keep_side: side == keep,

@@ -29,7 +29,17 @@
 //! number and the lane borders are kept where the road's lanes are constant
 //! (runtime/lane_slots.rs), no road id is hashed, and the step allocates nothing once the
 //! vectors have grown (issue 31).
+//!
+//! **Hints.** A search starts with the index of the first entry not before its start point
+//! (`partition_point`). The driver models ask the same questions of the same entity every
+//! step, and the lists change little between steps, so each kind of question keeps, per
+//! entity, the index it found the last time, and the next search walks from there ([`WALK`]
+//! entries, then halves the rest). The index is the same as `partition_point`'s: the list is
+//! sorted by lo, so "lo < from" holds on a prefix of it and fails on the rest, and the walk
+//! stops where the prefix ends, wherever it starts. Where a lo is NaN that is not so, and the
+//! search is `partition_point` alone, as it was.
 
+use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::Arc;
 
 use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork};
@@ -99,6 +109,46 @@ struct LaneEntries {
     entries: Vec<Entry>,
     /// Longest footprint (hi − lo) in the lane: bounds the backward scans.
     max_len: Real,
+    /// Some entry's lo is NaN: "lo < x" is then not monotone along the list, and searches
+    /// take the binary search alone (its answer is the one there is only when it is).
+    unordered: bool,
+}
+
+/// Query kinds per entity whose last answers are kept as hints ([`LaneIndex::hint`]).
+pub const HINTS: usize = 9;
+/// Entries a hinted search walks from its hint before it searches the rest by halves.
+const WALK: usize = 4;
+
+/// The first index of `entries` whose `lo` is not below `from` (`partition_point`), found
+/// from the position `hint` gave the last time, which is stored back (module doc "Hints").
+fn position(lane: &LaneEntries, from: Real, hint: Option<&AtomicU32>) -> usize {
+    let entries = &lane.entries[..];
+    let below = |e: &Entry| e.lo < from;
+    let Some(hint) = hint.filter(|_| !lane.unordered && !from.is_nan()) else {
+        return entries.partition_point(below);
+    };
+    let n = entries.len();
+    let mut g = (hint.load(Ordering::Relaxed) as usize).min(n);
+    let mut found = None;
+    for _ in 0..WALK {
+        if g < n && below(&entries[g]) {
+            g += 1;
+        } else if g > 0 && !below(&entries[g - 1]) {
+            g -= 1;
+        } else {
+            found = Some(g);
+            break;
+        }
+    }
+    let p = found.unwrap_or_else(|| {
+        if g < n && below(&entries[g]) {
+            g + 1 + entries[g + 1..].partition_point(below)
+        } else {
+            entries[..g].partition_point(below)
+        }
+    });
+    hint.store(p as u32, Ordering::Relaxed);
+    p
 }
 
 /// What a query found.
@@ -113,7 +163,7 @@ pub struct Neighbour {
 }
 
 /// The per-lane index of one step (module doc).
-#[derive(Debug, Clone, Default)]
+#[derive(Debug, Default)]
 pub struct LaneIndex {
     footprints: Vec<Option<Footprint>>,
     /// The network's lane numbering (made at the first build on a network).
@@ -122,6 +172,8 @@ pub struct LaneIndex {
     lanes: Vec<LaneEntries>,
     touched: Vec<usize>,
     borders: LaneBorders,
+    /// [`HINTS`] per entity: where each kind of search found its answer the last time.
+    hints: Vec<AtomicU32>,
 }
 
 /// The s- and t-ranges of `e`'s box on a road where its reference point is at (s, t) and its
@@ -166,9 +218,14 @@ impl LaneIndex {
             let lane = &mut self.lanes[slot];
             lane.entries.clear();
             lane.max_len = 0.0;
+            lane.unordered = false;
         }
         self.footprints.clear();
         self.footprints.resize(entities.len(), None);
+        if self.hints.len() != entities.len() * HINTS {
+            self.hints
+                .resize_with(entities.len() * HINTS, || AtomicU32::new(0));
+        }
         // The road of the last entity: entities on one road look its id up once.
         let mut last: Option<(&str, RoadHandle)> = None;
         for e in entities {
@@ -252,6 +309,7 @@ impl LaneIndex {
                 self.touched.push(slot);
             }
             entries.max_len = entries.max_len.max(s_range.1 - s_range.0);
+            entries.unordered |= s_range.0.is_nan();
             entries.entries.push(Entry {
                 lo: s_range.0,
                 hi: s_range.1,
@@ -305,6 +363,13 @@ impl LaneIndex {
         }
     }
 
+    /// The hint of entity `id`'s searches of kind `kind` (< [`HINTS`]): a caller that asks
+    /// the same kind of question for an entity each step (its leader, say) passes it to
+    /// [`nearest`](Self::nearest) and [`overlapping`](Self::overlapping).
+    pub fn hint(&self, id: EntityId, kind: usize) -> Option<&AtomicU32> {
+        self.hints.get(id.index() * HINTS + kind)
+    }
+
     /// The entries of lane `h` (empty where no entity is in it).
     #[inline]
     fn lane(&self, h: LaneHandle) -> Option<&LaneEntries> {
@@ -324,11 +389,12 @@ impl LaneIndex {
         h: LaneHandle,
         (lo, hi): (Real, Real),
         exclude: EntityId,
+        hint: Option<&AtomicU32>,
     ) -> impl Iterator<Item = EntityId> + '_ {
         let lane = self.lane(h);
         let entries = lane.map_or(&[][..], |l| &l.entries[..]);
         let max_len = lane.map_or(0.0, |l| l.max_len);
-        let end = entries.partition_point(|e| e.lo < hi);
+        let end = lane.map_or(0, |l| position(l, hi, hint));
         entries[..end]
             .iter()
             .rev()
@@ -340,6 +406,7 @@ impl LaneIndex {
     /// The nearest entity other than `exclude` whose footprint reaches past `from` travelling
     /// `direction` from s `from` on lane `start`, within `horizon` m (module doc). `choose`
     /// picks the successor where the road whose id it is given ends (`None`: the first).
+    /// `hint` ([`hint`](Self::hint)) speeds the search in `start`.
     #[allow(clippy::too_many_arguments)]
     pub fn nearest(
         &self,
@@ -350,12 +417,14 @@ impl LaneIndex {
         exclude: EntityId,
         horizon: Real,
         choose: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
+        hint: Option<&AtomicU32>,
     ) -> Option<Neighbour> {
         let (mut h, mut at, mut direction) = (start, from, direction);
+        let mut hint = hint;
         // Distance travelled to `at`.
         let mut walked = 0.0;
         for _ in 0..MAX_HOPS {
-            if let Some(found) = self.in_lane(h, at, direction, exclude) {
+            if let Some(found) = self.in_lane(h, at, direction, exclude, hint.take()) {
                 let gap = walked + found.gap;
                 return (gap <= horizon).then_some(Neighbour { gap, ..found });
             }
@@ -402,10 +471,11 @@ impl LaneIndex {
         from: Real,
         direction: Direction,
         exclude: EntityId,
+        hint: Option<&AtomicU32>,
     ) -> Option<Neighbour> {
         let lane = self.lane(h)?;
         let entries = &lane.entries;
-        let p = entries.partition_point(|e| e.lo < from);
+        let p = position(lane, from, hint);
         match direction {
             Direction::Forward => {
                 // An entry starting before `from` but reaching past it overlaps: gap 0.
@@ -509,6 +579,7 @@ mod tests {
             EntityId(me),
             500.0,
             &mut |_, _| None,
+            None,
         )
     }
 
@@ -569,6 +640,7 @@ mod tests {
             EntityId(0),
             20.0,
             &mut |_, _| None,
+            None,
         );
         assert!(near.is_none());
     }
@@ -593,6 +665,7 @@ mod tests {
                 EntityId(1),
                 500.0,
                 &mut |_, _| None,
+                None,
             )
             .expect("a follower");
         assert_eq!(back.id, EntityId(0));
@@ -602,9 +675,90 @@ mod tests {
         assert_eq!((n.id, n.gap), (EntityId(2), 0.0));
         assert_eq!(back.direction, Direction::Backward);
         let beside: Vec<_> = index
-            .overlapping(f.handle, f.s_range, EntityId(1))
+            .overlapping(f.handle, f.s_range, EntityId(1), None)
             .collect();
         assert_eq!(beside, vec![EntityId(2)]);
+    }
+
+    /// The hinted search is `partition_point` (module doc "Hints"): on lists with repeated
+    /// values, −0 and +0, and lists short and long, from every hint (in range or past the end)
+    /// and for start points on, between and beyond the entries, the index is the same and is
+    /// stored back as the next hint; with a NaN lo in the list, or a NaN start point, the
+    /// search is `partition_point` alone.
+    #[test]
+    fn the_hinted_search_is_partition_point() {
+        // A small deterministic generator (64-bit LCG, Knuth's constants).
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (state >> 33) as f64 / (1u64 << 31) as f64
+        };
+        let mut checked = 0;
+        for n in [0usize, 1, 2, 5, 17, 120] {
+            let mut los: Vec<Real> = (0..n)
+                .map(|_| (next() * 40.0).round() * 0.5 - 5.0)
+                .collect();
+            if n > 3 {
+                los[1] = -0.0;
+                los[2] = 0.0;
+            }
+            los.sort_by(|a, b| a.total_cmp(b));
+            let lane = LaneEntries {
+                entries: los
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &lo)| Entry {
+                        lo,
+                        hi: lo + 4.5,
+                        id: EntityId(i as u32),
+                    })
+                    .collect(),
+                max_len: 4.5,
+                unordered: false,
+            };
+            let mut froms: Vec<Real> = los.iter().flat_map(|&l| [l, l + 0.25, l - 0.25]).collect();
+            froms.extend([-100.0, 100.0, -0.0, 0.0, Real::INFINITY, Real::NEG_INFINITY]);
+            for &from in &froms {
+                let expected = lane.entries.partition_point(|e| e.lo < from);
+                for start in 0..=n + 3 {
+                    let hint = AtomicU32::new(start as u32);
+                    assert_eq!(
+                        position(&lane, from, Some(&hint)),
+                        expected,
+                        "n {n} from {from} hint {start}"
+                    );
+                    assert_eq!(hint.load(Ordering::Relaxed) as usize, expected);
+                    checked += 1;
+                }
+            }
+            // A NaN start point: no hint is used or stored.
+            let hint = AtomicU32::new(7);
+            // "lo < NaN" fails for every lo: index 0.
+            assert_eq!(position(&lane, Real::NAN, Some(&hint)), 0);
+            assert_eq!(hint.load(Ordering::Relaxed), 7);
+        }
+        assert!(checked > 5_000, "{checked}");
+        // A NaN lo: "lo < from" holds after it again, the walk could stop at it; the binary
+        // search alone answers.
+        let nan = LaneEntries {
+            entries: [1.0, Real::NAN, 3.0]
+                .iter()
+                .enumerate()
+                .map(|(i, &lo)| Entry {
+                    lo,
+                    hi: 9.0,
+                    id: EntityId(i as u32),
+                })
+                .collect(),
+            max_len: 8.0,
+            unordered: true,
+        };
+        let hint = AtomicU32::new(2);
+        let expected = nan.entries.partition_point(|e| e.lo < 5.0);
+        assert_eq!(position(&nan, 5.0, Some(&hint)), expected);
+        assert_eq!(hint.load(Ordering::Relaxed), 2);
     }
 
     /// A car driving lane 1 (towards −s) at s 60 sees the car at s 20 of the same lane ahead:

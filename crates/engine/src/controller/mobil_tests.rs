@@ -1,0 +1,225 @@
+//! The `mobil` controller's step against the straightforward rule, bit for bit: the rule as
+//! the module doc states it, every acceleration computed in full for both lanes beside
+//! ([`judge_each`], [`decide_each`], [`step_each`]: the controller's code before issue 31),
+//! on many crowded highways and parameter sets.
+
+use opendrive::{Real, RoadNetwork};
+
+use super::*;
+use crate::controller::car_following::with_red_light;
+use crate::controller::view::NeighbourLane;
+use crate::domain::{BoundingBox, Vector3};
+use crate::runtime::entity::{Entity, EntityId, EntityKind};
+use crate::runtime::lane_index::LaneIndex;
+use crate::runtime::world::World;
+
+/// The verdict on `lane` with every acceleration computed (the rule of the module doc).
+fn judge_each(
+    c: &MobilController,
+    view: &ControllerView<'_>,
+    lane: &NeighbourLane,
+) -> Option<Real> {
+    if lane.occupied || !lane.crossing_permitted {
+        return None;
+    }
+    let p = &c.idm.params;
+    let v = view.entity().speed.max(0.0);
+    let len = view.length();
+    let own_leader = view.leader();
+    let a_c = p.acceleration(v, with_red_light(view, own_leader.map(to)));
+    let own_after = p.acceleration(v, with_red_light(view, lane.leader.map(to)));
+    let old_follower = view.follower().map(|o| {
+        let vo = o.speed.max(0.0);
+        let behind_me = Leader {
+            gap: o.gap,
+            speed: v,
+        };
+        let behind_leader = own_leader.map(|l| Leader {
+            gap: o.gap + len + l.gap,
+            speed: l.speed,
+        });
+        FollowerChange {
+            before: p.acceleration(vo, Some(behind_me)),
+            after: p.acceleration(vo, behind_leader),
+        }
+    });
+    let new_follower = lane.follower.map(|n| {
+        let vn = n.speed.max(0.0);
+        let before = lane.leader.map(|l| Leader {
+            gap: n.gap + len + l.gap,
+            speed: l.speed,
+        });
+        FollowerChange {
+            before: p.acceleration(vn, before),
+            after: p.acceleration(
+                vn,
+                Some(Leader {
+                    gap: n.gap,
+                    speed: v,
+                }),
+            ),
+        }
+    });
+    let verdict = c.mobil.judge(&LaneChangeCandidate {
+        own: FollowerChange {
+            before: a_c,
+            after: own_after,
+        },
+        old_follower,
+        new_follower,
+        toward_keep_side: lane.toward_keep_side,
+    });
+    verdict.change().then_some(verdict.margin)
+}
+
+/// The lane to change to, both lanes beside judged in full.
+fn decide_each(c: &mut MobilController, view: &ControllerView<'_>) -> Option<i32> {
+    let e = view.entity();
+    let track = e.track.as_ref()?;
+    if track.blend.is_some() || e.lateral_action.is_some() {
+        return None;
+    }
+    if let Some(lane) = c.pending.take() {
+        return (lane != track.lane_id).then_some(lane);
+    }
+    if e.speed < MIN_CHANGE_SPEED || view.time() - c.last_change < MIN_CHANGE_INTERVAL {
+        return None;
+    }
+    let mut best: Option<(Real, i32)> = None;
+    for side in [Side::Left, Side::Right] {
+        let Some(lane) = view.neighbour_lane(side) else {
+            continue;
+        };
+        if let Some(margin) = judge_each(c, view, &lane) {
+            if best.map_or(true, |(m, _)| margin > m) {
+                best = Some((margin, lane.lane));
+            }
+        }
+    }
+    best.map(|(_, lane)| lane)
+}
+
+/// The command, the IDM's acceleration asked of the IDM controller.
+fn step_each(c: &mut MobilController, view: &ControllerView<'_>) -> Command {
+    let lateral = decide_each(c, view).map(|lane| {
+        c.last_change = view.time();
+        Lateral::ChangeLane(lane)
+    });
+    Command::Motion {
+        longitudinal: Some(Longitudinal::Acceleration(c.idm.acceleration(view))),
+        lateral,
+    }
+}
+
+/// Road "A": 1 km along +x, right lanes −1 … −4 (3.5 m) towards +s, lane 1 towards −s; a
+/// solid mark between lanes −3 and −4 on s 600…1000 (no change across it there).
+fn network() -> RoadNetwork {
+    let lane = |id: i32, mark: &str| {
+        format!(
+            r#"<lane id="{id}" type="driving"><link/><width sOffset="0" a="3.5" b="0" c="0" d="0"/>{mark}</lane>"#
+        )
+    };
+    let broken = r#"<roadMark sOffset="0" type="broken"/>"#;
+    let solid_late =
+        r#"<roadMark sOffset="0" type="broken"/><roadMark sOffset="600" type="solid"/>"#;
+    let xodr = format!(
+        r#"<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="A" junction="-1" length="1000"><link/><planView><geometry s="0" x="0" y="0" hdg="0" length="1000"><line/></geometry></planView><lanes><laneSection s="0"><left>{l1}</left><center><lane id="0" type="none"/></center><right>{r1}{r2}{r3}{r4}</right></laneSection></lanes></road>
+</OpenDRIVE>"#,
+        l1 = lane(1, broken),
+        r1 = lane(-1, broken),
+        r2 = lane(-2, broken),
+        r3 = lane(-3, solid_late),
+        r4 = lane(-4, broken),
+    );
+    RoadNetwork::from_str(&xodr, std::path::Path::new("mobil_test.xodr")).expect("road")
+}
+
+/// A world of `n` 4.5 m × 2 m cars at pseudo-random s, lanes (some across a lane marking)
+/// and speeds (0–35 m/s), from `seed`.
+fn crowded(n: usize, seed: u64) -> World {
+    let mut state = seed;
+    let mut next = move || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 33) as f64 / (1u64 << 31) as f64
+    };
+    let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 4.5, 2.0, 1.5).expect("box");
+    let entities = (0..n as u32)
+        .map(|i| Entity::new(EntityId(i), &format!("c{i}"), EntityKind::Vehicle, b))
+        .collect();
+    let mut w = World::new(std::sync::Arc::new(network()), entities);
+    for i in 0..n {
+        let s = 20.0 + next() * 900.0;
+        let lane = 1.0 + (next() * 4.0).floor();
+        // One car in eight straddles the marking towards the next lane.
+        let t = -(lane - 0.5) * 3.5 - if next() < 0.125 { 1.75 } else { 0.0 };
+        let pose = w.network.road_pose("A", s, t).expect("on road");
+        let found = w.network.locate(pose.x, pose.y, Some(pose.h));
+        let id = EntityId(i as u32);
+        w.place_resolved(id, pose, found);
+        w.entity_mut(id).speed = (next() * 35.0).min(34.0);
+    }
+    w
+}
+
+/// On 40 highways of 60 cars, with four parameter sets (the defaults; egoistic with no
+/// threshold; a low b_safe that makes many changes unsafe; no keep-side bias) and desired
+/// speeds of 20 and 36 m/s, the step's command (acceleration and lane change) has the bits of
+/// [`step_each`]'s. Both kinds of outcome occur many times.
+#[test]
+fn the_shortcut_gives_the_full_rule_bit_for_bit() {
+    let sets = [
+        MobilParameters::default(),
+        MobilParameters {
+            politeness: 0.0,
+            change_threshold: 0.0,
+            ..MobilParameters::default()
+        },
+        MobilParameters {
+            safe_deceleration: 0.5,
+            ..MobilParameters::default()
+        },
+        MobilParameters {
+            right_bias: 0.0,
+            ..MobilParameters::default()
+        },
+    ];
+    let (mut changes, mut keeps) = (0, 0);
+    for seed in 1..=40u64 {
+        let w = crowded(60, seed);
+        let index = LaneIndex::build(&w.network, w.entities());
+        for e in w.entities() {
+            let view =
+                ControllerView::new(10.0, e, w.entities(), &w.network, &index, None, &w.signals);
+            for mobil in sets {
+                for desired in [20.0, 36.0] {
+                    let idm = IdmParameters {
+                        desired_speed: desired,
+                        ..IdmParameters::default()
+                    };
+                    let mut fast = MobilController::new(idm, true, mobil);
+                    let mut full = fast.clone();
+                    let (a, b) = (fast.step(&view, 0.05), step_each(&mut full, &view));
+                    assert_eq!(
+                        format!("{a:?}"),
+                        format!("{b:?}"),
+                        "seed {seed}, {}",
+                        e.name
+                    );
+                    match a {
+                        Command::Motion {
+                            lateral: Some(_), ..
+                        } => changes += 1,
+                        _ => keeps += 1,
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        changes > 500 && keeps > 5_000,
+        "{changes} changes, {keeps} keeps"
+    );
+}
