@@ -4,15 +4,14 @@
 //!
 //! Names in the event log: storyboard elements keep their names; Init actions, which have none
 //! in the file, are named `Init ENTITY ACTIONTYPE` (esmini's form), global Init actions
-//! `Init ACTIONTYPE`.
+//! `Init ACTIONTYPE`; ACTIONTYPE is the XSD element name, `scenario::ActionKind::type_name`
+//! (the replay names them by it too).
 
 use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use opendrive::RoadNetwork;
-use scenario::{
-    Action, ActionKind, Actors, EntityObject, GlobalAction, PrivateAction, Scenario, Trigger,
-};
+use scenario::{Action, Actors, EntityObject, Scenario, Trigger};
 
 use super::entity::{Entity, EntityId, EntityKind};
 use super::error::RuntimeError;
@@ -162,40 +161,12 @@ struct Builder<'a> {
     selection_actors: Vec<(crate::storyboard::ActionId, super::selection::ActorSpec)>,
 }
 
-/// The XSD element name of an action, for Init action names.
-fn action_type(kind: &ActionKind) -> &'static str {
-    match kind {
-        ActionKind::Private(p) => match p {
-            PrivateAction::Longitudinal(_) => "LongitudinalAction",
-            PrivateAction::Lateral(_) => "LateralAction",
-            PrivateAction::Visibility(_) => "VisibilityAction",
-            PrivateAction::Synchronize(_) => "SynchronizeAction",
-            PrivateAction::Controller(_) => "ControllerAction",
-            PrivateAction::Teleport(_) => "TeleportAction",
-            PrivateAction::Routing(_) => "RoutingAction",
-            PrivateAction::Appearance(_) => "AppearanceAction",
-            PrivateAction::Trailer(_) => "TrailerAction",
-            _ => "PrivateAction",
-        },
-        ActionKind::Global(g) => match g {
-            GlobalAction::Environment(_) => "EnvironmentAction",
-            GlobalAction::Entity { .. } => "EntityAction",
-            GlobalAction::Parameter { .. } => "ParameterAction",
-            GlobalAction::Variable { .. } => "VariableAction",
-            GlobalAction::Traffic { .. } => "TrafficAction",
-            _ => "GlobalAction",
-        },
-        ActionKind::UserDefined(_) => "UserDefinedAction",
-        _ => "Action",
-    }
-}
-
 impl Builder<'_> {
     fn storyboard(&mut self) -> Result<StoryboardDesc, RuntimeError> {
         let sb = &self.scenario.storyboard;
         let mut init_actions = Vec::new();
         for a in &sb.init.actions {
-            let name = format!("Init {}", action_type(&a.kind));
+            let name = format!("Init {}", a.kind.type_name());
             init_actions.push(self.action(name, a, Vec::new()));
         }
         // The private actions take effect together: each in the order that resolves positions
@@ -211,7 +182,7 @@ impl Builder<'_> {
                 ),
             )?;
             let a = &p.actions[step.action];
-            let name = format!("Init {} {}", p.entity_ref, action_type(&a.kind));
+            let name = format!("Init {} {}", p.entity_ref, a.kind.type_name());
             init_actions.push(self.action(name, a, vec![actor]));
         }
         let mut stories = Vec::new();
