@@ -27,6 +27,7 @@ mod seed;
 mod shard;
 mod table;
 
+pub use engine::StopReason;
 pub use merge::{merge, merge_tables, write_outputs, MergeError};
 pub use metrics::{Measures, Observer};
 pub use parquet_file::{to_parquet, ParquetError};
@@ -36,4 +37,4 @@ pub use run::{run, run_variants, selected, Options, RunError};
 pub use save::{variant_dir, Save};
 pub use seed::variant_seed;
 pub use shard::{Shard, ShardError};
-pub use table::{quantize, quantize_time, CsvError, Outcome, Row, Stop, Table, FIXED_COLUMNS};
+pub use table::{quantize, quantize_time, CsvError, Outcome, Row, Table, FIXED_COLUMNS};

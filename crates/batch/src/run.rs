@@ -21,7 +21,7 @@ use crate::plan::Plan;
 use crate::save::{variant_dir, Outputs, Save};
 use crate::seed::variant_seed;
 use crate::shard::Shard;
-use crate::table::{Outcome, Row, Stop, Table};
+use crate::table::{Outcome, Row, Table};
 
 /// How to run a batch.
 #[derive(Debug, Clone)]
@@ -241,7 +241,7 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
     };
     let m = observer.measures;
     Ok(Outcome {
-        stop: Some(Stop::of(reason)),
+        stop: Some(reason),
         end_time: engine.time(),
         collision: m.collision,
         first_collision_time: m.first_collision_time,

@@ -19,58 +19,13 @@
 
 use std::fmt::Write as _;
 
-/// Why a variant's run ended (engine::StopReason), or that it did not run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Stop {
-    /// The storyboard's stop trigger fired.
-    StopTrigger,
-    /// Every Story completed.
-    StoriesComplete,
-    /// `--duration` elapsed.
-    Duration,
-    /// The cap on simulated time was reached.
-    TimeCap,
-}
-
-impl Stop {
-    /// The CSV text.
-    pub fn name(self) -> &'static str {
-        match self {
-            Stop::StopTrigger => "stop_trigger",
-            Stop::StoriesComplete => "stories_complete",
-            Stop::Duration => "duration",
-            Stop::TimeCap => "time_cap",
-        }
-    }
-
-    /// The stop of CSV text `name`.
-    pub fn from_name(name: &str) -> Option<Stop> {
-        [
-            Stop::StopTrigger,
-            Stop::StoriesComplete,
-            Stop::Duration,
-            Stop::TimeCap,
-        ]
-        .into_iter()
-        .find(|s| s.name() == name)
-    }
-
-    /// The stop of an engine run.
-    pub fn of(reason: engine::StopReason) -> Stop {
-        match reason {
-            engine::StopReason::StopTrigger => Stop::StopTrigger,
-            engine::StopReason::StoriesComplete => Stop::StoriesComplete,
-            engine::StopReason::Duration => Stop::Duration,
-            engine::StopReason::TimeCap => Stop::TimeCap,
-        }
-    }
-}
+use engine::StopReason;
 
 /// What one run of a variant gave.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Outcome {
     /// Why it ended.
-    pub stop: Option<Stop>,
+    pub stop: Option<StopReason>,
     /// Simulated time at the end (s).
     pub end_time: f64,
     /// The host's box touched another entity's at some frame.
@@ -193,7 +148,7 @@ impl Table {
                 let _ = write!(
                     out,
                     ",{},{:.3},{},{},{},{},{},{},",
-                    o.stop.map_or("", Stop::name),
+                    o.stop.map_or("", StopReason::name),
                     o.end_time,
                     o.collision,
                     opt(o.first_collision_time, 3),
@@ -299,7 +254,7 @@ impl Table {
         }
         let stop = match c[at].as_str() {
             "" => None,
-            s => Some(Stop::from_name(s).ok_or(("a stop_reason", s.to_owned()))?),
+            s => Some(StopReason::from_name(s).ok_or(("a stop_reason", s.to_owned()))?),
         };
         let collision = match c[at + 2].as_str() {
             "true" => true,
@@ -399,7 +354,7 @@ mod tests {
                     variant: 0,
                     params: vec!["20".into(), "a \"b\"".into()],
                     result: Ok(Outcome {
-                        stop: Some(Stop::StopTrigger),
+                        stop: Some(StopReason::StopTrigger),
                         end_time: 22.0,
                         collision: true,
                         first_collision_time: Some(4.25),

@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use batch::{run, Options, Plan, Stop};
+use batch::{run, Options, Plan, StopReason};
 
 fn file(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -55,7 +55,7 @@ fn collision_and_its_time_follow_gap_over_closing_speed() {
             .as_ref()
             .unwrap_or_else(|e| panic!("variant {i}: {e}"));
         let (ego, target, gap) = (EGO[i / 8], TARGET[(i / 4) % 2], GAP[i % 4]);
-        assert_eq!(o.stop, Some(Stop::StopTrigger));
+        assert_eq!(o.stop, Some(StopReason::StopTrigger));
         assert!(
             (o.end_time - 10.0).abs() < 1e-9,
             "variant {i}: {}",

@@ -19,30 +19,10 @@ use crate::simulation::{text, with_sim, OscsimSimulation};
 fn failure(e: engine::RuntimeError) -> Failure {
     let status = match e.kind() {
         RuntimeErrorKind::NotExternal { .. } => OscsimStatus::NotExternal,
+        RuntimeErrorKind::ExternalInput { .. } => OscsimStatus::Argument,
         _ => OscsimStatus::Step,
     };
     Failure::new(status, e.to_string())
-}
-
-fn finite(name: &str, value: f64) -> Result<f64, Failure> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(Failure::argument(format!(
-            "expected a finite {name}, found {value}"
-        )))
-    }
-}
-
-fn unit(name: &str, value: f64) -> Result<f64, Failure> {
-    let v = finite(name, value)?;
-    if (0.0..=1.0).contains(&v) {
-        Ok(v)
-    } else {
-        Err(Failure::argument(format!(
-            "expected {name} in 0..1, found {v}"
-        )))
-    }
 }
 
 /// Gives `name`'s external controller `input`.
@@ -104,10 +84,8 @@ pub unsafe extern "C" fn oscsim_simulation_set_acceleration(
     unsafe {
         set(sim, name, || {
             Ok(ExternalInput::Acceleration {
-                acceleration: finite("acceleration", acceleration)?,
-                steering: (!steering.is_nan())
-                    .then(|| finite("steering", steering))
-                    .transpose()?,
+                acceleration,
+                steering: (!steering.is_nan()).then_some(steering),
             })
         })
     }
@@ -130,9 +108,9 @@ pub unsafe extern "C" fn oscsim_simulation_set_pedals(
     unsafe {
         set(sim, name, || {
             Ok(ExternalInput::Driver(DriverInputs {
-                throttle: unit("throttle", throttle)?,
-                brake: Brake::Percent(unit("brake", brake)?),
-                steering_wheel: finite("steering wheel angle", steering_wheel)?,
+                throttle,
+                brake: Brake::Percent(brake),
+                steering_wheel,
                 gear: GearSelection::Drive,
                 ..DriverInputs::default()
             }))
@@ -159,12 +137,6 @@ pub unsafe extern "C" fn oscsim_simulation_set_pose(
     // SAFETY: the caller's contract.
     unsafe {
         set(sim, name, || {
-            let all = [x, y, z, h, p, r];
-            if all.iter().any(|v| !v.is_finite()) {
-                return Err(Failure::argument(format!(
-                    "expected a finite pose, found {all:?}"
-                )));
-            }
             Ok(ExternalInput::Pose(opendrive::Pose { x, y, z, h, p, r }))
         })
     }

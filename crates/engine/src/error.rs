@@ -144,6 +144,16 @@ pub enum ErrorKind {
         /// The entity and what it has.
         found: String,
     },
+    /// A host program gave an `external` controller an input the engine refuses
+    /// ([`ExternalInput::check`](crate::controller::ExternalInput::check)): a value that is not
+    /// finite, or a pedal outside 0..1. The input in force is kept.
+    #[error("expected {expected}, found {found}")]
+    ExternalInput {
+        /// What the input must be.
+        expected: String,
+        /// The value given.
+        found: String,
+    },
     /// A host program set a parameter ([`Engine::set_parameter`](crate::Engine::set_parameter))
     /// to a value its declaration does not allow: one that does not convert to the declared
     /// type, or one outside its ConstraintGroups. The parameter keeps its value.

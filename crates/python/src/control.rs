@@ -32,61 +32,35 @@ pub struct Control {
     pub pose: Option<Pose>,
 }
 
-fn finite(name: &str, value: Option<f64>) -> PyResult<Option<f64>> {
-    match value {
-        Some(v) if !v.is_finite() => Err(PyValueError::new_err(format!(
-            "expected a finite {name}, found {v}"
-        ))),
-        v => Ok(v),
-    }
-}
-
-fn unit(name: &str, value: Option<f64>) -> PyResult<f64> {
-    match finite(name, value)? {
-        Some(v) if !(0.0..=1.0).contains(&v) => Err(PyValueError::new_err(format!(
-            "expected {name} in 0..1, found {v}"
-        ))),
-        v => Ok(v.unwrap_or(0.0)),
-    }
-}
-
 impl Control {
     /// The engine input: exactly one of acceleration (with steering), pedals (throttle,
-    /// brake, steering_wheel) or pose.
+    /// brake, steering_wheel) or pose. Its values are checked by the engine
+    /// (`ExternalInput::check`: finite numbers, pedals in 0..1), as for the C API.
     pub fn input(self) -> PyResult<ExternalInput> {
-        let acceleration = finite("acceleration", self.acceleration)?;
-        let steering = finite("steering", self.steering)?;
         let pedals =
             self.throttle.is_some() || self.brake.is_some() || self.steering_wheel.is_some();
-        let forms = [acceleration.is_some(), pedals, self.pose.is_some()];
+        let forms = [self.acceleration.is_some(), pedals, self.pose.is_some()];
         if forms.iter().filter(|f| **f).count() != 1
-            || (steering.is_some() && acceleration.is_none())
+            || (self.steering.is_some() && self.acceleration.is_none())
         {
             return Err(PyValueError::new_err(
                 "expected one of: acceleration (with optional steering); throttle, brake, \
                  steering_wheel; pose",
             ));
         }
-        if let Some(acceleration) = acceleration {
+        if let Some(acceleration) = self.acceleration {
             return Ok(ExternalInput::Acceleration {
                 acceleration,
-                steering,
+                steering: self.steering,
             });
         }
         if let Some(pose) = self.pose {
-            let p = opendrive::Pose::from(pose);
-            let all = [p.x, p.y, p.z, p.h, p.p, p.r];
-            if all.iter().any(|v| !v.is_finite()) {
-                return Err(PyValueError::new_err(format!(
-                    "expected a finite pose, found {all:?}"
-                )));
-            }
-            return Ok(ExternalInput::Pose(p));
+            return Ok(ExternalInput::Pose(opendrive::Pose::from(pose)));
         }
         Ok(ExternalInput::Driver(DriverInputs {
-            throttle: unit("throttle", self.throttle)?,
-            brake: Brake::Percent(unit("brake", self.brake)?),
-            steering_wheel: finite("steering_wheel", self.steering_wheel)?.unwrap_or(0.0),
+            throttle: self.throttle.unwrap_or(0.0),
+            brake: Brake::Percent(self.brake.unwrap_or(0.0)),
+            steering_wheel: self.steering_wheel.unwrap_or(0.0),
             gear: GearSelection::Drive,
             ..DriverInputs::default()
         }))

@@ -45,16 +45,6 @@ pub struct Simulation {
     config: EngineConfig,
 }
 
-/// The standard-like name of a stop reason.
-fn reason_name(reason: StopReason) -> &'static str {
-    match reason {
-        StopReason::StopTrigger => "stop_trigger",
-        StopReason::StoriesComplete => "stories_complete",
-        StopReason::Duration => "duration",
-        StopReason::TimeCap => "time_cap",
-    }
-}
-
 /// `values` as a NumPy float64 array (copied once through a bytes buffer).
 fn float_array<'py>(
     py: Python<'py>,
@@ -259,7 +249,7 @@ impl Simulation {
     fn step(&self, py: Python<'_>) -> PyResult<Option<&'static str>> {
         guard(|| {
             let mut inner = self.lock()?;
-            Ok(Self::step_locked(py, &mut inner)?.map(reason_name))
+            Ok(Self::step_locked(py, &mut inner)?.map(StopReason::name))
         })
     }
 
@@ -269,7 +259,7 @@ impl Simulation {
             let mut inner = self.lock()?;
             loop {
                 if let Some(reason) = Self::step_locked(py, &mut inner)? {
-                    return Ok(reason_name(reason));
+                    return Ok(reason.name());
                 }
             }
         })
@@ -308,7 +298,7 @@ impl Simulation {
     /// Why the run ended, None while it goes on.
     #[getter]
     fn stop_reason(&self) -> PyResult<Option<&'static str>> {
-        guard(|| Ok(self.lock()?.engine.stop_reason().map(reason_name)))
+        guard(|| Ok(self.lock()?.engine.stop_reason().map(StopReason::name)))
     }
 
     /// True until the run ends (or a step fails).
@@ -489,7 +479,10 @@ impl Simulation {
         .input()?;
         guard(|| {
             let set = self.lock()?.engine.set_external_input(name, input);
-            set.map_err(|e| SimulationError::new_err(e.to_string()))
+            set.map_err(|e| match e.kind() {
+                engine::ErrorKind::ExternalInput { .. } => PyValueError::new_err(e.to_string()),
+                _ => SimulationError::new_err(e.to_string()),
+            })
         })
     }
 

@@ -77,7 +77,7 @@ pub(crate) use assign::{activate, assign, Origin, Taken};
 pub use car_following::{AccController, IdmController};
 pub use command::{Command, Controller, Lateral, Longitudinal, Strategy};
 pub(crate) use default::place_on_track;
-pub use external::{ExternalController, ExternalInput};
+pub use external::{ExternalController, ExternalInput, InputError};
 pub(crate) use load::set_up;
 pub use mobil::MobilController;
 pub use route::RouteFollow;

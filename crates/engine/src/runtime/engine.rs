@@ -19,8 +19,9 @@ use crate::output::EventRecord;
 use crate::snapshot::ScenarioSource;
 use crate::storyboard::Storyboard;
 
-/// Why a run ended.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// Why a run ended. [`StopReason::name`] is its one name in every output (the batch
+/// results' `stop_reason` column, Python's `Simulation.step`/`run`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum StopReason {
     /// The storyboard's stop trigger fired.
     StopTrigger,
@@ -30,6 +31,32 @@ pub enum StopReason {
     Duration,
     /// The hard cap on simulated time was reached.
     TimeCap,
+}
+
+impl StopReason {
+    /// Every reason, in declaration order.
+    pub const ALL: [StopReason; 4] = [
+        StopReason::StopTrigger,
+        StopReason::StoriesComplete,
+        StopReason::Duration,
+        StopReason::TimeCap,
+    ];
+
+    /// The reason's name in outputs: `stop_trigger`, `stories_complete`, `duration`,
+    /// `time_cap`.
+    pub fn name(self) -> &'static str {
+        match self {
+            StopReason::StopTrigger => "stop_trigger",
+            StopReason::StoriesComplete => "stories_complete",
+            StopReason::Duration => "duration",
+            StopReason::TimeCap => "time_cap",
+        }
+    }
+
+    /// The reason called `name` ([`StopReason::name`]).
+    pub fn from_name(name: &str) -> Option<StopReason> {
+        StopReason::ALL.into_iter().find(|r| r.name() == name)
+    }
 }
 
 impl std::fmt::Display for StopReason {
@@ -302,13 +329,22 @@ impl Engine {
 
     /// Gives entity `name`'s active `external` controller its input for the next steps (engine
     /// module `controller`, `external`): a pose, an acceleration with an optional wheel angle,
-    /// or driver inputs. The input holds until the next call. Errors when the entity does not
-    /// exist or no active `external` controller holds one of its motion domains.
+    /// or driver inputs. The input holds until the next call. Errors, keeping the input in
+    /// force, when the input is not one the engine takes
+    /// ([`ExternalInput::check`](crate::controller::ExternalInput::check): a number that is not
+    /// finite, a pedal outside 0..1), when the entity does not exist or when no active
+    /// `external` controller holds one of its motion domains.
     pub fn set_external_input(
         &mut self,
         name: &str,
         input: crate::controller::ExternalInput,
     ) -> Result<(), RuntimeError> {
+        input.check().map_err(|e| {
+            RuntimeError::new(RuntimeErrorKind::ExternalInput {
+                expected: e.expected,
+                found: e.found,
+            })
+        })?;
         let world = self.world.get_mut();
         let not_external =
             |found: String| RuntimeError::new(RuntimeErrorKind::NotExternal { found });

@@ -86,3 +86,75 @@ fn external_driver_inputs_drive_the_vehicle_model() {
     steps(&mut engine, brake, 11);
     assert_eq!(ego(&engine).1, 0.0);
 }
+
+/// The engine refuses inputs that are not finite or out of range, whichever binding gives
+/// them (issue 33: `set_external_input` took NaN), and keeps the input in force: Ego, at
+/// rest, told 2 m/s² and then given four bad inputs, is at 2 · 1 = 2 m/s after 1 s (20 steps
+/// of 0.05 s).
+#[test]
+fn bad_external_inputs_are_refused_and_the_last_good_one_holds() {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/files/controller/idm_free_road.xosc");
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+    engine.attach_external("Ego").expect("attached");
+    engine.step(&mut (), &mut ()).expect("init step");
+    let accelerate = ExternalInput::Acceleration {
+        acceleration: 2.0,
+        steering: None,
+    };
+    engine
+        .set_external_input("Ego", accelerate)
+        .expect("a good input");
+    let bad = [
+        (
+            ExternalInput::Acceleration {
+                acceleration: f64::NAN,
+                steering: None,
+            },
+            "expected a finite acceleration, found NaN",
+        ),
+        (
+            ExternalInput::Acceleration {
+                acceleration: 1.0,
+                steering: Some(f64::INFINITY),
+            },
+            "expected a finite steering, found inf",
+        ),
+        (
+            ExternalInput::Driver(DriverInputs {
+                throttle: 1.5,
+                ..DriverInputs::default()
+            }),
+            "expected throttle in 0..1, found 1.5",
+        ),
+        (
+            ExternalInput::Driver(DriverInputs {
+                brake: Brake::Force(-1.0),
+                ..DriverInputs::default()
+            }),
+            "expected a brake force of at least 0 N, found -1",
+        ),
+        (
+            ExternalInput::Pose(opendrive::Pose {
+                x: f64::NAN,
+                ..opendrive::Pose::default()
+            }),
+            "expected a finite pose, found [NaN, 0.0, 0.0, 0.0, 0.0, 0.0]",
+        ),
+    ];
+    for (input, message) in bad {
+        let e = engine
+            .set_external_input("Ego", input)
+            .expect_err("refused");
+        assert!(
+            matches!(e.kind(), engine::ErrorKind::ExternalInput { .. }),
+            "{e}"
+        );
+        assert_eq!(e.to_string(), message);
+    }
+    for _ in 0..20 {
+        engine.step(&mut (), &mut ()).expect("steps");
+    }
+    let (_, v, _) = ego(&engine);
+    assert!((v - 2.0).abs() < EXACT, "speed {v}");
+}

@@ -23,3 +23,19 @@ fn duration_ends_the_run_at_its_step_for_any_step_length() {
         assert_eq!(engine.stop_reason(), Some(StopReason::Duration));
     }
 }
+
+/// The one list of stop-reason names (issue 33: batch and Python each had their own): the
+/// names of docs/batch.md's `stop_reason` column, in declaration order, each read back.
+#[test]
+fn stop_reason_names_are_the_documented_ones_and_read_back() {
+    use engine::StopReason;
+    let names: Vec<&str> = StopReason::ALL.iter().map(|r| r.name()).collect();
+    assert_eq!(
+        names,
+        ["stop_trigger", "stories_complete", "duration", "time_cap"]
+    );
+    for r in StopReason::ALL {
+        assert_eq!(StopReason::from_name(r.name()), Some(r));
+    }
+    assert_eq!(StopReason::from_name("Duration"), None);
+}
