@@ -88,12 +88,14 @@ pub fn is_dsl(path: &Path) -> bool {
 pub fn planned(
     file: &Path,
     road: Option<&Path>,
+    scenario: Option<&str>,
     step: &crate::step_args::StepArgs,
 ) -> anyhow::Result<scenario::Scenario> {
     let options = dsl_runtime::Options {
         seed: step.seed,
         dt: step.dt,
         open_end: step.duration.is_some(),
+        scenario: scenario.map(str::to_string),
     };
     match dsl_runtime::load(file, road, &options) {
         Ok(lowered) => Ok(lowered.scenario),

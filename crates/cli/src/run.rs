@@ -27,6 +27,10 @@ pub struct RunArgs {
     /// file its `map.set_map_file(…)` names).
     #[arg(long, value_name = "FILE.xodr")]
     road: Option<PathBuf>,
+    /// The scenario of an OpenSCENARIO DSL file to run (default: the one scenario with a `do`
+    /// that no other invokes).
+    #[arg(long = "scenario", value_name = "NAME")]
+    scenario_name: Option<String>,
     #[command(flatten)]
     step: crate::step_args::StepArgs,
     /// Override a global parameter, NAME=VALUE (repeatable).
@@ -130,7 +134,12 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     let config = args.step.config();
     let wall = Instant::now();
     let scenario = if crate::dsl::is_dsl(&args.scenario) {
-        crate::dsl::planned(&args.scenario, args.road.as_deref(), &args.step)?
+        crate::dsl::planned(
+            &args.scenario,
+            args.road.as_deref(),
+            args.scenario_name.as_deref(),
+            &args.step,
+        )?
     } else {
         scenario::Scenario::load_with_parameters(&args.scenario, &args.params)
             .with_context(|| format!("cannot run {}", args.scenario.display()))?

@@ -88,6 +88,11 @@ cases! {
     extend_global_prefix, err_extend_global_prefix_unknown,
 }
 
+// Issue 28: invocations of scenarios with a `do` (§7.3.9).
+cases! {
+    invocation_instances, err_invocation_recursive,
+}
+
 cases! {
     err_action_of_other_actor, err_actor_modifier_wrong_actor, err_add_length_time,
     err_and_not_bool, err_namespace_ambiguous, err_or_unsat, err_namespace_not_exported, err_argument_twice, err_argument_type, err_compare_length_number,

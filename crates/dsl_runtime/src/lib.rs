@@ -49,7 +49,7 @@ pub use error::{Error, ErrorKind};
 pub use plan::POSITION_TOLERANCE;
 
 /// How to plan.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// Seed of the solver's values, `one_of` choices and duration ranges.
     pub seed: u64,
@@ -58,6 +58,8 @@ pub struct Options {
     pub dt: f64,
     /// Whether the run is bounded from outside (`--duration`), so a phase may have no end.
     pub open_end: bool,
+    /// The scenario to run (`--scenario`); `None`: the one scenario no other invokes.
+    pub scenario: Option<String>,
 }
 
 /// A phase of the plan, for reports and tests.
@@ -145,7 +147,7 @@ pub fn map_file(program: &CheckedProgram, osc: &Path) -> Option<std::path::PathB
         .map(|f| osc.parent().unwrap_or(Path::new("")).join(f))
 }
 
-/// Plans and lowers the one scenario of `program`'s main file that has a `do`.
+/// Plans and lowers the entry scenario of `program` (see [`Options::scenario`]).
 pub fn lower_program(
     program: &CheckedProgram,
     osc: &Path,
@@ -153,10 +155,11 @@ pub fn lower_program(
     road: &opendrive::RoadNetwork,
     options: &Options,
 ) -> Result<Lowered, LoadError> {
-    let resolved = resolve::resolve(program, osc, options.seed).map_err(|f| match f {
-        resolve::Failure::Check(d) => LoadError::Check(d),
-        resolve::Failure::Plan(e) => LoadError::Plan(e),
-    })?;
+    let resolved = resolve::resolve(program, osc, options.seed, options.scenario.as_deref())
+        .map_err(|f| match f {
+            resolve::Failure::Check(d) => LoadError::Check(d),
+            resolve::Failure::Plan(e) => LoadError::Plan(e),
+        })?;
     // The plan drives on the road its named routes are on, else on the first road.
     let plan_road = match plan::named_road(&resolved.root) {
         Some((id, site)) => road::PlanRoad::by_id(road, &id).ok_or_else(|| {

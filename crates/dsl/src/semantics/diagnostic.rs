@@ -30,6 +30,8 @@ pub enum DiagnosticKind {
     Unsupported,
     /// Constraints with no solution.
     Unsatisfiable,
+    /// A behavior that invokes itself, directly or through others.
+    Recursion,
 }
 
 impl DiagnosticKind {
@@ -47,6 +49,7 @@ impl DiagnosticKind {
             DiagnosticKind::Modifier => "osc::modifier",
             DiagnosticKind::Unsupported => "osc::unsupported",
             DiagnosticKind::Unsatisfiable => "osc::unsatisfiable",
+            DiagnosticKind::Recursion => "osc::recursion",
         }
     }
 }

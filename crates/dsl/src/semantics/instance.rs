@@ -2,9 +2,16 @@
 //! scenario, down to scalars, each scalar a solver variable. Lists hold a size variable and,
 //! once their size is decided, their elements. References into the road network (route,
 //! junction, map and their subtypes) are not expanded: the runtime finds them in the map.
+//!
+//! Each invocation of a behavior with a `do` in a scenario's `do` (ASAM OpenSCENARIO DSL 2.1
+//! §7.3.9) is an instance of the invoked behavior of its own, a root named by the caller's
+//! instance and the invocation's phase path (`main.do.round_two`), expanded in turn (invocations
+//! in its `do`: `main.do.round_two.do.slow`). A parameter given an actor or struct of the
+//! caller is that instance (the same node); the other parameters are nodes of their own.
 
 use std::collections::HashMap;
 
+use super::check::{Invocation, Place, Seg, TExpr, TKind};
 use super::hir::CompoundKind;
 use super::model::Model;
 use super::solver::{Problem, VarId, VarKind};
@@ -43,13 +50,20 @@ pub struct Tree {
     pub instances: Vec<(NodeId, CompoundId)>,
     /// The path of each node, for messages and list-size decisions.
     pub paths: Vec<String>,
+    /// Invocation instances: (index of the invocation, the caller's node, the instance).
+    pub invocations: Vec<(usize, NodeId, NodeId)>,
     /// The variables.
     pub problem: Problem,
 }
 
 impl Tree {
-    /// Builds the tree; `sizes` holds the decided size of lists by path.
-    pub fn build(model: &Model, sizes: &HashMap<String, usize>) -> Tree {
+    /// Builds the tree; `sizes` holds the decided size of lists by path, `invocations` the
+    /// program's invocations of behaviors with a `do`.
+    pub fn build(
+        model: &Model,
+        sizes: &HashMap<String, usize>,
+        invocations: &[Invocation],
+    ) -> Tree {
         let mut t = Tree::default();
         let mut b = Builder {
             model,
@@ -65,11 +79,16 @@ impl Tree {
             };
             b.tree.roots.push((g.name.clone(), n));
         }
+        let mut scenarios = Vec::new();
         for (i, c) in model.compounds.iter().enumerate() {
             if c.kind == CompoundKind::Scenario && !is_library(model, CompoundId(i as u32)) {
                 let n = b.node(&Ty::Compound(CompoundId(i as u32)), c.name.clone());
                 b.tree.roots.push((c.name.clone(), n));
+                scenarios.push((CompoundId(i as u32), n, c.name.clone()));
             }
+        }
+        for (c, n, name) in scenarios {
+            b.invocations(invocations, c, n, &name, &mut vec![c]);
         }
         t
     }
@@ -95,6 +114,82 @@ struct Builder<'a> {
 }
 
 impl Builder<'_> {
+    /// The instances of the invocations in the `do` of `caller` (its instance `node` at
+    /// `path`), each a root, and theirs in turn; `open` holds the behaviors being expanded (a
+    /// recursive invocation, reported by the checker, is not expanded again).
+    fn invocations(
+        &mut self,
+        invocations: &[Invocation],
+        caller: CompoundId,
+        node: NodeId,
+        path: &str,
+        open: &mut Vec<CompoundId>,
+    ) {
+        if open.len() > MAX_DEPTH {
+            return;
+        }
+        for (k, inv) in invocations.iter().enumerate() {
+            if inv.caller != caller || open.contains(&inv.callee) {
+                continue;
+            }
+            let here = format!("{path}.{}", inv.path);
+            let id = self.push(Node::Compound(inv.callee, Vec::new()), here.clone());
+            self.tree.instances.push((id, inv.callee));
+            let mut fields = Vec::new();
+            for f in self.model.all_fields(inv.callee) {
+                let alias = inv
+                    .aliases
+                    .iter()
+                    .find(|(p, _)| *p == f.name)
+                    .and_then(|(_, e)| self.place(e, node));
+                let n = match alias {
+                    Some(n) => n,
+                    None => {
+                        let p = format!("{here}.{}", f.name);
+                        if f.is_var {
+                            self.push(Node::State(f.ty.clone()), p)
+                        } else {
+                            self.node(&f.ty, p)
+                        }
+                    }
+                };
+                fields.push((f.name.clone(), n));
+            }
+            self.tree.nodes[id] = Node::Compound(inv.callee, fields);
+            self.tree.roots.push((here.clone(), id));
+            self.tree.invocations.push((k, node, id));
+            open.push(inv.callee);
+            self.invocations(invocations, inv.callee, id, &here, open);
+            open.pop();
+        }
+    }
+
+    /// The node a path argument names, in the caller's instance `this` (`None`: not a path
+    /// the tree holds yet, such as an element of a list not sized yet).
+    fn place(&self, e: &TExpr, this: NodeId) -> Option<NodeId> {
+        let TKind::Path(place, segs) = &e.kind else {
+            return None;
+        };
+        let mut cur = match place {
+            Place::This => this,
+            Place::Global(i) => self.tree.roots.get(*i)?.1,
+            Place::Local(_) | Place::It => return None,
+        };
+        for seg in segs {
+            cur = match (seg, &self.tree.nodes[cur]) {
+                (Seg::Field(f), Node::Compound(_, fields)) => {
+                    fields.iter().find(|(n, _)| n == f)?.1
+                }
+                (Seg::Index(i), Node::List(_, _, Some(items))) => match i.kind {
+                    TKind::Number(x) if x >= 0.0 && x.fract() == 0.0 => *items.get(x as usize)?,
+                    _ => return None,
+                },
+                _ => return None,
+            };
+        }
+        Some(cur)
+    }
+
     fn push(&mut self, n: Node, path: String) -> NodeId {
         self.tree.nodes.push(n);
         self.tree.paths.push(path);

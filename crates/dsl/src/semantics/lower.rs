@@ -29,6 +29,8 @@ const MAX_ALTERNATIVES: usize = 64;
 
 struct Env {
     this: Option<NodeId>,
+    /// The invoked instance of an invocation's constraints (`it`).
+    it: Option<NodeId>,
     locals: Vec<NodeId>,
 }
 
@@ -47,31 +49,39 @@ enum Fail {
 pub fn lower(model: &Model, templates: &[Template], tree: &mut Tree) -> Lowered {
     let mut out = Lowered::default();
     let mut reported = BTreeSet::new();
-    let mut work: Vec<(usize, usize, Option<NodeId>)> = Vec::new();
+    type Context = (Option<NodeId>, Option<NodeId>);
+    let mut work: Vec<(usize, usize, Context)> = Vec::new();
     for (ti, t) in templates.iter().enumerate() {
-        let contexts: Vec<Option<NodeId>> = match t.owner {
-            Owner::Top => vec![None],
+        let contexts: Vec<Context> = match t.owner {
+            Owner::Top => vec![(None, None)],
             Owner::Compound(c) => tree
                 .instances
                 .iter()
                 .filter(|(_, ty)| model.is_subtype(*ty, c))
-                .map(|(n, _)| Some(*n))
+                .map(|(n, _)| (Some(*n), None))
+                .collect(),
+            Owner::Invocation(k) => tree
+                .invocations
+                .iter()
+                .filter(|(site, ..)| *site == k)
+                .map(|(_, caller, it)| (Some(*caller), Some(*it)))
                 .collect(),
         };
-        for this in contexts {
-            let depth = match (t.strength, this) {
+        for (this, it) in contexts {
+            let depth = match (t.strength, it.or(this)) {
                 (Strength::Hard, _) | (_, None) => 0,
                 (_, Some(n)) => 1 + tree.paths[n].matches(['.', '[']).count(),
             };
-            work.push((depth, ti, this));
+            work.push((depth, ti, (this, it)));
         }
     }
     work.sort_by_key(|w| w.0);
-    for (_, ti, this) in work {
+    for (_, ti, (this, it)) in work {
         let t = &templates[ti];
         {
             let mut env = Env {
                 this,
+                it,
                 locals: Vec::new(),
             };
             let origin = out.origins.len() as u32;
@@ -205,6 +215,7 @@ impl Lowerer<'_> {
             Place::Global(i) => self.tree.roots.get(*i).map(|r| r.1),
             Place::This => env.this,
             Place::Local(k) => env.locals.get(*k).copied(),
+            Place::It => env.it,
         }
         .ok_or_else(|| Self::unsupported(e, "a name outside an instance"))?;
         for seg in segs {

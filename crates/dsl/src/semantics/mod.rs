@@ -11,8 +11,8 @@
 //! | `collect` | declarations of all files into a `Model`: names, inheritance, fields, methods (§7.3) |
 //! | `model` | the declaration tables and lookups (fields and methods through inheritance) |
 //! | `types` | static types; physical types identified by dimension (§7.3.1) |
-//! | `check` | type checking of members, constraints, behaviors, modifier applicability (§7.3, §7.4, §8.9) |
-//! | `instance` | the instance tree of a program: one solver variable per scalar field |
+//! | `check` | type checking of members, constraints, behaviors, modifier applicability (§7.3, §7.4, §8.9); invocations of behaviors with a `do` and recursive ones (§7.3.9) |
+//! | `instance` | the instance tree of a program: one solver variable per scalar field, one instance per invocation of a behavior with a `do` |
 //! | `lower` | checked constraints over instances → solver constraints |
 //! | `resolve` | staged list sizing, solving and concrete values |
 //! | `diagnostic` | semantic errors with spans and related spans |

@@ -13,7 +13,7 @@ use source::{LineIndex, SourcePos};
 
 use crate::syntax::parse;
 
-use super::check::{check_model, Template};
+use super::check::{check_model, Invocation, Template};
 use super::collect::collect;
 use super::diagnostic::{Diagnostic, DiagnosticKind as K};
 use super::hir::{FileId, ImportTarget, Item, SourceFile, Span};
@@ -147,6 +147,8 @@ pub struct CheckedProgram {
     pub model: Model,
     /// The constraints (including field defaults).
     pub templates: Vec<Template>,
+    /// The invocations of behaviors with a `do` (each an instance with its own parameters).
+    pub invocations: Vec<Invocation>,
     files: Arc<Vec<Source>>,
 }
 
@@ -154,9 +156,11 @@ impl CheckedProgram {
     /// Concrete values of every field of every global, top-level field and scenario, sampled
     /// with `seed` where the constraints leave a choice (same seed, same values).
     pub fn resolve(&self, seed: u64) -> Result<Resolution, Diagnostics> {
-        resolve(&self.model, &self.templates, seed).map_err(|items| Diagnostics {
-            items,
-            files: self.files.clone(),
+        resolve(&self.model, &self.templates, &self.invocations, seed).map_err(|items| {
+            Diagnostics {
+                items,
+                files: self.files.clone(),
+            }
         })
     }
 
@@ -295,6 +299,7 @@ pub fn check_source_with(
     let program = CheckedProgram {
         model,
         templates: checked.templates,
+        invocations: checked.invocations,
         files,
     };
     // A program whose constraints cannot be lowered or have no solution is not valid.

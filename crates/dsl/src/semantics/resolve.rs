@@ -7,7 +7,7 @@
 
 use std::collections::HashMap;
 
-use super::check::Template;
+use super::check::{Invocation, Template};
 use super::diagnostic::{Diagnostic, DiagnosticKind as K};
 use super::hir::Span;
 use super::instance::{Node, NodeId, Tree};
@@ -148,15 +148,17 @@ pub fn show(v: &Value) -> String {
     }
 }
 
-/// Resolves every instance of `model` under `templates` with `seed`.
+/// Resolves every instance of `model` (with an instance per invocation in `invocations`)
+/// under `templates` with `seed`.
 pub fn resolve(
     model: &Model,
     templates: &[Template],
+    invocations: &[Invocation],
     seed: u64,
 ) -> Result<Resolution, Vec<Diagnostic>> {
     let mut sizes: HashMap<String, usize> = HashMap::new();
     for stage in 0..MAX_STAGES {
-        let mut tree = Tree::build(model, &sizes);
+        let mut tree = Tree::build(model, &sizes, invocations);
         let lowered = lower(model, templates, &mut tree);
         if !lowered.diags.is_empty() {
             return Err(lowered.diags);

@@ -116,7 +116,7 @@ fn read_edge(ctx: &Eval<'_>, e: &Expr, edge: ConditionEdge) -> Result<Cond, Erro
     match &e.kind {
         ExprKind::Temporal(n, args) if n.text == "@" => {
             let name = args.first().and_then(|a| match &a.value.kind {
-                ExprKind::Name(x) => Some(x.clone()),
+                ExprKind::Name(x) => Some(ctx.event_key(x)),
                 _ => None,
             });
             Ok(Cond::Event(name, ctx.site(e.span)))

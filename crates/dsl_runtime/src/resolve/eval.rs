@@ -2,6 +2,10 @@
 //! expressions): literals with units in SI, ranges `[a..b]` drawn from the run's seed, and
 //! references to fields the constraint solver resolved (`npc_speed`, `ego.bounding_box.length`).
 //! Only the `resolve` stage reads the program; what it hands on is plain data.
+//!
+//! Names are read in a [`Frame`]: the entry scenario's, or an invoked behavior's (§7.3.9), whose
+//! parameters are its own instance's fields (`do.round_two.slow`) or, when the invocation gave
+//! an actor or struct, that instance's path (`ego`).
 
 use std::cell::RefCell;
 
@@ -13,6 +17,19 @@ use dsl::{Resolution, Value};
 use super::value::{Arg, Draws, Val};
 use crate::error::{Error, ErrorKind as K, Files, Site};
 
+/// Where names are read: the entry scenario, or an invocation of a behavior with a `do`.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Frame {
+    /// The instance's path relative to the entry scenario, with a trailing `.` (`""` for the
+    /// entry scenario, `do.round_two.` for an invocation in its `do`).
+    pub prefix: String,
+    /// Parameters the invocation gave an instance of the caller's: name → that instance's
+    /// path.
+    pub aliases: Vec<(String, String)>,
+    /// The actor of a behavior declared on an actor (`actor`), as a path.
+    pub actor: Option<String>,
+}
+
 /// What the resolver reads the program with.
 pub(crate) struct Eval<'a> {
     /// Declarations.
@@ -23,8 +40,10 @@ pub(crate) struct Eval<'a> {
     pub root: String,
     /// For positions in messages.
     pub files: Files<'a>,
+    /// Where names are read.
+    pub frame: Frame,
     /// Draws of ranges and `one_of` choices, in resolution order.
-    draws: RefCell<Draws>,
+    draws: &'a RefCell<Draws>,
 }
 
 impl<'a> Eval<'a> {
@@ -34,20 +53,34 @@ impl<'a> Eval<'a> {
         res: &'a Resolution,
         root: String,
         files: Files<'a>,
-        draws: Draws,
+        draws: &'a RefCell<Draws>,
     ) -> Self {
         Eval {
             model,
             res,
             root,
             files,
-            draws: RefCell::new(draws),
+            frame: Frame::default(),
+            draws,
         }
     }
 
-    /// The draws left for the stages after this one.
-    pub(crate) fn into_draws(self) -> Draws {
-        self.draws.into_inner()
+    /// The same reader in `frame` (same draws).
+    pub(crate) fn enter(&self, frame: Frame) -> Eval<'a> {
+        Eval {
+            model: self.model,
+            res: self.res,
+            root: self.root.clone(),
+            files: self.files,
+            frame,
+            draws: self.draws,
+        }
+    }
+
+    /// The key of event `name` of the frame's behavior: its name, prefixed by the invocation's
+    /// path in an invoked behavior (each invocation has events of its own).
+    pub(crate) fn event_key(&self, name: &str) -> String {
+        format!("{}{name}", self.frame.prefix)
     }
 
     /// A draw among `n` choices.
@@ -77,10 +110,12 @@ impl<'a> Eval<'a> {
             .collect()
     }
 
-    /// The dotted path an actor or field expression names (`dut.vehicle`, `g.vehicles[0]`).
+    /// The dotted path an actor or field expression names (`dut.vehicle`, `g.vehicles[0]`),
+    /// relative to the entry scenario: in an invoked behavior, a parameter bound to an
+    /// instance of the caller names that instance, its own fields are under its prefix.
     pub(crate) fn path_of(&self, e: &Expr) -> Option<String> {
         match &e.kind {
-            ExprKind::Name(n) => Some(n.clone()),
+            ExprKind::Name(n) => Some(self.name_path(n)),
             ExprKind::Field(inner, n) => Some(format!("{}.{}", self.path_of(inner)?, n.text)),
             ExprKind::Index(inner, i) => match i.kind {
                 ExprKind::Int(i) => Some(format!("{}[{i}]", self.path_of(inner)?)),
@@ -88,6 +123,24 @@ impl<'a> Eval<'a> {
             },
             _ => None,
         }
+    }
+
+    /// The path of name `n` in the frame.
+    fn name_path(&self, n: &str) -> String {
+        if let Some((_, p)) = self.frame.aliases.iter().find(|(a, _)| a == n) {
+            return p.clone();
+        }
+        if n == "actor" {
+            if let Some(a) = &self.frame.actor {
+                return a.clone();
+            }
+        }
+        let own = format!("{}{n}", self.frame.prefix);
+        if !self.frame.prefix.is_empty() && self.res.get(&format!("{}.{own}", self.root)).is_some()
+        {
+            return own;
+        }
+        n.to_string()
     }
 
     /// The resolved value at `path`: a field of the scenario first, then a global.

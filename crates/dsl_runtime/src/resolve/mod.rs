@@ -22,10 +22,12 @@ mod route;
 mod tree;
 mod value;
 
-use std::collections::BTreeMap;
+use std::cell::RefCell;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
 
 use dsl::semantics::hir::{Behavior, CompoundKind, Member};
+use dsl::semantics::types::CompoundId;
 use dsl::CheckedProgram;
 
 pub(crate) use cond::{Cond, Timed};
@@ -78,53 +80,29 @@ pub(crate) enum Failure {
     Plan(Error),
 }
 
-/// Resolves the one scenario of `program`'s main file that has a `do`, with `seed`.
+/// Resolves the scenario to run (the entry point: `scenario` when named, else the one
+/// scenario with a `do` of the user's files that no other invokes), with `seed`.
 pub(crate) fn resolve(
     program: &CheckedProgram,
     osc: &Path,
     seed: u64,
+    scenario: Option<&str>,
 ) -> Result<Resolved, Failure> {
     let files = Files(program.files());
     let model = &program.model;
-    let main = dsl::semantics::hir::FileId(model.library_files);
-    let scenarios: Vec<_> = model
-        .compounds
-        .iter()
-        .filter(|c| c.kind == CompoundKind::Scenario && c.span.file >= main)
-        .filter_map(|c| {
-            c.members.iter().find_map(|m| match m {
-                Member::Do(d, _) => Some((c, d)),
-                _ => None,
-            })
-        })
-        .collect();
-    let (decl, root) = match scenarios.as_slice() {
-        [one] => *one,
-        [] => {
-            return Err(Failure::Plan(Error {
-                kind: ErrorKind::NoScenario,
-                message: "expected a scenario with a `do` to run, found none".into(),
-                at: format!("{}:1:1", osc.display()),
-            }))
-        }
-        [_, second, ..] => {
-            return Err(Failure::Plan(files.err(
-                ErrorKind::NoScenario,
-                second.0.span,
-                "expected one scenario with a `do` to run, found several",
-            )))
-        }
-    };
+    let (id, root) = entry(program, osc, scenario).map_err(Failure::Plan)?;
+    let decl = model.compound(id);
     let resolution = program.resolve(seed).map_err(Failure::Check)?;
-    let ev = eval::Eval::new(
-        model,
-        &resolution,
-        decl.name.clone(),
-        files,
-        Draws::new(seed),
-    );
-    let root = tree::build(&ev, root, "do".into()).map_err(Failure::Plan)?;
-    let events = events(&ev, &decl.members).map_err(Failure::Plan)?;
+    let draws = RefCell::new(Draws::new(seed));
+    let ev = eval::Eval::new(model, &resolution, decl.name.clone(), files, &draws);
+    let mut entered = Vec::new();
+    let root = tree::build_root(&ev, root, &mut entered).map_err(Failure::Plan)?;
+    let mut events = events(&ev, &decl.members, "").map_err(Failure::Plan)?;
+    for e in entered {
+        let inner = ev.enter(e.frame.clone());
+        let members = &model.compound(e.behavior).members;
+        events.extend(events_of(&inner, members, &e.frame.prefix).map_err(Failure::Plan)?);
+    }
     let objects = objects(&ev, &root);
     Ok(Resolved {
         name: decl.name.clone(),
@@ -132,13 +110,113 @@ pub(crate) fn resolve(
         root,
         objects,
         events,
-        draws: ev.into_draws(),
+        draws: draws.into_inner(),
     })
 }
 
+/// The entry point (ASAM OpenSCENARIO DSL 2.1 §7.3.9 leaves it to the tool): the scenario
+/// named `scenario`, else the one scenario with a `do` in the user's files that no
+/// invocation names; its declaration and `do`.
+fn entry<'p>(
+    program: &'p CheckedProgram,
+    osc: &Path,
+    scenario: Option<&str>,
+) -> Result<(CompoundId, &'p dsl::semantics::hir::Labeled), Error> {
+    let files = Files(program.files());
+    let model = &program.model;
+    let main = dsl::semantics::hir::FileId(model.library_files);
+    let with_do: Vec<(CompoundId, &dsl::semantics::hir::Labeled)> = (0..model.compounds.len())
+        .map(|i| CompoundId(i as u32))
+        .filter(|c| {
+            let d = model.compound(*c);
+            d.kind == CompoundKind::Scenario && d.span.file >= main
+        })
+        .filter_map(|c| {
+            model.compound(c).members.iter().find_map(|m| match m {
+                Member::Do(d, _) => Some((c, d)),
+                _ => None,
+            })
+        })
+        .collect();
+    let start = || scenario::SourcePos::start_of(std::sync::Arc::from(osc)).to_string();
+    let listed = |list: &[(CompoundId, &dsl::semantics::hir::Labeled)]| {
+        list.iter()
+            .map(|(c, _)| {
+                let d = model.compound(*c);
+                format!("`{}` at {}", d.name, files.site(d.span).at())
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    if let Some(name) = scenario {
+        return with_do
+            .iter()
+            .find(|(c, _)| model.compound(*c).name == name)
+            .copied()
+            .ok_or_else(|| Error {
+                kind: ErrorKind::NoScenario,
+                message: format!(
+                    "expected a scenario `{name}` with a `do` (--scenario), found none; scenarios with a `do`: {}",
+                    if with_do.is_empty() { "none".to_string() } else { listed(&with_do) }
+                ),
+                at: start(),
+            });
+    }
+    let invoked: BTreeSet<CompoundId> = program.invocations.iter().map(|i| i.callee).collect();
+    let candidates: Vec<_> = with_do
+        .iter()
+        .copied()
+        .filter(|(c, _)| !invoked.contains(c))
+        .collect();
+    match candidates.as_slice() {
+        [one] => Ok(*one),
+        [] if with_do.is_empty() => Err(Error {
+            kind: ErrorKind::NoScenario,
+            message: "expected a scenario with a `do` to run, found none".into(),
+            at: start(),
+        }),
+        [] => Err(Error {
+            kind: ErrorKind::NoScenario,
+            message: format!(
+                "expected a scenario that no other invokes (the entry point), found every scenario invoked: {}; name one with --scenario NAME",
+                listed(&with_do)
+            ),
+            at: start(),
+        }),
+        [first, ..] => Err(files.err(
+            ErrorKind::NoScenario,
+            model.compound(first.0).span,
+            format!(
+                "expected one scenario that no other invokes (the entry point), found several: {}; name one with --scenario NAME",
+                listed(&candidates)
+            ),
+        )),
+    }
+}
+
+/// Events an invoked behavior declares with a condition (`event e is c`), keyed by the
+/// invocation's `prefix`; `on` handlers of invoked behaviors are not run yet (an error).
+fn events_of(
+    ev: &eval::Eval<'_>,
+    members: &[Member],
+    prefix: &str,
+) -> Result<Vec<EventSpec>, Error> {
+    for m in members {
+        if let Member::On(_, _, span) = m {
+            return Err(ev.files.err(
+                ErrorKind::Unsupported,
+                *span,
+                "expected `on` handlers in the scenario that is run, found one in an invoked behavior (not run yet)",
+            ));
+        }
+    }
+    events(ev, members, prefix)
+}
+
 /// Events the scenario declares with a condition (`event e is c`), and the events `on`
-/// handlers emit, each with the condition that makes it occur.
-fn events(ev: &eval::Eval<'_>, members: &[Member]) -> Result<Vec<EventSpec>, Error> {
+/// handlers emit, each with the condition that makes it occur; names are keyed by `prefix`
+/// (an invocation's events are its own).
+fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<EventSpec>, Error> {
     let mut events = Vec::new();
     let mut handlers = 0;
     for m in members {
@@ -146,7 +224,7 @@ fn events(ev: &eval::Eval<'_>, members: &[Member]) -> Result<Vec<EventSpec>, Err
             Member::Event(e) => {
                 if let Some(spec) = &e.spec {
                     events.push(EventSpec {
-                        name: e.name.text.clone(),
+                        name: format!("{prefix}{}", e.name.text),
                         cond: cond::read(ev, spec),
                         site: ev.site(spec.span),
                         handler: None,

@@ -4,11 +4,20 @@
 //! `with:` modifiers and `until`, every value evaluated. Each phase has a path: the labels (or,
 //! unlabelled, the member's index) from the root `do` down, joined by `.` (`do.get_ahead.1`);
 //! it is the phase's name in the event log.
+//!
+//! An invocation of a behavior with a `do` of its own (a user scenario, or a scenario declared
+//! on an actor, §7.3.9) is that behavior's `do` tree, read in the invocation's frame (its
+//! parameters, its actor) and planted at the invocation's path: `do.round_two` is the invoked
+//! `do`'s root and `do.round_two.slow` its member labelled `slow` (the invoked `do`'s own label
+//! is not part of the path). The invocation's `until` ends that root too.
 
-use dsl::semantics::hir::{Behavior, CompositionOp, Expr, ExprKind, Labeled, WithMember};
+use dsl::semantics::hir::{
+    Arg as HirArg, Behavior, CompositionOp, Expr, ExprKind, Labeled, Member, Span, WithMember,
+};
+use dsl::semantics::types::{CompoundId, Ty};
 
 use super::cond::{self, every_args, Cond};
-use super::eval::Eval;
+use super::eval::{Eval, Frame};
 use super::modifier::{self, Modifier};
 use super::value::Val;
 use crate::error::{Error, ErrorKind as K, Site};
@@ -62,6 +71,19 @@ pub(crate) struct Invoke {
     pub modifiers: Vec<Modifier>,
 }
 
+/// An invocation of a behavior with a `do`, entered while the tree was built: the frame its
+/// names are read in and the behavior (whose events the scenario then has too).
+#[derive(Debug, Clone)]
+pub(crate) struct Entered {
+    /// The invocation's frame.
+    pub frame: Frame,
+    /// The invoked behavior.
+    pub behavior: CompoundId,
+}
+
+/// Deepest nesting of invocations (the checker reports recursive ones; this guards the stack).
+const MAX_INVOCATION_DEPTH: usize = 64;
+
 impl Phase {
     /// Every leaf (invocation, wait or emit) in tree order.
     pub(crate) fn leaves(&self) -> Vec<&Phase> {
@@ -83,12 +105,36 @@ impl Phase {
     }
 }
 
-/// Builds the phase tree of `root` (the scenario's `do` member).
-pub(crate) fn build(ev: &Eval<'_>, root: &Labeled, path: String) -> Result<Phase, Error> {
-    let path = match &root.label {
-        Some(l) if path == "do" => format!("do.{}", l.text),
-        _ => path,
-    };
+/// The path of a `do`'s root below the behavior's instance: `do`, or `do.LABEL`.
+fn root_path(root: &Labeled) -> String {
+    match &root.label {
+        Some(l) => format!("do.{}", l.text),
+        None => "do".to_string(),
+    }
+}
+
+/// Builds the phase tree of the entry scenario's `do` member `root`; `entered` collects the
+/// invocations of behaviors with a `do`.
+pub(crate) fn build_root(
+    ev: &Eval<'_>,
+    root: &Labeled,
+    entered: &mut Vec<Entered>,
+) -> Result<Phase, Error> {
+    let path = root_path(root);
+    build(ev, root, path.clone(), &path, 0, entered)
+}
+
+/// Builds the phase of `root` at phase path `path`; `site_path` is its path in the `do` of the
+/// behavior it is written in (the invocations' names in the resolution), `depth` the number of
+/// enclosing invocations.
+fn build(
+    ev: &Eval<'_>,
+    root: &Labeled,
+    path: String,
+    site_path: &str,
+    depth: usize,
+    entered: &mut Vec<Entered>,
+) -> Result<Phase, Error> {
     match &root.behavior {
         Behavior::Composition {
             op,
@@ -121,7 +167,15 @@ pub(crate) fn build(ev: &Eval<'_>, root: &Labeled, path: String) -> Result<Phase
             let mut out = Vec::new();
             for (i, c) in picked {
                 let seg = c.label.as_ref().map_or(i.to_string(), |l| l.text.clone());
-                out.push(build(ev, c, format!("{path}.{seg}"))?);
+                let site = format!("{site_path}.{seg}");
+                out.push(build(
+                    ev,
+                    c,
+                    format!("{path}.{seg}"),
+                    &site,
+                    depth,
+                    entered,
+                )?);
             }
             if out.is_empty() {
                 return Err(ev.files.err(
@@ -171,23 +225,37 @@ pub(crate) fn build(ev: &Eval<'_>, root: &Labeled, path: String) -> Result<Phase
             with,
             span,
         } => {
-            let Some(actor_expr) = actor else {
+            let actor_path = match actor {
+                Some(a) => Some(ev.path_of(a).ok_or_else(|| {
+                    ev.files.err(
+                        K::UnknownActor,
+                        a.span,
+                        "expected an actor name, found an expression",
+                    )
+                })?),
+                // In a behavior declared on an actor, `drive()` is `actor.drive()`.
+                None => ev.frame.actor.clone(),
+            };
+            if let Some(callee) = invoked_behavior(ev, actor_path.as_deref(), &name.text) {
+                let inv = Invocation {
+                    callee,
+                    actor: actor_path,
+                    args,
+                    with,
+                    span: *span,
+                };
+                return behavior(ev, &inv, path, site_path, depth, entered);
+            }
+            let Some(actor_path) = actor_path else {
                 return Err(ev.files.err(
                     K::Unsupported,
                     *span,
                     format!(
-                        "expected an actor before `{}` (scenario invocations are not run yet)",
+                        "expected an actor before `{}`, or a scenario with a `do`, found neither",
                         name.text
                     ),
                 ));
             };
-            let actor_path = ev.path_of(actor_expr).ok_or_else(|| {
-                ev.files.err(
-                    K::UnknownActor,
-                    actor_expr.span,
-                    "expected an actor name, found an expression",
-                )
-            })?;
             let params = action_params(ev, &actor_path, &name.text);
             let args = ev.args(args, &params);
             let mut duration = None;
@@ -245,7 +313,7 @@ pub(crate) fn build(ev: &Eval<'_>, root: &Labeled, path: String) -> Result<Phase
                 site: ev.site(*span),
                 kind: Kind::Invoke(Invoke {
                     actor: actor_path,
-                    actor_site: ev.site(actor_expr.span),
+                    actor_site: ev.site(actor.as_ref().map_or(*span, |a| a.span)),
                     action: name.text.clone(),
                     modifiers,
                 }),
@@ -257,7 +325,7 @@ pub(crate) fn build(ev: &Eval<'_>, root: &Labeled, path: String) -> Result<Phase
         Behavior::Emit(name, _, span) => Ok(Phase {
             path,
             site: ev.site(*span),
-            kind: Kind::Emit(name.text.clone()),
+            kind: Kind::Emit(ev.event_key(&name.text)),
             duration: None,
             until: None,
             children: Vec::new(),
@@ -268,6 +336,131 @@ pub(crate) fn build(ev: &Eval<'_>, root: &Labeled, path: String) -> Result<Phase
             "expected a composition, wait, emit or action invocation, found call (not run yet)",
         )),
     }
+}
+
+/// The pieces of an invocation of a behavior with a `do`.
+struct Invocation<'h> {
+    callee: CompoundId,
+    /// The actor it is invoked on, as a path.
+    actor: Option<String>,
+    args: &'h [HirArg],
+    with: &'h [WithMember],
+    span: Span,
+}
+
+/// The behavior with a `do` that `actor.name` (or `name` without an actor) invokes, if it
+/// is one (the library's actions have none).
+fn invoked_behavior(ev: &Eval<'_>, actor: Option<&str>, name: &str) -> Option<CompoundId> {
+    let id = match actor {
+        Some(a) => {
+            let ty = ev.lookup(a).and_then(|(_, v)| ev.type_of(v))?;
+            ev.model.behavior_of(ty, name)?
+        }
+        None => *ev.model.behaviors.get(name)?,
+    };
+    do_of(ev, id).map(|_| id)
+}
+
+/// The `do` of behavior `id` (or of its nearest ancestor that has one).
+fn do_of<'m>(ev: &Eval<'m>, id: CompoundId) -> Option<&'m Labeled> {
+    ev.model.ancestry(id).into_iter().find_map(|c| {
+        ev.model.compound(c).members.iter().find_map(|m| match m {
+            Member::Do(d, _) => Some(d),
+            _ => None,
+        })
+    })
+}
+
+/// The phase of an invocation of a behavior with a `do`: that `do`'s tree read in a frame of
+/// its own (parameters given an instance of the caller's name it; the others are the
+/// invocation's instance's fields, which the solver resolved with the arguments), at `path`,
+/// ended also by the invocation's `until`.
+fn behavior(
+    ev: &Eval<'_>,
+    inv: &Invocation<'_>,
+    path: String,
+    site_path: &str,
+    depth: usize,
+    entered: &mut Vec<Entered>,
+) -> Result<Phase, Error> {
+    let name = ev.model.compound(inv.callee).name.clone();
+    if depth >= MAX_INVOCATION_DEPTH {
+        return Err(ev.files.err(
+            K::Unsupported,
+            inv.span,
+            format!("expected invocations nested at most {MAX_INVOCATION_DEPTH} deep, found `{name}` deeper"),
+        ));
+    }
+    let params: Vec<String> = ev
+        .model
+        .ancestry(inv.callee)
+        .into_iter()
+        .flat_map(|c| ev.model.compound(c).fields.iter())
+        .filter(|f| !f.is_var)
+        .map(|f| f.name.clone())
+        .collect();
+    let mut aliases = Vec::new();
+    for (p, e) in super::eval::bind(inv.args, &params) {
+        let is_instance = ev
+            .model
+            .field(inv.callee, &p)
+            .is_some_and(|f| matches!(f.ty, Ty::Compound(_)));
+        if is_instance {
+            let target = ev.path_of(e).ok_or_else(|| {
+                ev.files.err(
+                    K::Value,
+                    e.span,
+                    format!("expected an instance's name for parameter `{p}` of `{name}`, found an expression"),
+                )
+            })?;
+            aliases.push((p, target));
+        }
+    }
+    let mut until = None;
+    for w in inv.with {
+        match w {
+            WithMember::Until(e, _) => until = Some(cond::read(ev, e)),
+            // Solved with the invocation's instance (`it`).
+            WithMember::Keep(_) => {}
+            WithMember::Modifier(m) => {
+                return Err(ev.files.err(
+                    K::Modifier,
+                    m.span,
+                    format!(
+                        "expected `until` or `keep` in the with: of an invocation of `{name}`, found the modifier `{}` (modifiers apply to actions)",
+                        m.name.text
+                    ),
+                ))
+            }
+        }
+    }
+    let frame = Frame {
+        prefix: format!("{}{site_path}.", ev.frame.prefix),
+        aliases,
+        actor: inv.actor.clone(),
+    };
+    let inner = ev.enter(frame.clone());
+    // The invocation was found by its `do`.
+    let Some(root) = do_of(ev, inv.callee) else {
+        return Err(ev.files.err(
+            K::Unsupported,
+            inv.span,
+            format!("expected a `do` in `{name}`, found none"),
+        ));
+    };
+    entered.push(Entered {
+        frame,
+        behavior: inv.callee,
+    });
+    let mut phase = build(&inner, root, path, &root_path(root), depth + 1, entered)?;
+    phase.site = ev.site(inv.span);
+    if let Some(u) = until {
+        phase.until = Some(match phase.until.take() {
+            None => u,
+            Some(own) => own.and_then(|a| u.map(|b| Cond::Or(Box::new(a), Box::new(b)))),
+        });
+    }
+    Ok(phase)
 }
 
 /// Parameter names of `actor.action`, own first then inherited (as the checker binds them).

@@ -9,6 +9,7 @@ mod handlers;
 mod lane_side;
 mod lateral;
 mod orientation;
+mod reuse;
 mod support;
 
 use support::{error, run, DT};
@@ -493,6 +494,7 @@ fn every_checked_fixture_plans_or_fails_with_a_position_never_a_panic() {
         seed: 3,
         dt: DT,
         open_end: true,
+        scenario: None,
     };
     for f in &files {
         match dsl_runtime::load(f, Some(&road), &options) {
@@ -548,6 +550,7 @@ fn the_scenario_names_its_road_network() {
         seed: 0,
         dt: DT,
         open_end: false,
+        scenario: None,
     };
     let lowered = dsl_runtime::load(
         &support::path("tests/scenarios/map_file.osc"),

@@ -109,6 +109,7 @@ pub fn lower_at(
         seed,
         dt: DT,
         open_end: duration.is_some(),
+        scenario: None,
     };
     dsl_runtime::load(&path(osc), Some(&path(road)), &options)
 }

@@ -3,10 +3,13 @@
 //! (§8.9: a modifier declared `of B` applies to `B` and to behaviors inheriting from it).
 
 use super::super::diagnostic::DiagnosticKind as K;
-use super::super::hir::{Arg, Behavior, CompoundKind, Labeled, ModifierApp, Span, WithMember};
+use super::super::hir::{
+    Arg, Behavior, BinOp, CompoundKind, Labeled, Member, ModifierApp, Span, WithMember,
+};
 use super::super::model::ParamDef;
+use super::super::solver::Strength;
 use super::super::types::{CompoundId, Ty};
-use super::{Cx, Local, Scope, TExpr, TKind};
+use super::{Cx, Invocation, Local, Owner, Place, Scope, Seg, TExpr, TKind, Template};
 
 impl Cx<'_> {
     /// The parameters of a behavior or modifier, for argument matching: own fields first, then
@@ -26,14 +29,30 @@ impl Cx<'_> {
             .collect()
     }
 
-    pub(crate) fn behavior(&mut self, b: &Labeled, scope: &Scope) {
+    /// Whether behavior `id` (or an ancestor) has a `do` of its own: its invocations are
+    /// instances with parameters (user scenarios), not the library's actions.
+    pub(crate) fn has_do(&self, id: CompoundId) -> bool {
+        self.model.ancestry(id).into_iter().any(|c| {
+            self.model
+                .compound(c)
+                .members
+                .iter()
+                .any(|m| matches!(m, Member::Do(..)))
+        })
+    }
+
+    /// Checks behavior `b` of a `do` at phase path `path` (`None`: in an `on` handler, where
+    /// no invocation is recorded).
+    pub(crate) fn behavior(&mut self, b: &Labeled, scope: &Scope, path: Option<&str>) {
         match &b.behavior {
             Behavior::Composition { args, children, .. } => {
                 for a in args {
                     self.expr(&a.value, scope, None);
                 }
-                for c in children {
-                    self.behavior(c, scope);
+                for (i, c) in children.iter().enumerate() {
+                    let seg = c.label.as_ref().map_or(i.to_string(), |l| l.text.clone());
+                    let child = path.map(|p| format!("{p}.{seg}"));
+                    self.behavior(c, scope, child.as_deref());
                 }
             }
             Behavior::Invocation {
@@ -83,12 +102,24 @@ impl Cx<'_> {
                 };
                 let params = self.behavior_params(bid);
                 let label = format!("`{}`", self.model.compound(bid).name);
-                self.args(&params, args, &label, scope, *span);
+                let bound = self.args(&params, args, &label, scope, *span);
+                // An invocation of a behavior with a `do` is an instance of it: `it` in its
+                // `with:` block is that instance, so `keep(it.p …)` constrains its parameter.
+                let site = match (path, scope.this) {
+                    (Some(p), Some(caller)) if self.has_do(bid) => {
+                        Some(self.invocation(caller, p, bid, &params, bound, name.span, *span))
+                    }
+                    _ => None,
+                };
+                let it = match site {
+                    Some(_) => TKind::Path(Place::It, Vec::new()),
+                    None => TKind::Opaque("invocation"),
+                };
                 let mut inner = scope.clone();
                 inner.locals.push(Local {
                     name: "it".into(),
                     value: TExpr {
-                        kind: TKind::Opaque("invocation"),
+                        kind: it,
                         ty: Ty::Compound(bid),
                         span: *span,
                     },
@@ -97,7 +128,20 @@ impl Cx<'_> {
                     match w {
                         WithMember::Modifier(app) => self.applied_modifier(app, bid, &inner),
                         WithMember::Keep(k) => {
-                            self.expect(&k.expr, &Ty::Bool, &inner, "a constraint");
+                            let t = self.expect(&k.expr, &Ty::Bool, &inner, "a constraint");
+                            if let Some(site) = site {
+                                self.out.templates.push(Template {
+                                    owner: Owner::Invocation(site),
+                                    strength: if k.default {
+                                        Strength::Default
+                                    } else {
+                                        Strength::Hard
+                                    },
+                                    expr: t,
+                                    loops: Vec::new(),
+                                    span: k.span,
+                                });
+                            }
                         }
                         WithMember::Until(e, _) => {
                             self.expect(e, &Ty::Event, &inner, "`until`");
@@ -124,6 +168,65 @@ impl Cx<'_> {
                 self.expr(e, scope, None);
             }
         }
+    }
+
+    /// Records the invocation of `callee` (a behavior with a `do`) at `path` of `caller`'s
+    /// `do`, with its arguments `bound` to `params`: each scalar argument a hard constraint
+    /// `it.param == argument` (`in` for a range), each argument of a struct or actor type an
+    /// alias. Returns the invocation's index.
+    #[allow(clippy::too_many_arguments)]
+    fn invocation(
+        &mut self,
+        caller: CompoundId,
+        path: &str,
+        callee: CompoundId,
+        params: &[ParamDef],
+        bound: Vec<Option<TExpr>>,
+        name_span: Span,
+        span: Span,
+    ) -> usize {
+        let site = self.out.invocations.len();
+        let mut aliases = Vec::new();
+        for (p, arg) in params.iter().zip(bound) {
+            let Some(arg) = arg else { continue };
+            if arg.ty == Ty::Error {
+                continue;
+            }
+            if matches!(p.ty, Ty::Compound(_)) {
+                aliases.push((p.name.clone(), arg));
+                continue;
+            }
+            let param = TExpr {
+                kind: TKind::Path(Place::It, vec![Seg::Field(p.name.clone())]),
+                ty: p.ty.clone(),
+                span: arg.span,
+            };
+            let op = match arg.kind {
+                TKind::Range(..) => BinOp::In,
+                _ => BinOp::Eq,
+            };
+            let arg_span = arg.span;
+            self.out.templates.push(Template {
+                owner: Owner::Invocation(site),
+                strength: Strength::Hard,
+                expr: TExpr {
+                    kind: TKind::Binary(op, Box::new(param), Box::new(arg)),
+                    ty: Ty::Bool,
+                    span: arg_span,
+                },
+                loops: Vec::new(),
+                span: arg_span,
+            });
+        }
+        self.out.invocations.push(Invocation {
+            caller,
+            path: path.to_string(),
+            callee,
+            aliases,
+            name_span,
+            span,
+        });
+        site
     }
 
     /// A modifier in the `with:` block of an invocation of behavior `bid`.

@@ -52,6 +52,8 @@ pub fn check_model(model: &Model) -> Checked {
         }
         cx.members(&c.members, &scope, Owner::Compound(id), &[]);
     }
+    let recursive = super::invocations::recursion(model, &cx.out.invocations);
+    cx.out.diags.extend(recursive);
     cx.out
 }
 
@@ -158,11 +160,17 @@ impl Cx<'_> {
                     }
                 }
                 Member::Modifier(app) => self.member_modifier(app, scope),
-                Member::Do(b, _) => self.behavior(b, scope),
+                Member::Do(b, _) => {
+                    let path = match &b.label {
+                        Some(l) => format!("do.{}", l.text),
+                        None => "do".to_string(),
+                    };
+                    self.behavior(b, scope, Some(&path));
+                }
                 Member::On(e, body, _) => {
                     self.expect(e, &Ty::Event, scope, "`on`");
                     for b in body {
-                        self.behavior(b, scope);
+                        self.behavior(b, scope, None);
                     }
                 }
                 Member::Coverage(args, _) => {

@@ -10,6 +10,7 @@
 
 mod behavior;
 mod expr;
+mod invocations;
 mod members;
 
 use super::diagnostic::Diagnostic;
@@ -29,6 +30,8 @@ pub enum Place {
     This,
     /// The element bound by the `k`-th enclosing `for`.
     Local(usize),
+    /// The invoked scenario's instance, in an invocation's arguments and `with:` block (`it`).
+    It,
 }
 
 /// One step of a path.
@@ -90,6 +93,32 @@ pub enum Owner {
     Top,
     /// Every instance of this type and of its subtypes.
     Compound(CompoundId),
+    /// One invocation of a behavior with a `do` (index into [`Checked::invocations`]): once
+    /// per instance of its caller, with `this` the caller and `it` the invoked instance.
+    Invocation(usize),
+}
+
+/// An invocation of a behavior that has a `do` of its own (a scenario, or an action or
+/// scenario declared on an actor) in the `do` of another (ASAM OpenSCENARIO DSL 2.1 §7.3.9
+/// behavior invocation). Each invocation is an instance of the invoked behavior with its own
+/// parameters: arguments of numbers, enumerations, booleans and strings become hard
+/// constraints on them (templates owned by the invocation), arguments naming an actor or
+/// struct make the parameter that very instance.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Invocation {
+    /// The behavior whose `do` holds the invocation.
+    pub caller: CompoundId,
+    /// The phase path in the caller's `do`: `do`, its label, then each member's label (or
+    /// index), joined by `.` (`do.round_two`).
+    pub path: String,
+    /// The invoked behavior.
+    pub callee: CompoundId,
+    /// Parameters bound to an instance of the caller's: the parameter and the path argument.
+    pub aliases: Vec<(String, TExpr)>,
+    /// The behavior's name as written.
+    pub name_span: Span,
+    /// The whole invocation.
+    pub span: Span,
 }
 
 /// A checked `keep` (or field default) ready to be instantiated.
@@ -114,6 +143,8 @@ pub struct Checked {
     pub diags: Vec<Diagnostic>,
     /// Constraints.
     pub templates: Vec<Template>,
+    /// Invocations of behaviors with a `do`, in source order.
+    pub invocations: Vec<Invocation>,
 }
 
 /// A name in scope besides fields and globals: a `for` element, `it`, a method parameter.

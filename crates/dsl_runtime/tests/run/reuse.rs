@@ -1,0 +1,173 @@
+//! Scenarios that invoke scenarios (ASAM OpenSCENARIO DSL 2.1 §7.3.9 behavior invocation):
+//! parameters, phase paths, each invocation's own actors, the entry point. Every expectation
+//! is worked by hand in the scenario file's comment.
+
+use super::support::{error, run};
+
+/// Positions on the straight road: exact up to float round-off.
+const S_TOL: f64 = 1e-6;
+/// Phase times are step times.
+const T_TOL: f64 = 1e-9;
+
+fn close(a: (f64, f64), b: (f64, f64)) -> bool {
+    (a.0 - b.0).abs() < T_TOL && (a.1 - b.1).abs() < T_TOL
+}
+
+#[test]
+fn a_scenario_invoked_twice_in_serial_and_once_in_parallel() {
+    let r = run("reuse_serial_parallel", 0, None);
+    for (path, want) in [
+        ("do.start", (0.0, 1.0)),
+        ("do.round_one", (1.0, 5.0)),
+        ("do.round_one.quick", (1.0, 3.0)),
+        ("do.round_one.slow", (3.0, 5.0)),
+        ("do.round_two", (5.0, 8.0)),
+        ("do.round_two.quick", (5.0, 7.0)),
+        ("do.round_two.slow", (7.0, 8.0)),
+        ("do.together", (8.0, 12.0)),
+        ("do.together.0", (8.0, 12.0)),
+        ("do.together.0.quick", (8.0, 10.0)),
+        ("do.together.0.slow", (10.0, 12.0)),
+        ("do.together.1", (8.0, 11.0)),
+        ("do", (0.0, 12.0)),
+    ] {
+        let got = r.phase(path);
+        assert!(close(got, want), "{path}: {got:?}, expected {want:?}");
+    }
+    for (t, s, v) in [
+        (1.0, 110.0, 10.0),
+        (3.0, 150.0, 20.0),
+        (5.0, 160.0, 5.0),
+        (7.0, 190.0, 15.0),
+        (8.0, 200.0, 10.0),
+        (10.0, 240.0, 20.0),
+        (12.0, 264.0, 12.0),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!((ego.s - s).abs() < S_TOL, "ego at {t} s: s = {}", ego.s);
+        assert!(
+            (ego.speed - v).abs() < S_TOL,
+            "ego at {t} s: v = {}",
+            ego.speed
+        );
+        assert_eq!(ego.lane, -2);
+    }
+    for (t, s) in [(8.0, 330.0), (11.0, 420.0), (12.0, 450.0)] {
+        let npc = r.at(t, "npc");
+        assert!((npc.s - s).abs() < S_TOL, "npc at {t} s: s = {}", npc.s);
+        assert_eq!(npc.lane, -1);
+    }
+}
+
+#[test]
+fn one_of_over_two_invocations_draws_from_the_seed_and_reruns_identically() {
+    let mut drawn = std::collections::BTreeSet::new();
+    for seed in 0..8 {
+        let r = run("reuse_one_of", seed, None);
+        let again = run("reuse_one_of", seed, None);
+        assert_eq!(
+            format!("{:?} {:?} {:?}", r.frames, r.events, r.commands),
+            format!("{:?} {:?} {:?}", again.frames, again.events, again.commands),
+            "seed {seed}: the same run twice"
+        );
+        let names: Vec<&str> = r.frames[0].1.iter().map(|o| o.name.as_str()).collect();
+        let (member, lead, s4) = if r.when("do.pick.slow", "Start").is_some() {
+            ("slow", "do.pick.slow.lead", 70.0)
+        } else {
+            ("fast", "do.pick.fast.lead", 140.0)
+        };
+        assert_eq!(
+            names,
+            ["ego", lead],
+            "seed {seed}: only the drawn member's car"
+        );
+        assert!(close(r.phase(&format!("do.pick.{member}")), (0.0, 4.0)));
+        let car = r.at(4.0, lead);
+        assert!(
+            (car.s - s4).abs() < S_TOL,
+            "seed {seed}: {lead} at s = {}",
+            car.s
+        );
+        assert_eq!(car.lane, -3);
+        drawn.insert(member);
+    }
+    assert_eq!(drawn.len(), 2, "eight seeds draw both members: {drawn:?}");
+}
+
+#[test]
+fn invocation_errors_name_the_place() {
+    let msg = error("err_reuse_unknown_parameter");
+    assert!(
+        msg.contains("has no parameter `speed`")
+            && msg.contains("err_reuse_unknown_parameter.osc:10:25"),
+        "{msg}"
+    );
+    let msg = error("err_reuse_recursive");
+    assert!(
+        msg.contains("recursive invocation: `ping` invokes `pong` invokes `ping`")
+            && msg.contains("err_reuse_recursive.osc:6:9"),
+        "{msg}"
+    );
+    let msg = error("err_reuse_two_entries");
+    assert!(
+        msg.contains("found several: `first` at ")
+            && msg.contains("err_reuse_two_entries.osc:7:1, `second` at ")
+            && msg.contains("err_reuse_two_entries.osc:11:1; name one with --scenario NAME")
+            && msg.contains("at ")
+            && msg.ends_with("err_reuse_two_entries.osc:7:1"),
+        "{msg}"
+    );
+    let msg = error("err_reuse_parameter_keep");
+    assert!(
+        msg.contains("this constraint conflicts with 1 other(s) at ")
+            && msg.contains("err_reuse_parameter_keep.osc:5:9")
+            && msg.contains("conflicting constraint at ")
+            && msg.contains("err_reuse_parameter_keep.osc:11:34"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn the_entry_point_can_be_named() {
+    let options = |name: &str| dsl_runtime::Options {
+        seed: 0,
+        dt: super::support::DT,
+        open_end: false,
+        scenario: Some(name.to_string()),
+    };
+    let osc = super::support::path("tests/scenarios/err_reuse_two_entries.osc");
+    let road = super::support::path("tests/roads/straight.xodr");
+    let lowered = dsl_runtime::load(&osc, Some(&road), &options("second")).expect("plans");
+    let names: Vec<&str> = lowered
+        .scenario
+        .entities
+        .scenario_objects
+        .iter()
+        .map(|o| o.name.as_str())
+        .collect();
+    assert_eq!(names, ["npc"]);
+    assert_eq!(lowered.phases.last().map(|p| p.end), Some(Some(2.0)));
+    let msg = dsl_runtime::load(&osc, Some(&road), &options("third"))
+        .expect_err("no scenario third")
+        .to_string();
+    assert!(
+        msg.starts_with("expected a scenario `third` with a `do` (--scenario), found none; scenarios with a `do`: `cruise` at ")
+            && msg.ends_with("err_reuse_two_entries.osc:1:1"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn a_scenario_declared_on_an_actor_drives_that_actor() {
+    let r = run("reuse_actor_behavior", 0, None);
+    assert!(close(r.phase("do.brake"), (1.0, 4.0)));
+    assert!(close(r.phase("do.brake.0"), (1.0, 2.0)));
+    assert!(close(r.phase("do.brake.1"), (2.0, 4.0)));
+    for (t, s, v) in [(1.0, 120.0, 20.0), (2.0, 130.0, 10.0), (4.0, 150.0, 10.0)] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.s - s).abs() < S_TOL && (ego.speed - v).abs() < S_TOL,
+            "{t}: {ego:?}"
+        );
+    }
+}
