@@ -22,6 +22,10 @@ seconds="${1:-600}"
 shift || true
 sanitizer="${FUZZ_SANITIZER:-none}"
 
+if ! rustc +nightly -V >/dev/null 2>&1; then
+    echo "fuzz.sh: expected the nightly toolchain (rustup toolchain list), found none" >&2
+    exit 1
+fi
 if ! cargo +nightly fuzz --version >/dev/null 2>&1; then
     cargo install cargo-fuzz --locked
 fi
@@ -35,12 +39,9 @@ python3 scripts/fuzz_seeds.py corpus 65536
 declare -A max_len=([expr]=4096 [distribution]=16384 [opendrive]=65536 [xosc]=65536 [dsl]=16384 [structured]=4096)
 declare -A dict=([opendrive]=opendrive [xosc]=openscenario [distribution]=openscenario [dsl]=dsl)
 
-available=$(cd fuzz && cargo +nightly fuzz list)
+# Default: every target of fuzz/Cargo.toml, so a new one is run (and, in CI, checked) too.
 if [ "$#" -gt 0 ]; then targets=("$@"); else
-    targets=()
-    for t in expr distribution opendrive xosc dsl structured; do
-        if grep -qx "$t" <<<"$available"; then targets+=("$t"); fi
-    done
+    mapfile -t targets < <(cd fuzz && cargo +nightly fuzz list)
 fi
 
 (cd fuzz && nice -n 19 cargo +nightly fuzz build -a -s "$sanitizer")

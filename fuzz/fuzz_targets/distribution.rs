@@ -42,7 +42,7 @@ fuzz_target!(|data: &[u8]| {
         Err(e) => {
             let message = e.to_string();
             let lines = text.split('\n').count() as u32;
-            assert!(e.pos().row >= 1 && e.pos().row <= lines, "{message}");
+            assert!(e.pos().line >= 1 && e.pos().line <= lines, "{message}");
             assert!(e.pos().col >= 1, "{message}");
         }
     }

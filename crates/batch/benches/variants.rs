@@ -5,12 +5,17 @@
 //! `jobs_1` time / `jobs_2` time. The plan (distribution, scenario, road network) is loaded
 //! once outside the timing, as `oscsim batch` does.
 //!
+//! `journal_jobs_N` runs the same variants as `oscsim batch --out DIR` does (issue 32):
+//! `run_durable` into an empty folder, each row appended to `DIR/batch.journal` as its variant
+//! ends, the results files written at the end. Its time over `jobs_N`'s is the cost of the
+//! journal, the sweep's digest and the three files. The folder is emptied outside the timing.
+//!
 //! `cargo bench -p oscsim-batch --bench variants`
 
 use std::path::Path;
 
-use batch::{run, Options, Plan};
-use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use batch::{run, run_durable, Options, Plan};
+use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
 
 fn variants(c: &mut Criterion) {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("benches/cut_in_variants.xosc");
@@ -38,6 +43,31 @@ fn variants(c: &mut Criterion) {
             })
         });
     }
+    let out = std::env::temp_dir().join(format!("oscsim-bench-journal-{}", std::process::id()));
+    for jobs in [1usize, 2] {
+        let options = Options {
+            jobs,
+            ..Options::default()
+        };
+        group.bench_function(format!("journal_jobs_{jobs}"), |b| {
+            b.iter_batched(
+                || {
+                    let _ = std::fs::remove_dir_all(&out);
+                },
+                |()| {
+                    let finished = match run_durable(&plan, &options, &out, &|_, _| {}, &|_, _| {})
+                    {
+                        Ok(f) => f,
+                        Err(e) => panic!("{e}"),
+                    };
+                    assert_eq!(finished.table.rows.len() as u64, n);
+                    finished
+                },
+                BatchSize::PerIteration,
+            )
+        });
+    }
+    let _ = std::fs::remove_dir_all(&out);
     group.finish();
 }
 

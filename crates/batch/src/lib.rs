@@ -8,7 +8,11 @@
 //! | `shard` | disjoint shares for several processes: `--shard I/N`, Slurm arrays, Kubernetes Indexed Jobs |
 //! | `metrics` | collision, time to collision, headway and gap of the host, by the §8.7 methods |
 //! | `run` | the variants on a rayon pool, results by variant number |
-//! | `save` | per-variant outputs: trajectories, event log, OSI trace (`--save csv,events,osi`) |
+//! | `guard` | a variant's wall-clock limit (`--variant-timeout`) and its panics, each a failed row |
+//! | `save` | per-variant outputs: trajectories, event log, OSI trace (`--save csv,events,osi`), renamed into place whole |
+//! | `journal` | `batch.journal`: each finished variant's record, appended as it ends, readable after any kill |
+//! | `sweep` | what identifies a sweep: a digest of its inputs and options, its selection, its columns |
+//! | `resume` | a batch that goes on from its journal when run again, never mixing two sweeps |
 //! | `table` | the results table and `results.csv` |
 //! | `parquet_file` | `results.parquet` |
 //! | `merge` | shard outputs joined into what one unsharded run writes |
@@ -16,25 +20,34 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+mod guard;
+mod journal;
 mod merge;
 mod metrics;
 mod parquet_file;
 mod plan;
 mod report;
+mod resume;
 mod run;
 mod save;
 mod seed;
 mod shard;
+mod sweep;
 mod table;
 
 pub use engine::StopReason;
+pub use journal::{
+    read as read_journal, Contents as JournalContents, Journal, JournalError, JOURNAL_FILE,
+};
 pub use merge::{merge, merge_tables, write_outputs, MergeError};
 pub use metrics::{Measures, Observer};
 pub use parquet_file::{to_parquet, ParquetError};
 pub use plan::{Plan, PlanError};
 pub use report::{report_html, summary};
-pub use run::{run, run_variants, selected, Options, RunError};
+pub use resume::{open as open_journal, run_durable, Finished, ResumeError, Resumed};
+pub use run::{empty_table, run, run_each, run_variants, selected, Options, RunError};
 pub use save::{variant_dir, Save};
 pub use seed::variant_seed;
 pub use shard::{Shard, ShardError};
+pub use sweep::Sweep;
 pub use table::{quantize, quantize_time, CsvError, Outcome, Row, Table, FIXED_COLUMNS};

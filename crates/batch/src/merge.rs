@@ -4,6 +4,7 @@
 //! function the unsharded run uses, on the same values (table.rs keeps numbers as written), so
 //! the files are equal byte for byte. Per-variant folders (`variants/NNNNN`) are copied.
 
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use crate::parquet_file::{to_parquet, ParquetError};
@@ -60,15 +61,23 @@ fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> Merg
     }
 }
 
-/// Writes `results.csv`, `results.parquet` and `report.html` of `table` into `dir`.
+/// Writes `results.csv`, `results.parquet` and `report.html` of `table` into `dir`, each to a
+/// temporary name, synced and renamed into place: a kill leaves each file whole, old or new.
 pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
     std::fs::create_dir_all(dir).map_err(io("cannot create", dir))?;
-    let csv = dir.join("results.csv");
-    std::fs::write(&csv, table.to_csv()).map_err(io("cannot write", &csv))?;
-    let parquet = dir.join("results.parquet");
-    std::fs::write(&parquet, to_parquet(table)?).map_err(io("cannot write", &parquet))?;
-    let html = dir.join("report.html");
-    std::fs::write(&html, report_html(table)).map_err(io("cannot write", &html))?;
+    let files = [
+        ("results.csv", table.to_csv().into_bytes()),
+        ("results.parquet", to_parquet(table)?),
+        ("report.html", report_html(table).into_bytes()),
+    ];
+    for (name, bytes) in files {
+        let path = dir.join(name);
+        let tmp = dir.join(format!("{name}.tmp"));
+        let mut file = std::fs::File::create(&tmp).map_err(io("cannot write", &tmp))?;
+        file.write_all(&bytes).map_err(io("cannot write", &tmp))?;
+        file.sync_all().map_err(io("cannot sync", &tmp))?;
+        std::fs::rename(&tmp, &path).map_err(io("cannot rename into place", &path))?;
+    }
     Ok(())
 }
 

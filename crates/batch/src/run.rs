@@ -2,23 +2,28 @@
 //! independent engine with its own seed (seed.rs), the rows collected by variant number, so
 //! the table is the same for any number of jobs.
 //!
-//! A variant that fails — its parameters make the scenario invalid, a runtime error stops it —
-//! gives a row with its error message; the batch goes on.
+//! A variant that fails — its parameters make the scenario invalid, a runtime error stops it,
+//! it passes its wall-clock limit or panics (guard.rs) — gives a row with its error message;
+//! the batch goes on. [`run_each`] hands each row to the caller as its variant ends (the
+//! journal's append, resume.rs).
 
 use std::fs::File;
 use std::io::BufWriter;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
+use std::time::{Duration, Instant};
 
 use engine::output::JsonlWriter;
 use engine::storyboard::{ElementKind, Transition};
 use engine::{Engine, EngineConfig, EventRecord, EventSink, FrameSink};
 use rayon::prelude::*;
 
+use crate::guard::{contain, timeout_message, Deadline};
+use crate::journal::JournalError;
 use crate::metrics::Observer;
 use crate::plan::Plan;
-use crate::save::{variant_dir, Outputs, Save};
+use crate::save::{commit, discard, staging_dir, Outputs, Save};
 use crate::seed::variant_seed;
 use crate::shard::Shard;
 use crate::table::{Outcome, Row, Table};
@@ -55,6 +60,8 @@ pub struct Options {
     /// The recording time of saved OSI traces, Unix seconds (the cli: `SOURCE_DATE_EPOCH`);
     /// `None` takes the clock (save.rs).
     pub recording_time: Option<i64>,
+    /// Wall-clock limit per variant; a variant past it is a failed row (guard.rs).
+    pub variant_timeout: Option<Duration>,
 }
 
 impl Default for Options {
@@ -73,6 +80,7 @@ impl Default for Options {
             only: None,
             save: None,
             recording_time: None,
+            variant_timeout: None,
         }
     }
 }
@@ -97,6 +105,9 @@ pub enum RunError {
         /// How many variants the plan has.
         count: usize,
     },
+    /// A finished variant's row could not be recorded (the journal, resume.rs).
+    #[error(transparent)]
+    Journal(#[from] JournalError),
 }
 
 /// The variant numbers this process runs, ascending.
@@ -125,6 +136,20 @@ pub fn run_variants(
     variants: &[u64],
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Table, RunError> {
+    run_each(plan, options, variants, &|_, done, total| {
+        progress(done, total);
+        Ok(())
+    })
+}
+
+/// [`run_variants`], handing each row to `each(row, done, total)` as its variant ends (on the
+/// worker thread that ran it); an error from `each` stops the batch with that error.
+pub fn run_each(
+    plan: &Plan,
+    options: &Options,
+    variants: &[u64],
+    each: &(dyn Fn(&Row, usize, usize) -> Result<(), RunError> + Sync),
+) -> Result<Table, RunError> {
     let count = plan.variants.len();
     if let Some(&variant) = variants.iter().find(|&&v| v >= count as u64) {
         return Err(RunError::NoSuchVariant { variant, count });
@@ -145,13 +170,22 @@ pub fn run_variants(
                 let row = Row {
                     variant: v,
                     params: plan.values(v as usize),
-                    result: run_variant(plan, options, v),
+                    result: guarded_variant(plan, options, v),
                 };
-                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
-                row
+                each(&row, done.fetch_add(1, Ordering::Relaxed) + 1, total)?;
+                Ok(row)
             })
-            .collect()
-    });
+            .collect::<Result<_, RunError>>()
+    })?;
+    Ok(Table {
+        rows,
+        ..empty_table(plan)
+    })
+}
+
+/// The table of `plan` with its columns and no rows: the varied parameters, and the
+/// scenario's monitors in name order.
+pub fn empty_table(plan: &Plan) -> Table {
     let monitors = plan
         .scenario
         .monitor_declarations
@@ -160,11 +194,21 @@ pub fn run_variants(
         .collect::<std::collections::BTreeSet<_>>()
         .into_iter()
         .collect();
-    Ok(Table {
+    Table {
         parameters: plan.parameters.clone(),
         monitors,
-        rows,
-    })
+        rows: Vec::new(),
+    }
+}
+
+/// Runs variant `v` with its panics contained and its saved outputs put in place or, when it
+/// timed out or panicked, discarded (guard.rs, save.rs).
+fn guarded_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String> {
+    let result = contain(|| run_variant(plan, options, v));
+    match &options.save {
+        Some((_, root)) => discard(root, v).and(result),
+        None => result,
+    }
 }
 
 /// Counts Event starts and forwards records to an optional event log.
@@ -188,8 +232,12 @@ impl EventSink for Events {
     }
 }
 
-/// Runs variant `v`: the outcome, or the message of what failed.
+/// Runs variant `v`: the outcome, or the message of what failed. Its saved outputs are
+/// written in its staging folder and put in place when the run ends, unless it timed out.
 fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String> {
+    let mut deadline = options
+        .variant_timeout
+        .map(|limit| Deadline::new(Instant::now(), limit));
     let params: Vec<(String, String)> = plan.variants[v as usize]
         .iter()
         .map(|(k, x)| (k.clone(), x.clone()))
@@ -213,21 +261,28 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         Engine::new(&scenario, Arc::clone(&plan.network), config).map_err(|e| e.to_string())?;
     let mut observer = Observer::new(&plan.network, &options.host);
     let mut outputs = match &options.save {
-        Some((save, root)) => Outputs::create(
-            *save,
-            &variant_dir(root, v),
-            &engine,
-            &options.host,
-            options.recording_time,
-        )?,
+        Some((save, root)) => {
+            // What a killed run of this variant left.
+            discard(root, v)?;
+            Outputs::create(
+                *save,
+                &staging_dir(root, v),
+                &engine,
+                &options.host,
+                options.recording_time,
+            )?
+        }
         None => Outputs::default(),
     };
     let mut events = Events {
         started: 0,
         log: outputs.events.take(),
     };
-    let reason = {
+    let run = {
         let mut sinks: Vec<&mut dyn FrameSink> = vec![&mut observer];
+        if let Some(d) = deadline.as_mut() {
+            sinks.push(d);
+        }
         if let Some(t) = outputs.trajectories.as_mut() {
             sinks.push(t);
         }
@@ -237,8 +292,20 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         let mut frames = Fanout(sinks);
         engine
             .run(&mut frames, &mut events)
-            .map_err(|e| format!("{e} (at t = {:.3} s)", engine.time()))?
+            .map_err(|e| format!("{e} (at t = {:.3} s)", engine.time()))
     };
+    if let (Some(limit), Some(d)) = (options.variant_timeout, &deadline) {
+        if d.expired {
+            // Its outputs stay in the staging folder, which the caller removes.
+            return Err(timeout_message(limit));
+        }
+    }
+    // Written and closed (a failed run's writers flush as they drop), then put in place.
+    drop((outputs, events.log.take()));
+    if let Some((_, root)) = &options.save {
+        commit(root, v)?;
+    }
+    let reason = run?;
     let m = observer.measures;
     Ok(Outcome {
         stop: Some(reason),

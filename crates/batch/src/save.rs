@@ -6,6 +6,13 @@
 //! <scenario>.osi`), written by the osi crate's [`OsiSink`] with the batch's host as the host
 //! vehicle and the recording time the caller pins (`SOURCE_DATE_EPOCH` in the cli), so a
 //! variant's trace is byte for byte that of `oscsim run SCENARIO --param … --osi DIR`.
+//!
+//! A variant's files are written into `variants/NNNNN.partial/` ([`staging_dir`]) and the
+//! folder is renamed to `variants/NNNNN/` when the run ends ([`commit`]), before the variant's
+//! row goes to the journal (journal.rs): a batch killed half-way leaves only whole folders
+//! under their final names (a `.partial` folder is cleared when its variant runs again). A
+//! variant that timed out or panicked keeps no folder (guard.rs); one whose run failed keeps
+//! what it wrote up to the failure, as `oscsim run` does.
 
 use std::fs::File;
 use std::io::BufWriter;
@@ -51,6 +58,37 @@ impl Save {
 /// The folder of variant `v`'s outputs.
 pub fn variant_dir(root: &Path, v: u64) -> PathBuf {
     root.join("variants").join(format!("{v:05}"))
+}
+
+/// The folder variant `v`'s outputs are written in while it runs (module doc).
+pub(crate) fn staging_dir(root: &Path, v: u64) -> PathBuf {
+    root.join("variants").join(format!("{v:05}.partial"))
+}
+
+/// Removes variant `v`'s staging folder, if there is one: what a killed run, a timeout or a
+/// panic left.
+pub(crate) fn discard(root: &Path, v: u64) -> Result<(), String> {
+    let dir = staging_dir(root, v);
+    match std::fs::remove_dir_all(&dir) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+            Err(format!("cannot remove {}: {e}", dir.display()))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Renames variant `v`'s staging folder to its final name, replacing a folder of an earlier,
+/// killed run that had renamed its own but not recorded its row (module doc).
+pub(crate) fn commit(root: &Path, v: u64) -> Result<(), String> {
+    let (from, to) = (staging_dir(root, v), variant_dir(root, v));
+    if !from.is_dir() {
+        return Ok(());
+    }
+    if to.exists() {
+        std::fs::remove_dir_all(&to).map_err(|e| format!("cannot remove {}: {e}", to.display()))?;
+    }
+    std::fs::rename(&from, &to)
+        .map_err(|e| format!("cannot rename {} to {}: {e}", from.display(), to.display()))
 }
 
 /// The open per-variant outputs of one variant.

@@ -135,6 +135,14 @@ impl Table {
         out
     }
 
+    /// The CSV line of `row` in this table (without line break), as [`Table::to_csv`] writes
+    /// it: the form a row has in the batch journal (resume.rs).
+    pub fn row_line(&self, row: &Row) -> String {
+        let mut out = String::new();
+        self.write_row(&mut out, row);
+        out
+    }
+
     fn write_row(&self, out: &mut String, row: &Row) {
         let _ = write!(out, "{}", row.variant);
         for p in &row.params {
@@ -213,22 +221,29 @@ impl Table {
             monitors,
             rows: Vec::new(),
         };
-        let width = cells.len();
         for (n, line) in lines {
             if line.is_empty() {
                 continue;
             }
-            let c = split_line(line).map_err(|e| err(n, "a CSV line", &e))?;
-            if c.len() != width {
-                return Err(err(n, &format!("{width} cells"), &c.len().to_string()));
-            }
-            table.rows.push(
-                table
-                    .parse_row(&c, fixed_at)
-                    .map_err(|(what, found)| err(n, what, &found))?,
-            );
+            let row = table
+                .parse_line(line)
+                .map_err(|(what, found)| err(n, &what, &found))?;
+            table.rows.push(row);
         }
         Ok(table)
+    }
+
+    /// The row of one data line of this table's CSV (as [`Table::row_line`] writes it), or
+    /// what was expected and what was found.
+    pub fn parse_line(&self, line: &str) -> Result<Row, (String, String)> {
+        let c = split_line(line).map_err(|e| ("a CSV line".to_owned(), e))?;
+        let fixed_at = 1 + self.parameters.len();
+        let width = fixed_at + FIXED_COLUMNS.len() + self.monitors.len();
+        if c.len() != width {
+            return Err((format!("{width} cells"), c.len().to_string()));
+        }
+        self.parse_row(&c, fixed_at)
+            .map_err(|(what, found)| (what.to_owned(), found))
     }
 
     fn parse_row(&self, c: &[String], at: usize) -> Result<Row, (&'static str, String)> {

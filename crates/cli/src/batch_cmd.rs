@@ -1,6 +1,8 @@
 //! `oscsim batch DIST.xosc --out DIR`: every variant of a parameter value distribution, on all
-//! cores or one shard of them; `oscsim batch merge DIR… --out DIR` joins shard outputs. The
-//! work is the batch crate's; this is argument handling and glue.
+//! cores or one shard of them, each finished variant recorded in `DIR/batch.journal` so that
+//! the same command run again goes on where a killed run stopped; `oscsim batch merge DIR…
+//! --out DIR` joins shard outputs. The work is the batch crate's (run.rs, resume.rs); this is
+//! argument handling and glue.
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -18,7 +20,11 @@ use anyhow::Context;
 Variant numbers follow the distribution file (docs/batch.md). Sharding: --shard I/N, or the\n\
 environment of a Slurm array task (SLURM_ARRAY_TASK_ID, SLURM_ARRAY_TASK_COUNT) or of a\n\
 Kubernetes Indexed Job (JOB_COMPLETION_INDEX with --shards N).\n\
-Exit status: 0 when every variant ran, 1 when loading fails or a variant failed, 2 on a usage error."
+Each finished variant is recorded in DIR/batch.journal as it ends: the same command run again on\n\
+the same DIR (after a kill, a pre-emption, a requeue) runs only the variants not yet recorded and\n\
+writes the files an uninterrupted run writes. A DIR holding another sweep's results is refused.\n\
+Exit status: 0 when every variant ran, 100 + N when N variants failed (255 for 155 or more; their\n\
+rows say why), 1 when the batch cannot run (loading, the output folder), 2 on a usage error."
 )]
 pub struct BatchArgs {
     #[command(subcommand)]
@@ -50,9 +56,23 @@ pub struct BatchArgs {
     /// osi: the trace `oscsim run --osi DIR` writes, recording time from SOURCE_DATE_EPOCH).
     #[arg(long, value_delimiter = ',', value_name = "KINDS")]
     save: Vec<String>,
+    /// Wall-clock limit per variant in seconds: a variant still running after it is recorded
+    /// as failed ("timed out") and the batch goes on.
+    #[arg(long, value_name = "SECONDS", value_parser = positive_seconds)]
+    variant_timeout: Option<f64>,
     /// Do not show the progress bar.
     #[arg(long)]
     quiet: bool,
+}
+
+/// A positive, finite number of seconds.
+fn positive_seconds(text: &str) -> Result<f64, String> {
+    match text.trim().parse::<f64>() {
+        Ok(s) if s.is_finite() && s > 0.0 => Ok(s),
+        _ => Err(format!(
+            "expected a positive number of seconds, found '{text}'"
+        )),
+    }
 }
 
 /// `oscsim batch merge`.
@@ -101,6 +121,7 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
         only: args.only,
         save: save.any().then(|| (save, out.clone())),
         recording_time: crate::osi_args::source_date_epoch()?,
+        variant_timeout: args.variant_timeout.map(std::time::Duration::from_secs_f64),
     };
     if let Some(v) = args.only {
         if v as usize >= plan.variants.len() {
@@ -121,46 +142,57 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
             args.step.dt
         );
     }
-    let total = batch::selected(&plan, &options).len();
-    let bar = (!args.quiet && std::io::stderr().is_terminal()).then(|| {
-        let bar = indicatif::ProgressBar::new(total as u64);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{bar:40} {pos}/{len} variants, {per_sec}, ETA {eta}",
-            )
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        bar
-    });
-    let wall = Instant::now();
-    let table = batch::run(&plan, &options, &|done, _| {
-        if let Some(bar) = &bar {
-            bar.set_position(done as u64);
+    let bar = std::sync::OnceLock::new();
+    let started = |resumed: usize, to_run: usize| {
+        if resumed > 0 {
+            println!(
+                "resuming from {}: {resumed} variants recorded, {to_run} to run",
+                out.join(batch::JOURNAL_FILE).display()
+            );
         }
-    })?;
-    if let Some(bar) = bar {
-        bar.finish_and_clear();
+        if !args.quiet && std::io::stderr().is_terminal() {
+            let b = indicatif::ProgressBar::new(to_run as u64);
+            b.set_style(
+                indicatif::ProgressStyle::with_template(
+                    "{bar:40} {pos}/{len} variants, {per_sec}, ETA {eta}",
+                )
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+            );
+            let _ = bar.set(b);
+        }
+    };
+    let wall = Instant::now();
+    let finished = batch::run_durable(&plan, &options, out, &started, &|done, _| {
+        if let Some(b) = bar.get() {
+            b.set_position(done as u64);
+        }
+    })
+    .with_context(|| format!("cannot run the batch of {}", distribution.display()))?;
+    if let Some(b) = bar.get() {
+        b.finish_and_clear();
     }
-    batch::write_outputs(out, &table)?;
+    let table = &finished.table;
+    let ran = table.rows.len() - finished.resumed;
     let seconds = wall.elapsed().as_secs_f64();
     println!(
-        "{}\n{} in {:.2} s ({:.1} variants/s on {} {}); results in {}",
-        batch::summary(&table),
+        "{}\n{} in {:.2} s ({ran} run, {:.1} variants/s on {} {}); results in {}",
+        batch::summary(table),
         plan.distribution.display(),
         seconds,
-        table.rows.len() as f64 / seconds.max(1e-9),
+        ran as f64 / seconds.max(1e-9),
         options.jobs,
         if options.jobs == 1 { "job" } else { "jobs" },
         out.display()
     );
-    Ok(exit_code(&table))
+    Ok(exit_code(table))
 }
 
-/// 1 when a variant failed, else 0.
+/// 0 when every variant ran, else 100 + the number that failed, at most 255.
 fn exit_code(table: &batch::Table) -> ExitCode {
-    if table.rows.iter().any(|r| r.result.is_err()) {
-        ExitCode::from(1)
-    } else {
+    let failed = table.rows.iter().filter(|r| r.result.is_err()).count();
+    if failed == 0 {
         ExitCode::SUCCESS
+    } else {
+        ExitCode::from(u8::try_from(100 + failed).unwrap_or(u8::MAX))
     }
 }

@@ -1,4 +1,4 @@
-//! `oscsim.BatchPlan` and `merge_results`: the variants of a ParameterValueDistribution file
+//! `oscsim.BatchPlan`, `BatchJournal` and `merge_results`: the variants of a ParameterValueDistribution file
 //! (OpenSCENARIO 1.3 §9.5) run from Python, for the drivers of `oscsim.batch` (in-process or
 //! as Ray tasks). The work is the batch crate's — the same plan, runs, table and files as
 //! `oscsim batch` — so a table put together from shares run anywhere is the one the command
@@ -8,8 +8,10 @@
 //! workers and the driver, and the table keeps its numbers as written (batch's table.rs), so
 //! nothing is lost on the way.
 
+use std::collections::BTreeMap;
 use std::path::PathBuf;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -90,15 +92,18 @@ impl BatchPlan {
 
     /// Runs the variants numbered `variants` (default: all) on `jobs` threads with the
     /// options of `oscsim batch` and returns their rows as the text of a `results.csv` (rows
-    /// in the order given). A failing variant is a row with its error, as on the command line.
-    /// `save` (`csv`, `events`, `osi`: `oscsim batch --save`) keeps each variant's outputs in
-    /// `out_dir/variants/NNNNN/`, OSI traces with `recording_time` (Unix seconds; default the
-    /// clock) as their recording time. The interpreter's lock is released while the variants
-    /// run.
+    /// in the order given). A failing variant is a row with its error, as on the command line;
+    /// `variant_timeout` (s) is `--variant-timeout`. `save` (`csv`, `events`, `osi`:
+    /// `oscsim batch --save`) keeps each variant's outputs in `out_dir/variants/NNNNN/`, OSI
+    /// traces with `recording_time` (Unix seconds; default the clock) as their recording
+    /// time. With `journal` (opened with the same options), each row is recorded there as its
+    /// variant ends, as `oscsim batch --out` does. The interpreter's lock is released while
+    /// the variants run.
     #[pyo3(signature = (variants = None, *, seed = engine::runtime::DEFAULT_SEED,
         dt = engine::runtime::DEFAULT_DT, duration = None,
         max_time = engine::runtime::DEFAULT_MAX_TIME, host = "Ego".to_owned(), jobs = 1,
-        save = Vec::new(), out_dir = None, recording_time = None))]
+        save = Vec::new(), out_dir = None, recording_time = None, variant_timeout = None,
+        journal = None))]
     #[allow(clippy::too_many_arguments)] // the keyword options of `oscsim batch`
     fn run(
         &self,
@@ -113,51 +118,245 @@ impl BatchPlan {
         save: Vec<String>,
         out_dir: Option<PathBuf>,
         recording_time: Option<i64>,
+        variant_timeout: Option<f64>,
+        journal: Option<Bound<'_, BatchJournal>>,
     ) -> PyResult<String> {
         guard(|| {
-            let invalid = |m: String| pyo3::exceptions::PyValueError::new_err(m);
-            if !(dt.is_finite() && dt > 0.0) {
-                return Err(invalid(format!(
-                    "expected a positive finite dt, found {dt}"
-                )));
-            }
-            let save = batch::Save::from_kinds(&save).map_err(|e| invalid(format!("save: {e}")))?;
-            let save = match (save.any(), out_dir) {
-                (false, _) => None,
-                (true, Some(dir)) => Some((save, dir)),
-                (true, None) => {
-                    return Err(invalid(
-                        "expected an out_dir for the saved outputs, found none".to_owned(),
-                    ))
-                }
-            };
-            let options = batch::Options {
+            let options = options(
                 seed,
                 dt,
                 duration,
                 max_time,
                 host,
-                jobs: jobs.max(1),
+                jobs,
                 save,
+                out_dir,
                 recording_time,
-                ..batch::Options::default()
-            };
+                variant_timeout,
+            )?;
             let variants =
                 variants.unwrap_or_else(|| (0..self.inner.variants.len() as u64).collect());
             let plan = Arc::clone(&self.inner);
-            py.detach(move || batch::run_variants(&plan, &options, &variants, &|_, _| {}))
-                .map(|t| t.to_csv())
-                .map_err(|e| match e {
-                    batch::RunError::NoSuchVariant { .. } => {
-                        pyo3::exceptions::PyIndexError::new_err(e.to_string())
-                    }
-                    _ => OscsimError::new_err(e.to_string()),
+            let journal = journal.as_ref().map(Bound::get);
+            py.detach(move || {
+                batch::run_each(&plan, &options, &variants, &|row, _, _| {
+                    journal.map_or(Ok(()), |j| {
+                        j.add(row).map(drop).map_err(batch::RunError::from)
+                    })
                 })
+            })
+            .map(|t| t.to_csv())
+            .map_err(|e| match e {
+                batch::RunError::NoSuchVariant { .. } => {
+                    pyo3::exceptions::PyIndexError::new_err(e.to_string())
+                }
+                _ => OscsimError::new_err(e.to_string()),
+            })
         })
     }
 
     fn __repr__(&self) -> String {
         format!("BatchPlan({:?})", self.distribution())
+    }
+}
+
+/// The batch options of the keyword arguments shared by `run` and `BatchJournal`
+/// (`ValueError` for a dt, a timeout or a save kind that cannot be).
+#[allow(clippy::too_many_arguments)] // the keyword options of `oscsim batch`
+fn options(
+    seed: u64,
+    dt: f64,
+    duration: Option<f64>,
+    max_time: f64,
+    host: String,
+    jobs: usize,
+    save: Vec<String>,
+    out_dir: Option<PathBuf>,
+    recording_time: Option<i64>,
+    variant_timeout: Option<f64>,
+) -> PyResult<batch::Options> {
+    let invalid = |m: String| pyo3::exceptions::PyValueError::new_err(m);
+    if !(dt.is_finite() && dt > 0.0) {
+        return Err(invalid(format!(
+            "expected a positive finite dt, found {dt}"
+        )));
+    }
+    let variant_timeout = match variant_timeout {
+        Some(s) if s.is_finite() && s > 0.0 => Some(Duration::from_secs_f64(s)),
+        Some(s) => {
+            return Err(invalid(format!(
+                "expected a positive number of seconds for variant_timeout, found {s}"
+            )))
+        }
+        None => None,
+    };
+    let save = batch::Save::from_kinds(&save).map_err(|e| invalid(format!("save: {e}")))?;
+    let save = match (save.any(), out_dir) {
+        (false, _) => None,
+        (true, Some(dir)) => Some((save, dir)),
+        (true, None) => {
+            return Err(invalid(
+                "expected an out_dir for the saved outputs, found none".to_owned(),
+            ))
+        }
+    };
+    Ok(batch::Options {
+        seed,
+        dt,
+        duration,
+        max_time,
+        host,
+        jobs: jobs.max(1),
+        save,
+        recording_time,
+        variant_timeout,
+        ..batch::Options::default()
+    })
+}
+
+/// The journal of a batch run from Python, what `oscsim batch --out` keeps (docs/batch.md):
+/// `out_dir/batch.journal` opened for the sweep of `plan` with these options (the variants an
+/// earlier run recorded in `done`), rows recorded as they come (`BatchPlan.run(...,
+/// journal=…)` as each variant ends; a Ray driver's `record` as each task's share comes back),
+/// the results files written by `finish`. Raises `OscsimError` when `out_dir` holds another
+/// sweep's results.
+#[pyclass(frozen, module = "oscsim")]
+pub struct BatchJournal {
+    state: Mutex<JournalState>,
+}
+
+struct JournalState {
+    resumed: batch::Resumed,
+    out_dir: PathBuf,
+    /// Rows recorded by this driver, by variant.
+    added: BTreeMap<u64, batch::Row>,
+}
+
+#[pymethods]
+impl BatchJournal {
+    #[new]
+    #[pyo3(signature = (plan, out_dir, *, seed = engine::runtime::DEFAULT_SEED,
+        dt = engine::runtime::DEFAULT_DT, duration = None,
+        max_time = engine::runtime::DEFAULT_MAX_TIME, host = "Ego".to_owned(),
+        save = Vec::new(), recording_time = None, variant_timeout = None))]
+    #[allow(clippy::too_many_arguments)] // the keyword options of `oscsim batch`
+    fn new(
+        plan: &BatchPlan,
+        out_dir: PathBuf,
+        seed: u64,
+        dt: f64,
+        duration: Option<f64>,
+        max_time: f64,
+        host: String,
+        save: Vec<String>,
+        recording_time: Option<i64>,
+        variant_timeout: Option<f64>,
+    ) -> PyResult<Self> {
+        guard(|| {
+            let options = options(
+                seed,
+                dt,
+                duration,
+                max_time,
+                host,
+                1,
+                save,
+                Some(out_dir.clone()),
+                recording_time,
+                variant_timeout,
+            )?;
+            let columns = batch::empty_table(&plan.inner);
+            let resumed = batch::Sweep::of(&plan.inner, &options, &columns)
+                .map_err(batch::ResumeError::Inputs)
+                .and_then(|sweep| batch::open_journal(&out_dir, &sweep, &columns))
+                .map_err(|e| OscsimError::new_err(e.to_string()))?;
+            Ok(BatchJournal {
+                state: Mutex::new(JournalState {
+                    resumed,
+                    out_dir,
+                    added: BTreeMap::new(),
+                }),
+            })
+        })
+    }
+
+    /// The variant numbers recorded so far, ascending.
+    #[getter]
+    fn done(&self) -> Vec<u64> {
+        let state = self.lock();
+        let mut done: Vec<u64> = state.resumed.table.rows.iter().map(|r| r.variant).collect();
+        done.extend(state.added.keys());
+        done.sort_unstable();
+        done
+    }
+
+    /// Records the rows of `csv` (the text of a share's `results.csv`) that are not recorded
+    /// yet, each appended to the journal; returns how many were new. A row already recorded
+    /// (a share handed back twice) is not counted again.
+    fn record(&self, csv: &str) -> PyResult<usize> {
+        guard(|| {
+            let state = self.lock();
+            let share = batch::Table::from_csv(csv, "a share's results")
+                .map_err(|e| OscsimError::new_err(e.to_string()))?;
+            let columns = &state.resumed.table;
+            if share.parameters != columns.parameters || share.monitors != columns.monitors {
+                return Err(OscsimError::new_err(format!(
+                    "expected a share with the columns {}, found {}",
+                    columns.header(),
+                    share.header()
+                )));
+            }
+            drop(state);
+            let mut new = 0;
+            for row in &share.rows {
+                if self
+                    .add(row)
+                    .map_err(|e| OscsimError::new_err(e.to_string()))?
+                {
+                    new += 1;
+                }
+            }
+            Ok(new)
+        })
+    }
+
+    /// Syncs the journal and writes `results.csv`, `results.parquet` and `report.html` of
+    /// every recorded row into `out_dir`; returns the text of `results.csv`.
+    fn finish(&self, py: Python<'_>) -> PyResult<String> {
+        guard(|| {
+            let state = self.lock();
+            let mut table = state.resumed.table.clone();
+            table.rows.extend(state.added.values().cloned());
+            table.rows.sort_by_key(|r| r.variant);
+            let out_dir = state.out_dir.clone();
+            state
+                .resumed
+                .journal
+                .sync()
+                .map_err(|e| OscsimError::new_err(e.to_string()))?;
+            drop(state);
+            py.detach(move || batch::write_outputs(&out_dir, &table).map(|()| table.to_csv()))
+                .map_err(|e| OscsimError::new_err(e.to_string()))
+        })
+    }
+}
+
+impl BatchJournal {
+    /// Records `row` unless its variant is recorded; whether it was new.
+    fn add(&self, row: &batch::Row) -> Result<bool, batch::JournalError> {
+        let mut state = self.lock();
+        if state.resumed.has(row.variant) || state.added.contains_key(&row.variant) {
+            return Ok(false);
+        }
+        state.resumed.record(row)?;
+        state.added.insert(row.variant, row.clone());
+        Ok(true)
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, JournalState> {
+        // A panic while the lock was held (turned into InternalError by `guard`) left whole
+        // records only (journal.rs): the state is still usable.
+        self.state.lock().unwrap_or_else(|p| p.into_inner())
     }
 }
 

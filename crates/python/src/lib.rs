@@ -14,7 +14,7 @@
 //! | `record` | the trajectories and event log a simulation keeps |
 //! | `control` | inputs of entities under an `external` controller (the system under test) |
 //! | `simulation` | `Simulation`: step, run, state, values from outside, control, OSI bytes |
-//! | `batch` | `BatchPlan`, `merge_results`, `summary`: the variants of a distribution (`oscsim batch`) |
+//! | `batch` | `BatchPlan`, `BatchJournal`, `merge_results`, `summary`: the variants of a distribution (`oscsim batch`), durable into a folder |
 #![deny(missing_docs)]
 
 use pyo3::prelude::*;
@@ -51,6 +51,7 @@ fn _oscsim(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<state::RoadPosition>()?;
     m.add_class::<state::BoundingBox>()?;
     m.add_class::<batch::BatchPlan>()?;
+    m.add_class::<batch::BatchJournal>()?;
     m.add_function(wrap_pyfunction!(batch::merge_results, m)?)?;
     m.add_function(wrap_pyfunction!(batch::summary, m)?)?;
     m.add_function(wrap_pyfunction!(_debug_panic, m)?)?;

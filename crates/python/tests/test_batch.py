@@ -164,3 +164,132 @@ def test_ray_backend_equals_cli(tmp_path: Path, oscsim_bin: Path, dist: Path):
     assert_same_saved(tmp_path / "cli", tmp_path / "ray")
     assert_frame_is_csv(frame, tmp_path / "cli" / "results.csv")
     assert list(frame["variant"]) == list(range(len(frame)))
+
+
+# Five variants of a slow-and-failing distribution (crates/batch/tests/files/guarded_dist.xosc):
+# 1 stands still until t = 1 000 000 s, 2 fails at t = 1 s; 0, 3, 4 stop at 5, 4, 3 s.
+GUARDED = REPO / "crates" / "batch" / "tests" / "files" / "guarded_dist.xosc"
+
+
+def journal_rows(out: Path) -> list:
+    """The variant numbers of the rows in OUT/batch.journal, one per record, in the order
+    written (crates/batch/src/journal.rs: 8 magic bytes, then length, CRC-32, payload)."""
+    data = (out / "batch.journal").read_bytes()
+    assert data[:8] == b"OSCSIMJ1"
+    at, records = 8, []
+    while at + 8 <= len(data):
+        n = int.from_bytes(data[at : at + 4], "little")
+        records.append(data[at + 8 : at + 8 + n].decode())
+        at += 8 + n
+    assert at == len(data), "a torn record"
+    return [int(r.split(",", 1)[0]) for r in records[1:]]
+
+
+def test_local_backend_resumes_from_a_journal(tmp_path: Path, oscsim_bin: Path):
+    # Ten variants recorded as an interrupted run leaves them (BatchJournal, as the Ray driver
+    # records shares), then the batch run again into the folder runs the other 14 only and
+    # writes the CLI's files.
+    cli_batch(oscsim_bin, GRID, tmp_path / "cli")
+    plan = oscsim.batch.BatchPlan(GRID)
+    out = tmp_path / "py"
+    journal = oscsim.batch.BatchJournal(plan, out)
+    assert journal.record(plan.run(list(range(10)))) == 10
+    assert journal.record(plan.run([3, 4])) == 0  # recorded once
+    del journal
+    text = oscsim.batch.run_csv(GRID, out, backend="local", jobs=2)
+    assert text == (tmp_path / "cli" / "results.csv").read_text()
+    assert_same_outputs(tmp_path / "cli", out)
+    rows = journal_rows(out)
+    assert rows[:10] == list(range(10)) and sorted(rows) == list(range(24))
+    # The CLI's own folder is the same sweep: nothing runs, the same files.
+    assert oscsim.batch.run_csv(GRID, tmp_path / "cli", backend="ray") == text
+    assert sorted(journal_rows(tmp_path / "cli")) == list(range(24))  # nothing added
+    # Another sweep into either folder is refused before anything runs.
+    with pytest.raises(oscsim.OscsimError, match="expected the journal of this sweep"):
+        oscsim.batch.run_csv(GRID, out, seed=2)
+    with pytest.raises(oscsim.OscsimError, match="expected the journal of this sweep"):
+        oscsim.batch.run_csv(CUT_IN_SET, out, backend="ray")
+
+
+def test_variant_timeout_and_failures_are_rows(tmp_path: Path):
+    frame = oscsim.batch.run(GUARDED, tmp_path, max_time=2e6, variant_timeout=2.0, jobs=2)
+    errors = dict(zip(frame["variant"], frame["error"]))
+    assert errors[1] == "timed out: ran longer than the variant timeout of 2 s (wall clock)"
+    assert errors[2].startswith("expected lane -10 (lane -1 + dLane -9)") and errors[2].endswith("(at t = 1.000 s)")
+    ends = dict(zip(frame["variant"], frame["end_time"]))
+    # The stop triggers "time > 4.99", "> 3.99", "> 2.99" fire at the first step past them.
+    assert [ends[v] for v in (0, 3, 4)] == pytest.approx([5.0, 4.0, 3.0], abs=1e-9)
+    assert [errors[v] for v in (0, 3, 4)] == ["", "", ""]
+    with pytest.raises(ValueError, match="variant_timeout"):
+        oscsim.batch.run(GUARDED, variant_timeout=0.0)
+
+
+def test_ray_retries_a_task_that_fails_once_and_counts_it_once(tmp_path: Path, oscsim_bin: Path, monkeypatch):
+    ray = ray_or_skip()
+    cli_batch(oscsim_bin, GRID, tmp_path / "cli", "--save", "csv")
+    died, raised = tmp_path / "died", tmp_path / "raised"
+
+    def flaky(path, variants, options):
+        # The task holding variant 0 loses its worker the first time it runs (an out-of-memory
+        # kill, a lost node); the one holding variant 1 raises the first time. A marker file
+        # says it happened, and the retry runs the share. (Pickled by value: a closure.)
+        import os as os_
+        import oscsim.batch as batch_
+
+        if 0 in variants and not died.exists():
+            died.touch()
+            os_._exit(1)
+        if 1 in variants and not raised.exists():
+            raised.touch()
+            raise RuntimeError("a task failing once")
+        return batch_._run_share(path, variants, options)
+
+    monkeypatch.setattr(oscsim.batch, "_run_share", flaky)
+    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    try:
+        frame = oscsim.batch.run(GRID, tmp_path / "ray", backend="ray", tasks=5, timeout=300, save=("csv",))
+    finally:
+        ray.shutdown()
+    assert died.exists() and raised.exists()
+    assert list(frame["variant"]) == list(range(24))
+    assert sorted(journal_rows(tmp_path / "ray")) == list(range(24))  # each recorded once
+    assert_same_outputs(tmp_path / "cli", tmp_path / "ray")
+    assert_same_saved(tmp_path / "cli", tmp_path / "ray")
+
+
+def test_ray_driver_records_what_finished_and_a_rerun_completes(tmp_path: Path, oscsim_bin: Path, monkeypatch):
+    # The task holding variant 3 fails every time: after its retries the driver raises, once
+    # the other tasks' rows are recorded. The same call again (the task healthy) runs only the
+    # failed task's variants and ends with the CLI's files.
+    ray = ray_or_skip()
+    cli_batch(oscsim_bin, GRID, tmp_path / "cli")
+    attempts = tmp_path / "attempts"
+    attempts.mkdir()
+
+    def broken(path, variants, options):
+        import oscsim.batch as batch_
+        import uuid
+
+        if 3 in variants:
+            (attempts / uuid.uuid4().hex).touch()
+            raise RuntimeError("a task that always fails")
+        return batch_._run_share(path, variants, options)
+
+    out = tmp_path / "ray"
+    ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
+    try:
+        monkeypatch.setattr(oscsim.batch, "_run_share", broken)
+        with pytest.raises(ray.exceptions.RayError, match="a task that always fails"):
+            oscsim.batch.run(GRID, out, backend="ray", tasks=5, timeout=300)
+        # 1 + TASK_RETRIES attempts; task 3 of 5 held 3, 8, 13, 18, 23.
+        assert len(list(attempts.iterdir())) == 1 + oscsim.batch.TASK_RETRIES
+        assert sorted(journal_rows(out)) == [v for v in range(24) if v % 5 != 3]
+        assert not (out / "results.csv").exists()
+        monkeypatch.undo()
+        frame = oscsim.batch.run(GRID, out, backend="ray", tasks=5, timeout=300)
+    finally:
+        ray.shutdown()
+    assert list(frame["variant"]) == list(range(24))
+    assert sorted(journal_rows(out)) == list(range(24))
+    assert len(journal_rows(out)) == 24 and sorted(journal_rows(out)[-5:]) == [3, 8, 13, 18, 23]
+    assert_same_outputs(tmp_path / "cli", out)

@@ -67,6 +67,8 @@ impl FileProvider for DiskFiles {
 /// files.insert("s/Catalogs/Vehicles/cars.xosc", "<OpenSCENARIO/>");
 /// assert!(files.is_dir(Path::new("s/Catalogs")));
 /// assert!(files.is_file(Path::new("s/Catalogs/Vehicles/cars.xosc")));
+/// let held: Vec<_> = files.iter().collect();
+/// assert_eq!(held, [(Path::new("s/Catalogs/Vehicles/cars.xosc"), &b"<OpenSCENARIO/>"[..])]);
 /// ```
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct MemoryFiles {
@@ -95,6 +97,11 @@ impl MemoryFiles {
     /// The contents of the file at `path`, if there is one.
     pub fn get(&self, path: &Path) -> Option<&[u8]> {
         self.files.get(path).map(Vec::as_slice)
+    }
+
+    /// Every file held, with its contents, in path order.
+    pub fn iter(&self) -> impl Iterator<Item = (&Path, &[u8])> {
+        self.files.iter().map(|(p, b)| (p.as_path(), b.as_slice()))
     }
 
     fn not_found(path: &Path) -> io::Error {

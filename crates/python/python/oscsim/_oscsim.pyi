@@ -249,7 +249,32 @@ class BatchPlan:
         save: Sequence[str] = (),
         out_dir: Optional[_Path] = None,
         recording_time: Optional[int] = None,
+        variant_timeout: Optional[float] = None,
+        journal: Optional["BatchJournal"] = None,
     ) -> str: ...
+
+class BatchJournal:
+    """out_dir/batch.journal of a batch: the variants recorded so far, rows recorded as they come
+    back (a driver's shares, or BatchPlan.run with journal=), the results files at the end."""
+
+    def __init__(
+        self,
+        plan: BatchPlan,
+        out_dir: _Path,
+        *,
+        seed: int = 1,
+        dt: float = 0.05,
+        duration: Optional[float] = None,
+        max_time: float = 3600.0,
+        host: str = "Ego",
+        save: Sequence[str] = (),
+        recording_time: Optional[int] = None,
+        variant_timeout: Optional[float] = None,
+    ) -> None: ...
+    @property
+    def done(self) -> List[int]: ...
+    def record(self, csv: str) -> int: ...
+    def finish(self) -> str: ...
 
 def merge_results(parts: Sequence[str], out_dir: Optional[_Path] = None) -> str: ...
 def summary(csv: str) -> str: ...

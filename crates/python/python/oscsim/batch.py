@@ -10,6 +10,12 @@ and seeds, the same rows, and in ``out_dir`` the same ``results.csv``, ``results
 ``report.html``, byte for byte. The variants run in the native engine (``BatchPlan.run``); a
 Ray task runs a share of them and hands back its rows as the text of a ``results.csv``, and the
 driver joins the shares as ``oscsim batch merge`` joins shard folders (``merge_results``).
+
+With ``out_dir`` a batch is durable as on the command line: finished variants are recorded in
+``out_dir/batch.journal`` (by the native runner, or by the Ray driver as each task's rows come
+back, ``BatchJournal``), and running the same batch into the same folder again runs only what
+is missing. A Ray task whose worker dies, or that raises, is retried (``TASK_RETRIES``); its
+rows are recorded once.
 """
 
 from __future__ import annotations
@@ -17,11 +23,17 @@ from __future__ import annotations
 import csv
 import io
 import os
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+import time
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
-from ._oscsim import BatchPlan, merge_results, summary
+from ._oscsim import BatchJournal, BatchPlan, merge_results, summary
 
-__all__ = ["BatchPlan", "frame", "merge_results", "run", "run_csv", "summary"]
+__all__ = ["BatchJournal", "BatchPlan", "frame", "merge_results", "run", "run_csv", "summary"]
+
+#: How often Ray runs a task again after its worker died or it raised (Ray's ``max_retries``
+#: with ``retry_exceptions``): a variant's failure is a row, not an exception, so what fails a
+#: task is the machine (a lost node, an out-of-memory kill) or its files.
+TASK_RETRIES = 3
 
 #: Columns of results.csv by kind (docs/batch.md); the parameters stand between `variant` and
 #: `stop_reason`, the `monitor:<name>` columns (booleans) after `error`.
@@ -50,22 +62,33 @@ def run_csv(
     tasks: Optional[int] = None,
     timeout: Optional[float] = None,
     save: Sequence[str] = (),
+    variant_timeout: Optional[float] = None,
 ) -> str:
     """Runs every variant of ``distribution`` and returns the text of its ``results.csv``.
 
     ``seed``, ``dt``, ``duration``, ``max_time`` and ``host`` are ``oscsim batch``'s
-    ``--seed``, ``--dt``, ``--duration``, ``--max-time`` and ``--host``; ``save`` (any of
+    ``--seed``, ``--dt``, ``--duration``, ``--max-time`` and ``--host``; ``variant_timeout``
+    (s) is ``--variant-timeout``: a variant still running after it is a failed row; ``save`` (any of
     ``"csv"``, ``"events"``, ``"osi"``) is its ``--save``: each variant's trajectories, event
     log or OSI trace in ``out_dir/variants/NNNNN/`` (``out_dir`` required), the OSI traces'
     recording time from ``SOURCE_DATE_EPOCH`` when it is set, as on the command line. With
     Ray, each task writes its variants' files at that path on its own node.
+
+    With ``out_dir`` the batch is durable, as ``oscsim batch --out`` is: each finished variant
+    is recorded in ``out_dir/batch.journal``, and the same call on the same ``out_dir`` after an
+    interruption runs only the variants not recorded yet (a folder holding another batch's
+    results raises ``OscsimError``).
 
     ``backend="local"``: the variants run in this process on ``jobs`` threads (default: every
     core), the interpreter's lock released.
 
     ``backend="ray"``: the variants run as ``tasks`` Ray tasks of one CPU each (default: four per
     CPU of the cluster, at most one per variant); task ``k`` of ``K`` runs the variants
-    ``k, k + K, …`` (round robin, as ``--shard k/K``). Ray must be installed; the cluster is the
+    ``k, k + K, …`` of the variants still to run (round robin, as ``--shard k/K``); the driver
+    records each task's rows as the task ends. A task whose worker dies or that raises is run
+    again, up to ``TASK_RETRIES`` times; one that still fails is raised (``ray.exceptions.RayError``)
+    after the other tasks have finished and their rows are recorded, so that the same call again
+    runs only its variants. Ray must be installed; the cluster is the
     one this process is connected to, or, when none is, a local one ``ray.init()`` starts
     (call ``ray.init`` yourself to choose). The distribution file and the files it names must be
     readable by every worker at the same path. Each worker loads the plan once and keeps it
@@ -74,17 +97,25 @@ def run_csv(
     """
     path = os.fspath(distribution)
     out = None if out_dir is None else os.path.abspath(os.fspath(out_dir))
-    options = dict(seed=seed, dt=dt, duration=duration, max_time=max_time, host=host)
+    options: Dict[str, Any] = dict(
+        seed=seed, dt=dt, duration=duration, max_time=max_time, host=host, variant_timeout=variant_timeout
+    )
     if save:
         if out is None:
             raise ValueError("expected an out_dir for the saved outputs, found none")
-        options.update(save=list(save), out_dir=out, recording_time=_source_date_epoch())
+        options.update(save=list(save), recording_time=_source_date_epoch())
     if backend == "local":
         plan = BatchPlan(path)
-        text = plan.run(jobs=jobs or os.cpu_count() or 1, **options)
-        return merge_results([text], out)
+        threads = jobs or os.cpu_count() or 1
+        if out is None:
+            return merge_results([plan.run(jobs=threads, **options)])
+        journal = BatchJournal(plan, out, **options)
+        done = set(journal.done)
+        todo = [v for v in range(plan.variant_count) if v not in done]
+        plan.run(todo, jobs=threads, out_dir=out, journal=journal, **options)
+        return journal.finish()
     if backend == "ray":
-        return merge_results(_ray_shares(path, options, tasks, timeout), out)
+        return _ray_batch(path, out, options, tasks, timeout)
     raise ValueError(f"expected backend 'local' or 'ray', found {backend!r}")
 
 
@@ -99,26 +130,63 @@ def _source_date_epoch() -> Optional[int]:
         raise ValueError(f"expected Unix seconds in SOURCE_DATE_EPOCH, found {text!r}") from None
 
 
-def _ray_shares(path: str, options: Dict[str, Any], tasks: Optional[int], timeout: Optional[float]) -> List[str]:
+def _ray_batch(
+    path: str,
+    out: Optional[str],
+    options: Dict[str, Any],
+    tasks: Optional[int],
+    timeout: Optional[float],
+    task: Optional[Callable[[str, Sequence[int], Dict[str, Any]], str]] = None,
+) -> str:
+    """The Ray backend: the variants not yet recorded in ``out``'s journal as ``tasks`` tasks,
+    each task's rows recorded as it ends; ``task`` stands in for :func:`_run_share` (tests)."""
     import ray
 
     # The plan is loaded here first, so that a distribution that cannot run fails before any
     # task starts, with the loader's error.
-    count = BatchPlan(path).variant_count
-    if not ray.is_initialized():
-        ray.init()
-    if tasks is None:
-        cpus = int(ray.cluster_resources().get("CPU", 1))
-        tasks = 4 * max(cpus, 1)
-    tasks = max(1, min(tasks, count))
-    remote = ray.remote(num_cpus=1)(_run_share)
-    refs = [remote.remote(os.path.abspath(path), list(range(k, count, tasks)), options) for k in range(tasks)]
-    try:
-        return ray.get(refs, timeout=timeout)
-    except ray.exceptions.GetTimeoutError:
-        for ref in refs:
-            ray.cancel(ref, force=True)
-        raise
+    plan = BatchPlan(path)
+    journal = None if out is None else BatchJournal(plan, out, **options)
+    done = set(journal.done) if journal is not None else set()
+    todo = [v for v in range(plan.variant_count) if v not in done]
+    texts: List[str] = []
+    if todo:
+        if not ray.is_initialized():
+            ray.init()
+        if tasks is None:
+            cpus = int(ray.cluster_resources().get("CPU", 1))
+            tasks = 4 * max(cpus, 1)
+        tasks = max(1, min(tasks, len(todo)))
+        remote = ray.remote(num_cpus=1, max_retries=TASK_RETRIES, retry_exceptions=True)(task or _run_share)
+        share_options = dict(options, out_dir=out) if "save" in options else options
+        pending = [remote.remote(os.path.abspath(path), todo[k::tasks], share_options) for k in range(tasks)]
+        deadline = None if timeout is None else time.monotonic() + timeout
+        # A task that failed for good (its retries spent) is raised once the others have
+        # finished and their rows are recorded: a rerun then has only its variants to run.
+        failure: Optional[BaseException] = None
+        try:
+            while pending:
+                left = None if deadline is None else max(0.0, deadline - time.monotonic())
+                ready, pending = ray.wait(pending, num_returns=1, timeout=left)
+                if not ready:
+                    raise ray.exceptions.GetTimeoutError(f"the batch's tasks did not finish within {timeout} s")
+                try:
+                    text = ray.get(ready[0])
+                except ray.exceptions.RayError as e:
+                    failure = failure or e
+                    continue
+                if journal is not None:
+                    journal.record(text)
+                else:
+                    texts.append(text)
+        except BaseException:
+            for ref in pending:
+                ray.cancel(ref, force=True)
+            raise
+        if failure is not None:
+            raise failure
+    if journal is not None:
+        return journal.finish()
+    return merge_results(texts)
 
 
 #: Plans a worker process has loaded, by (absolute path, modification time).
