@@ -27,10 +27,12 @@
 //! **Durability.** A record is encoded whole and written with one `write_all` under a lock
 //! (several worker threads append), so records never interleave. Once written it is in the
 //! kernel's page cache, which outlives the process: SIGKILL, an out-of-memory kill or an abort
-//! lose nothing written. Against the machine itself going down (power, kernel panic) the file
-//! is `fdatasync`ed at most once per [`SYNC_INTERVAL`] and at the end: such a crash loses at
-//! most the last interval's records, never the readability of the others. A sync per record
-//! would cost more than a variant of the bundled cut-in takes to run.
+//! lose nothing written. Against the machine itself going down (power, kernel panic) a
+//! background thread `fdatasync`s the file once per [`SYNC_INTERVAL`] when records were
+//! appended, and [`Journal::sync`] at the end: such a crash loses at most the last interval's
+//! records, never the readability of the others. The workers never wait for the disk: an
+//! `fdatasync` takes 0.1–40 ms on the shared VM (median 5 ms under load), a variant of the
+//! bundled cut-in under 2 ms. A failed background sync is not reported; the final sync is.
 //!
 //! The journal is created whole with its first record (written to `batch.journal.tmp`,
 //! synced, renamed), so a journal without its header never exists.
@@ -38,8 +40,11 @@
 use std::fs::{File, OpenOptions};
 use std::io::{Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
-use std::time::{Duration, Instant};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{channel, RecvTimeoutError, Sender};
+use std::sync::{Arc, Mutex};
+use std::thread::JoinHandle;
+use std::time::Duration;
 
 /// The first bytes of a journal (the format's version is its last digit).
 pub const MAGIC: &[u8; 8] = b"OSCSIMJ1";
@@ -172,8 +177,11 @@ fn record_at(bytes: &[u8], at: usize) -> Option<&[u8]> {
 pub struct Journal {
     path: PathBuf,
     file: Mutex<File>,
-    /// When the file was last synced.
-    synced: Mutex<Instant>,
+    /// Records were appended since the background syncer last looked.
+    dirty: Arc<AtomicBool>,
+    /// Dropped to stop the background syncer.
+    stop: Option<Sender<()>>,
+    syncer: Option<JoinHandle<()>>,
 }
 
 impl Journal {
@@ -200,55 +208,70 @@ impl Journal {
             .write(true)
             .open(path)
             .map_err(io("open", path))?;
-        file.set_len(valid_len).map_err(io("truncate", path))?;
+        let len = file.metadata().map_err(io("read", path))?.len();
+        if len != valid_len {
+            // The interrupted append is cut off for good before anything follows it.
+            file.set_len(valid_len).map_err(io("truncate", path))?;
+            file.sync_data().map_err(io("sync", path))?;
+        }
         file.seek(SeekFrom::Start(valid_len))
             .map_err(io("seek in", path))?;
-        file.sync_data().map_err(io("sync", path))?;
+        let dirty = Arc::new(AtomicBool::new(false));
+        let (stop, stopped) = channel::<()>();
+        let handle = file.try_clone().map_err(io("open", path))?;
+        let flag = Arc::clone(&dirty);
+        let syncer = std::thread::Builder::new()
+            .name("journal-sync".into())
+            .spawn(move || {
+                while let Err(RecvTimeoutError::Timeout) = stopped.recv_timeout(SYNC_INTERVAL) {
+                    if flag.swap(false, Ordering::AcqRel) {
+                        // Not reported: the final sync is (module doc).
+                        let _ = handle.sync_data();
+                    }
+                }
+            })
+            .map_err(io("start the syncer of", path))?;
         Ok(Journal {
             path: path.to_path_buf(),
             file: Mutex::new(file),
-            synced: Mutex::new(Instant::now()),
+            dirty,
+            stop: Some(stop),
+            syncer: Some(syncer),
         })
     }
 
-    /// Appends one record (one write of the whole frame); syncs when [`SYNC_INTERVAL`] has
-    /// passed since the last sync.
+    /// Appends one record (one write of the whole frame); the background syncer syncs it
+    /// within [`SYNC_INTERVAL`].
     pub fn append(&self, payload: &str) -> Result<(), JournalError> {
         let bytes = frame(payload.as_bytes())?;
-        {
-            // A worker that panicked while holding the lock wrote a whole record or none (one
-            // write_all), so the file stays usable: take it back from the poison.
-            let mut file = self.file.lock().unwrap_or_else(|p| p.into_inner());
-            file.write_all(&bytes)
-                .map_err(io("append to", &self.path))?;
-        }
-        let due = {
-            let mut synced = self.synced.lock().unwrap_or_else(|p| p.into_inner());
-            let due = synced.elapsed() >= SYNC_INTERVAL;
-            if due {
-                *synced = Instant::now();
-            }
-            due
-        };
-        if due {
-            self.sync()?;
-        }
+        // A worker that panicked while holding the lock wrote a whole record or none (one
+        // write_all), so the file stays usable: take it back from the poison.
+        let mut file = self.file.lock().unwrap_or_else(|p| p.into_inner());
+        file.write_all(&bytes)
+            .map_err(io("append to", &self.path))?;
+        self.dirty.store(true, Ordering::Release);
         Ok(())
     }
 
     /// Syncs the records appended so far to the disk (`fdatasync`).
     pub fn sync(&self) -> Result<(), JournalError> {
-        // Cloned handle: syncing does not hold up the appenders.
-        let file = {
-            let file = self.file.lock().unwrap_or_else(|p| p.into_inner());
-            file.try_clone().map_err(io("sync", &self.path))?
-        };
+        let file = self.file.lock().unwrap_or_else(|p| p.into_inner());
         file.sync_data().map_err(io("sync", &self.path))
     }
 
     /// The journal's path.
     pub fn path(&self) -> &Path {
         &self.path
+    }
+}
+
+impl Drop for Journal {
+    fn drop(&mut self) {
+        // The syncer wakes at once when its channel closes.
+        drop(self.stop.take());
+        if let Some(syncer) = self.syncer.take() {
+            let _ = syncer.join();
+        }
     }
 }
 

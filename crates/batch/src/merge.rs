@@ -4,7 +4,6 @@
 //! function the unsharded run uses, on the same values (table.rs keeps numbers as written), so
 //! the files are equal byte for byte. Per-variant folders (`variants/NNNNN`) are copied.
 
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use crate::parquet_file::{to_parquet, ParquetError};
@@ -62,7 +61,9 @@ fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> Merg
 }
 
 /// Writes `results.csv`, `results.parquet` and `report.html` of `table` into `dir`, each to a
-/// temporary name, synced and renamed into place: a kill leaves each file whole, old or new.
+/// temporary name and renamed into place: a kill leaves each file whole, old or new. Not
+/// synced: they are made from the batch's journal, which is (resume.rs); after a power loss
+/// the batch run again writes them anew.
 pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
     std::fs::create_dir_all(dir).map_err(io("cannot create", dir))?;
     let files = [
@@ -73,9 +74,7 @@ pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
     for (name, bytes) in files {
         let path = dir.join(name);
         let tmp = dir.join(format!("{name}.tmp"));
-        let mut file = std::fs::File::create(&tmp).map_err(io("cannot write", &tmp))?;
-        file.write_all(&bytes).map_err(io("cannot write", &tmp))?;
-        file.sync_all().map_err(io("cannot sync", &tmp))?;
+        std::fs::write(&tmp, bytes).map_err(io("cannot write", &tmp))?;
         std::fs::rename(&tmp, &path).map_err(io("cannot rename into place", &path))?;
     }
     Ok(())
