@@ -2,7 +2,8 @@
 # Performance figures of issue 17 in one command (docs/performance.md explains each):
 #   scale highway (1,000 vehicles, 20 km, default controller, dt 0.05): entity-steps/s with no
 #   output, CSV rows/s with --csv, OSI moving objects/s with --osi; peak memory at 60 s and at
-#   300 s simulated; load of the 60 MB town grid; the esmini corpus loop (one process each).
+#   300 s simulated; the same with every vehicle driven by idm and by mobil (issue 31); load
+#   of the 60 MB town grid; the esmini corpus loop (one process each).
 #
 # Usage: scripts/perf.sh [OUT]      (OUT: scratch folder, default target/perf)
 # Needs: python3 with scenariogeneration (pip install scenariogeneration) for
@@ -50,6 +51,15 @@ timed "scale 60 s, no output (steps)" $((n * steps60)) "$oscsim" run "$scale60" 
 timed "scale 300 s, --csv (rows)" $((n * (steps300 + 1))) "$oscsim" run "$scale300" --quiet --csv "$out/scale.csv"
 timed "scale 60 s, --osi (objects)" $((n * (steps60 + 1))) "$oscsim" run "$scale60" --quiet --osi "$out/scale.osi"
 timed "scale load only (0 s)" 0 "$oscsim" run "$scale60" --quiet --duration 0.05
+# Driver-model traffic (issue 31): every vehicle driven by idm, then mobil (ObjectController
+# activated in the Init, scripts/traffic_scale.py); 300 s and 60 s for the peak memory.
+for m in idm mobil; do
+    for d in 300 60; do
+        python3 "$root/scripts/traffic_scale.py" oscsim "$out/scale$d/xosc/scale_$n.xosc" $m "$out/scale$d/xosc/${m}_$n.xosc"
+        steps=$((d * 20 + 1))
+        timed "scale $d s, $m (steps)" $((n * steps)) "$oscsim" run "$out/scale$d/xosc/${m}_$n.xosc" --quiet
+    done
+done
 rm -f "$out/scale.csv" "$out/scale.osi"
 
 "$root/target/release/examples/grid_xodr" "$out/grid.xodr" 60

@@ -19,7 +19,6 @@ m/s) and writes:
 
 scripts/sumo_side_by_side.sh runs both; docs/performance.md explains the figures.
 """
-import math
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -87,7 +86,6 @@ def sumo(xosc_in, model, duration, outdir):
         shape = [tuple(map(float, p.split(","))) for p in lanes[0].get("shape").split()]
         if shape[-1][0] > shape[0][0] and len(lanes) == 4:
             edge = e.get("id")
-            limit = float(lanes[0].get("speed"))
     if edge is None:
         sys.exit("traffic_scale.py: no 4-lane edge driving +x in " + str(net))
     # idm changes no lanes: LC2013 with each of its motives switched off.
@@ -124,7 +122,6 @@ def sumo(xosc_in, model, duration, outdir):
     ET.SubElement(rep, "no-warnings", value="true")
     ET.SubElement(rep, "duration-log.statistics", value="true")
     ET.ElementTree(cfg).write(outdir / "run.sumocfg", encoding="utf-8", xml_declaration=True)
-    return limit
 
 
 if __name__ == "__main__":
