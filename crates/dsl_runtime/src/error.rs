@@ -18,6 +18,8 @@ pub enum ErrorKind {
     Modifier,
     /// An action or behavior the runtime does not run.
     Unsupported,
+    /// An action's argument is missing or has a value the action cannot take.
+    Argument,
     /// A phase that cannot end (no duration, no `until`, nothing that ends it).
     NoEnd,
     /// Constraints the planner cannot meet (`at: end` out of the vehicle's limits, a lane that

@@ -26,7 +26,7 @@ use scenario::{
     Trigger, UserDefinedAction, Vehicle,
 };
 
-use crate::plan::{Entity, Plan, When, MAX_ACCELERATION, MAX_SPEED};
+use crate::plan::{Entity, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
 use crate::trigger::sim_time;
 
 /// Builds the scenario model of `plan`; `file` is the `.osc` path, `road` the OpenDRIVE file.
@@ -73,91 +73,50 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             ],
         });
     }
-    let acts = plan
-        .phases
-        .iter()
-        .map(|ph| {
-            let pos = ph.site.pos.clone();
-            let mut groups = if ph.hold {
-                vec![hold_group(&ph.path, pos.clone())]
-            } else {
-                Vec::new()
-            };
-            if let Some(e) = &ph.emit {
-                groups.push(emit_group(
-                    &ph.path,
-                    vec![(e.clone(), None, pos.clone())],
-                    1,
-                    pos.clone(),
-                ));
-            }
-            let mut actors: Vec<&str> = Vec::new();
-            for a in &ph.actions {
-                if !actors.contains(&a.entity.as_str()) {
-                    actors.push(&a.entity);
-                }
-            }
-            for actor in actors {
-                let events = ph
-                    .actions
-                    .iter()
-                    .filter(|a| a.entity == actor)
-                    .map(|a| {
-                        let pos = a.site.pos.clone();
-                        Event {
-                            name: a.name.clone(),
-                            priority: Priority::Parallel,
-                            maximum_execution_count: 1,
-                            actions: vec![Action {
-                                name: a.name.clone(),
-                                kind: ActionKind::Private(a.action.clone()),
-                                pos: pos.clone(),
-                            }],
-                            start_trigger: a.at.map(|t| Trigger {
-                                condition_groups: vec![ConditionGroup {
-                                    conditions: vec![sim_time(
-                                        t,
-                                        Rule::GreaterOrEqual,
-                                        pos.clone(),
-                                    )],
-                                }],
-                            }),
-                            pos,
-                        }
-                    })
-                    .collect();
-                let name = format!("{}/{actor}", ph.path);
-                groups.push(ManeuverGroup {
-                    name: name.clone(),
-                    maximum_execution_count: 1,
-                    actors: Actors {
-                        select_triggering_entities: false,
-                        entity_refs: vec![actor.to_string()],
-                    },
-                    maneuvers: vec![Maneuver {
-                        name,
-                        events,
-                        catalog: None,
-                        pos: pos.clone(),
-                    }],
-                    pos: pos.clone(),
-                });
-            }
-            Act {
-                name: ph.path.clone(),
-                maneuver_groups: groups,
-                start_trigger: match &ph.start {
-                    When::At(t) if *t <= 0.0 => None,
-                    w => trigger_of(w),
-                },
-                stop_trigger: trigger_of(&ph.end),
-                pos,
-            }
-        })
-        .collect::<Vec<Act>>();
-    // `on` handlers: one Act each, running until the root phase (written last) ends.
+    // The run ends with the root phase (written last).
     let run_end = plan.phases.last().and_then(|root| trigger_of(&root.end));
-    let mut acts = acts;
+    let mut acts = Vec::new();
+    for ph in &plan.phases {
+        let pos = ph.site.pos.clone();
+        let mut groups = if ph.hold {
+            vec![hold_group(&ph.path, pos.clone())]
+        } else {
+            Vec::new()
+        };
+        if let Some(e) = &ph.emit {
+            groups.push(emit_group(
+                &ph.path,
+                vec![(e.clone(), None, pos.clone())],
+                1,
+                pos.clone(),
+            ));
+        }
+        groups.extend(actor_groups(&ph.path, &ph.actions, &pos));
+        let start_trigger = match &ph.start {
+            When::At(t) if *t <= 0.0 => None,
+            w => trigger_of(w),
+        };
+        acts.push(Act {
+            name: ph.path.clone(),
+            maneuver_groups: groups,
+            start_trigger: start_trigger.clone(),
+            stop_trigger: trigger_of(&ph.end),
+            pos: pos.clone(),
+        });
+        // What goes on after the phase: an Act from its start to the end of the run (a later
+        // action of the actor in the same domain replaces it in the engine).
+        if !ph.persist.is_empty() {
+            let path = format!("{}/continue", ph.path);
+            acts.push(Act {
+                maneuver_groups: actor_groups(&path, &ph.persist, &pos),
+                name: path,
+                start_trigger,
+                stop_trigger: run_end.clone(),
+                pos,
+            });
+        }
+    }
+    // `on` handlers: one Act each, running until the root phase (written last) ends.
     let mut handlers: Vec<(&str, Vec<Emission>)> = Vec::new();
     for h in &plan.handlers {
         let emit = (h.event.clone(), Some(h.trigger.clone()), h.site.pos.clone());
@@ -241,6 +200,61 @@ fn vehicle(e: &Entity) -> Vehicle {
         trailer: None,
         catalog: None,
     }
+}
+
+/// One ManeuverGroup `PATH/ACTOR` per actor of `actions`, in the order they first act, with one
+/// Event per action (starting with the Act, or at an absolute time).
+fn actor_groups(path: &str, actions: &[Planned], pos: &SourcePos) -> Vec<ManeuverGroup> {
+    let mut actors: Vec<&str> = Vec::new();
+    for a in actions {
+        if !actors.contains(&a.entity.as_str()) {
+            actors.push(&a.entity);
+        }
+    }
+    actors
+        .into_iter()
+        .map(|actor| {
+            let events = actions
+                .iter()
+                .filter(|a| a.entity == actor)
+                .map(|a| {
+                    let pos = a.site.pos.clone();
+                    Event {
+                        name: a.name.clone(),
+                        priority: Priority::Parallel,
+                        maximum_execution_count: 1,
+                        actions: vec![Action {
+                            name: a.name.clone(),
+                            kind: ActionKind::Private(a.action.clone()),
+                            pos: pos.clone(),
+                        }],
+                        start_trigger: a.at.map(|t| Trigger {
+                            condition_groups: vec![ConditionGroup {
+                                conditions: vec![sim_time(t, Rule::GreaterOrEqual, pos.clone())],
+                            }],
+                        }),
+                        pos,
+                    }
+                })
+                .collect();
+            let name = format!("{path}/{actor}");
+            ManeuverGroup {
+                name: name.clone(),
+                maximum_execution_count: 1,
+                actors: Actors {
+                    select_triggering_entities: false,
+                    entity_refs: vec![actor.to_string()],
+                },
+                maneuvers: vec![Maneuver {
+                    name,
+                    events,
+                    catalog: None,
+                    pos: pos.clone(),
+                }],
+                pos: pos.clone(),
+            }
+        })
+        .collect()
 }
 
 fn trigger_of(w: &When) -> Option<Trigger> {

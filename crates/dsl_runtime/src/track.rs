@@ -1,13 +1,64 @@
-//! Planned longitudinal motion of one actor: a piecewise-linear speed profile over time, its
-//! integral (s along the road) and the lane it is in. The planner extends it as it plans each
-//! phase; after its last change the speed holds.
+//! Planned longitudinal motion of one actor: its speed over time as a sequence of stretches of
+//! change (linear or constant-jerk, sinusoidal, or a step), the speed holding between them;
+//! its integral (the distance along its lane), and the lane and offset it is in. The planner
+//! extends it as it plans each phase; after the last change the speed holds.
 
-/// A stretch of linear speed change from `t0` to `t1`.
+use std::f64::consts::PI;
+
+/// How the speed changes over a stretch.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Ramp {
+enum Shape {
+    /// A linear change to `v1` over `span` s (possibly cut short).
+    Linear { v1: f64, span: f64 },
+    /// Acceleration `a0` at the stretch's start, changing at `jerk` (m/s³).
+    Poly { a0: f64, jerk: f64 },
+    /// A sinusoidal change by `dv` over `period` s (the fraction done after τ is
+    /// (1 − cos(πτ/period))/2, the engine's sinusoidal shape), possibly cut short.
+    Sine { dv: f64, period: f64 },
+    /// A jump to `v1` at the stretch's start (it takes no time).
+    Step { v1: f64 },
+}
+
+impl Shape {
+    /// Speed gained and distance covered `tau` s into the stretch, starting at speed `v`.
+    fn advance(&self, v: f64, tau: f64) -> (f64, f64) {
+        match *self {
+            Shape::Linear { v1, span } => {
+                let v_end = v + (v1 - v) * tau / span;
+                (v_end - v, 0.5 * (v + v_end) * tau)
+            }
+            Shape::Poly { a0, jerk } => (
+                a0 * tau + 0.5 * jerk * tau * tau,
+                v * tau + 0.5 * a0 * tau * tau + jerk * tau * tau * tau / 6.0,
+            ),
+            Shape::Sine { dv, period } => {
+                let w = PI / period;
+                (
+                    dv * (1.0 - (w * tau).cos()) / 2.0,
+                    v * tau + dv / 2.0 * (tau - (w * tau).sin() / w),
+                )
+            }
+            Shape::Step { v1 } => (v1 - v, v1 * tau),
+        }
+    }
+
+    /// Acceleration `tau` s into the stretch (m/s²), which started at speed `v`.
+    fn acceleration(&self, v: f64, tau: f64) -> f64 {
+        match *self {
+            Shape::Linear { v1, span } => (v1 - v) / span,
+            Shape::Poly { a0, jerk } => a0 + jerk * tau,
+            Shape::Sine { dv, period } => dv * PI / (2.0 * period) * (PI * tau / period).sin(),
+            Shape::Step { .. } => 0.0,
+        }
+    }
+}
+
+/// A stretch of speed change from `t0` to `t1`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Stretch {
     t0: f64,
     t1: f64,
-    v1: f64,
+    shape: Shape,
 }
 
 /// Longitudinal motion and lane of an actor.
@@ -16,7 +67,7 @@ pub(crate) struct Track {
     /// s and speed at time 0.
     s0: f64,
     v0: f64,
-    ramps: Vec<Ramp>,
+    stretches: Vec<Stretch>,
     /// (time from which, lane id).
     lanes: Vec<(f64, i32)>,
     /// (time from which, offset from the lane centre, m).
@@ -31,7 +82,7 @@ impl Track {
         Track {
             s0: s,
             v0: v,
-            ramps: Vec::new(),
+            stretches: Vec::new(),
             lanes: vec![(0.0, lane)],
             offsets: vec![(0.0, 0.0)],
             moves: Vec::new(),
@@ -71,35 +122,94 @@ impl Track {
 
     /// s and speed at time `t` (≥ 0).
     pub(crate) fn at(&self, t: f64) -> (f64, f64) {
+        let (s, v, _) = self.state(t);
+        (s, v)
+    }
+
+    /// Acceleration at time `t` (m/s²): of the stretch under way, else 0 (the speed holds).
+    /// At a stretch's end, the acceleration it ends with.
+    pub(crate) fn acceleration(&self, t: f64) -> f64 {
+        self.state(t).2
+    }
+
+    /// s, speed and acceleration at time `t`.
+    fn state(&self, t: f64) -> (f64, f64, f64) {
         let (mut s, mut v, mut now) = (self.s0, self.v0, 0.0);
-        for r in &self.ramps {
+        for r in &self.stretches {
             if t <= r.t0 {
                 break;
             }
-            // Hold v from now to the ramp's start.
+            // Hold v from now to the stretch's start.
             s += v * (r.t0 - now);
             let end = t.min(r.t1);
-            let span = r.t1 - r.t0;
-            let v_end = if span > 0.0 {
-                v + (r.v1 - v) * (end - r.t0) / span
-            } else {
-                r.v1
-            };
-            s += 0.5 * (v + v_end) * (end - r.t0);
+            let tau = end - r.t0;
+            let (dv, ds) = r.shape.advance(v, tau);
+            s += ds;
             now = end;
+            let a = r.shape.acceleration(v, tau);
             if t < r.t1 {
-                return (s, v_end);
+                return (s, v + dv, a);
             }
-            v = r.v1;
+            v = match r.shape {
+                // The end speed exactly, when the change ran its course.
+                Shape::Linear { v1, span } if tau == span => v1,
+                Shape::Step { v1 } => v1,
+                _ => v + dv,
+            };
+            if t == r.t1 {
+                return (s, v, if r.t1 > r.t0 { a } else { 0.0 });
+            }
         }
-        (s + v * (t - now), v)
+        (s + v * (t - now), v, 0.0)
+    }
+
+    /// A new stretch from `t0`: later planned changes are dropped, and one under way at `t0` is
+    /// cut there (the speed it reached holds until the new one starts).
+    fn push(&mut self, stretch: Stretch) {
+        let t0 = stretch.t0;
+        self.stretches
+            .retain(|r| r.t0 < t0 || (r.t0 == t0 && r.t1 == t0 && stretch.t1 > t0));
+        if let Some(last) = self.stretches.last_mut() {
+            last.t1 = last.t1.min(t0);
+        }
+        self.stretches.push(stretch);
     }
 
     /// Speed changes linearly from its value at `t0` to `v1` at `t1` (a step when equal), and
     /// holds after; later planned changes are dropped.
     pub(crate) fn ramp(&mut self, t0: f64, t1: f64, v1: f64) {
-        self.ramps.retain(|r| r.t1 <= t0);
-        self.ramps.push(Ramp { t0, t1, v1 });
+        let shape = if t1 > t0 {
+            Shape::Linear { v1, span: t1 - t0 }
+        } else {
+            Shape::Step { v1 }
+        };
+        self.push(Stretch { t0, t1, shape });
+    }
+
+    /// Speed changes sinusoidally from its value at `t0` to `v1` at `t1`, and holds after.
+    pub(crate) fn sine(&mut self, t0: f64, t1: f64, v1: f64) {
+        if t1 <= t0 {
+            return self.ramp(t0, t1, v1);
+        }
+        let dv = v1 - self.at(t0).1;
+        self.push(Stretch {
+            t0,
+            t1,
+            shape: Shape::Sine {
+                dv,
+                period: t1 - t0,
+            },
+        });
+    }
+
+    /// From `t0` to `t1` the acceleration starts at `a0` and changes at `jerk`; the speed holds
+    /// after `t1`.
+    pub(crate) fn jerk(&mut self, t0: f64, t1: f64, a0: f64, jerk: f64) {
+        self.push(Stretch {
+            t0,
+            t1,
+            shape: Shape::Poly { a0, jerk },
+        });
     }
 
     /// The lane at time `t`.
@@ -148,5 +258,39 @@ mod tests {
         t.set_lane(2.0, -1);
         assert_eq!(t.lane(1.9), -2);
         assert_eq!(t.lane(2.0), -1);
+    }
+
+    #[test]
+    fn sinusoidal_change_and_cut() {
+        // 10 → 20 m/s sinusoidally over 4 s from s = 0: v(τ) = 10 + 5·(1 − cos(πτ/4)),
+        // s(τ) = 10τ + 5·(τ − (4/π)·sin(πτ/4)): s(2) = 30 − 20/π, s(4) = 60; then 20 m/s.
+        let pi = std::f64::consts::PI;
+        let mut t = Track::new(0.0, 10.0, -1);
+        t.sine(0.0, 4.0, 20.0);
+        assert!((t.at(2.0).1 - 15.0).abs() < TOL);
+        assert!((t.at(2.0).0 - (30.0 - 20.0 / pi)).abs() < TOL);
+        assert!((t.acceleration(2.0) - 10.0 * pi / 8.0).abs() < TOL);
+        assert!((t.at(4.0).0 - 60.0).abs() < TOL);
+        assert!((t.at(5.0).0 - 80.0).abs() < TOL);
+        // A new change at 2 s cuts it: 15 m/s holds from there.
+        t.ramp(2.0, 2.0, 15.0);
+        assert!((t.at(3.0).0 - (45.0 - 20.0 / pi)).abs() < TOL);
+    }
+
+    #[test]
+    fn constant_jerk_then_constant_acceleration() {
+        // From 10 m/s: a = 2.5·τ for 1.2 s (v = 10 + 1.25τ², s = 10τ + 2.5τ³/6), then 3 m/s².
+        let mut t = Track::new(10.0, 10.0, -1);
+        t.jerk(0.0, 1.2, 0.0, 2.5);
+        t.jerk(1.2, 3.2, 3.0, 0.0);
+        assert!((t.at(1.2).1 - 11.8).abs() < TOL);
+        assert!((t.at(1.2).0 - 22.72).abs() < TOL);
+        assert!((t.acceleration(1.2) - 3.0).abs() < TOL);
+        assert!((t.at(3.2).1 - 17.8).abs() < TOL);
+        assert!((t.at(3.2).0 - 52.32).abs() < TOL);
+        assert!(
+            t.acceleration(4.0).abs() < TOL,
+            "holding 17.8 m/s after the stretch"
+        );
     }
 }

@@ -27,6 +27,25 @@ pub(crate) fn act_state(
     }
 }
 
+/// A condition on the state of the storyboard Event `event` (an action's completion).
+pub(crate) fn event_state(
+    event: &str,
+    state: StoryboardElementState,
+    pos: scenario::SourcePos,
+) -> Condition {
+    Condition {
+        name: format!("{event}:{}", state.as_str()),
+        condition_edge: ConditionEdge::None,
+        delay: 0.0,
+        kind: ConditionKind::ByValue(ByValueCondition::StoryboardElementState {
+            storyboard_element_type: StoryboardElementType::Event,
+            storyboard_element_ref: event.to_string(),
+            state,
+        }),
+        pos,
+    }
+}
+
 /// `every(period, offset: offset)` counted from the start of the run: SimulationTimeEvery at
 /// the planner's step.
 pub(crate) fn every_from_start(

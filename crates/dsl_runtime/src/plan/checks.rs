@@ -23,7 +23,8 @@ pub(crate) fn check_keeps(
                     return Err(c.site.err(
                         K::Unsatisfiable,
                         format!(
-                            "expected no lane change beside keep_lane() at {}, found `{}(…)`",
+                            "expected no lane change beside {}() at {}, found `{}(…)`",
+                            k.name,
                             k.site.at(),
                             c.name
                         ),
@@ -48,7 +49,8 @@ pub(crate) fn check_keeps(
                     return Err(c.site.err(
                         K::Unsatisfiable,
                         format!(
-                            "expected no movement beside keep_position() at {}, found `{}(…)`",
+                            "expected no movement beside {}() at {}, found `{}(…)`",
+                            k.name,
                             k.site.at(),
                             c.name
                         ),
@@ -63,7 +65,8 @@ pub(crate) fn check_keeps(
                     return Err(c.site.err(
                         K::Unsatisfiable,
                         format!(
-                            "expected no speed change beside keep_speed() at {}, found `{}(…)`",
+                            "expected no speed change beside {}() at {}, found `{}(…)`",
+                            k.name,
                             k.site.at(),
                             c.name
                         ),
@@ -72,7 +75,7 @@ pub(crate) fn check_keeps(
                 if let Some((c, v0, v1)) = step {
                     return Err(c.site.err(
                         K::Unsatisfiable,
-                        format!("expected the speed kept beside keep_speed() at {}, found a step from {v0:.2} m/s to {v1:.2} m/s", k.site.at()),
+                        format!("expected the speed kept beside {}() at {}, found a step from {v0:.2} m/s to {v1:.2} m/s", k.name, k.site.at()),
                     ));
                 }
             }

@@ -14,9 +14,10 @@ use super::motion::{
 };
 use super::planner::Planner;
 use super::route::{self, OnRoute};
+use super::speed_actions::Slot;
 use super::types::{Planned, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{Arg, At, Invoke, ModKind, Modifier, Phase};
+use crate::resolve::{Action, Arg, At, Invoke, ModKind, Modifier, Phase};
 
 impl Planner<'_> {
     /// Plans one invocation: its actions, and the time its `position(…, at: end)` is met when
@@ -31,15 +32,32 @@ impl Planner<'_> {
         end: Option<f64>,
         len: Option<f64>,
         out: &mut Vec<Planned>,
+        persist: &mut Vec<Planned>,
     ) -> Result<Option<When>, Error> {
-        if inv.action != "drive" {
-            return Err(p.site.err(
-                K::Unsupported,
-                format!(
-                    "expected drive() (the movement action the runtime plans), found `{}`",
-                    inv.action
-                ),
-            ));
+        match inv.kind {
+            Action::Other => {
+                return Err(p.site.err(
+                    K::Unsupported,
+                    format!(
+                        "expected a movement action of the standard library (§8.8), found `{}`, an action the program declares (actions with a body of their own are not run)",
+                        inv.action
+                    ),
+                ))
+            }
+            Action::Move
+            | Action::ChangeSpeed
+            | Action::AssignSpeed
+            | Action::KeepSpeed
+            | Action::RemainStationary
+            | Action::AssignAcceleration
+            | Action::ChangeAcceleration
+            | Action::KeepAcceleration => {}
+            _ => {
+                return Err(p.site.err(
+                    K::Unsupported,
+                    format!("expected a movement action the runtime plans, found `{}` (not run yet)", inv.action),
+                ))
+            }
         }
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),
@@ -75,10 +93,24 @@ impl Planner<'_> {
                 if !first && v.abs() > 1e-9 {
                     return Err(k.site.err(
                         K::Unsatisfiable,
-                        format!("expected `{target}` standing at the start of keep_position(), found it at {v:.2} m/s (stop it in an earlier phase)"),
+                        format!("expected `{target}` standing at the start of {}(), found it at {v:.2} m/s (stop it in an earlier phase)", k.name),
                     ));
                 }
             }
+            // The action itself, then its modifiers.
+            let slot = Slot {
+                target,
+                t0,
+                len: match (t0, end, len) {
+                    (Some(a), Some(b), _) if b > a => Some(b - a),
+                    (_, _, l) => l,
+                },
+                first,
+                out: &mut *out,
+                persist: &mut *persist,
+            };
+            let action_end = self.plan_speed_action(p, inv, slot, &mut name)?;
+            derived = all_of(derived, action_end);
             // Speed first, position at end last: it builds on the phase's speed.
             let mut ordered: Vec<&Modifier> = mods.iter().collect();
             ordered.sort_by_key(|m| {
@@ -519,4 +551,26 @@ impl Planner<'_> {
         }
         Ok(derived)
     }
+}
+
+/// Both ends: the later of two times, or every condition of both.
+fn all_of(a: Option<When>, b: Option<When>) -> Option<When> {
+    Some(match (a, b) {
+        (None, x) | (x, None) => return x,
+        (Some(When::At(x)), Some(When::At(y))) => When::At(x.max(y)),
+        (Some(x), Some(y)) => {
+            let (gx, gy) = (x.groups(), y.groups());
+            let mut groups = Vec::new();
+            for p in &gx {
+                for q in &gy {
+                    let mut c = p.conditions.clone();
+                    c.extend(q.conditions.iter().cloned());
+                    groups.push(scenario::ConditionGroup { conditions: c });
+                }
+            }
+            When::Dyn(scenario::Trigger {
+                condition_groups: groups,
+            })
+        }
+    })
 }

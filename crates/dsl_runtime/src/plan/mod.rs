@@ -49,7 +49,8 @@
 //! | `planner` | the planner's state: entities, tracks, phases planned so far |
 //! | `motion` | speed profiles, modifier values, lane targets |
 //! | `events` | conditions and events as triggers in their event context |
-//! | `invoke` | one invocation's actions |
+//! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
+//! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 use std::cell::RefCell;
 use std::collections::{HashMap, HashSet};
@@ -68,6 +69,7 @@ mod place;
 mod planner;
 mod route;
 mod schedule;
+mod speed_actions;
 mod types;
 
 use events::EventCtx;
@@ -76,7 +78,9 @@ use planner::{no_end, Planner};
 
 pub(crate) use route::named_road;
 pub use types::POSITION_TOLERANCE;
-pub(crate) use types::{Entity, HandlerPlan, Plan, Settings, When, MAX_ACCELERATION, MAX_SPEED};
+pub(crate) use types::{
+    Entity, HandlerPlan, Plan, Planned, Settings, When, MAX_ACCELERATION, MAX_SPEED,
+};
 
 /// Plans the resolved scenario on `road`.
 pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> Result<Plan, Error> {

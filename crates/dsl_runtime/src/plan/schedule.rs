@@ -32,28 +32,47 @@ impl Planner<'_> {
         let end = match &p.kind {
             Kind::Invoke(_) | Kind::Wait => {
                 let mut actions = Vec::new();
+                let mut persist = Vec::new();
                 let mut derived = None;
                 if let Kind::Invoke(inv) = &p.kind {
                     let cap = own.as_ref().or(inherit.as_ref()).and_then(When::time);
                     let len = p.duration.or(len_hint);
                     let ms = &inv.modifiers;
-                    derived = self.plan_invoke(p, inv, ms, start.time(), cap, len, &mut actions)?;
+                    derived = self.plan_invoke(
+                        p,
+                        inv,
+                        ms,
+                        start.time(),
+                        cap,
+                        len,
+                        &mut actions,
+                        &mut persist,
+                    )?;
                 }
                 let end = match (own, derived, inherit) {
-                    (Some(o), _, i) => o.or(i.unwrap_or(When::Pending)),
+                    // An action that ends on its own ends its phase then, unless the phase's
+                    // own end comes first.
+                    (Some(o), d, i) => d
+                        .map_or(o.clone(), |d| o.or(d))
+                        .or(i.unwrap_or(When::Pending)),
                     (None, Some(d), i) => d.or(i.unwrap_or(When::Pending)),
                     (None, None, Some(i)) => i,
                     (None, None, None) if self.settings.open_end => When::Never,
                     (None, None, None) => return Err(no_end(p)),
                 };
                 let end = capped(end);
+                // An action that ends as it starts (assign_speed): its Act completes in its
+                // first step, with its actions.
+                let instant = matches!(p.kind, Kind::Invoke(_))
+                    && matches!((&start, &end), (When::At(a), When::At(b)) if a == b);
                 self.phases.push(PhasePlan {
                     path: p.path.clone(),
                     site: p.site.clone(),
                     start,
                     end: end.clone(),
                     actions,
-                    hold: true,
+                    persist,
+                    hold: !instant,
                     emit: None,
                 });
                 return Ok(end);
@@ -66,6 +85,7 @@ impl Planner<'_> {
                     start: start.clone(),
                     end: When::Never,
                     actions: Vec::new(),
+                    persist: Vec::new(),
                     hold: false,
                     emit: Some(event.clone()),
                 });
@@ -218,6 +238,7 @@ impl Planner<'_> {
             start,
             end: end.clone(),
             actions: Vec::new(),
+            persist: Vec::new(),
             hold: true,
             emit: None,
         });

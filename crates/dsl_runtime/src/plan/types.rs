@@ -89,6 +89,10 @@ pub(crate) struct PhasePlan {
     pub end: When,
     /// What the actors do.
     pub actions: Vec<Planned>,
+    /// What the actors go on doing after the phase, until another action controls the same
+    /// motion (an acceleration an action set holds): lowered to an Act of their own that runs
+    /// from the phase's start to the scenario's end.
+    pub persist: Vec<Planned>,
     /// The phase lasts until its end (all but `emit`, an instant).
     pub hold: bool,
     /// The event an `emit` phase emits.

@@ -34,8 +34,8 @@ pub(crate) use cond::{Cond, Timed};
 pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{Object, VehicleData};
 pub(crate) use route::{Along, Route};
-pub(crate) use tree::{Invoke, Kind, Phase};
-pub(crate) use value::{Arg, Draws, Val};
+pub(crate) use tree::{Action, Invoke, Kind, Phase};
+pub(crate) use value::{arg, Arg, Draws, Val};
 
 use crate::error::{Error, ErrorKind, Files, Site};
 

@@ -8,6 +8,7 @@ use dsl::semantics::hir::{Expr, ModifierApp};
 
 use super::eval::{bind, Eval};
 use super::route::{self, Along};
+use super::tree::Action;
 use super::value::{arg, Arg, Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
@@ -86,6 +87,28 @@ impl Modifier {
     pub(crate) fn arg(&self, name: &str) -> Option<&Arg> {
         arg(&self.args, name)
     }
+}
+
+/// The modifiers the semantic clarification of `action` (§8.8) implies, named after the action
+/// (written at `site`) so that messages name what the user wrote: `remain_stationary()` is
+/// `move() with: keep_position()` (§8.8.2.10), `keep_speed()` is `move() with: keep_speed()`
+/// (§8.8.2.13), `follow_lane()` is `drive() with: keep_lane()` (§8.8.3.2).
+pub(crate) fn implied(action: Action, name: &str, site: &Site) -> Vec<Modifier> {
+    let kind = match action {
+        Action::RemainStationary => ModKind::KeepPosition,
+        Action::KeepSpeed => ModKind::KeepSpeed,
+        Action::FollowLane => ModKind::KeepLane,
+        _ => return Vec::new(),
+    };
+    vec![Modifier {
+        kind,
+        name: name.to_string(),
+        at: At::All,
+        monotonous: false,
+        args: Vec::new(),
+        along: None,
+        site: site.clone(),
+    }]
 }
 
 /// Reads `app`.

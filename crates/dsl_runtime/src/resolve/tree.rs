@@ -19,7 +19,7 @@ use dsl::semantics::types::{CompoundId, Ty};
 use super::cond::{self, every_args, Cond};
 use super::eval::{Eval, Frame};
 use super::modifier::{self, Modifier};
-use super::value::Val;
+use super::value::{Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
 /// One phase.
@@ -65,9 +65,15 @@ pub(crate) struct Invoke {
     pub actor: String,
     /// The actor expression.
     pub actor_site: Site,
-    /// The action (`drive`).
+    /// The action's name as written (`drive`).
     pub action: String,
-    /// Modifiers in order.
+    /// Which §8.8 action it is.
+    pub kind: Action,
+    /// The action's arguments by parameter name (positional ones bound in declaration order,
+    /// own parameters first, as the checker binds them).
+    pub args: Args,
+    /// Modifiers in order: those written, then those its semantic clarification implies
+    /// (`remain_stationary()` is `move() with: keep_position()`, §8.8.2.10).
     pub modifiers: Vec<Modifier>,
 }
 
@@ -83,6 +89,79 @@ pub(crate) struct Entered {
 
 /// Deepest nesting of invocations (the checker reports recursive ones; this guards the stack).
 const MAX_INVOCATION_DEPTH: usize = 64;
+
+/// The movement actions of the standard library (ASAM OpenSCENARIO DSL 2.1 §8.8).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Action {
+    /// `move()`, `drive()`, `walk()`: motion set by the modifiers alone.
+    Move,
+    /// `remain_stationary()`.
+    RemainStationary,
+    /// `assign_position(…)`.
+    AssignPosition,
+    /// `assign_orientation(…)`.
+    AssignOrientation,
+    /// `assign_speed(…)`.
+    AssignSpeed,
+    /// `assign_acceleration(…)`.
+    AssignAcceleration,
+    /// `change_position(…)`.
+    ChangePosition,
+    /// `change_speed(…)`.
+    ChangeSpeed,
+    /// `keep_speed()`.
+    KeepSpeed,
+    /// `change_acceleration(…)`.
+    ChangeAcceleration,
+    /// `keep_acceleration()`.
+    KeepAcceleration,
+    /// `follow_path(…)`.
+    FollowPath,
+    /// `follow_trajectory(…)`.
+    FollowTrajectory,
+    /// `follow_lane(…)`.
+    FollowLane,
+    /// `change_lane(…)`.
+    ChangeLane,
+    /// `change_space_gap(…)`.
+    ChangeSpaceGap,
+    /// `keep_space_gap(…)`.
+    KeepSpaceGap,
+    /// `change_time_headway(…)`.
+    ChangeTimeHeadway,
+    /// `keep_time_headway(…)`.
+    KeepTimeHeadway,
+    /// An action the program declares itself.
+    Other,
+}
+
+impl Action {
+    /// The standard library's action named `name`.
+    fn of_library(name: &str) -> Action {
+        match name {
+            "move" | "drive" | "walk" => Action::Move,
+            "remain_stationary" => Action::RemainStationary,
+            "assign_position" => Action::AssignPosition,
+            "assign_orientation" => Action::AssignOrientation,
+            "assign_speed" => Action::AssignSpeed,
+            "assign_acceleration" => Action::AssignAcceleration,
+            "change_position" => Action::ChangePosition,
+            "change_speed" => Action::ChangeSpeed,
+            "keep_speed" => Action::KeepSpeed,
+            "change_acceleration" => Action::ChangeAcceleration,
+            "keep_acceleration" => Action::KeepAcceleration,
+            "follow_path" => Action::FollowPath,
+            "follow_trajectory" => Action::FollowTrajectory,
+            "follow_lane" => Action::FollowLane,
+            "change_lane" => Action::ChangeLane,
+            "change_space_gap" => Action::ChangeSpaceGap,
+            "keep_space_gap" => Action::KeepSpaceGap,
+            "change_time_headway" => Action::ChangeTimeHeadway,
+            "keep_time_headway" => Action::KeepTimeHeadway,
+            _ => Action::Other,
+        }
+    }
+}
 
 impl Phase {
     /// Every leaf (invocation, wait or emit) in tree order.
@@ -256,7 +335,7 @@ fn build(
                     ),
                 ));
             };
-            let params = action_params(ev, &actor_path, &name.text);
+            let (kind, params) = action_params(ev, &actor_path, &name.text);
             let args = ev.args(args, &params);
             let mut duration = None;
             let mut until = None;
@@ -308,13 +387,17 @@ fn build(
                     }
                 }
             }
+            let site = ev.site(*span);
+            modifiers.extend(modifier::implied(kind, &name.text, &site));
             Ok(Phase {
                 path,
-                site: ev.site(*span),
+                site,
                 kind: Kind::Invoke(Invoke {
                     actor: actor_path,
                     actor_site: ev.site(actor.as_ref().map_or(*span, |a| a.span)),
                     action: name.text.clone(),
+                    kind,
+                    args,
                     modifiers,
                 }),
                 duration,
@@ -463,21 +546,32 @@ fn behavior(
     Ok(phase)
 }
 
-/// Parameter names of `actor.action`, own first then inherited (as the checker binds them).
-fn action_params(ev: &Eval<'_>, actor: &str, action: &str) -> Vec<String> {
+/// Which action `actor.action` is, and its parameter names, own first then inherited (as the
+/// checker binds them). An action the program declares (not the standard library) is
+/// [`Action::Other`], whatever its name.
+fn action_params(ev: &Eval<'_>, actor: &str, action: &str) -> (Action, Vec<String>) {
+    let fallback = (Action::Other, vec!["duration".into()]);
     let Some(ty) = ev.lookup(actor).and_then(|(_, v)| ev.type_of(v)) else {
-        return vec!["duration".into()];
+        return fallback;
     };
     let Some(b) = ev.model.behavior_of(ty, action) else {
-        return vec!["duration".into()];
+        return fallback;
     };
-    ev.model
+    let library = ev.model.compound(b).span.file.0 < ev.model.library_files;
+    let kind = if library {
+        Action::of_library(action)
+    } else {
+        Action::Other
+    };
+    let params = ev
+        .model
         .ancestry(b)
         .into_iter()
         .flat_map(|c| ev.model.compound(c).fields.iter())
         .filter(|f| !f.is_var)
         .map(|f| f.name.clone())
-        .collect()
+        .collect();
+    (kind, params)
 }
 
 fn non_negative(ev: &Eval<'_>, e: &Expr) -> Result<f64, Error> {

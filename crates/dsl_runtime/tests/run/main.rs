@@ -3,6 +3,7 @@
 //! 0.05 s step grid.
 
 mod along;
+mod bad_input;
 mod distance;
 mod groups;
 mod handlers;
@@ -10,6 +11,7 @@ mod lane_side;
 mod lateral;
 mod orientation;
 mod reuse;
+mod speed_actions;
 mod support;
 
 use support::{error, run, DT};

@@ -209,3 +209,11 @@ pub fn error(name: &str) -> String {
         Err(e) => e.to_string(),
     }
 }
+
+/// The distance the engine covers from `a` to `b` s when the speed at time t is `v(t)`: it
+/// sets each step's speed at the step's end and moves with it, Σ v(tₖ)·dt over the step ends
+/// tₖ in (a, b].
+pub fn stepped(v: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    let n = ((b - a) / DT).round() as usize;
+    (1..=n).map(|k| v(a + k as f64 * DT) * DT).sum()
+}

@@ -1,0 +1,55 @@
+//! Bad input is an error before the run, with FILE:LINE:COL (issue 27, item 4): one test per
+//! class — an action the actor does not have, a missing mandatory argument, a target that
+//! cannot be reached within the vehicle's limits or the phase's duration, and a modifier that
+//! contradicts the action it modifies.
+
+use crate::support::error;
+
+fn expect(name: &str, place: &str, words: &[&str]) {
+    let e = error(&format!("actions/{name}"));
+    assert!(e.contains(&format!("{name}.osc:{place}")), "{e}");
+    for w in words {
+        assert!(e.contains(w), "{w:?} not in {e}");
+    }
+}
+
+#[test]
+fn an_action_the_actor_does_not_have() {
+    expect(
+        "err_walk_vehicle",
+        "4:12",
+        &["unknown action or scenario `walk` on actor `vehicle`"],
+    );
+}
+
+#[test]
+fn a_missing_mandatory_argument() {
+    expect(
+        "err_missing_target",
+        "4:8",
+        &["expected a target in change_speed(…) (a mandatory argument), found none"],
+    );
+}
+
+#[test]
+fn a_target_beyond_the_vehicle_limits_or_the_duration() {
+    expect(
+        "err_speed_limits",
+        "4:8",
+        &["within the vehicle's ±10 m/s²", "needs 20.00 m/s²"],
+    );
+    expect(
+        "err_speed_duration",
+        "4:8",
+        &["within the action's 3 s", "needs 10.00 s"],
+    );
+}
+
+#[test]
+fn a_modifier_that_contradicts_the_action() {
+    expect(
+        "err_speed_modifier",
+        "6:9",
+        &["expected no speed modifier beside change_speed(…), which controls the speed, found `speed(…)`"],
+    );
+}

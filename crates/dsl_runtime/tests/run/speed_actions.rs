@@ -1,0 +1,190 @@
+//! The §8.8.2 actions that control the speed or the acceleration (`change_speed`,
+//! `assign_speed`, `keep_speed`, `remain_stationary`, `assign_acceleration`,
+//! `change_acceleration`, `keep_acceleration`) on `tests/roads/straight.xodr`: speeds against
+//! the closed forms of each scenario's comment, distances as the engine integrates them
+//! (`support::stepped`: the speed of each step's end), phase ends where the action ends.
+
+use std::f64::consts::PI;
+
+use crate::support::{run, stepped};
+
+/// Speeds are closed forms the engine evaluates at the step times; distances sums of a few
+/// hundred of them.
+const TOL: f64 = 1e-9;
+/// Phase ends are step times.
+const T_TOL: f64 = 1e-9;
+
+fn close(got: f64, want: f64, what: &str) {
+    assert!((got - want).abs() < TOL, "{what}: {got} vs {want}");
+}
+
+#[test]
+fn change_speed_at_a_rate_ends_when_the_target_is_reached() {
+    let r = run("actions/change_speed_rate", 0, None);
+    let v = |t: f64| {
+        if t <= 1.0 {
+            10.0
+        } else {
+            (10.0 + 5.0 * (t - 1.0)).min(30.0)
+        }
+    };
+    close(r.at(3.0, "ego").speed, 20.0, "v(3)");
+    close(r.at(3.0, "ego").s, 20.0 + stepped(v, 0.0, 3.0), "s(3)");
+    // The exact integral is 60 m; the engine's step lead is 5 m/s² · 2 s · dt/2.
+    close(stepped(v, 0.0, 3.0), 40.0 + 0.25, "hand sum");
+    close(r.at(5.0, "ego").speed, 30.0, "v(5)");
+    close(r.at(6.0, "ego").s, 20.0 + stepped(v, 0.0, 6.0), "s(6)");
+    assert!((stepped(v, 0.0, 6.0) - (120.0 + 0.5)).abs() < TOL);
+    let (s, e) = r.phase("do.1");
+    assert!(
+        (s - 1.0).abs() < T_TOL && (e - 5.0).abs() < T_TOL,
+        "{s} {e}"
+    );
+    let (s, e) = r.phase("do.2");
+    assert!(
+        (s - 5.0).abs() < T_TOL && (e - 6.0).abs() < T_TOL,
+        "{s} {e}"
+    );
+}
+
+#[test]
+fn change_speed_smooth_over_a_duration_is_sinusoidal() {
+    let r = run("actions/change_speed_smooth", 0, None);
+    let v = |t: f64| 10.0 + 10.0 * (1.0 - (PI * t.min(4.0) / 4.0).cos()) / 2.0;
+    close(r.at(2.0, "ego").speed, 15.0, "v(2)");
+    close(r.at(2.0, "ego").s, 20.0 + stepped(v, 0.0, 2.0), "s(2)");
+    // The sum is the exact 50 − 20/π m plus the step lead (dt/2 · 5 m/s) and its curvature term.
+    assert!((20.0 + stepped(v, 0.0, 2.0) - (50.0 - 20.0 / PI + 0.125)).abs() < 1e-3);
+    close(r.at(4.0, "ego").speed, 20.0, "v(4)");
+    assert!((r.at(4.0, "ego").s - (80.0 + 0.25)).abs() < 1e-6);
+    assert_eq!(r.phase("do"), (0.0, 4.0));
+}
+
+#[test]
+fn change_speed_without_rate_or_duration_and_asap() {
+    let r = run("actions/change_speed_default", 0, None);
+    let v = |t: f64| {
+        if t <= 3.0 {
+            20.0 - 2.0 * t
+        } else {
+            (14.0 - 10.0 * (t - 3.0)).max(0.0)
+        }
+    };
+    close(r.at(1.5, "ego").speed, 17.0, "v(1.5)");
+    close(r.at(3.0, "ego").s, 10.0 + stepped(v, 0.0, 3.0), "s(3)");
+    let (s, e) = r.phase("do.0");
+    assert!(
+        (s - 0.0).abs() < T_TOL && (e - 3.0).abs() < T_TOL,
+        "{s} {e}"
+    );
+    let (s, e) = r.phase("do.1");
+    assert!(
+        (s - 3.0).abs() < T_TOL && (e - 4.4).abs() < T_TOL,
+        "{s} {e}"
+    );
+    close(r.at(4.4, "ego").speed, 0.0, "v(4.4)");
+    // 70.8 m exactly, less the lead of the two decelerations: (6 + 14) m/s · dt/2.
+    close(r.at(4.4, "ego").s, 70.8 - 0.5, "s(4.4)");
+}
+
+#[test]
+fn assign_speed_ends_at_once_and_keep_speed_holds() {
+    let r = run("actions/assign_and_keep_speed", 0, None);
+    assert_eq!(r.phase("do.0"), (0.0, 1.0));
+    // assign_speed's Act starts and ends in the step at 1 s; keep_speed starts with it.
+    assert_eq!(r.phase("do.1"), (1.0, 1.0));
+    assert_eq!(r.phase("do.2"), (1.0, 3.0));
+    close(r.at(1.0, "ego").s, 20.0, "s(1)");
+    close(r.at(1.05, "ego").speed, 25.0, "v(1.05)");
+    close(r.at(2.0, "ego").s, 45.0, "s(2)");
+    close(r.at(3.0, "ego").s, 70.0, "s(3)");
+}
+
+#[test]
+fn remain_stationary_stands_then_the_vehicle_pulls_away() {
+    let r = run("actions/remain_stationary", 0, None);
+    let ego = r.at(0.0, "ego");
+    assert_eq!(ego.lane, -2);
+    close(ego.speed, 0.0, "v(0)");
+    close(r.at(2.0, "ego").s, 50.0, "s(2)");
+    let v = |t: f64| (2.0 * (t - 2.0)).clamp(0.0, 10.0);
+    close(r.at(4.5, "ego").speed, 5.0, "v(4.5)");
+    close(r.at(4.5, "ego").s, 50.0 + stepped(v, 2.0, 4.5), "s(4.5)");
+    // Hand: 56.25 m and the lead 5 m/s · dt/2.
+    close(50.0 + stepped(v, 2.0, 4.5), 56.25 + 0.125, "hand sum");
+    assert_eq!(r.phase("do.0"), (0.0, 2.0));
+    assert_eq!(r.phase("do.1"), (2.0, 7.0));
+}
+
+/// Code 110 of the standard (§8.8.2.15).
+#[test]
+fn change_keep_and_change_acceleration() {
+    let r = run("actions/acceleration_actions", 0, None);
+    // v(t) of the scenario's comment.
+    let v = |t: f64| {
+        if t <= 1.2 {
+            10.0 + 1.25 * t * t
+        } else if t <= 3.2 {
+            11.8 + 3.0 * (t - 1.2)
+        } else if t <= 4.4 {
+            let u = t - 3.2;
+            17.8 + 3.0 * u - 1.25 * u * u
+        } else {
+            19.6
+        }
+    };
+    for (t, want) in [
+        (0.6, 10.45),
+        (1.2, 11.8),
+        (3.2, 17.8),
+        (4.4, 19.6),
+        (5.4, 19.6),
+    ] {
+        assert!(
+            (r.at(t, "ego").speed - want).abs() < 1e-6,
+            "v({t}) = {}",
+            r.at(t, "ego").speed
+        );
+    }
+    for t in [1.2, 3.2, 4.4, 5.4] {
+        let s = r.at(t, "ego").s;
+        assert!(
+            (s - (10.0 + stepped(v, 0.0, t))).abs() < 1e-6,
+            "s({t}) = {s}"
+        );
+    }
+    // The exact distances of the comment and the lead (Δv · dt/2) of the engine's steps.
+    assert!((10.0 + stepped(v, 0.0, 5.4) - (94.72 + 9.6 * 0.025)).abs() < 1e-3);
+    for (path, s, e) in [
+        ("do.0", 0.0, 1.2),
+        ("do.1", 1.2, 3.2),
+        ("do.2", 3.2, 4.4),
+        ("do.3", 4.4, 5.4),
+    ] {
+        let (a, b) = r.phase(path);
+        assert!(
+            (a - s).abs() < T_TOL && (b - e).abs() < T_TOL,
+            "{path}: {a} {b}"
+        );
+    }
+}
+
+#[test]
+fn an_assigned_acceleration_holds_until_a_speed_action() {
+    let r = run("actions/assign_acceleration", 0, None);
+    let v = |t: f64| {
+        if t <= 7.0 {
+            (20.0 - 4.0 * t).max(0.0)
+        } else {
+            (5.0 * (t - 7.0)).min(10.0)
+        }
+    };
+    close(r.at(2.0, "ego").speed, 12.0, "v(2)");
+    close(r.at(2.0, "ego").s, 10.0 + stepped(v, 0.0, 2.0), "s(2)");
+    close(r.at(6.0, "ego").speed, 0.0, "v(6)");
+    // Stopped at 60 m exactly, less the lead 20 m/s · dt/2.
+    close(r.at(6.0, "ego").s, 60.0 - 0.5, "s(6)");
+    close(r.at(9.0, "ego").speed, 10.0, "v(9)");
+    assert_eq!(r.phase("do.0"), (0.0, 0.0));
+    assert_eq!(r.phase("do.2"), (7.0, 9.0));
+}
