@@ -2,9 +2,12 @@
 //! (`FILE:LINE:COL`), found before the run starts.
 
 use std::fmt;
+use std::path::Path;
+use std::sync::Arc;
 
 use dsl::semantics::hir::Span;
 use dsl::Source;
+use scenario::SourcePos;
 
 /// What went wrong.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -33,20 +36,48 @@ pub enum ErrorKind {
     Road,
 }
 
-/// A planning error.
+/// A planning error: what kind, the message, and the place in the `.osc` file.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub struct Error {
+    kind: ErrorKind,
+    message: String,
+    pos: SourcePos,
+}
+
+impl Error {
+    /// An error of `kind` at `pos`; `message` is lowercase ("expected …, found …").
+    pub(crate) fn new(kind: ErrorKind, message: impl Into<String>, pos: SourcePos) -> Error {
+        Error {
+            kind,
+            message: message.into(),
+            pos,
+        }
+    }
+
+    /// An error about file `file` as a whole, placed at its start (1:1).
+    pub(crate) fn at_start_of(kind: ErrorKind, message: impl Into<String>, file: &Path) -> Error {
+        Error::new(kind, message, SourcePos::start_of(Arc::from(file)))
+    }
+
     /// What went wrong.
-    pub kind: ErrorKind,
-    /// Lowercase message ("expected …, found …").
-    pub message: String,
-    /// `FILE:LINE:COL` of the construct.
-    pub at: String,
+    pub fn kind(&self) -> ErrorKind {
+        self.kind
+    }
+
+    /// Where: the construct's file and 1-based line and column.
+    pub fn pos(&self) -> &SourcePos {
+        &self.pos
+    }
+
+    /// The message without the position.
+    pub fn message(&self) -> &str {
+        &self.message
+    }
 }
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} at {}", self.message, self.at)
+        write!(f, "{} at {}", self.message, self.pos)
     }
 }
 
@@ -58,7 +89,7 @@ pub(crate) struct Site {
     /// The construct's bytes.
     pub span: Span,
     /// Its file, line and column.
-    pub pos: scenario::SourcePos,
+    pub pos: SourcePos,
 }
 
 impl Site {
@@ -69,11 +100,7 @@ impl Site {
 
     /// An error of `kind` here.
     pub(crate) fn err(&self, kind: ErrorKind, message: impl Into<String>) -> Error {
-        Error {
-            kind,
-            message: message.into(),
-            at: self.at(),
-        }
+        Error::new(kind, message, self.pos.clone())
     }
 }
 

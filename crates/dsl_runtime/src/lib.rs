@@ -105,11 +105,11 @@ pub fn load(osc: &Path, road: Option<&Path>, options: &Options) -> Result<Lowere
     let road = match road {
         Some(r) => r.to_path_buf(),
         None => map_file(&program, osc).ok_or_else(|| {
-            LoadError::Plan(Error {
-                kind: ErrorKind::Road,
-                message: "expected a road network (--road FILE.xodr, or map.set_map_file(\"FILE.xodr\") in the scenario), found none".into(),
-                at: format!("{}:1:1", osc.display()),
-            })
+            LoadError::Plan(Error::at_start_of(
+                ErrorKind::Road,
+                "expected a road network (--road FILE.xodr, or map.set_map_file(\"FILE.xodr\") in the scenario), found none",
+                osc,
+            ))
         })?,
     };
     let net = opendrive::RoadNetwork::from_file(&road).map_err(LoadError::Road)?;

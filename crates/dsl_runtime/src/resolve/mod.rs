@@ -138,7 +138,6 @@ fn entry<'p>(
             })
         })
         .collect();
-    let start = || scenario::SourcePos::start_of(std::sync::Arc::from(osc)).to_string();
     let listed = |list: &[(CompoundId, &dsl::semantics::hir::Labeled)]| {
         list.iter()
             .map(|(c, _)| {
@@ -153,14 +152,10 @@ fn entry<'p>(
             .iter()
             .find(|(c, _)| model.compound(*c).name == name)
             .copied()
-            .ok_or_else(|| Error {
-                kind: ErrorKind::NoScenario,
-                message: format!(
+            .ok_or_else(|| Error::at_start_of(ErrorKind::NoScenario, format!(
                     "expected a scenario `{name}` with a `do` (--scenario), found none; scenarios with a `do`: {}",
                     if with_do.is_empty() { "none".to_string() } else { listed(&with_do) }
-                ),
-                at: start(),
-            });
+                ), osc));
     }
     let invoked: BTreeSet<CompoundId> = program.invocations.iter().map(|i| i.callee).collect();
     let candidates: Vec<_> = with_do
@@ -170,19 +165,11 @@ fn entry<'p>(
         .collect();
     match candidates.as_slice() {
         [one] => Ok(*one),
-        [] if with_do.is_empty() => Err(Error {
-            kind: ErrorKind::NoScenario,
-            message: "expected a scenario with a `do` to run, found none".into(),
-            at: start(),
-        }),
-        [] => Err(Error {
-            kind: ErrorKind::NoScenario,
-            message: format!(
+        [] if with_do.is_empty() => Err(Error::at_start_of(ErrorKind::NoScenario, "expected a scenario with a `do` to run, found none", osc)),
+        [] => Err(Error::at_start_of(ErrorKind::NoScenario, format!(
                 "expected a scenario that no other invokes (the entry point), found every scenario invoked: {}; name one with --scenario NAME",
                 listed(&with_do)
-            ),
-            at: start(),
-        }),
+            ), osc)),
         [first, ..] => Err(files.err(
             ErrorKind::NoScenario,
             model.compound(first.0).span,
