@@ -51,7 +51,9 @@ impl Planner<'_> {
             | Action::RemainStationary
             | Action::AssignAcceleration
             | Action::ChangeAcceleration
-            | Action::KeepAcceleration => {}
+            | Action::KeepAcceleration
+            | Action::ChangeLane
+            | Action::FollowLane => {}
             _ => {
                 return Err(p.site.err(
                     K::Unsupported,
@@ -109,7 +111,12 @@ impl Planner<'_> {
                 out: &mut *out,
                 persist: &mut *persist,
             };
-            let action_end = self.plan_speed_action(p, inv, slot, &mut name)?;
+            let action_end = match inv.kind {
+                Action::ChangeLane | Action::FollowLane => {
+                    self.plan_lateral_action(p, inv, slot, &mut name)?
+                }
+                _ => self.plan_speed_action(p, inv, slot, &mut name)?,
+            };
             derived = all_of(derived, action_end);
             // Speed first, position at end last: it builds on the phase's speed.
             let mut ordered: Vec<&Modifier> = mods.iter().collect();

@@ -49,7 +49,9 @@
 //! | `planner` | the planner's state: entities, tracks, phases planned so far |
 //! | `motion` | speed profiles, modifier values, lane targets |
 //! | `events` | conditions and events as triggers in their event context |
+//! | `action_args` | a §8.8 action's `rate_profile`, `rate_peak`, `duration` and the dynamics they give |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
+//! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 use std::cell::RefCell;
@@ -60,10 +62,12 @@ use crate::resolve::{At, Kind, ModKind, Modifier, Phase, Resolved, Route};
 use crate::road::PlanRoad;
 use crate::track::Track;
 
+mod action_args;
 mod checks;
 mod events;
 mod invoke;
 mod lateral;
+mod lateral_actions;
 mod motion;
 mod place;
 mod planner;

@@ -21,14 +21,15 @@
 use std::f64::consts::FRAC_PI_2;
 
 use scenario::{
-    DynamicsDimension, DynamicsShape, LongitudinalAction, PrivateAction, SpeedTarget,
-    SpeedTargetValueType, StoryboardElementState, TransitionDynamics,
+    DynamicsShape, LongitudinalAction, PrivateAction, SpeedTarget, SpeedTargetValueType,
+    TransitionDynamics,
 };
 
+use super::action_args::{missing, number, positive, profile, rate, timed, Profile};
 use super::planner::Planner;
 use super::types::{Planned, When, MAX_ACCELERATION, MAX_SPEED};
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{arg, Action, At, Invoke, ModKind, Phase, Val};
+use crate::resolve::{arg, Action, At, Invoke, ModKind, Phase};
 
 /// Acceleration of a speed change that gives neither a rate nor a duration (m/s²): the largest
 /// average acceleration ISO 15622 allows an adaptive cruise control, a comfortable change.
@@ -53,15 +54,6 @@ pub(super) struct Slot<'o> {
     pub out: &'o mut Vec<Planned>,
     /// Actions that go on after the phase.
     pub persist: &'o mut Vec<Planned>,
-}
-
-/// A rate profile (§8.8.2.18 `dynamic_profile`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Profile {
-    None,
-    Constant,
-    Smooth,
-    Asap,
 }
 
 impl Planner<'_> {
@@ -261,25 +253,6 @@ impl Planner<'_> {
         }
     }
 
-    /// When an action of phase `p` that lasts `span` s from `t0` ends: at t0 + span when the
-    /// plan knows t0, else when its engine Event `event` completes (or, without one, `span` s
-    /// after the phase starts).
-    fn ends(&self, t0: Option<f64>, span: f64, event: &str, p: &Phase) -> When {
-        match (t0, event) {
-            (Some(t), _) => When::At(t + span),
-            (None, "") => self.after(&p.path, &p.site, &When::Pending, span),
-            (None, e) => When::Dyn(scenario::Trigger {
-                condition_groups: vec![scenario::ConditionGroup {
-                    conditions: vec![crate::trigger::event_state(
-                        e,
-                        StoryboardElementState::CompleteState,
-                        p.site.pos.clone(),
-                    )],
-                }],
-            }),
-        }
-    }
-
     /// Plans `target`'s speed under an acceleration that changes from `a0` to `a1` over `span`
     /// s from `t0` (linearly: constant jerk) and then holds until the speed reaches 0 m/s or
     /// the maximum. Without a known start only the speed at the end is recorded.
@@ -364,60 +337,6 @@ fn acceleration(target: Option<f64>, dynamics: TransitionDynamics) -> PrivateAct
     PrivateAction::Longitudinal(LongitudinalAction::Acceleration { target, dynamics })
 }
 
-/// Dynamics over `time` s.
-fn timed(shape: DynamicsShape, time: f64) -> TransitionDynamics {
-    TransitionDynamics {
-        dynamics_shape: shape,
-        dynamics_dimension: DynamicsDimension::Time,
-        value: time,
-        following_mode: None,
-    }
-}
-
-/// Dynamics of a change by `delta` at the peak rate `rate` of a shape whose peak slope is
-/// `slope`, and how long it lasts.
-fn rate(shape: DynamicsShape, rate: f64, delta: f64, slope: f64) -> (TransitionDynamics, f64) {
-    (
-        TransitionDynamics {
-            dynamics_shape: shape,
-            dynamics_dimension: DynamicsDimension::Rate,
-            value: rate,
-            following_mode: None,
-        },
-        delta.abs() * slope / rate,
-    )
-}
-
-/// The error of a missing mandatory argument.
-fn missing(p: &Phase, inv: &Invoke, param: &str) -> Error {
-    p.site.err(
-        K::Argument,
-        format!(
-            "expected a {param} in {}(…) (a mandatory argument), found none",
-            inv.action
-        ),
-    )
-}
-
-/// The number `param` of `inv`, if given.
-fn number(inv: &Invoke, param: &str) -> Result<Option<f64>, Error> {
-    arg(&inv.args, param).map(|a| a.number()).transpose()
-}
-
-/// The number `param` of `inv`, if given, which must be above 0.
-fn positive(inv: &Invoke, param: &str) -> Result<Option<f64>, Error> {
-    match arg(&inv.args, param) {
-        None => Ok(None),
-        Some(a) => match a.number()? {
-            x if x > 0.0 => Ok(Some(x)),
-            x => Err(a.site.err(
-                K::Argument,
-                format!("expected a {param} above 0, found {x}"),
-            )),
-        },
-    }
-}
-
 /// The `target` speed of `inv`: mandatory, within 0 m/s and the vehicle's maximum.
 fn speed_target(inv: &Invoke, p: &Phase) -> Result<f64, Error> {
     let a = arg(&inv.args, "target").ok_or_else(|| missing(p, inv, "target"))?;
@@ -440,21 +359,4 @@ fn check_acceleration(p: &Phase, a: f64) -> Result<(), Error> {
         ));
     }
     Ok(())
-}
-
-/// The `rate_profile` of `inv` (`none` when not given).
-fn profile(inv: &Invoke) -> Result<Profile, Error> {
-    let Some(a) = arg(&inv.args, "rate_profile") else {
-        return Ok(Profile::None);
-    };
-    match a.eval()? {
-        Val::Enum(m) if m == "none" => Ok(Profile::None),
-        Val::Enum(m) if m == "constant" => Ok(Profile::Constant),
-        Val::Enum(m) if m == "smooth" => Ok(Profile::Smooth),
-        Val::Enum(m) if m == "asap" => Ok(Profile::Asap),
-        _ => Err(a.site.err(
-            K::Argument,
-            "expected none, constant, smooth or asap, found another value",
-        )),
-    }
 }

@@ -53,3 +53,39 @@ fn a_modifier_that_contradicts_the_action() {
         &["expected no speed modifier beside change_speed(…), which controls the speed, found `speed(…)`"],
     );
 }
+
+#[test]
+fn lateral_actions_with_bad_arguments() {
+    expect(
+        "err_change_lane_target",
+        "5:32",
+        &["expected the lane of change_lane(…) given by num_of_lanes, side and reference, found `target:`"],
+    );
+    expect(
+        "err_change_lane_same",
+        "4:30",
+        &["expected a reference with side: same"],
+    );
+    expect(
+        "err_follow_lane_offset",
+        "4:32",
+        &["expected an offset within the lane's half width ±1.75 m, found 3.00 m"],
+    );
+}
+
+#[test]
+fn lateral_actions_beyond_the_limits_or_contradicted() {
+    expect(
+        "err_change_lane_fast",
+        "4:8",
+        &[
+            "within the vehicle's ±10 m/s² lateral acceleration",
+            "needs 17.27 m/s²",
+        ],
+    );
+    expect(
+        "err_change_lane_modifier",
+        "7:9",
+        &["expected no lane or lateral modifier beside change_lane(…), which controls the lateral position, found `lateral(…)`"],
+    );
+}

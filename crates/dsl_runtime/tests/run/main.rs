@@ -9,6 +9,7 @@ mod groups;
 mod handlers;
 mod lane_side;
 mod lateral;
+mod lateral_actions;
 mod orientation;
 mod reuse;
 mod speed_actions;
