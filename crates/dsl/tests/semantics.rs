@@ -82,6 +82,8 @@ cases! {
     // Class 1: a file's own declarations win over the standard library's (§7.7.5.2).
     library_own_declarations, library_own_declarations_imported, library_visible_without_import,
     library_use_std, err_library_own_type_is_another, err_library_wrong_namespace,
+    // Class 2: plain default values and conversions evaluate.
+    defaults_plain_values, err_conversion_undefined, free_numbers_sampled,
     // Class 3: a keyword before a parenthesised condition.
     keyword_parenthesis, err_keyword_parenthesis_not_event,
     // Class 5: `extend ::name:`.

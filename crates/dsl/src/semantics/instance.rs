@@ -93,6 +93,22 @@ impl Tree {
         t
     }
 
+    /// The scalar variables of node `n` and everything under it (list sizes are not among
+    /// them: a sized list's size is fixed by a hard constraint of the resolver's stage).
+    pub fn vars_under(&self, n: NodeId) -> Vec<VarId> {
+        let mut out = Vec::new();
+        let mut stack = vec![n];
+        while let Some(n) = stack.pop() {
+            match &self.nodes[n] {
+                Node::Scalar(v, _) => out.push(*v),
+                Node::Compound(_, fields) => stack.extend(fields.iter().map(|f| f.1)),
+                Node::List(_, _, items) => stack.extend(items.iter().flatten()),
+                Node::Reference(_) | Node::State(_) => {}
+            }
+        }
+        out
+    }
+
     /// Lists whose size is not decided yet, in tree order.
     pub fn unsized_lists(&self) -> Vec<NodeId> {
         (0..self.nodes.len())

@@ -139,6 +139,7 @@ impl Cx<'_> {
                                     },
                                     expr: t,
                                     loops: Vec::new(),
+                                    subject: None,
                                     span: k.span,
                                 });
                             }
@@ -215,6 +216,7 @@ impl Cx<'_> {
                     span: arg_span,
                 },
                 loops: Vec::new(),
+                subject: None,
                 span: arg_span,
             });
         }

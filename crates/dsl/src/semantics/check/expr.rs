@@ -13,7 +13,7 @@ impl Cx<'_> {
         self.out.diags.push(Diagnostic::new(kind, span, msg));
     }
 
-    fn opaque(&self, ty: Ty, span: Span, why: &'static str) -> TExpr {
+    pub(crate) fn opaque(&self, ty: Ty, span: Span, why: &'static str) -> TExpr {
         TExpr {
             kind: TKind::Opaque(why),
             ty,
@@ -225,14 +225,14 @@ impl Cx<'_> {
                 mk(TKind::Range(Box::new(tl), Box::new(th)), ty)
             }
             ExprKind::Cast(inner, t) => {
-                self.expr(inner, scope, None);
+                let x = self.expr(inner, scope, None);
                 let ty = super::super::collect::resolve_type(self.model, t, &mut self.out.diags);
-                self.opaque(ty, span, "cast")
+                self.convert(x, ty, span)
             }
             ExprKind::TypeTest(inner, t) => {
-                self.expr(inner, scope, None);
-                super::super::collect::resolve_type(self.model, t, &mut self.out.diags);
-                self.opaque(Ty::Bool, span, "type test")
+                let x = self.expr(inner, scope, None);
+                let ty = super::super::collect::resolve_type(self.model, t, &mut self.out.diags);
+                self.type_test(x, &ty, span)
             }
             ExprKind::Temporal(name, args) => self.temporal(&name.text, args, scope, span),
             ExprKind::Error => self.error_expr(span),

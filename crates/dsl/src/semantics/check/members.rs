@@ -73,6 +73,7 @@ impl Cx<'_> {
                     strength: Strength::Default,
                     expr: eq,
                     loops: Vec::new(),
+                    subject: Some(here.clone()),
                     span: d.span,
                 });
             }
@@ -99,6 +100,7 @@ impl Cx<'_> {
             strength,
             expr: t,
             loops: loops.to_vec(),
+            subject: None,
             span: k.span,
         });
     }

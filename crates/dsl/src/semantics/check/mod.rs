@@ -1,6 +1,7 @@
 //! Type checking of members, constraints and behaviors over the collected [`Model`]
 //! (ASAM OpenSCENARIO DSL 2.1 §7.3 types, §7.4 expressions, §7.3.6 constraints, §7.3.9
-//! behaviors, §8.9 modifier applicability). Every error is pushed and checking goes on, so one
+//! behaviors, §8.9 modifier applicability; `conversion.rs`: the `is` and `as` operators,
+//! §7.4.2.5, §7.4.2.6). Every error is pushed and checking goes on, so one
 //! pass reports all of them; an expression that failed has type `Ty::Error`, which fits
 //! everywhere, so a mistake is reported once.
 //!
@@ -9,6 +10,7 @@
 //! instance and lowers to the solver.
 
 mod behavior;
+mod conversion;
 mod expr;
 mod invocations;
 mod members;
@@ -81,7 +83,9 @@ pub enum TKind {
     List(Vec<TExpr>),
     /// `[a..b]`
     Range(Box<TExpr>, Box<TExpr>),
-    /// Anything else (events, casts, ternaries, fields of call results): checked, but not
+    /// `x.as(int)` / `x.as(uint)` of a `float`: its whole part, rounded toward zero.
+    Truncate(Box<TExpr>),
+    /// Anything else (events, downcasts, ternaries, fields of call results): checked, but not
     /// something the solver reads.
     Opaque(&'static str),
 }
@@ -132,6 +136,9 @@ pub struct Template {
     pub expr: TExpr,
     /// The lists the `Place::Local(k)` elements range over, outermost first.
     pub loops: Vec<TExpr>,
+    /// The field a default value belongs to (`f: T = value`): only a hard constraint on it
+    /// overrides the default, not one on a field the value reads.
+    pub subject: Option<TExpr>,
     /// The whole `keep(...)`.
     pub span: Span,
 }

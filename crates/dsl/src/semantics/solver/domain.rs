@@ -71,10 +71,14 @@ impl Interval {
         (self.lo.open || self.hi.open) && (hi - lo).abs() <= tol
     }
 
-    /// The single value, if the interval is one point.
+    /// The single value, if the interval is one point (an unbounded one never is: its
+    /// tolerance would be infinite).
     pub fn fixed(&self) -> Option<f64> {
         let tol = BOUND_TOLERANCE * self.lo.value.abs().max(1.0);
-        ((self.hi.value - self.lo.value).abs() <= tol && !self.lo.open && !self.hi.open)
+        (self.lo.value.is_finite()
+            && (self.hi.value - self.lo.value).abs() <= tol
+            && !self.lo.open
+            && !self.hi.open)
             .then_some(self.lo.value)
     }
 
@@ -220,6 +224,18 @@ mod tests {
         assert!(i.is_empty());
         let d = Domain::Number(i);
         assert_eq!(d.conflict(), Some(vec![ConstraintId(0), ConstraintId(2)]));
+    }
+
+    /// Regression (issue 30): an interval open on both sides (-inf, +inf) was "fixed" at -inf,
+    /// since its tolerance BOUND_TOLERANCE·|-inf| is infinite; a free `float` or `int` field
+    /// then resolved to -inf (and `int` to i64::MIN).
+    #[test]
+    fn an_unbounded_interval_is_not_fixed() {
+        let i = Interval::new(false, None, None);
+        assert_eq!(i.fixed(), None);
+        let mut j = Interval::new(true, None, None);
+        j.raise(-3.0, false, vec![]);
+        assert_eq!(j.fixed(), None);
     }
 
     #[test]

@@ -140,8 +140,27 @@ pub enum ConstraintKind {
         /// `!=`.
         negated: bool,
     },
+    /// `a == b` (or `a != b`) between two string variables.
+    SameText {
+        /// One side.
+        a: VarId,
+        /// The other side.
+        b: VarId,
+        /// `!=`.
+        negated: bool,
+    },
+    /// `var == trunc(of)`: the whole part of a number, rounded toward zero (the conversion of a
+    /// `float` to `int` or `uint`, `x.as(int)`).
+    Truncate {
+        /// The whole number.
+        var: VarId,
+        /// The number converted.
+        of: VarId,
+    },
     /// At least one of the alternatives holds, each a conjunction (`a or b`, `a => b`, in
-    /// disjunctive normal form; alternatives hold no `Any` themselves).
+    /// disjunctive normal form; alternatives hold no `Any` themselves). One alternative is a
+    /// conjunction kept as one constraint (a default with the helper variables of a
+    /// conversion is taken or dropped whole).
     Any(Vec<Vec<ConstraintKind>>),
 }
 
@@ -151,7 +170,10 @@ impl ConstraintKind {
         match self {
             ConstraintKind::Linear { expr, .. } => expr.terms.iter().map(|t| t.0).collect(),
             ConstraintKind::Member { var, .. } | ConstraintKind::Text { var, .. } => vec![*var],
-            ConstraintKind::SameMember { a, b, .. } => vec![*a, *b],
+            ConstraintKind::SameMember { a, b, .. } | ConstraintKind::SameText { a, b, .. } => {
+                vec![*a, *b]
+            }
+            ConstraintKind::Truncate { var, of } => vec![*var, *of],
             ConstraintKind::Any(alternatives) => {
                 let mut vars: Vec<VarId> =
                     alternatives.iter().flatten().flat_map(Self::vars).collect();
@@ -164,8 +186,8 @@ impl ConstraintKind {
 }
 
 /// Hard constraints must hold; a default one holds unless a hard constraint mentions one of its
-/// variables, or unless it contradicts the constraints already taken (ASAM OpenSCENARIO DSL 2.1
-/// §7.3.6.5 default constraints).
+/// variables (of its subject, [`Constraint::subject`]), or unless it contradicts the constraints
+/// already taken (ASAM OpenSCENARIO DSL 2.1 §7.3.6.5 default constraints).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Strength {
     /// `keep(...)` / `keep(hard: ...)`.
@@ -183,6 +205,9 @@ pub struct Constraint {
     pub strength: Strength,
     /// The caller's tag for it (an index into its own table of spans).
     pub origin: u32,
+    /// For a default: the variables it is a default of (a field's `= value` is about that
+    /// field, not the fields its value reads); empty for every variable it mentions.
+    pub subject: Vec<VarId>,
 }
 
 /// A conjunction of constraints over variables.
@@ -210,6 +235,7 @@ impl Problem {
             kind,
             strength,
             origin,
+            subject: Vec::new(),
         });
         ConstraintId(self.constraints.len() as u32 - 1)
     }

@@ -5,7 +5,9 @@
 //! per field of every instance: numbers in SI units, enumeration members, strings) and a
 //! conjunction of constraints over them — linear (in)equalities `Σ aᵢxᵢ + k ⋈ 0`
 //! (`==`, `!=`, `<`, `<=`; ranges `x in [a..b]` are two of them), enumeration (non-)membership
-//! (`==`, `!=`, `in [bus, truck]`), equality of two enumeration variables, string (in)equality.
+//! (`==`, `!=`, `in [bus, truck]`), equality of two enumeration variables, string (in)equality
+//! (with a text or between two strings), and `n == trunc(x)` (a `float` converted to a whole
+//! number, `truncate.rs`).
 //!
 //! 1. **Interval propagation** ([`propagate`]) of the hard constraints to a fixpoint: each
 //!    numeric variable has an interval (open or closed ends; whole numbers for `int`, `uint`
@@ -47,6 +49,7 @@ mod domain;
 mod ir;
 mod propagate;
 mod solve;
+mod truncate;
 
 pub use domain::{Bound, Domain, Interval, BOUND_TOLERANCE};
 pub use ir::{

@@ -8,6 +8,7 @@
 
 use super::domain::{union, Domain, Interval, Why, BOUND_TOLERANCE};
 use super::ir::{Constraint, ConstraintId, ConstraintKind, Linear, Relation, VarId};
+use super::truncate;
 
 /// Propagation budget: this many applications per constraint; past it propagation stops early,
 /// which is sound (domains are only wider than they could be) and sampling still checks every
@@ -174,6 +175,8 @@ impl Store {
                 self.check(*b)?;
                 Ok(changed)
             }
+            ConstraintKind::SameText { a, b, negated } => self.same_text(id, *a, *b, *negated),
+            ConstraintKind::Truncate { var, of } => self.truncate(id, *var, *of),
             // A disjunction narrows domains only once a single alternative is left.
             ConstraintKind::Any(alternatives) => match self.alive(id, alternatives)?.as_slice() {
                 [only] => self.apply_all(id, &alternatives[*only]),
@@ -254,6 +257,97 @@ impl Store {
         } else {
             Ok(alive)
         }
+    }
+
+    /// `a == b` between strings: a fixed side fixes the other (`!=`: excludes its text there).
+    fn same_text(
+        &mut self,
+        id: ConstraintId,
+        a: VarId,
+        b: VarId,
+        negated: bool,
+    ) -> Result<bool, Why> {
+        let mut changed = false;
+        for (from, to) in [(a, b), (b, a)] {
+            let Domain::Text {
+                fixed: Some(text),
+                why: from_why,
+                ..
+            } = &self.doms[from.0 as usize]
+            else {
+                continue;
+            };
+            let (text, reason) = (text.clone(), union(from_why, &vec![id]));
+            let Domain::Text {
+                fixed,
+                excluded,
+                why,
+                ..
+            } = &self.doms[to.0 as usize]
+            else {
+                continue;
+            };
+            let done = if negated {
+                excluded.contains(&text)
+            } else {
+                fixed.as_ref() == Some(&text)
+            };
+            if done {
+                continue;
+            }
+            if !negated && fixed.is_some() {
+                return Err(union(why, &reason));
+            }
+            let Domain::Text {
+                fixed,
+                excluded,
+                why,
+                ..
+            } = self.dom_mut(to)
+            else {
+                continue;
+            };
+            if negated {
+                excluded.push(text);
+            } else {
+                *fixed = Some(text);
+            }
+            *why = union(why, &reason);
+            changed = true;
+            self.check(to)?;
+        }
+        Ok(changed)
+    }
+
+    /// `var == trunc(of)` both ways over intervals (`truncate.rs`).
+    fn truncate(&mut self, id: ConstraintId, var: VarId, of: VarId) -> Result<bool, Why> {
+        let (Some(x), Some(n)) = (self.interval(of).cloned(), self.interval(var).cloned()) else {
+            return Ok(false);
+        };
+        let mut changed = false;
+        let (lo, hi) = truncate::image(&x);
+        let Domain::Number(iv) = self.dom_mut(var) else {
+            return Ok(false);
+        };
+        if let Some(lo) = lo {
+            changed |= iv.raise(lo, false, union(&x.lo.why, &vec![id]));
+        }
+        if let Some(hi) = hi {
+            changed |= iv.lower(hi, false, union(&x.hi.why, &vec![id]));
+        }
+        self.check(var)?;
+        let ((lo, lo_open), (hi, hi_open)) = truncate::preimage(&n);
+        let Domain::Number(iv) = self.dom_mut(of) else {
+            return Ok(changed);
+        };
+        if lo.is_finite() {
+            changed |= iv.raise(lo, lo_open, union(&n.lo.why, &vec![id]));
+        }
+        if hi.is_finite() {
+            changed |= iv.lower(hi, hi_open, union(&n.hi.why, &vec![id]));
+        }
+        self.check(of)?;
+        Ok(changed)
     }
 
     fn members(&self, v: VarId) -> Option<(Vec<bool>, Why)> {

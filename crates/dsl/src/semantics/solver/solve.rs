@@ -57,7 +57,8 @@ pub struct Solver<'p> {
 
 impl<'p> Solver<'p> {
     /// Applies the hard constraints (`Err` on a conflict), then each default constraint in order
-    /// unless a hard constraint mentions one of its variables or it conflicts with those taken.
+    /// unless a hard constraint mentions one of its subject's variables (all it mentions when it
+    /// names none) or it conflicts with those taken.
     pub fn new(problem: &'p Problem, seed: u64) -> Result<Solver<'p>, SolveError> {
         let store = Store::new(problem.vars.iter().map(|v| Domain::of(&v.kind)).collect());
         let mut watch = vec![Vec::new(); problem.vars.len()];
@@ -93,7 +94,12 @@ impl<'p> Solver<'p> {
             }
             let id = ConstraintId(i as u32);
             let vars = c.kind.vars();
-            if vars.iter().any(|v| hard_vars[v.0 as usize]) {
+            let subject = if c.subject.is_empty() {
+                &vars
+            } else {
+                &c.subject
+            };
+            if subject.iter().any(|v| hard_vars[v.0 as usize]) {
                 s.dropped.push(id);
                 s.record_hint(&vars, c, id);
                 continue;

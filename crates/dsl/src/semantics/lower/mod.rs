@@ -1,7 +1,13 @@
 //! Lowers checked constraints ([`Template`]s) over an instance [`Tree`] into solver
 //! constraints: once per instance of the owning type and per element of each `for` list.
 //! Linear arithmetic over numbers and list sizes, enum and bool (in)equality and membership,
-//! string equality and ranges are lowered; anything else is reported as unsupported.
+//! a bool equal to a condition, string equality, list equality (size and members), `float` to
+//! whole-number conversions (a helper variable `n == trunc(x)`) and ranges are lowered; anything
+//! else is reported as unsupported. `compare.rs` holds the comparisons (`==`, `<`, `in`, …).
+
+mod compare;
+
+use compare::flip;
 
 use std::collections::BTreeSet;
 
@@ -10,7 +16,7 @@ use super::diagnostic::{Diagnostic, DiagnosticKind as K};
 use super::hir::{BinOp, Span};
 use super::instance::{Node, NodeId, Tree};
 use super::model::Model;
-use super::solver::{ConstraintKind, Linear, Relation, Strength, VarId};
+use super::solver::{ConstraintKind, Linear, Relation, Strength, VarId, VarKind};
 use super::types::Ty;
 
 /// What lowering produced besides the constraints added to the tree's problem.
@@ -27,14 +33,14 @@ pub struct Lowered {
 /// Most alternatives one constraint's `or`s may expand to (disjunctive normal form).
 const MAX_ALTERNATIVES: usize = 64;
 
-struct Env {
+pub(super) struct Env {
     this: Option<NodeId>,
     /// The invoked instance of an invocation's constraints (`it`).
     it: Option<NodeId>,
     locals: Vec<NodeId>,
 }
 
-enum Fail {
+pub(super) enum Fail {
     /// A list on the way is not sized yet.
     Pending,
     /// Not lowerable; the message and where.
@@ -86,13 +92,36 @@ pub fn lower(model: &Model, templates: &[Template], tree: &mut Tree) -> Lowered 
             };
             let origin = out.origins.len() as u32;
             out.origins.push(t.span);
+            let start = tree.problem.constraints.len();
             let mut lw = Lowerer {
                 tree,
                 out: &mut out,
                 origin,
                 strength: t.strength,
+                helpers: false,
             };
-            if let Err(Fail::Unsupported(span, msg)) = lw.loops(t, 0, &mut env) {
+            let result = lw.loops(t, 0, &mut env);
+            if lw.helpers {
+                group(tree, start, t.strength, origin);
+            }
+            // A field's default is about the field: only hard constraints on it override it.
+            let subject = match &t.subject {
+                Some(s) => Lowerer {
+                    tree,
+                    out: &mut out,
+                    origin,
+                    strength: t.strength,
+                    helpers: false,
+                }
+                .node(s, &env)
+                .map(|n| tree.vars_under(n))
+                .unwrap_or_default(),
+                None => Vec::new(),
+            };
+            for c in &mut tree.problem.constraints[start..] {
+                c.subject.clone_from(&subject);
+            }
+            if let Err(Fail::Unsupported(span, msg)) = result {
                 if reported.insert(ti) {
                     out.diags.push(Diagnostic::new(K::Unsupported, span, msg));
                 }
@@ -102,11 +131,35 @@ pub fn lower(model: &Model, templates: &[Template], tree: &mut Tree) -> Lowered 
     out
 }
 
-struct Lowerer<'a> {
+/// Joins the constraints from `start` on into one conjunction (a disjunction of one
+/// alternative), unless one of them is a disjunction itself (alternatives hold none).
+fn group(tree: &mut Tree, start: usize, strength: Strength, origin: u32) {
+    let added = &tree.problem.constraints[start..];
+    if added.len() < 2
+        || added
+            .iter()
+            .any(|c| matches!(c.kind, ConstraintKind::Any(_)))
+    {
+        return;
+    }
+    let kinds: Vec<ConstraintKind> = tree
+        .problem
+        .constraints
+        .drain(start..)
+        .map(|c| c.kind)
+        .collect();
+    tree.problem
+        .add(ConstraintKind::Any(vec![kinds]), strength, origin);
+}
+
+pub(super) struct Lowerer<'a> {
     tree: &'a mut Tree,
     out: &'a mut Lowered,
     origin: u32,
     strength: Strength,
+    /// Whether a helper variable was made (a conversion's result): the constraints of the
+    /// template are then kept together as one, so a default is taken or dropped whole.
+    helpers: bool,
 }
 
 impl Lowerer<'_> {
@@ -299,6 +352,10 @@ impl Lowerer<'_> {
                 }
             }
             TKind::Neg(a) => Ok(self.linear(a, env)?.scale(-1.0)),
+            TKind::Truncate(a) => {
+                let x = self.linear(a, env)?;
+                Ok(Linear::var(self.truncate(x, e.ty == Ty::Uint)))
+            }
             TKind::Binary(op @ (BinOp::Add | BinOp::Sub | BinOp::Mul | BinOp::Div), a, b) => {
                 let (la, lb) = (self.linear(a, env)?, self.linear(b, env)?);
                 match op {
@@ -314,6 +371,40 @@ impl Lowerer<'_> {
             }
             _ => Err(Self::unsupported(e, describe(e))),
         }
+    }
+
+    /// A helper variable `n == trunc(x)` (`x.as(int)` of a float; `uint`: n ≥ 0).
+    fn truncate(&mut self, x: Linear, uint: bool) -> VarId {
+        let whole = |s: &mut Self, name: String, integer: bool, lo: Option<f64>| {
+            s.helpers = true;
+            s.tree.problem.add_var(
+                name,
+                VarKind::Number {
+                    integer,
+                    lo,
+                    hi: None,
+                },
+            )
+        };
+        let of = match x.terms.as_slice() {
+            [(v, c)] if *c == 1.0 && x.constant == 0.0 => *v,
+            _ => {
+                let v = whole(self, "a converted value".into(), false, None);
+                self.add(ConstraintKind::Linear {
+                    expr: Linear::var(v).add_scaled(&x, -1.0),
+                    rel: Relation::Eq,
+                });
+                v
+            }
+        };
+        let name = format!(
+            "{}.as({})",
+            self.tree.problem.vars[of.0 as usize].name,
+            if uint { "uint" } else { "int" }
+        );
+        let var = whole(self, name, true, uint.then_some(0.0));
+        self.add(ConstraintKind::Truncate { var, of });
+        var
     }
 
     /// Adds `e` (a boolean) as constraints; `negate` for `not`.
@@ -371,159 +462,9 @@ impl Lowerer<'_> {
             _ => Err(Self::unsupported(e, describe(e))),
         }
     }
-
-    fn compare(
-        &mut self,
-        op: BinOp,
-        a: &TExpr,
-        b: &TExpr,
-        env: &Env,
-        whole: &TExpr,
-    ) -> Result<(), Fail> {
-        match (&a.ty, &b.ty) {
-            (Ty::Enum(_) | Ty::Bool, _) | (_, Ty::Enum(_) | Ty::Bool) => {
-                let negated = match op {
-                    BinOp::Eq => false,
-                    BinOp::Ne => true,
-                    _ => return Err(Self::unsupported(whole, "ordering of enumeration members")),
-                };
-                match (member(a), member(b)) {
-                    (Some(x), Some(y)) => {
-                        if (x == y) == negated {
-                            self.add(ConstraintKind::Linear {
-                                expr: Linear::constant(1.0),
-                                rel: Relation::Le,
-                            });
-                        }
-                    }
-                    (None, Some(m)) => {
-                        let var = self.scalar(a, env)?;
-                        self.add(ConstraintKind::Member {
-                            var,
-                            set: vec![m],
-                            negated,
-                        });
-                    }
-                    (Some(m), None) => {
-                        let var = self.scalar(b, env)?;
-                        self.add(ConstraintKind::Member {
-                            var,
-                            set: vec![m],
-                            negated,
-                        });
-                    }
-                    (None, None) => {
-                        let (x, y) = (self.scalar(a, env)?, self.scalar(b, env)?);
-                        self.add(ConstraintKind::SameMember {
-                            a: x,
-                            b: y,
-                            negated,
-                        });
-                    }
-                }
-                Ok(())
-            }
-            (Ty::Str, _) | (_, Ty::Str) => {
-                let negated = match op {
-                    BinOp::Eq => false,
-                    BinOp::Ne => true,
-                    _ => return Err(Self::unsupported(whole, "ordering of strings")),
-                };
-                let (var, text) = match (&a.kind, &b.kind) {
-                    (_, TKind::Str(s)) => (self.scalar(a, env)?, s.clone()),
-                    (TKind::Str(s), _) => (self.scalar(b, env)?, s.clone()),
-                    _ => return Err(Self::unsupported(whole, "equality of two string fields")),
-                };
-                self.add(ConstraintKind::Text {
-                    var,
-                    value: text,
-                    negated,
-                });
-                Ok(())
-            }
-            _ => {
-                let (la, lb) = (self.linear(a, env)?, self.linear(b, env)?);
-                let (expr, rel) = match op {
-                    BinOp::Lt => (la.add_scaled(&lb, -1.0), Relation::Lt),
-                    BinOp::Le => (la.add_scaled(&lb, -1.0), Relation::Le),
-                    BinOp::Gt => (lb.add_scaled(&la, -1.0), Relation::Lt),
-                    BinOp::Ge => (lb.add_scaled(&la, -1.0), Relation::Le),
-                    BinOp::Eq => (la.add_scaled(&lb, -1.0), Relation::Eq),
-                    _ => (la.add_scaled(&lb, -1.0), Relation::Ne),
-                };
-                self.add(ConstraintKind::Linear { expr, rel });
-                Ok(())
-            }
-        }
-    }
-
-    fn membership(
-        &mut self,
-        a: &TExpr,
-        b: &TExpr,
-        env: &Env,
-        negated: bool,
-        whole: &TExpr,
-    ) -> Result<(), Fail> {
-        match &b.kind {
-            TKind::Range(lo, hi) => {
-                if negated {
-                    return Err(Self::unsupported(whole, "`not in` a range (a disjunction)"));
-                }
-                let x = self.linear(a, env)?;
-                let (l, h) = (self.linear(lo, env)?, self.linear(hi, env)?);
-                self.add(ConstraintKind::Linear {
-                    expr: l.add_scaled(&x, -1.0),
-                    rel: Relation::Le,
-                });
-                self.add(ConstraintKind::Linear {
-                    expr: x.add_scaled(&h, -1.0),
-                    rel: Relation::Le,
-                });
-                Ok(())
-            }
-            TKind::List(items) if matches!(a.ty, Ty::Enum(_) | Ty::Bool) => {
-                let set: Option<Vec<u32>> = items.iter().map(member).collect();
-                let Some(set) = set else {
-                    return Err(Self::unsupported(b, "a list of fields after `in`"));
-                };
-                let var = self.scalar(a, env)?;
-                self.add(ConstraintKind::Member { var, set, negated });
-                Ok(())
-            }
-            TKind::List(items) if items.len() == 1 => {
-                let op = if negated { BinOp::Ne } else { BinOp::Eq };
-                self.compare(op, a, &items[0], env, whole)
-            }
-            _ => Err(Self::unsupported(
-                whole,
-                "membership in a list of numbers (a disjunction)",
-            )),
-        }
-    }
 }
 
-fn member(e: &TExpr) -> Option<u32> {
-    match e.kind {
-        TKind::Member(_, m) => Some(m),
-        TKind::Bool(b) => Some(b as u32),
-        _ => None,
-    }
-}
-
-fn flip(op: BinOp) -> BinOp {
-    match op {
-        BinOp::Eq => BinOp::Ne,
-        BinOp::Ne => BinOp::Eq,
-        BinOp::Lt => BinOp::Ge,
-        BinOp::Le => BinOp::Gt,
-        BinOp::Gt => BinOp::Le,
-        BinOp::Ge => BinOp::Lt,
-        other => other,
-    }
-}
-
-fn describe(e: &TExpr) -> &'static str {
+pub(super) fn describe(e: &TExpr) -> &'static str {
     match &e.kind {
         TKind::Call(..) => "a method call (evaluated at run time)",
         TKind::Opaque(what) => what,
