@@ -84,6 +84,8 @@ cases! {
     library_use_std, err_library_own_type_is_another, err_library_wrong_namespace,
     // Class 2: plain default values and conversions evaluate.
     defaults_plain_values, err_conversion_undefined, free_numbers_sampled,
+    // Class 4: the environment actor and the rest of the domain model (tests/domain_model.rs).
+    environment_actor, traffic_light_controller, err_environment_action_argument,
     // Class 3: a keyword before a parenthesised condition.
     keyword_parenthesis, err_keyword_parenthesis_not_event,
     // Class 5: `extend ::name:`.

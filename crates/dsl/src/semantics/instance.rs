@@ -285,12 +285,17 @@ impl Builder<'_> {
     }
 }
 
-/// Road-network types: found in the map by the runtime, not sampled.
+/// Road-network types and the map's traffic lights (§8.14.7): found in the map by the runtime,
+/// not sampled.
 fn is_reference(model: &Model, c: CompoundId) -> bool {
     model.ancestry(c).into_iter().any(|a| {
         let d = model.compound(a);
         // The library's name, whether or not a file's own `route` made it `std::route`.
         let bare = d.name.strip_prefix("std::").unwrap_or(&d.name);
-        is_library(model, a) && matches!(bare, "route" | "junction" | "map")
+        is_library(model, a)
+            && matches!(
+                bare,
+                "route" | "junction" | "map" | "traffic_light" | "traffic_light_group"
+            )
     })
 }

@@ -32,10 +32,13 @@ macro_rules! library {
 pub const STANDARD: &[LibraryFile] = library![
     "osc/standard/physical.osc" in "stdtypes",
     "osc/standard/structs.osc" in "stdtypes",
+    "osc/standard/behavioral_model.osc" in "std",
     "osc/standard/objects.osc" in "std",
     "osc/standard/map.osc" in "std",
     "osc/standard/actions.osc" in "std",
     "osc/standard/modifiers.osc" in "std",
+    "osc/standard/environment.osc" in "std",
+    "osc/standard/traffic_lights.osc" in "std",
     "osc/standard/groups.osc" in "std",
     "oscsim/defaults.osc" in "std",
 ];
