@@ -11,6 +11,8 @@
 //! | `on c: emit e` (the i-th `on` of the scenario) | an Act `on.i` from the start until the root phase's end, with the same group whose Event starts at each occurrence of c (maximumExecutionCount unbounded) |
 //! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step) |
 //! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
+//! | a person, an animal | ScenarioObject with a Pedestrian of category `pedestrian`, `animal` |
+//! | a stationary object | ScenarioObject with a MiscObject (category `barrier`); Init: TeleportAction to the WorldPosition of its `location(pose)`, no speed |
 //!
 //! Acts are written children first, so that a composition that ends with its members sees
 //! their end in the same step.
@@ -20,13 +22,15 @@ use std::sync::Arc;
 
 use scenario::{
     Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
-    EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup,
-    Performance, Position, PositionKind, Priority, Private, PrivateAction, Properties, RoadNetwork,
-    Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics,
-    Trigger, UserDefinedAction, Vehicle,
+    EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup, MiscObject,
+    MiscObjectCategory, Pedestrian, PedestrianCategory, Performance, Position, PositionKind,
+    Priority, Private, PrivateAction, Properties, RoadNetwork, Rule, Scenario, ScenarioObject,
+    SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics, Trigger, UserDefinedAction,
+    Vehicle,
 };
 
 use crate::plan::{Entity, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
+use crate::resolve::ActorKind;
 use crate::trigger::sim_time;
 
 /// Builds the scenario model of `plan`; `file` is the `.osc` path, `road` the OpenDRIVE file.
@@ -39,7 +43,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
         let (s, v) = e.track.at(0.0);
         objects.push(ScenarioObject {
             name: e.name.clone(),
-            entity_object: EntityObject::Vehicle(Box::new(vehicle(e))),
+            entity_object: entity_object(e),
             object_controllers: Vec::new(),
             pos: origin.clone(),
         });
@@ -48,6 +52,24 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             kind: ActionKind::Private(kind),
             pos: origin.clone(),
         };
+        if let ActorKind::Stationary(at) = e.data.kind {
+            let ([x, y, z], [h, p, r]) = (at.position, at.orientation);
+            privates.push(Private {
+                entity_ref: e.name.clone(),
+                actions: vec![action(PrivateAction::Teleport(Position {
+                    kind: PositionKind::World {
+                        x,
+                        y,
+                        z: Some(z),
+                        h: Some(h),
+                        p: Some(p),
+                        r: Some(r),
+                    },
+                    pos: origin.clone(),
+                }))],
+            });
+            continue;
+        }
         privates.push(Private {
             entity_ref: e.name.clone(),
             actions: vec![
@@ -173,6 +195,41 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
         parameter_value_distribution: None,
         warnings: Vec::new(),
         sources: scenario::Sources::default(),
+    }
+}
+
+/// Mass of a DSL person (kg): the DSL's person has no mass; the 1.x catalogs' pedestrian's.
+const PERSON_MASS: f64 = 80.0;
+/// Mass of a DSL animal (kg): a deer's.
+const ANIMAL_MASS: f64 = 60.0;
+
+/// The 1.x entity of a planned physical object (see the module table).
+fn entity_object(e: &Entity) -> EntityObject {
+    match e.data.kind {
+        ActorKind::Vehicle => EntityObject::Vehicle(Box::new(vehicle(e))),
+        ActorKind::Walker(category) => EntityObject::Pedestrian(Box::new(Pedestrian {
+            name: e.name.clone(),
+            pedestrian_category: category,
+            mass: if category == PedestrianCategory::Animal {
+                ANIMAL_MASS
+            } else {
+                PERSON_MASS
+            },
+            model3d: None,
+            role: None,
+            bounding_box: e.data.bounding_box,
+            properties: Properties::default(),
+            catalog: None,
+        })),
+        ActorKind::Stationary(_) => EntityObject::MiscObject(Box::new(MiscObject {
+            name: e.name.clone(),
+            misc_object_category: MiscObjectCategory::Barrier,
+            mass: 0.0,
+            model3d: None,
+            bounding_box: e.data.bounding_box,
+            properties: Properties::default(),
+            catalog: None,
+        })),
     }
 }
 

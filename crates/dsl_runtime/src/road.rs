@@ -2,14 +2,16 @@
 //! lanes): the first road of the network with driving lanes on its right side (right-hand
 //! traffic: those lanes run in +s). Lanes are counted in the DSL's way (ASAM OpenSCENARIO DSL
 //! 2.1 §8.9 `lane()` modifier): 1 is the rightmost driving lane in the direction of travel, or
-//! the leftmost with `from: left`.
+//! the leftmost with `from: left`. A person walks on the sidewalks of the right side where the
+//! road has any (counted the same way), else on its driving lanes.
 
-use opendrive::RoadNetwork;
+use opendrive::{LaneType, RoadNetwork};
 
 /// The road of a plan.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct PlanRoad<'a> {
     road: &'a opendrive::Road,
+    net: &'a RoadNetwork,
 }
 
 impl<'a> PlanRoad<'a> {
@@ -22,7 +24,7 @@ impl<'a> PlanRoad<'a> {
                     .first()
                     .is_some_and(|ls| ls.right.iter().any(|l| l.lane_type.is_drivable()))
             })
-            .map(|road| PlanRoad { road })
+            .map(|road| PlanRoad { road, net })
     }
 
     /// The road `id`, if it has a driving lane on its right side.
@@ -35,7 +37,7 @@ impl<'a> PlanRoad<'a> {
                         .first()
                         .is_some_and(|ls| ls.right.iter().any(|l| l.lane_type.is_drivable()))
             })
-            .map(|road| PlanRoad { road })
+            .map(|road| PlanRoad { road, net })
     }
 
     /// The OpenDRIVE id.
@@ -50,22 +52,36 @@ impl<'a> PlanRoad<'a> {
 
     /// Driving lanes of the right side at `s`, rightmost first (−3, −2, −1).
     pub(crate) fn driving_lanes(&self, s: f64) -> Vec<i32> {
+        self.right_lanes(s, LaneType::is_drivable)
+    }
+
+    /// Sidewalks of the right side at `s`, rightmost first.
+    pub(crate) fn sidewalks(&self, s: f64) -> Vec<i32> {
+        self.right_lanes(s, |t| *t == LaneType::Sidewalk)
+    }
+
+    /// Lanes of the right side at `s` whose type passes `keep`, rightmost first.
+    fn right_lanes(&self, s: f64, keep: impl Fn(&LaneType) -> bool) -> Vec<i32> {
         let s = s.clamp(0.0, self.road.length);
         let mut ids: Vec<i32> = self
             .road
             .lane_section_at(s)
             .right
             .iter()
-            .filter(|l| l.lane_type.is_drivable())
+            .filter(|l| keep(&l.lane_type))
             .map(|l| l.id)
             .collect();
         ids.sort_unstable();
         ids
     }
 
-    /// The lane numbered `n` (1 = rightmost, or leftmost with `from_left`) at `s`.
-    pub(crate) fn numbered(&self, n: i64, from_left: bool, s: f64) -> Option<i32> {
-        let mut lanes = self.driving_lanes(s);
+    /// The lane numbered `n` (1 = rightmost, or leftmost with `from_left`) at `s`: a driving
+    /// lane, or for a walker a sidewalk where the road has any.
+    pub(crate) fn numbered(&self, n: i64, from_left: bool, s: f64, walker: bool) -> Option<i32> {
+        let mut lanes = match self.sidewalks(s) {
+            w if walker && !w.is_empty() => w,
+            _ => self.driving_lanes(s),
+        };
         if from_left {
             lanes.reverse();
         }
@@ -84,6 +100,13 @@ impl<'a> PlanRoad<'a> {
 }
 
 impl PlanRoad<'_> {
+    /// Where world point (x, y) projects onto this road: lane, s, and offset from the lane's
+    /// centre (the nearest point of the road's surface when (x, y) lies off it).
+    pub(crate) fn locate(&self, x: f64, y: f64) -> Option<(i32, f64, f64)> {
+        let p = self.net.locate_on_road(&self.road.id, x, y)?;
+        Some((p.lane_id, p.s, p.offset))
+    }
+
     /// t of the centre of lane `lane` at `s` (m); 0 where the lane is missing.
     pub(crate) fn lane_center(&self, lane: i32, s: f64) -> f64 {
         let s = s.clamp(0.0, self.road.length);

@@ -4,10 +4,10 @@
 
 use scenario::{ConditionGroup, StoryboardElementState, Trigger};
 
-use super::planner::Planner;
+use super::planner::{unlocated, Planner};
 use super::types::When;
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{Cond, Kind, Phase, Timed};
+use crate::resolve::{Cond, Kind, Object, Phase, Timed};
 use crate::trigger::{act_state, every_from_start, sim_time};
 
 /// Where an event specification is used: what its event context starts with (ASAM
@@ -75,10 +75,13 @@ impl Planner<'_> {
             Cond::Measured { condition, actors } => {
                 for (path, site) in actors {
                     if !path.as_ref().is_some_and(|p| self.index.contains_key(p)) {
-                        return Err(site.err(
-                            K::UnknownActor,
-                            "expected a vehicle of the scenario, found another expression",
-                        ));
+                        return Err(match path {
+                            Some(p) if self.objects.get(p).is_some_and(|o| o == &Some(Object::Unlocated)) => unlocated(p, site),
+                            _ => site.err(
+                                K::UnknownActor,
+                                "expected a physical object of the scenario, found another expression",
+                            ),
+                        });
                     }
                 }
                 Ok(vec![ConditionGroup {

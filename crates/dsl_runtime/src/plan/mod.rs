@@ -58,7 +58,9 @@ use std::cell::RefCell;
 use std::collections::{HashMap, HashSet};
 
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{At, Kind, ModKind, Modifier, Phase, Resolved, Route};
+use crate::resolve::{
+    ActorData, ActorKind, At, Kind, ModKind, Modifier, Object, Phase, Resolved, Route,
+};
 use crate::road::PlanRoad;
 use crate::track::Track;
 
@@ -159,6 +161,16 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         }
         leaves.push(leaf);
     }
+    // Stationary objects stand where their location(…) puts them, named or not.
+    for (path, o) in res.objects.iter() {
+        if let Some(Object::Actor(ActorData {
+            kind: ActorKind::Stationary(_),
+            ..
+        })) = o
+        {
+            p.register(path, &res.site)?;
+        }
+    }
     // Initial placement from each actor's first phase.
     let mut to_place = Vec::new();
     for e in &p.entities {
@@ -188,6 +200,19 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                 (i > 0).then(|| (members.clone(), i))
             });
         let bb = e.data.bounding_box;
+        let fixed = match e.data.kind {
+            ActorKind::Stationary(at) => {
+                let [x, y, _] = at.position;
+                let (lane, s, offset) = road.locate(x, y).unwrap_or((-1, 0.0, 0.0));
+                Some(place::Start {
+                    lane,
+                    s,
+                    v: 0.0,
+                    offset,
+                })
+            }
+            _ => None,
+        };
         // A named route of the first phase places the actor at its start.
         let route = first
             .and_then(|f| p.alongs.get(f))
@@ -209,6 +234,11 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             rear: bb.length / 2.0 - bb.center[0],
             width: bb.width,
             site: site.clone(),
+            walker: matches!(
+                e.data.kind,
+                ActorKind::Walker(scenario::PedestrianCategory::Pedestrian)
+            ),
+            fixed,
         });
     }
     let entity = |path: &str| p.index.contains_key(path).then(|| path.to_string());

@@ -253,7 +253,9 @@ impl Planner<'_> {
         }
         let from_left =
             matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
-        Ok(self.road.numbered(n, from_left, self.s_at(target, t)))
+        Ok(self
+            .road
+            .numbered(n, from_left, self.s_at(target, t), self.walks(target)))
     }
 
     /// The LaneChangeAction target of a lane modifier at the phase end, and the lane the plan
@@ -346,7 +348,10 @@ impl Planner<'_> {
         let from_left =
             matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
         let s_end = self.s_at(target, t + len);
-        match self.road.numbered(n.into(), from_left, s_end) {
+        match self
+            .road
+            .numbered(n.into(), from_left, s_end, self.walks(target))
+        {
             Some(l) => Ok((LaneChangeTarget::Absolute(l.to_string()), Some(l))),
             None => Err(m.site.err(
                 K::Unsatisfiable,

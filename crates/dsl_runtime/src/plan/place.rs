@@ -54,6 +54,11 @@ pub(crate) struct ToPlace<'m> {
     /// Lane and s of the start of a named route it follows in its first phase (`along`):
     /// where it starts when no `lane`/`position` places it.
     pub route: Option<(i32, f64)>,
+    /// A person: `lane(n)` counts the road's sidewalks where it has any (`crate::road`).
+    pub walker: bool,
+    /// Where a stationary object stands (its `location(pose)` on the road): nothing else
+    /// places it.
+    pub fixed: Option<Start>,
 }
 
 /// Where an actor starts.
@@ -101,6 +106,13 @@ pub(crate) fn place(
         Ok(None)
     };
     let number = |m: &Modifier, n: &str| m.arg(n).map(Arg::number).transpose();
+    for p in all {
+        if let Some(f) = p.fixed {
+            lane.insert(p.name.clone(), f.lane);
+            s.insert(p.name.clone(), (f.s, false));
+            v.insert(p.name.clone(), 0.0);
+        }
+    }
     for _round in 0..=all.len() {
         let mut progress = false;
         for p in all {
@@ -137,12 +149,12 @@ pub(crate) fn place(
                     }),
                     (None, m) => match m {
                         None if p.route.is_some() => p.route.map(|r| Some(r.0)),
-                        None => Some(road.numbered(1, false, at_s)),
+                        None => Some(road.numbered(1, false, at_s, p.walker)),
                         Some(m) => {
                             let n = number(m, "lane")?.map_or(1, |x| x.round() as i64);
                             let from_left = matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
                             match reference(m, &["same_as", "side_of", "left_of", "right_of"])? {
-                            None => Some(road.numbered(n, from_left, at_s)),
+                            None => Some(road.numbered(n, from_left, at_s, p.walker)),
                             Some((how, x)) => lane.get(&x).map(|lx| match how.as_str() {
                                 "same_as" => Some(*lx),
                                 "left_of" => road.beside(*lx, true, n, at_s),
@@ -258,6 +270,10 @@ pub(crate) fn place(
     };
     let mut out = HashMap::new();
     for p in all {
+        if let Some(f) = p.fixed {
+            out.insert(p.name.clone(), f);
+            continue;
+        }
         let (Some(l), Some((sv, fl)), Some(vv)) =
             (lane.get(&p.name), s.get(&p.name), v.get(&p.name))
         else {

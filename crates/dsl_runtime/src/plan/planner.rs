@@ -9,7 +9,7 @@ use scenario::{ConditionGroup, StoryboardElementState, Trigger};
 
 use super::types::{Entity, PhasePlan, Settings, When};
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{Along, At, Cond, Draws, Object, Phase};
+use crate::resolve::{ActorKind, Along, At, Cond, Draws, Object, Phase};
 use crate::road::PlanRoad;
 use crate::track::Track;
 use crate::trigger::act_state;
@@ -63,11 +63,21 @@ pub(crate) fn no_end(p: &Phase) -> Error {
     )
 }
 
+/// The error of a stationary object `path` (used at `site`) that no `location(…)` puts anywhere.
+pub(crate) fn unlocated(path: &str, site: &Site) -> Error {
+    site.err(
+        K::UnknownActor,
+        format!("expected a location of stationary object `{path}` ({path}.location(pose) before the do, §8.7.3.1.1), found none"),
+    )
+}
+
 impl Planner<'_> {
-    /// Registers the vehicle(s) `path` names (written at `site`); returns the entity names.
+    /// Registers the physical object(s) `path` names (written at `site`); returns the entity
+    /// names.
     pub(crate) fn register(&mut self, path: &str, site: &Site) -> Result<Vec<String>, Error> {
         let members = match self.objects.get(path).cloned().flatten() {
-            Some(Object::Vehicle(data)) => vec![(path.to_string(), data)],
+            Some(Object::Actor(data)) => vec![(path.to_string(), data)],
+            Some(Object::Unlocated) => return Err(unlocated(path, site)),
             Some(Object::Group(members, lanes)) => {
                 self.groups.insert(
                     path.to_string(),
@@ -87,7 +97,7 @@ impl Planner<'_> {
             None => {
                 return Err(site.err(
                     K::UnknownActor,
-                    format!("expected a vehicle or vehicle group of the scenario, found `{path}`"),
+                    format!("expected a physical object (vehicle, person, animal, stationary_object) or vehicle group of the scenario, found `{path}`"),
                 ))
             }
         };
@@ -121,6 +131,14 @@ impl Planner<'_> {
     /// The width of `name`'s bounding box (m).
     pub(crate) fn width(&self, name: &str) -> f64 {
         self.entities[self.index[name]].data.bounding_box.width
+    }
+
+    /// Whether `name` is a person, who walks on the road's sidewalks (`crate::road`).
+    pub(crate) fn walks(&self, name: &str) -> bool {
+        matches!(
+            self.entities[self.index[name]].data.kind,
+            ActorKind::Walker(scenario::PedestrianCategory::Pedestrian)
+        )
     }
 
     pub(crate) fn track_mut(&mut self, name: &str) -> &mut Track {

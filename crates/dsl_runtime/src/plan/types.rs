@@ -5,7 +5,7 @@
 use scenario::{ConditionGroup, PrivateAction, Trigger};
 
 use crate::error::Site;
-use crate::resolve::VehicleData;
+use crate::resolve::ActorData;
 use crate::track::Track;
 use crate::trigger::sim_time;
 
@@ -114,13 +114,13 @@ pub(crate) struct Planned {
     pub site: Site,
 }
 
-/// A vehicle of the plan.
+/// A physical object of the plan.
 #[derive(Debug, Clone)]
 pub(crate) struct Entity {
     /// Its name (the actor's path).
     pub name: String,
-    /// Its fields (bounding box, category, axles).
-    pub data: VehicleData,
+    /// Its kind and fields (bounding box, category, axles, location).
+    pub data: ActorData,
     /// Planned motion.
     pub track: Track,
 }
@@ -130,7 +130,8 @@ pub(crate) struct Entity {
 pub(crate) struct Plan {
     /// The road everything is placed on.
     pub road: String,
-    /// The vehicles, in the order the `do` tree first names them.
+    /// The physical objects, in the order the `do` tree first names them, then the located
+    /// stationary objects it does not name.
     pub entities: Vec<Entity>,
     /// The phases, children before their composition.
     pub phases: Vec<PhasePlan>,

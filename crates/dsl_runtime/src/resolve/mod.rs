@@ -8,7 +8,7 @@
 //! | --- | --- |
 //! | `value` | evaluated values and arguments; the run's draws |
 //! | `eval` | expressions of the program, with the solver's values (private to this stage) |
-//! | `objects` | vehicles and vehicle groups with their fields (§8.7.6, §8.7.18) |
+//! | `objects` | physical objects (vehicles, persons, animals, located stationary objects) and vehicle groups with their fields (§8.7, §8.7.18) |
 //! | `route` | `along(…)` routes (§8.9, §8.12) |
 //! | `modifier` | movement modifiers (§8.9) |
 //! | `cond` | conditions and event specifications (§7.3.10, §8.7 methods) |
@@ -32,7 +32,7 @@ use dsl::CheckedProgram;
 
 pub(crate) use cond::{Cond, Timed};
 pub(crate) use modifier::{At, ModKind, Modifier};
-pub(crate) use objects::{Object, VehicleData};
+pub(crate) use objects::{ActorData, ActorKind, Object};
 pub(crate) use route::{Along, Route};
 pub(crate) use tree::{Action, Invoke, Kind, Phase};
 pub(crate) use value::{arg, Arg, Draws, Val};
@@ -48,7 +48,8 @@ pub(crate) struct Resolved {
     pub site: Site,
     /// Its `do` tree.
     pub root: Phase,
-    /// What each actor path the tree names is (`None`: no vehicle or vehicle group).
+    /// What each actor path the tree names, and each located stationary object, is (`None`: no
+    /// physical object or vehicle group).
     pub objects: BTreeMap<String, Option<Object>>,
     /// The scenario's event conditions: its `event e is c` declarations and the events its
     /// `on` handlers emit.
@@ -103,7 +104,19 @@ pub(crate) fn resolve(
         let members = &model.compound(e.behavior).members;
         events.extend(events_of(&inner, members, &e.frame.prefix).map_err(Failure::Plan)?);
     }
-    let objects = objects(&ev, &root);
+    let located = objects::locations(&ev, &decl.members).map_err(Failure::Plan)?;
+    let mut objects = objects(&ev, &root, &located);
+    // The scenario's stationary objects that no location(…) puts anywhere: an error where the
+    // plan uses one.
+    for m in &decl.members {
+        if let Member::Field(f) = m {
+            for n in &f.names {
+                if let Some(o @ Object::Unlocated) = objects::classify(&ev, &n.text, &located) {
+                    objects.entry(n.text.clone()).or_insert(Some(o));
+                }
+            }
+        }
+    }
     Ok(Resolved {
         name: decl.name.clone(),
         site: ev.site(decl.span),
@@ -218,9 +231,12 @@ fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<E
                     });
                 }
             }
-            // `m.set_map_file(f)` names the road network (see `crate::map_file`); other
+            // `m.set_map_file(f)` names the road network (see `crate::map_file`),
+            // `x.location(pose)` places a stationary object (`objects::locations`); other
             // modifiers of the scenario itself are not run.
-            Member::Modifier(app) if app.name.text != "set_map_file" => {
+            Member::Modifier(app)
+                if app.name.text != "set_map_file" && app.name.text != "location" =>
+            {
                 return Err(ev.files.err(
                     ErrorKind::Modifier,
                     app.span,
@@ -278,9 +294,14 @@ pub(crate) const REFERENCES: [&str; 8] = [
     "slower_than",
 ];
 
-/// What each actor path the tree invokes or its modifiers refer to is.
-fn objects(ev: &eval::Eval<'_>, root: &Phase) -> BTreeMap<String, Option<Object>> {
-    let mut paths = Vec::new();
+/// What each actor path the tree invokes or its modifiers refer to, and each stationary object
+/// `located` places, is.
+fn objects(
+    ev: &eval::Eval<'_>,
+    root: &Phase,
+    located: &[objects::Located],
+) -> BTreeMap<String, Option<Object>> {
+    let mut paths: Vec<String> = located.iter().map(|l| l.path.clone()).collect();
     root.walk(&mut |p| {
         if let Kind::Invoke(inv) = &p.kind {
             paths.push(inv.actor.clone());
@@ -296,7 +317,7 @@ fn objects(ev: &eval::Eval<'_>, root: &Phase) -> BTreeMap<String, Option<Object>
     paths
         .into_iter()
         .map(|p| {
-            let o = objects::classify(ev, &p);
+            let o = objects::classify(ev, &p, located);
             (p, o)
         })
         .collect()

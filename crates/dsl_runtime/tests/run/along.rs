@@ -159,15 +159,6 @@ fn monotonous_movement_is_planned_or_refused() {
 }
 
 #[test]
-fn modifiers_of_the_scenario_itself_are_refused() {
-    refused(
-        "err_scenario_modifier",
-        "found `location(…)` applied to the scenario",
-        "7:5",
-    );
-}
-
-#[test]
 fn arguments_the_planner_would_not_read_are_errors() {
     refused(
         "err_two_references",

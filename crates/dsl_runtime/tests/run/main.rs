@@ -2,6 +2,7 @@
 //! the scenario file's comment (straight road: s is the distance travelled). Times are on the
 //! 0.05 s step grid.
 
+mod actors;
 mod along;
 mod bad_input;
 mod distance;
