@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Seed corpora and dictionaries for the fuzz targets in fuzz/ (see docs/robustness.md).
 
-    python3 scripts/fuzz_seeds.py corpus MAX_LEN   # fuzz/corpus/<target>/ from the shared corpus and fixtures
+    python3 scripts/fuzz_seeds.py corpus MAX_LEN [DIR]   # DIR/<target>/ (default fuzz/corpus) from the shared corpus and fixtures
     python3 scripts/fuzz_seeds.py dicts            # fuzz/dict/{opendrive,openscenario}.dict from the XSDs
 
 Seeds are written, never committed: the shared corpus (../shared/corpus beside the repository)
@@ -68,10 +68,10 @@ def text_hash(data: bytes) -> str:
     return hashlib.sha1(data).hexdigest()[:16]
 
 
-def write_seed(target: str, data: bytes, max_len: int) -> bool:
+def write_seed(root: Path, target: str, data: bytes, max_len: int) -> bool:
     if len(data) > max_len or not data:
         return False
-    out = FUZZ / "corpus" / target
+    out = root / target
     out.mkdir(parents=True, exist_ok=True)
     (out / text_hash(data)).write_bytes(data)
     return True
@@ -145,11 +145,11 @@ def dsl_blocks(text: str):
         yield "\n".join(block).strip() + "\n"
 
 
-def corpus(max_len: int) -> None:
+def corpus(max_len: int, root: Path) -> None:
     counts = {}
 
     def add(target, data):
-        if write_seed(target, data, max_len):
+        if write_seed(root, target, data, max_len):
             counts[target] = counts.get(target, 0) + 1
 
     for f in files(XODR_SOURCES):
@@ -216,7 +216,10 @@ def dicts() -> None:
 
 if __name__ == "__main__":
     if len(sys.argv) >= 2 and sys.argv[1] == "corpus":
-        corpus(int(sys.argv[2]) if len(sys.argv) > 2 else 65536)
+        corpus(
+            int(sys.argv[2]) if len(sys.argv) > 2 else 65536,
+            Path(sys.argv[3]) if len(sys.argv) > 3 else FUZZ / "corpus",
+        )
     elif len(sys.argv) >= 2 and sys.argv[1] == "dicts":
         dicts()
     else:

@@ -52,7 +52,11 @@ fuzz_target!(|data: &[u8]| {
         if let Ok(formatted) = syntax::format(text) {
             let again = syntax::parse(&formatted);
             assert!(again.errors().is_empty(), "formatted text has errors");
-            assert_eq!(syntax::debug_dump(&again.syntax()), dump, "fmt changed the tree");
+            assert_eq!(
+                syntax::debug_dump(&again.syntax()),
+                dump,
+                "fmt changed the tree"
+            );
             assert_eq!(
                 syntax::format(&formatted).ok().as_deref(),
                 Some(formatted.as_str()),
@@ -63,7 +67,11 @@ fuzz_target!(|data: &[u8]| {
     if let Err(d) = dsl::check_source_with("fuzz.osc", text, &|_| None) {
         for item in &d.items {
             let at = d.position(item.span);
-            assert!(!at.starts_with("?:"), "{} points into no file", item.message);
+            assert!(
+                !at.starts_with("?:"),
+                "{} points into no file",
+                item.message
+            );
         }
         let _ = d.lines();
     }

@@ -77,6 +77,11 @@ fn network() -> Arc<RoadNetwork> {
 
 fuzz_target!(|data: &[u8]| {
     support::watchdog::start(data);
+    support::on_this_thread(|| scenario_run(data));
+});
+
+/// One input, checked as the module doc says.
+fn scenario_run(data: &[u8]) {
     let Ok(input) = Input::arbitrary_take_rest(Unstructured::new(data)) else {
         return;
     };
@@ -152,4 +157,4 @@ fuzz_target!(|data: &[u8]| {
             break;
         }
     }
-});
+}

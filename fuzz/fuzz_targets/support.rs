@@ -40,12 +40,43 @@ impl Draws {
     }
 }
 
+/// Whether `text` has a 1-based line `line`, lines ending at `\n`, `\r\n` or a lone `\r` as
+/// every reader counts them (XML 1.0 §2.11; `source::LineIndex`). Invalid UTF-8 is replaced
+/// first, which never adds or removes a line end.
+pub fn has_line(text: &[u8], line: u32) -> bool {
+    let text = String::from_utf8_lossy(text);
+    source::LineIndex::new(&text)
+        .line_range(&text, line)
+        .is_some()
+}
+
+/// Runs `f` with rayon's parallel work (opendrive reads large files and builds its spatial
+/// index in parallel) done on this thread: in a pool whose one worker is this thread, so no
+/// work is stolen by other threads. Their stealing, and their spinning while idle, would make
+/// the coverage an input shows depend on thread timing (`scripts/fuzz.sh --ci` needs the same
+/// coverage for the same input).
+pub fn on_this_thread<R: Send>(f: impl FnOnce() -> R + Send) -> R {
+    thread_local! {
+        static POOL: Option<rayon::ThreadPool> = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .use_current_thread()
+            .build()
+            .ok();
+    }
+    POOL.with(|pool| match pool {
+        Some(pool) => pool.install(f),
+        None => f(),
+    })
+}
+
 /// A hang detector that does not rely on libFuzzer's `-timeout`: its SIGALRM handler
 /// allocates, and without a sanitizer's allocator that deadlocks when the alarm interrupts the
 /// target inside `malloc` (seen on the distribution target). A thread samples the process's CPU
 /// time once a second; when one input has used more than [`HANG_CPU_SECONDS`] of CPU (not wall
 /// time: the machine is shared and the fuzzers run at nice 19), it writes the input to
-/// `$FUZZ_ARTIFACTS/hang-<hash>` (or `./`) and exits with status 70.
+/// `$FUZZ_ARTIFACTS/hang-<hash>` (or `./`) and exits with status 70. `FUZZ_WATCHDOG=off` runs
+/// without it (`scripts/fuzz.sh --ci`: each check runs instrumented code, so the coverage an
+/// input shows would depend on when the check fell).
 pub mod watchdog {
     use std::hash::{DefaultHasher, Hash, Hasher};
     use std::sync::atomic::{AtomicU64, Ordering};
@@ -106,7 +137,9 @@ pub mod watchdog {
     /// Marks the start of an input (call first in the fuzz target).
     pub fn start(data: &[u8]) {
         START.call_once(|| {
-            std::thread::spawn(watch);
+            if std::env::var_os("FUZZ_WATCHDOG").is_none_or(|v| v != "off") {
+                std::thread::spawn(watch);
+            }
         });
         if let Ok(mut v) = INPUT.lock() {
             v.clear();

@@ -83,3 +83,43 @@ fn distribution_range_count_overflows_u128() {
     );
     assert!(err.to_string().contains("parameter sets, found"), "{err}");
 }
+
+/// Not a reader bug: the distribution target's own check counted lines at `\n` only, and this
+/// input has 109 lone `\r` (its 1025 bytes hold 17 `\n` and no `\r\n`). XML 1.0 §2.11 makes a
+/// lone `\r` a line end, and the reader counts lines so (source::LineIndex): the bad
+/// `numberOfTestRuns` comes after 7 `\n` and 109 `\r`, so on line 1 + 7 + 109 = 117, at column
+/// 17 after the 16 characters `    <Stochastic `; the text has 1 + 17 + 109 = 127 lines by that
+/// count and 18 by `\n` alone. The fuzz targets now count lines as the reader does.
+#[test]
+fn distribution_lone_cr_line_ends() {
+    let name = "distribution_lone_cr_line_ends.xosc";
+    let bytes = std::fs::read(fuzz_file(name)).unwrap();
+    let text = std::str::from_utf8(&bytes).unwrap();
+    assert_eq!(text.matches('\r').count(), 109);
+    assert_eq!(text.matches('\n').count(), 17);
+    let err = scenario::distribution::read(text, Path::new(name)).unwrap_err();
+    assert!(
+        matches!(err.kind(), DistributionErrorKind::InvalidAttribute { .. }),
+        "{err}"
+    );
+    assert_eq!((err.pos().line, err.pos().col), (117, 17));
+    assert!(
+        err.to_string().starts_with(
+            "expected an unsignedInt for Stochastic@numberOfTestRuns, found '10000VVV"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.to_string().ends_with(&format!("at {name}:117:17")),
+        "{err}"
+    );
+    // The line the error names exists and holds the attribute it names.
+    let index = source::LineIndex::new(text);
+    let line = index.line_range(text, 117).map(|r| &text[r]);
+    assert!(
+        line.is_some_and(|l| l.starts_with("    <Stochastic numberOfTestRuns=")),
+        "{line:?}"
+    );
+    assert!(index.line_range(text, 127).is_some());
+    assert!(index.line_range(text, 128).is_none());
+}
