@@ -3,11 +3,18 @@
 //! `results.parquet` and `report.html` written from that table by [`write_outputs`] — the same
 //! function the unsharded run uses, on the same values (table.rs keeps numbers as written), so
 //! the files are equal byte for byte. Per-variant folders (`variants/NNNNN`) are copied.
+//!
+//! A shard folder with a batch journal (resume.rs) is checked first: its sweep must be that of
+//! the other shards (the digest of sweep.rs; shards differ only in their selection), and it
+//! must have finished (every variant of its selection recorded); a killed shard is named with
+//! how far it got, to be run again before merging.
 
 use std::path::{Path, PathBuf};
 
+use crate::journal::JournalError;
 use crate::parquet_file::{to_parquet, ParquetError};
 use crate::report::report_html;
+use crate::sweep::recorded;
 use crate::table::{CsvError, Table};
 
 /// Why shard outputs could not be merged or outputs written.
@@ -27,6 +34,27 @@ pub enum MergeError {
     /// A shard's results.csv is not a results table.
     #[error(transparent)]
     Csv(#[from] CsvError),
+    /// A shard's journal cannot be read.
+    #[error(transparent)]
+    Journal(#[from] JournalError),
+    /// Shards whose journals name different sweeps (other inputs or options).
+    #[error("expected shards of one sweep, found the journal of another in {other} (the first is {first})")]
+    DifferentSweeps {
+        /// The first shard's journal.
+        first: String,
+        /// The shard that differs.
+        other: String,
+    },
+    /// A shard whose journal lacks some of its variants (it was stopped).
+    #[error("expected a finished shard, found {recorded} of its {variants} variants recorded in {journal}: run its command again to finish it")]
+    Unfinished {
+        /// The shard's journal.
+        journal: String,
+        /// Variants recorded.
+        recorded: usize,
+        /// Variants of its selection.
+        variants: usize,
+    },
     /// Shards of different batches: other parameters or monitors.
     #[error(
         "expected shards of one batch with the header of {first}, found another header in {other}"
@@ -83,7 +111,27 @@ pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
 /// Merges the shard folders `shards` into `out` (module doc); returns the merged table.
 pub fn merge(shards: &[PathBuf], out: &Path) -> Result<Table, MergeError> {
     let mut parts = Vec::with_capacity(shards.len());
+    let mut sweep: Option<(String, String)> = None;
     for dir in shards {
+        if let Some((s, journal, done)) = recorded(dir)? {
+            if done < s.variants {
+                return Err(MergeError::Unfinished {
+                    journal,
+                    recorded: done,
+                    variants: s.variants,
+                });
+            }
+            match &sweep {
+                Some((digest, first)) if *digest != s.digest => {
+                    return Err(MergeError::DifferentSweeps {
+                        first: first.clone(),
+                        other: journal,
+                    })
+                }
+                Some(_) => {}
+                None => sweep = Some((s.digest, journal)),
+            }
+        }
         let path = dir.join("results.csv");
         let name = path.display().to_string();
         let text = std::fs::read_to_string(&path).map_err(io("cannot read", &path))?;

@@ -26,6 +26,7 @@ use std::path::Path;
 
 use sha2::{Digest, Sha256};
 
+use crate::journal::{self, JournalError, JOURNAL_FILE};
 use crate::plan::Plan;
 use crate::run::{selected, Options};
 use crate::table::Table;
@@ -129,6 +130,28 @@ impl Sweep {
             columns: value("columns")?,
         })
     }
+}
+
+/// The sweep of the journal in `dir`, the journal's path and how many variants it records, when
+/// `dir` holds a journal (`oscsim batch merge` checks shards with it).
+pub(crate) fn recorded(dir: &Path) -> Result<Option<(Sweep, String, usize)>, JournalError> {
+    let path = dir.join(JOURNAL_FILE);
+    if !path.is_file() {
+        return Ok(None);
+    }
+    let contents = journal::read(&path)?;
+    let name = path.display().to_string();
+    let sweep =
+        Sweep::from_header(&contents.records[0]).ok_or_else(|| JournalError::NotAJournal {
+            path: name.clone(),
+            found: "a header of another format".into(),
+        })?;
+    // A row's record starts with its variant number; one recorded twice counts once.
+    let variants: std::collections::BTreeSet<&str> = contents.records[1..]
+        .iter()
+        .filter_map(|r| r.split(',').next())
+        .collect();
+    Ok(Some((sweep, name, variants.len())))
 }
 
 fn file_name(path: &Path) -> String {

@@ -350,3 +350,63 @@ fn slow_and_failing_variants_are_failed_rows_and_the_others_complete() {
         "{failed}"
     );
 }
+
+/// `oscsim batch merge` refuses a shard that was killed (naming how far it got) and shards of
+/// different sweeps; once the killed shard has been run again, the merge gives the unsharded
+/// run's files.
+#[test]
+fn merge_refuses_an_unfinished_shard_and_another_sweeps() {
+    let root = scratch("merge");
+    let grid = file("resume_grid.xosc");
+    let grid = grid.to_str().unwrap();
+    let dir = |name: &str| root.join(name).to_str().unwrap().to_owned();
+    let (whole, s0, s1, other, merged) = (
+        dir("whole"),
+        dir("s0"),
+        dir("s1"),
+        dir("other"),
+        dir("merged"),
+    );
+    for args in [
+        vec!["batch", grid, "--out", &whole, "--quiet"],
+        vec!["batch", grid, "--out", &s0, "--shard", "0/2", "--quiet"],
+        vec![
+            "batch", grid, "--out", &other, "--shard", "1/2", "--seed", "7", "--quiet",
+        ],
+    ] {
+        let out = oscsim(&args);
+        assert_eq!(out.status.code(), Some(0), "{args:?}: {}", text(&out));
+    }
+    let shard1 = [
+        "batch", grid, "--out", &s1, "--shard", "1/2", "--jobs", "1", "--quiet",
+    ];
+    let done = kill_at(&shard1, Path::new(&s1), 10);
+    let refused = |args: &[&str], expected: &str| {
+        let out = oscsim(args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {}", text(&out));
+        assert!(
+            String::from_utf8_lossy(&out.stderr).contains(expected),
+            "{args:?}: {}",
+            text(&out)
+        );
+    };
+    refused(
+        &["batch", "merge", &s0, &s1, "--out", &merged],
+        &format!("expected a finished shard, found {done} of its 96 variants recorded in {s1}/batch.journal: run its command again to finish it"),
+    );
+    refused(
+        &["batch", "merge", &s0, &other, "--out", &merged],
+        &format!("expected shards of one sweep, found the journal of another in {other}/batch.journal (the first is {s0}/batch.journal)"),
+    );
+    let out = oscsim(&shard1);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let out = oscsim(&["batch", "merge", &s0, &s1, "--out", &merged]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    for f in ["results.csv", "results.parquet", "report.html"] {
+        assert!(
+            std::fs::read(root.join("whole").join(f)).unwrap()
+                == std::fs::read(root.join("merged").join(f)).unwrap(),
+            "{f} differs"
+        );
+    }
+}
