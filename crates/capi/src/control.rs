@@ -10,16 +10,16 @@ use std::ffi::c_char;
 
 use engine::controller::ExternalInput;
 use engine::models::single_track::{Brake, DriverInputs, GearSelection};
-use engine::RuntimeErrorKind;
+use engine::ErrorKind;
 
 use crate::error::{Failure, OscsimStatus};
 use crate::simulation::{text, with_sim, OscsimSimulation};
 
 /// The failure of an engine call on an external controller.
-fn failure(e: engine::RuntimeError) -> Failure {
+fn failure(e: engine::Error) -> Failure {
     let status = match e.kind() {
-        RuntimeErrorKind::NotExternal { .. } => OscsimStatus::NotExternal,
-        RuntimeErrorKind::ExternalInput { .. } => OscsimStatus::Argument,
+        ErrorKind::NotExternal { .. } => OscsimStatus::NotExternal,
+        ErrorKind::ExternalInput { .. } => OscsimStatus::Argument,
         _ => OscsimStatus::Step,
     };
     Failure::new(status, e.to_string())

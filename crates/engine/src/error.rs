@@ -9,7 +9,7 @@
 //! Messages follow the project's form "expected X, found Y at file:line:col"; the place is the
 //! scenario element (action, position, entity reference) that caused the error.
 //!
-//! `RuntimeError` and `RuntimeErrorKind` (crate root) are the older names of these two types.
+//! `Error` and `ErrorKind` (crate root) are the older names of these two types.
 
 use scenario::SourcePos;
 

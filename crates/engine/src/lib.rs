@@ -85,7 +85,6 @@ pub use load::RoadNetworks;
 pub use output::{CsvWriter, EntityFrame, JsonlWriter};
 pub use output::{EventRecord, EventSink, Frame, FrameSink, SinkError, SinkErrorKind};
 pub use runtime::{
-    Engine, EngineConfig, EntityId, EntityKind, RuntimeError, RuntimeErrorKind, StageCounters,
-    StopReason, Visibility,
+    Engine, EngineConfig, EntityId, EntityKind, StageCounters, StopReason, Visibility,
 };
 pub use snapshot::{Clock, EntityState, EnvironmentState, ScenarioSource};

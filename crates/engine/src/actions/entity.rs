@@ -17,10 +17,10 @@
 use opendrive::{RoadNetwork, RoadPosition};
 use scenario::{Position, SourcePos};
 
+use crate::error::{Error, ErrorKind};
 use crate::position::{resolve, EntityQuery, EntityView};
 use crate::routing::RoutingOptions;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 use crate::traffic::leave;
 
@@ -30,9 +30,9 @@ pub(crate) fn apply(
     entity_ref: &str,
     add_at: Option<&Position>,
     pos: &SourcePos,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     let id = world.id(entity_ref).ok_or_else(|| {
-        RuntimeError::at(
+        Error::at(
             "a declared entity",
             format!("entityRef '{entity_ref}'"),
             pos,
@@ -55,8 +55,8 @@ pub(crate) fn apply(
                 world: &*world,
                 returning,
             };
-            let resolved = resolve(position, &query)
-                .map_err(|e| RuntimeError::new(RuntimeErrorKind::Position(e)))?;
+            let resolved =
+                resolve(position, &query).map_err(|e| Error::new(ErrorKind::Position(e)))?;
             world.place_resolved(id, resolved.pose, resolved.road_position);
             Ok(())
         }

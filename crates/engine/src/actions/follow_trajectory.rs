@@ -34,8 +34,8 @@ use opendrive::normalize_angle;
 use scenario::{FollowingMode, SourcePos, Timing};
 
 use super::Part;
+use crate::error::{Error, ErrorKind};
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::trajectory::{
@@ -192,14 +192,14 @@ pub(crate) fn start(
     request: Request<'_>,
     now: f64,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let Request {
         trajectory,
         timing,
         following_mode,
         initial_distance_offset,
     } = request;
-    let to_error = |e| RuntimeError::new(RuntimeErrorKind::Trajectory(e));
+    let to_error = |e| Error::new(ErrorKind::Trajectory(e));
     // A ClothoidSpline whose first segment has no PositionStart starts at the actor (1.3 XSD
     // `ClothoidSplineSegment`: positionStart is optional).
     let actor_pose = world.entity(actor).pose;

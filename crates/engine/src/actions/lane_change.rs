@@ -21,8 +21,8 @@ use scenario::{LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics};
 
 use super::speed::entity_ref;
 use super::Part;
+use crate::error::Error;
 use crate::runtime::entity::{Blend, EntityId};
-use crate::runtime::error::RuntimeError;
 use crate::runtime::lanes::{lane_at, lane_shift};
 use crate::runtime::shapes::{progress, shape_value, span, Span};
 use crate::runtime::world::World;
@@ -69,14 +69,14 @@ pub(crate) fn start(
     action: &LateralAction,
     now: f64,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let LateralAction::LaneChange {
         target_lane_offset,
         dynamics,
         target,
     } = action
     else {
-        return Err(RuntimeError::unsupported("this LateralAction", pos));
+        return Err(Error::unsupported("this LateralAction", pos));
     };
     let lane = target_lane(world, target, pos)?;
     begin(
@@ -97,18 +97,19 @@ pub(crate) fn target_lane(
     world: &World,
     target: &LaneChangeTarget,
     pos: &SourcePos,
-) -> Result<i32, RuntimeError> {
+) -> Result<i32, Error> {
     Ok(match target {
-        LaneChangeTarget::Absolute(id) => id.trim().parse::<i32>().map_err(|_| {
-            RuntimeError::at("an OpenDRIVE lane id (integer)", format!("'{id}'"), pos)
-        })?,
+        LaneChangeTarget::Absolute(id) => id
+            .trim()
+            .parse::<i32>()
+            .map_err(|_| Error::at("an OpenDRIVE lane id (integer)", format!("'{id}'"), pos))?,
         LaneChangeTarget::Relative {
             entity_ref: name,
             value,
         } => {
             let reference = world.entity(entity_ref(world, name, pos)?);
             let (Some(rp), Some(track)) = (&reference.road_position, &reference.track) else {
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     "a reference entity on a lane",
                     format!("'{name}' off the road"),
                     pos,
@@ -116,7 +117,7 @@ pub(crate) fn target_lane(
             };
             lane_shift(rp.lane_id, *value, track.direction)
         }
-        _ => return Err(RuntimeError::unsupported("this LaneChangeTarget", pos)),
+        _ => return Err(Error::unsupported("this LaneChangeTarget", pos)),
     })
 }
 
@@ -131,19 +132,19 @@ pub(crate) fn begin(
     now: f64,
     continuous: bool,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let net = &world.network;
     let e = world.entity(actor);
     let Some(track) = &e.track else {
-        return Err(RuntimeError::at(
+        return Err(Error::at(
             "an actor on a lane",
             format!("'{}' off the road", e.name),
             pos,
         ));
     };
-    let road = net.road(&track.road_id).ok_or_else(|| {
-        RuntimeError::at("the actor's road", format!("road '{}'", track.road_id), pos)
-    })?;
+    let road = net
+        .road(&track.road_id)
+        .ok_or_else(|| Error::at("the actor's road", format!("road '{}'", track.road_id), pos))?;
     // A lane beyond the road's outermost lane (a scenario driving off the road) is reached as
     // that many lane widths outside the outermost lane on its side.
     let (lane, offset) = match road.lane_span(lane, track.s) {
@@ -158,7 +159,7 @@ pub(crate) fn begin(
             let outer = outer
                 .filter(|&o| o != 0 && o.signum() == lane.signum())
                 .ok_or_else(|| {
-                    RuntimeError::at(
+                    Error::at(
                         "a target lane on a side of the road that has lanes",
                         format!(
                             "lane {lane} on road '{}' at s={:.3}",
@@ -173,7 +174,7 @@ pub(crate) fn begin(
         }
     };
     let span_to = road.lane_span(lane, track.s).map_err(|e| {
-        RuntimeError::at(
+        Error::at(
             "a target lane that exists at the actor's position",
             e.to_string(),
             pos,

@@ -21,8 +21,8 @@ use scenario::{
 use super::lane_change::begin;
 use super::speed::entity_ref;
 use super::Part;
+use crate::error::Error;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 
 /// Lateral acceleration (m/s²) when the action gives none.
@@ -35,7 +35,7 @@ pub(crate) fn start(
     action: &LateralAction,
     now: f64,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let LateralAction::LaneOffset {
         continuous,
         dynamics_shape,
@@ -43,7 +43,7 @@ pub(crate) fn start(
         target,
     } = action
     else {
-        return Err(RuntimeError::unsupported("this LateralAction", pos));
+        return Err(Error::unsupported("this LateralAction", pos));
     };
     let offset = match target {
         LaneOffsetTarget::Absolute(v) => *v,
@@ -54,11 +54,11 @@ pub(crate) fn start(
             let r = world.entity(entity_ref(world, name, pos)?);
             r.road_position.as_ref().map_or(0.0, |rp| rp.offset) + value
         }
-        _ => return Err(RuntimeError::unsupported("this LaneOffsetTarget", pos)),
+        _ => return Err(Error::unsupported("this LaneOffsetTarget", pos)),
     };
     let e = world.entity(actor);
     let Some(track) = &e.track else {
-        return Err(RuntimeError::at(
+        return Err(Error::at(
             "an actor on a lane",
             format!("'{}' off the road", e.name),
             pos,

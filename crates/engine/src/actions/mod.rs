@@ -44,9 +44,9 @@ pub(crate) fn release_to_road(world: &mut World, actor: EntityId) {
     follow_trajectory::release(world, actor, false);
 }
 
+use crate::error::Error;
 use crate::output::EventRecord;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 use crate::storyboard::{ActionId, ActionStatus};
 
@@ -257,7 +257,7 @@ pub(crate) struct Host<'a> {
     pub table: &'a mut ActionTable,
     pub world: &'a mut World,
     pub events: &'a mut Vec<EventRecord>,
-    pub errors: &'a mut Vec<RuntimeError>,
+    pub errors: &'a mut Vec<Error>,
     /// The Init actions have started: this action belongs to a Story.
     pub story: bool,
     pub time: f64,
@@ -293,7 +293,7 @@ impl Host<'_> {
         id: ActionId,
         action: &PrivateAction,
         actor: EntityId,
-    ) -> Result<Part, RuntimeError> {
+    ) -> Result<Part, Error> {
         let pos = &self.table.slots[id.0 as usize].action.pos.clone();
         let time = self.time;
         // A motion action on a domain a user controller holds goes to that controller and
@@ -334,7 +334,7 @@ impl Host<'_> {
                     LongitudinalAction::Acceleration { target, dynamics } => Ok(
                         acceleration::start(self.world, actor, *target, dynamics, time),
                     ),
-                    _ => Err(RuntimeError::unsupported("this LongitudinalAction", pos)),
+                    _ => Err(Error::unsupported("this LongitudinalAction", pos)),
                 }
             }
             PrivateAction::Lateral(l) => {
@@ -349,7 +349,7 @@ impl Host<'_> {
                     LateralAction::LateralDistance { .. } => {
                         distance::start_lateral(self.world, actor, l, pos)
                     }
-                    _ => Err(RuntimeError::unsupported("this LateralAction", pos)),
+                    _ => Err(Error::unsupported("this LateralAction", pos)),
                 }
             }
             PrivateAction::Visibility(v) => {
@@ -397,7 +397,7 @@ impl Host<'_> {
                         &origin,
                         self.events,
                     )?,
-                    _ => return Err(RuntimeError::unsupported("this ControllerAction", pos)),
+                    _ => return Err(Error::unsupported("this ControllerAction", pos)),
                 };
                 // A user controller that takes a domain ends the action running there.
                 if taken.longitudinal {
@@ -433,7 +433,7 @@ impl Host<'_> {
         id: ActionId,
         action: &RoutingAction,
         actor: EntityId,
-    ) -> Result<Part, RuntimeError> {
+    ) -> Result<Part, Error> {
         let slot = &self.table.slots[id.0 as usize];
         let (pos, name, time) = (slot.action.pos.clone(), slot.name.clone(), self.time);
         match action {
@@ -486,7 +486,7 @@ impl Host<'_> {
         }
     }
 
-    fn start_global(&mut self, id: ActionId, action: &GlobalAction) -> Result<(), RuntimeError> {
+    fn start_global(&mut self, id: ActionId, action: &GlobalAction) -> Result<(), Error> {
         let slot = &self.table.slots[id.0 as usize];
         let (pos, name) = (slot.action.pos.clone(), slot.name.clone());
         match action {
@@ -558,7 +558,7 @@ impl Host<'_> {
         }
     }
 
-    fn try_start(&mut self, id: ActionId) -> Result<(), RuntimeError> {
+    fn try_start(&mut self, id: ActionId) -> Result<(), Error> {
         let slot = &mut self.table.slots[id.0 as usize];
         slot.started_at = self.time;
         slot.parts.clear();

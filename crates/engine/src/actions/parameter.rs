@@ -13,7 +13,7 @@ use std::collections::BTreeMap;
 use scenario::expr::Value;
 use scenario::{ModifyRule, SourcePos, ValueConstraintGroup};
 
-use crate::runtime::error::RuntimeError;
+use crate::error::Error;
 use crate::runtime::world::World;
 
 /// Applies `rule` to parameter `name`.
@@ -22,10 +22,10 @@ pub(crate) fn apply(
     name: &str,
     rule: &ModifyRule,
     pos: &SourcePos,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     modify_value(&mut world.parameters, "parameter", name, rule, pos, |new| {
         meets_constraints(&world.parameter_constraints, name, new)
-            .map_err(|expected| RuntimeError::at(expected, new.to_string(), pos))
+            .map_err(|expected| Error::at(expected, new.to_string(), pos))
     })
 }
 
@@ -51,10 +51,10 @@ pub(crate) fn modify_value(
     name: &str,
     rule: &ModifyRule,
     pos: &SourcePos,
-    accept: impl FnOnce(&Value) -> Result<(), RuntimeError>,
-) -> Result<(), RuntimeError> {
+    accept: impl FnOnce(&Value) -> Result<(), Error>,
+) -> Result<(), Error> {
     let Some(old) = store.get(name) else {
-        return Err(RuntimeError::at(
+        return Err(Error::at(
             format!("a declared {what}"),
             format!("'{name}'"),
             pos,
@@ -63,7 +63,7 @@ pub(crate) fn modify_value(
     let ty = old.value_type();
     let new = match rule {
         ModifyRule::Set(text) => Value::parse(ty, text).map_err(|e| {
-            RuntimeError::at(
+            Error::at(
                 format!("a value of type {}", ty.xsd_name()),
                 format!("'{text}' ({e})"),
                 pos,
@@ -71,7 +71,7 @@ pub(crate) fn modify_value(
         })?,
         ModifyRule::AddValue(v) | ModifyRule::MultiplyByValue(v) => {
             let Some(x) = old.as_f64() else {
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     format!("a numeric {what}"),
                     format!("'{name}' of type {}", ty.xsd_name()),
                     pos,
@@ -85,21 +85,21 @@ pub(crate) fn modify_value(
             // A double overflows to ±inf (then NaN): refused as a declared value or an
             // expression result that is not finite is (scenario crate, Value::parse).
             if !y.is_finite() {
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     format!("a finite value of {what} '{name}'"),
                     format!("{x:e} {op} {v:e} = {y}"),
                     pos,
                 ));
             }
             Value::Double(y).convert_to(ty).map_err(|e| {
-                RuntimeError::at(
+                Error::at(
                     format!("a value of type {}", ty.xsd_name()),
                     format!("{y} ({e})"),
                     pos,
                 )
             })?
         }
-        _ => return Err(RuntimeError::unsupported("this modify rule", pos)),
+        _ => return Err(Error::unsupported("this modify rule", pos)),
     };
     accept(&new)?;
     store.insert(name.to_owned(), new);

@@ -19,8 +19,8 @@ use scenario::{
 };
 
 use super::Part;
+use crate::error::Error;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::RuntimeError;
 use crate::runtime::shapes::{peak_slope, progress, shape_value, span, Span};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
@@ -85,16 +85,12 @@ impl Target {
 /// now. A deleted entity (DeleteEntityAction), or one not placed yet, has no state an action
 /// could refer to (its last pose and speed are stale), so it is refused as a position's
 /// `entityRef` is (position/error.rs).
-pub(crate) fn entity_ref(
-    world: &World,
-    name: &str,
-    pos: &SourcePos,
-) -> Result<EntityId, RuntimeError> {
+pub(crate) fn entity_ref(world: &World, name: &str, pos: &SourcePos) -> Result<EntityId, Error> {
     let id = world
         .id(name)
-        .ok_or_else(|| RuntimeError::at("a declared entity", format!("entityRef '{name}'"), pos))?;
+        .ok_or_else(|| Error::at("a declared entity", format!("entityRef '{name}'"), pos))?;
     if !world.entity(id).placed {
-        return Err(RuntimeError::at(
+        return Err(Error::at(
             format!("a placed entity named \"{name}\""),
             "none (deleted, or not yet placed)",
             pos,
@@ -109,7 +105,7 @@ pub(crate) fn target_speed(
     world: &World,
     target: &SpeedTarget,
     pos: &SourcePos,
-) -> Result<f64, RuntimeError> {
+) -> Result<f64, Error> {
     let v = match target {
         SpeedTarget::Absolute(v) => *v,
         SpeedTarget::Relative {
@@ -124,16 +120,12 @@ pub(crate) fn target_speed(
                 _ => v * value,
             }
         }
-        _ => return Err(RuntimeError::unsupported("this SpeedActionTarget", pos)),
+        _ => return Err(Error::unsupported("this SpeedActionTarget", pos)),
     };
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(RuntimeError::at(
-            "a finite target speed",
-            format!("{v} m/s"),
-            pos,
-        ))
+        Err(Error::at("a finite target speed", format!("{v} m/s"), pos))
     }
 }
 
@@ -145,7 +137,7 @@ pub(crate) fn start(
     target: &SpeedTarget,
     now: f64,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let target = match target {
         SpeedTarget::Absolute(v) => Target::Fixed(*v),
         SpeedTarget::Relative {
@@ -159,18 +151,14 @@ pub(crate) fn start(
             kind: *speed_target_value_type,
             continuous: *continuous,
         },
-        _ => return Err(RuntimeError::unsupported("this SpeedActionTarget", pos)),
+        _ => return Err(Error::unsupported("this SpeedActionTarget", pos)),
     };
     let v0 = world.entity(actor).speed;
     let v1 = target.speed(world);
     // A relative target can overflow (a factor of 1e10 on 1e300 m/s): refused, as a
     // non-finite value in the file is.
     if !v1.is_finite() {
-        return Err(RuntimeError::at(
-            "a finite target speed",
-            format!("{v1} m/s"),
-            pos,
-        ));
+        return Err(Error::at("a finite target speed", format!("{v1} m/s"), pos));
     }
     let mut span = span(dynamics, v1 - v0);
     if let (DynamicsDimension::Distance, Span::Distance(d)) = (dynamics.dynamics_dimension, span) {

@@ -30,8 +30,8 @@ use scenario::{DynamicConstraints, FollowingMode, LongitudinalAction, Performanc
 
 use super::speed::entity_ref;
 use super::Part;
+use crate::error::Error;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 
@@ -137,7 +137,7 @@ pub(crate) fn start(
     action: &LongitudinalAction,
     now: f64,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let LongitudinalAction::SpeedProfile {
         entity_ref: reference,
         following_mode,
@@ -145,7 +145,7 @@ pub(crate) fn start(
         entries,
     } = action
     else {
-        return Err(RuntimeError::unsupported("this LongitudinalAction", pos));
+        return Err(Error::unsupported("this LongitudinalAction", pos));
     };
     // XSD SpeedProfileEntry@time: "Range: [0..inf[".
     if let Some((index, time)) = entries
@@ -153,7 +153,7 @@ pub(crate) fn start(
         .enumerate()
         .find_map(|(i, x)| x.time.filter(|t| *t < 0.0).map(|t| (i, t)))
     {
-        return Err(RuntimeError::at(
+        return Err(Error::at(
             "a SpeedProfileEntry time of 0 s or more",
             format!("time {time} in SpeedProfileEntry {}", index + 1),
             pos,

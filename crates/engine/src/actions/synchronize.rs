@@ -38,9 +38,9 @@ use scenario::{FinalSpeed, SourcePos, SpeedTargetValueType, SteadyState, Synchro
 use super::speed::entity_ref;
 use super::Part;
 use crate::domain::shortest_road_path;
+use crate::error::{Error, ErrorKind};
 use crate::position::resolve;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 
@@ -94,9 +94,8 @@ pub(crate) struct SyncState {
 }
 
 /// Resolves `position` of the action at `pos` to a [`Target`].
-fn target(world: &World, position: &scenario::Position) -> Result<Target, RuntimeError> {
-    let resolved =
-        resolve(position, world).map_err(|e| RuntimeError::new(RuntimeErrorKind::Position(e)))?;
+fn target(world: &World, position: &scenario::Position) -> Result<Target, Error> {
+    let resolved = resolve(position, world).map_err(|e| Error::new(ErrorKind::Position(e)))?;
     Ok(Target {
         pose: resolved.pose,
         road: resolved.road_position.map(|rp| (rp.road_id, rp.s)),
@@ -124,7 +123,7 @@ pub(crate) fn start(
     world: &mut World,
     action: &SynchronizeAction,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let master = entity_ref(world, &action.master_entity_ref, pos)?;
     let (final_speed, steady_state) = match &action.final_speed {
         None => (None, None),
@@ -143,13 +142,13 @@ pub(crate) fn start(
             };
             (Some(rule), *steady_state)
         }
-        Some(_) => return Err(RuntimeError::unsupported("this FinalSpeed", pos)),
+        Some(_) => return Err(Error::unsupported("this FinalSpeed", pos)),
     };
     let steady_state = match steady_state {
         None => None,
         Some(SteadyState::Distance(d)) => Some(Steady::Distance(d)),
         Some(SteadyState::Time(t)) => Some(Steady::Time(t)),
-        Some(_) => return Err(RuntimeError::unsupported("this SteadyState", pos)),
+        Some(_) => return Err(Error::unsupported("this SteadyState", pos)),
     };
     let state = SyncState {
         master,

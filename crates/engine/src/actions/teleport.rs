@@ -16,9 +16,9 @@
 
 use scenario::Position;
 
+use crate::error::{Error, ErrorKind};
 use crate::position::resolve;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 
 /// Teleports `actor` to `position`; `story`: started by a Story (not in Init), so the entity
@@ -28,9 +28,8 @@ pub(crate) fn start(
     actor: EntityId,
     position: &Position,
     story: bool,
-) -> Result<(), RuntimeError> {
-    let resolved =
-        resolve(position, &*world).map_err(|e| RuntimeError::new(RuntimeErrorKind::Position(e)))?;
+) -> Result<(), Error> {
+    let resolved = resolve(position, &*world).map_err(|e| Error::new(ErrorKind::Position(e)))?;
     world.place_resolved(actor, resolved.pose, resolved.road_position);
     if story {
         world.entity_mut(actor).held = true;

@@ -7,8 +7,8 @@
 
 use scenario::{SourcePos, TrailerAction};
 
+use crate::error::Error;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 
 /// Applies `action` to the tow vehicle `actor`. Errors name `pos`: an unknown trailer, a
@@ -18,11 +18,11 @@ pub(crate) fn start(
     actor: EntityId,
     action: &TrailerAction,
     pos: &SourcePos,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     match action {
         TrailerAction::Connect { trailer_ref } => {
             let trailer = world.id(trailer_ref).ok_or_else(|| {
-                RuntimeError::at(
+                Error::at(
                     "a declared entity",
                     format!("trailerRef '{trailer_ref}'"),
                     pos,

@@ -4,7 +4,7 @@
 use scenario::{ModifyRule, SourcePos};
 
 use super::parameter::modify_value;
-use crate::runtime::error::RuntimeError;
+use crate::error::Error;
 use crate::runtime::world::World;
 
 /// Applies `rule` to variable `name`.
@@ -13,7 +13,7 @@ pub(crate) fn apply(
     name: &str,
     rule: &ModifyRule,
     pos: &SourcePos,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     modify_value(
         &mut world.variables,
         "variable",

@@ -7,10 +7,11 @@ use scenario::{ControllerDomains, SourcePos};
 
 use super::table::{instantiate, requested, ActiveDomains, Assigned};
 use super::view::ControllerView;
+use crate::error::Error;
 use crate::models::properties::{classify, ControllerKind};
 use crate::output::EventRecord;
 use crate::runtime::lane_index::LaneIndex;
-use crate::runtime::{EntityId, RuntimeError, World};
+use crate::runtime::{EntityId, World};
 
 /// Where a change comes from, for the log.
 pub(crate) struct Origin<'a> {
@@ -67,7 +68,7 @@ pub(crate) fn assign(
     activate: &ControllerDomains,
     origin: &Origin<'_>,
     events: &mut Vec<EventRecord>,
-) -> Result<Taken, RuntimeError> {
+) -> Result<Taken, Error> {
     let kind = classify(controller)?;
     let instance = match &kind {
         ControllerKind::Model { settings, .. } => Some(instantiate(settings)),
@@ -128,7 +129,7 @@ pub(crate) fn activate(
     domains: &ControllerDomains,
     origin: &Origin<'_>,
     events: &mut Vec<EventRecord>,
-) -> Result<Taken, RuntimeError> {
+) -> Result<Taken, Error> {
     let list = world
         .controllers
         .of(actor.index())
@@ -148,7 +149,7 @@ pub(crate) fn activate(
                             .unwrap_or_else(|| a.name.clone())
                     })
                     .collect();
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     format!(
                         "a controller assigned to '{}' ({})",
                         world.entity(actor).name,

@@ -12,8 +12,9 @@ use scenario::{
 };
 
 use super::assign::{assign, Origin};
+use crate::error::Error;
 use crate::models::properties::classify;
-use crate::runtime::{EntityId, RuntimeError, World};
+use crate::runtime::{EntityId, World};
 
 /// The controllers a traffic mix can give its vehicles: the ControllerDistribution and the
 /// ObjectControllers of the distribution's templates.
@@ -46,7 +47,7 @@ pub(crate) fn set_up<'a>(
     scenario: &Scenario,
     world: &mut World,
     actions: impl Iterator<Item = &'a scenario::Action>,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     for action in actions {
         match &action.kind {
             ActionKind::Private(PrivateAction::Controller(c)) => {

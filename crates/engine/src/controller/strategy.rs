@@ -6,8 +6,9 @@ use scenario::{LateralAction, LongitudinalAction, PrivateAction, RoutingAction};
 use super::assign::Origin;
 use super::command::Strategy;
 use crate::actions::{target_lane, target_speed};
+use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::{EntityId, RuntimeError, World};
+use crate::runtime::{EntityId, World};
 
 /// The motion domains `action` would take (longitudinal, lateral), and its element name.
 fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
@@ -47,7 +48,7 @@ fn strategy(
     world: &World,
     action: &PrivateAction,
     origin: &Origin<'_>,
-) -> Result<Option<Strategy>, RuntimeError> {
+) -> Result<Option<Strategy>, Error> {
     Ok(match action {
         PrivateAction::Longitudinal(LongitudinalAction::Speed { target, .. }) => {
             Some(Strategy::Speed(target_speed(world, target, origin.pos)?))
@@ -60,7 +61,7 @@ fn strategy(
             let base = match entity_ref {
                 Some(name) => {
                     let id = world.id(name).ok_or_else(|| {
-                        RuntimeError::at(
+                        Error::at(
                             "a declared entity",
                             format!("entityRef '{name}'"),
                             origin.pos,
@@ -90,7 +91,7 @@ pub(crate) fn hand_over(
     init: bool,
     origin: &Origin<'_>,
     events: &mut Vec<EventRecord>,
-) -> Result<bool, RuntimeError> {
+) -> Result<bool, Error> {
     let Some((lon, lat, kind)) = domains(action) else {
         return Ok(false);
     };

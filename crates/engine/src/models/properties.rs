@@ -26,7 +26,7 @@ use scenario::{Controller, ControllerType, SourcePos};
 use super::acc::AccParameters;
 use super::idm::IdmParameters;
 use super::mobil::MobilParameters;
-use crate::runtime::RuntimeError;
+use crate::error::Error;
 
 /// The motion domains a controller can hold (OpenSCENARIO 1.3 §6.6.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -222,7 +222,7 @@ fn props(c: &Controller) -> Vec<Prop<'_>> {
         .collect()
 }
 
-fn number(p: &Prop<'_>, range: Range) -> Result<f64, RuntimeError> {
+fn number(p: &Prop<'_>, range: Range) -> Result<f64, Error> {
     let (expected, ok): (&str, fn(f64) -> bool) = match range {
         Range::NonNegative => ("a finite number ≥ 0", |v| v >= 0.0),
         Range::Positive => ("a finite number > 0", |v| v > 0.0),
@@ -230,7 +230,7 @@ fn number(p: &Prop<'_>, range: Range) -> Result<f64, RuntimeError> {
     };
     match p.value.trim().parse::<f64>() {
         Ok(v) if v.is_finite() && ok(v) => Ok(v),
-        _ => Err(RuntimeError::at(
+        _ => Err(Error::at(
             format!("{expected} for property '{}'", p.name),
             format!("'{}'", p.value),
             p.pos,
@@ -239,7 +239,7 @@ fn number(p: &Prop<'_>, range: Range) -> Result<f64, RuntimeError> {
 }
 
 /// Reads `c` (module doc).
-pub fn classify(c: &Controller) -> Result<ControllerKind, RuntimeError> {
+pub fn classify(c: &Controller) -> Result<ControllerKind, Error> {
     let all = props(c);
     if let Some(p) = all.iter().find(|p| p.name == "esminiController") {
         return Ok(ControllerKind::Foreign {
@@ -328,7 +328,7 @@ pub fn classify(c: &Controller) -> Result<ControllerKind, RuntimeError> {
             ModelSettings::External
         }
         other => {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 format!("a controller model ({MODELS})"),
                 format!("'{other}'"),
                 model.pos,
@@ -340,7 +340,7 @@ pub fn classify(c: &Controller) -> Result<ControllerKind, RuntimeError> {
 }
 
 /// The IDM parameters from `props`, allowing the names in `also` (read by the caller).
-fn read_idm(props: &[&Prop<'_>], also: &[&str]) -> Result<(IdmParameters, bool), RuntimeError> {
+fn read_idm(props: &[&Prop<'_>], also: &[&str]) -> Result<(IdmParameters, bool), Error> {
     let mut idm = IdmParameters::default();
     let mut given = false;
     let model = if also.is_empty() { "idm" } else { "mobil" };
@@ -365,13 +365,13 @@ fn read_idm(props: &[&Prop<'_>], also: &[&str]) -> Result<(IdmParameters, bool),
     Ok((idm, given))
 }
 
-fn unknown(p: &Prop<'_>, model: &str, names: &[&str]) -> RuntimeError {
+fn unknown(p: &Prop<'_>, model: &str, names: &[&str]) -> Error {
     let expected = if names.is_empty() {
         format!("no property for model '{model}'")
     } else {
         format!("a property of model '{model}' ({})", names.join(", "))
     };
-    RuntimeError::at(expected, format!("'{}'", p.name), p.pos)
+    Error::at(expected, format!("'{}'", p.name), p.pos)
 }
 
 /// The model's domains narrowed by `controllerType` (1.2+): `movement` keeps both,
@@ -382,7 +382,7 @@ fn narrow(
     ty: Option<ControllerType>,
     settings: &ModelSettings,
     pos: &SourcePos,
-) -> Result<MotionDomains, RuntimeError> {
+) -> Result<MotionDomains, Error> {
     let asked = match ty {
         None | Some(ControllerType::Movement) => return Ok(model),
         Some(ControllerType::Longitudinal) => MotionDomains::LONGITUDINAL,
@@ -397,7 +397,7 @@ fn narrow(
         lateral: asked.lateral && model.lateral,
     };
     if kept == MotionDomains::default() {
-        return Err(RuntimeError::at(
+        return Err(Error::at(
             format!(
                 "a controllerType in the domains model '{}' controls ({})",
                 settings.name(),

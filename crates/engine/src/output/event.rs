@@ -5,7 +5,7 @@
 use scenario::SourcePos;
 
 use super::SinkError;
-use crate::runtime::RuntimeError;
+use crate::error::Error;
 use crate::storyboard::TransitionRecord;
 
 /// One record of the event log.
@@ -114,7 +114,7 @@ impl EventRecord {
         }
     }
 
-    pub(crate) fn error(time: f64, element: &str, error: &RuntimeError) -> Self {
+    pub(crate) fn error(time: f64, element: &str, error: &Error) -> Self {
         EventRecord::Error {
             time,
             element: element.to_owned(),

@@ -14,10 +14,10 @@ use opendrive::RoadNetwork;
 use scenario::{Action, Actors, EntityObject, Scenario, Trigger};
 
 use super::entity::{Entity, EntityId, EntityKind};
-use super::error::RuntimeError;
 use super::world::World;
 use crate::actions::ActionTable;
 use crate::domain::{BoundingBox, Color, Position3d};
+use crate::error::Error;
 use crate::storyboard::{
     ActDesc, ActionDesc, ConditionDesc, ConditionEdge, ConditionGroupDesc, ConditionId, EventDesc,
     ManeuverDesc, ManeuverGroupDesc, Priority, StoryDesc, StoryboardDesc, TriggerDesc,
@@ -32,7 +32,7 @@ pub(crate) struct Built {
 }
 
 /// Builds world, storyboard description and tables from `scenario` on `network`.
-pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Built, RuntimeError> {
+pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Built, Error> {
     let mut entities = scenario
         .entities
         .scenario_objects
@@ -96,14 +96,14 @@ pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Bu
 fn bounding_box(
     bb: &scenario::BoundingBox,
     pos: &scenario::SourcePos,
-) -> Result<BoundingBox, RuntimeError> {
+) -> Result<BoundingBox, Error> {
     let [x, y, z] = bb.center;
     BoundingBox::new(Position3d::new(x, y, z), bb.length, bb.width, bb.height)
-        .map_err(|e| RuntimeError::at("a valid BoundingBox", e.to_string(), pos))
+        .map_err(|e| Error::at("a valid BoundingBox", e.to_string(), pos))
 }
 
 /// The entity of scenario object `o` (also the template of spawned vehicles).
-pub(crate) fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entity, RuntimeError> {
+pub(crate) fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entity, Error> {
     let color_of = |props: &scenario::Properties| {
         props
             .properties
@@ -162,7 +162,7 @@ struct Builder<'a> {
 }
 
 impl Builder<'_> {
-    fn storyboard(&mut self) -> Result<StoryboardDesc, RuntimeError> {
+    fn storyboard(&mut self) -> Result<StoryboardDesc, Error> {
         let sb = &self.scenario.storyboard;
         let mut init_actions = Vec::new();
         for a in &sb.init.actions {
@@ -252,23 +252,19 @@ impl Builder<'_> {
         })
     }
 
-    fn actor(&self, name: &str, pos: &scenario::SourcePos) -> Result<EntityId, RuntimeError> {
-        self.world.id(name).ok_or_else(|| {
-            RuntimeError::at("a declared entity", format!("entityRef '{name}'"), pos)
-        })
+    fn actor(&self, name: &str, pos: &scenario::SourcePos) -> Result<EntityId, Error> {
+        self.world
+            .id(name)
+            .ok_or_else(|| Error::at("a declared entity", format!("entityRef '{name}'"), pos))
     }
 
     /// The actors of a ManeuverGroup, entity selections expanded, each once, in order.
-    fn actors(
-        &self,
-        actors: &Actors,
-        pos: &scenario::SourcePos,
-    ) -> Result<Vec<EntityId>, RuntimeError> {
+    fn actors(&self, actors: &Actors, pos: &scenario::SourcePos) -> Result<Vec<EntityId>, Error> {
         let mut out = Vec::new();
         for r in &actors.entity_refs {
             let names = self.scenario.entities.resolve(r);
             if names.is_empty() {
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     "a declared entity or selection",
                     format!("entityRef '{r}'"),
                     pos,

@@ -1,6 +1,6 @@
 //! The run's settings in one place: step length, duration and the hard cap on simulated time.
 
-use super::error::{RuntimeError, RuntimeErrorKind};
+use crate::error::{Error, ErrorKind};
 
 /// Default step length (s), the reference runs' fixed time step.
 pub const DEFAULT_DT: f64 = 0.05;
@@ -65,9 +65,9 @@ impl Default for EngineConfig {
 
 impl EngineConfig {
     /// Checks the values: dt finite and positive, duration and cap finite and ≥ 0.
-    pub fn validate(&self) -> Result<(), RuntimeError> {
+    pub fn validate(&self) -> Result<(), Error> {
         let bad = |name, expected, found| {
-            Err(RuntimeError::new(RuntimeErrorKind::Config {
+            Err(Error::new(ErrorKind::Config {
                 name,
                 expected,
                 found,

@@ -11,10 +11,10 @@ use scenario::Scenario;
 
 use super::build::build;
 use super::config::EngineConfig;
-use super::error::{RuntimeError, RuntimeErrorKind};
 use super::world::World;
 use crate::actions::{stop_domain, ActionTable, Domain};
 use crate::condition::ConditionStates;
+use crate::error::{Error, ErrorKind};
 use crate::output::EventRecord;
 use crate::snapshot::ScenarioSource;
 use crate::storyboard::Storyboard;
@@ -117,11 +117,11 @@ impl Engine {
         scenario: &Scenario,
         network: Arc<RoadNetwork>,
         config: EngineConfig,
-    ) -> Result<Engine, RuntimeError> {
+    ) -> Result<Engine, Error> {
         config.validate()?;
         // Places the road network does not have are refused now, not when first needed.
         crate::position::check_positions(scenario, &network)
-            .map_err(|e| RuntimeError::new(RuntimeErrorKind::Position(e)))?;
+            .map_err(|e| Error::new(ErrorKind::Position(e)))?;
         let mut built = build(scenario, network)?;
         built.world.traffic.seed = config.seed;
         built.world.traffic.model = config.traffic_model;
@@ -205,7 +205,7 @@ impl Engine {
         &mut self,
         name: &str,
         value: &scenario::expr::Value,
-    ) -> Result<bool, RuntimeError> {
+    ) -> Result<bool, Error> {
         use scenario::expr::Value;
         let world = self.world.get_mut();
         let Some(old) = world.parameters.get(name) else {
@@ -213,7 +213,7 @@ impl Engine {
         };
         let ty = old.value_type();
         let refused = |expected: String, found: String| {
-            RuntimeError::new(RuntimeErrorKind::ParameterValue {
+            Error::new(ErrorKind::ParameterValue {
                 name: name.to_owned(),
                 expected,
                 found,
@@ -279,11 +279,11 @@ impl Engine {
     /// running on it (engine module `controller`). Until the first
     /// [`set_external_input`](Self::set_external_input) the entity drives as under the default
     /// controller. Logged with the next step's records (element "host").
-    pub fn attach_external(&mut self, name: &str) -> Result<(), RuntimeError> {
+    pub fn attach_external(&mut self, name: &str) -> Result<(), Error> {
         let time = self.time();
         let world = self.world.get_mut();
         let id = world.id(name).ok_or_else(|| {
-            RuntimeError::new(RuntimeErrorKind::NotExternal {
+            Error::new(ErrorKind::NotExternal {
                 found: format!("no entity named '{name}'"),
             })
         })?;
@@ -338,16 +338,15 @@ impl Engine {
         &mut self,
         name: &str,
         input: crate::controller::ExternalInput,
-    ) -> Result<(), RuntimeError> {
+    ) -> Result<(), Error> {
         input.check().map_err(|e| {
-            RuntimeError::new(RuntimeErrorKind::ExternalInput {
+            Error::new(ErrorKind::ExternalInput {
                 expected: e.expected,
                 found: e.found,
             })
         })?;
         let world = self.world.get_mut();
-        let not_external =
-            |found: String| RuntimeError::new(RuntimeErrorKind::NotExternal { found });
+        let not_external = |found: String| Error::new(ErrorKind::NotExternal { found });
         let id = world
             .id(name)
             .ok_or_else(|| not_external(format!("no entity named '{name}'")))?;

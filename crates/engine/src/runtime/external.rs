@@ -11,15 +11,12 @@
 use opendrive::{normalize_angle, Object, Pose, RoadNetwork};
 use scenario::{EntityObject, Scenario};
 
-use super::error::RuntimeError;
 use super::world::World;
 use crate::domain::{BoundingBox, Position3d};
+use crate::error::Error;
 
 /// Places every ExternalObjectReference entity of `scenario` at its road-network object.
-pub(crate) fn place_external_objects(
-    scenario: &Scenario,
-    world: &mut World,
-) -> Result<(), RuntimeError> {
+pub(crate) fn place_external_objects(scenario: &Scenario, world: &mut World) -> Result<(), Error> {
     for o in &scenario.entities.scenario_objects {
         let EntityObject::ExternalObjectReference(name) = &o.entity_object else {
             continue;
@@ -28,7 +25,7 @@ pub(crate) fn place_external_objects(
             continue;
         };
         let (pose, object) = find(&world.network, name).ok_or_else(|| {
-            RuntimeError::at(
+            Error::at(
                 "an object of the road network with this name",
                 format!("ExternalObjectReference '{name}'"),
                 &o.pos,
@@ -44,7 +41,7 @@ pub(crate) fn place_external_objects(
             width,
             height,
         )
-        .map_err(|e| RuntimeError::at("object sizes >= 0", e.to_string(), &o.pos))?;
+        .map_err(|e| Error::at("object sizes >= 0", e.to_string(), &o.pos))?;
         let found = world.network.locate(pose.x, pose.y, Some(pose.h));
         world.place_resolved(id, pose, found);
         let e = world.entity_mut(id);

@@ -11,7 +11,7 @@
 //! numbers).
 
 use super::entity::Entity;
-use super::error::{RuntimeError, RuntimeErrorKind};
+use crate::error::{Error, ErrorKind};
 
 /// The first state value of `e` that is not finite, by name.
 fn first_non_finite(e: &Entity) -> Option<(&'static str, f64)> {
@@ -80,10 +80,10 @@ fn all_finite(e: &Entity) -> bool {
 
 /// Checks every placed entity of `entities` at simulation time `time`; the first entity whose
 /// state is not finite, by name, and the error.
-pub(crate) fn check(entities: &[Entity], time: f64) -> Result<(), (String, RuntimeError)> {
+pub(crate) fn check(entities: &[Entity], time: f64) -> Result<(), (String, Error)> {
     for e in entities.iter().filter(|e| e.placed && !all_finite(e)) {
         if let Some((quantity, value)) = first_non_finite(e) {
-            let error = RuntimeError::new(RuntimeErrorKind::NonFinite {
+            let error = Error::new(ErrorKind::NonFinite {
                 entity: e.name.clone(),
                 quantity,
                 value,

@@ -6,7 +6,6 @@
 //! | module | job |
 //! | --- | --- |
 //! | `config` | step length, duration, cap |
-//! | `error` | `RuntimeError`, the runtime's name for `crate::Error` |
 //! | `entity` | entity state (pose, road position, speed, …) and `EntityId` |
 //! | `world` | road network + entity store + values; `EntityQuery` / `ConditionContext` |
 //! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |
@@ -28,7 +27,6 @@ mod conditions;
 mod config;
 mod engine;
 pub(crate) mod entity;
-pub(crate) mod error;
 mod external;
 mod finite;
 pub(crate) mod lane_index;
@@ -45,7 +43,6 @@ pub use crate::actions::ControllerOverrides;
 pub use config::{EngineConfig, TrafficModel, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
 pub use engine::{Engine, StageCounters, StopReason};
 pub use entity::{Entity, EntityId, EntityKind, Visibility};
-pub use error::{RuntimeError, RuntimeErrorKind};
 pub use shapes::{shape_value, Span};
 
 // For the controllers stage (engine module `controller`).

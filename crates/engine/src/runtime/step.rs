@@ -18,10 +18,10 @@ use std::time::Instant;
 
 use super::conditions::Conditions;
 use super::engine::{Engine, StopReason};
-use super::error::{RuntimeError, RuntimeErrorKind};
 use super::trigger_view::TriggerView;
 use super::world::World;
 use crate::actions::{ActionTable, Host};
+use crate::error::{Error, ErrorKind};
 use crate::output::{EventRecord, EventSink, Frame, FrameSink, SinkError};
 use crate::snapshot::ScenarioSource;
 use crate::storyboard::{TransitionRecord, TransitionSink};
@@ -53,7 +53,7 @@ impl Engine {
         &mut self,
         frames: &mut dyn FrameSink,
         events: &mut dyn EventSink,
-    ) -> Result<Option<StopReason>, RuntimeError> {
+    ) -> Result<Option<StopReason>, Error> {
         if self.stopped.is_some() {
             return Ok(self.stopped);
         }
@@ -98,7 +98,7 @@ impl Engine {
         &mut self,
         frames: &mut dyn FrameSink,
         events: &mut dyn EventSink,
-    ) -> Result<StopReason, RuntimeError> {
+    ) -> Result<StopReason, Error> {
         let reason = loop {
             if let Some(reason) = self.step(frames, events)? {
                 break reason;
@@ -113,12 +113,7 @@ impl Engine {
     /// monitors' declared values, then the storyboard's step. `Err` when the storyboard fails
     /// (returned at once); `Ok(Some(e))` for the first action that failed to start, which the
     /// step reports after writing the step's records.
-    fn triggers(
-        &mut self,
-        time: f64,
-        dt: f64,
-        log: &Log,
-    ) -> Result<Option<RuntimeError>, RuntimeError> {
+    fn triggers(&mut self, time: f64, dt: f64, log: &Log) -> Result<Option<Error>, Error> {
         let clock = Instant::now();
         self.world.get_mut().time = time;
         // Values from outside due by now (within a millionth of a step of round-off).
@@ -175,7 +170,7 @@ impl Engine {
     /// First step only, after stage 1: the Init actions set speeds without a move, so the
     /// velocity follows the speed along the heading; trailers connected at definition stand
     /// behind their tows; the state is written as the frame at t = 0 (timed as output).
-    fn initial_frame(&mut self, time: f64, frames: &mut dyn FrameSink) -> Result<(), RuntimeError> {
+    fn initial_frame(&mut self, time: f64, frames: &mut dyn FrameSink) -> Result<(), Error> {
         let world = self.world.get_mut();
         for e in world.entities.iter_mut().filter(|e| e.placed) {
             e.velocity.translational = e.travel_velocity();
@@ -236,7 +231,7 @@ impl Engine {
         log: Log,
         frames: &mut dyn FrameSink,
         events: &mut dyn EventSink,
-    ) -> Result<(), RuntimeError> {
+    ) -> Result<(), Error> {
         let clock = Instant::now();
         let world = self.world.get_mut();
         let mut log = log.into_inner();
@@ -256,7 +251,7 @@ impl Engine {
 }
 
 /// Hands the step's records to the event sink.
-fn emit(records: &[EventRecord], events: &mut dyn EventSink) -> Result<(), RuntimeError> {
+fn emit(records: &[EventRecord], events: &mut dyn EventSink) -> Result<(), Error> {
     records
         .iter()
         .try_for_each(|r| events.event(r))
@@ -285,8 +280,8 @@ fn frame_of<'a>(world: &'a World, source: &'a ScenarioSource, time: f64, step: u
     }
 }
 
-fn output_error(what: &'static str) -> impl Fn(SinkError) -> RuntimeError {
-    move |error| RuntimeError::new(RuntimeErrorKind::Output { what, error })
+fn output_error(what: &'static str) -> impl Fn(SinkError) -> Error {
+    move |error| Error::new(ErrorKind::Output { what, error })
 }
 
 /// The action host of stage 1, borrowing the world through its cell (conditions read it in
@@ -295,7 +290,7 @@ struct HostCell<'a> {
     table: &'a mut ActionTable,
     world: &'a RefCell<World>,
     log: &'a Log,
-    errors: &'a mut Vec<RuntimeError>,
+    errors: &'a mut Vec<Error>,
     view: &'a RefCell<TriggerView>,
     /// The Init actions have started: actions started now belong to the Stories.
     story: bool,

@@ -31,9 +31,9 @@ use opendrive::{normalize_angle, Pose, Real};
 use scenario::{EntityObject, Scenario, ScenarioObject, SourcePos, Trailer};
 
 use super::entity::{Entity, EntityId};
-use super::error::RuntimeError;
 use super::world::World;
 use crate::domain::{Acceleration6d, Vector3, Velocity6d};
+use crate::error::Error;
 
 /// Hitch travel beyond the tow's own distance per step (m) that counts as a jump.
 const JUMP_SLACK: Real = 1.0;
@@ -96,11 +96,11 @@ impl Trailers {
         trailer: EntityId,
         align: bool,
         pos: &SourcePos,
-    ) -> Result<(), RuntimeError> {
+    ) -> Result<(), Error> {
         let name = |id| format!("'{}'", world_names(id));
         let joints = |id| self.joints.get(&id).copied().unwrap_or_default();
         if joints(tow).hitch.is_none() {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 "a tow vehicle with a TrailerHitch",
                 format!("{} without one", name(tow)),
                 pos,
@@ -109,14 +109,14 @@ impl Trailers {
         match joints(trailer).coupler {
             Some(dx) if dx > 0.0 && dx.is_finite() => {}
             Some(dx) => {
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     "a TrailerCoupler dx > 0 m (ahead of the trailer's rear axle)",
                     format!("dx = {dx} on {}", name(trailer)),
                     pos,
                 ))
             }
             None => {
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     "a trailer with a TrailerCoupler",
                     format!("{} without one", name(trailer)),
                     pos,
@@ -124,14 +124,14 @@ impl Trailers {
             }
         }
         if let Some(old) = self.trailer_of(tow) {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 "a tow vehicle without a trailer (one trailer at a time)",
                 format!("{} already pulling {}", name(tow), name(old)),
                 pos,
             ));
         }
         if let Some(old) = self.tow_of(trailer) {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 "a trailer not yet connected",
                 format!("{} already towed by {}", name(trailer), name(old)),
                 pos,
@@ -141,7 +141,7 @@ impl Trailers {
         let mut up = Some(tow);
         while let Some(id) = up {
             if id == trailer {
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     "a trailer chain without a cycle",
                     format!("{} towing {} in a loop", name(tow), name(trailer)),
                     pos,
@@ -211,8 +211,8 @@ pub fn tractrix_heading(heading: Real, from: (Real, Real), to: (Real, Real), l: 
 pub(crate) fn from_definitions(
     scenario: &Scenario,
     entities: &mut Vec<Entity>,
-    make: impl Fn(EntityId, &ScenarioObject) -> Result<Entity, RuntimeError>,
-) -> Result<Trailers, RuntimeError> {
+    make: impl Fn(EntityId, &ScenarioObject) -> Result<Entity, Error>,
+) -> Result<Trailers, Error> {
     let mut trailers = Trailers::default();
     // (tow, its object, the reference or inline trailer) to connect once all exist.
     let mut pending = Vec::new();
@@ -245,7 +245,7 @@ pub(crate) fn from_definitions(
             }
             Some(Trailer::TrailerRef(name)) => {
                 let found = entities.iter().find(|e| &e.name == name).ok_or_else(|| {
-                    RuntimeError::at(
+                    Error::at(
                         "a declared entity",
                         format!("TrailerRef '{name}'"),
                         &object.pos,

@@ -23,8 +23,8 @@ use std::collections::BTreeMap;
 
 use scenario::{SourcePos, TrafficSignalController};
 
+use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::RuntimeError;
 use red_light::{shows_red, RedLights};
 use schedule::Schedule;
 
@@ -52,7 +52,7 @@ pub struct Signals {
 impl Signals {
     /// The controllers of a scenario (errors name the controller's or phase's file:line:col).
     /// No phase is entered yet: [`Signals::advance`] at t = 0 enters the first ones.
-    pub(crate) fn new(controllers: &[TrafficSignalController]) -> Result<Self, RuntimeError> {
+    pub(crate) fn new(controllers: &[TrafficSignalController]) -> Result<Self, Error> {
         let schedule = Schedule::new(controllers)?;
         Ok(Signals {
             controllers: controllers
@@ -183,9 +183,9 @@ impl Signals {
         t: f64,
         pos: &SourcePos,
         log: &mut Vec<EventRecord>,
-    ) -> Result<(), RuntimeError> {
+    ) -> Result<(), Error> {
         let Some(i) = self.controllers.iter().position(|c| c.name == name) else {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 "the name of a TrafficSignalController of the RoadNetwork",
                 format!("'{name}'"),
                 pos,
@@ -197,7 +197,7 @@ impl Signals {
                 .iter()
                 .map(|p| p.0.as_str())
                 .collect();
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 format!("a phase of controller '{name}' ({})", names.join(", ")),
                 format!("'{phase}'"),
                 pos,

@@ -26,7 +26,7 @@ use std::collections::BTreeMap;
 
 use scenario::{SourcePos, TrafficSignalController};
 
-use crate::runtime::RuntimeError;
+use crate::error::Error;
 
 /// A cycle position within this many seconds before a phase's start counts as that phase.
 pub(crate) const BOUNDARY: f64 = crate::tolerance::TIME;
@@ -87,7 +87,7 @@ impl Schedule {
     ///
     /// Errors (with the controller's file:line:col): a reference to no controller, a reference
     /// without a delay, a negative or non-finite delay or duration, a cycle of references.
-    pub(crate) fn new(controllers: &[TrafficSignalController]) -> Result<Self, RuntimeError> {
+    pub(crate) fn new(controllers: &[TrafficSignalController]) -> Result<Self, Error> {
         let index: BTreeMap<&str, usize> = controllers
             .iter()
             .enumerate()
@@ -99,7 +99,7 @@ impl Schedule {
             let mut cycle = 0.0;
             for p in &c.phases {
                 if !(p.duration.is_finite() && p.duration >= 0.0) {
-                    return Err(RuntimeError::at(
+                    return Err(Error::at(
                         "a Phase duration ≥ 0 s",
                         p.duration.to_string(),
                         &p.pos,
@@ -112,7 +112,7 @@ impl Schedule {
                 (None, _) => None,
                 (Some(name), delay) => {
                     let Some(&r) = index.get(name.as_str()) else {
-                        return Err(RuntimeError::at(
+                        return Err(Error::at(
                             "the name of a TrafficSignalController as reference",
                             format!("'{name}'"),
                             &c.pos,
@@ -143,7 +143,7 @@ impl Schedule {
 
     /// Refuses a chain of references from controller `i` that comes back to a controller it
     /// passed.
-    fn check_acyclic(&self, i: usize, pos: &SourcePos) -> Result<(), RuntimeError> {
+    fn check_acyclic(&self, i: usize, pos: &SourcePos) -> Result<(), Error> {
         let mut at = i;
         for _ in 0..=self.clocks.len() {
             match self.clocks[at].reference {
@@ -151,7 +151,7 @@ impl Schedule {
                 Some((r, _)) => at = r,
             }
         }
-        Err(RuntimeError::at(
+        Err(Error::at(
             "TrafficSignalController references without a cycle",
             "a controller that references itself through its reference chain",
             pos,
@@ -202,11 +202,11 @@ impl Schedule {
 
 /// The delay of a controller with a reference: required, finite (any sign: a negative delay
 /// starts the controller's cycle before its reference's).
-fn check_delay(delay: Option<f64>, pos: &SourcePos) -> Result<f64, RuntimeError> {
+fn check_delay(delay: Option<f64>, pos: &SourcePos) -> Result<f64, Error> {
     match delay {
         Some(d) if d.is_finite() => Ok(d),
-        Some(d) => Err(RuntimeError::at("a finite delay (s)", d.to_string(), pos)),
-        None => Err(RuntimeError::at(
+        Some(d) => Err(Error::at("a finite delay (s)", d.to_string(), pos)),
+        None => Err(Error::at(
             "a delay with the reference (1.3: a controller with a reference has a delay to it)",
             "no delay",
             pos,

@@ -18,7 +18,7 @@ use super::controllers::equip;
 use super::spawn::{enter, lane_point, remove, template};
 use super::state::Running;
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
-use crate::runtime::error::RuntimeError;
+use crate::error::Error;
 use crate::runtime::world::World;
 
 /// Where an area's vehicles may be.
@@ -113,11 +113,7 @@ impl Area {
     }
 
     /// One step; `false` once a one-off area has spawned all its vehicles.
-    pub(crate) fn step(
-        &mut self,
-        world: &mut World,
-        run: &mut Running,
-    ) -> Result<bool, RuntimeError> {
+    pub(crate) fn step(&mut self, world: &mut World, run: &mut Running) -> Result<bool, Error> {
         if self.continuous {
             let outside: Vec<_> = run
                 .members

@@ -22,9 +22,9 @@ use scenario::{Controller, ControllerDomains, ObjectController, Properties, Traf
 
 use super::random::{stream, weighted};
 use crate::controller::{assign, Origin};
+use crate::error::Error;
 use crate::output::EventRecord;
 use crate::runtime::entity::{EntityId, EntityKind};
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 use crate::runtime::TrafficModel;
 
@@ -62,7 +62,7 @@ pub(crate) fn equip(
     mix: &TrafficMix,
     templates: &[ObjectController],
     element: &str,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     let distribution = mix
         .definition
         .as_ref()
@@ -116,7 +116,7 @@ pub(crate) fn equip_scenario_vehicles(
     world: &mut World,
     model: TrafficModel,
     events: &mut Vec<EventRecord>,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     let controller = option_controller(model, "vehicle", "run option vehicle_model");
     let bare: Vec<EntityId> = world
         .entities()

@@ -15,8 +15,8 @@ use super::controllers::equip;
 use super::spawn::{enter, in_disc, lane_point, remove, template};
 use super::state::Running;
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
+use crate::error::Error;
 use crate::runtime::entity::EntityKind;
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 
 /// Slack on the vehicles owed by a source (a count).
@@ -58,7 +58,7 @@ impl Source {
         world: &mut World,
         run: &mut Running,
         dt: Real,
-    ) -> Result<(), RuntimeError> {
+    ) -> Result<(), Error> {
         self.due += self.rate * dt;
         // Rounding of the running sum (20 × 0.05 is not exactly 1) must not cost a step.
         while self.due >= 1.0 - DUE_TOLERANCE {

@@ -23,8 +23,8 @@ use scenario::{ObjectController, Performance, TrafficMix, VehicleCategory};
 
 use super::random::{stream, weighted};
 use crate::domain::{BoundingBox, Position3d};
+use crate::error::Error;
 use crate::runtime::entity::{Entity, EntityId, EntityKind};
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 
 /// Least distance (m) between a new vehicle's reference point and any placed entity's.
@@ -59,7 +59,7 @@ pub(crate) fn template(
     seed: u64,
     mix: &TrafficMix,
     name: String,
-) -> Result<(Entity, Vec<ObjectController>), RuntimeError> {
+) -> Result<(Entity, Vec<ObjectController>), Error> {
     let (mut e, controllers) = body(rng, mix, name)?;
     if let Some(roles) = mix.definition.as_ref().map(|d| &d.vehicle_roles) {
         let mut rng = stream(seed, &format!("{}/role", e.name));
@@ -75,7 +75,7 @@ fn body(
     rng: &mut ChaCha8Rng,
     mix: &TrafficMix,
     name: String,
-) -> Result<(Entity, Vec<ObjectController>), RuntimeError> {
+) -> Result<(Entity, Vec<ObjectController>), Error> {
     let id = EntityId(u32::MAX);
     if let Some(entry) =
         weighted(rng, mix.distribution.iter().map(|e| e.weight)).map(|i| &mix.distribution[i])

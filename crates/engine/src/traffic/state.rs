@@ -17,10 +17,10 @@ use super::area::{Area, Shape};
 use super::random::stream;
 use super::source_sink::{Sink, Source};
 use super::swarm::Swarm;
+use crate::error::{Error, ErrorKind};
 use crate::output::EventRecord;
 use crate::position::resolve;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::{RuntimeError, RuntimeErrorKind};
 use crate::runtime::world::World;
 
 /// The run's seed and the traffic actions at work.
@@ -107,24 +107,24 @@ pub(crate) fn start(
     traffic_name: Option<&str>,
     action: &TrafficAction,
     pos: &SourcePos,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     let name = traffic_name.unwrap_or(action_name).to_owned();
     let point = |world: &World, position| {
         resolve(position, world)
             .map(|r| (r.pose.x, r.pose.y))
-            .map_err(|e| RuntimeError::new(RuntimeErrorKind::Position(e)))
+            .map_err(|e| Error::new(ErrorKind::Position(e)))
     };
     let positive = |what: &str, v: f64| {
         if v.is_finite() && v >= 0.0 {
             Ok(v)
         } else {
-            Err(RuntimeError::at(format!("{what} >= 0"), v.to_string(), pos))
+            Err(Error::at(format!("{what} >= 0"), v.to_string(), pos))
         }
     };
     let kind = match action {
         TrafficAction::Stop => {
             let Some(target) = traffic_name else {
-                return Err(RuntimeError::at(
+                return Err(Error::at(
                     "a trafficName on the TrafficAction of a TrafficStopAction",
                     "none",
                     pos,
@@ -182,7 +182,7 @@ pub(crate) fn start(
                         })
                         .collect(),
                 ),
-                _ => return Err(RuntimeError::unsupported("this TrafficArea", pos)),
+                _ => return Err(Error::unsupported("this TrafficArea", pos)),
             };
             Kind::Area(Box::new(Area::new(
                 shape,
@@ -191,7 +191,7 @@ pub(crate) fn start(
                 distribution,
             )))
         }
-        _ => return Err(RuntimeError::unsupported("this TrafficAction", pos)),
+        _ => return Err(Error::unsupported("this TrafficAction", pos)),
     };
     let rng = stream(world.traffic.seed, &name);
     world.traffic.running.push(Running {

@@ -22,7 +22,7 @@ use scenario::{SourcePos, TrafficAction, TrafficMix};
 use super::controllers::equip;
 use super::spawn::{enter, lane_point, remove, template};
 use super::state::Running;
-use crate::runtime::error::RuntimeError;
+use crate::error::Error;
 use crate::runtime::world::World;
 
 /// Random points tried per step for a new vehicle.
@@ -47,7 +47,7 @@ pub(crate) struct Swarm {
 
 impl Swarm {
     /// Reads a `TrafficAction::Swarm`; the radii must be ≥ 0 and the ellipse non-degenerate.
-    pub(crate) fn new(action: &TrafficAction, pos: &SourcePos) -> Result<Self, RuntimeError> {
+    pub(crate) fn new(action: &TrafficAction, pos: &SourcePos) -> Result<Self, Error> {
         let TrafficAction::Swarm {
             central_object,
             inner_radius,
@@ -61,11 +61,7 @@ impl Swarm {
             traffic,
         } = action
         else {
-            return Err(RuntimeError::at(
-                "a TrafficSwarmAction",
-                "another action",
-                pos,
-            ));
+            return Err(Error::at("a TrafficSwarmAction", "another action", pos));
         };
         let positive = |v: f64| v.is_finite() && v > 0.0;
         let valid = inner_radius.is_finite()
@@ -74,7 +70,7 @@ impl Swarm {
             && positive(*semi_minor_axis)
             && offset.is_finite();
         if !valid {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 "innerRadius >= 0 and finite semi-axes > 0",
                 format!("innerRadius {inner_radius}, semiMajorAxis {semi_major_axis}, semiMinorAxis {semi_minor_axis}"),
                 pos,
@@ -114,11 +110,7 @@ impl Swarm {
     }
 
     /// One step: remove the swarm's vehicles outside the ellipse, then add one if short.
-    pub(crate) fn step(
-        &mut self,
-        world: &mut World,
-        run: &mut Running,
-    ) -> Result<(), RuntimeError> {
+    pub(crate) fn step(&mut self, world: &mut World, run: &mut Running) -> Result<(), Error> {
         let Some(central) = world.id(&self.central).map(|id| world.entity(id)) else {
             return Ok(());
         };

@@ -24,7 +24,7 @@ use std::sync::mpsc;
 use std::time::Duration;
 
 use engine::output::{EventRecord, Frame, FrameSink};
-use engine::{Engine, EngineConfig, RuntimeErrorKind};
+use engine::{Engine, EngineConfig, ErrorKind};
 use proptest::prelude::*;
 use proptest::sample::Index;
 use scenario::Scenario;
@@ -222,7 +222,7 @@ fn run_case(name: &str, text: &str, params: &[(String, String)], dt: f64) -> Out
     }
     match result {
         Ok(_) => Outcome::Ran,
-        Err(e) if matches!(e.kind(), RuntimeErrorKind::NonFinite { .. }) => {
+        Err(e) if matches!(e.kind(), ErrorKind::NonFinite { .. }) => {
             Outcome::Overflow(e.to_string())
         }
         Err(e) => Outcome::Refused(e.to_string()),

@@ -404,10 +404,7 @@ fn state_overflowing_from_finite_extremes_is_refused_before_its_frame() {
     let expected = "expected a finite acceleration x of entity 'Lead' at t = 2.050 s, found inf \
                     (an overflow of extreme values)";
     assert_eq!(error.to_string(), expected);
-    assert!(matches!(
-        error.kind(),
-        engine::RuntimeErrorKind::NonFinite { .. }
-    ));
+    assert!(matches!(error.kind(), engine::ErrorKind::NonFinite { .. }));
     assert!(events.iter().any(|e| matches!(
         e,
         EventRecord::Error { time, element, message }

@@ -17,8 +17,8 @@ use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, SourcePo
 
 use crate::condition::{measured_distance, MeasureTarget};
 use crate::domain::BoundingBox;
+use crate::error::Error;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 
 /// The axis a distance action keeps its distance along.
@@ -52,7 +52,7 @@ impl Gauge {
         coordinate_system: Option<CoordinateSystem>,
         freespace: bool,
         pos: &SourcePos,
-    ) -> Result<(Gauge, f64), RuntimeError> {
+    ) -> Result<(Gauge, f64), Error> {
         let gauge = Gauge {
             axis,
             coordinate_system: coordinate_system.unwrap_or(CoordinateSystem::Entity),
@@ -60,7 +60,7 @@ impl Gauge {
         };
         match gauge.points(world, actor, reference) {
             Some(now) => Ok((gauge, now)),
-            None => Err(RuntimeError::at(
+            None => Err(Error::at(
                 format!("a {axis:?} distance the coordinateSystem can measure").to_lowercase(),
                 format!(
                     "none between '{}' and '{}'",

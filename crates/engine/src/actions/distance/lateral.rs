@@ -41,8 +41,8 @@ use super::law::{spring, Limits};
 use crate::actions::lane_change::abandon;
 use crate::actions::speed::entity_ref;
 use crate::actions::Part;
+use crate::error::Error;
 use crate::runtime::entity::{Blend, EntityId};
-use crate::runtime::error::RuntimeError;
 use crate::runtime::lanes::lane_at;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
@@ -79,7 +79,7 @@ pub(crate) fn start_lateral(
     actor: EntityId,
     action: &LateralAction,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let LateralAction::LateralDistance {
         entity_ref: name,
         continuous,
@@ -90,7 +90,7 @@ pub(crate) fn start_lateral(
         dynamic_constraints,
     } = action
     else {
-        return Err(RuntimeError::unsupported("this LateralAction", pos));
+        return Err(Error::unsupported("this LateralAction", pos));
     };
     let reference = entity_ref(world, name, pos)?;
     let e = world.entity(actor);

@@ -32,8 +32,8 @@ use super::law::{limit_jerk, speed_room, spring, Limits};
 use crate::actions::speed::entity_ref;
 use crate::actions::Part;
 use crate::controller::place_on_track;
+use crate::error::Error;
 use crate::runtime::entity::EntityId;
-use crate::runtime::error::RuntimeError;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 
@@ -70,7 +70,7 @@ pub(crate) fn start_longitudinal(
     actor: EntityId,
     action: &LongitudinalAction,
     pos: &SourcePos,
-) -> Result<Part, RuntimeError> {
+) -> Result<Part, Error> {
     let LongitudinalAction::LongitudinalDistance {
         entity_ref: name,
         continuous,
@@ -82,21 +82,21 @@ pub(crate) fn start_longitudinal(
         dynamic_constraints,
     } = action
     else {
-        return Err(RuntimeError::unsupported("this LongitudinalAction", pos));
+        return Err(Error::unsupported("this LongitudinalAction", pos));
     };
     let reference = entity_ref(world, name, pos)?;
     let wanted = match (distance, time_gap) {
         (Some(d), None) => Wanted::Distance(d.abs()),
         (None, Some(g)) => Wanted::TimeGap(g.abs()),
         (Some(_), Some(_)) => {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 "a LongitudinalDistanceAction with either distance or timeGap",
                 "both",
                 pos,
             ))
         }
         (None, None) => {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 "a LongitudinalDistanceAction with a distance or a timeGap",
                 "neither",
                 pos,

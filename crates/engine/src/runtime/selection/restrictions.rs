@@ -16,14 +16,14 @@ use scenario::{
     TimeToCollisionTarget, Trigger,
 };
 
-use crate::runtime::error::RuntimeError;
+use crate::error::Error;
 
 /// Rejects an EntitySelection where §7.2.2.5 requires a single ScenarioObject (module doc).
-pub(crate) fn check_multiplicity(scenario: &Scenario) -> Result<(), RuntimeError> {
+pub(crate) fn check_multiplicity(scenario: &Scenario) -> Result<(), Error> {
     let selections = &scenario.entities.entity_selections;
     let check = |name: &str, what: &str, pos: &SourcePos| {
         if selections.iter().any(|s| s.name == name) {
-            return Err(RuntimeError::at(
+            return Err(Error::at(
                 format!("a ScenarioObject as the reference of {what} (§7.2.2.5)"),
                 format!("EntitySelection '{name}'"),
                 pos,
@@ -69,7 +69,7 @@ pub(crate) fn check_multiplicity(scenario: &Scenario) -> Result<(), RuntimeError
 /// road network; §7.2.2 lets Vehicle, Pedestrian and MiscObject instances move), and
 /// TrailerAction on anything but a Vehicle. Actors are the Init `Private` entity and the
 /// ManeuverGroup actors with selections expanded to their declared members.
-pub(crate) fn check_actor_kinds<'s>(scenario: &'s Scenario) -> Result<(), RuntimeError> {
+pub(crate) fn check_actor_kinds<'s>(scenario: &'s Scenario) -> Result<(), Error> {
     let entities = &scenario.entities;
     // The scenario objects by name, the first of a name as `Entities::object` finds it: one
     // look-up per actor instead of a scan of every object (issue 31: 4,000 vehicles).
@@ -111,11 +111,7 @@ pub(crate) fn check_actor_kinds<'s>(scenario: &'s Scenario) -> Result<(), Runtim
                 } else {
                     format!("a Vehicle, Pedestrian or MiscObject as the actor of {what} (§7.2.2.5)")
                 };
-                return Err(RuntimeError::at(
-                    expected,
-                    format!("{kind} '{name}'"),
-                    &a.pos,
-                ));
+                return Err(Error::at(expected, format!("{kind} '{name}'"), &a.pos));
             }
         }
         Ok(())
