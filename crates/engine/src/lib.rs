@@ -50,7 +50,8 @@
 //! | `routing` | OpenSCENARIO 1.3 routes: waypoints and routeStrategy planned on the OpenDRIVE lane graph |
 //! | `signals` | OpenSCENARIO 1.3 traffic signal controllers: phases cycling, reference and delay, signal states |
 //! | `user_values` | values from outside for UserDefinedValueCondition: typed text, time series, CSV file |
-//! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: world, entities, building, the step |
+//! | `world` | the world's data: entity state and the plain state the stages keep on entities, lane look-ups, transition shapes |
+//! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: the world store, building, the step |
 //! | `actions` | OpenSCENARIO 1.3 §7.7 actions at runtime: one file per action kind, the action table |
 //! | `traffic` | OpenSCENARIO 1.3 §7.2.2.3 spawned traffic: sources, sinks, swarms, areas |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
@@ -79,12 +80,12 @@ pub mod tolerance;
 mod traffic;
 pub mod trajectory;
 pub mod user_values;
+mod world;
 
 pub use error::{Error, ErrorKind};
 pub use load::RoadNetworks;
 pub use output::{CsvWriter, EntityFrame, JsonlWriter};
 pub use output::{EventRecord, EventSink, Frame, FrameSink, SinkError, SinkErrorKind};
-pub use runtime::{
-    Engine, EngineConfig, EntityId, EntityKind, StageCounters, StopReason, Visibility,
-};
+pub use runtime::{Engine, EngineConfig, StageCounters, StopReason};
 pub use snapshot::{Clock, EntityState, EnvironmentState, ScenarioSource};
+pub use world::{EntityId, EntityKind, Visibility};

@@ -2,24 +2,20 @@
 //! tools): each entity in the scene (OpenSCENARIO 1.3 §7.2.2 "Entities"; poses in the world
 //! frame of §6.3), the parameter and variable values (§9.1, §7.7.1), the environment in force.
 //! Owned copies: they stay valid while the engine steps on, and reading them never exposes the
-//! engine's internal state.
+//! engine's internal state. [`Engine`](crate::Engine) gives them (`runtime/read.rs`).
 
 use std::collections::BTreeMap;
 use std::path::PathBuf;
-use std::sync::Arc;
 
-use opendrive::{Pose, Real, RoadNetwork, RoadPosition};
-use scenario::expr::Value;
+use opendrive::{Pose, Real, RoadPosition};
 use scenario::{
-    AnimationAction, LightState, MiscObjectCategory, PedestrianCategory, Role, Scenario,
-    VehicleCategory,
+    LightState, MiscObjectCategory, PedestrianCategory, Role, Scenario, VehicleCategory,
 };
 
 use crate::domain::{BoundingBox, Color, Vector3};
-use crate::output::EntityFrame;
-use crate::runtime::{ControllerOverrides, Engine, EntityId, EntityKind, Visibility};
+use crate::world::{ControllerOverrides, EntityId, EntityKind, Visibility};
 
-pub use crate::actions::{Clock, EnvironmentState};
+pub use crate::world::{Clock, EnvironmentState};
 
 /// One entity in the scene at one moment: what a frame carries, owned.
 #[derive(Debug, Clone, PartialEq)]
@@ -98,60 +94,5 @@ impl ScenarioSource {
             road_network_file: scenario.road_network.logic_file.clone(),
             scene_graph_file: scenario.road_network.scene_graph_file.clone(),
         }
-    }
-}
-
-impl Engine {
-    /// Every entity in the scene (placed by its Init or an AddEntityAction, not deleted), in
-    /// id order.
-    pub fn entities(&self) -> Vec<EntityState> {
-        let world = self.world();
-        world
-            .entities()
-            .iter()
-            .filter(|e| e.placed)
-            .map(|e| EntityFrame::of(e).to_state())
-            .collect()
-    }
-
-    /// The id of the entity called `name`: declared in the scenario (placed yet or not) or
-    /// spawned so far.
-    pub fn entity_id(&self, name: &str) -> Option<EntityId> {
-        self.world().id(name)
-    }
-
-    /// The entity called `name`, if it is in the scene.
-    pub fn entity(&self, name: &str) -> Option<EntityState> {
-        let world = self.world();
-        let e = world.entity(world.id(name)?);
-        e.placed.then(|| EntityFrame::of(e).to_state())
-    }
-
-    /// The current value of global parameter `name` (ParameterSetAction and
-    /// ParameterModifyAction change it during the run).
-    pub fn parameter(&self, name: &str) -> Option<Value> {
-        self.world().parameter_value(name).cloned()
-    }
-
-    /// The current value of variable `name` (OpenSCENARIO 1.2+ VariableDeclaration).
-    pub fn variable(&self, name: &str) -> Option<Value> {
-        self.world().variable_value(name).cloned()
-    }
-
-    /// The AnimationAction last applied to animation `name` of entity `entity` (the
-    /// component, pedestrian motion, file path or user-defined type, as in the event log).
-    pub fn animation(&self, entity: &str, name: &str) -> Option<AnimationAction> {
-        let world = self.world();
-        world.animation(world.id(entity)?, name).cloned()
-    }
-
-    /// The environment in force (EnvironmentAction: time of day, weather, road condition).
-    pub fn environment(&self) -> EnvironmentState {
-        self.world().environment.clone()
-    }
-
-    /// The road network the engine runs on (shared with every engine built on it).
-    pub fn road_network(&self) -> Arc<RoadNetwork> {
-        self.world().network.clone()
     }
 }

@@ -61,6 +61,7 @@ mod model;
 mod network;
 mod parse;
 mod query;
+mod road;
 
 pub use error::{Error, ErrorKind};
 pub use geo::{GeoError, GeoTransform};
@@ -81,7 +82,8 @@ pub use model::{
 };
 pub use network::RoadNetwork;
 pub use query::{
-    Direction, LaneChange, LaneCost, LaneHandle, LanePath, LanePosition, LaneRoute, LaneSpan,
-    PathCost, RoadPoint, RoadPosition, RouteSegment, CONSTANT_MARGIN, LANE_CHANGE_COST,
+    Direction, LaneChange, LaneCost, LaneHandle, LanePath, LanePosition, LaneRoute, PathCost,
+    RoadPoint, RoadPosition, RouteSegment, LANE_CHANGE_COST,
 };
+pub use road::{LaneSpan, CONSTANT_MARGIN};
 pub use source::SourcePos;

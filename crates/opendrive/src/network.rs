@@ -9,7 +9,7 @@ use crate::error::{Error, ErrorKind};
 use crate::handles::{JunctionHandle, RoadHandle, Topology};
 use crate::model::{Header, Junction, Road};
 use crate::parse::{load, Loaded};
-use crate::query::SpatialIndex;
+use crate::road::SpatialIndex;
 
 /// A loaded OpenDRIVE road network. Immutable after loading; all queries take `&self`.
 #[derive(Debug, Clone)]

@@ -425,19 +425,3 @@ impl Error {
 
 /// The crate's result type.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
-
-/// A non-fatal finding: a deprecated form mapped onto the 1.3 model, or a feature newer than
-/// the file's declared version.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Warning {
-    /// The message ("… at file:row:col" is added by Display).
-    pub message: String,
-    /// Where.
-    pub pos: SourcePos,
-}
-
-impl fmt::Display for Warning {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} at {}", self.message, self.pos)
-    }
-}

@@ -28,15 +28,17 @@
 //! | --- | --- |
 //! | `model` | the typed scenario, grouped by the standard's chapters |
 //! | `reader` | XML → model, one reader per XSD element |
+//! | `attr` | XSD simple types read from attribute text, and the `xsd_enum!` macro the model's enumerations are declared with |
 //! | `expr` | `${…}` expressions (§9.2) |
 //! | `distribution` | parameter value distributions (§9.5) |
 //! | `names` | `::`-qualified storyboard element references and how they match |
 //! | `init_order` | the order in which the Init's private actions take effect: positions and speeds relative to other entities after those entities' own ([`init_order()`]) |
 //! | `provider` | where files come from: [`DiskFiles`], [`MemoryFiles`], or your [`FileProvider`]; the [`Sources`] a scenario keeps |
-//! | `source`, `error` | positions and errors |
+//! | `source`, `error`, `warning` | positions, errors and warnings |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+mod attr;
 pub mod distribution;
 mod error;
 pub mod expr;
@@ -46,15 +48,17 @@ pub mod names;
 mod provider;
 mod reader;
 mod source;
+mod warning;
 
 use std::path::Path;
 
-pub use error::{Error, ErrorKind, Result, Warning};
+pub use error::{Error, ErrorKind, Result};
 pub use init_order::{init_order, InitStep};
 pub use model::*;
 pub use provider::{DiskFiles, FileProvider, MemoryFiles, Sources};
 pub use reader::files::MAX_FILE_BYTES;
 pub use source::SourcePos;
+pub use warning::Warning;
 
 impl Scenario {
     /// Loads the scenario at `path` with its catalogs, checking that its road network file

@@ -16,10 +16,10 @@
 use scenario::TransitionDynamics;
 
 use super::Part;
-use crate::runtime::entity::EntityId;
-use crate::runtime::shapes::{shape_integral, span, Span};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
+use crate::world::shapes::{shape_integral, span, Span};
 
 /// A running AccelerationAction on one actor.
 #[derive(Debug, Clone)]
@@ -57,7 +57,7 @@ pub(crate) fn start(
 
 /// The acceleration after `tau` s.
 fn acceleration(s: &AccelerationState, tau: f64) -> f64 {
-    let (f, _) = crate::runtime::shapes::shape_value(
+    let (f, _) = crate::world::shapes::shape_value(
         s.dynamics.dynamics_shape,
         match s.span {
             Span::Time(t) => tau / t,

@@ -31,9 +31,9 @@ use std::collections::BTreeMap;
 use scenario::{AnimationAction, AnimationType, AppearanceAction, LightKind};
 
 use crate::output::EventRecord;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
 
 /// A LightStateAction running through its `transitionTime`, or an AnimationAction through its
 /// `animationDuration` or without a regular ending.

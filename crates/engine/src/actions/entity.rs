@@ -20,9 +20,9 @@ use scenario::{Position, SourcePos};
 use crate::error::{Error, ErrorKind};
 use crate::position::{resolve, EntityQuery, EntityView};
 use crate::routing::RoutingOptions;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 use crate::traffic::leave;
+use crate::world::entity::EntityId;
 
 /// Adds `entity_ref` at `add_at`, or deletes it when `add_at` is `None`.
 pub(crate) fn apply(

@@ -35,13 +35,13 @@ use scenario::{FollowingMode, SourcePos, Timing};
 
 use super::Part;
 use crate::error::{Error, ErrorKind};
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::trajectory::{
     build_for_actor, FollowLimits, Pursuit, Trajectory, TrajectoryClock, TrajectoryError,
     TrajectoryErrorKind,
 };
+use crate::world::entity::EntityId;
 
 /// A running FollowTrajectoryAction on one actor.
 #[derive(Debug, Clone)]

@@ -22,8 +22,8 @@ use super::lane_change::begin;
 use super::speed::entity_ref;
 use super::Part;
 use crate::error::Error;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
+use crate::world::entity::EntityId;
 
 /// Lateral acceleration (m/s²) when the action gives none.
 const DEFAULT_MAX_LATERAL_ACC: f64 = 0.5;

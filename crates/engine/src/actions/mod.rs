@@ -34,9 +34,7 @@ use scenario::{
 };
 
 pub(crate) use appearance::Appearances;
-pub use environment::{Clock, EnvironmentState};
 pub(crate) use lane_change::{abandon as lane_change_abandon, target_lane};
-pub use override_controller::ControllerOverrides;
 pub(crate) use speed::target_speed;
 
 /// Puts `actor` back on the lane at its pose (the default controller keeps that lane).
@@ -46,9 +44,9 @@ pub(crate) fn release_to_road(world: &mut World, actor: EntityId) {
 
 use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 use crate::storyboard::{ActionId, ActionStatus};
+use crate::world::entity::EntityId;
 
 /// The control domain an action occupies on its actor.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -19,13 +19,8 @@
 use scenario::{BrakeInput, Gear, OverrideControllerValueAction};
 
 use crate::output::EventRecord;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
-
-/// The driver inputs overridden on one entity: per input, the last override an action gave
-/// (active, or released with `active = false`); `None` where no action has named the input.
-/// It has the shape of the action itself, which is kept as the state.
-pub type ControllerOverrides = OverrideControllerValueAction;
+use crate::world::entity::EntityId;
 
 /// "on 0.5" / "off": the change of one input for the event log.
 fn change(active: bool, value: String) -> String {

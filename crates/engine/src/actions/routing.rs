@@ -15,12 +15,12 @@
 use opendrive::LanePosition;
 use scenario::{Position, Route, RouteStrategy, SourcePos};
 
-use crate::controller::RouteFollow;
 use crate::output::EventRecord;
 use crate::position::resolve;
 use crate::routing::{plan_between, plan_random, plan_route, PlannedRoute, RoutingOptions};
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
+use crate::world::entity::EntityId;
+use crate::world::RouteFollow;
 
 /// The run's routing options: routeStrategy `random` draws from the run's seed
 /// ([`EngineConfig::seed`](crate::EngineConfig), `oscsim run --seed`).

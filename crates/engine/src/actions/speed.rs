@@ -20,10 +20,10 @@ use scenario::{
 
 use super::Part;
 use crate::error::Error;
-use crate::runtime::entity::EntityId;
-use crate::runtime::shapes::{peak_slope, progress, shape_value, span, Span};
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
+use crate::world::shapes::{peak_slope, progress, shape_value, span, Span};
 
 /// A running SpeedAction on one actor.
 #[derive(Debug, Clone)]

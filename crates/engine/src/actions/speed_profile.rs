@@ -31,9 +31,9 @@ use scenario::{DynamicConstraints, FollowingMode, LongitudinalAction, Performanc
 use super::speed::entity_ref;
 use super::Part;
 use crate::error::Error;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
 
 /// Acceleration (m/s²) used when neither the action nor the vehicle gives one.
 const DEFAULT_ACCELERATION: f64 = 5.0;

@@ -40,9 +40,9 @@ use super::Part;
 use crate::domain::shortest_road_path;
 use crate::error::{Error, ErrorKind};
 use crate::position::resolve;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
 
 /// Distances (m), speeds (m/s) and times (s) below this count as zero.
 const SMALL: f64 = crate::tolerance::LENGTH;

@@ -18,8 +18,8 @@ use scenario::Position;
 
 use crate::error::{Error, ErrorKind};
 use crate::position::resolve;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
+use crate::world::entity::EntityId;
 
 /// Teleports `actor` to `position`; `story`: started by a Story (not in Init), so the entity
 /// stays at the target over this step.

@@ -8,8 +8,8 @@
 use scenario::{SourcePos, TrailerAction};
 
 use crate::error::Error;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
+use crate::world::entity::EntityId;
 
 /// Applies `action` to the tow vehicle `actor`. Errors name `pos`: an unknown trailer, a
 /// vehicle without hitch or coupler, a second trailer, a cycle.

@@ -19,8 +19,8 @@
 use scenario::VisibilityAction;
 
 use crate::output::EventRecord;
-use crate::runtime::entity::{EntityId, Visibility};
 use crate::runtime::world::World;
+use crate::world::entity::{EntityId, Visibility};
 
 /// `on` / `off`.
 fn on_off(flag: bool) -> &'static str {

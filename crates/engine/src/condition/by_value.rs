@@ -22,9 +22,9 @@
 use scenario::{ByValueCondition, SourcePos, StoryboardElementState, StoryboardElementType};
 
 use super::rule::{compare, compare_value};
-use super::time_of_day::parse_date_time;
 use super::{ConditionContext, ConditionError, ConditionErrorKind};
 use crate::storyboard::{ElementKind, ElementState, Transition};
+use crate::world::date_time::parse_date_time;
 
 /// The raw value of a ByValueCondition.
 pub(crate) fn evaluate<C: ConditionContext + ?Sized>(

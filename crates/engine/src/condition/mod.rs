@@ -10,7 +10,6 @@
 //! | `registry` | `UserValueRegistry`: the external values UserDefinedValueCondition reads |
 //! | `error` | `ConditionError`, `ConditionErrorKind` |
 //! | `rule` | XSD `Rule` on numbers (with the equalTo tolerance) and typed values |
-//! | `time_of_day` | xsd:dateTime → seconds since the epoch |
 //! | `by_value` | SimulationTime, Parameter, Variable, UserDefinedValue, StoryboardElementState, TimeOfDay, TrafficSignal, TrafficSignalController |
 //! | `measure` | distances: freespace, coordinateSystem, relativeDistanceType; their rates |
 //! | `road_distance` | the road and lane coordinate distances of `measure` |
@@ -37,7 +36,6 @@ mod road_state;
 mod rule;
 mod spacing;
 mod state;
-mod time_of_day;
 
 pub use context::ConditionContext;
 pub use error::{ConditionError, ConditionErrorKind};
@@ -48,4 +46,3 @@ pub use registry::UserValueRegistry;
 pub use road_state::END_OF_ROAD_TOLERANCE;
 pub use rule::{compare, EQUAL_TOLERANCE};
 pub use state::{ConditionState, ConditionStates};
-pub(crate) use time_of_day::parse_zoned_date_time;

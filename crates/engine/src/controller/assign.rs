@@ -11,7 +11,8 @@ use crate::error::Error;
 use crate::models::properties::{classify, ControllerKind};
 use crate::output::EventRecord;
 use crate::runtime::lane_index::LaneIndex;
-use crate::runtime::{EntityId, World};
+use crate::runtime::World;
+use crate::world::EntityId;
 
 /// Where a change comes from, for the log.
 pub(crate) struct Origin<'a> {

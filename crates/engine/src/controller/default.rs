@@ -14,13 +14,13 @@
 
 use opendrive::{normalize_angle, Direction, Real, Road, RoadNetwork};
 
-use super::lane_change;
-use super::route::RouteFollow;
 use crate::domain::{Acceleration6d, Vector3, Velocity6d};
-use crate::runtime::entity::{CurvatureAt, Entity, LaneTrack};
-use crate::runtime::lanes::{
+use crate::world::entity::{CurvatureAt, Entity, LaneTrack};
+use crate::world::lane_change;
+use crate::world::lanes::{
     advance, curvature_with_heading, set_road_position, track_curvature, track_span,
 };
+use crate::world::RouteFollow;
 
 /// Moves entity `e` over one step of `dt` s: position, heading, road position, velocity,
 /// acceleration, yaw rate and odometer. `travel`, when given, is the distance to travel (a

@@ -14,7 +14,8 @@ use scenario::{
 use super::assign::{assign, Origin};
 use crate::error::Error;
 use crate::models::properties::classify;
-use crate::runtime::{EntityId, World};
+use crate::runtime::World;
+use crate::world::EntityId;
 
 /// The controllers a traffic mix can give its vehicles: the ControllerDistribution and the
 /// ObjectControllers of the distribution's templates.

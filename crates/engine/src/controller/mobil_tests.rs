@@ -9,9 +9,9 @@ use super::*;
 use crate::controller::car_following::with_red_light;
 use crate::controller::view::NeighbourLane;
 use crate::domain::{BoundingBox, Vector3};
-use crate::runtime::entity::{Entity, EntityId, EntityKind};
 use crate::runtime::lane_index::LaneIndex;
 use crate::runtime::world::World;
+use crate::world::entity::{Entity, EntityId, EntityKind};
 
 /// The verdict on `lane` with every acceleration computed (the rule of the module doc).
 fn judge_each(

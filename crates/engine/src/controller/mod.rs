@@ -44,8 +44,6 @@
 //! | module | job |
 //! | --- | --- |
 //! | `default` | the default controller's step: along the lane, through junctions |
-//! | `route` | `RouteFollow`: the stretch of the assigned route driven, the successor and lane it needs |
-//! | `lane_change` | the lane change a route (or `mobil`) needs: cubic, peak lateral acceleration 1 m/s² |
 //! | `command` | the [`Controller`] trait, [`Command`], [`Strategy`] |
 //! | `view` | [`ControllerView`]: the entity, its neighbours and gaps along the lanes |
 //! | `car_following` | `idm` and `acc` |
@@ -63,16 +61,15 @@ mod car_following;
 mod command;
 mod default;
 mod external;
-mod lane_change;
 mod load;
 mod mobil;
-mod route;
 pub(crate) mod stage;
 mod strategy;
 mod table;
 mod vehicle_dynamics;
 mod view;
 
+pub use crate::world::RouteFollow;
 pub(crate) use assign::{activate, assign, Origin, Taken};
 pub use car_following::{AccController, IdmController};
 pub use command::{Command, Controller, Lateral, Longitudinal, Strategy};
@@ -80,7 +77,6 @@ pub(crate) use default::place_on_track;
 pub use external::{ExternalController, ExternalInput, InputError};
 pub(crate) use load::set_up;
 pub use mobil::MobilController;
-pub use route::RouteFollow;
 pub(crate) use strategy::hand_over;
 pub use table::ActiveDomains;
 pub(crate) use table::ControllerTable;

@@ -19,14 +19,15 @@ use opendrive::{Direction, Pose, Real, RoadNetwork};
 
 use super::command::{Command, Lateral, Longitudinal};
 use super::default::{measure, move_entity};
-use super::lane_change::{begin as begin_route_lane_change, step as step_route_lane_change};
 use super::table::EntityControllers;
 use super::view::ControllerView;
 use crate::models::idm::ballistic_step;
 use crate::models::properties::MotionDomains;
 use crate::models::single_track::arc_step;
 use crate::runtime::lane_index::LaneIndex;
-use crate::runtime::{Entity, World};
+use crate::runtime::World;
+use crate::world::lane_change::{begin as begin_route_lane_change, step as step_route_lane_change};
+use crate::world::Entity;
 
 /// The commands of one entity's controllers, merged per domain.
 #[derive(Debug, Clone, Copy, Default)]

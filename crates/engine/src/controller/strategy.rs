@@ -8,7 +8,8 @@ use super::command::Strategy;
 use crate::actions::{target_lane, target_speed};
 use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::{EntityId, World};
+use crate::runtime::World;
+use crate::world::EntityId;
 
 /// The motion domains `action` would take (longitudinal, lateral), and its element name.
 fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {

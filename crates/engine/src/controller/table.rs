@@ -92,7 +92,7 @@ pub(crate) struct EntityControllers {
     /// In order of assignment.
     pub assigned: Vec<Assigned>,
     /// A lane change commanded by a controller ([`super::command::Lateral::ChangeLane`]).
-    pub lane_change: Option<super::lane_change::RouteLaneChange>,
+    pub lane_change: Option<crate::world::lane_change::RouteLaneChange>,
     /// A controller steered the entity off its lane track.
     pub steered: bool,
     /// The host's input for an `external` controller.

@@ -29,7 +29,7 @@ use crate::models::single_track::{
     Brake, DriverInputs, GearSelection, InputLimits, VehicleParameters, VehicleState,
     DEFAULT_STEERING_INERTIA, DEFAULT_STEERING_RATIO,
 };
-use crate::runtime::{ControllerOverrides, Entity};
+use crate::world::{ControllerOverrides, Entity};
 
 /// Gain of the driver's speed keeping (1/s): the acceleration asked for per m/s of error.
 pub const DRIVER_GAIN: Real = 1.0;

@@ -18,9 +18,9 @@ use opendrive::{Direction, LaneHandle, Real, RoadNetwork, TrafficRule};
 
 use super::external::ExternalInput;
 use crate::runtime::lane_index::{LaneIndex, Neighbour};
-use crate::runtime::lanes::lane_shift;
-use crate::runtime::{Entity, EntityId};
 use crate::signals::Signals;
+use crate::world::lanes::lane_shift;
+use crate::world::{Entity, EntityId};
 
 /// Base distance (m) a gap search looks ahead or behind; it adds [`HORIZON_TIME`] seconds of
 /// the entity's speed. At 33 m/s that is 483 m, more than the IDM's desired gap when closing

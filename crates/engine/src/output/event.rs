@@ -5,7 +5,6 @@
 use scenario::SourcePos;
 
 use super::SinkError;
-use crate::error::Error;
 use crate::storyboard::TransitionRecord;
 
 /// One record of the event log.
@@ -114,7 +113,7 @@ impl EventRecord {
         }
     }
 
-    pub(crate) fn error(time: f64, element: &str, error: &Error) -> Self {
+    pub(crate) fn error(time: f64, element: &str, error: &dyn std::fmt::Display) -> Self {
         EventRecord::Error {
             time,
             element: element.to_owned(),

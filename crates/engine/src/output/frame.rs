@@ -17,8 +17,8 @@ use scenario::{LightState, MiscObjectCategory, PedestrianCategory, Role, Vehicle
 
 use super::SinkError;
 use crate::domain::{BoundingBox, Color, Vector3};
-use crate::runtime::{ControllerOverrides, Entity, EntityId, EntityKind, Visibility};
 use crate::snapshot::{EntityState, ScenarioSource};
+use crate::world::{ControllerOverrides, Entity, EntityId, EntityKind, Visibility};
 
 /// The state of every entity at one simulation time.
 #[derive(Debug, Clone, Copy)]
@@ -32,7 +32,7 @@ pub struct Frame<'a> {
     /// Traffic signal controllers' phases and signal states (crate::signals).
     pub signals: &'a crate::signals::Signals,
     /// The environment in force (EnvironmentAction: time of day, weather, road condition).
-    pub environment: &'a crate::actions::EnvironmentState,
+    pub environment: &'a crate::world::EnvironmentState,
     /// The scenario and road files of the run (for source references).
     pub source: &'a ScenarioSource,
 }

@@ -24,7 +24,7 @@
 use opendrive::{Real, RoadNetwork, S_TOLERANCE};
 
 use super::lane_walk::{walk, WalkEnd};
-use crate::runtime::lanes::lane_at;
+use crate::world::lanes::lane_at;
 
 /// Where (road, lane, s) lies when s is outside the road: the end of the walk from the road's
 /// end by the excess. `None` when s is on the road (within [`S_TOLERANCE`]), the road or lane

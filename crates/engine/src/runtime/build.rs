@@ -13,7 +13,6 @@ use std::sync::Arc;
 use opendrive::RoadNetwork;
 use scenario::{Action, Actors, EntityObject, Scenario, Trigger};
 
-use super::entity::{Entity, EntityId, EntityKind};
 use super::world::World;
 use crate::actions::ActionTable;
 use crate::domain::{BoundingBox, Color, Position3d};
@@ -22,6 +21,7 @@ use crate::storyboard::{
     ActDesc, ActionDesc, ConditionDesc, ConditionEdge, ConditionGroupDesc, ConditionId, EventDesc,
     ManeuverDesc, ManeuverGroupDesc, Priority, StoryDesc, StoryboardDesc, TriggerDesc,
 };
+use crate::world::entity::{Entity, EntityId, EntityKind};
 
 /// What [`build`] produces.
 pub(crate) struct Built {

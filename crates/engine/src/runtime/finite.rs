@@ -10,8 +10,8 @@
 //! would be corrupt: OpenSCENARIO 1.3 §6.3 coordinates and §7.2.2 entity states are real
 //! numbers).
 
-use super::entity::Entity;
 use crate::error::{Error, ErrorKind};
+use crate::world::entity::Entity;
 
 /// The first state value of `e` that is not finite, by name.
 fn first_non_finite(e: &Entity) -> Option<(&'static str, f64)> {
@@ -99,7 +99,7 @@ pub(crate) fn check(entities: &[Entity], time: f64) -> Result<(), (String, Error
 mod tests {
     use super::*;
     use crate::domain::{BoundingBox, Vector3};
-    use crate::runtime::entity::{EntityId, EntityKind};
+    use crate::world::entity::{EntityId, EntityKind};
 
     fn car() -> Entity {
         let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 5.0, 2.0, 1.5).expect("box");

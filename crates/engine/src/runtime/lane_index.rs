@@ -44,8 +44,8 @@ use std::sync::Arc;
 
 use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork};
 
-use super::entity::{Entity, EntityId};
 use super::lane_slots::{LaneBorders, LaneSlots};
+use crate::world::entity::{Entity, EntityId};
 
 /// Overlap (m) of a box's t-range with a lane's borders below which the box is not in the lane
 /// (a box touching the lane marking is not in the next lane).
@@ -525,8 +525,8 @@ impl LaneIndex {
 mod tests {
     use super::*;
     use crate::domain::{BoundingBox, Vector3};
-    use crate::runtime::entity::EntityKind;
     use crate::runtime::world::World;
+    use crate::world::entity::EntityKind;
 
     const EPS: Real = 1e-9;
 

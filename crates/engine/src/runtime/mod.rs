@@ -1,49 +1,45 @@
 //! The scenario runtime (OpenSCENARIO 1.3 §8 "Scenario at runtime"): the world and its entity
-//! store, building from the scenario model and the fixed step. The actions, the controllers
+//! store, building from the scenario model and the fixed step. The entities' own state is the
+//! crate's module `world`. The actions, the controllers
 //! and spawned traffic it drives are the crate's top-level modules `actions`, `controller`
 //! and `traffic`.
 //!
 //! | module | job |
 //! | --- | --- |
 //! | `config` | step length, duration, cap |
-//! | `entity` | entity state (pose, road position, speed, …) and `EntityId` |
 //! | `world` | road network + entity store + values; `EntityQuery` / `ConditionContext` |
 //! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |
 //! | `lane_slots` | the lane index's dense lane numbers and lane borders kept per road |
-//! | `lanes` | lane look-up, curvature, lane arithmetic, following lanes through links |
 //! | `build` | scenario model → world, storyboard description, action and condition tables |
 //! | `conditions` | the storyboard's `ConditionSource` |
 //! | `trigger_view` | the step-start world that all triggers of a step see |
-//! | `shapes` | transition shapes and dimensions |
 //! | `trailer` | trailer connections and the one-axle trailer kinematics |
 //! | `external` | ExternalObjectReference entities placed at their OpenDRIVE objects |
 //! | `finite` | the step's guard: no non-finite entity state reaches a frame |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
 //! | `engine` | `Engine`: the built scenario and its API |
+//! | `read` | what the engine answers between steps, as plain values (`Engine::entities`, …) |
 //! | `step` | the fixed step, one private method per stage |
 
 pub(crate) mod build;
 mod conditions;
 mod config;
 mod engine;
-pub(crate) mod entity;
 mod external;
 mod finite;
 pub(crate) mod lane_index;
 mod lane_slots;
-pub(crate) mod lanes;
+mod read;
 pub(crate) mod selection;
-pub(crate) mod shapes;
 mod step;
 pub(crate) mod trailer;
 pub(crate) mod trigger_view;
 pub(crate) mod world;
 
-pub use crate::actions::ControllerOverrides;
+pub use crate::world::shapes::{shape_value, Span};
+pub use crate::world::{ControllerOverrides, Entity, EntityId, EntityKind, Visibility};
 pub use config::{EngineConfig, TrafficModel, DEFAULT_DT, DEFAULT_MAX_TIME, DEFAULT_SEED};
 pub use engine::{Engine, StageCounters, StopReason};
-pub use entity::{Entity, EntityId, EntityKind, Visibility};
-pub use shapes::{shape_value, Span};
 
 // For the controllers stage (engine module `controller`).
 pub(crate) use world::{place_on_lane, World};

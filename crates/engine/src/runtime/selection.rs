@@ -26,9 +26,9 @@ use std::collections::BTreeMap;
 
 use scenario::{Condition, ConditionKind, EntitySelection, Scenario, SelectionMember, SourcePos};
 
-use super::entity::EntityId;
 use super::world::World;
 use crate::storyboard::ActionId;
+use crate::world::entity::EntityId;
 
 mod restrictions;
 mod triggering;

@@ -30,10 +30,10 @@ use std::collections::BTreeMap;
 use opendrive::{normalize_angle, Pose, Real};
 use scenario::{EntityObject, Scenario, ScenarioObject, SourcePos, Trailer};
 
-use super::entity::{Entity, EntityId};
 use super::world::World;
 use crate::domain::{Acceleration6d, Vector3, Velocity6d};
 use crate::error::Error;
+use crate::world::entity::{Entity, EntityId};
 
 /// Hitch travel beyond the tow's own distance per step (m) that counts as a jump.
 const JUMP_SLACK: Real = 1.0;

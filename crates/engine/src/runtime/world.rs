@@ -9,12 +9,12 @@ use std::sync::Arc;
 use opendrive::{normalize_angle, Direction, Pose, Real, RoadNetwork, RoadPosition};
 use scenario::expr::Value;
 
-use super::entity::{Entity, EntityId, LaneTrack};
-use super::lanes::{curvature, lane_at};
 use crate::condition::ConditionContext;
 use crate::position::{EntityQuery, EntityView};
 use crate::routing::RoutingOptions;
 use crate::storyboard::StateView;
+use crate::world::entity::{Entity, EntityId, LaneTrack};
+use crate::world::lanes::{curvature, lane_at};
 
 /// A located point farther than this (m) from every lane is off the road: the entity then
 /// moves straight along its heading instead of following a lane.
@@ -48,7 +48,7 @@ pub struct World {
     /// Lights and animations set by AppearanceActions (actions/appearance.rs).
     pub(crate) appearance: crate::actions::Appearances,
     /// Environment set by EnvironmentActions (actions/environment.rs).
-    pub(crate) environment: crate::actions::EnvironmentState,
+    pub(crate) environment: crate::world::EnvironmentState,
     /// The user controllers of each entity (engine module `controller`).
     pub(crate) controllers: crate::controller::ControllerTable,
 }
@@ -75,7 +75,7 @@ impl World {
             traffic: crate::traffic::Traffic::default(),
             selections: super::selection::Selections::default(),
             appearance: crate::actions::Appearances::default(),
-            environment: crate::actions::EnvironmentState::default(),
+            environment: crate::world::EnvironmentState::default(),
             controllers: crate::controller::ControllerTable::default(),
         }
     }

@@ -84,7 +84,7 @@ impl Signals {
         &mut self,
         net: &opendrive::RoadNetwork,
         i: usize,
-        e: &mut crate::runtime::Entity,
+        e: &mut crate::world::Entity,
         dt: f64,
     ) {
         if !self.red_lights.enabled {
@@ -102,7 +102,7 @@ impl Signals {
     pub(crate) fn red_light_ahead(
         &self,
         net: &opendrive::RoadNetwork,
-        e: &crate::runtime::Entity,
+        e: &crate::world::Entity,
     ) -> Option<f64> {
         if !self.red_lights.enabled {
             return None;

@@ -31,7 +31,7 @@ use std::collections::BTreeMap;
 
 use opendrive::{Direction, Real, RoadNetwork};
 
-use crate::runtime::{Entity, EntityKind};
+use crate::world::{Entity, EntityKind};
 
 /// Distance between the vehicle's front and the signal's s when it stands (m).
 pub const STOP_GAP: Real = 1.0;

@@ -24,9 +24,9 @@ use super::random::{stream, weighted};
 use crate::controller::{assign, Origin};
 use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::entity::{EntityId, EntityKind};
 use crate::runtime::world::World;
 use crate::runtime::TrafficModel;
+use crate::world::entity::{EntityId, EntityKind};
 
 /// Every domain a controller is defined for.
 const ALL: ControllerDomains = ControllerDomains {

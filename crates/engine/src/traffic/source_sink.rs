@@ -16,8 +16,8 @@ use super::spawn::{enter, in_disc, lane_point, remove, template};
 use super::state::Running;
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
 use crate::error::Error;
-use crate::runtime::entity::EntityKind;
 use crate::runtime::world::World;
+use crate::world::entity::EntityKind;
 
 /// Slack on the vehicles owed by a source (a count).
 const DUE_TOLERANCE: Real = crate::tolerance::VALUE;

@@ -24,8 +24,8 @@ use scenario::{ObjectController, Performance, TrafficMix, VehicleCategory};
 use super::random::{stream, weighted};
 use crate::domain::{BoundingBox, Position3d};
 use crate::error::Error;
-use crate::runtime::entity::{Entity, EntityId, EntityKind};
 use crate::runtime::world::World;
+use crate::world::entity::{Entity, EntityId, EntityKind};
 
 /// Least distance (m) between a new vehicle's reference point and any placed entity's.
 pub(crate) const MIN_GAP: Real = 10.0;

@@ -20,8 +20,8 @@ use super::swarm::Swarm;
 use crate::error::{Error, ErrorKind};
 use crate::output::EventRecord;
 use crate::position::resolve;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
+use crate::world::entity::EntityId;
 
 /// The run's seed and the traffic actions at work.
 #[derive(Debug, Clone, Default)]

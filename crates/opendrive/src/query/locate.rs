@@ -8,14 +8,14 @@
 //! smallest |t|.
 
 use super::graph::{driving_direction, Direction};
-use super::lane_span::{road_extent, side_spans};
-use super::pieces_by_distance::PiecesByDistance;
-use super::plan_frame::plan_frame;
-use super::spatial::Piece;
 use crate::handles::RoadHandle;
 use crate::math::{angle_difference, normalize_angle, Real, LENGTH_EPSILON, SOLVER_TOLERANCE};
 use crate::model::Road;
 use crate::network::RoadNetwork;
+use crate::road::lane_span::{road_extent, side_spans};
+use crate::road::pieces_by_distance::PiecesByDistance;
+use crate::road::plan_frame::plan_frame;
+use crate::road::spatial::Piece;
 
 /// Newton iterations allowed per projection.
 const MAX_ITER: usize = 60;
@@ -297,7 +297,7 @@ fn better(a: &Candidate, b: &Candidate) -> bool {
 /// off the road; the nearest lane of the other side when t's side has none.
 pub(crate) fn lane_at(road: &Road, s: Real, t: Real) -> (i32, Real) {
     let section = road.lane_section_at(s);
-    let (off, _) = super::lane_span::lane_offset(road, s);
+    let (off, _) = crate::road::lane_span::lane_offset(road, s);
     let (left_n, right_n) = (section.left.len() as i32, section.right.len() as i32);
     let (sign, n) = match (t >= off, left_n > 0, right_n > 0) {
         (true, true, _) | (false, true, false) => (1, left_n),

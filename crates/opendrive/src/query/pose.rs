@@ -8,12 +8,12 @@
 //! h = road heading + atan(dt/ds) instead; the reference tests reproduce that convention in the
 //! comparison only. Pitch and roll of a lane pose are the road's.
 
-use super::frame::road_frame;
-use super::lane_span::{for_each_span, lane_span, LaneSpan};
 use crate::error::{Error, ErrorKind};
 use crate::math::{normalize_angle, Pose, Real, S_TOLERANCE};
 use crate::model::{Lane, LaneSection, Road};
 use crate::network::RoadNetwork;
+use crate::road::frame::road_frame;
+use crate::road::lane_span::{for_each_span, lane_span, LaneSpan};
 
 impl Road {
     /// `s` clamped onto [0, length], or an error if it lies further out or is not finite.

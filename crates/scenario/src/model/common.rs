@@ -67,7 +67,7 @@ impl ValueConstraintGroup {
 
 /// Whether `value` `rule` `bound` holds; numbers compare as doubles, other values as text.
 pub(crate) fn meets(value: &Value, rule: Rule, bound: &str) -> bool {
-    use crate::reader::attr::FromAttr;
+    use crate::attr::FromAttr;
     use std::cmp::Ordering;
     let ordering = match (value.as_f64(), f64::from_attr(bound)) {
         (Some(v), Some((b, _)))

@@ -3,7 +3,7 @@
 //! (`overwrite` → `override`, `cartesianDistance` → `euclidianDistance`). `ParameterType` is
 //! [`crate::expr::ValueType`].
 
-use crate::reader::attr::xsd_enum;
+use crate::attr::xsd_enum;
 
 xsd_enum! {
     /// Which rotation angle a condition compares (AngleCondition, RelativeAngleCondition). XSD

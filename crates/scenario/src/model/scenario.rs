@@ -3,12 +3,12 @@
 
 use std::path::PathBuf;
 
-use crate::error::Warning;
 use crate::model::{
     Entities, FileHeader, MonitorDeclaration, ParameterDeclaration, Position, Storyboard,
     VariableDeclaration,
 };
 use crate::source::SourcePos;
+use crate::warning::Warning;
 
 /// A loaded scenario: every parameter, expression and catalog reference resolved.
 #[derive(Debug, Clone, PartialEq)]

@@ -9,10 +9,11 @@
 
 use std::path::PathBuf;
 
-use crate::error::{Error, ErrorKind, Result, Warning};
+use crate::error::{Error, ErrorKind, Result};
 use crate::model::CatalogOrigin;
 use crate::reader::context::{Ctx, Node, Scope};
 use crate::reader::params::read_parameter_declarations;
+use crate::warning::Warning;
 
 /// One catalog file.
 pub(crate) struct CatalogFile<'a> {

@@ -11,12 +11,13 @@ use std::sync::Arc;
 
 use roxmltree::{Attribute, Document};
 
-use crate::error::{Error, ErrorKind, Result, Warning};
+use crate::attr::FromAttr;
+use crate::error::{Error, ErrorKind, Result};
 use crate::expr::Value;
 use crate::provider::FileProvider;
-use crate::reader::attr::FromAttr;
 use crate::reader::catalog::CatalogIndex;
 use crate::source::{LineIndex, SourcePos};
+use crate::warning::Warning;
 
 /// Deepest element nesting read (real scenarios nest about 25 deep).
 pub(crate) const MAX_NESTING: usize = 256;

@@ -2,7 +2,6 @@
 //! element it reads (`read_speed_action` reads `SpeedAction`).
 
 pub(crate) mod appearance;
-pub(crate) mod attr;
 pub(crate) mod catalog;
 pub(crate) mod compat;
 pub(crate) mod conditions;

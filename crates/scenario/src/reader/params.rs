@@ -9,10 +9,11 @@
 
 use std::collections::HashMap;
 
-use crate::error::{Error, ErrorKind, Result, Warning};
+use crate::error::{Error, ErrorKind, Result};
 use crate::expr::{Value, ValueType};
 use crate::model::{ParameterDeclaration, ValueConstraint, ValueConstraintGroup};
 use crate::reader::context::{Ctx, Node, Scope};
+use crate::warning::Warning;
 
 /// Longest chain of declarations of one block that refer to each other (a → b → c …).
 const MAX_CHAIN: usize = 256;

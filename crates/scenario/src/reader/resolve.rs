@@ -7,10 +7,11 @@ use std::cell::Cell;
 
 use roxmltree::Attribute;
 
-use crate::error::{Error, ErrorKind, Result, Warning};
+use crate::attr::FromAttr;
+use crate::error::{Error, ErrorKind, Result};
 use crate::expr::{self, Value};
-use crate::reader::attr::FromAttr;
 use crate::reader::context::{Ctx, Node};
+use crate::warning::Warning;
 
 impl<'a> Ctx<'a> {
     /// The value of parameter `name` in the innermost scope that declares it.

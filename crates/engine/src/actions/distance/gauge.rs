@@ -18,8 +18,8 @@ use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, SourcePo
 use crate::condition::{measured_distance, MeasureTarget};
 use crate::domain::BoundingBox;
 use crate::error::Error;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
+use crate::world::entity::EntityId;
 
 /// The axis a distance action keeps its distance along.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

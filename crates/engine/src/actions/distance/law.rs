@@ -20,7 +20,7 @@
 
 use scenario::DynamicConstraints;
 
-use crate::runtime::entity::Entity;
+use crate::world::entity::Entity;
 
 /// Spring constant per m/s² of the tension limit (1/m): k = 0.4 × limit (esmini's value).
 pub(crate) const STIFFNESS_PER_LIMIT: f64 = 0.4;

@@ -33,9 +33,9 @@ use crate::actions::speed::entity_ref;
 use crate::actions::Part;
 use crate::controller::place_on_track;
 use crate::error::Error;
-use crate::runtime::entity::EntityId;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
 
 /// Distance error (m) at which a non-continuous action has reached its distance.
 pub(crate) const REACHED: f64 = 0.1;

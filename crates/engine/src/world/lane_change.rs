@@ -15,9 +15,9 @@
 use opendrive::{Real, RoadNetwork};
 use scenario::DynamicsShape;
 
-use crate::runtime::entity::{Blend, LaneTrack};
-use crate::runtime::lanes::lane_at;
-use crate::runtime::shapes::shape_value;
+use crate::world::entity::{Blend, LaneTrack};
+use crate::world::lanes::lane_at;
+use crate::world::shapes::shape_value;
 
 /// Largest lateral acceleration of a route's lane change (m/s²): the limit UN Regulation
 /// No. 79 sets for the lane change manoeuvre of an automatically commanded steering function

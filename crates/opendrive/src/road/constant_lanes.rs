@@ -73,8 +73,8 @@ mod tests {
     use super::*;
     use crate::math::Cubic;
     use crate::model::{Lane, LaneSection};
-    use crate::query::frame::tests::straight_road;
-    use crate::query::lane_span::tests::lane;
+    use crate::road::frame::tests::straight_road;
+    use crate::road::lane_span::tests::lane;
 
     fn cubic(start: Real, a: Real, b: Real) -> Cubic {
         Cubic {

@@ -144,8 +144,8 @@ impl Iterator for PiecesByDistance<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::query::frame::tests::straight_road;
-    use crate::query::lane_span::tests::centre_only_section;
+    use crate::road::frame::tests::straight_road;
+    use crate::road::lane_span::tests::centre_only_section;
 
     /// The reference order: every piece of the road, stably sorted by box distance.
     fn sorted(index: &SpatialIndex, road: usize, x: Real, y: Real) -> Vec<(usize, Real)> {

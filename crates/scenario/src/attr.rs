@@ -109,7 +109,7 @@ macro_rules! xsd_enum {
             }
         }
 
-        impl $crate::reader::attr::FromAttr for $name {
+        impl $crate::attr::FromAttr for $name {
             fn from_attr(text: &str) -> Option<(Self, bool)> {
                 match text.trim() {
                     $($lit => Some((Self::$variant, false)),

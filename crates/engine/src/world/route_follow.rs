@@ -19,8 +19,8 @@
 use opendrive::{Direction, LaneHandle, Real, RoadNetwork, RouteSegment, S_TOLERANCE};
 
 use crate::routing::PlannedRoute;
-use crate::runtime::entity::LaneTrack;
-use crate::runtime::lanes::carry_lane;
+use crate::world::entity::LaneTrack;
+use crate::world::lanes::carry_lane;
 
 use super::lane_change::RouteLaneChange;
 

@@ -3,7 +3,7 @@
 //! position, speed, velocity, acceleration, odometer, the bounding box and the
 //! OpenSCENARIO 2.0 §8.7 physical-object view of it.
 //!
-//! Entities live in the [`World`](super::World)'s store, addressed by [`EntityId`].
+//! Entities live in the [`World`](crate::runtime::World)'s store, addressed by [`EntityId`].
 
 use std::collections::BTreeMap;
 
@@ -12,9 +12,14 @@ use scenario::{
     LightState, MiscObjectCategory, ObjectType, PedestrianCategory, Performance, VehicleCategory,
 };
 
-use crate::actions::ControllerOverrides;
 use crate::domain::{Acceleration6d, BoundingBox, Color, Route, Vector3, Velocity6d};
 use crate::storyboard::ActionId;
+
+/// The driver inputs overridden on one entity (OverrideControllerValueAction, OpenSCENARIO 1.3
+/// §7.7.2.5): per input, the last override an action gave (active, or released with
+/// `active = false`); `None` where no action has named the input.
+/// It has the shape of the action itself, which is kept as the state.
+pub type ControllerOverrides = scenario::OverrideControllerValueAction;
 
 /// Handle of an entity in the world's store: its index in declaration order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -225,7 +230,7 @@ pub struct Entity {
     pub route: Option<Route>,
     /// The planned route the default controller follows, with the entity's progress along it
     /// (AssignRouteAction, AcquirePositionAction; controller/route.rs).
-    pub(crate) route_follow: Option<crate::controller::RouteFollow>,
+    pub(crate) route_follow: Option<super::route_follow::RouteFollow>,
     /// The action controlling the longitudinal domain, if any (§7.5.1 control domains).
     pub(crate) longitudinal_action: Option<ActionId>,
     /// The action controlling the lateral domain, if any.

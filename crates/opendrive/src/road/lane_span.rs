@@ -250,7 +250,7 @@ pub(crate) mod tests {
             right: vec![lane(-1, vec![cubic(0.0, 3.5, 0.0, 0.0, -0.002)])],
         };
         let road =
-            crate::query::frame::tests::straight_road(100.0, road_offsets, vec![section.clone()]);
+            crate::road::frame::tests::straight_road(100.0, road_offsets, vec![section.clone()]);
         let tol = 1e-12;
         let c = lane_span(&road, &section, 0, 16.0).unwrap();
         assert!((c.inner - 0.66).abs() < tol && (c.outer - 0.66).abs() < tol);

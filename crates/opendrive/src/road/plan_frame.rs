@@ -156,9 +156,9 @@ mod tests {
     use super::*;
     use crate::geometry::{Arc, Geometry, GeometryKind, PlanView};
     use crate::math::Cubic;
-    use crate::query::frame::tests::straight_road;
-    use crate::query::frame::{road_frame, RoadFrame};
-    use crate::query::lane_span::tests::centre_only_section;
+    use crate::road::frame::tests::straight_road;
+    use crate::road::frame::{road_frame, RoadFrame};
+    use crate::road::lane_span::tests::centre_only_section;
 
     /// The full frame's horizontal part.
     fn full(f: &RoadFrame, t: Real) -> ([Real; 2], [[Real; 2]; 2]) {

@@ -1,0 +1,28 @@
+//! The world's data (OpenSCENARIO 1.3 §8 "Scenario at runtime", §7.2.2 "Entities"): each
+//! entity's state and the plain state the stages keep on it (the lane it tracks, the route it
+//! follows and the lane change that route needs, the driver inputs overridden), the
+//! environment in force, and the lane look-ups and transition shapes that state is computed
+//! with. It imports no behaviour module: actions, controllers, traffic, signals and the step
+//! read and change it.
+//!
+//! | module | job |
+//! | --- | --- |
+//! | `entity` | entity state (pose, road position, speed, …), `EntityId`, `EntityKind`, `ControllerOverrides` |
+//! | `environment` | the environment in force (§7.7.1 EnvironmentAction) and the scenario's clock |
+//! | `date_time` | `xsd:dateTime` to seconds since 1970 (TimeOfDay, TimeOfDayCondition) |
+//! | `lanes` | lane look-up, curvature, lane arithmetic, following lanes through links |
+//! | `shapes` | transition shapes and dimensions (§7.7.2.1 TransitionDynamics) |
+//! | `route_follow` | `RouteFollow`: the stretch of the assigned route driven, the successor and lane it needs |
+//! | `lane_change` | the lane change a route (or `mobil`) needs: cubic, peak lateral acceleration 1 m/s² |
+
+pub(crate) mod date_time;
+pub(crate) mod entity;
+mod environment;
+pub(crate) mod lane_change;
+pub(crate) mod lanes;
+pub(crate) mod route_follow;
+pub(crate) mod shapes;
+
+pub use entity::{ControllerOverrides, Entity, EntityId, EntityKind, Visibility};
+pub use environment::{Clock, EnvironmentState};
+pub use route_follow::RouteFollow;
