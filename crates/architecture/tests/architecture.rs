@@ -32,36 +32,25 @@ use architecture::{
 
 /// The module cycles allowed today: crate, the cycle's modules, the number of uses between
 /// them, its two-way pairs. Lower it as cycles go; never raise it.
-const KNOWN_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[(
-    "engine",
-    &[
-        "actions",
-        "condition",
-        "controller",
-        "error",
-        "models",
-        "output",
-        "position",
-        "routing",
-        "runtime",
-        "signals",
-        "snapshot",
-        "traffic",
-        "trajectory",
-        "world",
-    ],
-    57,
-    &[
-        "actions↔controller",
-        "actions↔runtime",
-        "controller↔output",
-        "controller↔runtime",
-        "output↔signals",
-        "position↔routing",
-        "position↔trajectory",
-        "runtime↔traffic",
-    ],
-)];
+const KNOWN_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
+    (
+        "engine",
+        &["actions", "controller", "runtime", "traffic"],
+        10,
+        &[
+            "actions↔controller",
+            "actions↔runtime",
+            "controller↔runtime",
+            "runtime↔traffic",
+        ],
+    ),
+    (
+        "engine",
+        &["position", "routing", "trajectory"],
+        4,
+        &["position↔routing", "position↔trajectory"],
+    ),
+];
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")

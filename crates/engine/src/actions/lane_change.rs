@@ -22,10 +22,11 @@ use scenario::{LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics};
 use super::speed::entity_ref;
 use super::Part;
 use crate::error::Error;
+use crate::position::lane_at;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::{Blend, EntityId};
-use crate::world::lanes::{lane_at, lane_shift};
+use crate::world::lanes::lane_shift;
 use crate::world::shapes::{progress, shape_value, span, Span};
 use scenario::DynamicsShape;
 

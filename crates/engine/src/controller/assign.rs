@@ -5,13 +5,14 @@
 
 use scenario::{ControllerDomains, SourcePos};
 
-use super::table::{instantiate, requested, ActiveDomains, Assigned};
+use super::properties::{classify, ControllerKind};
+use super::table::{instantiate, requested, Assigned};
 use super::view::ControllerView;
 use crate::error::Error;
-use crate::models::properties::{classify, ControllerKind};
 use crate::output::EventRecord;
 use crate::runtime::lane_index::LaneIndex;
 use crate::runtime::World;
+use crate::world::ActiveDomains;
 use crate::world::EntityId;
 
 /// Where a change comes from, for the log.

@@ -1,5 +1,5 @@
 //! Controllers when the engine is built: every `Controller` of the scenario is read
-//! (models::properties), so an unknown `model`, an unknown property or a bad value is a load
+//! (`properties`), so an unknown `model`, an unknown property or a bad value is a load
 //! error at its `Property` element, wherever the controller is written: an entity's
 //! ObjectController, an AssignControllerAction, a traffic action's ControllerDistribution or
 //! its entity templates' ObjectControllers. The entities' own ObjectControllers are assigned,
@@ -12,8 +12,8 @@ use scenario::{
 };
 
 use super::assign::{assign, Origin};
+use super::properties::classify;
 use crate::error::Error;
-use crate::models::properties::classify;
 use crate::runtime::World;
 use crate::world::EntityId;
 

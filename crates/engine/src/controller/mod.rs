@@ -1,6 +1,6 @@
 //! User controllers (OpenSCENARIO 1.3 §6.6 "Controllers", §7.2.2.1 "Motion control for
 //! entities", §7.7.2.5 "ControllerAction"): the built-in models an entity can be given with a
-//! `Controller` whose `<Property name="model">` names one (models::properties), the
+//! `Controller` whose `<Property name="model">` names one (`properties`), the
 //! [`Controller`] trait they implement, the world view they read and the stage that applies
 //! their commands.
 //!
@@ -52,6 +52,7 @@
 //! | `external` | `external`: driven by the host program ([`ExternalInput`]) |
 //! | `table` | controllers per entity, active domains |
 //! | `assign` | AssignControllerAction, ActivateControllerAction, ObjectController |
+//! | `properties` | a `Controller`'s `model` property and settings → the model to run, or the default controller |
 //! | `load` | every controller read when the engine is built; ObjectControllers assigned |
 //! | `strategy` | motion actions handed to the controller holding their domain |
 //! | `stage` | the controllers stage: commands, then moves |
@@ -63,12 +64,14 @@ mod default;
 mod external;
 mod load;
 mod mobil;
+pub mod properties;
 pub(crate) mod stage;
 mod strategy;
 mod table;
 mod vehicle_dynamics;
 mod view;
 
+pub use crate::world::ActiveDomains;
 pub use crate::world::RouteFollow;
 pub(crate) use assign::{activate, assign, Origin, Taken};
 pub use car_following::{AccController, IdmController};
@@ -78,7 +81,6 @@ pub use external::{ExternalController, ExternalInput, InputError};
 pub(crate) use load::set_up;
 pub use mobil::MobilController;
 pub(crate) use strategy::hand_over;
-pub use table::ActiveDomains;
 pub(crate) use table::ControllerTable;
 pub use vehicle_dynamics::VehicleDynamicsController;
 pub use view::{ControllerView, Gap, NeighbourLane, Side};

@@ -19,10 +19,10 @@ use opendrive::{Direction, Pose, Real, RoadNetwork};
 
 use super::command::{Command, Lateral, Longitudinal};
 use super::default::{measure, move_entity};
+use super::properties::MotionDomains;
 use super::table::EntityControllers;
 use super::view::ControllerView;
 use crate::models::idm::ballistic_step;
-use crate::models::properties::MotionDomains;
 use crate::models::single_track::arc_step;
 use crate::runtime::lane_index::LaneIndex;
 use crate::runtime::World;

@@ -9,7 +9,7 @@
 //!   loses it (the last activation wins). A controller is activated only in the domains it is
 //!   defined for (ActivateControllerAction: "a controller cannot be activated in a domain in
 //!   which it is not defined"): a built-in model's domains narrowed by `controllerType`
-//!   (models::properties); a request for another domain is noted in the event log and has no
+//!   (`properties`); a request for another domain is noted in the event log and has no
 //!   effect. Lighting and animation are recorded (no built-in model drives them).
 //! - **Deactivating** hands the domain back to the default controller, which keeps the speed
 //!   and the lane offset the entity has then (§7.2.2.1).
@@ -25,21 +25,9 @@ use scenario::ControllerDomains;
 
 use super::command::Controller;
 use super::external::ExternalInput;
-use crate::models::properties::{ControllerKind, ModelSettings, MotionDomains};
+use super::properties::{ControllerKind, ModelSettings, MotionDomains};
 use crate::runtime::lane_index::LaneIndex;
-
-/// Domains active on one controller (the four of §6.6.1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct ActiveDomains {
-    /// Longitudinal.
-    pub longitudinal: bool,
-    /// Lateral.
-    pub lateral: bool,
-    /// Lighting.
-    pub lighting: bool,
-    /// Animation.
-    pub animation: bool,
-}
+use crate::world::ActiveDomains;
 
 /// One controller assigned to an entity.
 #[derive(Debug)]

@@ -7,11 +7,9 @@
 //! | `idm` | Intelligent Driver Model (Treiber, Hennecke, Helbing 2000), ballistic integration |
 //! | `mobil` | MOBIL lane-change decision (Kesting, Treiber, Helbing 2007) |
 //! | `acc` | adaptive cruise control, constant time gap, ISO 15622 limits |
-//! | `properties` | a `Controller`'s `model` property and settings → the model to run, or the default controller |
 //! | `single_track` | pedals, gear and steering wheel → motion: kinematic single-track model |
 
 pub mod acc;
 pub mod idm;
 pub mod mobil;
-pub mod properties;
 pub mod single_track;

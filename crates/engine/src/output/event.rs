@@ -55,7 +55,7 @@ pub enum EventRecord {
         /// The controller's name or the signal's id.
         element: String,
         /// Controller or signal.
-        kind: crate::signals::SignalKind,
+        kind: SignalKind,
         /// The phase or state before; `None` for the first one.
         from: Option<String>,
         /// The phase or state now.
@@ -86,7 +86,7 @@ pub enum EventRecord {
         /// Its model (`idm`, …), `default`, or `none` for a controller that is not oscsim's.
         model: String,
         /// Its active domains after the change.
-        active: crate::controller::ActiveDomains,
+        active: crate::world::ActiveDomains,
         /// What happened ("assigned", "activation changed", "desired speed 25 m/s", …).
         note: String,
     },
@@ -159,5 +159,24 @@ impl EventSink for Vec<EventRecord> {
     fn event(&mut self, record: &EventRecord) -> Result<(), SinkError> {
         self.push(record.clone());
         Ok(())
+    }
+}
+
+/// What an [`EventRecord::Signal`] is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SignalKind {
+    /// A TrafficSignalController changed phase.
+    Controller,
+    /// A traffic signal changed state.
+    Signal,
+}
+
+impl SignalKind {
+    /// The `kind` of the event log.
+    pub fn name(self) -> &'static str {
+        match self {
+            SignalKind::Controller => "trafficSignalController",
+            SignalKind::Signal => "trafficSignal",
+        }
     }
 }

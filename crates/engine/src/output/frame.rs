@@ -30,7 +30,7 @@ pub struct Frame<'a> {
     /// The entities in declaration order.
     pub entities: &'a [Entity],
     /// Traffic signal controllers' phases and signal states (crate::signals).
-    pub signals: &'a crate::signals::Signals,
+    pub signals: &'a crate::world::SignalStates,
     /// The environment in force (EnvironmentAction: time of day, weather, road condition).
     pub environment: &'a crate::world::EnvironmentState,
     /// The scenario and road files of the run (for source references).

@@ -22,7 +22,7 @@ mod signals_csv;
 
 pub use csv::CsvWriter;
 pub use error::{SinkError, SinkErrorKind};
-pub use event::{EventRecord, EventSink};
+pub use event::{EventRecord, EventSink, SignalKind};
 pub use fixed::push_fixed;
 pub use frame::{EntityFrame, Frame, FrameSink};
 pub use jsonl::JsonlWriter;

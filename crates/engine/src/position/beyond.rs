@@ -23,8 +23,8 @@
 
 use opendrive::{Real, RoadNetwork, S_TOLERANCE};
 
+use super::lane_at::lane_at;
 use super::lane_walk::{walk, WalkEnd};
-use crate::world::lanes::lane_at;
 
 /// Where (road, lane, s) lies when s is outside the road: the end of the walk from the road's
 /// end by the excess. `None` when s is on the road (within [`S_TOLERANCE`]), the road or lane

@@ -12,6 +12,7 @@
 //! | `world` | WorldPosition, RelativeWorldPosition, RelativeObjectPosition |
 //! | `road` | RoadPosition, RelativeRoadPosition |
 //! | `lane` | LanePosition, RelativeLanePosition (ds and dsLane) |
+//! | `lane_at` | the lane that holds a lateral offset at s (the look-up behind every entity's lane) |
 //! | `lane_length` | arc length along a lane centre line; s after a distance along it |
 //! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
 //! | `beyond` | s past a road's ends: the same continuation for every road-based form |
@@ -24,6 +25,7 @@ mod beyond;
 mod check;
 mod error;
 mod lane;
+mod lane_at;
 mod lane_length;
 mod lane_walk;
 mod orientation;
@@ -43,6 +45,7 @@ pub use resolve::resolve;
 pub use resolved::ResolvedPosition;
 
 pub(crate) use lane::{add_lanes, driving_heading as lane_driving_heading};
+pub(crate) use lane_at::lane_at;
 pub(crate) use lane_length::lane_arc_length;
 pub use lane_length::SIMPSON_STEP;
 pub(crate) use lane_walk::walk as lane_walk;

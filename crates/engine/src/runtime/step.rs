@@ -274,7 +274,7 @@ fn frame_of<'a>(world: &'a World, source: &'a ScenarioSource, time: f64, step: u
         time,
         step,
         entities: &world.entities,
-        signals: &world.signals,
+        signals: world.signals.signal_states(),
         environment: &world.environment,
         source,
     }

@@ -10,11 +10,12 @@ use opendrive::{normalize_angle, Direction, Pose, Real, RoadNetwork, RoadPositio
 use scenario::expr::Value;
 
 use crate::condition::ConditionContext;
+use crate::position::lane_at;
 use crate::position::{EntityQuery, EntityView};
 use crate::routing::RoutingOptions;
 use crate::storyboard::StateView;
 use crate::world::entity::{Entity, EntityId, LaneTrack};
-use crate::world::lanes::{curvature, lane_at};
+use crate::world::lanes::curvature;
 
 /// A located point farther than this (m) from every lane is off the road: the entity then
 /// moves straight along its heading instead of following a lane.

@@ -19,12 +19,12 @@
 mod red_light;
 mod schedule;
 
-use std::collections::BTreeMap;
-
 use scenario::{SourcePos, TrafficSignalController};
 
 use crate::error::Error;
 use crate::output::EventRecord;
+pub use crate::output::SignalKind;
+pub use crate::world::SignalStates;
 use red_light::{shows_red, RedLights};
 use schedule::Schedule;
 
@@ -44,7 +44,7 @@ pub struct Signals {
     /// The phase each controller is in (index), once entered.
     current: Vec<Option<usize>>,
     /// Signal id → state.
-    states: BTreeMap<String, String>,
+    states: SignalStates,
     /// Run option `stop_at_red_lights` and the vehicles it holds.
     red_lights: RedLights,
 }
@@ -68,7 +68,7 @@ impl Signals {
                 .collect(),
             schedule,
             current: vec![None; controllers.len()],
-            states: BTreeMap::new(),
+            states: SignalStates::default(),
             red_lights: RedLights::default(),
         })
     }
@@ -91,7 +91,7 @@ impl Signals {
             return;
         }
         let states = &self.states;
-        let red = |id: &str| states.get(id).is_some_and(|s| shows_red(s));
+        let red = |id: &str| states.state(id).is_some_and(shows_red);
         self.red_lights.govern(net, red, i, e, dt);
     }
 
@@ -107,13 +107,13 @@ impl Signals {
         if !self.red_lights.enabled {
             return None;
         }
-        let red = |id: &str| self.states.get(id).is_some_and(|s| shows_red(s));
+        let red = |id: &str| self.states.state(id).is_some_and(shows_red);
         red_light::light_ahead(net, &red, e).filter(|&d| red_light::can_stop_within(e, d))
     }
 
     /// The current state of signal `id`, if any was set.
     pub fn state(&self, id: &str) -> Option<&str> {
-        self.states.get(id).map(String::as_str)
+        self.states.state(id)
     }
 
     /// The phase controller `name` is in, if it is declared and has phases.
@@ -125,7 +125,12 @@ impl Signals {
 
     /// Every signal id with a state, and the state, in id order.
     pub fn states(&self) -> impl Iterator<Item = (&str, &str)> {
-        self.states.iter().map(|(k, v)| (k.as_str(), v.as_str()))
+        self.states.states()
+    }
+
+    /// The state every signal shows, as frames carry it.
+    pub fn signal_states(&self) -> &SignalStates {
+        &self.states
     }
 
     /// Brings every controller to time `t`: a controller that enters a new phase sets the
@@ -160,7 +165,7 @@ impl Signals {
 
     /// TrafficSignalStateAction: signal `id` shows `state` from `t` on.
     pub(crate) fn set_state(&mut self, id: &str, state: &str, t: f64, log: &mut Vec<EventRecord>) {
-        let from = self.states.get(id).cloned();
+        let from = self.states.0.get(id).cloned();
         if from.as_deref() == Some(state) {
             return;
         }
@@ -171,7 +176,7 @@ impl Signals {
             from,
             to: state.to_owned(),
         });
-        self.states.insert(id.to_owned(), state.to_owned());
+        self.states.0.insert(id.to_owned(), state.to_owned());
     }
 
     /// TrafficSignalControllerAction: controller `name` enters `phase` at `t` and cycles on
@@ -208,25 +213,6 @@ impl Signals {
         // Connected controllers take their new place in the cycle at once.
         self.advance(t, log);
         Ok(())
-    }
-}
-
-/// What an [`EventRecord::Signal`] is about.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum SignalKind {
-    /// A TrafficSignalController changed phase.
-    Controller,
-    /// A traffic signal changed state.
-    Signal,
-}
-
-impl SignalKind {
-    /// The `kind` of the event log.
-    pub fn name(self) -> &'static str {
-        match self {
-            SignalKind::Controller => "trafficSignalController",
-            SignalKind::Signal => "trafficSignal",
-        }
     }
 }
 

@@ -125,7 +125,7 @@ pub(crate) struct LanesMemo {
     pub(crate) lane: i32,
     /// Its span.
     pub(crate) span: LaneSpan,
-    /// `lanes::lane_at` at the lateral position with these bits, once asked.
+    /// `position::lane_at` at the lateral position with these bits, once asked.
     pub(crate) at: Option<(u64, Option<(i32, Real)>)>,
 }
 

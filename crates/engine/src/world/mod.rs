@@ -10,19 +10,25 @@
 //! | `entity` | entity state (pose, road position, speed, …), `EntityId`, `EntityKind`, `ControllerOverrides` |
 //! | `environment` | the environment in force (§7.7.1 EnvironmentAction) and the scenario's clock |
 //! | `date_time` | `xsd:dateTime` to seconds since 1970 (TimeOfDay, TimeOfDayCondition) |
+//! | `domains` | `ActiveDomains`: the four domains of §6.6.1 a controller is active on |
+//! | `signal_states` | `SignalStates`: the state each traffic signal shows |
 //! | `lanes` | lane look-up, curvature, lane arithmetic, following lanes through links |
 //! | `shapes` | transition shapes and dimensions (§7.7.2.1 TransitionDynamics) |
 //! | `route_follow` | `RouteFollow`: the stretch of the assigned route driven, the successor and lane it needs |
 //! | `lane_change` | the lane change a route (or `mobil`) needs: cubic, peak lateral acceleration 1 m/s² |
 
 pub(crate) mod date_time;
+mod domains;
 pub(crate) mod entity;
 mod environment;
 pub(crate) mod lane_change;
 pub(crate) mod lanes;
 pub(crate) mod route_follow;
 pub(crate) mod shapes;
+mod signal_states;
 
+pub use domains::ActiveDomains;
 pub use entity::{ControllerOverrides, Entity, EntityId, EntityKind, Visibility};
 pub use environment::{Clock, EnvironmentState};
 pub use route_follow::RouteFollow;
+pub use signal_states::SignalStates;

@@ -342,7 +342,7 @@ fn the_frame_check_catches_a_nan() {
                 time: 0.5,
                 step: 10,
                 entities,
-                signals: &engine::signals::Signals::default(),
+                signals: &engine::signals::SignalStates::default(),
                 environment: &engine::EnvironmentState::default(),
                 source: &engine::ScenarioSource::default(),
             })

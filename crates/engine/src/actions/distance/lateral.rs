@@ -42,10 +42,10 @@ use crate::actions::lane_change::abandon;
 use crate::actions::speed::entity_ref;
 use crate::actions::Part;
 use crate::error::Error;
+use crate::position::lane_at;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::{Blend, EntityId};
-use crate::world::lanes::lane_at;
 
 /// Lateral error (m) at which a non-continuous action has reached its distance.
 pub(crate) const REACHED: f64 = 0.01;

@@ -23,10 +23,10 @@
 
 use scenario::{Controller, ControllerType, SourcePos};
 
-use super::acc::AccParameters;
-use super::idm::IdmParameters;
-use super::mobil::MobilParameters;
 use crate::error::Error;
+use crate::models::acc::AccParameters;
+use crate::models::idm::IdmParameters;
+use crate::models::mobil::MobilParameters;
 
 /// The motion domains a controller can hold (OpenSCENARIO 1.3 §6.6.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
