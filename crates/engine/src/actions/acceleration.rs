@@ -1,7 +1,7 @@
 //! oscsim's AccelerationAction (`scenario::LongitudinalAction::Acceleration`, an action with no
 //! XML form): the actor's longitudinal acceleration goes from a₀, its value at the start (the
 //! acceleration of the last step), to the target a₁ under a transition shape f
-//! ([`crate::runtime::shapes`]: over a time, at a peak jerk read as a rate, or at once), then
+//! ([`crate::world::shapes`]: over a time, at a peak jerk read as a rate, or at once), then
 //! holds. ASAM OpenSCENARIO DSL 2.1 §8.8.2 `assign_acceleration`, `change_acceleration` and
 //! `keep_acceleration` run through it: no OpenSCENARIO 1.x action holds an acceleration.
 //!

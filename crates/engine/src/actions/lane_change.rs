@@ -2,7 +2,7 @@
 //! the actor into a target lane (absolute lane id, or lanes to the left of a reference entity's
 //! lane as seen in its direction of travel) at `targetLaneOffset` from its centre, along a
 //! transition shape over time, distance or lateral rate. Progress p runs on the clock for
-//! `time` and `rate` (the rate read as the peak lateral speed, [`crate::runtime::shapes`]) and
+//! `time` and `rate` (the rate read as the peak lateral speed, [`crate::world::shapes`]) and
 //! on the distance travelled along the road for `distance` (not the longer path the entity
 //! drives: at 3.5 m over 50 m the two differ by 0.15 m). The model documentation of
 //! LaneChangeAction: "Time and distance are measured between the start position and the end

@@ -1,7 +1,7 @@
 //! AssignRouteAction and AcquirePositionAction (OpenSCENARIO 1.3 §7.7.2.6 "RoutingAction",
 //! XSD `AssignRouteAction`, `AcquirePositionAction`): give the actor a route, which the
 //! default controller follows through junctions, changing lanes where the route needs it
-//! (module `controller::route`). Planning is the `routing` module's, with the run's seed for
+//! (module `world::route_follow`). Planning is the `routing` module's, with the run's seed for
 //! routeStrategy `random`.
 //!
 //! RandomRouteAction plans a seeded random walk from the actor's lane (routing/random_route.rs)

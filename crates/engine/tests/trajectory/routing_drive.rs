@@ -128,7 +128,7 @@ fn turn_reached_from_another_lane_changes_lane_in_time() {
     // turn_lane.xodr: road 3 is reached only from lane −2 of road 1 (by connecting road 12);
     // Ego starts in lane −1 at s = 10, 10 m/s, with the route assigned in Init. The change
     // starts at once, cubic over D = v·√(6·Δ/a) = 10·√(6·3.5/1) = 10·√21 = 45.826 m
-    // (controller::lane_change: peak lateral acceleration 1 m/s²). Progress u = 10·T/D at time
+    // (world::lane_change: peak lateral acceleration 1 m/s²). Progress u = 10·T/D at time
     // T (the odometer), t(T) = −1.75 − 3.5·(3u² − 2u³). E.g. T = 2 s: u = 20/45.826 =
     // 0.436436, u² = 400/2100 = 0.190476, u³ = 0.083131, 3u² − 2u³ = 0.571429 − 0.166261 =
     // 0.405167, t = −1.75 − 1.418086 = −3.168086.
@@ -223,7 +223,7 @@ fn lateral_action_takes_the_lateral_domain_from_the_route() {
     // gives way, Ego moves back towards lane −1 (t rises) until the action ends. Then the route
     // still needs lane −2 and starts again from where the action left Ego, t_e at time T_e:
     // t(T) = t_e + (−5.25 − t_e)·f(u), u = 10·(T − T_e)/D, D = 10·√(6·|−5.25 − t_e|), f the
-    // cubic 3u² − 2u³ (controller::lane_change), until u = 1; then lane −2 and road 12.
+    // cubic 3u² − 2u³ (world::lane_change), until u = 1; then lane −2 and road 12.
     let (frames, events) = run("turn_lane_override.xosc", &[], 1);
     let ended = events
         .iter()
