@@ -73,7 +73,7 @@ pub enum JournalError {
         /// The I/O error.
         message: String,
     },
-    /// The file does not start with [`MAGIC`], or has no whole first record.
+    /// The file does not start with `MAGIC` (`OSCSIMJ1`), or has no whole first record.
     #[error("expected an oscsim batch journal ({magic} and a header record), found {found} at {path}", magic = String::from_utf8_lossy(MAGIC))]
     NotAJournal {
         /// The file.
@@ -81,7 +81,7 @@ pub enum JournalError {
         /// What it starts with.
         found: String,
     },
-    /// A record too long to be one ([`MAX_RECORD`]) was offered.
+    /// A record too long to be one (`MAX_RECORD`, 64 MiB) was offered.
     #[error("expected a journal record of at most {MAX_RECORD} bytes, found {len} bytes")]
     TooLong {
         /// Its length.
@@ -241,7 +241,7 @@ impl Journal {
     }
 
     /// Appends one record (one write of the whole frame); the background syncer syncs it
-    /// within [`SYNC_INTERVAL`].
+    /// within `SYNC_INTERVAL` (1 s).
     pub fn append(&self, payload: &str) -> Result<(), JournalError> {
         let bytes = frame(payload.as_bytes())?;
         // A worker that panicked while holding the lock wrote a whole record or none (one

@@ -69,7 +69,7 @@ pub struct EntityState {
 
 /// Where the scenario came from, for outputs that name their sources (an OSI
 /// `source_reference` and `map_reference`, a trace's metadata). Carried on every
-/// [`Frame`](crate::Frame) and given by [`Engine::source`].
+/// [`Frame`](crate::Frame) and given by [`Engine::source`](crate::Engine::source).
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct ScenarioSource {
     /// The scenario file as it was opened (for a ParameterValueDistribution, the distribution

@@ -100,7 +100,7 @@ pub fn moving_object(
 
 /// Writes the `MovingObject` of `info` in state `state`, on lanes `lanes`, over `object`
 /// (e.g. last frame's message of the same entity): the same message [`moving_object`] gives,
-/// reusing `object`'s strings and lists ([`crate::reuse`]). On error `object` is unchanged.
+/// reusing `object`'s strings and lists (module `reuse`). On error `object` is unchanged.
 pub fn fill_moving_object(
     object: &mut MovingObject,
     ids: &mut IdAllocator,

@@ -9,7 +9,7 @@
 //! carries the interface version (3.8.0) in every frame.
 //!
 //! The builder keeps one `GroundTruth` for the whole run and writes each frame over the last
-//! ([`crate::reuse`]): the k-th object added in a frame overwrites the k-th object of the
+//! (module `reuse`): the k-th object added in a frame overwrites the k-th object of the
 //! last one, lists are cut back or extended only where the frame has fewer or more objects,
 //! and the map strings are set once. A frame is byte for byte the message a fresh build
 //! would give; a run whose entity set does not change allocates nothing per frame.

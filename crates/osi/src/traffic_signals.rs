@@ -27,7 +27,7 @@
 //!   they are globally unique and the same in every frame. They are handed out after the
 //!   first frame's entities, so a trace keeps its entity ids when signals are added, and kept
 //!   beside each signal; each frame writes its lights and signs over the last frame's
-//!   ([`crate::reuse`]), so the signals allocate nothing per frame.
+//!   (module `reuse`), so the signals allocate nothing per frame.
 //! - `classification.assigned_lane_id`: the OSI ids of the lanes the signal is for, in the
 //!   lane section at its s ([`Road::signal_lanes`], OpenDRIVE 1.8 §14.2): the lanes of its
 //!   `<validity>` ranges, else the drivable lanes of the direction its `orientation` names

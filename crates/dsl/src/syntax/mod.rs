@@ -115,7 +115,7 @@
 //!
 //! # Formatting
 //!
-//! [`format`] prints a file in canonical layout from its tree (see the `fmt` module doc for the
+//! [`format()`] prints a file in canonical layout from its tree (see the `fmt` module doc for the
 //! rules); it is idempotent and keeps the tree: `parse(format(s))` dumps the same as `parse(s)`
 //! ([`debug_dump`] leaves out trivia and layout).
 //!

@@ -154,7 +154,7 @@ impl<'a> ControllerView<'a> {
         self.network
     }
 
-    /// How far gap searches look (m): [`HORIZON_BASE`] + [`HORIZON_TIME`] × speed.
+    /// How far gap searches look (m): `HORIZON_BASE` (150 m) + `HORIZON_TIME` (10 s) × speed.
     pub fn horizon(&self) -> Real {
         HORIZON_BASE + HORIZON_TIME * self.entity.speed.abs()
     }

@@ -9,7 +9,7 @@
 //! (with a text or between two strings), and `n == trunc(x)` (a `float` converted to a whole
 //! number, `truncate.rs`).
 //!
-//! 1. **Interval propagation** ([`propagate`]) of the hard constraints to a fixpoint: each
+//! 1. **Interval propagation** (`propagate`) of the hard constraints to a fixpoint: each
 //!    numeric variable has an interval (open or closed ends; whole numbers for `int`, `uint`
 //!    and list sizes), each enumeration a member set. Every bound keeps the set of constraints
 //!    it was derived from, so when a domain empties the error names the conflicting
