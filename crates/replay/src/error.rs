@@ -35,8 +35,8 @@ pub enum ErrorKind {
     Road(opendrive::Error),
     /// The scenario did not load.
     Scenario(scenario::Error),
-    /// The scenario did not run.
-    Run(String),
+    /// The scenario did not build or run (the engine's error, its place included).
+    Run(engine::Error),
     /// A chart could not be drawn or encoded.
     Plot(String),
 }
@@ -143,6 +143,7 @@ impl std::error::Error for Error {
             ErrorKind::Io { source, .. } => Some(source),
             ErrorKind::Road(e) => Some(e),
             ErrorKind::Scenario(e) => Some(e),
+            ErrorKind::Run(e) => Some(e),
             _ => None,
         }
     }
@@ -151,6 +152,12 @@ impl std::error::Error for Error {
 impl From<opendrive::Error> for Error {
     fn from(e: opendrive::Error) -> Self {
         Error::new(ErrorKind::Road(e))
+    }
+}
+
+impl From<engine::Error> for Error {
+    fn from(e: engine::Error) -> Self {
+        Error::new(ErrorKind::Run(e))
     }
 }
 

@@ -123,13 +123,10 @@ impl Run {
     ) -> Result<Run> {
         let scenario = Scenario::load_with_parameters(scenario_path, params)?;
         let network = engine::load::road_network(&scenario)?;
-        let mut engine = Engine::new(&scenario, network, config)
-            .map_err(|e| Error::new(ErrorKind::Run(e.to_string())))?;
+        let mut engine = Engine::new(&scenario, network, config)?;
         let mut recorder = Recorder::new();
         let mut log = EventRecorder::new();
-        engine
-            .run(&mut recorder, &mut log)
-            .map_err(|e| Error::new(ErrorKind::Run(e.to_string())))?;
+        engine.run(&mut recorder, &mut log)?;
         let (csv, entities) = recorder.into_parts();
         Run::from_memory(
             &scenario,

@@ -191,3 +191,41 @@ fn trailers_are_linked_in_the_manifest() {
         );
     }
 }
+
+/// Issue 33: a scenario that does not build reaches the caller as the engine's own error
+/// (`ErrorKind::Run(engine::Error)`, with `source()`), not as text: bad_model.xosc names the
+/// controller model "idm2", an error at its `<Property name="model"` on line 20 (the engine's
+/// test `bad_controller_properties_are_load_errors_at_the_property` has the message).
+#[test]
+fn a_scenario_that_does_not_build_keeps_the_engines_error() {
+    let file = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../engine/tests/files/controller/bad_model.xosc"
+    ));
+    let err = match Run::simulate(&file, &[], EngineConfig::default()) {
+        Ok(_) => panic!("bad_model.xosc runs"),
+        Err(e) => e,
+    };
+    let replay::ErrorKind::Run(inner) = err.kind() else {
+        panic!("expected ErrorKind::Run, found {:?}", err.kind());
+    };
+    let line = std::fs::read_to_string(&file)
+        .expect("fixture")
+        .lines()
+        .nth(19)
+        .expect("line 20")
+        .to_owned();
+    let col = line
+        .find(r#"<Property name="model""#)
+        .expect("the Property")
+        + 1;
+    let pos = inner.pos().expect("a load error has its place");
+    // Columns count characters; the line is ASCII up to the element.
+    assert_eq!((pos.line, pos.col as usize), (20, col));
+    assert_eq!(
+        err.to_string(),
+        format!("run: {inner}"),
+        "Display is the engine's message after 'run: '"
+    );
+    assert!(std::error::Error::source(&err).is_some());
+}
