@@ -1,8 +1,8 @@
 //! The world's data (OpenSCENARIO 1.3 §8 "Scenario at runtime", §7.2.2 "Entities"): each
 //! entity's state and the plain state the stages keep on it (the lane it tracks, the route it
-//! follows and the lane change that route needs, the driver inputs overridden), the
-//! environment in force, and the lane look-ups and transition shapes that state is computed
-//! with. It imports no behaviour module: actions, controllers, traffic, signals and the step
+//! follows and the lane change that route needs, the driver inputs overridden, the domains
+//! its controllers are active on), the environment in force, the state each traffic signal
+//! shows, and the lane arithmetic and transition shapes that state is computed with. It imports no behaviour module: actions, controllers, traffic, signals and the step
 //! read and change it.
 //!
 //! | module | job |
@@ -12,8 +12,8 @@
 //! | `date_time` | `xsd:dateTime` to seconds since 1970 (TimeOfDay, TimeOfDayCondition) |
 //! | `domains` | `ActiveDomains`: the four domains of §6.6.1 a controller is active on |
 //! | `signal_states` | `SignalStates`: the state each traffic signal shows |
-//! | `lanes` | lane look-up, curvature, lane arithmetic, following lanes through links |
-//! | `shapes` | transition shapes and dimensions (§7.7.2.1 TransitionDynamics) |
+//! | `lanes` | reference-line curvature, lane arithmetic, following lanes through links (the lane at an offset is `position::lane_at`) |
+//! | `shapes` | transition shapes and dimensions (§7.7.2 TransitionDynamics) |
 //! | `route_follow` | `RouteFollow`: the stretch of the assigned route driven, the successor and lane it needs |
 //! | `lane_change` | the lane change a route (or `mobil`) needs: cubic, peak lateral acceleration 1 m/s² |
 
