@@ -90,6 +90,11 @@ cases! {
     keyword_parenthesis, err_keyword_parenthesis_not_event,
     // Class 5: `extend ::name:`.
     extend_global_prefix, err_extend_global_prefix_unknown,
+    // Class 6: forms the standard forbids (the grammar's share is in tests/syntax.rs).
+    err_event_twice, err_method_parameter_twice, err_range_of_bool, method_override_only,
+    err_method_override, err_behavior_inherits_plain_scenario,
+    err_conditional_inherits_not_bool_enum, err_enum_member_actor_name, enum_member_references,
+    err_enum_value_cycle,
 }
 
 // Issue 28: invocations of scenarios with a `do` (§7.3.9).

@@ -88,6 +88,10 @@ cases! {
     // Issue 30: a keyword before a parenthesis (class 3), `extend ::name` (class 5).
     keyword_before_parenthesis,
     extend_global_prefix,
+    // Issue 30, class 6: forbidden forms the grammar rules out.
+    err_empty_list,
+    err_coverage_without_arguments,
+    err_enum_value_not_literal,
     // One file with every construct of the grammar.
     all_constructs,
     // Small cases, one construct or one error each (index: tests/files/syntax/README.md).

@@ -32,6 +32,7 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
             Item::Enum {
                 name,
                 members,
+                references,
                 span,
             } => {
                 let id = EnumId(m.enums.len() as u32);
@@ -50,6 +51,7 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                 m.enums.push(EnumDef {
                     name: name.text.clone(),
                     members: list,
+                    references: references.clone(),
                     span: *span,
                 });
                 m.declare_type(&name.text, TypeName::Enum(id), *span, diags);
@@ -222,7 +224,12 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
             Item::Extend {
                 target, members, ..
             } => {
-                let Some(id) = compound_named(&m, target, None, diags) else {
+                // §7.3.9: structs, actors, scenarios and actions can be extended.
+                let found = match m.types.get(&target.text()) {
+                    Some((TypeName::Compound(c), _)) => Some(*c),
+                    _ => m.behaviors.get(&target.text()).copied(),
+                };
+                let Some(id) = found.or_else(|| compound_named(&m, target, None, diags)) else {
                     continue;
                 };
                 m.compounds[id.0 as usize]
@@ -230,9 +237,17 @@ pub fn collect(files: &[SourceFile], diags: &mut Vec<Diagnostic>) -> Model {
                     .extend(members.iter().cloned());
                 add_members(&mut m, id, members, diags);
             }
-            Item::EnumExtension { name, members, .. } => match m.types.get(&name.text()) {
+            Item::EnumExtension {
+                name,
+                members,
+                references,
+                ..
+            } => match m.types.get(&name.text()) {
                 Some((TypeName::Enum(e), _)) => {
                     let e = *e;
+                    m.enums[e.0 as usize]
+                        .references
+                        .extend(references.iter().cloned());
                     for mem in members {
                         let def = &mut m.enums[e.0 as usize];
                         if def.members.contains(&mem.text) {
@@ -325,6 +340,11 @@ fn add_members(m: &mut Model, id: CompoundId, members: &[Member], diags: &mut Ve
                     span: md.span,
                 };
                 if m.compound(id).methods.iter().any(|x| x.name == def.name) {
+                    if md.only {
+                        // An override through an extension: its signature is checked in
+                        // declarations.rs.
+                        continue;
+                    }
                     diags.push(Diagnostic::new(
                         DiagnosticKind::Duplicate,
                         md.name.span,
@@ -397,7 +417,22 @@ pub fn resolve_type(m: &Model, t: &TypeRef, diags: &mut Vec<Diagnostic>) -> Ty {
             }
             Ty::List(Box::new(t))
         }
-        TypeRef::Range(inner, _) => Ty::Range(Box::new(resolve_type(m, inner, diags))),
+        TypeRef::Range(inner, span) => {
+            let t = resolve_type(m, inner, diags);
+            // §7.4.1.3: "A range expression can be given for any numerical type".
+            if !t.is_numeric() && t != Ty::Error {
+                diags.push(Diagnostic::new(
+                    DiagnosticKind::Type,
+                    *span,
+                    format!(
+                        "a range is of a numeric type (int, uint, float or a physical type, §7.4.1.3), found range of {}",
+                        m.type_name(&t)
+                    ),
+                ));
+                return Ty::Error;
+            }
+            Ty::Range(Box::new(t))
+        }
     }
 }
 

@@ -228,6 +228,8 @@ pub struct MethodDecl {
     pub ret: Option<TypeRef>,
     /// Body.
     pub body: MethodBody,
+    /// `is only …`: overrides a method of a parent or an earlier declaration (§7.3.7.2).
+    pub only: bool,
     /// The whole declaration.
     pub span: Span,
 }
@@ -471,8 +473,10 @@ pub enum Item {
     Enum {
         /// Its name.
         name: Name,
-        /// Members (with optional values).
+        /// Members.
         members: Vec<Name>,
+        /// Members whose value names another member (`a = b`, `a = colors!b`).
+        references: Vec<(Name, Expr)>,
         /// Where.
         span: Span,
     },
@@ -482,6 +486,8 @@ pub enum Item {
         name: QualName,
         /// New members.
         members: Vec<Name>,
+        /// Members whose value names another member.
+        references: Vec<(Name, Expr)>,
         /// Where.
         span: Span,
     },

@@ -42,6 +42,17 @@ impl Cx {
         }
     }
 
+    /// The members of an enum declaration or extension whose value names another member.
+    fn enum_references(&self, members: impl Iterator<Item = ast::EnumMember>) -> Vec<(Name, Expr)> {
+        members
+            .filter_map(|m| {
+                let value = m.value()?;
+                matches!(value, ast::Expr::Name(_) | ast::Expr::EnumValue(_))
+                    .then(|| Some((self.name(&m.name()?), self.expr(&value))))?
+            })
+            .collect()
+    }
+
     fn qual(&self, parts: Vec<Name>, span: Span) -> QualName {
         QualName { parts, span }
     }
@@ -143,6 +154,7 @@ impl Cx {
                     .members()
                     .filter_map(|m| m.name().map(|n| self.name(&n)))
                     .collect(),
+                references: self.enum_references(e.members()),
                 span,
             },
             ast::Item::EnumExtension(e) => Item::EnumExtension {
@@ -151,6 +163,7 @@ impl Cx {
                     .members()
                     .filter_map(|m| m.name().map(|n| self.name(&n)))
                     .collect(),
+                references: self.enum_references(e.members()),
                 span,
             },
             ast::Item::Struct(d) => self.compound(
@@ -413,6 +426,7 @@ impl Cx {
             params,
             ret: md.return_type().map(|t| self.ty(&t)),
             body,
+            only: md.body().is_some_and(|b| b.is_only()),
             span,
         })
     }

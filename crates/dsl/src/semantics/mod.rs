@@ -9,6 +9,7 @@
 //! | `hir` | the checker's view of a file (declarations, members, behaviors, expressions) |
 //! | `namespace` | namespace resolution: top-level names to their qualified form (§7.7.3–§7.7.4) |
 //! | `collect` | declarations of all files into a `Model`: names, inheritance, fields, methods (§7.3) |
+//! | `declarations` | rules on declarations: events and parameters once, method overrides (§7.3.7.2), behavior and conditional inheritance (§7.3.8), enum members against type names (§7.7.4.2) |
 //! | `model` | the declaration tables and lookups (fields and methods through inheritance) |
 //! | `types` | static types; physical types identified by dimension (§7.3.1) |
 //! | `check` | type checking of members, constraints, behaviors, modifier applicability (§7.3, §7.4, §8.9); invocations of behaviors with a `do` and recursive ones (§7.3.9) |
@@ -19,6 +20,7 @@
 
 pub mod check;
 pub mod collect;
+mod declarations;
 pub mod diagnostic;
 pub mod hir;
 pub mod instance;

@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 
 use super::diagnostic::{Diagnostic, DiagnosticKind};
-use super::hir::{CompoundKind, Expr, Keep, Member, Span};
+use super::hir::{CompoundKind, Expr, Keep, Member, Name, Span};
 use super::types::{CompoundId, EnumId, Ty};
 use super::units::{Dimension, UnitTable};
 
@@ -16,6 +16,9 @@ pub struct EnumDef {
     pub name: String,
     /// Members in order.
     pub members: Vec<String>,
+    /// Members whose value names another member (`a = b`, `a = colors!b`), from the declaration
+    /// and its extensions.
+    pub references: Vec<(Name, Expr)>,
     /// Its declaration.
     pub span: Span,
 }

@@ -439,8 +439,13 @@ impl Rewriter<'_> {
                 self.qual(of, Class::Type);
                 si.iter_mut().for_each(|a| self.expr(&mut a.value));
             }
-            Item::Enum { .. } => {}
-            Item::EnumExtension { name, .. } => self.qual(name, Class::Type),
+            Item::Enum { references, .. } => self.enum_references(references),
+            Item::EnumExtension {
+                name, references, ..
+            } => {
+                self.qual(name, Class::Type);
+                self.enum_references(references);
+            }
             Item::Compound(c) => {
                 if c.name.parts.len() > 1 {
                     self.qual(&mut c.name, Class::Type);
@@ -573,6 +578,16 @@ impl Rewriter<'_> {
             }
             Behavior::Wait(e, _) | Behavior::Call(e, _) => self.expr(e),
             Behavior::Emit(_, args, _) => self.args(args),
+        }
+    }
+
+    /// `a = colors!b` names the enum `colors` like a type; a bare `a = b` is a member of the
+    /// enum being declared, not a global.
+    fn enum_references(&mut self, references: &mut [(Name, Expr)]) {
+        for (_, e) in references {
+            if let ExprKind::EnumValue(ty, _) = &mut e.kind {
+                self.qual(ty, Class::Type);
+            }
         }
     }
 

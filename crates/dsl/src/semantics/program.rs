@@ -15,6 +15,7 @@ use crate::syntax::parse;
 
 use super::check::{check_model, Invocation, Template};
 use super::collect::collect;
+use super::declarations;
 use super::diagnostic::{Diagnostic, DiagnosticKind as K};
 use super::hir::{FileId, ImportTarget, Item, SourceFile, Span};
 use super::lower_ast::lower_file;
@@ -282,6 +283,7 @@ pub fn check_source_with(
     resolve_namespaces(&mut hir, &namespaces, &mut diags);
     let mut model = collect(&hir, &mut diags);
     model.library_files = library;
+    declarations::check(&model, &mut diags);
     let checked = check_model(&model);
     diags.extend(checked.diags);
     // Report in source order, whichever pass found them.

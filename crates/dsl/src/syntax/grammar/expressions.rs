@@ -293,6 +293,12 @@ fn list_or_range(p: &mut Parser) -> Option<SyntaxKind> {
     let cp = p.checkpoint();
     p.bump();
     let kind = if p.at(R_BRACK) {
+        // list-constructor ::= '[' expression (',' expression)* ']' (§7.4.2.7.4).
+        let range = p.current_range();
+        p.error_at(
+            range,
+            "expected an element in the list, found `]` (a list constructor has at least one element, §7.4.2.7.4)",
+        );
         LIST_EXPR
     } else {
         expr(p);

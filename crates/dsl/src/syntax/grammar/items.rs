@@ -188,7 +188,7 @@ fn enum_member_list(p: &mut Parser) {
             p.start(ENUM_MEMBER);
             name(p);
             if p.eat(EQ) {
-                expr(p);
+                enum_member_value(p);
             }
             p.finish_node();
             if !p.eat(COMMA) {
@@ -198,6 +198,39 @@ fn enum_member_list(p: &mut Parser) {
         p.expect(R_BRACK);
     }
     p.finish_node();
+}
+
+/// `enum-member-value ::= uint-literal | hex-uint-literal | enum-value-reference`: a literal
+/// or another member (`b`, `colors!b`); whether a reference leads to a value is checked in
+/// `semantics::declarations`. A computed value (`1 + 1`), a signed, float or physical literal
+/// is reported here.
+fn enum_member_value(p: &mut Parser) {
+    let range = p.current_range();
+    let found = match (p.current(), p.nth(1)) {
+        (MINUS | PLUS, _) => "a signed number".to_string(),
+        (INT_NUMBER | FLOAT_NUMBER, UNIT) => "a physical literal".to_string(),
+        _ => p.found(),
+    };
+    let integer = p.at(INT_NUMBER) && p.nth(1) != UNIT;
+    let kind = expr(p);
+    let allowed = match kind {
+        Some(LITERAL) => integer,
+        Some(NAME_EXPR | ENUM_VALUE_EXPR) => true,
+        None => return, // reported by `expr`
+        Some(_) => false,
+    };
+    if !allowed {
+        let what = if kind == Some(LITERAL) {
+            found
+        } else {
+            "an expression".to_string()
+        };
+        let end = p.current_range().start.max(range.end);
+        p.error_at(
+            range.start..end,
+            format!("expected a uint literal or another member as the enum member's value, found {what} (enum-member-value ::= uint-literal | hex-uint-literal | enum-value-reference)"),
+        );
+    }
 }
 
 /// `struct`, `actor`, `scenario` and `action` declarations: keyword, name, optional

@@ -186,12 +186,22 @@ pub(super) fn method(p: &mut Parser) {
 /// `coverage-declaration ::= ('cover' | 'record') '(' argument-list ')' NEWLINE`.
 pub(super) fn coverage(p: &mut Parser) {
     p.start(COVERAGE_DECL);
+    let keyword = p.nth_text(0);
     p.bump_as(if p.at_word("cover") {
         COVER_KW
     } else {
         RECORD_KW
     });
-    arg_list(p);
+    if p.at(L_PAREN) && p.nth(1) == R_PAREN {
+        let start = p.current_range().start;
+        let message = format!("expected an argument in `{keyword}(…)`, found `)` (coverage-declaration ::= ('cover' | 'record') '(' argument-list ')': at least the name)");
+        p.bump();
+        let end = p.current_range().end;
+        p.error_at(start..end, message);
+        p.bump();
+    } else {
+        arg_list(p);
+    }
     p.finish_node();
     p.end_of_line();
 }
