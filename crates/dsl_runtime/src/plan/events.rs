@@ -72,7 +72,11 @@ impl Planner<'_> {
                     "expected an event of the scenario that an emit raises or that has a condition, found none",
                 )),
             },
-            Cond::Measured { condition, actors } => {
+            Cond::Measured {
+                condition,
+                actors,
+                sampled,
+            } => {
                 for (path, site) in actors {
                     if !path.as_ref().is_some_and(|p| self.index.contains_key(p)) {
                         return Err(match path {
@@ -84,9 +88,17 @@ impl Planner<'_> {
                         });
                     }
                 }
-                Ok(vec![ConditionGroup {
-                    conditions: vec![(**condition).clone()],
-                }])
+                let mut conditions = vec![(**condition).clone()];
+                // A sampled value is read at each multiple of its period from the run's start.
+                if let Some(p) = sampled {
+                    conditions.push(every_from_start(
+                        *p,
+                        0.0,
+                        self.settings.dt,
+                        condition.pos.clone(),
+                    ));
+                }
+                Ok(vec![ConditionGroup { conditions }])
             }
             Cond::Timed(tm, site) => self.timed(*tm, site, ectx),
         }

@@ -281,7 +281,7 @@ impl Planner<'_> {
                     }
                     (ModKind::Position, At::End) => {
                         let t = need_t("position(…, at: end)")?;
-                        let (x, sign, d) = self.position_target(m, t)?;
+                        let (x, sign, d) = self.position_target(m, target, t)?;
                         let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
                         let v0 = self.track(target).at(t).1;
                         let s_a = self.s_at(target, t);

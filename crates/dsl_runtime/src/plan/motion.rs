@@ -175,6 +175,7 @@ impl Planner<'_> {
     pub(super) fn position_target(
         &self,
         m: &Modifier,
+        target: &str,
         t: f64,
     ) -> Result<(Option<String>, f64, f64), Error> {
         let (x, sign) = match (m.arg("ahead_of"), m.arg("behind")) {
@@ -186,6 +187,18 @@ impl Planner<'_> {
             match (m.arg("distance"), m.arg("time"), &x) {
                 (Some(e), _, _) => e.number()?,
                 (None, Some(e), Some(x)) => e.number()? * self.track(x).at(t).1,
+                (None, None, Some(x)) => {
+                    let bb = |n: &str| self.entities[self.index[n]].data.bounding_box;
+                    let (a, r) = (bb(target), bb(x));
+                    let front = |b: scenario::BoundingBox| b.center[0] + b.length / 2.0;
+                    let rear = |b: scenario::BoundingBox| b.length / 2.0 - b.center[0];
+                    let overhangs = if sign > 0.0 {
+                        rear(a) + front(r)
+                    } else {
+                        front(a) + rear(r)
+                    };
+                    super::place::default_distance(self.track(x).at(t).1, overhangs)
+                }
                 _ => return Err(m.site.err(
                     K::Unsatisfiable,
                     "expected a distance (or a time and a reference) in position(…), found neither",
@@ -197,7 +210,7 @@ impl Planner<'_> {
     /// Checks a constraint at the start of a phase that is not the actor's first.
     pub(super) fn check_start(&self, m: &Modifier, target: &str, t: f64) -> Result<(), Error> {
         if m.kind == ModKind::Position {
-            let (x, sign, d) = self.position_target(m, t)?;
+            let (x, sign, d) = self.position_target(m, target, t)?;
             let want = x.as_ref().map_or(0.0, |x| self.s_at(x, t)) + sign * d;
             let got = self.s_at(target, t);
             if (got - want).abs() > POSITION_TOLERANCE {

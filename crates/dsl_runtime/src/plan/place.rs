@@ -31,6 +31,17 @@ pub(crate) const GROUP_GAP: f64 = 10.0;
 pub(crate) const FLOAT_REAR: f64 = 10.0;
 /// Speed of an actor nothing gives a speed (m/s): 50 km/h.
 pub(crate) const DEFAULT_SPEED: f64 = 50.0 / 3.6;
+/// Time gap of `position(ahead_of|behind: x)` without a distance or time (s): the two-second
+/// rule of driving schools.
+pub(crate) const DEFAULT_TIME_GAP: f64 = 2.0;
+
+/// Distance between reference points of `position(ahead_of|behind: x)` without a distance or
+/// time: [`DEFAULT_TIME_GAP`] at x's speed `vx`, and at least [`GROUP_GAP`] between the
+/// bumpers that face each other (`overhangs`: the actor's and x's overhangs towards each
+/// other, m).
+pub(crate) fn default_distance(vx: f64, overhangs: f64) -> f64 {
+    (DEFAULT_TIME_GAP * vx).max(GROUP_GAP + overhangs)
+}
 
 /// One actor to place: its placing modifiers, and for a group member its group's place.
 pub(crate) struct ToPlace<'m> {
@@ -195,6 +206,15 @@ pub(crate) fn place(
                         let d = match (number(m, "distance")?, number(m, "time")?, &r) {
                             (Some(d), _, _) => Some(d),
                             (None, Some(t), Some((_, x))) => v.get(x).map(|vx| t * vx),
+                            (None, None, Some((how, x))) => v.get(x).map(|vx| {
+                                let q = all.iter().find(|q| &q.name == x);
+                                let overhangs = if how == "ahead_of" {
+                                    p.rear + q.map_or(0.0, |q| q.front)
+                                } else {
+                                    p.front + q.map_or(0.0, |q| q.rear)
+                                };
+                                default_distance(*vx, overhangs)
+                            }),
                             _ => {
                                 return Err(m.site.err(
                                     K::Unsatisfiable,

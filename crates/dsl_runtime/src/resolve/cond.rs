@@ -52,6 +52,9 @@ pub(crate) enum Cond {
         condition: Box<Condition>,
         /// The actor paths and where each is written (`None`: not a path).
         actors: Vec<(Option<String>, Site)>,
+        /// For a `var x = sample(m, every(p))` compared: the sampling period p (s); the value
+        /// is read at each multiple of p from the run's start only.
+        sampled: Option<f64>,
     },
     /// `every(…)` or `elapsed(…)`, counted in the condition's event context.
     Timed(Timed, Site),
@@ -160,16 +163,28 @@ fn read_edge(ctx: &Eval<'_>, e: &Expr, edge: ConditionEdge) -> Result<Cond, Erro
                 (Err(err), Err(_)) => return Err(err),
             };
             let mut actors = Vec::new();
+            // A sampled variable: its method, read every period (§7.3.10 `sample`).
+            let (measure, sampled) = match sampled_var(ctx, measure)? {
+                Some((inner, period)) => (inner, Some(period)),
+                None => (&**measure, None),
+            };
             let kind = measured(ctx, measure, value, rule, &mut actors)?;
             Ok(Cond::Measured {
                 condition: Box::new(Condition {
                     name: format!("until@{}", ctx.site(e.span).at()),
-                    condition_edge: edge,
+                    // A sampled value changes only at its samples: the edge is read there
+                    // (below, `sampled_var`).
+                    condition_edge: if sampled.is_some() {
+                        ConditionEdge::None
+                    } else {
+                        edge
+                    },
                     delay: 0.0,
                     kind,
                     pos: ctx.site(e.span).pos,
                 }),
                 actors,
+                sampled,
             })
         }
         ExprKind::Temporal(n, args) if n.text == "every" => Ok(Cond::Timed(
@@ -190,6 +205,57 @@ fn read_edge(ctx: &Eval<'_>, e: &Expr, edge: ConditionEdge) -> Result<Cond, Erro
             Ok(Cond::Timed(Timed::Elapsed(d), ctx.site(e.span)))
         }
         _ => Err(unsupported(ctx, e)),
+    }
+}
+
+/// When `e` names a `var` of the scenario declared `= sample(m, every(p))` (§7.3.10.5): the
+/// expression m and the period p (s). Its value changes only at the samples, at each multiple of
+/// p from the run's start; a comparison of it holds from a sample at which the method's value
+/// satisfies it to the next sample. So `rise(x < v)` in an `until` or `wait` is read as the
+/// first sample at which m < v (a sample at which it held before cannot have been followed by
+/// a rise in a phase that was still waiting for one, unless it held at the phase's start:
+/// docs/dsl.md).
+fn sampled_var<'e>(ctx: &Eval<'e>, e: &Expr) -> Result<Option<(&'e Expr, f64)>, Error> {
+    let ExprKind::Name(n) = &e.kind else {
+        return Ok(None);
+    };
+    let Some(decl) = ctx.model.compounds.iter().find(|c| c.name == ctx.root) else {
+        return Ok(None);
+    };
+    let default = decl.members.iter().find_map(|m| match m {
+        dsl::semantics::hir::Member::Field(f)
+            if f.is_var && f.names.iter().any(|x| &x.text == n) =>
+        {
+            f.default.as_ref()
+        }
+        _ => None,
+    });
+    let Some(ExprKind::Temporal(s, args)) = default.map(|d| &d.kind) else {
+        return Ok(None);
+    };
+    if s.text != "sample" {
+        return Ok(None);
+    }
+    let (Some(inner), Some(every)) = (args.first(), args.get(1)) else {
+        return Ok(None);
+    };
+    match &every.value.kind {
+        ExprKind::Temporal(ev, ev_args) if ev.text == "every" => {
+            let period = every_args(ctx, every.value.span, ev_args)?;
+            if period.offset != 0.0 {
+                return Err(ctx.files.err(
+                    K::Condition,
+                    every.value.span,
+                    "expected sample(…, every(p)) without an offset, found one (not run yet)",
+                ));
+            }
+            Ok(Some((&inner.value, period.period)))
+        }
+        _ => Err(ctx.files.err(
+            K::Condition,
+            every.value.span,
+            "expected every(p) as the event of sample(…), found another event (not run yet)",
+        )),
     }
 }
 

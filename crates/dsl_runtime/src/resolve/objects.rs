@@ -11,9 +11,9 @@
 //! | `stationary_object` | MiscObject, category `barrier` (anchored; `obstacle` is movable in 1.x) |
 //!
 //! `vehicle_category` (§8.7.12) to 1.x: `car`, `bus`, `truck`, `trailer` the same;
-//! `vru_vehicle` a `bicycle` when its `intended_infrastructure` has `biking` (the seed's Code 1
-//! tells a bicycle from a motorcycle so), else a `motorbike`; `other` a `tram` or `train` when it
-//! is intended for `tram` or `rail`, else a `car` (1.x has no other land vehicle).
+//! `vru_vehicle` a `bicycle` when the first of its `intended_infrastructure` is `biking` (the
+//! seed's Code 1 tells a bicycle from a motorcycle so), else a `motorbike`; `other` a `tram` or
+//! `train` when that is `tram` or `rail`, else a `car` (1.x has no other land vehicle).
 
 use dsl::semantics::hir::{Member, ModifierApp};
 use scenario::{Axle, Axles, BoundingBox, PedestrianCategory, VehicleCategory};
@@ -129,11 +129,11 @@ fn vehicle(ctx: &Eval<'_>, path: &str) -> ActorData {
         Some((_, dsl::Value::Float(f))) => *f,
         _ => default,
     };
-    let infrastructure: Vec<String> = match ctx.lookup(&format!("{path}.intended_infrastructure")) {
-        Some((_, dsl::Value::List(items))) => items
-            .iter()
-            .filter_map(|i| match i {
-                dsl::Value::Enum { member, .. } => Some(member.clone()),
+    let list = format!("{path}.intended_infrastructure");
+    let infrastructure: Vec<String> = match ctx.lookup(&list) {
+        Some((_, dsl::Value::List(items))) => (0..items.len())
+            .filter_map(|i| match ctx.lookup(&format!("{list}[{i}]")) {
+                Some((_, dsl::Value::Enum { member, .. })) => Some(member.clone()),
                 _ => None,
             })
             .collect(),
@@ -195,9 +195,11 @@ fn vehicle(ctx: &Eval<'_>, path: &str) -> ActorData {
 }
 
 /// The OpenSCENARIO 1.x category of a DSL `vehicle_category` member (§8.7.12) of a vehicle
-/// intended for `infrastructure` (§8.7.13); see the module table.
+/// intended for `infrastructure` (§8.7.13), by its first element (the one the seed's Code 1
+/// constrains; the list's other elements are the solver's draws when only the first is
+/// constrained); see the module table.
 fn category(member: &str, infrastructure: &[String]) -> VehicleCategory {
-    let intended = |i: &str| infrastructure.iter().any(|x| x == i);
+    let intended = |i: &str| infrastructure.first().is_some_and(|x| x == i);
     match member {
         "bus" => VehicleCategory::Bus,
         "truck" => VehicleCategory::Truck,

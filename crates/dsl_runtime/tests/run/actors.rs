@@ -159,3 +159,82 @@ fn a_stationary_object_is_located_once_and_before_it_is_used() {
         "{e}"
     );
 }
+
+#[test]
+fn a_sampled_variable_ends_a_phase_at_a_sample() {
+    let r = crate::support::run("actors/sampled_ttc", 0, None);
+    let (s, e) = r.phase("do.1");
+    assert!(s.abs() < T_TOL && (e - 2.0).abs() < T_TOL, "[{s}, {e}]");
+    assert!((r.at(2.0, "ego").s - 50.0).abs() < S_TOL);
+}
+
+#[test]
+fn vehicles_take_their_category_from_vehicle_category() {
+    use scenario::VehicleCategory as C;
+    let lowered = crate::support::lower("actors/seed_vehicles", 0, None).expect("plans");
+    let objects = &lowered.scenario.entities.scenario_objects;
+    for (name, want) in [
+        ("my_wide_car", C::Car),
+        ("my_motorcycle", C::Motorbike),
+        ("my_bicycle", C::Bicycle),
+    ] {
+        match &objects
+            .iter()
+            .find(|o| o.name == name)
+            .expect(name)
+            .entity_object
+        {
+            EntityObject::Vehicle(v) => assert_eq!(v.vehicle_category, want, "{name}"),
+            other => panic!("{name} is a {other:?}"),
+        }
+    }
+    let r = run_scenario("seed_vehicles", &lowered.scenario, 0, None);
+    for name in ["my_wide_car", "my_motorcycle", "my_bicycle"] {
+        let d = r.at(2.0, name).s - r.at(0.0, name).s;
+        assert!((d - 20.0).abs() < S_TOL, "{name} covered {d} m");
+    }
+}
+
+#[test]
+fn the_seeds_examples_of_8_7_run_or_validate() {
+    let seed = |f: &str| crate::support::path(&format!("../dsl/tests/files/seed/{f}.osc"));
+    // Code 1 and Code 2 declare (no do): they check, and there is nothing to run.
+    for f in ["vehicles", "location"] {
+        dsl::check(&seed(f)).unwrap_or_else(|e| panic!("{f}: {e}"));
+        let e = crate::support::lower_at(
+            &format!("../dsl/tests/files/seed/{f}.osc"),
+            "tests/roads/straight.xodr",
+            0,
+            None,
+        )
+        .expect_err("nothing to run");
+        assert!(
+            e.to_string()
+                .contains("expected a scenario with a `do` to run"),
+            "{e}"
+        );
+    }
+    // Code 3 on the bundled highway, bounded as it has no end of its own: ego behind other_car
+    // with no distance given, 2 s at other_car's 50 km/h (27.78 m between reference points),
+    // both at 50 km/h (ego has no speed of its own), so the sampled time to collision never
+    // falls below 10 s and ego's phase runs to the bound.
+    let lowered = crate::support::lower_at(
+        "../dsl/tests/files/seed/prevent_collision.osc",
+        "../../examples/roads/highway.xodr",
+        0,
+        Some(5.0),
+    )
+    .expect("plans");
+    let r = run_scenario("prevent_collision", &lowered.scenario, 0, Some(5.0));
+    let (ego, other) = (r.at(0.0, "ego"), r.at(0.0, "other_car"));
+    assert_eq!(ego.lane, other.lane);
+    let v = 50.0 / 3.6;
+    assert!(
+        (other.s - ego.s - 2.0 * v).abs() < 1e-6,
+        "{} m apart",
+        other.s - ego.s
+    );
+    assert!((ego.speed - v).abs() < S_TOL && (other.speed - v).abs() < S_TOL);
+    assert_eq!(r.when("do.1", "Stop"), None);
+    assert!((r.last_time() - 5.0).abs() < T_TOL);
+}
