@@ -53,7 +53,11 @@ impl Planner<'_> {
             | Action::ChangeAcceleration
             | Action::KeepAcceleration
             | Action::ChangeLane
-            | Action::FollowLane => {}
+            | Action::FollowLane
+            | Action::ChangeSpaceGap
+            | Action::KeepSpaceGap
+            | Action::ChangeTimeHeadway
+            | Action::KeepTimeHeadway => {}
             _ => {
                 return Err(p.site.err(
                     K::Unsupported,
@@ -84,6 +88,17 @@ impl Planner<'_> {
                 },
                 _ => None,
             };
+            // After a gap action the engine's controller moves the actor: the plan knows no
+            // track to start a phase at a time from.
+            if let (Some(t), Some(since)) = (t0, self.engine_moved.get(target)) {
+                return Err(p.site.err(
+                    K::Unsatisfiable,
+                    format!(
+                        "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action{} from which the engine's distance controller moves `{target}`",
+                        since.map_or(String::new(), |s| format!(" started at {s:.2} s"))
+                    ),
+                ));
+            }
             check_keeps(mods, step)?;
             check_orientation(mods)?;
             // keep_position() in a later phase: the vehicle must stand when it starts.
@@ -115,6 +130,10 @@ impl Planner<'_> {
                 Action::ChangeLane | Action::FollowLane => {
                     self.plan_lateral_action(p, inv, slot, &mut name)?
                 }
+                Action::ChangeSpaceGap
+                | Action::KeepSpaceGap
+                | Action::ChangeTimeHeadway
+                | Action::KeepTimeHeadway => self.plan_gap_action(p, inv, slot, &mut name)?,
                 _ => self.plan_speed_action(p, inv, slot, &mut name)?,
             };
             derived = all_of(derived, action_end);

@@ -51,6 +51,7 @@
 //! | `events` | conditions and events as triggers in their event context |
 //! | `action_args` | a §8.8 action's `rate_profile`, `rate_peak`, `duration` and the dynamics they give |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
+//! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
@@ -67,6 +68,7 @@ use crate::track::Track;
 mod action_args;
 mod checks;
 mod events;
+mod gap_actions;
 mod invoke;
 mod lateral;
 mod lateral_actions;
@@ -109,6 +111,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         sides: RefCell::new(HashMap::new()),
         beside_checks: Vec::new(),
         draws: RefCell::new(res.draws.clone()),
+        engine_moved: HashMap::new(),
+        gaps: HashMap::new(),
     };
     root.walk(&mut |ph| {
         if let Kind::Emit(e) = &ph.kind {

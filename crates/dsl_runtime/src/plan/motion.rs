@@ -187,18 +187,11 @@ impl Planner<'_> {
             match (m.arg("distance"), m.arg("time"), &x) {
                 (Some(e), _, _) => e.number()?,
                 (None, Some(e), Some(x)) => e.number()? * self.track(x).at(t).1,
-                (None, None, Some(x)) => {
-                    let bb = |n: &str| self.entities[self.index[n]].data.bounding_box;
-                    let (a, r) = (bb(target), bb(x));
-                    let front = |b: scenario::BoundingBox| b.center[0] + b.length / 2.0;
-                    let rear = |b: scenario::BoundingBox| b.length / 2.0 - b.center[0];
-                    let overhangs = if sign > 0.0 {
-                        rear(a) + front(r)
-                    } else {
-                        front(a) + rear(r)
-                    };
-                    super::place::default_distance(self.track(x).at(t).1, overhangs)
-                }
+                // Ahead of x (sign +1): x is behind the actor.
+                (None, None, Some(x)) => super::place::default_distance(
+                    self.track(x).at(t).1,
+                    self.facing_overhangs(target, x, sign < 0.0),
+                ),
                 _ => return Err(m.site.err(
                     K::Unsatisfiable,
                     "expected a distance (or a time and a reference) in position(…), found neither",

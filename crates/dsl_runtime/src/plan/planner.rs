@@ -50,6 +50,20 @@ pub(crate) struct Planner<'a> {
     pub sides: RefCell<HashMap<String, bool>>,
     /// The run's draws after the resolver's.
     pub draws: RefCell<Draws>,
+    /// Actors the engine's gap controller moves (`gap_actions`), with the start of the gap
+    /// action when the plan knows it: their tracks are not planned from there on.
+    pub engine_moved: HashMap<String, Option<f64>>,
+    /// Each actor's last gap action: its reference and what it keeps.
+    pub gaps: HashMap<String, (String, Gap)>,
+}
+
+/// What a gap action keeps (`gap_actions`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Gap {
+    /// A space gap between the bounding boxes (m).
+    Space(f64),
+    /// A time headway between the reference points (s).
+    Headway(f64),
 }
 
 /// The error of a phase that nothing ends.
@@ -126,6 +140,21 @@ impl Planner<'_> {
         let tr = self.track(name);
         let s0 = tr.at(0.0).0;
         self.road.s_after(tr.lane(0.0), s0, tr.at(t).0 - s0)
+    }
+
+    /// The overhangs of `actor`'s and `other`'s bounding boxes towards each other (m): the
+    /// actor's front and the other's rear when the other is ahead, else the reverse; the
+    /// distance between the reference points less this is the gap between the boxes.
+    pub(crate) fn facing_overhangs(&self, actor: &str, other: &str, other_ahead: bool) -> f64 {
+        let bb = |n: &str| self.entities[self.index[n]].data.bounding_box;
+        let front = |b: scenario::BoundingBox| b.center[0] + b.length / 2.0;
+        let rear = |b: scenario::BoundingBox| b.length / 2.0 - b.center[0];
+        let (a, o) = (bb(actor), bb(other));
+        if other_ahead {
+            front(a) + rear(o)
+        } else {
+            rear(a) + front(o)
+        }
     }
 
     /// The width of `name`'s bounding box (m).

@@ -294,7 +294,7 @@ impl Planner<'_> {
 /// An action that controls the speed (or acceleration) takes no modifier that changes the speed
 /// in its phase: those are the action's own (`speed(…)` at the start of the actor's first phase
 /// places it, and stays allowed).
-fn check_speed_modifiers(inv: &Invoke, first: bool) -> Result<(), Error> {
+pub(super) fn check_speed_modifiers(inv: &Invoke, first: bool) -> Result<(), Error> {
     let controls = matches!(
         inv.kind,
         Action::ChangeSpeed
@@ -302,6 +302,10 @@ fn check_speed_modifiers(inv: &Invoke, first: bool) -> Result<(), Error> {
             | Action::AssignAcceleration
             | Action::ChangeAcceleration
             | Action::KeepAcceleration
+            | Action::ChangeSpaceGap
+            | Action::KeepSpaceGap
+            | Action::ChangeTimeHeadway
+            | Action::KeepTimeHeadway
     );
     if !controls {
         return Ok(());

@@ -89,3 +89,25 @@ fn lateral_actions_beyond_the_limits_or_contradicted() {
         &["expected no lane or lateral modifier beside change_lane(…), which controls the lateral position, found `lateral(…)`"],
     );
 }
+
+#[test]
+fn gap_actions_without_a_reference_sideways_or_followed_at_a_planned_time() {
+    expect(
+        "err_gap_no_reference",
+        "7:9",
+        &["expected a reference in change_space_gap(…) (a mandatory argument), found none"],
+    );
+    expect(
+        "err_gap_lateral",
+        "6:34",
+        &["expected a longitudinal direction (ahead, behind, longitudinal) in change_space_gap(…), found `left`"],
+    );
+    expect(
+        "err_gap_then_timed",
+        "12:9",
+        &[
+            "expected this phase of `ego` to start on a run-time condition",
+            "found it at 5.00 s",
+        ],
+    );
+}

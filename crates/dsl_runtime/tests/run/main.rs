@@ -6,6 +6,7 @@ mod actors;
 mod along;
 mod bad_input;
 mod distance;
+mod gap_actions;
 mod groups;
 mod handlers;
 mod lane_side;
