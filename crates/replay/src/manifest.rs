@@ -51,7 +51,8 @@ pub struct EntityInfo {
     pub name: String,
     /// `vehicle`, `pedestrian`, `miscObject` or `external`.
     pub kind: String,
-    /// XSD `VehicleCategory` (vehicles only), e.g. `car`.
+    /// The XSD category of its kind: `VehicleCategory` (e.g. `car`), `PedestrianCategory`
+    /// (`pedestrian`, `animal`, `wheelchair`) or `MiscObjectCategory` (e.g. `barrier`).
     pub category: Option<String>,
     /// RGB colour, when the scenario gives one.
     pub color: Option<[u8; 3]>,

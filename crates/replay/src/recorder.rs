@@ -27,7 +27,12 @@ fn info(e: &EntityFrame<'_>) -> EntityInfo {
         id: e.id,
         name: e.name.to_owned(),
         kind: kind_name(e.kind).to_owned(),
-        category: e.vehicle_category.map(|c| c.as_str().to_owned()),
+        category: e
+            .vehicle_category
+            .map(|c| c.as_str())
+            .or(e.pedestrian_category.map(|c| c.as_str()))
+            .or(e.misc_object_category.map(|c| c.as_str()))
+            .map(str::to_owned),
         color: e.color.map(|c| c.rgb()),
         box_center: [c.x, c.y, c.z],
         box_size: [b.length(), b.width(), b.height()],

@@ -233,8 +233,16 @@ fn declared_manifest(scenario: &Scenario, scenario_path: &Path) -> RunManifest {
                     Some(v.vehicle_category.as_str().to_owned()),
                     Some(v.bounding_box),
                 ),
-                EntityObject::Pedestrian(p) => ("pedestrian", None, Some(p.bounding_box)),
-                EntityObject::MiscObject(m) => ("miscObject", None, Some(m.bounding_box)),
+                EntityObject::Pedestrian(p) => (
+                    "pedestrian",
+                    Some(p.pedestrian_category.as_str().to_owned()),
+                    Some(p.bounding_box),
+                ),
+                EntityObject::MiscObject(m) => (
+                    "miscObject",
+                    Some(m.misc_object_category.as_str().to_owned()),
+                    Some(m.bounding_box),
+                ),
                 _ => ("external", None, None),
             };
             let (box_center, box_size) = bb.map_or(([0.0, 0.0, 0.0], [0.0, 0.0, 0.0]), |b| {

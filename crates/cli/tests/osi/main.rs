@@ -6,6 +6,7 @@
 #[path = "../osi_common/mod.rs"]
 mod osi_common;
 
+mod dsl_actors;
 mod environment;
 mod lights;
 mod mapping;
