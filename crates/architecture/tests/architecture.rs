@@ -36,13 +36,8 @@ const KNOWN_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
     (
         "engine",
         &["actions", "controller", "runtime", "traffic"],
-        10,
-        &[
-            "actions↔controller",
-            "actions↔runtime",
-            "controller↔runtime",
-            "runtime↔traffic",
-        ],
+        9,
+        &["actions↔runtime", "controller↔runtime", "runtime↔traffic"],
     ),
     (
         "engine",

@@ -440,7 +440,7 @@ pub(crate) fn step(
         e.pose.y += along * e.pose.h.sin();
         e.odometer += beyond;
         st.arrive(world, actor, dt);
-        release(world, actor, true);
+        world.release_to_road(actor, true);
         ActionStatus::Ended
     } else {
         ActionStatus::Running
@@ -487,18 +487,9 @@ fn steer(
     e.odometer += distance;
     if dt > 0.0 && s >= st.trajectory.length() - END_EPSILON && !st.waits(now + dt) {
         st.arrive(world, actor, dt);
-        release(world, actor, true);
+        world.release_to_road(actor, true);
         ActionStatus::Ended
     } else {
         ActionStatus::Running
     }
-}
-
-/// The action is over (ended, or stopped with `hold` false): the default controller takes
-/// the actor on from its pose; `hold` keeps it in place for the rest of this step.
-pub(crate) fn release(world: &mut World, actor: EntityId, hold: bool) {
-    let pose = world.entity(actor).pose;
-    let found = world.network.locate(pose.x, pose.y, Some(pose.h));
-    world.place_resolved(actor, pose, found);
-    world.entity_mut(actor).held = hold;
 }

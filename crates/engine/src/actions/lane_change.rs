@@ -17,16 +17,15 @@
 //! LaneOffsetAction, which blends within one lane.
 
 use opendrive::LENGTH_EPSILON;
-use scenario::{LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics};
+use scenario::{LateralAction, SourcePos, TransitionDynamics};
 
-use super::speed::entity_ref;
 use super::Part;
 use crate::error::Error;
 use crate::position::lane_at;
+use crate::runtime::targets::target_lane;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::{Blend, EntityId};
-use crate::world::lanes::lane_shift;
 use crate::world::shapes::{progress, shape_value, span, Span};
 use scenario::DynamicsShape;
 
@@ -90,36 +89,6 @@ pub(crate) fn start(
         false,
         pos,
     )
-}
-
-/// The lane id a LaneChangeTarget names: absolute, or counted from the reference entity's lane
-/// as seen in its direction of travel.
-pub(crate) fn target_lane(
-    world: &World,
-    target: &LaneChangeTarget,
-    pos: &SourcePos,
-) -> Result<i32, Error> {
-    Ok(match target {
-        LaneChangeTarget::Absolute(id) => id
-            .trim()
-            .parse::<i32>()
-            .map_err(|_| Error::at("an OpenDRIVE lane id (integer)", format!("'{id}'"), pos))?,
-        LaneChangeTarget::Relative {
-            entity_ref: name,
-            value,
-        } => {
-            let reference = world.entity(entity_ref(world, name, pos)?);
-            let (Some(rp), Some(track)) = (&reference.road_position, &reference.track) else {
-                return Err(Error::at(
-                    "a reference entity on a lane",
-                    format!("'{name}' off the road"),
-                    pos,
-                ));
-            };
-            lane_shift(rp.lane_id, *value, track.direction)
-        }
-        _ => return Err(Error::unsupported("this LaneChangeTarget", pos)),
-    })
 }
 
 /// Starts a blend of `actor` from where it is to (`lane`, `offset`).
@@ -319,23 +288,4 @@ fn along_road(s: &LateralState, d: f64, length: f64, x0: f64) -> f64 {
         a = along(tan_at(a).atan().sin());
     }
     a
-}
-
-/// A lateral action stopped midway: the actor keeps the lateral position it has, in the lane
-/// that holds it.
-pub(crate) fn abandon(world: &mut World, actor: EntityId) {
-    let net = &world.network;
-    let e = &mut world.entities[actor.index()];
-    let Some(track) = &mut e.track else {
-        return;
-    };
-    if track.blend.take().is_some() {
-        if let Some((lane, offset)) = net
-            .road(&track.road_id)
-            .and_then(|r| lane_at(r, track.s, track.t))
-        {
-            track.lane_id = lane;
-            track.offset = offset;
-        }
-    }
 }

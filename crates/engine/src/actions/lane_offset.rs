@@ -19,9 +19,9 @@ use scenario::{
 };
 
 use super::lane_change::begin;
-use super::speed::entity_ref;
 use super::Part;
 use crate::error::Error;
+use crate::runtime::targets::entity_ref;
 use crate::runtime::world::World;
 use crate::world::entity::EntityId;
 

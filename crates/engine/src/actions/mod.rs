@@ -34,13 +34,6 @@ use scenario::{
 };
 
 pub(crate) use appearance::Appearances;
-pub(crate) use lane_change::{abandon as lane_change_abandon, target_lane};
-pub(crate) use speed::target_speed;
-
-/// Puts `actor` back on the lane at its pose (the default controller keeps that lane).
-pub(crate) fn release_to_road(world: &mut World, actor: EntityId) {
-    follow_trajectory::release(world, actor, false);
-}
 
 use crate::error::Error;
 use crate::output::EventRecord;
@@ -206,8 +199,8 @@ impl ActionTable {
 /// trajectory hands the actor back to the default controller where it stands.
 fn interrupt(world: &mut World, actor: EntityId, part: &mut Part) {
     match part {
-        Part::Lateral(_) | Part::LateralDistance(_) => lane_change::abandon(world, actor),
-        Part::Trajectory(_) => follow_trajectory::release(world, actor, false),
+        Part::Lateral(_) | Part::LateralDistance(_) => world.keep_lateral_position(actor),
+        Part::Trajectory(_) => world.release_to_road(actor, false),
         _ => {}
     }
     *part = Part::Done(ActionStatus::Stopped);

@@ -20,6 +20,7 @@ use scenario::{
 
 use super::Part;
 use crate::error::Error;
+use crate::runtime::targets::entity_ref;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
@@ -78,54 +79,6 @@ impl Target {
                 ..
             }
         )
-    }
-}
-
-/// Looks up entity `name` for an action at `pos`: a declared entity that is in the scenario
-/// now. A deleted entity (DeleteEntityAction), or one not placed yet, has no state an action
-/// could refer to (its last pose and speed are stale), so it is refused as a position's
-/// `entityRef` is (position/error.rs).
-pub(crate) fn entity_ref(world: &World, name: &str, pos: &SourcePos) -> Result<EntityId, Error> {
-    let id = world
-        .id(name)
-        .ok_or_else(|| Error::at("a declared entity", format!("entityRef '{name}'"), pos))?;
-    if !world.entity(id).placed {
-        return Err(Error::at(
-            format!("a placed entity named \"{name}\""),
-            "none (deleted, or not yet placed)",
-            pos,
-        ));
-    }
-    Ok(id)
-}
-
-/// The speed (m/s) `target` asks for now, a relative one read from its entity's speed; for a
-/// user controller holding the longitudinal domain (engine module `controller`).
-pub(crate) fn target_speed(
-    world: &World,
-    target: &SpeedTarget,
-    pos: &SourcePos,
-) -> Result<f64, Error> {
-    let v = match target {
-        SpeedTarget::Absolute(v) => *v,
-        SpeedTarget::Relative {
-            entity_ref: name,
-            value,
-            speed_target_value_type,
-            ..
-        } => {
-            let v = world.entity(entity_ref(world, name, pos)?).speed;
-            match speed_target_value_type {
-                SpeedTargetValueType::Delta => v + value,
-                _ => v * value,
-            }
-        }
-        _ => return Err(Error::unsupported("this SpeedActionTarget", pos)),
-    };
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(Error::at("a finite target speed", format!("{v} m/s"), pos))
     }
 }
 

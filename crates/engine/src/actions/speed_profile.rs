@@ -28,9 +28,9 @@
 
 use scenario::{DynamicConstraints, FollowingMode, LongitudinalAction, Performance, SourcePos};
 
-use super::speed::entity_ref;
 use super::Part;
 use crate::error::Error;
+use crate::runtime::targets::entity_ref;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;

@@ -35,11 +35,11 @@
 use opendrive::Pose;
 use scenario::{FinalSpeed, SourcePos, SpeedTargetValueType, SteadyState, SynchronizeAction};
 
-use super::speed::entity_ref;
 use super::Part;
 use crate::domain::shortest_road_path;
 use crate::error::{Error, ErrorKind};
 use crate::position::resolve;
+use crate::runtime::targets::entity_ref;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;

@@ -295,9 +295,9 @@ pub(crate) fn hand_back_lateral(world: &mut World, actor: EntityId) {
     let steered = std::mem::take(&mut ctrl.steered);
     let changing = ctrl.lane_change.take().is_some();
     if changing {
-        crate::actions::lane_change_abandon(world, actor);
+        world.keep_lateral_position(actor);
     }
     if steered {
-        crate::actions::release_to_road(world, actor);
+        world.release_to_road(actor, false);
     }
 }

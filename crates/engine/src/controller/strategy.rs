@@ -5,9 +5,9 @@ use scenario::{LateralAction, LongitudinalAction, PrivateAction, RoutingAction};
 
 use super::assign::Origin;
 use super::command::Strategy;
-use crate::actions::{target_lane, target_speed};
 use crate::error::Error;
 use crate::output::EventRecord;
+use crate::runtime::targets::{target_lane, target_speed};
 use crate::runtime::World;
 use crate::world::EntityId;
 

@@ -17,6 +17,7 @@
 //! | `external` | ExternalObjectReference entities placed at their OpenDRIVE objects |
 //! | `finite` | the step's guard: no non-finite entity state reaches a frame |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
+//! | `targets` | what an action's target asks for now: `entityRef`, SpeedActionTarget, LaneChangeTarget |
 //! | `engine` | `Engine`: the built scenario and its API |
 //! | `read` | what the engine answers between steps, as plain values (`Engine::entities`, …) |
 //! | `step` | the fixed step, one private method per stage |
@@ -32,6 +33,7 @@ mod lane_slots;
 mod read;
 pub(crate) mod selection;
 mod step;
+pub(crate) mod targets;
 pub(crate) mod trailer;
 pub(crate) mod trigger_view;
 pub(crate) mod world;

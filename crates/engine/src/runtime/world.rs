@@ -129,6 +129,35 @@ impl World {
         place_on_lane(&self.network, &mut self.entities[id.index()], pose, found);
     }
 
+    /// The default controller takes `actor` on from its pose (a FollowTrajectoryAction over,
+    /// or a controller handing back its lateral domain): it follows the lane at its pose;
+    /// `hold` keeps it in place for the rest of this step.
+    pub(crate) fn release_to_road(&mut self, actor: EntityId, hold: bool) {
+        let pose = self.entity(actor).pose;
+        let found = self.network.locate(pose.x, pose.y, Some(pose.h));
+        self.place_resolved(actor, pose, found);
+        self.entity_mut(actor).held = hold;
+    }
+
+    /// A lateral movement stopped midway (a lateral action, or a controller's lane change): the
+    /// actor keeps the lateral position it has, in the lane that holds it.
+    pub(crate) fn keep_lateral_position(&mut self, actor: EntityId) {
+        let net = &self.network;
+        let e = &mut self.entities[actor.index()];
+        let Some(track) = &mut e.track else {
+            return;
+        };
+        if track.blend.take().is_some() {
+            if let Some((lane, offset)) = net
+                .road(&track.road_id)
+                .and_then(|r| lane_at(r, track.s, track.t))
+            {
+                track.lane_id = lane;
+                track.offset = offset;
+            }
+        }
+    }
+
     /// The view of entity `e` for positions and conditions.
     pub(crate) fn view<'a>(&'a self, e: &'a Entity) -> EntityView<'a> {
         EntityView {

@@ -38,11 +38,10 @@ use scenario::{LateralAction, LateralDisplacement, SourcePos};
 
 use super::gauge::{Axis, Gauge};
 use super::law::{spring, Limits};
-use crate::actions::lane_change::abandon;
-use crate::actions::speed::entity_ref;
 use crate::actions::Part;
 use crate::error::Error;
 use crate::position::lane_at;
+use crate::runtime::targets::entity_ref;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::{Blend, EntityId};
@@ -135,7 +134,7 @@ pub(crate) fn step_lateral(
     // A reference that left the scenario (DeleteEntityAction) has no place to keep a distance
     // to: the action stops where the actor is (as the longitudinal one does).
     if !world.entity(s.reference).placed {
-        abandon(world, actor);
+        world.keep_lateral_position(actor);
         return ActionStatus::Stopped;
     }
     let Some(clearance) = s.gauge.clearance(world, actor, s.reference, s.toward) else {
@@ -143,7 +142,7 @@ pub(crate) fn step_lateral(
     };
     let error = clearance - s.distance;
     if !s.continuous && error.abs() <= REACHED {
-        abandon(world, actor);
+        world.keep_lateral_position(actor);
         return ActionStatus::Ended;
     }
     if dt <= 0.0 {

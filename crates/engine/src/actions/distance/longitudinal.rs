@@ -29,10 +29,10 @@ use scenario::{LongitudinalAction, LongitudinalDisplacement, SourcePos};
 
 use super::gauge::{Axis, Gauge};
 use super::law::{limit_jerk, speed_room, spring, Limits};
-use crate::actions::speed::entity_ref;
 use crate::actions::Part;
 use crate::controller::place_on_track;
 use crate::error::Error;
+use crate::runtime::targets::entity_ref;
 use crate::runtime::world::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
