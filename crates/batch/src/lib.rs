@@ -50,4 +50,6 @@ pub use save::{variant_dir, Save};
 pub use seed::variant_seed;
 pub use shard::{Shard, ShardError};
 pub use sweep::Sweep;
-pub use table::{quantize, quantize_time, CsvError, Outcome, Row, Table, FIXED_COLUMNS};
+pub use table::{
+    quantize, quantize_time, CsvError, Outcome, Row, Table, FIXED_COLUMNS, REFUSED, REFUSED_STOP,
+};

@@ -19,7 +19,7 @@ use arrow_schema::{DataType, Field, Schema};
 use parquet::arrow::ArrowWriter;
 use parquet::file::properties::WriterProperties;
 
-use crate::table::{Outcome, Table, FIXED_COLUMNS};
+use crate::table::{Outcome, Row, Table, FIXED_COLUMNS};
 
 /// Why the Parquet file could not be made.
 #[derive(Debug, thiserror::Error)]
@@ -63,8 +63,10 @@ pub fn to_parquet(table: &Table) -> Result<Vec<u8>, ParquetError> {
             stop,
             DataType::Utf8,
             Arc::new(
-                ok.iter()
-                    .map(|o| o.and_then(|o| o.stop).map(|s| s.name()))
+                table
+                    .rows
+                    .iter()
+                    .map(Row::stop_reason)
                     .collect::<StringArray>(),
             ),
         ),

@@ -15,8 +15,9 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
+use engine::load::RoadNetworks;
 use opendrive::RoadNetwork;
 
 use scenario::distribution::model::{
@@ -74,8 +75,13 @@ pub struct Plan {
     pub distribution: PathBuf,
     /// The scenario it names, loaded with its declared parameter values.
     pub scenario: Scenario,
-    /// Its road network, read once: every variant's engine and the measurements share it.
+    /// Its road network (with its declared parameter values), read once: every variant that
+    /// names the same file shares it ([`Plan::network_for`]).
     pub network: Arc<RoadNetwork>,
+    /// The road networks read so far, by file: a variant whose parameters name another road
+    /// (`RoadNetwork/LogicFile` written with a parameter) gets its own, read once and shared
+    /// with every variant naming that file.
+    networks: Arc<Mutex<RoadNetworks>>,
     /// The varied parameters, in the order the distribution first names them.
     pub parameters: Vec<String>,
     /// Each variant's parameter values, by name; variant i is `variants[i]`.
@@ -99,6 +105,8 @@ impl Plan {
         }
         let scenario = Scenario::load(&expanded.scenario_file).map_err(PlanError::Scenario)?;
         let network = engine::load::road_network(&scenario).map_err(PlanError::RoadNetwork)?;
+        let mut networks = RoadNetworks::new();
+        networks.keep(&scenario, Arc::clone(&network));
         let named = varied(&distribution);
         for (name, pos) in &named {
             if !scenario
@@ -132,9 +140,23 @@ impl Plan {
             distribution: path.to_path_buf(),
             scenario,
             network,
+            networks: Arc::new(Mutex::new(networks)),
             parameters,
             variants: expanded.runs,
         })
+    }
+
+    /// The road network of `variant` (a scenario derived from [`Plan::scenario`]): the one its
+    /// own `RoadNetwork/LogicFile` names, read the first time a variant names that file and
+    /// shared from then on.
+    pub fn network_for(&self, variant: &Scenario) -> Result<Arc<RoadNetwork>, engine::Error> {
+        // A poisoned lock only means another variant panicked while reading a road: the
+        // networks already read are whole (inserted after a complete read).
+        let mut networks = self
+            .networks
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        networks.get(variant)
     }
 
     /// The values of variant `i` in the order of [`Plan::parameters`] (empty text for a

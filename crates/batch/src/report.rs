@@ -15,10 +15,12 @@ use crate::table::{Row, Table};
 /// TTC at and above which a cell is fully green (s).
 const TTC_GREEN: f64 = 4.0;
 
-/// Lines summing a batch up: variants, failures, collisions, the worst min_ttc and where.
+/// Lines summing a batch up: variants, failures, refusals by the scenario's constraints (when
+/// any), collisions, the worst min_ttc and where.
 pub fn summary(table: &Table) -> String {
     let total = table.rows.len();
-    let failed = table.rows.iter().filter(|r| r.result.is_err()).count();
+    let refused = table.rows.iter().filter(|r| r.refused()).count();
+    let failed = table.rows.iter().filter(|r| r.failed()).count();
     let collisions = table
         .rows
         .iter()
@@ -29,7 +31,11 @@ pub fn summary(table: &Table) -> String {
         .iter()
         .filter_map(|r| Some((r.result.as_ref().ok()?.min_ttc?, r)))
         .min_by(|a, b| a.0.total_cmp(&b.0).then(a.1.variant.cmp(&b.1.variant)));
-    let mut out = format!("{total} variants, {failed} failed, {collisions} with a collision");
+    let mut out = format!("{total} variants, {failed} failed, ");
+    if refused > 0 {
+        let _ = write!(out, "{refused} refused by constraints, ");
+    }
+    let _ = write!(out, "{collisions} with a collision");
     match worst {
         Some((ttc, row)) => {
             let _ = write!(

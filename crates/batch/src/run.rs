@@ -6,6 +6,8 @@
 //! it passes its wall-clock limit or panics (guard.rs) — gives a row with its error message;
 //! the batch goes on. [`run_each`] hands each row to the caller as its variant ends (the
 //! journal's append, resume.rs).
+//! A variant whose values break the scenario's own ConstraintGroups is refused, not failed
+//! (its message starts with [`REFUSED`]).
 
 use std::fs::File;
 use std::io::BufWriter;
@@ -26,7 +28,7 @@ use crate::plan::Plan;
 use crate::save::{commit, discard, staging_dir, Outputs, Save};
 use crate::seed::variant_seed;
 use crate::shard::Shard;
-use crate::table::{Outcome, Row, Table};
+use crate::table::{Outcome, Row, Table, REFUSED};
 
 /// How to run a batch.
 #[derive(Debug, Clone)]
@@ -251,15 +253,20 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         vehicle_model: options.vehicle_model,
         stop_at_red_lights: options.stop_at_red_lights,
     };
-    // The variant from the scenario's files kept at the first load and the road network read
-    // once for the whole batch: no file is read per variant.
+    // The variant from the scenario's files kept at the first load, its own files (a road,
+    // a catalog directory its values name) resolved from its own values; its road network
+    // read once for every variant that names the same file.
     let scenario = plan
         .scenario
         .with_parameters(&params)
-        .map_err(|e| e.to_string())?;
+        .map_err(|e| match e.kind() {
+            scenario::ErrorKind::ConstraintViolated { .. } => format!("{REFUSED}{e}"),
+            _ => e.to_string(),
+        })?;
+    let network = plan.network_for(&scenario).map_err(|e| e.to_string())?;
     let mut engine =
-        Engine::new(&scenario, Arc::clone(&plan.network), config).map_err(|e| e.to_string())?;
-    let mut observer = Observer::new(&plan.network, &options.host);
+        Engine::new(&scenario, Arc::clone(&network), config).map_err(|e| e.to_string())?;
+    let mut observer = Observer::new(&network, &options.host);
     let mut outputs = match &options.save {
         Some((save, root)) => {
             // What a killed run of this variant left.

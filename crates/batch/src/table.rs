@@ -12,7 +12,9 @@
 //! ([`quantize_time`], [`quantize`]). So the CSV read back gives the very same values, and a
 //! Parquet file written from a merged CSV equals the one written by an unsharded run, byte for
 //! byte. An empty cell is a value that was never defined (no collision, no time to collision at
-//! any step, …); a failed variant has only `variant`, its parameters and `error`.
+//! any step, …); a failed variant has only `variant`, its parameters and `error`, a variant
+//! its scenario's constraints refused also `stop_reason` `refused_by_constraints` (its error
+//! starts with [`REFUSED`]).
 //!
 //! Written by hand: the layout is fixed and the only quoting needed is RFC 4180's for text
 //! cells (parameter values, the error message), which [`field`] and [`split_line`] do.
@@ -44,6 +46,14 @@ pub struct Outcome {
     pub monitors: Vec<(String, bool)>,
 }
 
+/// The start of the error message of a variant whose parameter values break the
+/// ConstraintGroups of the scenario's own ParameterDeclarations (OpenSCENARIO 1.3 §9.1): the
+/// scenario refuses it, it did not fail. Its `stop_reason` is [`REFUSED_STOP`].
+pub const REFUSED: &str = "refused by constraints: ";
+
+/// The `stop_reason` of a refused variant ([`REFUSED`]).
+pub const REFUSED_STOP: &str = "refused_by_constraints";
+
 /// One row of the results table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
@@ -53,6 +63,28 @@ pub struct Row {
     pub params: Vec<String>,
     /// The run's results, or why the variant failed.
     pub result: Result<Outcome, String>,
+}
+
+impl Row {
+    /// Whether the scenario's constraints refused the variant's values ([`REFUSED`]).
+    pub fn refused(&self) -> bool {
+        matches!(&self.result, Err(m) if m.starts_with(REFUSED))
+    }
+
+    /// Whether the variant failed: it has no outcome and was not refused.
+    pub fn failed(&self) -> bool {
+        self.result.is_err() && !self.refused()
+    }
+
+    /// The `stop_reason` cell: why the run ended, [`REFUSED_STOP`] for a refused variant,
+    /// nothing for a failed one.
+    pub fn stop_reason(&self) -> Option<&'static str> {
+        match &self.result {
+            Ok(o) => o.stop.map(StopReason::name),
+            Err(_) if self.refused() => Some(REFUSED_STOP),
+            Err(_) => None,
+        }
+    }
 }
 
 /// The results of a batch (or of a shard of one).
@@ -171,7 +203,8 @@ impl Table {
                 }
             }
             Err(message) => {
-                let _ = write!(out, ",,,,,,,,,{}", field(message));
+                let stop = row.stop_reason().unwrap_or_default();
+                let _ = write!(out, ",{stop},,,,,,,,{}", field(message));
                 for _ in &self.monitors {
                     out.push(',');
                 }

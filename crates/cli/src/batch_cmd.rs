@@ -23,8 +23,9 @@ Kubernetes Indexed Job (JOB_COMPLETION_INDEX with --shards N).\n\
 Each finished variant is recorded in DIR/batch.journal as it ends: the same command run again on\n\
 the same DIR (after a kill, a pre-emption, a requeue) runs only the variants not yet recorded and\n\
 writes the files an uninterrupted run writes. A DIR holding another sweep's results is refused.\n\
-Exit status: 0 when every variant ran, 100 + N when N variants failed (255 for 155 or more; their\n\
-rows say why), 1 when the batch cannot run (loading, the output folder), 2 on a usage error."
+Exit status: 0 when every variant ran or was refused by the scenario's constraints, 100 + N\n\
+when N variants failed (255 for 155 or more; their rows say why), 1 when the batch cannot run\n\
+(loading, the output folder), 2 on a usage error."
 )]
 pub struct BatchArgs {
     #[command(subcommand)]
@@ -187,9 +188,10 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
     Ok(exit_code(table))
 }
 
-/// 0 when every variant ran, else 100 + the number that failed, at most 255.
+/// 0 when every variant ran (or was refused by the scenario's constraints), else 100 + the
+/// number that failed, at most 255.
 fn exit_code(table: &batch::Table) -> ExitCode {
-    let failed = table.rows.iter().filter(|r| r.result.is_err()).count();
+    let failed = table.rows.iter().filter(|r| r.failed()).count();
     if failed == 0 {
         ExitCode::SUCCESS
     } else {

@@ -8,7 +8,7 @@
 //! [`Engine::step`] advances one fixed step and pushes a [`Frame`] to a [`FrameSink`] and the
 //! step's [`EventRecord`]s to an [`EventSink`]. Between steps, [`Engine::entities`] gives each
 //! entity's state as plain values ([`EntityState`]). Variants of a scenario for a batch come
-//! from [`scenario::Scenario::with_parameters`], which reads no file.
+//! from [`scenario::Scenario::with_parameters`], which reads no file its first load read.
 //!
 //! ```
 //! use std::path::Path;

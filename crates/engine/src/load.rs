@@ -6,7 +6,8 @@
 //! [`Engine::load`] is the convenience for one run: scenario, road network, engine.
 //! [`RoadNetworks`] keeps the networks already read, by file, for batches of scenarios that
 //! share roads. A batch of variants of one scenario loads it once and derives each variant
-//! with [`Scenario::with_parameters`], which reads no file:
+//! with [`Scenario::with_parameters`], which reads no file its first load read; a variant whose
+//! parameters name another road file gets that road's network from [`RoadNetworks`]:
 //!
 //! ```no_run
 //! use std::path::Path;
@@ -71,6 +72,14 @@ impl RoadNetworks {
         let network = road_network(scenario)?;
         self.by_file.insert(path.clone(), network.clone());
         Ok(network)
+    }
+
+    /// Keeps `network`, read elsewhere, as the one of the file `scenario` names (nothing for
+    /// a scenario that names none).
+    pub fn keep(&mut self, scenario: &Scenario, network: Arc<RoadNetwork>) {
+        if let Some(path) = &scenario.road_network.logic_file {
+            self.by_file.insert(path.clone(), network);
+        }
     }
 
     /// How many networks have been read.

@@ -103,8 +103,10 @@ impl Scenario {
     /// This scenario with global parameters overridden by (name, value) pairs on top of the
     /// overrides it was loaded with (OpenSCENARIO 1.3 §9.1; a name given again takes the new
     /// value): the same files, kept in memory at the first load ([`Sources`]), read and
-    /// resolved again. No file is read, so a batch of variants costs one parse and resolution
-    /// each, and no disk access.
+    /// resolved again, so a batch of variants costs one parse and resolution each. Only a file
+    /// the first load never saw — a road network or catalog directory that these parameter
+    /// values name and the first ones did not — is looked for on the disk, each variant
+    /// resolving its own files from its own values.
     ///
     /// ```no_run
     /// # use std::path::Path;
@@ -117,9 +119,12 @@ impl Scenario {
     /// ```
     pub fn with_parameters(&self, overrides: &[(String, String)]) -> Result<Scenario> {
         let merged = self.sources.merged(overrides);
+        let files = provider::Overlay {
+            kept: &self.sources.files,
+            more: &DiskFiles,
+        };
         let mut scenario =
-            reader::scenario::load(&*self.sources.files, &self.sources.opened, &merged)?
-                .checked()?;
+            reader::scenario::load(&files, &self.sources.opened, &merged)?.checked()?;
         scenario.sources = Sources {
             opened: self.sources.opened.clone(),
             files: self.sources.files.clone(),

@@ -202,6 +202,41 @@ impl Sources {
     }
 }
 
+/// The files kept at a first load, then `more` for what they do not hold: what a variant
+/// reads when its own parameter values name a file the first load never saw (a road network
+/// or catalog directory chosen by a parameter, OpenSCENARIO 1.3 §9.1).
+pub(crate) struct Overlay<'a> {
+    pub(crate) kept: &'a MemoryFiles,
+    pub(crate) more: &'a dyn FileProvider,
+}
+
+impl FileProvider for Overlay<'_> {
+    fn size(&self, path: &Path) -> io::Result<u64> {
+        self.kept.size(path).or_else(|_| self.more.size(path))
+    }
+
+    fn read(&self, path: &Path) -> io::Result<Vec<u8>> {
+        self.kept.read(path).or_else(|_| self.more.read(path))
+    }
+
+    fn is_file(&self, path: &Path) -> bool {
+        self.kept.is_file(path) || self.more.is_file(path)
+    }
+
+    fn is_dir(&self, path: &Path) -> bool {
+        self.kept.is_dir(path) || self.more.is_dir(path)
+    }
+
+    fn list_dir(&self, dir: &Path) -> io::Result<Vec<PathBuf>> {
+        // A directory the first load listed keeps that listing (its files were all read).
+        if self.kept.is_dir(dir) {
+            self.kept.list_dir(dir)
+        } else {
+            self.more.list_dir(dir)
+        }
+    }
+}
+
 /// A provider that answers from `inner` and keeps what it answered: the bytes of every file
 /// read, the files and directories found to exist. [`Recording::into_memory`] then gives a
 /// [`MemoryFiles`] that answers the loader's questions as `inner` did, so that the same
