@@ -29,7 +29,8 @@
 //! position relative to B's, B's relative to A's) cannot be resolved and is a load error
 //! naming the chain, from the first of its actions in the file ([`ErrorKind::InitCycle`]).
 
-use std::collections::BTreeSet;
+use std::cmp::Reverse;
+use std::collections::{BTreeSet, BinaryHeap, HashMap};
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::model::{
@@ -49,7 +50,7 @@ pub struct InitStep {
 }
 
 /// What of an entity's initial state an action sets or needs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 enum Aspect {
     Position,
     Speed,
@@ -70,32 +71,55 @@ struct Node<'a> {
 pub fn init_order(init: &Init) -> Result<Vec<InitStep>> {
     let nodes = nodes(init);
     let n = nodes.len();
-    // before[j] lists the nodes that must run before node j.
-    let mut before: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for (j, node) in nodes.iter().enumerate() {
-        // One entity's own actions in document order where they touch the same aspect.
-        let touches = node.touched();
-        before[j].extend((0..j).filter(|&i| {
-            nodes[i].entity == node.entity && !nodes[i].touched().is_disjoint(&touches)
-        }));
-        for &(entity, aspect) in &node.needs {
-            if entity == node.entity {
-                continue;
-            }
-            before[j].extend(
-                (0..n).filter(|&i| nodes[i].entity == entity && nodes[i].sets.contains(&aspect)),
-            );
+    // The actions setting each aspect of each entity.
+    let mut setters: HashMap<(&str, Aspect), Vec<usize>> = HashMap::new();
+    for (i, node) in nodes.iter().enumerate() {
+        for &aspect in &node.sets {
+            setters.entry((node.entity, aspect)).or_default().push(i);
         }
     }
+    // before[j]: the nodes that must run before node j. One entity's own actions in document
+    // order where they touch the same aspect: the latest earlier one for each aspect (the
+    // earlier ones come before that one in turn).
+    let mut before: Vec<Vec<usize>> = vec![Vec::new(); n];
+    let mut last_touch: HashMap<(&str, Aspect), usize> = HashMap::new();
+    for (j, node) in nodes.iter().enumerate() {
+        let touched = node.touched();
+        for &aspect in &touched {
+            if let Some(i) = last_touch.insert((node.entity, aspect), j) {
+                before[j].push(i);
+            }
+        }
+        for &(entity, aspect) in node.needs.iter().filter(|(e, _)| *e != node.entity) {
+            before[j].extend(setters.get(&(entity, aspect)).into_iter().flatten());
+        }
+        before[j].sort_unstable();
+        before[j].dedup();
+    }
+    // Kahn's algorithm, the ready node first in document order taken each time.
+    let mut waiting: Vec<usize> = before.iter().map(Vec::len).collect();
+    let mut after: Vec<Vec<usize>> = vec![Vec::new(); n];
+    for (j, list) in before.iter().enumerate() {
+        for &i in list {
+            after[i].push(j);
+        }
+    }
+    let mut ready: BinaryHeap<Reverse<usize>> =
+        (0..n).filter(|&j| waiting[j] == 0).map(Reverse).collect();
     let mut done = vec![false; n];
     let mut order = Vec::with_capacity(n);
-    while order.len() < n {
-        // The first node in document order whose prerequisites have all run.
-        let Some(next) = (0..n).find(|&j| !done[j] && before[j].iter().all(|&i| done[i])) else {
-            return Err(cycle_error(&nodes, &before, &done));
-        };
+    while let Some(Reverse(next)) = ready.pop() {
         done[next] = true;
         order.push(nodes[next].step);
+        for &j in &after[next] {
+            waiting[j] -= 1;
+            if waiting[j] == 0 {
+                ready.push(Reverse(j));
+            }
+        }
+    }
+    if order.len() < n {
+        return Err(cycle_error(&nodes, &before, &done));
     }
     Ok(order)
 }
