@@ -17,7 +17,12 @@
 //!   beside it that does continue is followed (one driven the same way first, then the left
 //!   one) and the count shifted by the lanes between them at the triggering entity. An entity whose place no followed lane reaches (another branch
 //!   of a junction) is not in the area. (issue 16 class 7)
-//! * `oppositeLanes` false ignores entities on lanes driven the other way.
+//! * `oppositeLanes` false ignores entities on lanes driven the other way ("otherwise only
+//!   lanes in the same direction are considered"), and a bounded `relativeLaneRange` whose
+//!   lanes at the triggering entity are all driven the other way specifies an area that does
+//!   not exist, so the condition is false (issue 34 class 4: range 1..1 beside a lane whose
+//!   left neighbour is the opposite carriageway). A range mixing both directions keeps its
+//!   lanes driven the triggering entity's way.
 //! * The longitudinal range is [−distanceBackward, distanceForward] (absent: 0, as the XSD
 //!   says) along the road in the direction the triggering entity faces, between reference
 //!   points, or between boxes with `freeSpace` (overlapping boxes are at 0), along the centre
@@ -89,16 +94,24 @@ pub(crate) fn clear<Q: EntityQuery + ?Sized>(
         -1
     };
     let own_dir = direction(network, &own.road_id, own.lane_id, own.s);
-    // The area must exist: every lane a bounded range names, on the entity's road at its s.
+    // The area must exist: every lane a bounded range names, on the entity's road at its s;
+    // with oppositeLanes false, a range whose lanes are all driven the other way names no lane
+    // that is considered, so its part of the area does not exist either.
     for &(from, to) in c.relative_lane_ranges {
         let (Some(from), Some(to)) = (from, to) else {
             continue;
         };
+        let mut considered = false;
         for k in from.min(to)..=from.max(to) {
             let lane = add_lanes(own.lane_id, travel * k);
             if network.lane_boundaries(&own.road_id, lane, own.s).is_err() {
                 return Ok(false);
             }
+            considered |=
+                c.opposite_lanes || direction(network, &own.road_id, lane, own.s) == own_dir;
+        }
+        if !considered {
+            return Ok(false);
         }
     }
     let measure = DistanceMeasure {
