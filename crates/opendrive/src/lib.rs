@@ -28,7 +28,7 @@
 //! - Data: [`Road`] (`id`, `length`, `junction`, `rule`, `links`, `types`, `plan_view`,
 //!   `elevation`, `superelevation`, `lane_offsets`, `lane_sections`, `objects`, `signals`),
 //!   [`LaneSection`] (`left` 1, 2, …; `center`; `right` −1, −2, …), [`Lane`] (with its
-//!   [`RoadMark`]s), [`Junction`],
+//!   [`RoadMark`]s), [`Junction`], [`Controller`] ([`RoadNetwork::controllers`]),
 //!   [`Header`]; [`RoadNetwork::bounding_box`] of all road surfaces.
 //!
 //! Semantics worth knowing: a lane pose's heading is the true (horizontal) tangent of the
@@ -75,7 +75,7 @@ pub use math::{
     SOLVER_TOLERANCE, S_TOLERANCE,
 };
 pub use model::{
-    is_drivable, Connection, ContactPoint, ElementType, GeoReference, Header, Junction,
+    is_drivable, Connection, ContactPoint, Controller, ElementType, GeoReference, Header, Junction,
     JunctionKind, Lane, LaneHeight, LaneLink, LaneSection, LaneType, Object, Offset, Road,
     RoadLink, RoadLinks, RoadMark, RoadMarkColor, RoadMarkLaneChange, RoadMarkLine, RoadMarkType,
     RoadType, Signal, Speed, TrafficRule,

@@ -7,7 +7,7 @@ use rustc_hash::FxHashMap;
 
 use crate::error::{Error, ErrorKind};
 use crate::handles::{JunctionHandle, RoadHandle, Topology};
-use crate::model::{Header, Junction, Road};
+use crate::model::{Controller, Header, Junction, Road};
 use crate::parse::{load, Loaded};
 use crate::road::SpatialIndex;
 
@@ -19,6 +19,7 @@ pub struct RoadNetwork {
     pub(crate) road_index: FxHashMap<String, usize>,
     pub(crate) junctions: Vec<Junction>,
     pub(crate) junction_index: FxHashMap<String, usize>,
+    pub(crate) controllers: Vec<Controller>,
     pub(crate) topology: Topology,
     pub(crate) spatial: SpatialIndex,
     pub(crate) warnings: Vec<Error>,
@@ -41,6 +42,7 @@ impl RoadNetwork {
             road_index,
             junctions,
             junction_index,
+            controllers,
             warnings,
         } = load(text, path)?;
         let spatial = SpatialIndex::build(&roads);
@@ -56,10 +58,21 @@ impl RoadNetwork {
             road_index,
             junctions,
             junction_index,
+            controllers,
             topology,
             spatial,
             warnings,
         })
+    }
+
+    /// The signal controllers (`<controller>`, OpenDRIVE 1.8 §14), in file order.
+    pub fn controllers(&self) -> &[Controller] {
+        &self.controllers
+    }
+
+    /// The controller with id `id`, if any (first of that id).
+    pub fn controller(&self, id: &str) -> Option<&Controller> {
+        self.controllers.iter().find(|c| c.id == id)
     }
 
     /// Problems the loader tolerated, each with file and position: junction lane links that

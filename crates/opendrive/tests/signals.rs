@@ -73,3 +73,36 @@ fn signal_lanes_follow_orientation_and_validity() {
         vec![vec![-1, -2], vec![1], vec![1, -1, -2], vec![-2, -3]]
     );
 }
+
+/// `<controller>` (OpenDRIVE 1.8 §14, "Controllers"): the signals it switches are its
+/// `<control signalId>` children, in file order; a `<control>` without `signalId` is an error at
+/// its position.
+#[test]
+fn controllers_list_the_signals_they_switch() {
+    let text = ROAD.replace("SIGNALS", "").replace(
+        "</road></OpenDRIVE>",
+        r#"</road><controller id="7" name="crossing"><control signalId="B" type="0"/><control signalId="A"/></controller>
+<controller id="8"/></OpenDRIVE>"#,
+    );
+    let net =
+        RoadNetwork::from_str(&text, Path::new("signals.xodr")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(net.controllers().len(), 2);
+    let c = net.controller("7").expect("controller 7");
+    assert_eq!(c.name, "crossing");
+    assert_eq!(c.signal_ids, vec!["B".to_string(), "A".to_string()]);
+    assert!(net
+        .controller("8")
+        .expect("controller 8")
+        .signal_ids
+        .is_empty());
+    assert!(net.controller("9").is_none());
+
+    let bad = text.replace(r#"<control signalId="A"/>"#, r#"<control type="0"/>"#);
+    let e = RoadNetwork::from_str(&bad, Path::new("signals.xodr")).expect_err("no signalId");
+    // Line 11 of the text; column 94 after `<signals></signals></road>`, the `<controller …>`
+    // start tag and the first `<control …/>` (19 + 7 + 35 + 32 = 93 characters).
+    assert_eq!(
+        e.to_string(),
+        "expected attribute `signalId` on <control>, found none at signals.xodr:11:94"
+    );
+}

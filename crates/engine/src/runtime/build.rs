@@ -58,8 +58,10 @@ pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Bu
         .filter(|p| !p.constraint_groups.is_empty())
         .map(|p| (p.name.clone(), p.constraint_groups.clone()))
         .collect();
-    world.signals =
-        crate::signals::Signals::new(&scenario.road_network.traffic_signal_controllers)?;
+    world.signals = crate::signals::Signals::new(
+        &scenario.road_network.traffic_signal_controllers,
+        world.network.controllers(),
+    )?;
     world.monitors = scenario
         .monitor_declarations
         .iter()

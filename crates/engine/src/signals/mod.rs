@@ -6,6 +6,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `schedule` | which phase each controller is in at a time: cycling, reference and delay, a phase set by an action |
+//! | `group` | the signals of a controller, which a phase's TrafficSignalGroupState sets |
 //! | `red_light` | run option `stop_at_red_lights`: vehicles stop at red vehicle lights (default and car-following controllers) |
 //!
 //! [`Signals`] keeps the live state: each controller's phase and each signal's state (the
@@ -16,6 +17,7 @@
 //! an event record (`kind` `trafficSignalController` with the phases, `trafficSignal` with the
 //! states), so a run's log shows when each light switched.
 
+mod group;
 mod red_light;
 mod schedule;
 
@@ -30,10 +32,11 @@ use schedule::Schedule;
 
 /// One controller's names and states, in the scenario's order.
 #[derive(Debug, Clone)]
-struct Controller {
-    name: String,
-    /// Phase names and their (signal id, state) lists.
-    phases: Vec<(String, Vec<(String, String)>)>,
+pub(crate) struct Controller {
+    pub(crate) name: String,
+    /// Phase names and their (signal id, state) lists (a TrafficSignalGroupState already
+    /// expanded to every signal of the controller, group.rs).
+    pub(crate) phases: Vec<(String, Vec<(String, String)>)>,
 }
 
 /// The traffic signal controllers of a run and the current state of every signal.
@@ -50,22 +53,19 @@ pub struct Signals {
 }
 
 impl Signals {
-    /// The controllers of a scenario (errors name the controller's or phase's file:line:col).
+    /// The controllers of a scenario (errors name the controller's or phase's file:line:col)
+    /// on a road network with `road_controllers` (its `<controller>`s, OpenDRIVE 1.8 §14).
     /// No phase is entered yet: [`Signals::advance`] at t = 0 enters the first ones.
-    pub(crate) fn new(controllers: &[TrafficSignalController]) -> Result<Self, Error> {
+    pub(crate) fn new(
+        controllers: &[TrafficSignalController],
+        road_controllers: &[opendrive::Controller],
+    ) -> Result<Self, Error> {
         let schedule = Schedule::new(controllers)?;
         Ok(Signals {
             controllers: controllers
                 .iter()
-                .map(|c| Controller {
-                    name: c.name.clone(),
-                    phases: c
-                        .phases
-                        .iter()
-                        .map(|p| (p.name.clone(), p.signal_states.clone()))
-                        .collect(),
-                })
-                .collect(),
+                .map(|c| group::phase_states(c, road_controllers))
+                .collect::<Result<_, _>>()?,
             schedule,
             current: vec![None; controllers.len()],
             states: SignalStates::default(),

@@ -166,7 +166,7 @@ fn bad_controllers_are_refused_with_their_position() {
 
 #[test]
 fn signals_record_phases_and_states_once_per_change() {
-    let mut s = Signals::new(&[traffic_light("A", None)]).unwrap();
+    let mut s = Signals::new(&[traffic_light("A", None)], &[]).unwrap();
     let mut log = Vec::new();
     s.advance(0.0, &mut log);
     s.advance(0.05, &mut log);
@@ -211,4 +211,49 @@ fn signals_record_phases_and_states_once_per_change() {
         err.to_string(),
         "expected a phase of controller 'A' (go, attention, stop), found 'blink' at signals.xosc:3:7"
     );
+}
+
+/// TrafficSignalGroupState (signals/group.rs): the group is the road network's controller of
+/// the same id (its signals in `<control>` order) followed by the signals the controller's
+/// TrafficSignalStates name; a phase with both forms applies its own states after the group's.
+#[test]
+fn a_group_state_sets_the_controllers_signals() {
+    let road = opendrive::Controller {
+        id: "A".into(),
+        name: String::new(),
+        signal_ids: vec!["R2".into(), "R1".into()],
+    };
+    let mut c = traffic_light("A", None);
+    c.phases[0].signal_states.clear();
+    c.phases[0].group_state = Some("off;off;on".into());
+    c.phases[1].group_state = Some("off;on;off".into());
+    c.phases[1].signal_states = vec![("R1".into(), "off;off;off".into())];
+    let mut s = Signals::new(&[c], &[road]).unwrap();
+    let mut log = Vec::new();
+    s.advance(0.0, &mut log);
+    // Phase go: group state on R2, R1 (road controller) and S1 (named in phase stop).
+    let states: Vec<(&str, &str)> = s.states().collect();
+    assert_eq!(
+        states,
+        [
+            ("R1", "off;off;on"),
+            ("R2", "off;off;on"),
+            ("S1", "off;off;on")
+        ]
+    );
+    // Phase attention at 8 s: the group state, then R1's own state.
+    s.advance(8.0, &mut log);
+    let states: Vec<(&str, &str)> = s.states().collect();
+    assert_eq!(
+        states,
+        [
+            ("R1", "off;off;off"),
+            ("R2", "off;on;off"),
+            ("S1", "off;on;off")
+        ]
+    );
+    // Phase stop at 10 s: no group state, only S1.
+    s.advance(10.0, &mut log);
+    assert_eq!(s.state("S1"), Some("on;off;off"));
+    assert_eq!(s.state("R2"), Some("off;on;off"));
 }

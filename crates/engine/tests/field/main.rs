@@ -12,6 +12,7 @@ mod support;
 mod against_s;
 mod clearance;
 mod empty_elements;
+mod group_state;
 mod init_together;
 mod jerk;
 mod other_suites;

@@ -45,18 +45,10 @@ fn starts(events: &[EventRecord], name: &str) -> Vec<f64> {
 
 /// (time, from, to) of every phase change of controller `name`.
 fn phases(events: &[EventRecord], name: &str) -> Vec<(f64, Option<String>, String)> {
-    events
-        .iter()
-        .filter_map(|e| match e {
-            EventRecord::Signal {
-                time,
-                element,
-                kind: SignalKind::Controller,
-                from,
-                to,
-            } if element == name => Some((*time, from.clone(), to.clone())),
-            _ => None,
-        })
+    runtime_support::signal_records(events, SignalKind::Controller)
+        .into_iter()
+        .filter(|(_, element, _, _)| element == name)
+        .map(|(time, _, from, to)| (time, from, to))
         .collect()
 }
 

@@ -1,5 +1,6 @@
 //! The typed OpenDRIVE data model, one file per part of the standard.
 
+mod controller;
 mod header;
 mod junction;
 mod lanes;
@@ -7,6 +8,7 @@ mod objects;
 mod road;
 mod road_mark;
 
+pub use controller::Controller;
 pub use header::{GeoReference, Header, Offset};
 pub use junction::{Connection, ContactPoint, Junction, JunctionKind, LaneLink};
 pub use lanes::{is_drivable, Lane, LaneHeight, LaneSection, LaneType};

@@ -1,5 +1,5 @@
-//! From `.xodr` text to the model: the `<OpenDRIVE>` root, `<header>`, every `<road>` and
-//! `<junction>` in file order, and the reference checks (OpenDRIVE 1.8 §8 file structure).
+//! From `.xodr` text to the model: the `<OpenDRIVE>` root, `<header>`, every `<road>`,
+//! `<junction>` and `<controller>` in file order, and the reference checks (OpenDRIVE 1.8 §8 file structure).
 //!
 //! Large files are read in parts, in parallel (rayon): the text is cut before top-level
 //! `<road>` / `<junction>` start tags into parts of about [`PART_BYTES`], each part is parsed
@@ -22,9 +22,11 @@ use roxmltree::{Document, ParsingOptions};
 use rustc_hash::FxHashMap;
 use source::SourcePos;
 
-use super::{check_references, child, read_header, read_junction, read_road, Ids, Reader};
+use super::{
+    check_references, child, read_controller, read_header, read_junction, read_road, Ids, Reader,
+};
 use crate::error::{Error, ErrorKind};
-use crate::model::{Header, Junction, Road};
+use crate::model::{Controller, Header, Junction, Road};
 
 /// Files below this size are read whole (bytes).
 const SPLIT_THRESHOLD: usize = 8 << 20;
@@ -40,6 +42,7 @@ pub(crate) struct Loaded {
     pub(crate) road_index: FxHashMap<String, usize>,
     pub(crate) junctions: Vec<Junction>,
     pub(crate) junction_index: FxHashMap<String, usize>,
+    pub(crate) controllers: Vec<Controller>,
     pub(crate) warnings: Vec<Error>,
 }
 
@@ -107,6 +110,11 @@ fn load_whole(text: &str, path: &Path) -> Result<Loaded, Error> {
         }
         junctions.push(j);
     }
+    let controllers = root
+        .children()
+        .filter(|n| n.has_tag_name("controller"))
+        .map(|n| read_controller(&r, n))
+        .collect::<Result<Vec<_>, _>>()?;
     warnings.extend(check_references(
         &r,
         root,
@@ -122,15 +130,17 @@ fn load_whole(text: &str, path: &Path) -> Result<Loaded, Error> {
         road_index,
         junctions,
         junction_index,
+        controllers,
         warnings,
     })
 }
 
-/// One part's roads, junctions and warnings; `header` only from the first part.
+/// One part's roads, junctions, controllers and warnings; `header` only from the first part.
 struct Part {
     header: Option<Header>,
     roads: Vec<Road>,
     junctions: Vec<Junction>,
+    controllers: Vec<Controller>,
     warnings: Vec<Error>,
 }
 
@@ -157,6 +167,7 @@ fn load_in_parts(text: &str, path: &Path, part_bytes: usize) -> Option<Loaded> {
         road_index: FxHashMap::default(),
         junctions: Vec::new(),
         junction_index: FxHashMap::default(),
+        controllers: Vec::new(),
         warnings: Vec::new(),
     };
     for part in parts {
@@ -166,6 +177,7 @@ fn load_in_parts(text: &str, path: &Path, part_bytes: usize) -> Option<Loaded> {
         }
         loaded.roads.extend(part.roads);
         loaded.junctions.extend(part.junctions);
+        loaded.controllers.extend(part.controllers);
         loaded.warnings.extend(part.warnings);
     }
     // Roads first, then junctions, as the whole-file reading orders them.
@@ -263,10 +275,15 @@ fn read_part_text(
     for node in root.children().filter(|n| n.has_tag_name("junction")) {
         junctions.push(read_junction(&r, node).ok()?);
     }
+    let mut controllers = Vec::new();
+    for node in root.children().filter(|n| n.has_tag_name("controller")) {
+        controllers.push(read_controller(&r, node).ok()?);
+    }
     Some(Part {
         header,
         roads,
         junctions,
+        controllers,
         warnings,
     })
 }

@@ -1,5 +1,6 @@
 //! Reading `.xodr` text into the data model, one file per part of the XSD.
 
+mod controller;
 mod header;
 mod junction;
 mod lanes;
@@ -8,6 +9,7 @@ mod reader;
 mod references;
 mod road;
 
+pub(crate) use controller::read_controller;
 pub(crate) use header::read_header;
 pub(crate) use junction::read_junction;
 pub(crate) use load::{load, Loaded};

@@ -128,3 +128,24 @@ pub fn monitor_values(events: &[EventRecord], name: &str) -> Vec<(f64, bool)> {
         })
         .collect()
 }
+
+/// (time, element, from, to) of every signal record of `kind` in the event log: phase changes
+/// of controllers or state changes of signals, in log order.
+pub fn signal_records(
+    events: &[EventRecord],
+    kind: engine::signals::SignalKind,
+) -> Vec<(f64, String, Option<String>, String)> {
+    events
+        .iter()
+        .filter_map(|e| match e {
+            EventRecord::Signal {
+                time,
+                element,
+                kind: k,
+                from,
+                to,
+            } if *k == kind => Some((*time, element.clone(), from.clone(), to.clone())),
+            _ => None,
+        })
+        .collect()
+}
