@@ -13,7 +13,8 @@ target/conformance/), compares each run that has an esmini reference
 docs/conformance.md: one line per scenario with the outcome, the worst position and speed
 errors over its entities, the events whose start time disagrees, and a hand-written reason
 read from docs/conformance-notes.tsv (scenario <TAB> reason; kept across regenerations, edited
-by hand). Options: --no-build (use the existing binary), --timeout SECONDS (per run, default
+by hand), and the table of readings of docs/conformance-readings.tsv (motion, the standard's
+text, esmini, oscsim, test). Options: --no-build (use the existing binary), --timeout SECONDS (per run, default
 120), --only NAME (substring filter, for quick checks: prints the rows and leaves
 docs/conformance.md alone unless --report is given), --bin PATH (the oscsim binary to run, e.g.
 target/debug/oscsim with --no-build), --out DIR (where runs are written, default
@@ -35,6 +36,7 @@ COMPARE = os.path.join(ROOT, "..", "shared", "tools", "compare_run.py")
 OUT = os.path.join(ROOT, "target", "conformance")
 BIN = os.path.join(ROOT, "target", "release", "oscsim")
 NOTES = os.path.join(ROOT, "docs", "conformance-notes.tsv")
+READINGS = os.path.join(ROOT, "docs", "conformance-readings.tsv")
 REPORT = os.path.join(ROOT, "docs", "conformance.md")
 SOURCES = [("esmini", "esmini/xosc"), ("generated", "generated/xosc")]
 
@@ -48,6 +50,16 @@ def read_notes():
             name, _, reason = line.rstrip("\n").partition("\t")
             notes[name.strip()] = reason.strip()
     return notes
+
+
+def read_readings():
+    rows = []
+    if os.path.exists(READINGS):
+        for line in open(READINGS, encoding="utf-8"):
+            if line.startswith("#") or not line.strip():
+                continue
+            rows.append([c.strip() for c in line.rstrip("\n").split("\t")])
+    return rows
 
 
 def last_error_line(text):
@@ -168,6 +180,9 @@ def controller_summary(path, events):
 
 
 def cell(text):
+    # Paths under the repository are shown relative to it, so the report does not depend on the
+    # worktree it was made in.
+    text = text.replace(ROOT + os.sep, "")
     return text.replace("|", "\\|").replace("\n", " ")
 
 
@@ -247,6 +262,17 @@ def main():
             ev = err or "–"
         reason = notes.get(name, "")
         out.append(f"| {source}/{name} | {verdict} | {pos} | {speed} | {cell(ev)} | {cell(reason)} |")
+    readings = read_readings()
+    if readings:
+        out.append("\nReadings where the motions differ or the standard is silent (issue 34; from "
+                   "`docs/conformance-readings.tsv`). Where the standard is silent oscsim follows "
+                   "esmini's de-facto behaviour unless it contradicts the text; where esmini departs "
+                   "from the text the text wins.\n")
+        out.append("| motion | the standard | esmini | oscsim | test |")
+        out.append("| --- | --- | --- | --- | --- |")
+        for r in readings:
+            r = (r + ["", "", "", "", ""])[:5]
+            out.append("| " + " | ".join(cell(c) for c in r) + " |")
     if all_unsupported:
         out.append("\nReported as unsupported or as an error in the event logs (conditions and "
                    "actions that read false or did nothing; message: scenarios):\n")

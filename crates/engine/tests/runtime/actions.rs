@@ -117,6 +117,38 @@ fn lane_offset_sinusoidal_duration_from_max_lateral_acc() {
     assert_abs_diff_eq!(frames.at("Ego", 2.0).h, share.asin(), epsilon = EXACT);
 }
 
+/// lane_offset_sinusoidal.xosc with continuous="true" (issue 34 class 5). XSD
+/// LaneOffsetAction.continuous: "If false, the action ends when the target lane offset is
+/// reached. If true it does not end but can only be stopped." The offset follows the same
+/// sinusoid (½ at 2.0 s, 1 at 3.0 s) and is then held; the action is still running when the
+/// stop trigger ends the run at 4 s (esmini ends it once the offset is reached: not followed).
+#[test]
+fn a_continuous_lane_offset_holds_the_offset_and_does_not_end() {
+    let (_, frames, events) = runtime_support::run_with(
+        &file("lane_offset_sinusoidal.xosc"),
+        &[("Continuous", "true")],
+        engine::EngineConfig::default(),
+    );
+    let offset = |time: f64| {
+        frames
+            .at("Ego", time)
+            .road
+            .as_ref()
+            .map_or(f64::NAN, |r| r.4)
+    };
+    assert_abs_diff_eq!(offset(2.0), 0.5, epsilon = EXACT);
+    for t in [3.0, 3.5, 4.0] {
+        assert_abs_diff_eq!(offset(t), 1.0, epsilon = EXACT);
+    }
+    // The action ends only with the storyboard's stop at 4 s (a stop transition, no earlier
+    // end); with continuous false it ends in the step that reaches 1.0 m, [2.95, 3.0] s,
+    // logged at that step's start.
+    assert_eq!(runtime_support::end_time(&events, "Action"), None);
+    let (_, _, once) = run("lane_offset_sinusoidal.xosc");
+    let end = runtime_support::end_time(&once, "Action").expect("ends");
+    assert_abs_diff_eq!(end, 2.95, epsilon = EXACT);
+}
+
 /// trajectory_reverse.xosc: Init sets −5 m/s, then FollowTrajectoryAction (no time reference)
 /// on the polyline (20, 50) → (40, 50), 20 m long with tangent +x, 50 m off the road. Reverse
 /// gear: Ego travels the polyline from its start at |v| = 5 m/s, facing against the tangent
