@@ -10,6 +10,7 @@ mod runtime_support;
 mod support;
 
 mod against_s;
+mod asam_examples;
 mod clearance;
 mod empty_elements;
 mod group_state;
