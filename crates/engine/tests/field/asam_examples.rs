@@ -13,6 +13,12 @@
 //! starts on the rising edge of DistanceCondition > 20 m (road coordinates, default
 //! relativeDistanceType euclidianDistance: d = √(Δs² + Δt²), Δt = 3.4 m) to Ego, and changes
 //! to Ego's lane (RelativeTargetLane value 0) at offset −0.05 over 55 m.
+//!
+//! `asam_sequential_events.xosc` (after SequentialEvents_0-100-0kph_Explicit): events ordered
+//! by StoryboardElementStateCondition, a braking SpeedAction whose rate is written −4.0 as in
+//! the example (the XSD range of TransitionDynamics@value is [0..inf[; oscsim reads a rate by
+//! its magnitude, the direction being the target's), and a stop trigger 3 s after an
+//! endTransition.
 
 use engine::storyboard::Transition;
 
@@ -66,4 +72,33 @@ fn cut_in_equivalent_places_relative_to_ego_and_cuts_in_on_the_rising_edge() {
     for t in [45.0, 48.0] {
         assert!((rows.at("A2", t).y + 8.5).abs() < POS_TOL);
     }
+}
+
+#[test]
+fn sequential_events_equivalent_accelerates_then_brakes_then_stops_the_run() {
+    let (_, rows, events) = run("asam_sequential_events.xosc", &[]);
+    // The Act and Accelerate start at the first step with SimulationTime > 0, 0.05 s. The speed
+    // rises by 4 · 0.05 = 0.2 m/s a step and reaches 27.78 m/s at 0.05 + 27.78 / 4 = 6.995 s,
+    // inside the step [6.95, 7.0], whose start is the logged end.
+    let at = |name: &str, t: Transition| transitions(&events, name, t);
+    assert!((at("Accelerate", Transition::Start)[0] - 0.05).abs() < TIME_TOL);
+    assert!((at("Accelerate", Transition::End)[0] - 6.95).abs() < TIME_TOL);
+    // Brake's rising edge of completeState is seen at the next step's start, 7.0 s.
+    assert!((at("Brake", Transition::Start)[0] - 7.0).abs() < TIME_TOL);
+    // The engine moves each step at the speed it reaches at the step's end: steps k = 1..138
+    // at 0.2·k m/s and step 139 at 27.78 m/s, 0.05 s each: s(7.0) = 20 + 0.05·(0.2·138·139/2
+    // + 27.78) = 20 + 97.299 = 117.299 m.
+    let r = rows.at("Ego", 7.0);
+    assert!((r.x - 117.299).abs() < POS_TOL && (r.speed - 27.78).abs() < POS_TOL);
+    // The rate −4.0 brakes at 4 m/s²: 27.78 − 0.4 = 27.38 m/s at 7.1 s; at rest at
+    // 7.0 + 27.78 / 4 = 13.945 s, in the step [13.90, 13.95].
+    assert!((rows.at("Ego", 7.1).speed - 27.38).abs() < POS_TOL);
+    assert!((at("Brake", Transition::End)[0] - 13.90).abs() < TIME_TOL);
+    assert!(rows.at("Ego", 14.0).speed.abs() < POS_TOL);
+    // The stop trigger sees the endTransition at the step starting 13.95 s (triggers see the
+    // storyboard as the step began), holds it for its delay of 3 s: the storyboard stops at
+    // 16.95 s.
+    let stop = at("storyBoard", Transition::Stop);
+    assert_eq!(stop.len(), 1, "{stop:?}");
+    assert!((stop[0] - 16.95).abs() < TIME_TOL, "{stop:?}");
 }
