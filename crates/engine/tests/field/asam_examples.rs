@@ -19,6 +19,14 @@
 //! the example (the XSD range of TransitionDynamics@value is [0..inf[; oscsim reads a rate by
 //! its magnitude, the direction being the target's), and a stop trigger 3 s after an
 //! endTransition.
+//!
+//! `asam_close_crossing.xosc` (after CloseVehicleCrossing): a catalog trajectory (timed
+//! Polyline (100, 50) → (100, −50) in 10 s, `asam_catalogs/`), TrajectoryPosition placements
+//! in the Init, FollowTrajectoryAction with `initialDistanceOffset` and relative Timing, Events
+//! with an empty `<StartTrigger/>` (they start with their Act) and an empty storyboard
+//! `<StopTrigger/>`. Where relative Timing meets an initial distance offset the standard is
+//! silent; oscsim starts at the offset's point and runs the trajectory's clock on from that
+//! point's time (10 m along = 1 s), so the two cars keep their 10 m gap.
 
 use engine::storyboard::Transition;
 
@@ -101,4 +109,49 @@ fn sequential_events_equivalent_accelerates_then_brakes_then_stops_the_run() {
     let stop = at("storyBoard", Transition::Stop);
     assert_eq!(stop.len(), 1, "{stop:?}");
     assert!((stop[0] - 16.95).abs() < TIME_TOL, "{stop:?}");
+}
+
+#[test]
+fn close_crossing_equivalent_follows_the_catalog_trajectory_from_its_offsets() {
+    let (_, rows, events) = crate::runtime_support::run_with(
+        &crate::support::file("asam_close_crossing.xosc"),
+        &[],
+        engine::EngineConfig {
+            duration: Some(12.0),
+            ..engine::EngineConfig::default()
+        },
+    );
+    // Init: TrajectoryPosition s = 10 and 0 on the line x = 100 going −y from y = 50.
+    for (name, y) in [("A1", 40.0), ("A2", 50.0)] {
+        let r = rows.at(name, 0.0);
+        assert!(
+            (r.x - 100.0).abs() < POS_TOL && (r.y - y).abs() < POS_TOL,
+            "{name}"
+        );
+        assert!(
+            (r.h + std::f64::consts::FRAC_PI_2).abs() < POS_TOL,
+            "{name}"
+        );
+    }
+    // Both Acts start at 0.05 s (the rising edge of SimulationTime > 0), their Events and
+    // actions with them (empty StartTrigger). From then y = y0 − 10·(t − 0.05): A1 at
+    // 40 − 9.5 = 30.5 and A2 at 50 − 9.5 = 40.5 at 1.0 s.
+    for (name, y0) in [("A1", 40.0), ("A2", 50.0)] {
+        let start = transitions(&events, &format!("{name}_Follow"), Transition::Start);
+        assert_eq!(start.len(), 1);
+        assert!((start[0] - 0.05).abs() < TIME_TOL, "{name} {start:?}");
+        for t in [0.1, 1.0, 5.0] {
+            assert!(
+                (rows.at(name, t).y - (y0 - 10.0 * (t - 0.05))).abs() < POS_TOL,
+                "{name} {t}"
+            );
+        }
+    }
+    // The trajectory's last time, 10 s, is reached at 9.05 s by A1 (which began at 1 s of it)
+    // and at 10.05 s by A2: ends logged at the starts of those steps, 9.0 and 10.0 s.
+    for (name, end) in [("A1", 9.0), ("A2", 10.0)] {
+        let e = transitions(&events, &format!("{name}_Follow"), Transition::End);
+        assert_eq!(e.len(), 1);
+        assert!((e[0] - end).abs() < TIME_TOL, "{name} {e:?}");
+    }
 }
