@@ -27,6 +27,16 @@
 //! `<StopTrigger/>`. Where relative Timing meets an initial distance offset the standard is
 //! silent; oscsim starts at the offset's point and runs the trajectory's clock on from that
 //! point's time (10 m along = 1 s), so the two cars keep their 10 m gap.
+//!
+//! `asam_trailer_connect.xosc` (after the 1.3 TrailerConnect): an empty `<RoadNetwork/>`, the
+//! 1.0 priority literal "overwrite" (read as override with a warning), FollowTrajectoryAction
+//! with its deprecated direct `<Trajectory>` child (a Clothoid starting at the car, turned by
+//! π: reverse gear at −4 m/s), Connect/DisconnectTrailerAction chained by
+//! StoryboardElementStateConditions with delays. The example's car reaches the trailer's
+//! coupler exactly at its trajectory's end, and nothing in it stops the car there: the
+//! FollowTrajectoryAction ends, the SpeedAction's −4 m/s stays (issue 34: esmini stops a
+//! vehicle whose trajectory ends with no road under it; the standard does not, and oscsim
+//! does not), so by the connection 2 s later the car has backed on by 8.15 m.
 
 use engine::storyboard::Transition;
 
@@ -154,4 +164,47 @@ fn close_crossing_equivalent_follows_the_catalog_trajectory_from_its_offsets() {
         assert_eq!(e.len(), 1);
         assert!((e[0] - end).abs() < TIME_TOL, "{name} {e:?}");
     }
+}
+
+#[test]
+fn trailer_connect_equivalent_backs_to_the_coupler_and_drives_on() {
+    let (_, rows, events) = run("asam_trailer_connect.xosc", &[]);
+    use std::f64::consts::{FRAC_PI_2, PI};
+    let at = |name: &str, t: Transition| transitions(&events, name, t);
+    // The Act starts at 2 s; Reverse (SimulationTime ≥ 1) with it. The Clothoid (curvature
+    // −1/12, length π·12/2 = 18.850 m) starts at the car (−10.3, 30.2) heading π + π = 0 and
+    // turns right about (−10.3, 18.2) to (1.7, 18.2), tangent −π/2; in reverse gear the car
+    // faces against it, h = π/2. At 4 m/s the 18.850 m take 4.712 s: the end at 6.712 s, in
+    // the step [6.70, 6.75].
+    assert!((at("Reverse", Transition::Start)[0] - 2.0).abs() < TIME_TOL);
+    assert!((at("Reverse", Transition::End)[0] - 6.70).abs() < TIME_TOL);
+    let arc = 0.5 * PI * 12.0;
+    let t_end = 2.0 + arc / 4.0;
+    for t in [6.75, 6.8, 8.75] {
+        let r = rows.at("Car", t);
+        // Past the end the car backs on along h = π/2 at 4 m/s (it moves towards −y).
+        let y = 18.2 - 4.0 * (t - t_end);
+        assert!(
+            (r.x - 1.7).abs() < 1e-6 && (r.y - y).abs() < 1e-6,
+            "{t}: {} {}",
+            r.x,
+            r.y
+        );
+        assert!((r.h - FRAC_PI_2).abs() < 1e-6 && (r.speed + 4.0).abs() < 1e-9);
+    }
+    // At the trajectory's end the hitch (1 m behind the car, 17.2) was on the trailer's coupler
+    // (3.7 m ahead of its axle at 13.5): the example's meeting point.
+    let (hitch, coupler): (f64, f64) = (18.2 - 1.0, 13.5 + 3.7);
+    assert!((hitch - coupler).abs() < 1e-12);
+    // An end reached in a step's action stage is seen by the next step's triggers; a start
+    // made in a step's trigger stage by the triggers evaluated after it in the same stage.
+    // Hook: Reverse's end (step 6.70) seen at 6.75, + 2 s = 8.75 s. Forward: Hook's end (the
+    // instantaneous ConnectTrailerAction ends in step 8.75) seen at 8.80, + 2 s = 10.80 s.
+    // Unhook: Forward's start at 10.80 s seen in that stage, + 4 s = 14.80 s.
+    assert!((at("Hook", Transition::Start)[0] - 8.75).abs() < TIME_TOL);
+    assert!((at("Forward", Transition::Start)[0] - 10.80).abs() < TIME_TOL);
+    assert!((at("Unhook", Transition::Start)[0] - 14.80).abs() < TIME_TOL);
+    // Forward: +4 m/s from 10.80 s along h = π/2: y(11.8) = y(10.8) + 4.
+    let (a, b) = (rows.at("Car", 10.8).y, rows.at("Car", 11.8).y);
+    assert!((b - a - 4.0).abs() < 1e-6);
 }
