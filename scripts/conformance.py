@@ -14,7 +14,8 @@ docs/conformance.md: one line per scenario with the outcome, the worst position 
 errors over its entities, the events whose start time disagrees, and a hand-written reason
 read from docs/conformance-notes.tsv (scenario <TAB> reason; kept across regenerations, edited
 by hand), and the table of readings of docs/conformance-readings.tsv (motion, the standard's
-text, esmini, oscsim, test). Options: --no-build (use the existing binary), --timeout SECONDS (per run, default
+text, esmini, oscsim, test) and of docs/conformance-asam-examples.tsv (ASAM's examples and their
+equivalents). Options: --no-build (use the existing binary), --timeout SECONDS (per run, default
 120), --only NAME (substring filter, for quick checks: prints the rows and leaves
 docs/conformance.md alone unless --report is given), --bin PATH (the oscsim binary to run, e.g.
 target/debug/oscsim with --no-build), --out DIR (where runs are written, default
@@ -37,6 +38,7 @@ OUT = os.path.join(ROOT, "target", "conformance")
 BIN = os.path.join(ROOT, "target", "release", "oscsim")
 NOTES = os.path.join(ROOT, "docs", "conformance-notes.tsv")
 READINGS = os.path.join(ROOT, "docs", "conformance-readings.tsv")
+EXAMPLES = os.path.join(ROOT, "docs", "conformance-asam-examples.tsv")
 REPORT = os.path.join(ROOT, "docs", "conformance.md")
 SOURCES = [("esmini", "esmini/xosc"), ("generated", "generated/xosc")]
 
@@ -52,10 +54,10 @@ def read_notes():
     return notes
 
 
-def read_readings():
+def read_readings(path=READINGS):
     rows = []
-    if os.path.exists(READINGS):
-        for line in open(READINGS, encoding="utf-8"):
+    if os.path.exists(path):
+        for line in open(path, encoding="utf-8"):
             if line.startswith("#") or not line.strip():
                 continue
             rows.append([c.strip() for c in line.rstrip("\n").split("\t")])
@@ -272,6 +274,17 @@ def main():
         out.append("| --- | --- | --- | --- | --- |")
         for r in readings:
             r = (r + ["", "", "", "", ""])[:5]
+            out.append("| " + " | ".join(cell(c) for c in r) + " |")
+    examples = read_readings(EXAMPLES)
+    if examples:
+        out.append("\nASAM's own examples of OpenSCENARIO 1.2 and 1.3 (from "
+                   "`docs/conformance-asam-examples.tsv`): the files are not in the repository "
+                   "(no licence statement for redistribution in most of them); equivalents written "
+                   "for the project keep the constructs each depends on.\n")
+        out.append("| example | constructs | equivalent |")
+        out.append("| --- | --- | --- |")
+        for r in examples:
+            r = (r + ["", "", ""])[:3]
             out.append("| " + " | ".join(cell(c) for c in r) + " |")
     if all_unsupported:
         out.append("\nReported as unsupported or as an error in the event logs (conditions and "
