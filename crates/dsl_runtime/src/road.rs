@@ -124,6 +124,11 @@ impl PlanRoad<'_> {
         })
     }
 
+    /// World x and y of the road point (s, t), if s is on the road.
+    pub(crate) fn world(&self, s: f64, t: f64) -> Option<(f64, f64)> {
+        self.road.pose(s, t).ok().map(|p| (p.x, p.y))
+    }
+
     /// Width of lane `lane` at `s` (m); 0 where the lane is missing.
     pub(crate) fn lane_width(&self, lane: i32, s: f64) -> f64 {
         let s = s.clamp(0.0, self.road.length);

@@ -68,6 +68,8 @@ pub(crate) struct Track {
     s0: f64,
     v0: f64,
     stretches: Vec<Stretch>,
+    /// (time, distance added): jumps of a teleport.
+    jumps: Vec<(f64, f64)>,
     /// (time from which, lane id).
     lanes: Vec<(f64, i32)>,
     /// (time from which, offset from the lane centre, m).
@@ -83,6 +85,7 @@ impl Track {
             s0: s,
             v0: v,
             stretches: Vec::new(),
+            jumps: Vec::new(),
             lanes: vec![(0.0, lane)],
             offsets: vec![(0.0, 0.0)],
             moves: Vec::new(),
@@ -123,7 +126,19 @@ impl Track {
     /// s and speed at time `t` (≥ 0).
     pub(crate) fn at(&self, t: f64) -> (f64, f64) {
         let (s, v, _) = self.state(t);
-        (s, v)
+        let jumped: f64 = self
+            .jumps
+            .iter()
+            .filter(|(from, _)| *from <= t)
+            .map(|(_, d)| d)
+            .sum();
+        (s + jumped, v)
+    }
+
+    /// At time `t` the actor is put `d` further along (a teleport); later jumps are dropped.
+    pub(crate) fn jump(&mut self, t: f64, d: f64) {
+        self.jumps.retain(|(from, _)| *from < t);
+        self.jumps.push((t, d));
     }
 
     /// Acceleration at time `t` (m/s²): of the stretch under way, else 0 (the speed holds).

@@ -34,36 +34,15 @@ impl Planner<'_> {
         out: &mut Vec<Planned>,
         persist: &mut Vec<Planned>,
     ) -> Result<Option<When>, Error> {
-        match inv.kind {
-            Action::Other => {
-                return Err(p.site.err(
-                    K::Unsupported,
-                    format!(
-                        "expected a movement action of the standard library (§8.8), found `{}`, an action the program declares (actions with a body of their own are not run)",
-                        inv.action
-                    ),
-                ))
-            }
-            Action::Move
-            | Action::ChangeSpeed
-            | Action::AssignSpeed
-            | Action::KeepSpeed
-            | Action::RemainStationary
-            | Action::AssignAcceleration
-            | Action::ChangeAcceleration
-            | Action::KeepAcceleration
-            | Action::ChangeLane
-            | Action::FollowLane
-            | Action::ChangeSpaceGap
-            | Action::KeepSpaceGap
-            | Action::ChangeTimeHeadway
-            | Action::KeepTimeHeadway => {}
-            _ => {
-                return Err(p.site.err(
-                    K::Unsupported,
-                    format!("expected a movement action the runtime plans, found `{}` (not run yet)", inv.action),
-                ))
-            }
+        // Every action of the standard library is planned; one the program declares is not.
+        if inv.kind == Action::Other {
+            return Err(p.site.err(
+                K::Unsupported,
+                format!(
+                    "expected a movement action of the standard library (§8.8), found `{}`, an action the program declares (actions with a body of their own are not run)",
+                    inv.action
+                ),
+            ));
         }
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),
@@ -134,6 +113,12 @@ impl Planner<'_> {
                 | Action::KeepSpaceGap
                 | Action::ChangeTimeHeadway
                 | Action::KeepTimeHeadway => self.plan_gap_action(p, inv, slot, &mut name)?,
+                Action::FollowTrajectory | Action::FollowPath => {
+                    self.plan_trajectory_action(p, inv, slot, &mut name)?
+                }
+                Action::AssignPosition | Action::AssignOrientation | Action::ChangePosition => {
+                    self.plan_position_action(p, inv, slot, &mut name)?
+                }
                 _ => self.plan_speed_action(p, inv, slot, &mut name)?,
             };
             derived = all_of(derived, action_end);

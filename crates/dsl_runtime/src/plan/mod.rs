@@ -52,6 +52,8 @@
 //! | `action_args` | a §8.8 action's `rate_profile`, `rate_peak`, `duration` and the dynamics they give |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
+//! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
+//! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
@@ -75,9 +77,11 @@ mod lateral_actions;
 mod motion;
 mod place;
 mod planner;
+mod position_actions;
 mod route;
 mod schedule;
 mod speed_actions;
+mod trajectory_actions;
 mod types;
 
 use events::EventCtx;

@@ -11,6 +11,7 @@
 //! | `objects` | physical objects (vehicles, persons, animals, located stationary objects) and vehicle groups with their fields (§8.7, §8.7.18) |
 //! | `route` | `along(…)` routes (§8.9, §8.12) |
 //! | `modifier` | movement modifiers (§8.9) |
+//! | `position` | places and orientations of the position actions (§8.8.2.4, §8.8.2.5, §8.8.2.11) |
 //! | `cond` | conditions and event specifications (§7.3.10, §8.7 methods) |
 //! | `tree` | the `do` tree as phases with paths (§7.3.9) |
 
@@ -18,6 +19,7 @@ mod cond;
 mod eval;
 mod modifier;
 mod objects;
+mod position;
 mod route;
 mod tree;
 mod value;
@@ -33,6 +35,7 @@ use dsl::CheckedProgram;
 pub(crate) use cond::{Cond, Timed};
 pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
+pub(crate) use position::{Place, PlaceArg};
 pub(crate) use route::{Along, Route};
 pub(crate) use tree::{Action, Invoke, Kind, Phase};
 pub(crate) use value::{arg, Arg, Draws, Val};

@@ -147,42 +147,15 @@ fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
             if method.text != "create_odr_point" {
                 return Err(unsupported(&format!("map.{}(…)", method.text)));
             }
-            let params: Vec<String> = ["road_id", "lane_id", "s", "t"]
-                .iter()
-                .map(|s| s.to_string())
-                .collect();
-            let bound = bind(args, &params);
-            let arg = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
-            let text = |n: &str| -> Result<String, Error> {
-                let a = arg(n).ok_or_else(|| {
-                    ctx.files.err(
-                        K::Value,
-                        e.span,
-                        format!("expected `{n}` in create_odr_point(…), found none"),
-                    )
-                })?;
-                string(ctx, a)
-            };
-            let road = text("road_id")?;
-            let lane_text = text("lane_id")?;
-            let lane: i32 = lane_text.trim().parse().map_err(|_| {
-                ctx.files.err(
-                    K::Value,
-                    arg("lane_id").map_or(e.span, |a| a.span),
-                    format!("expected an OpenDRIVE lane id (an integer) in lane_id, found {lane_text:?}"),
-                )
-            })?;
-            let s = arg("s").map(|a| ctx.number(a)).transpose()?.unwrap_or(0.0);
-            if let Some(t) = arg("t") {
-                let t = ctx.number(t)?;
-                if t != 0.0 {
-                    return Err(ctx.files.err(
-                        K::Unsupported,
-                        arg("t").map_or(e.span, |a| a.span),
-                        format!("expected t = 0 m (a route runs along the lane's centre line), found {t} m; use lateral(…) for an offset"),
-                    ));
-                }
+            let p = odr_point(ctx, e, args)?;
+            if p.t != 0.0 {
+                return Err(ctx.files.err(
+                    K::Unsupported,
+                    p.t_span,
+                    format!("expected t = 0 m (a route runs along the lane's centre line), found {} m; use lateral(…) for an offset", p.t),
+                ));
             }
+            let (road, lane, s) = (p.road, p.lane, p.s);
             Ok(Route::Lane { road, lane, s })
         }
         ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
@@ -210,6 +183,80 @@ fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
         }
         _ => Err(unsupported("an expression")),
     }
+}
+
+/// A `map.create_odr_point(road_id, lane_id, s, t)` call, read.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct OdrPoint {
+    /// OpenDRIVE road id.
+    pub road: String,
+    /// OpenDRIVE lane id.
+    pub lane: i32,
+    /// s (m).
+    pub s: f64,
+    /// t (m), from the lane's centre.
+    pub t: f64,
+    /// Where `t` is written (the call without one).
+    pub t_span: dsl::semantics::hir::Span,
+}
+
+/// The arguments `args` of the call `e` of `map.create_odr_point(road_id, lane_id, s, t)`.
+pub(crate) fn odr_point(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    args: &[dsl::semantics::hir::Arg],
+) -> Result<OdrPoint, Error> {
+    let params: Vec<String> = ["road_id", "lane_id", "s", "t"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    let bound = bind(args, &params);
+    let arg = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+    let text = |n: &str| -> Result<String, Error> {
+        let a = arg(n).ok_or_else(|| {
+            ctx.files.err(
+                K::Value,
+                e.span,
+                format!("expected `{n}` in create_odr_point(…), found none"),
+            )
+        })?;
+        string(ctx, a)
+    };
+    let road = text("road_id")?;
+    let lane_text = text("lane_id")?;
+    let lane: i32 = lane_text.trim().parse().map_err(|_| {
+        ctx.files.err(
+            K::Value,
+            arg("lane_id").map_or(e.span, |a| a.span),
+            format!("expected an OpenDRIVE lane id (an integer) in lane_id, found {lane_text:?}"),
+        )
+    })?;
+    let s = arg("s").map(|a| ctx.number(a)).transpose()?.unwrap_or(0.0);
+    let t = arg("t").map(|a| ctx.number(a)).transpose()?.unwrap_or(0.0);
+    Ok(OdrPoint {
+        road,
+        lane,
+        s,
+        t,
+        t_span: arg("t").map_or(e.span, |a| a.span),
+    })
+}
+
+/// Whether `e` is a call of a method of a `map` field: the method's name and arguments.
+pub(crate) fn map_call<'e>(
+    ctx: &Ctx<'_>,
+    e: &'e Expr,
+) -> Option<(&'e str, &'e [dsl::semantics::hir::Arg])> {
+    let ExprKind::Call(callee, args) = &e.kind else {
+        return None;
+    };
+    let ExprKind::Field(obj, method) = &callee.kind else {
+        return None;
+    };
+    ctx.path_of(obj)
+        .and_then(|p| ctx.lookup(&p))
+        .is_some_and(|(_, v)| matches!(v, Value::RunTime(t) if is_a(ctx, t, "map")))
+        .then_some((method.text.as_str(), args.as_slice()))
 }
 
 /// Whether type `ty` is `sup` or inherits from it.

@@ -19,6 +19,7 @@ use dsl::semantics::types::{CompoundId, Ty};
 use super::cond::{self, every_args, Cond};
 use super::eval::{Eval, Frame};
 use super::modifier::{self, Modifier};
+use super::position::{self, PlaceArg};
 use super::value::{Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
@@ -72,6 +73,9 @@ pub(crate) struct Invoke {
     /// The action's arguments by parameter name (positional ones bound in declaration order,
     /// own parameters first, as the checker binds them).
     pub args: Args,
+    /// Its position and orientation arguments, read (`assign_position`, `change_position`,
+    /// `assign_orientation`).
+    pub places: Vec<PlaceArg>,
     /// Modifiers in order: those written, then those its semantic clarification implies
     /// (`remain_stationary()` is `move() with: keep_position()`, §8.8.2.10).
     pub modifiers: Vec<Modifier>,
@@ -336,6 +340,7 @@ fn build(
                 ));
             };
             let (kind, params) = action_params(ev, &actor_path, &name.text);
+            let places = position::read(ev, kind, args, &params)?;
             let args = ev.args(args, &params);
             let mut duration = None;
             let mut until = None;
@@ -398,6 +403,7 @@ fn build(
                     action: name.text.clone(),
                     kind,
                     args,
+                    places,
                     modifiers,
                 }),
                 duration,

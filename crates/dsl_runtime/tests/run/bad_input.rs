@@ -111,3 +111,55 @@ fn gap_actions_without_a_reference_sideways_or_followed_at_a_planned_time() {
         ],
     );
 }
+
+#[test]
+fn assign_position_without_or_with_two_places_or_off_the_road() {
+    expect(
+        "err_assign_position_none",
+        "4:8",
+        &["expected a position, route_point or odr_point in assign_position(…) (one is mandatory), found none"],
+    );
+    expect(
+        "err_assign_position_two",
+        "6:52",
+        &["expected one of position, route_point and odr_point in assign_position(…), found `position` and `odr_point`"],
+    );
+    expect(
+        "err_assign_orientation_none",
+        "4:8",
+        &["expected a target in assign_orientation(…) (a mandatory argument, an orientation_3d), found none"],
+    );
+    expect(
+        "err_assign_orientation_moving",
+        "11:9",
+        &["expected `ego` standing at the start of assign_orientation(…) (a moving vehicle follows its lane), found it at 10.00 m/s"],
+    );
+    expect(
+        "err_assign_position_off",
+        "5:39",
+        &["expected a place in a driving lane of road 1, found s = 120.00 m, lane -4 outside them"],
+    );
+}
+
+#[test]
+fn change_position_with_a_smooth_interpolation() {
+    expect(
+        "err_change_position_smooth",
+        "5:31",
+        &["expected interpolation: straight_line"],
+    );
+}
+
+#[test]
+fn follow_path_and_a_trajectory_without_its_times() {
+    expect(
+        "err_follow_path",
+        "5:24",
+        &["expected a path the runtime can follow, found follow_path(…)"],
+    );
+    expect(
+        "err_follow_trajectory_times",
+        "7:30",
+        &["expected two or more points with as many rising time stamps, found 3 points and 2 time stamps"],
+    );
+}

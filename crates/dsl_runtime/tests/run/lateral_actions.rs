@@ -77,3 +77,31 @@ fn follow_lane_moves_to_its_offset_and_holds_it() {
     assert_eq!(end.lane, -2);
     phase(&r, "do", 0.0, 6.0);
 }
+
+/// The group form: each member does the action (docs/dsl.md).
+#[test]
+fn a_group_changes_lane_member_by_member() {
+    let r = run("actions/group_change_lane", 0, None);
+    for name in ["g.vehicles[0]", "g.vehicles[1]"] {
+        close(r.at(2.0, name).y, -7.0, "y(2)");
+        let end = r.at(4.0, name);
+        close(end.y, -5.25, "y(4)");
+        assert_eq!(end.lane, -2);
+    }
+    phase(&r, "do", 0.0, 4.0);
+}
+
+#[test]
+fn change_lane_asap_is_at_the_lateral_limit() {
+    let r = run("actions/change_lane_asap", 0, None);
+    let span = PI * (3.5f64 / 20.0).sqrt();
+    let y = |t: f64| -8.75 + 3.5 * (1.0 - (PI * t / span).cos()) / 2.0;
+    // Peak lateral acceleration of the sinusoid: the vehicle's 10 m/s².
+    assert!((PI * PI * 3.5 / (2.0 * span * span) - 10.0).abs() < 1e-9);
+    for t in [0.3, 0.65, 1.0] {
+        close(r.at(t, "ego").y, y(t), &format!("y({t})"));
+    }
+    phase(&r, "do.0", 0.0, 1.35);
+    close(r.at(1.35, "ego").y, -5.25, "y(1.35)");
+    phase(&r, "do.1", 1.35, 2.35);
+}

@@ -13,6 +13,7 @@ mod lane_side;
 mod lateral;
 mod lateral_actions;
 mod orientation;
+mod position_actions;
 mod reuse;
 mod speed_actions;
 mod support;

@@ -188,3 +188,32 @@ fn an_assigned_acceleration_holds_until_a_speed_action() {
     assert_eq!(r.phase("do.0"), (0.0, 0.0));
     assert_eq!(r.phase("do.2"), (7.0, 9.0));
 }
+
+/// The group form: each member does the action (docs/dsl.md).
+#[test]
+fn a_group_changes_speed_member_by_member() {
+    let r = run("actions/group_change_speed", 0, None);
+    for (i, s0) in [100.0, 85.0].into_iter().enumerate() {
+        let name = format!("g.vehicles[{i}]");
+        assert!((r.at(0.0, &name).s - s0).abs() < 1e-6);
+        close(r.at(1.0, &name).speed, 15.0, "v(1)");
+        close(r.at(2.0, &name).speed, 20.0, "v(2)");
+    }
+    let gap = r.at(2.0, "g.vehicles[0]").s - r.at(2.0, "g.vehicles[1]").s;
+    close(gap, 15.0, "gap(2)");
+    assert_eq!(r.phase("do.0"), (0.0, 2.0));
+}
+
+/// §8.8.2.3 `move()`: a vehicle moves as its modifiers say.
+#[test]
+fn move_changes_speed_as_its_modifiers_say() {
+    let r = run("actions/move_vehicle", 0, None);
+    let v = |t: f64| 10.0 + 2.0 * t.min(3.0);
+    close(r.at(1.5, "ego").speed, 13.0, "v(1.5)");
+    close(r.at(3.0, "ego").speed, 16.0, "v(3)");
+    // 59 m exactly, and the lead 6 m/s · dt/2 of the engine's steps.
+    close(20.0 + stepped(v, 0.0, 3.0), 59.0 + 0.15, "hand sum");
+    close(r.at(3.0, "ego").s, 20.0 + stepped(v, 0.0, 3.0), "s(3)");
+    assert_eq!(r.at(3.0, "ego").lane, -2);
+    assert_eq!(r.phase("do"), (0.0, 3.0));
+}

@@ -1,0 +1,340 @@
+//! The actions that put an actor somewhere or turn it (ASAM OpenSCENARIO DSL 2.1 §8.8.2.4
+//! `assign_position`, §8.8.2.5 `assign_orientation`, §8.8.2.11 `change_position`), as the
+//! standard's tables say when each starts and ends:
+//!
+//! | action | lowered to | ends |
+//! | --- | --- | --- |
+//! | `assign_position(position \| route_point \| odr_point)` | TeleportAction to the lane position of the place on the plan road | at once |
+//! | `assign_orientation(target)` | TeleportAction to where the actor is, the orientation absolute (world yaw, pitch, roll); the actor must stand | at once |
+//! | `change_position(target, interpolation: straight_line)` | FollowTrajectoryAction along the straight line from where the actor is to the target, at its speed | when the actor is there |
+//!
+//! Exactly one of the three arguments is given (none is a missing argument, two contradict).
+//! The place must be in a driving lane of the plan road (the road the planner moves actors on):
+//! an `odr_point` names the road, lane, s and t (from the lane's centre); a `route_point` is s and
+//! t on the route, which the runtime binds to the plan road (t from its reference line); a
+//! `position_3d` is projected onto the road (z is the road surface's). The engine gets the lane
+//! position, so the actor goes on along that lane with the speed it had. The engine puts it there
+//! at the end of the step the action runs in, in place of that step's motion, as for a 1.x
+//! TeleportAction; the plan does the same.
+
+use scenario::{
+    FollowingMode, Orientation, Position, PositionKind, PrivateAction, ReferenceContext,
+    RoutingAction, Shape, Timing, Trajectory, Vertex,
+};
+
+use super::planner::Planner;
+use super::speed_actions::Slot;
+use super::types::{Planned, When};
+use crate::error::{Error, ErrorKind as K, Site};
+use crate::resolve::{arg, Action, Invoke, Phase, Place, PlaceArg, Val};
+
+impl Planner<'_> {
+    /// Plans `inv`'s position action for one actor; returns when it ends on its own.
+    pub(super) fn plan_position_action(
+        &mut self,
+        p: &Phase,
+        inv: &Invoke,
+        slot: Slot<'_>,
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Result<Option<When>, Error> {
+        let Slot {
+            target, t0, out, ..
+        } = slot;
+        if inv.kind == Action::AssignOrientation {
+            return self.plan_orientation(p, inv, target, t0, out, name);
+        }
+        if inv.kind == Action::ChangePosition {
+            return self.plan_change_position(p, inv, target, t0, out, name);
+        }
+        if inv.kind != Action::AssignPosition {
+            return Ok(None);
+        }
+        let given = &inv.places;
+        let place = match given.as_slice() {
+            [] => {
+                return Err(p.site.err(
+                    K::Argument,
+                    "expected a position, route_point or odr_point in assign_position(…) (one is mandatory), found none",
+                ))
+            }
+            [one] => one,
+            [a, b, ..] => {
+                return Err(b.site.err(
+                    K::Argument,
+                    format!(
+                        "expected one of position, route_point and odr_point in assign_position(…), found `{}` and `{}`",
+                        a.param, b.param
+                    ),
+                ))
+            }
+        };
+        let (lane, s, offset) = self.lane_position(place)?;
+        let n = name("assign_position");
+        out.push(Planned {
+            entity: target.to_string(),
+            at: None,
+            name: n.clone(),
+            action: PrivateAction::Teleport(Position {
+                kind: PositionKind::Lane {
+                    road_id: self.road.id().to_string(),
+                    lane_id: lane.to_string(),
+                    s,
+                    offset: Some(offset),
+                    orientation: None,
+                },
+                pos: place.site.pos.clone(),
+            }),
+            site: p.site.clone(),
+        });
+        if let Some(t) = t0 {
+            // The engine puts the actor there at the end of the step the action runs in, in
+            // place of that step's motion (as a 1.x TeleportAction).
+            let dt = self.settings.dt;
+            let ahead = self.s_at(target, t + dt);
+            let lane0 = self.track(target).lane(0.0);
+            let d = self.road.lane_distance(lane0, ahead, s);
+            let tr = self.track_mut(target);
+            tr.jump(t, d);
+            tr.set_lane(t, lane);
+            tr.set_offset(t, offset);
+        }
+        Ok(Some(self.ends(t0, 0.0, &n, p)))
+    }
+
+    /// `assign_orientation(target)`: a TeleportAction to where the actor is, with the
+    /// orientation as absolute yaw, pitch and roll.
+    fn plan_orientation(
+        &mut self,
+        p: &Phase,
+        inv: &Invoke,
+        target: &str,
+        t0: Option<f64>,
+        out: &mut Vec<Planned>,
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Result<Option<When>, Error> {
+        let Some(PlaceArg {
+            place: Place::Orientation { yaw, pitch, roll },
+            site,
+            ..
+        }) = inv.places.first()
+        else {
+            return Err(p.site.err(
+                K::Argument,
+                "expected a target in assign_orientation(…) (a mandatory argument, an orientation_3d), found none",
+            ));
+        };
+        // A moving vehicle goes on along its lane while the engine keeps the heading it was
+        // given: a sideways-facing vehicle driving straight on, which no scenario means.
+        let v = t0.map_or(self.last_v[target], |t| self.track(target).at(t).1);
+        if v.abs() > 1e-9 {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` standing at the start of assign_orientation(…) (a moving vehicle follows its lane), found it at {v:.2} m/s"),
+            ));
+        }
+        let n = name("assign_orientation");
+        out.push(Planned {
+            entity: target.to_string(),
+            at: None,
+            name: n.clone(),
+            action: PrivateAction::Teleport(Position {
+                kind: PositionKind::RelativeObject {
+                    entity_ref: target.to_string(),
+                    dx: 0.0,
+                    dy: 0.0,
+                    dz: None,
+                    orientation: Some(Orientation {
+                        h: *yaw,
+                        p: *pitch,
+                        r: *roll,
+                        reference: Some(ReferenceContext::Absolute),
+                    }),
+                },
+                pos: site.pos.clone(),
+            }),
+            site: p.site.clone(),
+        });
+        Ok(Some(self.ends(t0, 0.0, &n, p)))
+    }
+
+    /// `change_position(target, interpolation: straight_line)`: a FollowTrajectoryAction along
+    /// the straight line from where the actor is to the target, at the speed it has (no time
+    /// reference), ending there.
+    fn plan_change_position(
+        &mut self,
+        p: &Phase,
+        inv: &Invoke,
+        target: &str,
+        t0: Option<f64>,
+        out: &mut Vec<Planned>,
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Result<Option<When>, Error> {
+        let Some(place) = inv.places.first() else {
+            return Err(p.site.err(
+                K::Argument,
+                "expected a target in change_position(…) (a mandatory argument, a position_3d), found none",
+            ));
+        };
+        if let Some(a) = arg(&inv.args, "interpolation") {
+            if !matches!(a.eval()?, Val::Enum(m) if m == "straight_line") {
+                return Err(a.site.err(
+                    K::Unsupported,
+                    "expected interpolation: straight_line (a smooth path between two points has no headings to follow: not run), found another value",
+                ));
+            }
+        }
+        if let Some(a) = arg(&inv.args, "on_road_network") {
+            if a.eval()? != Val::Bool(false) {
+                return Err(a.site.err(
+                    K::Unsupported,
+                    "expected on_road_network: false (a straight line; moving along the road network to a place is not run), found another value",
+                ));
+            }
+        }
+        let t = t0.ok_or_else(|| {
+            p.site.err(
+                K::Unsatisfiable,
+                "expected a phase start the plan knows for change_position(…) (where the straight line starts), found one after a run-time condition",
+            )
+        })?;
+        let (lane, s1, offset) = self.lane_position(place)?;
+        let road = self.road;
+        let tr = self.track(target);
+        let (lane0, v) = (tr.lane(t), tr.at(t).1);
+        let s0 = self.s_at(target, t);
+        let start = road.world(s0, road.lane_center(lane0, s0) + tr.offset(t));
+        let end = road.world(s1, road.lane_center(lane, s1) + offset);
+        let (Some((x0, y0)), Some((x1, y1))) = (start, end) else {
+            return Err(off_road(&place.site, road.id(), s1, "its length"));
+        };
+        let length = (x1 - x0).hypot(y1 - y0);
+        if v <= 0.0 && length > 0.0 {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` moving at the start of change_position(…) (it moves at the speed it has), found it standing"),
+            ));
+        }
+        let n = name("change_position");
+        out.push(Planned {
+            entity: target.to_string(),
+            at: None,
+            name: n.clone(),
+            action: polyline(&n, &[(x0, y0), (x1, y1)], None, &place.site),
+            site: p.site.clone(),
+        });
+        // Along the line at v: there after length / v s; the track's distance along its lane
+        // is then set to the target's s.
+        let span = if length > 0.0 { length / v } else { 0.0 };
+        let tr = self.track_mut(target);
+        tr.jump(t + span, s1 - (s0 + v * span));
+        tr.set_lane(t + span, lane);
+        tr.set_offset(t + span, offset);
+        tr.add_move(t, t + span);
+        Ok(Some(self.ends(t0, span, &n, p)))
+    }
+
+    /// The lane, s and offset from the lane's centre of `place` on the plan road.
+    pub(super) fn lane_position(&self, place: &PlaceArg) -> Result<(i32, f64, f64), Error> {
+        let site = &place.site;
+        let road = &self.road;
+        let (s, t) = match &place.place {
+            Place::Lane {
+                road: id,
+                lane,
+                s,
+                t,
+            } => {
+                if id != road.id() {
+                    return Err(site.err(
+                        K::Unsatisfiable,
+                        format!(
+                            "expected a place on road {} (the road the plan drives on), found road {id}",
+                            road.id()
+                        ),
+                    ));
+                }
+                let within = (0.0..=road.length()).contains(s);
+                if !within || !road.driving_lanes(*s).contains(lane) {
+                    return Err(off_road(site, road.id(), *s, &format!("lane {lane}")));
+                }
+                (*s, road.lane_center(*lane, *s) + t)
+            }
+            Place::Route { s, t } => (*s, *t),
+            Place::World { x, y, .. } => road
+                .locate(*x, *y)
+                .map(|(lane, s, offset)| (s, road.lane_center(lane, s) + offset))
+                .ok_or_else(|| {
+                    site.err(
+                        K::Unsatisfiable,
+                        format!(
+                            "expected a position the plan road {} projects, found none",
+                            road.id()
+                        ),
+                    )
+                })?,
+            Place::Orientation { .. } | Place::Trajectory { .. } => {
+                return Err(site.err(K::Argument, "expected a place, found another value"))
+            }
+        };
+        if !(0.0..=road.length()).contains(&s) {
+            return Err(off_road(site, road.id(), s, "its length"));
+        }
+        let lane = road
+            .lane_holding(s, t)
+            .ok_or_else(|| off_road(site, road.id(), s, &format!("t = {t:.2} m")))?;
+        Ok((lane, s, t - road.lane_center(lane, s)))
+    }
+}
+
+/// The error of a place outside the plan road's driving lanes.
+fn off_road(site: &Site, road: &str, s: f64, what: &str) -> Error {
+    site.err(
+        K::Unsatisfiable,
+        format!("expected a place in a driving lane of road {road}, found s = {s:.2} m, {what} outside them"),
+    )
+}
+
+/// A FollowTrajectoryAction along the polyline through `points` (world x, y; headings those
+/// of its segments), at the speed the actor has or, with `times`, reaching each point at its
+/// time stamp counted from the action's start (the first stamp at the start).
+pub(super) fn polyline(
+    name: &str,
+    points: &[(f64, f64)],
+    times: Option<&[f64]>,
+    site: &Site,
+) -> PrivateAction {
+    let first = times.and_then(|t| t.first().copied()).unwrap_or(0.0);
+    let vertices = points
+        .iter()
+        .enumerate()
+        .map(|(i, (x, y))| Vertex {
+            time: times.map(|t| t[i] - first),
+            position: Position {
+                kind: PositionKind::World {
+                    x: *x,
+                    y: *y,
+                    z: None,
+                    h: None,
+                    p: None,
+                    r: None,
+                },
+                pos: site.pos.clone(),
+            },
+        })
+        .collect();
+    PrivateAction::Routing(Box::new(RoutingAction::FollowTrajectory {
+        trajectory: Box::new(Trajectory {
+            name: name.to_string(),
+            closed: false,
+            shape: Shape::Polyline(vertices),
+            catalog: None,
+        }),
+        time_reference: times.map(|_| Timing {
+            domain_absolute_relative: ReferenceContext::Relative,
+            offset: 0.0,
+            scale: 1.0,
+        }),
+        following_mode: FollowingMode::Position,
+        initial_distance_offset: None,
+    }))
+}

@@ -1,0 +1,223 @@
+//! The position and orientation arguments of the §8.8.2 actions that place an actor (ASAM
+//! OpenSCENARIO DSL 2.1 §8.8.2.4 `assign_position`, §8.8.2.5 `assign_orientation`, §8.8.2.11
+//! `change_position`), read into plain data: a `position_3d` or `xyz_point` (world x, y, z), an
+//! `odr_point` (OpenDRIVE road, lane, s and t from the lane's centre), a `route_point` (s and t
+//! on the route, which the runtime binds to the plan road), an `orientation_3d`. Each is a
+//! struct field the solver resolved or a call of the map's `create_xyz_point`,
+//! `create_odr_point` or `create_route_point`.
+
+use dsl::semantics::hir::{Arg as HirArg, Expr};
+use dsl::Value;
+
+use super::eval::{bind, Eval};
+use super::route::{map_call, odr_point};
+use super::tree::Action;
+use crate::error::{Error, ErrorKind as K, Site};
+
+/// A place or orientation an action is given.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Place {
+    /// World coordinates (m).
+    World { x: f64, y: f64, z: f64 },
+    /// Lane `lane` of OpenDRIVE road `road` at `s`, `t` m left of the lane's centre.
+    Lane {
+        road: String,
+        lane: i32,
+        s: f64,
+        t: f64,
+    },
+    /// s and t (m) on the route: the plan road's reference line.
+    Route { s: f64, t: f64 },
+    /// Yaw, pitch and roll (rad).
+    Orientation { yaw: f64, pitch: f64, roll: f64 },
+    /// A `trajectory`: world x and y of its points (m), their time stamps (s), and whether it
+    /// is interpolated `smooth`.
+    Trajectory {
+        points: Vec<(f64, f64)>,
+        times: Vec<f64>,
+        smooth: bool,
+    },
+}
+
+/// A place argument of an invocation.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct PlaceArg {
+    /// The parameter (`position`, `odr_point`, `route_point`, `target`).
+    pub param: String,
+    /// Its value.
+    pub place: Place,
+    /// Where it is written.
+    pub site: Site,
+}
+
+/// The place arguments of an invocation of `action` (its arguments `args` bound to `params`).
+pub(crate) fn read(
+    ev: &Eval<'_>,
+    action: Action,
+    args: &[HirArg],
+    params: &[String],
+) -> Result<Vec<PlaceArg>, Error> {
+    let wanted: &[&str] = match action {
+        Action::AssignPosition => &["position", "odr_point", "route_point"],
+        Action::ChangePosition | Action::AssignOrientation => &["target"],
+        Action::FollowTrajectory => &["absolute"],
+        _ => return Ok(Vec::new()),
+    };
+    bind(args, params)
+        .into_iter()
+        .filter(|(n, _)| wanted.contains(&n.as_str()))
+        .map(|(param, e)| {
+            Ok(PlaceArg {
+                place: place(ev, e)?,
+                param,
+                site: ev.site(e.span),
+            })
+        })
+        .collect()
+}
+
+/// The place `e` gives.
+fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
+    let bad = |what: &str| {
+        ev.files.err(
+            K::Value,
+            e.span,
+            format!("expected a position_3d, xyz_point, odr_point, route_point, orientation_3d or trajectory (a field, or map.create_xyz_point/create_odr_point/create_route_point(…)), found {what}"),
+        )
+    };
+    if let Some((method, args)) = map_call(ev, e) {
+        let params = |ps: &[&str]| ps.iter().map(|p| p.to_string()).collect::<Vec<_>>();
+        let number = |ps: &[&str], n: &str| -> Result<f64, Error> {
+            let names = params(ps);
+            bind(args, &names)
+                .into_iter()
+                .find(|(p, _)| p == n)
+                .map_or(Ok(0.0), |(_, a)| ev.number(a))
+        };
+        return match method {
+            "create_odr_point" => {
+                let p = odr_point(ev, e, args)?;
+                Ok(Place::Lane {
+                    road: p.road,
+                    lane: p.lane,
+                    s: p.s,
+                    t: p.t,
+                })
+            }
+            "create_route_point" => {
+                let ps = ["route", "s", "t"];
+                Ok(Place::Route {
+                    s: number(&ps, "s")?,
+                    t: number(&ps, "t")?,
+                })
+            }
+            "create_xyz_point" => {
+                let ps = ["x", "y", "z"];
+                Ok(Place::World {
+                    x: number(&ps, "x")?,
+                    y: number(&ps, "y")?,
+                    z: number(&ps, "z")?,
+                })
+            }
+            m => Err(bad(&format!("map.{m}(…)"))),
+        };
+    }
+    let path = ev.path_of(e).ok_or_else(|| bad("an expression"))?;
+    let Some((_, v @ Value::Compound { fields, .. })) = ev.lookup(&path) else {
+        return Err(bad(&format!(
+            "`{path}`, which is no struct the solver resolved"
+        )));
+    };
+    let num = |fields: &[(String, Value)], n: &str| {
+        fields
+            .iter()
+            .find(|(f, _)| f == n)
+            .and_then(|(_, v)| match v {
+                Value::Quantity { si, .. } | Value::Float(si) => Some(*si),
+                Value::Int(i) => Some(*i as f64),
+                _ => None,
+            })
+            .unwrap_or(0.0)
+    };
+    let text = |n: &str| match fields.iter().find(|(f, _)| f == n) {
+        Some((_, Value::Str(s))) => Ok(s.clone()),
+        _ => Err(bad(&format!("`{path}` without a {n}"))),
+    };
+    if ev.is_a(v, "position_3d") {
+        Ok(Place::World {
+            x: num(fields, "x"),
+            y: num(fields, "y"),
+            z: num(fields, "z"),
+        })
+    } else if ev.is_a(v, "xyz_point") {
+        match fields.iter().find(|(f, _)| f == "position") {
+            Some((_, Value::Compound { fields: p, .. })) => Ok(Place::World {
+                x: num(p, "x"),
+                y: num(p, "y"),
+                z: num(p, "z"),
+            }),
+            _ => Err(bad(&format!("`{path}` without a position"))),
+        }
+    } else if ev.is_a(v, "odr_point") {
+        let lane_text = text("lane_id")?;
+        let lane = lane_text.trim().parse().map_err(|_| {
+            bad(&format!(
+                "`{path}` with lane_id {lane_text:?} (an OpenDRIVE lane id is an integer)"
+            ))
+        })?;
+        Ok(Place::Lane {
+            road: text("road_id")?,
+            lane,
+            s: num(fields, "s"),
+            t: num(fields, "t"),
+        })
+    } else if ev.is_a(v, "route_point") {
+        Ok(Place::Route {
+            s: num(fields, "s"),
+            t: num(fields, "t"),
+        })
+    } else if ev.is_a(v, "trajectory") {
+        let list = |n: &str| match fields.iter().find(|(f, _)| f == n) {
+            Some((_, Value::List(items))) => Ok(items.as_slice()),
+            _ => Err(bad(&format!("`{path}` without a list of {n}"))),
+        };
+        let points = list("points")?
+            .iter()
+            .map(|p| match p {
+                Value::Compound { fields, .. } => {
+                    match fields.iter().find(|(f, _)| f == "position") {
+                        Some((_, Value::Compound { fields: q, .. })) => {
+                            Ok((num(q, "x"), num(q, "y")))
+                        }
+                        _ => Err(bad(&format!("a point of `{path}` without a position"))),
+                    }
+                }
+                _ => Err(bad(&format!("a point of `{path}` that is no pose_3d"))),
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let times = list("time_stamps")?
+            .iter()
+            .map(|t| match t {
+                Value::Quantity { si, .. } | Value::Float(si) => Ok(*si),
+                _ => Err(bad(&format!("a time stamp of `{path}` that is no time"))),
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let smooth = matches!(
+            fields.iter().find(|(f, _)| f == "interpolation"),
+            Some((_, Value::Enum { member, .. })) if member == "smooth"
+        );
+        Ok(Place::Trajectory {
+            points,
+            times,
+            smooth,
+        })
+    } else if ev.is_a(v, "orientation_3d") {
+        Ok(Place::Orientation {
+            yaw: num(fields, "yaw"),
+            pitch: num(fields, "pitch"),
+            roll: num(fields, "roll"),
+        })
+    } else {
+        Err(bad(&format!("`{path}`")))
+    }
+}
