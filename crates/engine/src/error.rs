@@ -166,6 +166,19 @@ pub enum ErrorKind {
         /// The value given.
         found: String,
     },
+    /// oscsim's state check (`scenario::StateCheck`) found the actor's state other than
+    /// required when it started: the run stops with this error.
+    #[error("expected {expected} ({what}), found {found} at t = {time:.3} s")]
+    CheckFailed {
+        /// What was checked and where it is written.
+        what: String,
+        /// The state required.
+        expected: String,
+        /// The state found.
+        found: String,
+        /// Simulation time (s).
+        time: f64,
+    },
     /// A sink refused a frame or a record, or could not finish.
     #[error("cannot write {what}: {error}")]
     Output {

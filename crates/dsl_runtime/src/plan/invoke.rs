@@ -280,8 +280,11 @@ impl Planner<'_> {
                         if first {
                             continue;
                         }
-                        let t = need_t("a constraint at the phase start")?;
-                        self.check_start(m, target, t)?;
+                        match t0 {
+                            Some(t) => self.check_start(m, target, t)?,
+                            // After a run-time start the engine checks it (plan::runtime).
+                            None => out.push(self.start_check(m, target, name("check"))?),
+                        }
                     }
                     (ModKind::Position, At::End) => {
                         let t = need_t("position(…, at: end)")?;
@@ -482,7 +485,11 @@ impl Planner<'_> {
                             }
                             continue;
                         }
-                        let t = need_t("a lateral position at the phase start")?;
+                        let Some(t) = t0 else {
+                            // After a run-time start the engine checks it (plan::runtime).
+                            out.push(self.start_check(m, target, name("check"))?);
+                            continue;
+                        };
                         let tr = self.track(target);
                         let lane = tr.lane(t);
                         let w = self.road.lane_width(lane, self.s_at(target, t));

@@ -55,6 +55,7 @@
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
+//! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 use std::cell::RefCell;
@@ -79,6 +80,7 @@ mod place;
 mod planner;
 mod position_actions;
 mod route;
+mod runtime;
 mod schedule;
 mod speed_actions;
 mod trajectory_actions;

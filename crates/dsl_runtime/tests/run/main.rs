@@ -15,6 +15,7 @@ mod lateral_actions;
 mod orientation;
 mod position_actions;
 mod reuse;
+mod runtime;
 mod speed_actions;
 mod support;
 

@@ -217,3 +217,38 @@ pub fn stepped(v: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
     let n = ((b - a) / DT).round() as usize;
     (1..=n).map(|k| v(a + k as f64 * DT) * DT).sum()
 }
+
+/// Runs a scenario model until it ends or fails: the run's error (`None`: it ended) and the
+/// event log's error records (time, element, message).
+pub fn run_to_error(scenario: &scenario::Scenario) -> (Option<String>, Vec<(f64, String, String)>) {
+    struct Errors(Vec<(f64, String, String)>);
+    impl EventSink for Errors {
+        fn event(&mut self, record: &EventRecord) -> Result<(), engine::SinkError> {
+            if let EventRecord::Error {
+                time,
+                element,
+                message,
+            } = record
+            {
+                self.0.push((*time, element.clone(), message.clone()));
+            }
+            Ok(())
+        }
+    }
+    let config = EngineConfig {
+        dt: DT,
+        max_time: 120.0,
+        ..EngineConfig::default()
+    };
+    let network = engine::load::road_network(scenario).expect("road network");
+    let mut engine = Engine::new(scenario, network, config).expect("engine");
+    let mut frames = Frames(Vec::new());
+    let mut errors = Errors(Vec::new());
+    loop {
+        match engine.step(&mut frames, &mut errors) {
+            Ok(Some(_)) => return (None, errors.0),
+            Ok(None) => {}
+            Err(e) => return (Some(e.to_string()), errors.0),
+        }
+    }
+}

@@ -10,6 +10,7 @@
 
 mod acceleration;
 mod appearance;
+mod check;
 mod custom;
 mod distance;
 mod entity;
@@ -308,6 +309,10 @@ impl Host<'_> {
         match action {
             PrivateAction::Teleport(position) => {
                 teleport::start(self.world, actor, position, self.story)?;
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+            PrivateAction::Check(check) => {
+                check::start(self.world, actor, check, time)?;
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Longitudinal(l) => {

@@ -161,6 +161,8 @@ impl ActionKind {
                 PrivateAction::Routing(_) => "RoutingAction",
                 PrivateAction::Appearance(_) => "AppearanceAction",
                 PrivateAction::Trailer(_) => "TrailerAction",
+                // No XML form: oscsim's own name.
+                PrivateAction::Check(_) => "StateCheck",
             },
             ActionKind::Global(g) => match g {
                 GlobalAction::Environment(_) => "EnvironmentAction",

@@ -32,6 +32,30 @@ pub enum PrivateAction {
     Appearance(AppearanceAction),
     /// TrailerAction (1.3).
     Trailer(TrailerAction),
+    /// oscsim's state check, an action with no XML form (the DSL runtime writes it for what
+    /// its plan cannot decide before the run: an `at: start` constraint of a phase that starts
+    /// on a run-time condition, ASAM OpenSCENARIO DSL 2.1 §8.9; the XML reader never does):
+    /// when it starts, the actor's state must be as given, else the action fails (an error
+    /// record in the event log, and the run stops with that error). It ends in the step it
+    /// starts.
+    Check(Box<StateCheck>),
+}
+
+/// What oscsim's state check ([`PrivateAction::Check`]) requires of its actor when it starts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StateCheck {
+    /// What is checked and where it is written, for the error ("lane(1) at f.osc:29:13").
+    pub what: String,
+    /// The lane the actor must be in: OpenDRIVE road id and lane id.
+    pub lane: Option<(String, i32)>,
+    /// The actor's s on that road (m, its reference point) and the tolerance (m).
+    pub s: Option<(f64, f64)>,
+    /// The actor's lateral offset from its lane's centre (m, positive left) and the tolerance
+    /// (m).
+    pub offset: Option<(f64, f64)>,
+    /// Another entity, the distance along the road from the actor's reference point to that
+    /// entity's (m, positive when the other is ahead in the road's s), and the tolerance (m).
+    pub gap: Option<(String, f64, f64)>,
 }
 
 /// A transition (XSD `TransitionDynamics`).

@@ -1,0 +1,105 @@
+//! Phases that start on a run-time condition (ASAM OpenSCENARIO DSL 2.1 §7.3.9 `until`,
+//! `wait @e`): what the plan cannot place in time becomes the engine's action at the phase
+//! start, or the engine's check there. Every moment is worked by hand in the scenario file.
+
+use super::support::run;
+
+/// Positions on the straight road: exact up to float round-off.
+const S_TOL: f64 = 1e-6;
+/// Phase times are step times.
+const T_TOL: f64 = 1e-9;
+
+#[test]
+fn speed_and_lane_after_an_until_on_time_headway() {
+    let r = run("runtime_until_speed_lane", 0, None);
+    let (s, e) = r.phase("do.approach");
+    assert!(
+        s.abs() < T_TOL && (e - 3.35).abs() < T_TOL,
+        "approach [{s}, {e}]"
+    );
+    let (s, e) = r.phase("do.evade");
+    assert!(
+        (s - 3.35).abs() < T_TOL && (e - 5.35).abs() < T_TOL,
+        "evade [{s}, {e}]"
+    );
+    let ego = r.at(3.35, "ego");
+    assert!((ego.s - 167.0).abs() < S_TOL, "{ego:?}");
+    assert!((r.at(3.4, "ego").speed - 15.0).abs() < S_TOL);
+    assert!((r.at(3.3, "ego").speed - 20.0).abs() < S_TOL);
+    assert!(
+        (r.at(4.35, "ego").y + 7.0).abs() < 1e-6,
+        "{:?}",
+        r.at(4.35, "ego")
+    );
+    // Moving sideways at 15 m/s along its path, ego gains less s than 15 m/s · 2 s: with the
+    // sinusoid's lateral speed v_y = A·sin(πτ/T), A = πΔ/(2T) (Δ = 3.5 m, T = 2 s), the
+    // deficit is ∫ v_y²/(2v) dτ = A²T/(4v) = π²Δ²/(16·T·v) = 0.2519 m (the next term,
+    // ∫ v_y⁴/(8v³), is 0.0016 m).
+    let deficit = std::f64::consts::PI.powi(2) * 3.5 * 3.5 / (16.0 * 2.0 * 15.0);
+    let end = r.at(5.35, "ego");
+    assert!((end.s - (197.0 - deficit)).abs() < 0.005, "{end:?}");
+    assert!((end.y + 8.75).abs() < 1e-6 && end.lane == -3, "{end:?}");
+    let (s, e) = r.phase("do.cruise");
+    assert!(
+        (s - 5.35).abs() < T_TOL && (e - 6.35).abs() < T_TOL,
+        "cruise [{s}, {e}]"
+    );
+    // The engine's checks of lane(1) and position(46m, behind: lead) ran there and passed.
+    for check in ["do.cruise/ego/1:check", "do.cruise/ego/2:check"] {
+        let t = r.when(check, "End").expect("the check ran");
+        assert!((t - 5.35).abs() < T_TOL, "{check} at {t}");
+    }
+    assert!((r.at(5.35, "lead").s - r.at(5.35, "ego").s - 46.0).abs() < 0.5);
+}
+
+#[test]
+fn speed_and_lane_after_a_wait_on_an_emitted_event() {
+    let r = run("runtime_wait_event", 0, None);
+    let (s, e) = r.phase("do.signal.0");
+    assert!(
+        (s - 1.0).abs() < T_TOL && (e - 2.5).abs() < T_TOL,
+        "npc [{s}, {e}]"
+    );
+    assert_eq!(r.emissions("do.signal.0.1/emit go", "go"), [2.5]);
+    let (s, e) = r.phase("do.signal.1.w");
+    assert!(
+        (s - 1.0).abs() < T_TOL && (e - 2.55).abs() < T_TOL,
+        "wait [{s}, {e}]"
+    );
+    let (s, e) = r.phase("do.signal.1.turn");
+    assert!(
+        (s - 2.55).abs() < T_TOL && (e - 4.55).abs() < T_TOL,
+        "turn [{s}, {e}]"
+    );
+    assert!((r.at(2.55, "ego").s - 151.0).abs() < S_TOL);
+    assert!((r.at(2.5, "ego").speed - 20.0).abs() < S_TOL);
+    assert!((r.at(2.6, "ego").speed - 10.0).abs() < S_TOL);
+    assert!((r.at(4.55, "ego").s - 171.0).abs() < S_TOL);
+    // The engine's check of lane(lane_number) ran at the phase start and passed.
+    let check = "do.signal.1.turn/ego/2:check";
+    for transition in ["Start", "End"] {
+        let t = r.when(check, transition).expect("the check ran");
+        assert!((t - 2.55).abs() < T_TOL, "{transition} at {t}");
+    }
+}
+
+#[test]
+fn a_failed_check_at_a_run_time_start_is_an_error_record_and_a_failed_run() {
+    let lowered = super::support::lower("runtime_wait_check_fails", 0, None)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = super::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    let lane = "runtime_wait_check_fails.osc:28:21";
+    let want = "expected 'ego' in lane -3 of road 1 (lane(…) at ";
+    assert!(
+        error.starts_with(want)
+            && error.contains(lane)
+            && error.ends_with("), found it in lane -2 of road 1 at t = 2.550 s"),
+        "{error}"
+    );
+    let logged: Vec<&(f64, String, String)> = records.iter().collect();
+    assert_eq!(logged.len(), 1, "{logged:?}");
+    assert!((logged[0].0 - 2.55).abs() < T_TOL);
+    assert_eq!(logged[0].1, "do.signal.1.turn/ego/2:check");
+    assert_eq!(logged[0].2, error);
+}

@@ -1,0 +1,86 @@
+//! oscsim's state check (`scenario::PrivateAction::Check`, no XML form): the OpenSCENARIO DSL
+//! runtime's `at: start` constraints of a phase that starts on a run-time condition (ASAM
+//! OpenSCENARIO DSL 2.1 §8.9), which its plan cannot decide before the run. When the action
+//! starts, the actor's road position (the one measured at the step's start, as every trigger
+//! of the step sees it) must be in the lane, at the offset and at the distance to another
+//! entity it gives; otherwise it fails: an error record in the event log, and the run stops
+//! with [`ErrorKind::CheckFailed`](crate::ErrorKind::CheckFailed).
+
+use opendrive::RoadPosition;
+use scenario::StateCheck;
+
+use crate::runtime::{RuntimeError, RuntimeErrorKind, World};
+use crate::EntityId;
+
+/// Checks `check` on `actor` at `time`.
+pub(crate) fn start(
+    world: &World,
+    actor: EntityId,
+    check: &StateCheck,
+    time: f64,
+) -> Result<(), RuntimeError> {
+    let e = world.entity(actor);
+    let fail = |expected: String, found: String| {
+        RuntimeError::new(RuntimeErrorKind::CheckFailed {
+            what: check.what.clone(),
+            expected,
+            found,
+            time,
+        })
+    };
+    let Some(at) = e.road_position.as_ref() else {
+        return Err(fail(
+            format!("'{}' on a road", e.name),
+            "it off every road".into(),
+        ));
+    };
+    if let Some((road, lane)) = &check.lane {
+        if at.road_id != *road || at.lane_id != *lane {
+            return Err(fail(
+                format!("'{}' in lane {lane} of road {road}", e.name),
+                format!("it in lane {} of road {}", at.lane_id, at.road_id),
+            ));
+        }
+    }
+    if let Some((s, tol)) = check.s {
+        if (at.s - s).abs() > tol {
+            return Err(fail(
+                format!("'{}' at s = {s:.3} m (within {tol} m)", e.name),
+                format!("it at s = {:.3} m", at.s),
+            ));
+        }
+    }
+    if let Some((offset, tol)) = check.offset {
+        if (at.offset - offset).abs() > tol {
+            return Err(fail(
+                format!(
+                    "'{}' {offset:.3} m from its lane's centre (within {tol} m)",
+                    e.name
+                ),
+                format!("it {:.3} m from it", at.offset),
+            ));
+        }
+    }
+    if let Some((other, gap, tol)) = &check.gap {
+        let there: Option<&RoadPosition> = world
+            .id(other)
+            .and_then(|o| world.entity(o).road_position.as_ref());
+        let Some(there) = there.filter(|p| p.road_id == at.road_id) else {
+            return Err(fail(
+                format!("'{other}' on road {} beside '{}'", at.road_id, e.name),
+                format!("'{other}' elsewhere"),
+            ));
+        };
+        let got = there.s - at.s;
+        if (got - gap).abs() > *tol {
+            return Err(fail(
+                format!(
+                    "'{other}' {gap:.3} m from '{}' along the road (within {tol} m)",
+                    e.name
+                ),
+                format!("{got:.3} m"),
+            ));
+        }
+    }
+    Ok(())
+}
