@@ -20,7 +20,7 @@
 //! | --- | --- |
 //! | `error` | errors with positions; where each construct is written |
 //! | `resolve` | stage 1: the program as plain data (§7.3.9, §7.3.10, §8.7, §8.9) |
-//! | `road` | the road of the plan and the DSL's lane numbering |
+//! | `road` | the roads of the plan (a start road and those after it) and the DSL's lane numbering |
 //! | `track` | planned speed profile, lanes, offsets and sideways moves of an actor |
 //! | `trigger` | the 1.x conditions triggers are built from |
 //! | `plan` | stage 2: phase timing and motion planning |
@@ -160,17 +160,28 @@ pub fn lower_program(
             resolve::Failure::Check(d) => LoadError::Check(d),
             resolve::Failure::Plan(e) => LoadError::Plan(e),
         })?;
-    // The plan drives on the road its named routes are on, else on the first road.
-    let plan_road = match plan::named_road(&resolved.root) {
-        Some((id, site)) => road::PlanRoad::by_id(road, &id).ok_or_else(|| {
-            LoadError::Plan(site.err(
-                ErrorKind::Road,
-                format!(
-                    "expected road {id} with driving lanes in {}, found none",
-                    road_path.display()
-                ),
-            ))
-        })?,
+    // The plan drives from the road of its named routes (the first of them whose roads hold
+    // all the others), else from the first road, onto the roads after it (`road`).
+    let named = plan::named_roads(&resolved.root);
+    let plan_road = match named.first() {
+        Some((id, site)) => {
+            let chains = named
+                .iter()
+                .filter_map(|(r, _)| road::PlanRoad::by_id(road, r))
+                .collect::<Vec<_>>();
+            let holds_all =
+                |c: &road::PlanRoad<'_>| named.iter().all(|(r, _)| c.plan_s(r, 0.0).is_some());
+            let first = road::PlanRoad::by_id(road, id).ok_or_else(|| {
+                LoadError::Plan(site.err(
+                    ErrorKind::Road,
+                    format!(
+                        "expected road {id} with driving lanes in {}, found none",
+                        road_path.display()
+                    ),
+                ))
+            })?;
+            chains.into_iter().find(holds_all).unwrap_or(first)
+        }
         None => road::PlanRoad::pick(road).ok_or_else(|| {
             LoadError::Plan(resolved.site.err(
                 ErrorKind::Road,

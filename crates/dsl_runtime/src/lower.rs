@@ -41,6 +41,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
     for e in &plan.entities {
         let lane = e.track.lane(0.0);
         let (s, v) = e.track.at(0.0);
+        let (road_id, s) = plan.on_road(s);
         objects.push(ScenarioObject {
             name: e.name.clone(),
             entity_object: entity_object(e),
@@ -75,7 +76,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             actions: vec![
                 action(PrivateAction::Teleport(Position {
                     kind: PositionKind::Lane {
-                        road_id: plan.road.clone(),
+                        road_id: road_id.to_string(),
                         lane_id: lane.to_string(),
                         s,
                         offset: Some(e.track.offset(0.0)),

@@ -90,7 +90,7 @@ use events::EventCtx;
 use place::{place, ToPlace};
 use planner::{no_end, Planner};
 
-pub(crate) use route::named_road;
+pub(crate) use route::named_roads;
 pub use types::POSITION_TOLERANCE;
 pub(crate) use types::{
     Entity, HandlerPlan, Plan, Planned, Settings, When, MAX_ACCELERATION, MAX_SPEED,
@@ -100,7 +100,7 @@ pub(crate) use types::{
 pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> Result<Plan, Error> {
     let root = &res.root;
     let mut p = Planner {
-        road: *road,
+        road: road.clone(),
         settings,
         objects: &res.objects,
         entities: Vec::new(),
@@ -229,8 +229,9 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             .into_iter()
             .flatten()
             .find_map(|(at, a)| match (&a.route, at) {
-                (Route::Lane { lane, s, .. }, At::Start | At::All) => {
-                    Some((*lane, s + a.start_offset))
+                (Route::Lane { road: id, lane, s }, At::Start | At::All) => {
+                    // On a road of the plan (`route::on_plan_road`, checked above).
+                    Some((*lane, road.plan_s(id, *s).unwrap_or(*s) + a.start_offset))
                 }
                 _ => None,
             });
@@ -285,7 +286,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         }
     }
     Ok(Plan {
-        road: road.id().to_string(),
+        roads: road.starts(),
         entities: p.entities,
         phases: p.phases,
         handlers: handler_plans,

@@ -66,7 +66,11 @@ pub(crate) fn check(
     }
     let (lo, hi) = match &along.route {
         Route::Free { .. } => (0.0, road.length()),
-        Route::Lane { s, .. } => (s + along.start_offset, road.length() - along.end_offset),
+        Route::Lane { road: id, s, .. } => (
+            // On a road of the plan (`on_plan_road`).
+            road.plan_s(id, *s).unwrap_or(*s) + along.start_offset,
+            road.length() - along.end_offset,
+        ),
     };
     let mut moments = Vec::new();
     if at != At::End {
@@ -134,51 +138,61 @@ pub(crate) fn check(
     Ok(())
 }
 
-/// Checks that a named route lies on the plan's road, in one of its driving lanes in +s.
+/// Checks that a named route lies on a road of the plan, in one of its driving lanes in +s.
 pub(crate) fn on_plan_road(road: &PlanRoad<'_>, along: &Along) -> Result<(), Error> {
     let Route::Lane { road: id, lane, s } = &along.route else {
         return Ok(());
     };
-    if id != road.id() {
+    let Some(at) = road.plan_s(id, 0.0) else {
         return Err(along.site.err(
             K::Road,
-            format!("expected every named route on road {} (the one road the plan drives on), found road {id}", road.id()),
+            format!(
+                "expected every named route on the roads the plan drives on ({}: road {} and the roads the engine drives onto after it), found road {id}",
+                road.ids().join(", "),
+                road.id()
+            ),
         ));
-    }
-    if !(0.0..=road.length()).contains(s) {
+    };
+    let (own, _) = road.road_at(at);
+    if !(0.0..=own.length).contains(s) {
         return Err(along.site.err(
             K::Road,
             format!(
                 "expected the route's start on road {id} (0 m to {:.1} m), found s = {s} m",
-                road.length()
+                own.length
             ),
         ));
     }
-    if !road.driving_lanes(*s).contains(lane) {
+    let lanes = road.driving_lanes(at + s);
+    if !lanes.contains(lane) {
         return Err(along.site.err(
             K::Road,
-            format!("expected a driving lane of road {id} in the direction of its reference line (right-hand traffic: lanes {:?}) at s = {s} m, found lane {lane}", road.driving_lanes(*s)),
+            format!("expected a driving lane of road {id} in the direction of its reference line (right-hand traffic: lanes {lanes:?}) at s = {s} m, found lane {lane}"),
         ));
     }
     Ok(())
 }
 
-/// The road the named routes of the tree (its `along(…)` modifiers) are on: the first one,
-/// where the others must be too (checked by [`on_plan_road`]).
-pub(crate) fn named_road(root: &Phase) -> Option<(String, Site)> {
-    let mut found = None;
+/// The roads the named routes of the tree (its `along(…)` modifiers) are on, in the order they
+/// are written, each with its first route.
+pub(crate) fn named_roads(root: &Phase) -> Vec<(String, Site)> {
+    let mut found: Vec<(String, Site)> = Vec::new();
     root.walk(&mut |p| {
-        if let (None, Kind::Invoke(inv)) = (&found, &p.kind) {
-            found = inv.modifiers.iter().find_map(|m| match (m.kind, &m.along) {
-                (
+        if let Kind::Invoke(inv) = &p.kind {
+            for m in &inv.modifiers {
+                if let (
                     ModKind::Along,
                     Some(Along {
                         route: Route::Lane { road, .. },
                         ..
                     }),
-                ) => Some((road.clone(), m.site.clone())),
-                _ => None,
-            });
+                ) = (m.kind, &m.along)
+                {
+                    if !found.iter().any(|(r, _)| r == road) {
+                        found.push((road.clone(), m.site.clone()));
+                    }
+                }
+            }
         }
     });
     found

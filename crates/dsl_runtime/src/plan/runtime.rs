@@ -11,6 +11,10 @@
 //! | `position(d, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road (0.5 m) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre (1 cm) |
 //!
+//! The engine measures lanes and s on the road the actor is on, so on a plan over several
+//! roads (`crate::road`) the lane and position checks are errors: the road the actor is on at
+//! a run-time start is not known before the run.
+//!
 //! Lanes are numbered (and lane widths taken) where the plan last knows the actor: a road whose
 //! lanes change between there and the run-time start may number them otherwise. Forms whose
 //! value depends on another actor's planned lane or speed (`lane(same_as: x)`, `position(time:
@@ -48,6 +52,16 @@ impl Planner<'_> {
             offset: None,
             gap: None,
         };
+        if matches!(m.kind, ModKind::Lane | ModKind::Position) && self.road.ids().len() > 1 {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!(
+                    "expected {}(…) at the start of a phase that starts on a run-time condition on a plan over one road, found roads {} (the road the actor is on then is not known before the run)",
+                    m.name,
+                    self.road.ids().join(", ")
+                ),
+            ));
+        }
         match m.kind {
             ModKind::Lane => {
                 for key in ["same_as", "side_of", "left_of", "right_of"] {
@@ -63,7 +77,7 @@ impl Planner<'_> {
                 let from_left = matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
                 let lane = self
                     .road
-                    .numbered(n, from_left, self.s_at(target, t))
+                    .numbered(n, from_left, self.s_at(target, t), self.walks(target))
                     .ok_or_else(|| {
                         m.site.err(
                             K::Unsatisfiable,

@@ -128,8 +128,9 @@ pub(crate) struct Entity {
 /// The whole plan.
 #[derive(Debug, Clone)]
 pub(crate) struct Plan {
-    /// The road everything is placed on.
-    pub road: String,
+    /// The roads the actors drive on, in driving order: OpenDRIVE id and the plan's s at the
+    /// road's start (`crate::road`). Never empty.
+    pub roads: Vec<(String, f64)>,
     /// The physical objects, in the order the `do` tree first names them, then the located
     /// stationary objects it does not name.
     pub entities: Vec<Entity>,
@@ -137,6 +138,15 @@ pub(crate) struct Plan {
     pub phases: Vec<PhasePlan>,
     /// The emissions of the scenario's `on` handlers.
     pub handlers: Vec<HandlerPlan>,
+}
+
+impl Plan {
+    /// The road and its own s at the plan's s `s` (the later road at a joint).
+    pub(crate) fn on_road(&self, s: f64) -> (&str, f64) {
+        let i = self.roads.iter().rposition(|r| r.1 <= s).unwrap_or(0);
+        let (id, start) = &self.roads[i];
+        (id, s - start)
+    }
 }
 
 /// One `emit e` of an `on` handler: a repeatable 1.x Event that starts at each occurrence of

@@ -102,7 +102,7 @@ fn routes_that_cannot_be_followed_are_errors_before_the_run() {
     };
     assert!(
         e.contains(
-            "expected every named route on road 2 (the one road the plan drives on), found road 1"
+            "expected every named route on the roads the plan drives on (2: road 2 and the roads the engine drives onto after it), found road 1"
         ) && e.contains("err_along_two_roads.osc:12:13"),
         "{e}"
     );

@@ -12,6 +12,7 @@ mod handlers;
 mod lane_side;
 mod lateral;
 mod lateral_actions;
+mod map;
 mod orientation;
 mod position_actions;
 mod reuse;

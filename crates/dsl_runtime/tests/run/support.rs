@@ -14,6 +14,8 @@ pub struct Obj {
     /// Heading (rad).
     pub h: f64,
     pub s: f64,
+    /// OpenDRIVE road id ("" off every road).
+    pub road: String,
     pub lane: i32,
     pub speed: f64,
 }
@@ -40,6 +42,7 @@ impl FrameSink for Frames {
                 y: o.pose.y,
                 h: o.pose.h,
                 s: o.road_position.map_or(f64::NAN, |r| r.s),
+                road: o.road_position.map_or(String::new(), |r| r.road_id.clone()),
                 lane: o.road_position.map_or(0, |r| r.lane_id),
                 speed: o.speed,
             })

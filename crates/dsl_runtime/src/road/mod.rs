@@ -1,53 +1,115 @@
-//! The road the planner places and moves the actors on (ASAM OpenDRIVE 1.8 §9 roads, §11
-//! lanes): the first road of the network with driving lanes on its right side (right-hand
-//! traffic: those lanes run in +s). Lanes are counted in the DSL's way (ASAM OpenSCENARIO DSL
-//! 2.1 §8.9 `lane()` modifier): 1 is the rightmost driving lane in the direction of travel, or
-//! the leftmost with `from: left`. A person walks on the sidewalks of the right side where the
-//! road has any (counted the same way), else on its driving lanes.
+//! The roads the planner places and moves the actors on (ASAM OpenDRIVE 1.8 §9 roads, §10.4
+//! road linkage, §11 lanes, §12 junctions): a start road and the roads the engine drives onto
+//! after it (`chain`), measured in one s from the start road's s = 0 (the plan's s: a road's s
+//! plus the lengths of the roads before it). The start road is the road of the scenario's named
+//! routes, else the first road of the network with driving lanes on its right side (right-hand
+//! traffic: those lanes run in +s). Lane ids are the roads' own, the same on every road of the
+//! chain. Lanes are counted in the DSL's way (ASAM OpenSCENARIO DSL 2.1 §8.9 `lane()`
+//! modifier): 1 is the rightmost driving lane in the direction of travel, or the leftmost with
+//! `from: left`. A person walks on the sidewalks of the right side where the road has any
+//! (counted the same way), else on its driving lanes.
+//!
+//! | module | computes |
+//! | --- | --- |
+//! | `chain` | which roads follow the start road |
 
-use opendrive::{LaneType, RoadNetwork};
+mod chain;
 
-/// The road of a plan.
+use opendrive::{LaneType, Road, RoadNetwork};
+
+/// One road of a plan and the plan's s at its start.
 #[derive(Debug, Clone, Copy)]
+struct Segment<'a> {
+    road: &'a Road,
+    start: f64,
+}
+
+/// The roads of a plan.
+#[derive(Debug, Clone)]
 pub(crate) struct PlanRoad<'a> {
-    road: &'a opendrive::Road,
+    /// Never empty: the start road first.
+    segments: Vec<Segment<'a>>,
     net: &'a RoadNetwork,
 }
 
 impl<'a> PlanRoad<'a> {
-    /// The first road with a driving lane on its right side, if any.
+    /// From the first road with a driving lane on its right side, if any.
     pub(crate) fn pick(net: &'a RoadNetwork) -> Option<Self> {
-        net.roads()
-            .iter()
-            .find(|r| {
-                r.lane_sections
-                    .first()
-                    .is_some_and(|ls| ls.right.iter().any(|l| l.lane_type.is_drivable()))
-            })
-            .map(|road| PlanRoad { road, net })
+        let i = net.roads().iter().position(chain::drivable)?;
+        Some(Self::from_index(net, i))
     }
 
-    /// The road `id`, if it has a driving lane on its right side.
+    /// From road `id`, if it has a driving lane on its right side.
     pub(crate) fn by_id(net: &'a RoadNetwork, id: &str) -> Option<Self> {
-        net.roads()
+        let i = net
+            .roads()
             .iter()
-            .find(|r| {
-                r.id == id
-                    && r.lane_sections
-                        .first()
-                        .is_some_and(|ls| ls.right.iter().any(|l| l.lane_type.is_drivable()))
+            .position(|r| r.id == id && chain::drivable(r))?;
+        Some(Self::from_index(net, i))
+    }
+
+    fn from_index(net: &'a RoadNetwork, i: usize) -> Self {
+        let mut start = 0.0;
+        let segments = chain::chain(net, i)
+            .into_iter()
+            .map(|k| {
+                let road = &net.roads()[k];
+                let seg = Segment { road, start };
+                start += road.length;
+                seg
             })
-            .map(|road| PlanRoad { road, net })
+            .collect();
+        PlanRoad { segments, net }
     }
 
-    /// The OpenDRIVE id.
+    /// The OpenDRIVE id of the start road.
     pub(crate) fn id(&self) -> &str {
-        &self.road.id
+        &self.segments[0].road.id
     }
 
-    /// Its length (m).
+    /// The road ids in driving order.
+    pub(crate) fn ids(&self) -> Vec<String> {
+        self.segments.iter().map(|g| g.road.id.clone()).collect()
+    }
+
+    /// The plan's s of s = `s` on road `id`, if that road is one of the plan's.
+    pub(crate) fn plan_s(&self, id: &str, s: f64) -> Option<f64> {
+        self.segments
+            .iter()
+            .find(|g| g.road.id == id)
+            .map(|g| g.start + s)
+    }
+
+    /// The road and its own s at the plan's s `s` (the later road at a joint; clamped to the
+    /// chain's ends).
+    pub(crate) fn road_at(&self, s: f64) -> (&'a Road, f64) {
+        let g = self.segment(s);
+        (g.road, (s - g.start).clamp(0.0, g.road.length))
+    }
+
+    /// `(road id, plan s at its start)` of every road, in driving order.
+    pub(crate) fn starts(&self) -> Vec<(String, f64)> {
+        self.segments
+            .iter()
+            .map(|g| (g.road.id.clone(), g.start))
+            .collect()
+    }
+
+    fn segment(&self, s: f64) -> Segment<'a> {
+        // `segments` is never empty.
+        let i = self
+            .segments
+            .iter()
+            .rposition(|g| g.start <= s)
+            .unwrap_or(0);
+        self.segments[i]
+    }
+
+    /// The length of all its roads (m).
     pub(crate) fn length(&self) -> f64 {
-        self.road.length
+        self.segments
+            .last()
+            .map_or(0.0, |g| g.start + g.road.length)
     }
 
     /// Driving lanes of the right side at `s`, rightmost first (−3, −2, −1).
@@ -62,9 +124,8 @@ impl<'a> PlanRoad<'a> {
 
     /// Lanes of the right side at `s` whose type passes `keep`, rightmost first.
     fn right_lanes(&self, s: f64, keep: impl Fn(&LaneType) -> bool) -> Vec<i32> {
-        let s = s.clamp(0.0, self.road.length);
-        let mut ids: Vec<i32> = self
-            .road
+        let (road, s) = self.road_at(s);
+        let mut ids: Vec<i32> = road
             .lane_section_at(s)
             .right
             .iter()
@@ -100,24 +161,35 @@ impl<'a> PlanRoad<'a> {
 }
 
 impl PlanRoad<'_> {
-    /// Where world point (x, y) projects onto this road: lane, s, and offset from the lane's
-    /// centre (the nearest point of the road's surface when (x, y) lies off it).
+    /// Where world point (x, y) projects onto the plan's roads: lane, the plan's s, and offset
+    /// from the lane's centre (the nearest point of a road's surface when (x, y) lies off it),
+    /// on the road nearest to the point (the first of equally near ones).
     pub(crate) fn locate(&self, x: f64, y: f64) -> Option<(i32, f64, f64)> {
-        let p = self.net.locate_on_road(&self.road.id, x, y)?;
-        Some((p.lane_id, p.s, p.offset))
+        let mut best: Option<(f64, (i32, f64, f64))> = None;
+        for g in &self.segments {
+            let Some(p) = self.net.locate_on_road(&g.road.id, x, y) else {
+                continue;
+            };
+            let here = g.road.pose(p.s.clamp(0.0, g.road.length), p.t);
+            let d = here.map_or(f64::INFINITY, |q| (q.x - x).hypot(q.y - y));
+            if !best.as_ref().is_some_and(|(b, _)| d >= *b) {
+                best = Some((d, (p.lane_id, g.start + p.s, p.offset)));
+            }
+        }
+        best.map(|(_, found)| found)
     }
 
     /// t of the centre of lane `lane` at `s` (m); 0 where the lane is missing.
     pub(crate) fn lane_center(&self, lane: i32, s: f64) -> f64 {
-        let s = s.clamp(0.0, self.road.length);
-        self.road.lane_span(lane, s).map_or(0.0, |sp| sp.center())
+        let (road, s) = self.road_at(s);
+        road.lane_span(lane, s).map_or(0.0, |sp| sp.center())
     }
 
     /// The driving lane of the right side whose span holds `t` at `s`, if any.
     pub(crate) fn lane_holding(&self, s: f64, t: f64) -> Option<i32> {
-        let s = s.clamp(0.0, self.road.length);
+        let (road, local) = self.road_at(s);
         self.driving_lanes(s).into_iter().find(|l| {
-            self.road.lane_span(*l, s).is_ok_and(|sp| {
+            road.lane_span(*l, local).is_ok_and(|sp| {
                 let (a, b) = (sp.inner.min(sp.outer), sp.inner.max(sp.outer));
                 (a..=b).contains(&t)
             })
@@ -131,8 +203,8 @@ impl PlanRoad<'_> {
 
     /// Width of lane `lane` at `s` (m); 0 where the lane is missing.
     pub(crate) fn lane_width(&self, lane: i32, s: f64) -> f64 {
-        let s = s.clamp(0.0, self.road.length);
-        self.road.lane_span(lane, s).map_or(0.0, |sp| sp.width())
+        let (road, s) = self.road_at(s);
+        road.lane_span(lane, s).map_or(0.0, |sp| sp.width())
     }
 }
 
@@ -143,7 +215,7 @@ impl PlanRoad<'_> {
     /// Length of the centre line of lane `lane` from `s0` to `s1` (negative when s1 < s0): the
     /// distance a vehicle following the lane covers, which differs from s on curves (a lane
     /// on the outside of a bend is longer). Summed over chords every
-    /// [`LENGTH_STEP`] m of s; outside the road, or where the lane is missing, 1 m per m of s.
+    /// [`LENGTH_STEP`] m of s; outside the roads, or where the lane is missing, 1 m per m of s.
     pub(crate) fn lane_distance(&self, lane: i32, s0: f64, s1: f64) -> f64 {
         if s1 < s0 {
             return -self.lane_distance(lane, s1, s0);
@@ -175,15 +247,26 @@ impl PlanRoad<'_> {
         s
     }
 
-    /// Length of the chord of lane `lane` between s `a` < `b`.
+    /// Length of the chord of lane `lane` between s `a` < `b`, split where one road joins the
+    /// next.
     fn chord(&self, lane: i32, a: f64, b: f64) -> f64 {
-        let inside = |s: f64| (0.0..=self.road.length).contains(&s);
-        if !(inside(a) && inside(b)) {
+        if !(0.0..=self.length()).contains(&a) || !(0.0..=self.length()).contains(&b) {
             return b - a;
         }
+        if let Some(j) = self
+            .segments
+            .iter()
+            .map(|g| g.start)
+            .find(|j| a < *j && *j < b)
+        {
+            return self.chord(lane, a, j) + self.chord(lane, j, b);
+        }
+        // Both ends on the road of `a` (b may be its end).
+        let g = self.segment(a);
+        let (a, b) = (a - g.start, (b - g.start).min(g.road.length));
         match (
-            self.road.lane_pose(lane, a, 0.0),
-            self.road.lane_pose(lane, b, 0.0),
+            g.road.lane_pose(lane, a, 0.0),
+            g.road.lane_pose(lane, b, 0.0),
         ) {
             (Ok(p), Ok(q)) => (q.x - p.x).hypot(q.y - p.y),
             _ => b - a,

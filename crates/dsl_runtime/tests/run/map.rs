@@ -1,0 +1,70 @@
+//! The whole map (issue 28 step 3): actors drive from the plan's first road onto its successor
+//! and through a junction, and are placed by `create_odr_point` on roads other than the first,
+//! on road files of the corpus (`tests/roads/`). Road ids and s are worked by hand in the
+//! scenario files' comments.
+
+use crate::support::{lower_at, run_scenario};
+
+/// Positions over arcs and spirals: the engine advances the reference line by the step's
+/// distance / (1 − κ·t) with κ at the step's start, and carries the rest of a step that crosses
+/// a road's end onto the next road at the old road's scale (up to 1.5 % of one 1.5 m step here).
+const CURVED_TOL: f64 = 0.03;
+/// Positions on straight roads: float round-off only.
+const S_TOL: f64 = 1e-6;
+
+fn run(name: &str, road: &str) -> crate::support::Run {
+    let lowered = lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        &format!("tests/roads/{road}.xodr"),
+        0,
+        None,
+    )
+    .unwrap_or_else(|e| panic!("{name}: {e}"));
+    run_scenario(name, &lowered.scenario, 0, None)
+}
+
+#[test]
+fn a_drive_goes_on_from_a_road_onto_its_successor() {
+    let r = run("map_successor", "manual_add_of_geometries0");
+    let ego = r.at(0.0, "ego");
+    assert_eq!((ego.road.as_str(), ego.lane), ("0", -1));
+    assert!((ego.s - 50.0).abs() < S_TOL, "{ego:?}");
+    let ego = r.at(5.0, "ego");
+    assert_eq!(ego.road, "0");
+    assert!((ego.s - 198.522).abs() < CURVED_TOL, "{ego:?}");
+    let ego = r.at(7.0, "ego");
+    assert_eq!((ego.road.as_str(), ego.lane), ("1", -1));
+    assert!((ego.s - 58.5).abs() < CURVED_TOL, "{ego:?}");
+    assert!(
+        (ego.x - 217.017).abs() < CURVED_TOL && (ego.y - 94.385).abs() < CURVED_TOL,
+        "{ego:?}"
+    );
+    // Placed on road 1, the second road of the plan.
+    let npc = r.at(0.0, "npc");
+    assert_eq!((npc.road.as_str(), npc.lane), ("1", -1));
+    assert!((npc.s - 20.0).abs() < S_TOL, "{npc:?}");
+    assert!((r.at(7.0, "npc").s - 90.0).abs() < S_TOL);
+}
+
+#[test]
+fn a_drive_goes_through_a_junction_by_its_first_connection() {
+    let r = run("map_junction", "junction_trippel_twoway0");
+    let ego = r.at(0.0, "ego");
+    assert_eq!((ego.road.as_str(), ego.lane), ("0", -1));
+    assert!((ego.s - 60.0).abs() < S_TOL, "{ego:?}");
+    let ego = r.at(5.0, "ego");
+    assert_eq!(ego.road, "1", "{ego:?}");
+    assert!((ego.s - 9.941).abs() < CURVED_TOL, "{ego:?}");
+    let ego = r.at(10.0, "ego");
+    assert_eq!((ego.road.as_str(), ego.lane), ("2", -1));
+    assert!((ego.s - 29.55).abs() < CURVED_TOL, "{ego:?}");
+    assert!(
+        (ego.x - 158.391).abs() < CURVED_TOL && (ego.y - 10.429).abs() < CURVED_TOL,
+        "{ego:?}"
+    );
+    // Placed on road 2, beyond the junction.
+    let npc = r.at(0.0, "npc");
+    assert_eq!((npc.road.as_str(), npc.lane), ("2", -1));
+    assert!((npc.s - 40.0).abs() < S_TOL, "{npc:?}");
+    assert!((r.at(10.0, "npc").s - 90.0).abs() < S_TOL);
+}
