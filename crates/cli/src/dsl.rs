@@ -98,7 +98,16 @@ pub fn planned(
         scenario: scenario.map(str::to_string),
     };
     match dsl_runtime::load(file, road, &options) {
-        Ok(lowered) => Ok(lowered.scenario),
+        // The command line binds no external methods: a `call` of one cannot run.
+        Ok(lowered) => match lowered.calls.first() {
+            Some(c) => Err(anyhow::anyhow!(
+                "cannot run {}: expected a host binding for external method `{}` (the Python package's Simulation.bind), found none at {}",
+                file.display(),
+                c.method,
+                c.pos
+            )),
+            None => Ok(lowered.scenario),
+        },
         Err(dsl_runtime::LoadError::Check(d)) => {
             let mut text = Vec::new();
             write_diagnostics(&d, &mut text)?;

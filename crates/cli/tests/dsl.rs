@@ -189,3 +189,45 @@ fn run_dsl_scenario_needs_a_road_and_reports_plan_errors_with_positions() {
         text(&out.stderr)
     );
 }
+
+/// Bad input of scenario reuse and of `call` through `oscsim run` (issue 28): exit status 1 and
+/// the error's place on stderr (the scenarios' comments say what is wrong where).
+#[test]
+fn run_dsl_scenario_reports_invocation_and_call_errors_with_positions() {
+    let road = repo("crates/dsl_runtime/tests/roads/straight.xodr");
+    for (name, message, place) in [
+        (
+            "err_reuse_unknown_parameter",
+            "has no parameter `speed`",
+            "err_reuse_unknown_parameter.osc:10:25",
+        ),
+        (
+            "err_reuse_recursive",
+            "recursive invocation: `ping` invokes `pong` invokes `ping`",
+            "err_reuse_recursive.osc:6:9",
+        ),
+        (
+            "err_reuse_two_entries",
+            "name one with --scenario NAME",
+            "err_reuse_two_entries.osc:7:1",
+        ),
+        // The command line binds no external method: `call log_speed(…)` (line 19) cannot run.
+        (
+            "call_external",
+            "expected a host binding for external method `log_speed` (the Python package's Simulation.bind), found none at ",
+            "call_external.osc:19:9",
+        ),
+    ] {
+        let osc = repo(&format!("crates/dsl_runtime/tests/scenarios/{name}.osc"));
+        let out = oscsim(&[
+            "run",
+            osc.to_str().unwrap_or_default(),
+            "--road",
+            road.to_str().unwrap_or_default(),
+            "--quiet",
+        ]);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{name}: {err}");
+        assert!(err.contains(message) && err.contains(place), "{name}: {err}");
+    }
+}

@@ -73,6 +73,18 @@ pub struct PhaseInfo {
     pub end: Option<f64>,
 }
 
+/// A `call` of an external method the scenario makes: the host must bind a function to the
+/// method's name before the run (the Python package's `Simulation.bind`). The engine logs each
+/// call as a `customCommand` of type `call` whose content is `METHOD(ARGS)`, the arguments a
+/// comma-separated list of JSON values.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExternalCall {
+    /// The method's name.
+    pub method: String,
+    /// Where the `call` is written.
+    pub pos: scenario::SourcePos,
+}
+
 /// A planned, lowered DSL scenario.
 #[derive(Debug, Clone)]
 pub struct Lowered {
@@ -80,6 +92,9 @@ pub struct Lowered {
     pub scenario: scenario::Scenario,
     /// The phases, children before their composition.
     pub phases: Vec<PhaseInfo>,
+    /// The scenario's calls of external methods, in the order they are written (a `do`'s
+    /// before its `on` handlers').
+    pub calls: Vec<ExternalCall>,
 }
 
 /// Why a DSL scenario could not be made ready to run.
@@ -212,8 +227,26 @@ pub fn lower_program(
             },
         })
         .collect();
+    let mut calls = Vec::new();
+    resolved.root.walk(&mut |p| {
+        if let resolve::Kind::Call(c) = &p.kind {
+            calls.push(ExternalCall {
+                method: c.method.clone(),
+                pos: p.site.pos.clone(),
+            });
+        }
+    });
+    for spec in &resolved.events {
+        if let (Some(c), Some((_, site))) = (&spec.call, &spec.handler) {
+            calls.push(ExternalCall {
+                method: c.method.clone(),
+                pos: site.pos.clone(),
+            });
+        }
+    }
     Ok(Lowered {
         scenario: lower::lower(&plan, &resolved.name, osc, road_path),
         phases: info,
+        calls,
     })
 }

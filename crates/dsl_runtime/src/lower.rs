@@ -8,7 +8,8 @@
 //! | a phase lasting until its end | a ManeuverGroup `PATH/hold` whose Event waits on a condition that is never true, so only the StopTrigger ends the Act (its `stopTransition` is the phase's end line) |
 //! | an actor's actions in a phase | a ManeuverGroup `PATH/ACTOR` with one Event per action (starting with the Act, or at an absolute time) |
 //! | `emit e` (a phase) | in its Act, a ManeuverGroup `PATH/emit` whose Event `PATH/emit e` runs a CustomCommandAction (type `emit`, content `e`): one `customCommand` line in the event log per emission |
-//! | `on c: emit e` (the i-th `on` of the scenario) | an Act `on.i` from the start until the root phase's end, with the same group whose Event starts at each occurrence of c (maximumExecutionCount unbounded) |
+//! | `call m(a, b)` (a phase) | likewise a group `PATH/call` whose Event `PATH/call m(a, b)` runs a CustomCommandAction (type `call`, content `m(a, b)`, the arguments as JSON values): the host runs m then (`resolve::call`) |
+//! | `on c: emit e` / `call m(…)` (the i-th `on` of the scenario) | an Act `on.i` from the start until the root phase's end, with the same groups whose Events start at each occurrence of c (maximumExecutionCount unbounded) |
 //! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step) |
 //! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
 //! | a person, an animal | ScenarioObject with a Pedestrian of category `pedestrian`, `animal` |
@@ -106,10 +107,11 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
         } else {
             Vec::new()
         };
-        if let Some(e) = &ph.emit {
-            groups.push(emit_group(
+        if let Some((ty, content)) = &ph.command {
+            groups.push(command_group(
                 &ph.path,
-                vec![(e.clone(), None, pos.clone())],
+                ty,
+                vec![(content.clone(), None, pos.clone())],
                 1,
                 pos.clone(),
             ));
@@ -140,20 +142,32 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
         }
     }
     // `on` handlers: one Act each, running until the root phase (written last) ends.
-    let mut handlers: Vec<(&str, Vec<Emission>)> = Vec::new();
+    // Per Act, its groups by command type (`emit` first), each with its commands.
+    let mut handlers: Vec<(&str, Vec<Commands<'_>>)> = Vec::new();
     for h in &plan.handlers {
         let emit = (h.event.clone(), Some(h.trigger.clone()), h.site.pos.clone());
-        match handlers.iter_mut().find(|(act, _)| *act == h.act) {
+        let act = match handlers.iter_mut().position(|(act, _)| *act == h.act) {
+            Some(i) => &mut handlers[i].1,
+            None => {
+                handlers.push((&h.act, Vec::new()));
+                // Just pushed.
+                &mut handlers.last_mut().expect("pushed").1
+            }
+        };
+        match act.iter_mut().find(|(ty, _)| *ty == h.command_type) {
             Some((_, emits)) => emits.push(emit),
-            None => handlers.push((&h.act, vec![emit])),
+            None => act.push((h.command_type, vec![emit])),
         }
     }
-    for (act, emits) in handlers {
-        // Each entry was created with one emission.
-        let pos = emits[0].2.clone();
+    for (act, by_type) in handlers {
+        // Each entry was created with one command of one type.
+        let pos = by_type[0].1[0].2.clone();
         acts.push(Act {
             name: act.to_string(),
-            maneuver_groups: vec![emit_group(act, emits, u32::MAX, pos.clone())],
+            maneuver_groups: by_type
+                .into_iter()
+                .map(|(ty, emits)| command_group(act, ty, emits, u32::MAX, pos.clone()))
+                .collect(),
             start_trigger: None,
             stop_trigger: run_end.clone(),
             pos,
@@ -322,15 +336,25 @@ fn trigger_of(w: &When) -> Option<Trigger> {
     })
 }
 
-/// An emitted event's name, its Event's start trigger (`None`: with the Act) and position.
+/// The commands of one type (`emit`, `call`) of an Act.
+type Commands<'a> = (&'a str, Vec<Emission>);
+
+/// A command's content (an emitted event's name, a call), its Event's start trigger (`None`:
+/// with the Act) and position.
 type Emission = (String, Option<Trigger>, SourcePos);
 
-/// The group of element `path` that logs emissions: one Event `PATH/emit E` per emitted event
-/// E, running a CustomCommandAction (type `emit`, content E) which the engine records as one
-/// `customCommand` line of the event log. An Event starts on its trigger (`None`: with the
-/// Act) up to `count` times.
-fn emit_group(path: &str, emits: Vec<Emission>, count: u32, pos: SourcePos) -> ManeuverGroup {
-    let name = format!("{path}/emit");
+/// The group of element `path` that logs commands of type `ty` (`emit`, `call`): one Event
+/// `PATH/TY C` per command C, running a CustomCommandAction (type `ty`, content C) which the
+/// engine records as one `customCommand` line of the event log. An Event starts on its trigger
+/// (`None`: with the Act) up to `count` times.
+fn command_group(
+    path: &str,
+    ty: &str,
+    emits: Vec<Emission>,
+    count: u32,
+    pos: SourcePos,
+) -> ManeuverGroup {
+    let name = format!("{path}/{ty}");
     let events = emits
         .into_iter()
         .map(|(event, start_trigger, pos)| Event {
@@ -340,7 +364,7 @@ fn emit_group(path: &str, emits: Vec<Emission>, count: u32, pos: SourcePos) -> M
             actions: vec![Action {
                 name: format!("{name} {event}"),
                 kind: ActionKind::UserDefined(UserDefinedAction {
-                    command_type: "emit".into(),
+                    command_type: ty.into(),
                     content: event,
                 }),
                 pos: pos.clone(),

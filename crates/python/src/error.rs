@@ -114,6 +114,23 @@ pub fn load_error(py: Python<'_>, e: &engine::Error) -> PyErr {
     positioned::<ScenarioError>(py, e.to_string(), place)
 }
 
+/// A DSL scenario that cannot be made ready to run as [`ScenarioError`], at the first
+/// error's place.
+pub fn dsl_error(py: Python<'_>, e: &dsl_runtime::LoadError) -> PyErr {
+    let place = match e {
+        dsl_runtime::LoadError::Check(d) => d
+            .items
+            .first()
+            .map(|i| d.source_pos(i.span))
+            .as_ref()
+            .into(),
+        dsl_runtime::LoadError::Road(e) => e.into(),
+        dsl_runtime::LoadError::Plan(e) => Some(e.pos()).into(),
+        _ => Place::default(),
+    };
+    positioned::<ScenarioError>(py, e.to_string(), place)
+}
+
 /// A failed step as [`SimulationError`].
 pub fn step_error(py: Python<'_>, e: &engine::Error) -> PyErr {
     positioned::<SimulationError>(py, e.to_string(), e.pos().into())

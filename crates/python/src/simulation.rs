@@ -18,7 +18,8 @@ use pyo3::types::{PyBytes, PyDict, PyList};
 use crate::control::Control;
 use crate::entity::Entity;
 use crate::error::{
-    guard, load_error, step_error, InternalError, OscsimError, ScenarioError, SimulationError,
+    dsl_error, guard, load_error, step_error, InternalError, OscsimError, ScenarioError,
+    SimulationError,
 };
 use crate::model::{overrides, RoadNetwork, Scenario};
 use crate::record::{Events, Recorders, Trajectories};
@@ -43,6 +44,8 @@ pub struct Simulation {
     network: Arc<opendrive::RoadNetwork>,
     scenario_path: String,
     config: EngineConfig,
+    /// The `call`s of external methods of a DSL scenario: method and `file:line:col`.
+    calls: Vec<(String, String)>,
 }
 
 /// `values` as a NumPy float64 array (copied once through a bytes buffer).
@@ -81,6 +84,14 @@ fn str_array<'py>(
     let kwargs = PyDict::new(py);
     kwargs.set_item("dtype", "object")?;
     numpy.call_method("array", (list,), Some(&kwargs))
+}
+
+/// The path of an OpenSCENARIO DSL file (`.osc`), if `scenario` is one.
+fn osc_path(scenario: &Bound<'_, PyAny>) -> Option<PathBuf> {
+    let path: PathBuf = scenario.extract().ok()?;
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("osc"))
+        .then_some(path)
 }
 
 impl Simulation {
@@ -148,11 +159,14 @@ impl Simulation {
     /// host vehicle (default `Ego`) and lanes in the first frame only, as `oscsim run --osi`
     /// does, or in every frame with `osi_static="every"`. `road_network` (a `RoadNetwork`) is
     /// the road network to run on, shared with every simulation given the same; by default
-    /// the one the scenario names is read. Raises
+    /// the one the scenario names is read. `scenario` may also be an OpenSCENARIO DSL `.osc`
+    /// file: planned with `seed` and `dt` on `road` (the path of an OpenDRIVE file; default: the
+    /// file the scenario names with `map.set_map_file`), its entry scenario `entry` (default:
+    /// the one no other invokes), with `duration` bounding a last phase that has no end. Raises
     /// `ScenarioError` (with `file`, `line`, `column`) when the scenario does not load or the
     /// engine cannot be built from it.
     #[new]
-    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first", road_network = None))]
+    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first", road_network = None, road = None, entry = None))]
     #[allow(clippy::too_many_arguments)] // Python keyword arguments
     fn new(
         py: Python<'_>,
@@ -167,6 +181,8 @@ impl Simulation {
         osi_host: Option<String>,
         osi_static: &str,
         road_network: Option<PyRef<'_, RoadNetwork>>,
+        road: Option<PathBuf>,
+        entry: Option<String>,
     ) -> PyResult<Self> {
         let static_data = match osi_static {
             "first" => osi::ground_truth::StaticData::First,
@@ -179,6 +195,7 @@ impl Simulation {
         };
         guard(|| {
             let loaded;
+            let mut calls = Vec::new();
             let scenario: &scenario::Scenario = if let Ok(s) = scenario.cast::<Scenario>() {
                 if params.is_some() {
                     return Err(PyValueError::new_err(
@@ -186,6 +203,27 @@ impl Simulation {
                     ));
                 }
                 loaded = Arc::clone(&s.get().inner);
+                &loaded
+            } else if let Some(path) = osc_path(scenario) {
+                if params.is_some() {
+                    return Err(PyValueError::new_err(
+                        "expected no params for an OpenSCENARIO DSL scenario (its parameters are constrained in the .osc file), found some",
+                    ));
+                }
+                let options = dsl_runtime::Options {
+                    seed,
+                    dt,
+                    open_end: duration.is_some(),
+                    scenario: entry,
+                };
+                let lowered = dsl_runtime::load(&path, road.as_deref(), &options)
+                    .map_err(|e| dsl_error(py, &e))?;
+                calls = lowered
+                    .calls
+                    .iter()
+                    .map(|c| (c.method.clone(), c.pos.to_string()))
+                    .collect();
+                loaded = Arc::new(lowered.scenario);
                 &loaded
             } else {
                 let path: PathBuf = scenario.extract()?;
@@ -237,6 +275,7 @@ impl Simulation {
                 network,
                 scenario_path: scenario.path.display().to_string(),
                 config,
+                calls,
             })
         })
     }
@@ -295,6 +334,14 @@ impl Simulation {
         &self.scenario_path
     }
 
+    /// The calls of external methods a DSL scenario makes (`call m(…)`), in the order they are
+    /// written: `(method, "file:line:col")`. Each method needs a function bound to its name
+    /// (`bind`) before the first step.
+    #[getter]
+    fn external_calls(&self) -> Vec<(String, String)> {
+        self.calls.clone()
+    }
+
     /// Why the run ended, None while it goes on.
     #[getter]
     fn stop_reason(&self) -> PyResult<Option<&'static str>> {
@@ -343,6 +390,14 @@ impl Simulation {
     /// per line: the lines `oscsim run --events` writes. `Simulation.events()` parses them.
     fn event_lines(&self) -> PyResult<Vec<String>> {
         guard(|| Ok(self.lock()?.events.lines.clone()))
+    }
+
+    /// The event log's lines from line `start` on (0-based): what the steps since added.
+    fn _event_lines_since(&self, start: usize) -> PyResult<Vec<String>> {
+        guard(|| {
+            let inner = self.lock()?;
+            Ok(inner.events.lines.get(start..).unwrap_or_default().to_vec())
+        })
     }
 
     /// The recorded trajectories as NumPy arrays by column, one row per placed entity per

@@ -130,11 +130,14 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     });
     let mut handlers = Vec::new();
     for spec in &res.events {
-        p.events.entry(spec.name.clone()).or_default().push((
-            &spec.cond,
-            &spec.site,
-            spec.handler.is_some(),
-        ));
+        // A handler's `call` is no event of the scenario.
+        if spec.call.is_none() {
+            p.events.entry(spec.name.clone()).or_default().push((
+                &spec.cond,
+                &spec.site,
+                spec.handler.is_some(),
+            ));
+        }
         if let Some((i, site)) = &spec.handler {
             handlers.push((format!("on.{i}"), spec, site));
         }
@@ -266,6 +269,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     for (act, spec, site) in handlers {
         handler_plans.push(HandlerPlan {
             act,
+            command_type: if spec.call.is_some() { "call" } else { "emit" },
             event: spec.name.clone(),
             trigger: p.condition(&spec.cond, 0, EventCtx::Run)?,
             site: site.clone(),

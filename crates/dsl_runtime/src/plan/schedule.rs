@@ -73,24 +73,12 @@ impl Planner<'_> {
                     actions,
                     persist,
                     hold: !instant,
-                    emit: None,
+                    command: None,
                 });
                 return Ok(end);
             }
-            Kind::Emit(event) => {
-                // An instant: its Act starts and, with nothing to do, completes in its step.
-                self.phases.push(PhasePlan {
-                    path: p.path.clone(),
-                    site: p.site.clone(),
-                    start: start.clone(),
-                    end: When::Never,
-                    actions: Vec::new(),
-                    persist: Vec::new(),
-                    hold: false,
-                    emit: Some(event.clone()),
-                });
-                return Ok(start);
-            }
+            Kind::Emit(event) => return Ok(self.instant(p, start, ("emit", event.clone()))),
+            Kind::Call(c) => return Ok(self.instant(p, start, ("call", c.content.clone()))),
             Kind::Serial | Kind::OneOf(_) => {
                 let mut cur = start.clone();
                 let n = p.children.len();
@@ -240,9 +228,25 @@ impl Planner<'_> {
             actions: Vec::new(),
             persist: Vec::new(),
             hold: true,
-            emit: None,
+            command: None,
         });
         Ok(end)
+    }
+
+    /// An instant phase with its `command`: its Act starts and, with nothing to do but the
+    /// command, completes in its step. Returns its end (its start).
+    fn instant(&mut self, p: &Phase, start: When, command: (&'static str, String)) -> When {
+        self.phases.push(PhasePlan {
+            path: p.path.clone(),
+            site: p.site.clone(),
+            start: start.clone(),
+            end: When::Never,
+            actions: Vec::new(),
+            persist: Vec::new(),
+            hold: false,
+            command: Some(command),
+        });
+        start
     }
 }
 

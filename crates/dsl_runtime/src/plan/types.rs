@@ -95,8 +95,9 @@ pub(crate) struct PhasePlan {
     pub persist: Vec<Planned>,
     /// The phase lasts until its end (all but `emit`, an instant).
     pub hold: bool,
-    /// The event an `emit` phase emits.
-    pub emit: Option<String>,
+    /// The command of an instant phase to the event log (a CustomCommandAction): its type
+    /// and content, `("emit", event)` for `emit`, `("call", "m(args)")` for `call`.
+    pub command: Option<(&'static str, String)>,
 }
 
 /// An action of a phase.
@@ -155,7 +156,9 @@ impl Plan {
 pub(crate) struct HandlerPlan {
     /// `on.0`: the handler's index among the scenario's `on` directives.
     pub act: String,
-    /// The emitted event's name.
+    /// The command's type: `emit`, or `call` (an external method the host runs).
+    pub command_type: &'static str,
+    /// The emitted event's name, or the call's content.
     pub event: String,
     /// When the handler's event occurs.
     pub trigger: Trigger,

@@ -13,8 +13,10 @@
 //! | `modifier` | movement modifiers (§8.9) |
 //! | `position` | places and orientations of the position actions (§8.8.2.4, §8.8.2.5, §8.8.2.11) |
 //! | `cond` | conditions and event specifications (§7.3.10, §8.7 methods) |
+//! | `call` | `call` of external methods as commands to the host (§7.3.9) |
 //! | `tree` | the `do` tree as phases with paths (§7.3.9) |
 
+mod call;
 mod cond;
 mod eval;
 mod modifier;
@@ -32,6 +34,7 @@ use dsl::semantics::hir::{Behavior, CompoundKind, Member};
 use dsl::semantics::types::CompoundId;
 use dsl::CheckedProgram;
 
+pub(crate) use call::Call;
 pub(crate) use cond::{Cond, Timed};
 pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
@@ -70,9 +73,11 @@ pub(crate) struct EventSpec {
     pub cond: Result<Cond, Error>,
     /// Where the condition is written.
     pub site: Site,
-    /// For an `on` handler's `emit`: the handler's index among the scenario's `on` directives
-    /// and the `emit`.
+    /// For an `on` handler's `emit` or `call`: the handler's index among the scenario's `on`
+    /// directives and the directive.
     pub handler: Option<(usize, Site)>,
+    /// For an `on` handler's `call`: the call (the spec is then no event of the scenario).
+    pub call: Option<Call>,
 }
 
 /// Why a program has no scenario to run, or cannot be resolved.
@@ -231,6 +236,7 @@ fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<E
                         cond: cond::read(ev, spec),
                         site: ev.site(spec.span),
                         handler: None,
+                        call: None,
                     });
                 }
             }
@@ -249,8 +255,8 @@ fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<E
                     ),
                 ))
             }
-            // `on e: emit f`: f occurs whenever e does; a `call` runs a method for its side
-            // effects, which the runtime has none of (methods are expressions or external).
+            // `on e: emit f`: f occurs whenever e does; `on e: call m(…)`: the host runs m
+            // whenever e occurs (`call`).
             Member::On(spec, body, on_span) => {
                 let index = handlers;
                 handlers += 1;
@@ -261,13 +267,17 @@ fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<E
                             cond: cond::read(ev, spec),
                             site: ev.site(spec.span),
                             handler: Some((index, ev.site(*span))),
+                            call: None,
                         }),
-                        Behavior::Call(_, span) => {
-                            return Err(ev.files.err(
-                                ErrorKind::Unsupported,
-                                *span,
-                                "expected `emit` in an `on` handler, found `call` (methods with side effects are not run)",
-                            ))
+                        Behavior::Call(e, span) => {
+                            let c = call::read(ev, e)?;
+                            events.push(EventSpec {
+                                name: c.content.clone(),
+                                cond: cond::read(ev, spec),
+                                site: ev.site(spec.span),
+                                handler: Some((index, ev.site(*span))),
+                                call: Some(c),
+                            })
                         }
                         _ => {
                             return Err(ev.files.err(

@@ -55,6 +55,8 @@ pub(crate) enum Kind {
     Wait,
     /// `emit event`: an instant phase that `@event` conditions observe.
     Emit(String),
+    /// `call m(…)`: an instant phase in which the host runs external method m.
+    Call(super::Call),
     /// `actor.action(args) with: …`.
     Invoke(Invoke),
 }
@@ -419,11 +421,14 @@ fn build(
             until: None,
             children: Vec::new(),
         }),
-        Behavior::Call(_, span) => Err(ev.files.err(
-            K::Unsupported,
-            *span,
-            "expected a composition, wait, emit or action invocation, found call (not run yet)",
-        )),
+        Behavior::Call(e, span) => Ok(Phase {
+            path,
+            site: ev.site(*span),
+            kind: Kind::Call(super::call::read(ev, e)?),
+            duration: None,
+            until: None,
+            children: Vec::new(),
+        }),
     }
 }
 

@@ -1,5 +1,5 @@
 //! `on` handlers (ASAM OpenSCENARIO DSL 2.1 §7.3.10): `emit` in a handler makes the event occur
-//! whenever the handler's event does; `call` is an error. Expectations in the scenario files.
+//! whenever the handler's event does; `call` runs an external method of the host then. Expectations in the scenario files.
 
 use crate::support::{run, DT};
 
@@ -27,12 +27,46 @@ fn on_handler_emits_an_event_others_wait_on() {
 }
 
 #[test]
-fn call_in_a_handler_is_an_error() {
+fn call_of_a_method_that_is_not_external_is_an_error() {
     crate::along::refused(
         "err_on_call",
-        "expected `emit` in an `on` handler, found `call`",
-        "8:9",
+        "expected an external method in `call` (def note(…) is external …), found `note` defined by an expression or undefined",
+        "8:14",
     );
+}
+
+/// `call` in a `do` and in an `on` handler: a `customCommand` of type `call` in the event log
+/// at the moment it runs, its content the method and its arguments as JSON values
+/// (call_external.osc: 2.0 s and 2.05 s).
+#[test]
+fn calls_of_external_methods_are_commands_in_the_event_log_when_they_run() {
+    let lowered = crate::support::lower("call_external", 0, None).expect("plans");
+    let methods: Vec<&str> = lowered.calls.iter().map(|c| c.method.as_str()).collect();
+    assert_eq!(methods, ["log_speed", "note"]);
+    assert_eq!(
+        (lowered.calls[0].pos.line, lowered.calls[0].pos.col),
+        (19, 9)
+    );
+    let r = crate::support::run_scenario("call_external", &lowered.scenario, 0, None);
+    let calls: Vec<(f64, &str, &str)> = r
+        .commands
+        .iter()
+        .filter(|(_, _, ty, _)| ty == "call")
+        .map(|(t, el, _, c)| (*t, el.as_str(), c.as_str()))
+        .collect();
+    assert_eq!(calls.len(), 2, "{calls:?}");
+    assert!((calls[0].0 - 2.0).abs() < T_TOL, "{calls:?}");
+    assert_eq!(
+        (calls[0].1, calls[0].2),
+        (
+            "do.1/call log_speed(\"ego\", 20.0)",
+            "log_speed(\"ego\", 20.0)"
+        )
+    );
+    assert!((calls[1].0 - 2.05).abs() < T_TOL, "{calls:?}");
+    assert_eq!(calls[1].2, "note(1.0, true)");
+    // ego is where the plan has it when the first call runs: 50 + 10 · 2 = 70 m.
+    assert!((r.at(2.0, "ego").s - 70.0).abs() < 1e-6);
 }
 
 /// `on every(2s, offset: 1s): emit tick`: tick at 1, 3, 5 s (and 7 s, after the run); the third

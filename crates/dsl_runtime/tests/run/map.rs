@@ -68,3 +68,21 @@ fn a_drive_goes_through_a_junction_by_its_first_connection() {
     assert!((npc.s - 40.0).abs() < S_TOL, "{npc:?}");
     assert!((r.at(10.0, "npc").s - 90.0).abs() < S_TOL);
 }
+
+#[test]
+fn a_run_time_lane_check_on_several_roads_is_an_error() {
+    let e = match lower_at(
+        "tests/scenarios/err_map_runtime_check.osc",
+        "tests/roads/junction_trippel_twoway0.xodr",
+        0,
+        None,
+    ) {
+        Ok(_) => panic!("planned"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        e.contains("expected lane(…) at the start of a phase that starts on a run-time condition on a plan over one road, found roads 0, 1, 2")
+            && e.ends_with("err_map_runtime_check.osc:20:13"),
+        "{e}"
+    );
+}

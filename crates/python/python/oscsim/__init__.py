@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional, Union
+from typing import Any, Callable, Dict, List, Optional, Union
 
 try:  # Python >= 3.8
     from typing import Protocol
@@ -102,18 +102,60 @@ class Simulation(_oscsim.Simulation):
     """One run of a scenario, stepped from Python.
 
     ``Simulation(scenario, dt=0.05, seed=1, duration=None, max_time=3600.0, record=True,
-    params=None, osi=False, osi_host=None, osi_static="first", road_network=None)``:
-    ``scenario`` is a :class:`Scenario` or the path of a .xosc file (loaded with ``params``,
-    global parameter overrides by name); ``road_network`` a :class:`RoadNetwork` shared by
-    the simulations given it.
+    params=None, osi=False, osi_host=None, osi_static="first", road_network=None, road=None,
+    entry=None)``: ``scenario`` is a :class:`Scenario` or the path of a .xosc file (loaded
+    with ``params``, global parameter overrides by name), or of an OpenSCENARIO DSL .osc file
+    (planned on ``road``, an OpenDRIVE path, by default the file its ``map.set_map_file``
+    names; ``entry`` the scenario to run when several could be); ``road_network`` a
+    :class:`RoadNetwork` shared by the simulations given it.
 
     Python controllers (:meth:`set_controller`) are called before each step with the state
-    of their entity at the current time.
+    of their entity at the current time. Functions bound to a DSL scenario's external
+    methods (:meth:`bind`) are called after the step their ``call`` runs in.
     """
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         self._controllers: Dict[str, Any] = {}
         self._attached: set = set()
+        self._bound: Dict[str, Callable[..., Any]] = {}
+        self._events_read = 0
+
+    def bind(self, name: str, function: Callable[..., Any]) -> None:
+        """Binds ``function`` to the DSL scenario's external method ``name`` (``def name(…) is
+        external …``). Each ``call name(a, b)`` the scenario reaches is a ``customCommand``
+        record of type ``call`` in the event log at the time t of the step that runs it (from t
+        to t + dt), and ``function(a, b)`` runs after that step, before the next one:
+        ``sim.time`` is t + dt and the entities are as that step left them. Arguments arrive as the JSON values of the log (numbers in SI
+        units as floats, strings, booleans). Every external method the scenario calls must be
+        bound before the first step (:attr:`external_calls`), else that step raises
+        :class:`ScenarioError` naming the ``call``'s file, line and column. An exception the
+        function raises propagates from :meth:`step`/:meth:`run`."""
+        if not callable(function):
+            raise TypeError(f"expected a callable for external method {name!r}, found {function!r}")
+        self._bound[name] = function
+
+    def _check_bindings(self) -> None:
+        for method, place in self.external_calls:
+            if method not in self._bound:
+                error = ScenarioError(
+                    f"expected a function bound to external method `{method}` (Simulation.bind) "
+                    f"before the run, found none at {place}"
+                )
+                file, line, column = place.rsplit(":", 2)
+                error.file, error.line, error.column = file, int(line), int(column)
+                raise error
+
+    def _run_calls(self) -> None:
+        lines = self._event_lines_since(self._events_read)
+        self._events_read += len(lines)
+        for line in lines:
+            record = json.loads(line)
+            if record.get("kind") != "customCommand" or record.get("type") != "call":
+                continue
+            content = record["content"]
+            name, _, rest = content.partition("(")
+            args = json.loads("[" + rest[:-1] + "]")
+            self._bound[name](*args)
 
     def set_controller(self, name: str, controller: Any) -> None:
         """Drives entity ``name`` by ``controller``, an object whose ``step(sim, entity)``
@@ -156,15 +198,21 @@ class Simulation(_oscsim.Simulation):
                 self.command(name, command)
 
     def step(self) -> Optional[str]:
-        """Runs one step of ``dt`` after asking the Python controllers for their commands;
-        returns None while the run goes on, then why it ended (see the native ``step``)."""
+        """Runs one step of ``dt`` after asking the Python controllers for their commands,
+        then the functions bound to the external methods the step called; returns None while
+        the run goes on, then why it ended (see the native ``step``)."""
+        if self.steps == 0:
+            self._check_bindings()
         if self._controllers and self.running:
             self._drive()
-        return super().step()
+        reason = super().step()
+        if self.external_calls:
+            self._run_calls()
+        return reason
 
     def run(self) -> str:
         """Steps until the run ends; returns why."""
-        if not self._controllers:
+        if not self._controllers and not self.external_calls:
             return super().run()
         while True:
             reason = self.step()

@@ -1,0 +1,119 @@
+//! `call` of external methods (ASAM OpenSCENARIO DSL 2.1 §7.3.9 `call` directive, §7.3.6
+//! methods `is external`): a method the host program implements, run for its side effects at
+//! the moment the `call` is reached in a `do` or its `on` handler's event occurs.
+//!
+//! The runtime does not run methods itself: a `call` becomes a command to the host, logged in
+//! the event log as a `customCommand` of type `call` whose content is the method's name and
+//! its arguments evaluated when the scenario is resolved, as JSON values
+//! (`log_speed(20.0, "ego")`: numbers in SI units, strings, booleans, enumeration members and
+//! instance paths as strings). The host runs the function it bound to that name (the Python
+//! package's `Simulation.bind`); a host without bindings (`oscsim run`) refuses the scenario.
+//! Only methods declared `is external` can be called: a method with an expression has no side
+//! effects to run.
+
+use dsl::semantics::hir::{Expr, ExprKind, Member, MethodBody, MethodDecl};
+
+use super::eval::Eval;
+use super::value::Val;
+use crate::error::{Error, ErrorKind as K};
+
+/// A `call` of an external method, read.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Call {
+    /// The method's name.
+    pub method: String,
+    /// The command's content: `name(args as JSON values)`.
+    pub content: String,
+}
+
+/// Reads the call expression `e` of a `call` directive.
+pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
+    let ExprKind::Call(callee, args) = &e.kind else {
+        return Err(ev.files.err(
+            K::Unsupported,
+            e.span,
+            "expected a method call after `call`, found another expression",
+        ));
+    };
+    let name = match &callee.kind {
+        ExprKind::Name(n) => n,
+        ExprKind::Field(_, n) => &n.text,
+        _ => {
+            return Err(ev.files.err(
+                K::Unsupported,
+                callee.span,
+                "expected a method name in `call`, found another expression",
+            ))
+        }
+    };
+    match declaration(ev, name).map(|d| &d.body) {
+        Some(MethodBody::External) => {}
+        Some(_) => {
+            return Err(ev.files.err(
+                K::Unsupported,
+                callee.span,
+                format!("expected an external method in `call` (def {name}(…) is external …), found `{name}` defined by an expression or undefined"),
+            ))
+        }
+        None => {
+            return Err(ev.files.err(
+                K::Unsupported,
+                callee.span,
+                format!("expected a method declared in the program in `call`, found `{name}`"),
+            ))
+        }
+    }
+    let mut values = Vec::with_capacity(args.len());
+    for a in args {
+        if let Some(n) = &a.name {
+            return Err(ev.files.err(
+                K::Unsupported,
+                n.span,
+                format!("expected positional arguments in `call` (the host's function takes them in order), found `{}:`", n.text),
+            ));
+        }
+        values.push(json(ev, &a.value)?);
+    }
+    Ok(Call {
+        method: name.clone(),
+        content: format!("{name}({})", values.join(", ")),
+    })
+}
+
+/// The declaration of method `name`: a top-level `def`, else the first compound declaring it.
+fn declaration<'m>(ev: &Eval<'m>, name: &str) -> Option<&'m MethodDecl> {
+    let method = |m: &'m Member| match m {
+        Member::Method(d) if d.name.text == name => Some(d),
+        _ => None,
+    };
+    ev.model.top.iter().find_map(method).or_else(|| {
+        ev.model
+            .compounds
+            .iter()
+            .find_map(|c| c.members.iter().find_map(method))
+    })
+}
+
+/// An argument as a JSON value.
+fn json(ev: &Eval<'_>, e: &Expr) -> Result<String, Error> {
+    if let ExprKind::Str(s) = &e.kind {
+        return Ok(string(s));
+    }
+    Ok(match ev.eval(e)? {
+        Val::Num(x) if x.is_finite() => format!("{x:?}"),
+        Val::Num(x) => {
+            return Err(ev.files.err(
+                K::Value,
+                e.span,
+                format!("expected a finite number as an argument of `call`, found {x}"),
+            ))
+        }
+        Val::Bool(b) => b.to_string(),
+        Val::Enum(s) | Val::Instance(s) => string(&s),
+    })
+}
+
+/// `s` as a JSON string.
+fn string(s: &str) -> String {
+    serde_json::Value::from(s).to_string()
+}
