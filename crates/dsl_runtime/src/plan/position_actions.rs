@@ -198,7 +198,7 @@ impl Planner<'_> {
             )
         })?;
         let (lane, s1, offset) = self.lane_position(place)?;
-        let road = self.road;
+        let road = &self.road;
         let tr = self.track(target);
         let (lane0, v) = (tr.lane(t), tr.at(t).1);
         let s0 = self.s_at(target, t);

@@ -90,7 +90,7 @@ impl Planner<'_> {
                 if m.arg("time").is_some() {
                     return Err(relative("time"));
                 }
-                let (x, sign, d) = self.position_target(m, t)?;
+                let (x, sign, d) = self.position_target(m, target, t)?;
                 match x {
                     // x − actor = −sign·d (ahead_of: the actor d ahead of x).
                     Some(x) => check.gap = Some((x, -sign * d, POSITION_TOLERANCE)),

@@ -196,9 +196,13 @@ impl PlanRoad<'_> {
         })
     }
 
-    /// World x and y of the road point (s, t), if s is on the road.
+    /// World x and y of the road point (s, t) (the plan's s), if s is on the plan's roads.
     pub(crate) fn world(&self, s: f64, t: f64) -> Option<(f64, f64)> {
-        self.road.pose(s, t).ok().map(|p| (p.x, p.y))
+        if !(0.0..=self.length()).contains(&s) {
+            return None;
+        }
+        let (road, s) = self.road_at(s);
+        road.pose(s, t).ok().map(|p| (p.x, p.y))
     }
 
     /// Width of lane `lane` at `s` (m); 0 where the lane is missing.

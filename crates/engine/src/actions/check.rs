@@ -9,7 +9,8 @@
 use opendrive::RoadPosition;
 use scenario::StateCheck;
 
-use crate::runtime::{RuntimeError, RuntimeErrorKind, World};
+use crate::error::{Error, ErrorKind};
+use crate::runtime::world::World;
 use crate::EntityId;
 
 /// Checks `check` on `actor` at `time`.
@@ -18,10 +19,10 @@ pub(crate) fn start(
     actor: EntityId,
     check: &StateCheck,
     time: f64,
-) -> Result<(), RuntimeError> {
+) -> Result<(), Error> {
     let e = world.entity(actor);
     let fail = |expected: String, found: String| {
-        RuntimeError::new(RuntimeErrorKind::CheckFailed {
+        Error::new(ErrorKind::CheckFailed {
             what: check.what.clone(),
             expected,
             found,
