@@ -1,11 +1,13 @@
-/* Runs an OpenSCENARIO scenario through the oscsim C API and prints where every entity
-   ends: one line per entity, "name,x,y,z,h" with 6 decimals (the trajectory CSV's), after a
-   line "time,T" with the final simulation time.
+/* Runs an OpenSCENARIO scenario (XML .xosc or DSL .osc) through the oscsim C API and prints
+   where every entity ends: one line per entity, "name,x,y,z,h" with 6 decimals (the trajectory
+   CSV's), after a line "time,T" with the final simulation time.
 
    Build (from the repository root, after cargo build -p oscsim-capi):
      cc -std=c99 -Icrates/capi/include examples/c/run_scenario.c \
         -Ltarget/debug -loscsim -Wl,-rpath,$PWD/target/debug -o run_scenario
      ./run_scenario examples/scenarios/cut_in_highway.xosc [NAME=VALUE ...]
+     ./run_scenario examples/scenarios/cut_in_highway.osc --road examples/roads/highway.xodr [--seed N]
+   (--seed is also the seed of the engine's random streams, as with oscsim run.)
    Exit status: 0 after a run; 1 when the scenario does not load or a step fails (the
    message, with file:line:col where there is one, on stderr); 2 on bad usage. */
 #include <stdio.h>
@@ -21,30 +23,45 @@ static int fail(const char *what, OscsimStatus status) {
 
 int main(int argc, char **argv) {
     if (argc < 2) {
-        fprintf(stderr, "usage: %s SCENARIO.xosc [NAME=VALUE ...]\n", argv[0]);
+        fprintf(stderr, "usage: %s SCENARIO [--road ROAD.xodr] [--seed N] [NAME=VALUE ...]\n", argv[0]);
         return 2;
     }
-    /* Parameter overrides NAME=VALUE, as oscsim run --param. */
-    int n_params = argc - 2;
-    OscsimParameter *params = calloc(n_params > 0 ? (size_t)n_params : 1, sizeof *params);
+    /* The options of oscsim run: --road and --seed (a DSL scenario), NAME=VALUE (--param, an
+       XML scenario). */
+    OscsimLoadOptions options = oscsim_load_options_default();
+    OscsimConfig config = oscsim_config_default();
+    OscsimParameter *params = calloc((size_t)argc, sizeof *params);
     if (params == NULL) return 1;
-    for (int i = 0; i < n_params; i++) {
-        char *eq = strchr(argv[i + 2], '=');
-        if (eq == NULL) {
-            fprintf(stderr, "expected NAME=VALUE, found %s\n", argv[i + 2]);
+    size_t n_params = 0;
+    for (int i = 2; i < argc; i++) {
+        char *eq = strchr(argv[i], '=');
+        if (strcmp(argv[i], "--road") == 0 && i + 1 < argc) {
+            options.road = argv[++i];
+        } else if (strcmp(argv[i], "--seed") == 0 && i + 1 < argc) {
+            options.seed = config.seed = strtoull(argv[++i], NULL, 10);
+        } else if (eq != NULL) {
+            *eq = '\0';
+            params[n_params].name = argv[i];
+            params[n_params].value = eq + 1;
+            n_params++;
+        } else {
+            fprintf(stderr, "expected --road FILE, --seed N or NAME=VALUE, found %s\n", argv[i]);
             free(params);
             return 2;
         }
-        *eq = '\0';
-        params[i].name = argv[i + 2];
-        params[i].value = eq + 1;
     }
+    options.params = params;
+    options.n_params = n_params;
 
-    OscsimConfig config = oscsim_config_default();
-    OscsimSimulation *sim = NULL;
-    OscsimStatus status = oscsim_simulation_new(argv[1], params, (size_t)n_params, &config, &sim);
+    OscsimScenario *scenario = NULL;
+    OscsimStatus status = oscsim_scenario_load(argv[1], &options, &scenario);
     free(params);
     if (status != OSCSIM_STATUS_OK) return fail("loading", status);
+    OscsimSimulation *sim = NULL;
+    status = oscsim_simulation_from_scenario(scenario, &config, &sim);
+    /* The simulation keeps what it needs of the scenario. */
+    oscsim_scenario_free(scenario);
+    if (status != OSCSIM_STATUS_OK) return fail("building the simulation", status);
 
     /* Step by step until the storyboard ends (oscsim_simulation_run does the same loop). */
     OscsimStopReason reason = OSCSIM_STOP_REASON_RUNNING;

@@ -1,11 +1,13 @@
 //! Variation at scale (OpenSCENARIO 1.3 §9.5 "Parameter value distributions"): run every
-//! variant of a ParameterValueDistribution file and tabulate what happened in each.
+//! variant of a ParameterValueDistribution file and tabulate what happened in each; or every
+//! seed of an OpenSCENARIO DSL scenario, its constraints re-solved per seed.
 //!
 //! | module | job |
 //! | --- | --- |
-//! | `plan` | the distribution file → numbered variants, checked against the ScenarioFile |
+//! | `plan` | the distribution file → numbered variants, checked against the ScenarioFile; or the seeds of a DSL scenario |
 //! | `seed` | each variant's random seed from the batch seed and its number |
 //! | `shard` | disjoint shares for several processes: `--shard I/N`, Slurm arrays, Kubernetes Indexed Jobs |
+//! | `coverage` | the cover items' buckets, hits and holes; `coverage.csv` (§7.3.12) |
 //! | `metrics` | collision, time to collision, headway and gap of the host, by the §8.7 methods |
 //! | `run` | the variants on a rayon pool, results by variant number |
 //! | `guard` | a variant's wall-clock limit (`--variant-timeout`) and its panics, each a failed row |
@@ -20,6 +22,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+mod coverage;
 mod guard;
 mod journal;
 mod merge;
@@ -35,6 +38,7 @@ mod shard;
 mod sweep;
 mod table;
 
+pub use coverage::{count as count_coverage, BucketDef, CoverDef, ItemCoverage};
 pub use engine::StopReason;
 pub use journal::{
     read as read_journal, Contents as JournalContents, Journal, JournalError, JOURNAL_FILE,
@@ -42,7 +46,7 @@ pub use journal::{
 pub use merge::{merge, merge_tables, write_outputs, MergeError};
 pub use metrics::{Measures, Observer};
 pub use parquet_file::{to_parquet, ParquetError};
-pub use plan::{Plan, PlanError};
+pub use plan::{parse_seeds, Plan, PlanError, Seeds, MAX_SEEDS};
 pub use report::{report_html, summary};
 pub use resume::{open as open_journal, run_durable, Finished, ResumeError, Resumed};
 pub use run::{empty_table, run, run_each, run_variants, selected, Options, RunError};

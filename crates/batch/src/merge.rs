@@ -2,7 +2,9 @@
 //! run writes: the rows of every shard's `results.csv`, by variant number, then `results.csv`,
 //! `results.parquet` and `report.html` written from that table by [`write_outputs`] — the same
 //! function the unsharded run uses, on the same values (table.rs keeps numbers as written), so
-//! the files are equal byte for byte. Per-variant folders (`variants/NNNNN`) are copied.
+//! the files are equal byte for byte; `coverage.csv` is recounted from the merged rows with
+//! the buckets the shards' `coverage.csv` list (coverage.rs). Per-variant folders
+//! (`variants/NNNNN`) are copied.
 //!
 //! A shard folder with a batch journal (resume.rs) is checked first: its sweep must be that of
 //! the other shards (the digest of sweep.rs; shards differ only in their selection), and it
@@ -88,17 +90,22 @@ fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> Merg
     }
 }
 
-/// Writes `results.csv`, `results.parquet` and `report.html` of `table` into `dir`, each to a
+/// Writes `results.csv`, `results.parquet`, `report.html` (and `coverage.csv` when the table
+/// has cover items) of `table` into `dir`, each to a
 /// temporary name and renamed into place: a kill leaves each file whole, old or new. Not
 /// synced: they are made from the batch's journal, which is (resume.rs); after a power loss
 /// the batch run again writes them anew.
 pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
     std::fs::create_dir_all(dir).map_err(io("cannot create", dir))?;
-    let files = [
+    let mut files = vec![
         ("results.csv", table.to_csv().into_bytes()),
         ("results.parquet", to_parquet(table)?),
         ("report.html", report_html(table).into_bytes()),
     ];
+    if !table.buckets.is_empty() {
+        let counts = crate::coverage::count(table);
+        files.push(("coverage.csv", crate::coverage::to_csv(&counts).into_bytes()));
+    }
     for (name, bytes) in files {
         let path = dir.join(name);
         let tmp = dir.join(format!("{name}.tmp"));
@@ -138,7 +145,17 @@ pub fn merge(shards: &[PathBuf], out: &Path) -> Result<Table, MergeError> {
         parts.push((Table::from_csv(&text, &name)?, name));
         copy_variants(&dir.join("variants"), &out.join("variants"))?;
     }
-    let table = merge_tables(parts)?;
+    let mut table = merge_tables(parts)?;
+    // The cover items' buckets, from the first shard's coverage.csv (every shard writes the
+    // plan's); the hits are recounted from the merged rows.
+    if let Some(dir) = shards.first() {
+        let path = dir.join("coverage.csv");
+        if path.is_file() {
+            let text = std::fs::read_to_string(&path).map_err(io("cannot read", &path))?;
+            table.buckets =
+                crate::coverage::definitions_from_csv(&text, &path.display().to_string())?;
+        }
+    }
     write_outputs(out, &table)?;
     Ok(table)
 }
@@ -162,7 +179,10 @@ pub fn merge_tables(parts: Vec<(Table, String)>) -> Result<Table, MergeError> {
         match &mut merged {
             None => merged = Some((table, name)),
             Some((m, first)) => {
-                if m.parameters != table.parameters || m.monitors != table.monitors {
+                if m.parameters != table.parameters
+                    || m.monitors != table.monitors
+                    || m.coverage != table.coverage
+                {
                     return Err(MergeError::DifferentBatches {
                         first: first.clone(),
                         other: name,

@@ -19,11 +19,8 @@
 
 use opendrive::RoadNetwork;
 
-use engine::domain::{
-    time_headway_between, Acceleration6d, DistanceDirection, DistanceMode, Vector3, Velocity6d,
-};
+use engine::domain::{time_headway_between, DistanceDirection, DistanceMode};
 use engine::output::{EntityFrame, Frame, FrameSink};
-use engine::position::EntityView;
 use engine::runtime::EntityKind;
 
 /// The running minima and the collision record of one run.
@@ -56,26 +53,6 @@ fn min_into(slot: &mut Option<f64>, value: f64) {
     }
 }
 
-/// The entity of a frame as the domain methods see it: pose, box, and velocity and
-/// acceleration in its own axes (the frame gives them in world axes).
-fn view<'a>(e: &EntityFrame<'a>) -> EntityView<'a> {
-    let (s, c) = e.pose.h.sin_cos();
-    let local = |v: Vector3| Vector3::new(c * v.x + s * v.y, -s * v.x + c * v.y, v.z);
-    EntityView {
-        speed: e.speed,
-        velocity: Velocity6d {
-            translational: local(e.velocity),
-            rotational: Vector3::new(0.0, 0.0, e.yaw_rate),
-        },
-        acceleration: Acceleration6d {
-            translational: local(e.acceleration),
-            ..Acceleration6d::ZERO
-        },
-        road_position: e.road_position,
-        ..EntityView::new(e.name, e.kind.object_type(), e.pose, e.bounding_box)
-    }
-}
-
 impl<'n> Observer<'n> {
     /// An observer of `host` on `network`.
     pub fn new(network: &'n RoadNetwork, host: &str) -> Self {
@@ -87,7 +64,7 @@ impl<'n> Observer<'n> {
     }
 
     fn measure(&mut self, time: f64, host: &EntityFrame<'_>, other: &EntityFrame<'_>) {
-        let (h, o) = (view(host), view(other));
+        let (h, o) = (host.view(), other.view());
         let (hp, op) = (h.physical_object(), o.physical_object());
         let m = &mut self.measures;
         if let Some(ttc) = h

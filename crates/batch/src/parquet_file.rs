@@ -8,6 +8,7 @@
 //! | `stop_reason`, `error` | Utf8 |
 //! | `end_time`, `first_collision_time`, `min_ttc`, `min_headway`, `min_gap` | Float64 |
 //! | `collision`, `monitor:<name>` | Boolean |
+//! | `cover:<name>`, `record:<name>` | Utf8 (the CSV cell: samples separated by `;`) |
 //!
 //! Empty CSV cells are nulls. The file is uncompressed and written with fixed writer
 //! properties, so the same table gives the same bytes.
@@ -114,6 +115,23 @@ pub fn to_parquet(table: &Table) -> Result<Vec<u8>, ParquetError> {
         let values: BooleanArray = ok
             .iter()
             .map(|o| o.and_then(|o| o.monitors.iter().find(|(n, _)| n == m).map(|(_, v)| *v)))
+            .collect();
+        columns.push(Arc::new(values));
+    }
+    for (k, c) in table.coverage.iter().enumerate() {
+        fields.push(Field::new(c, DataType::Utf8, true));
+        let values: StringArray = ok
+            .iter()
+            .map(|o| {
+                o.map(|o| {
+                    let samples = o.samples.get(k).map_or(&[][..], Vec::as_slice);
+                    samples
+                        .iter()
+                        .map(load::Sample::text)
+                        .collect::<Vec<_>>()
+                        .join(";")
+                })
+            })
             .collect();
         columns.push(Arc::new(values));
     }

@@ -12,6 +12,12 @@
 //! exists and loads, and every parameter the distribution varies is a global parameter the
 //! scenario declares. The distribution reader itself refuses empty sets, a stepWidth ≤ 0, an
 //! inverted range, UserDefinedDistribution and the like, with their positions.
+//!
+//! A batch of seeds ([`Plan::seeds`]) varies an OpenSCENARIO DSL scenario instead: variant i
+//! re-solves its constraints with the i-th seed (ASAM OpenSCENARIO DSL 2.1 §7.3.6), the file
+//! and its road network read once (`load::Source`). Its columns are `seed` and the resolved
+//! values `load` reports (the scenario's top-level parameters and constrained fields). An XML
+//! scenario has no constraints to re-solve: an error.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -53,6 +59,17 @@ pub enum PlanError {
     /// The ScenarioFile does not load (its own position in its own file).
     #[error("the ScenarioFile does not load: {0}")]
     Scenario(scenario::Error),
+    /// The scenario of a batch of seeds does not load (its own position in its own file).
+    #[error("the scenario does not load: {0}")]
+    Load(load::Error),
+    /// Seeds for a scenario without constraints to re-solve (an XML one), or no seeds.
+    #[error("{message} at {pos}")]
+    Seeds {
+        /// Lowercase "expected …, found …".
+        message: String,
+        /// The scenario file (1:1).
+        pos: SourcePos,
+    },
     /// The scenario's road network does not load (its own file and position).
     #[error("the ScenarioFile's road network does not load: {0}")]
     RoadNetwork(opendrive::Error),
@@ -84,8 +101,52 @@ pub struct Plan {
     networks: Arc<Mutex<RoadNetworks>>,
     /// The varied parameters, in the order the distribution first names them.
     pub parameters: Vec<String>,
-    /// Each variant's parameter values, by name; variant i is `variants[i]`.
+    /// Each variant's parameter values, by name; variant i is `variants[i]` (a batch of
+    /// seeds: its `seed`; the resolved values are known when it runs).
     pub variants: Vec<BTreeMap<String, String>>,
+    /// A batch of seeds: the DSL scenario they re-solve (`None`: a distribution).
+    pub seeds: Option<Seeds>,
+    /// The scenario's `cover(…)`/`record(…)` items (a DSL scenario's; none for XML): the
+    /// results table's coverage columns and the buckets of the coverage report.
+    pub coverage: Vec<load::CoverItem>,
+}
+
+/// An OpenSCENARIO DSL scenario varied by seed: variant i is the scenario resolved, planned
+/// and lowered with `seeds[i]`.
+#[derive(Debug, Clone)]
+pub struct Seeds {
+    /// The scenario file, checked, and its road network, read once.
+    pub source: Arc<load::Source>,
+    /// Each variant's seed.
+    pub seeds: Vec<u64>,
+}
+
+/// At most this many seeds in one batch (a list of them is held in memory).
+pub const MAX_SEEDS: u64 = 100_000_000;
+
+/// The seeds of `--seeds`: `A..B` (inclusive, A ≤ B) or a count `N` (the seeds 1 … N).
+pub fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
+    let bad = || format!("expected A..B (0 ≤ A ≤ B) or a count N ≥ 1 of seeds, found '{text}'");
+    let (first, last) = match text.split_once("..") {
+        Some((a, b)) => (
+            a.trim().parse::<u64>().map_err(|_| bad())?,
+            b.trim().parse::<u64>().map_err(|_| bad())?,
+        ),
+        None => match text.trim().parse::<u64>() {
+            Ok(n) if n >= 1 => (1, n),
+            _ => return Err(bad()),
+        },
+    };
+    if last < first {
+        return Err(bad());
+    }
+    if last - first >= MAX_SEEDS {
+        return Err(format!(
+            "expected at most {MAX_SEEDS} seeds, found {} in '{text}'",
+            u128::from(last - first) + 1
+        ));
+    }
+    Ok((first..=last).collect())
 }
 
 impl Plan {
@@ -103,8 +164,15 @@ impl Plan {
                 path: expanded.scenario_file.display().to_string(),
             });
         }
-        let scenario = Scenario::load(&expanded.scenario_file).map_err(PlanError::Scenario)?;
-        let network = engine::load::road_network(&scenario).map_err(PlanError::RoadNetwork)?;
+        // Through the front door, with the ScenarioFile's own road network and parameters.
+        let source = load::Source::open(&expanded.scenario_file, &load::Options::default())
+            .map_err(|e| match e.into_kind() {
+                load::ErrorKind::Scenario(s) => PlanError::Scenario(s),
+                load::ErrorKind::RoadNetwork(r) => PlanError::RoadNetwork(r),
+                other => PlanError::Load(other.into()),
+            })?;
+        let network = Arc::clone(source.network());
+        let scenario = source.load(0).map_err(PlanError::Load)?.scenario;
         let mut networks = RoadNetworks::new();
         networks.keep(&scenario, Arc::clone(&network));
         let named = varied(&distribution);
@@ -143,6 +211,48 @@ impl Plan {
             networks: Arc::new(Mutex::new(networks)),
             parameters,
             variants: expanded.runs,
+            seeds: None,
+            coverage: Vec::new(),
+        })
+    }
+
+    /// A batch of `seeds` over the OpenSCENARIO DSL scenario `path`, loaded with `options`
+    /// (its road network; the options' seed is not used): module doc. The plan's scenario is
+    /// that of the first seed that plans; when none does, the first seed's error.
+    pub fn seeds(path: &Path, options: &load::Options, seeds: Vec<u64>) -> Result<Plan, PlanError> {
+        let source = load::Source::open(path, options).map_err(PlanError::Load)?;
+        let at_start = || SourcePos::start_of(path.into());
+        if source.language() == load::Language::Xml {
+            return Err(PlanError::Seeds {
+                message: "expected an OpenSCENARIO DSL scenario (.osc) whose constraints the seeds re-solve, found an XML scenario, which has none (vary it with a ParameterValueDistribution)".into(),
+                pos: at_start(),
+            });
+        }
+        let Some(&first) = seeds.first() else {
+            return Err(PlanError::Seeds {
+                message: "expected at least one seed, found none".into(),
+                pos: at_start(),
+            });
+        };
+        let loaded = first_planned(&source, first, &seeds[1..]).map_err(PlanError::Load)?;
+        let mut parameters = vec!["seed".to_owned()];
+        parameters.extend(source.columns().iter().cloned());
+        Ok(Plan {
+            distribution: path.to_path_buf(),
+            scenario: loaded.scenario,
+            coverage: loaded.coverage,
+            network: Arc::clone(source.network()),
+            // Unused: every seed runs on the DSL scenario's road network (run.rs).
+            networks: Arc::new(Mutex::new(RoadNetworks::new())),
+            parameters,
+            variants: seeds
+                .iter()
+                .map(|s| BTreeMap::from([("seed".to_owned(), s.to_string())]))
+                .collect(),
+            seeds: Some(Seeds {
+                source: Arc::new(source),
+                seeds,
+            }),
         })
     }
 
@@ -167,6 +277,19 @@ impl Plan {
             .map(|p| self.variants[i].get(p).cloned().unwrap_or_default())
             .collect()
     }
+}
+
+/// The first of `first`, `rest` that plans; else `first`'s error.
+fn first_planned(
+    source: &load::Source,
+    first: u64,
+    rest: &[u64],
+) -> Result<load::Loaded, load::Error> {
+    let error = match source.load(first) {
+        Ok(loaded) => return Ok(loaded),
+        Err(e) => e,
+    };
+    rest.iter().find_map(|&s| source.load(s).ok()).ok_or(error)
 }
 
 /// Every parameter the distribution varies, with the position of the distribution naming it,

@@ -5,6 +5,10 @@
 //! cell (two parameters: a heat map; one: a strip along the parameter) coloured by `min_ttc`
 //! (red 0 s → green ≥ 4 s, grey when undefined), collisions crossed out, the value on hover.
 //!
+//! With cover items (an OpenSCENARIO DSL scenario's `cover(…)`, coverage.rs) the page has a
+//! coverage section: per item a bar chart of the hits per bucket (holes in red), the share of
+//! buckets hit and the holes; overall the share of all buckets hit.
+//!
 //! The page is a function of the table alone (no date, no path), so merged shards and an
 //! unsharded run write the same bytes.
 
@@ -47,7 +51,93 @@ pub fn summary(table: &Table) -> String {
         }
         None => out.push_str("\nno time to collision was defined in any variant"),
     }
+    if let Some(line) = crate::coverage::summary_line(&crate::coverage::count(table)) {
+        out.push('\n');
+        out.push_str(&line);
+    }
     out
+}
+
+/// The coverage section (module doc); empty without cover items.
+fn coverage_html(table: &Table) -> String {
+    let items = crate::coverage::count(table);
+    let Some(overall) = crate::coverage::summary_line(&items) else {
+        return String::new();
+    };
+    let mut html = format!("<h2>Coverage</h2><p>{}</p>\n", escape(&overall));
+    for item in &items {
+        let total = item.buckets.len();
+        let _ = write!(
+            html,
+            "<h3>cover({})</h3><p>{} of {total} buckets hit ({:.1} %); holes: {}; samples outside the buckets: {}; without value: {}</p>\n",
+            escape(&item.name),
+            item.hit(),
+            100.0 * item.hit() as f64 / total.max(1) as f64,
+            {
+                let holes: Vec<String> = item.holes().iter().map(|b| escape(&b.label())).collect();
+                if holes.is_empty() { "none".to_owned() } else { holes.join(", ") }
+            },
+            item.outside,
+            item.no_value
+        );
+        html.push_str(&bars_svg(item));
+        html.push('\n');
+    }
+    html
+}
+
+/// A bar per bucket, height by hits (holes as a red mark on the axis), labels below.
+fn bars_svg(item: &crate::coverage::ItemCoverage) -> String {
+    let (bar, gap, left, top, plot_h) = (28.0, 6.0, 40.0, 10.0, 120.0);
+    let n = item.buckets.len() as f64;
+    let w = left + n * (bar + gap) + 20.0;
+    let h = top + plot_h + 70.0;
+    let max = item
+        .buckets
+        .iter()
+        .map(|(_, h)| *h)
+        .max()
+        .unwrap_or(0)
+        .max(1) as f64;
+    let mut svg = format!(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" font-family=\"sans-serif\" font-size=\"10\">"
+    );
+    let base = top + plot_h;
+    let _ = write!(
+        svg,
+        "<line x1=\"{left}\" y1=\"{base}\" x2=\"{}\" y2=\"{base}\" stroke=\"#444444\"/><text x=\"{}\" y=\"{}\" text-anchor=\"end\">{}</text>",
+        w - 20.0,
+        left - 4.0,
+        top + 8.0,
+        max as u64
+    );
+    for (i, (b, hits)) in item.buckets.iter().enumerate() {
+        let x = left + i as f64 * (bar + gap) + gap / 2.0;
+        let label = escape(&b.label());
+        if *hits == 0 {
+            let _ = write!(
+                svg,
+                "<rect x=\"{x}\" y=\"{}\" width=\"{bar}\" height=\"4\" fill=\"#d62728\"><title>{label}: hole</title></rect>",
+                base - 4.0
+            );
+        } else {
+            let bh = plot_h * *hits as f64 / max;
+            let _ = write!(
+                svg,
+                "<rect x=\"{x}\" y=\"{}\" width=\"{bar}\" height=\"{bh}\" fill=\"#4e79a7\"><title>{label}: {hits}</title></rect><text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{hits}</text>",
+                base - bh,
+                x + bar / 2.0,
+                base - bh - 2.0
+            );
+        }
+        let (tx, ty) = (x + bar / 2.0, base + 8.0);
+        let _ = write!(
+            svg,
+            "<text x=\"{tx}\" y=\"{ty}\" transform=\"rotate(45 {tx} {ty})\">{label}</text>"
+        );
+    }
+    svg.push_str("</svg>");
+    svg
 }
 
 /// " (P1 = v1, P2 = v2)" for a row with parameters.
@@ -243,6 +333,7 @@ pub fn report_html(table: &Table) -> String {
             "<h2>min_ttc over the parameter space</h2><p>red 0 s to green ≥ {TTC_GREEN} s; grey: no time to collision; crossed: collision.</p>\n{svg}"
         );
     }
+    html.push_str(&coverage_html(table));
     html.push_str("<h2>Variants</h2><table><thead><tr>");
     for h in table.header().split(',') {
         let _ = write!(html, "<th>{}</th>", escape(h));

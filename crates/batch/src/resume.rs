@@ -1,9 +1,11 @@
 //! Batches that survive being killed: `oscsim batch DIST --out DIR` records every finished
 //! variant's row in `DIR/batch.journal` (journal.rs) as the variant ends, and the same command
 //! run again on the same `DIR` goes on from there. It runs only the variants the journal lacks
-//! and ends with the `results.csv`, `results.parquet` and `report.html` an uninterrupted run
-//! writes, byte for byte: a journal row is the row's line of `results.csv`, and the table keeps
-//! its numbers as written (table.rs), as `oscsim batch merge` relies on too.
+//! and ends with the `results.csv`, `results.parquet`, `report.html` (and, for a DSL scenario
+//! with cover items, `coverage.csv`) an uninterrupted run writes, byte for byte: a journal row
+//! is the row's line of `results.csv` with its coverage samples, and the table keeps its
+//! numbers as written (table.rs), as `oscsim batch merge` relies on too; `coverage.csv` is
+//! counted from the rows.
 //!
 //! **Resuming is running again, without a flag.** Slurm's `--requeue`, a Kubernetes Job's
 //! retries and a spot instance's restart all run the same command line again; a flag the first
@@ -119,7 +121,7 @@ pub fn open(dir: &Path, sweep: &Sweep, columns: &Table) -> Result<Resumed, Resum
     };
     std::fs::create_dir_all(dir).map_err(io("create"))?;
     if !path.exists() {
-        let found: Vec<&str> = ["results.csv", "results.parquet", "report.html", "variants"]
+        let found: Vec<&str> = ["results.csv", "results.parquet", "report.html", "coverage.csv", "variants"]
             .into_iter()
             .filter(|f| dir.join(f).exists())
             .collect();

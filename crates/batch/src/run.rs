@@ -169,10 +169,11 @@ pub fn run_each(
         variants
             .par_iter()
             .map(|&v| {
+                let (params, result) = guarded_variant(plan, options, v);
                 let row = Row {
                     variant: v,
-                    params: plan.values(v as usize),
-                    result: guarded_variant(plan, options, v),
+                    params,
+                    result,
                 };
                 each(&row, done.fetch_add(1, Ordering::Relaxed) + 1, total)?;
                 Ok(row)
@@ -199,24 +200,32 @@ pub fn empty_table(plan: &Plan) -> Table {
     Table {
         parameters: plan.parameters.clone(),
         monitors,
+        coverage: plan.coverage.iter().map(crate::coverage::column).collect(),
+        buckets: crate::coverage::definitions(&plan.coverage),
         rows: Vec::new(),
     }
 }
 
 /// Runs variant `v` with its panics contained and its saved outputs put in place or, when it
-/// timed out or panicked, discarded (guard.rs, save.rs).
-fn guarded_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String> {
-    let result = contain(|| run_variant(plan, options, v));
-    match &options.save {
+/// timed out or panicked, discarded (guard.rs, save.rs): its row values and its outcome, or
+/// the message of what failed. A panic before its row values are known (while a seed
+/// re-solves the scenario) leaves the values the plan knows (the seed).
+fn guarded_variant(plan: &Plan, options: &Options, v: u64) -> (Vec<String>, Result<Outcome, String>) {
+    let mut params = None;
+    let result = contain(|| run_variant(plan, options, v, &mut params));
+    let result = match &options.save {
         Some((_, root)) => discard(root, v).and(result),
         None => result,
-    }
+    };
+    (params.unwrap_or_else(|| plan.values(v as usize)), result)
 }
 
-/// Counts Event starts and forwards records to an optional event log.
+/// Counts Event starts and forwards records to an optional event log and to the coverage
+/// sampler (its `emit` events).
 struct Events {
     started: u64,
     log: Option<JsonlWriter<BufWriter<File>>>,
+    emits: load::Emits,
 }
 
 impl EventSink for Events {
@@ -226,6 +235,7 @@ impl EventSink for Events {
                 self.started += 1;
             }
         }
+        self.emits.event(record)?;
         self.log.as_mut().map_or(Ok(()), |l| l.event(record))
     }
 
@@ -234,38 +244,111 @@ impl EventSink for Events {
     }
 }
 
-/// Runs variant `v`: the outcome, or the message of what failed. Its saved outputs are
-/// written in its staging folder and put in place when the run ends, unless it timed out.
-fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String> {
-    let mut deadline = options
+/// Variant `v`'s row values (a distribution's parameters; a seed and the values its
+/// resolution gave) and scenario, or the message of why it cannot run; and the seed of its
+/// engine's random streams: a distribution's variant seed (seed.rs), a batch of seeds' own
+/// seed, so that `oscsim run X.osc --seed S` repeats variant S.
+fn variant_scenario(
+    plan: &Plan,
+    options: &Options,
+    v: u64,
+) -> (Vec<String>, Result<Variant, String>, u64) {
+    match &plan.seeds {
+        None => {
+            let params: Vec<(String, String)> = plan.variants[v as usize]
+                .iter()
+                .map(|(k, x)| (k.clone(), x.clone()))
+                .collect();
+            // The variant from the scenario's files kept at the first load: no file is read.
+            let scenario = plan
+                .scenario
+                .with_parameters(&params)
+                .map(|scenario| Variant {
+                    scenario,
+                    coverage: Vec::new(),
+                })
+                .map_err(|e| match e.kind() {
+                    scenario::ErrorKind::ConstraintViolated { .. } => format!("{REFUSED}{e}"),
+                    _ => e.to_string(),
+                });
+            (
+                plan.values(v as usize),
+                scenario,
+                variant_seed(options.seed, v),
+            )
+        }
+        Some(seeds) => {
+            let seed = seeds.seeds[v as usize];
+            let mut row = vec![seed.to_string()];
+            match seeds.source.load(seed) {
+                Ok(loaded) => {
+                    row.extend(loaded.resolved.into_iter().map(|(_, value)| value));
+                    let variant = Variant {
+                        scenario: loaded.scenario,
+                        coverage: loaded.coverage,
+                    };
+                    (row, Ok(variant), seed)
+                }
+                Err(e) => {
+                    row.resize(plan.parameters.len(), String::new());
+                    (row, Err(e.to_string()), seed)
+                }
+            }
+        }
+    }
+}
+
+/// A variant ready to run: its scenario and coverage items.
+struct Variant {
+    scenario: scenario::Scenario,
+    coverage: Vec<load::CoverItem>,
+}
+
+/// Runs variant `v`: the outcome, or the message of what failed; its row values (above) in
+/// `params` as soon as they are known. The wall-clock limit counts from here.
+fn run_variant(
+    plan: &Plan,
+    options: &Options,
+    v: u64,
+    params: &mut Option<Vec<String>>,
+) -> Result<Outcome, String> {
+    let deadline = options
         .variant_timeout
         .map(|limit| Deadline::new(Instant::now(), limit));
-    let params: Vec<(String, String)> = plan.variants[v as usize]
-        .iter()
-        .map(|(k, x)| (k.clone(), x.clone()))
-        .collect();
+    let (values, variant, seed) = variant_scenario(plan, options, v);
+    *params = Some(values);
+    run_scenario(plan, options, v, &variant?, seed, deadline)
+}
+
+/// Runs the scenario of variant `v` with engine seed `seed` on the plan's road network (read
+/// once for the whole batch), sampling its coverage items. Its saved outputs are written in
+/// its staging folder and put in place when the run ends, unless it timed out.
+fn run_scenario(
+    plan: &Plan,
+    options: &Options,
+    v: u64,
+    variant: &Variant,
+    seed: u64,
+    mut deadline: Option<Deadline>,
+) -> Result<Outcome, String> {
+    let scenario = &variant.scenario;
     let config = EngineConfig {
         dt: options.dt,
         duration: options.duration,
         max_time: options.max_time,
-        seed: variant_seed(options.seed, v),
+        seed,
         traffic_model: options.traffic_model,
         vehicle_model: options.vehicle_model,
         stop_at_red_lights: options.stop_at_red_lights,
     };
-    // The variant from the scenario's files kept at the first load, its own files (a road,
-    // a catalog directory its values name) resolved from its own values; its road network
-    // read once for every variant that names the same file.
-    let scenario = plan
-        .scenario
-        .with_parameters(&params)
-        .map_err(|e| match e.kind() {
-            scenario::ErrorKind::ConstraintViolated { .. } => format!("{REFUSED}{e}"),
-            _ => e.to_string(),
-        })?;
-    let network = plan.network_for(&scenario).map_err(|e| e.to_string())?;
+    // A batch of seeds runs on the DSL scenario's road network, read once; a distribution's
+    // variant on the network its own values name, read once for every variant naming it.
+    let network = match &plan.seeds {
+        Some(_) => Arc::clone(&plan.network),
+        None => plan.network_for(scenario).map_err(|e| e.to_string())?,
+    };
     let mut engine =
-        Engine::new(&scenario, Arc::clone(&network), config).map_err(|e| e.to_string())?;
+        Engine::new(scenario, Arc::clone(&network), config).map_err(|e| e.to_string())?;
     let mut observer = Observer::new(&network, &options.host);
     let mut outputs = match &options.save {
         Some((save, root)) => {
@@ -281,12 +364,14 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         }
         None => Outputs::default(),
     };
+    let mut sampler = load::Sampler::new(&variant.coverage, &plan.network);
     let mut events = Events {
         started: 0,
         log: outputs.events.take(),
+        emits: sampler.emits(),
     };
     let run = {
-        let mut sinks: Vec<&mut dyn FrameSink> = vec![&mut observer];
+        let mut sinks: Vec<&mut dyn FrameSink> = vec![&mut observer, &mut sampler];
         if let Some(d) = deadline.as_mut() {
             sinks.push(d);
         }
@@ -314,6 +399,25 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
     }
     let reason = run?;
     let m = observer.measures;
+    // The samples in the plan's column order (a seed's items are the plan's).
+    let mut sampled: Vec<(String, Vec<load::Sample>)> = variant
+        .coverage
+        .iter()
+        .map(crate::coverage::column)
+        .zip(sampler.finish())
+        .collect();
+    let samples = plan
+        .coverage
+        .iter()
+        .map(|item| {
+            let column = crate::coverage::column(item);
+            sampled
+                .iter_mut()
+                .find(|(c, _)| *c == column)
+                .map(|(_, s)| std::mem::take(s))
+                .unwrap_or_default()
+        })
+        .collect();
     Ok(Outcome {
         stop: Some(reason),
         end_time: engine.time(),
@@ -324,6 +428,7 @@ fn run_variant(plan: &Plan, options: &Options, v: u64) -> Result<Outcome, String
         min_gap: m.min_gap,
         events_started: events.started,
         monitors: engine.monitors(),
+        samples,
     }
     .quantized())
 }

@@ -11,7 +11,12 @@
 //!   same sweep) and bytes, sorted by name and then bytes;
 //! - the options that change a row or a saved file: seed, dt, duration, max time, traffic and
 //!   vehicle models, stopping at red lights, the host, which outputs are saved, and the OSI
-//!   recording time when traces are saved.
+//!   recording time when traces are saved;
+//! - a batch of seeds (plan.rs): the files of the DSL program (the scenario, the files it
+//!   imports and the standard library's, among the files above, by name and text), the
+//!   scenario that runs (`--scenario`) and every seed in variant order. Variant i is seed i of
+//!   the list, so `--seeds 1..100` and `--seeds 2..101` are two sweeps although both have 100
+//!   variants. A distribution's digest has none of these fields, so its journals stay valid.
 //!
 //! Left out on purpose: the number of jobs and the order variants finish in (the table is the
 //! same for any), and `--variant-timeout`, which only decides whether a slow variant gives its
@@ -71,6 +76,12 @@ impl Sweep {
         if let Some(road) = &plan.scenario.road_network.logic_file {
             files.push((file_name(road), read(road)?));
         }
+        if let Some(seeds) = &plan.seeds {
+            let program = seeds.source.dsl().map_or(&[][..], |p| p.files());
+            for f in program {
+                files.push((file_name(Path::new(&f.name)), f.text.clone().into_bytes()));
+            }
+        }
         files.sort();
         files.dedup();
         for (name, bytes) in &files {
@@ -86,6 +97,16 @@ impl Sweep {
             o.stop_at_red_lights, o.host, save, recording
         );
         field(options_text.as_bytes());
+        if let Some(seeds) = &plan.seeds {
+            let entry = seeds.source.options().scenario.as_deref().unwrap_or("");
+            field(format!("seeds of scenario {entry:?}").as_bytes());
+            // Length-prefixed as a field, the seeds hashed one by one (a list of 10^8 is not
+            // copied into one buffer).
+            hash.update(((seeds.seeds.len() * 8) as u64).to_le_bytes());
+            for s in &seeds.seeds {
+                hash.update(s.to_le_bytes());
+            }
+        }
         let mut digest = String::with_capacity(64);
         for byte in hash.finalize() {
             let _ = write!(digest, "{byte:02x}");

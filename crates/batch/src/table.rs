@@ -4,7 +4,10 @@
 //! the distribution file first names it), `stop_reason`, `end_time`, `collision`,
 //! `first_collision_time`, `min_ttc`, `min_headway`, `min_gap`, `events_started`, `error`, then
 //! one `monitor:<name>` column per MonitorDeclaration of the scenario (OpenSCENARIO 1.3), in
-//! name order.
+//! name order, then one `cover:<name>` or `record:<name>` column per coverage item of an
+//! OpenSCENARIO DSL scenario (§7.3.12), in source order: the item's samples in time order,
+//! separated by `;` (a number in the item's unit with 6 decimals, an enum member, `true` or
+//! `false`, or `no value`); empty when its event never occurred.
 //!
 //! Numbers are written at a fixed precision — times (`end_time`, `first_collision_time`) to the
 //! millisecond, `min_ttc` (s), `min_headway` (s) and `min_gap` (m) to 1e-6 — and the table keeps
@@ -22,6 +25,9 @@
 use std::fmt::Write as _;
 
 use engine::StopReason;
+use load::Sample;
+
+use crate::coverage::CoverDef;
 
 /// What one run of a variant gave.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -44,6 +50,8 @@ pub struct Outcome {
     pub events_started: u64,
     /// The monitors' values at the end, by name.
     pub monitors: Vec<(String, bool)>,
+    /// Each coverage column's samples, in column order (empty without coverage items).
+    pub samples: Vec<Vec<Sample>>,
 }
 
 /// The start of the error message of a variant whose parameter values break the
@@ -94,6 +102,11 @@ pub struct Table {
     pub parameters: Vec<String>,
     /// Names of the scenario's monitors, in column order.
     pub monitors: Vec<String>,
+    /// The coverage columns, `cover:<name>` or `record:<name>`, in column order.
+    pub coverage: Vec<String>,
+    /// The buckets of the `cover` items (coverage.rs); not in the CSV: the batch's plan, or
+    /// a shard's `coverage.csv`, gives them.
+    pub buckets: Vec<CoverDef>,
     /// The rows, by variant number.
     pub rows: Vec<Row>,
 }
@@ -153,6 +166,7 @@ impl Table {
                 .iter()
                 .map(|m| field(&format!("monitor:{m}")).into_owned()),
         );
+        cells.extend(self.coverage.iter().map(|c| field(c).into_owned()));
         cells.join(",")
     }
 
@@ -201,11 +215,19 @@ impl Table {
                     let value = o.monitors.iter().find(|(n, _)| n == m).map(|(_, v)| v);
                     let _ = write!(out, ",{}", value.map_or(String::new(), |v| v.to_string()));
                 }
+                for k in 0..self.coverage.len() {
+                    let cell: Vec<String> = o
+                        .samples
+                        .get(k)
+                        .map(|s| s.iter().map(Sample::text).collect())
+                        .unwrap_or_default();
+                    let _ = write!(out, ",{}", field(&cell.join(";")));
+                }
             }
             Err(message) => {
                 let stop = row.stop_reason().unwrap_or_default();
                 let _ = write!(out, ",{stop},,,,,,,,{}", field(message));
-                for _ in &self.monitors {
+                for _ in self.monitors.iter().chain(&self.coverage) {
                     out.push(',');
                 }
             }
@@ -241,7 +263,10 @@ impl Table {
             ));
         }
         let parameters = cells[1..fixed_at].to_vec();
-        let monitors = cells[fixed_at + FIXED_COLUMNS.len()..]
+        let rest = &cells[fixed_at + FIXED_COLUMNS.len()..];
+        let is_coverage = |c: &String| c.starts_with("cover:") || c.starts_with("record:");
+        let first_coverage = rest.iter().position(is_coverage).unwrap_or(rest.len());
+        let monitors = rest[..first_coverage]
             .iter()
             .map(|c| {
                 c.strip_prefix("monitor:")
@@ -249,9 +274,19 @@ impl Table {
                     .ok_or_else(|| err(1, "monitor:<name> columns after error", c))
             })
             .collect::<Result<Vec<_>, _>>()?;
+        let coverage = rest[first_coverage..].to_vec();
+        if let Some(c) = coverage.iter().find(|c| !is_coverage(c)) {
+            return Err(err(
+                1,
+                "cover:<name> or record:<name> columns after the monitors",
+                c,
+            ));
+        }
         let mut table = Table {
             parameters,
             monitors,
+            coverage,
+            buckets: Vec::new(),
             rows: Vec::new(),
         };
         for (n, line) in lines {
@@ -318,6 +353,13 @@ impl Table {
                 other => return Err(("true, false or empty for a monitor", other.to_owned())),
             }
         }
+        let first_coverage = at + 9 + self.monitors.len();
+        let samples = (0..self.coverage.len())
+            .map(|k| match c[first_coverage + k].as_str() {
+                "" => Vec::new(),
+                cell => cell.split(';').map(Sample::parse).collect(),
+            })
+            .collect();
         Ok(Row {
             variant,
             params,
@@ -333,6 +375,7 @@ impl Table {
                     .parse()
                     .map_err(|_| ("an events_started count", c[at + 7].clone()))?,
                 monitors,
+                samples,
             }),
         })
     }
@@ -397,6 +440,8 @@ mod tests {
         Table {
             parameters: vec!["EgoSpeed".into(), "Name, quoted".into()],
             monitors: vec!["Safe".into()],
+            coverage: vec!["cover:gap".into(), "record:side".into()],
+            buckets: Vec::new(),
             rows: vec![
                 Row {
                     variant: 0,
@@ -411,6 +456,10 @@ mod tests {
                         min_gap: Some(0.0),
                         events_started: 3,
                         monitors: vec![("Safe".into(), false)],
+                        samples: vec![
+                            vec![Sample::Number(12.5), Sample::NoValue],
+                            vec![Sample::Text("left".into())],
+                        ],
                     }),
                 },
                 Row {
@@ -427,9 +476,9 @@ mod tests {
         let t = table();
         let csv = t.to_csv();
         let expected = [
-            "variant,EgoSpeed,\"Name, quoted\",stop_reason,end_time,collision,first_collision_time,min_ttc,min_headway,min_gap,events_started,error,monitor:Safe",
-            "0,20,\"a \"\"b\"\"\",stop_trigger,22.000,true,4.250,0.000000,,0.000000,3,,false",
-            "1,25,x,,,,,,,,,\"expected a lane, found none at a.xosc:3:4\",",
+            "variant,EgoSpeed,\"Name, quoted\",stop_reason,end_time,collision,first_collision_time,min_ttc,min_headway,min_gap,events_started,error,monitor:Safe,cover:gap,record:side",
+            "0,20,\"a \"\"b\"\"\",stop_trigger,22.000,true,4.250,0.000000,,0.000000,3,,false,12.500000;no value,left",
+            "1,25,x,,,,,,,,,\"expected a lane, found none at a.xosc:3:4\",,,",
         ];
         assert_eq!(csv, expected.join("\n") + "\n");
         assert_eq!(Table::from_csv(&csv, "r.csv").unwrap(), t);

@@ -58,8 +58,35 @@ typedef enum OscsimEntityKind {
   OSCSIM_ENTITY_KIND_EXTERNAL = 3,
 } OscsimEntityKind;
 
+// A loaded scenario: opaque to C.
+typedef struct OscsimScenario OscsimScenario;
+
 // A simulation: opaque to C.
 typedef struct OscsimSimulation OscsimSimulation;
+
+// One global parameter override at load time, as `oscsim run --param NAME=VALUE`.
+typedef struct OscsimParameter {
+  // Parameter name (a leading `$` is allowed), UTF-8.
+  const char *name;
+  // Value as text, parsed as the declared type, UTF-8.
+  const char *value;
+} OscsimParameter;
+
+// How [`oscsim_scenario_load`] loads a scenario: the options of `oscsim run`.
+// [`oscsim_load_options_default`] gives none.
+typedef struct OscsimLoadOptions {
+  // The OpenDRIVE road network of an OpenSCENARIO DSL scenario (`--road`), UTF-8; null: the
+  // file its `map.set_map_file(…)` names. Must be null for an XML scenario (it names its
+  // own).
+  const char *road;
+  // The seed of a DSL scenario's constraint solver (`--seed`; same seed, same scenario).
+  uint64_t seed;
+  // Global parameter overrides of an XML scenario (`--param`); null when `n_params` is 0.
+  // Must be none for a DSL scenario (it varies by seed).
+  const struct OscsimParameter *params;
+  // How many overrides `params` points to.
+  size_t n_params;
+} OscsimLoadOptions;
 
 // How a simulation runs. [`oscsim_config_default`] gives the engine's defaults.
 typedef struct OscsimConfig {
@@ -76,14 +103,6 @@ typedef struct OscsimConfig {
   // [`oscsim_simulation_osi_ground_truth`]; 0: none.
   int32_t osi;
 } OscsimConfig;
-
-// One global parameter override at load time, as `oscsim run --param NAME=VALUE`.
-typedef struct OscsimParameter {
-  // Parameter name (a leading `$` is allowed), UTF-8.
-  const char *name;
-  // Value as text, parsed as the declared type, UTF-8.
-  const char *value;
-} OscsimParameter;
 
 // The state of one entity at the time of the latest step.
 typedef struct OscsimEntityState {
@@ -204,13 +223,50 @@ const char *oscsim_last_error_message(void);
 // message that contains `oscsim_test_panic`; the program goes on.
 enum OscsimStatus oscsim_test_panic(void);
 
+// No road network, seed 1 (the engine's default seed), no overrides.
+struct OscsimLoadOptions oscsim_load_options_default(void);
+
+// Loads the scenario at `path` (`.xosc` or `.osc`) with `options` (null:
+// [`oscsim_load_options_default`]). On success writes the handle to `*out` (free it with
+// [`oscsim_scenario_free`]); on failure writes null and returns
+// [`crate::OscsimStatus::Load`] with the message naming file:line:col (the XML element, the
+// DSL construct, the road file), or [`crate::OscsimStatus::Argument`].
+//
+// # Safety
+// `path` is a NUL-terminated string; `options` is null or readable, its strings
+// NUL-terminated and `params` pointing to `n_params` overrides; `out` is writable.
+enum OscsimStatus oscsim_scenario_load(const char *path,
+                                       const struct OscsimLoadOptions *options,
+                                       struct OscsimScenario **out);
+
+// Frees a scenario (null does nothing); simulations built from it live on.
+//
+// # Safety
+// `scenario` is null or a handle of [`oscsim_scenario_load`] not freed before; it is not used
+// after.
+void oscsim_scenario_free(struct OscsimScenario *scenario);
+
+// Builds a simulation of `scenario` with `config` (null: [`crate::oscsim_config_default`]),
+// on the scenario's road network. On success writes the handle to `*out` (free it with
+// [`crate::oscsim_simulation_free`]); on failure writes null and returns
+// [`crate::OscsimStatus::Load`] or [`crate::OscsimStatus::Argument`].
+//
+// # Safety
+// `scenario` is a live handle of [`oscsim_scenario_load`]; `config` is null or readable; `out`
+// is writable.
+enum OscsimStatus oscsim_simulation_from_scenario(const struct OscsimScenario *scenario,
+                                                  const struct OscsimConfig *config,
+                                                  struct OscsimSimulation **out);
+
 // The engine's defaults: dt 0.05 s, seed 1, no duration, max_time 3600 s; no OSI.
 struct OscsimConfig oscsim_config_default(void);
 
 // Loads the scenario at `path` with `n_params` overrides from `params` (may be null when 0)
-// and builds a simulation with `config` (null: [`oscsim_config_default`]). On success writes
-// the handle to `*out` (free it with [`oscsim_simulation_free`]); on failure writes null and
-// returns [`OscsimStatus::Load`] (message with file:line:col) or [`OscsimStatus::Argument`].
+// and builds a simulation with `config` (null: [`oscsim_config_default`]): the front door of
+// [`crate::oscsim_scenario_load`] with the default road network (an OpenSCENARIO DSL file's
+// `map.set_map_file(…)`) and `config`'s seed. On success writes the handle to `*out` (free it
+// with [`oscsim_simulation_free`]); on failure writes null and returns
+// [`OscsimStatus::Load`] (message with file:line:col) or [`OscsimStatus::Argument`].
 // Nothing has run yet: the first step runs the Init actions.
 //
 // # Safety

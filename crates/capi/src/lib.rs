@@ -7,6 +7,7 @@
 //! | --- | --- |
 //! | `control` | inputs of entities under an `external` controller (the system under test) |
 //! | `error` | status codes, the last error message, the panic guard |
+//! | `scenario` | the scenario handle: either language loaded through the front door (a DSL file with its road network and seed) |
 //! | `simulation` | the simulation handle: load, step, run, time, entities by index or name, OSI bytes |
 //! | `state` | entity states as C values, copied from each step's frame |
 //!
@@ -17,6 +18,7 @@
 
 mod control;
 mod error;
+mod scenario;
 mod simulation;
 mod state;
 
@@ -25,6 +27,10 @@ pub use control::{
     oscsim_simulation_set_pedals, oscsim_simulation_set_pose,
 };
 pub use error::{oscsim_last_error_message, oscsim_test_panic, OscsimStatus};
+pub use scenario::{
+    oscsim_load_options_default, oscsim_scenario_free, oscsim_scenario_load,
+    oscsim_simulation_from_scenario, OscsimLoadOptions, OscsimScenario,
+};
 pub use simulation::{
     oscsim_config_default, oscsim_simulation_entity_count, oscsim_simulation_entity_name,
     oscsim_simulation_entity_road_id, oscsim_simulation_entity_state,

@@ -1,5 +1,6 @@
-//! The simulation handle: load a scenario (OpenSCENARIO 1.3 XML with its catalogs and road
-//! network), step it in the engine's fixed steps (OpenSCENARIO 1.3 §8 "Scenario at runtime"),
+//! The simulation handle: load a scenario (through the front door: OpenSCENARIO 1.3 XML with
+//! its catalogs and road network, or OpenSCENARIO DSL 2.x; `scenario.rs` takes a DSL file's
+//! road network and seed), step it in the engine's fixed steps (OpenSCENARIO 1.3 §8 "Scenario at runtime"),
 //! read the entities after each step.
 //!
 //! Pointers: every function checks its pointers for null and returns
@@ -10,11 +11,11 @@
 
 use std::ffi::{c_char, CStr};
 use std::path::Path;
+use std::sync::Arc;
 
 use engine::output::{Frame, FrameSink};
 use engine::{Engine, EngineConfig, StopReason};
 use osi::sink::{GroundTruthSink, SinkOptions, StepFrames};
-use scenario::Scenario;
 
 use crate::error::{guard, Failure, OscsimStatus};
 use crate::state::{OscsimEntityState, Scene};
@@ -178,10 +179,80 @@ pub(crate) unsafe fn write<T>(out: *mut T, value: T) -> Result<(), Failure> {
     Ok(())
 }
 
+/// `n_params` overrides from `params` (null when 0) as (name, value).
+///
+/// # Safety
+/// `params` points to `n_params` overrides whose strings are NUL-terminated.
+pub(crate) unsafe fn overrides(
+    params: *const OscsimParameter,
+    n_params: usize,
+) -> Result<Vec<(String, String)>, Failure> {
+    if n_params == 0 {
+        return Ok(Vec::new());
+    }
+    if params.is_null() {
+        return Err(Failure::argument(
+            "expected parameters, found a null pointer",
+        ));
+    }
+    // SAFETY: `params` points to `n_params` overrides.
+    let params = unsafe { std::slice::from_raw_parts(params, n_params) };
+    params
+        .iter()
+        .map(|p| {
+            // SAFETY: NUL-terminated strings by the caller's contract.
+            let name = unsafe { text(p.name, "a parameter name") }?;
+            let value = unsafe { text(p.value, "a parameter value") }?;
+            Ok((name.trim_start_matches('$').to_owned(), value.to_owned()))
+        })
+        .collect()
+}
+
+/// A load failure with the front door's message (file:line:col).
+pub(crate) fn load_failure(e: &dyn std::fmt::Display) -> Failure {
+    Failure::new(OscsimStatus::Load, e.to_string())
+}
+
+impl OscsimSimulation {
+    /// A simulation of `loaded` with `config` (null: [`oscsim_config_default`]).
+    pub(crate) fn build(
+        loaded: &load::Loaded,
+        config: Option<&OscsimConfig>,
+    ) -> Result<Self, Failure> {
+        let c = config.copied().unwrap_or_else(|| oscsim_config_default());
+        // Settings the C struct does not have keep the engine's defaults.
+        let config = EngineConfig {
+            dt: c.dt,
+            seed: c.seed,
+            duration: (c.duration > 0.0).then_some(c.duration),
+            max_time: c.max_time,
+            ..EngineConfig::default()
+        };
+        let engine = Engine::new(&loaded.scenario, Arc::clone(&loaded.network), config)
+            .map_err(|e| load_failure(&e))?;
+        let osi = if c.osi != 0 {
+            let sink = GroundTruthSink::new(&engine, &SinkOptions::default())
+                .map_err(|e| load_failure(&format!("cannot make the OSI ground truth: {e}")))?;
+            Some(StepFrames::new(sink))
+        } else {
+            None
+        };
+        Ok(OscsimSimulation {
+            engine,
+            scene: Scene::default(),
+            osi,
+            failed: None,
+            busy: false,
+        })
+    }
+}
+
 /// Loads the scenario at `path` with `n_params` overrides from `params` (may be null when 0)
-/// and builds a simulation with `config` (null: [`oscsim_config_default`]). On success writes
-/// the handle to `*out` (free it with [`oscsim_simulation_free`]); on failure writes null and
-/// returns [`OscsimStatus::Load`] (message with file:line:col) or [`OscsimStatus::Argument`].
+/// and builds a simulation with `config` (null: [`oscsim_config_default`]): the front door of
+/// [`crate::oscsim_scenario_load`] with the default road network (an OpenSCENARIO DSL file's
+/// `map.set_map_file(…)`) and `config`'s seed. On success writes the handle to `*out` (free it
+/// with [`oscsim_simulation_free`]); on failure writes null and returns
+/// [`OscsimStatus::Load`] (message with file:line:col) or [`OscsimStatus::Argument`].
 /// Nothing has run yet: the first step runs the Init actions.
 ///
 /// # Safety
@@ -199,57 +270,17 @@ pub unsafe extern "C" fn oscsim_simulation_new(
         // SAFETY: the caller's contract, pointer by pointer.
         unsafe { write(out, std::ptr::null_mut())? };
         let path = unsafe { text(path, "a scenario path") }?;
-        let overrides = if n_params == 0 {
-            Vec::new()
-        } else if params.is_null() {
-            return Err(Failure::argument(
-                "expected parameters, found a null pointer",
-            ));
-        } else {
-            // SAFETY: `params` points to `n_params` overrides.
-            let params = unsafe { std::slice::from_raw_parts(params, n_params) };
-            params
-                .iter()
-                .map(|p| {
-                    let name = unsafe { text(p.name, "a parameter name") }?;
-                    let value = unsafe { text(p.value, "a parameter value") }?;
-                    Ok((name.trim_start_matches('$').to_owned(), value.to_owned()))
-                })
-                .collect::<Result<Vec<_>, Failure>>()?
-        };
+        let params = unsafe { overrides(params, n_params) }?;
         // SAFETY: null or readable.
-        let c = unsafe { config.as_ref() }
-            .copied()
-            .unwrap_or_else(|| oscsim_config_default());
-        // Settings the C struct does not have keep the engine's defaults.
-        let config = EngineConfig {
-            dt: c.dt,
-            seed: c.seed,
-            duration: (c.duration > 0.0).then_some(c.duration),
-            max_time: c.max_time,
-            ..EngineConfig::default()
+        let config = unsafe { config.as_ref() };
+        let options = load::Options {
+            seed: config.map_or(engine::runtime::DEFAULT_SEED, |c| c.seed),
+            params,
+            dt: config.map_or(engine::runtime::DEFAULT_DT, |c| c.dt),
+            ..load::Options::default()
         };
-        let load_failure =
-            |e: &dyn std::fmt::Display| Failure::new(OscsimStatus::Load, e.to_string());
-        let scenario = Scenario::load_with_parameters(Path::new(path), &overrides)
-            .map_err(|e| load_failure(&e))?;
-        let network = engine::load::road_network(&scenario)
-            .map_err(|e| load_failure(&engine::Error::from(e)))?;
-        let engine = Engine::new(&scenario, network, config).map_err(|e| load_failure(&e))?;
-        let osi = if c.osi != 0 {
-            let sink = GroundTruthSink::new(&engine, &SinkOptions::default())
-                .map_err(|e| load_failure(&format!("cannot make the OSI ground truth: {e}")))?;
-            Some(StepFrames::new(sink))
-        } else {
-            None
-        };
-        let sim = Box::new(OscsimSimulation {
-            engine,
-            scene: Scene::default(),
-            osi,
-            failed: None,
-            busy: false,
-        });
+        let loaded = load::load(Path::new(path), &options).map_err(|e| load_failure(&e))?;
+        let sim = Box::new(OscsimSimulation::build(&loaded, config)?);
         // SAFETY: checked writable above.
         unsafe { write(out, Box::into_raw(sim)) }
     })

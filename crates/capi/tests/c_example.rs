@@ -1,9 +1,10 @@
 //! The C side of the C API, compiled with the system C compiler (`cc`, or `$CC`) against
 //! `include/oscsim.h` and linked to the `liboscsim` this build made:
 //!
-//! - `examples/c/run_scenario.c` runs the bundled cut-in scenario and prints the final
-//!   positions; they equal the last frame of the trajectory CSV that `oscsim run --csv` writes
-//!   (the engine's `CsvWriter`, run here through the library for the same scenario);
+//! - `examples/c/run_scenario.c` runs the bundled cut-in scenario, in XML and in the DSL (with
+//!   `--road` and `--seed`, through `oscsim_scenario_load`), and prints the final positions;
+//!   they equal the last frame of the trajectory CSV that `oscsim run --csv` writes (the
+//!   engine's `CsvWriter`, run here through the library for the same scenario);
 //! - `tests/c/boundary.c`: a malformed scenario gives `OSCSIM_STATUS_LOAD` with file:line:col in
 //!   the message, panics give `OSCSIM_STATUS_PANIC`, and the C program lives on.
 
@@ -63,15 +64,16 @@ fn run(program: &Path, args: &[&Path]) -> (bool, String, String) {
     (out.status.success(), text(out.stdout), text(out.stderr))
 }
 
-#[test]
-fn c_example_prints_the_final_positions_of_oscsim_run() {
-    let scenario = repo().join("examples/scenarios/cut_in_highway.xosc");
-    let program = compile(&repo().join("examples/c/run_scenario.c"), "run_scenario");
-    let (ok, stdout, stderr) = run(&program, &[&scenario]);
-    assert!(ok, "run_scenario failed: {stderr}");
-
-    // The trajectory CSV of `oscsim run --csv` (default dt 0.05 s, seed 1): its last frame.
-    let mut engine = Engine::load(&scenario, &[], EngineConfig::default()).expect("loads");
+/// The last frame of the trajectory CSV of `oscsim run --csv` for `scenario` loaded with
+/// `options` (default dt 0.05 s; the engine's seed that of the options, as `--seed` sets both):
+/// "time,T" then "name,x,y,z,h" per entity.
+fn last_frame(scenario: &Path, options: &load::Options) -> Vec<String> {
+    let loaded = load::load(scenario, options).expect("loads");
+    let config = EngineConfig {
+        seed: options.seed,
+        ..EngineConfig::default()
+    };
+    let mut engine = Engine::new(&loaded.scenario, loaded.network.clone(), config).expect("builds");
     let mut csv = CsvWriter::new(Vec::new());
     engine.run(&mut csv, &mut ()).expect("runs");
     let csv = String::from_utf8(csv.into_inner()).expect("UTF-8 CSV");
@@ -86,12 +88,61 @@ fn c_example_prints_the_final_positions_of_oscsim_run() {
     for r in rows.iter().filter(|r| r[0] == last_time) {
         expected.push(format!("{},{},{},{},{}", r[2], r[3], r[4], r[5], r[6]));
     }
+    expected
+}
+
+#[test]
+fn c_example_prints_the_final_positions_of_oscsim_run() {
+    let scenario = repo().join("examples/scenarios/cut_in_highway.xosc");
+    let program = compile(&repo().join("examples/c/run_scenario.c"), "run_scenario");
+    let (ok, stdout, stderr) = run(&program, &[&scenario]);
+    assert!(ok, "run_scenario failed: {stderr}");
     let got: Vec<&str> = stdout.lines().collect();
-    assert_eq!(got, expected);
+    assert_eq!(got, last_frame(&scenario, &load::Options::default()));
     // Both entities of the cut-in, and a run that got somewhere (the scenario stops after
     // the cut-in at well over 5 s).
     assert_eq!(got.len(), 3);
+    let last_time = got[0].trim_start_matches("time,");
     assert!(last_time.parse::<f64>().expect("a time") > 5.0);
+}
+
+#[test]
+fn c_example_loads_the_dsl_cut_in_with_its_road_and_seed() {
+    let scenario = repo().join("examples/scenarios/cut_in_highway.osc");
+    let road = repo().join("examples/roads/highway.xodr");
+    let program = compile(
+        &repo().join("examples/c/run_scenario.c"),
+        "run_scenario_osc",
+    );
+    let (ok, stdout, stderr) = run(
+        &program,
+        &[
+            &scenario,
+            Path::new("--road"),
+            &road,
+            Path::new("--seed"),
+            Path::new("7"),
+        ],
+    );
+    assert!(ok, "run_scenario failed: {stderr}");
+    let got: Vec<&str> = stdout.lines().collect();
+    let options = load::Options {
+        road: Some(road.clone()),
+        seed: 7,
+        ..load::Options::default()
+    };
+    assert_eq!(got, last_frame(&scenario, &options));
+    // ego and overtaker, after the DSL plan's phases (get ahead, 2 s cut-in, 0.5 s, 4.25 s).
+    assert_eq!(got.len(), 3, "{stdout}");
+    let last_time: f64 = got[0].trim_start_matches("time,").parse().expect("a time");
+    assert!(last_time > 6.75, "{stdout}");
+    // Without the road, the DSL file names none: a load error at the file's start.
+    let (ok, _, stderr) = run(&program, &[&scenario]);
+    assert!(!ok);
+    assert!(
+        stderr.contains(&format!("{}:1:1", scenario.display())),
+        "{stderr}"
+    );
 }
 
 #[test]

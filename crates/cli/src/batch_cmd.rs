@@ -1,8 +1,9 @@
 //! `oscsim batch DIST.xosc --out DIR`: every variant of a parameter value distribution, on all
-//! cores or one shard of them, each finished variant recorded in `DIR/batch.journal` so that
-//! the same command run again goes on where a killed run stopped; `oscsim batch merge DIR…
-//! --out DIR` joins shard outputs. The work is the batch crate's (run.rs, resume.rs); this is
-//! argument handling and glue.
+//! cores or one shard of them; `oscsim batch X.osc --road R.xodr --seeds 1..1000 --out DIR`:
+//! every seed of an OpenSCENARIO DSL scenario. Each finished variant is recorded in
+//! `DIR/batch.journal` so that the same command run again goes on where a killed run stopped;
+//! `oscsim batch merge DIR… --out DIR` joins shard outputs. The work is the batch crate's
+//! (run.rs, resume.rs); this is argument handling and glue.
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -17,7 +18,7 @@ use anyhow::Context;
     args_conflicts_with_subcommands = true,
     subcommand_negates_reqs = true,
     after_help = "Outputs in DIR: results.csv, results.parquet, report.html (and variants/NNNNN/ with --save).\n\
-Variant numbers follow the distribution file (docs/batch.md). Sharding: --shard I/N, or the\n\
+Variant numbers follow the distribution file, or the seeds in order (docs/batch.md). Sharding: --shard I/N, or the\n\
 environment of a Slurm array task (SLURM_ARRAY_TASK_ID, SLURM_ARRAY_TASK_COUNT) or of a\n\
 Kubernetes Indexed Job (JOB_COMPLETION_INDEX with --shards N).\n\
 Each finished variant is recorded in DIR/batch.journal as it ends: the same command run again on\n\
@@ -30,9 +31,19 @@ when N variants failed (255 for 155 or more; their rows say why), 1 when the bat
 pub struct BatchArgs {
     #[command(subcommand)]
     merge: Option<BatchCommand>,
-    /// The ParameterValueDistribution file (.xosc).
+    /// The ParameterValueDistribution file (.xosc), or with --seeds an OpenSCENARIO DSL
+    /// scenario (.osc).
     #[arg(required = true)]
     distribution: Option<PathBuf>,
+    /// Run the DSL scenario once per seed, re-solving its constraints: A..B (inclusive) or a
+    /// count N (the seeds 1..N). Each variant's engine runs with its seed too (`oscsim run
+    /// X.osc --seed S` repeats it).
+    #[arg(long, value_name = "A..B|N", conflicts_with = "seed")]
+    seeds: Option<String>,
+    /// The OpenDRIVE road network of the DSL scenario (default: the file its
+    /// `map.set_map_file(…)` names).
+    #[arg(long, value_name = "FILE.xodr", requires = "seeds")]
+    road: Option<PathBuf>,
     /// Output folder.
     #[arg(long, required = true)]
     out: Option<PathBuf>,
@@ -100,8 +111,23 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
     let (Some(distribution), Some(out)) = (&args.distribution, &args.out) else {
         anyhow::bail!("expected DIST.xosc and --out DIR");
     };
-    let plan = batch::Plan::load(distribution)
-        .with_context(|| format!("cannot run the batch of {}", distribution.display()))?;
+    let plan = match &args.seeds {
+        Some(text) => {
+            let seeds = batch::parse_seeds(text).map_err(|e| anyhow::anyhow!("--seeds: {e}"))?;
+            let options = crate::load_args::options(args.road.as_deref(), None, &[], &args.step);
+            batch::Plan::seeds(distribution, &options, seeds).inspect_err(|e| {
+                if let batch::PlanError::Load(e) = e {
+                    crate::load_args::show(e);
+                }
+            })
+        }
+        None if load::is_dsl(distribution) => anyhow::bail!(
+            "expected --seeds A..B (or a count) for the OpenSCENARIO DSL scenario {}, found none",
+            distribution.display()
+        ),
+        None => batch::Plan::load(distribution),
+    }
+    .with_context(|| format!("cannot run the batch of {}", distribution.display()))?;
     let shard = batch::Shard::resolve(args.shard.as_deref(), args.shards, |k| {
         std::env::var(k).ok()
     })?;
@@ -131,17 +157,34 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
                 plan.variants.len()
             );
         }
-        let params: Vec<String> = plan.variants[v as usize]
-            .iter()
-            .map(|(k, x)| format!(" --param {k}={x}"))
-            .collect();
-        println!(
-            "variant {v} alone: oscsim run {}{} --seed {} --dt {}",
-            plan.scenario.path.display(),
-            params.concat(),
-            batch::variant_seed(args.step.seed, v),
-            args.step.dt
-        );
+        match &plan.seeds {
+            Some(seeds) => {
+                let road = args
+                    .road
+                    .as_ref()
+                    .map(|r| format!(" --road {}", r.display()))
+                    .unwrap_or_default();
+                println!(
+                    "variant {v} alone: oscsim run {}{road} --seed {} --dt {}",
+                    distribution.display(),
+                    seeds.seeds[v as usize],
+                    args.step.dt
+                );
+            }
+            None => {
+                let params: Vec<String> = plan.variants[v as usize]
+                    .iter()
+                    .map(|(k, x)| format!(" --param {k}={x}"))
+                    .collect();
+                println!(
+                    "variant {v} alone: oscsim run {}{} --seed {} --dt {}",
+                    plan.scenario.path.display(),
+                    params.concat(),
+                    batch::variant_seed(args.step.seed, v),
+                    args.step.dt
+                );
+            }
+        }
     }
     let bar = std::sync::OnceLock::new();
     let started = |resumed: usize, to_run: usize| {

@@ -76,48 +76,6 @@ fn resolve(args: &ResolveArgs, out: &mut impl Write) -> anyhow::Result<ExitCode>
     }
 }
 
-/// Whether `path` is an OpenSCENARIO DSL file (`.osc`).
-pub fn is_dsl(path: &Path) -> bool {
-    path.extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("osc"))
-}
-
-/// `oscsim run FILE.osc [--road ROAD.xodr]`: checks, resolves (with `--seed`), plans and lowers
-/// the DSL scenario to the model the engine runs (`dsl_runtime`). Check errors are printed as
-/// miette reports on stderr; every error names FILE:LINE:COL.
-pub fn planned(
-    file: &Path,
-    road: Option<&Path>,
-    scenario: Option<&str>,
-    step: &crate::step_args::StepArgs,
-) -> anyhow::Result<scenario::Scenario> {
-    let options = dsl_runtime::Options {
-        seed: step.seed,
-        dt: step.dt,
-        open_end: step.duration.is_some(),
-        scenario: scenario.map(str::to_string),
-    };
-    match dsl_runtime::load(file, road, &options) {
-        // The command line binds no external methods: a `call` of one cannot run.
-        Ok(lowered) => match lowered.calls.first() {
-            Some(c) => Err(anyhow::anyhow!(
-                "cannot run {}: expected a host binding for external method `{}` (the Python package's Simulation.bind), found none at {}",
-                file.display(),
-                c.method,
-                c.pos
-            )),
-            None => Ok(lowered.scenario),
-        },
-        Err(dsl_runtime::LoadError::Check(d)) => {
-            let mut text = Vec::new();
-            write_diagnostics(&d, &mut text)?;
-            eprint!("{}", String::from_utf8_lossy(&text));
-            Err(anyhow::anyhow!("cannot run {}:\n{d}", file.display()))
-        }
-        Err(e) => Err(anyhow::anyhow!("cannot run {}: {e}", file.display())),
-    }
-}
-
 /// `oscsim validate FILE.osc`: the full check (imports, names, types and units, arguments,
 /// modifiers, constraints solved once); `OK` or `FAIL` with every error; `true` when it checks.
 pub fn validate_file(file: &Path, out: &mut impl Write) -> anyhow::Result<bool> {
@@ -143,7 +101,7 @@ pub fn validate_file(file: &Path, out: &mut impl Write) -> anyhow::Result<bool> 
 /// Writes every semantic error as a report with its source lines and labelled spans (the
 /// other constraints of a conflict labelled too); lines are not wrapped below 160 columns, so a
 /// message stays on one line for tools that grep it.
-fn write_diagnostics(d: &dsl::Diagnostics, out: &mut impl Write) -> anyhow::Result<()> {
+pub fn write_diagnostics(d: &dsl::Diagnostics, out: &mut impl Write) -> anyhow::Result<()> {
     let handler =
         miette::GraphicalReportHandler::new_themed(miette::GraphicalTheme::unicode_nocolor())
             .with_width(160);

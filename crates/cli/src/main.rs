@@ -20,6 +20,7 @@
 
 mod batch_cmd;
 mod dsl;
+mod load_args;
 mod osi_args;
 mod road;
 mod run;

@@ -133,28 +133,26 @@ impl EventSink for Events {
 pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     let config = args.step.config();
     let wall = Instant::now();
-    let scenario = if crate::dsl::is_dsl(&args.scenario) {
-        crate::dsl::planned(
-            &args.scenario,
-            args.road.as_deref(),
-            args.scenario_name.as_deref(),
-            &args.step,
-        )?
-    } else {
-        scenario::Scenario::load_with_parameters(&args.scenario, &args.params)
-            .with_context(|| format!("cannot run {}", args.scenario.display()))?
-    };
+    let options = crate::load_args::options(
+        args.road.as_deref(),
+        args.scenario_name.as_deref(),
+        &args.params,
+        &args.step,
+    );
+    let loaded = crate::load_args::load(&args.scenario, &options)?;
     if !args.quiet {
         // What the loader accepted but the schema does not (an empty ObjectController, a
         // deprecated form): the run goes on, the author should know.
-        for w in &scenario.warnings {
+        for w in &loaded.scenario.warnings {
             eprintln!("warning: {w}");
         }
     }
-    let network = engine::load::road_network(&scenario)
-        .with_context(|| format!("cannot run {}", args.scenario.display()))?;
-    let mut engine = Engine::new(&scenario, network, config)
-        .with_context(|| format!("cannot run {}", args.scenario.display()))?;
+    let mut engine = Engine::new(
+        &loaded.scenario,
+        std::sync::Arc::clone(&loaded.network),
+        config,
+    )
+    .with_context(|| format!("cannot run {}", args.scenario.display()))?;
     for (name, text) in &args.values {
         engine.set_user_value(name, engine::user_values::parse_value(text));
     }
@@ -234,7 +232,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     drop(events.record.take());
     drop(frames);
     record.finish(
-        &scenario,
+        &loaded,
         &args.scenario,
         &args.params,
         &config,

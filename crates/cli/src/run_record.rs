@@ -109,7 +109,7 @@ impl RunRecord {
     /// After the run: writes the manifest beside `csv` and the page.
     pub fn finish(
         self,
-        scenario: &scenario::Scenario,
+        loaded: &load::Loaded,
         scenario_path: &Path,
         params: &[(String, String)],
         config: &EngineConfig,
@@ -127,7 +127,7 @@ impl RunRecord {
         if let Some(csv) = csv {
             let dir = folder(csv);
             let mut m = replay::manifest_for(
-                scenario,
+                loaded,
                 scenario_path,
                 params,
                 config,
@@ -140,7 +140,7 @@ impl RunRecord {
         }
         if let Some(html) = self.html {
             let run = replay::Run::from_memory(
-                scenario,
+                loaded,
                 scenario_path,
                 params,
                 config,

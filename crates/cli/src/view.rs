@@ -12,8 +12,12 @@ use replay::{OpenOptions, Run};
 #[derive(clap::Args, Debug)]
 pub struct RunInput {
     /// The run: a trajectory CSV written by `oscsim run --csv` (its NAME.run.json beside it), the
-    /// NAME.run.json itself, or a scenario (.xosc), which is run first.
+    /// NAME.run.json itself, or a scenario (.xosc, or .osc with --road), which is run first.
     run: PathBuf,
+    /// Running an OpenSCENARIO DSL scenario (.osc): its OpenDRIVE road network (default: the
+    /// file its `map.set_map_file(…)` names).
+    #[arg(long, value_name = "FILE.xodr")]
+    road: Option<PathBuf>,
     /// For a CSV without a manifest (e.g. esmini's): the scenario it is a run of.
     #[arg(long, value_name = "FILE.xosc")]
     scenario: Option<PathBuf>,
@@ -31,13 +35,20 @@ pub struct RunInput {
 impl RunInput {
     /// Opens the run, or runs the scenario.
     fn open(&self) -> anyhow::Result<Run> {
-        let is_scenario = self
-            .run
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("xosc"));
+        let is_scenario = load::is_dsl(&self.run)
+            || self
+                .run
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("xosc"));
         if is_scenario {
             let config = self.step.config();
-            Run::simulate(&self.run, &self.params, config)
+            let options = crate::load_args::options(self.road.as_deref(), None, &self.params, &self.step);
+            Run::simulate(&self.run, &options, config)
+                .inspect_err(|e| {
+                    if let replay::ErrorKind::Load(e) = e.kind() {
+                        crate::load_args::show(e);
+                    }
+                })
                 .with_context(|| format!("cannot run {}", self.run.display()))
         } else {
             let options = OpenOptions {

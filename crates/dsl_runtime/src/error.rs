@@ -55,7 +55,7 @@ impl Error {
     }
 
     /// An error about file `file` as a whole, placed at its start (1:1).
-    pub(crate) fn at_start_of(kind: ErrorKind, message: impl Into<String>, file: &Path) -> Error {
+    pub fn at_start_of(kind: ErrorKind, message: impl Into<String>, file: &Path) -> Error {
         Error::new(kind, message, SourcePos::start_of(Arc::from(file)))
     }
 

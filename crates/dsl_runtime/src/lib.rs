@@ -45,7 +45,9 @@ use std::path::Path;
 use dsl::semantics::hir::Member;
 use dsl::CheckedProgram;
 
+pub use dsl::semantics::hir::CoverageKind;
 pub use error::{Error, ErrorKind};
+pub use resolve::coverage::{Buckets, CoverItem, CoverUnit, Direction, RunExpr, RunOp, SampleAt};
 pub use plan::POSITION_TOLERANCE;
 
 /// How to plan.
@@ -95,6 +97,11 @@ pub struct Lowered {
     /// The scenario's calls of external methods, in the order they are written (a `do`'s
     /// before its `on` handlers').
     pub calls: Vec<ExternalCall>,
+    /// The constraint solver's values for the seed the scenario was planned with.
+    pub resolution: dsl::Resolution,
+    /// The scenario's `cover(…)` and `record(…)` members, for the runtime to sample
+    /// (§7.3.12; resolved beside the plan, not planned).
+    pub coverage: Vec<CoverItem>,
 }
 
 /// Why a DSL scenario could not be made ready to run.
@@ -129,6 +136,17 @@ pub fn load(osc: &Path, road: Option<&Path>, options: &Options) -> Result<Lowere
     };
     let net = opendrive::RoadNetwork::from_file(&road).map_err(LoadError::Road)?;
     lower_program(&program, osc, &road, &net, options)
+}
+
+/// The scenario that runs (ASAM OpenSCENARIO DSL 2.1 §7.3.9 leaves the entry point to the
+/// tool): the one named `scenario` (`--scenario`), else the one scenario with a `do` in the
+/// user's files that no invocation names; an error lists the candidates.
+pub fn entry_scenario(
+    program: &CheckedProgram,
+    osc: &Path,
+    scenario: Option<&str>,
+) -> Result<dsl::semantics::types::CompoundId, Error> {
+    resolve::entry(program, osc, scenario).map(|(id, _)| id)
 }
 
 /// The OpenDRIVE file the program names with `set_map_file(file)` on a `map` (ASAM
@@ -244,9 +262,12 @@ pub fn lower_program(
             });
         }
     }
+    let scenario = lower::lower(&plan, &resolved.name, osc, road_path);
     Ok(Lowered {
-        scenario: lower::lower(&plan, &resolved.name, osc, road_path),
+        scenario,
         phases: info,
         calls,
+        resolution: resolved.resolution,
+        coverage: resolved.coverage,
     })
 }

@@ -114,19 +114,12 @@ pub fn load_error(py: Python<'_>, e: &engine::Error) -> PyErr {
     positioned::<ScenarioError>(py, e.to_string(), place)
 }
 
-/// A DSL scenario that cannot be made ready to run as [`ScenarioError`], at the first
-/// error's place.
-pub fn dsl_error(py: Python<'_>, e: &dsl_runtime::LoadError) -> PyErr {
-    let place = match e {
-        dsl_runtime::LoadError::Check(d) => d
-            .items
-            .first()
-            .map(|i| d.source_pos(i.span))
-            .as_ref()
-            .into(),
-        dsl_runtime::LoadError::Road(e) => e.into(),
-        dsl_runtime::LoadError::Plan(e) => Some(e.pos()).into(),
-        _ => Place::default(),
+/// A scenario that did not load through the front door as [`ScenarioError`], placed where
+/// the error is (the XML element, the DSL construct, the road file).
+pub fn front_door_error(py: Python<'_>, e: &load::Error) -> PyErr {
+    let place = match e.kind() {
+        load::ErrorKind::RoadNetwork(r) => r.into(),
+        _ => e.pos().as_ref().into(),
     };
     positioned::<ScenarioError>(py, e.to_string(), place)
 }

@@ -3,7 +3,10 @@
 //! velocity and acceleration) in columns, and the event log as the JSON lines of
 //! `engine::output::JsonlWriter` (the same text `oscsim run --events` writes).
 
-use engine::output::{EventRecord, EventSink, Frame, FrameSink, JsonlWriter};
+use std::fs::File;
+use std::io::BufWriter;
+
+use engine::output::{CsvWriter, EventRecord, EventSink, Frame, FrameSink, JsonlWriter};
 use osi::sink::StepFrames;
 
 /// The numeric columns, in the order of [`Trajectories::NUMERIC`].
@@ -103,10 +106,13 @@ impl EventSink for Events {
     }
 }
 
-/// Everything a step reports to: the trajectories, and the ground truth when asked for.
+/// Everything a step reports to: the trajectories, and the CSV file and the ground truth when
+/// asked for.
 pub struct Recorders<'a> {
     /// The trajectories.
     pub trajectories: &'a mut Trajectories,
+    /// The trajectory CSV file.
+    pub csv: Option<&'a mut CsvWriter<BufWriter<File>>>,
     /// The ground truth, if the simulation makes it.
     pub osi: Option<&'a mut StepFrames>,
 }
@@ -114,6 +120,9 @@ pub struct Recorders<'a> {
 impl FrameSink for Recorders<'_> {
     fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         self.trajectories.frame(frame)?;
+        if let Some(csv) = &mut self.csv {
+            csv.frame(frame)?;
+        }
         match &mut self.osi {
             Some(osi) => osi.frame(frame),
             None => Ok(()),

@@ -7,10 +7,13 @@
 //! call that holds the lock poisons it: the call raises `InternalError`, and so does every
 //! later call on that simulation, whose state can no longer be trusted.
 
+use std::fs::File;
+use std::io::BufWriter;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex, MutexGuard};
 
-use engine::{Engine, EngineConfig, StopReason};
+use engine::output::CsvWriter;
+use engine::{Engine, EngineConfig, FrameSink, StopReason};
 use pyo3::exceptions::{PyKeyError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBytes, PyDict, PyList};
@@ -18,10 +21,9 @@ use pyo3::types::{PyBytes, PyDict, PyList};
 use crate::control::Control;
 use crate::entity::Entity;
 use crate::error::{
-    dsl_error, guard, load_error, step_error, InternalError, OscsimError, ScenarioError,
-    SimulationError,
+    guard, load_error, step_error, InternalError, OscsimError, ScenarioError, SimulationError,
 };
-use crate::model::{overrides, RoadNetwork, Scenario};
+use crate::model::{RoadNetwork, Scenario};
 use crate::record::{Events, Recorders, Trajectories};
 use crate::state::Pose;
 use crate::value;
@@ -30,6 +32,8 @@ use crate::value;
 struct Inner {
     engine: Engine,
     trajectories: Trajectories,
+    /// The trajectory CSV file, when the simulation was made with `csv=PATH`.
+    csv: Option<CsvWriter<BufWriter<File>>>,
     /// The OSI ground truth, when the simulation was made with `osi=True`.
     osi: Option<osi::sink::StepFrames>,
     events: Events,
@@ -86,14 +90,6 @@ fn str_array<'py>(
     numpy.call_method("array", (list,), Some(&kwargs))
 }
 
-/// The path of an OpenSCENARIO DSL file (`.osc`), if `scenario` is one.
-fn osc_path(scenario: &Bound<'_, PyAny>) -> Option<PathBuf> {
-    let path: PathBuf = scenario.extract().ok()?;
-    path.extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("osc"))
-        .then_some(path)
-}
-
 impl Simulation {
     fn lock(&self) -> PyResult<MutexGuard<'_, Inner>> {
         self.inner.lock().map_err(|_| {
@@ -114,6 +110,7 @@ impl Simulation {
         let Inner {
             engine,
             trajectories,
+            csv,
             osi,
             events,
             failed,
@@ -121,14 +118,23 @@ impl Simulation {
         if let Some(osi) = osi.as_mut() {
             osi.begin_step();
         }
+        let was_running = engine.stop_reason().is_none();
         let mut recorders = Recorders {
             trajectories,
+            csv: csv.as_mut(),
             osi: osi.as_mut(),
         };
-        engine.step(&mut recorders, events).map_err(|e| {
+        let reason = engine.step(&mut recorders, events).map_err(|e| {
             *failed = Some(e.to_string());
             step_error(py, &e)
-        })
+        })?;
+        // The run ended in this step: the CSV file is complete.
+        if let (Some(csv), true, Some(_)) = (csv.as_mut(), was_running, reason) {
+            csv.finish().map_err(|e| {
+                OscsimError::new_err(format!("cannot write the trajectory CSV: {e}"))
+            })?;
+        }
+        Ok(reason)
     }
 
     fn osi(inner: &Inner) -> PyResult<&osi::sink::StepFrames> {
@@ -151,22 +157,24 @@ impl Simulation {
 
 #[pymethods]
 impl Simulation {
-    /// A simulation of `scenario` (a `Scenario`, or the path of a .xosc file, loaded with
-    /// `params`) stepped every `dt` seconds; `seed` fixes the random streams (spawned traffic,
-    /// random routes). The run ends at the storyboard's end, after `duration` seconds if
+    /// A simulation of `scenario` (a `Scenario`, or the path of a .xosc file loaded with
+    /// `params`, or of a .osc file on `road`, solved with `seed`: `Scenario.load`) stepped every
+    /// `dt` seconds; `seed` fixes the random streams (spawned traffic, random routes). The run ends at the storyboard's end, after `duration` seconds if
     /// given, at the latest at `max_time`. `record=False` keeps no trajectories. `osi=True`
     /// makes the OSI GroundTruth of every step (`osi_ground_truth()`), with `osi_host` as the
     /// host vehicle (default `Ego`) and lanes in the first frame only, as `oscsim run --osi`
     /// does, or in every frame with `osi_static="every"`. `road_network` (a `RoadNetwork`) is
     /// the road network to run on, shared with every simulation given the same; by default
-    /// the one the scenario names is read. `scenario` may also be an OpenSCENARIO DSL `.osc`
-    /// file: planned with `seed` and `dt` on `road` (the path of an OpenDRIVE file; default: the
-    /// file the scenario names with `map.set_map_file`), its entry scenario `entry` (default:
-    /// the one no other invokes), with `duration` bounding a last phase that has no end. Raises
+    /// the one the scenario was loaded with. `scenario` may also be an OpenSCENARIO DSL `.osc`
+    /// file, loaded through the front door: planned with `seed` and `dt` on `road` (the path of
+    /// an OpenDRIVE file; default: the file the scenario names with `map.set_map_file`), its
+    /// entry scenario `entry` (default: the one no other invokes), with `duration` bounding a
+    /// last phase that has no end. `csv` (a path) writes the trajectory CSV there as the run
+    /// goes, the file `oscsim run --csv` writes, complete when the run ends. Raises
     /// `ScenarioError` (with `file`, `line`, `column`) when the scenario does not load or the
     /// engine cannot be built from it.
     #[new]
-    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first", road_network = None, road = None, entry = None))]
+    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first", road_network = None, road = None, entry = None, csv = None))]
     #[allow(clippy::too_many_arguments)] // Python keyword arguments
     fn new(
         py: Python<'_>,
@@ -183,6 +191,7 @@ impl Simulation {
         road_network: Option<PyRef<'_, RoadNetwork>>,
         road: Option<PathBuf>,
         entry: Option<String>,
+        csv: Option<PathBuf>,
     ) -> PyResult<Self> {
         let static_data = match osi_static {
             "first" => osi::ground_truth::StaticData::First,
@@ -194,46 +203,31 @@ impl Simulation {
             }
         };
         guard(|| {
-            let loaded;
-            let mut calls = Vec::new();
-            let scenario: &scenario::Scenario = if let Ok(s) = scenario.cast::<Scenario>() {
-                if params.is_some() {
+            let loaded: Arc<load::Loaded> = if let Ok(s) = scenario.cast::<Scenario>() {
+                if params.is_some() || road.is_some() || entry.is_some() {
                     return Err(PyValueError::new_err(
-                        "params apply when loading: pass them to Scenario.load",
+                        "params and road apply when loading: pass them to Scenario.load",
                     ));
                 }
-                loaded = Arc::clone(&s.get().inner);
-                &loaded
-            } else if let Some(path) = osc_path(scenario) {
-                if params.is_some() {
-                    return Err(PyValueError::new_err(
-                        "expected no params for an OpenSCENARIO DSL scenario (its parameters are constrained in the .osc file), found some",
-                    ));
-                }
-                let options = dsl_runtime::Options {
+                Arc::clone(&s.get().inner)
+            } else {
+                let path: PathBuf = scenario.extract()?;
+                let options = load::Options {
+                    road,
                     seed,
                     dt,
                     open_end: duration.is_some(),
                     scenario: entry,
+                    ..load::Options::default()
                 };
-                let lowered = dsl_runtime::load(&path, road.as_deref(), &options)
-                    .map_err(|e| dsl_error(py, &e))?;
-                calls = lowered
-                    .calls
-                    .iter()
-                    .map(|c| (c.method.clone(), c.pos.to_string()))
-                    .collect();
-                loaded = Arc::new(lowered.scenario);
-                &loaded
-            } else {
-                let path: PathBuf = scenario.extract()?;
-                let overrides = overrides(params)?;
-                loaded = Arc::new(
-                    scenario::Scenario::load_with_parameters(&path, &overrides)
-                        .map_err(|e| load_error(py, &e.into()))?,
-                );
-                &loaded
+                Arc::clone(&Scenario::open(py, path, params, options)?.inner)
             };
+            let calls = loaded
+                .calls
+                .iter()
+                .map(|c| (c.method.clone(), c.pos.to_string()))
+                .collect();
+            let scenario = &loaded.scenario;
             let config = EngineConfig {
                 dt,
                 duration,
@@ -243,10 +237,17 @@ impl Simulation {
             };
             let network = match road_network {
                 Some(n) => Arc::clone(&n.inner),
-                None => {
-                    engine::load::road_network(scenario).map_err(|e| load_error(py, &e.into()))?
-                }
+                None => Arc::clone(&loaded.network),
             };
+            let csv = csv
+                .map(|path| {
+                    File::create(&path)
+                        .map(|f| CsvWriter::new(BufWriter::new(f)))
+                        .map_err(|e| {
+                            OscsimError::new_err(format!("cannot create {}: {e}", path.display()))
+                        })
+                })
+                .transpose()?;
             let engine = Engine::new(scenario, Arc::clone(&network), config)
                 .map_err(|e| load_error(py, &e))?;
             let osi = osi
@@ -268,6 +269,7 @@ impl Simulation {
                         enabled: record,
                         ..Trajectories::default()
                     },
+                    csv,
                     osi,
                     events: Events::default(),
                     failed: None,

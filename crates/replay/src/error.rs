@@ -35,6 +35,8 @@ pub enum ErrorKind {
     Road(opendrive::Error),
     /// The scenario did not load.
     Scenario(scenario::Error),
+    /// The scenario (either language) did not load through the front door.
+    Load(load::Error),
     /// The scenario did not build or run (the engine's error, its place included).
     Run(engine::Error),
     /// A chart could not be drawn or encoded.
@@ -126,6 +128,7 @@ impl fmt::Display for Error {
             )?,
             ErrorKind::Road(e) => write!(f, "road network: {e}")?,
             ErrorKind::Scenario(e) => write!(f, "scenario: {e}")?,
+            ErrorKind::Load(e) => write!(f, "scenario: {e}")?,
             ErrorKind::Run(e) => write!(f, "run: {e}")?,
             ErrorKind::Plot(e) => write!(f, "chart: {e}")?,
         }
@@ -143,6 +146,7 @@ impl std::error::Error for Error {
             ErrorKind::Io { source, .. } => Some(source),
             ErrorKind::Road(e) => Some(e),
             ErrorKind::Scenario(e) => Some(e),
+            ErrorKind::Load(e) => Some(e),
             ErrorKind::Run(e) => Some(e),
             _ => None,
         }
@@ -164,6 +168,12 @@ impl From<engine::Error> for Error {
 impl From<scenario::Error> for Error {
     fn from(e: scenario::Error) -> Self {
         Error::new(ErrorKind::Scenario(e))
+    }
+}
+
+impl From<load::Error> for Error {
+    fn from(e: load::Error) -> Self {
+        Error::new(ErrorKind::Load(e))
     }
 }
 

@@ -42,7 +42,7 @@ pub fn render(run: &Run) -> String {
     let roads = run
         .network
         .as_ref()
-        .map(RoadDrawing::new)
+        .map(|n| RoadDrawing::new(n))
         .unwrap_or_default();
     let series = measures::series(run);
     let data = page_data::build(run, &roads, &series);

@@ -11,7 +11,7 @@
 //! use std::path::Path;
 //! let run = replay::Run::simulate(
 //!     Path::new("examples/scenarios/cut_in_highway.xosc"),
-//!     &[],
+//!     &load::Options::default(),
 //!     engine::EngineConfig::default(),
 //! )?;
 //! replay::html::write(&run, Path::new("out/cut_in.html"))?;

@@ -40,6 +40,10 @@ pub struct RunManifest {
     pub measures: Vec<MeasureSpec>,
     /// Actions and the entities they act on (Init actions and the ManeuverGroups' actors).
     pub actions: Vec<ActionActors>,
+    /// The paths of an OpenSCENARIO DSL scenario's phases (`do`, `do.cut_in`, …; the Acts
+    /// the event log names), children before their composition; absent for XML.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub phases: Vec<String>,
 }
 
 /// What does not change of an entity through a run (OpenSCENARIO 1.3 `ScenarioObject`).

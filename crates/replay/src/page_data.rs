@@ -68,6 +68,7 @@ pub fn build(run: &Run, roads: &RoadDrawing, series: &[Series]) -> String {
             .map(|e| json!([r3(e.time), e.element, e.kind, e.detail, e.entity]))
             .collect(),
     );
+    header.insert("phases".into(), json!(run.manifest.phases));
     header.insert(
         "measures".into(),
         series

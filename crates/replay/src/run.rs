@@ -8,6 +8,7 @@
 //! 4.5 m × 1.8 m × 1.5 m box).
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use engine::{Engine, EngineConfig};
 use opendrive::RoadNetwork;
@@ -30,7 +31,7 @@ pub struct Run {
     /// The event log (empty when the run wrote none).
     pub events: Vec<EventEntry>,
     /// The road network, when the scenario names one.
-    pub network: Option<RoadNetwork>,
+    pub network: Option<Arc<RoadNetwork>>,
     /// A title for pages and charts (the scenario's or the CSV's file name).
     pub title: String,
 }
@@ -103,7 +104,8 @@ impl Run {
             .road
             .as_deref()
             .map(RoadNetwork::from_file)
-            .transpose()?;
+            .transpose()?
+            .map(Arc::new);
         let title = file_name(manifest.scenario.as_deref().unwrap_or(&paths.csv));
         Ok(Run {
             manifest,
@@ -114,35 +116,35 @@ impl Run {
         })
     }
 
-    /// Runs `scenario_path` (with `--param` overrides) here and keeps its outputs in memory,
-    /// as `oscsim run --csv --events` would have written them.
+    /// Loads `scenario_path` through the front door (either language, with `options`: a DSL
+    /// scenario's road network and seed, an XML scenario's `--param` overrides), runs it here
+    /// and keeps its outputs in memory, as `oscsim run --csv --events` would have written them.
     pub fn simulate(
         scenario_path: &Path,
-        params: &[(String, String)],
+        options: &load::Options,
         config: EngineConfig,
     ) -> Result<Run> {
-        let scenario = Scenario::load_with_parameters(scenario_path, params)?;
-        let network = engine::load::road_network(&scenario)?;
-        let mut engine = Engine::new(&scenario, network, config)?;
+        let loaded = load::load(scenario_path, options)?;
+        let mut engine = Engine::new(&loaded.scenario, Arc::clone(&loaded.network), config)?;
         let mut recorder = Recorder::new();
         let mut log = EventRecorder::new();
         engine.run(&mut recorder, &mut log)?;
         let (csv, entities) = recorder.into_parts();
         Run::from_memory(
-            &scenario,
+            &loaded,
             scenario_path,
-            params,
+            &options.params,
             &config,
             (&csv, entities),
             &log.into_inner(),
         )
     }
 
-    /// A run of `scenario` (loaded from `scenario_path` with `params`) recorded in memory:
+    /// A run of `loaded` (loaded from `scenario_path` with `params`) recorded in memory:
     /// `frames` the trajectory CSV text and the entities seen (`recorder::Recorder`), `log`
     /// the event log text (`recorder::EventRecorder`).
     pub fn from_memory(
-        scenario: &Scenario,
+        loaded: &load::Loaded,
         scenario_path: &Path,
         params: &[(String, String)],
         config: &EngineConfig,
@@ -151,7 +153,7 @@ impl Run {
     ) -> Result<Run> {
         let (csv, entities) = frames;
         let manifest = manifest_for(
-            scenario,
+            loaded,
             scenario_path,
             params,
             config,
@@ -161,12 +163,13 @@ impl Run {
         let name = PathBuf::from(format!("{} (in memory)", file_name(scenario_path)));
         let trajectories = Trajectories::parse(&String::from_utf8_lossy(csv), &name)?;
         let events = events::parse(&String::from_utf8_lossy(log), &name)?;
-        let network = scenario
+        // The network the scenario names (a scenario that names none has none to draw).
+        let network = loaded
+            .scenario
             .road_network
             .logic_file
-            .as_deref()
-            .map(RoadNetwork::from_file)
-            .transpose()?;
+            .is_some()
+            .then(|| Arc::clone(&loaded.network));
         Ok(Run {
             manifest,
             trajectories,
@@ -185,10 +188,31 @@ fn file_name(path: &Path) -> String {
     )
 }
 
-/// The manifest of a run of `scenario` (loaded from `scenario_path` with `params`) whose
+/// The manifest of a run of `loaded` (loaded from `scenario_path` with `params`) whose
 /// frames showed `entities`; paths relative to folder `manifest_dir`. The caller fills in
 /// `trajectories` and `events`.
 pub fn manifest_for(
+    loaded: &load::Loaded,
+    scenario_path: &Path,
+    params: &[(String, String)],
+    config: &EngineConfig,
+    entities: Vec<EntityInfo>,
+    manifest_dir: &Path,
+) -> RunManifest {
+    let mut m = scenario_manifest(
+        &loaded.scenario,
+        scenario_path,
+        params,
+        config,
+        entities,
+        manifest_dir,
+    );
+    m.phases = loaded.phases.iter().map(|p| p.path.clone()).collect();
+    m
+}
+
+/// [`manifest_for`] a scenario model alone (no DSL phases).
+fn scenario_manifest(
     scenario: &Scenario,
     scenario_path: &Path,
     params: &[(String, String)],
@@ -215,6 +239,7 @@ pub fn manifest_for(
         entities,
         measures: scenario_info::measures(scenario),
         actions: scenario_info::action_actors(scenario),
+        phases: Vec::new(),
     }
 }
 
@@ -262,7 +287,7 @@ fn declared_manifest(scenario: &Scenario, scenario_path: &Path) -> RunManifest {
         })
         .collect();
     let config = EngineConfig::default();
-    let mut m = manifest_for(
+    let mut m = scenario_manifest(
         scenario,
         scenario_path,
         &[],

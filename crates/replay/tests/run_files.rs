@@ -21,10 +21,9 @@ fn cut_in() -> PathBuf {
 fn write_run(dir: &Path) -> PathBuf {
     let _ = std::fs::remove_dir_all(dir);
     std::fs::create_dir_all(dir).expect("scratch folder");
-    let scenario = scenario::Scenario::load(&cut_in()).expect("the cut-in loads");
+    let loaded = load::load(&cut_in(), &load::Options::default()).expect("the cut-in loads");
     let config = EngineConfig::default();
-    let network = engine::load::road_network(&scenario).expect("its road loads");
-    let mut engine = Engine::new(&scenario, network, config).expect("builds");
+    let mut engine = Engine::new(&loaded.scenario, loaded.network.clone(), config).expect("builds");
     let csv = dir.join("cut_in.csv");
     let mut frames: Vec<Box<dyn engine::FrameSink>> = vec![Box::new(CsvWriter::new(
         std::fs::File::create(&csv).expect("csv"),
@@ -44,7 +43,7 @@ fn write_run(dir: &Path) -> PathBuf {
         .expect("the run dropped its sinks")
         .into_inner()
         .into_entities();
-    let mut m = manifest_for(&scenario, &cut_in(), &[], &config, entities, dir);
+    let mut m = manifest_for(&loaded, &cut_in(), &[], &config, entities, dir);
     m.trajectories = Some("cut_in.csv".into());
     m.events = Some("cut_in.jsonl".into());
     m.write(&RunManifest::beside(&csv)).expect("manifest");
@@ -56,7 +55,12 @@ fn a_run_from_files_equals_the_run_in_memory() {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("replay_run_files");
     let csv = write_run(&dir);
     let from_files = Run::open(&csv, &OpenOptions::default()).expect("opens");
-    let in_memory = Run::simulate(&cut_in(), &[], EngineConfig::default()).expect("runs");
+    let in_memory = Run::simulate(
+        &cut_in(),
+        &load::Options::default(),
+        EngineConfig::default(),
+    )
+    .expect("runs");
     assert_eq!(from_files.trajectories, in_memory.trajectories);
     assert_eq!(from_files.events, in_memory.events);
     assert_eq!(from_files.manifest.entities, in_memory.manifest.entities);
@@ -77,7 +81,12 @@ fn a_run_from_files_equals_the_run_in_memory() {
 
 #[test]
 fn the_cut_in_condition_series_crosses_its_threshold_when_the_event_starts() {
-    let run = Run::simulate(&cut_in(), &[], EngineConfig::default()).expect("runs");
+    let run = Run::simulate(
+        &cut_in(),
+        &load::Options::default(),
+        EngineConfig::default(),
+    )
+    .expect("runs");
     let start = run
         .events
         .iter()
@@ -143,7 +152,12 @@ fn spawned_traffic_appears_and_leaves() {
         duration: Some(20.0),
         ..EngineConfig::default()
     };
-    let run = Run::simulate(&corpus("esmini/xosc/swarm.xosc"), &[], config).expect("runs");
+    let run = Run::simulate(
+        &corpus("esmini/xosc/swarm.xosc"),
+        &load::Options::default(),
+        config,
+    )
+    .expect("runs");
     let last = run.trajectories.times.len() as u32 - 1;
     let tracks = &run.trajectories.tracks;
     let late = tracks.iter().filter(|t| t.samples[0].frame > 0).count();
@@ -174,7 +188,12 @@ fn trailers_are_linked_in_the_manifest() {
         duration: Some(2.0),
         ..EngineConfig::default()
     };
-    let run = Run::simulate(&corpus("esmini/xosc/trailers.xosc"), &[], config).expect("runs");
+    let run = Run::simulate(
+        &corpus("esmini/xosc/trailers.xosc"),
+        &load::Options::default(),
+        config,
+    )
+    .expect("runs");
     let linked: Vec<_> = run
         .manifest
         .entities

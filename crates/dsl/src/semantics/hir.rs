@@ -355,8 +355,17 @@ pub enum Member {
     /// `on event: …`: the event and the body's `emit` / `call` members, checked as the
     /// same members of a `do`.
     On(Expr, Vec<Labeled>, Span),
-    /// `cover(…)` / `record(…)`: arguments checked as expressions.
-    Coverage(Vec<Arg>, Span),
+    /// `cover(…)` / `record(…)` (§7.3.12): which, and the arguments, checked as expressions.
+    Coverage(CoverageKind, Vec<Arg>, Span),
+}
+
+/// Which coverage member (§7.3.12).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CoverageKind {
+    /// `cover(…)`: values sampled into buckets.
+    Cover,
+    /// `record(…)`: values sampled and kept.
+    Record,
 }
 
 /// The kinds of compound type (§7.3.7).

@@ -326,7 +326,15 @@ impl Cx {
                 spec: e.spec().map(|s| self.event_spec(&s)),
                 span,
             }),
-            ast::Member::Coverage(c) => Member::Coverage(self.args(c.args()), span),
+            ast::Member::Coverage(c) => Member::Coverage(
+                if c.is_record() {
+                    CoverageKind::Record
+                } else {
+                    CoverageKind::Cover
+                },
+                self.args(c.args()),
+                span,
+            ),
             ast::Member::ModifierApplication(a) => Member::Modifier(self.modifier_app(a)?),
             ast::Member::On(o) => Member::On(
                 o.event().map(|e| self.event_spec(&e)).unwrap_or(Expr {

@@ -538,7 +538,7 @@ impl Rewriter<'_> {
             }
             Member::Modifier(app) => self.modifier(app),
             Member::Do(l, _) => self.labeled(l),
-            Member::Coverage(args, _) => self.args(args),
+            Member::Coverage(_, args, _) => self.args(args),
         }
     }
 

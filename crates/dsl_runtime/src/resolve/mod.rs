@@ -15,9 +15,11 @@
 //! | `cond` | conditions and event specifications (§7.3.10, §8.7 methods) |
 //! | `call` | `call` of external methods as commands to the host (§7.3.9) |
 //! | `tree` | the `do` tree as phases with paths (§7.3.9) |
+//! | `coverage` | `cover(…)`/`record(…)` for the runtime to sample (§7.3.12); not planned |
 
 mod call;
 mod cond;
+pub(crate) mod coverage;
 mod eval;
 mod modifier;
 mod objects;
@@ -62,6 +64,10 @@ pub(crate) struct Resolved {
     pub events: Vec<EventSpec>,
     /// The draws left for the planner (choices the standard leaves random).
     pub draws: Draws,
+    /// The scenario's coverage items (read past the planner, which does not use them).
+    pub coverage: Vec<coverage::CoverItem>,
+    /// The solver's values for the seed.
+    pub resolution: dsl::Resolution,
 }
 
 /// An event's condition.
@@ -125,20 +131,34 @@ pub(crate) fn resolve(
             }
         }
     }
+    // The entities the runtime measures: the tree's actors (vehicles, persons, animals, located
+    // stationary objects) and vehicle groups' members.
+    let entities: Vec<String> = objects
+        .iter()
+        .flat_map(|(path, o)| match o {
+            Some(Object::Actor(_)) => vec![path.clone()],
+            Some(Object::Group(members, _)) => members.iter().map(|(p, _)| p.clone()).collect(),
+            _ => Vec::new(),
+        })
+        .collect();
+    let coverage = coverage::items(&ev, &decl.members, &entities).map_err(Failure::Plan)?;
+    let site = ev.site(decl.span);
     Ok(Resolved {
         name: decl.name.clone(),
-        site: ev.site(decl.span),
+        site,
         root,
         objects,
         events,
         draws: draws.into_inner(),
+        coverage,
+        resolution,
     })
 }
 
 /// The entry point (ASAM OpenSCENARIO DSL 2.1 §7.3.9 leaves it to the tool): the scenario
 /// named `scenario`, else the one scenario with a `do` in the user's files that no
 /// invocation names; its declaration and `do`.
-fn entry<'p>(
+pub(crate) fn entry<'p>(
     program: &'p CheckedProgram,
     osc: &Path,
     scenario: Option<&str>,

@@ -5,6 +5,8 @@ Load a scenario, step it, read the entities' states, the event log and the traje
     import oscsim
 
     sim = oscsim.Simulation("examples/scenarios/cut_in_highway.xosc", dt=0.05, seed=1)
+    # or an OpenSCENARIO DSL scenario, through the same front door:
+    # oscsim.Scenario.load("examples/scenarios/cut_in_highway.osc", road="examples/roads/highway.xodr", seed=7)
     reason = sim.run()                       # or: while sim.step() is None: ...
     ego = sim.entity("Ego")
     print(sim.time, reason, ego.pose.x, ego.speed)
@@ -103,11 +105,13 @@ class Simulation(_oscsim.Simulation):
 
     ``Simulation(scenario, dt=0.05, seed=1, duration=None, max_time=3600.0, record=True,
     params=None, osi=False, osi_host=None, osi_static="first", road_network=None, road=None,
-    entry=None)``: ``scenario`` is a :class:`Scenario` or the path of a .xosc file (loaded
-    with ``params``, global parameter overrides by name), or of an OpenSCENARIO DSL .osc file
-    (planned on ``road``, an OpenDRIVE path, by default the file its ``map.set_map_file``
-    names; ``entry`` the scenario to run when several could be); ``road_network`` a
-    :class:`RoadNetwork` shared by the simulations given it.
+    entry=None, csv=None)``: ``scenario`` is a :class:`Scenario` or the path of a scenario
+    file, loaded as :meth:`Scenario.load` does (a .xosc with ``params``, global parameter
+    overrides by name; a .osc planned on ``road``, an OpenDRIVE path, by default the file its
+    ``map.set_map_file`` names, its constraints solved with ``seed``, ``entry`` the scenario to
+    run when several could be); ``road_network`` a :class:`RoadNetwork` shared by the
+    simulations given it; ``csv`` a path the trajectory CSV is written to, the file
+    ``oscsim run --csv`` writes.
 
     Python controllers (:meth:`set_controller`) are called before each step with the state
     of their entity at the current time. Functions bound to a DSL scenario's external

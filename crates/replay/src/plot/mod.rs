@@ -119,7 +119,7 @@ pub fn plot(run: &Run, dir: &Path, options: &PlotOptions) -> Result<Vec<PathBuf>
         roads: run
             .network
             .as_ref()
-            .map(RoadDrawing::new)
+            .map(|n| RoadDrawing::new(n))
             .unwrap_or_default(),
         host,
         conditions: measures::series(run),

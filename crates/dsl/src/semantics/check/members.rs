@@ -175,7 +175,7 @@ impl Cx<'_> {
                         self.behavior(b, scope, None);
                     }
                 }
-                Member::Coverage(args, _) => {
+                Member::Coverage(_, args, _) => {
                     for a in args {
                         if a.name.as_ref().map_or(true, |n| n.text == "expression") {
                             self.expr(&a.value, scope, None);
@@ -249,7 +249,7 @@ fn member_span(m: &Member) -> Option<Span> {
         Member::Modifier(a) => Some(a.span),
         Member::Do(_, s)
         | Member::On(_, _, s)
-        | Member::Coverage(_, s)
+        | Member::Coverage(_, _, s)
         | Member::RemoveDefault(_, s) => Some(*s),
         Member::Keep(k) => Some(k.span),
         Member::For { span, .. } => Some(*span),
