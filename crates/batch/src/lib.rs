@@ -38,7 +38,9 @@ mod shard;
 mod sweep;
 mod table;
 
-pub use coverage::{count as count_coverage, BucketDef, CoverDef, ItemCoverage};
+pub use coverage::{
+    count as count_coverage, definitions as coverage_definitions, BucketDef, CoverDef, ItemCoverage,
+};
 pub use engine::StopReason;
 pub use journal::{
     read as read_journal, Contents as JournalContents, Journal, JournalError, JOURNAL_FILE,

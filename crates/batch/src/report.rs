@@ -67,9 +67,9 @@ fn coverage_html(table: &Table) -> String {
     let mut html = format!("<h2>Coverage</h2><p>{}</p>\n", escape(&overall));
     for item in &items {
         let total = item.buckets.len();
-        let _ = write!(
+        let _ = writeln!(
             html,
-            "<h3>cover({})</h3><p>{} of {total} buckets hit ({:.1} %); holes: {}; samples outside the buckets: {}; without value: {}</p>\n",
+            "<h3>cover({})</h3><p>{} of {total} buckets hit ({:.1} %); holes: {}; samples outside the buckets: {}; without value: {}</p>",
             escape(&item.name),
             item.hit(),
             100.0 * item.hit() as f64 / total.max(1) as f64,

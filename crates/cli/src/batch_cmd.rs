@@ -42,7 +42,7 @@ pub struct BatchArgs {
     seeds: Option<String>,
     /// The OpenDRIVE road network of the DSL scenario (default: the file its
     /// `map.set_map_file(…)` names).
-    #[arg(long, value_name = "FILE.xodr", requires = "seeds")]
+    #[arg(long, value_name = "FILE.xodr")]
     road: Option<PathBuf>,
     /// Output folder.
     #[arg(long, required = true)]
@@ -124,6 +124,9 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
         None if load::is_dsl(distribution) => anyhow::bail!(
             "expected --seeds A..B (or a count) for the OpenSCENARIO DSL scenario {}, found none",
             distribution.display()
+        ),
+        None if args.road.is_some() => anyhow::bail!(
+            "expected no --road for a ParameterValueDistribution (its ScenarioFile names its road network), found one"
         ),
         None => batch::Plan::load(distribution),
     }

@@ -47,8 +47,8 @@ use dsl::CheckedProgram;
 
 pub use dsl::semantics::hir::CoverageKind;
 pub use error::{Error, ErrorKind};
-pub use resolve::coverage::{Buckets, CoverItem, CoverUnit, Direction, RunExpr, RunOp, SampleAt};
 pub use plan::POSITION_TOLERANCE;
+pub use resolve::coverage::{Buckets, CoverItem, CoverUnit, Direction, RunExpr, RunOp, SampleAt};
 
 /// How to plan.
 #[derive(Debug, Clone, PartialEq)]

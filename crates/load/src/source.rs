@@ -88,9 +88,9 @@ pub struct Loaded {
 /// What was read of the file.
 #[derive(Debug)]
 enum Program {
-    Xml(Scenario),
+    Xml(Box<Scenario>),
     Dsl {
-        program: dsl::CheckedProgram,
+        program: Box<dsl::CheckedProgram>,
         road: PathBuf,
         /// The scenario that runs and its resolved columns (`columns.rs`).
         columns: Option<(String, Vec<String>)>,
@@ -146,7 +146,7 @@ impl Source {
                     Some(crate::columns::columns(&program, &res, entry))
                 });
             let program = Program::Dsl {
-                program,
+                program: Box::new(program),
                 road,
                 columns,
             };
@@ -164,7 +164,7 @@ impl Source {
             let scenario = Scenario::load_with_parameters(path, &options.params)
                 .map_err(ErrorKind::Scenario)?;
             let network = engine::load::road_network(&scenario).map_err(ErrorKind::RoadNetwork)?;
-            (Program::Xml(scenario), network)
+            (Program::Xml(Box::new(scenario)), network)
         };
         Ok(Source {
             path: path.to_path_buf(),
@@ -231,7 +231,7 @@ impl Source {
     pub fn load(&self, seed: u64) -> Result<Loaded, Error> {
         match &self.program {
             Program::Xml(scenario) => Ok(Loaded {
-                scenario: scenario.clone(),
+                scenario: scenario.as_ref().clone(),
                 network: Arc::clone(&self.network),
                 language: Language::Xml,
                 phases: Vec::new(),

@@ -1,5 +1,6 @@
-//! `oscsim.BatchPlan`, `BatchJournal` and `merge_results`: the variants of a ParameterValueDistribution file
-//! (OpenSCENARIO 1.3 §9.5) run from Python, for the drivers of `oscsim.batch` (in-process or
+//! `oscsim.BatchPlan`, `BatchJournal` and `merge_results`: the variants of a
+//! ParameterValueDistribution file (OpenSCENARIO 1.3 §9.5), or the seeds of an OpenSCENARIO
+//! DSL scenario, run from Python, for the drivers of `oscsim.batch` (in-process or
 //! as Ray tasks). The work is the batch crate's — the same plan, runs, table and files as
 //! `oscsim batch` — so a table put together from shares run anywhere is the one the command
 //! line writes, byte for byte.
@@ -28,16 +29,45 @@ pub struct BatchPlan {
 
 #[pymethods]
 impl BatchPlan {
-    /// Loads the distribution file `path` and the scenario it names. Raises `ScenarioError`
-    /// (with the message's file:line:col; `file`, `line`, `column` set where the error is in
-    /// the distribution file, the scenario or its road network) when the plan cannot run.
+    /// Loads the distribution file `path` and the scenario it names; or, with `seeds` (a list
+    /// of seeds, or the text of `oscsim batch --seeds`: `"A..B"` or a count `"N"`), the
+    /// OpenSCENARIO DSL scenario `path` on the road network `road` (default: the file its
+    /// `map.set_map_file(…)` names), one variant per seed, its constraints re-solved. Raises
+    /// `ScenarioError` (with the message's file:line:col; `file`, `line`, `column` set where
+    /// the error is in the distribution file, the scenario or its road network) when the plan
+    /// cannot run, `ValueError` for a bad seeds text.
     #[new]
-    fn new(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
+    #[pyo3(signature = (path, *, seeds = None, road = None))]
+    fn new(
+        py: Python<'_>,
+        path: PathBuf,
+        seeds: Option<&Bound<'_, PyAny>>,
+        road: Option<PathBuf>,
+    ) -> PyResult<Self> {
+        let seeds = match seeds {
+            None => None,
+            Some(s) => Some(match s.extract::<String>() {
+                Ok(text) => batch::parse_seeds(&text)
+                    .map_err(|e| pyo3::exceptions::PyValueError::new_err(format!("seeds: {e}")))?,
+                Err(_) => s.extract::<Vec<u64>>()?,
+            }),
+        };
         guard(|| {
-            batch::Plan::load(&path)
-                .map(|p| BatchPlan { inner: Arc::new(p) })
+            let plan = match seeds {
+                Some(seeds) => {
+                    let options = load::Options {
+                        road,
+                        ..load::Options::default()
+                    };
+                    batch::Plan::seeds(&path, &options, seeds)
+                }
+                None => batch::Plan::load(&path),
+            };
+            plan.map(|p| BatchPlan { inner: Arc::new(p) })
                 .map_err(|e| {
                     let place = match &e {
+                        batch::PlanError::Load(l) => l.pos().as_ref().into(),
+                        batch::PlanError::Seeds { pos, .. } => Some(pos).into(),
                         batch::PlanError::Scenario(s) => Some(s.pos()).into(),
                         batch::PlanError::RoadNetwork(r) => r.into(),
                         batch::PlanError::Distribution(d) => Some(d.pos()).into(),
@@ -299,7 +329,10 @@ impl BatchJournal {
             let share = batch::Table::from_csv(csv, "a share's results")
                 .map_err(|e| OscsimError::new_err(e.to_string()))?;
             let columns = &state.resumed.table;
-            if share.parameters != columns.parameters || share.monitors != columns.monitors {
+            if share.parameters != columns.parameters
+                || share.monitors != columns.monitors
+                || share.coverage != columns.coverage
+            {
                 return Err(OscsimError::new_err(format!(
                     "expected a share with the columns {}, found {}",
                     columns.header(),
@@ -362,16 +395,22 @@ impl BatchJournal {
 
 /// Joins the `results.csv` texts of disjoint shares of one batch into the table of the
 /// whole (rows by variant number) and returns its text; with `out_dir`, writes
-/// `results.csv`, `results.parquet` and `report.html` there, the files `oscsim batch`
-/// writes. Raises `OscsimError` for shares of different batches, a variant in two shares or
-/// a text that is not a results table (naming the share, `part K`, and its line).
+/// `results.csv`, `results.parquet` and `report.html` there — and `coverage.csv`, counted
+/// with the buckets of `plan`'s cover items (a `BatchPlan` of a DSL scenario with coverage) —
+/// the files `oscsim batch` writes. Raises `OscsimError` for shares of different batches, a
+/// variant in two shares or a text that is not a results table (naming the share, `part K`,
+/// and its line).
 #[pyfunction]
-#[pyo3(signature = (parts, out_dir = None))]
+#[pyo3(signature = (parts, out_dir = None, plan = None))]
 pub fn merge_results(
     py: Python<'_>,
     parts: Vec<String>,
     out_dir: Option<PathBuf>,
+    plan: Option<PyRef<'_, BatchPlan>>,
 ) -> PyResult<String> {
+    let buckets = plan
+        .map(|p| batch::coverage_definitions(&p.inner.coverage))
+        .unwrap_or_default();
     guard(|| {
         py.detach(move || {
             let tables = parts
@@ -383,7 +422,8 @@ pub fn merge_results(
                 })
                 .collect::<Result<Vec<_>, _>>()
                 .map_err(|e| e.to_string())?;
-            let table = batch::merge_tables(tables).map_err(|e| e.to_string())?;
+            let mut table = batch::merge_tables(tables).map_err(|e| e.to_string())?;
+            table.buckets = buckets;
             if let Some(dir) = &out_dir {
                 batch::write_outputs(dir, &table).map_err(|e| e.to_string())?;
             }

@@ -229,7 +229,7 @@ def test_ray_retries_a_task_that_fails_once_and_counts_it_once(tmp_path: Path, o
     cli_batch(oscsim_bin, GRID, tmp_path / "cli", "--save", "csv")
     died, raised = tmp_path / "died", tmp_path / "raised"
 
-    def flaky(path, variants, options):
+    def flaky(path, source, variants, options):
         # The task holding variant 0 loses its worker the first time it runs (an out-of-memory
         # kill, a lost node); the one holding variant 1 raises the first time. A marker file
         # says it happened, and the retry runs the share. (Pickled by value: a closure.)
@@ -242,7 +242,7 @@ def test_ray_retries_a_task_that_fails_once_and_counts_it_once(tmp_path: Path, o
         if 1 in variants and not raised.exists():
             raised.touch()
             raise RuntimeError("a task failing once")
-        return batch_._run_share(path, variants, options)
+        return batch_._run_share(path, source, variants, options)
 
     monkeypatch.setattr(oscsim.batch, "_run_share", flaky)
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)
@@ -266,14 +266,14 @@ def test_ray_driver_records_what_finished_and_a_rerun_completes(tmp_path: Path, 
     attempts = tmp_path / "attempts"
     attempts.mkdir()
 
-    def broken(path, variants, options):
+    def broken(path, source, variants, options):
         import oscsim.batch as batch_
         import uuid
 
         if 3 in variants:
             (attempts / uuid.uuid4().hex).touch()
             raise RuntimeError("a task that always fails")
-        return batch_._run_share(path, variants, options)
+        return batch_._run_share(path, source, variants, options)
 
     out = tmp_path / "ray"
     ray.init(num_cpus=2, include_dashboard=False, log_to_driver=False)

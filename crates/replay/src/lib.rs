@@ -27,6 +27,7 @@
 //! | `trajectories`, `events` | readers of the trajectory CSV and the event log |
 //! | `run` | the front door: a run opened from files or simulated here |
 //! | `activity` | when each action ran for each actor |
+//! | `phases` | when each phase of a DSL scenario's `do` tree ran |
 //! | `measures` | the conditions' gaps and times as series, by the OpenSCENARIO 2.0 §8.7 methods |
 //! | `road` | the road network as lane polygons, borders and road marks (OpenDRIVE 1.8 §9, §11) |
 //! | `pack`, `page_data` | the page's compact data container |
@@ -44,6 +45,7 @@ pub mod manifest;
 pub mod measures;
 pub mod pack;
 mod page_data;
+pub mod phases;
 pub mod plot;
 pub mod recorder;
 pub mod road;

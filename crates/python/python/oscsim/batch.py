@@ -53,6 +53,8 @@ def run_csv(
     out_dir: "os.PathLike[str] | str | None" = None,
     *,
     backend: str = "local",
+    seeds: "str | Sequence[int] | None" = None,
+    road: "os.PathLike[str] | str | None" = None,
     seed: int = 1,
     dt: float = 0.05,
     duration: Optional[float] = None,
@@ -65,6 +67,11 @@ def run_csv(
     variant_timeout: Optional[float] = None,
 ) -> str:
     """Runs every variant of ``distribution`` and returns the text of its ``results.csv``.
+
+    With ``seeds`` (``"A..B"``, a count ``"N"``, or a list of seeds: ``oscsim batch --seeds``),
+    ``distribution`` is an OpenSCENARIO DSL scenario (.osc) on the road network ``road``, run
+    once per seed with its constraints re-solved (docs/batch.md); its coverage items give
+    ``coverage.csv`` in ``out_dir``.
 
     ``seed``, ``dt``, ``duration``, ``max_time`` and ``host`` are ``oscsim batch``'s
     ``--seed``, ``--dt``, ``--duration``, ``--max-time`` and ``--host``; ``variant_timeout``
@@ -104,8 +111,9 @@ def run_csv(
         if out is None:
             raise ValueError("expected an out_dir for the saved outputs, found none")
         options.update(save=list(save), recording_time=_source_date_epoch())
+    source = dict(seeds=seeds, road=None if road is None else os.path.abspath(os.fspath(road)))
     if backend == "local":
-        plan = BatchPlan(path)
+        plan = BatchPlan(path, **source)
         threads = jobs or os.cpu_count() or 1
         if out is None:
             return merge_results([plan.run(jobs=threads, **options)])
@@ -115,7 +123,7 @@ def run_csv(
         plan.run(todo, jobs=threads, out_dir=out, journal=journal, **options)
         return journal.finish()
     if backend == "ray":
-        return _ray_batch(path, out, options, tasks, timeout)
+        return _ray_batch(path, source, out, options, tasks, timeout)
     raise ValueError(f"expected backend 'local' or 'ray', found {backend!r}")
 
 
@@ -132,19 +140,21 @@ def _source_date_epoch() -> Optional[int]:
 
 def _ray_batch(
     path: str,
+    source: Dict[str, Any],
     out: Optional[str],
     options: Dict[str, Any],
     tasks: Optional[int],
     timeout: Optional[float],
-    task: Optional[Callable[[str, Sequence[int], Dict[str, Any]], str]] = None,
+    task: Optional[Callable[[str, Dict[str, Any], Sequence[int], Dict[str, Any]], str]] = None,
 ) -> str:
     """The Ray backend: the variants not yet recorded in ``out``'s journal as ``tasks`` tasks,
-    each task's rows recorded as it ends; ``task`` stands in for :func:`_run_share` (tests)."""
+    each task's rows recorded as it ends; ``source`` the plan's ``seeds`` and ``road``;
+    ``task`` stands in for :func:`_run_share` (tests)."""
     import ray
 
     # The plan is loaded here first, so that a distribution that cannot run fails before any
     # task starts, with the loader's error.
-    plan = BatchPlan(path)
+    plan = BatchPlan(path, **source)
     journal = None if out is None else BatchJournal(plan, out, **options)
     done = set(journal.done) if journal is not None else set()
     todo = [v for v in range(plan.variant_count) if v not in done]
@@ -158,7 +168,9 @@ def _ray_batch(
         tasks = max(1, min(tasks, len(todo)))
         remote = ray.remote(num_cpus=1, max_retries=TASK_RETRIES, retry_exceptions=True)(task or _run_share)
         share_options = dict(options, out_dir=out) if "save" in options else options
-        pending = [remote.remote(os.path.abspath(path), todo[k::tasks], share_options) for k in range(tasks)]
+        pending = [
+            remote.remote(os.path.abspath(path), source, todo[k::tasks], share_options) for k in range(tasks)
+        ]
         deadline = None if timeout is None else time.monotonic() + timeout
         # A task that failed for good (its retries spent) is raised once the others have
         # finished and their rows are recorded: a rerun then has only its variants to run.
@@ -189,16 +201,16 @@ def _ray_batch(
     return merge_results(texts)
 
 
-#: Plans a worker process has loaded, by (absolute path, modification time).
-_PLANS: Dict[Tuple[str, int], BatchPlan] = {}
+#: Plans a worker process has loaded, by (absolute path, modification time, seeds, road).
+_PLANS: Dict[Tuple[str, int, str, Optional[str]], BatchPlan] = {}
 
 
-def _run_share(path: str, variants: Sequence[int], options: Dict[str, Any]) -> str:
+def _run_share(path: str, source: Dict[str, Any], variants: Sequence[int], options: Dict[str, Any]) -> str:
     """One Ray task: the rows of ``variants`` as results.csv text, on one thread."""
-    key = (path, os.stat(path).st_mtime_ns)
+    key = (path, os.stat(path).st_mtime_ns, repr(source["seeds"]), source["road"])
     plan = _PLANS.get(key)
     if plan is None:
-        plan = _PLANS[key] = BatchPlan(path)
+        plan = _PLANS[key] = BatchPlan(path, **source)
     return plan.run(list(variants), jobs=1, **options)
 
 

@@ -9,11 +9,12 @@ use super::Charts;
 use crate::measures::Series;
 
 /// The charts, in the order they are written.
-pub(crate) const ALL: [Chart; 4] = [
+pub(crate) const ALL: [Chart; 5] = [
     Chart::Trajectories,
     Chart::Speed,
     Chart::Host,
     Chart::Conditions,
+    Chart::Phases,
 ];
 
 /// One chart.
@@ -23,6 +24,7 @@ pub(crate) enum Chart {
     Speed,
     Host,
     Conditions,
+    Phases,
 }
 
 /// Line colours, one per entity in track order (Tableau 10).
@@ -47,7 +49,7 @@ pub(crate) fn color(k: usize) -> RGBColor {
 /// Legends list at most this many entries (a 200-entity run would bury the chart).
 const LEGEND_MAX: usize = 12;
 
-type DrawResult = Result<(), String>;
+pub(crate) type DrawResult = Result<(), String>;
 
 /// A line of a time chart: label, colour, and its defined stretches of (t, value) points.
 type Line = (String, RGBColor, Vec<Vec<(f64, f64)>>);
@@ -60,6 +62,7 @@ impl Chart {
             Chart::Speed => "speed",
             Chart::Host => "host",
             Chart::Conditions => "conditions",
+            Chart::Phases => "phases",
         }
     }
 
@@ -68,6 +71,7 @@ impl Chart {
         match self {
             Chart::Host => c.host.as_ref().is_some_and(|(_, p)| !p.is_empty()),
             Chart::Conditions => !c.conditions.is_empty(),
+            Chart::Phases => !c.run.manifest.phases.is_empty(),
             _ => true,
         }
     }
@@ -84,6 +88,7 @@ impl Chart {
             Chart::Speed => speed(c, &root),
             Chart::Host => host(c, &root),
             Chart::Conditions => conditions(c, &root),
+            Chart::Phases => super::phases::draw(c, &root),
         }?;
         root.present().map_err(|e| e.to_string())
     }
@@ -188,7 +193,7 @@ fn legend<'a, DB: DrawingBackend + 'a, X: Ranged, Y: Ranged>(
 }
 
 /// Time range of the run.
-fn time_range(c: &Charts<'_>) -> (f64, f64) {
+pub(crate) fn time_range(c: &Charts<'_>) -> (f64, f64) {
     let t = &c.run.trajectories.times;
     let (a, b) = (
         t.first().copied().unwrap_or(0.0),

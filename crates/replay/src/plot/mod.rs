@@ -7,17 +7,20 @@
 //! | `speed` | speed over time, one line per entity |
 //! | `host` | bounding-box distance and time to collision from the host to every other entity |
 //! | `conditions` | the gaps and times the scenario's conditions measure, with their thresholds (only when it has such conditions) |
+//! | `phases` | an OpenSCENARIO DSL run's phases of the `do` tree over time, a bar per phase labelled by its path (only for DSL runs) |
 //!
 //! Text in both formats is laid out with the DejaVu Sans subset bundled in `fonts/`, so the
 //! charts look the same on every machine and need no system fonts.
 //!
 //! | module | job |
 //! | --- | --- |
-//! | `charts` | the four charts on any plotters backend |
+//! | `charts` | the charts on any plotters backend |
+//! | `phases` | the phases chart |
 //! | `bitmap` | the font and the PNG encoding |
 
 mod bitmap;
 mod charts;
+mod phases;
 
 use std::path::{Path, PathBuf};
 

@@ -57,7 +57,7 @@ async function decodeData(text) {
     const s = header.streams[name];
     return s ? readVarints(raw, body + s[0], s[2]) : new Float64Array(0);
   };
-  const M = { title: header.title, dt: header.dt, events: header.events, measures: header.measures };
+  const M = { title: header.title, dt: header.dt, events: header.events, measures: header.measures, phases: header.phases || [] };
   const times = stream("time");
   undelta(times, 0, times.length, 1);
   for (let k = 0; k < times.length; k++) times[k] *= UNITS.time;

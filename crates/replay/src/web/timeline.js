@@ -1,7 +1,9 @@
 // timeline.js: the event log under the slider. One row per group of records (storyboard
 // structure, events, actions, entities and commands, errors), one tick per record coloured by
 // transition (OpenSCENARIO 1.3 §8.2: start, end, stop, skip); hover lists the records near
-// the pointer, click jumps to the nearest one.
+// the pointer, click jumps to the nearest one. An OpenSCENARIO DSL run adds the phases of its
+// `do` tree below, one row per depth (`do`, `do.get_ahead`, `do.get_ahead.0`, …), each phase a
+// bar from its Act's start to its end in the event log, labelled by its path.
 
 const ROWS = [
   ["structure", ["storyboard", "story", "act", "maneuverGroup", "maneuver"]],
@@ -12,6 +14,8 @@ const ROWS = [
 ];
 const TICK_COLORS = { start: "#2f9e44", end: "#1c7ed6", stop: "#e8590c", skip: "#868e96" };
 const LABEL_W = 64;
+const EVENTS_H = 56;
+const PHASE_H = 14;
 
 const Timeline = { canvas: null, rows: [], t0: 0, t1: 1 };
 
@@ -29,6 +33,26 @@ function setupTimeline(M, canvas) {
     color: kind === "error" ? "#c92a2a" : kind === "unsupported" ? "#f59f00"
       : TICK_COLORS[(detail.match(/\((\w+)\)$/) || [])[1]] || "#495057",
   }));
+  // DSL phases: each path's Act from its start transition to its end or stop.
+  Timeline.phases = (M.phases || []).map((path) => {
+    const acts = M.events.filter(([, element, kind]) => kind === "act" && element === path);
+    const start = acts.find(([, , , detail]) => /\(start\)$/.test(detail));
+    const end = acts.find(([, , , detail]) => /\((end|stop)\)$/.test(detail));
+    return {
+      path, depth: path.split(".").length - 1,
+      start: start ? start[0] : null, end: end ? end[0] : Timeline.t1,
+    };
+  }).filter((p) => p.start !== null);
+  Timeline.depths = Timeline.phases.reduce((d, p) => Math.max(d, p.depth + 1), 0);
+  canvas.style.height = EVENTS_H + PHASE_H * Timeline.depths + "px";
+}
+
+// The phase bar under (x, y), if any.
+function phaseAt(x, y) {
+  if (y < EVENTS_H) return null;
+  const depth = Math.floor((y - EVENTS_H) / PHASE_H);
+  const t = timelineTime(x);
+  return Timeline.phases.find((p) => p.depth === depth && p.start <= t && t <= p.end) || null;
 }
 
 function timelineX(t) {
@@ -52,7 +76,7 @@ function drawTimeline(t) {
   const ctx = c.getContext("2d");
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
   ctx.clearRect(0, 0, W, H);
-  const rh = H / ROWS.length;
+  const rh = EVENTS_H / ROWS.length;
   ctx.font = "10px system-ui, sans-serif";
   ctx.textBaseline = "middle";
   ROWS.forEach(([name], r) => {
@@ -69,6 +93,26 @@ function drawTimeline(t) {
     ctx.moveTo(x, m.row * rh + 1);
     ctx.lineTo(x, (m.row + 1) * rh - 1);
     ctx.stroke();
+  }
+  for (let d = 0; d < Timeline.depths; d++) {
+    ctx.fillStyle = d % 2 ? "#f8f9fa" : "#f1f3f5";
+    ctx.fillRect(LABEL_W, EVENTS_H + d * PHASE_H, W - LABEL_W, PHASE_H);
+    ctx.fillStyle = "#5a6572";
+    ctx.fillText(d === 0 ? "phases" : "", 2, EVENTS_H + d * PHASE_H + PHASE_H / 2);
+  }
+  for (const p of Timeline.phases) {
+    const x0 = timelineX(p.start), x1 = Math.max(timelineX(p.end), x0 + 2);
+    const y0 = EVENTS_H + p.depth * PHASE_H + 1;
+    ctx.fillStyle = "#a5d8ff";
+    ctx.fillRect(x0, y0, x1 - x0, PHASE_H - 2);
+    ctx.strokeStyle = "#1c7ed6";
+    ctx.lineWidth = 1;
+    ctx.strokeRect(x0 + 0.5, y0 + 0.5, x1 - x0 - 1, PHASE_H - 3);
+    const label = p.path.split(".").pop();
+    if (ctx.measureText(label).width < x1 - x0 - 4) {
+      ctx.fillStyle = "#0b3d6b";
+      ctx.fillText(label, x0 + 3, y0 + PHASE_H / 2 - 1);
+    }
   }
   const x = timelineX(t);
   ctx.strokeStyle = "#d6336c";
@@ -89,13 +133,15 @@ function marksNear(x) {
 }
 
 function timelineHover(x, y, tip) {
-  const near = x >= LABEL_W ? marksNear(x) : [];
-  if (!near.length) {
+  const phase = x >= LABEL_W ? phaseAt(x, y) : null;
+  const near = x >= LABEL_W && !phase ? marksNear(x) : [];
+  if (!near.length && !phase) {
     tip.hidden = true;
     return;
   }
-  const lines = near.slice(0, 10).map((m) =>
-    `${m.time.toFixed(3)} s  ${m.element} (${m.kind}${m.entity ? " " + m.entity : ""}): ${m.detail}`);
+  const lines = phase ? [`phase ${phase.path}: ${phase.start.toFixed(3)} s to ${phase.end.toFixed(3)} s`]
+    : near.slice(0, 10).map((m) =>
+      `${m.time.toFixed(3)} s  ${m.element} (${m.kind}${m.entity ? " " + m.entity : ""}): ${m.detail}`);
   if (near.length > 10) lines.push(`… ${near.length - 10} more`);
   tip.textContent = lines.join("\n");
   tip.hidden = false;

@@ -176,10 +176,16 @@ impl Cx<'_> {
                     }
                 }
                 Member::Coverage(_, args, _) => {
-                    for a in args {
-                        if a.name.as_ref().map_or(true, |n| n.text == "expression") {
-                            self.expr(&a.value, scope, None);
-                        }
+                    // §7.3.12: the first positional argument is the item's name; it names a
+                    // field (checked as an expression) only when no `expression:` is given.
+                    let named = |n: &str| {
+                        args.iter()
+                            .find(|a| a.name.as_ref().is_some_and(|x| x.text == n))
+                    };
+                    let sampled =
+                        named("expression").or_else(|| args.iter().find(|a| a.name.is_none()));
+                    for a in sampled.into_iter().chain(named("ignore")) {
+                        self.expr(&a.value, scope, None);
                     }
                 }
             }
