@@ -20,32 +20,7 @@ use std::fmt::Write as _;
 
 use load::{Buckets, CoverItem, CoverageKind, Sample};
 
-use crate::table::{field, split_line, CsvError, Table};
-
-/// One bucket of a cover item.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub enum BucketDef {
-    /// [low, high) in millionths of the item's unit; `closed`: [low, high].
-    Range {
-        /// Lower bound (µ-units).
-        low: i64,
-        /// Upper bound (µ-units).
-        high: i64,
-        /// Whether `high` belongs to the bucket (the last one of a range).
-        closed: bool,
-    },
-    /// An enum member, `true` or `false`.
-    Member(String),
-}
-
-/// The buckets of one cover item.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct CoverDef {
-    /// The item's results column, `cover:<name>`.
-    pub column: String,
-    /// Its buckets, in order.
-    pub buckets: Vec<BucketDef>,
-}
+use crate::table::{field, split_line, BucketDef, CoverDef, CsvError, Table};
 
 /// `x` (a value in the item's unit, kept to 1e-6) in millionths.
 fn micro(x: f64) -> i64 {

@@ -38,9 +38,7 @@ mod shard;
 mod sweep;
 mod table;
 
-pub use coverage::{
-    count as count_coverage, definitions as coverage_definitions, BucketDef, CoverDef, ItemCoverage,
-};
+pub use coverage::{count as count_coverage, definitions as coverage_definitions, ItemCoverage};
 pub use engine::StopReason;
 pub use journal::{
     read as read_journal, Contents as JournalContents, Journal, JournalError, JOURNAL_FILE,
@@ -57,5 +55,6 @@ pub use seed::variant_seed;
 pub use shard::{Shard, ShardError};
 pub use sweep::Sweep;
 pub use table::{
-    quantize, quantize_time, CsvError, Outcome, Row, Table, FIXED_COLUMNS, REFUSED, REFUSED_STOP,
+    quantize, quantize_time, BucketDef, CoverDef, CsvError, Outcome, Row, Table, FIXED_COLUMNS,
+    REFUSED, REFUSED_STOP,
 };

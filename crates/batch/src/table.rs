@@ -27,7 +27,30 @@ use std::fmt::Write as _;
 use engine::StopReason;
 use load::Sample;
 
-use crate::coverage::CoverDef;
+/// One bucket of a cover item (coverage.rs counts the samples into them).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum BucketDef {
+    /// [low, high) in millionths of the item's unit; `closed`: [low, high].
+    Range {
+        /// Lower bound (µ-units).
+        low: i64,
+        /// Upper bound (µ-units).
+        high: i64,
+        /// Whether `high` belongs to the bucket (the last one of a range).
+        closed: bool,
+    },
+    /// An enum member, `true` or `false`.
+    Member(String),
+}
+
+/// The buckets of one cover item.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CoverDef {
+    /// The item's results column, `cover:<name>`.
+    pub column: String,
+    /// Its buckets, in order.
+    pub buckets: Vec<BucketDef>,
+}
 
 /// What one run of a variant gave.
 #[derive(Debug, Clone, PartialEq, Default)]

@@ -7,6 +7,7 @@
 //!
 //! | module | job |
 //! | --- | --- |
+//! | `load_args` | the front door (`load` crate) with the flags of either language; DSL check errors as snippets |
 //! | `run` | `oscsim run`: a scenario run headless; trajectory CSV, event log, progress, summary |
 //! | `step_args` | the stepping flags `run` and `batch` share, turned into the engine's configuration |
 //! | `osi_args` | the `--osi*` flags: the trace's folder, `SOURCE_DATE_EPOCH` |

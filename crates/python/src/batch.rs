@@ -63,21 +63,20 @@ impl BatchPlan {
                 }
                 None => batch::Plan::load(&path),
             };
-            plan.map(|p| BatchPlan { inner: Arc::new(p) })
-                .map_err(|e| {
-                    let place = match &e {
-                        batch::PlanError::Load(l) => l.pos().as_ref().into(),
-                        batch::PlanError::Seeds { pos, .. } => Some(pos).into(),
-                        batch::PlanError::Scenario(s) => Some(s.pos()).into(),
-                        batch::PlanError::RoadNetwork(r) => r.into(),
-                        batch::PlanError::Distribution(d) => Some(d.pos()).into(),
-                        batch::PlanError::MissingScenario { pos, .. }
-                        | batch::PlanError::UndeclaredParameter { pos, .. } => Some(pos).into(),
-                        _ => Place::default(),
-                    };
-                    let message = format!("cannot run the batch of {}: {e}", path.display());
-                    positioned::<ScenarioError>(py, message, place)
-                })
+            plan.map(|p| BatchPlan { inner: Arc::new(p) }).map_err(|e| {
+                let place = match &e {
+                    batch::PlanError::Load(l) => l.pos().as_ref().into(),
+                    batch::PlanError::Seeds { pos, .. } => Some(pos).into(),
+                    batch::PlanError::Scenario(s) => Some(s.pos()).into(),
+                    batch::PlanError::RoadNetwork(r) => r.into(),
+                    batch::PlanError::Distribution(d) => Some(d.pos()).into(),
+                    batch::PlanError::MissingScenario { pos, .. }
+                    | batch::PlanError::UndeclaredParameter { pos, .. } => Some(pos).into(),
+                    _ => Place::default(),
+                };
+                let message = format!("cannot run the batch of {}: {e}", path.display());
+                positioned::<ScenarioError>(py, message, place)
+            })
         })
     }
 

@@ -8,6 +8,7 @@
 //! | --- | --- |
 //! | `config` | step length, duration, cap |
 //! | `world` | road network + entity store + values; `EntityQuery` / `ConditionContext` |
+//! | `frame_view` | a frame's or a kept state's entity as the §8.7 methods see it (`view()`) |
 //! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |
 //! | `lane_slots` | the lane index's dense lane numbers and lane borders kept per road |
 //! | `build` | scenario model → world, storyboard description, action and condition tables |
@@ -28,6 +29,7 @@ mod config;
 mod engine;
 mod external;
 mod finite;
+mod frame_view;
 pub(crate) mod lane_index;
 mod lane_slots;
 mod read;
