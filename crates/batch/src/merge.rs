@@ -104,7 +104,10 @@ pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
     ];
     if !table.buckets.is_empty() {
         let counts = crate::coverage::count(table);
-        files.push(("coverage.csv", crate::coverage::to_csv(&counts).into_bytes()));
+        files.push((
+            "coverage.csv",
+            crate::coverage::to_csv(&counts).into_bytes(),
+        ));
     }
     for (name, bytes) in files {
         let path = dir.join(name);

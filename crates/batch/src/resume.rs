@@ -121,10 +121,16 @@ pub fn open(dir: &Path, sweep: &Sweep, columns: &Table) -> Result<Resumed, Resum
     };
     std::fs::create_dir_all(dir).map_err(io("create"))?;
     if !path.exists() {
-        let found: Vec<&str> = ["results.csv", "results.parquet", "report.html", "coverage.csv", "variants"]
-            .into_iter()
-            .filter(|f| dir.join(f).exists())
-            .collect();
+        let found: Vec<&str> = [
+            "results.csv",
+            "results.parquet",
+            "report.html",
+            "coverage.csv",
+            "variants",
+        ]
+        .into_iter()
+        .filter(|f| dir.join(f).exists())
+        .collect();
         if !found.is_empty() {
             return Err(ResumeError::Unjournaled {
                 dir: dir.display().to_string(),

@@ -210,7 +210,11 @@ pub fn empty_table(plan: &Plan) -> Table {
 /// timed out or panicked, discarded (guard.rs, save.rs): its row values and its outcome, or
 /// the message of what failed. A panic before its row values are known (while a seed
 /// re-solves the scenario) leaves the values the plan knows (the seed).
-fn guarded_variant(plan: &Plan, options: &Options, v: u64) -> (Vec<String>, Result<Outcome, String>) {
+fn guarded_variant(
+    plan: &Plan,
+    options: &Options,
+    v: u64,
+) -> (Vec<String>, Result<Outcome, String>) {
     let mut params = None;
     let result = contain(|| run_variant(plan, options, v, &mut params));
     let result = match &options.save {

@@ -329,7 +329,7 @@ impl Table {
     pub fn parse_line(&self, line: &str) -> Result<Row, (String, String)> {
         let c = split_line(line).map_err(|e| ("a CSV line".to_owned(), e))?;
         let fixed_at = 1 + self.parameters.len();
-        let width = fixed_at + FIXED_COLUMNS.len() + self.monitors.len();
+        let width = fixed_at + FIXED_COLUMNS.len() + self.monitors.len() + self.coverage.len();
         if c.len() != width {
             return Err((format!("{width} cells"), c.len().to_string()));
         }

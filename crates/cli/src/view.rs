@@ -42,7 +42,8 @@ impl RunInput {
                 .is_some_and(|e| e.eq_ignore_ascii_case("xosc"));
         if is_scenario {
             let config = self.step.config();
-            let options = crate::load_args::options(self.road.as_deref(), None, &self.params, &self.step);
+            let options =
+                crate::load_args::options(self.road.as_deref(), None, &self.params, &self.step);
             Run::simulate(&self.run, &options, config)
                 .inspect_err(|e| {
                     if let replay::ErrorKind::Load(e) = e.kind() {

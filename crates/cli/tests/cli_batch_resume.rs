@@ -1,8 +1,8 @@
 //! `oscsim batch` survives being killed (issue 32): a batch process SIGKILLed at several points
 //! of its run and started again on the same `--out` ends with results.csv, results.parquet,
 //! report.html and the saved variant folders byte for byte those of an uninterrupted run, for
-//! a whole batch and for a shard; a folder of another sweep is refused; slow and failing
-//! variants are failed rows and the others complete.
+//! a whole batch, for a shard and for a sweep of DSL seeds with coverage; a folder of another
+//! sweep is refused; slow and failing variants are failed rows and the others complete.
 
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Output, Stdio};
@@ -140,6 +140,25 @@ fn kill_three_times_then_finish(args: &[&str], dir: &Path, points: [usize; 3]) -
     out
 }
 
+/// Runs `args(root/whole)` uninterrupted, then `args(root/killed)` killed at `points` and
+/// finished (kill_three_times_then_finish), and checks both folders hold the same files;
+/// returns the killed run's folder.
+fn uninterrupted_then_killed(
+    root: &Path,
+    args: &dyn Fn(&Path) -> Vec<String>,
+    points: [usize; 3],
+) -> PathBuf {
+    let (whole, killed) = (root.join("whole"), root.join("killed"));
+    let a = args(&whole);
+    let out = oscsim(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
+    let b = args(&killed);
+    let b: Vec<&str> = b.iter().map(String::as_str).collect();
+    kill_three_times_then_finish(&b, &killed, points);
+    assert_same_files(&whole, &killed);
+    killed
+}
+
 #[test]
 fn a_batch_killed_three_times_ends_with_the_files_of_an_uninterrupted_run() {
     let root = scratch("whole");
@@ -210,20 +229,77 @@ fn a_shard_killed_three_times_ends_with_the_files_of_an_uninterrupted_shard() {
         .map(str::to_owned)
         .to_vec()
     };
-    let (whole, killed) = (root.join("whole"), root.join("killed"));
-    let a = args(&whole);
-    let out = oscsim(&a.iter().map(String::as_str).collect::<Vec<_>>());
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out));
-    let b = args(&killed);
-    let b: Vec<&str> = b.iter().map(String::as_str).collect();
-    kill_three_times_then_finish(&b, &killed, [1, 25, 60]);
-    assert_same_files(&whole, &killed);
+    let killed = uninterrupted_then_killed(&root, &args, [1, 25, 60]);
     let csv = std::fs::read_to_string(killed.join("results.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 96);
     assert!(csv
         .lines()
         .skip(1)
         .all(|l| l.split(',').next().unwrap().parse::<u64>().unwrap() % 2 == 1));
+}
+
+/// A batch of seeds of a DSL scenario with cover items (files/covered_cut_in.osc) resumes as a
+/// distribution does: its journal rows carry the coverage samples, so the resumed folder has the
+/// results.csv, results.parquet, report.html and coverage.csv of an uninterrupted run, byte for
+/// byte. Another seed range of the same length, in the same folder, is another sweep.
+#[test]
+fn a_seed_sweep_killed_three_times_ends_with_the_files_and_coverage_of_an_uninterrupted_run() {
+    let root = scratch("seeds");
+    let osc = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/files/covered_cut_in.osc");
+    let road = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/roads/highway.xodr");
+    let args = |out: &Path, seeds: &str| -> Vec<String> {
+        [
+            "batch",
+            osc.to_str().unwrap(),
+            "--road",
+            road.to_str().unwrap(),
+            "--seeds",
+            seeds,
+            "--out",
+            out.to_str().unwrap(),
+            "--jobs",
+            "2",
+            "--quiet",
+        ]
+        .map(str::to_owned)
+        .to_vec()
+    };
+    let killed = uninterrupted_then_killed(&root, &|out| args(out, "200"), [1, 30, 90]);
+    let coverage = std::fs::read_to_string(killed.join("coverage.csv")).unwrap();
+    assert!(
+        coverage.starts_with("item,bucket,low,high,hits\n"),
+        "{coverage}"
+    );
+    // Every seed's row, each with the start speed it sampled (a number: Ego is in the scene
+    // at the end).
+    let csv = std::fs::read_to_string(killed.join("results.csv")).unwrap();
+    let table = batch::Table::from_csv(&csv, "results.csv").unwrap();
+    assert_eq!(table.rows.len(), 200);
+    let speed = table
+        .coverage
+        .iter()
+        .position(|c| c == "cover:start_speed")
+        .expect("the start_speed column");
+    for row in &table.rows {
+        let o = row.result.as_ref().unwrap();
+        assert!(
+            matches!(o.samples[speed].as_slice(), [load::Sample::Number(_)]),
+            "variant {}: {:?}",
+            row.variant,
+            o.samples[speed]
+        );
+    }
+
+    // Seeds 2..201: 200 variants too, but another sweep.
+    let other = args(&killed, "2..201");
+    let out = oscsim(&other.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out));
+    assert!(
+        String::from_utf8_lossy(&out.stderr).contains("expected the journal of this sweep (sweep "),
+        "{}",
+        text(&out)
+    );
+    assert_same_files(&root.join("whole"), &killed);
 }
 
 /// A folder holding one sweep's journal refuses another sweep (other options, another
