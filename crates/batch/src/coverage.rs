@@ -64,6 +64,17 @@ impl BucketDef {
     }
 }
 
+impl CoverDef {
+    /// The bucket `s` falls in, if any (none: outside the range, another member, no value).
+    pub fn bucket_of(&self, s: &Sample) -> Option<&BucketDef> {
+        self.bucket_index(s).map(|k| &self.buckets[k])
+    }
+
+    fn bucket_index(&self, s: &Sample) -> Option<usize> {
+        self.buckets.iter().position(|b| b.holds(s))
+    }
+}
+
 /// The bucket definitions of the cover items among `items` (the plan's), in column order.
 pub fn definitions(items: &[CoverItem]) -> Vec<CoverDef> {
     items
@@ -154,8 +165,8 @@ pub fn count(table: &Table) -> Vec<ItemCoverage> {
                 .filter_map(|r| r.result.as_ref().ok())
                 .filter_map(|o| o.samples.get(k?));
             for s in samples.flatten() {
-                match item.buckets.iter_mut().find(|(b, _)| b.holds(s)) {
-                    Some((_, hits)) => *hits += 1,
+                match def.bucket_index(s) {
+                    Some(b) => item.buckets[b].1 += 1,
                     None if *s == Sample::NoValue => item.no_value += 1,
                     None => item.outside += 1,
                 }

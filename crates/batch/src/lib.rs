@@ -38,7 +38,10 @@ mod shard;
 mod sweep;
 mod table;
 
-pub use coverage::{count as count_coverage, definitions as coverage_definitions, ItemCoverage};
+pub use coverage::{
+    column as coverage_column, count as count_coverage, definitions as coverage_definitions,
+    ItemCoverage,
+};
 pub use engine::StopReason;
 pub use journal::{
     read as read_journal, Contents as JournalContents, Journal, JournalError, JOURNAL_FILE,

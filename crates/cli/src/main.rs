@@ -11,6 +11,7 @@
 //! | `run` | `oscsim run`: a scenario run headless; trajectory CSV, event log, progress, summary |
 //! | `step_args` | the stepping flags `run` and `batch` share, turned into the engine's configuration |
 //! | `osi_args` | the `--osi*` flags: the trace's folder, `SOURCE_DATE_EPOCH` |
+//! | `run_coverage` | `run --coverage`: the samples of a DSL scenario's cover/record items in one run |
 //! | `run_record` | what `run` records for the replay: the run manifest, the HTML page |
 //! | `validate` | `oscsim validate`: load and report OK or the error with its source lines |
 //! | `snippet` | source snippets of an error's file position, rendered by miette |
@@ -25,6 +26,7 @@ mod load_args;
 mod osi_args;
 mod road;
 mod run;
+mod run_coverage;
 mod run_record;
 mod snippet;
 mod step_args;

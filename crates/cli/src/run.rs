@@ -6,7 +6,7 @@
 //! completed and there is no stop trigger; `--max-time` (default 3600 s) caps every run.
 
 use std::fs::File;
-use std::io::{BufWriter, IsTerminal};
+use std::io::{BufWriter, IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -54,6 +54,10 @@ pub struct RunArgs {
     /// Write the event log here (JSON lines, one storyboard transition per line).
     #[arg(long, value_name = "FILE.jsonl")]
     events: Option<PathBuf>,
+    /// Write what the run sampled of an OpenSCENARIO DSL scenario's cover(…) and record(…)
+    /// items here (CSV: item,value,unit,bucket; one row per sample, docs/dsl.md).
+    #[arg(long, value_name = "FILE.csv")]
+    coverage: Option<PathBuf>,
     /// Do not show the progress bar.
     #[arg(long)]
     quiet: bool,
@@ -108,6 +112,8 @@ struct Events {
     errors: usize,
     /// The replay's recording of the log (run_record.rs).
     record: Option<crate::run_record::Events>,
+    /// The `emit`s the coverage sampler waits for (`--coverage`).
+    emits: Option<load::Emits>,
 }
 
 impl EventSink for Events {
@@ -120,6 +126,9 @@ impl EventSink for Events {
         }
         if let Some(r) = &mut self.record {
             r.event(record)?;
+        }
+        if let Some(e) = &mut self.emits {
+            e.event(record)?;
         }
         self.out.as_mut().map_or(Ok(()), |o| o.event(record))
     }
@@ -177,6 +186,18 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
     }
     let record = crate::run_record::RunRecord::new(&args.replay, args.csv.as_deref());
     frames.extend(record.frame_sink());
+    let sampler = args.coverage.as_ref().map(|path| {
+        if loaded.coverage.is_empty() && !args.quiet {
+            eprintln!(
+                "warning: {} has no cover(…) or record(…) items; {} holds the header alone",
+                args.scenario.display(),
+                path.display()
+            );
+        }
+        load::Sampler::new(&loaded.coverage, &loaded.network)
+    });
+    let emits = sampler.as_ref().map(load::Sampler::emits);
+    let mut frames = (frames, sampler);
     let mut events = Events {
         out: args
             .events
@@ -188,6 +209,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         last_error: None,
         errors: 0,
         record: record.event_sink(),
+        emits,
     };
     let end = config.end_time();
     let bar = (!args.quiet && std::io::stderr().is_terminal()).then(|| {
@@ -230,7 +252,15 @@ pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
         .context("cannot finish the CSV or the OSI trace")?;
     events.finish().context("cannot write the event log")?;
     drop(events.record.take());
+    let (frames, sampler) = frames;
     drop(frames);
+    if let (Some(path), Some(sampler)) = (&args.coverage, sampler) {
+        let text = crate::run_coverage::to_csv(&loaded.coverage, &sampler.finish());
+        let mut file = create(path)?;
+        file.write_all(text.as_bytes())
+            .and_then(|()| file.flush())
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
     record.finish(
         &loaded,
         &args.scenario,

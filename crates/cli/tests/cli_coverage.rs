@@ -3,7 +3,8 @@
 //! (Ego's start speed in km/h) and one over an enum (the side the overtaker starts on), and a
 //! record whose expression has no value at its event. Over 500 seeds the per-bucket hits of
 //! coverage.csv equal the count `scripts/coverage_count.py` makes from results.csv alone; the
-//! holes are listed; shards merged equal the single run byte for byte. And the bad inputs.
+//! holes are listed; shards merged equal the single run byte for byte. `oscsim run --coverage`
+//! writes the samples of the batch row of its seed. And the bad inputs.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -232,5 +233,74 @@ fn bad_inputs_are_errors_never_crashes() {
     assert!(
         err.contains("expected a value the runtime samples") && err.contains("bad_cover.osc:36:30"),
         "{err}"
+    );
+}
+
+/// `oscsim run X.osc --coverage FILE.csv` writes the samples of one run: the cells of the batch
+/// row of the same seed (an independent path: the batch's results table), each cover sample
+/// with the bucket a hand computation gives (10 km/h buckets from 60: ⌊v/10⌋·10), the record
+/// `no value` or a number with no bucket.
+#[test]
+fn oscsim_run_writes_the_samples_of_the_batch_row_of_its_seed() {
+    let dir = scratch("run");
+    let (s, r) = (scenario(), road());
+    let out = dir.join("batch").display().to_string();
+    ok(&[
+        "batch", &s, "--road", &r, "--seeds", "1..6", "--out", &out, "--quiet",
+    ]);
+    let results = text(&dir.join("batch"), "results.csv");
+    let mut lines = results.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let col = |name: &str| header.iter().position(|c| *c == name).expect(name);
+    let mut no_values = 0;
+    for line in lines {
+        let row: Vec<&str> = line.split(',').collect();
+        let seed = row[col("seed")];
+        let csv = dir.join(format!("seed{seed}.csv"));
+        ok(&[
+            "run",
+            &s,
+            "--road",
+            &r,
+            "--seed",
+            seed,
+            "--coverage",
+            &csv.display().to_string(),
+            "--quiet",
+        ]);
+        let speed = row[col("cover:start_speed")];
+        let v: f64 = speed.parse().expect("a speed in km/h");
+        let low = (v / 10.0).floor() * 10.0;
+        let ttc = row[col("record:ttc_at_end")];
+        no_values += usize::from(ttc == "no value");
+        let expected = format!(
+            "item,value,unit,bucket\n\
+             cover:start_speed,{speed},kph,[{low}..{})\n\
+             cover:side,{side},,{side}\n\
+             record:ttc_at_end,{ttc},s,\n",
+            low + 10.0,
+            side = row[col("cover:side")],
+        );
+        assert_eq!(std::fs::read_to_string(&csv).expect("written"), expected);
+    }
+    assert!(no_values > 0, "a seed whose record has no value");
+
+    // An XML scenario has no items: the header alone, and a warning.
+    let xml = repo("examples/scenarios/cut_in_highway.xosc")
+        .display()
+        .to_string();
+    let csv = dir.join("xml.csv");
+    let out = ok(&[
+        "run",
+        &xml,
+        "--duration",
+        "0.5",
+        "--coverage",
+        &csv.display().to_string(),
+    ]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no cover(…) or record(…) items"));
+    assert_eq!(
+        std::fs::read_to_string(&csv).expect("written"),
+        "item,value,unit,bucket\n"
     );
 }
