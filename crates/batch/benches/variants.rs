@@ -10,6 +10,14 @@
 //! ends, the results files written at the end. Its time over `jobs_N`'s is the cost of the
 //! journal, the sweep's digest and the three files. The folder is emptied outside the timing.
 //!
+//! `batch_seeds_5s` (issue 29) sweeps 100 seeds of `tests/files/seeded_cut_in.osc` (an
+//! OpenSCENARIO DSL cut-in, 5 s simulated, 0.05 s step) on `examples/roads/highway.xodr`:
+//! `seeds_jobs_N` as `oscsim batch X.osc --seeds 1..100` runs it (each variant re-solves the
+//! constraints, plans and lowers the scenario, then runs it), and `resolve_only` the first part
+//! alone (`load::Source::load` per seed), so its share of a variant's time is
+//! `resolve_only` / `seeds_jobs_1`. The `.osc` is checked and the road read once outside the
+//! timing, as `oscsim batch` does.
+//!
 //! `cargo bench -p oscsim-batch --bench variants`
 
 use std::path::Path;
@@ -71,5 +79,57 @@ fn variants(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, variants);
+fn seeds(c: &mut Criterion) {
+    let here = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let options = load::Options {
+        road: Some(here.join("../../examples/roads/highway.xodr")),
+        ..load::Options::default()
+    };
+    let n = 100u64;
+    let plan = match Plan::seeds(
+        &here.join("tests/files/seeded_cut_in.osc"),
+        &options,
+        (1..=n).collect(),
+    ) {
+        Ok(p) => p,
+        Err(e) => panic!("{e}"),
+    };
+    let mut group = c.benchmark_group("batch_seeds_5s");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(n));
+    for jobs in [1usize, 2] {
+        let options = Options {
+            jobs,
+            ..Options::default()
+        };
+        group.bench_function(format!("seeds_jobs_{jobs}"), |b| {
+            b.iter(|| {
+                let table = match run(&plan, &options, &|_, _| {}) {
+                    Ok(t) => t,
+                    Err(e) => panic!("{e}"),
+                };
+                assert!(table.rows.iter().all(|r| r.result.is_ok()));
+                table
+            })
+        });
+    }
+    let Some(seeds) = &plan.seeds else {
+        panic!("a plan of seeds")
+    };
+    group.bench_function("resolve_only", |b| {
+        b.iter(|| {
+            seeds
+                .seeds
+                .iter()
+                .map(|&s| match seeds.source.load(s) {
+                    Ok(l) => l.resolved.len(),
+                    Err(e) => panic!("{e}"),
+                })
+                .sum::<usize>()
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, variants, seeds);
 criterion_main!(benches);
