@@ -166,7 +166,7 @@ const PARAMS: [&str; 8] = [
 ];
 
 /// The coverage items among the scenario's `members`, in source order; `entities` are the
-/// vehicles of the plan (actor paths the runtime measures).
+/// plan's actors and group members (the paths the runtime measures).
 pub(crate) fn items(
     ctx: &Ctx<'_>,
     members: &[Member],
@@ -384,7 +384,7 @@ fn entity(ctx: &Ctx<'_>, e: &Expr, entities: &[String]) -> Option<String> {
     entities.contains(&path).then_some(path)
 }
 
-/// A sampled expression (module doc): §8.7 methods and `speed` of the plan's vehicles,
+/// A sampled expression (module doc): §8.7 methods and `speed` of the plan's actors,
 /// arithmetic, comparisons and logic, and constants (literals, resolved fields).
 fn run_expr(ctx: &Ctx<'_>, e: &Expr, entities: &[String]) -> Result<RunExpr, Error> {
     let unsupported = || {
