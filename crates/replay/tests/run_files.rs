@@ -221,7 +221,7 @@ fn a_scenario_that_does_not_build_keeps_the_engines_error() {
         env!("CARGO_MANIFEST_DIR"),
         "/../engine/tests/files/controller/bad_model.xosc"
     ));
-    let err = match Run::simulate(&file, &[], EngineConfig::default()) {
+    let err = match Run::simulate(&file, &load::Options::default(), EngineConfig::default()) {
         Ok(_) => panic!("bad_model.xosc runs"),
         Err(e) => e,
     };
