@@ -146,14 +146,14 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
     let mut handlers: Vec<(&str, Vec<Commands<'_>>)> = Vec::new();
     for h in &plan.handlers {
         let emit = (h.event.clone(), Some(h.trigger.clone()), h.site.pos.clone());
-        let act = match handlers.iter_mut().position(|(act, _)| *act == h.act) {
-            Some(i) => &mut handlers[i].1,
+        let i = match handlers.iter().position(|(act, _)| *act == h.act) {
+            Some(i) => i,
             None => {
                 handlers.push((&h.act, Vec::new()));
-                // Just pushed.
-                &mut handlers.last_mut().expect("pushed").1
+                handlers.len() - 1
             }
         };
+        let act = &mut handlers[i].1;
         match act.iter_mut().find(|(ty, _)| *ty == h.command_type) {
             Some((_, emits)) => emits.push(emit),
             None => act.push((h.command_type, vec![emit])),

@@ -96,11 +96,10 @@ impl Planner<'_> {
             Gap::Headway(t) => (None, Some(t)),
         };
         let n = name(&inv.action);
-        out.push(Planned {
-            entity: target.to_string(),
-            at: None,
-            name: n.clone(),
-            action: PrivateAction::Longitudinal(LongitudinalAction::LongitudinalDistance {
+        out.push(Planned::with_phase(
+            target,
+            n.clone(),
+            PrivateAction::Longitudinal(LongitudinalAction::LongitudinalDistance {
                 entity_ref: reference.clone(),
                 continuous: !change,
                 distance,
@@ -116,8 +115,8 @@ impl Planner<'_> {
                     max_speed: Some(MAX_SPEED),
                 }),
             }),
-            site: p.site.clone(),
-        });
+            &p.site,
+        ));
         // From here the engine's controller moves the actor; once it holds the gap, at the
         // reference's speed.
         self.engine_moved.insert(target.to_string(), t0);

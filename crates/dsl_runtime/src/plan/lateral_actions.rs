@@ -64,13 +64,7 @@ impl Planner<'_> {
             Some(t) => (tr.lane(t), tr.offset(t)),
             None => (tr.lane(f64::MAX), tr.offset(f64::MAX)),
         };
-        let planned = |name: String, action| Planned {
-            entity: target.to_string(),
-            at: None,
-            name,
-            action,
-            site: p.site.clone(),
-        };
+        let planned = |name: String, action| Planned::with_phase(target, name, action, &p.site);
         match inv.kind {
             Action::ChangeLane => {
                 let (lane_target, lane1) = self.change_lane_target(p, inv, target, t)?;

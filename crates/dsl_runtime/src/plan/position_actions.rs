@@ -70,11 +70,10 @@ impl Planner<'_> {
         };
         let (lane, s, offset) = self.lane_position(place)?;
         let n = name("assign_position");
-        out.push(Planned {
-            entity: target.to_string(),
-            at: None,
-            name: n.clone(),
-            action: PrivateAction::Teleport(Position {
+        out.push(Planned::with_phase(
+            target,
+            n.clone(),
+            PrivateAction::Teleport(Position {
                 kind: PositionKind::Lane {
                     road_id: self.road.id().to_string(),
                     lane_id: lane.to_string(),
@@ -84,8 +83,8 @@ impl Planner<'_> {
                 },
                 pos: place.site.pos.clone(),
             }),
-            site: p.site.clone(),
-        });
+            &p.site,
+        ));
         if let Some(t) = t0 {
             // The engine puts the actor there at the end of the step the action runs in, in
             // place of that step's motion (as a 1.x TeleportAction).
@@ -133,11 +132,10 @@ impl Planner<'_> {
             ));
         }
         let n = name("assign_orientation");
-        out.push(Planned {
-            entity: target.to_string(),
-            at: None,
-            name: n.clone(),
-            action: PrivateAction::Teleport(Position {
+        out.push(Planned::with_phase(
+            target,
+            n.clone(),
+            PrivateAction::Teleport(Position {
                 kind: PositionKind::RelativeObject {
                     entity_ref: target.to_string(),
                     dx: 0.0,
@@ -152,8 +150,8 @@ impl Planner<'_> {
                 },
                 pos: site.pos.clone(),
             }),
-            site: p.site.clone(),
-        });
+            &p.site,
+        ));
         Ok(Some(self.ends(t0, 0.0, &n, p)))
     }
 
@@ -215,13 +213,12 @@ impl Planner<'_> {
             ));
         }
         let n = name("change_position");
-        out.push(Planned {
-            entity: target.to_string(),
-            at: None,
-            name: n.clone(),
-            action: polyline(&n, &[(x0, y0), (x1, y1)], None, &place.site),
-            site: p.site.clone(),
-        });
+        out.push(Planned::with_phase(
+            target,
+            n.clone(),
+            polyline(&n, &[(x0, y0), (x1, y1)], None, &place.site),
+            &p.site,
+        ));
         // Along the line at v: there after length / v s; the track's distance along its lane
         // is then set to the target's s.
         let span = if length > 0.0 { length / v } else { 0.0 };

@@ -76,13 +76,7 @@ impl Planner<'_> {
         } = slot;
         check_speed_modifiers(inv, first)?;
         let v0 = t0.map_or(self.last_v[target], |t| self.track(target).at(t).1);
-        let planned = |name: String, action| Planned {
-            entity: target.to_string(),
-            at: None,
-            name,
-            action,
-            site: p.site.clone(),
-        };
+        let planned = |name: String, action| Planned::with_phase(target, name, action, &p.site);
         match inv.kind {
             Action::ChangeSpeed => {
                 let v1 = speed_target(inv, p)?;

@@ -100,13 +100,12 @@ impl Planner<'_> {
             ..place.clone()
         })?;
         let n = name("follow_trajectory");
-        out.push(Planned {
-            entity: target.to_string(),
-            at: None,
-            name: n.clone(),
-            action: polyline(&n, points, Some(times), site),
-            site: p.site.clone(),
-        });
+        out.push(Planned::with_phase(
+            target,
+            n.clone(),
+            polyline(&n, points, Some(times), site),
+            &p.site,
+        ));
         if let Some(t) = t0 {
             // At the end: the last point, at the last segment's speed.
             let k = points.len() - 1;

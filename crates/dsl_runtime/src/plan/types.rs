@@ -115,6 +115,24 @@ pub(crate) struct Planned {
     pub site: Site,
 }
 
+impl Planned {
+    /// `action` of `entity`, starting with its phase (no absolute start time).
+    pub(crate) fn with_phase(
+        entity: &str,
+        name: String,
+        action: PrivateAction,
+        site: &Site,
+    ) -> Self {
+        Planned {
+            entity: entity.to_string(),
+            at: None,
+            name,
+            action,
+            site: site.clone(),
+        }
+    }
+}
+
 /// A physical object of the plan.
 #[derive(Debug, Clone)]
 pub(crate) struct Entity {
