@@ -194,27 +194,45 @@ pub fn lower_program(
             resolve::Failure::Plan(e) => LoadError::Plan(e),
         })?;
     // The plan drives from the road of its named routes (the first of them whose roads hold
-    // all the others), else from the first road, onto the roads after it (`road`).
-    let named = plan::named_roads(&resolved.root);
-    let plan_road = match named.first() {
-        Some((id, site)) => {
-            let chains = named
-                .iter()
-                .filter_map(|(r, _)| road::PlanRoad::by_id(road, r))
-                .collect::<Vec<_>>();
-            let holds_all =
-                |c: &road::PlanRoad<'_>| named.iter().all(|(r, _)| c.plan_s(r, 0.0).is_some());
-            let first = road::PlanRoad::by_id(road, id).ok_or_else(|| {
-                LoadError::Plan(site.err(
-                    ErrorKind::Road,
-                    format!(
-                        "expected road {id} with driving lanes in {}, found none",
-                        road_path.display()
-                    ),
-                ))
-            })?;
-            chains.into_iter().find(holds_all).unwrap_or(first)
+    // all the others; a route through points over its own roads), else from the first road,
+    // onto the roads after it (`road`).
+    let named = plan::named_routes(&resolved.root);
+    let mut chains = Vec::new();
+    let mut wanted: Vec<String> = Vec::new();
+    for (k, a) in named.iter().enumerate() {
+        // `named_routes` gives only routes with points.
+        let Some((lane, points)) = plan::route_points(&a.route) else {
+            continue;
+        };
+        let (id, _) = &points[0];
+        if points.len() == 1 {
+            // The first route's road must exist; a later one off the plan is an error at it
+            // (`plan::route::on_plan_road`).
+            match road::PlanRoad::by_id(road, id) {
+                Some(chain) => chains.push(chain),
+                None if k == 0 => {
+                    return Err(LoadError::Plan(a.site.err(
+                        ErrorKind::Road,
+                        format!(
+                            "expected road {id} with driving lanes in {}, found none",
+                            road_path.display()
+                        ),
+                    )))
+                }
+                None => {}
+            }
+            wanted.push(id.clone());
+        } else {
+            let roads = road::route_roads(road, lane, &points)
+                .map_err(|m| LoadError::Plan(a.site.err(ErrorKind::Road, m)))?;
+            wanted.extend(roads.iter().map(|&i| road.roads()[i].id.clone()));
+            chains.push(road::PlanRoad::through(road, &roads));
         }
+    }
+    let holds_all = |c: &road::PlanRoad<'_>| wanted.iter().all(|r| c.plan_s(r, 0.0).is_some());
+    let plan_road = match chains.iter().position(holds_all) {
+        Some(i) => chains.swap_remove(i),
+        None if !chains.is_empty() => chains.swap_remove(0),
         None => road::PlanRoad::pick(road).ok_or_else(|| {
             LoadError::Plan(resolved.site.err(
                 ErrorKind::Road,

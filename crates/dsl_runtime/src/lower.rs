@@ -11,6 +11,7 @@
 //! | `call m(a, b)` (a phase) | likewise a group `PATH/call` whose Event `PATH/call m(a, b)` runs a CustomCommandAction (type `call`, content `m(a, b)`, the arguments as JSON values): the host runs m then (`resolve::call`) |
 //! | `on c: emit e` / `call m(…)` (the i-th `on` of the scenario) | an Act `on.i` from the start until the root phase's end, with the same groups whose Events start at each occurrence of c (maximumExecutionCount unbounded) |
 //! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step) |
+//! | a plan over the roads of a route through points (`map.create_route`) | Init: each vehicle with a road of the plan ahead of it an AssignRouteAction over them (a Waypoint where it starts, one mid-way along each later road, in its lane) |
 //! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
 //! | a person, an animal | ScenarioObject with a Pedestrian of category `pedestrian`, `animal` |
 //! | a stationary object | ScenarioObject with a MiscObject (category `barrier`); Init: TeleportAction to the WorldPosition of its `location(pose)`, no speed |
@@ -25,9 +26,9 @@ use scenario::{
     Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
     EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup, MiscObject,
     MiscObjectCategory, Pedestrian, PedestrianCategory, Performance, Position, PositionKind,
-    Priority, Private, PrivateAction, Properties, RoadNetwork, Rule, Scenario, ScenarioObject,
-    SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics, Trigger, UserDefinedAction,
-    Vehicle,
+    Priority, Private, PrivateAction, Properties, RoadNetwork, Route, RouteStrategy, RoutingAction,
+    Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics,
+    Trigger, UserDefinedAction, Vehicle, Waypoint,
 };
 
 use crate::plan::{Entity, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
@@ -72,9 +73,17 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             });
             continue;
         }
+        let route = (plan.routed && e.data.kind == ActorKind::Vehicle)
+            .then(|| route_ahead(plan, lane, (road_id, s), &origin))
+            .flatten()
+            .map(|r| {
+                action(PrivateAction::Routing(Box::new(
+                    RoutingAction::AssignRoute(r),
+                )))
+            });
         privates.push(Private {
             entity_ref: e.name.clone(),
-            actions: vec![
+            actions: [
                 action(PrivateAction::Teleport(Position {
                     kind: PositionKind::Lane {
                         road_id: road_id.to_string(),
@@ -94,7 +103,10 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
                     },
                     target: SpeedTarget::Absolute(v),
                 })),
-            ],
+            ]
+            .into_iter()
+            .chain(route)
+            .collect(),
         });
     }
     // The run ends with the root phase (written last).
@@ -211,6 +223,38 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
         warnings: Vec::new(),
         sources: scenario::Sources::default(),
     }
+}
+
+/// The route over the plan's roads from an actor's start (`lane`, road id and s) to the end
+/// of the last road, when it has a road ahead: a Waypoint where it starts and one in the
+/// middle of each later road in that lane (routeStrategy `shortest`; between waypoints on
+/// roads that follow each other there is one path, so the engine drives the plan's roads).
+fn route_ahead(plan: &Plan, lane: i32, (road, s): (&str, f64), pos: &SourcePos) -> Option<Route> {
+    let here = plan.roads.iter().position(|(id, _)| id == road)?;
+    let point = |road_id: &str, s: f64| Waypoint {
+        route_strategy: RouteStrategy::Shortest,
+        position: Position {
+            kind: PositionKind::Lane {
+                road_id: road_id.to_string(),
+                lane_id: lane.to_string(),
+                s,
+                offset: None,
+                orientation: None,
+            },
+            pos: pos.clone(),
+        },
+    };
+    let mut waypoints = vec![point(road, s)];
+    for (i, (id, start)) in plan.roads.iter().enumerate().skip(here + 1) {
+        let end = plan.roads.get(i + 1).map_or(plan.end, |r| r.1);
+        waypoints.push(point(id, (end - start) / 2.0));
+    }
+    (waypoints.len() > 1).then(|| Route {
+        name: "plan".to_string(),
+        closed: false,
+        waypoints,
+        catalog: None,
+    })
 }
 
 /// Mass of a DSL person (kg): the DSL's person has no mass; the 1.x catalogs' pedestrian's.

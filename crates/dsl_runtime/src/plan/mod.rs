@@ -90,7 +90,7 @@ use events::EventCtx;
 use place::{place, ToPlace};
 use planner::{no_end, Planner};
 
-pub(crate) use route::named_roads;
+pub(crate) use route::{named_routes, points as route_points};
 pub use types::POSITION_TOLERANCE;
 pub(crate) use types::{
     Entity, HandlerPlan, Plan, Planned, Settings, When, MAX_ACCELERATION, MAX_SPEED,
@@ -232,7 +232,12 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             .into_iter()
             .flatten()
             .find_map(|(at, a)| match (&a.route, at) {
-                (Route::Lane { road: id, lane, s }, At::Start | At::All) => {
+                (
+                    Route::Lane {
+                        road: id, lane, s, ..
+                    },
+                    At::Start | At::All,
+                ) => {
                     // On a road of the plan (`route::on_plan_road`, checked above).
                     Some((*lane, road.plan_s(id, *s).unwrap_or(*s) + a.start_offset))
                 }
@@ -291,6 +296,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     }
     Ok(Plan {
         roads: road.starts(),
+        end: road.length(),
+        routed: road.routed(),
         entities: p.entities,
         phases: p.phases,
         handlers: handler_plans,

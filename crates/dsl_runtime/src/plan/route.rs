@@ -6,7 +6,7 @@
 use std::collections::HashMap;
 
 use super::types::POSITION_TOLERANCE;
-use crate::error::{Error, ErrorKind as K, Site};
+use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Along, At, Kind, ModKind, Modifier, Phase, Route};
 use crate::road::PlanRoad;
 
@@ -45,9 +45,17 @@ pub(crate) fn check(
     };
     let describe = match &along.route {
         Route::Free { field, .. } => format!("route `{field}`"),
-        Route::Lane { road, lane, s } => {
-            format!("the route along lane {lane} of road {road} from s = {s} m")
-        }
+        Route::Lane {
+            road,
+            lane,
+            s,
+            then,
+        } => match then.last() {
+            None => format!("the route along lane {lane} of road {road} from s = {s} m"),
+            Some((to, e)) => format!(
+                "the route in lane {lane} from road {road} at s = {s} m to road {to} at s = {e} m"
+            ),
+        },
     };
     if one_lane && at == At::All {
         if let Some(c) = mods
@@ -66,10 +74,15 @@ pub(crate) fn check(
     }
     let (lo, hi) = match &along.route {
         Route::Free { .. } => (0.0, road.length()),
-        Route::Lane { road: id, s, .. } => (
-            // On a road of the plan (`on_plan_road`).
+        Route::Lane {
+            road: id, s, then, ..
+        } => (
+            // On roads of the plan (`on_plan_road`).
             road.plan_s(id, *s).unwrap_or(*s) + along.start_offset,
-            road.length() - along.end_offset,
+            match then.last() {
+                Some((to, e)) => road.plan_s(to, *e).unwrap_or(*e),
+                None => road.length(),
+            } - along.end_offset,
         ),
     };
     let mut moments = Vec::new();
@@ -140,9 +153,18 @@ pub(crate) fn check(
 
 /// Checks that a named route lies on a road of the plan, in one of its driving lanes in +s.
 pub(crate) fn on_plan_road(road: &PlanRoad<'_>, along: &Along) -> Result<(), Error> {
-    let Route::Lane { road: id, lane, s } = &along.route else {
+    let Route::Lane {
+        road: id,
+        lane,
+        s,
+        then,
+    } = &along.route
+    else {
         return Ok(());
     };
+    if !then.is_empty() {
+        return path_on_plan_road(road, along);
+    }
     let Some(at) = road.plan_s(id, 0.0) else {
         return Err(along.site.err(
             K::Road,
@@ -173,27 +195,79 @@ pub(crate) fn on_plan_road(road: &PlanRoad<'_>, along: &Along) -> Result<(), Err
     Ok(())
 }
 
-/// The roads the named routes of the tree (its `along(…)` modifiers) are on, in the order they
-/// are written, each with its first route.
-pub(crate) fn named_roads(root: &Phase) -> Vec<(String, Site)> {
-    let mut found: Vec<(String, Site)> = Vec::new();
+/// Checks that a route through points runs over the plan's roads: its roads (the network's
+/// path through its points) are roads of the plan, one after another.
+fn path_on_plan_road(road: &PlanRoad<'_>, along: &Along) -> Result<(), Error> {
+    // Called for `Route::Lane` with points only.
+    let Some((lane, pts)) = points(&along.route) else {
+        return Ok(());
+    };
+    let net = road.network();
+    let roads =
+        crate::road::route_roads(net, lane, &pts).map_err(|m| along.site.err(K::Road, m))?;
+    let ids: Vec<String> = roads.iter().map(|&i| net.roads()[i].id.clone()).collect();
+    let plan = road.ids();
+    let consecutive = plan
+        .iter()
+        .position(|r| *r == ids[0])
+        .is_some_and(|i| plan[i..].starts_with(&ids));
+    if !consecutive {
+        return Err(along.site.err(
+            K::Road,
+            format!(
+                "expected every named route on the roads the plan drives on ({}), found a route over roads {}",
+                plan.join(", "),
+                ids.join(", ")
+            ),
+        ));
+    }
+    for (id, s) in &pts {
+        let own = road.road_at(road.plan_s(id, 0.0).unwrap_or(0.0)).0;
+        if !(0.0..=own.length).contains(s) {
+            return Err(along.site.err(
+                K::Road,
+                format!(
+                    "expected the route's point on road {id} (0 m to {:.1} m), found s = {s} m",
+                    own.length
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The named routes of the tree (its `along(…)` modifiers on `Route::Lane`), in the order
+/// they are written, each once.
+pub(crate) fn named_routes(root: &Phase) -> Vec<Along> {
+    let mut found: Vec<Along> = Vec::new();
     root.walk(&mut |p| {
         if let Kind::Invoke(inv) = &p.kind {
             for m in &inv.modifiers {
-                if let (
-                    ModKind::Along,
-                    Some(Along {
-                        route: Route::Lane { road, .. },
-                        ..
-                    }),
-                ) = (m.kind, &m.along)
-                {
-                    if !found.iter().any(|(r, _)| r == road) {
-                        found.push((road.clone(), m.site.clone()));
+                if let (ModKind::Along, Some(a)) = (m.kind, &m.along) {
+                    if matches!(a.route, Route::Lane { .. })
+                        && !found.iter().any(|f| f.route == a.route)
+                    {
+                        found.push(a.clone());
                     }
                 }
             }
         }
     });
     found
+}
+
+/// The points of a named route: its start and later points (road id, s), and its lane.
+pub(crate) fn points(route: &Route) -> Option<(i32, Vec<(String, f64)>)> {
+    let Route::Lane {
+        road,
+        lane,
+        s,
+        then,
+    } = route
+    else {
+        return None;
+    };
+    let mut all = vec![(road.clone(), *s)];
+    all.extend(then.iter().cloned());
+    Some((*lane, all))
 }

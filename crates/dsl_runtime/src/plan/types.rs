@@ -150,6 +150,11 @@ pub(crate) struct Plan {
     /// The roads the actors drive on, in driving order: OpenDRIVE id and the plan's s at the
     /// road's start (`crate::road`). Never empty.
     pub roads: Vec<(String, f64)>,
+    /// The plan's s at the end of its last road (m).
+    pub end: f64,
+    /// The roads come from a route through points (`map.create_route`): the engine is given
+    /// them as a route (it would take a junction's first connection otherwise).
+    pub routed: bool,
     /// The physical objects, in the order the `do` tree first names them, then the located
     /// stationary objects it does not name.
     pub entities: Vec<Entity>,

@@ -3,7 +3,7 @@
 //! `create_odr_point`) resolved on the plan's road.
 //!
 //! The constraint solver leaves every road-network value to the runtime (a constraint over a
-//! route is a check error), so a route reaches the planner in one of two forms:
+//! route is a check error), so a route reaches the planner in one of these forms:
 //!
 //! - **a route field nothing defines** (`r: route`, `r: road`, `r: lane`): the scenario leaves
 //!   the route to the runtime. The planner binds it to the plan road, driven in +s: a `route`,
@@ -17,8 +17,14 @@
 //!   `s + start_offset` in that lane, and must be in that lane between `s + start_offset` and the
 //!   road's end minus `end_offset` at the phase start and at its end.
 //!
-//! Everything else (paths, crossings, points, list elements of the map, other map methods) is
-//! an error naming the argument.
+//! - **`m.create_route([p, q, …])`** of odr points (`m.create_odr_point(…)`, `t` = 0 m, in
+//!   one lane id) and routes made the same way: lane `lane_id` from the first point to the
+//!   last, over the roads of the network's shortest lane path through the points
+//!   (`crate::road::route_roads`), so through a junction by the connection the points say.
+//!   Placement and checks as for one point, the end being the last point.
+//!
+//! Everything else (paths, crossings, route points, list elements of the map, other map
+//! methods) is an error naming the argument.
 
 use dsl::semantics::hir::{Expr, ExprKind};
 use dsl::Value;
@@ -37,7 +43,9 @@ pub(crate) enum Route {
         /// A `lane`/`compound_lane`: one lane, kept.
         one_lane: bool,
     },
-    /// Lane `lane` of road `road` from s = `s` to the road's end.
+    /// Lane `lane` of road `road` from s = `s`: to the end of the plan's roads, or with
+    /// `then`, over the roads of the network's shortest lane path through those points to the
+    /// last one (`map.create_route`).
     Lane {
         /// OpenDRIVE road id.
         road: String,
@@ -45,6 +53,9 @@ pub(crate) enum Route {
         lane: i32,
         /// Where the route starts (m of s).
         s: f64,
+        /// The route's later points in order, each an OpenDRIVE road id and s, in lane `lane`
+        /// (empty: a route from one point, `create_odr_point`).
+        then: Vec<(String, f64)>,
     },
 }
 
@@ -144,19 +155,31 @@ fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
                     method.text
                 )));
             }
-            if method.text != "create_odr_point" {
-                return Err(unsupported(&format!("map.{}(…)", method.text)));
+            let mut points = Vec::new();
+            match method.text.as_str() {
+                "create_odr_point" => points.push(route_start(ctx, e, args)?),
+                "create_route" => route_points(ctx, e, args, &mut points)?,
+                other => return Err(unsupported(&format!("map.{other}(…)"))),
             }
-            let p = odr_point(ctx, e, args)?;
-            if p.t != 0.0 {
-                return Err(ctx.files.err(
-                    K::Unsupported,
-                    p.t_span,
-                    format!("expected t = 0 m (a route runs along the lane's centre line), found {} m; use lateral(…) for an offset", p.t),
-                ));
+            // Both calls give at least one point.
+            let (road, lane, s, _) = points[0].clone();
+            let mut then = Vec::new();
+            for (r, l, at, span) in points.into_iter().skip(1) {
+                if l != lane {
+                    return Err(ctx.files.err(
+                        K::Unsupported,
+                        span,
+                        format!("expected every point of a route in lane {lane} (the plan keeps its lane ids over its roads; a route through other lanes is not run), found lane {l}"),
+                    ));
+                }
+                then.push((r, at));
             }
-            let (road, lane, s) = (p.road, p.lane, p.s);
-            Ok(Route::Lane { road, lane, s })
+            Ok(Route::Lane {
+                road,
+                lane,
+                s,
+                then,
+            })
         }
         ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
             let path = ctx.path_of(e).ok_or_else(|| unsupported("an expression"))?;
@@ -183,6 +206,98 @@ fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
         }
         _ => Err(unsupported("an expression")),
     }
+}
+
+/// A point of a route: road id, lane id, s, and where it is written.
+type RoutePoint = (String, i32, f64, dsl::semantics::hir::Span);
+
+/// The point of `map.create_odr_point(…)` (its call `e`, arguments `args`) as a route's
+/// point: on the lane's centre line (t = 0 m).
+fn route_start(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    args: &[dsl::semantics::hir::Arg],
+) -> Result<RoutePoint, Error> {
+    let p = odr_point(ctx, e, args)?;
+    if p.t != 0.0 {
+        return Err(ctx.files.err(
+            K::Unsupported,
+            p.t_span,
+            format!("expected t = 0 m (a route runs along the lane's centre line), found {} m; use lateral(…) for an offset", p.t),
+        ));
+    }
+    Ok((p.road, p.lane, p.s, e.span))
+}
+
+/// The points of `map.create_route(routes, connect_points_by, legal_route)` (ASAM OpenSCENARIO
+/// DSL 2.1 §8.12.2.1), appended to `out` in order: each element of `routes` an odr point
+/// (`map.create_odr_point(…)`) or a route made the same way (its points). The points are
+/// joined by the network's shortest lane path in the driving direction (the `road` module):
+/// `connect_points_by` `waypoint` (the default), `lane`, `lane_section` and `road` all give
+/// that path (it runs in the points' lane over whole lane sections and roads); `crossing`
+/// (a pedestrian crossing) is an error. A path in the lanes' driving direction is a legal
+/// route, so `legal_route` holds either way.
+fn route_points(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    args: &[dsl::semantics::hir::Arg],
+    out: &mut Vec<RoutePoint>,
+) -> Result<(), Error> {
+    let params: Vec<String> = ["routes", "connect_points_by", "legal_route"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    let bound = bind(args, &params);
+    let arg = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+    if let Some(c) = arg("connect_points_by") {
+        let member = match &c.kind {
+            ExprKind::EnumValue(_, m) => Some(m.text.as_str()),
+            ExprKind::Name(m) => Some(m.as_str()),
+            _ => None,
+        };
+        if !matches!(member, Some("waypoint" | "lane" | "lane_section" | "road")) {
+            return Err(ctx.files.err(
+                K::Unsupported,
+                c.span,
+                "expected connect_points_by waypoint, lane, lane_section or road (a vehicle's route over the lanes), found another value",
+            ));
+        }
+    }
+    let Some(list) = arg("routes") else {
+        return Err(ctx.files.err(
+            K::Value,
+            e.span,
+            "expected `routes` in create_route(…), found none",
+        ));
+    };
+    let ExprKind::List(items) = &list.kind else {
+        return Err(ctx.files.err(
+            K::Unsupported,
+            list.span,
+            "expected a list of odr points and routes ([m.create_odr_point(…), …]) in create_route(…), found another expression",
+        ));
+    };
+    if items.is_empty() {
+        return Err(ctx.files.err(
+            K::Value,
+            list.span,
+            "expected at least one point in create_route(…), found an empty list",
+        ));
+    }
+    for item in items {
+        match map_call(ctx, item) {
+            Some(("create_odr_point", a)) => out.push(route_start(ctx, item, a)?),
+            Some(("create_route", a)) => route_points(ctx, item, a, out)?,
+            _ => {
+                return Err(ctx.files.err(
+                    K::Unsupported,
+                    item.span,
+                    "expected an odr point (m.create_odr_point(…)) or a route (m.create_route(…)) in create_route(…), found another expression",
+                ))
+            }
+        }
+    }
+    Ok(())
 }
 
 /// A `map.create_odr_point(road_id, lane_id, s, t)` call, read.

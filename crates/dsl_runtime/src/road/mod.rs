@@ -3,7 +3,9 @@
 //! after it (`chain`), measured in one s from the start road's s = 0 (the plan's s: a road's s
 //! plus the lengths of the roads before it). The start road is the road of the scenario's named
 //! routes, else the first road of the network with driving lanes on its right side (right-hand
-//! traffic: those lanes run in +s). Lane ids are the roads' own, the same on every road of the
+//! traffic: those lanes run in +s). A route through points (`map.create_route`) gives the
+//! roads up to its last point itself (`path`: through a junction by the connection it names),
+//! and the chain goes on from there. Lane ids are the roads' own, the same on every road of the
 //! chain. Lanes are counted in the DSL's way (ASAM OpenSCENARIO DSL 2.1 §8.9 `lane()`
 //! modifier): 1 is the rightmost driving lane in the direction of travel, or the leftmost with
 //! `from: left`. A person walks on the sidewalks of the right side where the road has any
@@ -12,8 +14,12 @@
 //! | module | computes |
 //! | --- | --- |
 //! | `chain` | which roads follow the start road |
+//! | `path` | the roads of a route through points (`map.create_route`) |
 
 mod chain;
+mod path;
+
+pub(crate) use path::route_roads;
 
 use opendrive::{LaneType, Road, RoadNetwork};
 
@@ -30,6 +36,9 @@ pub(crate) struct PlanRoad<'a> {
     /// Never empty: the start road first.
     segments: Vec<Segment<'a>>,
     net: &'a RoadNetwork,
+    /// The roads come from a route through points (`through`), which may take a junction's
+    /// connection other than the first.
+    routed: bool,
 }
 
 impl<'a> PlanRoad<'a> {
@@ -48,9 +57,30 @@ impl<'a> PlanRoad<'a> {
         Some(Self::from_index(net, i))
     }
 
+    /// Over `roads` (indices into `net.roads()`, in driving order, never empty: a route's, from
+    /// `route_roads`), then the roads the engine drives onto after the last of them.
+    pub(crate) fn through(net: &'a RoadNetwork, roads: &[usize]) -> Self {
+        let mut all = roads.to_vec();
+        if let Some(&last) = roads.last() {
+            for k in chain::chain(net, last).into_iter().skip(1) {
+                if all.contains(&k) {
+                    break;
+                }
+                all.push(k);
+            }
+        }
+        let mut plan = Self::over(net, all);
+        plan.routed = true;
+        plan
+    }
+
     fn from_index(net: &'a RoadNetwork, i: usize) -> Self {
+        Self::over(net, chain::chain(net, i))
+    }
+
+    fn over(net: &'a RoadNetwork, roads: Vec<usize>) -> Self {
         let mut start = 0.0;
-        let segments = chain::chain(net, i)
+        let segments = roads
             .into_iter()
             .map(|k| {
                 let road = &net.roads()[k];
@@ -59,7 +89,21 @@ impl<'a> PlanRoad<'a> {
                 seg
             })
             .collect();
-        PlanRoad { segments, net }
+        PlanRoad {
+            segments,
+            net,
+            routed: false,
+        }
+    }
+
+    /// Whether the roads come from a route through points (`through`).
+    pub(crate) fn routed(&self) -> bool {
+        self.routed
+    }
+
+    /// The road network the roads are in.
+    pub(crate) fn network(&self) -> &'a RoadNetwork {
+        self.net
     }
 
     /// The OpenDRIVE id of the start road.

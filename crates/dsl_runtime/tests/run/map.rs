@@ -86,3 +86,56 @@ fn a_run_time_lane_check_on_several_roads_is_an_error() {
         "{e}"
     );
 }
+
+#[test]
+fn a_route_goes_through_a_junction_by_the_connection_it_names() {
+    // map_route.osc: the route from road 0 to road 6 takes the junction's third connection
+    // (connecting road 5), not the first (road 1); positions worked in the file.
+    let r = run("map_route", "junction_trippel_twoway0");
+    let at = |t: f64, who: &str, road: &str, s: f64, x: f64| {
+        let p = r.at(t, who);
+        assert_eq!(
+            (p.road.as_str(), p.lane),
+            (road, -1),
+            "{who} at {t} s: {p:?}"
+        );
+        assert!((p.s - s).abs() < S_TOL, "{who} at {t} s: {p:?}");
+        assert!(
+            (p.x - x).abs() < S_TOL && (p.y + 1.5).abs() < S_TOL,
+            "{who} at {t} s: {p:?}"
+        );
+    };
+    at(0.0, "ego", "0", 60.0, 60.0);
+    at(5.0, "ego", "5", 10.0, 110.0);
+    at(12.0, "ego", "6", 60.0, 180.0);
+    at(0.0, "npc", "0", 20.0, 20.0);
+    at(9.0, "npc", "5", 10.0, 110.0);
+    at(12.0, "npc", "6", 20.0, 140.0);
+}
+
+#[test]
+fn routes_no_path_joins_or_in_two_lanes_are_errors_at_their_place() {
+    for (name, text, place) in [
+        (
+            "err_route_unconnected",
+            "expected a path in lane -1 from road 2 at s = 10 m to road 0 at s = 50 m in the driving direction, found none",
+            "err_route_unconnected.osc:8:9",
+        ),
+        (
+            "err_route_two_lanes",
+            "expected every point of a route in lane -1 (the plan keeps its lane ids over its roads; a route through other lanes is not run), found lane 1",
+            "err_route_two_lanes.osc:7:71",
+        ),
+    ] {
+        let e = match lower_at(
+            &format!("tests/scenarios/{name}.osc"),
+            "tests/roads/junction_trippel_twoway0.xodr",
+            0,
+            None,
+        ) {
+            Ok(_) => panic!("{name}: planned"),
+            Err(e) => e.to_string(),
+        };
+        assert!(e.contains(text) && e.ends_with(place), "{name}: {e}");
+    }
+}
