@@ -12,9 +12,27 @@
 //!
 //! `direction`: `behind` (the actor behind the reference) is `displacement`
 //! trailingReferencedEntity, `ahead` leadingReferencedEntity, none `any` (the side the actor is
-//! on); `keep_space_gap`'s `longitudinal` is `any`. The lateral directions (`left`, `right`,
-//! `inside`, `outside`, `lateral`) are errors (not run yet). The controller's limits are
+//! on); `keep_space_gap`'s `longitudinal` is `any`. The controller's limits are
 //! [`GAP_ACCELERATION`] and [`GAP_DECELERATION`] and the vehicle's maximum speed.
+//!
+//! The lateral directions of the space gap (`gap_direction` `left`, `right`, `inside`,
+//! `outside`; `keep_space_gap`'s `distance_direction` `lateral`) lower to the engine's
+//! LateralDistanceAction (OpenSCENARIO 1.3 §7.7.2.2) between the bounding boxes (`freespace`),
+//! measured across the road (road coordinates), at most [`LATERAL_GAP_ACCELERATION`] and
+//! [`LATERAL_GAP_SPEED`] sideways; the actor keeps its speed along the road:
+//!
+//! | `direction` | LateralDistanceAction `displacement` |
+//! | --- | --- |
+//! | `left` (the actor left of the reference) | leftToReferencedEntity |
+//! | `right` | rightToReferencedEntity |
+//! | `inside` (towards the road's centre line: right-hand traffic, left) | leftToReferencedEntity |
+//! | `outside` (away from it: right) | rightToReferencedEntity |
+//! | `lateral` (`keep_space_gap`) | any (the side the actor is on) |
+//!
+//! A change ends when the engine has the gap within 0.01 m; where the plan knows both actors
+//! across the road at the phase's start, the place the change leads to must be in a driving
+//! lane of the road (else an error). `change_time_headway` has only `ahead` and `behind`
+//! (`headway_direction`): a headway is longitudinal.
 //!
 //! The gap or headway a `keep_*` action keeps is the one at its start: the target of the gap
 //! action the actor ran just before (to the same reference), else the plan's gap between the two
@@ -23,8 +41,8 @@
 //! a `wait`, or the gap action's own end), else an error.
 
 use scenario::{
-    CoordinateSystem, DynamicConstraints, LongitudinalAction, LongitudinalDisplacement,
-    PrivateAction, StoryboardElementState,
+    CoordinateSystem, DynamicConstraints, LateralAction, LateralDisplacement, LongitudinalAction,
+    LongitudinalDisplacement, PrivateAction, StoryboardElementState,
 };
 
 use super::action_args::missing;
@@ -40,6 +58,47 @@ pub(crate) const GAP_ACCELERATION: f64 = 2.0;
 /// Largest deceleration of the gap controller (m/s²): ISO 15622's largest average deceleration
 /// of an adaptive cruise control.
 pub(crate) const GAP_DECELERATION: f64 = 3.5;
+/// Largest lateral acceleration of a lateral gap action (m/s²): ISO 11270's limit of the lateral
+/// acceleration a lane keeping assistance may command.
+pub(crate) const LATERAL_GAP_ACCELERATION: f64 = 3.0;
+/// Largest lateral speed of a lateral gap action (m/s): the peak lateral speed of an unhurried
+/// `change_lane()` (`lateral_actions`), so that no gap is opened faster than a lane is changed.
+pub(crate) const LATERAL_GAP_SPEED: f64 = 1.0;
+
+/// What a gap keeps, without its value.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Kind {
+    Space,
+    Headway,
+    Lateral,
+}
+
+impl Kind {
+    fn of(g: &Gap) -> Kind {
+        match g {
+            Gap::Space(_) => Kind::Space,
+            Gap::Headway(_) => Kind::Headway,
+            Gap::Lateral(_) => Kind::Lateral,
+        }
+    }
+
+    fn with(self, x: f64) -> Gap {
+        match self {
+            Kind::Space => Gap::Space(x),
+            Kind::Headway => Gap::Headway(x),
+            Kind::Lateral => Gap::Lateral(x),
+        }
+    }
+}
+
+/// Which way a gap action measures, from its `direction`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Measure {
+    /// Along the road.
+    Longitudinal(LongitudinalDisplacement),
+    /// Across the road (a space gap only).
+    Lateral(LateralDisplacement),
+}
 
 impl Planner<'_> {
     /// Plans `inv`'s gap or headway action for one actor; returns when the action ends on its
@@ -58,14 +117,25 @@ impl Planner<'_> {
             out,
             ..
         } = slot;
-        super::speed_actions::check_speed_modifiers(inv, first)?;
         let reference = self.gap_reference(p, inv)?;
         let headway = matches!(
             inv.kind,
             Action::ChangeTimeHeadway | Action::KeepTimeHeadway
         );
         let change = matches!(inv.kind, Action::ChangeSpaceGap | Action::ChangeTimeHeadway);
-        let displacement = displacement(inv)?;
+        let measure = measure(inv)?;
+        let lateral = matches!(measure, Measure::Lateral(_));
+        if lateral {
+            // Sideways: the speed along the road stays free, the lateral position is the action's.
+            super::lateral_actions::check_lateral_modifiers(inv)?;
+        } else {
+            super::speed_actions::check_speed_modifiers(inv, first)?;
+        }
+        let kind = match (headway, lateral) {
+            (true, _) => Kind::Headway,
+            (false, false) => Kind::Space,
+            (false, true) => Kind::Lateral,
+        };
         let wanted = if change {
             let a = arg(&inv.args, "target").ok_or_else(|| missing(p, inv, "target"))?;
             let x = a.number()?;
@@ -83,47 +153,65 @@ impl Planner<'_> {
                     ),
                 ));
             }
-            if headway {
-                Gap::Headway(x)
-            } else {
-                Gap::Space(x)
-            }
+            kind.with(x)
         } else {
-            self.gap_at_start(p, inv, target, &reference, t0, headway)?
+            self.gap_at_start(p, inv, (target, &reference), t0, kind)?
         };
-        let (distance, time_gap) = match wanted {
-            Gap::Space(d) => (Some(d), None),
-            Gap::Headway(t) => (None, Some(t)),
-        };
+        if let (Measure::Lateral(side), Gap::Lateral(g), Some(t)) = (measure, wanted, t0) {
+            if change {
+                self.check_lateral_place(p, target, &reference, t, side, g)?;
+            }
+        }
         let n = name(&inv.action);
-        out.push(Planned::with_phase(
-            target,
-            n.clone(),
-            PrivateAction::Longitudinal(LongitudinalAction::LongitudinalDistance {
+        let action = match measure {
+            Measure::Lateral(side) => PrivateAction::Lateral(LateralAction::LateralDistance {
                 entity_ref: reference.clone(),
                 continuous: !change,
-                distance,
-                time_gap,
-                freespace: !headway,
-                displacement: Some(displacement),
+                distance: Some(wanted.value()),
+                freespace: true,
+                displacement: Some(side),
                 coordinate_system: Some(CoordinateSystem::Road),
                 dynamic_constraints: Some(DynamicConstraints {
-                    max_acceleration: Some(GAP_ACCELERATION),
+                    max_acceleration: Some(LATERAL_GAP_ACCELERATION),
                     max_acceleration_rate: None,
-                    max_deceleration: Some(GAP_DECELERATION),
+                    max_deceleration: None,
                     max_deceleration_rate: None,
-                    max_speed: Some(MAX_SPEED),
+                    max_speed: Some(LATERAL_GAP_SPEED),
                 }),
             }),
-            &p.site,
-        ));
-        // From here the engine's controller moves the actor; once it holds the gap, at the
-        // reference's speed.
+            Measure::Longitudinal(displacement) => {
+                let (distance, time_gap) = match wanted {
+                    Gap::Headway(t) => (None, Some(t)),
+                    Gap::Space(d) | Gap::Lateral(d) => (Some(d), None),
+                };
+                PrivateAction::Longitudinal(LongitudinalAction::LongitudinalDistance {
+                    entity_ref: reference.clone(),
+                    continuous: !change,
+                    distance,
+                    time_gap,
+                    freespace: !headway,
+                    displacement: Some(displacement),
+                    coordinate_system: Some(CoordinateSystem::Road),
+                    dynamic_constraints: Some(DynamicConstraints {
+                        max_acceleration: Some(GAP_ACCELERATION),
+                        max_acceleration_rate: None,
+                        max_deceleration: Some(GAP_DECELERATION),
+                        max_deceleration_rate: None,
+                        max_speed: Some(MAX_SPEED),
+                    }),
+                })
+            }
+        };
+        out.push(Planned::with_phase(target, n.clone(), action, &p.site));
+        // From here the engine's controller moves the actor (along the road: once it holds the
+        // gap, at the reference's speed; across it: at its own speed).
         self.engine_moved.insert(target.to_string(), t0);
         self.gaps
             .insert(target.to_string(), (reference.clone(), wanted));
-        let v_ref = self.last_v.get(&reference).copied().unwrap_or(0.0);
-        self.last_v.insert(target.to_string(), v_ref);
+        if !lateral {
+            let v_ref = self.last_v.get(&reference).copied().unwrap_or(0.0);
+            self.last_v.insert(target.to_string(), v_ref);
+        }
         Ok(change.then(|| {
             When::Dyn(scenario::Trigger {
                 condition_groups: vec![scenario::ConditionGroup {
@@ -152,32 +240,37 @@ impl Planner<'_> {
             })
     }
 
-    /// The gap (or headway) between `target` and `reference` at the start of a `keep_*` action.
+    /// The gap of `kind` between `target` and `reference` at the start of a `keep_*` action:
+    /// the target of the actor's gap action just before (to the same reference, of the same
+    /// kind), else the plan's gap at the phase's start (along the road or across it).
     fn gap_at_start(
         &self,
         p: &Phase,
         inv: &Invoke,
-        target: &str,
-        reference: &str,
+        (target, reference): (&str, &str),
         t0: Option<f64>,
-        headway: bool,
+        kind: Kind,
     ) -> Result<Gap, Error> {
-        // The target of the gap action just before, when it kept the same measure.
         if let Some((r, g)) = self.gaps.get(target) {
-            if r == reference {
-                match (g, headway) {
-                    (Gap::Space(_), false) | (Gap::Headway(_), true) => return Ok(*g),
-                    _ => {}
-                }
+            if r == reference && Kind::of(g) == kind {
+                return Ok(*g);
             }
         }
         let unknown = |why: &str| {
             p.site.err(
                 K::Unsatisfiable,
                 format!(
-                    "expected the {} at the start of {}(…) known to the plan, found {why}; change it first (change_space_gap / change_time_headway to the same reference)",
-                    if headway { "headway" } else { "gap" },
-                    inv.action
+                    "expected the {} at the start of {}(…) known to the plan, found {why}; change it first ({} to the same reference)",
+                    match kind {
+                        Kind::Headway => "headway",
+                        Kind::Space => "gap",
+                        Kind::Lateral => "lateral gap",
+                    },
+                    inv.action,
+                    match kind {
+                        Kind::Lateral => "change_space_gap(…, left/right/inside/outside)",
+                        _ => "change_space_gap / change_time_headway",
+                    }
                 ),
             )
         };
@@ -185,9 +278,15 @@ impl Planner<'_> {
         if self.engine_moved.contains_key(target) || self.engine_moved.contains_key(reference) {
             return Err(unknown("an actor the engine's gap controller moves"));
         }
+        if kind == Kind::Lateral {
+            let (t_a, t_r) = (self.t_at(target, t), self.t_at(reference, t));
+            let left = t_a > t_r;
+            let facing = self.side_extent(target, !left) + self.side_extent(reference, left);
+            return Ok(Gap::Lateral(((t_a - t_r).abs() - facing).max(0.0)));
+        }
         let (s_a, s_r) = (self.s_at(target, t), self.s_at(reference, t));
         let between = (s_r - s_a).abs();
-        if headway {
+        if kind == Kind::Headway {
             let v = self.track(reference).at(t).1;
             if v <= 0.0 {
                 return Err(unknown(
@@ -199,21 +298,66 @@ impl Planner<'_> {
         let overhangs = self.facing_overhangs(target, reference, s_r >= s_a);
         Ok(Gap::Space((between - overhangs).max(0.0)))
     }
+
+    /// Checks that a lateral gap `gap` to `reference` on `side` of it, from the phase's start
+    /// `t`, leaves `target`'s reference point in a driving lane of the road.
+    fn check_lateral_place(
+        &self,
+        p: &Phase,
+        target: &str,
+        reference: &str,
+        t: f64,
+        side: LateralDisplacement,
+        gap: f64,
+    ) -> Result<(), Error> {
+        let t_r = self.t_at(reference, t);
+        let left = match side {
+            LateralDisplacement::LeftToReferencedEntity => true,
+            LateralDisplacement::RightToReferencedEntity => false,
+            _ => self.t_at(target, t) > t_r,
+        };
+        let reach = self.side_extent(reference, left) + gap + self.side_extent(target, !left);
+        let t_a = if left { t_r + reach } else { t_r - reach };
+        let s = self.s_at(target, t);
+        if self.road.lane_holding(s, t_a).is_some() {
+            return Ok(());
+        }
+        Err(p.site.err(
+            K::Unsatisfiable,
+            format!(
+                "expected a {gap} m gap {} of `{reference}` to leave `{target}` in a driving lane, found it at t = {t_a:.2} m across the road (s = {s:.2} m), off the driving lanes",
+                if left { "left" } else { "right" }
+            ),
+        ))
+    }
 }
 
-/// The LongitudinalDisplacement of a gap action's `direction`.
-fn displacement(inv: &Invoke) -> Result<LongitudinalDisplacement, Error> {
+/// How a gap action measures, from its `direction` (none: along the road, either side).
+fn measure(inv: &Invoke) -> Result<Measure, Error> {
     let Some(a) = arg(&inv.args, "direction") else {
-        return Ok(LongitudinalDisplacement::Any);
+        return Ok(Measure::Longitudinal(LongitudinalDisplacement::Any));
     };
-    match a.eval()? {
-        Val::Enum(d) if d == "behind" => Ok(LongitudinalDisplacement::TrailingReferencedEntity),
-        Val::Enum(d) if d == "ahead" => Ok(LongitudinalDisplacement::LeadingReferencedEntity),
-        Val::Enum(d) if d == "longitudinal" => Ok(LongitudinalDisplacement::Any),
-        Val::Enum(d) => Err(a.site.err(
-            K::Unsupported,
-            format!("expected a longitudinal direction (ahead, behind, longitudinal) in {}(…), found `{d}` (lateral gaps are not run yet)", inv.action),
-        )),
-        _ => Err(a.site.err(K::Argument, "expected a direction, found another value")),
-    }
+    let d = match a.eval()? {
+        Val::Enum(d) => d,
+        _ => {
+            return Err(a
+                .site
+                .err(K::Argument, "expected a direction, found another value"))
+        }
+    };
+    Ok(match d.as_str() {
+        "behind" => Measure::Longitudinal(LongitudinalDisplacement::TrailingReferencedEntity),
+        "ahead" => Measure::Longitudinal(LongitudinalDisplacement::LeadingReferencedEntity),
+        "longitudinal" => Measure::Longitudinal(LongitudinalDisplacement::Any),
+        // Right-hand traffic: the inside of the road is to the left.
+        "left" | "inside" => Measure::Lateral(LateralDisplacement::LeftToReferencedEntity),
+        "right" | "outside" => Measure::Lateral(LateralDisplacement::RightToReferencedEntity),
+        "lateral" => Measure::Lateral(LateralDisplacement::Any),
+        _ => {
+            return Err(a.site.err(
+                K::Argument,
+                format!("expected a gap direction (ahead, behind, left, right, inside, outside, longitudinal, lateral) in {}(…), found `{d}`", inv.action),
+            ))
+        }
+    })
 }

@@ -329,15 +329,17 @@ fn timing(p: &Phase, inv: &Invoke, len: Option<f64>, delta: f64) -> Result<Timin
     })
 }
 
-/// A lateral action controls the lateral position: no modifier beside it may change it.
-fn check_lateral_modifiers(inv: &Invoke) -> Result<(), Error> {
-    let offset = arg(&inv.args, "offset").is_some();
+/// A lateral action (`change_lane`, `follow_lane`, a lateral gap action) controls the lateral
+/// position: no modifier beside it may change it.
+pub(super) fn check_lateral_modifiers(inv: &Invoke) -> Result<(), Error> {
+    let follow = inv.kind == Action::FollowLane;
+    let offset = !follow || arg(&inv.args, "offset").is_some();
     let conflict = inv.modifiers.iter().find(|m| match m.kind {
         ModKind::ChangeLane => true,
         ModKind::Lane => m.at == At::End,
-        ModKind::Lateral => m.at != At::Start && (inv.kind == Action::ChangeLane || offset),
+        ModKind::Lateral => m.at != At::Start && offset,
         // follow_lane's own keep_lane() (named after it) is its clarification.
-        ModKind::KeepLane => inv.kind == Action::ChangeLane,
+        ModKind::KeepLane => !follow,
         _ => false,
     });
     match conflict {

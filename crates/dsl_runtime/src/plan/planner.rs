@@ -64,6 +64,17 @@ pub(crate) enum Gap {
     Space(f64),
     /// A time headway between the reference points (s).
     Headway(f64),
+    /// A space gap across the road between the bounding boxes (m).
+    Lateral(f64),
+}
+
+impl Gap {
+    /// The number kept (m or s).
+    pub(crate) fn value(self) -> f64 {
+        match self {
+            Gap::Space(x) | Gap::Headway(x) | Gap::Lateral(x) => x,
+        }
+    }
 }
 
 /// The error of a phase that nothing ends.
@@ -155,6 +166,20 @@ impl Planner<'_> {
         } else {
             rear(a) + front(o)
         }
+    }
+
+    /// t of `name`'s reference point across the road at time `t` (m): its planned lane's centre
+    /// and offset from it.
+    pub(crate) fn t_at(&self, name: &str, t: f64) -> f64 {
+        let tr = self.track(name);
+        self.road.lane_center(tr.lane(t), self.s_at(name, t)) + tr.offset(t)
+    }
+
+    /// How far `name`'s bounding box reaches from its reference point to its left (`left`) or
+    /// right side (m).
+    pub(crate) fn side_extent(&self, name: &str, left: bool) -> f64 {
+        let b = self.entities[self.index[name]].data.bounding_box;
+        b.width / 2.0 + if left { b.center[1] } else { -b.center[1] }
     }
 
     /// The width of `name`'s bounding box (m).

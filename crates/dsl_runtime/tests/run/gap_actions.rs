@@ -66,3 +66,94 @@ fn change_time_headway_ends_at_the_headway_and_keep_time_headway_holds_it() {
     );
     assert!((r.at(40.0, "ego").speed - 20.0).abs() < 0.05);
 }
+
+/// Lateral error (m) at which the engine's LateralDistanceAction has reached its distance.
+const LATERAL_REACHED: f64 = 0.01;
+/// Positions against the step-by-step law worked in the scenarios' comments (m): the engine
+/// computes the same recurrence, so only rounding separates them.
+const LAW_TOL: f64 = 1e-3;
+/// The continuous closed form against the stepped law (m at 2 s; s at the end).
+const CLOSED_FORM_GAP: f64 = 0.005;
+
+/// The closed form of both lateral scenarios: a critically damped approach over 1 m with
+/// ω = √(0.4 × 3 m/s²) = 1.0954 /s: the error left at t, u = (1 + ωt)e^(−ωt) m.
+fn error_left(t: f64) -> f64 {
+    let x = (0.4f64 * 3.0).sqrt() * t;
+    (1.0 + x) * (-x).exp()
+}
+
+#[test]
+fn change_space_gap_to_the_right_closes_across_the_road_and_keep_holds_it() {
+    let r = run("actions/lateral_gap", 0, None);
+    // Gap between the 2 m wide boxes: lead's y − 1 − (ego's y + 1).
+    let gap = |t: f64| (r.at(t, "lead").y - 1.0) - (r.at(t, "ego").y + 1.0);
+    assert!((gap(0.0) - 1.5).abs() < 1e-9, "gap(0) = {}", gap(0.0));
+    // Mid-point: 0.3595 m left by the stepped law, 0.357 m in closed form.
+    assert!((error_left(2.0) - 0.3595).abs() < CLOSED_FORM_GAP);
+    assert!(
+        (gap(2.0) - 0.8595).abs() < LAW_TOL,
+        "gap(2) = {} (0.8595 by the stepped law)",
+        gap(2.0)
+    );
+    let (s, e) = r.phase("do.1.close");
+    assert!(s.abs() < T_TOL, "close starts at {s}");
+    // The law's error falls to 0.01 m at the step starting at 6.30 s; the action ends in that
+    // step, and the phase one step later (as the longitudinal gaps above).
+    assert!(
+        (e - 6.4).abs() < T_TOL,
+        "close ends at {e} (6.40 s by hand)"
+    );
+    assert!(
+        (gap(6.3) - 0.5).abs() <= LATERAL_REACHED,
+        "gap {} when the change ends",
+        gap(6.3)
+    );
+    assert!(
+        (gap(6.25) - 0.5).abs() > LATERAL_REACHED,
+        "not reached a step earlier"
+    );
+    let (s2, e2) = r.phase("do.1.hold");
+    assert!(
+        (s2 - e).abs() < T_TOL && (e2 - 12.0).abs() < T_TOL,
+        "hold [{s2}, {e2}]"
+    );
+    let ego = r.at(12.0, "ego");
+    assert!(
+        (gap(12.0) - 0.5).abs() < LATERAL_REACHED,
+        "gap(12) = {}",
+        gap(12.0)
+    );
+    assert!(
+        (ego.y + 7.75).abs() < LATERAL_REACHED,
+        "ego y(12) = {}",
+        ego.y
+    );
+    assert_eq!(ego.lane, -3, "ego stays in its lane");
+    // Along the road nothing changed: 20 m/s from s = 100 m.
+    assert!((ego.speed - 20.0).abs() < 1e-9, "ego v(12) = {}", ego.speed);
+    assert!((ego.x - 340.0).abs() < 0.05, "ego x(12) = {}", ego.x);
+}
+
+#[test]
+fn change_space_gap_inside_is_to_the_left_in_right_hand_traffic() {
+    let r = run("actions/lateral_gap_inside", 0, None);
+    let gap = |t: f64| (r.at(t, "ego").y - 1.0) - (r.at(t, "lead").y + 1.0);
+    assert!((gap(0.0) - 1.5).abs() < 1e-9, "gap(0) = {}", gap(0.0));
+    let y2 = r.at(2.0, "ego").y;
+    assert!(
+        (y2 + 4.25 + 0.3595).abs() < LAW_TOL,
+        "ego y(2) = {y2} (-4.6095 by the stepped law)"
+    );
+    let (_, e) = r.phase("do.widen");
+    assert!(
+        (e - 6.4).abs() < T_TOL,
+        "widen ends at {e} (6.40 s by hand)"
+    );
+    let y = r.at(6.3, "ego").y;
+    assert!(
+        (y + 4.25).abs() <= LATERAL_REACHED,
+        "ego y = {y} at the end"
+    );
+    assert!((gap(6.3) - 2.5).abs() <= LATERAL_REACHED);
+    assert!((r.at(10.0, "ego").x - 200.0).abs() < 0.05);
+}
