@@ -51,7 +51,8 @@
 //! | `signals` | OpenSCENARIO 1.3 traffic signal controllers: phases cycling, reference and delay, signal states |
 //! | `user_values` | values from outside for UserDefinedValueCondition: typed text, time series, CSV file |
 //! | `world` | the world's data: entity state and the plain state the stages keep on entities, lane look-ups, transition shapes |
-//! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: the world store, building, the step |
+//! | `store` | OpenSCENARIO 1.3 §8 the world store of a run: `World` (road network, entities, values), the lane index, selections, trailer connections, action targets |
+//! | `runtime` | OpenSCENARIO 1.3 §8 scenario at runtime: building, the `Engine`, the step; the stages' tables |
 //! | `actions` | OpenSCENARIO 1.3 §7.7 actions at runtime: one file per action kind, the action table |
 //! | `traffic` | OpenSCENARIO 1.3 §7.2.2.3 spawned traffic: sources, sinks, swarms, areas |
 //! | `output` | trajectory CSV, event log and the per-step frame seam for OSI |
@@ -75,6 +76,7 @@ pub mod routing;
 pub mod runtime;
 pub mod signals;
 mod snapshot;
+mod store;
 pub mod storyboard;
 pub mod tolerance;
 mod traffic;

@@ -16,7 +16,7 @@
 use scenario::TransitionDynamics;
 
 use super::Part;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
 use crate::world::shapes::{shape_integral, span, Span};

@@ -31,7 +31,7 @@ use std::collections::BTreeMap;
 use scenario::{AnimationAction, AnimationType, AppearanceAction, LightKind};
 
 use crate::output::EventRecord;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
 
@@ -69,11 +69,11 @@ pub(crate) struct Appearances {
     animations: BTreeMap<(EntityId, String), AnimationAction>,
 }
 
-impl World {
+impl Appearances {
     /// The AnimationAction last applied to animation `name` of entity `id` (the component,
     /// pedestrian motion, file path or user-defined type, as in the event log).
     pub(crate) fn animation(&self, id: EntityId, name: &str) -> Option<&AnimationAction> {
-        self.appearance.animations.get(&(id, name.to_owned()))
+        self.animations.get(&(id, name.to_owned()))
     }
 }
 
@@ -121,6 +121,7 @@ fn animation_end(a: &AnimationAction, time: f64) -> Option<Transition> {
 /// AnimationAction's duration or continuous animation).
 pub(crate) fn start(
     world: &mut World,
+    appearances: &mut Appearances,
     actor: EntityId,
     action: &AppearanceAction,
     element: &str,
@@ -146,7 +147,7 @@ pub(crate) fn start(
                 Some(s) => format!("animation {name} state {s}"),
                 None => format!("animation {name}"),
             };
-            world.appearance.animations.insert((actor, name), a.clone());
+            appearances.animations.insert((actor, name), a.clone());
             (change, animation_end(a, time))
         }
         _ => return None,

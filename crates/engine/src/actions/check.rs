@@ -10,7 +10,7 @@ use opendrive::RoadPosition;
 use scenario::StateCheck;
 
 use crate::error::{Error, ErrorKind};
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::EntityId;
 
 /// Checks `check` on `actor` at `time`.

@@ -20,7 +20,7 @@ use scenario::{Position, SourcePos};
 use crate::error::{Error, ErrorKind};
 use crate::position::{resolve, EntityQuery, EntityView};
 use crate::routing::RoutingOptions;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::traffic::leave;
 use crate::world::entity::EntityId;
 

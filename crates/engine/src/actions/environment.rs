@@ -9,7 +9,7 @@
 
 use scenario::Environment;
 
-use crate::runtime::world::World;
+use crate::store::World;
 
 /// Applies `environment` at simulation time `time`.
 pub(crate) fn start(world: &mut World, environment: &Environment, time: f64) {

@@ -35,7 +35,7 @@ use scenario::{FollowingMode, SourcePos, Timing};
 
 use super::Part;
 use crate::error::{Error, ErrorKind};
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::trajectory::{
     build_for_actor, FollowLimits, Pursuit, Trajectory, TrajectoryClock, TrajectoryError,

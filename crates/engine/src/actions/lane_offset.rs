@@ -21,8 +21,8 @@ use scenario::{
 use super::lane_change::begin;
 use super::Part;
 use crate::error::Error;
-use crate::runtime::targets::entity_ref;
-use crate::runtime::world::World;
+use crate::store::targets::entity_ref;
+use crate::store::World;
 use crate::world::entity::EntityId;
 
 /// Lateral acceleration (m/s²) when the action gives none.

@@ -36,10 +36,12 @@ use scenario::{
 
 pub(crate) use appearance::Appearances;
 
+use crate::controller::ControllerTable;
 use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::storyboard::{ActionId, ActionStatus};
+use crate::traffic::Traffic;
 use crate::world::entity::EntityId;
 
 /// The control domain an action occupies on its actor.
@@ -92,6 +94,8 @@ pub(crate) struct ActionSlot {
 #[derive(Debug, Clone, Default)]
 pub(crate) struct ActionTable {
     pub slots: Vec<ActionSlot>,
+    /// The animations AppearanceActions set, per entity (appearance.rs).
+    pub appearance: Appearances,
     /// The slots that may have a running part, ascending: stage 2 visits these only (a slot
     /// whose parts are all done does nothing there; 1,000 Init actions that ended at t = 0
     /// would otherwise be walked every step). A start with parts adds its slot; stage 2 drops
@@ -248,6 +252,11 @@ pub(crate) fn stop_domain(
 pub(crate) struct Host<'a> {
     pub table: &'a mut ActionTable,
     pub world: &'a mut World,
+    /// The user controllers (engine module `controller`): a ControllerAction changes them, a
+    /// motion action on a domain one holds goes to it.
+    pub controllers: &'a mut ControllerTable,
+    /// The traffic actions at work (engine module `traffic`).
+    pub traffic: &'a mut Traffic,
     pub events: &'a mut Vec<EventRecord>,
     pub errors: &'a mut Vec<Error>,
     /// The Init actions have started: this action belongs to a Story.
@@ -298,6 +307,7 @@ impl Host<'_> {
         };
         if crate::controller::hand_over(
             self.world,
+            self.controllers,
             actor,
             action,
             !self.story,
@@ -375,6 +385,7 @@ impl Host<'_> {
                         activate,
                     } => crate::controller::assign(
                         self.world,
+                        self.controllers,
                         actor,
                         controller,
                         object_controller_name.as_deref(),
@@ -387,6 +398,7 @@ impl Host<'_> {
                         domains,
                     } => crate::controller::activate(
                         self.world,
+                        self.controllers,
                         actor,
                         object_controller_ref.as_deref(),
                         domains,
@@ -407,7 +419,15 @@ impl Host<'_> {
             PrivateAction::Routing(r) => self.start_routing(id, r, actor),
             PrivateAction::Appearance(a) => {
                 let name = self.table.slots[id.0 as usize].name.clone();
-                let transition = appearance::start(self.world, actor, a, &name, time, self.events);
+                let transition = appearance::start(
+                    self.world,
+                    &mut self.table.appearance,
+                    actor,
+                    a,
+                    &name,
+                    time,
+                    self.events,
+                );
                 Ok(transition.map_or(Part::Done(ActionStatus::Ended), Part::Appearance))
             }
             PrivateAction::Trailer(t) => {
@@ -511,9 +531,14 @@ impl Host<'_> {
             GlobalAction::Traffic {
                 traffic_name,
                 action,
-            } if crate::traffic::supports(action) => {
-                crate::traffic::start(self.world, &name, traffic_name.as_deref(), action, &pos)
-            }
+            } if crate::traffic::supports(action) => crate::traffic::start(
+                self.world,
+                self.traffic,
+                &name,
+                traffic_name.as_deref(),
+                action,
+                &pos,
+            ),
             GlobalAction::TrafficSignal(scenario::TrafficSignalAction::State { name, state }) => {
                 self.world
                     .signals

@@ -19,7 +19,7 @@
 use scenario::{BrakeInput, Gear, OverrideControllerValueAction};
 
 use crate::output::EventRecord;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::EntityId;
 
 /// "on 0.5" / "off": the change of one input for the event log.

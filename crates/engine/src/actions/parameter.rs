@@ -14,7 +14,7 @@ use scenario::expr::Value;
 use scenario::{ModifyRule, SourcePos, ValueConstraintGroup};
 
 use crate::error::Error;
-use crate::runtime::world::World;
+use crate::store::World;
 
 /// Applies `rule` to parameter `name`.
 pub(crate) fn apply(

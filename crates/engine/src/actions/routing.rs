@@ -18,7 +18,7 @@ use scenario::{Position, Route, RouteStrategy, SourcePos};
 use crate::output::EventRecord;
 use crate::position::resolve;
 use crate::routing::{plan_between, plan_random, plan_route, PlannedRoute, RoutingOptions};
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::EntityId;
 use crate::world::RouteFollow;
 

@@ -20,8 +20,8 @@ use scenario::{
 
 use super::Part;
 use crate::error::Error;
-use crate::runtime::targets::entity_ref;
-use crate::runtime::world::World;
+use crate::store::targets::entity_ref;
+use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
 use crate::world::shapes::{peak_slope, progress, shape_value, span, Span};

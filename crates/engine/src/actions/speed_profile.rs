@@ -30,8 +30,8 @@ use scenario::{DynamicConstraints, FollowingMode, LongitudinalAction, Performanc
 
 use super::Part;
 use crate::error::Error;
-use crate::runtime::targets::entity_ref;
-use crate::runtime::world::World;
+use crate::store::targets::entity_ref;
+use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
 

@@ -39,8 +39,8 @@ use super::Part;
 use crate::domain::shortest_road_path;
 use crate::error::{Error, ErrorKind};
 use crate::position::resolve;
-use crate::runtime::targets::entity_ref;
-use crate::runtime::world::World;
+use crate::store::targets::entity_ref;
+use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
 

@@ -18,7 +18,7 @@ use scenario::Position;
 
 use crate::error::{Error, ErrorKind};
 use crate::position::resolve;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::EntityId;
 
 /// Teleports `actor` to `position`; `story`: started by a Story (not in Init), so the entity

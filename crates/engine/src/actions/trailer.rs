@@ -1,6 +1,6 @@
 //! ConnectTrailerAction and DisconnectTrailerAction (OpenSCENARIO 1.3 §7.2.2.6 "Trailer
 //! modeling", XSD `TrailerAction`): the actor starts or stops towing. Instantaneous; the
-//! kinematics live in `runtime/trailer.rs`.
+//! kinematics live in `store/trailer.rs`.
 //!
 //! A disconnected trailer has no drive of its own: it stops where it stands (speed 0) and is
 //! left to the default controller.
@@ -8,7 +8,7 @@
 use scenario::{SourcePos, TrailerAction};
 
 use crate::error::Error;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::EntityId;
 
 /// Applies `action` to the tow vehicle `actor`. Errors name `pos`: an unknown trailer, a

@@ -5,7 +5,7 @@ use scenario::{ModifyRule, SourcePos};
 
 use super::parameter::modify_value;
 use crate::error::Error;
-use crate::runtime::world::World;
+use crate::store::World;
 
 /// Applies `rule` to variable `name`.
 pub(crate) fn apply(

@@ -19,7 +19,7 @@
 use scenario::VisibilityAction;
 
 use crate::output::EventRecord;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::{EntityId, Visibility};
 
 /// `on` / `off`.

@@ -6,12 +6,12 @@
 use scenario::{ControllerDomains, SourcePos};
 
 use super::properties::{classify, ControllerKind};
-use super::table::{instantiate, requested, Assigned};
+use super::table::{instantiate, requested, Assigned, ControllerTable};
 use super::view::ControllerView;
 use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::lane_index::LaneIndex;
-use crate::runtime::World;
+use crate::store::lane_index::LaneIndex;
+use crate::store::World;
 use crate::world::ActiveDomains;
 use crate::world::EntityId;
 
@@ -36,14 +36,14 @@ pub(crate) struct Taken {
 
 fn record(
     world: &World,
+    controllers: &ControllerTable,
     actor: EntityId,
     slot: usize,
     origin: &Origin<'_>,
     note: String,
     events: &mut Vec<EventRecord>,
 ) {
-    let Some(a) = world
-        .controllers
+    let Some(a) = controllers
         .of(actor.index())
         .and_then(|c| c.assigned.get(slot))
     else {
@@ -62,8 +62,10 @@ fn record(
 
 /// Assigns `controller` to `actor` (as ObjectController `object`, if named) and activates the
 /// domains `activate` sets true.
+#[allow(clippy::too_many_arguments)] // the world, the stage's table, the XSD attributes, origin, log.
 pub(crate) fn assign(
     world: &mut World,
+    controllers: &mut ControllerTable,
     actor: EntityId,
     controller: &scenario::Controller,
     object: Option<&str>,
@@ -89,7 +91,7 @@ pub(crate) fn assign(
         active: ActiveDomains::default(),
         instance,
     };
-    let list = &mut world.controllers.of_mut(actor.index()).assigned;
+    let list = &mut controllers.of_mut(actor.index()).assigned;
     let same = |a: &Assigned| match (object, &a.object_controller) {
         (Some(o), Some(p)) => o == p,
         (None, None) => a.name == controller.name,
@@ -105,8 +107,8 @@ pub(crate) fn assign(
             list.len() - 1
         }
     };
-    world.controllers.recount();
-    record(world, actor, slot, origin, note, events);
+    controllers.recount();
+    record(world, controllers, actor, slot, origin, note, events);
     let switch_on = ControllerDomains {
         longitudinal: activate.longitudinal.filter(|on| *on),
         lateral: activate.lateral.filter(|on| *on),
@@ -115,7 +117,14 @@ pub(crate) fn assign(
     };
     if requested(&switch_on).iter().any(Option::is_some) {
         return Ok(set_domains(
-            world, actor, slot, &switch_on, origin, None, events,
+            world,
+            controllers,
+            actor,
+            slot,
+            &switch_on,
+            origin,
+            None,
+            events,
         ));
     }
     Ok(Taken::default())
@@ -126,14 +135,14 @@ pub(crate) fn assign(
 /// assigned: the default controller is meant, which always runs; nothing changes.
 pub(crate) fn activate(
     world: &mut World,
+    controllers: &mut ControllerTable,
     actor: EntityId,
     object_ref: Option<&str>,
     domains: &ControllerDomains,
     origin: &Origin<'_>,
     events: &mut Vec<EventRecord>,
 ) -> Result<Taken, Error> {
-    let list = world
-        .controllers
+    let list = controllers
         .of(actor.index())
         .map_or(&[][..], |c| &c.assigned[..]);
     let (slot, note) = match object_ref {
@@ -175,13 +184,22 @@ pub(crate) fn activate(
         ),
     };
     Ok(set_domains(
-        world, actor, slot, domains, origin, note, events,
+        world,
+        controllers,
+        actor,
+        slot,
+        domains,
+        origin,
+        note,
+        events,
     ))
 }
 
 /// Applies `domains` to controller `slot` of `actor`.
+#[allow(clippy::too_many_arguments)] // the world, the stage's table, the XSD attributes, origin, log.
 fn set_domains(
     world: &mut World,
+    controllers: &mut ControllerTable,
     actor: EntityId,
     slot: usize,
     domains: &ControllerDomains,
@@ -193,7 +211,7 @@ fn set_domains(
     let mut notes: Vec<String> = note.map(str::to_owned).into_iter().collect();
     let mut gave_back_lateral = false;
     {
-        let ctrl = world.controllers.of_mut(actor.index());
+        let ctrl = controllers.of_mut(actor.index());
         let defined = ctrl.assigned[slot].defined();
         let is_model = ctrl.assigned[slot].instance.is_some();
         let [lon, lat, light, anim] = requested(domains);
@@ -248,9 +266,9 @@ fn set_domains(
             a.active.animation = on;
         }
     }
-    world.controllers.recount();
+    controllers.recount();
     if gave_back_lateral {
-        hand_back_lateral(world, actor);
+        hand_back_lateral(world, controllers, actor);
     }
     if taken.longitudinal || taken.lateral {
         let index = LaneIndex::default();
@@ -264,13 +282,12 @@ fn set_domains(
             None,
             &world.signals,
         );
-        let ctrl = world.controllers.of_mut(actor.index());
+        let ctrl = controllers.of_mut(actor.index());
         if let Some(instance) = &mut ctrl.assigned[slot].instance {
             instance.activate(&view);
         }
     }
-    if let Some(ControllerKind::Foreign { what }) = world
-        .controllers
+    if let Some(ControllerKind::Foreign { what }) = controllers
         .of(actor.index())
         .map(|c| &c.assigned[slot].kind)
     {
@@ -283,15 +300,19 @@ fn set_domains(
     } else {
         format!("activation changed; {}", notes.join("; "))
     };
-    record(world, actor, slot, origin, what, events);
+    record(world, controllers, actor, slot, origin, what, events);
     taken
 }
 
 /// The lateral domain goes back to the default controller: a controller's lane change in
 /// progress stops where the entity is, an entity steered off its lane takes the lane it is on,
 /// keeping its offset (§7.2.2.1: the default controller keeps the lane offset).
-pub(crate) fn hand_back_lateral(world: &mut World, actor: EntityId) {
-    let ctrl = world.controllers.of_mut(actor.index());
+pub(crate) fn hand_back_lateral(
+    world: &mut World,
+    controllers: &mut ControllerTable,
+    actor: EntityId,
+) {
+    let ctrl = controllers.of_mut(actor.index());
     let steered = std::mem::take(&mut ctrl.steered);
     let changing = ctrl.lane_change.take().is_some();
     if changing {

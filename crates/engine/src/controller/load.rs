@@ -13,8 +13,9 @@ use scenario::{
 
 use super::assign::{assign, Origin};
 use super::properties::classify;
+use super::table::ControllerTable;
 use crate::error::Error;
-use crate::runtime::World;
+use crate::store::World;
 use crate::world::EntityId;
 
 /// The controllers a traffic mix can give its vehicles: the ControllerDistribution and the
@@ -43,12 +44,13 @@ fn mix(action: &TrafficAction) -> Option<&TrafficMix> {
 }
 
 /// Reads every controller of the scenario and assigns the entities' ObjectControllers (module
-/// doc). `actions` are the storyboard's actions (Init and Stories).
+/// doc): the table of user controllers the controllers stage receives. `actions` are the
+/// storyboard's actions (Init and Stories).
 pub(crate) fn set_up<'a>(
     scenario: &Scenario,
     world: &mut World,
     actions: impl Iterator<Item = &'a scenario::Action>,
-) -> Result<(), Error> {
+) -> Result<ControllerTable, Error> {
     for action in actions {
         match &action.kind {
             ActionKind::Private(PrivateAction::Controller(c)) => {
@@ -64,6 +66,7 @@ pub(crate) fn set_up<'a>(
             _ => {}
         }
     }
+    let mut controllers = ControllerTable::default();
     let mut discard = Vec::new();
     for (i, o) in scenario.entities.scenario_objects.iter().enumerate() {
         for oc in &o.object_controllers {
@@ -74,6 +77,7 @@ pub(crate) fn set_up<'a>(
             };
             assign(
                 world,
+                &mut controllers,
                 EntityId(i as u32),
                 &oc.controller,
                 oc.name.as_deref(),
@@ -83,5 +87,5 @@ pub(crate) fn set_up<'a>(
             )?;
         }
     }
-    Ok(())
+    Ok(controllers)
 }

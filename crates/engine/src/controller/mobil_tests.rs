@@ -9,8 +9,8 @@ use super::*;
 use crate::controller::car_following::with_red_light;
 use crate::controller::view::NeighbourLane;
 use crate::domain::{BoundingBox, Vector3};
-use crate::runtime::lane_index::LaneIndex;
-use crate::runtime::world::World;
+use crate::store::lane_index::LaneIndex;
+use crate::store::World;
 use crate::world::entity::{Entity, EntityId, EntityKind};
 
 /// The verdict on `lane` with every acceleration computed (the rule of the module doc).

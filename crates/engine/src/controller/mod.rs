@@ -80,6 +80,7 @@ pub(crate) use default::place_on_track;
 pub use external::{ExternalController, ExternalInput, InputError};
 pub(crate) use load::set_up;
 pub use mobil::MobilController;
+pub use properties::TrafficModel;
 pub(crate) use strategy::hand_over;
 pub(crate) use table::ControllerTable;
 pub use vehicle_dynamics::VehicleDynamicsController;

@@ -409,3 +409,13 @@ fn narrow(
     }
     Ok(kept)
 }
+
+/// A controller model for spawned traffic ([`EngineConfig::traffic_model`](crate::EngineConfig::traffic_model)) or the scenario's
+/// vehicles ([`EngineConfig::vehicle_model`](crate::EngineConfig::vehicle_model)).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TrafficModel {
+    /// `idm`: the Intelligent Driver Model (longitudinal), the model's default parameters.
+    Idm,
+    /// `mobil`: IDM and MOBIL lane changes (both domains), the models' default parameters.
+    Mobil,
+}

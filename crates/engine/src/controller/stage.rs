@@ -20,12 +20,12 @@ use opendrive::{Direction, Pose, Real, RoadNetwork};
 use super::command::{Command, Lateral, Longitudinal};
 use super::default::{measure, move_entity};
 use super::properties::MotionDomains;
-use super::table::EntityControllers;
+use super::table::{ControllerTable, EntityControllers};
 use super::view::ControllerView;
 use crate::models::idm::ballistic_step;
 use crate::models::single_track::arc_step;
-use crate::runtime::lane_index::LaneIndex;
-use crate::runtime::World;
+use crate::store::lane_index::LaneIndex;
+use crate::store::World;
 use crate::world::lane_change::{begin as begin_route_lane_change, step as step_route_lane_change};
 use crate::world::Entity;
 
@@ -38,19 +38,19 @@ pub(crate) struct Merged {
 }
 
 /// Stage 3: commands, then moves (module doc).
-pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
+pub(crate) fn step(world: &mut World, controllers: &mut ControllerTable, time: Real, dt: Real) {
     // The stage's storage of the last step, taken out of the table while the table's
     // controllers are stepped, and put back at the end.
-    let mut storage = std::mem::take(&mut world.controllers.stage);
+    let mut storage = std::mem::take(&mut controllers.stage);
     let merged = &mut storage.merged;
     merged.clear();
-    if world.controllers.any_held() {
+    if controllers.any_held() {
         let index = &mut storage.index;
         index.rebuild(&world.network, &world.entities);
         let index: &LaneIndex = index;
         merged.resize(world.entities.len(), None);
         let (entities, network, signals) = (&world.entities, &world.network, &world.signals);
-        for (i, ctrl) in world.controllers.iter_mut() {
+        for (i, ctrl) in controllers.iter_mut() {
             let Some(e) = entities.get(i).filter(|e| e.placed) else {
                 continue;
             };
@@ -93,7 +93,7 @@ pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
     let net = &world.network;
     for (i, e) in world.entities.iter_mut().enumerate() {
         match merged.get(i).copied().flatten() {
-            Some(m) if e.placed => apply(net, e, world.controllers.of_mut(i), m, dt),
+            Some(m) if e.placed => apply(net, e, controllers.of_mut(i), m, dt),
             _ => {
                 // Run option stop_at_red_lights (signals/red_light.rs); off: nothing.
                 world.signals.govern_speed(net, i, e, dt);
@@ -101,7 +101,7 @@ pub(crate) fn step(world: &mut World, time: Real, dt: Real) {
             }
         }
     }
-    world.controllers.stage = storage;
+    controllers.stage = storage;
 }
 
 /// Moves `e` by the merged command `m` over `dt` s.
@@ -159,7 +159,7 @@ fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: Mer
         // Back from steering or a pose: the default controller keeps the lane it is on.
         e.track = None;
         if let Some(rp) = net.locate(e.pose.x, e.pose.y, Some(e.pose.h)) {
-            crate::runtime::place_on_lane(net, e, e.pose, Some(rp));
+            crate::store::place_on_lane(net, e, e.pose, Some(rp));
         }
     }
     let distance = motion.map(|(_, d)| d);

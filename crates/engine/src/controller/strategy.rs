@@ -5,10 +5,11 @@ use scenario::{LateralAction, LongitudinalAction, PrivateAction, RoutingAction};
 
 use super::assign::Origin;
 use super::command::Strategy;
+use super::table::ControllerTable;
 use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::targets::{target_lane, target_speed};
-use crate::runtime::World;
+use crate::store::targets::{target_lane, target_speed};
+use crate::store::World;
 use crate::world::EntityId;
 
 /// The motion domains `action` would take (longitudinal, lateral), and its element name.
@@ -87,6 +88,7 @@ fn strategy(
 /// the speed).
 pub(crate) fn hand_over(
     world: &mut World,
+    controllers: &mut ControllerTable,
     actor: EntityId,
     action: &PrivateAction,
     init: bool,
@@ -96,7 +98,7 @@ pub(crate) fn hand_over(
     let Some((lon, lat, kind)) = domains(action) else {
         return Ok(false);
     };
-    let Some(ctrl) = world.controllers.of(actor.index()) else {
+    let Some(ctrl) = controllers.of(actor.index()) else {
         return Ok(false);
     };
     let holder = (lon.then(|| ctrl.holder(true)).flatten())
@@ -110,7 +112,7 @@ pub(crate) fn hand_over(
         e.speed = v.clamp(-e.max_speed(), e.max_speed());
     }
     let entity = world.entity(actor).name.clone();
-    let ctrl = world.controllers.of_mut(actor.index());
+    let ctrl = controllers.of_mut(actor.index());
     let a = &mut ctrl.assigned[slot];
     let taken = match (s, a.instance.as_mut()) {
         (Some(s), Some(instance)) => instance.strategy(s),

@@ -26,7 +26,7 @@ use scenario::ControllerDomains;
 use super::command::Controller;
 use super::external::ExternalInput;
 use super::properties::{ControllerKind, ModelSettings, MotionDomains};
-use crate::runtime::lane_index::LaneIndex;
+use crate::store::lane_index::LaneIndex;
 use crate::world::ActiveDomains;
 
 /// One controller assigned to an entity.

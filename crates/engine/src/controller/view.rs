@@ -2,7 +2,7 @@
 //! entity's state (pose, road position, lane track, speed, performance, route, the driver
 //! inputs overridden by OverrideControllerValueAction), the road network, and the entities
 //! around it with their gaps along the lanes, from the step's [`LaneIndex`]
-//! (runtime/lane_index.rs).
+//! (store/lane_index.rs).
 //!
 //! Gaps are bumper to bumper along the lane (reference-line distance), to the nearest entity
 //! whose bounding box overlaps the lane, through lane sections, road links and junctions along
@@ -17,8 +17,8 @@ use std::sync::atomic::AtomicU32;
 use opendrive::{Direction, LaneHandle, Real, RoadNetwork, TrafficRule};
 
 use super::external::ExternalInput;
-use crate::runtime::lane_index::{LaneIndex, Neighbour};
 use crate::signals::Signals;
+use crate::store::lane_index::{LaneIndex, Neighbour};
 use crate::world::lanes::lane_shift;
 use crate::world::{Entity, EntityId};
 

@@ -11,21 +11,23 @@ use std::collections::BTreeMap;
 use std::sync::Arc;
 
 use opendrive::RoadNetwork;
-use scenario::{Action, Actors, EntityObject, Scenario, Trigger};
+use scenario::{Action, Actors, Scenario, Trigger};
 
-use super::world::World;
 use crate::actions::ActionTable;
-use crate::domain::{BoundingBox, Color, Position3d};
+use crate::controller::ControllerTable;
 use crate::error::Error;
+use crate::store::{entity, World};
 use crate::storyboard::{
     ActDesc, ActionDesc, ConditionDesc, ConditionEdge, ConditionGroupDesc, ConditionId, EventDesc,
     ManeuverDesc, ManeuverGroupDesc, Priority, StoryDesc, StoryboardDesc, TriggerDesc,
 };
-use crate::world::entity::{Entity, EntityId, EntityKind};
+use crate::world::entity::EntityId;
 
 /// What [`build`] produces.
 pub(crate) struct Built {
     pub world: World,
+    /// The user controllers of the scenario's ObjectControllers (engine module `controller`).
+    pub controllers: ControllerTable,
     pub desc: StoryboardDesc,
     pub actions: ActionTable,
     pub conditions: Vec<scenario::Condition>,
@@ -40,13 +42,13 @@ pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Bu
         .enumerate()
         .map(|(i, o)| entity(EntityId(i as u32), o))
         .collect::<Result<Vec<_>, _>>()?;
-    let trailers = super::trailer::from_definitions(scenario, &mut entities, entity)?;
+    let trailers = crate::store::trailer::from_definitions(scenario, &mut entities, entity)?;
     let mut world = World::new(network, entities);
     world.trailers = trailers;
-    super::selection::check_multiplicity(scenario)?;
-    super::selection::check_actor_kinds(scenario)?;
+    crate::store::selection::check_multiplicity(scenario)?;
+    crate::store::selection::check_actor_kinds(scenario)?;
     super::external::place_external_objects(scenario, &mut world)?;
-    world.selections = super::selection::Selections::new(scenario);
+    world.selections = crate::store::selection::Selections::new(scenario);
     world.parameters = scenario
         .parameter_declarations
         .iter()
@@ -82,75 +84,18 @@ pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Bu
     let desc = b.storyboard()?;
     let (actions, conditions) = (b.actions, b.conditions);
     world.selections.set_actors(b.selection_actors);
-    crate::controller::set_up(
+    let controllers = crate::controller::set_up(
         scenario,
         &mut world,
         actions.slots.iter().map(|slot| &slot.action),
     )?;
     Ok(Built {
         world,
+        controllers,
         desc,
         actions,
         conditions,
     })
-}
-
-fn bounding_box(
-    bb: &scenario::BoundingBox,
-    pos: &scenario::SourcePos,
-) -> Result<BoundingBox, Error> {
-    let [x, y, z] = bb.center;
-    BoundingBox::new(Position3d::new(x, y, z), bb.length, bb.width, bb.height)
-        .map_err(|e| Error::at("a valid BoundingBox", e.to_string(), pos))
-}
-
-/// The entity of scenario object `o` (also the template of spawned vehicles).
-pub(crate) fn entity(id: EntityId, o: &scenario::ScenarioObject) -> Result<Entity, Error> {
-    let color_of = |props: &scenario::Properties| {
-        props
-            .properties
-            .iter()
-            .find(|(k, _)| k.eq_ignore_ascii_case("color") || k.eq_ignore_ascii_case("colour"))
-            .and_then(|(_, v)| Color::from_name(v))
-    };
-    let zero = scenario::BoundingBox {
-        center: [0.0; 3],
-        width: 0.0,
-        length: 0.0,
-        height: 0.0,
-    };
-    let (kind, bb) = match &o.entity_object {
-        EntityObject::Vehicle(v) => (EntityKind::Vehicle, &v.bounding_box),
-        EntityObject::Pedestrian(p) => (EntityKind::Pedestrian, &p.bounding_box),
-        EntityObject::MiscObject(m) => (EntityKind::MiscObject, &m.bounding_box),
-        _ => (EntityKind::External, &zero),
-    };
-    let mut e = Entity::new(id, &o.name, kind, bounding_box(bb, &o.pos)?);
-    match &o.entity_object {
-        EntityObject::Vehicle(v) => {
-            e.vehicle_category = Some(v.vehicle_category);
-            e.performance = Some(v.performance);
-            e.max_curvature = crate::trajectory::max_curvature(&v.axles);
-            e.axles = Some(v.axles.clone());
-            e.mass = v.mass;
-            e.role = v.role;
-            e.model3d.clone_from(&v.model3d);
-            e.color = color_of(&v.properties);
-        }
-        EntityObject::Pedestrian(p) => {
-            e.pedestrian_category = Some(p.pedestrian_category);
-            e.role = p.role;
-            e.model3d.clone_from(&p.model3d);
-            e.color = color_of(&p.properties);
-        }
-        EntityObject::MiscObject(m) => {
-            e.misc_object_category = Some(m.misc_object_category);
-            e.model3d.clone_from(&m.model3d);
-            e.color = color_of(&m.properties);
-        }
-        _ => {}
-    }
-    Ok(e)
 }
 
 struct Builder<'a> {
@@ -160,7 +105,10 @@ struct Builder<'a> {
     conditions: Vec<scenario::Condition>,
     /// Actions whose ManeuverGroup actors name a selection or select triggering entities,
     /// worked out at each start.
-    selection_actors: Vec<(crate::storyboard::ActionId, super::selection::ActorSpec)>,
+    selection_actors: Vec<(
+        crate::storyboard::ActionId,
+        crate::store::selection::ActorSpec,
+    )>,
 }
 
 impl Builder<'_> {
@@ -284,7 +232,7 @@ impl Builder<'_> {
 
     /// Notes action `id` for actors worked out at its start: when its ManeuverGroup names a
     /// selection, or selects the triggering entities of the Act's `start_trigger`
-    /// (runtime/selection.rs).
+    /// (store/selection.rs).
     fn note_runtime_actors(
         &mut self,
         id: crate::storyboard::ActionId,
@@ -300,7 +248,7 @@ impl Builder<'_> {
                 .map(|g| {
                     g.conditions
                         .iter()
-                        .map(|c| super::selection::ConditionRef {
+                        .map(|c| crate::store::selection::ConditionRef {
                             pos: c.pos.clone(),
                             delay: c.delay,
                         })
@@ -309,7 +257,7 @@ impl Builder<'_> {
                 .collect()
         });
         if triggering.is_some() || refs.iter().any(|r| selections.iter().any(|s| &s.name == r)) {
-            let spec = super::selection::ActorSpec {
+            let spec = crate::store::selection::ActorSpec {
                 refs: refs.to_vec(),
                 triggering,
             };

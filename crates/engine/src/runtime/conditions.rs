@@ -12,9 +12,9 @@
 use std::cell::RefCell;
 
 use super::trigger_view::TriggerView;
-use super::world::{ConditionWorld, World};
 use crate::condition::{evaluate, ConditionErrorKind, ConditionStates};
 use crate::output::EventRecord;
+use crate::store::{ConditionWorld, World};
 use crate::storyboard::{ConditionId, ConditionSource, StateView};
 
 /// The [`ConditionSource`] of one step.

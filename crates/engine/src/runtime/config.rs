@@ -1,5 +1,6 @@
 //! The run's settings in one place: step length, duration and the hard cap on simulated time.
 
+pub use crate::controller::TrafficModel;
 use crate::error::{Error, ErrorKind};
 
 /// Default step length (s), the reference runs' fixed time step.
@@ -8,16 +9,6 @@ pub const DEFAULT_DT: f64 = 0.05;
 pub const DEFAULT_MAX_TIME: f64 = 3600.0;
 /// Default seed of the run's random streams.
 pub const DEFAULT_SEED: u64 = 1;
-
-/// A controller model for spawned traffic ([`EngineConfig::traffic_model`]) or the scenario's
-/// vehicles ([`EngineConfig::vehicle_model`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum TrafficModel {
-    /// `idm`: the Intelligent Driver Model (longitudinal), the model's default parameters.
-    Idm,
-    /// `mobil`: IDM and MOBIL lane changes (both domains), the models' default parameters.
-    Mobil,
-}
 
 /// Settings of one run.
 #[derive(Debug, Clone, Copy, PartialEq)]

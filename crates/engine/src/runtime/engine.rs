@@ -11,13 +11,15 @@ use scenario::Scenario;
 
 use super::build::build;
 use super::config::EngineConfig;
-use super::world::World;
 use crate::actions::{stop_domain, ActionTable, Domain};
 use crate::condition::ConditionStates;
+use crate::controller::ControllerTable;
 use crate::error::{Error, ErrorKind};
 use crate::output::EventRecord;
 use crate::snapshot::ScenarioSource;
+use crate::store::World;
 use crate::storyboard::Storyboard;
+use crate::traffic::Traffic;
 
 /// Why a run ended. [`StopReason::name`] is its one name in every output (the batch
 /// results' `stop_reason` column, Python's `Simulation.step`/`run`).
@@ -91,6 +93,10 @@ pub struct Engine {
     pub(super) world: RefCell<World>,
     pub(super) storyboard: Storyboard,
     pub(super) actions: ActionTable,
+    /// The user controllers of every entity: the controllers stage's table.
+    pub(super) controllers: ControllerTable,
+    /// The traffic actions at work: the traffic stage's table.
+    pub(super) traffic: Traffic,
     pub(super) conditions: Vec<scenario::Condition>,
     pub(super) condition_states: ConditionStates,
     pub(super) reported: Vec<bool>,
@@ -123,21 +129,28 @@ impl Engine {
         crate::position::check_positions(scenario, &network)
             .map_err(|e| Error::new(ErrorKind::Position(e)))?;
         let mut built = build(scenario, network)?;
-        built.world.traffic.seed = config.seed;
-        built.world.traffic.model = config.traffic_model;
+        built.world.seed = config.seed;
+        let traffic = Traffic::new(config.traffic_model);
         built
             .world
             .signals
             .set_stop_at_red_lights(config.stop_at_red_lights);
         let mut host_events = Vec::new();
         if let Some(model) = config.vehicle_model {
-            crate::traffic::equip_scenario_vehicles(&mut built.world, model, &mut host_events)?;
+            crate::traffic::equip_scenario_vehicles(
+                &mut built.world,
+                &mut built.controllers,
+                model,
+                &mut host_events,
+            )?;
         }
         let storyboard = Storyboard::new(&built.desc)?;
         Ok(Engine {
             world: RefCell::new(built.world),
             storyboard,
             actions: built.actions,
+            controllers: built.controllers,
+            traffic,
             reported: vec![false; built.conditions.len()],
             conditions: built.conditions,
             condition_states: ConditionStates::new(),
@@ -311,6 +324,7 @@ impl Engine {
         };
         let taken = crate::controller::assign(
             world,
+            &mut self.controllers,
             id,
             &controller,
             None,
@@ -350,7 +364,7 @@ impl Engine {
         let id = world
             .id(name)
             .ok_or_else(|| not_external(format!("no entity named '{name}'")))?;
-        let ctrl = world.controllers.of_mut(id.index());
+        let ctrl = self.controllers.of_mut(id.index());
         let external = ctrl
             .assigned
             .iter()

@@ -11,9 +11,9 @@
 use opendrive::{normalize_angle, Object, Pose, RoadNetwork};
 use scenario::{EntityObject, Scenario};
 
-use super::world::World;
 use crate::domain::{BoundingBox, Position3d};
 use crate::error::Error;
+use crate::store::World;
 
 /// Places every ExternalObjectReference entity of `scenario` at its road-network object.
 pub(crate) fn place_external_objects(scenario: &Scenario, world: &mut World) -> Result<(), Error> {

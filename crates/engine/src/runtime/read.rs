@@ -53,8 +53,8 @@ impl Engine {
     /// The AnimationAction last applied to animation `name` of entity `entity` (the
     /// component, pedestrian motion, file path or user-defined type, as in the event log).
     pub fn animation(&self, entity: &str, name: &str) -> Option<AnimationAction> {
-        let world = self.world();
-        world.animation(world.id(entity)?, name).cloned()
+        let id = self.world().id(entity)?;
+        self.actions.appearance.animation(id, name).cloned()
     }
 
     /// The environment in force (EnvironmentAction: time of day, weather, road condition).

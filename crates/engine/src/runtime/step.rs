@@ -19,12 +19,14 @@ use std::time::Instant;
 use super::conditions::Conditions;
 use super::engine::{Engine, StopReason};
 use super::trigger_view::TriggerView;
-use super::world::World;
 use crate::actions::{ActionTable, Host};
+use crate::controller::ControllerTable;
 use crate::error::{Error, ErrorKind};
 use crate::output::{EventRecord, EventSink, Frame, FrameSink, SinkError};
 use crate::snapshot::ScenarioSource;
+use crate::store::World;
 use crate::storyboard::{TransitionRecord, TransitionSink};
+use crate::traffic::{Tables, Traffic};
 
 /// The step's event records: transitions, action records and traffic notes, in order.
 type Log = RefCell<Vec<EventRecord>>;
@@ -154,6 +156,8 @@ impl Engine {
         let mut host = HostCell {
             table: &mut self.actions,
             world: &self.world,
+            controllers: &mut self.controllers,
+            traffic: &mut self.traffic,
             log,
             errors: &mut errors,
             view: &view,
@@ -176,7 +180,7 @@ impl Engine {
             e.velocity.translational = e.travel_velocity();
         }
         // The trailer stage sets its trailers' own velocity.
-        super::trailer::follow(world, 0.0);
+        crate::store::trailer::follow(world, 0.0);
         super::finite::check(&world.entities, time).map_err(|(_, e)| e)?;
         let clock = Instant::now();
         frames
@@ -198,14 +202,18 @@ impl Engine {
     }
 
     /// Stage 3: user controllers give their commands, then every entity moves
-    /// (controller/stage.rs); towed vehicles follow their tows' hitches (runtime/trailer.rs);
+    /// (controller/stage.rs); towed vehicles follow their tows' hitches (store/trailer.rs);
     /// traffic sources, sinks and swarms spawn and remove (traffic).
     fn controllers(&mut self, time: f64, dt: f64) {
         let clock = Instant::now();
         let world = self.world.get_mut();
-        crate::controller::stage::step(world, time, dt);
-        super::trailer::follow(world, dt);
-        crate::traffic::step(world, dt);
+        crate::controller::stage::step(world, &mut self.controllers, time, dt);
+        crate::store::trailer::follow(world, dt);
+        let mut tables = Tables {
+            traffic: &mut self.traffic,
+            controllers: &mut self.controllers,
+        };
+        crate::traffic::step(world, &mut tables, dt);
         self.counters.controllers += clock.elapsed();
     }
 
@@ -235,7 +243,7 @@ impl Engine {
         let clock = Instant::now();
         let world = self.world.get_mut();
         let mut log = log.into_inner();
-        log.append(&mut world.traffic.events);
+        log.append(&mut self.traffic.events);
         if let Err((entity, e)) = super::finite::check(&world.entities, time) {
             log.push(EventRecord::error(time, &entity, &e));
             emit(&log, events)?;
@@ -289,6 +297,8 @@ fn output_error(what: &'static str) -> impl Fn(SinkError) -> Error {
 struct HostCell<'a> {
     table: &'a mut ActionTable,
     world: &'a RefCell<World>,
+    controllers: &'a mut ControllerTable,
+    traffic: &'a mut Traffic,
     log: &'a Log,
     errors: &'a mut Vec<Error>,
     view: &'a RefCell<TriggerView>,
@@ -307,6 +317,8 @@ impl HostCell<'_> {
         let mut host = Host {
             table: self.table,
             world: &mut world,
+            controllers: self.controllers,
+            traffic: self.traffic,
             events: &mut events,
             errors: self.errors,
             story: self.story,

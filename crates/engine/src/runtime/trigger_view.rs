@@ -34,7 +34,7 @@
 //! from then on each condition evaluation swaps the copy in and out (a pointer swap), so the
 //! conditions read the step-start entities while the actions keep changing the live ones.
 
-use super::world::World;
+use crate::store::World;
 use crate::world::entity::Entity;
 
 /// The state conditions read during one step's trigger evaluation; make a new one per step.

@@ -14,12 +14,11 @@ use opendrive::Real;
 use rand::Rng;
 use scenario::{TrafficDistributionEntry, TrafficMix};
 
-use super::controllers::equip;
-use super::spawn::{enter, lane_point, remove, template};
-use super::state::Running;
+use super::spawn::{add, lane_point, remove};
+use super::state::{Running, Tables};
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
 use crate::error::Error;
-use crate::runtime::world::World;
+use crate::store::World;
 
 /// Where an area's vehicles may be.
 #[derive(Debug, Clone)]
@@ -113,7 +112,12 @@ impl Area {
     }
 
     /// One step; `false` once a one-off area has spawned all its vehicles.
-    pub(crate) fn step(&mut self, world: &mut World, run: &mut Running) -> Result<bool, Error> {
+    pub(crate) fn step(
+        &mut self,
+        world: &mut World,
+        tables: &mut Tables<'_>,
+        run: &mut Running,
+    ) -> Result<bool, Error> {
         if self.continuous {
             let outside: Vec<_> = run
                 .members
@@ -129,7 +133,7 @@ impl Area {
                 })
                 .collect();
             for id in outside {
-                remove(world, &run.name, id);
+                remove(world, tables.traffic, &run.name, id);
             }
             run.members.retain(|&id| world.entity(id).placed);
         } else if self.made >= self.count {
@@ -150,11 +154,7 @@ impl Area {
             if !self.contains(pose.x, pose.y, at) {
                 continue;
             }
-            let name = run.next_name(world);
-            let (e, templates) = template(&mut run.rng, world.traffic.seed, &self.mix, name)?;
-            let id = enter(world, &run.name, e, pose, DEFAULT_SPEED);
-            equip(world, id, &self.mix, &templates, &run.name)?;
-            run.members.push(id);
+            add(world, tables, run, &self.mix, pose, DEFAULT_SPEED)?;
             self.made += 1;
             break;
         }

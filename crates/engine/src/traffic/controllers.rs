@@ -21,11 +21,11 @@
 use scenario::{Controller, ControllerDomains, ObjectController, Properties, TrafficMix};
 
 use super::random::{stream, weighted};
-use crate::controller::{assign, Origin};
+use super::state::Tables;
+use crate::controller::{assign, ControllerTable, Origin, TrafficModel};
 use crate::error::Error;
 use crate::output::EventRecord;
-use crate::runtime::world::World;
-use crate::runtime::TrafficModel;
+use crate::store::World;
 use crate::world::entity::{EntityId, EntityKind};
 
 /// Every domain a controller is defined for.
@@ -58,6 +58,7 @@ fn option_controller(model: TrafficModel, prefix: &str, option: &str) -> Control
 /// Gives the vehicle `id`, just spawned by traffic action `element` from `mix` (template ObjectControllers `templates`), its controller (module doc).
 pub(crate) fn equip(
     world: &mut World,
+    tables: &mut Tables<'_>,
     id: EntityId,
     mix: &TrafficMix,
     templates: &[ObjectController],
@@ -69,7 +70,7 @@ pub(crate) fn equip(
         .map_or(&[][..], |d| &d.controllers[..]);
     let chosen: Vec<(Controller, Option<String>)> = if !distribution.is_empty() {
         let name = format!("{}/controller", world.entity(id).name);
-        let mut rng = stream(world.traffic.seed, &name);
+        let mut rng = stream(world.seed, &name);
         weighted(&mut rng, distribution.iter().map(|(_, w)| *w))
             .map(|i| (distribution[i].0.clone(), None))
             .into_iter()
@@ -79,7 +80,7 @@ pub(crate) fn equip(
             .iter()
             .map(|oc| (oc.controller.clone(), oc.name.clone()))
             .collect()
-    } else if let Some(model) = world.traffic.model {
+    } else if let Some(model) = tables.traffic.model {
         vec![(
             option_controller(model, "traffic", "run option traffic_model"),
             None,
@@ -97,6 +98,7 @@ pub(crate) fn equip(
         };
         assign(
             world,
+            tables.controllers,
             id,
             controller,
             object.as_deref(),
@@ -105,7 +107,7 @@ pub(crate) fn equip(
             &mut events,
         )?;
     }
-    world.traffic.events.append(&mut events);
+    tables.traffic.events.append(&mut events);
     Ok(())
 }
 
@@ -114,6 +116,7 @@ pub(crate) fn equip(
 /// defined for; the records go to `events`.
 pub(crate) fn equip_scenario_vehicles(
     world: &mut World,
+    controllers: &mut ControllerTable,
     model: TrafficModel,
     events: &mut Vec<EventRecord>,
 ) -> Result<(), Error> {
@@ -123,8 +126,7 @@ pub(crate) fn equip_scenario_vehicles(
         .iter()
         .filter(|e| e.kind == EntityKind::Vehicle)
         .filter(|e| {
-            world
-                .controllers
+            controllers
                 .of(e.id.index())
                 .map_or(true, |c| c.assigned.is_empty())
         })
@@ -136,7 +138,16 @@ pub(crate) fn equip_scenario_vehicles(
             time: 0.0,
             pos: &controller.pos,
         };
-        assign(world, id, &controller, None, &ALL, &origin, events)?;
+        assign(
+            world,
+            controllers,
+            id,
+            &controller,
+            None,
+            &ALL,
+            &origin,
+            events,
+        )?;
     }
     Ok(())
 }

@@ -22,4 +22,4 @@ mod swarm;
 
 pub(crate) use controllers::equip_scenario_vehicles;
 pub(crate) use spawn::leave;
-pub(crate) use state::{start, step, supports, Traffic};
+pub(crate) use state::{start, step, supports, Tables, Traffic};

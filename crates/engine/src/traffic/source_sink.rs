@@ -11,12 +11,11 @@
 use opendrive::Real;
 use scenario::TrafficMix;
 
-use super::controllers::equip;
-use super::spawn::{enter, in_disc, lane_point, remove, template};
-use super::state::Running;
+use super::spawn::{add, in_disc, lane_point, remove};
+use super::state::{Running, Tables, Traffic};
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
 use crate::error::Error;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::EntityKind;
 
 /// Slack on the vehicles owed by a source (a count).
@@ -56,6 +55,7 @@ impl Source {
     pub(crate) fn step(
         &mut self,
         world: &mut World,
+        tables: &mut Tables<'_>,
         run: &mut Running,
         dt: Real,
     ) -> Result<(), Error> {
@@ -73,11 +73,7 @@ impl Source {
                 break;
             };
             self.due -= 1.0;
-            let name = run.next_name(world);
-            let (e, templates) = template(&mut run.rng, world.traffic.seed, &self.mix, name)?;
-            let id = enter(world, &run.name, e, pose, self.speed);
-            equip(world, id, &self.mix, &templates, &run.name)?;
-            run.members.push(id);
+            add(world, tables, run, &self.mix, pose, self.speed)?;
         }
         Ok(())
     }
@@ -104,7 +100,7 @@ impl Sink {
     }
 
     /// One step of `dt` s.
-    pub(crate) fn step(&mut self, world: &mut World, name: &str, dt: Real) {
+    pub(crate) fn step(&mut self, world: &mut World, traffic: &mut Traffic, name: &str, dt: Real) {
         let inside = world
             .entities()
             .iter()
@@ -122,7 +118,7 @@ impl Sink {
             }
         };
         for id in inside.into_iter().take(take) {
-            remove(world, name, id);
+            remove(world, traffic, name, id);
         }
     }
 }

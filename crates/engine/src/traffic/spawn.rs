@@ -21,10 +21,12 @@ use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use scenario::{ObjectController, Performance, TrafficMix, VehicleCategory};
 
+use super::controllers::equip;
 use super::random::{stream, weighted};
+use super::state::{Running, Tables, Traffic};
 use crate::domain::{BoundingBox, Position3d};
 use crate::error::Error;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::{Entity, EntityId, EntityKind};
 
 /// Least distance (m) between a new vehicle's reference point and any placed entity's.
@@ -82,7 +84,7 @@ fn body(
     {
         if let Some(i) = weighted(rng, entry.entities.iter().map(|(_, w)| *w)) {
             let template = &entry.entities[i].0;
-            let mut e = crate::runtime::build::entity(id, template)?;
+            let mut e = crate::store::entity(id, template)?;
             e.name = name;
             return Ok((e, template.object_controllers.clone()));
         }
@@ -140,8 +142,9 @@ pub(crate) fn lane_point(world: &World, x: Real, y: Real) -> Option<Pose> {
 
 /// Adds `e` at `pose` with `speed`, on the lane there, for traffic action `element` (logged);
 /// returns its id.
-pub(crate) fn enter(
+fn enter(
     world: &mut World,
+    traffic: &mut Traffic,
     element: &str,
     e: Entity,
     pose: Pose,
@@ -151,7 +154,7 @@ pub(crate) fn enter(
         Some(role) => format!("spawned (role {})", role.as_str()),
         None => "spawned".to_owned(),
     };
-    world.traffic.note(element, &e.name, &change);
+    traffic.note(element, &e.name, &change);
     let id = world.spawn(e);
     let found = world.network.locate(pose.x, pose.y, Some(pose.h));
     world.place_resolved(id, pose, found);
@@ -160,10 +163,28 @@ pub(crate) fn enter(
     id
 }
 
+/// Adds the next vehicle of `run` at `pose` with `speed`: its template drawn from `mix`, on
+/// the lane there, with its controller (traffic/controllers.rs), one of the run's members.
+pub(crate) fn add(
+    world: &mut World,
+    tables: &mut Tables<'_>,
+    run: &mut Running,
+    mix: &TrafficMix,
+    pose: Pose,
+    speed: Real,
+) -> Result<(), Error> {
+    let name = run.next_name(world);
+    let (e, templates) = template(&mut run.rng, world.seed, mix, name)?;
+    let id = enter(world, tables.traffic, &run.name, e, pose, speed);
+    equip(world, tables, id, mix, &templates, &run.name)?;
+    run.members.push(id);
+    Ok(())
+}
+
 /// Takes entity `id` out of the scenario for traffic action `element` (logged).
-pub(crate) fn remove(world: &mut World, element: &str, id: EntityId) {
+pub(crate) fn remove(world: &mut World, traffic: &mut Traffic, element: &str, id: EntityId) {
     let name = world.entity(id).name.clone();
-    world.traffic.note(element, &name, "removed");
+    traffic.note(element, &name, "removed");
     leave(world, id);
 }
 

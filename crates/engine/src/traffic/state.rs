@@ -17,20 +17,19 @@ use super::area::{Area, Shape};
 use super::random::stream;
 use super::source_sink::{Sink, Source};
 use super::swarm::Swarm;
+use crate::controller::{ControllerTable, TrafficModel};
 use crate::error::{Error, ErrorKind};
 use crate::output::EventRecord;
 use crate::position::resolve;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::EntityId;
 
-/// The run's seed and the traffic actions at work.
+/// The traffic actions at work: the traffic stage's table, which the `Engine` keeps.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Traffic {
-    /// The run's seed ([`crate::EngineConfig::seed`]).
-    pub seed: u64,
     /// The controller model spawned vehicles get without one from the scenario
     /// ([`crate::EngineConfig::traffic_model`]).
-    pub model: Option<crate::runtime::TrafficModel>,
+    pub model: Option<TrafficModel>,
     running: Vec<Running>,
     /// Vehicles spawned and removed in this step, for the event log (step.rs drains them).
     pub events: Vec<EventRecord>,
@@ -38,7 +37,25 @@ pub(crate) struct Traffic {
     frame_time: f64,
 }
 
+/// The tables the traffic stage changes beside the world, handed to it by the `Engine` that
+/// keeps them: its own, and the user controllers it gives the vehicles it spawns.
+pub(crate) struct Tables<'a> {
+    /// The traffic actions at work, their notes for the event log and the run option.
+    pub traffic: &'a mut Traffic,
+    /// The user controllers of every entity (engine module `controller`).
+    pub controllers: &'a mut ControllerTable,
+}
+
 impl Traffic {
+    /// No traffic action at work yet; spawned vehicles without a controller of their own get
+    /// `model` ([`EngineConfig::traffic_model`](crate::EngineConfig::traffic_model)).
+    pub(crate) fn new(model: Option<TrafficModel>) -> Self {
+        Traffic {
+            model,
+            ..Traffic::default()
+        }
+    }
+
     /// Records that `entity` underwent `change` (spawned, removed) by traffic action `element`.
     pub(crate) fn note(&mut self, element: &str, entity: &str, change: &str) {
         self.events.push(EventRecord::Entity {
@@ -102,7 +119,8 @@ pub(crate) fn supports(action: &TrafficAction) -> bool {
 
 /// Starts a traffic action called `action_name` (its `trafficName` if given).
 pub(crate) fn start(
-    world: &mut World,
+    world: &World,
+    traffic: &mut Traffic,
     action_name: &str,
     traffic_name: Option<&str>,
     action: &TrafficAction,
@@ -130,7 +148,7 @@ pub(crate) fn start(
                     pos,
                 ));
             };
-            world.traffic.running.retain(|r| r.name != target);
+            traffic.running.retain(|r| r.name != target);
             return Ok(());
         }
         TrafficAction::Swarm { .. } => Kind::Swarm(Box::new(Swarm::new(action, pos)?)),
@@ -193,8 +211,8 @@ pub(crate) fn start(
         }
         _ => return Err(Error::unsupported("this TrafficAction", pos)),
     };
-    let rng = stream(world.traffic.seed, &name);
-    world.traffic.running.push(Running {
+    let rng = stream(world.seed, &name);
+    traffic.running.push(Running {
         name,
         rng,
         spawned: 0,
@@ -207,20 +225,20 @@ pub(crate) fn start(
 
 /// The traffic stage: every running action spawns or removes over one step of `dt` s. An
 /// action's spawn failures (a vehicle template that does not build) end that action.
-pub(crate) fn step(world: &mut World, dt: f64) {
-    world.traffic.frame_time = world.time + dt;
-    let mut running = std::mem::take(&mut world.traffic.running);
+pub(crate) fn step(world: &mut World, tables: &mut Tables<'_>, dt: f64) {
+    tables.traffic.frame_time = world.time + dt;
+    let mut running = std::mem::take(&mut tables.traffic.running);
     running.retain_mut(|r| {
         r.members.retain(|&id| world.entity(id).placed);
         let mut kind = r.kind.clone();
         let result = match &mut kind {
-            Kind::Swarm(s) => s.step(world, r),
-            Kind::Source(s) => s.step(world, r, dt),
+            Kind::Swarm(s) => s.step(world, tables, r),
+            Kind::Source(s) => s.step(world, tables, r, dt),
             Kind::Sink(s) => {
-                s.step(world, &r.name, dt);
+                s.step(world, tables.traffic, &r.name, dt);
                 Ok(())
             }
-            Kind::Area(a) => a.step(world, r).map(|more| {
+            Kind::Area(a) => a.step(world, tables, r).map(|more| {
                 if !more {
                     r.done = true;
                 }
@@ -229,5 +247,5 @@ pub(crate) fn step(world: &mut World, dt: f64) {
         r.kind = kind;
         result.is_ok() && !r.done
     });
-    world.traffic.running = running;
+    tables.traffic.running = running;
 }

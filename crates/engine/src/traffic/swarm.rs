@@ -19,11 +19,10 @@ use opendrive::Real;
 use rand::Rng;
 use scenario::{SourcePos, TrafficAction, TrafficMix};
 
-use super::controllers::equip;
-use super::spawn::{enter, lane_point, remove, template};
-use super::state::Running;
+use super::spawn::{add, lane_point, remove};
+use super::state::{Running, Tables};
 use crate::error::Error;
-use crate::runtime::world::World;
+use crate::store::World;
 
 /// Random points tried per step for a new vehicle.
 pub(crate) const ATTEMPTS: usize = 20;
@@ -110,7 +109,12 @@ impl Swarm {
     }
 
     /// One step: remove the swarm's vehicles outside the ellipse, then add one if short.
-    pub(crate) fn step(&mut self, world: &mut World, run: &mut Running) -> Result<(), Error> {
+    pub(crate) fn step(
+        &mut self,
+        world: &mut World,
+        tables: &mut Tables<'_>,
+        run: &mut Running,
+    ) -> Result<(), Error> {
         let Some(central) = world.id(&self.central).map(|id| world.entity(id)) else {
             return Ok(());
         };
@@ -128,7 +132,7 @@ impl Swarm {
             })
             .collect::<Vec<_>>();
         for id in outside {
-            remove(world, &run.name, id);
+            remove(world, tables.traffic, &run.name, id);
         }
         run.members.retain(|&id| world.entity(id).placed);
         if run.members.len() >= self.count {
@@ -156,11 +160,7 @@ impl Swarm {
             }
             let (lo, hi) = self.speed;
             let speed = lo + (hi - lo) * run.rng.gen::<f64>();
-            let name = run.next_name(world);
-            let (e, templates) = template(&mut run.rng, world.traffic.seed, &self.mix, name)?;
-            let id = enter(world, &run.name, e, pose, speed);
-            equip(world, id, &self.mix, &templates, &run.name)?;
-            run.members.push(id);
+            add(world, tables, run, &self.mix, pose, speed)?;
             break;
         }
         Ok(())

@@ -3,7 +3,7 @@
 //! position, speed, velocity, acceleration, odometer, the bounding box and the
 //! OpenSCENARIO 2.0 §8.7 physical-object view of it.
 //!
-//! Entities live in the [`World`](crate::runtime::World)'s store, addressed by [`EntityId`].
+//! Entities live in the [`World`](crate::store::World)'s store, addressed by [`EntityId`].
 
 use std::collections::BTreeMap;
 
@@ -248,7 +248,7 @@ pub struct Entity {
     /// Lateral speed of the running lateral transition as a share of the speed (m of lateral
     /// motion per m travelled), at the end of the last step.
     pub(crate) lateral_slope: Real,
-    /// The trailer this vehicle tows now (§7.2.2.6; runtime/trailer.rs keeps it).
+    /// The trailer this vehicle tows now (§7.2.2.6; store/trailer.rs keeps it).
     pub trailer: Option<EntityId>,
     /// Driver inputs overridden by OverrideControllerValueAction (§7.7.2.5), recorded only.
     pub overrides: ControllerOverrides,

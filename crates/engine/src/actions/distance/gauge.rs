@@ -18,7 +18,7 @@ use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, SourcePo
 use crate::condition::{measured_distance, MeasureTarget};
 use crate::domain::BoundingBox;
 use crate::error::Error;
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::EntityId;
 
 /// The axis a distance action keeps its distance along.

@@ -41,8 +41,8 @@ use super::law::{spring, Limits};
 use crate::actions::Part;
 use crate::error::Error;
 use crate::position::lane_at;
-use crate::runtime::targets::entity_ref;
-use crate::runtime::world::World;
+use crate::store::targets::entity_ref;
+use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::{Blend, EntityId};
 

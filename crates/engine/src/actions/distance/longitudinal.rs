@@ -32,8 +32,8 @@ use super::law::{limit_jerk, speed_room, spring, Limits};
 use crate::actions::Part;
 use crate::controller::place_on_track;
 use crate::error::Error;
-use crate::runtime::targets::entity_ref;
-use crate::runtime::world::World;
+use crate::store::targets::entity_ref;
+use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
 

@@ -42,16 +42,13 @@ pub struct World {
     pub(crate) user_values: crate::condition::UserValueRegistry,
     /// Trailer mounting points and connections (§7.2.2.6).
     pub(crate) trailers: super::trailer::Trailers,
-    /// Running traffic actions and the run's seed (traffic).
-    pub(crate) traffic: crate::traffic::Traffic,
-    /// The scenario's entity selections, expanded when used (runtime/selection.rs).
+    /// The run's seed ([`EngineConfig::seed`](crate::EngineConfig::seed)): routeStrategy
+    /// `random` and spawned traffic draw from streams keyed by it (set by `Engine::new`).
+    pub(crate) seed: u64,
+    /// The scenario's entity selections, expanded when used (store/selection.rs).
     pub(crate) selections: super::selection::Selections,
-    /// Lights and animations set by AppearanceActions (actions/appearance.rs).
-    pub(crate) appearance: crate::actions::Appearances,
     /// Environment set by EnvironmentActions (actions/environment.rs).
     pub(crate) environment: crate::world::EnvironmentState,
-    /// The user controllers of each entity (engine module `controller`).
-    pub(crate) controllers: crate::controller::ControllerTable,
 }
 
 impl World {
@@ -73,11 +70,9 @@ impl World {
             monitors: BTreeMap::new(),
             user_values: crate::condition::UserValueRegistry::default(),
             trailers: super::trailer::Trailers::default(),
-            traffic: crate::traffic::Traffic::default(),
+            seed: 0,
             selections: super::selection::Selections::default(),
-            appearance: crate::actions::Appearances::default(),
             environment: crate::world::EnvironmentState::default(),
-            controllers: crate::controller::ControllerTable::default(),
         }
     }
 
@@ -253,7 +248,7 @@ impl EntityQuery for World {
     /// The run's seed for routeStrategy `random` ([`EngineConfig::seed`](crate::EngineConfig)).
     fn routing_options(&self) -> RoutingOptions {
         RoutingOptions {
-            seed: self.traffic.seed,
+            seed: self.seed,
             ..RoutingOptions::default()
         }
     }

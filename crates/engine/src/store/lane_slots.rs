@@ -1,4 +1,4 @@
-//! Two look-ups of the per-lane index (runtime/lane_index.rs) made cheap (issue 31): a dense
+//! Two look-ups of the per-lane index (store/lane_index.rs) made cheap (issue 31): a dense
 //! number for every lane of the network (OpenDRIVE 1.8 §11: a lane of one lane section), so the
 //! index keeps its lanes in a vector instead of a hash map; and the lateral borders of every
 //! lane of a road at s (§11.4 lane offset, §11.6 lane width), kept per road over the s-range

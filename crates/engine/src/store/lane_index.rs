@@ -27,7 +27,7 @@
 //! a step of n queries is O(n log n), not the O(n²) of comparing every pair. The index is
 //! rebuilt in place each step ([`LaneIndex::rebuild`]): its lanes are a vector by dense lane
 //! number and the lane borders are kept where the road's lanes are constant
-//! (runtime/lane_slots.rs), no road id is hashed, and the step allocates nothing once the
+//! (store/lane_slots.rs), no road id is hashed, and the step allocates nothing once the
 //! vectors have grown (issue 31).
 //!
 //! **Hints.** A search starts with the index of the first entry not before its start point
@@ -50,7 +50,7 @@ use crate::world::entity::{Entity, EntityId};
 /// Overlap (m) of a box's t-range with a lane's borders below which the box is not in the lane
 /// (a box touching the lane marking is not in the next lane).
 const LANE_OVERLAP: Real = 1e-3;
-/// A located point farther than this (m) from every lane is off the road (runtime/world.rs
+/// A located point farther than this (m) from every lane is off the road (store/world.rs
 /// uses the same for lane tracks).
 const ON_ROAD: Real = 0.5;
 /// Most lane sections a query walks through (short junction roads, loops).
@@ -525,7 +525,7 @@ impl LaneIndex {
 mod tests {
     use super::*;
     use crate::domain::{BoundingBox, Vector3};
-    use crate::runtime::world::World;
+    use crate::store::World;
     use crate::world::entity::EntityKind;
 
     const EPS: Real = 1e-9;
