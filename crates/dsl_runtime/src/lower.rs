@@ -10,6 +10,7 @@
 //! | `emit e` (a phase) | in its Act, a ManeuverGroup `PATH/emit` whose Event `PATH/emit e` runs a CustomCommandAction (type `emit`, content `e`): one `customCommand` line in the event log per emission |
 //! | `call m(a, b)` (a phase) | likewise a group `PATH/call` whose Event `PATH/call m(a, b)` runs a CustomCommandAction (type `call`, content `m(a, b)`, the arguments as JSON values): the host runs m then (`resolve::call`) |
 //! | `on c: emit e` / `call m(…)` (the i-th `on` of the scenario) | an Act `on.i` from the start until the root phase's end, with the same groups whose Events start at each occurrence of c (maximumExecutionCount unbounded) |
+//! | what actors do when a phase ends (`avoid_collisions(true)`'s controller deactivated) | an Act `PATH/end` whose StartTrigger is the phase's end |
 //! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step) |
 //! | a plan over the roads of a route through points (`map.create_route`) | Init: each vehicle with a road of the plan ahead of it an AssignRouteAction over them (a Waypoint where it starts, one mid-way along each later road, in its lane) |
 //! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
@@ -140,6 +141,20 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             stop_trigger: trigger_of(&ph.end),
             pos: pos.clone(),
         });
+        // What the actors do when the phase ends: an Act that starts then (none for a phase
+        // that never ends).
+        if !ph.after.is_empty() {
+            if let Some(trigger) = trigger_of(&ph.end) {
+                let path = format!("{}/end", ph.path);
+                acts.push(Act {
+                    maneuver_groups: actor_groups(&path, &ph.after, &pos),
+                    name: path,
+                    start_trigger: Some(trigger),
+                    stop_trigger: None,
+                    pos: pos.clone(),
+                });
+            }
+        }
         // What goes on after the phase: an Act from its start to the end of the run (a later
         // action of the actor in the same domain replaces it in the engine).
         if !ph.persist.is_empty() {

@@ -33,6 +33,7 @@ impl Planner<'_> {
         len: Option<f64>,
         out: &mut Vec<Planned>,
         persist: &mut Vec<Planned>,
+        after: &mut Vec<Planned>,
     ) -> Result<Option<When>, Error> {
         // Every action of the standard library is planned; one the program declares is not.
         if inv.kind == Action::Other {
@@ -67,19 +68,20 @@ impl Planner<'_> {
                 },
                 _ => None,
             };
-            // After a gap action the engine's controller moves the actor: the plan knows no
-            // track to start a phase at a time from.
+            // After a gap action or avoid_collisions(true) the engine's controller moves the
+            // actor: the plan knows no track to start a phase at a time from.
             if let (Some(t), Some(since)) = (t0, self.engine_moved.get(target)) {
                 return Err(p.site.err(
                     K::Unsatisfiable,
                     format!(
-                        "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action{} from which the engine's distance controller moves `{target}`",
+                        "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action or avoid_collisions(true){} from which the engine's controller moves `{target}`",
                         since.map_or(String::new(), |s| format!(" started at {s:.2} s"))
                     ),
                 ));
             }
             check_keeps(mods, step)?;
             check_orientation(mods)?;
+            self.check_avoid_collisions(inv, mods, target)?;
             // keep_position() in a later phase: the vehicle must stand when it starts.
             if let Some(k) = mods.iter().find(|m| m.kind == ModKind::KeepPosition) {
                 let v = match t0 {
@@ -543,6 +545,7 @@ impl Planner<'_> {
                     }
                 }
             }
+            self.plan_avoid_collisions(mods, target, t0, &mut name, out, after)?;
             // The routes, against the motion just planned.
             let te = match (t0, end, len) {
                 (Some(a), Some(b), _) if b > a => Some(b),

@@ -49,6 +49,7 @@
 //! | `planner` | the planner's state: entities, tracks, phases planned so far |
 //! | `motion` | speed profiles, modifier values, lane targets |
 //! | `events` | conditions and events as triggers in their event context |
+//! | `car_following` | `avoid_collisions(true)`: the engine's IDM car following for the phase |
 //! | `action_args` | a §8.8 action's `rate_profile`, `rate_peak`, `duration` and the dynamics they give |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
@@ -69,6 +70,7 @@ use crate::road::PlanRoad;
 use crate::track::Track;
 
 mod action_args;
+mod car_following;
 mod checks;
 mod events;
 mod gap_actions;

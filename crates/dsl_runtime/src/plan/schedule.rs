@@ -33,6 +33,7 @@ impl Planner<'_> {
             Kind::Invoke(_) | Kind::Wait => {
                 let mut actions = Vec::new();
                 let mut persist = Vec::new();
+                let mut after = Vec::new();
                 let mut derived = None;
                 if let Kind::Invoke(inv) = &p.kind {
                     let cap = own.as_ref().or(inherit.as_ref()).and_then(When::time);
@@ -47,6 +48,7 @@ impl Planner<'_> {
                         len,
                         &mut actions,
                         &mut persist,
+                        &mut after,
                     )?;
                 }
                 let end = match (own, derived, inherit) {
@@ -72,6 +74,7 @@ impl Planner<'_> {
                     end: end.clone(),
                     actions,
                     persist,
+                    after,
                     hold: !instant,
                     command: None,
                 });
@@ -227,6 +230,7 @@ impl Planner<'_> {
             end: end.clone(),
             actions: Vec::new(),
             persist: Vec::new(),
+            after: Vec::new(),
             hold: true,
             command: None,
         });
@@ -243,6 +247,7 @@ impl Planner<'_> {
             end: When::Never,
             actions: Vec::new(),
             persist: Vec::new(),
+            after: Vec::new(),
             hold: false,
             command: Some(command),
         });

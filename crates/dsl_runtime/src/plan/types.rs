@@ -93,6 +93,9 @@ pub(crate) struct PhasePlan {
     /// motion (an acceleration an action set holds): lowered to an Act of their own that runs
     /// from the phase's start to the scenario's end.
     pub persist: Vec<Planned>,
+    /// What the actors do when the phase ends (a controller the phase activated, deactivated):
+    /// lowered to an Act of their own that starts at the phase's end.
+    pub after: Vec<Planned>,
     /// The phase lasts until its end (all but `emit`, an instant).
     pub hold: bool,
     /// The command of an instant phase to the event log (a CustomCommandAction): its type

@@ -47,8 +47,8 @@ pub(crate) enum ModKind {
     KeepPosition,
     /// `physical_movement(option)`: `must_be_physical` forbids speed steps in the phase.
     PhysicalMovement,
-    /// `avoid_collisions(false)`: the engine's vehicles do not avoid collisions (`true` is an
-    /// error).
+    /// `avoid_collisions(avoid)`: with `true` (or no argument) the engine's IDM car following
+    /// drives the actor's speed in the phase (`plan::car_following`); `false` adds nothing.
     AvoidCollisions,
 }
 
@@ -208,11 +208,11 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
                 Some(e) => e.eval()?,
                 None => Val::Bool(true),
             };
-            if avoid != Val::Bool(false) {
+            if !matches!(avoid, Val::Bool(_)) {
                 return Err(ctx.files.err(
                     K::Modifier,
                     app.span,
-                    "expected avoid_collisions(false) (the engine's vehicles follow their plan and do not avoid others), found a request to avoid collisions",
+                    "expected avoid_collisions(true) or avoid_collisions(false), found another value",
                 ));
             }
         }

@@ -136,8 +136,8 @@ fn keep_and_physical_modifiers_forbid_what_contradicts_them() {
     assert!((r.at(4.0, "ego").speed - 20.0).abs() < S_TOL);
     refused(
         "err_avoid_collisions",
-        "expected avoid_collisions(false)",
-        "6:9",
+        "expected no distance planned beside avoid_collisions(true) at ",
+        "8:9",
     );
     refused("err_track_projected", "expected track: actual", "5:29");
 }

@@ -5,6 +5,7 @@
 mod actors;
 mod along;
 mod bad_input;
+mod car_following;
 mod distance;
 mod gap_actions;
 mod groups;
