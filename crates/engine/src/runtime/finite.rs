@@ -106,6 +106,7 @@ mod tests {
         let mut e = Entity::new(EntityId(0), "car", EntityKind::Vehicle, b);
         e.road_position = Some(opendrive::RoadPosition {
             road_id: "1".into(),
+            road: opendrive::RoadHandle(0),
             lane_id: -1,
             s: 10.0,
             t: -1.75,

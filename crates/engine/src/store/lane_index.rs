@@ -226,8 +226,6 @@ impl LaneIndex {
             self.hints
                 .resize_with(entities.len() * HINTS, || AtomicU32::new(0));
         }
-        // The road of the last entity: entities on one road look its id up once.
-        let mut last: Option<(&str, RoadHandle)> = None;
         for e in entities {
             if !e.placed || !e.visibility.traffic {
                 continue;
@@ -235,17 +233,12 @@ impl LaneIndex {
             let Some(rp) = e.road_position.as_ref().filter(|rp| rp.distance <= ON_ROAD) else {
                 continue;
             };
-            let road_handle = match last {
-                Some((id, h)) if id == rp.road_id => h,
-                _ => {
-                    let Some(h) = net.road_handle(&rp.road_id) else {
-                        continue;
-                    };
-                    last = Some((rp.road_id.as_str(), h));
-                    h
-                }
+            // The road by the handle the position carries (the world's network made it), not
+            // by its id: no look-up, no read of the id string.
+            let road_handle = rp.road;
+            let Some(road) = net.roads().get(road_handle.index()) else {
+                continue;
             };
-            let road = net.road_at(road_handle);
             let (s_range, t_range) = box_ranges(e, rp.s, rp.t, rp.relative_heading);
             let speed_s = match &e.track {
                 Some(track) if track.direction == Direction::Forward => e.speed,

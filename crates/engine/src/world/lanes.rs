@@ -292,6 +292,7 @@ pub fn set_road_position(
     let Some(rp) = out else {
         *out = Some(RoadPosition {
             road_id: track.road_id.clone(),
+            road: track.road,
             lane_id,
             s: track.s,
             t: track.t,
@@ -303,9 +304,11 @@ pub fn set_road_position(
         return;
     };
     // In place (every field named, so that a new one cannot be missed); the ids are copied
-    // only when the road changed.
+    // only when the road changed, which the handles tell (the id strings are each entity's
+    // own heap allocations: comparing them was a cache miss per entity and step).
     let RoadPosition {
-        road_id: rp_road,
+        road_id: rp_road_id,
+        road: rp_road,
         lane_id: rp_lane,
         s: rp_s,
         t: rp_t,
@@ -314,8 +317,9 @@ pub fn set_road_position(
         relative_heading: rp_heading,
         distance: rp_distance,
     } = rp;
-    if *rp_road != track.road_id {
-        rp_road.clone_from(&track.road_id);
+    if *rp_road != track.road {
+        *rp_road = track.road;
+        rp_road_id.clone_from(&track.road_id);
         rp_junction.clone_from(&road.junction);
     } else if *rp_junction != road.junction {
         rp_junction.clone_from(&road.junction);

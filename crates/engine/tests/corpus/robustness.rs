@@ -358,6 +358,7 @@ fn the_frame_check_catches_a_nan() {
     e.speed = 0.0;
     e.road_position = Some(opendrive::RoadPosition {
         road_id: "1".to_owned(),
+        road: opendrive::RoadHandle(0),
         lane_id: -1,
         s: f64::INFINITY,
         t: -1.5,

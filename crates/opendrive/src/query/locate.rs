@@ -28,6 +28,10 @@ const RESIDUAL_TOLERANCE: Real = 1e-7;
 pub struct RoadPosition {
     /// Road id.
     pub road_id: String,
+    /// The same road by handle, valid for the network that made the position (road ids are
+    /// unique in a network, so the two name one road): a caller comparing roads compares
+    /// these instead of the id strings.
+    pub road: RoadHandle,
     /// Lane whose borders enclose t (the outermost lane if t lies beyond the road surface).
     pub lane_id: i32,
     /// s along the reference line (m).
@@ -270,6 +274,7 @@ impl RoadNetwork {
         let road = self.road_at(p.road);
         RoadPosition {
             road_id: road.id.clone(),
+            road: p.road,
             lane_id: p.lane_id,
             s: p.s,
             t: p.t,
