@@ -32,12 +32,7 @@ use architecture::{
 
 /// The module cycles allowed today: crate, the cycle's modules, the number of uses between
 /// them, its two-way pairs. Lower it as cycles go; never raise it.
-const KNOWN_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[(
-    "engine",
-    &["position", "routing", "trajectory"],
-    4,
-    &["position↔routing", "position↔trajectory"],
-)];
+const KNOWN_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[];
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")

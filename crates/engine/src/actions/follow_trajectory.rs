@@ -35,6 +35,7 @@ use scenario::{FollowingMode, SourcePos, Timing};
 
 use super::Part;
 use crate::error::{Error, ErrorKind};
+use crate::position::PositionErrorKind;
 use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::trajectory::{
@@ -203,8 +204,13 @@ pub(crate) fn start(
     // A ClothoidSpline whose first segment has no PositionStart starts at the actor (1.3 XSD
     // `ClothoidSplineSegment`: positionStart is optional).
     let actor_pose = world.entity(actor).pose;
-    let trajectory =
-        build_for_actor(trajectory, &*world, Some(&actor_pose), pos).map_err(to_error)?;
+    // The shape's error as the trajectory's, a point's as that position's.
+    let trajectory = build_for_actor(trajectory, &*world, Some(&actor_pose), pos).map_err(|e| {
+        match e.kind() {
+            PositionErrorKind::Trajectory(shape) => to_error(shape.clone()),
+            _ => Error::new(ErrorKind::Position(e)),
+        }
+    })?;
     let clock = timing
         .map(|t| TrajectoryClock::new(t, now, pos))
         .transpose()

@@ -3,6 +3,9 @@
 
 use scenario::SourcePos;
 
+use crate::routing::RoutingError;
+use crate::trajectory::TrajectoryError;
+
 /// Why a position could not be resolved.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -40,7 +43,7 @@ pub enum PositionErrorKind {
     /// The route of a RoutePosition cannot be planned (too few waypoints, waypoints not
     /// joined by the road network); it names its own place.
     #[error("{0}")]
-    Route(crate::routing::RoutingError),
+    Route(RoutingError),
     /// `pathS` lies beyond the route.
     #[error("expected pathS in [0, {length}] along route \"{route}\", found {path_s}")]
     OutsideRoute {
@@ -79,7 +82,7 @@ pub enum PositionErrorKind {
     },
     /// The trajectory of a TrajectoryPosition cannot be built (it names its own place).
     #[error("{0}")]
-    Trajectory(crate::trajectory::TrajectoryError),
+    Trajectory(TrajectoryError),
     /// A value that must be finite is not.
     #[error("expected a finite {what}, found {value}")]
     NotFinite {
@@ -130,6 +133,22 @@ impl PositionError {
     /// Where the position was written (file, 1-based line and column).
     pub fn pos(&self) -> &SourcePos {
         &self.0.pos
+    }
+}
+
+/// A route that cannot be planned (too few waypoints, waypoints not joined), at its own place.
+impl From<RoutingError> for PositionError {
+    fn from(e: RoutingError) -> Self {
+        let pos = e.pos().clone();
+        Self::new(PositionErrorKind::Route(e), &pos)
+    }
+}
+
+/// A trajectory that cannot be built, at its own place.
+impl From<TrajectoryError> for PositionError {
+    fn from(e: TrajectoryError) -> Self {
+        let pos = e.pos().clone();
+        Self::new(PositionErrorKind::Trajectory(e), &pos)
     }
 }
 

@@ -20,6 +20,7 @@
 //! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) on the path of `routing::plan_route` |
 //! | `trajectory` | TrajectoryPosition on a polyline |
 //! | `resolve` | `resolve`: the dispatcher; GeoPosition |
+//! | `sources` | every `EntityQuery` as routing's `WaypointSource` and trajectory's `PointSource` (resolving through `resolve`) |
 
 mod beyond;
 mod check;
@@ -34,13 +35,13 @@ mod resolve;
 mod resolved;
 mod road;
 mod route;
+mod sources;
 mod trajectory;
 mod world;
 
 pub use check::check_positions;
 pub use error::{PositionError, PositionErrorKind};
 pub use query::{EntityQuery, EntityView};
-pub(crate) use resolve::orientation_of;
 pub use resolve::resolve;
 pub use resolved::ResolvedPosition;
 

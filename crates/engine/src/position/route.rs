@@ -30,25 +30,13 @@ use super::lane::parse_lane_id;
 use super::orientation::on_surface;
 use super::world::{entity, finite};
 use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
-use crate::routing::{self, PlannedRoute, RoutingError, RoutingErrorKind};
+use crate::routing::{self, PlannedRoute};
 
 /// Heading of travel on a road whose s-tangent heads `road_h`.
 fn travel_heading(road_h: Real, direction: Direction) -> Real {
     match direction {
         Direction::Forward => road_h,
         Direction::Backward => opendrive::normalize_angle(road_h + PI),
-    }
-}
-
-/// A route that cannot be planned, as a position error: a waypoint's own position error
-/// as it is, anything else (too few waypoints, waypoints not joined) naming its place.
-fn route_error(e: RoutingError) -> PositionError {
-    match e.kind() {
-        RoutingErrorKind::Position(p) => p.clone(),
-        _ => {
-            let pos = e.pos().clone();
-            PositionError::new(PositionErrorKind::Route(e), &pos)
-        }
     }
 }
 
@@ -80,8 +68,9 @@ pub(crate) fn route_position<Q: EntityQuery + ?Sized>(
     pos: &SourcePos,
 ) -> Result<ResolvedPosition, PositionError> {
     let network = ctx.road_network();
-    let planned =
-        routing::plan_route(route, ctx, &ctx.routing_options(), pos).map_err(route_error)?;
+    // A waypoint's own position error as it is; a route that cannot be planned (too few
+    // waypoints, waypoints not joined) as PositionErrorKind::Route, naming its place.
+    let planned = routing::plan_route(route, ctx, &ctx.routing_options(), pos)?;
     match in_route {
         InRoutePosition::FromRoadCoordinates { path_s, t } => {
             finite(&[("pathS", *path_s), ("t", *t)], pos)?;

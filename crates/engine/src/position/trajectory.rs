@@ -24,8 +24,13 @@ pub(crate) fn trajectory_position<Q: EntityQuery + ?Sized>(
     pos: &SourcePos,
 ) -> Result<ResolvedPosition, PositionError> {
     finite(&[("s", s), ("t", t)], pos)?;
-    let shape = crate::trajectory::build(trajectory, ctx, pos)
-        .map_err(|e| PositionError::new(PositionErrorKind::Trajectory(e), pos))?;
+    // A point's own position error as it is; an error of the shape at this position.
+    let shape = crate::trajectory::build(trajectory, ctx, pos).map_err(|e| match e.kind() {
+        PositionErrorKind::Trajectory(shape) => {
+            PositionError::new(PositionErrorKind::Trajectory(shape.clone()), pos)
+        }
+        _ => e,
+    })?;
     let length = shape.length();
     if !(0.0..=length + opendrive::S_TOLERANCE).contains(&s) {
         return Err(PositionError::new(

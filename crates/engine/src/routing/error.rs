@@ -4,8 +4,6 @@
 
 use scenario::SourcePos;
 
-use crate::position::PositionError;
-
 /// Why a route could not be planned.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -42,9 +40,6 @@ pub enum RoutingErrorKind {
         /// Where it is: road, lane, s.
         to_at: String,
     },
-    /// A waypoint's position could not be resolved.
-    #[error("{0}")]
-    Position(PositionError),
 }
 
 /// A route that could not be planned: the kind and where it was written.
@@ -59,12 +54,9 @@ struct Inner {
     pos: SourcePos,
 }
 
-/// A resolver error already names its place; every other kind gets " at file:line:col".
+/// Every kind gets " at file:line:col".
 fn display(inner: &Inner) -> String {
-    match &inner.kind {
-        RoutingErrorKind::Position(e) => e.to_string(),
-        k => format!("{k} at {}", inner.pos),
-    }
+    format!("{} at {}", inner.kind, inner.pos)
 }
 
 impl RoutingError {
@@ -84,12 +76,5 @@ impl RoutingError {
     /// Where (file, 1-based line and column).
     pub fn pos(&self) -> &SourcePos {
         &self.0.pos
-    }
-}
-
-impl From<PositionError> for RoutingError {
-    fn from(e: PositionError) -> Self {
-        let pos = e.pos().clone();
-        Self::new(RoutingErrorKind::Position(e), &pos)
     }
 }

@@ -12,6 +12,7 @@
 //! | `random` | the seeded, order-independent lane weights of routeStrategy `random` |
 //! | `planned` | `PlannedRoute`: stretches, lane changes, waypoints' path s, look-ups by path s |
 //! | `random_route` | `plan_random`: RandomRouteAction's seeded walk over the lane graph |
+//! | `source` | `WaypointSource`: the seam through which a route's waypoints are resolved |
 //! | `plan` | `plan_route` (Route with waypoints, closed routes) and `plan_between` (AcquirePositionAction) |
 
 mod cost;
@@ -20,6 +21,7 @@ mod plan;
 mod planned;
 mod random;
 mod random_route;
+mod source;
 
 pub use cost::{RoutingOptions, DEFAULT_SPEED, UNLIMITED_ROAD_SPEED};
 pub use error::{RoutingError, RoutingErrorKind};
@@ -29,3 +31,4 @@ pub use planned::{PlannedRoute, RoutedWaypoint};
 pub use random_route::{
     plan_random, HORIZON as RANDOM_ROUTE_HORIZON, MAX_DECISIONS as RANDOM_ROUTE_MAX_DECISIONS,
 };
+pub use source::WaypointSource;

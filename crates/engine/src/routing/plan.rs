@@ -1,6 +1,7 @@
 //! The front door of route planning (OpenSCENARIO 1.3 §7.5 "Routes", XSD `Route`,
-//! `Waypoint`; §7.4 AcquirePositionAction): waypoints resolved to lane positions through
-//! [`position::resolve`](crate::position::resolve), then one search per leg.
+//! `Waypoint`; §7.4 AcquirePositionAction): waypoints resolved to lane positions by the
+//! caller's [`WaypointSource`] (the engine's position resolver for every
+//! [`EntityQuery`](crate::position::EntityQuery)), then one search per leg.
 //!
 //! Which strategy a leg uses: a Waypoint's `routeStrategy` says how that waypoint is reached
 //! from the one before it, so leg i → i+1 uses waypoint i+1's strategy, and the closing leg
@@ -12,9 +13,9 @@ use scenario::{Route, RouteStrategy, SourcePos};
 
 use super::cost::{enters_junction_by_id, CostModel, RoutingOptions};
 use super::random::leg_key;
+use super::source::WaypointSource;
 use super::{LaneChange, PlannedRoute, RoutedWaypoint, RoutingError, RoutingErrorKind};
 use crate::domain;
-use crate::position::{resolve, EntityQuery};
 
 /// A point the route must pass: where, and where it was written.
 #[derive(Clone)]
@@ -25,13 +26,14 @@ pub(crate) struct Stop {
 
 /// Plans `route` (inline or from the Route catalog, as the scenario model gives it),
 /// resolving its waypoints through `ctx`. `pos` names the element that uses the route
-/// (AssignRouteAction, RoutePosition) for errors about the route as a whole.
-pub fn plan_route<Q: EntityQuery + ?Sized>(
+/// (AssignRouteAction, RoutePosition) for errors about the route as a whole; a waypoint's
+/// error is the source's own.
+pub fn plan_route<S: WaypointSource + ?Sized>(
     route: &Route,
-    ctx: &Q,
+    ctx: &S,
     options: &RoutingOptions,
     pos: &SourcePos,
-) -> Result<PlannedRoute, RoutingError> {
+) -> Result<PlannedRoute, S::Error> {
     if route.waypoints.len() < 2 {
         return Err(RoutingError::new(
             RoutingErrorKind::TooFewWaypoints {
@@ -39,12 +41,12 @@ pub fn plan_route<Q: EntityQuery + ?Sized>(
                 found: route.waypoints.len(),
             },
             pos,
-        ));
+        )
+        .into());
     }
     let mut stops = Vec::with_capacity(route.waypoints.len());
     for (i, wp) in route.waypoints.iter().enumerate() {
-        let resolved = resolve(&wp.position, ctx)?;
-        let rp = resolved.road_position.ok_or_else(|| {
+        let rp = ctx.road_position(&wp.position)?.ok_or_else(|| {
             RoutingError::new(
                 RoutingErrorKind::OffRoad {
                     route: route.name.clone(),
@@ -70,14 +72,14 @@ pub fn plan_route<Q: EntityQuery + ?Sized>(
     if route.closed {
         legs.push((n - 1, 0, route.waypoints[0].route_strategy));
     }
-    plan_legs(
-        ctx.road_network(),
+    Ok(plan_legs(
+        ctx.network(),
         &route.name,
         route.closed,
         &stops,
         &legs,
         options,
-    )
+    )?)
 }
 
 /// Plans the path from `from` to `to` with `strategy` (AcquirePositionAction: the route from

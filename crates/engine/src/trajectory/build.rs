@@ -1,7 +1,8 @@
 //! Building a [`Trajectory`] from the scenario model (OpenSCENARIO 1.3 §6.9, XSD `Shape`):
-//! each vertex, control point and start position is resolved to a world pose by
-//! [`position::resolve`](crate::position::resolve), the shape is checked, and its pieces and
-//! times are laid out.
+//! each vertex, control point and start position is resolved to a world pose by the caller's
+//! [`PointSource`] (the engine's position resolver for every
+//! [`EntityQuery`](crate::position::EntityQuery)), the shape is checked, and its pieces and
+//! times are laid out. A point's error comes back as the source's error, so does the shape's.
 //!
 //! Rules taken here, each from the XSD element it concerns:
 //! * `Polyline`: at least two vertices; a `closed` trajectory also runs from the last vertex
@@ -29,7 +30,7 @@
 //!   complete as written).
 
 use opendrive::{Pose, Real, LENGTH_EPSILON};
-use scenario::{Position, PositionKind, Shape, SourcePos};
+use scenario::{Position, Shape, SourcePos};
 
 use super::bspline::HPoint;
 use super::clothoid::Clothoid;
@@ -38,9 +39,9 @@ use super::line::Line;
 use super::nurbs::Nurbs;
 use super::orientation::Orientations;
 use super::path::{Piece, ShapeKind};
+use super::source::PointSource;
 use super::time_table::TimeTable;
 use super::Trajectory;
-use crate::position::{orientation_of, resolve, EntityQuery};
 
 type Result<T> = std::result::Result<T, TrajectoryError>;
 
@@ -54,24 +55,16 @@ struct Point {
     pos: SourcePos,
 }
 
-/// Whether `position` states a heading: an `Orientation` element, or `h` on a WorldPosition.
-fn states_heading(position: &Position) -> bool {
-    match &position.kind {
-        PositionKind::World { h, .. } => h.is_some(),
-        kind => orientation_of(kind).is_some(),
-    }
-}
-
-fn point<Q: EntityQuery + ?Sized>(
+fn point<S: PointSource + ?Sized>(
     position: &Position,
     time: Option<Real>,
-    ctx: &Q,
-) -> Result<Point> {
-    let r = resolve(position, ctx)?;
+    ctx: &S,
+) -> std::result::Result<Point, S::Error> {
+    let r = ctx.place(position)?;
     Ok(Point {
         xyz: [r.pose.x, r.pose.y, r.pose.z],
         heading: r.pose.h,
-        oriented: states_heading(position),
+        oriented: r.oriented,
         time,
         pos: position.pos.clone(),
     })
@@ -82,22 +75,22 @@ fn point<Q: EntityQuery + ?Sized>(
 /// errors about the shape as a whole; errors about one point name that point's Position.
 /// A ClothoidSpline whose first segment has no PositionStart is an error here; see
 /// [`build_for_actor`].
-pub fn build<Q: EntityQuery + ?Sized>(
+pub fn build<S: PointSource + ?Sized>(
     trajectory: &scenario::Trajectory,
-    ctx: &Q,
+    ctx: &S,
     pos: &SourcePos,
-) -> Result<Trajectory> {
+) -> std::result::Result<Trajectory, S::Error> {
     build_for_actor(trajectory, ctx, None, pos)
 }
 
 /// As [`build`], for the trajectory of a FollowTrajectoryAction whose actor stands at
 /// `actor`: a ClothoidSpline's first segment without PositionStart starts there.
-pub fn build_for_actor<Q: EntityQuery + ?Sized>(
+pub fn build_for_actor<S: PointSource + ?Sized>(
     trajectory: &scenario::Trajectory,
-    ctx: &Q,
+    ctx: &S,
     actor: Option<&Pose>,
     pos: &SourcePos,
-) -> Result<Trajectory> {
+) -> std::result::Result<Trajectory, S::Error> {
     let name = &trajectory.name;
     let mut orientations = None;
     let (kind, pieces, times) = match &trajectory.shape {
@@ -109,12 +102,13 @@ pub fn build_for_actor<Q: EntityQuery + ?Sized>(
                         found: vertices.len(),
                     },
                     pos,
-                ));
+                )
+                .into());
             }
             let points = vertices
                 .iter()
                 .map(|v| point(&v.position, v.time, ctx))
-                .collect::<Result<Vec<_>>>()?;
+                .collect::<std::result::Result<Vec<_>, _>>()?;
             let (pieces, times, headings) = polyline(&points, trajectory.closed)?;
             orientations = headings;
             (ShapeKind::Polyline, pieces, times)
@@ -135,7 +129,8 @@ pub fn build_for_actor<Q: EntityQuery + ?Sized>(
             return Err(TrajectoryError::new(
                 TrajectoryErrorKind::UnknownShape("another shape"),
                 pos,
-            ))
+            )
+            .into())
         }
     };
     let mut t = Trajectory::new(name, kind, trajectory.closed, pieces, times);
@@ -143,10 +138,7 @@ pub fn build_for_actor<Q: EntityQuery + ?Sized>(
         t = t.with_orientations(o);
     }
     if t.length() <= LENGTH_EPSILON {
-        return Err(TrajectoryError::new(
-            TrajectoryErrorKind::ZeroLength(t.length()),
-            pos,
-        ));
+        return Err(TrajectoryError::new(TrajectoryErrorKind::ZeroLength(t.length()), pos).into());
     }
     Ok(t)
 }
@@ -248,11 +240,11 @@ fn positive_length(what: &'static str, length: Real, pos: &SourcePos) -> Result<
     Ok(())
 }
 
-fn clothoid<Q: EntityQuery + ?Sized>(
+fn clothoid<S: PointSource + ?Sized>(
     c: &scenario::Clothoid,
-    ctx: &Q,
+    ctx: &S,
     pos: &SourcePos,
-) -> Result<(Piece, Option<TimeTable>)> {
+) -> std::result::Result<(Piece, Option<TimeTable>), S::Error> {
     check_finite(
         &[
             ("Clothoid curvature", c.curvature),
@@ -283,14 +275,14 @@ fn clothoid<Q: EntityQuery + ?Sized>(
     Ok((Piece::Clothoid(piece), times))
 }
 
-fn clothoid_spline<Q: EntityQuery + ?Sized>(
+fn clothoid_spline<S: PointSource + ?Sized>(
     spline: &scenario::ClothoidSpline,
-    ctx: &Q,
+    ctx: &S,
     actor: Option<&Pose>,
     pos: &SourcePos,
-) -> Result<(Vec<Piece>, Option<TimeTable>)> {
+) -> std::result::Result<(Vec<Piece>, Option<TimeTable>), S::Error> {
     if spline.segments.is_empty() {
-        return Err(TrajectoryError::new(TrajectoryErrorKind::NoSegments, pos));
+        return Err(TrajectoryError::new(TrajectoryErrorKind::NoSegments, pos).into());
     }
     let mut pieces = Vec::with_capacity(spline.segments.len());
     let mut end: Option<([Real; 3], Real)> = None;
@@ -319,10 +311,9 @@ fn clothoid_spline<Q: EntityQuery + ?Sized>(
                 ([a.x, a.y, a.z], a.h)
             }
             (None, None) => {
-                return Err(TrajectoryError::new(
-                    TrajectoryErrorKind::MissingPositionStart,
-                    pos,
-                ))
+                return Err(
+                    TrajectoryError::new(TrajectoryErrorKind::MissingPositionStart, pos).into(),
+                )
             }
         };
         let rate = (seg.curvature_end - seg.curvature_start) / seg.length;
@@ -361,7 +352,8 @@ fn clothoid_spline<Q: EntityQuery + ?Sized>(
                     found: t_end,
                 },
                 pos,
-            ));
+            )
+            .into());
         }
         pairs.push((s, t_end));
         Some(TimeTable::new(lead_in(pairs)))
@@ -388,14 +380,14 @@ fn lead_in(mut anchors: Vec<(Real, Real)>) -> Vec<(Real, Real)> {
     anchors
 }
 
-fn nurbs<Q: EntityQuery + ?Sized>(
+fn nurbs<S: PointSource + ?Sized>(
     name: &str,
     n: &scenario::Nurbs,
-    ctx: &Q,
+    ctx: &S,
     pos: &SourcePos,
-) -> Result<(Piece, Option<TimeTable>)> {
+) -> std::result::Result<(Piece, Option<TimeTable>), S::Error> {
     let count = n.control_points.len();
-    let err = |kind| Err(TrajectoryError::new(kind, pos));
+    let err = |kind| Err(TrajectoryError::new(kind, pos).into());
     if count < 2 {
         return err(TrajectoryErrorKind::TooFewControlPoints {
             trajectory: name.to_string(),
@@ -444,7 +436,8 @@ fn nurbs<Q: EntityQuery + ?Sized>(
                     found: w,
                 },
                 &cp.position.pos,
-            ));
+            )
+            .into());
         }
         let p = point(&cp.position, cp.time, ctx)?;
         let [x, y, z] = p.xyz;

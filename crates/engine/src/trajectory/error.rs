@@ -6,8 +6,6 @@
 
 use scenario::SourcePos;
 
-use crate::position::PositionError;
-
 /// Why a trajectory could not be built or timed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -150,9 +148,6 @@ pub enum TrajectoryErrorKind {
     /// The shape has no length (all points at one place).
     #[error("expected a trajectory of positive length, found length {0} m")]
     ZeroLength(f64),
-    /// A vertex, control point or start position could not be resolved.
-    #[error("{0}")]
-    Position(PositionError),
     /// A shape oscsim does not know.
     #[error("expected Polyline, Clothoid, ClothoidSpline or Nurbs, found {0}")]
     UnknownShape(&'static str),
@@ -170,12 +165,9 @@ struct Inner {
     pos: SourcePos,
 }
 
-/// A resolver error already names its place; every other kind gets " at file:line:col".
+/// Every kind gets " at file:line:col".
 fn display(inner: &Inner) -> String {
-    match &inner.kind {
-        TrajectoryErrorKind::Position(e) => e.to_string(),
-        k => format!("{k} at {}", inner.pos),
-    }
+    format!("{} at {}", inner.kind, inner.pos)
 }
 
 impl TrajectoryError {
@@ -195,13 +187,6 @@ impl TrajectoryError {
     /// Where (file, 1-based line and column).
     pub fn pos(&self) -> &SourcePos {
         &self.0.pos
-    }
-}
-
-impl From<PositionError> for TrajectoryError {
-    fn from(e: PositionError) -> Self {
-        let pos = e.pos().clone();
-        Self::new(TrajectoryErrorKind::Position(e), &pos)
     }
 }
 

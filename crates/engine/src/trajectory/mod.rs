@@ -20,7 +20,8 @@
 //! | `timing` | TimeReference / Timing: simulation time ↔ trajectory time |
 //! | `path` | `Trajectory`: the pieces in order, evaluation by s, lengths |
 //! | `closest` | the point of a trajectory closest to a world position |
-//! | `build` | scenario `Trajectory` → `Trajectory`, positions resolved by `position::resolve` |
+//! | `source` | `PointSource`: the seam through which a shape's Positions are resolved |
+//! | `build` | scenario `Trajectory` → `Trajectory`, its Positions resolved by a `PointSource` |
 
 mod bspline;
 mod build;
@@ -33,6 +34,7 @@ mod nurbs;
 mod orientation;
 mod path;
 mod point;
+mod source;
 mod steer;
 mod time_table;
 mod timing;
@@ -45,5 +47,6 @@ pub use follow::FollowLimits;
 pub use nurbs::ARC_LENGTH_TOLERANCE;
 pub use path::{ShapeKind, Trajectory};
 pub use point::TrajectoryPoint;
+pub use source::{PlacedPoint, PointSource};
 pub use steer::{drive_arc, max_curvature, pursuit_curvature, Pursuit};
 pub use timing::{controls_longitudinal, TrajectoryClock};

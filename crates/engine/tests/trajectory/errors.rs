@@ -5,14 +5,19 @@
 
 use crate::trajectory_support;
 
+use engine::position::PositionErrorKind;
 use engine::trajectory::{build, TrajectoryClock, TrajectoryErrorKind};
 use scenario::{ClothoidSpline, ClothoidSplineSegment, Shape};
 use trajectory_support::{here, nurbs, polyline, straight, timing, trajectory, world};
 
+/// The error of the shape (the build's error is the position resolver's, which holds it).
 fn error(shape: Shape) -> engine::trajectory::TrajectoryError {
     match build(&trajectory(shape, false), &straight(), &here()) {
         Ok(t) => panic!("expected an error, built {t:?}"),
-        Err(e) => e,
+        Err(e) => match e.kind() {
+            PositionErrorKind::Trajectory(shape) => shape.clone(),
+            _ => panic!("expected an error of the shape, found {e}"),
+        },
     }
 }
 

@@ -6,6 +6,7 @@
 
 use crate::trajectory_support;
 
+use engine::position::PositionErrorKind;
 use engine::routing::{plan_between, plan_route, PlannedRoute, RoutingErrorKind, RoutingOptions};
 use scenario::RouteStrategy;
 use trajectory_support::{fixture, here, lane, route};
@@ -99,7 +100,8 @@ fn waypoints_not_connected() {
     );
     assert!(matches!(
         e.kind(),
-        RoutingErrorKind::NotConnected { from: 1, to: 2, .. }
+        PositionErrorKind::Route(r)
+            if matches!(r.kind(), RoutingErrorKind::NotConnected { from: 1, to: 2, .. })
     ));
 }
 
@@ -124,7 +126,7 @@ fn waypoint_on_an_unknown_road() {
         false,
     );
     let e = plan_route(&r, &roads, &RoutingOptions::default(), &here()).unwrap_err();
-    assert!(matches!(e.kind(), RoutingErrorKind::Position(_)), "{e}");
+    assert!(matches!(e.kind(), PositionErrorKind::RoadNetwork(_)), "{e}");
     assert!(e.to_string().ends_with("at test.xosc:3:5"), "{e}");
 }
 
