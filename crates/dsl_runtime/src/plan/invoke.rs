@@ -289,7 +289,26 @@ impl Planner<'_> {
                         }
                     }
                     (ModKind::Position, At::End) => {
-                        let t = need_t("position(…, at: end)")?;
+                        let Some(t) = t0 else {
+                            // After a run-time start: the engine works out the profile then,
+                            // or (no duration) measures the gap reached.
+                            match len.filter(|l| *l > 0.0) {
+                                Some(l) => {
+                                    let n = name("position");
+                                    self.start_travel(m, target, mods, l, n, out)?;
+                                }
+                                None => {
+                                    let t = self.last_known();
+                                    let (x, sign, d) = self.position_target(m, target, t)?;
+                                    if m.arg("distance").is_none() {
+                                        return Err(self.unknown_speed(m, "distance"));
+                                    }
+                                    let w = self.gap_reached(m, target, x.as_deref(), sign, d)?;
+                                    derived = all_of(derived, Some(w));
+                                }
+                            }
+                            continue;
+                        };
                         let (x, sign, d) = self.position_target(m, target, t)?;
                         let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
                         let v0 = self.track(target).at(t).1;
@@ -359,6 +378,24 @@ impl Planner<'_> {
                                 "expected distance(…) over the phase (at: all or end), found at: start",
                             ));
                         }
+                        if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
+                            return Err(q.site.err(
+                                K::Unsatisfiable,
+                                format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", m.site.at()),
+                            ));
+                        }
+                        if t0.is_none() {
+                            // After a run-time start: the engine works out the profile then.
+                            let Some(l) = len.filter(|l| *l > 0.0) else {
+                                return Err(m.site.err(
+                                    K::Unsatisfiable,
+                                    "expected a phase duration for distance(…) after a run-time condition, found none (the moment d is travelled depends on the speed at the start, which the plan does not know)",
+                                ));
+                            };
+                            let n = name("distance");
+                            self.start_travel(m, target, mods, l, n, out)?;
+                            continue;
+                        }
                         let t = need_t("distance(…)")?;
                         let d =
                             match m.arg("distance").map(Arg::number).transpose()? {
@@ -370,12 +407,6 @@ impl Planner<'_> {
                             };
                         let v0 = self.track(target).at(t).1;
                         let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
-                        if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
-                            return Err(q.site.err(
-                                K::Unsatisfiable,
-                                format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", m.site.at()),
-                            ));
-                        }
                         match end.filter(|te| *te > t) {
                             Some(te) => {
                                 let len = te - t;

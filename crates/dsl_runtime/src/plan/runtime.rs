@@ -1,8 +1,10 @@
 //! The line between the plan and the run (ASAM OpenSCENARIO DSL 2.1 §7.3.9 `until`, `wait`;
 //! §8.9 `at: start`): a phase that starts on a run-time condition starts at a moment the plan
 //! does not know, so what the plan would check against its tracks at a known start is checked
-//! by the engine when the phase starts (oscsim's state check, `scenario::StateCheck`; a
-//! failure is an error record in the event log and a failed run, never a silent change).
+//! by the engine when the phase starts (oscsim's state check, `scenario::StateCheck`), and a
+//! motion the plan would work out from the state at a known start the engine works out then
+//! (oscsim's TravelAction, `scenario::Travel`). A failure of either is an error record in the
+//! event log and a failed run, never a silent change.
 //!
 //! | at the start of a phase that starts on a run-time condition | done by |
 //! | --- | --- |
@@ -10,6 +12,7 @@
 //! | `position(d)` (at: start, all) | the engine's check: the actor at s = d (0.5 m) |
 //! | `position(d, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road (0.5 m) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre (1 cm) |
+//! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //!
 //! The engine measures lanes and s on the road the actor is on, so on a plan over several
 //! roads (`crate::road`) the lane and position checks are errors: the road the actor is on at
@@ -20,11 +23,14 @@
 //! value depends on another actor's planned lane or speed (`lane(same_as: x)`, `position(time:
 //! t, …)`) are errors there: after a run-time start the plan does not know that actor's state.
 
-use scenario::{PrivateAction, StateCheck};
+use scenario::{LongitudinalAction, PrivateAction, StateCheck, Travel, TravelGoal};
 
 use super::lateral;
+use super::motion::{check_speed, end_speed_mod, holds_speed};
 use super::planner::Planner;
-use super::types::{Planned, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
+use super::types::{
+    Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE,
+};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Arg, ModKind, Modifier, Val};
 
@@ -53,14 +59,7 @@ impl Planner<'_> {
             gap: None,
         };
         if matches!(m.kind, ModKind::Lane | ModKind::Position) && self.road.ids().len() > 1 {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!(
-                    "expected {}(…) at the start of a phase that starts on a run-time condition on a plan over one road, found roads {} (the road the actor is on then is not known before the run)",
-                    m.name,
-                    self.road.ids().join(", ")
-                ),
-            ));
+            return Err(self.several_roads(m));
         }
         match m.kind {
             ModKind::Lane => {
@@ -122,9 +121,110 @@ impl Planner<'_> {
         })
     }
 
+    /// The engine's TravelAction for `m` (a `position(…, at: end)` or `distance(…)` of
+    /// `target`) over a phase of `len` s that starts on a run-time condition, as the action
+    /// `name`: the two-halves profile from the state at the start, worked out by the engine
+    /// then. It replaces the speed change the phase planned already (its end speed is the
+    /// profile's).
+    pub(super) fn start_travel(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        mods: &[Modifier],
+        len: f64,
+        name: String,
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
+        if hold && ve_given.is_none() {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected {}(…) beside a speed that may change, found speed(…) at: all: after a run-time condition the plan does not know the speed the phase starts with, so whether the constant speed meets it is unknown before the run", m.name),
+            ));
+        }
+        let goal = if m.kind == ModKind::Distance {
+            match m.arg("distance").map(Arg::number).transpose()? {
+                Some(d) if d >= 0.0 => TravelGoal::Distance(d),
+                _ => {
+                    return Err(m.site.err(
+                        K::Value,
+                        "expected a distance of 0 m or more in distance(…), found none",
+                    ))
+                }
+            }
+        } else {
+            if m.arg("time").is_some() {
+                return Err(self.unknown_speed(m, "time"));
+            }
+            if self.road.ids().len() > 1 {
+                return Err(self.several_roads(m));
+            }
+            match self.position_target(m, target, self.last_known())? {
+                (Some(x), sign, d) => TravelGoal::FromEntity {
+                    entity_ref: x,
+                    offset: sign * d,
+                },
+                (None, _, d) => TravelGoal::RoadS(d),
+            }
+        };
+        if matches!(goal, TravelGoal::FromEntity { .. }) && m.arg("distance").is_none() {
+            // The default distance is 2 s at x's speed: not known before the run.
+            return Err(self.unknown_speed(m, "distance"));
+        }
+        let end_speed = match ve_given {
+            Some(q) => {
+                let (v, relative) = self.speed_value(q, None)?;
+                if relative.is_some() {
+                    return Err(self.unknown_speed(q, "same_as/faster_than/slower_than"));
+                }
+                check_speed(q, v)?;
+                self.last_v.insert(target.to_string(), v);
+                Some(v)
+            }
+            None => None,
+        };
+        // Drop the speed ramp this phase planned already (change_speed, speed(…, at: end)).
+        out.retain(|a| !(a.entity == target && a.name.ends_with(":speed")));
+        out.push(Planned {
+            entity: target.to_string(),
+            at: None,
+            name,
+            action: PrivateAction::Longitudinal(LongitudinalAction::Travel(Box::new(Travel {
+                what: format!("{}(…) at {}", m.name, m.site.at()),
+                goal,
+                duration: len,
+                end_speed,
+                monotonous: m.monotonous,
+                limits: (MAX_SPEED, MAX_ACCELERATION),
+            }))),
+            site: m.site.clone(),
+        });
+        Ok(())
+    }
+
+    /// A form whose value needs another actor's speed at a run-time start.
+    pub(super) fn unknown_speed(&self, m: &Modifier, key: &str) -> Error {
+        m.site.err(
+            K::Unsupported,
+            format!("expected {}(…) without `{key}` (or with an explicit distance) after a run-time condition, found it: its value is another actor's speed then, which the plan does not know (not run yet)", m.name),
+        )
+    }
+
+    /// A lane or position at a run-time start on a plan over several roads.
+    fn several_roads(&self, m: &Modifier) -> Error {
+        m.site.err(
+            K::Unsupported,
+            format!(
+                "expected {}(…) at the start of a phase that starts on a run-time condition on a plan over one road, found roads {} (the road the actor is on then is not known before the run)",
+                m.name,
+                self.road.ids().join(", ")
+            ),
+        )
+    }
+
     /// The latest moment the plan knows (s): the latest known start or end of a phase
     /// planned so far.
-    fn last_known(&self) -> f64 {
+    pub(super) fn last_known(&self) -> f64 {
         self.phases
             .iter()
             .flat_map(|p| [&p.start, &p.end])

@@ -103,3 +103,59 @@ fn a_failed_check_at_a_run_time_start_is_an_error_record_and_a_failed_run() {
     assert_eq!(logged[0].1, "do.signal.1.turn/ego/2:check");
     assert_eq!(logged[0].2, error);
 }
+
+/// Speeds set by linear pieces: exact up to float round-off.
+const V_TOL: f64 = 1e-9;
+
+#[test]
+fn position_and_distance_at_the_end_after_an_until_are_the_engines_profiles() {
+    let r = run("runtime_travel", 0, None);
+    for (path, a, b) in [
+        ("do.approach", 0.0, 3.35),
+        ("do.close", 3.35, 7.35),
+        ("do.slow", 7.35, 9.35),
+        ("do.park", 9.35, 11.35),
+    ] {
+        let (s, e) = r.phase(path);
+        assert!(
+            (s - a).abs() < T_TOL && (e - b).abs() < T_TOL,
+            "{path} [{s}, {e}]"
+        );
+    }
+    // do.close: position(30m, behind: lead, at: end), worked out at 3.35 s.
+    assert!((r.at(3.35, "ego").s - 167.0).abs() < S_TOL);
+    assert!((r.at(5.35, "ego").speed - 10.9).abs() < V_TOL);
+    let (ego, lead) = (r.at(7.35, "ego"), r.at(7.35, "lead"));
+    assert!((ego.s - 228.8).abs() < S_TOL, "{ego:?}");
+    assert!((lead.s - ego.s - 30.0).abs() < S_TOL, "{lead:?}");
+    assert!((ego.speed - 20.0).abs() < V_TOL);
+    // do.slow: distance(30m) to 10 m/s.
+    assert!((r.at(8.35, "ego").speed - 15.0).abs() < V_TOL);
+    let ego = r.at(9.35, "ego");
+    assert!(
+        (ego.s - 258.55).abs() < S_TOL && (ego.speed - 10.0).abs() < V_TOL,
+        "{ego:?}"
+    );
+    // do.park: position(280m, at: end).
+    assert!((r.at(10.35, "ego").speed - 11.45).abs() < V_TOL);
+    let ego = r.at(11.35, "ego");
+    assert!(
+        (ego.s - 280.0).abs() < S_TOL && (ego.speed - 10.0).abs() < V_TOL,
+        "{ego:?}"
+    );
+}
+
+#[test]
+fn a_position_beyond_the_limits_after_an_until_is_an_error_record_and_a_failed_run() {
+    let lowered =
+        super::support::lower("runtime_travel_fails", 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = super::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    let want = "expected 'ego' between 0 and 70 m/s (position(…) at ";
+    let tail = "runtime_travel_fails.osc:20:13), found 133.000 m in 2 s from 20.000 m/s: 20.000 → 113.000 → 20.000 m/s at t = 3.350 s";
+    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 3.35).abs() < T_TOL);
+    assert_eq!(records[0].1, "do.rush/ego/1:position");
+    assert_eq!(records[0].2, error);
+}

@@ -26,6 +26,7 @@ mod speed_profile;
 mod synchronize;
 mod teleport;
 mod trailer;
+mod travel;
 mod variable;
 mod visibility;
 
@@ -340,6 +341,9 @@ impl Host<'_> {
                     LongitudinalAction::Acceleration { target, dynamics } => Ok(
                         acceleration::start(self.world, actor, *target, dynamics, time),
                     ),
+                    LongitudinalAction::Travel(travel) => {
+                        travel::start(self.world, actor, travel, time, pos)
+                    }
                     _ => Err(Error::unsupported("this LongitudinalAction", pos)),
                 }
             }

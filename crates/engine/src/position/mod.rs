@@ -47,7 +47,7 @@ pub use resolved::ResolvedPosition;
 
 pub(crate) use lane::{add_lanes, driving_heading as lane_driving_heading};
 pub(crate) use lane_at::lane_at;
-pub(crate) use lane_length::lane_arc_length;
 pub use lane_length::SIMPSON_STEP;
+pub(crate) use lane_length::{lane_arc_length, s_at_lane_distance};
 pub(crate) use lane_walk::walk as lane_walk;
 pub(crate) use orientation::local_to_world;

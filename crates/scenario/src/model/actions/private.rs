@@ -130,6 +130,15 @@ pub enum LongitudinalAction {
         /// How it is reached.
         dynamics: TransitionDynamics,
     },
+    /// oscsim's TravelAction, an action with no XML form (the DSL runtime writes it for a
+    /// `position(…, at: end)` or `distance(…)` over a phase of known duration that starts on a
+    /// run-time condition, ASAM OpenSCENARIO DSL 2.1 §8.9; the XML reader never does): when it
+    /// starts, the engine works out from the actor's state then the profile of two linear
+    /// halves the DSL plan uses (v₀ → v_m over T/2, v_m → v_e over T/2, v_m = (4·Δs/T − v₀ −
+    /// v_e)/2) and runs it as a SpeedProfileAction in `position` mode. A profile outside
+    /// `limits` (or not monotonous when asked) fails the action: an error record in the event
+    /// log, and the run stops with that error.
+    Travel(Box<Travel>),
     /// SpeedProfileAction (1.2+).
     SpeedProfile {
         /// Reference entity for relative speeds.
@@ -140,6 +149,42 @@ pub enum LongitudinalAction {
         dynamic_constraints: Option<DynamicConstraints>,
         /// Entries: (speed m/s, time s).
         entries: Vec<SpeedProfileEntry>,
+    },
+}
+
+/// What oscsim's TravelAction ([`LongitudinalAction::Travel`]) covers, and how.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Travel {
+    /// What is asked and where it is written, for the error ("position(…) at f.osc:29:13").
+    pub what: String,
+    /// Where the actor must be at the end.
+    pub goal: TravelGoal,
+    /// The duration T (s) from the action's start.
+    pub duration: f64,
+    /// The speed at the end (m/s); `None`: the speed the actor has at the start.
+    pub end_speed: Option<f64>,
+    /// The speed only rises or only falls (v_m between v₀ and v_e).
+    pub monotonous: bool,
+    /// The highest speed (m/s) and the highest acceleration or deceleration (m/s²) the profile
+    /// may have.
+    pub limits: (f64, f64),
+}
+
+/// Where a [`Travel`] ends, measured along the actor's lane centre from where it starts.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum TravelGoal {
+    /// This distance (m) further along the lane.
+    Distance(f64),
+    /// At this s (m) of the road the actor is on.
+    RoadS(f64),
+    /// At `offset` m from where the entity `entity_ref` is at the end (positive: ahead of it
+    /// in the road's s), the entity taken to keep the speed it has at the start along its lane.
+    FromEntity {
+        /// The reference entity.
+        entity_ref: String,
+        /// The actor's s minus the entity's at the end (m).
+        offset: f64,
     },
 }
 
