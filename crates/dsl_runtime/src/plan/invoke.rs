@@ -448,8 +448,7 @@ impl Planner<'_> {
                     }
                     (ModKind::Lane, At::End) | (ModKind::ChangeLane, _) => {
                         let (t, len) = need_len("a lane change")?;
-                        let (target_lane, planned) =
-                            self.lane_target(m, target, t.unwrap_or(0.0), len)?;
+                        let (target_lane, planned) = self.lane_target(m, target, t, len)?;
                         // lateral(…, at: end): the offset in the target lane.
                         let offset = match (lateral_end(mods), planned) {
                             (Some(q), Some(l)) => {

@@ -237,7 +237,7 @@ impl Planner<'_> {
             site: p.site.clone(),
         };
         // The reference's lane at the action's start (len 0).
-        self.lane_target(&m, target, t, 0.0)
+        self.lane_target(&m, target, Some(t), 0.0)
     }
 }
 

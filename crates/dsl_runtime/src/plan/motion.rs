@@ -265,14 +265,17 @@ impl Planner<'_> {
     }
 
     /// The LaneChangeAction target of a lane modifier at the phase end, and the lane the plan
-    /// expects there.
+    /// expects there. `t` is the phase's start, `None` after a run-time condition: a lane
+    /// relative to another actor is then the engine's to find (the plan expects none), and
+    /// lanes are numbered where the plan last knows the actor.
     pub(super) fn lane_target(
         &self,
         m: &Modifier,
         target: &str,
-        t: f64,
+        t0: Option<f64>,
         len: f64,
     ) -> Result<(LaneChangeTarget, Option<i32>), Error> {
+        let t = t0.unwrap_or_else(|| self.last_known());
         let n = m
             .arg("lane")
             .map(Arg::number)
@@ -324,6 +327,16 @@ impl Planner<'_> {
         ] {
             if let Some(e) = m.arg(key) {
                 let x = self.entity_of(e)?;
+                if t0.is_none() {
+                    // x's lane at the start is the engine's: a missing lane is its error then.
+                    return Ok((
+                        LaneChangeTarget::Relative {
+                            entity_ref: x,
+                            value,
+                        },
+                        None,
+                    ));
+                }
                 let lx = self.track(&x).lane(t + len);
                 let s_end = self.s_at(&x, t + len);
                 let lane = match value {

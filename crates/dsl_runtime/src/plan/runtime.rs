@@ -9,6 +9,7 @@
 //! | at the start of a phase that starts on a run-time condition | done by |
 //! | --- | --- |
 //! | `lane(n [, from: left])` (at: start, all) | the engine's check: the actor in that driving lane |
+//! | `lane(same_as/side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor in the lane counted from x's, as a RelativeTargetLane counts |
 //! | `position(d)` (at: start, all) | the engine's check: the actor at s = d (0.5 m) |
 //! | `position(d, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road (0.5 m) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre (1 cm) |
@@ -20,8 +21,9 @@
 //!
 //! Lanes are numbered (and lane widths taken) where the plan last knows the actor: a road whose
 //! lanes change between there and the run-time start may number them otherwise. Forms whose
-//! value depends on another actor's planned lane or speed (`lane(same_as: x)`, `position(time:
-//! t, …)`) are errors there: after a run-time start the plan does not know that actor's state.
+//! value depends on another actor's speed (`position(time: t, …)`, a position relative to x
+//! without a distance) are errors there: after a run-time start the plan does not know that
+//! actor's state, and the engine's check takes no value from it.
 
 use scenario::{LongitudinalAction, PrivateAction, StateCheck, Travel, TravelGoal};
 
@@ -54,6 +56,7 @@ impl Planner<'_> {
         let mut check = StateCheck {
             what,
             lane: None,
+            lane_of: None,
             s: None,
             offset: None,
             gap: None,
@@ -63,16 +66,24 @@ impl Planner<'_> {
         }
         match m.kind {
             ModKind::Lane => {
-                for key in ["same_as", "side_of", "left_of", "right_of"] {
-                    if m.arg(key).is_some() {
-                        return Err(relative(key));
-                    }
-                }
                 let n = m
                     .arg("lane")
                     .map(Arg::number)
                     .transpose()?
                     .map_or(1, |x| x.round() as i64);
+                let left = !matches!(m.arg("side").map(Arg::eval).transpose()?, Some(Val::Enum(s)) if s == "right");
+                let shift = i32::try_from(n).unwrap_or(i32::MAX);
+                for (key, shift) in [
+                    ("same_as", 0),
+                    ("left_of", shift),
+                    ("right_of", -shift),
+                    ("side_of", if left { shift } else { -shift }),
+                ] {
+                    if let Some(e) = m.arg(key) {
+                        check.lane_of = Some((self.entity_of(e)?, shift));
+                        return Ok(self.checked(check, m, target, name));
+                    }
+                }
                 let from_left = matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
                 let lane = self
                     .road
@@ -112,13 +123,12 @@ impl Planner<'_> {
                 ))
             }
         }
-        Ok(Planned {
-            entity: target.to_string(),
-            at: None,
-            name,
-            action: PrivateAction::Check(Box::new(check)),
-            site: m.site.clone(),
-        })
+        Ok(self.checked(check, m, target, name))
+    }
+
+    /// The check `check` of `m` as the action `name` of `target`.
+    fn checked(&self, check: StateCheck, m: &Modifier, target: &str, name: String) -> Planned {
+        Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), &m.site)
     }
 
     /// The engine's TravelAction for `m` (a `position(…, at: end)` or `distance(…)` of

@@ -159,3 +159,46 @@ fn a_position_beyond_the_limits_after_an_until_is_an_error_record_and_a_failed_r
     assert_eq!(records[0].1, "do.rush/ego/1:position");
     assert_eq!(records[0].2, error);
 }
+
+#[test]
+fn lanes_relative_to_another_actor_after_an_until_are_the_engines() {
+    let r = run("runtime_lane_relative", 0, None);
+    for (path, a, b) in [
+        ("do.approach", 0.0, 3.35),
+        ("do.merge", 3.35, 5.35),
+        ("do.hold", 5.35, 6.35),
+    ] {
+        let (s, e) = r.phase(path);
+        assert!(
+            (s - a).abs() < T_TOL && (e - b).abs() < T_TOL,
+            "{path} [{s}, {e}]"
+        );
+    }
+    let ego = r.at(3.35, "ego");
+    assert!((ego.y + 5.25).abs() < S_TOL && ego.lane == -2, "{ego:?}");
+    let ego = r.at(4.35, "ego");
+    assert!((ego.y + 7.0).abs() < 1e-6, "{ego:?}");
+    let ego = r.at(5.35, "ego");
+    assert!((ego.y + 8.75).abs() < 1e-6 && ego.lane == -3, "{ego:?}");
+    // The engine's checks of lane(same_as: npc) and lane(right_of: lead) ran and passed.
+    for check in ["do.hold/ego/1:check", "do.hold/ego/2:check"] {
+        let t = r.when(check, "End").expect("the check ran");
+        assert!((t - 5.35).abs() < T_TOL, "{check} at {t}");
+    }
+}
+
+#[test]
+fn a_lane_left_of_another_actor_not_kept_is_an_error_record_and_a_failed_run() {
+    let lowered = super::support::lower("runtime_lane_relative_fails", 0, None)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = super::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    let want =
+        "expected 'ego' in lane -2 of road 1, 1 lane to the left of 'npc''s lane -3 (lane(…) at ";
+    let tail =
+        "runtime_lane_relative_fails.osc:32:13), found it in lane -3 of road 1 at t = 5.350 s";
+    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 5.35).abs() < T_TOL);
+    assert_eq!(records[0].1, "do.hold/ego/2:check");
+}

@@ -3,7 +3,7 @@
 //! OpenSCENARIO DSL 2.1 §8.9), which its plan cannot decide before the run. When the action
 //! starts, the actor's road position (the one measured at the step's start, as every trigger
 //! of the step sees it) must be in the lane, at the offset and at the distance to another
-//! entity it gives; otherwise it fails: an error record in the event log, and the run stops
+//! entity it gives (or in the lane given relative to another entity's); otherwise it fails: an error record in the event log, and the run stops
 //! with [`ErrorKind::CheckFailed`](crate::ErrorKind::CheckFailed).
 
 use opendrive::RoadPosition;
@@ -11,6 +11,7 @@ use scenario::StateCheck;
 
 use crate::error::{Error, ErrorKind};
 use crate::store::World;
+use crate::world::lanes::lane_shift;
 use crate::EntityId;
 
 /// Checks `check` on `actor` at `time`.
@@ -39,6 +40,37 @@ pub(crate) fn start(
         if at.road_id != *road || at.lane_id != *lane {
             return Err(fail(
                 format!("'{}' in lane {lane} of road {road}", e.name),
+                format!("it in lane {} of road {}", at.lane_id, at.road_id),
+            ));
+        }
+    }
+    if let Some((other, shift)) = &check.lane_of {
+        let there = world.id(other).map(|o| world.entity(o));
+        let Some((rp, track)) = there.and_then(|o| o.road_position.as_ref().zip(o.track.as_ref()))
+        else {
+            return Err(fail(
+                format!("'{other}' on a lane"),
+                format!("'{other}' off the road"),
+            ));
+        };
+        let lane = lane_shift(rp.lane_id, *shift, track.direction);
+        if at.road_id != rp.road_id || at.lane_id != lane {
+            return Err(fail(
+                format!(
+                    "'{}' in lane {lane} of road {}, {}'{other}''s lane {}",
+                    e.name,
+                    rp.road_id,
+                    match shift {
+                        0 => String::new(),
+                        n => format!(
+                            "{} lane{} to the {} of ",
+                            n.abs(),
+                            if n.abs() == 1 { "" } else { "s" },
+                            if *n > 0 { "left" } else { "right" }
+                        ),
+                    },
+                    rp.lane_id
+                ),
                 format!("it in lane {} of road {}", at.lane_id, at.road_id),
             ));
         }

@@ -25,7 +25,7 @@ use scenario::{
 use super::{speed_profile, Part};
 use crate::error::{Error, ErrorKind};
 use crate::position::{lane_arc_length, s_at_lane_distance};
-use crate::runtime::world::World;
+use crate::store::World;
 use crate::world::entity::EntityId;
 
 /// Starts `travel` on `actor` at `now`.

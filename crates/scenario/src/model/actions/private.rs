@@ -48,6 +48,10 @@ pub struct StateCheck {
     pub what: String,
     /// The lane the actor must be in: OpenDRIVE road id and lane id.
     pub lane: Option<(String, i32)>,
+    /// Another entity and a lane count: the actor must be in the lane that many lanes to the
+    /// left (right when negative) of that entity's lane, counted as a LaneChangeAction's
+    /// RelativeTargetLane counts them (in the entity's direction of travel, skipping lane 0).
+    pub lane_of: Option<(String, i32)>,
     /// The actor's s on that road (m, its reference point) and the tolerance (m).
     pub s: Option<(f64, f64)>,
     /// The actor's lateral offset from its lane's centre (m, positive left) and the tolerance
