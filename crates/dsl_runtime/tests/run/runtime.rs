@@ -107,21 +107,29 @@ fn a_failed_check_at_a_run_time_start_is_an_error_record_and_a_failed_run() {
 /// Speeds set by linear pieces: exact up to float round-off.
 const V_TOL: f64 = 1e-9;
 
-#[test]
-fn position_and_distance_at_the_end_after_an_until_are_the_engines_profiles() {
-    let r = run("runtime_travel", 0, None);
-    for (path, a, b) in [
-        ("do.approach", 0.0, 3.35),
-        ("do.close", 3.35, 7.35),
-        ("do.slow", 7.35, 9.35),
-        ("do.park", 9.35, 11.35),
-    ] {
+/// Each (phase, start, end) of `want` started and ended then.
+fn phases(r: &super::support::Run, want: &[(&str, f64, f64)]) {
+    for (path, a, b) in want {
         let (s, e) = r.phase(path);
         assert!(
             (s - a).abs() < T_TOL && (e - b).abs() < T_TOL,
             "{path} [{s}, {e}]"
         );
     }
+}
+
+#[test]
+fn position_and_distance_at_the_end_after_an_until_are_the_engines_profiles() {
+    let r = run("runtime_travel", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.close", 3.35, 7.35),
+            ("do.slow", 7.35, 9.35),
+            ("do.park", 9.35, 11.35),
+        ],
+    );
     // do.close: position(30m, behind: lead, at: end), worked out at 3.35 s.
     assert!((r.at(3.35, "ego").s - 167.0).abs() < S_TOL);
     assert!((r.at(5.35, "ego").speed - 10.9).abs() < V_TOL);
@@ -163,17 +171,14 @@ fn a_position_beyond_the_limits_after_an_until_is_an_error_record_and_a_failed_r
 #[test]
 fn lanes_relative_to_another_actor_after_an_until_are_the_engines() {
     let r = run("runtime_lane_relative", 0, None);
-    for (path, a, b) in [
-        ("do.approach", 0.0, 3.35),
-        ("do.merge", 3.35, 5.35),
-        ("do.hold", 5.35, 6.35),
-    ] {
-        let (s, e) = r.phase(path);
-        assert!(
-            (s - a).abs() < T_TOL && (e - b).abs() < T_TOL,
-            "{path} [{s}, {e}]"
-        );
-    }
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.merge", 3.35, 5.35),
+            ("do.hold", 5.35, 6.35),
+        ],
+    );
     let ego = r.at(3.35, "ego");
     assert!((ego.y + 5.25).abs() < S_TOL && ego.lane == -2, "{ego:?}");
     let ego = r.at(4.35, "ego");
