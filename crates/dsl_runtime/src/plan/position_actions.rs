@@ -6,7 +6,7 @@
 //! | --- | --- | --- |
 //! | `assign_position(position \| route_point \| odr_point)` | TeleportAction to the lane position of the place on the plan road | at once |
 //! | `assign_orientation(target)` | TeleportAction to where the actor is, the orientation absolute (world yaw, pitch, roll); the actor must stand | at once |
-//! | `change_position(target, interpolation: straight_line)` | FollowTrajectoryAction along the straight line from where the actor is to the target, at its speed | when the actor is there |
+//! | `change_position(target, interpolation: straight_line)` | FollowTrajectoryAction along the straight line from where the actor is to the target, at its speed (after a run-time condition the line's first vertex is a RelativeObjectPosition at the actor, which the engine resolves when the action starts) | when the actor is there |
 //!
 //! Exactly one of the three arguments is given (none is a missing argument, two contradict).
 //! The place must be in a driving lane of the plan road (the road the planner moves actors on):
@@ -189,14 +189,28 @@ impl Planner<'_> {
                 ));
             }
         }
-        let t = t0.ok_or_else(|| {
-            p.site.err(
-                K::Unsatisfiable,
-                "expected a phase start the plan knows for change_position(…) (where the straight line starts), found one after a run-time condition",
-            )
-        })?;
         let (lane, s1, offset) = self.lane_position(place)?;
         let road = &self.road;
+        let Some(t) = t0 else {
+            // After a run-time condition the line starts where the engine finds the actor: a
+            // vertex at the actor itself (a RelativeObjectPosition, resolved when the action
+            // starts), at the speed it has then; the phase ends with the action.
+            let Some(end) = road.world(s1, road.lane_center(lane, s1) + offset) else {
+                return Err(off_road(&place.site, road.id(), s1, "its length"));
+            };
+            let n = name("change_position");
+            let here = PositionKind::RelativeObject {
+                entity_ref: target.to_string(),
+                dx: 0.0,
+                dy: 0.0,
+                dz: None,
+                orientation: None,
+            };
+            let kinds = vec![here, world_point(end)];
+            let action = polyline_through(&n, kinds, None, &place.site);
+            out.push(Planned::with_phase(target, n.clone(), action, &p.site));
+            return Ok(Some(self.ends(None, 0.0, &n, p)));
+        };
         let tr = self.track(target);
         let (lane0, v) = (tr.lane(t), tr.at(t).1);
         let s0 = self.s_at(target, t);
@@ -300,21 +314,38 @@ pub(super) fn polyline(
     times: Option<&[f64]>,
     site: &Site,
 ) -> PrivateAction {
+    let kinds = points.iter().map(|p| world_point(*p)).collect();
+    polyline_through(name, kinds, times, site)
+}
+
+/// A WorldPosition at (x, y), the rest of the pose left to the trajectory.
+fn world_point((x, y): (f64, f64)) -> PositionKind {
+    PositionKind::World {
+        x,
+        y,
+        z: None,
+        h: None,
+        p: None,
+        r: None,
+    }
+}
+
+/// [`polyline`] through positions of any kind, which the engine resolves when the action
+/// starts.
+fn polyline_through(
+    name: &str,
+    kinds: Vec<PositionKind>,
+    times: Option<&[f64]>,
+    site: &Site,
+) -> PrivateAction {
     let first = times.and_then(|t| t.first().copied()).unwrap_or(0.0);
-    let vertices = points
-        .iter()
+    let vertices = kinds
+        .into_iter()
         .enumerate()
-        .map(|(i, (x, y))| Vertex {
+        .map(|(i, kind)| Vertex {
             time: times.map(|t| t[i] - first),
             position: Position {
-                kind: PositionKind::World {
-                    x: *x,
-                    y: *y,
-                    z: None,
-                    h: None,
-                    p: None,
-                    r: None,
-                },
+                kind,
                 pos: site.pos.clone(),
             },
         })

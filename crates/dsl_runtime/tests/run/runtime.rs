@@ -207,3 +207,39 @@ fn a_lane_left_of_another_actor_not_kept_is_an_error_record_and_a_failed_run() {
     assert!((records[0].0 - 5.35).abs() < T_TOL);
     assert_eq!(records[0].1, "do.hold/ego/2:check");
 }
+
+#[test]
+fn change_and_assign_position_after_an_until_start_where_the_engine_finds_the_actor() {
+    let r = run("runtime_place", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.cut", 3.35, 4.6),
+            ("do.jump", 4.6, 4.65),
+            ("do.on", 4.65, 5.65),
+        ],
+    );
+    let ego = r.at(3.35, "ego");
+    assert!(
+        (ego.x - 167.0).abs() < S_TOL && (ego.y + 8.75).abs() < S_TOL,
+        "{ego:?}"
+    );
+    let ego = r.at(4.1, "ego");
+    assert!(
+        (ego.x - 181.4).abs() < S_TOL && (ego.y + 4.55).abs() < S_TOL,
+        "{ego:?}"
+    );
+    let ego = r.at(4.6, "ego");
+    assert!(
+        (ego.x - 191.0).abs() < S_TOL && (ego.y + 1.75).abs() < S_TOL,
+        "{ego:?}"
+    );
+    let ego = r.at(4.65, "ego");
+    assert!(
+        (ego.x - 300.0).abs() < S_TOL && (ego.y + 5.25).abs() < S_TOL,
+        "{ego:?}"
+    );
+    let ego = r.at(5.65, "ego");
+    assert!((ego.x - 320.0).abs() < S_TOL && ego.lane == -2, "{ego:?}");
+}
