@@ -540,10 +540,12 @@ impl Planner<'_> {
                             continue;
                         }
                         let (t, len) = need_len("a lateral position at the phase end")?;
-                        let t = t.ok_or_else(|| m.site.err(
-                            K::Unsatisfiable,
-                            "expected a phase start the plan knows for lateral(…, at: end), found one after a run-time condition",
-                        ))?;
+                        let Some(t) = t else {
+                            // After a run-time start the offset the actor starts from is the
+                            // engine's: a change over the phase within its own lane.
+                            out.push(self.start_offset_change(m, target, len, name("lateral"))?);
+                            continue;
+                        };
                         let tr = self.track(target);
                         let lane = tr.lane(t);
                         let o0 = tr.offset(t);

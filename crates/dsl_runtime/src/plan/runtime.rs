@@ -14,6 +14,7 @@
 //! | `position(d, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road (0.5 m) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre (1 cm) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
+//! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal LaneChangeAction over T into the actor's own lane at that offset |
 //!
 //! The engine measures lanes and s on the road the actor is on, so on a plan over several
 //! roads (`crate::road`) the lane and position checks are errors: the road the actor is on at
@@ -25,7 +26,10 @@
 //! without a distance) are errors there: after a run-time start the plan does not know that
 //! actor's state, and the engine's check takes no value from it.
 
-use scenario::{LongitudinalAction, PrivateAction, StateCheck, Travel, TravelGoal};
+use scenario::{
+    DynamicsDimension, DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction,
+    PrivateAction, StateCheck, TransitionDynamics, Travel, TravelGoal,
+};
 
 use super::lateral;
 use super::motion::{check_speed, end_speed_mod, holds_speed};
@@ -210,6 +214,46 @@ impl Planner<'_> {
             site: m.site.clone(),
         });
         Ok(())
+    }
+
+    /// The engine's change of `target`'s offset in its lane to the one `m` (a `lateral(…, at:
+    /// end)` without a lane change) asks for, over a phase of `len` s that starts on a run-time
+    /// condition, as the action `name`: a sinusoidal LaneChangeAction over `len` to the
+    /// actor's own lane (a RelativeTargetLane of 0 on itself) at that targetLaneOffset, so the
+    /// change starts from the offset the actor has then (a LaneOffsetAction gives no duration,
+    /// only a peak lateral acceleration, which depends on that offset). The lane's width is
+    /// taken where the plan last knows the actor.
+    pub(super) fn start_offset_change(
+        &self,
+        m: &Modifier,
+        target: &str,
+        len: f64,
+        name: String,
+    ) -> Result<Planned, Error> {
+        let t = self.last_known();
+        let w = self
+            .road
+            .lane_width(self.track(target).lane(t), self.s_at(target, t));
+        let o1 = lateral::lane_offset(m, w, self.width(target))?;
+        let change = LateralAction::LaneChange {
+            target_lane_offset: Some(o1),
+            dynamics: TransitionDynamics {
+                dynamics_shape: DynamicsShape::Sinusoidal,
+                dynamics_dimension: DynamicsDimension::Time,
+                value: len,
+                following_mode: None,
+            },
+            target: LaneChangeTarget::Relative {
+                entity_ref: target.to_string(),
+                value: 0,
+            },
+        };
+        Ok(Planned::with_phase(
+            target,
+            name,
+            PrivateAction::Lateral(change),
+            &m.site,
+        ))
     }
 
     /// A form whose value needs another actor's speed at a run-time start.

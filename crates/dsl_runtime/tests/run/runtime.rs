@@ -243,3 +243,28 @@ fn change_and_assign_position_after_an_until_start_where_the_engine_finds_the_ac
     let ego = r.at(5.65, "ego");
     assert!((ego.x - 320.0).abs() < S_TOL && ego.lane == -2, "{ego:?}");
 }
+
+#[test]
+fn a_lateral_position_at_the_end_after_an_until_starts_from_the_engines_offset() {
+    let r = run("runtime_lateral", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.shift", 3.35, 5.35),
+            ("do.hold", 5.35, 6.35),
+        ],
+    );
+    // y = −5.25 + 0.5·(1 − cos(π·τ/2)), τ from 3.35 s.
+    let y = |t: f64| -5.25 + 0.5 * (1.0 - (std::f64::consts::PI * (t - 3.35) / 2.0).cos());
+    for t in [3.35, 3.85, 4.35, 5.35, 6.0] {
+        let ego = r.at(t, "ego");
+        let want = y(t.min(5.35));
+        assert!(
+            (ego.y - want).abs() < 1e-6 && ego.lane == -2,
+            "{t}: {ego:?}, want {want}"
+        );
+    }
+    let t = r.when("do.hold/ego/1:check", "End").expect("the check ran");
+    assert!((t - 5.35).abs() < T_TOL, "check at {t}");
+}
