@@ -301,7 +301,10 @@ impl Planner<'_> {
                                     let t = self.last_known();
                                     let (x, sign, d) = self.position_target(m, target, t)?;
                                     if m.arg("distance").is_none() {
-                                        return Err(self.unknown_speed(m, "distance"));
+                                        return Err(m.site.err(
+                                            K::Unsatisfiable,
+                                            "expected a distance in position(…, at: end) of a phase without a duration that starts on a run-time condition, found a time or none: the engine's condition that ends the phase measures a fixed distance (give a distance, or the phase a duration)",
+                                        ));
                                     }
                                     let w = self.gap_reached(m, target, x.as_deref(), sign, d)?;
                                     derived = all_of(derived, Some(w));

@@ -11,7 +11,7 @@
 //! | `lane(n [, from: left])` (at: start, all) | the engine's check: the actor in that driving lane |
 //! | `lane(same_as/side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor in the lane counted from x's, as a RelativeTargetLane counts |
 //! | `position(d)` (at: start, all) | the engine's check: the actor at s = d (0.5 m) |
-//! | `position(d, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road (0.5 m) |
+//! | `position(d / time: t / neither, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road, d the distance, t at x's speed then, or the default gap (0.5 m) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre (1 cm) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal LaneChangeAction over T into the actor's own lane at that offset |
@@ -21,18 +21,18 @@
 //! a run-time start is not known before the run.
 //!
 //! Lanes are numbered (and lane widths taken) where the plan last knows the actor: a road whose
-//! lanes change between there and the run-time start may number them otherwise. Forms whose
-//! value depends on another actor's speed (`position(time: t, …)`, a position relative to x
-//! without a distance) are errors there: after a run-time start the plan does not know that
-//! actor's state, and the engine's check takes no value from it.
+//! lanes change between there and the run-time start may number them otherwise. A gap that
+//! depends on another actor's speed (`position(time: t, …)`, or the default gap) is measured
+//! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
     DynamicsDimension, DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction,
-    PrivateAction, StateCheck, TransitionDynamics, Travel, TravelGoal,
+    PrivateAction, SpeedGap, StateCheck, TransitionDynamics, Travel, TravelGoal,
 };
 
 use super::lateral;
 use super::motion::{check_speed, end_speed_mod, holds_speed};
+use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
 use super::types::{
     Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE,
@@ -100,17 +100,10 @@ impl Planner<'_> {
                     })?;
                 check.lane = Some((self.road.id().to_string(), lane));
             }
-            ModKind::Position => {
-                if m.arg("time").is_some() {
-                    return Err(relative("time"));
-                }
-                let (x, sign, d) = self.position_target(m, target, t)?;
-                match x {
-                    // x − actor = −sign·d (ahead_of: the actor d ahead of x).
-                    Some(x) => check.gap = Some((x, -sign * d, POSITION_TOLERANCE)),
-                    None => check.s = Some((d, POSITION_TOLERANCE)),
-                }
-            }
+            ModKind::Position => match self.speed_gap(m, target)? {
+                Some(gap) => check.gap = Some((gap, POSITION_TOLERANCE)),
+                None => check.s = Some((self.position_target(m, target, t)?.2, POSITION_TOLERANCE)),
+            },
             ModKind::Lateral => {
                 if lateral::reference(m)?.is_some() {
                     return Err(relative("side_of"));
@@ -167,29 +160,22 @@ impl Planner<'_> {
                 }
             }
         } else {
-            if m.arg("time").is_some() {
-                return Err(self.unknown_speed(m, "time"));
-            }
             if self.road.ids().len() > 1 {
                 return Err(self.several_roads(m));
             }
-            match self.position_target(m, target, self.last_known())? {
-                (Some(x), sign, d) => TravelGoal::FromEntity {
-                    entity_ref: x,
-                    offset: sign * d,
-                },
-                (None, _, d) => TravelGoal::RoadS(d),
+            match self.speed_gap(m, target)? {
+                Some(gap) => TravelGoal::FromEntity(gap),
+                None => TravelGoal::RoadS(self.position_target(m, target, self.last_known())?.2),
             }
         };
-        if matches!(goal, TravelGoal::FromEntity { .. }) && m.arg("distance").is_none() {
-            // The default distance is 2 s at x's speed: not known before the run.
-            return Err(self.unknown_speed(m, "distance"));
-        }
         let end_speed = match ve_given {
             Some(q) => {
                 let (v, relative) = self.speed_value(q, None)?;
                 if relative.is_some() {
-                    return Err(self.unknown_speed(q, "same_as/faster_than/slower_than"));
+                    return Err(q.site.err(
+                        K::Unsupported,
+                        format!("expected an absolute end speed beside {}(…) in a phase that starts on a run-time condition, found a speed relative to another actor (the engine works the profile out at the start, before that actor's speed at the end is known)", m.name),
+                    ));
                 }
                 check_speed(q, v)?;
                 self.last_v.insert(target.to_string(), v);
@@ -256,12 +242,30 @@ impl Planner<'_> {
         ))
     }
 
-    /// A form whose value needs another actor's speed at a run-time start.
-    pub(super) fn unknown_speed(&self, m: &Modifier, key: &str) -> Error {
-        m.site.err(
-            K::Unsupported,
-            format!("expected {}(…) without `{key}` (or with an explicit distance) after a run-time condition, found it: its value is another actor's speed then, which the plan does not know (not run yet)", m.name),
-        )
+    /// Where `position(…, ahead_of/behind: x)` puts `target` relative to x, as the engine
+    /// measures it at the moment (`None` without a reference): a distance, a time at x's speed
+    /// then, or without either the default (`place::default_distance`: 2 s at x's speed, at
+    /// least 10 m between the facing bumpers).
+    fn speed_gap(&self, m: &Modifier, target: &str) -> Result<Option<SpeedGap>, Error> {
+        let (x, ahead) = match (m.arg("ahead_of"), m.arg("behind")) {
+            (Some(e), _) => (self.entity_of(e)?, true),
+            (None, Some(e)) => (self.entity_of(e)?, false),
+            (None, None) => return Ok(None),
+        };
+        let (time, at_least) = match (m.arg("distance"), m.arg("time")) {
+            (Some(d), _) => (0.0, d.number()?),
+            (None, Some(t)) => (t.number()?, 0.0),
+            (None, None) => (
+                DEFAULT_TIME_GAP,
+                GROUP_GAP + self.facing_overhangs(target, &x, !ahead),
+            ),
+        };
+        Ok(Some(SpeedGap {
+            entity_ref: x,
+            ahead,
+            time,
+            at_least,
+        }))
     }
 
     /// A lane or position at a run-time start on a plan over several roads.

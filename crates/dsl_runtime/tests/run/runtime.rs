@@ -107,6 +107,19 @@ fn a_failed_check_at_a_run_time_start_is_an_error_record_and_a_failed_run() {
 /// Speeds set by linear pieces: exact up to float round-off.
 const V_TOL: f64 = 1e-9;
 
+/// Runs `tests/scenarios/NAME.osc`, which must fail: its error starts with `want` and ends with
+/// `tail`, and is the one error record of the event log, by `element` at `t`.
+fn fails(name: &str, (want, tail): (&str, &str), element: &str, t: f64) {
+    let lowered = super::support::lower(name, 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = super::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - t).abs() < T_TOL, "{records:?}");
+    assert_eq!(records[0].1, element);
+    assert_eq!(records[0].2, error);
+}
+
 /// Each (phase, start, end) of `want` started and ended then.
 fn phases(r: &super::support::Run, want: &[(&str, f64, f64)]) {
     for (path, a, b) in want {
@@ -155,17 +168,14 @@ fn position_and_distance_at_the_end_after_an_until_are_the_engines_profiles() {
 
 #[test]
 fn a_position_beyond_the_limits_after_an_until_is_an_error_record_and_a_failed_run() {
-    let lowered =
-        super::support::lower("runtime_travel_fails", 0, None).unwrap_or_else(|e| panic!("{e}"));
-    let (error, records) = super::support::run_to_error(&lowered.scenario);
-    let error = error.expect("the run fails");
     let want = "expected 'ego' between 0 and 70 m/s (position(…) at ";
     let tail = "runtime_travel_fails.osc:20:13), found 133.000 m in 2 s from 20.000 m/s: 20.000 → 113.000 → 20.000 m/s at t = 3.350 s";
-    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
-    assert_eq!(records.len(), 1, "{records:?}");
-    assert!((records[0].0 - 3.35).abs() < T_TOL);
-    assert_eq!(records[0].1, "do.rush/ego/1:position");
-    assert_eq!(records[0].2, error);
+    fails(
+        "runtime_travel_fails",
+        (want, tail),
+        "do.rush/ego/1:position",
+        3.35,
+    );
 }
 
 #[test]
@@ -194,18 +204,16 @@ fn lanes_relative_to_another_actor_after_an_until_are_the_engines() {
 
 #[test]
 fn a_lane_left_of_another_actor_not_kept_is_an_error_record_and_a_failed_run() {
-    let lowered = super::support::lower("runtime_lane_relative_fails", 0, None)
-        .unwrap_or_else(|e| panic!("{e}"));
-    let (error, records) = super::support::run_to_error(&lowered.scenario);
-    let error = error.expect("the run fails");
     let want =
         "expected 'ego' in lane -2 of road 1, 1 lane to the left of 'npc''s lane -3 (lane(…) at ";
     let tail =
         "runtime_lane_relative_fails.osc:32:13), found it in lane -3 of road 1 at t = 5.350 s";
-    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
-    assert_eq!(records.len(), 1, "{records:?}");
-    assert!((records[0].0 - 5.35).abs() < T_TOL);
-    assert_eq!(records[0].1, "do.hold/ego/2:check");
+    fails(
+        "runtime_lane_relative_fails",
+        (want, tail),
+        "do.hold/ego/2:check",
+        5.35,
+    );
 }
 
 #[test]
@@ -267,4 +275,38 @@ fn a_lateral_position_at_the_end_after_an_until_starts_from_the_engines_offset()
     }
     let t = r.when("do.hold/ego/1:check", "End").expect("the check ran");
     assert!((t - 5.35).abs() < T_TOL, "check at {t}");
+}
+
+#[test]
+fn gaps_at_the_other_actors_speed_after_an_until_are_the_engines() {
+    let r = run("runtime_time_gap", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.close", 3.35, 7.35),
+            ("do.hold", 7.35, 8.35),
+        ],
+    );
+    assert!((r.at(5.35, "ego").speed - 17.9).abs() < V_TOL);
+    let (ego, lead) = (r.at(7.35, "ego"), r.at(7.35, "lead"));
+    assert!(
+        (ego.s - 242.8).abs() < S_TOL && (lead.s - ego.s - 16.0).abs() < S_TOL,
+        "{ego:?}"
+    );
+    let t = r.when("do.hold/ego/1:check", "End").expect("the check ran");
+    assert!((t - 7.35).abs() < T_TOL, "check at {t}");
+    assert!((r.at(7.4, "ego").speed - 8.0).abs() < V_TOL);
+}
+
+#[test]
+fn a_time_gap_not_kept_after_an_until_is_an_error_record_and_a_failed_run() {
+    let want = "expected 'lead' 24.000 m from 'ego' along the road (within 0.5 m) (position(…) at ";
+    let tail = "runtime_time_gap_fails.osc:27:13), found 16.000 m at t = 7.350 s";
+    fails(
+        "runtime_time_gap_fails",
+        (want, tail),
+        "do.hold/ego/1:check",
+        7.35,
+    );
 }

@@ -94,10 +94,12 @@ pub(crate) fn start(
             ));
         }
     }
-    if let Some((other, gap, tol)) = &check.gap {
-        let there: Option<&RoadPosition> = world
-            .id(other)
-            .and_then(|o| world.entity(o).road_position.as_ref());
+    if let Some((g, tol)) = &check.gap {
+        let other = &g.entity_ref;
+        let x = world.id(other).map(|o| world.entity(o));
+        let there: Option<&RoadPosition> = x.and_then(|o| o.road_position.as_ref());
+        // x − actor along the road, at x's speed now.
+        let gap = -g.offset(x.map_or(0.0, |o| o.speed));
         let Some(there) = there.filter(|p| p.road_id == at.road_id) else {
             return Err(fail(
                 format!("'{other}' on road {} beside '{}'", at.road_id, e.name),

@@ -68,7 +68,8 @@ pub(crate) fn start(
             );
             let s1 = match goal {
                 TravelGoal::RoadS(s) => *s,
-                TravelGoal::FromEntity { entity_ref, offset } => {
+                TravelGoal::FromEntity(gap) => {
+                    let entity_ref = &gap.entity_ref;
                     let x = world
                         .id(entity_ref)
                         .map(|x| world.entity(x))
@@ -96,7 +97,7 @@ pub(crate) fn start(
                             format!("the lane ends first ({err})"),
                         )
                     })?;
-                    s_x + offset
+                    s_x + gap.offset(x.speed)
                 }
                 _ => return Err(Error::unsupported("this TravelAction goal", pos)),
             };

@@ -57,9 +57,36 @@ pub struct StateCheck {
     /// The actor's lateral offset from its lane's centre (m, positive left) and the tolerance
     /// (m).
     pub offset: Option<(f64, f64)>,
-    /// Another entity, the distance along the road from the actor's reference point to that
-    /// entity's (m, positive when the other is ahead in the road's s), and the tolerance (m).
-    pub gap: Option<(String, f64, f64)>,
+    /// Where the actor must be along the road relative to another entity, and the tolerance
+    /// (m).
+    pub gap: Option<(SpeedGap, f64)>,
+}
+
+/// A place along the road relative to another entity, at a distance that may depend on that
+/// entity's speed v at the moment it is measured: the actor's s minus the entity's (reference
+/// points) is ±max(time·|v|, at_least) m, + when the actor is ahead.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpeedGap {
+    /// The other entity.
+    pub entity_ref: String,
+    /// The actor ahead of the entity (else behind it).
+    pub ahead: bool,
+    /// The time at the entity's speed (s).
+    pub time: f64,
+    /// The least distance (m).
+    pub at_least: f64,
+}
+
+impl SpeedGap {
+    /// The actor's s minus the entity's when the entity moves at `v` (m/s).
+    pub fn offset(&self, v: f64) -> f64 {
+        let d = (self.time * v.abs()).max(self.at_least);
+        if self.ahead {
+            d
+        } else {
+            -d
+        }
+    }
 }
 
 /// A transition (XSD `TransitionDynamics`).
@@ -182,14 +209,9 @@ pub enum TravelGoal {
     Distance(f64),
     /// At this s (m) of the road the actor is on.
     RoadS(f64),
-    /// At `offset` m from where the entity `entity_ref` is at the end (positive: ahead of it
-    /// in the road's s), the entity taken to keep the speed it has at the start along its lane.
-    FromEntity {
-        /// The reference entity.
-        entity_ref: String,
-        /// The actor's s minus the entity's at the end (m).
-        offset: f64,
-    },
+    /// At that place relative to where the entity is at the end, the entity taken to keep the
+    /// speed it has at the start along its lane (so the gap's speed is that one too).
+    FromEntity(SpeedGap),
 }
 
 /// A speed profile entry (XSD `SpeedProfileEntry`).
