@@ -599,11 +599,18 @@ impl Planner<'_> {
                 lane: &lane,
                 s: &s,
             };
-            let checked = alongs
+            let checked: Result<Vec<_>, Error> = alongs
                 .iter()
-                .try_for_each(|(at, a)| route::check(&self.road, a, *at, mods, &on, &mut shared));
+                .map(|(at, a)| {
+                    route::check(&self.road, a, *at, mods, &on, &mut shared)
+                        .map(|start| start.map(|start| (a.site.clone(), start)))
+                })
+                .collect();
             self.route_lanes = shared;
-            checked?;
+            // Named routes at a run-time start: the engine's check there.
+            for (site, start) in checked?.into_iter().flatten() {
+                out.push(self.route_check(&site, target, start, name("check"))?);
+            }
         }
         Ok(derived)
     }

@@ -27,9 +27,19 @@ pub(crate) struct OnRoute<'f> {
     pub s: &'f dyn Fn(f64) -> f64,
 }
 
+/// Where an actor must be when a phase that starts at run time starts, for the engine to
+/// check: the route's lane and its interval of s on the plan road (m, tolerance included).
+pub(crate) struct StartOnRoute {
+    /// The route's lane.
+    pub lane: i32,
+    /// The least and the greatest s.
+    pub s: (f64, f64),
+}
+
 /// Checks that an actor follows `along` in its phase (`at`: when the modifier holds), with
 /// the invocation's other modifiers `mods`. `shared` records, per free one-lane route, the
-/// lane and the first actor found along it.
+/// lane and the first actor found along it. A named route at a phase start the plan does not
+/// know is returned, for the engine to check there.
 pub(crate) fn check(
     road: &PlanRoad<'_>,
     along: &Along,
@@ -37,7 +47,7 @@ pub(crate) fn check(
     mods: &[Modifier],
     on: &OnRoute<'_>,
     shared: &mut HashMap<String, (i32, String)>,
-) -> Result<(), Error> {
+) -> Result<Option<StartOnRoute>, Error> {
     let actor = on.actor;
     let one_lane = match &along.route {
         Route::Free { one_lane, .. } => *one_lane,
@@ -86,14 +96,15 @@ pub(crate) fn check(
         ),
     };
     let mut moments = Vec::new();
+    let mut at_run_time = None;
     if at != At::End {
         match (on.t0, &along.route) {
             (Some(t), _) => moments.push(("start", t)),
-            (None, Route::Lane { .. }) => {
-                return Err(along.site.err(
-                    K::Unsatisfiable,
-                    "expected a phase start the plan knows for along(…) on a named route, found one after a run-time condition",
-                ))
+            (None, Route::Lane { lane, .. }) => {
+                at_run_time = Some(StartOnRoute {
+                    lane: *lane,
+                    s: (lo - ROUTE_TOLERANCE, hi + ROUTE_TOLERANCE),
+                })
             }
             (None, Route::Free { .. }) => {}
         }
@@ -148,7 +159,7 @@ pub(crate) fn check(
             ));
         }
     }
-    Ok(())
+    Ok(at_run_time)
 }
 
 /// Checks that a named route lies on a road of the plan, in one of its driving lanes in +s.

@@ -14,6 +14,7 @@
 //! | `position(d / time: t / neither, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road, d the distance, t at x's speed then, or the default gap (0.5 m) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre (1 cm) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
+//! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
 //! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal LaneChangeAction over T into the actor's own lane at that offset |
 //!
 //! The engine measures lanes and s on the road the actor is on, so on a plan over several
@@ -34,10 +35,11 @@ use super::lateral;
 use super::motion::{check_speed, end_speed_mod, holds_speed};
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
+use super::route::StartOnRoute;
 use super::types::{
     Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE,
 };
-use crate::error::{Error, ErrorKind as K};
+use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Arg, ModKind, Modifier, Val};
 
 impl Planner<'_> {
@@ -266,6 +268,43 @@ impl Planner<'_> {
             time,
             at_least,
         }))
+    }
+
+    /// The engine's check that `target` is on a named route (`along(…)` at `site`) at the
+    /// start of a phase that starts on a run-time condition, as the action `name`: in the
+    /// route's lane, its s within the route's interval (checked as s at the interval's middle
+    /// within half its length).
+    pub(super) fn route_check(
+        &self,
+        site: &Site,
+        target: &str,
+        start: StartOnRoute,
+        name: String,
+    ) -> Result<Planned, Error> {
+        if self.road.ids().len() > 1 {
+            return Err(site.err(
+                K::Unsupported,
+                format!(
+                    "expected along(…) on a named route at the start of a phase that starts on a run-time condition on a plan over one road, found roads {} (the road the actor is on then is not known before the run)",
+                    self.road.ids().join(", ")
+                ),
+            ));
+        }
+        let (lo, hi) = start.s;
+        let check = StateCheck {
+            what: format!("along(…) at {}", site.at()),
+            lane: Some((self.road.id().to_string(), start.lane)),
+            lane_of: None,
+            s: Some(((lo + hi) / 2.0, (hi - lo) / 2.0)),
+            offset: None,
+            gap: None,
+        };
+        Ok(Planned::with_phase(
+            target,
+            name,
+            PrivateAction::Check(Box::new(check)),
+            site,
+        ))
     }
 
     /// A lane or position at a run-time start on a plan over several roads.

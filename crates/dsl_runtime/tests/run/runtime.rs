@@ -310,3 +310,25 @@ fn a_time_gap_not_kept_after_an_until_is_an_error_record_and_a_failed_run() {
         7.35,
     );
 }
+
+#[test]
+fn a_named_route_after_an_until_is_the_engines_check() {
+    let lowered = super::support::lower("runtime_along", 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = super::support::run_to_error(&lowered.scenario);
+    // do.on_route's check passed at 3.35 s (no record); do.off_route's failed at 4.35 s.
+    let error = error.expect("the run fails");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert_eq!(records[0].1, "do.off_route/ego/1:check");
+    assert!((records[0].0 - 4.35).abs() < T_TOL, "{records:?}");
+    // The route's interval: from 250 m to the road's end at 1000 m, 0.5 m more each side;
+    // its middle 625 m and half its length 375.5 m.
+    let want = "expected 'ego' at s = 625.000 m (within 375.5 m) (along(…) at ";
+    assert!(
+        error.starts_with(want) && error.contains("runtime_along.osc:27:13"),
+        "{error}"
+    );
+    assert!(
+        error.ends_with("found it at s = 187.000 m at t = 4.350 s"),
+        "{error}"
+    );
+}
