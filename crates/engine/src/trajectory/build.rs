@@ -446,19 +446,6 @@ fn nurbs<S: PointSource + ?Sized>(
     }
     let timed = point_times(&points, "ControlPoint")?.is_some();
     let curve = Nurbs::new(degree, n.knots.clone(), control);
-    let times = timed.then(|| {
-        // Sampled at the arc-length table's rows; the running maximum keeps the table
-        // monotone against round-off (non-decreasing control times give a non-decreasing
-        // t(u) by the variation-diminishing property of B-splines).
-        let mut t_max = Real::NEG_INFINITY;
-        let pairs = curve
-            .table_s()
-            .map(|s| {
-                t_max = t_max.max(curve.eval(s).1);
-                (s, t_max)
-            })
-            .collect();
-        TimeTable::new(pairs)
-    });
+    let times = timed.then(|| TimeTable::new(curve.time_samples()));
     Ok((Piece::Nurbs(Box::new(curve)), times))
 }

@@ -14,6 +14,12 @@
 //! error is therefore of the order of that tolerance per interval. s → u inverts the table by
 //! Newton's method on the interval holding s, safeguarded by bisection, to
 //! `opendrive::SOLVER_TOLERANCE`.
+//!
+//! Time: the follower reads s(t) by linear interpolation between (s, t) samples of the curve
+//! ([`Nurbs::time_samples`]). The arc-length rows alone are too sparse where t(u) is not
+//! linear (an end span of a clamped knot vector: ASAM's FollowTrajectory_Nurbs put the car
+//! 1 ms, 1.3 cm, behind its curve at 1 s), so each row interval is halved while the curve's
+//! time at its middle differs from the chord's by more than [`TIME_SAMPLE_TOLERANCE`].
 
 use opendrive::{normalize_angle, Real, SOLVER_TOLERANCE};
 
@@ -26,6 +32,12 @@ pub const ARC_LENGTH_TOLERANCE: Real = 1e-10;
 /// leaves each): bounds the work on curves whose speed has a kink (a cusp where control
 /// points coincide), where the quadrature converges slowly.
 const MAX_DEPTH: u32 = 12;
+/// Accepted difference (s) between the curve's time at the middle of two time samples and the
+/// linear interpolation between them (1e-7 s: 5 µm at 50 m/s).
+pub const TIME_SAMPLE_TOLERANCE: Real = 1e-7;
+/// Deepest halving of an arc-length row interval when sampling the time (2²⁰ samples at most
+/// each; the chord error falls by 4 a halving, so 1e-3 s needs 7).
+const MAX_TIME_DEPTH: u32 = 20;
 /// Intervals each knot span starts with before adaptive halving.
 const START_PANELS: usize = 4;
 
@@ -216,8 +228,45 @@ impl Nurbs {
         (point, j.c[3])
     }
 
-    /// The arc lengths of the table rows, where the time component is sampled for s(t).
-    pub(crate) fn table_s(&self) -> impl Iterator<Item = Real> + '_ {
-        self.table.iter().map(|r| r.s)
+    /// (s, t) samples of the curve's time component for s(t) by linear interpolation: the
+    /// arc-length rows, each interval halved while the time at its middle is further than
+    /// [`TIME_SAMPLE_TOLERANCE`] from the chord. The running maximum keeps the samples
+    /// monotone against round-off (non-decreasing control times give a non-decreasing t(u)
+    /// by the variation-diminishing property of B-splines).
+    pub(crate) fn time_samples(&self) -> Vec<(Real, Real)> {
+        let mut out: Vec<(Real, Real)> = Vec::with_capacity(self.table.len());
+        let time = |s: Real| self.eval(s).1;
+        for (i, r) in self.table.iter().enumerate() {
+            let t = time(r.s);
+            if i > 0 {
+                let (s0, t0) = out[out.len() - 1];
+                self.refine_time((s0, t0), (r.s, t), 0, &mut out);
+            }
+            let t_max = out.last().map_or(t, |&(_, m)| m.max(t));
+            out.push((r.s, t_max));
+        }
+        out
+    }
+
+    /// Pushes the samples strictly inside (a, b) that bring the chord within tolerance.
+    fn refine_time(
+        &self,
+        a: (Real, Real),
+        b: (Real, Real),
+        depth: u32,
+        out: &mut Vec<(Real, Real)>,
+    ) {
+        let sm = 0.5 * (a.0 + b.0);
+        let tm = self.eval(sm).1;
+        if (tm - 0.5 * (a.1 + b.1)).abs() <= TIME_SAMPLE_TOLERANCE
+            || depth >= MAX_TIME_DEPTH
+            || b.0 - a.0 <= 0.0
+        {
+            return;
+        }
+        self.refine_time(a, (sm, tm), depth + 1, out);
+        let t_max = out.last().map_or(tm, |&(_, m)| m.max(tm));
+        out.push((sm, t_max));
+        self.refine_time((sm, tm), b, depth + 1, out);
     }
 }

@@ -20,6 +20,11 @@
 //! its magnitude, the direction being the target's), and a stop trigger 3 s after an
 //! endTransition.
 //!
+//! `asam_sequential_implicit.xosc` (after SequentialEvents_0-100-0kph_Implicit): the order of
+//! the two Events follows from Ego's state (SpeedCondition ≥ 27.78, rising edge) and the
+//! braking Event's priority override, which stops the accelerating one (1.3 Priority
+//! override: the other running Events of the Maneuver are stopped when it starts).
+//!
 //! `asam_close_crossing.xosc` (after CloseVehicleCrossing): a catalog trajectory (timed
 //! Polyline (100, 50) → (100, −50) in 10 s, `asam_catalogs/`), TrajectoryPosition placements
 //! in the Init, FollowTrajectoryAction with `initialDistanceOffset` and relative Timing, Events
@@ -119,6 +124,32 @@ fn sequential_events_equivalent_accelerates_then_brakes_then_stops_the_run() {
     let stop = at("storyBoard", Transition::Stop);
     assert_eq!(stop.len(), 1, "{stop:?}");
     assert!((stop[0] - 16.95).abs() < TIME_TOL, "{stop:?}");
+}
+
+#[test]
+fn sequential_events_implicit_equivalent_orders_the_events_by_the_speed() {
+    let (_, rows, events) = run("asam_sequential_implicit.xosc", &[]);
+    let at = |name: &str, t: Transition| transitions(&events, name, t);
+    // The Act and AccelerateEvent start at 0.05 s (SimulationTime > 0); 4 m/s² is 0.2 m/s a
+    // step, so the speed at 0.05 + 0.05k is 0.2k: 27.6 at 6.95 s, 27.8 ≥ 27.78 at 7.00 s
+    // (k = 139), where BrakeEvent's rising edge starts it. Its priority override stops the
+    // running AccelerateEvent (target 30 m/s, never reached) in the same step.
+    assert!((at("AccelerateEvent", Transition::Start)[0] - 0.05).abs() < TIME_TOL);
+    assert!((at("BrakeEvent", Transition::Start)[0] - 7.0).abs() < TIME_TOL);
+    let stopped = at("AccelerateEvent", Transition::Stop);
+    assert_eq!(stopped.len(), 1, "{stopped:?}");
+    assert!((stopped[0] - 7.0).abs() < TIME_TOL);
+    assert!(at("AccelerateEvent", Transition::End).is_empty());
+    // s(7.0) = 20 + 0.05·0.2·Σ_{k=1..139} k = 20 + 97.3 = 117.3 m at 27.8 m/s.
+    let r = rows.at("Ego", 7.0);
+    assert!((r.x - 117.3).abs() < POS_TOL && (r.speed - 27.8).abs() < POS_TOL);
+    // Braking 0.2 m/s a step from 27.8: rest after 139 steps, in the step that starts at
+    // 13.90 s; s = 117.3 + 0.05·0.2·Σ_{j=0..138} j = 117.3 + 95.91 = 213.21 m.
+    assert!((at("BrakeEvent", Transition::End)[0] - 13.90).abs() < TIME_TOL);
+    let rest = rows.at("Ego", 14.0);
+    assert!(rest.speed.abs() < POS_TOL && (rest.x - 213.21).abs() < POS_TOL);
+    // endTransition seen at 13.95 s, delay 3 s: the storyboard stops at 16.95 s.
+    assert!((at("storyBoard", Transition::Stop)[0] - 16.95).abs() < TIME_TOL);
 }
 
 #[test]

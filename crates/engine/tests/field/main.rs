@@ -11,6 +11,9 @@ mod support;
 
 mod against_s;
 mod asam_examples;
+mod asam_lane_changes;
+mod asam_sync_nurbs;
+mod asam_traffic_jams;
 mod clearance;
 mod empty_elements;
 mod group_state;

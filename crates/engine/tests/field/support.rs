@@ -39,3 +39,16 @@ pub fn transitions(events: &[EventRecord], name: &str, transition: Transition) -
         })
         .collect()
 }
+
+/// Asserts that each `(name, x, y)` is at that world point in the frame at `t`, within `tol`.
+pub fn assert_at(rows: &Recorder, t: f64, expected: &[(&str, f64, f64)], tol: f64) {
+    for &(name, x, y) in expected {
+        let r = rows.at(name, t);
+        assert!(
+            (r.x - x).abs() < tol && (r.y - y).abs() < tol,
+            "{name} at {t}: ({}, {}), expected ({x}, {y})",
+            r.x,
+            r.y
+        );
+    }
+}
