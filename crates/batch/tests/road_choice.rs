@@ -9,6 +9,10 @@
 //! car, long: 9 m) and three speeds, 40 m/s breaking the `Speed` constraint
 //! (greaterThan 0, lessOrEqual 30). Ego starts at s = 10 in lane -1 and the run stops when it
 //! reaches the end of its road.
+//!
+//! The equivalents of ASAM's EndOfTrafficJamParameterSet and
+//! SlowPrecedingVehicleStochasticParameterSet (`files/asam_*_set.xosc`) sweep the engine's
+//! EndOfTrafficJam equivalent over two roads and over drawn speeds.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -94,4 +98,70 @@ fn variants_get_their_own_catalogs_and_share_a_road_only_where_the_file_is_the_s
     assert!(!Arc::ptr_eq(&na, &nc));
     assert_eq!(na.road("1").map(|r| r.length), Some(500.0));
     assert_eq!(nc.road("1").map(|r| r.length), Some(300.0));
+}
+
+/// The equivalent of ASAM's EndOfTrafficJamParameterSet (`files/asam_end_of_traffic_jam_set.xosc`
+/// over the engine's `asam_end_of_traffic_jam.xosc`): both roads run to the stop trigger
+/// (SimulationTime > 40: 40.05 s). Ego (27.778 m/s, no controller model: the default controller
+/// drives it) runs into A1 (22.222 m/s, braking at 5 m/s² to 19.444 m/s from 4.55 s), on either
+/// road in its lane: Ego's front x + 3.75 (box centre 1.5, length 4.5) meets A1's rear
+/// x_A1 − 0.85 when 1003.75 + 27.778·t = 1313.4794 + 19.444·(t − 5.15) − 0.85, t = 25.047 s
+/// (A1 at 1313.4794 m at 5.15 s: engine field test asam_traffic_jams): the first frame with
+/// the boxes overlapping is 25.05 s.
+#[test]
+fn the_end_of_traffic_jam_parameter_set_sweeps_both_roads() {
+    let plan = Plan::load(&file("asam_end_of_traffic_jam_set.xosc")).unwrap();
+    assert_eq!(plan.parameters, ["Road_Logics", "Road_SceneGraph"]);
+    let table = run(&plan, &Options::default(), &|_, _| {}).unwrap();
+    assert_eq!(table.rows.len(), 2);
+    for row in &table.rows {
+        let o = row
+            .result
+            .as_ref()
+            .unwrap_or_else(|e| panic!("variant {}: {e}", row.variant));
+        assert_eq!(o.stop, Some(StopReason::StopTrigger));
+        assert!((o.end_time - 40.05).abs() < TIME_TOL, "{}", o.end_time);
+        let first = o.first_collision_time.expect("Ego runs into A1");
+        assert!((first - 25.05).abs() < TIME_TOL, "{first}");
+    }
+    assert!(summary(&table).starts_with("2 variants, 0 failed"));
+}
+
+/// The equivalent of ASAM's SlowPrecedingVehicleStochasticParameterSet
+/// (`files/asam_stochastic_set.xosc`): 100 runs, Ego_Speed from the weighted set (weights 1, 3,
+/// 5, 10, 10, 5, 1 of 35), A1_Speed1 normal (22.222, σ = √10) within [15, 30]; every variant
+/// runs, and the plan is the same on every load (randomSeed 1).
+#[test]
+fn the_stochastic_parameter_set_draws_within_its_distributions_and_runs() {
+    let plan = Plan::load(&file("asam_stochastic_set.xosc")).unwrap();
+    assert_eq!(plan.parameters, ["Ego_Speed", "A1_Speed1"]);
+    assert_eq!(plan.variants.len(), 100);
+    let again = Plan::load(&file("asam_stochastic_set.xosc")).unwrap();
+    assert_eq!(plan.variants, again.variants);
+    let value =
+        |v: &std::collections::BTreeMap<String, String>, k: &str| -> f64 { v[k].parse().unwrap() };
+    let set = [10.0, 22.0, 25.0, 27.0, 28.0, 40.0, 60.0];
+    let mut common = 0;
+    let mut sum = 0.0;
+    for v in &plan.variants {
+        let ego = value(v, "Ego_Speed");
+        assert!(set.iter().any(|s| (s - ego).abs() < 1e-12), "{ego}");
+        if ego == 27.0 || ego == 28.0 {
+            common += 1;
+        }
+        let a1 = value(v, "A1_Speed1");
+        assert!((15.0..=30.0).contains(&a1), "{a1}");
+        sum += a1;
+    }
+    // 27 or 28 with probability 20/35: 57.1 of 100 expected, σ = √(100·0.571·0.429) = 4.95;
+    // within 4σ. The mean of the truncated normal (cut at −2.28σ and +2.46σ) is 0.033 above
+    // 22.222, the sample mean's σ is √10/10 = 0.32: within 4σ.
+    assert!((37..=77).contains(&common), "{common}");
+    assert!((sum / 100.0 - 22.222).abs() < 1.3, "{}", sum / 100.0);
+    let table = run(&plan, &Options::default(), &|_, _| {}).unwrap();
+    assert!(
+        summary(&table).starts_with("100 variants, 0 failed"),
+        "{}",
+        summary(&table)
+    );
 }

@@ -12,7 +12,7 @@
 //! | `line` | one straight piece of a Polyline |
 //! | `clothoid` | one clothoid piece (Clothoid, ClothoidSplineSegment) on the opendrive spiral |
 //! | `bspline` | B-spline evaluation by de Boor's algorithm (Cox–de Boor recursion) and its derivative |
-//! | `nurbs` | Nurbs: rational curve, validation, arc-length table |
+//! | `nurbs` | Nurbs: rational curve, validation, arc-length table, time samples |
 //! | `orientation` | the headings along a six-dimensional Polyline (§6.9) |
 //! | `time_table` | the (s, t) pairs of vertices and segment times; s(t), t(s) |
 //! | `follow` | TrajectoryFollowingMode `follow`: the timed motion within Performance limits |

@@ -34,7 +34,7 @@ pub const ARC_LENGTH_TOLERANCE: Real = 1e-10;
 const MAX_DEPTH: u32 = 12;
 /// Accepted difference (s) between the curve's time at the middle of two time samples and the
 /// linear interpolation between them (1e-7 s: 5 µm at 50 m/s).
-pub const TIME_SAMPLE_TOLERANCE: Real = 1e-7;
+pub(crate) const TIME_SAMPLE_TOLERANCE: Real = 1e-7;
 /// Deepest halving of an arc-length row interval when sampling the time (2²⁰ samples at most
 /// each; the chord error falls by 4 a halving, so 1e-3 s needs 7).
 const MAX_TIME_DEPTH: u32 = 20;

@@ -1,5 +1,6 @@
-//! Class 2 — positions past the end of a road (`position::beyond`): an s outside [0, length]
-//! of a RoadPosition or LanePosition continues on the road connected at that end, following
+//! Class 2 (issue 16) and issue 34 class 5 — positions past the end of a road
+//! (`position::beyond`): an s outside [0, length] of a RoadPosition or LanePosition
+//! continues on the road connected at that end, following
 //! the lane's links, as OpenSCENARIO 1.3 prescribes for the ds of RelativeRoadPosition and
 //! RelativeLanePosition ("the reference line … continues seamlessly on the connecting road");
 //! t and the lane offset keep their side. Where nothing connects the position is refused,
@@ -8,6 +9,8 @@
 //! Fixture `past_road_end.xosc` on `two_roads_lane_end.xodr`: road 1 (x from 0 to 100)
 //! continues as road 2 (x from 100 to 500), both along +x, y = t; lanes 1 and -1 are 3.5 m
 //! wide (centres t = ±1.75), linked across; road 1 has no predecessor, road 2 no successor.
+//! `sync_past_road_end.xosc` on the same road: SynchronizeAction targets past road 1's end
+//! resolve through the same position code.
 
 use std::f64::consts::PI;
 
@@ -88,4 +91,32 @@ fn a_position_past_an_end_with_nothing_connected_is_refused_at_load() {
         err.contains("found -5 at ") && err.contains("past_road_end.xosc:48:"),
         "{err}"
     );
+}
+
+#[test]
+fn synchronize_targets_past_a_road_end_are_reached_on_the_successor() {
+    // Issue 34 class 5 (`sync_past_road_end.xosc`): the SynchronizeAction's TargetPositionMaster
+    // (1, -1, s = 150) and TargetPosition (1, -1, s = 140) lie past road 1's end (100 m): 50 m
+    // and 40 m into road 2, x = 150 and 140. The master Ego covers 110 m at 10 m/s in
+    // 11.00 s; the NPC must cover 140 m in the same time, arriving in that frame.
+    let (_, rows, events) = run("sync_past_road_end.xosc", &[]);
+    for (name, x, s) in [("Ego", 150.0, 50.0), ("NPC", 140.0, 40.0)] {
+        let r = rows.at(name, 11.0);
+        assert!(
+            (r.x - x).abs() < POS_TOL && (r.y + 1.75).abs() < POS_TOL,
+            "{name}: {r:?}"
+        );
+        let road = r.road.as_ref().expect("on a road");
+        assert_eq!((road.0.as_str(), road.1), ("2", -1), "{name}");
+        assert!((road.2 - s).abs() < POS_TOL, "{name}: {road:?}");
+    }
+    // Before that frame the NPC is short of its target, and the action ends once it is there.
+    assert!(rows.at("NPC", 10.95).x < 140.0);
+    let end = crate::support::transitions(
+        &events,
+        "Init NPC SynchronizeAction",
+        engine::storyboard::Transition::End,
+    );
+    assert_eq!(end.len(), 1, "{end:?}");
+    assert!((11.0 - 1e-9..=11.05 + 1e-9).contains(&end[0]), "{end:?}");
 }
