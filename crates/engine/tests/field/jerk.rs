@@ -53,3 +53,25 @@ fn every_limit_of_a_distance_action_holds_at_every_step() {
     assert!((l.x - f.x - 20.0).abs() < 0.1, "gap {}", l.x - f.x);
     assert!((f.speed - 10.0).abs() < 0.05, "speed {}", f.speed);
 }
+
+#[test]
+fn the_distance_action_ramps_its_acceleration_at_the_rate_limit() {
+    // Issue 34 class 5, worked by hand from the limits: 90 m too far behind, the distance
+    // controller asks for more than maxAcceleration from the start (0.5 s), so the acceleration
+    // rises by maxAccelerationRate · dt = 0.1 m/s² a step until it reaches 3 m/s² after 30
+    // steps (1.5 s) and stays there: v(0.5 + 0.05k) = 10 + 0.05 · Σ_{j=1..k} 0.1j
+    // = 10 + 0.0025·k(k + 1), 12.325 m/s at 2.0 s, then + 0.15 m/s a step. (esmini applies the
+    // rate only while the acceleration grows, so it agrees here and departs when it falls.)
+    let (_, rows, _) = run("distance_jerk.xosc", &[]);
+    for k in 0..=30 {
+        let t = 0.5 + DT * f64::from(k);
+        let v = 10.0 + 0.0025 * f64::from(k * (k + 1));
+        let r = rows.at("Follower", t);
+        assert!((r.speed - v).abs() < LIMIT_TOL, "{t}: {} vs {v}", r.speed);
+    }
+    for k in 1..=8 {
+        let t = 2.0 + DT * f64::from(k);
+        let v = 12.325 + 0.15 * f64::from(k);
+        assert!((rows.at("Follower", t).speed - v).abs() < LIMIT_TOL, "{t}");
+    }
+}
