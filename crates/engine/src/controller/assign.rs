@@ -91,6 +91,7 @@ pub(crate) fn assign(
         active: ActiveDomains::default(),
         instance,
     };
+    let before = controllers.held_by(actor.index());
     let list = &mut controllers.of_mut(actor.index()).assigned;
     let same = |a: &Assigned| match (object, &a.object_controller) {
         (Some(o), Some(p)) => o == p,
@@ -107,7 +108,7 @@ pub(crate) fn assign(
             list.len() - 1
         }
     };
-    controllers.recount();
+    controllers.recount_entity(actor.index(), before);
     record(world, controllers, actor, slot, origin, note, events);
     let switch_on = ControllerDomains {
         longitudinal: activate.longitudinal.filter(|on| *on),
@@ -210,6 +211,7 @@ fn set_domains(
     let mut taken = Taken::default();
     let mut notes: Vec<String> = note.map(str::to_owned).into_iter().collect();
     let mut gave_back_lateral = false;
+    let before = controllers.held_by(actor.index());
     {
         let ctrl = controllers.of_mut(actor.index());
         let defined = ctrl.assigned[slot].defined();
@@ -266,7 +268,7 @@ fn set_domains(
             a.active.animation = on;
         }
     }
-    controllers.recount();
+    controllers.recount_entity(actor.index(), before);
     if gave_back_lateral {
         hand_back_lateral(world, controllers, actor);
     }
