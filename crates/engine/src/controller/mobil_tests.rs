@@ -3,7 +3,7 @@
 //! ([`judge_each`], [`decide_each`], [`step_each`]: the controller's code before issue 31),
 //! on many crowded highways and parameter sets.
 
-use opendrive::{Real, RoadNetwork};
+use opendrive::{Direction, Real, RoadNetwork};
 
 use super::*;
 use crate::controller::car_following::with_red_light;
@@ -164,6 +164,20 @@ fn crowded(n: usize, seed: u64) -> World {
     w
 }
 
+/// Calls `f` with the seed, world, lane index, car and view of every car of 40 crowded
+/// highways of 60 cars (seeds 1 to 40).
+fn for_each_view(mut f: impl FnMut(u64, &World, &LaneIndex, &Entity, &ControllerView<'_>)) {
+    for seed in 1..=40u64 {
+        let w = crowded(60, seed);
+        let index = LaneIndex::build(&w.network, w.entities());
+        for e in w.entities() {
+            let view =
+                ControllerView::new(10.0, e, w.entities(), &w.network, &index, None, &w.signals);
+            f(seed, &w, &index, e, &view);
+        }
+    }
+}
+
 /// On 40 highways of 60 cars, with four parameter sets (the defaults; egoistic with no
 /// threshold; a low b_safe that makes many changes unsafe; no keep-side bias) and desired
 /// speeds of 20 and 36 m/s, the step's command (acceleration and lane change) has the bits of
@@ -187,39 +201,69 @@ fn the_shortcut_gives_the_full_rule_bit_for_bit() {
         },
     ];
     let (mut changes, mut keeps) = (0, 0);
-    for seed in 1..=40u64 {
-        let w = crowded(60, seed);
-        let index = LaneIndex::build(&w.network, w.entities());
-        for e in w.entities() {
-            let view =
-                ControllerView::new(10.0, e, w.entities(), &w.network, &index, None, &w.signals);
-            for mobil in sets {
-                for desired in [20.0, 36.0] {
-                    let idm = IdmParameters {
-                        desired_speed: desired,
-                        ..IdmParameters::default()
-                    };
-                    let mut fast = MobilController::new(idm, true, mobil);
-                    let mut full = fast.clone();
-                    let (a, b) = (fast.step(&view, 0.05), step_each(&mut full, &view));
-                    assert_eq!(
-                        format!("{a:?}"),
-                        format!("{b:?}"),
-                        "seed {seed}, {}",
-                        e.name
-                    );
-                    match a {
-                        Command::Motion {
-                            lateral: Some(_), ..
-                        } => changes += 1,
-                        _ => keeps += 1,
-                    }
+    for_each_view(|seed, _, _, e, view| {
+        for mobil in sets {
+            for desired in [20.0, 36.0] {
+                let idm = IdmParameters {
+                    desired_speed: desired,
+                    ..IdmParameters::default()
+                };
+                let mut fast = MobilController::new(idm, true, mobil);
+                let mut full = fast.clone();
+                let (a, b) = (fast.step(view, 0.05), step_each(&mut full, view));
+                assert_eq!(
+                    format!("{a:?}"),
+                    format!("{b:?}"),
+                    "seed {seed}, {}",
+                    e.name
+                );
+                match a {
+                    Command::Motion {
+                        lateral: Some(_), ..
+                    } => changes += 1,
+                    _ => keeps += 1,
                 }
             }
         }
-    }
+    });
     assert!(
         changes > 500 && keeps > 5_000,
         "{changes} changes, {keeps} keeps"
     );
+}
+
+/// The view keeps the handle of the entity's own lane from its making and a lane beside's
+/// from `beside` (issue 31); on the 40 crowded highways its leader, follower and the leader and
+/// follower of each lane beside are, bit for bit, the searches made with the lane's handle
+/// asked of the network at each question (the view's code before).
+#[test]
+fn the_kept_lane_handles_give_the_searches_of_handles_asked_each_time() {
+    let mut lanes_beside = 0;
+    for_each_view(|_, w, index, e, view| {
+        let (Some(track), Some(me)) = (e.track.as_ref(), index.footprint(e.id)) else {
+            return;
+        };
+        assert!(track.blend.is_none(), "placed, not changing lanes");
+        let dir = track.direction;
+        let search = |lane: i32, from: Real, dir: Direction| {
+            let h = w.network.lane_handle_on(track.road, lane, track.s)?;
+            let none = &mut |_: &str, _: &[opendrive::LaneHandle]| None;
+            let n = index.nearest(&w.network, h, from, dir, e.id, view.horizon(), none, None)?;
+            Some((n.id, n.gap.to_bits()))
+        };
+        let ahead = |lane| search(lane, me.front(dir), dir);
+        let behind = |lane| search(lane, me.rear(dir), dir.reverse());
+        let bits = |g: Option<Gap>| g.map(|g| (g.id, g.gap.to_bits()));
+        assert_eq!(bits(view.leader()), ahead(track.lane_id), "{}", e.name);
+        assert_eq!(bits(view.follower()), behind(track.lane_id), "{}", e.name);
+        for side in [Side::Left, Side::Right] {
+            if let Some(n) = view.neighbour_lane(side) {
+                lanes_beside += 1;
+                assert_eq!(bits(n.leader), ahead(n.lane), "{} {side:?}", e.name);
+                assert_eq!(bits(n.follower), behind(n.lane), "{} {side:?}", e.name);
+            }
+        }
+    });
+    // 2,400 cars on four lanes: each has one or two lanes beside.
+    assert!(lanes_beside > 2_400, "{lanes_beside} lanes beside");
 }

@@ -67,6 +67,10 @@ pub struct NeighbourLane {
 pub(crate) struct Beside {
     /// As [`NeighbourLane::lane`].
     pub lane: i32,
+    /// Its handle at the entity's s and the entity's direction of travel (the gap searches
+    /// of [`leader_beside`](ControllerView::leader_beside) and
+    /// [`follower_beside`](ControllerView::follower_beside) start there).
+    pub at: (LaneHandle, Direction),
     /// As [`NeighbourLane::occupied`].
     pub occupied: bool,
     /// As [`NeighbourLane::toward_keep_side`].
@@ -94,6 +98,10 @@ pub struct ControllerView<'a> {
     index: &'a LaneIndex,
     external: Option<ExternalInput>,
     signals: &'a Signals,
+    /// The handle of the entity's own lane at its s, and its direction of travel
+    /// ([`lane_handle`](Self::lane_handle) of the track's lane), worked out once per view: a
+    /// `mobil` step asks for it up to five times (its leader, follower, both lanes beside).
+    own: Option<(LaneHandle, Direction)>,
 }
 
 impl<'a> ControllerView<'a> {
@@ -108,6 +116,10 @@ impl<'a> ControllerView<'a> {
         external: Option<ExternalInput>,
         signals: &'a Signals,
     ) -> Self {
+        let own = entity.track.as_ref().and_then(|t| {
+            let h = network.lane_handle_on(t.road, t.lane_id, t.s)?;
+            Some((h, t.direction))
+        });
         ControllerView {
             time,
             entity,
@@ -116,6 +128,7 @@ impl<'a> ControllerView<'a> {
             index,
             external,
             signals,
+            own,
         }
     }
 
@@ -162,6 +175,11 @@ impl<'a> ControllerView<'a> {
     /// The lane handle of the entity's lane `lane` at its s, and its direction of travel.
     fn lane_handle(&self, lane: i32) -> Option<(LaneHandle, Direction)> {
         let track = self.entity.track.as_ref()?;
+        if lane == track.lane_id {
+            // The question the view answered when it was made: the view borrows the entity,
+            // so its track (road, lane, s) cannot have changed since.
+            return self.own;
+        }
         let h = self.network.lane_handle_on(track.road, lane, track.s)?;
         Some((h, track.direction))
     }
@@ -195,8 +213,12 @@ impl<'a> ControllerView<'a> {
     /// The nearest entity ahead in `lane` from the front bumper, along the lane the entity
     /// will take (its route's choice at road ends).
     fn ahead_in(&self, lane: i32) -> Option<Gap> {
+        self.ahead_on(lane, self.lane_handle(lane)?)
+    }
+
+    /// [`ahead_in`](Self::ahead_in) with the lane's handle and direction of travel known.
+    fn ahead_on(&self, lane: i32, (h, dir): (LaneHandle, Direction)) -> Option<Gap> {
         let me = self.index.footprint(self.entity.id)?;
-        let (h, dir) = self.lane_handle(lane)?;
         let net = self.network;
         let route = self.entity.route_follow.as_ref();
         let mut choose = |road: &str, c: &[LaneHandle]| route.and_then(|r| r.peek(net, road, c));
@@ -215,8 +237,12 @@ impl<'a> ControllerView<'a> {
 
     /// The nearest entity behind in `lane` from the rear bumper.
     fn behind_in(&self, lane: i32) -> Option<Gap> {
+        self.behind_on(lane, self.lane_handle(lane)?)
+    }
+
+    /// [`behind_in`](Self::behind_in) with the lane's handle and direction of travel known.
+    fn behind_on(&self, lane: i32, (h, dir): (LaneHandle, Direction)) -> Option<Gap> {
         let me = self.index.footprint(self.entity.id)?;
-        let (h, dir) = self.lane_handle(lane)?;
         let n = self.index.nearest(
             self.network,
             h,
@@ -283,8 +309,9 @@ impl<'a> ControllerView<'a> {
         let drivable = section
             .lane(lane)
             .is_some_and(|l| l.lane_type.is_drivable());
-        let (own, _) = self.lane_handle(track.lane_id)?;
-        let (h, _) = self.lane_handle(lane)?;
+        let (own, _) = self.own?;
+        let at = self.lane_handle(lane)?;
+        let h = at.0;
         let same_way = self.network.driving_direction(h) == self.network.driving_direction(own);
         if !drivable || !same_way {
             return None;
@@ -295,6 +322,7 @@ impl<'a> ControllerView<'a> {
         };
         Some(Beside {
             lane,
+            at,
             occupied: self
                 .index
                 .overlapping(h, me.s_range, self.entity.id, self.hint(lane, 2))
@@ -311,12 +339,12 @@ impl<'a> ControllerView<'a> {
 
     /// The nearest entity ahead in the lane beside, from the entity's front bumper.
     pub(crate) fn leader_beside(&self, b: &Beside) -> Option<Gap> {
-        self.ahead_in(b.lane)
+        self.ahead_on(b.lane, b.at)
     }
 
     /// The nearest entity behind in the lane beside, from the entity's rear bumper.
     pub(crate) fn follower_beside(&self, b: &Beside) -> Option<Gap> {
-        self.behind_in(b.lane)
+        self.behind_on(b.lane, b.at)
     }
 
     /// The entity's length along its direction of travel (m): its box's s-range.
