@@ -525,6 +525,26 @@ impl Planner<'_> {
                             out.push(self.start_check(m, target, name("check"))?);
                             continue;
                         };
+                        // Beside another actor: the planned t of both at the start.
+                        if let Some((x, want)) = self.beside_gap(m, target)? {
+                            let got = self.t_at(target, t) - self.t_at(&x, t);
+                            if (got - want).abs() > LATERAL_TOLERANCE {
+                                return Err(m.site.err(
+                                    K::Unsatisfiable,
+                                    format!("expected `{target}` {want:.2} m to the left of `{x}` across the road at the phase start, found it {got:.2} m (plan an earlier phase to reach it)"),
+                                ));
+                            }
+                            if m.at == At::All {
+                                self.beside_checks.push((
+                                    target.clone(),
+                                    x,
+                                    t,
+                                    end.or(len.map(|l| t + l)),
+                                    m.site.clone(),
+                                ));
+                            }
+                            continue;
+                        }
                         let tr = self.track(target);
                         let lane = tr.lane(t);
                         let w = self.road.lane_width(lane, self.s_at(target, t));

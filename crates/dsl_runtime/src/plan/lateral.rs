@@ -25,8 +25,10 @@
 //! facing sides (the actor's right side and x's left side when it is on x's left). The actor's
 //! lane is the one it is placed in by `lane(…)`, or else the driving lane containing t_a. This
 //! form places the actor at the start of the run (its first phase); `at: all` then holds while
-//! neither actor moves sideways (checked by the planner), and in later phases or `at: end` it
-//! is not planned (an error). `same_as` (the same t) is an error: two vehicles cannot share it.
+//! neither actor moves sideways (checked by the planner). At the start of a later phase it is
+//! checked (against the plan's tracks at a known start, by the engine after a run-time one);
+//! `at: end` is not planned (an error: OpenSCENARIO 1.x's LateralDistanceAction, the engine's
+//! action for a lateral distance, has no duration to end the phase's motion with). `same_as` (the same t) is an error: two vehicles cannot share it.
 
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Modifier, Val};
@@ -38,7 +40,7 @@ pub(crate) fn lane_offset(m: &Modifier, lane_width: f64, width: f64) -> Result<f
         if let Some(e) = m.arg(key) {
             return Err(e.site.err(
                 K::Unsupported,
-                format!("expected lateral(…) relative to the actor's lane here, found `{key}:` (lateral distances to another actor are planned at the start of the run only)"),
+                format!("expected lateral(…) relative to the actor's lane here, found `{key}:` (a lateral distance to another actor is planned at a phase start, not at its end: the engine's LateralDistanceAction has no duration to end the phase's motion with)"),
             ));
         }
     }

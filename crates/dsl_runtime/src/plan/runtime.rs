@@ -13,6 +13,7 @@
 //! | `position(d)` (at: start, all) | the engine's check: the actor at s = d (0.5 m) |
 //! | `position(d / time: t / neither, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road, d the distance, t at x's speed then, or the default gap (0.5 m) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre (1 cm) |
+//! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
 //! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal LaneChangeAction over T into the actor's own lane at that offset |
@@ -53,19 +54,9 @@ impl Planner<'_> {
     ) -> Result<Planned, Error> {
         let t = self.last_known();
         let what = format!("{}(…) at {}", m.name, m.site.at());
-        let relative = |key: &str| {
-            m.site.err(
-                K::Unsupported,
-                format!("expected {}(…) without `{key}:` at the start of a phase that starts on a run-time condition, found it (the plan does not know the other actor's state then; not run yet)", m.name),
-            )
-        };
         let mut check = StateCheck {
             what,
-            lane: None,
-            lane_of: None,
-            s: None,
-            offset: None,
-            gap: None,
+            ..StateCheck::default()
         };
         if matches!(m.kind, ModKind::Lane | ModKind::Position) && self.road.ids().len() > 1 {
             return Err(self.several_roads(m));
@@ -107,8 +98,9 @@ impl Planner<'_> {
                 None => check.s = Some((self.position_target(m, target, t)?.2, POSITION_TOLERANCE)),
             },
             ModKind::Lateral => {
-                if lateral::reference(m)?.is_some() {
-                    return Err(relative("side_of"));
+                if let Some((x, dt)) = self.beside_gap(m, target)? {
+                    check.beside = Some((x, dt, LATERAL_TOLERANCE));
+                    return Ok(self.checked(check, m, target, name));
                 }
                 let s = self.s_at(target, t);
                 let w = self.road.lane_width(self.track(target).lane(t), s);
@@ -128,6 +120,21 @@ impl Planner<'_> {
     /// The check `check` of `m` as the action `name` of `target`.
     fn checked(&self, check: StateCheck, m: &Modifier, target: &str, name: String) -> Planned {
         Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), &m.site)
+    }
+
+    /// The reference x of a `lateral(…)` beside another actor and the actor's t minus x's
+    /// it asks for (`lateral::beside` with x's centre at 0), if it has one.
+    pub(super) fn beside_gap(
+        &self,
+        m: &Modifier,
+        target: &str,
+    ) -> Result<Option<(String, f64)>, Error> {
+        let Some((e, sigma)) = lateral::reference(m)? else {
+            return Ok(None);
+        };
+        let x = self.entity_of(e)?;
+        let dt = lateral::beside(m, sigma, (0.0, self.width(&x)), self.width(target))?;
+        Ok(Some((x, dt)))
     }
 
     /// The engine's TravelAction for `m` (a `position(…, at: end)` or `distance(…)` of
@@ -294,10 +301,8 @@ impl Planner<'_> {
         let check = StateCheck {
             what: format!("along(…) at {}", site.at()),
             lane: Some((self.road.id().to_string(), start.lane)),
-            lane_of: None,
             s: Some(((lo + hi) / 2.0, (hi - lo) / 2.0)),
-            offset: None,
-            gap: None,
+            ..StateCheck::default()
         };
         Ok(Planned::with_phase(
             target,

@@ -332,3 +332,25 @@ fn a_named_route_after_an_until_is_the_engines_check() {
         "{error}"
     );
 }
+
+#[test]
+fn lateral_beside_another_actor_in_later_phases_is_checked() {
+    let lowered =
+        super::support::lower("runtime_lateral_beside", 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = super::support::run_to_error(&lowered.scenario);
+    // do.beside's check passed at 3.35 s (no record); do.closer's failed at 4.35 s.
+    let error = error.expect("the run fails");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert_eq!(records[0].1, "do.closer/ego/1:check");
+    assert!((records[0].0 - 4.35).abs() < T_TOL, "{records:?}");
+    let want = "expected 'ego' 3.000 m to the left of 'npc' across the road (within 0.01 m) (lateral(…) at ";
+    let tail = "runtime_lateral_beside.osc:37:13), found 3.500 m at t = 4.350 s";
+    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
+    // At a start the plan knows, the plan checks it.
+    let e = super::support::error("err_lateral_beside_later");
+    assert!(
+        e.starts_with("expected `ego` 3.00 m to the left of `npc` across the road at the phase start, found it 3.50 m")
+            && e.contains("err_lateral_beside_later.osc:15:13"),
+        "{e}"
+    );
+}

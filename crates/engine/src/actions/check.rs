@@ -94,18 +94,38 @@ pub(crate) fn start(
             ));
         }
     }
+    // Another entity on the actor's road: its road position and speed.
+    let beside = |other: &str| {
+        world
+            .id(other)
+            .map(|o| world.entity(o))
+            .and_then(|o| Some((o.road_position.as_ref()?, o.speed)))
+            .filter(|(p, _)| p.road_id == at.road_id)
+            .ok_or_else(|| {
+                fail(
+                    format!("'{other}' on road {} beside '{}'", at.road_id, e.name),
+                    format!("'{other}' elsewhere"),
+                )
+            })
+    };
+    if let Some((other, dt, tol)) = &check.beside {
+        let (there, _) = beside(other)?;
+        let got = at.t - there.t;
+        if (got - dt).abs() > *tol {
+            return Err(fail(
+                format!(
+                    "'{}' {dt:.3} m to the left of '{other}' across the road (within {tol} m)",
+                    e.name
+                ),
+                format!("{got:.3} m"),
+            ));
+        }
+    }
     if let Some((g, tol)) = &check.gap {
         let other = &g.entity_ref;
-        let x = world.id(other).map(|o| world.entity(o));
-        let there: Option<&RoadPosition> = x.and_then(|o| o.road_position.as_ref());
+        let (there, speed): (&RoadPosition, f64) = beside(other)?;
         // x − actor along the road, at x's speed now.
-        let gap = -g.offset(x.map_or(0.0, |o| o.speed));
-        let Some(there) = there.filter(|p| p.road_id == at.road_id) else {
-            return Err(fail(
-                format!("'{other}' on road {} beside '{}'", at.road_id, e.name),
-                format!("'{other}' elsewhere"),
-            ));
-        };
+        let gap = -g.offset(speed);
         let got = there.s - at.s;
         if (got - gap).abs() > *tol {
             return Err(fail(

@@ -41,8 +41,9 @@ pub enum PrivateAction {
     Check(Box<StateCheck>),
 }
 
-/// What oscsim's state check ([`PrivateAction::Check`]) requires of its actor when it starts.
-#[derive(Debug, Clone, PartialEq)]
+/// What oscsim's state check ([`PrivateAction::Check`]) requires of its actor when it starts
+/// (the default requires nothing).
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct StateCheck {
     /// What is checked and where it is written, for the error ("lane(1) at f.osc:29:13").
     pub what: String,
@@ -60,6 +61,9 @@ pub struct StateCheck {
     /// Where the actor must be along the road relative to another entity, and the tolerance
     /// (m).
     pub gap: Option<(SpeedGap, f64)>,
+    /// Another entity, the actor's t minus that entity's (m, road coordinates, reference
+    /// points, positive when the actor is to its left), and the tolerance (m).
+    pub beside: Option<(String, f64, f64)>,
 }
 
 /// A place along the road relative to another entity, at a distance that may depend on that
