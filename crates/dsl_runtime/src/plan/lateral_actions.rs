@@ -5,7 +5,7 @@
 //! | action | lowered to | ends |
 //! | --- | --- | --- |
 //! | `change_lane(num_of_lanes, side, reference, offset, rate_profile, rate_peak)` | LaneChangeAction to the lane `num_of_lanes` (default 1) to the `side` of `reference`'s lane (default: the actor's own), at `offset` from its centre: `constant` linear, else sinusoidal; at `rate_peak` (the peak lateral speed, m/s), over the action's `duration` (or the phase's length), `asap` at the vehicle's lateral limit, else at [`DEFAULT_LATERAL_SPEED`] | when the actor is in the target lane at the offset |
-//! | `follow_lane(offset, rate_profile, rate_peak)` | `keep_lane()` (its semantic clarification); with `offset`, a LaneOffsetAction to it timed as above | with its phase |
+//! | `follow_lane(offset, rate_profile, rate_peak)` | `keep_lane()` (its semantic clarification); with `offset`, a LaneOffsetAction to it timed as above (after a run-time condition, a LaneChangeAction into the actor's own lane at that offset, timed as above, so the change starts from the offset the engine finds) | with its phase |
 //!
 //! `side: inside` is the side towards the road's centre line and `outside` the side away from
 //! it (right-hand traffic: left and right); `same` is the reference's own lane. A side left out
@@ -57,7 +57,7 @@ impl Planner<'_> {
         check_lateral_modifiers(inv)?;
         // Where the plan knows the actor: at the phase start, or (after a run-time condition)
         // in the lane it was last planned in.
-        let t = t0.unwrap_or(0.0);
+        let t = t0.unwrap_or_else(|| self.last_known());
         let s = self.s_at(target, t);
         let tr = self.track(target);
         let (lane0, o0) = match t0 {
@@ -101,6 +101,24 @@ impl Planner<'_> {
                     return Ok(None);
                 };
                 let delta = o1 - o0;
+                if t0.is_none() {
+                    // After a run-time start the offset the actor starts from is the engine's:
+                    // a change within its own lane (a LaneChangeAction to a RelativeTargetLane
+                    // of 0 on itself at that targetLaneOffset) over the span, starting from it.
+                    let tm = timing(p, inv, len, delta)?;
+                    out.push(planned(
+                        name("follow_lane"),
+                        PrivateAction::Lateral(LateralAction::LaneChange {
+                            target_lane_offset: Some(o1),
+                            dynamics: tm.dynamics,
+                            target: scenario::LaneChangeTarget::Relative {
+                                entity_ref: target.to_string(),
+                                value: 0,
+                            },
+                        }),
+                    ));
+                    return Ok(None);
+                }
                 if delta.abs() < 1e-9 {
                     return Ok(None);
                 }

@@ -120,6 +120,20 @@ fn fails(name: &str, (want, tail): (&str, &str), element: &str, t: f64) {
     assert_eq!(records[0].2, error);
 }
 
+/// ego in lane -2 at each of `times` at y = −5.25 + a·(1 − cos(π·τ/2)) m, τ from 3.35 s to
+/// 5.35 s: a 2 s sinusoidal move of 2a to the left from the lane's centre, then held.
+fn sideways(r: &super::support::Run, a: f64, times: &[f64]) {
+    let y = |t: f64| -5.25 + a * (1.0 - (std::f64::consts::PI * (t - 3.35) / 2.0).cos());
+    for &t in times {
+        let ego = r.at(t, "ego");
+        let want = y(t.min(5.35));
+        assert!(
+            (ego.y - want).abs() < 1e-6 && ego.lane == -2,
+            "{t}: {ego:?}, want {want}"
+        );
+    }
+}
+
 /// Each (phase, start, end) of `want` started and ended then.
 fn phases(r: &super::support::Run, want: &[(&str, f64, f64)]) {
     for (path, a, b) in want {
@@ -264,15 +278,7 @@ fn a_lateral_position_at_the_end_after_an_until_starts_from_the_engines_offset()
         ],
     );
     // y = −5.25 + 0.5·(1 − cos(π·τ/2)), τ from 3.35 s.
-    let y = |t: f64| -5.25 + 0.5 * (1.0 - (std::f64::consts::PI * (t - 3.35) / 2.0).cos());
-    for t in [3.35, 3.85, 4.35, 5.35, 6.0] {
-        let ego = r.at(t, "ego");
-        let want = y(t.min(5.35));
-        assert!(
-            (ego.y - want).abs() < 1e-6 && ego.lane == -2,
-            "{t}: {ego:?}, want {want}"
-        );
-    }
+    sideways(&r, 0.5, &[3.35, 3.85, 4.35, 5.35, 6.0]);
     let t = r.when("do.hold/ego/1:check", "End").expect("the check ran");
     assert!((t - 5.35).abs() < T_TOL, "check at {t}");
 }
@@ -353,4 +359,19 @@ fn lateral_beside_another_actor_in_later_phases_is_checked() {
             && e.contains("err_lateral_beside_later.osc:15:13"),
         "{e}"
     );
+}
+
+#[test]
+fn follow_lane_with_an_offset_after_an_until_starts_from_the_engines_offset() {
+    let r = run("runtime_follow_lane", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.shift", 3.35, 5.35),
+            ("do.after", 5.35, 6.35),
+        ],
+    );
+    // y = −5.25 + 0.25·(1 − cos(π·τ/2)), τ from 3.35 s.
+    sideways(&r, 0.25, &[3.35, 3.85, 4.35, 5.35, 6.35]);
 }
