@@ -219,12 +219,16 @@ impl Planner<'_> {
                         (d, a0.map(|a0| (a1 - a0).abs() * slope / j))
                     }
                 };
-                let (Some(a0), Some(span)) = (a0, span) else {
+                // At a rate the span needs the acceleration at the start, which after a
+                // run-time condition is the engine's; over a duration it does not (the engine
+                // changes from the acceleration it finds, and the plan records no track then).
+                let Some(span) = span else {
                     return Err(p.site.err(
                         K::Unsatisfiable,
                         "expected a phase start the plan knows for change_acceleration(…) at a rate (the acceleration it starts from), found one after a run-time condition; give it a duration",
                     ));
                 };
+                let a0 = a0.unwrap_or(0.0);
                 persist.push(planned(
                     name("change_acceleration"),
                     acceleration(Some(a1), dynamics),

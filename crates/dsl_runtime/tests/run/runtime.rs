@@ -375,3 +375,20 @@ fn follow_lane_with_an_offset_after_an_until_starts_from_the_engines_offset() {
     // y = −5.25 + 0.25·(1 − cos(π·τ/2)), τ from 3.35 s.
     sideways(&r, 0.25, &[3.35, 3.85, 4.35, 5.35, 6.35]);
 }
+
+#[test]
+fn change_acceleration_over_a_duration_after_an_until_starts_from_the_engines_acceleration() {
+    let r = run("runtime_change_acceleration", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.brake", 3.35, 5.35),
+            ("do.after", 5.35, 6.35),
+        ],
+    );
+    for (t, v) in [(3.35, 20.0), (4.35, 19.5), (5.35, 18.0), (6.35, 16.0)] {
+        let ego = r.at(t, "ego");
+        assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
+    }
+}
