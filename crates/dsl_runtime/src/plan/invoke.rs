@@ -190,7 +190,34 @@ impl Planner<'_> {
                     }
                     (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
                         let (t, len) = need_len("a speed at the phase end")?;
-                        let (v1, _) = self.speed_value(m, t.map(|t| t + len))?;
+                        let (v1, relative) = self.speed_value(m, t.map(|t| t + len))?;
+                        if let (None, Some((x, delta))) = (t, relative) {
+                            // After a run-time start x's speed is the engine's: a linear
+                            // SpeedAction to x's speed (plus the delta) as the engine reads it
+                            // each step, so it ends at x's speed at the phase end.
+                            if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
+                                return Err(q.site.err(
+                                    K::Unsupported,
+                                    "expected no acceleration(…) beside a speed relative to another actor in a phase that starts on a run-time condition, found one (the time the change takes at that rate depends on both speeds at the start)",
+                                ));
+                            }
+                            out.push(Planned::with_phase(
+                                target,
+                                name("speed"),
+                                speed_action(
+                                    DynamicsShape::Linear,
+                                    len,
+                                    SpeedTarget::Relative {
+                                        entity_ref: x,
+                                        value: delta,
+                                        speed_target_value_type: SpeedTargetValueType::Delta,
+                                        continuous: false,
+                                    },
+                                ),
+                                &m.site,
+                            ));
+                            continue;
+                        }
                         let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
                         check_speed(m, v1)?;
                         // With acceleration(a): the change at that rate, done within the phase.

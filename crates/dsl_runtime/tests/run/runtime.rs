@@ -392,3 +392,15 @@ fn change_acceleration_over_a_duration_after_an_until_starts_from_the_engines_ac
         assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
     }
 }
+
+#[test]
+fn a_speed_relative_to_another_actor_at_the_end_after_an_until_is_its_speed_then() {
+    let r = run("runtime_speed_same_as", 0, None);
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.match", 3.35, 5.35)]);
+    for (t, v) in [(3.35, 20.0), (4.35, 14.0), (5.35, 8.0)] {
+        let ego = r.at(t, "ego");
+        assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
+    }
+    let ego = r.at(5.35, "ego");
+    assert!((ego.s - 194.7).abs() < S_TOL, "{ego:?}");
+}
