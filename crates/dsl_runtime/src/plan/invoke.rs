@@ -115,9 +115,10 @@ impl Planner<'_> {
                 | Action::KeepSpaceGap
                 | Action::ChangeTimeHeadway
                 | Action::KeepTimeHeadway => self.plan_gap_action(p, inv, slot, &mut name)?,
-                Action::FollowTrajectory | Action::FollowPath => {
-                    self.plan_trajectory_action(p, inv, slot, &mut name)?
-                }
+                Action::FollowTrajectory
+                | Action::FollowPath
+                | Action::ReplayTrajectory
+                | Action::ReplayPath => self.plan_trajectory_action(p, inv, slot, &mut name)?,
                 Action::AssignPosition | Action::AssignOrientation | Action::ChangePosition => {
                     self.plan_position_action(p, inv, slot, &mut name)?
                 }

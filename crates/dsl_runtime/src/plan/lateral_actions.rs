@@ -265,7 +265,7 @@ fn no_target_lane(inv: &Invoke) -> Result<(), Error> {
         Some(a) => Err(a.site.err(
             K::Argument,
             format!(
-                "expected the lane of {}(…) given by num_of_lanes, side and reference, found `target:`, a lane instance (the solver leaves road-network values to the runtime, which names none)",
+                "expected the lane of {}(…) given by num_of_lanes, side and reference, found `target:`, a lane instance (no map method returns a lane, and the solver leaves road-network values to the runtime)",
                 inv.action
             ),
         )),

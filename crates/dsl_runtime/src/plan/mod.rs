@@ -55,6 +55,8 @@
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
+//! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
+//! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
 //! | `invoke` | one invocation's action and modifiers |
@@ -78,9 +80,11 @@ mod invoke;
 mod lateral;
 mod lateral_actions;
 mod motion;
+mod path_shape;
 mod place;
 mod planner;
 mod position_actions;
+mod relative_path;
 mod route;
 mod runtime;
 mod schedule;

@@ -6,7 +6,8 @@
 //! | --- | --- | --- |
 //! | `assign_position(position \| route_point \| odr_point)` | TeleportAction to the lane position of the place on the plan road | at once |
 //! | `assign_orientation(target)` | TeleportAction to where the actor is, the orientation absolute (world yaw, pitch, roll); the actor must stand | at once |
-//! | `change_position(target, interpolation: straight_line)` | FollowTrajectoryAction along the straight line from where the actor is to the target, at its speed (after a run-time condition the line's first vertex is a RelativeObjectPosition at the actor, which the engine resolves when the action starts) | when the actor is there |
+//! | `change_position(target, on_road_network: true)` | along its lane at its speed to the target's s, into the target's lane (LaneChangeAction) or offset (LaneOffsetAction), sinusoidal over exactly that time | when the actor is there |
+//! | `change_position(target, interpolation)` | FollowTrajectoryAction along the straight line from where the actor is to the target, or (`smooth`) the cubic Hermite curve from the actor's heading along its lane into the lane's heading at the target (`path_shape`), at its speed (after a run-time condition a straight line whose first vertex is a RelativeObjectPosition at the actor, which the engine resolves when the action starts; the curve and the road-network form need the plan's start) | when the actor is there |
 //!
 //! Exactly one of the three arguments is given (none is a missing argument, two contradict).
 //! The place must be in a driving lane of the plan road (the road the planner moves actors on):
@@ -17,14 +18,18 @@
 //! at the end of the step the action runs in, in place of that step's motion, as for a 1.x
 //! TeleportAction; the plan does the same.
 
+use std::f64::consts::PI;
+
 use scenario::{
-    FollowingMode, Orientation, Position, PositionKind, PrivateAction, ReferenceContext,
-    RoutingAction, Shape, Timing, Trajectory, Vertex,
+    DynamicsShape, FollowingMode, LaneChangeTarget, LaneOffsetTarget, LateralAction, Orientation,
+    Position, PositionKind, PrivateAction, ReferenceContext,
 };
 
+use super::action_args::timed;
+use super::path_shape;
 use super::planner::Planner;
 use super::speed_actions::Slot;
-use super::types::{Planned, When};
+use super::types::{Planned, When, MAX_ACCELERATION};
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{arg, Action, Invoke, Phase, Place, PlaceArg, Val};
 
@@ -155,9 +160,10 @@ impl Planner<'_> {
         Ok(Some(self.ends(t0, 0.0, &n, p)))
     }
 
-    /// `change_position(target, interpolation: straight_line)`: a FollowTrajectoryAction along
-    /// the straight line from where the actor is to the target, at the speed it has (no time
-    /// reference), ending there.
+    /// `change_position(target, interpolation)`: a FollowTrajectoryAction along the straight
+    /// line (or, `smooth`, the Hermite curve from the actor's heading along its lane into the
+    /// lane's heading at the target) from where the actor is to the target, at the speed it
+    /// has (no time reference), ending there.
     fn plan_change_position(
         &mut self,
         p: &Phase,
@@ -173,29 +179,59 @@ impl Planner<'_> {
                 "expected a target in change_position(…) (a mandatory argument, a position_3d), found none",
             ));
         };
-        if let Some(a) = arg(&inv.args, "interpolation") {
-            if !matches!(a.eval()?, Val::Enum(m) if m == "straight_line") {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    "expected interpolation: straight_line (a smooth path between two points has no headings to follow: not run), found another value",
-                ));
-            }
-        }
-        if let Some(a) = arg(&inv.args, "on_road_network") {
-            if a.eval()? != Val::Bool(false) {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    "expected on_road_network: false (a straight line; moving along the road network to a place is not run), found another value",
-                ));
-            }
-        }
+        let smooth =
+            match arg(&inv.args, "interpolation") {
+                Some(a) => match a.eval()? {
+                    Val::Enum(m) if m == "straight_line" => false,
+                    Val::Enum(m) if m == "smooth" => true,
+                    _ => return Err(a.site.err(
+                        K::Argument,
+                        "expected an interpolation (straight_line, smooth), found another value",
+                    )),
+                },
+                None => false,
+            };
+        let on_road = match arg(&inv.args, "on_road_network") {
+            Some(a) => match a.eval()? {
+                Val::Bool(b) => Some((a, b)),
+                _ => {
+                    return Err(a
+                        .site
+                        .err(K::Argument, "expected a bool, found another value"))
+                }
+            },
+            None => None,
+        };
+        // The curve and the road-network form start from the actor's planned place and
+        // heading; after a run-time condition only the straight line is run (below).
+        let need_start = |what: &str| {
+            t0.ok_or_else(|| {
+                p.site.err(
+                    K::Unsatisfiable,
+                    format!("expected a phase start the plan knows for change_position(…, {what}) (where its path starts), found one after a run-time condition"),
+                )
+            })
+        };
         let (lane, s1, offset) = self.lane_position(place)?;
+        if let Some((a, true)) = on_road {
+            if smooth {
+                return Err(a.site.err(
+                    K::Argument,
+                    "expected on_road_network: true without interpolation: smooth (on the road network the actor follows its lanes), found both",
+                ));
+            }
+            let t = need_start("on_road_network: true")?;
+            return self.change_position_on_road(p, target, t, (lane, s1, offset), out, name);
+        }
+        if smooth {
+            need_start("interpolation: smooth")?;
+        }
         let road = &self.road;
         let Some(t) = t0 else {
             // After a run-time condition the line starts where the engine finds the actor: a
             // vertex at the actor itself (a RelativeObjectPosition, resolved when the action
             // starts), at the speed it has then; the phase ends with the action.
-            let Some(end) = road.world(s1, road.lane_center(lane, s1) + offset) else {
+            let Some((x1, y1, _)) = road.world_pose(s1, road.lane_center(lane, s1) + offset) else {
                 return Err(off_road(&place.site, road.id(), s1, "its length"));
             };
             let n = name("change_position");
@@ -206,20 +242,28 @@ impl Planner<'_> {
                 dz: None,
                 orientation: None,
             };
-            let kinds = vec![here, world_point(end)];
-            let action = polyline_through(&n, kinds, None, &place.site);
+            let kinds = vec![here, path_shape::world_point(x1, y1)];
+            let action =
+                path_shape::polyline_through(&n, kinds, None, FollowingMode::Position, &place.site);
             out.push(Planned::with_phase(target, n.clone(), action, &p.site));
             return Ok(Some(self.ends(None, 0.0, &n, p)));
         };
         let tr = self.track(target);
         let (lane0, v) = (tr.lane(t), tr.at(t).1);
         let s0 = self.s_at(target, t);
-        let start = road.world(s0, road.lane_center(lane0, s0) + tr.offset(t));
-        let end = road.world(s1, road.lane_center(lane, s1) + offset);
-        let (Some((x0, y0)), Some((x1, y1))) = (start, end) else {
+        let start = road.world_pose(s0, road.lane_center(lane0, s0) + tr.offset(t));
+        let end = road.world_pose(s1, road.lane_center(lane, s1) + offset);
+        let (Some(from), Some(to)) = (start, end) else {
             return Err(off_road(&place.site, road.id(), s1, "its length"));
         };
-        let length = (x1 - x0).hypot(y1 - y0);
+        let ((x0, y0, _), (x1, y1, _)) = (from, to);
+        // Smooth: from the actor's heading along its lane into the lane's heading at the target
+        // (the target has no orientation of its own; the actor drives on along that lane).
+        let length = if smooth {
+            path_shape::length(&[from, to])
+        } else {
+            (x1 - x0).hypot(y1 - y0)
+        };
         if v <= 0.0 && length > 0.0 {
             return Err(p.site.err(
                 K::Unsatisfiable,
@@ -230,7 +274,17 @@ impl Planner<'_> {
         out.push(Planned::with_phase(
             target,
             n.clone(),
-            polyline(&n, &[(x0, y0), (x1, y1)], None, &place.site),
+            if smooth && length > 0.0 {
+                path_shape::smooth(&n, &[from, to], None, FollowingMode::Position, &place.site)
+            } else {
+                path_shape::polyline(
+                    &n,
+                    &[(x0, y0), (x1, y1)],
+                    None,
+                    FollowingMode::Position,
+                    &place.site,
+                )
+            },
             &p.site,
         ));
         // Along the line at v: there after length / v s; the track's distance along its lane
@@ -242,6 +296,98 @@ impl Planner<'_> {
         tr.set_offset(t + span, offset);
         tr.add_move(t, t + span);
         Ok(Some(self.ends(t0, span, &n, p)))
+    }
+
+    /// `change_position(target, on_road_network: true)`: along the road network to the target.
+    /// The actor drives on along its lane at its speed to the target's s, moving sideways into
+    /// the target's lane and offset over exactly the time T it takes to get there (the lane
+    /// distance, at v along its path less the sideways part): a
+    /// LaneChangeAction to the target lane (absolute id, targetLaneOffset), or in its own lane a
+    /// LaneOffsetAction, sinusoidal over T, so that it arrives across the road when it arrives
+    /// along it. The target must be ahead, and the sinusoid within the vehicle's lateral
+    /// acceleration (π²Δ/(2T²) ≤ 10 m/s²).
+    fn change_position_on_road(
+        &mut self,
+        p: &Phase,
+        target: &str,
+        t: f64,
+        (lane, s1, offset): (i32, f64, f64),
+        out: &mut Vec<Planned>,
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Result<Option<When>, Error> {
+        let road = &self.road;
+        let tr = self.track(target);
+        let (lane0, o0, v) = (tr.lane(t), tr.offset(t), tr.at(t).1);
+        let s0 = self.s_at(target, t);
+        if s1 <= s0 {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected the target of change_position(…, on_road_network: true) ahead of `{target}` (s = {s0:.2} m), found it at s = {s1:.2} m: on the road network an actor drives forward"),
+            ));
+        }
+        if v <= 0.0 {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` moving at the start of change_position(…) (it moves at the speed it has), found it standing"),
+            ));
+        }
+        let distance = road.lane_distance(lane0, s0, s1);
+        let delta = road.lane_center(lane, s1) + offset - (road.lane_center(lane0, s1) + o0);
+        // The engine moves the actor at v along its path, so along the road at
+        // √(v² − ẏ²) while the sinusoid ẏ = (πΔ/2T)·sin(πt/T) moves it sideways: T solves
+        // T·∫₀¹ √(v² − (πΔ/2T)² sin²(πu)) du = distance (a fixed point from distance / v,
+        // a contraction while the lateral speed stays well below v).
+        let mut span = distance / v;
+        for _ in 0..50 {
+            let lateral = PI * delta.abs() / (2.0 * span);
+            if lateral >= v {
+                break;
+            }
+            let along =
+                path_shape::integrate01(|u| (v * v - (lateral * (PI * u).sin()).powi(2)).sqrt());
+            let next = distance / along;
+            let done = (next - span).abs() < 1e-12;
+            span = next;
+            if done {
+                break;
+            }
+        }
+        let peak = PI * PI * delta.abs() / (2.0 * span * span);
+        if peak > MAX_ACCELERATION + 1e-9 {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected change_position(…, on_road_network: true) within the vehicle's ±{MAX_ACCELERATION} m/s² lateral acceleration, found it needs {peak:.2} m/s² to move {:.2} m sideways in {span:.2} s", delta.abs()),
+            ));
+        }
+        let n = name("change_position");
+        let action = if lane != lane0 {
+            LateralAction::LaneChange {
+                target_lane_offset: (offset != 0.0).then_some(offset),
+                dynamics: timed(DynamicsShape::Sinusoidal, span),
+                target: LaneChangeTarget::Absolute(lane.to_string()),
+            }
+        } else {
+            LateralAction::LaneOffset {
+                continuous: false,
+                dynamics_shape: DynamicsShape::Sinusoidal,
+                max_lateral_acc: Some(peak),
+                target: LaneOffsetTarget::Absolute(offset),
+            }
+        };
+        if lane != lane0 || delta.abs() > 1e-9 {
+            out.push(Planned::with_phase(
+                target,
+                n.clone(),
+                PrivateAction::Lateral(action),
+                &p.site,
+            ));
+        }
+        let tr = self.track_mut(target);
+        tr.set_lane(t + span, lane);
+        tr.set_offset(t + span, offset);
+        tr.add_move(t, t + span);
+        // Ends when it is there: at the planned time (the lateral action ends with it).
+        Ok(Some(self.ends(Some(t), span, "", p)))
     }
 
     /// The lane, s and offset from the lane's centre of `place` on the plan road.
@@ -283,7 +429,10 @@ impl Planner<'_> {
                         ),
                     )
                 })?,
-            Place::Orientation { .. } | Place::Trajectory { .. } => {
+            Place::Orientation { .. }
+            | Place::Trajectory { .. }
+            | Place::Path { .. }
+            | Place::Relative { .. } => {
                 return Err(site.err(K::Argument, "expected a place, found another value"))
             }
         };
@@ -303,66 +452,4 @@ fn off_road(site: &Site, road: &str, s: f64, what: &str) -> Error {
         K::Unsatisfiable,
         format!("expected a place in a driving lane of road {road}, found s = {s:.2} m, {what} outside them"),
     )
-}
-
-/// A FollowTrajectoryAction along the polyline through `points` (world x, y; headings those
-/// of its segments), at the speed the actor has or, with `times`, reaching each point at its
-/// time stamp counted from the action's start (the first stamp at the start).
-pub(super) fn polyline(
-    name: &str,
-    points: &[(f64, f64)],
-    times: Option<&[f64]>,
-    site: &Site,
-) -> PrivateAction {
-    let kinds = points.iter().map(|p| world_point(*p)).collect();
-    polyline_through(name, kinds, times, site)
-}
-
-/// A WorldPosition at (x, y), the rest of the pose left to the trajectory.
-fn world_point((x, y): (f64, f64)) -> PositionKind {
-    PositionKind::World {
-        x,
-        y,
-        z: None,
-        h: None,
-        p: None,
-        r: None,
-    }
-}
-
-/// [`polyline`] through positions of any kind, which the engine resolves when the action
-/// starts.
-fn polyline_through(
-    name: &str,
-    kinds: Vec<PositionKind>,
-    times: Option<&[f64]>,
-    site: &Site,
-) -> PrivateAction {
-    let first = times.and_then(|t| t.first().copied()).unwrap_or(0.0);
-    let vertices = kinds
-        .into_iter()
-        .enumerate()
-        .map(|(i, kind)| Vertex {
-            time: times.map(|t| t[i] - first),
-            position: Position {
-                kind,
-                pos: site.pos.clone(),
-            },
-        })
-        .collect();
-    PrivateAction::Routing(Box::new(RoutingAction::FollowTrajectory {
-        trajectory: Box::new(Trajectory {
-            name: name.to_string(),
-            closed: false,
-            shape: Shape::Polyline(vertices),
-            catalog: None,
-        }),
-        time_reference: times.map(|_| Timing {
-            domain_absolute_relative: ReferenceContext::Relative,
-            offset: 0.0,
-            scale: 1.0,
-        }),
-        following_mode: FollowingMode::Position,
-        initial_distance_offset: None,
-    }))
 }

@@ -4,21 +4,26 @@
 //!
 //! | action | lowered to | ends |
 //! | --- | --- | --- |
-//! | `follow_trajectory(absolute: trajectory)` | FollowTrajectoryAction along the polyline of the points (world x, y), each reached at its time stamp (a relative time reference from the action's start, offset by the first stamp), following mode `position` | at the last time stamp |
-//! | `follow_path(…)` | an error: a `path` is a `route`, whose values the constraint solver leaves to the runtime, so no program can give its points | |
+//! | `follow_trajectory(absolute: trajectory)` | FollowTrajectoryAction along the polyline of the points (world x, y), or with `smooth` the Hermite curve through them (a Nurbs), each reached at its time stamp (a relative time reference from the action's start, offset by the first stamp), following mode `position` | at the last time stamp |
+//! | `follow_path(absolute: path)` | FollowTrajectoryAction along the path (`map.create_path(points, interpolation)`: polyline or smooth) in following mode `follow` (steered within the vehicle's limits), no time reference: at the speed the actor has | when the engine has the actor at the path's end |
 //!
 //! A trajectory's points must be at least two, as many as its time stamps, the stamps rising;
-//! `interpolation: smooth`, `relative:` trajectories and `start_offset`/`end_offset` are errors
-//! (not run). The points' orientations are not read: the heading is the polyline's. The actor
+//! `relative:` trajectories and `start_offset`/`end_offset` are errors (not run), as is a
+//! segment whose length over its time exceeds the vehicle's maximum speed. With
+//! `interpolation: straight_line` the points' orientations are not read (the heading is the
+//! polyline's); with `smooth` the path is the cubic Hermite curve through the points with their
+//! yaws as headings (`path_shape`), its consecutive points apart. The actor
 //! is where the first point is at the start (the engine's FollowTrajectoryAction in `position`
 //! mode puts it on the trajectory); the plan puts it in the lane and at the s of the last point.
 
+use scenario::FollowingMode;
+
+use super::path_shape::{along, length as path_length, Pose2};
 use super::planner::Planner;
-use super::position_actions::polyline;
 use super::speed_actions::Slot;
-use super::types::{Planned, When};
-use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{arg, Action, Invoke, Phase, Place, PlaceArg};
+use super::types::{Planned, When, MAX_SPEED};
+use crate::error::{Error, ErrorKind as K, Site};
+use crate::resolve::{Action, Invoke, Phase, Place, PlaceArg};
 
 impl Planner<'_> {
     /// Plans `inv`'s `follow_trajectory` or `follow_path` for one actor; returns when it ends.
@@ -29,30 +34,16 @@ impl Planner<'_> {
         slot: Slot<'_>,
         name: &mut dyn FnMut(&str) -> String,
     ) -> Result<Option<When>, Error> {
+        let resolved = self.absolute_place(p, inv, slot.t0)?;
+        let given = resolved
+            .as_ref()
+            .or_else(|| inv.places.iter().find(|a| a.param == "absolute"));
+        if inv.kind.along_path() {
+            return self.plan_follow_path(p, inv, given, slot, name);
+        }
         let Slot {
             target, t0, out, ..
         } = slot;
-        for param in [
-            "relative",
-            "reference",
-            "transform",
-            "start_offset",
-            "end_offset",
-        ] {
-            if let Some(a) = arg(&inv.args, param) {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    format!("expected an absolute {} in {}(…), found `{param}:` (relative ones and offsets along them are not run)", if inv.kind == Action::FollowPath { "path" } else { "trajectory" }, inv.action),
-                ));
-            }
-        }
-        if inv.kind == Action::FollowPath {
-            let site = arg(&inv.args, "absolute").map_or(&p.site, |a| &a.site);
-            return Err(site.err(
-                K::Unsupported,
-                "expected a path the runtime can follow, found follow_path(…): a path is a route, whose values the constraint solver leaves to the runtime, so no program gives its points (use follow_trajectory with a trajectory, or change_position)",
-            ));
-        }
         let Some(
             place @ PlaceArg {
                 place:
@@ -64,19 +55,13 @@ impl Planner<'_> {
                 site,
                 ..
             },
-        ) = inv.places.first()
+        ) = given
         else {
             return Err(p.site.err(
                 K::Argument,
-                "expected an absolute trajectory in follow_trajectory(…) (one of absolute and relative is mandatory), found none",
+                format!("expected a trajectory in {}(…) (absolute: or relative:, one is mandatory), found none", inv.action),
             ));
         };
-        if *smooth {
-            return Err(site.err(
-                K::Unsupported,
-                "expected a trajectory with interpolation: straight_line, found smooth (not run)",
-            ));
-        }
         let rising = times.windows(2).all(|w| w[1] > w[0]);
         if points.len() < 2 || points.len() != times.len() || !rising {
             return Err(site.err(
@@ -89,36 +74,179 @@ impl Planner<'_> {
                 ),
             ));
         }
+        if *smooth {
+            check_apart(points, site)?;
+        }
+        // replay_trajectory follows exactly, "the dynamic limits may be violated".
+        if inv.kind == Action::FollowTrajectory {
+            check_segment_speeds(points, times, *smooth, site)?;
+        }
         let span = times[times.len() - 1] - times[0];
-        let (x1, y1) = points[points.len() - 1];
-        let (lane, s1, offset) = self.lane_position(&PlaceArg {
-            place: Place::World {
-                x: x1,
-                y: y1,
-                z: 0.0,
-            },
-            ..place.clone()
-        })?;
-        let n = name("follow_trajectory");
-        out.push(Planned::with_phase(
-            target,
-            n.clone(),
-            polyline(&n, points, Some(times), site),
-            &p.site,
-        ));
+        let end = self.end_of(place, points)?;
+        let n = name(&inv.action);
+        let action = along(
+            &n,
+            points,
+            Some(times),
+            *smooth,
+            FollowingMode::Position,
+            site,
+        );
+        out.push(Planned::with_phase(target, n.clone(), action, &p.site));
         if let Some(t) = t0 {
-            // At the end: the last point, at the last segment's speed.
+            // At the end: the last point, at the last segment's speed (the smooth curve's too:
+            // its Bézier leaves the last point at 3·(L/3)/Δt, the chord over the time).
             let k = points.len() - 1;
-            let (xa, ya) = points[k - 1];
+            let ((xa, ya, _), (x1, y1, _)) = (points[k - 1], points[k]);
             let v = (x1 - xa).hypot(y1 - ya) / (times[k] - times[k - 1]);
-            let s_plan = self.s_at(target, t + span);
-            let tr = self.track_mut(target);
-            tr.ramp(t + span, t + span, v);
-            tr.jump(t + span, s1 - s_plan);
-            tr.set_lane(t + span, lane);
-            tr.set_offset(t + span, offset);
-            tr.add_move(t, t + span);
+            self.track_mut(target).ramp(t + span, t + span, v);
+            self.arrive(target, t, span, end);
         }
         Ok(Some(self.ends(t0, span, &n, p)))
     }
+
+    /// `follow_path(absolute: path)`: a FollowTrajectoryAction along the path (polyline or
+    /// smooth) in following mode `follow` (the vehicle steers along it within its limits,
+    /// §8.8.2.16 "respecting the dynamic limits" where replay_path follows exactly), with no
+    /// time reference: at the speed the actor has, ending when the engine has it at the path's
+    /// end.
+    fn plan_follow_path(
+        &mut self,
+        p: &Phase,
+        inv: &Invoke,
+        given: Option<&PlaceArg>,
+        Slot {
+            target, t0, out, ..
+        }: Slot<'_>,
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Result<Option<When>, Error> {
+        let Some(
+            place @ PlaceArg {
+                place: Place::Path { points, smooth },
+                site,
+                ..
+            },
+        ) = given
+        else {
+            return Err(p.site.err(
+                K::Argument,
+                format!("expected a path in {}(…) (absolute: map.create_path(points: [...], interpolation: ...), or relative:; one is mandatory), found none", inv.action),
+            ));
+        };
+        if points.len() < 2 {
+            return Err(site.err(
+                K::Argument,
+                format!(
+                    "expected two or more points in the path, found {}",
+                    points.len()
+                ),
+            ));
+        }
+        if *smooth {
+            check_apart(points, site)?;
+        }
+        let v = match t0 {
+            Some(t) => self.track(target).at(t).1,
+            None => self.last_v.get(target).copied().unwrap_or(0.0),
+        };
+        if v <= 0.0 {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` moving at the start of {}(…) (it moves at the speed it has), found it standing", inv.action),
+            ));
+        }
+        let end = self.end_of(place, points)?;
+        let n = name(&inv.action);
+        // follow_path steers within the vehicle's limits; replay_path follows exactly.
+        let mode = if inv.kind == Action::ReplayPath {
+            FollowingMode::Position
+        } else {
+            FollowingMode::Follow
+        };
+        let action = along(&n, points, None, *smooth, mode, site);
+        out.push(Planned::with_phase(target, n.clone(), action, &p.site));
+        if let Some(t) = t0 {
+            // The path's length at v; the engine's steering ends it (the phase ends on the
+            // action's completion, not at this estimate), in the last point's lane.
+            let length = if *smooth {
+                path_length(points)
+            } else {
+                points
+                    .windows(2)
+                    .map(|w| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1))
+                    .sum()
+            };
+            self.arrive(target, t, length / v, end);
+        }
+        Ok(Some(self.ends(None, 0.0, &n, p)))
+    }
+
+    /// The lane, s and offset from the lane's centre of the last of `points` (of the path or
+    /// trajectory `place`), which must be in a driving lane of the plan road.
+    fn end_of(&self, place: &PlaceArg, points: &[Pose2]) -> Result<(i32, f64, f64), Error> {
+        let (x, y, _) = points[points.len() - 1];
+        self.lane_position(&PlaceArg {
+            place: Place::World { x, y, z: 0.0 },
+            ..place.clone()
+        })
+    }
+
+    /// From `t + span` on, `target` is at `end` (lane, s, offset), having moved sideways since
+    /// `t`.
+    fn arrive(&mut self, target: &str, t: f64, span: f64, (lane, s1, offset): (i32, f64, f64)) {
+        let s_plan = self.s_at(target, t + span);
+        let tr = self.track_mut(target);
+        tr.jump(t + span, s1 - s_plan);
+        tr.set_lane(t + span, lane);
+        tr.set_offset(t + span, offset);
+        tr.add_move(t, t + span);
+    }
+}
+
+/// A smooth curve needs consecutive points apart: a segment of no length has no tangent.
+pub(super) fn check_apart(points: &[Pose2], site: &Site) -> Result<(), Error> {
+    match points
+        .windows(2)
+        .position(|w| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1) < 1e-6)
+    {
+        Some(i) => Err(site.err(
+            K::Argument,
+            format!(
+                "expected the points of a smooth path apart, found points {} and {} at the same place",
+                i + 1,
+                i + 2
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// Each segment of a trajectory must be within the vehicle's [`MAX_SPEED`]: its length (the
+/// chord, or the smooth curve's) over its time is the average speed the actor needs, which no
+/// following of it can lower.
+fn check_segment_speeds(
+    points: &[Pose2],
+    times: &[f64],
+    smooth: bool,
+    site: &Site,
+) -> Result<(), Error> {
+    for (k, (w, t)) in points.windows(2).zip(times.windows(2)).enumerate() {
+        let length = if smooth {
+            path_length(w)
+        } else {
+            (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1)
+        };
+        let v = length / (t[1] - t[0]);
+        if v > MAX_SPEED {
+            return Err(site.err(
+                K::Unsatisfiable,
+                format!(
+                    "expected a trajectory within the vehicle's {MAX_SPEED} m/s, found segment {} ({length:.2} m in {:.2} s) needs {v:.2} m/s",
+                    k + 1,
+                    t[1] - t[0]
+                ),
+            ));
+        }
+    }
+    Ok(())
 }

@@ -2,16 +2,20 @@
 //! OpenSCENARIO DSL 2.1 §8.8.2.4 `assign_position`, §8.8.2.5 `assign_orientation`, §8.8.2.11
 //! `change_position`), read into plain data: a `position_3d` or `xyz_point` (world x, y, z), an
 //! `odr_point` (OpenDRIVE road, lane, s and t from the lane's centre), a `route_point` (s and t
-//! on the route, which the runtime binds to the plan road), an `orientation_3d`. Each is a
+//! on the route, which the runtime binds to the plan road), an `orientation_3d`, a
+//! `trajectory` or a `path` (§8.8.2.16-17: points, time stamps, interpolation). Each is a
 //! struct field the solver resolved or a call of the map's `create_xyz_point`,
-//! `create_odr_point` or `create_route_point`.
+//! `create_odr_point`, `create_route_point`, `create_trajectory` or `create_path` (§8.12.2.1:
+//! a path is a route, which the solver leaves to the runtime, so `map.create_path(points:
+//! [p0, p1, …], interpolation: …)` with resolved `pose_3d` fields is how a program gives one).
 
-use dsl::semantics::hir::{Arg as HirArg, Expr};
+use dsl::semantics::hir::{Arg as HirArg, Expr, ExprKind};
 use dsl::Value;
 
 use super::eval::{bind, Eval};
 use super::route::{map_call, odr_point};
 use super::tree::Action;
+use super::value::Val;
 use crate::error::{Error, ErrorKind as K, Site};
 
 /// A place or orientation an action is given.
@@ -30,10 +34,24 @@ pub(crate) enum Place {
     Route { s: f64, t: f64 },
     /// Yaw, pitch and roll (rad).
     Orientation { yaw: f64, pitch: f64, roll: f64 },
-    /// A `trajectory`: world x and y of its points (m), their time stamps (s), and whether it
-    /// is interpolated `smooth`.
+    /// A `path` (`map.create_path(points, interpolation)`): world x, y (m) and yaw (rad) of
+    /// its points, and whether it is interpolated `smooth`.
+    Path {
+        points: Vec<(f64, f64, f64)>,
+        smooth: bool,
+    },
+    /// A `relative_trajectory` or `relative_path` with pose_3d points (§8.12, relative to a
+    /// reference the action names): x, y (m) and yaw (rad) of its points; its time stamps (s;
+    /// none for a path); `smooth`.
+    Relative {
+        points: Vec<(f64, f64, f64)>,
+        times: Vec<f64>,
+        smooth: bool,
+    },
+    /// A `trajectory`: world x, y (m) and yaw (rad) of its points, their time stamps (s), and
+    /// whether it is interpolated `smooth`.
     Trajectory {
-        points: Vec<(f64, f64)>,
+        points: Vec<(f64, f64, f64)>,
         times: Vec<f64>,
         smooth: bool,
     },
@@ -60,7 +78,10 @@ pub(crate) fn read(
     let wanted: &[&str] = match action {
         Action::AssignPosition => &["position", "odr_point", "route_point"],
         Action::ChangePosition | Action::AssignOrientation => &["target"],
-        Action::FollowTrajectory => &["absolute"],
+        Action::FollowTrajectory
+        | Action::FollowPath
+        | Action::ReplayTrajectory
+        | Action::ReplayPath => &["absolute", "relative"],
         _ => return Ok(Vec::new()),
     };
     bind(args, params)
@@ -82,7 +103,7 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
         ev.files.err(
             K::Value,
             e.span,
-            format!("expected a position_3d, xyz_point, odr_point, route_point, orientation_3d or trajectory (a field, or map.create_xyz_point/create_odr_point/create_route_point(…)), found {what}"),
+            format!("expected a position_3d, xyz_point, odr_point, route_point, orientation_3d, trajectory or path (a field, or map.create_xyz_point/create_odr_point/create_route_point/create_trajectory/create_path(…)), found {what}"),
         )
     };
     if let Some((method, args)) = map_call(ev, e) {
@@ -119,25 +140,84 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
                     z: number(&ps, "z")?,
                 })
             }
+            "create_path" | "create_trajectory" => {
+                let trajectory = method == "create_trajectory";
+                let ps: &[&str] = if trajectory {
+                    &["points", "time_stamps", "interpolation"]
+                } else {
+                    &["points", "interpolation"]
+                };
+                let names = params(ps);
+                let bound = bind(args, &names);
+                let given = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+                let list = |n: &str| match given(n).map(|e| &e.kind) {
+                    Some(ExprKind::List(items)) => Ok(items.as_slice()),
+                    _ => Err(bad(&format!(
+                        "map.{method}(…) without a list of {n} (a list literal, `[a, b, …]`)"
+                    ))),
+                };
+                let points = list("points")?
+                    .iter()
+                    .map(|item| {
+                        ev.path_of(item)
+                            .and_then(|p| ev.lookup(&p))
+                            .and_then(|(_, v)| pose_of(v))
+                            .ok_or_else(|| {
+                                ev.files.err(
+                                    K::Value,
+                                    item.span,
+                                    "expected a pose_3d the solver resolved as a point of the path, found another value",
+                                )
+                            })
+                    })
+                    .collect::<Result<Vec<_>, _>>()?;
+                let times = if trajectory {
+                    list("time_stamps")?
+                        .iter()
+                        .map(|t| ev.number(t))
+                        .collect::<Result<Vec<_>, _>>()?
+                } else {
+                    Vec::new()
+                };
+                let smooth = match given("interpolation") {
+                    Some(e) => match ev.eval(e)? {
+                        Val::Enum(m) if m == "smooth" => true,
+                        Val::Enum(m) if m == "straight_line" => false,
+                        _ => {
+                            return Err(ev.files.err(
+                                K::Value,
+                                e.span,
+                                "expected an interpolation (straight_line, smooth), found another value",
+                            ))
+                        }
+                    },
+                    None => false,
+                };
+                Ok(if trajectory {
+                    Place::Trajectory {
+                        points,
+                        times,
+                        smooth,
+                    }
+                } else {
+                    Place::Path { points, smooth }
+                })
+            }
             m => Err(bad(&format!("map.{m}(…)"))),
         };
     }
     let path = ev.path_of(e).ok_or_else(|| bad("an expression"))?;
-    let Some((_, v @ Value::Compound { fields, .. })) = ev.lookup(&path) else {
+    let found = ev.lookup(&path);
+    let Some((_, v @ Value::Compound { fields, .. })) = found else {
+        let hint = match found {
+            Some((_, Value::RunTime(t))) if t == "path" => {
+                " (a path is made by map.create_path(points: [...], interpolation: ...))"
+            }
+            _ => "",
+        };
         return Err(bad(&format!(
-            "`{path}`, which is no struct the solver resolved"
+            "`{path}`, which is no struct the solver resolved{hint}"
         )));
-    };
-    let num = |fields: &[(String, Value)], n: &str| {
-        fields
-            .iter()
-            .find(|(f, _)| f == n)
-            .and_then(|(_, v)| match v {
-                Value::Quantity { si, .. } | Value::Float(si) => Some(*si),
-                Value::Int(i) => Some(*i as f64),
-                _ => None,
-            })
-            .unwrap_or(0.0)
     };
     let text = |n: &str| match fields.iter().find(|(f, _)| f == n) {
         Some((_, Value::Str(s))) => Ok(s.clone()),
@@ -176,40 +256,50 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
             s: num(fields, "s"),
             t: num(fields, "t"),
         })
-    } else if ev.is_a(v, "trajectory") {
+    } else if ["trajectory", "relative_trajectory", "relative_path"]
+        .iter()
+        .any(|t| ev.is_a(v, t))
+    {
+        let relative = !ev.is_a(v, "trajectory");
         let list = |n: &str| match fields.iter().find(|(f, _)| f == n) {
             Some((_, Value::List(items))) => Ok(items.as_slice()),
             _ => Err(bad(&format!("`{path}` without a list of {n}"))),
         };
         let points = list("points")?
             .iter()
-            .map(|p| match p {
-                Value::Compound { fields, .. } => {
-                    match fields.iter().find(|(f, _)| f == "position") {
-                        Some((_, Value::Compound { fields: q, .. })) => {
-                            Ok((num(q, "x"), num(q, "y")))
-                        }
-                        _ => Err(bad(&format!("a point of `{path}` without a position"))),
-                    }
-                }
-                _ => Err(bad(&format!("a point of `{path}` that is no pose_3d"))),
+            .map(|p| {
+                pose_of(p).ok_or_else(|| {
+                    bad(&format!("a point of `{path}` that is no pose_3d{}", if relative { " (route_point and odr_point points are route elements, which the solver leaves to the runtime: relative_trajectory_pose_3d / relative_path_pose_3d give points a program can write)" } else { "" }))
+                })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        let times = list("time_stamps")?
-            .iter()
-            .map(|t| match t {
-                Value::Quantity { si, .. } | Value::Float(si) => Ok(*si),
-                _ => Err(bad(&format!("a time stamp of `{path}` that is no time"))),
-            })
-            .collect::<Result<Vec<_>, _>>()?;
+        let times = if ev.is_a(v, "relative_path") {
+            Vec::new()
+        } else {
+            list("time_stamps")?
+                .iter()
+                .map(|t| match t {
+                    Value::Quantity { si, .. } | Value::Float(si) => Ok(*si),
+                    _ => Err(bad(&format!("a time stamp of `{path}` that is no time"))),
+                })
+                .collect::<Result<Vec<_>, _>>()?
+        };
         let smooth = matches!(
             fields.iter().find(|(f, _)| f == "interpolation"),
             Some((_, Value::Enum { member, .. })) if member == "smooth"
         );
-        Ok(Place::Trajectory {
-            points,
-            times,
-            smooth,
+        Ok(if relative {
+            Place::Relative {
+                points,
+                times,
+                smooth,
+            }
+        } else {
+            Place::Trajectory {
+                points,
+                times,
+                smooth,
+            }
         })
     } else if ev.is_a(v, "orientation_3d") {
         Ok(Place::Orientation {
@@ -219,5 +309,33 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
         })
     } else {
         Err(bad(&format!("`{path}`")))
+    }
+}
+
+/// The number field `n` of a struct's `fields` (0 when it has none).
+fn num(fields: &[(String, Value)], n: &str) -> f64 {
+    fields
+        .iter()
+        .find(|(f, _)| f == n)
+        .and_then(|(_, v)| match v {
+            Value::Quantity { si, .. } | Value::Float(si) => Some(*si),
+            Value::Int(i) => Some(*i as f64),
+            _ => None,
+        })
+        .unwrap_or(0.0)
+}
+
+/// World x, y (m) and yaw (rad) of a `pose_3d` value.
+fn pose_of(v: &Value) -> Option<(f64, f64, f64)> {
+    let Value::Compound { fields, .. } = v else {
+        return None;
+    };
+    let yaw = match fields.iter().find(|(f, _)| f == "orientation") {
+        Some((_, Value::Compound { fields: o, .. })) => num(o, "yaw"),
+        _ => 0.0,
+    };
+    match fields.iter().find(|(f, _)| f == "position") {
+        Some((_, Value::Compound { fields: q, .. })) => Some((num(q, "x"), num(q, "y"), yaw)),
+        _ => None,
     }
 }

@@ -125,6 +125,10 @@ pub(crate) enum Action {
     FollowPath,
     /// `follow_trajectory(…)`.
     FollowTrajectory,
+    /// `replay_path(…)`: a path followed exactly (the dynamic limits may be violated).
+    ReplayPath,
+    /// `replay_trajectory(…)`: a trajectory followed exactly.
+    ReplayTrajectory,
     /// `follow_lane(…)`.
     FollowLane,
     /// `change_lane(…)`.
@@ -142,6 +146,11 @@ pub(crate) enum Action {
 }
 
 impl Action {
+    /// Whether the action moves along a path (no time stamps): `follow_path`, `replay_path`.
+    pub(crate) fn along_path(self) -> bool {
+        matches!(self, Action::FollowPath | Action::ReplayPath)
+    }
+
     /// The standard library's action named `name`.
     fn of_library(name: &str) -> Action {
         match name {
@@ -158,6 +167,8 @@ impl Action {
             "keep_acceleration" => Action::KeepAcceleration,
             "follow_path" => Action::FollowPath,
             "follow_trajectory" => Action::FollowTrajectory,
+            "replay_path" => Action::ReplayPath,
+            "replay_trajectory" => Action::ReplayTrajectory,
             "follow_lane" => Action::FollowLane,
             "change_lane" => Action::ChangeLane,
             "change_space_gap" => Action::ChangeSpaceGap,

@@ -240,13 +240,14 @@ impl PlanRoad<'_> {
         })
     }
 
-    /// World x and y of the road point (s, t) (the plan's s), if s is on the plan's roads.
-    pub(crate) fn world(&self, s: f64, t: f64) -> Option<(f64, f64)> {
+    /// World x, y and the road's heading (rad, towards +s) at the road point (s, t) (the
+    /// plan's s), if s is on the plan's roads.
+    pub(crate) fn world_pose(&self, s: f64, t: f64) -> Option<(f64, f64, f64)> {
         if !(0.0..=self.length()).contains(&s) {
             return None;
         }
         let (road, s) = self.road_at(s);
-        road.pose(s, t).ok().map(|p| (p.x, p.y))
+        road.pose(s, t).ok().map(|p| (p.x, p.y, p.h))
     }
 
     /// Width of lane `lane` at `s` (m); 0 where the lane is missing.

@@ -32,6 +32,62 @@ fn a_missing_mandatory_argument() {
 }
 
 #[test]
+fn missing_mandatory_arguments_of_the_position_trajectory_and_gap_actions() {
+    expect(
+        "err_change_position_none",
+        "5:9",
+        &["expected a target in change_position(…) (a mandatory argument, a position_3d), found none"],
+    );
+    expect(
+        "err_follow_trajectory_none",
+        "5:9",
+        &["expected a trajectory in follow_trajectory(…) (absolute: or relative:, one is mandatory), found none"],
+    );
+    expect(
+        "err_gap_no_target",
+        "8:9",
+        &["expected a target in change_space_gap(…) (a mandatory argument), found none"],
+    );
+}
+
+#[test]
+fn change_position_on_the_road_network_behind_or_too_sharp() {
+    expect(
+        "err_change_position_on_road",
+        "10:9",
+        &["expected change_position(…, on_road_network: true) within the vehicle's ±10 m/s² lateral acceleration, found it needs 138.17 m/s² to move 7.00 m sideways in 0.50 s"],
+    );
+    expect(
+        "err_change_position_behind",
+        "9:9",
+        &["expected the target of change_position(…, on_road_network: true) ahead of `ego` (s = 50.00 m), found it at s = 10.00 m"],
+    );
+}
+
+#[test]
+fn a_relative_trajectory_of_route_points_or_without_its_reference() {
+    expect(
+        "err_relative_route_points",
+        "11:41",
+        &["a point of `rt` that is no pose_3d (route_point and odr_point points are route elements, which the solver leaves to the runtime"],
+    );
+    expect(
+        "err_relative_no_reference",
+        "10:9",
+        &["expected a reference in follow_trajectory(…) (a mandatory argument), found none"],
+    );
+}
+
+#[test]
+fn a_trajectory_faster_than_the_vehicle() {
+    expect(
+        "err_follow_trajectory_fast",
+        "15:41",
+        &["expected a trajectory within the vehicle's 70 m/s, found segment 2 (100.00 m in 1.00 s) needs 100.00 m/s"],
+    );
+}
+
+#[test]
 fn a_target_beyond_the_vehicle_limits_or_the_duration() {
     expect(
         "err_speed_limits",
@@ -152,20 +208,25 @@ fn assign_position_without_or_with_two_places_or_off_the_road() {
 }
 
 #[test]
-fn change_position_with_a_smooth_interpolation() {
+fn a_smooth_trajectory_with_two_points_at_one_place() {
     expect(
-        "err_change_position_smooth",
-        "5:31",
-        &["expected interpolation: straight_line"],
+        "err_trajectory_smooth_same_point",
+        "19:41",
+        &["expected the points of a smooth path apart, found points 2 and 3 at the same place"],
     );
 }
 
 #[test]
 fn follow_path_and_a_trajectory_without_its_times() {
     expect(
-        "err_follow_path",
-        "5:24",
-        &["expected a path the runtime can follow, found follow_path(…)"],
+        "err_follow_path_field",
+        "6:24",
+        &["found `p`, which is no struct the solver resolved (a path is made by map.create_path(points: [...], interpolation: ...))"],
+    );
+    expect(
+        "err_follow_path_standing",
+        "10:8",
+        &["expected `ego` moving at the start of follow_path(…) (it moves at the speed it has), found it standing"],
     );
     expect(
         "err_follow_trajectory_times",

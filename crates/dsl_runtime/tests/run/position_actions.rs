@@ -80,3 +80,169 @@ fn follow_trajectory_reaches_each_point_at_its_time_stamp() {
     let (s, e) = r.phase("do.0");
     assert!(s.abs() < 1e-9 && (e - 4.0).abs() < 1e-9, "{s} {e}");
 }
+
+/// The Hermite curve's closed forms (B(1/2), its heading) and the Gauss–Legendre length are
+/// worked to 1e-4 m in the scenarios' comments; the engine's NURBS arc-length table inverts s
+/// to 1e-10 m.
+const CURVE_TOL: f64 = 1e-3;
+
+#[test]
+fn change_position_smooth_follows_the_hermite_curve_at_its_speed() {
+    let r = run("actions/change_position_smooth", 0, None);
+    // At 2.0 s ego has come 20 m, 0.0917 m short of the mid-point (40, -7) along the heading
+    // 0.13077 rad there (the curve is straight to within 1e-4 m over 0.09 m).
+    let (h, back) = (0.13077f64, 0.0917);
+    let at2 = r.at(2.0, "ego");
+    assert!(
+        (at2.x - (40.0 - back * h.cos())).abs() < CURVE_TOL,
+        "x(2) = {}",
+        at2.x
+    );
+    assert!(
+        (at2.y - (-7.0 - back * h.sin())).abs() < CURVE_TOL,
+        "y(2) = {}",
+        at2.y
+    );
+    assert!((at2.h - h).abs() < CURVE_TOL, "h(2) = {}", at2.h);
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < 1e-9 && (e - 4.05).abs() < 1e-9, "{s} {e}");
+    let end = r.at(4.05, "ego");
+    assert!((end.y + 5.25).abs() < CURVE_TOL, "y(4.05) = {}", end.y);
+    assert!(end.h.abs() < CURVE_TOL, "h(4.05) = {}", end.h);
+    assert_eq!(end.lane, -2);
+}
+
+/// The hand-worked motion of follow_trajectory_smooth.osc (and of the relative trajectory that
+/// resolves to it).
+fn check_smooth_trajectory(name: &str) {
+    let r = run(name, 0, None);
+    for (t, x, y, h) in [
+        (2.0, 40.0, -7.0, 0.13077),
+        (4.0, 60.0, -5.25, 0.0),
+        (6.0, 80.0, -5.25, 0.0),
+        (8.0, 100.0, -5.25, 0.0),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!((ego.x - x).abs() < CURVE_TOL, "x({t}) = {}", ego.x);
+        assert!((ego.y - y).abs() < CURVE_TOL, "y({t}) = {}", ego.y);
+        assert!((ego.h - h).abs() < CURVE_TOL, "h({t}) = {}", ego.h);
+    }
+    assert_eq!(r.at(8.0, "ego").lane, -2);
+    assert!((r.at(7.0, "ego").speed - 10.0).abs() < CURVE_TOL);
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < 1e-9 && (e - 8.0).abs() < 1e-9, "{s} {e}");
+}
+
+#[test]
+fn follow_trajectory_smooth_passes_each_point_with_its_heading_at_its_time() {
+    check_smooth_trajectory("actions/follow_trajectory_smooth");
+}
+
+#[test]
+fn a_relative_trajectory_in_the_actors_frame_is_the_absolute_one() {
+    check_smooth_trajectory("actions/relative_trajectory");
+}
+
+#[test]
+fn a_relative_trajectory_in_road_coordinates_of_another_actor() {
+    let r = run("actions/relative_trajectory_road", 0, None);
+    for (t, x, y) in [
+        (2.0, 40.0, -7.0),
+        (4.0, 60.0, -5.25),
+        (6.0, 80.0, -5.25),
+        (8.0, 100.0, -5.25),
+    ] {
+        let ego = r.at(t, "ego");
+        close(ego.x, x, &format!("x({t})"));
+        close(ego.y, y, &format!("y({t})"));
+    }
+    assert_eq!(r.at(8.0, "ego").lane, -2);
+    close(r.at(8.0, "lead").x, 120.0, "lead x(8)");
+    let (s, e) = r.phase("do.follow");
+    assert!(s.abs() < 1e-9 && (e - 8.0).abs() < 1e-9, "{s} {e}");
+}
+
+/// How far the engine's pure pursuit (look-ahead 5.13 m) may lag the path across it on the
+/// S-curve (m): the curve's radius is 76.8 m or more, so the goal point's chord departs from
+/// it by L²/(2·76.8) < 0.2 m ahead, of which the pursuit arc keeps a tenth (the run: 1.2 cm).
+const PURSUIT_TOL: f64 = 0.02;
+
+#[test]
+fn follow_path_steers_along_a_path_made_by_create_path() {
+    let r = run("actions/follow_path", 0, None);
+    // At 2 s: 20 m along the S-curve, as in change_position_smooth: (39.909, -7.012), heading
+    // 0.13077 rad.
+    let mid = r.at(2.0, "ego");
+    assert!((mid.x - 39.909).abs() < PURSUIT_TOL, "x(2) = {}", mid.x);
+    assert!((mid.y + 7.012).abs() < PURSUIT_TOL, "y(2) = {}", mid.y);
+    assert!((mid.h - 0.13077).abs() < PURSUIT_TOL, "h(2) = {}", mid.h);
+    // On the straight part the pursuit is back on the line: at 8 s 80 m of the 80.1833 m
+    // path are driven, x = 100 - 0.1833.
+    let at8 = r.at(8.0, "ego");
+    assert!((at8.x - 99.8167).abs() < CURVE_TOL, "x(8) = {}", at8.x);
+    assert!((at8.y + 5.25).abs() < CURVE_TOL, "y(8) = {}", at8.y);
+    assert!(at8.h.abs() < CURVE_TOL, "h(8) = {}", at8.h);
+    assert_eq!(at8.lane, -2);
+    assert!((at8.speed - 10.0).abs() < 1e-9, "v(8) = {}", at8.speed);
+    // The end is reached at 8.018 s, in the step to 8.05 s, which ends the phase.
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < 1e-9 && (e - 8.05).abs() < 1e-9, "{s} {e}");
+}
+
+/// The scenario's hand-worked integrals (midpoint rule, 100,000 points) against the engine's
+/// steps of 0.05 s (m).
+const ROAD_TOL: f64 = 1e-4;
+
+#[test]
+fn change_position_on_the_road_network_changes_lane_on_the_way() {
+    let r = run("actions/change_position_on_road", 0, None);
+    for (t, x, y) in [
+        (1.0, 29.98311, -8.24199),
+        (2.0, 39.90654, -7.01291),
+        (4.0, 59.81131, -5.25019),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!((ego.x - x).abs() < ROAD_TOL, "x({t}) = {}", ego.x);
+        assert!((ego.y - y).abs() < ROAD_TOL, "y({t}) = {}", ego.y);
+    }
+    assert_eq!(r.at(4.0, "ego").lane, -2);
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < 1e-9 && (e - 4.05).abs() < 1e-9, "{s} {e}");
+    let end = r.at(4.05, "ego");
+    assert!((end.x - 60.3113).abs() < ROAD_TOL, "x(4.05) = {}", end.x);
+    assert!((end.y + 5.25).abs() < ROAD_TOL, "y(4.05) = {}", end.y);
+}
+
+#[test]
+fn replay_path_follows_the_polyline_exactly_round_its_corner() {
+    let r = run("actions/replay_path", 0, None);
+    let h = (7.0f64 / 24.0).atan();
+    for (t, x, y, hh) in [
+        (1.25, 32.0, -5.25, h),
+        (2.5, 44.0, -1.75, h),
+        (5.0, 69.0, -1.75, 0.0),
+        (7.5, 94.0, -1.75, 0.0),
+    ] {
+        let ego = r.at(t, "ego");
+        close(ego.x, x, &format!("x({t})"));
+        close(ego.y, y, &format!("y({t})"));
+        if t != 2.5 {
+            close(ego.h, hh, &format!("h({t})"));
+        }
+    }
+    assert_eq!(r.at(7.5, "ego").lane, -1);
+    // The end, 75 m at 10 m/s, falls on the step at 7.5 s, which ends the action and its phase.
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < 1e-9 && (e - 7.5).abs() < 1e-9, "{s} {e}");
+}
+
+#[test]
+fn replay_trajectory_follows_it_beyond_the_vehicles_limits() {
+    let r = run("actions/replay_trajectory", 0, None);
+    close(r.at(1.0, "ego").x, 30.0, "x(1)");
+    close(r.at(2.5, "ego").x, 90.0, "x(2.5)");
+    close(r.at(3.0, "ego").x, 140.0, "x(3)");
+    close(r.at(3.0, "ego").y, -8.75, "y(3)");
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < 1e-9 && (e - 3.0).abs() < 1e-9, "{s} {e}");
+}
