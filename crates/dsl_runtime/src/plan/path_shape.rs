@@ -68,18 +68,19 @@ pub(crate) fn length(points: &[Pose2]) -> f64 {
     let c = hermite_controls(points);
     c.windows(4)
         .step_by(3)
-        .map(|b| {
-            integrate01(|u| {
-                let v = 1.0 - u;
-                let d = |i: usize| {
-                    3.0 * (v * v * (b[1][i] - b[0][i])
-                        + 2.0 * u * v * (b[2][i] - b[1][i])
-                        + u * u * (b[3][i] - b[2][i]))
-                };
-                d(0).hypot(d(1))
-            })
-        })
+        .map(|b| integrate01(|u| bezier_speed(b, u)))
         .sum()
+}
+
+/// |B′(u)| of the cubic Bézier with control points `c` (four).
+fn bezier_speed(c: &[[f64; 2]], u: f64) -> f64 {
+    let v = 1.0 - u;
+    let d = |i: usize| {
+        3.0 * (v * v * (c[1][i] - c[0][i])
+            + 2.0 * u * v * (c[2][i] - c[1][i])
+            + u * u * (c[3][i] - c[2][i]))
+    };
+    d(0).hypot(d(1))
 }
 
 /// ∫₀¹ f(u) du by [`PANELS`] five-point Gauss–Legendre panels (exact for polynomials up to
@@ -96,6 +97,98 @@ pub(crate) fn integrate01(f: impl Fn(f64) -> f64) -> f64 {
                 / 2.0
         })
         .sum()
+}
+
+/// The length (m) of each segment of the path through `points`: its chord, or its smooth
+/// curve's.
+pub(crate) fn segment_lengths(points: &[Pose2], smooth_curve: bool) -> Vec<f64> {
+    points
+        .windows(2)
+        .map(|w| {
+            if smooth_curve {
+                length(w)
+            } else {
+                (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1)
+            }
+        })
+        .collect()
+}
+
+/// Where the path through `points` is `d` m from its start: the segment k, the fraction u of
+/// it (the chord's fraction, or the Bézier parameter, found by bisection on its arc length; a
+/// segment's time runs linearly in u either way), the point (x, y), and the rate of length in
+/// u there (m per unit u: the chord, or |B′(u)|).
+pub(crate) fn locate(
+    points: &[Pose2],
+    smooth_curve: bool,
+    d: f64,
+) -> (usize, f64, (f64, f64), f64) {
+    let lengths = segment_lengths(points, smooth_curve);
+    let mut left = d.max(0.0);
+    let last = lengths.len().saturating_sub(1);
+    let k = lengths
+        .iter()
+        .position(|l| {
+            let here = left <= *l;
+            if !here {
+                left -= l;
+            }
+            here
+        })
+        .unwrap_or(last);
+    let (a, b) = (points[k], points[k + 1]);
+    if !smooth_curve {
+        let u = if lengths[k] > 0.0 {
+            (left / lengths[k]).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        return (
+            k,
+            u,
+            (a.0 + u * (b.0 - a.0), a.1 + u * (b.1 - a.1)),
+            lengths[k],
+        );
+    }
+    let c = hermite_controls(&[a, b]);
+    let speed = |u: f64| bezier_speed(&c, u);
+    // ∫₀ᵘ |B′| = u·∫₀¹ |B′(u·w)| dw, rising in u: bisection to 1e-12 of the parameter.
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..42 {
+        let mid = 0.5 * (lo + hi);
+        if mid * integrate01(|w| speed(mid * w)) < left {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let u = 0.5 * (lo + hi);
+    let v = 1.0 - u;
+    let at = |i: usize| {
+        v * v * v * c[0][i]
+            + 3.0 * v * v * u * c[1][i]
+            + 3.0 * v * u * u * c[2][i]
+            + u * u * u * c[3][i]
+    };
+    (k, u, (at(0), at(1)), speed(u))
+}
+
+/// `action` (a FollowTrajectoryAction) starting `d` m along its trajectory (1.x
+/// initialDistanceOffset: the time to reach that point is deducted from the trajectory's).
+pub(crate) fn starting_at(action: PrivateAction, d: f64) -> PrivateAction {
+    match action {
+        PrivateAction::Routing(mut r) => {
+            if let RoutingAction::FollowTrajectory {
+                initial_distance_offset,
+                ..
+            } = r.as_mut()
+            {
+                *initial_distance_offset = (d > 0.0).then_some(d);
+            }
+            PrivateAction::Routing(r)
+        }
+        other => other,
+    }
 }
 
 /// A world position (x, y; the road surface's z) written at `site`.

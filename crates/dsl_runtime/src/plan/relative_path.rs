@@ -18,8 +18,7 @@
 //! lanes). The points are fixed at the action's start (the trajectory does not move with the
 //! reference afterwards, as 1.x resolves a trajectory's relative positions when its action
 //! starts). A relative trajectory without a `reference`, `reference`/`transform` beside an
-//! absolute one, and a start the plan does not know are errors. `start_offset` and
-//! `end_offset` are not run (an error at the argument).
+//! absolute one, and a start the plan does not know are errors.
 
 use super::planner::Planner;
 use crate::error::{Error, ErrorKind as K};
@@ -34,14 +33,6 @@ impl Planner<'_> {
         inv: &Invoke,
         t0: Option<f64>,
     ) -> Result<Option<PlaceArg>, Error> {
-        for param in ["start_offset", "end_offset"] {
-            if let Some(a) = arg(&inv.args, param) {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    format!("expected {}(…) without `{param}:` (offsets along a path or trajectory are not run), found it", inv.action),
-                ));
-            }
-        }
         let Some(
             given @ PlaceArg {
                 place:

@@ -7,23 +7,28 @@
 //! | `follow_trajectory(absolute: trajectory)` | FollowTrajectoryAction along the polyline of the points (world x, y), or with `smooth` the Hermite curve through them (a Nurbs), each reached at its time stamp (a relative time reference from the action's start, offset by the first stamp), following mode `position` | at the last time stamp |
 //! | `follow_path(absolute: path)` | FollowTrajectoryAction along the path (`map.create_path(points, interpolation)`: polyline or smooth) in following mode `follow` (steered within the vehicle's limits), no time reference: at the speed the actor has | when the engine has the actor at the path's end |
 //!
-//! A trajectory's points must be at least two, as many as its time stamps, the stamps rising;
-//! `relative:` trajectories and `start_offset`/`end_offset` are errors (not run), as is a
-//! segment whose length over its time exceeds the vehicle's maximum speed. With
+//! | `replay_path(…)`, `replay_trajectory(…)` | as the two above in following mode `position` (exactly; "the dynamic limits may be violated") | as above |
+//!
+//! A trajectory's points must be at least two, as many as its time stamps, the stamps rising,
+//! and (`follow_trajectory`) no segment's length over its time above the vehicle's maximum
+//! speed. `relative:` paths and trajectories are placed against their reference
+//! (`relative_path`); `start_offset` and `end_offset` cut the part followed (`Cut`): the
+//! engine's initialDistanceOffset, and the phase's end that far before the end. With
 //! `interpolation: straight_line` the points' orientations are not read (the heading is the
 //! polyline's); with `smooth` the path is the cubic Hermite curve through the points with their
-//! yaws as headings (`path_shape`), its consecutive points apart. The actor
-//! is where the first point is at the start (the engine's FollowTrajectoryAction in `position`
-//! mode puts it on the trajectory); the plan puts it in the lane and at the s of the last point.
+//! yaws as headings (`path_shape`), its consecutive points apart. The actor is where the
+//! followed part starts at the action's start (the engine's FollowTrajectoryAction in
+//! `position` mode puts it on the trajectory); the plan puts it in the lane and at the s of
+//! the followed part's end.
 
 use scenario::FollowingMode;
 
-use super::path_shape::{along, length as path_length, Pose2};
+use super::path_shape::{along, locate, segment_lengths, starting_at, Pose2};
 use super::planner::Planner;
 use super::speed_actions::Slot;
 use super::types::{Planned, When, MAX_SPEED};
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{Action, Invoke, Phase, Place, PlaceArg};
+use crate::resolve::{arg, Action, Invoke, Phase, Place, PlaceArg};
 
 impl Planner<'_> {
     /// Plans `inv`'s `follow_trajectory` or `follow_path` for one actor; returns when it ends.
@@ -81,8 +86,10 @@ impl Planner<'_> {
         if inv.kind == Action::FollowTrajectory {
             check_segment_speeds(points, times, *smooth, site)?;
         }
-        let span = times[times.len() - 1] - times[0];
-        let end = self.end_of(place, points)?;
+        let cut = cut(inv, points, *smooth)?;
+        let time = |(k, u): (usize, f64)| times[k] + u * (times[k + 1] - times[k]);
+        let span = time(cut.end) - time(cut.start);
+        let end = self.end_of(place, cut.end_point)?;
         let n = name(&inv.action);
         let action = along(
             &n,
@@ -92,17 +99,20 @@ impl Planner<'_> {
             FollowingMode::Position,
             site,
         );
+        let action = starting_at(action, cut.start_offset);
         out.push(Planned::with_phase(target, n.clone(), action, &p.site));
         if let Some(t) = t0 {
-            // At the end: the last point, at the last segment's speed (the smooth curve's too:
-            // its Bézier leaves the last point at 3·(L/3)/Δt, the chord over the time).
-            let k = points.len() - 1;
-            let ((xa, ya, _), (x1, y1, _)) = (points[k - 1], points[k]);
-            let v = (x1 - xa).hypot(y1 - ya) / (times[k] - times[k - 1]);
+            // At the end: the end point, at the speed the trajectory has there (length per unit
+            // of the segment's parameter over its time; at a last point the chord over the time).
+            let k = cut.end.0;
+            let v = cut.end_rate / (times[k + 1] - times[k]);
             self.track_mut(target).ramp(t + span, t + span, v);
             self.arrive(target, t, span, end);
         }
-        Ok(Some(self.ends(t0, span, &n, p)))
+        // With an end_offset the action would go on to the trajectory's end: the phase (and
+        // with its Act the action) ends when the actor is end_offset before it.
+        let event = if cut.end_offset > 0.0 { "" } else { n.as_str() };
+        Ok(Some(self.ends(t0, span, event, p)))
     }
 
     /// `follow_path(absolute: path)`: a FollowTrajectoryAction along the path (polyline or
@@ -155,7 +165,8 @@ impl Planner<'_> {
                 format!("expected `{target}` moving at the start of {}(…) (it moves at the speed it has), found it standing", inv.action),
             ));
         }
-        let end = self.end_of(place, points)?;
+        let cut = cut(inv, points, *smooth)?;
+        let end = self.end_of(place, cut.end_point)?;
         let n = name(&inv.action);
         // follow_path steers within the vehicle's limits; replay_path follows exactly.
         let mode = if inv.kind == Action::ReplayPath {
@@ -164,27 +175,24 @@ impl Planner<'_> {
             FollowingMode::Follow
         };
         let action = along(&n, points, None, *smooth, mode, site);
+        let action = starting_at(action, cut.start_offset);
         out.push(Planned::with_phase(target, n.clone(), action, &p.site));
+        // The path's length between the offsets at v; the engine ends it at the path's end (the
+        // phase ends on the action's completion), or, with an end_offset, the phase ends at
+        // this time, end_offset before the end.
+        let span = cut.length / v;
         if let Some(t) = t0 {
-            // The path's length at v; the engine's steering ends it (the phase ends on the
-            // action's completion, not at this estimate), in the last point's lane.
-            let length = if *smooth {
-                path_length(points)
-            } else {
-                points
-                    .windows(2)
-                    .map(|w| (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1))
-                    .sum()
-            };
-            self.arrive(target, t, length / v, end);
+            self.arrive(target, t, span, end);
+        }
+        if cut.end_offset > 0.0 {
+            return Ok(Some(self.ends(t0, span, "", p)));
         }
         Ok(Some(self.ends(None, 0.0, &n, p)))
     }
 
-    /// The lane, s and offset from the lane's centre of the last of `points` (of the path or
-    /// trajectory `place`), which must be in a driving lane of the plan road.
-    fn end_of(&self, place: &PlaceArg, points: &[Pose2]) -> Result<(i32, f64, f64), Error> {
-        let (x, y, _) = points[points.len() - 1];
+    /// The lane, s and offset from the lane's centre of the point (x, y) where a path or
+    /// trajectory (`place`) ends, which must be in a driving lane of the plan road.
+    fn end_of(&self, place: &PlaceArg, (x, y): (f64, f64)) -> Result<(i32, f64, f64), Error> {
         self.lane_position(&PlaceArg {
             place: Place::World { x, y, z: 0.0 },
             ..place.clone()
@@ -230,12 +238,8 @@ fn check_segment_speeds(
     smooth: bool,
     site: &Site,
 ) -> Result<(), Error> {
-    for (k, (w, t)) in points.windows(2).zip(times.windows(2)).enumerate() {
-        let length = if smooth {
-            path_length(w)
-        } else {
-            (w[1].0 - w[0].0).hypot(w[1].1 - w[0].1)
-        };
+    let lengths = segment_lengths(points, smooth);
+    for (k, (&length, t)) in lengths.iter().zip(times.windows(2)).enumerate() {
         let v = length / (t[1] - t[0]);
         if v > MAX_SPEED {
             return Err(site.err(
@@ -249,4 +253,61 @@ fn check_segment_speeds(
         }
     }
     Ok(())
+}
+
+/// The part of a path or trajectory an action follows: from `start_offset` m after its start
+/// to `end_offset` m before its end (§8.8.2.16-17; both 0 unless given).
+struct Cut {
+    start_offset: f64,
+    end_offset: f64,
+    /// The length between them (m).
+    length: f64,
+    /// Segment and parameter of the start, and of the end.
+    start: (usize, f64),
+    end: (usize, f64),
+    end_point: (f64, f64),
+    /// Length per unit of the end segment's parameter at the end (m).
+    end_rate: f64,
+}
+
+/// The [`Cut`] `inv`'s `start_offset` and `end_offset` make of the path through `points`: each
+/// 0 m or more, together shorter than the path.
+fn cut(inv: &Invoke, points: &[Pose2], smooth: bool) -> Result<Cut, Error> {
+    let total: f64 = segment_lengths(points, smooth).iter().sum();
+    let offset = |param: &str| -> Result<(f64, Option<Site>), Error> {
+        match arg(&inv.args, param) {
+            None => Ok((0.0, None)),
+            Some(a) => {
+                let d = a.number()?;
+                if d < 0.0 {
+                    return Err(a.site.err(
+                        K::Argument,
+                        format!("expected a {param} of 0 m or more, found {d} m"),
+                    ));
+                }
+                Ok((d, Some(a.site.clone())))
+            }
+        }
+    };
+    let ((start_offset, s_site), (end_offset, e_site)) =
+        (offset("start_offset")?, offset("end_offset")?);
+    // Only a given offset can leave nothing to follow (its site is there to name).
+    let given = e_site.or(s_site);
+    if let Some(site) = given.filter(|_| start_offset + end_offset >= total) {
+        return Err(site.err(
+            K::Unsatisfiable,
+            format!("expected start_offset + end_offset below the {}'s length {total:.2} m, found {:.2} m", if inv.kind.along_path() { "path" } else { "trajectory" }, start_offset + end_offset),
+        ));
+    }
+    let (k0, u0, _, _) = locate(points, smooth, start_offset);
+    let (k1, u1, end_point, end_rate) = locate(points, smooth, total - end_offset);
+    Ok(Cut {
+        start_offset,
+        end_offset,
+        length: total - start_offset - end_offset,
+        start: (k0, u0),
+        end: (k1, u1),
+        end_point,
+        end_rate,
+    })
 }

@@ -79,6 +79,15 @@ fn a_relative_trajectory_of_route_points_or_without_its_reference() {
 }
 
 #[test]
+fn offsets_that_leave_nothing_of_the_trajectory() {
+    expect(
+        "err_trajectory_offsets",
+        "13:76",
+        &["expected start_offset + end_offset below the trajectory's length 40.00 m, found 40.00 m"],
+    );
+}
+
+#[test]
 fn a_trajectory_faster_than_the_vehicle() {
     expect(
         "err_follow_trajectory_fast",

@@ -246,3 +246,22 @@ fn replay_trajectory_follows_it_beyond_the_vehicles_limits() {
     let (s, e) = r.phase("do.0");
     assert!(s.abs() < 1e-9 && (e - 3.0).abs() < 1e-9, "{s} {e}");
 }
+
+#[test]
+fn a_trajectory_from_its_start_offset_to_its_end_offset() {
+    let r = run("actions/trajectory_offsets", 0, None);
+    for (t, x, y) in [
+        (0.0, 30.0, -8.75),
+        (1.0, 40.0, -8.75),
+        (3.0, 60.0, -8.75),
+        (4.0, 69.6, -5.95),
+        (4.25, 72.0, -5.25),
+    ] {
+        let ego = r.at(t, "ego");
+        close(ego.x, x, &format!("x({t})"));
+        close(ego.y, y, &format!("y({t})"));
+    }
+    assert_eq!(r.at(4.25, "ego").lane, -2);
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < 1e-9 && (e - 4.25).abs() < 1e-9, "{s} {e}");
+}
