@@ -20,6 +20,9 @@ pub fn options(
         dt: step.dt,
         open_end: step.duration.is_some(),
         scenario: scenario.map(str::to_owned),
+        // The command line binds no external methods: `load` below refuses a scenario that
+        // calls or reads one, at its place.
+        bindings: None,
     }
 }
 

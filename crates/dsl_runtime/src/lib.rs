@@ -83,8 +83,14 @@ pub struct PhaseInfo {
 pub struct ExternalCall {
     /// The method's name.
     pub method: String,
-    /// Where the `call` is written.
+    /// Where the `call` (or the comparison reading the method) is written.
     pub pos: scenario::SourcePos,
+    /// `Some(name)`: the method's result is read in a condition (`until m(…) > 3`), a 1.x
+    /// UserDefinedValueCondition on the value `name` (the call's text, `m(args as JSON
+    /// values)`), which the host sets to its function's result before each step; `None`: a
+    /// `call` statement, run for its effect when the `customCommand` of type `call` with this
+    /// method's content is logged.
+    pub value: Option<String>,
 }
 
 /// A planned, lowered DSL scenario.
@@ -180,6 +186,20 @@ pub fn map_file(program: &CheckedProgram, osc: &Path) -> Option<std::path::PathB
         .map(|f| osc.parent().unwrap_or(Path::new("")).join(f))
 }
 
+/// The external methods condition `cond` reads, as [`ExternalCall`]s with their values.
+fn read_externals(cond: &resolve::Cond) -> Vec<ExternalCall> {
+    let mut found = Vec::new();
+    cond.externals(&mut found);
+    found
+        .into_iter()
+        .map(|(c, pos)| ExternalCall {
+            method: c.method,
+            pos,
+            value: Some(c.content),
+        })
+        .collect()
+}
+
 /// Plans and lowers the entry scenario of `program` (see [`Options::scenario`]).
 pub fn lower_program(
     program: &CheckedProgram,
@@ -264,12 +284,17 @@ pub fn lower_program(
         })
         .collect();
     let mut calls = Vec::new();
+    let mut reads = Vec::new();
     resolved.root.walk(&mut |p| {
         if let resolve::Kind::Call(c) = &p.kind {
             calls.push(ExternalCall {
                 method: c.method.clone(),
                 pos: p.site.pos.clone(),
+                value: None,
             });
+        }
+        if let Some(Ok(cond)) = &p.until {
+            reads.extend(read_externals(cond));
         }
     });
     for spec in &resolved.events {
@@ -277,7 +302,17 @@ pub fn lower_program(
             calls.push(ExternalCall {
                 method: c.method.clone(),
                 pos: site.pos.clone(),
+                value: None,
             });
+        }
+        if let Ok(cond) = &spec.cond {
+            reads.extend(read_externals(cond));
+        }
+    }
+    // Each value read once (the first place it is read), after the calls.
+    for r in reads {
+        if !calls.iter().any(|c| c.value == r.value) {
+            calls.push(r);
         }
     }
     let scenario = lower::lower(&plan, &resolved.name, osc, road_path);

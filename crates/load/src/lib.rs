@@ -23,6 +23,7 @@
 //! | `source` | a file opened once (either language), loaded for a seed: [`Source`], [`load`] |
 //! | `columns` | a DSL scenario's resolved top-level parameters and constrained fields, for the results table of a batch of seeds |
 //! | `sample` | a DSL scenario's `cover(…)`/`record(…)` sampled on the run's frames with the §8.7 methods |
+//! | `external` | the host's functions for a DSL scenario's external methods ([`Bindings`]), checked at load and run around the engine's steps ([`Host`]) |
 //! | `error` | the one error, with the place in the file |
 //!
 //! It sits after `dsl_runtime` and `engine` (the engine never depends on the DSL crates) and
@@ -32,6 +33,7 @@
 
 mod columns;
 mod error;
+mod external;
 mod sample;
 mod source;
 
@@ -39,5 +41,6 @@ pub use dsl_runtime::{
     Buckets, CoverItem, CoverUnit, CoverageKind, ExternalCall, PhaseInfo, SampleAt,
 };
 pub use error::{Error, ErrorKind};
+pub use external::{Bindings, ExternalError, ExternalFn, Host, HostError};
 pub use sample::{Emits, Sample, Sampler, NO_VALUE};
 pub use source::{is_dsl, load, Language, Loaded, Options, Source};

@@ -15,6 +15,7 @@ use scenario::Scenario;
 use source::SourcePos;
 
 use crate::error::{Error, ErrorKind};
+use crate::external::Bindings;
 
 /// Which language a scenario is written in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -45,6 +46,10 @@ pub struct Options {
     /// The scenario of a DSL file to run (`--scenario NAME`); `None`: the one scenario with a
     /// `do` that no other invokes (`dsl_runtime::entry_scenario`). An XML file has one.
     pub scenario: Option<String>,
+    /// The host's functions for a DSL scenario's external methods (`crate::external`):
+    /// with `Some`, every method the scenario calls or reads must be bound, else the load
+    /// fails at its place; `None`: the host binds after loading and checks itself.
+    pub bindings: Option<Bindings>,
 }
 
 impl Default for Options {
@@ -56,6 +61,7 @@ impl Default for Options {
             dt: engine::runtime::DEFAULT_DT,
             open_end: false,
             scenario: None,
+            bindings: None,
         }
     }
 }
@@ -81,8 +87,11 @@ pub struct Loaded {
     pub coverage: Vec<dsl_runtime::CoverItem>,
     /// A DSL scenario's calls of external methods with their places (`call m(…)`), which the
     /// host binds (the Python package's `Simulation.bind`) or refuses (the command line binds
-    /// none); empty for XML.
+    /// none); empty for XML. Each with a `value` is read in a condition.
     pub calls: Vec<dsl_runtime::ExternalCall>,
+    /// The functions bound to them ([`Options::bindings`]; empty when none were given), which
+    /// a [`crate::Host`] runs.
+    pub bindings: Bindings,
 }
 
 /// What was read of the file.
@@ -238,6 +247,7 @@ impl Source {
                 resolved: Vec::new(),
                 coverage: Vec::new(),
                 calls: Vec::new(),
+                bindings: Bindings::default(),
             }),
             Program::Dsl {
                 program,
@@ -273,7 +283,12 @@ impl Source {
                         })
                         .collect()
                 });
+                let bindings = self.options.bindings.clone();
+                if let Some(b) = &bindings {
+                    b.check(&lowered.calls)?;
+                }
                 Ok(Loaded {
+                    bindings: bindings.unwrap_or_default(),
                     scenario: lowered.scenario,
                     network: Arc::clone(&self.network),
                     language: Language::Dsl,

@@ -13,6 +13,7 @@
 //! | `entity` | `Entity` snapshots and the §8.7 methods, `RoutePoint`, `DomainError` |
 //! | `record` | the trajectories and event log a simulation keeps |
 //! | `control` | inputs of entities under an `external` controller (the system under test) |
+//! | `external` | the names of Python functions bound to a DSL scenario's external methods at load, checked by the front door |
 //! | `simulation` | `Simulation`: step, run, state, values from outside, control, OSI bytes |
 //! | `batch` | `BatchPlan`, `BatchJournal`, `merge_results`, `summary`: the variants of a distribution (`oscsim batch`), durable into a folder |
 #![deny(missing_docs)]
@@ -23,6 +24,7 @@ mod batch;
 mod control;
 mod entity;
 mod error;
+mod external;
 mod model;
 mod record;
 mod simulation;

@@ -48,8 +48,10 @@ pub struct Simulation {
     network: Arc<opendrive::RoadNetwork>,
     scenario_path: String,
     config: EngineConfig,
-    /// The `call`s of external methods of a DSL scenario: method and `file:line:col`.
+    /// The external methods a DSL scenario calls or reads: method and `file:line:col`.
     calls: Vec<(String, String)>,
+    /// The external methods it reads in conditions: method and the value's name (`m(args)`).
+    reads: Vec<(String, String)>,
 }
 
 /// `values` as a NumPy float64 array (copied once through a bytes buffer).
@@ -174,7 +176,7 @@ impl Simulation {
     /// `ScenarioError` (with `file`, `line`, `column`) when the scenario does not load or the
     /// engine cannot be built from it.
     #[new]
-    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first", road_network = None, road = None, entry = None, csv = None))]
+    #[pyo3(signature = (scenario, dt = engine::runtime::DEFAULT_DT, seed = engine::runtime::DEFAULT_SEED, duration = None, max_time = engine::runtime::DEFAULT_MAX_TIME, record = true, params = None, osi = false, osi_host = None, osi_static = "first", road_network = None, road = None, entry = None, csv = None, bindings = None))]
     #[allow(clippy::too_many_arguments)] // Python keyword arguments
     fn new(
         py: Python<'_>,
@@ -192,6 +194,7 @@ impl Simulation {
         road: Option<PathBuf>,
         entry: Option<String>,
         csv: Option<PathBuf>,
+        bindings: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Self> {
         let static_data = match osi_static {
             "first" => osi::ground_truth::StaticData::First,
@@ -204,9 +207,9 @@ impl Simulation {
         };
         guard(|| {
             let loaded: Arc<load::Loaded> = if let Ok(s) = scenario.cast::<Scenario>() {
-                if params.is_some() || road.is_some() || entry.is_some() {
+                if params.is_some() || road.is_some() || entry.is_some() || bindings.is_some() {
                     return Err(PyValueError::new_err(
-                        "params and road apply when loading: pass them to Scenario.load",
+                        "params, road, entry and bindings apply when loading: pass params, road and entry to Scenario.load, bindings with the scenario's path",
                     ));
                 }
                 Arc::clone(&s.get().inner)
@@ -218,6 +221,7 @@ impl Simulation {
                     dt,
                     open_end: duration.is_some(),
                     scenario: entry,
+                    bindings: bindings.map(crate::external::bindings).transpose()?,
                     ..load::Options::default()
                 };
                 Arc::clone(&Scenario::open(py, path, params, options)?.inner)
@@ -227,6 +231,12 @@ impl Simulation {
                 .iter()
                 .map(|c| (c.method.clone(), c.pos.to_string()))
                 .collect();
+            let reads = loaded
+                .calls
+                .iter()
+                .filter_map(|c| Some((c.method.clone(), c.value.clone()?)))
+                .collect();
+
             let scenario = &loaded.scenario;
             let config = EngineConfig {
                 dt,
@@ -278,6 +288,7 @@ impl Simulation {
                 scenario_path: scenario.path.display().to_string(),
                 config,
                 calls,
+                reads,
             })
         })
     }
@@ -336,12 +347,21 @@ impl Simulation {
         &self.scenario_path
     }
 
-    /// The calls of external methods a DSL scenario makes (`call m(…)`), in the order they are
-    /// written: `(method, "file:line:col")`. Each method needs a function bound to its name
-    /// (`bind`) before the first step.
+    /// The external methods a DSL scenario calls (`call m(…)`, in the order they are
+    /// written) and then reads in conditions (`until m(…) > 3`): `(method, "file:line:col")`.
+    /// Each method needs a function bound to its name, at load (`bindings=`) or with `bind`
+    /// before the first step.
     #[getter]
     fn external_calls(&self) -> Vec<(String, String)> {
         self.calls.clone()
+    }
+
+    /// The external methods a DSL scenario reads in conditions: `(method, value)`, the value
+    /// being the user-defined value the condition compares, named by the call's text
+    /// (`m(args as JSON values)`), set from the bound function before each step.
+    #[getter]
+    fn _external_reads(&self) -> Vec<(String, String)> {
+        self.reads.clone()
     }
 
     /// Why the run ended, None while it goes on.

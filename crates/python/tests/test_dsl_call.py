@@ -80,3 +80,52 @@ def test_a_dsl_scenario_that_does_not_plan_raises_with_its_place():
     with pytest.raises(oscsim.ScenarioError) as info:
         oscsim.Simulation(str(bad), road=str(STRAIGHT))
     assert (Path(info.value.file), info.value.line, info.value.column) == (bad, 8, 14)
+
+
+# external_value.osc (worked in its comment): `until ticks() > 40` reads the host's function
+# before each step; `call log_speed("ego", 20mps)` runs after the step that ends the drive.
+VALUE = DSL / "scenarios" / "external_value.osc"
+
+
+def test_bindings_at_load_read_a_method_in_until_and_run_its_call():
+    ticks = [0]
+    seen: List[Tuple[float, Any]] = []
+
+    def count() -> int:
+        ticks[0] += 1
+        return ticks[0]
+
+    sim = oscsim.Simulation(
+        str(VALUE),
+        dt=0.05,
+        seed=0,
+        road=str(STRAIGHT),
+        bindings={
+            "ticks": count,
+            "log_speed": lambda name, v: seen.append((sim.time, (name, v, sim.entity("ego").road_position.s))),
+        },
+    )
+    assert sim.run() == "stories_complete"
+    # ticks() is 41 before the step at 2.0 s: the drive ends there at s = 70 m, the call is
+    # logged at 2.0 s and its function runs after that step (sim.time 2.05 s, ego still at
+    # 10 m/s in it: 70.5 m); ego then drives at 20 m/s from 2.05 s: 89.5 m at 3.0 s.
+    assert len(seen) == 1
+    t, (who, v, s) = seen[0]
+    assert abs(t - 2.05) < STEP_TOL and who == "ego" and abs(v - 20.0) < STEP_TOL
+    assert abs(s - 70.5) < 1e-6, s
+    calls = [e for e in sim.events() if e["kind"] == "customCommand" and e["type"] == "call"]
+    assert [(e["time"], e["content"]) for e in calls] == [(2.0, 'log_speed("ego", 20.0)')]
+    traj = sim.trajectory("ego")
+    at3 = [s for t, s in zip(traj["time"], traj["s"]) if abs(t - 3.0) < STEP_TOL]
+    assert at3 and abs(at3[0] - 89.5) < 1e-6, at3
+
+
+def test_an_unbound_method_is_refused_at_load_with_its_place():
+    with pytest.raises(oscsim.ScenarioError) as info:
+        oscsim.Simulation(
+            str(VALUE), dt=0.05, seed=0, road=str(STRAIGHT), bindings={"log_speed": lambda *a: None}
+        )
+    e = info.value
+    # `until ticks() > 40`: the comparison at line 19, column 19.
+    assert (Path(e.file), e.line, e.column) == (VALUE, 19, 19), str(e)
+    assert "external method `ticks`" in str(e)

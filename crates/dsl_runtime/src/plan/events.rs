@@ -76,6 +76,7 @@ impl Planner<'_> {
                 condition,
                 actors,
                 sampled,
+                ..
             } => {
                 for (path, site) in actors {
                     if !path.as_ref().is_some_and(|p| self.index.contains_key(p)) {

@@ -10,8 +10,14 @@
 //! package's `Simulation.bind`); a host without bindings (`oscsim run`) refuses the scenario.
 //! Only methods declared `is external` can be called: a method with an expression has no side
 //! effects to run.
+//!
+//! The result of an external method is read in conditions (`until m(…) > 3`, `wait`, events):
+//! the condition becomes a 1.x UserDefinedValueCondition on the value named by the call's
+//! content (`m(args)`), which the host sets to its function's result before each step
+//! (`load::Bindings`). Anywhere the plan needs a value before the run (a parameter, a
+//! modifier's argument) it has none: the constraint solver leaves it undefined there.
 
-use dsl::semantics::hir::{Expr, ExprKind, Member, MethodBody, MethodDecl};
+use dsl::semantics::hir::{Expr, ExprKind, MethodBody};
 
 use super::eval::Eval;
 use super::value::Val;
@@ -46,7 +52,7 @@ pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
             ))
         }
     };
-    match declaration(ev, name).map(|d| &d.body) {
+    match ev.method_decl(name).map(|d| &d.body) {
         Some(MethodBody::External) => {}
         Some(_) => {
             return Err(ev.files.err(
@@ -80,18 +86,21 @@ pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
     })
 }
 
-/// The declaration of method `name`: a top-level `def`, else the first compound declaring it.
-fn declaration<'m>(ev: &Eval<'m>, name: &str) -> Option<&'m MethodDecl> {
-    let method = |m: &'m Member| match m {
-        Member::Method(d) if d.name.text == name => Some(d),
-        _ => None,
+/// When `e` calls a method declared `is external`: the call, read (its result is a value the
+/// host provides at run time, `Cond::Measured`).
+pub(crate) fn external(ev: &Eval<'_>, e: &Expr) -> Result<Option<Call>, Error> {
+    let ExprKind::Call(callee, _) = &e.kind else {
+        return Ok(None);
     };
-    ev.model.top.iter().find_map(method).or_else(|| {
-        ev.model
-            .compounds
-            .iter()
-            .find_map(|c| c.members.iter().find_map(method))
-    })
+    let name = match &callee.kind {
+        ExprKind::Name(n) => n,
+        ExprKind::Field(_, n) => &n.text,
+        _ => return Ok(None),
+    };
+    match ev.method_decl(name).map(|d| &d.body) {
+        Some(MethodBody::External) => read(ev, e).map(Some),
+        _ => Ok(None),
+    }
 }
 
 /// An argument as a JSON value.

@@ -11,6 +11,7 @@
 //! | `a.space_gap(b, d) < x` | RelativeDistanceCondition, freespace, road coordinates, direction d |
 //! | `a.object_distance(b, d, mode) < x` | RelativeDistanceCondition, freespace when mode is bounding_boxes |
 //! | `a.speed > x` | SpeedCondition |
+//! | `m(args) > x`, `m` declared `is external` | UserDefinedValueCondition on the value `m(args)` (arguments as JSON values), which the host sets to its function's result before each step |
 //! | `rise(c)` / `fall(c)` / `c` | edge rising / falling / none (a plain condition ends the phase at the first step it holds) |
 //! | `c1 and c2`, `c1 or c2` | one ConditionGroup, two ConditionGroups |
 //! | `@e` of an `emit e` | StoryboardElementStateCondition: an emitting phase's startTransition |
@@ -28,8 +29,9 @@
 
 use dsl::semantics::hir::{Arg as HirArg, BinOp, Expr, ExprKind, Span};
 use scenario::{
-    Condition, ConditionEdge, ConditionKind, CoordinateSystem, DistanceMeasure, EntityCondition,
-    RelativeDistanceType, Rule, TimeToCollisionTarget, TriggeringEntities, TriggeringEntitiesRule,
+    ByValueCondition, Condition, ConditionEdge, ConditionKind, CoordinateSystem, DistanceMeasure,
+    EntityCondition, RelativeDistanceType, Rule, TimeToCollisionTarget, TriggeringEntities,
+    TriggeringEntitiesRule,
 };
 
 use super::eval::Eval;
@@ -55,6 +57,9 @@ pub(crate) enum Cond {
         /// For a `var x = sample(m, every(p))` compared: the sampling period p (s); the value
         /// is read at each multiple of p from the run's start only.
         sampled: Option<f64>,
+        /// An external method compared (`m(…) > 3`): its call, whose content names the
+        /// user-defined value the host sets each step.
+        external: Option<super::call::Call>,
     },
     /// `every(…)` or `elapsed(…)`, counted in the condition's event context.
     Timed(Timed, Site),
@@ -168,8 +173,18 @@ fn read_edge(ctx: &Eval<'_>, e: &Expr, edge: ConditionEdge) -> Result<Cond, Erro
                 Some((inner, period)) => (inner, Some(period)),
                 None => (&**measure, None),
             };
-            let kind = measured(ctx, measure, value, rule, &mut actors)?;
+            // An external method's result: a value the host provides each step.
+            let external = super::call::external(ctx, measure)?;
+            let kind = match &external {
+                Some(c) => ConditionKind::ByValue(ByValueCondition::UserDefinedValue {
+                    name: c.content.clone(),
+                    rule,
+                    value: format!("{value}"),
+                }),
+                None => measured(ctx, measure, value, rule, &mut actors)?,
+            };
             Ok(Cond::Measured {
+                external,
                 condition: Box::new(Condition {
                     name: format!("until@{}", ctx.site(e.span).at()),
                     // A sampled value changes only at its samples: the edge is read there
@@ -205,6 +220,24 @@ fn read_edge(ctx: &Eval<'_>, e: &Expr, edge: ConditionEdge) -> Result<Cond, Erro
             Ok(Cond::Timed(Timed::Elapsed(d), ctx.site(e.span)))
         }
         _ => Err(unsupported(ctx, e)),
+    }
+}
+
+impl Cond {
+    /// The external methods the condition reads, with where each comparison is written.
+    pub(crate) fn externals(&self, out: &mut Vec<(super::call::Call, scenario::SourcePos)>) {
+        match self {
+            Cond::Or(a, b) | Cond::And(a, b) => {
+                a.externals(out);
+                b.externals(out);
+            }
+            Cond::Measured {
+                external: Some(c),
+                condition,
+                ..
+            } => out.push((c.clone(), condition.pos.clone())),
+            _ => {}
+        }
     }
 }
 

@@ -230,7 +230,33 @@ impl<'a> Eval<'a> {
                     },
                 }
             }
+            ExprKind::Call(callee, _) => match &callee.kind {
+                ExprKind::Name(m) | ExprKind::Field(_, dsl::semantics::hir::Name { text: m, .. })
+                    if self.method_decl(m).is_some_and(|d| {
+                        matches!(d.body, dsl::semantics::hir::MethodBody::External)
+                    }) =>
+                {
+                    return Err(bad(&format!("the result of external method `{m}`, which the host gives only while the scenario runs (read it in a condition: until, wait, an event)")))
+                }
+                _ => return Err(bad("an expression the planner does not compute")),
+            },
             _ => return Err(bad("an expression the planner does not compute")),
+        })
+    }
+
+    /// The declaration of method `name`: a top-level `def`, else the first compound declaring
+    /// it.
+    pub(crate) fn method_decl(&self, name: &str) -> Option<&'a dsl::semantics::hir::MethodDecl> {
+        use dsl::semantics::hir::Member;
+        let method = |m: &'a Member| match m {
+            Member::Method(d) if d.name.text == name => Some(d),
+            _ => None,
+        };
+        self.model.top.iter().find_map(method).or_else(|| {
+            self.model
+                .compounds
+                .iter()
+                .find_map(|c| c.members.iter().find_map(method))
         })
     }
 

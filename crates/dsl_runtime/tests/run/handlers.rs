@@ -174,3 +174,62 @@ fn every_errors_name_the_argument() {
         "6:14",
     );
 }
+
+/// An external method read in a condition (external_value.osc): a UserDefinedValueCondition
+/// on the value `ticks()`, listed with its place among the scenario's externals after the
+/// calls (the host sets it each step: load::Host, tested in the load crate).
+#[test]
+fn an_external_methods_result_in_until_is_a_value_the_host_sets() {
+    let lowered = crate::support::lower("external_value", 0, None).expect("plans");
+    let found: Vec<(&str, Option<&str>, u32, u32)> = lowered
+        .calls
+        .iter()
+        .map(|c| (c.method.as_str(), c.value.as_deref(), c.pos.line, c.pos.col))
+        .collect();
+    assert_eq!(
+        found,
+        [
+            ("log_speed", None, 20, 9),
+            ("ticks", Some("ticks()"), 19, 19)
+        ]
+    );
+    let until =
+        lowered
+            .scenario
+            .storyboard
+            .stories
+            .iter()
+            .flat_map(|s| &s.acts)
+            .filter_map(|a| a.stop_trigger.as_ref())
+            .flat_map(|t| &t.condition_groups)
+            .flat_map(|g| &g.conditions)
+            .find_map(|c| match &c.kind {
+                scenario::ConditionKind::ByValue(
+                    scenario::ByValueCondition::UserDefinedValue { name, rule, value },
+                ) => Some((name.clone(), *rule, value.clone())),
+                _ => None,
+            });
+    assert_eq!(
+        until,
+        Some((
+            "ticks()".to_string(),
+            scenario::Rule::GreaterThan,
+            "40".to_string()
+        ))
+    );
+}
+
+/// An external method's result where the plan needs it before the run is an error at the
+/// call (err_external_value.osc).
+#[test]
+fn an_external_methods_result_outside_a_condition_is_an_error_at_the_call() {
+    let e = match crate::support::lower("err_external_value", 0, None) {
+        Ok(_) => panic!("planned"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        e.contains("expected a constant value, found the result of external method `sensor_speed`, which the host gives only while the scenario runs")
+            && e.ends_with("err_external_value.osc:7:15"),
+        "{e}"
+    );
+}

@@ -114,14 +114,26 @@ class Simulation(_oscsim.Simulation):
     ``oscsim run --csv`` writes.
 
     Python controllers (:meth:`set_controller`) are called before each step with the state
-    of their entity at the current time. Functions bound to a DSL scenario's external
-    methods (:meth:`bind`) are called after the step their ``call`` runs in.
+    of their entity at the current time.
+
+    ``bindings`` (a dict of external method name to function) binds a DSL scenario's external
+    methods at load: a scenario that calls or reads a method not in it raises
+    :class:`ScenarioError` at the ``call``'s (or the condition's) file, line and column. Each
+    ``call m(a, b)`` runs ``m(a, b)`` after the step that runs it (:meth:`bind`); a method read
+    in a condition (``until m(…) > 3``) is called before each step and the condition compares
+    its result (a number, a boolean or a string) in that step. Arguments arrive as the JSON
+    values of the event log (numbers in SI units as floats, strings, booleans); an exception
+    the function raises propagates from :meth:`step`/:meth:`run`. Without ``bindings``,
+    :meth:`bind` binds them after the load (checked before the first step).
     """
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
         self._controllers: Dict[str, Any] = {}
         self._attached: set = set()
-        self._bound: Dict[str, Callable[..., Any]] = {}
+        bindings = kwargs.get("bindings")
+        # Bound at load: the native constructor checked every external method is bound.
+        self._bound_at_load = bindings is not None
+        self._bound: Dict[str, Callable[..., Any]] = dict(bindings or {})
         self._events_read = 0
 
     def bind(self, name: str, function: Callable[..., Any]) -> None:
@@ -148,6 +160,13 @@ class Simulation(_oscsim.Simulation):
                 file, line, column = place.rsplit(":", 2)
                 error.file, error.line, error.column = file, int(line), int(column)
                 raise error
+
+    def _set_reads(self) -> None:
+        # The values of the methods read in conditions, for the next step's triggers.
+        for method, value in self._external_reads:
+            _, _, rest = value.partition("(")
+            args = json.loads("[" + rest[:-1] + "]")
+            self.set_user_value(value, self._bound[method](*args))
 
     def _run_calls(self) -> None:
         lines = self._event_lines_since(self._events_read)
@@ -205,10 +224,12 @@ class Simulation(_oscsim.Simulation):
         """Runs one step of ``dt`` after asking the Python controllers for their commands,
         then the functions bound to the external methods the step called; returns None while
         the run goes on, then why it ended (see the native ``step``)."""
-        if self.steps == 0:
+        if self.steps == 0 and not self._bound_at_load:
             self._check_bindings()
         if self._controllers and self.running:
             self._drive()
+        if self._external_reads and self.running:
+            self._set_reads()
         reason = super().step()
         if self.external_calls:
             self._run_calls()

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -176,6 +176,8 @@ class Simulation:
         road_network: Optional[RoadNetwork] = None,
         road: Optional[_Path] = None,
         entry: Optional[str] = None,
+        csv: Optional[_Path] = None,
+        bindings: Optional[Mapping[str, Callable[..., Any]]] = None,
     ) -> None: ...
     def step(self) -> Optional[str]: ...
     def run(self) -> str: ...
@@ -191,6 +193,8 @@ class Simulation:
     def scenario_path(self) -> str: ...
     @property
     def external_calls(self) -> List[Tuple[str, str]]: ...
+    @property
+    def _external_reads(self) -> List[Tuple[str, str]]: ...
     @property
     def stop_reason(self) -> Optional[str]: ...
     @property
