@@ -29,7 +29,6 @@ use scenario::expr::Value;
 use serde_json::Value as Json;
 
 use crate::error::Error;
-use crate::source::Loaded;
 
 /// A host function bound to an external method: its arguments, its result or why it failed.
 pub type ExternalFn = Arc<dyn Fn(&[Json]) -> Result<Json, String> + Send + Sync>;
@@ -167,12 +166,12 @@ pub struct Host {
 }
 
 impl Host {
-    /// The host of `loaded` with its bindings ([`Loaded::bindings`]): an error at the first
-    /// external method the scenario calls or reads that none is bound to.
-    pub fn new(loaded: &Loaded) -> Result<Host, Error> {
-        loaded.bindings.check(&loaded.calls)?;
-        let reads = loaded
-            .calls
+    /// The host of a scenario's external methods `calls` (`Loaded::calls`) with `bindings`
+    /// (`Loaded::bindings`; [`crate::Loaded::host`] gives both): an error at the first
+    /// method that none is bound to.
+    pub fn new(bindings: &Bindings, calls: &[dsl_runtime::ExternalCall]) -> Result<Host, Error> {
+        bindings.check(calls)?;
+        let reads = calls
             .iter()
             .filter_map(|c| {
                 let value = c.value.clone()?;
@@ -186,7 +185,7 @@ impl Host {
             })
             .collect();
         Ok(Host {
-            bindings: loaded.bindings.clone(),
+            bindings: bindings.clone(),
             reads,
         })
     }

@@ -94,6 +94,14 @@ pub struct Loaded {
     pub bindings: Bindings,
 }
 
+impl Loaded {
+    /// The host that runs its external methods with its bindings around the engine's steps:
+    /// an error at the first method it calls or reads that none is bound to.
+    pub fn host(&self) -> Result<crate::external::Host, Error> {
+        crate::external::Host::new(&self.bindings, &self.calls)
+    }
+}
+
 /// What was read of the file.
 #[derive(Debug)]
 enum Program {

@@ -60,7 +60,7 @@ fn bound_closures_end_an_until_and_run_at_their_call() {
         Ok(Value::Null)
     });
     let loaded = load::load(&repo(SCENARIO), &options(Some(bindings))).expect("loads");
-    let host = load::Host::new(&loaded).expect("every external is bound");
+    let host = loaded.host().expect("every external is bound");
     let mut engine = Engine::new(
         &loaded.scenario,
         loaded.network.clone(),
@@ -139,7 +139,7 @@ fn a_failing_closure_ends_the_step_with_its_method_and_time() {
     bindings.bind("ticks", |_| Ok(json!(41)));
     bindings.bind("log_speed", |_| Err("no logger".to_string()));
     let loaded = load::load(&repo(SCENARIO), &options(Some(bindings))).expect("loads");
-    let host = load::Host::new(&loaded).expect("bound");
+    let host = loaded.host().expect("bound");
     let mut engine = Engine::new(
         &loaded.scenario,
         loaded.network.clone(),
