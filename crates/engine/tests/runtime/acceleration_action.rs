@@ -25,17 +25,21 @@ fn dynamics(shape: DynamicsShape, dimension: DynamicsDimension, value: f64) -> T
     }
 }
 
-/// Runs speed_shapes.xosc with its action "Speed" made an AccelerationAction.
-fn run(target: Option<f64>, dynamics: TransitionDynamics) -> (Recorder, Vec<EventRecord>) {
+/// speed_shapes.xosc with its action "Speed" made `action`.
+pub(crate) fn speed_shapes_with(action: LongitudinalAction) -> Scenario {
     let mut scenario = Scenario::load(&file("speed_shapes.xosc")).expect("loads");
-    let action = scenario.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0]
+    let speed = scenario.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0]
         .actions
         .iter_mut()
         .find(|a| a.name == "Speed")
         .expect("the action Speed");
-    action.kind = ActionKind::Private(PrivateAction::Longitudinal(
-        LongitudinalAction::Acceleration { target, dynamics },
-    ));
+    speed.kind = ActionKind::Private(PrivateAction::Longitudinal(action));
+    scenario
+}
+
+/// Runs speed_shapes.xosc with its action "Speed" made an AccelerationAction.
+fn run(target: Option<f64>, dynamics: TransitionDynamics) -> (Recorder, Vec<EventRecord>) {
+    let scenario = speed_shapes_with(LongitudinalAction::Acceleration { target, dynamics });
     let network = load::road_network(&scenario).expect("road loads");
     let mut engine = Engine::new(&scenario, network, EngineConfig::default()).expect("builds");
     let (mut frames, mut events) = (Recorder::default(), Vec::new());

@@ -33,5 +33,6 @@ mod speed_profile;
 mod sync_arrival;
 mod sync_esmini;
 mod time_of_day;
+mod travel_action;
 mod trigger_view;
 mod user_values;
