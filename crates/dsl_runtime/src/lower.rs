@@ -130,10 +130,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             ));
         }
         groups.extend(actor_groups(&ph.path, &ph.actions, &pos));
-        let start_trigger = match &ph.start {
-            When::At(t) if *t <= 0.0 => None,
-            w => trigger_of(w),
-        };
+        let start_trigger = start_trigger_of(&ph.start);
         acts.push(Act {
             name: ph.path.clone(),
             maneuver_groups: groups,
@@ -168,35 +165,41 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             });
         }
     }
-    // `on` handlers: one Act each, running until the root phase (written last) ends.
+    // `on` handlers: one Act each, running until the root phase (written last) ends, or, for
+    // an invoked behavior's, from its invocation's start to its end.
     // Per Act, its groups by command type (`emit` first), each with its commands.
-    let mut handlers: Vec<(&str, Vec<Commands<'_>>)> = Vec::new();
+    let mut handlers: Vec<(&str, Option<&str>, Vec<Commands<'_>>)> = Vec::new();
     for h in &plan.handlers {
         let emit = (h.event.clone(), Some(h.trigger.clone()), h.site.pos.clone());
-        let i = match handlers.iter().position(|(act, _)| *act == h.act) {
+        let i = match handlers.iter().position(|(act, _, _)| *act == h.act) {
             Some(i) => i,
             None => {
-                handlers.push((&h.act, Vec::new()));
+                handlers.push((&h.act, h.within.as_deref(), Vec::new()));
                 handlers.len() - 1
             }
         };
-        let act = &mut handlers[i].1;
+        let act = &mut handlers[i].2;
         match act.iter_mut().find(|(ty, _)| *ty == h.command_type) {
             Some((_, emits)) => emits.push(emit),
             None => act.push((h.command_type, vec![emit])),
         }
     }
-    for (act, by_type) in handlers {
+    for (act, within, by_type) in handlers {
         // Each entry was created with one command of one type.
         let pos = by_type[0].1[0].2.clone();
+        let invocation = within.and_then(|w| plan.phases.iter().find(|ph| ph.path == w));
+        let (start_trigger, stop_trigger) = match invocation {
+            Some(ph) => (start_trigger_of(&ph.start), trigger_of(&ph.end)),
+            None => (None, run_end.clone()),
+        };
         acts.push(Act {
             name: act.to_string(),
             maneuver_groups: by_type
                 .into_iter()
                 .map(|(ty, emits)| command_group(act, ty, emits, u32::MAX, pos.clone()))
                 .collect(),
-            start_trigger: None,
-            stop_trigger: run_end.clone(),
+            start_trigger,
+            stop_trigger,
             pos,
         });
     }
@@ -388,6 +391,15 @@ fn actor_groups(path: &str, actions: &[Planned], pos: &SourcePos) -> Vec<Maneuve
         .collect()
 }
 
+/// The start trigger of an Act starting at `w` (`None`: with the run).
+fn start_trigger_of(w: &When) -> Option<Trigger> {
+    match w {
+        When::At(t) if *t <= 0.0 => None,
+        w => trigger_of(w),
+    }
+}
+
+/// The trigger of moment `w` (`None`: never).
 fn trigger_of(w: &When) -> Option<Trigger> {
     let groups = w.groups();
     (!groups.is_empty()).then_some(Trigger {

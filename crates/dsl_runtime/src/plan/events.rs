@@ -16,6 +16,10 @@ use crate::trigger::{act_state, every_from_start, sim_time};
 pub(super) enum EventCtx<'w> {
     /// An `on` handler of the scenario: the start of the run.
     Run,
+    /// An `on` handler of an invoked behavior: the start of the invocation (its handlers'
+    /// Acts run from the invocation's start to its end; an event it emits can only be waited
+    /// on inside the invocation, where its key is known).
+    Invocation,
     /// The `wait` or `until` of a phase: the phase's start.
     Phase {
         path: &'w str,
@@ -137,9 +141,9 @@ impl Planner<'_> {
                     "expected events defined without a cycle, found one defined through itself",
                 )));
             }
-            // A handler's event counts from the run's start wherever it is waited on; a
-            // declared event takes the context of the place it is used.
-            let ectx = if *handler { EventCtx::Run } else { ectx };
+            // A handler's event keeps its own context wherever it is waited on; a declared
+            // event takes the context of the place it is used.
+            let ectx = handler.unwrap_or(ectx);
             match self.condition(spec, depth + 1, ectx) {
                 Ok(t) => groups.extend(t.condition_groups),
                 Err(e) => return Some(Err(e)),
@@ -175,6 +179,10 @@ impl Planner<'_> {
                     }
                 }],
             }]),
+            EventCtx::Invocation => Err(site.err(
+                K::Unsupported,
+                "expected every(…) or elapsed(…) in an `on` handler of the scenario that is run, found one in an `on` handler of an invoked behavior (not run yet)",
+            )),
             // Only the first occurrence can end a wait or an until.
             EventCtx::Phase { until: true, .. } if first <= 0.0 => Err(site.err(
                 K::Value,

@@ -102,6 +102,15 @@ pub(crate) use types::{
     Entity, HandlerPlan, Plan, Planned, Settings, When, MAX_ACCELERATION, MAX_SPEED,
 };
 
+/// The Act of the `index`th `on` handler of the behavior invoked at phase `within` (`None`:
+/// the entry scenario's): `do.round_two.on.0`, `on.0`.
+fn handler_act(within: Option<&str>, index: usize) -> String {
+    match within {
+        Some(path) => format!("{path}.on.{index}"),
+        None => format!("on.{index}"),
+    }
+}
+
 /// Plans the resolved scenario on `road`.
 pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> Result<Plan, Error> {
     let root = &res.root;
@@ -136,16 +145,20 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     });
     let mut handlers = Vec::new();
     for spec in &res.events {
+        // An `on` handler's event context: the run's, or its invocation's (§7.3.10).
+        let ectx = spec.handler.as_ref().map(|_| match &spec.within {
+            Some(_) => EventCtx::Invocation,
+            None => EventCtx::Run,
+        });
         // A handler's `call` is no event of the scenario.
         if spec.call.is_none() {
-            p.events.entry(spec.name.clone()).or_default().push((
-                &spec.cond,
-                &spec.site,
-                spec.handler.is_some(),
-            ));
+            p.events
+                .entry(spec.name.clone())
+                .or_default()
+                .push((&spec.cond, &spec.site, ectx));
         }
-        if let Some((i, site)) = &spec.handler {
-            handlers.push((format!("on.{i}"), spec, site));
+        if let (Some((i, site)), Some(ectx)) = (&spec.handler, ectx) {
+            handlers.push((handler_act(spec.within.as_deref(), *i), spec, site, ectx));
         }
     }
     // Actors, in the order the tree names them, and each one's first phase.
@@ -274,16 +287,18 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         e.track.set_offset(0.0, s.offset);
         p.last_v.insert(e.name.clone(), s.v);
     }
-    // An `on` handler's event context starts with the run (the scenario's start); its event
-    // is translated (so checked) even when nothing waits on what it emits.
+    // An `on` handler's event context starts with the run (the scenario's start) or with its
+    // invocation; its event is translated (so checked) even when nothing waits on what it
+    // emits.
     let mut handler_plans = Vec::new();
-    for (act, spec, site) in handlers {
+    for (act, spec, site, ectx) in handlers {
         handler_plans.push(HandlerPlan {
             act,
             command_type: if spec.call.is_some() { "call" } else { "emit" },
             event: spec.name.clone(),
-            trigger: p.condition(&spec.cond, 0, EventCtx::Run)?,
+            trigger: p.condition(&spec.cond, 0, ectx)?,
             site: site.clone(),
+            within: spec.within.clone(),
         });
     }
     let end = p.schedule(root, When::At(0.0), None, None, None)?;

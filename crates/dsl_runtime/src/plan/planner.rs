@@ -7,6 +7,7 @@ use std::collections::{BTreeMap, HashMap, HashSet};
 
 use scenario::{ConditionGroup, StoryboardElementState, Trigger};
 
+use super::events::EventCtx;
 use super::types::{Entity, PhasePlan, Settings, When};
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{ActorKind, Along, At, Cond, Draws, Object, Phase};
@@ -15,9 +16,10 @@ use crate::track::Track;
 use crate::trigger::act_state;
 
 /// An event condition the planner translates where the event is used: the condition (or why
-/// it cannot be run), where it is written, and whether it is an `on` handler's (whose event
-/// context is the run).
-pub(crate) type EventUse<'a> = (&'a Result<Cond, Error>, &'a Site, bool);
+/// it cannot be run), where it is written, and, for an `on` handler's, its own event context
+/// (the run, or the invocation it belongs to; a declared event takes the context of the place
+/// it is used).
+pub(crate) type EventUse<'a> = (&'a Result<Cond, Error>, &'a Site, Option<EventCtx<'a>>);
 
 pub(crate) struct Planner<'a> {
     pub road: PlanRoad<'a>,

@@ -180,7 +180,8 @@ impl Plan {
 /// the handler's event, so that each emission is logged.
 #[derive(Debug, Clone)]
 pub(crate) struct HandlerPlan {
-    /// `on.0`: the handler's index among the scenario's `on` directives.
+    /// `on.0`: the handler's index among the scenario's `on` directives (`do.round_two.on.0`
+    /// for a handler of the behavior invoked at `do.round_two`).
     pub act: String,
     /// The command's type: `emit`, or `call` (an external method the host runs).
     pub command_type: &'static str,
@@ -190,6 +191,9 @@ pub(crate) struct HandlerPlan {
     pub trigger: Trigger,
     /// The `emit` directive.
     pub site: Site,
+    /// For a handler of an invoked behavior: the invocation's phase path (its Act runs from
+    /// that phase's start to its end); `None`: for the whole run.
+    pub within: Option<String>,
 }
 
 /// Options of planning.

@@ -21,7 +21,8 @@
 //! | `elapsed(d)` in an `on` handler or an event declaration | from d after the event context's start on: SimulationTime ≥ d (an `on`), d after the phase's start (a `wait`/`until`) |
 //!
 //! `every` follows §7.3.10.4: occurrences at each multiple of the period from the start of the
-//! *event context* (an `on` handler's: the scenario's start; a `wait`'s or `until`'s: the
+//! *event context* (an `on` handler's: the scenario's start, which for an invoked scenario is
+//! the invocation's start and is refused by the planner there; a `wait`'s or `until`'s: the
 //! phase's start; a declared event's: that of the place it is used), all shifted by `offset`;
 //! a point between two steps moves to the next step.
 //!

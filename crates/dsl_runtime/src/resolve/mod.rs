@@ -84,6 +84,10 @@ pub(crate) struct EventSpec {
     pub handler: Option<(usize, Site)>,
     /// For an `on` handler's `call`: the call (the spec is then no event of the scenario).
     pub call: Option<Call>,
+    /// For an `on` handler of an invoked behavior: the invocation's phase path (`do.round_two`);
+    /// the handler is active from that phase's start to its end (§7.3.10). `None`: the entry
+    /// scenario's, active for the whole run.
+    pub within: Option<String>,
 }
 
 /// Why a program has no scenario to run, or cannot be resolved.
@@ -112,11 +116,11 @@ pub(crate) fn resolve(
     let ev = eval::Eval::new(model, &resolution, decl.name.clone(), files, &draws);
     let mut entered = Vec::new();
     let root = tree::build_root(&ev, root, &mut entered).map_err(Failure::Plan)?;
-    let mut events = events(&ev, &decl.members, "").map_err(Failure::Plan)?;
+    let mut events = events(&ev, &decl.members, None).map_err(Failure::Plan)?;
     for e in entered {
         let inner = ev.enter(e.frame.clone());
         let members = &model.compound(e.behavior).members;
-        events.extend(events_of(&inner, members, &e.frame.prefix).map_err(Failure::Plan)?);
+        events.extend(self::events(&inner, members, Some(&e.path)).map_err(Failure::Plan)?);
     }
     let located = objects::locations(&ev, &decl.members).map_err(Failure::Plan)?;
     let mut objects = objects(&ev, &root, &located);
@@ -222,29 +226,16 @@ pub(crate) fn entry<'p>(
     }
 }
 
-/// Events an invoked behavior declares with a condition (`event e is c`), keyed by the
-/// invocation's `prefix`; `on` handlers of invoked behaviors are not run yet (an error).
-fn events_of(
+/// Events the scenario (or the behavior invoked at phase `within`) declares with a condition
+/// (`event e is c`), and the events its `on` handlers emit, each with the condition that makes
+/// it occur; names are keyed by the frame's invocation prefix (an invocation's events are its
+/// own, §7.3.10), and an invocation's handlers are active while it runs.
+fn events(
     ev: &eval::Eval<'_>,
     members: &[Member],
-    prefix: &str,
+    within: Option<&str>,
 ) -> Result<Vec<EventSpec>, Error> {
-    for m in members {
-        if let Member::On(_, _, span) = m {
-            return Err(ev.files.err(
-                ErrorKind::Unsupported,
-                *span,
-                "expected `on` handlers in the scenario that is run, found one in an invoked behavior (not run yet)",
-            ));
-        }
-    }
-    events(ev, members, prefix)
-}
-
-/// Events the scenario declares with a condition (`event e is c`), and the events `on`
-/// handlers emit, each with the condition that makes it occur; names are keyed by `prefix`
-/// (an invocation's events are its own).
-fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<EventSpec>, Error> {
+    let within = within.map(str::to_string);
     let mut events = Vec::new();
     let mut handlers = 0;
     for m in members {
@@ -252,11 +243,12 @@ fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<E
             Member::Event(e) => {
                 if let Some(spec) = &e.spec {
                     events.push(EventSpec {
-                        name: format!("{prefix}{}", e.name.text),
+                        name: ev.event_key(&e.name.text),
                         cond: cond::read(ev, spec),
                         site: ev.site(spec.span),
                         handler: None,
                         call: None,
+                        within: None,
                     });
                 }
             }
@@ -283,11 +275,12 @@ fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<E
                 for b in body {
                     match &b.behavior {
                         Behavior::Emit(name, _, span) => events.push(EventSpec {
-                            name: name.text.clone(),
+                            name: ev.event_key(&name.text),
                             cond: cond::read(ev, spec),
                             site: ev.site(spec.span),
                             handler: Some((index, ev.site(*span))),
                             call: None,
+                            within: within.clone(),
                         }),
                         Behavior::Call(e, span) => {
                             let c = call::read(ev, e)?;
@@ -297,6 +290,7 @@ fn events(ev: &eval::Eval<'_>, members: &[Member], prefix: &str) -> Result<Vec<E
                                 site: ev.site(spec.span),
                                 handler: Some((index, ev.site(*span))),
                                 call: Some(c),
+                                within: within.clone(),
                             })
                         }
                         _ => {

@@ -91,6 +91,8 @@ pub(crate) struct Entered {
     pub frame: Frame,
     /// The invoked behavior.
     pub behavior: CompoundId,
+    /// The invocation's phase path (`do.round_two`): its `on` handlers run while it does.
+    pub path: String,
 }
 
 /// Deepest nesting of invocations (the checker reports recursive ones; this guards the stack).
@@ -556,6 +558,7 @@ fn behavior(
     entered.push(Entered {
         frame,
         behavior: inv.callee,
+        path: path.clone(),
     });
     let mut phase = build(&inner, root, path, &root_path(root), depth + 1, entered)?;
     phase.site = ev.site(inv.span);

@@ -2,7 +2,7 @@
 //! parameters, phase paths, each invocation's own actors, the entry point. Every expectation
 //! is worked by hand in the scenario file's comment.
 
-use super::support::{error, run};
+use super::support::{error, run, Run};
 
 /// Positions on the straight road: exact up to float round-off.
 const S_TOL: f64 = 1e-6;
@@ -13,27 +13,35 @@ fn close(a: (f64, f64), b: (f64, f64)) -> bool {
     (a.0 - b.0).abs() < T_TOL && (a.1 - b.1).abs() < T_TOL
 }
 
+/// Each phase of `r` at `path` runs over the interval given with it.
+fn phases_are(r: &Run, want: &[(&str, (f64, f64))]) {
+    for (path, want) in want {
+        let got = r.phase(path);
+        assert!(close(got, *want), "{path}: {got:?}, expected {want:?}");
+    }
+}
+
 #[test]
 fn a_scenario_invoked_twice_in_serial_and_once_in_parallel() {
     let r = run("reuse_serial_parallel", 0, None);
-    for (path, want) in [
-        ("do.start", (0.0, 1.0)),
-        ("do.round_one", (1.0, 5.0)),
-        ("do.round_one.quick", (1.0, 3.0)),
-        ("do.round_one.slow", (3.0, 5.0)),
-        ("do.round_two", (5.0, 8.0)),
-        ("do.round_two.quick", (5.0, 7.0)),
-        ("do.round_two.slow", (7.0, 8.0)),
-        ("do.together", (8.0, 12.0)),
-        ("do.together.0", (8.0, 12.0)),
-        ("do.together.0.quick", (8.0, 10.0)),
-        ("do.together.0.slow", (10.0, 12.0)),
-        ("do.together.1", (8.0, 11.0)),
-        ("do", (0.0, 12.0)),
-    ] {
-        let got = r.phase(path);
-        assert!(close(got, want), "{path}: {got:?}, expected {want:?}");
-    }
+    phases_are(
+        &r,
+        &[
+            ("do.start", (0.0, 1.0)),
+            ("do.round_one", (1.0, 5.0)),
+            ("do.round_one.quick", (1.0, 3.0)),
+            ("do.round_one.slow", (3.0, 5.0)),
+            ("do.round_two", (5.0, 8.0)),
+            ("do.round_two.quick", (5.0, 7.0)),
+            ("do.round_two.slow", (7.0, 8.0)),
+            ("do.together", (8.0, 12.0)),
+            ("do.together.0", (8.0, 12.0)),
+            ("do.together.0.quick", (8.0, 10.0)),
+            ("do.together.0.slow", (10.0, 12.0)),
+            ("do.together.1", (8.0, 11.0)),
+            ("do", (0.0, 12.0)),
+        ],
+    );
     for (t, s, v) in [
         (1.0, 110.0, 10.0),
         (3.0, 150.0, 20.0),
@@ -117,6 +125,12 @@ fn invocation_errors_name_the_place() {
             && msg.ends_with("err_reuse_two_entries.osc:7:1"),
         "{msg}"
     );
+    let msg = error("err_reuse_on_every");
+    assert!(
+        msg.contains("found one in an `on` handler of an invoked behavior (not run yet)")
+            && msg.ends_with("err_reuse_on_every.osc:6:8"),
+        "{msg}"
+    );
     let msg = error("err_reuse_parameter_keep");
     assert!(
         msg.contains("this constraint conflicts with 1 other(s) at ")
@@ -169,5 +183,45 @@ fn a_scenario_declared_on_an_actor_drives_that_actor() {
             (ego.s - s).abs() < S_TOL && (ego.speed - v).abs() < S_TOL,
             "{t}: {ego:?}"
         );
+    }
+}
+
+/// `on` handlers of a scenario invoked twice in serial (reuse_on.osc): each invocation's
+/// handlers read its own parameter and actor, emit its own events, and fire only while the
+/// invocation runs.
+#[test]
+fn on_handlers_of_an_invoked_scenario_fire_only_while_their_invocation_runs() {
+    let r = run("reuse_on", 0, None);
+    phases_are(
+        &r,
+        &[
+            ("do.round_one", (1.0, 5.0)),
+            ("do.round_two", (5.0, 9.0)),
+            ("do.tail", (9.0, 11.0)),
+        ],
+    );
+    for (invocation, t) in [("do.round_one", 1.85), ("do.round_two", 6.50)] {
+        for (handler, event) in [(0, "fast"), (1, "echo")] {
+            let by = format!("{invocation}.on.{handler}/emit {invocation}.{event}");
+            let got = r.emissions(&by, &format!("{invocation}.{event}"));
+            assert!(
+                got.len() == 1 && (got[0] - t).abs() < T_TOL,
+                "{by}: {got:?}, expected [{t}]"
+            );
+        }
+    }
+    // No other emission, in or outside the invocations.
+    let all: Vec<&(f64, String, String, String)> =
+        r.commands.iter().filter(|c| c.2 == "emit").collect();
+    assert_eq!(all.len(), 4, "{all:?}");
+    for (t, s) in [
+        (1.0, 110.0),
+        (3.0, 140.25),
+        (5.0, 170.0),
+        (7.0, 200.25),
+        (9.0, 230.0),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!((ego.s - s).abs() < S_TOL, "ego at {t} s: s = {}", ego.s);
     }
 }
