@@ -20,7 +20,8 @@ use std::fmt::Write as _;
 
 use load::{Buckets, CoverItem, CoverageKind, Sample};
 
-use crate::table::{field, split_line, BucketDef, CoverDef, CsvError, Table};
+use crate::error::{CsvErrorKind, Error};
+use crate::table::{field, split_line, BucketDef, CoverDef, Table};
 
 /// `x` (a value in the item's unit, kept to 1e-6) in millionths.
 fn micro(x: f64) -> i64 {
@@ -197,8 +198,8 @@ pub fn to_csv(items: &[ItemCoverage]) -> String {
 }
 
 /// The bucket definitions a `coverage.csv` lists (its hits are recounted, not read).
-pub fn definitions_from_csv(text: &str, file: &str) -> Result<Vec<CoverDef>, CsvError> {
-    let err = |line: usize, expected: &str, found: &str| CsvError {
+pub fn definitions_from_csv(text: &str, file: &str) -> Result<Vec<CoverDef>, Error> {
+    let err = |line: usize, expected: &str, found: &str| CsvErrorKind {
         file: file.to_owned(),
         line,
         expected: expected.to_owned(),
@@ -212,16 +213,17 @@ pub fn definitions_from_csv(text: &str, file: &str) -> Result<Vec<CoverDef>, Csv
                 1,
                 "the header item,bucket,low,high,hits",
                 other.map_or("an empty file", |(_, l)| l),
-            ))
+            )
+            .into())
         }
     }
     let mut defs: Vec<CoverDef> = Vec::new();
     for (n, line) in lines.filter(|(_, l)| !l.is_empty()) {
         let c = split_line(line).map_err(|e| err(n, "a CSV line", &e))?;
         let [item, bucket, low, high, _hits] = c.as_slice() else {
-            return Err(err(n, "5 cells", &c.len().to_string()));
+            return Err(err(n, "5 cells", &c.len().to_string()).into());
         };
-        let number = |t: &str| -> Result<i64, CsvError> {
+        let number = |t: &str| -> Result<i64, CsvErrorKind> {
             t.parse::<f64>()
                 .ok()
                 .filter(|x| x.is_finite())

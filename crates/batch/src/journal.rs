@@ -37,6 +37,7 @@
 //! The journal is created whole with its first record (written to `batch.journal.tmp`,
 //! synced, renamed), so a journal without its header never exists.
 
+use crate::error::{Error, JournalErrorKind};
 use std::fs::{File, OpenOptions};
 use std::io::{Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
@@ -59,48 +60,25 @@ pub const SYNC_INTERVAL: Duration = Duration::from_secs(1);
 /// The journal's file name in a batch's output folder.
 pub const JOURNAL_FILE: &str = "batch.journal";
 
-/// Why a journal could not be read or written.
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum JournalError {
-    /// Reading, writing or syncing failed.
-    #[error("cannot {what} {path}: {message}")]
-    Io {
-        /// What was being done.
-        what: &'static str,
-        /// The file.
-        path: String,
-        /// The I/O error.
-        message: String,
-    },
-    /// The file does not start with `MAGIC` (`OSCSIMJ1`), or has no whole first record.
-    #[error("expected an oscsim batch journal ({magic} and a header record), found {found} at {path}", magic = String::from_utf8_lossy(MAGIC))]
-    NotAJournal {
-        /// The file.
-        path: String,
-        /// What it starts with.
-        found: String,
-    },
-    /// A record too long to be one (`MAX_RECORD`, 64 MiB) was offered.
-    #[error("expected a journal record of at most {MAX_RECORD} bytes, found {len} bytes")]
-    TooLong {
-        /// Its length.
-        len: usize,
-    },
-}
-
-fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> JournalError + 'a {
-    move |e| JournalError::Io {
-        what,
-        path: path.display().to_string(),
-        message: e.to_string(),
+fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> Error + 'a {
+    move |e| {
+        JournalErrorKind::Io {
+            what,
+            path: path.display().to_string(),
+            message: e.to_string(),
+        }
+        .into()
     }
 }
 
 /// One record's frame: length, checksum, payload.
-fn frame(payload: &[u8]) -> Result<Vec<u8>, JournalError> {
+fn frame(payload: &[u8]) -> Result<Vec<u8>, Error> {
     if payload.is_empty() || payload.len() > MAX_RECORD {
-        return Err(JournalError::TooLong { len: payload.len() });
+        return Err(JournalErrorKind::TooLong {
+            len: payload.len(),
+            max: MAX_RECORD,
+        }
+        .into());
     }
     let len = (payload.len() as u32).to_le_bytes();
     let mut crc = crc32fast::Hasher::new();
@@ -125,18 +103,29 @@ pub struct Contents {
     pub ignored: u64,
 }
 
+/// The error of a file at `path` that is no journal: it starts with `found`.
+pub(crate) fn not_a_journal(path: String, found: String) -> JournalErrorKind {
+    JournalErrorKind::NotAJournal {
+        path,
+        found,
+        magic: String::from_utf8_lossy(MAGIC).into_owned(),
+    }
+}
+
 /// Reads the journal at `path` (module doc: records up to the first damaged one).
-pub fn read(path: &Path) -> Result<Contents, JournalError> {
+pub fn read(path: &Path) -> Result<Contents, Error> {
     let bytes = std::fs::read(path).map_err(io("read", path))?;
-    let not_journal = |found: &[u8]| JournalError::NotAJournal {
-        path: path.display().to_string(),
-        found: format!(
-            "{:?}",
-            String::from_utf8_lossy(&found[..found.len().min(16)])
-        ),
+    let not_journal = |found: &[u8]| {
+        not_a_journal(
+            path.display().to_string(),
+            format!(
+                "{:?}",
+                String::from_utf8_lossy(&found[..found.len().min(16)])
+            ),
+        )
     };
     if !bytes.starts_with(MAGIC) {
-        return Err(not_journal(&bytes));
+        return Err(not_journal(&bytes).into());
     }
     let mut at = MAGIC.len();
     let mut records = Vec::new();
@@ -148,7 +137,7 @@ pub fn read(path: &Path) -> Result<Contents, JournalError> {
         at += 8 + payload.len();
     }
     if records.is_empty() {
-        return Err(not_journal(&bytes));
+        return Err(not_journal(&bytes).into());
     }
     Ok(Contents {
         records,
@@ -187,7 +176,7 @@ pub struct Journal {
 impl Journal {
     /// Creates the journal at `path` holding `header` as its first record (module doc), replacing
     /// what is there.
-    pub fn create(path: &Path, header: &str) -> Result<Journal, JournalError> {
+    pub fn create(path: &Path, header: &str) -> Result<Journal, Error> {
         let tmp = path.with_extension("journal.tmp");
         let mut bytes = MAGIC.to_vec();
         bytes.extend(frame(header.as_bytes())?);
@@ -203,7 +192,7 @@ impl Journal {
 
     /// Opens the journal at `path` for appending after its first `valid_len` bytes (what
     /// [`read`] found readable), cutting off the rest.
-    pub fn append_to(path: &Path, valid_len: u64) -> Result<Journal, JournalError> {
+    pub fn append_to(path: &Path, valid_len: u64) -> Result<Journal, Error> {
         let mut file = OpenOptions::new()
             .write(true)
             .open(path)
@@ -242,7 +231,7 @@ impl Journal {
 
     /// Appends one record (one write of the whole frame); the background syncer syncs it
     /// within `SYNC_INTERVAL` (1 s).
-    pub fn append(&self, payload: &str) -> Result<(), JournalError> {
+    pub fn append(&self, payload: &str) -> Result<(), Error> {
         let bytes = frame(payload.as_bytes())?;
         // A worker that panicked while holding the lock wrote a whole record or none (one
         // write_all), so the file stays usable: take it back from the poison.
@@ -254,7 +243,7 @@ impl Journal {
     }
 
     /// Syncs the records appended so far to the disk (`fdatasync`).
-    pub fn sync(&self) -> Result<(), JournalError> {
+    pub fn sync(&self) -> Result<(), Error> {
         let file = self.file.lock().unwrap_or_else(|p| p.into_inner());
         file.sync_data().map_err(io("sync", &self.path))
     }
@@ -276,7 +265,7 @@ impl Drop for Journal {
 }
 
 /// Syncs the folder holding `path`, so that a rename into it survives a power loss.
-pub(crate) fn sync_folder(path: &Path) -> Result<(), JournalError> {
+pub(crate) fn sync_folder(path: &Path) -> Result<(), Error> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -291,6 +280,7 @@ pub(crate) fn sync_folder(path: &Path) -> Result<(), JournalError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::ErrorKind;
 
     fn scratch(name: &str) -> PathBuf {
         let dir = std::env::temp_dir()
@@ -379,10 +369,21 @@ mod tests {
             "{e}"
         );
         std::fs::write(&path, MAGIC).unwrap();
-        assert!(matches!(read(&path), Err(JournalError::NotAJournal { .. })));
-        assert!(matches!(
-            Journal::create(&path, ""),
-            Err(JournalError::TooLong { len: 0 })
-        ));
+        let e = read(&path).unwrap_err();
+        assert!(
+            matches!(
+                e.kind(),
+                ErrorKind::Journal(JournalErrorKind::NotAJournal { .. })
+            ),
+            "{e}"
+        );
+        let e = Journal::create(&path, "").unwrap_err();
+        assert!(
+            matches!(
+                e.kind(),
+                ErrorKind::Journal(JournalErrorKind::TooLong { len: 0, .. })
+            ),
+            "{e}"
+        );
     }
 }

@@ -4,6 +4,7 @@
 //!
 //! | module | job |
 //! | --- | --- |
+//! | `error` | `Error`, the crate's one error: `kind()` (which stage, its own kinds), `pos()` (the file position, where there is one) |
 //! | `plan` | the distribution file → numbered variants, checked against the ScenarioFile; or the seeds of a DSL scenario |
 //! | `seed` | each variant's random seed from the batch seed and its number |
 //! | `shard` | disjoint shares for several processes: `--shard I/N`, Slurm arrays, Kubernetes Indexed Jobs |
@@ -23,6 +24,7 @@
 #![deny(missing_docs)]
 
 mod coverage;
+mod error;
 mod guard;
 mod journal;
 mod merge;
@@ -43,21 +45,23 @@ pub use coverage::{
     ItemCoverage,
 };
 pub use engine::StopReason;
-pub use journal::{
-    read as read_journal, Contents as JournalContents, Journal, JournalError, JOURNAL_FILE,
+pub use error::{
+    CsvErrorKind, Error, ErrorKind, JournalErrorKind, MergeErrorKind, ParquetErrorKind,
+    PlanErrorKind, ResumeErrorKind, RunErrorKind, ShardErrorKind,
 };
-pub use merge::{merge, merge_tables, write_outputs, MergeError};
+pub use journal::{read as read_journal, Contents as JournalContents, Journal, JOURNAL_FILE};
+pub use merge::{merge, merge_tables, write_outputs};
 pub use metrics::{Measures, Observer};
-pub use parquet_file::{to_parquet, ParquetError};
-pub use plan::{parse_seeds, Plan, PlanError, Seeds, MAX_SEEDS};
+pub use parquet_file::to_parquet;
+pub use plan::{parse_seeds, Plan, Seeds, MAX_SEEDS};
 pub use report::{report_html, summary};
-pub use resume::{open as open_journal, run_durable, Finished, ResumeError, Resumed};
-pub use run::{empty_table, run, run_each, run_variants, selected, Options, RunError};
+pub use resume::{open as open_journal, run_durable, Finished, Resumed};
+pub use run::{empty_table, run, run_each, run_variants, selected, Options};
 pub use save::{variant_dir, Save};
 pub use seed::variant_seed;
-pub use shard::{Shard, ShardError};
+pub use shard::Shard;
 pub use sweep::Sweep;
 pub use table::{
-    quantize, quantize_time, BucketDef, CoverDef, CsvError, Outcome, Row, Table, FIXED_COLUMNS,
-    REFUSED, REFUSED_STOP,
+    quantize, quantize_time, BucketDef, CoverDef, Outcome, Row, Table, FIXED_COLUMNS, REFUSED,
+    REFUSED_STOP,
 };

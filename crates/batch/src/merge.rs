@@ -13,80 +13,20 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::journal::JournalError;
-use crate::parquet_file::{to_parquet, ParquetError};
+use crate::error::{Error, MergeErrorKind};
+use crate::parquet_file::to_parquet;
 use crate::report::report_html;
 use crate::sweep::recorded;
-use crate::table::{CsvError, Table};
+use crate::table::Table;
 
-/// Why shard outputs could not be merged or outputs written.
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum MergeError {
-    /// A file could not be read, written or copied.
-    #[error("{what} {path}: {message}")]
-    Io {
-        /// What was being done.
-        what: &'static str,
-        /// The path.
-        path: String,
-        /// The I/O error.
-        message: String,
-    },
-    /// A shard's results.csv is not a results table.
-    #[error(transparent)]
-    Csv(#[from] CsvError),
-    /// A shard's journal cannot be read.
-    #[error(transparent)]
-    Journal(#[from] JournalError),
-    /// Shards whose journals name different sweeps (other inputs or options).
-    #[error("expected shards of one sweep, found the journal of another in {other} (the first is {first})")]
-    DifferentSweeps {
-        /// The first shard's journal.
-        first: String,
-        /// The shard that differs.
-        other: String,
-    },
-    /// A shard whose journal lacks some of its variants (it was stopped).
-    #[error("expected a finished shard, found {recorded} of its {variants} variants recorded in {journal}: run its command again to finish it")]
-    Unfinished {
-        /// The shard's journal.
-        journal: String,
-        /// Variants recorded.
-        recorded: usize,
-        /// Variants of its selection.
-        variants: usize,
-    },
-    /// Shards of different batches: other parameters or monitors.
-    #[error(
-        "expected shards of one batch with the header of {first}, found another header in {other}"
-    )]
-    DifferentBatches {
-        /// The first shard's file.
-        first: String,
-        /// The shard that differs.
-        other: String,
-    },
-    /// Two shards ran the same variant.
-    #[error("expected disjoint shards, found variant {variant} in {first} and in {other}")]
-    Overlap {
-        /// The variant.
-        variant: u64,
-        /// One shard's file.
-        first: String,
-        /// The other's.
-        other: String,
-    },
-    /// The Parquet writer failed.
-    #[error(transparent)]
-    Parquet(#[from] ParquetError),
-}
-
-fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> MergeError + 'a {
-    move |e| MergeError::Io {
-        what,
-        path: path.display().to_string(),
-        message: e.to_string(),
+fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> Error + 'a {
+    move |e| {
+        MergeErrorKind::Io {
+            what,
+            path: path.display().to_string(),
+            message: e.to_string(),
+        }
+        .into()
     }
 }
 
@@ -95,7 +35,7 @@ fn io<'a>(what: &'static str, path: &'a Path) -> impl Fn(std::io::Error) -> Merg
 /// temporary name and renamed into place: a kill leaves each file whole, old or new. Not
 /// synced: they are made from the batch's journal, which is (resume.rs); after a power loss
 /// the batch run again writes them anew.
-pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
+pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), Error> {
     std::fs::create_dir_all(dir).map_err(io("cannot create", dir))?;
     let mut files = vec![
         ("results.csv", table.to_csv().into_bytes()),
@@ -119,24 +59,26 @@ pub fn write_outputs(dir: &Path, table: &Table) -> Result<(), MergeError> {
 }
 
 /// Merges the shard folders `shards` into `out` (module doc); returns the merged table.
-pub fn merge(shards: &[PathBuf], out: &Path) -> Result<Table, MergeError> {
+pub fn merge(shards: &[PathBuf], out: &Path) -> Result<Table, Error> {
     let mut parts = Vec::with_capacity(shards.len());
     let mut sweep: Option<(String, String)> = None;
     for dir in shards {
         if let Some((s, journal, done)) = recorded(dir)? {
             if done < s.variants {
-                return Err(MergeError::Unfinished {
+                return Err(MergeErrorKind::Unfinished {
                     journal,
                     recorded: done,
                     variants: s.variants,
-                });
+                }
+                .into());
             }
             match &sweep {
                 Some((digest, first)) if *digest != s.digest => {
-                    return Err(MergeError::DifferentSweeps {
+                    return Err(MergeErrorKind::DifferentSweeps {
                         first: first.clone(),
                         other: journal,
-                    })
+                    }
+                    .into())
                 }
                 Some(_) => {}
                 None => sweep = Some((s.digest, journal)),
@@ -166,17 +108,18 @@ pub fn merge(shards: &[PathBuf], out: &Path) -> Result<Table, MergeError> {
 /// Joins the tables of disjoint shares of one batch, each with the name its errors give it,
 /// into the table of the whole: rows by variant number. Refuses shares of different batches
 /// (other parameters or monitors) and a variant in two shares.
-pub fn merge_tables(parts: Vec<(Table, String)>) -> Result<Table, MergeError> {
+pub fn merge_tables(parts: Vec<(Table, String)>) -> Result<Table, Error> {
     let mut merged: Option<(Table, String)> = None;
     let mut owner: std::collections::BTreeMap<u64, String> = Default::default();
     for (table, name) in parts {
         for row in &table.rows {
             if let Some(first) = owner.insert(row.variant, name.clone()) {
-                return Err(MergeError::Overlap {
+                return Err(MergeErrorKind::Overlap {
                     variant: row.variant,
                     first,
                     other: name,
-                });
+                }
+                .into());
             }
         }
         match &mut merged {
@@ -186,10 +129,11 @@ pub fn merge_tables(parts: Vec<(Table, String)>) -> Result<Table, MergeError> {
                     || m.monitors != table.monitors
                     || m.coverage != table.coverage
                 {
-                    return Err(MergeError::DifferentBatches {
+                    return Err(MergeErrorKind::DifferentBatches {
                         first: first.clone(),
                         other: name,
-                    });
+                    }
+                    .into());
                 }
                 m.rows.extend(table.rows);
             }
@@ -202,7 +146,7 @@ pub fn merge_tables(parts: Vec<(Table, String)>) -> Result<Table, MergeError> {
 
 /// Copies the variant folders under `from` into `to` (nothing when `from` does not exist or is
 /// `to`).
-fn copy_variants(from: &Path, to: &Path) -> Result<(), MergeError> {
+fn copy_variants(from: &Path, to: &Path) -> Result<(), Error> {
     if !from.is_dir() || same(from, to) {
         return Ok(());
     }

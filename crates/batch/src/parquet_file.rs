@@ -20,15 +20,11 @@ use arrow_schema::{DataType, Field, Schema};
 use parquet::arrow::ArrowWriter;
 use parquet::file::properties::WriterProperties;
 
+use crate::error::{Error, ParquetErrorKind};
 use crate::table::{Outcome, Row, Table, FIXED_COLUMNS};
 
-/// Why the Parquet file could not be made.
-#[derive(Debug, thiserror::Error)]
-#[error("cannot write the results as Parquet: {0}")]
-pub struct ParquetError(String);
-
 /// The Parquet bytes of `table`.
-pub fn to_parquet(table: &Table) -> Result<Vec<u8>, ParquetError> {
+pub fn to_parquet(table: &Table) -> Result<Vec<u8>, Error> {
     let ok: Vec<Option<&Outcome>> = table.rows.iter().map(|r| r.result.as_ref().ok()).collect();
     let float = |f: &dyn Fn(&Outcome) -> Option<f64>| -> ArrayRef {
         Arc::new(ok.iter().map(|o| o.and_then(f)).collect::<Float64Array>())
@@ -136,17 +132,19 @@ pub fn to_parquet(table: &Table) -> Result<Vec<u8>, ParquetError> {
         columns.push(Arc::new(values));
     }
     let schema = Arc::new(Schema::new(fields));
-    let batch =
-        RecordBatch::try_new(schema.clone(), columns).map_err(|e| ParquetError(e.to_string()))?;
+    let batch = RecordBatch::try_new(schema.clone(), columns)
+        .map_err(|e| ParquetErrorKind(e.to_string()))?;
     let props = WriterProperties::builder()
         .set_created_by("oscsim batch".to_owned())
         .build();
     let mut bytes = Vec::new();
     let mut writer = ArrowWriter::try_new(&mut bytes, schema, Some(props))
-        .map_err(|e| ParquetError(e.to_string()))?;
+        .map_err(|e| ParquetErrorKind(e.to_string()))?;
     writer
         .write(&batch)
-        .map_err(|e| ParquetError(e.to_string()))?;
-    writer.close().map_err(|e| ParquetError(e.to_string()))?;
+        .map_err(|e| ParquetErrorKind(e.to_string()))?;
+    writer
+        .close()
+        .map_err(|e| ParquetErrorKind(e.to_string()))?;
     Ok(bytes)
 }

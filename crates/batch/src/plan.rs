@@ -26,64 +26,13 @@ use std::sync::{Arc, Mutex};
 use engine::load::RoadNetworks;
 use opendrive::RoadNetwork;
 
+use crate::error::{Error, PlanErrorKind};
 use scenario::distribution::model::{
     DeterministicKind, DistributionDefinition, ParameterValueDistribution,
 };
 use scenario::distribution::DistributionPlan;
 use scenario::Scenario;
 use scenario::SourcePos;
-
-/// Why a batch cannot start.
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum PlanError {
-    /// The distribution file cannot be read.
-    #[error("expected a readable distribution file, found {message} at {file}")]
-    Io {
-        /// The file.
-        file: String,
-        /// The I/O error.
-        message: String,
-    },
-    /// The distribution file is not a valid ParameterValueDistribution (its own position).
-    #[error(transparent)]
-    Distribution(#[from] scenario::distribution::DistributionError),
-    /// The ScenarioFile does not exist.
-    #[error("expected an existing ScenarioFile, found none at {path} (ScenarioFile at {pos})")]
-    MissingScenario {
-        /// The ScenarioFile element: the distribution file and where in it.
-        pos: SourcePos,
-        /// The path tried.
-        path: String,
-    },
-    /// The ScenarioFile does not load (its own position in its own file).
-    #[error("the ScenarioFile does not load: {0}")]
-    Scenario(scenario::Error),
-    /// The scenario of a batch of seeds does not load (its own position in its own file).
-    #[error("the scenario does not load: {0}")]
-    Load(load::Error),
-    /// Seeds for a scenario without constraints to re-solve (an XML one), or no seeds.
-    #[error("{message} at {pos}")]
-    Seeds {
-        /// Lowercase "expected …, found …".
-        message: String,
-        /// The scenario file (1:1).
-        pos: SourcePos,
-    },
-    /// The scenario's road network does not load (its own file and position).
-    #[error("the ScenarioFile's road network does not load: {0}")]
-    RoadNetwork(opendrive::Error),
-    /// A varied parameter the scenario does not declare.
-    #[error("expected a global parameter of the scenario ({declared}), found '{name}' at {pos}")]
-    UndeclaredParameter {
-        /// The distribution that names it: the distribution file and where in it.
-        pos: SourcePos,
-        /// The name.
-        name: String,
-        /// The scenario's parameters, comma-separated.
-        declared: String,
-    },
-}
 
 /// A batch ready to run.
 #[derive(Debug, Clone)]
@@ -151,28 +100,31 @@ pub fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
 
 impl Plan {
     /// Reads `path`, expands it and checks it against its ScenarioFile.
-    pub fn load(path: &Path) -> Result<Plan, PlanError> {
-        let text = std::fs::read_to_string(path).map_err(|e| PlanError::Io {
+    pub fn load(path: &Path) -> Result<Plan, Error> {
+        let text = std::fs::read_to_string(path).map_err(|e| PlanErrorKind::Io {
             file: path.display().to_string(),
             message: e.to_string(),
         })?;
-        let distribution = scenario::distribution::read(&text, path)?;
-        let expanded = DistributionPlan::from_distribution(&distribution, path)?;
+        let distribution =
+            scenario::distribution::read(&text, path).map_err(PlanErrorKind::from)?;
+        let expanded = DistributionPlan::from_distribution(&distribution, path)
+            .map_err(PlanErrorKind::from)?;
         if !expanded.scenario_file.is_file() {
-            return Err(PlanError::MissingScenario {
+            return Err(PlanErrorKind::MissingScenario {
                 pos: distribution.scenario_file_pos.clone(),
                 path: expanded.scenario_file.display().to_string(),
-            });
+            }
+            .into());
         }
         // Through the front door, with the ScenarioFile's own road network and parameters.
         let source = load::Source::open(&expanded.scenario_file, &load::Options::default())
             .map_err(|e| match e.into_kind() {
-                load::ErrorKind::Scenario(s) => PlanError::Scenario(s),
-                load::ErrorKind::RoadNetwork(r) => PlanError::RoadNetwork(r),
-                other => PlanError::Load(other.into()),
+                load::ErrorKind::Scenario(s) => PlanErrorKind::Scenario(s),
+                load::ErrorKind::RoadNetwork(r) => PlanErrorKind::RoadNetwork(r),
+                other => PlanErrorKind::Load(other.into()),
             })?;
         let network = Arc::clone(source.network());
-        let scenario = source.load(0).map_err(PlanError::Load)?.scenario;
+        let scenario = source.load(0).map_err(PlanErrorKind::Load)?.scenario;
         let mut networks = RoadNetworks::new();
         networks.keep(&scenario, Arc::clone(&network));
         let named = varied(&distribution);
@@ -187,7 +139,7 @@ impl Plan {
                     .iter()
                     .map(|p| p.name.as_str())
                     .collect();
-                return Err(PlanError::UndeclaredParameter {
+                return Err(PlanErrorKind::UndeclaredParameter {
                     pos: pos.clone(),
                     name: name.clone(),
                     declared: if declared.is_empty() {
@@ -195,7 +147,8 @@ impl Plan {
                     } else {
                         declared.join(", ")
                     },
-                });
+                }
+                .into());
             }
         }
         let mut parameters: Vec<String> = Vec::new();
@@ -219,22 +172,23 @@ impl Plan {
     /// A batch of `seeds` over the OpenSCENARIO DSL scenario `path`, loaded with `options`
     /// (its road network; the options' seed is not used): module doc. The plan's scenario is
     /// that of the first seed that plans; when none does, the first seed's error.
-    pub fn seeds(path: &Path, options: &load::Options, seeds: Vec<u64>) -> Result<Plan, PlanError> {
-        let source = load::Source::open(path, options).map_err(PlanError::Load)?;
+    pub fn seeds(path: &Path, options: &load::Options, seeds: Vec<u64>) -> Result<Plan, Error> {
+        let source = load::Source::open(path, options).map_err(PlanErrorKind::Load)?;
         let at_start = || SourcePos::start_of(path.into());
         if source.language() == load::Language::Xml {
-            return Err(PlanError::Seeds {
+            return Err(PlanErrorKind::Seeds {
                 message: "expected an OpenSCENARIO DSL scenario (.osc) whose constraints the seeds re-solve, found an XML scenario, which has none (vary it with a ParameterValueDistribution)".into(),
                 pos: at_start(),
-            });
+            }.into());
         }
         let Some(&first) = seeds.first() else {
-            return Err(PlanError::Seeds {
+            return Err(PlanErrorKind::Seeds {
                 message: "expected at least one seed, found none".into(),
                 pos: at_start(),
-            });
+            }
+            .into());
         };
-        let loaded = first_planned(&source, first, &seeds[1..]).map_err(PlanError::Load)?;
+        let loaded = first_planned(&source, first, &seeds[1..]).map_err(PlanErrorKind::Load)?;
         let mut parameters = vec!["seed".to_owned()];
         parameters.extend(source.columns().iter().cloned());
         Ok(Plan {

@@ -26,60 +26,13 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use crate::journal::{self, Journal, JournalError, JOURNAL_FILE};
-use crate::merge::{write_outputs, MergeError};
+use crate::error::{Error, JournalErrorKind, ResumeErrorKind};
+use crate::journal::{self, Journal, JOURNAL_FILE};
+use crate::merge::write_outputs;
 use crate::plan::Plan;
-use crate::run::{empty_table, run_each, selected, Options, RunError};
+use crate::run::{empty_table, run_each, selected, Options};
 use crate::sweep::Sweep;
 use crate::table::{Row, Table};
-
-/// Why a durable batch could not run or finish.
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum ResumeError {
-    /// The journal could not be read or written.
-    #[error(transparent)]
-    Journal(#[from] JournalError),
-    /// The folder holds another sweep's journal.
-    #[error("expected the journal of this sweep ({expected}) or none in {dir}, found that of {found}: choose another --out, or remove the folder to start over")]
-    OtherSweep {
-        /// The output folder.
-        dir: String,
-        /// This sweep: digest and selection.
-        expected: String,
-        /// The journal's.
-        found: String,
-    },
-    /// The folder holds results but no journal (an older oscsim's, or `batch merge`'s).
-    #[error("expected an empty folder or one with a batch journal, found {found} without {JOURNAL_FILE} in {dir}: choose another --out, or remove the folder to start over")]
-    Unjournaled {
-        /// The output folder.
-        dir: String,
-        /// What it holds.
-        found: String,
-    },
-    /// A whole journal record that is not a row of this table.
-    #[error("expected a results row ({expected}), found {found} in record {record} of {path}")]
-    BadRecord {
-        /// The journal.
-        path: String,
-        /// 1-based record number (the header is record 1).
-        record: usize,
-        /// What was expected.
-        expected: String,
-        /// What was found.
-        found: String,
-    },
-    /// A file the sweep's digest reads could not be read.
-    #[error("{0}")]
-    Inputs(String),
-    /// The variants could not run.
-    #[error(transparent)]
-    Run(#[from] RunError),
-    /// The results files could not be written.
-    #[error(transparent)]
-    Outputs(#[from] MergeError),
-}
 
 /// The rows a journal already holds and the journal, open for appending.
 #[derive(Debug)]
@@ -93,7 +46,7 @@ pub struct Resumed {
 impl Resumed {
     /// Appends `row`'s line to the journal (the caller runs only variants it lacks; a variant
     /// recorded twice would be read once).
-    pub fn record(&self, row: &Row) -> Result<(), JournalError> {
+    pub fn record(&self, row: &Row) -> Result<(), Error> {
         self.journal.append(&self.table.row_line(row))
     }
 
@@ -108,11 +61,11 @@ impl Resumed {
 
 /// Opens the journal of `sweep` in `dir` (creating the folder and the journal when there is
 /// none) and reads the rows it holds, with `columns`' parameters and monitors (module doc).
-pub fn open(dir: &Path, sweep: &Sweep, columns: &Table) -> Result<Resumed, ResumeError> {
+pub fn open(dir: &Path, sweep: &Sweep, columns: &Table) -> Result<Resumed, Error> {
     let path = dir.join(JOURNAL_FILE);
     let io = |what: &'static str| {
         move |e: std::io::Error| {
-            ResumeError::Journal(JournalError::Io {
+            Error::from(JournalErrorKind::Io {
                 what,
                 path: dir.display().to_string(),
                 message: e.to_string(),
@@ -132,10 +85,12 @@ pub fn open(dir: &Path, sweep: &Sweep, columns: &Table) -> Result<Resumed, Resum
         .filter(|f| dir.join(f).exists())
         .collect();
         if !found.is_empty() {
-            return Err(ResumeError::Unjournaled {
+            return Err(ResumeErrorKind::Unjournaled {
+                journal: JOURNAL_FILE,
                 dir: dir.display().to_string(),
                 found: found.join(", "),
-            });
+            }
+            .into());
         }
         return Ok(Resumed {
             journal: Journal::create(&path, &sweep.to_header())?,
@@ -149,22 +104,24 @@ pub fn open(dir: &Path, sweep: &Sweep, columns: &Table) -> Result<Resumed, Resum
     let found = Sweep::from_header(&contents.records[0]);
     if found.as_ref() != Some(sweep) {
         let describe = |s: &Sweep| format!("sweep {} with {}", s.digest, s.selection);
-        return Err(ResumeError::OtherSweep {
+        return Err(ResumeErrorKind::OtherSweep {
             dir: dir.display().to_string(),
             expected: describe(sweep),
             found: found.map_or_else(|| "a header of another format".into(), |s| describe(&s)),
-        });
+        }
+        .into());
     }
     let mut rows = BTreeMap::new();
     for (i, line) in contents.records.iter().enumerate().skip(1) {
-        let row = columns
-            .parse_line(line)
-            .map_err(|(expected, found)| ResumeError::BadRecord {
-                path: path.display().to_string(),
-                record: i + 1,
-                expected,
-                found,
-            })?;
+        let row =
+            columns
+                .parse_line(line)
+                .map_err(|(expected, found)| ResumeErrorKind::BadRecord {
+                    path: path.display().to_string(),
+                    record: i + 1,
+                    expected,
+                    found,
+                })?;
         rows.entry(row.variant).or_insert(row);
     }
     Ok(Resumed {
@@ -195,9 +152,9 @@ pub fn run_durable(
     out: &Path,
     started: &dyn Fn(usize, usize),
     progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<Finished, ResumeError> {
+) -> Result<Finished, Error> {
     let columns = empty_table(plan);
-    let sweep = Sweep::of(plan, options, &columns).map_err(ResumeError::Inputs)?;
+    let sweep = Sweep::of(plan, options, &columns).map_err(ResumeErrorKind::Inputs)?;
     let resumed = open(out, &sweep, &columns)?;
     let todo: Vec<u64> = selected(plan, options)
         .into_iter()

@@ -21,8 +21,8 @@ use engine::storyboard::{ElementKind, Transition};
 use engine::{Engine, EngineConfig, EventRecord, EventSink, FrameSink};
 use rayon::prelude::*;
 
+use crate::error::{Error, RunErrorKind};
 use crate::guard::{contain, timeout_message, Deadline};
-use crate::journal::JournalError;
 use crate::metrics::Observer;
 use crate::plan::Plan;
 use crate::save::{commit, discard, staging_dir, Outputs, Save};
@@ -87,31 +87,6 @@ impl Default for Options {
     }
 }
 
-/// Why the batch as a whole could not run (a variant's own failure is a row, not this).
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum RunError {
-    /// The worker pool could not be started.
-    #[error("cannot start {jobs} worker threads: {message}")]
-    Threads {
-        /// The threads asked for.
-        jobs: usize,
-        /// The pool builder's error.
-        message: String,
-    },
-    /// A variant number that the plan does not have ([`run_variants`]).
-    #[error("expected a variant number below {count}, found {variant}")]
-    NoSuchVariant {
-        /// The number asked for.
-        variant: u64,
-        /// How many variants the plan has.
-        count: usize,
-    },
-    /// A finished variant's row could not be recorded (the journal, resume.rs).
-    #[error(transparent)]
-    Journal(#[from] JournalError),
-}
-
 /// The variant numbers this process runs, ascending.
 pub fn selected(plan: &Plan, options: &Options) -> Vec<u64> {
     (0..plan.variants.len() as u64)
@@ -124,7 +99,7 @@ pub fn run(
     plan: &Plan,
     options: &Options,
     progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<Table, RunError> {
+) -> Result<Table, Error> {
     run_variants(plan, options, &selected(plan, options), progress)
 }
 
@@ -137,7 +112,7 @@ pub fn run_variants(
     options: &Options,
     variants: &[u64],
     progress: &(dyn Fn(usize, usize) + Sync),
-) -> Result<Table, RunError> {
+) -> Result<Table, Error> {
     run_each(plan, options, variants, &|_, done, total| {
         progress(done, total);
         Ok(())
@@ -150,18 +125,18 @@ pub fn run_each(
     plan: &Plan,
     options: &Options,
     variants: &[u64],
-    each: &(dyn Fn(&Row, usize, usize) -> Result<(), RunError> + Sync),
-) -> Result<Table, RunError> {
+    each: &(dyn Fn(&Row, usize, usize) -> Result<(), Error> + Sync),
+) -> Result<Table, Error> {
     let count = plan.variants.len();
     if let Some(&variant) = variants.iter().find(|&&v| v >= count as u64) {
-        return Err(RunError::NoSuchVariant { variant, count });
+        return Err(RunErrorKind::NoSuchVariant { variant, count }.into());
     }
     let total = variants.len();
     let done = AtomicUsize::new(0);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.jobs.max(1))
         .build()
-        .map_err(|e| RunError::Threads {
+        .map_err(|e| RunErrorKind::Threads {
             jobs: options.jobs,
             message: e.to_string(),
         })?;
@@ -178,7 +153,7 @@ pub fn run_each(
                 each(&row, done.fetch_add(1, Ordering::Relaxed) + 1, total)?;
                 Ok(row)
             })
-            .collect::<Result<_, RunError>>()
+            .collect::<Result<_, Error>>()
     })?;
     Ok(Table {
         rows,

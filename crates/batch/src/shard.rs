@@ -12,6 +12,8 @@
 //!
 //! Otherwise the process runs every variant.
 
+use crate::error::{Error, ShardErrorKind};
+
 /// One share of a batch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Shard {
@@ -19,18 +21,6 @@ pub struct Shard {
     pub index: u64,
     /// How many shards share the batch.
     pub count: u64,
-}
-
-/// Why a shard could not be determined.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("expected {expected}, found '{found}' in {source_name}")]
-pub struct ShardError {
-    /// What was expected.
-    pub expected: &'static str,
-    /// What was found.
-    pub found: String,
-    /// Where: `--shard`, an environment variable's name.
-    pub source_name: String,
 }
 
 impl Shard {
@@ -43,8 +33,8 @@ impl Shard {
     }
 
     /// Parses `I/N`.
-    pub fn parse(text: &str) -> Result<Shard, ShardError> {
-        let err = || ShardError {
+    pub fn parse(text: &str) -> Result<Shard, Error> {
+        let err = || ShardErrorKind {
             expected: "I/N with 0 ≤ I < N",
             found: text.to_owned(),
             source_name: "--shard".into(),
@@ -54,7 +44,7 @@ impl Shard {
             i.trim().parse().map_err(|_| err())?,
             n.trim().parse().map_err(|_| err())?,
         );
-        Shard::checked(index, count).ok_or_else(err)
+        Ok(Shard::checked(index, count).ok_or_else(err)?)
     }
 
     fn checked(index: u64, count: u64) -> Option<Shard> {
@@ -67,14 +57,14 @@ impl Shard {
         flag: Option<&str>,
         shards: Option<u64>,
         env: impl Fn(&str) -> Option<String>,
-    ) -> Result<Shard, ShardError> {
+    ) -> Result<Shard, Error> {
         if let Some(text) = flag {
             return Shard::parse(text);
         }
-        let number = |name: &str| -> Result<Option<u64>, ShardError> {
+        let number = |name: &str| -> Result<Option<u64>, ShardErrorKind> {
             env(name)
                 .map(|v| {
-                    v.trim().parse::<u64>().map_err(|_| ShardError {
+                    v.trim().parse::<u64>().map_err(|_| ShardErrorKind {
                         expected: "a non-negative integer",
                         found: v.clone(),
                         source_name: name.to_owned(),
@@ -88,26 +78,27 @@ impl Shard {
         ) {
             let min = number("SLURM_ARRAY_TASK_MIN")?.unwrap_or(0);
             let index = id.checked_sub(min).unwrap_or(u64::MAX);
-            return Shard::checked(index, count).ok_or(ShardError {
+            return Ok(Shard::checked(index, count).ok_or(ShardErrorKind {
                 expected: "SLURM_ARRAY_TASK_ID − SLURM_ARRAY_TASK_MIN below SLURM_ARRAY_TASK_COUNT",
                 found: format!("{id} − {min} of {count}"),
                 source_name: "SLURM_ARRAY_TASK_ID".into(),
-            });
+            })?);
         }
         if let Some(index) = number("JOB_COMPLETION_INDEX")? {
             let Some(count) = shards else {
-                return Err(ShardError {
+                return Err(ShardErrorKind {
                     expected:
                         "--shards N with JOB_COMPLETION_INDEX (the Indexed Job's completions)",
                     found: index.to_string(),
                     source_name: "JOB_COMPLETION_INDEX".into(),
-                });
+                }
+                .into());
             };
-            return Shard::checked(index, count).ok_or(ShardError {
+            return Ok(Shard::checked(index, count).ok_or(ShardErrorKind {
                 expected: "JOB_COMPLETION_INDEX below --shards",
                 found: format!("{index} of {count}"),
                 source_name: "JOB_COMPLETION_INDEX".into(),
-            });
+            })?);
         }
         Ok(Shard::ALL)
     }

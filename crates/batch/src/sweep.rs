@@ -31,7 +31,8 @@ use std::path::Path;
 
 use sha2::{Digest, Sha256};
 
-use crate::journal::{self, JournalError, JOURNAL_FILE};
+use crate::error::Error;
+use crate::journal::{self, JOURNAL_FILE};
 use crate::plan::Plan;
 use crate::run::{selected, Options};
 use crate::table::Table;
@@ -155,18 +156,15 @@ impl Sweep {
 
 /// The sweep of the journal in `dir`, the journal's path and how many variants it records, when
 /// `dir` holds a journal (`oscsim batch merge` checks shards with it).
-pub(crate) fn recorded(dir: &Path) -> Result<Option<(Sweep, String, usize)>, JournalError> {
+pub(crate) fn recorded(dir: &Path) -> Result<Option<(Sweep, String, usize)>, Error> {
     let path = dir.join(JOURNAL_FILE);
     if !path.is_file() {
         return Ok(None);
     }
     let contents = journal::read(&path)?;
     let name = path.display().to_string();
-    let sweep =
-        Sweep::from_header(&contents.records[0]).ok_or_else(|| JournalError::NotAJournal {
-            path: name.clone(),
-            found: "a header of another format".into(),
-        })?;
+    let sweep = Sweep::from_header(&contents.records[0])
+        .ok_or_else(|| journal::not_a_journal(name.clone(), "a header of another format".into()))?;
     // A row's record starts with its variant number; one recorded twice counts once.
     let variants: std::collections::BTreeSet<&str> = contents.records[1..]
         .iter()

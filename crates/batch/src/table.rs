@@ -24,6 +24,7 @@
 
 use std::fmt::Write as _;
 
+use crate::error::{CsvErrorKind, Error};
 use engine::StopReason;
 use load::Sample;
 
@@ -259,8 +260,8 @@ impl Table {
 
     /// Reads the CSV text of a table (as [`Table::to_csv`] writes it); `file` names it in
     /// errors.
-    pub fn from_csv(text: &str, file: &str) -> Result<Table, CsvError> {
-        let err = |line: usize, expected: &str, found: &str| CsvError {
+    pub fn from_csv(text: &str, file: &str) -> Result<Table, Error> {
+        let err = |line: usize, expected: &str, found: &str| CsvErrorKind {
             file: file.to_owned(),
             line,
             expected: expected.to_owned(),
@@ -283,7 +284,8 @@ impl Table {
                 1,
                 "the results header (variant, parameters, stop_reason … error, monitors)",
                 header,
-            ));
+            )
+            .into());
         }
         let parameters = cells[1..fixed_at].to_vec();
         let rest = &cells[fixed_at + FIXED_COLUMNS.len()..];
@@ -303,7 +305,8 @@ impl Table {
                 1,
                 "cover:<name> or record:<name> columns after the monitors",
                 c,
-            ));
+            )
+            .into());
         }
         let mut table = Table {
             parameters,
@@ -402,20 +405,6 @@ impl Table {
             }),
         })
     }
-}
-
-/// A results CSV that cannot be read: the file, 1-based line, and what was expected.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("expected {expected}, found {found} at {file}:{line}")]
-pub struct CsvError {
-    /// The file.
-    pub file: String,
-    /// 1-based line.
-    pub line: usize,
-    /// What was expected.
-    pub expected: String,
-    /// What was found.
-    pub found: String,
 }
 
 /// The cells of one CSV line (RFC 4180 quoting; no line breaks inside cells, which this
@@ -532,6 +521,9 @@ mod tests {
             e.to_string(),
             "expected a stop_reason, found exploded at r.csv:2"
         );
+        // The crate's one error: a results.csv error is kind Csv, its place line 2, column 1.
+        assert!(matches!(e.kind(), crate::ErrorKind::Csv(c) if c.line == 2));
+        assert_eq!(e.pos().map(|p| p.to_string()).as_deref(), Some("r.csv:2:1"));
     }
 
     #[test]

@@ -43,6 +43,15 @@ fn an_undeclared_parameter_is_refused_at_its_distribution() {
         error("undeclared", &body),
         "expected a global parameter of the scenario (EgoSpeed, TargetSpeed, Gap), found 'Speed' at dist.xosc:6:3"
     );
+    // batch::Error: kind() names the stage and its own kind, pos() the distribution's element
+    // (line 6, column 3 of the file as written by `distribution`, as in the message).
+    let e = Plan::load(&distribution("undeclared_kind", &body)).unwrap_err();
+    assert!(matches!(
+        e.kind(),
+        batch::ErrorKind::Plan(batch::PlanErrorKind::UndeclaredParameter { name, .. }) if name == "Speed"
+    ));
+    let pos = e.pos().expect("the distribution's element");
+    assert_eq!((pos.line, pos.col), (6, 3));
 }
 
 #[test]

@@ -116,7 +116,7 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
             let seeds = batch::parse_seeds(text).map_err(|e| anyhow::anyhow!("--seeds: {e}"))?;
             let options = crate::load_args::options(args.road.as_deref(), None, &[], &args.step);
             batch::Plan::seeds(distribution, &options, seeds).inspect_err(|e| {
-                if let batch::PlanError::Load(e) = e {
+                if let batch::ErrorKind::Plan(batch::PlanErrorKind::Load(e)) = e.kind() {
                     crate::load_args::show(e);
                 }
             })

@@ -111,6 +111,16 @@ impl Error {
     pub fn path(&self) -> Option<&Path> {
         self.path.as_deref()
     }
+
+    /// The line:col of a text file the error is about, where it has one: a road network
+    /// that does not load ([`ErrorKind::OpenDrive`], its `.xodr` position). A place in a trace
+    /// file is a byte offset, not a line and column: see the kind's `offset` and [`path`](Self::path).
+    pub fn pos(&self) -> Option<&opendrive::SourcePos> {
+        match &self.kind {
+            ErrorKind::OpenDrive(e) => e.pos(),
+            _ => None,
+        }
+    }
 }
 
 impl fmt::Display for Error {

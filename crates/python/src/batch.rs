@@ -17,7 +17,7 @@ use std::time::Duration;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::error::{guard, positioned, OscsimError, Place, ScenarioError};
+use crate::error::{guard, positioned, OscsimError, ScenarioError};
 
 /// A ParameterValueDistribution file expanded into numbered variants and checked against its
 /// ScenarioFile, the scenario and road network loaded once. Immutable; share it between
@@ -64,15 +64,9 @@ impl BatchPlan {
                 None => batch::Plan::load(&path),
             };
             plan.map(|p| BatchPlan { inner: Arc::new(p) }).map_err(|e| {
-                let place = match &e {
-                    batch::PlanError::Load(l) => l.pos().as_ref().into(),
-                    batch::PlanError::Seeds { pos, .. } => Some(pos).into(),
-                    batch::PlanError::Scenario(s) => Some(s.pos()).into(),
-                    batch::PlanError::RoadNetwork(r) => r.into(),
-                    batch::PlanError::Distribution(d) => Some(d.pos()).into(),
-                    batch::PlanError::MissingScenario { pos, .. }
-                    | batch::PlanError::UndeclaredParameter { pos, .. } => Some(pos).into(),
-                    _ => Place::default(),
+                let place = match e.kind() {
+                    batch::ErrorKind::Plan(batch::PlanErrorKind::RoadNetwork(r)) => r.into(),
+                    _ => e.pos().as_ref().into(),
                 };
                 let message = format!("cannot run the batch of {}: {e}", path.display());
                 positioned::<ScenarioError>(py, message, place)
@@ -169,14 +163,12 @@ impl BatchPlan {
             let journal = journal.as_ref().map(Bound::get);
             py.detach(move || {
                 batch::run_each(&plan, &options, &variants, &|row, _, _| {
-                    journal.map_or(Ok(()), |j| {
-                        j.add(row).map(drop).map_err(batch::RunError::from)
-                    })
+                    journal.map_or(Ok(()), |j| j.add(row).map(drop))
                 })
             })
             .map(|t| t.to_csv())
-            .map_err(|e| match e {
-                batch::RunError::NoSuchVariant { .. } => {
+            .map_err(|e| match e.kind() {
+                batch::ErrorKind::Run(batch::RunErrorKind::NoSuchVariant { .. }) => {
                     pyo3::exceptions::PyIndexError::new_err(e.to_string())
                 }
                 _ => OscsimError::new_err(e.to_string()),
@@ -296,7 +288,7 @@ impl BatchJournal {
             )?;
             let columns = batch::empty_table(&plan.inner);
             let resumed = batch::Sweep::of(&plan.inner, &options, &columns)
-                .map_err(batch::ResumeError::Inputs)
+                .map_err(|e| batch::Error::from(batch::ResumeErrorKind::Inputs(e)))
                 .and_then(|sweep| batch::open_journal(&out_dir, &sweep, &columns))
                 .map_err(|e| OscsimError::new_err(e.to_string()))?;
             Ok(BatchJournal {
@@ -375,7 +367,7 @@ impl BatchJournal {
 
 impl BatchJournal {
     /// Records `row` unless its variant is recorded; whether it was new.
-    fn add(&self, row: &batch::Row) -> Result<bool, batch::JournalError> {
+    fn add(&self, row: &batch::Row) -> Result<bool, batch::Error> {
         let mut state = self.lock();
         if state.resumed.has(row.variant) || state.added.contains_key(&row.variant) {
             return Ok(false);
