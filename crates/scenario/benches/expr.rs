@@ -1,6 +1,9 @@
 //! Criterion benchmarks of the OpenSCENARIO 1.3 §9.2 expression evaluator and the §9.5
 //! distribution expansion: parse + evaluate of a typical attribute expression, evaluation of
 //! a parsed expression, and the 20 000-run stochastic plan of the test fixtures.
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
 
 use std::hint::black_box;
 use std::path::Path;

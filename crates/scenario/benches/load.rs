@@ -1,5 +1,10 @@
 //! Load time of the largest corpus scenarios with their catalogs (the road network file is
 //! only checked to exist; parsing it is the opendrive crate's benchmark).
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
+// A benchmark: its set-up unwraps (a panic stops the benchmark).
+#![allow(clippy::unwrap_used)]
 
 use std::path::Path;
 use std::time::Duration;
