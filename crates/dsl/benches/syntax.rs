@@ -1,5 +1,8 @@
 //! Throughput of the syntax front end: lexing, parsing into the lossless tree, and formatting,
 //! on the fixture with every construct repeated to about 100 KB.
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 

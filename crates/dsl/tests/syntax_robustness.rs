@@ -2,6 +2,9 @@
 //! parser (random bytes, random token soups, mutated fixture files), deep nesting and huge
 //! literals. For every input the tree must give the input back byte for byte, every error must
 //! lie inside the input, and formatting must either refuse (syntax errors) or round-trip.
+// An integration-test crate: its helpers outside #[test] functions may unwrap too (the
+// workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
+#![allow(clippy::unwrap_used)]
 
 mod support;
 
