@@ -10,6 +10,9 @@
 //! steps per second); docs/performance.md lists the figures with the machine. Each measured
 //! iteration continues the same run (the vehicles stay on the 20 km road for the ~150 s of
 //! simulated time the longest benchmark reaches).
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
 
 #[path = "../tests/support/scale.rs"]
 mod scale;

@@ -3,6 +3,9 @@
 //! removal, lane look-ups for free points); (2) a truck pulling two trailers through a 90°
 //! curve, 15 s (the one-axle trailer stage). Both build the engine from the loaded model
 //! inside the measured loop.
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use engine::{Engine, EngineConfig};

@@ -2,6 +2,9 @@
 //! model, 22 s simulated at dt = 0.05 s, CSV and event log to memory); (2) the whole esmini
 //! synchronize scenario (SynchronizeAction). Entity-steps per second of many vehicles:
 //! benches/scale.rs.
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use engine::output::{CsvWriter, JsonlWriter};

@@ -12,6 +12,9 @@
 //! lists the figures with the machine. Each measured iteration continues the same run, so the
 //! vehicles stay on the road for the whole benchmark (20–26 m/s for at most ~300 s of
 //! simulated time on 20 km).
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
 
 #[path = "../tests/support/scale.rs"]
 mod scale;

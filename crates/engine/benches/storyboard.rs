@@ -1,6 +1,9 @@
 //! Storyboard step cost (OpenSCENARIO 1.3 §8 state machine): a storyboard of 10 Acts × 5
 //! Maneuvers × 10 Events (500 Events, 500 actions, 1 000 conditions with edges and delays)
 //! stepped 1 000 times at dt = 0.05 s, with deterministic scripted conditions and actions.
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use engine::storyboard::{

@@ -4,6 +4,9 @@
 //!
 //! One test target per area (crates/engine/tests/<area>/main.rs); each file below is one
 //! module, the helpers are shared from `tests/support/`.
+// An integration-test crate: its helpers outside #[test] functions may unwrap too (the
+// workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
+#![allow(clippy::unwrap_used)]
 
 #[path = "../support/condition.rs"]
 mod condition_support;

@@ -33,6 +33,9 @@ fn counted() -> u64 {
 }
 
 // SAFETY: every call is forwarded unchanged to the system allocator; the counter is atomic.
+// Counting allocations needs a global allocator, an unsafe trait: the workspace lint
+// `unsafe_code` is allowed here only.
+#[allow(unsafe_code)]
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
         count();
