@@ -5,6 +5,9 @@
 //! - `build_1000`: filling the messages from entity states (mapping cost);
 //! - `osi_1000`: encoding + length prefix into a discarding writer;
 //! - `mcap_1000`: encoding + MCAP chunking into a discarding, seekable writer.
+// criterion_group!/criterion_main! make undocumented public functions (workspace lint
+// missing_docs).
+#![allow(missing_docs)]
 
 #[path = "../tests/common/mod.rs"]
 mod common;

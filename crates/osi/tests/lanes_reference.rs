@@ -3,6 +3,9 @@
 //! README): every reference point of a lane must lie on our centre-line polyline within
 //! the sampling tolerance (1 cm) plus the reference's rounding (1e-6 m). Lane 0's samples
 //! are the centre line, which is a lane boundary in OSI.
+// An integration-test crate: its helpers outside #[test] functions may unwrap too (the
+// workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
+#![allow(clippy::unwrap_used)]
 
 use osi::ids::{IdAllocator, IdKey};
 use osi::lanes::{from_network, RoadLanes};

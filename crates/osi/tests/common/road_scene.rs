@@ -72,7 +72,10 @@ pub fn frame(net: &opendrive::RoadNetwork, b: &mut GroundTruthBuilder, k: u64) -
         ..Default::default()
     };
     f.add_entity(
-        &car("Ego", osi::color::from_color_type("white").unwrap()),
+        &car(
+            "Ego",
+            osi::color::from_color_type("white").expect("white is an OSI colour type"),
+        ),
         &ego,
         &[ego_lane],
     )
