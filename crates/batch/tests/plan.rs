@@ -1,5 +1,8 @@
 //! Loading a batch: bad distributions are refused with file:line:col before any variant runs,
 //! and stochastic distributions give the same variants on every run.
+// An integration-test crate: its helpers outside #[test] functions may unwrap too (the
+// workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
+#![allow(clippy::unwrap_used)]
 
 use std::path::{Path, PathBuf};
 
