@@ -1,6 +1,9 @@
 //! `oscsim batch`: shards in separate processes merge into the unsharded outputs byte for byte,
 //! any `--jobs` gives the same files, Slurm's environment picks the shard, and the corpus's
 //! cut-in_parameter_set.xosc runs as a batch.
+// An integration-test crate: its helpers outside #[test] functions may unwrap too (the
+// workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
+#![allow(clippy::unwrap_used)]
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};

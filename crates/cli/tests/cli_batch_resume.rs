@@ -3,6 +3,9 @@
 //! report.html and the saved variant folders byte for byte those of an uninterrupted run, for
 //! a whole batch, for a shard and for a sweep of DSL seeds with coverage; a folder of another
 //! sweep is refused; slow and failing variants are failed rows and the others complete.
+// An integration-test crate: its helpers outside #[test] functions may unwrap too (the
+// workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
+#![allow(clippy::unwrap_used)]
 
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Output, Stdio};
