@@ -12,9 +12,10 @@
 //! | `state` | entity states as C values, copied from each step's frame |
 //!
 //! `examples/c/run_scenario.c` shows the calls; `tests/c_example.rs` compiles and runs it.
-//! The crate's job is FFI, hence `unsafe`: each use says why it holds.
-#![deny(missing_docs)]
-#![deny(unsafe_op_in_unsafe_fn)]
+//! The crate's job is FFI, hence `unsafe`: each use says why it holds. It is the one crate
+//! where the workspace lint `unsafe_code` is allowed (the C ABI: `#[no_mangle]` functions
+//! taking raw pointers).
+#![allow(unsafe_code)]
 
 mod control;
 mod error;

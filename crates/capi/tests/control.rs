@@ -2,6 +2,9 @@
 //! functions C calls): Ego of the bundled cut-in, handed to the program after the first step,
 //! braked at 5 m/s² for 1 s from 25 m/s ends at 20 m/s; inputs before the hand-over, out of
 //! range or for unknown entities are refused with their status.
+// These tests call the C API through its raw pointers, as a C program does: the workspace
+// lint unsafe_code is allowed here as in the capi crate itself.
+#![allow(unsafe_code)]
 
 use std::ffi::CString;
 

@@ -2,6 +2,9 @@
 //! calls): a simulation made with `osi = 1` hands out each frame's GroundTruth; they decode
 //! as osi3.GroundTruth with both entities of the cut-in under the same ids in every frame,
 //! time stamps k·dt, and lanes in the first frame only.
+// These tests call the C API through its raw pointers, as a C program does: the workspace
+// lint unsafe_code is allowed here as in the capi crate itself.
+#![allow(unsafe_code)]
 
 use std::ffi::CString;
 
