@@ -11,7 +11,7 @@
 //! | `simulation` | the simulation handle: load, step, run, time, entities by index or name, OSI bytes |
 //! | `state` | entity states as C values, copied from each step's frame |
 //!
-//! `examples/c/run_scenario.c` shows the calls; `tests/c_example.rs` compiles and runs it.
+//! `examples/c/run_scenario.c` shows the calls; `tests/it/c_example.rs` compiles and runs it.
 //! The crate's job is FFI, hence `unsafe`: each use says why it holds. It is the one crate
 //! where the workspace lint `unsafe_code` is allowed (the C ABI: `#[no_mangle]` functions
 //! taking raw pointers).

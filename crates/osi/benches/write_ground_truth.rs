@@ -1,4 +1,4 @@
-//! Writing GroundTruth with 1,000 moving objects (the sample scene of tests/common with
+//! Writing GroundTruth with 1,000 moving objects (the sample scene of tests/it/common with
 //! 1,000 vehicles, one pedestrian, one stationary object, no lanes): frames per second
 //! is 1 / time per iteration, MB/s is criterion's byte throughput (message + prefix).
 //!
@@ -9,7 +9,7 @@
 // missing_docs).
 #![allow(missing_docs)]
 
-#[path = "../tests/common/mod.rs"]
+#[path = "../tests/it/common/mod.rs"]
 mod common;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};

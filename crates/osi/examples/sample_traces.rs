@@ -1,11 +1,11 @@
 //! Writes the two test scenes as traces for checking with the official OSI tools:
-//! the synthetic scene of tests/common as `DIR/sample.osi` and `DIR/sample.mcap`, and
-//! the corpus-road scene of tests/common/road_scene.rs (lanes from
+//! the synthetic scene of tests/it/common as `DIR/sample.osi` and `DIR/sample.mcap`, and
+//! the corpus-road scene of tests/it/common/road_scene.rs (lanes from
 //! straight_500m.xodr) as `DIR/road_scene.osi` and `DIR/road_scene.mcap`:
 //! `cargo run -p oscsim-osi --example sample_traces -- DIR` then
 //! `scripts/osi_check.sh DIR/*.osi DIR/*.mcap`.
 
-#[path = "../tests/common/mod.rs"]
+#[path = "../tests/it/common/mod.rs"]
 mod common;
 
 use osi::trace::{McapTraceInfo, McapTraceWriter, OsiFileWriter, TraceWriter};

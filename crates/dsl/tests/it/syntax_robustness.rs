@@ -6,7 +6,7 @@
 // workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
 #![allow(clippy::unwrap_used)]
 
-mod support;
+use crate::support;
 
 use dsl::syntax::{debug_dump, parse, MAX_DEPTH};
 use proptest::prelude::*;

@@ -6,7 +6,7 @@
 // workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use osi::osi3::moving_object::Type as MovingType;

@@ -1,6 +1,6 @@
 //! `include/oscsim.h` is what cbindgen generates from the crate now (cbindgen.toml): a change
 //! of the API that is not in the committed header fails here. Regenerate with
-//! `OSCSIM_BLESS_HEADER=1 cargo test -p oscsim-capi --test header`.
+//! `OSCSIM_BLESS_HEADER=1 cargo test -p oscsim-capi --test it header`.
 
 use std::path::Path;
 
@@ -25,6 +25,6 @@ fn header_is_up_to_date() {
     assert!(
         committed == generated,
         "include/oscsim.h differs from what cbindgen generates; regenerate it with \
-         OSCSIM_BLESS_HEADER=1 cargo test -p oscsim-capi --test header"
+         OSCSIM_BLESS_HEADER=1 cargo test -p oscsim-capi --test it header"
     );
 }

@@ -40,7 +40,7 @@ fn road_length_4e16_hangs_index() {
     assert_eq!((found.road_id.as_str(), found.lane_id), ("1", -1));
 
     // The fuzzer's file (six roads, one of them that long) loads too.
-    let found = include_str!("files/fuzz/road_length_4e16_hangs_index.xodr");
+    let found = include_str!("../files/fuzz/road_length_4e16_hangs_index.xodr");
     let net = RoadNetwork::from_str(found, Path::new("found.xodr")).unwrap();
     assert_eq!(net.roads().len(), 6);
 }

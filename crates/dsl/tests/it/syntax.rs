@@ -4,13 +4,13 @@
 //! is `tests/files/syntax/README.md`.
 //!
 //! Every case also checks that the tree is lossless (its text is the input, byte for byte).
-//! `OSC_BLESS=1 cargo test -p oscsim-dsl --test syntax` writes the expectation files from the
+//! `OSC_BLESS=1 cargo test -p oscsim-dsl --test it syntax` writes the expectation files from the
 //! current parser: review their diff before committing.
 // An integration-test crate: its helpers outside #[test] functions may unwrap too (the
 // workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
 #![allow(clippy::unwrap_used)]
 
-mod support;
+use crate::support;
 
 use dsl::syntax::{debug_dump, parse, LineIndex};
 use std::path::{Path, PathBuf};

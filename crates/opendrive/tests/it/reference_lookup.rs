@@ -3,7 +3,7 @@
 //! exact inverse columns `s_fwd`, `t_fwd`, `lane_fwd` as the README advises; and the round
 //! trip road → world → road → world on every corpus road.
 
-mod common;
+use crate::common;
 
 use common::{csv_rows, esmini_s, num, road_files};
 use opendrive::{angle_difference, Direction, GeometryKind, RoadNetwork};

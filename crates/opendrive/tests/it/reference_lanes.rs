@@ -17,7 +17,7 @@
 //! compares oscsim's reference line at that p, with the lane offset taken at the original s
 //! as esmini does.
 
-mod common;
+use crate::common;
 
 use common::{csv_rows, esmini_s, num, road_files};
 use opendrive::{angle_difference, RoadNetwork};

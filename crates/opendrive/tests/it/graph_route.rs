@@ -1,7 +1,7 @@
 //! Lane graph and routes (OpenDRIVE 1.8 §12 junctions, §11 lane linkage, `road/@rule`),
 //! against lengths read from the files by hand.
 
-mod common;
+use crate::common;
 
 use std::path::Path;
 

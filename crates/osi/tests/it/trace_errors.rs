@@ -3,7 +3,7 @@
 // workspace lint clippy::unwrap_used is for library code; a panic here is the test failing).
 #![allow(clippy::unwrap_used)]
 
-mod common;
+use crate::common;
 
 use osi::trace::{read_mcap_bytes, read_osi_bytes, OsiFileWriter, TraceWriter};
 use osi::ErrorKind;
