@@ -12,7 +12,7 @@ pub enum RunErrorKind {
         /// The pool builder's error.
         message: String,
     },
-    /// A variant number that the plan does not have ([`run_variants`]).
+    /// A variant number that the plan does not have ([`run_variants`](crate::run_variants)).
     #[error("expected a variant number below {count}, found {variant}")]
     NoSuchVariant {
         /// The number asked for.
