@@ -32,7 +32,7 @@ use scenario::{
     Trigger, UserDefinedAction, Vehicle, Waypoint,
 };
 
-use crate::plan::{Entity, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
+use crate::plan::{Entity, HandlerPlan, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
 use crate::resolve::ActorKind;
 use crate::trigger::sim_time;
 
@@ -168,28 +168,29 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
     // `on` handlers: one Act each, running until the root phase (written last) ends, or, for
     // an invoked behavior's, from its invocation's start to its end.
     // Per Act, its groups by command type (`emit` first), each with its commands.
-    let mut handlers: Vec<(&str, Option<&str>, Vec<Commands<'_>>)> = Vec::new();
+    // Keyed by the first handler of each Act (its name and span are every one's).
+    let mut handlers: Vec<(&HandlerPlan, Vec<Commands<'_>>)> = Vec::new();
     for h in &plan.handlers {
         let emit = (h.event.clone(), Some(h.trigger.clone()), h.site.pos.clone());
-        let i = match handlers.iter().position(|(act, _, _)| *act == h.act) {
+        let i = match handlers.iter().position(|(first, _)| first.act == h.act) {
             Some(i) => i,
             None => {
-                handlers.push((&h.act, h.within.as_deref(), Vec::new()));
+                handlers.push((h, Vec::new()));
                 handlers.len() - 1
             }
         };
-        let act = &mut handlers[i].2;
+        let act = &mut handlers[i].1;
         match act.iter_mut().find(|(ty, _)| *ty == h.command_type) {
             Some((_, emits)) => emits.push(emit),
             None => act.push((h.command_type, vec![emit])),
         }
     }
-    for (act, within, by_type) in handlers {
+    for (first, by_type) in handlers {
+        let act = first.act.as_str();
         // Each entry was created with one command of one type.
         let pos = by_type[0].1[0].2.clone();
-        let invocation = within.and_then(|w| plan.phases.iter().find(|ph| ph.path == w));
-        let (start_trigger, stop_trigger) = match invocation {
-            Some(ph) => (start_trigger_of(&ph.start), trigger_of(&ph.end)),
+        let (start_trigger, stop_trigger) = match &first.span {
+            Some((start, end)) => (start_trigger_of(start), trigger_of(end)),
             None => (None, run_end.clone()),
         };
         acts.push(Act {

@@ -291,17 +291,30 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     // invocation; its event is translated (so checked) even when nothing waits on what it
     // emits.
     let mut handler_plans = Vec::new();
-    for (act, spec, site, ectx) in handlers {
+    for (act, spec, site, ectx) in &handlers {
         handler_plans.push(HandlerPlan {
-            act,
+            act: act.clone(),
             command_type: if spec.call.is_some() { "call" } else { "emit" },
             event: spec.name.clone(),
-            trigger: p.condition(&spec.cond, 0, ectx)?,
-            site: site.clone(),
-            within: spec.within.clone(),
+            trigger: p.condition(&spec.cond, 0, *ectx)?,
+            site: (*site).clone(),
+            span: None,
         });
     }
     let end = p.schedule(root, When::At(0.0), None, None, None)?;
+    // An invoked behavior's handlers run while its invocation's phase does.
+    for (h, (_, spec, site, _)) in handler_plans.iter_mut().zip(&handlers) {
+        let Some(within) = &spec.within else {
+            continue;
+        };
+        let phase = p.phases.iter().find(|ph| &ph.path == within).ok_or_else(|| {
+            site.err(
+                K::Unsupported,
+                format!("expected the invocation `{within}` of this `on` handler to be planned, found no phase of that name"),
+            )
+        })?;
+        h.span = Some((phase.start.clone(), phase.end.clone()));
+    }
     if end == When::Never && !settings.open_end {
         return Err(no_end(root));
     }

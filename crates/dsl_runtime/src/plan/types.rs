@@ -191,9 +191,9 @@ pub(crate) struct HandlerPlan {
     pub trigger: Trigger,
     /// The `emit` directive.
     pub site: Site,
-    /// For a handler of an invoked behavior: the invocation's phase path (its Act runs from
-    /// that phase's start to its end); `None`: for the whole run.
-    pub within: Option<String>,
+    /// For a handler of an invoked behavior: the start and end of the invocation's phase (its
+    /// Act runs between them); `None`: for the whole run.
+    pub span: Option<(When, When)>,
 }
 
 /// Options of planning.
