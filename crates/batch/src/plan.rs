@@ -58,6 +58,9 @@ pub struct Plan {
     /// The scenario's `cover(…)`/`record(…)` items (a DSL scenario's; none for XML): the
     /// results table's coverage columns and the buckets of the coverage report.
     pub coverage: Vec<load::CoverItem>,
+    /// What the plan found but runs anyway: a varied parameter the scenario does not declare
+    /// (its values change nothing: they stay in the results table and are given to no variant).
+    pub warnings: Vec<scenario::Warning>,
 }
 
 /// An OpenSCENARIO DSL scenario varied by seed: variant i is the scenario resolved, planned
@@ -128,29 +131,7 @@ impl Plan {
         let mut networks = RoadNetworks::new();
         networks.keep(&scenario, Arc::clone(&network));
         let named = varied(&distribution);
-        for (name, pos) in &named {
-            if !scenario
-                .parameter_declarations
-                .iter()
-                .any(|p| &p.name == name)
-            {
-                let declared: Vec<&str> = scenario
-                    .parameter_declarations
-                    .iter()
-                    .map(|p| p.name.as_str())
-                    .collect();
-                return Err(PlanErrorKind::UndeclaredParameter {
-                    pos: pos.clone(),
-                    name: name.clone(),
-                    declared: if declared.is_empty() {
-                        "it declares none".into()
-                    } else {
-                        declared.join(", ")
-                    },
-                }
-                .into());
-            }
-        }
+        let warnings = undeclared(&scenario, &named);
         let mut parameters: Vec<String> = Vec::new();
         for (name, _) in named {
             if !parameters.contains(&name) {
@@ -166,6 +147,7 @@ impl Plan {
             variants: expanded.runs,
             seeds: None,
             coverage: Vec::new(),
+            warnings,
         })
     }
 
@@ -203,6 +185,7 @@ impl Plan {
                 .iter()
                 .map(|s| BTreeMap::from([("seed".to_owned(), s.to_string())]))
                 .collect(),
+            warnings: Vec::new(),
             seeds: Some(Seeds {
                 source: Arc::new(source),
                 seeds,
@@ -248,6 +231,48 @@ fn first_planned(
 
 /// Every parameter the distribution varies, with the position of the distribution naming it,
 /// in document order.
+/// A warning per varied parameter `scenario` does not declare globally. OpenSCENARIO XML 1.3
+/// §9.3: a distribution gives a value "not taken out of the ParameterDeclaration but
+/// computed at load time", so a name no ParameterDeclaration has replaces nothing. ASAM's own
+/// 1.3 EndOfTrafficJamParameterSet varies `Road_SceneGraph`, which its 1.3 scenario no longer
+/// declares (its 1.2 one did): refusing it would refuse one of the standard's examples, while
+/// nothing is lost by running it (issue 34: accept what ASAM's examples do, with a warning).
+/// A typo (`Speed` for `EgoSpeed`) is the same case, so the warning names the declared ones.
+fn undeclared(scenario: &Scenario, named: &[(String, SourcePos)]) -> Vec<scenario::Warning> {
+    let declared: Vec<&str> = scenario
+        .parameter_declarations
+        .iter()
+        .map(|p| p.name.as_str())
+        .collect();
+    let mut warnings: Vec<scenario::Warning> = Vec::new();
+    for (i, (name, pos)) in named.iter().enumerate() {
+        let again = named[..i].iter().any(|(n, _)| n == name);
+        if again || declared.contains(&name.as_str()) {
+            continue;
+        }
+        warnings.push(scenario::Warning {
+            message: format!(
+                "the scenario declares no global parameter '{name}' ({}): its values vary nothing",
+                if declared.is_empty() {
+                    "it declares none".to_owned()
+                } else {
+                    declared.join(", ")
+                }
+            ),
+            pos: pos.clone(),
+        });
+    }
+    warnings
+}
+
+/// Whether `scenario` declares the global parameter `name` (a variant is given only those).
+pub(crate) fn declares(scenario: &Scenario, name: &str) -> bool {
+    scenario
+        .parameter_declarations
+        .iter()
+        .any(|p| p.name == name)
+}
+
 fn varied(d: &ParameterValueDistribution) -> Vec<(String, SourcePos)> {
     match &d.definition {
         DistributionDefinition::Deterministic(list) => list

@@ -234,8 +234,10 @@ fn variant_scenario(
 ) -> (Vec<String>, Result<Variant, String>, u64) {
     match &plan.seeds {
         None => {
+            // Only the parameters the scenario declares (the others are the plan's warnings).
             let params: Vec<(String, String)> = plan.variants[v as usize]
                 .iter()
+                .filter(|(k, _)| crate::plan::declares(&plan.scenario, k))
                 .map(|(k, x)| (k.clone(), x.clone()))
                 .collect();
             // The variant from the scenario's files kept at the first load: no file is read.

@@ -131,6 +131,9 @@ pub fn run(args: BatchArgs) -> anyhow::Result<ExitCode> {
         None => batch::Plan::load(distribution),
     }
     .with_context(|| format!("cannot run the batch of {}", distribution.display()))?;
+    for w in &plan.warnings {
+        eprintln!("warning: {w}");
+    }
     let shard = batch::Shard::resolve(args.shard.as_deref(), args.shards, |k| {
         std::env::var(k).ok()
     })?;

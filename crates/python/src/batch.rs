@@ -98,6 +98,17 @@ impl BatchPlan {
         self.inner.parameters.clone()
     }
 
+    /// What the plan found but runs anyway, each "message at file:line:col" (a varied parameter
+    /// the scenario does not declare: its values vary nothing).
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.inner
+            .warnings
+            .iter()
+            .map(ToString::to_string)
+            .collect()
+    }
+
     /// Variant `i`'s parameter values by name (as text, as the distribution gives them).
     fn variant<'py>(&self, py: Python<'py>, i: usize) -> PyResult<Bound<'py, PyDict>> {
         let values = self.inner.variants.get(i).ok_or_else(|| {

@@ -52,9 +52,9 @@ impl Error {
         match &*self.kind {
             ErrorKind::Plan(p) => match p {
                 PlanErrorKind::Distribution(d) => Some(d.pos().clone()),
-                PlanErrorKind::MissingScenario { pos, .. }
-                | PlanErrorKind::Seeds { pos, .. }
-                | PlanErrorKind::UndeclaredParameter { pos, .. } => Some(pos.clone()),
+                PlanErrorKind::MissingScenario { pos, .. } | PlanErrorKind::Seeds { pos, .. } => {
+                    Some(pos.clone())
+                }
                 PlanErrorKind::Scenario(s) => Some(s.pos().clone()),
                 PlanErrorKind::Load(l) => l.pos(),
                 PlanErrorKind::RoadNetwork(r) => r.pos().cloned(),

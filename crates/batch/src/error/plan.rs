@@ -43,14 +43,4 @@ pub enum PlanErrorKind {
     /// The scenario's road network does not load (its own file and position).
     #[error("the ScenarioFile's road network does not load: {0}")]
     RoadNetwork(opendrive::Error),
-    /// A varied parameter the scenario does not declare.
-    #[error("expected a global parameter of the scenario ({declared}), found '{name}' at {pos}")]
-    UndeclaredParameter {
-        /// The distribution that names it: the distribution file and where in it.
-        pos: SourcePos,
-        /// The name.
-        name: String,
-        /// The scenario's parameters, comma-separated.
-        declared: String,
-    },
 }

@@ -36,25 +36,48 @@ fn error(name: &str, body: &str) -> String {
 
 const SET_P: &str = "<DeterministicSingleParameterDistribution parameterName=\"{P}\"><DistributionSet><Element value=\"1\"/></DistributionSet></DeterministicSingleParameterDistribution>";
 
+/// A varied parameter the scenario does not declare is a warning, not an error (OpenSCENARIO
+/// XML 1.3 §9.3: a distribution's value replaces a ParameterDeclaration's, so a name none has
+/// replaces nothing; ASAM's own 1.3 EndOfTrafficJamParameterSet varies one its scenario no
+/// longer declares). Its values stay in the results table and change nothing: the variant runs
+/// as the template does with its declared values (here EgoSpeed set to its declared 25).
 #[test]
-fn an_undeclared_parameter_is_refused_at_its_distribution() {
+fn an_undeclared_parameter_is_a_warning_at_its_distribution_and_varies_nothing() {
     let body = format!(
         "<ScenarioFile filepath=\"following.xosc\"/>\n<Deterministic>\n  {}\n</Deterministic>",
         SET_P.replace("{P}", "Speed")
     );
+    let path = distribution("undeclared", &body);
+    let plan = Plan::load(&path).unwrap();
+    assert_eq!(plan.parameters, ["Speed"]);
+    assert_eq!(plan.warnings.len(), 1);
+    let w = plan.warnings[0]
+        .to_string()
+        .replace(&path.display().to_string(), "dist.xosc");
     assert_eq!(
-        error("undeclared", &body),
-        "expected a global parameter of the scenario (EgoSpeed, TargetSpeed, Gap), found 'Speed' at dist.xosc:6:3"
+        w,
+        "the scenario declares no global parameter 'Speed' (EgoSpeed, TargetSpeed, Gap): its values vary nothing at dist.xosc:6:3"
     );
-    // batch::Error: kind() names the stage and its own kind, pos() the distribution's element
-    // (line 6, column 3 of the file as written by `distribution`, as in the message).
-    let e = Plan::load(&distribution("undeclared_kind", &body)).unwrap_err();
-    assert!(matches!(
-        e.kind(),
-        batch::ErrorKind::Plan(batch::PlanErrorKind::UndeclaredParameter { name, .. }) if name == "Speed"
-    ));
-    let pos = e.pos().expect("the distribution's element");
-    assert_eq!((pos.line, pos.col), (6, 3));
+    let declared = format!(
+        "<ScenarioFile filepath=\"following.xosc\"/>\n<Deterministic>\n  {}\n</Deterministic>",
+        SET_P.replace("{P}", "EgoSpeed").replace("\"1\"", "\"25\"")
+    );
+    let template = Plan::load(&distribution("declared_default", &declared)).unwrap();
+    assert!(template.warnings.is_empty());
+    let options = batch::Options::default();
+    let a = batch::run(&plan, &options, &|_, _| {}).unwrap();
+    let b = batch::run(&template, &options, &|_, _| {}).unwrap();
+    assert_eq!(a.rows[0].params, ["1"]);
+    let (a, b) = (
+        a.rows[0].result.as_ref().unwrap(),
+        b.rows[0].result.as_ref().unwrap(),
+    );
+    assert_eq!(a.stop, b.stop);
+    assert_eq!(a.end_time.to_bits(), b.end_time.to_bits());
+    assert_eq!(
+        a.first_collision_time.map(f64::to_bits),
+        b.first_collision_time.map(f64::to_bits)
+    );
 }
 
 #[test]

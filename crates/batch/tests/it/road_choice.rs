@@ -112,7 +112,57 @@ fn variants_get_their_own_catalogs_and_share_a_road_only_where_the_file_is_the_s
 fn the_end_of_traffic_jam_parameter_set_sweeps_both_roads() {
     let plan = Plan::load(&file("asam_end_of_traffic_jam_set.xosc")).unwrap();
     assert_eq!(plan.parameters, ["Road_Logics", "Road_SceneGraph"]);
-    let table = run(&plan, &Options::default(), &|_, _| {}).unwrap();
+    assert!(plan.warnings.is_empty());
+    both_roads_run_into_a1(&plan);
+}
+
+/// ASAM's 1.3 pair: its EndOfTrafficJam no longer declares Road_SceneGraph, which its
+/// parameter set still assigns. The assignment is a warning at its ParameterValueSet (it
+/// replaces no ParameterDeclaration, OpenSCENARIO XML 1.3 §9.3) and the sweep runs as the 1.2
+/// pair does (the declared Road_SceneGraph is used nowhere: the same two runs, by hand above).
+#[test]
+fn the_1_3_end_of_traffic_jam_parameter_set_warns_of_its_undeclared_scene_graph_and_runs() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("asam_1_3_end_of_traffic_jam");
+    std::fs::create_dir_all(&dir).unwrap();
+    let field = Path::new(env!("CARGO_MANIFEST_DIR")).join("../engine/tests/files/field");
+    for road in ["rq31_straight.xodr", "rq36_straight.xodr"] {
+        std::fs::copy(field.join(road), dir.join(road)).unwrap();
+    }
+    let scenario = std::fs::read_to_string(field.join("asam_end_of_traffic_jam.xosc")).unwrap();
+    let declaration = "    <ParameterDeclaration name=\"Road_SceneGraph\" parameterType=\"string\" value=\"rq31_straight.osgb\"/>\n";
+    assert!(scenario.contains(declaration));
+    std::fs::write(
+        dir.join("asam_end_of_traffic_jam.xosc"),
+        // The 1.3 scenario: neither the declaration nor its SceneGraphFile.
+        scenario
+            .replace(declaration, "")
+            .replace("<SceneGraphFile filepath=\"$Road_SceneGraph\"/>", ""),
+    )
+    .unwrap();
+    let set = std::fs::read_to_string(file("asam_end_of_traffic_jam_set.xosc")).unwrap();
+    let set = set.replace(
+        "../../../engine/tests/files/field/asam_end_of_traffic_jam.xosc",
+        "asam_end_of_traffic_jam.xosc",
+    );
+    std::fs::write(dir.join("set.xosc"), &set).unwrap();
+    let plan = Plan::load(&dir.join("set.xosc")).unwrap();
+    assert_eq!(plan.parameters, ["Road_Logics", "Road_SceneGraph"]);
+    assert_eq!(plan.warnings.len(), 1, "{:?}", plan.warnings);
+    let w = &plan.warnings[0];
+    assert!(
+        w.message.starts_with(
+            "the scenario declares no global parameter 'Road_SceneGraph' (Road_Logics, Ego_Speed"
+        ),
+        "{w}"
+    );
+    // The first ParameterValueSet's DeterministicMultiParameterDistribution, line 11.
+    assert_eq!(w.pos.line, 11, "{w}");
+    both_roads_run_into_a1(&plan);
+}
+
+/// Both variants of the EndOfTrafficJam set run to the stop trigger with Ego into A1 (above).
+fn both_roads_run_into_a1(plan: &Plan) {
+    let table = run(plan, &Options::default(), &|_, _| {}).expect("the batch runs");
     assert_eq!(table.rows.len(), 2);
     for row in &table.rows {
         let o = row
