@@ -11,6 +11,7 @@ from __future__ import annotations
 import csv
 import math
 import os
+import re
 import subprocess
 from pathlib import Path
 
@@ -124,8 +125,24 @@ def test_plan_and_errors(tmp_path: Path):
     bad.write_text(GRID.read_text().replace('parameterName="Gap"', 'parameterName="Gapp"').replace(
         'filepath="following.xosc"', f'filepath="{GRID.parent / "following.xosc"}"'
     ))
-    with pytest.raises(oscsim.ScenarioError, match=r"found 'Gapp' at .*bad.xosc:\d+:\d+"):
-        oscsim.batch.run(bad, backend="ray")  # refused before Ray is asked for anything
+    # A varied parameter the scenario does not declare is a warning at its distribution element
+    # (docs/batch.md, OpenSCENARIO XML 1.3 §9.3): its values vary nothing.
+    warned = oscsim.batch.BatchPlan(bad)
+    assert warned.parameters == ["EgoSpeed", "TargetSpeed", "Gapp"]
+    assert len(warned.warnings) == 1
+    assert re.fullmatch(
+        r"the scenario declares no global parameter 'Gapp' \(EgoSpeed, TargetSpeed, Gap\): "
+        r"its values vary nothing at .*bad.xosc:\d+:\d+",
+        warned.warnings[0],
+    ), warned.warnings[0]
+    assert plan.warnings == []
+    missing = tmp_path / "missing.xosc"
+    missing.write_text(GRID.read_text().replace('filepath="following.xosc"', 'filepath="nowhere.xosc"'))
+    with pytest.raises(
+        oscsim.ScenarioError,
+        match=r"expected an existing ScenarioFile, found none at .*nowhere.xosc \(ScenarioFile at .*missing.xosc:\d+:\d+\)",
+    ):
+        oscsim.batch.run(missing, backend="ray")  # refused before Ray is asked for anything
     with pytest.raises(ValueError, match="expected backend"):
         oscsim.batch.run(GRID, backend="dask")
     # Shares of different batches are refused when joined.
