@@ -147,6 +147,27 @@ impl Track {
         self.state(t).2
     }
 
+    /// The acceleration over (`a`, `b`) as pieces (start, end, m/s²) where it is constant,
+    /// split where a planned change starts or ends; `Err(t)` names the first moment from
+    /// which it is not constant over a piece (a sinusoidal or constant-jerk change, or a
+    /// step of speed, whose acceleration has no finite value).
+    pub(crate) fn acceleration_pieces(&self, a: f64, b: f64) -> Result<Vec<(f64, f64, f64)>, f64> {
+        let mut cuts = vec![a, b];
+        for r in &self.stretches {
+            let constant = matches!(r.shape, Shape::Linear { .. }) && r.t1 > r.t0;
+            if r.t0 < b && r.t1 > a && !constant || (r.t0 > a && r.t0 < b && r.t1 == r.t0) {
+                return Err(r.t0.max(a));
+            }
+            cuts.extend([r.t0, r.t1].into_iter().filter(|t| *t > a && *t < b));
+        }
+        cuts.sort_by(f64::total_cmp);
+        cuts.dedup();
+        Ok(cuts
+            .windows(2)
+            .map(|w| (w[0], w[1], self.acceleration(0.5 * (w[0] + w[1]))))
+            .collect())
+    }
+
     /// s, speed and acceleration at time `t`.
     fn state(&self, t: f64) -> (f64, f64, f64) {
         let (mut s, mut v, mut now) = (self.s0, self.v0, 0.0);
@@ -262,6 +283,34 @@ mod tests {
         assert!((t.at(4.0).0 - 55.0).abs() < TOL);
         assert!((t.at(5.0).0 - 75.0).abs() < TOL);
         assert!((t.at(5.0).1 - 20.0).abs() < TOL);
+    }
+
+    #[test]
+    fn acceleration_pieces_split_where_a_change_starts_or_ends() {
+        // 10 m/s; 2 m/s² over 1-3 s, then holding: over (0, 4) the pieces 0, 2, 0 m/s².
+        let mut t = Track::new(0.0, 10.0, -1);
+        t.ramp(1.0, 3.0, 14.0);
+        let p = t.acceleration_pieces(0.0, 4.0).unwrap_or_default();
+        let want = [(0.0, 1.0, 0.0), (1.0, 3.0, 2.0), (3.0, 4.0, 0.0)];
+        assert_eq!(p.len(), 3, "{p:?}");
+        for (got, want) in p.iter().zip(want) {
+            assert!(
+                (got.0 - want.0).abs() < TOL
+                    && (got.1 - want.1).abs() < TOL
+                    && (got.2 - want.2).abs() < TOL,
+                "{p:?}"
+            );
+        }
+        // A sinusoidal change from 5 s has no one acceleration; a step at 6 s none at all.
+        t.sine(5.0, 7.0, 20.0);
+        assert_eq!(t.acceleration_pieces(4.0, 8.0), Err(5.0));
+        let mut s = Track::new(0.0, 10.0, -1);
+        s.ramp(6.0, 6.0, 0.0);
+        assert_eq!(s.acceleration_pieces(4.0, 8.0), Err(6.0));
+        assert!(
+            s.acceleration_pieces(6.0, 8.0).is_ok(),
+            "a step at the start is before it"
+        );
     }
 
     #[test]

@@ -223,7 +223,7 @@ impl Planner<'_> {
                         check_speed(m, v1)?;
                         // With acceleration(a): the change at that rate, done within the phase.
                         let rate = match mods.iter().find(|q| q.kind == ModKind::Acceleration) {
-                            Some(q) => Some((q, self.acceleration_value(q)?.abs())),
+                            Some(q) => Some((q, self.acceleration_value(q, (t, len))?.abs())),
                             None => None,
                         };
                         let (action, ramp) = match rate {
@@ -284,7 +284,7 @@ impl Planner<'_> {
                             continue;
                         }
                         let (t, len) = need_len("acceleration(…)")?;
-                        let a = self.acceleration_value(m)?;
+                        let a = self.acceleration_value(m, (t, len))?;
                         check_accel(m, a)?;
                         let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
                         let v1 = v0 + a * len;

@@ -148,15 +148,64 @@ impl Planner<'_> {
         }
     }
 
-    /// The acceleration of an `acceleration(a)` modifier (m/s²).
-    pub(super) fn acceleration_value(&self, m: &Modifier) -> Result<f64, Error> {
-        match m.arg("acceleration") {
-            Some(e) => e.number(),
-            None => Err(m.site.err(
-                K::Modifier,
-                "expected an acceleration in acceleration(…), found none (relative forms are not planned yet)",
-            )),
-        }
+    /// The acceleration of an `acceleration(…)` modifier over the phase `(t0, len)` (m/s²):
+    /// `a` itself, or relative to x's acceleration as x's planned track has it (§8.9: the
+    /// actor's acceleration relative to x's): `faster_than: x` x's + a, `slower_than: x`
+    /// x's − a, `same_as: x` x's. x's is its value as the phase starts (`at: start`), as it
+    /// ends (`at: end`), or the one it keeps over the whole phase (`at: all`, the default;
+    /// an error where x's changes within the phase, or the phase starts at run time).
+    pub(super) fn acceleration_value(
+        &self,
+        m: &Modifier,
+        (t0, len): (Option<f64>, f64),
+    ) -> Result<f64, Error> {
+        let own = m.arg("acceleration").map(Arg::number).transpose()?;
+        let relative = [
+            ("faster_than", 1.0),
+            ("slower_than", -1.0),
+            ("same_as", 0.0),
+        ]
+        .into_iter()
+        .find_map(|(key, sign)| m.arg(key).map(|e| (e, sign)));
+        let Some((e, sign)) = relative else {
+            return own.ok_or_else(|| {
+                m.site.err(
+                    K::Modifier,
+                    "expected an acceleration (or faster_than/slower_than/same_as) in acceleration(…), found none",
+                )
+            });
+        };
+        let x = self.entity_of(e)?;
+        let Some(t) = t0 else {
+            return Err(e.site.err(
+                K::Unsatisfiable,
+                format!("expected a phase start the plan knows for an acceleration relative to `{x}`, found one after a run-time condition (the plan does not know where `{x}`'s planned track then is)"),
+            ));
+        };
+        let pieces = self.track(&x).acceleration_pieces(t, t + len).map_err(|at| {
+            e.site.err(
+                K::Unsatisfiable,
+                format!("expected `{x}`'s planned acceleration constant over each part of the phase, found it changing continuously (or a step of speed) from {at:.2} s"),
+            )
+        })?;
+        let (first, last) = match (pieces.first(), pieces.last()) {
+            (Some(f), Some(l)) => (f.2, l.2),
+            _ => (0.0, 0.0),
+        };
+        let ax = match m.at {
+            At::Start => first,
+            At::End => last,
+            At::All => {
+                if let Some(p) = pieces.iter().find(|p| (p.2 - first).abs() > 1e-9) {
+                    return Err(e.site.err(
+                        K::Unsatisfiable,
+                        format!("expected `{x}`'s planned acceleration constant over the phase for acceleration(…) at: all, found it changing from {first:.2} m/s² to {:.2} m/s² at {:.2} s (give at: start or at: end)", p.2, p.0),
+                    ));
+                }
+                first
+            }
+        };
+        Ok(ax + sign * own.unwrap_or(0.0))
     }
 
     pub(super) fn entity_of(&self, e: &Arg) -> Result<String, Error> {

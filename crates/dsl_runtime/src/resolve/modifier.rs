@@ -249,7 +249,7 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
 
 /// Rejects argument combinations where one argument would go unread: two references (or a
 /// distance and a time) where the planner takes one, `side` without `side_of`, `from` or an
-/// explicit lane number beside `same_as`, and the relative forms of `acceleration`.
+/// explicit lane number beside `same_as`.
 fn check_combination(ctx: &Eval<'_>, name: &str, args: &[(String, &Expr)]) -> Result<(), Error> {
     let has = |n: &str| args.iter().find(|(a, _)| a == n).map(|(_, e)| *e);
     let refs: Vec<&str> = [
@@ -302,15 +302,6 @@ fn check_combination(ctx: &Eval<'_>, name: &str, args: &[(String, &Expr)]) -> Re
                 K::Modifier,
                 e.span,
                 "expected no lane number beside same_as: in lane(…) (the lane is the other object's), found one",
-            ));
-        }
-    }
-    if name == "acceleration" {
-        if let Some(r) = refs.first().and_then(|r| has(r)) {
-            return Err(ctx.files.err(
-                K::Unsupported,
-                r.span,
-                "expected acceleration(a) (an absolute rate), found a relative form (faster_than, slower_than, same_as: not planned yet)",
             ));
         }
     }

@@ -170,11 +170,6 @@ fn arguments_the_planner_would_not_read_are_errors() {
         "expected from: in lane(…) without a reference object",
         "7:49",
     );
-    refused(
-        "err_acceleration_relative",
-        "expected acceleration(a) (an absolute rate), found a relative form",
-        "7:42",
-    );
 }
 
 #[test]

@@ -6,7 +6,7 @@
 
 use std::f64::consts::PI;
 
-use crate::support::{run, stepped};
+use crate::support::{error, run, stepped};
 
 /// Speeds are closed forms the engine evaluates at the step times; distances sums of a few
 /// hundred of them.
@@ -216,4 +216,52 @@ fn move_changes_speed_as_its_modifiers_say() {
     close(r.at(3.0, "ego").s, 20.0 + stepped(v, 0.0, 3.0), "s(3)");
     assert_eq!(r.at(3.0, "ego").lane, -2);
     assert_eq!(r.phase("do"), (0.0, 3.0));
+}
+
+/// §8.9 acceleration(…, faster_than/slower_than: x): the actor's acceleration relative to x's
+/// planned one (acceleration_relative.osc's comment: 10 -> 19 m/s at 3 m/s² over 0-3 s, 19 ->
+/// 15 m/s at −1 m/s² over 3-7 s, 15 -> 23 m/s at 4 m/s² over 7-9 s, by hand).
+#[test]
+fn acceleration_relative_to_another_actor_follows_its_planned_acceleration() {
+    let r = run("acceleration_relative", 0, None);
+    let v = |t: f64| {
+        if t <= 3.0 {
+            10.0 + 3.0 * t
+        } else if t <= 7.0 {
+            19.0 - (t - 3.0)
+        } else {
+            15.0 + 4.0 * (t.min(9.0) - 7.0)
+        }
+    };
+    close(r.at(1.5, "ego").speed, 14.5, "v(1.5)");
+    close(r.at(3.0, "ego").speed, 19.0, "v(3)");
+    close(r.at(5.0, "ego").speed, 17.0, "v(5)");
+    close(r.at(7.0, "ego").speed, 15.0, "v(7)");
+    close(r.at(5.0, "npc").speed, 10.0, "npc v(5)");
+    // The exact integrals 93.5 m and 161.5 m plus the step lead: 3 m/s² · 3 s · dt/2, then
+    // −1 m/s² · 4 s · dt/2.
+    close(stepped(v, 0.0, 3.0), 43.5 + 0.225, "hand sum to 3 s");
+    close(stepped(v, 0.0, 7.0), 111.5 + 0.225 - 0.1, "hand sum to 7 s");
+    close(r.at(3.0, "ego").s, 50.0 + stepped(v, 0.0, 3.0), "s(3)");
+    close(r.at(7.0, "ego").s, 50.0 + stepped(v, 0.0, 7.0), "s(7)");
+    close(r.at(8.0, "ego").speed, 19.0, "v(8)");
+    close(r.at(9.0, "ego").speed, 23.0, "v(9)");
+    close(r.at(8.5, "npc").speed, 14.0, "npc v(8.5)");
+    // + 4 m/s² · 2 s · dt/2 = 0.2 m.
+    close(
+        stepped(v, 0.0, 9.0),
+        149.5 + 0.225 - 0.1 + 0.2,
+        "hand sum to 9 s",
+    );
+    close(r.at(9.0, "ego").s, 50.0 + stepped(v, 0.0, 9.0), "s(9)");
+}
+
+#[test]
+fn acceleration_the_same_as_one_that_changes_in_the_phase_is_an_error() {
+    let e = error("err_acceleration_relative_changing");
+    assert!(
+        e.contains("expected `npc`'s planned acceleration constant over the phase for acceleration(…) at: all, found it changing from -3.00 m/s² to 0.00 m/s² at 5.00 s")
+            && e.contains("err_acceleration_relative_changing.osc:22:39"),
+        "{e}"
+    );
 }
