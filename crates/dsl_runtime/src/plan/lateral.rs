@@ -15,8 +15,11 @@
 //! from the left border, +1 from the right one, ±1 for `side` from the centre.
 //!
 //! The reference point must stay in the lane (|o| ≤ W/2), else the constraint is unsatisfiable.
-//! `closest` (the library's default) needs a second object to be defined and `distance_range`
-//! is not declared by the library: both are errors.
+//! `closest` (the library's default; §8.9.22 "closest lateral distance between object and
+//! physical_object") measures from the lane's border nearest to the actor to the actor's side
+//! facing it, so d ≤ (W − w)/2 (d = (W − w)/2 centres the actor); `side` names that border (o =
+//! ±((W − w)/2 − d)), required unless d centres the actor. `distance_range` is not declared by
+//! the library (an error).
 //!
 //! Relative to another actor x (`side_of: x, side: …`, `left_of: x`, `right_of: x`) the
 //! distance is measured in t from a line of x to a line of the actor, the actor on the given
@@ -45,10 +48,13 @@ pub(crate) fn lane_offset(m: &Modifier, lane_width: f64, width: f64) -> Result<f
         }
     }
     let (d, measure) = distance_and_measure(m)?;
+    if measure == "closest" {
+        return closest_to_border(m, d, lane_width, width);
+    }
     let Some((actor, lane)) = measure.split_once("_to_") else {
         return Err(m.site.err(
-            K::Unsupported,
-            format!("expected measure_by naming a side of the actor and a line of its lane (left_to_left, right_to_right, center_to_center …), found {measure} (it needs a reference object)"),
+            K::Modifier,
+            format!("expected measure_by naming a side of the actor and a line of its lane (left_to_left, right_to_right, center_to_center …), found {measure}"),
         ));
     };
     let a = match actor {
@@ -78,6 +84,37 @@ pub(crate) fn lane_offset(m: &Modifier, lane_width: f64, width: f64) -> Result<f
         ));
     }
     Ok(o)
+}
+
+/// The offset of `lateral(d, measure_by: closest, side: …)` without a reference: the closest
+/// lateral distance between the actor and its lane's borders is d, from the border on `side`
+/// (module doc). Without `side` the actor may be either side of the centre, unless d puts it
+/// on the centre; d larger than that is no closest distance (the actor would be nearer the
+/// other border).
+fn closest_to_border(m: &Modifier, d: f64, lane_width: f64, width: f64) -> Result<f64, Error> {
+    // The gap to each border when the actor is centred.
+    let centred = (lane_width - width) / 2.0;
+    if d < 0.0 {
+        return Err(m.site.err(
+            K::Value,
+            format!("expected a closest distance of 0 m or more in lateral(…, measure_by: closest), found {d} m"),
+        ));
+    }
+    if d > centred + 1e-9 {
+        return Err(m.site.err(
+            K::Unsatisfiable,
+            format!("expected a closest distance of at most {centred:.2} m to a border of the {lane_width:.2} m lane for an actor {width:.2} m wide (centred), found {d} m"),
+        ));
+    }
+    match m.arg("side").map(|e| e.eval()).transpose()? {
+        Some(Val::Enum(s)) if s == "left" => Ok(centred - d),
+        Some(Val::Enum(s)) if s == "right" => Ok(d - centred),
+        _ if (centred - d).abs() <= 1e-9 => Ok(0.0),
+        _ => Err(m.site.err(
+            K::Modifier,
+            format!("expected side: left or right in lateral({d} m, measure_by: closest) without a reference object (which border of the lane the actor is closest to), found none"),
+        )),
+    }
 }
 
 /// The reference actor of a `lateral(…)` and the side the actor is on (+1 left, −1 right), if

@@ -19,6 +19,34 @@ fn lateral_offsets_at_start_and_end() {
     assert_eq!(r.at(6.0, "ego").lane, -3);
 }
 
+/// measure_by: closest without a reference (lateral_closest.osc's comment, by hand).
+#[test]
+fn lateral_closest_to_a_lane_border_without_a_reference() {
+    let r = run("lateral_closest", 0, None);
+    let y = |t: f64| r.at(t, "ego").y;
+    for (t, want) in [
+        (0.0, -9.25),
+        (2.0, -9.25),
+        (4.0, -9.0),
+        (6.0, -8.75),
+        (7.0, -8.625),
+        (8.0, -8.5),
+    ] {
+        assert!((y(t) - want).abs() < Y_TOL, "y({t}) = {} vs {want}", y(t));
+    }
+    assert_eq!(r.at(8.0, "ego").lane, -3);
+    crate::along::refused(
+        "err_lateral_closest_side",
+        "expected side: left or right in lateral(0.5 m, measure_by: closest) without a reference object (which border of the lane the actor is closest to), found none",
+        "11:9",
+    );
+    crate::along::refused(
+        "err_lateral_closest_far",
+        "expected a closest distance of at most 0.75 m to a border of the 3.50 m lane for an actor 2.00 m wide (centred), found 1 m",
+        "11:9",
+    );
+}
+
 #[test]
 fn lateral_at_end_with_a_lane_change() {
     let r = run("lateral_lane_change", 0, None);
