@@ -26,10 +26,10 @@ use std::sync::Arc;
 use scenario::{
     Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
     EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup, MiscObject,
-    MiscObjectCategory, Pedestrian, PedestrianCategory, Performance, Position, PositionKind,
-    Priority, Private, PrivateAction, Properties, RoadNetwork, Route, RouteStrategy, RoutingAction,
-    Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard, TransitionDynamics,
-    Trigger, UserDefinedAction, Vehicle, Waypoint,
+    MiscObjectCategory, Orientation, Pedestrian, PedestrianCategory, Performance, Position,
+    PositionKind, Priority, Private, PrivateAction, Properties, ReferenceContext, RoadNetwork,
+    Route, RouteStrategy, RoutingAction, Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget,
+    Story, Storyboard, TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
 };
 
 use crate::plan::{Entity, HandlerPlan, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
@@ -91,7 +91,13 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
                         lane_id: lane.to_string(),
                         s,
                         offset: Some(e.track.offset(0.0)),
-                        orientation: None,
+                        // §8.9.9 yaw relative to the road (s-axis): relative to the lane.
+                        orientation: e.yaw.as_ref().map(|(h, _)| Orientation {
+                            h: *h,
+                            p: 0.0,
+                            r: 0.0,
+                            reference: Some(ReferenceContext::Relative),
+                        }),
                     },
                     pos: origin.clone(),
                 })),

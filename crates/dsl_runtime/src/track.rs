@@ -248,6 +248,20 @@ impl Track {
         });
     }
 
+    /// Whether the actor stands throughout: no speed at the start, no change of speed to
+    /// anything but 0, no jump, lane change or sideways movement.
+    pub(crate) fn stands(&self) -> bool {
+        let still = |r: &Stretch| match r.shape {
+            Shape::Linear { v1, .. } | Shape::Step { v1 } => v1 == 0.0,
+            Shape::Poly { .. } | Shape::Sine { .. } => false,
+        };
+        self.v0 == 0.0
+            && self.stretches.iter().all(still)
+            && self.jumps.is_empty()
+            && self.moves.is_empty()
+            && self.lanes.len() == 1
+    }
+
     /// The lane at time `t`.
     pub(crate) fn lane(&self, t: f64) -> i32 {
         self.lanes
@@ -311,6 +325,19 @@ mod tests {
             s.acceleration_pieces(6.0, 8.0).is_ok(),
             "a step at the start is before it"
         );
+    }
+
+    #[test]
+    fn standing_is_no_speed_and_no_move() {
+        let mut t = Track::new(0.0, 0.0, -1);
+        t.ramp(1.0, 1.0, 0.0);
+        assert!(t.stands());
+        t.ramp(2.0, 3.0, 1.0);
+        assert!(!t.stands(), "a ramp to 1 m/s");
+        let mut t = Track::new(0.0, 0.0, -1);
+        t.set_lane(2.0, -2);
+        assert!(!t.stands(), "a lane change");
+        assert!(!Track::new(0.0, 5.0, -1).stands(), "5 m/s at the start");
     }
 
     #[test]

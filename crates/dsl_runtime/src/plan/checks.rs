@@ -2,7 +2,7 @@
 //! OpenSCENARIO DSL 2.1 §8.9 `keep_lane`, `keep_speed`, `keep_position`, `physical_movement`,
 //! `yaw`, `orientation`).
 
-use crate::error::{Error, ErrorKind as K};
+use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{At, ModKind, Modifier, Val};
 
 /// Checks `keep_lane()`, `keep_speed()` and `physical_movement(must_be_physical)` against the
@@ -94,15 +94,25 @@ pub(crate) fn check_keeps(
     Ok(())
 }
 
-/// Checks `yaw(…)` and `orientation(…)` (§8.9 yaw, orientation) against the plan's motion: the
-/// engine's vehicles drive along their lane's centre line (or at a constant offset from it), so
-/// their yaw, pitch and roll relative to the road are 0 except while they change lane or lane
-/// offset, and 0 again when such a change ends (the sinusoidal shape ends with no lateral
-/// speed). A zero angle relative to the road (the default measure) therefore holds at the
-/// start and end of every phase, and throughout one without a lane change or a
-/// `lateral(…, at: end)`; anything else is an error: a non-zero angle, an angle relative to
-/// another object, to north, or absolute, which the planner does not steer.
-pub(crate) fn check_orientation(mods: &[Modifier]) -> Result<(), Error> {
+/// Checks `yaw(…)` and `orientation(…)` (§8.9.9 yaw, §8.9.10 orientation) against the plan's
+/// motion: the engine's vehicles drive along their lane's centre line (or at a constant offset
+/// from it), so their yaw, pitch and roll relative to the road are 0 except while they change
+/// lane or lane offset, and 0 again when such a change ends (the sinusoidal shape ends with no
+/// lateral speed). A zero angle relative to the road (the default measure) therefore holds at
+/// the start and end of every phase, and throughout one without a lane change or a
+/// `lateral(…, at: end)`. A yaw other than 0 is the actor's from the run's start when it is
+/// asked in the actor's `first` phase (the Init places it so; `plan` checks that the actor
+/// stands throughout the run, the one case in which it keeps that yaw physically); `planned`
+/// is the yaw the actor has (0, or the first phase's), which a later phase must ask for.
+/// Anything else is an error: another yaw, a pitch or roll other than 0, an angle relative to
+/// another object, to north, or absolute, which the planner does not steer. Returns the yaw
+/// and its place when the first phase asks for one other than 0.
+pub(crate) fn check_orientation(
+    mods: &[Modifier],
+    planned: f64,
+    first: bool,
+) -> Result<Option<(f64, Site)>, Error> {
+    let mut asked = None;
     /// Angles within this of 0 are 0 (rad): a thousandth of a degree.
     const ZERO: f64 = 1e-3 * std::f64::consts::PI / 180.0;
     for m in mods.iter().filter(|m| m.kind == ModKind::Orientation) {
@@ -134,12 +144,25 @@ pub(crate) fn check_orientation(mods: &[Modifier]) -> Result<(), Error> {
         for a in angles {
             if let Some(e) = m.arg(a) {
                 let x = e.number()?;
-                if x.abs() > ZERO {
-                    return Err(e.site.err(
-                        K::Unsatisfiable,
-                        format!("expected {a} 0 relative to the road (the engine's vehicles drive along their lane), found {x:.4} rad"),
-                    ));
+                let is_yaw = matches!(*a, "angle" | "yaw");
+                let want = if is_yaw { planned } else { 0.0 };
+                if (x - want).abs() <= ZERO {
+                    continue;
                 }
+                if is_yaw && first && planned.abs() <= ZERO {
+                    asked = Some((x, e.site.clone()));
+                    continue;
+                }
+                return Err(e.site.err(
+                    K::Unsatisfiable,
+                    if is_yaw && planned.abs() > ZERO {
+                        format!("expected {a} {planned:.4} rad relative to the road (the yaw the actor stands at from its first phase), found {x:.4} rad")
+                    } else if is_yaw {
+                        format!("expected {a} 0 relative to the road (the engine's vehicles drive along their lane; another yaw is planned only in an actor's first phase, for an actor that stands throughout the run), found {x:.4} rad")
+                    } else {
+                        format!("expected {a} 0 relative to the road (the engine's vehicles drive along their lane), found {x:.4} rad")
+                    },
+                ));
             }
         }
         if m.at == At::All {
@@ -154,5 +177,5 @@ pub(crate) fn check_orientation(mods: &[Modifier]) -> Result<(), Error> {
             }
         }
     }
-    Ok(())
+    Ok(asked)
 }

@@ -80,7 +80,11 @@ impl Planner<'_> {
                 ));
             }
             check_keeps(mods, step)?;
-            check_orientation(mods)?;
+            let e = self.index[target.as_str()];
+            let planned = self.entities[e].yaw.as_ref().map_or(0.0, |(y, _)| *y);
+            if let Some(y) = check_orientation(mods, planned, first)? {
+                self.entities[e].yaw = Some(y);
+            }
             self.check_avoid_collisions(inv, mods, target)?;
             // keep_position() in a later phase: the vehicle must stand when it starts.
             if let Some(k) = mods.iter().find(|m| m.kind == ModKind::KeepPosition) {

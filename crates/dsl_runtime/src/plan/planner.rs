@@ -136,6 +136,7 @@ impl Planner<'_> {
                     name: n.clone(),
                     data,
                     track: Track::new(0.0, 0.0, -1),
+                    yaw: None,
                 });
             }
             names.push(n);

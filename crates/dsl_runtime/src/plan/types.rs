@@ -145,6 +145,10 @@ pub(crate) struct Entity {
     pub data: ActorData,
     /// Planned motion.
     pub track: Track,
+    /// Its yaw relative to the road's s-axis from the start (rad) and the `yaw(…)` or
+    /// `orientation(…)` that asks for it in its first phase, when other than 0 (§8.9.9; the
+    /// actor stands throughout the run).
+    pub yaw: Option<(f64, Site)>,
 }
 
 /// The whole plan.

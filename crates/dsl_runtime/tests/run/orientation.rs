@@ -1,5 +1,5 @@
 //! `yaw(…)` and `orientation(…)` relative to the road: zero angles hold where the vehicle does
-//! not move sideways; other forms are errors. Expectations in the scenario files.
+//! not move sideways, another yaw where the actor stands; other forms are errors. Expectations in the scenario files.
 
 use crate::along::refused;
 use crate::support::run;
@@ -29,12 +29,33 @@ fn orientations_the_planner_does_not_steer_are_errors() {
     );
     refused(
         "err_yaw_angle",
-        "expected angle 0 relative to the road (the engine's vehicles drive along their lane), found 0.0873 rad",
-        "6:13",
+        "expected `ego` standing throughout the run with a yaw of 0.0873 rad relative to the road, found it moving",
+        "7:13",
+    );
+    refused(
+        "err_yaw_later",
+        "expected yaw 0.5236 rad relative to the road (the yaw the actor stands at from its first phase), found 0.1745 rad",
+        "14:30",
     );
     refused(
         "err_orientation_relative",
         "expected orientation(…) relative to the road, found relative_to:",
         "7:45",
     );
+}
+
+/// A standing actor keeps a yaw other than 0 relative to the road (yaw_parked.osc's comment).
+#[test]
+fn a_standing_actor_keeps_its_yaw_relative_to_the_road() {
+    let r = run("yaw_parked", 0, None);
+    let yaw = std::f64::consts::PI / 6.0;
+    for t in [0.0, 3.0, 6.0] {
+        let npc = r.at(t, "npc");
+        assert!((npc.h - yaw).abs() < H_TOL, "heading {} at {t} s", npc.h);
+        assert!(
+            (npc.x - 100.0).abs() < H_TOL && (npc.y + 5.25).abs() < H_TOL,
+            "{npc:?}"
+        );
+        assert!(r.at(t, "ego").h.abs() < H_TOL);
+    }
 }
