@@ -199,12 +199,8 @@ pub fn to_csv(items: &[ItemCoverage]) -> String {
 
 /// The bucket definitions a `coverage.csv` lists (its hits are recounted, not read).
 pub fn definitions_from_csv(text: &str, file: &str) -> Result<Vec<CoverDef>, Error> {
-    let err = |line: usize, expected: &str, found: &str| CsvErrorKind {
-        file: file.to_owned(),
-        line,
-        expected: expected.to_owned(),
-        found: found.to_owned(),
-    };
+    let err =
+        |line: usize, expected: &str, found: &str| CsvErrorKind::at(file, line, expected, found);
     let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l));
     match lines.next() {
         Some((_, "item,bucket,low,high,hits")) => {}

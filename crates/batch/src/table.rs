@@ -261,11 +261,8 @@ impl Table {
     /// Reads the CSV text of a table (as [`Table::to_csv`] writes it); `file` names it in
     /// errors.
     pub fn from_csv(text: &str, file: &str) -> Result<Table, Error> {
-        let err = |line: usize, expected: &str, found: &str| CsvErrorKind {
-            file: file.to_owned(),
-            line,
-            expected: expected.to_owned(),
-            found: found.to_owned(),
+        let err = |line: usize, expected: &str, found: &str| {
+            CsvErrorKind::at(file, line, expected, found)
         };
         let mut lines = text.lines().enumerate().map(|(i, l)| (i + 1, l));
         let (_, header) = lines

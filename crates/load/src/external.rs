@@ -142,12 +142,20 @@ impl fmt::Display for HostError {
 
 impl std::error::Error for HostError {}
 
-/// A method read in a condition: the user-defined value's name, the method, its arguments.
-#[derive(Debug, Clone)]
+/// A method read in a condition: the user-defined value's name, the method, its arguments and
+/// the function bound to it (found once, when the host is made).
+#[derive(Clone)]
 struct Read {
     value: String,
     method: String,
     args: Vec<Json>,
+    function: ExternalFn,
+}
+
+impl fmt::Debug for Read {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} = {}", self.value, self.method)
+    }
 }
 
 /// The name and the JSON arguments of a call's text `m(a, b)`.
@@ -177,10 +185,13 @@ impl Host {
                 let value = c.value.clone()?;
                 // The runtime writes the value's name as `m(args as JSON values)`.
                 let (_, args) = parse_call(&value)?;
+                // `check` above: every method is bound.
+                let function = Arc::clone(bindings.fns.get(&c.method)?);
                 Some(Read {
                     method: c.method.clone(),
                     value,
                     args,
+                    function,
                 })
             })
             .collect();
@@ -194,16 +205,12 @@ impl Host {
     pub fn before_step(&self, engine: &mut Engine) -> Result<(), ExternalError> {
         let time = engine.time();
         for r in &self.reads {
-            // `new` checked that every method is bound.
-            let Some(f) = self.bindings.fns.get(&r.method) else {
-                continue;
-            };
             let fail = |message: String| ExternalError {
                 method: r.method.clone(),
                 time,
                 message,
             };
-            let value = match f(&r.args).map_err(fail)? {
+            let value = match (r.function)(&r.args).map_err(fail)? {
                 Json::Number(n) => Value::Double(n.as_f64().unwrap_or(f64::NAN)),
                 Json::Bool(b) => Value::Bool(b),
                 Json::String(s) => Value::String(s),

@@ -13,3 +13,15 @@ pub struct CsvErrorKind {
     /// What was found.
     pub found: String,
 }
+
+impl CsvErrorKind {
+    /// The error at `line` of `file`: `expected`, `found` instead.
+    pub fn at(file: &str, line: usize, expected: &str, found: &str) -> CsvErrorKind {
+        CsvErrorKind {
+            file: file.to_owned(),
+            line,
+            expected: expected.to_owned(),
+            found: found.to_owned(),
+        }
+    }
+}
