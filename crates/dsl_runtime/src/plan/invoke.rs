@@ -10,7 +10,8 @@ use scenario::{
 use super::checks::{check_keeps, check_orientation};
 use super::lateral;
 use super::motion::{
-    check_accel, check_speed, end_speed_mod, holds_speed, lane_change, lateral_end, speed_action,
+    check_accel, check_speed, end_speed_mod, holds_speed, lane_change, lateral_end,
+    sinusoidal_over, speed_action,
 };
 use super::planner::Planner;
 use super::route::{self, OnRoute};
@@ -486,15 +487,7 @@ impl Planner<'_> {
                         let (target_lane, planned) = self.lane_target(m, target, t, len)?;
                         // lateral(…, at: end): the offset in the target lane.
                         let offset = match (lateral_end(mods), planned) {
-                            (Some(q), Some(l)) => {
-                                let s_end = t.map_or(0.0, |t| self.s_at(target, t + len));
-                                let w = self.width(target);
-                                Some(lateral::lane_offset(
-                                    q,
-                                    self.road.lane_width(l, s_end),
-                                    w,
-                                )?)
-                            }
+                            (Some(q), Some(l)) => Some(self.end_offset_in(q, target, l, t, len)?),
                             (Some(q), None) => {
                                 return Err(q.site.err(
                                     K::Unsatisfiable,
@@ -509,12 +502,7 @@ impl Planner<'_> {
                             name: name("lane"),
                             action: PrivateAction::Lateral(LateralAction::LaneChange {
                                 target_lane_offset: offset,
-                                dynamics: TransitionDynamics {
-                                    dynamics_shape: DynamicsShape::Sinusoidal,
-                                    dynamics_dimension: DynamicsDimension::Time,
-                                    value: len,
-                                    following_mode: None,
-                                },
+                                dynamics: sinusoidal_over(len),
                                 target: target_lane,
                             }),
                             site: m.site.clone(),
@@ -595,6 +583,11 @@ impl Planner<'_> {
                             continue;
                         }
                         let (t, len) = need_len("a lateral position at the phase end")?;
+                        // Beside another actor: where the plan has it at the phase end.
+                        if lateral::reference(m)?.is_some() {
+                            self.plan_beside_end(m, target, (t, len), name("lateral"), out)?;
+                            continue;
+                        }
                         let Some(t) = t else {
                             // After a run-time start the offset the actor starts from is the
                             // engine's: a change over the phase within its own lane.

@@ -30,8 +30,8 @@
 //! form places the actor at the start of the run (its first phase); `at: all` then holds while
 //! neither actor moves sideways (checked by the planner). At the start of a later phase it is
 //! checked (against the plan's tracks at a known start, by the engine after a run-time one);
-//! `at: end` is not planned (an error: OpenSCENARIO 1.x's LateralDistanceAction, the engine's
-//! action for a lateral distance, has no duration to end the phase's motion with). `same_as` (the same t) is an error: two vehicles cannot share it.
+//! `at: end` is a lateral target where the plan has x at the phase end (`lateral_end`).
+//! `same_as` (the same t) is an error: two vehicles cannot share it.
 
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Modifier, Val};
@@ -43,7 +43,7 @@ pub(crate) fn lane_offset(m: &Modifier, lane_width: f64, width: f64) -> Result<f
         if let Some(e) = m.arg(key) {
             return Err(e.site.err(
                 K::Unsupported,
-                format!("expected lateral(…) relative to the actor's lane here, found `{key}:` (a lateral distance to another actor is planned at a phase start, not at its end: the engine's LateralDistanceAction has no duration to end the phase's motion with)"),
+                format!("expected lateral(…) relative to the actor's lane here, found `{key}:` (a lateral position beside another actor is planned from where the plan has that actor)"),
             ));
         }
     }

@@ -59,6 +59,7 @@
 //! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
+//! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 use std::cell::RefCell;
@@ -79,6 +80,7 @@ mod gap_actions;
 mod invoke;
 mod lateral;
 mod lateral_actions;
+mod lateral_end;
 mod motion;
 mod path_shape;
 mod place;

@@ -457,6 +457,16 @@ pub(super) fn lateral_end(mods: &[Modifier]) -> Option<&Modifier> {
         .find(|m| m.kind == ModKind::Lateral && m.at == At::End)
 }
 
+/// A sinusoidal transition over `len` s (a lane or offset change that lasts the phase).
+pub(super) fn sinusoidal_over(len: f64) -> TransitionDynamics {
+    TransitionDynamics {
+        dynamics_shape: DynamicsShape::Sinusoidal,
+        dynamics_dimension: DynamicsDimension::Time,
+        value: len,
+        following_mode: None,
+    }
+}
+
 pub(super) fn speed_action(shape: DynamicsShape, time: f64, target: SpeedTarget) -> PrivateAction {
     PrivateAction::Longitudinal(LongitudinalAction::Speed {
         dynamics: TransitionDynamics {

@@ -28,12 +28,12 @@
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    DynamicsDimension, DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction,
-    PrivateAction, SpeedGap, StateCheck, TransitionDynamics, Travel, TravelGoal,
+    LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, SpeedGap, StateCheck,
+    Travel, TravelGoal,
 };
 
 use super::lateral;
-use super::motion::{check_speed, end_speed_mod, holds_speed};
+use super::motion::{check_speed, end_speed_mod, holds_speed, sinusoidal_over};
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
 use super::route::StartOnRoute;
@@ -232,12 +232,7 @@ impl Planner<'_> {
         let o1 = lateral::lane_offset(m, w, self.width(target))?;
         let change = LateralAction::LaneChange {
             target_lane_offset: Some(o1),
-            dynamics: TransitionDynamics {
-                dynamics_shape: DynamicsShape::Sinusoidal,
-                dynamics_dimension: DynamicsDimension::Time,
-                value: len,
-                following_mode: None,
-            },
+            dynamics: sinusoidal_over(len),
             target: LaneChangeTarget::Relative {
                 entity_ref: target.to_string(),
                 value: 0,

@@ -255,9 +255,17 @@ impl Planner<'_> {
     }
 }
 
-/// 1 for an invocation with a `position(…, at: end)` relative to another actor, else 0: the
-/// order in which a parallel plans its members.
+/// 1 for an invocation with a `position(…, at: end)`, or a `lateral(…, at: end)` beside
+/// another actor (read where the plan has that actor at the end), else 0: the order in which
+/// a parallel plans its members.
 fn relative_end(p: &Phase) -> u8 {
-    matches!(&p.kind, Kind::Invoke(inv) if inv.modifiers.iter().any(|m| m.kind == ModKind::Position && m.at == At::End))
+    let relative = |m: &crate::resolve::Modifier| match m.kind {
+        ModKind::Position => true,
+        ModKind::Lateral => ["side_of", "left_of", "right_of"]
+            .iter()
+            .any(|k| m.arg(k).is_some()),
+        _ => false,
+    };
+    matches!(&p.kind, Kind::Invoke(inv) if inv.modifiers.iter().any(|m| m.at == At::End && relative(m)))
         as u8
 }

@@ -88,3 +88,43 @@ fn lateral_beside_another_actor_places_at_the_start() {
         "17:13",
     );
 }
+
+/// lateral(…, left_of: npc, at: end) where the plan has npc at the phase end
+/// (lateral_beside_end.osc's comment, by hand): a lane change into the lane that holds the t
+/// asked while npc changes lanes, then a lane offset in the actor's own lane.
+#[test]
+fn lateral_beside_another_actor_at_the_end_is_where_the_plan_has_it() {
+    let r = run("lateral_beside_end", 0, None);
+    let y = |t: f64, who: &str| r.at(t, who).y;
+    for (t, ego, npc) in [
+        (1.0, -5.25, -8.75),
+        (3.0, -4.0, -7.0),
+        (5.0, -2.75, -5.25),
+        (6.0, -2.25, -5.25),
+        (7.0, -1.75, -5.25),
+    ] {
+        assert!(
+            (y(t, "ego") - ego).abs() < Y_TOL,
+            "ego y({t}) = {} vs {ego}",
+            y(t, "ego")
+        );
+        assert!(
+            (y(t, "npc") - npc).abs() < Y_TOL,
+            "npc y({t}) = {} vs {npc}",
+            y(t, "npc")
+        );
+    }
+    assert_eq!(r.at(5.0, "ego").lane, -1);
+    assert_eq!(r.at(7.0, "ego").lane, -1);
+    let e = crate::support::error("err_lateral_beside_end_runtime");
+    assert!(
+        e.starts_with("expected a phase start the plan knows for lateral(…, at: end) beside `npc`, found one after a run-time condition (the engine's lane change takes a lane relative to `npc` at its start")
+            && e.contains("err_lateral_beside_end_runtime.osc:18:13"),
+        "{e}"
+    );
+    crate::along::refused(
+        "err_lateral_beside_end_lane",
+        "expected `ego`'s reference point in the lane change's target lane -1 (3.50 m wide) at the phase end, found lateral(…) puts it -4.50 m from the lane's centre",
+        "20:13",
+    );
+}

@@ -1,0 +1,145 @@
+//! `lateral(d, side_of/left_of/right_of: x, at: end)` (ASAM OpenSCENARIO DSL 2.1 §8.9
+//! `lateral`, "an actor's lateral position (t-coordinate) relative to the road or another
+//! actor", with `at: end`: the constraint holds at the end of the phase): a lateral target for
+//! the actor at the phase end, where the plan has x then.
+//!
+//! x's t at the phase end is read from x's planned track (its lane and offset then, after any
+//! sideways move x makes in the phase), the actor's t from it as `lateral::beside` says, and
+//! that t becomes the motion `lateral(…, at: end)` without a reference already plans: in the
+//! actor's own lane, a sinusoidal LaneOffsetAction over the phase; in another driving lane, a
+//! sinusoidal LaneChangeAction over the phase into the lane that holds that t, at the offset
+//! from its centre; beside a lane change of the phase (`change_lane`, `lane(…, at: end)`), the
+//! offset in the lane change's target lane, which must hold that t.
+//!
+//! After a run-time start this is an error: the engine's lateral actions (LaneChangeAction,
+//! LaneOffsetAction) take a lane relative to x at their start and an offset from that lane's
+//! centre, but x's offset in its lane and any sideways move of x in the phase are then not
+//! known to the plan, and no engine action follows another actor's t over a duration (1.x's
+//! LateralDistanceAction has none).
+
+use scenario::{DynamicsShape, LaneChangeTarget, LaneOffsetTarget, LateralAction, PrivateAction};
+
+use super::motion::{check_accel, sinusoidal_over};
+use super::planner::Planner;
+use super::types::Planned;
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::Modifier;
+
+/// Peak lateral acceleration of a sinusoidal move of `delta` m over `len` s: π²·|Δ|/(2T²).
+fn peak_acceleration(delta: f64, len: f64) -> f64 {
+    std::f64::consts::PI.powi(2) * delta.abs() / (2.0 * len * len)
+}
+
+impl Planner<'_> {
+    /// t of `target`'s reference point at the phase end `t + len` that `m` (a `lateral(…, at:
+    /// end)` beside another actor) asks for, from x's planned track; `None` when `m` has no
+    /// reference. `t` is the phase start, `None` after a run-time condition (an error).
+    fn beside_end(
+        &self,
+        m: &Modifier,
+        target: &str,
+        t: Option<f64>,
+        len: f64,
+    ) -> Result<Option<f64>, Error> {
+        let Some((x, dt)) = self.beside_gap(m, target)? else {
+            return Ok(None);
+        };
+        let Some(t) = t else {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!("expected a phase start the plan knows for lateral(…, at: end) beside `{x}`, found one after a run-time condition (the engine's lane change takes a lane relative to `{x}` at its start and an offset from that lane's centre, but `{x}`'s offset in its lane and any sideways move of `{x}` in the phase are not known to the plan then, and no engine action follows another actor's t over a duration)"),
+            ));
+        };
+        Ok(Some(self.t_at(&x, t + len) + dt))
+    }
+
+    /// The offset from the centre of `lane` (the target lane of the phase's lane change) at the
+    /// phase end that `m`, a `lateral(…, at: end)`, asks for: in that lane, or beside another
+    /// actor where the plan has it then (the t asked must lie in `lane`).
+    pub(super) fn end_offset_in(
+        &self,
+        m: &Modifier,
+        target: &str,
+        lane: i32,
+        t: Option<f64>,
+        len: f64,
+    ) -> Result<f64, Error> {
+        let s_end = t.map_or(0.0, |t| self.s_at(target, t + len));
+        let w = self.road.lane_width(lane, s_end);
+        let Some(t_a) = self.beside_end(m, target, t, len)? else {
+            return super::lateral::lane_offset(m, w, self.width(target));
+        };
+        let o = t_a - self.road.lane_center(lane, s_end);
+        if o.abs() > w / 2.0 + 1e-9 {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}`'s reference point in the lane change's target lane {lane} ({w:.2} m wide) at the phase end, found lateral(…) puts it {o:.2} m from the lane's centre"),
+            ));
+        }
+        Ok(o)
+    }
+
+    /// Plans `m`, a `lateral(…, at: end)` beside another actor without a lane change in the
+    /// phase, over the phase from `t` (known) to `t + len`, as the action `name`: a lane offset
+    /// in the actor's lane or a lane change into the lane holding the t asked (module doc).
+    /// Without a reference `m` asks for nothing here (it is an offset in the lane).
+    pub(super) fn plan_beside_end(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        (t, len): (Option<f64>, f64),
+        name: String,
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let Some(t_a) = self.beside_end(m, target, t, len)? else {
+            return Ok(());
+        };
+        // beside_end returned a t only for a known start.
+        let t = t.unwrap_or_default();
+        let te = t + len;
+        let s_end = self.s_at(target, te);
+        let lane0 = self.track(target).lane(t);
+        let lane = self.road.lane_holding(s_end, t_a).ok_or_else(|| {
+            m.site.err(
+                K::Unsatisfiable,
+                format!("expected a driving lane at t = {t_a:.2} m (where lateral(…) puts `{target}` at the phase end, s = {s_end:.2} m), found none"),
+            )
+        })?;
+        let o1 = t_a - self.road.lane_center(lane, s_end);
+        check_accel(m, peak_acceleration(t_a - self.t_at(target, t), len))?;
+        let action = if lane == lane0 {
+            let o0 = self.track(target).offset(t);
+            let a = peak_acceleration(o1 - o0, len);
+            if a == 0.0 {
+                None
+            } else {
+                // Given as the action's maximum, the engine's sinusoidal change lasts T.
+                Some(LateralAction::LaneOffset {
+                    continuous: false,
+                    dynamics_shape: DynamicsShape::Sinusoidal,
+                    max_lateral_acc: Some(a),
+                    target: LaneOffsetTarget::Absolute(o1),
+                })
+            }
+        } else {
+            Some(LateralAction::LaneChange {
+                target_lane_offset: Some(o1),
+                dynamics: sinusoidal_over(len),
+                target: LaneChangeTarget::Absolute(lane.to_string()),
+            })
+        };
+        let tr = self.track_mut(target);
+        tr.set_lane(te, lane);
+        tr.set_offset(te, o1);
+        if let Some(action) = action {
+            tr.add_move(t, te);
+            out.push(Planned::with_phase(
+                target,
+                name,
+                PrivateAction::Lateral(action),
+                &m.site,
+            ));
+        }
+        Ok(())
+    }
+}
