@@ -10,8 +10,9 @@
 //! `side: inside` is the side towards the road's centre line and `outside` the side away from
 //! it (right-hand traffic: left and right); `same` is the reference's own lane. A side left out
 //! is drawn from the run's seed among the sides that have the lane, as for the `change_lane()`
-//! modifier. The `target: lane` parameter of both names a lane instance, which the constraint
-//! solver leaves to the runtime (a road-network value): it is an error naming the argument.
+//! modifier. `target: l` of both names a `lane` field, bound to a lane of the plan road
+//! (`lane_fields`): `change_lane` moves into it as a LaneChangeAction with an absolute target
+//! lane, `follow_lane` follows it when the actor is in it.
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -53,7 +54,6 @@ impl Planner<'_> {
             out,
             ..
         } = slot;
-        no_target_lane(inv)?;
         check_lateral_modifiers(inv)?;
         // Where the plan knows the actor: at the phase start, or (after a run-time condition)
         // in the lane it was last planned in.
@@ -67,7 +67,13 @@ impl Planner<'_> {
         let planned = |name: String, action| Planned::with_phase(target, name, action, &p.site);
         match inv.kind {
             Action::ChangeLane => {
-                let (lane_target, lane1) = self.change_lane_target(p, inv, target, t)?;
+                let (lane_target, lane1) = match &inv.lane_target {
+                    Some(f) => {
+                        let l = self.change_lane_field(inv, f, target, lane0, s)?;
+                        (scenario::LaneChangeTarget::Absolute(l.to_string()), Some(l))
+                    }
+                    None => self.change_lane_target(p, inv, target, t)?,
+                };
                 let Some(lane1) = lane1 else {
                     return Err(p.site.err(
                         K::Unsatisfiable,
@@ -96,6 +102,9 @@ impl Planner<'_> {
                 Ok(Some(self.ends(t0, tm.span, &n, p)))
             }
             Action::FollowLane => {
+                if let Some(f) = &inv.lane_target {
+                    self.follow_lane_field(f, target, lane0)?;
+                }
                 let Some(o1) = lane_offset(inv, self.road.lane_width(lane0, s))? else {
                     // Nothing to change: the engine's vehicles follow their lane.
                     return Ok(None);
@@ -256,20 +265,6 @@ impl Planner<'_> {
         };
         // The reference's lane at the action's start (len 0).
         self.lane_target(&m, target, Some(t), 0.0)
-    }
-}
-
-/// `target: lane` names a lane instance the runtime cannot identify.
-fn no_target_lane(inv: &Invoke) -> Result<(), Error> {
-    match arg(&inv.args, "target") {
-        Some(a) => Err(a.site.err(
-            K::Argument,
-            format!(
-                "expected the lane of {}(…) given by num_of_lanes, side and reference, found `target:`, a lane instance (no map method returns a lane, and the solver leaves road-network values to the runtime)",
-                inv.action
-            ),
-        )),
-        None => Ok(()),
     }
 }
 

@@ -57,6 +57,7 @@
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
 //! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
+//! | `lane_fields` | the lane a `lane` field names for `change_lane`/`follow_lane(target: l)`: bound or drawn once |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
@@ -78,6 +79,7 @@ mod checks;
 mod events;
 mod gap_actions;
 mod invoke;
+mod lane_fields;
 mod lateral;
 mod lateral_actions;
 mod lateral_end;
@@ -131,6 +133,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         events: HashMap::new(),
         alongs: HashMap::new(),
         route_lanes: HashMap::new(),
+        lane_roads: HashMap::new(),
         sides: RefCell::new(HashMap::new()),
         beside_checks: Vec::new(),
         draws: RefCell::new(res.draws.clone()),

@@ -43,8 +43,11 @@ pub(crate) struct Planner<'a> {
     pub events: HashMap<String, Vec<EventUse<'a>>>,
     /// Leaf path → its `along(…)` routes, with when each holds.
     pub alongs: HashMap<String, Vec<(At, Along)>>,
-    /// Free one-lane route → its lane and the first actor along it.
+    /// Lane field (a free one-lane route, a `target:` lane) → its lane on the plan road and
+    /// what bound it (`lane_fields`, `route::check`).
     pub route_lanes: HashMap<String, (i32, String)>,
+    /// Lane field the map's modifiers bound → the road of its lane (`map_lanes`).
+    pub lane_roads: HashMap<String, String>,
     /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
     /// the modifier), checked once every phase is planned.
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,

@@ -38,7 +38,7 @@ pub(crate) struct StartOnRoute {
 
 /// Checks that an actor follows `along` in its phase (`at`: when the modifier holds), with
 /// the invocation's other modifiers `mods`. `shared` records, per free one-lane route, the
-/// lane and the first actor found along it. A named route at a phase start the plan does not
+/// lane and what bound it (the first actor found along it, or an earlier use of the field). A named route at a phase start the plan does not
 /// know is returned, for the engine to check there.
 pub(crate) fn check(
     road: &PlanRoad<'_>,
@@ -116,15 +116,18 @@ pub(crate) fn check(
             // After a run-time start: the lane the actor was last planned in.
             let lane = (on.lane)(on.t0.unwrap_or(f64::MAX));
             match shared.get(field) {
-                Some((l, first)) if *l != lane => {
+                Some((l, why)) if *l != lane => {
                     return Err(along.site.err(
                         K::Unsatisfiable,
-                        format!("expected `{actor}` in the lane of {describe} (lane {l}, where `{first}` drives along it), found lane {lane}"),
+                        format!("expected `{actor}` in the lane of {describe} (lane {l}, {why}), found lane {lane}"),
                     ))
                 }
                 Some(_) => {}
                 None => {
-                    shared.insert(field.clone(), (lane, actor.to_string()));
+                    shared.insert(
+                        field.clone(),
+                        (lane, format!("where `{actor}` drives along it")),
+                    );
                 }
             }
         }

@@ -41,7 +41,7 @@ pub(crate) use cond::{Cond, Timed};
 pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
 pub(crate) use position::{Place, PlaceArg};
-pub(crate) use route::{Along, Route};
+pub(crate) use route::{Along, LaneField, Route};
 pub(crate) use tree::{Action, Invoke, Kind, Phase};
 pub(crate) use value::{arg, Arg, Draws, Val};
 

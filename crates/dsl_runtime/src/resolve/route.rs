@@ -208,6 +208,39 @@ fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
     }
 }
 
+/// A `lane` field named by the `target:` of `change_lane`/`follow_lane` (§8.8.3.2, §8.8.3.3):
+/// the solver leaves it to the runtime, which binds it to a lane of the road network (by the
+/// map's modifiers, by `along(…)`, or by a draw at its first use; `crate::plan`).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct LaneField {
+    /// The field's path (`l`): every use of one field is one lane.
+    pub path: String,
+    /// Where the argument is written.
+    pub site: Site,
+}
+
+/// The lane field the argument `a` names (`target: l` with `l: lane`).
+pub(crate) fn lane_field(ctx: &Ctx<'_>, a: &super::value::Arg) -> Result<LaneField, Error> {
+    let ty = a
+        .path
+        .as_ref()
+        .and_then(|p| ctx.lookup(p))
+        .and_then(|(p, v)| match v {
+            Value::RunTime(t) => Some((p, t.clone())),
+            _ => None,
+        });
+    match ty {
+        Some((path, t)) if is_a(ctx, &t, "lane") => Ok(LaneField {
+            path,
+            site: a.site.clone(),
+        }),
+        _ => Err(a.site.err(
+            K::Argument,
+            "expected a lane field (l: lane, bound by the map's modifiers, along(l) or drawn at its first use) in target:, found another expression",
+        )),
+    }
+}
+
 /// A point of a route: road id, lane id, s, and where it is written.
 type RoutePoint = (String, i32, f64, dsl::semantics::hir::Span);
 

@@ -20,6 +20,7 @@ use super::cond::{self, every_args, Cond};
 use super::eval::{Eval, Frame};
 use super::modifier::{self, Modifier};
 use super::position::{self, PlaceArg};
+use super::route::LaneField;
 use super::value::{Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
@@ -78,6 +79,8 @@ pub(crate) struct Invoke {
     /// Its position and orientation arguments, read (`assign_position`, `change_position`,
     /// `assign_orientation`).
     pub places: Vec<PlaceArg>,
+    /// The lane field of `change_lane(target: l)` / `follow_lane(target: l)`.
+    pub lane_target: Option<LaneField>,
     /// Modifiers in order: those written, then those its semantic clarification implies
     /// (`remain_stationary()` is `move() with: keep_position()`, §8.8.2.10).
     pub modifiers: Vec<Modifier>,
@@ -357,6 +360,12 @@ fn build(
             let (kind, params) = action_params(ev, &actor_path, &name.text);
             let places = position::read(ev, kind, args, &params)?;
             let args = ev.args(args, &params);
+            let lane_target = match (kind, super::value::arg(&args, "target")) {
+                (Action::ChangeLane | Action::FollowLane, Some(a)) => {
+                    Some(super::route::lane_field(ev, a)?)
+                }
+                _ => None,
+            };
             let mut duration = None;
             let mut until = None;
             let mut modifiers = Vec::new();
@@ -419,6 +428,7 @@ fn build(
                     kind,
                     args,
                     places,
+                    lane_target,
                     modifiers,
                 }),
                 duration,

@@ -123,8 +123,18 @@ fn a_modifier_that_contradicts_the_action() {
 fn lateral_actions_with_bad_arguments() {
     expect(
         "err_change_lane_target",
-        "5:32",
-        &["expected the lane of change_lane(…) given by num_of_lanes, side and reference, found `target:`"],
+        "6:49",
+        &["expected either target: or num_of_lanes: in change_lane(…) (target: names the lane itself, num_of_lanes: one relative to an actor), found both"],
+    );
+    expect(
+        "err_follow_lane_target",
+        "13:33",
+        &[
+            "at the start of follow_lane(target: l), which follows the lane the actor is in",
+            "found lane -2",
+            "drawn for `l` at ",
+            "err_follow_lane_target.osc:9:33)",
+        ],
     );
     expect(
         "err_change_lane_same",
