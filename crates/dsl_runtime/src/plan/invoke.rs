@@ -178,7 +178,8 @@ impl Planner<'_> {
                                 entity_ref: x,
                                 value: delta,
                                 speed_target_value_type: SpeedTargetValueType::Delta,
-                                continuous: m.at == At::All,
+                                // Projected: x's speed as the action starts, held.
+                                continuous: m.at == At::All && !m.projected,
                             },
                             None => SpeedTarget::Absolute(v),
                         };
@@ -196,8 +197,15 @@ impl Planner<'_> {
                     }
                     (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
                         let (t, len) = need_len("a speed at the phase end")?;
-                        let (v1, relative) = self.speed_value(m, t.map(|t| t + len))?;
+                        let read_at = if m.projected { t } else { t.map(|t| t + len) };
+                        let (v1, relative) = self.speed_value(m, read_at)?;
                         if let (None, Some((x, delta))) = (t, relative) {
+                            if m.projected {
+                                return Err(m.site.err(
+                                    K::Unsupported,
+                                    format!("expected a phase start the plan knows for a speed relative to `{x}` at the end with track: projected, found one after a run-time condition (the engine's relative speed target follows `{x}`'s actual speed)"),
+                                ));
+                            }
                             // After a run-time start x's speed is the engine's: a linear
                             // SpeedAction to x's speed (plus the delta) as the engine reads it
                             // each step, so it ends at x's speed at the phase end.
@@ -339,6 +347,12 @@ impl Planner<'_> {
                                             "expected a distance in position(…, at: end) of a phase without a duration that starts on a run-time condition, found a time or none: the engine's condition that ends the phase measures a fixed distance (give a distance, or the phase a duration)",
                                         ));
                                     }
+                                    if m.projected {
+                                        return Err(m.site.err(
+                                            K::Unsupported,
+                                            "expected a phase duration for position(…, at: end, track: projected) in a phase that starts on a run-time condition, found none (the engine's condition that ends the phase measures the actual gap, not the one to the reference projected from its start)",
+                                        ));
+                                    }
                                     let w = self.gap_reached(m, target, x.as_deref(), sign, d)?;
                                     derived = all_of(derived, Some(w));
                                 }
@@ -365,8 +379,13 @@ impl Planner<'_> {
                                     ));
                                 }
                                 // The phase ends when the engine measures the gap reached
-                                // (the same step an XML trigger on it would fire).
-                                let w = self.gap_reached(m, target, x.as_deref(), sign, d)?;
+                                // (the same step an XML trigger on it would fire); to x
+                                // projected at its start speed, when the plan has it reached.
+                                let w = if m.projected {
+                                    When::At(t + tau)
+                                } else {
+                                    self.gap_reached(m, target, x.as_deref(), sign, d)?
+                                };
                                 derived = Some(match derived {
                                     None => w,
                                     Some(When::Dyn(mut a)) => {
@@ -387,7 +406,8 @@ impl Planner<'_> {
                             }
                             Some(te) => {
                                 let len = te - t;
-                                let s_x = x.as_ref().map_or(0.0, |x| self.s_at(x, te));
+                                let s_x =
+                                    x.as_ref().map_or(0.0, |x| self.reference_s(m, x, (t, te)));
                                 let want = s_x + sign * d;
                                 // The distance to cover along the actor's lane.
                                 let ds = self.road.lane_distance(lane_a, s_a, want);
@@ -401,7 +421,7 @@ impl Planner<'_> {
                                     }
                                     continue;
                                 }
-                                let ve = self.end_speed(ve_given, te, v0)?;
+                                let ve = self.end_speed(ve_given, (t, te), v0)?;
                                 let names = (name("position.1"), name("position.2"));
                                 self.two_halves(m, target, (t, len), (v0, ds, ve), names, out)?;
                             }
@@ -455,7 +475,7 @@ impl Planner<'_> {
                                     }
                                     continue;
                                 }
-                                let ve = self.end_speed(ve_given, te, v0)?;
+                                let ve = self.end_speed(ve_given, (t, te), v0)?;
                                 let names = (name("distance.1"), name("distance.2"));
                                 self.two_halves(m, target, (t, len), (v0, d, ve), names, out)?;
                             }

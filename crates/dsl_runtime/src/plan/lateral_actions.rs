@@ -259,6 +259,7 @@ impl Planner<'_> {
             name: inv.action.clone(),
             at: At::End,
             monotonous: false,
+            projected: false,
             args,
             along: None,
             site: p.site.clone(),

@@ -50,7 +50,18 @@ impl Planner<'_> {
                 format!("expected a phase start the plan knows for lateral(…, at: end) beside `{x}`, found one after a run-time condition (the engine's lane change takes a lane relative to `{x}` at its start and an offset from that lane's centre, but `{x}`'s offset in its lane and any sideways move of `{x}` in the phase are not known to the plan then, and no engine action follows another actor's t over a duration)"),
             ));
         };
-        Ok(Some(self.t_at(&x, t + len) + dt))
+        if !m.projected {
+            return Ok(Some(self.t_at(&x, t + len) + dt));
+        }
+        // Projected (§8.9.1.1.3): x keeps the t it has at the start, which needs it not moving
+        // sideways then (a projection at its lateral speed would leave the road).
+        if let Some(from) = self.track(&x).moving_in(t, t) {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected `{x}` not moving sideways at the phase start for lateral(…, at: end, track: projected), found it moving from {from:.2} s"),
+            ));
+        }
+        Ok(Some(self.t_at(&x, t) + dt))
     }
 
     /// The offset from the centre of `lane` (the target lane of the phase's lane change) at the

@@ -28,7 +28,10 @@
 //! (4·Δs/T − v0 − ve)/2 so that the distance covered is Δs (ve is the phase's end speed: its
 //! `speed(…)`, else v0). `lane(…, at: end)` and `change_lane(n, side)`: a sinusoidal lane change
 //! over the phase. Limits: speeds 0 to 70 m/s, accelerations up to 10 m/s²; beyond them the
-//! constraint is unsatisfiable, an error naming the modifier.
+//! constraint is unsatisfiable, an error naming the modifier. A modifier relative to another
+//! actor x reads x's planned track; with `track: projected` (§8.9.1.1.3) x as projected from
+//! its state at the phase start (its lane, offset and speed then, held): `motion::reference_s`,
+//! `speed_value` read at the start, `lane_target`, `lateral_end`.
 //!
 //! Modifiers that constrain the motion without adding to it are checked against the plan:
 //! `along(r)` (the `route` module: the actor on its route at the phase start and end),

@@ -13,12 +13,33 @@ use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Arg, At, ModKind, Modifier, Val};
 
 impl Planner<'_> {
-    /// The speed at `te` an end-speed modifier asks for, else `v0`.
-    pub(super) fn end_speed(&self, q: Option<&Modifier>, te: f64, v0: f64) -> Result<f64, Error> {
+    /// The speed at the end `te` of a phase that starts at `t` an end-speed modifier asks for
+    /// (a reference's speed then, or with `track: projected` at `t`), else `v0`.
+    pub(super) fn end_speed(
+        &self,
+        q: Option<&Modifier>,
+        (t, te): (f64, f64),
+        v0: f64,
+    ) -> Result<f64, Error> {
         Ok(match q {
-            Some(q) => self.speed_value(q, Some(te))?.0,
+            Some(q) => {
+                self.speed_value(q, Some(if q.projected { t } else { te }))?
+                    .0
+            }
             None => v0,
         })
+    }
+
+    /// s of the reference `x` of `m` at the end `te` of a phase that starts at `t`: where its
+    /// planned track has it, or with `track: projected` (§8.9.1.1.3) where it gets from its
+    /// place at `t` keeping the speed it has then, along its lane.
+    pub(super) fn reference_s(&self, m: &Modifier, x: &str, (t, te): (f64, f64)) -> f64 {
+        if !m.projected {
+            return self.s_at(x, te);
+        }
+        let v = self.track(x).at(t).1;
+        self.road
+            .s_after(self.track(x).lane(t), self.s_at(x, t), v * (te - t))
     }
 
     /// Plans a speed profile of two linear halves over [t, t + len] that covers `ds` (m along
@@ -176,6 +197,12 @@ impl Planner<'_> {
             });
         };
         let x = self.entity_of(e)?;
+        if m.projected {
+            return Err(e.site.err(
+                K::Unsupported,
+                format!("expected track: actual for an acceleration relative to `{x}`, found projected (oscsim projects `{x}` at the speed it has at the phase start, which has no acceleration to be relative to: write acceleration(a))"),
+            ));
+        }
         let Some(t) = t0 else {
             return Err(e.site.err(
                 K::Unsatisfiable,
@@ -386,8 +413,10 @@ impl Planner<'_> {
                         None,
                     ));
                 }
-                let lx = self.track(&x).lane(t + len);
-                let s_end = self.s_at(&x, t + len);
+                // Projected (§8.9.1.1.3): x keeps the lane it has at the start.
+                let tx = if m.projected { t } else { t + len };
+                let lx = self.track(&x).lane(tx);
+                let s_end = self.s_at(&x, tx);
                 let lane = match value {
                     0 => Some(lx),
                     v => self.road.beside(lx, v > 0, v.abs().into(), s_end),

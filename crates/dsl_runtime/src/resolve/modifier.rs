@@ -74,6 +74,9 @@ pub(crate) struct Modifier {
     pub at: At,
     /// `movement_mode: monotonous` (§8.9.1.1): the planned quantity changes in one direction.
     pub monotonous: bool,
+    /// `track: projected` (§8.9.1.1.3): the referenced actor's movement as projected from its
+    /// state at the phase start (see `crate::plan`), not its actual one.
+    pub projected: bool,
     /// Arguments by parameter name.
     pub args: Args,
     /// The route of an `along(…)`.
@@ -88,6 +91,19 @@ impl Modifier {
         arg(&self.args, name)
     }
 }
+
+/// The arguments that name the actor a modifier is relative to (§8.9: `track` is that actor's
+/// movement, actual or projected).
+const REFERENCES: [&str; 8] = [
+    "ahead_of",
+    "behind",
+    "same_as",
+    "faster_than",
+    "slower_than",
+    "side_of",
+    "left_of",
+    "right_of",
+];
 
 /// The modifiers the semantic clarification of `action` (§8.8) implies, named after the action
 /// (written at `site`) so that messages name what the user wrote: `remain_stationary()` is
@@ -105,6 +121,7 @@ pub(crate) fn implied(action: Action, name: &str, site: &Site) -> Vec<Modifier> 
         name: name.to_string(),
         at: At::All,
         monotonous: false,
+        projected: false,
         args: Vec::new(),
         along: None,
         site: site.clone(),
@@ -179,18 +196,23 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
         },
     };
     // The common parameters (§8.9.1.1): `movement_mode` is planned (see `Mod::monotonous`),
-    // `track: actual` is what the engine measures; a projected track and `shape` are not run.
+    // `track` is the referenced actor's (actual, or projected from its state at the phase
+    // start: `Modifier::projected`); `shape` is not run.
     let mut monotonous = false;
+    let mut projected = false;
     for (n, e) in &args {
         match n.as_str() {
             "movement_mode" => {
                 monotonous = matches!(e.eval()?, Val::Enum(m) if m == "monotonous");
             }
-            "track" if !matches!(e.eval()?, Val::Enum(t) if t == "actual") => {
-                return Err(e.site.err(
-                    K::Modifier,
-                    "expected track: actual (the engine plans and measures the actual track), found another track (projected tracks are not run)",
-                ));
+            "track" => {
+                projected = matches!(e.eval()?, Val::Enum(t) if t == "projected");
+                if projected && !REFERENCES.iter().any(|k| arg(&args, k).is_some()) {
+                    return Err(e.site.err(
+                        K::Modifier,
+                        format!("expected track: projected on `{name}(…)` relative to another actor ({}), found no reference (the track is the referenced actor's movement)", REFERENCES.join(", ")),
+                    ));
+                }
             }
             "shape" => {
                 return Err(e.site.err(
@@ -241,6 +263,7 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
         name: name.to_string(),
         at,
         monotonous,
+        projected,
         args,
         along,
         site,

@@ -139,7 +139,6 @@ fn keep_and_physical_modifiers_forbid_what_contradicts_them() {
         "expected no distance planned beside avoid_collisions(true) at ",
         "8:9",
     );
-    refused("err_track_projected", "expected track: actual", "5:29");
 }
 
 #[test]

@@ -20,6 +20,7 @@ mod reuse;
 mod runtime;
 mod speed_actions;
 mod support;
+mod track;
 
 use support::{error, run, DT};
 

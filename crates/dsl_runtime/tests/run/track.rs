@@ -1,0 +1,72 @@
+//! `track: projected` (§8.9.1.1.3): a modifier relative to another actor read against that
+//! actor's movement projected from its state at the phase start, not its actual movement.
+//! Expectations worked by hand in the scenario files.
+
+use crate::along::refused;
+use crate::ramp_lead;
+use crate::support::run;
+
+const S_TOL: f64 = 1e-6;
+const V_TOL: f64 = 1e-9;
+
+/// track_projected.osc: lead brakes 10 -> 5 m/s over 1-5 s; ego keeps 20 m behind lead
+/// projected at 10 m/s (150 m at 5 s), other 20 m behind lead's actual place (140 m).
+#[test]
+fn a_position_behind_a_projected_reference_ignores_its_braking() {
+    let r = run("track_projected", 0, None);
+    let (ego, other, lead) = (
+        |t| r.at(t, "ego"),
+        |t| r.at(t, "other"),
+        |t| r.at(t, "lead"),
+    );
+    // Half way: vm 25 m/s (projected) and 20 m/s (actual); 17.5 and 15 m/s at 2 s.
+    for (t, v_ego, v_other) in [(2.0, 17.5, 15.0), (3.0, 25.0, 20.0), (5.0, 10.0, 10.0)] {
+        assert!(
+            (ego(t).speed - v_ego).abs() < V_TOL,
+            "ego v({t}) = {}",
+            ego(t).speed
+        );
+        assert!(
+            (other(t).speed - v_other).abs() < V_TOL,
+            "other v({t}) = {}",
+            other(t).speed
+        );
+    }
+    // s(3): 95 m and 90 m plus the engine's lead of the first half's ramp.
+    assert!(
+        (ego(3.0).s - (95.0 + ramp_lead(7.5, 2.0))).abs() < S_TOL,
+        "{}",
+        ego(3.0).s
+    );
+    assert!(
+        (other(3.0).s - (90.0 + ramp_lead(5.0, 2.0))).abs() < S_TOL,
+        "{}",
+        other(3.0).s
+    );
+    // At 5 s the second half has undone the lead: 130 m (projected), 120 m (actual); lead at
+    // 140 m less its own ramp's lag.
+    assert!((ego(5.0).s - 130.0).abs() < S_TOL, "{}", ego(5.0).s);
+    assert!((other(5.0).s - 120.0).abs() < S_TOL, "{}", other(5.0).s);
+    let lead5 = 140.0 + ramp_lead(-1.25, 4.0);
+    assert!((lead(5.0).s - lead5).abs() < S_TOL, "{}", lead(5.0).s);
+    assert!((lead(5.0).speed - 5.0).abs() < V_TOL);
+    assert!((ego(6.0).s - 140.0).abs() < S_TOL, "{}", ego(6.0).s);
+    // tail: to lead's speed at the phase start, 8 -> 10 m/s.
+    for (t, v) in [(3.0, 9.0), (5.0, 10.0)] {
+        assert!((r.at(t, "tail").speed - v).abs() < V_TOL, "tail v({t})");
+    }
+}
+
+#[test]
+fn track_projected_without_a_reference_is_an_error() {
+    refused(
+        "err_track_projected",
+        "expected track: projected on `speed(…)` relative to another actor (ahead_of, behind, same_as, faster_than, slower_than, side_of, left_of, right_of), found no reference (the track is the referenced actor's movement)",
+        "5:29",
+    );
+    refused(
+        "err_track_projected_acceleration",
+        "expected track: actual for an acceleration relative to `lead`, found projected (oscsim projects `lead` at the speed it has at the phase start, which has no acceleration to be relative to: write acceleration(a))",
+        "15:35",
+    );
+}
