@@ -69,8 +69,8 @@ fn resolve(args: &ResolveArgs, out: &mut impl Write) -> anyhow::Result<ExitCode>
             }
             Ok(ExitCode::SUCCESS)
         }
-        Err(d) => {
-            write_diagnostics(&d, out)?;
+        Err(e) => {
+            write_diagnostics(e.diagnostics(), out)?;
             Ok(ExitCode::from(1))
         }
     }
@@ -90,9 +90,10 @@ pub fn validate_file(file: &Path, out: &mut impl Write) -> anyhow::Result<bool> 
             )?;
             Ok(true)
         }
-        Err(d) => {
+        Err(e) => {
+            let d = e.diagnostics();
             writeln!(out, "FAIL {} ({} errors)", file.display(), d.items.len())?;
-            write_diagnostics(&d, out)?;
+            write_diagnostics(d, out)?;
             Ok(false)
         }
     }

@@ -30,7 +30,7 @@ pub fn options(
 pub fn show(e: &load::Error) {
     if let load::ErrorKind::Check(d) = e.kind() {
         let mut text = Vec::new();
-        if crate::dsl::write_diagnostics(d, &mut text).is_ok() {
+        if crate::dsl::write_diagnostics(d.diagnostics(), &mut text).is_ok() {
             eprint!("{}", String::from_utf8_lossy(&text));
         }
     }

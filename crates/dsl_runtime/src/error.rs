@@ -1,5 +1,9 @@
-//! Errors of planning and lowering, each with the place in the `.osc` file it is about
-//! (`FILE:LINE:COL`), found before the run starts.
+//! The crate's one error, [`Error`]: a DSL file that does not check or resolve with the seed
+//! (`dsl`'s error, typed), a road network that does not read (`opendrive`'s, typed), or a
+//! scenario that cannot be planned and lowered, with the place in the `.osc` file it is about
+//! (`FILE:LINE:COL`), found before the run starts. Also where each construct is written
+//! ([`Site`], [`Files`]), so the stages after `resolve` report errors without the program's
+//! files.
 
 use std::fmt;
 use std::path::Path;
@@ -9,10 +13,15 @@ use dsl::semantics::hir::Span;
 use dsl::Source;
 use scenario::SourcePos;
 
-/// What went wrong.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// What went wrong: the kinds of [`Error`].
+#[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub enum ErrorKind {
+    /// The file did not pass the language checks, or its constraints have no solution for
+    /// the seed (`dsl`'s error: every error of the file, in source order).
+    Check(dsl::Error),
+    /// The road network could not be read (`opendrive`'s error, with the `.xodr` position).
+    RoadNetwork(opendrive::Error),
     /// The file has no scenario with a `do` to run, or several.
     NoScenario,
     /// An actor expression that names no vehicle of the program.
@@ -36,50 +45,89 @@ pub enum ErrorKind {
     Road,
 }
 
-/// A planning error: what kind, the message, and the place in the `.osc` file.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub struct Error {
+/// An error of checking, planning or lowering a DSL scenario: its kind and, for the planner's
+/// own kinds, the message and the place in the `.osc` file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Error(Box<Inner>);
+
+#[derive(Debug, Clone, PartialEq)]
+struct Inner {
     kind: ErrorKind,
-    message: String,
-    pos: SourcePos,
+    /// The planner's message and place; `None` for [`ErrorKind::Check`] and
+    /// [`ErrorKind::RoadNetwork`], whose errors hold their own.
+    at: Option<(String, SourcePos)>,
 }
 
 impl Error {
     /// An error of `kind` at `pos`; `message` is lowercase ("expected …, found …").
     pub(crate) fn new(kind: ErrorKind, message: impl Into<String>, pos: SourcePos) -> Error {
-        Error {
+        Error(Box::new(Inner {
             kind,
-            message: message.into(),
-            pos,
-        }
+            at: Some((message.into(), pos)),
+        }))
     }
 
     /// An error about file `file` as a whole, placed at its start (1:1).
-    pub fn at_start_of(kind: ErrorKind, message: impl Into<String>, file: &Path) -> Error {
+    pub(crate) fn at_start_of(kind: ErrorKind, message: impl Into<String>, file: &Path) -> Error {
         Error::new(kind, message, SourcePos::start_of(Arc::from(file)))
     }
 
     /// What went wrong.
-    pub fn kind(&self) -> ErrorKind {
-        self.kind
+    pub fn kind(&self) -> &ErrorKind {
+        &self.0.kind
     }
 
-    /// Where: the construct's file and 1-based line and column.
-    pub fn pos(&self) -> &SourcePos {
-        &self.pos
-    }
-
-    /// The message without the position.
-    pub fn message(&self) -> &str {
-        &self.message
+    /// Where: the construct's file and 1-based line and column; for [`ErrorKind::Check`] the
+    /// first error's, for [`ErrorKind::RoadNetwork`] the `.xodr` file's (its start when the
+    /// error is about the file as a whole; `None` when it names no file).
+    pub fn pos(&self) -> Option<SourcePos> {
+        match (&self.0.kind, &self.0.at) {
+            (_, Some((_, pos))) => Some(pos.clone()),
+            (ErrorKind::Check(e), None) => Some(e.pos()),
+            (ErrorKind::RoadNetwork(e), None) => e
+                .pos()
+                .cloned()
+                .or_else(|| e.file().map(|f| SourcePos::start_of(f.into()))),
+            (_, None) => None,
+        }
     }
 }
 
+impl From<dsl::Error> for Error {
+    fn from(e: dsl::Error) -> Error {
+        Error(Box::new(Inner {
+            kind: ErrorKind::Check(e),
+            at: None,
+        }))
+    }
+}
+
+impl From<opendrive::Error> for Error {
+    fn from(e: opendrive::Error) -> Error {
+        Error(Box::new(Inner {
+            kind: ErrorKind::RoadNetwork(e),
+            at: None,
+        }))
+    }
+}
+
+/// The planner's errors read "MESSAGE at FILE:LINE:COL"; a check's or a road network's are
+/// their own crate's text.
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} at {}", self.message, self.pos)
+        match (&self.0.kind, &self.0.at) {
+            (_, Some((message, pos))) => write!(f, "{message} at {pos}"),
+            (ErrorKind::Check(e), None) => e.fmt(f),
+            (ErrorKind::RoadNetwork(e), None) => e.fmt(f),
+            // Not made: `Error::new` gives the planner's kinds their message and place.
+            (kind, None) => write!(f, "{kind:?}"),
+        }
     }
 }
+
+/// The text names the inner error and its place, so the error has no `source`: a chain printer
+/// shows it once.
+impl std::error::Error for Error {}
 
 /// Where a construct is written: its span (which construct it is) and its place in the file
 /// (for messages, and the scenario model's positions). Every resolved item carries one, so the

@@ -13,12 +13,14 @@
 //!    (`scenario::Scenario`), so a DSL scenario gives the same outputs (CSV, event log, OSI)
 //!    as an XML one.
 //!
-//! Everything that cannot be run is an error with `FILE:LINE:COL` before the run. `docs/dsl.md`
+//! Everything that cannot be run is an [`Error`] with `FILE:LINE:COL` before the run: its
+//! [`kind`](Error::kind) keeps `dsl`'s and `opendrive`'s errors typed
+//! ([`ErrorKind::Check`], [`ErrorKind::RoadNetwork`]) beside the planner's own kinds. `docs/dsl.md`
 //! has the decision and the mapping table.
 //!
 //! | module | implements |
 //! | --- | --- |
-//! | `error` | errors with positions; where each construct is written |
+//! | `error` | the crate's one error (a check's, a road network's or the planner's, with positions); where each construct is written |
 //! | `resolve` | stage 1: the program as plain data (§7.3.9, §7.3.10, §8.7, §8.9) |
 //! | `road` | the roads of the plan (a start road and those after it) and the DSL's lane numbering |
 //! | `track` | planned speed profile, lanes, offsets and sideways moves of an actor |
@@ -110,37 +112,22 @@ pub struct Lowered {
     pub coverage: Vec<CoverItem>,
 }
 
-/// Why a DSL scenario could not be made ready to run.
-#[derive(Debug, thiserror::Error)]
-#[non_exhaustive]
-pub enum LoadError {
-    /// The file did not pass the language checks (or its constraints have no solution).
-    #[error("{0}")]
-    Check(dsl::Diagnostics),
-    /// The road network could not be read.
-    #[error("{0}")]
-    Road(opendrive::Error),
-    /// The scenario could not be planned.
-    #[error("{0}")]
-    Plan(Error),
-}
-
 /// Checks `osc`, resolves it with the seed, reads the road network and plans and lowers the
 /// scenario. The road network is `road` when given, else the file the program names with the
 /// standard library's `map.set_map_file(file)` (relative to the `.osc` file).
-pub fn load(osc: &Path, road: Option<&Path>, options: &Options) -> Result<Lowered, LoadError> {
-    let program = dsl::check(osc).map_err(LoadError::Check)?;
+pub fn load(osc: &Path, road: Option<&Path>, options: &Options) -> Result<Lowered, Error> {
+    let program = dsl::check(osc)?;
     let road = match road {
         Some(r) => r.to_path_buf(),
         None => map_file(&program, osc).ok_or_else(|| {
-            LoadError::Plan(Error::at_start_of(
+            Error::at_start_of(
                 ErrorKind::Road,
                 "expected a road network (--road FILE.xodr, or map.set_map_file(\"FILE.xodr\") in the scenario), found none",
                 osc,
-            ))
+            )
         })?,
     };
-    let net = opendrive::RoadNetwork::from_file(&road).map_err(LoadError::Road)?;
+    let net = opendrive::RoadNetwork::from_file(&road)?;
     lower_program(&program, osc, &road, &net, options)
 }
 
@@ -207,12 +194,8 @@ pub fn lower_program(
     road_path: &Path,
     road: &opendrive::RoadNetwork,
     options: &Options,
-) -> Result<Lowered, LoadError> {
-    let resolved = resolve::resolve(program, osc, options.seed, options.scenario.as_deref())
-        .map_err(|f| match f {
-            resolve::Failure::Check(d) => LoadError::Check(d),
-            resolve::Failure::Plan(e) => LoadError::Plan(e),
-        })?;
+) -> Result<Lowered, Error> {
+    let resolved = resolve::resolve(program, osc, options.seed, options.scenario.as_deref())?;
     // The plan drives from the road of its named routes (the first of them whose roads hold
     // all the others; a route through points over its own roads), else from the first road,
     // onto the roads after it (`road`).
@@ -231,20 +214,20 @@ pub fn lower_program(
             match road::PlanRoad::by_id(road, id) {
                 Some(chain) => chains.push(chain),
                 None if k == 0 => {
-                    return Err(LoadError::Plan(a.site.err(
+                    return Err(a.site.err(
                         ErrorKind::Road,
                         format!(
                             "expected road {id} with driving lanes in {}, found none",
                             road_path.display()
                         ),
-                    )))
+                    ))
                 }
                 None => {}
             }
             wanted.push(id.clone());
         } else {
             let roads = road::route_roads(road, lane, &points)
-                .map_err(|m| LoadError::Plan(a.site.err(ErrorKind::Road, m)))?;
+                .map_err(|m| a.site.err(ErrorKind::Road, m))?;
             wanted.extend(roads.iter().map(|&i| road.roads()[i].id.clone()));
             chains.push(road::PlanRoad::through(road, &roads));
         }
@@ -254,20 +237,20 @@ pub fn lower_program(
         Some(i) => chains.swap_remove(i),
         None if !chains.is_empty() => chains.swap_remove(0),
         None => road::PlanRoad::pick(road).ok_or_else(|| {
-            LoadError::Plan(resolved.site.err(
+            resolved.site.err(
                 ErrorKind::Road,
                 format!(
                     "expected a road with driving lanes in {}, found none",
                     road_path.display()
                 ),
-            ))
+            )
         })?,
     };
     let settings = plan::Settings {
         dt: options.dt,
         open_end: options.open_end,
     };
-    let plan = plan::plan(&resolved, &plan_road, settings).map_err(LoadError::Plan)?;
+    let plan = plan::plan(&resolved, &plan_road, settings)?;
     let info = plan
         .phases
         .iter()

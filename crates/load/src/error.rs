@@ -14,8 +14,8 @@ pub enum ErrorKind {
     /// The road network did not load.
     RoadNetwork(opendrive::Error),
     /// An OpenSCENARIO DSL file did not pass the language checks, or its constraints have no
-    /// solution (every error of the file, in source order).
-    Check(dsl::Diagnostics),
+    /// solution (`dsl`'s error: every error of the file, in source order).
+    Check(dsl::Error),
     /// An OpenSCENARIO DSL scenario that checks but cannot be planned.
     Plan(dsl_runtime::Error),
     /// An option the scenario's language does not take (`road` for an XML scenario, which
@@ -52,8 +52,8 @@ impl Error {
                 .pos()
                 .cloned()
                 .or_else(|| e.file().map(|f| SourcePos::start_of(f.into()))),
-            ErrorKind::Check(d) => d.items.first().map(|i| d.source_pos(i.span)),
-            ErrorKind::Plan(e) => Some(e.pos().clone()),
+            ErrorKind::Check(e) => Some(e.pos()),
+            ErrorKind::Plan(e) => e.pos(),
             ErrorKind::Option { pos, .. } => Some(pos.clone()),
         }
     }

@@ -270,17 +270,14 @@ impl Source {
                 };
                 let lowered =
                     dsl_runtime::lower_program(program, &self.path, road, &self.network, &options)
-                        .map_err(|e| match e {
-                            dsl_runtime::LoadError::Check(d) => ErrorKind::Check(d),
-                            dsl_runtime::LoadError::Road(r) => ErrorKind::RoadNetwork(r),
-                            dsl_runtime::LoadError::Plan(p) => ErrorKind::Plan(p),
-                            // `LoadError` is non-exhaustive; a new kind is reported as a plan
-                            // error at the file's start until it is mapped here.
-                            other => ErrorKind::Plan(dsl_runtime::Error::at_start_of(
-                                dsl_runtime::ErrorKind::NoScenario,
-                                other.to_string(),
-                                &self.path,
-                            )),
+                        .map_err(|e| match e.kind() {
+                            // The program checked; the constraints may have no solution for
+                            // this seed.
+                            dsl_runtime::ErrorKind::Check(d) => ErrorKind::Check(d.clone()),
+                            dsl_runtime::ErrorKind::RoadNetwork(r) => {
+                                ErrorKind::RoadNetwork(r.clone())
+                            }
+                            _ => ErrorKind::Plan(e),
                         })?;
                 let resolved = columns.as_ref().map_or_else(Vec::new, |(root, names)| {
                     names

@@ -1,4 +1,5 @@
-//! The front door: load a file with its imports and the standard library, check it, resolve it.
+//! The front door: load a file with its imports and the standard library, check it, resolve it;
+//! and the crate's one error, [`Error`] (a check's or a resolution's [`Diagnostics`]).
 //!
 //! Files `0..L` of a program are the standard library (`osc.standard`, always loaded: a file
 //! with or without `import osc.standard` sees the same declarations, behind its own, see
@@ -36,6 +37,14 @@ pub struct Source {
     index: LineIndex,
 }
 
+/// Two sources are equal when their names and texts are (the index and the position file are
+/// made from them).
+impl PartialEq for Source {
+    fn eq(&self, other: &Source) -> bool {
+        self.name == other.name && self.text == other.text
+    }
+}
+
 impl Source {
     fn new(name: String, text: String) -> Source {
         let index = LineIndex::new(&text);
@@ -68,8 +77,9 @@ pub fn source_pos(files: &[Source], span: Span) -> SourcePos {
     }
 }
 
-/// Errors of a program, with the files they point into.
-#[derive(Debug, Clone)]
+/// Errors of a program, with the files they point into (never empty: an [`Error`] is made with
+/// at least one).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Diagnostics {
     /// The errors, in the order found.
     pub items: Vec<Diagnostic>,
@@ -80,6 +90,11 @@ impl Diagnostics {
     /// The position (file, 1-based line:col) of a span's start.
     pub fn source_pos(&self, span: Span) -> SourcePos {
         source_pos(&self.files, span)
+    }
+
+    /// The position of the first error (in source order for a check's errors).
+    pub fn pos(&self) -> Option<SourcePos> {
+        self.items.first().map(|d| self.source_pos(d.span))
     }
 
     /// `FILE:LINE:COL` of a span.
@@ -139,7 +154,66 @@ impl fmt::Display for Diagnostics {
     }
 }
 
-impl std::error::Error for Diagnostics {}
+/// What went wrong: the kinds of [`Error`].
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// The program did not pass the language checks (it cannot be read, an import, a syntax
+    /// error, names, types and units, arguments, modifiers): every error, in source order.
+    Check(Diagnostics),
+    /// The program's constraints could not be solved with the seed (no solution, or a form
+    /// the solver does not handle); the check solves them with seed 0.
+    Resolve(Diagnostics),
+}
+
+/// The crate's one error: a program that does not check, or whose constraints do not resolve.
+/// Its text is one line per error, "MESSAGE at FILE:LINE:COL" (each related place on an
+/// indented line after it, [`Diagnostics::lines`]); [`Error::pos`] is the first error's place.
+///
+/// The parser itself never fails: its [`SyntaxError`](crate::syntax::SyntaxError)s are data of
+/// a [`Parse`](crate::syntax::Parse) (a byte range in a text without a file), which the check
+/// reports as [`ErrorKind::Check`] errors of kind `osc::syntax` at their file's line and column.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Error {
+    kind: Box<ErrorKind>,
+}
+
+impl Error {
+    fn check(items: Vec<Diagnostic>, files: Arc<Vec<Source>>) -> Error {
+        Error {
+            kind: Box::new(ErrorKind::Check(Diagnostics { items, files })),
+        }
+    }
+
+    /// What went wrong.
+    pub fn kind(&self) -> &ErrorKind {
+        &self.kind
+    }
+
+    /// Every error, with the files they point into.
+    pub fn diagnostics(&self) -> &Diagnostics {
+        match &*self.kind {
+            ErrorKind::Check(d) | ErrorKind::Resolve(d) => d,
+        }
+    }
+
+    /// Where: the first error's file and 1-based line and column (`?:1:1`, the place of a span
+    /// into no file, for a list of no errors, which is never made).
+    pub fn pos(&self) -> SourcePos {
+        self.diagnostics()
+            .pos()
+            .unwrap_or_else(|| SourcePos::start_of(Arc::from(Path::new("?"))))
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.diagnostics().fmt(f)
+    }
+}
+
+/// The text names every error and its place, so the error has no `source`.
+impl std::error::Error for Error {}
 
 /// A program that passed the checks: its declarations and constraints.
 #[derive(Debug, Clone)]
@@ -156,12 +230,12 @@ pub struct CheckedProgram {
 impl CheckedProgram {
     /// Concrete values of every field of every global, top-level field and scenario, sampled
     /// with `seed` where the constraints leave a choice (same seed, same values).
-    pub fn resolve(&self, seed: u64) -> Result<Resolution, Diagnostics> {
-        resolve(&self.model, &self.templates, &self.invocations, seed).map_err(|items| {
-            Diagnostics {
+    pub fn resolve(&self, seed: u64) -> Result<Resolution, Error> {
+        resolve(&self.model, &self.templates, &self.invocations, seed).map_err(|items| Error {
+            kind: Box::new(ErrorKind::Resolve(Diagnostics {
                 items,
                 files: self.files.clone(),
-            }
+            })),
         })
     }
 
@@ -172,7 +246,7 @@ impl CheckedProgram {
 }
 
 /// Checks the file at `path` with its imports.
-pub fn check(path: &Path) -> Result<CheckedProgram, Diagnostics> {
+pub fn check(path: &Path) -> Result<CheckedProgram, Error> {
     let text = std::fs::read_to_string(path).map_err(|e| {
         let files = Arc::new(vec![Source::new(path.display().to_string(), String::new())]);
         let span = Span {
@@ -180,14 +254,14 @@ pub fn check(path: &Path) -> Result<CheckedProgram, Diagnostics> {
             start: 0,
             end: 0,
         };
-        Diagnostics {
-            items: vec![Diagnostic::new(
+        Error::check(
+            vec![Diagnostic::new(
                 K::Import,
                 span,
                 format!("cannot read {}: {e}", path.display()),
             )],
             files,
-        }
+        )
     })?;
     check_source_with(&path.display().to_string(), &text, &|p: &Path| {
         std::fs::read_to_string(p).ok()
@@ -195,7 +269,7 @@ pub fn check(path: &Path) -> Result<CheckedProgram, Diagnostics> {
 }
 
 /// Checks a source text; relative imports are read from disk next to `name`.
-pub fn check_source(name: &str, text: &str) -> Result<CheckedProgram, Diagnostics> {
+pub fn check_source(name: &str, text: &str) -> Result<CheckedProgram, Error> {
     check_source_with(name, text, &|p: &Path| std::fs::read_to_string(p).ok())
 }
 
@@ -204,7 +278,7 @@ pub fn check_source_with(
     name: &str,
     text: &str,
     load: &dyn Fn(&Path) -> Option<String>,
-) -> Result<CheckedProgram, Diagnostics> {
+) -> Result<CheckedProgram, Error> {
     let mut files: Vec<Source> = stdlib::STANDARD
         .iter()
         .map(|f| Source::new(f.name.to_string(), f.text.to_string()))
@@ -274,10 +348,7 @@ pub fn check_source_with(
     }
     let files = Arc::new(files);
     if !diags.is_empty() {
-        return Err(Diagnostics {
-            items: diags,
-            files,
-        });
+        return Err(Error::check(diags, files));
     }
     let namespaces: Vec<&'static str> = stdlib::STANDARD.iter().map(|f| f.namespace).collect();
     resolve_namespaces(&mut hir, &namespaces, &mut diags);
@@ -293,10 +364,7 @@ pub fn check_source_with(
         later.span == first.span && later.kind == K::UnknownName && first.kind == K::UnknownName
     });
     if !diags.is_empty() {
-        return Err(Diagnostics {
-            items: diags,
-            files,
-        });
+        return Err(Error::check(diags, files));
     }
     let program = CheckedProgram {
         model,

@@ -166,3 +166,30 @@ fn or_samples_either_side_never_between() {
     }
     assert!(low > 0 && high > 0, "low {low}, high {high}");
 }
+
+/// The crate's one error: a check's errors are `ErrorKind::Check`, constraints with no solution
+/// `ErrorKind::Resolve`; `pos()` is the first error's place, the one its text names first
+/// (the fixtures' `.err` files: `err_duplicate_field.err` 3:5, `err_unsat_bounds.err` 2:1).
+#[test]
+fn the_error_says_which_stage_failed_and_where_the_first_error_is() {
+    let check = |name: &str| {
+        let text = std::fs::read_to_string(dir().join(format!("{name}.osc"))).expect("case file");
+        dsl::check_source(&format!("{name}.osc"), &text).expect_err("an error")
+    };
+    let e = check("err_duplicate_field");
+    assert!(matches!(e.kind(), dsl::ErrorKind::Check(_)), "{e:?}");
+    assert_eq!(e.pos().to_string(), "err_duplicate_field.osc:3:5");
+    assert_eq!(e.diagnostics().items.len(), 1);
+    let e = check("err_unsat_bounds");
+    assert!(matches!(e.kind(), dsl::ErrorKind::Resolve(_)), "{e:?}");
+    assert_eq!(e.pos().to_string(), "err_unsat_bounds.osc:2:1");
+    // A file that cannot be read is a check error at its start.
+    let missing = dir().join("no_such_file.osc");
+    let e = dsl::check(&missing).expect_err("no file");
+    assert!(matches!(e.kind(), dsl::ErrorKind::Check(_)), "{e:?}");
+    assert_eq!(
+        e.pos().to_string(),
+        format!("{}:1:1", missing.display()),
+        "{e}"
+    );
+}

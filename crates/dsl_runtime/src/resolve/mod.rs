@@ -90,39 +90,31 @@ pub(crate) struct EventSpec {
     pub within: Option<String>,
 }
 
-/// Why a program has no scenario to run, or cannot be resolved.
-#[derive(Debug)]
-pub(crate) enum Failure {
-    /// The solver found no values (or the check failed).
-    Check(dsl::Diagnostics),
-    /// The scenario cannot be run.
-    Plan(Error),
-}
-
 /// Resolves the scenario to run (the entry point: `scenario` when named, else the one
-/// scenario with a `do` of the user's files that no other invokes), with `seed`.
+/// scenario with a `do` of the user's files that no other invokes), with `seed`. The solver
+/// finding no values is [`ErrorKind::Check`](crate::ErrorKind::Check).
 pub(crate) fn resolve(
     program: &CheckedProgram,
     osc: &Path,
     seed: u64,
     scenario: Option<&str>,
-) -> Result<Resolved, Failure> {
+) -> Result<Resolved, Error> {
     let files = Files(program.files());
     let model = &program.model;
-    let (id, root) = entry(program, osc, scenario).map_err(Failure::Plan)?;
+    let (id, root) = entry(program, osc, scenario)?;
     let decl = model.compound(id);
-    let resolution = program.resolve(seed).map_err(Failure::Check)?;
+    let resolution = program.resolve(seed)?;
     let draws = RefCell::new(Draws::new(seed));
     let ev = eval::Eval::new(model, &resolution, decl.name.clone(), files, &draws);
     let mut entered = Vec::new();
-    let root = tree::build_root(&ev, root, &mut entered).map_err(Failure::Plan)?;
-    let mut events = events(&ev, &decl.members, None).map_err(Failure::Plan)?;
+    let root = tree::build_root(&ev, root, &mut entered)?;
+    let mut events = events(&ev, &decl.members, None)?;
     for e in entered {
         let inner = ev.enter(e.frame.clone());
         let members = &model.compound(e.behavior).members;
-        events.extend(self::events(&inner, members, Some(&e.path)).map_err(Failure::Plan)?);
+        events.extend(self::events(&inner, members, Some(&e.path))?);
     }
-    let located = objects::locations(&ev, &decl.members).map_err(Failure::Plan)?;
+    let located = objects::locations(&ev, &decl.members)?;
     let mut objects = objects(&ev, &root, &located);
     // The scenario's stationary objects that no location(…) puts anywhere: an error where the
     // plan uses one.
@@ -145,7 +137,7 @@ pub(crate) fn resolve(
             _ => Vec::new(),
         })
         .collect();
-    let coverage = coverage::items(&ev, &decl.members, &entities).map_err(Failure::Plan)?;
+    let coverage = coverage::items(&ev, &decl.members, &entities)?;
     let site = ev.site(decl.span);
     Ok(Resolved {
         name: decl.name.clone(),

@@ -233,6 +233,51 @@ fn errors_name_the_place_before_the_run() {
     );
 }
 
+/// One error for the crate: `dsl`'s check errors and `opendrive`'s stay typed inside it
+/// (`ErrorKind::Check`, `ErrorKind::RoadNetwork`) beside the planner's kinds, and `pos()` is
+/// the place the text names (the places of `errors_name_the_place_before_the_run`).
+#[test]
+fn one_error_keeps_the_check_and_road_network_errors_typed() {
+    let place = |e: &dsl_runtime::Error| {
+        let p = e.pos().unwrap_or_else(|| panic!("{e}: no place"));
+        let file = p
+            .file
+            .file_name()
+            .and_then(|f| f.to_str())
+            .unwrap_or_default()
+            .to_owned();
+        (file, p.line, p.col)
+    };
+    let e = support::lower("err_unknown_actor", 0, None).expect_err("unknown actor");
+    assert!(
+        matches!(e.kind(), dsl_runtime::ErrorKind::Check(_)),
+        "{e:?}"
+    );
+    assert_eq!(place(&e), ("err_unknown_actor.osc".to_owned(), 6, 9), "{e}");
+    let e = support::lower("err_unsatisfiable_end", 0, None).expect_err("unsatisfiable");
+    assert!(
+        matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable),
+        "{e:?}"
+    );
+    assert_eq!(
+        place(&e),
+        ("err_unsatisfiable_end.osc".to_owned(), 14, 13),
+        "{e}"
+    );
+    let e = support::lower_at(
+        "tests/scenarios/constant_speed.osc",
+        "tests/roads/no_such_road.xodr",
+        0,
+        None,
+    )
+    .expect_err("no road file");
+    assert!(
+        matches!(e.kind(), dsl_runtime::ErrorKind::RoadNetwork(_)),
+        "{e:?}"
+    );
+    assert_eq!(place(&e), ("no_such_road.xodr".to_owned(), 1, 1), "{e}");
+}
+
 #[test]
 fn driving_alongside_group_runs_beside_the_dut() {
     // The seed's §8.7.18.1.1 Code 4 as written, on the bundled highway (right lanes -1, -2, -3),
@@ -509,16 +554,24 @@ fn every_checked_fixture_plans_or_fails_with_a_position_never_a_panic() {
     for f in &files {
         match dsl_runtime::load(f, Some(&road), &options) {
             Ok(_) => planned += 1,
-            Err(dsl_runtime::LoadError::Plan(e)) => {
+            Err(e) => {
+                // The planner's own kinds: a place in the file itself, 1-based.
+                if matches!(
+                    e.kind(),
+                    dsl_runtime::ErrorKind::Check(_) | dsl_runtime::ErrorKind::RoadNetwork(_)
+                ) {
+                    continue;
+                }
                 refused += 1;
-                // A place in the file itself, 1-based.
+                let pos = e
+                    .pos()
+                    .unwrap_or_else(|| panic!("{}: {e} has no place", f.display()));
                 assert!(
-                    e.pos().file.as_ref() == f.as_path() && e.pos().line >= 1 && e.pos().col >= 1,
+                    pos.file.as_ref() == f.as_path() && pos.line >= 1 && pos.col >= 1,
                     "{}: {e}",
                     f.display()
                 );
             }
-            Err(_) => {}
         }
     }
     assert!(

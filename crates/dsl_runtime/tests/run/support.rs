@@ -92,7 +92,7 @@ pub fn lower(
     name: &str,
     seed: u64,
     duration: Option<f64>,
-) -> Result<dsl_runtime::Lowered, dsl_runtime::LoadError> {
+) -> Result<dsl_runtime::Lowered, dsl_runtime::Error> {
     lower_at(
         &format!("tests/scenarios/{name}.osc"),
         "tests/roads/straight.xodr",
@@ -107,7 +107,7 @@ pub fn lower_at(
     road: &str,
     seed: u64,
     duration: Option<f64>,
-) -> Result<dsl_runtime::Lowered, dsl_runtime::LoadError> {
+) -> Result<dsl_runtime::Lowered, dsl_runtime::Error> {
     let options = dsl_runtime::Options {
         seed,
         dt: DT,
