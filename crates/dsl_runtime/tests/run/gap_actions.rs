@@ -16,15 +16,29 @@ fn change_space_gap_ends_at_the_gap_and_keep_space_gap_holds_it() {
     // Boxes: front 3.5 m, rear 0.5 m ahead of / behind the reference points.
     let gap = |t: f64| (r.at(t, "lead").s - 0.5) - (r.at(t, "ego").s + 3.5);
     assert!((gap(0.0) - 66.0).abs() < 1e-9, "gap(0) = {}", gap(0.0));
+    // Mid-points of the saturated part (2 m/s² from the first step): gap = 66 − t² − t·dt,
+    // v = 15 + 2·t.
+    for (t, want_gap, want_v) in [(2.0, 61.9, 19.0), (5.0, 40.75, 25.0)] {
+        assert!((gap(t) - want_gap).abs() < LAW_TOL, "gap({t}) = {}", gap(t));
+        let v = r.at(t, "ego").speed;
+        assert!((v - want_v).abs() < LAW_TOL, "v({t}) = {v}");
+    }
     let (s, e) = r.phase("do.1.close");
-    assert!(s.abs() < T_TOL && e > 0.0 && e < 30.0, "close [{s}, {e}]");
-    // The engine checks the gap at a step's start (the frame e − 2·dt), logs the action's end
-    // with the next step, and the phase's stop trigger sees that one step later.
+    // The stepped law reaches |u| <= 0.1 m first at the step from 8.95 s (u = 0.0904 m; 0.1046 m
+    // at 8.90 s); the action's end is logged with the next step and the phase's stop trigger
+    // sees it one step later: 9.05 s.
+    assert!(
+        s.abs() < T_TOL && (e - 9.05).abs() < T_TOL,
+        "close [{s}, {e}] (9.05 s by the law)"
+    );
     let at_end = gap(e - 2.0 * DT);
     assert!(
-        (at_end - 20.0).abs() <= REACHED + 1e-9,
+        (at_end - 20.0904).abs() < LAW_TOL && (at_end - 20.0).abs() <= REACHED,
         "gap {at_end} at {e}"
     );
+    assert!(gap(8.9) - 20.0 > REACHED, "not reached a step earlier");
+    let v_end = r.at(8.95, "ego").speed;
+    assert!((v_end - 15.2833).abs() < LAW_TOL, "v(8.95) = {v_end}");
     // Closing only: the gap never falls below the target by more than the tolerance.
     for (t, _) in r.frames.iter().filter(|(t, _)| *t <= e) {
         assert!(gap(*t) > 20.0 - REACHED, "gap {} at {t}", gap(*t));
@@ -49,10 +63,31 @@ fn change_time_headway_ends_at_the_headway_and_keep_time_headway_holds_it() {
     let r = run("actions/time_headway", 0, None);
     let between = |t: f64| r.at(t, "lead").s - r.at(t, "ego").s;
     assert!((between(0.0) - 130.0).abs() < 1e-9);
+    // Mid-points of the saturated part (2 m/s² from the first step): 130 − t² − t·dt m,
+    // v = 20 + 2·t.
+    for (t, want, want_v) in [(5.0, 104.75, 30.0), (8.0, 65.6, 36.0)] {
+        assert!(
+            (between(t) - want).abs() < LAW_TOL,
+            "{} m at {t}",
+            between(t)
+        );
+        let v = r.at(t, "ego").speed;
+        assert!((v - want_v).abs() < LAW_TOL, "v({t}) = {v}");
+    }
     let (s, e) = r.phase("do.1.open");
-    assert!(s.abs() < T_TOL && e > 0.0 && e < 40.0, "open [{s}, {e}]");
+    // |u| <= 0.1 m first at the step from 10.55 s (u = 0.0747 m, 0.5647 m at 10.50 s): the
+    // phase ends two steps later, 10.65 s, ego still closing in at 29.80 m/s.
+    assert!(
+        s.abs() < T_TOL && (e - 10.65).abs() < T_TOL,
+        "open [{s}, {e}] (10.65 s by the law)"
+    );
     let at_end = between(e - 2.0 * DT);
-    assert!((at_end - 30.0).abs() <= REACHED + 1e-9, "{at_end} m at {e}");
+    assert!(
+        (at_end - 30.0747).abs() < LAW_TOL && (at_end - 30.0).abs() <= REACHED,
+        "{at_end} m at {e}"
+    );
+    let v_end = r.at(10.55, "ego").speed;
+    assert!((v_end - 29.8).abs() < LAW_TOL, "v(10.55) = {v_end}");
     let (s2, e2) = r.phase("do.1.follow");
     assert!(
         (s2 - e).abs() < T_TOL && (e2 - 40.0).abs() < T_TOL,

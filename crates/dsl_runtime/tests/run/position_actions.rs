@@ -26,6 +26,25 @@ fn assign_position_to_an_odr_point_ends_at_once() {
     assert_eq!(r.phase("do.2"), (2.0, 4.0));
 }
 
+/// §8.8.2.4 with a route_point (assign_position_route.osc's comment, by hand).
+#[test]
+fn assign_position_to_a_route_point_on_the_runtimes_route() {
+    let r = run("actions/assign_position_route", 0, None);
+    close(r.at(2.0, "ego").x, 50.0, "x(2) before the jump");
+    close(r.at(2.0, "ego").y, -8.75, "y(2) before the jump");
+    assert_eq!(r.phase("do.1"), (2.0, 2.0));
+    close(r.at(2.05, "ego").x, 150.0, "x(2.05)");
+    close(r.at(2.05, "ego").y, -5.25, "y(2.05)");
+    let after = r.at(3.0, "ego");
+    close(after.x, 159.5, "x(3)");
+    assert_eq!(after.lane, -2);
+    let end = r.at(4.0, "ego");
+    close(end.x, 169.5, "x(4)");
+    close(end.y, -5.25, "y(4)");
+    close(end.speed, 10.0, "v(4)");
+    assert_eq!(r.phase("do.2"), (2.0, 4.0));
+}
+
 #[test]
 fn assign_position_to_a_world_point() {
     let r = run("actions/assign_position_3d", 0, None);
