@@ -123,7 +123,7 @@ impl Track {
         self.offsets.push((t, offset));
     }
 
-    /// s and speed at time `t` (≥ 0).
+    /// s and speed at time `t` (≥ 0), after a step of speed planned at `t`.
     pub(crate) fn at(&self, t: f64) -> (f64, f64) {
         let (s, v, _) = self.state(t);
         let jumped: f64 = self
@@ -172,7 +172,10 @@ impl Track {
     fn state(&self, t: f64) -> (f64, f64, f64) {
         let (mut s, mut v, mut now) = (self.s0, self.v0, 0.0);
         for r in &self.stretches {
-            if t <= r.t0 {
+            // A step at `t` has happened at `t` (the engine sets it in the step from `t`, and
+            // an action that starts in the same instant finds it); a change from `t` has not
+            // started yet.
+            if t < r.t0 || (t == r.t0 && r.t1 > r.t0) {
                 break;
             }
             // Hold v from now to the stretch's start.
@@ -325,6 +328,25 @@ mod tests {
             s.acceleration_pieces(6.0, 8.0).is_ok(),
             "a step at the start is before it"
         );
+    }
+
+    /// A step of speed at t is the speed an action starting at t finds (`keep_speed()` right
+    /// after `assign_speed(v)` keeps v; it kept the speed before the step); a change from t has
+    /// not begun at t.
+    #[test]
+    fn a_step_at_t_has_happened_at_t_and_a_change_from_t_has_not() {
+        let mut tr = Track::new(0.0, 0.0, -1);
+        tr.ramp(1.0, 1.0, 10.0);
+        assert!((tr.at(1.0).1 - 10.0).abs() < TOL);
+        assert!(tr.at(1.0).0.abs() < TOL, "no distance at the step");
+        tr.ramp(2.0, 4.0, 20.0);
+        assert!((tr.at(2.0).1 - 10.0).abs() < TOL);
+        assert!((tr.at(2.0).0 - 10.0).abs() < TOL, "10 m at 10 m/s from 1 s");
+        assert!((tr.at(3.0).1 - 15.0).abs() < TOL);
+        // A second step in the same instant replaces the first.
+        tr.ramp(5.0, 5.0, 0.0);
+        tr.ramp(5.0, 5.0, 7.0);
+        assert!((tr.at(5.0).1 - 7.0).abs() < TOL);
     }
 
     #[test]

@@ -34,6 +34,10 @@
 //! lane of the road (else an error). `change_time_headway` has only `ahead` and `behind`
 //! (`headway_direction`): a headway is longitudinal.
 //!
+//! On a vehicle group (the library's group forms, non-normative §8.7.18) the members form a
+//! chain along the formation: the members nearest the reference keep the gap to it, each
+//! other member to its neighbour on the reference's side (`member_reference`).
+//!
 //! The gap or headway a `keep_*` action keeps is the one at its start: the target of the gap
 //! action the actor ran just before (to the same reference), else the plan's gap between the two
 //! tracks at the phase's start. While the engine's controller moves the actor the plan does not
@@ -48,7 +52,7 @@ use scenario::{
 use super::action_args::missing;
 use super::planner::{Gap, Planner};
 use super::speed_actions::Slot;
-use super::types::{Planned, When, MAX_SPEED};
+use super::types::{Planned, When, MAX_SPEED, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{arg, Action, Invoke, Phase, Val};
 
@@ -117,13 +121,13 @@ impl Planner<'_> {
             out,
             ..
         } = slot;
-        let reference = self.gap_reference(p, inv)?;
+        let measure = measure(inv)?;
+        let reference = self.member_reference(p, inv, target, t0, measure)?;
         let headway = matches!(
             inv.kind,
             Action::ChangeTimeHeadway | Action::KeepTimeHeadway
         );
         let change = matches!(inv.kind, Action::ChangeSpaceGap | Action::ChangeTimeHeadway);
-        let measure = measure(inv)?;
         let lateral = matches!(measure, Measure::Lateral(_));
         if lateral {
             // Sideways: the speed along the road stays free, the lateral position is the action's.
@@ -238,6 +242,111 @@ impl Planner<'_> {
                     "expected a physical object of the scenario as the reference, found another value",
                 )
             })
+    }
+
+    /// The object `target` keeps its gap to. For an actor: the action's `reference`. For a
+    /// member of the vehicle group the action is invoked on, a chain along the formation
+    /// (members in the group's order, front to back; a common-route group over several lanes a
+    /// row at a time, so a member's neighbour is the one a row ahead or behind in its lane):
+    /// the members nearest the reference keep the gap to it, each other member to its
+    /// neighbour on the reference's side. Every member keeping its gap to the reference itself
+    /// would put them all at one place. Across the road (`left`, `right`, …) every member of a
+    /// single-lane group keeps its gap to the reference (they stay one behind the other); a
+    /// group over several lanes, whose members are side by side, cannot.
+    fn member_reference(
+        &self,
+        p: &Phase,
+        inv: &Invoke,
+        target: &str,
+        t0: Option<f64>,
+        measure: Measure,
+    ) -> Result<String, Error> {
+        let reference = self.gap_reference(p, inv)?;
+        let Some(members) = self.groups.get(&inv.actor) else {
+            return Ok(reference);
+        };
+        let group = &inv.actor;
+        if members.contains(&reference) {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected a reference outside group `{group}` in {}(…) on it, found its member `{reference}`", inv.action),
+            ));
+        }
+        let across = self.across.contains(group);
+        let displacement = match measure {
+            Measure::Lateral(_) if across => {
+                return Err(p.site.err(
+                    K::Unsatisfiable,
+                    format!("expected a single-lane group for a lateral gap in {}(…), found `{group}`, a common-route group whose members drive side by side over several lanes (each keeping the gap across the road to `{reference}` would put them on one line)", inv.action),
+                ))
+            }
+            Measure::Lateral(_) => return Ok(reference),
+            Measure::Longitudinal(d) => d,
+        };
+        let behind = match displacement {
+            LongitudinalDisplacement::TrailingReferencedEntity => true,
+            LongitudinalDisplacement::LeadingReferencedEntity => false,
+            _ => self.group_behind(p, inv, members, &reference, t0)?,
+        };
+        // Members per row: 1 in a column; over several lanes those beside member 0 at the start.
+        let row = if across {
+            let s0 = self.s_at(&members[0], 0.0);
+            members
+                .iter()
+                .take_while(|m| (self.s_at(m, 0.0) - s0).abs() < POSITION_TOLERANCE)
+                .count()
+                .max(1)
+        } else {
+            1
+        };
+        // A target of the group's invocation is one of its members (plan_invoke).
+        let i = members.iter().position(|m| m == target).unwrap_or(0);
+        let neighbour = if behind {
+            i.checked_sub(row)
+        } else {
+            Some(i + row).filter(|j| *j < members.len())
+        };
+        Ok(neighbour.map_or(reference, |j| members[j].clone()))
+    }
+
+    /// Whether group `members` is behind `reference` for a gap action without a direction:
+    /// the side the group's last gap action to it kept, else the side the plan has the
+    /// reference on at the phase's start (ahead of the first member, or behind the last).
+    fn group_behind(
+        &self,
+        p: &Phase,
+        inv: &Invoke,
+        members: &[String],
+        reference: &str,
+        t0: Option<f64>,
+    ) -> Result<bool, Error> {
+        let kept_to = |m: Option<&String>| {
+            m.and_then(|m| self.gaps.get(m))
+                .is_some_and(|(r, _)| r == reference)
+        };
+        if kept_to(members.first()) {
+            return Ok(true);
+        }
+        if kept_to(members.last()) {
+            return Ok(false);
+        }
+        let moved = |x: &str| self.engine_moved.contains_key(x);
+        if let Some(t) = t0.filter(|_| !moved(reference) && !members.iter().any(|m| moved(m))) {
+            let s_r = self.s_at(reference, t);
+            if members.iter().all(|m| self.s_at(m, t) < s_r) {
+                return Ok(true);
+            }
+            if members.iter().all(|m| self.s_at(m, t) > s_r) {
+                return Ok(false);
+            }
+        }
+        Err(p.site.err(
+            K::Unsatisfiable,
+            format!(
+                "expected `direction: ahead` or `behind` in {}(…) on group `{}` (it decides which member keeps its gap to `{reference}` and which to the member next to it), found none, and the plan has `{reference}` neither ahead of nor behind the whole group at the phase's start",
+                inv.action, inv.actor
+            ),
+        ))
     }
 
     /// The gap of `kind` between `target` and `reference` at the start of a `keep_*` action:

@@ -46,12 +46,44 @@ impl Planner<'_> {
                 ),
             ));
         }
+        // A group's members share the action's arguments: one path or trajectory would put them
+        // all at one place (a trajectory: at one time), so those group forms are refused.
+        if self.groups.contains_key(&inv.actor)
+            && matches!(
+                inv.kind,
+                Action::FollowTrajectory
+                    | Action::FollowPath
+                    | Action::ReplayTrajectory
+                    | Action::ReplayPath
+            )
+        {
+            return Err(p.site.err(
+                K::Unsupported,
+                format!(
+                    "expected an action the members of group `{}` can share, found `{}`: one path or trajectory for every member would have them all at one place (a trajectory at one time, a path one after the other along one line the plan does not space); invoke it on each member with one of its own (`{}.vehicles[i].{}(…)`)",
+                    inv.actor, inv.action, inv.actor, inv.action
+                ),
+            ));
+        }
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),
             None => vec![inv.actor.clone()],
         };
+        // Each member's place in its group's formation at the start, before any member's
+        // action changes the plan (position_actions moves the formation as a whole).
+        let formation: Vec<Option<(f64, f64)>> = targets
+            .iter()
+            .map(|m| {
+                let lead = self.groups.get(&inv.actor)?.first()?;
+                let t = t0?;
+                Some((
+                    self.s_at(m, t) - self.s_at(lead, t),
+                    self.t_at(m, t) - self.t_at(lead, t),
+                ))
+            })
+            .collect();
         let mut derived = None;
-        for target in &targets {
+        for (target, formation) in targets.iter().zip(formation) {
             let first = self.first_leaf.get(target) == Some(&p.path);
             let mut n = 0;
             let mut name = |what: &str| {
@@ -111,6 +143,7 @@ impl Planner<'_> {
                 first,
                 out: &mut *out,
                 persist: &mut *persist,
+                formation,
             };
             let action_end = match inv.kind {
                 Action::ChangeLane | Action::FollowLane => {

@@ -17,6 +17,10 @@
 //! position, so the actor goes on along that lane with the speed it had. The engine puts it there
 //! at the end of the step the action runs in, in place of that step's motion, as for a 1.x
 //! TeleportAction; the plan does the same.
+//!
+//! On a vehicle group (the library's group forms, non-normative §8.7.18) `assign_position` and
+//! `change_position` move the formation as a whole: member 0 to the place, each other member to
+//! the place shifted by its offset from member 0 at the action's start (`formation_place`).
 
 use std::f64::consts::PI;
 
@@ -43,13 +47,17 @@ impl Planner<'_> {
         name: &mut dyn FnMut(&str) -> String,
     ) -> Result<Option<When>, Error> {
         let Slot {
-            target, t0, out, ..
+            target,
+            t0,
+            out,
+            formation,
+            ..
         } = slot;
         if inv.kind == Action::AssignOrientation {
             return self.plan_orientation(p, inv, target, t0, out, name);
         }
         if inv.kind == Action::ChangePosition {
-            return self.plan_change_position(p, inv, target, t0, out, name);
+            return self.plan_change_position(p, inv, (target, formation), t0, out, name);
         }
         if inv.kind != Action::AssignPosition {
             return Ok(None);
@@ -73,7 +81,13 @@ impl Planner<'_> {
                 ))
             }
         };
-        let (lane, s, offset) = self.lane_position(place)?;
+        let (lane, s, offset) = self.formation_place(
+            p,
+            inv,
+            (target, formation),
+            self.lane_position(place)?,
+            &place.site,
+        )?;
         let n = name("assign_position");
         out.push(Planned::with_phase(
             target,
@@ -168,7 +182,7 @@ impl Planner<'_> {
         &mut self,
         p: &Phase,
         inv: &Invoke,
-        target: &str,
+        (target, formation): (&str, Option<(f64, f64)>),
         t0: Option<f64>,
         out: &mut Vec<Planned>,
         name: &mut dyn FnMut(&str) -> String,
@@ -212,7 +226,13 @@ impl Planner<'_> {
                 )
             })
         };
-        let (lane, s1, offset) = self.lane_position(place)?;
+        let (lane, s1, offset) = self.formation_place(
+            p,
+            inv,
+            (target, formation),
+            self.lane_position(place)?,
+            &place.site,
+        )?;
         if let Some((a, true)) = on_road {
             if smooth {
                 return Err(a.site.err(
@@ -436,6 +456,13 @@ impl Planner<'_> {
                 return Err(site.err(K::Argument, "expected a place, found another value"))
             }
         };
+        self.lane_at(site, s, t)
+    }
+
+    /// The driving lane holding the road point (s, t) of the plan road, with the offset from
+    /// its centre; an error at `site` where there is none.
+    fn lane_at(&self, site: &Site, s: f64, t: f64) -> Result<(i32, f64, f64), Error> {
+        let road = &self.road;
         if !(0.0..=road.length()).contains(&s) {
             return Err(off_road(site, road.id(), s, "its length"));
         }
@@ -443,6 +470,48 @@ impl Planner<'_> {
             .lane_holding(s, t)
             .ok_or_else(|| off_road(site, road.id(), s, &format!("t = {t:.2} m")))?;
         Ok((lane, s, t - road.lane_center(lane, s)))
+    }
+
+    /// The place of `target` when `inv` on a vehicle group moves its formation as a whole:
+    /// member 0 goes to `place` (lane, s, offset), every other member to `place` shifted by its
+    /// own offset from member 0 along and across the road at the action's start (`formation`,
+    /// from the plan), so that the members keep their places in the formation (and do not all
+    /// go to one point). Not a group's action: `place` itself.
+    fn formation_place(
+        &self,
+        p: &Phase,
+        inv: &Invoke,
+        (target, formation): (&str, Option<(f64, f64)>),
+        (lane, s, offset): (i32, f64, f64),
+        site: &Site,
+    ) -> Result<(i32, f64, f64), Error> {
+        let Some(lead) = self.groups.get(&inv.actor).and_then(|m| m.first()) else {
+            return Ok((lane, s, offset));
+        };
+        if lead == target {
+            return Ok((lane, s, offset));
+        }
+        let (ds, dt) = formation.ok_or_else(|| {
+            p.site.err(
+                K::Unsatisfiable,
+                format!(
+                    "expected a phase start the plan knows for {}(…) on group `{}` (each member keeps its offset from `{lead}` in the formation, which the plan knows at a start it knows), found one after a run-time condition",
+                    inv.action, inv.actor
+                ),
+            )
+        })?;
+        let (s1, t1) = (s + ds, self.road.lane_center(lane, s) + offset + dt);
+        self.lane_at(site, s1, t1).map_err(|_| {
+            site.err(
+                K::Unsatisfiable,
+                format!(
+                    "expected `{target}` in a driving lane of road {} when {}(…) moves group `{}` as a whole (its offset from `{lead}`: {ds:.2} m along the road, {dt:.2} m across it), found s = {s1:.2} m, t = {t1:.2} m outside them",
+                    self.road.id(),
+                    inv.action,
+                    inv.actor
+                ),
+            )
+        })
     }
 }
 

@@ -54,6 +54,10 @@ pub(super) struct Slot<'o> {
     pub out: &'o mut Vec<Planned>,
     /// Actions that go on after the phase.
     pub persist: &'o mut Vec<Planned>,
+    /// For a member of the vehicle group the invocation is on, at a start the plan knows: its
+    /// offset from the group's member 0 along and across the road at that start (m), taken
+    /// before any member's action changes the plan.
+    pub formation: Option<(f64, f64)>,
 }
 
 impl Planner<'_> {
@@ -73,6 +77,7 @@ impl Planner<'_> {
             first,
             out,
             persist,
+            ..
         } = slot;
         check_speed_modifiers(inv, first)?;
         let v0 = t0.map_or(self.last_v[target], |t| self.track(target).at(t).1);

@@ -37,3 +37,322 @@ fn random_traffic_is_an_error() {
         "5:8",
     );
 }
+
+/// Positions after a teleport or along straight lines at constant speed (m).
+const TOL: f64 = 1e-6;
+/// The gap controller's stepped law, worked in the scenario's comment, against the engine (m,
+/// m/s): only rounding separates them.
+const LAW_TOL: f64 = 1e-3;
+/// The engine's distance controller ends a change within this of its distance (m).
+const REACHED: f64 = 0.1;
+/// Phase ends are step times.
+const T_TOL: f64 = 1e-9;
+/// s after a sideways move against √(v² − ẏ²) over its whole time (m): the engine's steps.
+const SIDEWAYS_TOL: f64 = 1e-4;
+
+fn close(got: f64, want: f64, tol: f64, what: &str) {
+    assert!((got - want).abs() < tol, "{what}: {got} vs {want}");
+}
+
+/// The gap actions on a group are a chain along the formation (group_space_gap.osc's comment,
+/// worked step by step).
+#[test]
+fn a_groups_space_gap_is_a_chain_along_its_formation() {
+    let r = run("actions/group_space_gap", 0, None);
+    let (m0, m1) = ("g.vehicles[0]", "g.vehicles[1]");
+    // Boxes: front 3.5 m, rear 0.5 m from the reference points.
+    let gap = |t: f64, back: &str, front: &str| (r.at(t, front).s - 0.5) - (r.at(t, back).s + 3.5);
+    close(
+        r.at(0.0, m1).s,
+        16.0,
+        TOL,
+        "member 1 placed 10 m behind member 0",
+    );
+    close(gap(0.0, m0, "lead"), 66.0, TOL, "gap 0 at 0 s");
+    close(gap(0.0, m1, m0), 10.0, TOL, "gap 1 at 0 s");
+    // Mid-points at 2 s.
+    close(gap(2.0, m0, "lead"), 61.9, LAW_TOL, "member 0's gap at 2 s");
+    close(
+        r.at(2.0, m0).speed,
+        19.0,
+        LAW_TOL,
+        "member 0's speed at 2 s",
+    );
+    close(gap(2.0, m1, m0), 16.5662, LAW_TOL, "member 1's gap at 2 s");
+    close(
+        r.at(2.0, m1).speed,
+        14.9627,
+        LAW_TOL,
+        "member 1's speed at 2 s",
+    );
+    // Member 1's change reaches 20 m at the step from 2.85 s and ends; it keeps 16.7627 m/s.
+    close(
+        gap(2.85, m1, m0),
+        20.0,
+        REACHED,
+        "member 1 reached at 2.85 s",
+    );
+    assert!(
+        (gap(2.8, m1, m0) - 20.0).abs() > REACHED,
+        "not a step earlier"
+    );
+    close(
+        r.at(5.0, m1).speed,
+        16.7627,
+        LAW_TOL,
+        "member 1 keeps its speed",
+    );
+    // The phase ends with member 0's change, at 9.05 s.
+    let (s, e) = r.phase("do.1.close");
+    assert!(
+        s.abs() < T_TOL && (e - 9.05).abs() < T_TOL,
+        "close [{s}, {e}]"
+    );
+    close(
+        gap(8.95, m0, "lead"),
+        20.0904,
+        LAW_TOL,
+        "member 0 reached at 8.95 s",
+    );
+    close(gap(9.0, m1, m0), 46.8150, LAW_TOL, "member 1 behind at 9 s");
+    // The keep holds the chain: each to its own neighbour.
+    let (s2, e2) = r.phase("do.1.hold");
+    assert!(
+        (s2 - e).abs() < T_TOL && (e2 - 30.0).abs() < T_TOL,
+        "hold [{s2}, {e2}]"
+    );
+    close(gap(20.0, m0, "lead"), 19.9999, LAW_TOL, "member 0 at 20 s");
+    close(gap(20.0, m1, m0), 20.0102, LAW_TOL, "member 1 at 20 s");
+    for (back, front) in [(m0, "lead"), (m1, m0)] {
+        close(
+            gap(30.0, back, front),
+            20.0,
+            LAW_TOL,
+            &format!("{back} at 30 s"),
+        );
+        close(
+            r.at(30.0, back).speed,
+            15.0,
+            LAW_TOL,
+            &format!("{back} speed at 30 s"),
+        );
+    }
+    close(r.at(30.0, "lead").s, 550.0, TOL, "lead at 30 s");
+}
+
+/// The reference each member's LongitudinalDistanceAction names (group_headway_chains.osc).
+#[test]
+fn a_groups_headway_chain_runs_row_by_row_towards_the_reference() {
+    let lowered = crate::support::lower("actions/group_headway_chains", 0, None).expect("plans");
+    let mut refs = std::collections::BTreeMap::new();
+    for story in &lowered.scenario.storyboard.stories {
+        for act in &story.acts {
+            for mg in &act.maneuver_groups {
+                for action in mg
+                    .maneuvers
+                    .iter()
+                    .flat_map(|m| &m.events)
+                    .flat_map(|e| &e.actions)
+                {
+                    if let scenario::ActionKind::Private(scenario::PrivateAction::Longitudinal(
+                        scenario::LongitudinalAction::LongitudinalDistance {
+                            entity_ref,
+                            time_gap,
+                            displacement,
+                            ..
+                        },
+                    )) = &action.kind
+                    {
+                        assert_eq!(*time_gap, Some(2.0));
+                        assert_eq!(
+                            *displacement,
+                            Some(scenario::LongitudinalDisplacement::LeadingReferencedEntity)
+                        );
+                        for actor in &mg.actors.entity_refs {
+                            refs.insert(actor.clone(), entity_ref.clone());
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let want = [
+        ("g.vehicles[0]", "g.vehicles[3]"),
+        ("g.vehicles[1]", "follower"),
+        ("g.vehicles[2]", "follower"),
+        ("g.vehicles[3]", "follower"),
+    ];
+    assert_eq!(refs.len(), want.len(), "{refs:?}");
+    for (member, reference) in want {
+        assert_eq!(
+            refs.get(member).map(String::as_str),
+            Some(reference),
+            "{refs:?}"
+        );
+    }
+}
+
+/// assign_position on a group moves its formation (group_assign_position.osc's comment).
+#[test]
+fn a_groups_assign_position_moves_its_formation_as_a_whole() {
+    let r = run("actions/group_assign_position", 0, None);
+    for (name, before, at, after) in [
+        ("g.vehicles[0]", 110.0, 200.0, 209.5),
+        ("g.vehicles[1]", 95.0, 185.0, 194.5),
+    ] {
+        close(r.at(1.0, name).x, before, TOL, &format!("{name} x(1)"));
+        close(r.at(1.05, name).x, at, TOL, &format!("{name} x(1.05)"));
+        let end = r.at(2.0, name);
+        close(end.x, after, TOL, &format!("{name} x(2)"));
+        close(end.y, -1.75, TOL, &format!("{name} y(2)"));
+        assert_eq!(end.lane, -1, "{name}");
+    }
+    assert_eq!(r.phase("do.1"), (1.0, 1.0));
+    assert_eq!(r.phase("do.2"), (1.0, 2.0));
+}
+
+/// change_position on a group: parallel lines (group_change_position.osc's comment).
+#[test]
+fn a_groups_change_position_moves_each_member_along_its_own_line() {
+    let r = run("actions/group_change_position", 0, None);
+    for (name, x0, mid, x1) in [
+        ("g.vehicles[0]", 30.0, 42.0, 54.0),
+        ("g.vehicles[1]", 15.0, 27.0, 39.0),
+    ] {
+        close(r.at(0.0, name).x, x0, TOL, &format!("{name} x(0)"));
+        let m = r.at(1.25, name);
+        close(m.x, mid, TOL, &format!("{name} x(1.25)"));
+        close(m.y, -5.25, TOL, &format!("{name} y(1.25)"));
+        let end = r.at(2.5, name);
+        close(end.x, x1, TOL, &format!("{name} x(2.5)"));
+        close(end.y, -1.75, TOL, &format!("{name} y(2.5)"));
+        assert_eq!(end.lane, -1, "{name}");
+    }
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < T_TOL && (e - 2.5).abs() < T_TOL, "[{s}, {e}]");
+}
+
+/// The group forms that stay errors, each saying why.
+#[test]
+fn group_forms_that_cannot_keep_the_formation_are_errors() {
+    let cases = [
+        (
+            "err_group_assign_position_off",
+            "13:38",
+            "expected `g.vehicles[1]` in a driving lane of road 1 when assign_position(…) moves group `g` as a whole (its offset from `g.vehicles[0]`: 0.00 m along the road, 3.50 m across it), found s = 200.00 m, t = 1.75 m outside them",
+        ),
+        (
+            "err_group_follow_trajectory",
+            "14:8",
+            "expected an action the members of group `g` can share, found `follow_trajectory`",
+        ),
+        (
+            "err_group_lateral_gap",
+            "12:9",
+            "expected a single-lane group for a lateral gap in change_space_gap(…), found `g`",
+        ),
+        (
+            "err_group_gap_side",
+            "12:9",
+            "expected `direction: ahead` or `behind` in change_space_gap(…) on group `g`",
+        ),
+    ];
+    for (name, place, text) in cases {
+        let e = crate::support::error(&format!("actions/{name}"));
+        assert!(e.contains(&format!("{name}.osc:{place}")), "{e}");
+        assert!(e.contains(text), "{text:?} not in {e}");
+    }
+}
+
+/// The other group forms, one after the other (group_forms.osc's comment, by hand).
+#[test]
+fn the_other_group_forms_run_member_by_member() {
+    use crate::support::stepped;
+    let r = run("actions/group_forms", 0, None);
+    let v = |t: f64| {
+        if t <= 1.0 {
+            0.0
+        } else if t <= 2.0 {
+            10.0
+        } else if t <= 4.0 {
+            10.0 + 2.0 * (t - 2.0)
+        } else if t <= 4.8 {
+            let u = t - 4.0;
+            14.0 + 2.0 * u - 1.25 * u * u
+        } else if t <= 7.8 {
+            14.8
+        } else {
+            (14.8 - 5.0 * (t - 7.8)).max(0.0)
+        }
+    };
+    // The step sums against the exact integrals and the step lead.
+    close(stepped(v, 0.0, 2.0), 10.0, TOL, "hand sum to 2 s");
+    close(stepped(v, 0.0, 4.0), 34.0 + 0.1, TOL, "hand sum to 4 s");
+    for (name, s0) in [("g.vehicles[0]", 100.0), ("g.vehicles[1]", 85.0)] {
+        close(r.at(0.0, name).s, s0, TOL, &format!("{name} s(0)"));
+        close(r.at(1.0, name).s, s0, TOL, &format!("{name} stands to 1 s"));
+        for (t, want) in [
+            (3.0, 12.0),
+            (4.0, 14.0),
+            (4.4, 14.6),
+            (4.8, 14.8),
+            (5.8, 14.8),
+            (9.3, 7.3),
+            (10.8, 0.0),
+        ] {
+            close(r.at(t, name).speed, want, TOL, &format!("{name} v({t})"));
+        }
+        for t in [2.0, 4.0, 4.8, 5.8] {
+            close(
+                r.at(t, name).s,
+                s0 + stepped(v, 0.0, t),
+                TOL,
+                &format!("{name} s({t})"),
+            );
+        }
+        // The engine moves a vehicle along its heading: while it moves sideways at 0.25 m/s
+        // (5.8 to 7.8 s) s grows at √(14.8² − 0.25²) m/s, 2·(14.8 − 14.797888) = 0.0042 m
+        // less than the speed gives; the engine's steps of the offset change leave < 0.1 mm.
+        let sideways = 2.0 * (14.8 - (14.8f64 * 14.8 - 0.25 * 0.25).sqrt());
+        for t in [7.8, 10.8] {
+            close(
+                r.at(t, name).s,
+                s0 + stepped(v, 0.0, t) - sideways,
+                SIDEWAYS_TOL,
+                &format!("{name} s({t})"),
+            );
+        }
+        close(r.at(5.8, name).y, -5.25, TOL, &format!("{name} y(5.8)"));
+        close(r.at(6.8, name).y, -5.0, TOL, &format!("{name} y(6.8)"));
+        close(r.at(7.8, name).y, -4.75, TOL, &format!("{name} y(7.8)"));
+        close(r.at(10.8, name).h, 0.0, TOL, &format!("{name} h(10.8)"));
+        let end = r.at(11.8, name);
+        close(end.h, 0.5, TOL, &format!("{name} h(11.8)"));
+        close(end.speed, 0.0, TOL, &format!("{name} v(11.8)"));
+        close(
+            end.s,
+            r.at(10.8, name).s,
+            TOL,
+            &format!("{name} stands from 10.8 s"),
+        );
+    }
+    for (path, a, b) in [
+        ("do.a", 0.0, 1.0),
+        ("do.b", 1.0, 1.0),
+        ("do.c", 1.0, 2.0),
+        ("do.d", 2.0, 2.0),
+        ("do.e", 2.0, 4.0),
+        ("do.f", 4.0, 4.8),
+        ("do.gk", 4.8, 5.8),
+        ("do.h", 5.8, 7.8),
+        ("do.i", 7.8, 10.8),
+        ("do.j", 10.8, 10.8),
+        ("do.k", 10.8, 11.8),
+    ] {
+        let (s, e) = r.phase(path);
+        assert!(
+            (s - a).abs() < T_TOL && (e - b).abs() < T_TOL,
+            "{path} [{s}, {e}]"
+        );
+    }
+}
