@@ -356,3 +356,35 @@ fn the_other_group_forms_run_member_by_member() {
         );
     }
 }
+
+/// A lateral gap on a single-lane group: each member to the reference (group_lateral_gap.osc's
+/// comment; the stepped law of lateral_gap.osc).
+#[test]
+fn a_single_lane_groups_lateral_gap_is_each_members_to_the_reference() {
+    let r = run("actions/group_lateral_gap", 0, None);
+    for (name, s0) in [("g.vehicles[0]", 100.0), ("g.vehicles[1]", 85.0)] {
+        close(r.at(0.0, name).y, -8.75, TOL, &format!("{name} y(0)"));
+        close(r.at(2.0, name).y, -8.1095, LAW_TOL, &format!("{name} y(2)"));
+        let at_end = r.at(6.3, name).y;
+        assert!((at_end + 7.75).abs() <= 0.01, "{name} y(6.3) = {at_end}");
+        assert!(
+            (r.at(6.25, name).y + 7.75).abs() > 0.01,
+            "{name}: not a step earlier"
+        );
+        // Along its heading: ∫(v − √(v² − ẏ²))dt ≈ ∫ẏ²dt/(2v) = (ω/4 m²/s)/(2·20 m/s) with
+        // ẏ = ω²t·e^(−ωt) (1 m, ω = 1.0954 /s): 0.0068 m less s than 20 m/s gives.
+        let sideways = (0.4f64 * 3.0).sqrt() / 4.0 / 40.0;
+        close(
+            r.at(6.4, name).s,
+            s0 + 128.0 - sideways,
+            LAW_TOL,
+            &format!("{name} s(6.4)"),
+        );
+        assert_eq!(r.at(6.4, name).lane, -3, "{name} stays in its lane");
+    }
+    let (s, e) = r.phase("do.close");
+    assert!(
+        s.abs() < T_TOL && (e - 6.4).abs() < T_TOL,
+        "close [{s}, {e}]"
+    );
+}
