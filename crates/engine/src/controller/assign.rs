@@ -10,6 +10,7 @@ use super::table::{instantiate, requested, Assigned, ControllerTable};
 use super::view::ControllerView;
 use crate::error::Error;
 use crate::output::EventRecord;
+use crate::store::driver_inputs::DriverInput;
 use crate::store::lane_index::LaneIndex;
 use crate::store::World;
 use crate::world::ActiveDomains;
@@ -275,9 +276,12 @@ fn set_domains(
     if taken.longitudinal || taken.lateral {
         let index = LaneIndex::default();
         let (entities, network) = (&world.entities, &world.network);
+        let entity = &entities[actor.index()];
+        let input = DriverInput::of(entity, network);
         let view = ControllerView::new(
             origin.time,
-            &entities[actor.index()],
+            entity,
+            &input,
             entities,
             network,
             &index,

@@ -80,10 +80,8 @@ impl IdmController {
 
     /// The acceleration in the view.
     pub(crate) fn acceleration(&self, view: &ControllerView<'_>) -> Real {
-        self.params.acceleration(
-            view.entity().speed.max(0.0),
-            with_red_light(view, leader(view)),
-        )
+        self.params
+            .acceleration(view.speed().max(0.0), with_red_light(view, leader(view)))
     }
 
     pub(crate) fn on_activate(&mut self, view: &ControllerView<'_>) {

@@ -119,11 +119,12 @@ impl MobilController {
     /// Whether the controller may decide a lane change now, and a lane a LaneChangeAction
     /// asked for: `Err(lane)` to take it, `Ok(false)` no decision this step.
     fn may_decide(&mut self, view: &ControllerView<'_>) -> Result<bool, Option<i32>> {
-        let e = view.entity();
+        // The entity's inputs at the step's start (store/driver_inputs.rs), not the entity.
+        let e = view.input();
         let Some(track) = e.track.as_ref() else {
             return Ok(false);
         };
-        if track.blend.is_some() || e.lateral_action.is_some() {
+        if track.blend_from.is_some() || e.lateral_action {
             return Ok(false);
         }
         if let Some(lane) = self.pending.take() {
@@ -178,7 +179,7 @@ struct Own {
 
 impl Own {
     fn new(p: &IdmParameters, view: &ControllerView<'_>) -> Self {
-        let v = view.entity().speed.max(0.0);
+        let v = view.speed().max(0.0);
         let free = p.free_acceleration(v);
         let leader = view.leader();
         let light = view.red_light();

@@ -9,6 +9,7 @@ use super::*;
 use crate::controller::car_following::with_red_light;
 use crate::controller::view::NeighbourLane;
 use crate::domain::{BoundingBox, Vector3};
+use crate::store::driver_inputs::DriverInput;
 use crate::store::lane_index::LaneIndex;
 use crate::store::World;
 use crate::world::entity::{Entity, EntityId, EntityKind};
@@ -171,8 +172,17 @@ fn for_each_view(mut f: impl FnMut(u64, &World, &LaneIndex, &Entity, &Controller
         let w = crowded(60, seed);
         let index = LaneIndex::build(&w.network, w.entities());
         for e in w.entities() {
-            let view =
-                ControllerView::new(10.0, e, w.entities(), &w.network, &index, None, &w.signals);
+            let input = index.input(e.id.index()).expect("a row per entity");
+            let view = ControllerView::new(
+                10.0,
+                e,
+                input,
+                w.entities(),
+                &w.network,
+                &index,
+                None,
+                &w.signals,
+            );
             f(seed, &w, &index, e, &view);
         }
     }
@@ -266,4 +276,38 @@ fn the_kept_lane_handles_give_the_searches_of_handles_asked_each_time() {
     });
     // 2,400 cars on four lanes: each has one or two lanes beside.
     assert!(lanes_beside > 2_400, "{lanes_beside} lanes beside");
+}
+
+/// The driver inputs the lane index copies (store/driver_inputs.rs, issue 31) are the
+/// entity's own numbers bit for bit, and the own lane's handle, which the index takes from
+/// the look-up of its footprint where the road position names the track's lane at the same
+/// s, is the handle the network gives for the track's lane asked directly.
+#[test]
+fn the_driver_inputs_are_the_entitys_bit_for_bit() {
+    let mut tracks = 0;
+    for_each_view(|_, w, index, e, view| {
+        let row = index.input(e.id.index()).expect("a row per entity");
+        assert_eq!(row.id, e.id);
+        assert_eq!(row.placed, e.placed);
+        assert_eq!(row.lateral_action, e.lateral_action.is_some());
+        assert_eq!(row.speed.to_bits(), e.speed.to_bits(), "{}", e.name);
+        assert_eq!(view.speed().to_bits(), e.speed.to_bits(), "{}", e.name);
+        let Some(t) = e.track.as_ref() else {
+            assert!(row.track.is_none(), "{}", e.name);
+            return;
+        };
+        tracks += 1;
+        let r = row.track.expect("the entity has a track");
+        assert_eq!(
+            (r.road, r.lane_id, r.direction),
+            (t.road, t.lane_id, t.direction)
+        );
+        assert_eq!(r.s.to_bits(), t.s.to_bits(), "{}", e.name);
+        assert_eq!(r.blend_from, t.blend.as_ref().map(|b| b.from_lane));
+        let asked = w.network.lane_handle_on(t.road, t.lane_id, t.s);
+        assert!(asked.is_some(), "{} is on a lane", e.name);
+        assert_eq!(r.own, asked, "{}", e.name);
+        assert_eq!(*row, DriverInput::of(e, &w.network), "{}", e.name);
+    });
+    assert_eq!(tracks, 2_400, "every car of the 40 highways has a track");
 }

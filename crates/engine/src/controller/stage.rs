@@ -51,7 +51,10 @@ pub(crate) fn step(world: &mut World, controllers: &mut ControllerTable, time: R
         merged.resize(world.entities.len(), None);
         let (entities, network, signals) = (&world.entities, &world.network, &world.signals);
         for (i, ctrl) in controllers.iter_mut() {
-            let Some(e) = entities.get(i).filter(|e| e.placed) else {
+            // Whether the entity is placed, from the driver inputs the index copied (a line
+            // of the compact table, not of the 1.3 kB entity: store/driver_inputs.rs).
+            let (Some(e), Some(input)) = (entities.get(i), index.input(i).filter(|r| r.placed))
+            else {
                 continue;
             };
             let external = ctrl.external;
@@ -66,8 +69,9 @@ pub(crate) fn step(world: &mut World, controllers: &mut ControllerTable, time: R
                 else {
                     continue;
                 };
-                let view =
-                    ControllerView::new(time, e, entities, network, index, external, signals);
+                let view = ControllerView::new(
+                    time, e, input, entities, network, index, external, signals,
+                );
                 any = true;
                 match instance.step(&view, dt) {
                     Command::Pose(p) if held == MotionDomains::BOTH => m.pose = Some(p),

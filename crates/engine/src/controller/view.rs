@@ -18,6 +18,7 @@ use opendrive::{Direction, LaneHandle, Real, RoadNetwork, TrafficRule};
 
 use super::external::ExternalInput;
 use crate::signals::Signals;
+use crate::store::driver_inputs::DriverInput;
 use crate::store::lane_index::{LaneIndex, Neighbour};
 use crate::world::lanes::lane_shift;
 use crate::world::{Entity, EntityId};
@@ -98,28 +99,30 @@ pub struct ControllerView<'a> {
     index: &'a LaneIndex,
     external: Option<ExternalInput>,
     signals: &'a Signals,
-    /// The handle of the entity's own lane at its s, and its direction of travel
-    /// ([`lane_handle`](Self::lane_handle) of the track's lane), worked out once per view: a
-    /// `mobil` step asks for it up to five times (its leader, follower, both lanes beside).
-    own: Option<(LaneHandle, Direction)>,
+    /// What the driver models read of the entity, copied at the step's start
+    /// (store/driver_inputs.rs): the commands of `idm` and `mobil` read it instead of the
+    /// entity. Its track's `own` is the handle of the entity's own lane at its s
+    /// ([`lane_handle`](Self::lane_handle) of the track's lane): a `mobil` step asks for it up
+    /// to five times (its leader, follower, both lanes beside).
+    input: &'a DriverInput,
 }
 
 impl<'a> ControllerView<'a> {
-    /// The view of `entity` at `time`; `external` is the host's input for an `external`
-    /// controller; `signals` the signal states (for [`red_light`](Self::red_light)).
+    /// The view of `entity` at `time`; `input` its driver inputs (the same entity's, at
+    /// `time`); `external` is the host's input for an `external` controller; `signals` the
+    /// signal states (for [`red_light`](Self::red_light)).
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn new(
         time: Real,
         entity: &'a Entity,
+        input: &'a DriverInput,
         entities: &'a [Entity],
         network: &'a RoadNetwork,
         index: &'a LaneIndex,
         external: Option<ExternalInput>,
         signals: &'a Signals,
     ) -> Self {
-        let own = entity.track.as_ref().and_then(|t| {
-            let h = network.lane_handle_on(t.road, t.lane_id, t.s)?;
-            Some((h, t.direction))
-        });
+        debug_assert_eq!(input.id, entity.id, "the inputs are the entity's");
         ControllerView {
             time,
             entity,
@@ -128,7 +131,7 @@ impl<'a> ControllerView<'a> {
             index,
             external,
             signals,
-            own,
+            input,
         }
     }
 
@@ -157,6 +160,17 @@ impl<'a> ControllerView<'a> {
         self.entity
     }
 
+    /// The entity's speed (m/s): [`entity`](Self::entity)'s, read from the step's driver
+    /// inputs.
+    pub fn speed(&self) -> Real {
+        self.input.speed
+    }
+
+    /// What the driver models read of the entity (store/driver_inputs.rs).
+    pub(crate) fn input(&self) -> &'a DriverInput {
+        self.input
+    }
+
     /// Another entity.
     pub fn other(&self, id: EntityId) -> &'a Entity {
         &self.entities[id.index()]
@@ -169,16 +183,16 @@ impl<'a> ControllerView<'a> {
 
     /// How far gap searches look (m): `HORIZON_BASE` (150 m) + `HORIZON_TIME` (10 s) × speed.
     pub fn horizon(&self) -> Real {
-        HORIZON_BASE + HORIZON_TIME * self.entity.speed.abs()
+        HORIZON_BASE + HORIZON_TIME * self.input.speed.abs()
     }
 
     /// The lane handle of the entity's lane `lane` at its s, and its direction of travel.
     fn lane_handle(&self, lane: i32) -> Option<(LaneHandle, Direction)> {
-        let track = self.entity.track.as_ref()?;
+        let track = self.input.track.as_ref()?;
         if lane == track.lane_id {
-            // The question the view answered when it was made: the view borrows the entity,
-            // so its track (road, lane, s) cannot have changed since.
-            return self.own;
+            // The question the inputs answered when they were copied from the entity at the
+            // step's start, which no command changes.
+            return track.own.map(|h| (h, track.direction));
         }
         let h = self.network.lane_handle_on(track.road, lane, track.s)?;
         Some((h, track.direction))
@@ -201,13 +215,13 @@ impl<'a> ControllerView<'a> {
     /// `lane`: its own lane, the one with the larger id or the one with the smaller (lane
     /// index "Hints").
     fn hint(&self, lane: i32, query: usize) -> Option<&'a AtomicU32> {
-        let own = self.entity.track.as_ref().map_or(lane, |t| t.lane_id);
+        let own = self.input.track.as_ref().map_or(lane, |t| t.lane_id);
         let which = match lane.cmp(&own) {
             std::cmp::Ordering::Equal => 0,
             std::cmp::Ordering::Greater => 1,
             std::cmp::Ordering::Less => 2,
         };
-        self.index.hint(self.entity.id, which * 3 + query)
+        self.index.hint(self.input.id, which * 3 + query)
     }
 
     /// The nearest entity ahead in `lane` from the front bumper, along the lane the entity
@@ -218,16 +232,20 @@ impl<'a> ControllerView<'a> {
 
     /// [`ahead_in`](Self::ahead_in) with the lane's handle and direction of travel known.
     fn ahead_on(&self, lane: i32, (h, dir): (LaneHandle, Direction)) -> Option<Gap> {
-        let me = self.index.footprint(self.entity.id)?;
+        let me = self.index.footprint(self.input.id)?;
         let net = self.network;
-        let route = self.entity.route_follow.as_ref();
-        let mut choose = |road: &str, c: &[LaneHandle]| route.and_then(|r| r.peek(net, road, c));
+        // The entity's route is read where a road ends only (it is not one of the inputs).
+        let entity = self.entity;
+        let mut choose = |road: &str, c: &[LaneHandle]| {
+            let route = entity.route_follow.as_ref();
+            route.and_then(|r| r.peek(net, road, c))
+        };
         let n = self.index.nearest(
             net,
             h,
             me.front(dir),
             dir,
-            self.entity.id,
+            self.input.id,
             self.horizon(),
             &mut choose,
             self.hint(lane, 0),
@@ -242,13 +260,13 @@ impl<'a> ControllerView<'a> {
 
     /// [`behind_in`](Self::behind_in) with the lane's handle and direction of travel known.
     fn behind_on(&self, lane: i32, (h, dir): (LaneHandle, Direction)) -> Option<Gap> {
-        let me = self.index.footprint(self.entity.id)?;
+        let me = self.index.footprint(self.input.id)?;
         let n = self.index.nearest(
             self.network,
             h,
             me.rear(dir),
             dir.reverse(),
-            self.entity.id,
+            self.input.id,
             self.horizon(),
             &mut |_, _| None,
             self.hint(lane, 1),
@@ -259,12 +277,12 @@ impl<'a> ControllerView<'a> {
     /// The vehicle (or any entity) ahead: the nearest in the entity's lane, and during a lane
     /// change also in the lane it leaves.
     pub fn leader(&self) -> Option<Gap> {
-        let track = self.entity.track.as_ref()?;
+        let track = self.input.track.as_ref()?;
         let here = self.ahead_in(track.lane_id);
         let left = track
-            .blend
-            .filter(|b| b.from_lane != track.lane_id)
-            .and_then(|b| self.ahead_in(b.from_lane));
+            .blend_from
+            .filter(|&from| from != track.lane_id)
+            .and_then(|from| self.ahead_in(from));
         match (here, left) {
             (Some(a), Some(b)) => Some(if b.gap < a.gap { b } else { a }),
             (a, b) => a.or(b),
@@ -273,7 +291,7 @@ impl<'a> ControllerView<'a> {
 
     /// The nearest entity behind in the entity's own lane.
     pub fn follower(&self) -> Option<Gap> {
-        let track = self.entity.track.as_ref()?;
+        let track = self.input.track.as_ref()?;
         self.behind_in(track.lane_id)
     }
 
@@ -297,8 +315,8 @@ impl<'a> ControllerView<'a> {
     /// make when asked: a lane change that is ruled out without them (occupied, a mark not to
     /// be crossed) costs no search.
     pub(crate) fn beside(&self, side: Side) -> Option<Beside> {
-        let track = self.entity.track.as_ref()?;
-        let me = self.index.footprint(self.entity.id)?;
+        let track = self.input.track.as_ref()?;
+        let me = self.index.footprint(self.input.id)?;
         let n = match side {
             Side::Left => 1,
             Side::Right => -1,
@@ -309,7 +327,7 @@ impl<'a> ControllerView<'a> {
         let drivable = section
             .lane(lane)
             .is_some_and(|l| l.lane_type.is_drivable());
-        let (own, _) = self.own?;
+        let own = track.own?;
         let at = self.lane_handle(lane)?;
         let h = at.0;
         let same_way = self.network.driving_direction(h) == self.network.driving_direction(own);
@@ -325,7 +343,7 @@ impl<'a> ControllerView<'a> {
             at,
             occupied: self
                 .index
-                .overlapping(h, me.s_range, self.entity.id, self.hint(lane, 2))
+                .overlapping(h, me.s_range, self.input.id, self.hint(lane, 2))
                 .next()
                 .is_some(),
             toward_keep_side: side == keep,
@@ -349,10 +367,9 @@ impl<'a> ControllerView<'a> {
 
     /// The entity's length along its direction of travel (m): its box's s-range.
     pub fn length(&self) -> Real {
-        self.index
-            .footprint(self.entity.id)
-            .map_or(self.entity.bounding_box.length(), |f| {
-                f.s_range.1 - f.s_range.0
-            })
+        self.index.footprint(self.input.id).map_or_else(
+            || self.entity.bounding_box.length(),
+            |f| f.s_range.1 - f.s_range.0,
+        )
     }
 }

@@ -44,6 +44,7 @@ use std::sync::Arc;
 
 use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork};
 
+use super::driver_inputs::DriverInput;
 use super::lane_slots::{LaneBorders, LaneSlots};
 use crate::world::entity::{Entity, EntityId};
 
@@ -174,6 +175,8 @@ pub struct LaneIndex {
     borders: LaneBorders,
     /// [`HINTS`] per entity: where each kind of search found its answer the last time.
     hints: Vec<AtomicU32>,
+    /// The driver models' inputs, by entity index (store/driver_inputs.rs).
+    inputs: Vec<Option<DriverInput>>,
 }
 
 /// The s- and t-ranges of `e`'s box on a road where its reference point is at (s, t) and its
@@ -226,39 +229,20 @@ impl LaneIndex {
             self.hints
                 .resize_with(entities.len() * HINTS, || AtomicU32::new(0));
         }
+        if self.inputs.len() != entities.len() {
+            self.inputs.resize(entities.len(), None);
+        }
         for e in entities {
-            if !e.placed || !e.visibility.traffic {
-                continue;
-            }
-            let Some(rp) = e.road_position.as_ref().filter(|rp| rp.distance <= ON_ROAD) else {
-                continue;
-            };
-            // The road by the handle the position carries (the world's network made it), not
-            // by its id: no look-up, no read of the id string.
-            let road_handle = rp.road;
-            let Some(road) = net.roads().get(road_handle.index()) else {
-                continue;
-            };
-            let (s_range, t_range) = box_ranges(e, rp.s, rp.t, rp.relative_heading);
-            let speed_s = match &e.track {
-                Some(track) if track.direction == Direction::Forward => e.speed,
-                Some(_) => -e.speed,
-                None => e.speed * rp.relative_heading.cos(),
-            };
-            let Some(handle) = net.lane_handle_on(road_handle, rp.lane_id, rp.s) else {
-                continue;
-            };
-            self.insert(road_handle, road, rp.s, s_range, t_range, e.id);
-            if let Some(junction) = road.junction.as_deref().and_then(|j| net.junction(j)) {
-                self.insert_in_junction(net, junction, road, e);
-            }
-            self.footprints[e.id.index()] = Some(Footprint {
-                handle,
-                s: rp.s,
-                s_range,
-                t_range,
-                speed_s,
+            let looked_up = self.enter(net, e);
+            // The track's lane at the track's s is the lane the road position names wherever
+            // the two agree (the common case): its handle is the one just looked up.
+            let input = DriverInput::with_own(e, |road, lane, s| match looked_up {
+                Some((r, l, at, h)) if (r, l) == (road, lane) && at.to_bits() == s.to_bits() => {
+                    Some(h)
+                }
+                _ => net.lane_handle_on(road, lane, s),
             });
+            self.inputs[e.id.index()] = Some(input);
         }
         // (lo, id) orders the entries of a lane totally (an entity is entered in a lane
         // once), so the unstable sort gives the one order there is, without a buffer.
@@ -267,6 +251,46 @@ impl LaneIndex {
                 .entries
                 .sort_unstable_by(|a, b| a.lo.total_cmp(&b.lo).then(a.id.cmp(&b.id)));
         }
+    }
+
+    /// Enters `e` in the index and keeps its footprint (module doc), when it is placed, visible
+    /// to traffic and on a road; returns the lane look-up made for its footprint: road, lane,
+    /// s and the handle found.
+    fn enter(
+        &mut self,
+        net: &Arc<RoadNetwork>,
+        e: &Entity,
+    ) -> Option<(RoadHandle, i32, Real, LaneHandle)> {
+        if !e.placed || !e.visibility.traffic {
+            return None;
+        }
+        let rp = e
+            .road_position
+            .as_ref()
+            .filter(|rp| rp.distance <= ON_ROAD)?;
+        // The road by the handle the position carries (the world's network made it), not
+        // by its id: no look-up, no read of the id string.
+        let road_handle = rp.road;
+        let road = net.roads().get(road_handle.index())?;
+        let (s_range, t_range) = box_ranges(e, rp.s, rp.t, rp.relative_heading);
+        let speed_s = match &e.track {
+            Some(track) if track.direction == Direction::Forward => e.speed,
+            Some(_) => -e.speed,
+            None => e.speed * rp.relative_heading.cos(),
+        };
+        let handle = net.lane_handle_on(road_handle, rp.lane_id, rp.s)?;
+        self.insert(road_handle, road, rp.s, s_range, t_range, e.id);
+        if let Some(junction) = road.junction.as_deref().and_then(|j| net.junction(j)) {
+            self.insert_in_junction(net, junction, road, e);
+        }
+        self.footprints[e.id.index()] = Some(Footprint {
+            handle,
+            s: rp.s,
+            s_range,
+            t_range,
+            speed_s,
+        });
+        Some((road_handle, rp.lane_id, rp.s, handle))
     }
 
     /// Enters `id` with footprint `s_range` × `t_range` in every lane of `road`'s section at
@@ -368,6 +392,11 @@ impl LaneIndex {
     fn lane(&self, h: LaneHandle) -> Option<&LaneEntries> {
         let slot = self.slots.as_ref()?.slot(h)?;
         self.lanes.get(slot)
+    }
+
+    /// The driver models' inputs of entity `index` in this step (store/driver_inputs.rs).
+    pub fn input(&self, index: usize) -> Option<&DriverInput> {
+        self.inputs.get(index)?.as_ref()
     }
 
     /// The footprint of entity `id` in this step, if it stands on a road.

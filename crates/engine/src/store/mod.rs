@@ -8,12 +8,14 @@
 //! | --- | --- |
 //! | `world` | `World`: road network + entity store + values; `EntityQuery` / `ConditionContext` |
 //! | `object` | an `Entity` from its ScenarioObject (also the template of spawned vehicles) |
+//! | `driver_inputs` | the driver models' per-step inputs per entity, a compact copy filled with the lane index |
 //! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |
 //! | `lane_slots` | the lane index's dense lane numbers and lane borders kept per road |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
 //! | `targets` | what an action's target asks for now: `entityRef`, SpeedActionTarget, LaneChangeTarget |
 //! | `trailer` | trailer connections and the one-axle trailer kinematics |
 
+pub(crate) mod driver_inputs;
 pub(crate) mod lane_index;
 mod lane_slots;
 mod object;
