@@ -11,181 +11,149 @@
 //! numbers).
 
 use crate::error::{Error, ErrorKind};
-use crate::world::entity::Entity;
-
-/// The first state value of `e` that is not finite, by name.
-fn first_non_finite(e: &Entity) -> Option<(&'static str, f64)> {
-    let p = &e.pose;
-    let v = &e.velocity;
-    let a = &e.acceleration;
-    let values = [
-        ("x", p.x),
-        ("y", p.y),
-        ("z", p.z),
-        ("heading", p.h),
-        ("pitch", p.p),
-        ("roll", p.r),
-        ("speed", e.speed),
-        ("velocity x", v.translational.x),
-        ("velocity y", v.translational.y),
-        ("velocity z", v.translational.z),
-        ("yaw rate", v.rotational.z),
-        ("acceleration x", a.translational.x),
-        ("acceleration y", a.translational.y),
-        ("acceleration z", a.translational.z),
-    ];
-    let road = e
-        .road_position
-        .as_ref()
-        .map(|r| [("road s", r.s), ("road t", r.t), ("lane offset", r.offset)]);
-    // On the stack, in the order of the message: no allocation per entity and step.
-    values
-        .into_iter()
-        .chain(road.into_iter().flatten())
-        .find(|(_, value)| !value.is_finite())
-}
-
-/// Whether every state value of `e` is finite, in one pass without branches: x·0 is 0 for a
-/// finite x and NaN for ±inf and NaN, so the sum is 0 exactly when all are finite.
-#[inline]
-fn all_finite(e: &Entity) -> bool {
-    let p = &e.pose;
-    let v = &e.velocity;
-    let a = &e.acceleration;
-    let (s, t, offset) = e
-        .road_position
-        .as_ref()
-        .map_or((0.0, 0.0, 0.0), |r| (r.s, r.t, r.offset));
-    let values = [
-        p.x,
-        p.y,
-        p.z,
-        p.h,
-        p.p,
-        p.r,
-        e.speed,
-        v.translational.x,
-        v.translational.y,
-        v.translational.z,
-        v.rotational.z,
-        a.translational.x,
-        a.translational.y,
-        a.translational.z,
-        s,
-        t,
-        offset,
-    ];
-    values.iter().map(|x| x * 0.0).sum::<f64>() == 0.0
-}
+use crate::world::entity::{Entity, EntityId};
+use crate::world::finite::{all_finite, first_non_finite};
 
 /// Checks every placed entity of `entities` at simulation time `time`; the first entity whose
 /// state is not finite, by name, and the error.
 pub(crate) fn check(entities: &[Entity], time: f64) -> Result<(), (String, Error)> {
-    for e in entities.iter().filter(|e| e.placed && !all_finite(e)) {
-        if let Some((quantity, value)) = first_non_finite(e) {
-            let error = Error::new(ErrorKind::NonFinite {
-                entity: e.name.clone(),
-                quantity,
-                value,
-                time,
-            });
-            return Err((e.name.clone(), error));
-        }
-    }
-    Ok(())
+    entities
+        .iter()
+        .filter(|e| e.placed && !all_finite(e))
+        .find_map(|e| error_of(e, time))
+        .map_or(Ok(()), Err)
+}
+
+/// The check of a step whose moves tested each entity they moved (controller/stage.rs, in its
+/// own walk over the entities: issue 31). `moved`: every placed entity was finite after its
+/// move. `later`: the entities changed after the moves, the trailers placed behind their tows
+/// (store/trailer.rs), or `None` when those changes are not known one by one (a traffic action
+/// ran: it spawns, removes and places vehicles). Every other entity is as the moves left it,
+/// so the first entity that is not finite, by index, is the first of `later` that is not; with
+/// `None`, or when a moved entity was not finite, every entity is checked ([`check`]). Either
+/// way the error names the entity and value [`check`] over every entity names.
+pub(crate) fn check_after_moves(
+    entities: &[Entity],
+    moved: bool,
+    later: Option<impl Iterator<Item = EntityId>>,
+    time: f64,
+) -> Result<(), (String, Error)> {
+    let Some(later) = later.filter(|_| moved) else {
+        return check(entities, time);
+    };
+    later
+        .filter_map(|id| entities.get(id.index()))
+        .filter(|e| e.placed && !all_finite(e))
+        .map(|e| e.id)
+        .min()
+        .and_then(|id| error_of(&entities[id.index()], time))
+        .map_or(Ok(()), Err)
+}
+
+/// The entity's name and the error of its first value that is not finite, if any.
+fn error_of(e: &Entity, time: f64) -> Option<(String, Error)> {
+    let (quantity, value) = first_non_finite(e)?;
+    let error = Error::new(ErrorKind::NonFinite {
+        entity: e.name.clone(),
+        quantity,
+        value,
+        time,
+    });
+    Some((e.name.clone(), error))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::domain::{BoundingBox, Vector3};
-    use crate::world::entity::{EntityId, EntityKind};
+    use crate::world::finite::tests::{car, slot};
 
-    fn car() -> Entity {
-        let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 5.0, 2.0, 1.5).expect("box");
-        let mut e = Entity::new(EntityId(0), "car", EntityKind::Vehicle, b);
-        e.road_position = Some(opendrive::RoadPosition {
-            road_id: "1".into(),
-            road: opendrive::RoadHandle(0),
-            lane_id: -1,
-            s: 10.0,
-            t: -1.75,
-            offset: 0.0,
-            junction_id: None,
-            relative_heading: 0.0,
-            distance: 0.0,
-        });
-        e
-    }
-
-    /// Every value of the state, by the name first_non_finite reports it with.
-    fn slot<'a>(e: &'a mut Entity, name: &str) -> &'a mut f64 {
-        let rp = e.road_position.as_mut().expect("set above");
-        match name {
-            "x" => &mut e.pose.x,
-            "y" => &mut e.pose.y,
-            "z" => &mut e.pose.z,
-            "heading" => &mut e.pose.h,
-            "pitch" => &mut e.pose.p,
-            "roll" => &mut e.pose.r,
-            "speed" => &mut e.speed,
-            "velocity x" => &mut e.velocity.translational.x,
-            "velocity y" => &mut e.velocity.translational.y,
-            "velocity z" => &mut e.velocity.translational.z,
-            "yaw rate" => &mut e.velocity.rotational.z,
-            "acceleration x" => &mut e.acceleration.translational.x,
-            "acceleration y" => &mut e.acceleration.translational.y,
-            "acceleration z" => &mut e.acceleration.translational.z,
-            "road s" => &mut rp.s,
-            "road t" => &mut rp.t,
-            "lane offset" => &mut rp.offset,
-            _ => unreachable!("{name}"),
-        }
-    }
-
-    const NAMES: [&str; 17] = [
-        "x",
-        "y",
-        "z",
-        "heading",
-        "pitch",
-        "roll",
-        "speed",
-        "velocity x",
-        "velocity y",
-        "velocity z",
-        "yaw rate",
-        "acceleration x",
-        "acceleration y",
-        "acceleration z",
-        "road s",
-        "road t",
-        "lane offset",
-    ];
-
-    /// The one-pass test agrees with the named search for each value set to NaN, +inf and
-    /// −inf, and lets finite extremes through (f64::MAX everywhere: x·0 = 0, no overflow).
-    #[test]
-    fn the_fast_test_finds_every_non_finite_value() {
-        let e = car();
-        assert!(all_finite(&e) && first_non_finite(&e).is_none());
-        for name in NAMES {
-            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+    /// Three placed cars named a, b, c (indices 0, 1, 2), with `bad` values set to NaN by
+    /// (index, quantity).
+    fn cars(bad: &[(usize, &str)]) -> Vec<Entity> {
+        let mut cars: Vec<Entity> = (0..3u32)
+            .map(|i| {
                 let mut e = car();
-                *slot(&mut e, name) = bad;
-                assert!(!all_finite(&e), "{name} = {bad}");
-                assert_eq!(first_non_finite(&e).map(|(n, _)| n), Some(name));
+                e.id = EntityId(i);
+                e.name = ["a", "b", "c"][i as usize].to_owned();
+                e.placed = true;
+                e
+            })
+            .collect();
+        for &(i, name) in bad {
+            *slot(&mut cars[i], name) = f64::NAN;
+        }
+        cars
+    }
+
+    /// The guard's outcome as text: the entity and the error's message, or "ok".
+    fn text(r: Result<(), (String, Error)>) -> String {
+        match r {
+            Ok(()) => "ok".to_owned(),
+            Err((name, e)) => format!("{name}: {e}"),
+        }
+    }
+
+    /// The check over every entity names the first by index and its first value by name.
+    #[test]
+    fn the_check_names_the_first_entity_and_value_that_is_not_finite() {
+        assert_eq!(text(check(&cars(&[]), 1.0)), "ok");
+        let found = text(check(
+            &cars(&[(2, "speed"), (1, "yaw rate"), (1, "y")]),
+            1.0,
+        ));
+        assert_eq!(
+            found,
+            "b: expected a finite y of entity 'b' at t = 1.000 s, found NaN (an overflow of \
+             extreme values)"
+        );
+        let mut unplaced = cars(&[(0, "x")]);
+        unplaced[0].placed = false;
+        assert_eq!(text(check(&unplaced, 1.0)), "ok");
+    }
+
+    /// Wherever the values that are not finite lie (none, a trailer, a moved entity, both,
+    /// an unplaced trailer) and whatever the moves and the traffic stage report, the guard
+    /// after the moves names what the check over every entity names, as long as the moves'
+    /// report is true: `moved` is false when a moved entity is not finite (the trailers are
+    /// moved as well before they follow their tows), and every entity not in `later` is
+    /// as the moves left it.
+    #[test]
+    fn the_guard_after_the_moves_names_what_the_check_of_all_names() {
+        // (bad values, trailers, the first trailer unplaced)
+        type Case<'a> = (&'a [(usize, &'a str)], &'a [u32], bool);
+        let cases: [Case<'_>; 7] = [
+            (&[], &[], false),
+            (&[], &[1], false),
+            (&[(1, "roll")], &[1], false),
+            (&[(2, "road t"), (1, "z")], &[2, 1], false),
+            (&[(2, "lane offset")], &[0, 2], false),
+            (&[(0, "speed")], &[0], true),
+            (&[(1, "x"), (2, "x")], &[2], false),
+        ];
+        for (bad, trailers, unplaced) in cases {
+            let mut entities = cars(bad);
+            if unplaced {
+                entities[trailers[0] as usize].placed = false;
             }
+            let all = text(check(&entities, 2.5));
+            let later = || trailers.iter().map(|&i| EntityId(i));
+            // The moves found every entity not in `later` finite.
+            let moved = entities
+                .iter()
+                .filter(|e| !trailers.contains(&e.id.0))
+                .all(|e| !e.placed || all_finite(e));
+            let fast = text(check_after_moves(&entities, moved, Some(later()), 2.5));
+            assert_eq!(fast, all, "{bad:?} trailers {trailers:?}");
+            let none = text(check_after_moves(
+                &entities,
+                moved,
+                None::<std::iter::Empty<_>>,
+                2.5,
+            ));
+            assert_eq!(none, all, "{bad:?}, a traffic action ran");
+            // A non-finite moved entity: everything is checked.
+            let slow = text(check_after_moves(&entities, false, Some(later()), 2.5));
+            assert_eq!(slow, all, "{bad:?}, a moved entity was not finite");
         }
-        let mut e = car();
-        for name in NAMES {
-            *slot(&mut e, name) = f64::MAX;
-        }
-        assert!(all_finite(&e) && first_non_finite(&e).is_none());
-        e.placed = true;
-        assert!(check(std::slice::from_ref(&e), 1.0).is_ok());
-        *slot(&mut e, "yaw rate") = f64::NAN;
-        let (name, _) = check(std::slice::from_ref(&e), 1.0).expect_err("NaN yaw rate");
-        assert_eq!(name, "car");
     }
 }

@@ -12,7 +12,7 @@
 //! | `conditions` | the storyboard's `ConditionSource` |
 //! | `trigger_view` | the step-start world that all triggers of a step see |
 //! | `external` | ExternalObjectReference entities placed at their OpenDRIVE objects |
-//! | `finite` | the step's guard: no non-finite entity state reaches a frame |
+//! | `finite` | the step's guard: no non-finite entity state reaches a frame (the moves test what they move) |
 //! | `engine` | `Engine`: the built scenario and its API |
 //! | `read` | what the engine answers between steps, as plain values (`Engine::entities`, …) |
 //! | `step` | the fixed step, one private method per stage |

@@ -80,9 +80,9 @@ impl Engine {
             return Ok(self.stopped);
         }
         self.actions(time, dt);
-        self.controllers(time, dt);
+        let moved = self.controllers(time, dt);
         let time = self.measurements(dt, &log);
-        self.output(time, log, frames, events)?;
+        self.output(time, moved, log, frames, events)?;
 
         let end = self.config.end_time();
         // Within a millionth of a step of the end: round-off of steps · dt, at any dt.
@@ -203,18 +203,23 @@ impl Engine {
 
     /// Stage 3: user controllers give their commands, then every entity moves
     /// (controller/stage.rs); towed vehicles follow their tows' hitches (store/trailer.rs);
-    /// traffic sources, sinks and swarms spawn and remove (traffic).
-    fn controllers(&mut self, time: f64, dt: f64) {
+    /// traffic sources, sinks and swarms spawn and remove (traffic). Returns what the moves
+    /// found of the entities' states for the output stage's guard: `Moved::finite`, every
+    /// placed entity was finite after its move; `Moved::traffic`, a traffic action ran after
+    /// the moves.
+    fn controllers(&mut self, time: f64, dt: f64) -> Moved {
         let clock = Instant::now();
         let world = self.world.get_mut();
-        crate::controller::stage::step(world, &mut self.controllers, time, dt);
+        let finite = crate::controller::stage::step(world, &mut self.controllers, time, dt);
         crate::store::trailer::follow(world, dt);
+        let traffic = self.traffic.is_running();
         let mut tables = Tables {
             traffic: &mut self.traffic,
             controllers: &mut self.controllers,
         };
         crate::traffic::step(world, &mut tables, dt);
         self.counters.controllers += clock.elapsed();
+        Moved { finite, traffic }
     }
 
     /// Stage 4: time advances to t + dt (the measurements were taken by the controllers'
@@ -236,6 +241,7 @@ impl Engine {
     fn output(
         &mut self,
         time: f64,
+        moved: Moved,
         log: Log,
         frames: &mut dyn FrameSink,
         events: &mut dyn EventSink,
@@ -244,7 +250,12 @@ impl Engine {
         let world = self.world.get_mut();
         let mut log = log.into_inner();
         log.append(&mut self.traffic.events);
-        if let Err((entity, e)) = super::finite::check(&world.entities, time) {
+        // The moves tested every entity they moved; the trailers placed after them are
+        // tested here, and everything when a traffic action ran (runtime/finite.rs).
+        let later = (!moved.traffic).then(|| world.trailers.trailers());
+        if let Err((entity, e)) =
+            super::finite::check_after_moves(&world.entities, moved.finite, later, time)
+        {
             log.push(EventRecord::error(time, &entity, &e));
             emit(&log, events)?;
             return Err(e);
@@ -256,6 +267,15 @@ impl Engine {
         self.counters.output += clock.elapsed();
         Ok(())
     }
+}
+
+/// What the controllers stage found of the entities' states (`Engine::controllers`).
+#[derive(Debug, Clone, Copy)]
+struct Moved {
+    /// Every placed entity's state was finite after its move.
+    finite: bool,
+    /// A traffic action ran after the moves (it may have spawned or placed vehicles).
+    traffic: bool,
 }
 
 /// Hands the step's records to the event sink.

@@ -78,6 +78,11 @@ impl Trailers {
         self.links.iter().find(|l| l.tow == tow).map(|l| l.trailer)
     }
 
+    /// Every trailer connected now (the entities `follow` places behind their tows).
+    pub fn trailers(&self) -> impl Iterator<Item = EntityId> + '_ {
+        self.links.iter().map(|l| l.trailer)
+    }
+
     /// The vehicle pulling `trailer`, if any.
     pub fn tow_of(&self, trailer: EntityId) -> Option<EntityId> {
         self.links

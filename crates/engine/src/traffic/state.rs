@@ -47,6 +47,12 @@ pub(crate) struct Tables<'a> {
 }
 
 impl Traffic {
+    /// Some traffic action is at work (the traffic stage will spawn, remove or place
+    /// vehicles).
+    pub(crate) fn is_running(&self) -> bool {
+        !self.running.is_empty()
+    }
+
     /// No traffic action at work yet; spawned vehicles without a controller of their own get
     /// `model` ([`EngineConfig::traffic_model`](crate::EngineConfig::traffic_model)).
     pub(crate) fn new(model: Option<TrafficModel>) -> Self {

@@ -8,6 +8,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `entity` | entity state (pose, road position, speed, …), `EntityId`, `EntityKind`, `ControllerOverrides` |
+//! | `finite` | whether an entity's state is finite (the step's finite-state guard's test) |
 //! | `environment` | the environment in force (§7.7.1 EnvironmentAction) and the scenario's clock |
 //! | `date_time` | `xsd:dateTime` to seconds since 1970 (TimeOfDay, TimeOfDayCondition) |
 //! | `domains` | `ActiveDomains`: the four domains of §6.6.1 a controller is active on |
@@ -21,6 +22,7 @@ pub(crate) mod date_time;
 mod domains;
 pub(crate) mod entity;
 mod environment;
+pub(crate) mod finite;
 pub(crate) mod lane_change;
 pub(crate) mod lanes;
 pub(crate) mod route_follow;

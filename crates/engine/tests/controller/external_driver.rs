@@ -21,6 +21,16 @@ fn ego(engine: &Engine) -> (f64, f64, f64) {
     (e.pose.x, e.speed, e.pose.h)
 }
 
+/// idm_free_road.xosc with Ego's `external` controller attached, after its first step.
+fn attached() -> Engine {
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/files/controller/idm_free_road.xosc");
+    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
+    engine.attach_external("Ego").expect("attached");
+    engine.step(&mut (), &mut ()).expect("init step");
+    engine
+}
+
 fn steps(engine: &mut Engine, input: DriverInputs, n: usize) {
     engine
         .set_external_input("Ego", ExternalInput::Driver(input))
@@ -38,11 +48,7 @@ fn steps(engine: &mut Engine, input: DriverInputs, n: usize) {
 /// BrakePercent 0.5: 5 m/s² stops it in 0.5 s, and it stays stopped (brakes never reverse).
 #[test]
 fn external_driver_inputs_drive_the_vehicle_model() {
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/files/controller/idm_free_road.xosc");
-    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
-    engine.attach_external("Ego").expect("attached");
-    engine.step(&mut (), &mut ()).expect("init step");
+    let mut engine = attached();
     let (x0, v0, h0) = ego(&engine);
     assert_eq!((v0, h0), (0.0, 0.0));
 
@@ -93,11 +99,7 @@ fn external_driver_inputs_drive_the_vehicle_model() {
 /// of 0.05 s).
 #[test]
 fn bad_external_inputs_are_refused_and_the_last_good_one_holds() {
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/files/controller/idm_free_road.xosc");
-    let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
-    engine.attach_external("Ego").expect("attached");
-    engine.step(&mut (), &mut ()).expect("init step");
+    let mut engine = attached();
     let accelerate = ExternalInput::Acceleration {
         acceleration: 2.0,
         steering: None,
@@ -157,4 +159,31 @@ fn bad_external_inputs_are_refused_and_the_last_good_one_holds() {
     }
     let (_, v, _) = ego(&engine);
     assert!((v - 2.0).abs() < EXACT, "speed {v}");
+}
+
+/// A controller's command whose result overflows is caught by the step's guard with the same
+/// error as before the guard moved into the moves' walk (issue 31): Ego, at rest at x0, is
+/// given the pose x = 1.7e308 (finite) in the step from 0.05 s; its speed along the heading,
+/// (1.7e308 − x0) / 0.05 s = 3.4e309 m/s, is beyond f64::MAX. The step is refused at
+/// t = 0.10 s naming Ego's speed, the first state value (pose, then speed) that is not
+/// finite.
+#[test]
+fn a_command_that_overflows_is_refused_with_the_guards_error() {
+    let mut engine = attached();
+    let far = opendrive::Pose {
+        x: 1.7e308,
+        ..opendrive::Pose::default()
+    };
+    engine
+        .set_external_input("Ego", ExternalInput::Pose(far))
+        .expect("a finite pose");
+    let error = engine
+        .step(&mut (), &mut ())
+        .expect_err("the overflow is refused");
+    assert!(matches!(error.kind(), engine::ErrorKind::NonFinite { .. }));
+    assert_eq!(
+        error.to_string(),
+        "expected a finite speed of entity 'Ego' at t = 0.100 s, found inf (an overflow of \
+         extreme values)"
+    );
 }
