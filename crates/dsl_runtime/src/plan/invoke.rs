@@ -330,6 +330,18 @@ impl Planner<'_> {
                             continue;
                         }
                         let (t, len) = need_len("acceleration(…)")?;
+                        if let Some((x, delta, pieces)) = self.followed_acceleration(m, (t, len))? {
+                            let n = name("acceleration");
+                            self.plan_followed_acceleration(
+                                m,
+                                target,
+                                (t, x, delta),
+                                &pieces,
+                                n,
+                                out,
+                            )?;
+                            continue;
+                        }
                         let a = self.acceleration_value(m, (t, len))?;
                         check_accel(m, a)?;
                         let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);

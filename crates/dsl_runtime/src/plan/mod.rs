@@ -63,6 +63,7 @@
 //! | `lane_fields` | the lane a `lane` field names for `change_lane`/`follow_lane(target: l)`: bound or drawn once |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
+//! | `acceleration_follow` | `acceleration(…)` relative to another actor that the engine follows step by step |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
@@ -76,6 +77,7 @@ use crate::resolve::{
 use crate::road::PlanRoad;
 use crate::track::Track;
 
+mod acceleration_follow;
 mod action_args;
 mod car_following;
 mod checks;

@@ -174,7 +174,8 @@ impl Planner<'_> {
     /// actor's acceleration relative to x's): `faster_than: x` x's + a, `slower_than: x`
     /// x's − a, `same_as: x` x's. x's is its value as the phase starts (`at: start`), as it
     /// ends (`at: end`), or the one it keeps over the whole phase (`at: all`, the default;
-    /// an error where x's changes within the phase, or the phase starts at run time).
+    /// where x's changes within the phase, or the phase starts at run time, alone it is the
+    /// engine's to follow, `followed_acceleration`; as the rate of a speed change an error).
     pub(super) fn acceleration_value(
         &self,
         m: &Modifier,
@@ -206,7 +207,7 @@ impl Planner<'_> {
         let Some(t) = t0 else {
             return Err(e.site.err(
                 K::Unsatisfiable,
-                format!("expected a phase start the plan knows for an acceleration relative to `{x}`, found one after a run-time condition (the plan does not know where `{x}`'s planned track then is)"),
+                format!("expected a phase start the plan knows for an acceleration relative to `{x}` at: start, at: end or as the rate of a speed change, found one after a run-time condition (each reads `{x}`'s acceleration at a moment the plan does not know; alone and at: all the engine follows it)"),
             ));
         };
         let pieces = self.track(&x).acceleration_pieces(t, t + len).map_err(|at| {

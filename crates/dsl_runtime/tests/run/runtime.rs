@@ -404,3 +404,22 @@ fn a_speed_relative_to_another_actor_at_the_end_after_an_until_is_its_speed_then
     let ego = r.at(5.35, "ego");
     assert!((ego.s - 194.7).abs() < S_TOL, "{ego:?}");
 }
+
+/// runtime_acceleration_relative.osc's comment, by hand: from 3.35 s ego's acceleration is
+/// lead's + 1 m/s² in every step, lead's changing from -2 to 0 m/s² at 5.35 s.
+#[test]
+fn an_acceleration_relative_to_one_that_changes_after_an_until_is_the_engines_following() {
+    let r = run("runtime_acceleration_relative", 0, None);
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.follow", 3.35, 7.35)]);
+    for (t, ego, lead) in [
+        (3.35, 20.0, 8.0),
+        (4.35, 19.0, 6.0),
+        (5.35, 18.0, 4.0),
+        (6.35, 19.0, 4.0),
+        (7.35, 20.0, 4.0),
+    ] {
+        let (e, l) = (r.at(t, "ego").speed, r.at(t, "lead").speed);
+        assert!((e - ego).abs() < V_TOL, "ego v({t}) = {e} vs {ego}");
+        assert!((l - lead).abs() < V_TOL, "lead v({t}) = {l} vs {lead}");
+    }
+}

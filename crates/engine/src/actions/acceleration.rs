@@ -82,7 +82,25 @@ pub(crate) fn step(
         }
         _ => s.to * tau,
     };
-    let wanted = s.start_speed + gained;
+    set_speed(
+        world,
+        actor,
+        s.start_speed + gained,
+        acceleration(s, tau),
+        dt,
+    )
+}
+
+/// Sets `actor`'s speed for a step of `dt` s to `wanted`, bounded by its Performance, while
+/// the acceleration `pushing` drives it: at 0 m/s while pushing below it, or at the maximum
+/// speed while pushing above, the action has ended.
+pub(super) fn set_speed(
+    world: &mut World,
+    actor: EntityId,
+    wanted: f64,
+    pushing: f64,
+    dt: f64,
+) -> ActionStatus {
     let e = world.entity_mut(actor);
     let (max_speed, bounded) = match e.performance {
         Some(perf) => (
@@ -93,12 +111,11 @@ pub(crate) fn step(
         ),
         None => (f64::INFINITY, wanted),
     };
-    let a = acceleration(s, tau);
-    if bounded <= crate::tolerance::SPEED && a <= 0.0 {
+    if bounded <= crate::tolerance::SPEED && pushing <= 0.0 {
         e.speed = 0.0;
         return ActionStatus::Ended;
     }
-    if bounded >= max_speed - crate::tolerance::SPEED && a >= 0.0 {
+    if bounded >= max_speed - crate::tolerance::SPEED && pushing >= 0.0 {
         e.speed = max_speed;
         return ActionStatus::Ended;
     }

@@ -20,6 +20,7 @@ mod lane_change;
 mod lane_offset;
 mod override_controller;
 pub(crate) mod parameter;
+mod relative_acceleration;
 mod routing;
 mod speed;
 mod speed_profile;
@@ -57,6 +58,7 @@ pub(crate) enum Domain {
 pub(crate) enum Part {
     Speed(speed::SpeedState),
     Acceleration(acceleration::AccelerationState),
+    RelativeAcceleration(relative_acceleration::RelativeAccelerationState),
     Profile(speed_profile::ProfileState),
     Lateral(lane_change::LateralState),
     LongitudinalDistance(distance::LongitudinalState),
@@ -124,34 +126,26 @@ impl ActionTable {
         }
     }
 
-    /// Stage 2: advances every running part by one step from `now` over `dt`, in slot order.
+    /// Stage 2: advances every running part by one step from `now` over `dt`, in slot order;
+    /// the RelativeAccelerationActions last, so that they read their references' speeds at
+    /// the step's end (relative_acceleration.rs).
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) {
         self.synchronize_along_trajectories();
         let mut live = std::mem::take(&mut self.live);
-        live.retain(|&index| {
-            let slot = &mut self.slots[index as usize];
-            let id = ActionId(index);
-            for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
-                let next = match part {
-                    Part::Done(_) => continue,
-                    Part::Speed(s) => speed::step(world, actor, s, now, dt),
-                    Part::Acceleration(s) => acceleration::step(world, actor, s, now, dt),
-                    Part::Profile(s) => speed_profile::step(world, actor, s, now, dt),
-                    Part::Lateral(s) => lane_change::step(world, actor, s, now, dt),
-                    Part::LongitudinalDistance(s) => {
-                        distance::step_longitudinal(world, actor, s, dt)
+        for following in [false, true] {
+            for &index in &live {
+                let slot = &mut self.slots[index as usize];
+                let id = ActionId(index);
+                for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
+                    if matches!(part, Part::RelativeAcceleration(_)) == following {
+                        step_part(world, actor, id, part, now, dt);
                     }
-                    Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
-                    Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
-                    Part::Synchronize(s) => synchronize::step(world, actor, s, dt),
-                    Part::Appearance(s) => s.step(now, dt),
-                };
-                if next != ActionStatus::Running {
-                    release(world, actor, id);
-                    *part = Part::Done(next);
                 }
             }
-            slot.parts
+        }
+        live.retain(|&index| {
+            self.slots[index as usize]
+                .parts
                 .iter()
                 .any(|p| p.status() == ActionStatus::Running)
         });
@@ -166,6 +160,28 @@ impl ActionTable {
                 _ => false,
             };
         }
+    }
+}
+
+/// Advances `part` of action `id` on `actor` by one step from `now` over `dt`; a part that
+/// stops running frees the actor's domain and becomes `Done`.
+fn step_part(world: &mut World, actor: EntityId, id: ActionId, part: &mut Part, now: f64, dt: f64) {
+    let next = match part {
+        Part::Done(_) => return,
+        Part::Speed(s) => speed::step(world, actor, s, now, dt),
+        Part::Acceleration(s) => acceleration::step(world, actor, s, now, dt),
+        Part::RelativeAcceleration(s) => relative_acceleration::step(world, actor, s, now, dt),
+        Part::Profile(s) => speed_profile::step(world, actor, s, now, dt),
+        Part::Lateral(s) => lane_change::step(world, actor, s, now, dt),
+        Part::LongitudinalDistance(s) => distance::step_longitudinal(world, actor, s, dt),
+        Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
+        Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
+        Part::Synchronize(s) => synchronize::step(world, actor, s, dt),
+        Part::Appearance(s) => s.step(now, dt),
+    };
+    if next != ActionStatus::Running {
+        release(world, actor, id);
+        *part = Part::Done(next);
     }
 }
 
@@ -341,6 +357,11 @@ impl Host<'_> {
                     LongitudinalAction::Acceleration { target, dynamics } => Ok(
                         acceleration::start(self.world, actor, *target, dynamics, time),
                     ),
+                    LongitudinalAction::RelativeAcceleration { entity_ref, value } => {
+                        relative_acceleration::start(
+                            self.world, actor, entity_ref, *value, time, pos,
+                        )
+                    }
                     LongitudinalAction::Travel(travel) => {
                         travel::start(self.world, actor, travel, time, pos)
                     }

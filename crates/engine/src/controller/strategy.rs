@@ -22,6 +22,7 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
                 LongitudinalAction::Speed { .. } => "SpeedAction",
                 LongitudinalAction::SpeedProfile { .. } => "SpeedProfileAction",
                 LongitudinalAction::Acceleration { .. } => "AccelerationAction",
+                LongitudinalAction::RelativeAcceleration { .. } => "RelativeAccelerationAction",
                 LongitudinalAction::Travel(_) => "TravelAction",
                 _ => "LongitudinalDistanceAction",
             },

@@ -151,6 +151,9 @@ fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
             LongitudinalAction::LongitudinalDistance { entity_ref, .. } => {
                 Some((entity_ref, "a LongitudinalDistanceAction"))
             }
+            LongitudinalAction::RelativeAcceleration { entity_ref, .. } => {
+                Some((entity_ref, "a RelativeAccelerationAction"))
+            }
             LongitudinalAction::SpeedProfile {
                 entity_ref: Some(entity_ref),
                 ..

@@ -1,0 +1,113 @@
+//! oscsim's RelativeAccelerationAction (`scenario::LongitudinalAction::RelativeAcceleration`,
+//! an action with no XML form): in each step the actor's longitudinal acceleration is its
+//! reference's plus a constant, ASAM OpenSCENARIO DSL 2.1 §8.9 `acceleration(…, faster_than /
+//! slower_than / same_as: x)` ("relative to" x) followed as x's acceleration changes, which no
+//! OpenSCENARIO 1.x action does (a RelativeTargetSpeed follows x's speed, not its
+//! acceleration).
+//!
+//! The speed is the integral from the start: after τ s, v = v₀ + (v_x − v_x₀) + value·τ, with
+//! v₀ and v_x₀ the actor's and the reference's speeds at the start and v_x the reference's
+//! speed at the step's end. Written through the speeds (not a sum of per-step accelerations)
+//! it carries no drift. Stage 2 advances these parts after every other running action (see
+//! `ActionTable::step_all`), so v_x is the speed the reference's own action set for the same
+//! step's end; a reference moved by a controller (stage 3) is read one step late. A vehicle's
+//! Performance bounds the change per step as for the AccelerationAction; the action ends at
+//! 0 m/s while pushing below it, or at the maximum speed while pushing above, and otherwise
+//! runs until a later longitudinal action replaces it or its Act ends.
+
+use super::Part;
+use crate::error::Error;
+use crate::store::World;
+use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
+
+/// A running RelativeAccelerationAction on one actor.
+#[derive(Debug, Clone)]
+pub(crate) struct RelativeAccelerationState {
+    reference: EntityId,
+    value: f64,
+    /// The actor's and the reference's speeds at the start (m/s).
+    start_speed: f64,
+    reference_start_speed: f64,
+    start_time: f64,
+}
+
+/// Starts the action on `actor` at `now`, relative to the entity named `entity_ref`.
+pub(crate) fn start(
+    world: &World,
+    actor: EntityId,
+    entity_ref: &str,
+    value: f64,
+    now: f64,
+    pos: &scenario::SourcePos,
+) -> Result<Part, Error> {
+    let reference = world.id(entity_ref).ok_or_else(|| {
+        Error::at(
+            "a declared entity",
+            format!("entityRef '{entity_ref}'"),
+            pos,
+        )
+    })?;
+    Ok(Part::RelativeAcceleration(RelativeAccelerationState {
+        reference,
+        value,
+        start_speed: world.entity(actor).speed,
+        reference_start_speed: world.entity(reference).speed,
+        start_time: now,
+    }))
+}
+
+/// The actor's speed `tau` s after the start when its reference then has `reference_speed`:
+/// v₀ + (v_x − v_x₀) + value·τ.
+fn followed_speed(s: &RelativeAccelerationState, reference_speed: f64, tau: f64) -> f64 {
+    s.start_speed + (reference_speed - s.reference_start_speed) + s.value * tau
+}
+
+/// Sets the speed for the step from `now` to `now + dt`.
+pub(crate) fn step(
+    world: &mut World,
+    actor: EntityId,
+    s: &RelativeAccelerationState,
+    now: f64,
+    dt: f64,
+) -> ActionStatus {
+    let tau = now + dt - s.start_time;
+    let wanted = followed_speed(s, world.entity(s.reference).speed, tau);
+    let pushing = wanted - world.entity(actor).speed;
+    super::acceleration::set_speed(world, actor, wanted, pushing, dt)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{followed_speed, RelativeAccelerationState};
+    use crate::world::entity::EntityId;
+
+    /// A state started at t = 1 s with the actor at 12 m/s and the reference at 10 m/s.
+    fn started(value: f64) -> RelativeAccelerationState {
+        RelativeAccelerationState {
+            reference: EntityId(0),
+            value,
+            start_speed: 12.0,
+            reference_start_speed: 10.0,
+            start_time: 1.0,
+        }
+    }
+
+    /// same_as (value 0): the reference brakes from 10 to 6 m/s (−2 m/s² over 2 s, then −1
+    /// m/s² for 1 s to 5 m/s): the actor loses the same 4 m/s and then 1 m/s, 12 → 8 → 7 m/s,
+    /// whatever the reference's acceleration was step by step.
+    #[test]
+    fn same_as_loses_what_the_reference_loses() {
+        let s = started(0.0);
+        assert!((followed_speed(&s, 6.0, 2.0) - 8.0).abs() < 1e-12);
+        assert!((followed_speed(&s, 5.0, 3.0) - 7.0).abs() < 1e-12);
+    }
+
+    /// faster_than by 0.5 m/s²: after 2 s the reference went 10 → 14 m/s (+2 m/s²), the
+    /// actor 12 → 12 + 4 + 0.5·2 = 17 m/s (+2.5 m/s²).
+    #[test]
+    fn faster_than_adds_its_value_per_second() {
+        let s = started(0.5);
+        assert!((followed_speed(&s, 14.0, 2.0) - 17.0).abs() < 1e-12);
+    }
+}
