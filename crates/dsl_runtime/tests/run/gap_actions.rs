@@ -192,3 +192,54 @@ fn change_space_gap_inside_is_to_the_left_in_right_hand_traffic() {
     assert!((gap(6.3) - 2.5).abs() <= LATERAL_REACHED);
     assert!((r.at(10.0, "ego").x - 200.0).abs() < 0.05);
 }
+
+/// `left` (the actor on the reference's left) and `outside` (away from the centre line: right
+/// in right-hand traffic), each a 1 m move as in lateral_gap.osc, so the same stepped law
+/// (lateral_gap_left.osc's and lateral_gap_outside.osc's comments, by hand).
+#[test]
+fn change_space_gap_left_and_outside_move_to_their_sides() {
+    for (name, phase, want, gap_want) in [
+        ("actions/lateral_gap_left", "do.1.narrow", -6.25, 0.5),
+        ("actions/lateral_gap_outside", "do.widen", -9.75, 2.5),
+    ] {
+        let r = run(name, 0, None);
+        // Both move 1 m to the right: the error left at 2 s is below the target.
+        let y2 = r.at(2.0, "ego").y;
+        assert!(
+            (y2 - (want + 0.3595)).abs() < LAW_TOL,
+            "{name}: ego y(2) = {y2} ({} by the stepped law)",
+            want + 0.3595
+        );
+        let (_, e) = r.phase(phase);
+        assert!(
+            (e - 6.4).abs() < T_TOL,
+            "{name}: ends at {e} (6.40 s by hand)"
+        );
+        let y = r.at(6.3, "ego").y;
+        assert!(
+            (y - want).abs() <= LATERAL_REACHED,
+            "{name}: ego y = {y} at the end"
+        );
+        // The gap between the boxes, ego on lead's left (left) or right (outside).
+        let (ly, ey) = (r.at(6.3, "lead").y, y);
+        let gap = (ey - ly).abs() - 2.0;
+        assert!(
+            (gap - gap_want).abs() <= LATERAL_REACHED,
+            "{name}: gap {gap}"
+        );
+        assert_eq!(
+            r.at(10.0, "ego").lane,
+            if want > -7.0 { -2 } else { -3 },
+            "{name}"
+        );
+        assert!((r.at(10.0, "ego").x - 200.0).abs() < 0.05, "{name}");
+    }
+    // keep_space_gap after the left change holds the 0.5 m to the end.
+    let r = run("actions/lateral_gap_left", 0, None);
+    let gap = |t: f64| (r.at(t, "ego").y - 1.0) - (r.at(t, "lead").y + 1.0);
+    assert!(
+        (gap(10.0) - 0.5).abs() < LATERAL_REACHED,
+        "gap(10) = {}",
+        gap(10.0)
+    );
+}
