@@ -432,6 +432,12 @@ impl Planner<'_> {
                         ),
                     ));
                 }
+                // The engine reads a RelativeTargetLane at the action's start: where x changes
+                // lanes within the phase (track: actual), the lane the plan has at the end is
+                // an absolute target.
+                if let (Some(l), true) = (lane, self.track(&x).lane(t) != lx) {
+                    return Ok((LaneChangeTarget::Absolute(l.to_string()), lane));
+                }
                 return Ok((
                     LaneChangeTarget::Relative {
                         entity_ref: x,

@@ -8,6 +8,8 @@ use crate::support::run;
 
 const S_TOL: f64 = 1e-6;
 const V_TOL: f64 = 1e-9;
+/// Lateral positions: the sinusoid is exact at its ends and half way, up to round-off.
+const Y_TOL: f64 = 1e-6;
 
 /// track_projected.osc: lead brakes 10 -> 5 m/s over 1-5 s; ego keeps 20 m behind lead
 /// projected at 10 m/s (150 m at 5 s), other 20 m behind lead's actual place (140 m).
@@ -69,4 +71,31 @@ fn track_projected_without_a_reference_is_an_error() {
         "expected track: actual for an acceleration relative to `lead`, found projected (oscsim projects `lead` at the speed it has at the phase start, which has no acceleration to be relative to: write acceleration(a))",
         "15:35",
     );
+}
+
+/// track_projected_lanes.osc: npc changes lanes -3 -> -2 over 1-5 s; lanes and lateral
+/// positions relative to it at the phase end, actual and projected (the comment, by hand).
+#[test]
+fn lanes_and_lateral_positions_beside_a_projected_reference() {
+    let r = run("track_projected_lanes", 0, None);
+    let at = |t: f64, who: &str| r.at(t, who);
+    for (who, y3, y5, lane5) in [
+        ("npc", -7.0, -5.25, -2),
+        ("keeper", -1.75, -1.75, -1),
+        ("mover", -3.5, -5.25, -2),
+        ("beside", -3.75, -5.75, -2),
+    ] {
+        assert!(
+            (at(3.0, who).y - y3).abs() < Y_TOL,
+            "{who} y(3) = {}",
+            at(3.0, who).y
+        );
+        assert!(
+            (at(5.0, who).y - y5).abs() < Y_TOL,
+            "{who} y(5) = {}",
+            at(5.0, who).y
+        );
+        assert_eq!(at(5.0, who).lane, lane5, "{who}");
+        assert_eq!(at(6.0, who).lane, lane5, "{who}");
+    }
 }
