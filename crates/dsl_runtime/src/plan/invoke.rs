@@ -650,7 +650,12 @@ impl Planner<'_> {
                         let (t, len) = need_len("a lateral position at the phase end")?;
                         // Beside another actor: where the plan has it at the phase end.
                         if lateral::reference(m)?.is_some() {
-                            self.plan_beside_end(m, target, (t, len), name("lateral"), out)?;
+                            let keeps = mods.iter().find(|q| {
+                                q.kind == ModKind::KeepLane
+                                    || (q.kind == ModKind::Lane && q.at == At::All)
+                            });
+                            let n = name("lateral");
+                            self.plan_beside_end(m, target, (t, len), keeps, n, out)?;
                             continue;
                         }
                         let Some(t) = t else {

@@ -93,12 +93,15 @@ impl Planner<'_> {
     /// Plans `m`, a `lateral(…, at: end)` beside another actor without a lane change in the
     /// phase, over the phase from `t` (known) to `t + len`, as the action `name`: a lane offset
     /// in the actor's lane or a lane change into the lane holding the t asked (module doc).
-    /// Without a reference `m` asks for nothing here (it is an offset in the lane).
+    /// Without a reference `m` asks for nothing here (it is an offset in the lane). `keeps`
+    /// is a modifier of the phase that keeps the actor in its lane (`keep_lane()`, `lane(…)`
+    /// at: all): a t in another lane is then an error.
     pub(super) fn plan_beside_end(
         &mut self,
         m: &Modifier,
         target: &str,
         (t, len): (Option<f64>, f64),
+        keeps: Option<&Modifier>,
         name: String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
@@ -116,6 +119,12 @@ impl Planner<'_> {
                 format!("expected a driving lane at t = {t_a:.2} m (where lateral(…) puts `{target}` at the phase end, s = {s_end:.2} m), found none"),
             )
         })?;
+        if let (Some(k), true) = (keeps, lane != lane0) {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` to stay in lane {lane0} ({}(…) at {}), found lateral(…) puts it in lane {lane} at the phase end", k.name, k.site.at()),
+            ));
+        }
         let o1 = t_a - self.road.lane_center(lane, s_end);
         check_accel(m, peak_acceleration(t_a - self.t_at(target, t), len))?;
         let action = if lane == lane0 {

@@ -127,4 +127,9 @@ fn lateral_beside_another_actor_at_the_end_is_where_the_plan_has_it() {
         "expected `ego`'s reference point in the lane change's target lane -1 (3.50 m wide) at the phase end, found lateral(…) puts it -4.50 m from the lane's centre",
         "20:13",
     );
+    crate::along::refused(
+        "err_lateral_beside_end_keep_lane",
+        "expected `ego` to stay in lane -2 (keep_lane(…) at ",
+        "19:13",
+    );
 }
