@@ -64,7 +64,7 @@ impl Planner<'_> {
                 (l, why)
             }
         };
-        self.on_plan_roads(f, lane, &why)?;
+        self.on_plan_roads(f, lane, &why, s)?;
         if !lanes.contains(&lane) {
             let road = &self.road.road_at(s).0.id;
             let against = if lane > 0 {
@@ -93,6 +93,7 @@ impl Planner<'_> {
         f: &LaneField,
         actor: &str,
         own: i32,
+        s: f64,
     ) -> Result<(), Error> {
         let Some((lane, why)) = self.route_lanes.get(&f.path).cloned() else {
             self.route_lanes.insert(
@@ -104,7 +105,7 @@ impl Planner<'_> {
             );
             return Ok(());
         };
-        self.on_plan_roads(f, lane, &why)?;
+        self.on_plan_roads(f, lane, &why, s)?;
         if lane != own {
             return Err(f.site.err(
                 K::Unsatisfiable,
@@ -114,14 +115,22 @@ impl Planner<'_> {
         Ok(())
     }
 
-    /// A lane the map's modifiers bound `f` to lies on a road of the plan.
-    fn on_plan_roads(&self, f: &LaneField, lane: i32, why: &str) -> Result<(), Error> {
+    /// A lane the map's modifiers bound `f` to lies on a road of the plan, and the action's
+    /// start (the plan's s `s`) in its lane section.
+    fn on_plan_roads(&self, f: &LaneField, lane: i32, why: &str, s: f64) -> Result<(), Error> {
         match self.lane_roads.get(&f.path) {
-            Some(road) if !self.road.ids().contains(road) => Err(f.site.err(
+            Some((road, None)) => Err(f.site.err(
                 K::Road,
                 format!(
                     "expected a lane of the roads the plan drives on ({}) for `{}`, found lane {lane} of road {road} ({why})",
                     self.road.ids().join(", "),
+                    f.path
+                ),
+            )),
+            Some((road, Some((a, b)))) if s < *a || s > *b => Err(f.site.err(
+                K::Road,
+                format!(
+                    "expected the action to start in the lane section of `{}` (lane {lane} of road {road}, {why}: s from {a:.2} m to {b:.2} m), found it at s = {s:.2} m",
                     f.path
                 ),
             )),

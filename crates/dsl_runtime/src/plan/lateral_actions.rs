@@ -103,7 +103,7 @@ impl Planner<'_> {
             }
             Action::FollowLane => {
                 if let Some(f) = &inv.lane_target {
-                    self.follow_lane_field(f, target, lane0)?;
+                    self.follow_lane_field(f, target, lane0, s)?;
                 }
                 let Some(o1) = lane_offset(inv, self.road.lane_width(lane0, s))? else {
                     // Nothing to change: the engine's vehicles follow their lane.

@@ -60,6 +60,7 @@
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
 //! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
+//! | `map_lanes` | the map's modifiers against the loaded network: lane fields bound, the plan's roads checked |
 //! | `lane_fields` | the lane a `lane` field names for `change_lane`/`follow_lane(target: l)`: bound or drawn once |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
@@ -88,6 +89,7 @@ mod lane_fields;
 mod lateral;
 mod lateral_actions;
 mod lateral_end;
+mod map_lanes;
 mod motion;
 mod path_shape;
 mod place;
@@ -171,6 +173,12 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             handlers.push((handler_act(spec.within.as_deref(), *i), spec, site, ectx));
         }
     }
+    // The map's modifiers: the plan's roads checked, lane fields bound (before any use).
+    let bound = map_lanes::bind(road, &res.map, &mut |n| p.choose(n))?;
+    for b in bound {
+        p.route_lanes.insert(b.field.clone(), (b.lane, b.why));
+        p.lane_roads.insert(b.field, (b.road, b.span));
+    }
     // Actors, in the order the tree names them, and each one's first phase.
     let mut leaves: Vec<&Phase> = Vec::new();
     for leaf in root.leaves() {
@@ -192,6 +200,16 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
             if let (ModKind::Along, Some(a)) = (m.kind, &m.along) {
                 route::on_plan_road(road, a)?;
+                if let Route::Free { field, .. } = &a.route {
+                    if let (Some((other, None)), Some((lane, why))) =
+                        (p.lane_roads.get(field), p.route_lanes.get(field))
+                    {
+                        return Err(a.site.err(
+                            K::Road,
+                            format!("expected a lane of the roads the plan drives on ({}) for `{field}`, found lane {lane} of road {other} ({why})", road.ids().join(", ")),
+                        ));
+                    }
+                }
                 p.alongs
                     .entry(leaf.path.clone())
                     .or_default()

@@ -46,8 +46,9 @@ pub(crate) struct Planner<'a> {
     /// Lane field (a free one-lane route, a `target:` lane) → its lane on the plan road and
     /// what bound it (`lane_fields`, `route::check`).
     pub route_lanes: HashMap<String, (i32, String)>,
-    /// Lane field the map's modifiers bound → the road of its lane (`map_lanes`).
-    pub lane_roads: HashMap<String, String>,
+    /// Lane field the map's modifiers bound → the road of its lane and the plan's s of its
+    /// lane section's start and end when that road is the plan's (`map_lanes`).
+    pub lane_roads: HashMap<String, (String, Option<(f64, f64)>)>,
     /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
     /// the modifier), checked once every phase is planned.
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,

@@ -11,6 +11,7 @@
 //! | `objects` | physical objects (vehicles, persons, animals, located stationary objects) and vehicle groups with their fields (§8.7, §8.7.18) |
 //! | `route` | `along(…)` routes (§8.9, §8.12) |
 //! | `modifier` | movement modifiers (§8.9) |
+//! | `map_modifiers` | the map's modifiers in the scenario's body, as bindings and checks for the planner (§8.12.2.2) |
 //! | `position` | places and orientations of the position actions (§8.8.2.4, §8.8.2.5, §8.8.2.11) |
 //! | `cond` | conditions and event specifications (§7.3.10, §8.7 methods) |
 //! | `call` | `call` of external methods as commands to the host (§7.3.9) |
@@ -21,6 +22,7 @@ mod call;
 mod cond;
 pub(crate) mod coverage;
 mod eval;
+mod map_modifiers;
 mod modifier;
 mod objects;
 mod position;
@@ -38,6 +40,7 @@ use dsl::CheckedProgram;
 
 pub(crate) use call::Call;
 pub(crate) use cond::{Cond, Timed};
+pub(crate) use map_modifiers::{MapKind, MapModifier};
 pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
 pub(crate) use position::{Place, PlaceArg};
@@ -62,6 +65,8 @@ pub(crate) struct Resolved {
     /// The scenario's event conditions: its `event e is c` declarations and the events its
     /// `on` handlers emit.
     pub events: Vec<EventSpec>,
+    /// The map's modifiers in the scenario's body (§8.12.2.2), in the order written.
+    pub map: Vec<MapModifier>,
     /// The draws left for the planner (choices the standard leaves random).
     pub draws: Draws,
     /// The scenario's coverage items (read past the planner, which does not use them).
@@ -115,6 +120,14 @@ pub(crate) fn resolve(
         events.extend(self::events(&inner, members, Some(&e.path))?);
     }
     let located = objects::locations(&ev, &decl.members)?;
+    let map = decl
+        .members
+        .iter()
+        .filter_map(|m| match m {
+            Member::Modifier(app) => map_modifiers::read(&ev, app),
+            _ => None,
+        })
+        .collect::<Result<Vec<_>, _>>()?;
     let mut objects = objects(&ev, &root, &located);
     // The scenario's stationary objects that no location(…) puts anywhere: an error where the
     // plan uses one.
@@ -145,6 +158,7 @@ pub(crate) fn resolve(
         root,
         objects,
         events,
+        map,
         draws: draws.into_inner(),
         coverage,
         resolution,
@@ -245,19 +259,27 @@ fn events(
                 }
             }
             // `m.set_map_file(f)` names the road network (see `crate::map_file`),
-            // `x.location(pose)` places a stationary object (`objects::locations`); other
-            // modifiers of the scenario itself are not run.
+            // `x.location(pose)` places a stationary object (`objects::locations`), the
+            // entry scenario's map modifiers are read by `map_modifiers`.
             Member::Modifier(app)
-                if app.name.text != "set_map_file" && app.name.text != "location" =>
-            {
+                if app.name.text == "set_map_file"
+                    || app.name.text == "location"
+                    || (within.is_none()
+                        && map_modifiers::MAP_MODIFIERS.contains(&app.name.text.as_str())) => {}
+            Member::Modifier(app) => {
+                let what = if map_modifiers::MAP_MODIFIERS.contains(&app.name.text.as_str()) {
+                    "a map modifier in an invoked scenario (the map is the run's: write it in the scenario that runs)"
+                } else {
+                    "a modifier applied to the scenario itself (§7.3.9: a scenario's modifiers constrain its behavior's invocations; oscsim plans movement modifiers in an action's with:, where they name the actor they move)"
+                };
                 return Err(ev.files.err(
                     ErrorKind::Modifier,
                     app.span,
                     format!(
-                        "expected modifiers on the actions of the `do` (the runtime plans those), found `{}(…)` applied to the scenario",
+                        "expected modifiers on the actions of the `do` (the runtime plans those) or the map's modifiers, found `{}(…)`, {what}",
                         app.name.text
                     ),
-                ))
+                ));
             }
             // `on e: emit f`: f occurs whenever e does; `on e: call m(…)`: the host runs m
             // whenever e occurs (`call`).
@@ -285,13 +307,11 @@ fn events(
                                 within: within.clone(),
                             })
                         }
-                        _ => {
-                            return Err(ev.files.err(
-                                ErrorKind::Unsupported,
-                                *on_span,
-                                "expected `emit` or `call` in an `on` handler, found another member",
-                            ))
-                        }
+                        _ => return Err(ev.files.err(
+                            ErrorKind::Unsupported,
+                            *on_span,
+                            "expected `emit` or `call` in an `on` handler, found another member",
+                        )),
                     }
                 }
             }

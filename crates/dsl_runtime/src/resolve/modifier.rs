@@ -166,19 +166,7 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
             ),
         ));
     }
-    let params: Vec<String> = ctx
-        .model
-        .modifiers_named(name)
-        .first()
-        .map(|m| {
-            ctx.model
-                .compound(*m)
-                .fields
-                .iter()
-                .map(|f| f.name.clone())
-                .collect()
-        })
-        .unwrap_or_default();
+    let params = params(ctx, name);
     let bound = bind(&app.args, &params);
     let args: Args = bound.iter().map(|(n, e)| (n.clone(), ctx.arg(e))).collect();
     let at = match arg(&args, "at") {
@@ -329,4 +317,21 @@ fn check_combination(ctx: &Eval<'_>, name: &str, args: &[(String, &Expr)]) -> Re
         }
     }
     Ok(())
+}
+
+/// The parameters of the modifier `name` in declaration order (positional arguments bind to
+/// them in that order).
+pub(crate) fn params(ctx: &Eval<'_>, name: &str) -> Vec<String> {
+    ctx.model
+        .modifiers_named(name)
+        .first()
+        .map(|m| {
+            ctx.model
+                .compound(*m)
+                .fields
+                .iter()
+                .map(|f| f.name.clone())
+                .collect()
+        })
+        .unwrap_or_default()
 }

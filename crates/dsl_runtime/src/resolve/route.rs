@@ -73,7 +73,7 @@ pub(crate) struct Along {
 }
 
 /// Route types bound to the whole plan road.
-const WHOLE_ROAD: [&str; 5] = [
+pub(crate) const WHOLE_ROAD: [&str; 5] = [
     "route",
     "route_element",
     "road",
@@ -81,7 +81,7 @@ const WHOLE_ROAD: [&str; 5] = [
     "compound_route",
 ];
 /// Route types bound to one lane.
-const ONE_LANE: [&str; 2] = ["lane", "compound_lane"];
+pub(crate) const ONE_LANE: [&str; 2] = ["lane", "compound_lane"];
 
 /// Reads the route and offsets of an `along(…)` modifier (its evaluated arguments `args`, the
 /// route expression and where the application is written).
@@ -408,7 +408,7 @@ pub(crate) fn map_call<'e>(
 }
 
 /// Whether type `ty` is `sup` or inherits from it.
-fn is_a(ctx: &Ctx<'_>, ty: &str, sup: &str) -> bool {
+pub(crate) fn is_a(ctx: &Ctx<'_>, ty: &str, sup: &str) -> bool {
     use dsl::semantics::model::TypeName;
     match (ctx.model.types.get(ty), ctx.model.types.get(sup)) {
         (Some((TypeName::Compound(a), _)), Some((TypeName::Compound(b), _))) => {
@@ -420,7 +420,7 @@ fn is_a(ctx: &Ctx<'_>, ty: &str, sup: &str) -> bool {
 
 /// Whether `ty` is `base` itself, or a user type inheriting from it that is none of the
 /// library's more specific route types (a `lane` inherits `route` but is one lane).
-fn is_exactly_or_user(ctx: &Ctx<'_>, ty: &str, base: &str) -> bool {
+pub(crate) fn is_exactly_or_user(ctx: &Ctx<'_>, ty: &str, base: &str) -> bool {
     ty == base
         || (is_a(ctx, ty, base)
             && ![

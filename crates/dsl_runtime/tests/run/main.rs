@@ -14,6 +14,7 @@ mod lane_side;
 mod lateral;
 mod lateral_actions;
 mod map;
+mod map_modifiers;
 mod orientation;
 mod position_actions;
 mod reuse;

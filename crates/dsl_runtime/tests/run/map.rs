@@ -3,7 +3,7 @@
 //! on road files of the corpus (`tests/roads/`). Road ids and s are worked by hand in the
 //! scenario files' comments.
 
-use crate::support::{lower_at, run_scenario};
+use crate::support::lower_at;
 
 /// Positions over arcs and spirals: the engine advances the reference line by the step's
 /// distance / (1 − κ·t) with κ at the step's start, and carries the rest of a step that crosses
@@ -13,14 +13,7 @@ const CURVED_TOL: f64 = 0.03;
 const S_TOL: f64 = 1e-6;
 
 fn run(name: &str, road: &str) -> crate::support::Run {
-    let lowered = lower_at(
-        &format!("tests/scenarios/{name}.osc"),
-        &format!("tests/roads/{road}.xodr"),
-        0,
-        None,
-    )
-    .unwrap_or_else(|e| panic!("{name}: {e}"));
-    run_scenario(name, &lowered.scenario, 0, None)
+    crate::support::run_on(name, road)
 }
 
 #[test]

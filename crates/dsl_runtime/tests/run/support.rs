@@ -123,6 +123,18 @@ pub fn run(name: &str, seed: u64, duration: Option<f64>) -> Run {
     run_scenario(name, &lowered.scenario, seed, duration)
 }
 
+/// Lowers `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` with seed 0 and runs it.
+pub fn run_on(name: &str, road: &str) -> Run {
+    let lowered = lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        &format!("tests/roads/{road}.xodr"),
+        0,
+        None,
+    )
+    .unwrap_or_else(|e| panic!("{name}: {e}"));
+    run_scenario(name, &lowered.scenario, 0, None)
+}
+
 /// Runs a scenario model.
 pub fn run_scenario(
     name: &str,

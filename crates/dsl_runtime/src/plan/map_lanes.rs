@@ -1,0 +1,461 @@
+//! The map's modifiers against the loaded road network (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2;
+//! OpenDRIVE 1.8 §11 lanes, §11.6 lane linkage): bindings of lane fields and checks of the
+//! roads the plan drives on, done once before anything is planned.
+//!
+//! | modifier | class | oscsim |
+//! | --- | --- | --- |
+//! | `number_of_lanes(route, n, lane_type, lane_use, directionality)` on a `route`, `road`, `compound_route` | check | every lane section of the plan's roads (every free route field is those roads) has n lanes of that type, use and directionality, both sides counted |
+//! | the same on a `lane_section` | binding | a lane section of the plan's roads has n such lanes |
+//! | `start_lane(l)` | binding | l is a driving lane with a lane section before it in its driving direction and no predecessor there |
+//! | `end_lane(l)` | binding | l is a driving lane with a lane section after it in its driving direction and no successor there |
+//! | `lane_side(l1, side, l2, count)`, `compound_lane_side(…)` | binding | l1 and l2 are driving lanes of one lane section, l1 `count` lanes to the side of l2 across the road (t grows to the left of the s-axis, §8.12.5), every lane of the section counted |
+//! | `routes_overlap(r1, r2, kind)` | check | both are the plan's roads, so they overlap as `equal`: `equal` and `any` hold, another kind is an error |
+//!
+//! Lane fields range over the driving lanes (OpenDRIVE types a vehicle drives on) of every
+//! road outside junctions. Every assignment of the constrained fields that satisfies all the
+//! modifiers is found (in the network's order); those that put every field on the plan's roads
+//! are preferred (the scenario happens there), and one is drawn from the run's seed when
+//! several remain. A modifier after which nothing satisfies the modifiers so far is an error
+//! at it, naming what the map has.
+
+use opendrive::{Direction, LaneHandle, LaneType, RoadHandle, RoadNetwork};
+
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{MapKind, MapModifier};
+use crate::road::PlanRoad;
+
+/// The most assignments of lane fields looked at.
+const MAX_SOLUTIONS: usize = 100_000;
+
+/// A lane a map modifier bound a field to.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct MapLane {
+    /// The field's path.
+    pub field: String,
+    /// The OpenDRIVE road id.
+    pub road: String,
+    /// The lane id.
+    pub lane: i32,
+    /// The plan's s of its lane section's start and end, when the road is one of the plan's.
+    pub span: Option<(f64, f64)>,
+    /// What bound it, for messages.
+    pub why: String,
+}
+
+/// Checks the network against `mods` and binds the lane fields they constrain (`choose(n)`
+/// draws among n).
+pub(crate) fn bind(
+    road: &PlanRoad<'_>,
+    mods: &[MapModifier],
+    choose: &mut dyn FnMut(usize) -> usize,
+) -> Result<Vec<MapLane>, Error> {
+    for m in mods {
+        check(road, m)?;
+    }
+    let lane_mods: Vec<&MapModifier> = mods.iter().filter(|m| fields(m).is_some()).collect();
+    if lane_mods.is_empty() {
+        return Ok(Vec::new());
+    }
+    let net = road.network();
+    let domain = driving_lanes(net);
+    let plan_ids = road.ids();
+    let on_plan = |h: &LaneHandle| plan_ids.contains(&net.roads()[h.road as usize].id);
+    let mut last = (Vec::new(), Vec::new());
+    for k in 1..=lane_mods.len() {
+        let (names, solutions) = solve(net, &domain, &lane_mods[..k]);
+        if solutions.is_empty() {
+            let m = lane_mods[k - 1];
+            let roads: Vec<&str> = net
+                .roads()
+                .iter()
+                .filter(|r| r.junction.is_none())
+                .map(|r| r.id.as_str())
+                .collect();
+            return Err(m.site.err(
+                K::Road,
+                format!(
+                    "expected lanes of the map for {} that satisfy {}(…){}, found none on roads {}",
+                    names
+                        .iter()
+                        .map(|n| format!("`{n}`"))
+                        .collect::<Vec<_>>()
+                        .join(", "),
+                    m.name,
+                    if k > 1 {
+                        " and the map modifiers before it"
+                    } else {
+                        ""
+                    },
+                    roads.join(", ")
+                ),
+            ));
+        }
+        last = (names, solutions);
+    }
+    let (names, solutions) = last;
+    let preferred: Vec<&Vec<LaneHandle>> =
+        solutions.iter().filter(|s| s.iter().all(on_plan)).collect();
+    let pool: Vec<&Vec<LaneHandle>> = if preferred.is_empty() {
+        solutions.iter().collect()
+    } else {
+        preferred
+    };
+    let pick = if pool.len() > 1 {
+        choose(pool.len())
+    } else {
+        0
+    };
+    let chosen = pool[pick.min(pool.len() - 1)];
+    let starts = road.starts();
+    Ok(names
+        .iter()
+        .zip(chosen)
+        .map(|(field, h)| {
+            let r = &net.roads()[h.road as usize];
+            let k = h.section as usize;
+            let s0 = r.lane_sections[k].s;
+            let s1 = r.lane_sections.get(k + 1).map_or(r.length, |n| n.s);
+            let by = lane_mods
+                .iter()
+                .find(|m| fields(m).is_some_and(|f| f.contains(&field.as_str())))
+                .map(|m| format!("bound by map.{}(…) at {}", m.name, m.site.at()))
+                .unwrap_or_default();
+            MapLane {
+                field: field.clone(),
+                road: r.id.clone(),
+                lane: h.lane,
+                span: starts
+                    .iter()
+                    .find(|(id, _)| *id == r.id)
+                    .map(|(_, at)| (at + s0, at + s1)),
+                why: by,
+            }
+        })
+        .collect())
+}
+
+/// The lane fields a binding modifier names (`None`: a check).
+fn fields(m: &MapModifier) -> Option<Vec<&str>> {
+    match &m.kind {
+        MapKind::StartLane(l) | MapKind::EndLane(l) => Some(vec![l.as_str()]),
+        MapKind::LaneSide { lane1, lane2, .. } => Some(vec![lane1.as_str(), lane2.as_str()]),
+        _ => None,
+    }
+}
+
+/// Every driving lane of the roads outside junctions, in the network's order.
+fn driving_lanes(net: &RoadNetwork) -> Vec<LaneHandle> {
+    let mut out = Vec::new();
+    for (ri, r) in net.roads().iter().enumerate() {
+        if r.junction.is_some() {
+            continue;
+        }
+        for (k, ls) in r.lane_sections.iter().enumerate() {
+            for l in ls.right.iter().chain(ls.left.iter()) {
+                if l.lane_type.is_drivable() {
+                    out.push(LaneHandle {
+                        road: ri as u32,
+                        section: k as u32,
+                        lane: l.id,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The fields `mods` name (in first-use order) and every assignment of lanes of `domain` to
+/// them that satisfies all of `mods` (at most [`MAX_SOLUTIONS`]).
+fn solve(
+    net: &RoadNetwork,
+    domain: &[LaneHandle],
+    mods: &[&MapModifier],
+) -> (Vec<String>, Vec<Vec<LaneHandle>>) {
+    let mut names: Vec<String> = Vec::new();
+    for m in mods {
+        for f in fields(m).unwrap_or_default() {
+            if !names.iter().any(|n| n == f) {
+                names.push(f.to_string());
+            }
+        }
+    }
+    let index = |f: &str| names.iter().position(|n| n == f).unwrap_or(0);
+    // Each field's own domain: the lanes its one-field modifiers allow.
+    let own: Vec<Vec<LaneHandle>> = names
+        .iter()
+        .map(|n| {
+            domain
+                .iter()
+                .copied()
+                .filter(|h| {
+                    mods.iter().all(|m| match &m.kind {
+                        MapKind::StartLane(l) if l == n => starts(net, *h),
+                        MapKind::EndLane(l) if l == n => ends(net, *h),
+                        _ => true,
+                    })
+                })
+                .collect()
+        })
+        .collect();
+    let sides: Vec<(usize, bool, usize, u32)> = mods
+        .iter()
+        .filter_map(|m| match &m.kind {
+            MapKind::LaneSide {
+                lane1,
+                left,
+                lane2,
+                count,
+            } => Some((index(lane1), *left, index(lane2), *count)),
+            _ => None,
+        })
+        .collect();
+    let mut out = Vec::new();
+    let mut partial = Vec::new();
+    search(net, &own, &sides, &mut partial, &mut out);
+    (names, out)
+}
+
+/// Depth-first assignment of the fields after `partial`, keeping every full one that holds.
+fn search(
+    net: &RoadNetwork,
+    own: &[Vec<LaneHandle>],
+    sides: &[(usize, bool, usize, u32)],
+    partial: &mut Vec<LaneHandle>,
+    out: &mut Vec<Vec<LaneHandle>>,
+) {
+    if out.len() >= MAX_SOLUTIONS {
+        return;
+    }
+    let i = partial.len();
+    if i == own.len() {
+        out.push(partial.clone());
+        return;
+    }
+    for h in &own[i] {
+        partial.push(*h);
+        let holds = sides.iter().all(|&(a, left, b, n)| {
+            if a.max(b) > i {
+                return true;
+            }
+            beside(net, partial[b], left, n) == Some(partial[a])
+        });
+        if holds {
+            search(net, own, sides, partial, out);
+        }
+        partial.pop();
+    }
+}
+
+/// The lane `n` lanes to the left (or right) of `h` across its lane section, every lane of
+/// the section counted (the centre lane not).
+fn beside(net: &RoadNetwork, h: LaneHandle, left: bool, n: u32) -> Option<LaneHandle> {
+    let ls = &net.roads()[h.road as usize].lane_sections[h.section as usize];
+    // Right to left: −k … −1, 1 … m.
+    let ids: Vec<i32> = ls
+        .right
+        .iter()
+        .rev()
+        .chain(ls.left.iter())
+        .map(|l| l.id)
+        .collect();
+    let i = ids.iter().position(|id| *id == h.lane)? as i64;
+    let j = if left {
+        i + i64::from(n)
+    } else {
+        i - i64::from(n)
+    };
+    let id = *ids.get(usize::try_from(j).ok()?)?;
+    Some(LaneHandle { lane: id, ..h })
+}
+
+/// Whether a lane section lies before (`before`) or after the lane `h` in its driving
+/// direction: an earlier (later) section of its road, or a road joined at that end.
+fn has_section(net: &RoadNetwork, h: LaneHandle, before: bool) -> bool {
+    let road = RoadHandle(h.road);
+    let last = net.roads()[h.road as usize].lane_sections.len() as u32 - 1;
+    let dir = net.driving_direction(h);
+    let dir = if before { dir.reverse() } else { dir };
+    match dir {
+        Direction::Forward => h.section < last || !net.joined_roads(road, dir).is_empty(),
+        Direction::Backward => h.section > 0 || !net.joined_roads(road, dir).is_empty(),
+    }
+}
+
+/// §8.12.2.2.8: "the lane starts in its lane_section and has no predecessor in the previous
+/// lane_section".
+fn starts(net: &RoadNetwork, h: LaneHandle) -> bool {
+    has_section(net, h, true) && net.predecessors(h).is_empty()
+}
+
+/// §8.12.2.2.7: "the lane ends in its lane_section and has no successor in the next
+/// lane_section".
+fn ends(net: &RoadNetwork, h: LaneHandle) -> bool {
+    has_section(net, h, false) && net.successors(h).is_empty()
+}
+
+/// Checks a modifier over route fields against the plan's roads.
+fn check(road: &PlanRoad<'_>, m: &MapModifier) -> Result<(), Error> {
+    match &m.kind {
+        MapKind::NumberOfLanes {
+            route,
+            section,
+            n,
+            lane_type,
+            lane_use,
+            directionality,
+        } => {
+            let keep = |t: &LaneType| -> Result<bool, Error> {
+                Ok(matches_type(m, lane_type.as_deref(), t, type_of)?
+                    && matches_type(m, lane_use.as_deref(), t, use_of)?
+                    && matches_type(m, directionality.as_deref(), t, directionality_of)?)
+            };
+            let what = [
+                lane_type.clone(),
+                lane_use.as_ref().map(|u| format!("{u}-use")),
+                directionality.clone(),
+            ]
+            .into_iter()
+            .flatten()
+            .collect::<Vec<_>>()
+            .join(" ");
+            let what = if what.is_empty() {
+                "lanes".to_string()
+            } else {
+                format!("{what} lanes")
+            };
+            let net = road.network();
+            let mut counts = Vec::new();
+            for id in road.ids() {
+                let Some(r) = net.roads().iter().find(|r| r.id == id) else {
+                    continue;
+                };
+                for ls in &r.lane_sections {
+                    let mut ids = Vec::new();
+                    for l in ls.right.iter().rev().chain(ls.left.iter()) {
+                        if keep(&l.lane_type)? {
+                            ids.push(l.id);
+                        }
+                    }
+                    counts.push((id.clone(), ls.s, ids));
+                }
+            }
+            let shown = |(id, s, ids): &(String, f64, Vec<i32>)| {
+                format!(
+                    "{} on road {id} (the lane section from s = {s:.2} m{})",
+                    ids.len(),
+                    if ids.is_empty() {
+                        String::new()
+                    } else {
+                        format!(": lanes {ids:?}")
+                    }
+                )
+            };
+            if *section {
+                if !counts.iter().any(|(_, _, ids)| ids.len() == *n as usize) {
+                    return Err(m.site.err(
+                        K::Road,
+                        format!(
+                            "expected a lane section of the roads the plan drives on with {n} {what} for `{route}`, found {}",
+                            counts.iter().map(shown).collect::<Vec<_>>().join(", ")
+                        ),
+                    ));
+                }
+            } else if let Some(c) = counts.iter().find(|(_, _, ids)| ids.len() != *n as usize) {
+                return Err(m.site.err(
+                    K::Road,
+                    format!(
+                        "expected {n} {what} on `{route}` (the roads the plan drives on), found {}",
+                        shown(c)
+                    ),
+                ));
+            }
+            Ok(())
+        }
+        MapKind::RoutesOverlap {
+            route1,
+            route2,
+            kind,
+        } => {
+            if kind == "equal" || kind == "any" {
+                Ok(())
+            } else {
+                Err(m.site.err(
+                    K::Road,
+                    format!(
+                        "expected `{route1}` and `{route2}` to overlap as {kind}, found both the roads the plan drives on ({}), which overlap as equal",
+                        road.ids().join(", ")
+                    ),
+                ))
+            }
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Whether lane type `t` is what `want` (a member of the DSL's enum, read by `read`) names;
+/// no filter: yes. A member no OpenDRIVE lane type says is an error at the modifier.
+fn matches_type(
+    m: &MapModifier,
+    want: Option<&str>,
+    t: &LaneType,
+    read: fn(&str, &LaneType) -> Option<bool>,
+) -> Result<bool, Error> {
+    let Some(w) = want else {
+        return Ok(true);
+    };
+    read(w, t).ok_or_else(|| {
+        m.site.err(
+            K::Unsupported,
+            format!("expected a {w} the OpenDRIVE lane types say (see docs/dsl.md, map modifiers), found {w}, which none of them does"),
+        )
+    })
+}
+
+/// §8.12 `lane_type` against an OpenDRIVE lane type.
+fn type_of(w: &str, t: &LaneType) -> Option<bool> {
+    let pedestrian = matches!(t, LaneType::Sidewalk | LaneType::Walking);
+    let vru = matches!(t, LaneType::Biking);
+    Some(match w {
+        "driving" => t.is_drivable(),
+        "vru_vehicles" => vru,
+        "pedestrian" => pedestrian,
+        "non_driving" => !t.is_drivable() && !vru && !pedestrian,
+        _ => return None,
+    })
+}
+
+/// §8.12 `lane_use` against an OpenDRIVE lane type (the uses that type names).
+fn use_of(w: &str, t: &LaneType) -> Option<bool> {
+    let named = match w {
+        "normal" => LaneType::Driving,
+        "exit" => LaneType::Exit,
+        "entry" => LaneType::Entry,
+        "on_ramp" => LaneType::OnRamp,
+        "off_ramp" => LaneType::OffRamp,
+        "connecting_ramp" => LaneType::ConnectingRamp,
+        "hov" => LaneType::Hov,
+        "bus" => LaneType::Bus,
+        "parking" => LaneType::Parking,
+        "stop" => LaneType::Stop,
+        "restricted" => LaneType::Restricted,
+        "border" => LaneType::Border,
+        "shoulder" => LaneType::Shoulder,
+        "curb" => LaneType::Curb,
+        "median" => LaneType::Median,
+        "bicycle" => LaneType::Biking,
+        "sidewalk" => LaneType::Sidewalk,
+        _ => return None,
+    };
+    Some(*t == named)
+}
+
+/// §8.12 `directionality` against an OpenDRIVE lane type: `bidirectional` lanes are driven
+/// both ways, every other lane one way (its side's).
+fn directionality_of(w: &str, t: &LaneType) -> Option<bool> {
+    match w {
+        "uni_direction" => Some(*t != LaneType::Bidirectional),
+        "bi_direction" => Some(*t == LaneType::Bidirectional),
+        _ => None,
+    }
+}

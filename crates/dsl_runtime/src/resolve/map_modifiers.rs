@@ -1,0 +1,257 @@
+//! The map's modifiers applied in the scenario's body (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2:
+//! `m.number_of_lanes(…)`, `m.start_lane(l)`, `m.end_lane(l)`, `m.lane_side(…)`,
+//! `m.compound_lane_side(…)`, `m.routes_overlap(…)`), read as plain data for the planner,
+//! which binds the lane fields they name to lanes of the loaded road network or checks the
+//! network against them (`crate::plan`'s `map_lanes`).
+//!
+//! The standard calls them constraints on the abstract road network. oscsim generates no
+//! maps: with an OpenDRIVE network loaded, a modifier over lane fields is a **binding** of
+//! those fields to lanes of the network that satisfy it, one over route fields a **check**
+//! that the network (the roads the plan drives on, which every free route field is) does. The
+//! others (`routes_are_in_sequence`, `roads_follow_in_junction`, `crossing_connects`,
+//! `routes_are_opposite`, `set_traffic_lights_control_file`) are errors at the modifier saying
+//! why; `set_map_file` names the network (`crate::map_file`).
+
+use dsl::semantics::hir::ModifierApp;
+use dsl::Value;
+
+use super::eval::{bind, Eval as Ctx};
+use super::value::{arg, Arg, Args, Val};
+use crate::error::{Error, ErrorKind as K, Site};
+
+/// One map modifier, read.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct MapModifier {
+    /// What it constrains.
+    pub kind: MapKind,
+    /// Its name (`lane_side`).
+    pub name: String,
+    /// The application.
+    pub site: Site,
+}
+
+/// What a map modifier constrains. Fields are paths of the scenario's route and lane fields.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum MapKind {
+    /// §8.12.2.2.1: `route` has `n` lanes of the type, use and directionality given.
+    NumberOfLanes {
+        /// The route field.
+        route: String,
+        /// Whether it is a `lane_section` (one section of the plan's roads: a binding), else
+        /// the whole route (every section: a check).
+        section: bool,
+        /// The number.
+        n: u32,
+        /// `lane_type`, `lane_use`, `directionality` members, when given.
+        lane_type: Option<String>,
+        /// See `lane_type`.
+        lane_use: Option<String>,
+        /// See `lane_type`.
+        directionality: Option<String>,
+    },
+    /// §8.12.2.2.8: the lane starts in its lane section (no predecessor in the previous one).
+    StartLane(String),
+    /// §8.12.2.2.7: the lane ends in its lane section (no successor in the next one).
+    EndLane(String),
+    /// §8.12.2.2.5/6: `lane1` is `count` lanes to the `left` (else right) of `lane2`.
+    LaneSide {
+        /// The first lane field.
+        lane1: String,
+        /// Left, else right.
+        left: bool,
+        /// The second lane field.
+        lane2: String,
+        /// n: n − 1 lanes between them.
+        count: u32,
+    },
+    /// §8.12.2.2.4: the routes overlap longitudinally in the way `kind` names.
+    RoutesOverlap {
+        /// The first route field.
+        route1: String,
+        /// The second route field.
+        route2: String,
+        /// `equal`, `start`, `end`, `inside`, `any`, `other`.
+        kind: String,
+    },
+}
+
+/// The map modifiers of §8.12.2.2 (besides `set_map_file`).
+pub(crate) const MAP_MODIFIERS: [&str; 11] = [
+    "number_of_lanes",
+    "routes_are_in_sequence",
+    "roads_follow_in_junction",
+    "routes_overlap",
+    "lane_side",
+    "compound_lane_side",
+    "end_lane",
+    "start_lane",
+    "crossing_connects",
+    "routes_are_opposite",
+    "set_traffic_lights_control_file",
+];
+
+/// Reads `app`, a modifier of the scenario's body, when it is one of the map's (`None` for
+/// another modifier).
+pub(crate) fn read(ctx: &Ctx<'_>, app: &ModifierApp) -> Option<Result<MapModifier, Error>> {
+    let name = app.name.text.as_str();
+    MAP_MODIFIERS
+        .contains(&name)
+        .then(|| read_map(ctx, app, name))
+}
+
+fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier, Error> {
+    let site = ctx.site(app.span);
+    let on_map = app
+        .target
+        .as_ref()
+        .and_then(|t| ctx.path_of(t))
+        .and_then(|p| ctx.lookup(&p))
+        .is_some_and(|(_, v)| matches!(v, Value::RunTime(t) if super::route::is_a(ctx, t, "map")));
+    if !on_map {
+        return Err(site.err(
+            K::Modifier,
+            format!("expected {name}(…) applied to a map field (m: map; m.{name}(…)), found it applied to something else"),
+        ));
+    }
+    let params = super::modifier::params(ctx, name);
+    let args: Args = bind(&app.args, &params)
+        .into_iter()
+        .map(|(n, e)| (n, ctx.arg(e)))
+        .collect();
+    let need = |p: &str| {
+        arg(&args, p).ok_or_else(|| {
+            site.err(
+                K::Argument,
+                format!("expected `{p}` in {name}(…) (a mandatory argument), found none"),
+            )
+        })
+    };
+    let lane = |p: &str| -> Result<String, Error> { field(ctx, need(p)?, true) };
+    let route = |p: &str| -> Result<String, Error> { field(ctx, need(p)?, false) };
+    let member = |p: &str| -> Result<Option<String>, Error> {
+        arg(&args, p)
+            .map(|a| match a.eval()? {
+                Val::Enum(m) => Ok(m),
+                _ => Err(a.site.err(
+                    K::Value,
+                    format!("expected a member of {p}, found another value"),
+                )),
+            })
+            .transpose()
+    };
+    let count = |p: &str, default: Option<u32>| -> Result<u32, Error> {
+        match (arg(&args, p), default) {
+            (None, Some(d)) => Ok(d),
+            (None, None) => Err(site.err(
+                K::Argument,
+                format!("expected `{p}` in {name}(…) (a mandatory argument), found none"),
+            )),
+            (Some(a), _) => match a.number()? {
+                x if x >= 0.0 && x.fract() == 0.0 && x <= f64::from(u32::MAX) => Ok(x as u32),
+                x => Err(a.site.err(
+                    K::Value,
+                    format!("expected a whole number of 0 or more, found {x}"),
+                )),
+            },
+        }
+    };
+    let kind = match name {
+        "number_of_lanes" => {
+            let r = need("route")?;
+            let path = field(ctx, r, false)?;
+            MapKind::NumberOfLanes {
+                section: is_type(ctx, &path, "lane_section"),
+                route: path,
+                n: count("num_of_lanes", None)?,
+                lane_type: member("lane_type")?,
+                lane_use: member("lane_use")?,
+                directionality: member("directionality")?,
+            }
+        }
+        "start_lane" => MapKind::StartLane(lane("lane")?),
+        "end_lane" => MapKind::EndLane(lane("lane")?),
+        "lane_side" | "compound_lane_side" => {
+            let left = match member("side")?.as_deref() {
+                Some("left") => true,
+                Some("right") => false,
+                _ => {
+                    return Err(site.err(
+                        K::Argument,
+                        format!("expected side: left or right in {name}(…), found none"),
+                    ))
+                }
+            };
+            MapKind::LaneSide {
+                lane1: lane("lane1")?,
+                left,
+                lane2: lane("lane2")?,
+                count: count("count", Some(1))?,
+            }
+        }
+        "routes_overlap" => MapKind::RoutesOverlap {
+            route1: route("route1")?,
+            route2: route("route2")?,
+            kind: member("overlap_kind")?.unwrap_or_else(|| "any".to_string()),
+        },
+        other => {
+            let why = match other {
+                "routes_are_in_sequence" => "every free route field is the roads the plan drives on, one route, so none follows another; name routes in sequence with map.create_route([…])",
+                "roads_follow_in_junction" => "junction fields are not bound to the map's junctions; name the way through a junction with map.create_route([…]) through points before and after it",
+                "crossing_connects" => "crossings are not bound to the map",
+                "routes_are_opposite" => "every free route field is the roads the plan drives on in their driving direction, so no two are opposite",
+                _ => "traffic light control files are not read",
+            };
+            return Err(site.err(
+                K::Unsupported,
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap), found {other}(…): {why}"),
+            ));
+        }
+    };
+    Ok(MapModifier {
+        kind,
+        name: name.to_string(),
+        site,
+    })
+}
+
+/// The path of the free field `a` names: a lane (`lane`, `compound_lane`) with `lane`, else a
+/// route bound to the plan's roads (`route`, `road`, `lane_section`, `compound_route`).
+fn field(ctx: &Ctx<'_>, a: &Arg, lane: bool) -> Result<String, Error> {
+    let found = a.path.as_ref().and_then(|p| {
+        ctx.lookup(p).and_then(|(p, v)| match v {
+            Value::RunTime(t) => Some((p, t.clone())),
+            _ => None,
+        })
+    });
+    let fits = |t: &str| {
+        if lane {
+            super::route::ONE_LANE
+                .iter()
+                .any(|k| super::route::is_a(ctx, t, k))
+        } else {
+            super::route::WHOLE_ROAD
+                .iter()
+                .any(|k| super::route::is_exactly_or_user(ctx, t, k))
+        }
+    };
+    match found {
+        Some((p, t)) if fits(&t) => Ok(p),
+        _ => Err(a.site.err(
+            K::Argument,
+            format!(
+                "expected a {} field nothing defines, found another expression",
+                if lane {
+                    "lane (or compound_lane)"
+                } else {
+                    "route (route, road, lane_section or compound_route)"
+                }
+            ),
+        )),
+    }
+}
+
+/// Whether the field at `path` is of type `ty` (or inherits it).
+fn is_type(ctx: &Ctx<'_>, path: &str, ty: &str) -> bool {
+    ctx.lookup(path)
+        .is_some_and(|(_, v)| matches!(v, Value::RunTime(t) if super::route::is_a(ctx, t, ty)))
+}

@@ -1,0 +1,136 @@
+//! The map's modifiers in the scenario's body (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2) against the
+//! loaded road: lane fields bound to its lanes and used by `change_lane(target: l)` /
+//! `follow_lane(target: l)`, the plan's roads checked, and one failing binding or check per
+//! class. Lanes and positions worked by hand in the scenario files' comments.
+
+use std::f64::consts::PI;
+
+use crate::support::lower_at;
+
+/// Lateral positions are closed forms of the step times on straight roads.
+const Y_TOL: f64 = 1e-6;
+/// The lane change's cost in s against its first-order closed form (the next order,
+/// ∫ ẏ⁴/(8v³) dt, and the steps make up the 1 mm left).
+const COST_TOL: f64 = 3e-3;
+
+fn run(name: &str, road: &str) -> crate::support::Run {
+    crate::support::run_on(name, road)
+}
+
+fn refused(name: &str, road: &str, text: &str, place: &str) {
+    refused_all(name, road, &[text], place);
+}
+
+fn refused_all(name: &str, road: &str, texts: &[&str], place: &str) {
+    let e = match lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        &format!("tests/roads/{road}.xodr"),
+        0,
+        None,
+    ) {
+        Ok(_) => panic!("{name}: planned"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        texts.iter().all(|t| e.contains(t)) && e.ends_with(&format!("{name}.osc:{place}")),
+        "{name}: {e}"
+    );
+}
+
+#[test]
+fn end_lane_and_lane_side_bind_the_lane_a_change_moves_into() {
+    let r = run("map_lanes", "lane_drop");
+    let y = |t: f64| -8.75 + 7.0 * (1.0 - (PI * t / 4.0).cos()) / 2.0;
+    let start = r.at(0.0, "ego");
+    assert_eq!(start.lane, -3, "ego starts in the ending lane");
+    assert!((start.s - 100.0).abs() < Y_TOL, "{start:?}");
+    for (t, want) in [(1.0, y(1.0)), (2.0, -5.25), (4.0, -1.75), (6.0, -1.75)] {
+        let got = r.at(t, "ego").y;
+        assert!((got - want).abs() < Y_TOL, "y({t}) = {got}, want {want}");
+    }
+    let end = r.at(6.0, "ego");
+    assert_eq!(end.lane, -1, "target is lane -1");
+    // The engine moves ego at 20 m/s along its path, so along the road at √(v² − ẏ²): the
+    // change costs ∫ ẏ²/(2v) dt = Δ²π²/(16·T·v) = 49π²/1280 = 0.378 m of s (to first order).
+    let cost = 49.0 * PI * PI / 1280.0;
+    let npc = r.at(6.0, "npc");
+    assert_eq!(npc.lane, -1, "npc along target");
+    assert!(
+        (npc.s - 80.0).abs() < Y_TOL && (npc.y + 1.75).abs() < Y_TOL,
+        "{npc:?}"
+    );
+    for (t, s) in [(4.0, 180.0), (6.0, 220.0)] {
+        let got = r.at(t, "ego").s;
+        assert!((got - (s - cost)).abs() < COST_TOL, "s({t}) = {got}");
+    }
+}
+
+#[test]
+fn map_checks_that_fail_name_what_the_map_has() {
+    refused(
+        "err_map_number_of_lanes",
+        "straight",
+        "expected 3 driving lanes on `r` (the roads the plan drives on), found 5 on road 1 (the lane section from s = 0.00 m: lanes [-3, -2, -1, 1, 2])",
+        "7:5",
+    );
+    refused(
+        "err_map_overlap",
+        "straight",
+        "expected `a` and `b` to overlap as inside, found both the roads the plan drives on (1), which overlap as equal",
+        "7:5",
+    );
+}
+
+#[test]
+fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
+    refused(
+        "err_map_start_lane",
+        "straight",
+        "expected lanes of the map for `l` that satisfy start_lane(…), found none on roads 1",
+        "6:5",
+    );
+    refused(
+        "err_map_other_road",
+        "road_link_unequal_number_of_lanes0",
+        "expected a lane of the roads the plan drives on (1) for `l`, found lane -3 of road 2 (bound by map.start_lane(…) at ",
+        "10:32",
+    );
+    refused_all(
+        "err_map_against",
+        "lane_drop",
+        &[
+            "expected a driving lane of road 1 in the direction `ego` drives (right-hand traffic: lanes [-3, -2, -1]) at s = ",
+            "for `l`, found lane 1 (bound by map.lane_side(…) at ",
+            "err_map_against.osc:10:5), which runs against it",
+        ],
+        "11:32",
+    );
+    refused(
+        "err_map_along",
+        "lane_drop",
+        "expected `npc` in the lane of route `target` (lane -1, bound by map.lane_side(…) at ",
+        "23:13",
+    );
+}
+
+#[test]
+fn modifiers_of_the_scenario_the_runtime_does_not_run_say_why() {
+    refused(
+        "err_map_sequence",
+        "straight",
+        "found routes_are_in_sequence(…): every free route field is the roads the plan drives on, one route, so none follows another",
+        "7:5",
+    );
+    refused(
+        "err_scenario_modifier",
+        "straight",
+        "modifier `speed` needs an actor to apply to",
+        "6:5",
+    );
+    refused(
+        "err_map_invoked",
+        "lane_drop",
+        "found `lane_side(…)`, a map modifier in an invoked scenario (the map is the run's: write it in the scenario that runs)",
+        "7:5",
+    );
+}
