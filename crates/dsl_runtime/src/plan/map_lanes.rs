@@ -8,7 +8,9 @@
 //! | the same on a `lane_section` | binding | a lane section of the plan's roads has n such lanes |
 //! | `start_lane(l)` | binding | l is a driving lane with a lane section before it in its driving direction and no predecessor there |
 //! | `end_lane(l)` | binding | l is a driving lane with a lane section after it in its driving direction and no successor there |
-//! | `lane_side(l1, side, l2, count)`, `compound_lane_side(…)` | binding | l1 and l2 are driving lanes of one lane section, l1 `count` lanes to the side of l2 across the road (t grows to the left of the s-axis, §8.12.5), every lane of the section counted |
+//! | `lane_side(l1, side, l2, count)`, `compound_lane_side(…)` | binding | l1 and l2 are driving lanes of one lane section, l1 `count` lanes to the side of l2 across the road (t grows to the left of the s-axis, §8.12.5), every lane of the section counted; with `lane_section` (`route`), on the plan's roads |
+//! | `routes_are_in_sequence(preceding, succeeding, road)` on lane fields | binding | `succeeding` is a successor of `preceding` in its driving direction (the network's lane links, through lane sections and road links); with `road`, both on the plan's roads |
+//! | `routes_are_opposite(route1, route2, containing_road, lateral_overlap)` on lane fields | binding | both in one lane section, driven in opposite directions; with `containing_road`, on the plan's roads; `lateral_overlap` `never` (two lanes never share their width) or none |
 //! | `routes_overlap(r1, r2, kind)` | check | both are the plan's roads, so they overlap as `equal`: `equal` and `any` hold, another kind is an error |
 //!
 //! Lane fields range over the driving lanes (OpenDRIVE types a vehicle drives on) of every
@@ -62,7 +64,7 @@ pub(crate) fn bind(
     let on_plan = |h: &LaneHandle| plan_ids.contains(&net.roads()[h.road as usize].id);
     let mut last = (Vec::new(), Vec::new());
     for k in 1..=lane_mods.len() {
-        let (names, solutions) = solve(net, &domain, &lane_mods[..k]);
+        let (names, solutions) = solve(net, &domain, &lane_mods[..k], &on_plan);
         if solutions.is_empty() {
             let m = lane_mods[k - 1];
             let roads: Vec<&str> = net
@@ -139,6 +141,12 @@ fn fields(m: &MapModifier) -> Option<Vec<&str>> {
     match &m.kind {
         MapKind::StartLane(l) | MapKind::EndLane(l) => Some(vec![l.as_str()]),
         MapKind::LaneSide { lane1, lane2, .. } => Some(vec![lane1.as_str(), lane2.as_str()]),
+        MapKind::InSequence {
+            preceding,
+            succeeding,
+            ..
+        } => Some(vec![preceding.as_str(), succeeding.as_str()]),
+        MapKind::Opposite { route1, route2, .. } => Some(vec![route1.as_str(), route2.as_str()]),
         _ => None,
     }
 }
@@ -171,6 +179,7 @@ fn solve(
     net: &RoadNetwork,
     domain: &[LaneHandle],
     mods: &[&MapModifier],
+    on_plan: &dyn Fn(&LaneHandle) -> bool,
 ) -> (Vec<String>, Vec<Vec<LaneHandle>>) {
     let mut names: Vec<String> = Vec::new();
     for m in mods {
@@ -192,13 +201,30 @@ fn solve(
                     mods.iter().all(|m| match &m.kind {
                         MapKind::StartLane(l) if l == n => starts(net, *h),
                         MapKind::EndLane(l) if l == n => ends(net, *h),
+                        // With `road:`, `containing_road:`, `lane_section:` (the plan's roads).
+                        MapKind::LaneSide {
+                            lane1: a,
+                            lane2: b,
+                            on_plan_roads: true,
+                            ..
+                        }
+                        | MapKind::InSequence {
+                            preceding: a,
+                            succeeding: b,
+                            on_plan_roads: true,
+                        }
+                        | MapKind::Opposite {
+                            route1: a,
+                            route2: b,
+                            on_plan_roads: true,
+                        } if a == n || b == n => on_plan(h),
                         _ => true,
                     })
                 })
                 .collect()
         })
         .collect();
-    let sides: Vec<(usize, bool, usize, u32)> = mods
+    let rels: Vec<Rel> = mods
         .iter()
         .filter_map(|m| match &m.kind {
             MapKind::LaneSide {
@@ -206,42 +232,73 @@ fn solve(
                 left,
                 lane2,
                 count,
-            } => Some((index(lane1), *left, index(lane2), *count)),
+                ..
+            } => Some(Rel::Side(index(lane1), *left, index(lane2), *count)),
+            MapKind::InSequence {
+                preceding,
+                succeeding,
+                ..
+            } => Some(Rel::Follows(index(succeeding), index(preceding))),
+            MapKind::Opposite { route1, route2, .. } => {
+                Some(Rel::Opposite(index(route1), index(route2)))
+            }
             _ => None,
         })
         .collect();
     let mut out = Vec::new();
     let mut partial = Vec::new();
-    search(net, &own, &sides, &mut partial, &mut out);
+    search(net, &own, &rels, &mut partial, &mut out);
     (names, out)
+}
+
+/// A relation between two lane fields (by their index).
+#[derive(Debug, Clone, Copy)]
+enum Rel {
+    /// The first is n lanes to the left (`true`) or right of the second.
+    Side(usize, bool, usize, u32),
+    /// The first is a successor of the second in its driving direction.
+    Follows(usize, usize),
+    /// The two lie in one lane section and are driven in opposite directions.
+    Opposite(usize, usize),
+}
+
+impl Rel {
+    /// Whether it holds for the assignment `a` (`None` while a field is unassigned).
+    fn holds(self, net: &RoadNetwork, a: &[LaneHandle]) -> Option<bool> {
+        let (i, j) = match self {
+            Rel::Side(i, _, j, _) | Rel::Follows(i, j) | Rel::Opposite(i, j) => (i, j),
+        };
+        let (x, y) = (*a.get(i)?, *a.get(j)?);
+        Some(match self {
+            Rel::Side(_, left, _, n) => beside(net, y, left, n) == Some(x),
+            Rel::Follows(..) => net.successors(y).contains(&x),
+            Rel::Opposite(..) => {
+                (x.road, x.section) == (y.road, y.section)
+                    && net.driving_direction(x) != net.driving_direction(y)
+            }
+        })
+    }
 }
 
 /// Depth-first assignment of the fields after `partial`, keeping every full one that holds.
 fn search(
     net: &RoadNetwork,
     own: &[Vec<LaneHandle>],
-    sides: &[(usize, bool, usize, u32)],
+    rels: &[Rel],
     partial: &mut Vec<LaneHandle>,
     out: &mut Vec<Vec<LaneHandle>>,
 ) {
     if out.len() >= MAX_SOLUTIONS {
         return;
     }
-    let i = partial.len();
-    if i == own.len() {
+    if partial.len() == own.len() {
         out.push(partial.clone());
         return;
     }
-    for h in &own[i] {
+    for h in &own[partial.len()] {
         partial.push(*h);
-        let holds = sides.iter().all(|&(a, left, b, n)| {
-            if a.max(b) > i {
-                return true;
-            }
-            beside(net, partial[b], left, n) == Some(partial[a])
-        });
-        if holds {
-            search(net, own, sides, partial, out);
+        if rels.iter().all(|r| r.holds(net, partial) != Some(false)) {
+            search(net, own, rels, partial, out);
         }
         partial.pop();
     }

@@ -1,6 +1,7 @@
 //! The map's modifiers applied in the scenario's body (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2:
 //! `m.number_of_lanes(…)`, `m.start_lane(l)`, `m.end_lane(l)`, `m.lane_side(…)`,
-//! `m.compound_lane_side(…)`, `m.routes_overlap(…)`), read as plain data for the planner,
+//! `m.compound_lane_side(…)`, `m.routes_overlap(…)`; `m.routes_are_in_sequence(…)` and
+//! `m.routes_are_opposite(…)` on lane fields), read as plain data for the planner,
 //! which binds the lane fields they name to lanes of the loaded road network or checks the
 //! network against them (`crate::plan`'s `map_lanes`).
 //!
@@ -8,8 +9,8 @@
 //! maps: with an OpenDRIVE network loaded, a modifier over lane fields is a **binding** of
 //! those fields to lanes of the network that satisfy it, one over route fields a **check**
 //! that the network (the roads the plan drives on, which every free route field is) does. The
-//! others (`routes_are_in_sequence`, `roads_follow_in_junction`, `crossing_connects`,
-//! `routes_are_opposite`, `set_traffic_lights_control_file`) are errors at the modifier saying
+//! others (`routes_are_in_sequence` and `routes_are_opposite` on route fields,
+//! `roads_follow_in_junction`, `crossing_connects`, `set_traffic_lights_control_file`) are errors at the modifier saying
 //! why; `set_map_file` names the network (`crate::map_file`).
 
 use dsl::semantics::hir::ModifierApp;
@@ -63,6 +64,27 @@ pub(crate) enum MapKind {
         lane2: String,
         /// n: n − 1 lanes between them.
         count: u32,
+        /// Whether `lane_section:` (`route:` of `compound_lane_side`) was given: a route field,
+        /// the plan's roads.
+        on_plan_roads: bool,
+    },
+    /// §8.12.2.2.2 on lane fields: `succeeding` follows `preceding`.
+    InSequence {
+        /// The first lane field.
+        preceding: String,
+        /// The lane field that follows it.
+        succeeding: String,
+        /// Whether `road:` was given (a road field: the plan's roads).
+        on_plan_roads: bool,
+    },
+    /// §8.12.2.2.10 on lane fields: the two run in opposite directions.
+    Opposite {
+        /// The first lane field.
+        route1: String,
+        /// The second lane field.
+        route2: String,
+        /// Whether `containing_road:` was given (a road field: the plan's roads).
+        on_plan_roads: bool,
     },
     /// §8.12.2.2.4: the routes overlap longitudinally in the way `kind` names.
     RoutesOverlap {
@@ -181,11 +203,20 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                     ))
                 }
             };
+            let within = if name == "lane_side" {
+                "lane_section"
+            } else {
+                "route"
+            };
             MapKind::LaneSide {
                 lane1: lane("lane1")?,
                 left,
                 lane2: lane("lane2")?,
                 count: count("count", Some(1))?,
+                on_plan_roads: arg(&args, within)
+                    .map(|a| field(ctx, a, false))
+                    .transpose()?
+                    .is_some(),
             }
         }
         "routes_overlap" => MapKind::RoutesOverlap {
@@ -193,17 +224,50 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             route2: route("route2")?,
             kind: member("overlap_kind")?.unwrap_or_else(|| "any".to_string()),
         },
+        "routes_are_in_sequence" | "routes_are_opposite"
+            if ["preceding", "route1"]
+                .iter()
+                .filter_map(|p| arg(&args, p))
+                .any(|a| field(ctx, a, true).is_ok()) =>
+        {
+            let road = |p: &str| -> Result<bool, Error> {
+                arg(&args, p)
+                    .map(|a| field(ctx, a, false))
+                    .transpose()
+                    .map(|r| r.is_some())
+            };
+            if name == "routes_are_in_sequence" {
+                MapKind::InSequence {
+                    preceding: lane("preceding")?,
+                    succeeding: lane("succeeding")?,
+                    on_plan_roads: road("road")?,
+                }
+            } else {
+                if let Some(k) = member("lateral_overlap")?.filter(|k| k != "never") {
+                    let at = arg(&args, "lateral_overlap").map_or(&site, |a| &a.site);
+                    return Err(at.err(
+                        K::Unsupported,
+                        format!("expected lateral_overlap: never for two lanes driven in opposite directions (each lane of an OpenDRIVE road has one driving direction, so two never share their width), found {k}"),
+                    ));
+                }
+                MapKind::Opposite {
+                    route1: lane("route1")?,
+                    route2: lane("route2")?,
+                    on_plan_roads: road("containing_road")?,
+                }
+            }
+        }
         other => {
             let why = match other {
-                "routes_are_in_sequence" => "every free route field is the roads the plan drives on, one route, so none follows another; name routes in sequence with map.create_route([…])",
-                "roads_follow_in_junction" => "junction fields are not bound to the map's junctions; name the way through a junction with map.create_route([…]) through points before and after it",
-                "crossing_connects" => "crossings are not bound to the map",
-                "routes_are_opposite" => "every free route field is the roads the plan drives on in their driving direction, so no two are opposite",
-                _ => "traffic light control files are not read",
+                "routes_are_in_sequence" => "on route fields (every free route field is the roads the plan drives on, one route, so none follows another; lane fields are bound); name routes in sequence with map.create_route([…])",
+                "roads_follow_in_junction" => "(junction fields are not bound to the map's junctions; name the way through a junction with map.create_route([…]) through points before and after it)",
+                "crossing_connects" => "(crossings are not bound to the map)",
+                "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; lane fields are bound)",
+                _ => "(traffic light control files are not read)",
             };
             return Err(site.err(
                 K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap), found {other}(…): {why}"),
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence and routes_are_opposite on lane fields), found {other}(…) {why}"),
             ));
         }
     };

@@ -66,6 +66,18 @@ fn end_lane_and_lane_side_bind_the_lane_a_change_moves_into() {
 }
 
 #[test]
+fn lanes_in_sequence_and_opposite_are_bound_through_the_lane_links() {
+    let r = run("map_sequence", "lane_drop");
+    let y = |t: f64| -1.75 - 3.5 * (1.0 - (PI * t / 4.0).cos()) / 2.0;
+    for (t, want) in [(0.0, -1.75), (1.0, y(1.0)), (2.0, -3.5), (4.0, -5.25)] {
+        let got = r.at(t, "ego").y;
+        assert!((got - want).abs() < Y_TOL, "y({t}) = {got}, want {want}");
+    }
+    assert_eq!(r.at(4.0, "ego").lane, -2, "after is lane -2 of section 1");
+    assert!((r.at(0.0, "ego").s - 310.0).abs() < Y_TOL);
+}
+
+#[test]
 fn map_checks_that_fail_name_what_the_map_has() {
     refused(
         "err_map_number_of_lanes",
@@ -90,6 +102,18 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "6:5",
     );
     refused(
+        "err_map_sequence",
+        "straight",
+        "expected lanes of the map for `a`, `b` that satisfy routes_are_in_sequence(…), found none on roads 1",
+        "7:5",
+    );
+    refused(
+        "err_map_side_section",
+        "road_link_unequal_number_of_lanes0",
+        "expected lanes of the map for `k`, `l` that satisfy lane_side(…) and the map modifiers before it, found none on roads 1, 2",
+        "10:5",
+    );
+    refused(
         "err_map_other_road",
         "road_link_unequal_number_of_lanes0",
         "expected a lane of the roads the plan drives on (1) for `l`, found lane -3 of road 2 (bound by map.start_lane(…) at ",
@@ -105,6 +129,15 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         ],
         "11:32",
     );
+    refused_all(
+        "err_map_opposite",
+        "lane_drop",
+        &[
+            "for `oncoming`, found lane 1 (bound by map.routes_are_opposite(…) at ",
+            "err_map_opposite.osc:15:5), which runs against it",
+        ],
+        "16:32",
+    );
     refused(
         "err_map_along",
         "lane_drop",
@@ -116,9 +149,9 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
 #[test]
 fn modifiers_of_the_scenario_the_runtime_does_not_run_say_why() {
     refused(
-        "err_map_sequence",
+        "err_map_sequence_roads",
         "straight",
-        "found routes_are_in_sequence(…): every free route field is the roads the plan drives on, one route, so none follows another",
+        "found routes_are_in_sequence(…) on route fields (every free route field is the roads the plan drives on, one route, so none follows another",
         "7:5",
     );
     refused(
