@@ -288,6 +288,13 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                     // On a road of the plan (`route::on_plan_road`, checked above).
                     Some((*lane, road.plan_s(id, *s).unwrap_or(*s) + a.start_offset))
                 }
+                // A lane field the map bound: from its lane section's start.
+                (Route::Free { field, .. }, At::Start | At::All) => {
+                    match (p.lane_roads.get(field), p.route_lanes.get(field)) {
+                        (Some((_, Some((from, _)))), Some((lane, _))) => Some((*lane, *from)),
+                        _ => None,
+                    }
+                }
                 _ => None,
             });
         to_place.push(ToPlace {
