@@ -1,6 +1,6 @@
 //! The map's modifiers against the loaded road network (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2;
-//! OpenDRIVE 1.8 §11 lanes, §11.6 lane linkage): bindings of lane fields and checks of the
-//! roads the plan drives on, done once before anything is planned.
+//! OpenDRIVE 1.8 §11 lanes, §11.6 lane linkage): bindings of lane fields, after the checks of
+//! the roads the plan drives on (`map_checks`), done once before anything is planned.
 //!
 //! | modifier | class | oscsim |
 //! | --- | --- | --- |
@@ -20,7 +20,7 @@
 //! several remain. A modifier after which nothing satisfies the modifiers so far is an error
 //! at it, naming what the map has.
 
-use opendrive::{Direction, LaneHandle, LaneType, RoadHandle, RoadNetwork};
+use opendrive::{Direction, LaneHandle, RoadHandle, RoadNetwork};
 
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{MapKind, MapModifier};
@@ -52,7 +52,7 @@ pub(crate) fn bind(
     choose: &mut dyn FnMut(usize) -> usize,
 ) -> Result<Vec<MapLane>, Error> {
     for m in mods {
-        check(road, m)?;
+        super::map_checks::check(road, m)?;
     }
     let lane_mods: Vec<&MapModifier> = mods.iter().filter(|m| fields(m).is_some()).collect();
     if lane_mods.is_empty() {
@@ -349,170 +349,4 @@ fn starts(net: &RoadNetwork, h: LaneHandle) -> bool {
 /// lane_section".
 fn ends(net: &RoadNetwork, h: LaneHandle) -> bool {
     has_section(net, h, false) && net.successors(h).is_empty()
-}
-
-/// Checks a modifier over route fields against the plan's roads.
-fn check(road: &PlanRoad<'_>, m: &MapModifier) -> Result<(), Error> {
-    match &m.kind {
-        MapKind::NumberOfLanes {
-            route,
-            section,
-            n,
-            lane_type,
-            lane_use,
-            directionality,
-        } => {
-            let keep = |t: &LaneType| -> Result<bool, Error> {
-                Ok(matches_type(m, lane_type.as_deref(), t, type_of)?
-                    && matches_type(m, lane_use.as_deref(), t, use_of)?
-                    && matches_type(m, directionality.as_deref(), t, directionality_of)?)
-            };
-            let what = [
-                lane_type.clone(),
-                lane_use.as_ref().map(|u| format!("{u}-use")),
-                directionality.clone(),
-            ]
-            .into_iter()
-            .flatten()
-            .collect::<Vec<_>>()
-            .join(" ");
-            let what = if what.is_empty() {
-                "lanes".to_string()
-            } else {
-                format!("{what} lanes")
-            };
-            let net = road.network();
-            let mut counts = Vec::new();
-            for id in road.ids() {
-                let Some(r) = net.roads().iter().find(|r| r.id == id) else {
-                    continue;
-                };
-                for ls in &r.lane_sections {
-                    let mut ids = Vec::new();
-                    for l in ls.right.iter().rev().chain(ls.left.iter()) {
-                        if keep(&l.lane_type)? {
-                            ids.push(l.id);
-                        }
-                    }
-                    counts.push((id.clone(), ls.s, ids));
-                }
-            }
-            let shown = |(id, s, ids): &(String, f64, Vec<i32>)| {
-                format!(
-                    "{} on road {id} (the lane section from s = {s:.2} m{})",
-                    ids.len(),
-                    if ids.is_empty() {
-                        String::new()
-                    } else {
-                        format!(": lanes {ids:?}")
-                    }
-                )
-            };
-            if *section {
-                if !counts.iter().any(|(_, _, ids)| ids.len() == *n as usize) {
-                    return Err(m.site.err(
-                        K::Road,
-                        format!(
-                            "expected a lane section of the roads the plan drives on with {n} {what} for `{route}`, found {}",
-                            counts.iter().map(shown).collect::<Vec<_>>().join(", ")
-                        ),
-                    ));
-                }
-            } else if let Some(c) = counts.iter().find(|(_, _, ids)| ids.len() != *n as usize) {
-                return Err(m.site.err(
-                    K::Road,
-                    format!(
-                        "expected {n} {what} on `{route}` (the roads the plan drives on), found {}",
-                        shown(c)
-                    ),
-                ));
-            }
-            Ok(())
-        }
-        MapKind::RoutesOverlap {
-            route1,
-            route2,
-            kind,
-        } => {
-            if kind == "equal" || kind == "any" {
-                Ok(())
-            } else {
-                Err(m.site.err(
-                    K::Road,
-                    format!(
-                        "expected `{route1}` and `{route2}` to overlap as {kind}, found both the roads the plan drives on ({}), which overlap as equal",
-                        road.ids().join(", ")
-                    ),
-                ))
-            }
-        }
-        _ => Ok(()),
-    }
-}
-
-/// Whether lane type `t` is what `want` (a member of the DSL's enum, read by `read`) names;
-/// no filter: yes. A member no OpenDRIVE lane type says is an error at the modifier.
-fn matches_type(
-    m: &MapModifier,
-    want: Option<&str>,
-    t: &LaneType,
-    read: fn(&str, &LaneType) -> Option<bool>,
-) -> Result<bool, Error> {
-    let Some(w) = want else {
-        return Ok(true);
-    };
-    read(w, t).ok_or_else(|| {
-        m.site.err(
-            K::Unsupported,
-            format!("expected a {w} the OpenDRIVE lane types say (see docs/dsl.md, map modifiers), found {w}, which none of them does"),
-        )
-    })
-}
-
-/// §8.12 `lane_type` against an OpenDRIVE lane type.
-fn type_of(w: &str, t: &LaneType) -> Option<bool> {
-    let pedestrian = matches!(t, LaneType::Sidewalk | LaneType::Walking);
-    let vru = matches!(t, LaneType::Biking);
-    Some(match w {
-        "driving" => t.is_drivable(),
-        "vru_vehicles" => vru,
-        "pedestrian" => pedestrian,
-        "non_driving" => !t.is_drivable() && !vru && !pedestrian,
-        _ => return None,
-    })
-}
-
-/// §8.12 `lane_use` against an OpenDRIVE lane type (the uses that type names).
-fn use_of(w: &str, t: &LaneType) -> Option<bool> {
-    let named = match w {
-        "normal" => LaneType::Driving,
-        "exit" => LaneType::Exit,
-        "entry" => LaneType::Entry,
-        "on_ramp" => LaneType::OnRamp,
-        "off_ramp" => LaneType::OffRamp,
-        "connecting_ramp" => LaneType::ConnectingRamp,
-        "hov" => LaneType::Hov,
-        "bus" => LaneType::Bus,
-        "parking" => LaneType::Parking,
-        "stop" => LaneType::Stop,
-        "restricted" => LaneType::Restricted,
-        "border" => LaneType::Border,
-        "shoulder" => LaneType::Shoulder,
-        "curb" => LaneType::Curb,
-        "median" => LaneType::Median,
-        "bicycle" => LaneType::Biking,
-        "sidewalk" => LaneType::Sidewalk,
-        _ => return None,
-    };
-    Some(*t == named)
-}
-
-/// §8.12 `directionality` against an OpenDRIVE lane type: `bidirectional` lanes are driven
-/// both ways, every other lane one way (its side's).
-fn directionality_of(w: &str, t: &LaneType) -> Option<bool> {
-    match w {
-        "uni_direction" => Some(*t != LaneType::Bidirectional),
-        "bi_direction" => Some(*t == LaneType::Bidirectional),
-        _ => None,
-    }
 }

@@ -60,6 +60,7 @@
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
 //! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
+//! | `map_checks` | the map's modifiers over route fields checked against the plan's roads |
 //! | `map_lanes` | the map's modifiers against the loaded network: lane fields bound, the plan's roads checked |
 //! | `lane_fields` | the lane a `lane` field names for `change_lane`/`follow_lane(target: l)`: bound or drawn once |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
@@ -89,6 +90,7 @@ mod lane_fields;
 mod lateral;
 mod lateral_actions;
 mod lateral_end;
+mod map_checks;
 mod map_lanes;
 mod motion;
 mod path_shape;
