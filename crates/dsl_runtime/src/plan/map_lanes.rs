@@ -15,7 +15,8 @@
 //!
 //! Lane fields range over the driving lanes (OpenDRIVE types a vehicle drives on) of every
 //! road outside junctions. Every assignment of the constrained fields that satisfies all the
-//! modifiers is found (in the network's order); those that put every field on the plan's roads
+//! modifiers is found (in the network's order; at most [`MAX_SOLUTIONS`] kept, and an error
+//! past [`MAX_TRIED`] partial assignments tried); those that put every field on the plan's roads
 //! are preferred (the scenario happens there), and one is drawn from the run's seed when
 //! several remain. A modifier after which nothing satisfies the modifiers so far is an error
 //! at it, naming what the map has.
@@ -26,8 +27,11 @@ use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{MapKind, MapModifier};
 use crate::road::PlanRoad;
 
-/// The most assignments of lane fields looked at.
+/// The most assignments of lane fields kept.
 const MAX_SOLUTIONS: usize = 100_000;
+/// The most partial assignments tried: past it the search stops with an error, so a large
+/// network with loosely constrained fields cannot hang the plan.
+const MAX_TRIED: usize = 2_000_000;
 
 /// A lane a map modifier bound a field to.
 #[derive(Debug, Clone, PartialEq)]
@@ -64,7 +68,13 @@ pub(crate) fn bind(
     let on_plan = |h: &LaneHandle| plan_ids.contains(&net.roads()[h.road as usize].id);
     let mut last = (Vec::new(), Vec::new());
     for k in 1..=lane_mods.len() {
-        let (names, solutions) = solve(net, &domain, &lane_mods[..k], &on_plan);
+        let (names, solutions, tried) = solve(net, &domain, &lane_mods[..k], &on_plan);
+        if tried >= MAX_TRIED {
+            return Err(lane_mods[k - 1].site.err(
+                K::Road,
+                format!("expected lane fields the map's modifiers constrain enough to search, found more than {MAX_TRIED} assignments to try after {}(…); constrain them further (start_lane, end_lane, lane_side to a bound lane)", lane_mods[k - 1].name),
+            ));
+        }
         if solutions.is_empty() {
             let m = lane_mods[k - 1];
             let roads: Vec<&str> = net
@@ -174,13 +184,14 @@ fn driving_lanes(net: &RoadNetwork) -> Vec<LaneHandle> {
 }
 
 /// The fields `mods` name (in first-use order) and every assignment of lanes of `domain` to
-/// them that satisfies all of `mods` (at most [`MAX_SOLUTIONS`]).
+/// them that satisfies all of `mods` (at most [`MAX_SOLUTIONS`]), and how many partial
+/// assignments were tried (at most [`MAX_TRIED`]).
 fn solve(
     net: &RoadNetwork,
     domain: &[LaneHandle],
     mods: &[&MapModifier],
     on_plan: &dyn Fn(&LaneHandle) -> bool,
-) -> (Vec<String>, Vec<Vec<LaneHandle>>) {
+) -> (Vec<String>, Vec<Vec<LaneHandle>>, usize) {
     let mut names: Vec<String> = Vec::new();
     for m in mods {
         for f in fields(m).unwrap_or_default() {
@@ -247,8 +258,9 @@ fn solve(
         .collect();
     let mut out = Vec::new();
     let mut partial = Vec::new();
-    search(net, &own, &rels, &mut partial, &mut out);
-    (names, out)
+    let mut tried = 0;
+    search(net, &own, &rels, &mut partial, &mut out, &mut tried);
+    (names, out, tried)
 }
 
 /// A relation between two lane fields (by their index).
@@ -287,8 +299,9 @@ fn search(
     rels: &[Rel],
     partial: &mut Vec<LaneHandle>,
     out: &mut Vec<Vec<LaneHandle>>,
+    tried: &mut usize,
 ) {
-    if out.len() >= MAX_SOLUTIONS {
+    if out.len() >= MAX_SOLUTIONS || *tried >= MAX_TRIED {
         return;
     }
     if partial.len() == own.len() {
@@ -296,9 +309,10 @@ fn search(
         return;
     }
     for h in &own[partial.len()] {
+        *tried += 1;
         partial.push(*h);
         if rels.iter().all(|r| r.holds(net, partial) != Some(false)) {
-            search(net, own, rels, partial, out);
+            search(net, own, rels, partial, out, tried);
         }
         partial.pop();
     }
