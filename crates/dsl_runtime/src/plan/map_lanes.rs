@@ -364,3 +364,56 @@ fn starts(net: &RoadNetwork, h: LaneHandle) -> bool {
 fn ends(net: &RoadNetwork, h: LaneHandle) -> bool {
     has_section(net, h, false) && net.successors(h).is_empty()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn net(file: &str) -> RoadNetwork {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/roads")
+            .join(file);
+        RoadNetwork::from_file(&path).expect("reads")
+    }
+
+    /// (road id, section, lane) of the driving lanes that pass `keep`.
+    fn lanes(
+        net: &RoadNetwork,
+        keep: fn(&RoadNetwork, LaneHandle) -> bool,
+    ) -> Vec<(String, u32, i32)> {
+        driving_lanes(net)
+            .into_iter()
+            .filter(|h| keep(net, *h))
+            .map(|h| (net.roads()[h.road as usize].id.clone(), h.section, h.lane))
+            .collect()
+    }
+
+    #[test]
+    fn start_and_end_lanes_are_read_from_the_lane_links() {
+        // lane_drop.xodr: lane -3 of section 0 has no successor and section 1 follows it; lane
+        // 1 (driven in -s) has none before section 0 either, but no section lies after it.
+        let drop = net("lane_drop.xodr");
+        assert_eq!(lanes(&drop, ends), [("1".to_string(), 0, -3)]);
+        assert!(lanes(&drop, starts).is_empty());
+        // road_link_unequal_number_of_lanes0.xodr: road 2's lane -3 has no predecessor while
+        // road 1 lies before it; road 1's -3 goes on into road 2's -4.
+        let unequal = net("road_link_unequal_number_of_lanes0.xodr");
+        assert_eq!(lanes(&unequal, starts), [("2".to_string(), 0, -3)]);
+        assert!(lanes(&unequal, ends).is_empty());
+    }
+
+    #[test]
+    fn lanes_beside_count_every_lane_of_the_section_across_the_centre() {
+        let drop = net("lane_drop.xodr");
+        let h = |lane| LaneHandle {
+            road: 0,
+            section: 0,
+            lane,
+        };
+        assert_eq!(beside(&drop, h(-3), true, 2), Some(h(-1)));
+        assert_eq!(beside(&drop, h(-3), true, 3), Some(h(1)));
+        assert_eq!(beside(&drop, h(-1), false, 2), Some(h(-3)));
+        assert_eq!(beside(&drop, h(-3), false, 1), None);
+        assert_eq!(beside(&drop, h(1), true, 1), None);
+    }
+}
