@@ -161,6 +161,12 @@ fn modifiers_of_the_scenario_the_runtime_does_not_run_say_why() {
         "6:5",
     );
     refused(
+        "err_scenario_user_modifier",
+        "straight",
+        "found `gentle(…)`, a modifier applied to the scenario itself",
+        "9:5",
+    );
+    refused(
         "err_map_invoked",
         "lane_drop",
         "found `lane_side(…)`, a map modifier in an invoked scenario (the map is the run's: write it in the scenario that runs)",
