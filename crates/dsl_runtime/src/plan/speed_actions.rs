@@ -290,6 +290,11 @@ impl Planner<'_> {
         } else {
             tr.ramp(t + span, t + span, v.clamp(0.0, MAX_SPEED));
         }
+        if a1 == 0.0 {
+            // The speed holds where the change leaves it (not where it started).
+            self.last_v
+                .insert(target.to_string(), v.clamp(0.0, MAX_SPEED));
+        }
         Ok(())
     }
 }
