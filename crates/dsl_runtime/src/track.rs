@@ -143,8 +143,14 @@ impl Track {
 
     /// Acceleration at time `t` (m/s²): of the stretch under way, else 0 (the speed holds).
     /// At a stretch's end, the acceleration it ends with.
+    /// A change that starts at `t` has its acceleration from `t` on: an assigned acceleration
+    /// is a step of it, which an action starting in the same instant finds (as a step of
+    /// speed, `at`).
     pub(crate) fn acceleration(&self, t: f64) -> f64 {
-        self.state(t).2
+        match self.stretches.iter().find(|r| r.t0 == t && r.t1 > t) {
+            Some(r) => r.shape.acceleration(self.at(t).1, 0.0),
+            None => self.state(t).2,
+        }
     }
 
     /// The acceleration over (`a`, `b`) as pieces (start, end, m/s²) where it is constant,
@@ -171,6 +177,8 @@ impl Track {
     /// s, speed and acceleration at time `t`.
     fn state(&self, t: f64) -> (f64, f64, f64) {
         let (mut s, mut v, mut now) = (self.s0, self.v0, 0.0);
+        // At a change's end (t = its t1), the acceleration it ends with.
+        let mut a_end = 0.0;
         for r in &self.stretches {
             // A step at `t` has happened at `t` (the engine sets it in the step from `t`, and
             // an action that starts in the same instant finds it); a change from `t` has not
@@ -195,11 +203,9 @@ impl Track {
                 Shape::Step { v1 } => v1,
                 _ => v + dv,
             };
-            if t == r.t1 {
-                return (s, v, if r.t1 > r.t0 { a } else { 0.0 });
-            }
+            a_end = if t == r.t1 && r.t1 > r.t0 { a } else { 0.0 };
         }
-        (s + v * (t - now), v, 0.0)
+        (s + v * (t - now), v, a_end)
     }
 
     /// A new stretch from `t0`: later planned changes are dropped, and one under way at `t0` is
@@ -343,6 +349,13 @@ mod tests {
         assert!((tr.at(2.0).1 - 10.0).abs() < TOL);
         assert!((tr.at(2.0).0 - 10.0).abs() < TOL, "10 m at 10 m/s from 1 s");
         assert!((tr.at(3.0).1 - 15.0).abs() < TOL);
+        // An acceleration assigned at t is the acceleration at t.
+        tr.jerk(4.0, 9.0, 2.0, 0.0);
+        assert!((tr.acceleration(4.0) - 2.0).abs() < TOL);
+        assert!(
+            (tr.at(4.0).1 - 20.0).abs() < TOL,
+            "no speed gained at its start"
+        );
         // A second step in the same instant replaces the first.
         tr.ramp(5.0, 5.0, 0.0);
         tr.ramp(5.0, 5.0, 7.0);

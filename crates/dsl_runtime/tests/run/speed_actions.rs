@@ -190,6 +190,22 @@ fn an_assigned_acceleration_holds_until_a_speed_action() {
     assert_eq!(r.phase("do.2"), (7.0, 9.0));
 }
 
+/// keep_acceleration in the instant after assign_acceleration keeps the assigned acceleration
+/// (assign_then_keep_acceleration.osc's comment, by hand).
+#[test]
+fn keep_acceleration_right_after_assign_acceleration_keeps_it() {
+    let r = run("actions/assign_then_keep_acceleration", 0, None);
+    let v = |t: f64| 10.0 + 2.0 * t;
+    for t in [1.0, 2.0, 3.0] {
+        close(r.at(t, "ego").speed, v(t), &format!("v({t})"));
+    }
+    close(stepped(v, 0.0, 3.0), 39.0 + 0.15, "hand sum");
+    close(r.at(3.0, "ego").s, 10.0 + stepped(v, 0.0, 3.0), "s(3)");
+    assert_eq!(r.phase("do.0"), (0.0, 0.0));
+    assert_eq!(r.phase("do.1"), (0.0, 2.0));
+    assert_eq!(r.phase("do.2"), (2.0, 3.0));
+}
+
 /// The group form: each member does the action (docs/dsl.md).
 #[test]
 fn a_group_changes_speed_member_by_member() {
