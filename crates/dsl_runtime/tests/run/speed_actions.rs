@@ -206,6 +206,23 @@ fn keep_acceleration_right_after_assign_acceleration_keeps_it() {
     assert_eq!(r.phase("do.2"), (2.0, 3.0));
 }
 
+/// change_acceleration in the instant after assign_acceleration starts from the assigned
+/// acceleration (assign_then_change_acceleration.osc's comment, by hand).
+#[test]
+fn change_acceleration_right_after_assign_acceleration_starts_from_it() {
+    let r = run("actions/assign_then_change_acceleration", 0, None);
+    for (t, want) in [(0.4, 10.6), (0.8, 10.8), (1.8, 10.8)] {
+        assert!(
+            (r.at(t, "ego").speed - want).abs() < 1e-6,
+            "v({t}) = {}",
+            r.at(t, "ego").speed
+        );
+    }
+    assert_eq!(r.phase("do.0"), (0.0, 0.0));
+    let (s, e) = r.phase("do.1");
+    assert!(s.abs() < T_TOL && (e - 0.8).abs() < T_TOL, "[{s}, {e}]");
+}
+
 /// The group form: each member does the action (docs/dsl.md).
 #[test]
 fn a_group_changes_speed_member_by_member() {

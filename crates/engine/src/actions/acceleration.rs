@@ -1,6 +1,7 @@
 //! oscsim's AccelerationAction (`scenario::LongitudinalAction::Acceleration`, an action with no
 //! XML form): the actor's longitudinal acceleration goes from a₀, its value at the start (the
-//! acceleration of the last step), to the target a₁ under a transition shape f
+//! acceleration of the last step; replacing an AccelerationAction started in the same step,
+//! which has not acted yet, that action's first acceleration), to the target a₁ under a transition shape f
 //! ([`crate::world::shapes`]: over a time, at a peak jerk read as a rate, or at once), then
 //! holds. ASAM OpenSCENARIO DSL 2.1 §8.8.2 `assign_acceleration`, `change_acceleration` and
 //! `keep_acceleration` run through it: no OpenSCENARIO 1.x action holds an acceleration.
@@ -34,16 +35,27 @@ pub(crate) struct AccelerationState {
     start_time: f64,
 }
 
-/// Starts the action on `actor` at `now`.
+impl AccelerationState {
+    /// The acceleration this action gives its first step, if it started at `now` and so has
+    /// not stepped yet.
+    pub(crate) fn first_if_started_at(&self, now: f64) -> Option<f64> {
+        (self.start_time == now).then(|| acceleration(self, 0.0))
+    }
+}
+
+/// Starts the action on `actor` at `now`. `replaced`: the first acceleration of an
+/// AccelerationAction this one replaces in the step both started in (it never acted): the
+/// acceleration to start from, as an assigned acceleration ("as soon as possible", reached at
+/// once) followed in the same instant by a change or a keep of it means; else the last step's.
 pub(crate) fn start(
     world: &mut World,
     actor: EntityId,
-    target: Option<f64>,
+    (target, replaced): (Option<f64>, Option<f64>),
     dynamics: &TransitionDynamics,
     now: f64,
 ) -> Part {
     let e = world.entity(actor);
-    let from = e.travel_component(e.acceleration.translational);
+    let from = replaced.unwrap_or_else(|| e.travel_component(e.acceleration.translational));
     let to = target.unwrap_or(from);
     Part::Acceleration(AccelerationState {
         dynamics: *dynamics,

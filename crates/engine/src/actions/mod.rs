@@ -300,6 +300,20 @@ impl Host<'_> {
         }
     }
 
+    /// The first acceleration of the AccelerationAction holding `actor`'s longitudinal domain,
+    /// if it started in this step (it has not acted yet).
+    fn acceleration_started_now(&self, actor: EntityId) -> Option<f64> {
+        let held = self.world.entity(actor).longitudinal_action?;
+        let slot = self.table.slots.get(held.0 as usize)?;
+        slot.parts
+            .iter()
+            .zip(&slot.actors)
+            .find_map(|(part, &a)| match part {
+                Part::Acceleration(s) if a == actor => s.first_if_started_at(self.time),
+                _ => None,
+            })
+    }
+
     /// Stops the action running in `domain` of `actor`, if any, and frees the domain.
     fn stop_domain(&mut self, actor: EntityId, domain: Domain) {
         stop_domain(self.table, self.world, actor, domain);
@@ -343,6 +357,10 @@ impl Host<'_> {
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Longitudinal(l) => {
+                let replaced = match l {
+                    LongitudinalAction::Acceleration { .. } => self.acceleration_started_now(actor),
+                    _ => None,
+                };
                 self.claim(actor, Domain::Longitudinal, id);
                 match l {
                     LongitudinalAction::Speed { dynamics, target } => {
@@ -355,7 +373,7 @@ impl Host<'_> {
                         distance::start_longitudinal(self.world, actor, l, pos)
                     }
                     LongitudinalAction::Acceleration { target, dynamics } => Ok(
-                        acceleration::start(self.world, actor, *target, dynamics, time),
+                        acceleration::start(self.world, actor, (*target, replaced), dynamics, time),
                     ),
                     LongitudinalAction::RelativeAcceleration { entity_ref, value } => {
                         relative_acceleration::start(

@@ -115,3 +115,35 @@ fn without_a_target_the_acceleration_at_the_start_is_kept() {
     assert_abs_diff_eq!(frames.at("Ego", 5.0).speed, 10.0, epsilon = EXACT);
     assert!(end_time(&events, "Speed").is_none(), "it runs to the end");
 }
+
+/// A step to 2 m/s² at t = 1 s and, in the same Event (so the same step), a linear change to
+/// 0 at a jerk of 2.5 m/s³ that replaces it before it acted: the change starts from the 2 m/s²
+/// the step would have reached at once (not from the last step's 0), over 2/2.5 = 0.8 s:
+/// v = 10 + 2τ − 1.25τ², v(1.4) = 10.6, v(1.8) = 10.8 m/s, then held: v(5) = 10.8 m/s.
+#[test]
+fn a_change_replacing_a_step_in_its_step_starts_from_the_step() {
+    let mut scenario = speed_shapes_with(LongitudinalAction::Acceleration {
+        target: Some(2.0),
+        dynamics: dynamics(DynamicsShape::Step, DynamicsDimension::Time, 0.0),
+    });
+    let event =
+        &mut scenario.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0];
+    let mut change = event.actions[0].clone();
+    change.name = "Change".to_string();
+    change.kind = ActionKind::Private(PrivateAction::Longitudinal(
+        LongitudinalAction::Acceleration {
+            target: Some(0.0),
+            dynamics: dynamics(DynamicsShape::Linear, DynamicsDimension::Rate, 2.5),
+        },
+    ));
+    event.actions.push(change);
+    let network = load::road_network(&scenario).expect("road loads");
+    let mut engine = Engine::new(&scenario, network, EngineConfig::default()).expect("builds");
+    let (mut frames, mut events) = (Recorder::default(), Vec::<EventRecord>::new());
+    engine.run(&mut frames, &mut events).expect("runs");
+    let v = |t: f64| frames.at("Ego", t).speed;
+    assert_abs_diff_eq!(v(1.0), 10.0, epsilon = EXACT);
+    assert_abs_diff_eq!(v(1.4), 10.6, epsilon = EXACT);
+    assert_abs_diff_eq!(v(1.8), 10.8, epsilon = EXACT);
+    assert_abs_diff_eq!(v(5.0), 10.8, epsilon = EXACT);
+}
