@@ -388,3 +388,23 @@ fn a_single_lane_groups_lateral_gap_is_each_members_to_the_reference() {
         "close [{s}, {e}]"
     );
 }
+
+/// change_position on the road network on a group: each member's lane change over the same T
+/// (group_change_position_on_road.osc's comment, with change_position_on_road.osc's values).
+#[test]
+fn a_groups_change_position_on_the_road_network_keeps_the_formation() {
+    /// change_position_on_road.osc's worked integrals (midpoint rule, 100,000 points) against
+    /// the engine's steps of 0.05 s (m), as in position_actions.
+    const ROAD_TOL: f64 = 1e-4;
+    let r = run("actions/group_change_position_on_road", 0, None);
+    for (name, shift) in [("g.vehicles[0]", 0.0), ("g.vehicles[1]", -15.0)] {
+        for (t, x, y) in [(2.0, 39.90654, -7.01291), (4.0, 59.81131, -5.25019)] {
+            let m = r.at(t, name);
+            close(m.x, x + shift, ROAD_TOL, &format!("{name} x({t})"));
+            close(m.y, y, ROAD_TOL, &format!("{name} y({t})"));
+        }
+        assert_eq!(r.at(4.05, name).lane, -2, "{name}");
+    }
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < T_TOL && (e - 4.05).abs() < T_TOL, "[{s}, {e}]");
+}
