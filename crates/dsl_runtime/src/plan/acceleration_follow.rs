@@ -4,10 +4,11 @@
 //! phase starts on a run-time condition. The engine follows x then: oscsim's
 //! RelativeAccelerationAction (`scenario::LongitudinalAction::RelativeAcceleration`) sets the
 //! actor's acceleration to x's ± a in every step of the phase, so its speed after τ s is
-//! v₀ + (v_x − v_x₀) ± a·τ. At a known start the plan tracks the actor along x's pieces of
-//! constant planned acceleration (a linear change per piece, each within the limits); after a
-//! run-time start it does not know the actor's speed (as after any change the engine works
-//! out then).
+//! v₀ + (v_x − v_x₀) ± a·τ. `at: start` after a run-time start is x's acceleration as the
+//! engine finds it over the phase's first step, ± a, held (as the plan reads x's first piece
+//! at a known start). At a known start the plan tracks the actor along x's pieces of constant
+//! planned acceleration (a linear change per piece, each within the limits); after a run-time
+//! start it does not know the actor's speed (as after any change the engine works out then).
 
 use scenario::{LongitudinalAction, PrivateAction};
 
@@ -23,7 +24,8 @@ type Pieces = Vec<(f64, f64, f64)>;
 impl Planner<'_> {
     /// An `acceleration(…, faster_than/slower_than/same_as: x)` at: all that the engine's
     /// RelativeAccelerationAction follows (x's acceleration ± a each step): where x's
-    /// acceleration changes within the phase, or the phase starts at run time. Returns x, the
+    /// acceleration changes within the phase, or the phase starts at run time (there also
+    /// at: start, x's acceleration at the start held). Returns x, the
     /// value added to x's acceleration, and (at a known start) the pieces of x's planned
     /// acceleration over the phase (start, end, m/s²), from which the plan tracks the actor;
     /// `None` where the plan reads x's acceleration itself (`acceleration_value`).
@@ -41,7 +43,10 @@ impl Planner<'_> {
         .find_map(|(key, sign)| m.arg(key).map(|e| (e, sign))) else {
             return Ok(None);
         };
-        if m.at != At::All || m.projected {
+        // at: start after a run-time start: x's acceleration at the start, held, is the
+        // engine's to read then; at: end is x's at a moment not yet come.
+        let runtime_start = m.at == At::Start && t0.is_none();
+        if !(m.at == At::All || runtime_start) || m.projected {
             return Ok(None);
         }
         let x = self.entity_of(e)?;
@@ -89,6 +94,7 @@ impl Planner<'_> {
             PrivateAction::Longitudinal(LongitudinalAction::RelativeAcceleration {
                 entity_ref: x,
                 value: delta,
+                continuous: m.at == At::All,
             }),
             &m.site,
         ));

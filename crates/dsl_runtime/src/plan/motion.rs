@@ -207,7 +207,7 @@ impl Planner<'_> {
         let Some(t) = t0 else {
             return Err(e.site.err(
                 K::Unsatisfiable,
-                format!("expected a phase start the plan knows for an acceleration relative to `{x}` at: start, at: end or as the rate of a speed change, found one after a run-time condition (each reads `{x}`'s acceleration at a moment the plan does not know; alone and at: all the engine follows it)"),
+                format!("expected a phase start the plan knows for an acceleration relative to `{x}` at: end or as the rate of a speed change, found one after a run-time condition (each reads `{x}`'s acceleration at a moment the plan does not know; alone at: all or at: start the engine reads it)"),
             ));
         };
         let pieces = self.track(&x).acceleration_pieces(t, t + len).map_err(|at| {

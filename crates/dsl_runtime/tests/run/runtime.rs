@@ -410,13 +410,23 @@ fn a_speed_relative_to_another_actor_at_the_end_after_an_until_is_its_speed_then
 #[test]
 fn an_acceleration_relative_to_one_that_changes_after_an_until_is_the_engines_following() {
     let r = run("runtime_acceleration_relative", 0, None);
-    phases(&r, &[("do.approach", 0.0, 3.35), ("do.follow", 3.35, 7.35)]);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.follow", 3.35, 7.35),
+            ("do.copy", 7.35, 9.35),
+        ],
+    );
     for (t, ego, lead) in [
         (3.35, 20.0, 8.0),
         (4.35, 19.0, 6.0),
         (5.35, 18.0, 4.0),
         (6.35, 19.0, 4.0),
         (7.35, 20.0, 4.0),
+        // at: start: lead's 1 m/s² as do.copy starts, held after lead's change ends.
+        (8.35, 21.0, 5.0),
+        (9.35, 22.0, 5.0),
     ] {
         let (e, l) = (r.at(t, "ego").speed, r.at(t, "lead").speed);
         assert!((e - ego).abs() < V_TOL, "ego v({t}) = {e} vs {ego}");

@@ -375,11 +375,18 @@ impl Host<'_> {
                     LongitudinalAction::Acceleration { target, dynamics } => Ok(
                         acceleration::start(self.world, actor, (*target, replaced), dynamics, time),
                     ),
-                    LongitudinalAction::RelativeAcceleration { entity_ref, value } => {
-                        relative_acceleration::start(
-                            self.world, actor, entity_ref, *value, time, pos,
-                        )
-                    }
+                    LongitudinalAction::RelativeAcceleration {
+                        entity_ref,
+                        value,
+                        continuous,
+                    } => relative_acceleration::start(
+                        self.world,
+                        actor,
+                        entity_ref,
+                        (*value, *continuous),
+                        time,
+                        pos,
+                    ),
                     LongitudinalAction::Travel(travel) => {
                         travel::start(self.world, actor, travel, time, pos)
                     }

@@ -5,10 +5,13 @@
 //! OpenSCENARIO 1.x action does (a RelativeTargetSpeed follows x's speed, not its
 //! acceleration).
 //!
-//! The speed is the integral from the start: after τ s, v = v₀ + (v_x − v_x₀) + value·τ, with
-//! v₀ and v_x₀ the actor's and the reference's speeds at the start and v_x the reference's
-//! speed at the step's end. Written through the speeds (not a sum of per-step accelerations)
-//! it carries no drift. Stage 2 advances these parts after every other running action (see
+//! `continuous`: the speed is the integral from the start: after τ s, v = v₀ + (v_x − v_x₀) +
+//! value·τ, with v₀ and v_x₀ the actor's and the reference's speeds at the start and v_x the
+//! reference's speed at the step's end. Written through the speeds (not a sum of per-step
+//! accelerations) it carries no drift. Not `continuous`: the reference's acceleration as the
+//! action starts, over its first step (a_x₀ = (v_x − v_x₀)/dt, the acceleration the reference
+//! starts the phase with, as a planned linear change has it from its first instant), plus the
+//! value, held: v = v₀ + (a_x₀ + value)·τ. Stage 2 advances these parts after every other running action (see
 //! `ActionTable::step_all`), so v_x is the speed the reference's own action set for the same
 //! step's end; a reference moved by a controller (stage 3) is read one step late. A vehicle's
 //! Performance bounds the change per step as for the AccelerationAction; the action ends at
@@ -26,6 +29,11 @@ use crate::world::entity::EntityId;
 pub(crate) struct RelativeAccelerationState {
     reference: EntityId,
     value: f64,
+    /// Follow the reference in every step; else hold `held`.
+    continuous: bool,
+    /// Not continuous: the acceleration held, the reference's over the first step plus the
+    /// value (known from the first step on).
+    held: Option<f64>,
     /// The actor's and the reference's speeds at the start (m/s).
     start_speed: f64,
     reference_start_speed: f64,
@@ -37,7 +45,7 @@ pub(crate) fn start(
     world: &World,
     actor: EntityId,
     entity_ref: &str,
-    value: f64,
+    (value, continuous): (f64, bool),
     now: f64,
     pos: &scenario::SourcePos,
 ) -> Result<Part, Error> {
@@ -51,6 +59,8 @@ pub(crate) fn start(
     Ok(Part::RelativeAcceleration(RelativeAccelerationState {
         reference,
         value,
+        continuous,
+        held: None,
         start_speed: world.entity(actor).speed,
         reference_start_speed: world.entity(reference).speed,
         start_time: now,
@@ -67,13 +77,22 @@ fn followed_speed(s: &RelativeAccelerationState, reference_speed: f64, tau: f64)
 pub(crate) fn step(
     world: &mut World,
     actor: EntityId,
-    s: &RelativeAccelerationState,
+    s: &mut RelativeAccelerationState,
     now: f64,
     dt: f64,
 ) -> ActionStatus {
     let tau = now + dt - s.start_time;
-    let wanted = followed_speed(s, world.entity(s.reference).speed, tau);
-    let pushing = wanted - world.entity(actor).speed;
+    let reference_speed = world.entity(s.reference).speed;
+    if !s.continuous && s.held.is_none() {
+        s.held = Some((reference_speed - s.reference_start_speed) / tau + s.value);
+    }
+    let (wanted, pushing) = match s.held {
+        Some(a) => (s.start_speed + a * tau, a),
+        None => {
+            let wanted = followed_speed(s, reference_speed, tau);
+            (wanted, wanted - world.entity(actor).speed)
+        }
+    };
     super::acceleration::set_speed(world, actor, wanted, pushing, dt)
 }
 
@@ -87,6 +106,8 @@ mod tests {
         RelativeAccelerationState {
             reference: EntityId(0),
             value,
+            continuous: true,
+            held: None,
             start_speed: 12.0,
             reference_start_speed: 10.0,
             start_time: 1.0,

@@ -168,16 +168,19 @@ pub enum LongitudinalAction {
     /// oscsim's RelativeAccelerationAction, an action with no XML form (the DSL runtime writes
     /// it for ASAM OpenSCENARIO DSL 2.1 §8.9 `acceleration(…, faster_than/slower_than/same_as:
     /// x)` where x's acceleration over the phase is not the plan's to know; the XML reader
-    /// never does): in each step the actor's acceleration is `entity_ref`'s plus `value`
-    /// (m/s²), so after τ s its speed is v₀ + (v_x − v_x₀) + value·τ (v₀, v_x₀ both speeds at
-    /// the start, v_x the reference's now). It ends as the AccelerationAction does (0 m/s or
-    /// the vehicle's maximum speed with the acceleration pushing past it), and otherwise runs
-    /// until a later longitudinal action replaces it.
+    /// never does): with `continuous`, in each step the actor's acceleration is
+    /// `entity_ref`'s plus `value` (m/s²), so after τ s its speed is v₀ + (v_x − v_x₀) +
+    /// value·τ (v₀, v_x₀ both speeds at the start, v_x the reference's now); without, the
+    /// reference's acceleration at the start plus `value`, held. It ends as the
+    /// AccelerationAction does (0 m/s or the vehicle's maximum speed with the acceleration
+    /// pushing past it), and otherwise runs until a later longitudinal action replaces it.
     RelativeAcceleration {
         /// The reference entity.
         entity_ref: String,
         /// Added to the reference's acceleration (m/s²).
         value: f64,
+        /// Follow the reference's acceleration in every step (else: its value at the start).
+        continuous: bool,
     },
     /// oscsim's TravelAction, an action with no XML form (the DSL runtime writes it for a
     /// `position(…, at: end)` or `distance(…)` over a phase of known duration that starts on a
