@@ -11,11 +11,14 @@
 //! from its centre; beside a lane change of the phase (`change_lane`, `lane(…, at: end)`), the
 //! offset in the lane change's target lane, which must hold that t.
 //!
-//! After a run-time start this is an error: the engine's lateral actions (LaneChangeAction,
-//! LaneOffsetAction) take a lane relative to x at their start and an offset from that lane's
-//! centre, but x's offset in its lane and any sideways move of x in the phase are then not
-//! known to the plan, and no engine action follows another actor's t over a duration (1.x's
-//! LateralDistanceAction has none).
+//! After a run-time start, with `track: projected` (§8.9.1.1.3: x projected from its state at
+//! the phase start, so x's t then), the engine's sinusoidal LaneChangeAction over the phase to
+//! a target beside x (`scenario::LaneChangeTarget::Beside`): the lane of the actor's road that
+//! holds x's t at the start plus the t asked, found when the action starts (none: an error
+//! record and a failed run). With `track: actual` it is an error: x's sideways moves in the
+//! phase are not known to the plan then, and no engine action follows another actor's t over
+//! a duration (1.x's LateralDistanceAction has none); so is a modifier that keeps the lane
+//! beside it (the engine finds the lane), or a lane change of the phase.
 
 use scenario::{DynamicsShape, LaneChangeTarget, LaneOffsetTarget, LateralAction, PrivateAction};
 
@@ -105,6 +108,9 @@ impl Planner<'_> {
         name: String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
+        if t.is_none() {
+            return self.beside_after_runtime_start(m, target, len, keeps, name, out);
+        }
         let Some(t_a) = self.beside_end(m, target, t, len)? else {
             return Ok(());
         };
@@ -160,6 +166,58 @@ impl Planner<'_> {
                 &m.site,
             ));
         }
+        Ok(())
+    }
+
+    /// `m` beside x after a run-time start, over `len` s: with `track: projected` the engine's
+    /// sinusoidal lane change to the lane holding x's t at the start plus the t `m` asks for
+    /// (`LaneChangeTarget::Beside`); with `track: actual`, or beside a modifier that keeps the
+    /// lane (`keeps`), an error.
+    fn beside_after_runtime_start(
+        &self,
+        m: &Modifier,
+        target: &str,
+        len: f64,
+        keeps: Option<&Modifier>,
+        name: String,
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let Some((x, dt)) = self.beside_gap(m, target)? else {
+            return Ok(());
+        };
+        if !m.projected {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!("expected track: projected for lateral(…, at: end) beside `{x}` in a phase that starts on a run-time condition, found actual (`{x}`'s sideways moves in the phase are not the plan's to know then, and no engine action follows another actor's t over a duration; projected, the engine reads `{x}`'s t at the phase start)"),
+            ));
+        }
+        if let Some(k) = keeps {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!("expected no {}(…) (at {}) beside lateral(…, at: end) beside `{x}` in a phase that starts on a run-time condition (the lane that holds the t asked is the engine's to find then), found one", k.name, k.site.at()),
+            ));
+        }
+        if self.road.ids().len() > 1 {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!("expected lateral(…, at: end) beside `{x}` after a run-time start on a plan over one road, found roads {} (the road the actors are on then is not known before the run)", self.road.ids().join(", ")),
+            ));
+        }
+        let change = LateralAction::LaneChange {
+            target_lane_offset: None,
+            dynamics: sinusoidal_over(len),
+            target: LaneChangeTarget::Beside {
+                entity_ref: x,
+                t: dt,
+                what: format!("{}(…) at {}", m.name, m.site.at()),
+            },
+        };
+        out.push(Planned::with_phase(
+            target,
+            name,
+            PrivateAction::Lateral(change),
+            &m.site,
+        ));
         Ok(())
     }
 }

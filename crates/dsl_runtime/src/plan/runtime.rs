@@ -17,6 +17,7 @@
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
 //! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal LaneChangeAction over T into the actor's own lane at that offset |
+//! | `lateral(d, side_of/left_of/right_of: x, at: end, track: projected)` over a phase of duration T | the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked (`lateral_end`) |
 //! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all or start | the engine's RelativeAccelerationAction: x's acceleration ± a in every step, or x's over the first step held (`acceleration_follow`) |
 //!
 //! The engine measures lanes and s on the road the actor is on, so on a plan over several

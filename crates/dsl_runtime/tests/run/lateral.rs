@@ -118,7 +118,7 @@ fn lateral_beside_another_actor_at_the_end_is_where_the_plan_has_it() {
     assert_eq!(r.at(7.0, "ego").lane, -1);
     let e = crate::support::error("err_lateral_beside_end_runtime");
     assert!(
-        e.starts_with("expected a phase start the plan knows for lateral(…, at: end) beside `npc`, found one after a run-time condition (the engine's lane change takes a lane relative to `npc` at its start")
+        e.starts_with("expected track: projected for lateral(…, at: end) beside `npc` in a phase that starts on a run-time condition, found actual (`npc`'s sideways moves in the phase are not the plan's to know then")
             && e.contains("err_lateral_beside_end_runtime.osc:18:13"),
         "{e}"
     );

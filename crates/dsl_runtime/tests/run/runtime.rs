@@ -433,3 +433,33 @@ fn an_acceleration_relative_to_one_that_changes_after_an_until_is_the_engines_fo
         assert!((l - lead).abs() < V_TOL, "lead v({t}) = {l} vs {lead}");
     }
 }
+
+/// runtime_lateral_beside_end.osc's comment, by hand: from 3.35 s ego moves to 5.5 m left of
+/// npc's centre as the engine finds npc then (track: projected), into lane -1.
+#[test]
+fn a_lateral_position_beside_another_actor_at_the_end_after_an_until_is_the_engines() {
+    let r = run("runtime_lateral_beside_end", 0, None);
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.shift", 3.35, 5.35)]);
+    for (t, y) in [(3.35, -5.25), (4.35, -4.25), (5.35, -3.25), (6.35, -3.25)] {
+        let ego = r.at(t, "ego");
+        assert!((ego.y - y).abs() < S_TOL, "ego y({t}) = {} vs {y}", ego.y);
+    }
+    assert_eq!(r.at(5.35, "ego").lane, -1);
+    assert!((r.at(5.35, "npc").y + 8.75).abs() < S_TOL);
+    // 9 m left of npc is t = 0.25 m, across the centre line: the engine's error at 3.35 s.
+    let lowered = super::support::lower("runtime_lateral_beside_end_fails", 0, None)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = super::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 3.35).abs() < T_TOL, "{records:?}");
+    // s = 100 + 20·3.35 = 167 m.
+    let want = "expected a driving lane of road 1 at t = 0.250 m, s = 167.000 m (9.000 m from 'npc') (lateral(…) at ";
+    assert!(
+        error.starts_with(want)
+            && error.ends_with(
+                "runtime_lateral_beside_end_fails.osc:24:13), found none at t = 3.350 s"
+            ),
+        "{error}"
+    );
+}

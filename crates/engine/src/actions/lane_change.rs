@@ -17,12 +17,12 @@
 //! LaneOffsetAction, which blends within one lane.
 
 use opendrive::LENGTH_EPSILON;
-use scenario::{LateralAction, SourcePos, TransitionDynamics};
+use scenario::{LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics};
 
 use super::Part;
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::position::lane_at;
-use crate::store::targets::target_lane;
+use crate::store::targets::{entity_ref, target_lane};
 use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::{Blend, EntityId};
@@ -78,17 +78,74 @@ pub(crate) fn start(
     else {
         return Err(Error::unsupported("this LateralAction", pos));
     };
-    let lane = target_lane(world, target, pos)?;
-    begin(
-        world,
-        actor,
-        lane,
-        target_lane_offset.unwrap_or(0.0),
-        dynamics,
-        now,
-        false,
-        pos,
-    )
+    let (lane, offset) = match target {
+        LaneChangeTarget::Beside {
+            entity_ref,
+            t,
+            what,
+        } => beside(world, actor, (entity_ref, *t, what), now, pos)?,
+        _ => (
+            target_lane(world, target, pos)?,
+            target_lane_offset.unwrap_or(0.0),
+        ),
+    };
+    begin(world, actor, lane, offset, dynamics, now, false, pos)
+}
+
+/// The lane and offset of oscsim's target beside an entity (`LaneChangeTarget::Beside`): the
+/// lane of `actor`'s road on its side (its direction of travel) holding t = the reference's
+/// t now + `dt`, and the offset from its centre there. The reference off the actor's road, or no driving lane at that t, fails the
+/// action (`what` names the constraint).
+fn beside(
+    world: &World,
+    actor: EntityId,
+    (name, dt, what): (&str, f64, &str),
+    now: f64,
+    pos: &SourcePos,
+) -> Result<(i32, f64), Error> {
+    let fail = |expected: String, found: String| {
+        Error::new(ErrorKind::CheckFailed {
+            what: what.to_string(),
+            expected,
+            found,
+            time: now,
+        })
+    };
+    let x = world.entity(entity_ref(world, name, pos)?);
+    let e = world.entity(actor);
+    let (Some(tx), Some(ta)) = (&x.track, &e.track) else {
+        return Err(fail(
+            format!("'{}' and '{name}' on a lane", e.name),
+            "one of them off every road".into(),
+        ));
+    };
+    if tx.road_id != ta.road_id {
+        return Err(fail(
+            format!("'{name}' on road {} beside '{}'", ta.road_id, e.name),
+            format!("it on road {}", tx.road_id),
+        ));
+    }
+    let t = tx.t + dt;
+    let road = world
+        .network
+        .road(&ta.road_id)
+        .ok_or_else(|| Error::at("the actor's road", format!("road '{}'", ta.road_id), pos))?;
+    // A lane of the actor's side of the road (its direction of travel), holding t.
+    let inside = lane_at(road, ta.s, t).filter(|(lane, offset)| {
+        lane.signum() == ta.lane_id.signum()
+            && road
+                .lane_span(*lane, ta.s)
+                .is_ok_and(|sp| offset.abs() <= sp.width() / 2.0 + LENGTH_EPSILON)
+    });
+    inside.ok_or_else(|| {
+        fail(
+            format!(
+                "a driving lane of road {} at t = {t:.3} m, s = {:.3} m ({dt:.3} m from '{name}')",
+                ta.road_id, ta.s
+            ),
+            "none".into(),
+        )
+    })
 }
 
 /// Starts a blend of `actor` from where it is to (`lane`, `offset`).

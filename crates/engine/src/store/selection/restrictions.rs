@@ -165,6 +165,10 @@ fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
                 target: scenario::LaneChangeTarget::Relative { entity_ref, .. },
                 ..
             } => Some((entity_ref, "a RelativeTargetLane")),
+            LateralAction::LaneChange {
+                target: scenario::LaneChangeTarget::Beside { entity_ref, .. },
+                ..
+            } => Some((entity_ref, "a lane change beside an entity")),
             LateralAction::LaneOffset {
                 target: scenario::LaneOffsetTarget::Relative { entity_ref, .. },
                 ..

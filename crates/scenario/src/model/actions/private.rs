@@ -319,6 +319,20 @@ pub enum LaneChangeTarget {
     },
     /// AbsoluteTargetLane: an OpenDRIVE lane id.
     Absolute(String),
+    /// oscsim's target beside an entity, no XML form (the DSL runtime writes it for ASAM
+    /// OpenSCENARIO DSL 2.1 §8.9 `lateral(d, side_of/left_of/right_of: x, at: end, track:
+    /// projected)` after a run-time start): at the action's start, the lane of the actor's road
+    /// on its side (its direction of travel) that holds t = the reference's t then + `t`, at the offset from its centre that puts
+    /// the actor's reference point there (the action's targetLaneOffset is not read). No
+    /// driving lane there fails the action: an error record naming `what`, and a failed run.
+    Beside {
+        /// The reference entity.
+        entity_ref: String,
+        /// The actor's t minus the reference's at the action's start (m, + left).
+        t: f64,
+        /// What asked for it (for the error record).
+        what: String,
+    },
 }
 
 /// A lane offset target (XSD `LaneOffsetTarget`), m.
