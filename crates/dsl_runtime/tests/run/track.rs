@@ -57,6 +57,10 @@ fn a_position_behind_a_projected_reference_ignores_its_braking() {
     for (t, v) in [(3.0, 9.0), (5.0, 10.0)] {
         assert!((r.at(t, "tail").speed - v).abs() < V_TOL, "tail v({t})");
     }
+    // holder: lead's 10 m/s at the phase start, held while lead brakes.
+    for (t, v) in [(0.5, 8.0), (1.05, 10.0), (3.0, 10.0), (5.0, 10.0)] {
+        assert!((r.at(t, "holder").speed - v).abs() < V_TOL, "holder v({t})");
+    }
 }
 
 #[test]
