@@ -233,6 +233,13 @@ pub fn lower_program(
         }
     }
     let holds_all = |c: &road::PlanRoad<'_>| wanted.iter().all(|r| c.plan_s(r, 0.0).is_some());
+    // Without named routes, a way through a junction the map's modifiers bind
+    // (`roads_follow_in_junction`) gives the roads.
+    if chains.is_empty() {
+        if let Some(roads) = plan::junction_roads(road, &resolved.map) {
+            chains.push(road::PlanRoad::through(road, &roads));
+        }
+    }
     let plan_road = match chains.iter().position(holds_all) {
         Some(i) => chains.swap_remove(i),
         None if !chains.is_empty() => chains.swap_remove(0),

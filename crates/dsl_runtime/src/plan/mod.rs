@@ -109,6 +109,7 @@ use events::EventCtx;
 use place::{place, ToPlace};
 use planner::{no_end, Planner};
 
+pub(crate) use map_lanes::junction_roads;
 pub(crate) use route::{named_routes, points as route_points};
 pub use types::POSITION_TOLERANCE;
 pub(crate) use types::{

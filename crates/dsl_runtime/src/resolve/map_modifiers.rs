@@ -86,6 +86,16 @@ pub(crate) enum MapKind {
         /// Whether `containing_road:` was given (a road field: the plan's roads).
         on_plan_roads: bool,
     },
+    /// §8.12.2.2.3 on lane fields: `out_lane` is reached from `in_lane` through one
+    /// connecting lane of a junction, turning the way `direction` names.
+    Junction {
+        /// The lane into the junction.
+        in_lane: String,
+        /// The lane out of it.
+        out_lane: String,
+        /// `straight`, `right`, `u_turn`, `left` (none: any).
+        direction: Option<String>,
+    },
     /// §8.12.2.2.4: the routes overlap longitudinally in the way `kind` names.
     RoutesOverlap {
         /// The first route field.
@@ -257,17 +267,51 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                 }
             }
         }
+        "roads_follow_in_junction"
+            if arg(&args, "in_lane").is_some() || arg(&args, "out_lane").is_some() =>
+        {
+            for p in [
+                "junction",
+                "in_road",
+                "out_road",
+                "clockwise_count",
+                "number_of_roads",
+                "junction_route",
+                "resulting_route",
+            ] {
+                if let Some(a) = arg(&args, p) {
+                    return Err(a.site.err(
+                        K::Unsupported,
+                        format!("expected roads_follow_in_junction(in_lane: …, out_lane: …, direction: …) (lane fields bound through a junction of the map), found {p}: (junction, road and route fields are not bound to the map's junctions; the lanes name the way through)"),
+                    ));
+                }
+            }
+            let direction = member("direction")?;
+            if let (Some(d), Some(a)) = (&direction, arg(&args, "direction")) {
+                if !["straight", "right", "u_turn", "left"].contains(&d.as_str()) {
+                    return Err(a.site.err(
+                        K::Unsupported,
+                        format!("expected direction straight, right, u_turn or left (read from the headings), found {d}"),
+                    ));
+                }
+            }
+            MapKind::Junction {
+                in_lane: lane("in_lane")?,
+                out_lane: lane("out_lane")?,
+                direction,
+            }
+        }
         other => {
             let why = match other {
                 "routes_are_in_sequence" => "on route fields (every free route field is the roads the plan drives on, one route, so none follows another; lane fields are bound); name routes in sequence with map.create_route([…])",
-                "roads_follow_in_junction" => "(junction fields are not bound to the map's junctions; name the way through a junction with map.create_route([…]) through points before and after it)",
+                "roads_follow_in_junction" => "without in_lane and out_lane (junction and road fields are not bound to the map's junctions; name the lanes, or the way through a junction with map.create_route([…]) through points before and after it)",
                 "crossing_connects" => "(crossings are not bound to the map)",
                 "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; lane fields are bound)",
                 _ => "(traffic light control files are not read)",
             };
             return Err(site.err(
                 K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence and routes_are_opposite on lane fields), found {other}(…) {why}"),
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence, routes_are_opposite and roads_follow_in_junction on lane fields), found {other}(…) {why}"),
             ));
         }
     };

@@ -78,6 +78,17 @@ fn lanes_in_sequence_and_opposite_are_bound_through_the_lane_links() {
 }
 
 #[test]
+fn a_turn_through_a_junction_binds_its_lanes_and_the_roads_the_plan_drives() {
+    let r = run("map_junction_turn", "junction_trippel_twoway0");
+    let at = |t: f64| r.at(t, "ego");
+    assert_eq!((at(0.0).road.as_str(), at(0.0).lane), ("0", -1));
+    assert!((at(3.0).s - 90.0).abs() < Y_TOL, "{:?}", at(3.0));
+    for t in [8.0, 10.0] {
+        assert_eq!((at(t).road.as_str(), at(t).lane), ("4", -1), "at {t} s");
+    }
+}
+
+#[test]
 fn map_checks_that_fail_name_what_the_map_has() {
     refused(
         "err_map_number_of_lanes",
@@ -112,6 +123,12 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "road_link_unequal_number_of_lanes0",
         "expected lanes of the map for `k`, `l` that satisfy lane_side(…) and the map modifiers before it, found none on roads 1, 2",
         "10:5",
+    );
+    refused(
+        "err_map_junction",
+        "junction_trippel_twoway0",
+        "expected lanes of the map for `a`, `b` that satisfy roads_follow_in_junction(…), found none on roads 0, 2, 4, 6",
+        "8:5",
     );
     refused(
         "err_map_other_road",
