@@ -252,6 +252,16 @@ fn group_forms_that_cannot_keep_the_formation_are_errors() {
             "expected a single-lane group for a lateral gap in change_space_gap(…), found `g`",
         ),
         (
+            "err_group_gap_member",
+            "5:8",
+            "expected a reference outside group `g` in change_space_gap(…) on it, found its member `g.vehicles[0]`",
+        ),
+        (
+            "err_group_assign_position_runtime",
+            "19:9",
+            "expected a phase start the plan knows for assign_position(…) on group `g`",
+        ),
+        (
             "err_group_gap_side",
             "12:9",
             "expected `direction: ahead` or `behind` in change_space_gap(…) on group `g`",
