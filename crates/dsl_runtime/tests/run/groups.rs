@@ -140,20 +140,29 @@ fn a_groups_space_gap_is_a_chain_along_its_formation() {
     close(r.at(30.0, "lead").s, 550.0, TOL, "lead at 30 s");
 }
 
-/// The reference each member's LongitudinalDistanceAction names (group_headway_chains.osc).
-#[test]
-fn a_groups_headway_chain_runs_row_by_row_towards_the_reference() {
-    let lowered = crate::support::lower("actions/group_headway_chains", 0, None).expect("plans");
-    let mut refs = std::collections::BTreeMap::new();
+/// Each actor's LongitudinalDistanceAction in a lowered scenario: (reference, time gap,
+/// displacement).
+type DistanceRefs = std::collections::BTreeMap<
+    String,
+    (
+        String,
+        Option<f64>,
+        Option<scenario::LongitudinalDisplacement>,
+    ),
+>;
+
+fn distance_refs(name: &str) -> DistanceRefs {
+    let lowered = crate::support::lower(name, 0, None).expect("plans");
+    let mut refs = DistanceRefs::new();
     for story in &lowered.scenario.storyboard.stories {
         for act in &story.acts {
             for mg in &act.maneuver_groups {
-                for action in mg
+                let actions = mg
                     .maneuvers
                     .iter()
                     .flat_map(|m| &m.events)
-                    .flat_map(|e| &e.actions)
-                {
+                    .flat_map(|e| &e.actions);
+                for action in actions {
                     if let scenario::ActionKind::Private(scenario::PrivateAction::Longitudinal(
                         scenario::LongitudinalAction::LongitudinalDistance {
                             entity_ref,
@@ -163,19 +172,24 @@ fn a_groups_headway_chain_runs_row_by_row_towards_the_reference() {
                         },
                     )) = &action.kind
                     {
-                        assert_eq!(*time_gap, Some(2.0));
-                        assert_eq!(
-                            *displacement,
-                            Some(scenario::LongitudinalDisplacement::LeadingReferencedEntity)
-                        );
                         for actor in &mg.actors.entity_refs {
-                            refs.insert(actor.clone(), entity_ref.clone());
+                            refs.insert(
+                                actor.clone(),
+                                (entity_ref.clone(), *time_gap, *displacement),
+                            );
                         }
                     }
                 }
             }
         }
     }
+    refs
+}
+
+/// The reference each member's LongitudinalDistanceAction names (group_headway_chains.osc).
+#[test]
+fn a_groups_headway_chain_runs_row_by_row_towards_the_reference() {
+    let refs = distance_refs("actions/group_headway_chains");
     let want = [
         ("g.vehicles[0]", "g.vehicles[3]"),
         ("g.vehicles[1]", "follower"),
@@ -184,11 +198,30 @@ fn a_groups_headway_chain_runs_row_by_row_towards_the_reference() {
     ];
     assert_eq!(refs.len(), want.len(), "{refs:?}");
     for (member, reference) in want {
+        let (r, gap, displacement) = &refs[member];
+        assert_eq!(r, reference, "{refs:?}");
+        assert_eq!(*gap, Some(2.0));
         assert_eq!(
-            refs.get(member).map(String::as_str),
-            Some(reference),
-            "{refs:?}"
+            *displacement,
+            Some(scenario::LongitudinalDisplacement::LeadingReferencedEntity)
         );
+    }
+}
+
+/// Without a direction the side the plan has the reference on decides the chain
+/// (group_gap_no_direction.osc).
+#[test]
+fn a_groups_gap_without_a_direction_chains_from_the_side_of_the_reference() {
+    let refs = distance_refs("actions/group_gap_no_direction");
+    assert_eq!(refs.len(), 2, "{refs:?}");
+    for (member, reference) in [
+        ("g.vehicles[0]", "lead"),
+        ("g.vehicles[1]", "g.vehicles[0]"),
+    ] {
+        let (r, gap, displacement) = &refs[member];
+        assert_eq!(r, reference, "{refs:?}");
+        assert_eq!(*gap, None, "a space gap");
+        assert_eq!(*displacement, Some(scenario::LongitudinalDisplacement::Any));
     }
 }
 
