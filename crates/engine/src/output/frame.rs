@@ -27,8 +27,9 @@ pub struct Frame<'a> {
     pub time: f64,
     /// Index of the step that produced the frame (the initial frame is 0).
     pub step: u64,
-    /// The entities in declaration order.
-    pub entities: &'a [Entity],
+    /// The entities in declaration order: the world's store, read through [`Frame::objects`]
+    /// and [`Frame::entity`] (views, so the store's layout stays the engine's).
+    pub(crate) entities: &'a [Entity],
     /// Traffic signal controllers' phases and signal states (crate::signals).
     pub signals: &'a crate::world::SignalStates,
     /// The environment in force (EnvironmentAction: time of day, weather, road condition).
@@ -44,6 +45,13 @@ impl<'a> Frame<'a> {
             .iter()
             .filter(|e| e.placed)
             .map(EntityFrame::of)
+    }
+
+    /// The snapshot of the entity with index `id` ([`EntityFrame::id`], e.g. a trailer's),
+    /// placed or not; `None` for an index no entity has.
+    pub fn entity(&self, id: u32) -> Option<EntityFrame<'a>> {
+        let i = usize::try_from(id).ok()?;
+        self.entities.get(i).map(EntityFrame::of)
     }
 }
 
@@ -92,7 +100,7 @@ pub struct EntityFrame<'a> {
     /// (e.g. `lowBeam`) or a user-defined light's type. Lights no action touched are absent.
     pub lights: &'a BTreeMap<String, LightState>,
     /// Id of the trailer this vehicle tows (OSI `vehicle_classification.trailer_id`); the
-    /// trailer's name is `frame.entities[id].name`.
+    /// trailer's snapshot is [`Frame::entity`]`(id)`.
     pub trailer: Option<u32>,
     /// Driver inputs overridden by OverrideControllerValueAction (OpenSCENARIO 1.3 §7.7.2.5).
     pub overrides: &'a ControllerOverrides,
@@ -100,7 +108,7 @@ pub struct EntityFrame<'a> {
 
 impl<'a> EntityFrame<'a> {
     /// The snapshot of `e`.
-    pub fn of(e: &'a Entity) -> Self {
+    pub(crate) fn of(e: &'a Entity) -> Self {
         let (c, s) = (e.pose.h.cos(), e.pose.h.sin());
         let to_world = |v: Vector3| Vector3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z);
         EntityFrame {

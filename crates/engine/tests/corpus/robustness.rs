@@ -23,7 +23,7 @@ use std::path::PathBuf;
 use std::sync::mpsc;
 use std::time::Duration;
 
-use engine::output::{EventRecord, Frame, FrameSink};
+use engine::output::{EntityFrame, EventRecord, Frame, FrameSink};
 use engine::{Engine, EngineConfig, ErrorKind};
 use proptest::prelude::*;
 use proptest::sample::Index;
@@ -142,40 +142,37 @@ struct FiniteCheck {
 impl FrameSink for FiniteCheck {
     fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
         self.frames += 1;
-        if self.corrupt.is_some() {
-            return Ok(());
-        }
-        for e in frame.objects() {
-            let p = e.pose;
-            let mut values = vec![
-                ("x", p.x),
-                ("y", p.y),
-                ("z", p.z),
-                ("h", p.h),
-                ("p", p.p),
-                ("r", p.r),
-                ("speed", e.speed),
-                ("vx", e.velocity.x),
-                ("vy", e.velocity.y),
-                ("vz", e.velocity.z),
-                ("ax", e.acceleration.x),
-                ("ay", e.acceleration.y),
-                ("az", e.acceleration.z),
-                ("yaw_rate", e.yaw_rate),
-            ];
-            if let Some(r) = e.road_position {
-                values.extend([("s", r.s), ("t", r.t), ("offset", r.offset)]);
-            }
-            if let Some((what, v)) = values.into_iter().find(|(_, v)| !v.is_finite()) {
-                self.corrupt = Some(format!(
-                    "{} has {what} = {v} at t = {} s",
-                    e.name, frame.time
-                ));
-                return Ok(());
-            }
+        if self.corrupt.is_none() {
+            self.corrupt = frame.objects().find_map(|e| non_finite(&e, frame.time));
         }
         Ok(())
     }
+}
+
+/// "NAME has QUANTITY = VALUE at t = TIME s" for the first number of `e` that is not finite.
+fn non_finite(e: &EntityFrame<'_>, time: f64) -> Option<String> {
+    let p = e.pose;
+    let mut values = vec![
+        ("x", p.x),
+        ("y", p.y),
+        ("z", p.z),
+        ("h", p.h),
+        ("p", p.p),
+        ("r", p.r),
+        ("speed", e.speed),
+        ("vx", e.velocity.x),
+        ("vy", e.velocity.y),
+        ("vz", e.velocity.z),
+        ("ax", e.acceleration.x),
+        ("ay", e.acceleration.y),
+        ("az", e.acceleration.z),
+        ("yaw_rate", e.yaw_rate),
+    ];
+    if let Some(r) = e.road_position {
+        values.extend([("s", r.s), ("t", r.t), ("offset", r.offset)]);
+    }
+    let (what, v) = values.into_iter().find(|(_, v)| !v.is_finite())?;
+    Some(format!("{} has {what} = {v} at t = {time} s", e.name))
 }
 
 /// What became of one damaged scenario.
@@ -326,51 +323,53 @@ fn every_scenario_has_numbers_to_damage() {
 }
 
 /// The frame check catches a non-finite number (so that the property can fail): a placed
-/// entity whose speed is NaN, then one whose road s is infinite.
+/// entity of a real run (the undamaged one_action_example0) whose speed is NaN, then one whose
+/// road s is infinite.
 #[test]
 fn the_frame_check_catches_a_nan() {
-    use engine::domain::{BoundingBox, Position3d};
-    use engine::runtime::EntityKind;
-    use engine::EntityId;
-    let bb = BoundingBox::new(Position3d::new(1.4, 0.0, 0.75), 5.0, 2.0, 1.5).expect("valid box");
-    let mut e = engine::runtime::Entity::new(EntityId(0), "Ego", EntityKind::Vehicle, bb);
-    e.placed = true;
-    let frame = |entities: &[engine::runtime::Entity]| {
-        let mut check = FiniteCheck::default();
-        check
-            .frame(&Frame {
-                time: 0.5,
-                step: 10,
-                entities,
-                signals: &engine::signals::SignalStates::default(),
-                environment: &engine::EnvironmentState::default(),
-                source: &engine::ScenarioSource::default(),
-            })
-            .expect("the check never fails the run");
-        check.corrupt
+    #[derive(Default)]
+    struct Damaged(Vec<Option<String>>);
+    impl FrameSink for Damaged {
+        fn frame(&mut self, frame: &Frame<'_>) -> Result<(), engine::SinkError> {
+            let Some(e) = frame.objects().find(|e| e.road_position.is_some()) else {
+                return Ok(());
+            };
+            if self.0.is_empty() {
+                self.0.push(non_finite(&e, 0.5));
+                let mut nan = e;
+                nan.speed = f64::NAN;
+                self.0.push(non_finite(&nan, 0.5));
+                let mut far = e;
+                let road = e.road_position.map(|r| opendrive::RoadPosition {
+                    s: f64::INFINITY,
+                    ..r.clone()
+                });
+                far.road_position = road.as_ref();
+                self.0.push(non_finite(&far, 0.5));
+                self.0.push(Some(e.name.to_owned()));
+            }
+            Ok(())
+        }
+    }
+    let (name, text) = SCENARIOS[0];
+    let scenario = Scenario::load_from_str(text, &fixture(name), &[]).expect("loads");
+    let network = engine::load::road_network(&scenario).expect("its road");
+    let config = EngineConfig {
+        duration: Some(0.1),
+        ..EngineConfig::default()
     };
-    assert_eq!(frame(std::slice::from_ref(&e)), None);
-    e.speed = f64::NAN;
-    assert_eq!(
-        frame(std::slice::from_ref(&e)).as_deref(),
-        Some("Ego has speed = NaN at t = 0.5 s")
-    );
-    e.speed = 0.0;
-    e.road_position = Some(opendrive::RoadPosition {
-        road_id: "1".to_owned(),
-        road: opendrive::RoadHandle(0),
-        lane_id: -1,
-        s: f64::INFINITY,
-        t: -1.5,
-        offset: 0.0,
-        junction_id: None,
-        relative_heading: 0.0,
-        distance: 0.0,
-    });
-    assert_eq!(
-        frame(std::slice::from_ref(&e)).as_deref(),
-        Some("Ego has s = inf at t = 0.5 s")
-    );
+    let mut engine = Engine::new(&scenario, network, config).expect("builds");
+    let mut damaged = Damaged::default();
+    engine.run(&mut damaged, &mut ()).expect("runs");
+    let [ok, nan, far, Some(who)] = damaged.0.as_slice() else {
+        panic!(
+            "expected a frame with an entity on a road, found {:?}",
+            damaged.0
+        );
+    };
+    assert_eq!(ok, &None);
+    assert_eq!(nan, &Some(format!("{who} has speed = NaN at t = 0.5 s")));
+    assert_eq!(far, &Some(format!("{who} has s = inf at t = 0.5 s")));
 }
 
 #[test]

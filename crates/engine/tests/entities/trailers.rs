@@ -198,7 +198,9 @@ impl engine::FrameSink for Towing {
     fn frame(&mut self, frame: &engine::Frame<'_>) -> Result<(), engine::SinkError> {
         for o in frame.objects() {
             if let Some(t) = o.trailer {
-                let name = frame.entities[t as usize].name.clone();
+                let name = frame
+                    .entity(t)
+                    .map_or_else(String::new, |t| t.name.to_owned());
                 self.0.push((frame.time, o.name.to_owned(), name));
             }
         }

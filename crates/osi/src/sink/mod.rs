@@ -180,12 +180,12 @@ impl GroundTruthSink {
                 }
                 continue;
             }
-            // The engine's trailer id indexes the frame's entity store (EntityFrame::trailer).
+            // The engine's trailer id is an entity index (EntityFrame::trailer).
             let trailer = e
                 .trailer
-                .and_then(|t| frame.entities.get(t as usize))
-                .filter(|t| in_ground_truth(&t.name, t.visibility, host))
-                .map(|t| t.name.as_str());
+                .and_then(|t| frame.entity(t))
+                .filter(|t| in_ground_truth(t.name, t.visibility, host))
+                .map(|t| t.name);
             add(&mut gt, &self.network, &self.scenario_file, trailer, &e).map_err(|source| {
                 FrameError {
                     time: frame.time,
