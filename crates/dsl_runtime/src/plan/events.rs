@@ -4,30 +4,11 @@
 
 use scenario::{ConditionGroup, StoryboardElementState, Trigger};
 
-use super::planner::{unlocated, Planner};
+use super::planner::{unlocated, EventCtx, Planner};
 use super::types::When;
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Cond, Kind, Object, Phase, Timed};
 use crate::trigger::{act_state, every_from_start, sim_time};
-
-/// Where an event specification is used: what its event context starts with (ASAM
-/// OpenSCENARIO DSL 2.1 §7.3.10.4).
-#[derive(Debug, Clone, Copy)]
-pub(super) enum EventCtx<'w> {
-    /// An `on` handler of the scenario: the start of the run.
-    Run,
-    /// An `on` handler of an invoked behavior: the start of the invocation (its handlers'
-    /// Acts run from the invocation's start to its end; an event it emits can only be waited
-    /// on inside the invocation, where its key is known).
-    Invocation,
-    /// The `wait` or `until` of a phase: the phase's start.
-    Phase {
-        path: &'w str,
-        site: &'w Site,
-        start: &'w When,
-        until: bool,
-    },
-}
 
 impl Planner<'_> {
     /// A condition as a trigger, used in event context `ectx`; `depth` counts nested event

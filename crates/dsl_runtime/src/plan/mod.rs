@@ -49,21 +49,21 @@
 //! | `place` | initial placement from `at: start`/`all` constraints |
 //! | `route` | `along(…)` routes against the planned motion; the road named routes are on |
 //! | `checks` | `keep_*`, `physical_movement`, `yaw`/`orientation` against the planned motion |
-//! | `planner` | the planner's state: entities, tracks, phases planned so far |
+//! | `planner` | the planner's state: entities, tracks, phases planned so far; where an event is used (its event context) |
 //! | `motion` | speed profiles, modifier values, lane targets |
 //! | `events` | conditions and events as triggers in their event context |
 //! | `car_following` | `avoid_collisions(true)`: the engine's IDM car following for the phase |
 //! | `action_args` | a §8.8 action's `rate_profile`, `rate_peak`, `duration` and the dynamics they give |
+//! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
+//! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
-//! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
 //! | `map_checks` | the map's modifiers over route fields checked against the plan's roads |
 //! | `map_lanes` | the map's modifiers against the loaded network: lane fields bound, the plan's roads checked |
 //! | `lane_fields` | the lane a `lane` field names for `change_lane`/`follow_lane(target: l)`: bound or drawn once |
-//! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
 //! | `acceleration_follow` | `acceleration(…)` relative to another actor that the engine follows step by step |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
@@ -105,9 +105,8 @@ mod speed_actions;
 mod trajectory_actions;
 mod types;
 
-use events::EventCtx;
 use place::{place, ToPlace};
-use planner::{no_end, Planner};
+use planner::{no_end, EventCtx, Planner};
 
 pub(crate) use map_lanes::junction_roads;
 pub(crate) use route::{named_routes, points as route_points};

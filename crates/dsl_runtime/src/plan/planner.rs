@@ -7,13 +7,31 @@ use std::collections::{BTreeMap, HashMap, HashSet};
 
 use scenario::{ConditionGroup, StoryboardElementState, Trigger};
 
-use super::events::EventCtx;
 use super::types::{Entity, PhasePlan, Settings, When};
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{ActorKind, Along, At, Cond, Draws, Object, Phase};
 use crate::road::PlanRoad;
 use crate::track::Track;
 use crate::trigger::act_state;
+
+/// Where an event specification is used: what its event context starts with (ASAM
+/// OpenSCENARIO DSL 2.1 §7.3.10.4).
+#[derive(Debug, Clone, Copy)]
+pub(super) enum EventCtx<'w> {
+    /// An `on` handler of the scenario: the start of the run.
+    Run,
+    /// An `on` handler of an invoked behavior: the start of the invocation (its handlers'
+    /// Acts run from the invocation's start to its end; an event it emits can only be waited
+    /// on inside the invocation, where its key is known).
+    Invocation,
+    /// The `wait` or `until` of a phase: the phase's start.
+    Phase {
+        path: &'w str,
+        site: &'w Site,
+        start: &'w When,
+        until: bool,
+    },
+}
 
 /// An event condition the planner translates where the event is used: the condition (or why
 /// it cannot be run), where it is written, and, for an `on` handler's, its own event context

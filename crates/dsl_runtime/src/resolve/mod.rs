@@ -6,6 +6,7 @@
 //!
 //! | module | reads |
 //! | --- | --- |
+//! | `action` | the standard library's movement actions by name (§8.8) |
 //! | `value` | evaluated values and arguments; the run's draws |
 //! | `eval` | expressions of the program, with the solver's values (private to this stage) |
 //! | `objects` | physical objects (vehicles, persons, animals, located stationary objects) and vehicle groups with their fields (§8.7, §8.7.18) |
@@ -13,11 +14,12 @@
 //! | `modifier` | movement modifiers (§8.9) |
 //! | `map_modifiers` | the map's modifiers in the scenario's body, as bindings and checks for the planner (§8.12.2.2) |
 //! | `position` | places and orientations of the position actions (§8.8.2.4, §8.8.2.5, §8.8.2.11) |
-//! | `cond` | conditions and event specifications (§7.3.10, §8.7 methods) |
 //! | `call` | `call` of external methods as commands to the host (§7.3.9) |
+//! | `cond` | conditions and event specifications (§7.3.10, §8.7 methods) |
 //! | `tree` | the `do` tree as phases with paths (§7.3.9) |
 //! | `coverage` | `cover(…)`/`record(…)` for the runtime to sample (§7.3.12); not planned |
 
+mod action;
 mod call;
 mod cond;
 pub(crate) mod coverage;
@@ -38,6 +40,7 @@ use dsl::semantics::hir::{Behavior, CompoundKind, Member};
 use dsl::semantics::types::CompoundId;
 use dsl::CheckedProgram;
 
+pub(crate) use action::Action;
 pub(crate) use call::Call;
 pub(crate) use cond::{Cond, Timed};
 pub(crate) use map_modifiers::{MapKind, MapModifier};
@@ -45,7 +48,7 @@ pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
 pub(crate) use position::{Place, PlaceArg};
 pub(crate) use route::{Along, LaneField, Route};
-pub(crate) use tree::{Action, Invoke, Kind, Phase};
+pub(crate) use tree::{Invoke, Kind, Phase};
 pub(crate) use value::{arg, Arg, Draws, Val};
 
 use crate::error::{Error, ErrorKind, Files, Site};

@@ -6,9 +6,9 @@
 
 use dsl::semantics::hir::{Expr, ModifierApp};
 
+use super::action::Action;
 use super::eval::{bind, Eval};
 use super::route::{self, Along};
-use super::tree::Action;
 use super::value::{arg, Arg, Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 

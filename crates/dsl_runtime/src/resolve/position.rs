@@ -12,9 +12,9 @@
 use dsl::semantics::hir::{Arg as HirArg, Expr, ExprKind};
 use dsl::Value;
 
+use super::action::Action;
 use super::eval::{bind, Eval};
 use super::route::{map_call, odr_point};
-use super::tree::Action;
 use super::value::Val;
 use crate::error::{Error, ErrorKind as K, Site};
 
