@@ -2,14 +2,10 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::repo;
+
 use engine::output::CsvWriter;
 use engine::{Engine, EngineConfig};
-
-fn repo(rel: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(rel)
-}
 
 fn scratch(name: &str, text: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("load_front_door");

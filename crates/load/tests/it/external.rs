@@ -2,7 +2,7 @@
 //! read in a condition before each step, called when the step logs the call
 //! (dsl_runtime's tests/scenarios/external_value.osc, worked by hand in its comment).
 
-use std::path::{Path, PathBuf};
+use crate::repo;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
@@ -11,12 +11,6 @@ use serde_json::{json, Value};
 
 /// Event times are step times.
 const T_TOL: f64 = 1e-9;
-
-fn repo(rel: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(rel)
-}
 
 fn options(bindings: Option<load::Bindings>) -> load::Options {
     load::Options {
@@ -33,10 +27,9 @@ struct EgoS(Vec<(f64, f64)>);
 impl engine::FrameSink for EgoS {
     fn frame(&mut self, frame: &engine::Frame<'_>) -> Result<(), engine::SinkError> {
         let s = frame
-            .entities
-            .iter()
+            .objects()
             .find(|e| e.name == "ego")
-            .and_then(|e| e.road_position.as_ref())
+            .and_then(|e| e.road_position)
             .map_or(f64::NAN, |p| p.s);
         self.0.push((frame.time, s));
         Ok(())
