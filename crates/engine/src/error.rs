@@ -8,8 +8,6 @@
 //!
 //! Messages follow the project's form "expected X, found Y at file:line:col"; the place is the
 //! scenario element (action, position, entity reference) that caused the error.
-//!
-//! `Error` and `ErrorKind` (crate root) are the older names of these two types.
 
 use scenario::SourcePos;
 
