@@ -103,3 +103,26 @@ fn lanes_and_lateral_positions_beside_a_projected_reference() {
         assert_eq!(at(6.0, who).lane, lane5, "{who}");
     }
 }
+
+/// track_projected_gap.osc: without a duration, the phase ends when the plan has the gap to
+/// lead's projection reached (3.00 s by hand), while lead brakes.
+#[test]
+fn a_gap_to_a_projected_reference_ends_its_phase_at_the_planned_time() {
+    let r = run("track_projected_gap", 0, None);
+    let (s, e) = r.phase("do.ego.close");
+    assert!(
+        (s - 1.0).abs() < 1e-9 && (e - 3.0).abs() < 1e-9,
+        "close [{s}, {e}]"
+    );
+    assert!(
+        (r.at(3.0, "ego").s - 110.0).abs() < S_TOL,
+        "{}",
+        r.at(3.0, "ego").s
+    );
+    let lead = 129.0 + ramp_lead(-0.5, 2.0);
+    assert!(
+        (r.at(3.0, "lead").s - lead).abs() < S_TOL,
+        "{}",
+        r.at(3.0, "lead").s
+    );
+}
