@@ -12,6 +12,7 @@
 //! | `routes_are_in_sequence(preceding, succeeding, road)` on lane fields | binding | `succeeding` is a successor of `preceding` in its driving direction (the network's lane links, through lane sections and road links); with `road`, both on the plan's roads |
 //! | `routes_are_opposite(route1, route2, containing_road, lateral_overlap)` on lane fields | binding | both in one lane section, driven in opposite directions; with `containing_road`, on the plan's roads; `lateral_overlap` `never` (two lanes never share their width) or none |
 //! | `roads_follow_in_junction(in_lane, out_lane, direction)` on lane fields | binding | `out_lane` reached from `in_lane` through one connecting lane of a junction, turning the way `direction` names ([`Turn`]); without named routes the plan drives that way (`junction_roads`) |
+//! | `roads_follow_in_junction(junction, in_road, out_road, direction, clockwise_count, number_of_roads, resulting_route)` | binding | as on lane fields, over two lanes of the modifier's own when `in_lane`/`out_lane` are not given; `junction` is the connecting lane's junction, `in_road`/`out_road` the lanes' roads (one field one road across the modifiers), `clockwise_count` and `number_of_roads` counted by `map_junctions`; the way through on the plan's roads (without named routes the plan drives it) |
 //! | `routes_overlap(r1, r2, kind)` | check | both are the plan's roads, so they overlap as `equal`: `equal` and `any` hold, another kind is an error |
 //!
 //! Lane fields range over the driving lanes (OpenDRIVE types a vehicle drives on) of every
@@ -25,8 +26,10 @@
 use opendrive::{Direction, LaneHandle, RoadHandle, RoadNetwork};
 
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{MapKind, MapModifier};
+use crate::resolve::{JunctionRoads, MapKind, MapModifier};
 use crate::road::PlanRoad;
+
+use super::map_junctions;
 
 /// The most assignments of lane fields kept.
 const MAX_SOLUTIONS: usize = 100_000;
@@ -120,9 +123,25 @@ pub(crate) fn bind(
     };
     let chosen = pool[pick.min(pool.len() - 1)];
     let starts = road.starts();
+    let own: Vec<&str> = lane_mods
+        .iter()
+        .filter_map(|m| match &m.kind {
+            MapKind::Junction {
+                in_lane,
+                out_lane,
+                roads: JunctionRoads {
+                    own_lanes: true, ..
+                },
+                ..
+            } => Some([in_lane.as_str(), out_lane.as_str()]),
+            _ => None,
+        })
+        .flatten()
+        .collect();
     Ok(names
         .iter()
         .zip(chosen)
+        .filter(|(field, _)| !own.contains(&field.as_str()))
         .map(|(field, h)| {
             let r = &net.roads()[h.road as usize];
             let k = h.section as usize;
@@ -233,6 +252,16 @@ fn solve(
                             route2: b,
                             on_plan_roads: true,
                         } if a == n || b == n => on_plan(h),
+                        MapKind::Junction {
+                            in_lane: a,
+                            out_lane: b,
+                            roads:
+                                JunctionRoads {
+                                    on_plan_roads: true,
+                                    ..
+                                },
+                            ..
+                        } if a == n || b == n => on_plan(h),
                         _ => true,
                     })
                 })
@@ -261,10 +290,13 @@ fn solve(
                 in_lane,
                 out_lane,
                 direction,
+                roads,
             } => Some(Rel::Through(
                 index(out_lane),
                 index(in_lane),
                 direction.as_deref().and_then(Turn::named),
+                roads.clockwise_count,
+                roads.number_of_roads,
             )),
             _ => None,
         })
@@ -273,6 +305,7 @@ fn solve(
     let mut partial = Vec::new();
     let mut tried = 0;
     search(net, &own, &rels, &mut partial, &mut out, &mut tried);
+    out.retain(|sol| one_road_per_field(net, mods, &index, sol));
     (names, out, tried)
 }
 
@@ -286,8 +319,9 @@ enum Rel {
     /// The two lie in one lane section and are driven in opposite directions.
     Opposite(usize, usize),
     /// The first is reached from the second through one connecting lane of a junction,
-    /// turning that way (`None`: any).
-    Through(usize, usize, Option<Turn>),
+    /// turning that way, its road that many roads clockwise round the junction from the
+    /// second's, the junction's roads that many (`None`: any).
+    Through(usize, usize, Option<Turn>, Option<u32>, Option<u32>),
 }
 
 /// The way a path through a junction turns (§8.12 `junction_direction`), from the change of
@@ -339,7 +373,7 @@ impl Rel {
             Rel::Side(i, _, j, _)
             | Rel::Follows(i, j)
             | Rel::Opposite(i, j)
-            | Rel::Through(i, j, _) => (i, j),
+            | Rel::Through(i, j, ..) => (i, j),
         };
         let (x, y) = (*a.get(i)?, *a.get(j)?);
         Some(match self {
@@ -349,12 +383,61 @@ impl Rel {
                 (x.road, x.section) == (y.road, y.section)
                     && net.driving_direction(x) != net.driving_direction(y)
             }
-            Rel::Through(_, _, turn) => {
-                connecting(net, y, x).is_some()
-                    && turn.map_or(true, |t| heading_change(net, y, x).map(Turn::of) == Some(t))
-            }
+            Rel::Through(_, _, turn, cw, n) => connecting(net, y, x).is_some_and(|c| {
+                let junction = net.roads()[c.road as usize].junction.as_deref();
+                let at = junction.unwrap_or_default();
+                turn.map_or(true, |t| heading_change(net, y, x).map(Turn::of) == Some(t))
+                    && n.map_or(true, |n| {
+                        map_junctions::number_of_roads(net, at) == n as usize
+                    })
+                    && cw.map_or(true, |k| {
+                        let (from, to) = (y.road as usize, x.road as usize);
+                        map_junctions::clockwise_count(net, at, from, to) == Some(k)
+                    })
+            }),
         })
     }
+}
+
+/// Whether the road and junction fields of `roads_follow_in_junction` get one road (one
+/// junction) each in the assignment `sol` of the lane fields, across all of `mods`.
+fn one_road_per_field(
+    net: &RoadNetwork,
+    mods: &[&MapModifier],
+    index: &dyn Fn(&str) -> usize,
+    sol: &[LaneHandle],
+) -> bool {
+    let mut seen: Vec<(&str, &str)> = Vec::new();
+    for m in mods {
+        let MapKind::Junction {
+            in_lane,
+            out_lane,
+            roads,
+            ..
+        } = &m.kind
+        else {
+            continue;
+        };
+        let (a, b) = (sol[index(in_lane)], sol[index(out_lane)]);
+        let id = |h: LaneHandle| net.roads()[h.road as usize].id.as_str();
+        let junction = connecting(net, a, b)
+            .and_then(|c| net.roads()[c.road as usize].junction.as_deref())
+            .unwrap_or_default();
+        for (field, value) in [
+            (&roads.in_road, id(a)),
+            (&roads.out_road, id(b)),
+            (&roads.junction, junction),
+        ] {
+            let Some(f) = field.as_deref() else { continue };
+            // A junction field and a road field of one name cannot both be; the path says.
+            match seen.iter().find(|(g, _)| *g == f) {
+                Some((_, v)) if *v != value => return false,
+                Some(_) => {}
+                None => seen.push((f, value)),
+            }
+        }
+    }
+    true
 }
 
 /// Depth-first assignment of the fields after `partial`, keeping every full one that holds.
@@ -415,7 +498,7 @@ fn heading_change(net: &RoadNetwork, from: LaneHandle, to: LaneHandle) -> Option
 }
 
 /// The roads of a way through a junction the map's modifiers ask for
-/// (`roads_follow_in_junction` on lane fields), for the plan to drive when no named route
+/// (`roads_follow_in_junction`), for the plan to drive when no named route
 /// says otherwise: the first assignment that satisfies the modifiers, when its lane into the
 /// junction and its lane out have one id and are driven in +s (the plan keeps its lane ids).
 /// Indices into `net.roads()`: the road in, the connecting road, the road out.
@@ -487,10 +570,11 @@ fn ends(net: &RoadNetwork, h: LaneHandle) -> bool {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
-    fn net(file: &str) -> RoadNetwork {
+    /// A bundled road of `tests/roads`.
+    pub(in crate::plan) fn net(file: &str) -> RoadNetwork {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("tests/roads")
             .join(file);

@@ -1,7 +1,7 @@
 //! The map's modifiers applied in the scenario's body (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2:
 //! `m.number_of_lanes(…)`, `m.start_lane(l)`, `m.end_lane(l)`, `m.lane_side(…)`,
-//! `m.compound_lane_side(…)`, `m.routes_overlap(…)`; `m.routes_are_in_sequence(…)` and
-//! `m.routes_are_opposite(…)` on lane fields), read as plain data for the planner,
+//! `m.compound_lane_side(…)`, `m.routes_overlap(…)`, `m.roads_follow_in_junction(…)`;
+//! `m.routes_are_in_sequence(…)` and `m.routes_are_opposite(…)` on lane fields), read as plain data for the planner,
 //! which binds the lane fields they name to lanes of the loaded road network or checks the
 //! network against them (`crate::plan`'s `map_lanes`).
 //!
@@ -9,9 +9,12 @@
 //! maps: with an OpenDRIVE network loaded, a modifier over lane fields is a **binding** of
 //! those fields to lanes of the network that satisfy it, one over route fields a **check**
 //! that the network (the roads the plan drives on, which every free route field is) does. The
-//! others (`routes_are_in_sequence` and `routes_are_opposite` on route fields,
-//! `roads_follow_in_junction`, `crossing_connects`, `set_traffic_lights_control_file`) are errors at the modifier saying
-//! why; `set_map_file` names the network (`crate::map_file`).
+//! exception is `roads_follow_in_junction`: its junction and road fields are bound through two
+//! lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
+//! plan's roads. The others (`routes_are_in_sequence` and `routes_are_opposite` on route
+//! fields, `crossing_connects`, `set_traffic_lights_control_file`, and
+//! `roads_follow_in_junction`'s `junction_route`) are errors at the modifier saying why;
+//! `set_map_file` names the network (`crate::map_file`).
 
 use dsl::semantics::hir::ModifierApp;
 use dsl::Value;
@@ -86,15 +89,18 @@ pub(crate) enum MapKind {
         /// Whether `containing_road:` was given (a road field: the plan's roads).
         on_plan_roads: bool,
     },
-    /// §8.12.2.2.3 on lane fields: `out_lane` is reached from `in_lane` through one
-    /// connecting lane of a junction, turning the way `direction` names.
+    /// §8.12.2.2.3: `out_lane` is reached from `in_lane` through one connecting lane of a
+    /// junction, turning the way `direction` names; without `in_lane`/`out_lane` two lanes
+    /// of the modifier's own stand for them (`in_road`'s and `out_road`'s).
     Junction {
-        /// The lane into the junction.
+        /// The lane into the junction (a lane field, or the modifier's own).
         in_lane: String,
-        /// The lane out of it.
+        /// The lane out of it (see `in_lane`).
         out_lane: String,
         /// `straight`, `right`, `u_turn`, `left` (none: any).
         direction: Option<String>,
+        /// The junction and road arguments.
+        roads: JunctionRoads,
     },
     /// §8.12.2.2.4: the routes overlap longitudinally in the way `kind` names.
     RoutesOverlap {
@@ -105,6 +111,27 @@ pub(crate) enum MapKind {
         /// `equal`, `start`, `end`, `inside`, `any`, `other`.
         kind: String,
     },
+}
+
+/// The junction and road arguments of `roads_follow_in_junction` (§8.12.2.2.3).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct JunctionRoads {
+    /// The `junction` field: the junction's id once bound.
+    pub junction: Option<String>,
+    /// The `in_road` field: the road of the lane into the junction.
+    pub in_road: Option<String>,
+    /// The `out_road` field: the road of the lane out of it.
+    pub out_road: Option<String>,
+    /// `clockwise_count`: the out-road is the n-th road met going clockwise round the
+    /// junction from the in-road.
+    pub clockwise_count: Option<u32>,
+    /// `number_of_roads`: how many roads outside the junction meet at it.
+    pub number_of_roads: Option<u32>,
+    /// Whether `in_lane`/`out_lane` were not given (the lanes are the modifier's own).
+    pub own_lanes: bool,
+    /// Whether any of `junction`, `in_road`, `out_road`, `resulting_route` was given: the way
+    /// through is on the plan's roads.
+    pub on_plan_roads: bool,
 }
 
 /// The map modifiers of §8.12.2.2 (besides `set_map_file`).
@@ -267,24 +294,12 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                 }
             }
         }
-        "roads_follow_in_junction"
-            if arg(&args, "in_lane").is_some() || arg(&args, "out_lane").is_some() =>
-        {
-            for p in [
-                "junction",
-                "in_road",
-                "out_road",
-                "clockwise_count",
-                "number_of_roads",
-                "junction_route",
-                "resulting_route",
-            ] {
-                if let Some(a) = arg(&args, p) {
-                    return Err(a.site.err(
-                        K::Unsupported,
-                        format!("expected roads_follow_in_junction(in_lane: …, out_lane: …, direction: …) (lane fields bound through a junction of the map), found {p}: (junction, road and route fields are not bound to the map's junctions; the lanes name the way through)"),
-                    ));
-                }
+        "roads_follow_in_junction" => {
+            if let Some(a) = arg(&args, "junction_route") {
+                return Err(a.site.err(
+                    K::Unsupported,
+                    "expected roads_follow_in_junction(…) without junction_route: (a free route field is the roads the plan drives on, which go on past the junction; the connecting road alone is no route the runtime names), found junction_route:".to_string(),
+                ));
             }
             let direction = member("direction")?;
             if let (Some(d), Some(a)) = (&direction, arg(&args, "direction")) {
@@ -295,23 +310,68 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                     ));
                 }
             }
+            let road_arg = |p: &str| -> Result<Option<String>, Error> {
+                arg(&args, p).map(|a| field(ctx, a, false)).transpose()
+            };
+            let junction = arg(&args, "junction")
+                .map(|a| junction_field(ctx, a))
+                .transpose()?;
+            let in_road = road_arg("in_road")?;
+            let out_road = road_arg("out_road")?;
+            let resulting = road_arg("resulting_route")?;
+            let given = |p: &str| arg(&args, p).is_some();
+            let own_lanes = !given("in_lane") && !given("out_lane");
+            let mut roads = JunctionRoads {
+                on_plan_roads: junction.is_some()
+                    || in_road.is_some()
+                    || out_road.is_some()
+                    || resulting.is_some(),
+                junction,
+                in_road,
+                out_road,
+                clockwise_count: given("clockwise_count")
+                    .then(|| count("clockwise_count", None))
+                    .transpose()?,
+                number_of_roads: given("number_of_roads")
+                    .then(|| count("number_of_roads", None))
+                    .transpose()?,
+                own_lanes,
+            };
+            let (in_lane, out_lane) = if own_lanes {
+                // The modifier's own lanes, named for messages and unique to it.
+                let of = |r: &Option<String>, what: &str| {
+                    format!(
+                        "{}'s lane {what} ({name} at {}:{})",
+                        r.as_deref().unwrap_or("the road"),
+                        site.pos.line,
+                        site.pos.col
+                    )
+                };
+                roads.on_plan_roads = true;
+                (
+                    of(&roads.in_road, "into the junction"),
+                    of(&roads.out_road, "out of the junction"),
+                )
+            } else {
+                (lane("in_lane")?, lane("out_lane")?)
+            };
             MapKind::Junction {
-                in_lane: lane("in_lane")?,
-                out_lane: lane("out_lane")?,
+                in_lane,
+                out_lane,
                 direction,
+                roads,
             }
         }
         other => {
             let why = match other {
                 "routes_are_in_sequence" => "on route fields (every free route field is the roads the plan drives on, one route, so none follows another; lane fields are bound); name routes in sequence with map.create_route([…])",
-                "roads_follow_in_junction" => "without in_lane and out_lane (junction and road fields are not bound to the map's junctions; name the lanes, or the way through a junction with map.create_route([…]) through points before and after it)",
                 "crossing_connects" => "(crossings are not bound to the map)",
                 "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; lane fields are bound)",
                 _ => "(traffic light control files are not read)",
             };
             return Err(site.err(
                 K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence, routes_are_opposite and roads_follow_in_junction on lane fields), found {other}(…) {why}"),
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence and routes_are_opposite on lane fields, roads_follow_in_junction), found {other}(…) {why}"),
             ));
         }
     };
@@ -354,6 +414,17 @@ fn field(ctx: &Ctx<'_>, a: &Arg, lane: bool) -> Result<String, Error> {
                     "route (route, road, lane_section or compound_route)"
                 }
             ),
+        )),
+    }
+}
+
+/// The path of the free `junction` field `a` names.
+fn junction_field(ctx: &Ctx<'_>, a: &Arg) -> Result<String, Error> {
+    match a.path.as_ref().and_then(|p| ctx.lookup(p)) {
+        Some((p, Value::RunTime(t))) if super::route::is_a(ctx, t, "junction") => Ok(p),
+        _ => Err(a.site.err(
+            K::Argument,
+            "expected a junction field nothing defines, found another expression".to_string(),
         )),
     }
 }

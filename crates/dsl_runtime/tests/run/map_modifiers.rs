@@ -89,6 +89,23 @@ fn a_turn_through_a_junction_binds_its_lanes_and_the_roads_the_plan_drives() {
 }
 
 #[test]
+fn a_way_through_a_junction_by_its_roads_is_the_roads_the_plan_drives() {
+    // map_junction_roads.osc: clockwise_count 1 from road 0 is road 6, through road 5 (20 m).
+    let r = run("map_junction_roads", "junction_trippel_twoway0");
+    let at = |t: f64| r.at(t, "ego");
+    for (t, road, s) in [
+        (0.0, "0", 60.0),
+        (3.0, "0", 90.0),
+        (5.0, "5", 10.0),
+        (10.0, "6", 40.0),
+    ] {
+        let p = at(t);
+        assert_eq!((p.road.as_str(), p.lane), (road, -1), "at {t} s");
+        assert!((p.s - s).abs() < Y_TOL, "at {t} s: {p:?}");
+    }
+}
+
+#[test]
 fn map_checks_that_fail_name_what_the_map_has() {
     refused(
         "err_map_number_of_lanes",
@@ -129,6 +146,24 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "junction_trippel_twoway0",
         "expected lanes of the map for `a`, `b` that satisfy roads_follow_in_junction(…), found none on roads 0, 2, 4, 6",
         "8:5",
+    );
+    refused(
+        "err_map_junction_roads",
+        "junction_trippel_twoway0",
+        "that satisfy roads_follow_in_junction(…), found none on roads 0, 2, 4, 6",
+        "8:5",
+    );
+    refused(
+        "err_map_junction_clockwise",
+        "junction_trippel_twoway0",
+        "that satisfy roads_follow_in_junction(…), found none on roads 0, 2, 4, 6",
+        "7:5",
+    );
+    refused(
+        "err_map_junction_route",
+        "junction_trippel_twoway0",
+        "expected roads_follow_in_junction(…) without junction_route: (a free route field is the roads the plan drives on, which go on past the junction",
+        "8:63",
     );
     refused(
         "err_map_other_road",
