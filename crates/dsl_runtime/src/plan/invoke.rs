@@ -713,6 +713,7 @@ impl Planner<'_> {
                 te,
                 lane: &lane,
                 s: &s,
+                roads: &self.route_roads,
             };
             let checked: Result<Vec<_>, Error> = alongs
                 .iter()

@@ -10,6 +10,7 @@
 //! | `end_lane(l)` | binding | l is a driving lane with a lane section after it in its driving direction and no successor there |
 //! | `lane_side(l1, side, l2, count)`, `compound_lane_side(…)` | binding | l1 and l2 are driving lanes of one lane section, l1 `count` lanes to the side of l2 across the road (t grows to the left of the s-axis, §8.12.5), every lane of the section counted; with `lane_section` (`route`), on the plan's roads |
 //! | `routes_are_in_sequence(preceding, succeeding, road)` on lane fields | binding | `succeeding` is a successor of `preceding` in its driving direction (the network's lane links, through lane sections and road links); with `road`, both on the plan's roads |
+//! | `routes_are_in_sequence(preceding, succeeding)` on two `road` fields | binding | over two lanes of the modifier's own, driven in +s on the plan's roads, of one id: the second's road is another the first leads onto, directly or through a connecting lane ([`MapLane::whole_road`]); without named routes the plan drives them (`junction_roads`) |
 //! | `routes_are_opposite(route1, route2, containing_road, lateral_overlap)` on lane fields | binding | both in one lane section, driven in opposite directions; with `containing_road`, on the plan's roads; `lateral_overlap` `never` (two lanes never share their width) or none |
 //! | `roads_follow_in_junction(in_lane, out_lane, direction)` on lane fields | binding | `out_lane` reached from `in_lane` through one connecting lane of a junction, turning the way `direction` names ([`Turn`]); without named routes the plan drives that way (`junction_roads`) |
 //! | `roads_follow_in_junction(junction, in_road, out_road, direction, clockwise_count, number_of_roads, resulting_route)` | binding | as on lane fields, over two lanes of the modifier's own when `in_lane`/`out_lane` are not given; `junction` is the connecting lane's junction, `in_road`/`out_road` the lanes' roads (one field one road across the modifiers), `clockwise_count` and `number_of_roads` counted by `map_junctions`; the way through on the plan's roads (without named routes the plan drives it) |
@@ -50,6 +51,9 @@ pub(crate) struct MapLane {
     pub span: Option<(f64, f64)>,
     /// What bound it, for messages.
     pub why: String,
+    /// Whether the field is a road (`routes_are_in_sequence` on road fields): `span` is the
+    /// whole road's, `lane` the lane the modifier bound on it.
+    pub whole_road: bool,
 }
 
 /// Checks the network against `mods` and binds the lane fields they constrain (`choose(n)`
@@ -123,21 +127,53 @@ pub(crate) fn bind(
     };
     let chosen = pool[pick.min(pool.len() - 1)];
     let starts = road.starts();
+    // The plan's s of s0 and s1 of road `id`, when the plan drives it.
+    let plan_span = |id: &str, s0: f64, s1: f64| {
+        starts
+            .iter()
+            .find(|(r, _)| *r == id)
+            .map(|(_, at)| (at + s0, at + s1))
+    };
     let own: Vec<&str> = lane_mods
         .iter()
-        .filter_map(|m| match &m.kind {
-            MapKind::Junction {
-                in_lane,
-                out_lane,
-                roads: JunctionRoads {
-                    own_lanes: true, ..
-                },
-                ..
-            } => Some([in_lane.as_str(), out_lane.as_str()]),
-            _ => None,
-        })
+        .filter_map(|m| own_lanes(m))
         .flatten()
         .collect();
+    // Road fields of routes_are_in_sequence: the road of the modifier's own lane, whole.
+    let roads = lane_mods.iter().filter_map(|m| match &m.kind {
+        MapKind::RoadsInSequence {
+            preceding,
+            succeeding,
+            in_lane,
+            out_lane,
+        } => Some([(preceding, in_lane), (succeeding, out_lane)]),
+        _ => None,
+    });
+    let mut road_fields: Vec<MapLane> = Vec::new();
+    for (field, lane) in roads.flatten() {
+        let Some(h) = names.iter().position(|n| n == lane).map(|i| chosen[i]) else {
+            continue;
+        };
+        let r = &net.roads()[h.road as usize];
+        if road_fields.iter().all(|b| &b.field != field) {
+            road_fields.push(MapLane {
+                field: field.clone(),
+                road: r.id.clone(),
+                lane: h.lane,
+                span: plan_span(&r.id, 0.0, r.length),
+                why: format!(
+                    "road {} bound by map.routes_are_in_sequence(…) at {}",
+                    r.id,
+                    lane_mods
+                        .iter()
+                        .find(|m| own_lanes(m).is_some_and(|o| o.contains(&lane.as_str())))
+                        .map(|m| m.site.at())
+                        .unwrap_or_default()
+                ),
+                whole_road: true,
+            });
+        }
+    }
     Ok(names
         .iter()
         .zip(chosen)
@@ -156,13 +192,12 @@ pub(crate) fn bind(
                 field: field.clone(),
                 road: r.id.clone(),
                 lane: h.lane,
-                span: starts
-                    .iter()
-                    .find(|(id, _)| *id == r.id)
-                    .map(|(_, at)| (at + s0, at + s1)),
+                span: plan_span(&r.id, s0, s1),
                 why: by,
+                whole_road: false,
             }
         })
+        .chain(road_fields)
         .collect())
 }
 
@@ -179,7 +214,28 @@ fn fields(m: &MapModifier) -> Option<Vec<&str>> {
         MapKind::Opposite { route1, route2, .. } => Some(vec![route1.as_str(), route2.as_str()]),
         MapKind::Junction {
             in_lane, out_lane, ..
+        }
+        | MapKind::RoadsInSequence {
+            in_lane, out_lane, ..
         } => Some(vec![in_lane.as_str(), out_lane.as_str()]),
+        _ => None,
+    }
+}
+
+/// The modifier's own lanes (no field) of `m`, if it has any.
+fn own_lanes(m: &MapModifier) -> Option<[&str; 2]> {
+    match &m.kind {
+        MapKind::Junction {
+            in_lane,
+            out_lane,
+            roads: JunctionRoads {
+                own_lanes: true, ..
+            },
+            ..
+        }
+        | MapKind::RoadsInSequence {
+            in_lane, out_lane, ..
+        } => Some([in_lane.as_str(), out_lane.as_str()]),
         _ => None,
     }
 }
@@ -262,6 +318,14 @@ fn solve(
                                 },
                             ..
                         } if a == n || b == n => on_plan(h),
+                        // Roads in sequence: driven in +s, as the plan drives.
+                        MapKind::RoadsInSequence {
+                            in_lane: a,
+                            out_lane: b,
+                            ..
+                        } if a == n || b == n => {
+                            on_plan(h) && net.driving_direction(*h) == Direction::Forward
+                        }
                         _ => true,
                     })
                 })
@@ -298,6 +362,9 @@ fn solve(
                 roads.clockwise_count,
                 roads.number_of_roads,
             )),
+            MapKind::RoadsInSequence {
+                in_lane, out_lane, ..
+            } => Some(Rel::NextRoad(index(out_lane), index(in_lane))),
             _ => None,
         })
         .collect();
@@ -322,6 +389,9 @@ enum Rel {
     /// turning that way, its road that many roads clockwise round the junction from the
     /// second's, the junction's roads that many (`None`: any).
     Through(usize, usize, Option<Turn>, Option<u32>, Option<u32>),
+    /// The first lies on another road the second leads onto, directly or through one
+    /// connecting lane of a junction, in a lane of the same id.
+    NextRoad(usize, usize),
 }
 
 /// The way a path through a junction turns (§8.12 `junction_direction`), from the change of
@@ -373,7 +443,8 @@ impl Rel {
             Rel::Side(i, _, j, _)
             | Rel::Follows(i, j)
             | Rel::Opposite(i, j)
-            | Rel::Through(i, j, ..) => (i, j),
+            | Rel::Through(i, j, ..)
+            | Rel::NextRoad(i, j) => (i, j),
         };
         let (x, y) = (*a.get(i)?, *a.get(j)?);
         Some(match self {
@@ -382,6 +453,12 @@ impl Rel {
             Rel::Opposite(..) => {
                 (x.road, x.section) == (y.road, y.section)
                     && net.driving_direction(x) != net.driving_direction(y)
+            }
+            // One lane id, as the plan keeps over its roads.
+            Rel::NextRoad(..) => {
+                x.road != y.road
+                    && x.lane == y.lane
+                    && (net.successors(y).contains(&x) || connecting(net, y, x).is_some())
             }
             Rel::Through(_, _, turn, cw, n) => connecting(net, y, x).is_some_and(|c| {
                 let junction = net.roads()[c.road as usize].junction.as_deref();
@@ -409,26 +486,40 @@ fn one_road_per_field(
 ) -> bool {
     let mut seen: Vec<(&str, &str)> = Vec::new();
     for m in mods {
-        let MapKind::Junction {
-            in_lane,
-            out_lane,
-            roads,
-            ..
-        } = &m.kind
-        else {
-            continue;
+        let (in_lane, out_lane, in_road, out_road, junction) = match &m.kind {
+            MapKind::Junction {
+                in_lane,
+                out_lane,
+                roads,
+                ..
+            } => (
+                in_lane,
+                out_lane,
+                roads.in_road.as_deref(),
+                roads.out_road.as_deref(),
+                roads.junction.as_deref(),
+            ),
+            MapKind::RoadsInSequence {
+                preceding,
+                succeeding,
+                in_lane,
+                out_lane,
+            } => (
+                in_lane,
+                out_lane,
+                Some(preceding.as_str()),
+                Some(succeeding.as_str()),
+                None,
+            ),
+            _ => continue,
         };
         let (a, b) = (sol[index(in_lane)], sol[index(out_lane)]);
         let id = |h: LaneHandle| net.roads()[h.road as usize].id.as_str();
-        let junction = connecting(net, a, b)
+        let through = connecting(net, a, b)
             .and_then(|c| net.roads()[c.road as usize].junction.as_deref())
             .unwrap_or_default();
-        for (field, value) in [
-            (&roads.in_road, id(a)),
-            (&roads.out_road, id(b)),
-            (&roads.junction, junction),
-        ] {
-            let Some(f) = field.as_deref() else { continue };
+        for (field, value) in [(in_road, id(a)), (out_road, id(b)), (junction, through)] {
+            let Some(f) = field else { continue };
             // A junction field and a road field of one name cannot both be; the path says.
             match seen.iter().find(|(g, _)| *g == f) {
                 Some((_, v)) if *v != value => return false,
@@ -507,6 +598,9 @@ pub(crate) fn junction_roads(net: &RoadNetwork, mods: &[MapModifier]) -> Option<
     let (in_lane, out_lane) = lane_mods.iter().find_map(|m| match &m.kind {
         MapKind::Junction {
             in_lane, out_lane, ..
+        }
+        | MapKind::RoadsInSequence {
+            in_lane, out_lane, ..
         } => Some((in_lane.clone(), out_lane.clone())),
         _ => None,
     })?;
@@ -516,6 +610,11 @@ pub(crate) fn junction_roads(net: &RoadNetwork, mods: &[MapModifier]) -> Option<
     solutions.iter().find_map(|sol| {
         let (a, b) = (sol[i], sol[o]);
         let forward = |h: LaneHandle| net.driving_direction(h) == Direction::Forward;
+        if net.successors(a).contains(&b) && a.road != b.road {
+            // Roads linked directly (routes_are_in_sequence on road fields).
+            return (a.lane == b.lane && forward(a) && forward(b))
+                .then(|| vec![a.road as usize, b.road as usize]);
+        }
         let c = connecting(net, a, b)?;
         (a.lane == b.lane && c.lane == a.lane && forward(a) && forward(b) && forward(c))
             .then(|| vec![a.road as usize, c.road as usize, b.road as usize])

@@ -145,6 +145,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         alongs: HashMap::new(),
         route_lanes: HashMap::new(),
         lane_roads: HashMap::new(),
+        route_roads: HashMap::new(),
         sides: RefCell::new(HashMap::new()),
         beside_checks: Vec::new(),
         draws: RefCell::new(res.draws.clone()),
@@ -180,6 +181,12 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     // The map's modifiers: the plan's roads checked, lane fields bound (before any use).
     let bound = map_lanes::bind(road, &res.map, &mut |n| p.choose(n))?;
     for b in bound {
+        if b.whole_road {
+            if let Some(span) = b.span {
+                p.route_roads.insert(b.field, (b.lane, span, b.why));
+            }
+            continue;
+        }
         p.route_lanes.insert(b.field.clone(), (b.lane, b.why));
         p.lane_roads.insert(b.field, (b.road, b.span));
     }
@@ -292,11 +299,15 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                     // On a road of the plan (`route::on_plan_road`, checked above).
                     Some((*lane, road.plan_s(id, *s).unwrap_or(*s) + a.start_offset))
                 }
-                // A lane field the map bound: from its lane section's start.
+                // A lane field the map bound: from its lane section's start; a road field:
+                // from the road's start, in the lane the modifier bound there.
                 (Route::Free { field, .. }, At::Start | At::All) => {
                     match (p.lane_roads.get(field), p.route_lanes.get(field)) {
                         (Some((_, Some((from, _)))), Some((lane, _))) => Some((*lane, *from)),
-                        _ => None,
+                        _ => p
+                            .route_roads
+                            .get(field)
+                            .map(|(lane, (from, _), _)| (*lane, *from)),
                     }
                 }
                 _ => None,

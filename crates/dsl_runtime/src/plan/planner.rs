@@ -67,6 +67,9 @@ pub(crate) struct Planner<'a> {
     /// Lane field the map's modifiers bound → the road of its lane and the plan's s of its
     /// lane section's start and end when that road is the plan's (`map_lanes`).
     pub lane_roads: HashMap<String, (String, Option<(f64, f64)>)>,
+    /// Road field the map's modifiers bound to a road of the plan (`routes_are_in_sequence`)
+    /// → the lane bound on it, the plan's s of the road's start and end, and what bound it.
+    pub route_roads: HashMap<String, (i32, (f64, f64), String)>,
     /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
     /// the modifier), checked once every phase is planned.
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,

@@ -25,6 +25,9 @@ pub(crate) struct OnRoute<'f> {
     pub lane: &'f dyn Fn(f64) -> i32,
     /// Its s on the plan road at a time.
     pub s: &'f dyn Fn(f64) -> f64,
+    /// Road fields the map bound to one road of the plan: the plan's s of its start and end,
+    /// and what bound it (`map_lanes`).
+    pub roads: &'f HashMap<String, (i32, (f64, f64), String)>,
 }
 
 /// Where an actor must be when a phase that starts at run time starts, for the engine to
@@ -53,14 +56,22 @@ pub(crate) fn check(
         Route::Free { one_lane, .. } => *one_lane,
         Route::Lane { .. } => true,
     };
-    let describe = match &along.route {
-        Route::Free { field, .. } => format!("route `{field}`"),
-        Route::Lane {
-            road,
-            lane,
-            s,
-            then,
-        } => match then.last() {
+    let bound = match &along.route {
+        Route::Free { field, .. } => on.roads.get(field),
+        Route::Lane { .. } => None,
+    };
+    let describe = match (&along.route, bound) {
+        (Route::Free { field, .. }, Some((_, _, why))) => format!("route `{field}` ({why})"),
+        (Route::Free { field, .. }, None) => format!("route `{field}`"),
+        (
+            Route::Lane {
+                road,
+                lane,
+                s,
+                then,
+            },
+            _,
+        ) => match then.last() {
             None => format!("the route along lane {lane} of road {road} from s = {s} m"),
             Some((to, e)) => format!(
                 "the route in lane {lane} from road {road} at s = {s} m to road {to} at s = {e} m"
@@ -83,7 +94,7 @@ pub(crate) fn check(
         }
     }
     let (lo, hi) = match &along.route {
-        Route::Free { .. } => (0.0, road.length()),
+        Route::Free { .. } => bound.map_or((0.0, road.length()), |(_, span, _)| *span),
         Route::Lane {
             road: id, s, then, ..
         } => (

@@ -11,8 +11,9 @@
 //! that the network (the roads the plan drives on, which every free route field is) does. The
 //! exception is `roads_follow_in_junction`: its junction and road fields are bound through two
 //! lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
-//! plan's roads. The others (`routes_are_in_sequence` and `routes_are_opposite` on route
-//! fields, `crossing_connects`, `set_traffic_lights_control_file`, and
+//! plan's roads, and `routes_are_in_sequence` on two `road` fields, bound to two roads of the
+//! plan, one leading onto the other. The others (`routes_are_in_sequence` on other route
+//! fields, `routes_are_opposite` on route fields, `crossing_connects`, `set_traffic_lights_control_file`, and
 //! `roads_follow_in_junction`'s `junction_route`) are errors at the modifier saying why;
 //! `set_map_file` names the network (`crate::map_file`).
 
@@ -88,6 +89,20 @@ pub(crate) enum MapKind {
         route2: String,
         /// Whether `containing_road:` was given (a road field: the plan's roads).
         on_plan_roads: bool,
+    },
+    /// §8.12.2.2.2 on `road` fields: `succeeding` is a road the lanes of `preceding` lead
+    /// onto, directly or through one connecting road of a junction, both driven in +s (two
+    /// lanes of the modifier's own, `in_lane` on `preceding` and `out_lane` on `succeeding`,
+    /// are what is bound).
+    RoadsInSequence {
+        /// The first road field.
+        preceding: String,
+        /// The road field that follows it.
+        succeeding: String,
+        /// The modifier's own lane on `preceding`.
+        in_lane: String,
+        /// The modifier's own lane on `succeeding`.
+        out_lane: String,
     },
     /// §8.12.2.2.3: `out_lane` is reached from `in_lane` through one connecting lane of a
     /// junction, turning the way `direction` names; without `in_lane`/`out_lane` two lanes
@@ -294,6 +309,29 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                 }
             }
         }
+        "routes_are_in_sequence"
+            if ["preceding", "succeeding"].iter().all(|p| {
+                arg(&args, p)
+                    .and_then(|a| field(ctx, a, false).ok())
+                    .is_some_and(|f| is_type(ctx, &f, "road"))
+            }) =>
+        {
+            if let Some(a) = arg(&args, "road") {
+                return Err(a.site.err(
+                    K::Unsupported,
+                    "expected routes_are_in_sequence(preceding: …, succeeding: …) on road fields without road: (the two are roads themselves), found road:".to_string(),
+                ));
+            }
+            let (preceding, succeeding) = (route("preceding")?, route("succeeding")?);
+            let own =
+                |r: &str| format!("{r}'s lane ({name} at {}:{})", site.pos.line, site.pos.col);
+            MapKind::RoadsInSequence {
+                in_lane: own(&preceding),
+                out_lane: own(&succeeding),
+                preceding,
+                succeeding,
+            }
+        }
         "roads_follow_in_junction" => {
             if let Some(a) = arg(&args, "junction_route") {
                 return Err(a.site.err(
@@ -364,14 +402,14 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
         }
         other => {
             let why = match other {
-                "routes_are_in_sequence" => "on route fields (every free route field is the roads the plan drives on, one route, so none follows another; lane fields are bound); name routes in sequence with map.create_route([…])",
+                "routes_are_in_sequence" => "on route fields other than two roads (a free route, compound_route or lane_section field is the roads the plan drives on, one route, so none follows another; lane and road fields are bound); name routes in sequence with map.create_route([…])",
                 "crossing_connects" => "(crossings are not bound to the map)",
-                "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; lane fields are bound)",
+                "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; two roads are not bound either, since every actor drives the plan's one chain of roads in +s and an actor along the opposite road would leave it; lane fields are bound)",
                 _ => "(traffic light control files are not read)",
             };
             return Err(site.err(
                 K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence and routes_are_opposite on lane fields, roads_follow_in_junction), found {other}(…) {why}"),
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence on lane or road fields, routes_are_opposite on lane fields, roads_follow_in_junction), found {other}(…) {why}"),
             ));
         }
     };

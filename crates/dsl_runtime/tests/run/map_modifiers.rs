@@ -106,6 +106,27 @@ fn a_way_through_a_junction_by_its_roads_is_the_roads_the_plan_drives() {
 }
 
 #[test]
+fn roads_in_sequence_are_bound_and_driven_from_their_starts() {
+    // map_roads_sequence.osc: a = road 1, b = road 2 (linked end to start).
+    let r = run("map_roads_sequence", "road_link_unequal_number_of_lanes0");
+    // npc's rear bumper at road 1's start: its reference point its rear overhang (under half
+    // its length) on.
+    let s0 = r.at(0.0, "npc").s;
+    assert!((0.0..2.5).contains(&s0), "{s0}");
+    for (t, who, road, s) in [
+        (0.0, "npc", "1", s0),
+        (5.0, "npc", "1", s0 + 50.0),
+        (0.0, "ego", "2", 0.0),
+        (5.0, "ego", "2", 50.0),
+    ] {
+        let p = r.at(t, who);
+        assert_eq!(p.road.as_str(), road, "{who} at {t} s: {p:?}");
+        assert!([-1, -2].contains(&p.lane), "{who} at {t} s: {p:?}");
+        assert!((p.s - s).abs() < Y_TOL, "{who} at {t} s: {p:?}");
+    }
+}
+
+#[test]
 fn map_checks_that_fail_name_what_the_map_has() {
     refused(
         "err_map_number_of_lanes",
@@ -166,6 +187,12 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "8:63",
     );
     refused(
+        "err_map_roads_sequence_off",
+        "road_link_unequal_number_of_lanes0",
+        "expected `npc` on route `a` (road 1 bound by map.routes_are_in_sequence(…) at ",
+        "10:9",
+    );
+    refused(
         "err_map_other_road",
         "road_link_unequal_number_of_lanes0",
         "expected a lane of the roads the plan drives on (1) for `l`, found lane -3 of road 2 (bound by map.start_lane(…) at ",
@@ -203,8 +230,8 @@ fn modifiers_of_the_scenario_the_runtime_does_not_run_say_why() {
     refused(
         "err_map_sequence_roads",
         "straight",
-        "found routes_are_in_sequence(…) on route fields (every free route field is the roads the plan drives on, one route, so none follows another",
-        "7:5",
+        "found routes_are_in_sequence(…) on route fields other than two roads (a free route, compound_route or lane_section field is the roads the plan drives on, one route, so none follows another",
+        "8:5",
     );
     refused(
         "err_scenario_modifier",
