@@ -245,7 +245,8 @@ fn the_shortcut_gives_the_full_rule_bit_for_bit() {
 /// The view keeps the handle of the entity's own lane from its making and a lane beside's
 /// from `beside` (issue 31); on the 40 crowded highways its leader, follower and the leader and
 /// follower of each lane beside are, bit for bit, the searches made with the lane's handle
-/// asked of the network at each question (the view's code before).
+/// asked of the network at each question (the view's code before), and the handle `beside`
+/// makes from the section at the entity's s is the one the network gives.
 #[test]
 fn the_kept_lane_handles_give_the_searches_of_handles_asked_each_time() {
     let mut lanes_beside = 0;
@@ -267,6 +268,10 @@ fn the_kept_lane_handles_give_the_searches_of_handles_asked_each_time() {
         assert_eq!(bits(view.leader()), ahead(track.lane_id), "{}", e.name);
         assert_eq!(bits(view.follower()), behind(track.lane_id), "{}", e.name);
         for side in [Side::Left, Side::Right] {
+            if let Some(b) = view.beside(side) {
+                let asked = w.network.lane_handle_on(track.road, b.lane, track.s);
+                assert_eq!(Some(b.at.0), asked, "{} {side:?}", e.name);
+            }
             if let Some(n) = view.neighbour_lane(side) {
                 lanes_beside += 1;
                 assert_eq!(bits(n.leader), ahead(n.lane), "{} {side:?}", e.name);

@@ -323,15 +323,26 @@ impl<'a> ControllerView<'a> {
         };
         let lane = lane_shift(track.lane_id, n, track.direction);
         let road = self.network.road_at(track.road);
-        let section = road.lane_section_at(track.s);
+        let k = road.lane_section_index(track.s);
+        let section = &road.lane_sections[k];
         let drivable = section
             .lane(lane)
             .is_some_and(|l| l.lane_type.is_drivable());
         let own = track.own?;
-        let at = self.lane_handle(lane)?;
-        let h = at.0;
-        let same_way = self.network.driving_direction(h) == self.network.driving_direction(own);
-        if !drivable || !same_way {
+        if !drivable {
+            return None;
+        }
+        // The lane's handle at the entity's s, as `lane_handle` asks the network for it
+        // (`RoadNetwork::lane_handle_on`): the section holding a lane at s is the section at s
+        // when that section has the lane (`Road::lane_section_index_holding`), as a drivable
+        // lane of it has; no second search of the road's sections (issue 31).
+        let h = LaneHandle {
+            road: track.road.0,
+            section: k as u32,
+            lane,
+        };
+        let at = (h, track.direction);
+        if self.network.driving_direction(h) != self.network.driving_direction(own) {
             return None;
         }
         let keep = match road.rule {
