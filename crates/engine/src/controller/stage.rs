@@ -105,7 +105,9 @@ pub(crate) fn step(
     }
     let net = &world.network;
     let mut finite = true;
-    for (i, e) in world.entities.iter_mut().enumerate() {
+    let tested = |e: &Entity| !e.placed || all_finite(e);
+    for i in 0..world.entities.len() {
+        let e = &mut world.entities[i];
         match merged.get(i).copied().flatten() {
             Some(m) if e.placed => apply(net, e, controllers.of_mut(i), m, dt),
             _ => {
@@ -114,8 +116,14 @@ pub(crate) fn step(
                 move_entity(net, e, dt, None);
             }
         }
-        finite &= !e.placed || all_finite(e);
+        // The entity moved before this one is tested now, not this one: a load of a value
+        // its move is still storing would wait for the store (the test, reading the values
+        // just written two at a time, took more than the separate walk it replaced).
+        if let Some(before) = i.checked_sub(1) {
+            finite &= tested(&world.entities[before]);
+        }
     }
+    finite &= world.entities.last().map_or(true, tested);
     controllers.stage = storage;
     finite
 }
