@@ -189,6 +189,34 @@ impl Planner<'_> {
                         )),
                     }
                 };
+                if m.shape.is_some() {
+                    // The action the shape describes, from the phase start (`shapes`).
+                    let phase_len = match (t0, end, len) {
+                        (Some(a), Some(b), _) if b > a => Some(b - a),
+                        (_, _, l) => l,
+                    };
+                    let slot = Slot {
+                        target,
+                        t0,
+                        len: phase_len,
+                        first,
+                        out: &mut *out,
+                        persist: &mut *persist,
+                        formation: None,
+                    };
+                    let ends = self.plan_shaped(p, m, mods, slot, &mut name)?;
+                    match (t0, phase_len, ends) {
+                        (Some(t), Some(l), Some(When::At(te))) if te > t + l + 1e-9 => {
+                            return Err(m.site.err(
+                                K::Unsatisfiable,
+                                format!("expected the change of `{}(…)`'s shape within the phase's {l:.2} s, found it takes {:.2} s", m.name, te - t),
+                            ));
+                        }
+                        (_, None, e) if end.is_none() => derived = all_of(derived, e),
+                        _ => {}
+                    }
+                    continue;
+                }
                 match (m.kind, m.at) {
                     // Checked against the planned motion (see check_keeps, route::check).
                     (

@@ -262,6 +262,7 @@ impl Planner<'_> {
             projected: false,
             args,
             along: None,
+            shape: None,
             site: p.site.clone(),
         };
         // The reference's lane at the action's start (len 0).

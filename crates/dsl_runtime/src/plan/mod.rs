@@ -57,6 +57,7 @@
 //! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
+//! | `shapes` | modifiers with a `shape:`, planned as the action whose dynamics the shape is |
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
@@ -103,6 +104,7 @@ mod relative_path;
 mod route;
 mod runtime;
 mod schedule;
+mod shapes;
 mod speed_actions;
 mod trajectory_actions;
 mod types;

@@ -152,6 +152,11 @@ impl<'a> Eval<'a> {
         self.res.get(path).map(|v| (path.to_string(), v))
     }
 
+    /// The solver's value at `path` (as [`Eval::lookup`] finds it), when it is a constant.
+    pub(crate) fn value_at(&self, path: &str) -> Option<Val> {
+        self.lookup(path).and_then(|(p, v)| from_value(p, v))
+    }
+
     /// The compound type of a resolved instance.
     pub(crate) fn type_of(&self, v: &Value) -> Option<CompoundId> {
         match v {

@@ -11,6 +11,7 @@
 //! | `eval` | expressions of the program, with the solver's values (private to this stage) |
 //! | `objects` | physical objects (vehicles, persons, animals, located stationary objects) and vehicle groups with their fields (§8.7, §8.7.18) |
 //! | `route` | `along(…)` routes (§8.9, §8.12) |
+//! | `shape` | a modifier's `shape:`, a common shape read as its action's arguments (§8.9.1.2) |
 //! | `modifier` | movement modifiers (§8.9) |
 //! | `map_modifiers` | the map's modifiers in the scenario's body, as bindings and checks for the planner (§8.12.2.2) |
 //! | `position` | places and orientations of the position actions (§8.8.2.4, §8.8.2.5, §8.8.2.11) |
@@ -29,6 +30,7 @@ mod modifier;
 mod objects;
 mod position;
 mod route;
+mod shape;
 mod tree;
 mod value;
 
@@ -48,6 +50,7 @@ pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
 pub(crate) use position::{Place, PlaceArg};
 pub(crate) use route::{Along, LaneField, Route};
+pub(crate) use shape::ShapeKind;
 pub(crate) use tree::{Invoke, Kind, Phase};
 pub(crate) use value::{arg, Arg, Draws, Val};
 

@@ -9,6 +9,7 @@ use dsl::semantics::hir::{Expr, ModifierApp};
 use super::action::Action;
 use super::eval::{bind, Eval};
 use super::route::{self, Along};
+use super::shape::{self, Shape};
 use super::value::{arg, Arg, Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
@@ -81,6 +82,8 @@ pub(crate) struct Modifier {
     pub args: Args,
     /// The route of an `along(…)`.
     pub along: Option<Along>,
+    /// Its `shape:` (§8.9.1.2), read: the dynamics of its change.
+    pub shape: Option<Shape>,
     /// The application.
     pub site: Site,
 }
@@ -124,6 +127,7 @@ pub(crate) fn implied(action: Action, name: &str, site: &Site) -> Vec<Modifier> 
         projected: false,
         args: Vec::new(),
         along: None,
+        shape: None,
         site: site.clone(),
     }]
 }
@@ -169,7 +173,7 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
     let params = params(ctx, name);
     let bound = bind(&app.args, &params);
     let args: Args = bound.iter().map(|(n, e)| (n.clone(), ctx.arg(e))).collect();
-    let at = match arg(&args, "at") {
+    let mut at = match arg(&args, "at") {
         None => At::All,
         Some(e) => match e.eval()? {
             Val::Enum(m) if m == "start" => At::Start,
@@ -185,9 +189,10 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
     };
     // The common parameters (§8.9.1.1): `movement_mode` is planned (see `Mod::monotonous`),
     // `track` is the referenced actor's (actual, or projected from its state at the phase
-    // start: `Modifier::projected`); `shape` is not run.
+    // start: `Modifier::projected`); `shape` gives the change's dynamics (`shape` module).
     let mut monotonous = false;
     let mut projected = false;
+    let mut shape = None;
     for (n, e) in &args {
         match n.as_str() {
             "movement_mode" => {
@@ -202,16 +207,23 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
                     ));
                 }
             }
-            "shape" => {
-                return Err(e.site.err(
-                    K::Modifier,
-                    format!("expected `{name}(…)` without shape: (the engine's own speed and lane change shapes are planned), found one"),
-                ))
-            }
+            "shape" => shape = Some(shape::read(ctx, name, e)?),
             _ => {}
         }
     }
     check_combination(ctx, name, &bound)?;
+    if shape.is_some() {
+        // A shape is a change from the phase start (§8.9.1.2: compute's time is measured from
+        // the start of the phase): it holds at the end, where the modifier's own value is.
+        if at == At::Start {
+            return Err(ctx.files.err(
+                K::Modifier,
+                app.span,
+                format!("expected `{name}(…)` with a shape at: all or at: end (the shape is the change over the phase), found at: start"),
+            ));
+        }
+        at = At::End;
+    }
     match kind {
         ModKind::AvoidCollisions => {
             let avoid = match arg(&args, "avoid") {
@@ -254,6 +266,7 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
         projected,
         args,
         along,
+        shape,
         site,
     })
 }

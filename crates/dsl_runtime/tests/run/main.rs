@@ -19,6 +19,7 @@ mod orientation;
 mod position_actions;
 mod reuse;
 mod runtime;
+mod shapes;
 mod speed_actions;
 mod support;
 mod track;

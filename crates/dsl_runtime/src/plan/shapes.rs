@@ -1,0 +1,184 @@
+//! Movement modifiers with a `shape:` (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.4, §8.9.1.2): the
+//! common shape's `target`, `rate_profile` and `rate_peak` are the dynamics of the §8.8 action
+//! whose semantic clarification names that shape, so the modifier is planned as that action
+//! from the phase start (`speed_actions`, `lateral_actions`), no second profile:
+//!
+//! | modifier | shape | planned as |
+//! | --- | --- | --- |
+//! | `speed(shape: s)`, `speed(v, at: end, shape: s)`, `change_speed(v, shape: s)` | `common_speed_shape` | `change_speed(target, rate_profile, rate_peak)` (§8.8.2.12 Code 100) |
+//! | `acceleration(shape: s)`, `acceleration(a, at: end, shape: s)` | `common_acceleration_shape` | `change_acceleration(target, rate_profile, rate_peak)` (§8.8.2.14 Code 106) |
+//! | `change_lane(n, side, shape: s)` | `common_lateral_shape` | `change_lane(num_of_lanes: n, side, offset: target, rate_profile, rate_peak)` |
+//! | `lateral(d, measure_by, side, at: end, shape: s)` | `common_lateral_shape` | `follow_lane(offset: o, rate_profile, rate_peak)`, o the offset `lateral` asks for (its `d`, else the shape's target) |
+//!
+//! The target is the modifier's own value when it gives one (§8.9.1.1.4 Code 79), else the
+//! shape's. The change starts with the phase (§8.9.1.2: compute's time "is measured from the
+//! start of the scenario phase") and, as the action's, ends when the target is reached: in a
+//! phase with an end of its own it must end within it (an error otherwise, never a cut
+//! profile), and it ends a phase without one. Beside a shaped modifier no other modifier may
+//! change the same state variable ("using the shape structs specifies the exact values for
+//! certain state variables … throughout", §8.9.1.1.4).
+
+use super::lateral;
+use super::planner::Planner;
+use super::speed_actions::Slot;
+use super::types::When;
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{arg, Action, Arg, At, Invoke, ModKind, Modifier, Phase, ShapeKind, Val};
+
+/// Whether `q` changes the state variable a shape of `kind` fixes.
+fn changes(q: &Modifier, kind: ShapeKind) -> bool {
+    match kind {
+        ShapeKind::Speed | ShapeKind::Acceleration => match q.kind {
+            ModKind::ChangeSpeed | ModKind::Acceleration | ModKind::Distance => true,
+            ModKind::Speed | ModKind::Position => q.at == At::End,
+            _ => false,
+        },
+        ShapeKind::Lateral => match q.kind {
+            ModKind::ChangeLane => true,
+            ModKind::Lane | ModKind::Lateral => q.at == At::End,
+            _ => false,
+        },
+    }
+}
+
+impl Planner<'_> {
+    /// Plans the shaped modifier `m` of invocation `mods` for `slot`'s actor as the action its
+    /// shape describes; returns when the change ends (`None`: it sets no end of its own).
+    pub(super) fn plan_shaped(
+        &mut self,
+        p: &Phase,
+        m: &Modifier,
+        mods: &[Modifier],
+        slot: Slot<'_>,
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Result<Option<When>, Error> {
+        let Some(shape) = &m.shape else {
+            return Ok(None);
+        };
+        if let Some(q) = mods
+            .iter()
+            .find(|q| !std::ptr::eq(*q, m) && changes(q, shape.kind))
+        {
+            return Err(q.site.err(
+                K::Unsatisfiable,
+                format!(
+                    "expected no `{}(…)` beside `{}(…)` at {}, whose {} fixes that state variable over the phase (§8.9.1.1.4), found one",
+                    q.name,
+                    m.name,
+                    m.site.at(),
+                    shape.kind.library_name()
+                ),
+            ));
+        }
+        if let Some(r) = [
+            "faster_than",
+            "slower_than",
+            "same_as",
+            "left_of",
+            "right_of",
+            "side_of",
+        ]
+        .iter()
+        .find_map(|r| m.arg(r))
+        {
+            return Err(r.site.err(
+                K::Unsupported,
+                format!("expected `{}(…)` with a shape to give its own value (the shape's target is absolute), found a reference object", m.name),
+            ));
+        }
+        let mut args = shape.args.clone();
+        let num = |x: f64| Arg {
+            site: m.site.clone(),
+            path: None,
+            value: Ok(Val::Num(x)),
+        };
+        // The modifier's own value is the target (Code 79); a shape's own target must agree.
+        let own = match shape.kind {
+            ShapeKind::Speed => m.arg("speed"),
+            ShapeKind::Acceleration => m.arg("acceleration"),
+            ShapeKind::Lateral => m.arg("distance"),
+        };
+        let given = arg(&args, "target").cloned();
+        if let (Some(o), Some(g)) = (own, &given) {
+            let (a, b) = (o.number()?, g.number()?);
+            if (a - b).abs() > 1e-9 {
+                return Err(g.site.err(
+                    K::Unsatisfiable,
+                    format!("expected the shape's target to agree with `{}(…)`'s own value, found {b} against {a} (SI units; give the target once)", m.name),
+                ));
+            }
+        }
+        args.retain(|(n, _)| n != "target");
+        let target = match (own, given) {
+            (Some(o), _) => o.clone(),
+            (None, Some(g)) => g,
+            // The library's default target, 0.
+            (None, None) => num(0.0),
+        };
+        let kind = match (shape.kind, m.kind) {
+            (ShapeKind::Speed, _) => {
+                args.push(("target".to_string(), target));
+                Action::ChangeSpeed
+            }
+            (ShapeKind::Acceleration, _) => {
+                args.push(("target".to_string(), target));
+                Action::ChangeAcceleration
+            }
+            (ShapeKind::Lateral, ModKind::ChangeLane) => {
+                if let Some(q) = mods
+                    .iter()
+                    .find(|q| q.kind == ModKind::Lateral && q.at == At::End)
+                {
+                    return Err(q.site.err(
+                        K::Unsatisfiable,
+                        format!("expected the offset in the target lane as the target of `{}(…)`'s shape, found lateral(…, at: end) beside it", m.name),
+                    ));
+                }
+                if let Some(n) = m.arg("lane") {
+                    args.push(("num_of_lanes".to_string(), n.clone()));
+                }
+                if let Some(s) = m.arg("side") {
+                    args.push(("side".to_string(), s.clone()));
+                }
+                args.push(("offset".to_string(), target));
+                Action::ChangeLane
+            }
+            (ShapeKind::Lateral, _) => {
+                // The offset lateral(…) asks for, in the lane the actor is in at the start.
+                let t = slot.t0.unwrap_or_else(|| self.last_known());
+                let lane = match slot.t0 {
+                    Some(t) => self.track(slot.target).lane(t),
+                    None => self.track(slot.target).lane(f64::MAX),
+                };
+                let w = self.road.lane_width(lane, self.s_at(slot.target, t));
+                let mut asked = m.clone();
+                asked.args.retain(|(n, _)| n != "distance");
+                asked.args.push(("distance".to_string(), target));
+                let o = lateral::lane_offset(&asked, w, self.width(slot.target))?;
+                args.push(("offset".to_string(), num(o)));
+                Action::FollowLane
+            }
+        };
+        let inv = Invoke {
+            actor: slot.target.to_string(),
+            actor_site: m.site.clone(),
+            action: m.name.clone(),
+            kind,
+            args,
+            places: Vec::new(),
+            modifiers: Vec::new(),
+            lane_target: None,
+        };
+        // The action's messages name the modifier's place.
+        let at_modifier = Phase {
+            site: m.site.clone(),
+            ..p.clone()
+        };
+        match kind {
+            Action::ChangeLane | Action::FollowLane => {
+                self.plan_lateral_action(&at_modifier, &inv, slot, name)
+            }
+            _ => self.plan_speed_action(&at_modifier, &inv, slot, name),
+        }
+    }
+}
