@@ -7,7 +7,9 @@
 //! §7.3.9) is an instance of the invoked behavior of its own, a root named by the caller's
 //! instance and the invocation's phase path (`main.do.round_two`), expanded in turn (invocations
 //! in its `do`: `main.do.round_two.do.slow`). A parameter given an actor or struct of the
-//! caller is that instance (the same node); the other parameters are nodes of their own.
+//! caller is that instance (the same node); the other parameters are nodes of their own. An
+//! invocation of an action with `keep(…)` in its `with:` is an instance the same way, so the
+//! keep constrains that invocation's arguments.
 
 use std::collections::HashMap;
 

@@ -82,16 +82,17 @@ pub(crate) fn read(ctx: &Eval<'_>, name: &str, a: &Arg) -> Result<Shape, Error> 
         ));
     };
     let want = kind.library_name();
-    let path =
-        match a.eval()? {
-            Val::Instance(p) => p,
-            _ => return Err(a.site.err(
+    let path = match a.eval()? {
+        Val::Instance(p) => p,
+        _ => {
+            return Err(a.site.err(
                 K::Modifier,
                 format!(
                     "expected a {want} instance as the shape of `{name}(…)`, found another value"
                 ),
-            )),
-        };
+            ))
+        }
+    };
     let value = ctx.lookup(&path).map(|(_, v)| v);
     let ty = value.and_then(|v| ctx.type_of(v)).map_or_else(
         || "another value".to_string(),

@@ -12,7 +12,7 @@
 //! is not part of the path). The invocation's `until` ends that root too.
 
 use dsl::semantics::hir::{
-    Arg as HirArg, Behavior, CompositionOp, Expr, ExprKind, Labeled, Member, Span, WithMember,
+    Arg as HirArg, Behavior, CompositionOp, Expr, ExprKind, Keep, Labeled, Member, Span, WithMember,
 };
 use dsl::semantics::types::{CompoundId, Ty};
 
@@ -22,7 +22,7 @@ use super::eval::{Eval, Frame};
 use super::modifier::{self, Modifier};
 use super::position::{self, PlaceArg};
 use super::route::LaneField;
-use super::value::{Args, Val};
+use super::value::{Arg, Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
 /// One phase.
@@ -276,7 +276,17 @@ fn build(
             };
             let (kind, params) = action_params(ev, &actor_path, &name.text);
             let places = position::read(ev, kind, args, &params)?;
-            let args = ev.args(args, &params);
+            let mut args = ev.args(args, &params);
+            let keeps: Vec<&Keep> = with
+                .iter()
+                .filter_map(|w| match w {
+                    WithMember::Keep(k) => Some(k),
+                    _ => None,
+                })
+                .collect();
+            if !keeps.is_empty() {
+                solved_args(ev, site_path, &params, &keeps, &mut args)?;
+            }
             let lane_target = match (kind, super::value::arg(&args, "target")) {
                 (Action::ChangeLane | Action::FollowLane, Some(a)) => {
                     Some(super::route::lane_field(ev, a)?)
@@ -324,13 +334,8 @@ fn build(
                         }
                         _ => until = Some(cond::read(ev, e)),
                     },
-                    WithMember::Keep(k) => {
-                        return Err(ev.files.err(
-                            K::Unsupported,
-                            k.span,
-                            "expected modifiers or until in an invocation's with:, found keep (not run yet)",
-                        ))
-                    }
+                    // Solved with the invocation's instance (`solved_args`).
+                    WithMember::Keep(_) => {}
                 }
             }
             let site = ev.site(*span);
@@ -501,6 +506,91 @@ fn behavior(
 /// Which action `actor.action` is, and its parameter names, own first then inherited (as the
 /// checker binds them). An action the program declares (not the standard library) is
 /// [`Action::Other`], whatever its name.
+/// The arguments of an action invocation with `keep(…)` in its `with:` (§7.3.9
+/// behavior-with-member): the invocation is an instance of the action the solver resolved with
+/// its arguments (`it.p == argument`, `in` for a range) and those constraints, at the
+/// invocation's path (`{prefix}{site_path}`, as an invoked scenario's), with the scenario's
+/// seed. Each parameter given as an argument, or named by a keep as `it.p`, takes the solver's
+/// value (a range argument is then drawn within the keep); parameters neither gives stay
+/// absent, as without a keep (the solver's sample of them is not read). Instance arguments
+/// (actors, structs) are the caller's own instances, unchanged.
+fn solved_args(
+    ev: &Eval<'_>,
+    site_path: &str,
+    params: &[String],
+    keeps: &[&Keep],
+    args: &mut Args,
+) -> Result<(), Error> {
+    let instance = format!("{}{site_path}", ev.frame.prefix);
+    if ev.lookup(&instance).is_none() {
+        // The checker records no instance for an invocation outside a `do` (an `on` handler).
+        return Err(ev.files.err(
+            K::Unsupported,
+            keeps[0].span,
+            "expected keep(…) in the with: of an action invoked in a `do` (where the solver resolves the invocation), found it elsewhere",
+        ));
+    }
+    let mut named: Vec<(String, Span)> = Vec::new();
+    for k in keeps {
+        it_fields(&k.expr, k.span, &mut named);
+    }
+    for p in params {
+        let from_keep = named.iter().find(|(n, _)| n == p).map(|(_, s)| *s);
+        let given = args.iter().position(|(n, _)| n == p);
+        if from_keep.is_none() && given.is_none() {
+            continue;
+        }
+        let value = match ev.value_at(&format!("{instance}.{p}")) {
+            Some(Val::Instance(_)) | None => continue,
+            Some(v) => v,
+        };
+        match (given, from_keep) {
+            (Some(i), _) => args[i].1.value = Ok(value),
+            (None, Some(span)) => args.push((
+                p.clone(),
+                Arg {
+                    site: ev.site(span),
+                    path: None,
+                    value: Ok(value),
+                },
+            )),
+            (None, None) => {}
+        }
+    }
+    Ok(())
+}
+
+/// The fields `e` names on `it` (`it.target`), with the keep's span.
+fn it_fields(e: &Expr, span: Span, out: &mut Vec<(String, Span)>) {
+    let mut sub = |x: &Expr| it_fields(x, span, out);
+    match &e.kind {
+        ExprKind::Field(inner, n) if matches!(inner.kind, ExprKind::It) => {
+            out.push((n.text.clone(), span))
+        }
+        ExprKind::Field(a, _)
+        | ExprKind::Neg(a)
+        | ExprKind::Not(a)
+        | ExprKind::Cast(a, _)
+        | ExprKind::TypeTest(a, _) => sub(a),
+        ExprKind::Index(a, b) | ExprKind::Binary(_, a, b) | ExprKind::Range(a, b) => {
+            sub(a);
+            sub(b);
+        }
+        ExprKind::Ternary(a, b, c) => {
+            sub(a);
+            sub(b);
+            sub(c);
+        }
+        ExprKind::List(xs) => xs.iter().for_each(sub),
+        ExprKind::Call(f, xs) => {
+            sub(f);
+            xs.iter().for_each(|x| sub(&x.value));
+        }
+        ExprKind::Temporal(_, xs) => xs.iter().for_each(|x| sub(&x.value)),
+        _ => {}
+    }
+}
+
 fn action_params(ev: &Eval<'_>, actor: &str, action: &str) -> (Action, Vec<String>) {
     let fallback = (Action::Other, vec!["duration".into()]);
     let Some(ty) = ev.lookup(actor).and_then(|(_, v)| ev.type_of(v)) else {

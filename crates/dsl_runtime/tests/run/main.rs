@@ -10,6 +10,7 @@ mod distance;
 mod gap_actions;
 mod groups;
 mod handlers;
+mod keep_args;
 mod lane_side;
 mod lateral;
 mod lateral_actions;

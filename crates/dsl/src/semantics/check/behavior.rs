@@ -105,8 +105,11 @@ impl Cx<'_> {
                 let bound = self.args(&params, args, &label, scope, *span);
                 // An invocation of a behavior with a `do` is an instance of it: `it` in its
                 // `with:` block is that instance, so `keep(it.p …)` constrains its parameter.
+                // So is an invocation of an action with `keep(…)` in its `with:` (§7.3.9
+                // behavior-with-member: the constraints hold for that invocation).
+                let keeps = with.iter().any(|w| matches!(w, WithMember::Keep(_)));
                 let site = match (path, scope.this) {
-                    (Some(p), Some(caller)) if self.has_do(bid) => {
+                    (Some(p), Some(caller)) if keeps || self.has_do(bid) => {
                         Some(self.invocation(caller, p, bid, &params, bound, name.span, *span))
                     }
                     _ => None,
