@@ -41,7 +41,7 @@ impl Planner<'_> {
             return Err(p.site.err(
                 K::Unsupported,
                 format!(
-                    "expected a movement action of the standard library (§8.8), found `{}`, an action the program declares (actions with a body of their own are not run)",
+                    "expected a `do` in `{}`, an action the program declares without one and without a movement action of the standard library (§8.8) among its ancestors, found neither: the engine runs an action's own `do` (§7.3.9), or the action it inherits",
                     inv.action
                 ),
             ));

@@ -466,7 +466,7 @@ fn behavior(
                     K::Modifier,
                     m.span,
                     format!(
-                        "expected `until` or `keep` in the with: of an invocation of `{name}`, found the modifier `{}` (modifiers apply to actions)",
+                        "expected `until` or `keep` in the with: of an invocation of `{name}`, found the modifier `{}` (modifiers apply to the standard library's movement actions, not to a behavior that runs a `do` of its own)",
                         m.name.text
                     ),
                 ))
@@ -599,12 +599,18 @@ fn action_params(ev: &Eval<'_>, actor: &str, action: &str) -> (Action, Vec<Strin
     let Some(b) = ev.model.behavior_of(ty, action) else {
         return fallback;
     };
-    let library = ev.model.compound(b).span.file.0 < ev.model.library_files;
-    let kind = if library {
-        Action::of_library(action)
-    } else {
-        Action::Other
-    };
+    // An action the program declares without a `do` of its own (one with a `do` runs it,
+    // `behavior`) has the meaning of the nearest library action it inherits (`action
+    // vehicle.brake inherits movable_object.change_speed` is a change_speed), if any.
+    let kind = ev
+        .model
+        .ancestry(b)
+        .into_iter()
+        .map(|c| ev.model.compound(c))
+        .filter(|c| c.span.file.0 < ev.model.library_files)
+        .map(|c| Action::of_library(&c.short))
+        .find(|k| *k != Action::Other)
+        .unwrap_or(Action::Other);
     let params = ev
         .model
         .ancestry(b)
