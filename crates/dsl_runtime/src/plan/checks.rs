@@ -3,7 +3,8 @@
 //! `yaw`, `orientation`).
 
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{At, ModKind, Modifier, Val};
+use crate::resolve::{At, Kind, ModKind, Modifier, Phase, Val};
+use crate::track::Track;
 
 /// Checks `keep_lane()`, `keep_speed()` and `physical_movement(must_be_physical)` against the
 /// other modifiers of their invocation: a lane change beside `keep_lane`, a speed change beside
@@ -178,4 +179,64 @@ pub(crate) fn check_orientation(
         }
     }
     Ok(asked)
+}
+
+/// Whether `mods` allow a non-physical movement: `physical_movement(prefer_non_physical)`
+/// ("perform the non physical way if the implementation allows that", §8.9.25) or
+/// `physical_movement(prefer_physical)` ("perform the movement physical if possible"), not the
+/// default `must_be_physical`.
+fn non_physical(mods: &[Modifier]) -> Result<bool, Error> {
+    for m in mods.iter().filter(|m| m.kind == ModKind::PhysicalMovement) {
+        if let Some(e) = m.arg("option") {
+            if matches!(e.eval()?, Val::Enum(o) if o == "prefer_non_physical" || o == "prefer_physical")
+            {
+                return Ok(true);
+            }
+        }
+    }
+    Ok(false)
+}
+
+/// Checks that `actor`, which moves with the yaw `yaw` (rad, relative to the road) asked at
+/// `site`, may do so crabwise: the engine keeps the heading relative to its lane (the Init's
+/// relative Orientation) while it moves along the lane, turned from the way it moves. That is
+/// no physical motion (a vehicle or person moves along its heading, §8.9.17
+/// `must_be_physical`, the default: "an error message is issued if this action cannot be
+/// performed in conformity with the laws of physics"), so every invocation of the actor must
+/// allow a non-physical one (`non_physical`); it must move along its lane only (no lane or
+/// offset change: the engine would turn it with the change) and under the plan's own actions
+/// (`engine_moved`: not a gap action's or a car-following controller's).
+pub(crate) fn crabwise(
+    root: &Phase,
+    actor: &str,
+    yaw: f64,
+    site: &Site,
+    track: &Track,
+    engine_moved: bool,
+) -> Result<(), Error> {
+    let moving = format!("expected `{actor}` standing throughout the run with a yaw of {yaw:.4} rad relative to the road, or moving along its lane with physical_movement(prefer_non_physical) in every invocation of it, found it moving");
+    for leaf in root.leaves() {
+        let Kind::Invoke(inv) = &leaf.kind else {
+            continue;
+        };
+        if inv.actor == actor && !non_physical(&inv.modifiers)? {
+            return Err(site.err(
+                K::Unsatisfiable,
+                format!("{moving} under the default physical_movement(must_be_physical) at {}: a vehicle or person moves along its heading (§8.9.17: in conformity with the laws of physics), so one turned from its lane's s-axis would leave its lane, which its plan does not", leaf.site.at()),
+            ));
+        }
+    }
+    if let Some(t) = track.moving_in(f64::NEG_INFINITY, f64::INFINITY) {
+        return Err(site.err(
+            K::Unsatisfiable,
+            format!("{moving} sideways from {t:.2} s (a crabwise movement keeps to the lane: no lane or offset change)"),
+        ));
+    }
+    if engine_moved {
+        return Err(site.err(
+            K::Unsatisfiable,
+            format!("{moving} under the engine's controller (a gap action or avoid_collisions(true)), which steers along the lane"),
+        ));
+    }
+    Ok(())
 }

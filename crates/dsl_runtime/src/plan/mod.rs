@@ -380,14 +380,20 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
         }
     }
-    // A yaw other than 0 relative to the road is kept only by an actor that stands.
+    // A yaw other than 0 relative to the road is kept physically only by an actor that
+    // stands; one that moves keeps it crabwise along its lane where every invocation of it
+    // allows a non-physical movement (`checks::crabwise`).
     for e in &p.entities {
         if let Some((y, site)) = &e.yaw {
             if !e.track.stands() || p.engine_moved.contains_key(&e.name) {
-                return Err(site.err(
-                    K::Unsatisfiable,
-                    format!("expected `{}` standing throughout the run with a yaw of {y:.4} rad relative to the road, found it moving: a vehicle or person moves along its heading (§8.9.17 must_be_physical: in conformity with the laws of physics), so one turned from its lane's s-axis would leave its lane, which its plan does not; the engine runs a yaw other than 0 for an actor that stands", e.name),
-                ));
+                checks::crabwise(
+                    root,
+                    &e.name,
+                    *y,
+                    site,
+                    &e.track,
+                    p.engine_moved.contains_key(&e.name),
+                )?;
             }
         }
     }

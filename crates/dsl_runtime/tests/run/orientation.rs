@@ -1,5 +1,7 @@
 //! `yaw(…)` and `orientation(…)` relative to the road: zero angles hold where the vehicle does
-//! not move sideways, another yaw where the actor stands; other forms are errors. Expectations in the scenario files.
+//! not move sideways, another yaw where the actor stands or, with a non-physical movement
+//! allowed, moves crabwise along its lane; other forms are errors. Expectations in the
+//! scenario files.
 
 use crate::along::refused;
 use crate::support::run;
@@ -29,7 +31,7 @@ fn orientations_the_planner_does_not_steer_are_errors() {
     );
     refused(
         "err_yaw_angle",
-        "expected `ego` standing throughout the run with a yaw of 0.0873 rad relative to the road, found it moving",
+        "expected `ego` standing throughout the run with a yaw of 0.0873 rad relative to the road, or moving along its lane with physical_movement(prefer_non_physical) in every invocation of it, found it moving under the default physical_movement(must_be_physical) at",
         "7:13",
     );
     refused(
@@ -58,4 +60,41 @@ fn a_standing_actor_keeps_its_yaw_relative_to_the_road() {
         );
         assert!(r.at(t, "ego").h.abs() < H_TOL);
     }
+}
+
+#[test]
+fn a_moving_actor_keeps_its_yaw_crabwise_where_non_physical_movement_is_allowed() {
+    let r = run("yaw_crabwise", 0, None);
+    let yaw = std::f64::consts::PI / 6.0;
+    // x = 20 m + the distance along the lane; y the lane's centre throughout.
+    for (t, x) in [(0.0, 20.0), (1.0, 30.0), (2.0, 40.0), (4.0, 70.0 + 0.25)] {
+        let ego = r.at(t, "ego");
+        assert!((ego.h - yaw).abs() < H_TOL, "heading {} at {t} s", ego.h);
+        assert!(
+            (ego.x - x).abs() < 1e-6,
+            "x {} at {t} s, expected {x}",
+            ego.x
+        );
+        assert!((ego.y + 5.25).abs() < H_TOL, "y {} at {t} s", ego.y);
+    }
+    assert!((r.at(4.0, "ego").speed - 20.0).abs() < H_TOL);
+}
+
+#[test]
+fn a_moving_actor_with_a_yaw_under_must_be_physical_or_changing_lane_is_an_error() {
+    refused(
+        "err_yaw_crabwise_physical",
+        "found it moving under the default physical_movement(must_be_physical) at",
+        "10:17",
+    );
+    refused(
+        "err_yaw_crabwise_physical",
+        "err_yaw_crabwise_physical.osc:12:9: a vehicle or person moves along its heading",
+        "10:17",
+    );
+    refused(
+        "err_yaw_crabwise_lane",
+        "found it moving sideways from 0.00 s (a crabwise movement keeps to the lane: no lane or offset change)",
+        "8:13",
+    );
 }
