@@ -8,6 +8,7 @@
 //! | `speed(shape: s)`, `speed(v, at: end, shape: s)`, `change_speed(v, shape: s)` | `common_speed_shape` | `change_speed(target, rate_profile, rate_peak)` (§8.8.2.12 Code 100) |
 //! | `acceleration(shape: s)`, `acceleration(a, at: end, shape: s)` | `common_acceleration_shape` | `change_acceleration(target, rate_profile, rate_peak)` (§8.8.2.14 Code 106) |
 //! | `change_lane(n, side, shape: s)` | `common_lateral_shape` | `change_lane(num_of_lanes: n, side, offset: target, rate_profile, rate_peak)` |
+//! | `lane(…, at: end, shape: s)` | `common_lateral_shape` | the same, n lanes to the side where the lane `lane` asks for is, counted at the phase start |
 //! | `lateral(d, measure_by, side, at: end, shape: s)` | `common_lateral_shape` | `follow_lane(offset: o, rate_profile, rate_peak)`, o the offset `lateral` asks for (its `d`, else the shape's target) |
 //!
 //! The target is the modifier's own value when it gives one (§8.9.1.1.4 Code 79), else the
@@ -124,7 +125,7 @@ impl Planner<'_> {
                 args.push(("target".to_string(), target));
                 Action::ChangeAcceleration
             }
-            (ShapeKind::Lateral, ModKind::ChangeLane) => {
+            (ShapeKind::Lateral, ModKind::ChangeLane | ModKind::Lane) => {
                 if let Some(q) = mods
                     .iter()
                     .find(|q| q.kind == ModKind::Lateral && q.at == At::End)
@@ -134,11 +135,24 @@ impl Planner<'_> {
                         format!("expected the offset in the target lane as the target of `{}(…)`'s shape, found lateral(…, at: end) beside it", m.name),
                     ));
                 }
-                if let Some(n) = m.arg("lane") {
-                    args.push(("num_of_lanes".to_string(), n.clone()));
-                }
-                if let Some(s) = m.arg("side") {
-                    args.push(("side".to_string(), s.clone()));
+                if m.kind == ModKind::Lane {
+                    // The lane lane(…) asks for at the end, as so many lanes to a side.
+                    let Some((n, left)) = self.lanes_to(m, slot.target, slot.t0, slot.len)? else {
+                        return Ok(None);
+                    };
+                    args.push(("num_of_lanes".to_string(), num(n as f64)));
+                    let side = Arg {
+                        value: Ok(Val::Enum(if left { "left" } else { "right" }.to_string())),
+                        ..num(0.0)
+                    };
+                    args.push(("side".to_string(), side));
+                } else {
+                    if let Some(n) = m.arg("lane") {
+                        args.push(("num_of_lanes".to_string(), n.clone()));
+                    }
+                    if let Some(s) = m.arg("side") {
+                        args.push(("side".to_string(), s.clone()));
+                    }
                 }
                 args.push(("offset".to_string(), target));
                 Action::ChangeLane
@@ -182,3 +196,42 @@ impl Planner<'_> {
         }
     }
 }
+
+impl Planner<'_> {
+    /// The lane `lane(…, at: end)` of `target` asks for, as (number of lanes, to the left)
+    /// from the lane the actor is in at the phase start `t0` (`None`: it is in it already).
+    /// The target lane is read at the end of a phase `len` long (at its start without a length
+    /// of its own: the shape's change then ends it).
+    fn lanes_to(
+        &self,
+        m: &Modifier,
+        target: &str,
+        t0: Option<f64>,
+        len: Option<f64>,
+    ) -> Result<Option<(i64, bool)>, Error> {
+        let Some(t) = t0 else {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                "expected a phase start the plan knows for lane(…, at: end) with a shape (the lanes to change are counted where the plan has the actor), found one after a run-time condition",
+            ));
+        };
+        let (_, lane) = self.lane_target(m, target, Some(t), len.unwrap_or(0.0))?;
+        let now = self.track(target).lane(t);
+        let s = self.s_at(target, t);
+        let Some(l) = lane.filter(|l| *l != now) else {
+            return Ok(None);
+        };
+        let found = (1..=MAX_LANES)
+            .flat_map(|n| [(n, true), (n, false)])
+            .find(|(n, left)| self.road.beside(now, *left, *n, s) == Some(l));
+        found.map(Some).ok_or_else(|| {
+            m.site.err(
+                K::Unsatisfiable,
+                format!("expected lane {l} beside `{target}`'s lane {now} at s = {s:.2} m, found it on no side"),
+            )
+        })
+    }
+}
+
+/// The most driving lanes one lane change crosses that the planner counts.
+const MAX_LANES: i64 = 16;

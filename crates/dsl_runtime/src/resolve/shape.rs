@@ -62,7 +62,7 @@ fn kind_for(name: &str) -> Option<ShapeKind> {
     match name {
         "speed" | "change_speed" => Some(ShapeKind::Speed),
         "acceleration" => Some(ShapeKind::Acceleration),
-        "lateral" | "change_lane" => Some(ShapeKind::Lateral),
+        "lateral" | "change_lane" | "lane" => Some(ShapeKind::Lateral),
         _ => None,
     }
 }
@@ -78,7 +78,7 @@ pub(crate) fn read(ctx: &Eval<'_>, name: &str, a: &Arg) -> Result<Shape, Error> 
         }
         return Err(a.site.err(
             K::Modifier,
-            format!("expected `{name}(…)` without shape: (oscsim runs the shapes of speed, change_speed, acceleration, lateral and change_lane), found one"),
+            format!("expected `{name}(…)` without shape: (oscsim runs the shapes of speed, change_speed, acceleration, lane, change_lane and lateral), found one"),
         ));
     };
     let want = kind.library_name();

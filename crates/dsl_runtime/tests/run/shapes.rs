@@ -92,6 +92,17 @@ fn a_common_lateral_shape_is_the_lane_change_and_offset_dynamics() {
     assert_eq!(r.at(8.0, "ego").lane, -2);
 }
 
+#[test]
+fn a_common_lateral_shape_on_a_lane_at_the_end_is_that_lane_change() {
+    let r = run("shapes/lane_shape", 0, None);
+    for (t, y) in [(0.0, -8.75), (2.0, -7.0), (4.0, -5.25), (5.0, -5.25)] {
+        close(r.at(t, "ego").y, y, TOL, &format!("y({t})"));
+    }
+    assert_eq!(r.at(4.0, "ego").lane, -2);
+    phase(&r, "do.0", 0.0, 4.0);
+    phase(&r, "do.1", 4.0, 5.0);
+}
+
 fn expect(name: &str, place: &str, words: &[&str]) {
     let e = error(&format!("shapes/{name}"));
     assert!(e.contains(&format!("{name}.osc:{place}")), "{e}");
