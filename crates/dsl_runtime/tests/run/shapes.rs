@@ -103,6 +103,23 @@ fn a_common_lateral_shape_on_a_lane_at_the_end_is_that_lane_change() {
     phase(&r, "do.1", 4.0, 5.0);
 }
 
+#[test]
+fn a_speed_shape_after_a_run_time_condition_starts_from_the_engines_speed() {
+    let r = run("shapes/runtime_speed_shape", 0, None);
+    phase(&r, "do.approach", 0.0, 3.35);
+    phase(&r, "do.slow", 3.35, 5.85);
+    phase(&r, "do.after", 5.85, 6.85);
+    for (t, v) in [
+        (3.35, 20.0),
+        (3.85, 18.0),
+        (4.85, 14.0),
+        (5.85, 10.0),
+        (6.85, 10.0),
+    ] {
+        close(r.at(t, "ego").speed, v, 1e-6, &format!("v({t})"));
+    }
+}
+
 fn expect(name: &str, place: &str, words: &[&str]) {
     let e = error(&format!("shapes/{name}"));
     assert!(e.contains(&format!("{name}.osc:{place}")), "{e}");
