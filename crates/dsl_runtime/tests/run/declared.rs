@@ -63,3 +63,13 @@ fn a_declared_action_with_nothing_to_run_is_an_error_at_the_invocation() {
         "{e}"
     );
 }
+
+#[test]
+fn a_modifier_on_a_declared_action_with_a_do_is_an_error_at_the_modifier() {
+    let e = error("declared/err_action_do_modifier");
+    assert!(e.contains("err_action_do_modifier.osc:14:13"), "{e}");
+    assert!(
+        e.starts_with("expected `until` or `keep` in the with: of an invocation of `vehicle.cruise`, found the modifier `speed` (modifiers apply to the standard library's movement actions, not to a behavior that runs a `do` of its own)"),
+        "{e}"
+    );
+}
