@@ -1,6 +1,8 @@
-//! The roads meeting at a junction of the loaded network, for `roads_follow_in_junction`'s
-//! `clockwise_count` and `number_of_roads` (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2.3; OpenDRIVE
-//! 1.8 §12 junctions, §8.3 road linkage).
+//! Ways through a junction of the loaded network, for `roads_follow_in_junction` (ASAM
+//! OpenSCENARIO DSL 2.1 §8.12.2.2.3; OpenDRIVE 1.8 §12 junctions, §8.3 road linkage, §11.6
+//! lane linkage): the connecting lane from one lane to another, the turn it makes ([`Turn`],
+//! from the headings), and the roads meeting at the junction for `clockwise_count` and
+//! `number_of_roads`.
 //!
 //! The standard leaves open how roads are counted round a junction. oscsim's reading: the
 //! roads of a junction are the roads outside it whose start or end links to it (its incoming
@@ -11,7 +13,7 @@
 
 use std::f64::consts::TAU;
 
-use opendrive::{ContactPoint, ElementType, RoadNetwork};
+use opendrive::{ContactPoint, Direction, ElementType, LaneHandle, RoadNetwork};
 
 /// The roads outside junction `id` linked to it (indices into `net.roads()`, in the network's
 /// order) with the angle (rad) of their linked end round the junction.
@@ -82,6 +84,83 @@ pub(super) fn clockwise_count(net: &RoadNetwork, id: &str, from: usize, to: usiz
     u32::try_from(before + 1).ok()
 }
 
+/// The way a path through a junction turns (§8.12 `junction_direction`), from the change of
+/// heading between the lane into the junction at its end and the lane out at its start, both
+/// in their driving directions: within ±45° straight, from 45° to 150° left, from −45° to −150°
+/// right, beyond ±150° a U-turn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Turn {
+    /// `straight`.
+    Straight,
+    /// `left`.
+    Left,
+    /// `right`.
+    Right,
+    /// `u_turn`.
+    Back,
+}
+
+impl Turn {
+    pub(super) fn named(name: &str) -> Option<Self> {
+        match name {
+            "straight" => Some(Self::Straight),
+            "left" => Some(Self::Left),
+            "right" => Some(Self::Right),
+            "u_turn" => Some(Self::Back),
+            _ => None,
+        }
+    }
+
+    /// The turn of a change of heading `d` (rad, wrapped to (−π, π]).
+    pub(super) fn of(d: f64) -> Self {
+        let deg = d.to_degrees();
+        if deg.abs() <= 45.0 {
+            Self::Straight
+        } else if deg.abs() >= 150.0 {
+            Self::Back
+        } else if deg > 0.0 {
+            Self::Left
+        } else {
+            Self::Right
+        }
+    }
+}
+
+/// The connecting lane of a junction that leads from lane `from` to lane `to`, if one does.
+pub(super) fn connecting(
+    net: &RoadNetwork,
+    from: LaneHandle,
+    to: LaneHandle,
+) -> Option<LaneHandle> {
+    net.successors(from).into_iter().find(|c| {
+        net.roads()[c.road as usize].junction.is_some() && net.successors(*c).contains(&to)
+    })
+}
+
+/// The heading of lane `h` in its driving direction at its start (`start`) or end (rad).
+fn heading(net: &RoadNetwork, h: LaneHandle, start: bool) -> Option<f64> {
+    let r = &net.roads()[h.road as usize];
+    let k = h.section as usize;
+    let s0 = r.lane_sections.get(k)?.s;
+    let s1 = r.lane_sections.get(k + 1).map_or(r.length, |n| n.s);
+    let forward = net.driving_direction(h) == Direction::Forward;
+    let s = if start == forward { s0 } else { s1 };
+    let psi = r.heading(s).ok()?;
+    Some(if forward {
+        psi
+    } else {
+        psi + std::f64::consts::PI
+    })
+}
+
+/// The change of heading from the end of lane `from` to the start of lane `to`, in (−π, π].
+pub(super) fn heading_change(net: &RoadNetwork, from: LaneHandle, to: LaneHandle) -> Option<f64> {
+    use std::f64::consts::{PI, TAU};
+    let d = heading(net, to, true)? - heading(net, from, false)?;
+    let w = d.rem_euclid(TAU);
+    Some(if w > PI { w - TAU } else { w })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -107,5 +186,32 @@ mod tests {
         // A road not at the junction, a junction with no roads.
         assert_eq!(clockwise_count(&net, "1", r0, at("1")), None);
         assert_eq!(number_of_roads(&net, "9"), 0);
+    }
+
+    #[test]
+    fn turns_through_a_junction_are_read_from_the_headings() {
+        // junction_trippel_twoway0.xodr: road 0 at heading 0 into junction 1; out of it road 2
+        // at 0.3 rad, road 4 at 4.768185307 rad (= -1.515 rad), road 6 at 0 (the planViews).
+        let net = net("junction_trippel_twoway0.xodr");
+        let lane = |id: &str, lane| LaneHandle {
+            road: net.roads().iter().position(|r| r.id == id).expect("road") as u32,
+            section: 0,
+            lane,
+        };
+        let from = lane("0", -1);
+        for (to, want, turn) in [
+            ("2", 0.3, Turn::Straight),
+            ("4", 4.768185307179586 - std::f64::consts::TAU, Turn::Right),
+            ("6", 0.0, Turn::Straight),
+        ] {
+            let to = lane(to, -1);
+            assert!(connecting(&net, from, to).is_some());
+            let d = heading_change(&net, from, to).expect("headings");
+            assert!((d - want).abs() < 1e-9, "{d} vs {want}");
+            assert_eq!(Turn::of(d), turn);
+        }
+        // Into road 0 from road 4's lane 1 (driven in -s): from 1.627 rad to pi, a left turn.
+        let d = heading_change(&net, lane("4", 1), lane("0", 1)).expect("headings");
+        assert_eq!(Turn::of(d), Turn::Left, "{d}");
     }
 }

@@ -12,7 +12,7 @@
 //! | `routes_are_in_sequence(preceding, succeeding, road)` on lane fields | binding | `succeeding` is a successor of `preceding` in its driving direction (the network's lane links, through lane sections and road links); with `road`, both on the plan's roads |
 //! | `routes_are_in_sequence(preceding, succeeding)` on two `road` fields | binding | over two lanes of the modifier's own, driven in +s on the plan's roads, of one id: the second's road is another the first leads onto, directly or through a connecting lane ([`MapLane::whole_road`]); without named routes the plan drives them (`junction_roads`) |
 //! | `routes_are_opposite(route1, route2, containing_road, lateral_overlap)` on lane fields | binding | both in one lane section, driven in opposite directions; with `containing_road`, on the plan's roads; `lateral_overlap` `never` (two lanes never share their width) or none |
-//! | `roads_follow_in_junction(in_lane, out_lane, direction)` on lane fields | binding | `out_lane` reached from `in_lane` through one connecting lane of a junction, turning the way `direction` names ([`Turn`]); without named routes the plan drives that way (`junction_roads`) |
+//! | `roads_follow_in_junction(in_lane, out_lane, direction)` on lane fields | binding | `out_lane` reached from `in_lane` through one connecting lane of a junction, turning the way `direction` names (`map_junctions::Turn`); without named routes the plan drives that way (`junction_roads`) |
 //! | `roads_follow_in_junction(junction, in_road, out_road, direction, clockwise_count, number_of_roads, resulting_route)` | binding | as on lane fields, over two lanes of the modifier's own when `in_lane`/`out_lane` are not given; `junction` is the connecting lane's junction, `in_road`/`out_road` the lanes' roads (one field one road across the modifiers), `clockwise_count` and `number_of_roads` counted by `map_junctions`; the way through on the plan's roads (without named routes the plan drives it) |
 //! | `routes_overlap(r1, r2, kind)` | check | both are the plan's roads, so they overlap as `equal`: `equal` and `any` hold, another kind is an error |
 //!
@@ -30,7 +30,7 @@ use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{JunctionRoads, MapKind, MapModifier};
 use crate::road::PlanRoad;
 
-use super::map_junctions;
+use super::map_junctions::{self, connecting, heading_change, Turn};
 
 /// The most assignments of lane fields kept.
 const MAX_SOLUTIONS: usize = 100_000;
@@ -394,48 +394,6 @@ enum Rel {
     NextRoad(usize, usize),
 }
 
-/// The way a path through a junction turns (§8.12 `junction_direction`), from the change of
-/// heading between the lane into the junction at its end and the lane out at its start, both
-/// in their driving directions: within ±45° straight, from 45° to 150° left, from −45° to −150°
-/// right, beyond ±150° a U-turn.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum Turn {
-    /// `straight`.
-    Straight,
-    /// `left`.
-    Left,
-    /// `right`.
-    Right,
-    /// `u_turn`.
-    Back,
-}
-
-impl Turn {
-    fn named(name: &str) -> Option<Self> {
-        match name {
-            "straight" => Some(Self::Straight),
-            "left" => Some(Self::Left),
-            "right" => Some(Self::Right),
-            "u_turn" => Some(Self::Back),
-            _ => None,
-        }
-    }
-
-    /// The turn of a change of heading `d` (rad, wrapped to (−π, π]).
-    fn of(d: f64) -> Self {
-        let deg = d.to_degrees();
-        if deg.abs() <= 45.0 {
-            Self::Straight
-        } else if deg.abs() >= 150.0 {
-            Self::Back
-        } else if deg > 0.0 {
-            Self::Left
-        } else {
-            Self::Right
-        }
-    }
-}
-
 impl Rel {
     /// Whether it holds for the assignment `a` (`None` while a field is unassigned).
     fn holds(self, net: &RoadNetwork, a: &[LaneHandle]) -> Option<bool> {
@@ -555,37 +513,6 @@ fn search(
         }
         partial.pop();
     }
-}
-
-/// The connecting lane of a junction that leads from lane `from` to lane `to`, if one does.
-fn connecting(net: &RoadNetwork, from: LaneHandle, to: LaneHandle) -> Option<LaneHandle> {
-    net.successors(from).into_iter().find(|c| {
-        net.roads()[c.road as usize].junction.is_some() && net.successors(*c).contains(&to)
-    })
-}
-
-/// The heading of lane `h` in its driving direction at its start (`start`) or end (rad).
-fn heading(net: &RoadNetwork, h: LaneHandle, start: bool) -> Option<f64> {
-    let r = &net.roads()[h.road as usize];
-    let k = h.section as usize;
-    let s0 = r.lane_sections.get(k)?.s;
-    let s1 = r.lane_sections.get(k + 1).map_or(r.length, |n| n.s);
-    let forward = net.driving_direction(h) == Direction::Forward;
-    let s = if start == forward { s0 } else { s1 };
-    let psi = r.heading(s).ok()?;
-    Some(if forward {
-        psi
-    } else {
-        psi + std::f64::consts::PI
-    })
-}
-
-/// The change of heading from the end of lane `from` to the start of lane `to`, in (−π, π].
-fn heading_change(net: &RoadNetwork, from: LaneHandle, to: LaneHandle) -> Option<f64> {
-    use std::f64::consts::{PI, TAU};
-    let d = heading(net, to, true)? - heading(net, from, false)?;
-    let w = d.rem_euclid(TAU);
-    Some(if w > PI { w - TAU } else { w })
 }
 
 /// The roads of a way through a junction the map's modifiers ask for
@@ -719,32 +646,5 @@ pub(super) mod tests {
         assert_eq!(beside(&drop, h(-1), false, 2), Some(h(-3)));
         assert_eq!(beside(&drop, h(-3), false, 1), None);
         assert_eq!(beside(&drop, h(1), true, 1), None);
-    }
-
-    #[test]
-    fn turns_through_a_junction_are_read_from_the_headings() {
-        // junction_trippel_twoway0.xodr: road 0 at heading 0 into junction 1; out of it road 2
-        // at 0.3 rad, road 4 at 4.768185307 rad (= -1.515 rad), road 6 at 0 (the planViews).
-        let net = net("junction_trippel_twoway0.xodr");
-        let lane = |id: &str, lane| LaneHandle {
-            road: net.roads().iter().position(|r| r.id == id).expect("road") as u32,
-            section: 0,
-            lane,
-        };
-        let from = lane("0", -1);
-        for (to, want, turn) in [
-            ("2", 0.3, Turn::Straight),
-            ("4", 4.768185307179586 - std::f64::consts::TAU, Turn::Right),
-            ("6", 0.0, Turn::Straight),
-        ] {
-            let to = lane(to, -1);
-            assert!(connecting(&net, from, to).is_some());
-            let d = heading_change(&net, from, to).expect("headings");
-            assert!((d - want).abs() < 1e-9, "{d} vs {want}");
-            assert_eq!(Turn::of(d), turn);
-        }
-        // Into road 0 from road 4's lane 1 (driven in -s): from 1.627 rad to pi, a left turn.
-        let d = heading_change(&net, lane("4", 1), lane("0", 1)).expect("headings");
-        assert_eq!(Turn::of(d), Turn::Left, "{d}");
     }
 }

@@ -63,7 +63,7 @@
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
 //! | `map_checks` | the map's modifiers over route fields checked against the plan's roads |
-//! | `map_junctions` | the roads meeting at a junction, counted clockwise (`roads_follow_in_junction`) |
+//! | `map_junctions` | ways through a junction: the connecting lane, the turn, the roads meeting there counted clockwise (`roads_follow_in_junction`) |
 //! | `map_lanes` | the map's modifiers against the loaded network: lane fields bound, the plan's roads checked |
 //! | `lane_fields` | the lane a `lane` field names for `change_lane`/`follow_lane(target: l)`: bound or drawn once |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
