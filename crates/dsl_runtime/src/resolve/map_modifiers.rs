@@ -403,9 +403,9 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
         other => {
             let why = match other {
                 "routes_are_in_sequence" => "on route fields other than two roads (a free route, compound_route or lane_section field is the roads the plan drives on, one route, so none follows another; lane and road fields are bound); name routes in sequence with map.create_route([…])",
-                "crossing_connects" => "(crossings are not bound to the map)",
+                "crossing_connects" => "(a crossing runs across the road, its s from start_lane's centreline to end_lane's, while the plan's routes run along the roads' s and lane fields range over driving lanes: crossings are not bound to the map)",
                 "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; two roads are not bound either, since every actor drives the plan's one chain of roads in +s and an actor along the opposite road would leave it; lane fields are bound)",
-                _ => "(traffic light control files are not read)",
+                _ => "(the standard names no format for the file of traffic light control cycles; oscsim reads none: give the phases as TrafficSignalControllers of an OpenSCENARIO 1.x scenario)",
             };
             return Err(site.err(
                 K::Unsupported,

@@ -234,6 +234,18 @@ fn modifiers_of_the_scenario_the_runtime_does_not_run_say_why() {
         "8:5",
     );
     refused(
+        "err_map_crossing",
+        "sidewalk",
+        "found crossing_connects(…) (a crossing runs across the road, its s from start_lane's centreline to end_lane's, while the plan's routes run along the roads' s",
+        "8:5",
+    );
+    refused(
+        "err_map_traffic_lights",
+        "straight",
+        "found set_traffic_lights_control_file(…) (the standard names no format for the file of traffic light control cycles; oscsim reads none",
+        "6:5",
+    );
+    refused(
         "err_scenario_modifier",
         "straight",
         "modifier `speed` needs an actor to apply to",
