@@ -27,6 +27,7 @@
 //! | `trigger` | the 1.x conditions triggers are built from |
 //! | `plan` | stage 2: phase timing and motion planning |
 //! | `lower` | stage 3: the plan as a 1.x Storyboard |
+//! | `traffic_lights` | `map.set_traffic_lights_control_file`: the 1.x traffic signal controllers of a file, checked against the map |
 //!
 //! Each module uses only those above it in this table (and `plan`'s and `resolve`'s own tables
 //! order their modules the same way): no module cycles. This crate depends on `dsl` and
@@ -40,6 +41,7 @@ mod plan;
 mod resolve;
 mod road;
 mod track;
+mod traffic_lights;
 mod trigger;
 
 use std::path::Path;
@@ -305,7 +307,14 @@ pub fn lower_program(
             calls.push(r);
         }
     }
-    let scenario = lower::lower(&plan, &resolved.name, osc, road_path);
+    let mut scenario = lower::lower(&plan, &resolved.name, osc, road_path);
+    for m in &resolved.map {
+        if let resolve::MapKind::TrafficLightControl(file) = &m.kind {
+            let found = traffic_lights::controllers(file, road, &m.site)?;
+            let signals = &mut scenario.road_network.traffic_signal_controllers;
+            signals.extend(found);
+        }
+    }
     Ok(Lowered {
         scenario,
         phases: info,

@@ -13,9 +13,10 @@
 //! lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
 //! plan's roads, and `routes_are_in_sequence` on two `road` fields, bound to two roads of the
 //! plan, one leading onto the other. The others (`routes_are_in_sequence` on other route
-//! fields, `routes_are_opposite` on route fields, `crossing_connects`, `set_traffic_lights_control_file`, and
+//! fields, `routes_are_opposite` on route fields, `crossing_connects`, and
 //! `roads_follow_in_junction`'s `junction_route`) are errors at the modifier saying why;
-//! `set_map_file` names the network (`crate::map_file`).
+//! `set_map_file` names the network (`crate::map_file`), `set_traffic_lights_control_file` the
+//! traffic signal controllers (`crate::traffic_lights`).
 
 use dsl::semantics::hir::ModifierApp;
 use dsl::Value;
@@ -117,6 +118,9 @@ pub(crate) enum MapKind {
         /// The junction and road arguments.
         roads: JunctionRoads,
     },
+    /// §8.12.2.2.12: the file of traffic light control cycles (resolved against the `.osc`
+    /// file's folder; `crate::traffic_lights`).
+    TrafficLightControl(std::path::PathBuf),
     /// §8.12.2.2.4: the routes overlap longitudinally in the way `kind` names.
     RoutesOverlap {
         /// The first route field.
@@ -186,6 +190,29 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             K::Modifier,
             format!("expected {name}(…) applied to a map field (m: map; m.{name}(…)), found it applied to something else"),
         ));
+    }
+    if name == "set_traffic_lights_control_file" {
+        use dsl::semantics::hir::ExprKind;
+        let file = app
+            .args
+            .iter()
+            .find_map(|a| match (&a.name, &a.value.kind) {
+                (None, ExprKind::Str(f)) => Some(f.clone()),
+                (Some(n), ExprKind::Str(f)) if n.text == "file" => Some(f.clone()),
+                _ => None,
+            });
+        let Some(file) = file else {
+            return Err(site.err(
+                K::Argument,
+                "expected the control file as a string (set_traffic_lights_control_file(\"signals.xosc\")), found none".to_string(),
+            ));
+        };
+        let dir = site.pos.file.parent().unwrap_or(std::path::Path::new(""));
+        return Ok(MapModifier {
+            kind: MapKind::TrafficLightControl(dir.join(file)),
+            name: name.to_string(),
+            site,
+        });
     }
     let params = super::modifier::params(ctx, name);
     let args: Args = bind(&app.args, &params)
@@ -403,13 +430,12 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
         other => {
             let why = match other {
                 "routes_are_in_sequence" => "on route fields other than two roads (a free route, compound_route or lane_section field is the roads the plan drives on, one route, so none follows another; lane and road fields are bound); name routes in sequence with map.create_route([…])",
-                "crossing_connects" => "(a crossing runs across the road, its s from start_lane's centreline to end_lane's, while the plan's routes run along the roads' s and lane fields range over driving lanes: crossings are not bound to the map)",
                 "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; two roads are not bound either, since every actor drives the plan's one chain of roads in +s and an actor along the opposite road would leave it; lane fields are bound)",
-                _ => "(the standard names no format for the file of traffic light control cycles; oscsim reads none: give the phases as TrafficSignalControllers of an OpenSCENARIO 1.x scenario)",
+                _ => "(a crossing runs across the road, its s from start_lane's centreline to end_lane's, while the plan's routes run along the roads' s and lane fields range over driving lanes: crossings are not bound to the map)",
             };
             return Err(site.err(
                 K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence on lane or road fields, routes_are_opposite on lane fields, roads_follow_in_junction), found {other}(…) {why}"),
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence on lane or road fields, routes_are_opposite on lane fields, roads_follow_in_junction, set_traffic_lights_control_file), found {other}(…) {why}"),
             ));
         }
     };

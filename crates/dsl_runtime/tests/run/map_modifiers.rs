@@ -127,6 +127,44 @@ fn roads_in_sequence_are_bound_and_driven_from_their_starts() {
 }
 
 #[test]
+fn a_traffic_lights_control_file_cycles_the_maps_signals() {
+    // map_traffic_lights.osc: L go [0, 4) s, attention [4, 5) s, stop [5, 10) s, then again.
+    let lowered = lower_at(
+        "tests/scenarios/map_traffic_lights.osc",
+        "tests/roads/red_light.xodr",
+        0,
+        None,
+    )
+    .expect("plans");
+    let controllers = &lowered.scenario.road_network.traffic_signal_controllers;
+    assert_eq!(controllers.len(), 1);
+    assert_eq!(controllers[0].name, "C");
+    let durations: Vec<f64> = controllers[0].phases.iter().map(|p| p.duration).collect();
+    assert_eq!(durations, [4.0, 1.0, 5.0]);
+    let s = &lowered.scenario;
+    let network = engine::load::road_network(s).expect("road network");
+    let mut engine = engine::Engine::new(s, network, crate::support::config()).expect("engine");
+    let mut seen = Vec::new();
+    for (t, want) in [
+        (2.0, "off;off;on"),
+        (4.5, "off;on;off"),
+        (7.0, "on;off;off"),
+        (12.0, "off;off;on"),
+    ] {
+        while engine.time() < t - 1e-9 {
+            engine.step(&mut (), &mut ()).expect("steps");
+        }
+        let states = engine.signal_states();
+        let l = states
+            .iter()
+            .find(|(id, _)| id == "L")
+            .map(|(_, v)| v.as_str());
+        seen.push((t, l.map(str::to_string)));
+        assert_eq!(l, Some(want), "at {t} s: {seen:?}");
+    }
+}
+
+#[test]
 fn map_checks_that_fail_name_what_the_map_has() {
     refused(
         "err_map_number_of_lanes",
@@ -234,16 +272,22 @@ fn modifiers_of_the_scenario_the_runtime_does_not_run_say_why() {
         "8:5",
     );
     refused(
+        "err_map_traffic_lights",
+        "red_light",
+        "red_light_control_unknown.xosc in the map (signals L), found `M` in phase `stop` of controller `C` at ",
+        "6:5",
+    );
+    refused(
+        "err_map_traffic_lights_missing",
+        "red_light",
+        "expected an OpenSCENARIO 1.x file of traffic signal controllers for set_traffic_lights_control_file, found one that does not load: ",
+        "6:5",
+    );
+    refused(
         "err_map_crossing",
         "sidewalk",
         "found crossing_connects(…) (a crossing runs across the road, its s from start_lane's centreline to end_lane's, while the plan's routes run along the roads' s",
         "8:5",
-    );
-    refused(
-        "err_map_traffic_lights",
-        "straight",
-        "found set_traffic_lights_control_file(…) (the standard names no format for the file of traffic light control cycles; oscsim reads none",
-        "6:5",
     );
     refused(
         "err_scenario_modifier",

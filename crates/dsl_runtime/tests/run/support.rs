@@ -135,6 +135,15 @@ pub fn run_on(name: &str, road: &str) -> Run {
     run_scenario(name, &lowered.scenario, 0, None)
 }
 
+/// The engine's configuration of these runs (step [`DT`]).
+pub fn config() -> EngineConfig {
+    EngineConfig {
+        dt: DT,
+        max_time: 120.0,
+        ..EngineConfig::default()
+    }
+}
+
 /// Runs a scenario model.
 pub fn run_scenario(
     name: &str,
