@@ -2,7 +2,7 @@
 //! and units, enumerations, compound types with their fields and methods after inheritance and
 //! `extend` (ASAM OpenSCENARIO DSL 2.1 §7.3 types, §7.3.7 compound types, §7.3.8 extension).
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use super::diagnostic::{Diagnostic, DiagnosticKind};
 use super::hir::{CompoundKind, Expr, Keep, Member, Name, Span};
@@ -122,6 +122,12 @@ pub struct Model {
     pub top: Vec<Member>,
     /// Files `0..library_files` are the standard library.
     pub library_files: u32,
+    /// The spans of the bare names the checker resolved to a member of the enum their place
+    /// expects although a field, global or local of another type has the same name in scope
+    /// (`track: projected` beside an actor `projected`): where an enum is expected its member
+    /// wins. The runtime evaluates expressions without their expected type, so it reads a name
+    /// at one of these spans as that member, never as the field.
+    pub enum_member_names: HashSet<Span>,
 }
 
 impl Model {

@@ -357,6 +357,7 @@ pub fn check_source_with(
     declarations::check(&model, &mut diags);
     let checked = check_model(&model);
     diags.extend(checked.diags);
+    model.enum_member_names = checked.enum_member_names;
     // Report in source order, whichever pass found them.
     diags.sort_by_key(|d| (d.span.file, d.span.start));
     // A name the namespace pass explained is not reported again as unknown by the checker.

@@ -223,6 +223,11 @@ impl<'a> Eval<'a> {
                 Val::Num(lo + (hi - lo) * self.draws.borrow_mut().uniform())
             }
             ExprKind::EnumValue(_, m) => Val::Enum(m.text.clone()),
+            // Where the checker found an enum member expected, the member wins over a field of
+            // the same name (`track: projected` beside an actor `projected`).
+            ExprKind::Name(n) if self.model.enum_member_names.contains(&e.span) => {
+                Val::Enum(n.clone())
+            }
             ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
                 let path = self
                     .path_of(e)

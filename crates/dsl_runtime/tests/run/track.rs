@@ -77,6 +77,21 @@ fn track_projected_without_a_reference_is_an_error() {
     );
 }
 
+/// track_projected_shadowed.osc: the actors named `projected` and `actual` do not hide the
+/// members of `track` where a track is expected (the checker's rule: an expected enum's member
+/// wins over a field of another type), so the run is track_projected.osc's: 130 m (projected)
+/// and 120 m (actual) at 5 s, 25 and 20 m/s half way (by hand in track_projected.osc).
+#[test]
+fn an_actor_named_like_a_track_member_does_not_hide_it() {
+    let r = run("track_projected_shadowed", 0, None);
+    for (who, v3, s5) in [("projected", 25.0, 130.0), ("actual", 20.0, 120.0)] {
+        let v = r.at(3.0, who).speed;
+        assert!((v - v3).abs() < V_TOL, "{who} v(3) = {v}");
+        let s = r.at(5.0, who).s;
+        assert!((s - s5).abs() < S_TOL, "{who} s(5) = {s}");
+    }
+}
+
 /// track_projected_lanes.osc: npc changes lanes -3 -> -2 over 1-5 s; lanes and lateral
 /// positions relative to it at the phase end, actual and projected (the comment, by hand).
 #[test]

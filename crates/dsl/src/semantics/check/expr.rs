@@ -294,6 +294,8 @@ impl Cx<'_> {
             };
         }
         if let Some((id, i)) = member_of_expected {
+            // Recorded for the runtime, which evaluates the name without the expected type.
+            self.out.enum_member_names.insert(span);
             return TExpr {
                 kind: TKind::Member(id, i),
                 ty: Ty::Enum(id),

@@ -152,6 +152,9 @@ pub struct Checked {
     pub templates: Vec<Template>,
     /// Invocations of behaviors with a `do`, in source order.
     pub invocations: Vec<Invocation>,
+    /// The names resolved to a member of the enum their place expects (see
+    /// [`Model::enum_member_names`]).
+    pub enum_member_names: std::collections::HashSet<Span>,
 }
 
 /// A name in scope besides fields and globals: a `for` element, `it`, a method parameter.
