@@ -1,6 +1,7 @@
 //! The written map of the workspace checked against the code: `docs/architecture.md`'s crate
 //! table and dependency rules against every `Cargo.toml`, each crate's module table against
-//! its real top-level modules, and the `use` graph between those modules, for cycles.
+//! its real top-level modules, and the `use` graph between the modules of each folder (the
+//! crate root and every module that declares modules), for cycles.
 //!
 //! The checks themselves are the test `tests/architecture.rs` (part of
 //! `cargo test --workspace`); this library only reads: manifests, sources and Markdown
@@ -10,7 +11,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `manifest` | the workspace's members and each crate's dependencies from its `Cargo.toml` |
-//! | `modules` | a crate's top-level modules and which of them each one uses (`crate::`, `super::`, re-exports of the crate root) |
+//! | `modules` | a crate's module tree and, in each folder (the root and every module that declares modules), which of its modules use each other (`crate::`, `super::`, `self::`, re-exports) |
 //! | `graph` | cycles of a module graph: strongly connected components and two-way pairs |
 //! | `tables` | Markdown tables in a document or a crate's `//!` doc, and the module names a table lists |
 #![forbid(unsafe_code)]
@@ -23,5 +24,5 @@ mod tables;
 
 pub use graph::{cycles, Cycle};
 pub use manifest::{Dependency, DependencyKind, Manifest, Workspace};
-pub use modules::{crate_modules, CrateModules};
+pub use modules::{crate_modules, module_folders, CrateModules};
 pub use tables::{backticked, crate_doc, markdown_tables, module_paths, Table};

@@ -1,57 +1,170 @@
-//! A crate's top-level modules and which of them each one uses (The Rust Reference, "Paths":
-//! `crate::`, `super::`, and `use` trees with braces).
+//! A crate's module tree and which sibling modules use each other, at every depth (The Rust
+//! Reference, "Modules" and "Paths": `crate::`, `super::`, `self::`, and `use` trees with
+//! braces).
 //!
-//! A top-level module is one the crate root (`src/lib.rs` or `src/main.rs`) declares as
-//! `mod NAME;`; its files are `src/NAME.rs` and every `.rs` file under `src/NAME/`. Module
-//! `a` uses module `b` when a file of `a` names a path that starts at `b`: `crate::b…`,
-//! `super::…` climbing out of `a` to the root and down into `b`, or an item the root
-//! re-exports from `b` (`crate::Engine` when the root has `pub use runtime::Engine`). Paths
-//! inside inline modules (`mod tests { … }`) and macro calls count too; `$crate` does not.
+//! The tree is read from the `mod NAME;` declarations: the root (`src/lib.rs` or
+//! `src/main.rs`) declares the top-level modules; module `a::b` is `src/a/b.rs` or
+//! `src/a/b/mod.rs`, and the modules it declares are in `src/a/b/`. Every module that
+//! declares file modules is a *folder* (the root is the folder `[]`), and its graph has one
+//! node per module it declares.
+//!
+//! Each path in a file that starts at `crate::`, `self::` or `super::` is resolved to the
+//! deepest module it names, following the re-exports of each folder's own file (`crate::Engine`
+//! when the root has `pub use runtime::Engine` names `runtime`). A path written in module `P`
+//! that names module `M` is a use between siblings of their deepest common folder `C`:
+//! `P`'s and `M`'s next segments below `C`, when both are modules `C` declares and differ.
+//! So `use super::y` in `a/x.rs` is `x → y` in folder `a`, and `use crate::b::z` there is
+//! `a → b` in the root. A parent using its own child is no edge (nothing can cycle through
+//! it without a child naming the parent's sibling). Paths inside inline modules
+//! (`mod tests { … }`) and macro calls count; `$crate` and plain relative paths (`use child::…`,
+//! which can only go down) do not.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::str::FromStr;
 
 use proc_macro2::{Delimiter, Spacing, TokenStream, TokenTree};
 
-/// The top-level modules of a crate and the uses between them.
+/// The modules one folder declares and the uses between them.
 #[derive(Debug, Clone, Default, PartialEq, Eq)]
 pub struct CrateModules {
-    /// Every top-level module, by name.
+    /// The folder's path from the crate root (empty for the root itself).
+    pub folder: Vec<String>,
+    /// Every module the folder declares, by name.
     pub modules: BTreeSet<String>,
-    /// `(a, b)`: module `a` uses module `b` (never `a == b`).
+    /// `(a, b)`: module `a` (or one below it) uses module `b` (or one below it); never `a == b`.
     pub edges: BTreeSet<(String, String)>,
 }
 
-/// The modules of the crate whose sources are in `src` (holding `lib.rs` or `main.rs`).
+/// The top-level modules of the crate whose sources are in `src` (holding `lib.rs` or
+/// `main.rs`) and the uses between them.
 pub fn crate_modules(src: &Path) -> Result<CrateModules, String> {
+    let mut folders = module_folders(src)?;
+    // The root is always the first folder (`[]` sorts first).
+    Ok(folders.remove(0))
+}
+
+/// Every folder of the crate in `src`, the root first, then by path: the modules each
+/// declares and the uses between them.
+pub fn module_folders(src: &Path) -> Result<Vec<CrateModules>, String> {
     let root_file = ["lib.rs", "main.rs"]
         .iter()
         .map(|f| src.join(f))
         .find(|p| p.is_file())
         .ok_or_else(|| format!("expected lib.rs or main.rs in {}", src.display()))?;
-    let root = tokens(&root_file)?;
-    let modules = declared_modules(&root);
-    let reexports = reexports(&root, &modules);
-    let mut edges = BTreeSet::new();
-    for module in &modules {
-        for (file, path) in module_files(src, module)? {
-            let mut used = BTreeSet::new();
-            scan(tokens(&file)?, &path, &mut used);
-            for name in used {
-                let target = if modules.contains(&name) {
-                    Some(&name)
-                } else {
-                    reexports.get(&name)
-                };
-                if let Some(target) = target.filter(|t| *t != module) {
-                    edges.insert((module.clone(), target.clone()));
+    let mut tree = BTreeMap::new();
+    let mut files = Vec::new();
+    read_module(src, &root_file, Vec::new(), &mut tree, &mut files)?;
+    let mut folders: BTreeMap<Vec<String>, CrateModules> = tree
+        .iter()
+        .filter(|(_, m)| !m.children.is_empty())
+        .map(|(path, m)| {
+            let folder = CrateModules {
+                folder: path.clone(),
+                modules: m.children.clone(),
+                edges: BTreeSet::new(),
+            };
+            (path.clone(), folder)
+        })
+        .collect();
+    for (stream, here) in files {
+        let mut paths = Vec::new();
+        scan(stream, &here, &mut paths);
+        for p in paths {
+            let target = resolve(&tree, &p);
+            if let Some((folder, a, b)) = sibling_use(&here, &target) {
+                if let Some(f) = folders.get_mut(&folder) {
+                    if f.modules.contains(&a) && f.modules.contains(&b) {
+                        f.edges.insert((a, b));
+                    }
                 }
             }
         }
     }
-    Ok(CrateModules { modules, edges })
+    Ok(folders.into_values().collect())
+}
+
+/// One module of the tree: the file modules it declares and the names its own file brings
+/// in from them with `use`.
+#[derive(Default)]
+struct Module {
+    children: BTreeSet<String>,
+    reexports: BTreeMap<String, String>,
+}
+
+/// Reads module `path` from `file` and, recursively, the modules it declares (in `dir`).
+fn read_module(
+    dir: &Path,
+    file: &Path,
+    path: Vec<String>,
+    tree: &mut BTreeMap<Vec<String>, Module>,
+    files: &mut Vec<(TokenStream, Vec<String>)>,
+) -> Result<(), String> {
+    let stream = tokens(file)?;
+    let declared = declared_modules(&stream);
+    let children: BTreeSet<String> = declared.keys().cloned().collect();
+    let reexports = reexports(&stream, &children);
+    for (c, attribute) in &declared {
+        let (flat, nested) = (dir.join(format!("{c}.rs")), dir.join(c).join("mod.rs"));
+        // `#[path]` on a file module is relative to the directory of the file declaring it.
+        let by_attribute = attribute
+            .as_ref()
+            .and_then(|a| Some(file.parent()?.join(a)));
+        let child_file = if let Some(f) = by_attribute {
+            f
+        } else if flat.is_file() {
+            flat
+        } else if nested.is_file() {
+            nested
+        } else {
+            return Err(format!(
+                "expected {c}.rs or {c}/mod.rs in {} (declared as `mod {c};`)",
+                dir.display()
+            ));
+        };
+        let mut child = path.clone();
+        child.push(c.clone());
+        read_module(&dir.join(c), &child_file, child, tree, files)?;
+    }
+    tree.insert(
+        path.clone(),
+        Module {
+            children,
+            reexports,
+        },
+    );
+    files.push((stream, path));
+    Ok(())
+}
+
+/// The deepest module an absolute path names: down through declared modules and the
+/// re-exports of each module's file (a re-exported name is looked up again in the module it
+/// comes from, at most a few times).
+fn resolve(tree: &BTreeMap<Vec<String>, Module>, path: &[String]) -> Vec<String> {
+    let mut at: Vec<String> = Vec::new();
+    let mut i = 0;
+    let mut hops = 0;
+    while let (Some(seg), Some(m)) = (path.get(i), tree.get(&at)) {
+        if m.children.contains(seg) {
+            at.push(seg.clone());
+            i += 1;
+        } else if let Some(c) = m.reexports.get(seg).filter(|_| hops < 8) {
+            at.push(c.clone());
+            hops += 1;
+        } else {
+            break;
+        }
+    }
+    at
+}
+
+/// The folder and the two of its modules that a path written in module `here` naming module
+/// `target` joins, when it joins two different siblings.
+fn sibling_use(here: &[String], target: &[String]) -> Option<(Vec<String>, String, String)> {
+    let common = here.iter().zip(target).take_while(|(a, b)| a == b).count();
+    let (a, b) = (here.get(common)?, target.get(common)?);
+    Some((here[..common].to_vec(), a.clone(), b.clone()))
 }
 
 fn tokens(file: &Path) -> Result<TokenStream, String> {
@@ -59,26 +172,62 @@ fn tokens(file: &Path) -> Result<TokenStream, String> {
     TokenStream::from_str(&text).map_err(|e| format!("{}: {e}", file.display()))
 }
 
-/// The `mod NAME;` declarations of the crate root (file modules; inline ones are not files).
-fn declared_modules(root: &TokenStream) -> BTreeSet<String> {
-    let t: Vec<TokenTree> = root.clone().into_iter().collect();
-    let mut out = BTreeSet::new();
+/// The `mod NAME;` declarations of a module's file (file modules; inline ones are not
+/// files), each with the file its `#[path = "…"]` attribute names, if it has one.
+fn declared_modules(file: &TokenStream) -> BTreeMap<String, Option<String>> {
+    let t: Vec<TokenTree> = file.clone().into_iter().collect();
+    let mut out = BTreeMap::new();
     for i in 0..t.len() {
         if let (TokenTree::Ident(kw), Some(TokenTree::Ident(name)), Some(TokenTree::Punct(p))) =
             (&t[i], t.get(i + 1), t.get(i + 2))
         {
             if kw == "mod" && p.as_char() == ';' {
-                out.insert(name.to_string());
+                out.insert(name.to_string(), path_attribute(&t[..i]));
             }
         }
     }
     out
 }
 
-/// Names the crate root brings in from its modules with `use` (`pub use runtime::{Engine,
-/// StopReason as Why}` gives `Engine` and `Why` → `runtime`).
-fn reexports(root: &TokenStream, modules: &BTreeSet<String>) -> BTreeMap<String, String> {
-    let t: Vec<TokenTree> = root.clone().into_iter().collect();
+/// The `#[path = "…"]` among the attributes that end `t` (before a `mod`, past any `pub`,
+/// `pub(crate)`).
+fn path_attribute(t: &[TokenTree]) -> Option<String> {
+    let mut end = t.len();
+    while end > 0 {
+        match &t[end - 1] {
+            TokenTree::Ident(id) if id == "pub" => end -= 1,
+            TokenTree::Group(g)
+                if g.delimiter() == Delimiter::Parenthesis
+                    && end >= 2
+                    && is_ident(&t[end - 2], &["pub"]) =>
+            {
+                end -= 1
+            }
+            TokenTree::Group(g)
+                if g.delimiter() == Delimiter::Bracket
+                    && end >= 2
+                    && matches!(&t[end - 2], TokenTree::Punct(p) if p.as_char() == '#') =>
+            {
+                let a: Vec<TokenTree> = g.stream().into_iter().collect();
+                if let (Some(id), Some(TokenTree::Punct(eq)), Some(TokenTree::Literal(lit))) =
+                    (a.first(), a.get(1), a.get(2))
+                {
+                    if is_ident(id, &["path"]) && eq.as_char() == '=' {
+                        return Some(lit.to_string().trim_matches('"').to_owned());
+                    }
+                }
+                end -= 2;
+            }
+            _ => break,
+        }
+    }
+    None
+}
+
+/// Names a module's file brings in from the modules it declares with `use` (`pub use
+/// runtime::{Engine, StopReason as Why}` gives `Engine` and `Why` → `runtime`).
+fn reexports(file: &TokenStream, modules: &BTreeSet<String>) -> BTreeMap<String, String> {
+    let t: Vec<TokenTree> = file.clone().into_iter().collect();
     let mut out = BTreeMap::new();
     let mut i = 0;
     while i < t.len() {
@@ -87,7 +236,7 @@ fn reexports(root: &TokenStream, modules: &BTreeSet<String>) -> BTreeMap<String,
                 .find(|&j| matches!(&t[j], TokenTree::Punct(p) if p.as_char() == ';'))
                 .unwrap_or(t.len());
             let mut tree = &t[i + 1..end];
-            // `crate::x` and `self::x` in the root both mean module `x`.
+            // `self::x` means the child `x` (and `crate::x` in the root).
             if tree.len() > 2 && is_ident(&tree[0], &["crate", "self"]) && is_path_sep(tree, 1) {
                 tree = &tree[3..];
             }
@@ -135,56 +284,6 @@ fn leaves(tree: &[TokenTree]) -> Vec<String> {
     out
 }
 
-/// The files of top-level module `name`, each with its module path (`[name, …]`).
-fn module_files(src: &Path, name: &str) -> Result<Vec<(PathBuf, Vec<String>)>, String> {
-    let mut out = Vec::new();
-    let file = src.join(format!("{name}.rs"));
-    if file.is_file() {
-        out.push((file, vec![name.to_owned()]));
-    }
-    let dir = src.join(name);
-    if dir.is_dir() {
-        walk(&dir, &mut vec![name.to_owned()], &mut out)?;
-    }
-    if out.is_empty() {
-        return Err(format!(
-            "expected {name}.rs or {name}/ in {} (declared as `mod {name};`)",
-            src.display()
-        ));
-    }
-    Ok(out)
-}
-
-fn walk(
-    dir: &Path,
-    path: &mut Vec<String>,
-    out: &mut Vec<(PathBuf, Vec<String>)>,
-) -> Result<(), String> {
-    let mut entries: Vec<PathBuf> = fs::read_dir(dir)
-        .map_err(|e| format!("{}: {e}", dir.display()))?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .collect();
-    entries.sort();
-    for p in entries {
-        let stem = p
-            .file_stem()
-            .map(|s| s.to_string_lossy().into_owned())
-            .unwrap_or_default();
-        if p.is_dir() {
-            path.push(stem);
-            walk(&p, path, out)?;
-            path.pop();
-        } else if p.extension().is_some_and(|e| e == "rs") {
-            let mut module = path.clone();
-            if stem != "mod" {
-                module.push(stem);
-            }
-            out.push((p, module));
-        }
-    }
-    Ok(())
-}
-
 fn is_ident(t: &TokenTree, names: &[&str]) -> bool {
     matches!(t, TokenTree::Ident(id) if names.iter().any(|n| id == n))
 }
@@ -202,26 +301,34 @@ fn split_commas(t: &[TokenTree]) -> Vec<&[TokenTree]> {
         .collect()
 }
 
-/// The crate-root children named by the path tail at `t[i..]` (after `crate::` or enough
-/// `super::` to reach the root): one identifier, or each item of a `{…}` group.
-fn root_children(t: &[TokenTree], i: usize, out: &mut BTreeSet<String>) {
+/// The absolute paths named by the path tail at `t[i..]`, each `base` followed by its
+/// segments (`a::b::{c, d::e}` gives `base::a::b::c` and `base::a::b::d::e`; `self` in a
+/// group is the path so far).
+fn tails(t: &[TokenTree], i: usize, base: &[String], out: &mut Vec<Vec<String>>) {
     match t.get(i) {
-        Some(TokenTree::Ident(id)) if id != "self" && id != "super" && id != "crate" => {
-            out.insert(id.to_string());
+        Some(TokenTree::Ident(id)) if id != "super" && id != "crate" && id != "self" => {
+            let mut p = base.to_vec();
+            p.push(id.to_string());
+            if is_path_sep(t, i + 1) {
+                tails(t, i + 3, &p, out);
+            } else {
+                out.push(p);
+            }
         }
         Some(TokenTree::Group(g)) if g.delimiter() == Delimiter::Brace => {
             let inner: Vec<TokenTree> = g.stream().into_iter().collect();
             for item in split_commas(&inner) {
-                root_children(item, 0, out);
+                tails(item, 0, base, out);
             }
         }
-        _ => {}
+        _ => out.push(base.to_vec()),
     }
 }
 
-/// Adds to `used` the crate-root children that the paths in `stream`, written in module
-/// `here` (a path from the root), start at; recurses into groups and inline modules.
-fn scan(stream: TokenStream, here: &[String], used: &mut BTreeSet<String>) {
+/// Adds to `paths` the absolute paths that the `crate::`, `self::` and `super::` paths in
+/// `stream`, written in module `here` (a path from the root), name; recurses into groups
+/// and inline modules.
+fn scan(stream: TokenStream, here: &[String], paths: &mut Vec<Vec<String>>) {
     let t: Vec<TokenTree> = stream.into_iter().collect();
     let mut i = 0;
     while i < t.len() {
@@ -233,7 +340,7 @@ fn scan(stream: TokenStream, here: &[String], used: &mut BTreeSet<String>) {
                     if g.delimiter() == Delimiter::Brace {
                         let mut inner = here.to_vec();
                         inner.push(name.to_string());
-                        scan(g.stream(), &inner, used);
+                        scan(g.stream(), &inner, paths);
                         i += 3;
                         continue;
                     }
@@ -243,8 +350,14 @@ fn scan(stream: TokenStream, here: &[String], used: &mut BTreeSet<String>) {
                 let dollar =
                     i > 0 && matches!(&t[i - 1], TokenTree::Punct(p) if p.as_char() == '$');
                 if !dollar {
-                    root_children(&t, i + 3, used);
+                    tails(&t, i + 3, &[], paths);
                 }
+            }
+            TokenTree::Ident(kw) if kw == "self" && is_path_sep(&t, i + 1) => {
+                // Not the `self` of a `use a::{self, …}` group: that one follows no `::`.
+                tails(&t, i + 3, here, paths);
+                i += 3;
+                continue;
             }
             TokenTree::Ident(kw) if kw == "super" && is_path_sep(&t, i + 1) => {
                 let mut ups = 0;
@@ -253,15 +366,13 @@ fn scan(stream: TokenStream, here: &[String], used: &mut BTreeSet<String>) {
                     ups += 1;
                     j += 3;
                 }
-                if ups < here.len() {
-                    // Still inside a top-level module: `here[0]` itself (not a use of another).
-                } else if ups == here.len() {
-                    root_children(&t, j, used);
+                if ups <= here.len() {
+                    tails(&t, j, &here[..here.len() - ups], paths);
                 }
                 i = j;
                 continue;
             }
-            TokenTree::Group(g) => scan(g.stream(), here, used),
+            TokenTree::Group(g) => scan(g.stream(), here, paths),
             _ => {}
         }
         i += 1;
@@ -276,15 +387,14 @@ fn is_ident_at(t: &[TokenTree], i: usize, name: &str) -> bool {
 mod tests {
     use super::*;
 
-    /// Module uses of one source text as module `path` (for unit tests and single files): the
-    /// names of the crate root's children that its paths start at.
-    fn uses_in(text: &str, path: &[&str]) -> BTreeSet<String> {
+    /// The absolute paths one source text names, written as module `path`.
+    fn paths_in(text: &str, path: &[&str]) -> BTreeSet<String> {
         let path: Vec<String> = path.iter().map(|s| (*s).to_owned()).collect();
-        let mut used = BTreeSet::new();
+        let mut out = Vec::new();
         if let Ok(stream) = TokenStream::from_str(text) {
-            scan(stream, &path, &mut used);
+            scan(stream, &path, &mut out);
         }
-        used
+        out.into_iter().map(|p| p.join("::")).collect()
     }
 
     fn set(names: &[&str]) -> BTreeSet<String> {
@@ -292,18 +402,26 @@ mod tests {
     }
 
     #[test]
-    fn crate_paths_and_use_groups_name_their_first_segment() {
+    fn crate_paths_and_use_groups_give_every_path() {
         let text = "use crate::a::X; use crate::{b::{c, d}, e}; fn f() { crate::g::h(); }";
-        assert_eq!(uses_in(text, &["m"]), set(&["a", "b", "e", "g"]));
+        assert_eq!(
+            paths_in(text, &["m"]),
+            set(&["a::X", "b::c", "b::d", "e", "g::h"])
+        );
     }
 
     #[test]
-    fn super_reaches_the_root_only_from_the_right_depth() {
-        // In m/x.rs (path m::x) one `super` is m itself; two reach the root.
-        let text = "use super::y; use super::super::{p, q::r};";
-        assert_eq!(uses_in(text, &["m", "x"]), set(&["p", "q"]));
-        // In m.rs or m/mod.rs one `super` reaches the root.
-        assert_eq!(uses_in("use super::z;", &["m"]), set(&["z"]));
+    fn super_and_self_climb_from_the_module_they_are_written_in() {
+        // In m/x.rs (path m::x) one `super` is m; two reach the root; three are no path.
+        let text = "use super::y; use super::super::{p, q::r}; use self::z::{self, W};";
+        assert_eq!(
+            paths_in(text, &["m", "x"]),
+            set(&["m::y", "p", "q::r", "m::x::z", "m::x::z::W"])
+        );
+        assert_eq!(
+            paths_in("use super::super::super::n;", &["m", "x"]),
+            set(&[])
+        );
     }
 
     #[test]
@@ -315,16 +433,16 @@ mod tests {
             macro_rules! m { () => { $crate::macro_path } }
             mod tests { use super::super::t; use super::*; }
         "#;
-        assert_eq!(uses_in(text, &["m"]), set(&["t"]));
+        assert_eq!(paths_in(text, &["m"]), set(&["t", "m"]));
     }
 
     #[test]
-    fn reexports_of_the_root_map_names_to_modules() {
+    fn reexports_of_a_module_map_names_to_its_children() {
         let root = TokenStream::from_str(
             "mod a; mod b; pub use a::{X, y::Y as Z}; pub use crate::b::W; pub use other::V;",
         )
         .expect("valid tokens");
-        let modules = declared_modules(&root);
+        let modules: BTreeSet<String> = declared_modules(&root).into_keys().collect();
         assert_eq!(modules, set(&["a", "b"]));
         let map = reexports(&root, &modules);
         let want: BTreeMap<String, String> = [("X", "a"), ("Z", "a"), ("W", "b")]
@@ -332,5 +450,34 @@ mod tests {
             .map(|(k, v)| ((*k).to_owned(), (*v).to_owned()))
             .collect();
         assert_eq!(map, want);
+    }
+
+    #[test]
+    fn a_path_attribute_names_the_file_of_its_module() {
+        let file = TokenStream::from_str(
+            "mod a; #[cfg(test)] #[path = \"a_tests.rs\"] mod tests; #[path = \"x.rs\"] pub(crate) mod b;",
+        )
+        .expect("valid tokens");
+        let d = declared_modules(&file);
+        assert_eq!(d["a"], None);
+        assert_eq!(d["tests"].as_deref(), Some("a_tests.rs"));
+        assert_eq!(d["b"].as_deref(), Some("x.rs"));
+    }
+
+    #[test]
+    fn a_use_joins_the_siblings_below_the_deepest_common_folder() {
+        let v = |l: &[&str]| l.iter().map(|s| (*s).to_owned()).collect::<Vec<_>>();
+        let edge = |f: &[&str], a: &str, b: &str| Some((v(f), a.to_owned(), b.to_owned()));
+        assert_eq!(
+            sibling_use(&v(&["a", "x"]), &v(&["a", "y"])),
+            edge(&["a"], "x", "y")
+        );
+        assert_eq!(
+            sibling_use(&v(&["a", "x", "t"]), &v(&["b"])),
+            edge(&[], "a", "b")
+        );
+        // A parent naming its child, or a module itself: no sibling edge.
+        assert_eq!(sibling_use(&v(&["a"]), &v(&["a", "y"])), None);
+        assert_eq!(sibling_use(&v(&["a", "y"]), &v(&["a"])), None);
     }
 }

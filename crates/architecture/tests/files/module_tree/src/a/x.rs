@@ -1,0 +1,3 @@
+// Through the folder's re-export: names y.
+use super::Why;
+pub struct X;

@@ -1,0 +1,4 @@
+// A folder in the `b.rs` + `b/` layout.
+mod p;
+mod q;
+mod r;

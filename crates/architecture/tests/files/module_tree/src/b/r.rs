@@ -1,0 +1,3 @@
+#[path = "r_impl.rs"]
+mod imp;
+pub struct R;
