@@ -110,7 +110,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         6,
         &["entity↔route_follow"],
     ),
-    ("opendrive/parse", &["lanes", "road"], 2, &["lanes↔road"]),
     (
         "opendrive/query",
         &["route", "route_search"],

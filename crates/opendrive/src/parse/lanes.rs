@@ -3,8 +3,7 @@
 
 use roxmltree::Node;
 
-use super::reader::{child, children, read_nested, Reader};
-use super::road::{missing, read_cubics};
+use super::reader::{child, children, missing, read_cubics, read_nested, Reader};
 use crate::error::Error;
 use crate::model::{
     Lane, LaneHeight, LaneSection, LaneType, RoadMark, RoadMarkColor, RoadMarkLaneChange,

@@ -11,7 +11,7 @@ use roxmltree::{Document, Node};
 use source::{LineIndex, SourcePos};
 
 use crate::error::{Error, ErrorKind};
-use crate::math::S_TOLERANCE;
+use crate::math::{Cubic, S_TOLERANCE};
 
 /// The document being read and its path, for positions in errors.
 pub(crate) struct Reader<'a, 'input> {
@@ -271,4 +271,36 @@ pub(crate) fn read_nested<'a, 'input: 'a, T>(
         .flat_map(|c| children(c, item))
         .map(f)
         .collect()
+}
+
+/// A "missing child element" error.
+pub(crate) fn missing(r: &Reader, node: Node, name: &str) -> Error {
+    r.error_at(
+        node,
+        ErrorKind::MissingElement {
+            element: node.tag_name().name().to_string(),
+            child: name.to_string(),
+        },
+    )
+}
+
+/// Records `<name start a b c d>` under `node`, sorted by `start_attr`.
+pub(crate) fn read_cubics(
+    r: &Reader,
+    node: Node,
+    name: &'static str,
+    start_attr: &str,
+) -> Result<Vec<Cubic>, Error> {
+    let mut out = Vec::new();
+    for e in children(node, name) {
+        out.push(Cubic {
+            start: r.req_non_negative(e, start_attr)?,
+            a: r.req_f64(e, "a")?,
+            b: r.req_f64(e, "b")?,
+            c: r.req_f64(e, "c")?,
+            d: r.req_f64(e, "d")?,
+        });
+    }
+    out.sort_by(|a, b| a.start.total_cmp(&b.start));
+    Ok(out)
 }

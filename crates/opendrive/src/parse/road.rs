@@ -5,12 +5,12 @@
 use roxmltree::Node;
 
 use super::lanes::read_lanes;
-use super::reader::{child, children, read_nested, Reader};
+use super::reader::{child, children, missing, read_cubics, read_nested, Reader};
 use crate::error::{Error, ErrorKind};
 use crate::geometry::{
     Arc, Geometry, GeometryKind, ParamPoly3, ParamRange, PlanView, Poly3, Spiral,
 };
-use crate::math::{Cubic, GEOMETRY_GAP_TOLERANCE};
+use crate::math::GEOMETRY_GAP_TOLERANCE;
 use crate::model::{
     ContactPoint, ElementType, Object, Road, RoadLink, RoadLinks, RoadType, Signal, Speed,
     TrafficRule,
@@ -76,17 +76,6 @@ pub(crate) fn read_road(r: &Reader, node: Node, warnings: &mut Vec<Error>) -> Re
         objects,
         signals,
     })
-}
-
-/// A "missing child element" error.
-pub(crate) fn missing(r: &Reader, node: Node, name: &str) -> Error {
-    r.error_at(
-        node,
-        ErrorKind::MissingElement {
-            element: node.tag_name().name().to_string(),
-            child: name.to_string(),
-        },
-    )
 }
 
 /// `contactPoint` values.
@@ -245,27 +234,6 @@ fn read_geometry(r: &Reader, node: Node, road_length: f64) -> Result<Geometry, E
         }
     };
     Ok(Geometry::new(s, x, y, hdg, length, kind))
-}
-
-/// Records `<name start a b c d>` under `node`, sorted by `start_attr`.
-pub(crate) fn read_cubics(
-    r: &Reader,
-    node: Node,
-    name: &'static str,
-    start_attr: &str,
-) -> Result<Vec<Cubic>, Error> {
-    let mut out = Vec::new();
-    for e in children(node, name) {
-        out.push(Cubic {
-            start: r.req_non_negative(e, start_attr)?,
-            a: r.req_f64(e, "a")?,
-            b: r.req_f64(e, "b")?,
-            c: r.req_f64(e, "c")?,
-            d: r.req_f64(e, "d")?,
-        });
-    }
-    out.sort_by(|a, b| a.start.total_cmp(&b.start));
-    Ok(out)
 }
 
 /// XSD `t_road_objects_object`.
