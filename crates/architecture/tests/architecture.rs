@@ -68,12 +68,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["external↔view"],
     ),
     (
-        "engine/controller",
-        &["stage", "table"],
-        2,
-        &["stage↔table"],
-    ),
-    (
         "engine/domain",
         &["object", "vehicle"],
         2,

@@ -110,3 +110,12 @@ pub trait Controller: std::fmt::Debug + Send {
     /// The command for the step of `dt` s starting at `view.time()`.
     fn step(&mut self, view: &ControllerView<'_>, dt: Real) -> Command;
 }
+
+/// The commands of one entity's controllers for a step, merged per domain (the controllers
+/// stage builds one per entity and applies it).
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Merged {
+    pub(super) longitudinal: Option<Longitudinal>,
+    pub(super) lateral: Option<Lateral>,
+    pub(super) pose: Option<Pose>,
+}

@@ -15,9 +15,9 @@
 //! transition the route's lane changes use. A curvature moves the entity along an arc off its
 //! lane track (its road position looked up after the move); a pose places it.
 
-use opendrive::{Direction, Pose, Real, RoadNetwork};
+use opendrive::{Direction, Real, RoadNetwork};
 
-use super::command::{Command, Lateral, Longitudinal};
+use super::command::{Command, Lateral, Longitudinal, Merged};
 use super::default::{measure, move_entity};
 use super::properties::MotionDomains;
 use super::table::{ControllerTable, EntityControllers};
@@ -29,14 +29,6 @@ use crate::store::World;
 use crate::world::finite::all_finite;
 use crate::world::lane_change::{begin as begin_route_lane_change, step as step_route_lane_change};
 use crate::world::Entity;
-
-/// The commands of one entity's controllers, merged per domain.
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Merged {
-    longitudinal: Option<Longitudinal>,
-    lateral: Option<Lateral>,
-    pose: Option<Pose>,
-}
 
 /// Stage 3: commands, then moves (module doc). Returns whether every placed entity's state
 /// is finite after its move: the step's finite-state guard (engine runtime/finite.rs) is

@@ -23,7 +23,7 @@
 
 use scenario::ControllerDomains;
 
-use super::command::Controller;
+use super::command::{Controller, Merged};
 use super::external::ExternalInput;
 use super::properties::{ControllerKind, ModelSettings, MotionDomains};
 use crate::store::lane_index::LaneIndex;
@@ -138,7 +138,7 @@ pub(crate) struct StageStorage {
     /// The lane index of the step.
     pub index: LaneIndex,
     /// The merged commands of the step, by entity index.
-    pub merged: Vec<Option<super::stage::Merged>>,
+    pub merged: Vec<Option<Merged>>,
 }
 
 impl ControllerTable {
