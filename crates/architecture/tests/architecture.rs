@@ -116,7 +116,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         4,
         &["pieces_by_distance↔spatial", "point_grid↔spatial"],
     ),
-    ("replay/plot", &["charts", "phases"], 2, &["charts↔phases"]),
     (
         "scenario/distribution",
         &["deterministic", "plan", "stochastic"],

@@ -1,4 +1,5 @@
-//! The charts, drawn on any plotters backend (SVG or bitmap). Entity lines are the only
+//! The trajectories, speed, host and conditions charts, drawn on any plotters backend (SVG
+//! or bitmap), and what the charts share (line colours, the run's time range). Entity lines are the only
 //! coloured polylines of the trajectory chart (axes and ticks are black ones, road lane areas
 //! polygons, legend marks rectangles), so a reader of the SVG finds one per entity.
 
@@ -7,25 +8,6 @@ use plotters::prelude::*;
 
 use super::Charts;
 use crate::measures::Series;
-
-/// The charts, in the order they are written.
-pub(crate) const ALL: [Chart; 5] = [
-    Chart::Trajectories,
-    Chart::Speed,
-    Chart::Host,
-    Chart::Conditions,
-    Chart::Phases,
-];
-
-/// One chart.
-#[derive(Debug, Clone, Copy)]
-pub(crate) enum Chart {
-    Trajectories,
-    Speed,
-    Host,
-    Conditions,
-    Phases,
-}
 
 /// Line colours, one per entity in track order (Tableau 10).
 const COLORS: [RGBColor; 10] = [
@@ -54,46 +36,6 @@ pub(crate) type DrawResult = Result<(), String>;
 /// A line of a time chart: label, colour, and its defined stretches of (t, value) points.
 type Line = (String, RGBColor, Vec<Vec<(f64, f64)>>);
 
-impl Chart {
-    /// The file stem.
-    pub(crate) fn name(self) -> &'static str {
-        match self {
-            Chart::Trajectories => "trajectories",
-            Chart::Speed => "speed",
-            Chart::Host => "host",
-            Chart::Conditions => "conditions",
-            Chart::Phases => "phases",
-        }
-    }
-
-    /// Whether the run has anything to show in this chart.
-    pub(crate) fn applies(self, c: &Charts<'_>) -> bool {
-        match self {
-            Chart::Host => c.host.as_ref().is_some_and(|(_, p)| !p.is_empty()),
-            Chart::Conditions => !c.conditions.is_empty(),
-            Chart::Phases => !c.run.manifest.phases.is_empty(),
-            _ => true,
-        }
-    }
-
-    /// Draws the chart on `root`.
-    pub(crate) fn draw<DB: DrawingBackend>(
-        self,
-        c: &Charts<'_>,
-        root: DrawingArea<DB, Shift>,
-    ) -> DrawResult {
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        match self {
-            Chart::Trajectories => trajectories(c, &root),
-            Chart::Speed => speed(c, &root),
-            Chart::Host => host(c, &root),
-            Chart::Conditions => conditions(c, &root),
-            Chart::Phases => super::phases::draw(c, &root),
-        }?;
-        root.present().map_err(|e| e.to_string())
-    }
-}
-
 /// Extent of `values` with a margin; (0, 1) when empty.
 fn extent(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values
@@ -109,7 +51,10 @@ fn extent(values: impl Iterator<Item = f64>) -> (f64, f64) {
 }
 
 /// Paths of every entity over the road's lane areas, with equal scales on x and y.
-fn trajectories<DB: DrawingBackend>(c: &Charts<'_>, root: &DrawingArea<DB, Shift>) -> DrawResult {
+pub(super) fn trajectories<DB: DrawingBackend>(
+    c: &Charts<'_>,
+    root: &DrawingArea<DB, Shift>,
+) -> DrawResult {
     let tracks = &c.run.trajectories.tracks;
     let xs = tracks
         .iter()
@@ -265,7 +210,10 @@ fn time_chart<DB: DrawingBackend>(
 }
 
 /// Speed over time, one line per entity.
-fn speed<DB: DrawingBackend>(c: &Charts<'_>, root: &DrawingArea<DB, Shift>) -> DrawResult {
+pub(super) fn speed<DB: DrawingBackend>(
+    c: &Charts<'_>,
+    root: &DrawingArea<DB, Shift>,
+) -> DrawResult {
     let times = &c.run.trajectories.times;
     let lines: Vec<_> = c
         .run
@@ -305,7 +253,10 @@ fn runs(c: &Charts<'_>, s: &Series) -> Vec<Vec<(f64, f64)>> {
 }
 
 /// Box distance (top) and time to collision (bottom) from the host to the others.
-fn host<DB: DrawingBackend>(c: &Charts<'_>, root: &DrawingArea<DB, Shift>) -> DrawResult {
+pub(super) fn host<DB: DrawingBackend>(
+    c: &Charts<'_>,
+    root: &DrawingArea<DB, Shift>,
+) -> DrawResult {
     let Some((host, pairs)) = &c.host else {
         return Ok(());
     };
@@ -350,7 +301,10 @@ fn host<DB: DrawingBackend>(c: &Charts<'_>, root: &DrawingArea<DB, Shift>) -> Dr
 }
 
 /// The conditions' quantities, one panel per series with its thresholds.
-fn conditions<DB: DrawingBackend>(c: &Charts<'_>, root: &DrawingArea<DB, Shift>) -> DrawResult {
+pub(super) fn conditions<DB: DrawingBackend>(
+    c: &Charts<'_>,
+    root: &DrawingArea<DB, Shift>,
+) -> DrawResult {
     let n = c.conditions.len().max(1);
     let panels = root.split_evenly((n, 1));
     for (k, (s, area)) in c.conditions.iter().zip(panels.iter()).enumerate() {

@@ -14,7 +14,7 @@
 //!
 //! | module | job |
 //! | --- | --- |
-//! | `charts` | the charts on any plotters backend |
+//! | `charts` | the trajectories, speed, host and conditions charts on any plotters backend; line colours and the time range |
 //! | `phases` | the phases chart |
 //! | `bitmap` | the font and the PNG encoding |
 
@@ -24,8 +24,10 @@ mod phases;
 
 use std::path::{Path, PathBuf};
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use self::charts::DrawResult;
 use crate::error::{Error, ErrorKind, Result};
 use crate::manifest::MeasureSpec;
 use crate::measures::{self, Series};
@@ -63,6 +65,65 @@ pub(crate) struct Charts<'a> {
     /// The host's name and its distance and TTC series to every other entity.
     pub host: Option<HostSeries>,
     pub conditions: Vec<Series>,
+}
+
+/// The charts, in the order they are written.
+pub(crate) const ALL: [Chart; 5] = [
+    Chart::Trajectories,
+    Chart::Speed,
+    Chart::Host,
+    Chart::Conditions,
+    Chart::Phases,
+];
+
+/// One chart.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Chart {
+    Trajectories,
+    Speed,
+    Host,
+    Conditions,
+    Phases,
+}
+
+impl Chart {
+    /// The file stem.
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Chart::Trajectories => "trajectories",
+            Chart::Speed => "speed",
+            Chart::Host => "host",
+            Chart::Conditions => "conditions",
+            Chart::Phases => "phases",
+        }
+    }
+
+    /// Whether the run has anything to show in this chart.
+    pub(crate) fn applies(self, c: &Charts<'_>) -> bool {
+        match self {
+            Chart::Host => c.host.as_ref().is_some_and(|(_, p)| !p.is_empty()),
+            Chart::Conditions => !c.conditions.is_empty(),
+            Chart::Phases => !c.run.manifest.phases.is_empty(),
+            _ => true,
+        }
+    }
+
+    /// Draws the chart on `root`.
+    pub(crate) fn draw<DB: DrawingBackend>(
+        self,
+        c: &Charts<'_>,
+        root: DrawingArea<DB, Shift>,
+    ) -> DrawResult {
+        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        match self {
+            Chart::Trajectories => charts::trajectories(c, &root),
+            Chart::Speed => charts::speed(c, &root),
+            Chart::Host => charts::host(c, &root),
+            Chart::Conditions => charts::conditions(c, &root),
+            Chart::Phases => phases::draw(c, &root),
+        }?;
+        root.present().map_err(|e| e.to_string())
+    }
 }
 
 /// A spec measuring `quantity` from `host` to `other` between boxes.
@@ -128,7 +189,7 @@ pub fn plot(run: &Run, dir: &Path, options: &PlotOptions) -> Result<Vec<PathBuf>
         conditions: measures::series(run),
     };
     let mut written = Vec::new();
-    for chart in charts::ALL {
+    for chart in ALL {
         if !chart.applies(&charts) {
             continue;
         }
