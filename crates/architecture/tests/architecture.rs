@@ -105,12 +105,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["entity↔route_follow"],
     ),
     (
-        "opendrive/query",
-        &["route", "route_search"],
-        2,
-        &["route↔route_search"],
-    ),
-    (
         "opendrive/road",
         &["pieces_by_distance", "point_grid", "spatial"],
         4,

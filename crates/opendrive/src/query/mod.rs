@@ -11,5 +11,5 @@ mod signal_lanes;
 
 pub use graph::{Direction, LaneHandle};
 pub use locate::{RoadPoint, RoadPosition};
-pub use route::{LanePosition, LaneRoute, RouteSegment, LANE_CHANGE_COST};
-pub use route_search::{LaneChange, LaneCost, LanePath, PathCost};
+pub use route::{LaneRoute, LANE_CHANGE_COST};
+pub use route_search::{LaneChange, LaneCost, LanePath, LanePosition, PathCost, RouteSegment};

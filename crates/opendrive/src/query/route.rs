@@ -7,42 +7,14 @@
 //! happens at the point where the previous lane was entered. Only drivable lanes
 //! ([`LaneType::is_drivable`](crate::LaneType::is_drivable)) are used between start and end.
 
-use super::graph::{Direction, LaneHandle};
-use super::route_search::LaneCost;
+use super::graph::LaneHandle;
+use super::route_search::{LaneCost, LanePosition, RouteSegment};
 use crate::math::Real;
 use crate::network::RoadNetwork;
 
 /// Extra cost (m) of one lane change, so that a route changes lanes only when it must or when
 /// that saves more than this distance.
 pub const LANE_CHANGE_COST: Real = 10.0;
-
-/// A position in a lane: road, lane, s, and offset from the lane centre (positive left).
-#[derive(Debug, Clone, PartialEq)]
-pub struct LanePosition {
-    /// Road id.
-    pub road_id: String,
-    /// Lane id.
-    pub lane_id: i32,
-    /// s (m).
-    pub s: Real,
-    /// Offset from the lane centre (m), positive left.
-    pub offset: Real,
-}
-
-/// One piece of a route: a stretch of one lane.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RouteSegment {
-    /// Road id.
-    pub road_id: String,
-    /// Lane id.
-    pub lane_id: i32,
-    /// s where the route enters this stretch (m).
-    pub s_start: Real,
-    /// s where it leaves (m); below `s_start` when driving towards −s.
-    pub s_end: Real,
-    /// Direction of travel along s.
-    pub direction: Direction,
-}
 
 /// A route: segments in driving order and the total length driven (m, sum of |Δs|).
 #[derive(Debug, Clone, PartialEq)]

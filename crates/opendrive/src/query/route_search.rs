@@ -20,9 +20,36 @@ use std::cmp::Ordering;
 use std::collections::{BinaryHeap, HashMap};
 
 use super::graph::{Direction, LaneHandle};
-use super::route::{LanePosition, RouteSegment};
 use crate::math::{Real, LENGTH_EPSILON};
 use crate::network::RoadNetwork;
+
+/// A position in a lane: road, lane, s, and offset from the lane centre (positive left).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LanePosition {
+    /// Road id.
+    pub road_id: String,
+    /// Lane id.
+    pub lane_id: i32,
+    /// s (m).
+    pub s: Real,
+    /// Offset from the lane centre (m), positive left.
+    pub offset: Real,
+}
+
+/// One piece of a route: a stretch of one lane.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RouteSegment {
+    /// Road id.
+    pub road_id: String,
+    /// Lane id.
+    pub lane_id: i32,
+    /// s where the route enters this stretch (m).
+    pub s_start: Real,
+    /// s where it leaves (m); below `s_start` when driving towards −s.
+    pub s_end: Real,
+    /// Direction of travel along s.
+    pub direction: Direction,
+}
 
 /// A path cost: summed along the path, totally ordered.
 pub trait PathCost: Copy + Default {
