@@ -116,7 +116,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         4,
         &["deterministic↔plan", "plan↔stochastic"],
     ),
-    ("scenario/expr", &["error", "value"], 2, &["error↔value"]),
     (
         "scenario/reader",
         &["catalog", "context", "params"],

@@ -1,7 +1,7 @@
 //! Errors of the OpenSCENARIO 1.3 §9.2 expression language: syntax, names, types and
 //! arithmetic, each with the byte offset of the offending token.
 
-use super::value::ValueType;
+use super::value_type::ValueType;
 
 /// What went wrong in an expression. Each variant's Display reads "expected X, found Y".
 #[derive(Debug, Clone, PartialEq)]

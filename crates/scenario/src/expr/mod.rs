@@ -7,7 +7,8 @@
 //! | `arith` | the operators `+ - * / %`, comparisons, `not and or`, and their type rules |
 //! | `function` | the standard's built-in operators written as calls (`round`, `pow`, …) |
 //! | `eval` | syntax tree → typed [`Value`], with the standard's type rules |
-//! | `value` | [`Value`], [`ValueType`] and their conversions |
+//! | `value` | [`Value`] and its conversions to a [`ValueType`] |
+//! | `value_type` | [`ValueType`]: the XSD parameter types |
 //! | `error` | [`ExprError`] and its [`ExprErrorKind`] |
 //!
 //! Written by hand: the crates that evaluate infix expressions (evalexpr, meval, …) either
@@ -21,9 +22,11 @@ mod function;
 mod lexer;
 mod parser;
 mod value;
+mod value_type;
 
 pub use error::{ExprError, ExprErrorKind};
 pub use eval::{evaluate, expression_source, Expression};
 pub use function::Function;
 pub use parser::MAX_DEPTH;
-pub use value::{Value, ValueType};
+pub use value::Value;
+pub use value_type::ValueType;
