@@ -56,12 +56,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["map_junctions↔map_lanes"],
     ),
     (
-        "engine/condition",
-        &["measure", "road_distance"],
-        2,
-        &["measure↔road_distance"],
-    ),
-    (
         "engine/controller",
         &["command", "external", "vehicle_dynamics", "view"],
         7,

@@ -14,11 +14,11 @@ use scenario::{
 
 use super::angle::{own_angle, relative_angle, within};
 use super::clearance::{clear, Clearance};
-use super::measure::Target;
 use super::motion::{acceleration, relative_speed, speed, stands_still, DURATION_TOLERANCE};
 use super::road_state::{at_end_of_road, off_road};
 use super::rule::compare;
 use super::spacing::{distance_holds, time_headway, time_to_collision};
+use super::target::Target;
 use super::{ConditionContext, ConditionError, ConditionErrorKind, ConditionState};
 use crate::position::{resolve, EntityView};
 

@@ -34,7 +34,8 @@
 use opendrive::{Direction, Real, RoadNetwork};
 use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType};
 
-use super::measure::{distance, Target};
+use super::measure::distance;
+use super::target::Target;
 use super::ConditionErrorKind;
 use crate::position::{add_lanes, lane_walk, EntityQuery, EntityView};
 

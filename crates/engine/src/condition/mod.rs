@@ -11,6 +11,7 @@
 //! | `error` | `ConditionError`, `ConditionErrorKind` |
 //! | `rule` | XSD `Rule` on numbers (with the equalTo tolerance) and typed values |
 //! | `by_value` | SimulationTime, Parameter, Variable, UserDefinedValue, StoryboardElementState, TimeOfDay, TrafficSignal, TrafficSignalController |
+//! | `target` | what a distance is measured to: an entity or a position, with or without its box |
 //! | `measure` | distances: freespace, coordinateSystem, relativeDistanceType; their rates |
 //! | `road_distance` | the road and lane coordinate distances of `measure` |
 //! | `motion` | Speed, RelativeSpeed, Acceleration, StandStill, TraveledDistance |
@@ -36,13 +37,15 @@ mod road_state;
 mod rule;
 mod spacing;
 mod state;
+mod target;
 
 pub use context::ConditionContext;
 pub use error::{ConditionError, ConditionErrorKind};
 pub use evaluate::evaluate;
-pub(crate) use measure::{distance as measured_distance, Target as MeasureTarget};
+pub(crate) use measure::distance as measured_distance;
 pub use motion::{DURATION_TOLERANCE, STAND_STILL_SPEED};
 pub use registry::UserValueRegistry;
 pub use road_state::END_OF_ROAD_TOLERANCE;
 pub use rule::{compare, EQUAL_TOLERANCE};
 pub use state::{ConditionState, ConditionStates};
+pub(crate) use target::Target as MeasureTarget;

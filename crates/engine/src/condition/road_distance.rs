@@ -22,7 +22,7 @@
 
 use opendrive::{Real, RoadNetwork};
 
-use super::measure::{participant, Target};
+use super::target::{participant, Target};
 use crate::domain::{
     signed_gap, DistanceDirection, Interval, Physical, PhysicalObject, RoadPair, TrafficParticipant,
 };

@@ -27,8 +27,9 @@
 use opendrive::Real;
 use scenario::{CoordinateSystem, DistanceMeasure, RelativeDistanceType, Rule};
 
-use super::measure::{box_time_to_collision, distance, distance_rate, Target};
+use super::measure::{box_time_to_collision, distance, distance_rate};
 use super::rule::compare;
+use super::target::Target;
 use super::ConditionErrorKind;
 use crate::position::{EntityQuery, EntityView};
 
