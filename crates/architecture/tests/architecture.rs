@@ -62,12 +62,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["external↔view"],
     ),
     (
-        "engine/domain",
-        &["object", "vehicle"],
-        2,
-        &["object↔vehicle"],
-    ),
-    (
         "engine/store",
         &["selection", "trailer", "world"],
         4,

@@ -11,6 +11,7 @@
 //! | `footprint` | the bounding box's ground-plane rectangle |
 //! | `object` | §8.7.2–8.7.5, 8.7.7, 8.7.8 physical_object … person, animal |
 //! | `vehicle` | §8.7.6 vehicle, §8.7.10 axle |
+//! | `actor` | `Actor`: one of the instantiable §8.7 actors, for stores holding every kind |
 //! | `object_distance` | §8.7.2.1.1 object_distance() |
 //! | `time_to_collision` | §8.7.5.1.1 time_to_collision() |
 //! | `road_locate` | an object's road position; one road's s/t on another's axes |
@@ -23,6 +24,7 @@
 //! | `from_scenario` | OpenSCENARIO 1.x Vehicle, Pedestrian, MiscObject → §8.7 actors |
 //! | `vehicle_group` | §8.7.18.1 vehicle_group (non-normative): a single-lane formation |
 
+mod actor;
 mod bounding_box;
 mod color;
 mod distance_along_route;
@@ -44,6 +46,7 @@ mod time_to_collision;
 mod vehicle;
 mod vehicle_group;
 
+pub use actor::Actor;
 pub use bounding_box::BoundingBox;
 pub use color::Color;
 pub use enums::{
@@ -53,8 +56,7 @@ pub use enums::{
 pub use error::{DomainError, DomainErrorKind};
 pub use kinematics::{Acceleration6d, Position3d, Vector3, Velocity6d};
 pub use object::{
-    Actor, Animal, MovableObject, Person, Physical, PhysicalObject, StationaryObject,
-    TrafficParticipant,
+    Animal, MovableObject, Person, Physical, PhysicalObject, StationaryObject, TrafficParticipant,
 };
 pub(crate) use road_path::shortest_road_path;
 pub use route::{Route, RouteStretch};
