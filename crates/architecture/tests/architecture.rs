@@ -87,12 +87,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["area↔state", "source_sink↔state", "state↔swarm"],
     ),
     (
-        "engine/world",
-        &["entity", "lane_change", "lanes", "route_follow"],
-        6,
-        &["entity↔route_follow"],
-    ),
-    (
         "opendrive/road",
         &["pieces_by_distance", "point_grid", "spatial"],
         4,

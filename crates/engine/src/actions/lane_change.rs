@@ -25,7 +25,8 @@ use crate::position::lane_at;
 use crate::store::targets::{entity_ref, target_lane};
 use crate::store::World;
 use crate::storyboard::ActionStatus;
-use crate::world::entity::{Blend, EntityId};
+use crate::world::entity::EntityId;
+use crate::world::lane_track::Blend;
 use crate::world::shapes::{progress, shape_value, span, Span};
 use scenario::DynamicsShape;
 

@@ -15,8 +15,9 @@
 use opendrive::{normalize_angle, Direction, Real, Road, RoadNetwork};
 
 use crate::domain::{Acceleration6d, Vector3, Velocity6d};
-use crate::world::entity::{CurvatureAt, Entity, LaneTrack};
+use crate::world::entity::Entity;
 use crate::world::lane_change;
+use crate::world::lane_track::{CurvatureAt, LaneTrack};
 use crate::world::lanes::{
     advance, curvature_with_heading, set_road_position, track_curvature, track_span,
 };
@@ -204,7 +205,7 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity) {
         return;
     };
     // The pose's heading is the reference line's at s; the next move starts here and reads
-    // the curvature back (runtime/entity.rs CurvatureAt).
+    // the curvature back (world/lane_track.rs CurvatureAt).
     let k = curvature_with_heading(road, track.s, pose.h);
     track.curvature = Some(CurvatureAt {
         road: track.road,

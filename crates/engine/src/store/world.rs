@@ -14,7 +14,8 @@ use crate::position::lane_at;
 use crate::position::{EntityQuery, EntityView};
 use crate::routing::RoutingOptions;
 use crate::storyboard::StateView;
-use crate::world::entity::{Entity, EntityId, LaneTrack};
+use crate::world::entity::{Entity, EntityId};
+use crate::world::lane_track::LaneTrack;
 use crate::world::lanes::curvature;
 
 /// A located point farther than this (m) from every lane is off the road: the entity then

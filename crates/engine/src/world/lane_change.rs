@@ -16,7 +16,7 @@ use opendrive::{Real, RoadNetwork};
 use scenario::DynamicsShape;
 
 use crate::position::lane_at;
-use crate::world::entity::{Blend, LaneTrack};
+use crate::world::lane_track::{Blend, LaneTrack};
 use crate::world::shapes::shape_value;
 
 /// Largest lateral acceleration of a route's lane change (m/s²): the limit UN Regulation

@@ -9,7 +9,7 @@ use opendrive::{
     angle_difference, Direction, LaneHandle, LaneSpan, Real, Road, RoadNetwork, RoadPosition,
 };
 
-use super::entity::{LaneTrack, LanesMemo};
+use super::lane_track::{LaneTrack, LanesMemo};
 use crate::position::lane_at;
 
 /// Step (m) of the finite difference that gives the reference line's curvature.

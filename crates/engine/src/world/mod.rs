@@ -8,6 +8,7 @@
 //! | module | job |
 //! | --- | --- |
 //! | `entity` | entity state (pose, road position, speed, …), `EntityId`, `EntityKind`, `ControllerOverrides` |
+//! | `lane_track` | `LaneTrack`: the lane the default controller keeps an entity in, its offset and a lateral transition (`Blend`) |
 //! | `finite` | whether an entity's state is finite (the step's finite-state guard's test) |
 //! | `environment` | the environment in force (§7.7.1 EnvironmentAction) and the scenario's clock |
 //! | `date_time` | `xsd:dateTime` to seconds since 1970 (TimeOfDay, TimeOfDayCondition) |
@@ -24,6 +25,7 @@ pub(crate) mod entity;
 mod environment;
 pub(crate) mod finite;
 pub(crate) mod lane_change;
+pub(crate) mod lane_track;
 pub(crate) mod lanes;
 pub(crate) mod route_follow;
 pub(crate) mod shapes;

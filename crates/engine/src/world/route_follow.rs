@@ -19,7 +19,7 @@
 use opendrive::{Direction, LaneHandle, Real, RoadNetwork, RouteSegment, S_TOLERANCE};
 
 use crate::routing::PlannedRoute;
-use crate::world::entity::LaneTrack;
+use crate::world::lane_track::LaneTrack;
 use crate::world::lanes::carry_lane;
 
 use super::lane_change::RouteLaneChange;

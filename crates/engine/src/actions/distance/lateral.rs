@@ -44,7 +44,8 @@ use crate::position::lane_at;
 use crate::store::targets::entity_ref;
 use crate::store::World;
 use crate::storyboard::ActionStatus;
-use crate::world::entity::{Blend, EntityId};
+use crate::world::entity::EntityId;
+use crate::world::lane_track::Blend;
 
 /// Lateral error (m) at which a non-continuous action has reached its distance.
 pub(crate) const REACHED: f64 = 0.01;
