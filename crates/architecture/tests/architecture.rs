@@ -68,12 +68,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["selection↔world", "trailer↔world"],
     ),
     (
-        "engine/storyboard",
-        &["executor", "host", "tree", "view"],
-        6,
-        &["executor↔tree"],
-    ),
-    (
         "engine/traffic",
         &[
             "area",

@@ -48,13 +48,14 @@
 //! [`ActionHost::start`].
 
 use super::counters::{Stage, StageCounters};
+use super::desc::StoryboardDesc;
 use super::element::{ElementId, ElementKind};
 use super::error::{ErrorKind, StoryboardError};
 use super::host::{ActionHost, ConditionSource};
 use super::log::TransitionSink;
 use super::priority::PriorityDecision;
 use super::state::ElementState;
-use super::tree::{Node, Status};
+use super::tree::{build, Node, Status};
 use super::trigger::TriggerState;
 use super::view::StateView;
 
@@ -95,6 +96,15 @@ impl StepContext<'_> {
 }
 
 impl Storyboard {
+    /// Builds the storyboard from its description. All elements start in `initState`; nothing
+    /// runs before the first [`step`](Storyboard::step).
+    ///
+    /// Fails if a condition's delay is negative or not finite, or a condition group is empty.
+    pub fn new(desc: &StoryboardDesc) -> Result<Storyboard, StoryboardError> {
+        let b = build(desc)?;
+        Ok(Storyboard::from_parts(b.nodes, b.triggers, b.root, b.init))
+    }
+
     pub(crate) fn from_parts(
         nodes: Vec<Node>,
         triggers: Vec<TriggerState>,

@@ -12,7 +12,6 @@ use super::desc::{
 };
 use super::element::{ActionId, ElementId, ElementKind};
 use super::error::{ErrorKind, StoryboardError, TriggerRole};
-use super::executor::Storyboard;
 use super::priority::Priority;
 use super::state::{ElementState, Transition};
 use super::trigger::TriggerState;
@@ -195,28 +194,38 @@ impl Builder {
     }
 }
 
-impl Storyboard {
-    /// Builds the storyboard from its description. All elements start in `initState`; nothing
-    /// runs before the first [`step`](Storyboard::step).
-    ///
-    /// Fails if a condition's delay is negative or not finite, or a condition group is empty.
-    pub fn new(desc: &StoryboardDesc) -> Result<Storyboard, StoryboardError> {
-        let mut builder = Builder::default();
-        let root = builder.add(ElementKind::Storyboard, &desc.name, None)?;
-        builder.nodes[root.index()].stop_trigger =
-            builder.optional_trigger(&desc.stop_trigger, root, TriggerRole::Stop)?;
-        let init = builder.add(ElementKind::Init, "Init", Some(root))?;
-        for action in &desc.init_actions {
-            builder.action(action, init)?;
-        }
-        for story in &desc.stories {
-            builder.story(story, root)?;
-        }
-        Ok(Storyboard::from_parts(
-            builder.nodes,
-            builder.triggers,
-            root,
-            init,
-        ))
+/// The element store of `desc` (module doc): its nodes and triggers, and the ids of the
+/// storyboard and its Init.
+///
+/// Fails if a condition's delay is negative or not finite, or a condition group is empty.
+pub(super) fn build(desc: &StoryboardDesc) -> Result<Built, StoryboardError> {
+    let mut builder = Builder::default();
+    let root = builder.add(ElementKind::Storyboard, &desc.name, None)?;
+    builder.nodes[root.index()].stop_trigger =
+        builder.optional_trigger(&desc.stop_trigger, root, TriggerRole::Stop)?;
+    let init = builder.add(ElementKind::Init, "Init", Some(root))?;
+    for action in &desc.init_actions {
+        builder.action(action, init)?;
     }
+    for story in &desc.stories {
+        builder.story(story, root)?;
+    }
+    Ok(Built {
+        nodes: builder.nodes,
+        triggers: builder.triggers,
+        root,
+        init,
+    })
+}
+
+/// What [`build`] makes of a storyboard's description.
+pub(super) struct Built {
+    /// The elements, in depth-first document order.
+    pub(super) nodes: Vec<Node>,
+    /// The triggers the elements refer to.
+    pub(super) triggers: Vec<TriggerState>,
+    /// The storyboard element.
+    pub(super) root: ElementId,
+    /// Its Init.
+    pub(super) init: ElementId,
 }
