@@ -8,6 +8,7 @@ use scenario::{
 };
 
 use super::checks::{check_keeps, check_orientation};
+use super::group_path::along_points;
 use super::lateral;
 use super::motion::{
     check_accel, check_speed, end_speed_mod, holds_speed, lane_change, lateral_end,
@@ -46,25 +47,6 @@ impl Planner<'_> {
                 ),
             ));
         }
-        // A group's members share the action's arguments: one path or trajectory would put them
-        // all at one place (a trajectory: at one time), so those group forms are refused.
-        if self.groups.contains_key(&inv.actor)
-            && matches!(
-                inv.kind,
-                Action::FollowTrajectory
-                    | Action::FollowPath
-                    | Action::ReplayTrajectory
-                    | Action::ReplayPath
-            )
-        {
-            return Err(p.site.err(
-                K::Unsupported,
-                format!(
-                    "expected an action the members of group `{}` can share, found `{}`: one path or trajectory for every member would have them all at one place (a trajectory at one time, a path one after the other along one line the plan does not space); invoke it on each member with one of its own (`{}.vehicles[i].{}(…)`)",
-                    inv.actor, inv.action, inv.actor, inv.action
-                ),
-            ));
-        }
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),
             None => vec![inv.actor.clone()],
@@ -82,6 +64,14 @@ impl Planner<'_> {
                 ))
             })
             .collect();
+        // The group's speed at the start: member 0's (a column's trajectory headways).
+        let group_speed = match (self.groups.get(&inv.actor).and_then(|m| m.first()), t0) {
+            (Some(lead), Some(t)) => Some(self.track(lead).at(t).1),
+            _ => None,
+        };
+        if self.groups.contains_key(&inv.actor) && along_points(inv.kind) {
+            self.check_group_path(p, inv, t0)?;
+        }
         let mut derived = None;
         for (target, formation) in targets.iter().zip(formation) {
             let first = self.first_leaf.get(target) == Some(&p.path);
@@ -144,6 +134,7 @@ impl Planner<'_> {
                 out: &mut *out,
                 persist: &mut *persist,
                 formation,
+                group_speed,
             };
             let action_end = match inv.kind {
                 Action::ChangeLane | Action::FollowLane => {
@@ -203,6 +194,7 @@ impl Planner<'_> {
                         out: &mut *out,
                         persist: &mut *persist,
                         formation: None,
+                        group_speed: None,
                     };
                     let ends = self.plan_shaped(p, m, mods, slot, &mut name)?;
                     match (t0, phase_len, ends) {

@@ -60,6 +60,7 @@
 //! | `shapes` | modifiers with a `shape:`, planned as the action whose dynamics the shape is |
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
+//! | `group_path` | the group forms of the path and trajectory actions: a column following the path in file, a group over several lanes the path moved across a straight road |
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
 //! | `map_checks` | the map's modifiers over route fields checked against the plan's roads |
@@ -87,6 +88,7 @@ mod car_following;
 mod checks;
 mod events;
 mod gap_actions;
+mod group_path;
 mod invoke;
 mod lane_fields;
 mod lateral;

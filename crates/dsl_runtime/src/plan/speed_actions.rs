@@ -58,6 +58,9 @@ pub(super) struct Slot<'o> {
     /// offset from the group's member 0 along and across the road at that start (m), taken
     /// before any member's action changes the plan.
     pub formation: Option<(f64, f64)>,
+    /// For a member of the vehicle group the invocation is on, at a start the plan knows: the
+    /// group's speed then (member 0's, m/s).
+    pub group_speed: Option<f64>,
 }
 
 impl Planner<'_> {

@@ -23,6 +23,7 @@
 
 use scenario::FollowingMode;
 
+use super::group_path::Member;
 use super::path_shape::{along, locate, segment_lengths, starting_at, Pose2};
 use super::planner::Planner;
 use super::speed_actions::Slot;
@@ -43,6 +44,20 @@ impl Planner<'_> {
         let given = resolved
             .as_ref()
             .or_else(|| inv.places.iter().find(|a| a.param == "absolute"));
+        // A member of a column behind member 0: its lead-in, then the path (group_path).
+        let column = match (given, slot.t0, slot.formation, slot.group_speed) {
+            (Some(g), Some(t), Some(formation), Some(group_speed)) => self.column_place(
+                inv,
+                g,
+                (slot.target, t),
+                Member {
+                    formation,
+                    group_speed,
+                },
+            )?,
+            _ => None,
+        };
+        let given = column.as_ref().or(given);
         if inv.kind.along_path() {
             return self.plan_follow_path(p, inv, given, slot, name);
         }

@@ -275,9 +275,14 @@ fn group_forms_that_cannot_keep_the_formation_are_errors() {
             "expected `g.vehicles[1]` in a driving lane of road 1 when assign_position(…) moves group `g` as a whole (its offset from `g.vehicles[0]`: 0.00 m along the road, 3.50 m across it), found s = 200.00 m, t = 1.75 m outside them",
         ),
         (
-            "err_group_follow_trajectory",
-            "14:8",
-            "expected an action the members of group `g` can share, found `follow_trajectory`",
+            "err_group_path_offset",
+            "12:109",
+            "expected no start_offset in follow_path(…) on group `g` (its members enter the path where member 0 does, at its start, and leave it at its end), found one; give the path the points to follow, or each member its own (`g.vehicles[i].follow_path(…)`)",
+        ),
+        (
+            "err_group_path_start",
+            "13:32",
+            "expected `g.vehicles[0]` at the start of the path when group `g` follows it in file (every member enters it there), found it 10.00 m from (50.00, -8.75)",
         ),
         (
             "err_group_lateral_gap",
@@ -450,4 +455,104 @@ fn a_groups_change_position_on_the_road_network_keeps_the_formation() {
     }
     let (s, e) = r.phase("do.0");
     assert!(s.abs() < T_TOL && (e - 4.05).abs() < T_TOL, "[{s}, {e}]");
+}
+
+/// The pursuit's lag behind a smooth path (m), as in position_actions' follow_path test: the
+/// S-curve's radius is 76.8 m or more.
+const PURSUIT_TOL: f64 = 0.02;
+
+/// A column follows a path in file, each member from its own lead-in along its lane
+/// (group_follow_path.osc's comment, by hand).
+#[test]
+fn a_column_follows_a_path_in_file() {
+    let r = run("actions/group_follow_path", 0, None);
+    // Member 2 at 2 s: on its lead-in along lane -3, 20 m from where it started.
+    let at2 = r.at(2.0, "g.vehicles[2]");
+    close(at2.x, 40.0, PURSUIT_TOL, "member 2 x(2)");
+    close(at2.y, -8.75, PURSUIT_TOL, "member 2 y(2)");
+    close(at2.h, 0.0, PURSUIT_TOL, "member 2 h(2)");
+    assert_eq!(at2.lane, -3);
+    // At 7 s: 20 m along the S-curve, where member 0 was at 4 s.
+    for (name, t) in [
+        ("g.vehicles[2]", 7.0),
+        ("g.vehicles[1]", 5.5),
+        ("g.vehicles[0]", 4.0),
+    ] {
+        let m = r.at(t, name);
+        close(m.x, 89.909, PURSUIT_TOL, &format!("{name} x({t})"));
+        close(m.y, -7.012, PURSUIT_TOL, &format!("{name} y({t})"));
+        close(m.h, 0.13077, PURSUIT_TOL, &format!("{name} h({t})"));
+        close(m.speed, 10.0, 1e-9, &format!("{name} v({t})"));
+    }
+    // Member 2 reaches the end at 13.018 s, in the step to 13.05 s, which ends the phase.
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < T_TOL && (e - 13.05).abs() < T_TOL, "[{s}, {e}]");
+}
+
+/// A column follows a trajectory in file, each member's stamps shifted by its headway
+/// (group_follow_trajectory.osc's comment, by hand).
+#[test]
+fn a_column_follows_a_trajectory_with_its_stamps_shifted_by_each_headway() {
+    let r = run("actions/group_follow_trajectory", 0, None);
+    places(
+        &r,
+        &[
+            ("g.vehicles[2]", 2.0, 40.0, -8.75),
+            ("g.vehicles[2]", 6.25, 82.0, -5.25),
+            ("g.vehicles[1]", 6.25, 96.5, -1.75),
+            ("g.vehicles[0]", 3.25, 82.0, -5.25),
+            ("g.vehicles[2]", 10.5, 124.0, -1.75),
+        ],
+    );
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < T_TOL && (e - 10.5).abs() < T_TOL, "[{s}, {e}]");
+}
+
+/// A group over several lanes follows a trajectory moved across the road by each member's
+/// offset (group_follow_trajectory_rows.osc's comment, by hand).
+#[test]
+fn a_group_over_several_lanes_follows_the_trajectory_moved_by_each_offset() {
+    let r = run("actions/group_follow_trajectory_rows", 0, None);
+    places(
+        &r,
+        &[
+            ("g.vehicles[0]", 3.25, 82.0, -7.0),
+            ("g.vehicles[1]", 3.25, 82.0, -3.5),
+            ("g.vehicles[0]", 7.5, 124.0, -5.25),
+            ("g.vehicles[1]", 7.5, 124.0, -1.75),
+        ],
+    );
+    assert_eq!(r.at(7.5, "g.vehicles[0]").lane, -2);
+    assert_eq!(r.at(7.5, "g.vehicles[1]").lane, -1);
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < T_TOL && (e - 7.5).abs() < T_TOL, "[{s}, {e}]");
+}
+
+/// Where the road bends under the path, a group over several lanes cannot move it by each
+/// member's offset (err_group_follow_trajectory.osc on bend.xodr).
+#[test]
+fn a_group_over_several_lanes_on_a_bend_is_an_error() {
+    let name = "err_group_follow_trajectory";
+    let e = crate::support::lower_at(
+        &format!("tests/scenarios/actions/{name}.osc"),
+        "tests/roads/bend.xodr",
+        0,
+        None,
+    )
+    .err()
+    .map(|e| e.to_string())
+    .unwrap_or_else(|| panic!("{name} planned"));
+    assert!(e.contains(&format!("{name}.osc:19:38")), "{e}");
+    let text = "expected the road straight under the path when group `g`, spread over several lanes, follows it in follow_trajectory(…) (each member's path is member 0's moved across the road by its offset, `g.vehicles[1]` 3.50 m), found it bending there";
+    assert!(e.contains(text), "{text:?} not in {e}");
+    assert!(e.contains("(`g.vehicles[i].follow_trajectory(…)`)"), "{e}");
+}
+
+/// Each member named at each time is at (x, y) within [`TOL`].
+fn places(r: &crate::support::Run, cases: &[(&str, f64, f64, f64)]) {
+    for &(name, t, x, y) in cases {
+        let m = r.at(t, name);
+        close(m.x, x, TOL, &format!("{name} x({t})"));
+        close(m.y, y, TOL, &format!("{name} y({t})"));
+    }
 }
