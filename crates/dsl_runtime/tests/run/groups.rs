@@ -556,3 +556,27 @@ fn places(r: &crate::support::Run, cases: &[(&str, f64, f64, f64)]) {
         close(m.y, y, TOL, &format!("{name} y({t})"));
     }
 }
+
+/// The chords of a lead-in round a bend leave the lane's arc by at most 1.4 mm (m).
+const CHORD_TOL: f64 = 2e-3;
+
+/// A column's lead-in follows its lane round a bend, and its stamps are shifted by its
+/// distance along the lane (group_follow_trajectory_bend.osc on bend.xodr, by hand).
+#[test]
+fn a_columns_lead_in_follows_its_lane_round_a_bend() {
+    let name = "actions/group_follow_trajectory_bend";
+    let r = crate::support::run_on(name, "bend");
+    for (i, s) in [130.0, 115.0, 100.0].into_iter().enumerate() {
+        // Member 0 on the trajectory's first point, written to 0.1 mm.
+        close(r.at(0.0, &format!("g.vehicles[{i}]")).s, s, 1e-4, "s(0)");
+    }
+    let m = r.at(1.5, "g.vehicles[2]");
+    close(m.x, 114.9525, CHORD_TOL, "member 2 x(1.5)");
+    close(m.y, -7.7172, CHORD_TOL, "member 2 y(1.5)");
+    assert_eq!(m.lane, -3);
+    let m = r.at(4.3, "g.vehicles[2]");
+    close(m.x, 142.5126, CHORD_TOL, "member 2 x(4.3)");
+    close(m.y, 0.4936, CHORD_TOL, "member 2 y(4.3)");
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < T_TOL && (e - 5.3).abs() < T_TOL, "[{s}, {e}]");
+}
