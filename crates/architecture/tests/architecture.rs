@@ -87,12 +87,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["pieces_by_distance↔spatial", "point_grid↔spatial"],
     ),
     (
-        "scenario/distribution",
-        &["deterministic", "plan", "stochastic"],
-        4,
-        &["deterministic↔plan", "plan↔stochastic"],
-    ),
-    (
         "scenario/reader",
         &["catalog", "context", "params"],
         5,

@@ -18,11 +18,11 @@
 use std::collections::BTreeMap;
 
 use super::error::DistributionErrorKind as Kind;
+use super::error::MAX_RUNS;
 use super::model::{
     DeterministicKind, DeterministicParameterDistribution,
     DeterministicSingleParameterDistributionType as Single,
 };
-use super::plan::MAX_RUNS;
 use crate::SourcePos;
 
 /// One distribution's alternatives: each a list of (parameter, value).

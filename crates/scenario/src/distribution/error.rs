@@ -3,6 +3,10 @@
 
 use crate::SourcePos;
 
+/// Most parameter sets one distribution file may produce (memory bound against typos such as a
+/// tiny `stepWidth`).
+pub const MAX_RUNS: usize = 100_000;
+
 /// What went wrong. Each variant's Display reads "expected X, found Y".
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]

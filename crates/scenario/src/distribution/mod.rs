@@ -18,6 +18,6 @@ mod plan;
 mod reader;
 mod stochastic;
 
-pub use error::{DistributionError, DistributionErrorKind};
-pub use plan::{read, DistributionPlan, MAX_RUNS};
+pub use error::{DistributionError, DistributionErrorKind, MAX_RUNS};
+pub use plan::{read, DistributionPlan};
 pub use stochastic::{seed_for, MAX_ATTEMPTS, MAX_REJECTED_DRAWS};

@@ -11,10 +11,6 @@ use super::reader::read_distribution;
 use super::{deterministic, stochastic};
 use crate::SourcePos;
 
-/// Most parameter sets one distribution file may produce (memory bound against typos such as a
-/// tiny `stepWidth`).
-pub const MAX_RUNS: usize = 100_000;
-
 /// What a distribution file asks for: one scenario, run once per parameter set.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DistributionPlan {

@@ -33,8 +33,8 @@ use rand_chacha::ChaCha20Rng;
 use rand_distr::{LogNormal, Normal, Poisson};
 
 use super::error::DistributionErrorKind as Kind;
+use super::error::MAX_RUNS;
 use super::model::{Range, Stochastic, StochasticDistributionType as Sto};
-use super::plan::MAX_RUNS;
 use crate::SourcePos;
 
 /// Most draws tried for one value of a truncated distribution.
