@@ -81,12 +81,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["area↔state", "source_sink↔state", "state↔swarm"],
     ),
     (
-        "opendrive/road",
-        &["pieces_by_distance", "point_grid", "spatial"],
-        4,
-        &["pieces_by_distance↔spatial", "point_grid↔spatial"],
-    ),
-    (
         "scenario/reader",
         &["catalog", "context", "params"],
         5,

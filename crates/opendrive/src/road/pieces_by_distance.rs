@@ -5,55 +5,16 @@
 //! The order is exactly that of sorting the road's pieces by (squared box distance, piece
 //! index) — a stable sort by distance — but the caller usually stops after two or three
 //! pieces, so the pieces are found a few at a time: one pass over the road keeps the
-//! [`BATCH`] nearest not yet given, skipping every run of [`GROUP`] consecutive pieces whose
+//! [`BATCH`] nearest not yet given, skipping every run of [`GROUP`](super::spatial::GROUP) consecutive pieces whose
 //! joint box is farther than the farthest kept (the joint box holds its pieces' boxes, so none
 //! of them can be nearer). A long road (a 20 km highway has 2,000 pieces) then costs one pass
 //! over its runs' boxes and a few runs' pieces, not a sort of all its pieces.
 
-use std::ops::Range;
-
-use rstar::{Envelope, AABB};
-
-use super::spatial::SpatialIndex;
+use super::spatial::{PieceGroup, SpatialIndex};
 use crate::math::Real;
 
-/// Consecutive pieces of a road per joint box.
-pub(crate) const GROUP: usize = 16;
 /// Pieces found per pass.
 const BATCH: usize = 4;
-
-/// A run of at most [`GROUP`] consecutive pieces of one road and a box holding all their
-/// boxes.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct PieceGroup {
-    /// The joint box; the whole plane when a piece's box is not finite (never skipped then).
-    env: AABB<[Real; 2]>,
-    /// The pieces, as indices into [`SpatialIndex::pieces`].
-    pieces: Range<usize>,
-}
-
-impl PieceGroup {
-    /// The groups of the pieces `range`, whose boxes are `boxes[range]`, in order.
-    pub(crate) fn of_road(
-        boxes: &[AABB<[Real; 2]>],
-        range: Range<usize>,
-    ) -> impl Iterator<Item = PieceGroup> + '_ {
-        range.clone().step_by(GROUP).map(move |first| {
-            let pieces = first..(first + GROUP).min(range.end);
-            let finite = boxes[pieces.clone()]
-                .iter()
-                .all(|b| b.lower().iter().chain(&b.upper()).all(|v| v.is_finite()));
-            let env = if finite {
-                boxes[pieces.clone()]
-                    .iter()
-                    .fold(AABB::new_empty(), |acc, b| acc.merged(b))
-            } else {
-                AABB::from_corners([Real::NEG_INFINITY; 2], [Real::INFINITY; 2])
-            };
-            PieceGroup { env, pieces }
-        })
-    }
-}
 
 /// A piece and its box's squared distance from the point: the sort key, compared by distance
 /// (`total_cmp`) and then by piece index.

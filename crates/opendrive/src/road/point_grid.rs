@@ -14,10 +14,29 @@
 //! of a coordinate that large has a squared distance > 0, no underflow). Anything else — a
 //! network with a non-finite box, a point nearer an axis than [`TINY`] — is asked of the tree.
 
-use rstar::{Envelope, RTree, AABB};
+use rstar::{Envelope, PointDistance, RTree, RTreeObject, AABB};
 
-use super::spatial::Entry;
 use crate::math::Real;
+
+/// An index entry: a piece's box and its index in `SpatialIndex::pieces` (`spatial`).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Entry {
+    pub(crate) env: AABB<[Real; 2]>,
+    pub(crate) piece: usize,
+}
+
+impl RTreeObject for Entry {
+    type Envelope = AABB<[Real; 2]>;
+    fn envelope(&self) -> Self::Envelope {
+        self.env
+    }
+}
+
+impl PointDistance for Entry {
+    fn distance_2(&self, point: &[Real; 2]) -> Real {
+        self.env.distance_2(point)
+    }
+}
 
 /// Points with a coordinate smaller than this in magnitude are looked up in the tree.
 const TINY: Real = 1e-100;

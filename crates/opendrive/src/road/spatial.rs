@@ -8,12 +8,11 @@
 use std::ops::Range;
 
 use rayon::prelude::*;
-use rstar::{PointDistance, RTree, RTreeObject, AABB};
+use rstar::{Envelope, RTree, AABB};
 
 use super::lane_span::road_extent;
-use super::pieces_by_distance::{PieceGroup, GROUP};
 use super::plan_frame::{plan_frame, Hints};
-use super::point_grid::PointGrid;
+use super::point_grid::{Entry, PointGrid};
 use crate::math::Real;
 use crate::model::Road;
 
@@ -83,23 +82,39 @@ impl Piece {
     }
 }
 
-/// An index entry: a piece's box and its index in [`SpatialIndex::pieces`].
+/// Consecutive pieces of a road per joint box.
+pub(crate) const GROUP: usize = 16;
+
+/// A run of at most [`GROUP`] consecutive pieces of one road and a box holding all their
+/// boxes.
 #[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Entry {
-    pub(crate) env: AABB<[Real; 2]>,
-    pub(crate) piece: usize,
+pub(crate) struct PieceGroup {
+    /// The joint box; the whole plane when a piece's box is not finite (never skipped then).
+    pub(super) env: AABB<[Real; 2]>,
+    /// The pieces, as indices into [`SpatialIndex::pieces`].
+    pub(super) pieces: Range<usize>,
 }
 
-impl RTreeObject for Entry {
-    type Envelope = AABB<[Real; 2]>;
-    fn envelope(&self) -> Self::Envelope {
-        self.env
-    }
-}
-
-impl PointDistance for Entry {
-    fn distance_2(&self, point: &[Real; 2]) -> Real {
-        self.env.distance_2(point)
+impl PieceGroup {
+    /// The groups of the pieces `range`, whose boxes are `boxes[range]`, in order.
+    pub(crate) fn of_road(
+        boxes: &[AABB<[Real; 2]>],
+        range: Range<usize>,
+    ) -> impl Iterator<Item = PieceGroup> + '_ {
+        range.clone().step_by(GROUP).map(move |first| {
+            let pieces = first..(first + GROUP).min(range.end);
+            let finite = boxes[pieces.clone()]
+                .iter()
+                .all(|b| b.lower().iter().chain(&b.upper()).all(|v| v.is_finite()));
+            let env = if finite {
+                boxes[pieces.clone()]
+                    .iter()
+                    .fold(AABB::new_empty(), |acc, b| acc.merged(b))
+            } else {
+                AABB::from_corners([Real::NEG_INFINITY; 2], [Real::INFINITY; 2])
+            };
+            PieceGroup { env, pieces }
+        })
     }
 }
 
