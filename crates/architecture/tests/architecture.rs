@@ -56,12 +56,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
         &["map_junctions↔map_lanes"],
     ),
     (
-        "engine/controller",
-        &["command", "external", "vehicle_dynamics", "view"],
-        7,
-        &["external↔view"],
-    ),
-    (
         "engine/store",
         &["selection", "trailer", "world"],
         4,

@@ -49,6 +49,7 @@
 //! | `car_following` | `idm` and `acc` |
 //! | `mobil` | `mobil` (IDM + MOBIL lane changes) |
 //! | `vehicle_dynamics` | `vehicle_dynamics`: driver + single-track vehicle, overrides |
+//! | `external_input` | [`ExternalInput`]: what the host asks of an `external` entity, and its check |
 //! | `external` | `external`: driven by the host program ([`ExternalInput`]) |
 //! | `table` | controllers per entity, active domains |
 //! | `assign` | AssignControllerAction, ActivateControllerAction, ObjectController |
@@ -62,6 +63,7 @@ mod car_following;
 mod command;
 mod default;
 mod external;
+mod external_input;
 mod load;
 mod mobil;
 pub mod properties;
@@ -77,7 +79,8 @@ pub(crate) use assign::{activate, assign, Origin, Taken};
 pub use car_following::{AccController, IdmController};
 pub use command::{Command, Controller, Lateral, Longitudinal, Strategy};
 pub(crate) use default::place_on_track;
-pub use external::{ExternalController, ExternalInput, InputError};
+pub use external::ExternalController;
+pub use external_input::{ExternalInput, InputError};
 pub(crate) use load::set_up;
 pub use mobil::MobilController;
 pub use properties::TrafficModel;

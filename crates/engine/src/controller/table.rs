@@ -24,7 +24,7 @@
 use scenario::ControllerDomains;
 
 use super::command::{Controller, Merged};
-use super::external::ExternalInput;
+use super::external_input::ExternalInput;
 use super::properties::{ControllerKind, ModelSettings, MotionDomains};
 use crate::store::lane_index::LaneIndex;
 use crate::world::ActiveDomains;

@@ -16,7 +16,7 @@ use std::sync::atomic::AtomicU32;
 
 use opendrive::{Direction, LaneHandle, Real, RoadNetwork, TrafficRule};
 
-use super::external::ExternalInput;
+use super::external_input::ExternalInput;
 use crate::signals::Signals;
 use crate::store::driver_inputs::DriverInput;
 use crate::store::lane_index::{LaneIndex, Neighbour};
