@@ -76,12 +76,6 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
     ),
     (
         "scenario/reader",
-        &["catalog", "context", "params"],
-        5,
-        &["catalog↔context", "context↔params"],
-    ),
-    (
-        "scenario/reader",
         &["positions", "routing"],
         2,
         &["positions↔routing"],

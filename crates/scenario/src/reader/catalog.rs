@@ -7,34 +7,11 @@
 //! by the reference's ParameterAssignments]; the assignments' values are resolved in the
 //! referencing scope first.
 
-use std::path::PathBuf;
-
 use crate::error::{Error, ErrorKind, Result};
 use crate::model::CatalogOrigin;
-use crate::reader::context::{Ctx, Node, Scope};
+use crate::reader::context::{CatalogFile, Ctx, Node, Scope};
 use crate::reader::params::read_parameter_declarations;
 use crate::warning::Warning;
-
-/// One catalog file.
-pub(crate) struct CatalogFile<'a> {
-    /// `Catalog@name`.
-    pub name: String,
-    /// Index of the document in `Ctx::docs`.
-    pub doc: usize,
-    /// The `Catalog` element.
-    pub node: Node<'a>,
-}
-
-/// The catalogs found through CatalogLocations.
-#[derive(Default)]
-pub(crate) struct CatalogIndex<'a> {
-    /// Directories searched, as resolved.
-    pub dirs: Vec<PathBuf>,
-    /// Those of `dirs` that do not exist.
-    pub missing_dirs: Vec<PathBuf>,
-    /// Catalog files, in directory order.
-    pub files: Vec<CatalogFile<'a>>,
-}
 
 /// Reads the CatalogReference `reference` and then its entry with `read`, returning what
 /// `read` built and where it came from.

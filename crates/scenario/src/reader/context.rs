@@ -6,7 +6,7 @@
 //! so parameter references work in any attribute. Errors point at the attribute's value.
 
 use std::cell::RefCell;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use roxmltree::{Attribute, Document};
@@ -15,7 +15,6 @@ use crate::attr::FromAttr;
 use crate::error::{Error, ErrorKind, Result};
 use crate::expr::Value;
 use crate::provider::FileProvider;
-use crate::reader::catalog::CatalogIndex;
 use crate::source::{LineIndex, SourcePos};
 use crate::warning::Warning;
 
@@ -341,23 +340,25 @@ impl<'a> Ctx<'a> {
             },
         )
     }
+}
 
-    /// Reads `n` with the ParameterDeclarations of `n` (if any) in scope.
-    pub fn scoped<T>(
-        &mut self,
-        n: Node<'a>,
-        read: impl FnOnce(&mut Self) -> Result<T>,
-    ) -> Result<T> {
-        if self.entry_scoped == Some((self.cur, n.id())) {
-            return read(self);
-        }
-        let Some(decls) = self.opt_child(n, "ParameterDeclarations") else {
-            return read(self);
-        };
-        let scope = crate::reader::params::read_parameter_declarations(self, decls, &[])?;
-        self.scopes.push(scope);
-        let result = read(self);
-        self.scopes.pop();
-        result
-    }
+/// One catalog file.
+pub(crate) struct CatalogFile<'a> {
+    /// `Catalog@name`.
+    pub name: String,
+    /// Index of the document in `Ctx::docs`.
+    pub doc: usize,
+    /// The `Catalog` element.
+    pub node: Node<'a>,
+}
+
+/// The catalogs found through CatalogLocations.
+#[derive(Default)]
+pub(crate) struct CatalogIndex<'a> {
+    /// Directories searched, as resolved.
+    pub dirs: Vec<PathBuf>,
+    /// Those of `dirs` that do not exist.
+    pub missing_dirs: Vec<PathBuf>,
+    /// Catalog files, in directory order.
+    pub files: Vec<CatalogFile<'a>>,
 }

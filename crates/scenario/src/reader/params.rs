@@ -291,6 +291,29 @@ fn check_constraints<'a>(
     Ok(groups)
 }
 
+/// Reading inside a scope: the ParameterDeclarations of an element in force while its
+/// content is read (beside the declarations' reader).
+impl<'a> Ctx<'a> {
+    /// Reads `n` with the ParameterDeclarations of `n` (if any) in scope.
+    pub fn scoped<T>(
+        &mut self,
+        n: Node<'a>,
+        read: impl FnOnce(&mut Self) -> Result<T>,
+    ) -> Result<T> {
+        if self.entry_scoped == Some((self.cur, n.id())) {
+            return read(self);
+        }
+        let Some(decls) = self.opt_child(n, "ParameterDeclarations") else {
+            return read(self);
+        };
+        let scope = read_parameter_declarations(self, decls, &[])?;
+        self.scopes.push(scope);
+        let result = read(self);
+        self.scopes.pop();
+        result
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -21,7 +21,7 @@ use crate::model::{
     FileHeader, License, MonitorDeclaration, ParameterDeclaration, Scenario, VariableDeclaration,
 };
 use crate::provider::FileProvider;
-use crate::reader::catalog::{CatalogFile, CatalogIndex};
+use crate::reader::context::{CatalogFile, CatalogIndex};
 use crate::reader::context::{Ctx, Doc, Node, Scope};
 use crate::reader::entities::read_entities;
 use crate::reader::files::{
