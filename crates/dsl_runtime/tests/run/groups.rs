@@ -580,3 +580,25 @@ fn a_columns_lead_in_follows_its_lane_round_a_bend() {
     let (s, e) = r.phase("do.0");
     assert!(s.abs() < T_TOL && (e - 5.3).abs() < T_TOL, "[{s}, {e}]");
 }
+
+/// A column replays a path exactly, each member from its own lead-in (group_replay_path.osc,
+/// by hand).
+#[test]
+fn a_column_replays_a_path_from_each_members_lead_in() {
+    let r = run("actions/group_replay_path", 0, None);
+    let leg = (7.0f64 / 24.0).atan();
+    for (name, t, x, y, h) in [
+        ("g.vehicles[1]", 1.0, 45.0, -8.75, 0.0),
+        ("g.vehicles[1]", 2.75, 62.0, -5.25, leg),
+        ("g.vehicles[0]", 1.25, 62.0, -5.25, leg),
+        ("g.vehicles[1]", 9.0, 124.0, -1.75, 0.0),
+    ] {
+        let m = r.at(t, name);
+        close(m.x, x, TOL, &format!("{name} x({t})"));
+        close(m.y, y, TOL, &format!("{name} y({t})"));
+        close(m.h, h, TOL, &format!("{name} h({t})"));
+    }
+    assert_eq!(r.at(9.0, "g.vehicles[1]").lane, -1);
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < T_TOL && (e - 9.0).abs() < T_TOL, "[{s}, {e}]");
+}
