@@ -57,9 +57,9 @@ const KNOWN_NESTED_CYCLES: &[(&str, &[&str], usize, &[&str])] = &[
     ),
     (
         "engine/store",
-        &["selection", "trailer", "world"],
-        4,
-        &["selection↔world", "trailer↔world"],
+        &["selection", "world"],
+        2,
+        &["selection↔world"],
     ),
     (
         "engine/traffic",

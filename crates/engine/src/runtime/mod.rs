@@ -16,6 +16,7 @@
 //! | `engine` | `Engine`: the built scenario and its API |
 //! | `read` | what the engine answers between steps, as plain values (`Engine::entities`, …) |
 //! | `step` | the fixed step, one private method per stage |
+//! | `trailer_stage` | the trailer stage: each connected trailer placed behind its tow |
 
 mod build;
 mod conditions;
@@ -26,6 +27,7 @@ mod finite;
 mod frame_view;
 mod read;
 mod step;
+mod trailer_stage;
 pub(crate) mod trigger_view;
 
 pub use crate::world::shapes::{shape_value, Span};

@@ -180,7 +180,7 @@ impl Engine {
             e.velocity.translational = e.travel_velocity();
         }
         // The trailer stage sets its trailers' own velocity.
-        crate::store::trailer::follow(world, 0.0);
+        super::trailer_stage::follow(world, 0.0);
         super::finite::check(&world.entities, time).map_err(|(_, e)| e)?;
         let clock = Instant::now();
         frames
@@ -211,7 +211,7 @@ impl Engine {
         let clock = Instant::now();
         let world = self.world.get_mut();
         let finite = crate::controller::stage::step(world, &mut self.controllers, time, dt);
-        crate::store::trailer::follow(world, dt);
+        super::trailer_stage::follow(world, dt);
         let traffic = self.traffic.is_running();
         let mut tables = Tables {
             traffic: &mut self.traffic,
