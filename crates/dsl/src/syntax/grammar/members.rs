@@ -1,10 +1,11 @@
 //! Structured type members (ASAM OpenSCENARIO DSL 2.1 §7.2.2.4): events, fields, constraints,
-//! methods, coverage, modifier application; and the `for v in list:` constraint loop of the
-//! domain model's vehicle_group example (§8.7.18.1.1).
+//! methods, coverage, modifier application, the argument list specifications of methods and
+//! modifiers (§7.2.2.5.1); and the `for v in list:` constraint loop of the domain model's
+//! vehicle_group example (§8.7.18.1.1).
 
 use super::events::{at_sample, event_spec, sample};
 use super::expressions::{arg_list, expr, postfix};
-use super::types::{name, param_list, type_decl};
+use super::types::{name, type_decl};
 use super::{block, Ctx};
 use crate::syntax::kind::SyntaxKind::{self, *};
 use crate::syntax::parser::Parser;
@@ -241,6 +242,27 @@ pub(super) fn for_constraint(p: &mut Parser) {
         block(p, Ctx::For);
     } else {
         p.skip_line();
+    }
+    p.finish_node();
+}
+
+/// `argument-list-specification ::= argument-specification (',' argument-specification)*`,
+/// `argument-specification ::= argument-name ':' type-declarator ['=' default-value]`.
+/// The caller handles the parentheses.
+pub(crate) fn param_list(p: &mut Parser) {
+    p.start(PARAM_LIST);
+    loop {
+        p.start(PARAM);
+        name(p);
+        p.expect(COLON);
+        type_decl(p);
+        if p.eat(EQ) {
+            expr(p);
+        }
+        p.finish_node();
+        if !p.eat(COMMA) {
+            break;
+        }
     }
     p.finish_node();
 }

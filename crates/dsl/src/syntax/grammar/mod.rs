@@ -4,10 +4,10 @@
 //! | --- | --- |
 //! | `mod.rs` | osc-file, member dispatch by context, indented blocks |
 //! | `items.rs` | prelude and main statements, type declarations, extensions, globals |
-//! | `members.rs` | events, fields, constraints, methods, coverage, modifier application |
+//! | `members.rs` | events, fields, constraints, methods, coverage, modifier application, argument list specifications |
 //! | `behavior.rs` | on / do directives, compositions, invocations, wait / emit / call / until |
 //! | `events.rs` | event specifications and conditions, sample |
-//! | `types.rs` | names, type declarators, argument list specifications |
+//! | `types.rs` | names, type declarators |
 //! | `expressions.rs` | expressions, argument lists |
 //!
 //! Every block (`':' NEWLINE INDENT member+ DEDENT`) is parsed by one routine, [`block`], for a

@@ -1,7 +1,6 @@
-//! Names, type declarators and argument list specifications (ASAM OpenSCENARIO DSL 2.1
-//! §7.2.1.5.1 identifiers, §7.2.2.2 type declarators, §7.2.2.5.1 argument list specification).
+//! Names and type declarators (ASAM OpenSCENARIO DSL 2.1 §7.2.1.5.1 identifiers, §7.2.2.2
+//! type declarators).
 
-use super::expressions::expr;
 use crate::syntax::kind::SyntaxKind::{self, *};
 use crate::syntax::parser::Parser;
 
@@ -141,25 +140,4 @@ pub(crate) fn type_decl(p: &mut Parser) {
     } else {
         p.error_expected("a type");
     }
-}
-
-/// `argument-list-specification ::= argument-specification (',' argument-specification)*`,
-/// `argument-specification ::= argument-name ':' type-declarator ['=' default-value]`.
-/// The caller handles the parentheses.
-pub(crate) fn param_list(p: &mut Parser) {
-    p.start(PARAM_LIST);
-    loop {
-        p.start(PARAM);
-        name(p);
-        p.expect(COLON);
-        type_decl(p);
-        if p.eat(EQ) {
-            expr(p);
-        }
-        p.finish_node();
-        if !p.eat(COMMA) {
-            break;
-        }
-    }
-    p.finish_node();
 }
