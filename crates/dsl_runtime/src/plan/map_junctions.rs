@@ -164,7 +164,7 @@ pub(super) fn heading_change(net: &RoadNetwork, from: LaneHandle, to: LaneHandle
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::plan::map_lanes::tests::net;
+    use crate::plan::test_roads::net;
 
     #[test]
     fn roads_round_a_junction_are_counted_clockwise_from_the_in_road() {

@@ -596,16 +596,9 @@ fn ends(net: &RoadNetwork, h: LaneHandle) -> bool {
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+mod tests {
     use super::*;
-
-    /// A bundled road of `tests/roads`.
-    pub(in crate::plan) fn net(file: &str) -> RoadNetwork {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("tests/roads")
-            .join(file);
-        RoadNetwork::from_file(&path).expect("reads")
-    }
+    use crate::plan::test_roads::net;
 
     /// (road id, section, lane) of the driving lanes that pass `keep`.
     fn lanes(

@@ -408,3 +408,18 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         handlers: handler_plans,
     })
 }
+
+/// Roads for the unit tests of the plan's modules.
+#[cfg(test)]
+pub(crate) mod test_roads {
+    use opendrive::RoadNetwork;
+
+    /// A bundled road of `tests/roads`.
+    pub(crate) fn net(file: &str) -> RoadNetwork {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/roads")
+            .join(file);
+        // A test fixture the crate ships: failing to read it is a broken checkout.
+        RoadNetwork::from_file(&path).expect("reads")
+    }
+}
