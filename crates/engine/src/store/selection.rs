@@ -26,9 +26,8 @@ use std::collections::BTreeMap;
 
 use scenario::{Condition, ConditionKind, EntitySelection, Scenario, SelectionMember, SourcePos};
 
-use super::world::World;
 use crate::storyboard::ActionId;
-use crate::world::entity::EntityId;
+use crate::world::entity::{Entity, EntityId};
 
 mod restrictions;
 mod triggering;
@@ -36,6 +35,18 @@ mod triggering;
 pub(crate) use restrictions::{check_actor_kinds, check_multiplicity};
 pub(crate) use triggering::ConditionRef;
 use triggering::TriggerReports;
+
+/// What a selection reads of the world store: its entities and their names (the store's
+/// `World` implements it; the seam keeps this module below the `World` that holds the
+/// selections).
+pub(crate) trait Entities {
+    /// All entities in declaration order.
+    fn entities(&self) -> &[Entity];
+    /// The entity with handle `id`.
+    fn entity(&self, id: EntityId) -> &Entity;
+    /// The handle of the entity called `name`.
+    fn id(&self, name: &str) -> Option<EntityId>;
+}
 
 /// The actors of the actions of one ManeuverGroup, worked out when each action starts.
 #[derive(Debug, Clone, Default)]
@@ -90,7 +101,7 @@ impl Selections {
     /// The actors of action `id` now, if its ManeuverGroup names a selection or selects
     /// triggering entities: objects as named, selections by their current members, then the
     /// triggering entities, each once, in that order.
-    pub(crate) fn actors_now(&self, id: ActionId, world: &World) -> Option<Vec<EntityId>> {
+    pub(crate) fn actors_now(&self, id: ActionId, world: &dyn Entities) -> Option<Vec<EntityId>> {
         let spec = self.actors.get(&id)?;
         let mut out: Vec<EntityId> = Vec::new();
         let mut add = |ids: Vec<EntityId>| {
@@ -122,7 +133,7 @@ impl Selections {
 
     /// The placed members of selection `name` now, in id order; `None` if `name` is not a
     /// selection.
-    pub(crate) fn members(&self, world: &World, name: &str) -> Option<Vec<EntityId>> {
+    pub(crate) fn members(&self, world: &dyn Entities, name: &str) -> Option<Vec<EntityId>> {
         let selection = self.find(name)?;
         let mut flags = vec![false; world.entities().len()];
         let mut visiting = Vec::new();
@@ -140,7 +151,7 @@ impl Selections {
 
     fn collect<'s>(
         &'s self,
-        world: &World,
+        world: &dyn Entities,
         selection: &'s EntitySelection,
         visiting: &mut Vec<&'s str>,
         flags: &mut [bool],
@@ -176,7 +187,7 @@ impl Selections {
     /// of its current members (unchanged when it names none).
     pub(crate) fn expand_condition<'c>(
         &self,
-        world: &World,
+        world: &dyn Entities,
         condition: &'c Condition,
     ) -> Cow<'c, Condition> {
         let ConditionKind::ByEntity {

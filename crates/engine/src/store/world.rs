@@ -324,3 +324,16 @@ impl ConditionContext for ConditionWorld<'_> {
         Some(clock.unix_time)
     }
 }
+
+/// The selections' view of the store (`selection::Entities`).
+impl super::selection::Entities for World {
+    fn entities(&self) -> &[Entity] {
+        World::entities(self)
+    }
+    fn entity(&self, id: EntityId) -> &Entity {
+        World::entity(self, id)
+    }
+    fn id(&self, name: &str) -> Option<EntityId> {
+        World::id(self, name)
+    }
+}
