@@ -64,7 +64,8 @@ fuzz_target!(|data: &[u8]| {
             );
         }
     }
-    if let Err(d) = dsl::check_source_with("fuzz.osc", text, &|_| None) {
+    if let Err(e) = dsl::check_source_with("fuzz.osc", text, &|_| None) {
+        let d = e.diagnostics();
         for item in &d.items {
             let at = d.position(item.span);
             assert!(
