@@ -84,7 +84,7 @@ pub(crate) fn read_position<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Positi
         }
         "RoutePosition" => {
             let route_ref = ctx.child(c, "RouteRef")?;
-            let route = read_route_ref(ctx, route_ref)?;
+            let route = read_route_ref(ctx, route_ref, read_position)?;
             let in_route = ctx.child(c, "InRoutePosition")?;
             let in_route = read_in_route_position(ctx, in_route)?;
             PositionKind::Route {
@@ -97,7 +97,7 @@ pub(crate) fn read_position<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Positi
         "TrajectoryPosition" => {
             ctx.since(c, 1);
             let trajectory_ref = ctx.child(c, "TrajectoryRef")?;
-            let trajectory = read_trajectory_ref(ctx, trajectory_ref)?;
+            let trajectory = read_trajectory_ref(ctx, trajectory_ref, read_position)?;
             PositionKind::Trajectory {
                 trajectory: Box::new(trajectory),
                 s: ctx.req(c, "s")?,

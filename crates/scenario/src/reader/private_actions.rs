@@ -17,7 +17,7 @@ use crate::model::{
 use crate::reader::appearance::{read_appearance_action, read_override_controller_value_action};
 use crate::reader::context::{Ctx, Node};
 use crate::reader::entities::read_controller_or_reference;
-use crate::reader::positions::read_position_child;
+use crate::reader::positions::{read_position, read_position_child};
 use crate::reader::routing::{read_route_ref, read_trajectory_or_reference, read_trajectory_ref};
 
 const PRIVATE_ACTIONS: &str = "LongitudinalAction, LateralAction, VisibilityAction, SynchronizeAction, \
@@ -342,10 +342,10 @@ fn read_routing_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<RoutingActi
         "AssignRouteAction, FollowTrajectoryAction, AcquirePositionAction, RandomRouteAction";
     let c = ctx.choice(n, EXPECTED)?;
     Ok(match c.tag_name().name() {
-        "AssignRouteAction" => RoutingAction::AssignRoute(read_route_ref(ctx, c)?),
+        "AssignRouteAction" => RoutingAction::AssignRoute(read_route_ref(ctx, c, read_position)?),
         "FollowTrajectoryAction" => {
             let trajectory = if let Some(r) = ctx.opt_child(c, "TrajectoryRef") {
-                read_trajectory_ref(ctx, r)?
+                read_trajectory_ref(ctx, r, read_position)?
             } else {
                 let direct = c.children().find(|k| {
                     k.is_element()
@@ -360,11 +360,11 @@ fn read_routing_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<RoutingActi
                                 k.tag_name().name()
                             ),
                         );
-                        read_trajectory_or_reference(ctx, c, k)?
+                        read_trajectory_or_reference(ctx, c, k, read_position)?
                     }
                     None => ctx
                         .child(c, "TrajectoryRef")
-                        .and_then(|r| read_trajectory_ref(ctx, r))?,
+                        .and_then(|r| read_trajectory_ref(ctx, r, read_position))?,
                 }
             };
             let time_reference = match ctx.opt_child(c, "TimeReference") {
