@@ -26,7 +26,7 @@ use crate::output::{EventRecord, EventSink, Frame, FrameSink, SinkError};
 use crate::snapshot::ScenarioSource;
 use crate::store::World;
 use crate::storyboard::{TransitionRecord, TransitionSink};
-use crate::traffic::{Tables, Traffic};
+use crate::traffic::Traffic;
 
 /// The step's event records: transitions, action records and traffic notes, in order.
 type Log = RefCell<Vec<EventRecord>>;
@@ -213,11 +213,7 @@ impl Engine {
         let finite = crate::controller::stage::step(world, &mut self.controllers, time, dt);
         super::trailer_stage::follow(world, dt);
         let traffic = self.traffic.is_running();
-        let mut tables = Tables {
-            traffic: &mut self.traffic,
-            controllers: &mut self.controllers,
-        };
-        crate::traffic::step(world, &mut tables, dt);
+        crate::traffic::step(world, &mut self.traffic, &mut self.controllers, dt);
         self.counters.controllers += clock.elapsed();
         Moved { finite, traffic }
     }
@@ -249,7 +245,7 @@ impl Engine {
         let clock = Instant::now();
         let world = self.world.get_mut();
         let mut log = log.into_inner();
-        log.append(&mut self.traffic.events);
+        log.append(self.traffic.events());
         // The moves tested every entity they moved; the trailers placed after them are
         // tested here, and everything when a traffic action ran (runtime/finite.rs).
         let later = (!moved.traffic).then(|| world.trailers.trailers());

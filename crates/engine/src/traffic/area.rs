@@ -15,7 +15,7 @@ use rand::Rng;
 use scenario::{TrafficDistributionEntry, TrafficMix};
 
 use super::spawn::{add, lane_point, remove};
-use super::state::{Running, Tables};
+use super::spawning::{Running, Tables};
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
 use crate::error::Error;
 use crate::store::World;
@@ -133,7 +133,7 @@ impl Area {
                 })
                 .collect();
             for id in outside {
-                remove(world, tables.traffic, &run.name, id);
+                remove(world, tables.spawning, &run.name, id);
             }
             run.members.retain(|&id| world.entity(id).placed);
         } else if self.made >= self.count {

@@ -21,7 +21,7 @@
 use scenario::{Controller, ControllerDomains, ObjectController, Properties, TrafficMix};
 
 use super::random::{stream, weighted};
-use super::state::Tables;
+use super::spawning::Tables;
 use crate::controller::{assign, ControllerTable, Origin, TrafficModel};
 use crate::error::Error;
 use crate::output::EventRecord;
@@ -80,7 +80,7 @@ pub(crate) fn equip(
             .iter()
             .map(|oc| (oc.controller.clone(), oc.name.clone()))
             .collect()
-    } else if let Some(model) = tables.traffic.model {
+    } else if let Some(model) = tables.spawning.model {
         vec![(
             option_controller(model, "traffic", "run option traffic_model"),
             None,
@@ -107,7 +107,7 @@ pub(crate) fn equip(
             &mut events,
         )?;
     }
-    tables.traffic.events.append(&mut events);
+    tables.spawning.events.append(&mut events);
     Ok(())
 }
 

@@ -2,6 +2,10 @@
 //! TrafficSourceAction, TrafficSinkAction, TrafficSwarmAction, TrafficAreaAction,
 //! TrafficStopAction.
 //!
+//! Uses point one way: `state` (the running table) → the kinds (`area` and `source_sink`,
+//! which take `swarm`'s constants, and `swarm`) → `spawn` → `controllers` → `spawning` and
+//! `random`, which use no sibling.
+//!
 //! | module | job |
 //! | --- | --- |
 //! | `area` | TrafficAreaAction: a number of vehicles in a polygon or road ranges |
@@ -17,9 +21,10 @@ mod controllers;
 mod random;
 mod source_sink;
 mod spawn;
+mod spawning;
 mod state;
 mod swarm;
 
 pub(crate) use controllers::equip_scenario_vehicles;
 pub(crate) use spawn::leave;
-pub(crate) use state::{start, step, supports, Tables, Traffic};
+pub(crate) use state::{start, step, supports, Traffic};

@@ -12,7 +12,7 @@ use opendrive::Real;
 use scenario::TrafficMix;
 
 use super::spawn::{add, in_disc, lane_point, remove};
-use super::state::{Running, Tables, Traffic};
+use super::spawning::{Running, Spawning, Tables};
 use super::swarm::{ATTEMPTS, DEFAULT_SPEED};
 use crate::error::Error;
 use crate::store::World;
@@ -100,7 +100,13 @@ impl Sink {
     }
 
     /// One step of `dt` s.
-    pub(crate) fn step(&mut self, world: &mut World, traffic: &mut Traffic, name: &str, dt: Real) {
+    pub(crate) fn step(
+        &mut self,
+        world: &mut World,
+        spawning: &mut Spawning,
+        name: &str,
+        dt: Real,
+    ) {
         let inside = world
             .entities()
             .iter()
@@ -118,7 +124,7 @@ impl Sink {
             }
         };
         for id in inside.into_iter().take(take) {
-            remove(world, traffic, name, id);
+            remove(world, spawning, name, id);
         }
     }
 }

@@ -23,7 +23,7 @@ use scenario::{ObjectController, Performance, TrafficMix, VehicleCategory};
 
 use super::controllers::equip;
 use super::random::{stream, weighted};
-use super::state::{Running, Tables, Traffic};
+use super::spawning::{Running, Spawning, Tables};
 use crate::domain::{BoundingBox, Position3d};
 use crate::error::Error;
 use crate::store::World;
@@ -144,7 +144,7 @@ pub(crate) fn lane_point(world: &World, x: Real, y: Real) -> Option<Pose> {
 /// returns its id.
 fn enter(
     world: &mut World,
-    traffic: &mut Traffic,
+    spawning: &mut Spawning,
     element: &str,
     e: Entity,
     pose: Pose,
@@ -154,7 +154,7 @@ fn enter(
         Some(role) => format!("spawned (role {})", role.as_str()),
         None => "spawned".to_owned(),
     };
-    traffic.note(element, &e.name, &change);
+    spawning.note(element, &e.name, &change);
     let id = world.spawn(e);
     let found = world.network.locate(pose.x, pose.y, Some(pose.h));
     world.place_resolved(id, pose, found);
@@ -175,16 +175,16 @@ pub(crate) fn add(
 ) -> Result<(), Error> {
     let name = run.next_name(world);
     let (e, templates) = template(&mut run.rng, world.seed, mix, name)?;
-    let id = enter(world, tables.traffic, &run.name, e, pose, speed);
+    let id = enter(world, tables.spawning, &run.name, e, pose, speed);
     equip(world, tables, id, mix, &templates, &run.name)?;
     run.members.push(id);
     Ok(())
 }
 
 /// Takes entity `id` out of the scenario for traffic action `element` (logged).
-pub(crate) fn remove(world: &mut World, traffic: &mut Traffic, element: &str, id: EntityId) {
+pub(crate) fn remove(world: &mut World, spawning: &mut Spawning, element: &str, id: EntityId) {
     let name = world.entity(id).name.clone();
-    traffic.note(element, &name, "removed");
+    spawning.note(element, &name, "removed");
     leave(world, id);
 }
 

@@ -10,40 +10,25 @@
 //! start.
 
 use opendrive::Real;
-use rand_chacha::ChaCha8Rng;
 use scenario::{SourcePos, TrafficAction, TrafficArea};
 
 use super::area::{Area, Shape};
 use super::random::stream;
 use super::source_sink::{Sink, Source};
+use super::spawning::{Running, Spawning, Tables};
 use super::swarm::Swarm;
 use crate::controller::{ControllerTable, TrafficModel};
 use crate::error::{Error, ErrorKind};
 use crate::output::EventRecord;
 use crate::position::resolve;
 use crate::store::World;
-use crate::world::entity::EntityId;
 
 /// The traffic actions at work: the traffic stage's table, which the `Engine` keeps.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Traffic {
-    /// The controller model spawned vehicles get without one from the scenario
-    /// ([`crate::EngineConfig::traffic_model`]).
-    pub model: Option<TrafficModel>,
-    running: Vec<Running>,
-    /// Vehicles spawned and removed in this step, for the event log (step.rs drains them).
-    pub events: Vec<EventRecord>,
-    /// Time of the frame that first shows this step's changes (s).
-    frame_time: f64,
-}
-
-/// The tables the traffic stage changes beside the world, handed to it by the `Engine` that
-/// keeps them: its own, and the user controllers it gives the vehicles it spawns.
-pub(crate) struct Tables<'a> {
-    /// The traffic actions at work, their notes for the event log and the run option.
-    pub traffic: &'a mut Traffic,
-    /// The user controllers of every entity (engine module `controller`).
-    pub controllers: &'a mut ControllerTable,
+    /// The run option and this step's notes, shared by the running actions.
+    spawning: Spawning,
+    running: Vec<Action>,
 }
 
 impl Traffic {
@@ -57,33 +42,24 @@ impl Traffic {
     /// `model` ([`EngineConfig::traffic_model`](crate::EngineConfig::traffic_model)).
     pub(crate) fn new(model: Option<TrafficModel>) -> Self {
         Traffic {
-            model,
-            ..Traffic::default()
+            spawning: Spawning {
+                model,
+                ..Spawning::default()
+            },
+            running: Vec::new(),
         }
     }
 
-    /// Records that `entity` underwent `change` (spawned, removed) by traffic action `element`.
-    pub(crate) fn note(&mut self, element: &str, entity: &str, change: &str) {
-        self.events.push(EventRecord::Entity {
-            time: self.frame_time,
-            element: element.to_owned(),
-            entity: entity.to_owned(),
-            change: change.to_owned(),
-        });
+    /// Vehicles spawned and removed in this step, for the event log (step.rs drains them).
+    pub(crate) fn events(&mut self) -> &mut Vec<EventRecord> {
+        &mut self.spawning.events
     }
 }
 
-/// One traffic action at work.
+/// One traffic action at work: its vehicles and its kind's state.
 #[derive(Debug, Clone)]
-pub(crate) struct Running {
-    /// `trafficName`, else the action's name: the prefix of its vehicles' names.
-    pub name: String,
-    /// Its random stream.
-    pub rng: ChaCha8Rng,
-    /// Vehicles spawned so far (the n of `<name>.entity_<n>`).
-    pub spawned: u32,
-    /// Its spawned vehicles still in the scenario.
-    pub members: Vec<EntityId>,
+struct Action {
+    run: Running,
     /// Nothing left to do (a one-off TrafficAreaAction that spawned all its vehicles).
     done: bool,
     kind: Kind,
@@ -95,20 +71,6 @@ enum Kind {
     Source(Box<Source>),
     Sink(Sink),
     Area(Box<Area>),
-}
-
-impl Running {
-    /// The name of the next vehicle: `<name>.entity_<n>`, n counting on past any name the
-    /// world already has (a declared entity may carry such a name).
-    pub fn next_name(&mut self, world: &World) -> String {
-        loop {
-            self.spawned += 1;
-            let name = format!("{}.entity_{}", self.name, self.spawned);
-            if world.id(&name).is_none() {
-                return name;
-            }
-        }
-    }
 }
 
 /// Whether oscsim runs this traffic action (every kind of 1.3).
@@ -154,7 +116,7 @@ pub(crate) fn start(
                     pos,
                 ));
             };
-            traffic.running.retain(|r| r.name != target);
+            traffic.running.retain(|a| a.run.name != target);
             return Ok(());
         }
         TrafficAction::Swarm { .. } => Kind::Swarm(Box::new(Swarm::new(action, pos)?)),
@@ -218,40 +180,44 @@ pub(crate) fn start(
         _ => return Err(Error::unsupported("this TrafficAction", pos)),
     };
     let rng = stream(world.seed, &name);
-    traffic.running.push(Running {
-        name,
-        rng,
-        spawned: 0,
-        members: Vec::new(),
+    traffic.running.push(Action {
+        run: Running::new(name, rng),
         done: false,
         kind,
     });
     Ok(())
 }
 
-/// The traffic stage: every running action spawns or removes over one step of `dt` s. An
-/// action's spawn failures (a vehicle template that does not build) end that action.
-pub(crate) fn step(world: &mut World, tables: &mut Tables<'_>, dt: f64) {
-    tables.traffic.frame_time = world.time + dt;
-    let mut running = std::mem::take(&mut tables.traffic.running);
-    running.retain_mut(|r| {
+/// The traffic stage: every running action spawns or removes over one step of `dt` s, giving
+/// the vehicles it spawns their controllers in `controllers`. An action's spawn failures (a
+/// vehicle template that does not build) end that action.
+pub(crate) fn step(
+    world: &mut World,
+    traffic: &mut Traffic,
+    controllers: &mut ControllerTable,
+    dt: f64,
+) {
+    traffic.spawning.frame_time = world.time + dt;
+    let mut tables = Tables {
+        spawning: &mut traffic.spawning,
+        controllers,
+    };
+    traffic.running.retain_mut(|a| {
+        let r = &mut a.run;
         r.members.retain(|&id| world.entity(id).placed);
-        let mut kind = r.kind.clone();
-        let result = match &mut kind {
-            Kind::Swarm(s) => s.step(world, tables, r),
-            Kind::Source(s) => s.step(world, tables, r, dt),
+        let result = match &mut a.kind {
+            Kind::Swarm(s) => s.step(world, &mut tables, r),
+            Kind::Source(s) => s.step(world, &mut tables, r, dt),
             Kind::Sink(s) => {
-                s.step(world, tables.traffic, &r.name, dt);
+                s.step(world, tables.spawning, &r.name, dt);
                 Ok(())
             }
-            Kind::Area(a) => a.step(world, tables, r).map(|more| {
+            Kind::Area(k) => k.step(world, &mut tables, r).map(|more| {
                 if !more {
-                    r.done = true;
+                    a.done = true;
                 }
             }),
         };
-        r.kind = kind;
-        result.is_ok() && !r.done
+        result.is_ok() && !a.done
     });
-    tables.traffic.running = running;
 }

@@ -20,7 +20,7 @@ use rand::Rng;
 use scenario::{SourcePos, TrafficAction, TrafficMix};
 
 use super::spawn::{add, lane_point, remove};
-use super::state::{Running, Tables};
+use super::spawning::{Running, Tables};
 use crate::error::Error;
 use crate::store::World;
 
@@ -132,7 +132,7 @@ impl Swarm {
             })
             .collect::<Vec<_>>();
         for id in outside {
-            remove(world, tables.traffic, &run.name, id);
+            remove(world, tables.spawning, &run.name, id);
         }
         run.members.retain(|&id| world.entity(id).placed);
         if run.members.len() >= self.count {
