@@ -132,12 +132,20 @@ impl ActionTable {
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) {
         self.synchronize_along_trajectories();
         let mut live = std::mem::take(&mut self.live);
+        // The second pass only where a first one met a RelativeAccelerationAction: most steps
+        // have none, and the stage walks every running action once.
+        let mut deferred = false;
         for following in [false, true] {
+            if following && !deferred {
+                break;
+            }
             for &index in &live {
                 let slot = &mut self.slots[index as usize];
                 let id = ActionId(index);
                 for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
-                    if matches!(part, Part::RelativeAcceleration(_)) == following {
+                    let relative = matches!(part, Part::RelativeAcceleration(_));
+                    deferred |= relative;
+                    if relative == following {
                         step_part(world, actor, id, part, now, dt);
                     }
                 }
