@@ -691,7 +691,7 @@ impl Planner<'_> {
                         let o1 = lateral::lane_offset(m, w, self.width(target))?;
                         // A sinusoidal change of Δ has its peak lateral acceleration
                         // π²Δ/(2T²): given as the action's maximum, the engine's change lasts T.
-                        let a = std::f64::consts::PI.powi(2) * (o1 - o0).abs() / (2.0 * len * len);
+                        let a = super::motion::sinusoid_peak_acceleration(o1 - o0, len);
                         check_accel(m, a)?;
                         if a > 0.0 {
                             out.push(Planned {

@@ -135,7 +135,7 @@ impl Planner<'_> {
                 // The engine times a LaneOffsetAction by its peak lateral acceleration: π²Δ/(2T²)
                 // for a sinusoid, and for a linear change the cubic's 6Δ/T² (its module doc).
                 let max_lateral_acc = if tm.shape == DynamicsShape::Sinusoidal {
-                    PI * PI * delta.abs() / (2.0 * tm.span * tm.span)
+                    super::motion::sinusoid_peak_acceleration(delta, tm.span)
                 } else {
                     6.0 * delta.abs() / (tm.span * tm.span)
                 };
@@ -321,7 +321,7 @@ fn timing(p: &Phase, inv: &Invoke, len: Option<f64>, delta: f64) -> Result<Timin
         (_, None, None) => rate(shape, DEFAULT_LATERAL_SPEED, delta, slope),
     };
     if shape == DynamicsShape::Sinusoidal && span > 0.0 {
-        let a = PI * PI * delta.abs() / (2.0 * span * span);
+        let a = super::motion::sinusoid_peak_acceleration(delta, span);
         if a > MAX_ACCELERATION + 1e-9 {
             return Err(p.site.err(
                 K::Unsatisfiable,

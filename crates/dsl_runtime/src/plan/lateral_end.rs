@@ -22,16 +22,11 @@
 
 use scenario::{DynamicsShape, LaneChangeTarget, LaneOffsetTarget, LateralAction, PrivateAction};
 
-use super::motion::{check_accel, sinusoidal_over};
+use super::motion::{check_accel, sinusoid_peak_acceleration, sinusoidal_over};
 use super::planner::Planner;
 use super::types::Planned;
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::Modifier;
-
-/// Peak lateral acceleration of a sinusoidal move of `delta` m over `len` s: π²·|Δ|/(2T²).
-fn peak_acceleration(delta: f64, len: f64) -> f64 {
-    std::f64::consts::PI.powi(2) * delta.abs() / (2.0 * len * len)
-}
 
 impl Planner<'_> {
     /// t of `target`'s reference point at the phase end `t + len` that `m` (a `lateral(…, at:
@@ -132,10 +127,13 @@ impl Planner<'_> {
             ));
         }
         let o1 = t_a - self.road.lane_center(lane, s_end);
-        check_accel(m, peak_acceleration(t_a - self.t_at(target, t), len))?;
+        check_accel(
+            m,
+            sinusoid_peak_acceleration(t_a - self.t_at(target, t), len),
+        )?;
         let action = if lane == lane0 {
             let o0 = self.track(target).offset(t);
-            let a = peak_acceleration(o1 - o0, len);
+            let a = sinusoid_peak_acceleration(o1 - o0, len);
             if a == 0.0 {
                 None
             } else {

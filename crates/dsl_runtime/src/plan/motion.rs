@@ -493,6 +493,12 @@ pub(super) fn lateral_end(mods: &[Modifier]) -> Option<&Modifier> {
         .find(|m| m.kind == ModKind::Lateral && m.at == At::End)
 }
 
+/// The peak lateral acceleration of a sinusoidal move of `delta` m over `span` s:
+/// π²·|Δ|/(2T²) (the engine times its sinusoidal lane and offset changes by it).
+pub(super) fn sinusoid_peak_acceleration(delta: f64, span: f64) -> f64 {
+    std::f64::consts::PI * std::f64::consts::PI * delta.abs() / (2.0 * span * span)
+}
+
 /// A sinusoidal transition over `len` s (a lane or offset change that lasts the phase).
 pub(super) fn sinusoidal_over(len: f64) -> TransitionDynamics {
     TransitionDynamics {

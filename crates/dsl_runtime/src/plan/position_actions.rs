@@ -372,7 +372,7 @@ impl Planner<'_> {
                 break;
             }
         }
-        let peak = PI * PI * delta.abs() / (2.0 * span * span);
+        let peak = super::motion::sinusoid_peak_acceleration(delta, span);
         if peak > MAX_ACCELERATION + 1e-9 {
             return Err(p.site.err(
                 K::Unsatisfiable,
