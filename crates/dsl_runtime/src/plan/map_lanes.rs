@@ -10,7 +10,7 @@
 //! | `end_lane(l)` | binding | l is a driving lane with a lane section after it in its driving direction and no successor there |
 //! | `lane_side(l1, side, l2, count)`, `compound_lane_side(…)` | binding | l1 and l2 are driving lanes of one lane section, l1 `count` lanes to the side of l2 across the road (t grows to the left of the s-axis, §8.12.5), every lane of the section counted; with `lane_section` (`route`), on the plan's roads |
 //! | `routes_are_in_sequence(preceding, succeeding, road)` on lane fields | binding | `succeeding` is a successor of `preceding` in its driving direction (the network's lane links, through lane sections and road links); with `road`, both on the plan's roads |
-//! | `routes_are_in_sequence(preceding, succeeding)` on two `road` fields | binding | over two lanes of the modifier's own, driven in +s on the plan's roads, of one id: the second's road is another the first leads onto, directly or through a connecting lane ([`MapLane::whole_road`]); without named routes the plan drives them (`junction_roads`) |
+//! | `routes_are_in_sequence(preceding, succeeding)` on route fields other than two lanes | binding | a road (`road`, `route`, `route_element`, `compound_route`) or lane-section end over a lane of the modifier's own on it, driven in +s on the plan's roads; a lane end over itself. With a road end, the second's road is another the first leads onto, directly or through a connecting lane, in a lane of one id; else the lanes follow each other (lane links). The road and section fields are bound whole ([`MapLane::whole_road`]); without named routes the plan drives the roads (`junction_roads`) |
 //! | `routes_are_opposite(route1, route2, containing_road, lateral_overlap)` on lane fields | binding | both in one lane section, driven in opposite directions; with `containing_road`, on the plan's roads; `lateral_overlap` `never` (two lanes never share their width) or none |
 //! | `roads_follow_in_junction(in_lane, out_lane, direction)` on lane fields | binding | `out_lane` reached from `in_lane` through one connecting lane of a junction, turning the way `direction` names (`map_junctions::Turn`); without named routes the plan drives that way (`junction_roads`) |
 //! | `roads_follow_in_junction(junction, in_road, out_road, direction, clockwise_count, number_of_roads, resulting_route)` | binding | as on lane fields, over two lanes of the modifier's own when `in_lane`/`out_lane` are not given; `junction` is the connecting lane's junction, `in_road`/`out_road` the lanes' roads (one field one road across the modifiers), `clockwise_count` and `number_of_roads` counted by `map_junctions`; the way through on the plan's roads (without named routes the plan drives it) |
@@ -27,7 +27,7 @@
 use opendrive::{Direction, LaneHandle, RoadHandle, RoadNetwork};
 
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{JunctionRoads, MapKind, MapModifier};
+use crate::resolve::{EndKind, JunctionRoads, MapKind, MapModifier, SeqEnd};
 use crate::road::PlanRoad;
 
 use super::map_junctions::{self, connecting, heading_change, Turn};
@@ -51,8 +51,8 @@ pub(crate) struct MapLane {
     pub span: Option<(f64, f64)>,
     /// What bound it, for messages.
     pub why: String,
-    /// Whether the field is a road (`routes_are_in_sequence` on road fields): `span` is the
-    /// whole road's, `lane` the lane the modifier bound on it.
+    /// Whether the field is a road or a lane section (`routes_are_in_sequence` on route
+    /// fields): `span` is the whole road's (section's), `lane` the lane the modifier bound on it.
     pub whole_road: bool,
 }
 
@@ -139,37 +139,38 @@ pub(crate) fn bind(
         .filter_map(|m| own_lanes(m))
         .flatten()
         .collect();
-    // Road fields of routes_are_in_sequence: the road of the modifier's own lane, whole.
-    let roads = lane_mods.iter().filter_map(|m| match &m.kind {
-        MapKind::RoadsInSequence {
+    // Road and lane-section fields of routes_are_in_sequence: the road (the lane section) of
+    // the modifier's own lane on it, whole.
+    let ends = lane_mods.iter().filter_map(|m| match &m.kind {
+        MapKind::RoutesInSequence {
             preceding,
             succeeding,
-            in_lane,
-            out_lane,
-        } => Some([(preceding, in_lane), (succeeding, out_lane)]),
+        } => Some([(m, preceding), (m, succeeding)]),
         _ => None,
     });
     let mut road_fields: Vec<MapLane> = Vec::new();
-    for (field, lane) in roads.flatten() {
-        let Some(h) = names.iter().position(|n| n == lane).map(|i| chosen[i]) else {
+    for (m, end) in ends.flatten().filter(|(_, e)| e.kind != EndKind::Lane) {
+        let Some(h) = names.iter().position(|n| *n == end.lane).map(|i| chosen[i]) else {
             continue;
         };
         let r = &net.roads()[h.road as usize];
-        if road_fields.iter().all(|b| &b.field != field) {
+        let (span, what) = match end.kind {
+            EndKind::Section => {
+                let (s0, s1) = section_span(net, h);
+                (
+                    plan_span(&r.id, s0, s1),
+                    format!("the lane section of road {} from s = {s0:.2} m", r.id),
+                )
+            }
+            _ => (plan_span(&r.id, 0.0, r.length), format!("road {}", r.id)),
+        };
+        if road_fields.iter().all(|b| b.field != end.field) {
             road_fields.push(MapLane {
-                field: field.clone(),
+                field: end.field.clone(),
                 road: r.id.clone(),
                 lane: h.lane,
-                span: plan_span(&r.id, 0.0, r.length),
-                why: format!(
-                    "road {} bound by map.routes_are_in_sequence(…) at {}",
-                    r.id,
-                    lane_mods
-                        .iter()
-                        .find(|m| own_lanes(m).is_some_and(|o| o.contains(&lane.as_str())))
-                        .map(|m| m.site.at())
-                        .unwrap_or_default()
-                ),
+                span,
+                why: format!("{what} bound by map.{}(…) at {}", m.name, m.site.at()),
                 whole_road: true,
             });
         }
@@ -180,9 +181,7 @@ pub(crate) fn bind(
         .filter(|(field, _)| !own.contains(&field.as_str()))
         .map(|(field, h)| {
             let r = &net.roads()[h.road as usize];
-            let k = h.section as usize;
-            let s0 = r.lane_sections[k].s;
-            let s1 = r.lane_sections.get(k + 1).map_or(r.length, |n| n.s);
+            let (s0, s1) = section_span(net, *h);
             let by = lane_mods
                 .iter()
                 .find(|m| fields(m).is_some_and(|f| f.contains(&field.as_str())))
@@ -214,16 +213,17 @@ fn fields(m: &MapModifier) -> Option<Vec<&str>> {
         MapKind::Opposite { route1, route2, .. } => Some(vec![route1.as_str(), route2.as_str()]),
         MapKind::Junction {
             in_lane, out_lane, ..
-        }
-        | MapKind::RoadsInSequence {
-            in_lane, out_lane, ..
         } => Some(vec![in_lane.as_str(), out_lane.as_str()]),
+        MapKind::RoutesInSequence {
+            preceding,
+            succeeding,
+        } => Some(vec![preceding.lane.as_str(), succeeding.lane.as_str()]),
         _ => None,
     }
 }
 
 /// The modifier's own lanes (no field) of `m`, if it has any.
-fn own_lanes(m: &MapModifier) -> Option<[&str; 2]> {
+fn own_lanes(m: &MapModifier) -> Option<Vec<&str>> {
     match &m.kind {
         MapKind::Junction {
             in_lane,
@@ -232,12 +232,27 @@ fn own_lanes(m: &MapModifier) -> Option<[&str; 2]> {
                 own_lanes: true, ..
             },
             ..
-        }
-        | MapKind::RoadsInSequence {
-            in_lane, out_lane, ..
-        } => Some([in_lane.as_str(), out_lane.as_str()]),
+        } => Some(vec![in_lane.as_str(), out_lane.as_str()]),
+        MapKind::RoutesInSequence {
+            preceding,
+            succeeding,
+        } => Some(
+            [preceding, succeeding]
+                .into_iter()
+                .filter(|e| e.kind != EndKind::Lane)
+                .map(|e| e.lane.as_str())
+                .collect(),
+        ),
         _ => None,
     }
+}
+
+/// s of the start and the end of the lane section of `h` on its road (m).
+fn section_span(net: &RoadNetwork, h: LaneHandle) -> (f64, f64) {
+    let r = &net.roads()[h.road as usize];
+    let k = h.section as usize;
+    let s1 = r.lane_sections.get(k + 1).map_or(r.length, |n| n.s);
+    (r.lane_sections[k].s, s1)
 }
 
 /// Every driving lane of the roads outside junctions, in the network's order.
@@ -318,12 +333,15 @@ fn solve(
                                 },
                             ..
                         } if a == n || b == n => on_plan(h),
-                        // Roads in sequence: driven in +s, as the plan drives.
-                        MapKind::RoadsInSequence {
-                            in_lane: a,
-                            out_lane: b,
-                            ..
-                        } if a == n || b == n => {
+                        // The own lanes of roads and lane sections in sequence: driven in +s,
+                        // as the plan drives.
+                        MapKind::RoutesInSequence {
+                            preceding,
+                            succeeding,
+                        } if [preceding, succeeding]
+                            .iter()
+                            .any(|e| e.kind != EndKind::Lane && e.lane == *n) =>
+                        {
                             on_plan(h) && net.driving_direction(*h) == Direction::Forward
                         }
                         _ => true,
@@ -362,9 +380,21 @@ fn solve(
                 roads.clockwise_count,
                 roads.number_of_roads,
             )),
-            MapKind::RoadsInSequence {
-                in_lane, out_lane, ..
-            } => Some(Rel::NextRoad(index(out_lane), index(in_lane))),
+            // A road (or route) end: the other on the road after it; else lanes (of lane
+            // sections) one after the other.
+            MapKind::RoutesInSequence {
+                preceding,
+                succeeding,
+            } => Some(
+                if [preceding, succeeding]
+                    .iter()
+                    .any(|e| e.kind == EndKind::Road)
+                {
+                    Rel::NextRoad(index(&succeeding.lane), index(&preceding.lane))
+                } else {
+                    Rel::Follows(index(&succeeding.lane), index(&preceding.lane))
+                },
+            ),
             _ => None,
         })
         .collect();
@@ -442,42 +472,49 @@ fn one_road_per_field(
     index: &dyn Fn(&str) -> usize,
     sol: &[LaneHandle],
 ) -> bool {
-    let mut seen: Vec<(&str, &str)> = Vec::new();
+    let mut seen: Vec<(&str, String)> = Vec::new();
+    let id = |h: LaneHandle| net.roads()[h.road as usize].id.clone();
     for m in mods {
-        let (in_lane, out_lane, in_road, out_road, junction) = match &m.kind {
+        // (field, the value the assignment gives it).
+        let values: Vec<(&str, String)> = match &m.kind {
             MapKind::Junction {
                 in_lane,
                 out_lane,
                 roads,
                 ..
-            } => (
-                in_lane,
-                out_lane,
-                roads.in_road.as_deref(),
-                roads.out_road.as_deref(),
-                roads.junction.as_deref(),
-            ),
-            MapKind::RoadsInSequence {
+            } => {
+                let (a, b) = (sol[index(in_lane)], sol[index(out_lane)]);
+                let through = connecting(net, a, b)
+                    .and_then(|c| net.roads()[c.road as usize].junction.clone())
+                    .unwrap_or_default();
+                [
+                    (roads.in_road.as_deref(), id(a)),
+                    (roads.out_road.as_deref(), id(b)),
+                    (roads.junction.as_deref(), through),
+                ]
+                .into_iter()
+                .filter_map(|(f, v)| f.map(|f| (f, v)))
+                .collect()
+            }
+            MapKind::RoutesInSequence {
                 preceding,
                 succeeding,
-                in_lane,
-                out_lane,
-            } => (
-                in_lane,
-                out_lane,
-                Some(preceding.as_str()),
-                Some(succeeding.as_str()),
-                None,
-            ),
+            } => [preceding, succeeding]
+                .into_iter()
+                .filter_map(|e: &SeqEnd| {
+                    let h = sol[index(&e.lane)];
+                    match e.kind {
+                        EndKind::Lane => None,
+                        EndKind::Road => Some((e.field.as_str(), id(h))),
+                        EndKind::Section => {
+                            Some((e.field.as_str(), format!("{}/{}", id(h), h.section)))
+                        }
+                    }
+                })
+                .collect(),
             _ => continue,
         };
-        let (a, b) = (sol[index(in_lane)], sol[index(out_lane)]);
-        let id = |h: LaneHandle| net.roads()[h.road as usize].id.as_str();
-        let through = connecting(net, a, b)
-            .and_then(|c| net.roads()[c.road as usize].junction.as_deref())
-            .unwrap_or_default();
-        for (field, value) in [(in_road, id(a)), (out_road, id(b)), (junction, through)] {
-            let Some(f) = field else { continue };
+        for (f, value) in values {
             // A junction field and a road field of one name cannot both be; the path says.
             match seen.iter().find(|(g, _)| *g == f) {
                 Some((_, v)) if *v != value => return false,
@@ -525,10 +562,11 @@ pub(crate) fn junction_roads(net: &RoadNetwork, mods: &[MapModifier]) -> Option<
     let (in_lane, out_lane) = lane_mods.iter().find_map(|m| match &m.kind {
         MapKind::Junction {
             in_lane, out_lane, ..
-        }
-        | MapKind::RoadsInSequence {
-            in_lane, out_lane, ..
         } => Some((in_lane.clone(), out_lane.clone())),
+        MapKind::RoutesInSequence {
+            preceding,
+            succeeding,
+        } => Some((preceding.lane.clone(), succeeding.lane.clone())),
         _ => None,
     })?;
     let (names, solutions, _) = solve(net, &driving_lanes(net), &lane_mods, &|_| true);
@@ -538,7 +576,7 @@ pub(crate) fn junction_roads(net: &RoadNetwork, mods: &[MapModifier]) -> Option<
         let (a, b) = (sol[i], sol[o]);
         let forward = |h: LaneHandle| net.driving_direction(h) == Direction::Forward;
         if net.successors(a).contains(&b) && a.road != b.road {
-            // Roads linked directly (routes_are_in_sequence on road fields).
+            // Roads linked directly (routes_are_in_sequence on road or route fields).
             return (a.lane == b.lane && forward(a) && forward(b))
                 .then(|| vec![a.road as usize, b.road as usize]);
         }

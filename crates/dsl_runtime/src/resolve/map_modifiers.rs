@@ -1,19 +1,19 @@
 //! The map's modifiers applied in the scenario's body (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2:
 //! `m.number_of_lanes(…)`, `m.start_lane(l)`, `m.end_lane(l)`, `m.lane_side(…)`,
 //! `m.compound_lane_side(…)`, `m.routes_overlap(…)`, `m.roads_follow_in_junction(…)`;
-//! `m.routes_are_in_sequence(…)` and `m.routes_are_opposite(…)` on lane fields), read as plain data for the planner,
-//! which binds the lane fields they name to lanes of the loaded road network or checks the
-//! network against them (`crate::plan`'s `map_lanes`).
+//! `m.routes_are_in_sequence(…)`; `m.routes_are_opposite(…)` on lane fields), read as plain data
+//! for the planner, which binds the lane fields they name to lanes of the loaded road network
+//! or checks the network against them (`crate::plan`'s `map_lanes`).
 //!
 //! The standard calls them constraints on the abstract road network. oscsim generates no
 //! maps: with an OpenDRIVE network loaded, a modifier over lane fields is a **binding** of
 //! those fields to lanes of the network that satisfy it, one over route fields a **check**
 //! that the network (the roads the plan drives on, which every free route field is) does. The
-//! exception is `roads_follow_in_junction`: its junction and road fields are bound through two
-//! lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
-//! plan's roads, and `routes_are_in_sequence` on two `road` fields, bound to two roads of the
-//! plan, one leading onto the other. The others (`routes_are_in_sequence` on other route
-//! fields, `routes_are_opposite` on route fields, `crossing_connects`, and
+//! exceptions are `roads_follow_in_junction`, whose junction and road fields are bound through
+//! two lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
+//! plan's roads, and `routes_are_in_sequence` on route fields, each bound to a road (a
+//! `lane_section` field to a lane section) of the plan through a lane of the modifier's own
+//! (`SeqEnd`). The others (`routes_are_opposite` on route fields, `crossing_connects`, and
 //! `roads_follow_in_junction`'s `junction_route`) are errors at the modifier saying why;
 //! `set_map_file` names the network (`crate::map_file`), `set_traffic_lights_control_file` the
 //! traffic signal controllers (`crate::traffic_lights`).
@@ -91,19 +91,15 @@ pub(crate) enum MapKind {
         /// Whether `containing_road:` was given (a road field: the plan's roads).
         on_plan_roads: bool,
     },
-    /// §8.12.2.2.2 on `road` fields: `succeeding` is a road the lanes of `preceding` lead
-    /// onto, directly or through one connecting road of a junction, both driven in +s (two
-    /// lanes of the modifier's own, `in_lane` on `preceding` and `out_lane` on `succeeding`,
-    /// are what is bound).
-    RoadsInSequence {
-        /// The first road field.
-        preceding: String,
-        /// The road field that follows it.
-        succeeding: String,
-        /// The modifier's own lane on `preceding`.
-        in_lane: String,
-        /// The modifier's own lane on `succeeding`.
-        out_lane: String,
+    /// §8.12.2.2.2 on route fields other than two lanes (roads, lane sections, routes, a lane
+    /// beside one of them): `succeeding` follows `preceding` in +s, through lanes of the
+    /// modifier's own on the ends that are no lane field (`SeqEnd::lane`), which are what is
+    /// bound.
+    RoutesInSequence {
+        /// The first end.
+        preceding: SeqEnd,
+        /// The end that follows it.
+        succeeding: SeqEnd,
     },
     /// §8.12.2.2.3: `out_lane` is reached from `in_lane` through one connecting lane of a
     /// junction, turning the way `direction` names; without `in_lane`/`out_lane` two lanes
@@ -130,6 +126,30 @@ pub(crate) enum MapKind {
         /// `equal`, `start`, `end`, `inside`, `any`, `other`.
         kind: String,
     },
+}
+
+/// One end of `routes_are_in_sequence` on route fields (§8.12.2.2.2).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct SeqEnd {
+    /// The field's path.
+    pub field: String,
+    /// What the field is bound to.
+    pub kind: EndKind,
+    /// The lane the sequence is bound through: the field itself for a lane field, else the
+    /// modifier's own lane on the field's road or lane section (named for messages, unique to
+    /// the modifier).
+    pub lane: String,
+}
+
+/// What an end of `routes_are_in_sequence` is bound to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum EndKind {
+    /// A lane field (`lane`, `compound_lane`): one lane.
+    Lane,
+    /// A `lane_section` field: one lane section of the plan's roads.
+    Section,
+    /// A `road`, `route`, `route_element` or `compound_route` field: one road of the plan.
+    Road,
 }
 
 /// The junction and road arguments of `roads_follow_in_junction` (§8.12.2.2.3).
@@ -303,60 +323,70 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             route2: route("route2")?,
             kind: member("overlap_kind")?.unwrap_or_else(|| "any".to_string()),
         },
-        "routes_are_in_sequence" | "routes_are_opposite"
-            if ["preceding", "route1"]
-                .iter()
-                .filter_map(|p| arg(&args, p))
-                .any(|a| field(ctx, a, true).is_ok()) =>
+        "routes_are_opposite"
+            if arg(&args, "route1").is_some_and(|a| field(ctx, a, true).is_ok()) =>
         {
-            let road = |p: &str| -> Result<bool, Error> {
-                arg(&args, p)
-                    .map(|a| field(ctx, a, false))
-                    .transpose()
-                    .map(|r| r.is_some())
-            };
-            if name == "routes_are_in_sequence" {
-                MapKind::InSequence {
-                    preceding: lane("preceding")?,
-                    succeeding: lane("succeeding")?,
-                    on_plan_roads: road("road")?,
-                }
-            } else {
-                if let Some(k) = member("lateral_overlap")?.filter(|k| k != "never") {
-                    let at = arg(&args, "lateral_overlap").map_or(&site, |a| &a.site);
-                    return Err(at.err(
-                        K::Unsupported,
-                        format!("expected lateral_overlap: never for two lanes driven in opposite directions (each lane of an OpenDRIVE road has one driving direction, so two never share their width), found {k}"),
-                    ));
-                }
-                MapKind::Opposite {
-                    route1: lane("route1")?,
-                    route2: lane("route2")?,
-                    on_plan_roads: road("containing_road")?,
-                }
-            }
-        }
-        "routes_are_in_sequence"
-            if ["preceding", "succeeding"].iter().all(|p| {
-                arg(&args, p)
-                    .and_then(|a| field(ctx, a, false).ok())
-                    .is_some_and(|f| is_type(ctx, &f, "road"))
-            }) =>
-        {
-            if let Some(a) = arg(&args, "road") {
-                return Err(a.site.err(
+            if let Some(k) = member("lateral_overlap")?.filter(|k| k != "never") {
+                let at = arg(&args, "lateral_overlap").map_or(&site, |a| &a.site);
+                return Err(at.err(
                     K::Unsupported,
-                    "expected routes_are_in_sequence(preceding: …, succeeding: …) on road fields without road: (the two are roads themselves), found road:".to_string(),
+                    format!("expected lateral_overlap: never for two lanes driven in opposite directions (each lane of an OpenDRIVE road has one driving direction, so two never share their width), found {k}"),
                 ));
             }
-            let (preceding, succeeding) = (route("preceding")?, route("succeeding")?);
-            let own =
-                |r: &str| format!("{r}'s lane ({name} at {}:{})", site.pos.line, site.pos.col);
-            MapKind::RoadsInSequence {
-                in_lane: own(&preceding),
-                out_lane: own(&succeeding),
-                preceding,
-                succeeding,
+            MapKind::Opposite {
+                route1: lane("route1")?,
+                route2: lane("route2")?,
+                on_plan_roads: arg(&args, "containing_road")
+                    .map(|a| field(ctx, a, false))
+                    .transpose()?
+                    .is_some(),
+            }
+        }
+        "routes_are_in_sequence" => {
+            let end = |p: &str| -> Result<SeqEnd, Error> {
+                let a = need(p)?;
+                if let Ok(f) = field(ctx, a, true) {
+                    return Ok(SeqEnd {
+                        lane: f.clone(),
+                        field: f,
+                        kind: EndKind::Lane,
+                    });
+                }
+                let f = field(ctx, a, false)?;
+                Ok(SeqEnd {
+                    lane: format!("{f}'s lane ({name} at {}:{})", site.pos.line, site.pos.col),
+                    kind: if is_type(ctx, &f, "lane_section") {
+                        EndKind::Section
+                    } else {
+                        EndKind::Road
+                    },
+                    field: f,
+                })
+            };
+            let (preceding, succeeding) = (end("preceding")?, end("succeeding")?);
+            let road = arg(&args, "road")
+                .map(|a| field(ctx, a, false).map(|_| a))
+                .transpose()?;
+            if preceding.kind == EndKind::Lane && succeeding.kind == EndKind::Lane {
+                MapKind::InSequence {
+                    preceding: preceding.field,
+                    succeeding: succeeding.field,
+                    on_plan_roads: road.is_some(),
+                }
+            } else {
+                let roads = [&preceding, &succeeding]
+                    .iter()
+                    .any(|e| e.kind == EndKind::Road);
+                if let (true, Some(a)) = (roads, road) {
+                    return Err(a.site.err(
+                        K::Unsupported,
+                        "expected routes_are_in_sequence(preceding: …, succeeding: …) without road: where one of them is a road or a route (bound to a road itself, and the other on the road after it), found road:".to_string(),
+                    ));
+                }
+                MapKind::RoutesInSequence {
+                    preceding,
+                    succeeding,
+                }
             }
         }
         "roads_follow_in_junction" => {
@@ -429,13 +459,12 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
         }
         other => {
             let why = match other {
-                "routes_are_in_sequence" => "on route fields other than two roads (a free route, compound_route or lane_section field is the roads the plan drives on, one route, so none follows another; lane and road fields are bound); name routes in sequence with map.create_route([…])",
                 "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; two roads are not bound either, since every actor drives the plan's one chain of roads in +s and an actor along the opposite road would leave it; lane fields are bound)",
                 _ => "(a crossing runs across the road, its s from start_lane's centreline to end_lane's, while the plan's routes run along the roads' s and lane fields range over driving lanes: crossings are not bound to the map)",
             };
             return Err(site.err(
                 K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap; routes_are_in_sequence on lane or road fields, routes_are_opposite on lane fields, roads_follow_in_junction, set_traffic_lights_control_file), found {other}(…) {why}"),
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap, routes_are_in_sequence; routes_are_opposite on lane fields, roads_follow_in_junction, set_traffic_lights_control_file), found {other}(…) {why}"),
             ));
         }
     };

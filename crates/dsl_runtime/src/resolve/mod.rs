@@ -45,7 +45,7 @@ use dsl::CheckedProgram;
 pub(crate) use action::Action;
 pub(crate) use call::Call;
 pub(crate) use cond::{Cond, Timed};
-pub(crate) use map_modifiers::{JunctionRoads, MapKind, MapModifier};
+pub(crate) use map_modifiers::{EndKind, JunctionRoads, MapKind, MapModifier, SeqEnd};
 pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
 pub(crate) use position::{Place, PlaceArg};

@@ -127,6 +127,46 @@ fn roads_in_sequence_are_bound_and_driven_from_their_starts() {
 }
 
 #[test]
+fn a_road_and_a_lane_and_two_routes_in_sequence_are_bound_and_driven() {
+    // map_sequence_mixed.osc: a = road 1 (lane -2), l = lane -2 of road 2, r1/r2 = roads 1/2.
+    let r = run("map_sequence_mixed", "road_link_unequal_number_of_lanes0");
+    let s0 = r.at(0.0, "npc").s;
+    assert!((0.0..2.5).contains(&s0), "{s0}");
+    let truck_lane = r.at(0.0, "truck").lane;
+    assert!([-1, -2].contains(&truck_lane), "{truck_lane}");
+    for (t, who, road, lane, s) in [
+        (0.0, "ego", "2", -2, 0.0),
+        (2.5, "ego", "2", -2, 25.0),
+        (5.0, "ego", "2", -2, 50.0),
+        (0.0, "npc", "1", -2, s0),
+        (5.0, "npc", "1", -2, s0 + 50.0),
+        (0.0, "truck", "2", truck_lane, 50.0),
+        (5.0, "truck", "2", truck_lane, 75.0),
+    ] {
+        let p = r.at(t, who);
+        assert_eq!(
+            (p.road.as_str(), p.lane),
+            (road, lane),
+            "{who} at {t} s: {p:?}"
+        );
+        assert!((p.s - s).abs() < Y_TOL, "{who} at {t} s: {p:?}");
+    }
+}
+
+#[test]
+fn lane_sections_in_sequence_are_bound_and_driven_from_the_second_ones_start() {
+    // map_sequence_sections.osc: y = section 1 of road 1 (300 to 500 m).
+    let r = run("map_sequence_sections", "lane_drop");
+    let lane = r.at(0.0, "ego").lane;
+    assert!([-1, -2].contains(&lane), "{lane}");
+    for (t, s) in [(0.0, 300.0), (2.5, 325.0), (5.0, 350.0)] {
+        let p = r.at(t, "ego");
+        assert_eq!((p.road.as_str(), p.lane), ("1", lane), "at {t} s: {p:?}");
+        assert!((p.s - s).abs() < Y_TOL, "at {t} s: {p:?}");
+    }
+}
+
+#[test]
 fn a_traffic_lights_control_file_cycles_the_maps_signals() {
     // map_traffic_lights.osc: L go [0, 4) s, attention [4, 5) s, stop [5, 10) s, then again.
     let lowered = lower_at(
@@ -225,6 +265,18 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "8:63",
     );
     refused(
+        "err_map_sequence_roads",
+        "straight",
+        "expected lanes of the map for `a's lane (routes_are_in_sequence at 10:5)`, `b's lane (routes_are_in_sequence at 10:5)` that satisfy routes_are_in_sequence(…), found none on roads 1",
+        "10:5",
+    );
+    refused(
+        "err_map_sequence_road_arg",
+        "road_link_unequal_number_of_lanes0",
+        "expected routes_are_in_sequence(preceding: …, succeeding: …) without road: where one of them is a road or a route (bound to a road itself, and the other on the road after it), found road:",
+        "11:65",
+    );
+    refused(
         "err_map_roads_sequence_off",
         "road_link_unequal_number_of_lanes0",
         "expected `npc` on route `a` (road 1 bound by map.routes_are_in_sequence(…) at ",
@@ -265,12 +317,6 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
 
 #[test]
 fn modifiers_of_the_scenario_the_runtime_does_not_run_say_why() {
-    refused(
-        "err_map_sequence_roads",
-        "straight",
-        "found routes_are_in_sequence(…) on route fields other than two roads (a free route, compound_route or lane_section field is the roads the plan drives on, one route, so none follows another",
-        "8:5",
-    );
     refused(
         "err_map_traffic_lights",
         "red_light",
