@@ -344,7 +344,7 @@ fn vehicle(e: &Entity) -> Vehicle {
 }
 
 /// One ManeuverGroup `PATH/ACTOR` per actor of `actions`, in the order they first act, with one
-/// Event per action (starting with the Act, or at an absolute time).
+/// Event per action (starting with the Act, at an absolute time, or on its trigger).
 fn actor_groups(path: &str, actions: &[Planned], pos: &SourcePos) -> Vec<ManeuverGroup> {
     let mut actors: Vec<&str> = Vec::new();
     for a in actions {
@@ -369,11 +369,19 @@ fn actor_groups(path: &str, actions: &[Planned], pos: &SourcePos) -> Vec<Maneuve
                             kind: ActionKind::Private(a.action.clone()),
                             pos: pos.clone(),
                         }],
-                        start_trigger: a.at.map(|t| Trigger {
-                            condition_groups: vec![ConditionGroup {
-                                conditions: vec![sim_time(t, Rule::GreaterOrEqual, pos.clone())],
-                            }],
-                        }),
+                        start_trigger: match &a.at {
+                            Some(When::At(t)) => Some(Trigger {
+                                condition_groups: vec![ConditionGroup {
+                                    conditions: vec![sim_time(
+                                        *t,
+                                        Rule::GreaterOrEqual,
+                                        pos.clone(),
+                                    )],
+                                }],
+                            }),
+                            Some(w) => trigger_of(w),
+                            None => None,
+                        },
                         pos,
                     }
                 })

@@ -1,6 +1,6 @@
 //! The OpenSCENARIO 1.x conditions the pipeline builds its triggers from (OpenSCENARIO 1.3
-//! §7.5 conditions): a storyboard element's state, the simulation time, and oscsim's periodic
-//! SimulationTimeEvery.
+//! §7.5 conditions): a storyboard element's state (an Act's, an Event's, an Action's), the
+//! simulation time, and oscsim's periodic SimulationTimeEvery.
 
 use scenario::{
     ByValueCondition, Condition, ConditionEdge, ConditionKind, Rule, StoryboardElementState,
@@ -14,17 +14,7 @@ pub(crate) fn act_state(
     delay: f64,
     pos: scenario::SourcePos,
 ) -> Condition {
-    Condition {
-        name: format!("{act}:{}", state.as_str()),
-        condition_edge: ConditionEdge::None,
-        delay,
-        kind: ConditionKind::ByValue(ByValueCondition::StoryboardElementState {
-            storyboard_element_type: StoryboardElementType::Act,
-            storyboard_element_ref: act.to_string(),
-            state,
-        }),
-        pos,
-    }
+    element_state((StoryboardElementType::Act, act), state, delay, pos)
 }
 
 /// A condition on the state of the storyboard Event `event` (an action's completion).
@@ -33,13 +23,33 @@ pub(crate) fn event_state(
     state: StoryboardElementState,
     pos: scenario::SourcePos,
 ) -> Condition {
+    element_state((StoryboardElementType::Event, event), state, 0.0, pos)
+}
+
+/// A condition on the state of the storyboard Action `action`: its `endTransition` is its own
+/// end (a target reached), where its Event also completes when the action is stopped.
+pub(crate) fn action_state(
+    action: &str,
+    state: StoryboardElementState,
+    pos: scenario::SourcePos,
+) -> Condition {
+    element_state((StoryboardElementType::Action, action), state, 0.0, pos)
+}
+
+/// A StoryboardElementStateCondition on the element `name` of type `kind`.
+fn element_state(
+    (kind, name): (StoryboardElementType, &str),
+    state: StoryboardElementState,
+    delay: f64,
+    pos: scenario::SourcePos,
+) -> Condition {
     Condition {
-        name: format!("{event}:{}", state.as_str()),
+        name: format!("{name}:{}", state.as_str()),
         condition_edge: ConditionEdge::None,
-        delay: 0.0,
+        delay,
         kind: ConditionKind::ByValue(ByValueCondition::StoryboardElementState {
-            storyboard_element_type: StoryboardElementType::Event,
-            storyboard_element_ref: event.to_string(),
+            storyboard_element_type: kind,
+            storyboard_element_ref: name.to_string(),
             state,
         }),
         pos,

@@ -78,7 +78,7 @@ impl Planner<'_> {
         });
         out.push(Planned {
             entity: target.to_string(),
-            at: Some(t + len / 2.0),
+            at: Some(When::At(t + len / 2.0)),
             name: names.1,
             action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(ve)),
             site: m.site.clone(),

@@ -10,7 +10,7 @@
 //! | `keep_speed()` | SpeedAction, step, to its own speed (it ends whatever controlled the speed) | with its phase |
 //! | `remain_stationary()` | `keep_position()` (standing from its start) and, after its first phase, a step to 0 m/s | with its phase |
 //! | `assign_acceleration(target)` | AccelerationAction, step | at once; the acceleration holds |
-//! | `change_acceleration(target, rate_profile, rate_peak)` | AccelerationAction: `smooth` sinusoidal, `asap` a step, else linear; over the `duration` (or the phase's length), at `rate_peak` (m/s³), else at [`DEFAULT_JERK`] | when the target acceleration is reached; it holds |
+//! | `change_acceleration(target, rate_profile, rate_peak)` | AccelerationAction: `smooth` sinusoidal, `asap` a step, else linear; over the `duration` (or the phase's length), at `rate_peak` (m/s³), else at [`DEFAULT_JERK`] (at a rate after a run-time condition: an AccelerationAction ending at its target from the acceleration the engine finds, then a step AccelerationAction holding it) | when the target acceleration is reached; it holds |
 //! | `keep_acceleration()` | AccelerationAction keeping the acceleration it starts with | with its phase; it holds |
 //!
 //! An acceleration an action sets holds after the action ends, until another action or modifier
@@ -21,8 +21,8 @@
 use std::f64::consts::FRAC_PI_2;
 
 use scenario::{
-    DynamicsShape, LongitudinalAction, PrivateAction, SpeedTarget, SpeedTargetValueType,
-    TransitionDynamics,
+    ConditionGroup, DynamicsShape, LongitudinalAction, PrivateAction, SpeedTarget,
+    SpeedTargetValueType, StoryboardElementState, TransitionDynamics, Trigger,
 };
 
 use super::action_args::{missing, number, positive, profile, rate, timed, Profile};
@@ -30,6 +30,7 @@ use super::planner::Planner;
 use super::types::{Planned, When, MAX_ACCELERATION, MAX_SPEED};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{arg, Action, At, Invoke, ModKind, Phase};
+use crate::trigger::action_state;
 
 /// Acceleration of a speed change that gives neither a rate nor a duration (m/s²): the largest
 /// average acceleration ISO 15622 allows an adaptive cruise control, a comfortable change.
@@ -231,10 +232,13 @@ impl Planner<'_> {
                 // run-time condition is the engine's; over a duration it does not (the engine
                 // changes from the acceleration it finds, and the plan records no track then).
                 let Some(span) = span else {
-                    return Err(p.site.err(
-                        K::Unsatisfiable,
-                        "expected a phase start the plan knows for change_acceleration(…) at a rate (the acceleration it starts from), found one after a run-time condition; give it a duration",
-                    ));
+                    return self.change_acceleration_at_run_time(
+                        p,
+                        (target, v0, a1),
+                        dynamics,
+                        name,
+                        persist,
+                    );
                 };
                 let a0 = a0.unwrap_or(0.0);
                 persist.push(planned(
@@ -257,6 +261,53 @@ impl Planner<'_> {
             }
             _ => Ok(None),
         }
+    }
+
+    /// `change_acceleration` to `a1` at a rate (`dynamics`) in a phase of `target` (speed `v0`
+    /// as the plan last knows it) that starts on a run-time condition: the change lasts
+    /// |a1 − a0|·f′max/j from the acceleration a0 the engine finds then. The engine's
+    /// AccelerationAction ending at its target (`ends_at_target`) ramps it and ends the phase
+    /// when it ends (its Event complete); the held acceleration is a step AccelerationAction to
+    /// `a1` that starts when the ramp ends by reaching it (the Action's endTransition: a ramp
+    /// another longitudinal action replaces hands nothing on). Both go on after the phase
+    /// (`persist`), as at a known start.
+    fn change_acceleration_at_run_time(
+        &mut self,
+        p: &Phase,
+        (target, v0, a1): (&str, f64, f64),
+        dynamics: TransitionDynamics,
+        name: &mut dyn FnMut(&str) -> String,
+        persist: &mut Vec<Planned>,
+    ) -> Result<Option<When>, Error> {
+        let ramp = name("change_acceleration");
+        persist.push(Planned::with_phase(
+            target,
+            ramp.clone(),
+            PrivateAction::Longitudinal(LongitudinalAction::Acceleration {
+                target: Some(a1),
+                dynamics,
+                ends_at_target: true,
+            }),
+            &p.site,
+        ));
+        let mut hold = Planned::with_phase(
+            target,
+            name("hold_acceleration"),
+            acceleration(Some(a1), timed(DynamicsShape::Step, 0.0)),
+            &p.site,
+        );
+        hold.at = Some(When::Dyn(Trigger {
+            condition_groups: vec![ConditionGroup {
+                conditions: vec![action_state(
+                    &ramp,
+                    StoryboardElementState::EndTransition,
+                    p.site.pos.clone(),
+                )],
+            }],
+        }));
+        persist.push(hold);
+        self.hold_acceleration(target, None, v0, a1, 0.0, 0.0)?;
+        Ok(Some(self.ends(None, 0.0, &ramp, p)))
     }
 
     /// Plans `target`'s speed under an acceleration that changes from `a0` to `a1` over `span`
@@ -347,9 +398,13 @@ fn step_speed(target: SpeedTarget) -> PrivateAction {
     })
 }
 
-/// An AccelerationAction.
+/// An AccelerationAction that holds its target.
 fn acceleration(target: Option<f64>, dynamics: TransitionDynamics) -> PrivateAction {
-    PrivateAction::Longitudinal(LongitudinalAction::Acceleration { target, dynamics })
+    PrivateAction::Longitudinal(LongitudinalAction::Acceleration {
+        target,
+        dynamics,
+        ends_at_target: false,
+    })
 }
 
 /// The `target` speed of `inv`: mandatory, within 0 m/s and the vehicle's maximum.

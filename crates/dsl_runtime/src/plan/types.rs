@@ -108,8 +108,9 @@ pub(crate) struct PhasePlan {
 pub(crate) struct Planned {
     /// The entity.
     pub entity: String,
-    /// Absolute start time, when it does not start with the phase.
-    pub at: Option<f64>,
+    /// When it starts, if not with its phase: at an absolute time, or on a trigger (the end
+    /// of another action's Event).
+    pub at: Option<When>,
     /// Its name.
     pub name: String,
     /// The action.

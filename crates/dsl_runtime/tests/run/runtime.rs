@@ -463,3 +463,29 @@ fn a_lateral_position_beside_another_actor_at_the_end_after_an_until_is_the_engi
         "{error}"
     );
 }
+
+/// runtime_change_acceleration_rate.osc's comment, by hand: from −1 m/s² at 3.40 s to −3 m/s²
+/// at 1 m/s³, 2 s, the phase ending at 5.40 s where the target is reached; −3 m/s² held after.
+#[test]
+fn change_acceleration_at_a_rate_after_an_until_ends_when_the_engine_reaches_its_target() {
+    let r = run("runtime_change_acceleration_rate", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.settle", 3.35, 3.4),
+            ("do.brake", 3.4, 5.4),
+            ("do.after", 5.4, 6.4),
+        ],
+    );
+    for (t, v) in [
+        (3.35, 20.0),
+        (3.4, 19.95),
+        (4.4, 18.45),
+        (5.4, 15.95),
+        (6.4, 12.95),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
+    }
+}

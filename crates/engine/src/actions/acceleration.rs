@@ -12,7 +12,13 @@
 //! per step like SpeedAction's (semantics-pitfalls #9). The action ends when the speed reaches
 //! 0 m/s while the acceleration pushes below it (a vehicle brakes to a stop, it does not
 //! reverse) or the maximum speed while it pushes above; otherwise it runs until a later
-//! longitudinal action replaces it (§7.5.1 control domains) or its Act ends.
+//! longitudinal action replaces it (§7.5.1 control domains) or its Act ends. With
+//! `ends_at_target` it ends in the step whose end completes the transition (τ ≥ T, within
+//! [`crate::tolerance::TIME`]; a step shape or no change: its first step), the speed of
+//! that step's end set as above, and the storyboard sees it end in that step
+//! ([`AccelerationState::completes_by`], as a SpeedAction's): DSL 2.1 §8.8.2.14
+//! `change_acceleration` at a rate after a run-time start, whose T = |a₁ − a₀|·f′max/j
+//! depends on the a₀ the engine finds.
 
 use scenario::TransitionDynamics;
 
@@ -33,6 +39,8 @@ pub(crate) struct AccelerationState {
     span: Span,
     start_speed: f64,
     start_time: f64,
+    /// End when the transition is over (else hold the target).
+    ends_at_target: bool,
 }
 
 impl AccelerationState {
@@ -40,6 +48,20 @@ impl AccelerationState {
     /// not stepped yet.
     pub(crate) fn first_if_started_at(&self, now: f64) -> Option<f64> {
         (self.start_time == now).then(|| acceleration(self, 0.0))
+    }
+
+    /// True when an action that ends at its target completes its transition by `t` (the
+    /// storyboard sees it end in the step whose motion completes it, as a SpeedAction's).
+    pub(crate) fn completes_by(&self, t: f64) -> bool {
+        self.ends_at_target && over(self.span, t - self.start_time)
+    }
+}
+
+/// Whether a transition over `span` is over `tau` s after its start.
+fn over(span: Span, tau: f64) -> bool {
+    match span {
+        Span::Time(d) => tau >= d - crate::tolerance::TIME,
+        _ => true,
     }
 }
 
@@ -51,7 +73,7 @@ pub(crate) fn start(
     world: &mut World,
     actor: EntityId,
     (target, replaced): (Option<f64>, Option<f64>),
-    dynamics: &TransitionDynamics,
+    (dynamics, ends_at_target): (&TransitionDynamics, bool),
     now: f64,
 ) -> Part {
     let e = world.entity(actor);
@@ -64,6 +86,7 @@ pub(crate) fn start(
         span: span(dynamics, to - from),
         start_speed: e.speed,
         start_time: now,
+        ends_at_target,
     })
 }
 
@@ -94,13 +117,18 @@ pub(crate) fn step(
         }
         _ => s.to * tau,
     };
-    set_speed(
+    let status = set_speed(
         world,
         actor,
         s.start_speed + gained,
         acceleration(s, tau),
         dt,
-    )
+    );
+    if s.ends_at_target && over(s.span, tau) {
+        ActionStatus::Ended
+    } else {
+        status
+    }
 }
 
 /// Sets `actor`'s speed for a step of `dt` s to `wanted`, bounded by its Performance, while

@@ -380,9 +380,17 @@ impl Host<'_> {
                     LongitudinalAction::LongitudinalDistance { .. } => {
                         distance::start_longitudinal(self.world, actor, l, pos)
                     }
-                    LongitudinalAction::Acceleration { target, dynamics } => Ok(
-                        acceleration::start(self.world, actor, (*target, replaced), dynamics, time),
-                    ),
+                    LongitudinalAction::Acceleration {
+                        target,
+                        dynamics,
+                        ends_at_target,
+                    } => Ok(acceleration::start(
+                        self.world,
+                        actor,
+                        (*target, replaced),
+                        (dynamics, *ends_at_target),
+                        time,
+                    )),
                     LongitudinalAction::RelativeAcceleration {
                         entity_ref,
                         value,
@@ -739,6 +747,7 @@ pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> Action
     for part in &slot.parts {
         let finishing = match part {
             Part::Speed(s) => s.completes_by(step_end),
+            Part::Acceleration(s) => s.completes_by(step_end),
             Part::Profile(s) => s.completes_by(step_end),
             Part::Lateral(s) => s.completes_by(step_end),
             Part::Trajectory(s) => s.completes_by(step_end),

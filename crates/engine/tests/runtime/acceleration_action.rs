@@ -39,7 +39,16 @@ pub(crate) fn speed_shapes_with(action: LongitudinalAction) -> Scenario {
 
 /// Runs speed_shapes.xosc with its action "Speed" made an AccelerationAction.
 fn run(target: Option<f64>, dynamics: TransitionDynamics) -> (Recorder, Vec<EventRecord>) {
-    let scenario = speed_shapes_with(LongitudinalAction::Acceleration { target, dynamics });
+    run_action(LongitudinalAction::Acceleration {
+        target,
+        dynamics,
+        ends_at_target: false,
+    })
+}
+
+/// Runs speed_shapes.xosc with its action "Speed" made `action`.
+fn run_action(action: LongitudinalAction) -> (Recorder, Vec<EventRecord>) {
+    let scenario = speed_shapes_with(action);
     let network = load::road_network(&scenario).expect("road loads");
     let mut engine = Engine::new(&scenario, network, EngineConfig::default()).expect("builds");
     let (mut frames, mut events) = (Recorder::default(), Vec::new());
@@ -105,6 +114,30 @@ fn a_sinusoidal_change_brakes_to_a_stop_and_ends_there() {
     );
 }
 
+/// `ends_at_target`: from 0 to 2 m/s² at a jerk of 1 m/s³ from t = 1 s (T = 2 s) the action
+/// ends in the step 2.95 … 3.00 s, at v = 10 + T²/2 = 12 m/s; the storyboard logs its end in
+/// that step (2.95 s), whose motion completes it, as a SpeedAction's. Nothing holds the
+/// acceleration after it: Ego keeps 12 m/s (the default controller), 12 m/s at 5 s where the
+/// held change gives 16 m/s.
+#[test]
+fn a_change_that_ends_at_its_target_ends_when_the_transition_is_over() {
+    let (frames, events) = run_action(LongitudinalAction::Acceleration {
+        target: Some(2.0),
+        dynamics: dynamics(DynamicsShape::Linear, DynamicsDimension::Rate, 1.0),
+        ends_at_target: true,
+    });
+    for (t, v) in [
+        (2.0, 10.5),
+        (2.95, 10.0 + 1.95 * 1.95 / 2.0),
+        (3.0, 12.0),
+        (5.0, 12.0),
+    ] {
+        assert_abs_diff_eq!(frames.at("Ego", t).speed, v, epsilon = EXACT);
+    }
+    let end = end_time(&events, "Speed").expect("ends");
+    assert_abs_diff_eq!(end, 2.95, epsilon = EXACT);
+}
+
 /// No target: the acceleration at the start (0: Ego cruises) is kept.
 #[test]
 fn without_a_target_the_acceleration_at_the_start_is_kept() {
@@ -125,6 +158,7 @@ fn a_change_replacing_a_step_in_its_step_starts_from_the_step() {
     let mut scenario = speed_shapes_with(LongitudinalAction::Acceleration {
         target: Some(2.0),
         dynamics: dynamics(DynamicsShape::Step, DynamicsDimension::Time, 0.0),
+        ends_at_target: false,
     });
     let event =
         &mut scenario.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0];
@@ -134,6 +168,7 @@ fn a_change_replacing_a_step_in_its_step_starts_from_the_step() {
         LongitudinalAction::Acceleration {
             target: Some(0.0),
             dynamics: dynamics(DynamicsShape::Linear, DynamicsDimension::Rate, 2.5),
+            ends_at_target: false,
         },
     ));
     event.actions.push(change);

@@ -158,12 +158,19 @@ pub enum LongitudinalAction {
     /// `dynamics` (`time`: over that duration; `rate`: at that peak jerk, m/s³; `step`: at
     /// once), then holds. The speed follows it; the action ends when the speed reaches 0 or
     /// the vehicle's maximum with the acceleration pushing past it, and otherwise runs until a
-    /// later longitudinal action replaces it.
+    /// later longitudinal action replaces it (or, with `ends_at_target`, when the transition
+    /// is over).
     Acceleration {
         /// The acceleration to reach (m/s²); `None`: keep the one at the start.
         target: Option<f64>,
         /// How it is reached.
         dynamics: TransitionDynamics,
+        /// The action ends in the step that completes the transition, the target reached
+        /// (ASAM OpenSCENARIO DSL 2.1 §8.8.2.14: `change_acceleration` ends when its target
+        /// acceleration is reached),
+        /// instead of holding it: for a change whose length depends on the acceleration the
+        /// engine finds at its start, so that the end is the engine's to tell.
+        ends_at_target: bool,
     },
     /// oscsim's RelativeAccelerationAction, an action with no XML form (the DSL runtime writes
     /// it for ASAM OpenSCENARIO DSL 2.1 §8.9 `acceleration(…, faster_than/slower_than/same_as:
