@@ -3,13 +3,20 @@
 //! vehicle group (§8.7.18, non-normative: it declares no group actions; oscsim's library does,
 //! in `groups.osc`).
 //!
+//! The part of the path the group follows is the part between `start_offset` and `end_offset`
+//! (m along the path as given, both 0 unless given): member 0 enters the path there, where it
+//! must be at the action's start, and leaves it there; every member enters and leaves its own
+//! path (below) at the points that match them, so each member's action ends on its own when it
+//! has left its path, as the actor's form ends. A polyline's part is exact (its vertices kept);
+//! a smooth path's part is its points at most [`STEP`] m apart (`path_part`).
+//!
 //! A single-lane group (a column) follows the path in file: every member drives the same path,
-//! entering it where member 0 does (the path's start, where member 0 must be), its spacing
-//! kept. Member i, d m behind member 0 along its lane at the action's start, gets its own
-//! straight lead-in along its lane prepended to the path: points on its lane's centre every
-//! [`LEAD_IN_STEP`] m of s or less, from its own place to the path's start. The engine's
-//! FollowTrajectoryAction then starts it where it is (a pursuit from its own pose, or the
-//! placement at the trajectory's start), never with a cut across to the path's first point.
+//! entering it where member 0 does, its spacing kept. Member i, d m behind member 0 along its
+//! lane at the action's start, gets its own lead-in along its lane prepended to the path:
+//! points on its lane's centre every [`STEP`] m of s or less, from its own place to where member
+//! 0 enters the path. The engine's FollowTrajectoryAction then starts it where it is (a pursuit
+//! from its own pose, or the placement at the trajectory's start), never with a cut across to
+//! the path's first point.
 //!
 //! - untimed (`follow_path`, `replay_path`): each member at its own speed along its path;
 //! - timed (`follow_trajectory`, `replay_trajectory`): member i's time stamps are member 0's
@@ -17,28 +24,33 @@
 //!   are reached at d_k / v₀ after the first stamp (d_k along the lead-in): it passes each
 //!   point of the trajectory when member 0 did plus its headway d / v₀.
 //!
-//! A group spread over several lanes (a common-route group): each member's path is member 0's
-//! moved across the road by its offset from member 0 in the road frame (each point to the same
-//! s at t + the offset), and, in a row behind, its lead-in as above. Where the road is straight
-//! under the path that move is one translation: the same path beside member 0's, of the same
-//! length and time stamps. Where the road bends under it the points would move by different
-//! vectors, and the path moved is no parallel of member 0's (a bend's parallel curve is longer
-//! on its outside and shorter inside, a smooth curve's parallel is no cubic, a corner's is an
-//! arc): the members would not keep their places, so that is an error naming the alternatives
-//! (a single-lane group, or each member its own path: `g.vehicles[i].follow_path(…)`).
+//! A group spread over several lanes (members beside member 0 at the start) moves as a block:
+//! member i's path is member 0's moved to its place in the formation in the road frame, each
+//! point at road coordinates (s, t) to (s + Δs, t + Δt), (Δs, Δt) member i's offset from member
+//! 0 at the start, with member 0's time stamps: at every time each member is where member 0 is
+//! moved by its offset, so the block keeps its shape along the road. Where the move is one
+//! translation (the road straight under the path and its moved copy) that is the path itself
+//! moved, of any shape, exact. Where the road bends, the moved path is no parallel of member
+//! 0's (a bend's parallel is longer outside, shorter inside; a smooth curve's parallel is no
+//! cubic), so it is member 0's path's points at most [`STEP`] m apart, each moved: the polyline
+//! through them leaves the moved curve by at most its sagitta h²κ/8, 1.4 mm for steps of 1.03 m
+//! on lane −3's radius of 108.75 m on `bend.xodr`. A member that is faster outside a bend (its
+//! path longer in the same time) is checked against the vehicle's speed like any trajectory; a
+//! moved point off the plan's roads is an error at the path.
 //!
-//! A start the plan does not know (after a run-time condition) and `start_offset` /
-//! `end_offset` (member 0 would enter or leave the path where the others do not) are errors.
+//! A start the plan does not know (after a run-time condition) is an error.
 
+use super::path_part::{cut, samples, Samples};
 use super::path_shape::{segment_lengths, Pose2};
 use super::planner::Planner;
 use super::types::{LATERAL_TOLERANCE, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{arg, Action, Invoke, Phase, Place, PlaceArg};
+use crate::resolve::{Action, Invoke, Phase, Place, PlaceArg};
 
-/// The largest step in s between the points of a member's lead-in along its lane (m): a chord
-/// of 1 m on a lane of radius R leaves it by 1/(8R) m, 2.5 mm at R = 50 m.
-const LEAD_IN_STEP: f64 = 1.0;
+/// The largest step between the points of a member's lead-in along its lane (in s), of a
+/// smooth path's part and of a path moved round a bend (along member 0's path) (m): a chord of
+/// h on a curve of radius R leaves it by h²/(8R), 2.5 mm for 1 m at R = 50 m.
+const STEP: f64 = 1.0;
 
 /// One member's share of a group's path action, at a start the plan knows.
 #[derive(Debug, Clone, Copy)]
@@ -51,7 +63,7 @@ pub(super) struct Member {
 
 impl Planner<'_> {
     /// Checks that `inv`, a path or trajectory action on group `inv.actor`, can run: a start
-    /// the plan knows, no offsets.
+    /// the plan knows.
     pub(super) fn check_group_path(
         &self,
         p: &Phase,
@@ -65,21 +77,14 @@ impl Planner<'_> {
                 format!("expected a start the plan knows for {}(…) on group `{g}` (its members enter the path one behind the other from their places then), found one after a run-time condition", inv.action),
             ));
         }
-        for param in ["start_offset", "end_offset"] {
-            if let Some(a) = arg(&inv.args, param) {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    format!("expected no {param} in {}(…) on group `{g}` (its members enter the path where member 0 does, at its start, and leave it at its end), found one; give the path the points to follow, or each member its own (`{g}.vehicles[i].{}(…)`)", inv.action, inv.action),
-                ));
-            }
-        }
         Ok(())
     }
 
-    /// The path or trajectory `member` of a group follows when the group follows `given`: its
-    /// lead-in along its lane from its place at `t0` to the path's start, where member 0 must
-    /// be, then the path; a trajectory's stamps shifted by the lead-in's length over the
-    /// group's speed. `None` for member 0 (the path itself).
+    /// The path or trajectory `member` of a group follows when the group follows `given`:
+    /// the part between the offsets; for a member of a column, its lead-in along its lane from
+    /// its place at `t0` to where member 0 enters the path, a trajectory's stamps shifted by
+    /// the lead-in's length over the group's speed; for a member of a group over several
+    /// lanes, the part moved by its offset in the road frame. `None` where that is `given`.
     pub(super) fn column_place(
         &self,
         inv: &Invoke,
@@ -97,46 +102,65 @@ impl Planner<'_> {
                 points,
                 times,
                 smooth,
-            } => (points, Some(times), *smooth),
+            } => (points, Some(times.as_slice()), *smooth),
             _ => return Ok(None),
         };
-        let Some(&(x0, y0, _)) = points.first() else {
-            return Ok(None);
+        if points.len() < 2 || times.is_some_and(|t| t.len() != points.len()) {
+            return Ok(None); // the actor's form names what is wrong
+        }
+        // The part between the offsets, which every member follows.
+        let c = cut(inv, points, smooth, true)?;
+        let part: Option<Samples> = (c.start_offset > 0.0 || c.end_offset > 0.0).then(|| {
+            let step = if smooth { STEP } else { f64::INFINITY };
+            let to = c.start_offset + c.length;
+            samples(points, times, smooth, (c.start_offset, to), step)
+        });
+        let (points, times, smooth) = match &part {
+            Some((p, t)) => (p.as_slice(), t.as_deref(), false),
+            None => (points.as_slice(), times, smooth),
         };
-        // Member 0's place at the start: the path's start, where every member enters it.
+        let &(x0, y0, _) = &points[0];
+        // Member 0's place at the start: where every member enters the path.
         let (s, t) = (self.s_at(target, t0), self.t_at(target, t0));
         let (s_lead, t_lead) = (s - ds, t - dt);
         let lead = self.road.world_pose(s_lead, t_lead);
         let away = lead.map_or(f64::INFINITY, |(x, y, _)| (x - x0).hypot(y - y0));
         if away > POSITION_TOLERANCE {
+            let at = if c.start_offset > 0.0 {
+                format!("{:.2} m along the path", c.start_offset)
+            } else {
+                "at the start of the path".to_string()
+            };
             return Err(given.site.err(
                 K::Unsatisfiable,
-                format!("expected `{g}.vehicles[0]` at the start of the path when group `{g}` follows it in file (every member enters it there), found it {away:.2} m from ({x0:.2}, {y0:.2})"),
+                format!("expected `{g}.vehicles[0]` {at} when group `{g}` follows it (every member enters it where member 0 does), found it {away:.2} m from ({x0:.2}, {y0:.2})"),
             ));
         }
-        // A member beside member 0: the path moved across the road by its offset.
-        let moved = (dt.abs() > LATERAL_TOLERANCE)
-            .then(|| self.moved_across(inv, given, points, (target, dt)))
-            .transpose()?;
-        let points = moved.as_deref().unwrap_or(points);
-        if ds.abs() <= POSITION_TOLERANCE {
-            return Ok(moved.map(|points| PlaceArg {
-                place: match times {
-                    None => Place::Path { points, smooth },
-                    Some(times) => Place::Trajectory {
-                        points,
-                        times: times.clone(),
-                        smooth,
-                    },
+        let place = |points: Vec<Pose2>, times: Option<Vec<f64>>, smooth: bool| PlaceArg {
+            place: match times {
+                None => Place::Path { points, smooth },
+                Some(times) => Place::Trajectory {
+                    points,
+                    times,
+                    smooth,
                 },
-                ..given.clone()
-            }));
+            },
+            ..given.clone()
+        };
+        let whole = |part: Option<Samples>| part.map(|(p, t)| place(p, t, false));
+        if ds.abs() <= POSITION_TOLERANCE && dt.abs() <= LATERAL_TOLERANCE {
+            return Ok(whole(part)); // member 0
+        }
+        if self.members_beside(g, t0) {
+            let ((p, t), smooth) =
+                self.moved_in_formation(inv, given, (points, times, smooth), (target, ds, dt))?;
+            return Ok(Some(place(p, t, smooth)));
         }
         // The lead-in: the member's lane centre (its own t) from its s towards member 0's,
-        // facing the lane's driving direction, the path's start its last point.
+        // facing the lane's driving direction, member 0's entry point its last point.
         let lane = self.track(target).lane(t0);
         let turn = if lane > 0 { std::f64::consts::PI } else { 0.0 };
-        let n = ((s_lead - s).abs() / LEAD_IN_STEP).ceil().max(1.0) as usize;
+        let n = ((s_lead - s).abs() / STEP).ceil().max(1.0) as usize;
         let mut lead_in: Vec<Pose2> = Vec::with_capacity(n + points.len());
         for k in 0..n {
             let at = s + (s_lead - s) * k as f64 / n as f64;
@@ -157,76 +181,83 @@ impl Planner<'_> {
                 Some(*d)
             })
             .collect();
-        let place = match times {
-            None => Place::Path {
-                points: lead_in,
-                smooth,
-            },
-            Some(times) => {
-                if group_speed <= 0.0 {
-                    return Err(given.site.err(
-                        K::Unsatisfiable,
-                        format!("expected group `{g}` moving at the start of {}(…) (member i's time stamps are shifted by its distance behind member 0 over the group's speed), found it standing", inv.action),
-                    ));
-                }
-                // along[first - 1] is the lead-in's length: the member's distance to the start.
-                let t_first = times[0];
-                let shift = along[first - 1] / group_speed;
-                let mut stamps = Vec::with_capacity(lead_in.len());
-                stamps.push(t_first);
-                stamps.extend(along[..first - 1].iter().map(|d| t_first + d / group_speed));
-                stamps.extend(times.iter().map(|t| t + shift));
-                Place::Trajectory {
-                    points: lead_in,
-                    times: stamps,
-                    smooth,
-                }
-            }
+        let Some(times) = times else {
+            return Ok(Some(place(lead_in, None, smooth)));
         };
-        Ok(Some(PlaceArg {
-            place,
-            ..given.clone()
-        }))
+        if group_speed <= 0.0 {
+            return Err(given.site.err(
+                K::Unsatisfiable,
+                format!("expected group `{g}` moving at the start of {}(…) (member i's time stamps are shifted by its distance behind member 0 over the group's speed), found it standing", inv.action),
+            ));
+        }
+        // along[first - 1] is the lead-in's length: the member's distance to the start.
+        let t_first = times[0];
+        let shift = along[first - 1] / group_speed;
+        let mut stamps = Vec::with_capacity(lead_in.len());
+        stamps.push(t_first);
+        stamps.extend(along[..first - 1].iter().map(|d| t_first + d / group_speed));
+        stamps.extend(times.iter().map(|t| t + shift));
+        Ok(Some(place(lead_in, Some(stamps), smooth)))
     }
-}
 
-impl Planner<'_> {
-    /// `points` moved `dt` m across the road (`target`'s offset from member 0): each point to
-    /// the same s at t + dt. Where the road is straight under the path that is one translation,
-    /// the same path beside member 0's; where it bends, the points would move by different
-    /// vectors and the path would be no parallel of member 0's: an error.
-    fn moved_across(
+    /// Whether some member of group `g` is beside member 0 (t differs) at `t0`: a group over
+    /// several lanes, which moves as a block.
+    fn members_beside(&self, g: &str, t0: f64) -> bool {
+        let Some(members) = self.groups.get(g) else {
+            return false;
+        };
+        let t_lead = self.t_at(&members[0], t0);
+        members
+            .iter()
+            .any(|m| (self.t_at(m, t0) - t_lead).abs() > LATERAL_TOLERANCE)
+    }
+
+    /// The part `points` (with `times`) of member 0 moved to `target`'s place in the
+    /// formation, (ds, dt) from member 0 in the road frame: the part translated where every
+    /// point moves by one vector, else its points at most [`STEP`] m apart each moved, a
+    /// polyline with member 0's stamps.
+    fn moved_in_formation(
         &self,
         inv: &Invoke,
         given: &PlaceArg,
-        points: &[Pose2],
-        (target, dt): (&str, f64),
-    ) -> Result<Vec<Pose2>, Error> {
+        (points, times, smooth): (&[Pose2], Option<&[f64]>, bool),
+        (target, ds, dt): (&str, f64, f64),
+    ) -> Result<(Samples, bool), Error> {
         let g = &inv.actor;
-        let bends = || {
+        let off = |x: f64, y: f64| {
             given.site.err(
-                K::Unsupported,
-                format!("expected the road straight under the path when group `{g}`, spread over several lanes, follows it in {}(…) (each member's path is member 0's moved across the road by its offset, `{target}` {dt:.2} m), found it bending there: the path moved by its offset in the road frame is no parallel of member 0's (a bend's parallel is longer outside, shorter inside; a smooth curve's parallel is no cubic), so the members would not keep their places; use a single-lane group, or give each member its own (`{g}.vehicles[i].{}(…)`)", inv.action, inv.action),
+                K::Unsatisfiable,
+                format!("expected the path moved to `{target}`'s place in group `{g}` ({ds:.2} m along the road, {dt:.2} m across it from member 0) on the plan's roads, found the point ({x:.2}, {y:.2}) moved off them"),
             )
         };
-        let mut by: Option<(f64, f64)> = None;
-        let mut out = Vec::with_capacity(points.len());
-        for &(x, y, h) in points {
-            let (lane, s, offset) = self.road.locate(x, y).ok_or_else(bends)?;
+        // (x, y) moved (ds, dt) in the road frame, and the road's turn between the two places.
+        let moved = |x: f64, y: f64| -> Result<(f64, f64, f64), Error> {
+            let (lane, s, offset) = self.road.locate(x, y).ok_or_else(|| off(x, y))?;
             let t = self.road.lane_center(lane, s) + offset;
-            let (x1, y1, _) = self.road.world_pose(s, t + dt).ok_or_else(bends)?;
-            let (dx, dy) = (x1 - x, y1 - y);
-            match by {
-                None => by = Some((dx, dy)),
-                Some((bx, by)) if (bx - dx).hypot(by - dy) > TRANSLATION_TOLERANCE => {
-                    return Err(bends());
-                }
-                Some(_) => {}
-            }
-            let (bx, by) = by.unwrap_or((dx, dy));
-            out.push((x + bx, y + by, h));
+            let (_, _, h0) = self.road.world_pose(s, t).ok_or_else(|| off(x, y))?;
+            let (x1, y1, h1) = self
+                .road
+                .world_pose(s + ds, t + dt)
+                .ok_or_else(|| off(x, y))?;
+            Ok((x1, y1, h1 - h0))
+        };
+        let length: f64 = segment_lengths(points, smooth).iter().sum();
+        let (dense, stamps) = samples(points, times, smooth, (0.0, length), STEP);
+        let mut moves = Vec::with_capacity(dense.len());
+        for &(x, y, h) in &dense {
+            let (x1, y1, turn) = moved(x, y)?;
+            moves.push((x1, y1, h + turn));
         }
-        Ok(out)
+        let by = (moves[0].0 - dense[0].0, moves[0].1 - dense[0].1);
+        let translation = dense
+            .iter()
+            .zip(&moves)
+            .all(|(a, b)| (b.0 - a.0 - by.0).hypot(b.1 - a.1 - by.1) <= TRANSLATION_TOLERANCE);
+        if translation {
+            let p = points.iter().map(|&(x, y, h)| (x + by.0, y + by.1, h));
+            return Ok(((p.collect(), times.map(<[f64]>::to_vec)), smooth));
+        }
+        Ok(((moves, stamps), false))
     }
 }
 

@@ -55,12 +55,13 @@
 //! | `car_following` | `avoid_collisions(true)`: the engine's IDM car following for the phase |
 //! | `action_args` | a §8.8 action's `rate_profile`, `rate_peak`, `duration` and the dynamics they give |
 //! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
+//! | `path_part` | the part of a path an action follows between its offsets, and points along it with their times |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `shapes` | modifiers with a `shape:`, planned as the action whose dynamics the shape is |
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
-//! | `group_path` | the group forms of the path and trajectory actions: a column following the path in file, a group over several lanes the path moved across a straight road |
+//! | `group_path` | the group forms of the path and trajectory actions: a column following the path in file, a group over several lanes the path moved to each member's place in the road frame |
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
 //! | `map_checks` | the map's modifiers over route fields checked against the plan's roads |
@@ -98,6 +99,7 @@ mod map_checks;
 mod map_junctions;
 mod map_lanes;
 mod motion;
+mod path_part;
 mod path_shape;
 mod place;
 mod planner;

@@ -24,12 +24,13 @@
 use scenario::FollowingMode;
 
 use super::group_path::Member;
-use super::path_shape::{along, locate, segment_lengths, starting_at, Pose2};
+use super::path_part::cut;
+use super::path_shape::{along, segment_lengths, starting_at, Pose2};
 use super::planner::Planner;
 use super::speed_actions::Slot;
 use super::types::{Planned, When, MAX_SPEED};
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{arg, Action, Invoke, Phase, Place, PlaceArg};
+use crate::resolve::{Action, Invoke, Phase, Place, PlaceArg};
 
 impl Planner<'_> {
     /// Plans `inv`'s `follow_trajectory` or `follow_path` for one actor; returns when it ends.
@@ -58,8 +59,10 @@ impl Planner<'_> {
             _ => None,
         };
         let given = column.as_ref().or(given);
+        // A group's members follow the part between the offsets already (group_path).
+        let offsets = slot.formation.is_none();
         if inv.kind.along_path() {
-            return self.plan_follow_path(p, inv, given, slot, name);
+            return self.plan_follow_path(p, inv, (given, offsets), slot, name);
         }
         let Slot {
             target, t0, out, ..
@@ -101,7 +104,7 @@ impl Planner<'_> {
         if inv.kind == Action::FollowTrajectory {
             check_segment_speeds(points, times, *smooth, site)?;
         }
-        let cut = cut(inv, points, *smooth)?;
+        let cut = cut(inv, points, *smooth, offsets)?;
         let time = |(k, u): (usize, f64)| times[k] + u * (times[k + 1] - times[k]);
         let span = time(cut.end) - time(cut.start);
         let end = self.end_of(place, cut.end_point)?;
@@ -139,7 +142,7 @@ impl Planner<'_> {
         &mut self,
         p: &Phase,
         inv: &Invoke,
-        given: Option<&PlaceArg>,
+        (given, offsets): (Option<&PlaceArg>, bool),
         Slot {
             target, t0, out, ..
         }: Slot<'_>,
@@ -180,7 +183,7 @@ impl Planner<'_> {
                 format!("expected `{target}` moving at the start of {}(…) (it moves at the speed it has), found it standing", inv.action),
             ));
         }
-        let cut = cut(inv, points, *smooth)?;
+        let cut = cut(inv, points, *smooth, offsets)?;
         let end = self.end_of(place, cut.end_point)?;
         let n = name(&inv.action);
         // follow_path steers within the vehicle's limits; replay_path follows exactly.
@@ -268,61 +271,4 @@ fn check_segment_speeds(
         }
     }
     Ok(())
-}
-
-/// The part of a path or trajectory an action follows: from `start_offset` m after its start
-/// to `end_offset` m before its end (§8.8.2.16-17; both 0 unless given).
-struct Cut {
-    start_offset: f64,
-    end_offset: f64,
-    /// The length between them (m).
-    length: f64,
-    /// Segment and parameter of the start, and of the end.
-    start: (usize, f64),
-    end: (usize, f64),
-    end_point: (f64, f64),
-    /// Length per unit of the end segment's parameter at the end (m).
-    end_rate: f64,
-}
-
-/// The [`Cut`] `inv`'s `start_offset` and `end_offset` make of the path through `points`: each
-/// 0 m or more, together shorter than the path.
-fn cut(inv: &Invoke, points: &[Pose2], smooth: bool) -> Result<Cut, Error> {
-    let total: f64 = segment_lengths(points, smooth).iter().sum();
-    let offset = |param: &str| -> Result<(f64, Option<Site>), Error> {
-        match arg(&inv.args, param) {
-            None => Ok((0.0, None)),
-            Some(a) => {
-                let d = a.number()?;
-                if d < 0.0 {
-                    return Err(a.site.err(
-                        K::Argument,
-                        format!("expected a {param} of 0 m or more, found {d} m"),
-                    ));
-                }
-                Ok((d, Some(a.site.clone())))
-            }
-        }
-    };
-    let ((start_offset, s_site), (end_offset, e_site)) =
-        (offset("start_offset")?, offset("end_offset")?);
-    // Only a given offset can leave nothing to follow (its site is there to name).
-    let given = e_site.or(s_site);
-    if let Some(site) = given.filter(|_| start_offset + end_offset >= total) {
-        return Err(site.err(
-            K::Unsatisfiable,
-            format!("expected start_offset + end_offset below the {}'s length {total:.2} m, found {:.2} m", if inv.kind.along_path() { "path" } else { "trajectory" }, start_offset + end_offset),
-        ));
-    }
-    let (k0, u0, _, _) = locate(points, smooth, start_offset);
-    let (k1, u1, end_point, end_rate) = locate(points, smooth, total - end_offset);
-    Ok(Cut {
-        start_offset,
-        end_offset,
-        length: total - start_offset - end_offset,
-        start: (k0, u0),
-        end: (k1, u1),
-        end_point,
-        end_rate,
-    })
 }

@@ -275,14 +275,9 @@ fn group_forms_that_cannot_keep_the_formation_are_errors() {
             "expected `g.vehicles[1]` in a driving lane of road 1 when assign_position(…) moves group `g` as a whole (its offset from `g.vehicles[0]`: 0.00 m along the road, 3.50 m across it), found s = 200.00 m, t = 1.75 m outside them",
         ),
         (
-            "err_group_path_offset",
-            "12:109",
-            "expected no start_offset in follow_path(…) on group `g` (its members enter the path where member 0 does, at its start, and leave it at its end), found one; give the path the points to follow, or each member its own (`g.vehicles[i].follow_path(…)`)",
-        ),
-        (
             "err_group_path_start",
             "13:32",
-            "expected `g.vehicles[0]` at the start of the path when group `g` follows it in file (every member enters it there), found it 10.00 m from (50.00, -8.75)",
+            "expected `g.vehicles[0]` at the start of the path when group `g` follows it (every member enters it where member 0 does), found it 10.00 m from (50.00, -8.75)",
         ),
         (
             "err_group_lateral_gap",
@@ -528,24 +523,53 @@ fn a_group_over_several_lanes_follows_the_trajectory_moved_by_each_offset() {
     assert!(s.abs() < T_TOL && (e - 7.5).abs() < T_TOL, "[{s}, {e}]");
 }
 
-/// Where the road bends under the path, a group over several lanes cannot move it by each
-/// member's offset (err_group_follow_trajectory.osc on bend.xodr).
+/// Round a bend, a group over several lanes follows the trajectory moved to each member's
+/// place in the road frame, with member 0's stamps (group_follow_trajectory_bend_rows.osc on
+/// bend.xodr, by hand there).
 #[test]
-fn a_group_over_several_lanes_on_a_bend_is_an_error() {
-    let name = "err_group_follow_trajectory";
-    let e = crate::support::lower_at(
-        &format!("tests/scenarios/actions/{name}.osc"),
-        "tests/roads/bend.xodr",
-        0,
-        None,
-    )
-    .err()
-    .map(|e| e.to_string())
-    .unwrap_or_else(|| panic!("{name} planned"));
-    assert!(e.contains(&format!("{name}.osc:19:38")), "{e}");
-    let text = "expected the road straight under the path when group `g`, spread over several lanes, follows it in follow_trajectory(…) (each member's path is member 0's moved across the road by its offset, `g.vehicles[1]` 3.50 m), found it bending there";
-    assert!(e.contains(text), "{text:?} not in {e}");
-    assert!(e.contains("(`g.vehicles[i].follow_trajectory(…)`)"), "{e}");
+fn a_group_over_several_lanes_follows_the_trajectory_moved_round_a_bend() {
+    let r = crate::support::run_on("actions/group_follow_trajectory_bend_rows", "bend");
+    for (name, t, x, y, s, lane) in [
+        ("g.vehicles[0]", 0.0, 90.0, -8.75, 90.0, -3),
+        ("g.vehicles[1]", 0.0, 90.0, -5.25, 90.0, -2),
+        ("g.vehicles[0]", 3.0, 120.0, -5.1875, 118.7894, -3),
+        ("g.vehicles[1]", 3.0, 119.3462, -1.7491, 118.7894, -2),
+        ("g.vehicles[0]", 4.0, 130.0, -4.0, 128.0838, -3),
+        ("g.vehicles[1]", 4.0, 129.0299, -0.6371, 128.0838, -2),
+    ] {
+        let m = r.at(t, name);
+        close(m.x, x, CHORD_TOL, &format!("{name} x({t})"));
+        close(m.y, y, CHORD_TOL, &format!("{name} y({t})"));
+        close(m.s, s, CHORD_TOL, &format!("{name} s({t})"));
+        assert_eq!(m.lane, lane, "{name} at {t} s");
+    }
+    let (s, e) = r.phase("do");
+    assert!(s.abs() < T_TOL && (e - 4.0).abs() < T_TOL, "[{s}, {e}]");
+}
+
+/// A group follows the part of a trajectory between its offsets, each member entering and
+/// leaving its own path where the part does (group_trajectory_offsets.osc, by hand there).
+#[test]
+fn a_column_follows_the_part_of_a_trajectory_between_its_offsets() {
+    let r = run("actions/group_trajectory_offsets", 0, None);
+    places(
+        &r,
+        &[
+            ("g.vehicles[0]", 0.0, 30.0, -8.75),
+            ("g.vehicles[1]", 0.0, 15.0, -8.75),
+            ("g.vehicles[0]", 3.0, 60.0, -8.75),
+            ("g.vehicles[0]", 4.0, 69.6, -5.95),
+            ("g.vehicles[0]", 4.25, 72.0, -5.25),
+            ("g.vehicles[0]", 5.0, 79.5, -5.25),
+            ("g.vehicles[1]", 1.5, 30.0, -8.75),
+            ("g.vehicles[1]", 4.5, 60.0, -8.75),
+            ("g.vehicles[1]", 5.5, 69.6, -5.95),
+            ("g.vehicles[1]", 5.75, 72.0, -5.25),
+        ],
+    );
+    assert_eq!(r.at(5.75, "g.vehicles[1]").lane, -2);
+    let (s, e) = r.phase("do");
+    assert!(s.abs() < T_TOL && (e - 5.75).abs() < T_TOL, "[{s}, {e}]");
 }
 
 /// Each member named at each time is at (x, y) within [`TOL`].
