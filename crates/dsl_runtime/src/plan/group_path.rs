@@ -38,7 +38,17 @@
 //! path longer in the same time) is checked against the vehicle's speed like any trajectory; a
 //! moved point off the plan's roads is an error at the path.
 //!
-//! A start the plan does not know (after a run-time condition) is an error.
+//! After a run-time condition the plan knows no member's place. A group over several lanes
+//! still moves as a block: member 0 follows the part as the actor's form does, and member i
+//! the part's points at most [`STEP`] m apart, each a RelativeRoadPosition on member i itself
+//! at the point's road coordinates less those of the part's start, which the engine resolves
+//! when the action starts: the same path as at a known start when member 0 stands at the
+//! part's start, its stamps member 0's (on a plan of one road: the engine measures s on the
+//! road the member is on). A column after a run-time condition is an error: member i's lead-in
+//! is its distance d behind member 0 and its stamps are shifted by d over the group's speed,
+//! numbers a trajectory takes as written, which the plan does not know then.
+
+use scenario::PositionKind;
 
 use super::path_part::{cut, samples, Samples};
 use super::path_shape::{segment_lengths, Pose2};
@@ -52,6 +62,15 @@ use crate::resolve::{Action, Invoke, Phase, Place, PlaceArg};
 /// h on a curve of radius R leaves it by h²/(8R), 2.5 mm for 1 m at R = 50 m.
 const STEP: f64 = 1.0;
 
+/// What a member of a group over several lanes follows after a run-time start.
+pub(super) enum RunTimePlace {
+    /// Member 0: the part of the path between the offsets.
+    Given(PlaceArg),
+    /// Member i: positions relative to itself, resolved when the action starts, and their
+    /// time stamps for a trajectory.
+    Relative(Vec<PositionKind>, Option<Vec<f64>>),
+}
+
 /// One member's share of a group's path action, at a start the plan knows.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Member {
@@ -63,7 +82,8 @@ pub(super) struct Member {
 
 impl Planner<'_> {
     /// Checks that `inv`, a path or trajectory action on group `inv.actor`, can run: a start
-    /// the plan knows.
+    /// the plan knows, or a group over several lanes (a block, whose members' paths the engine
+    /// places from where they are then).
     pub(super) fn check_group_path(
         &self,
         p: &Phase,
@@ -71,13 +91,76 @@ impl Planner<'_> {
         t0: Option<f64>,
     ) -> Result<(), Error> {
         let g = &inv.actor;
-        if t0.is_none() {
+        if t0.is_none() && !self.across.contains(g) {
             return Err(p.site.err(
                 K::Unsatisfiable,
-                format!("expected a start the plan knows for {}(…) on group `{g}` (its members enter the path one behind the other from their places then), found one after a run-time condition", inv.action),
+                format!("expected a start the plan knows for {}(…) on single-lane group `{g}` (member i's lead-in is its distance d behind member 0 then, and a trajectory's stamps are shifted by d over the group's speed: numbers the engine's trajectories take as written), found one after a run-time condition", inv.action),
+            ));
+        }
+        if t0.is_none() && self.road.ids().len() > 1 {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected a plan on one road for {}(…) on group `{g}` after a run-time condition (each member's path is placed in road coordinates from where it is then, on the road it is on), found {} roads", inv.action, self.road.ids().len()),
             ));
         }
         Ok(())
+    }
+
+    /// At a run-time start, what `target`, a member of group `inv.actor` (over several lanes),
+    /// follows when the group follows `given`: member 0 the part between the offsets (`None`
+    /// without offsets: `given` itself); member i that part's points at most [`STEP`] m apart,
+    /// each a RelativeRoadPosition on member i itself, (s − s₀, t − t₀) from it, (s, t) the
+    /// point's road coordinates and (s₀, t₀) those of the part's first point, which the engine
+    /// resolves when the action starts: member i's path is member 0's moved to its place in the
+    /// road frame when member 0 stands at the part's start, as at a known start.
+    pub(super) fn run_time_place(
+        &self,
+        given: &PlaceArg,
+        inv: &Invoke,
+        target: &str,
+    ) -> Result<Option<RunTimePlace>, Error> {
+        let Some(lead) = self.groups.get(&inv.actor).and_then(|m| m.first()) else {
+            return Ok(None);
+        };
+        let Some(part) = followed_part(inv, given)? else {
+            return Ok(None);
+        };
+        if lead == target {
+            return Ok(part.cut.then(|| {
+                RunTimePlace::Given(place_of(given, part.points, part.times, part.smooth))
+            }));
+        }
+        let length: f64 = segment_lengths(&part.points, part.smooth).iter().sum();
+        let (dense, stamps) = samples(
+            &part.points,
+            part.times.as_deref(),
+            part.smooth,
+            (0.0, length),
+            STEP,
+        );
+        let mut road = Vec::with_capacity(dense.len());
+        for &(x, y, _) in &dense {
+            let (lane, s, offset) = self.road.locate(x, y).ok_or_else(|| {
+                given.site.err(
+                    K::Unsatisfiable,
+                    format!(
+                        "expected the path on the plan's roads, found ({x:.2}, {y:.2}) off them"
+                    ),
+                )
+            })?;
+            road.push((s, self.road.lane_center(lane, s) + offset));
+        }
+        let (s0, t0) = road[0];
+        let kinds = road
+            .iter()
+            .map(|&(s, t)| PositionKind::RelativeRoad {
+                entity_ref: target.to_string(),
+                ds: s - s0,
+                dt: t - t0,
+                orientation: None,
+            })
+            .collect();
+        Ok(Some(RunTimePlace::Relative(kinds, stamps)))
     }
 
     /// The path or trajectory `member` of a group follows when the group follows `given`:
@@ -96,29 +179,10 @@ impl Planner<'_> {
         }: Member,
     ) -> Result<Option<PlaceArg>, Error> {
         let g = &inv.actor;
-        let (points, times, smooth) = match &given.place {
-            Place::Path { points, smooth } => (points, None, *smooth),
-            Place::Trajectory {
-                points,
-                times,
-                smooth,
-            } => (points, Some(times.as_slice()), *smooth),
-            _ => return Ok(None),
+        let Some(part) = followed_part(inv, given)? else {
+            return Ok(None);
         };
-        if points.len() < 2 || times.is_some_and(|t| t.len() != points.len()) {
-            return Ok(None); // the actor's form names what is wrong
-        }
-        // The part between the offsets, which every member follows.
-        let c = cut(inv, points, smooth, true)?;
-        let part: Option<Samples> = (c.start_offset > 0.0 || c.end_offset > 0.0).then(|| {
-            let step = if smooth { STEP } else { f64::INFINITY };
-            let to = c.start_offset + c.length;
-            samples(points, times, smooth, (c.start_offset, to), step)
-        });
-        let (points, times, smooth) = match &part {
-            Some((p, t)) => (p.as_slice(), t.as_deref(), false),
-            None => (points.as_slice(), times, smooth),
-        };
+        let (points, times, smooth) = (&part.points[..], part.times.as_deref(), part.smooth);
         let &(x0, y0, _) = &points[0];
         // Member 0's place at the start: where every member enters the path.
         let (s, t) = (self.s_at(target, t0), self.t_at(target, t0));
@@ -126,8 +190,8 @@ impl Planner<'_> {
         let lead = self.road.world_pose(s_lead, t_lead);
         let away = lead.map_or(f64::INFINITY, |(x, y, _)| (x - x0).hypot(y - y0));
         if away > POSITION_TOLERANCE {
-            let at = if c.start_offset > 0.0 {
-                format!("{:.2} m along the path", c.start_offset)
+            let at = if part.start_offset > 0.0 {
+                format!("{:.2} m along the path", part.start_offset)
             } else {
                 "at the start of the path".to_string()
             };
@@ -136,20 +200,14 @@ impl Planner<'_> {
                 format!("expected `{g}.vehicles[0]` {at} when group `{g}` follows it (every member enters it where member 0 does), found it {away:.2} m from ({x0:.2}, {y0:.2})"),
             ));
         }
-        let place = |points: Vec<Pose2>, times: Option<Vec<f64>>, smooth: bool| PlaceArg {
-            place: match times {
-                None => Place::Path { points, smooth },
-                Some(times) => Place::Trajectory {
-                    points,
-                    times,
-                    smooth,
-                },
-            },
-            ..given.clone()
+        let place = |points: Vec<Pose2>, times: Option<Vec<f64>>, smooth: bool| {
+            place_of(given, points, times, smooth)
         };
-        let whole = |part: Option<Samples>| part.map(|(p, t)| place(p, t, false));
         if ds.abs() <= POSITION_TOLERANCE && dt.abs() <= LATERAL_TOLERANCE {
-            return Ok(whole(part)); // member 0
+            // Member 0: the part, where the offsets cut it.
+            return Ok(part
+                .cut
+                .then(|| place(part.points.clone(), part.times.clone(), false)));
         }
         if self.members_beside(g, t0) {
             let ((p, t), smooth) =
@@ -258,6 +316,76 @@ impl Planner<'_> {
             return Ok(((p.collect(), times.map(<[f64]>::to_vec)), smooth));
         }
         Ok(((moves, stamps), false))
+    }
+}
+
+/// The part of a group's path its members follow: the points between the offsets (a polyline
+/// of them where the offsets cut the path), their stamps, whether smooth.
+struct Part {
+    points: Vec<Pose2>,
+    times: Option<Vec<f64>>,
+    smooth: bool,
+    /// The offsets cut the path (`points` is a part of it).
+    cut: bool,
+    /// The start_offset (m).
+    start_offset: f64,
+}
+
+/// The [`Part`] of `given`'s path or trajectory that a group follows in `inv`: the part
+/// between `start_offset` and `end_offset` (exact for a polyline, points [`STEP`] m apart on a
+/// smooth curve). `None` for a place that is no path, or one the actor's form reports as wrong.
+fn followed_part(inv: &Invoke, given: &PlaceArg) -> Result<Option<Part>, Error> {
+    let (points, times, smooth) = match &given.place {
+        Place::Path { points, smooth } => (points, None, *smooth),
+        Place::Trajectory {
+            points,
+            times,
+            smooth,
+        } => (points, Some(times.as_slice()), *smooth),
+        _ => return Ok(None),
+    };
+    if points.len() < 2 || times.is_some_and(|t| t.len() != points.len()) {
+        return Ok(None);
+    }
+    let c = cut(inv, points, smooth, true)?;
+    if c.start_offset <= 0.0 && c.end_offset <= 0.0 {
+        return Ok(Some(Part {
+            points: points.clone(),
+            times: times.map(<[f64]>::to_vec),
+            smooth,
+            cut: false,
+            start_offset: 0.0,
+        }));
+    }
+    let step = if smooth { STEP } else { f64::INFINITY };
+    let to = c.start_offset + c.length;
+    let (p, t) = samples(points, times, smooth, (c.start_offset, to), step);
+    Ok(Some(Part {
+        points: p,
+        times: t,
+        smooth: false,
+        cut: true,
+        start_offset: c.start_offset,
+    }))
+}
+
+/// `given` with the path (`times`: the trajectory) through `points`.
+fn place_of(
+    given: &PlaceArg,
+    points: Vec<Pose2>,
+    times: Option<Vec<f64>>,
+    smooth: bool,
+) -> PlaceArg {
+    PlaceArg {
+        place: match times {
+            None => Place::Path { points, smooth },
+            Some(times) => Place::Trajectory {
+                points,
+                times,
+                smooth,
+            },
+        },
+        ..given.clone()
     }
 }
 

@@ -23,9 +23,9 @@
 
 use scenario::FollowingMode;
 
-use super::group_path::Member;
+use super::group_path::{Member, RunTimePlace};
 use super::path_part::cut;
-use super::path_shape::{along, segment_lengths, starting_at, Pose2};
+use super::path_shape::{along, polyline_through, segment_lengths, starting_at, Pose2};
 use super::planner::Planner;
 use super::speed_actions::Slot;
 use super::types::{Planned, When, MAX_SPEED};
@@ -59,8 +59,29 @@ impl Planner<'_> {
             _ => None,
         };
         let given = column.as_ref().or(given);
+        // After a run-time condition, a member of a group over several lanes (group_path).
+        let run_time = match (given, slot.t0) {
+            (Some(g), None) => self.run_time_place(g, inv, slot.target)?,
+            _ => None,
+        };
+        let given = match &run_time {
+            Some(RunTimePlace::Given(g)) => Some(g),
+            Some(RunTimePlace::Relative(kinds, times)) => {
+                let n = name(&inv.action);
+                let mode = match inv.kind {
+                    Action::FollowPath => FollowingMode::Follow,
+                    _ => FollowingMode::Position,
+                };
+                let site = given.map_or(&p.site, |g| &g.site);
+                let action = polyline_through(&n, kinds.clone(), times.as_deref(), mode, site);
+                slot.out
+                    .push(Planned::with_phase(slot.target, n.clone(), action, &p.site));
+                return Ok(Some(self.ends(None, 0.0, &n, p)));
+            }
+            None => given,
+        };
         // A group's members follow the part between the offsets already (group_path).
-        let offsets = slot.formation.is_none();
+        let offsets = !self.groups.contains_key(&inv.actor);
         if inv.kind.along_path() {
             return self.plan_follow_path(p, inv, (given, offsets), slot, name);
         }

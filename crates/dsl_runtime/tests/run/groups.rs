@@ -280,6 +280,11 @@ fn group_forms_that_cannot_keep_the_formation_are_errors() {
             "expected `g.vehicles[0]` at the start of the path when group `g` follows it (every member enters it where member 0 does), found it 10.00 m from (50.00, -8.75)",
         ),
         (
+            "err_group_path_runtime",
+            "31:17",
+            "expected a start the plan knows for follow_path(…) on single-lane group `g` (member i's lead-in is its distance d behind member 0 then",
+        ),
+        (
             "err_group_lateral_gap",
             "12:9",
             "expected a single-lane group for a lateral gap in change_space_gap(…), found `g`",
@@ -545,6 +550,31 @@ fn a_group_over_several_lanes_follows_the_trajectory_moved_round_a_bend() {
     }
     let (s, e) = r.phase("do");
     assert!(s.abs() < T_TOL && (e - 4.0).abs() < T_TOL, "[{s}, {e}]");
+}
+
+/// After a run-time condition a group over several lanes still moves as a block: member 1's
+/// points are placed from where it is when the action starts
+/// (group_follow_trajectory_bend_runtime.osc on bend.xodr, by hand there).
+#[test]
+fn a_group_over_several_lanes_follows_a_trajectory_after_a_run_time_condition() {
+    let r = crate::support::run_on("actions/group_follow_trajectory_bend_runtime", "bend");
+    let (s, _) = r.phase("do.signal.1.follow");
+    assert!((s - 2.55).abs() < T_TOL, "follow starts at {s}");
+    for (name, t, x, y, s, lane) in [
+        ("g.vehicles[0]", 2.55, 90.0, -8.75, 90.0, -3),
+        ("g.vehicles[1]", 2.55, 90.0, -5.25, 90.0, -2),
+        ("g.vehicles[0]", 5.55, 120.0, -5.1875, 118.7894, -3),
+        ("g.vehicles[1]", 5.55, 119.3462, -1.7491, 118.7894, -2),
+        ("g.vehicles[1]", 6.55, 129.0299, -0.6371, 128.0838, -2),
+    ] {
+        let m = r.at(t, name);
+        close(m.x, x, CHORD_TOL, &format!("{name} x({t})"));
+        close(m.y, y, CHORD_TOL, &format!("{name} y({t})"));
+        close(m.s, s, CHORD_TOL, &format!("{name} s({t})"));
+        assert_eq!(m.lane, lane, "{name} at {t} s");
+    }
+    let (_, e) = r.phase("do.signal.1.follow");
+    assert!((e - 6.55).abs() < T_TOL, "follow ends at {e}");
 }
 
 /// A group follows the part of a trajectory between its offsets, each member entering and
