@@ -40,13 +40,17 @@
 //!
 //! The gap or headway a `keep_*` action keeps is the one at its start: the target of the gap
 //! action the actor ran just before (to the same reference), else the plan's gap between the two
-//! tracks at the phase's start. While the engine's controller moves the actor the plan does not
-//! know its track: a later phase of the actor must start on a run-time condition (an `until`,
-//! a `wait`, or the gap action's own end), else an error.
+//! tracks at the phase's start. Where the plan does not know the tracks then (a phase that
+//! starts on a run-time condition, or an actor the engine's gap controller moves) the engine
+//! measures the gap or headway along the road as the action starts and keeps it (oscsim's
+//! LongitudinalDistanceAction option `at_start`, no XML form); a lateral gap there is an error.
+//! While the engine's controller moves the actor the plan does not know its track: a later
+//! phase of the actor must start on a run-time condition (an `until`, a `wait`, or the gap
+//! action's own end), else an error.
 
 use scenario::{
-    CoordinateSystem, DynamicConstraints, LateralAction, LateralDisplacement, LongitudinalAction,
-    LongitudinalDisplacement, PrivateAction, StoryboardElementState,
+    CoordinateSystem, DynamicConstraints, GapAtStart, LateralAction, LateralDisplacement,
+    LongitudinalAction, LongitudinalDisplacement, PrivateAction, StoryboardElementState,
 };
 
 use super::action_args::missing;
@@ -157,11 +161,11 @@ impl Planner<'_> {
                     ),
                 ));
             }
-            kind.with(x)
+            Some(kind.with(x))
         } else {
             self.gap_at_start(p, inv, (target, &reference), t0, kind)?
         };
-        if let (Measure::Lateral(side), Gap::Lateral(g), Some(t)) = (measure, wanted, t0) {
+        if let (Measure::Lateral(side), Some(Gap::Lateral(g)), Some(t)) = (measure, wanted, t0) {
             if change {
                 self.check_lateral_place(p, target, &reference, t, side, g)?;
             }
@@ -171,7 +175,8 @@ impl Planner<'_> {
             Measure::Lateral(side) => PrivateAction::Lateral(LateralAction::LateralDistance {
                 entity_ref: reference.clone(),
                 continuous: !change,
-                distance: Some(wanted.value()),
+                // gap_at_start measures a lateral gap before the run.
+                distance: wanted.map(Gap::value),
                 freespace: true,
                 displacement: Some(side),
                 coordinate_system: Some(CoordinateSystem::Road),
@@ -184,9 +189,12 @@ impl Planner<'_> {
                 }),
             }),
             Measure::Longitudinal(displacement) => {
-                let (distance, time_gap) = match wanted {
-                    Gap::Headway(t) => (None, Some(t)),
-                    Gap::Space(d) | Gap::Lateral(d) => (Some(d), None),
+                // Without a value: the one the engine measures as the action starts.
+                let (distance, time_gap, at_start) = match (wanted, kind) {
+                    (Some(Gap::Headway(t)), _) => (None, Some(t), None),
+                    (Some(Gap::Space(d) | Gap::Lateral(d)), _) => (Some(d), None, None),
+                    (None, Kind::Headway) => (None, None, Some(GapAtStart::TimeGap)),
+                    (None, _) => (None, None, Some(GapAtStart::Distance)),
                 };
                 PrivateAction::Longitudinal(LongitudinalAction::LongitudinalDistance {
                     entity_ref: reference.clone(),
@@ -203,6 +211,7 @@ impl Planner<'_> {
                         max_deceleration_rate: None,
                         max_speed: Some(MAX_SPEED),
                     }),
+                    at_start,
                 })
             }
         };
@@ -210,8 +219,11 @@ impl Planner<'_> {
         // From here the engine's controller moves the actor (along the road: once it holds the
         // gap, at the reference's speed; across it: at its own speed).
         self.engine_moved.insert(target.to_string(), t0);
-        self.gaps
-            .insert(target.to_string(), (reference.clone(), wanted));
+        match wanted {
+            Some(g) => self.gaps.insert(target.to_string(), (reference.clone(), g)),
+            // Measured by the engine: the plan knows no gap to keep later.
+            None => self.gaps.remove(target),
+        };
         if !lateral {
             let v_ref = self.last_v.get(&reference).copied().unwrap_or(0.0);
             self.last_v.insert(target.to_string(), v_ref);
@@ -351,7 +363,10 @@ impl Planner<'_> {
 
     /// The gap of `kind` between `target` and `reference` at the start of a `keep_*` action:
     /// the target of the actor's gap action just before (to the same reference, of the same
-    /// kind), else the plan's gap at the phase's start (along the road or across it).
+    /// kind), else the plan's gap at the phase's start (along the road or across it); `None`
+    /// where the plan does not know the gap then (a run-time start, or an actor the engine's
+    /// gap controller moves) and the engine measures it as the action starts (a gap or
+    /// headway along the road).
     fn gap_at_start(
         &self,
         p: &Phase,
@@ -359,11 +374,16 @@ impl Planner<'_> {
         (target, reference): (&str, &str),
         t0: Option<f64>,
         kind: Kind,
-    ) -> Result<Gap, Error> {
+    ) -> Result<Option<Gap>, Error> {
         if let Some((r, g)) = self.gaps.get(target) {
             if r == reference && Kind::of(g) == kind {
-                return Ok(*g);
+                return Ok(Some(*g));
             }
+        }
+        let moved =
+            self.engine_moved.contains_key(target) || self.engine_moved.contains_key(reference);
+        if kind != Kind::Lateral && (t0.is_none() || moved) {
+            return Ok(None);
         }
         let unknown = |why: &str| {
             p.site.err(
@@ -383,15 +403,16 @@ impl Planner<'_> {
                 ),
             )
         };
+        // Only a lateral gap gets here without a known start or with a moved actor.
         let t = t0.ok_or_else(|| unknown("a phase that starts on a run-time condition"))?;
-        if self.engine_moved.contains_key(target) || self.engine_moved.contains_key(reference) {
+        if moved {
             return Err(unknown("an actor the engine's gap controller moves"));
         }
         if kind == Kind::Lateral {
             let (t_a, t_r) = (self.t_at(target, t), self.t_at(reference, t));
             let left = t_a > t_r;
             let facing = self.side_extent(target, !left) + self.side_extent(reference, left);
-            return Ok(Gap::Lateral(((t_a - t_r).abs() - facing).max(0.0)));
+            return Ok(Some(Gap::Lateral(((t_a - t_r).abs() - facing).max(0.0))));
         }
         let (s_a, s_r) = (self.s_at(target, t), self.s_at(reference, t));
         let between = (s_r - s_a).abs();
@@ -402,10 +423,10 @@ impl Planner<'_> {
                     "the reference standing (no headway to a standing object)",
                 ));
             }
-            return Ok(Gap::Headway(between / v));
+            return Ok(Some(Gap::Headway(between / v)));
         }
         let overhangs = self.facing_overhangs(target, reference, s_r >= s_a);
-        Ok(Gap::Space((between - overhangs).max(0.0)))
+        Ok(Some(Gap::Space((between - overhangs).max(0.0))))
     }
 
     /// Checks that a lateral gap `gap` to `reference` on `side` of it, from the phase's start

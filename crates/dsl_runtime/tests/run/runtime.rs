@@ -489,3 +489,52 @@ fn change_acceleration_at_a_rate_after_an_until_ends_when_the_engine_reaches_its
         assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
     }
 }
+
+/// runtime_keep_gap.osc's comment, by hand: the gap and the headway ego keeps after a run-time
+/// start are the ones the engine measures then (59.8 m between the reference points, both at
+/// 8 m/s), held to the phases' ends.
+#[test]
+fn gaps_and_headways_kept_after_an_until_are_the_ones_the_engine_measures_then() {
+    let lowered =
+        super::support::lower("runtime_keep_gap", 0, None).unwrap_or_else(|e| panic!("{e}"));
+    // Each keep_* is a LongitudinalDistanceAction without a value, kept from its start.
+    let kept: Vec<Option<scenario::GapAtStart>> = lowered.scenario.storyboard.stories[0]
+        .acts
+        .iter()
+        .flat_map(|a| &a.maneuver_groups)
+        .flat_map(|g| &g.maneuvers)
+        .flat_map(|m| &m.events)
+        .flat_map(|e| &e.actions)
+        .filter_map(|a| match &a.kind {
+            scenario::ActionKind::Private(scenario::PrivateAction::Longitudinal(
+                scenario::LongitudinalAction::LongitudinalDistance {
+                    distance: None,
+                    time_gap: None,
+                    at_start,
+                    ..
+                },
+            )) => Some(*at_start),
+            _ => None,
+        })
+        .collect();
+    use scenario::GapAtStart::{Distance, TimeGap};
+    assert_eq!(kept, [Some(Distance), Some(TimeGap)]);
+    let r = run("runtime_keep_gap", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.slow", 3.35, 4.35),
+            ("do.keep", 4.35, 6.35),
+            ("do.headway", 6.35, 8.35),
+        ],
+    );
+    for t in [4.35, 5.35, 6.35, 7.35, 8.35] {
+        let (ego, lead) = (r.at(t, "ego"), r.at(t, "lead"));
+        assert!(
+            (lead.s - ego.s - 59.8).abs() < S_TOL,
+            "{t}: {ego:?} {lead:?}"
+        );
+        assert!((ego.speed - 8.0).abs() < V_TOL, "{t}: {ego:?}");
+    }
+}

@@ -283,3 +283,58 @@ fn distance_and_time_gap_together_is_an_error_with_its_place() {
         "{err}"
     );
 }
+
+/// longitudinal_rigid.xosc with its action "Keep" keeping, instead of its 30 m, the value it
+/// measures at its start (oscsim's `at_start`, no XML form) as `kind`.
+fn rigid_kept_from_start(kind: scenario::GapAtStart) -> Recorder {
+    use scenario::{ActionKind, LongitudinalAction, PrivateAction};
+    let mut scenario =
+        scenario::Scenario::load(&fixture("longitudinal_rigid.xosc")).expect("loads");
+    let keep = scenario.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[0]
+        .actions
+        .iter_mut()
+        .find(|a| a.name == "Keep")
+        .expect("the action Keep");
+    let ActionKind::Private(PrivateAction::Longitudinal(
+        LongitudinalAction::LongitudinalDistance {
+            distance, at_start, ..
+        },
+    )) = &mut keep.kind
+    else {
+        panic!("Keep is a LongitudinalDistanceAction");
+    };
+    (*distance, *at_start) = (None, Some(kind));
+    let network = engine::load::road_network(&scenario).expect("road loads");
+    let mut engine =
+        engine::Engine::new(&scenario, network, EngineConfig::default()).expect("builds");
+    let (mut frames, mut events) = (Recorder::default(), Vec::<EventRecord>::new());
+    engine.run(&mut frames, &mut events).expect("runs");
+    frames
+}
+
+/// Kept from the start: at t = 1 s Ego (x 50 + 20·1) is 50 m behind Ref (100 + 20·1), both at
+/// 20 m/s, so the rigid action keeps those 50 m (not the file's 30 m): 50 m at 1.05 s, and
+/// within 2·dt² of it (as in the test above) while Ref speeds up to 30 m/s. As a time gap it
+/// keeps 50 m / 20 m/s = 2.5 s, which is 2.5 × 30 = 75 m once Ref holds 30 m/s (from 7 s):
+/// 75 m at 9 s, Ego at 30 m/s.
+#[test]
+fn a_distance_or_time_gap_kept_from_the_start_is_the_one_measured_then() {
+    let frames = rigid_kept_from_start(scenario::GapAtStart::Distance);
+    assert!((gap(&frames, 1.05) - 50.0).abs() < EXACT);
+    for r in rows(&frames, "Ego").iter().filter(|r| r.time > 1.04) {
+        let g = gap(&frames, r.time);
+        assert!(
+            (g - 50.0).abs() <= 2.0 * DT * DT + EXACT,
+            "t = {}: {g}",
+            r.time
+        );
+    }
+    let frames = rigid_kept_from_start(scenario::GapAtStart::TimeGap);
+    assert!((gap(&frames, 1.05) - 50.0).abs() < EXACT);
+    assert!(
+        (gap(&frames, 9.0) - 75.0).abs() < EXACT,
+        "{}",
+        gap(&frames, 9.0)
+    );
+    assert!((frames.at("Ego", 9.0).speed - 30.0).abs() < EXACT);
+}

@@ -141,6 +141,7 @@ fn read_longitudinal_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Longit
             displacement: ctx.opt(c, "displacement")?,
             coordinate_system: ctx.opt(c, "coordinateSystem")?,
             dynamic_constraints: read_dynamic_constraints(ctx, c)?,
+            at_start: None,
         },
         "SpeedProfileAction" => {
             ctx.since(c, 2);

@@ -19,13 +19,17 @@
 //!   back to 0 before the speed leaves [0, maxSpeed] (`law::speed_room`), then limited in its
 //!   change by maxAccelerationRate / maxDecelerationRate; the speed stays in [0, maxSpeed]
 //!   (a distance controller does not reverse) without a jump in the acceleration.
+//! * oscsim's `at_start` (no XML form; DSL 2.1 §8.8.3 `keep_space_gap` / `keep_time_headway`
+//!   after a run-time start): the distance, or the time gap (the distance over the
+//!   reference's speed), is the one measured as the action starts, on the side `displacement`
+//!   keeps the reference on (not below 0); a standing reference has no time gap (an error).
 //! * `continuous="false"`: "the action ends when the target distance is reached", oscsim: when
 //!   the distance error measured at a step's start is at most 0.1 m (esmini's threshold; the
 //!   standard gives none); that step's control still applies, and the storyboard logs the end
 //!   with the next step, as esmini does (its log shows the end at the frame of that step).
 
 use opendrive::Direction;
-use scenario::{LongitudinalAction, LongitudinalDisplacement, SourcePos};
+use scenario::{GapAtStart, LongitudinalAction, LongitudinalDisplacement, SourcePos};
 
 use super::gauge::{Axis, Gauge};
 use super::law::{limit_jerk, speed_room, spring, Limits};
@@ -80,29 +84,37 @@ pub(crate) fn start_longitudinal(
         displacement,
         coordinate_system,
         dynamic_constraints,
+        at_start,
     } = action
     else {
         return Err(Error::unsupported("this LongitudinalAction", pos));
     };
     let reference = entity_ref(world, name, pos)?;
-    let wanted = match (distance, time_gap) {
-        (Some(d), None) => Wanted::Distance(d.abs()),
-        (None, Some(g)) => Wanted::TimeGap(g.abs()),
-        (Some(_), Some(_)) => {
-            return Err(Error::at(
-                "a LongitudinalDistanceAction with either distance or timeGap",
+    let given =
+        match (distance, time_gap, at_start) {
+            (Some(d), None, None) => Some(Wanted::Distance(d.abs())),
+            (None, Some(g), None) => Some(Wanted::TimeGap(g.abs())),
+            (None, None, Some(_)) => None,
+            (Some(_), Some(_), _) => {
+                return Err(Error::at(
+                    "a LongitudinalDistanceAction with either distance or timeGap",
+                    "both",
+                    pos,
+                ))
+            }
+            (None, None, None) => {
+                return Err(Error::at(
+                    "a LongitudinalDistanceAction with a distance or a timeGap",
+                    "neither",
+                    pos,
+                ))
+            }
+            (_, _, Some(_)) => return Err(Error::at(
+                "a LongitudinalDistanceAction keeping either a given value or the one at its start",
                 "both",
                 pos,
-            ))
-        }
-        (None, None) => {
-            return Err(Error::at(
-                "a LongitudinalDistanceAction with a distance or a timeGap",
-                "neither",
-                pos,
-            ))
-        }
-    };
+            )),
+        };
     let (gauge, now) = Gauge::at_start(
         world,
         (actor, reference),
@@ -115,6 +127,10 @@ pub(crate) fn start_longitudinal(
         Some(LongitudinalDisplacement::LeadingReferencedEntity) => -1.0,
         Some(LongitudinalDisplacement::Any) if now < 0.0 => -1.0,
         _ => 1.0,
+    };
+    let wanted = match (given, at_start) {
+        (Some(w), _) => w,
+        (None, kind) => measured(world, (actor, reference), (&gauge, toward), *kind, pos)?,
     };
     let limits = dynamic_constraints
         .as_ref()
@@ -132,6 +148,35 @@ pub(crate) fn start_longitudinal(
         ActionStatus::Running => Part::LongitudinalDistance(state),
         done => Part::Done(done),
     })
+}
+
+/// The value of `kind` (`None`: a distance) between `actor` and `reference` as the action
+/// starts (oscsim's `at_start`): the clearance on the side the reference is kept on (not below
+/// 0, boxes that overlap keep none), or that over the reference's speed, which must not be 0
+/// (a standing reference has no time gap).
+fn measured(
+    world: &World,
+    (actor, reference): (EntityId, EntityId),
+    (gauge, toward): (&Gauge, f64),
+    kind: Option<GapAtStart>,
+    pos: &SourcePos,
+) -> Result<Wanted, Error> {
+    let clearance = gauge
+        .clearance(world, actor, reference, toward)
+        .unwrap_or(0.0)
+        .max(0.0);
+    if kind != Some(GapAtStart::TimeGap) {
+        return Ok(Wanted::Distance(clearance));
+    }
+    let r = world.entity(reference);
+    if r.speed.abs() <= crate::tolerance::SPEED {
+        return Err(Error::at(
+            "a moving reference for the time gap kept from the start",
+            format!("'{}' standing", r.name),
+            pos,
+        ));
+    }
+    Ok(Wanted::TimeGap(clearance / r.speed.abs()))
 }
 
 /// One step of a LongitudinalDistanceAction over `dt` s (0 at the start: no integration).

@@ -150,6 +150,12 @@ pub enum LongitudinalAction {
         coordinate_system: Option<CoordinateSystem>,
         /// Limits.
         dynamic_constraints: Option<DynamicConstraints>,
+        /// oscsim's option, no XML form (the DSL runtime writes it for ASAM OpenSCENARIO DSL
+        /// 2.1 §8.8.3 `keep_space_gap` / `keep_time_headway` in a phase that starts on a
+        /// run-time condition, whose gap to keep is the one at its start; the XML reader
+        /// writes `None`): with `distance` and `time_gap` both absent, keep the distance or
+        /// the time gap the engine measures when the action starts.
+        at_start: Option<GapAtStart>,
     },
     /// oscsim's AccelerationAction, an action with no XML form (the DSL runtime writes it for
     /// ASAM OpenSCENARIO DSL 2.1 §8.8.2 `assign_acceleration`, `change_acceleration` and
@@ -209,6 +215,16 @@ pub enum LongitudinalAction {
         /// Entries: (speed m/s, time s).
         entries: Vec<SpeedProfileEntry>,
     },
+}
+
+/// What a LongitudinalDistanceAction with `at_start` keeps: the value of its kind the engine
+/// measures when it starts ([`LongitudinalAction::LongitudinalDistance`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum GapAtStart {
+    /// The distance (between bounding boxes with `freespace`), as `distance` would give it.
+    Distance,
+    /// The time gap: the distance over the reference's speed, as `timeGap` would give it.
+    TimeGap,
 }
 
 /// What oscsim's TravelAction ([`LongitudinalAction::Travel`]) covers, and how.
