@@ -6,11 +6,15 @@
 //! actor's acceleration to x's ± a in every step of the phase, so its speed after τ s is
 //! v₀ + (v_x − v_x₀) ± a·τ. `at: start` after a run-time start is x's acceleration as the
 //! engine finds it over the phase's first step, ± a, held (as the plan reads x's first piece
-//! at a known start). At a known start the plan tracks the actor along x's pieces of constant
+//! at a known start). `at: end` after a run-time start ("this constraint holds at the end of
+//! the phase", §8.9.1.1.1) is x's acceleration at the phase end ± a: the engine follows x
+//! (as at: all), so the actor's acceleration is x's ± a in the phase's last step whatever x
+//! does; with `track: actual` "the vehicle reacts to the behavior of the referenced vehicle"
+//! (§8.9.1.1.3), and no constant acceleration chosen at the start could know x's at the end. At a known start the plan tracks the actor along x's pieces of constant
 //! planned acceleration (a linear change per piece, each within the limits); after a run-time
 //! start it does not know the actor's speed (as after any change the engine works out then).
 
-use scenario::{LongitudinalAction, PrivateAction};
+use scenario::{LongitudinalAction, PrivateAction, SpeedChange};
 
 use super::motion::{check_accel, check_speed};
 use super::planner::Planner;
@@ -25,7 +29,7 @@ impl Planner<'_> {
     /// An `acceleration(…, faster_than/slower_than/same_as: x)` at: all that the engine's
     /// RelativeAccelerationAction follows (x's acceleration ± a each step): where x's
     /// acceleration changes within the phase, or the phase starts at run time (there also
-    /// at: start, x's acceleration at the start held). Returns x, the
+    /// at: end, followed to the end, and at: start, x's acceleration at the start held). Returns x, the
     /// value added to x's acceleration, and (at a known start) the pieces of x's planned
     /// acceleration over the phase (start, end, m/s²), from which the plan tracks the actor;
     /// `None` where the plan reads x's acceleration itself (`acceleration_value`).
@@ -43,10 +47,10 @@ impl Planner<'_> {
         .find_map(|(key, sign)| m.arg(key).map(|e| (e, sign))) else {
             return Ok(None);
         };
-        // at: start after a run-time start: x's acceleration at the start, held, is the
-        // engine's to read then; at: end is x's at a moment not yet come.
-        let runtime_start = m.at == At::Start && t0.is_none();
-        if !(m.at == At::All || runtime_start) || m.projected {
+        // After a run-time start at: start is x's acceleration at the start, held, the
+        // engine's to read then; at: end x's at the phase end, which the engine meets by
+        // following x to the end (at every step, so at the last).
+        if !(m.at == At::All || t0.is_none()) || m.projected {
             return Ok(None);
         }
         let x = self.entity_of(e)?;
@@ -64,6 +68,40 @@ impl Planner<'_> {
         };
         let changes = pieces.windows(2).any(|w| (w[1].2 - w[0].2).abs() > 1e-9);
         Ok(changes.then_some((x, delta, pieces)))
+    }
+
+    /// The engine's speed change to `v1` within the phase's `len` s at the rate of `q`, an
+    /// `acceleration(a, faster_than/slower_than/same_as: x)` at: start or all, in a phase that
+    /// starts on a run-time condition (`t` `None`): oscsim's RelativeAccelerationAction with
+    /// `to_speed`, the rate |x's acceleration ± a| as the engine reads it (at: start over the
+    /// phase's first step, held; at: all in every step of the change), toward v1, ending there;
+    /// not reached within `len` s, the run's error then. `None` for anything else (a start the
+    /// plan knows, an acceleration of its own, at: end or `track: projected`, whose errors
+    /// `acceleration_value` gives).
+    pub(super) fn relative_rate_at_run_time(
+        &self,
+        q: Option<&Modifier>,
+        t: Option<f64>,
+        (v1, len): (f64, f64),
+    ) -> Result<Option<PrivateAction>, Error> {
+        let Some(q) = q.filter(|q| t.is_none() && q.at != At::End && !q.projected) else {
+            return Ok(None);
+        };
+        let Some((x, delta, _)) = self.followed_acceleration(q, (t, len))? else {
+            return Ok(None);
+        };
+        Ok(Some(PrivateAction::Longitudinal(
+            LongitudinalAction::RelativeAcceleration {
+                entity_ref: x,
+                value: delta,
+                continuous: q.at == At::All,
+                to_speed: Some(Box::new(SpeedChange {
+                    what: format!("{}(…) at {}", q.name, q.site.at()),
+                    speed: v1,
+                    within: len,
+                })),
+            },
+        )))
     }
 
     /// Plans the engine's following of x's acceleration plus `delta` for `target` over the
@@ -94,7 +132,8 @@ impl Planner<'_> {
             PrivateAction::Longitudinal(LongitudinalAction::RelativeAcceleration {
                 entity_ref: x,
                 value: delta,
-                continuous: m.at == At::All,
+                continuous: m.at != At::Start,
+                to_speed: None,
             }),
             &m.site,
         ));

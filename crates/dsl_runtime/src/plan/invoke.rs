@@ -287,6 +287,14 @@ impl Planner<'_> {
                         }
                         let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
                         check_speed(m, v1)?;
+                        // At the rate of another actor's acceleration after a run-time start:
+                        // the engine reads it then (`acceleration_follow`).
+                        let rated = mods.iter().find(|q| q.kind == ModKind::Acceleration);
+                        if let Some(action) = self.relative_rate_at_run_time(rated, t, (v1, len))? {
+                            out.push(Planned::with_phase(target, name("speed"), action, &m.site));
+                            self.last_v.insert(target.clone(), v1);
+                            continue;
+                        }
                         // With acceleration(a): the change at that rate, done within the phase.
                         let rate = match mods.iter().find(|q| q.kind == ModKind::Acceleration) {
                             Some(q) => Some((q, self.acceleration_value(q, (t, len))?.abs())),

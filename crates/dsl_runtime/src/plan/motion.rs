@@ -204,10 +204,12 @@ impl Planner<'_> {
                 format!("expected track: actual for an acceleration relative to `{x}`, found projected (oscsim projects `{x}` at the speed it has at the phase start, which has no acceleration to be relative to: write acceleration(a))"),
             ));
         }
+        // After a run-time start the engine reads x's acceleration (`acceleration_follow`);
+        // as the rate of a speed change at: end it has no moment to be read at.
         let Some(t) = t0 else {
             return Err(e.site.err(
                 K::Unsatisfiable,
-                format!("expected a phase start the plan knows for an acceleration relative to `{x}` at: end or as the rate of a speed change, found one after a run-time condition (each reads `{x}`'s acceleration at a moment the plan does not know; alone at: all or at: start the engine reads it)"),
+                format!("expected at: start or at: all for an acceleration relative to `{x}` as the rate of a speed change in a phase that starts on a run-time condition, found at: end: that is `{x}`'s acceleration \"at the end of the phase\" (§8.9.1.1.1), and the change runs at its rate from the phase start, before that acceleration is there to read (at a start the plan knows, the plan reads it from `{x}`'s planned track)"),
             ));
         };
         let pieces = self.track(&x).acceleration_pieces(t, t + len).map_err(|at| {

@@ -18,7 +18,10 @@
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
 //! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal LaneChangeAction over T into the actor's own lane at that offset |
 //! | `lateral(d, side_of/left_of/right_of: x, at: end, track: projected)` over a phase of duration T | the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked (`lateral_end`) |
-//! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all or start | the engine's RelativeAccelerationAction: x's acceleration ± a in every step, or x's over the first step held (`acceleration_follow`) |
+//! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all, start or end | the engine's RelativeAccelerationAction: x's acceleration ± a in every step (at: all, end), or x's over the first step held (at: start) (`acceleration_follow`) |
+//! | `change_speed(v)` at the rate of such an `acceleration(…)`, at: start or all | the engine's RelativeAccelerationAction toward v at that rate, failing when v is not reached within the phase (`acceleration_follow`) |
+//! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
+//! | `keep_space_gap` / `keep_time_headway` without a known gap | the engine's LongitudinalDistanceAction keeping the value it measures at its start (`gap_actions`) |
 //!
 //! The engine measures lanes and s on the road the actor is on, so on a plan over several
 //! roads (`crate::road`) the lane and position checks are errors: the road the actor is on at

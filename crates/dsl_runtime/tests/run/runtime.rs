@@ -145,6 +145,14 @@ fn phases(r: &super::support::Run, want: &[(&str, f64, f64)]) {
     }
 }
 
+/// ego's speed at each (time, m/s) of `want`, exact up to float round-off.
+fn ego_speeds(r: &super::support::Run, want: &[(f64, f64)]) {
+    for &(t, v) in want {
+        let ego = r.at(t, "ego");
+        assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
+    }
+}
+
 #[test]
 fn position_and_distance_at_the_end_after_an_until_are_the_engines_profiles() {
     let r = run("runtime_travel", 0, None);
@@ -387,20 +395,17 @@ fn change_acceleration_over_a_duration_after_an_until_starts_from_the_engines_ac
             ("do.after", 5.35, 6.35),
         ],
     );
-    for (t, v) in [(3.35, 20.0), (4.35, 19.5), (5.35, 18.0), (6.35, 16.0)] {
-        let ego = r.at(t, "ego");
-        assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
-    }
+    ego_speeds(
+        &r,
+        &[(3.35, 20.0), (4.35, 19.5), (5.35, 18.0), (6.35, 16.0)],
+    );
 }
 
 #[test]
 fn a_speed_relative_to_another_actor_at_the_end_after_an_until_is_its_speed_then() {
     let r = run("runtime_speed_same_as", 0, None);
     phases(&r, &[("do.approach", 0.0, 3.35), ("do.match", 3.35, 5.35)]);
-    for (t, v) in [(3.35, 20.0), (4.35, 14.0), (5.35, 8.0)] {
-        let ego = r.at(t, "ego");
-        assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
-    }
+    ego_speeds(&r, &[(3.35, 20.0), (4.35, 14.0), (5.35, 8.0)]);
     let ego = r.at(5.35, "ego");
     assert!((ego.s - 194.7).abs() < S_TOL, "{ego:?}");
 }
@@ -418,16 +423,24 @@ fn an_acceleration_relative_to_one_that_changes_after_an_until_is_the_engines_fo
             ("do.copy", 7.35, 9.35),
         ],
     );
-    for (t, ego, lead) in [
-        (3.35, 20.0, 8.0),
-        (4.35, 19.0, 6.0),
-        (5.35, 18.0, 4.0),
-        (6.35, 19.0, 4.0),
-        (7.35, 20.0, 4.0),
-        // at: start: lead's 1 m/s² as do.copy starts, held after lead's change ends.
-        (8.35, 21.0, 5.0),
-        (9.35, 22.0, 5.0),
-    ] {
+    both_speeds(&r, &FOLLOWING_LEAD);
+    // at: start: lead's 1 m/s² as do.copy starts, held after lead's change ends.
+    both_speeds(&r, &[(8.35, 21.0, 5.0), (9.35, 22.0, 5.0)]);
+}
+
+/// (t, ego's speed, lead's) from 3.35 s while lead brakes 8 → 4 m/s at 2 m/s² to 5.35 s and
+/// ego's acceleration is lead's + 1 m/s².
+const FOLLOWING_LEAD: [(f64, f64, f64); 5] = [
+    (3.35, 20.0, 8.0),
+    (4.35, 19.0, 6.0),
+    (5.35, 18.0, 4.0),
+    (6.35, 19.0, 4.0),
+    (7.35, 20.0, 4.0),
+];
+
+/// ego's and lead's speeds at each (t, ego, lead) of `want`.
+fn both_speeds(r: &super::support::Run, want: &[(f64, f64, f64)]) {
+    for &(t, ego, lead) in want {
         let (e, l) = (r.at(t, "ego").speed, r.at(t, "lead").speed);
         assert!((e - ego).abs() < V_TOL, "ego v({t}) = {e} vs {ego}");
         assert!((l - lead).abs() < V_TOL, "lead v({t}) = {l} vs {lead}");
@@ -478,16 +491,16 @@ fn change_acceleration_at_a_rate_after_an_until_ends_when_the_engine_reaches_its
             ("do.after", 5.4, 6.4),
         ],
     );
-    for (t, v) in [
-        (3.35, 20.0),
-        (3.4, 19.95),
-        (4.4, 18.45),
-        (5.4, 15.95),
-        (6.4, 12.95),
-    ] {
-        let ego = r.at(t, "ego");
-        assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");
-    }
+    ego_speeds(
+        &r,
+        &[
+            (3.35, 20.0),
+            (3.4, 19.95),
+            (4.4, 18.45),
+            (5.4, 15.95),
+            (6.4, 12.95),
+        ],
+    );
 }
 
 /// runtime_keep_gap.osc's comment, by hand: the gap and the headway ego keeps after a run-time
@@ -537,4 +550,68 @@ fn gaps_and_headways_kept_after_an_until_are_the_ones_the_engine_measures_then()
         );
         assert!((ego.speed - 8.0).abs() < V_TOL, "{t}: {ego:?}");
     }
+}
+
+/// runtime_acceleration_relative_end.osc's comment, by hand: at: end after a run-time start,
+/// ego's acceleration is lead's + 1 m/s² at the phase end (lead's 0 then, not its −2 at the
+/// start), the engine following lead to the end.
+#[test]
+fn an_acceleration_relative_to_another_at_the_end_after_an_until_is_its_acceleration_then() {
+    let r = run("runtime_acceleration_relative_end", 0, None);
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.follow", 3.35, 7.35)]);
+    both_speeds(&r, &FOLLOWING_LEAD);
+    // The last step's accelerations: ego's 1 m/s², lead's 0.
+    let accel = |name: &str| (r.at(7.35, name).speed - r.at(7.3, name).speed) / 0.05;
+    assert!((accel("ego") - 1.0).abs() < 1e-6, "{}", accel("ego"));
+    assert!(accel("lead").abs() < 1e-6, "{}", accel("lead"));
+}
+
+/// runtime_acceleration_rate_relative.osc's comment, by hand: speed changes at the rate of
+/// lead's acceleration as the engine reads it after a run-time start, at: start held (3 m/s²,
+/// 20 → 17 m/s in 1 s) and at: all in every step (2 m/s², 17 → 19 m/s in 1 s); with a target
+/// lead's acceleration never brings ego to in the phase, the engine's error at its end.
+#[test]
+fn speed_changes_at_the_rate_of_another_actors_acceleration_after_an_until_are_the_engines() {
+    let r = run("runtime_acceleration_rate_relative", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.brake", 3.35, 5.35),
+            ("do.match", 5.35, 7.35),
+        ],
+    );
+    ego_speeds(
+        &r,
+        &[
+            (3.35, 20.0),
+            (3.85, 18.5),
+            (4.35, 17.0),
+            (5.35, 17.0),
+            (5.85, 18.0),
+            (6.35, 19.0),
+            (7.35, 19.0),
+        ],
+    );
+    let want = "expected 'ego' at 20.000 m/s within 2.000 s of its start (acceleration(…) at ";
+    let tail =
+        "runtime_acceleration_rate_relative_fails.osc:29:17), found 19.000 m/s at t = 7.350 s";
+    fails(
+        "runtime_acceleration_rate_relative_fails",
+        (want, tail),
+        "do.match.0/ego/1:speed",
+        7.35,
+    );
+}
+
+/// The rate of a speed change relative to lead's acceleration at: end after a run-time start
+/// is an error at the reference, in the standard's words (err_rate_relative_end_runtime.osc).
+#[test]
+fn the_rate_of_a_speed_change_relative_to_another_at_the_end_after_an_until_is_an_error() {
+    let e = super::support::error("err_rate_relative_end_runtime");
+    assert!(
+        e.starts_with("expected at: start or at: all for an acceleration relative to `lead` as the rate of a speed change in a phase that starts on a run-time condition, found at: end: that is `lead`'s acceleration \"at the end of the phase\" (§8.9.1.1.1)")
+            && e.contains("err_rate_relative_end_runtime.osc:21:50"),
+        "{e}"
+    );
 }

@@ -128,8 +128,10 @@ impl ActionTable {
 
     /// Stage 2: advances every running part by one step from `now` over `dt`, in slot order;
     /// the RelativeAccelerationActions last, so that they read their references' speeds at
-    /// the step's end (relative_acceleration.rs).
-    pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) {
+    /// the step's end (relative_acceleration.rs). Returns the actions that failed in the step
+    /// (their names and errors), which stop the run.
+    pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) -> Vec<(String, Error)> {
+        let mut failures = Vec::new();
         self.synchronize_along_trajectories();
         let mut live = std::mem::take(&mut self.live);
         // The second pass only where a first one met a RelativeAccelerationAction: most steps
@@ -146,7 +148,9 @@ impl ActionTable {
                     let relative = matches!(part, Part::RelativeAcceleration(_));
                     deferred |= relative;
                     if relative == following {
-                        step_part(world, actor, id, part, now, dt);
+                        if let Some(e) = step_part(world, actor, id, part, now, dt) {
+                            failures.push((slot.name.clone(), e));
+                        }
                     }
                 }
             }
@@ -168,14 +172,22 @@ impl ActionTable {
                 _ => false,
             };
         }
+        failures
     }
 }
 
 /// Advances `part` of action `id` on `actor` by one step from `now` over `dt`; a part that
-/// stops running frees the actor's domain and becomes `Done`.
-fn step_part(world: &mut World, actor: EntityId, id: ActionId, part: &mut Part, now: f64, dt: f64) {
+/// stops running frees the actor's domain and becomes `Done`. Returns why it failed, if it did.
+fn step_part(
+    world: &mut World,
+    actor: EntityId,
+    id: ActionId,
+    part: &mut Part,
+    now: f64,
+    dt: f64,
+) -> Option<Error> {
     let next = match part {
-        Part::Done(_) => return,
+        Part::Done(_) => return None,
         Part::Speed(s) => speed::step(world, actor, s, now, dt),
         Part::Acceleration(s) => acceleration::step(world, actor, s, now, dt),
         Part::RelativeAcceleration(s) => relative_acceleration::step(world, actor, s, now, dt),
@@ -187,10 +199,16 @@ fn step_part(world: &mut World, actor: EntityId, id: ActionId, part: &mut Part, 
         Part::Synchronize(s) => synchronize::step(world, actor, s, dt),
         Part::Appearance(s) => s.step(now, dt),
     };
-    if next != ActionStatus::Running {
-        release(world, actor, id);
-        *part = Part::Done(next);
+    if next == ActionStatus::Running {
+        return None;
     }
+    let failure = match part {
+        Part::RelativeAcceleration(s) => s.failure.take(),
+        _ => None,
+    };
+    release(world, actor, id);
+    *part = Part::Done(next);
+    failure
 }
 
 impl ActionTable {
@@ -395,11 +413,12 @@ impl Host<'_> {
                         entity_ref,
                         value,
                         continuous,
+                        to_speed,
                     } => relative_acceleration::start(
                         self.world,
                         actor,
                         entity_ref,
-                        (*value, *continuous),
+                        (*value, *continuous, to_speed.as_deref()),
                         time,
                         pos,
                     ),

@@ -17,9 +17,18 @@
 //! Performance bounds the change per step as for the AccelerationAction; the action ends at
 //! 0 m/s while pushing below it, or at the maximum speed while pushing above, and otherwise
 //! runs until a later longitudinal action replaces it or its Act ends.
+//!
+//! With `to_speed` the acceleration is the rate of a speed change (DSL 2.1 §8.9
+//! `acceleration(…)` beside `change_speed`): in each step the speed moves toward the target
+//! by |a|·dt (a the acceleration above: held, or the reference's over the step plus the
+//! value), not past it; the action ends in the step that reaches the target, and fails in the
+//! step that ends `within` s after its start without it (an error record, and the run stops,
+//! as a failed state check: [`ErrorKind::CheckFailed`]).
+
+use scenario::SpeedChange;
 
 use super::Part;
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
@@ -38,6 +47,12 @@ pub(crate) struct RelativeAccelerationState {
     start_speed: f64,
     reference_start_speed: f64,
     start_time: f64,
+    /// The speed change the acceleration is the rate of, if any.
+    to_speed: Option<SpeedChange>,
+    /// The reference's speed at the last step's end (m/s): its acceleration over a step.
+    reference_last_speed: f64,
+    /// Why the speed change failed, for the action table to report.
+    pub(crate) failure: Option<Error>,
 }
 
 /// Starts the action on `actor` at `now`, relative to the entity named `entity_ref`.
@@ -45,7 +60,7 @@ pub(crate) fn start(
     world: &World,
     actor: EntityId,
     entity_ref: &str,
-    (value, continuous): (f64, bool),
+    (value, continuous, to_speed): (f64, bool, Option<&SpeedChange>),
     now: f64,
     pos: &scenario::SourcePos,
 ) -> Result<Part, Error> {
@@ -64,6 +79,9 @@ pub(crate) fn start(
         start_speed: world.entity(actor).speed,
         reference_start_speed: world.entity(reference).speed,
         start_time: now,
+        to_speed: to_speed.cloned(),
+        reference_last_speed: world.entity(reference).speed,
+        failure: None,
     }))
 }
 
@@ -86,6 +104,11 @@ pub(crate) fn step(
     if !s.continuous && s.held.is_none() {
         s.held = Some((reference_speed - s.reference_start_speed) / tau + s.value);
     }
+    let last = std::mem::replace(&mut s.reference_last_speed, reference_speed);
+    if s.to_speed.is_some() {
+        let a = s.held.unwrap_or((reference_speed - last) / dt + s.value);
+        return toward(world, actor, s, (a, tau), (now, dt));
+    }
     let (wanted, pushing) = match s.held {
         Some(a) => (s.start_speed + a * tau, a),
         None => {
@@ -94,6 +117,68 @@ pub(crate) fn step(
         }
     };
     super::acceleration::set_speed(world, actor, wanted, pushing, dt)
+}
+
+/// One step of the speed change toward `s.to_speed` at the rate |a|, `tau` s after the start
+/// at the step's end.
+fn toward(
+    world: &mut World,
+    actor: EntityId,
+    s: &mut RelativeAccelerationState,
+    (a, tau): (f64, f64),
+    (now, dt): (f64, f64),
+) -> ActionStatus {
+    let Some(change) = &s.to_speed else {
+        return ActionStatus::Ended;
+    };
+    let e = world.entity(actor);
+    let (v, name) = (e.speed, e.name.clone());
+    let gap = change.speed - v;
+    let fail = |expected: String, found: String| {
+        Some(Error::new(ErrorKind::CheckFailed {
+            what: change.what.clone(),
+            expected,
+            found,
+            time: now + dt,
+        }))
+    };
+    // A rate beyond the vehicle's Performance would be cut by it: an error, never a slower
+    // change.
+    let limit = e.performance.map(|p| {
+        if gap > 0.0 {
+            p.max_acceleration.abs()
+        } else {
+            p.max_deceleration.abs()
+        }
+    });
+    if let Some(limit) = limit.filter(|l| a.abs() > l + crate::tolerance::VALUE) {
+        s.failure = fail(
+            format!("a rate within '{name}''s {limit:.3} m/s²"),
+            format!("{:.3} m/s²", a.abs()),
+        );
+        return ActionStatus::Stopped;
+    }
+    let wanted = if gap.abs() <= a.abs() * dt {
+        change.speed
+    } else {
+        v + gap.signum() * a.abs() * dt
+    };
+    let status = super::acceleration::set_speed(world, actor, wanted, gap.signum() * a.abs(), dt);
+    let reached = world.entity(actor).speed;
+    if (reached - change.speed).abs() <= crate::tolerance::SPEED {
+        return ActionStatus::Ended;
+    }
+    if tau >= change.within - crate::tolerance::TIME {
+        s.failure = fail(
+            format!(
+                "'{name}' at {:.3} m/s within {:.3} s of its start",
+                change.speed, change.within
+            ),
+            format!("{reached:.3} m/s"),
+        );
+        return ActionStatus::Stopped;
+    }
+    status
 }
 
 #[cfg(test)]
@@ -111,6 +196,9 @@ mod tests {
             start_speed: 12.0,
             reference_start_speed: 10.0,
             start_time: 1.0,
+            to_speed: None,
+            reference_last_speed: 10.0,
+            failure: None,
         }
     }
 

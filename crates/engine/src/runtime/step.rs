@@ -79,7 +79,12 @@ impl Engine {
             emit(&log.into_inner(), events)?;
             return Ok(self.stopped);
         }
-        self.actions(time, dt);
+        if let Some((name, e)) = self.actions(time, dt).into_iter().next() {
+            log.borrow_mut()
+                .push(EventRecord::error(time + dt, &name, &e));
+            emit(&log.into_inner(), events)?;
+            return Err(e);
+        }
         let moved = self.controllers(time, dt);
         let time = self.measurements(dt, &log);
         self.output(time, moved, log, frames, events)?;
@@ -190,15 +195,17 @@ impl Engine {
         Ok(())
     }
 
-    /// Stage 2: every running action advances to t + dt.
-    fn actions(&mut self, time: f64, dt: f64) {
+    /// Stage 2: every running action advances to t + dt. Returns the actions that failed in
+    /// it (their names and errors): the step reports the first and the run stops.
+    fn actions(&mut self, time: f64, dt: f64) -> Vec<(String, Error)> {
         let clock = Instant::now();
         let world = self.world.get_mut();
         for e in world.entities.iter_mut() {
             e.start_speed = e.speed;
         }
-        self.actions.step_all(world, time, dt);
+        let failures = self.actions.step_all(world, time, dt);
         self.counters.actions += clock.elapsed();
+        failures
     }
 
     /// Stage 3: user controllers give their commands, then every entity moves

@@ -194,6 +194,11 @@ pub enum LongitudinalAction {
         value: f64,
         /// Follow the reference's acceleration in every step (else: its value at the start).
         continuous: bool,
+        /// As the rate of a speed change (§8.9 `acceleration(…)` beside `change_speed` or
+        /// `speed(…, at: end)`): the actor's speed moves toward this speed at the magnitude of
+        /// the acceleration above and the action ends when it reaches it; not reached in time,
+        /// the action fails. `None`: the acceleration itself, as above.
+        to_speed: Option<Box<SpeedChange>>,
     },
     /// oscsim's TravelAction, an action with no XML form (the DSL runtime writes it for a
     /// `position(…, at: end)` or `distance(…)` over a phase of known duration that starts on a
@@ -215,6 +220,19 @@ pub enum LongitudinalAction {
         /// Entries: (speed m/s, time s).
         entries: Vec<SpeedProfileEntry>,
     },
+}
+
+/// The speed change a RelativeAccelerationAction's acceleration is the rate of
+/// ([`LongitudinalAction::RelativeAcceleration`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpeedChange {
+    /// What is asked and where it is written, for the error ("acceleration(…) at f.osc:9:13").
+    pub what: String,
+    /// The speed to reach (m/s).
+    pub speed: f64,
+    /// The time from the action's start within which it must be reached (s): else an error
+    /// record in the event log, and the run stops with that error.
+    pub within: f64,
 }
 
 /// What a LongitudinalDistanceAction with `at_start` keeps: the value of its kind the engine
