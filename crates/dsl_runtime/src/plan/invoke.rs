@@ -496,7 +496,14 @@ impl Planner<'_> {
                                 }
                                 let ve = self.end_speed(ve_given, (t, te), v0)?;
                                 let names = (name("position.1"), name("position.2"));
-                                self.two_halves(m, target, (t, len), (v0, ds, ve), names, out)?;
+                                self.two_halves(
+                                    m,
+                                    target,
+                                    (t, len, DynamicsShape::Linear),
+                                    (v0, ds, ve),
+                                    names,
+                                    out,
+                                )?;
                             }
                         }
                     }
@@ -550,7 +557,14 @@ impl Planner<'_> {
                                 }
                                 let ve = self.end_speed(ve_given, (t, te), v0)?;
                                 let names = (name("distance.1"), name("distance.2"));
-                                self.two_halves(m, target, (t, len), (v0, d, ve), names, out)?;
+                                self.two_halves(
+                                    m,
+                                    target,
+                                    (t, len, DynamicsShape::Linear),
+                                    (v0, d, ve),
+                                    names,
+                                    out,
+                                )?;
                             }
                             None => {
                                 // No duration: the phase ends when d is travelled at the speed

@@ -58,6 +58,7 @@
 //! | `path_part` | the part of a path an action follows between its offsets, and points along it with their times |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
+//! | `position_shape` | `position(…, at: end)` and `distance(…)` with a `common_position_shape`: the speed profile that covers the distance |
 //! | `shapes` | modifiers with a `shape:`, planned as the action whose dynamics the shape is |
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
@@ -104,6 +105,7 @@ mod path_shape;
 mod place;
 mod planner;
 mod position_actions;
+mod position_shape;
 mod relative_path;
 mod route;
 mod runtime;

@@ -42,15 +42,16 @@ impl Planner<'_> {
             .s_after(self.track(x).lane(t), self.s_at(x, t), v * (te - t))
     }
 
-    /// Plans a speed profile of two linear halves over [t, t + len] that covers `ds` (m along
-    /// the lane) from speed `v0` to `ve`: v0 → vm over len/2 and vm → ve over len/2, with vm =
-    /// (4·ds/len − v0 − ve)/2, within the limits (and monotonous when `m` asks). It replaces
-    /// a speed change the phase planned already.
+    /// Plans a speed profile of two halves over [t, t + len] that covers `ds` (m along the
+    /// lane) from speed `v0` to `ve`: v0 → vm over len/2 and vm → ve over len/2, with vm =
+    /// (4·ds/len − v0 − ve)/2, each half `shape` (linear, or the engine's sinusoidal change,
+    /// whose mean speed is the same, so the same vm covers ds), within the limits (and
+    /// monotonous when `m` asks). It replaces a speed change the phase planned already.
     pub(super) fn two_halves(
         &mut self,
         m: &Modifier,
         target: &str,
-        (t, len): (f64, f64),
+        (t, len, shape): (f64, f64, DynamicsShape),
         (v0, ds, ve): (f64, f64, f64),
         names: (String, String),
         out: &mut Vec<Planned>,
@@ -64,28 +65,39 @@ impl Planner<'_> {
                 format!("expected a monotonous speed profile (movement_mode: monotonous) from {v0:.2} m/s to {ve:.2} m/s, found it needs {vm:.2} m/s half way"),
             ));
         }
+        // A half's peak acceleration: its mean, π/2 times that for the sinusoid.
+        let peak = if shape == DynamicsShape::Sinusoidal {
+            std::f64::consts::FRAC_PI_2
+        } else {
+            1.0
+        };
         check_speed(m, vm)?;
-        check_accel(m, (vm - v0) / (len / 2.0))?;
-        check_accel(m, (ve - vm) / (len / 2.0))?;
+        check_accel(m, peak * (vm - v0) / (len / 2.0))?;
+        check_accel(m, peak * (ve - vm) / (len / 2.0))?;
         // Drop a speed ramp this phase planned already (change_speed).
         out.retain(|a| !(a.entity == target && a.name.ends_with(":speed")));
         out.push(Planned {
             entity: target.to_string(),
             at: None,
             name: names.0,
-            action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(vm)),
+            action: speed_action(shape, len / 2.0, SpeedTarget::Absolute(vm)),
             site: m.site.clone(),
         });
         out.push(Planned {
             entity: target.to_string(),
             at: Some(When::At(t + len / 2.0)),
             name: names.1,
-            action: speed_action(DynamicsShape::Linear, len / 2.0, SpeedTarget::Absolute(ve)),
+            action: speed_action(shape, len / 2.0, SpeedTarget::Absolute(ve)),
             site: m.site.clone(),
         });
         let tr = self.track_mut(target);
-        tr.ramp(t, t + len / 2.0, vm);
-        tr.ramp(t + len / 2.0, t + len, ve);
+        if shape == DynamicsShape::Sinusoidal {
+            tr.sine(t, t + len / 2.0, vm);
+            tr.sine(t + len / 2.0, t + len, ve);
+        } else {
+            tr.ramp(t, t + len / 2.0, vm);
+            tr.ramp(t + len / 2.0, t + len, ve);
+        }
         Ok(())
     }
 

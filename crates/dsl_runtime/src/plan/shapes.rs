@@ -10,6 +10,7 @@
 //! | `change_lane(n, side, shape: s)` | `common_lateral_shape` | `change_lane(num_of_lanes: n, side, offset: target, rate_profile, rate_peak)` |
 //! | `lane(…, at: end, shape: s)` | `common_lateral_shape` | the same, n lanes to the side where the lane `lane` asks for is, counted at the phase start |
 //! | `lateral(d, measure_by, side, at: end, shape: s)` | `common_lateral_shape` | `follow_lane(offset: o, rate_profile, rate_peak)`, o the offset `lateral` asks for (its `d`, else the shape's target) |
+//! | `position(d, at: end, shape: s)`, `distance(d, shape: s)` | `common_position_shape` | the speed profile that covers the distance (`position_shape`) |
 //!
 //! The target is the modifier's own value when it gives one (§8.9.1.1.4 Code 79), else the
 //! shape's. The change starts with the phase (§8.9.1.2: compute's time "is measured from the
@@ -32,6 +33,12 @@ fn changes(q: &Modifier, kind: ShapeKind) -> bool {
         ShapeKind::Speed | ShapeKind::Acceleration => match q.kind {
             ModKind::ChangeSpeed | ModKind::Acceleration | ModKind::Distance => true,
             ModKind::Speed | ModKind::Position => q.at == At::End,
+            _ => false,
+        },
+        ShapeKind::Position => match q.kind {
+            ModKind::ChangeSpeed | ModKind::Acceleration | ModKind::Distance => true,
+            ModKind::Speed => q.at != At::Start,
+            ModKind::Position => q.at == At::End,
             _ => false,
         },
         ShapeKind::Lateral => match q.kind {
@@ -78,6 +85,8 @@ impl Planner<'_> {
             "left_of",
             "right_of",
             "side_of",
+            "ahead_of",
+            "behind",
         ]
         .iter()
         .find_map(|r| m.arg(r))
@@ -97,7 +106,7 @@ impl Planner<'_> {
         let own = match shape.kind {
             ShapeKind::Speed => m.arg("speed"),
             ShapeKind::Acceleration => m.arg("acceleration"),
-            ShapeKind::Lateral => m.arg("distance"),
+            ShapeKind::Lateral | ShapeKind::Position => m.arg("distance"),
         };
         let given = arg(&args, "target").cloned();
         if let (Some(o), Some(g)) = (own, &given) {
@@ -117,6 +126,16 @@ impl Planner<'_> {
             (None, None) => num(0.0),
         };
         let kind = match (shape.kind, m.kind) {
+            // Not an action's dynamics: the speed profile that covers the distance.
+            (ShapeKind::Position, _) => {
+                let profile = match arg(&args, "rate_profile").map(Arg::eval).transpose()? {
+                    Some(Val::Enum(p)) => p,
+                    _ => "none".to_string(),
+                };
+                let peak = arg(&args, "rate_peak").map(Arg::number).transpose()?;
+                let value = target.number()?;
+                return self.plan_position_shape(m, slot, (value, &profile, peak), name);
+            }
             (ShapeKind::Speed, _) => {
                 args.push(("target".to_string(), target));
                 Action::ChangeSpeed

@@ -11,9 +11,10 @@
 //! rate_profile, rate_peak)` is `move() with: speed(shape: spd_shape)` for the common speed
 //! shape of those three values) and of a lateral change. So a common shape is read as those
 //! three arguments, and the planner runs the action's own dynamics with them
-//! (`plan::shapes`). A struct of the program's own that inherits `any_shape` (or a
-//! `common_position_shape`, the position along the road whose rate is the speed) has no
-//! dynamics the planner runs: an error at the argument, saying so.
+//! (`plan::shapes`); a `common_position_shape` (the position along the lane, whose rate is the
+//! speed) on `position(…, at: end)` or `distance(…)` as the speed profile that covers the
+//! distance (`plan::position_shape`). A struct of the program's own that inherits `any_shape`
+//! has no dynamics the planner runs: an error at the argument, saying so.
 //!
 //! The shape's `target` and the modifier's own value may overlap (`speed(50kph, at: end,
 //! shape: s)`, §8.9.1.1.4 Code 79: "the shape's target parameter can be taken from the speed
@@ -33,6 +34,8 @@ pub(crate) enum ShapeKind {
     Acceleration,
     /// `common_lateral_shape`: the lateral position (`rate_peak` a lateral speed).
     Lateral,
+    /// `common_position_shape`: the position along the lane (`rate_peak` a speed).
+    Position,
 }
 
 impl ShapeKind {
@@ -42,6 +45,7 @@ impl ShapeKind {
             ShapeKind::Speed => "common_speed_shape",
             ShapeKind::Acceleration => "common_acceleration_shape",
             ShapeKind::Lateral => "common_lateral_shape",
+            ShapeKind::Position => "common_position_shape",
         }
     }
 }
@@ -63,6 +67,7 @@ fn kind_for(name: &str) -> Option<ShapeKind> {
         "speed" | "change_speed" => Some(ShapeKind::Speed),
         "acceleration" => Some(ShapeKind::Acceleration),
         "lateral" | "change_lane" | "lane" => Some(ShapeKind::Lateral),
+        "position" | "distance" => Some(ShapeKind::Position),
         _ => None,
     }
 }
@@ -70,15 +75,9 @@ fn kind_for(name: &str) -> Option<ShapeKind> {
 /// Reads the `shape:` argument `a` of modifier `name`.
 pub(crate) fn read(ctx: &Eval<'_>, name: &str, a: &Arg) -> Result<Shape, Error> {
     let Some(kind) = kind_for(name) else {
-        if matches!(name, "position" | "distance") {
-            return Err(a.site.err(
-                K::Modifier,
-                format!("expected `{name}(…)` without shape: (a common_position_shape is the position along the road over time, shaped by its speed, for which the plan has no action; shape the speed with speed(shape: …) instead), found one"),
-            ));
-        }
         return Err(a.site.err(
             K::Modifier,
-            format!("expected `{name}(…)` without shape: (oscsim runs the shapes of speed, change_speed, acceleration, lane, change_lane and lateral), found one"),
+            format!("expected `{name}(…)` without shape: (oscsim runs the shapes of speed, change_speed, acceleration, lane, change_lane, lateral, position and distance), found one"),
         ));
     };
     let want = kind.library_name();
@@ -110,8 +109,6 @@ pub(crate) fn read(ctx: &Eval<'_>, name: &str, a: &Arg) -> Result<Shape, Error> 
             .any(|c| value.is_some_and(|v| ctx.is_a(v, c)));
         let why = if own {
             format!("`{ty}`, a shape of the program's own: its compute() is no dynamics the engine runs (oscsim runs the library's common shapes, whose target, rate_profile and rate_peak are those of the §8.8 actions)")
-        } else if ty == "common_position_shape" {
-            "a common_position_shape: the position along the road shaped by its speed has no action the plan runs (shape the speed with a common_speed_shape)".to_string()
         } else {
             format!("`{ty}`")
         };

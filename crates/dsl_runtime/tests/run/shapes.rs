@@ -120,6 +120,55 @@ fn a_speed_shape_after_a_run_time_condition_starts_from_the_engines_speed() {
     }
 }
 
+/// A common_position_shape is the speed profile that covers the distance
+/// (position_shape.osc's comment, by hand).
+#[test]
+fn a_common_position_shape_is_the_speed_profile_that_covers_the_distance() {
+    let r = run("shapes/position_shape", 0, None);
+    let v = |t: f64| {
+        if t <= 1.0 {
+            10.0
+        } else if t <= 3.0 {
+            10.0 + 10.0 * (1.0 - (PI * (t - 1.0) / 2.0).cos()) / 2.0
+        } else if t <= 5.0 {
+            20.0 - 10.0 * (1.0 - (PI * (t - 3.0) / 2.0).cos()) / 2.0
+        } else {
+            15.0
+        }
+    };
+    phase(&r, "do.0", 0.0, 1.0);
+    phase(&r, "do.1", 1.0, 5.0);
+    phase(&r, "do.2", 5.0, 7.0);
+    phase(&r, "do.3", 7.0, 8.0);
+    for (t, want) in [
+        (2.0, 15.0),
+        (3.0, 20.0),
+        (4.0, 15.0),
+        (5.0, 10.0),
+        (6.0, 15.0),
+    ] {
+        close(r.at(t, "ego").speed, want, TOL, &format!("v({t})"));
+    }
+    for t in [3.0, 5.0, 6.0, 7.0, 8.0] {
+        close(
+            r.at(t, "ego").s,
+            20.0 + stepped(v, 0.0, t),
+            S_TOL,
+            &format!("s({t})"),
+        );
+    }
+    // By hand: 60 m at 3 s, 90 m at 5 s (the position asked for), 105 m at 6 s, 120 m at 7 s,
+    // 135 m at 8 s; the step sum leads the way up by as much as it lags the way down.
+    for (t, hand) in [(5.0, 90.0), (6.0, 105.0), (7.0, 120.0), (8.0, 135.0)] {
+        close(
+            20.0 + stepped(v, 0.0, t),
+            hand,
+            1e-9,
+            &format!("hand s({t})"),
+        );
+    }
+}
+
 fn expect(name: &str, place: &str, words: &[&str]) {
     let e = error(&format!("shapes/{name}"));
     assert!(e.contains(&format!("{name}.osc:{place}")), "{e}");
@@ -140,11 +189,6 @@ fn shapes_the_engine_does_not_run_are_errors_at_the_argument() {
         "7:22",
         &["expected a common_speed_shape as the shape of `speed(…)`, found `common_lateral_shape`"],
     );
-    expect(
-        "err_shape_position",
-        "7:25",
-        &["expected `position(…)` without shape: (a common_position_shape is the position along the road over time, shaped by its speed, for which the plan has no action"],
-    );
 }
 
 #[test]
@@ -159,6 +203,16 @@ fn shapes_that_contradict_their_phase_or_modifiers_are_errors() {
         "err_shape_beside",
         "10:9",
         &["expected no `acceleration(…)` beside `speed(…)` at", "err_shape_beside.osc:9:9, whose common_speed_shape fixes that state variable over the phase"],
+    );
+    expect(
+        "err_shape_position",
+        "10:9",
+        &["expected rate_profile constant, smooth or none in `position(…)`'s common_position_shape, found asap"],
+    );
+    expect(
+        "err_shape_position_peak",
+        "14:13",
+        &["expected the shape's rate_peak to cover 30.00 m in the phase's 3.00 s, found it takes 2.00 s"],
     );
     expect(
         "err_shape_target",

@@ -1,0 +1,131 @@
+//! `position(d, at: end, shape: s)` and `distance(d, shape: s)` with a `common_position_shape`
+//! (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.4 parameter `shape`, §8.9.1.2: the shape gives the
+//! position over the phase, "measured from the start of the scenario phase"; its `target`,
+//! `rate_profile` and `rate_peak` "provide a complete set of constraints to resolve the target
+//! shape"). The position along the lane rises from where the actor is at the phase start by
+//! Δ (`distance`: d along the lane; `position`: to s = d, Δ along the lane), and its rate is the
+//! speed, so the shape is the speed profile that covers Δ:
+//!
+//! | rate_profile | speed | duration T |
+//! | --- | --- | --- |
+//! | `constant` | `rate_peak` from the start (a step from v₀), held | Δ / rate_peak |
+//! | `smooth` | two halves v₀ → v_m → v₀, each the engine's sinusoidal change (acceleration 0 at the start, the middle and the end) | 2Δ / (v₀ + v_m) |
+//! | `none` | the same two halves, linear: the profile of `position(…, at: end)` without a shape | 2Δ / (v₀ + v_m) |
+//!
+//! v_m, the speed at the middle, is `rate_peak` (the peak when above v₀); a half's mean speed is
+//! (v₀ + v_m)/2 for either shape, so they cover Δ in the same T. Without `rate_peak`, T is the
+//! phase's duration (v_m = 2Δ/T − v₀, the rate Δ/T); with both, they must agree. The change
+//! ends at T: a phase without an end of its own ends then, one with an end must end then (the
+//! actor is at the position at the phase's end, `at: end`). `asap` ("as soon as possible") is
+//! an error: it fixes no speed the position rises at. The plan knows the distance only at a
+//! start it knows: after a run-time condition an error.
+
+use scenario::{DynamicsShape, SpeedTarget};
+
+use super::motion::{check_speed, speed_action};
+use super::planner::Planner;
+use super::speed_actions::Slot;
+use super::types::{Planned, When};
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{ModKind, Modifier};
+
+/// How far a duration from `rate_peak` may differ from the phase's and still agree (s).
+const DURATION_TOLERANCE: f64 = 1e-6;
+
+impl Planner<'_> {
+    /// Plans the shaped `position(…, at: end)` or `distance(…)` `m` of `slot`'s actor: `value`
+    /// its s or distance, `profile` and `peak` the shape's `rate_profile` and `rate_peak` (m/s,
+    /// `None` when not given). Returns when the change ends.
+    pub(super) fn plan_position_shape(
+        &mut self,
+        m: &Modifier,
+        slot: Slot<'_>,
+        (value, profile, peak): (f64, &str, Option<f64>),
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Result<Option<When>, Error> {
+        let Slot {
+            target,
+            t0,
+            len,
+            out,
+            ..
+        } = slot;
+        let Some(t) = t0 else {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected a phase start the plan knows for `{}(…)` with a common_position_shape (the distance to cover is measured from where the plan has the actor then), found one after a run-time condition", m.name),
+            ));
+        };
+        let (lane, s0) = (self.track(target).lane(t), self.s_at(target, t));
+        let v0 = self.track(target).at(t).1;
+        let delta = match m.kind {
+            ModKind::Distance => value,
+            _ => self.road.lane_distance(lane, s0, value),
+        };
+        if delta <= 0.0 {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` to move forward along its lane in `{}(…)`'s shape, found {delta:.2} m to cover from s = {s0:.2} m", m.name),
+            ));
+        }
+        let len = len.filter(|l| *l > 0.0);
+        let agree = |from_peak: f64| -> Result<f64, Error> {
+            match len {
+                Some(l) if (l - from_peak).abs() > DURATION_TOLERANCE => Err(m.site.err(
+                    K::Unsatisfiable,
+                    format!("expected the shape's rate_peak to cover {delta:.2} m in the phase's {l:.2} s, found it takes {from_peak:.2} s (give one of them)"),
+                )),
+                _ => Ok(from_peak),
+            }
+        };
+        let no_rate = || {
+            m.site.err(
+                K::Unsatisfiable,
+                format!("expected a rate_peak in `{}(…)`'s common_position_shape or a phase duration, found neither (nothing fixes how fast the position rises)", m.name),
+            )
+        };
+        let span = match profile {
+            "constant" => {
+                let (v, span) = match (peak, len) {
+                    (Some(v), _) if v > 0.0 => (v, agree(delta / v)?),
+                    (_, Some(l)) => (delta / l, l),
+                    _ => return Err(no_rate()),
+                };
+                check_speed(m, v)?;
+                out.retain(|a| !(a.entity == target && a.name.ends_with(":speed")));
+                out.push(Planned {
+                    entity: target.to_string(),
+                    at: None,
+                    name: name("position_shape"),
+                    action: speed_action(DynamicsShape::Step, 0.0, SpeedTarget::Absolute(v)),
+                    site: m.site.clone(),
+                });
+                self.track_mut(target).ramp(t, t, v);
+                self.last_v.insert(target.to_string(), v);
+                span
+            }
+            "smooth" | "none" => {
+                let span = match (peak, len) {
+                    (Some(vm), _) if v0 + vm > 0.0 => agree(2.0 * delta / (v0 + vm))?,
+                    (_, Some(l)) => l,
+                    _ => return Err(no_rate()),
+                };
+                let shape = if profile == "smooth" {
+                    DynamicsShape::Sinusoidal
+                } else {
+                    DynamicsShape::Linear
+                };
+                let names = (name("position_shape.1"), name("position_shape.2"));
+                self.two_halves(m, target, (t, span, shape), (v0, delta, v0), names, out)?;
+                span
+            }
+            other => {
+                return Err(m.site.err(
+                    K::Unsatisfiable,
+                    format!("expected rate_profile constant, smooth or none in `{}(…)`'s common_position_shape, found {other} (as soon as possible fixes no speed the position rises at)", m.name),
+                ))
+            }
+        };
+        Ok(Some(When::At(t + span)))
+    }
+}
