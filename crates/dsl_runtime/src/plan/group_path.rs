@@ -43,12 +43,13 @@
 //! the part's points at most [`STEP`] m apart, each a RelativeRoadPosition on member i itself
 //! at the point's road coordinates less those of the part's start, which the engine resolves
 //! when the action starts: the same path as at a known start when member 0 stands at the
-//! part's start, its stamps member 0's (on a plan of one road: the engine measures s on the
+//! part's start, which the engine checks then (oscsim's StateCheck: its lane, its s and its
+//! offset within 0.5 m; a failure is an error record and a failed run), its stamps member 0's (on a plan of one road: the engine measures s on the
 //! road the member is on). A column after a run-time condition is an error: member i's lead-in
 //! is its distance d behind member 0 and its stamps are shifted by d over the group's speed,
 //! numbers a trajectory takes as written, which the plan does not know then.
 
-use scenario::PositionKind;
+use scenario::{PositionKind, StateCheck};
 
 use super::path_part::{cut, samples, Samples};
 use super::path_shape::{segment_lengths, Pose2};
@@ -64,8 +65,10 @@ const STEP: f64 = 1.0;
 
 /// What a member of a group over several lanes follows after a run-time start.
 pub(super) enum RunTimePlace {
-    /// Member 0: the part of the path between the offsets.
-    Given(PlaceArg),
+    /// Member 0: the engine's check that it stands at the part's start (the other members'
+    /// paths are placed from where they are, as if it did), and the part of the path between
+    /// the offsets (`None`: the path as given).
+    Lead(Box<StateCheck>, Option<PlaceArg>),
     /// Member i: positions relative to itself, resolved when the action starts, and their
     /// time stamps for a trajectory.
     Relative(Vec<PositionKind>, Option<Vec<f64>>),
@@ -107,8 +110,8 @@ impl Planner<'_> {
     }
 
     /// At a run-time start, what `target`, a member of group `inv.actor` (over several lanes),
-    /// follows when the group follows `given`: member 0 the part between the offsets (`None`
-    /// without offsets: `given` itself); member i that part's points at most [`STEP`] m apart,
+    /// follows when the group follows `given`: member 0 the part between the offsets, after the
+    /// engine's check that it stands at the part's start (0.5 m along and across); member i that part's points at most [`STEP`] m apart,
     /// each a RelativeRoadPosition on member i itself, (s − s₀, t − t₀) from it, (s, t) the
     /// point's road coordinates and (s₀, t₀) those of the part's first point, which the engine
     /// resolves when the action starts: member i's path is member 0's moved to its place in the
@@ -126,9 +129,30 @@ impl Planner<'_> {
             return Ok(None);
         };
         if lead == target {
-            return Ok(part.cut.then(|| {
-                RunTimePlace::Given(place_of(given, part.points, part.times, part.smooth))
-            }));
+            let (x, y, _) = part.points[0];
+            let (lane, s, offset) = self.road.locate(x, y).ok_or_else(|| {
+                given.site.err(
+                    K::Unsatisfiable,
+                    format!("expected the path's start on the plan's roads, found ({x:.2}, {y:.2}) off them"),
+                )
+            })?;
+            let (road, s_road) = self.road.road_at(s);
+            let check = StateCheck {
+                what: format!(
+                    "the start of group `{}`'s path in {}(…) at {}",
+                    inv.actor,
+                    inv.action,
+                    given.site.at()
+                ),
+                lane: Some((road.id.clone(), lane)),
+                s: Some((s_road, POSITION_TOLERANCE)),
+                offset: Some((offset, POSITION_TOLERANCE)),
+                ..StateCheck::default()
+            };
+            let part = part
+                .cut
+                .then(|| place_of(given, part.points, part.times, part.smooth));
+            return Ok(Some(RunTimePlace::Lead(Box::new(check), part)));
         }
         let length: f64 = segment_lengths(&part.points, part.smooth).iter().sum();
         let (dense, stamps) = samples(

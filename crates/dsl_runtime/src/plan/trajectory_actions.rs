@@ -21,7 +21,7 @@
 //! `position` mode puts it on the trajectory); the plan puts it in the lane and at the s of
 //! the followed part's end.
 
-use scenario::FollowingMode;
+use scenario::{FollowingMode, PrivateAction};
 
 use super::group_path::{Member, RunTimePlace};
 use super::path_part::cut;
@@ -65,7 +65,13 @@ impl Planner<'_> {
             _ => None,
         };
         let given = match &run_time {
-            Some(RunTimePlace::Given(g)) => Some(g),
+            Some(RunTimePlace::Lead(check, part)) => {
+                let n = name("check");
+                let action = PrivateAction::Check(check.clone());
+                slot.out
+                    .push(Planned::with_phase(slot.target, n, action, &p.site));
+                part.as_ref().or(given)
+            }
             Some(RunTimePlace::Relative(kinds, times)) => {
                 let n = name(&inv.action);
                 let mode = match inv.kind {

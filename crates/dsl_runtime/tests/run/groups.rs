@@ -577,6 +577,24 @@ fn a_group_over_several_lanes_follows_a_trajectory_after_a_run_time_condition() 
     assert!((e - 6.55).abs() < T_TOL, "follow ends at {e}");
 }
 
+/// After a run-time condition the engine checks that member 0 stands at the path's start;
+/// elsewhere the run fails (group_follow_trajectory_bend_runtime_off.osc on bend.xodr).
+#[test]
+fn a_blocks_member_0_off_the_paths_start_after_a_run_time_condition_fails_the_run() {
+    let name = "tests/scenarios/actions/group_follow_trajectory_bend_runtime_off.osc";
+    let lowered = crate::support::lower_at(name, "tests/roads/bend.xodr", 0, None)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = crate::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    let want = "expected 'g.vehicles[0]' at s = 90.000 m (within 0.5 m) (the start of group `g`'s path in follow_trajectory(…) at ";
+    let tail = "group_follow_trajectory_bend_runtime_off.osc:37:55), found it at s = 85.500 m at t = 2.550 s";
+    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 2.55).abs() < T_TOL, "{records:?}");
+    assert_eq!(records[0].1, "do.signal.1.follow/g.vehicles[0]/1:check");
+    assert_eq!(records[0].2, error);
+}
+
 /// A group follows the part of a trajectory between its offsets, each member entering and
 /// leaving its own path where the part does (group_trajectory_offsets.osc, by hand there).
 #[test]
