@@ -20,20 +20,21 @@
 //!
 //! On a vehicle group (the library's group forms, non-normative §8.7.18) `assign_position` and
 //! `change_position` move the formation as a whole: member 0 to the place, each other member to
-//! the place shifted by its offset from member 0 at the action's start (`formation_place`).
+//! the place shifted by its offset from member 0 at the action's start (`formation_place`);
+//! after a run-time condition the offset the plan last knows, which the engine checks then.
 
 use std::f64::consts::PI;
 
 use scenario::{
     DynamicsShape, FollowingMode, LaneChangeTarget, LaneOffsetTarget, LateralAction, Orientation,
-    Position, PositionKind, PrivateAction, ReferenceContext,
+    Position, PositionKind, PrivateAction, ReferenceContext, SpeedGap, StateCheck,
 };
 
 use super::action_args::timed;
 use super::path_shape;
 use super::planner::Planner;
 use super::speed_actions::Slot;
-use super::types::{Planned, When, MAX_ACCELERATION};
+use super::types::{Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{arg, Action, Invoke, Phase, Place, PlaceArg, Val};
 
@@ -85,8 +86,8 @@ impl Planner<'_> {
             p,
             inv,
             (target, formation),
-            self.lane_position(place)?,
-            &place.site,
+            (self.lane_position(place)?, &place.site),
+            out,
         )?;
         let n = name("assign_position");
         out.push(Planned::with_phase(
@@ -230,8 +231,8 @@ impl Planner<'_> {
             p,
             inv,
             (target, formation),
-            self.lane_position(place)?,
-            &place.site,
+            (self.lane_position(place)?, &place.site),
+            out,
         )?;
         if let Some((a, true)) = on_road {
             if smooth {
@@ -477,13 +478,20 @@ impl Planner<'_> {
     /// own offset from member 0 along and across the road at the action's start (`formation`,
     /// from the plan), so that the members keep their places in the formation (and do not all
     /// go to one point). Not a group's action: `place` itself.
+    ///
+    /// After a run-time condition (`formation` `None`) the offset is the one the plan last
+    /// knows, and the engine checks it when the action starts, before any member moves
+    /// (oscsim's StateCheck on `target`, first among the phase's actions in `out`: its s less
+    /// member 0's within 0.5 m, its t less member 0's within 1 cm); a formation that has
+    /// changed since is an error record and a failed run, never a member moved by an offset
+    /// it no longer has.
     fn formation_place(
         &self,
         p: &Phase,
         inv: &Invoke,
         (target, formation): (&str, Option<(f64, f64)>),
-        (lane, s, offset): (i32, f64, f64),
-        site: &Site,
+        ((lane, s, offset), site): ((i32, f64, f64), &Site),
+        out: &mut Vec<Planned>,
     ) -> Result<(i32, f64, f64), Error> {
         let Some(lead) = self.groups.get(&inv.actor).and_then(|m| m.first()) else {
             return Ok((lane, s, offset));
@@ -491,15 +499,45 @@ impl Planner<'_> {
         if lead == target {
             return Ok((lane, s, offset));
         }
-        let (ds, dt) = formation.ok_or_else(|| {
-            p.site.err(
-                K::Unsatisfiable,
-                format!(
-                    "expected a phase start the plan knows for {}(…) on group `{}` (each member keeps its offset from `{lead}` in the formation, which the plan knows at a start it knows), found one after a run-time condition",
-                    inv.action, inv.actor
-                ),
-            )
-        })?;
+        let (ds, dt) = match formation {
+            Some(f) => f,
+            None => {
+                if self.road.ids().len() > 1 {
+                    return Err(p.site.err(
+                        K::Unsatisfiable,
+                        format!("expected a plan on one road for {}(…) on group `{}` after a run-time condition (the engine checks each member's offset from `{lead}` in road coordinates on the road it is on), found {} roads", inv.action, inv.actor, self.road.ids().len()),
+                    ));
+                }
+                let t = self.last_known();
+                let (ds, dt) = (
+                    self.s_at(target, t) - self.s_at(lead, t),
+                    self.t_at(target, t) - self.t_at(lead, t),
+                );
+                let check = StateCheck {
+                    what: format!(
+                        "`{target}`'s offset from `{lead}` in group `{}`, {ds:.2} m along the road and {dt:.2} m across it as at {t:.2} s, kept by {}(…) at {}",
+                        inv.actor,
+                        inv.action,
+                        p.site.at()
+                    ),
+                    gap: Some((
+                        SpeedGap {
+                            entity_ref: lead.clone(),
+                            ahead: ds > 0.0,
+                            time: 0.0,
+                            at_least: ds.abs(),
+                        },
+                        POSITION_TOLERANCE,
+                    )),
+                    beside: Some((lead.clone(), dt, LATERAL_TOLERANCE)),
+                    ..StateCheck::default()
+                };
+                let name = format!("{}/{target}/formation:check", p.path);
+                let action = PrivateAction::Check(Box::new(check));
+                out.insert(0, Planned::with_phase(target, name, action, &p.site));
+                (ds, dt)
+            }
+        };
         let (s1, t1) = (s + ds, self.road.lane_center(lane, s) + offset + dt);
         self.lane_at(site, s1, t1).map_err(|_| {
             site.err(

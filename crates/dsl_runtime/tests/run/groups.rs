@@ -295,11 +295,6 @@ fn group_forms_that_cannot_keep_the_formation_are_errors() {
             "expected a reference outside group `g` in change_space_gap(…) on it, found its member `g.vehicles[0]`",
         ),
         (
-            "err_group_assign_position_runtime",
-            "19:9",
-            "expected a phase start the plan knows for assign_position(…) on group `g`",
-        ),
-        (
             "err_group_gap_side",
             "12:9",
             "expected `direction: ahead` or `behind` in change_space_gap(…) on group `g`",
@@ -593,6 +588,65 @@ fn a_blocks_member_0_off_the_paths_start_after_a_run_time_condition_fails_the_ru
     assert!((records[0].0 - 2.55).abs() < T_TOL, "{records:?}");
     assert_eq!(records[0].1, "do.signal.1.follow/g.vehicles[0]/1:check");
     assert_eq!(records[0].2, error);
+}
+
+/// assign_position on a group after a run-time condition: the offsets the plan last knows,
+/// checked by the engine (group_assign_position_runtime.osc, by hand there).
+#[test]
+fn a_groups_assign_position_after_a_run_time_condition_keeps_the_checked_formation() {
+    let r = run("actions/group_assign_position_runtime", 0, None);
+    for (name, x) in [("g.vehicles[0]", 320.0), ("g.vehicles[1]", 305.0)] {
+        close(
+            r.at(3.35, name).x,
+            x - 153.0,
+            TOL,
+            &format!("{name} x(3.35)"),
+        );
+        close(r.at(3.4, name).x, x - 20.0, TOL, &format!("{name} x(3.4)"));
+        let m = r.at(4.4, name);
+        close(m.x, x, TOL, &format!("{name} x(4.4)"));
+        close(m.y, -1.75, TOL, &format!("{name} y(4.4)"));
+        assert_eq!(m.lane, -1, "{name}");
+    }
+}
+
+/// change_position on a group after a run-time condition: parallel lines from where the
+/// engine finds each member (group_change_position_runtime.osc, by hand there).
+#[test]
+fn a_groups_change_position_after_a_run_time_condition_moves_each_member_along_its_line() {
+    let r = run("actions/group_change_position_runtime", 0, None);
+    for (name, x) in [("g.vehicles[0]", 191.0), ("g.vehicles[1]", 176.0)] {
+        close(
+            r.at(3.35, name).x,
+            x - 24.0,
+            TOL,
+            &format!("{name} x(3.35)"),
+        );
+        let m = r.at(4.1, name);
+        close(m.x, x - 9.6, TOL, &format!("{name} x(4.1)"));
+        close(m.y, -4.55, TOL, &format!("{name} y(4.1)"));
+        let m = r.at(4.6, name);
+        close(m.x, x, TOL, &format!("{name} x(4.6)"));
+        close(m.y, -1.75, TOL, &format!("{name} y(4.6)"));
+        assert_eq!(m.lane, -1, "{name}");
+    }
+}
+
+/// A formation changed before a run-time start fails the engine's check of the offsets
+/// (group_assign_position_runtime_off.osc).
+#[test]
+fn a_groups_assign_position_after_its_formation_changed_at_run_time_fails_the_run() {
+    let lowered = crate::support::lower("actions/group_assign_position_runtime_off", 0, None)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = crate::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    // Member 1 23.5 m further back than the -15 m the plan last knows (at 1 s): 38.5 m.
+    let want = "15.000 m from 'g.vehicles[1]' along the road (within 0.5 m) (`g.vehicles[1]`'s offset from `g.vehicles[0]` in group `g`, -15.00 m along the road and 0.00 m across it as at 1.00 s, kept by assign_position(…) at ";
+    let tail = "group_assign_position_runtime_off.osc:30:9), found 38.500 m at t = 3.350 s";
+    assert!(error.contains(want) && error.ends_with(tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 3.35).abs() < T_TOL, "{records:?}");
+    assert_eq!(records[0].1, "do.2/g.vehicles[1]/formation:check");
 }
 
 /// A group follows the part of a trajectory between its offsets, each member entering and
