@@ -6,7 +6,7 @@
 use scenario::{ControllerDomains, SourcePos};
 
 use super::properties::{classify, ControllerKind};
-use super::table::{instantiate, requested, Assigned, ControllerTable};
+use super::table::{requested, Assigned, ControllerTable};
 use super::view::ControllerView;
 use crate::error::Error;
 use crate::output::EventRecord;
@@ -76,7 +76,7 @@ pub(crate) fn assign(
 ) -> Result<Taken, Error> {
     let kind = classify(controller)?;
     let instance = match &kind {
-        ControllerKind::Model { settings, .. } => Some(instantiate(settings)),
+        ControllerKind::Model { settings, .. } => Some(controllers.instantiate(settings)),
         _ => None,
     };
     let note = match &kind {
@@ -101,7 +101,8 @@ pub(crate) fn assign(
     };
     let slot = match list.iter().position(same) {
         Some(i) => {
-            list[i] = assigned;
+            let old = std::mem::replace(&mut list[i], assigned);
+            controllers.release(old);
             i
         }
         None => {
@@ -288,8 +289,7 @@ fn set_domains(
             None,
             &world.signals,
         );
-        let ctrl = controllers.of_mut(actor.index());
-        if let Some(instance) = &mut ctrl.assigned[slot].instance {
+        if let Some(instance) = controllers.instance_mut(actor.index(), slot) {
             instance.activate(&view);
         }
     }

@@ -52,6 +52,7 @@
 //! | `external_input` | [`ExternalInput`]: what the host asks of an `external` entity, and its check |
 //! | `external` | `external`: driven by the host program ([`ExternalInput`]) |
 //! | `table` | controllers per entity, active domains |
+//! | `drivers` | the `idm` and `mobil` models by value, and the controllers holding a domain, as the stage walks them |
 //! | `assign` | AssignControllerAction, ActivateControllerAction, ObjectController |
 //! | `properties` | a `Controller`'s `model` property and settings → the model to run, or the default controller |
 //! | `load` | every controller read when the engine is built; ObjectControllers assigned |
@@ -62,6 +63,7 @@ mod assign;
 mod car_following;
 mod command;
 mod default;
+mod drivers;
 mod external;
 mod external_input;
 mod load;

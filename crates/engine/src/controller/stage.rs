@@ -19,6 +19,7 @@ use opendrive::{Direction, Real, RoadNetwork};
 
 use super::command::{Command, Lateral, Longitudinal, Merged};
 use super::default::{measure, move_entity};
+use super::drivers::{Instance, Model};
 use super::properties::MotionDomains;
 use super::table::{ControllerTable, EntityControllers};
 use super::view::ControllerView;
@@ -51,30 +52,46 @@ pub(crate) fn step(
         let index: &LaneIndex = index;
         merged.resize(world.entities.len(), None);
         let (entities, network, signals) = (&world.entities, &world.network, &world.signals);
-        for (i, ctrl) in controllers.iter_mut() {
+        // The controllers holding a domain, entity by entity in index order, each entity's in
+        // the order they were assigned; the `idm` and `mobil` models by value (drivers.rs).
+        let (runs, drivers, per_entity) = controllers.walk();
+        let mut rest = runs;
+        while let Some(first) = rest.first() {
+            let i = first.entity;
+            let n = rest.iter().take_while(|r| r.entity == i).count();
+            let (of_entity, after) = rest.split_at(n);
+            rest = after;
             // Whether the entity is placed, from the driver inputs the index copied (a line
             // of the compact table, not of the 1.3 kB entity: store/driver_inputs.rs).
             let (Some(e), Some(input)) = (entities.get(i), index.input(i).filter(|r| r.placed))
             else {
                 continue;
             };
-            let external = ctrl.external;
             let mut m = Merged::default();
-            let mut any = false;
-            for a in &mut ctrl.assigned {
-                let held = a.holds();
-                let Some(instance) = a
-                    .instance
-                    .as_mut()
-                    .filter(|_| held != MotionDomains::default())
-                else {
-                    continue;
+            for run in of_entity {
+                let command = match run.model {
+                    // A driver model reads no host input (that is the `external` model's).
+                    Model::Driver(k) => {
+                        let view = ControllerView::new(
+                            time, e, input, entities, network, index, None, signals,
+                        );
+                        drivers[k].step(&view, dt)
+                    }
+                    Model::Boxed { slot } => {
+                        let ctrl = &mut per_entity[i];
+                        let external = ctrl.external;
+                        let Some(Instance::Boxed(instance)) = ctrl.assigned[slot].instance.as_mut()
+                        else {
+                            continue;
+                        };
+                        let view = ControllerView::new(
+                            time, e, input, entities, network, index, external, signals,
+                        );
+                        instance.step(&view, dt)
+                    }
                 };
-                let view = ControllerView::new(
-                    time, e, input, entities, network, index, external, signals,
-                );
-                any = true;
-                match instance.step(&view, dt) {
+                let held = run.held;
+                match command {
                     Command::Pose(p) if held == MotionDomains::BOTH => m.pose = Some(p),
                     Command::Pose(_) => {}
                     Command::Motion {
@@ -90,9 +107,7 @@ pub(crate) fn step(
                     }
                 }
             }
-            if any {
-                merged[i] = Some(m);
-            }
+            merged[i] = Some(m);
         }
     }
     let net = &world.network;

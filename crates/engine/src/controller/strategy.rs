@@ -114,11 +114,15 @@ pub(crate) fn hand_over(
         e.speed = v.clamp(-e.max_speed(), e.max_speed());
     }
     let entity = world.entity(actor).name.clone();
-    let ctrl = controllers.of_mut(actor.index());
-    let a = &mut ctrl.assigned[slot];
-    let taken = match (s, a.instance.as_mut()) {
+    let taken = match (s, controllers.instance_mut(actor.index(), slot)) {
         (Some(s), Some(instance)) => instance.strategy(s),
         _ => None,
+    };
+    let Some(a) = controllers
+        .of(actor.index())
+        .and_then(|c| c.assigned.get(slot))
+    else {
+        return Ok(true);
     };
     let note = match taken {
         Some(what) => format!("{kind} handed to the controller: {what}"),

@@ -24,6 +24,7 @@
 use scenario::ControllerDomains;
 
 use super::command::{Controller, Merged};
+use super::drivers::{DriverModel, Drivers, Instance, Model, Run, Runs};
 use super::external_input::ExternalInput;
 use super::properties::{ControllerKind, ModelSettings, MotionDomains};
 use crate::store::lane_index::LaneIndex;
@@ -41,7 +42,7 @@ pub(crate) struct Assigned {
     /// Active domains.
     pub active: ActiveDomains,
     /// The running model (built-in models only).
-    pub instance: Option<Box<dyn Controller>>,
+    pub instance: Option<Instance>,
 }
 
 impl Assigned {
@@ -129,6 +130,10 @@ pub(crate) struct ControllerTable {
     held: usize,
     /// The controllers stage's storage, kept from step to step (stage.rs).
     pub stage: StageStorage,
+    /// The `idm` and `mobil` models, by value (drivers.rs).
+    drivers: Drivers,
+    /// The controllers holding a domain, as the stage walks them (drivers.rs).
+    runs: Runs,
 }
 
 /// What the controllers stage rebuilds each step, kept so that a step allocates nothing once
@@ -156,9 +161,69 @@ impl ControllerTable {
         &mut self.per_entity[index]
     }
 
-    /// Every entity's controllers, by index.
-    pub fn iter_mut(&mut self) -> impl Iterator<Item = (usize, &mut EntityControllers)> {
-        self.per_entity.iter_mut().enumerate()
+    /// What the controllers stage walks: the controllers holding a domain (built again
+    /// first if a controller list changed), the driver models they may name and every
+    /// entity's controllers, by index (drivers.rs).
+    pub fn walk(&mut self) -> (&[Run], &mut [DriverModel], &mut [EntityControllers]) {
+        let per_entity = &self.per_entity;
+        let runs = self.runs.current(|| runs_of(per_entity));
+        (runs, self.drivers.all_mut(), &mut self.per_entity)
+    }
+
+    /// The running model of controller `slot` of entity `index`, if it is a built-in model.
+    pub fn instance_mut(&mut self, index: usize, slot: usize) -> Option<&mut dyn Controller> {
+        let a = self.per_entity.get_mut(index)?.assigned.get_mut(slot)?;
+        match a.instance.as_mut()? {
+            Instance::Driver(k) => self.drivers.get_mut(*k).map(DriverModel::as_controller),
+            Instance::Boxed(b) => Some(b.as_mut()),
+        }
+    }
+
+    /// The running model for `settings`: a driver model kept by value in the table, any
+    /// other boxed.
+    pub fn instantiate(&mut self, settings: &ModelSettings) -> Instance {
+        use super::car_following::{AccController, IdmController};
+        use super::external::ExternalController;
+        use super::mobil::MobilController;
+        use super::vehicle_dynamics::VehicleDynamicsController;
+        let mut driver = |model| Instance::Driver(self.drivers.add(model));
+        match settings {
+            ModelSettings::Idm {
+                idm,
+                desired_speed_given,
+            } => driver(DriverModel::Idm(IdmController::new(
+                *idm,
+                *desired_speed_given,
+            ))),
+            ModelSettings::Mobil {
+                idm,
+                desired_speed_given,
+                mobil,
+            } => driver(DriverModel::Mobil(MobilController::new(
+                *idm,
+                *desired_speed_given,
+                *mobil,
+            ))),
+            ModelSettings::Acc {
+                acc,
+                set_speed_given,
+            } => Instance::Boxed(Box::new(AccController::new(*acc, *set_speed_given))),
+            ModelSettings::VehicleDynamics {
+                steering_ratio,
+                steering_inertia,
+            } => Instance::Boxed(Box::new(VehicleDynamicsController::new(
+                *steering_ratio,
+                *steering_inertia,
+            ))),
+            ModelSettings::External => Instance::Boxed(Box::new(ExternalController::new())),
+        }
+    }
+
+    /// `old` was replaced: its driver model, if any, is no longer used.
+    pub fn release(&mut self, old: Assigned) {
+        if let Some(Instance::Driver(k)) = old.instance {
+            self.drivers.release(k);
+        }
     }
 
     /// Some built-in model holds a domain of some entity.
@@ -179,6 +244,8 @@ impl ControllerTable {
     pub fn recount_entity(&mut self, index: usize, before: usize) {
         // `before` is part of `held` (the count is the sum over every entity), so no underflow.
         self.held = self.held + self.held_by(index) - before;
+        // Every change of an entity's controllers is recounted: the stage's runs too.
+        self.runs.mark_stale();
         debug_assert_eq!(
             self.held,
             self.per_entity
@@ -190,38 +257,135 @@ impl ControllerTable {
     }
 }
 
-/// The running model for `settings`.
-pub(crate) fn instantiate(settings: &ModelSettings) -> Box<dyn Controller> {
-    use super::car_following::{AccController, IdmController};
-    use super::external::ExternalController;
-    use super::mobil::MobilController;
-    use super::vehicle_dynamics::VehicleDynamicsController;
-    match settings {
-        ModelSettings::Idm {
-            idm,
-            desired_speed_given,
-        } => Box::new(IdmController::new(*idm, *desired_speed_given)),
-        ModelSettings::Mobil {
-            idm,
-            desired_speed_given,
-            mobil,
-        } => Box::new(MobilController::new(*idm, *desired_speed_given, *mobil)),
-        ModelSettings::Acc {
-            acc,
-            set_speed_given,
-        } => Box::new(AccController::new(*acc, *set_speed_given)),
-        ModelSettings::VehicleDynamics {
-            steering_ratio,
-            steering_inertia,
-        } => Box::new(VehicleDynamicsController::new(
-            *steering_ratio,
-            *steering_inertia,
-        )),
-        ModelSettings::External => Box::new(ExternalController::new()),
-    }
+/// The runs of `per_entity` (drivers.rs): each controller whose `holds()` is not empty, in
+/// the order the lists give them.
+fn runs_of(per_entity: &[EntityControllers]) -> impl Iterator<Item = Run> + '_ {
+    per_entity.iter().enumerate().flat_map(|(i, ctrl)| {
+        ctrl.assigned
+            .iter()
+            .enumerate()
+            .filter_map(move |(slot, a)| {
+                let held = a.holds();
+                if held == MotionDomains::default() {
+                    return None;
+                }
+                let model = match a.instance {
+                    Some(Instance::Driver(k)) => Model::Driver(k),
+                    // `holds()` is empty without an instance, so this is `Boxed`.
+                    _ => Model::Boxed { slot },
+                };
+                Some(Run {
+                    entity: i,
+                    held,
+                    model,
+                })
+            })
+    })
 }
 
 /// The requested change per domain, as (longitudinal, lateral, lighting, animation).
 pub(crate) fn requested(d: &ControllerDomains) -> [Option<bool>; 4] {
     [d.longitudinal, d.lateral, d.lighting, d.animation]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::controller::car_following::IdmController;
+    use crate::controller::external::ExternalController;
+    use crate::models::idm::IdmParameters;
+
+    fn assigned(instance: Option<Instance>, longitudinal: bool, lateral: bool) -> Assigned {
+        Assigned {
+            name: "c".to_owned(),
+            object_controller: None,
+            kind: ControllerKind::Default,
+            active: ActiveDomains {
+                longitudinal,
+                lateral,
+                lighting: true,
+                animation: false,
+            },
+            instance,
+        }
+    }
+
+    fn entity(assigned: Vec<Assigned>) -> EntityControllers {
+        EntityControllers {
+            assigned,
+            ..EntityControllers::default()
+        }
+    }
+
+    fn run(entity: usize, longitudinal: bool, lateral: bool, model: Model) -> Run {
+        Run {
+            entity,
+            held: MotionDomains {
+                longitudinal,
+                lateral,
+            },
+            model,
+        }
+    }
+
+    /// The runs are the controllers holding a motion domain, by entity and then by place in
+    /// the entity's list, written out by hand for five entities: 0 an active `idm` (driver 0);
+    /// 1 nothing; 2 an inactive driver 1, a controller of another tool (no instance) active on
+    /// both domains (it holds none), a boxed `external` active laterally at slot 2; 3 only
+    /// lighting (no motion domain); 4 a boxed model longitudinally at slot 0 and driver 2 on
+    /// both at slot 1.
+    #[test]
+    fn the_runs_are_the_controllers_holding_a_domain_in_the_stages_order() {
+        let boxed = || Some(Instance::Boxed(Box::new(ExternalController::new())));
+        let per_entity = vec![
+            entity(vec![assigned(Some(Instance::Driver(0)), true, false)]),
+            entity(vec![]),
+            entity(vec![
+                assigned(Some(Instance::Driver(1)), false, false),
+                assigned(None, true, true),
+                assigned(boxed(), false, true),
+            ]),
+            entity(vec![assigned(boxed(), false, false)]),
+            entity(vec![
+                assigned(boxed(), true, false),
+                assigned(Some(Instance::Driver(2)), true, true),
+            ]),
+        ];
+        let expected = [
+            run(0, true, false, Model::Driver(0)),
+            run(2, false, true, Model::Boxed { slot: 2 }),
+            run(4, true, false, Model::Boxed { slot: 0 }),
+            run(4, true, true, Model::Driver(2)),
+        ];
+        let mut runs = Runs::default();
+        runs.mark_stale();
+        assert_eq!(runs.current(|| runs_of(&per_entity)), &expected[..]);
+        // Not stale: the same list, not built again (the debug assertion compares it).
+        assert_eq!(runs.current(|| runs_of(&per_entity)), &expected[..]);
+    }
+
+    /// A released place is reused by the next model, the others keep theirs.
+    #[test]
+    fn a_replaced_driver_models_place_is_reused() {
+        let idm = |v0| {
+            DriverModel::Idm(IdmController::new(
+                IdmParameters {
+                    desired_speed: v0,
+                    ..IdmParameters::default()
+                },
+                true,
+            ))
+        };
+        let mut drivers = Drivers::default();
+        assert_eq!((drivers.add(idm(10.0)), drivers.add(idm(20.0))), (0, 1));
+        drivers.release(0);
+        assert_eq!(drivers.add(idm(30.0)), 0);
+        assert_eq!(drivers.add(idm(40.0)), 2);
+        let v0 = |d: &mut Drivers, k| match d.get_mut(k) {
+            Some(DriverModel::Idm(c)) => c.params.desired_speed,
+            _ => f64::NAN,
+        };
+        // Exact: stored, not computed.
+        assert_eq!([0, 1, 2].map(|k| v0(&mut drivers, k)), [30.0, 20.0, 40.0]);
+    }
 }

@@ -1,0 +1,158 @@
+//! The driver models by value in a dense table, and the list of the controllers that hold a
+//! motion domain, which the controllers stage walks (OpenSCENARIO 1.3 §6.6 user-defined
+//! controllers, §7.2.2.1: a controller gives the motion of the domains it holds; issue 31).
+//!
+//! **Why.** The stage used to reach each entity's model through the entity's controller list
+//! (`Assigned`, 168 bytes on the heap, one list per entity) and a boxed `dyn Controller`
+//! behind it: two dependent loads from scattered heap lines per entity and step, then a
+//! virtual call. At 4,000 `idm` vehicles the load of the `Assigned` alone held 11 % of the
+//! stage's samples (`perf record`, issue 31). Here the `idm` and `mobil` models (the driver
+//! models of traffic) live by value in one vector ([`Drivers`]), in the order they were
+//! assigned, and the stage walks [`Runs`]: per entity in index order, each controller holding
+//! a domain, with the domains it holds and where its model is. For a driver model the stage
+//! reads the run and the model only, and calls its step without a virtual call. Other models
+//! (`acc`, `vehicle_dynamics`, `external`) stay boxed in their `Assigned`, as before.
+//!
+//! **The same commands.** The runs are in the order the stage walked the controllers before
+//! (entity index, then assignment order), each is a controller whose `holds()` is not empty,
+//! and each gets the same view: the commands, their merge and the index's search hints are
+//! the same, call for call. The list is built again from the controller lists after any change
+//! of an entity's controllers (the table marks it stale where it recounts the held domains);
+//! in debug builds (every `cargo test`) the stage asserts that the list it walks is the one
+//! built from the controller lists.
+
+use opendrive::Real;
+
+use super::car_following::IdmController;
+use super::command::{Command, Controller};
+use super::mobil::MobilController;
+use super::properties::MotionDomains;
+use super::view::ControllerView;
+
+/// Where a running built-in model is kept (an entity's `Assigned` holds it).
+#[derive(Debug)]
+pub(crate) enum Instance {
+    /// `idm` or `mobil`: by value in the table's [`Drivers`], at this place.
+    Driver(usize),
+    /// Any other model.
+    Boxed(Box<dyn Controller>),
+}
+
+/// A driver model held by value (module doc).
+#[derive(Debug, Clone)]
+pub(crate) enum DriverModel {
+    /// `idm`.
+    Idm(IdmController),
+    /// `mobil`.
+    Mobil(MobilController),
+}
+
+impl DriverModel {
+    /// The model as a [`Controller`] (for activation and strategies, which are rare).
+    pub fn as_controller(&mut self) -> &mut dyn Controller {
+        match self {
+            DriverModel::Idm(c) => c,
+            DriverModel::Mobil(c) => c,
+        }
+    }
+
+    /// The model's step: [`Controller::step`] without a virtual call.
+    #[inline]
+    pub fn step(&mut self, view: &ControllerView<'_>, dt: Real) -> Command {
+        match self {
+            DriverModel::Idm(c) => c.step(view, dt),
+            DriverModel::Mobil(c) => c.step(view, dt),
+        }
+    }
+}
+
+/// The driver models of every entity, by value, with the places of replaced ones to reuse.
+#[derive(Debug, Default)]
+pub(crate) struct Drivers {
+    models: Vec<DriverModel>,
+    /// Places of models no `Assigned` names any more (replaced by a new assignment).
+    free: Vec<usize>,
+}
+
+impl Drivers {
+    /// Keeps `model`; returns its place.
+    pub fn add(&mut self, model: DriverModel) -> usize {
+        match self.free.pop() {
+            Some(k) => {
+                self.models[k] = model;
+                k
+            }
+            None => {
+                self.models.push(model);
+                self.models.len() - 1
+            }
+        }
+    }
+
+    /// The model at `k` is no longer used.
+    pub fn release(&mut self, k: usize) {
+        self.free.push(k);
+    }
+
+    /// The model at `k`.
+    pub fn get_mut(&mut self, k: usize) -> Option<&mut DriverModel> {
+        self.models.get_mut(k)
+    }
+
+    /// Every model, by place.
+    pub fn all_mut(&mut self) -> &mut [DriverModel] {
+        &mut self.models
+    }
+}
+
+/// Where a run's model is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Model {
+    /// In [`Drivers`], at this place.
+    Driver(usize),
+    /// Boxed in the entity's `Assigned` number `slot`.
+    Boxed {
+        /// The controller's place in the entity's list.
+        slot: usize,
+    },
+}
+
+/// One controller holding a motion domain (module doc).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct Run {
+    /// The entity's index.
+    pub entity: usize,
+    /// The domains the controller holds (never none).
+    pub held: MotionDomains,
+    /// Its model.
+    pub model: Model,
+}
+
+/// The runs of a step, by entity index and then assignment order (module doc).
+#[derive(Debug, Default)]
+pub(crate) struct Runs {
+    runs: Vec<Run>,
+    /// A controller list changed since the runs were built.
+    stale: bool,
+}
+
+impl Runs {
+    /// A controller list changed: build the runs again before the next walk.
+    pub fn mark_stale(&mut self) {
+        self.stale = true;
+    }
+
+    /// The runs, built again from `fresh` (the runs of the controller lists, in order) first
+    /// when stale, in place: no allocation once grown.
+    pub fn current<I: Iterator<Item = Run>>(&mut self, fresh: impl Fn() -> I) -> &[Run] {
+        if std::mem::take(&mut self.stale) {
+            self.runs.clear();
+            self.runs.extend(fresh());
+        }
+        debug_assert!(
+            fresh().eq(self.runs.iter().copied()),
+            "the runs walked are the runs of the controller lists"
+        );
+        &self.runs
+    }
+}
