@@ -50,7 +50,6 @@ pub(crate) fn step(
         let index = &mut storage.index;
         index.rebuild(&world.network, &world.entities);
         let index: &LaneIndex = index;
-        merged.resize(world.entities.len(), None);
         let (entities, network, signals) = (&world.entities, &world.network, &world.signals);
         // The controllers holding a domain, entity by entity in index order, each entity's in
         // the order they were assigned; the `idm` and `mobil` models by value (drivers.rs).
@@ -107,16 +106,18 @@ pub(crate) fn step(
                     }
                 }
             }
-            merged[i] = Some(m);
+            merged.push((i, m));
         }
     }
     let net = &world.network;
     let mut finite = true;
     let tested = |e: &Entity| !e.placed || all_finite(e);
+    // The commands, in increasing entity index (the runs' order), met in the walk.
+    let mut commands = merged.iter().peekable();
     for i in 0..world.entities.len() {
         let e = &mut world.entities[i];
-        match merged.get(i).copied().flatten() {
-            Some(m) if e.placed => apply(net, e, controllers.of_mut(i), m, dt),
+        match commands.next_if(|(j, _)| *j == i) {
+            Some(&(_, m)) if e.placed => apply(net, e, controllers.of_mut(i), m, dt),
             _ => {
                 // Run option stop_at_red_lights (signals/red_light.rs); off: nothing.
                 world.signals.govern_speed(net, i, e, dt);

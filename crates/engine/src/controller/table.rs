@@ -142,8 +142,9 @@ pub(crate) struct ControllerTable {
 pub(crate) struct StageStorage {
     /// The lane index of the step.
     pub index: LaneIndex,
-    /// The merged commands of the step, by entity index.
-    pub merged: Vec<Option<Merged>>,
+    /// The merged commands of the step: (entity index, command) in increasing entity index,
+    /// for the entities a controller gave one (not a slot per entity, written each step).
+    pub merged: Vec<(usize, Merged)>,
 }
 
 impl ControllerTable {
