@@ -78,7 +78,8 @@ impl IdmController {
         }
     }
 
-    /// The acceleration in the view.
+    /// The acceleration in the view: the step's command as a number (the controllers stage's
+    /// walk of the driver models, controller/drivers.rs, takes it so; inlined there).
     #[inline]
     pub(crate) fn acceleration(&self, view: &ControllerView<'_>) -> Real {
         self.params
@@ -116,10 +117,6 @@ impl Controller for IdmController {
         self.on_strategy(strategy)
     }
 
-    // Inlined into the stage's walk of the driver models (controller/drivers.rs): the command
-    // then stays in registers; returned through memory, its 16-byte reload of the callee's two
-    // 8-byte stores waited for them (19 % of the stage's samples of `idm` at 4,000, issue 31).
-    #[inline]
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
         Command::acceleration(self.acceleration(view))
     }

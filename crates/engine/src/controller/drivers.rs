@@ -24,7 +24,7 @@
 use opendrive::Real;
 
 use super::car_following::IdmController;
-use super::command::{Command, Controller};
+use super::command::Controller;
 use super::mobil::MobilController;
 use super::properties::MotionDomains;
 use super::view::ControllerView;
@@ -56,12 +56,17 @@ impl DriverModel {
         }
     }
 
-    /// The model's step: [`Controller::step`] without a virtual call.
+    /// The model's step as numbers, without a virtual call: the acceleration and the lane to
+    /// change to, if any ([`Controller::step`] gives them as a [`Command`]:
+    /// `Command::Motion` with `Longitudinal::Acceleration` and `Lateral::ChangeLane`). The
+    /// stage merges them into the entity's command without building the `Command` enum,
+    /// which it copied through the stack with a 16-byte reload of 8-byte stores that waited
+    /// for them (14-19 % of the stage's samples of `idm` at 4,000, issue 31).
     #[inline]
-    pub fn step(&mut self, view: &ControllerView<'_>, dt: Real) -> Command {
+    pub fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
         match self {
-            DriverModel::Idm(c) => c.step(view, dt),
-            DriverModel::Mobil(c) => c.step(view, dt),
+            DriverModel::Idm(c) => (c.acceleration(view), None),
+            DriverModel::Mobil(c) => c.command(view),
         }
     }
 }

@@ -250,17 +250,27 @@ impl Controller for MobilController {
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
+        let (a, lane) = self.command(view);
+        Command::Motion {
+            longitudinal: Some(Longitudinal::Acceleration(a)),
+            lateral: lane.map(Lateral::ChangeLane),
+        }
+    }
+}
+
+impl MobilController {
+    /// The step's command as numbers (the controllers stage's walk of the driver models,
+    /// controller/drivers.rs, takes them so): the acceleration and the lane to change to, if
+    /// any. [`Controller::step`] is this as a [`Command`].
+    pub(crate) fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
         let mut own = Own::new(&self.idm.params, view);
-        let lateral = self.decide(view, &mut own).map(|lane| {
+        let lane = self.decide(view, &mut own);
+        if lane.is_some() {
             self.last_change = view.time();
-            Lateral::ChangeLane(lane)
-        });
+        }
         // a_c is the IDM controller's acceleration in this view (the same leader, light,
         // speed and parameters).
-        Command::Motion {
-            longitudinal: Some(Longitudinal::Acceleration(own.a_c)),
-            lateral,
-        }
+        (own.a_c, lane)
     }
 }
 

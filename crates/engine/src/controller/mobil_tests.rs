@@ -191,7 +191,9 @@ fn for_each_view(mut f: impl FnMut(u64, &World, &LaneIndex, &Entity, &Controller
 /// On 40 highways of 60 cars, with four parameter sets (the defaults; egoistic with no
 /// threshold; a low b_safe that makes many changes unsafe; no keep-side bias) and desired
 /// speeds of 20 and 36 m/s, the step's command (acceleration and lane change) has the bits of
-/// [`step_each`]'s. Both kinds of outcome occur many times.
+/// [`step_each`]'s, and so has the command the controllers stage takes from the model held by
+/// value (drivers.rs `DriverModel::command`, which is `MobilController::command`: the
+/// acceleration and lane as numbers), the controller's state after it too. Both kinds of outcome occur many times.
 #[test]
 fn the_shortcut_gives_the_full_rule_bit_for_bit() {
     let sets = [
@@ -220,10 +222,22 @@ fn the_shortcut_gives_the_full_rule_bit_for_bit() {
                 };
                 let mut fast = MobilController::new(idm, true, mobil);
                 let mut full = fast.clone();
+                let mut driver = fast.clone();
                 let (a, b) = (fast.step(view, 0.05), step_each(&mut full, view));
                 assert_eq!(
                     format!("{a:?}"),
                     format!("{b:?}"),
+                    "seed {seed}, {}",
+                    e.name
+                );
+                let (acceleration, lane) = driver.command(view);
+                let c = Command::Motion {
+                    longitudinal: Some(Longitudinal::Acceleration(acceleration)),
+                    lateral: lane.map(Lateral::ChangeLane),
+                };
+                assert_eq!(
+                    format!("{c:?} {driver:?}"),
+                    format!("{b:?} {full:?}"),
                     "seed {seed}, {}",
                     e.name
                 );

@@ -68,13 +68,23 @@ pub(crate) fn step(
             };
             let mut m = Merged::default();
             for run in of_entity {
+                let held = run.held;
                 let command = match run.model {
-                    // A driver model reads no host input (that is the `external` model's).
+                    // A driver model reads no host input (that is the `external` model's); its
+                    // command is an acceleration and a lane change, merged as `Command::Motion`
+                    // of the two is below (drivers.rs).
                     Model::Driver(k) => {
                         let view = ControllerView::new(
                             time, e, input, entities, network, index, None, signals,
                         );
-                        drivers[k].step(&view, dt)
+                        let (a, lane) = drivers[k].command(&view);
+                        if held.longitudinal {
+                            m.longitudinal = Some(Longitudinal::Acceleration(a));
+                        }
+                        if held.lateral {
+                            m.lateral = lane.map(Lateral::ChangeLane);
+                        }
+                        continue;
                     }
                     Model::Boxed { slot } => {
                         let ctrl = &mut per_entity[i];
@@ -89,7 +99,6 @@ pub(crate) fn step(
                         instance.step(&view, dt)
                     }
                 };
-                let held = run.held;
                 match command {
                     Command::Pose(p) if held == MotionDomains::BOTH => m.pose = Some(p),
                     Command::Pose(_) => {}
