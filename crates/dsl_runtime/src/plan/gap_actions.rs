@@ -42,8 +42,8 @@
 //! action the actor ran just before (to the same reference), else the plan's gap between the two
 //! tracks at the phase's start. Where the plan does not know the tracks then (a phase that
 //! starts on a run-time condition, or an actor the engine's gap controller moves) the engine
-//! measures the gap or headway along the road as the action starts and keeps it (oscsim's
-//! LongitudinalDistanceAction option `at_start`, no XML form); a lateral gap there is an error.
+//! measures the gap or headway as the action starts and keeps it (oscsim's option `at_start`
+//! of the LongitudinalDistanceAction and the LateralDistanceAction, no XML form).
 //! While the engine's controller moves the actor the plan does not know its track: a later
 //! phase of the actor must start on a run-time condition (an `until`, a `wait`, or the gap
 //! action's own end), else an error.
@@ -175,7 +175,6 @@ impl Planner<'_> {
             Measure::Lateral(side) => PrivateAction::Lateral(LateralAction::LateralDistance {
                 entity_ref: reference.clone(),
                 continuous: !change,
-                // gap_at_start measures a lateral gap before the run.
                 distance: wanted.map(Gap::value),
                 freespace: true,
                 displacement: Some(side),
@@ -187,6 +186,8 @@ impl Planner<'_> {
                     max_deceleration_rate: None,
                     max_speed: Some(LATERAL_GAP_SPEED),
                 }),
+                // Without a value: the one the engine measures as the action starts.
+                at_start: wanted.is_none(),
             }),
             Measure::Longitudinal(displacement) => {
                 // Without a value: the one the engine measures as the action starts.
@@ -365,8 +366,7 @@ impl Planner<'_> {
     /// the target of the actor's gap action just before (to the same reference, of the same
     /// kind), else the plan's gap at the phase's start (along the road or across it); `None`
     /// where the plan does not know the gap then (a run-time start, or an actor the engine's
-    /// gap controller moves) and the engine measures it as the action starts (a gap or
-    /// headway along the road).
+    /// gap controller moves) and the engine measures it as the action starts.
     fn gap_at_start(
         &self,
         p: &Phase,
@@ -382,32 +382,9 @@ impl Planner<'_> {
         }
         let moved =
             self.engine_moved.contains_key(target) || self.engine_moved.contains_key(reference);
-        if kind != Kind::Lateral && (t0.is_none() || moved) {
+        let Some(t) = t0.filter(|_| !moved) else {
             return Ok(None);
-        }
-        let unknown = |why: &str| {
-            p.site.err(
-                K::Unsatisfiable,
-                format!(
-                    "expected the {} at the start of {}(…) known to the plan, found {why}; change it first ({} to the same reference)",
-                    match kind {
-                        Kind::Headway => "headway",
-                        Kind::Space => "gap",
-                        Kind::Lateral => "lateral gap",
-                    },
-                    inv.action,
-                    match kind {
-                        Kind::Lateral => "change_space_gap(…, left/right/inside/outside)",
-                        _ => "change_space_gap / change_time_headway",
-                    }
-                ),
-            )
         };
-        // Only a lateral gap gets here without a known start or with a moved actor.
-        let t = t0.ok_or_else(|| unknown("a phase that starts on a run-time condition"))?;
-        if moved {
-            return Err(unknown("an actor the engine's gap controller moves"));
-        }
         if kind == Kind::Lateral {
             let (t_a, t_r) = (self.t_at(target, t), self.t_at(reference, t));
             let left = t_a > t_r;
@@ -419,8 +396,9 @@ impl Planner<'_> {
         if kind == Kind::Headway {
             let v = self.track(reference).at(t).1;
             if v <= 0.0 {
-                return Err(unknown(
-                    "the reference standing (no headway to a standing object)",
+                return Err(p.site.err(
+                    K::Unsatisfiable,
+                    format!("expected the reference of {}(…) moving at its start, found it standing (no headway to a standing object)", inv.action),
                 ));
             }
             return Ok(Some(Gap::Headway(between / v)));

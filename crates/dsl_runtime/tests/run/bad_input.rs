@@ -185,11 +185,6 @@ fn gap_actions_without_a_reference_sideways_or_followed_at_a_planned_time() {
         &["expected a 5 m gap right of `lead` to leave `ego` in a driving lane, found it at t = -12.25 m across the road"],
     );
     expect(
-        "err_gap_lateral_keep",
-        "12:13",
-        &["expected the lateral gap at the start of keep_space_gap(…) known to the plan, found a phase that starts on a run-time condition"],
-    );
-    expect(
         "err_gap_lateral_lane",
         "10:13",
         &["expected no lane or lateral modifier beside change_space_gap(…), which controls the lateral position, found `lane(…)`"],

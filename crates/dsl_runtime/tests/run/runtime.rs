@@ -615,3 +615,20 @@ fn the_rate_of_a_speed_change_relative_to_another_at_the_end_after_an_until_is_a
         "{e}"
     );
 }
+
+/// runtime_keep_lateral_gap.osc's comment, by hand: the lateral gap ego keeps to npc after a
+/// run-time start is the 1.5 m the engine measures then; ego stays on its lane's centre.
+#[test]
+fn a_lateral_gap_kept_after_an_until_is_the_one_the_engine_measures_then() {
+    let r = run("runtime_keep_lateral_gap", 0, None);
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.beside", 3.35, 5.35)]);
+    for t in [3.35, 4.35, 5.35] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.y + 5.25).abs() < S_TOL && ego.lane == -2,
+            "{t}: {ego:?}"
+        );
+        assert!((ego.speed - 20.0).abs() < V_TOL, "{t}: {ego:?}");
+    }
+    assert!((r.at(5.35, "ego").s - 207.0).abs() < S_TOL);
+}

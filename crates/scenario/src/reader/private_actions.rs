@@ -219,6 +219,7 @@ fn read_lateral_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<LateralActi
             displacement: ctx.opt(c, "displacement")?,
             coordinate_system: ctx.opt(c, "coordinateSystem")?,
             dynamic_constraints: read_dynamic_constraints(ctx, c)?,
+            at_start: false,
         },
         _ => return Err(ctx.unexpected(n, c, EXPECTED)),
     })

@@ -29,6 +29,9 @@
 //!   lane frames refuse it at the start, having no distance to measure (issue 16 class 8).
 //! * The heading turns with the sideways motion: h = road heading + atan(v / speed), the
 //!   motion being handed to the default controller as a one-step lateral blend of the lane.
+//! * oscsim's `at_start` (no XML form; DSL 2.1 §8.8.3 `keep_space_gap(…, lateral)` after a
+//!   run-time start): the distance is the clearance measured as the action starts, on the
+//!   side `displacement` keeps the reference on (not below 0).
 //! * `continuous="false"`: the action ends when the lateral error measured at a step's start is
 //!   at most 0.01 m (esmini's threshold; the standard gives none); the actor keeps the lateral
 //!   position reached.
@@ -88,6 +91,7 @@ pub(crate) fn start_lateral(
         displacement,
         coordinate_system,
         dynamic_constraints,
+        at_start,
     } = action
     else {
         return Err(Error::unsupported("this LateralAction", pos));
@@ -110,9 +114,23 @@ pub(crate) fn start_lateral(
     };
     // The sideways motion in progress (a lane change, say) carries on into the action.
     let side = travel_sign(e.track.as_ref().map(|t| t.direction));
+    let distance =
+        match (distance, at_start) {
+            (Some(_), true) => return Err(Error::at(
+                "a LateralDistanceAction keeping either a given distance or the one at its start",
+                "both",
+                pos,
+            )),
+            // oscsim's `at_start`: the clearance on the side the reference is kept on, not below 0.
+            (None, true) => gauge
+                .clearance(world, actor, reference, toward)
+                .unwrap_or(0.0)
+                .max(0.0),
+            (d, false) => d.unwrap_or(0.0).abs(),
+        };
     let mut state = LateralState {
         reference,
-        distance: distance.unwrap_or(0.0).abs(),
+        distance,
         gauge,
         toward,
         continuous: *continuous,

@@ -344,6 +344,11 @@ pub enum LateralAction {
         coordinate_system: Option<CoordinateSystem>,
         /// Limits.
         dynamic_constraints: Option<DynamicConstraints>,
+        /// oscsim's option, no XML form (the DSL runtime writes it for ASAM OpenSCENARIO DSL
+        /// 2.1 §8.8.3 `keep_space_gap(…, lateral)` where its gap at the start is not the
+        /// plan's to know; the XML reader writes `false`): without a `distance`, keep the one
+        /// the engine measures when the action starts.
+        at_start: bool,
     },
 }
 
