@@ -602,6 +602,16 @@ fn speed_changes_at_the_rate_of_another_actors_acceleration_after_an_until_are_t
         "do.match.0/ego/1:speed",
         7.35,
     );
+    // A rate beyond the vehicle's 10 m/s²: lead's −2 − 9 = −11 m/s², refused in the first step.
+    let want = "expected a rate within 'ego''s 10.000 m/s² (acceleration(…) at ";
+    let tail =
+        "runtime_acceleration_rate_relative_limit.osc:22:17), found 11.000 m/s² at t = 3.400 s";
+    fails(
+        "runtime_acceleration_rate_relative_limit",
+        (want, tail),
+        "do.brake.0/ego/1:speed",
+        3.4,
+    );
 }
 
 /// The rate of a speed change relative to lead's acceleration at: end after a run-time start
