@@ -165,7 +165,9 @@ pub enum ErrorKind {
         found: String,
     },
     /// oscsim's state check (`scenario::StateCheck`) found the actor's state other than
-    /// required when it started: the run stops with this error.
+    /// required when it started, or a RelativeAccelerationAction's speed change
+    /// (`scenario::SpeedChange`) missed its time or the vehicle's rate: the run stops with
+    /// this error.
     #[error("expected {expected} ({what}), found {found} at t = {time:.3} s")]
     CheckFailed {
         /// What was checked and where it is written.

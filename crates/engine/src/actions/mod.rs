@@ -4,7 +4,8 @@
 //!
 //! Each private action runs once per actor. An instantaneous action (TeleportAction, a
 //! SpeedAction with `step` shape, the global actions) takes effect in `start` and reports
-//! ended; the others keep a per-actor [`Part`] that stage 2 of the step advances. A new action
+//! ended; the others keep a per-actor [`Part`] that stage 2 of the step advances (where one may
+//! also fail: `ActionTable::step_all` returns the failures, which stop the run). A new action
 //! in the control domain (longitudinal, lateral) of an actor stops the one running there
 //! (§7.5.1, semantics-pitfalls #7).
 

@@ -41,7 +41,9 @@ impl Engine {
     ///    measured at t. Actions started here take effect now; every trigger of the step sees
     ///    the world as it was when trigger evaluation began (runtime/trigger_view.rs).
     /// 2. `actions`: every running action advances to t + dt (sets the speed and lateral target
-    ///    the controllers use over the step) and may end or be replaced in its domain.
+    ///    the controllers use over the step) and may end or be replaced in its domain; one that
+    ///    fails there (oscsim's RelativeAccelerationAction whose speed change misses its time)
+    ///    writes an error record at t + dt and the step returns its error.
     /// 3. `controllers`: the default controller moves each entity over [t, t + dt], longitudinal
     ///    then lateral.
     /// 4. `measurements`: time becomes t + dt; road position, speed, velocity, acceleration,
