@@ -95,7 +95,12 @@ impl Geometry {
 
     /// The reference line at `s` with the sine and cosine of its heading (a line reuses its
     /// start heading's, computed once).
-    #[inline]
+    ///
+    /// Always inlined, the curves' case called out: returned through memory, its six numbers
+    /// were stored one by one and read back two at a time by the caller, a load the stores
+    /// cannot forward to, which waits until they reach the cache (`road_frame` spent two
+    /// thirds of its samples there on the scale highway's lines, issue 31).
+    #[inline(always)]
     pub(crate) fn eval_trig(&self, s: Real) -> (RefPoint, Real, Real) {
         match self.kind {
             GeometryKind::Line => {
@@ -108,12 +113,16 @@ impl Geometry {
                 };
                 (rp, self.sin_h, self.cos_h)
             }
-            _ => {
-                let rp = self.eval(s);
-                let (sin_h, cos_h) = rp.hdg.sin_cos();
-                (rp, sin_h, cos_h)
-            }
+            _ => self.eval_trig_curve(s),
         }
+    }
+
+    /// [`eval_trig`](Self::eval_trig) of a curve: the sine and cosine of its heading at `s`.
+    #[inline(never)]
+    fn eval_trig_curve(&self, s: Real) -> (RefPoint, Real, Real) {
+        let rp = self.eval(s);
+        let (sin_h, cos_h) = rp.hdg.sin_cos();
+        (rp, sin_h, cos_h)
     }
 
     /// The reference line at road coordinate `s` (within or slightly outside this geometry).
@@ -161,7 +170,7 @@ impl PlanView {
     }
 
     /// The reference line at `s` with sin and cos of its heading.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn eval_trig(&self, s: Real) -> (RefPoint, Real, Real) {
         self.geometries[self.index_at(s)].eval_trig(s)
     }

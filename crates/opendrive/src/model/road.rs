@@ -99,6 +99,7 @@ pub struct Road {
 impl Road {
     /// Index of the lane section valid at `s`: the last one starting at or before `s`
     /// (at a section boundary the new section applies).
+    #[inline]
     pub fn lane_section_index(&self, s: Real) -> usize {
         let i = self
             .lane_sections

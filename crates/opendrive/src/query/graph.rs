@@ -64,9 +64,12 @@ impl RoadNetwork {
     }
 
     /// [`lane_handle`](Self::lane_handle) on the road of handle `road` (no hash of its id).
+    /// Inlined where the compiler sees fit in other crates (the lane index, the driver
+    /// models' view call it per entity and step; issue 31).
     ///
     /// # Panics
     /// If the handle is of another, larger network.
+    #[inline]
     pub fn lane_handle_on(&self, road: RoadHandle, lane_id: i32, s: f64) -> Option<LaneHandle> {
         let r = self.road_at(road);
         // A lane ending at s is found at its end (`Road::lane_section_holding`).

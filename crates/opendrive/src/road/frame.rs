@@ -50,8 +50,11 @@ pub(crate) fn cross_section(
     )
 }
 
-/// The frame of `road` at `s` (s already within [0, length]).
-#[inline]
+/// The frame of `road` at `s` (s already within [0, length]). Always inlined: its callers
+/// read a few of its numbers, which then stay in registers (returned through memory, they
+/// were stored one by one and read back two at a time, loads that wait for the stores, issue
+/// 31).
+#[inline(always)]
 pub(crate) fn road_frame(road: &Road, s: Real) -> RoadFrame {
     let (rp, sin_h, cos_h) = road.plan_view.eval_trig(s);
     let (z, dz) = eval_piecewise(&road.elevation, s);
