@@ -10,10 +10,10 @@
 //! | `end_lane(l)` | binding | l is a driving lane with a lane section after it in its driving direction and no successor there |
 //! | `lane_side(l1, side, l2, count)`, `compound_lane_side(…)` | binding | l1 and l2 are driving lanes of one lane section, l1 `count` lanes to the side of l2 across the road (t grows to the left of the s-axis, §8.12.5), every lane of the section counted; with `lane_section` (`route`), on the plan's roads |
 //! | `routes_are_in_sequence(preceding, succeeding, road)` on lane fields | binding | `succeeding` is a successor of `preceding` in its driving direction (the network's lane links, through lane sections and road links); with `road`, both on the plan's roads |
-//! | `routes_are_in_sequence(preceding, succeeding)` on route fields other than two lanes | binding | a road (`road`, `route`, `route_element`, `compound_route`) or lane-section end over a lane of the modifier's own on it, driven in +s on the plan's roads; a lane end over itself. With a road end, the second's road is another the first leads onto, directly or through a connecting lane, in a lane of one id; else the lanes follow each other (lane links). The road and section fields are bound whole ([`MapLane::whole_road`]); without named routes the plan drives the roads (`junction_roads`) |
+//! | `routes_are_in_sequence(preceding, succeeding)` on route fields other than two lanes | binding | a road (`road`, `route`, `route_element`, `compound_route`) or lane-section end over a lane of the modifier's own on it, driven in +s on the plan's roads; a lane end over itself. With a road end, the second's road is another the first leads onto, directly or through a connecting lane, in a lane of one id; else the lanes follow each other (lane links). The road and section fields are bound whole (`map_roads`); without named routes the plan drives the roads (`junction_roads`) |
 //! | `routes_are_opposite(route1, route2, containing_road, lateral_overlap)` on lane fields | binding | both in one lane section, driven in opposite directions; with `containing_road`, on the plan's roads; `lateral_overlap` `never` (two lanes never share their width) or none |
 //! | `roads_follow_in_junction(in_lane, out_lane, direction)` on lane fields | binding | `out_lane` reached from `in_lane` through one connecting lane of a junction, turning the way `direction` names (`map_junctions::Turn`); without named routes the plan drives that way (`junction_roads`) |
-//! | `roads_follow_in_junction(junction, in_road, out_road, direction, clockwise_count, number_of_roads, resulting_route)` | binding | as on lane fields, over two lanes of the modifier's own when `in_lane`/`out_lane` are not given; `junction` is the connecting lane's junction, `in_road`/`out_road` the lanes' roads (one field one road across the modifiers), `clockwise_count` and `number_of_roads` counted by `map_junctions`; the way through on the plan's roads (without named routes the plan drives it) |
+//! | `roads_follow_in_junction(junction, in_road, out_road, direction, clockwise_count, number_of_roads, junction_route, resulting_route)` | binding | as on lane fields, over two lanes of the modifier's own when `in_lane`/`out_lane` are not given; `junction` is the connecting lane's junction, `in_road`/`out_road` the lanes' roads, `junction_route` the connecting road, whole (one field one road across the modifiers), `clockwise_count` and `number_of_roads` counted by `map_junctions`; the way through on the plan's roads (without named routes the plan drives it) |
 //! | `routes_overlap(r1, r2, kind)` | check | both are the plan's roads, so they overlap as `equal`: `equal` and `any` hold, another kind is an error |
 //!
 //! Lane fields range over the driving lanes (OpenDRIVE types a vehicle drives on) of every
@@ -31,30 +31,12 @@ use crate::resolve::{EndKind, JunctionRoads, MapKind, MapModifier, SeqEnd};
 use crate::road::PlanRoad;
 
 use super::map_junctions::{self, connecting, heading_change, Turn};
-
+use super::map_roads::{section_span, MapLane};
 /// The most assignments of lane fields kept.
 const MAX_SOLUTIONS: usize = 100_000;
 /// The most partial assignments tried: past it the search stops with an error, so a large
 /// network with loosely constrained fields cannot hang the plan.
 const MAX_TRIED: usize = 2_000_000;
-
-/// A lane a map modifier bound a field to.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct MapLane {
-    /// The field's path.
-    pub field: String,
-    /// The OpenDRIVE road id.
-    pub road: String,
-    /// The lane id.
-    pub lane: i32,
-    /// The plan's s of its lane section's start and end, when the road is one of the plan's.
-    pub span: Option<(f64, f64)>,
-    /// What bound it, for messages.
-    pub why: String,
-    /// Whether the field is a road or a lane section (`routes_are_in_sequence` on route
-    /// fields): `span` is the whole road's (section's), `lane` the lane the modifier bound on it.
-    pub whole_road: bool,
-}
 
 /// Checks the network against `mods` and binds the lane fields they constrain (`choose(n)`
 /// draws among n).
@@ -139,42 +121,7 @@ pub(crate) fn bind(
         .filter_map(|m| own_lanes(m))
         .flatten()
         .collect();
-    // Road and lane-section fields of routes_are_in_sequence: the road (the lane section) of
-    // the modifier's own lane on it, whole.
-    let ends = lane_mods.iter().filter_map(|m| match &m.kind {
-        MapKind::RoutesInSequence {
-            preceding,
-            succeeding,
-        } => Some([(m, preceding), (m, succeeding)]),
-        _ => None,
-    });
-    let mut road_fields: Vec<MapLane> = Vec::new();
-    for (m, end) in ends.flatten().filter(|(_, e)| e.kind != EndKind::Lane) {
-        let Some(h) = names.iter().position(|n| *n == end.lane).map(|i| chosen[i]) else {
-            continue;
-        };
-        let r = &net.roads()[h.road as usize];
-        let (span, what) = match end.kind {
-            EndKind::Section => {
-                let (s0, s1) = section_span(net, h);
-                (
-                    plan_span(&r.id, s0, s1),
-                    format!("the lane section of road {} from s = {s0:.2} m", r.id),
-                )
-            }
-            _ => (plan_span(&r.id, 0.0, r.length), format!("road {}", r.id)),
-        };
-        if road_fields.iter().all(|b| b.field != end.field) {
-            road_fields.push(MapLane {
-                field: end.field.clone(),
-                road: r.id.clone(),
-                lane: h.lane,
-                span,
-                why: format!("{what} bound by map.{}(…) at {}", m.name, m.site.at()),
-                whole_road: true,
-            });
-        }
-    }
+    let road_fields = super::map_roads::whole_fields(road, &lane_mods, &names, chosen)?;
     Ok(names
         .iter()
         .zip(chosen)
@@ -245,14 +192,6 @@ fn own_lanes(m: &MapModifier) -> Option<Vec<&str>> {
         ),
         _ => None,
     }
-}
-
-/// s of the start and the end of the lane section of `h` on its road (m).
-fn section_span(net: &RoadNetwork, h: LaneHandle) -> (f64, f64) {
-    let r = &net.roads()[h.road as usize];
-    let k = h.section as usize;
-    let s1 = r.lane_sections.get(k + 1).map_or(r.length, |n| n.s);
-    (r.lane_sections[k].s, s1)
 }
 
 /// Every driving lane of the roads outside junctions, in the network's order.
@@ -484,13 +423,18 @@ fn one_road_per_field(
                 ..
             } => {
                 let (a, b) = (sol[index(in_lane)], sol[index(out_lane)]);
-                let through = connecting(net, a, b)
+                let c = connecting(net, a, b);
+                let through = c
                     .and_then(|c| net.roads()[c.road as usize].junction.clone())
                     .unwrap_or_default();
                 [
                     (roads.in_road.as_deref(), id(a)),
                     (roads.out_road.as_deref(), id(b)),
                     (roads.junction.as_deref(), through),
+                    (
+                        roads.junction_route.as_deref(),
+                        c.map(id).unwrap_or_default(),
+                    ),
                 ]
                 .into_iter()
                 .filter_map(|(f, v)| f.map(|f| (f, v)))

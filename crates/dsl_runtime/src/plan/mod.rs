@@ -67,6 +67,7 @@
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
 //! | `map_checks` | the map's modifiers over route fields checked against the plan's roads |
 //! | `map_junctions` | ways through a junction: the connecting lane, the turn, the roads meeting there counted clockwise (`roads_follow_in_junction`) |
+//! | `map_roads` | the route fields the map's modifiers bind whole: roads and lane sections in sequence, a junction's connecting road |
 //! | `map_lanes` | the map's modifiers against the loaded network: lane fields bound, the plan's roads checked |
 //! | `lane_fields` | the lane a `lane` field names for `change_lane`/`follow_lane(target: l)`: bound or drawn once |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
@@ -98,6 +99,7 @@ mod lateral_actions;
 mod lateral_end;
 mod map_checks;
 mod map_junctions;
+mod map_roads;
 mod map_lanes;
 mod motion;
 mod path_part;

@@ -13,8 +13,9 @@
 //! two lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
 //! plan's roads, and `routes_are_in_sequence` on route fields, each bound to a road (a
 //! `lane_section` field to a lane section) of the plan through a lane of the modifier's own
-//! (`SeqEnd`). The others (`routes_are_opposite` on route fields, `crossing_connects`, and
-//! `roads_follow_in_junction`'s `junction_route`) are errors at the modifier saying why;
+//! (`SeqEnd`); `roads_follow_in_junction`'s `junction_route` is bound to the connecting road of the way through. The others
+//! (`routes_are_opposite` on route fields, `crossing_connects`) are errors at the modifier
+//! saying why;
 //! `set_map_file` names the network (`crate::map_file`), `set_traffic_lights_control_file` the
 //! traffic signal controllers (`crate::traffic_lights`).
 
@@ -161,6 +162,9 @@ pub(crate) struct JunctionRoads {
     pub in_road: Option<String>,
     /// The `out_road` field: the road of the lane out of it.
     pub out_road: Option<String>,
+    /// The `junction_route` field: the connecting road from the lane into the junction to the
+    /// lane out of it.
+    pub junction_route: Option<String>,
     /// `clockwise_count`: the out-road is the n-th road met going clockwise round the
     /// junction from the in-road.
     pub clockwise_count: Option<u32>,
@@ -168,8 +172,8 @@ pub(crate) struct JunctionRoads {
     pub number_of_roads: Option<u32>,
     /// Whether `in_lane`/`out_lane` were not given (the lanes are the modifier's own).
     pub own_lanes: bool,
-    /// Whether any of `junction`, `in_road`, `out_road`, `resulting_route` was given: the way
-    /// through is on the plan's roads.
+    /// Whether any of `junction`, `in_road`, `out_road`, `resulting_route`, `junction_route`
+    /// was given: the way through is on the plan's roads.
     pub on_plan_roads: bool,
 }
 
@@ -390,12 +394,6 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             }
         }
         "roads_follow_in_junction" => {
-            if let Some(a) = arg(&args, "junction_route") {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    "expected roads_follow_in_junction(…) without junction_route: (a free route field is the roads the plan drives on, which go on past the junction; the connecting road alone is no route the runtime names), found junction_route:".to_string(),
-                ));
-            }
             let direction = member("direction")?;
             if let (Some(d), Some(a)) = (&direction, arg(&args, "direction")) {
                 if !["straight", "right", "u_turn", "left"].contains(&d.as_str()) {
@@ -414,16 +412,19 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             let in_road = road_arg("in_road")?;
             let out_road = road_arg("out_road")?;
             let resulting = road_arg("resulting_route")?;
+            let junction_route = road_arg("junction_route")?;
             let given = |p: &str| arg(&args, p).is_some();
             let own_lanes = !given("in_lane") && !given("out_lane");
             let mut roads = JunctionRoads {
                 on_plan_roads: junction.is_some()
                     || in_road.is_some()
                     || out_road.is_some()
-                    || resulting.is_some(),
+                    || resulting.is_some()
+                    || junction_route.is_some(),
                 junction,
                 in_road,
                 out_road,
+                junction_route,
                 clockwise_count: given("clockwise_count")
                     .then(|| count("clockwise_count", None))
                     .transpose()?,

@@ -106,6 +106,26 @@ fn a_way_through_a_junction_by_its_roads_is_the_roads_the_plan_drives() {
 }
 
 #[test]
+fn a_junction_route_is_the_connecting_road_the_plan_drives_through() {
+    // map_junction_route.osc: jr = road 5 (junction 1), 20 m at heading 0 from (100, 0).
+    let r = run("map_junction_route", "junction_trippel_twoway0");
+    for (t, road, s, x) in [
+        (0.0, "5", 0.0, 100.0),
+        (1.0, "5", 10.0, 110.0),
+        (1.5, "5", 15.0, 115.0),
+        (3.5, "6", 15.0, 135.0),
+    ] {
+        let p = r.at(t, "ego");
+        assert_eq!((p.road.as_str(), p.lane), (road, -1), "at {t} s: {p:?}");
+        assert!((p.s - s).abs() < Y_TOL, "at {t} s: {p:?}");
+        assert!(
+            (p.x - x).abs() < Y_TOL && (p.y + 1.5).abs() < Y_TOL,
+            "at {t} s: {p:?}"
+        );
+    }
+}
+
+#[test]
 fn roads_in_sequence_are_bound_and_driven_from_their_starts() {
     // map_roads_sequence.osc: a = road 1, b = road 2 (linked end to start).
     let r = run("map_roads_sequence", "road_link_unequal_number_of_lanes0");
@@ -260,9 +280,9 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
     );
     refused(
         "err_map_junction_route",
-        "junction_trippel_twoway0",
-        "expected roads_follow_in_junction(…) without junction_route: (a free route field is the roads the plan drives on, which go on past the junction",
-        "8:63",
+        "straight",
+        "expected lanes of the map for `r_in's lane into the junction (roads_follow_in_junction at 8:5)`, `the road's lane out of the junction (roads_follow_in_junction at 8:5)` that satisfy roads_follow_in_junction(…), found none on roads 1",
+        "8:5",
     );
     refused(
         "err_map_sequence_roads",
