@@ -75,10 +75,10 @@ pub use math::{
     SOLVER_TOLERANCE, S_TOLERANCE,
 };
 pub use model::{
-    is_drivable, Connection, ContactPoint, Controller, ElementType, GeoReference, Header, Junction,
-    JunctionKind, Lane, LaneHeight, LaneLink, LaneSection, LaneType, Object, Offset, Road,
-    RoadLink, RoadLinks, RoadMark, RoadMarkColor, RoadMarkLaneChange, RoadMarkLine, RoadMarkType,
-    RoadType, Signal, Speed, TrafficRule,
+    is_drivable, Connection, ContactPoint, Controller, Corner, ElementType, GeoReference, Header,
+    Junction, JunctionKind, Lane, LaneHeight, LaneLink, LaneSection, LaneType, Object, Offset,
+    Road, RoadLink, RoadLinks, RoadMark, RoadMarkColor, RoadMarkLaneChange, RoadMarkLine,
+    RoadMarkType, RoadType, Signal, Speed, TrafficRule,
 };
 pub use network::RoadNetwork;
 pub use query::{

@@ -19,7 +19,7 @@ use super::route::{self, OnRoute};
 use super::speed_actions::Slot;
 use super::types::{Planned, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{Action, Arg, At, Invoke, ModKind, Modifier, Phase};
+use crate::resolve::{Action, Arg, At, Invoke, ModKind, Modifier, Phase, Route};
 
 impl Planner<'_> {
     /// Plans one invocation: its actions, and the time its `position(…, at: end)` is met when
@@ -136,21 +136,37 @@ impl Planner<'_> {
                 formation,
                 group_speed,
             };
-            let action_end = match inv.kind {
-                Action::ChangeLane | Action::FollowLane => {
+            // A walk along a crossing the map bound (`crossing_walk`).
+            let crossing = self.alongs.get(&p.path).and_then(|a| {
+                a.iter()
+                    .find(|(_, a)| matches!(a.route, Route::Crossing { .. }))
+                    .map(|(_, a)| a.clone())
+            });
+            let action_end = match (&crossing, inv.kind) {
+                (Some(along), _) => {
+                    self.plan_crossing_walk(p, inv, mods, along, slot, &mut name)?
+                }
+                (_, Action::ChangeLane | Action::FollowLane) => {
                     self.plan_lateral_action(p, inv, slot, &mut name)?
                 }
-                Action::ChangeSpaceGap
-                | Action::KeepSpaceGap
-                | Action::ChangeTimeHeadway
-                | Action::KeepTimeHeadway => self.plan_gap_action(p, inv, slot, &mut name)?,
-                Action::FollowTrajectory
-                | Action::FollowPath
-                | Action::ReplayTrajectory
-                | Action::ReplayPath => self.plan_trajectory_action(p, inv, slot, &mut name)?,
-                Action::AssignPosition | Action::AssignOrientation | Action::ChangePosition => {
-                    self.plan_position_action(p, inv, slot, &mut name)?
-                }
+                (
+                    _,
+                    Action::ChangeSpaceGap
+                    | Action::KeepSpaceGap
+                    | Action::ChangeTimeHeadway
+                    | Action::KeepTimeHeadway,
+                ) => self.plan_gap_action(p, inv, slot, &mut name)?,
+                (
+                    _,
+                    Action::FollowTrajectory
+                    | Action::FollowPath
+                    | Action::ReplayTrajectory
+                    | Action::ReplayPath,
+                ) => self.plan_trajectory_action(p, inv, slot, &mut name)?,
+                (
+                    _,
+                    Action::AssignPosition | Action::AssignOrientation | Action::ChangePosition,
+                ) => self.plan_position_action(p, inv, slot, &mut name)?,
                 _ => self.plan_speed_action(p, inv, slot, &mut name)?,
             };
             derived = all_of(derived, action_end);

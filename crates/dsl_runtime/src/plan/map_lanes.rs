@@ -14,6 +14,7 @@
 //! | `routes_are_opposite(route1, route2, containing_road, lateral_overlap)` on lane fields | binding | both in one lane section, driven in opposite directions; with `containing_road`, on the plan's roads; `lateral_overlap` `never` (two lanes never share their width) or none |
 //! | `roads_follow_in_junction(in_lane, out_lane, direction)` on lane fields | binding | `out_lane` reached from `in_lane` through one connecting lane of a junction, turning the way `direction` names (`map_junctions::Turn`); without named routes the plan drives that way (`junction_roads`) |
 //! | `roads_follow_in_junction(junction, in_road, out_road, direction, clockwise_count, number_of_roads, junction_route, resulting_route)` | binding | as on lane fields, over two lanes of the modifier's own when `in_lane`/`out_lane` are not given; `junction` is the connecting lane's junction, `in_road`/`out_road` the lanes' roads, `junction_route` the connecting road, whole (one field one road across the modifiers), `clockwise_count` and `number_of_roads` counted by `map_junctions`; the way through on the plan's roads (without named routes the plan drives it) |
+//! | `crossing_connects(crossing, start_lane, end_lane, start_s_coord, start_angle)` | binding | the lanes a crosswalk of the map joins by the straight line from the start lane's centre (`map_crossings`), on the plan's roads; the crossing field is that crosswalk (`map_crossings::MapCrossing`); a map without a crosswalk is an error at the modifier |
 //! | `routes_overlap(r1, r2, kind)` | check | both are the plan's roads, so they overlap as `equal`: `equal` and `any` hold, another kind is an error |
 //!
 //! Lane fields range over the driving lanes (OpenDRIVE types a vehicle drives on) of every
@@ -30,8 +31,10 @@ use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{EndKind, JunctionRoads, MapKind, MapModifier, SeqEnd};
 use crate::road::PlanRoad;
 
+use super::map_crossings::{crossing, has_crosswalk, MapCrossing};
 use super::map_junctions::{self, connecting, heading_change, Turn};
 use super::map_roads::{section_span, MapLane};
+
 /// The most assignments of lane fields kept.
 const MAX_SOLUTIONS: usize = 100_000;
 /// The most partial assignments tried: past it the search stops with an error, so a large
@@ -44,15 +47,26 @@ pub(crate) fn bind(
     road: &PlanRoad<'_>,
     mods: &[MapModifier],
     choose: &mut dyn FnMut(usize) -> usize,
-) -> Result<Vec<MapLane>, Error> {
+) -> Result<(Vec<MapLane>, Vec<MapCrossing>), Error> {
     for m in mods {
         super::map_checks::check(road, m)?;
     }
     let lane_mods: Vec<&MapModifier> = mods.iter().filter(|m| fields(m).is_some()).collect();
     if lane_mods.is_empty() {
-        return Ok(Vec::new());
+        return Ok((Vec::new(), Vec::new()));
     }
     let net = road.network();
+    for m in &lane_mods {
+        if let (MapKind::Crossing { crossing: c, .. }, false) = (&m.kind, has_crosswalk(net)) {
+            return Err(m.site.err(
+                K::Road,
+                format!(
+                    "expected a crosswalk on the map for `{c}` (an OpenDRIVE object of type crosswalk with an outline, or a length and width), found none on roads {}",
+                    net.roads().iter().map(|r| r.id.as_str()).collect::<Vec<_>>().join(", ")
+                ),
+            ));
+        }
+    }
     let domain = driving_lanes(net);
     let plan_ids = road.ids();
     let on_plan = |h: &LaneHandle| plan_ids.contains(&net.roads()[h.road as usize].id);
@@ -122,7 +136,38 @@ pub(crate) fn bind(
         .flatten()
         .collect();
     let road_fields = super::map_roads::whole_fields(road, &lane_mods, &names, chosen)?;
-    Ok(names
+    let at = |f: &str| names.iter().position(|n| n == f).map(|i| chosen[i]);
+    let crossings = lane_mods
+        .iter()
+        .filter_map(|m| match &m.kind {
+            MapKind::Crossing {
+                crossing: field,
+                start_lane,
+                end_lane,
+                start_s,
+                start_angle,
+                ..
+            } => {
+                // The search kept only lanes a crossing joins (Rel::Crossing), on the plan's
+                // roads.
+                let c = crossing(net, at(start_lane)?, at(end_lane)?, *start_s, *start_angle)?;
+                let id = &net.roads()[c.road].id;
+                Some(MapCrossing {
+                    field: field.clone(),
+                    road_start: starts.iter().find(|(r, _)| r == id)?.1,
+                    why: format!(
+                        "crosswalk {} of road {id} bound by map.{}(…) at {}",
+                        c.object,
+                        m.name,
+                        m.site.at()
+                    ),
+                    crossing: c,
+                })
+            }
+            _ => None,
+        })
+        .collect();
+    let lanes = names
         .iter()
         .zip(chosen)
         .filter(|(field, _)| !own.contains(&field.as_str()))
@@ -144,7 +189,8 @@ pub(crate) fn bind(
             }
         })
         .chain(road_fields)
-        .collect())
+        .collect();
+    Ok((lanes, crossings))
 }
 
 /// The lane fields a binding modifier names (`None`: a check).
@@ -165,6 +211,11 @@ fn fields(m: &MapModifier) -> Option<Vec<&str>> {
             preceding,
             succeeding,
         } => Some(vec![preceding.lane.as_str(), succeeding.lane.as_str()]),
+        MapKind::Crossing {
+            start_lane,
+            end_lane,
+            ..
+        } => Some(vec![start_lane.as_str(), end_lane.as_str()]),
         _ => None,
     }
 }
@@ -178,6 +229,12 @@ fn own_lanes(m: &MapModifier) -> Option<Vec<&str>> {
             roads: JunctionRoads {
                 own_lanes: true, ..
             },
+            ..
+        }
+        | MapKind::Crossing {
+            start_lane: in_lane,
+            end_lane: out_lane,
+            own_lanes: true,
             ..
         } => Some(vec![in_lane.as_str(), out_lane.as_str()]),
         MapKind::RoutesInSequence {
@@ -272,6 +329,12 @@ fn solve(
                                 },
                             ..
                         } if a == n || b == n => on_plan(h),
+                        // A crossing's lanes: on the plan's roads, where the scenario happens.
+                        MapKind::Crossing {
+                            start_lane: a,
+                            end_lane: b,
+                            ..
+                        } if a == n || b == n => on_plan(h),
                         // The own lanes of roads and lane sections in sequence: driven in +s,
                         // as the plan drives.
                         MapKind::RoutesInSequence {
@@ -334,6 +397,18 @@ fn solve(
                     Rel::Follows(index(&succeeding.lane), index(&preceding.lane))
                 },
             ),
+            MapKind::Crossing {
+                start_lane,
+                end_lane,
+                start_s,
+                start_angle,
+                ..
+            } => Some(Rel::Crossing(
+                index(start_lane),
+                index(end_lane),
+                *start_s,
+                *start_angle,
+            )),
             _ => None,
         })
         .collect();
@@ -361,6 +436,9 @@ enum Rel {
     /// The first lies on another road the second leads onto, directly or through one
     /// connecting lane of a junction, in a lane of the same id.
     NextRoad(usize, usize),
+    /// A crosswalk joins the first to the second, from s (else its middle) at that angle to
+    /// the lane (else perpendicular) (`map_crossings`).
+    Crossing(usize, usize, Option<f64>, Option<f64>),
 }
 
 impl Rel {
@@ -371,12 +449,14 @@ impl Rel {
             | Rel::Follows(i, j)
             | Rel::Opposite(i, j)
             | Rel::Through(i, j, ..)
-            | Rel::NextRoad(i, j) => (i, j),
+            | Rel::NextRoad(i, j)
+            | Rel::Crossing(i, j, ..) => (i, j),
         };
         let (x, y) = (*a.get(i)?, *a.get(j)?);
         Some(match self {
             Rel::Side(_, left, _, n) => beside(net, y, left, n) == Some(x),
             Rel::Follows(..) => net.successors(y).contains(&x),
+            Rel::Crossing(_, _, s, angle) => crossing(net, x, y, s, angle).is_some(),
             Rel::Opposite(..) => {
                 (x.road, x.section) == (y.road, y.section)
                     && net.driving_direction(x) != net.driving_direction(y)

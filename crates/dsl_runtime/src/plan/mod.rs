@@ -45,6 +45,7 @@
 //! | module | plans |
 //! | --- | --- |
 //! | `types` | the plan's data, limits and tolerances |
+//! | `map_crossings` | the way across a crosswalk of the map joining two lanes (`crossing_connects`) |
 //! | `lateral` | `lateral(…)` as an offset in the lane or beside another actor |
 //! | `place` | initial placement from `at: start`/`all` constraints |
 //! | `route` | `along(…)` routes against the planned motion; the road named routes are on |
@@ -73,6 +74,7 @@
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
 //! | `acceleration_follow` | `acceleration(…)` relative to another actor that the engine follows step by step |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
+//! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 use std::cell::RefCell;
@@ -89,6 +91,7 @@ mod acceleration_follow;
 mod action_args;
 mod car_following;
 mod checks;
+mod crossing_walk;
 mod events;
 mod gap_actions;
 mod group_path;
@@ -98,9 +101,10 @@ mod lateral;
 mod lateral_actions;
 mod lateral_end;
 mod map_checks;
+mod map_crossings;
 mod map_junctions;
-mod map_roads;
 mod map_lanes;
+mod map_roads;
 mod motion;
 mod path_part;
 mod path_shape;
@@ -156,6 +160,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         route_lanes: HashMap::new(),
         lane_roads: HashMap::new(),
         route_roads: HashMap::new(),
+        crossings: HashMap::new(),
         sides: RefCell::new(HashMap::new()),
         beside_checks: Vec::new(),
         draws: RefCell::new(res.draws.clone()),
@@ -189,7 +194,10 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         }
     }
     // The map's modifiers: the plan's roads checked, lane fields bound (before any use).
-    let bound = map_lanes::bind(road, &res.map, &mut |n| p.choose(n))?;
+    let (bound, crossings) = map_lanes::bind(road, &res.map, &mut |n| p.choose(n))?;
+    for c in crossings {
+        p.crossings.insert(c.field.clone(), c);
+    }
     for b in bound {
         if b.whole_road {
             if let Some(span) = b.span {
@@ -311,6 +319,11 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                 }
                 // A lane field the map bound: from its lane section's start; a road field:
                 // from the road's start, in the lane the modifier bound there.
+                // A crossing: at its start, on the start lane's centre.
+                (Route::Crossing { field }, At::Start | At::All) => p
+                    .crossings
+                    .get(field)
+                    .map(|c| (c.crossing.start.0, c.road_start + c.crossing.start.1)),
                 (Route::Free { field, .. }, At::Start | At::All) => {
                     match (p.lane_roads.get(field), p.route_lanes.get(field)) {
                         (Some((_, Some((from, _)))), Some((lane, _))) => Some((*lane, *from)),

@@ -70,6 +70,8 @@ pub(crate) struct Planner<'a> {
     /// Road field the map's modifiers bound to a road of the plan (`routes_are_in_sequence`)
     /// → the lane bound on it, the plan's s of the road's start and end, and what bound it.
     pub route_roads: HashMap<String, (i32, (f64, f64), String)>,
+    /// Crossing field the map's `crossing_connects` bound → the crossing (`map_crossings`).
+    pub crossings: HashMap<String, super::map_crossings::MapCrossing>,
     /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
     /// the modifier), checked once every phase is planned.
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,

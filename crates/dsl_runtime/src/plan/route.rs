@@ -55,14 +55,16 @@ pub(crate) fn check(
     let one_lane = match &along.route {
         Route::Free { one_lane, .. } => *one_lane,
         Route::Lane { .. } => true,
+        // The walk across is planned from the crossing's start to its end (`crossings`).
+        Route::Crossing { .. } => return Ok(None),
     };
     let bound = match &along.route {
         Route::Free { field, .. } => on.roads.get(field),
-        Route::Lane { .. } => None,
+        Route::Lane { .. } | Route::Crossing { .. } => None,
     };
     let describe = match (&along.route, bound) {
         (Route::Free { field, .. }, Some((_, _, why))) => format!("route `{field}` ({why})"),
-        (Route::Free { field, .. }, None) => format!("route `{field}`"),
+        (Route::Free { field, .. } | Route::Crossing { field }, _) => format!("route `{field}`"),
         (
             Route::Lane {
                 road,
@@ -94,7 +96,9 @@ pub(crate) fn check(
         }
     }
     let (lo, hi) = match &along.route {
-        Route::Free { .. } => bound.map_or((0.0, road.length()), |(_, span, _)| *span),
+        Route::Free { .. } | Route::Crossing { .. } => {
+            bound.map_or((0.0, road.length()), |(_, span, _)| *span)
+        }
         Route::Lane {
             road: id, s, then, ..
         } => (
@@ -117,7 +121,7 @@ pub(crate) fn check(
                     s: (lo - ROUTE_TOLERANCE, hi + ROUTE_TOLERANCE),
                 })
             }
-            (None, Route::Free { .. }) => {}
+            (None, Route::Free { .. } | Route::Crossing { .. }) => {}
         }
         if let Route::Free {
             field,

@@ -246,7 +246,13 @@ impl Planner<'_> {
 
     /// From `t + span` on, `target` is at `end` (lane, s, offset), having moved sideways since
     /// `t`.
-    fn arrive(&mut self, target: &str, t: f64, span: f64, (lane, s1, offset): (i32, f64, f64)) {
+    pub(super) fn arrive(
+        &mut self,
+        target: &str,
+        t: f64,
+        span: f64,
+        (lane, s1, offset): (i32, f64, f64),
+    ) {
         let s_plan = self.s_at(target, t + span);
         let tr = self.track_mut(target);
         tr.jump(t + span, s1 - s_plan);

@@ -13,9 +13,10 @@
 //! two lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
 //! plan's roads, and `routes_are_in_sequence` on route fields, each bound to a road (a
 //! `lane_section` field to a lane section) of the plan through a lane of the modifier's own
-//! (`SeqEnd`); `roads_follow_in_junction`'s `junction_route` is bound to the connecting road of the way through. The others
-//! (`routes_are_opposite` on route fields, `crossing_connects`) are errors at the modifier
-//! saying why;
+//! (`SeqEnd`); `roads_follow_in_junction`'s `junction_route` is bound to the connecting road of the way through;
+//! `crossing_connects` binds its crossing field to a crosswalk of the map and its lanes to
+//! the lanes the crosswalk joins. `routes_are_opposite` on route fields is an error at the
+//! modifier saying why;
 //! `set_map_file` names the network (`crate::map_file`), `set_traffic_lights_control_file` the
 //! traffic signal controllers (`crate::traffic_lights`).
 
@@ -114,6 +115,23 @@ pub(crate) enum MapKind {
         direction: Option<String>,
         /// The junction and road arguments.
         roads: JunctionRoads,
+    },
+    /// §8.12.2.2.9: `crossing` connects `start_lane` to `end_lane`, a straight line from
+    /// `start_lane`'s centreline at `start_s` at `start_angle` to its direction to `end_lane`'s
+    /// centreline, within a crosswalk of the map; without the lanes, two of the modifier's own.
+    Crossing {
+        /// The crossing field.
+        crossing: String,
+        /// The lane it starts in (a lane field, or the modifier's own).
+        start_lane: String,
+        /// The lane it ends in (see `start_lane`).
+        end_lane: String,
+        /// `start_s_coord` (m of the start lane's road), when given.
+        start_s: Option<f64>,
+        /// `start_angle` (rad, in (0, π)), when given.
+        start_angle: Option<f64>,
+        /// Whether the lanes are the modifier's own (neither lane given).
+        own_lanes: bool,
     },
     /// §8.12.2.2.12: the file of traffic light control cycles (resolved against the `.osc`
     /// file's folder; `crate::traffic_lights`).
@@ -393,6 +411,43 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                 }
             }
         }
+        "crossing_connects" => {
+            let crossing = typed_field(ctx, need("crossing")?, "crossing")?;
+            let own_lanes = arg(&args, "start_lane").is_none() && arg(&args, "end_lane").is_none();
+            let (start_lane, end_lane) = if own_lanes {
+                let of = |which: &str| {
+                    format!(
+                        "{crossing}'s {which} lane ({name} at {}:{})",
+                        site.pos.line, site.pos.col
+                    )
+                };
+                (of("start"), of("end"))
+            } else {
+                (lane("start_lane")?, lane("end_lane")?)
+            };
+            let start_angle = match arg(&args, "start_angle") {
+                None => None,
+                Some(a) => match a.number()? {
+                    x if x > 0.0 && x < std::f64::consts::PI => Some(x),
+                    x => {
+                        return Err(a.site.err(
+                            K::Value,
+                            format!("expected a start_angle between 0 and 180 deg (the crossing's angle to start_lane's direction, towards end_lane), found {:.2} deg", x.to_degrees()),
+                        ))
+                    }
+                },
+            };
+            MapKind::Crossing {
+                crossing,
+                start_lane,
+                end_lane,
+                start_s: arg(&args, "start_s_coord")
+                    .map(|a| a.number())
+                    .transpose()?,
+                start_angle,
+                own_lanes,
+            }
+        }
         "roads_follow_in_junction" => {
             let direction = member("direction")?;
             if let (Some(d), Some(a)) = (&direction, arg(&args, "direction")) {
@@ -407,7 +462,7 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                 arg(&args, p).map(|a| field(ctx, a, false)).transpose()
             };
             let junction = arg(&args, "junction")
-                .map(|a| junction_field(ctx, a))
+                .map(|a| typed_field(ctx, a, "junction"))
                 .transpose()?;
             let in_road = road_arg("in_road")?;
             let out_road = road_arg("out_road")?;
@@ -459,13 +514,11 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             }
         }
         other => {
-            let why = match other {
-                "routes_are_opposite" => "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; two roads are not bound either, since every actor drives the plan's one chain of roads in +s and an actor along the opposite road would leave it; lane fields are bound)",
-                _ => "(a crossing runs across the road, its s from start_lane's centreline to end_lane's, while the plan's routes run along the roads' s and lane fields range over driving lanes: crossings are not bound to the map)",
-            };
+            // routes_are_opposite on route fields: the only map modifier left.
+            let why = "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; two roads are not bound either, since every actor drives the plan's one chain of roads in +s and an actor along the opposite road would leave it; lane fields are bound)";
             return Err(site.err(
                 K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap, routes_are_in_sequence; routes_are_opposite on lane fields, roads_follow_in_junction, set_traffic_lights_control_file), found {other}(…) {why}"),
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap, routes_are_in_sequence; routes_are_opposite on lane fields, roads_follow_in_junction, crossing_connects, set_traffic_lights_control_file), found {other}(…) {why}"),
             ));
         }
     };
@@ -512,13 +565,14 @@ fn field(ctx: &Ctx<'_>, a: &Arg, lane: bool) -> Result<String, Error> {
     }
 }
 
-/// The path of the free `junction` field `a` names.
-fn junction_field(ctx: &Ctx<'_>, a: &Arg) -> Result<String, Error> {
+/// The path of the free field `a` names, of type `ty` (`junction`, `crossing`) or one
+/// inheriting it.
+fn typed_field(ctx: &Ctx<'_>, a: &Arg, ty: &str) -> Result<String, Error> {
     match a.path.as_ref().and_then(|p| ctx.lookup(p)) {
-        Some((p, Value::RunTime(t))) if super::route::is_a(ctx, t, "junction") => Ok(p),
+        Some((p, Value::RunTime(t))) if super::route::is_a(ctx, t, ty) => Ok(p),
         _ => Err(a.site.err(
             K::Argument,
-            "expected a junction field nothing defines, found another expression".to_string(),
+            format!("expected a {ty} field nothing defines, found another expression"),
         )),
     }
 }

@@ -23,7 +23,10 @@
 //!   (`crate::road::route_roads`), so through a junction by the connection the points say.
 //!   Placement and checks as for one point, the end being the last point.
 //!
-//! Everything else (paths, crossings, route points, list elements of the map, other map
+//! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
+//!   person walking along it crosses from its start lane to its end lane (`crate::plan`).
+//!
+//! Everything else (paths, route points, list elements of the map, other map
 //! methods) is an error naming the argument.
 
 use dsl::semantics::hir::{Expr, ExprKind};
@@ -56,6 +59,12 @@ pub(crate) enum Route {
         /// The route's later points in order, each an OpenDRIVE road id and s, in lane `lane`
         /// (empty: a route from one point, `create_odr_point`).
         then: Vec<(String, f64)>,
+    },
+    /// A `crossing` field the map's `crossing_connects` binds to a crosswalk of the map: a
+    /// person walks it from its start lane to its end lane.
+    Crossing {
+        /// The field's path.
+        field: String,
     },
 }
 
@@ -112,13 +121,18 @@ pub(crate) fn read(
         return Err(site.err(K::Modifier, "expected a route in along(…), found none"));
     };
     let route = route_of(ctx, e)?;
-    if let Route::Free { field, .. } = &route {
+    let fixed_ends = match &route {
+        Route::Free { field, .. } => Some((field, "a route the runtime chooses (its ends are where the actors drive)", "; name the route with map.create_odr_point(road_id, lane_id, s, t) to drive from a given place")),
+        Route::Crossing { field } => Some((field, "a crossing (walked whole, from its start lane to its end lane)", "")),
+        Route::Lane { .. } => None,
+    };
+    if let Some((field, what, hint)) = fixed_ends {
         for (name, x) in [("start_offset", start_offset), ("end_offset", end_offset)] {
             if x != 0.0 {
                 let at = arg(args, name).map_or(site, |a| &a.site);
                 return Err(at.err(
                     K::Unsatisfiable,
-                    format!("expected no {name} on `{field}`, a route the runtime chooses (its ends are where the actors drive), found {x} m; name the route with map.create_odr_point(road_id, lane_id, s, t) to drive from a given place"),
+                    format!("expected no {name} on `{field}`, {what}, found {x} m{hint}"),
                 ));
             }
         }
@@ -185,7 +199,9 @@ fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
             let path = ctx.path_of(e).ok_or_else(|| unsupported("an expression"))?;
             match ctx.lookup(&path) {
                 Some((_, Value::RunTime(ty))) => {
-                    if WHOLE_ROAD.iter().any(|t| is_exactly_or_user(ctx, ty, t)) {
+                    if is_a(ctx, ty, "crossing") {
+                        Ok(Route::Crossing { field: path })
+                    } else if WHOLE_ROAD.iter().any(|t| is_exactly_or_user(ctx, ty, t)) {
                         Ok(Route::Free {
                             field: path,
                             one_lane: false,

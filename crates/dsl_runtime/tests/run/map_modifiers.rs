@@ -126,6 +126,37 @@ fn a_junction_route_is_the_connecting_road_the_plan_drives_through() {
 }
 
 #[test]
+fn a_person_walks_a_crossing_the_map_binds_and_a_car_stops_before_her() {
+    // map_crossing.osc: c = crosswalk cw1 of road 1 from lane -1 (100, -1.75) to lane 1
+    // (100, 1.75), walked at 0.5 m/s from 0 s.
+    let r = run("map_crossing", "crosswalk");
+    for (t, y) in [(0.0, -1.75), (2.0, -0.75), (3.5, 0.0), (7.0, 1.75)] {
+        let p = r.at(t, "alice");
+        assert!(
+            (p.x - 100.0).abs() < Y_TOL && (p.y - y).abs() < Y_TOL,
+            "alice at {t} s: {p:?}"
+        );
+    }
+    assert_eq!(r.at(0.0, "alice").lane, -1);
+    assert_eq!(r.at(7.0, "alice").lane, 1);
+    let (_, walked) = r.phase("do.cross");
+    assert!((walked - 7.0).abs() < Y_TOL, "walk ends at {walked}");
+    // The car measures her: its approach ends at 4.65 s, it stands 19.75 m before her.
+    let (_, e) = r.phase("do.stop.approach");
+    assert!((e - 4.65).abs() < Y_TOL, "approach ends at {e}");
+    assert!((r.at(4.65, "car").s - 66.5).abs() < Y_TOL);
+    assert!((r.at(5.65, "car").speed - 5.0).abs() < Y_TOL);
+    for t in [6.65, 7.65] {
+        let car = r.at(t, "car");
+        let gap = 99.5 - (car.s + 3.5);
+        assert!(
+            (car.s - 76.25).abs() < Y_TOL && (gap - 19.75).abs() < Y_TOL,
+            "car at {t} s: {car:?}"
+        );
+    }
+}
+
+#[test]
 fn roads_in_sequence_are_bound_and_driven_from_their_starts() {
     // map_roads_sequence.osc: a = road 1, b = road 2 (linked end to start).
     let r = run("map_roads_sequence", "road_link_unequal_number_of_lanes0");
@@ -297,6 +328,24 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "11:65",
     );
     refused(
+        "err_map_crossing",
+        "sidewalk",
+        "expected a crosswalk on the map for `cross` (an OpenDRIVE object of type crosswalk with an outline, or a length and width), found none on roads ",
+        "8:5",
+    );
+    refused(
+        "err_map_crossing_s",
+        "crosswalk",
+        "expected lanes of the map for `a`, `b` that satisfy crossing_connects(…), found none on roads 1",
+        "8:5",
+    );
+    refused(
+        "err_map_crossing_drive",
+        "crosswalk",
+        "expected a person's walk() along crossing `c` (a person crosses the road on it), found `car`'s drive()",
+        "10:13",
+    );
+    refused(
         "err_map_roads_sequence_off",
         "road_link_unequal_number_of_lanes0",
         "expected `npc` on route `a` (road 1 bound by map.routes_are_in_sequence(…) at ",
@@ -348,12 +397,6 @@ fn modifiers_of_the_scenario_the_runtime_does_not_run_say_why() {
         "red_light",
         "expected an OpenSCENARIO 1.x file of traffic signal controllers for set_traffic_lights_control_file, found one that does not load: ",
         "6:5",
-    );
-    refused(
-        "err_map_crossing",
-        "sidewalk",
-        "found crossing_connects(…) (a crossing runs across the road, its s from start_lane's centreline to end_lane's, while the plan's routes run along the roads' s",
-        "8:5",
     );
     refused(
         "err_scenario_modifier",

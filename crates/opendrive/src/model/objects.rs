@@ -1,5 +1,6 @@
 //! `<object>` and `<signal>` of a road (OpenDRIVE 1.8 chapters "Objects" and "Signals"), kept as data
-//! for later use (OSI stationary objects, traffic signs).
+//! for later use (OSI stationary objects, traffic signs, crosswalks), with an object's
+//! outlines (OpenDRIVE 1.8 §13.3 "Object outline": corners in road or local coordinates).
 
 /// `<object>`.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,6 +33,36 @@ pub struct Object {
     pub radius: Option<f64>,
     /// `orientation`: "+", "-" or "none".
     pub orientation: String,
+    /// The `<outline>`s (inside `<outlines>`, or the OpenDRIVE 1.4 `<outline>` child), each
+    /// its corners in order; empty when the object has none.
+    pub outlines: Vec<Vec<Corner>>,
+}
+
+/// A corner of an object's outline (OpenDRIVE 1.8 §13.3: `<cornerRoad>`, `<cornerLocal>`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Corner {
+    /// `<cornerRoad s t dz height>`: a point in the road's reference-line coordinates (m).
+    Road {
+        /// `s`.
+        s: f64,
+        /// `t`.
+        t: f64,
+    },
+    /// `<cornerLocal u v z height>`: a point in the object's local frame, u along its heading
+    /// `hdg` and v to its left, from the object's (s, t) (m).
+    Local {
+        /// `u`.
+        u: f64,
+        /// `v`.
+        v: f64,
+    },
+}
+
+impl Object {
+    /// Whether the object is a crosswalk (OpenDRIVE 1.8 §13.11 object types: `crosswalk`).
+    pub fn is_crosswalk(&self) -> bool {
+        self.object_type == "crosswalk"
+    }
 }
 
 /// `<signal>`.

@@ -12,7 +12,7 @@ use crate::geometry::{
 };
 use crate::math::GEOMETRY_GAP_TOLERANCE;
 use crate::model::{
-    ContactPoint, ElementType, Object, Road, RoadLink, RoadLinks, RoadType, Signal, Speed,
+    ContactPoint, Corner, ElementType, Object, Road, RoadLink, RoadLinks, RoadType, Signal, Speed,
     TrafficRule,
 };
 
@@ -253,7 +253,38 @@ fn read_object(r: &Reader, node: Node) -> Result<Object, Error> {
         height: r.maybe_f64(node, "height")?,
         radius: r.maybe_f64(node, "radius")?,
         orientation: node.attribute("orientation").unwrap_or("none").to_string(),
+        outlines: read_nested(node, "outlines", "outline", |o| read_outline(r, o))?
+            .into_iter()
+            .chain(
+                children(node, "outline")
+                    .map(|o| read_outline(r, o))
+                    .collect::<Result<Vec<_>, Error>>()?,
+            )
+            .collect(),
     })
+}
+
+/// XSD `t_road_objects_object_outlines_outline`: its `cornerRoad` or `cornerLocal` corners, in
+/// order.
+fn read_outline(r: &Reader, node: Node) -> Result<Vec<Corner>, Error> {
+    node.children()
+        .filter(|c| c.is_element())
+        .filter_map(|c| match c.tag_name().name() {
+            "cornerRoad" => Some(r.req_f64(c, "s").and_then(|s| {
+                Ok(Corner::Road {
+                    s,
+                    t: r.req_f64(c, "t")?,
+                })
+            })),
+            "cornerLocal" => Some(r.req_f64(c, "u").and_then(|u| {
+                Ok(Corner::Local {
+                    u,
+                    v: r.req_f64(c, "v")?,
+                })
+            })),
+            _ => None,
+        })
+        .collect()
 }
 
 /// XSD `t_road_signals_signal`.

@@ -1,4 +1,4 @@
-//! `<signal>` and its `<validity>` lanes (OpenDRIVE 1.8 §14.2 "Lane validity for signals").
+//! `<signal>` and its `<validity>` lanes (OpenDRIVE 1.8 §14.2 "Lane validity for signals"); `<object>` outlines (§13.3).
 
 use std::path::Path;
 
@@ -104,5 +104,36 @@ fn controllers_list_the_signals_they_switch() {
     assert_eq!(
         e.to_string(),
         "expected attribute `signalId` on <control>, found none at signals.xodr:11:94"
+    );
+}
+
+/// An object's outline (OpenDRIVE 1.8 §13.3): the corners of `<outlines><outline>` in order,
+/// in road (`cornerRoad`) or local (`cornerLocal`) coordinates, and the OpenDRIVE 1.4
+/// `<outline>` child too; a crosswalk is known by its type.
+#[test]
+fn object_outlines_are_read_in_order() {
+    let xodr = ROAD.replace("<signals>SIGNALS</signals>", r#"<objects>
+        <object id="cw" type="crosswalk" s="50" t="0"><outlines><outline id="0">
+          <cornerRoad s="48" t="-3.5" dz="0" height="0"/><cornerRoad s="52" t="-3.5" dz="0" height="0"/>
+          <cornerRoad s="52" t="3.5" dz="0" height="0"/></outline></outlines></object>
+        <object id="box" type="obstacle" s="70" t="-2"><outline>
+          <cornerLocal u="-1" v="0.5" z="0" height="1"/><cornerLocal u="1" v="0.5" z="0" height="1"/></outline></object>
+        </objects>"#);
+    let net =
+        RoadNetwork::from_str(&xodr, Path::new("objects.xodr")).unwrap_or_else(|e| panic!("{e}"));
+    let objects = &net.road("1").expect("road 1").objects;
+    use opendrive::Corner::{Local, Road};
+    assert!(objects[0].is_crosswalk() && !objects[1].is_crosswalk());
+    assert_eq!(
+        objects[0].outlines,
+        vec![vec![
+            Road { s: 48.0, t: -3.5 },
+            Road { s: 52.0, t: -3.5 },
+            Road { s: 52.0, t: 3.5 }
+        ]]
+    );
+    assert_eq!(
+        objects[1].outlines,
+        vec![vec![Local { u: -1.0, v: 0.5 }, Local { u: 1.0, v: 0.5 }]]
     );
 }
