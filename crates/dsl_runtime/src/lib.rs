@@ -234,6 +234,26 @@ pub fn lower_program(
             chains.push(road::PlanRoad::through(road, &roads));
         }
     }
+    // Routes the map makes in sequence (`routes_are_in_sequence`): the roads through both, in
+    // order (the map's check says what is wrong when no path joins them).
+    for m in &resolved.map {
+        if let resolve::MapKind::NamedInSequence {
+            preceding,
+            succeeding,
+        } = &m.kind
+        {
+            if let (Some((la, mut a)), Some((lb, b))) = (
+                plan::route_points(preceding),
+                plan::route_points(succeeding),
+            ) {
+                a.extend(b);
+                if let (true, Ok(roads)) = (la == lb, road::route_roads(road, la, &a)) {
+                    wanted.extend(roads.iter().map(|&i| road.roads()[i].id.clone()));
+                    chains.push(road::PlanRoad::through(road, &roads));
+                }
+            }
+        }
+    }
     let holds_all = |c: &road::PlanRoad<'_>| wanted.iter().all(|r| c.plan_s(r, 0.0).is_some());
     // Without named routes, a way through a junction the map's modifiers bind
     // (`roads_follow_in_junction`) gives the roads.

@@ -1,13 +1,15 @@
 //! The map's modifiers over route fields as checks of the roads the plan drives on (ASAM
 //! OpenSCENARIO DSL 2.1 §8.12.2.2; every free route field is those roads): `number_of_lanes`
-//! (on a `lane_section` field: some lane section has that many) and `routes_overlap`, and the
+//! (on a `lane_section` field: some lane section has that many), `routes_overlap`,
+//! `routes_are_in_sequence` on two routes the map makes (their points: the second starts where
+//! the first ends or on the road after it), and the
 //! DSL's lane enums read against the OpenDRIVE 1.8 lane types (§11.5). See `map_lanes` for the
 //! table of every map modifier.
 
 use opendrive::LaneType;
 
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{MapKind, MapModifier};
+use crate::resolve::{MapKind, MapModifier, Route};
 use crate::road::PlanRoad;
 
 /// Checks a modifier over route fields against the plan's roads.
@@ -88,6 +90,10 @@ pub(super) fn check(road: &PlanRoad<'_>, m: &MapModifier) -> Result<(), Error> {
             }
             Ok(())
         }
+        MapKind::NamedInSequence {
+            preceding,
+            succeeding,
+        } => in_sequence(road, m, preceding, succeeding),
         MapKind::RoutesOverlap {
             route1,
             route2,
@@ -126,6 +132,51 @@ fn matches_type(
             format!("expected a {w} the OpenDRIVE lane types say (see docs/dsl.md, map modifiers), found {w}, which none of them does"),
         )
     })
+}
+
+/// §8.12.2.2.2 on two routes the map makes: `succeeding` starts where `preceding` ends, in its
+/// lane (the plan keeps one lane id), further on its last road or on the road after it
+/// (directly, or through one connecting road of a junction), the network's path in the driving
+/// direction joining the two points.
+fn in_sequence(
+    road: &PlanRoad<'_>,
+    m: &MapModifier,
+    preceding: &Route,
+    succeeding: &Route,
+) -> Result<(), Error> {
+    let (Some((la, a)), Some((lb, b))) = (
+        super::route::points(preceding),
+        super::route::points(succeeding),
+    ) else {
+        // `resolve` reads both as routes through points.
+        return Ok(());
+    };
+    let (last, first) = (a[a.len() - 1].clone(), b[0].clone());
+    let at = |(id, s): &(String, f64)| format!("road {id} at s = {s} m");
+    if a.len() < 2 {
+        return Err(m.site.err(
+            K::Road,
+            format!("expected a preceding route with an end (map.create_route([…]) through two or more points), found one from a single point ({}), which runs on over the roads after it", at(&last)),
+        ));
+    }
+    if la != lb {
+        return Err(m.site.err(
+            K::Road,
+            format!("expected the succeeding route in the preceding one's lane {la} (the plan keeps one lane id over its roads), found lane {lb}"),
+        ));
+    }
+    let net = road.network();
+    let roads = crate::road::route_roads(net, la, &[last.clone(), first.clone()])
+        .map_err(|e| m.site.err(K::Road, format!("expected the succeeding route to start where the preceding one ends ({}) or after it: {e}", at(&last))))?;
+    let through_junction = roads.len() == 3 && net.roads()[roads[1]].junction.is_some();
+    if roads.len() > 2 && !through_junction {
+        let ids: Vec<&str> = roads.iter().map(|&i| net.roads()[i].id.as_str()).collect();
+        return Err(m.site.err(
+            K::Road,
+            format!("expected the succeeding route ({}) on the road the preceding one ends on ({}) or on the road after it, found the path between them over roads {}", at(&first), at(&last), ids.join(", ")),
+        ));
+    }
+    Ok(())
 }
 
 /// §8.12 `lane_type` against an OpenDRIVE lane type.

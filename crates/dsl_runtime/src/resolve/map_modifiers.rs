@@ -13,7 +13,7 @@
 //! two lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
 //! plan's roads, and `routes_are_in_sequence` on route fields, each bound to a road (a
 //! `lane_section` field to a lane section) of the plan through a lane of the modifier's own
-//! (`SeqEnd`); `roads_follow_in_junction`'s `junction_route` is bound to the connecting road of the way through;
+//! (`SeqEnd`), or on two routes the map makes, a check of their points; `roads_follow_in_junction`'s `junction_route` is bound to the connecting road of the way through;
 //! `crossing_connects` binds its crossing field to a crosswalk of the map and its lanes to
 //! the lanes the crosswalk joins. `routes_are_opposite` on route fields is an error at the
 //! modifier saying why;
@@ -24,6 +24,7 @@ use dsl::semantics::hir::ModifierApp;
 use dsl::Value;
 
 use super::eval::{bind, Eval as Ctx};
+use super::route::Route;
 use super::value::{arg, Arg, Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
@@ -102,6 +103,15 @@ pub(crate) enum MapKind {
         preceding: SeqEnd,
         /// The end that follows it.
         succeeding: SeqEnd,
+    },
+    /// §8.12.2.2.2 on two routes the map makes (`m.create_route([…])`,
+    /// `m.create_odr_point(…)`): a check that `succeeding` starts where `preceding` ends, on
+    /// its road further on or on the road after it (directly or through one connecting road).
+    NamedInSequence {
+        /// The first route (`Route::Lane`).
+        preceding: Route,
+        /// The route that follows it (`Route::Lane`).
+        succeeding: Route,
     },
     /// §8.12.2.2.3: `out_lane` is reached from `in_lane` through one connecting lane of a
     /// junction, turning the way `direction` names; without `in_lane`/`out_lane` two lanes
@@ -257,10 +267,15 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
         });
     }
     let params = super::modifier::params(ctx, name);
-    let args: Args = bind(&app.args, &params)
-        .into_iter()
-        .map(|(n, e)| (n, ctx.arg(e)))
-        .collect();
+    let exprs = bind(&app.args, &params);
+    let args: Args = exprs.iter().map(|(n, e)| (n.clone(), ctx.arg(e))).collect();
+    // An argument that calls a method (a route the map makes: `m.create_route(…)`).
+    let call = |p: &str| {
+        exprs
+            .iter()
+            .find(|(n, e)| n == p && matches!(e.kind, dsl::semantics::hir::ExprKind::Call(..)))
+            .map(|(_, e)| *e)
+    };
     let need = |p: &str| {
         arg(&args, p).ok_or_else(|| {
             site.err(
@@ -362,6 +377,28 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                     .map(|a| field(ctx, a, false))
                     .transpose()?
                     .is_some(),
+            }
+        }
+        "routes_are_in_sequence" if call("preceding").is_some() || call("succeeding").is_some() => {
+            let named = |p: &str| -> Result<Route, Error> {
+                match call(p) {
+                    Some(e) => super::route::route_of(ctx, e),
+                    None => Err(need(p)?.site.err(
+                        K::Unsupported,
+                        format!("expected routes_are_in_sequence(…) on two routes the map makes (map.create_route([…]), map.create_odr_point(…)) or on two fields, found {p}: a field beside a route the map makes"),
+                    )),
+                }
+            };
+            let (preceding, succeeding) = (named("preceding")?, named("succeeding")?);
+            if let Some(a) = arg(&args, "road") {
+                return Err(a.site.err(
+                    K::Unsupported,
+                    "expected routes_are_in_sequence(preceding: …, succeeding: …) on routes the map makes without road: (their points name their roads), found road:".to_string(),
+                ));
+            }
+            MapKind::NamedInSequence {
+                preceding,
+                succeeding,
             }
         }
         "routes_are_in_sequence" => {

@@ -146,7 +146,7 @@ pub(crate) fn read(
 }
 
 /// The route `e` names.
-fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
+pub(super) fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
     let unsupported = |what: &str| {
         ctx.files.err(
             K::Unsupported,

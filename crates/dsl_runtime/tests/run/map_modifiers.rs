@@ -205,6 +205,26 @@ fn a_road_and_a_lane_and_two_routes_in_sequence_are_bound_and_driven() {
 }
 
 #[test]
+fn routes_the_map_makes_in_sequence_are_checked_and_driven() {
+    // map_sequence_named.osc: a = road 0 s 10 to 90 m, b = road 6 s 0 to 60 m, lane -1.
+    let r = run("map_sequence_named", "junction_trippel_twoway0");
+    for (t, who, road, s) in [
+        (0.0, "ego", "0", 10.0),
+        (5.0, "ego", "0", 60.0),
+        (0.0, "npc", "6", 0.0),
+        (5.0, "npc", "6", 40.0),
+    ] {
+        let p = r.at(t, who);
+        assert_eq!(
+            (p.road.as_str(), p.lane),
+            (road, -1),
+            "{who} at {t} s: {p:?}"
+        );
+        assert!((p.s - s).abs() < Y_TOL, "{who} at {t} s: {p:?}");
+    }
+}
+
+#[test]
 fn lane_sections_in_sequence_are_bound_and_driven_from_the_second_ones_start() {
     // map_sequence_sections.osc: y = section 1 of road 1 (300 to 500 m).
     let r = run("map_sequence_sections", "lane_drop");
@@ -344,6 +364,18 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "crosswalk",
         "expected a person's walk() along crossing `c` (a person crosses the road on it), found `car`'s drive()",
         "10:13",
+    );
+    refused(
+        "err_map_sequence_named",
+        "road_link_unequal_number_of_lanes0",
+        "expected the succeeding route to start where the preceding one ends (road 2 at s = 60 m) or after it: expected a path in lane -1 from road 2 at s = 60 m to road 1 at s = 10 m in the driving direction, found none",
+        "7:5",
+    );
+    refused(
+        "err_map_sequence_mix",
+        "road_link_unequal_number_of_lanes0",
+        "expected routes_are_in_sequence(…) on two routes the map makes (map.create_route([…]), map.create_odr_point(…)) or on two fields, found preceding: a field beside a route the map makes",
+        "8:41",
     );
     refused(
         "err_map_roads_sequence_off",
