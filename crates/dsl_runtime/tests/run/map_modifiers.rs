@@ -377,6 +377,15 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "expected routes_are_in_sequence(…) on two routes the map makes (map.create_route([…]), map.create_odr_point(…)) or on two fields, found preceding: a field beside a route the map makes",
         "8:41",
     );
+    refused_all(
+        "err_map_crossing_away",
+        "crosswalk",
+        &[
+            "expected `alice` at the start of crossing `c` (crosswalk cw1 of road 1 bound by map.crossing_connects(…) at ",
+            "err_map_crossing_away.osc:11:5: lane -1 at s = 100.00 m, t = -1.75 m) when its walk starts, found it in lane -1 at s = 92.00 m, t = -1.75 m",
+        ],
+        "17:13",
+    );
     refused(
         "err_map_roads_sequence_off",
         "road_link_unequal_number_of_lanes0",
