@@ -45,9 +45,11 @@
 //! when the action starts: the same path as at a known start when member 0 stands at the
 //! part's start, which the engine checks then (oscsim's StateCheck: its lane, its s and its
 //! offset within 0.5 m; a failure is an error record and a failed run), its stamps member 0's (on a plan of one road: the engine measures s on the
-//! road the member is on). A column after a run-time condition is an error: member i's lead-in
-//! is its distance d behind member 0 and its stamps are shifted by d over the group's speed,
-//! numbers a trajectory takes as written, which the plan does not know then.
+//! road the member is on). A column's untimed path after a run-time condition: member 0 checked
+//! at the part's start as above, member i taken at the offset from member 0 the plan last knows,
+//! which the engine checks too (`position_actions::formation_check`), its lead-in from there. A
+//! column's trajectory then is an error: member i's stamps are shifted by its distance over
+//! the group's speed then, which the plan does not know and no check of the engine's takes.
 
 use scenario::{PositionKind, StateCheck};
 
@@ -69,6 +71,9 @@ pub(super) enum RunTimePlace {
     /// paths are placed from where they are, as if it did), and the part of the path between
     /// the offsets (`None`: the path as given).
     Lead(Box<StateCheck>, Option<PlaceArg>),
+    /// Member i of a column (untimed): the engine's check of its offset from member 0 as the
+    /// plan last knows it, and its lead-in from there and the part.
+    Column(Box<StateCheck>, PlaceArg),
     /// Member i: positions relative to itself, resolved when the action starts, and their
     /// time stamps for a trajectory.
     Relative(Vec<PositionKind>, Option<Vec<f64>>),
@@ -94,10 +99,14 @@ impl Planner<'_> {
         t0: Option<f64>,
     ) -> Result<(), Error> {
         let g = &inv.actor;
-        if t0.is_none() && !self.across.contains(g) {
+        let timed = matches!(
+            inv.kind,
+            Action::FollowTrajectory | Action::ReplayTrajectory
+        );
+        if t0.is_none() && timed && !self.across.contains(g) {
             return Err(p.site.err(
                 K::Unsatisfiable,
-                format!("expected a start the plan knows for {}(…) on single-lane group `{g}` (member i's lead-in is its distance d behind member 0 then, and a trajectory's stamps are shifted by d over the group's speed: numbers the engine's trajectories take as written), found one after a run-time condition", inv.action),
+                format!("expected a start the plan knows for {}(…) on single-lane group `{g}` (member i's time stamps are shifted by its distance behind member 0 over the group's speed then, which the plan does not know and the engine cannot check), found one after a run-time condition", inv.action),
             ));
         }
         if t0.is_none() && self.road.ids().len() > 1 {
@@ -129,13 +138,7 @@ impl Planner<'_> {
             return Ok(None);
         };
         if lead == target {
-            let (x, y, _) = part.points[0];
-            let (lane, s, offset) = self.road.locate(x, y).ok_or_else(|| {
-                given.site.err(
-                    K::Unsatisfiable,
-                    format!("expected the path's start on the plan's roads, found ({x:.2}, {y:.2}) off them"),
-                )
-            })?;
+            let (lane, s, offset) = self.part_start(given, &part)?;
             let (road, s_road) = self.road.road_at(s);
             let check = StateCheck {
                 what: format!(
@@ -153,6 +156,9 @@ impl Planner<'_> {
                 .cut
                 .then(|| place_of(given, part.points, part.times, part.smooth));
             return Ok(Some(RunTimePlace::Lead(Box::new(check), part)));
+        }
+        if !self.across.contains(&inv.actor) {
+            return self.run_time_column(inv, given, target, part).map(Some);
         }
         let length: f64 = segment_lengths(&part.points, part.smooth).iter().sum();
         let (dense, stamps) = samples(
@@ -185,6 +191,40 @@ impl Planner<'_> {
             })
             .collect();
         Ok(Some(RunTimePlace::Relative(kinds, stamps)))
+    }
+
+    /// At a run-time start, the untimed path member i of a column follows: its lead-in along
+    /// its lane from member 0's entry point less its offset from member 0 as the plan last
+    /// knows it, then the part; with the engine's check of that offset (`formation_check`),
+    /// member 0's of the entry point being its own (`run_time_place`).
+    fn run_time_column(
+        &self,
+        inv: &Invoke,
+        given: &PlaceArg,
+        target: &str,
+        part: Part,
+    ) -> Result<RunTimePlace, Error> {
+        let (lane, s, offset) = self.part_start(given, &part)?;
+        let t = self.road.lane_center(lane, s) + offset;
+        let (check, (ds, dt)) = self.formation_check(inv, &given.site, target)?;
+        let member_lane = self.track(target).lane(self.last_known());
+        let mut points = self.lead_in(given, target, member_lane, (s + ds, s, t + dt))?;
+        points.extend_from_slice(&part.points);
+        Ok(RunTimePlace::Column(
+            check,
+            place_of(given, points, None, part.smooth),
+        ))
+    }
+
+    /// Where `part` starts on the plan's roads: lane, s, offset from the lane's centre.
+    fn part_start(&self, given: &PlaceArg, part: &Part) -> Result<(i32, f64, f64), Error> {
+        let (x, y, _) = part.points[0];
+        self.road.locate(x, y).ok_or_else(|| {
+            given.site.err(
+                K::Unsatisfiable,
+                format!("expected the path's start on the plan's roads, found ({x:.2}, {y:.2}) off them"),
+            )
+        })
     }
 
     /// The path or trajectory `member` of a group follows when the group follows `given`:
@@ -241,19 +281,7 @@ impl Planner<'_> {
         // The lead-in: the member's lane centre (its own t) from its s towards member 0's,
         // facing the lane's driving direction, member 0's entry point its last point.
         let lane = self.track(target).lane(t0);
-        let turn = if lane > 0 { std::f64::consts::PI } else { 0.0 };
-        let n = ((s_lead - s).abs() / STEP).ceil().max(1.0) as usize;
-        let mut lead_in: Vec<Pose2> = Vec::with_capacity(n + points.len());
-        for k in 0..n {
-            let at = s + (s_lead - s) * k as f64 / n as f64;
-            let (x, y, h) = self.road.world_pose(at, t).ok_or_else(|| {
-                given.site.err(
-                    K::Unsatisfiable,
-                    format!("expected `{target}` on the plan's roads behind the path's start, found s = {at:.2} m off them"),
-                )
-            })?;
-            lead_in.push((x, y, h + turn));
-        }
+        let mut lead_in = self.lead_in(given, target, lane, (s, s_lead, t))?;
         let first = lead_in.len();
         lead_in.extend_from_slice(points);
         let along: Vec<f64> = segment_lengths(&lead_in[..=first], smooth)
@@ -280,6 +308,32 @@ impl Planner<'_> {
         stamps.extend(along[..first - 1].iter().map(|d| t_first + d / group_speed));
         stamps.extend(times.iter().map(|t| t + shift));
         Ok(Some(place(lead_in, Some(stamps), smooth)))
+    }
+
+    /// The points of `target`'s lead-in on its lane `lane`: its lane's centre (t) from its s
+    /// towards member 0's, at most [`STEP`] m of s apart, facing the lane's driving direction;
+    /// member 0's entry point (the path's, appended by the caller) ends it.
+    fn lead_in(
+        &self,
+        given: &PlaceArg,
+        target: &str,
+        lane: i32,
+        (s, s_lead, t): (f64, f64, f64),
+    ) -> Result<Vec<Pose2>, Error> {
+        let turn = if lane > 0 { std::f64::consts::PI } else { 0.0 };
+        let n = ((s_lead - s).abs() / STEP).ceil().max(1.0) as usize;
+        let mut lead_in: Vec<Pose2> = Vec::with_capacity(n);
+        for k in 0..n {
+            let at = s + (s_lead - s) * k as f64 / n as f64;
+            let (x, y, h) = self.road.world_pose(at, t).ok_or_else(|| {
+                given.site.err(
+                    K::Unsatisfiable,
+                    format!("expected `{target}` on the plan's roads behind the path's start, found s = {at:.2} m off them"),
+                )
+            })?;
+            lead_in.push((x, y, h + turn));
+        }
+        Ok(lead_in)
     }
 
     /// Whether some member of group `g` is beside member 0 (t differs) at `t0`: a group over

@@ -502,38 +502,9 @@ impl Planner<'_> {
         let (ds, dt) = match formation {
             Some(f) => f,
             None => {
-                if self.road.ids().len() > 1 {
-                    return Err(p.site.err(
-                        K::Unsatisfiable,
-                        format!("expected a plan on one road for {}(…) on group `{}` after a run-time condition (the engine checks each member's offset from `{lead}` in road coordinates on the road it is on), found {} roads", inv.action, inv.actor, self.road.ids().len()),
-                    ));
-                }
-                let t = self.last_known();
-                let (ds, dt) = (
-                    self.s_at(target, t) - self.s_at(lead, t),
-                    self.t_at(target, t) - self.t_at(lead, t),
-                );
-                let check = StateCheck {
-                    what: format!(
-                        "`{target}`'s offset from `{lead}` in group `{}`, {ds:.2} m along the road and {dt:.2} m across it as at {t:.2} s, kept by {}(…) at {}",
-                        inv.actor,
-                        inv.action,
-                        p.site.at()
-                    ),
-                    gap: Some((
-                        SpeedGap {
-                            entity_ref: lead.clone(),
-                            ahead: ds > 0.0,
-                            time: 0.0,
-                            at_least: ds.abs(),
-                        },
-                        POSITION_TOLERANCE,
-                    )),
-                    beside: Some((lead.clone(), dt, LATERAL_TOLERANCE)),
-                    ..StateCheck::default()
-                };
+                let (check, (ds, dt)) = self.formation_check(inv, &p.site, target)?;
                 let name = format!("{}/{target}/formation:check", p.path);
-                let action = PrivateAction::Check(Box::new(check));
+                let action = PrivateAction::Check(check);
                 out.insert(0, Planned::with_phase(target, name, action, &p.site));
                 (ds, dt)
             }
@@ -550,6 +521,57 @@ impl Planner<'_> {
                 ),
             )
         })
+    }
+}
+
+impl Planner<'_> {
+    /// After a run-time condition, member `target` of group `inv.actor` is taken at the offset
+    /// (ds, dt) from member 0 the plan last knows; the engine's check of it when the action at
+    /// `site` starts (oscsim's StateCheck on `target`: its s less member 0's within 0.5 m, its
+    /// t less member 0's within 1 cm), and the offset. On a plan of one road (the engine
+    /// measures s on the road the actor is on).
+    pub(super) fn formation_check(
+        &self,
+        inv: &Invoke,
+        site: &Site,
+        target: &str,
+    ) -> Result<(Box<StateCheck>, (f64, f64)), Error> {
+        let lead = self
+            .groups
+            .get(&inv.actor)
+            .and_then(|m| m.first())
+            .map_or(target, String::as_str);
+        if self.road.ids().len() > 1 {
+            return Err(site.err(
+                K::Unsatisfiable,
+                format!("expected a plan on one road for {}(…) on group `{}` after a run-time condition (the engine checks each member's offset from `{lead}` in road coordinates on the road it is on), found {} roads", inv.action, inv.actor, self.road.ids().len()),
+            ));
+        }
+        let t = self.last_known();
+        let (ds, dt) = (
+            self.s_at(target, t) - self.s_at(lead, t),
+            self.t_at(target, t) - self.t_at(lead, t),
+        );
+        let check = StateCheck {
+            what: format!(
+                "`{target}`'s offset from `{lead}` in group `{}`, {ds:.2} m along the road and {dt:.2} m across it as at {t:.2} s, kept by {}(…) at {}",
+                inv.actor,
+                inv.action,
+                site.at()
+            ),
+            gap: Some((
+                SpeedGap {
+                    entity_ref: lead.to_string(),
+                    ahead: ds > 0.0,
+                    time: 0.0,
+                    at_least: ds.abs(),
+                },
+                POSITION_TOLERANCE,
+            )),
+            beside: Some((lead.to_string(), dt, LATERAL_TOLERANCE)),
+            ..StateCheck::default()
+        };
+        Ok((Box::new(check), (ds, dt)))
     }
 }
 

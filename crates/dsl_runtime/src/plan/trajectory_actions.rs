@@ -72,6 +72,13 @@ impl Planner<'_> {
                     .push(Planned::with_phase(slot.target, n, action, &p.site));
                 part.as_ref().or(given)
             }
+            Some(RunTimePlace::Column(check, lead_in)) => {
+                let n = format!("{}/{}/formation:check", p.path, slot.target);
+                let action = PrivateAction::Check(check.clone());
+                slot.out
+                    .insert(0, Planned::with_phase(slot.target, n, action, &p.site));
+                Some(lead_in)
+            }
             Some(RunTimePlace::Relative(kinds, times)) => {
                 let n = name(&inv.action);
                 let mode = match inv.kind {

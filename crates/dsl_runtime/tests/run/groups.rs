@@ -281,8 +281,8 @@ fn group_forms_that_cannot_keep_the_formation_are_errors() {
         ),
         (
             "err_group_path_runtime",
-            "31:17",
-            "expected a start the plan knows for follow_path(…) on single-lane group `g` (member i's lead-in is its distance d behind member 0 then",
+            "34:17",
+            "expected a start the plan knows for follow_trajectory(…) on single-lane group `g` (member i's time stamps are shifted by its distance behind member 0 over the group's speed then",
         ),
         (
             "err_group_lateral_gap",
@@ -630,6 +630,30 @@ fn a_groups_change_position_after_a_run_time_condition_moves_each_member_along_i
         close(m.y, -1.75, TOL, &format!("{name} y(4.6)"));
         assert_eq!(m.lane, -1, "{name}");
     }
+}
+
+/// replay_path on a column after a run-time condition: the checked offset, the lead-in from
+/// there (group_replay_path_runtime.osc, by hand there).
+#[test]
+fn a_column_replays_a_path_after_a_run_time_condition_from_its_checked_offset() {
+    let r = run("actions/group_replay_path_runtime", 0, None);
+    let (s, e) = r.phase("do.signal.1.follow");
+    assert!(
+        (s - 2.55).abs() < T_TOL && (e - 8.55).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    places(
+        &r,
+        &[
+            ("g.vehicles[0]", 2.55, 90.0, -8.75),
+            ("g.vehicles[1]", 2.55, 75.0, -8.75),
+            ("g.vehicles[0]", 7.05, 134.0, -1.75),
+            ("g.vehicles[1]", 4.05, 90.0, -8.75),
+            ("g.vehicles[1]", 6.05, 110.0, -8.75),
+            ("g.vehicles[1]", 7.3, 122.0, -5.25),
+            ("g.vehicles[1]", 8.55, 134.0, -1.75),
+        ],
+    );
 }
 
 /// A formation changed before a run-time start fails the engine's check of the offsets
