@@ -38,20 +38,8 @@
 //! path longer in the same time) is checked against the vehicle's speed like any trajectory; a
 //! moved point off the plan's roads is an error at the path.
 //!
-//! After a run-time condition the plan knows no member's place. A group over several lanes
-//! still moves as a block: member 0 follows the part as the actor's form does, and member i
-//! the part's points at most [`STEP`] m apart, each a RelativeRoadPosition on member i itself
-//! at the point's road coordinates less those of the part's start, which the engine resolves
-//! when the action starts: the same path as at a known start when member 0 stands at the
-//! part's start, which the engine checks then (oscsim's StateCheck: its lane, its s and its
-//! offset within 0.5 m; a failure is an error record and a failed run), its stamps member 0's (on a plan of one road: the engine measures s on the
-//! road the member is on). A column's untimed path after a run-time condition: member 0 checked
-//! at the part's start as above, member i taken at the offset from member 0 the plan last knows,
-//! which the engine checks too (`position_actions::formation_check`), its lead-in from there. A
-//! column's trajectory then is an error: member i's stamps are shifted by its distance over
-//! the group's speed then, which the plan does not know and no check of the engine's takes.
-
-use scenario::{PositionKind, StateCheck};
+//! After a run-time condition a block follows as positions relative to each member, a column
+//! an untimed path from its checked offset (`group_path_runtime`).
 
 use super::path_part::{cut, samples, Samples};
 use super::path_shape::{segment_lengths, Pose2};
@@ -63,21 +51,7 @@ use crate::resolve::{Action, Invoke, Phase, Place, PlaceArg};
 /// The largest step between the points of a member's lead-in along its lane (in s), of a
 /// smooth path's part and of a path moved round a bend (along member 0's path) (m): a chord of
 /// h on a curve of radius R leaves it by h²/(8R), 2.5 mm for 1 m at R = 50 m.
-const STEP: f64 = 1.0;
-
-/// What a member of a group over several lanes follows after a run-time start.
-pub(super) enum RunTimePlace {
-    /// Member 0: the engine's check that it stands at the part's start (the other members'
-    /// paths are placed from where they are, as if it did), and the part of the path between
-    /// the offsets (`None`: the path as given).
-    Lead(Box<StateCheck>, Option<PlaceArg>),
-    /// Member i of a column (untimed): the engine's check of its offset from member 0 as the
-    /// plan last knows it, and its lead-in from there and the part.
-    Column(Box<StateCheck>, PlaceArg),
-    /// Member i: positions relative to itself, resolved when the action starts, and their
-    /// time stamps for a trajectory.
-    Relative(Vec<PositionKind>, Option<Vec<f64>>),
-}
+pub(super) const STEP: f64 = 1.0;
 
 /// One member's share of a group's path action, at a start the plan knows.
 #[derive(Debug, Clone, Copy)]
@@ -116,115 +90,6 @@ impl Planner<'_> {
             ));
         }
         Ok(())
-    }
-
-    /// At a run-time start, what `target`, a member of group `inv.actor` (over several lanes),
-    /// follows when the group follows `given`: member 0 the part between the offsets, after the
-    /// engine's check that it stands at the part's start (0.5 m along and across); member i that part's points at most [`STEP`] m apart,
-    /// each a RelativeRoadPosition on member i itself, (s − s₀, t − t₀) from it, (s, t) the
-    /// point's road coordinates and (s₀, t₀) those of the part's first point, which the engine
-    /// resolves when the action starts: member i's path is member 0's moved to its place in the
-    /// road frame when member 0 stands at the part's start, as at a known start.
-    pub(super) fn run_time_place(
-        &self,
-        given: &PlaceArg,
-        inv: &Invoke,
-        target: &str,
-    ) -> Result<Option<RunTimePlace>, Error> {
-        let Some(lead) = self.groups.get(&inv.actor).and_then(|m| m.first()) else {
-            return Ok(None);
-        };
-        let Some(part) = followed_part(inv, given)? else {
-            return Ok(None);
-        };
-        if lead == target {
-            let (lane, s, offset) = self.part_start(given, &part)?;
-            let (road, s_road) = self.road.road_at(s);
-            let check = StateCheck {
-                what: format!(
-                    "the start of group `{}`'s path in {}(…) at {}",
-                    inv.actor,
-                    inv.action,
-                    given.site.at()
-                ),
-                lane: Some((road.id.clone(), lane)),
-                s: Some((s_road, POSITION_TOLERANCE)),
-                offset: Some((offset, POSITION_TOLERANCE)),
-                ..StateCheck::default()
-            };
-            let part = part
-                .cut
-                .then(|| place_of(given, part.points, part.times, part.smooth));
-            return Ok(Some(RunTimePlace::Lead(Box::new(check), part)));
-        }
-        if !self.across.contains(&inv.actor) {
-            return self.run_time_column(inv, given, target, part).map(Some);
-        }
-        let length: f64 = segment_lengths(&part.points, part.smooth).iter().sum();
-        let (dense, stamps) = samples(
-            &part.points,
-            part.times.as_deref(),
-            part.smooth,
-            (0.0, length),
-            STEP,
-        );
-        let mut road = Vec::with_capacity(dense.len());
-        for &(x, y, _) in &dense {
-            let (lane, s, offset) = self.road.locate(x, y).ok_or_else(|| {
-                given.site.err(
-                    K::Unsatisfiable,
-                    format!(
-                        "expected the path on the plan's roads, found ({x:.2}, {y:.2}) off them"
-                    ),
-                )
-            })?;
-            road.push((s, self.road.lane_center(lane, s) + offset));
-        }
-        let (s0, t0) = road[0];
-        let kinds = road
-            .iter()
-            .map(|&(s, t)| PositionKind::RelativeRoad {
-                entity_ref: target.to_string(),
-                ds: s - s0,
-                dt: t - t0,
-                orientation: None,
-            })
-            .collect();
-        Ok(Some(RunTimePlace::Relative(kinds, stamps)))
-    }
-
-    /// At a run-time start, the untimed path member i of a column follows: its lead-in along
-    /// its lane from member 0's entry point less its offset from member 0 as the plan last
-    /// knows it, then the part; with the engine's check of that offset (`formation_check`),
-    /// member 0's of the entry point being its own (`run_time_place`).
-    fn run_time_column(
-        &self,
-        inv: &Invoke,
-        given: &PlaceArg,
-        target: &str,
-        part: Part,
-    ) -> Result<RunTimePlace, Error> {
-        let (lane, s, offset) = self.part_start(given, &part)?;
-        let t = self.road.lane_center(lane, s) + offset;
-        let (check, (ds, dt)) = self.formation_check(inv, &given.site, target)?;
-        let member_lane = self.track(target).lane(self.last_known());
-        let mut points = self.lead_in(given, target, member_lane, (s + ds, s, t + dt))?;
-        points.extend_from_slice(&part.points);
-        Ok(RunTimePlace::Column(
-            check,
-            place_of(given, points, None, part.smooth),
-        ))
-    }
-
-    /// Where `part` starts on the plan's roads: lane, s, offset from the lane's centre.
-    fn part_start(&self, given: &PlaceArg, part: &Part) -> Result<(i32, f64, f64), Error> {
-        let (x, y, _) = part.points[0];
-        self.road.locate(x, y).ok_or_else(|| {
-            given.site.err(
-                K::Unsatisfiable,
-                format!("expected the path's start on the plan's roads, found ({x:.2}, {y:.2}) off them"),
-            )
-        })
     }
 
     /// The path or trajectory `member` of a group follows when the group follows `given`:
@@ -313,7 +178,7 @@ impl Planner<'_> {
     /// The points of `target`'s lead-in on its lane `lane`: its lane's centre (t) from its s
     /// towards member 0's, at most [`STEP`] m of s apart, facing the lane's driving direction;
     /// member 0's entry point (the path's, appended by the caller) ends it.
-    fn lead_in(
+    pub(super) fn lead_in(
         &self,
         given: &PlaceArg,
         target: &str,
@@ -399,20 +264,20 @@ impl Planner<'_> {
 
 /// The part of a group's path its members follow: the points between the offsets (a polyline
 /// of them where the offsets cut the path), their stamps, whether smooth.
-struct Part {
-    points: Vec<Pose2>,
-    times: Option<Vec<f64>>,
-    smooth: bool,
+pub(super) struct Part {
+    pub points: Vec<Pose2>,
+    pub times: Option<Vec<f64>>,
+    pub smooth: bool,
     /// The offsets cut the path (`points` is a part of it).
-    cut: bool,
+    pub cut: bool,
     /// The start_offset (m).
-    start_offset: f64,
+    pub start_offset: f64,
 }
 
 /// The [`Part`] of `given`'s path or trajectory that a group follows in `inv`: the part
 /// between `start_offset` and `end_offset` (exact for a polyline, points [`STEP`] m apart on a
 /// smooth curve). `None` for a place that is no path, or one the actor's form reports as wrong.
-fn followed_part(inv: &Invoke, given: &PlaceArg) -> Result<Option<Part>, Error> {
+pub(super) fn followed_part(inv: &Invoke, given: &PlaceArg) -> Result<Option<Part>, Error> {
     let (points, times, smooth) = match &given.place {
         Place::Path { points, smooth } => (points, None, *smooth),
         Place::Trajectory {
@@ -448,7 +313,7 @@ fn followed_part(inv: &Invoke, given: &PlaceArg) -> Result<Option<Part>, Error> 
 }
 
 /// `given` with the path (`times`: the trajectory) through `points`.
-fn place_of(
+pub(super) fn place_of(
     given: &PlaceArg,
     points: Vec<Pose2>,
     times: Option<Vec<f64>>,

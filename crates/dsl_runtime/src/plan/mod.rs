@@ -64,6 +64,7 @@
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
 //! | `group_path` | the group forms of the path and trajectory actions: a column following the path in file, a group over several lanes the path moved to each member's place in the road frame |
+//! | `group_path_runtime` | the same after a run-time condition: a block's paths as positions relative to each member, a column's untimed path from its checked offset |
 //! | `trajectory_actions` | the §8.8 actions along given points (`follow_trajectory`, `follow_path`) |
 //! | `relative_path` | relative trajectories and paths as world points against their reference at the action's start |
 //! | `map_checks` | the map's modifiers over route fields checked against the plan's roads |
@@ -95,6 +96,7 @@ mod crossing_walk;
 mod events;
 mod gap_actions;
 mod group_path;
+mod group_path_runtime;
 mod invoke;
 mod lane_fields;
 mod lateral;

@@ -23,7 +23,8 @@
 
 use scenario::{FollowingMode, PrivateAction};
 
-use super::group_path::{Member, RunTimePlace};
+use super::group_path::Member;
+use super::group_path_runtime::RunTimePlace;
 use super::path_part::cut;
 use super::path_shape::{along, polyline_through, segment_lengths, starting_at, Pose2};
 use super::planner::Planner;

@@ -1,0 +1,155 @@
+//! The group forms of the path and trajectory actions (ASAM OpenSCENARIO DSL 2.1 §8.8.2.16
+//! `follow_path`, §8.8.2.17 `follow_trajectory`, `replay_path` / `replay_trajectory`; §8.7.18
+//! vehicle groups, non-normative) in a phase that starts on a run-time condition
+//! (`group_path` has them at a start the plan knows).
+//!
+//! After a run-time condition the plan knows no member's place. A group over several lanes
+//! still moves as a block: member 0 follows the part as the actor's form does, and member i
+//! the part's points at most [`STEP`] m apart, each a RelativeRoadPosition on member i itself
+//! at the point's road coordinates less those of the part's start, which the engine resolves
+//! when the action starts: the same path as at a known start when member 0 stands at the
+//! part's start, which the engine checks then (oscsim's StateCheck: its lane, its s and its
+//! offset within 0.5 m; a failure is an error record and a failed run), its stamps member 0's
+//! (on a plan of one road: the engine measures s on the road the member is on).
+//!
+//! A column's untimed path: member 0 checked at the part's start as above, member i taken at
+//! the offset from member 0 the plan last knows, which the engine checks too
+//! (`position_actions::formation_check`), its lead-in from there. A column's trajectory is an
+//! error: member i's stamps are shifted by its distance over the group's speed then, which the
+//! plan does not know and no check of the engine's takes.
+
+use scenario::{PositionKind, StateCheck};
+
+use super::group_path::{followed_part, place_of, Part, STEP};
+use super::path_part::samples;
+use super::path_shape::segment_lengths;
+use super::planner::Planner;
+use super::types::POSITION_TOLERANCE;
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{Invoke, PlaceArg};
+
+/// What a member of a group over several lanes follows after a run-time start.
+pub(super) enum RunTimePlace {
+    /// Member 0: the engine's check that it stands at the part's start (the other members'
+    /// paths are placed from where they are, as if it did), and the part of the path between
+    /// the offsets (`None`: the path as given).
+    Lead(Box<StateCheck>, Option<PlaceArg>),
+    /// Member i of a column (untimed): the engine's check of its offset from member 0 as the
+    /// plan last knows it, and its lead-in from there and the part.
+    Column(Box<StateCheck>, PlaceArg),
+    /// Member i: positions relative to itself, resolved when the action starts, and their
+    /// time stamps for a trajectory.
+    Relative(Vec<PositionKind>, Option<Vec<f64>>),
+}
+
+impl Planner<'_> {
+    /// At a run-time start, what `target`, a member of group `inv.actor` (over several lanes),
+    /// follows when the group follows `given`: member 0 the part between the offsets, after the
+    /// engine's check that it stands at the part's start (0.5 m along and across); member i
+    /// that part's points at most [`STEP`] m apart, each a RelativeRoadPosition on member i
+    /// itself, (s − s₀, t − t₀) from it, (s, t) the point's road coordinates and (s₀, t₀)
+    /// those of the part's first point, which the engine resolves when the action starts:
+    /// member i's path is member 0's moved to its place in the road frame when member 0 stands
+    /// at the part's start, as at a known start. A column's member i: `run_time_column`.
+    pub(super) fn run_time_place(
+        &self,
+        given: &PlaceArg,
+        inv: &Invoke,
+        target: &str,
+    ) -> Result<Option<RunTimePlace>, Error> {
+        let Some(lead) = self.groups.get(&inv.actor).and_then(|m| m.first()) else {
+            return Ok(None);
+        };
+        let Some(part) = followed_part(inv, given)? else {
+            return Ok(None);
+        };
+        if lead == target {
+            let (lane, s, offset) = self.part_start(given, &part)?;
+            let (road, s_road) = self.road.road_at(s);
+            let check = StateCheck {
+                what: format!(
+                    "the start of group `{}`'s path in {}(…) at {}",
+                    inv.actor,
+                    inv.action,
+                    given.site.at()
+                ),
+                lane: Some((road.id.clone(), lane)),
+                s: Some((s_road, POSITION_TOLERANCE)),
+                offset: Some((offset, POSITION_TOLERANCE)),
+                ..StateCheck::default()
+            };
+            let part = part
+                .cut
+                .then(|| place_of(given, part.points, part.times, part.smooth));
+            return Ok(Some(RunTimePlace::Lead(Box::new(check), part)));
+        }
+        if !self.across.contains(&inv.actor) {
+            return self.run_time_column(inv, given, target, part).map(Some);
+        }
+        let length: f64 = segment_lengths(&part.points, part.smooth).iter().sum();
+        let (dense, stamps) = samples(
+            &part.points,
+            part.times.as_deref(),
+            part.smooth,
+            (0.0, length),
+            STEP,
+        );
+        let mut road = Vec::with_capacity(dense.len());
+        for &(x, y, _) in &dense {
+            let (lane, s, offset) = self.road.locate(x, y).ok_or_else(|| {
+                given.site.err(
+                    K::Unsatisfiable,
+                    format!(
+                        "expected the path on the plan's roads, found ({x:.2}, {y:.2}) off them"
+                    ),
+                )
+            })?;
+            road.push((s, self.road.lane_center(lane, s) + offset));
+        }
+        let (s0, t0) = road[0];
+        let kinds = road
+            .iter()
+            .map(|&(s, t)| PositionKind::RelativeRoad {
+                entity_ref: target.to_string(),
+                ds: s - s0,
+                dt: t - t0,
+                orientation: None,
+            })
+            .collect();
+        Ok(Some(RunTimePlace::Relative(kinds, stamps)))
+    }
+
+    /// At a run-time start, the untimed path member i of a column follows: its lead-in along
+    /// its lane from member 0's entry point less its offset from member 0 as the plan last
+    /// knows it, then the part; with the engine's check of that offset (`formation_check`),
+    /// member 0's of the entry point being its own (`run_time_place`).
+    fn run_time_column(
+        &self,
+        inv: &Invoke,
+        given: &PlaceArg,
+        target: &str,
+        part: Part,
+    ) -> Result<RunTimePlace, Error> {
+        let (lane, s, offset) = self.part_start(given, &part)?;
+        let t = self.road.lane_center(lane, s) + offset;
+        let (check, (ds, dt)) = self.formation_check(inv, &given.site, target)?;
+        let member_lane = self.track(target).lane(self.last_known());
+        let mut points = self.lead_in(given, target, member_lane, (s + ds, s, t + dt))?;
+        points.extend_from_slice(&part.points);
+        Ok(RunTimePlace::Column(
+            check,
+            place_of(given, points, None, part.smooth),
+        ))
+    }
+
+    /// Where `part` starts on the plan's roads: lane, s, offset from the lane's centre.
+    fn part_start(&self, given: &PlaceArg, part: &Part) -> Result<(i32, f64, f64), Error> {
+        let (x, y, _) = part.points[0];
+        self.road.locate(x, y).ok_or_else(|| {
+            given.site.err(
+                K::Unsatisfiable,
+                format!("expected the path's start on the plan's roads, found ({x:.2}, {y:.2}) off them"),
+            )
+        })
+    }
+}
