@@ -168,4 +168,24 @@ mod tests {
         assert_eq!(p.len(), 9, "{p:?}");
         assert!((p[1].0 - 2.0).abs() < TOL && (p[6].1 - 5.0 / 3.0).abs() < TOL);
     }
+
+    #[test]
+    fn a_smooth_paths_part_is_sampled_along_its_curve_with_its_time() {
+        // Two points on a line with its heading: the Hermite curve is the line, its Bézier
+        // parameter uniform in length (handles L/3). The part from 2.5 m to 7.5 m of the 10 m
+        // in 2 s, 1 m steps: 5 pieces, x = 2.5, 3.5, …, 7.5 m at 0.5, 0.7, …, 1.5 s.
+        let points = [(0.0, 0.0, 0.0), (10.0, 0.0, 0.0)];
+        let (p, t) = samples(&points, Some(&[0.0, 2.0]), true, (2.5, 7.5), 1.0);
+        let t = t.unwrap_or_default();
+        assert_eq!((p.len(), t.len()), (6, 6), "{p:?}");
+        for (k, ((x, y, _), t)) in p.iter().zip(&t).enumerate() {
+            let want = 2.5 + k as f64;
+            // The bisection finds the parameter to 1e-12; its arc length is integrated.
+            assert!(
+                (x - want).abs() < 1e-9 && y.abs() < 1e-9,
+                "{x} {y} vs {want}"
+            );
+            assert!((t - want / 5.0).abs() < 1e-9, "{t} vs {}", want / 5.0);
+        }
+    }
 }
