@@ -16,6 +16,7 @@ use super::motion::{
 };
 use super::planner::Planner;
 use super::route::{self, OnRoute};
+use super::runtime::speed_change_check;
 use super::speed_actions::Slot;
 use super::types::{Planned, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
@@ -284,19 +285,22 @@ impl Planner<'_> {
                                     "expected no acceleration(…) beside a speed relative to another actor in a phase that starts on a run-time condition, found one (the time the change takes at that rate depends on both speeds at the start)",
                                 ));
                             }
+                            let to = SpeedTarget::Relative {
+                                entity_ref: x,
+                                value: delta,
+                                speed_target_value_type: SpeedTargetValueType::Delta,
+                                continuous: false,
+                            };
+                            out.push(speed_change_check(
+                                target,
+                                (&m.name, &m.site),
+                                (to.clone(), DynamicsShape::Linear, len),
+                                name("check"),
+                            ));
                             out.push(Planned::with_phase(
                                 target,
                                 name("speed"),
-                                speed_action(
-                                    DynamicsShape::Linear,
-                                    len,
-                                    SpeedTarget::Relative {
-                                        entity_ref: x,
-                                        value: delta,
-                                        speed_target_value_type: SpeedTargetValueType::Delta,
-                                        continuous: false,
-                                    },
-                                ),
+                                speed_action(DynamicsShape::Linear, len, to),
                                 &m.site,
                             ));
                             continue;
@@ -341,7 +345,17 @@ impl Planner<'_> {
                                 )
                             }
                             None => {
-                                check_accel(m, (v1 - v0) / len)?;
+                                match t {
+                                    Some(_) => check_accel(m, (v1 - v0) / len)?,
+                                    // After a run-time start the engine checks the rate from
+                                    // the speed the actor has then (plan::runtime).
+                                    None => out.push(speed_change_check(
+                                        target,
+                                        (&m.name, &m.site),
+                                        (SpeedTarget::Absolute(v1), DynamicsShape::Linear, len),
+                                        name("check"),
+                                    )),
+                                }
                                 (
                                     speed_action(
                                         DynamicsShape::Linear,
@@ -388,7 +402,19 @@ impl Planner<'_> {
                         }
                         let a = self.acceleration_value(m, (t, len))?;
                         check_accel(m, a)?;
-                        let v0 = t.map_or(self.last_v[target], |t| self.track(target).at(t).1);
+                        let Some(t) = t else {
+                            // After a run-time start the speed the actor has is the engine's:
+                            // its AccelerationAction holds a from that speed until the
+                            // phase's Act stops (plan::runtime).
+                            out.push(self.start_acceleration(
+                                m,
+                                target,
+                                (a, len),
+                                name("acceleration"),
+                            ));
+                            continue;
+                        };
+                        let v0 = self.track(target).at(t).1;
                         let v1 = v0 + a * len;
                         check_speed(m, v1)?;
                         out.push(Planned {
@@ -402,9 +428,7 @@ impl Planner<'_> {
                             ),
                             site: m.site.clone(),
                         });
-                        if let Some(t) = t {
-                            self.track_mut(target).ramp(t, t + len, v1);
-                        }
+                        self.track_mut(target).ramp(t, t + len, v1);
                         self.last_v.insert(target.clone(), v1);
                     }
                     (ModKind::Position, At::Start | At::All)

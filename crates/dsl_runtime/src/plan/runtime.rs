@@ -20,6 +20,8 @@
 //! | `lateral(d, side_of/left_of/right_of: x, at: end, track: projected)` over a phase of duration T | the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked (`lateral_end`) |
 //! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all, start or end | the engine's RelativeAccelerationAction: x's acceleration ± a in every step (at: all, end), or x's over the first step held (at: start) (`acceleration_follow`) |
 //! | `change_speed(v)` at the rate of such an `acceleration(…)`, at: start or all | the engine's RelativeAccelerationAction toward v at that rate, failing when v is not reached within the phase (`acceleration_follow`) |
+//! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends |
+//! | `speed(v, at: end)`, `change_speed(v)` (or to another actor's speed) over a phase of duration T, `change_speed(v, duration)` | the engine's SpeedAction over T from the speed the actor has, beside the engine's check that its peak rate fits the vehicle's limit then (a failure: an error record and a failed run, not a stretched change) |
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
 //! | `keep_space_gap` / `keep_time_headway` without a known gap | the engine's LongitudinalDistanceAction keeping the value it measures at its start (`gap_actions`) |
 //!
@@ -33,15 +35,17 @@
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, SpeedGap, StateCheck,
-    Travel, TravelGoal,
+    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, SpeedGap,
+    SpeedTarget, StateCheck, Travel, TravelGoal,
 };
 
+use super::action_args::timed;
 use super::lateral;
 use super::motion::{check_speed, end_speed_mod, holds_speed, sinusoidal_over};
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
 use super::route::StartOnRoute;
+use super::speed_actions::acceleration;
 use super::types::{
     Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE,
 };
@@ -216,6 +220,31 @@ impl Planner<'_> {
         Ok(())
     }
 
+    /// The engine's `acceleration(a)` (alone, no speed target beside it) for `target` over a
+    /// phase of `len` s that starts on a run-time condition, as the action `name`: a step
+    /// AccelerationAction to `a`, so the actor accelerates at exactly a from the speed the
+    /// engine finds then until the phase's Act stops (at a known start the plan's linear
+    /// SpeedAction to v₀ + a·T, whose v₀ is the plan's: after a gap action or a
+    /// `change_acceleration` the speed the plan last knows is not the actor's). The plan
+    /// records v₀ + a·T from the speed it last knows, within 0 and the maximum (the
+    /// engine's action ends there, the vehicle stopping or at its top speed).
+    pub(super) fn start_acceleration(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        (a, len): (f64, f64),
+        name: String,
+    ) -> Planned {
+        let v1 = (self.last_v[target] + a * len).clamp(0.0, MAX_SPEED);
+        self.last_v.insert(target.to_string(), v1);
+        Planned::with_phase(
+            target,
+            name,
+            acceleration(Some(a), timed(DynamicsShape::Step, 0.0)),
+            &m.site,
+        )
+    }
+
     /// The engine's change of `target`'s offset in its lane to the one `m` (a `lateral(…, at:
     /// end)` without a lane change) asks for, over a phase of `len` s that starts on a run-time
     /// condition, as the action `name`: a sinusoidal LaneChangeAction over `len` to the
@@ -333,4 +362,23 @@ impl Planner<'_> {
             .filter_map(When::time)
             .fold(0.0, f64::max)
     }
+}
+
+/// The engine's check that a speed change to `to` of `shape` over `len` s, starting in a
+/// phase of `target` that starts on a run-time condition, fits the vehicle's acceleration
+/// limit from the speed the actor has then, as the action `name` (`what` names the
+/// modifier or action and `site` where it is written): the engine's SpeedAction would
+/// stretch a faster change in time; here it is an error record and a failed run instead.
+pub(super) fn speed_change_check(
+    target: &str,
+    (what, site): (&str, &Site),
+    (to, shape, len): (SpeedTarget, DynamicsShape, f64),
+    name: String,
+) -> Planned {
+    let check = StateCheck {
+        what: format!("{what}(…) at {}", site.at()),
+        speed_change: Some((to, shape, len)),
+        ..StateCheck::default()
+    };
+    Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), site)
 }

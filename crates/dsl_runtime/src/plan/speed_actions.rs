@@ -21,12 +21,13 @@
 use std::f64::consts::FRAC_PI_2;
 
 use scenario::{
-    ConditionGroup, DynamicsShape, LongitudinalAction, PrivateAction, SpeedTarget,
-    SpeedTargetValueType, StoryboardElementState, TransitionDynamics, Trigger,
+    ConditionGroup, DynamicsDimension, DynamicsShape, LongitudinalAction, PrivateAction,
+    SpeedTarget, SpeedTargetValueType, StoryboardElementState, TransitionDynamics, Trigger,
 };
 
 use super::action_args::{missing, number, positive, profile, rate, timed, Profile};
 use super::planner::Planner;
+use super::runtime::speed_change_check;
 use super::types::{Planned, When, MAX_ACCELERATION, MAX_SPEED};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{arg, Action, At, Invoke, ModKind, Phase};
@@ -121,7 +122,17 @@ impl Planner<'_> {
                 } else {
                     0.0
                 };
-                if peak_acc > MAX_ACCELERATION + 1e-9 {
+                let timed_at_run_time =
+                    t0.is_none() && dynamics.dynamics_dimension == DynamicsDimension::Time;
+                if timed_at_run_time {
+                    // The rate depends on the speed the actor has then: the engine's check.
+                    out.push(speed_change_check(
+                        target,
+                        (&inv.action, &p.site),
+                        (SpeedTarget::Absolute(v1), shape, span),
+                        name("check"),
+                    ));
+                } else if peak_acc > MAX_ACCELERATION + 1e-9 {
                     return Err(p.site.err(
                         K::Unsatisfiable,
                         format!("expected change_speed(…) within the vehicle's ±{MAX_ACCELERATION} m/s², found it needs {peak_acc:.2} m/s² to change from {v0:.2} m/s to {v1:.2} m/s"),
@@ -399,7 +410,7 @@ fn step_speed(target: SpeedTarget) -> PrivateAction {
 }
 
 /// An AccelerationAction that holds its target.
-fn acceleration(target: Option<f64>, dynamics: TransitionDynamics) -> PrivateAction {
+pub(super) fn acceleration(target: Option<f64>, dynamics: TransitionDynamics) -> PrivateAction {
     PrivateAction::Longitudinal(LongitudinalAction::Acceleration {
         target,
         dynamics,

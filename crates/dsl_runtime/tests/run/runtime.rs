@@ -401,6 +401,89 @@ fn change_acceleration_over_a_duration_after_an_until_starts_from_the_engines_ac
     );
 }
 
+/// runtime_acceleration_alone.osc's comment, by hand: 18 m/s at 5.35 s where the plan last
+/// knows 0 m/s; acceleration(1mpsps) over 2 s from there: 19 m/s half way, 20 m/s at the end,
+/// held after the phase.
+#[test]
+fn acceleration_alone_after_an_until_accelerates_from_the_speed_the_actor_has() {
+    let r = run("runtime_acceleration_alone", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.brake", 3.35, 5.35),
+            ("do.speed_up", 5.35, 7.35),
+            ("do.after", 7.35, 8.35),
+        ],
+    );
+    ego_speeds(
+        &r,
+        &[
+            (5.35, 18.0),
+            (5.85, 18.5),
+            (6.35, 19.0),
+            (7.35, 20.0),
+            (8.35, 20.0),
+        ],
+    );
+}
+
+/// runtime_speed_rate_engine.osc's comment, by hand: from the 18 m/s the engine has at 5.35 s
+/// (the plan knowing 0 m/s), 9 m/s² up over 2 s, then −9 m/s² over 1 s; both within 10 m/s²,
+/// so the engine's checks pass and nothing is stretched.
+#[test]
+fn speed_changes_after_an_until_run_from_the_engines_speed_within_the_limit() {
+    let r = run("runtime_speed_rate_engine", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.brake", 3.35, 5.35),
+            ("do.up", 5.35, 7.35),
+            ("do.down", 7.35, 8.35),
+        ],
+    );
+    ego_speeds(
+        &r,
+        &[
+            (5.35, 18.0),
+            (6.35, 27.0),
+            (7.35, 36.0),
+            (7.85, 31.5),
+            (8.35, 27.0),
+        ],
+    );
+}
+
+/// runtime_speed_rate_engine_fails.osc's comment, by hand: 18 → 29 m/s in 1 s is 11 m/s².
+#[test]
+fn a_speed_change_beyond_the_limit_after_an_until_is_an_error_record_and_a_failed_run() {
+    fails(
+        "runtime_speed_rate_engine_fails",
+        (
+            "expected 'ego''s speed from 18.000 to 29.000 m/s within 1.000 s at the vehicle's 10.000 m/s² or less (change_speed(…) at ",
+            "runtime_speed_rate_engine_fails.osc:21:13), found it needs 11.000 m/s² at t = 5.350 s",
+        ),
+        "do.jump/ego/1:check",
+        5.35,
+    );
+}
+
+/// actions/err_speed_after_acceleration.osc's comment, by hand: ego holds 12.8 m/s when the
+/// until ends; change_speed(0 m/s, duration: 1.25 s) then needs 12.8 / 1.25 = 10.24 m/s².
+#[test]
+fn a_speed_change_from_the_speed_after_change_acceleration_beyond_the_limit_fails_the_run() {
+    let name = "actions/err_speed_after_acceleration";
+    let lowered = super::support::lower(name, 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = super::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    let want = "expected 'ego''s speed from 12.800 to 0.000 m/s within 1.250 s at the vehicle's 10.000 m/s² or less (change_speed(…) at ";
+    let tail = "err_speed_after_acceleration.osc:26:9), found it needs 10.240 m/s² at t = ";
+    assert!(error.starts_with(want) && error.contains(tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert_eq!(records[0].1, "do.brake/ego/1:check");
+    assert_eq!(records[0].2, error);
+}
+
 #[test]
 fn a_speed_relative_to_another_actor_at_the_end_after_an_until_is_its_speed_then() {
     let r = run("runtime_speed_same_as", 0, None);

@@ -3,23 +3,28 @@
 //! OpenSCENARIO DSL 2.1 §8.9), which its plan cannot decide before the run. When the action
 //! starts, the actor's road position (the one measured at the step's start, as every trigger
 //! of the step sees it) must be in the lane, at the offset and at the distance to another
-//! entity it gives (or in the lane given relative to another entity's); otherwise it fails: an error record in the event log, and the run stops
+//! entity it gives (or in the lane given relative to another entity's), and a linear speed
+//! change starting with it must fit the vehicle's Performance, which SpeedAction would
+//! otherwise meet by stretching the change in time (`speed::least_time`); otherwise it fails: an error record in the event log, and the run stops
 //! with [`ErrorKind::CheckFailed`](crate::ErrorKind::CheckFailed).
 
 use opendrive::RoadPosition;
-use scenario::StateCheck;
+use scenario::{SourcePos, StateCheck};
+
+use super::speed;
 
 use crate::error::{Error, ErrorKind};
 use crate::store::World;
 use crate::world::lanes::lane_shift;
+use crate::world::shapes::peak_slope;
 use crate::EntityId;
 
-/// Checks `check` on `actor` at `time`.
+/// Checks `check` on `actor` at `time` (`pos`: where the check is written).
 pub(crate) fn start(
     world: &World,
     actor: EntityId,
     check: &StateCheck,
-    time: f64,
+    (time, pos): (f64, &SourcePos),
 ) -> Result<(), Error> {
     let e = world.entity(actor);
     let fail = |expected: String, found: String| {
@@ -30,6 +35,36 @@ pub(crate) fn start(
             time,
         })
     };
+    // The change must run as written: the SpeedAction would stretch a faster one in time.
+    if let (Some((target, shape, within)), Some(perf)) = (&check.speed_change, e.performance) {
+        let v1 = speed::target_speed(world, target, pos)?;
+        let least = speed::least_time(&perf, *shape, e.speed, v1);
+        if least > within + crate::tolerance::TIME {
+            let limit = if v1 >= e.speed {
+                perf.max_acceleration
+            } else {
+                perf.max_deceleration
+            };
+            return Err(fail(
+                format!(
+                    "'{}''s speed from {:.3} to {v1:.3} m/s within {within:.3} s at the vehicle's {:.3} m/s² or less",
+                    e.name,
+                    e.speed,
+                    limit.abs(),
+                ),
+                format!("it needs {:.3} m/s²", peak_slope(*shape) * (v1 - e.speed).abs() / within),
+            ));
+        }
+    }
+    let places = check.lane.is_some()
+        || check.lane_of.is_some()
+        || check.s.is_some()
+        || check.offset.is_some()
+        || check.gap.is_some()
+        || check.beside.is_some();
+    if !places {
+        return Ok(());
+    }
     let Some(at) = e.road_position.as_ref() else {
         return Err(fail(
             format!("'{}' on a road", e.name),

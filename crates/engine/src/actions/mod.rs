@@ -380,7 +380,7 @@ impl Host<'_> {
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Check(check) => {
-                check::start(self.world, actor, check, time)?;
+                check::start(self.world, actor, check, (time, pos))?;
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Longitudinal(l) => {

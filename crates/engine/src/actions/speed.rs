@@ -14,8 +14,8 @@
 //! A TransitionDynamics with followingMode `position` ignores these Performance limits.
 
 use scenario::{
-    DynamicsDimension, FollowingMode, Performance, SourcePos, SpeedTarget, SpeedTargetValueType,
-    TransitionDynamics,
+    DynamicsDimension, DynamicsShape, FollowingMode, Performance, SourcePos, SpeedTarget,
+    SpeedTargetValueType, TransitionDynamics,
 };
 
 use super::Part;
@@ -91,21 +91,7 @@ pub(crate) fn start(
     now: f64,
     pos: &SourcePos,
 ) -> Result<Part, Error> {
-    let target = match target {
-        SpeedTarget::Absolute(v) => Target::Fixed(*v),
-        SpeedTarget::Relative {
-            entity_ref: name,
-            value,
-            speed_target_value_type,
-            continuous,
-        } => Target::Relative {
-            entity: entity_ref(world, name, pos)?,
-            value: *value,
-            kind: *speed_target_value_type,
-            continuous: *continuous,
-        },
-        _ => return Err(Error::unsupported("this SpeedActionTarget", pos)),
-    };
+    let target = target_of(world, target, pos)?;
     let v0 = world.entity(actor).speed;
     let v1 = target.speed(world);
     // A relative target can overflow (a factor of 1e10 on 1e300 m/s): refused, as a
@@ -123,16 +109,7 @@ pub(crate) fn start(
         .then_some(world.entity(actor).performance)
         .flatten();
     if let (Span::Time(t), Some(perf)) = (span, performance) {
-        let limit = if v1 >= v0 {
-            perf.max_acceleration
-        } else {
-            perf.max_deceleration
-        }
-        .abs();
-        if limit > 0.0 {
-            let shortest = peak_slope(dynamics.dynamics_shape) * (v1 - v0).abs() / limit;
-            span = Span::Time(t.max(shortest));
-        }
+        span = Span::Time(t.max(least_time(&perf, dynamics.dynamics_shape, v0, v1)));
     }
     let mut state = SpeedState {
         performance,
@@ -151,6 +128,51 @@ pub(crate) fn start(
         state.start_speed = v1;
     }
     Ok(Part::Speed(state))
+}
+
+/// The speed `target` asks of an actor now (m/s), read as a SpeedAction starting now reads it.
+pub(crate) fn target_speed(
+    world: &World,
+    target: &SpeedTarget,
+    pos: &SourcePos,
+) -> Result<f64, Error> {
+    Ok(target_of(world, target, pos)?.speed(world))
+}
+
+/// The running form of `target`.
+fn target_of(world: &World, target: &SpeedTarget, pos: &SourcePos) -> Result<Target, Error> {
+    Ok(match target {
+        SpeedTarget::Absolute(v) => Target::Fixed(*v),
+        SpeedTarget::Relative {
+            entity_ref: name,
+            value,
+            speed_target_value_type,
+            continuous,
+        } => Target::Relative {
+            entity: entity_ref(world, name, pos)?,
+            value: *value,
+            kind: *speed_target_value_type,
+            continuous: *continuous,
+        },
+        _ => return Err(Error::unsupported("this SpeedActionTarget", pos)),
+    })
+}
+
+/// The least time `perf` lets a transition of `shape` from `v0` to `v1` take (s): its peak
+/// rate, max f′·|Δv|/T, within maxAcceleration (maxDeceleration when slowing); 0 without a
+/// limit.
+pub(crate) fn least_time(perf: &Performance, shape: DynamicsShape, v0: f64, v1: f64) -> f64 {
+    let limit = if v1 >= v0 {
+        perf.max_acceleration
+    } else {
+        perf.max_deceleration
+    }
+    .abs();
+    if limit > 0.0 {
+        peak_slope(shape) * (v1 - v0).abs() / limit
+    } else {
+        0.0
+    }
 }
 
 /// True unless the transition's followingMode is `position`, which follows the shape "exactly by

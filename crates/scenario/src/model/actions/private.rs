@@ -64,6 +64,11 @@ pub struct StateCheck {
     /// Another entity, the actor's t minus that entity's (m, road coordinates, reference
     /// points, positive when the actor is to its left), and the tolerance (m).
     pub beside: Option<(String, f64, f64)>,
+    /// A speed change of the given shape over the given time (s) to the target, starting with
+    /// the check (the SpeedAction beside it): its peak rate must fit the actor's Performance,
+    /// which would otherwise stretch it in time (ASAM OpenSCENARIO DSL 2.1 §8.9 `speed(…,
+    /// at: end)`, §8.8.2.12 `change_speed`, in a phase that starts on a run-time condition).
+    pub speed_change: Option<(SpeedTarget, DynamicsShape, f64)>,
 }
 
 /// A place along the road relative to another entity, at a distance that may depend on that
