@@ -535,6 +535,15 @@ pub(super) fn speed_action(shape: DynamicsShape, time: f64, target: SpeedTarget)
     })
 }
 
+/// An AccelerationAction that holds its target.
+pub(super) fn acceleration(target: Option<f64>, dynamics: TransitionDynamics) -> PrivateAction {
+    PrivateAction::Longitudinal(LongitudinalAction::Acceleration {
+        target,
+        dynamics,
+        ends_at_target: false,
+    })
+}
+
 pub(super) fn check_speed(m: &Modifier, v: f64) -> Result<(), Error> {
     if !(0.0..=MAX_SPEED).contains(&v) {
         return Err(m.site.err(

@@ -41,11 +41,10 @@ use scenario::{
 
 use super::action_args::timed;
 use super::lateral;
-use super::motion::{check_speed, end_speed_mod, holds_speed, sinusoidal_over};
+use super::motion::{acceleration, check_speed, end_speed_mod, holds_speed, sinusoidal_over};
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
 use super::route::StartOnRoute;
-use super::speed_actions::acceleration;
 use super::types::{
     Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE,
 };

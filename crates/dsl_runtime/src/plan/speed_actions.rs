@@ -26,6 +26,7 @@ use scenario::{
 };
 
 use super::action_args::{missing, number, positive, profile, rate, timed, Profile};
+use super::motion::acceleration;
 use super::planner::Planner;
 use super::runtime::speed_change_check;
 use super::types::{Planned, When, MAX_ACCELERATION, MAX_SPEED};
@@ -406,15 +407,6 @@ fn step_speed(target: SpeedTarget) -> PrivateAction {
     PrivateAction::Longitudinal(LongitudinalAction::Speed {
         dynamics: timed(DynamicsShape::Step, 0.0),
         target,
-    })
-}
-
-/// An AccelerationAction that holds its target.
-pub(super) fn acceleration(target: Option<f64>, dynamics: TransitionDynamics) -> PrivateAction {
-    PrivateAction::Longitudinal(LongitudinalAction::Acceleration {
-        target,
-        dynamics,
-        ends_at_target: false,
     })
 }
 
