@@ -29,12 +29,13 @@ use scenario::{
     MiscObjectCategory, Orientation, Pedestrian, PedestrianCategory, Performance, Position,
     PositionKind, Priority, Private, PrivateAction, Properties, ReferenceContext, RoadNetwork,
     Route, RouteStrategy, RoutingAction, Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget,
-    Story, Storyboard, TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
+    Story, Storyboard, StoryboardElementState, TransitionDynamics, Trigger, UserDefinedAction,
+    Vehicle, Waypoint,
 };
 
 use crate::plan::{Entity, HandlerPlan, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
 use crate::resolve::ActorKind;
-use crate::trigger::sim_time;
+use crate::trigger::{act_state, sim_time};
 
 /// Builds the scenario model of `plan`; `file` is the `.osc` path, `road` the OpenDRIVE file.
 pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenario {
@@ -145,9 +146,25 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             pos: pos.clone(),
         });
         // What the actors do when the phase ends: an Act that starts then (none for a phase
-        // that never ends).
+        // that never ends). An end the plan does not time starts it on the phase's Act having
+        // completed (the same step: its stop trigger is evaluated first), never on the end's
+        // own conditions, which may hold before the phase runs and are first sampled one
+        // step after it starts where the Act's stop trigger is concerned.
         if !ph.after.is_empty() {
-            if let Some(trigger) = trigger_of(&ph.end) {
+            let end = match &ph.end {
+                When::Dyn(_) => Some(Trigger {
+                    condition_groups: vec![ConditionGroup {
+                        conditions: vec![act_state(
+                            &ph.path,
+                            StoryboardElementState::CompleteState,
+                            0.0,
+                            pos.clone(),
+                        )],
+                    }],
+                }),
+                w => trigger_of(w),
+            };
+            if let Some(trigger) = end {
                 let path = format!("{}/end", ph.path);
                 acts.push(Act {
                     maneuver_groups: actor_groups(&path, &ph.after, &pos),

@@ -449,24 +449,36 @@ impl Planner<'_> {
                             match len.filter(|l| *l > 0.0) {
                                 Some(l) => {
                                     let n = name("position");
-                                    self.start_travel(m, target, mods, l, n, out)?;
+                                    self.start_travel(m, target, mods, l, n, out, after)?;
                                 }
                                 None => {
                                     let t = self.last_known();
                                     let (x, sign, d) = self.position_target(m, target, t)?;
-                                    if m.arg("distance").is_none() {
-                                        return Err(m.site.err(
-                                            K::Unsatisfiable,
-                                            "expected a distance in position(…, at: end) of a phase without a duration that starts on a run-time condition, found a time or none: the engine's condition that ends the phase measures a fixed distance (give a distance, or the phase a duration)",
-                                        ));
-                                    }
                                     if m.projected {
                                         return Err(m.site.err(
                                             K::Unsupported,
                                             "expected a phase duration for position(…, at: end, track: projected) in a phase that starts on a run-time condition, found none (the engine's condition that ends the phase measures the actual gap, not the one to the reference projected from its start)",
                                         ));
                                     }
-                                    let w = self.gap_reached(m, target, x.as_deref(), sign, d)?;
+                                    let w = match m.arg("distance") {
+                                        Some(_) => {
+                                            self.gap_reached(m, target, x.as_deref(), sign, d)?
+                                        }
+                                        // A time or the default gap: at x's speed as the
+                                        // engine measures it, from the side the actor
+                                        // starts on (plan::runtime_end).
+                                        None => {
+                                            match self.gap_watch(m, target, name("position"))? {
+                                                Some((check, w)) => {
+                                                    out.push(check);
+                                                    w
+                                                }
+                                                None => {
+                                                    self.gap_reached(m, target, None, sign, d)?
+                                                }
+                                            }
+                                        }
+                                    };
                                     derived = all_of(derived, Some(w));
                                 }
                             }
@@ -561,15 +573,33 @@ impl Planner<'_> {
                             ));
                         }
                         if t0.is_none() {
-                            // After a run-time start: the engine works out the profile then.
-                            let Some(l) = len.filter(|l| *l > 0.0) else {
-                                return Err(m.site.err(
-                                    K::Unsatisfiable,
-                                    "expected a phase duration for distance(…) after a run-time condition, found none (the moment d is travelled depends on the speed at the start, which the plan does not know)",
-                                ));
-                            };
+                            // After a run-time start: the engine works out the profile then,
+                            // or (no duration) measures d travelled from the start.
                             let n = name("distance");
-                            self.start_travel(m, target, mods, l, n, out)?;
+                            match len.filter(|l| *l > 0.0) {
+                                Some(l) => self.start_travel(m, target, mods, l, n, out, after)?,
+                                None => {
+                                    let d = m.arg("distance").map(Arg::number).transpose()?;
+                                    let Some(d) = d.filter(|d| *d >= 0.0) else {
+                                        return Err(m.site.err(
+                                            K::Value,
+                                            "expected a distance of 0 m or more in distance(…), found none",
+                                        ));
+                                    };
+                                    if let Some(q) = end_speed_mod(mods) {
+                                        return Err(q.site.err(
+                                            K::Unsatisfiable,
+                                            format!("expected a phase duration for a speed change beside distance(…) at {}, found none", m.site.at()),
+                                        ));
+                                    }
+                                    let (check, w) = self.distance_watch(m, target, d, n);
+                                    out.push(check);
+                                    derived = Some(match derived {
+                                        None => w,
+                                        Some(e) => e.or(w),
+                                    });
+                                }
+                            }
                             continue;
                         }
                         let t = need_t("distance(…)")?;

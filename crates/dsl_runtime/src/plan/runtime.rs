@@ -35,18 +35,18 @@
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, SpeedGap,
-    SpeedTarget, StateCheck, Travel, TravelGoal,
+    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, SpeedTarget,
+    StateCheck, Travel, TravelGoal,
 };
 
 use super::action_args::timed;
 use super::lateral;
 use super::motion::{acceleration, check_speed, end_speed_mod, holds_speed, sinusoidal_over};
-use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
 use super::route::StartOnRoute;
 use super::types::{
     Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE,
+    SPEED_TOLERANCE,
 };
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Arg, ModKind, Modifier, Val};
@@ -150,6 +150,12 @@ impl Planner<'_> {
     /// `name`: the two-halves profile from the state at the start, worked out by the engine
     /// then. It replaces the speed change the phase planned already (its end speed is the
     /// profile's).
+    ///
+    /// Beside `speed(v)` at: all the speed holds and no profile runs: the engine checks the
+    /// place (or the distance travelled since the start) at the phase end (`runtime_end`). An
+    /// end speed relative to another actor x is x's speed at the start (± the value), as the
+    /// goal takes x's motion, and the engine checks x's speed at the phase end.
+    #[allow(clippy::too_many_arguments)]
     pub(super) fn start_travel(
         &mut self,
         m: &Modifier,
@@ -158,14 +164,9 @@ impl Planner<'_> {
         len: f64,
         name: String,
         out: &mut Vec<Planned>,
+        after: &mut Vec<Planned>,
     ) -> Result<(), Error> {
         let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
-        if hold && ve_given.is_none() {
-            return Err(m.site.err(
-                K::Unsatisfiable,
-                format!("expected {}(…) beside a speed that may change, found speed(…) at: all: after a run-time condition the plan does not know the speed the phase starts with, so whether the constant speed meets it is unknown before the run", m.name),
-            ));
-        }
         let goal = if m.kind == ModKind::Distance {
             match m.arg("distance").map(Arg::number).transpose()? {
                 Some(d) if d >= 0.0 => TravelGoal::Distance(d),
@@ -185,20 +186,39 @@ impl Planner<'_> {
                 None => TravelGoal::RoadS(self.position_target(m, target, self.last_known())?.2),
             }
         };
-        let end_speed = match ve_given {
-            Some(q) => {
-                let (v, relative) = self.speed_value(q, None)?;
-                if relative.is_some() {
-                    return Err(q.site.err(
-                        K::Unsupported,
-                        format!("expected an absolute end speed beside {}(…) in a phase that starts on a run-time condition, found a speed relative to another actor (the engine works the profile out at the start, before that actor's speed at the end is known)", m.name),
-                    ));
+        if hold && ve_given.is_none() {
+            // The speed holds: what the constraint asks is the engine's check at the end.
+            let mut check = StateCheck::default();
+            match goal {
+                TravelGoal::Distance(d) => {
+                    out.push(self.mark_check(m, target, name.clone(), None));
+                    check.travelled = Some((name.clone(), d, POSITION_TOLERANCE));
                 }
-                check_speed(q, v)?;
-                self.last_v.insert(target.to_string(), v);
-                Some(v)
+                TravelGoal::RoadS(s) => check.s = Some((s, POSITION_TOLERANCE)),
+                TravelGoal::FromEntity(gap) => check.gap = Some((gap, POSITION_TOLERANCE)),
+                _ => {}
             }
-            None => None,
+            after.push(self.end_check(m, target, format!("{name}.end"), check));
+            return Ok(());
+        }
+        let (end_speed, end_speed_of) = match ve_given {
+            Some(q) => match self.speed_value(q, None)? {
+                (_, Some((x, delta))) => {
+                    // x's speed at the start, checked at the end.
+                    let check = StateCheck {
+                        speed: Some((Some(x.clone()), delta, SPEED_TOLERANCE)),
+                        ..StateCheck::default()
+                    };
+                    after.push(self.end_check(q, target, format!("{name}.speed"), check));
+                    (None, Some((x, delta)))
+                }
+                (v, None) => {
+                    check_speed(q, v)?;
+                    self.last_v.insert(target.to_string(), v);
+                    (Some(v), None)
+                }
+            },
+            None => (None, None),
         };
         // Drop the speed ramp this phase planned already (change_speed, speed(…, at: end)).
         out.retain(|a| !(a.entity == target && a.name.ends_with(":speed")));
@@ -211,6 +231,7 @@ impl Planner<'_> {
                 goal,
                 duration: len,
                 end_speed,
+                end_speed_of,
                 monotonous: m.monotonous,
                 limits: (MAX_SPEED, MAX_ACCELERATION),
             }))),
@@ -277,32 +298,6 @@ impl Planner<'_> {
             PrivateAction::Lateral(change),
             &m.site,
         ))
-    }
-
-    /// Where `position(…, ahead_of/behind: x)` puts `target` relative to x, as the engine
-    /// measures it at the moment (`None` without a reference): a distance, a time at x's speed
-    /// then, or without either the default (`place::default_distance`: 2 s at x's speed, at
-    /// least 10 m between the facing bumpers).
-    fn speed_gap(&self, m: &Modifier, target: &str) -> Result<Option<SpeedGap>, Error> {
-        let (x, ahead) = match (m.arg("ahead_of"), m.arg("behind")) {
-            (Some(e), _) => (self.entity_of(e)?, true),
-            (None, Some(e)) => (self.entity_of(e)?, false),
-            (None, None) => return Ok(None),
-        };
-        let (time, at_least) = match (m.arg("distance"), m.arg("time")) {
-            (Some(d), _) => (0.0, d.number()?),
-            (None, Some(t)) => (t.number()?, 0.0),
-            (None, None) => (
-                DEFAULT_TIME_GAP,
-                GROUP_GAP + self.facing_overhangs(target, &x, !ahead),
-            ),
-        };
-        Ok(Some(SpeedGap {
-            entity_ref: x,
-            ahead,
-            time,
-            at_least,
-        }))
     }
 
     /// The engine's check that `target` is on a named route (`along(…)` at `site`) at the

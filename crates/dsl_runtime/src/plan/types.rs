@@ -19,6 +19,10 @@ pub(crate) const MAX_ACCELERATION: f64 = 10.0;
 /// against a constant speed.
 pub const POSITION_TOLERANCE: f64 = 0.5;
 
+/// How far from a speed the engine may find an actor where it checks one at a phase end
+/// (m/s): the speed actions end on their targets exactly, so this only absorbs round-off.
+pub(crate) const SPEED_TOLERANCE: f64 = 0.01;
+
 /// How far from a `lateral(…)` offset a later phase may start (m).
 pub(crate) const LATERAL_TOLERANCE: f64 = 0.01;
 

@@ -725,3 +725,76 @@ fn a_lateral_gap_kept_after_an_until_is_the_one_the_engine_measures_then() {
     }
     assert!((r.at(5.35, "ego").s - 207.0).abs() < S_TOL);
 }
+
+/// runtime_distance_gap.osc's comment, by hand: from 3.35 s the engine measures distance(…)
+/// and position(time: 2s, behind: lead, at: end) from each phase's start (a mark), checks a
+/// distance and a position beside speed(v) at the phase end, and ends a travel at lead's speed
+/// at its start plus 2 m/s, checked at the end.
+#[test]
+fn distances_and_gaps_without_a_duration_after_an_until_are_measured_from_the_phase_start() {
+    let r = run("runtime_distance_gap", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.far", 3.35, 5.35),
+            ("do.gap", 5.35, 13.35),
+            ("do.hold", 13.35, 15.35),
+            ("do.keep", 15.35, 17.35),
+            ("do.match", 17.35, 19.35),
+        ],
+    );
+    let s = |t: f64| r.at(t, "ego").s;
+    let v = |t: f64| r.at(t, "ego").speed;
+    // do.far: 10 m/s from 3.35 s, 20 m.
+    assert!((s(4.35) - 177.0).abs() < S_TOL && (v(4.35) - 10.0).abs() < V_TOL);
+    assert!((s(5.35) - 187.0).abs() < S_TOL, "{:?}", r.at(5.35, "ego"));
+    // do.gap: 13 m/s, 16 m behind lead first reached at 13.35 s (0.05 m short at 13.30 s).
+    assert!((s(9.35) - 239.0).abs() < S_TOL && (v(9.35) - 13.0).abs() < V_TOL);
+    let (ego, lead) = (r.at(13.35, "ego"), r.at(13.35, "lead"));
+    assert!((ego.s - 291.0).abs() < S_TOL, "{ego:?}");
+    assert!((lead.s - ego.s - 15.8).abs() < S_TOL, "{lead:?}");
+    let short = r.at(13.3, "lead").s - r.at(13.3, "ego").s;
+    assert!((short - 16.05).abs() < S_TOL, "{short}");
+    // do.hold and do.keep: the checks at their ends ran and passed.
+    assert!((s(15.35) - 307.0).abs() < S_TOL && (v(15.35) - 8.0).abs() < V_TOL);
+    assert!((s(17.35) - 323.0).abs() < S_TOL);
+    for (check, t) in [
+        ("do.hold/ego/2:distance.end", 15.35),
+        ("do.keep/ego/2:position.end", 17.35),
+        ("do.match/ego/2:position.speed", 19.35),
+    ] {
+        let at = r
+            .when(check, "End")
+            .unwrap_or_else(|| panic!("{check} ran"));
+        assert!((at - t).abs() < T_TOL, "{check} at {at}");
+    }
+    // do.match: 8 → 2.8 → 10 m/s, ending 20 m behind lead.
+    assert!((v(18.35) - 2.8).abs() < V_TOL, "{}", v(18.35));
+    let (ego, lead) = (r.at(19.35, "ego"), r.at(19.35, "lead"));
+    assert!(
+        (ego.s - 334.85).abs() < S_TOL && (ego.speed - 10.0).abs() < V_TOL,
+        "{ego:?}"
+    );
+    assert!((lead.s - 354.8).abs() < S_TOL, "{lead:?}");
+}
+
+#[test]
+fn a_distance_or_a_speed_not_met_at_the_end_after_an_until_is_an_error_record_and_a_failed_run() {
+    let want = "expected 'ego' 20.000 m travelled since the phase start (within 0.5 m) (distance(…) at the phase end at ";
+    let tail = "runtime_end_distance_fails.osc:21:13), found 16.000 m at t = 5.350 s";
+    fails(
+        "runtime_end_distance_fails",
+        (want, tail),
+        "do.hold/ego/2:distance.end",
+        5.35,
+    );
+    let want = "expected 'ego' at 9.325 m/s ('lead''s 7.325 m/s +2.000 m/s) (within 0.01 m/s) (speed(…) at the phase end at ";
+    let tail = "runtime_end_speed_fails.osc:22:17), found it at 10.000 m/s at t = 5.350 s";
+    fails(
+        "runtime_end_speed_fails",
+        (want, tail),
+        "do.ego.match/ego/2:position.speed",
+        5.35,
+    );
+}

@@ -3,24 +3,77 @@
 //! OpenSCENARIO DSL 2.1 §8.9), which its plan cannot decide before the run. When the action
 //! starts, the actor's road position (the one measured at the step's start, as every trigger
 //! of the step sees it) must be in the lane, at the offset and at the distance to another
-//! entity it gives (or in the lane given relative to another entity's), and a linear speed
-//! change starting with it must fit the vehicle's Performance, which SpeedAction would
-//! otherwise meet by stretching the change in time (`speed::least_time`); otherwise it fails: an error record in the event log, and the run stops
-//! with [`ErrorKind::CheckFailed`](crate::ErrorKind::CheckFailed).
+//! entity it gives (or in the lane given relative to another entity's), at the speed it gives
+//! (absolute or another entity's plus a value) and that far from a mark noted before (its
+//! odometer), and a linear speed change starting with it must fit the vehicle's Performance,
+//! which SpeedAction would otherwise meet by stretching the change in time
+//! (`speed::least_time`); otherwise it fails: an error record in the event log, and the run
+//! stops with [`ErrorKind::CheckFailed`](crate::ErrorKind::CheckFailed). A check that holds
+//! then notes its mark, if it has one (the actor's odometer and, with a gap, its side of the
+//! place the gap asks for: `condition::mark`). The DSL runtime also runs checks at a phase's
+//! end, for a constraint that holds there only if the run happens to meet it.
 
 use opendrive::RoadPosition;
 use scenario::{SourcePos, StateCheck};
 
 use super::speed;
 
+use crate::condition::{place_error, Mark};
 use crate::error::{Error, ErrorKind};
 use crate::store::World;
 use crate::world::lanes::lane_shift;
 use crate::world::shapes::peak_slope;
 use crate::EntityId;
 
-/// Checks `check` on `actor` at `time` (`pos`: where the check is written).
+/// Checks `check` on `actor` at `time` (`pos`: where the check is written), then notes its
+/// mark if it has one.
 pub(crate) fn start(
+    world: &mut World,
+    actor: EntityId,
+    check: &StateCheck,
+    (time, pos): (f64, &SourcePos),
+) -> Result<(), Error> {
+    require(world, actor, check, (time, pos))?;
+    if let Some(mark) = &check.mark {
+        let e = world.entity(actor);
+        let gap_error = match &mark.gap {
+            Some(gap) => {
+                let other = world.id(&gap.entity_ref).map(|o| world.entity(o));
+                let place = match (e.road_position.as_ref(), other) {
+                    (Some(a), Some(o)) => o
+                        .road_position
+                        .as_ref()
+                        .and_then(|x| place_error(a, x, o.speed, gap)),
+                    _ => None,
+                };
+                // Without a place on x's road the gap can never be reached: an error now, not
+                // a phase that never ends.
+                let Some(place) = place else {
+                    return Err(Error::new(ErrorKind::CheckFailed {
+                        what: check.what.clone(),
+                        expected: format!("'{}' on the road of '{}'", e.name, gap.entity_ref),
+                        found: "it elsewhere".into(),
+                        time,
+                    }));
+                };
+                Some(place)
+            }
+            None => None,
+        };
+        let odometer = e.odometer;
+        world.marks.insert(
+            mark.name.clone(),
+            Mark {
+                odometer,
+                gap_error,
+            },
+        );
+    }
+    Ok(())
+}
+
+/// The requirements of `check` on `actor` at `time`.
+fn require(
     world: &World,
     actor: EntityId,
     check: &StateCheck,
@@ -150,6 +203,40 @@ pub(crate) fn start(
             return Err(fail(
                 format!(
                     "'{}' {dt:.3} m to the left of '{other}' across the road (within {tol} m)",
+                    e.name
+                ),
+                format!("{got:.3} m"),
+            ));
+        }
+    }
+    if let Some((other, value, tol)) = &check.speed {
+        let base = match other {
+            Some(o) => world
+                .id(o)
+                .map(|o| world.entity(o).speed)
+                .ok_or_else(|| fail(format!("'{o}' in the scenario"), "no such entity".into()))?,
+            None => 0.0,
+        };
+        let want = base + value;
+        if (e.speed - want).abs() > *tol {
+            let of = other.as_ref().map_or(String::new(), |o| {
+                format!(" ('{o}''s {base:.3} m/s {value:+.3} m/s)")
+            });
+            return Err(fail(
+                format!("'{}' at {want:.3} m/s{of} (within {tol} m/s)", e.name),
+                format!("it at {:.3} m/s", e.speed),
+            ));
+        }
+    }
+    if let Some((mark, d, tol)) = &check.travelled {
+        let Some(m) = world.marks.get(mark) else {
+            return Err(fail(format!("the mark '{mark}' noted"), "none".into()));
+        };
+        let got = e.odometer - m.odometer;
+        if (got - d).abs() > *tol {
+            return Err(fail(
+                format!(
+                    "'{}' {d:.3} m travelled since the phase start (within {tol} m)",
                     e.name
                 ),
                 format!("{got:.3} m"),

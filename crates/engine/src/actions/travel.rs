@@ -10,7 +10,8 @@
 //! with v_m = (4·Δs/T − v₀ − v_e)/2, so that ∫v dt = Δs. It runs as a SpeedProfileAction in
 //! `position` mode (strictly linear between the targets) with the targets (v_m, T/2) and
 //! (v_e, T/2), and ends with it. A goal relative to another entity is where that entity is
-//! at the end if it keeps the speed it has at the start, along its lane.
+//! at the end if it keeps the speed it has at the start, along its lane; an end speed relative
+//! to another entity is that entity's speed at the start (plus the value), likewise.
 //!
 //! A profile the limits forbid (v_m below 0 or above the maximum speed, a half's acceleration
 //! above the maximum, v_m outside [v₀, v_e] when monotonous) is never run another way: the
@@ -115,7 +116,17 @@ pub(crate) fn start(
             }
         }
     };
-    let ve = travel.end_speed.unwrap_or(v0);
+    let ve = match &travel.end_speed_of {
+        // Another entity's speed at the start (plus a value), as the goal takes its motion.
+        Some((other, delta)) => {
+            let x = world
+                .id(other)
+                .map(|x| world.entity(x))
+                .ok_or_else(|| Error::at("an entity of the scenario", format!("'{other}'"), pos))?;
+            x.speed + delta
+        }
+        None => travel.end_speed.unwrap_or(v0),
+    };
     let vm = (4.0 * ds / t - v0 - ve) / 2.0;
     let (max_speed, max_acc) = travel.limits;
     let profile = format!("{ds:.3} m in {t} s from {v0:.3} m/s: {v0:.3} → {vm:.3} → {ve:.3} m/s");

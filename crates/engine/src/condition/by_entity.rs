@@ -14,6 +14,7 @@ use scenario::{
 
 use super::angle::{own_angle, relative_angle, within};
 use super::clearance::{clear, Clearance};
+use super::mark::{gap_reached_since, traveled_since};
 use super::motion::{acceleration, relative_speed, speed, stands_still, DURATION_TOLERANCE};
 use super::road_state::{at_end_of_road, off_road};
 use super::rule::compare;
@@ -235,6 +236,13 @@ fn holds<C: ConditionContext + ?Sized>(
         } => {
             let r = reference(ctx, entity_ref)?;
             within(relative_angle(e, &r, *angle_type), *angle, *angle_tolerance)
+        }
+        EntityCondition::TraveledSinceMark { mark, value } => {
+            traveled_since(e, ctx.mark(mark), *value)
+        }
+        EntityCondition::GapReachedSinceMark { mark, gap } => {
+            let r = reference(ctx, &gap.entity_ref)?;
+            gap_reached_since(e, &r, ctx.mark(mark), gap)
         }
         _ => {
             return Err(ConditionErrorKind::Unsupported {

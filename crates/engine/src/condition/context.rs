@@ -54,6 +54,13 @@ pub trait ConditionContext: EntityQuery {
         None
     }
 
+    /// The mark `name` a state check noted (oscsim, no XML form: `scenario::StateCheck::mark`),
+    /// `None` before it ran. The default knows no marks.
+    fn mark(&self, name: &str) -> Option<super::Mark> {
+        let _ = name;
+        None
+    }
+
     /// Told after each evaluation of the condition written at `pos`: its raw value (false when
     /// it could not be evaluated) and, for a ByEntityCondition, the triggering entities for
     /// which its EntityCondition held, in order. The runtime keeps them for

@@ -19,6 +19,7 @@
 //! | `spacing` | Distance, RelativeDistance, ReachPosition, TimeHeadway, TimeToCollision |
 //! | `clearance` | RelativeClearance |
 //! | `angle` | Angle, RelativeAngle |
+//! | `mark` | oscsim's marks a state check notes: TraveledSinceMark, GapReachedSinceMark (no XML form) |
 //! | `by_entity` | TriggeringEntities any / all, dispatch of EntityCondition |
 //! | `evaluate` | `evaluate`: the front door |
 
@@ -29,6 +30,7 @@ mod clearance;
 mod context;
 mod error;
 mod evaluate;
+mod mark;
 mod measure;
 mod motion;
 mod registry;
@@ -42,6 +44,8 @@ mod target;
 pub use context::ConditionContext;
 pub use error::{ConditionError, ConditionErrorKind};
 pub use evaluate::evaluate;
+pub(crate) use mark::place_error;
+pub use mark::Mark;
 pub(crate) use measure::distance as measured_distance;
 pub use motion::{DURATION_TOLERANCE, STAND_STILL_SPEED};
 pub use registry::UserValueRegistry;

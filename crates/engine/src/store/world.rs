@@ -50,6 +50,8 @@ pub struct World {
     pub(crate) selections: super::selection::Selections,
     /// Environment set by EnvironmentActions (actions/environment.rs).
     pub(crate) environment: crate::world::EnvironmentState,
+    /// The marks state checks noted, by name (condition/mark.rs).
+    pub(crate) marks: HashMap<String, crate::condition::Mark>,
 }
 
 impl World {
@@ -74,6 +76,7 @@ impl World {
             seed: 0,
             selections: super::selection::Selections::default(),
             environment: crate::world::EnvironmentState::default(),
+            marks: HashMap::new(),
         }
     }
 
@@ -296,6 +299,10 @@ impl ConditionContext for ConditionWorld<'_> {
 
     fn storyboard(&self) -> StateView<'_> {
         self.storyboard
+    }
+
+    fn mark(&self, name: &str) -> Option<crate::condition::Mark> {
+        self.world.marks.get(name).copied()
     }
 
     fn user_defined_value(&self, name: &str) -> Option<Value> {

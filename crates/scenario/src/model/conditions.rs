@@ -152,6 +152,30 @@ pub enum EntityCondition {
         /// Frame.
         coordinate_system: Option<CoordinateSystem>,
     },
+    /// oscsim's distance travelled since a mark, a condition with no XML form (the DSL runtime
+    /// writes it for `distance(d)` in a phase without a duration that starts on a run-time
+    /// condition, ASAM OpenSCENARIO DSL 2.1 §8.9; the XML reader never does): the triggering
+    /// entity's odometer has advanced `value` m or more since the state check that noted the
+    /// mark ([`crate::StateCheck::mark`]) ran on it. False before that.
+    TraveledSinceMark {
+        /// The mark's name.
+        mark: String,
+        /// m.
+        value: f64,
+    },
+    /// oscsim's gap reached since a mark, a condition with no XML form (the DSL runtime writes
+    /// it for `position(time: t / neither, ahead_of/behind: x, at: end)` in a phase without a
+    /// duration that starts on a run-time condition; the XML reader never does): the
+    /// triggering entity's s minus x's, less the gap's offset at x's speed now
+    /// ([`crate::SpeedGap::offset`]), is 0 or of the sign opposite to the one it had when the
+    /// state check noted the mark (it has reached its place from the side it started on).
+    /// False before that, and while either is off x's road.
+    GapReachedSinceMark {
+        /// The mark's name.
+        mark: String,
+        /// The place relative to x.
+        gap: crate::SpeedGap,
+    },
 }
 
 /// How a distance-based condition measures (the attributes `freespace`,

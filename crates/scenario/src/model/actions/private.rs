@@ -69,6 +69,27 @@ pub struct StateCheck {
     /// which would otherwise stretch it in time (ASAM OpenSCENARIO DSL 2.1 §8.9 `speed(…,
     /// at: end)`, §8.8.2.12 `change_speed`, in a phase that starts on a run-time condition).
     pub speed_change: Option<(SpeedTarget, DynamicsShape, f64)>,
+    /// The actor's speed (m/s): another entity's speed at the moment (`None`: 0) plus the
+    /// value, and the tolerance (m/s).
+    pub speed: Option<(Option<String>, f64, f64)>,
+    /// A mark noted before on the actor, the distance (m) it must have travelled since (its
+    /// odometer), and the tolerance (m).
+    pub travelled: Option<(String, f64, f64)>,
+    /// A mark the check notes on the actor when it runs (after the requirements above hold):
+    /// its odometer, and with a gap its place relative to the gap's entity, for the conditions
+    /// [`crate::EntityCondition::TraveledSinceMark`] and
+    /// [`crate::EntityCondition::GapReachedSinceMark`] and a later check's `travelled`.
+    pub mark: Option<Mark>,
+}
+
+/// A mark a [`StateCheck`] notes (see [`StateCheck::mark`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mark {
+    /// Its name, unique in the scenario.
+    pub name: String,
+    /// The place relative to another entity whose side the mark notes: the actor's s minus the
+    /// entity's less [`SpeedGap::offset`] at the entity's speed then.
+    pub gap: Option<SpeedGap>,
 }
 
 /// A place along the road relative to another entity, at a distance that may depend on that
@@ -261,6 +282,9 @@ pub struct Travel {
     pub duration: f64,
     /// The speed at the end (m/s); `None`: the speed the actor has at the start.
     pub end_speed: Option<f64>,
+    /// The speed at the end as another entity's at the start plus a value (m/s), in place of
+    /// `end_speed`.
+    pub end_speed_of: Option<(String, f64)>,
     /// The speed only rises or only falls (v_m between v₀ and v_e).
     pub monotonous: bool,
     /// The highest speed (m/s) and the highest acceleration or deceleration (m/s²) the profile

@@ -1,0 +1,162 @@
+//! What the engine measures from the start of a phase that starts on a run-time condition, and
+//! what it checks at its end (ASAM OpenSCENARIO DSL 2.1 §8.9 `distance`, `position(…, at:
+//! end)`, `speed(…, at: end)`; §7.6: any operational semantics producing accepted traces is
+//! valid). The plan does not know the state such a phase starts with, so:
+//!
+//! | in a phase that starts on a run-time condition | done by |
+//! | --- | --- |
+//! | `distance(d)` without a duration | a state check at the start notes the actor's odometer (a mark); the phase ends when the engine measures d travelled since (TraveledSinceMark) |
+//! | `position(time: t / neither, ahead_of/behind: x, at: end)` without a duration | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
+//! | `position(…, at: end)`, `distance(d)` over a duration beside `speed(v)` at: all | the speed holds; the engine checks the place (or d travelled since the start's mark) at the phase end: a constraint that holds only if the run meets it is an error record if it does not |
+//! | `speed(same_as/faster_than/slower_than: x, at: end)` beside a TravelAction | the profile ends at x's speed at the start (± the value); the engine checks x's speed at the phase end |
+//!
+//! Checks at the end run in the phase's `…/end` Act, which starts when the phase's Act
+//! completes (`crate::lower`).
+
+use scenario::{
+    ConditionEdge, ConditionGroup, ConditionKind, EntityCondition, Mark, PrivateAction, SpeedGap,
+    StateCheck, Trigger, TriggeringEntities, TriggeringEntitiesRule,
+};
+
+use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
+use super::planner::Planner;
+use super::types::{Planned, When};
+use crate::error::Error;
+use crate::resolve::Modifier;
+
+impl Planner<'_> {
+    /// `distance(d)` of `target` in a phase without a duration that starts on a run-time
+    /// condition: the check `name` noting the mark at the start, and the end when the engine
+    /// measures `d` m travelled since.
+    pub(super) fn distance_watch(
+        &self,
+        m: &Modifier,
+        target: &str,
+        d: f64,
+        name: String,
+    ) -> (Planned, When) {
+        let end = since_mark(
+            m,
+            target,
+            format!("{target} {d} m from the phase start"),
+            EntityCondition::TraveledSinceMark {
+                mark: name.clone(),
+                value: d,
+            },
+        );
+        (self.mark_check(m, target, name, None), end)
+    }
+
+    /// `position(time: t / neither, ahead_of/behind: x, at: end)` of `target` in a phase
+    /// without a duration that starts on a run-time condition: the check `name` noting the
+    /// actor's side of the place at the start, and the end when the engine measures it there
+    /// or past it. `None` for a `position` with a distance or without a reference.
+    pub(super) fn gap_watch(
+        &self,
+        m: &Modifier,
+        target: &str,
+        name: String,
+    ) -> Result<Option<(Planned, When)>, Error> {
+        let Some(gap) = self.speed_gap(m, target)? else {
+            return Ok(None);
+        };
+        let end = since_mark(
+            m,
+            target,
+            format!(
+                "{target} at its place {} {}",
+                if gap.ahead { "ahead of" } else { "behind" },
+                gap.entity_ref
+            ),
+            EntityCondition::GapReachedSinceMark {
+                mark: name.clone(),
+                gap: gap.clone(),
+            },
+        );
+        Ok(Some((self.mark_check(m, target, name, Some(gap)), end)))
+    }
+
+    /// Where `position(…, ahead_of/behind: x)` puts `target` relative to x, as the engine
+    /// measures it at the moment (`None` without a reference): a distance, a time at x's speed
+    /// then, or without either the default (`place::default_distance`: 2 s at x's speed, at
+    /// least 10 m between the facing bumpers).
+    pub(super) fn speed_gap(&self, m: &Modifier, target: &str) -> Result<Option<SpeedGap>, Error> {
+        let (x, ahead) = match (m.arg("ahead_of"), m.arg("behind")) {
+            (Some(e), _) => (self.entity_of(e)?, true),
+            (None, Some(e)) => (self.entity_of(e)?, false),
+            (None, None) => return Ok(None),
+        };
+        let (time, at_least) = match (m.arg("distance"), m.arg("time")) {
+            (Some(d), _) => (0.0, d.number()?),
+            (None, Some(t)) => (t.number()?, 0.0),
+            (None, None) => (
+                DEFAULT_TIME_GAP,
+                GROUP_GAP + self.facing_overhangs(target, &x, !ahead),
+            ),
+        };
+        Ok(Some(SpeedGap {
+            entity_ref: x,
+            ahead,
+            time,
+            at_least,
+        }))
+    }
+
+    /// The state check `name` of `target` that only notes a mark (named `name`) when the
+    /// phase starts.
+    pub(super) fn mark_check(
+        &self,
+        m: &Modifier,
+        target: &str,
+        name: String,
+        gap: Option<scenario::SpeedGap>,
+    ) -> Planned {
+        let check = StateCheck {
+            what: format!("{}(…) at {}", m.name, m.site.at()),
+            mark: Some(Mark {
+                name: name.clone(),
+                gap,
+            }),
+            ..StateCheck::default()
+        };
+        Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), &m.site)
+    }
+
+    /// The engine's check of `target` at the phase's end, as the action `name` (for the
+    /// phase's `after` actions): `check`'s requirements, written as `m`'s.
+    pub(super) fn end_check(
+        &self,
+        m: &Modifier,
+        target: &str,
+        name: String,
+        check: StateCheck,
+    ) -> Planned {
+        let check = StateCheck {
+            what: format!("{}(…) at the phase end at {}", m.name, m.site.at()),
+            ..check
+        };
+        Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), &m.site)
+    }
+}
+
+/// The moment `condition` (on `target`, a mark's condition) holds, as the end of `m`'s phase.
+fn since_mark(m: &Modifier, target: &str, what: String, condition: EntityCondition) -> When {
+    When::Dyn(Trigger {
+        condition_groups: vec![ConditionGroup {
+            conditions: vec![scenario::Condition {
+                name: what,
+                // False before the mark is noted, so no edge is needed.
+                condition_edge: ConditionEdge::None,
+                delay: 0.0,
+                kind: ConditionKind::ByEntity {
+                    triggering_entities: TriggeringEntities {
+                        rule: TriggeringEntitiesRule::Any,
+                        entity_refs: vec![target.to_string()],
+                    },
+                    entity_condition: condition,
+                },
+                pos: m.site.pos.clone(),
+            }],
+        }],
+    })
+}
