@@ -179,7 +179,9 @@ fn describe<'a>(action: &'a PrivateAction, node: &mut Node<'a>) {
         PrivateAction::Longitudinal(LongitudinalAction::Speed { target, .. }) => {
             node.kind = "SpeedAction";
             node.sets.insert(Speed);
-            if let SpeedTarget::Relative { entity_ref, .. } = target {
+            if let SpeedTarget::Relative { entity_ref, .. }
+            | SpeedTarget::RelativeAtStart { entity_ref, .. } = target
+            {
                 node.needs.push((entity_ref, Speed));
             }
         }

@@ -270,26 +270,29 @@ impl Planner<'_> {
                         let read_at = if m.projected { t } else { t.map(|t| t + len) };
                         let (v1, relative) = self.speed_value(m, read_at)?;
                         if let (None, Some((x, delta))) = (t, relative) {
-                            if m.projected {
-                                return Err(m.site.err(
-                                    K::Unsupported,
-                                    format!("expected a phase start the plan knows for a speed relative to `{x}` at the end with track: projected, found one after a run-time condition (the engine's relative speed target follows `{x}`'s actual speed)"),
-                                ));
-                            }
                             // After a run-time start x's speed is the engine's: a linear
                             // SpeedAction to x's speed (plus the delta) as the engine reads it
-                            // each step, so it ends at x's speed at the phase end.
+                            // each step, so it ends at x's speed at the phase end; projected,
+                            // x's speed as the action starts, then fixed (oscsim's
+                            // RelativeAtStart target).
                             if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
                                 return Err(q.site.err(
                                     K::Unsupported,
                                     "expected no acceleration(…) beside a speed relative to another actor in a phase that starts on a run-time condition, found one (the time the change takes at that rate depends on both speeds at the start)",
                                 ));
                             }
-                            let to = SpeedTarget::Relative {
-                                entity_ref: x,
-                                value: delta,
-                                speed_target_value_type: SpeedTargetValueType::Delta,
-                                continuous: false,
+                            let to = if m.projected {
+                                SpeedTarget::RelativeAtStart {
+                                    entity_ref: x,
+                                    value: delta,
+                                }
+                            } else {
+                                SpeedTarget::Relative {
+                                    entity_ref: x,
+                                    value: delta,
+                                    speed_target_value_type: SpeedTargetValueType::Delta,
+                                    continuous: false,
+                                }
                             };
                             out.push(speed_change_check(
                                 target,
@@ -454,30 +457,21 @@ impl Planner<'_> {
                                 None => {
                                     let t = self.last_known();
                                     let (x, sign, d) = self.position_target(m, target, t)?;
-                                    if m.projected {
-                                        return Err(m.site.err(
-                                            K::Unsupported,
-                                            "expected a phase duration for position(…, at: end, track: projected) in a phase that starts on a run-time condition, found none (the engine's condition that ends the phase measures the actual gap, not the one to the reference projected from its start)",
-                                        ));
-                                    }
                                     let w = match m.arg("distance") {
-                                        Some(_) => {
+                                        Some(_) if !m.projected => {
                                             self.gap_reached(m, target, x.as_deref(), sign, d)?
                                         }
                                         // A time or the default gap: at x's speed as the
                                         // engine measures it, from the side the actor
-                                        // starts on (plan::runtime_end).
-                                        None => {
-                                            match self.gap_watch(m, target, name("position"))? {
-                                                Some((check, w)) => {
-                                                    out.push(check);
-                                                    w
-                                                }
-                                                None => {
-                                                    self.gap_reached(m, target, None, sign, d)?
-                                                }
+                                        // starts on; projected, to x projected from the
+                                        // start (plan::runtime_end).
+                                        _ => match self.gap_watch(m, target, name("position"))? {
+                                            Some((check, w)) => {
+                                                out.push(check);
+                                                w
                                             }
-                                        }
+                                            None => self.gap_reached(m, target, None, sign, d)?,
+                                        },
                                     };
                                     derived = all_of(derived, Some(w));
                                 }

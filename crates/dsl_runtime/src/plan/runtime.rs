@@ -204,12 +204,15 @@ impl Planner<'_> {
         let (end_speed, end_speed_of) = match ve_given {
             Some(q) => match self.speed_value(q, None)? {
                 (_, Some((x, delta))) => {
-                    // x's speed at the start, checked at the end.
-                    let check = StateCheck {
-                        speed: Some((Some(x.clone()), delta, SPEED_TOLERANCE)),
-                        ..StateCheck::default()
-                    };
-                    after.push(self.end_check(q, target, format!("{name}.speed"), check));
+                    // x's speed at the start; checked at the end unless projected (x as it
+                    // is at the start is what projected asks for).
+                    if !q.projected {
+                        let check = StateCheck {
+                            speed: Some((Some(x.clone()), delta, SPEED_TOLERANCE)),
+                            ..StateCheck::default()
+                        };
+                        after.push(self.end_check(q, target, format!("{name}.speed"), check));
+                    }
                     (None, Some((x, delta)))
                 }
                 (v, None) => {

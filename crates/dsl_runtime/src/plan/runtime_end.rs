@@ -47,10 +47,11 @@ impl Planner<'_> {
         (self.mark_check(m, target, name, None), end)
     }
 
-    /// `position(time: t / neither, ahead_of/behind: x, at: end)` of `target` in a phase
-    /// without a duration that starts on a run-time condition: the check `name` noting the
-    /// actor's side of the place at the start, and the end when the engine measures it there
-    /// or past it. `None` for a `position` with a distance or without a reference.
+    /// `position(time: t / neither, ahead_of/behind: x, at: end)` of `target` (any gap with
+    /// `track: projected`) in a phase without a duration that starts on a run-time condition:
+    /// the check `name` noting the actor's side of the place at the start, and the end when
+    /// the engine measures it there or past it (x projected from the start with `projected`).
+    /// `None` for a `position` without a reference.
     pub(super) fn gap_watch(
         &self,
         m: &Modifier,
@@ -116,6 +117,7 @@ impl Planner<'_> {
             mark: Some(Mark {
                 name: name.clone(),
                 gap,
+                projected: m.projected,
             }),
             ..StateCheck::default()
         };

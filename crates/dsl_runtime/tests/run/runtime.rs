@@ -798,3 +798,32 @@ fn a_distance_or_a_speed_not_met_at_the_end_after_an_until_is_an_error_record_an
         5.35,
     );
 }
+
+/// runtime_projected.osc's comment, by hand: after a run-time start, track: projected reads
+/// lead as projected from each phase's start while lead brakes.
+#[test]
+fn a_projected_gap_and_speed_after_an_until_read_the_reference_at_the_phase_start() {
+    let r = run("runtime_projected", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.ego.approach", 0.0, 3.35),
+            ("do.ego.close", 3.35, 11.35),
+            ("do.ego.match", 11.35, 13.35),
+        ],
+    );
+    let ego = |t: f64| r.at(t, "ego");
+    assert!((ego(7.35).s - 219.0).abs() < S_TOL, "{:?}", ego(7.35));
+    assert!((ego(11.35).s - 271.0).abs() < S_TOL, "{:?}", ego(11.35));
+    // lead braked: it is far less than 20 m ahead when the projected gap is reached.
+    assert!(r.at(11.35, "lead").s - ego(11.35).s < 7.0);
+    let lead_v = r.at(11.35, "lead").speed;
+    assert!((lead_v - 4.325).abs() < V_TOL, "{lead_v}");
+    assert!(
+        (ego(12.35).speed - 8.6625).abs() < V_TOL,
+        "{:?}",
+        ego(12.35)
+    );
+    assert!((ego(13.35).speed - 4.325).abs() < V_TOL, "{:?}", ego(13.35));
+    assert!((r.at(13.35, "lead").speed - 4.0).abs() < V_TOL);
+}

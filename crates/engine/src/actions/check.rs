@@ -13,12 +13,12 @@
 //! place the gap asks for: `condition::mark`). The DSL runtime also runs checks at a phase's
 //! end, for a constraint that holds there only if the run happens to meet it.
 
-use opendrive::RoadPosition;
+use opendrive::{Direction, RoadPosition};
 use scenario::{SourcePos, StateCheck};
 
 use super::speed;
 
-use crate::condition::{place_error, Mark};
+use crate::condition::{place_error, Mark, Projection};
 use crate::error::{Error, ErrorKind};
 use crate::store::World;
 use crate::world::lanes::lane_shift;
@@ -60,12 +60,39 @@ pub(crate) fn start(
             }
             None => None,
         };
+        // Projected: the gap's entity along its lane at its speed now.
+        let projection = match (&mark.gap, mark.projected) {
+            (Some(gap), true) => world
+                .id(&gap.entity_ref)
+                .map(|o| world.entity(o))
+                .and_then(|o| {
+                    let t = o.track.as_ref()?;
+                    Some(Projection {
+                        road: t.road_id.clone(),
+                        lane: t.lane_id,
+                        s: t.s,
+                        speed: o.speed,
+                        forward: t.direction == Direction::Forward,
+                        time,
+                    })
+                }),
+            _ => None,
+        };
+        if let (Some(gap), true, None) = (&mark.gap, mark.projected, &projection) {
+            return Err(Error::new(ErrorKind::CheckFailed {
+                what: check.what.clone(),
+                expected: format!("'{}' on a lane", gap.entity_ref),
+                found: "it off every lane".into(),
+                time,
+            }));
+        }
         let odometer = e.odometer;
         world.marks.insert(
             mark.name.clone(),
             Mark {
                 odometer,
                 gap_error,
+                projection,
             },
         );
     }

@@ -2,6 +2,8 @@
 //! actor's speed to an absolute target, or to a reference entity's speed plus a delta or times
 //! a factor, under a transition shape (see `shapes`). With `continuous="true"` a relative
 //! target keeps being followed after the transition, so the action never ends by itself.
+//! oscsim's `RelativeAtStart` target (no XML form) reads the reference's speed once, at the
+//! start, and is fixed from then on.
 //!
 //! A `distance` dimension is turned into the time in which the change covers that distance,
 //! T = 2·d / |v₀ + v₁| (see `distance_to_time`, also for a change of direction), so that a
@@ -154,6 +156,10 @@ fn target_of(world: &World, target: &SpeedTarget, pos: &SourcePos) -> Result<Tar
             kind: *speed_target_value_type,
             continuous: *continuous,
         },
+        SpeedTarget::RelativeAtStart {
+            entity_ref: name,
+            value,
+        } => Target::Fixed(world.entity(entity_ref(world, name, pos)?).speed + value),
         _ => return Err(Error::unsupported("this SpeedActionTarget", pos)),
     })
 }

@@ -238,11 +238,11 @@ fn holds<C: ConditionContext + ?Sized>(
             within(relative_angle(e, &r, *angle_type), *angle, *angle_tolerance)
         }
         EntityCondition::TraveledSinceMark { mark, value } => {
-            traveled_since(e, ctx.mark(mark), *value)
+            traveled_since(e, ctx.mark(mark).as_ref(), *value)
         }
         EntityCondition::GapReachedSinceMark { mark, gap } => {
             let r = reference(ctx, &gap.entity_ref)?;
-            gap_reached_since(e, &r, ctx.mark(mark), gap)
+            gap_reached_since(network, now, e, &r, ctx.mark(mark).as_ref(), gap)
         }
         _ => {
             return Err(ConditionErrorKind::Unsupported {

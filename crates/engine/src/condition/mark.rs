@@ -4,22 +4,52 @@
 //! it: `TraveledSinceMark` (the odometer's advance since the mark: `distance(d)` without a
 //! duration) and `GapReachedSinceMark` (the actor has reached its place relative to another
 //! entity from the side it was on at the mark: `position(time: t / neither, ahead_of/behind:
-//! x, at: end)` without a duration). Both are false before the mark is noted, so they may
+//! x, at: end)` without a duration; with `track: projected` x as projected from the mark on:
+//! along its lane at the speed it had then). Both are false before the mark is noted, so they may
 //! stand in any trigger.
 
-use opendrive::{Real, RoadPosition};
+use opendrive::{Real, RoadNetwork, RoadPosition};
 use scenario::SpeedGap;
 
-use crate::position::EntityView;
+use crate::position::{s_at_lane_distance, EntityView};
 
 /// What a state check noted on its actor.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct Mark {
     /// The actor's odometer then (m).
     pub odometer: Real,
     /// With a gap: the actor's place error relative to the gap's entity then
     /// ([`place_error`], m).
     pub gap_error: Option<Real>,
+    /// With a projected gap: the gap's entity as it was then, projected from then on.
+    pub projection: Option<Projection>,
+}
+
+/// An entity projected from a moment on (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track:
+/// projected`): along its lane at the speed it had then.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Projection {
+    /// Its road and lane then.
+    pub road: String,
+    /// Lane id.
+    pub lane: i32,
+    /// Its s then (m).
+    pub s: Real,
+    /// Its speed then (m/s).
+    pub speed: Real,
+    /// It drove along +s.
+    pub forward: bool,
+    /// The moment (s).
+    pub time: Real,
+}
+
+impl Projection {
+    /// Its s at `now` (`None` where its lane ends first).
+    fn s_at(&self, network: &RoadNetwork, now: Real) -> Option<Real> {
+        let d = (self.speed * (now - self.time)).abs();
+        let forward = self.forward == (self.speed >= 0.0);
+        s_at_lane_distance(network, &self.road, self.lane, self.s, d, forward).ok()
+    }
 }
 
 /// The actor's s minus the gap's entity's, less [`SpeedGap::offset`] at that entity's speed
@@ -35,24 +65,34 @@ pub(crate) fn place_error(
 }
 
 /// TraveledSinceMark: `e`'s odometer has advanced `value` m or more since `mark`.
-pub(super) fn traveled_since(e: &EntityView<'_>, mark: Option<Mark>, value: Real) -> bool {
+pub(super) fn traveled_since(e: &EntityView<'_>, mark: Option<&Mark>, value: Real) -> bool {
     mark.is_some_and(|m| e.odometer - m.odometer >= value)
 }
 
-/// GapReachedSinceMark: `e`'s place error relative to `other` is 0 or of the sign opposite to
-/// the one noted at `mark`.
+/// GapReachedSinceMark: `e`'s place error relative to `other` (or to its projection, if the
+/// mark has one) is 0 or of the sign opposite to the one noted at `mark`.
 pub(super) fn gap_reached_since(
+    network: &RoadNetwork,
+    now: Real,
     e: &EntityView<'_>,
     other: &EntityView<'_>,
-    mark: Option<Mark>,
+    mark: Option<&Mark>,
     gap: &SpeedGap,
 ) -> bool {
-    let (Some(m0), Some(a), Some(x)) = (
-        mark.and_then(|m| m.gap_error),
-        e.road_position,
-        other.road_position,
-    ) else {
+    let (Some(m), Some(a)) = (mark, e.road_position) else {
         return false;
     };
-    place_error(a, x, other.speed, gap).is_some_and(|now| now == 0.0 || (now > 0.0) != (m0 > 0.0))
+    let Some(m0) = m.gap_error else {
+        return false;
+    };
+    let now_error = match &m.projection {
+        Some(p) => p
+            .s_at(network, now)
+            .filter(|_| a.road_id == p.road)
+            .map(|s| a.s - s - gap.offset(p.speed)),
+        None => other
+            .road_position
+            .and_then(|x| place_error(a, x, other.speed, gap)),
+    };
+    now_error.is_some_and(|now| now == 0.0 || (now > 0.0) != (m0 > 0.0))
 }

@@ -45,7 +45,7 @@ pub use context::ConditionContext;
 pub use error::{ConditionError, ConditionErrorKind};
 pub use evaluate::evaluate;
 pub(crate) use mark::place_error;
-pub use mark::Mark;
+pub use mark::{Mark, Projection};
 pub(crate) use measure::distance as measured_distance;
 pub use motion::{DURATION_TOLERANCE, STAND_STILL_SPEED};
 pub use registry::UserValueRegistry;

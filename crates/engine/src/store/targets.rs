@@ -49,6 +49,11 @@ pub(crate) fn target_speed(
                 _ => v * value,
             }
         }
+        // Read when the controller takes it over: the action's start.
+        SpeedTarget::RelativeAtStart {
+            entity_ref: name,
+            value,
+        } => world.entity(entity_ref(world, name, pos)?).speed + value,
         _ => return Err(Error::unsupported("this SpeedActionTarget", pos)),
     };
     if v.is_finite() {

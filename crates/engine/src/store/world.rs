@@ -302,7 +302,7 @@ impl ConditionContext for ConditionWorld<'_> {
     }
 
     fn mark(&self, name: &str) -> Option<crate::condition::Mark> {
-        self.world.marks.get(name).copied()
+        self.world.marks.get(name).cloned()
     }
 
     fn user_defined_value(&self, name: &str) -> Option<Value> {

@@ -145,7 +145,9 @@ fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
     match p {
         PrivateAction::Longitudinal(l) => match l {
             LongitudinalAction::Speed {
-                target: SpeedTarget::Relative { entity_ref, .. },
+                target:
+                    SpeedTarget::Relative { entity_ref, .. }
+                    | SpeedTarget::RelativeAtStart { entity_ref, .. },
                 ..
             } => Some((entity_ref, "a RelativeTargetSpeed")),
             LongitudinalAction::LongitudinalDistance { entity_ref, .. } => {

@@ -90,6 +90,10 @@ pub struct Mark {
     /// The place relative to another entity whose side the mark notes: the actor's s minus the
     /// entity's less [`SpeedGap::offset`] at the entity's speed then.
     pub gap: Option<SpeedGap>,
+    /// With a gap: the gap's entity is taken as projected from the mark on (ASAM OpenSCENARIO
+    /// DSL 2.1 §8.9.1.1.3 `track: projected`): along its lane at the speed it has then, the
+    /// gap at that speed.
+    pub projected: bool,
 }
 
 /// A place along the road relative to another entity, at a distance that may depend on that
@@ -330,6 +334,16 @@ pub enum SpeedTarget {
         speed_target_value_type: SpeedTargetValueType,
         /// Keep following the reference's speed.
         continuous: bool,
+    },
+    /// oscsim's target read once, no XML form (the DSL runtime writes it for ASAM OpenSCENARIO
+    /// DSL 2.1 `speed(same_as/faster_than/slower_than: x, at: end, track: projected)` in a
+    /// phase that starts on a run-time condition, §8.9.1.1.3): the entity's speed when the
+    /// action starts plus `value` (m/s), then fixed, whatever the entity does after.
+    RelativeAtStart {
+        /// Reference entity.
+        entity_ref: String,
+        /// Delta, m/s.
+        value: f64,
     },
 }
 
