@@ -15,10 +15,11 @@
 //! the phase start, so x's t then), the engine's sinusoidal LaneChangeAction over the phase to
 //! a target beside x (`scenario::LaneChangeTarget::Beside`): the lane of the actor's road that
 //! holds x's t at the start plus the t asked, found when the action starts (none: an error
-//! record and a failed run). With `track: actual` it is an error: x's sideways moves in the
-//! phase are not known to the plan then, and no engine action follows another actor's t over
-//! a duration (1.x's LateralDistanceAction has none); so is a modifier that keeps the lane
-//! beside it (the engine finds the lane), or a lane change of the phase.
+//! record and a failed run). With `track: actual` (x's sideways moves in the phase are x's
+//! then) the engine's blend to a moving target (`Beside` with `follow`, engine
+//! `actions::lateral_follow`): t(τ) = (1 − f)·t₀ + f·(t_x(τ) + d), f the sinusoid over the
+//! phase, so the actor ends at x's t at the phase end plus d. A modifier that keeps the lane
+//! beside it (the engine finds the lane), or a lane change of the phase, is an error.
 
 use scenario::{DynamicsShape, LaneChangeTarget, LaneOffsetTarget, LateralAction, PrivateAction};
 
@@ -169,8 +170,9 @@ impl Planner<'_> {
 
     /// `m` beside x after a run-time start, over `len` s: with `track: projected` the engine's
     /// sinusoidal lane change to the lane holding x's t at the start plus the t `m` asks for
-    /// (`LaneChangeTarget::Beside`); with `track: actual`, or beside a modifier that keeps the
-    /// lane (`keeps`), an error.
+    /// (`LaneChangeTarget::Beside`); with `track: actual` the engine's sinusoidal blend to x's
+    /// t at every step plus that t (`Beside` with `follow`); beside a modifier that keeps the
+    /// lane (`keeps`) an error.
     fn beside_after_runtime_start(
         &self,
         m: &Modifier,
@@ -183,12 +185,6 @@ impl Planner<'_> {
         let Some((x, dt)) = self.beside_gap(m, target)? else {
             return Ok(());
         };
-        if !m.projected {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!("expected track: projected for lateral(…, at: end) beside `{x}` in a phase that starts on a run-time condition, found actual (`{x}`'s sideways moves in the phase are not the plan's to know then, and no engine action follows another actor's t over a duration; projected, the engine reads `{x}`'s t at the phase start)"),
-            ));
-        }
         if let Some(k) = keeps {
             return Err(m.site.err(
                 K::Unsupported,
@@ -208,6 +204,8 @@ impl Planner<'_> {
                 entity_ref: x,
                 t: dt,
                 what: format!("{}(…) at {}", m.name, m.site.at()),
+                // Actual: x's t at every step (engine actions::lateral_follow).
+                follow: !m.projected,
             },
         };
         out.push(Planned::with_phase(

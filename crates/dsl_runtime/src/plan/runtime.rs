@@ -17,7 +17,7 @@
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
 //! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal LaneChangeAction over T into the actor's own lane at that offset |
-//! | `lateral(d, side_of/left_of/right_of: x, at: end, track: projected)` over a phase of duration T | the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked (`lateral_end`) |
+//! | `lateral(d, side_of/left_of/right_of: x, at: end)` over a phase of duration T | projected: the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked; actual: the engine's sinusoidal blend to x's t at every step plus it (`lateral_end`) |
 //! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all, start or end | the engine's RelativeAccelerationAction: x's acceleration ± a in every step (at: all, end), or x's over the first step held (at: start) (`acceleration_follow`) |
 //! | `change_speed(v)` at the rate of such an `acceleration(…)`, at: start or all | the engine's RelativeAccelerationAction toward v at that rate, failing when v is not reached within the phase (`acceleration_follow`) |
 //! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends |

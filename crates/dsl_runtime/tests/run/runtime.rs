@@ -827,3 +827,34 @@ fn a_projected_gap_and_speed_after_an_until_read_the_reference_at_the_phase_star
     assert!((ego(13.35).speed - 4.325).abs() < V_TOL, "{:?}", ego(13.35));
     assert!((r.at(13.35, "lead").speed - 4.0).abs() < V_TOL);
 }
+
+/// runtime_lateral_follow.osc's comment, by hand: from 3.35 s ego follows npc's actual t
+/// (track: actual) while npc moves 1 m right, t = -5.25 + 2f - f².
+#[test]
+fn a_lateral_position_beside_a_moving_actor_after_an_until_follows_its_actual_t() {
+    let r = run("runtime_lateral_follow", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.shift", 3.35, 5.35),
+            ("do.after", 5.35, 6.35),
+        ],
+    );
+    let f = |t: f64| (1.0 - (std::f64::consts::PI * (t - 3.35) / 2.0).cos()) / 2.0;
+    for t in [3.35_f64, 3.85, 4.35, 4.85, 5.35, 5.85, 6.35] {
+        let f = f(t.min(5.35));
+        let (ego, npc) = (r.at(t, "ego"), r.at(t, "npc"));
+        let want = -5.25 + 2.0 * f - f * f;
+        assert!(
+            (ego.y - want).abs() < S_TOL,
+            "ego y({t}) = {} vs {want}",
+            ego.y
+        );
+        assert!((npc.y + 8.75 + f).abs() < S_TOL, "npc y({t}) = {}", npc.y);
+    }
+    assert!((r.at(4.35, "ego").y + 4.5).abs() < S_TOL);
+    assert!((r.at(5.35, "ego").y + 4.25).abs() < S_TOL);
+    assert_eq!(r.at(5.35, "ego").lane, -2);
+    assert_eq!(r.at(6.35, "ego").lane, -2);
+}

@@ -19,13 +19,14 @@
 use opendrive::LENGTH_EPSILON;
 use scenario::{LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics};
 
+use super::lateral_follow::{self, side_lane};
 use super::Part;
 use crate::error::{Error, ErrorKind};
 use crate::position::lane_at;
 use crate::store::targets::{entity_ref, target_lane};
 use crate::store::World;
 use crate::storyboard::ActionStatus;
-use crate::world::entity::EntityId;
+use crate::world::entity::{Entity, EntityId};
 use crate::world::lane_track::Blend;
 use crate::world::shapes::{progress, shape_value, span, Span};
 use scenario::DynamicsShape;
@@ -84,6 +85,16 @@ pub(crate) fn start(
             entity_ref,
             t,
             what,
+            follow: true,
+        } => {
+            let reference = (entity_ref.as_str(), *t, what.as_str());
+            return lateral_follow::start(world, actor, reference, dynamics.value, now, pos);
+        }
+        LaneChangeTarget::Beside {
+            entity_ref,
+            t,
+            what,
+            ..
         } => beside(world, actor, (entity_ref, *t, what), now, pos)?,
         _ => (
             target_lane(world, target, pos)?,
@@ -104,14 +115,7 @@ fn beside(
     now: f64,
     pos: &SourcePos,
 ) -> Result<(i32, f64), Error> {
-    let fail = |expected: String, found: String| {
-        Error::new(ErrorKind::CheckFailed {
-            what: what.to_string(),
-            expected,
-            found,
-            time: now,
-        })
-    };
+    let fail = check_failed(what, now);
     let x = world.entity(entity_ref(world, name, pos)?);
     let e = world.entity(actor);
     let (Some(tx), Some(ta)) = (&x.track, &e.track) else {
@@ -132,13 +136,7 @@ fn beside(
         .road(&ta.road_id)
         .ok_or_else(|| Error::at("the actor's road", format!("road '{}'", ta.road_id), pos))?;
     // A lane of the actor's side of the road (its direction of travel), holding t.
-    let inside = lane_at(road, ta.s, t).filter(|(lane, offset)| {
-        lane.signum() == ta.lane_id.signum()
-            && road
-                .lane_span(*lane, ta.s)
-                .is_ok_and(|sp| offset.abs() <= sp.width() / 2.0 + LENGTH_EPSILON)
-    });
-    inside.ok_or_else(|| {
+    side_lane(road, ta, t).ok_or_else(|| {
         fail(
             format!(
                 "a driving lane of road {} at t = {t:.3} m, s = {:.3} m ({dt:.3} m from '{name}')",
@@ -261,13 +259,7 @@ pub(crate) fn step(
     dt: f64,
 ) -> ActionStatus {
     let e = world.entity_mut(actor);
-    // The speed the default controller moves with in this step (controller::default).
-    let speed = if e.lateral_first {
-        e.start_speed
-    } else {
-        e.speed
-    }
-    .abs();
+    let speed = step_speed(e);
     if let Span::Distance(d) = s.span {
         if let Some(f) = s.foreseen.take() {
             // The path the controller drove (odometer), along the road at the mean share of
@@ -321,6 +313,29 @@ pub(crate) fn step(
         };
     }
     ActionStatus::Running
+}
+
+/// The failure of the constraint `what` at `time`: an error record and a failed run, from the
+/// state expected and the state found.
+pub(super) fn check_failed(what: &str, time: f64) -> impl Fn(String, String) -> Error + '_ {
+    move |expected, found| {
+        Error::new(ErrorKind::CheckFailed {
+            what: what.to_string(),
+            expected,
+            found,
+            time,
+        })
+    }
+}
+
+/// The speed the default controller moves `e` with in this step (controller::default).
+pub(super) fn step_speed(e: &Entity) -> f64 {
+    if e.lateral_first {
+        e.start_speed
+    } else {
+        e.speed
+    }
+    .abs()
 }
 
 /// The part along the road of a step of `length` m of a distance span `d`, from the lateral

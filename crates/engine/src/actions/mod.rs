@@ -19,6 +19,7 @@ mod environment;
 mod follow_trajectory;
 mod lane_change;
 mod lane_offset;
+mod lateral_follow;
 mod override_controller;
 pub(crate) mod parameter;
 mod relative_acceleration;
@@ -62,6 +63,7 @@ pub(crate) enum Part {
     RelativeAcceleration(relative_acceleration::RelativeAccelerationState),
     Profile(speed_profile::ProfileState),
     Lateral(lane_change::LateralState),
+    LateralFollow(lateral_follow::FollowState),
     LongitudinalDistance(distance::LongitudinalState),
     LateralDistance(distance::LateralState),
     Trajectory(follow_trajectory::TrajectoryState),
@@ -128,14 +130,15 @@ impl ActionTable {
     }
 
     /// Stage 2: advances every running part by one step from `now` over `dt`, in slot order;
-    /// the RelativeAccelerationActions last, so that they read their references' speeds at
-    /// the step's end (relative_acceleration.rs). Returns the actions that failed in the step
-    /// (their names and errors), which stop the run.
+    /// the RelativeAccelerationActions and the lane changes beside a moving entity last, so
+    /// that they read their references' speeds and lateral positions at the step's end
+    /// (relative_acceleration.rs, lateral_follow.rs). Returns the actions that failed in the
+    /// step (their names and errors), which stop the run.
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) -> Vec<(String, Error)> {
         let mut failures = Vec::new();
         self.synchronize_along_trajectories();
         let mut live = std::mem::take(&mut self.live);
-        // The second pass only where a first one met a RelativeAccelerationAction: most steps
+        // The second pass only where a first one met a part that follows: most steps
         // have none, and the stage walks every running action once.
         let mut deferred = false;
         for following in [false, true] {
@@ -146,7 +149,8 @@ impl ActionTable {
                 let slot = &mut self.slots[index as usize];
                 let id = ActionId(index);
                 for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
-                    let relative = matches!(part, Part::RelativeAcceleration(_));
+                    let relative =
+                        matches!(part, Part::RelativeAcceleration(_) | Part::LateralFollow(_));
                     deferred |= relative;
                     if relative == following {
                         if let Some(e) = step_part(world, actor, id, part, now, dt) {
@@ -194,6 +198,7 @@ fn step_part(
         Part::RelativeAcceleration(s) => relative_acceleration::step(world, actor, s, now, dt),
         Part::Profile(s) => speed_profile::step(world, actor, s, now, dt),
         Part::Lateral(s) => lane_change::step(world, actor, s, now, dt),
+        Part::LateralFollow(s) => lateral_follow::step(world, actor, s, now, dt),
         Part::LongitudinalDistance(s) => distance::step_longitudinal(world, actor, s, dt),
         Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
         Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
@@ -248,7 +253,9 @@ impl ActionTable {
 /// trajectory hands the actor back to the default controller where it stands.
 fn interrupt(world: &mut World, actor: EntityId, part: &mut Part) {
     match part {
-        Part::Lateral(_) | Part::LateralDistance(_) => world.keep_lateral_position(actor),
+        Part::Lateral(_) | Part::LateralFollow(_) | Part::LateralDistance(_) => {
+            world.keep_lateral_position(actor)
+        }
         Part::Trajectory(_) => world.release_to_road(actor, false),
         _ => {}
     }
@@ -770,6 +777,7 @@ pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> Action
             Part::Acceleration(s) => s.completes_by(step_end),
             Part::Profile(s) => s.completes_by(step_end),
             Part::Lateral(s) => s.completes_by(step_end),
+            Part::LateralFollow(s) => s.completes_by(step_end),
             Part::Trajectory(s) => s.completes_by(step_end),
             Part::Appearance(s) => s.completes_by(step_end),
             _ => false,

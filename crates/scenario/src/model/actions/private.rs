@@ -421,6 +421,9 @@ pub enum LaneChangeTarget {
         t: f64,
         /// What asked for it (for the error record).
         what: String,
+        /// Follow the reference's t at every step (its actual moves over the transition's
+        /// time, oscsim's lane change beside a moving entity), not only at the start.
+        follow: bool,
     },
 }
 

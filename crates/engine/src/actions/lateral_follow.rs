@@ -1,0 +1,221 @@
+//! oscsim's lane change beside a moving entity (`scenario::LaneChangeTarget::Beside` with
+//! `follow`, no XML form): the OpenSCENARIO DSL runtime's `lateral(d, side_of/left_of/right_of:
+//! x, at: end, track: actual)` over a phase of duration T that starts on a run-time condition
+//! (ASAM OpenSCENARIO DSL 2.1 §8.9 `lateral`, §8.9.1.1.3: with `actual` "the vehicle reacts to
+//! the behavior of the referenced vehicle"). No 1.x action follows another entity's t over a
+//! duration: a LateralDistanceAction has none, a LaneChangeAction's target is read at its start.
+//!
+//! The actor's t over the phase is a sinusoidal blend from its own t at the start, t₀, to the
+//! target t_x(τ) + d, where x's t moves: t(τ) = (1 − f)·t₀ + f·(t_x(τ) + d), f = (1 −
+//! cos(π·τ/T))/2. At τ = T it is x's t then plus d exactly, and a still x gives the sinusoidal
+//! lane change of the projected form. Each step the part runs after every other action (the
+//! second pass of the action stage, as the RelativeAccelerationAction), so x's own lateral
+//! action has set where x's lane track puts x at the step's end, and that is the t_x(τ) the
+//! blend reads: no step of lag. The target is written on the actor's lane track as the lane of
+//! its side of the road holding it and the offset from that lane's centre (past the outermost
+//! lane, that lane and a larger offset), so the default controller's blend of the two lanes
+//! gives t(τ); its slope, for the heading, is the blend's rate plus f times x's lateral speed.
+//! x off the actor's road, or no driving lane at the target when the action starts, fails it:
+//! an error record and a failed run.
+
+use opendrive::{Road, LENGTH_EPSILON};
+use scenario::{DynamicsShape, SourcePos};
+
+use super::lane_change::{check_failed, step_speed};
+use super::Part;
+use crate::error::Error;
+use crate::position::lane_at;
+use crate::store::targets::entity_ref;
+use crate::store::World;
+use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
+use crate::world::lane_track::{Blend, LaneTrack};
+use crate::world::shapes::shape_value;
+
+/// A running lane change beside a moving entity on one actor.
+#[derive(Debug, Clone)]
+pub(crate) struct FollowState {
+    /// The entity followed.
+    entity: EntityId,
+    /// The actor's t minus the entity's at the end (m, + left).
+    dt: f64,
+    /// The duration T (s).
+    duration: f64,
+    start_time: f64,
+    /// The actor's t at the start (m).
+    t0: f64,
+    /// The target at the previous step's end (m): x's lateral speed is its change.
+    last_target: f64,
+}
+
+impl FollowState {
+    /// True when the blend reaches its end by `t`.
+    pub(crate) fn completes_by(&self, t: f64) -> bool {
+        t - self.start_time >= self.duration - crate::tolerance::TIME
+    }
+}
+
+/// Starts following `name` at `dt` from it over `duration` s on `actor` at `now`.
+pub(crate) fn start(
+    world: &mut World,
+    actor: EntityId,
+    (name, dt, what): (&str, f64, &str),
+    duration: f64,
+    now: f64,
+    pos: &SourcePos,
+) -> Result<Part, Error> {
+    // Over a time only (the DSL runtime gives the phase's duration).
+    if !(duration > 0.0 && duration.is_finite()) {
+        return Err(Error::at(
+            "a duration above 0 s",
+            format!("{duration} s"),
+            pos,
+        ));
+    }
+    let fail = check_failed(what, now);
+    let x = entity_ref(world, name, pos)?;
+    let target = target_t(world, actor, x, dt).map_err(|(e, f)| fail(e, f))?;
+    let e = world.entity(actor);
+    let Some(ta) = &e.track else {
+        return Err(fail(
+            format!("'{}' on a lane", e.name),
+            "it off every road".into(),
+        ));
+    };
+    let road = world.network.road_at(ta.road);
+    if side_lane(road, ta, target).is_none() {
+        return Err(fail(
+            format!(
+                "a driving lane of road {} at t = {target:.3} m, s = {:.3} m ({dt:.3} m from '{name}')",
+                ta.road_id, ta.s
+            ),
+            "none".into(),
+        ));
+    }
+    let (from_lane, from_offset) = lane_at(road, ta.s, ta.t).unwrap_or((ta.lane_id, ta.offset));
+    let t0 = ta.t;
+    let net = world.network.clone();
+    let e = world.entity_mut(actor);
+    if let Some(track) = &mut e.track {
+        aim(net.road_at(track.road), track, target);
+        track.blend = Some(Blend {
+            from_lane,
+            from_offset,
+            weight: 0.0,
+            weight_per_m: 0.0,
+        });
+    }
+    Ok(Part::LateralFollow(FollowState {
+        entity: x,
+        dt,
+        duration,
+        start_time: now,
+        t0,
+        last_target: target,
+    }))
+}
+
+/// Sets the blend for the step's end, `now + dt`, towards x's t there plus the distance asked.
+pub(crate) fn step(
+    world: &mut World,
+    actor: EntityId,
+    s: &mut FollowState,
+    now: f64,
+    dt: f64,
+) -> ActionStatus {
+    let Ok(target) = target_t(world, actor, s.entity, s.dt) else {
+        // x left the actor's road: the blend holds its last target.
+        return ActionStatus::Running;
+    };
+    let p = ((now + dt - s.start_time) / s.duration).min(1.0);
+    let (f, df) = shape_value(DynamicsShape::Sinusoidal, p);
+    let net = world.network.clone();
+    let e = world.entity_mut(actor);
+    let speed = step_speed(e);
+    let Some(track) = &mut e.track else {
+        return ActionStatus::Ended;
+    };
+    aim(net.road_at(track.road), track, target);
+    let x_rate = if dt > 0.0 {
+        (target - s.last_target) / dt
+    } else {
+        0.0
+    };
+    s.last_target = target;
+    if p >= 1.0 {
+        track.blend = None;
+        return ActionStatus::Ended;
+    }
+    // The lateral speed of t(τ) = (1 − f)·t₀ + f·target: f′/T·(target − t₀) + f·target′.
+    let lateral = df / s.duration * (target - s.t0) + f * x_rate;
+    let sin = if speed * dt > LENGTH_EPSILON {
+        (lateral / speed).clamp(-1.0, 1.0)
+    } else {
+        0.0
+    };
+    if let Some(b) = &mut track.blend {
+        b.weight = f;
+        let span = target - s.t0;
+        b.weight_per_m = if span.abs() > LENGTH_EPSILON {
+            sin.asin().tan() / span
+        } else {
+            0.0
+        };
+    }
+    ActionStatus::Running
+}
+
+/// x's t where its lane track puts it at the step's end (its blend, if it has one), plus `dt`;
+/// an error (expected, found) when x is off the actor's road.
+fn target_t(world: &World, actor: EntityId, x: EntityId, dt: f64) -> Result<f64, (String, String)> {
+    let (a, o) = (world.entity(actor), world.entity(x));
+    let (Some(ta), Some(tx)) = (&a.track, &o.track) else {
+        return Err((
+            format!("'{}' and '{}' on a lane", a.name, o.name),
+            "one of them off every road".into(),
+        ));
+    };
+    if ta.road_id != tx.road_id {
+        return Err((
+            format!("'{}' on road {} beside '{}'", o.name, ta.road_id, a.name),
+            format!("it on road {}", tx.road_id),
+        ));
+    }
+    let road = world.network.road_at(tx.road);
+    let center = |lane: i32| road.lane_span(lane, tx.s).map(|sp| sp.center()).ok();
+    let to = center(tx.lane_id).map_or(tx.t, |c| c + tx.offset);
+    let t = match &tx.blend {
+        Some(b) => match center(b.from_lane) {
+            Some(c) => (1.0 - b.weight) * (c + b.from_offset) + b.weight * to,
+            None => to,
+        },
+        None => to,
+    };
+    Ok(t + dt)
+}
+
+/// The lane of `track`'s side of `road` holding `t` at its s, and the offset there.
+pub(super) fn side_lane(road: &Road, track: &LaneTrack, t: f64) -> Option<(i32, f64)> {
+    lane_at(road, track.s, t).filter(|(lane, offset)| {
+        lane.signum() == track.lane_id.signum()
+            && road
+                .lane_span(*lane, track.s)
+                .is_ok_and(|sp| offset.abs() <= sp.width() / 2.0 + LENGTH_EPSILON)
+    })
+}
+
+/// Writes target `t` on `track`: the lane of its side holding it and the offset, else its
+/// lane and the offset from that lane's centre.
+fn aim(road: &Road, track: &mut LaneTrack, t: f64) {
+    match side_lane(road, track, t) {
+        Some((lane, offset)) => {
+            track.lane_id = lane;
+            track.offset = offset;
+        }
+        None => {
+            if let Ok(sp) = road.lane_span(track.lane_id, track.s) {
+                track.offset = t - sp.center();
+            }
+        }
+    }
+}
