@@ -25,9 +25,11 @@
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
 //! | `keep_space_gap` / `keep_time_headway` without a known gap | the engine's LongitudinalDistanceAction keeping the value it measures at its start (`gap_actions`) |
 //!
-//! The engine measures lanes and s on the road the actor is on, so on a plan over several
-//! roads (`crate::road`) the lane and position checks are errors: the road the actor is on at
-//! a run-time start is not known before the run.
+//! On a plan over several roads (`crate::road`) the checks name the plan's roads with the
+//! plan's s at each start (`StateCheck::roads`): the engine takes the lane on whichever of
+//! them the actor is on (their lane ids are the same) and measures s and gaps in the plan's s.
+//! A TravelAction to a place there stays an error (the engine's profile measures along the
+//! road the actor is on).
 //!
 //! Lanes are numbered (and lane widths taken) where the plan last knows the actor: a road whose
 //! lanes change between there and the run-time start may number them otherwise. A gap that
@@ -66,8 +68,9 @@ impl Planner<'_> {
             what,
             ..StateCheck::default()
         };
-        if matches!(m.kind, ModKind::Lane | ModKind::Position) && self.road.ids().len() > 1 {
-            return Err(self.several_roads(m));
+        if self.road.ids().len() > 1 {
+            // The engine measures along the plan's roads (their lane ids are the same).
+            check.roads = self.road.starts();
         }
         match m.kind {
             ModKind::Lane => {

@@ -21,7 +21,7 @@ use scenario::{
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
 use super::types::{Planned, When};
-use crate::error::Error;
+use crate::error::{Error, ErrorKind as K};
 use crate::resolve::Modifier;
 
 impl Planner<'_> {
@@ -61,6 +61,12 @@ impl Planner<'_> {
         let Some(gap) = self.speed_gap(m, target)? else {
             return Ok(None);
         };
+        if self.road.ids().len() > 1 {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!("expected position(…, at: end) without a distance or with track: projected in a phase without a duration that starts on a run-time condition on a plan over one road, found roads {} (the engine measures that gap on the road the actors are on)", self.road.ids().join(", ")),
+            ));
+        }
         let end = since_mark(
             m,
             target,

@@ -151,10 +151,33 @@ fn require(
             "it off every road".into(),
         ));
     };
+    // Where along the plan's roads (a road's s plus its start), or the road's own s.
+    let along = |p: &RoadPosition| {
+        if check.roads.is_empty() {
+            return Some(p.s);
+        }
+        check
+            .roads
+            .iter()
+            .find(|(id, _)| *id == p.road_id)
+            .map(|(_, start)| start + p.s)
+    };
+    let plan_roads = || {
+        let ids: Vec<&str> = check.roads.iter().map(|(id, _)| id.as_str()).collect();
+        format!("one of roads {}", ids.join(", "))
+    };
     if let Some((road, lane)) = &check.lane {
-        if at.road_id != *road || at.lane_id != *lane {
+        let on_road = match check.roads.is_empty() {
+            true => at.road_id == *road,
+            false => along(at).is_some(),
+        };
+        if !on_road || at.lane_id != *lane {
+            let of = match check.roads.is_empty() {
+                true => format!("road {road}"),
+                false => plan_roads(),
+            };
             return Err(fail(
-                format!("'{}' in lane {lane} of road {road}", e.name),
+                format!("'{}' in lane {lane} of {of}", e.name),
                 format!("it in lane {} of road {}", at.lane_id, at.road_id),
             ));
         }
@@ -191,10 +214,16 @@ fn require(
         }
     }
     if let Some((s, tol)) = check.s {
-        if (at.s - s).abs() > tol {
+        let Some(got) = along(at) else {
+            return Err(fail(
+                format!("'{}' on {}", e.name, plan_roads()),
+                format!("it on road {}", at.road_id),
+            ));
+        };
+        if (got - s).abs() > tol {
             return Err(fail(
                 format!("'{}' at s = {s:.3} m (within {tol} m)", e.name),
-                format!("it at s = {:.3} m", at.s),
+                format!("it at s = {got:.3} m"),
             ));
         }
     }
@@ -272,10 +301,30 @@ fn require(
     }
     if let Some((g, tol)) = &check.gap {
         let other = &g.entity_ref;
-        let (there, speed): (&RoadPosition, f64) = beside(other)?;
+        // On a plan over several roads x may be on another of them: the plan's s of both.
+        let (there_s, speed) = match check.roads.is_empty() {
+            true => beside(other).map(|(there, v)| (Some(there.s), v))?,
+            false => world
+                .id(other)
+                .map(|o| world.entity(o))
+                .and_then(|o| Some((along(o.road_position.as_ref()?), o.speed)))
+                .filter(|(s, _)| s.is_some())
+                .ok_or_else(|| {
+                    fail(
+                        format!("'{other}' on {}", plan_roads()),
+                        format!("'{other}' elsewhere"),
+                    )
+                })?,
+        };
+        let (Some(there_s), Some(at_s)) = (there_s, along(at)) else {
+            return Err(fail(
+                format!("'{}' on {}", e.name, plan_roads()),
+                format!("it on road {}", at.road_id),
+            ));
+        };
         // x − actor along the road, at x's speed now.
         let gap = -g.offset(speed);
-        let got = there.s - at.s;
+        let got = there_s - at_s;
         if (got - gap).abs() > *tol {
             return Err(fail(
                 format!(

@@ -75,6 +75,11 @@ pub struct StateCheck {
     /// A mark noted before on the actor, the distance (m) it must have travelled since (its
     /// odometer), and the tolerance (m).
     pub travelled: Option<(String, f64, f64)>,
+    /// The roads of a plan over several roads, each with the plan's s at its start (m), in
+    /// driving order (empty: one road): with them `lane` holds on any of these roads (the
+    /// lane ids are the same on each), and `s` and `gap` measure the plan's s, a road's s plus
+    /// its start.
+    pub roads: Vec<(String, f64)>,
     /// A mark the check notes on the actor when it runs (after the requirements above hold):
     /// its odometer, and with a gap its place relative to the gap's entity, for the conditions
     /// [`crate::EntityCondition::TraveledSinceMark`] and
