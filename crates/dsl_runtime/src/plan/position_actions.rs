@@ -26,8 +26,8 @@
 use std::f64::consts::PI;
 
 use scenario::{
-    DynamicsShape, FollowingMode, LaneChangeTarget, LaneOffsetTarget, LateralAction, Orientation,
-    Position, PositionKind, PrivateAction, ReferenceContext, SpeedGap, StateCheck,
+    DynamicsShape, FollowingMode, LaneChangeAt, LaneChangeTarget, LaneOffsetTarget, LateralAction,
+    Orientation, Position, PositionKind, PrivateAction, ReferenceContext, SpeedGap, StateCheck,
 };
 
 use super::action_args::timed;
@@ -241,7 +241,15 @@ impl Planner<'_> {
                     "expected on_road_network: true without interpolation: smooth (on the road network the actor follows its lanes), found both",
                 ));
             }
-            let t = need_start("on_road_network: true")?;
+            let Some(t) = t0 else {
+                return self.change_position_on_road_at_run_time(
+                    p,
+                    target,
+                    (lane, s1, offset),
+                    out,
+                    name,
+                );
+            };
             return self.change_position_on_road(p, target, t, (lane, s1, offset), out, name);
         }
         if smooth {
@@ -327,6 +335,43 @@ impl Planner<'_> {
     /// LaneOffsetAction, sinusoidal over T, so that it arrives across the road when it arrives
     /// along it. The target must be ahead, and the sinusoid within the vehicle's lateral
     /// acceleration (π²Δ/(2T²) ≤ 10 m/s²).
+    /// `change_position(…, on_road_network: true)` of `target` to (`lane`, plan s `s1`,
+    /// `offset`) after a run-time condition: the engine's lane change that arrives there
+    /// (`LateralAction::LaneChangeAt`), sinusoidal over the distance along the actor's lane
+    /// from where it is then to s1, at the speed it has; the phase ends with the action (the
+    /// actor there). A plan over several roads is an error (the engine measures along the
+    /// road the actor is on).
+    fn change_position_on_road_at_run_time(
+        &mut self,
+        p: &Phase,
+        target: &str,
+        (lane, s1, offset): (i32, f64, f64),
+        out: &mut Vec<Planned>,
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Result<Option<When>, Error> {
+        if self.road.ids().len() > 1 {
+            return Err(p.site.err(
+                K::Unsupported,
+                format!("expected change_position(…, on_road_network: true) after a run-time condition on a plan over one road, found roads {} (the engine measures the way there along the road the actor is on)", self.road.ids().join(", ")),
+            ));
+        }
+        let n = name("change_position");
+        let at = LaneChangeAt {
+            target: LaneChangeTarget::Absolute(lane.to_string()),
+            target_lane_offset: (offset != 0.0).then_some(offset),
+            shape: DynamicsShape::Sinusoidal,
+            s: self.road.road_at(s1).1,
+            what: format!("change_position(…) at {}", p.site.at()),
+        };
+        out.push(Planned::with_phase(
+            target,
+            n.clone(),
+            PrivateAction::Lateral(LateralAction::LaneChangeAt(Box::new(at))),
+            &p.site,
+        ));
+        Ok(Some(self.ends(None, 0.0, &n, p)))
+    }
+
     fn change_position_on_road(
         &mut self,
         p: &Phase,

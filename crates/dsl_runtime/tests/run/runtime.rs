@@ -858,3 +858,36 @@ fn a_lateral_position_beside_a_moving_actor_after_an_until_follows_its_actual_t(
     assert_eq!(r.at(5.35, "ego").lane, -2);
     assert_eq!(r.at(6.35, "ego").lane, -2);
 }
+
+/// runtime_place_on_road.osc's comment, by hand: from 3.35 s ego follows the sinusoid of the
+/// distance along its lane into lane -2, arriving 40 m on at 5.3594 s.
+#[test]
+fn change_position_on_the_road_network_after_an_until_arrives_from_where_the_engine_finds_it() {
+    let r = run("runtime_place_on_road", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.cut", 3.35, 5.45),
+            ("do.on", 5.45, 6.45),
+        ],
+    );
+    // The path: y as the sinusoid of the distance along, x − 167 m on the straight road (the
+    // engine's along-road steps are corrected to what the controller drove: 1 mm).
+    for k in 0..40 {
+        let t = 3.35 + 0.05 * f64::from(k);
+        let ego = r.at(t, "ego");
+        let u = ego.x - 167.0;
+        let want = -8.75 + 1.75 * (1.0 - (std::f64::consts::PI * u / 40.0).cos());
+        assert!((ego.y - want).abs() < 1e-3, "{t}: {ego:?}, want y {want}");
+    }
+    let ego = r.at(5.4, "ego");
+    assert!((ego.y + 5.25).abs() < S_TOL && ego.lane == -2, "{ego:?}");
+    // Arrived at 5.3594 s: 0.0406 s on at 20 m/s by 5.40 s.
+    assert!(
+        (ego.x - (207.0 + 20.0 * (5.4 - 5.359412))).abs() < 0.01,
+        "{ego:?}"
+    );
+    let ego = r.at(6.45, "ego");
+    assert!((ego.y + 5.25).abs() < S_TOL && ego.lane == -2, "{ego:?}");
+}

@@ -14,15 +14,20 @@
 //! s, t = (1 − f)·(centre(from) + offset₀) + f·(centre(to) + offset₁), so lane width changes
 //! along the way are followed; the default controller turns it into a pose (heading = road
 //! heading + slope of the lateral motion). The state [`LateralState`] is shared with
-//! LaneOffsetAction, which blends within one lane.
+//! LaneOffsetAction, which blends within one lane. oscsim's lane change that arrives at a place
+//! along the road (`LateralAction::LaneChangeAt`, no XML form) is one in the distance
+//! dimension whose distance, along the actor's lane to the place, is measured at its start.
 
+use opendrive::Direction;
 use opendrive::LENGTH_EPSILON;
-use scenario::{LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics};
+use scenario::{
+    DynamicsDimension, LaneChangeAt, LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics,
+};
 
 use super::lateral_follow::{self, side_lane};
 use super::Part;
 use crate::error::{Error, ErrorKind};
-use crate::position::lane_at;
+use crate::position::{lane_arc_length, lane_at};
 use crate::store::targets::{entity_ref, target_lane};
 use crate::store::World;
 use crate::storyboard::ActionStatus;
@@ -102,6 +107,53 @@ pub(crate) fn start(
         ),
     };
     begin(world, actor, lane, offset, dynamics, now, false, pos)
+}
+
+/// Starts oscsim's lane change that arrives at a place along the road
+/// (`LateralAction::LaneChangeAt`): over the distance along the actor's lane from its s now to
+/// `at.s`, measured now; a place not ahead of it along its direction of travel fails the
+/// action (an error record and a failed run).
+pub(crate) fn start_at(
+    world: &mut World,
+    actor: EntityId,
+    at: &LaneChangeAt,
+    now: f64,
+    pos: &SourcePos,
+) -> Result<Part, Error> {
+    let fail = check_failed(&at.what, now);
+    let e = world.entity(actor);
+    let Some(track) = &e.track else {
+        return Err(fail(
+            format!("'{}' on a lane", e.name),
+            "it off every road".into(),
+        ));
+    };
+    let forward = track.direction == Direction::Forward;
+    let ahead = if forward {
+        at.s > track.s
+    } else {
+        at.s < track.s
+    };
+    let length = lane_arc_length(&world.network, &track.road_id, track.lane_id, track.s, at.s)
+        .filter(|_| ahead);
+    let Some(length) = length else {
+        return Err(fail(
+            format!(
+                "s = {:.3} m of road {} ahead of '{}' along its lane",
+                at.s, track.road_id, e.name
+            ),
+            format!("it at s = {:.3} m", track.s),
+        ));
+    };
+    let dynamics = TransitionDynamics {
+        dynamics_shape: at.shape,
+        dynamics_dimension: DynamicsDimension::Distance,
+        value: length,
+        following_mode: None,
+    };
+    let lane = target_lane(world, &at.target, pos)?;
+    let offset = at.target_lane_offset.unwrap_or(0.0);
+    begin(world, actor, lane, offset, &dynamics, now, false, pos)
 }
 
 /// The lane and offset of oscsim's target beside an entity (`LaneChangeTarget::Beside`): the

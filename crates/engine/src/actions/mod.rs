@@ -442,6 +442,9 @@ impl Host<'_> {
                     LateralAction::LaneChange { .. } => {
                         lane_change::start(self.world, actor, l, time, pos)
                     }
+                    LateralAction::LaneChangeAt(at) => {
+                        lane_change::start_at(self.world, actor, at, time, pos)
+                    }
                     LateralAction::LaneOffset { .. } => {
                         lane_offset::start(self.world, actor, l, time, pos)
                     }

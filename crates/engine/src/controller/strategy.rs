@@ -31,7 +31,9 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
             false,
             true,
             match l {
-                LateralAction::LaneChange { .. } => "LaneChangeAction",
+                LateralAction::LaneChange { .. } | LateralAction::LaneChangeAt(_) => {
+                    "LaneChangeAction"
+                }
                 LateralAction::LaneOffset { .. } => "LaneOffsetAction",
                 _ => "LateralDistanceAction",
             },
@@ -79,6 +81,9 @@ fn strategy(
         }
         PrivateAction::Lateral(LateralAction::LaneChange { target, .. }) => {
             Some(Strategy::Lane(target_lane(world, target, origin.pos)?))
+        }
+        PrivateAction::Lateral(LateralAction::LaneChangeAt(at)) => {
+            Some(Strategy::Lane(target_lane(world, &at.target, origin.pos)?))
         }
         _ => None,
     })

@@ -398,6 +398,28 @@ pub enum LateralAction {
         /// the engine measures when the action starts.
         at_start: bool,
     },
+    /// oscsim's lane change that arrives at a place along the road, an action with no XML
+    /// form (the DSL runtime writes it for ASAM OpenSCENARIO DSL 2.1
+    /// `change_position(…, on_road_network: true)` in a phase that starts on a run-time
+    /// condition, §8.8.2.11): a LaneChangeAction in the distance dimension over the distance
+    /// along the actor's lane from where it is when the action starts to `s`.
+    LaneChangeAt(Box<LaneChangeAt>),
+}
+
+/// What oscsim's lane change to a place along the road ([`LateralAction::LaneChangeAt`])
+/// changes to, and where it arrives.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LaneChangeAt {
+    /// The lane to change to.
+    pub target: LaneChangeTarget,
+    /// The offset in it (m).
+    pub target_lane_offset: Option<f64>,
+    /// The transition's shape.
+    pub shape: DynamicsShape,
+    /// The s of the actor's road where it arrives (m), ahead of it.
+    pub s: f64,
+    /// What asked for it and where it is written, for the error record.
+    pub what: String,
 }
 
 /// A lane change target (XSD `LaneChangeTarget`).
