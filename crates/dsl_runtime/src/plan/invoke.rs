@@ -457,14 +457,15 @@ impl Planner<'_> {
                                 None => {
                                     let t = self.last_known();
                                     let (x, sign, d) = self.position_target(m, target, t)?;
+                                    let several = self.road.ids().len() > 1;
                                     let w = match m.arg("distance") {
-                                        Some(_) if !m.projected => {
+                                        Some(_) if !m.projected && several => {
                                             self.gap_reached(m, target, x.as_deref(), sign, d)?
                                         }
-                                        // A time or the default gap: at x's speed as the
-                                        // engine measures it, from the side the actor
-                                        // starts on; projected, to x projected from the
-                                        // start (plan::runtime_end).
+                                        // The gap (at x's speed as the engine measures it
+                                        // for a time or the default) reached from the side
+                                        // the actor starts on; projected, to x projected
+                                        // from the start (plan::runtime_end).
                                         _ => match self.gap_watch(m, target, name("position"))? {
                                             Some((check, w)) => {
                                                 out.push(check);
@@ -503,7 +504,22 @@ impl Planner<'_> {
                                 let w = if m.projected {
                                     When::At(t + tau)
                                 } else {
-                                    self.gap_reached(m, target, x.as_deref(), sign, d)?
+                                    // Reached from the side the actor starts on (a mark:
+                                    // plan::runtime_end); on several roads the
+                                    // RelativeDistanceCondition across them.
+                                    let watch = match self.road.ids().len() {
+                                        1 => self.gap_watch(m, target, name("position"))?,
+                                        _ => None,
+                                    };
+                                    match watch {
+                                        Some((check, w)) => {
+                                            out.push(check);
+                                            w
+                                        }
+                                        None => {
+                                            self.gap_reached(m, target, x.as_deref(), sign, d)?
+                                        }
+                                    }
                                 };
                                 derived = Some(match derived {
                                     None => w,

@@ -6,7 +6,7 @@
 //! | in a phase that starts on a run-time condition | done by |
 //! | --- | --- |
 //! | `distance(d)` without a duration | a state check at the start notes the actor's odometer (a mark); the phase ends when the engine measures d travelled since (TraveledSinceMark) |
-//! | `position(time: t / neither, ahead_of/behind: x, at: end)` without a duration | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
+//! | `position(d / time: t / neither, ahead_of/behind: x, at: end)` without a duration (at any start, on one road) | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
 //! | `position(…, at: end)`, `distance(d)` over a duration beside `speed(v)` at: all | the speed holds; the engine checks the place (or d travelled since the start's mark) at the phase end: a constraint that holds only if the run meets it is an error record if it does not |
 //! | `speed(same_as/faster_than/slower_than: x, at: end)` beside a TravelAction | the profile ends at x's speed at the start (± the value); the engine checks x's speed at the phase end |
 //!
@@ -47,8 +47,9 @@ impl Planner<'_> {
         (self.mark_check(m, target, name, None), end)
     }
 
-    /// `position(time: t / neither, ahead_of/behind: x, at: end)` of `target` (any gap with
-    /// `track: projected`) in a phase without a duration that starts on a run-time condition:
+    /// `position(d / time: t / neither, ahead_of/behind: x, at: end)` of `target` in a phase
+    /// without a duration (at a start the plan knows too: the 1.x RelativeDistanceCondition
+    /// has no sign, so a gap closing through d never rises through it):
     /// the check `name` noting the actor's side of the place at the start, and the end when
     /// the engine measures it there or past it (x projected from the start with `projected`).
     /// `None` for a `position` without a reference.

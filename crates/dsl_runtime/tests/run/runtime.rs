@@ -891,3 +891,26 @@ fn change_position_on_the_road_network_after_an_until_arrives_from_where_the_eng
     let ego = r.at(6.45, "ego");
     assert!((ego.y + 5.25).abs() < S_TOL && ego.lane == -2, "{ego:?}");
 }
+
+/// gap_reached_from_behind.osc's comment, by hand: a gap without a duration ends its phase
+/// when ego reaches its place from the side it starts on, at a known start (closing from
+/// behind) and after a run-time one (falling back).
+#[test]
+fn a_gap_without_a_duration_is_reached_from_the_side_the_actor_starts_on() {
+    let r = run("gap_reached_from_behind", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.0.first", 0.0, 6.7),
+            ("do.0.brake", 6.7, 7.7),
+            ("do.0.approach", 7.7, 7.85),
+            ("do.0.close", 7.85, 9.9),
+        ],
+    );
+    let gap = |t: f64| r.at(t, "lead").s - r.at(t, "ego").s;
+    assert!((r.at(6.7, "ego").s - 234.0).abs() < S_TOL);
+    assert!((gap(6.65) - 20.2).abs() < S_TOL && (gap(6.7) - 19.6).abs() < S_TOL);
+    assert!((r.at(7.85, "ego").s - 245.0).abs() < S_TOL);
+    assert!((gap(9.85) - 29.8).abs() < S_TOL && (gap(9.9) - 30.1).abs() < S_TOL);
+    assert!((r.at(9.9, "ego").s - 249.1).abs() < S_TOL);
+}
