@@ -19,7 +19,7 @@ pub struct Mark {
     /// The actor's odometer then (m).
     pub odometer: Real,
     /// With a gap: the actor's place error relative to the gap's entity then
-    /// ([`place_error`], m).
+    /// (the actor's s minus the entity's less the gap's offset, m).
     pub gap_error: Option<Real>,
     /// With a projected gap: the gap's entity as it was then, projected from then on.
     pub projection: Option<Projection>,
