@@ -762,7 +762,7 @@ fn distances_and_gaps_without_a_duration_after_an_until_are_measured_from_the_ph
     for (check, t) in [
         ("do.hold/ego/2:distance.end", 15.35),
         ("do.keep/ego/2:position.end", 17.35),
-        ("do.match/ego/2:position.speed", 19.35),
+        ("do.match/ego/3:position.speed", 19.35),
     ] {
         let at = r
             .when(check, "End")
@@ -794,7 +794,7 @@ fn a_distance_or_a_speed_not_met_at_the_end_after_an_until_is_an_error_record_an
     fails(
         "runtime_end_speed_fails",
         (want, tail),
-        "do.ego.match/ego/2:position.speed",
+        "do.ego.match/ego/3:position.speed",
         5.35,
     );
 }

@@ -136,6 +136,40 @@ fn require(
             ));
         }
     }
+    if let Some((other, value, tol)) = &check.speed {
+        let base = match other {
+            Some(o) => world
+                .id(o)
+                .map(|o| world.entity(o).speed)
+                .ok_or_else(|| fail(format!("'{o}' in the scenario"), "no such entity".into()))?,
+            None => 0.0,
+        };
+        let want = base + value;
+        if (e.speed - want).abs() > *tol {
+            let of = other.as_ref().map_or(String::new(), |o| {
+                format!(" ('{o}''s {base:.3} m/s {value:+.3} m/s)")
+            });
+            return Err(fail(
+                format!("'{}' at {want:.3} m/s{of} (within {tol} m/s)", e.name),
+                format!("it at {:.3} m/s", e.speed),
+            ));
+        }
+    }
+    if let Some((mark, d, tol)) = &check.travelled {
+        let Some(m) = world.marks.get(mark) else {
+            return Err(fail(format!("the mark '{mark}' noted"), "none".into()));
+        };
+        let got = e.odometer - m.odometer;
+        if (got - d).abs() > *tol {
+            return Err(fail(
+                format!(
+                    "'{}' {d:.3} m travelled since the phase start (within {tol} m)",
+                    e.name
+                ),
+                format!("{got:.3} m"),
+            ));
+        }
+    }
     let places = check.lane.is_some()
         || check.lane_of.is_some()
         || check.s.is_some()
@@ -259,40 +293,6 @@ fn require(
             return Err(fail(
                 format!(
                     "'{}' {dt:.3} m to the left of '{other}' across the road (within {tol} m)",
-                    e.name
-                ),
-                format!("{got:.3} m"),
-            ));
-        }
-    }
-    if let Some((other, value, tol)) = &check.speed {
-        let base = match other {
-            Some(o) => world
-                .id(o)
-                .map(|o| world.entity(o).speed)
-                .ok_or_else(|| fail(format!("'{o}' in the scenario"), "no such entity".into()))?,
-            None => 0.0,
-        };
-        let want = base + value;
-        if (e.speed - want).abs() > *tol {
-            let of = other.as_ref().map_or(String::new(), |o| {
-                format!(" ('{o}''s {base:.3} m/s {value:+.3} m/s)")
-            });
-            return Err(fail(
-                format!("'{}' at {want:.3} m/s{of} (within {tol} m/s)", e.name),
-                format!("it at {:.3} m/s", e.speed),
-            ));
-        }
-    }
-    if let Some((mark, d, tol)) = &check.travelled {
-        let Some(m) = world.marks.get(mark) else {
-            return Err(fail(format!("the mark '{mark}' noted"), "none".into()));
-        };
-        let got = e.odometer - m.odometer;
-        if (got - d).abs() > *tol {
-            return Err(fail(
-                format!(
-                    "'{}' {d:.3} m travelled since the phase start (within {tol} m)",
                     e.name
                 ),
                 format!("{got:.3} m"),
