@@ -18,13 +18,12 @@
 //! along the road (`LateralAction::LaneChangeAt`, no XML form) is one in the distance
 //! dimension whose distance, along the actor's lane to the place, is measured at its start.
 
-use opendrive::Direction;
 use opendrive::LENGTH_EPSILON;
+use opendrive::{Direction, Road};
 use scenario::{
     DynamicsDimension, LaneChangeAt, LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics,
 };
 
-use super::lateral_follow::{self, side_lane};
 use super::Part;
 use crate::error::{Error, ErrorKind};
 use crate::position::{lane_arc_length, lane_at};
@@ -32,7 +31,7 @@ use crate::store::targets::{entity_ref, target_lane};
 use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::{Entity, EntityId};
-use crate::world::lane_track::Blend;
+use crate::world::lane_track::{Blend, LaneTrack};
 use crate::world::shapes::{progress, shape_value, span, Span};
 use scenario::DynamicsShape;
 
@@ -86,15 +85,6 @@ pub(crate) fn start(
         return Err(Error::unsupported("this LateralAction", pos));
     };
     let (lane, offset) = match target {
-        LaneChangeTarget::Beside {
-            entity_ref,
-            t,
-            what,
-            follow: true,
-        } => {
-            let reference = (entity_ref.as_str(), *t, what.as_str());
-            return lateral_follow::start(world, actor, reference, dynamics.value, now, pos);
-        }
         LaneChangeTarget::Beside {
             entity_ref,
             t,
@@ -196,6 +186,16 @@ fn beside(
             ),
             "none".into(),
         )
+    })
+}
+
+/// The lane of `track`'s side of `road` holding `t` at its s, and the offset there.
+pub(super) fn side_lane(road: &Road, track: &LaneTrack, t: f64) -> Option<(i32, f64)> {
+    lane_at(road, track.s, t).filter(|(lane, offset)| {
+        lane.signum() == track.lane_id.signum()
+            && road
+                .lane_span(*lane, track.s)
+                .is_ok_and(|sp| offset.abs() <= sp.width() / 2.0 + LENGTH_EPSILON)
     })
 }
 

@@ -21,7 +21,7 @@
 use opendrive::{Road, LENGTH_EPSILON};
 use scenario::{DynamicsShape, SourcePos};
 
-use super::lane_change::{check_failed, step_speed};
+use super::lane_change::{check_failed, side_lane, step_speed};
 use super::Part;
 use crate::error::Error;
 use crate::position::lane_at;
@@ -192,16 +192,6 @@ fn target_t(world: &World, actor: EntityId, x: EntityId, dt: f64) -> Result<f64,
         None => to,
     };
     Ok(t + dt)
-}
-
-/// The lane of `track`'s side of `road` holding `t` at its s, and the offset there.
-pub(super) fn side_lane(road: &Road, track: &LaneTrack, t: f64) -> Option<(i32, f64)> {
-    lane_at(road, track.s, t).filter(|(lane, offset)| {
-        lane.signum() == track.lane_id.signum()
-            && road
-                .lane_span(*lane, track.s)
-                .is_ok_and(|sp| offset.abs() <= sp.width() / 2.0 + LENGTH_EPSILON)
-    })
 }
 
 /// Writes target `t` on `track`: the lane of its side holding it and the offset, else its

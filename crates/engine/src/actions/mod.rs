@@ -34,8 +34,8 @@ mod variable;
 mod visibility;
 
 use scenario::{
-    Action, ActionKind, ControllerAction, GlobalAction, LateralAction, LongitudinalAction,
-    PrivateAction, RoutingAction,
+    Action, ActionKind, ControllerAction, GlobalAction, LaneChangeTarget, LateralAction,
+    LongitudinalAction, PrivateAction, RoutingAction,
 };
 
 pub(crate) use appearance::Appearances;
@@ -439,6 +439,25 @@ impl Host<'_> {
             PrivateAction::Lateral(l) => {
                 self.claim(actor, Domain::Lateral, id);
                 match l {
+                    // oscsim's lane change beside a moving entity (lateral_follow.rs).
+                    LateralAction::LaneChange {
+                        target:
+                            LaneChangeTarget::Beside {
+                                entity_ref,
+                                t,
+                                what,
+                                follow: true,
+                            },
+                        dynamics,
+                        ..
+                    } => lateral_follow::start(
+                        self.world,
+                        actor,
+                        (entity_ref, *t, what),
+                        dynamics.value,
+                        time,
+                        pos,
+                    ),
                     LateralAction::LaneChange { .. } => {
                         lane_change::start(self.world, actor, l, time, pos)
                     }
