@@ -124,13 +124,6 @@ pub(crate) fn bind(
     };
     let chosen = pool[pick.min(pool.len() - 1)];
     let starts = road.starts();
-    // The plan's s of s0 and s1 of road `id`, when the plan drives it.
-    let plan_span = |id: &str, s0: f64, s1: f64| {
-        starts
-            .iter()
-            .find(|(r, _)| *r == id)
-            .map(|(_, at)| (at + s0, at + s1))
-    };
     let own: Vec<&str> = lane_mods
         .iter()
         .filter_map(|m| own_lanes(m))
@@ -184,7 +177,7 @@ pub(crate) fn bind(
                 field: field.clone(),
                 road: r.id.clone(),
                 lane: h.lane,
-                span: plan_span(&r.id, s0, s1),
+                span: road.plan_span(&r.id, s0, s1),
                 why: by,
                 whole_road: false,
             }

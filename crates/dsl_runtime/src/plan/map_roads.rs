@@ -52,14 +52,6 @@ pub(super) fn whole_fields(
     chosen: &[LaneHandle],
 ) -> Result<Vec<MapLane>, Error> {
     let net = road.network();
-    let starts = road.starts();
-    // The plan's s of s0 and s1 of road `id`, when the plan drives it.
-    let plan_span = |id: &str, s0: f64, s1: f64| {
-        starts
-            .iter()
-            .find(|(r, _)| *r == id)
-            .map(|(_, at)| (at + s0, at + s1))
-    };
     // Road and lane-section fields of routes_are_in_sequence: the road (the lane section) of
     // the modifier's own lane on it, whole.
     let ends = lane_mods.iter().filter_map(|m| match &m.kind {
@@ -79,11 +71,14 @@ pub(super) fn whole_fields(
             EndKind::Section => {
                 let (s0, s1) = section_span(net, h);
                 (
-                    plan_span(&r.id, s0, s1),
+                    road.plan_span(&r.id, s0, s1),
                     format!("the lane section of road {} from s = {s0:.2} m", r.id),
                 )
             }
-            _ => (plan_span(&r.id, 0.0, r.length), format!("road {}", r.id)),
+            _ => (
+                road.plan_span(&r.id, 0.0, r.length),
+                format!("road {}", r.id),
+            ),
         };
         if road_fields.iter().all(|b| b.field != end.field) {
             road_fields.push(MapLane {
@@ -127,7 +122,7 @@ pub(super) fn whole_fields(
             m.name,
             m.site.at()
         );
-        let Some(span) = plan_span(&r.id, 0.0, r.length) else {
+        let Some(span) = road.plan_span(&r.id, 0.0, r.length) else {
             return Err(m.site.err(
                 K::Road,
                 format!(

@@ -124,6 +124,14 @@ impl<'a> PlanRoad<'a> {
             .map(|g| g.start + s)
     }
 
+    /// The plan's s of `s0` and `s1` on road `id`, when the plan drives it.
+    pub(crate) fn plan_span(&self, id: &str, s0: f64, s1: f64) -> Option<(f64, f64)> {
+        self.segments
+            .iter()
+            .find(|g| g.road.id == id)
+            .map(|g| (g.start + s0, g.start + s1))
+    }
+
     /// The road and its own s at the plan's s `s` (the later road at a joint; clamped to the
     /// chain's ends).
     pub(crate) fn road_at(&self, s: f64) -> (&'a Road, f64) {
