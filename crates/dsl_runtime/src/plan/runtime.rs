@@ -22,6 +22,7 @@
 //! | `change_speed(v)` at the rate of such an `acceleration(…)`, at: start or all | the engine's RelativeAccelerationAction toward v at that rate, failing when v is not reached within the phase (`acceleration_follow`) |
 //! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends |
 //! | `speed(v, at: end)`, `change_speed(v)` (or to another actor's speed) over a phase of duration T, `change_speed(v, duration)` | the engine's SpeedAction over T from the speed the actor has, beside the engine's check that its peak rate fits the vehicle's limit then (a failure: an error record and a failed run, not a stretched change) |
+//! | `change_speed(v)`, `speed(v, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a, beside the engine's check that \|v − v₀\|/a ≤ T from the speed v₀ the actor has then (`speed_at_rate_check`) |
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
 //! | `keep_space_gap` / `keep_time_headway` without a known gap | the engine's LongitudinalDistanceAction keeping the value it measures at its start (`gap_actions`) |
 //!
@@ -376,9 +377,41 @@ pub(super) fn speed_change_check(
     name: String,
 ) -> Planned {
     let check = StateCheck {
-        what: format!("{what}(…) at {}", site.at()),
         speed_change: Some((to, shape, len)),
         ..StateCheck::default()
+    };
+    phase_start_check(target, (what, site), check, name)
+}
+
+/// The engine's check that a speed change to `to` at the rate `a` (m/s²), starting in a phase
+/// of `target` that starts on a run-time condition, ends within the phase's `len` s from the
+/// speed the actor has then, as the action `name` (`what` names the modifier and `site` where
+/// it is written): the phase's end would cut a longer change short; here it is an error
+/// record and a failed run instead.
+pub(super) fn speed_at_rate_check(
+    target: &str,
+    (what, site): (&str, &Site),
+    (to, a, len): (SpeedTarget, f64, f64),
+    name: String,
+) -> Planned {
+    let check = StateCheck {
+        speed_at_rate: Some((to, a, len)),
+        ..StateCheck::default()
+    };
+    phase_start_check(target, (what, site), check, name)
+}
+
+/// `check` as the engine's check at the start of a phase of `target`, named for the modifier
+/// or action `what` written at `site`.
+fn phase_start_check(
+    target: &str,
+    (what, site): (&str, &Site),
+    check: StateCheck,
+    name: String,
+) -> Planned {
+    let check = StateCheck {
+        what: format!("{what}(…) at {}", site.at()),
+        ..check
     };
     Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), site)
 }

@@ -428,6 +428,40 @@ fn acceleration_alone_after_an_until_accelerates_from_the_speed_the_actor_has() 
     );
 }
 
+/// runtime_speed_at_rate.osc's comment, by hand: from the 18 m/s the engine has at 5.35 s (the
+/// plan knowing 0 m/s), 21 m/s at 1.5 m/s² takes the phase's 2 s, so the check passes.
+#[test]
+fn a_speed_change_at_a_rate_after_an_until_is_checked_from_the_engines_speed() {
+    let r = run("runtime_speed_at_rate", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.brake", 3.35, 5.35),
+            ("do.speed_up", 5.35, 7.35),
+            ("do.after", 7.35, 8.35),
+        ],
+    );
+    ego_speeds(
+        &r,
+        &[(5.35, 18.0), (6.35, 19.5), (7.35, 21.0), (8.35, 21.0)],
+    );
+}
+
+/// runtime_speed_at_rate_fails.osc's comment, by hand: 18 → 24 m/s at 1.5 m/s² needs 4 s, the
+/// phase has 2 s.
+#[test]
+fn a_speed_change_at_a_rate_not_done_within_the_phase_after_an_until_fails_the_run() {
+    fails(
+        "runtime_speed_at_rate_fails",
+        (
+            "expected 'ego''s speed from 18.000 to 24.000 m/s at 1.500 m/s² within 2.000 s (acceleration(…) at ",
+            "runtime_speed_at_rate_fails.osc:22:13), found it needs 4.000 s at t = 5.350 s",
+        ),
+        "do.speed_up/ego/1:check",
+        5.35,
+    );
+}
+
 /// runtime_speed_rate_engine.osc's comment, by hand: from the 18 m/s the engine has at 5.35 s
 /// (the plan knowing 0 m/s), 9 m/s² up over 2 s, then −9 m/s² over 1 s; both within 10 m/s²,
 /// so the engine's checks pass and nothing is stretched.

@@ -136,6 +136,20 @@ fn require(
             ));
         }
     }
+    // At a rate the change takes |v1 − v| / a, which must end within the phase.
+    if let Some((target, rate, within)) = &check.speed_at_rate {
+        let v1 = speed::target_speed(world, target, pos)?;
+        let needed = (v1 - e.speed).abs() / rate;
+        if needed > within + crate::tolerance::TIME {
+            return Err(fail(
+                format!(
+                    "'{}''s speed from {:.3} to {v1:.3} m/s at {rate:.3} m/s² within {within:.3} s",
+                    e.name, e.speed,
+                ),
+                format!("it needs {needed:.3} s"),
+            ));
+        }
+    }
     if let Some((other, value, tol)) = &check.speed {
         let base = match other {
             Some(o) => world

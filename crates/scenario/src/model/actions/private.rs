@@ -69,6 +69,12 @@ pub struct StateCheck {
     /// which would otherwise stretch it in time (ASAM OpenSCENARIO DSL 2.1 §8.9 `speed(…,
     /// at: end)`, §8.8.2.12 `change_speed`, in a phase that starts on a run-time condition).
     pub speed_change: Option<(SpeedTarget, DynamicsShape, f64)>,
+    /// A speed change to the target at the given rate (m/s², a SpeedAction of dimension
+    /// `rate`), starting with the check: it must be done within the given time (s), the
+    /// phase's length, from the speed the actor has then (ASAM OpenSCENARIO DSL 2.1 §8.9
+    /// `change_speed`/`speed(…, at: end)` beside `acceleration(a)`, in a phase that starts on
+    /// a run-time condition; the phase's end would otherwise cut the change short).
+    pub speed_at_rate: Option<(SpeedTarget, f64, f64)>,
     /// The actor's speed (m/s): another entity's speed at the moment (`None`: 0) plus the
     /// value, and the tolerance (m/s).
     pub speed: Option<(Option<String>, f64, f64)>,
