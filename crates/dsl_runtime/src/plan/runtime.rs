@@ -329,17 +329,11 @@ impl Planner<'_> {
         }
         let (lo, hi) = start.s;
         let check = StateCheck {
-            what: format!("along(…) at {}", site.at()),
             lane: Some((self.road.id().to_string(), start.lane)),
             s: Some(((lo + hi) / 2.0, (hi - lo) / 2.0)),
             ..StateCheck::default()
         };
-        Ok(Planned::with_phase(
-            target,
-            name,
-            PrivateAction::Check(Box::new(check)),
-            site,
-        ))
+        Ok(phase_start_check(target, ("along", site), check, name))
     }
 
     /// A lane or position at a run-time start on a plan over several roads.
@@ -403,7 +397,7 @@ pub(super) fn speed_at_rate_check(
 
 /// `check` as the engine's check at the start of a phase of `target`, named for the modifier
 /// or action `what` written at `site`.
-fn phase_start_check(
+pub(super) fn phase_start_check(
     target: &str,
     (what, site): (&str, &Site),
     check: StateCheck,

@@ -20,6 +20,7 @@ use scenario::{
 
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
+use super::runtime::phase_start_check;
 use super::types::{Planned, When};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::Modifier;
@@ -120,7 +121,6 @@ impl Planner<'_> {
         gap: Option<scenario::SpeedGap>,
     ) -> Planned {
         let check = StateCheck {
-            what: format!("{}(…) at {}", m.name, m.site.at()),
             mark: Some(Mark {
                 name: name.clone(),
                 gap,
@@ -128,7 +128,7 @@ impl Planner<'_> {
             }),
             ..StateCheck::default()
         };
-        Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), &m.site)
+        phase_start_check(target, (&m.name, &m.site), check, name)
     }
 
     /// The engine's check of `target` at the phase's end, as the action `name` (for the
