@@ -25,7 +25,7 @@
 
 use scenario::{
     ControlPoint, FollowingMode, Nurbs, Position, PositionKind, PrivateAction, ReferenceContext,
-    RoutingAction, Shape, Timing, Trajectory, Vertex,
+    RoutingAction, Shape, SmoothFromActor, Timing, Trajectory, Vertex,
 };
 
 use crate::error::Site;
@@ -51,11 +51,7 @@ const PANELS: usize = 16;
 pub(crate) fn hermite_controls(points: &[Pose2]) -> Vec<[f64; 2]> {
     let mut out = Vec::with_capacity(3 * points.len());
     for w in points.windows(2) {
-        let ((x0, y0, h0), (x1, y1, h1)) = (w[0], w[1]);
-        let k = (x1 - x0).hypot(y1 - y0) / 3.0;
-        out.push([x0, y0]);
-        out.push([x0 + k * h0.cos(), y0 + k * h0.sin()]);
-        out.push([x1 - k * h1.cos(), y1 - k * h1.sin()]);
+        out.extend_from_slice(&scenario::hermite_controls(w[0], w[1])[..3]);
     }
     if let Some(&(x, y, _)) = points.last() {
         out.push([x, y]);
@@ -293,6 +289,35 @@ pub(crate) fn smooth(
             knots,
         }),
         times.is_some(),
+        mode,
+    )
+}
+
+/// A FollowTrajectoryAction along oscsim's smooth curve from the actor (scenario
+/// `Shape::SmoothFromActor`, no XML form): the curve [`smooth`] builds, from where the engine
+/// finds the actor when the action starts (its heading) to `end` (its heading), untimed.
+pub(crate) fn smooth_from_actor(
+    name: &str,
+    end: Pose2,
+    mode: FollowingMode,
+    site: &Site,
+) -> PrivateAction {
+    let (x, y, h) = end;
+    let end = Position {
+        kind: PositionKind::World {
+            x,
+            y,
+            z: None,
+            h: Some(h),
+            p: None,
+            r: None,
+        },
+        pos: site.pos.clone(),
+    };
+    follow(
+        name,
+        Shape::SmoothFromActor(SmoothFromActor { end }),
+        false,
         mode,
     )
 }

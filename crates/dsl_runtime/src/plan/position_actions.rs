@@ -7,7 +7,7 @@
 //! | `assign_position(position \| route_point \| odr_point)` | TeleportAction to the lane position of the place on the plan road | at once |
 //! | `assign_orientation(target)` | TeleportAction to where the actor is, the orientation absolute (world yaw, pitch, roll); the actor must stand | at once |
 //! | `change_position(target, on_road_network: true)` | along its lane at its speed to the target's s, into the target's lane (LaneChangeAction) or offset (LaneOffsetAction), sinusoidal over exactly that time | when the actor is there |
-//! | `change_position(target, interpolation)` | FollowTrajectoryAction along the straight line from where the actor is to the target, or (`smooth`) the cubic Hermite curve from the actor's heading along its lane into the lane's heading at the target (`path_shape`), at its speed (after a run-time condition a straight line whose first vertex is a RelativeObjectPosition at the actor, which the engine resolves when the action starts; the curve and the road-network form need the plan's start) | when the actor is there |
+//! | `change_position(target, interpolation)` | FollowTrajectoryAction along the straight line from where the actor is to the target, or (`smooth`) the cubic Hermite curve from the actor's heading along its lane into the lane's heading at the target (`path_shape`), at its speed (after a run-time condition a straight line whose first vertex is a RelativeObjectPosition at the actor, which the engine resolves when the action starts, or the curve from the actor's pose then, oscsim's SmoothFromActor shape) | when the actor is there |
 //!
 //! Exactly one of the three arguments is given (none is a missing argument, two contradict).
 //! The place must be in a driving lane of the plan road (the road the planner moves actors on):
@@ -217,16 +217,6 @@ impl Planner<'_> {
             },
             None => None,
         };
-        // The curve and the road-network form start from the actor's planned place and
-        // heading; after a run-time condition only the straight line is run (below).
-        let need_start = |what: &str| {
-            t0.ok_or_else(|| {
-                p.site.err(
-                    K::Unsatisfiable,
-                    format!("expected a phase start the plan knows for change_position(…, {what}) (where its path starts), found one after a run-time condition"),
-                )
-            })
-        };
         let (lane, s1, offset) = self.formation_place(
             p,
             inv,
@@ -252,18 +242,24 @@ impl Planner<'_> {
             };
             return self.change_position_on_road(p, target, t, (lane, s1, offset), out, name);
         }
-        if smooth {
-            need_start("interpolation: smooth")?;
-        }
         let road = &self.road;
         let Some(t) = t0 else {
-            // After a run-time condition the line starts where the engine finds the actor: a
-            // vertex at the actor itself (a RelativeObjectPosition, resolved when the action
-            // starts), at the speed it has then; the phase ends with the action.
-            let Some((x1, y1, _)) = road.world_pose(s1, road.lane_center(lane, s1) + offset) else {
+            // After a run-time condition the path starts where the engine finds the actor: the
+            // smooth curve from its pose then (oscsim's SmoothFromActor, whose tangents the
+            // engine scales with the chord it finds), or a line whose first vertex is the actor
+            // itself (a RelativeObjectPosition, resolved when the action starts), at the speed
+            // it has then; the phase ends with the action.
+            let Some(end) = road.world_pose(s1, road.lane_center(lane, s1) + offset) else {
                 return Err(off_road(&place.site, road.id(), s1, "its length"));
             };
             let n = name("change_position");
+            if smooth {
+                let action =
+                    path_shape::smooth_from_actor(&n, end, FollowingMode::Position, &place.site);
+                out.push(Planned::with_phase(target, n.clone(), action, &p.site));
+                return Ok(Some(self.ends(None, 0.0, &n, p)));
+            }
+            let (x1, y1, _) = end;
             let here = PositionKind::RelativeObject {
                 entity_ref: target.to_string(),
                 dx: 0.0,

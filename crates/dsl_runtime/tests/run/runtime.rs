@@ -948,3 +948,67 @@ fn a_gap_without_a_duration_is_reached_from_the_side_the_actor_starts_on() {
     assert!((gap(9.85) - 29.8).abs() < S_TOL && (gap(9.9) - 30.1).abs() < S_TOL);
     assert!((r.at(9.9, "ego").s - 249.1).abs() < S_TOL);
 }
+
+/// runtime_place_smooth.osc's comment, by hand: from 4.6 s ego follows the Hermite curve from
+/// the pose the engine finds it in (facing the line it came along) to q, through (210.8,
+/// −0.35) m at u = ½, arriving after 40.2109 m at 6.6105 s.
+#[test]
+fn change_position_smooth_after_an_until_curves_from_the_pose_the_engine_finds() {
+    let r = run("runtime_place_smooth", 0, None);
+    let (start, end) = r.phase("do.curve");
+    assert!((start - 4.6).abs() < T_TOL, "curve starts at {start}");
+    // Arrival at 6.6105 s, in the step ending at 6.65 s.
+    assert!((end - 6.65).abs() < T_TOL, "curve ends at {end}");
+    let h0 = 7.0_f64.atan2(24.0);
+    let ego = r.at(4.6, "ego");
+    assert!(
+        (ego.x - 191.0).abs() < S_TOL && (ego.y + 1.75).abs() < S_TOL && (ego.h - h0).abs() < 1e-9,
+        "start {ego:?}"
+    );
+    // The Bézier: x(u) rises, so each frame's x gives its u (bisection) and y(u) must match;
+    // the frames near u = ½ pass (210.8, −0.35) m.
+    let bezier = |u: f64| {
+        let v = 1.0 - u;
+        (
+            191.0 * v.powi(3)
+                + 3.0 * v * v * u * 203.8
+                + 3.0 * v * u * u * (231.0 - 40.0 / 3.0)
+                + 231.0 * u.powi(3),
+            -1.75 + 3.0 * u * v * v * (40.0 / 3.0) * 7.0 / 25.0,
+        )
+    };
+    assert!((bezier(0.5).0 - 210.8).abs() < 1e-9 && (bezier(0.5).1 + 0.35).abs() < 1e-9);
+    // The engine samples the NURBS' arc length; a point is on the curve within 1 mm.
+    const ON_CURVE: f64 = 1e-3;
+    for k in 1..40 {
+        let t = 4.6 + 0.05 * f64::from(k);
+        let ego = r.at(t, "ego");
+        let (mut lo, mut hi) = (0.0, 1.0);
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if bezier(mid).0 < ego.x {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let want = bezier(0.5 * (lo + hi)).1;
+        assert!(
+            (ego.y - want).abs() < ON_CURVE,
+            "{t}: {ego:?}, want y {want}"
+        );
+    }
+    // Half the length, 20.105 m, at 20 m/s is reached 1.0053 s in: at 5.60 s ego has gone
+    // 20 m, just before the mid-point (u = 0.5011, (210.844, −0.353) m by the same sums).
+    let ego = r.at(5.6, "ego");
+    assert!(
+        (ego.x - 210.844).abs() < 0.01 && (ego.y + 0.353).abs() < 0.01,
+        "{ego:?}"
+    );
+    // After the end: in lane -1 on its centre, facing along it.
+    let ego = r.at(7.65, "ego");
+    assert!(
+        ego.lane == -1 && (ego.y + 1.75).abs() < S_TOL && ego.h.abs() < 1e-9,
+        "{ego:?}"
+    );
+}

@@ -26,6 +26,9 @@
 //!   esmini reads it differently (each time pinned where its control point's basis function
 //!   peaks, linear in u between); the paths agree, the moments along them do not
 //!   (test trajectory_esmini_nurbs).
+//! * oscsim's `SmoothFromActor` (no XML form): from the actor's pose when the action starts
+//!   (its x, y and heading) to its end position, the cubic Hermite curve of
+//!   [`scenario::hermite_controls`] as a NURBS of order 4, untimed.
 //! * `closed` has no effect on Clothoid, ClothoidSpline and Nurbs (their geometry is
 //!   complete as written).
 
@@ -125,6 +128,13 @@ pub fn build_for_actor<S: PointSource + ?Sized>(
             let (piece, times) = nurbs(name, n, ctx, pos)?;
             (ShapeKind::Nurbs, vec![piece], times)
         }
+        Shape::SmoothFromActor(c) => {
+            let Some(a) = actor else {
+                return Err(TrajectoryError::new(TrajectoryErrorKind::NoActor, pos).into());
+            };
+            let (piece, times) = nurbs(name, &smooth_from(a, c, ctx)?, ctx, pos)?;
+            (ShapeKind::Nurbs, vec![piece], times)
+        }
         _ => {
             return Err(TrajectoryError::new(
                 TrajectoryErrorKind::UnknownShape("another shape"),
@@ -141,6 +151,45 @@ pub fn build_for_actor<S: PointSource + ?Sized>(
         return Err(TrajectoryError::new(TrajectoryErrorKind::ZeroLength(t.length()), pos).into());
     }
     Ok(t)
+}
+
+/// oscsim's smooth curve from the actor standing at `actor` (its x, y and heading) to
+/// `c.end` (its point and heading), as the NURBS of order 4 of the Hermite curve's Bézier
+/// ([`scenario::hermite_controls`]), untimed; the control points are written where the end
+/// is.
+fn smooth_from<S: PointSource + ?Sized>(
+    actor: &Pose,
+    c: &scenario::SmoothFromActor,
+    ctx: &S,
+) -> std::result::Result<scenario::Nurbs, S::Error> {
+    let end = point(&c.end, None, ctx)?;
+    let controls = scenario::hermite_controls(
+        (actor.x, actor.y, actor.h),
+        (end.xyz[0], end.xyz[1], end.heading),
+    );
+    let control_points = controls
+        .iter()
+        .map(|&[x, y]| scenario::ControlPoint {
+            time: None,
+            weight: None,
+            position: Position {
+                kind: scenario::PositionKind::World {
+                    x,
+                    y,
+                    z: None,
+                    h: None,
+                    p: None,
+                    r: None,
+                },
+                pos: end.pos.clone(),
+            },
+        })
+        .collect();
+    Ok(scenario::Nurbs {
+        order: 4,
+        control_points,
+        knots: vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0],
+    })
 }
 
 /// The times of `points` if every one has a time (non-decreasing), `None` if none has.

@@ -130,6 +130,10 @@ pub enum TrajectoryErrorKind {
     /// The first ClothoidSplineSegment has no PositionStart.
     #[error("expected a PositionStart on the first ClothoidSplineSegment, found none")]
     MissingPositionStart,
+    /// oscsim's smooth curve from the actor where no actor follows the trajectory (a
+    /// TrajectoryPosition, not a FollowTrajectoryAction).
+    #[error("expected an actor following oscsim's smooth curve from the actor (it starts where the actor stands), found a trajectory outside a FollowTrajectoryAction")]
+    NoActor,
     /// A ClothoidSpline without segments.
     #[error("expected at least 1 ClothoidSplineSegment, found 0")]
     NoSegments,

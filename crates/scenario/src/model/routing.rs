@@ -51,6 +51,36 @@ pub enum Shape {
     ClothoidSpline(ClothoidSpline),
     /// `Nurbs`.
     Nurbs(Nurbs),
+    /// oscsim's smooth curve from the actor, a shape with no XML form (the DSL runtime writes
+    /// it for ASAM OpenSCENARIO DSL 2.1 §8.8.2.11 `change_position(…, interpolation: smooth)`
+    /// in a phase that starts at run time, where the plan does not know where the curve
+    /// starts): the cubic Hermite curve ([`hermite_controls`]) from where the actor stands,
+    /// facing its heading, when the action starts, to `end` facing `end`'s heading.
+    SmoothFromActor(SmoothFromActor),
+}
+
+/// What oscsim's smooth curve from the actor ([`Shape::SmoothFromActor`]) ends at.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SmoothFromActor {
+    /// Where the curve ends; its heading is the curve's there (a position without an
+    /// orientation of its own faces the way its kind gives, e.g. along a lane).
+    pub end: Position,
+}
+
+/// The four control points of the cubic Bézier of the Hermite curve from pose `from` to pose
+/// `to` (world x, y in m, heading in rad): `from`, `from` + L/3·(cos h₀, sin h₀), `to` −
+/// L/3·(cos h₁, sin h₁), `to`, with L the chord |to − from| (tangents of length L, so a curve
+/// between two poses of the same heading on one line is that line). The DSL runtime's smooth
+/// paths and the engine's [`Shape::SmoothFromActor`] are built with it.
+pub fn hermite_controls(from: (f64, f64, f64), to: (f64, f64, f64)) -> [[f64; 2]; 4] {
+    let ((x0, y0, h0), (x1, y1, h1)) = (from, to);
+    let k = (x1 - x0).hypot(y1 - y0) / 3.0;
+    [
+        [x0, y0],
+        [x0 + k * h0.cos(), y0 + k * h0.sin()],
+        [x1 - k * h1.cos(), y1 - k * h1.sin()],
+        [x1, y1],
+    ]
 }
 
 /// A polyline vertex (XSD `Vertex`).
