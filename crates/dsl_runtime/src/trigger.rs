@@ -1,6 +1,7 @@
 //! The OpenSCENARIO 1.x conditions the pipeline builds its triggers from (OpenSCENARIO 1.3
 //! §7.5 conditions): a storyboard element's state (an Act's, an Event's, an Action's), the
-//! simulation time, and oscsim's periodic SimulationTimeEvery.
+//! simulation time, and oscsim's periodic SimulationTimeEvery and ElapsedSinceStart (counted
+//! from an Act's start).
 
 use scenario::{
     ByValueCondition, Condition, ConditionEdge, ConditionKind, Rule, StoryboardElementState,
@@ -64,13 +65,45 @@ pub(crate) fn every_from_start(
     step: f64,
     pos: scenario::SourcePos,
 ) -> Condition {
+    every_since(None, period, offset, step, pos)
+}
+
+/// `every(period, offset: offset)` counted from the latest start of Act `act` (`None`: the
+/// run's start): SimulationTimeEvery at the planner's step.
+pub(crate) fn every_since(
+    act: Option<&str>,
+    period: f64,
+    offset: f64,
+    step: f64,
+    pos: scenario::SourcePos,
+) -> Condition {
     Condition {
-        name: format!("every {period} offset {offset}"),
+        name: match act {
+            Some(a) => format!("every {period} offset {offset} since {a}"),
+            None => format!("every {period} offset {offset}"),
+        },
         condition_edge: ConditionEdge::None,
         delay: 0.0,
         kind: ConditionKind::ByValue(ByValueCondition::SimulationTimeEvery {
             period,
             offset,
+            step,
+            since: act.map(str::to_string),
+        }),
+        pos,
+    }
+}
+
+/// `elapsed(d)` counted from the latest start of Act `act`: oscsim's ElapsedSinceStart at the
+/// planner's step.
+pub(crate) fn elapsed_since(act: &str, d: f64, step: f64, pos: scenario::SourcePos) -> Condition {
+    Condition {
+        name: format!("elapsed {d} since {act}"),
+        condition_edge: ConditionEdge::None,
+        delay: 0.0,
+        kind: ConditionKind::ByValue(ByValueCondition::ElapsedSinceStart {
+            act: act.to_string(),
+            value: d,
             step,
         }),
         pos,

@@ -8,7 +8,7 @@ use super::planner::{unlocated, EventCtx, Planner};
 use super::types::When;
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Cond, Kind, Object, Phase, Timed};
-use crate::trigger::{act_state, every_from_start, sim_time};
+use crate::trigger::{act_state, elapsed_since, every_from_start, every_since, sim_time};
 
 impl Planner<'_> {
     /// A condition as a trigger, used in event context `ectx`; `depth` counts nested event
@@ -160,10 +160,34 @@ impl Planner<'_> {
                     }
                 }],
             }]),
-            EventCtx::Invocation => Err(site.err(
-                K::Unsupported,
-                "expected every(…) or elapsed(…) in an `on` handler of the scenario that is run, found one in an `on` handler of an invoked behavior (not run yet)",
-            )),
+            // From the invocation's start t0 (§7.3.10.4: the event context of an `on`
+            // directive is its scenario's instance, which lives from the invocation's start):
+            // at a start the plan knows, the run's clock from t0; after a run-time one, the
+            // engine's clock from the step in which the invocation's Act starts (its handlers'
+            // Acts start in that step, after it, so a point at t0 is seen).
+            EventCtx::Invocation(within) => {
+                let pos = site.pos.clone();
+                let dt = self.settings.dt;
+                let t0 = self
+                    .phases
+                    .iter()
+                    .find(|ph| ph.path == within)
+                    .and_then(|ph| ph.start.time());
+                Ok(vec![ConditionGroup {
+                    conditions: vec![match (tm, t0) {
+                        (Timed::Every(ev), Some(t0)) => {
+                            every_from_start(ev.period, t0 + ev.offset, dt, pos)
+                        }
+                        (Timed::Elapsed(d), Some(t0)) => {
+                            sim_time(t0 + d, scenario::Rule::GreaterOrEqual, pos)
+                        }
+                        (Timed::Every(ev), None) => {
+                            every_since(Some(within), ev.period, ev.offset, dt, pos)
+                        }
+                        (Timed::Elapsed(d), None) => elapsed_since(within, d, dt, pos),
+                    }],
+                }])
+            }
             // Only the first occurrence can end a wait or an until.
             EventCtx::Phase { until: true, .. } if first <= 0.0 => Err(site.err(
                 K::Value,

@@ -84,7 +84,7 @@ use std::collections::{HashMap, HashSet};
 
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{
-    ActorData, ActorKind, At, Kind, ModKind, Modifier, Object, Phase, Resolved, Route,
+    ActorData, ActorKind, At, EventSpec, Kind, ModKind, Modifier, Object, Phase, Resolved, Route,
 };
 use crate::road::PlanRoad;
 use crate::track::Track;
@@ -183,7 +183,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     for spec in &res.events {
         // An `on` handler's event context: the run's, or its invocation's (§7.3.10).
         let ectx = spec.handler.as_ref().map(|_| match &spec.within {
-            Some(_) => EventCtx::Invocation,
+            Some(within) => EventCtx::Invocation(within),
             None => EventCtx::Run,
         });
         // A handler's `call` is no event of the scenario.
@@ -366,32 +366,13 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     }
     // An `on` handler's event context starts with the run (the scenario's start) or with its
     // invocation; its event is translated (so checked) even when nothing waits on what it
-    // emits.
-    let mut handler_plans = Vec::new();
-    for (act, spec, site, ectx) in &handlers {
-        handler_plans.push(HandlerPlan {
-            act: act.clone(),
-            command_type: if spec.call.is_some() { "call" } else { "emit" },
-            event: spec.name.clone(),
-            trigger: p.condition(&spec.cond, 0, *ectx)?,
-            site: (*site).clone(),
-            span: None,
-        });
-    }
+    // emits: the run's handlers before the phases are planned, an invoked behavior's once its
+    // invocation's phase has its start (`every`/`elapsed` count from it, `EventCtx`).
+    let mut handler_plans = vec![None; handlers.len()];
+    plan_handlers(&p, &handlers, false, &mut handler_plans)?;
     let end = p.schedule(root, When::At(0.0), None, None, None)?;
-    // An invoked behavior's handlers run while its invocation's phase does.
-    for (h, (_, spec, site, _)) in handler_plans.iter_mut().zip(&handlers) {
-        let Some(within) = &spec.within else {
-            continue;
-        };
-        let phase = p.phases.iter().find(|ph| &ph.path == within).ok_or_else(|| {
-            site.err(
-                K::Unsupported,
-                format!("expected the invocation `{within}` of this `on` handler to be planned, found no phase of that name"),
-            )
-        })?;
-        h.span = Some((phase.start.clone(), phase.end.clone()));
-    }
+    plan_handlers(&p, &handlers, true, &mut handler_plans)?;
+    let handler_plans: Vec<HandlerPlan> = handler_plans.into_iter().flatten().collect();
     if end == When::Never && !settings.open_end {
         return Err(no_end(root));
     }
@@ -430,6 +411,46 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         phases: p.phases,
         handlers: handler_plans,
     })
+}
+
+/// An `on` handler to plan: its Act, its event, the directive and its event context.
+type Handler<'a> = (String, &'a EventSpec, &'a Site, EventCtx<'a>);
+
+/// Plans the handlers of invoked behaviors (`invoked`, once the phases are planned: each runs
+/// while its invocation's phase does) or those of the scenario that runs into `out`, at the
+/// handlers' indices.
+fn plan_handlers(
+    p: &Planner<'_>,
+    handlers: &[Handler<'_>],
+    invoked: bool,
+    out: &mut [Option<HandlerPlan>],
+) -> Result<(), Error> {
+    for (slot, (act, spec, site, ectx)) in out.iter_mut().zip(handlers) {
+        if spec.within.is_some() != invoked {
+            continue;
+        }
+        let span = match &spec.within {
+            Some(within) => {
+                let phase = p.phases.iter().find(|ph| &ph.path == within).ok_or_else(|| {
+                    site.err(
+                        K::Unsupported,
+                        format!("expected the invocation `{within}` of this `on` handler to be planned, found no phase of that name"),
+                    )
+                })?;
+                Some((phase.start.clone(), phase.end.clone()))
+            }
+            None => None,
+        };
+        *slot = Some(HandlerPlan {
+            act: act.clone(),
+            command_type: if spec.call.is_some() { "call" } else { "emit" },
+            event: spec.name.clone(),
+            trigger: p.condition(&spec.cond, 0, *ectx)?,
+            site: (*site).clone(),
+            span,
+        });
+    }
+    Ok(())
 }
 
 /// Roads for the unit tests of the plan's modules.

@@ -20,10 +20,10 @@ use crate::trigger::act_state;
 pub(super) enum EventCtx<'w> {
     /// An `on` handler of the scenario: the start of the run.
     Run,
-    /// An `on` handler of an invoked behavior: the start of the invocation (its handlers'
-    /// Acts run from the invocation's start to its end; an event it emits can only be waited
-    /// on inside the invocation, where its key is known).
-    Invocation,
+    /// An `on` handler of the behavior invoked at the phase of this path: the start of the
+    /// invocation (its handlers' Acts run from the invocation's start to its end; an event it
+    /// emits can only be waited on inside the invocation, where its key is known).
+    Invocation(&'w str),
     /// The `wait` or `until` of a phase: the phase's start.
     Phase {
         path: &'w str,

@@ -16,13 +16,13 @@
 //! | `c1 and c2`, `c1 or c2` | one ConditionGroup, two ConditionGroups |
 //! | `@e` of an `emit e` | StoryboardElementStateCondition: an emitting phase's startTransition |
 //! | `@e` of `event e is c` | the condition c |
-//! | `every(p, offset: o)` in an `on` handler | SimulationTimeEvery (oscsim's periodic condition): the step reaching o + k·p, k ≥ 0 |
+//! | `every(p, offset: o)` in an `on` handler | SimulationTimeEvery (oscsim's periodic condition): the step reaching o + k·p, k ≥ 0 (an invoked behavior's: t0 + o + k·p, t0 its invocation's start; after a run-time start counted from the step its Act starts in) |
 //! | `every(p, offset: o)` in a `wait`/`until` (also through `@e`) | its first occurrence: o after the phase's start |
-//! | `elapsed(d)` in an `on` handler or an event declaration | from d after the event context's start on: SimulationTime ≥ d (an `on`), d after the phase's start (a `wait`/`until`) |
+//! | `elapsed(d)` in an `on` handler or an event declaration | from d after the event context's start on: SimulationTime ≥ d (an `on`; an invoked behavior's ≥ t0 + d, or after a run-time start oscsim's ElapsedSinceStart on its Act), d after the phase's start (a `wait`/`until`) |
 //!
 //! `every` follows §7.3.10.4: occurrences at each multiple of the period from the start of the
 //! *event context* (an `on` handler's: the scenario's start, which for an invoked scenario is
-//! the invocation's start and is refused by the planner there; a `wait`'s or `until`'s: the
+//! the invocation's start, `plan::events`; a `wait`'s or `until`'s: the
 //! phase's start; a declared event's: that of the place it is used), all shifted by `offset`;
 //! a point between two steps moves to the next step.
 //!

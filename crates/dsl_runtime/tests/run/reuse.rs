@@ -125,12 +125,6 @@ fn invocation_errors_name_the_place() {
             && msg.ends_with("err_reuse_two_entries.osc:7:1"),
         "{msg}"
     );
-    let msg = error("err_reuse_on_every");
-    assert!(
-        msg.contains("found one in an `on` handler of an invoked behavior (not run yet)")
-            && msg.ends_with("err_reuse_on_every.osc:6:8"),
-        "{msg}"
-    );
     let msg = error("err_reuse_parameter_keep");
     assert!(
         msg.contains("this constraint conflicts with 1 other(s) at ")
@@ -139,6 +133,58 @@ fn invocation_errors_name_the_place() {
             && msg.contains("err_reuse_parameter_keep.osc:11:34"),
         "{msg}"
     );
+}
+
+/// every(…) and elapsed(…) in an invoked scenario's handlers count from the invocation's start,
+/// at a start the plan knows (1 s) and after a run-time one (3.35 s): reuse_on_timed.osc, every
+/// moment by hand there.
+#[test]
+fn timers_in_an_invoked_scenarios_handlers_count_from_the_invocations_start() {
+    let r = run("reuse_on_timed", 0, None);
+    phases_are(
+        &r,
+        &[
+            ("do.ego_part.first", (1.0, 3.0)),
+            ("do.ego_part.close", (3.0, 3.35)),
+            ("do.ego_part.second", (3.35, 5.35)),
+        ],
+    );
+    // The steps k·dt from a to b, both included.
+    let steps = |a: f64, b: f64| -> Vec<f64> {
+        let n = ((b - a) / super::support::DT).round() as usize;
+        (0..=n).map(|k| a + k as f64 * super::support::DT).collect()
+    };
+    for (invocation, tick, half, late) in [
+        (
+            "do.ego_part.first",
+            vec![1.0, 2.0],
+            vec![1.25, 2.75],
+            steps(2.5, 2.95),
+        ),
+        (
+            "do.ego_part.second",
+            vec![3.35, 4.35],
+            vec![3.60, 5.10],
+            steps(4.85, 5.30),
+        ),
+    ] {
+        for (handler, event, want) in [(0, "tick", tick), (1, "half", half), (2, "late", late)] {
+            let by = format!("{invocation}.on.{handler}/emit {invocation}.{event}");
+            let got = r.emissions(&by, &format!("{invocation}.{event}"));
+            assert!(
+                got.len() == want.len()
+                    && got.iter().zip(&want).all(|(g, w)| (g - w).abs() < T_TOL),
+                "{by}: {got:?}, expected {want:?}"
+            );
+        }
+    }
+    // Nothing else is emitted: 2 + 2 + 10 per invocation.
+    let all = r.commands.iter().filter(|c| c.2 == "emit").count();
+    assert_eq!(all, 28);
+    for (t, s) in [(3.35, 167.0), (5.35, 207.0)] {
+        let ego = r.at(t, "ego");
+        assert!((ego.s - s).abs() < S_TOL, "ego at {t} s: s = {}", ego.s);
+    }
 }
 
 #[test]

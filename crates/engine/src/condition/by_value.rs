@@ -17,13 +17,16 @@
 //!   controller's phase equals the one named (whitespace around it ignored); false for an
 //!   unknown signal or controller.
 //! * SimulationTimeEvery (oscsim extension for the DSL's `every(…)`, no XML form): true in the
-//!   step whose interval (t − step, t] reaches offset + k·period, k ≥ 0.
+//!   step whose interval (t − step, t] reaches offset + k·period, k ≥ 0; t the simulation time,
+//!   or with `since` the time since the step in which that Act last started (steps × step).
+//! * ElapsedSinceStart (oscsim extension for the DSL's `elapsed(d)` counted from an Act's start,
+//!   no XML form): the time since the step in which that Act last started is d or more.
 
-use scenario::{ByValueCondition, SourcePos, StoryboardElementState, StoryboardElementType};
+use scenario::{ByValueCondition, Rule, SourcePos, StoryboardElementState, StoryboardElementType};
 
 use super::rule::{compare, compare_value};
 use super::{ConditionContext, ConditionError, ConditionErrorKind};
-use crate::storyboard::{ElementKind, ElementState, Transition};
+use crate::storyboard::{ElementId, ElementKind, ElementState, StateView, Transition};
 use crate::world::date_time::parse_date_time;
 
 /// The raw value of a ByValueCondition.
@@ -96,12 +99,19 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
             period,
             offset,
             step,
-        } => Ok(every_reached(
-            ctx.simulation_time(),
-            *period,
-            *offset,
-            *step,
-        )),
+            since,
+        } => {
+            let t = match since {
+                None => Some(ctx.simulation_time()),
+                Some(act) => since_start(ctx, act, *step).map_err(err)?,
+            };
+            Ok(t.is_some_and(|t| every_reached(t, *period, *offset, *step)))
+        }
+        ByValueCondition::ElapsedSinceStart { act, value, step } => {
+            Ok(since_start(ctx, act, *step)
+                .map_err(err)?
+                .is_some_and(|t| compare(t, Rule::GreaterOrEqual, *value)))
+        }
         _ => Err(err(ConditionErrorKind::Unsupported {
             expected: "a ByValueCondition of OpenSCENARIO 1.3",
             found: "another kind",
@@ -136,6 +146,41 @@ fn element_kind(t: StoryboardElementType) -> (ElementKind, &'static str) {
     }
 }
 
+/// The one element of type `element_type` that `name` designates.
+fn designated(
+    view: &StateView<'_>,
+    element_type: StoryboardElementType,
+    name: &str,
+) -> Result<ElementId, ConditionErrorKind> {
+    let (kind, literal) = element_kind(element_type);
+    match view.find_ref(kind, name).as_slice() {
+        [one] => Ok(*one),
+        [] => Err(ConditionErrorKind::UnknownElement {
+            kind: literal,
+            name: name.to_string(),
+        }),
+        several => Err(ConditionErrorKind::AmbiguousElement {
+            kind: literal,
+            name: name.to_string(),
+            found: several.len(),
+        }),
+    }
+}
+
+/// The time since Act `act` last started (s), counted in steps of `step` s from the step of
+/// its startTransition (that step is 0 s); `None` before it ever started.
+fn since_start<C: ConditionContext + ?Sized>(
+    ctx: &C,
+    act: &str,
+    step: f64,
+) -> Result<Option<f64>, ConditionErrorKind> {
+    let view = ctx.storyboard();
+    let id = designated(&view, StoryboardElementType::Act, act)?;
+    Ok(view
+        .last_transition_step(id, Transition::Start)
+        .map(|k| view.step().saturating_sub(k) as f64 * step))
+}
+
 /// StoryboardElementStateCondition.
 fn element_state<C: ConditionContext + ?Sized>(
     ctx: &C,
@@ -144,23 +189,7 @@ fn element_state<C: ConditionContext + ?Sized>(
     state: StoryboardElementState,
 ) -> Result<bool, ConditionErrorKind> {
     let view = ctx.storyboard();
-    let (kind, literal) = element_kind(element_type);
-    let id = match view.find_ref(kind, name).as_slice() {
-        [one] => *one,
-        [] => {
-            return Err(ConditionErrorKind::UnknownElement {
-                kind: literal,
-                name: name.to_string(),
-            })
-        }
-        several => {
-            return Err(ConditionErrorKind::AmbiguousElement {
-                kind: literal,
-                name: name.to_string(),
-                found: several.len(),
-            })
-        }
-    };
+    let id = designated(&view, element_type, name)?;
     let in_state = |s| view.state(id) == s;
     let happened = |t| view.transition_happened(id, t);
     Ok(match state {

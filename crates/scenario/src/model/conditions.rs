@@ -283,15 +283,34 @@ pub enum ByValueCondition {
         value: String,
     },
     /// A periodic event on the simulation clock: ASAM OpenSCENARIO DSL 2.1 §7.3.10.4
-    /// `every(period, offset: offset)` counted from the start of the run. An oscsim extension
-    /// with no XML form (the DSL runtime writes it; the XML reader never does): it holds in the
-    /// step whose interval (t − step, t] reaches a trigger point offset + k·period, k ≥ 0 (the
-    /// standard moves a trigger point that falls between steps to the next step).
+    /// `every(period, offset: offset)` counted from the start of the run, or from the latest
+    /// start of an Act (`since`). An oscsim extension with no XML form (the DSL runtime writes
+    /// it; the XML reader never does): it holds in the step whose interval (t − step, t]
+    /// reaches a trigger point offset + k·period, k ≥ 0 (the standard moves a trigger point
+    /// that falls between steps to the next step), t the time since the run's start, or since
+    /// the step in which the Act last started (false before it ever started).
     SimulationTimeEvery {
         /// The period (s, above 0).
         period: f64,
         /// The first trigger point (s, 0 or more).
         offset: f64,
+        /// The engine's step the scenario was planned for (s, above 0).
+        step: f64,
+        /// The Act whose latest startTransition is the clock's 0 (`None`: the run's start):
+        /// the DSL's event context of an `on` handler of an invoked behavior, whose
+        /// invocation starts at a moment only the run knows.
+        since: Option<String>,
+    },
+    /// The time since the latest start of an Act is `value` s or more: ASAM OpenSCENARIO DSL
+    /// 2.1 §7.3.10.4 `elapsed(value)` in an `on` handler of an invoked behavior whose
+    /// invocation (the Act) starts at a moment only the run knows. An oscsim extension with no
+    /// XML form: true from the step `value` s (rounded up to a step) after the step in which the
+    /// Act last started, false before the Act ever started.
+    ElapsedSinceStart {
+        /// The Act.
+        act: String,
+        /// s (0 or more).
+        value: f64,
         /// The engine's step the scenario was planned for (s, above 0).
         step: f64,
     },
