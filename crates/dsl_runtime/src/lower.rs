@@ -11,7 +11,7 @@
 //! | `call m(a, b)` (a phase) | likewise a group `PATH/call` whose Event `PATH/call m(a, b)` runs a CustomCommandAction (type `call`, content `m(a, b)`, the arguments as JSON values): the host runs m then (`resolve::call`) |
 //! | `on c: emit e` / `call m(…)` (the i-th `on` of the scenario) | an Act `on.i` from the start until the root phase's end, with the same groups whose Events start at each occurrence of c (maximumExecutionCount unbounded) |
 //! | what actors do when a phase ends (`avoid_collisions(true)`'s controller deactivated) | an Act `PATH/end` whose StartTrigger is the phase's end |
-//! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step) |
+//! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step); an actor driving against s at s = L − u of its distance u along its direction of travel, in its lane of the left side (the engine heads it in the lane's driving direction) |
 //! | a plan over the roads of a route through points (`map.create_route`) | Init: each vehicle with a road of the plan ahead of it an AssignRouteAction over them (a Waypoint where it starts, one mid-way along each later road, in its lane) |
 //! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
 //! | a person, an animal | ScenarioObject with a Pedestrian of category `pedestrian`, `animal` |
@@ -45,6 +45,14 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
     for e in &plan.entities {
         let lane = e.track.lane(0.0);
         let (s, v) = e.track.at(0.0);
+        // Against s the track's s is the distance u = L − s along the direction of travel,
+        // its offset to the left of that direction (`crate::road`); the LanePosition's are
+        // the road's (offset along t).
+        let (s, side) = if e.against {
+            (plan.end - s, -1.0)
+        } else {
+            (s, 1.0)
+        };
         let (road_id, s) = plan.on_road(s);
         objects.push(ScenarioObject {
             name: e.name.clone(),
@@ -75,7 +83,9 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             });
             continue;
         }
-        let route = (plan.routed && e.data.kind == ActorKind::Vehicle)
+        // The plan's route runs in +s: none for an actor driving against s (whose roads the
+        // engine's default controller drives, `PlanRoad::against`).
+        let route = (plan.routed && e.data.kind == ActorKind::Vehicle && !e.against)
             .then(|| route_ahead(plan, lane, (road_id, s), &origin))
             .flatten()
             .map(|r| {
@@ -91,7 +101,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
                         road_id: road_id.to_string(),
                         lane_id: lane.to_string(),
                         s,
-                        offset: Some(e.track.offset(0.0)),
+                        offset: Some(side * e.track.offset(0.0)),
                         // §8.9.9 yaw relative to the road (s-axis): relative to the lane.
                         orientation: e.yaw.as_ref().map(|(h, _)| Orientation {
                             h: *h,

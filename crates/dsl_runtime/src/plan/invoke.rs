@@ -24,9 +24,38 @@ use crate::resolve::{Action, Arg, At, Invoke, ModKind, Modifier, Phase, Route};
 
 impl Planner<'_> {
     /// Plans one invocation: its actions, and the time its `position(…, at: end)` is met when
-    /// nothing else ends it.
+    /// nothing else ends it. An actor driving against s is planned on the plan's roads driven
+    /// that way (`crate::road`; what runs so: `against`).
     #[allow(clippy::too_many_arguments)]
     pub(super) fn plan_invoke(
+        &mut self,
+        p: &Phase,
+        inv: &Invoke,
+        mods: &[Modifier],
+        t0: Option<f64>,
+        end: Option<f64>,
+        len: Option<f64>,
+        out: &mut Vec<Planned>,
+        persist: &mut Vec<Planned>,
+        after: &mut Vec<Planned>,
+    ) -> Result<Option<When>, Error> {
+        let against = self
+            .index
+            .get(&inv.actor)
+            .is_some_and(|&i| self.entities[i].against);
+        let Some(view) = self.against_road.clone().filter(|_| against) else {
+            return self.plan_invoke_in_view(p, inv, mods, t0, end, len, out, persist, after);
+        };
+        super::against::check_runs(inv, mods, Some(t0))?;
+        let forward = std::mem::replace(&mut self.road, view);
+        let planned = self.plan_invoke_in_view(p, inv, mods, t0, end, len, out, persist, after);
+        self.road = forward;
+        planned
+    }
+
+    /// [`plan_invoke`](Self::plan_invoke) on the road view in `self.road`.
+    #[allow(clippy::too_many_arguments)]
+    fn plan_invoke_in_view(
         &mut self,
         p: &Phase,
         inv: &Invoke,

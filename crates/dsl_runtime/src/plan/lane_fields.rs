@@ -44,6 +44,8 @@ impl Planner<'_> {
             }
         }
         let lanes = self.road.driving_lanes(s);
+        // The road's own s, for messages (against s the plan's s is u, `crate::road`).
+        let road_s = self.road.road_at(s).1;
         let (lane, why) = match self.route_lanes.get(&f.path) {
             Some((l, why)) => (*l, why.clone()),
             None => {
@@ -52,7 +54,7 @@ impl Planner<'_> {
                     return Err(f.site.err(
                         K::Unsatisfiable,
                         format!(
-                            "expected a driving lane other than `{actor}`'s own (lane {own}) on road {} at s = {s:.2} m to draw `{}` from, found none",
+                            "expected a driving lane other than `{actor}`'s own (lane {own}) on road {} at s = {road_s:.2} m to draw `{}` from, found none",
                             self.road.road_at(s).0.id,
                             f.path
                         ),
@@ -67,14 +69,14 @@ impl Planner<'_> {
         self.on_plan_roads(f, lane, &why, s)?;
         if !lanes.contains(&lane) {
             let road = &self.road.road_at(s).0.id;
-            let against = if lane > 0 {
+            let against = if (lane > 0) != self.road.is_against() {
                 ", which runs against it"
             } else {
                 ""
             };
             return Err(f.site.err(
                 K::Unsatisfiable,
-                format!("expected a driving lane of road {road} in the direction `{actor}` drives (right-hand traffic: lanes {lanes:?}) at s = {s:.2} m for `{}`, found lane {lane} ({why}){against}", f.path),
+                format!("expected a driving lane of road {road} in the direction `{actor}` drives (right-hand traffic: lanes {lanes:?}) at s = {road_s:.2} m for `{}`, found lane {lane} ({why}){against}", f.path),
             ));
         }
         if lane == own {
@@ -127,13 +129,19 @@ impl Planner<'_> {
                     f.path
                 ),
             )),
-            Some((road, Some((a, b)))) if s < *a || s > *b => Err(f.site.err(
+            // The span is in +s; against s (`crate::road`) the action's s is u = L − s.
+            Some((road, Some((a, b))))
+                if self.road.forward_s(s) < *a || self.road.forward_s(s) > *b =>
+            {
+                Err(f.site.err(
                 K::Road,
                 format!(
-                    "expected the action to start in the lane section of `{}` (lane {lane} of road {road}, {why}: s from {a:.2} m to {b:.2} m), found it at s = {s:.2} m",
-                    f.path
+                    "expected the action to start in the lane section of `{}` (lane {lane} of road {road}, {why}: s from {a:.2} m to {b:.2} m), found it at s = {:.2} m",
+                    f.path,
+                    self.road.forward_s(s)
                 ),
-            )),
+            ))
+            }
             _ => Ok(()),
         }
     }

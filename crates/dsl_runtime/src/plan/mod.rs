@@ -47,6 +47,7 @@
 //! | `types` | the plan's data, limits and tolerances |
 //! | `map_crossings` | the way across a crosswalk of the map joining two lanes (`crossing_connects`) |
 //! | `lateral` | `lateral(…)` as an offset in the lane or beside another actor |
+//! | `against` | what runs for actors driving against s, and relations between actors of opposite directions |
 //! | `place` | initial placement from `at: start`/`all` constraints |
 //! | `route` | `along(…)` routes against the planned motion; the road named routes are on |
 //! | `checks` | `keep_*`, `physical_movement`, `yaw`/`orientation` against the planned motion |
@@ -91,6 +92,7 @@ use crate::track::Track;
 
 mod acceleration_follow;
 mod action_args;
+mod against;
 mod car_following;
 mod checks;
 mod crossing_walk;
@@ -170,6 +172,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         draws: RefCell::new(res.draws.clone()),
         engine_moved: HashMap::new(),
         gaps: HashMap::new(),
+        against_road: None,
     };
     root.walk(&mut |ph| {
         if let Kind::Emit(e) = &ph.kind {
@@ -306,39 +309,59 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
             _ => None,
         };
-        // A named route of the first phase places the actor at its start.
+        // A named route of the first phase places the actor at its start; a lane driven in
+        // −s (right-hand traffic: a positive id) puts the actor against s, at the distance u
+        // = L − s along its direction of travel (`crate::road`), from where its lane starts in
+        // that direction (a lane section's end in s).
         let route = first
             .and_then(|f| p.alongs.get(f))
             .into_iter()
             .flatten()
-            .find_map(|(at, a)| match (&a.route, at) {
-                (
-                    Route::Lane {
-                        road: id, lane, s, ..
-                    },
-                    At::Start | At::All,
-                ) => {
-                    // On a road of the plan (`route::on_plan_road`, checked above).
-                    Some((*lane, road.plan_s(id, *s).unwrap_or(*s) + a.start_offset))
-                }
-                // A lane field the map bound: from its lane section's start; a road field:
-                // from the road's start, in the lane the modifier bound there.
-                // A crossing: at its start, on the start lane's centre.
-                (Route::Crossing { field }, At::Start | At::All) => p
-                    .crossings
-                    .get(field)
-                    .map(|c| (c.crossing.start.0, c.road_start + c.crossing.start.1)),
-                (Route::Free { field, .. }, At::Start | At::All) => {
-                    match (p.lane_roads.get(field), p.route_lanes.get(field)) {
-                        (Some((_, Some((from, _)))), Some((lane, _))) => Some((*lane, *from)),
-                        _ => p
-                            .route_roads
-                            .get(field)
-                            .map(|(lane, (from, _), _)| (*lane, *from)),
+            .find_map(|(at, a)| {
+                let (lane, s, against) = match (&a.route, at) {
+                    (
+                        Route::Lane {
+                            road: id, lane, s, ..
+                        },
+                        At::Start | At::All,
+                    ) => {
+                        // On a road of the plan (`route::on_plan_road`, checked above).
+                        let s0 = road.plan_s(id, *s).unwrap_or(*s);
+                        let from = if *lane > 0 { road.length() - s0 } else { s0 };
+                        (*lane, from + a.start_offset, *lane > 0)
                     }
-                }
-                _ => None,
+                    // A lane field the map bound: from its lane section's start; a road field:
+                    // from the road's start, in the lane the modifier bound there.
+                    // A crossing: at its start, on the start lane's centre.
+                    (Route::Crossing { field }, At::Start | At::All) => p
+                        .crossings
+                        .get(field)
+                        .map(|c| (c.crossing.start.0, c.road_start + c.crossing.start.1, false))?,
+                    (Route::Free { field, .. }, At::Start | At::All) => {
+                        match (p.lane_roads.get(field), p.route_lanes.get(field)) {
+                            (Some((_, Some((_, to)))), Some((lane, _))) if *lane > 0 => {
+                                (*lane, road.length() - to, true)
+                            }
+                            (Some((_, Some((from, _)))), Some((lane, _))) => (*lane, *from, false),
+                            _ => p
+                                .route_roads
+                                .get(field)
+                                .map(|(lane, (from, _), _)| (*lane, *from, false))?,
+                        }
+                    }
+                    _ => return None,
+                };
+                Some(((lane, s), against.then(|| a.site.clone())))
             });
+        let (route, against) = match route {
+            Some((r, against)) => (Some(r), against),
+            None => (None, None),
+        };
+        if let Some(site) = &against {
+            if p.against_road.is_none() {
+                p.against_road = Some(road.against().map_err(|m| site.err(K::Road, m))?);
+            }
+        }
         to_place.push(ToPlace {
             route,
             name: e.name.clone(),
@@ -354,12 +377,15 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                 ActorKind::Walker(scenario::PedestrianCategory::Pedestrian)
             ),
             fixed,
+            against: against.is_some(),
         });
     }
+    against::check_references(&leaves, &to_place, &p.index)?;
     let entity = |path: &str| p.index.contains_key(path).then(|| path.to_string());
-    let starts = place(road, &to_place, &entity)?;
-    for e in &mut p.entities {
+    let starts = place(road, p.against_road.as_ref(), &to_place, &entity)?;
+    for (e, q) in p.entities.iter_mut().zip(&to_place) {
         let s = starts[&e.name];
+        e.against = q.against;
         e.track = Track::new(s.s, s.v, s.lane);
         e.track.set_offset(0.0, s.offset);
         p.last_v.insert(e.name.clone(), s.v);

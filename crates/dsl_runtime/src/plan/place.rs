@@ -70,6 +70,9 @@ pub(crate) struct ToPlace<'m> {
     /// Where a stationary object stands (its `location(pose)` on the road): nothing else
     /// places it.
     pub fixed: Option<Start>,
+    /// It drives against s (its route's lane is driven in −s): placed on the plan's roads
+    /// driven that way (`crate::road`), its s the distance u along its direction of travel.
+    pub against: bool,
 }
 
 /// Where an actor starts.
@@ -93,12 +96,19 @@ fn find<'m>(p: &ToPlace<'m>, kind: ModKind) -> Option<&'m Modifier> {
         .copied()
 }
 
-/// Places every actor of `all`.
+/// Places every actor of `all`: on `forward`, or on `against` (the same roads driven against
+/// s, `crate::road`) for an actor that drives so; relations between actors of opposite
+/// directions are refused before (`against::check_references`).
 pub(crate) fn place(
-    road: &PlanRoad<'_>,
+    forward: &PlanRoad<'_>,
+    against: Option<&PlanRoad<'_>>,
     all: &[ToPlace<'_>],
     entity: &dyn Fn(&str) -> Option<String>,
 ) -> Result<HashMap<String, Start>, Error> {
+    let view = |p: &ToPlace<'_>| match (p.against, against) {
+        (true, Some(a)) => a,
+        _ => forward,
+    };
     let mut lane: HashMap<String, i32> = HashMap::new();
     let mut s: HashMap<String, (f64, bool)> = HashMap::new();
     let mut v: HashMap<String, f64> = HashMap::new();
@@ -127,6 +137,7 @@ pub(crate) fn place(
     for _round in 0..=all.len() {
         let mut progress = false;
         for p in all {
+            let road = view(p);
             // Speed.
             if !v.contains_key(&p.name) {
                 let value = match find(p, ModKind::Speed) {
@@ -278,18 +289,22 @@ pub(crate) fn place(
             break;
         }
     }
-    // Shift floating actors behind the start of the road.
-    let rearmost = all
-        .iter()
-        .filter_map(|p| s.get(&p.name).filter(|x| x.1).map(|x| x.0 - p.rear))
-        .fold(f64::INFINITY, f64::min);
-    let shift = if rearmost.is_finite() {
-        FLOAT_REAR - rearmost
-    } else {
-        0.0
+    // Shift floating actors behind the start of the road (in each direction of travel).
+    let shift = |against: bool| {
+        let rearmost = all
+            .iter()
+            .filter(|p| p.against == against)
+            .filter_map(|p| s.get(&p.name).filter(|x| x.1).map(|x| x.0 - p.rear))
+            .fold(f64::INFINITY, f64::min);
+        if rearmost.is_finite() {
+            FLOAT_REAR - rearmost
+        } else {
+            0.0
+        }
     };
     let mut out = HashMap::new();
     for p in all {
+        let road = view(p);
         if let Some(f) = p.fixed {
             out.insert(p.name.clone(), f);
             continue;
@@ -313,7 +328,7 @@ pub(crate) fn place(
                 ),
             ));
         }
-        let sv = if *fl { sv + shift } else { *sv };
+        let sv = if *fl { sv + shift(p.against) } else { *sv };
         if sv - p.rear < 0.0 || sv + p.front > road.length() {
             let site = p.mods.first().map_or(&p.site, |m| &m.site);
             return Err(site.err(
@@ -342,7 +357,7 @@ pub(crate) fn place(
             },
         );
     }
-    beside_others(road, all, entity, &mut out)?;
+    beside_others(forward, all, entity, &mut out)?;
     Ok(out)
 }
 

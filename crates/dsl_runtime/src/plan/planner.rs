@@ -84,6 +84,9 @@ pub(crate) struct Planner<'a> {
     pub engine_moved: HashMap<String, Option<f64>>,
     /// Each actor's last gap action: its reference and what it keeps.
     pub gaps: HashMap<String, (String, Gap)>,
+    /// The plan's roads driven against s (`PlanRoad::against`), when an actor drives them
+    /// so: the road the invocations of such an actor are planned on (`plan_invoke`).
+    pub against_road: Option<PlanRoad<'a>>,
 }
 
 /// What a gap action keeps (`gap_actions`).
@@ -164,6 +167,7 @@ impl Planner<'_> {
                     data,
                     track: Track::new(0.0, 0.0, -1),
                     yaw: None,
+                    against: false,
                 });
             }
             names.push(n);

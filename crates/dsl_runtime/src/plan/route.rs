@@ -180,7 +180,8 @@ pub(crate) fn check(
     Ok(at_run_time)
 }
 
-/// Checks that a named route lies on a road of the plan, in one of its driving lanes in +s.
+/// Checks that a named route lies on a road of the plan, in one of its driving lanes (either
+/// direction: an actor along a lane driven in −s drives against s, `crate::road`).
 pub(crate) fn on_plan_road(road: &PlanRoad<'_>, along: &Along) -> Result<(), Error> {
     let Route::Lane {
         road: id,
@@ -215,10 +216,19 @@ pub(crate) fn on_plan_road(road: &PlanRoad<'_>, along: &Along) -> Result<(), Err
         ));
     }
     let lanes = road.driving_lanes(at + s);
-    if !lanes.contains(lane) {
+    // A lane of the left side is driven against s (`crate::road`); its start is on the view
+    // of the roads driven so, whose u = L − s holds the same point.
+    let back: Vec<i32> = own
+        .lane_section_at(*s)
+        .left
+        .iter()
+        .filter(|l| l.lane_type.is_drivable())
+        .map(|l| l.id)
+        .collect();
+    if !lanes.contains(lane) && !back.contains(lane) {
         return Err(along.site.err(
             K::Road,
-            format!("expected a driving lane of road {id} in the direction of its reference line (right-hand traffic: lanes {lanes:?}) at s = {s} m, found lane {lane}"),
+            format!("expected a driving lane of road {id} (right-hand traffic: lanes {lanes:?} driven in +s, {back:?} in -s) at s = {s} m, found lane {lane}"),
         ));
     }
     Ok(())

@@ -154,6 +154,9 @@ pub(crate) struct Entity {
     /// `orientation(…)` that asks for it in its first phase, when other than 0 (§8.9.9; the
     /// actor stands throughout the run).
     pub yaw: Option<(f64, Site)>,
+    /// It drives against s (`crate::road`): its track's s is the distance u = L − s along its
+    /// direction of travel, its offsets are to the left of that direction.
+    pub against: bool,
 }
 
 /// The whole plan.

@@ -75,6 +75,41 @@ fn next(net: &RoadNetwork, ri: usize) -> Option<usize> {
     found
 }
 
+/// Whether the driving lanes of road `after`'s left side (right-hand traffic: driven in −s)
+/// at its start run on, by their first lane link, onto road `before` at its end in lanes of
+/// the same ids: the roads of a chain driven against s. Else what is found, as the rest of a
+/// sentence "expected …, found …".
+pub(crate) fn runs_back(net: &RoadNetwork, after: usize, before: usize) -> Result<(), String> {
+    let road = &net.roads()[after];
+    let Some(first) = road.lane_sections.first() else {
+        return Ok(());
+    };
+    let last = net.roads()[before].lane_sections.len().saturating_sub(1);
+    for lane in first
+        .left
+        .iter()
+        .filter(|l| l.lane_type.is_drivable())
+        .map(|l| l.id)
+    {
+        let h = LaneHandle {
+            road: after as u32,
+            section: 0,
+            lane,
+        };
+        let Some(n) = net.successors(h).first().copied() else {
+            continue;
+        };
+        let to = &net.roads()[n.road as usize].id;
+        if n.road as usize != before || n.lane != lane || n.section as usize != last {
+            return Err(format!(
+                "lane {lane} of road {} leading onto lane {} of road {to}",
+                road.id, n.lane
+            ));
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

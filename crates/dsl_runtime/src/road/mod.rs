@@ -21,6 +21,8 @@ mod path;
 
 pub(crate) use path::route_roads;
 
+use std::f64::consts::PI;
+
 use opendrive::{LaneType, Road, RoadNetwork};
 
 /// One road of a plan and the plan's s at its start.
@@ -39,6 +41,9 @@ pub(crate) struct PlanRoad<'a> {
     /// The roads come from a route through points (`through`), which may take a junction's
     /// connection other than the first.
     routed: bool,
+    /// The view of an actor driving the roads against s (see the module doc): every s the
+    /// methods take or give is u = L − s, every t is −t, the lanes are the left side's.
+    against: bool,
 }
 
 impl<'a> PlanRoad<'a> {
@@ -93,6 +98,52 @@ impl<'a> PlanRoad<'a> {
             segments,
             net,
             routed: false,
+            against: false,
+        }
+    }
+
+    /// The same roads driven against s (see the module doc), or why they cannot be: over
+    /// several roads, a driving lane of the left side that does not run on onto the road
+    /// before it in the same lane (the rest of a sentence "expected …, found …").
+    pub(crate) fn against(&self) -> Result<Self, String> {
+        let index = |r: &Road| self.net.roads().iter().position(|q| q.id == r.id);
+        for w in self.segments.windows(2) {
+            let (Some(before), Some(after)) = (index(w[0].road), index(w[1].road)) else {
+                continue;
+            };
+            if let Err(found) = chain::runs_back(self.net, after, before) {
+                return Err(format!(
+                    "expected the driving lanes of the left side (driven in -s) to run on from road {} onto road {} in the same lanes, as the plan's roads are driven in +s, found {found}",
+                    w[1].road.id, w[0].road.id
+                ));
+            }
+        }
+        Ok(PlanRoad {
+            against: true,
+            ..self.clone()
+        })
+    }
+
+    /// Whether this is the view of an actor driving against s.
+    pub(crate) fn is_against(&self) -> bool {
+        self.against
+    }
+
+    /// The plan's s of the distance `u` along this view's direction (the same in +s).
+    pub(crate) fn forward_s(&self, u: f64) -> f64 {
+        if self.against {
+            self.length() - u
+        } else {
+            u
+        }
+    }
+
+    /// +1 in +s, −1 against s: the sign of t, and of s along the direction of travel.
+    fn sign(&self) -> f64 {
+        if self.against {
+            -1.0
+        } else {
+            1.0
         }
     }
 
@@ -106,40 +157,51 @@ impl<'a> PlanRoad<'a> {
         self.net
     }
 
-    /// The OpenDRIVE id of the start road.
+    /// The OpenDRIVE id of the start road (in the view's direction: against s, the plan's
+    /// last road).
     pub(crate) fn id(&self) -> &str {
-        &self.segments[0].road.id
+        let g = if self.against {
+            self.segments.last()
+        } else {
+            self.segments.first()
+        };
+        // `segments` is never empty.
+        g.map_or("", |g| g.road.id.as_str())
     }
 
-    /// The road ids in driving order.
+    /// The road ids in driving order (against s, the plan's last road first).
     pub(crate) fn ids(&self) -> Vec<String> {
-        self.segments.iter().map(|g| g.road.id.clone()).collect()
+        let mut ids: Vec<String> = self.segments.iter().map(|g| g.road.id.clone()).collect();
+        if self.against {
+            ids.reverse();
+        }
+        ids
     }
 
-    /// The plan's s of s = `s` on road `id`, if that road is one of the plan's.
+    /// The plan's s (against s: u) of s = `s` on road `id`, if that road is one of the plan's.
     pub(crate) fn plan_s(&self, id: &str, s: f64) -> Option<f64> {
         self.segments
             .iter()
             .find(|g| g.road.id == id)
-            .map(|g| g.start + s)
+            .map(|g| self.forward_s(g.start + s))
     }
 
-    /// The plan's s of `s0` and `s1` on road `id`, when the plan drives it.
+    /// The plan's s (against s: u) of `s0` and `s1` on road `id`, when the plan drives it,
+    /// the lesser first.
     pub(crate) fn plan_span(&self, id: &str, s0: f64, s1: f64) -> Option<(f64, f64)> {
-        self.segments
-            .iter()
-            .find(|g| g.road.id == id)
-            .map(|g| (g.start + s0, g.start + s1))
+        let (a, b) = (self.plan_s(id, s0)?, self.plan_s(id, s1)?);
+        Some((a.min(b), a.max(b)))
     }
 
-    /// The road and its own s at the plan's s `s` (the later road at a joint; clamped to the
-    /// chain's ends).
+    /// The road and its own s at the plan's s `s` (against s: u), the later road in the
+    /// direction of travel at a joint; clamped to the chain's ends.
     pub(crate) fn road_at(&self, s: f64) -> (&'a Road, f64) {
+        let s = self.forward_s(s);
         let g = self.segment(s);
         (g.road, (s - g.start).clamp(0.0, g.road.length))
     }
 
-    /// `(road id, plan s at its start)` of every road, in driving order.
+    /// `(road id, plan s at its start)` of every road, in +s order (in either view).
     pub(crate) fn starts(&self) -> Vec<(String, f64)> {
         self.segments
             .iter()
@@ -147,13 +209,21 @@ impl<'a> PlanRoad<'a> {
             .collect()
     }
 
+    /// The segment at the plan's s `s` (in +s), the later one in the view's direction at a
+    /// joint.
     fn segment(&self, s: f64) -> Segment<'a> {
         // `segments` is never empty.
-        let i = self
-            .segments
-            .iter()
-            .rposition(|g| g.start <= s)
-            .unwrap_or(0);
+        let i = if self.against {
+            self.segments
+                .iter()
+                .position(|g| s <= g.start + g.road.length)
+                .unwrap_or(self.segments.len() - 1)
+        } else {
+            self.segments
+                .iter()
+                .rposition(|g| g.start <= s)
+                .unwrap_or(0)
+        };
         self.segments[i]
     }
 
@@ -164,27 +234,33 @@ impl<'a> PlanRoad<'a> {
             .map_or(0.0, |g| g.start + g.road.length)
     }
 
-    /// Driving lanes of the right side at `s`, rightmost first (−3, −2, −1).
+    /// Driving lanes of the right side in the direction of travel at `s`, rightmost first
+    /// (−3, −2, −1; against s the left side's, 2, 1).
     pub(crate) fn driving_lanes(&self, s: f64) -> Vec<i32> {
-        self.right_lanes(s, LaneType::is_drivable)
+        self.side_lanes(s, LaneType::is_drivable)
     }
 
-    /// Sidewalks of the right side at `s`, rightmost first.
+    /// Sidewalks of the right side in the direction of travel at `s`, rightmost first.
     pub(crate) fn sidewalks(&self, s: f64) -> Vec<i32> {
-        self.right_lanes(s, |t| *t == LaneType::Sidewalk)
+        self.side_lanes(s, |t| *t == LaneType::Sidewalk)
     }
 
-    /// Lanes of the right side at `s` whose type passes `keep`, rightmost first.
-    fn right_lanes(&self, s: f64, keep: impl Fn(&LaneType) -> bool) -> Vec<i32> {
+    /// Lanes of the right side in the direction of travel at `s` (against s: the road's left
+    /// side) whose type passes `keep`, rightmost (outermost) first.
+    fn side_lanes(&self, s: f64, keep: impl Fn(&LaneType) -> bool) -> Vec<i32> {
         let (road, s) = self.road_at(s);
-        let mut ids: Vec<i32> = road
-            .lane_section_at(s)
-            .right
+        let section = road.lane_section_at(s);
+        let side = if self.against {
+            &section.left
+        } else {
+            &section.right
+        };
+        let mut ids: Vec<i32> = side
             .iter()
             .filter(|l| keep(&l.lane_type))
             .map(|l| l.id)
             .collect();
-        ids.sort_unstable();
+        ids.sort_unstable_by_key(|id| std::cmp::Reverse(id.abs()));
         ids
     }
 
@@ -225,21 +301,24 @@ impl PlanRoad<'_> {
             let here = g.road.pose(p.s.clamp(0.0, g.road.length), p.t);
             let d = here.map_or(f64::INFINITY, |q| (q.x - x).hypot(q.y - y));
             if !best.as_ref().is_some_and(|(b, _)| d >= *b) {
-                best = Some((d, (p.lane_id, g.start + p.s, p.offset)));
+                let u = self.forward_s(g.start + p.s);
+                best = Some((d, (p.lane_id, u, self.sign() * p.offset)));
             }
         }
         best.map(|(_, found)| found)
     }
 
-    /// t of the centre of lane `lane` at `s` (m); 0 where the lane is missing.
+    /// t of the centre of lane `lane` at `s` (m; against s to the left of that direction);
+    /// 0 where the lane is missing.
     pub(crate) fn lane_center(&self, lane: i32, s: f64) -> f64 {
         let (road, s) = self.road_at(s);
-        road.lane_span(lane, s).map_or(0.0, |sp| sp.center())
+        self.sign() * road.lane_span(lane, s).map_or(0.0, |sp| sp.center())
     }
 
     /// The driving lane of the right side whose span holds `t` at `s`, if any.
     pub(crate) fn lane_holding(&self, s: f64, t: f64) -> Option<i32> {
         let (road, local) = self.road_at(s);
+        let t = self.sign() * t;
         self.driving_lanes(s).into_iter().find(|l| {
             road.lane_span(*l, local).is_ok_and(|sp| {
                 let (a, b) = (sp.inner.min(sp.outer), sp.inner.max(sp.outer));
@@ -248,14 +327,18 @@ impl PlanRoad<'_> {
         })
     }
 
-    /// World x, y and the road's heading (rad, towards +s) at the road point (s, t) (the
-    /// plan's s), if s is on the plan's roads.
+    /// World x, y and the road's heading (rad, towards +s; against s towards −s) at the road
+    /// point (s, t) (the plan's s; against s u and t to the left of that direction), if s is
+    /// on the plan's roads.
     pub(crate) fn world_pose(&self, s: f64, t: f64) -> Option<(f64, f64, f64)> {
         if !(0.0..=self.length()).contains(&s) {
             return None;
         }
         let (road, s) = self.road_at(s);
-        road.pose(s, t).ok().map(|p| (p.x, p.y, p.h))
+        let turn = if self.against { PI } else { 0.0 };
+        road.pose(s, self.sign() * t)
+            .ok()
+            .map(|p| (p.x, p.y, opendrive::normalize_angle(p.h + turn)))
     }
 
     /// Width of lane `lane` at `s` (m); 0 where the lane is missing.
@@ -269,11 +352,24 @@ impl PlanRoad<'_> {
 const LENGTH_STEP: f64 = 0.25;
 
 impl PlanRoad<'_> {
+    /// The same roads in +s (the view's lengths along lanes are those in +s, reversed).
+    fn forward(&self) -> Self {
+        PlanRoad {
+            against: false,
+            ..self.clone()
+        }
+    }
+
     /// Length of the centre line of lane `lane` from `s0` to `s1` (negative when s1 < s0): the
     /// distance a vehicle following the lane covers, which differs from s on curves (a lane
     /// on the outside of a bend is longer). Summed over chords every
     /// [`LENGTH_STEP`] m of s; outside the roads, or where the lane is missing, 1 m per m of s.
     pub(crate) fn lane_distance(&self, lane: i32, s0: f64, s1: f64) -> f64 {
+        if self.against {
+            return -self
+                .forward()
+                .lane_distance(lane, self.forward_s(s0), self.forward_s(s1));
+        }
         if s1 < s0 {
             return -self.lane_distance(lane, s1, s0);
         }
@@ -289,6 +385,10 @@ impl PlanRoad<'_> {
 
     /// The s reached from `s0` after `distance` along lane `lane`'s centre line.
     pub(crate) fn s_after(&self, lane: i32, s0: f64, distance: f64) -> f64 {
+        if self.against {
+            let s = self.forward().s_after(lane, self.forward_s(s0), -distance);
+            return self.forward_s(s);
+        }
         let dir = if distance < 0.0 { -1.0 } else { 1.0 };
         let mut left = distance.abs();
         let mut s = s0;
@@ -349,5 +449,35 @@ mod tests {
         assert!((d - 101.75).abs() < 1e-4, "{d}");
         assert!((road.s_after(-1, 0.0, 101.75) - 100.0).abs() < 1e-4);
         assert!((road.s_after(-1, 20.0, 50.875) - 70.0).abs() < 1e-4);
+    }
+
+    #[test]
+    fn the_view_against_s_measures_from_the_roads_end_to_the_left_of_its_direction() {
+        // The same arc with lane 1 (3.5 m, driven in -s) on its left side, centred at t =
+        // 1.75 m, radius 98.25 m: 98.25 m long. Against s, u = 100 - s, t is -t, heading +pi.
+        let xodr = r#"<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="7" length="100" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="100"><arc curvature="0.01"/></geometry></planView>
+<lanes><laneSection s="0"><left><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road></OpenDRIVE>"#;
+        let net = RoadNetwork::from_str(xodr, std::path::Path::new("arc.xodr")).expect("parses");
+        let road = PlanRoad::pick(&net).expect("a road");
+        let back = road.against().expect("one road");
+        assert_eq!(back.driving_lanes(10.0), [1]);
+        assert_eq!(back.numbered(1, false, 10.0, false), Some(1));
+        assert!((back.lane_center(1, 30.0) + 1.75).abs() < 1e-12);
+        assert!((back.forward_s(30.0) - 70.0).abs() < 1e-12);
+        assert_eq!(back.road_at(30.0).1, 70.0);
+        // u = 0 is the road's end, s = 100 m: heading 1 rad (100 m of curvature 0.01) + pi.
+        let (x, y, h) = back.world_pose(0.0, -1.75).expect("on the road");
+        let r = 100.0 - 1.75;
+        assert!((x - r * 1f64.sin()).abs() < 1e-9 && (y - (100.0 - r * 1f64.cos())).abs() < 1e-9);
+        assert!((h - opendrive::normalize_angle(1.0 + PI)).abs() < 1e-9);
+        assert_eq!(back.lane_holding(50.0, -1.75), Some(1));
+        let d = back.lane_distance(1, 0.0, 100.0);
+        assert!((d - 98.25).abs() < 1e-4, "{d}");
+        assert!((back.s_after(1, 20.0, 49.125) - 70.0).abs() < 1e-4);
+        assert_eq!(back.plan_span("7", 10.0, 40.0), Some((60.0, 90.0)));
+        let (lane, u, offset) = back.locate(x, y).expect("on the road");
+        assert_eq!(lane, 1);
+        assert!(u.abs() < 1e-6 && offset.abs() < 1e-6, "{u} {offset}");
     }
 }

@@ -17,6 +17,7 @@ mod lateral;
 mod lateral_actions;
 mod map;
 mod map_modifiers;
+mod opposite;
 mod orientation;
 mod position_actions;
 mod reuse;

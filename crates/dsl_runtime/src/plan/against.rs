@@ -1,0 +1,169 @@
+//! Actors that drive against s (ASAM OpenDRIVE 1.8 §11.2: with right-hand traffic the lanes of
+//! the left side, positive ids, are driven towards −s; ASAM OpenSCENARIO DSL 2.1 §8.9 movement
+//! modifiers): what the planner runs for them, and relations between actors of opposite
+//! directions.
+//!
+//! An actor whose first phase is `along(l)` of a lane driven in −s (a lane field the map's
+//! modifiers bind, an odr point) drives the plan's roads against s: it is placed and planned
+//! on the view `PlanRoad::against` gives, in the distance u along its direction of travel
+//! (`crate::road`), and the lowering maps its start back to (road, s). The planner's
+//! arithmetic is the same in either direction, so what runs is what only reads the actor's
+//! own track and its road view: `drive()`/`move()`, `change_speed`, `keep_speed`,
+//! `remain_stationary`, `change_lane`, `follow_lane`, with `speed`, `change_speed`,
+//! `acceleration(a)`, `position(d)`, `lane(n)`, `change_lane`, `keep_lane`, `keep_speed`,
+//! `keep_position`, `distance`, `along`, `physical_movement`. The rest is an error at the
+//! action or modifier (not run yet), never planned in the wrong direction: an offset across the
+//! lane (`lateral`, `yaw`/`orientation`, a lane change's offset), the path, position and gap
+//! actions, `avoid_collisions(true)`, a group, and a phase that starts on a run-time condition
+//! (the engine's checks measure s in +s).
+//!
+//! Between actors of opposite directions: the speed relations (`speed(…, faster_than /
+//! slower_than / same_as: x)`) run, a speed having no direction; every other relation
+//! (`position(d, ahead_of/behind: x)`, `lane(same_as/side_of/left_of/right_of: x)`, a gap or
+//! a lane change relative to x) is an error at the argument: §8.9 places the actor "ahead of"
+//! or "behind" x, or in a lane counted from x's, along the direction both travel, and two
+//! actors driving opposite ways share none.
+
+use std::collections::HashMap;
+
+use super::place::ToPlace;
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{Action, Invoke, Kind, ModKind, Modifier, Phase};
+
+/// The speed relations, which hold between actors of any directions.
+const SPEED_REFERENCES: [&str; 3] = ["faster_than", "slower_than", "same_as"];
+
+/// Checks, before any actor is placed, that every invocation runs for the direction its
+/// actors drive and relates no two actors of opposite directions (see the module doc).
+/// `all`: every actor to place, with its direction; `index`: the entities by name.
+pub(crate) fn check_references(
+    leaves: &[&Phase],
+    all: &[ToPlace<'_>],
+    index: &HashMap<String, usize>,
+) -> Result<(), Error> {
+    let against: HashMap<&str, bool> = all.iter().map(|p| (p.name.as_str(), p.against)).collect();
+    if !against.values().any(|a| *a) {
+        return Ok(());
+    }
+    let dir = |name: &str| against.get(name).copied().unwrap_or(false);
+    for leaf in leaves {
+        let Kind::Invoke(inv) = &leaf.kind else {
+            continue;
+        };
+        // The invocation's actor: an entity, or a group (whose members are entities).
+        let actor_against = if index.contains_key(&inv.actor) {
+            dir(&inv.actor)
+        } else {
+            let prefix = format!("{}.", inv.actor);
+            let members: Vec<&str> = against
+                .keys()
+                .filter(|n| n.starts_with(&prefix))
+                .copied()
+                .collect();
+            if members.iter().any(|m| dir(m)) {
+                return Err(leaf.site.err(
+                    K::Unsupported,
+                    format!("expected a vehicle driving against s, found group `{}` (groups against s are not run yet: their formation is placed in +s)", inv.actor),
+                ));
+            }
+            false
+        };
+        if actor_against {
+            check_runs(inv, &inv.modifiers, None)?;
+        }
+        let args = inv.args.iter().map(|(n, a)| (None, n, a)).chain(
+            inv.modifiers
+                .iter()
+                .flat_map(|m| m.args.iter().map(move |(n, a)| (Some(m), n, a))),
+        );
+        for (m, key, a) in args {
+            let Some(x) = a.path.as_deref().filter(|x| index.contains_key(*x)) else {
+                continue;
+            };
+            if dir(x) == actor_against || x == inv.actor {
+                continue;
+            }
+            if m.is_some_and(|m| m.kind == ModKind::Speed)
+                && SPEED_REFERENCES.contains(&key.as_str())
+            {
+                continue;
+            }
+            let how = |a: bool| if a { "against s" } else { "in +s" };
+            let what = m.map_or_else(
+                || format!("{}(…)", inv.action),
+                |m| format!("{}(…)", m.name),
+            );
+            return Err(a.site.err(
+                K::Unsupported,
+                format!(
+                    "expected `{key}:` of {what} to name an actor driving in the direction of `{}` ({}), found `{x}`, which drives {}: §8.9 relates an actor to x along the direction both travel (ahead of, behind, the lanes counted from x's), and two actors driving opposite ways share none (speed relations alone hold across directions)",
+                    inv.actor,
+                    how(actor_against),
+                    how(dir(x))
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks that invocation `inv` with modifiers `mods` runs for an actor driving against s,
+/// starting at `t0` when the plan knows it (`Some(None)`: a start on a run-time condition;
+/// `None`: before the planning, start unknown yet).
+pub(crate) fn check_runs(
+    inv: &Invoke,
+    mods: &[Modifier],
+    t0: Option<Option<f64>>,
+) -> Result<(), Error> {
+    let not_run = |site: &crate::error::Site, what: &str| {
+        site.err(
+            K::Unsupported,
+            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, remain_stationary, change_lane, follow_lane with speed, change_speed, acceleration(a), position(d), lane(n), change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement run)", inv.actor),
+        )
+    };
+    let runs = matches!(
+        inv.kind,
+        Action::Move
+            | Action::ChangeSpeed
+            | Action::KeepSpeed
+            | Action::RemainStationary
+            | Action::ChangeLane
+            | Action::FollowLane
+    );
+    if !runs {
+        return Err(not_run(&inv.actor_site, &format!("{}(…)", inv.action)));
+    }
+    if let Some(a) = crate::resolve::arg(&inv.args, "offset") {
+        return Err(not_run(&a.site, &format!("an offset in {}(…)", inv.action)));
+    }
+    for m in mods {
+        let runs = match m.kind {
+            ModKind::Speed
+            | ModKind::ChangeSpeed
+            | ModKind::Position
+            | ModKind::Lane
+            | ModKind::ChangeLane
+            | ModKind::Distance
+            | ModKind::Along
+            | ModKind::KeepLane
+            | ModKind::KeepSpeed
+            | ModKind::KeepPosition
+            | ModKind::PhysicalMovement => true,
+            // A rate alone; relative to another actor the engine follows it step by step.
+            ModKind::Acceleration => crate::resolve::REFERENCES
+                .iter()
+                .all(|k| m.arg(k).is_none()),
+            ModKind::Lateral | ModKind::Orientation | ModKind::AvoidCollisions => false,
+        };
+        if !runs || m.shape.is_some() {
+            return Err(not_run(&m.site, &format!("{}(…)", m.name)));
+        }
+    }
+    if let Some(None) = t0 {
+        return Err(inv.actor_site.err(
+            K::Unsupported,
+            format!("expected a phase of `{}`, which drives against s, to start at a time the plan knows, found a start on a run-time condition (an until or wait before it; not run yet against s: the engine's checks at such a start measure s in +s)", inv.actor),
+        ));
+    }
+    Ok(())
+}

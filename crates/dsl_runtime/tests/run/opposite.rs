@@ -1,0 +1,214 @@
+//! Actors that drive against s (oncoming traffic): placed, planned and lowered in the distance
+//! along their direction of travel, driven by the engine in their lane's driving direction.
+//! Every expectation is worked by hand in the scenario's comment.
+
+use std::f64::consts::PI;
+
+use crate::support::{lower_at, run_on, DT};
+
+/// Positions on straight roads: the engine integrates speed exactly; float round-off only.
+const S_TOL: f64 = 1e-6;
+/// Headings (rad).
+const H_TOL: f64 = 1e-9;
+/// Event times are step times.
+const T_TOL: f64 = 1e-9;
+/// Across a spiral the engine steps the curvature per step (1 cm, as in run::map).
+const SPIRAL_TOL: f64 = 0.01;
+/// Along the road during a sinusoidal lane change: the change's cost Δ²π²/(16·T·v) is the
+/// small-slope approximation of the path's extra length (within 1 mm for 3.5 m over 40 m).
+const COST_TOL: f64 = 1e-3;
+
+/// The error text of `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr`.
+fn error_on(name: &str, road: &str) -> String {
+    match lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        &format!("tests/roads/{road}.xodr"),
+        0,
+        None,
+    ) {
+        Ok(_) => panic!("{name}: planned"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// The angle `a` (rad) in (−π, π].
+fn wrap(a: f64) -> f64 {
+    let r = a.rem_euclid(2.0 * PI);
+    if r > PI {
+        r - 2.0 * PI
+    } else {
+        r
+    }
+}
+
+/// The engine moves each step at the step's end speed: during a linear change at `a` m/s² it
+/// is ahead of the exact integral by a·dt/2 per second of the change.
+fn ramp_lead(a: f64, seconds: f64) -> f64 {
+    0.5 * a * DT * seconds
+}
+
+#[test]
+fn an_oncoming_actor_drives_its_lane_against_s_measured_along_its_direction_of_travel() {
+    let r = run_on("opposite_one_road", "straight");
+    let ego = r.at(0.0, "ego");
+    assert_eq!(ego.lane, -1);
+    assert!(
+        (ego.x - 20.0).abs() < S_TOL && (ego.y + 1.75).abs() < S_TOL,
+        "{ego:?}"
+    );
+    assert!((r.at(6.0, "ego").x - 80.0).abs() < S_TOL);
+    // npc: u = 100 m is s = 900 m, in lane 1, heading pi.
+    let npc = r.at(0.0, "npc");
+    assert_eq!((npc.road.as_str(), npc.lane), ("1", 1), "{npc:?}");
+    assert!((npc.s - 900.0).abs() < S_TOL, "{npc:?}");
+    assert!(
+        (npc.x - 900.0).abs() < S_TOL && (npc.y - 1.75).abs() < S_TOL,
+        "{npc:?}"
+    );
+    assert!(wrap(npc.h - PI).abs() < H_TOL, "{npc:?}");
+    assert!((npc.speed - 20.0).abs() < S_TOL);
+    let at2 = r.at(2.0, "npc");
+    assert!((at2.x - 860.0).abs() < S_TOL, "{at2:?}");
+    // Half way through 20 -> 10 m/s: 15 m/s, 35 m on (less the engine's step lead).
+    let at4 = r.at(4.0, "npc");
+    assert!((at4.speed - 15.0).abs() < S_TOL, "{at4:?}");
+    assert!(
+        (at4.x - (860.0 - 35.0 - ramp_lead(-2.5, 2.0))).abs() < S_TOL,
+        "{at4:?}"
+    );
+    let at6 = r.at(6.0, "npc");
+    assert!((at6.speed - 10.0).abs() < S_TOL);
+    assert!(
+        (at6.x - (800.0 - ramp_lead(-2.5, 4.0))).abs() < S_TOL,
+        "{at6:?}"
+    );
+    // distance(50m) at 10 m/s: 5 s.
+    let (s, e) = r.phase("do.1.2");
+    assert!(
+        (s - 6.0).abs() < T_TOL && (e - 11.0).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    let end = r.at(11.0, "npc");
+    assert_eq!(end.lane, 1);
+    assert!(
+        (end.s - 750.25).abs() < S_TOL && (end.y - 1.75).abs() < S_TOL,
+        "{end:?}"
+    );
+    assert!(wrap(end.h - PI).abs() < H_TOL, "{end:?}");
+}
+
+#[test]
+fn lanes_against_s_are_counted_in_the_direction_of_travel() {
+    let r = run_on("opposite_lanes", "straight");
+    let y1 = |tau: f64| 1.75 + 3.5 * (1.0 - (PI * tau / 4.0).cos()) / 2.0;
+    let start = r.at(0.0, "npc");
+    assert_eq!(start.lane, 1);
+    assert!(
+        (start.x - 950.0).abs() < S_TOL && (start.y - 1.75).abs() < S_TOL,
+        "{start:?}"
+    );
+    // lane(1, at: end): the rightmost lane in npc's direction, lane 2 (the outer one).
+    assert!(
+        (r.at(2.0, "npc").y - y1(2.0)).abs() < S_TOL,
+        "{:?}",
+        r.at(2.0, "npc")
+    );
+    let at4 = r.at(4.0, "npc");
+    assert_eq!(at4.lane, 2, "{at4:?}");
+    assert!((at4.y - 5.25).abs() < S_TOL, "{at4:?}");
+    let cost = 3.5f64.powi(2) * PI * PI / (16.0 * 4.0 * 10.0);
+    assert!((at4.x - (910.0 + cost)).abs() < COST_TOL, "{at4:?}");
+    // change_lane(side: left): towards the centre line, back into lane 1.
+    assert!(
+        (r.at(6.0, "npc").y - 3.5).abs() < S_TOL,
+        "{:?}",
+        r.at(6.0, "npc")
+    );
+    let at8 = r.at(8.0, "npc");
+    assert_eq!(at8.lane, 1, "{at8:?}");
+    assert!((at8.y - 1.75).abs() < S_TOL, "{at8:?}");
+    assert!(
+        (at8.x - (870.0 + 2.0 * cost)).abs() < 2.0 * COST_TOL,
+        "{at8:?}"
+    );
+    assert!(wrap(at8.h - PI).abs() < H_TOL, "{at8:?}");
+    assert!((r.phase("do").1 - 8.0).abs() < T_TOL);
+}
+
+#[test]
+fn an_oncoming_actor_drives_the_plans_roads_backwards_through_a_junction() {
+    let r = run_on("opposite_roads", "junction_trippel_twoway0");
+    let npc = r.at(0.0, "npc");
+    assert_eq!((npc.road.as_str(), npc.lane), ("2", 1), "{npc:?}");
+    assert!((npc.s - 50.0).abs() < S_TOL, "{npc:?}");
+    assert!(
+        (npc.x - 177.0408).abs() < 1e-4 && (npc.y - 19.3388).abs() < 1e-4,
+        "{npc:?}"
+    );
+    assert!(wrap(npc.h - (0.3 + PI)).abs() < H_TOL, "{npc:?}");
+    let at3 = r.at(3.0, "npc");
+    assert!(
+        (at3.x - 148.3807).abs() < 1e-4 && (at3.y - 10.4732).abs() < 1e-4,
+        "{at3:?}"
+    );
+    let (_, end) = r.phase("do.1");
+    assert!(
+        (end - 10.0).abs() < T_TOL,
+        "distance(100m) at 10 m/s: {end}"
+    );
+    let at10 = r.at(10.0, "npc");
+    assert_eq!((at10.road.as_str(), at10.lane), ("0", 1), "{at10:?}");
+    assert!((at10.s - 79.55).abs() < SPIRAL_TOL, "{at10:?}");
+    assert!((at10.y - 1.5).abs() < SPIRAL_TOL, "{at10:?}");
+    assert!(wrap(at10.h - PI).abs() < SPIRAL_TOL, "{at10:?}");
+    let ego = r.at(10.0, "ego");
+    assert!(
+        (ego.x - 60.0).abs() < S_TOL && (ego.y + 1.5).abs() < S_TOL,
+        "{ego:?}"
+    );
+}
+
+#[test]
+fn what_does_not_run_against_s_is_an_error_at_its_place() {
+    for (name, road, texts, place) in [
+        (
+            "err_opposite_ahead",
+            "straight",
+            &[
+                "expected `ahead_of:` of position(…) to name an actor driving in the direction of `ego` (in +s), found `npc`, which drives against s",
+                "two actors driving opposite ways share none",
+            ][..],
+            "18:37",
+        ),
+        (
+            "err_opposite_lateral",
+            "straight",
+            &["expected an action and modifiers that run for `npc`, which drives against s (a lane driven in -s), found lateral(…) (not run yet against s"][..],
+            "13:13",
+        ),
+        (
+            "err_opposite_lane",
+            "straight",
+            &["expected a driving lane numbered 3 from the right on road 1"][..],
+            "13:13",
+        ),
+        (
+            "err_opposite_point",
+            "straight",
+            &["expected a driving lane of road 1 (right-hand traffic: lanes [-3, -2, -1] driven in +s, [1, 2] in -s) at s = 50 m, found lane 3"][..],
+            "7:13",
+        ),
+        (
+            "err_opposite_until",
+            "straight",
+            &["expected a phase of `npc`, which drives against s, to start at a time the plan knows, found a start on a run-time condition"][..],
+            "21:9",
+        ),
+    ] {
+        let e = error_on(name, road);
+        assert!(
+            texts.iter().all(|t| e.contains(t)) && e.ends_with(&format!("{name}.osc:{place}")),
+            "{name}: {e}"
+        );
+    }
+}
