@@ -82,8 +82,16 @@ fn an_oncoming_actor_drives_its_lane_against_s_measured_along_its_direction_of_t
         (at6.x - (800.0 - ramp_lead(-2.5, 4.0))).abs() < S_TOL,
         "{at6:?}"
     );
+    // truck: 30 m behind npc along their direction of travel, at npc's 20 m/s.
+    let truck = r.at(0.0, "truck");
+    assert_eq!(truck.lane, 1);
+    assert!(
+        (truck.x - 930.0).abs() < S_TOL && (truck.speed - 20.0).abs() < S_TOL,
+        "{truck:?}"
+    );
+    assert!((r.at(6.0, "truck").x - 810.0).abs() < S_TOL);
     // distance(50m) at 10 m/s: 5 s.
-    let (s, e) = r.phase("do.1.2");
+    let (s, e) = r.phase("do.2.2");
     assert!(
         (s - 6.0).abs() < T_TOL && (e - 11.0).abs() < T_TOL,
         "[{s}, {e}]"
