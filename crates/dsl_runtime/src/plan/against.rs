@@ -4,7 +4,9 @@
 //! directions.
 //!
 //! An actor whose first phase is `along(l)` of a lane driven in −s (a lane field the map's
-//! modifiers bind, an odr point) drives the plan's roads against s: it is placed and planned
+//! modifiers bind, an odr point), or `along(r)` of a route field the map's
+//! `routes_are_opposite(route1, route2)` binds as `route2` (§8.12.2.2.10; `bind_routes`: the
+//! plan's roads driven the other way), drives the plan's roads against s: it is placed and planned
 //! on the view `PlanRoad::against` gives, in the distance u along its direction of travel
 //! (`crate::road`), and the lowering maps its start back to (road, s). The planner's
 //! arithmetic is the same in either direction, so what runs is what only reads the actor's
@@ -17,6 +19,9 @@
 //! actions, `avoid_collisions(true)`, a group, and a phase that starts on a run-time condition
 //! (the engine's checks measure s in +s).
 //!
+//! An actor along a free route of the other direction than its own is an error at the
+//! `along` (`check_alongs`).
+//!
 //! Between actors of opposite directions: the speed relations (`speed(…, faster_than /
 //! slower_than / same_as: x)`) run, a speed having no direction; every other relation
 //! (`position(d, ahead_of/behind: x)`, `lane(same_as/side_of/left_of/right_of: x)`, a gap or
@@ -28,7 +33,9 @@ use std::collections::HashMap;
 
 use super::place::ToPlace;
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{Action, Invoke, Kind, ModKind, Modifier, Phase};
+use crate::resolve::{
+    Action, Along, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
+};
 
 /// The speed relations, which hold between actors of any directions.
 const SPEED_REFERENCES: [&str; 3] = ["faster_than", "slower_than", "same_as"];
@@ -164,6 +171,89 @@ pub(crate) fn check_runs(
             K::Unsupported,
             format!("expected a phase of `{}`, which drives against s, to start at a time the plan knows, found a start on a run-time condition (an until or wait before it; not run yet against s: the engine's checks at such a start measure s in +s)", inv.actor),
         ));
+    }
+    Ok(())
+}
+
+/// The route fields `routes_are_opposite(route1, route2)` on route fields binds to the plan's
+/// roads driven against s (`route2`), each with what bound it: `route1` is the plan's roads,
+/// as every free route field (`road_fields`: the route fields `routes_are_in_sequence` bound
+/// to one road, which are no such field). Errors at the modifier: a field opposite to itself,
+/// a field bound to one road, a field both ways.
+pub(crate) fn bind_routes(
+    mods: &[MapModifier],
+    road_fields: &HashMap<String, (i32, (f64, f64), String)>,
+) -> Result<HashMap<String, String>, Error> {
+    let mut out: HashMap<String, String> = HashMap::new();
+    let mut forward: Vec<&str> = Vec::new();
+    for m in mods {
+        let MapKind::OppositeRoutes { route1, route2 } = &m.kind else {
+            continue;
+        };
+        if route1 == route2 {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected two routes in opposite directions, found `{route1}` twice"),
+            ));
+        }
+        for f in [route1, route2] {
+            if let Some((_, _, why)) = road_fields.get(f) {
+                return Err(m.site.err(
+                    K::Unsupported,
+                    format!("expected route fields that are the plan's roads (route1) and those roads driven against s (route2), found `{f}`, one road ({why}); lanes driven each way on one road are bound as lane fields"),
+                ));
+            }
+        }
+        if out.contains_key(route1) || forward.contains(&route2.as_str()) {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected `{route1}` in +s and `{route2}` against s, found a route field bound both ways by the map's routes_are_opposite(…)"),
+            ));
+        }
+        forward.push(route1);
+        out.insert(
+            route2.clone(),
+            format!(
+                "the plan's roads against s, bound by map.{}(…) at {}",
+                m.name,
+                m.site.at()
+            ),
+        );
+    }
+    Ok(out)
+}
+
+/// Checks that each free route `actor` drives `along` in `mods` runs in its direction:
+/// a route field bound against s (`against_routes`) for an actor driving so, any other free
+/// route field (the plan's roads in +s) for one in +s.
+pub(crate) fn check_alongs(
+    actor: &str,
+    against: bool,
+    mods: &[Modifier],
+    against_routes: &HashMap<String, String>,
+) -> Result<(), Error> {
+    for m in mods {
+        let Some(Along {
+            route:
+                Route::Free {
+                    field,
+                    one_lane: false,
+                },
+            site,
+            ..
+        }) = &m.along
+        else {
+            continue;
+        };
+        let back = against_routes.get(field);
+        if back.is_some() != against {
+            let how = |a: bool| if a { "against s" } else { "in +s" };
+            let what = back.map_or_else(|| "the plan's roads in +s".to_string(), |why| why.clone());
+            return Err(site.err(
+                K::Unsatisfiable,
+                format!("expected `{actor}`, which drives {}, along a route in its direction, found `{field}` ({what}); an actor's direction is its first phase's route's", how(against)),
+            ));
+        }
     }
     Ok(())
 }

@@ -43,6 +43,7 @@ impl Planner<'_> {
             .index
             .get(&inv.actor)
             .is_some_and(|&i| self.entities[i].against);
+        super::against::check_alongs(&inv.actor, against, mods, &self.against_routes)?;
         let Some(view) = self.against_road.clone().filter(|_| against) else {
             return self.plan_invoke_in_view(p, inv, mods, t0, end, len, out, persist, after);
         };

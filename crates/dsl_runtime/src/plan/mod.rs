@@ -173,6 +173,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         engine_moved: HashMap::new(),
         gaps: HashMap::new(),
         against_road: None,
+        against_routes: HashMap::new(),
     };
     root.walk(&mut |ph| {
         if let Kind::Emit(e) = &ph.kind {
@@ -215,6 +216,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         p.route_lanes.insert(b.field.clone(), (b.lane, b.why));
         p.lane_roads.insert(b.field, (b.road, b.span));
     }
+    p.against_routes = against::bind_routes(&res.map, &p.route_roads)?;
     // Actors, in the order the tree names them, and each one's first phase.
     let mut leaves: Vec<&Phase> = Vec::new();
     for leaf in root.leaves() {
@@ -337,6 +339,13 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                         .crossings
                         .get(field)
                         .map(|c| (c.crossing.start.0, c.road_start + c.crossing.start.1, false))?,
+                    // A route field `routes_are_opposite` binds to the plan's roads against
+                    // s: no start of its own (the actor floats, in u).
+                    (Route::Free { field, .. }, At::Start | At::All)
+                        if p.against_routes.contains_key(field) =>
+                    {
+                        return Some((None, Some(a.site.clone())));
+                    }
                     (Route::Free { field, .. }, At::Start | At::All) => {
                         match (p.lane_roads.get(field), p.route_lanes.get(field)) {
                             (Some((_, Some((_, to)))), Some((lane, _))) if *lane > 0 => {
@@ -351,12 +360,9 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                     }
                     _ => return None,
                 };
-                Some(((lane, s), against.then(|| a.site.clone())))
+                Some((Some((lane, s)), against.then(|| a.site.clone())))
             });
-        let (route, against) = match route {
-            Some((r, against)) => (Some(r), against),
-            None => (None, None),
-        };
+        let (route, against) = route.unwrap_or((None, None));
         if let Some(site) = &against {
             if p.against_road.is_none() {
                 p.against_road = Some(road.against().map_err(|m| site.err(K::Road, m))?);

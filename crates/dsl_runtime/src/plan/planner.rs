@@ -87,6 +87,9 @@ pub(crate) struct Planner<'a> {
     /// The plan's roads driven against s (`PlanRoad::against`), when an actor drives them
     /// so: the road the invocations of such an actor are planned on (`plan_invoke`).
     pub against_road: Option<PlanRoad<'a>>,
+    /// Route field `routes_are_opposite` binds to the plan's roads driven against s → what
+    /// bound it (`against::bind_routes`).
+    pub against_routes: HashMap<String, String>,
 }
 
 /// What a gap action keeps (`gap_actions`).

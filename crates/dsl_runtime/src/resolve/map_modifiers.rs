@@ -1,7 +1,7 @@
 //! The map's modifiers applied in the scenario's body (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2:
 //! `m.number_of_lanes(…)`, `m.start_lane(l)`, `m.end_lane(l)`, `m.lane_side(…)`,
 //! `m.compound_lane_side(…)`, `m.routes_overlap(…)`, `m.roads_follow_in_junction(…)`;
-//! `m.routes_are_in_sequence(…)`; `m.routes_are_opposite(…)` on lane fields), read as plain data
+//! `m.routes_are_in_sequence(…)`; `m.routes_are_opposite(…)`), read as plain data
 //! for the planner, which binds the lane fields they name to lanes of the loaded road network
 //! or checks the network against them (`crate::plan`'s `map_lanes`).
 //!
@@ -15,8 +15,8 @@
 //! `lane_section` field to a lane section) of the plan through a lane of the modifier's own
 //! (`SeqEnd`), or on two routes the map makes, a check of their points; `roads_follow_in_junction`'s `junction_route` is bound to the connecting road of the way through;
 //! `crossing_connects` binds its crossing field to a crosswalk of the map and its lanes to
-//! the lanes the crosswalk joins. `routes_are_opposite` on route fields is an error at the
-//! modifier saying why;
+//! the lanes the crosswalk joins. `routes_are_opposite` on route fields binds `route2` to the
+//! plan's roads driven against s (`OppositeRoutes`);
 //! `set_map_file` names the network (`crate::map_file`), `set_traffic_lights_control_file` the
 //! traffic signal controllers (`crate::traffic_lights`).
 
@@ -93,6 +93,15 @@ pub(crate) enum MapKind {
         route2: String,
         /// Whether `containing_road:` was given (a road field: the plan's roads).
         on_plan_roads: bool,
+    },
+    /// §8.12.2.2.10 on route fields (`route`, `road`, `compound_route`, `lane_section`):
+    /// `route1` is the plan's roads (as every free route field), `route2` the same roads
+    /// driven the other way, against s.
+    OppositeRoutes {
+        /// The first route field.
+        route1: String,
+        /// The route field bound to the plan's roads against s.
+        route2: String,
     },
     /// §8.12.2.2.2 on route fields other than two lanes (roads, lane sections, routes, a lane
     /// beside one of them): `succeeding` follows `preceding` in +s, through lanes of the
@@ -360,15 +369,28 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             route2: route("route2")?,
             kind: member("overlap_kind")?.unwrap_or_else(|| "any".to_string()),
         },
-        "routes_are_opposite"
-            if arg(&args, "route1").is_some_and(|a| field(ctx, a, true).is_ok()) =>
-        {
+        "routes_are_opposite" => {
             if let Some(k) = member("lateral_overlap")?.filter(|k| k != "never") {
                 let at = arg(&args, "lateral_overlap").map_or(&site, |a| &a.site);
                 return Err(at.err(
                     K::Unsupported,
-                    format!("expected lateral_overlap: never for two lanes driven in opposite directions (each lane of an OpenDRIVE road has one driving direction, so two never share their width), found {k}"),
+                    format!("expected lateral_overlap: never for two routes driven in opposite directions (each lane of an OpenDRIVE road has one driving direction, so two never share their width), found {k}"),
                 ));
+            }
+            if !arg(&args, "route1").is_some_and(|a| field(ctx, a, true).is_ok()) {
+                // Route fields: containing_road, when given, is a road field, the plan's
+                // roads, which hold both.
+                if let Some(a) = arg(&args, "containing_road") {
+                    field(ctx, a, false)?;
+                }
+                return Ok(MapModifier {
+                    kind: MapKind::OppositeRoutes {
+                        route1: route("route1")?,
+                        route2: route("route2")?,
+                    },
+                    name: name.to_string(),
+                    site,
+                });
             }
             MapKind::Opposite {
                 route1: lane("route1")?,
@@ -551,11 +573,9 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             }
         }
         other => {
-            // routes_are_opposite on route fields: the only map modifier left.
-            let why = "on route fields (every free route field is the roads the plan drives on in their driving direction, so no two are opposite; two roads are not bound either, since every actor drives the plan's one chain of roads in +s and an actor along the opposite road would leave it; lane fields are bound)";
             return Err(site.err(
                 K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap, routes_are_in_sequence; routes_are_opposite on lane fields, roads_follow_in_junction, crossing_connects, set_traffic_lights_control_file), found {other}(…) {why}"),
+                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap, routes_are_in_sequence, routes_are_opposite, roads_follow_in_junction, crossing_connects, set_traffic_lights_control_file), found {other}(…)"),
             ));
         }
     };

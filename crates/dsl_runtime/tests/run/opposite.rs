@@ -177,6 +177,37 @@ fn an_oncoming_actor_drives_the_plans_roads_backwards_through_a_junction() {
 }
 
 #[test]
+fn routes_are_opposite_on_route_fields_binds_the_second_to_the_roads_against_s() {
+    let r = run_on("opposite_routes", "straight");
+    let ego = r.at(4.0, "ego");
+    assert_eq!(ego.lane, -3);
+    assert!(
+        (ego.x - 90.0).abs() < S_TOL && (ego.y + 8.75).abs() < S_TOL,
+        "{ego:?}"
+    );
+    let npc0 = r.at(0.0, "npc");
+    assert_eq!(npc0.lane, 1, "{npc0:?}");
+    assert!(
+        (npc0.s - 800.0).abs() < S_TOL && (npc0.y - 1.75).abs() < S_TOL,
+        "{npc0:?}"
+    );
+    let npc = r.at(4.0, "npc");
+    assert!(
+        (npc.x - 740.0).abs() < S_TOL && (npc.y - 1.75).abs() < S_TOL,
+        "{npc:?}"
+    );
+    assert!(wrap(npc.h - PI).abs() < H_TOL, "{npc:?}");
+    let bus0 = r.at(0.0, "bus");
+    assert_eq!(bus0.lane, 2, "{bus0:?}");
+    assert!(
+        (bus0.x - 900.0).abs() < S_TOL && (bus0.y - 5.25).abs() < S_TOL,
+        "{bus0:?}"
+    );
+    assert!((r.at(4.0, "bus").x - 820.0).abs() < S_TOL);
+    assert!((r.phase("do").1 - 4.0).abs() < T_TOL);
+}
+
+#[test]
 fn what_does_not_run_against_s_is_an_error_at_its_place() {
     for (name, road, texts, place) in [
         (
@@ -211,6 +242,18 @@ fn what_does_not_run_against_s_is_an_error_at_its_place() {
             "straight",
             &["expected a phase of `npc`, which drives against s, to start at a time the plan knows, found a start on a run-time condition"][..],
             "21:9",
+        ),
+        (
+            "err_opposite_route_dir",
+            "straight",
+            &["expected `ego`, which drives in +s, along a route in its direction, found `theirs` (the plan's roads against s, bound by map.routes_are_opposite(…) at "][..],
+            "16:13",
+        ),
+        (
+            "err_opposite_route_self",
+            "straight",
+            &["expected two routes in opposite directions, found `r` twice"][..],
+            "6:5",
         ),
     ] {
         let e = error_on(name, road);
