@@ -13,7 +13,8 @@
 //! own track and its road view: `drive()`/`move()`, `change_speed`, `keep_speed`,
 //! `remain_stationary`, `change_lane`, `follow_lane`, with `speed`, `change_speed`,
 //! `acceleration(a)`, `position(d)`, `lane(n)`, `change_lane`, `keep_lane`, `keep_speed`,
-//! `keep_position`, `distance`, `along`, `physical_movement`. The rest is an error at the
+//! `keep_position`, `distance`, `along`, `physical_movement` (`position(…, at: end)` in a phase
+//! with a duration). The rest is an error at the
 //! action or modifier (not run yet), never planned in the wrong direction: an offset across the
 //! lane (`lateral`, `yaw`/`orientation`, a lane change's offset), the path, position and gap
 //! actions, `avoid_collisions(true)`, a group, and a phase that starts on a run-time condition
@@ -34,7 +35,7 @@ use std::collections::HashMap;
 use super::place::ToPlace;
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{
-    Action, Along, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
+    Action, Along, At, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
 };
 
 /// The speed relations, which hold between actors of any directions.
@@ -76,7 +77,7 @@ pub(crate) fn check_references(
             false
         };
         if actor_against {
-            check_runs(inv, &inv.modifiers, None)?;
+            check_runs(inv, &inv.modifiers, None, None)?;
         }
         let args = inv.args.iter().map(|(n, a)| (None, n, a)).chain(
             inv.modifiers
@@ -115,12 +116,13 @@ pub(crate) fn check_references(
 }
 
 /// Checks that invocation `inv` with modifiers `mods` runs for an actor driving against s,
-/// starting at `t0` when the plan knows it (`Some(None)`: a start on a run-time condition;
-/// `None`: before the planning, start unknown yet).
+/// starting at `t0` and ending at `end` when the plan knows them (`Some(None)`: a run-time
+/// start, or an end the plan does not know; `None`: before the planning, not known yet).
 pub(crate) fn check_runs(
     inv: &Invoke,
     mods: &[Modifier],
     t0: Option<Option<f64>>,
+    end: Option<Option<f64>>,
 ) -> Result<(), Error> {
     let not_run = |site: &crate::error::Site, what: &str| {
         site.err(
@@ -165,6 +167,17 @@ pub(crate) fn check_runs(
         if !runs || m.shape.is_some() {
             return Err(not_run(&m.site, &format!("{}(…)", m.name)));
         }
+    }
+    // Without a phase end the engine measures the gap reached in +s (plan::runtime_end).
+    if let (Some(None), Some(m)) = (
+        end,
+        mods.iter()
+            .find(|m| m.kind == ModKind::Position && m.at == At::End),
+    ) {
+        return Err(m.site.err(
+            K::Unsupported,
+            format!("expected a phase duration for position(…, at: end) of `{}`, which drives against s, found none (not run yet against s: without one the engine measures the gap reached in +s)", inv.actor),
+        ));
     }
     if let Some(None) = t0 {
         return Err(inv.actor_site.err(

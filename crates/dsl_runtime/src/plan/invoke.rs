@@ -47,7 +47,7 @@ impl Planner<'_> {
         let Some(view) = self.against_road.clone().filter(|_| against) else {
             return self.plan_invoke_in_view(p, inv, mods, t0, end, len, out, persist, after);
         };
-        super::against::check_runs(inv, mods, Some(t0))?;
+        super::against::check_runs(inv, mods, Some(t0), Some(end))?;
         let forward = std::mem::replace(&mut self.road, view);
         let planned = self.plan_invoke_in_view(p, inv, mods, t0, end, len, out, persist, after);
         self.road = forward;

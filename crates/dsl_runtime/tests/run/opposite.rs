@@ -106,6 +106,22 @@ fn an_oncoming_actor_drives_its_lane_against_s_measured_along_its_direction_of_t
 }
 
 #[test]
+fn a_gap_between_two_oncoming_actors_is_reached_along_their_direction_of_travel() {
+    let r = run_on("opposite_gap", "straight");
+    assert!((r.at(0.0, "npc").x - 900.0).abs() < S_TOL);
+    let mid = r.at(5.0, "npc");
+    assert!((mid.speed - 16.0).abs() < S_TOL, "{mid:?}");
+    assert!(
+        (mid.x - (810.0 - ramp_lead(-0.8, 5.0))).abs() < S_TOL,
+        "{mid:?}"
+    );
+    let (npc, truck) = (r.at(10.0, "npc"), r.at(10.0, "truck"));
+    assert!((truck.x - 700.0).abs() < S_TOL, "{truck:?}");
+    assert!((npc.x - 720.0).abs() < S_TOL, "{npc:?}");
+    assert!((npc.speed - 20.0).abs() < S_TOL, "{npc:?}");
+}
+
+#[test]
 fn lanes_against_s_are_counted_in_the_direction_of_travel() {
     let r = run_on("opposite_lanes", "straight");
     let y1 = |tau: f64| 1.75 + 3.5 * (1.0 - (PI * tau / 4.0).cos()) / 2.0;
@@ -248,6 +264,12 @@ fn what_does_not_run_against_s_is_an_error_at_its_place() {
             "straight",
             &["expected `ego`, which drives in +s, along a route in its direction, found `theirs` (the plan's roads against s, bound by map.routes_are_opposite(…) at "][..],
             "16:13",
+        ),
+        (
+            "err_opposite_position_end",
+            "straight",
+            &["expected a phase duration for position(…, at: end) of `npc`, which drives against s, found none"][..],
+            "21:13",
         ),
         (
             "err_opposite_route_self",
