@@ -495,23 +495,17 @@ impl Planner<'_> {
                                 }
                                 None => {
                                     let t = self.last_known();
-                                    let (x, sign, d) = self.position_target(m, target, t)?;
-                                    let several = self.road.ids().len() > 1;
-                                    let w = match m.arg("distance") {
-                                        Some(_) if !m.projected && several => {
-                                            self.gap_reached(m, target, x.as_deref(), sign, d)?
+                                    let (_, sign, d) = self.position_target(m, target, t)?;
+                                    // The gap (at x's speed as the engine measures it for
+                                    // a time or the default) reached from the side the actor
+                                    // starts on, in the plan's s on several roads; projected,
+                                    // to x projected from the start (plan::runtime_end).
+                                    let w = match self.gap_watch(m, target, name("position"))? {
+                                        Some((check, w)) => {
+                                            out.push(check);
+                                            w
                                         }
-                                        // The gap (at x's speed as the engine measures it
-                                        // for a time or the default) reached from the side
-                                        // the actor starts on; projected, to x projected
-                                        // from the start (plan::runtime_end).
-                                        _ => match self.gap_watch(m, target, name("position"))? {
-                                            Some((check, w)) => {
-                                                out.push(check);
-                                                w
-                                            }
-                                            None => self.gap_reached(m, target, None, sign, d)?,
-                                        },
+                                        None => self.gap_reached(m, target, None, sign, d)?,
                                     };
                                     derived = all_of(derived, Some(w));
                                 }
@@ -544,13 +538,8 @@ impl Planner<'_> {
                                     When::At(t + tau)
                                 } else {
                                     // Reached from the side the actor starts on (a mark:
-                                    // plan::runtime_end); on several roads the
-                                    // RelativeDistanceCondition across them.
-                                    let watch = match self.road.ids().len() {
-                                        1 => self.gap_watch(m, target, name("position"))?,
-                                        _ => None,
-                                    };
-                                    match watch {
+                                    // plan::runtime_end; on several roads in the plan's s).
+                                    match self.gap_watch(m, target, name("position"))? {
                                         Some((check, w)) => {
                                             out.push(check);
                                             w

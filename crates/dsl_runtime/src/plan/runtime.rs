@@ -26,11 +26,11 @@
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
 //! | `keep_space_gap` / `keep_time_headway` without a known gap | the engine's LongitudinalDistanceAction keeping the value it measures at its start (`gap_actions`) |
 //!
-//! On a plan over several roads (`crate::road`) the checks name the plan's roads with the
-//! plan's s at each start (`StateCheck::roads`): the engine takes the lane on whichever of
-//! them the actor is on (their lane ids are the same) and measures s and gaps in the plan's s.
-//! A TravelAction to a place there stays an error (the engine's profile measures along the
-//! road the actor is on).
+//! On a plan over several roads (`crate::road`) the checks, marks and TravelAction name the
+//! plan's roads with the plan's s at each start (`Planner::chain`: `StateCheck::roads`,
+//! `Travel::roads`): the engine takes the lane on whichever of them the actor is on (their
+//! lane ids are the same), measures s and gaps in the plan's s, and a TravelAction's Δs along
+//! the actor's lane across the roads' joints.
 //!
 //! Lanes are numbered (and lane widths taken) where the plan last knows the actor: a road whose
 //! lanes change between there and the run-time start may number them otherwise. A gap that
@@ -67,12 +67,9 @@ impl Planner<'_> {
         let what = format!("{}(…) at {}", m.name, m.site.at());
         let mut check = StateCheck {
             what,
+            roads: self.chain(),
             ..StateCheck::default()
         };
-        if self.road.ids().len() > 1 {
-            // The engine measures along the plan's roads (their lane ids are the same).
-            check.roads = self.road.starts();
-        }
         match m.kind {
             ModKind::Lane => {
                 let n = m
@@ -182,9 +179,6 @@ impl Planner<'_> {
                 }
             }
         } else {
-            if self.road.ids().len() > 1 {
-                return Err(self.several_roads(m));
-            }
             match self.speed_gap(m, target)? {
                 Some(gap) => TravelGoal::FromEntity(gap),
                 None => TravelGoal::RoadS(self.position_target(m, target, self.last_known())?.2),
@@ -241,6 +235,7 @@ impl Planner<'_> {
                 end_speed_of,
                 monotonous: m.monotonous,
                 limits: (MAX_SPEED, MAX_ACCELERATION),
+                roads: self.chain(),
             }))),
             site: m.site.clone(),
         });
@@ -318,34 +313,25 @@ impl Planner<'_> {
         start: StartOnRoute,
         name: String,
     ) -> Result<Planned, Error> {
-        if self.road.ids().len() > 1 {
-            return Err(site.err(
-                K::Unsupported,
-                format!(
-                    "expected along(…) on a named route at the start of a phase that starts on a run-time condition on a plan over one road, found roads {} (the road the actor is on then is not known before the run)",
-                    self.road.ids().join(", ")
-                ),
-            ));
-        }
         let (lo, hi) = start.s;
         let check = StateCheck {
             lane: Some((self.road.id().to_string(), start.lane)),
             s: Some(((lo + hi) / 2.0, (hi - lo) / 2.0)),
+            roads: self.chain(),
             ..StateCheck::default()
         };
         Ok(phase_start_check(target, ("along", site), check, name))
     }
 
-    /// A lane or position at a run-time start on a plan over several roads.
-    fn several_roads(&self, m: &Modifier) -> Error {
-        m.site.err(
-            K::Unsupported,
-            format!(
-                "expected {}(…) at the start of a phase that starts on a run-time condition on a plan over one road, found roads {} (the road the actor is on then is not known before the run)",
-                m.name,
-                self.road.ids().join(", ")
-            ),
-        )
+    /// The plan's roads with the plan's s at each start, for the engine's checks, marks and
+    /// TravelAction on a plan over several roads (their lane ids are the same, so the engine
+    /// takes the lane on whichever of them the actor is on and measures in the plan's s);
+    /// empty on one road (the engine measures on the road the actor is on).
+    pub(super) fn chain(&self) -> Vec<(String, f64)> {
+        match self.road.ids().len() {
+            1 => Vec::new(),
+            _ => self.road.starts(),
+        }
     }
 
     /// The latest moment the plan knows (s): the latest known start or end of a phase

@@ -6,7 +6,7 @@
 //! | in a phase that starts on a run-time condition | done by |
 //! | --- | --- |
 //! | `distance(d)` without a duration | a state check at the start notes the actor's odometer (a mark); the phase ends when the engine measures d travelled since (TraveledSinceMark) |
-//! | `position(d / time: t / neither, ahead_of/behind: x, at: end)` without a duration (at any start, on one road) | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
+//! | `position(d / time: t / neither, ahead_of/behind: x, at: end)` without a duration (at any start; on a plan over several roads in the plan's s) | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
 //! | `position(…, at: end)`, `distance(d)` over a duration beside `speed(v)` at: all | the speed holds; the engine checks the place (or d travelled since the start's mark) at the phase end: a constraint that holds only if the run meets it is an error record if it does not |
 //! | `speed(same_as/faster_than/slower_than: x, at: end)` beside a TravelAction | the profile ends at x's speed at the start (± the value); the engine checks x's speed at the phase end |
 //!
@@ -22,7 +22,7 @@ use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
 use super::runtime::phase_start_check;
 use super::types::{Planned, When};
-use crate::error::{Error, ErrorKind as K};
+use crate::error::Error;
 use crate::resolve::Modifier;
 
 impl Planner<'_> {
@@ -63,12 +63,6 @@ impl Planner<'_> {
         let Some(gap) = self.speed_gap(m, target)? else {
             return Ok(None);
         };
-        if self.road.ids().len() > 1 {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!("expected position(…, at: end) without a distance or with track: projected in a phase without a duration that starts on a run-time condition on a plan over one road, found roads {} (the engine measures that gap on the road the actors are on)", self.road.ids().join(", ")),
-            ));
-        }
         let end = since_mark(
             m,
             target,
@@ -126,6 +120,7 @@ impl Planner<'_> {
                 gap,
                 projected: m.projected,
             }),
+            roads: self.chain(),
             ..StateCheck::default()
         };
         phase_start_check(target, (&m.name, &m.site), check, name)
@@ -142,6 +137,7 @@ impl Planner<'_> {
     ) -> Planned {
         let check = StateCheck {
             what: format!("{}(…) at the phase end at {}", m.name, m.site.at()),
+            roads: self.chain(),
             ..check
         };
         Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), &m.site)

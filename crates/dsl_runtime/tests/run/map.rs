@@ -136,3 +136,74 @@ fn routes_no_path_joins_or_in_two_lanes_are_errors_at_their_place() {
         assert!(e.contains(text) && e.ends_with(place), "{name}: {e}");
     }
 }
+
+/// runtime_several_roads.osc's comment, by hand: after an until, a TravelAction to a place
+/// behind lead, along(r) on a named route, a time gap without a duration and a projected gap,
+/// each measured in the plan's s across roads 0, 1 and 2.
+#[test]
+fn run_time_travel_route_and_gaps_on_several_roads_measure_along_the_plans_roads() {
+    let r = run("runtime_several_roads", "junction_trippel_twoway0");
+    for (phase, a, b) in [
+        ("do.ego.approach", 0.0, 0.85),
+        ("do.ego.travel", 0.85, 10.85),
+        ("do.ego.close", 10.85, 12.30),
+        ("do.ego.proj", 12.30, 13.30),
+    ] {
+        let (s, e) = r.phase(phase);
+        assert!(
+            (s - a).abs() < 1e-9 && (e - b).abs() < 1e-9,
+            "{phase}: [{s}, {e}]"
+        );
+    }
+    let on = |t: f64, who: &str, road: &str, s: f64, v: f64| {
+        let p = r.at(t, who);
+        assert_eq!(
+            (p.road.as_str(), p.lane),
+            (road, -1),
+            "{who} at {t} s: {p:?}"
+        );
+        assert!((p.s - s).abs() < CURVED_TOL, "{who} at {t} s: {p:?}");
+        assert!((p.speed - v).abs() < 1e-6, "{who} at {t} s: {p:?}");
+    };
+    // The TravelAction's two halves: 20 -> 7.96 -> 8 m/s over 5 s each, stepped.
+    on(5.85, "ego", "0", 96.599, 7.96);
+    on(10.85, "ego", "2", 6.05, 8.0);
+    on(10.85, "lead", "2", 16.35, 8.0);
+    // The time gap reached falling back at 4 m/s; then the projected one.
+    on(12.30, "ego", "2", 11.85, 4.0);
+    on(12.30, "lead", "2", 27.95, 8.0);
+    on(13.30, "ego", "2", 15.85, 4.0);
+    // lead braked from 12.5 s: 0.34 m short of its projection (road 2 s 35.95 m).
+    let lead = r.at(13.30, "lead");
+    assert!((lead.s - 35.61).abs() < CURVED_TOL, "{lead:?}");
+    // The named route's check at the close phase's start passed (a failure stops the run).
+    let t = r.when("do.ego.close/ego/3:check", "End");
+    assert!(t.is_some_and(|t| (t - 10.85).abs() < 1e-9), "{t:?}");
+}
+
+/// runtime_several_roads_off_route.osc's comment, by hand: the route on road 2 checked in the
+/// plan's s while ego is on road 0 at s 27 m.
+#[test]
+fn a_named_route_after_an_until_on_several_roads_is_checked_in_the_plans_s() {
+    let lowered = lower_at(
+        "tests/scenarios/runtime_several_roads_off_route.osc",
+        "tests/roads/junction_trippel_twoway0.xodr",
+        0,
+        None,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = crate::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert_eq!(records[0].1, "do.off_route/ego/1:check");
+    assert!((records[0].0 - 0.85).abs() < 1e-9, "{records:?}");
+    let want = "expected 'ego' at s = 180.000 m (within 50.5 m) (along(…) at ";
+    assert!(
+        error.starts_with(want) && error.contains("runtime_several_roads_off_route.osc:21:13"),
+        "{error}"
+    );
+    assert!(
+        error.ends_with("found it at s = 27.000 m at t = 0.850 s"),
+        "{error}"
+    );
+}

@@ -20,6 +20,7 @@ use super::speed;
 
 use crate::condition::{place_error, Mark, Projection};
 use crate::error::{Error, ErrorKind};
+use crate::position::RoadChain;
 use crate::store::World;
 use crate::world::lanes::lane_shift;
 use crate::world::shapes::peak_slope;
@@ -36,6 +37,7 @@ pub(crate) fn start(
     require(world, actor, check, (time, pos))?;
     if let Some(mark) = &check.mark {
         let e = world.entity(actor);
+        let chain = RoadChain::new(&check.roads);
         let gap_error = match &mark.gap {
             Some(gap) => {
                 let other = world.id(&gap.entity_ref).map(|o| world.entity(o));
@@ -43,15 +45,19 @@ pub(crate) fn start(
                     (Some(a), Some(o)) => o
                         .road_position
                         .as_ref()
-                        .and_then(|x| place_error(a, x, o.speed, gap)),
+                        .and_then(|x| place_error(chain, a, x, o.speed, gap)),
                     _ => None,
                 };
                 // Without a place on x's road the gap can never be reached: an error now, not
                 // a phase that never ends.
                 let Some(place) = place else {
+                    let on = match chain.is_chain() {
+                        true => format!("with '{}' on {}", gap.entity_ref, chain.describe()),
+                        false => format!("on the road of '{}'", gap.entity_ref),
+                    };
                     return Err(Error::new(ErrorKind::CheckFailed {
                         what: check.what.clone(),
-                        expected: format!("'{}' on the road of '{}'", e.name, gap.entity_ref),
+                        expected: format!("'{}' {on}", e.name),
                         found: "it elsewhere".into(),
                         time,
                     }));
@@ -93,6 +99,7 @@ pub(crate) fn start(
                 odometer,
                 gap_error,
                 projection,
+                roads: check.roads.clone(),
             },
         );
     }
@@ -200,29 +207,18 @@ fn require(
         ));
     };
     // Where along the plan's roads (a road's s plus its start), or the road's own s.
-    let along = |p: &RoadPosition| {
-        if check.roads.is_empty() {
-            return Some(p.s);
-        }
-        check
-            .roads
-            .iter()
-            .find(|(id, _)| *id == p.road_id)
-            .map(|(_, start)| start + p.s)
-    };
-    let plan_roads = || {
-        let ids: Vec<&str> = check.roads.iter().map(|(id, _)| id.as_str()).collect();
-        format!("one of roads {}", ids.join(", "))
-    };
+    let chain = RoadChain::new(&check.roads);
+    let along = |p: &RoadPosition| chain.s_of(&p.road_id, p.s);
+    let plan_roads = || chain.describe();
     if let Some((road, lane)) = &check.lane {
-        let on_road = match check.roads.is_empty() {
-            true => at.road_id == *road,
-            false => along(at).is_some(),
+        let on_road = match chain.is_chain() {
+            false => at.road_id == *road,
+            true => along(at).is_some(),
         };
         if !on_road || at.lane_id != *lane {
-            let of = match check.roads.is_empty() {
-                true => format!("road {road}"),
-                false => plan_roads(),
+            let of = match chain.is_chain() {
+                false => format!("road {road}"),
+                true => plan_roads(),
             };
             return Err(fail(
                 format!("'{}' in lane {lane} of {of}", e.name),
@@ -316,9 +312,9 @@ fn require(
     if let Some((g, tol)) = &check.gap {
         let other = &g.entity_ref;
         // On a plan over several roads x may be on another of them: the plan's s of both.
-        let (there_s, speed) = match check.roads.is_empty() {
-            true => beside(other).map(|(there, v)| (Some(there.s), v))?,
-            false => world
+        let (there_s, speed) = match chain.is_chain() {
+            false => beside(other).map(|(there, v)| (Some(there.s), v))?,
+            true => world
                 .id(other)
                 .map(|o| world.entity(o))
                 .and_then(|o| Some((along(o.road_position.as_ref()?), o.speed)))

@@ -5,7 +5,9 @@
 //! from the state at its start: a SpeedProfileAction's targets are fixed before the run.
 //!
 //! When it starts, the action measures Δs, the distance to cover along the actor's lane centre
-//! ([`lane_arc_length`]: from the actor's s to the goal's), and takes the profile of two
+//! (`position::RoadChain::lane_length`: from the actor's s to the goal's; on a DSL plan over
+//! several roads, `Travel::roads`, in the plan's s and across the roads' joints, the other
+//! entity likewise on any of them), and takes the profile of two
 //! linear halves the DSL plan uses at a known start: v₀ → v_m over T/2 and v_m → v_e over T/2
 //! with v_m = (4·Δs/T − v₀ − v_e)/2, so that ∫v dt = Δs. It runs as a SpeedProfileAction in
 //! `position` mode (strictly linear between the targets) with the targets (v_m, T/2) and
@@ -25,7 +27,7 @@ use scenario::{
 
 use super::{speed_profile, Part};
 use crate::error::{Error, ErrorKind};
-use crate::position::{lane_arc_length, s_at_lane_distance};
+use crate::position::RoadChain;
 use crate::store::World;
 use crate::world::entity::EntityId;
 
@@ -61,12 +63,20 @@ pub(crate) fn start(
                     "it off every road".into(),
                 ));
             };
-            let (road, lane, s0, forward) = (
-                track.road_id.clone(),
+            // On a plan over several roads: the plan's s, along the lane across the joints.
+            let chain = RoadChain::new(&travel.roads);
+            let (road, lane, forward) = (
+                track.road_id.as_str(),
                 track.lane_id,
-                track.s,
                 track.direction == Direction::Forward,
             );
+            let off_chain = |who: &str| {
+                fail(
+                    format!("'{who}' on {}", chain.describe()),
+                    format!("'{who}' on road {road}"),
+                )
+            };
+            let s0 = chain.s_of(road, track.s).ok_or_else(|| off_chain(&name))?;
             let s1 = match goal {
                 TravelGoal::RoadS(s) => *s,
                 TravelGoal::FromEntity(gap) => {
@@ -77,37 +87,49 @@ pub(crate) fn start(
                         .ok_or_else(|| {
                             Error::at("an entity of the scenario", format!("'{entity_ref}'"), pos)
                         })?;
-                    let Some(xt) = x.track.as_ref().filter(|xt| xt.road_id == road) else {
+                    let Some(xt) = x.track.as_ref().filter(|xt| match chain.is_chain() {
+                        true => chain.s_of(&xt.road_id, xt.s).is_some(),
+                        false => xt.road_id == road,
+                    }) else {
+                        let at = match chain.is_chain() {
+                            true => chain.describe(),
+                            false => format!("road {road} beside '{name}'"),
+                        };
                         return Err(fail(
-                            format!("'{entity_ref}' on road {road} beside '{name}'"),
+                            format!("'{entity_ref}' on {at}"),
                             format!("'{entity_ref}' elsewhere"),
                         ));
                     };
                     let x_forward = xt.direction == Direction::Forward;
-                    let s_x = s_at_lane_distance(
-                        &world.network,
-                        &road,
-                        xt.lane_id,
-                        xt.s,
-                        (x.speed * t).abs(),
-                        x_forward == (x.speed >= 0.0),
-                    )
-                    .map_err(|err| {
-                        fail(
-                            format!("'{entity_ref}' on its lane {t} s later at its speed"),
-                            format!("the lane ends first ({err})"),
+                    let s_x = chain
+                        .s_at_lane_distance(
+                            &world.network,
+                            (&xt.road_id, xt.lane_id, xt.s),
+                            (x.speed * t).abs(),
+                            x_forward == (x.speed >= 0.0),
                         )
-                    })?;
+                        .map_err(|err| {
+                            fail(
+                                format!("'{entity_ref}' on its lane {t} s later at its speed"),
+                                format!("the lane ends first ({err})"),
+                            )
+                        })?;
                     s_x + gap.offset(x.speed)
                 }
                 _ => return Err(Error::unsupported("this TravelAction goal", pos)),
             };
-            let length = lane_arc_length(&world.network, &road, lane, s0, s1).ok_or_else(|| {
-                fail(
-                    format!("lane {lane} of road {road} up to s = {s1:.3} m"),
-                    "none".into(),
-                )
-            })?;
+            let length = chain
+                .lane_length(&world.network, road, lane, (s0, s1))
+                .ok_or_else(|| {
+                    let of = match chain.is_chain() {
+                        true => chain.describe(),
+                        false => format!("road {road}"),
+                    };
+                    fail(
+                        format!("lane {lane} of {of} up to s = {s1:.3} m"),
+                        "none".into(),
+                    )
+                })?;
             // Along the direction of travel: a goal behind the actor is a negative distance.
             if (s1 >= s0) == forward {
                 length

@@ -6,12 +6,14 @@
 //! entity from the side it was on at the mark: `position(time: t / neither, ahead_of/behind:
 //! x, at: end)` without a duration; with `track: projected` x as projected from the mark on:
 //! along its lane at the speed it had then). Both are false before the mark is noted, so they may
-//! stand in any trigger.
+//! stand in any trigger. On a plan over several roads (the check's `roads`, kept on the mark)
+//! the places are the plan's s on any of its roads, and x is projected along its lane across
+//! their joints (`position::RoadChain`).
 
 use opendrive::{Real, RoadNetwork, RoadPosition};
 use scenario::SpeedGap;
 
-use crate::position::{s_at_lane_distance, EntityView};
+use crate::position::{EntityView, RoadChain};
 
 /// What a state check noted on its actor.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -23,6 +25,9 @@ pub struct Mark {
     pub gap_error: Option<Real>,
     /// With a projected gap: the gap's entity as it was then, projected from then on.
     pub projection: Option<Projection>,
+    /// The roads of the check's plan over several roads with the plan's s at each start
+    /// (empty: one road), which the gap measures along.
+    pub roads: Vec<(String, Real)>,
 }
 
 /// An entity projected from a moment on (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track:
@@ -44,24 +49,29 @@ pub struct Projection {
 }
 
 impl Projection {
-    /// Its s at `now` (`None` where its lane ends first).
-    fn s_at(&self, network: &RoadNetwork, now: Real) -> Option<Real> {
+    /// Its s at `now` along `chain` (`None` where its lane ends first).
+    fn s_at(&self, network: &RoadNetwork, chain: RoadChain<'_>, now: Real) -> Option<Real> {
         let d = (self.speed * (now - self.time)).abs();
         let forward = self.forward == (self.speed >= 0.0);
-        s_at_lane_distance(network, &self.road, self.lane, self.s, d, forward).ok()
+        chain
+            .s_at_lane_distance(network, (&self.road, self.lane, self.s), d, forward)
+            .ok()
     }
 }
 
 /// The actor's s minus the gap's entity's, less [`SpeedGap::offset`] at that entity's speed
-/// `speed` (m): 0 where the gap asks the actor to be, positive beyond. `None` when the two are
-/// on different roads (s is not comparable).
+/// `speed` (m), in the plan's s along `chain`: 0 where the gap asks the actor to be, positive
+/// beyond. `None` when s is not comparable (on one road, the two on different roads; on a
+/// chain, either off it).
 pub(crate) fn place_error(
+    chain: RoadChain<'_>,
     actor: &RoadPosition,
     other: &RoadPosition,
     speed: Real,
     gap: &SpeedGap,
 ) -> Option<Real> {
-    (actor.road_id == other.road_id).then(|| actor.s - other.s - gap.offset(speed))
+    let (a, x) = chain.pair(actor, other)?;
+    Some(a - x - gap.offset(speed))
 }
 
 /// TraveledSinceMark: `e`'s odometer has advanced `value` m or more since `mark`.
@@ -85,14 +95,18 @@ pub(super) fn gap_reached_since(
     let Some(m0) = m.gap_error else {
         return false;
     };
+    let chain = RoadChain::new(&m.roads);
     let now_error = match &m.projection {
         Some(p) => p
-            .s_at(network, now)
-            .filter(|_| a.road_id == p.road)
-            .map(|s| a.s - s - gap.offset(p.speed)),
+            .s_at(network, chain, now)
+            .zip(match chain.is_chain() {
+                true => chain.s_of(&a.road_id, a.s),
+                false => (a.road_id == p.road).then_some(a.s),
+            })
+            .map(|(s, at)| at - s - gap.offset(p.speed)),
         None => other
             .road_position
-            .and_then(|x| place_error(a, x, other.speed, gap)),
+            .and_then(|x| place_error(chain, a, x, other.speed, gap)),
     };
     now_error.is_some_and(|now| now == 0.0 || (now > 0.0) != (m0 > 0.0))
 }

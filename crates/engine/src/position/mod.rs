@@ -14,6 +14,7 @@
 //! | `lane` | LanePosition, RelativeLanePosition (ds and dsLane) |
 //! | `lane_at` | the lane that holds a lateral offset at s (the look-up behind every entity's lane) |
 //! | `lane_length` | arc length along a lane centre line; s after a distance along it |
+//! | `road_chain` | the plan's s over a DSL plan's chain of roads; lane lengths and walks across their joints |
 //! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
 //! | `beyond` | s past a road's ends: the same continuation for every road-based form |
 //! | `check` | entity-free positions of a scenario resolved at load |
@@ -34,6 +35,7 @@ mod query;
 mod resolve;
 mod resolved;
 mod road;
+mod road_chain;
 mod route;
 mod sources;
 mod trajectory;
@@ -47,7 +49,8 @@ pub use resolved::ResolvedPosition;
 
 pub(crate) use lane::{add_lanes, driving_heading as lane_driving_heading};
 pub(crate) use lane_at::lane_at;
+pub(crate) use lane_length::lane_arc_length;
 pub use lane_length::SIMPSON_STEP;
-pub(crate) use lane_length::{lane_arc_length, s_at_lane_distance};
 pub(crate) use lane_walk::walk as lane_walk;
 pub(crate) use orientation::local_to_world;
+pub(crate) use road_chain::RoadChain;

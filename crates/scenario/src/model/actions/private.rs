@@ -305,6 +305,11 @@ pub struct Travel {
     /// The highest speed (m/s) and the highest acceleration or deceleration (m/s²) the profile
     /// may have.
     pub limits: (f64, f64),
+    /// The roads of a plan over several roads, each with the plan's s at its start (m), in
+    /// driving order (empty: one road, the actor's): with them a [`TravelGoal::RoadS`] is the
+    /// plan's s, another entity is measured on any of these roads, and the distance runs along
+    /// the actor's lane across their joints (as [`StateCheck::roads`]).
+    pub roads: Vec<(String, f64)>,
 }
 
 /// Where a [`Travel`] ends, measured along the actor's lane centre from where it starts.
@@ -313,7 +318,7 @@ pub struct Travel {
 pub enum TravelGoal {
     /// This distance (m) further along the lane.
     Distance(f64),
-    /// At this s (m) of the road the actor is on.
+    /// At this s (m) of the road the actor is on (the plan's s with [`Travel::roads`]).
     RoadS(f64),
     /// At that place relative to where the entity is at the end, the entity taken to keep the
     /// speed it has at the start along its lane (so the gap's speed is that one too).
