@@ -122,6 +122,31 @@ fn a_gap_between_two_oncoming_actors_is_reached_along_their_direction_of_travel(
 }
 
 #[test]
+fn speed_actions_against_s_run_along_the_direction_of_travel() {
+    let r = run_on("opposite_actions", "straight");
+    assert!((r.at(0.0, "npc").x - 980.0).abs() < S_TOL);
+    assert!((r.at(1.0, "npc").x - 970.0).abs() < S_TOL);
+    let at3 = r.at(3.0, "npc");
+    assert!((at3.speed - 20.0).abs() < S_TOL, "{at3:?}");
+    assert!(
+        (at3.x - (940.0 - ramp_lead(5.0, 2.0))).abs() < S_TOL,
+        "{at3:?}"
+    );
+    assert_eq!(r.phase("do.1"), (1.0, 5.0));
+    let at5 = r.at(5.0, "npc");
+    assert!(
+        (at5.x - (890.0 - ramp_lead(5.0, 4.0))).abs() < S_TOL,
+        "{at5:?}"
+    );
+    let at6 = r.at(6.0, "npc");
+    assert!((at6.speed - 30.0).abs() < S_TOL && at6.lane == 1, "{at6:?}");
+    assert!(
+        (at6.x - (860.0 - ramp_lead(5.0, 4.0))).abs() < S_TOL,
+        "{at6:?}"
+    );
+}
+
+#[test]
 fn lanes_against_s_are_counted_in_the_direction_of_travel() {
     let r = run_on("opposite_lanes", "straight");
     let y1 = |tau: f64| 1.75 + 3.5 * (1.0 - (PI * tau / 4.0).cos()) / 2.0;
