@@ -50,6 +50,7 @@ pub(crate) fn check_references(
     index: &HashMap<String, usize>,
 ) -> Result<(), Error> {
     let against: HashMap<&str, bool> = all.iter().map(|p| (p.name.as_str(), p.against)).collect();
+    let stands = |name: &str| all.iter().any(|p| p.name == name && p.fixed.is_some());
     if !against.values().any(|a| *a) {
         return Ok(());
     }
@@ -101,6 +102,12 @@ pub(crate) fn check_references(
                 || format!("{}(…)", inv.action),
                 |m| format!("{}(…)", m.name),
             );
+            if stands(x) {
+                return Err(a.site.err(
+                    K::Unsupported,
+                    format!("expected `{key}:` of {what} to name an actor driving in the direction of `{}` (against s), found `{x}`, a stationary object, whose place the plan measures in +s (relations of an actor driving against s to a stationary object are not run yet)", inv.actor),
+                ));
+            }
             return Err(a.site.err(
                 K::Unsupported,
                 format!(

@@ -480,4 +480,40 @@ mod tests {
         assert_eq!(lane, 1);
         assert!(u.abs() < 1e-6 && offset.abs() < 1e-6, "{u} {offset}");
     }
+
+    #[test]
+    fn roads_are_driven_back_only_where_the_left_lanes_run_on_in_the_same_lanes() {
+        // Road a (100 m) then road b (50 m) along +x; lanes -1 link a -> b, so the plan's roads
+        // are a, b. Against s: b's lane 1 runs back onto a's lane 1 (`same`), or onto a's lane
+        // 2 (`renumbered`), where the view would change lane ids.
+        let net = |to: i32| {
+            let xodr = format!(
+                r#"<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="a" length="100" junction="-1"><link><successor elementType="road" elementId="b" contactPoint="start"/></link><planView><geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry></planView>
+<lanes><laneSection s="0"><left><lane id="2" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane><lane id="1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><link><successor id="-1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road>
+<road id="b" length="50" junction="-1"><link><predecessor elementType="road" elementId="a" contactPoint="end"/></link><planView><geometry s="0" x="100" y="0" hdg="0" length="50"><line/></geometry></planView>
+<lanes><laneSection s="0"><left><lane id="1" type="driving"><link><predecessor id="{to}"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><link><predecessor id="-1"/></link><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road></OpenDRIVE>"#
+            );
+            RoadNetwork::from_str(&xodr, std::path::Path::new("ab.xodr")).expect("parses")
+        };
+        let same = net(1);
+        let road = PlanRoad::pick(&same).expect("a road");
+        assert_eq!(road.ids(), ["a", "b"]);
+        let back = road.against().expect("lane 1 runs back onto lane 1");
+        assert_eq!(back.ids(), ["b", "a"]);
+        // u = 30 m is 30 m back from b's end: b at s = 20 m; u = 70 m is a at s = 80 m.
+        assert_eq!(back.road_at(30.0).0.id, "b");
+        assert!((back.road_at(30.0).1 - 20.0).abs() < 1e-12);
+        assert_eq!(back.road_at(70.0).0.id, "a");
+        assert!((back.road_at(70.0).1 - 80.0).abs() < 1e-12);
+        let renumbered = net(2);
+        let e = PlanRoad::pick(&renumbered)
+            .expect("a road")
+            .against()
+            .expect_err("lane 1 runs back onto lane 2");
+        assert!(
+            e.contains("found lane 1 of road b leading onto lane 2 of road a"),
+            "{e}"
+        );
+    }
 }

@@ -297,6 +297,12 @@ fn what_does_not_run_against_s_is_an_error_at_its_place() {
             "21:13",
         ),
         (
+            "err_opposite_obstacle",
+            "straight",
+            &["expected `behind:` of position(…) to name an actor driving in the direction of `npc` (against s), found `barrier`, a stationary object, whose place the plan measures in +s"][..],
+            "19:35",
+        ),
+        (
             "err_opposite_route_self",
             "straight",
             &["expected two routes in opposite directions, found `r` twice"][..],
