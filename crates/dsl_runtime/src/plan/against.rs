@@ -17,8 +17,9 @@
 //! with a duration). The rest is an error at the
 //! action or modifier (not run yet), never planned in the wrong direction: an offset across the
 //! lane (`lateral`, `yaw`/`orientation`, a lane change's offset), the path, position and gap
-//! actions, `avoid_collisions(true)`, a group, and a phase that starts on a run-time condition
-//! (the engine's checks measure s in +s).
+//! actions, `avoid_collisions(true)`, a group, and in a phase that starts on a run-time
+//! condition `position(…)`, `lane(…)` relative to another actor and `along` a named route (the
+//! engine's checks at such a start measure places in +s).
 //!
 //! An actor along a free route of the other direction than its own is an error at the
 //! `along` (`check_alongs`).
@@ -186,11 +187,26 @@ pub(crate) fn check_runs(
             format!("expected a phase duration for position(…, at: end) of `{}`, which drives against s, found none (not run yet against s: without one the engine measures the gap reached in +s)", inv.actor),
         ));
     }
+    // After a run-time start the engine checks places in the plan's s in +s (plan::runtime):
+    // a position, a lane relative to another actor, a named route's interval. Lanes by number
+    // (the lane id the view gives), speeds and distances travelled are direction-free.
     if let Some(None) = t0 {
-        return Err(inv.actor_site.err(
-            K::Unsupported,
-            format!("expected a phase of `{}`, which drives against s, to start at a time the plan knows, found a start on a run-time condition (an until or wait before it; not run yet against s: the engine's checks at such a start measure s in +s)", inv.actor),
-        ));
+        let measured_in_s = mods.iter().find(|m| match m.kind {
+            ModKind::Position => true,
+            ModKind::Lane => crate::resolve::REFERENCES
+                .iter()
+                .any(|k| m.arg(k).is_some()),
+            ModKind::Along => {
+                matches!(m.along.as_ref().map(|a| &a.route), Some(Route::Lane { .. }))
+            }
+            _ => false,
+        });
+        if let Some(m) = measured_in_s {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!("expected no {}(…) that the engine checks at the start of a phase of `{}`, which drives against s, that starts on a run-time condition (an until or wait before it), found one (not run yet against s: the engine's checks at such a start measure places in +s; lane(n), speeds and distances run)", m.name, inv.actor),
+            ));
+        }
     }
     Ok(())
 }

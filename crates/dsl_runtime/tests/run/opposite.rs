@@ -147,6 +147,52 @@ fn speed_actions_against_s_run_along_the_direction_of_travel() {
 }
 
 #[test]
+fn an_oncoming_actor_brakes_after_a_run_time_condition() {
+    let r = run_on("opposite_until", "straight");
+    let (_, e) = r.phase("do.1.0");
+    assert!((e - 1.10).abs() < T_TOL, "until @quick ended at {e}");
+    assert!((r.at(1.10, "npc").x - 878.0).abs() < S_TOL);
+    let (s, e) = r.phase("do.1.1");
+    assert!(
+        (s - 1.10).abs() < T_TOL && (e - 5.10).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    let mid = r.at(3.10, "npc");
+    assert!((mid.speed - 10.0).abs() < S_TOL, "{mid:?}");
+    assert!(
+        (mid.x - (848.0 - ramp_lead(-5.0, 2.0))).abs() < S_TOL,
+        "{mid:?}"
+    );
+    let end = r.at(5.10, "npc");
+    assert!(end.speed.abs() < S_TOL && end.lane == 1, "{end:?}");
+    assert!(
+        (end.x - (838.0 - ramp_lead(-5.0, 4.0))).abs() < S_TOL,
+        "{end:?}"
+    );
+    assert!(wrap(end.h - PI).abs() < H_TOL, "{end:?}");
+    // distance(8m) over 2 s from standing: the engine's TravelAction along the lane.
+    assert!((r.at(6.10, "npc").x - (838.5 - 4.0 - ramp_lead(8.0, 1.0))).abs() < S_TOL);
+    let last = r.at(7.10, "npc");
+    assert!(
+        (last.x - 830.5).abs() < S_TOL && last.speed.abs() < S_TOL,
+        "{last:?}"
+    );
+    // The engine's lane check at the run-time start passed: no error record, the run ends.
+    let lowered = lower_at(
+        "tests/scenarios/opposite_until.osc",
+        "tests/roads/straight.xodr",
+        0,
+        None,
+    )
+    .expect("plans");
+    let (failed, errors) = crate::support::run_to_error(&lowered.scenario);
+    assert!(
+        failed.is_none() && errors.is_empty(),
+        "{failed:?} {errors:?}"
+    );
+}
+
+#[test]
 fn lanes_against_s_are_counted_in_the_direction_of_travel() {
     let r = run_on("opposite_lanes", "straight");
     let y1 = |tau: f64| 1.75 + 3.5 * (1.0 - (PI * tau / 4.0).cos()) / 2.0;
@@ -281,8 +327,8 @@ fn what_does_not_run_against_s_is_an_error_at_its_place() {
         (
             "err_opposite_until",
             "straight",
-            &["expected a phase of `npc`, which drives against s, to start at a time the plan knows, found a start on a run-time condition"][..],
-            "21:9",
+            &["expected no position(…) that the engine checks at the start of a phase of `npc`, which drives against s, that starts on a run-time condition"][..],
+            "23:13",
         ),
         (
             "err_opposite_route_dir",
