@@ -5,22 +5,30 @@
 //! | form | lowered to | ends |
 //! | --- | --- | --- |
 //! | `p.walk() with: along(c)` | FollowTrajectoryAction in following mode `position` along the straight line from the start lane's centre to the end lane's (`map_crossings`), timed from the phase start at the walker's speed: `speed(v)` of the phase, else the speed it has | when it reaches the end lane's centre, the line's length over the speed |
+//! | `along(c, start_offset: a, end_offset: b)` | the same along the part of the line from a m after its start to b m before its end (the crossing's own s, §8.12.2.2.9: "The s-coordinate of the crossing increases from the start_lane to end_lane") | when it reaches that part's end, its length over the speed |
+//! | `lateral(d, side: left\|right)` beside the walk (at: start or all) | the same along the line moved d across itself to the walker's left or right (`crossing_shift`) | as above |
 //!
-//! The walker must be at the crossing's start when the walk starts (a first phase places it
-//! there; a later one checks it, 0.5 m), moving, and the phase's start known to the plan; the
-//! crossing walked whole (`start_offset`/`end_offset` are errors, `crate::resolve`). A vehicle
-//! or another action along a crossing is an error at `along`. The plan has the walker at the
-//! end lane's centre from the end on; in between it keeps the walker's track along its lane
-//! (as for `follow_trajectory`), since the engine moves it.
+//! The walker must be at the start of the part it walks when the walk starts (a first phase
+//! places it there, `walked_part`; a later one checks it, 0.5 m), moving, and the phase's
+//! start known to the plan; a + b must be below the crossing's length. The phase's `speed(v)`
+//! times the walk; no SpeedAction runs beside it (it would replace the walk's action). A
+//! vehicle or another action along a crossing is an error at `along`. The plan has the walker
+//! at the part's end from the end on (its lane, s and offset there); in between it keeps the
+//! walker's track along its lane (as for `follow_trajectory`), since the engine moves it.
 
 use scenario::FollowingMode;
 
+use super::lateral;
+use super::map_crossings::MapCrossing;
 use super::path_shape::along as trajectory;
 use super::planner::Planner;
 use super::speed_actions::Slot;
 use super::types::{Planned, When, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{Action, ActorKind, Along, At, Invoke, ModKind, Modifier, Phase, Route};
+use crate::resolve::{
+    Action, ActorKind, Along, Arg, At, Invoke, ModKind, Modifier, Phase, Route, Val,
+};
+use crate::road::PlanRoad;
 
 impl Planner<'_> {
     /// Plans `inv`, a walk along the crossing `along` names, for one walker.
@@ -60,9 +68,8 @@ impl Planner<'_> {
                 format!("expected a phase start the plan knows for a walk along crossing `{field}`, found one after a run-time condition"),
             ));
         };
-        let (lane0, s0, w0) = c.crossing.start;
-        let (lane1, s1, w1) = c.crossing.end;
-        let (s0, s1) = (c.road_start + s0, c.road_start + s1);
+        let shift = crossing_shift(&mods.iter().collect::<Vec<_>>(), field)?;
+        let ((lane0, s0, w0), (lane1, s1, w1)) = walked_part(&self.road, &c, along, shift)?;
         let (lane, s, w) = (
             self.track(target).lane(t),
             self.s_at(target, t),
@@ -72,9 +79,14 @@ impl Planner<'_> {
             || (s - s0).abs() > POSITION_TOLERANCE
             || (w - w0).abs() > POSITION_TOLERANCE
         {
+            let part = if along.start_offset > 0.0 || shift != 0.0 {
+                "the start of the walked part"
+            } else {
+                "the start"
+            };
             return Err(along.site.err(
                 K::Unsatisfiable,
-                format!("expected `{target}` at the start of crossing `{field}` ({}: lane {lane0} at s = {s0:.2} m, t = {w0:.2} m) when its walk starts, found it in lane {lane} at s = {s:.2} m, t = {w:.2} m", c.why),
+                format!("expected `{target}` at {part} of crossing `{field}` ({}: lane {lane0} at s = {s0:.2} m, t = {w0:.2} m) when its walk starts, found it in lane {lane} at s = {s:.2} m, t = {w:.2} m", c.why),
             ));
         }
         let v = match mods
@@ -110,7 +122,106 @@ impl Planner<'_> {
             &along.site,
         );
         out.push(Planned::with_phase(target, n.clone(), action, &p.site));
-        self.arrive(target, t, span, (lane1, s1, 0.0));
+        let offset = w1 - self.road.lane_center(lane1, s1);
+        self.arrive(target, t, span, (lane1, s1, offset));
         Ok(Some(self.ends(t0, span, &n, p)))
     }
+}
+
+/// A point of a crossing: lane, the plan's s and t (m).
+pub(super) type CrossingPoint = (i32, f64, f64);
+
+/// The part of crossing `c` a walk `along` it covers: from `along.start_offset` m after the
+/// crossing's start to `along.end_offset` m before its end, measured along the straight line
+/// (the crossing's own s, §8.12.2.2.9, "increases from the start_lane to end_lane"), moved
+/// `shift` m across it to the walker's left (`crossing_shift`), each end with the lane that
+/// holds it. Without offsets the crossing's own ends (lane centres). The
+/// line's points are taken between its ends in road coordinates, which is the world line where
+/// the reference line is straight under the crosswalk (as `map_crossings` lays the crossing).
+/// Offsets that leave nothing to walk are an error at `along`.
+pub(super) fn walked_part(
+    road: &PlanRoad<'_>,
+    c: &MapCrossing,
+    along: &Along,
+    shift: f64,
+) -> Result<(CrossingPoint, CrossingPoint), Error> {
+    let (lane0, s0, t0) = c.crossing.start;
+    let (lane1, s1, t1) = c.crossing.end;
+    let (s0, s1) = (c.road_start + s0, c.road_start + s1);
+    let (a, b) = (along.start_offset, along.end_offset);
+    if a == 0.0 && b == 0.0 && shift == 0.0 {
+        return Ok(((lane0, s0, t0), (lane1, s1, t1)));
+    }
+    let length = (s1 - s0).hypot(t1 - t0);
+    // The walker's left of the line in road coordinates (t is to the left of s): the line's
+    // direction turned by +90°.
+    let (ns, nt) = (-(t1 - t0) / length, (s1 - s0) / length);
+    if a + b >= length {
+        return Err(along.site.err(
+            K::Unsatisfiable,
+            format!("expected start_offset + end_offset below the length of crossing `{}`, {length:.2} m ({}), found {a} m + {b} m", c.field, c.why),
+        ));
+    }
+    let at = |f: f64| -> Result<CrossingPoint, Error> {
+        let (s, t) = (
+            s0 + f * (s1 - s0) + shift * ns,
+            t0 + f * (t1 - t0) + shift * nt,
+        );
+        let lane = road
+            .world_pose(s, t)
+            .and_then(|(x, y, _)| road.locate(x, y))
+            .map(|(lane, _, _)| lane)
+            .ok_or_else(|| {
+                along.site.err(
+                    K::Road,
+                    format!("expected crossing `{}` on a lane at s = {s:.2} m, t = {t:.2} m, found none", c.field),
+                )
+            })?;
+        Ok((lane, s, t))
+    };
+    Ok((at(a / length)?, at(1.0 - b / length)?))
+}
+
+/// How far `lateral(d, side: left|right)` among `mods` (the walk's modifiers) moves a walk
+/// along a crossing across it (m, + to the walker's left as it walks the crossing; 0 without
+/// one): the crossing is the walk's route, so the lateral position is the walker's reference
+/// point from the crossing's line (§8.9 `lateral`, measured `center_to_center`, the default
+/// here), held over the walk (at: start or all). Beside another actor, at: end, or measured to
+/// a lane's border (`closest`, `left_to_left`, …: the crossing has no borders) are errors at
+/// the modifier.
+pub(super) fn crossing_shift(mods: &[&Modifier], field: &str) -> Result<f64, Error> {
+    let Some(m) = mods.iter().find(|m| m.kind == ModKind::Lateral) else {
+        return Ok(0.0);
+    };
+    let refuse = |what: String| {
+        Err(m.site.err(
+            K::Unsupported,
+            format!("expected lateral(d, side: left or right) at: start or all beside a walk along crossing `{field}` (the walker's reference point d from the crossing's line), found {what}"),
+        ))
+    };
+    if lateral::reference(m)?.is_some() {
+        return refuse("a position beside another actor".into());
+    }
+    if m.at == At::End {
+        return refuse("at: end (the walk keeps one line)".into());
+    }
+    match m.arg("measure_by").map(Arg::eval).transpose()? {
+        None => {}
+        Some(Val::Enum(e)) if e == "center_to_center" => {}
+        Some(Val::Enum(e)) => {
+            return refuse(format!("measure_by: {e} (a crossing has no borders)"))
+        }
+        Some(_) => return refuse("a measure_by that is no lat_measure_by".into()),
+    }
+    let d = m
+        .arg("distance")
+        .map(Arg::number)
+        .transpose()?
+        .unwrap_or(0.0);
+    let left = match m.arg("side").map(Arg::eval).transpose()? {
+        Some(Val::Enum(e)) if e == "right" => false,
+        Some(Val::Enum(e)) if e == "left" => true,
+        _ => return refuse("no side: left or right".into()),
+    };
+    Ok(if left { d } else { -d })
 }

@@ -270,7 +270,9 @@ impl Planner<'_> {
                     ) => {}
                     (ModKind::Speed, At::Start | At::All) => {
                         let (v, relative) = self.speed_value(m, t0)?;
-                        if first {
+                        // A walk along a crossing is timed at this speed (`crossing_walk`): a
+                        // SpeedAction beside its FollowTrajectoryAction would replace it.
+                        if first || crossing.is_some() {
                             continue;
                         }
                         let target_speed = match relative {
@@ -729,6 +731,9 @@ impl Planner<'_> {
                             tr.add_move(t, t + len);
                         }
                     }
+                    // Beside a walk along a crossing: the walk's line moved across
+                    // (`crossing_walk::crossing_shift`).
+                    (ModKind::Lateral, _) if crossing.is_some() => {}
                     (ModKind::Lateral, At::Start | At::All) => {
                         if m.at == At::All {
                             if let Some(c) = lane_change(mods) {

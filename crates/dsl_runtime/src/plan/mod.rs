@@ -271,6 +271,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     }
     // Initial placement from each actor's first phase.
     let mut to_place = Vec::new();
+    // Walkers placed at a crossing's walked part: its lane, s and offset from the lane centre.
+    let mut crossing_offsets = HashMap::new();
     for e in &p.entities {
         let first = p.first_leaf.get(&e.name);
         let (mods, site, actor): (Vec<&Modifier>, &Site, Option<&str>) =
@@ -311,6 +313,25 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
             _ => None,
         };
+        // A crossing of the first phase: at the start of the part walked (`crossing_walk`).
+        let crossing_start = first
+            .and_then(|f| p.alongs.get(f))
+            .into_iter()
+            .flatten()
+            .find_map(|(at, a)| match (&a.route, at) {
+                (Route::Crossing { field }, At::Start | At::All) => {
+                    p.crossings.get(field).map(|c| (c, a))
+                }
+                _ => None,
+            })
+            .map(|(c, a)| {
+                let shift = crossing_walk::crossing_shift(&mods, &c.field)?;
+                crossing_walk::walked_part(road, c, a, shift).map(|(start, _)| start)
+            })
+            .transpose()?;
+        if let Some((lane, s, t)) = crossing_start {
+            crossing_offsets.insert(e.name.clone(), (lane, s, t - road.lane_center(lane, s)));
+        }
         // A named route of the first phase places the actor at its start; a lane driven in
         // −s (right-hand traffic: a positive id) puts the actor against s, at the distance u
         // = L − s along its direction of travel (`crate::road`), from where its lane starts in
@@ -334,11 +355,11 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                     }
                     // A lane field the map bound: from its lane section's start; a road field:
                     // from the road's start, in the lane the modifier bound there.
-                    // A crossing: at its start, on the start lane's centre.
-                    (Route::Crossing { field }, At::Start | At::All) => p
-                        .crossings
-                        .get(field)
-                        .map(|c| (c.crossing.start.0, c.road_start + c.crossing.start.1, false))?,
+                    // A crossing: at the start of the part walked (its start lane's centre
+                    // without a start_offset or lateral).
+                    (Route::Crossing { .. }, At::Start | At::All) => {
+                        crossing_start.map(|(lane, s, _)| (lane, s, false))?
+                    }
                     // A route field `routes_are_opposite` binds to the plan's roads against
                     // s: no start of its own (the actor floats, in u).
                     (Route::Free { field, .. }, At::Start | At::All)
@@ -390,8 +411,15 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     let entity = |path: &str| p.index.contains_key(path).then(|| path.to_string());
     let starts = place(road, p.against_road.as_ref(), &to_place, &entity)?;
     for (e, q) in p.entities.iter_mut().zip(&to_place) {
-        let s = starts[&e.name];
+        let mut s = starts[&e.name];
         e.against = q.against;
+        // Placed by its crossing (no lane or position of its own): off its lane's centre
+        // where the walked part starts there.
+        if let Some((lane, at, offset)) = crossing_offsets.get(&e.name) {
+            if s.lane == *lane && (s.s - at).abs() < POSITION_TOLERANCE {
+                s.offset = *offset;
+            }
+        }
         e.track = Track::new(s.s, s.v, s.lane);
         e.track.set_offset(0.0, s.offset);
         p.last_v.insert(e.name.clone(), s.v);

@@ -24,7 +24,8 @@
 //!   Placement and checks as for one point, the end being the last point.
 //!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
-//!   person walking along it crosses from its start lane to its end lane (`crate::plan`).
+//!   person walking along it crosses from its start lane to its end lane (`crate::plan`),
+//!   from `start_offset` m after the crossing's start to `end_offset` m before its end.
 //!
 //! Everything else (paths, route points, list elements of the map, other map
 //! methods) is an error naming the argument.
@@ -123,8 +124,8 @@ pub(crate) fn read(
     let route = route_of(ctx, e)?;
     let fixed_ends = match &route {
         Route::Free { field, .. } => Some((field, "a route the runtime chooses (its ends are where the actors drive)", "; name the route with map.create_odr_point(road_id, lane_id, s, t) to drive from a given place")),
-        Route::Crossing { field } => Some((field, "a crossing (walked whole, from its start lane to its end lane)", "")),
-        Route::Lane { .. } => None,
+        // A crossing's offsets trim the walk along it (`plan::crossing_walk`).
+        Route::Crossing { .. } | Route::Lane { .. } => None,
     };
     if let Some((field, what, hint)) = fixed_ends {
         for (name, x) in [("start_offset", start_offset), ("end_offset", end_offset)] {

@@ -157,6 +157,36 @@ fn a_person_walks_a_crossing_the_map_binds_and_a_car_stops_before_her() {
 }
 
 #[test]
+fn a_person_walks_the_part_of_a_crossing_its_offsets_leave() {
+    // map_crossing_offsets.osc: c from (100, -1.75) to (100, 1.75) walked from 1 m after its
+    // start to 0.5 m before its end, then c2 back from 0.5 m after its start to 1 m before its
+    // end, each 2 m at 0.5 m/s and 0.5 m to +x of the crossing's line (the walker's right
+    // going, its left coming back); positions worked in the file.
+    let r = run("map_crossing_offsets", "crosswalk");
+    for (t, y, lane) in [
+        (0.0, -0.75, -1),
+        (1.0, -0.25, -1),
+        (3.0, 0.75, 1),
+        (4.0, 1.25, 1),
+        (6.0, 0.25, 1),
+        (8.0, -0.75, -1),
+    ] {
+        let p = r.at(t, "alice");
+        assert!(
+            (p.x - 100.5).abs() < Y_TOL && (p.y - y).abs() < Y_TOL && p.lane == lane,
+            "alice at {t} s: {p:?}"
+        );
+    }
+    for (phase, a, b) in [("do.there", 0.0, 4.0), ("do.back", 4.0, 8.0)] {
+        let (s, e) = r.phase(phase);
+        assert!(
+            (s - a).abs() < Y_TOL && (e - b).abs() < Y_TOL,
+            "{phase}: [{s}, {e}]"
+        );
+    }
+}
+
+#[test]
 fn roads_in_sequence_are_bound_and_driven_from_their_starts() {
     // map_roads_sequence.osc: a = road 1, b = road 2 (linked end to start).
     let r = run("map_roads_sequence", "road_link_unequal_number_of_lanes0");
@@ -358,6 +388,18 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "crosswalk",
         "expected lanes of the map for `a`, `b` that satisfy crossing_connects(…), found none on roads 1",
         "8:5",
+    );
+    refused(
+        "err_map_crossing_offsets",
+        "crosswalk",
+        "expected start_offset + end_offset below the length of crossing `c2`, 3.50 m (crosswalk cw1 of road 1 bound by map.crossing_connects(…) at ",
+        "18:13",
+    );
+    refused(
+        "err_map_crossing_lateral",
+        "crosswalk",
+        "expected lateral(d, side: left or right) at: start or all beside a walk along crossing `c` (the walker's reference point d from the crossing's line), found at: end (the walk keeps one line)",
+        "13:9",
     );
     refused(
         "err_map_crossing_drive",
