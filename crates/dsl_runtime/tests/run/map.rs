@@ -181,6 +181,24 @@ fn run_time_travel_route_and_gaps_on_several_roads_measure_along_the_plans_roads
     assert!(t.is_some_and(|t| (t - 10.85).abs() < 1e-9), "{t:?}");
 }
 
+/// runtime_distance_several_roads.osc's comment, by hand: distance(100m) over 8 s after an
+/// until runs 100 m of lane from road 0 onto road 1's spiral.
+#[test]
+fn a_distance_after_an_until_on_several_roads_runs_along_the_lane_across_them() {
+    let r = run("runtime_distance_several_roads", "junction_trippel_twoway0");
+    let (s, e) = r.phase("do.travel");
+    assert!(
+        (s - 0.85).abs() < 1e-9 && (e - 8.85).abs() < 1e-9,
+        "[{s}, {e}]"
+    );
+    for (t, road, s_road, v) in [(4.85, "0", 76.625, 5.0), (8.85, "1", 26.6407, 20.0)] {
+        let p = r.at(t, "ego");
+        assert_eq!((p.road.as_str(), p.lane), (road, -1), "{t}: {p:?}");
+        assert!((p.s - s_road).abs() < CURVED_TOL, "{t}: {p:?}");
+        assert!((p.speed - v).abs() < 1e-6, "{t}: {p:?}");
+    }
+}
+
 /// runtime_several_roads_off_route.osc's comment, by hand: the route on road 2 checked in the
 /// plan's s while ego is on road 0 at s 27 m.
 #[test]
