@@ -202,9 +202,7 @@ impl Engine {
     fn actions(&mut self, time: f64, dt: f64) -> Vec<(String, Error)> {
         let clock = Instant::now();
         let world = self.world.get_mut();
-        for e in world.entities.iter_mut() {
-            e.start_speed = e.speed;
-        }
+        // Each actor's speed at the stage's start is noted there (actions/mod.rs).
         let failures = self.actions.step_all(world, time, dt);
         self.counters.actions += clock.elapsed();
         failures
