@@ -450,12 +450,7 @@ impl Planner<'_> {
                             // After a run-time start the speed the actor has is the engine's:
                             // its AccelerationAction holds a from that speed until the
                             // phase's Act stops (plan::runtime).
-                            out.push(self.start_acceleration(
-                                m,
-                                target,
-                                (a, len),
-                                name("acceleration"),
-                            ));
+                            out.extend(self.start_acceleration(m, target, (a, len), &mut name));
                             continue;
                         };
                         let v0 = self.track(target).at(t).1;

@@ -20,7 +20,7 @@
 //! | `lateral(d, side_of/left_of/right_of: x, at: end)` over a phase of duration T | projected: the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked; actual: the engine's sinusoidal blend to x's t at every step plus it (`lateral_end`) |
 //! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all, start or end | the engine's RelativeAccelerationAction: x's acceleration ± a in every step (at: all, end), or x's over the first step held (at: start) (`acceleration_follow`) |
 //! | `change_speed(v)` at the rate of such an `acceleration(…)`, at: start or all | the engine's RelativeAccelerationAction toward v at that rate, failing when v is not reached within the phase (`acceleration_follow`) |
-//! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends |
+//! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends, beside the engine's check that v₀ + a·T is within 0 and the vehicle's maximum speed then |
 //! | `speed(v, at: end)`, `change_speed(v)` (or to another actor's speed) over a phase of duration T, `change_speed(v, duration)` | the engine's SpeedAction over T from the speed the actor has, beside the engine's check that its peak rate fits the vehicle's limit then (a failure: an error record and a failed run, not a stretched change) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a, beside the engine's check that \|v − v₀\|/a ≤ T from the speed v₀ the actor has then (`speed_at_rate_check`) |
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
@@ -243,28 +243,38 @@ impl Planner<'_> {
     }
 
     /// The engine's `acceleration(a)` (alone, no speed target beside it) for `target` over a
-    /// phase of `len` s that starts on a run-time condition, as the action `name`: a step
-    /// AccelerationAction to `a`, so the actor accelerates at exactly a from the speed the
-    /// engine finds then until the phase's Act stops (at a known start the plan's linear
-    /// SpeedAction to v₀ + a·T, whose v₀ is the plan's: after a gap action or a
-    /// `change_acceleration` the speed the plan last knows is not the actor's). The plan
-    /// records v₀ + a·T from the speed it last knows, within 0 and the maximum (the
-    /// engine's action ends there, the vehicle stopping or at its top speed).
+    /// phase of `len` s that starts on a run-time condition, as the actions `name("check")`
+    /// and `name("acceleration")`: the engine's check that v₀ + a·T stays within 0 and the
+    /// vehicle's maximum speed from the speed v₀ the actor has then (beyond, the
+    /// AccelerationAction would end with the vehicle standing or at its top speed before the
+    /// phase ends, its acceleration no longer a: an error record and a failed run, as the
+    /// plan's error at a known start), and a step AccelerationAction to `a`, so the actor
+    /// accelerates at exactly a from that speed until the phase's Act stops (at a known start
+    /// the plan's linear SpeedAction to v₀ + a·T, whose v₀ is the plan's: after a gap action
+    /// or a `change_acceleration` the speed the plan last knows is not the actor's). The plan
+    /// records v₀ + a·T from the speed it last knows, within 0 and the maximum.
     pub(super) fn start_acceleration(
         &mut self,
         m: &Modifier,
         target: &str,
         (a, len): (f64, f64),
-        name: String,
-    ) -> Planned {
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> [Planned; 2] {
         let v1 = (self.last_v[target] + a * len).clamp(0.0, MAX_SPEED);
         self.last_v.insert(target.to_string(), v1);
-        Planned::with_phase(
-            target,
-            name,
-            acceleration(Some(a), timed(DynamicsShape::Step, 0.0)),
-            &m.site,
-        )
+        let check = StateCheck {
+            held_acceleration: Some((a, len)),
+            ..StateCheck::default()
+        };
+        [
+            phase_start_check(target, (&m.name, &m.site), check, name("check")),
+            Planned::with_phase(
+                target,
+                name("acceleration"),
+                acceleration(Some(a), timed(DynamicsShape::Step, 0.0)),
+                &m.site,
+            ),
+        ]
     }
 
     /// The engine's change of `target`'s offset in its lane to the one `m` (a `lateral(…, at:

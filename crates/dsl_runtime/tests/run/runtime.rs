@@ -428,6 +428,21 @@ fn acceleration_alone_after_an_until_accelerates_from_the_speed_the_actor_has() 
     );
 }
 
+/// runtime_acceleration_alone_fails.osc's comment, by hand: from 18 m/s, −10 m/s² for 2 s
+/// would stand ego after 1.8 s; the engine's check at the phase start fails the run.
+#[test]
+fn acceleration_alone_that_would_stop_the_actor_within_the_phase_after_an_until_fails_the_run() {
+    fails(
+        "runtime_acceleration_alone_fails",
+        (
+            "expected 'ego''s speed from 18.000 m/s at -10.000 m/s² for 2.000 s within 0 and 70.000 m/s (acceleration(…) at ",
+            "runtime_acceleration_alone_fails.osc:30:13), found it reaches 0.000 m/s after 1.800 s (-2.000 m/s at the end) at t = 5.350 s",
+        ),
+        "do.speed_up/ego/1:check",
+        5.35,
+    );
+}
+
 /// runtime_speed_at_rate.osc's comment, by hand: from the 18 m/s the engine has at 5.35 s (the
 /// plan knowing 0 m/s), 21 m/s at 1.5 m/s² takes the phase's 2 s, so the check passes.
 #[test]

@@ -5,9 +5,11 @@
 //! of the step sees it) must be in the lane, at the offset and at the distance to another
 //! entity it gives (or in the lane given relative to another entity's), at the speed it gives
 //! (absolute or another entity's plus a value) and that far from a mark noted before (its
-//! odometer), and a linear speed change starting with it must fit the vehicle's Performance,
+//! odometer), a linear speed change starting with it must fit the vehicle's Performance,
 //! which SpeedAction would otherwise meet by stretching the change in time
-//! (`speed::least_time`); otherwise it fails: an error record in the event log, and the run
+//! (`speed::least_time`), and an acceleration held over a time must keep the speed within 0
+//! and the maximum (where the AccelerationAction would end, the vehicle standing or at its top
+//! speed); otherwise it fails: an error record in the event log, and the run
 //! stops with [`ErrorKind::CheckFailed`](crate::ErrorKind::CheckFailed). A check that holds
 //! then notes its mark, if it has one (the actor's odometer and, with a gap, its side of the
 //! place the gap asks for: `condition::mark`). The DSL runtime also runs checks at a phase's
@@ -154,6 +156,25 @@ fn require(
                     e.name, e.speed,
                 ),
                 format!("it needs {needed:.3} s"),
+            ));
+        }
+    }
+    // Held over the phase the acceleration must keep the speed within 0 and the maximum: the
+    // AccelerationAction would end there, the acceleration 0 for the rest of the phase.
+    if let Some((a, within)) = check.held_acceleration {
+        let max = e.performance.map_or(f64::INFINITY, |p| p.max_speed.abs());
+        let (v0, v1) = (e.speed, e.speed + a * within);
+        let bound = if v1 < 0.0 { 0.0 } else { max };
+        if (v1 < -crate::tolerance::SPEED || v1 > max + crate::tolerance::SPEED) && a != 0.0 {
+            return Err(fail(
+                format!(
+                    "'{}''s speed from {v0:.3} m/s at {a:.3} m/s² for {within:.3} s within 0 and {max:.3} m/s",
+                    e.name,
+                ),
+                format!(
+                    "it reaches {bound:.3} m/s after {:.3} s ({v1:.3} m/s at the end)",
+                    (bound - v0) / a
+                ),
             ));
         }
     }

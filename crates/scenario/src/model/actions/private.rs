@@ -75,6 +75,12 @@ pub struct StateCheck {
     /// `change_speed`/`speed(…, at: end)` beside `acceleration(a)`, in a phase that starts on
     /// a run-time condition; the phase's end would otherwise cut the change short).
     pub speed_at_rate: Option<(SpeedTarget, f64, f64)>,
+    /// An acceleration (m/s²) held over the given time (s), starting with the check (the
+    /// AccelerationAction beside it): from the speed the actor has then it must end within 0
+    /// and the actor's maximum speed (ASAM OpenSCENARIO DSL 2.1 §8.9 `acceleration(a)` alone,
+    /// in a phase that starts on a run-time condition; the vehicle would otherwise stand, or
+    /// stay at its top speed, with an acceleration of 0 before the phase ends).
+    pub held_acceleration: Option<(f64, f64)>,
     /// The actor's speed (m/s): another entity's speed at the moment (`None`: 0) plus the
     /// value, and the tolerance (m/s).
     pub speed: Option<(Option<String>, f64, f64)>,
