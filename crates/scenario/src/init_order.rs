@@ -231,6 +231,12 @@ fn describe<'a>(action: &'a PrivateAction, node: &mut Node<'a>) {
                 node.sets.insert(Pos);
                 trajectory_needs(trajectory, &mut node.needs);
             }
+            RoutingAction::FollowTrajectoryAtSpeed(a) => {
+                node.kind = "FollowTrajectoryAction";
+                node.sets.insert(Pos);
+                node.needs.push((a.entity_ref.as_str(), Speed));
+                trajectory_needs(&a.trajectory, &mut node.needs);
+            }
             RoutingAction::AcquirePosition(position) => {
                 node.kind = "AcquirePositionAction";
                 node.needs.push((node.entity, Pos));

@@ -39,7 +39,8 @@
 //! moved point off the plan's roads is an error at the path.
 //!
 //! After a run-time condition a block follows as positions relative to each member, a column
-//! an untimed path from its checked offset (`group_path_runtime`).
+//! its lead-in and the path from its checked offset, a trajectory's stamps completed by the
+//! engine with the group's speed then (`group_path_runtime`).
 
 use super::path_part::{cut, samples, Samples};
 use super::path_shape::{segment_lengths, Pose2};
@@ -63,9 +64,9 @@ pub(super) struct Member {
 }
 
 impl Planner<'_> {
-    /// Checks that `inv`, a path or trajectory action on group `inv.actor`, can run: a start
-    /// the plan knows, or a group over several lanes (a block, whose members' paths the engine
-    /// places from where they are then).
+    /// Checks that `inv`, a path or trajectory action on group `inv.actor`, can run: after a
+    /// run-time condition, a plan on one road (the engine places each member's path in road
+    /// coordinates from where it is then).
     pub(super) fn check_group_path(
         &self,
         p: &Phase,
@@ -73,16 +74,6 @@ impl Planner<'_> {
         t0: Option<f64>,
     ) -> Result<(), Error> {
         let g = &inv.actor;
-        let timed = matches!(
-            inv.kind,
-            Action::FollowTrajectory | Action::ReplayTrajectory
-        );
-        if t0.is_none() && timed && !self.across.contains(g) {
-            return Err(p.site.err(
-                K::Unsatisfiable,
-                format!("expected a start the plan knows for {}(…) on single-lane group `{g}` (member i's time stamps are shifted by its distance behind member 0 over the group's speed then, which the plan does not know and the engine cannot check), found one after a run-time condition", inv.action),
-            ));
-        }
         if t0.is_none() && self.road.ids().len() > 1 {
             return Err(p.site.err(
                 K::Unsatisfiable,
@@ -149,13 +140,7 @@ impl Planner<'_> {
         let mut lead_in = self.lead_in(given, target, lane, (s, s_lead, t))?;
         let first = lead_in.len();
         lead_in.extend_from_slice(points);
-        let along: Vec<f64> = segment_lengths(&lead_in[..=first], smooth)
-            .iter()
-            .scan(0.0, |d, l| {
-                *d += l;
-                Some(*d)
-            })
-            .collect();
+        let along = lead_in_along(&lead_in, first, smooth);
         let Some(times) = times else {
             return Ok(Some(place(lead_in, None, smooth)));
         };
@@ -330,6 +315,19 @@ pub(super) fn place_of(
         },
         ..given.clone()
     }
+}
+
+/// The distance (m) along `points`, a lead-in of `first` points followed by the path, from
+/// its first point to each of its points 1 to `first` (the last, the path's first point: the
+/// lead-in's length).
+pub(super) fn lead_in_along(points: &[Pose2], first: usize, smooth: bool) -> Vec<f64> {
+    segment_lengths(&points[..=first], smooth)
+        .iter()
+        .scan(0.0, |d, l| {
+            *d += l;
+            Some(*d)
+        })
+        .collect()
 }
 
 /// How far the moves of a path's points across a straight road may differ and still be one

@@ -12,15 +12,18 @@
 //! offset within 0.5 m; a failure is an error record and a failed run), its stamps member 0's
 //! (on a plan of one road: the engine measures s on the road the member is on).
 //!
-//! A column's untimed path: member 0 checked at the part's start as above, member i taken at
-//! the offset from member 0 the plan last knows, which the engine checks too
-//! (`position_actions::formation_check`), its lead-in from there. A column's trajectory is an
-//! error: member i's stamps are shifted by its distance over the group's speed then, which the
-//! plan does not know and no check of the engine's takes.
+//! A column: member 0 checked at the part's start as above, member i taken at the offset from
+//! member 0 the plan last knows, which the engine checks too
+//! (`position_actions::formation_check`), its lead-in from there. On a trajectory member i's
+//! stamps are shifted by its distance d behind member 0 (the lead-in's length) over the
+//! group's speed v₀ at the start, and its lead-in is driven at v₀, as at a known start: the
+//! plan does not know v₀, so the engine reads member 0's speed when the action starts and
+//! adds each point's distance over it to its stamp (oscsim's FollowTrajectoryAtSpeed,
+//! [`ColumnTimes`]); member 0 standing then is an error record and a failed run.
 
 use scenario::{PositionKind, StateCheck};
 
-use super::group_path::{followed_part, place_of, Part, STEP};
+use super::group_path::{followed_part, lead_in_along, place_of, Part, STEP};
 use super::path_part::samples;
 use super::path_shape::segment_lengths;
 use super::planner::Planner;
@@ -28,15 +31,29 @@ use super::types::POSITION_TOLERANCE;
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Invoke, PlaceArg};
 
+/// The stamps of a column member's trajectory after a run-time start, a + b / v₀ with v₀ the
+/// group's speed (member 0's) when the action starts, which the engine reads then (oscsim's
+/// FollowTrajectoryAtSpeed): a the part's stamps, the lead-in's all at the first; b the
+/// distance along the lead-in to each of its points, then its whole length d at each point of
+/// the part. So the lead-in is driven at v₀ and the part's stamps are shifted by d / v₀, as
+/// at a known start (`group_path`).
+pub(super) struct ColumnTimes {
+    /// The entity whose speed at the start the distances are covered at: member 0.
+    pub lead: String,
+    /// The distance (m) per point.
+    pub distances: Vec<f64>,
+}
+
 /// What a member of a group over several lanes follows after a run-time start.
 pub(super) enum RunTimePlace {
     /// Member 0: the engine's check that it stands at the part's start (the other members'
     /// paths are placed from where they are, as if it did), and the part of the path between
     /// the offsets (`None`: the path as given).
     Lead(Box<StateCheck>, Option<PlaceArg>),
-    /// Member i of a column (untimed): the engine's check of its offset from member 0 as the
-    /// plan last knows it, and its lead-in from there and the part.
-    Column(Box<StateCheck>, PlaceArg),
+    /// Member i of a column: the engine's check of its offset from member 0 as the plan last
+    /// knows it, and its lead-in from there and the part; for a trajectory, the path's stamps
+    /// with the lead-in's at the first, and a distance per point (`ColumnTimes`).
+    Column(Box<StateCheck>, PlaceArg, Option<ColumnTimes>),
     /// Member i: positions relative to itself, resolved when the action starts, and their
     /// time stamps for a trajectory.
     Relative(Vec<PositionKind>, Option<Vec<f64>>),
@@ -84,7 +101,9 @@ impl Planner<'_> {
             return Ok(Some(RunTimePlace::Lead(Box::new(check), part)));
         }
         if !self.across.contains(&inv.actor) {
-            return self.run_time_column(inv, given, target, part).map(Some);
+            return self
+                .run_time_column(inv, given, (target, lead), part)
+                .map(Some);
         }
         let length: f64 = segment_lengths(&part.points, part.smooth).iter().sum();
         let (dense, stamps) = samples(
@@ -119,15 +138,17 @@ impl Planner<'_> {
         Ok(Some(RunTimePlace::Relative(kinds, stamps)))
     }
 
-    /// At a run-time start, the untimed path member i of a column follows: its lead-in along
-    /// its lane from member 0's entry point less its offset from member 0 as the plan last
-    /// knows it, then the part; with the engine's check of that offset (`formation_check`),
-    /// member 0's of the entry point being its own (`run_time_place`).
+    /// At a run-time start, the path member `target` (i) of a column led by `lead` (member 0)
+    /// follows: its lead-in along its lane from member 0's entry point less its offset from
+    /// member 0 as the plan last knows it, then the part; with the engine's check of that
+    /// offset (`formation_check`), member 0's of the entry point being its own
+    /// (`run_time_place`). On a trajectory, its stamps to be completed by the engine with
+    /// member 0's speed then ([`ColumnTimes`]).
     fn run_time_column(
         &self,
         inv: &Invoke,
         given: &PlaceArg,
-        target: &str,
+        (target, lead): (&str, &str),
         part: Part,
     ) -> Result<RunTimePlace, Error> {
         let (lane, s, offset) = self.part_start(given, &part)?;
@@ -135,10 +156,31 @@ impl Planner<'_> {
         let (check, (ds, dt)) = self.formation_check(inv, &given.site, target)?;
         let member_lane = self.track(target).lane(self.last_known());
         let mut points = self.lead_in(given, target, member_lane, (s + ds, s, t + dt))?;
+        let first = points.len();
         points.extend_from_slice(&part.points);
+        let Some(times) = part.times else {
+            return Ok(RunTimePlace::Column(
+                check,
+                place_of(given, points, None, part.smooth),
+                None,
+            ));
+        };
+        // The lead-in's points along it (its last length, d, to the part's first point).
+        let along = lead_in_along(&points, first, part.smooth);
+        let d = along[first - 1];
+        let mut stamps = vec![times[0]; first];
+        stamps.extend_from_slice(&times);
+        let mut distances = Vec::with_capacity(points.len());
+        distances.push(0.0);
+        distances.extend_from_slice(&along[..first - 1]);
+        distances.resize(points.len(), d);
         Ok(RunTimePlace::Column(
             check,
-            place_of(given, points, None, part.smooth),
+            place_of(given, points, Some(stamps), part.smooth),
+            Some(ColumnTimes {
+                lead: lead.to_string(),
+                distances,
+            }),
         ))
     }
 

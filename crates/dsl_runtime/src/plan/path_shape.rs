@@ -25,7 +25,7 @@
 
 use scenario::{
     ControlPoint, FollowingMode, Nurbs, Position, PositionKind, PrivateAction, ReferenceContext,
-    RoutingAction, Shape, SmoothFromActor, Timing, Trajectory, Vertex,
+    RoutingAction, Shape, SmoothFromActor, Timing, Trajectory, TrajectoryAtSpeed, Vertex,
 };
 
 use crate::error::Site;
@@ -320,6 +320,70 @@ pub(crate) fn smooth_from_actor(
         false,
         mode,
     )
+}
+
+/// oscsim's FollowTrajectoryAction timed at `lead`'s speed (scenario
+/// `RoutingAction::FollowTrajectoryAtSpeed`, no XML form) along the points of a trajectory
+/// ([`along`]): point k is reached at `times[k]` + `distances[k]` / v₀ after the first stamp,
+/// v₀ `lead`'s speed when the action starts (a smooth curve's control points at the same
+/// thirds of both, so each segment's time stays linear in its parameter). `what` names it
+/// for the engine's error when `lead` stands.
+pub(crate) fn along_at_speed(
+    name: &str,
+    (points, times, distances): (&[Pose2], &[f64], &[f64]),
+    smooth_curve: bool,
+    (lead, what): (&str, String),
+    site: &Site,
+) -> PrivateAction {
+    let mode = FollowingMode::Position;
+    let timed = along(name, points, Some(times), smooth_curve, mode, site);
+    // The same shape with the distances as its stamps: each point's distance, in order.
+    let by = along(name, points, Some(distances), smooth_curve, mode, site);
+    let (Some((trajectory, Some(time_reference))), Some((by, _))) =
+        (trajectory_of(timed), trajectory_of(by))
+    else {
+        unreachable!("along() builds a FollowTrajectoryAction, timed when given times")
+    };
+    let distances = point_times(&by.shape);
+    PrivateAction::Routing(Box::new(RoutingAction::FollowTrajectoryAtSpeed(Box::new(
+        TrajectoryAtSpeed {
+            trajectory,
+            time_reference,
+            following_mode: mode,
+            entity_ref: lead.to_string(),
+            distances,
+            what,
+        },
+    ))))
+}
+
+/// The trajectory and time reference of a FollowTrajectoryAction.
+fn trajectory_of(action: PrivateAction) -> Option<(Trajectory, Option<Timing>)> {
+    match action {
+        PrivateAction::Routing(r) => match *r {
+            RoutingAction::FollowTrajectory {
+                trajectory,
+                time_reference,
+                ..
+            } => Some((*trajectory, time_reference)),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// The times of a shape's points in order (a Polyline's vertices, a Nurbs's control points;
+/// 0 where a point has none).
+fn point_times(shape: &Shape) -> Vec<f64> {
+    match shape {
+        Shape::Polyline(v) => v.iter().map(|p| p.time.unwrap_or(0.0)).collect(),
+        Shape::Nurbs(n) => n
+            .control_points
+            .iter()
+            .map(|p| p.time.unwrap_or(0.0))
+            .collect(),
+        _ => Vec::new(),
+    }
 }
 
 /// A FollowTrajectoryAction along the points of a path or trajectory: the [`smooth`] curve

@@ -24,9 +24,11 @@
 use scenario::{FollowingMode, PrivateAction};
 
 use super::group_path::Member;
-use super::group_path_runtime::RunTimePlace;
+use super::group_path_runtime::{ColumnTimes, RunTimePlace};
 use super::path_part::cut;
-use super::path_shape::{along, polyline_through, segment_lengths, starting_at, Pose2};
+use super::path_shape::{
+    along, along_at_speed, polyline_through, segment_lengths, starting_at, Pose2,
+};
 use super::planner::Planner;
 use super::speed_actions::Slot;
 use super::types::{Planned, When, MAX_SPEED};
@@ -73,11 +75,34 @@ impl Planner<'_> {
                     .push(Planned::with_phase(slot.target, n, action, &p.site));
                 part.as_ref().or(given)
             }
-            Some(RunTimePlace::Column(check, lead_in)) => {
+            Some(RunTimePlace::Column(check, lead_in, column_times)) => {
                 let n = format!("{}/{}/formation:check", p.path, slot.target);
                 let action = PrivateAction::Check(check.clone());
                 slot.out
                     .insert(0, Planned::with_phase(slot.target, n, action, &p.site));
+                if let (
+                    Some(ColumnTimes { lead, distances }),
+                    Place::Trajectory {
+                        points,
+                        times,
+                        smooth,
+                    },
+                ) = (column_times, &lead_in.place)
+                {
+                    // The stamps the engine completes with member 0's speed then.
+                    let n = name(&inv.action);
+                    let what = format!("{}(…) at {}", inv.action, lead_in.site.at());
+                    let action = along_at_speed(
+                        &n,
+                        (points, times, distances),
+                        *smooth,
+                        (lead, what),
+                        &lead_in.site,
+                    );
+                    slot.out
+                        .push(Planned::with_phase(slot.target, n.clone(), action, &p.site));
+                    return Ok(Some(self.ends(None, 0.0, &n, p)));
+                }
                 Some(lead_in)
             }
             Some(RunTimePlace::Relative(kinds, times)) => {

@@ -280,11 +280,6 @@ fn group_forms_that_cannot_keep_the_formation_are_errors() {
             "expected `g.vehicles[0]` at the start of the path when group `g` follows it (every member enters it where member 0 does), found it 10.00 m from (50.00, -8.75)",
         ),
         (
-            "err_group_path_runtime",
-            "34:17",
-            "expected a start the plan knows for follow_trajectory(…) on single-lane group `g` (member i's time stamps are shifted by its distance behind member 0 over the group's speed then",
-        ),
-        (
             "err_group_lateral_gap",
             "12:9",
             "expected a single-lane group for a lateral gap in change_space_gap(…), found `g`",

@@ -1027,3 +1027,39 @@ fn change_position_smooth_after_an_until_curves_from_the_pose_the_engine_finds()
         "{ego:?}"
     );
 }
+
+/// runtime_column_trajectory.osc's comment, by hand: after `wait @go` the column's member 1
+/// follows its lead-in and the trajectory with its stamps shifted by 15 m over member 0's
+/// 14 m/s then (1.0714 s), which the engine reads when the action starts.
+#[test]
+fn a_columns_trajectory_after_a_run_time_condition_is_shifted_by_the_engines_headway() {
+    let r = run("runtime_column_trajectory", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.signal.1.w", 0.55, 2.55),
+            ("do.signal.1.follow", 2.55, 6.65),
+        ],
+    );
+    let (m0, m1) = ("g.vehicles[0]", "g.vehicles[1]");
+    // Member 0 accelerated at 2 m/s² from 0.55 s: 14 m/s at 2.55 s.
+    assert!(
+        (r.at(2.55, m0).speed - 14.0).abs() < V_TOL,
+        "{:?}",
+        r.at(2.55, m0)
+    );
+    let at = |name: &str, t: f64, x: f64| {
+        let m = r.at(t, name);
+        assert!(
+            (m.x - x).abs() < S_TOL && (m.y + 8.75).abs() < S_TOL,
+            "{name} at {t}: {m:?}, want x {x}"
+        );
+    };
+    at(m0, 4.05, 94.0 + 14.0 * 1.5);
+    at(m0, 5.55, 136.0);
+    // Member 1: 7 m of its lead-in at 14 m/s by 3.05 s; on tr 1.4286 s at 5.05 s, 20 m.
+    at(m1, 3.05, 86.0);
+    at(m1, 5.05, 114.0);
+    // Its last stamp at 6.6214 s: 0.3 m short of it at 6.60 s.
+    at(m1, 6.6, 135.7);
+}

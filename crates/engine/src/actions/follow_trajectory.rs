@@ -24,6 +24,10 @@
 //! action then ends when the actor reaches the trajectory's end, early or late. Entities
 //! without such constraints follow as in `position`.
 //!
+//! oscsim's FollowTrajectoryAction timed at another entity's speed (`scenario::
+//! TrajectoryAtSpeed`, no XML form; [`at_speed`]) runs as this action once its times are each
+//! shifted by the point's distance over that entity's speed when it starts.
+//!
 //! A negative speed without a Timing time reference drives the trajectory in reverse gear: the
 //! actor still travels from the trajectory's start towards its end, at |speed|, facing against
 //! the tangent (heading = tangent + π). The standard does not say what a negative speed means
@@ -184,6 +188,50 @@ pub(crate) struct Request<'a> {
     pub following_mode: FollowingMode,
     /// @initialDistanceOffset (m).
     pub initial_distance_offset: Option<f64>,
+}
+
+/// oscsim's FollowTrajectoryAction timed at another entity's speed
+/// (`scenario::TrajectoryAtSpeed`, no XML form), as the trajectory it follows from `now`: each
+/// point's time plus its distance over the entity's speed v now. The entity missing or
+/// standing (no v to cover the distances at) fails the action: an error record and a failed
+/// run, as oscsim's state check.
+pub(crate) fn at_speed(
+    world: &World,
+    a: &scenario::TrajectoryAtSpeed,
+    now: f64,
+) -> Result<scenario::Trajectory, Error> {
+    let fail = |found: String| {
+        Error::new(ErrorKind::CheckFailed {
+            what: a.what.clone(),
+            expected: format!("'{}' moving (its speed times the headways)", a.entity_ref),
+            found,
+            time: now,
+        })
+    };
+    let v = match world.id(&a.entity_ref) {
+        Some(id) => world.entity(id).speed,
+        None => return Err(fail("no such entity".into())),
+    };
+    if v <= crate::tolerance::SPEED {
+        return Err(fail(format!("it at {v:.3} m/s")));
+    }
+    let mut trajectory = a.trajectory.clone();
+    let mut distances = a.distances.iter();
+    let mut shift = |time: &mut Option<f64>| {
+        if let (Some(t), Some(d)) = (time.as_mut(), distances.next()) {
+            *t += d / v;
+        }
+    };
+    match &mut trajectory.shape {
+        scenario::Shape::Polyline(vertices) => {
+            vertices.iter_mut().for_each(|p| shift(&mut p.time));
+        }
+        scenario::Shape::Nurbs(n) => {
+            n.control_points.iter_mut().for_each(|p| shift(&mut p.time));
+        }
+        _ => {}
+    }
+    Ok(trajectory)
 }
 
 /// Starts the action at simulation time `now`.

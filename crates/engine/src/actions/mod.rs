@@ -35,7 +35,7 @@ mod visibility;
 
 use scenario::{
     Action, ActionKind, ControllerAction, GlobalAction, LaneChangeTarget, LateralAction,
-    LongitudinalAction, PrivateAction, RoutingAction,
+    LongitudinalAction, PrivateAction, RoutingAction, SourcePos,
 };
 
 pub(crate) use appearance::Appearances;
@@ -648,24 +648,23 @@ impl Host<'_> {
                 following_mode,
                 initial_distance_offset,
             } => {
-                self.claim(actor, Domain::Lateral, id);
-                if time_reference.is_some() {
-                    self.claim(actor, Domain::Longitudinal, id);
-                }
                 let request = follow_trajectory::Request {
                     trajectory,
                     timing: time_reference.as_ref(),
                     following_mode: *following_mode,
                     initial_distance_offset: *initial_distance_offset,
                 };
-                let started = follow_trajectory::start(self.world, actor, request, time, &pos);
-                // A trajectory that cannot be built skips the action (recorded in the event
-                // log); the actor drives on under the default controller.
-                Ok(started.unwrap_or_else(|e| {
-                    self.events.push(EventRecord::error(time, &name, &e));
-                    release(self.world, actor, id);
-                    Part::Done(ActionStatus::Stopped)
-                }))
+                Ok(self.start_trajectory(id, actor, request, (&pos, &name)))
+            }
+            RoutingAction::FollowTrajectoryAtSpeed(a) => {
+                let trajectory = follow_trajectory::at_speed(self.world, a, time)?;
+                let request = follow_trajectory::Request {
+                    trajectory: &trajectory,
+                    timing: Some(&a.time_reference),
+                    following_mode: a.following_mode,
+                    initial_distance_offset: None,
+                };
+                Ok(self.start_trajectory(id, actor, request, (&pos, &name)))
             }
             RoutingAction::RandomRoute => {
                 routing::random(self.world, actor, &pos, &name, time, self.events);
@@ -681,6 +680,29 @@ impl Host<'_> {
                 Ok(Part::Done(ActionStatus::Ended))
             }
         }
+    }
+
+    /// Starts a FollowTrajectoryAction on `actor`, claiming the lateral domain (and with a
+    /// time reference the longitudinal one). A trajectory that cannot be built skips the
+    /// action (recorded in the event log); the actor drives on under the default controller.
+    fn start_trajectory(
+        &mut self,
+        id: ActionId,
+        actor: EntityId,
+        request: follow_trajectory::Request<'_>,
+        (pos, name): (&SourcePos, &str),
+    ) -> Part {
+        let time = self.time;
+        self.claim(actor, Domain::Lateral, id);
+        if request.timing.is_some() {
+            self.claim(actor, Domain::Longitudinal, id);
+        }
+        let started = follow_trajectory::start(self.world, actor, request, time, pos);
+        started.unwrap_or_else(|e| {
+            self.events.push(EventRecord::error(time, name, &e));
+            release(self.world, actor, id);
+            Part::Done(ActionStatus::Stopped)
+        })
     }
 
     fn start_global(&mut self, id: ActionId, action: &GlobalAction) -> Result<(), Error> {

@@ -43,6 +43,7 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
             RoutingAction::FollowTrajectory { time_reference, .. } => {
                 (time_reference.is_some(), true, "FollowTrajectoryAction")
             }
+            RoutingAction::FollowTrajectoryAtSpeed(_) => (true, true, "FollowTrajectoryAction"),
             _ => return None,
         },
         _ => return None,

@@ -606,6 +606,34 @@ pub enum RoutingAction {
     AcquirePosition(Position),
     /// RandomRouteAction (1.3).
     RandomRoute,
+    /// oscsim's FollowTrajectoryAction timed at another entity's speed, an action with no XML
+    /// form (the DSL runtime writes it for a single-lane group's `follow_trajectory` /
+    /// `replay_trajectory`, ASAM OpenSCENARIO DSL 2.1 §8.8.2.17, in a phase that starts on a
+    /// run-time condition: member i's stamps are shifted by its distance behind member 0 over
+    /// the group's speed then, which the plan does not know).
+    FollowTrajectoryAtSpeed(Box<TrajectoryAtSpeed>),
+}
+
+/// oscsim's FollowTrajectoryAction timed at another entity's speed
+/// ([`RoutingAction::FollowTrajectoryAtSpeed`]): when it starts, with v that entity's speed
+/// then (> 0), each time of the trajectory's points (a Polyline's vertices or a Nurbs's
+/// control points, in order) is its own plus `distances[i]` / v; then it runs as the
+/// FollowTrajectoryAction with those times.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TrajectoryAtSpeed {
+    /// The trajectory, every point timed.
+    pub trajectory: Trajectory,
+    /// TimeReference/Timing.
+    pub time_reference: Timing,
+    /// TrajectoryFollowingMode.
+    pub following_mode: FollowingMode,
+    /// The entity whose speed at the start the distances are covered at.
+    pub entity_ref: String,
+    /// A distance (m) per point of the trajectory, in order.
+    pub distances: Vec<f64>,
+    /// What it is and where it is written, for the error when the entity stands
+    /// ("replay_trajectory(…) at f.osc:29:13").
+    pub what: String,
 }
 
 /// Timing of a trajectory (XSD `Timing`): t_sim = (t_traj · scale) + offset.
