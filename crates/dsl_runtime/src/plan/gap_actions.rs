@@ -220,8 +220,14 @@ impl Planner<'_> {
         // From here the engine's controller moves the actor (along the road: once it holds the
         // gap, at the reference's speed; across it: at its own speed).
         self.engine_moved.insert(target.to_string(), t0);
+        // A change that ends its phase (no duration or `until` of the phase's own) leaves the
+        // actor at its target when the phase after it starts.
+        let ends_phase =
+            (change && p.duration.is_none() && p.until.is_none()).then(|| p.path.clone());
         match wanted {
-            Some(g) => self.gaps.insert(target.to_string(), (reference.clone(), g)),
+            Some(g) => self
+                .gaps
+                .insert(target.to_string(), (reference.clone(), g, ends_phase)),
             // Measured by the engine: the plan knows no gap to keep later.
             None => self.gaps.remove(target),
         };
@@ -335,7 +341,7 @@ impl Planner<'_> {
     ) -> Result<bool, Error> {
         let kept_to = |m: Option<&String>| {
             m.and_then(|m| self.gaps.get(m))
-                .is_some_and(|(r, _)| r == reference)
+                .is_some_and(|(r, _, _)| r == reference)
         };
         if kept_to(members.first()) {
             return Ok(true);
@@ -363,8 +369,8 @@ impl Planner<'_> {
     }
 
     /// The gap of `kind` between `target` and `reference` at the start of a `keep_*` action:
-    /// the target of the actor's gap action just before (to the same reference, of the same
-    /// kind), else the plan's gap at the phase's start (along the road or across it); `None`
+    /// the target of the actor's change just before (to the same reference, of the same kind;
+    /// its phase, ended by it, the member before this one in a serial), else the plan's gap at the phase's start (along the road or across it); `None`
     /// where the plan does not know the gap then (a run-time start, or an actor the engine's
     /// gap controller moves) and the engine measures it as the action starts.
     fn gap_at_start(
@@ -375,8 +381,15 @@ impl Planner<'_> {
         t0: Option<f64>,
         kind: Kind,
     ) -> Result<Option<Gap>, Error> {
-        if let Some((r, g)) = self.gaps.get(target) {
-            if r == reference && Kind::of(g) == kind {
+        // The target of the change whose end starts this phase (the member before it in a
+        // serial, ended by the change): where the actor is then. Any other phase in between
+        // (a wait, a drive, a change cut by its phase's duration) lets the gap drift, and the
+        // engine measures it when the action starts (below).
+        if let Some((r, g, Some(ended))) = self.gaps.get(target) {
+            if r == reference
+                && Kind::of(g) == kind
+                && self.serial_before.get(&p.path) == Some(ended)
+            {
                 return Ok(Some(*g));
             }
         }

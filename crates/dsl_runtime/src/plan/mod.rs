@@ -172,6 +172,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         draws: RefCell::new(res.draws.clone()),
         engine_moved: HashMap::new(),
         gaps: HashMap::new(),
+        serial_before: HashMap::new(),
         against_road: None,
         against_routes: HashMap::new(),
     };

@@ -82,8 +82,11 @@ pub(crate) struct Planner<'a> {
     /// Actors the engine's gap controller moves (`gap_actions`), with the start of the gap
     /// action when the plan knows it: their tracks are not planned from there on.
     pub engine_moved: HashMap<String, Option<f64>>,
-    /// Each actor's last gap action: its reference and what it keeps.
-    pub gaps: HashMap<String, (String, Gap)>,
+    /// Each actor's last gap action: its reference, what it keeps, and the path of its phase
+    /// when the action ends that phase (a change without the phase's own duration or `until`).
+    pub gaps: HashMap<String, (String, Gap, Option<String>)>,
+    /// A member of a `serial` (its path) → the member before it: the phase whose end starts it.
+    pub serial_before: HashMap<String, String>,
     /// The plan's roads driven against s (`PlanRoad::against`), when an actor drives them
     /// so: the road the invocations of such an actor are planned on (`plan_invoke`).
     pub against_road: Option<PlanRoad<'a>>,

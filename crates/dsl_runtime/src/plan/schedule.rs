@@ -109,6 +109,10 @@ impl Planner<'_> {
                         Kind::OneOf(_) => p.duration.or(len_hint),
                         _ => None,
                     };
+                    if let (Kind::Serial, Some(before)) = (&p.kind, i.checked_sub(1)) {
+                        self.serial_before
+                            .insert(c.path.clone(), p.children[before].path.clone());
+                    }
                     cur = self.schedule(c, cur.clone(), inh, own_cap.clone(), hint)?;
                     // After a run-time end, the next member starts on the state of the one that
                     // ended (and only while this serial runs, which its own end may stop).

@@ -643,14 +643,8 @@ fn gaps_and_headways_kept_after_an_until_are_the_ones_the_engine_measures_then()
     let lowered =
         super::support::lower("runtime_keep_gap", 0, None).unwrap_or_else(|e| panic!("{e}"));
     // Each keep_* is a LongitudinalDistanceAction without a value, kept from its start.
-    let kept: Vec<Option<scenario::GapAtStart>> = lowered.scenario.storyboard.stories[0]
-        .acts
-        .iter()
-        .flat_map(|a| &a.maneuver_groups)
-        .flat_map(|g| &g.maneuvers)
-        .flat_map(|m| &m.events)
-        .flat_map(|e| &e.actions)
-        .filter_map(|a| match &a.kind {
+    let kept: Vec<Option<scenario::GapAtStart>> = actions_of(&lowered)
+        .filter_map(|a| match a {
             scenario::ActionKind::Private(scenario::PrivateAction::Longitudinal(
                 scenario::LongitudinalAction::LongitudinalDistance {
                     distance: None,
@@ -1062,4 +1056,67 @@ fn a_columns_trajectory_after_a_run_time_condition_is_shifted_by_the_engines_hea
     at(m1, 5.05, 114.0);
     // Its last stamp at 6.6214 s: 0.3 m short of it at 6.60 s.
     at(m1, 6.6, 135.7);
+}
+
+/// The LateralDistanceActions of `name`'s lowered scenario in order: their distance and
+/// whether the engine measures it at the start.
+fn lateral_gaps(name: &str) -> Vec<(Option<f64>, bool)> {
+    let lowered = super::support::lower(name, 0, None).unwrap_or_else(|e| panic!("{e}"));
+    actions_of(&lowered)
+        .filter_map(|a| match a {
+            scenario::ActionKind::Private(scenario::PrivateAction::Lateral(
+                scenario::LateralAction::LateralDistance {
+                    distance, at_start, ..
+                },
+            )) => Some((*distance, *at_start)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// runtime_lateral_gap_drift.osc's comment, by hand: a keep_space_gap after a change to the
+/// same reference with a phase between them keeps the gap the engine measures at its start
+/// (5 m: npc moved a lane away), not the change's 1.5 m the plan last knows; right after the
+/// change (lateral_gap.osc) it keeps the change's target.
+#[test]
+fn a_lateral_gap_kept_after_a_drift_following_a_change_is_the_one_the_engine_measures() {
+    assert_eq!(
+        lateral_gaps("runtime_lateral_gap_drift"),
+        [(Some(1.5), false), (None, true)]
+    );
+    assert_eq!(
+        lateral_gaps("actions/lateral_gap"),
+        [(Some(0.5), false), (Some(0.5), false)]
+    );
+    let r = run("runtime_lateral_gap_drift", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.rest.0.open", 3.35, 3.4),
+            ("do.rest.0.drift", 3.4, 5.4),
+            ("do.rest.0.hold", 5.4, 7.4),
+        ],
+    );
+    let npc = r.at(5.4, "npc");
+    assert!((npc.y + 1.75).abs() < S_TOL && npc.lane == -1, "{npc:?}");
+    for t in [3.4, 5.4, 6.4, 7.4] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.y + 8.75).abs() < S_TOL && ego.lane == -3,
+            "{t}: {ego:?}"
+        );
+    }
+}
+
+/// The actions of `lowered`'s story, Act by Act, in order.
+fn actions_of(lowered: &dsl_runtime::Lowered) -> impl Iterator<Item = &scenario::ActionKind> {
+    lowered.scenario.storyboard.stories[0]
+        .acts
+        .iter()
+        .flat_map(|a| &a.maneuver_groups)
+        .flat_map(|g| &g.maneuvers)
+        .flat_map(|m| &m.events)
+        .flat_map(|e| &e.actions)
+        .map(|a| &a.kind)
 }
