@@ -36,6 +36,21 @@
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Modifier, Val};
 
+/// [`lane_offset`] as k·W + c in the lane's width W, (k, c): each form's lane term is 0 or
+/// ±W/2 (a border), so the offset is affine in W; read from the offsets at `lane_width` and
+/// 1 m wider. A lane 1 m wider makes every form of `lane_offset` that holds at `lane_width`
+/// hold but `closest` without a side at the d that centres the actor, which centres it in
+/// any width (k = 0, c = 0).
+pub(crate) fn offset_in_width(
+    m: &Modifier,
+    lane_width: f64,
+    width: f64,
+) -> Result<(f64, f64), Error> {
+    let o = lane_offset(m, lane_width, width)?;
+    let k = lane_offset(m, lane_width + 1.0, width).map_or(0.0, |wider| wider - o);
+    Ok((k, o - k * lane_width))
+}
+
 /// The offset from the lane centre (m, + left) that `m` asks for in a lane `lane_width` wide,
 /// for an actor `width` wide.
 pub(crate) fn lane_offset(m: &Modifier, lane_width: f64, width: f64) -> Result<f64, Error> {

@@ -12,7 +12,7 @@
 //! | `lane(same_as/side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor in the lane counted from x's, as a RelativeTargetLane counts |
 //! | `position(d)` (at: start, all) | the engine's check: the actor at s = d (0.5 m) |
 //! | `position(d / time: t / neither, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road, d the distance, t at x's speed then, or the default gap (0.5 m) |
-//! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre (1 cm) |
+//! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre, from a border with the lane's width where the engine finds the actor (1 cm) |
 //! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
@@ -111,10 +111,13 @@ impl Planner<'_> {
                     check.beside = Some((x, dt, LATERAL_TOLERANCE));
                     return Ok(self.checked(check, m, target, name));
                 }
+                // The offset is k·W + c in the lane's width W, which the engine takes where
+                // the actor is then (the plan's width, where it last knows the actor, checks
+                // the arguments).
                 let s = self.s_at(target, t);
                 let w = self.road.lane_width(self.track(target).lane(t), s);
-                let o = lateral::lane_offset(m, w, self.width(target))?;
-                check.offset = Some((o, LATERAL_TOLERANCE));
+                let (k, c) = lateral::offset_in_width(m, w, self.width(target))?;
+                check.offset_in_width = Some((k, c, LATERAL_TOLERANCE));
             }
             _ => {
                 return Err(m.site.err(

@@ -1120,3 +1120,22 @@ fn actions_of(lowered: &dsl_runtime::Lowered) -> impl Iterator<Item = &scenario:
         .flat_map(|e| &e.actions)
         .map(|a| &a.kind)
 }
+
+/// runtime_lateral_border.osc's comment, by hand: on a widening lane the check of a lateral
+/// offset from the lane's border at a run-time start takes the width where the engine finds
+/// ego (5.17 m at s = 167 m), so ego on its lane's centre passes it.
+#[test]
+fn a_lateral_offset_from_a_border_after_an_until_is_checked_in_the_lanes_width_then() {
+    let r = super::support::run_on("runtime_lateral_border", "widening");
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.beside", 3.35, 4.35)]);
+    let t = r
+        .when("do.beside/ego/1:check", "End")
+        .expect("the check ran");
+    assert!((t - 3.35).abs() < T_TOL, "check at {t}");
+    // On the lane's centre: t = −7 − W/2 = −9.585 m at s = 167 m (1 mm: s and W as above).
+    let ego = r.at(3.35, "ego");
+    assert!(
+        ego.lane == -3 && (ego.s - 167.0).abs() < 1e-2 && (ego.y + 9.585).abs() < 1e-3,
+        "{ego:?}"
+    );
+}

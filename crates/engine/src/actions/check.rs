@@ -2,7 +2,8 @@
 //! runtime's `at: start` constraints of a phase that starts on a run-time condition (ASAM
 //! OpenSCENARIO DSL 2.1 §8.9), which its plan cannot decide before the run. When the action
 //! starts, the actor's road position (the one measured at the step's start, as every trigger
-//! of the step sees it) must be in the lane, at the offset and at the distance to another
+//! of the step sees it) must be in the lane, at the offset (from the lane's centre, or from a
+//! border of the lane as wide as it is there) and at the distance to another
 //! entity it gives (or in the lane given relative to another entity's), at the speed it gives
 //! (absolute or another entity's plus a value) and that far from a mark noted before (its
 //! odometer), a linear speed change starting with it must fit the vehicle's Performance,
@@ -216,6 +217,7 @@ fn require(
         || check.lane_of.is_some()
         || check.s.is_some()
         || check.offset.is_some()
+        || check.offset_in_width.is_some()
         || check.gap.is_some()
         || check.beside.is_some();
     if !places {
@@ -297,6 +299,23 @@ fn require(
             return Err(fail(
                 format!(
                     "'{}' {offset:.3} m from its lane's centre (within {tol} m)",
+                    e.name
+                ),
+                format!("it {:.3} m from it", at.offset),
+            ));
+        }
+    }
+    // From a border: the lane's width where the actor is.
+    if let Some((k, c, tol)) = check.offset_in_width {
+        let width = world
+            .network
+            .lane_width(&at.road_id, at.lane_id, at.s)
+            .unwrap_or(0.0);
+        let offset = k * width + c;
+        if (at.offset - offset).abs() > tol {
+            return Err(fail(
+                format!(
+                    "'{}' {offset:.3} m from the centre of its lane {width:.3} m wide (within {tol} m)",
                     e.name
                 ),
                 format!("it {:.3} m from it", at.offset),

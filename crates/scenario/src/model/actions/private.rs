@@ -58,6 +58,12 @@ pub struct StateCheck {
     /// The actor's lateral offset from its lane's centre (m, positive left) and the tolerance
     /// (m).
     pub offset: Option<(f64, f64)>,
+    /// The actor's lateral offset from its lane's centre as k·W + c (m, positive left), W the
+    /// lane's width where the actor is (m), given as (k, c) with the tolerance (m): an offset
+    /// measured from a border of the lane (ASAM OpenSCENARIO DSL 2.1 §8.9 `lateral(d,
+    /// measure_by)`, in a phase that starts on a run-time condition, where the plan does not
+    /// know the width there).
+    pub offset_in_width: Option<(f64, f64, f64)>,
     /// Where the actor must be along the road relative to another entity, and the tolerance
     /// (m).
     pub gap: Option<(SpeedGap, f64)>,
