@@ -627,6 +627,29 @@ fn a_groups_change_position_after_a_run_time_condition_moves_each_member_along_i
     }
 }
 
+/// change_position(p, smooth) on a group after a run-time condition: each member's smooth
+/// curve from its own pose to its place in the formation (group_change_position_smooth_
+/// runtime.osc, by hand there).
+#[test]
+fn a_groups_smooth_change_position_after_a_run_time_condition_curves_each_member() {
+    let r = run("actions/group_change_position_smooth_runtime", 0, None);
+    let (s, e) = r.phase("do.curve");
+    assert!(
+        (s - 3.35).abs() < T_TOL && (e - 5.4).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    // The engine's arc length against the sums: 1 cm.
+    const ALONG: f64 = 0.01;
+    for (name, x) in [("g.vehicles[0]", 207.0), ("g.vehicles[1]", 192.0)] {
+        let m = r.at(4.35, name);
+        close(m.x, x - 20.352, ALONG, &format!("{name} x(4.35)"));
+        close(m.y, -5.343, ALONG, &format!("{name} y(4.35)"));
+        let m = r.at(5.4, name);
+        close(m.y, -1.75, TOL, &format!("{name} y(5.4)"));
+        assert_eq!(m.lane, -1, "{name}");
+    }
+}
+
 /// replay_path on a column after a run-time condition: the checked offset, the lead-in from
 /// there (group_replay_path_runtime.osc, by hand there).
 #[test]
