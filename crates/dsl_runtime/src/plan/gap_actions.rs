@@ -50,7 +50,8 @@
 
 use scenario::{
     CoordinateSystem, DynamicConstraints, GapAtStart, LateralAction, LateralDisplacement,
-    LongitudinalAction, LongitudinalDisplacement, PrivateAction, StoryboardElementState,
+    LongitudinalAction, LongitudinalDisplacement, PrivateAction, StateCheck,
+    StoryboardElementState,
 };
 
 use super::action_args::missing;
@@ -169,6 +170,19 @@ impl Planner<'_> {
             if change {
                 self.check_lateral_place(p, target, &reference, t, side, g)?;
             }
+        }
+        if let (Measure::Lateral(side), Some(Gap::Lateral(g)), None, true) =
+            (measure, wanted, t0, change)
+        {
+            // After a run-time start the engine checks the place then (reference and actor
+            // where it finds them).
+            out.extend(self.lateral_place_check(
+                (inv, &p.site),
+                (target, &reference),
+                side,
+                g,
+                name,
+            ));
         }
         let n = name(&inv.action);
         let action = match measure {
@@ -418,6 +432,37 @@ impl Planner<'_> {
         }
         let overhangs = self.facing_overhangs(target, reference, s_r >= s_a);
         Ok(Some(Gap::Space((between - overhangs).max(0.0))))
+    }
+
+    /// After a run-time start, the engine's check that a lateral change of the gap to
+    /// `reference` on `side` of it (left or right; `None` for either side, which keeps the
+    /// side the actor is on) to `gap` leaves `target`'s reference point in a driving lane of
+    /// its side of the road: the point reach = the facing extents + gap across from the
+    /// reference's t, at the actor's s.
+    fn lateral_place_check(
+        &self,
+        (inv, site): (&Invoke, &crate::error::Site),
+        (target, reference): (&str, &str),
+        side: LateralDisplacement,
+        gap: f64,
+        name: &mut dyn FnMut(&str) -> String,
+    ) -> Option<Planned> {
+        let left = match side {
+            LateralDisplacement::LeftToReferencedEntity => true,
+            LateralDisplacement::RightToReferencedEntity => false,
+            _ => return None,
+        };
+        let reach = self.side_extent(reference, left) + gap + self.side_extent(target, !left);
+        let check = StateCheck {
+            beside_in_lane: Some((reference.to_string(), if left { reach } else { -reach })),
+            ..StateCheck::default()
+        };
+        Some(super::runtime::phase_start_check(
+            target,
+            (&inv.action, site),
+            check,
+            name("check"),
+        ))
     }
 
     /// Checks that a lateral gap `gap` to `reference` on `side` of it, from the phase's start

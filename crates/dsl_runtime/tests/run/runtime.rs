@@ -1139,3 +1139,19 @@ fn a_lateral_offset_from_a_border_after_an_until_is_checked_in_the_lanes_width_t
         "{ego:?}"
     );
 }
+
+/// runtime_lateral_gap_off.osc's comment, by hand: a lateral gap of 5 m right of npc after a
+/// run-time start would put ego at t = −12.25 m, off the driving lanes: the engine's check at
+/// the phase start fails the run.
+#[test]
+fn a_lateral_gap_off_the_driving_lanes_after_an_until_fails_the_run() {
+    fails(
+        "runtime_lateral_gap_off",
+        (
+            "expected 'ego''s place 7.000 m to the right of 'npc' in a driving lane of its side of road 1 (change_space_gap(…) at ",
+            "runtime_lateral_gap_off.osc:34:9), found t = -12.250 m at s = 167.000 m, off them at t = 3.350 s",
+        ),
+        "do.away/ego/1:check",
+        3.35,
+    );
+}

@@ -3,7 +3,8 @@
 //! OpenSCENARIO DSL 2.1 §8.9), which its plan cannot decide before the run. When the action
 //! starts, the actor's road position (the one measured at the step's start, as every trigger
 //! of the step sees it) must be in the lane, at the offset (from the lane's centre, or from a
-//! border of the lane as wide as it is there) and at the distance to another
+//! border of the lane as wide as it is there), with a place beside another entity in a
+//! driving lane, and at the distance to another
 //! entity it gives (or in the lane given relative to another entity's), at the speed it gives
 //! (absolute or another entity's plus a value) and that far from a mark noted before (its
 //! odometer), a linear speed change starting with it must fit the vehicle's Performance,
@@ -19,6 +20,7 @@
 use opendrive::{Direction, RoadPosition};
 use scenario::{SourcePos, StateCheck};
 
+use super::lane_change::side_lane;
 use super::speed;
 
 use crate::condition::{place_error, Mark, Projection};
@@ -218,6 +220,7 @@ fn require(
         || check.s.is_some()
         || check.offset.is_some()
         || check.offset_in_width.is_some()
+        || check.beside_in_lane.is_some()
         || check.gap.is_some()
         || check.beside.is_some();
     if !places {
@@ -346,6 +349,26 @@ fn require(
                     e.name
                 ),
                 format!("{got:.3} m"),
+            ));
+        }
+    }
+    if let Some((other, dt)) = &check.beside_in_lane {
+        let (there, _) = beside(other)?;
+        let t = there.t + dt;
+        let road = world.network.road(&at.road_id);
+        let lane = road
+            .zip(e.track.as_ref())
+            .and_then(|(r, k)| side_lane(r, k, t));
+        if lane.is_none() {
+            return Err(fail(
+                format!(
+                    "'{}''s place {:.3} m to the {} of '{other}' in a driving lane of its side of road {}",
+                    e.name,
+                    dt.abs(),
+                    if *dt > 0.0 { "left" } else { "right" },
+                    at.road_id
+                ),
+                format!("t = {t:.3} m at s = {:.3} m, off them", at.s),
             ));
         }
     }

@@ -70,6 +70,12 @@ pub struct StateCheck {
     /// Another entity, the actor's t minus that entity's (m, road coordinates, reference
     /// points, positive when the actor is to its left), and the tolerance (m).
     pub beside: Option<(String, f64, f64)>,
+    /// Another entity and a t (m, positive left): the point that far across the road from the
+    /// entity's t at the actor's s must lie in a driving lane of the actor's side of the road
+    /// (ASAM OpenSCENARIO DSL 2.1 §8.8.3 `change_space_gap` to the left or right, in a phase
+    /// that starts on a run-time condition: the place the gap puts the actor, which the plan
+    /// checks at a known start).
+    pub beside_in_lane: Option<(String, f64)>,
     /// A speed change of the given shape over the given time (s) to the target, starting with
     /// the check (the SpeedAction beside it): its peak rate must fit the actor's Performance,
     /// which would otherwise stretch it in time (ASAM OpenSCENARIO DSL 2.1 §8.9 `speed(…,
