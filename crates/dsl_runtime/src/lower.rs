@@ -20,17 +20,18 @@
 //! Acts are written children first, so that a composition that ends with its members sees
 //! their end in the same step.
 
+use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use scenario::{
     Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
-    EntityObject, Event, FileHeader, Init, LongitudinalAction, Maneuver, ManeuverGroup, MiscObject,
-    MiscObjectCategory, Orientation, Pedestrian, PedestrianCategory, Performance, Position,
-    PositionKind, Priority, Private, PrivateAction, Properties, ReferenceContext, RoadNetwork,
-    Route, RouteStrategy, RoutingAction, Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget,
-    Story, Storyboard, StoryboardElementState, TransitionDynamics, Trigger, UserDefinedAction,
-    Vehicle, Waypoint,
+    EntityObject, Event, FileHeader, Init, LaneOffsetTarget, LateralAction, LongitudinalAction,
+    Maneuver, ManeuverGroup, MiscObject, MiscObjectCategory, Orientation, Pedestrian,
+    PedestrianCategory, Performance, Position, PositionKind, Priority, Private, PrivateAction,
+    Properties, ReferenceContext, RoadNetwork, Route, RouteStrategy, RoutingAction, Rule, Scenario,
+    ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard, StoryboardElementState,
+    TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
 };
 
 use crate::plan::{Entity, HandlerPlan, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
@@ -127,6 +128,13 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             .collect(),
         });
     }
+    // Actors driving against s: their offsets turned to the road's t (`offsets_along_t`).
+    let against: HashSet<&str> = plan
+        .entities
+        .iter()
+        .filter(|e| e.against)
+        .map(|e| e.name.as_str())
+        .collect();
     // The run ends with the root phase (written last).
     let run_end = plan.phases.last().and_then(|root| trigger_of(&root.end));
     let mut acts = Vec::new();
@@ -146,7 +154,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
                 pos.clone(),
             ));
         }
-        groups.extend(actor_groups(&ph.path, &ph.actions, &pos));
+        groups.extend(actor_groups(&ph.path, &ph.actions, &against, &pos));
         let start_trigger = start_trigger_of(&ph.start);
         acts.push(Act {
             name: ph.path.clone(),
@@ -177,7 +185,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             if let Some(trigger) = end {
                 let path = format!("{}/end", ph.path);
                 acts.push(Act {
-                    maneuver_groups: actor_groups(&path, &ph.after, &pos),
+                    maneuver_groups: actor_groups(&path, &ph.after, &against, &pos),
                     name: path,
                     start_trigger: Some(trigger),
                     stop_trigger: None,
@@ -190,7 +198,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
         if !ph.persist.is_empty() {
             let path = format!("{}/continue", ph.path);
             acts.push(Act {
-                maneuver_groups: actor_groups(&path, &ph.persist, &pos),
+                maneuver_groups: actor_groups(&path, &ph.persist, &against, &pos),
                 name: path,
                 start_trigger,
                 stop_trigger: run_end.clone(),
@@ -372,7 +380,52 @@ fn vehicle(e: &Entity) -> Vehicle {
 
 /// One ManeuverGroup `PATH/ACTOR` per actor of `actions`, in the order they first act, with one
 /// Event per action (starting with the Act, at an absolute time, or on its trigger).
-fn actor_groups(path: &str, actions: &[Planned], pos: &SourcePos) -> Vec<ManeuverGroup> {
+/// `action` of an actor driving against s (`against`) with its offsets across the lane turned
+/// from the left of its direction of travel, where the plan has them (`crate::road`), to the
+/// road's t, along which the engine's LaneOffsetAction and LaneChangeAction offsets run.
+fn offsets_along_t(action: PrivateAction, against: bool) -> PrivateAction {
+    if !against {
+        return action;
+    }
+    match action {
+        PrivateAction::Lateral(LateralAction::LaneChange {
+            target_lane_offset,
+            dynamics,
+            target,
+        }) => PrivateAction::Lateral(LateralAction::LaneChange {
+            target_lane_offset: target_lane_offset.map(|o| -o),
+            dynamics,
+            target,
+        }),
+        PrivateAction::Lateral(LateralAction::LaneOffset {
+            continuous,
+            dynamics_shape,
+            max_lateral_acc,
+            target,
+        }) => PrivateAction::Lateral(LateralAction::LaneOffset {
+            continuous,
+            dynamics_shape,
+            max_lateral_acc,
+            target: match target {
+                LaneOffsetTarget::Absolute(o) => LaneOffsetTarget::Absolute(-o),
+                LaneOffsetTarget::Relative { entity_ref, value } => LaneOffsetTarget::Relative {
+                    entity_ref,
+                    value: -value,
+                },
+                // The planner writes no other form (non_exhaustive in the model).
+                other => other,
+            },
+        }),
+        other => other,
+    }
+}
+
+fn actor_groups(
+    path: &str,
+    actions: &[Planned],
+    against: &HashSet<&str>,
+    pos: &SourcePos,
+) -> Vec<ManeuverGroup> {
     let mut actors: Vec<&str> = Vec::new();
     for a in actions {
         if !actors.contains(&a.entity.as_str()) {
@@ -393,7 +446,10 @@ fn actor_groups(path: &str, actions: &[Planned], pos: &SourcePos) -> Vec<Maneuve
                         maximum_execution_count: 1,
                         actions: vec![Action {
                             name: a.name.clone(),
-                            kind: ActionKind::Private(a.action.clone()),
+                            kind: ActionKind::Private(offsets_along_t(
+                                a.action.clone(),
+                                against.contains(actor),
+                            )),
                             pos: pos.clone(),
                         }],
                         start_trigger: match &a.at {

@@ -11,15 +11,16 @@
 //! (`crate::road`), and the lowering maps its start back to (road, s). The planner's
 //! arithmetic is the same in either direction, so what runs is what only reads the actor's
 //! own track and its road view: `drive()`/`move()`, `change_speed`, `keep_speed`,
-//! `remain_stationary`, `change_lane`, `follow_lane`, with `speed`, `change_speed`,
-//! `acceleration(a)`, `position(d)`, `lane(n)`, `change_lane`, `keep_lane`, `keep_speed`,
-//! `keep_position`, `distance`, `along`, `physical_movement` (`position(…, at: end)` in a phase
-//! with a duration). The rest is an error at the
-//! action or modifier (not run yet), never planned in the wrong direction: an offset across the
-//! lane (`lateral`, `yaw`/`orientation`, a lane change's offset), the path, position and gap
-//! actions, `avoid_collisions(true)`, a group, and in a phase that starts on a run-time
-//! condition `position(…)`, `lane(…)` relative to another actor and `along` a named route (the
-//! engine's checks at such a start measure places in +s).
+//! `remain_stationary`, `change_lane`, `follow_lane` (and their `offset`), with `speed`,
+//! `change_speed`, `acceleration(a)`, `position(d)`, `lane(n)`, `change_lane`, `keep_lane`,
+//! `keep_speed`, `keep_position`, `distance`, `along`, `physical_movement`, `lateral(d)` in the
+//! lane (offsets to the left of the direction of travel in the plan, turned to the road's t by
+//! the lowering). The rest is an error at the action or modifier (not run yet), never planned
+//! in the wrong direction: `yaw`/`orientation`, `shape:`, `lateral` or `acceleration` relative
+//! to another actor, the path, position and gap actions, `avoid_collisions(true)`, a group,
+//! `position(…, at: end)` without a phase duration, and in a phase that starts on a run-time
+//! condition `position(…)`, `lateral(…)` at the start, `lane(…)` relative to another actor and
+//! `along` a named route (the engine's checks at such a start measure places in +s).
 //!
 //! An actor along a free route of the other direction than its own is an error at the
 //! `along` (`check_alongs`).
@@ -150,9 +151,6 @@ pub(crate) fn check_runs(
     if !runs {
         return Err(not_run(&inv.actor_site, &format!("{}(…)", inv.action)));
     }
-    if let Some(a) = crate::resolve::arg(&inv.args, "offset") {
-        return Err(not_run(&a.site, &format!("an offset in {}(…)", inv.action)));
-    }
     for m in mods {
         let runs = match m.kind {
             ModKind::Speed
@@ -166,11 +164,12 @@ pub(crate) fn check_runs(
             | ModKind::KeepSpeed
             | ModKind::KeepPosition
             | ModKind::PhysicalMovement => true,
-            // A rate alone; relative to another actor the engine follows it step by step.
-            ModKind::Acceleration => crate::resolve::REFERENCES
+            // A rate alone, an offset in the lane; relative to another actor the engine
+            // follows it step by step, or measures it in the road's t.
+            ModKind::Acceleration | ModKind::Lateral => crate::resolve::REFERENCES
                 .iter()
                 .all(|k| m.arg(k).is_none()),
-            ModKind::Lateral | ModKind::Orientation | ModKind::AvoidCollisions => false,
+            ModKind::Orientation | ModKind::AvoidCollisions => false,
         };
         if !runs || m.shape.is_some() {
             return Err(not_run(&m.site, &format!("{}(…)", m.name)));
@@ -193,6 +192,7 @@ pub(crate) fn check_runs(
     if let Some(None) = t0 {
         let measured_in_s = mods.iter().find(|m| match m.kind {
             ModKind::Position => true,
+            ModKind::Lateral => m.at != At::End,
             ModKind::Lane => crate::resolve::REFERENCES
                 .iter()
                 .any(|k| m.arg(k).is_some()),

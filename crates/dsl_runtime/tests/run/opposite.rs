@@ -193,6 +193,28 @@ fn an_oncoming_actor_brakes_after_a_run_time_condition() {
 }
 
 #[test]
+fn offsets_in_the_lane_against_s_are_to_the_left_of_the_direction_of_travel() {
+    let r = run_on("opposite_lateral", "straight");
+    let start = r.at(0.0, "npc");
+    assert_eq!(start.lane, 1);
+    assert!(
+        (start.x - 900.0).abs() < S_TOL && (start.y - 2.25).abs() < S_TOL,
+        "{start:?}"
+    );
+    assert!(
+        (r.at(4.0, "npc").y - 2.25).abs() < S_TOL,
+        "{:?}",
+        r.at(4.0, "npc")
+    );
+    let mid = r.at(6.0, "npc");
+    assert!((mid.y - 1.75).abs() < 1e-6, "{mid:?}");
+    let end = r.at(8.0, "npc");
+    assert!((end.y - 1.25).abs() < 1e-6 && end.lane == 1, "{end:?}");
+    let cost = PI * PI / (16.0 * 4.0 * 10.0);
+    assert!((end.x - (820.0 + cost)).abs() < COST_TOL, "{end:?}");
+}
+
+#[test]
 fn lanes_against_s_are_counted_in_the_direction_of_travel() {
     let r = run_on("opposite_lanes", "straight");
     let y1 = |tau: f64| 1.75 + 3.5 * (1.0 - (PI * tau / 4.0).cos()) / 2.0;
@@ -310,7 +332,7 @@ fn what_does_not_run_against_s_is_an_error_at_its_place() {
             "err_opposite_lateral",
             "straight",
             &["expected an action and modifiers that run for `npc`, which drives against s (a lane driven in -s), found lateral(…) (not run yet against s"][..],
-            "13:13",
+            "19:13",
         ),
         (
             "err_opposite_lane",
