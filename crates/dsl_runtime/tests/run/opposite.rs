@@ -212,6 +212,44 @@ fn offsets_in_the_lane_against_s_are_to_the_left_of_the_direction_of_travel() {
     assert!((end.y - 1.25).abs() < 1e-6 && end.lane == 1, "{end:?}");
     let cost = PI * PI / (16.0 * 4.0 * 10.0);
     assert!((end.x - (820.0 + cost)).abs() < COST_TOL, "{end:?}");
+    // change_lane(…, side: right, offset: 0.5m): lane 2, 0.5 m left of its centre for npc.
+    assert!(
+        (r.at(10.0, "npc").y - 3.0).abs() < 1e-6,
+        "{:?}",
+        r.at(10.0, "npc")
+    );
+    let last = r.at(12.0, "npc");
+    assert!((last.y - 4.75).abs() < 1e-6 && last.lane == 2, "{last:?}");
+    let cost2 = 3.5f64.powi(2) * PI * PI / (16.0 * 4.0 * 10.0);
+    assert!(
+        (last.x - (780.0 + cost + cost2)).abs() < COST_TOL,
+        "{last:?}"
+    );
+}
+
+#[test]
+fn an_oncoming_car_stops_behind_a_stationary_object_it_measures() {
+    let r = run_on("opposite_stop_behind_object", "straight");
+    let (s, e) = r.phase("do.approach");
+    assert!(
+        s.abs() < T_TOL && (e - 3.85).abs() < T_TOL,
+        "approach [{s}, {e}]"
+    );
+    assert!((r.at(3.85, "car").x - 903.0).abs() < S_TOL);
+    let (s, e) = r.phase("do.brake");
+    assert!(
+        (s - 3.85).abs() < T_TOL && (e - 7.85).abs() < T_TOL,
+        "brake [{s}, {e}]"
+    );
+    assert!((r.at(5.85, "car").speed - 10.0).abs() < S_TOL);
+    for t in [7.85, 9.85] {
+        let c = r.at(t, "car");
+        assert!(
+            (c.x - 863.5).abs() < S_TOL && c.speed.abs() < S_TOL && c.lane == 1,
+            "car at {t}: {c:?}"
+        );
+    }
+    assert!((r.last_time() - 9.85).abs() < T_TOL);
 }
 
 #[test]
