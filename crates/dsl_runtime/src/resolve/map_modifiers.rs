@@ -278,11 +278,20 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
     let params = super::modifier::params(ctx, name);
     let exprs = bind(&app.args, &params);
     let args: Args = exprs.iter().map(|(n, e)| (n.clone(), ctx.arg(e))).collect();
-    // An argument that calls a method (a route the map makes: `m.create_route(…)`).
+    // An argument that calls a method (a route the map makes: `m.create_route(…)`), or names
+    // a route field given such a value at its declaration (`r: route = m.create_route(…)`).
     let call = |p: &str| {
         exprs
             .iter()
-            .find(|(n, e)| n == p && matches!(e.kind, dsl::semantics::hir::ExprKind::Call(..)))
+            .find(|(n, e)| {
+                n == p
+                    && (matches!(e.kind, dsl::semantics::hir::ExprKind::Call(..))
+                        || ctx
+                            .path_of(e)
+                            .and_then(|f| ctx.lookup(&f))
+                            .and_then(|(f, _)| super::route::valued_route(ctx, &f))
+                            .is_some_and(|r| matches!(r, Ok(Route::Lane { .. }))))
+            })
             .map(|(_, e)| *e)
     };
     let need = |p: &str| {
@@ -595,6 +604,29 @@ fn field(ctx: &Ctx<'_>, a: &Arg, lane: bool) -> Result<String, Error> {
             _ => None,
         })
     });
+    // A field whose value is another free field is that field (`route::valued_route`); one
+    // whose value is a route the map makes is no field to bind.
+    let found = match found
+        .as_ref()
+        .and_then(|(p, _)| super::route::valued_route(ctx, p))
+    {
+        None => found,
+        Some(Ok(Route::Free { field, .. })) => ctx.lookup(&field).and_then(|(p, v)| match v {
+            Value::RunTime(t) => Some((p, t.clone())),
+            _ => None,
+        }),
+        Some(Ok(_)) => {
+            return Err(a.site.err(
+                K::Argument,
+                format!(
+                    "expected a {} field nothing defines, found `{}`, given a route the map makes at its declaration (its roads are named, not bound or checked as the plan's)",
+                    if lane { "lane" } else { "route" },
+                    a.path.as_deref().unwrap_or_default()
+                ),
+            ))
+        }
+        Some(Err(e)) => return Err(e),
+    };
     let fits = |t: &str| {
         if lane {
             super::route::ONE_LANE

@@ -5,6 +5,9 @@
 //! The constraint solver leaves every road-network value to the runtime (a constraint over a
 //! route is a check error), so a route reaches the planner in one of these forms:
 //!
+//! - **a route field given a value** at its declaration (`r: route = m.create_route(…)`,
+//!   `var r: route = m.create_odr_point(…)`, or another route field): that value's route (the
+//!   solver leaves the value to the runtime, as the field).
 //! - **a route field nothing defines** (`r: route`, `r: road`, `r: lane`): the scenario leaves
 //!   the route to the runtime. The planner binds it to the plan road, driven in +s: a `route`,
 //!   `road`, `lane_section` or `compound_route` is the whole road (actors along it may change
@@ -148,6 +151,67 @@ pub(crate) fn read(
 
 /// The route `e` names.
 pub(super) fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
+    route_within(ctx, e, 0)
+}
+
+/// The value a route field is given at its declaration (`r: route = m.create_route(…)`,
+/// `var r: route = …`), with the reader of the instance that declares it (whose names the
+/// value uses): the field is that route. `None`: a field nothing defines.
+pub(crate) fn field_value<'a>(ctx: &Ctx<'a>, path: &str) -> Option<(&'a Expr, Ctx<'a>)> {
+    let (owner, name) = match path.rsplit_once('.') {
+        Some((o, n)) => (o, n),
+        None => ("", path),
+    };
+    let instance = if owner.is_empty() {
+        ctx.res.get(&ctx.root)
+    } else {
+        ctx.lookup(owner).map(|(_, v)| v)
+    }?;
+    // A scenario's type is no entry of the model's type names: found by its name.
+    let Value::Compound { ty: name_of, .. } = instance else {
+        return None;
+    };
+    let ty = (0..ctx.model.compounds.len() as u32)
+        .map(dsl::semantics::types::CompoundId)
+        .find(|c| ctx.model.compound(*c).name == *name_of)?;
+    let value = ctx
+        .model
+        .all_fields(ty)
+        .into_iter()
+        .rev()
+        .find(|f| f.name == name)?
+        .default
+        .as_ref()?;
+    let prefix = if owner.is_empty() {
+        String::new()
+    } else {
+        format!("{owner}.")
+    };
+    // The reader's own frame where the field is its own (keeping its parameters' aliases).
+    let frame = if prefix == ctx.frame.prefix {
+        ctx.frame.clone()
+    } else {
+        super::eval::Frame {
+            prefix,
+            ..Default::default()
+        }
+    };
+    Some((value, ctx.enter(frame)))
+}
+
+/// The route of the field at `path` when it is given a value at its declaration (`None`: a
+/// field nothing defines); a value naming another field is that field's route (a free field
+/// stays free: `c: route = b` shares `b`).
+pub(crate) fn valued_route(ctx: &Ctx<'_>, path: &str) -> Option<Result<Route, Error>> {
+    let (value, owner) = field_value(ctx, path)?;
+    Some(route_within(&owner, value, 1))
+}
+
+/// Route fields given a value may name one another; deeper than this is a cycle.
+const MAX_FIELD_DEPTH: usize = 16;
+
+/// The route `e` names, `depth` fields deep.
+fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
     let unsupported = |what: &str| {
         ctx.files.err(
             K::Unsupported,
@@ -198,6 +262,18 @@ pub(super) fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
         }
         ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
             let path = ctx.path_of(e).ok_or_else(|| unsupported("an expression"))?;
+            // A field given a value at its declaration is that value's route.
+            if let Some((value, owner)) = ctx.lookup(&path).and_then(|(p, _)| field_value(ctx, &p))
+            {
+                if depth >= MAX_FIELD_DEPTH {
+                    return Err(ctx.files.err(
+                        K::Value,
+                        e.span,
+                        format!("expected route fields whose values end in a route the map makes, found `{path}` defined through itself"),
+                    ));
+                }
+                return route_within(&owner, value, depth + 1);
+            }
             match ctx.lookup(&path) {
                 Some((_, Value::RunTime(ty))) => {
                     if is_a(ctx, ty, "crossing") {
@@ -246,6 +322,21 @@ pub(crate) fn lane_field(ctx: &Ctx<'_>, a: &super::value::Arg) -> Result<LaneFie
             Value::RunTime(t) => Some((p, t.clone())),
             _ => None,
         });
+    // A lane field whose value is another lane field is that field.
+    let ty = match ty.as_ref().and_then(|(p, _)| valued_route(ctx, p)) {
+        None => ty,
+        Some(Ok(Route::Free {
+            field,
+            one_lane: true,
+        })) => Some((field, "lane".to_string())),
+        Some(Ok(_)) => {
+            return Err(a.site.err(
+                K::Unsupported,
+                "expected a lane field nothing defines in target: (bound by the map's modifiers, along(…) or drawn at its first use), found a field given a route the map makes at its declaration (driven with along(…), not changed into)",
+            ))
+        }
+        Some(Err(e)) => return Err(e),
+    };
     match ty {
         Some((path, t)) if is_a(ctx, &t, "lane") => Ok(LaneField {
             path,

@@ -238,12 +238,20 @@ fn a_road_and_a_lane_and_two_routes_in_sequence_are_bound_and_driven() {
 fn routes_the_map_makes_in_sequence_are_checked_and_driven() {
     // map_sequence_named.osc: a = road 0 s 10 to 90 m, b = road 6 s 0 to 60 m, lane -1.
     let r = run("map_sequence_named", "junction_trippel_twoway0");
-    for (t, who, road, s) in [
-        (0.0, "ego", "0", 10.0),
-        (5.0, "ego", "0", 60.0),
-        (0.0, "npc", "6", 0.0),
-        (5.0, "npc", "6", 40.0),
-    ] {
+    in_lane_minus_one_at(
+        &r,
+        &[
+            (0.0, "ego", "0", 10.0),
+            (5.0, "ego", "0", 60.0),
+            (0.0, "npc", "6", 0.0),
+            (5.0, "npc", "6", 40.0),
+        ],
+    );
+}
+
+/// Each (t, actor, road, s): the actor on that road at that s in lane -1 at t.
+fn in_lane_minus_one_at(r: &crate::support::Run, places: &[(f64, &str, &str, f64)]) {
+    for &(t, who, road, s) in places {
         let p = r.at(t, who);
         assert_eq!(
             (p.road.as_str(), p.lane),
@@ -252,6 +260,29 @@ fn routes_the_map_makes_in_sequence_are_checked_and_driven() {
         );
         assert!((p.s - s).abs() < Y_TOL, "{who} at {t} s: {p:?}");
     }
+}
+
+/// Route fields given a value at their declaration are that route: route_field_value.osc, the
+/// routes of map_sequence_named.osc as fields (`a: route = …`, `var b: route = …`, `c: route = b`),
+/// ego along(a, start_offset: 5m), npc along(c).
+#[test]
+fn route_fields_given_a_value_are_that_route() {
+    let r = run("route_field_value", "junction_trippel_twoway0");
+    in_lane_minus_one_at(
+        &r,
+        &[
+            (0.0, "ego", "0", 15.0),
+            (5.0, "ego", "0", 65.0),
+            (0.0, "npc", "6", 0.0),
+            (5.0, "npc", "6", 40.0),
+        ],
+    );
+    refused(
+        "err_route_field_value_map",
+        "junction_trippel_twoway0",
+        "expected a route field nothing defines, found `r`, given a route the map makes at its declaration",
+        "8:23",
+    );
 }
 
 #[test]

@@ -62,7 +62,10 @@ impl Cx<'_> {
     fn field_decl(&mut self, f: &FieldDef, here: TExpr, scope: &Scope, owner: Owner) {
         if let Some(d) = &f.default {
             let v = self.expect(d, &f.ty, scope, &format!("field `{}`", f.name));
-            if !f.is_var {
+            // A route's value (`r: route = m.create_route(…)`) is found in the map by the
+            // runtime, as the route itself: no constraint of the solver's.
+            let route = matches!(&f.ty, Ty::Compound(c) if crate::semantics::instance::is_route(self.model, *c));
+            if !f.is_var && !route {
                 let eq = TExpr {
                     kind: TKind::Binary(BinOp::Eq, Box::new(here.clone()), Box::new(v)),
                     ty: Ty::Bool,
