@@ -254,6 +254,35 @@ pub fn lower_program(
             }
         }
     }
+    // A route the map makes in sequence with a field: its roads, and before or after them the
+    // field's road the map's modifier binds it to (the first way the network's order gives).
+    for m in &resolved.map {
+        let resolve::MapKind::RoutesInSequence {
+            preceding,
+            succeeding,
+        } = &m.kind
+        else {
+            continue;
+        };
+        let Some(made) = preceding.made.as_ref().or(succeeding.made.as_ref()) else {
+            continue;
+        };
+        let way = plan::junction_roads(road, std::slice::from_ref(m));
+        let own = plan::route_points(made)
+            .and_then(|(lane, points)| road::route_roads(road, lane, &points).ok());
+        if let (Some(way), Some(own)) = (way, own) {
+            // The way runs from the made route's last road to the field's, or from the
+            // field's road to the made route's first.
+            let roads: Vec<usize> = if preceding.made.is_some() {
+                own.into_iter().chain(way.into_iter().skip(1)).collect()
+            } else {
+                let n = way.len().saturating_sub(1);
+                way.into_iter().take(n).chain(own).collect()
+            };
+            wanted.extend(roads.iter().map(|&i| road.roads()[i].id.clone()));
+            chains.push(road::PlanRoad::through(road, &roads));
+        }
+    }
     let holds_all = |c: &road::PlanRoad<'_>| wanted.iter().all(|r| c.plan_s(r, 0.0).is_some());
     // Without named routes, a way through a junction the map's modifiers bind
     // (`roads_follow_in_junction`) gives the roads.

@@ -12,6 +12,7 @@
 //! | `routes_are_in_sequence(preceding, succeeding, road)` on lane fields | binding | `succeeding` is a successor of `preceding` in its driving direction (the network's lane links, through lane sections and road links); with `road`, both on the plan's roads |
 //! | `routes_are_in_sequence(preceding, succeeding)` on route fields other than two lanes | binding | a road (`road`, `route`, `route_element`, `compound_route`) or lane-section end over a lane of the modifier's own on it, driven in +s on the plan's roads; a lane end over itself. With a road end, the second's road is another the first leads onto, directly or through a connecting lane, in a lane of one id; else the lanes follow each other (lane links). The road and section fields are bound whole (`map_roads`); without named routes the plan drives the roads (`junction_roads`) |
 //! | `routes_are_in_sequence(preceding, succeeding)` on two routes the map makes | check | `succeeding` starts where `preceding` ends or on the road after it, in its lane (`map_checks`); the plan drives both |
+//! | `routes_are_in_sequence(preceding, succeeding)` on a route the map makes and a field | binding | the made route a road end whose lane is fixed where it ends (starts) (`made_lane`); the field bound as beside a road field; the plan drives the made route's roads and the field's (`crate` picks that chain) |
 //! | `routes_are_opposite(route1, route2, containing_road, lateral_overlap)` on lane fields | binding | both in one lane section, driven in opposite directions; with `containing_road`, on the plan's roads; `lateral_overlap` `never` (two lanes never share their width) or none |
 //! | `routes_are_opposite` on route fields | binding | `route2` is the plan's roads driven against s (`against::bind_routes`) |
 //! | `roads_follow_in_junction(in_lane, out_lane, direction)` on lane fields | binding | `out_lane` reached from `in_lane` through one connecting lane of a junction, turning the way `direction` names (`map_junctions::Turn`); without named routes the plan drives that way (`junction_roads`) |
@@ -111,8 +112,28 @@ pub(crate) fn bind(
         last = (names, solutions);
     }
     let (names, solutions) = last;
-    let preferred: Vec<&Vec<LaneHandle>> =
-        solutions.iter().filter(|s| s.iter().all(on_plan)).collect();
+    // A route the map makes is where it is: only the lanes chosen count.
+    let made: Vec<&str> = lane_mods
+        .iter()
+        .filter_map(|m| match &m.kind {
+            MapKind::RoutesInSequence {
+                preceding,
+                succeeding,
+            } => Some([preceding, succeeding]),
+            _ => None,
+        })
+        .flatten()
+        .filter(|e| e.kind == EndKind::Made)
+        .map(|e| e.lane.as_str())
+        .collect();
+    let preferred: Vec<&Vec<LaneHandle>> = solutions
+        .iter()
+        .filter(|s| {
+            s.iter()
+                .zip(&names)
+                .all(|(h, n)| on_plan(h) || made.contains(&n.as_str()))
+        })
+        .collect();
     let pool: Vec<&Vec<LaneHandle>> = if preferred.is_empty() {
         solutions.iter().collect()
     } else {
@@ -330,6 +351,16 @@ fn solve(
                             end_lane: b,
                             ..
                         } if a == n || b == n => on_plan(h),
+                        // A route the map makes: its lane where it ends (starts).
+                        MapKind::RoutesInSequence {
+                            preceding,
+                            succeeding,
+                        } if [preceding, succeeding]
+                            .iter()
+                            .any(|e| e.kind == EndKind::Made && e.lane == *n) =>
+                        {
+                            made_lane(net, preceding, succeeding) == Some(*h)
+                        }
                         // The own lanes of roads and lane sections in sequence: driven in +s,
                         // as the plan drives.
                         MapKind::RoutesInSequence {
@@ -385,7 +416,7 @@ fn solve(
             } => Some(
                 if [preceding, succeeding]
                     .iter()
-                    .any(|e| e.kind == EndKind::Road)
+                    .any(|e| matches!(e.kind, EndKind::Road | EndKind::Made))
                 {
                     Rel::NextRoad(index(&succeeding.lane), index(&preceding.lane))
                 } else {
@@ -478,6 +509,35 @@ impl Rel {
     }
 }
 
+/// The lane of the route the map makes among the ends of `routes_are_in_sequence`: at the
+/// end of its last road (the last lane section, lane id of its points) where it precedes, at
+/// the start of its first road (the first section) where it succeeds; the routes it makes
+/// drive their lanes in +s (`crate::road::route_roads`).
+fn made_lane(net: &RoadNetwork, preceding: &SeqEnd, succeeding: &SeqEnd) -> Option<LaneHandle> {
+    let (route, first) = match (&preceding.made, &succeeding.made) {
+        (Some(r), _) => (r, true),
+        (None, Some(r)) => (r, false),
+        (None, None) => return None,
+    };
+    let (lane, points) = super::route::points(route)?;
+    let (id, _) = if first {
+        points.last()?
+    } else {
+        points.first()?
+    };
+    let road = net.roads().iter().position(|r| &r.id == id)?;
+    let sections = net.roads()[road].lane_sections.len();
+    Some(LaneHandle {
+        road: road as u32,
+        section: if first {
+            sections.checked_sub(1)? as u32
+        } else {
+            0
+        },
+        lane,
+    })
+}
+
 /// Whether the road and junction fields of `roads_follow_in_junction` get one road (one
 /// junction) each in the assignment `sol` of the lane fields, across all of `mods`.
 fn one_road_per_field(
@@ -523,7 +583,7 @@ fn one_road_per_field(
                 .filter_map(|e: &SeqEnd| {
                     let h = sol[index(&e.lane)];
                     match e.kind {
-                        EndKind::Lane => None,
+                        EndKind::Lane | EndKind::Made => None,
                         EndKind::Road => Some((e.field.as_str(), id(h))),
                         EndKind::Section => {
                             Some((e.field.as_str(), format!("{}/{}", id(h), h.section)))

@@ -62,7 +62,10 @@ pub(super) fn whole_fields(
         _ => None,
     });
     let mut road_fields: Vec<MapLane> = Vec::new();
-    for (m, end) in ends.flatten().filter(|(_, e)| e.kind != EndKind::Lane) {
+    for (m, end) in ends
+        .flatten()
+        .filter(|(_, e)| !matches!(e.kind, EndKind::Lane | EndKind::Made))
+    {
         let Some(h) = names.iter().position(|n| *n == end.lane).map(|i| chosen[i]) else {
             continue;
         };

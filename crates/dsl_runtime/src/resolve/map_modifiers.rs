@@ -177,6 +177,10 @@ pub(crate) struct SeqEnd {
     /// modifier's own lane on the field's road or lane section (named for messages, unique to
     /// the modifier).
     pub lane: String,
+    /// For a route the map makes beside a field (`EndKind::Made`): that route
+    /// (`Route::Lane`), whose lane at its end (preceding) or start (succeeding) is the
+    /// modifier's own lane.
+    pub made: Option<Route>,
 }
 
 /// What an end of `routes_are_in_sequence` is bound to.
@@ -188,6 +192,10 @@ pub(crate) enum EndKind {
     Section,
     /// A `road`, `route`, `route_element` or `compound_route` field: one road of the plan.
     Road,
+    /// A route the map makes (`m.create_route([…])`, `m.create_odr_point(…)`, or a field given
+    /// one) beside a field: no field, its lane fixed where it ends (preceding) or starts
+    /// (succeeding); the field is bound as beside a road.
+    Made,
 }
 
 /// The junction and road arguments of `roads_follow_in_junction` (§8.12.2.2.3).
@@ -410,36 +418,17 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                     .is_some(),
             }
         }
-        "routes_are_in_sequence" if call("preceding").is_some() || call("succeeding").is_some() => {
-            let named = |p: &str| -> Result<Route, Error> {
-                match call(p) {
-                    Some(e) => super::route::route_of(ctx, e),
-                    None => Err(need(p)?.site.err(
-                        K::Unsupported,
-                        format!("expected routes_are_in_sequence(…) on two routes the map makes (map.create_route([…]), map.create_odr_point(…)) or on two fields, found {p}: a field beside a route the map makes"),
-                    )),
-                }
-            };
-            let (preceding, succeeding) = (named("preceding")?, named("succeeding")?);
-            if let Some(a) = arg(&args, "road") {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    "expected routes_are_in_sequence(preceding: …, succeeding: …) on routes the map makes without road: (their points name their roads), found road:".to_string(),
-                ));
-            }
-            MapKind::NamedInSequence {
-                preceding,
-                succeeding,
-            }
-        }
         "routes_are_in_sequence" => {
-            let end = |p: &str| -> Result<SeqEnd, Error> {
+            // A field end: a lane field is itself, a road or lane section field is bound
+            // through a lane of the modifier's own on it.
+            let field_end = |p: &str| -> Result<SeqEnd, Error> {
                 let a = need(p)?;
                 if let Ok(f) = field(ctx, a, true) {
                     return Ok(SeqEnd {
                         lane: f.clone(),
                         field: f,
                         kind: EndKind::Lane,
+                        made: None,
                     });
                 }
                 let f = field(ctx, a, false)?;
@@ -451,31 +440,83 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                         EndKind::Road
                     },
                     field: f,
+                    made: None,
                 })
             };
-            let (preceding, succeeding) = (end("preceding")?, end("succeeding")?);
-            let road = arg(&args, "road")
-                .map(|a| field(ctx, a, false).map(|_| a))
-                .transpose()?;
-            if preceding.kind == EndKind::Lane && succeeding.kind == EndKind::Lane {
-                MapKind::InSequence {
-                    preceding: preceding.field,
-                    succeeding: succeeding.field,
-                    on_plan_roads: road.is_some(),
+            let made = |p: &str| call(p).map(|e| super::route::route_of(ctx, e)).transpose();
+            let road_arg = |what: &str| -> Result<(), Error> {
+                match arg(&args, "road") {
+                    Some(a) => Err(a.site.err(K::Unsupported, format!("expected routes_are_in_sequence(preceding: …, succeeding: …) without road: {what}, found road:"))),
+                    None => Ok(()),
                 }
-            } else {
-                let roads = [&preceding, &succeeding]
-                    .iter()
-                    .any(|e| e.kind == EndKind::Road);
-                if let (true, Some(a)) = (roads, road) {
-                    return Err(a.site.err(
-                        K::Unsupported,
-                        "expected routes_are_in_sequence(preceding: …, succeeding: …) without road: where one of them is a road or a route (bound to a road itself, and the other on the road after it), found road:".to_string(),
-                    ));
+            };
+            match (made("preceding")?, made("succeeding")?) {
+                (Some(preceding), Some(succeeding)) => {
+                    road_arg("on routes the map makes (their points name their roads)")?;
+                    MapKind::NamedInSequence {
+                        preceding,
+                        succeeding,
+                    }
                 }
-                MapKind::RoutesInSequence {
-                    preceding,
-                    succeeding,
+                (None, None) => {
+                    let (preceding, succeeding) =
+                        (field_end("preceding")?, field_end("succeeding")?);
+                    let road = arg(&args, "road")
+                        .map(|a| field(ctx, a, false).map(|_| a))
+                        .transpose()?;
+                    if preceding.kind == EndKind::Lane && succeeding.kind == EndKind::Lane {
+                        MapKind::InSequence {
+                            preceding: preceding.field,
+                            succeeding: succeeding.field,
+                            on_plan_roads: road.is_some(),
+                        }
+                    } else {
+                        let roads = [&preceding, &succeeding]
+                            .iter()
+                            .any(|e| e.kind == EndKind::Road);
+                        if roads {
+                            road_arg("where one of them is a road or a route (bound to a road itself, and the other on the road after it)")?;
+                        }
+                        MapKind::RoutesInSequence {
+                            preceding,
+                            succeeding,
+                        }
+                    }
+                }
+                // A route the map makes beside a field: the field is bound to the element
+                // after (before) it, as beside a road.
+                (Some(route), None) | (None, Some(route)) => {
+                    road_arg(
+                        "where one of them is a route the map makes (its points name its roads)",
+                    )?;
+                    let first = call("preceding").is_some();
+                    let which = if first { "preceding" } else { "succeeding" };
+                    if let (true, Some((_, points))) = (first, crate::plan::route_points(&route)) {
+                        if points.len() < 2 {
+                            return Err(need(which)?.site.err(
+                                K::Road,
+                                "expected a preceding route with an end (map.create_route([…]) through two or more points), found one from a single point, which runs on over the roads after it",
+                            ));
+                        }
+                    }
+                    let made_end = SeqEnd {
+                        field: format!("the route the map makes at {}", need(which)?.site.at()),
+                        kind: EndKind::Made,
+                        lane: format!(
+                            "the {which} route's lane ({name} at {}:{})",
+                            site.pos.line, site.pos.col
+                        ),
+                        made: Some(route),
+                    };
+                    let (preceding, succeeding) = if first {
+                        (made_end, field_end("succeeding")?)
+                    } else {
+                        (field_end("preceding")?, made_end)
+                    };
+                    MapKind::RoutesInSequence {
+                        preceding,
+                        succeeding,
+                    }
                 }
             }
         }

@@ -262,6 +262,26 @@ fn in_lane_minus_one_at(r: &crate::support::Run, places: &[(f64, &str, &str, f64
     }
 }
 
+/// A route the map makes beside a road field: the field is the road after (before) it.
+/// map_sequence_made_field.osc: b after road 0 s 10 to 90 m is road 2 (the plan's way on,
+/// through connecting road 1), c before road 6 s 0 to 60 m is road 0, the lane l after it lane
+/// -1 of road 2.
+#[test]
+fn a_road_field_beside_a_route_the_map_makes_is_the_road_after_or_before_it() {
+    let r = run("map_sequence_made_field", "junction_trippel_twoway0");
+    in_lane_minus_one_at(
+        &r,
+        &[
+            (0.0, "ego", "2", 0.0),
+            (5.0, "ego", "2", 50.0),
+            (0.0, "npc", "0", 20.0),
+            (5.0, "npc", "0", 60.0),
+            (0.0, "truck", "2", 0.0),
+            (5.0, "truck", "2", 25.0),
+        ],
+    );
+}
+
 /// Route fields given a value at their declaration are that route: route_field_value.osc, the
 /// routes of map_sequence_named.osc as fields (`a: route = …`, `var b: route = …`, `c: route = b`),
 /// ego along(a, start_offset: 5m), npc along(c).
@@ -445,9 +465,9 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "7:5",
     );
     refused(
-        "err_map_sequence_mix",
+        "err_map_sequence_made_point",
         "road_link_unequal_number_of_lanes0",
-        "expected routes_are_in_sequence(…) on two routes the map makes (map.create_route([…]), map.create_odr_point(…)) or on two fields, found preceding: a field beside a route the map makes",
+        "expected a preceding route with an end (map.create_route([…]) through two or more points), found one from a single point",
         "8:41",
     );
     refused_all(
