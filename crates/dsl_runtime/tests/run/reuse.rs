@@ -187,6 +187,36 @@ fn timers_in_an_invoked_scenarios_handlers_count_from_the_invocations_start() {
     }
 }
 
+/// `wait @tick` inside an invoked scenario whose own handler emits tick every 1 s from 0.5 s
+/// after the invocation's start, a run-time one at 3.35 s: reuse_on_wait.osc, by hand there.
+#[test]
+fn a_wait_in_an_invoked_scenario_on_its_handlers_timer_counts_from_the_invocations_start() {
+    let r = run("reuse_on_wait", 0, None);
+    phases_are(
+        &r,
+        &[
+            ("do.ego_part.close", (1.0, 3.35)),
+            ("do.ego_part.inner", (3.35, 5.85)),
+            ("do.ego_part.inner.w1", (3.35, 3.85)),
+            ("do.ego_part.inner.w2", (3.85, 4.85)),
+            ("do.ego_part.inner.go", (4.85, 5.85)),
+        ],
+    );
+    let by = "do.ego_part.inner.on.0/emit do.ego_part.inner.tick";
+    let got = r.emissions(by, "do.ego_part.inner.tick");
+    let want = [3.85, 4.85];
+    assert!(
+        got.len() == want.len() && got.iter().zip(want).all(|(g, w)| (g - w).abs() < T_TOL),
+        "{by}: {got:?}, expected {want:?}"
+    );
+    let ego = r.at(4.85, "ego");
+    assert!(
+        (ego.s - 197.0).abs() < S_TOL,
+        "ego at 4.85 s: s = {}",
+        ego.s
+    );
+}
+
 #[test]
 fn the_entry_point_can_be_named() {
     let options = |name: &str| dsl_runtime::Options {
