@@ -162,26 +162,30 @@ pub(crate) fn field_value<'a>(ctx: &Ctx<'a>, path: &str) -> Option<(&'a Expr, Ct
         Some((o, n)) => (o, n),
         None => ("", path),
     };
-    let instance = if owner.is_empty() {
-        ctx.res.get(&ctx.root)
+    let field = if ctx.res.get(&format!("{}.{path}", ctx.root)).is_some() {
+        // A field of the scenario's instance (or of an instance in it).
+        let instance = if owner.is_empty() {
+            ctx.res.get(&ctx.root)
+        } else {
+            ctx.lookup(owner).map(|(_, v)| v)
+        }?;
+        // A scenario's type is no entry of the model's type names: found by its name.
+        let Value::Compound { ty: name_of, .. } = instance else {
+            return None;
+        };
+        let ty = (0..ctx.model.compounds.len() as u32)
+            .map(dsl::semantics::types::CompoundId)
+            .find(|c| ctx.model.compound(*c).name == *name_of)?;
+        ctx.model
+            .all_fields(ty)
+            .into_iter()
+            .rev()
+            .find(|f| f.name == name)?
     } else {
-        ctx.lookup(owner).map(|(_, v)| v)
-    }?;
-    // A scenario's type is no entry of the model's type names: found by its name.
-    let Value::Compound { ty: name_of, .. } = instance else {
-        return None;
+        // A global field (top level).
+        ctx.model.globals.iter().find(|g| g.name == path)?
     };
-    let ty = (0..ctx.model.compounds.len() as u32)
-        .map(dsl::semantics::types::CompoundId)
-        .find(|c| ctx.model.compound(*c).name == *name_of)?;
-    let value = ctx
-        .model
-        .all_fields(ty)
-        .into_iter()
-        .rev()
-        .find(|f| f.name == name)?
-        .default
-        .as_ref()?;
+    let value = field.default.as_ref()?;
     let prefix = if owner.is_empty() {
         String::new()
     } else {

@@ -297,6 +297,8 @@ fn route_fields_given_a_value_are_that_route() {
             (5.0, "npc", "6", 40.0),
         ],
     );
+    let r = run("route_field_value_global", "junction_trippel_twoway0");
+    in_lane_minus_one_at(&r, &[(0.0, "ego", "6", 10.0), (5.0, "ego", "6", 50.0)]);
     refused(
         "err_route_field_value_map",
         "junction_trippel_twoway0",
