@@ -287,16 +287,6 @@ impl Builder<'_> {
     }
 }
 
-/// Whether `c` is the library's `route` or inherits from it (`road`, `lane`, `compound_route`,
-/// …): a road-network value the runtime finds in the map, so a value given at a field's
-/// declaration (`r: route = m.create_route(…)`) is the runtime's, not a constraint.
-pub fn is_route(model: &Model, c: CompoundId) -> bool {
-    model.ancestry(c).into_iter().any(|a| {
-        let d = model.compound(a);
-        is_library(model, a) && d.name.strip_prefix("std::").unwrap_or(&d.name) == "route"
-    })
-}
-
 /// Road-network types and the map's traffic lights (§8.14.7): found in the map by the runtime,
 /// not sampled.
 fn is_reference(model: &Model, c: CompoundId) -> bool {

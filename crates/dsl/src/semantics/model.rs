@@ -177,6 +177,18 @@ impl Model {
             .collect()
     }
 
+    /// Whether `id` is the library's `route` or inherits from it (`road`, `lane`,
+    /// `compound_route`, …): a road-network value the runtime finds in the map, so a value
+    /// given at a field's declaration (`r: route = m.create_route(…)`) is the runtime's, not a
+    /// constraint.
+    pub fn is_route(&self, id: CompoundId) -> bool {
+        self.ancestry(id).into_iter().any(|a| {
+            let d = self.compound(a);
+            d.span.file.0 < self.library_files
+                && d.name.strip_prefix("std::").unwrap_or(&d.name) == "route"
+        })
+    }
+
     /// The method `name` of `id` or of an ancestor.
     pub fn method(&self, id: CompoundId, name: &str) -> Option<&MethodDef> {
         self.ancestry(id)

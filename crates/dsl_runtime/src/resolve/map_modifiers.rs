@@ -491,13 +491,12 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                     )?;
                     let first = call("preceding").is_some();
                     let which = if first { "preceding" } else { "succeeding" };
-                    if let (true, Some((_, points))) = (first, crate::plan::route_points(&route)) {
-                        if points.len() < 2 {
-                            return Err(need(which)?.site.err(
-                                K::Road,
-                                "expected a preceding route with an end (map.create_route([…]) through two or more points), found one from a single point, which runs on over the roads after it",
-                            ));
-                        }
+                    // A route through one point (no later points) has no end.
+                    if first && matches!(&route, Route::Lane { then, .. } if then.is_empty()) {
+                        return Err(need(which)?.site.err(
+                            K::Road,
+                            "expected a preceding route with an end (map.create_route([…]) through two or more points), found one from a single point, which runs on over the roads after it",
+                        ));
                     }
                     let made_end = SeqEnd {
                         field: format!("the route the map makes at {}", need(which)?.site.at()),

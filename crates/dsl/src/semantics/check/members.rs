@@ -64,7 +64,7 @@ impl Cx<'_> {
             let v = self.expect(d, &f.ty, scope, &format!("field `{}`", f.name));
             // A route's value (`r: route = m.create_route(…)`) is found in the map by the
             // runtime, as the route itself: no constraint of the solver's.
-            let route = matches!(&f.ty, Ty::Compound(c) if crate::semantics::instance::is_route(self.model, *c));
+            let route = matches!(&f.ty, Ty::Compound(c) if self.model.is_route(*c));
             if !f.is_var && !route {
                 let eq = TExpr {
                     kind: TKind::Binary(BinOp::Eq, Box::new(here.clone()), Box::new(v)),
