@@ -13,7 +13,8 @@
 //! two lanes (`in_lane`/`out_lane`, or two of the modifier's own) with the way through on the
 //! plan's roads, and `routes_are_in_sequence` on route fields, each bound to a road (a
 //! `lane_section` field to a lane section) of the plan through a lane of the modifier's own
-//! (`SeqEnd`), or on two routes the map makes, a check of their points; `roads_follow_in_junction`'s `junction_route` is bound to the connecting road of the way through;
+//! (`SeqEnd`), or on two routes the map makes, a check of their points, or on a route the map
+//! makes and a field, the field bound beside it as beside a road (`EndKind::Made`); `roads_follow_in_junction`'s `junction_route` is bound to the connecting road of the way through;
 //! `crossing_connects` binds its crossing field to a crosswalk of the map and its lanes to
 //! the lanes the crosswalk joins. `routes_are_opposite` on route fields binds `route2` to the
 //! plan's roads driven against s (`OppositeRoutes`);
