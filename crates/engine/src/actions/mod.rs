@@ -107,10 +107,10 @@ pub(crate) struct ActionTable {
     /// would otherwise be walked every step). A start with parts adds its slot; stage 2 drops
     /// the slots it finds done.
     live: Vec<u32>,
-    /// The entities whose lateral action goes first (`order_domains`), as stage 2 last set.
-    lateral_first: Vec<EntityId>,
+    /// The entities a lateral action held as stage 2 last ended, ascending (`order_domains`).
+    lateral_held: Vec<EntityId>,
     /// The buffer `order_domains` fills next (kept: the stage allocates nothing once grown).
-    lateral_first_next: Vec<EntityId>,
+    lateral_held_next: Vec<EntityId>,
 }
 
 impl ActionTable {
@@ -182,11 +182,10 @@ impl ActionTable {
 
     /// The speed as stage 2 starts (`Entity::start_speed`), before any part changes it, of
     /// each entity that can read it: the controller's move and a lane change's step read it
-    /// where the lateral action goes first (`order_domains`), which only an actor of a
-    /// running action or an entity it held for at the last step can be (an action may end
-    /// and keep its domain). So the stage notes it for those entities instead of walking
-    /// every entity (issue 31: that walk, a cache line of each of 4,000 entities per step, was
-    /// 2–3 % of a driver-model run).
+    /// where the lateral action goes first (`order_domains`), which only an entity a lateral
+    /// action holds can be. So the stage notes it for the candidates of `order_domains`
+    /// instead of walking every entity (issue 31: that walk, a cache line of each of 4,000
+    /// entities per step, was 2–3 % of a driver-model run).
     fn note_start_speeds(&self, world: &mut World) {
         for actor in self.ordered_candidates() {
             let e = world.entity_mut(actor);
@@ -194,38 +193,40 @@ impl ActionTable {
         }
     }
 
-    /// The entities whose lateral action can go first (see `order_domains`): those it held
-    /// for at the last step, and the actors of the slots that may be running.
+    /// The entities whose lateral action can go first (see `order_domains`): those a lateral
+    /// action held at the last stage, and the actors of the slots that may be running. A
+    /// lateral domain is claimed only by the start of an action with parts, whose slot is
+    /// then live until a stage has seen it (an action may end and keep its domain: the
+    /// corpus test has a LaneChangeAction `Ended` with its actor's lateral domain naming it).
     fn ordered_candidates(&self) -> impl Iterator<Item = EntityId> + '_ {
         let actors = self
             .live
             .iter()
             .flat_map(|&index| self.slots[index as usize].actors.iter().copied());
-        self.lateral_first.iter().copied().chain(actors)
+        self.lateral_held.iter().copied().chain(actors)
     }
 
     /// Which domain's action comes first in the storyboard, for the controller's choice of
     /// speed (`Entity::lateral_first`): action ids number the actions in document order
     /// (runtime/build.rs). The lateral one goes first only where a lateral action holds the
-    /// domain: an actor of a slot running as the stage started, or an entity whose lateral
-    /// action went first at the last step (whose action may have ended keeping its domain).
-    /// Those entities are cleared and set again, instead of walking every entity (issue 31).
-    /// Called before the stage drops the slots it found done from `live`. In debug builds
-    /// (every `cargo test`) the result is checked against the rule over every entity.
+    /// domain, so the stage sets it over `ordered_candidates` and keeps those a lateral action
+    /// holds for the next stage, instead of walking every entity (issue 31). Called before
+    /// the stage drops the slots it found done from `live`. In debug builds (every
+    /// `cargo test`) the result is checked against the rule over every entity.
     fn order_domains(&mut self, world: &mut World) {
-        for &id in &self.lateral_first {
-            world.entity_mut(id).lateral_first = false;
-        }
-        let mut first = std::mem::take(&mut self.lateral_first_next);
-        first.clear();
+        let mut held = std::mem::take(&mut self.lateral_held_next);
+        held.clear();
         for id in self.ordered_candidates() {
             let e = world.entity_mut(id);
-            if !e.lateral_first && lateral_goes_first(e) {
-                e.lateral_first = true;
-                first.push(id);
+            e.lateral_first = lateral_goes_first(e);
+            if e.lateral_action.is_some() {
+                held.push(id);
             }
         }
-        self.lateral_first_next = std::mem::replace(&mut self.lateral_first, first);
+        // An entity can be both held and an actor, or the actor of several slots.
+        held.sort_unstable();
+        held.dedup();
+        self.lateral_held_next = std::mem::replace(&mut self.lateral_held, held);
         debug_assert!(
             world
                 .entities()
