@@ -199,6 +199,21 @@ fn a_distance_after_an_until_on_several_roads_runs_along_the_lane_across_them() 
     }
 }
 
+/// runtime_lane_of_several_roads.osc's comment, by hand: lane(same_as: lead) after an until
+/// holds with ego on road 0 and lead on road 1, both in lane -1 of the plan's roads.
+#[test]
+fn a_lane_relative_to_another_actor_after_an_until_holds_across_the_plans_roads() {
+    let r = run("runtime_lane_of_several_roads", "junction_trippel_twoway0");
+    let (ego, lead) = (r.at(5.85, "ego"), r.at(5.85, "lead"));
+    assert_eq!((ego.road.as_str(), ego.lane), ("0", -1), "{ego:?}");
+    assert!((ego.s - 67.0).abs() < S_TOL, "{ego:?}");
+    assert_eq!((lead.road.as_str(), lead.lane), ("1", -1), "{lead:?}");
+    assert!((lead.s - 6.7692).abs() < CURVED_TOL, "{lead:?}");
+    // The check passed (a failure stops the run).
+    let t = r.when("do.same/ego/1:check", "End");
+    assert!(t.is_some_and(|t| (t - 5.85).abs() < 1e-9), "{t:?}");
+}
+
 /// runtime_several_roads_off_route.osc's comment, by hand: the route on road 2 checked in the
 /// plan's s while ego is on road 0 at s 27 m.
 #[test]

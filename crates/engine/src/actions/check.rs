@@ -262,12 +262,17 @@ fn require(
             ));
         };
         let lane = lane_shift(rp.lane_id, *shift, track.direction);
-        if at.road_id != rp.road_id || at.lane_id != lane {
+        // On one road both on it; on a plan over several roads on any of them (the lane ids
+        // are the same on each).
+        if chain.pair(at, rp).is_none() || at.lane_id != lane {
+            let of = match chain.is_chain() {
+                true => plan_roads(),
+                false => format!("road {}", rp.road_id),
+            };
             return Err(fail(
                 format!(
-                    "'{}' in lane {lane} of road {}, {}'{other}''s lane {}",
+                    "'{}' in lane {lane} of {of}, {}'{other}''s lane {}",
                     e.name,
-                    rp.road_id,
                     match shift {
                         0 => String::new(),
                         n => format!(
