@@ -3,7 +3,7 @@
 //! `position(…, at: end)` or `distance(…)` gives a phase without a duration.
 
 use scenario::{
-    DynamicsDimension, DynamicsShape, LateralAction, LongitudinalAction, PrivateAction,
+    DynamicsDimension, DynamicsShape, LateralAction, LongitudinalAction, PrivateAction, RateWithin,
     SpeedTarget, SpeedTargetValueType, TransitionDynamics,
 };
 
@@ -298,6 +298,17 @@ impl Planner<'_> {
                         self.last_v.insert(target.clone(), v);
                     }
                     (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
+                        // Beside distance(d) without a duration after a run-time start: at
+                        // its rate, checked to end within d (`runtime_end`).
+                        if let Some(dm) = mods
+                            .iter()
+                            .find(|q| q.kind == ModKind::Distance && q.at != At::Start)
+                            .filter(|_| t0.is_none() && len.filter(|l| *l > 0.0).is_none())
+                        {
+                            let names = (name("check"), name("speed"));
+                            self.speed_over_distance((m, dm), mods, target, names, out)?;
+                            continue;
+                        }
                         let (t, len) = need_len("a speed at the phase end")?;
                         let read_at = if m.projected { t } else { t.map(|t| t + len) };
                         let (v1, relative) = self.speed_value(m, read_at)?;
@@ -365,7 +376,7 @@ impl Planner<'_> {
                                     out.push(speed_at_rate_check(
                                         target,
                                         (&q.name, &q.site),
-                                        (SpeedTarget::Absolute(v1), a, len),
+                                        (SpeedTarget::Absolute(v1), a, RateWithin::Time(len)),
                                         name("check"),
                                     ));
                                 } else if needed > len + 1e-9 {
@@ -601,11 +612,18 @@ impl Planner<'_> {
                                 "expected distance(…) over the phase (at: all or end), found at: start",
                             ));
                         }
+                        // After a run-time start without a duration, acceleration(a) is the
+                        // rate of the speed change beside it (`speed_over_distance`).
+                        let rates_change = t0.is_none()
+                            && len.filter(|l| *l > 0.0).is_none()
+                            && end_speed_mod(mods).is_some();
                         if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
-                            return Err(q.site.err(
-                                K::Unsatisfiable,
-                                format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", m.site.at()),
-                            ));
+                            if !rates_change {
+                                return Err(q.site.err(
+                                    K::Unsatisfiable,
+                                    format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", m.site.at()),
+                                ));
+                            }
                         }
                         if t0.is_none() {
                             // After a run-time start: the engine works out the profile then,
@@ -621,12 +639,6 @@ impl Planner<'_> {
                                             "expected a distance of 0 m or more in distance(…), found none",
                                         ));
                                     };
-                                    if let Some(q) = end_speed_mod(mods) {
-                                        return Err(q.site.err(
-                                            K::Unsatisfiable,
-                                            format!("expected a phase duration for a speed change beside distance(…) at {}, found none", m.site.at()),
-                                        ));
-                                    }
                                     let (check, w) = self.distance_watch(m, target, d, n);
                                     out.push(check);
                                     derived = Some(match derived {

@@ -23,6 +23,7 @@
 //! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends, beside the engine's check that v₀ + a·T is within 0 and the vehicle's maximum speed then |
 //! | `speed(v, at: end)`, `change_speed(v)` (or to another actor's speed) over a phase of duration T, `change_speed(v, duration)` | the engine's SpeedAction over T from the speed the actor has, beside the engine's check that its peak rate fits the vehicle's limit then (a failure: an error record and a failed run, not a stretched change) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a, beside the engine's check that \|v − v₀\|/a ≤ T from the speed v₀ the actor has then (`speed_at_rate_check`) |
+//! | `change_speed(v)`, `speed(v, at: end)` beside `distance(d)` without a duration | the engine's SpeedAction at the rate of `acceleration(a)` beside it, else `change_speed`'s default, beside the engine's check that \|v² − v₀²\|/(2a) ≤ d from the speed v₀ the actor has then (`speed_at_rate_check`); the phase ends at d travelled since the start's mark (`runtime_end`) |
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
 //! | `keep_space_gap` / `keep_time_headway` without a known gap | the engine's LongitudinalDistanceAction keeping the value it measures at its start (`gap_actions`) |
 //!
@@ -38,8 +39,8 @@
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, SpeedTarget,
-    StateCheck, Travel, TravelGoal,
+    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, RateWithin,
+    SpeedTarget, StateCheck, Travel, TravelGoal,
 };
 
 use super::action_args::timed;
@@ -377,14 +378,14 @@ pub(super) fn speed_change_check(
 }
 
 /// The engine's check that a speed change to `to` at the rate `a` (m/s²), starting in a phase
-/// of `target` that starts on a run-time condition, ends within the phase's `len` s from the
-/// speed the actor has then, as the action `name` (`what` names the modifier and `site` where
-/// it is written): the phase's end would cut a longer change short; here it is an error
-/// record and a failed run instead.
+/// of `target` that starts on a run-time condition, ends within the phase (its length, or
+/// the distance that ends it) from the speed the actor has then, as the action `name`
+/// (`what` names the modifier and `site` where it is written): the phase's end would cut a
+/// longer change short; here it is an error record and a failed run instead.
 pub(super) fn speed_at_rate_check(
     target: &str,
     (what, site): (&str, &Site),
-    (to, a, len): (SpeedTarget, f64, f64),
+    (to, a, len): (SpeedTarget, f64, RateWithin),
     name: String,
 ) -> Planned {
     let check = StateCheck {

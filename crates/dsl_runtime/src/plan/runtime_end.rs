@@ -7,6 +7,7 @@
 //! | --- | --- |
 //! | `distance(d)` without a duration | a state check at the start notes the actor's odometer (a mark); the phase ends when the engine measures d travelled since (TraveledSinceMark) |
 //! | `position(d / time: t / neither, ahead_of/behind: x, at: end)` without a duration (at any start; on a plan over several roads in the plan's s) | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
+//! | `change_speed(v)`, `speed(v, at: end)` beside `distance(d)` without a duration | the engine's SpeedAction at the rate of `acceleration(a)` beside it (else `change_speed`'s default 2 m/s²) from the speed v₀ the actor has, beside its check that the change, \|v² − v₀²\|/(2a), fits within d; the phase ends at d travelled since the mark |
 //! | `position(…, at: end)`, `distance(d)` over a duration beside `speed(v)` at: all | the speed holds; the engine checks the place (or d travelled since the start's mark) at the phase end: a constraint that holds only if the run meets it is an error record if it does not |
 //! | `speed(same_as/faster_than/slower_than: x, at: end)` beside a TravelAction | the profile ends at x's speed at the start (± the value); the engine checks x's speed at the phase end |
 //!
@@ -14,16 +15,19 @@
 //! completes (`crate::lower`).
 
 use scenario::{
-    ConditionEdge, ConditionGroup, ConditionKind, EntityCondition, Mark, PrivateAction, SpeedGap,
-    StateCheck, Trigger, TriggeringEntities, TriggeringEntitiesRule,
+    ConditionEdge, ConditionGroup, ConditionKind, DynamicsDimension, DynamicsShape,
+    EntityCondition, LongitudinalAction, Mark, PrivateAction, RateWithin, SpeedGap, SpeedTarget,
+    StateCheck, TransitionDynamics, Trigger, TriggeringEntities, TriggeringEntitiesRule,
 };
 
+use super::motion::{check_accel, check_speed};
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
-use super::runtime::phase_start_check;
+use super::runtime::{phase_start_check, speed_at_rate_check};
+use super::speed_actions::DEFAULT_ACCELERATION;
 use super::types::{Planned, When};
-use crate::error::Error;
-use crate::resolve::Modifier;
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{Arg, ModKind, Modifier};
 
 impl Planner<'_> {
     /// `distance(d)` of `target` in a phase without a duration that starts on a run-time
@@ -46,6 +50,84 @@ impl Planner<'_> {
             },
         );
         (self.mark_check(m, target, name, None), end)
+    }
+
+    /// The speed change `m` (`change_speed(v)`, `speed(v, at: end)`) of `target` beside
+    /// `distance(d)` `dm` in a phase without a duration that starts on a run-time condition: the
+    /// engine's SpeedAction to v at the rate of `acceleration(a)` beside it, else the rate
+    /// `change_speed` takes by default, from the speed v₀ the actor has then, beside the check
+    /// `check_name` that the change covers \|v² − v₀²\|/(2a) ≤ d (named for the `acceleration(…)`
+    /// when one gives the rate, else for `m`), as the action `name`; the phase ends when
+    /// `distance_watch` measures d.
+    pub(super) fn speed_over_distance(
+        &mut self,
+        (m, dm): (&Modifier, &Modifier),
+        mods: &[Modifier],
+        target: &str,
+        (check_name, name): (String, String),
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let Some(d) = dm
+            .arg("distance")
+            .map(Arg::number)
+            .transpose()?
+            .filter(|d| *d >= 0.0)
+        else {
+            return Err(dm.site.err(
+                K::Value,
+                "expected a distance of 0 m or more in distance(…), found none",
+            ));
+        };
+        let (v1, relative) = self.speed_value(m, None)?;
+        if relative.is_some() {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!("expected a speed of its own beside distance(…) at {} in a phase without a duration that starts on a run-time condition, found one relative to another actor (give the phase a duration)", dm.site.at()),
+            ));
+        }
+        check_speed(m, v1)?;
+        let (rated_by, a) = match mods.iter().find(|q| q.kind == ModKind::Acceleration) {
+            Some(q) => {
+                let a = q
+                    .arg("acceleration")
+                    .map(Arg::number)
+                    .transpose()?
+                    .filter(|a| *a != 0.0)
+                    .ok_or_else(|| {
+                        q.site.err(
+                            K::Unsupported,
+                            format!("expected acceleration(a) with a rate of its own beside distance(…) at {} and a speed change, found none", dm.site.at()),
+                        )
+                    })?
+                    .abs();
+                check_accel(q, a)?;
+                (q, a)
+            }
+            None => (m, DEFAULT_ACCELERATION),
+        };
+        let to = SpeedTarget::Absolute(v1);
+        out.push(speed_at_rate_check(
+            target,
+            (&rated_by.name, &rated_by.site),
+            (to.clone(), a, RateWithin::Distance(d)),
+            check_name,
+        ));
+        out.push(Planned::with_phase(
+            target,
+            name,
+            PrivateAction::Longitudinal(LongitudinalAction::Speed {
+                dynamics: TransitionDynamics {
+                    dynamics_shape: DynamicsShape::Linear,
+                    dynamics_dimension: DynamicsDimension::Rate,
+                    value: a,
+                    following_mode: None,
+                },
+                target: to,
+            }),
+            &m.site,
+        ));
+        self.last_v.insert(target.to_string(), v1);
+        Ok(())
     }
 
     /// `position(d / time: t / neither, ahead_of/behind: x, at: end)` of `target` in a phase

@@ -477,6 +477,57 @@ fn a_speed_change_at_a_rate_not_done_within_the_phase_after_an_until_fails_the_r
     );
 }
 
+/// runtime_speed_over_distance.osc's comment, by hand: from the 18 m/s the engine has at 5.35 s
+/// (the plan knowing 0 m/s), 22 m/s at the default 2 m/s² covers 40 m (40.1 m in 0.05 s steps
+/// at their end speeds) within distance(62m), so the check passes; the phase ends at 8.35 s,
+/// the first step at 62 m or more since its start (62.1 m).
+#[test]
+fn a_speed_change_beside_a_distance_without_a_duration_after_an_until_runs_at_its_rate() {
+    let r = run("runtime_speed_over_distance", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.brake", 3.35, 5.35),
+            ("do.speed_up", 5.35, 8.35),
+            ("do.after", 8.35, 9.35),
+        ],
+    );
+    ego_speeds(
+        &r,
+        &[
+            (5.35, 18.0),
+            (6.35, 20.0),
+            (7.35, 22.0),
+            (8.35, 22.0),
+            (9.35, 22.0),
+        ],
+    );
+    let from = r.at(5.35, "ego").s;
+    for (t, d) in [(6.35, 19.05), (7.35, 40.1), (8.3, 61.0), (8.35, 62.1)] {
+        let got = r.at(t, "ego").s - from;
+        assert!((got - d).abs() < 1e-6, "{t}: {got} m, want {d}");
+    }
+    let at = r
+        .when("do.speed_up/ego/1:check", "End")
+        .expect("the check ran");
+    assert!((at - 5.35).abs() < T_TOL, "check at {at}");
+}
+
+/// runtime_speed_over_distance_fails.osc's comment, by hand: 18 → 24 m/s at 1.5 m/s² covers
+/// 84 m, more than the phase's 60 m.
+#[test]
+fn a_speed_change_not_done_within_a_distance_after_an_until_fails_the_run() {
+    fails(
+        "runtime_speed_over_distance_fails",
+        (
+            "expected 'ego''s speed from 18.000 to 24.000 m/s at 1.500 m/s² within 60.000 m (acceleration(…) at ",
+            "runtime_speed_over_distance_fails.osc:24:13), found it needs 84.000 m at t = 5.350 s",
+        ),
+        "do.speed_up/ego/1:check",
+        5.35,
+    );
+}
+
 /// runtime_speed_rate_engine.osc's comment, by hand: from the 18 m/s the engine has at 5.35 s
 /// (the plan knowing 0 m/s), 9 m/s² up over 2 s, then −9 m/s² over 1 s; both within 10 m/s²,
 /// so the engine's checks pass and nothing is stretched.

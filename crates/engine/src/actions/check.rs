@@ -18,7 +18,7 @@
 //! end, for a constraint that holds there only if the run happens to meet it.
 
 use opendrive::{Direction, RoadPosition};
-use scenario::{SourcePos, StateCheck};
+use scenario::{RateWithin, SourcePos, StateCheck};
 
 use super::lane_change::side_lane;
 use super::speed;
@@ -148,17 +148,26 @@ fn require(
             ));
         }
     }
-    // At a rate the change takes |v1 − v| / a, which must end within the phase.
+    // At a rate the change takes |v1 − v| / a and covers |v1² − v²| / (2a), which must end
+    // within the phase: its length, or the distance that ends it.
     if let Some((target, rate, within)) = &check.speed_at_rate {
         let v1 = speed::target_speed(world, target, pos)?;
-        let needed = (v1 - e.speed).abs() / rate;
-        if needed > within + crate::tolerance::TIME {
+        let (needed, limit, unit, tol) = match *within {
+            RateWithin::Time(t) => ((v1 - e.speed).abs() / rate, t, "s", crate::tolerance::TIME),
+            RateWithin::Distance(d) => (
+                (v1 * v1 - e.speed * e.speed).abs() / (2.0 * rate),
+                d,
+                "m",
+                crate::tolerance::LENGTH,
+            ),
+        };
+        if needed > limit + tol {
             return Err(fail(
                 format!(
-                    "'{}''s speed from {:.3} to {v1:.3} m/s at {rate:.3} m/s² within {within:.3} s",
+                    "'{}''s speed from {:.3} to {v1:.3} m/s at {rate:.3} m/s² within {limit:.3} {unit}",
                     e.name, e.speed,
                 ),
-                format!("it needs {needed:.3} s"),
+                format!("it needs {needed:.3} {unit}"),
             ));
         }
     }

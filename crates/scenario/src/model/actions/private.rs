@@ -41,6 +41,16 @@ pub enum PrivateAction {
     Check(Box<StateCheck>),
 }
 
+/// What a speed change at a rate ([`StateCheck::speed_at_rate`]) must be done within.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RateWithin {
+    /// The phase's length (s): at rate a the change takes \|v − v₀\|/a.
+    Time(f64),
+    /// The distance (m) that ends the phase (`distance(d)`): at rate a the change covers
+    /// \|v² − v₀²\|/(2a).
+    Distance(f64),
+}
+
 /// What oscsim's state check ([`PrivateAction::Check`]) requires of its actor when it starts
 /// (the default requires nothing).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -82,11 +92,12 @@ pub struct StateCheck {
     /// at: end)`, §8.8.2.12 `change_speed`, in a phase that starts on a run-time condition).
     pub speed_change: Option<(SpeedTarget, DynamicsShape, f64)>,
     /// A speed change to the target at the given rate (m/s², a SpeedAction of dimension
-    /// `rate`), starting with the check: it must be done within the given time (s), the
-    /// phase's length, from the speed the actor has then (ASAM OpenSCENARIO DSL 2.1 §8.9
-    /// `change_speed`/`speed(…, at: end)` beside `acceleration(a)`, in a phase that starts on
-    /// a run-time condition; the phase's end would otherwise cut the change short).
-    pub speed_at_rate: Option<(SpeedTarget, f64, f64)>,
+    /// `rate`), starting with the check: from the speed the actor has then it must be done
+    /// within the phase, its length or the distance that ends it (ASAM OpenSCENARIO DSL 2.1
+    /// §8.9 `change_speed`/`speed(…, at: end)` beside `acceleration(a)`, or beside
+    /// `distance(d)` without a duration, in a phase that starts on a run-time condition; the
+    /// phase's end would otherwise cut the change short).
+    pub speed_at_rate: Option<(SpeedTarget, f64, RateWithin)>,
     /// An acceleration (m/s²) held over the given time (s), starting with the check (the
     /// AccelerationAction beside it): from the speed the actor has then it must end within 0
     /// and the actor's maximum speed (ASAM OpenSCENARIO DSL 2.1 §8.9 `acceleration(a)` alone,
