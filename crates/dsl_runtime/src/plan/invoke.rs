@@ -812,10 +812,17 @@ impl Planner<'_> {
                         let (t, len) = need_len("a lateral position at the phase end")?;
                         // Beside another actor: where the plan has it at the phase end.
                         if lateral::reference(m)?.is_some() {
-                            let keeps = mods.iter().find(|q| {
+                            let mut keeps = mods.iter().find(|q| {
                                 q.kind == ModKind::KeepLane
                                     || (q.kind == ModKind::Lane && q.at == At::All)
                             });
+                            // After a run-time start the engine finds the lane that holds the
+                            // t asked: the lane kept is its check at the phase end.
+                            if let Some(k) = keeps.filter(|_| t.is_none()) {
+                                let n = name("lane");
+                                self.lane_kept_to_end(k, target, n, (&mut *out, &mut *after))?;
+                                keeps = None;
+                            }
                             let n = name("lateral");
                             self.plan_beside_end(m, target, (t, len), keeps, n, out)?;
                             continue;

@@ -19,7 +19,8 @@
 //! then) the engine's blend to a moving target (`Beside` with `follow`, engine
 //! `actions::lateral_follow`): t(τ) = (1 − f)·t₀ + f·(t_x(τ) + d), f the sinusoid over the
 //! phase, so the actor ends at x's t at the phase end plus d. A modifier that keeps the lane
-//! beside it (the engine finds the lane), or a lane change of the phase, is an error.
+//! beside it (`keep_lane()`, `lane(…)` at: all) is the engine's check at the phase end that
+//! the actor is in the lane kept (`runtime_end`); a lane change of the phase is an error.
 
 use scenario::{DynamicsShape, LaneChangeTarget, LaneOffsetTarget, LateralAction, PrivateAction};
 
@@ -105,7 +106,8 @@ impl Planner<'_> {
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
         if t.is_none() {
-            return self.beside_after_runtime_start(m, target, len, keeps, name, out);
+            // A lane kept beside it is the engine's check at the phase end (`runtime_end`).
+            return self.beside_after_runtime_start(m, target, len, name, out);
         }
         let Some(t_a) = self.beside_end(m, target, t, len)? else {
             return Ok(());
@@ -171,26 +173,18 @@ impl Planner<'_> {
     /// `m` beside x after a run-time start, over `len` s: with `track: projected` the engine's
     /// sinusoidal lane change to the lane holding x's t at the start plus the t `m` asks for
     /// (`LaneChangeTarget::Beside`); with `track: actual` the engine's sinusoidal blend to x's
-    /// t at every step plus that t (`Beside` with `follow`); beside a modifier that keeps the
-    /// lane (`keeps`) an error.
+    /// t at every step plus that t (`Beside` with `follow`).
     fn beside_after_runtime_start(
         &self,
         m: &Modifier,
         target: &str,
         len: f64,
-        keeps: Option<&Modifier>,
         name: String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
         let Some((x, dt)) = self.beside_gap(m, target)? else {
             return Ok(());
         };
-        if let Some(k) = keeps {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!("expected no {}(…) (at {}) beside lateral(…, at: end) beside `{x}` in a phase that starts on a run-time condition (the lane that holds the t asked is the engine's to find then), found one", k.name, k.site.at()),
-            ));
-        }
         if self.road.ids().len() > 1 {
             return Err(m.site.err(
                 K::Unsupported,

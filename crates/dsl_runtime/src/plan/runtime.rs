@@ -64,6 +64,11 @@ impl Planner<'_> {
         target: &str,
         name: String,
     ) -> Result<Planned, Error> {
+        Ok(self.checked(self.start_state(m, target)?, m, target, name))
+    }
+
+    /// What the engine's check of `m` (as [`Self::start_check`]) requires of `target`.
+    pub(super) fn start_state(&self, m: &Modifier, target: &str) -> Result<StateCheck, Error> {
         let t = self.last_known();
         let what = format!("{}(…) at {}", m.name, m.site.at());
         let mut check = StateCheck {
@@ -88,7 +93,7 @@ impl Planner<'_> {
                 ] {
                     if let Some(e) = m.arg(key) {
                         check.lane_of = Some((self.entity_of(e)?, shift));
-                        return Ok(self.checked(check, m, target, name));
+                        return Ok(check);
                     }
                 }
                 let from_left = matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
@@ -110,7 +115,7 @@ impl Planner<'_> {
             ModKind::Lateral => {
                 if let Some((x, dt)) = self.beside_gap(m, target)? {
                     check.beside = Some((x, dt, LATERAL_TOLERANCE));
-                    return Ok(self.checked(check, m, target, name));
+                    return Ok(check);
                 }
                 // The offset is k·W + c in the lane's width W, which the engine takes where
                 // the actor is then (the plan's width, where it last knows the actor, checks
@@ -127,7 +132,7 @@ impl Planner<'_> {
                 ))
             }
         }
-        Ok(self.checked(check, m, target, name))
+        Ok(check)
     }
 
     /// The check `check` of `m` as the action `name` of `target`.

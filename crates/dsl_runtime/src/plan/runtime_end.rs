@@ -9,6 +9,7 @@
 //! | `position(d / time: t / neither, ahead_of/behind: x, at: end)` without a duration (at any start; on a plan over several roads in the plan's s) | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `distance(d)` without a duration | the engine's SpeedAction at the rate of `acceleration(a)` beside it (else `change_speed`'s default 2 m/s²) from the speed v₀ the actor has, beside its check that the change, \|v² − v₀²\|/(2a), fits within d; the phase ends at d travelled since the mark |
 //! | `position(…, at: end)`, `distance(d)` over a duration beside `speed(v)` at: all | the speed holds; the engine checks the place (or d travelled since the start's mark) at the phase end: a constraint that holds only if the run meets it is an error record if it does not |
+//! | `keep_lane()`, `lane(…)` at: all beside `lateral(d, side_of/left_of/right_of: x, at: end)` | the engine's check at the phase end: the actor in the lane it had at the start (a mark notes it) or in the lane `lane(…)` asks |
 //! | `speed(same_as/faster_than/slower_than: x, at: end)` beside a TravelAction | the profile ends at x's speed at the start (± the value); the engine checks x's speed at the phase end |
 //!
 //! Checks at the end run in the phase's `…/end` Act, which starts when the phase's Act
@@ -206,6 +207,33 @@ impl Planner<'_> {
             ..StateCheck::default()
         };
         phase_start_check(target, (&m.name, &m.site), check, name)
+    }
+
+    /// `k` (`keep_lane()`, or `lane(…)` at: all) of `target` beside a `lateral(…, at: end)`
+    /// beside another actor in a phase that starts on a run-time condition, where the engine
+    /// finds the lane that holds the t asked: the engine's check at the phase end (in
+    /// `after`, as `name.end`) that the actor is in the lane it was in at the phase start (a
+    /// mark `name` noted then, for `keep_lane`) or in the lane `lane(…)` asks (also checked at
+    /// the start, `start_check`).
+    pub(super) fn lane_kept_to_end(
+        &self,
+        k: &Modifier,
+        target: &str,
+        name: String,
+        (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
+    ) -> Result<(), Error> {
+        let check = match k.kind {
+            ModKind::KeepLane => {
+                out.push(self.mark_check(k, target, name.clone(), None));
+                StateCheck {
+                    lane_at_mark: Some(name.clone()),
+                    ..StateCheck::default()
+                }
+            }
+            _ => self.start_state(k, target)?,
+        };
+        after.push(self.end_check(k, target, format!("{name}.end"), check));
+        Ok(())
     }
 
     /// The engine's check of `target` at the phase's end, as the action `name` (for the

@@ -953,6 +953,51 @@ fn a_lateral_position_beside_a_moving_actor_after_an_until_follows_its_actual_t(
     assert_eq!(r.at(6.35, "ego").lane, -2);
 }
 
+/// runtime_lateral_keep_lane.osc's comment, by hand: ego follows npc's actual t and stays in
+/// lane -2, so keep_lane()'s check at 5.35 s and lane(2)'s at 5.35 and 6.35 s pass.
+#[test]
+fn a_lane_kept_beside_a_lateral_position_beside_a_moving_actor_after_an_until_is_checked_at_the_end(
+) {
+    let r = run("runtime_lateral_keep_lane", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.shift", 3.35, 5.35),
+            ("do.hold", 5.35, 6.35),
+            ("do.after", 6.35, 7.35),
+        ],
+    );
+    for (t, y) in [(4.35, -4.5), (5.35, -4.25), (6.35, -4.25)] {
+        let ego = r.at(t, "ego");
+        assert!((ego.y - y).abs() < S_TOL && ego.lane == -2, "{t}: {ego:?}");
+    }
+    for (check, t) in [
+        ("do.shift.0/ego/1:lane.end", 5.35),
+        ("do.hold.0/ego/1:lane.end", 6.35),
+        ("do.hold.0/ego/3:check", 5.35),
+    ] {
+        let at = r
+            .when(check, "End")
+            .unwrap_or_else(|| panic!("{check} ran"));
+        assert!((at - t).abs() < T_TOL, "{check} at {at}");
+    }
+}
+
+/// runtime_lateral_keep_lane_fails.osc's comment, by hand: npc moves 1 m left, ego 5.5 m left
+/// of it ends at t = -2.25 m in lane -1.
+#[test]
+fn a_lane_not_kept_beside_a_lateral_position_beside_a_moving_actor_after_an_until_fails_the_run() {
+    fails(
+        "runtime_lateral_keep_lane_fails",
+        (
+            "expected 'ego' in lane -2 of road 1, its lane at the phase start (keep_lane(…) at the phase end at ",
+            "runtime_lateral_keep_lane_fails.osc:28:17), found it in lane -1 of road 1 at t = 5.350 s",
+        ),
+        "do.shift.0/ego/1:lane.end",
+        5.35,
+    );
+}
+
 /// runtime_place_on_road.osc's comment, by hand: from 3.35 s ego follows the sinusoid of the
 /// distance along its lane into lane -2, arriving 40 m on at 5.3594 s.
 #[test]

@@ -98,10 +98,15 @@ pub(crate) fn start(
             }));
         }
         let odometer = e.odometer;
+        let lane = e
+            .road_position
+            .as_ref()
+            .map(|p| (p.road_id.clone(), p.lane_id));
         world.marks.insert(
             mark.name.clone(),
             Mark {
                 odometer,
+                lane,
                 gap_error,
                 projection,
                 roads: check.roads.clone(),
@@ -226,6 +231,7 @@ fn require(
     }
     let places = check.lane.is_some()
         || check.lane_of.is_some()
+        || check.lane_at_mark.is_some()
         || check.s.is_some()
         || check.offset.is_some()
         || check.offset_in_width.is_some()
@@ -292,6 +298,23 @@ fn require(
                         ),
                     },
                     rp.lane_id
+                ),
+                format!("it in lane {} of road {}", at.lane_id, at.road_id),
+            ));
+        }
+    }
+    if let Some(mark) = &check.lane_at_mark {
+        let Some((road, lane)) = world.marks.get(mark).and_then(|m| m.lane.clone()) else {
+            return Err(fail(
+                format!("the mark '{mark}' noted on a lane"),
+                "none".into(),
+            ));
+        };
+        if at.road_id != road || at.lane_id != lane {
+            return Err(fail(
+                format!(
+                    "'{}' in lane {lane} of road {road}, its lane at the phase start",
+                    e.name
                 ),
                 format!("it in lane {} of road {}", at.lane_id, at.road_id),
             ));

@@ -20,6 +20,8 @@ use crate::position::{EntityView, RoadChain};
 pub struct Mark {
     /// The actor's odometer then (m).
     pub odometer: Real,
+    /// The actor's road and lane id then (`None`: off every lane).
+    pub lane: Option<(String, i32)>,
     /// With a gap: the actor's place error relative to the gap's entity then
     /// (the actor's s minus the entity's less the gap's offset, m).
     pub gap_error: Option<Real>,
