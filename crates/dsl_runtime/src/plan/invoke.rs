@@ -300,13 +300,25 @@ impl Planner<'_> {
                     (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
                         // Beside distance(d) without a duration after a run-time start: at
                         // its rate, checked to end within d (`runtime_end`).
+                        let timed = match t0 {
+                            Some(t) => end.is_some_and(|te| te > t),
+                            None => len.is_some_and(|l| l > 0.0),
+                        };
                         if let Some(dm) = mods
                             .iter()
                             .find(|q| q.kind == ModKind::Distance && q.at != At::Start)
-                            .filter(|_| t0.is_none() && len.filter(|l| *l > 0.0).is_none())
+                            .filter(|_| !timed)
                         {
                             let names = (name("check"), name("speed"));
-                            self.speed_over_distance((m, dm), mods, target, names, out)?;
+                            let ends =
+                                self.speed_over_distance((m, dm), mods, (target, t0), names, out)?;
+                            if let Some(te) = ends {
+                                // As distance(d)'s own end (below).
+                                derived = Some(match derived {
+                                    None => te,
+                                    Some(w) => w.or(te),
+                                });
+                            }
                             continue;
                         }
                         let (t, len) = need_len("a speed at the phase end")?;
@@ -685,12 +697,10 @@ impl Planner<'_> {
                             }
                             None => {
                                 // No duration: the phase ends when d is travelled at the speed
-                                // it starts with.
-                                if let Some(q) = ve_given {
-                                    return Err(q.site.err(
-                                        K::Unsatisfiable,
-                                        format!("expected a phase duration for a speed change beside distance(…) at {}, found none", m.site.at()),
-                                    ));
+                                // it starts with; beside a speed change, when the change and
+                                // the rest of d at its speed are (`speed_over_distance`).
+                                if ve_given.is_some() {
+                                    continue;
                                 }
                                 if v0 <= 0.0 && d > 0.0 {
                                     return Err(m.site.err(

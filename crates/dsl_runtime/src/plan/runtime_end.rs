@@ -54,20 +54,21 @@ impl Planner<'_> {
     }
 
     /// The speed change `m` (`change_speed(v)`, `speed(v, at: end)`) of `target` beside
-    /// `distance(d)` `dm` in a phase without a duration that starts on a run-time condition: the
-    /// engine's SpeedAction to v at the rate of `acceleration(a)` beside it, else the rate
-    /// `change_speed` takes by default, from the speed v₀ the actor has then, beside the check
-    /// `check_name` that the change covers \|v² − v₀²\|/(2a) ≤ d (named for the `acceleration(…)`
-    /// when one gives the rate, else for `m`), as the action `name`; the phase ends when
-    /// `distance_watch` measures d.
+    /// `distance(d)` `dm` in a phase without a duration that starts at `t0` (`None`: on a
+    /// run-time condition): the SpeedAction `name` to v at the rate of `acceleration(a)` beside
+    /// it, else the rate `change_speed` takes by default. After a run-time start, from the
+    /// speed v₀ the actor has then, beside the engine's check `check_name` that the change
+    /// covers \|v² − v₀²\|/(2a) ≤ d (named for the `acceleration(…)` when one gives the rate,
+    /// else for `m`), the phase ending when `distance_watch` measures d (`None`); at a known
+    /// start the plan's check and the phase's end (`speed_change_over`).
     pub(super) fn speed_over_distance(
         &mut self,
         (m, dm): (&Modifier, &Modifier),
         mods: &[Modifier],
-        target: &str,
+        (target, t0): (&str, Option<f64>),
         (check_name, name): (String, String),
         out: &mut Vec<Planned>,
-    ) -> Result<(), Error> {
+    ) -> Result<Option<When>, Error> {
         let Some(d) = dm
             .arg("distance")
             .map(Arg::number)
@@ -79,11 +80,11 @@ impl Planner<'_> {
                 "expected a distance of 0 m or more in distance(…), found none",
             ));
         };
-        let (v1, relative) = self.speed_value(m, None)?;
+        let (v1, relative) = self.speed_value(m, t0)?;
         if relative.is_some() {
             return Err(m.site.err(
                 K::Unsupported,
-                format!("expected a speed of its own beside distance(…) at {} in a phase without a duration that starts on a run-time condition, found one relative to another actor (give the phase a duration)", dm.site.at()),
+                format!("expected a speed of its own beside distance(…) at {} in a phase without a duration, found one relative to another actor (give the phase a duration)", dm.site.at()),
             ));
         }
         check_speed(m, v1)?;
@@ -107,12 +108,19 @@ impl Planner<'_> {
             None => (m, DEFAULT_ACCELERATION),
         };
         let to = SpeedTarget::Absolute(v1);
-        out.push(speed_at_rate_check(
-            target,
-            (&rated_by.name, &rated_by.site),
-            (to.clone(), a, RateWithin::Distance(d)),
-            check_name,
-        ));
+        // At a start the plan knows: the change and the rest of d at v, so the phase's end.
+        let end = match t0 {
+            Some(t) => Some(self.speed_change_over(rated_by, (target, t), (v1, a), d)?),
+            None => {
+                out.push(speed_at_rate_check(
+                    target,
+                    (&rated_by.name, &rated_by.site),
+                    (to.clone(), a, RateWithin::Distance(d)),
+                    check_name,
+                ));
+                None
+            }
+        };
         out.push(Planned::with_phase(
             target,
             name,
@@ -128,7 +136,39 @@ impl Planner<'_> {
             &m.site,
         ));
         self.last_v.insert(target.to_string(), v1);
-        Ok(())
+        Ok(end)
+    }
+
+    /// At a start `t` the plan knows, the speed change of `target` to `v1` at the rate `a`
+    /// (`q` gives it) within `d` m: the change covers \|v1² − v0²\|/(2a) from the speed v0 the
+    /// plan has then (more than d: an error at `q`), the rest of d at v1; the track gains the
+    /// ramp, and the phase ends when d is covered.
+    fn speed_change_over(
+        &mut self,
+        q: &Modifier,
+        (target, t): (&str, f64),
+        (v1, a): (f64, f64),
+        d: f64,
+    ) -> Result<When, Error> {
+        let v0 = self.track(target).at(t).1;
+        let covers = (v1 * v1 - v0 * v0).abs() / (2.0 * a);
+        if covers > d + 1e-9 {
+            return Err(q.site.err(
+                K::Unsatisfiable,
+                format!("expected the speed change from {v0:.2} m/s to {v1:.2} m/s at {a} m/s² within the phase's distance of {d} m, found it covers {covers:.2} m"),
+            ));
+        }
+        let rest = d - covers;
+        if rest > 1e-9 && v1 <= 0.0 {
+            return Err(q.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` to move to travel the last {rest:.2} m of {d} m, found it standing after its speed change"),
+            ));
+        }
+        let ramp = (v1 - v0).abs() / a;
+        self.track_mut(target).ramp(t, t + ramp, v1);
+        let after = if rest > 1e-9 { rest / v1 } else { 0.0 };
+        Ok(When::At(t + ramp + after))
     }
 
     /// `position(d / time: t / neither, ahead_of/behind: x, at: end)` of `target` in a phase

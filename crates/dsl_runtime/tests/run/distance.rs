@@ -28,3 +28,32 @@ fn distance_travelled_in_a_phase() {
         "7:9",
     );
 }
+
+/// distance_speed_change.osc's comment, by hand: 10 → 20 m/s at 2 m/s² covers 75 m in 5 s from
+/// 1 s, the other 25 m at 20 m/s take 1.25 s: the phase ends at 7.25 s.
+#[test]
+fn a_speed_change_beside_a_distance_without_a_duration_runs_at_its_rate() {
+    let r = run("distance_speed_change", 0, None);
+    let (s, e) = r.phase("do.go");
+    assert!(
+        (s - 1.0).abs() < T_TOL && (e - 7.25).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    for (t, want, v) in [
+        (3.5, 141.25 + ramp_lead(2.0, 2.5), 15.0),
+        (6.0, 185.0 + ramp_lead(2.0, 5.0), 20.0),
+        (7.25, 210.0 + ramp_lead(2.0, 5.0), 20.0),
+        (8.25, 230.0 + ramp_lead(2.0, 5.0), 20.0),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.s - want).abs() < S_TOL && (ego.speed - v).abs() < S_TOL,
+            "{t}: {ego:?}, want {want} m at {v} m/s"
+        );
+    }
+    refused(
+        "err_distance_speed_change",
+        "expected the speed change from 10.00 m/s to 30.00 m/s at 2 m/s² within the phase's distance of 100 m, found it covers 200.00 m",
+        "12:13",
+    );
+}
