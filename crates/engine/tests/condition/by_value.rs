@@ -171,6 +171,44 @@ fn storyboard_element_states_after_the_first_step() {
     );
 }
 
+/// oscsim's clock from an Act's start (the DSL's every/elapsed in an invoked behavior's
+/// handler): Act "A" starts in the first step (step 0); at 0.05 s steps, every(0.5 s, offset:
+/// 0.25 s) since it holds in steps 5 and 15 (0.25 s and 0.75 s after it), elapsed(0.3 s) since
+/// it from step 6 on; an unknown Act is an error naming it.
+#[test]
+fn the_clock_since_an_acts_start_counts_its_steps() {
+    let mut w = world();
+    let every = |act: &str| {
+        by_value(ByValueCondition::SimulationTimeEvery {
+            period: 0.5,
+            offset: 0.25,
+            step: 0.05,
+            since: Some(act.into()),
+        })
+    };
+    let elapsed = by_value(ByValueCondition::ElapsedSinceStart {
+        act: "A".into(),
+        value: 0.3,
+        step: 0.05,
+    });
+    // Before the first step the Act has not started: neither holds.
+    assert!(!eval(&w, &every("A")) && !eval(&w, &elapsed));
+    let mut ticks = Vec::new();
+    for k in 0..=20u32 {
+        w.step_storyboard(f64::from(k) * 0.05);
+        if eval(&w, &every("A")) {
+            ticks.push(k);
+        }
+        // From step 6 (0.30 s after the start) on.
+        assert_eq!(eval(&w, &elapsed), k >= 6, "step {k}");
+    }
+    assert_eq!(ticks, [5, 15]);
+    assert_eq!(
+        eval_error(&w, &every("B")),
+        "expected a storyboard element act named \"B\", found none at test.xosc:7:9"
+    );
+}
+
 #[test]
 fn time_of_day_and_traffic_signals() {
     let mut w = world();
