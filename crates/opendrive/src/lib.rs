@@ -76,9 +76,9 @@ pub use math::{
 };
 pub use model::{
     is_drivable, Connection, ContactPoint, Controller, Corner, ElementType, GeoReference, Header,
-    Junction, JunctionKind, Lane, LaneHeight, LaneLink, LaneSection, LaneType, Object, Offset,
-    Road, RoadLink, RoadLinks, RoadMark, RoadMarkColor, RoadMarkLaneChange, RoadMarkLine,
-    RoadMarkType, RoadType, Signal, Speed, TrafficRule,
+    Junction, JunctionKind, Lane, LaneHeight, LaneLink, LaneSection, LaneType, MarkStretch, Object,
+    Offset, Road, RoadLink, RoadLinks, RoadMark, RoadMarkColor, RoadMarkLaneChange, RoadMarkLine,
+    RoadMarkType, RoadType, SectionStretch, Signal, Speed, TrafficRule,
 };
 pub use network::RoadNetwork;
 pub use query::{

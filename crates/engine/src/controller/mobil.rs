@@ -29,6 +29,7 @@ use opendrive::Real;
 
 use super::car_following::{nearer, IdmController};
 use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
+use super::lane_beside::KeptBeside;
 use super::view::{Beside, ControllerView, Gap, Side};
 use crate::models::idm::{IdmParameters, Leader};
 use crate::models::mobil::{FollowerChange, LaneChangeCandidate, MobilParameters};
@@ -48,6 +49,9 @@ pub struct MobilController {
     pending: Option<i32>,
     /// Time of the last change started (s).
     last_change: Real,
+    /// The lanes beside as the road decides them, kept over the stretch they hold
+    /// (controller/lane_beside.rs).
+    kept: KeptBeside,
 }
 
 impl MobilController {
@@ -58,18 +62,22 @@ impl MobilController {
             mobil,
             pending: None,
             last_change: Real::NEG_INFINITY,
+            kept: KeptBeside::default(),
         }
     }
 
     /// The MOBIL verdict on changing into the lane `b` (module doc): its margin when the
     /// change is safe and worth it. The accelerations are those of the straightforward rule
-    /// ([`Self::judge_each`] in the tests), computed in an order that stops early: a lane that
-    /// is occupied or behind a mark not to be crossed costs no gap search, a change unsafe for
+    /// ([`Self::judge_each`] in the tests), computed in an order that stops early: a lane
+    /// behind a mark not to be crossed costs no occupancy search, an occupied one no gap
+    /// search, a change unsafe for
     /// the changer no search of the new follower, an unsafe one for the new follower no
     /// weighing of the old follower (each leaves the verdict "no change"); and the free-road
     /// term of a speed is evaluated once for all the leaders weighed at that speed.
     fn judge(&self, view: &ControllerView<'_>, own: &mut Own, b: &Beside) -> Option<Real> {
-        if b.occupied || !b.crossing_permitted {
+        // The mark first: a lane behind a mark not to be crossed costs no occupancy search
+        // (either leaves the verdict "no change").
+        if !b.crossing_permitted || view.occupied_beside(b) {
             return None;
         }
         let p = &self.idm.params;
@@ -145,7 +153,7 @@ impl MobilController {
         }
         let mut best: Option<(Real, i32)> = None;
         for side in [Side::Left, Side::Right] {
-            let Some(b) = view.beside(side) else {
+            let Some(b) = view.beside_kept(side, &mut self.kept.0) else {
                 continue;
             };
             if let Some(margin) = self.judge(view, own, &b) {

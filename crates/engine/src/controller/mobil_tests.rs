@@ -7,9 +7,10 @@ use opendrive::{Direction, Real, RoadNetwork};
 
 use super::*;
 use crate::controller::car_following::with_red_light;
+use crate::controller::lane_beside::{KeptRoad, RoadBeside};
 use crate::controller::view::NeighbourLane;
 use crate::domain::{BoundingBox, Vector3};
-use crate::store::driver_inputs::DriverInput;
+use crate::store::driver_inputs::{DriverInput, TrackInput};
 use crate::store::lane_index::LaneIndex;
 use crate::store::World;
 use crate::world::entity::{Entity, EntityId, EntityKind};
@@ -329,4 +330,130 @@ fn the_driver_inputs_are_the_entitys_bit_for_bit() {
         assert_eq!(*row, DriverInput::of(e, &w.network), "{}", e.name);
     });
     assert_eq!(tracks, 2_400, "every car of the 40 highways has a track");
+}
+
+/// The road's part of a lane beside as `beside` worked it out before it was kept
+/// (controller/lane_beside.rs, issue 31), written out: the section at s, the lane beside's
+/// type, its handle asked of the network, both driving directions, the road mark at s.
+fn road_beside_directly(net: &RoadNetwork, track: &TrackInput, side: Side) -> Option<RoadBeside> {
+    let n = match side {
+        Side::Left => 1,
+        Side::Right => -1,
+    };
+    let lane = crate::world::lanes::lane_shift(track.lane_id, n, track.direction);
+    let road = net.road_at(track.road);
+    let section = road.lane_section_at(track.s);
+    let drivable = section
+        .lane(lane)
+        .is_some_and(|l| l.lane_type.is_drivable());
+    let own = track.own?;
+    if !drivable {
+        return None;
+    }
+    let handle = net.lane_handle_on(track.road, lane, track.s)?;
+    if net.driving_direction(handle) != net.driving_direction(own) {
+        return None;
+    }
+    let keep = match road.rule {
+        opendrive::TrafficRule::LeftHand => Side::Left,
+        _ => Side::Right,
+    };
+    Some(RoadBeside {
+        lane,
+        handle,
+        toward_keep_side: side == keep,
+        crossing_permitted: section.permits_lane_change(track.lane_id, lane, track.s - section.s),
+    })
+}
+
+/// The lanes beside kept over the stretch they hold (controller/lane_beside.rs) are, on both
+/// sides, the answer asked of the road directly ([`road_beside_directly`]), bit for bit: on
+/// this module's road A (a solid mark from s 600 m between lanes −3 and −4) and on two corpus
+/// roads (esmini's two_plus_one: five lane sections, lanes appearing and ending; and
+/// straight_500m_roadmarks: the mark type changing every 50–100 m), for a track in each lane
+/// and direction of each road moving along it in 0.37 m steps, each section and mark start
+/// and the doubles about it, and NaN. Answers are kept many times, asked again at every
+/// stretch's end; crossings refused and lanes without a neighbour occur.
+#[test]
+fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
+    let corpus = |name: &str| {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../../shared/corpus/esmini/xodr")
+            .join(name);
+        RoadNetwork::from_file(&path).unwrap_or_else(|e| panic!("{e}"))
+    };
+    let nets = [
+        network(),
+        corpus("two_plus_one.xodr"),
+        corpus("straight_500m_roadmarks.xodr"),
+    ];
+    let (mut kept_used, mut asked, mut refused, mut none) = (0, 0, 0, 0);
+    for net in &nets {
+        for (r, road) in net.roads().iter().enumerate() {
+            let mut at: Vec<Real> = (0..)
+                .map(|i| i as Real * 0.37)
+                .take_while(|&s| s <= road.length)
+                .collect();
+            for ls in &road.lane_sections {
+                let marks = ls.lanes().flat_map(|l| l.road_marks.iter());
+                for b in std::iter::once(ls.s).chain(marks.map(|m| ls.s + m.s_offset)) {
+                    // Each start, the doubles a rounding or two from it, and the same about
+                    // where s + LENGTH_EPSILON reaches it (the section search's test).
+                    for c in [b, b - opendrive::LENGTH_EPSILON] {
+                        for f in [-2.0, -1.0, 0.0, 1.0, 2.0] {
+                            at.push(c * (1.0 + f * Real::EPSILON));
+                        }
+                    }
+                }
+            }
+            at.sort_by(Real::total_cmp);
+            at.push(Real::NAN);
+            let ids: std::collections::BTreeSet<i32> = road
+                .lane_sections
+                .iter()
+                .flat_map(|ls| ls.lanes().map(|l| l.id))
+                .filter(|&id| id != 0)
+                .collect();
+            let road_handle = opendrive::RoadHandle(r as u32);
+            for &lane_id in &ids {
+                for direction in [Direction::Forward, Direction::Backward] {
+                    let mut kept = None;
+                    for &s in &at {
+                        let track = TrackInput {
+                            road: road_handle,
+                            lane_id,
+                            s,
+                            direction,
+                            blend_from: None,
+                            own: net.lane_handle_on(road_handle, lane_id, s),
+                        };
+                        if kept.is_some_and(|k: KeptRoad| k.holds(&track)) {
+                            kept_used += 1;
+                        } else {
+                            asked += 1;
+                        }
+                        let answer = KeptRoad::for_track(&mut kept, net, &track);
+                        for side in [Side::Left, Side::Right] {
+                            let direct = road_beside_directly(net, &track, side);
+                            assert_eq!(
+                                answer.side(side),
+                                direct,
+                                "road {} lane {lane_id} {direction:?} s {s} {side:?}",
+                                road.id
+                            );
+                            match direct {
+                                None => none += 1,
+                                Some(b) if !b.crossing_permitted => refused += 1,
+                                Some(_) => {}
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        kept_used > 50_000 && asked > 100 && refused > 4_000 && none > 10_000,
+        "{kept_used} kept, {asked} asked, {refused} refused, {none} without a lane"
+    );
 }

@@ -46,6 +46,7 @@
 //! | `default` | the default controller's step: along the lane, through junctions |
 //! | `command` | the [`Controller`] trait, [`Command`], [`Strategy`] |
 //! | `view` | [`ControllerView`]: the entity, its neighbours and gaps along the lanes |
+//! | `lane_beside` | the lanes beside as the road decides them (drivable, direction, road mark), kept over the stretch they hold |
 //! | `car_following` | `idm` and `acc` |
 //! | `mobil` | `mobil` (IDM + MOBIL lane changes) |
 //! | `vehicle_dynamics` | `vehicle_dynamics`: driver + single-track vehicle, overrides |
@@ -66,6 +67,7 @@ mod default;
 mod drivers;
 mod external;
 mod external_input;
+mod lane_beside;
 mod load;
 mod mobil;
 pub mod properties;

@@ -14,13 +14,13 @@
 
 use std::sync::atomic::AtomicU32;
 
-use opendrive::{Direction, LaneHandle, Real, RoadNetwork, TrafficRule};
+use opendrive::{Direction, LaneHandle, Real, RoadNetwork};
 
 use super::external_input::ExternalInput;
+use super::lane_beside::KeptRoad;
 use crate::signals::Signals;
 use crate::store::driver_inputs::DriverInput;
 use crate::store::lane_index::{LaneIndex, Neighbour};
-use crate::world::lanes::lane_shift;
 use crate::world::{Entity, EntityId};
 
 /// Base distance (m) a gap search looks ahead or behind; it adds [`HORIZON_TIME`] seconds of
@@ -63,17 +63,16 @@ pub struct NeighbourLane {
 }
 
 /// A lane beside the entity's as [`ControllerView::beside`] finds it: a
-/// [`NeighbourLane`] whose leader and follower are not searched yet.
+/// [`NeighbourLane`] whose leader, follower and occupancy are not searched yet.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Beside {
     /// As [`NeighbourLane::lane`].
     pub lane: i32,
-    /// Its handle at the entity's s and the entity's direction of travel (the gap searches
-    /// of [`leader_beside`](ControllerView::leader_beside) and
-    /// [`follower_beside`](ControllerView::follower_beside) start there).
+    /// Its handle at the entity's s and the entity's direction of travel (the searches of
+    /// [`leader_beside`](ControllerView::leader_beside),
+    /// [`follower_beside`](ControllerView::follower_beside) and
+    /// [`occupied_beside`](ControllerView::occupied_beside) start there).
     pub at: (LaneHandle, Direction),
-    /// As [`NeighbourLane::occupied`].
-    pub occupied: bool,
     /// As [`NeighbourLane::toward_keep_side`].
     pub toward_keep_side: bool,
     /// As [`NeighbourLane::crossing_permitted`].
@@ -304,65 +303,45 @@ impl<'a> ControllerView<'a> {
             lane: b.lane,
             leader: self.leader_beside(&b),
             follower: self.follower_beside(&b),
-            occupied: b.occupied,
+            occupied: self.occupied_beside(&b),
             toward_keep_side: b.toward_keep_side,
             crossing_permitted: b.crossing_permitted,
         })
     }
 
-    /// [`neighbour_lane`](Self::neighbour_lane) without its two gap searches, which
-    /// [`leader_beside`](Self::leader_beside) and [`follower_beside`](Self::follower_beside)
-    /// make when asked: a lane change that is ruled out without them (occupied, a mark not to
-    /// be crossed) costs no search.
+    /// [`neighbour_lane`](Self::neighbour_lane) without its three searches, which
+    /// [`leader_beside`](Self::leader_beside), [`follower_beside`](Self::follower_beside) and
+    /// [`occupied_beside`](Self::occupied_beside) make when asked: a lane change that is
+    /// ruled out without them (a mark not to be crossed, an occupied lane) costs no search.
+    /// The road's part is asked of the road each time (controller/lane_beside.rs).
     pub(crate) fn beside(&self, side: Side) -> Option<Beside> {
+        self.beside_kept(side, &mut None)
+    }
+
+    /// [`beside`](Self::beside) with the road's part taken from `kept` while it holds for the
+    /// entity's track, else asked and kept there (controller/lane_beside.rs: the same answer
+    /// bit for bit).
+    #[inline]
+    pub(crate) fn beside_kept(&self, side: Side, kept: &mut Option<KeptRoad>) -> Option<Beside> {
         let track = self.input.track.as_ref()?;
-        let me = self.index.footprint(self.input.id)?;
-        let n = match side {
-            Side::Left => 1,
-            Side::Right => -1,
-        };
-        let lane = lane_shift(track.lane_id, n, track.direction);
-        let road = self.network.road_at(track.road);
-        let k = road.lane_section_index(track.s);
-        let section = &road.lane_sections[k];
-        let drivable = section
-            .lane(lane)
-            .is_some_and(|l| l.lane_type.is_drivable());
-        let own = track.own?;
-        if !drivable {
-            return None;
-        }
-        // The lane's handle at the entity's s, as `lane_handle` asks the network for it
-        // (`RoadNetwork::lane_handle_on`): the section holding a lane at s is the section at s
-        // when that section has the lane (`Road::lane_section_index_holding`), as a drivable
-        // lane of it has; no second search of the road's sections (issue 31).
-        let h = LaneHandle {
-            road: track.road.0,
-            section: k as u32,
-            lane,
-        };
-        let at = (h, track.direction);
-        if self.network.driving_direction(h) != self.network.driving_direction(own) {
-            return None;
-        }
-        let keep = match road.rule {
-            TrafficRule::LeftHand => Side::Left,
-            _ => Side::Right,
-        };
+        self.index.footprint(self.input.id)?;
+        let road = KeptRoad::for_track(kept, self.network, track).side(side)?;
         Some(Beside {
-            lane,
-            at,
-            occupied: self
-                .index
-                .overlapping(h, me.s_range, self.input.id, self.hint(lane, 2))
+            lane: road.lane,
+            at: (road.handle, track.direction),
+            toward_keep_side: road.toward_keep_side,
+            crossing_permitted: road.crossing_permitted,
+        })
+    }
+
+    /// Whether an entity's box overlaps the entity's own length in the lane beside (a change
+    /// now would collide): [`NeighbourLane::occupied`].
+    pub(crate) fn occupied_beside(&self, b: &Beside) -> bool {
+        self.index.footprint(self.input.id).is_some_and(|me| {
+            self.index
+                .overlapping(b.at.0, me.s_range, self.input.id, self.hint(b.lane, 2))
                 .next()
-                .is_some(),
-            toward_keep_side: side == keep,
-            crossing_permitted: section.permits_lane_change(
-                track.lane_id,
-                lane,
-                track.s - section.s,
-            ),
+                .is_some()
         })
     }
 

@@ -228,6 +228,19 @@ impl LaneSection {
     /// the record of the one nearer the centre, or the centre lane's when they lie on either
     /// side of it. No mark there (or no such lane): the change is permitted.
     pub fn permits_lane_change(&self, from: i32, to: i32, ds: Real) -> bool {
+        self.lane_change_stretch(from, to, ds).permitted
+    }
+
+    /// [`permits_lane_change`](Self::permits_lane_change) with the stretch of ds over which
+    /// the same mark record is in effect, so the same answer holds ([`MarkStretch::holds`]).
+    /// A caller asking each step as a vehicle moves along the section (the `mobil` driver
+    /// model) keeps the answer while its stretch holds (issue 31).
+    ///
+    /// The record in effect at ds is the last of the leading records whose `sOffset` is at
+    /// or before ds (the records are sorted by `sOffset`); the same records lead for every
+    /// ds' from the largest `sOffset` among them (none: −∞) to before the next record's
+    /// (none: +∞).
+    pub fn lane_change_stretch(&self, from: i32, to: i32, ds: Real) -> MarkStretch {
         let border_of = if from.signum() * to.signum() < 0 {
             0
         } else if from.abs() < to.abs() {
@@ -235,13 +248,21 @@ impl LaneSection {
         } else {
             to
         };
-        let mark = self.lane(border_of).and_then(|lane| {
-            lane.road_marks
-                .iter()
-                .take_while(|m| m.s_offset <= ds)
+        let marks = self
+            .lane(border_of)
+            .map_or(&[][..], |lane| &lane.road_marks[..]);
+        let leading = marks.iter().take_while(|m| m.s_offset <= ds).count();
+        let before = &marks[..leading];
+        MarkStretch {
+            permitted: before
                 .last()
-        });
-        mark.map_or(true, |m| m.permits_lane_change(border_of, to > from))
+                .map_or(true, |m| m.permits_lane_change(border_of, to > from)),
+            from: before
+                .iter()
+                .map(|m| m.s_offset)
+                .fold(Real::NEG_INFINITY, Real::max),
+            to: marks.get(leading).map_or(Real::INFINITY, |m| m.s_offset),
+        }
     }
 
     /// All lanes, left outermost to right outermost (the centre lane included).
@@ -251,5 +272,25 @@ impl LaneSection {
             .rev()
             .chain(std::iter::once(&self.center))
             .chain(self.right.iter())
+    }
+}
+
+/// The answer of [`LaneSection::lane_change_stretch`] and the stretch [from, to) of ds (m
+/// from the section's start) over which it holds.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MarkStretch {
+    /// Whether the change is permitted ([`LaneSection::permits_lane_change`]).
+    pub permitted: bool,
+    /// Where the stretch starts (m from the section's start; −∞ before the first record).
+    pub from: Real,
+    /// Where the next record starts (+∞ after the last).
+    pub to: Real,
+}
+
+impl MarkStretch {
+    /// Whether the answer holds at `ds`: `from` ≤ ds < `to` (never at a NaN).
+    #[inline]
+    pub fn holds(&self, ds: Real) -> bool {
+        self.from <= ds && ds < self.to
     }
 }

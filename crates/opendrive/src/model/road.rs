@@ -107,6 +107,29 @@ impl Road {
         i.saturating_sub(1)
     }
 
+    /// The index of the lane section valid at `s` ([`lane_section_index`](Self::lane_section_index))
+    /// and the stretch of s over which it is the same ([`SectionStretch::holds`]): from the
+    /// section's start (the first section: from −∞) to the next section's (the last: +∞),
+    /// each compared as `lane_section_index` compares it, at s + [`LENGTH_EPSILON`]. A caller
+    /// asking each step as a vehicle moves along the road keeps the index while the stretch
+    /// holds (issue 31).
+    ///
+    /// [`LENGTH_EPSILON`]: crate::LENGTH_EPSILON
+    pub fn lane_section_stretch(&self, s: Real) -> SectionStretch {
+        let index = self.lane_section_index(s);
+        SectionStretch {
+            index,
+            from: match index {
+                0 => Real::NEG_INFINITY,
+                i => self.lane_sections[i].s,
+            },
+            to: self
+                .lane_sections
+                .get(index + 1)
+                .map_or(Real::INFINITY, |ls| ls.s),
+        }
+    }
+
     /// The lane section valid at `s`.
     pub fn lane_section_at(&self, s: Real) -> &LaneSection {
         // Invariant: the parser rejects roads without a lane section.
@@ -124,5 +147,28 @@ impl Road {
             .types
             .partition_point(|t| t.s <= s + crate::math::LENGTH_EPSILON);
         i.checked_sub(1).map(|i| &self.types[i])
+    }
+}
+
+/// A lane section's index and the stretch of s where it is the section valid
+/// ([`Road::lane_section_stretch`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SectionStretch {
+    /// The section's index in [`Road::lane_sections`].
+    pub index: usize,
+    /// The section's start s (−∞ for the first section).
+    pub from: Real,
+    /// The next section's start s (+∞ for the last).
+    pub to: Real,
+}
+
+impl SectionStretch {
+    /// Whether [`Road::lane_section_index`]`(s)` is [`index`](Self::index): the sections at or
+    /// before s + `LENGTH_EPSILON` are those up to this one (the sections are sorted by s, as
+    /// the parser makes them); never at a NaN.
+    #[inline]
+    pub fn holds(&self, s: Real) -> bool {
+        let u = s + crate::math::LENGTH_EPSILON;
+        self.from <= u && u < self.to
     }
 }

@@ -5,6 +5,7 @@ mod common;
 mod errors;
 mod fuzz_found;
 mod graph_route;
+mod mark_stretches;
 mod positions;
 mod properties;
 mod reference_lanes;
