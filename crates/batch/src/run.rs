@@ -321,6 +321,8 @@ fn run_scenario(
         traffic_model: options.traffic_model,
         vehicle_model: options.vehicle_model,
         stop_at_red_lights: options.stop_at_red_lights,
+        // A batch runs its variants on threads of its own (Options::jobs).
+        ..EngineConfig::default()
     };
     // A batch of seeds runs on the DSL scenario's road network, read once; a distribution's
     // variant on the network its own values name, read once for every variant naming it.

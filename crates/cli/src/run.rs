@@ -33,6 +33,10 @@ pub struct RunArgs {
     scenario_name: Option<String>,
     #[command(flatten)]
     step: crate::step_args::StepArgs,
+    /// Threads the driver models' (`idm`, `mobil`) commands are worked out on in each step
+    /// when 256 or more vehicles have one; any count gives the same outputs, bit for bit.
+    #[arg(long, value_name = "N", default_value = "1")]
+    jobs: std::num::NonZeroUsize,
     /// Override a global parameter, NAME=VALUE (repeatable).
     #[arg(long = "param", value_name = "NAME=VALUE", value_parser = name_value)]
     params: Vec<(String, String)>,
@@ -140,7 +144,10 @@ impl EventSink for Events {
 
 /// Runs `oscsim run`.
 pub fn run(args: RunArgs) -> anyhow::Result<ExitCode> {
-    let config = args.step.config();
+    let config = engine::EngineConfig {
+        controller_threads: args.jobs.get(),
+        ..args.step.config()
+    };
     let wall = Instant::now();
     let options = crate::load_args::options(
         args.road.as_deref(),

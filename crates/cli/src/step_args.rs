@@ -66,6 +66,7 @@ impl StepArgs {
             traffic_model: self.traffic_model.map(TrafficModelArg::model),
             vehicle_model: self.vehicle_model.map(TrafficModelArg::model),
             stop_at_red_lights: self.stop_at_red_lights,
+            ..EngineConfig::default()
         }
     }
 }

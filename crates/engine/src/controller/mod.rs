@@ -58,6 +58,7 @@
 //! | `properties` | a `Controller`'s `model` property and settings → the model to run, or the default controller |
 //! | `load` | every controller read when the engine is built; ObjectControllers assigned |
 //! | `strategy` | motion actions handed to the controller holding their domain |
+//! | `parallel` | the driver models' commands of a step on several threads (the same bits) |
 //! | `stage` | the controllers stage: commands, then moves |
 
 mod assign;
@@ -70,6 +71,7 @@ mod external_input;
 mod lane_beside;
 mod load;
 mod mobil;
+mod parallel;
 pub mod properties;
 pub(crate) mod stage;
 mod strategy;

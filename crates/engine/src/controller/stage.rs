@@ -20,8 +20,9 @@ use opendrive::{Direction, Real, RoadNetwork};
 use super::command::{Command, Lateral, Longitudinal, Merged};
 use super::default::{measure, move_entity};
 use super::drivers::{Instance, Model};
+use super::parallel::StepWorld;
 use super::properties::MotionDomains;
-use super::table::{ControllerTable, EntityControllers};
+use super::table::{ControllerTable, EntityControllers, StageStorage};
 use super::view::ControllerView;
 use crate::models::idm::ballistic_step;
 use crate::models::single_track::arc_step;
@@ -35,25 +36,41 @@ use crate::world::Entity;
 /// is finite after its move: the step's finite-state guard (engine runtime/finite.rs) is
 /// tested here, in the walk that moves the entities, while each entity is in the core's cache
 /// (a walk of its own over 4,000 entities was 8 % of an `idm` run, issue 31).
+/// `threads`: the run option [`EngineConfig::controller_threads`](crate::EngineConfig), the
+/// threads the driver models' commands are worked out on when many vehicles have one
+/// (controller/parallel.rs: the same bits for any count).
 pub(crate) fn step(
     world: &mut World,
     controllers: &mut ControllerTable,
     time: Real,
     dt: Real,
+    threads: usize,
 ) -> bool {
     // The stage's storage of the last step, taken out of the table while the table's
     // controllers are stepped, and put back at the end.
     let mut storage = std::mem::take(&mut controllers.stage);
-    let merged = &mut storage.merged;
+    let StageStorage {
+        index,
+        merged,
+        parallel,
+    } = &mut storage;
     merged.clear();
     if controllers.any_held() {
-        let index = &mut storage.index;
         index.rebuild(&world.network, &world.entities);
         let index: &LaneIndex = index;
         let (entities, network, signals) = (&world.entities, &world.network, &world.signals);
+        let at_start = StepWorld {
+            time,
+            entities,
+            network,
+            index,
+            signals,
+        };
         // The controllers holding a domain, entity by entity in index order, each entity's in
         // the order they were assigned; the `idm` and `mobil` models by value (drivers.rs).
         let (runs, drivers, per_entity) = controllers.walk();
+        // With threads asked and many driver models: their commands first, on the threads.
+        let threaded = parallel.work_out(threads, runs, drivers, at_start);
         let mut rest = runs;
         while let Some(first) = rest.first() {
             let i = first.entity;
@@ -74,10 +91,14 @@ pub(crate) fn step(
                     // command is an acceleration and a lane change, merged as `Command::Motion`
                     // of the two is below (drivers.rs).
                     Model::Driver(k) => {
-                        let view = ControllerView::new(
-                            time, e, input, entities, network, index, None, signals,
-                        );
-                        let (a, lane) = drivers[k].command(&view);
+                        let (a, lane) = if threaded {
+                            parallel.command(k)
+                        } else {
+                            let view = ControllerView::new(
+                                time, e, input, entities, network, index, None, signals,
+                            );
+                            drivers[k].command(&view)
+                        };
                         if held.longitudinal {
                             m.longitudinal = Some(Longitudinal::Acceleration(a));
                         }

@@ -26,6 +26,7 @@ use scenario::ControllerDomains;
 use super::command::{Controller, Merged};
 use super::drivers::{DriverModel, Drivers, Instance, Model, Run, Runs};
 use super::external_input::ExternalInput;
+use super::parallel::ParallelCommands;
 use super::properties::{ControllerKind, ModelSettings, MotionDomains};
 use crate::store::lane_index::LaneIndex;
 use crate::world::ActiveDomains;
@@ -137,7 +138,7 @@ pub(crate) struct ControllerTable {
 }
 
 /// What the controllers stage rebuilds each step, kept so that a step allocates nothing once
-/// it has grown: the lane index and the merged commands.
+/// it has grown: the lane index, the merged commands and the threads' storage.
 #[derive(Debug, Default)]
 pub(crate) struct StageStorage {
     /// The lane index of the step.
@@ -145,6 +146,8 @@ pub(crate) struct StageStorage {
     /// The merged commands of the step: (entity index, command) in increasing entity index,
     /// for the entities a controller gave one (not a slot per entity, written each step).
     pub merged: Vec<(usize, Merged)>,
+    /// The driver models' commands worked out on threads (parallel.rs).
+    pub parallel: ParallelCommands,
 }
 
 impl ControllerTable {

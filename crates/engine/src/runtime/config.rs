@@ -38,6 +38,11 @@ pub struct EngineConfig {
     /// (signals/red_light.rs, docs/signals.md). Default
     /// `false`: signals do not affect motion, so existing runs keep their results.
     pub stop_at_red_lights: bool,
+    /// Threads the controllers stage works the driver models' (`idm`, `mobil`) commands out
+    /// on when many vehicles have one (256 or more; controller/parallel.rs). Default 1: on
+    /// the calling thread. Any count gives the same outputs, bit for bit; more threads take
+    /// less wall time and somewhat more CPU time.
+    pub controller_threads: usize,
 }
 
 impl Default for EngineConfig {
@@ -50,6 +55,7 @@ impl Default for EngineConfig {
             traffic_model: None,
             vehicle_model: None,
             stop_at_red_lights: false,
+            controller_threads: 1,
         }
     }
 }
@@ -74,6 +80,9 @@ impl EngineConfig {
         }
         if !(self.max_time.is_finite() && self.max_time >= 0.0) {
             return bad("max_time", "a finite time >= 0 s", self.max_time);
+        }
+        if self.controller_threads == 0 {
+            return bad("controller_threads", "a thread count >= 1", 0.0);
         }
         Ok(())
     }

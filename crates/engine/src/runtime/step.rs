@@ -217,7 +217,9 @@ impl Engine {
     fn controllers(&mut self, time: f64, dt: f64) -> Moved {
         let clock = Instant::now();
         let world = self.world.get_mut();
-        let finite = crate::controller::stage::step(world, &mut self.controllers, time, dt);
+        let threads = self.config.controller_threads;
+        let finite =
+            crate::controller::stage::step(world, &mut self.controllers, time, dt, threads);
         super::trailer_stage::follow(world, dt);
         let traffic = self.traffic.is_running();
         crate::traffic::step(world, &mut self.traffic, &mut self.controllers, dt);

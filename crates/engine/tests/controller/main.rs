@@ -8,7 +8,11 @@
 #[path = "../../../../examples/aeb_cut_in.rs"]
 mod aeb;
 
+#[path = "../support/scale.rs"]
+mod scale;
+
 mod aeb_example;
 mod external_driver;
 mod idm_junction;
+mod threads;
 mod user_controllers;
