@@ -26,9 +26,17 @@ use opendrive::{
     Direction, LaneHandle, Real, RoadHandle, RoadNetwork, SectionStretch, TrafficRule,
 };
 
-use super::view::Side;
 use crate::store::driver_inputs::TrackInput;
 use crate::world::lanes::lane_shift;
+
+/// Which side of the direction of travel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Side {
+    /// Left of the direction of travel.
+    Left,
+    /// Right of it.
+    Right,
+}
 
 /// What the road says of the lane on one side (module doc).
 #[derive(Debug, Clone, Copy, PartialEq)]

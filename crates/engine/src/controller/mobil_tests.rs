@@ -8,12 +8,12 @@ use opendrive::{Direction, Real, RoadNetwork};
 use super::*;
 use crate::controller::car_following::with_red_light;
 use crate::controller::lane_beside::{KeptRoad, RoadBeside};
+use crate::controller::test_world::{crowded, network};
 use crate::controller::view::NeighbourLane;
-use crate::domain::{BoundingBox, Vector3};
 use crate::store::driver_inputs::{DriverInput, TrackInput};
 use crate::store::lane_index::LaneIndex;
 use crate::store::World;
-use crate::world::entity::{Entity, EntityId, EntityKind};
+use crate::world::entity::Entity;
 
 /// The verdict on `lane` with every acceleration computed (the rule of the module doc).
 fn judge_each(
@@ -111,59 +111,6 @@ fn step_each(c: &mut MobilController, view: &ControllerView<'_>) -> Command {
         longitudinal: Some(Longitudinal::Acceleration(c.idm.acceleration(view))),
         lateral,
     }
-}
-
-/// Road "A": 1 km along +x, right lanes −1 … −4 (3.5 m) towards +s, lane 1 towards −s; a
-/// solid mark between lanes −3 and −4 on s 600…1000 (no change across it there).
-fn network() -> RoadNetwork {
-    let lane = |id: i32, mark: &str| {
-        format!(
-            r#"<lane id="{id}" type="driving"><link/><width sOffset="0" a="3.5" b="0" c="0" d="0"/>{mark}</lane>"#
-        )
-    };
-    let broken = r#"<roadMark sOffset="0" type="broken"/>"#;
-    let solid_late =
-        r#"<roadMark sOffset="0" type="broken"/><roadMark sOffset="600" type="solid"/>"#;
-    let xodr = format!(
-        r#"<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="6"/>
-<road id="A" junction="-1" length="1000"><link/><planView><geometry s="0" x="0" y="0" hdg="0" length="1000"><line/></geometry></planView><lanes><laneSection s="0"><left>{l1}</left><center><lane id="0" type="none"/></center><right>{r1}{r2}{r3}{r4}</right></laneSection></lanes></road>
-</OpenDRIVE>"#,
-        l1 = lane(1, broken),
-        r1 = lane(-1, broken),
-        r2 = lane(-2, broken),
-        r3 = lane(-3, solid_late),
-        r4 = lane(-4, broken),
-    );
-    RoadNetwork::from_str(&xodr, std::path::Path::new("mobil_test.xodr")).expect("road")
-}
-
-/// A world of `n` 4.5 m × 2 m cars at pseudo-random s, lanes (some across a lane marking)
-/// and speeds (0–35 m/s), from `seed`.
-fn crowded(n: usize, seed: u64) -> World {
-    let mut state = seed;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 33) as f64 / (1u64 << 31) as f64
-    };
-    let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 4.5, 2.0, 1.5).expect("box");
-    let entities = (0..n as u32)
-        .map(|i| Entity::new(EntityId(i), &format!("c{i}"), EntityKind::Vehicle, b))
-        .collect();
-    let mut w = World::new(std::sync::Arc::new(network()), entities);
-    for i in 0..n {
-        let s = 20.0 + next() * 900.0;
-        let lane = 1.0 + (next() * 4.0).floor();
-        // One car in eight straddles the marking towards the next lane.
-        let t = -(lane - 0.5) * 3.5 - if next() < 0.125 { 1.75 } else { 0.0 };
-        let pose = w.network.road_pose("A", s, t).expect("on road");
-        let found = w.network.locate(pose.x, pose.y, Some(pose.h));
-        let id = EntityId(i as u32);
-        w.place_resolved(id, pose, found);
-        w.entity_mut(id).speed = (next() * 35.0).min(34.0);
-    }
-    w
 }
 
 /// Calls `f` with the seed, world, lane index, car and view of every car of 40 crowded
@@ -456,90 +403,4 @@ fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
         kept_used > 50_000 && asked > 100 && refused > 4_000 && none > 10_000,
         "{kept_used} kept, {asked} asked, {refused} refused, {none} without a lane"
     );
-}
-
-/// The commands worked out on threads (controller/parallel.rs) are, for every car of 6
-/// crowded highways of 300 cars (above the 256 models from which a step uses threads), with
-/// four MOBIL parameter sets and two desired speeds, the commands worked out in turn, bit for
-/// bit, and each model's state after them is the same (the pending lane taken, the last
-/// change's time); on 2 and 3 threads. Lane changes occur many times.
-#[test]
-fn the_commands_on_threads_are_the_commands_in_turn() {
-    use crate::controller::drivers::{DriverModel, Model, Run};
-    use crate::controller::parallel::{ParallelCommands, StepWorld, PARALLEL_MIN};
-    use crate::controller::properties::MotionDomains;
-    let mut changes = 0;
-    for seed in 1..=6u64 {
-        let w = crowded(300, seed);
-        assert!(w.entities().len() >= PARALLEL_MIN);
-        let index = LaneIndex::build(&w.network, w.entities());
-        let at_start = StepWorld {
-            time: 10.0,
-            entities: w.entities(),
-            network: &w.network,
-            index: &index,
-            signals: &w.signals,
-        };
-        // Car i has model i (parameters varied by car), and car 7's model has a pending lane.
-        let models: Vec<DriverModel> = (0..w.entities().len())
-            .map(|i| {
-                let idm = IdmParameters {
-                    desired_speed: [20.0, 36.0][i % 2],
-                    ..IdmParameters::default()
-                };
-                let mobil = MobilParameters {
-                    politeness: [0.5, 0.0, 0.5, 0.2][i / 2 % 4],
-                    change_threshold: [0.1, 0.0, 0.1, 0.1][i / 2 % 4],
-                    ..MobilParameters::default()
-                };
-                let mut c = MobilController::new(idm, true, mobil);
-                if i == 7 {
-                    c.pending = Some(-2);
-                }
-                DriverModel::Mobil(c)
-            })
-            .collect();
-        let runs: Vec<Run> = (0..models.len())
-            .map(|i| Run {
-                entity: i,
-                held: MotionDomains::BOTH,
-                model: Model::Driver(i),
-            })
-            .collect();
-        let mut in_turn = models.clone();
-        let expected: Vec<_> = in_turn
-            .iter_mut()
-            .enumerate()
-            .map(|(i, m)| at_start.view(i).map(|v| m.command(&v)))
-            .collect();
-        changes += expected
-            .iter()
-            .filter(|c| c.is_some_and(|(_, lane)| lane.is_some()))
-            .count();
-        for threads in [2, 3] {
-            let mut threaded = models.clone();
-            let mut parallel = ParallelCommands::default();
-            assert!(parallel.work_out(threads, &runs, &mut threaded, at_start));
-            for (k, e) in expected.iter().enumerate() {
-                let (a, lane) = e.expect("every car is placed");
-                let (ta, tlane) = parallel.command(k);
-                assert_eq!(
-                    (ta.to_bits(), tlane),
-                    (a.to_bits(), lane),
-                    "seed {seed} car {k}"
-                );
-            }
-            assert_eq!(
-                format!("{threaded:?}"),
-                format!("{in_turn:?}"),
-                "seed {seed}"
-            );
-        }
-        // One thread, or fewer models than the threshold: worked out in turn by the stage.
-        let mut parallel = ParallelCommands::default();
-        assert!(!parallel.work_out(1, &runs, &mut models.clone(), at_start));
-        let few = &mut models[..PARALLEL_MIN - 1].to_vec();
-        assert!(!parallel.work_out(2, &runs[..PARALLEL_MIN - 1], few, at_start));
-    }
-    assert!(changes > 100, "{changes} lane changes");
 }

@@ -76,6 +76,8 @@ pub mod properties;
 pub(crate) mod stage;
 mod strategy;
 mod table;
+#[cfg(test)]
+mod test_world;
 mod vehicle_dynamics;
 mod view;
 

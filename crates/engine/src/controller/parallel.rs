@@ -141,3 +141,99 @@ impl ParallelCommands {
         self.commands.get(k).copied().unwrap_or((0.0, None))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::controller::command::{Controller, Strategy};
+    use crate::controller::drivers::{DriverModel, Model, Run};
+    use crate::controller::mobil::MobilController;
+    use crate::controller::properties::MotionDomains;
+    use crate::controller::test_world::crowded;
+    use crate::models::idm::IdmParameters;
+    use crate::models::mobil::MobilParameters;
+
+    /// The commands worked out on threads (controller/parallel.rs) are, for every car of 6
+    /// crowded highways of 300 cars (above the 256 models from which a step uses threads), with
+    /// four MOBIL parameter sets and two desired speeds, the commands worked out in turn, bit for
+    /// bit, and each model's state after them is the same (the pending lane taken, the last
+    /// change's time); on 2 and 3 threads. Lane changes occur many times.
+    #[test]
+    fn the_commands_on_threads_are_the_commands_in_turn() {
+        let mut changes = 0;
+        for seed in 1..=6u64 {
+            let w = crowded(300, seed);
+            assert!(w.entities().len() >= PARALLEL_MIN);
+            let index = LaneIndex::build(&w.network, w.entities());
+            let at_start = StepWorld {
+                time: 10.0,
+                entities: w.entities(),
+                network: &w.network,
+                index: &index,
+                signals: &w.signals,
+            };
+            // Car i has model i (parameters varied by car), and car 7's model has a pending lane.
+            let models: Vec<DriverModel> = (0..w.entities().len())
+                .map(|i| {
+                    let idm = IdmParameters {
+                        desired_speed: [20.0, 36.0][i % 2],
+                        ..IdmParameters::default()
+                    };
+                    let mobil = MobilParameters {
+                        politeness: [0.5, 0.0, 0.5, 0.2][i / 2 % 4],
+                        change_threshold: [0.1, 0.0, 0.1, 0.1][i / 2 % 4],
+                        ..MobilParameters::default()
+                    };
+                    let mut c = MobilController::new(idm, true, mobil);
+                    if i == 7 {
+                        // A LaneChangeAction handed to the controller: its pending lane.
+                        c.strategy(Strategy::Lane(-2));
+                    }
+                    DriverModel::Mobil(c)
+                })
+                .collect();
+            let runs: Vec<Run> = (0..models.len())
+                .map(|i| Run {
+                    entity: i,
+                    held: MotionDomains::BOTH,
+                    model: Model::Driver(i),
+                })
+                .collect();
+            let mut in_turn = models.clone();
+            let expected: Vec<_> = in_turn
+                .iter_mut()
+                .enumerate()
+                .map(|(i, m)| at_start.view(i).map(|v| m.command(&v)))
+                .collect();
+            changes += expected
+                .iter()
+                .filter(|c| c.is_some_and(|(_, lane)| lane.is_some()))
+                .count();
+            for threads in [2, 3] {
+                let mut threaded = models.clone();
+                let mut parallel = ParallelCommands::default();
+                assert!(parallel.work_out(threads, &runs, &mut threaded, at_start));
+                for (k, e) in expected.iter().enumerate() {
+                    let (a, lane) = e.expect("every car is placed");
+                    let (ta, tlane) = parallel.command(k);
+                    assert_eq!(
+                        (ta.to_bits(), tlane),
+                        (a.to_bits(), lane),
+                        "seed {seed} car {k}"
+                    );
+                }
+                assert_eq!(
+                    format!("{threaded:?}"),
+                    format!("{in_turn:?}"),
+                    "seed {seed}"
+                );
+            }
+            // One thread, or fewer models than the threshold: worked out in turn by the stage.
+            let mut parallel = ParallelCommands::default();
+            assert!(!parallel.work_out(1, &runs, &mut models.clone(), at_start));
+            let few = &mut models[..PARALLEL_MIN - 1].to_vec();
+            assert!(!parallel.work_out(2, &runs[..PARALLEL_MIN - 1], few, at_start));
+        }
+        assert!(changes > 100, "{changes} lane changes");
+    }
+}

@@ -18,6 +18,7 @@ use opendrive::{Direction, LaneHandle, Real, RoadNetwork};
 
 use super::external_input::ExternalInput;
 use super::lane_beside::KeptRoad;
+pub use super::lane_beside::Side;
 use crate::signals::Signals;
 use crate::store::driver_inputs::DriverInput;
 use crate::store::lane_index::{LaneIndex, Neighbour};
@@ -77,15 +78,6 @@ pub(crate) struct Beside {
     pub toward_keep_side: bool,
     /// As [`NeighbourLane::crossing_permitted`].
     pub crossing_permitted: bool,
-}
-
-/// Which side of the direction of travel.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Side {
-    /// Left of the direction of travel.
-    Left,
-    /// Right of it.
-    Right,
 }
 
 /// The world of one step as the controller of one entity sees it (module doc).
