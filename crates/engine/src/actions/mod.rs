@@ -849,6 +849,10 @@ impl Host<'_> {
             slot.parts = vec![Part::Done(ActionStatus::Stopped)];
             self.events
                 .push(EventRecord::error(self.time, &slot.name, &e));
+            // Live until stage 2 has seen it: a private action may have claimed a domain of
+            // an actor before failing, and stage 2 orders the domains of live slots' actors
+            // (`order_domains`), should the host step on after the error.
+            self.table.mark_live(id);
             self.errors.push(e);
         }
     }
