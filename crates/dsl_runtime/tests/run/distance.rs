@@ -56,4 +56,15 @@ fn a_speed_change_beside_a_distance_without_a_duration_runs_at_its_rate() {
         "expected the speed change from 10.00 m/s to 30.00 m/s at 2 m/s² within the phase's distance of 100 m, found it covers 200.00 m",
         "12:13",
     );
+    // The message names distance(…)'s place by the file's whole path: its two sides.
+    refused(
+        "err_distance_speed_relative",
+        "expected a speed of its own beside distance(…) at ",
+        "18:13",
+    );
+    refused(
+        "err_distance_speed_relative",
+        "err_distance_speed_relative.osc:19:13 in a phase without a duration, found one relative to another actor (give the phase a duration)",
+        "18:13",
+    );
 }
