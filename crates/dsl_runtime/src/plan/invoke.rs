@@ -23,40 +23,37 @@ use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Action, Arg, At, Invoke, ModKind, Modifier, Phase, Route};
 
 impl Planner<'_> {
-    /// Plans one invocation: its actions, and the time its `position(…, at: end)` is met when
-    /// nothing else ends it. An actor driving against s is planned on the plan's roads driven
-    /// that way (`crate::road`; what runs so: `against`).
-    #[allow(clippy::too_many_arguments)]
-    pub(super) fn plan_invoke(
+    /// Runs `plan` with `self.road` the view the invocation's actor drives: the plan's roads
+    /// against s for an actor driving against s (`crate::road`; what runs so: `against`),
+    /// else the plan road as it is.
+    pub(super) fn in_actor_view<R>(
         &mut self,
-        p: &Phase,
         inv: &Invoke,
         mods: &[Modifier],
         t0: Option<f64>,
         end: Option<f64>,
-        len: Option<f64>,
-        out: &mut Vec<Planned>,
-        persist: &mut Vec<Planned>,
-        after: &mut Vec<Planned>,
-    ) -> Result<Option<When>, Error> {
+        plan: impl FnOnce(&mut Self) -> Result<R, Error>,
+    ) -> Result<R, Error> {
         let against = self
             .index
             .get(&inv.actor)
             .is_some_and(|&i| self.entities[i].against);
         super::against::check_alongs(&inv.actor, against, mods, &self.against_routes)?;
         let Some(view) = self.against_road.clone().filter(|_| against) else {
-            return self.plan_invoke_in_view(p, inv, mods, t0, end, len, out, persist, after);
+            return plan(self);
         };
         super::against::check_runs(inv, mods, Some(t0), Some(end))?;
         let forward = std::mem::replace(&mut self.road, view);
-        let planned = self.plan_invoke_in_view(p, inv, mods, t0, end, len, out, persist, after);
+        let planned = plan(self);
         self.road = forward;
         planned
     }
 
-    /// [`plan_invoke`](Self::plan_invoke) on the road view in `self.road`.
+    /// Plans one invocation on the road view in `self.road` (see
+    /// [`in_actor_view`](Self::in_actor_view)): its actions, and the time its
+    /// `position(…, at: end)` is met when nothing else ends it.
     #[allow(clippy::too_many_arguments)]
-    fn plan_invoke_in_view(
+    pub(super) fn plan_invoke(
         &mut self,
         p: &Phase,
         inv: &Invoke,

@@ -39,17 +39,20 @@ impl Planner<'_> {
                     let cap = own.as_ref().or(inherit.as_ref()).and_then(When::time);
                     let len = p.duration.or(len_hint);
                     let ms = &inv.modifiers;
-                    derived = self.plan_invoke(
-                        p,
-                        inv,
-                        ms,
-                        start.time(),
-                        cap,
-                        len,
-                        &mut actions,
-                        &mut persist,
-                        &mut after,
-                    )?;
+                    let t0 = start.time();
+                    derived = self.in_actor_view(inv, ms, t0, cap, |s| {
+                        s.plan_invoke(
+                            p,
+                            inv,
+                            ms,
+                            t0,
+                            cap,
+                            len,
+                            &mut actions,
+                            &mut persist,
+                            &mut after,
+                        )
+                    })?;
                 }
                 let end = match (own, derived, inherit) {
                     // An action that ends on its own ends its phase then, unless the phase's
