@@ -16,6 +16,26 @@ fn run(name: &str, road: &str) -> crate::support::Run {
     crate::support::run_on(name, road)
 }
 
+/// Runs `name` on junction_trippel_twoway0 to its error: the one error record's time and
+/// element, and the run's error.
+fn run_to_its_error(name: &str) -> (f64, String, String) {
+    let lowered = lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        "tests/roads/junction_trippel_twoway0.xodr",
+        0,
+        None,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = crate::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    assert_eq!(records.len(), 1, "{records:?}");
+    let (time, element, _) = records
+        .into_iter()
+        .next()
+        .expect("one record, asserted above");
+    (time, element, error)
+}
+
 #[test]
 fn a_drive_goes_on_from_a_road_onto_its_successor() {
     let r = run("map_successor", "manual_add_of_geometries0");
@@ -214,22 +234,33 @@ fn a_lane_relative_to_another_actor_after_an_until_holds_across_the_plans_roads(
     assert!(t.is_some_and(|t| (t - 5.85).abs() < 1e-9), "{t:?}");
 }
 
+/// runtime_lateral_of_several_roads.osc's comment, by hand: lateral(0m, side_of: lead) after an
+/// until holds with ego at t = −1.5 m of road 0 and lead at t = −1.5 m of road 1 (one measure:
+/// their reference lines join continuously at (100, 0)); lateral(3m, left_of: lead) a phase
+/// later fails on the measured 0 m, not on the two roads.
+#[test]
+fn a_lateral_position_beside_another_actor_after_an_until_compares_t_across_the_plans_roads() {
+    // ego on road 0 and lead on road 1 at 5.85 s: the places of
+    // a_lane_relative_to_another_actor_after_an_until_holds_across_the_plans_roads (the same
+    // phases up to there). do.beside's check passed at 5.85 s (no record); do.apart's failed
+    // at 6.85 s.
+    let (time, element, error) = run_to_its_error("runtime_lateral_of_several_roads");
+    assert_eq!(element, "do.apart/ego/1:check");
+    assert!((time - 6.85).abs() < 1e-9, "{time}");
+    let want = "expected 'ego' 3.000 m to the left of 'lead' across the road (within 0.01 m)";
+    assert!(
+        error.starts_with(want) && error.contains("found 0.000 m at t = 6.850 s"),
+        "{error}"
+    );
+}
+
 /// runtime_several_roads_off_route.osc's comment, by hand: the route on road 2 checked in the
 /// plan's s while ego is on road 0 at s 27 m.
 #[test]
 fn a_named_route_after_an_until_on_several_roads_is_checked_in_the_plans_s() {
-    let lowered = lower_at(
-        "tests/scenarios/runtime_several_roads_off_route.osc",
-        "tests/roads/junction_trippel_twoway0.xodr",
-        0,
-        None,
-    )
-    .unwrap_or_else(|e| panic!("{e}"));
-    let (error, records) = crate::support::run_to_error(&lowered.scenario);
-    let error = error.expect("the run fails");
-    assert_eq!(records.len(), 1, "{records:?}");
-    assert_eq!(records[0].1, "do.off_route/ego/1:check");
-    assert!((records[0].0 - 0.85).abs() < 1e-9, "{records:?}");
+    let (time, element, error) = run_to_its_error("runtime_several_roads_off_route");
+    assert_eq!(element, "do.off_route/ego/1:check");
+    assert!((time - 0.85).abs() < 1e-9, "{time}");
     let want = "expected 'ego' at s = 180.000 m (within 50.5 m) (along(…) at ";
     assert!(
         error.starts_with(want) && error.contains("runtime_several_roads_off_route.osc:21:13"),

@@ -362,22 +362,36 @@ fn require(
             ));
         }
     }
-    // Another entity on the actor's road: its road position and speed.
+    // Another entity on the actor's road (on a plan over several roads on any of them): its
+    // road position and speed.
     let beside = |other: &str| {
         world
             .id(other)
             .map(|o| world.entity(o))
             .and_then(|o| Some((o.road_position.as_ref()?, o.speed)))
-            .filter(|(p, _)| p.road_id == at.road_id)
+            .filter(|(p, _)| chain.pair(at, p).is_some())
             .ok_or_else(|| {
+                let of = match chain.is_chain() {
+                    true => plan_roads(),
+                    false => format!("road {}", at.road_id),
+                };
                 fail(
-                    format!("'{other}' on road {} beside '{}'", at.road_id, e.name),
+                    format!("'{other}' on {of} beside '{}'", e.name),
                     format!("'{other}' elsewhere"),
                 )
             })
     };
-    if let Some((other, dt, tol)) = &check.beside {
+    // x's t beside the actor's: each on its own road, one measure where the reference lines
+    // of the roads between them join continuously.
+    let beside_t = |other: &str| {
         let (there, _) = beside(other)?;
+        chain
+            .lateral_compares(&world.network, &at.road_id, &there.road_id)
+            .map_err(|want| fail(want, format!("'{other}' on road {}", there.road_id)))?;
+        Ok::<_, Error>(there)
+    };
+    if let Some((other, dt, tol)) = &check.beside {
+        let there = beside_t(other)?;
         let got = at.t - there.t;
         if (got - dt).abs() > *tol {
             return Err(fail(
@@ -390,7 +404,7 @@ fn require(
         }
     }
     if let Some((other, dt)) = &check.beside_in_lane {
-        let (there, _) = beside(other)?;
+        let there = beside_t(other)?;
         let t = there.t + dt;
         let road = world.network.road(&at.road_id);
         let lane = road

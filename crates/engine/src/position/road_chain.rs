@@ -9,7 +9,7 @@
 //! An empty chain is one road: the road the actor is on, in that road's own s (what every
 //! measure did before chains): two places compare only on one road there.
 
-use opendrive::{Real, RoadNetwork, RoadPosition};
+use opendrive::{angle_difference, Real, RoadNetwork, RoadPosition, GEOMETRY_GAP_TOLERANCE};
 
 use super::lane_length::{lane_arc_length, s_at_lane_distance};
 
@@ -49,6 +49,49 @@ impl<'a> RoadChain<'a> {
             return None;
         }
         Some((self.s_of(&a.road_id, a.s)?, self.s_of(&b.road_id, b.s)?))
+    }
+
+    /// Whether t on road `a` and t on road `b` compare as one lateral measure: on one and the
+    /// same road; on a chain (both of its roads) where every joint between them is continuous,
+    /// the reference line's end on one road its start on the next in place and heading
+    /// (within opendrive's `GEOMETRY_GAP_TOLERANCE`, m and rad: a point at t then moves by at
+    /// most that times 1 + |t| across the joint), so t is measured from one continuous line.
+    /// `Err` names the road that does not compare or the joint that is not continuous.
+    pub(crate) fn lateral_compares(
+        &self,
+        network: &RoadNetwork,
+        a: &str,
+        b: &str,
+    ) -> Result<(), String> {
+        if a == b {
+            return Ok(());
+        }
+        let index = |road: &str| self.roads.iter().position(|(id, _)| id == road);
+        let (Some(i), Some(j)) = (index(a), index(b)) else {
+            return Err(match self.is_chain() {
+                true => format!("roads {a} and {b} both {}", self.describe()),
+                false => format!("road {b} the same road as {a}"),
+            });
+        };
+        let (lo, hi) = (i.min(j), i.max(j));
+        for pair in self.roads[lo..=hi].windows(2) {
+            let (from, to) = (pair[0].0.as_str(), pair[1].0.as_str());
+            let end = network
+                .road(from)
+                .map(|r| r.length)
+                .and_then(|l| network.road_pose(from, l, 0.0).ok());
+            let start = network.road_pose(to, 0.0, 0.0).ok();
+            let joins = end.zip(start).is_some_and(|(e, s)| {
+                (e.x - s.x).hypot(e.y - s.y) <= GEOMETRY_GAP_TOLERANCE
+                    && angle_difference(e.h, s.h).abs() <= GEOMETRY_GAP_TOLERANCE
+            });
+            if !joins {
+                return Err(format!(
+                    "road {from}'s reference line going on into road {to}'s (t measured from one line)"
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// "one of roads 0, 1, 2", for messages.
@@ -183,6 +226,16 @@ mod tests {
             Some(true)
         );
         assert_eq!(chain.s_of("5", 1.0), None);
+        // t compares across continuous joints: road 0 ends at (100, 0) heading 0 where road 1
+        // starts; road 1's spiral ends at road 2's start (129.717, 3.130) heading 0.3 rad.
+        assert_eq!(chain.lateral_compares(&net, "0", "2"), Ok(()));
+        assert_eq!(chain.lateral_compares(&net, "1", "1"), Ok(()));
+        assert!(chain.lateral_compares(&net, "0", "5").is_err());
+        // Not where a chain skipped road 1: road 0's end is 29.88 m from road 2's start.
+        let skipped = vec![("0".to_string(), 0.0), ("2".to_string(), 100.0)];
+        assert!(RoadChain::new(&skipped)
+            .lateral_compares(&net, "0", "2")
+            .is_err());
         // One road: its own s, the road's end an error.
         let one = RoadChain::new(&[]);
         assert_eq!(one.s_of("7", 3.0), Some(3.0));
