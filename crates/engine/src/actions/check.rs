@@ -250,17 +250,13 @@ fn require(
     // Where along the plan's roads (a road's s plus its start), or the road's own s.
     let chain = RoadChain::new(&check.roads);
     let along = |p: &RoadPosition| chain.s_of(&p.road_id, p.s);
-    let plan_roads = || chain.describe();
     if let Some((road, lane)) = &check.lane {
         let on_road = match chain.is_chain() {
             false => at.road_id == *road,
             true => along(at).is_some(),
         };
         if !on_road || at.lane_id != *lane {
-            let of = match chain.is_chain() {
-                false => format!("road {road}"),
-                true => plan_roads(),
-            };
+            let of = chain.roads_or(road);
             return Err(fail(
                 format!("'{}' in lane {lane} of {of}", e.name),
                 format!("it in lane {} of road {}", at.lane_id, at.road_id),
@@ -280,10 +276,7 @@ fn require(
         // On one road both on it; on a plan over several roads on any of them (the lane ids
         // are the same on each).
         if chain.pair(at, rp).is_none() || at.lane_id != lane {
-            let of = match chain.is_chain() {
-                true => plan_roads(),
-                false => format!("road {}", rp.road_id),
-            };
+            let of = chain.roads_or(&rp.road_id);
             return Err(fail(
                 format!(
                     "'{}' in lane {lane} of {of}, {}'{other}''s lane {}",
@@ -323,7 +316,7 @@ fn require(
     if let Some((s, tol)) = check.s {
         let Some(got) = along(at) else {
             return Err(fail(
-                format!("'{}' on {}", e.name, plan_roads()),
+                format!("'{}' on {}", e.name, chain.describe()),
                 format!("it on road {}", at.road_id),
             ));
         };
@@ -371,10 +364,7 @@ fn require(
             .and_then(|o| Some((o.road_position.as_ref()?, o.speed)))
             .filter(|(p, _)| chain.pair(at, p).is_some())
             .ok_or_else(|| {
-                let of = match chain.is_chain() {
-                    true => plan_roads(),
-                    false => format!("road {}", at.road_id),
-                };
+                let of = chain.roads_or(&at.road_id);
                 fail(
                     format!("'{other}' on {of} beside '{}'", e.name),
                     format!("'{other}' elsewhere"),
@@ -435,14 +425,14 @@ fn require(
                 .filter(|(s, _)| s.is_some())
                 .ok_or_else(|| {
                     fail(
-                        format!("'{other}' on {}", plan_roads()),
+                        format!("'{other}' on {}", chain.describe()),
                         format!("'{other}' elsewhere"),
                     )
                 })?,
         };
         let (Some(there_s), Some(at_s)) = (there_s, along(at)) else {
             return Err(fail(
-                format!("'{}' on {}", e.name, plan_roads()),
+                format!("'{}' on {}", e.name, chain.describe()),
                 format!("it on road {}", at.road_id),
             ));
         };

@@ -121,10 +121,7 @@ pub(crate) fn start(
             let length = chain
                 .lane_length(&world.network, road, lane, (s0, s1))
                 .ok_or_else(|| {
-                    let of = match chain.is_chain() {
-                        true => chain.describe(),
-                        false => format!("road {road}"),
-                    };
+                    let of = chain.roads_or(road);
                     fail(
                         format!("lane {lane} of {of} up to s = {s1:.3} m"),
                         "none".into(),

@@ -100,6 +100,15 @@ impl<'a> RoadChain<'a> {
         format!("one of roads {}", ids.join(", "))
     }
 
+    /// Where a measure is taken, for an error text: "one of roads 0, 1, 2" on a chain, else
+    /// "road `road`" (the one road).
+    pub(crate) fn roads_or(&self, road: &str) -> String {
+        match self.is_chain() {
+            true => self.describe(),
+            false => format!("road {road}"),
+        }
+    }
+
     /// The roads with their start and end in the plan's s (`road`, its length from `network`),
     /// or on one road `road` itself from 0.
     fn spans(&self, network: &RoadNetwork, road: &'a str) -> Vec<(&'a str, Real, Real)> {
