@@ -103,9 +103,15 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
                         lane_id: lane.to_string(),
                         s,
                         offset: Some(side * e.track.offset(0.0)),
-                        // §8.9.9 yaw relative to the road (s-axis): relative to the lane.
+                        // §8.9.9 yaw relative to the road's s-axis; the engine's relative
+                        // heading counts from the lane's driving direction, which is the
+                        // s-axis turned by pi for a lane driven against s.
                         orientation: e.yaw.as_ref().map(|(h, _)| Orientation {
-                            h: *h,
+                            h: if e.against {
+                                opendrive::normalize_angle(*h - std::f64::consts::PI)
+                            } else {
+                                *h
+                            },
                             p: 0.0,
                             r: 0.0,
                             reference: Some(ReferenceContext::Relative),

@@ -10,17 +10,21 @@
 //! on the view `PlanRoad::against` gives, in the distance u along its direction of travel
 //! (`crate::road`), and the lowering maps its start back to (road, s). The planner's
 //! arithmetic is the same in either direction, so what runs is what only reads the actor's
-//! own track and its road view: `drive()`/`move()`, `change_speed`, `keep_speed`,
-//! `remain_stationary`, `change_lane`, `follow_lane` (and their `offset`), with `speed`,
-//! `change_speed`, `acceleration(a)`, `position(d)`, `lane(n)`, `change_lane`, `keep_lane`,
-//! `keep_speed`, `keep_position`, `distance`, `along`, `physical_movement`, `lateral(d)` in the
-//! lane (offsets to the left of the direction of travel in the plan, turned to the road's t by
-//! the lowering). The rest is an error at the action or modifier (not run yet), never planned
-//! in the wrong direction: `yaw`/`orientation`, `shape:`, `lateral` or `acceleration` relative
+//! own track and its road view: `drive()`/`move()`, `change_speed`, `keep_speed`, the
+//! direction-free `assign_speed`, `assign_acceleration`, `change_acceleration`,
+//! `keep_acceleration`, `remain_stationary`, `change_lane`, `follow_lane` (and their
+//! `offset`), with `speed`, `change_speed`, `acceleration(a)`, `position(d)`, `lane(n)`,
+//! `change_lane`, `keep_lane`, `keep_speed`, `keep_position`, `distance`, `along`,
+//! `physical_movement`, `lateral(d)` in the lane (offsets to the left of the direction of
+//! travel in the plan, turned to the road's t by the lowering), `yaw`/`orientation` relative to
+//! the road's s-axis (§8.9.9: π along a lane driven in −s, `checks::check_orientation`) and
+//! `shape:` (its action's dynamics, `shapes`). The rest is an error at the action or modifier
+//! (not run yet), never planned in the wrong direction: `lateral` or `acceleration` relative
 //! to another actor, the path, position and gap actions, `avoid_collisions(true)`, a group,
-//! `position(…, at: end)` without a phase duration, and in a phase that starts on a run-time
-//! condition `position(…)`, `lateral(…)` at the start, `lane(…)` relative to another actor and
-//! `along` a named route (the engine's checks at such a start measure places in +s).
+//! `position(…, at: end)` without a phase duration or a shape, and in a phase that starts on
+//! a run-time condition `position(…)`, `lateral(…)` at the start, `lane(…)` relative to
+//! another actor and `along` a named route (the engine's checks at such a start measure
+//! places in +s).
 //!
 //! An actor along a free route of the other direction than its own is an error at the
 //! `along` (`check_alongs`).
@@ -136,14 +140,20 @@ pub(crate) fn check_runs(
     let not_run = |site: &crate::error::Site, what: &str| {
         site.err(
             K::Unsupported,
-            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, remain_stationary, change_lane, follow_lane with speed, change_speed, acceleration(a), position(d), lane(n), change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement run)", inv.actor),
+            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane with speed, change_speed, acceleration(a), position(d), lane(n), change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation and shape: run)", inv.actor),
         )
     };
+    // A speed and an acceleration have no direction: the speed and acceleration actions
+    // read and write only the actor's speed along its track (`speed_actions`).
     let runs = matches!(
         inv.kind,
         Action::Move
             | Action::ChangeSpeed
             | Action::KeepSpeed
+            | Action::AssignSpeed
+            | Action::AssignAcceleration
+            | Action::ChangeAcceleration
+            | Action::KeepAcceleration
             | Action::RemainStationary
             | Action::ChangeLane
             | Action::FollowLane
@@ -163,23 +173,28 @@ pub(crate) fn check_runs(
             | ModKind::KeepLane
             | ModKind::KeepSpeed
             | ModKind::KeepPosition
-            | ModKind::PhysicalMovement => true,
+            | ModKind::PhysicalMovement
+            // Relative to the road's s-axis (§8.9.9): π along a lane driven against s
+            // (`checks::check_orientation`).
+            | ModKind::Orientation => true,
             // A rate alone, an offset in the lane; relative to another actor the engine
             // follows it step by step, or measures it in the road's t.
             ModKind::Acceleration | ModKind::Lateral => crate::resolve::REFERENCES
                 .iter()
                 .all(|k| m.arg(k).is_none()),
-            ModKind::Orientation | ModKind::AvoidCollisions => false,
+            ModKind::AvoidCollisions => false,
         };
-        if !runs || m.shape.is_some() {
+        // A shape is its action's dynamics, planned on the view as that action (`shapes`).
+        if !runs {
             return Err(not_run(&m.site, &format!("{}(…)", m.name)));
         }
     }
-    // Without a phase end the engine measures the gap reached in +s (plan::runtime_end).
+    // Without a phase end the engine measures the gap reached in +s (plan::runtime_end); a
+    // shaped position ends where its planned speed profile does (`position_shape`).
     if let (Some(None), Some(m)) = (
         end,
         mods.iter()
-            .find(|m| m.kind == ModKind::Position && m.at == At::End),
+            .find(|m| m.kind == ModKind::Position && m.at == At::End && m.shape.is_none()),
     ) {
         return Err(m.site.err(
             K::Unsupported,

@@ -104,13 +104,17 @@ pub(crate) fn check_keeps(
 /// `lateral(…, at: end)`. A yaw other than 0 is the actor's from the run's start when it is
 /// asked in the actor's `first` phase (the Init places it so; `plan` checks that the actor
 /// stands throughout the run, the one case in which it keeps that yaw physically); `planned`
-/// is the yaw the actor has (0, or the first phase's), which a later phase must ask for.
-/// Anything else is an error: another yaw, a pitch or roll other than 0, an angle relative to
-/// another object, to north, or absolute, which the planner does not steer. Returns the yaw
-/// and its place when the first phase asks for one other than 0.
+/// is the yaw the actor has (`along`, or the first phase's), which a later phase must ask for.
+/// `along` is the yaw relative to the road's s-axis of an actor that drives along its lane: 0
+/// in +s, π for an actor driving against s (`crate::road`: it faces −s), whose yaw of 0 would
+/// face it against its travel. Anything else is an error: another yaw, a pitch or roll other
+/// than 0, an angle relative to another object, to north, or absolute, which the planner does
+/// not steer. Returns the yaw and its place when the first phase asks for one other than
+/// `along`.
 pub(crate) fn check_orientation(
     mods: &[Modifier],
     planned: f64,
+    along: f64,
     first: bool,
 ) -> Result<Option<(f64, Site)>, Error> {
     let mut asked = None;
@@ -147,17 +151,21 @@ pub(crate) fn check_orientation(
                 let x = e.number()?;
                 let is_yaw = matches!(*a, "angle" | "yaw");
                 let want = if is_yaw { planned } else { 0.0 };
-                if (x - want).abs() <= ZERO {
+                // Angles compare on the circle: yaw(-180deg) is yaw(180deg).
+                let off = |y: f64, from: f64| opendrive::normalize_angle(y - from).abs();
+                if off(x, want) <= ZERO {
                     continue;
                 }
-                if is_yaw && first && planned.abs() <= ZERO {
+                if is_yaw && first && off(planned, along) <= ZERO {
                     asked = Some((x, e.site.clone()));
                     continue;
                 }
                 return Err(e.site.err(
                     K::Unsatisfiable,
-                    if is_yaw && planned.abs() > ZERO {
+                    if is_yaw && off(planned, along) > ZERO {
                         format!("expected {a} {planned:.4} rad relative to the road (the yaw the actor stands at from its first phase), found {x:.4} rad")
+                    } else if is_yaw && along != 0.0 {
+                        format!("expected {a} {along:.4} rad relative to the road (§8.9.9: relative to the road's s-axis; the actor drives its lane against s, facing -s, and the engine's vehicles drive along their lane; another yaw is planned only in an actor's first phase, for an actor that stands throughout the run), found {x:.4} rad")
                     } else if is_yaw {
                         format!("expected {a} 0 relative to the road (the engine's vehicles drive along their lane; another yaw is planned only in an actor's first phase, for an actor that stands throughout the run), found {x:.4} rad")
                     } else {

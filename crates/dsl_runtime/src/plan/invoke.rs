@@ -2,6 +2,8 @@
 //! its modifiers lower to, checked against the vehicles' limits, and the end a
 //! `position(…, at: end)` or `distance(…)` gives a phase without a duration.
 
+use std::f64::consts::PI;
+
 use scenario::{
     DynamicsDimension, DynamicsShape, LateralAction, LongitudinalAction, PrivateAction, RateWithin,
     SpeedTarget, SpeedTargetValueType, TransitionDynamics,
@@ -132,8 +134,10 @@ impl Planner<'_> {
             }
             check_keeps(mods, step)?;
             let e = self.index[target.as_str()];
-            let planned = self.entities[e].yaw.as_ref().map_or(0.0, |(y, _)| *y);
-            if let Some(y) = check_orientation(mods, planned, first)? {
+            // The yaw relative to the road's s-axis of an actor along its lane (§8.9.9).
+            let along = if self.entities[e].against { PI } else { 0.0 };
+            let planned = self.entities[e].yaw.as_ref().map_or(along, |(y, _)| *y);
+            if let Some(y) = check_orientation(mods, planned, along, first)? {
                 self.entities[e].yaw = Some(y);
             }
             self.check_avoid_collisions(inv, mods, target)?;

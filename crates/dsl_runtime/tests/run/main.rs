@@ -18,6 +18,7 @@ mod lateral_actions;
 mod map;
 mod map_modifiers;
 mod opposite;
+mod opposite_actions;
 mod orientation;
 mod position_actions;
 mod reuse;

@@ -19,7 +19,7 @@ const SPIRAL_TOL: f64 = 0.01;
 const COST_TOL: f64 = 1e-3;
 
 /// The error text of `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr`.
-fn error_on(name: &str, road: &str) -> String {
+pub(crate) fn error_on(name: &str, road: &str) -> String {
     match lower_at(
         &format!("tests/scenarios/{name}.osc"),
         &format!("tests/roads/{road}.xodr"),
@@ -32,7 +32,7 @@ fn error_on(name: &str, road: &str) -> String {
 }
 
 /// The angle `a` (rad) in (−π, π].
-fn wrap(a: f64) -> f64 {
+pub(crate) fn wrap(a: f64) -> f64 {
     let r = a.rem_euclid(2.0 * PI);
     if r > PI {
         r - 2.0 * PI

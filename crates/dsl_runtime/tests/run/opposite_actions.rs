@@ -1,0 +1,168 @@
+//! The §8.8 actions and §8.9 modifiers of an actor driving against s (oncoming traffic) beyond
+//! `drive()` and the lane and speed changes (`run::opposite`): planned on the view of the plan's
+//! roads driven the other way, lowered back to the road's s and t, run by the engine. Every
+//! expectation is worked by hand in the scenario's comment.
+
+use std::f64::consts::PI;
+
+use crate::opposite::{error_on, wrap};
+use crate::support::{run_on, stepped};
+
+/// Positions on straight roads: the engine integrates speed exactly; float round-off only.
+const S_TOL: f64 = 1e-6;
+/// Headings (rad).
+const H_TOL: f64 = 1e-9;
+/// Event times are step times.
+const T_TOL: f64 = 1e-9;
+/// A hand sum of exact integrals and the engine's step leads, against the stepped sum.
+const LEAD_TOL: f64 = 1e-3;
+/// Along the road during a lateral move: the move's cost v·T·(1 − cos θ) is worked for a
+/// constant crossing speed; the engine's steps round it (1 mm).
+const COST_TOL: f64 = 1e-3;
+
+fn phase_is(r: &crate::support::Run, path: &str, start: f64, end: f64) {
+    let (s, e) = r.phase(path);
+    assert!(
+        (s - start).abs() < T_TOL && (e - end).abs() < T_TOL,
+        "{path}: [{s}, {e}], expected [{start}, {end}]"
+    );
+}
+
+#[test]
+fn speed_and_acceleration_actions_against_s_run_along_the_direction_of_travel() {
+    let r = run_on("opposite_acceleration_actions", "straight");
+    // v(t) of the scenario's comment.
+    let v = |t: f64| {
+        if t <= 1.0 {
+            10.0
+        } else if t <= 2.0 {
+            20.0
+        } else if t <= 3.0 {
+            20.0 - 4.0 * (t - 2.0)
+        } else if t <= 4.0 {
+            let tau = t - 3.0;
+            16.0 - 4.0 * tau + 1.25 * tau * tau
+        } else {
+            13.25 - 1.5 * (t - 4.0)
+        }
+    };
+    for (t, want) in [
+        (1.5, 20.0),
+        (3.0, 16.0),
+        (3.5, 14.3125),
+        (4.0, 13.25),
+        (6.0, 10.25),
+    ] {
+        let npc = r.at(t, "npc");
+        assert!((npc.speed - want).abs() < S_TOL, "v({t}): {npc:?}");
+    }
+    // x = 980 − u, u the distance the engine's steps cover.
+    for t in [0.0, 1.0, 2.0, 3.0, 3.5, 4.0, 6.0] {
+        let npc = r.at(t, "npc");
+        let x = 980.0 - stepped(v, 0.0, t);
+        assert!(
+            (npc.x - x).abs() < S_TOL && (npc.y - 1.75).abs() < S_TOL,
+            "at {t}: {npc:?}, x {x}"
+        );
+        assert!(npc.lane == 1 && wrap(npc.h - PI).abs() < H_TOL, "{npc:?}");
+    }
+    // The hand figures: x 970, 950, 932 less the lead 0.1 m, and 894.0833 at 6 s less
+    // 0.2437 m of leads less the jerk's 0.0005 m.
+    for (t, x) in [
+        (1.0, 970.0),
+        (2.0, 950.0),
+        (3.0, 932.1),
+        (6.0, 894.0833 + 0.24375 - 0.0005),
+    ] {
+        assert!((r.at(t, "npc").x - x).abs() < LEAD_TOL, "x({t})");
+    }
+    phase_is(&r, "do.1", 1.0, 1.0);
+    phase_is(&r, "do.3", 2.0, 2.0);
+    phase_is(&r, "do.5", 3.0, 4.0);
+    phase_is(&r, "do.6", 4.0, 6.0);
+}
+
+#[test]
+fn yaw_relative_to_the_road_and_shapes_against_s_run_on_the_view() {
+    let r = run_on("opposite_orientation_shapes", "straight");
+    // npc faces -s (yaw 180° from the s-axis) throughout.
+    for t in [0.0, 2.0, 3.0, 4.0, 8.0, 10.0, 12.0] {
+        let npc = r.at(t, "npc");
+        assert!(npc.lane == 1 && wrap(npc.h - PI).abs() < 1e-3, "{npc:?}");
+    }
+    let at0 = r.at(0.0, "npc");
+    assert!(
+        (at0.x - 950.0).abs() < S_TOL && (at0.y - 1.75).abs() < S_TOL,
+        "{at0:?}"
+    );
+    assert!((r.at(2.0, "npc").x - 930.0).abs() < S_TOL);
+    // The speed shape: 10 -> 20 m/s in 2 s, the phase's end.
+    phase_is(&r, "do.0.1", 2.0, 4.0);
+    assert!((r.at(3.0, "npc").speed - 15.0).abs() < S_TOL);
+    let at4 = r.at(4.0, "npc");
+    assert!(
+        (at4.x - 899.75).abs() < S_TOL && (at4.speed - 20.0).abs() < S_TOL,
+        "{at4:?}"
+    );
+    // The lateral shape: 0.5 m to the driver's left (towards the centre line) at 0.25 m/s.
+    assert!(
+        (r.at(5.0, "npc").y - 1.5).abs() < S_TOL,
+        "{:?}",
+        r.at(5.0, "npc")
+    );
+    let at8 = r.at(8.0, "npc");
+    assert!((at8.y - 1.25).abs() < S_TOL, "{at8:?}");
+    let cost = 40.0 - 2.0 * (20.0f64.powi(2) - 0.25f64.powi(2)).sqrt();
+    assert!(
+        (at8.x - (819.75 + cost)).abs() < COST_TOL,
+        "{at8:?} cost {cost}"
+    );
+    // The position shape: u = 240 m (s = 760 m) at 12 s, 10 m/s at the middle.
+    phase_is(&r, "do.0.3", 8.0, 12.0);
+    let at10 = r.at(10.0, "npc");
+    assert!((at10.speed - 10.0).abs() < S_TOL, "{at10:?}");
+    // The speed-up's 0.25 m lead, less the first half's 0.25 m, plus the offset's cost.
+    assert!((at10.x - (790.0 + cost)).abs() < COST_TOL, "{at10:?}");
+    let at12 = r.at(12.0, "npc");
+    assert!(
+        (at12.x - (759.75 + cost)).abs() < COST_TOL && (at12.speed - 20.0).abs() < S_TOL,
+        "{at12:?}"
+    );
+    // bus stands at 150° from the s-axis for the run.
+    for t in [0.0, 6.0, 12.0] {
+        let bus = r.at(t, "bus");
+        assert!(
+            (bus.x - 900.0).abs() < S_TOL
+                && (bus.y - 5.25).abs() < S_TOL
+                && bus.speed.abs() < S_TOL,
+            "{bus:?}"
+        );
+        assert!(wrap(bus.h - 150f64.to_radians()).abs() < H_TOL, "{bus:?}");
+    }
+}
+
+/// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` is an error holding each of `texts`
+/// at `place` (line:col).
+fn error_at(name: &str, road: &str, texts: &[&str], place: &str) {
+    let e = error_on(name, road);
+    assert!(
+        texts.iter().all(|t| e.contains(t)) && e.ends_with(&format!("{name}.osc:{place}")),
+        "{name}: {e}"
+    );
+}
+
+/// What has no meaning for an actor driving against s: an error at its place before the run.
+#[test]
+fn what_has_no_meaning_against_s_is_an_error_at_its_place() {
+    // yaw(0) would face an actor driving against s against its travel (§8.9.9: from the
+    // road's s-axis it faces pi).
+    error_at(
+        "err_opposite_yaw",
+        "straight",
+        &[
+            "expected angle 3.1416 rad relative to the road (§8.9.9: relative to the road's s-axis; the actor drives its lane against s, facing -s",
+            "found 0.0000 rad",
+        ],
+        "12:17",
+    );
+}
