@@ -311,8 +311,13 @@ impl Planner<'_> {
                             .filter(|_| !timed)
                         {
                             let names = (name("check"), name("speed"));
-                            let ends =
-                                self.speed_over_distance((m, dm), mods, (target, t0), names, out)?;
+                            let ends = self.speed_over_distance(
+                                (m, dm),
+                                mods,
+                                (target, t0),
+                                names,
+                                (out, after),
+                            )?;
                             if let Some(te) = ends {
                                 // As distance(d)'s own end (below).
                                 derived = Some(match derived {

@@ -73,6 +73,7 @@
 //! | `map_roads` | the route fields the map's modifiers bind whole: roads and lane sections in sequence, a junction's connecting road |
 //! | `map_lanes` | the map's modifiers against the loaded network: lane fields bound, the plan's roads checked |
 //! | `lane_fields` | the lane a `lane` field names for `change_lane`/`follow_lane(target: l)`: bound or drawn once |
+//! | `relative_over_distance` | a speed relative to another actor at the end of a phase `distance(d)` ends: x's speed where the plan ends it, or the engine's x |
 //! | `runtime_end` | what the engine measures from a run-time start (a mark) and checks at such a phase's end |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
 //! | `acceleration_follow` | `acceleration(…)` relative to another actor that the engine follows step by step |
@@ -117,6 +118,7 @@ mod place;
 mod planner;
 mod position_actions;
 mod position_shape;
+mod relative_over_distance;
 mod relative_path;
 mod route;
 mod runtime;

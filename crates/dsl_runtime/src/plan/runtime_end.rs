@@ -60,14 +60,16 @@ impl Planner<'_> {
     /// speed v₀ the actor has then, beside the engine's check `check_name` that the change
     /// covers \|v² − v₀²\|/(2a) ≤ d (named for the `acceleration(…)` when one gives the rate,
     /// else for `m`), the phase ending when `distance_watch` measures d (`None`); at a known
-    /// start the plan's check and the phase's end (`speed_change_over`).
+    /// start the plan's check and the phase's end (`speed_change_over`). A speed relative to
+    /// another actor is x's where the phase ends (`relative_over_distance`: at a known start
+    /// the plan's x, after a run-time one the engine's, checked in `after` at the end).
     pub(super) fn speed_over_distance(
         &mut self,
         (m, dm): (&Modifier, &Modifier),
         mods: &[Modifier],
         (target, t0): (&str, Option<f64>),
         (check_name, name): (String, String),
-        out: &mut Vec<Planned>,
+        (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
     ) -> Result<Option<When>, Error> {
         let Some(d) = dm
             .arg("distance")
@@ -81,13 +83,6 @@ impl Planner<'_> {
             ));
         };
         let (v1, relative) = self.speed_value(m, t0)?;
-        if relative.is_some() {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!("expected a speed of its own beside distance(…) at {} in a phase without a duration, found one relative to another actor (give the phase a duration)", dm.site.at()),
-            ));
-        }
-        check_speed(m, v1)?;
         let (rated_by, a) = match mods.iter().find(|q| q.kind == ModKind::Acceleration) {
             Some(q) => {
                 let a = q
@@ -107,7 +102,24 @@ impl Planner<'_> {
             }
             None => (m, DEFAULT_ACCELERATION),
         };
-        let to = SpeedTarget::Absolute(v1);
+        // Relative to another actor x: at a start the plan knows, x's planned speed where the
+        // phase ends (`relative_end_speed`); after a run-time start the engine's x.
+        let (v1, to) = match (relative, t0) {
+            (Some(x), Some(t)) => {
+                let v1 = self.relative_end_speed(m, (target, t), x, (a, d))?;
+                (v1, SpeedTarget::Absolute(v1))
+            }
+            (Some(x), None) => {
+                let end_name = format!("{name}.end");
+                let to = self.relative_speed_over_distance(m, target, x, (end_name, after));
+                (v1, to)
+            }
+            (None, _) => (v1, SpeedTarget::Absolute(v1)),
+        };
+        let relative_at_run_time = !matches!(to, SpeedTarget::Absolute(_));
+        if !relative_at_run_time {
+            check_speed(m, v1)?;
+        }
         // At a start the plan knows: the change and the rest of d at v, so the phase's end.
         let end = match t0 {
             Some(t) => Some(self.speed_change_over(rated_by, (target, t), (v1, a), d)?),
@@ -135,7 +147,9 @@ impl Planner<'_> {
             }),
             &m.site,
         ));
-        self.last_v.insert(target.to_string(), v1);
+        if !relative_at_run_time {
+            self.last_v.insert(target.to_string(), v1);
+        }
         Ok(end)
     }
 

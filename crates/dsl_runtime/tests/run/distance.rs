@@ -56,15 +56,46 @@ fn a_speed_change_beside_a_distance_without_a_duration_runs_at_its_rate() {
         "expected the speed change from 10.00 m/s to 30.00 m/s at 2 m/s² within the phase's distance of 100 m, found it covers 200.00 m",
         "12:13",
     );
-    // The message names distance(…)'s place by the file's whole path: its two sides.
-    refused(
-        "err_distance_speed_relative",
-        "expected a speed of its own beside distance(…) at ",
-        "18:13",
+}
+
+/// distance_speed_relative.osc's comment, by hand: lead 10 → 22 m/s at 1.2 m/s² from 1 s; ego
+/// changes to lead's speed where distance(71m) ends its phase, 16 m/s at 6 s (10 → 16 m/s at
+/// 2 m/s² in 3 s over 39 m, 32 m more at 16 m/s); tail (projected) keeps lead's 10 m/s of 1 s
+/// and ends at 8.1 s.
+#[test]
+fn a_speed_relative_to_another_actor_beside_a_distance_is_its_speed_where_the_phase_ends() {
+    let r = run("distance_speed_relative", 0, None);
+    for (path, a, b) in [("do.go.1", 1.0, 6.0), ("do.go.2", 1.0, 8.1)] {
+        let (s, e) = r.phase(path);
+        assert!(
+            (s - a).abs() < T_TOL && (e - b).abs() < T_TOL,
+            "{path} [{s}, {e}]"
+        );
+    }
+    for (t, want, v) in [
+        (2.5, 110.0 + 15.0 + 2.25 + ramp_lead(2.0, 1.5), 13.0),
+        (4.0, 110.0 + 39.0 + ramp_lead(2.0, 3.0), 16.0),
+        (6.0, 110.0 + 71.0 + ramp_lead(2.0, 3.0), 16.0),
+        (7.0, 110.0 + 87.0 + ramp_lead(2.0, 3.0), 16.0),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.s - want).abs() < S_TOL && (ego.speed - v).abs() < S_TOL,
+            "{t}: {ego:?}, want {want} m at {v} m/s"
+        );
+    }
+    // Where the phase ends ego is at lead's speed; lead goes on accelerating.
+    assert!((r.at(6.0, "lead").speed - 16.0).abs() < S_TOL);
+    assert!((r.at(7.0, "lead").speed - 17.2).abs() < S_TOL);
+    let tail = r.at(8.1, "tail");
+    assert!(
+        (tail.s - 181.0).abs() < S_TOL && (tail.speed - 10.0).abs() < S_TOL,
+        "{tail:?}"
     );
+    // lead keeps 30 m/s: 10 → 30 m/s at 2 m/s² covers 200 m of the 100 m.
     refused(
         "err_distance_speed_relative",
-        "err_distance_speed_relative.osc:19:13 in a phase without a duration, found one relative to another actor (give the phase a duration)",
-        "18:13",
+        "expected the speed change from 10.00 m/s to 30.00 m/s at 2 m/s² within the phase's distance of 100 m, found it covers 200.00 m",
+        "19:13",
     );
 }

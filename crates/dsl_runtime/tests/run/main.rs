@@ -23,6 +23,7 @@ mod orientation;
 mod position_actions;
 mod reuse;
 mod runtime;
+mod runtime_relative_speed;
 mod shapes;
 mod speed_actions;
 mod support;
