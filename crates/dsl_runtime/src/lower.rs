@@ -26,12 +26,12 @@ use std::sync::Arc;
 
 use scenario::{
     Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
-    EntityObject, Event, FileHeader, Init, LaneOffsetTarget, LateralAction, LongitudinalAction,
-    Maneuver, ManeuverGroup, MiscObject, MiscObjectCategory, Orientation, Pedestrian,
-    PedestrianCategory, Performance, Position, PositionKind, Priority, Private, PrivateAction,
-    Properties, ReferenceContext, RoadNetwork, Route, RouteStrategy, RoutingAction, Rule, Scenario,
-    ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard, StoryboardElementState,
-    TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
+    EntityObject, Event, FileHeader, Init, LaneChangeTarget, LaneOffsetTarget, LateralAction,
+    LongitudinalAction, Maneuver, ManeuverGroup, MiscObject, MiscObjectCategory, Orientation,
+    Pedestrian, PedestrianCategory, Performance, Position, PositionKind, Priority, Private,
+    PrivateAction, Properties, ReferenceContext, RoadNetwork, Route, RouteStrategy, RoutingAction,
+    Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard,
+    StoryboardElementState, TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
 };
 
 use crate::plan::{Entity, HandlerPlan, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
@@ -401,7 +401,21 @@ fn offsets_along_t(action: PrivateAction, against: bool) -> PrivateAction {
         }) => PrivateAction::Lateral(LateralAction::LaneChange {
             target_lane_offset: target_lane_offset.map(|o| -o),
             dynamics,
-            target,
+            // Beside another actor: the t asked from x's, to the drivers' left in the plan.
+            target: match target {
+                LaneChangeTarget::Beside {
+                    entity_ref,
+                    t,
+                    what,
+                    follow,
+                } => LaneChangeTarget::Beside {
+                    entity_ref,
+                    t: -t,
+                    what,
+                    follow,
+                },
+                other => other,
+            },
         }),
         PrivateAction::Lateral(LateralAction::LaneOffset {
             continuous,

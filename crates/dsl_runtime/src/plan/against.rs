@@ -17,10 +17,12 @@
 //! `change_lane`, `keep_lane`, `keep_speed`, `keep_position`, `distance`, `along`,
 //! `physical_movement`, `lateral(d)` in the lane (offsets to the left of the direction of
 //! travel in the plan, turned to the road's t by the lowering), `yaw`/`orientation` relative to
-//! the road's s-axis (§8.9.9: π along a lane driven in −s, `checks::check_orientation`) and
-//! `shape:` (its action's dynamics, `shapes`). The rest is an error at the action or modifier
-//! (not run yet), never planned in the wrong direction: `lateral` or `acceleration` relative
-//! to another actor, the path, position and gap actions, `avoid_collisions(true)`, a group,
+//! the road's s-axis (§8.9.9: π along a lane driven in −s, `checks::check_orientation`),
+//! `shape:` (its action's dynamics, `shapes`), and `lateral` and `acceleration` relative to an
+//! actor driving against s too (left and right are the drivers': the view's t, which the
+//! lowering turns to the road's; an acceleration has no direction). The rest is an error at
+//! the action or modifier (not run yet), never planned in the wrong direction: the path,
+//! position and gap actions, `avoid_collisions(true)`, a group,
 //! `position(…, at: end)` without a phase duration or a shape, and in a phase that starts on
 //! a run-time condition `position(…)`, `lateral(…)` at the start, `lane(…)` relative to
 //! another actor and `along` a named route (the engine's checks at such a start measure
@@ -140,7 +142,7 @@ pub(crate) fn check_runs(
     let not_run = |site: &crate::error::Site, what: &str| {
         site.err(
             K::Unsupported,
-            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane with speed, change_speed, acceleration(a), position(d), lane(n), change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation and shape: run)", inv.actor),
+            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane with speed, change_speed, acceleration(a), position(d), lane(n), change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation, shape:, and lateral and acceleration relative to an actor driving against s run)", inv.actor),
         )
     };
     // A speed and an acceleration have no direction: the speed and acceleration actions
@@ -176,12 +178,12 @@ pub(crate) fn check_runs(
             | ModKind::PhysicalMovement
             // Relative to the road's s-axis (§8.9.9): π along a lane driven against s
             // (`checks::check_orientation`).
-            | ModKind::Orientation => true,
-            // A rate alone, an offset in the lane; relative to another actor the engine
-            // follows it step by step, or measures it in the road's t.
-            ModKind::Acceleration | ModKind::Lateral => crate::resolve::REFERENCES
-                .iter()
-                .all(|k| m.arg(k).is_none()),
+            | ModKind::Orientation
+            // An acceleration has no direction; relative to x (which drives against s too,
+            // `check_references`) it is x's along x's travel. A lateral position beside x is
+            // to the drivers' left or right: the view's t, turned to the road's by `lower`.
+            | ModKind::Acceleration
+            | ModKind::Lateral => true,
             ModKind::AvoidCollisions => false,
         };
         // A shape is its action's dynamics, planned on the view as that action (`shapes`).

@@ -357,15 +357,16 @@ pub(crate) fn place(
             },
         );
     }
-    beside_others(forward, all, entity, &mut out)?;
+    beside_others(&view, all, entity, &mut out)?;
     Ok(out)
 }
 
 /// Places the actors whose first phase has `lateral(…)` relative to another actor, once that
 /// one is placed: the offset in its lane, or, without a lane of its own, the lane that holds
-/// the asked t (see the `lateral` module).
-fn beside_others(
-    road: &PlanRoad<'_>,
+/// the asked t (see the `lateral` module), on the view the actor drives (`view`: x drives it
+/// too, `against::check_references`), so left and right are the drivers'.
+fn beside_others<'r>(
+    view: &dyn Fn(&ToPlace<'_>) -> &'r PlanRoad<'r>,
     all: &[ToPlace<'_>],
     entity: &dyn Fn(&str) -> Option<String>,
     out: &mut HashMap<String, Start>,
@@ -416,6 +417,7 @@ fn beside_others(
             else {
                 continue;
             };
+            let road = view(p);
             let t_x = road.lane_center(sx.lane, sx.s) + sx.offset;
             let t_a = lateral::beside(m, *sigma, (t_x, q.width), p.width)?;
             let st = out[&p.name];

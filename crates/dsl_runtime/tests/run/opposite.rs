@@ -369,8 +369,8 @@ fn what_does_not_run_against_s_is_an_error_at_its_place() {
         (
             "err_opposite_lateral",
             "straight",
-            &["expected an action and modifiers that run for `npc`, which drives against s (a lane driven in -s), found lateral(…) (not run yet against s"][..],
-            "19:13",
+            &["expected no lateral(…) that the engine checks at the start of a phase of `npc`, which drives against s, that starts on a run-time condition"][..],
+            "27:17",
         ),
         (
             "err_opposite_lane",

@@ -19,6 +19,9 @@ const LEAD_TOL: f64 = 1e-3;
 /// Along the road during a lateral move: the move's cost v·T·(1 − cos θ) is worked for a
 /// constant crossing speed; the engine's steps round it (1 mm).
 const COST_TOL: f64 = 1e-3;
+/// Along the road during a sinusoidal offset at a changing speed: its cost (3 mm here, worked
+/// at the mean speed) is not a closed form at every step.
+const OFFSET_COST_TOL: f64 = 5e-3;
 
 fn phase_is(r: &crate::support::Run, path: &str, start: f64, end: f64) {
     let (s, e) = r.phase(path);
@@ -139,6 +142,77 @@ fn yaw_relative_to_the_road_and_shapes_against_s_run_on_the_view() {
         );
         assert!(wrap(bus.h - 150f64.to_radians()).abs() < H_TOL, "{bus:?}");
     }
+}
+
+#[test]
+fn lateral_and_acceleration_beside_an_oncoming_actor_are_the_drivers() {
+    let r = run_on("opposite_beside", "straight");
+    // The truck: 10 m/s, then 1 m/s² from 2 s.
+    let truck0 = r.at(0.0, "truck");
+    assert!(
+        (truck0.x - 900.0).abs() < S_TOL && (truck0.y - 1.75).abs() < S_TOL && truck0.lane == 1,
+        "{truck0:?}"
+    );
+    for (t, x, v) in [(2.0, 880.0, 10.0), (4.0, 857.95, 12.0), (6.0, 831.9, 14.0)] {
+        let truck = r.at(t, "truck");
+        assert!(
+            (truck.x - x).abs() < S_TOL && (truck.speed - v).abs() < S_TOL,
+            "truck at {t}: {truck:?}"
+        );
+    }
+    // npc 3 m to the truck driver's right (+y), in lane 2.
+    let npc0 = r.at(0.0, "npc");
+    assert!(
+        (npc0.x - 880.0).abs() < S_TOL && (npc0.y - 4.75).abs() < S_TOL && npc0.lane == 2,
+        "{npc0:?}"
+    );
+    assert!(wrap(npc0.h - PI).abs() < H_TOL, "{npc0:?}");
+    assert!((r.at(2.0, "npc").x - 860.0).abs() < S_TOL);
+    // 1.5 m/s², the truck's 1 m/s² and 0.5; 3.5 m to its right at 6 s, half way at 4 s.
+    let mid = r.at(4.0, "npc");
+    assert!((mid.speed - 13.0).abs() < S_TOL, "{mid:?}");
+    assert!((mid.y - 5.0).abs() < S_TOL, "{mid:?}");
+    assert!((mid.x - 836.925).abs() < OFFSET_COST_TOL, "{mid:?}");
+    let end = r.at(6.0, "npc");
+    assert!(
+        (end.speed - 16.0).abs() < S_TOL && (end.y - 5.25).abs() < S_TOL && end.lane == 2,
+        "{end:?}"
+    );
+    assert!((end.x - 807.85).abs() < OFFSET_COST_TOL, "{end:?}");
+    phase_is(&r, "do.1", 2.0, 6.0);
+}
+
+#[test]
+fn a_lateral_position_beside_an_oncoming_actor_after_a_run_time_start_is_the_drivers() {
+    let r = run_on("opposite_beside_runtime", "straight");
+    let (_, e) = r.phase("do.2.0");
+    assert!((e - 1.10).abs() < T_TOL, "until @quick ended at {e}");
+    let start = r.at(1.10, "npc");
+    assert!(
+        (start.x - 869.0).abs() < S_TOL && (start.y - 4.75).abs() < S_TOL,
+        "{start:?}"
+    );
+    let cost = 0.25 * PI * PI / (16.0 * 4.0 * 10.0);
+    let mid = r.at(3.10, "npc");
+    assert!((mid.y - 5.0).abs() < S_TOL, "{mid:?}");
+    assert!((mid.x - (849.0 + cost / 2.0)).abs() < COST_TOL, "{mid:?}");
+    let end = r.at(5.10, "npc");
+    assert!((end.y - 5.25).abs() < S_TOL && end.lane == 2, "{end:?}");
+    assert!((end.x - (829.0 + cost)).abs() < COST_TOL, "{end:?}");
+    assert!((r.at(5.10, "truck").x - 849.0).abs() < S_TOL);
+    // The engine's lane change found its target: no error record, the run ends.
+    let lowered = crate::support::lower_at(
+        "tests/scenarios/opposite_beside_runtime.osc",
+        "tests/roads/straight.xodr",
+        0,
+        None,
+    )
+    .expect("plans");
+    let (failed, errors) = crate::support::run_to_error(&lowered.scenario);
+    assert!(
+        failed.is_none() && errors.is_empty(),
+        "{failed:?} {errors:?}"
+    );
 }
 
 /// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` is an error holding each of `texts`
