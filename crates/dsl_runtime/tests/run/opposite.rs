@@ -31,6 +31,23 @@ pub(crate) fn error_on(name: &str, road: &str) -> String {
     }
 }
 
+/// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` runs to its end with no error record
+/// (the engine's checks at run time passed).
+pub(crate) fn ends_without_error(name: &str, road: &str) {
+    let lowered = lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        &format!("tests/roads/{road}.xodr"),
+        0,
+        None,
+    )
+    .expect("plans");
+    let (failed, errors) = crate::support::run_to_error(&lowered.scenario);
+    assert!(
+        failed.is_none() && errors.is_empty(),
+        "{name}: {failed:?} {errors:?}"
+    );
+}
+
 /// The angle `a` (rad) in (−π, π].
 pub(crate) fn wrap(a: f64) -> f64 {
     let r = a.rem_euclid(2.0 * PI);
@@ -178,18 +195,7 @@ fn an_oncoming_actor_brakes_after_a_run_time_condition() {
         "{last:?}"
     );
     // The engine's lane check at the run-time start passed: no error record, the run ends.
-    let lowered = lower_at(
-        "tests/scenarios/opposite_until.osc",
-        "tests/roads/straight.xodr",
-        0,
-        None,
-    )
-    .expect("plans");
-    let (failed, errors) = crate::support::run_to_error(&lowered.scenario);
-    assert!(
-        failed.is_none() && errors.is_empty(),
-        "{failed:?} {errors:?}"
-    );
+    ends_without_error("opposite_until", "straight");
 }
 
 #[test]

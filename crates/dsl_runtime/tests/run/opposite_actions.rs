@@ -5,7 +5,7 @@
 
 use std::f64::consts::PI;
 
-use crate::opposite::{error_on, wrap};
+use crate::opposite::{ends_without_error, error_on, wrap};
 use crate::support::{run_on, stepped};
 
 /// Positions on straight roads: the engine integrates speed exactly; float round-off only.
@@ -201,18 +201,7 @@ fn a_lateral_position_beside_an_oncoming_actor_after_a_run_time_start_is_the_dri
     assert!((end.x - (829.0 + cost)).abs() < COST_TOL, "{end:?}");
     assert!((r.at(5.10, "truck").x - 849.0).abs() < S_TOL);
     // The engine's lane change found its target: no error record, the run ends.
-    let lowered = crate::support::lower_at(
-        "tests/scenarios/opposite_beside_runtime.osc",
-        "tests/roads/straight.xodr",
-        0,
-        None,
-    )
-    .expect("plans");
-    let (failed, errors) = crate::support::run_to_error(&lowered.scenario);
-    assert!(
-        failed.is_none() && errors.is_empty(),
-        "{failed:?} {errors:?}"
-    );
+    ends_without_error("opposite_beside_runtime", "straight");
 }
 
 /// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` is an error holding each of `texts`
