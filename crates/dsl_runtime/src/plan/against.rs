@@ -20,13 +20,15 @@
 //! the road's s-axis (§8.9.9: π along a lane driven in −s, `checks::check_orientation`),
 //! `shape:` (its action's dynamics, `shapes`), and `lateral` and `acceleration` relative to an
 //! actor driving against s too (left and right are the drivers': the view's t, which the
-//! lowering turns to the road's; an acceleration has no direction). The rest is an error at
-//! the action or modifier (not run yet), never planned in the wrong direction: the path,
-//! position and gap actions, `avoid_collisions(true)`, a group,
-//! `position(…, at: end)` without a phase duration or a shape, and in a phase that starts on
-//! a run-time condition `position(…)`, `lateral(…)` at the start, `lane(…)` relative to
-//! another actor and `along` a named route (the engine's checks at such a start measure
-//! places in +s).
+//! lowering turns to the road's; an acceleration has no direction). What the engine measures
+//! for such an actor — its checks at the start of a phase that starts on a run-time condition
+//! (`position(…)`, `lateral(…)` in the lane or beside another actor, `lane(…)` by number or
+//! relative to another actor, `along` a named route), the marks of `distance(d)` and of a gap
+//! without a phase duration, the TravelAction — it measures along the actor's direction of
+//! travel, in the numbers the plan writes (u = L − s, t to the actor's left): the plan gives
+//! it the direction with the roads (`Planner::chain`, `scenario::PlanRoads`). The rest is an
+//! error at the action or modifier (not run yet), never planned in the wrong direction: the
+//! path, position and gap actions, `avoid_collisions(true)`, a group.
 //!
 //! An actor along a free route of the other direction than its own is an error at the
 //! `along` (`check_alongs`).
@@ -43,7 +45,7 @@ use std::collections::HashMap;
 use super::place::ToPlace;
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{
-    Action, Along, At, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
+    Action, Along, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
 };
 
 /// The speed relations, which hold between actors of any directions.
@@ -86,7 +88,7 @@ pub(crate) fn check_references(
             false
         };
         if actor_against {
-            check_runs(inv, &inv.modifiers, None, None)?;
+            check_runs(inv, &inv.modifiers)?;
         }
         let args = inv.args.iter().map(|(n, a)| (None, n, a)).chain(
             inv.modifiers
@@ -130,19 +132,13 @@ pub(crate) fn check_references(
     Ok(())
 }
 
-/// Checks that invocation `inv` with modifiers `mods` runs for an actor driving against s,
-/// starting at `t0` and ending at `end` when the plan knows them (`Some(None)`: a run-time
-/// start, or an end the plan does not know; `None`: before the planning, not known yet).
-pub(crate) fn check_runs(
-    inv: &Invoke,
-    mods: &[Modifier],
-    t0: Option<Option<f64>>,
-    end: Option<Option<f64>>,
-) -> Result<(), Error> {
+/// Checks that invocation `inv` with modifiers `mods` runs for an actor driving against s
+/// (before the planning, and again for each phase as it is planned).
+pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
     let not_run = |site: &crate::error::Site, what: &str| {
         site.err(
             K::Unsupported,
-            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane with speed, change_speed, acceleration(a), position(d), lane(n), change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation, shape:, and lateral and acceleration relative to an actor driving against s run)", inv.actor),
+            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane with speed, change_speed, acceleration(a), position, lane, change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation, shape:, and lateral and acceleration relative to an actor driving against s run)", inv.actor),
         )
     };
     // A speed and an acceleration have no direction: the speed and acceleration actions
@@ -189,40 +185,6 @@ pub(crate) fn check_runs(
         // A shape is its action's dynamics, planned on the view as that action (`shapes`).
         if !runs {
             return Err(not_run(&m.site, &format!("{}(…)", m.name)));
-        }
-    }
-    // Without a phase end the engine measures the gap reached in +s (plan::runtime_end); a
-    // shaped position ends where its planned speed profile does (`position_shape`).
-    if let (Some(None), Some(m)) = (
-        end,
-        mods.iter()
-            .find(|m| m.kind == ModKind::Position && m.at == At::End && m.shape.is_none()),
-    ) {
-        return Err(m.site.err(
-            K::Unsupported,
-            format!("expected a phase duration for position(…, at: end) of `{}`, which drives against s, found none (not run yet against s: without one the engine measures the gap reached in +s)", inv.actor),
-        ));
-    }
-    // After a run-time start the engine checks places in the plan's s in +s (plan::runtime):
-    // a position, a lane relative to another actor, a named route's interval. Lanes by number
-    // (the lane id the view gives), speeds and distances travelled are direction-free.
-    if let Some(None) = t0 {
-        let measured_in_s = mods.iter().find(|m| match m.kind {
-            ModKind::Position => true,
-            ModKind::Lateral => m.at != At::End,
-            ModKind::Lane => crate::resolve::REFERENCES
-                .iter()
-                .any(|k| m.arg(k).is_some()),
-            ModKind::Along => {
-                matches!(m.along.as_ref().map(|a| &a.route), Some(Route::Lane { .. }))
-            }
-            _ => false,
-        });
-        if let Some(m) = measured_in_s {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!("expected no {}(…) that the engine checks at the start of a phase of `{}`, which drives against s, that starts on a run-time condition (an until or wait before it), found one (not run yet against s: the engine's checks at such a start measure places in +s; lane(n), speeds and distances run)", m.name, inv.actor),
-            ));
         }
     }
     Ok(())

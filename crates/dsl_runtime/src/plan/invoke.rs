@@ -32,8 +32,6 @@ impl Planner<'_> {
         &mut self,
         inv: &Invoke,
         mods: &[Modifier],
-        t0: Option<f64>,
-        end: Option<f64>,
         plan: impl FnOnce(&mut Self) -> Result<R, Error>,
     ) -> Result<R, Error> {
         let against = self
@@ -44,7 +42,7 @@ impl Planner<'_> {
         let Some(view) = self.against_road.clone().filter(|_| against) else {
             return plan(self);
         };
-        super::against::check_runs(inv, mods, Some(t0), Some(end))?;
+        super::against::check_runs(inv, mods)?;
         let forward = std::mem::replace(&mut self.road, view);
         let planned = plan(self);
         self.road = forward;

@@ -31,7 +31,10 @@
 //! plan's roads with the plan's s at each start (`Planner::chain`: `StateCheck::roads`,
 //! `Travel::roads`): the engine takes the lane on whichever of them the actor is on (their
 //! lane ids are the same), measures s and gaps in the plan's s, and a TravelAction's Δs along
-//! the actor's lane across the roads' joints.
+//! the actor's lane across the roads' joints. For an actor driving against s (`crate::road`'s
+//! view) they carry that direction too (`PlanRoads::against`): the engine measures in the
+//! view's u = L − s, t and offsets to the actor's left, so what the plan writes for it is
+//! what the engine checks.
 //!
 //! Lanes are numbered (and lane widths taken) where the plan last knows the actor: a road whose
 //! lanes change between there and the run-time start may number them otherwise. A gap that
@@ -39,8 +42,8 @@
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, RateWithin,
-    SpeedTarget, StateCheck, Travel, TravelGoal,
+    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, PlanRoads, PrivateAction,
+    RateWithin, SpeedTarget, StateCheck, Travel, TravelGoal,
 };
 
 use super::action_args::timed;
@@ -345,11 +348,17 @@ impl Planner<'_> {
     /// The plan's roads with the plan's s at each start, for the engine's checks, marks and
     /// TravelAction on a plan over several roads (their lane ids are the same, so the engine
     /// takes the lane on whichever of them the actor is on and measures in the plan's s);
-    /// empty on one road (the engine measures on the road the actor is on).
-    pub(super) fn chain(&self) -> Vec<(String, f64)> {
-        match self.road.ids().len() {
-            1 => Vec::new(),
-            _ => self.road.starts(),
+    /// none on one road (the engine measures on the road the actor is on). On the view of an
+    /// actor driving against s (`PlanRoad::against`) the same roads driven so: the engine
+    /// measures in the view's u = L − s and t to the left of the direction of travel, the
+    /// numbers the plan writes (`position::RoadChain` there).
+    pub(super) fn chain(&self) -> PlanRoads {
+        PlanRoads {
+            chain: match self.road.ids().len() {
+                1 => Vec::new(),
+                _ => self.road.starts(),
+            },
+            against: self.road.is_against(),
         }
     }
 

@@ -40,7 +40,7 @@ impl Planner<'_> {
                     let len = p.duration.or(len_hint);
                     let ms = &inv.modifiers;
                     let t0 = start.time();
-                    derived = self.in_actor_view(inv, ms, t0, cap, |s| {
+                    derived = self.in_actor_view(inv, ms, |s| {
                         s.plan_invoke(
                             p,
                             inv,

@@ -15,7 +15,10 @@
 //! stops with [`ErrorKind::CheckFailed`](crate::ErrorKind::CheckFailed). A check that holds
 //! then notes its mark, if it has one (the actor's odometer and, with a gap, its side of the
 //! place the gap asks for: `condition::mark`). The DSL runtime also runs checks at a phase's
-//! end, for a constraint that holds there only if the run happens to meet it.
+//! end, for a constraint that holds there only if the run happens to meet it. Places are
+//! measured as the check's `roads` say (`position::RoadChain`): on the actor's road in its s,
+//! on a plan over several roads in the plan's s, and for an actor driving the roads against s
+//! along its direction of travel (u = L − s, t and offsets to its left), the plan's numbers.
 
 use opendrive::{Direction, RoadPosition};
 use scenario::{RateWithin, SourcePos, StateCheck};
@@ -42,7 +45,7 @@ pub(crate) fn start(
     require(world, actor, check, (time, pos))?;
     if let Some(mark) = &check.mark {
         let e = world.entity(actor);
-        let chain = RoadChain::new(&check.roads);
+        let chain = RoadChain::new(&world.network, &check.roads);
         let gap_error = match &mark.gap {
             Some(gap) => {
                 let other = world.id(&gap.entity_ref).map(|o| world.entity(o));
@@ -247,8 +250,9 @@ fn require(
             "it off every road".into(),
         ));
     };
-    // Where along the plan's roads (a road's s plus its start), or the road's own s.
-    let chain = RoadChain::new(&check.roads);
+    // Where along the plan's roads (a road's s plus its start), or the road's own s; against
+    // s along the direction of travel (u = L − s, t and offsets to the actor's left).
+    let chain = RoadChain::new(&world.network, &check.roads);
     let along = |p: &RoadPosition| chain.s_of(&p.road_id, p.s);
     if let Some((road, lane)) = &check.lane {
         let on_road = match chain.is_chain() {
@@ -322,19 +326,21 @@ fn require(
         };
         if (got - s).abs() > tol {
             return Err(fail(
-                format!("'{}' at s = {s:.3} m (within {tol} m)", e.name),
-                format!("it at s = {got:.3} m"),
+                format!("'{}' at {} (within {tol} m)", e.name, chain.place(s)),
+                format!("it at {}", chain.place(got)),
             ));
         }
     }
+    // Offsets to the left of the direction of travel (against s: −the road's).
+    let offset_left = chain.left(at.offset);
     if let Some((offset, tol)) = check.offset {
-        if (at.offset - offset).abs() > tol {
+        if (offset_left - offset).abs() > tol {
             return Err(fail(
                 format!(
                     "'{}' {offset:.3} m from its lane's centre (within {tol} m)",
                     e.name
                 ),
-                format!("it {:.3} m from it", at.offset),
+                format!("it {offset_left:.3} m from it"),
             ));
         }
     }
@@ -345,13 +351,13 @@ fn require(
             .lane_width(&at.road_id, at.lane_id, at.s)
             .unwrap_or(0.0);
         let offset = k * width + c;
-        if (at.offset - offset).abs() > tol {
+        if (offset_left - offset).abs() > tol {
             return Err(fail(
                 format!(
                     "'{}' {offset:.3} m from the centre of its lane {width:.3} m wide (within {tol} m)",
                     e.name
                 ),
-                format!("it {:.3} m from it", at.offset),
+                format!("it {offset_left:.3} m from it"),
             ));
         }
     }
@@ -376,13 +382,13 @@ fn require(
     let beside_t = |other: &str| {
         let (there, _) = beside(other)?;
         chain
-            .lateral_compares(&world.network, &at.road_id, &there.road_id)
+            .lateral_compares(&at.road_id, &there.road_id)
             .map_err(|want| fail(want, format!("'{other}' on road {}", there.road_id)))?;
         Ok::<_, Error>(there)
     };
     if let Some((other, dt, tol)) = &check.beside {
         let there = beside_t(other)?;
-        let got = at.t - there.t;
+        let got = chain.left(at.t - there.t);
         if (got - dt).abs() > *tol {
             return Err(fail(
                 format!(
@@ -395,7 +401,7 @@ fn require(
     }
     if let Some((other, dt)) = &check.beside_in_lane {
         let there = beside_t(other)?;
-        let t = there.t + dt;
+        let t = there.t + chain.left(*dt);
         let road = world.network.road(&at.road_id);
         let lane = road
             .zip(e.track.as_ref())
@@ -417,7 +423,7 @@ fn require(
         let other = &g.entity_ref;
         // On a plan over several roads x may be on another of them: the plan's s of both.
         let (there_s, speed) = match chain.is_chain() {
-            false => beside(other).map(|(there, v)| (Some(there.s), v))?,
+            false => beside(other).map(|(there, v)| (along(there), v))?,
             true => world
                 .id(other)
                 .map(|o| world.entity(o))
@@ -442,8 +448,9 @@ fn require(
         if (got - gap).abs() > *tol {
             return Err(fail(
                 format!(
-                    "'{other}' {gap:.3} m from '{}' along the road (within {tol} m)",
-                    e.name
+                    "'{other}' {gap:.3} m from '{}' {} (within {tol} m)",
+                    e.name,
+                    chain.along()
                 ),
                 format!("{got:.3} m"),
             ));

@@ -7,7 +7,9 @@
 //! When it starts, the action measures Δs, the distance to cover along the actor's lane centre
 //! (`position::RoadChain::lane_length`: from the actor's s to the goal's; on a DSL plan over
 //! several roads, `Travel::roads`, in the plan's s and across the roads' joints, the other
-//! entity likewise on any of them), and takes the profile of two
+//! entity likewise on any of them; for an actor driving against s, `PlanRoads::against`, in
+//! u = L − s along its direction of travel, the goal and the gap as the plan writes them),
+//! and takes the profile of two
 //! linear halves the DSL plan uses at a known start: v₀ → v_m over T/2 and v_m → v_e over T/2
 //! with v_m = (4·Δs/T − v₀ − v_e)/2, so that ∫v dt = Δs. It runs as a SpeedProfileAction in
 //! `position` mode (strictly linear between the targets) with the targets (v_m, T/2) and
@@ -64,7 +66,7 @@ pub(crate) fn start(
                 ));
             };
             // On a plan over several roads: the plan's s, along the lane across the joints.
-            let chain = RoadChain::new(&travel.roads);
+            let chain = RoadChain::new(&world.network, &travel.roads);
             let (road, lane, forward) = (
                 track.road_id.as_str(),
                 track.lane_id,
@@ -103,7 +105,6 @@ pub(crate) fn start(
                     let x_forward = xt.direction == Direction::Forward;
                     let s_x = chain
                         .s_at_lane_distance(
-                            &world.network,
                             (&xt.road_id, xt.lane_id, xt.s),
                             (x.speed * t).abs(),
                             x_forward == (x.speed >= 0.0),
@@ -118,17 +119,15 @@ pub(crate) fn start(
                 }
                 _ => return Err(Error::unsupported("this TravelAction goal", pos)),
             };
-            let length = chain
-                .lane_length(&world.network, road, lane, (s0, s1))
-                .ok_or_else(|| {
-                    let of = chain.roads_or(road);
-                    fail(
-                        format!("lane {lane} of {of} up to s = {s1:.3} m"),
-                        "none".into(),
-                    )
-                })?;
+            let length = chain.lane_length(road, lane, (s0, s1)).ok_or_else(|| {
+                let of = chain.roads_or(road);
+                fail(
+                    format!("lane {lane} of {of} up to {}", chain.place(s1)),
+                    "none".into(),
+                )
+            })?;
             // Along the direction of travel: a goal behind the actor is a negative distance.
-            if (s1 >= s0) == forward {
+            if (s1 >= s0) == chain.increasing(forward) {
                 length
             } else {
                 -length

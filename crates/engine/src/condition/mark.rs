@@ -6,12 +6,13 @@
 //! entity from the side it was on at the mark: `position(time: t / neither, ahead_of/behind:
 //! x, at: end)` without a duration; with `track: projected` x as projected from the mark on:
 //! along its lane at the speed it had then). Both are false before the mark is noted, so they may
-//! stand in any trigger. On a plan over several roads (the check's `roads`, kept on the mark)
-//! the places are the plan's s on any of its roads, and x is projected along its lane across
-//! their joints (`position::RoadChain`).
+//! stand in any trigger. The places are measured as the check's `roads` (kept on the mark)
+//! say (`position::RoadChain`): on a plan over several roads in the plan's s on any of its
+//! roads, x projected along its lane across their joints; for an actor driving against s along
+//! its direction of travel (u = L − s), so "ahead" and "behind" are its own.
 
 use opendrive::{Real, RoadNetwork, RoadPosition};
-use scenario::SpeedGap;
+use scenario::{PlanRoads, SpeedGap};
 
 use crate::position::{EntityView, RoadChain};
 
@@ -27,9 +28,9 @@ pub struct Mark {
     pub gap_error: Option<Real>,
     /// With a projected gap: the gap's entity as it was then, projected from then on.
     pub projection: Option<Projection>,
-    /// The roads of the check's plan over several roads with the plan's s at each start
-    /// (empty: one road), which the gap measures along.
-    pub roads: Vec<(String, Real)>,
+    /// The roads the check's gap is measured along, and the direction of travel (the check's
+    /// `roads`).
+    pub roads: PlanRoads,
 }
 
 /// An entity projected from a moment on (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track:
@@ -51,19 +52,19 @@ pub struct Projection {
 }
 
 impl Projection {
-    /// Its s at `now` along `chain` (`None` where its lane ends first).
-    fn s_at(&self, network: &RoadNetwork, chain: RoadChain<'_>, now: Real) -> Option<Real> {
+    /// Its place at `now` in `chain`'s measure (`None` where its lane ends first).
+    fn s_at(&self, chain: RoadChain<'_>, now: Real) -> Option<Real> {
         let d = (self.speed * (now - self.time)).abs();
         let forward = self.forward == (self.speed >= 0.0);
         chain
-            .s_at_lane_distance(network, (&self.road, self.lane, self.s), d, forward)
+            .s_at_lane_distance((&self.road, self.lane, self.s), d, forward)
             .ok()
     }
 }
 
 /// The actor's s minus the gap's entity's, less [`SpeedGap::offset`] at that entity's speed
-/// `speed` (m), in the plan's s along `chain`: 0 where the gap asks the actor to be, positive
-/// beyond. `None` when s is not comparable (on one road, the two on different roads; on a
+/// `speed` (m), in `chain`'s measure (the plan's s, or u along the direction of travel
+/// against s): 0 where the gap asks the actor to be, positive beyond. `None` when s is not comparable (on one road, the two on different roads; on a
 /// chain, either off it).
 pub(crate) fn place_error(
     chain: RoadChain<'_>,
@@ -97,13 +98,13 @@ pub(super) fn gap_reached_since(
     let Some(m0) = m.gap_error else {
         return false;
     };
-    let chain = RoadChain::new(&m.roads);
+    let chain = RoadChain::new(network, &m.roads);
     let now_error = match &m.projection {
         Some(p) => p
-            .s_at(network, chain, now)
-            .zip(match chain.is_chain() {
+            .s_at(chain, now)
+            .zip(match chain.is_chain() || a.road_id == p.road {
                 true => chain.s_of(&a.road_id, a.s),
-                false => (a.road_id == p.road).then_some(a.s),
+                false => None,
             })
             .map(|(s, at)| at - s - gap.offset(p.speed)),
         None => other

@@ -24,7 +24,7 @@ fn scenario(goal: TravelGoal, duration: f64, end_speed: Option<f64>) -> Scenario
         end_speed_of: None,
         monotonous: false,
         limits: (70.0, 10.0),
-        roads: Vec::new(),
+        roads: scenario::PlanRoads::default(),
     })))
 }
 

@@ -114,16 +114,35 @@ pub struct StateCheck {
     /// A mark noted before on the actor, the distance (m) it must have travelled since (its
     /// odometer), and the tolerance (m).
     pub travelled: Option<(String, f64, f64)>,
-    /// The roads of a plan over several roads, each with the plan's s at its start (m), in
-    /// driving order (empty: one road): with them `lane` holds on any of these roads (the
-    /// lane ids are the same on each), and `s` and `gap` measure the plan's s, a road's s plus
-    /// its start.
-    pub roads: Vec<(String, f64)>,
+    /// The roads the places are measured along (the default: the road the actor is on, in
+    /// +s): on a plan over several roads `lane` holds on any of them (the lane ids are the
+    /// same on each), and `s`, `gap` and the mark's gap measure the plan's s, a road's s plus
+    /// its start; for an actor driving them against s ([`PlanRoads::against`]) `s`, `gap`,
+    /// the mark's gap and every offset and t (`offset`, `offset_in_width`, `beside`,
+    /// `beside_in_lane`) are measured along its direction of travel: u = L − s, t to its left.
+    pub roads: PlanRoads,
     /// A mark the check notes on the actor when it runs (after the requirements above hold):
     /// its odometer, and with a gap its place relative to the gap's entity, for the conditions
     /// [`crate::EntityCondition::TraveledSinceMark`] and
     /// [`crate::EntityCondition::GapReachedSinceMark`] and a later check's `travelled`.
     pub mark: Option<Mark>,
+}
+
+/// The roads an OpenSCENARIO DSL plan measures an actor's places along, and in which
+/// direction (oscsim, no XML form; ASAM OpenSCENARIO DSL 2.1 §8.9 places measured along the
+/// actor's route; ASAM OpenDRIVE 1.8 §11.2 lanes driven in −s). The default is one road, the
+/// one the actor is on, in +s: what the engine measured before plans over several roads and
+/// actors driving against s, so every 1.x scenario and every earlier output is unchanged.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct PlanRoads {
+    /// The roads of a plan over several roads, each with the plan's s at its start (m, a
+    /// road's s plus the lengths of the roads before it), in +s order (empty: one road, the
+    /// one the actor is on, in its own s).
+    pub chain: Vec<(String, f64)>,
+    /// The actor drives the roads against s (oncoming traffic in a lane driven in −s): its
+    /// places are measured along its direction of travel, in u = L − s (L the length of the
+    /// roads: the chain's, or the one road's) and with t to its left (−t).
+    pub against: bool,
 }
 
 /// A mark a [`StateCheck`] notes (see [`StateCheck::mark`]).
@@ -338,11 +357,13 @@ pub struct Travel {
     /// The highest speed (m/s) and the highest acceleration or deceleration (m/s²) the profile
     /// may have.
     pub limits: (f64, f64),
-    /// The roads of a plan over several roads, each with the plan's s at its start (m), in
-    /// driving order (empty: one road, the actor's): with them a [`TravelGoal::RoadS`] is the
-    /// plan's s, another entity is measured on any of these roads, and the distance runs along
-    /// the actor's lane across their joints (as [`StateCheck::roads`]).
-    pub roads: Vec<(String, f64)>,
+    /// The roads the travel is measured along (as [`StateCheck::roads`]; the default: the
+    /// road the actor is on, in +s): on a plan over several roads a [`TravelGoal::RoadS`] is
+    /// the plan's s, another entity is measured on any of these roads, and the distance runs
+    /// along the actor's lane across their joints; for an actor driving them against s
+    /// ([`PlanRoads::against`]) the goal and the gap are u = L − s, along its direction of
+    /// travel.
+    pub roads: PlanRoads,
 }
 
 /// Where a [`Travel`] ends, measured along the actor's lane centre from where it starts.
