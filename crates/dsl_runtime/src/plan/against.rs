@@ -28,7 +28,14 @@
 //! travel, in the numbers the plan writes (u = L − s, t to the actor's left): the plan gives
 //! it the direction with the roads (`Planner::chain`, `scenario::PlanRoads`). The rest is an
 //! error at the action or modifier (not run yet), never planned in the wrong direction: the
-//! path, position and gap actions, `avoid_collisions(true)`, a group.
+//! path and position actions, `avoid_collisions(true)`, a group.
+//!
+//! The gap actions (`change_space_gap`, `keep_space_gap`, `change_time_headway`,
+//! `keep_time_headway`) run between two actors driving against s: the engine's
+//! LongitudinalDistanceAction and LateralDistanceAction measure in road coordinates turned to
+//! the actor's direction of travel (OpenSCENARIO 1.3 §6.4, `condition::road_distance`: the
+//! reference ahead of / left of it is positive) and move the actor along and across its lane in
+//! that direction, the plan's own view; their checks carry the direction like every other.
 //!
 //! An actor along a free route of the other direction than its own is an error at the
 //! `along` (`check_alongs`).
@@ -138,7 +145,7 @@ pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
     let not_run = |site: &crate::error::Site, what: &str| {
         site.err(
             K::Unsupported,
-            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane with speed, change_speed, acceleration(a), position, lane, change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation, shape:, and lateral and acceleration relative to an actor driving against s run)", inv.actor),
+            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane, change_space_gap, keep_space_gap, change_time_headway, keep_time_headway with speed, change_speed, acceleration(a), position, lane, change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation, shape:, and lateral and acceleration relative to an actor driving against s run)", inv.actor),
         )
     };
     // A speed and an acceleration have no direction: the speed and acceleration actions
@@ -155,6 +162,13 @@ pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
             | Action::RemainStationary
             | Action::ChangeLane
             | Action::FollowLane
+            // The engine's distance actions measure along the actor's direction of travel
+            // (road coordinates turned to it, `condition::road_distance`) and move it along
+            // and across its lane in that direction: 1.x's semantics, as the plan's view.
+            | Action::ChangeSpaceGap
+            | Action::KeepSpaceGap
+            | Action::ChangeTimeHeadway
+            | Action::KeepTimeHeadway
     );
     if !runs {
         return Err(not_run(&inv.actor_site, &format!("{}(…)", inv.action)));

@@ -47,6 +47,11 @@
 //! While the engine's controller moves the actor the plan does not know its track: a later
 //! phase of the actor must start on a run-time condition (an `until`, a `wait`, or the gap
 //! action's own end), else an error.
+//!
+//! Between two actors driving against s (`plan::against`) the same lowering holds: the engine
+//! measures road coordinates turned to the actor's direction of travel, so `behind`, `left`,
+//! `inside` are the driver's, as the plan's view has them; the check of a lateral place after a
+//! run-time start carries the direction (`StateCheck::roads`).
 
 use scenario::{
     CoordinateSystem, DynamicConstraints, GapAtStart, LateralAction, LateralDisplacement,
@@ -455,6 +460,8 @@ impl Planner<'_> {
         let reach = self.side_extent(reference, left) + gap + self.side_extent(target, !left);
         let check = StateCheck {
             beside_in_lane: Some((reference.to_string(), if left { reach } else { -reach })),
+            // Against s the t across is to the left of the direction of travel.
+            roads: self.chain(),
             ..StateCheck::default()
         };
         Some(super::runtime::phase_start_check(

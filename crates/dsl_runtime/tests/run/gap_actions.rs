@@ -3,7 +3,7 @@
 //! `tests/roads/straight.xodr`: each change ends when its gap is reached (the engine's 0.1 m),
 //! each keep holds it to its phase's end, against the scenario's hand-worked comment.
 
-use crate::support::{run, DT};
+use crate::support::{run, Run, DT};
 
 /// The engine's distance controller ends a change within this of its distance (m).
 const REACHED: f64 = 0.1;
@@ -14,7 +14,13 @@ const T_TOL: f64 = 1e-9;
 fn change_space_gap_ends_at_the_gap_and_keep_space_gap_holds_it() {
     let r = run("actions/space_gap", 0, None);
     // Boxes: front 3.5 m, rear 0.5 m ahead of / behind the reference points.
-    let gap = |t: f64| (r.at(t, "lead").s - 0.5) - (r.at(t, "ego").s + 3.5);
+    space_gap_law(&r, |t| (r.at(t, "lead").s - 0.5) - (r.at(t, "ego").s + 3.5));
+    assert!((r.at(30.0, "lead").s - 550.0).abs() < 1e-9);
+}
+
+/// actions/space_gap.osc's law (its comment, by hand) on a run of it, `gap(t)` the space gap
+/// between the boxes along the direction of travel (also driven against s: `opposite_gaps`).
+pub(crate) fn space_gap_law(r: &Run, gap: impl Fn(f64) -> f64) {
     assert!((gap(0.0) - 66.0).abs() < 1e-9, "gap(0) = {}", gap(0.0));
     // Mid-points of the saturated part (2 m/s² from the first step): gap = 66 − t² − t·dt,
     // v = 15 + 2·t.
@@ -48,20 +54,26 @@ fn change_space_gap_ends_at_the_gap_and_keep_space_gap_holds_it() {
         (s2 - e).abs() < T_TOL && (e2 - 30.0).abs() < T_TOL,
         "hold [{s2}, {e2}]"
     );
-    let (lead, ego) = (r.at(30.0, "lead"), r.at(30.0, "ego"));
-    assert!((lead.s - 550.0).abs() < 1e-9, "lead s(30) = {}", lead.s);
     assert!(
         (gap(30.0) - 20.0).abs() < REACHED,
         "gap(30) = {}",
         gap(30.0)
     );
+    let ego = r.at(30.0, "ego");
     assert!((ego.speed - 15.0).abs() < 0.05, "ego v(30) = {}", ego.speed);
 }
 
 #[test]
 fn change_time_headway_ends_at_the_headway_and_keep_time_headway_holds_it() {
     let r = run("actions/time_headway", 0, None);
-    let between = |t: f64| r.at(t, "lead").s - r.at(t, "ego").s;
+    time_headway_law(&r, |t| r.at(t, "lead").s - r.at(t, "ego").s);
+    assert!((r.at(40.0, "lead").s - 950.0).abs() < 1e-9);
+}
+
+/// actions/time_headway.osc's law (its comment, by hand) on a run of it, `between(t)` the
+/// distance between the reference points along the direction of travel (also driven against
+/// s: `opposite_gaps`).
+pub(crate) fn time_headway_law(r: &Run, between: impl Fn(f64) -> f64) {
     assert!((between(0.0) - 130.0).abs() < 1e-9);
     // Mid-points of the saturated part (2 m/s² from the first step): 130 − t² − t·dt m,
     // v = 20 + 2·t.
@@ -93,7 +105,6 @@ fn change_time_headway_ends_at_the_headway_and_keep_time_headway_holds_it() {
         (s2 - e).abs() < T_TOL && (e2 - 40.0).abs() < T_TOL,
         "follow [{s2}, {e2}]"
     );
-    assert!((r.at(40.0, "lead").s - 950.0).abs() < 1e-9);
     assert!(
         (between(40.0) - 30.0).abs() < REACHED,
         "{} m at 40 s",
@@ -121,7 +132,20 @@ fn error_left(t: f64) -> f64 {
 fn change_space_gap_to_the_right_closes_across_the_road_and_keep_holds_it() {
     let r = run("actions/lateral_gap", 0, None);
     // Gap between the 2 m wide boxes: lead's y − 1 − (ego's y + 1).
-    let gap = |t: f64| (r.at(t, "lead").y - 1.0) - (r.at(t, "ego").y + 1.0);
+    lateral_gap_law(&r, |t| (r.at(t, "lead").y - 1.0) - (r.at(t, "ego").y + 1.0));
+    let ego = r.at(12.0, "ego");
+    assert!(
+        (ego.y + 7.75).abs() < LATERAL_REACHED,
+        "ego y(12) = {}",
+        ego.y
+    );
+    assert_eq!(ego.lane, -3, "ego stays in its lane");
+    assert!((ego.x - 340.0).abs() < 0.05, "ego x(12) = {}", ego.x);
+}
+
+/// actions/lateral_gap.osc's law (its comment, by hand) on a run of it, `gap(t)` the gap
+/// between the boxes across the road (also driven against s: `opposite_gaps`).
+pub(crate) fn lateral_gap_law(r: &Run, gap: impl Fn(f64) -> f64) {
     assert!((gap(0.0) - 1.5).abs() < 1e-9, "gap(0) = {}", gap(0.0));
     // Mid-point: 0.3595 m left by the stepped law, 0.357 m in closed form.
     assert!((error_left(2.0) - 0.3595).abs() < CLOSED_FORM_GAP);
@@ -152,21 +176,14 @@ fn change_space_gap_to_the_right_closes_across_the_road_and_keep_holds_it() {
         (s2 - e).abs() < T_TOL && (e2 - 12.0).abs() < T_TOL,
         "hold [{s2}, {e2}]"
     );
-    let ego = r.at(12.0, "ego");
     assert!(
         (gap(12.0) - 0.5).abs() < LATERAL_REACHED,
         "gap(12) = {}",
         gap(12.0)
     );
-    assert!(
-        (ego.y + 7.75).abs() < LATERAL_REACHED,
-        "ego y(12) = {}",
-        ego.y
-    );
-    assert_eq!(ego.lane, -3, "ego stays in its lane");
-    // Along the road nothing changed: 20 m/s from s = 100 m.
+    // Along the road nothing changed: 20 m/s.
+    let ego = r.at(12.0, "ego");
     assert!((ego.speed - 20.0).abs() < 1e-9, "ego v(12) = {}", ego.speed);
-    assert!((ego.x - 340.0).abs() < 0.05, "ego x(12) = {}", ego.x);
 }
 
 #[test]

@@ -19,6 +19,7 @@ mod map;
 mod map_modifiers;
 mod opposite;
 mod opposite_actions;
+mod opposite_gaps;
 mod orientation;
 mod position_actions;
 mod reuse;

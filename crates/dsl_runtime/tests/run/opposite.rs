@@ -4,7 +4,7 @@
 
 use std::f64::consts::PI;
 
-use crate::support::{lower_at, run_on, Run, DT};
+use crate::support::{lower_at, phases_are, run_on, DT};
 
 /// Positions on straight roads: the engine integrates speed exactly; float round-off only.
 const S_TOL: f64 = 1e-6;
@@ -189,17 +189,6 @@ fn an_oncoming_actor_brakes_after_a_run_time_condition() {
     );
     // The engine's lane check at the run-time start passed: no error record, the run ends.
     ends_without_error("opposite_until", "straight");
-}
-
-/// Asserts that each phase `(name, start, end)` of `r` runs from start to end.
-fn phases_are(r: &Run, want: &[(&str, f64, f64)]) {
-    for &(phase, t0, t1) in want {
-        let (s, e) = r.phase(phase);
-        assert!(
-            (s - t0).abs() < T_TOL && (e - t1).abs() < T_TOL,
-            "{phase} [{s}, {e}], want [{t0}, {t1}]"
-        );
-    }
 }
 
 /// The run of `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr`: its error (`None`: it
@@ -599,6 +588,12 @@ fn what_does_not_run_against_s_is_an_error_at_its_place() {
             "straight",
             &["expected `ego`, which drives in +s, along a route in its direction, found `theirs` (the plan's roads against s, bound by map.routes_are_opposite(…) at "][..],
             "16:13",
+        ),
+        (
+            "err_opposite_lateral_gap_place",
+            "straight",
+            &["expected a 0.5 m gap left of `lead` to leave `ego` in a driving lane, found it at t = 0.75 m across the road"][..],
+            "26:13",
         ),
         (
             "err_opposite_obstacle",

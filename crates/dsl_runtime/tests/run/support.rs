@@ -276,3 +276,15 @@ pub fn run_to_error(scenario: &scenario::Scenario) -> (Option<String>, Vec<(f64,
         }
     }
 }
+
+/// Asserts that each phase `(name, start, end)` of `r` runs from start to end (1e-9 s: phase
+/// ends are step times).
+pub fn phases_are(r: &Run, want: &[(&str, f64, f64)]) {
+    for &(phase, t0, t1) in want {
+        let (s, e) = r.phase(phase);
+        assert!(
+            (s - t0).abs() < 1e-9 && (e - t1).abs() < 1e-9,
+            "{phase} [{s}, {e}], want [{t0}, {t1}]"
+        );
+    }
+}
