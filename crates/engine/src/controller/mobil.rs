@@ -70,10 +70,11 @@ impl MobilController {
     /// change is safe and worth it. The accelerations are those of the straightforward rule
     /// ([`Self::judge_each`] in the tests), computed in an order that stops early: a lane
     /// behind a mark not to be crossed costs no occupancy search, an occupied one no gap
-    /// search, a change unsafe for
-    /// the changer no search of the new follower, an unsafe one for the new follower no
-    /// weighing of the old follower (each leaves the verdict "no change"); and the free-road
-    /// term of a speed is evaluated once for all the leaders weighed at that speed.
+    /// search, a change unsafe for the changer no search of the new follower (each leaves the
+    /// verdict "no change"); the free-road term of a speed is evaluated once for all the
+    /// leaders weighed at that speed; and the followers are weighed first with bounds of their
+    /// free-road terms instead of the terms ([`settled_without_powers`]), which settle almost
+    /// every candidate.
     fn judge(&self, view: &ControllerView<'_>, own: &mut Own, b: &Beside) -> Option<Real> {
         // The mark first: a lane behind a mark not to be crossed costs no occupancy search
         // (either leaves the verdict "no change").
@@ -90,33 +91,23 @@ impl MobilController {
         if !self.mobil.safe_for_changer(own_after) {
             return None;
         }
-        let new_follower = view.follower_beside(b).map(|n| {
-            let vn = n.speed.max(0.0);
-            let free = p.free_acceleration(vn);
-            let before = lane_leader.map(|l| Leader {
-                gap: n.gap + len + l.gap,
-                speed: l.speed,
-            });
-            let behind_me = Leader {
-                gap: n.gap,
-                speed: v,
-            };
-            FollowerChange {
-                before: p.acceleration_with_free(free, vn, before),
-                after: p.acceleration_with_free(free, vn, Some(behind_me)),
-            }
-        });
+        let new_follower = view
+            .follower_beside(b)
+            .map(|n| Weighed::new_follower(p, n, v, len, lane_leader));
+        let own_change = FollowerChange {
+            before: own.a_c,
+            after: own_after,
+        };
+        if settled_without_powers(&self.mobil, p, view, own, own_change, new_follower, b) {
+            return None;
+        }
+        let new_follower = new_follower.map(|n| n.change(p));
         if new_follower.is_some_and(|n| !self.mobil.safe_for_follower(n.after)) {
             return None;
         }
-        let old_follower = *own
-            .old_follower
-            .get_or_insert_with(|| old_follower(p, view, v, len, own.leader));
+        let old_follower = own.old_follower(p, view).map(|o| o.change(p));
         let verdict = self.mobil.judge(&LaneChangeCandidate {
-            own: FollowerChange {
-                before: own.a_c,
-                after: own_after,
-            },
+            own: own_change,
             old_follower,
             new_follower,
             toward_keep_side: b.toward_keep_side,
@@ -181,8 +172,8 @@ struct Own {
     light: Option<Real>,
     /// a_c: the IDM acceleration behind the leader (or the light): also the command.
     a_c: Real,
-    /// The old follower's accelerations, once weighed.
-    old_follower: Option<Option<FollowerChange>>,
+    /// The old follower's interaction terms, once searched.
+    old_follower: Option<Option<Weighed>>,
 }
 
 impl Own {
@@ -211,31 +202,126 @@ fn to(g: Gap) -> Leader {
     }
 }
 
-/// The old follower o (module doc): behind the changer now, behind the changer's leader
-/// `leader` at gap g_o + length + g_c after the change; the changer at speed `v`, `len` long.
-fn old_follower(
-    p: &IdmParameters,
-    view: &ControllerView<'_>,
+impl Own {
+    /// The old follower o (module doc), searched once a step: behind the changer now, behind
+    /// the changer's leader at gap g_o + length + g_c after the change.
+    fn old_follower(&mut self, p: &IdmParameters, view: &ControllerView<'_>) -> Option<Weighed> {
+        let (v, len, leader) = (self.v, self.len, self.leader);
+        *self.old_follower.get_or_insert_with(|| {
+            view.follower().map(|o| {
+                let vo = o.speed.max(0.0);
+                let behind_me = Leader {
+                    gap: o.gap,
+                    speed: v,
+                };
+                let behind_leader = leader.map(|l| Leader {
+                    gap: o.gap + len + l.gap,
+                    speed: l.speed,
+                });
+                Weighed {
+                    v: vo,
+                    before: Some(p.interaction(vo, behind_me)),
+                    after: behind_leader.map(|l| p.interaction(vo, l)),
+                }
+            })
+        })
+    }
+}
+
+/// A follower MOBIL weighs: its speed (≥ 0) and the IDM's interaction terms before and after
+/// the change, at the changer's parameters (`None`: no leader, the free road).
+#[derive(Debug, Clone, Copy)]
+struct Weighed {
     v: Real,
-    len: Real,
-    leader: Option<Gap>,
-) -> Option<FollowerChange> {
-    view.follower().map(|o| {
-        let vo = o.speed.max(0.0);
-        let free = p.free_acceleration(vo);
-        let behind_me = Leader {
-            gap: o.gap,
-            speed: v,
-        };
+    before: Option<Real>,
+    after: Option<Real>,
+}
+
+impl Weighed {
+    /// The new follower n (module doc), `n` behind the changer in the target lane: behind the
+    /// lane's leader `leader` at gap g_n + length + g_l now, behind the changer (at speed `v`,
+    /// `len` long) at gap g_n after the change.
+    fn new_follower(p: &IdmParameters, n: Gap, v: Real, len: Real, leader: Option<Gap>) -> Self {
+        let vn = n.speed.max(0.0);
         let behind_leader = leader.map(|l| Leader {
-            gap: o.gap + len + l.gap,
+            gap: n.gap + len + l.gap,
             speed: l.speed,
         });
-        FollowerChange {
-            before: p.acceleration_with_free(free, vo, Some(behind_me)),
-            after: p.acceleration_with_free(free, vo, behind_leader),
+        let behind_me = Leader {
+            gap: n.gap,
+            speed: v,
+        };
+        Weighed {
+            v: vn,
+            before: behind_leader.map(|l| p.interaction(vn, l)),
+            after: Some(p.interaction(vn, behind_me)),
         }
-    })
+    }
+
+    /// Its accelerations, as [`IdmParameters::acceleration_with_free`] gives them.
+    fn change(&self, p: &IdmParameters) -> FollowerChange {
+        let free = p.free_acceleration(self.v);
+        FollowerChange {
+            before: self.before.map_or(free, |x| free - x),
+            after: self.after.map_or(free, |x| free - x),
+        }
+    }
+
+    /// Bounds of them in the same operations ([`IdmParameters::free_acceleration_bounds`]):
+    /// `before` at most the acceleration before, `after` at least the one after, so that
+    /// after − before is at least the follower's gain, as the rule computes it.
+    fn gain_bound(&self, p: &IdmParameters) -> FollowerChange {
+        let (lo, hi) = p.free_acceleration_bounds(self.v);
+        FollowerChange {
+            before: self.before.map_or(lo, |x| lo - x),
+            after: self.after.map_or(hi, |x| hi - x),
+        }
+    }
+}
+
+/// Whether the verdict on a candidate whose changer passed its safety criterion is "no
+/// change" for a reason known from the followers' interaction terms alone, without their
+/// free-road powers: the new follower unsafe by its bound, or the margin of MOBIL's own
+/// arithmetic ([`MobilParameters::judge`]) on the followers' bounds at most 0.
+///
+/// Why it settles only what the rule settles. Every operation of the rule is rounded to
+/// nearest, which is monotone: x ≤ x' gives fl(x − y) ≤ fl(x' − y), fl(y − x) ≥ fl(y − x'),
+/// fl(x + y) ≤ fl(x' + y), and fl(p·x) ≤ fl(p·x') for p ≥ 0 (NaN aside). A follower's
+/// accelerations are its free-road term f less its interaction terms, and
+/// [`Weighed::gain_bound`] computes them from f's bounds lo ≤ f ≤ hi in the same operations,
+/// so ã_n ≤ its bound's `after`, and ã − a ≤ the bound's after − before for both followers;
+/// the margin, ((ã_c − a_c) + p·(gain_n + gain_o)) − threshold, is then at most the same
+/// arithmetic on the bounds when the politeness p ≥ 0. Where the rule changes lanes, its
+/// numbers are not NaN (a NaN margin or acceleration fails its tests), so the chain holds:
+/// the new follower's ã_n ≥ −b_safe, so its bound is too, and the bounds' margin ≥ the
+/// rule's > 0, so neither test here settles the candidate. A bound that is NaN settles
+/// nothing ("<" and "≤" are false). Test: controller::mobil::tests::the_shortcut_gives_the_full_rule_bit_for_bit
+/// and the_bounds_settle_only_what_the_rule_refuses.
+fn settled_without_powers(
+    mobil: &MobilParameters,
+    p: &IdmParameters,
+    view: &ControllerView<'_>,
+    own: &mut Own,
+    own_change: FollowerChange,
+    new_follower: Option<Weighed>,
+    b: &Beside,
+) -> bool {
+    let new_follower = new_follower.map(|n| n.gain_bound(p));
+    if new_follower.is_some_and(|n| n.after < -mobil.safe_deceleration) {
+        return true;
+    }
+    // politeness NaN or negative: not monotone, nothing settled.
+    if mobil.politeness.is_nan() || mobil.politeness < 0.0 {
+        return false;
+    }
+    let old_follower = own.old_follower(p, view).map(|o| o.gain_bound(p));
+    let bound = mobil.judge(&LaneChangeCandidate {
+        own: own_change,
+        old_follower,
+        new_follower,
+        toward_keep_side: b.toward_keep_side,
+    });
+    bound.margin <= 0.0
 }
 
 impl Controller for MobilController {

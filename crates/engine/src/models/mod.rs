@@ -5,11 +5,13 @@
 //! | module | model |
 //! | --- | --- |
 //! | `idm` | Intelligent Driver Model (Treiber, Hennecke, Helbing 2000), ballistic integration |
+//! | `fourth_power` | the IDM's (v/v0)^δ at δ = 4 with the bits of libm's `pow`, mostly without calling it |
 //! | `mobil` | MOBIL lane-change decision (Kesting, Treiber, Helbing 2007) |
 //! | `acc` | adaptive cruise control, constant time gap, ISO 15622 limits |
 //! | `single_track` | pedals, gear and steering wheel → motion: kinematic single-track model |
 
 pub mod acc;
+mod fourth_power;
 pub mod idm;
 pub mod mobil;
 pub mod single_track;
