@@ -16,7 +16,7 @@
 //! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
-//! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal LaneChangeAction over T into the actor's own lane at that offset |
+//! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal offset change over T in the actor's own lane to k·W + c, W the lane's width where the actor is at each step (at the end: where it ends the phase) |
 //! | `lateral(d, side_of/left_of/right_of: x, at: end)` over a phase of duration T | projected: the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked; actual: the engine's sinusoidal blend to x's t at every step plus it (`lateral_end`) |
 //! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all, start or end | the engine's RelativeAccelerationAction: x's acceleration ± a in every step (at: all, end), or x's over the first step held (at: start) (`acceleration_follow`) |
 //! | `change_speed(v)` at the rate of such an `acceleration(…)`, at: start or all | the engine's RelativeAccelerationAction toward v at that rate, failing when v is not reached within the phase (`acceleration_follow`) |
@@ -36,19 +36,20 @@
 //! view's u = L − s, t and offsets to the actor's left, so what the plan writes for it is
 //! what the engine checks.
 //!
-//! Lanes are numbered (and lane widths taken) where the plan last knows the actor: a road whose
-//! lanes change between there and the run-time start may number them otherwise. A gap that
+//! Lanes are numbered where the plan last knows the actor (a road whose lanes change between
+//! there and the run-time start may number them otherwise); a lane's width, where the
+//! offset depends on it, is the engine's where it finds the actor. A gap that
 //! depends on another actor's speed (`position(time: t, …)`, or the default gap) is measured
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, PlanRoads, PrivateAction,
+    DynamicsShape, LateralAction, LongitudinalAction, OffsetInWidth, PlanRoads, PrivateAction,
     RateWithin, SpeedTarget, StateCheck, Travel, TravelGoal,
 };
 
 use super::action_args::timed;
 use super::lateral;
-use super::motion::{acceleration, check_speed, end_speed_mod, holds_speed, sinusoidal_over};
+use super::motion::{acceleration, check_speed, end_speed_mod, holds_speed};
 use super::planner::Planner;
 use super::route::StartOnRoute;
 use super::types::{
@@ -291,11 +292,13 @@ impl Planner<'_> {
 
     /// The engine's change of `target`'s offset in its lane to the one `m` (a `lateral(…, at:
     /// end)` without a lane change) asks for, over a phase of `len` s that starts on a run-time
-    /// condition, as the action `name`: a sinusoidal LaneChangeAction over `len` to the
-    /// actor's own lane (a RelativeTargetLane of 0 on itself) at that targetLaneOffset, so the
-    /// change starts from the offset the actor has then (a LaneOffsetAction gives no duration,
-    /// only a peak lateral acceleration, which depends on that offset). The lane's width is
-    /// taken where the plan last knows the actor.
+    /// condition, as the action `name`: oscsim's sinusoidal offset change over `len` within the
+    /// actor's own lane (`LateralAction::OffsetInWidth`, no XML form), from the offset the
+    /// actor has then (a LaneOffsetAction gives no duration, only a peak lateral acceleration,
+    /// which depends on that offset) to k·W + c, W the lane's width where the actor is at each
+    /// step, so at the end the width where it ends the phase (§8.9 `at: end`; from a border
+    /// the offset depends on it, from the centre k = 0). The plan's width where it last knows
+    /// the actor checks the arguments (the reference point in the lane).
     pub(super) fn start_offset_change(
         &self,
         m: &Modifier,
@@ -307,15 +310,13 @@ impl Planner<'_> {
         let w = self
             .road
             .lane_width(self.track(target).lane(t), self.s_at(target, t));
-        let o1 = lateral::lane_offset(m, w, self.width(target))?;
-        let change = LateralAction::LaneChange {
-            target_lane_offset: Some(o1),
-            dynamics: sinusoidal_over(len),
-            target: LaneChangeTarget::Relative {
-                entity_ref: target.to_string(),
-                value: 0,
-            },
-        };
+        let (per_width, offset) = lateral::offset_in_width(m, w, self.width(target))?;
+        let change = LateralAction::OffsetInWidth(Box::new(OffsetInWidth {
+            per_width,
+            offset,
+            shape: DynamicsShape::Sinusoidal,
+            duration: len,
+        }));
         Ok(Planned::with_phase(
             target,
             name,

@@ -1236,6 +1236,53 @@ fn a_lateral_offset_from_a_border_after_an_until_is_checked_in_the_lanes_width_t
     );
 }
 
+/// runtime_lateral_border_end.osc's comment, by hand: on a widening lane the target offset of
+/// `lateral(1.585m, measure_by: right_to_right, at: end)` after a run-time start is
+/// 0.835 − 0.005·s with the width where ego is, f·(0.835 − 0.005·s) on the way: −0.05 m at
+/// 4.35 s, −0.2 m at 5.35 s, 1.585 m from the right border then (the plan's width would end
+/// it at +0.335 m, 2.12 m from it).
+#[test]
+fn a_lateral_offset_from_a_border_at_the_end_after_an_until_takes_the_lanes_width_at_the_end() {
+    let r = super::support::run_on("runtime_lateral_border_end", "widening");
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.shift", 3.35, 5.35),
+            ("do.hold", 5.35, 6.35),
+        ],
+    );
+    let width = |s: f64| 3.5 + 0.01 * s;
+    // The engine foresees each step's end s at its speed along the road; the path's slope
+    // (the lane's centre's and the change's, below 0.01) shortens the step by less than
+    // 5e-5 of it: 1e-6 m of offset.
+    const FORESEEN: f64 = 1e-6;
+    for k in 0..=40 {
+        let t = 3.35 + 0.05 * f64::from(k);
+        let ego = r.at(t, "ego");
+        let f = (1.0 - (std::f64::consts::PI * (t - 3.35) / 2.0).cos()) / 2.0;
+        let want = -7.0 - width(ego.s) / 2.0 + f * (0.835 - 0.005 * ego.s);
+        assert!(
+            (ego.y - want).abs() < FORESEEN && ego.lane == -3,
+            "{t}: {ego:?}, want y {want}"
+        );
+    }
+    // The comment's figures (s within 1 cm of 20 m/s from 167 m: W within 1e-4 m).
+    for (t, s, y) in [(4.35, 187.0, -9.735), (5.35, 207.0, -9.985)] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.s - s).abs() < 1e-2 && (ego.y - y).abs() < 1e-4,
+            "{t}: {ego:?}"
+        );
+    }
+    // At the end ego's right side is 1.585 m from the lane's right border.
+    let ego = r.at(5.35, "ego");
+    let gap = (ego.y - 1.0) - (-7.0 - width(ego.s));
+    assert!((gap - 1.585).abs() < FORESEEN, "{gap}");
+    let t = r.when("do.hold/ego/1:check", "End").expect("the check ran");
+    assert!((t - 5.35).abs() < T_TOL, "check at {t}");
+}
+
 /// runtime_lateral_gap_off.osc's comment, by hand: a lateral gap of 5 m right of npc after a
 /// run-time start would put ego at t = −12.25 m, off the driving lanes: the engine's check at
 /// the phase start fails the run.

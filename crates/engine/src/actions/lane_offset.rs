@@ -12,13 +12,22 @@
 //! relative target is read once, at the start: with `continuous="true"` the offset is not
 //! kept relative to a reference that moves on (the 1.0 model documentation's "continuously
 //! kept lane offset"; not done).
+//!
+//! oscsim's offset change in the lane's width (`LateralAction::OffsetInWidth`, no XML form; the
+//! DSL runtime's `lateral(d, measure_by: …, at: end)` from a border of the lane over a phase
+//! that starts on a run-time condition, ASAM OpenSCENARIO DSL 2.1 §8.9: "at: end" the
+//! constraint holds at the end of the phase) aims at k·W + c from the lane's centre, W the
+//! lane's width where the actor is: read at each step's end (`lane_change::step`), the
+//! sinusoid's target moves with the width, t(τ) = centre(s) + (1 − f)·o₀ + f·(k·W(s) + c),
+//! so at the end the offset is the one the lane's width there asks for. A 1.x LaneOffsetAction
+//! reads its target once, and the plan cannot know where a run-time phase ends.
 
 use scenario::{
-    DynamicsDimension, DynamicsShape, LaneOffsetTarget, LateralAction, SourcePos,
+    DynamicsDimension, DynamicsShape, LaneOffsetTarget, LateralAction, OffsetInWidth, SourcePos,
     TransitionDynamics,
 };
 
-use super::lane_change::begin;
+use super::lane_change::{begin, lane_track, InWidth};
 use super::Part;
 use crate::error::Error;
 use crate::store::targets::entity_ref;
@@ -57,13 +66,7 @@ pub(crate) fn start(
         _ => return Err(Error::unsupported("this LaneOffsetTarget", pos)),
     };
     let e = world.entity(actor);
-    let Some(track) = &e.track else {
-        return Err(Error::at(
-            "an actor on a lane",
-            format!("'{}' off the road", e.name),
-            pos,
-        ));
-    };
+    let track = lane_track(e, pos)?;
     let lane = e
         .road_position
         .as_ref()
@@ -88,4 +91,47 @@ pub(crate) fn start(
         following_mode: None,
     };
     begin(world, actor, lane, offset, &dynamics, now, *continuous, pos)
+}
+
+/// Starts oscsim's offset change in the lane's width `w` (`LateralAction::OffsetInWidth`) on
+/// `actor` at `now`: a change within its own lane over the duration, from the offset it has,
+/// to k·W + c with the width W of its lane where it is (then at each step, `lane_change::step`).
+pub(crate) fn start_in_width(
+    world: &mut World,
+    actor: EntityId,
+    w: &OffsetInWidth,
+    now: f64,
+    pos: &SourcePos,
+) -> Result<Part, Error> {
+    if !(w.duration > 0.0 && w.duration.is_finite()) {
+        return Err(Error::at(
+            "a duration above 0 s",
+            format!("{} s", w.duration),
+            pos,
+        ));
+    }
+    let track = lane_track(world.entity(actor), pos)?;
+    let lane = track.lane_id;
+    let width = world
+        .network
+        .road_at(track.road)
+        .lane_span(lane, track.s)
+        .map_err(|err| Error::at("the actor's lane at its s", err.to_string(), pos))?
+        .width();
+    let offset = w.per_width * width + w.offset;
+    let dynamics = TransitionDynamics {
+        dynamics_shape: w.shape,
+        dynamics_dimension: DynamicsDimension::Time,
+        value: w.duration,
+        following_mode: None,
+    };
+    let mut part = begin(world, actor, lane, offset, &dynamics, now, false, pos)?;
+    if let Part::Lateral(state) = &mut part {
+        state.in_width = Some(InWidth {
+            per_width: w.per_width,
+            offset: w.offset,
+            last: offset,
+        });
+    }
+    Ok(part)
 }

@@ -531,6 +531,9 @@ impl Host<'_> {
                     LateralAction::LaneChangeAt(at) => {
                         lane_change::start_at(self.world, actor, at, time, pos)
                     }
+                    LateralAction::OffsetInWidth(w) => {
+                        lane_offset::start_in_width(self.world, actor, w, time, pos)
+                    }
                     LateralAction::LaneOffset { .. } => {
                         lane_offset::start(self.world, actor, l, time, pos)
                     }

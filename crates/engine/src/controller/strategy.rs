@@ -34,7 +34,9 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
                 LateralAction::LaneChange { .. } | LateralAction::LaneChangeAt(_) => {
                     "LaneChangeAction"
                 }
-                LateralAction::LaneOffset { .. } => "LaneOffsetAction",
+                LateralAction::LaneOffset { .. } | LateralAction::OffsetInWidth(_) => {
+                    "LaneOffsetAction"
+                }
                 _ => "LateralDistanceAction",
             },
         ),

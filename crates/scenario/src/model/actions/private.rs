@@ -469,6 +469,27 @@ pub enum LateralAction {
     /// condition, §8.8.2.11): a LaneChangeAction in the distance dimension over the distance
     /// along the actor's lane from where it is when the action starts to `s`.
     LaneChangeAt(Box<LaneChangeAt>),
+    /// oscsim's change of the actor's offset in its own lane to one affine in the lane's
+    /// width, an action with no XML form (the DSL runtime writes it for ASAM OpenSCENARIO DSL
+    /// 2.1 `lateral(d, measure_by: …, at: end)` measured from a border of the lane, over a
+    /// phase that starts on a run-time condition, §8.9): the target offset k·W + c is read
+    /// with the lane's width W where the actor is at each step, so it holds with the width
+    /// where the actor is at the end.
+    OffsetInWidth(Box<OffsetInWidth>),
+}
+
+/// What oscsim's offset change in the lane's width ([`LateralAction::OffsetInWidth`]) aims at
+/// and how long it takes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OffsetInWidth {
+    /// k of the target offset k·W + c from the lane's centre (m per m of width, + left).
+    pub per_width: f64,
+    /// c of the target offset k·W + c (m, + left).
+    pub offset: f64,
+    /// The transition's shape.
+    pub shape: DynamicsShape,
+    /// Its duration (s).
+    pub duration: f64,
 }
 
 /// What oscsim's lane change to a place along the road ([`LateralAction::LaneChangeAt`])
