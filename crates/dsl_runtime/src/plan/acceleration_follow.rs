@@ -10,7 +10,9 @@
 //! the phase", §8.9.1.1.1) is x's acceleration at the phase end ± a: the engine follows x
 //! (as at: all), so the actor's acceleration is x's ± a in the phase's last step whatever x
 //! does; with `track: actual` "the vehicle reacts to the behavior of the referenced vehicle"
-//! (§8.9.1.1.3), and no constant acceleration chosen at the start could know x's at the end. At a known start the plan tracks the actor along x's pieces of constant
+//! (§8.9.1.1.3), and no constant acceleration chosen at the start could know x's at the end.
+//! So is the rate of a speed change beside it at: end after a run-time start
+//! (`relative_rate_at_run_time`). At a known start the plan tracks the actor along x's pieces of constant
 //! planned acceleration (a linear change per piece, each within the limits); after a run-time
 //! start it does not know the actor's speed (as after any change the engine works out then).
 
@@ -71,20 +73,24 @@ impl Planner<'_> {
     }
 
     /// The engine's speed change to `v1` within the phase's `len` s at the rate of `q`, an
-    /// `acceleration(a, faster_than/slower_than/same_as: x)` at: start or all, in a phase that
-    /// starts on a run-time condition (`t` `None`): oscsim's RelativeAccelerationAction with
-    /// `to_speed`, the rate |x's acceleration ± a| as the engine reads it (at: start over the
-    /// phase's first step, held; at: all in every step of the change), toward v1, ending there;
-    /// not reached within `len` s, the run's error then. `None` for anything else (a start the
-    /// plan knows, an acceleration of its own, at: end or `track: projected`, whose errors
-    /// `acceleration_value` gives).
+    /// `acceleration(a, faster_than/slower_than/same_as: x)`, in a phase that starts on a
+    /// run-time condition (`t` `None`): oscsim's RelativeAccelerationAction with `to_speed`,
+    /// the rate |x's acceleration ± a| as the engine reads it (at: start over the phase's first
+    /// step, held; at: all and at: end in every step of the change), toward v1, ending there;
+    /// not reached within `len` s, the run's error then. At: end is x's acceleration "at the
+    /// end of the phase" (§8.9.1.1.1), which a change running from the phase start cannot read
+    /// before it is there: the change reacts to x instead (§8.9.1.1.3, `track: actual`), its
+    /// rate x's then ± a in each of its steps, so in its last step x's then, and x's at the end
+    /// wherever x's acceleration holds over the change (the plan's reading at a known start).
+    /// `None` for anything else (a start the plan knows, an acceleration of its own, or `track:
+    /// projected`, whose errors `acceleration_value` gives).
     pub(super) fn relative_rate_at_run_time(
         &self,
         q: Option<&Modifier>,
         t: Option<f64>,
         (v1, len): (f64, f64),
     ) -> Result<Option<PrivateAction>, Error> {
-        let Some(q) = q.filter(|q| t.is_none() && q.at != At::End && !q.projected) else {
+        let Some(q) = q.filter(|q| t.is_none() && !q.projected) else {
             return Ok(None);
         };
         let Some((x, delta, _)) = self.followed_acceleration(q, (t, len))? else {
@@ -94,7 +100,7 @@ impl Planner<'_> {
             LongitudinalAction::RelativeAcceleration {
                 entity_ref: x,
                 value: delta,
-                continuous: q.at == At::All,
+                continuous: q.at != At::Start,
                 to_speed: Some(Box::new(SpeedChange {
                     what: format!("{}(…) at {}", q.name, q.site.at()),
                     speed: v1,

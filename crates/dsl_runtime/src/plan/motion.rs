@@ -186,8 +186,9 @@ impl Planner<'_> {
     /// actor's acceleration relative to x's): `faster_than: x` x's + a, `slower_than: x`
     /// x's − a, `same_as: x` x's. x's is its value as the phase starts (`at: start`), as it
     /// ends (`at: end`), or the one it keeps over the whole phase (`at: all`, the default;
-    /// where x's changes within the phase, or the phase starts at run time, alone it is the
-    /// engine's to follow, `followed_acceleration`; as the rate of a speed change an error).
+    /// where x's changes within the phase it is the engine's to follow alone,
+    /// `followed_acceleration`, and as the rate of a speed change an error). After a run-time
+    /// start the engine reads it in every form (`acceleration_follow`).
     pub(super) fn acceleration_value(
         &self,
         m: &Modifier,
@@ -216,12 +217,12 @@ impl Planner<'_> {
                 format!("expected track: actual for an acceleration relative to `{x}`, found projected (oscsim projects `{x}` at the speed it has at the phase start, which has no acceleration to be relative to: write acceleration(a))"),
             ));
         }
-        // After a run-time start the engine reads x's acceleration (`acceleration_follow`);
-        // as the rate of a speed change at: end it has no moment to be read at.
+        // After a run-time start the engine reads x's acceleration (`acceleration_follow`,
+        // which takes every reading of it before this one).
         let Some(t) = t0 else {
             return Err(e.site.err(
                 K::Unsatisfiable,
-                format!("expected at: start or at: all for an acceleration relative to `{x}` as the rate of a speed change in a phase that starts on a run-time condition, found at: end: that is `{x}`'s acceleration \"at the end of the phase\" (§8.9.1.1.1), and the change runs at its rate from the phase start, before that acceleration is there to read (at a start the plan knows, the plan reads it from `{x}`'s planned track)"),
+                format!("expected a phase start the plan knows to read `{x}`'s planned acceleration, found one after a run-time condition"),
             ));
         };
         let pieces = self.track(&x).acceleration_pieces(t, t + len).map_err(|at| {

@@ -791,16 +791,29 @@ fn speed_changes_at_the_rate_of_another_actors_acceleration_after_an_until_are_t
     );
 }
 
-/// The rate of a speed change relative to lead's acceleration at: end after a run-time start
-/// is an error at the reference, in the standard's words (err_rate_relative_end_runtime.osc).
+/// runtime_acceleration_rate_relative_end.osc's comment, by hand: ego's change to 15 m/s at
+/// lead's acceleration − 1 at: end reads lead's in each step: 2 m/s² while lead brakes at 1,
+/// 3 m/s² after; done at 5.35 s.
 #[test]
-fn the_rate_of_a_speed_change_relative_to_another_at_the_end_after_an_until_is_an_error() {
-    let e = super::support::error("err_rate_relative_end_runtime");
-    assert!(
-        e.starts_with("expected at: start or at: all for an acceleration relative to `lead` as the rate of a speed change in a phase that starts on a run-time condition, found at: end: that is `lead`'s acceleration \"at the end of the phase\" (§8.9.1.1.1)")
-            && e.contains("err_rate_relative_end_runtime.osc:21:50"),
-        "{e}"
+fn the_rate_of_a_speed_change_relative_to_another_at_the_end_after_an_until_follows_it() {
+    let r = run("runtime_acceleration_rate_relative_end", 0, None);
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.brake", 3.35, 6.35)]);
+    ego_speeds(
+        &r,
+        &[
+            (3.35, 20.0),
+            (3.85, 19.0),
+            (4.35, 18.0),
+            (4.85, 16.5),
+            (5.35, 15.0),
+            (5.85, 15.0),
+            (6.35, 15.0),
+        ],
     );
+    for (t, v) in [(4.35, 7.0), (5.35, 5.0), (6.35, 3.0)] {
+        let lead = r.at(t, "lead");
+        assert!((lead.speed - v).abs() < V_TOL, "{t}: {lead:?}");
+    }
 }
 
 /// runtime_keep_lateral_gap.osc's comment, by hand: the lateral gap ego keeps to npc after a
