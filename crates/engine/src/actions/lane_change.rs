@@ -352,7 +352,12 @@ pub(crate) fn step(
             // sin θ = lateral speed Δ·f′/T over the speed (at most 1: sideways, where tan θ
             // stays finite in f64); no heading change at a standstill.
             let sin = if speed * dt > LENGTH_EPSILON {
-                ((s.delta * df / t + f * target_rate) / speed).clamp(-1.0, 1.0)
+                match s.in_width {
+                    // The target's own rate adds to the blend's (its weight f).
+                    Some(_) => (s.delta * df / t + f * target_rate) / speed,
+                    None => s.delta * df / (t * speed),
+                }
+                .clamp(-1.0, 1.0)
             } else {
                 0.0
             };
