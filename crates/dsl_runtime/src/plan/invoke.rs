@@ -723,6 +723,22 @@ impl Planner<'_> {
                     (ModKind::Lane, At::End) | (ModKind::ChangeLane, _) => {
                         let (t, len) = need_len("a lane change")?;
                         let (target_lane, planned) = self.lane_target(m, target, t, len)?;
+                        // Beside another actor after a run-time start: the engine finds the
+                        // lane holding the t asked, and checks the change's lane at the end.
+                        if let Some(q) = lateral_end(mods).filter(|_| t.is_none()) {
+                            let n = (name("lateral"), name("lane"));
+                            let io = (&mut *out, &mut *after);
+                            if self.beside_with_lane_change(
+                                q,
+                                (m, target_lane.clone()),
+                                target,
+                                len,
+                                n,
+                                io,
+                            )? {
+                                continue;
+                            }
+                        }
                         // lateral(…, at: end): the offset in the target lane.
                         let offset = match (lateral_end(mods), planned) {
                             (Some(q), Some(l)) => Some(self.end_offset_in(q, target, l, t, len)?),

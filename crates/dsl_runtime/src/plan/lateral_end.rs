@@ -20,10 +20,17 @@
 //! `actions::lateral_follow`): t(τ) = (1 − f)·t₀ + f·(t_x(τ) + d), f the sinusoid over the
 //! phase, so the actor ends at x's t at the phase end plus d. A modifier that keeps the lane
 //! beside it (`keep_lane()`, `lane(…)` at: all) is the engine's check at the phase end that
-//! the actor is in the lane kept (`runtime_end`); a lane change of the phase is an error.
+//! the actor is in the lane kept (`runtime_end`). Beside a lane change of the phase
+//! (`change_lane(n, side)`, `lane(n, at: end)`) the same action, and the engine's check at the
+//! phase end that the actor is in the change's target lane (`change_lane`: n lanes to its side
+//! of the lane it had at the start, which a mark notes; `lane(n)`: that lane): the lane the t
+//! asked lies in is the engine's to find, and a t outside the change's lane an error record.
 
-use scenario::{DynamicsShape, LaneChangeTarget, LaneOffsetTarget, LateralAction, PrivateAction};
+use scenario::{
+    DynamicsShape, LaneChangeTarget, LaneOffsetTarget, LateralAction, PrivateAction, StateCheck,
+};
 
+use super::lateral;
 use super::motion::{check_accel, sinusoid_peak_acceleration, sinusoidal_over};
 use super::planner::Planner;
 use super::types::Planned;
@@ -168,6 +175,56 @@ impl Planner<'_> {
             ));
         }
         Ok(())
+    }
+
+    /// `q`, a `lateral(…, at: end)` beside another actor, beside the lane change `c` (its
+    /// target `lane`) of `target` after a run-time start, over `len` s (`names`: the lateral
+    /// action and the lane check): the engine's move beside x (`beside_after_runtime_start`),
+    /// and its check at the phase end (in `after`) that the actor is in the change's target
+    /// lane: for `change_lane` n lanes to its side of the lane it had at the start (a mark
+    /// notes it then), for `lane(n, at: end)` that lane. `false` when `q` has no reference
+    /// (an offset in the lane, planned with the change); a lane relative to another actor is
+    /// an error at `c`.
+    pub(super) fn beside_with_lane_change(
+        &self,
+        q: &Modifier,
+        (c, lane): (&Modifier, LaneChangeTarget),
+        target: &str,
+        len: f64,
+        (lateral_name, lane_name): (String, String),
+        (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
+    ) -> Result<bool, Error> {
+        if lateral::reference(q)?.is_none() {
+            return Ok(false);
+        }
+        let check = match lane {
+            LaneChangeTarget::Relative { entity_ref, value } if entity_ref == target => {
+                out.push(self.mark_check(c, target, lane_name.clone(), None));
+                StateCheck {
+                    lane_at_mark: Some((lane_name.clone(), value)),
+                    ..StateCheck::default()
+                }
+            }
+            LaneChangeTarget::Absolute(l) => {
+                let l = l.parse().map_err(|_| {
+                    c.site
+                        .err(K::Value, format!("expected a lane id of the road, found `{l}`"))
+                })?;
+                StateCheck {
+                    lane: Some((self.road.id().to_string(), l)),
+                    ..StateCheck::default()
+                }
+            }
+            _ => {
+                return Err(c.site.err(
+                    K::Unsupported,
+                    format!("expected a lane of `{target}`'s own (change_lane(n, side), lane(n)) beside lateral(…, at: end) at {} after a run-time start, found one relative to another actor", q.site.at()),
+                ))
+            }
+        };
+        self.beside_after_runtime_start(q, target, len, lateral_name, out)?;
+        after.push(self.end_check(c, target, format!("{lane_name}.end"), check));
+        Ok(true)
     }
 
     /// `m` beside x after a run-time start, over `len` s: with `track: projected` the engine's

@@ -280,7 +280,7 @@ impl Planner<'_> {
             ModKind::KeepLane => {
                 out.push(self.mark_check(k, target, name.clone(), None));
                 StateCheck {
-                    lane_at_mark: Some(name.clone()),
+                    lane_at_mark: Some((name.clone(), 0)),
                     ..StateCheck::default()
                 }
             }

@@ -145,6 +145,16 @@ fn phases(r: &super::support::Run, want: &[(&str, f64, f64)]) {
     }
 }
 
+/// Each (element, time) of `want` ended then (a check that passed).
+fn ran_at(r: &super::support::Run, want: &[(&str, f64)]) {
+    for &(check, t) in want {
+        let at = r
+            .when(check, "End")
+            .unwrap_or_else(|| panic!("{check} ran"));
+        assert!((at - t).abs() < T_TOL, "{check} at {at}");
+    }
+}
+
 /// ego's speed at each (time, m/s) of `want`, exact up to float round-off.
 fn ego_speeds(r: &super::support::Run, want: &[(f64, f64)]) {
     for &(t, v) in want {
@@ -866,16 +876,14 @@ fn distances_and_gaps_without_a_duration_after_an_until_are_measured_from_the_ph
     // do.hold and do.keep: the checks at their ends ran and passed.
     assert!((s(15.35) - 307.0).abs() < S_TOL && (v(15.35) - 8.0).abs() < V_TOL);
     assert!((s(17.35) - 323.0).abs() < S_TOL);
-    for (check, t) in [
-        ("do.hold/ego/2:distance.end", 15.35),
-        ("do.keep/ego/2:position.end", 17.35),
-        ("do.match/ego/3:position.speed", 19.35),
-    ] {
-        let at = r
-            .when(check, "End")
-            .unwrap_or_else(|| panic!("{check} ran"));
-        assert!((at - t).abs() < T_TOL, "{check} at {at}");
-    }
+    ran_at(
+        &r,
+        &[
+            ("do.hold/ego/2:distance.end", 15.35),
+            ("do.keep/ego/2:position.end", 17.35),
+            ("do.match/ego/3:position.speed", 19.35),
+        ],
+    );
     // do.match: 8 → 2.8 → 10 m/s, ending 20 m behind lead.
     assert!((v(18.35) - 2.8).abs() < V_TOL, "{}", v(18.35));
     let (ego, lead) = (r.at(19.35, "ego"), r.at(19.35, "lead"));
@@ -984,16 +992,14 @@ fn a_lane_kept_beside_a_lateral_position_beside_a_moving_actor_after_an_until_is
         let ego = r.at(t, "ego");
         assert!((ego.y - y).abs() < S_TOL && ego.lane == -2, "{t}: {ego:?}");
     }
-    for (check, t) in [
-        ("do.shift.0/ego/1:lane.end", 5.35),
-        ("do.hold.0/ego/1:lane.end", 6.35),
-        ("do.hold.0/ego/3:check", 5.35),
-    ] {
-        let at = r
-            .when(check, "End")
-            .unwrap_or_else(|| panic!("{check} ran"));
-        assert!((at - t).abs() < T_TOL, "{check} at {at}");
-    }
+    ran_at(
+        &r,
+        &[
+            ("do.shift.0/ego/1:lane.end", 5.35),
+            ("do.hold.0/ego/1:lane.end", 6.35),
+            ("do.hold.0/ego/3:check", 5.35),
+        ],
+    );
 }
 
 /// runtime_lateral_keep_lane_fails.osc's comment, by hand: npc moves 1 m left, ego 5.5 m left
@@ -1007,6 +1013,74 @@ fn a_lane_not_kept_beside_a_lateral_position_beside_a_moving_actor_after_an_unti
             "runtime_lateral_keep_lane_fails.osc:28:17), found it in lane -1 of road 1 at t = 5.350 s",
         ),
         "do.shift.0/ego/1:lane.end",
+        5.35,
+    );
+}
+
+/// runtime_lateral_beside_lane_change.osc's comment, by hand: beside change_lane(side: left)
+/// ego follows npc's t plus 5.5 m, t = -5.25 + 2f + f², into lane -1; beside lane(2, at: end)
+/// it changes to npc's projected t plus 3 m, t = -2.25 - 2.5f, into lane -2; both lanes
+/// checked at the phase ends.
+#[test]
+fn a_lane_change_beside_a_lateral_position_beside_another_actor_after_an_until_is_checked_at_the_end(
+) {
+    let r = run("runtime_lateral_beside_lane_change", 0, None);
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.shift", 3.35, 5.35),
+            ("do.back", 5.35, 7.35),
+        ],
+    );
+    let f = |tau: f64| (1.0 - (std::f64::consts::PI * tau / 2.0).cos()) / 2.0;
+    for k in 0..=40 {
+        let t = 3.35 + 0.05 * f64::from(k);
+        let g = f(t - 3.35);
+        let want = -5.25 + 2.0 * g + g * g;
+        let ego = r.at(t, "ego");
+        assert!((ego.y - want).abs() < S_TOL, "{t}: {ego:?}, want {want}");
+        let want = -2.25 - 2.5 * f(t - 3.35);
+        let ego = r.at(t + 2.0, "ego");
+        assert!(
+            (ego.y - want).abs() < S_TOL,
+            "{}: {ego:?}, want {want}",
+            t + 2.0
+        );
+    }
+    // At 6.35 s ego is on the border of lanes -1 and -2 (t = -3.5 m).
+    for (t, y, lane) in [
+        (4.35, -4.0, Some(-2)),
+        (5.35, -2.25, Some(-1)),
+        (6.35, -3.5, None),
+        (7.35, -4.75, Some(-2)),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.y - y).abs() < S_TOL && lane.is_none_or(|l| ego.lane == l),
+            "{t}: {ego:?}"
+        );
+    }
+    ran_at(
+        &r,
+        &[
+            ("do.shift.0/ego/2:lane.end", 5.35),
+            ("do.back.0/ego/2:lane.end", 7.35),
+        ],
+    );
+}
+
+/// runtime_lateral_beside_lane_change_fails.osc's comment, by hand: ego ends at t = -2.25 m in
+/// lane -1 where change_lane(side: right) asks lane -3.
+#[test]
+fn a_lane_change_not_where_a_lateral_position_beside_another_actor_puts_it_fails_the_run() {
+    fails(
+        "runtime_lateral_beside_lane_change_fails",
+        (
+            "expected 'ego' in lane -3 of road 1, 1 lane to the right of its lane -2 at the phase start (change_lane(…) at the phase end at ",
+            "runtime_lateral_beside_lane_change_fails.osc:28:17), found it in lane -1 of road 1 at t = 5.350 s",
+        ),
+        "do.shift.0/ego/2:lane.end",
         5.35,
     );
 }

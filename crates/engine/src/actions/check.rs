@@ -300,19 +300,27 @@ fn require(
             ));
         }
     }
-    if let Some(mark) = &check.lane_at_mark {
-        let Some((road, lane)) = world.marks.get(mark).and_then(|m| m.lane.clone()) else {
+    if let Some((mark, shift)) = &check.lane_at_mark {
+        let Some((road, from)) = world.marks.get(mark).and_then(|m| m.lane.clone()) else {
             return Err(fail(
                 format!("the mark '{mark}' noted on a lane"),
                 "none".into(),
             ));
         };
+        let direction = e.track.as_ref().map_or(Direction::Forward, |t| t.direction);
+        let lane = lane_shift(from, *shift, direction);
         if at.road_id != road || at.lane_id != lane {
-            return Err(fail(
-                format!(
-                    "'{}' in lane {lane} of road {road}, its lane at the phase start",
-                    e.name
+            let of = match shift {
+                0 => "its lane at the phase start".to_string(),
+                n => format!(
+                    "{} lane{} to the {} of its lane {from} at the phase start",
+                    n.abs(),
+                    if n.abs() == 1 { "" } else { "s" },
+                    if *n > 0 { "left" } else { "right" }
                 ),
+            };
+            return Err(fail(
+                format!("'{}' in lane {lane} of road {road}, {of}", e.name),
                 format!("it in lane {} of road {}", at.lane_id, at.road_id),
             ));
         }

@@ -63,10 +63,12 @@ pub struct StateCheck {
     /// left (right when negative) of that entity's lane, counted as a LaneChangeAction's
     /// RelativeTargetLane counts them (in the entity's direction of travel, skipping lane 0).
     pub lane_of: Option<(String, i32)>,
-    /// A mark noted before on the actor: the actor must be in the lane it was in then (its
-    /// road and lane id; ASAM OpenSCENARIO DSL 2.1 §8.9 `keep_lane()` at the end of a phase
-    /// that starts on a run-time condition, where the plan does not know that lane).
-    pub lane_at_mark: Option<String>,
+    /// A mark noted before on the actor and a lane count: the actor must be on the road it
+    /// was on then, in the lane that many lanes to the left (right when negative) of the lane
+    /// it was in, counted as a RelativeTargetLane counts them (ASAM OpenSCENARIO DSL 2.1 §8.9
+    /// `keep_lane()` (0), `change_lane(n, side)` at the end of a phase that starts on a
+    /// run-time condition, where the plan does not know that lane).
+    pub lane_at_mark: Option<(String, i32)>,
     /// The actor's s on that road (m, its reference point) and the tolerance (m).
     pub s: Option<(f64, f64)>,
     /// The actor's lateral offset from its lane's centre (m, positive left) and the tolerance
