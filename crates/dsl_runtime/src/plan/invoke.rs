@@ -738,6 +738,11 @@ impl Planner<'_> {
                             )? {
                                 continue;
                             }
+                            // In the lane: the offset in the target lane's width where the
+                            // actor ends the phase (the engine's, `start_offset_change`).
+                            let lane = (Some(target_lane), planned, len);
+                            out.push(self.start_offset_change(q, target, lane, name("lane"))?);
+                            continue;
                         }
                         // lateral(…, at: end): the offset in the target lane.
                         let offset = match (lateral_end(mods), planned) {
@@ -860,7 +865,8 @@ impl Planner<'_> {
                         let Some(t) = t else {
                             // After a run-time start the offset the actor starts from is the
                             // engine's: a change over the phase within its own lane.
-                            out.push(self.start_offset_change(m, target, len, name("lateral"))?);
+                            let lane = (None, None, len);
+                            out.push(self.start_offset_change(m, target, lane, name("lateral"))?);
                             continue;
                         };
                         let tr = self.track(target);

@@ -43,8 +43,8 @@
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    DynamicsShape, LateralAction, LongitudinalAction, OffsetInWidth, PlanRoads, PrivateAction,
-    RateWithin, SpeedTarget, StateCheck, Travel, TravelGoal,
+    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, OffsetInWidth, PlanRoads,
+    PrivateAction, RateWithin, SpeedTarget, StateCheck, Travel, TravelGoal,
 };
 
 use super::action_args::timed;
@@ -297,21 +297,25 @@ impl Planner<'_> {
     /// actor has then (a LaneOffsetAction gives no duration, only a peak lateral acceleration,
     /// which depends on that offset) to k·W + c, W the lane's width where the actor is at each
     /// step, so at the end the width where it ends the phase (§8.9 `at: end`; from a border
-    /// the offset depends on it, from the centre k = 0). The plan's width where it last knows
-    /// the actor checks the arguments (the reference point in the lane).
+    /// the offset depends on it, from the centre k = 0). Beside a lane change of the phase
+    /// (`lane`, numbered `planned` where the plan last knows the actor) the same into its
+    /// target lane, in that lane's width. The plan's width where it last knows the actor checks
+    /// the arguments (the reference point in the lane).
     pub(super) fn start_offset_change(
         &self,
         m: &Modifier,
         target: &str,
-        len: f64,
+        (lane, planned, len): (Option<LaneChangeTarget>, Option<i32>, f64),
         name: String,
     ) -> Result<Planned, Error> {
         let t = self.last_known();
-        let w = self
-            .road
-            .lane_width(self.track(target).lane(t), self.s_at(target, t));
+        let w = self.road.lane_width(
+            planned.unwrap_or_else(|| self.track(target).lane(t)),
+            self.s_at(target, t),
+        );
         let (per_width, offset) = lateral::offset_in_width(m, w, self.width(target))?;
         let change = LateralAction::OffsetInWidth(Box::new(OffsetInWidth {
+            lane,
             per_width,
             offset,
             shape: DynamicsShape::Sinusoidal,

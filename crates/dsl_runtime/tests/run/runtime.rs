@@ -1370,6 +1370,59 @@ fn a_lateral_offset_from_a_border_at_the_end_after_an_until_takes_the_lanes_widt
     assert!((t - 5.35).abs() < T_TOL, "check at {t}");
 }
 
+/// runtime_lateral_border_lane_change.osc's comment, by hand: lane(1, at: end) beside
+/// `lateral(1.585m, measure_by: right_to_right, at: end)` after a run-time start blends from
+/// lane -2's centre into lane -3 at 0.835 − 0.005·s from its centre, in the width where ego
+/// is: t = (1 − f)·(−5.25) + f·(−7.915 − 0.01·s), −9.985 m at 5.35 s, 1.585 m from the border.
+#[test]
+fn a_lane_change_beside_a_lateral_offset_from_a_border_after_an_until_takes_the_lanes_width_at_the_end(
+) {
+    let r = super::support::run_on("runtime_lateral_border_lane_change", "widening");
+    phases(
+        &r,
+        &[
+            ("do.approach", 0.0, 3.35),
+            ("do.shift", 3.35, 5.35),
+            ("do.hold", 5.35, 6.35),
+        ],
+    );
+    // The step's end s foreseen at its speed and the sideways share of the step before: across
+    // lanes the heading reaches 0.2 rad, and the share's change over a step leaves the
+    // foreseen s up to 1e-3 m off, 5e-6 m of offset (k·W′·Δs); at the end the heading is 0.
+    const FORESEEN_TURNING: f64 = 1e-5;
+    const FORESEEN: f64 = 1e-6;
+    for k in 0..=40 {
+        let t = 3.35 + 0.05 * f64::from(k);
+        let ego = r.at(t, "ego");
+        let f = (1.0 - (std::f64::consts::PI * (t - 3.35) / 2.0).cos()) / 2.0;
+        let want = (1.0 - f) * -5.25 + f * (-7.915 - 0.01 * ego.s);
+        assert!(
+            (ego.y - want).abs() < FORESEEN_TURNING,
+            "{t}: {ego:?}, want y {want}"
+        );
+    }
+    // The comment's figures: across the lanes ego's path is longer than the road's s, which
+    // gains up to 0.35 m less than 20 m/s gives (the heading up to 0.18 rad): s within 0.4 m,
+    // y within 0.01·0.4 = 4 mm of the figures at 187 and 207 m.
+    for (t, s, y) in [(4.35, 187.0, -7.5175), (5.35, 207.0, -9.985)] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.s - s).abs() < 0.4 && (ego.y - y).abs() < 4e-3,
+            "{t}: {ego:?}"
+        );
+    }
+    let ego = r.at(5.35, "ego");
+    let gap = (ego.y - 1.0) - (-7.0 - (3.5 + 0.01 * ego.s));
+    assert!(
+        (gap - 1.585).abs() < FORESEEN && ego.lane == -3,
+        "{gap} {ego:?}"
+    );
+    ran_at(
+        &r,
+        &[("do.hold/ego/1:check", 5.35), ("do.hold/ego/2:check", 5.35)],
+    );
+}
+
 /// runtime_lateral_gap_off.osc's comment, by hand: a lateral gap of 5 m right of npc after a
 /// run-time start would put ego at t = −12.25 m, off the driving lanes: the engine's check at
 /// the phase start fails the run.

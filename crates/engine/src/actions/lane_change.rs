@@ -318,12 +318,16 @@ pub(crate) fn step(
     dt: f64,
 ) -> ActionStatus {
     // A target in the lane's width moves with the width where the actor ends the step.
-    let target_rate = match s.in_width.as_mut() {
-        Some(w) => aim_in_width(world, actor, w, dt).map_or(0.0, |(delta, rate)| {
-            s.delta = delta;
-            rate
-        }),
-        None => 0.0,
+    let target_rate = match (s.in_width.as_mut(), s.span) {
+        (Some(w), Span::Time(t)) => {
+            let (_, df) = shape_value(s.shape, progress(s.span, now + dt - s.start_time, 0.0));
+            let share = s.delta * df / t;
+            aim_in_width(world, actor, w, (dt, share)).map_or(0.0, |(delta, rate)| {
+                s.delta = delta;
+                rate
+            })
+        }
+        _ => 0.0,
     };
     let e = world.entity_mut(actor);
     let speed = step_speed(e);
@@ -388,27 +392,38 @@ pub(crate) fn step(
 }
 
 /// Writes the target offset of `w` on `actor`'s lane track for the step's end: k·W + c, W the
-/// width of its lane at the s it ends the step at, foreseen at the speed it moves with (along
-/// the road, the lane's centre's slope against it neglected: on `widening.xodr` 1.25·10⁻⁵ of
-/// the step). Returns the target's change from the blend's start offset (the Δ of the slope)
-/// and its rate over the step; `None` off the road.
+/// width of its lane at the s it ends the step at, foreseen at the speed it moves with and the
+/// mean of the sideways shares at the step's start and end (`lateral`, the blend's lateral
+/// speed at the end with the target of the step before; the target's own rate and the lane's
+/// centre's slope against the road, 2.5·10⁻⁵ of the step on `widening.xodr`, neglected).
+/// Returns the change in t from the blend's start place to the target (the Δ of the slope) and
+/// the target's rate over the step; `None` off the road.
 fn aim_in_width(
     world: &mut World,
     actor: EntityId,
     w: &mut InWidth,
-    dt: f64,
+    (dt, lateral): (f64, f64),
 ) -> Option<(f64, f64)> {
     let net = world.network.clone();
     let e = world.entity_mut(actor);
+    // Along the road: the step's length at the mean of its sideways shares at the start and
+    // at the end (the blend's lateral speed then), as the default controller moves it.
     let speed = step_speed(e);
+    let end = if speed * dt > LENGTH_EPSILON {
+        (lateral / speed).clamp(-1.0, 1.0)
+    } else {
+        0.0
+    };
+    let mean = (0.5 * (e.lateral_slope + end)).clamp(-1.0, 1.0);
+    let along = speed * dt * (1.0 - mean * mean).sqrt();
     let track = e.track.as_mut()?;
     let ahead = match track.direction {
-        Direction::Forward => speed * dt,
-        _ => -speed * dt,
+        Direction::Forward => along,
+        _ => -along,
     };
-    let road = net.road_at(track.road);
-    let width = road.lane_span(track.lane_id, track.s + ahead).ok()?.width();
-    let target = w.per_width * width + w.offset;
+    let (road, s_end) = (net.road_at(track.road), track.s + ahead);
+    let to = road.lane_span(track.lane_id, s_end).ok()?;
+    let target = w.per_width * to.width() + w.offset;
     track.offset = target;
     let rate = if dt > 0.0 {
         (target - w.last) / dt
@@ -416,8 +431,15 @@ fn aim_in_width(
         0.0
     };
     w.last = target;
-    let from = track.blend.as_ref().map_or(target, |b| b.from_offset);
-    Some((target - from, rate))
+    // Δt from the blend's start place (its lane's centre and offset) to the target, at s_end.
+    let delta = match &track.blend {
+        Some(b) => {
+            let from = road.lane_span(b.from_lane, s_end).ok()?.center() + b.from_offset;
+            to.center() + target - from
+        }
+        None => 0.0,
+    };
+    Some((delta, rate))
 }
 
 /// `e`'s lane track, which a lateral action moves; off the road an error at `pos`.

@@ -17,7 +17,8 @@
 //! DSL runtime's `lateral(d, measure_by: …, at: end)` from a border of the lane over a phase
 //! that starts on a run-time condition, ASAM OpenSCENARIO DSL 2.1 §8.9: "at: end" the
 //! constraint holds at the end of the phase) aims at k·W + c from the lane's centre, W the
-//! lane's width where the actor is: read at each step's end (`lane_change::step`), the
+//! lane's width where the actor is (in its own lane, or in the target lane of a lane change
+//! beside it): read at each step's end (`lane_change::step`), the
 //! sinusoid's target moves with the width, t(τ) = centre(s) + (1 − f)·o₀ + f·(k·W(s) + c),
 //! so at the end the offset is the one the lane's width there asks for. A 1.x LaneOffsetAction
 //! reads its target once, and the plan cannot know where a run-time phase ends.
@@ -30,7 +31,7 @@ use scenario::{
 use super::lane_change::{begin, lane_track, InWidth};
 use super::Part;
 use crate::error::Error;
-use crate::store::targets::entity_ref;
+use crate::store::targets::{entity_ref, target_lane};
 use crate::store::World;
 use crate::world::entity::EntityId;
 
@@ -94,8 +95,9 @@ pub(crate) fn start(
 }
 
 /// Starts oscsim's offset change in the lane's width `w` (`LateralAction::OffsetInWidth`) on
-/// `actor` at `now`: a change within its own lane over the duration, from the offset it has,
-/// to k·W + c with the width W of its lane where it is (then at each step, `lane_change::step`).
+/// `actor` at `now`: a change within its own lane (or into `w`'s target lane, a lane change)
+/// over the duration, from where it is, to k·W + c from that lane's centre with its width W
+/// where the actor is (then at each step, `lane_change::step`).
 pub(crate) fn start_in_width(
     world: &mut World,
     actor: EntityId,
@@ -111,12 +113,15 @@ pub(crate) fn start_in_width(
         ));
     }
     let track = lane_track(world.entity(actor), pos)?;
-    let lane = track.lane_id;
+    let lane = match &w.lane {
+        Some(target) => target_lane(world, target, pos)?,
+        None => track.lane_id,
+    };
     let width = world
         .network
         .road_at(track.road)
         .lane_span(lane, track.s)
-        .map_err(|err| Error::at("the actor's lane at its s", err.to_string(), pos))?
+        .map_err(|err| Error::at("the target lane at the actor's s", err.to_string(), pos))?
         .width();
     let offset = w.per_width * width + w.offset;
     let dynamics = TransitionDynamics {

@@ -474,9 +474,9 @@ pub enum LateralAction {
     /// oscsim's change of the actor's offset in its own lane to one affine in the lane's
     /// width, an action with no XML form (the DSL runtime writes it for ASAM OpenSCENARIO DSL
     /// 2.1 `lateral(d, measure_by: …, at: end)` measured from a border of the lane, over a
-    /// phase that starts on a run-time condition, §8.9): the target offset k·W + c is read
-    /// with the lane's width W where the actor is at each step, so it holds with the width
-    /// where the actor is at the end.
+    /// phase that starts on a run-time condition, §8.9; beside a lane change of the phase, in
+    /// its target lane): the target offset k·W + c is read with the lane's width W where the
+    /// actor is at each step, so it holds with the width where the actor is at the end.
     OffsetInWidth(Box<OffsetInWidth>),
 }
 
@@ -484,6 +484,9 @@ pub enum LateralAction {
 /// and how long it takes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OffsetInWidth {
+    /// The lane to change to, its width the one read (`None`: the actor's own lane, an offset
+    /// change within it).
+    pub lane: Option<LaneChangeTarget>,
     /// k of the target offset k·W + c from the lane's centre (m per m of width, + left).
     pub per_width: f64,
     /// c of the target offset k·W + c (m, + left).
