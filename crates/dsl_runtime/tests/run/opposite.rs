@@ -339,6 +339,20 @@ fn an_oncoming_actors_gaps_and_travels_are_measured_along_its_direction_of_trave
 }
 
 #[test]
+fn a_projected_gap_between_oncoming_actors_is_measured_along_their_direction_of_travel() {
+    let r = run_on("opposite_runtime_projected", "straight");
+    phases_are(&r, &[("do.1.0", 0.0, 1.10), ("do.1.1", 1.10, 6.00)]);
+    assert!((r.at(1.10, "truck").x - 789.0).abs() < S_TOL);
+    let (npc, truck) = (r.at(6.00, "npc"), r.at(6.00, "truck"));
+    assert!((npc.x - 780.0).abs() < S_TOL, "{npc:?}");
+    assert!(
+        (truck.x - (749.0 + ramp_lead(2.0, 3.0))).abs() < S_TOL,
+        "{truck:?}"
+    );
+    ends_without_error("opposite_runtime_projected", "straight");
+}
+
+#[test]
 fn an_oncoming_actors_checks_travels_and_gaps_on_several_roads_measure_along_the_reversed_chain() {
     let road = "junction_trippel_twoway0";
     let r = run_on("opposite_runtime_roads", road);
