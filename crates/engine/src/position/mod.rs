@@ -14,7 +14,7 @@
 //! | `lane` | LanePosition, RelativeLanePosition (ds and dsLane) |
 //! | `lane_at` | the lane that holds a lateral offset at s (the look-up behind every entity's lane) |
 //! | `lane_length` | arc length along a lane centre line; s after a distance along it |
-//! | `road_chain` | the plan's s over a DSL plan's chain of roads; lane lengths and walks across their joints |
+//! | `road_chain` | the plan's measure over a DSL plan's roads: its s, or u = L − s along an oncoming actor's direction of travel; lane lengths and walks across their joints |
 //! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
 //! | `beyond` | s past a road's ends: the same continuation for every road-based form |
 //! | `check` | entity-free positions of a scenario resolved at load |
