@@ -353,6 +353,20 @@ fn a_projected_gap_between_oncoming_actors_is_measured_along_their_direction_of_
 }
 
 #[test]
+fn a_lateral_position_beside_an_oncoming_actor_on_another_road_is_checked_to_the_drivers_left() {
+    let road = "junction_trippel_twoway0";
+    let r = run_on("opposite_runtime_beside_roads", road);
+    phases_are(&r, &[("do.2.0", 0.0, 1.10), ("do.2.1", 1.10, 2.10)]);
+    let (npc, truck) = (r.at(1.10, "npc"), r.at(1.10, "truck"));
+    assert!(npc.road == "2" && (npc.s - 79.0).abs() < S_TOL, "{npc:?}");
+    assert!(
+        truck.road == "0" && (truck.s - 39.0).abs() < S_TOL && (truck.y - 1.75).abs() < S_TOL,
+        "{truck:?}"
+    );
+    ends_without_error("opposite_runtime_beside_roads", road);
+}
+
+#[test]
 fn an_oncoming_actors_checks_travels_and_gaps_on_several_roads_measure_along_the_reversed_chain() {
     let road = "junction_trippel_twoway0";
     let r = run_on("opposite_runtime_roads", road);
