@@ -26,11 +26,11 @@ use std::sync::Arc;
 
 use scenario::{
     Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
-    EntityObject, Event, FileHeader, Init, LaneChangeTarget, LaneOffsetTarget, LateralAction,
-    LongitudinalAction, Maneuver, ManeuverGroup, MiscObject, MiscObjectCategory, Orientation,
-    Pedestrian, PedestrianCategory, Performance, Position, PositionKind, Priority, Private,
-    PrivateAction, Properties, ReferenceContext, RoadNetwork, Route, RouteStrategy, RoutingAction,
-    Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard,
+    EntityObject, Event, FileHeader, Init, LaneChangeAt, LaneChangeTarget, LaneOffsetTarget,
+    LateralAction, LongitudinalAction, Maneuver, ManeuverGroup, MiscObject, MiscObjectCategory,
+    Orientation, Pedestrian, PedestrianCategory, Performance, Position, PositionKind, Priority,
+    Private, PrivateAction, Properties, ReferenceContext, RoadNetwork, Route, RouteStrategy,
+    RoutingAction, Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard,
     StoryboardElementState, TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
 };
 
@@ -417,6 +417,12 @@ fn offsets_along_t(action: PrivateAction, against: bool) -> PrivateAction {
                 other => other,
             },
         }),
+        PrivateAction::Lateral(LateralAction::LaneChangeAt(at)) => {
+            PrivateAction::Lateral(LateralAction::LaneChangeAt(Box::new(LaneChangeAt {
+                target_lane_offset: at.target_lane_offset.map(|o| -o),
+                ..*at
+            })))
+        }
         PrivateAction::Lateral(LateralAction::LaneOffset {
             continuous,
             dynamics_shape,

@@ -20,15 +20,18 @@
 //! the road's s-axis (§8.9.9: π along a lane driven in −s, `checks::check_orientation`),
 //! `shape:` (its action's dynamics, `shapes`), and `lateral` and `acceleration` relative to an
 //! actor driving against s too (left and right are the drivers': the view's t, which the
-//! lowering turns to the road's; an acceleration has no direction). What the engine measures
+//! lowering turns to the road's; an acceleration has no direction), and the position and
+//! path actions (`assign_position`, `assign_orientation`, `change_position`, `follow_path`,
+//! `follow_trajectory`, `replay_path`, `replay_trajectory`: world places have no direction;
+//! the place the actor reaches is put on the view, `position_actions`). What the engine measures
 //! for such an actor — its checks at the start of a phase that starts on a run-time condition
 //! (`position(…)`, `lateral(…)` in the lane or beside another actor, `lane(…)` by number or
 //! relative to another actor, `along` a named route), the marks of `distance(d)` and of a gap
 //! without a phase duration, the TravelAction — it measures along the actor's direction of
 //! travel, in the numbers the plan writes (u = L − s, t to the actor's left): the plan gives
 //! it the direction with the roads (`Planner::chain`, `scenario::PlanRoads`). The rest is an
-//! error at the action or modifier (not run yet), never planned in the wrong direction: the
-//! path and position actions, `avoid_collisions(true)`, a group.
+//! error at the action or modifier (not run yet), never planned in the wrong direction:
+//! `avoid_collisions(true)`, a group.
 //!
 //! The gap actions (`change_space_gap`, `keep_space_gap`, `change_time_headway`,
 //! `keep_time_headway`) run between two actors driving against s: the engine's
@@ -145,7 +148,7 @@ pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
     let not_run = |site: &crate::error::Site, what: &str| {
         site.err(
             K::Unsupported,
-            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane, change_space_gap, keep_space_gap, change_time_headway, keep_time_headway with speed, change_speed, acceleration(a), position, lane, change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation, shape:, and lateral and acceleration relative to an actor driving against s run)", inv.actor),
+            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane, assign_position, assign_orientation, change_position, follow_path, follow_trajectory, replay_path, replay_trajectory, change_space_gap, keep_space_gap, change_time_headway, keep_time_headway with speed, change_speed, acceleration(a), position, lane, change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation, shape:, and lateral and acceleration relative to an actor driving against s run)", inv.actor),
         )
     };
     // A speed and an acceleration have no direction: the speed and acceleration actions
@@ -169,6 +172,15 @@ pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
             | Action::KeepSpaceGap
             | Action::ChangeTimeHeadway
             | Action::KeepTimeHeadway
+            // World places and paths have no direction; the place the actor reaches is put on
+            // the view (`position_actions::lane_position`), a relative path in its frame.
+            | Action::AssignPosition
+            | Action::AssignOrientation
+            | Action::ChangePosition
+            | Action::FollowPath
+            | Action::FollowTrajectory
+            | Action::ReplayPath
+            | Action::ReplayTrajectory
     );
     if !runs {
         return Err(not_run(&inv.actor_site, &format!("{}(…)", inv.action)));

@@ -122,16 +122,19 @@ pub(crate) fn locate(
     let lengths = segment_lengths(points, smooth_curve);
     let mut left = d.max(0.0);
     let last = lengths.len().saturating_sub(1);
-    let k = lengths
-        .iter()
-        .position(|l| {
-            let here = left <= *l;
-            if !here {
-                left -= l;
-            }
-            here
-        })
-        .unwrap_or(last);
+    let found = lengths.iter().position(|l| {
+        let here = left <= *l;
+        if !here {
+            left -= l;
+        }
+        here
+    });
+    // Beyond the last segment (d at or past the path's length, or above the sum of the
+    // lengths by its rounding): the path's end, not what the subtractions left over.
+    let (k, left) = match found {
+        Some(k) => (k, left),
+        None => (last, lengths.get(last).copied().unwrap_or(0.0)),
+    };
     let (a, b) = (points[k], points[k + 1]);
     if !smooth_curve {
         let u = if lengths[k] > 0.0 {
@@ -459,5 +462,25 @@ mod tests {
         assert!(l > 14.142 && l < 16.903, "{l}");
         // Chords undercut the arc by O(1/n²): 1e-6 m covers them.
         assert!((l - 15.372_358).abs() < 1e-6, "{l}");
+    }
+
+    #[test]
+    fn the_end_of_a_path_is_its_last_point_whatever_the_sum_rounds_to() {
+        // opposite_paths.osc's trajectory: two chords of 20.024984 m whose sum rounds above
+        // what subtracting the first leaves of it against the second (the last segment's u
+        // came out 1.8e-16, its start, and the trajectory's end time that of its middle point).
+        let pts = [
+            (196.147505, 25.249188, 0.0),
+            (176.745255, 20.29412, 0.0),
+            (157.934046, 13.428379, 0.0),
+        ];
+        let total: f64 = segment_lengths(&pts, false).iter().sum();
+        let (k, u, (x, y), _) = locate(&pts, false, total);
+        assert_eq!(k, 1);
+        assert!((u - 1.0).abs() < TOL, "{u}");
+        assert!((x - 157.934046).abs() < TOL && (y - 13.428379).abs() < TOL);
+        // Past the end: the end.
+        let (k, u, _, _) = locate(&pts, false, total + 5.0);
+        assert!(k == 1 && (u - 1.0).abs() < TOL, "{k} {u}");
     }
 }

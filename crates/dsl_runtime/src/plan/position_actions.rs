@@ -18,6 +18,12 @@
 //! at the end of the step the action runs in, in place of that step's motion, as for a 1.x
 //! TeleportAction; the plan does the same.
 //!
+//! For an actor driving against s (`crate::road`) the plan road is the view of its direction:
+//! the place is located there (u along its travel, t to its left, a lane driven its way, else
+//! an error), an `odr_point` on any of the plan's roads in OpenDRIVE's own s and t, a
+//! `route_point` in the plan road's s and t in +s, and the TeleportAction's LanePosition is
+//! turned back to the road's s and t (`PlanRoad::lane_position`).
+//!
 //! On a vehicle group (the library's group forms, non-normative §8.7.18) `assign_position` and
 //! `change_position` move the formation as a whole: member 0 to the place, each other member to
 //! the place shifted by its offset from member 0 at the action's start (`formation_place`);
@@ -90,15 +96,17 @@ impl Planner<'_> {
             out,
         )?;
         let n = name("assign_position");
+        // On the road that holds s, in its own s and t (against s the plan's s is u, its t −t).
+        let (road, road_s, road_offset) = self.road.lane_position(s, offset);
         out.push(Planned::with_phase(
             target,
             n.clone(),
             PrivateAction::Teleport(Position {
                 kind: PositionKind::Lane {
-                    road_id: self.road.id().to_string(),
+                    road_id: road.id.clone(),
                     lane_id: lane.to_string(),
-                    s,
-                    offset: Some(offset),
+                    s: road_s,
+                    offset: Some(road_offset),
                     orientation: None,
                 },
                 pos: place.site.pos.clone(),
@@ -456,6 +464,8 @@ impl Planner<'_> {
     pub(super) fn lane_position(&self, place: &PlaceArg) -> Result<(i32, f64, f64), Error> {
         let site = &place.site;
         let road = &self.road;
+        // Against s (`crate::road`) the view's s is u = L − s and its t is −t.
+        let sign = if road.is_against() { -1.0 } else { 1.0 };
         let (s, t) = match &place.place {
             Place::Lane {
                 road: id,
@@ -463,22 +473,24 @@ impl Planner<'_> {
                 s,
                 t,
             } => {
-                if id != road.id() {
+                let Some(u) = road.plan_s(id, *s) else {
                     return Err(site.err(
                         K::Unsatisfiable,
                         format!(
-                            "expected a place on road {} (the road the plan drives on), found road {id}",
-                            road.id()
+                            "expected a place on one of roads {} (the roads the plan drives on), found road {id}",
+                            road.ids().join(", ")
                         ),
                     ));
+                };
+                let within = (0.0..=road.length()).contains(&u);
+                if !within || !road.driving_lanes(u).contains(lane) {
+                    let why = format!("lane {lane}{}", its_lanes(road, u));
+                    return Err(off_road(site, id, *s, &why));
                 }
-                let within = (0.0..=road.length()).contains(s);
-                if !within || !road.driving_lanes(*s).contains(lane) {
-                    return Err(off_road(site, road.id(), *s, &format!("lane {lane}")));
-                }
-                (*s, road.lane_center(*lane, *s) + t)
+                (u, road.lane_center(*lane, u) + sign * t)
             }
-            Place::Route { s, t } => (*s, *t),
+            // The plan road's s and t in +s (the resolver keeps no route with the point).
+            Place::Route { s, t } => (road.forward_s(*s), sign * t),
             Place::World { x, y, .. } => road
                 .locate(*x, *y)
                 .map(|(lane, s, offset)| (s, road.lane_center(lane, s) + offset))
@@ -508,9 +520,12 @@ impl Planner<'_> {
         if !(0.0..=road.length()).contains(&s) {
             return Err(off_road(site, road.id(), s, "its length"));
         }
-        let lane = road
-            .lane_holding(s, t)
-            .ok_or_else(|| off_road(site, road.id(), s, &format!("t = {t:.2} m")))?;
+        let lane = road.lane_holding(s, t).ok_or_else(|| {
+            // Named in the road's own s and t (against s the view's are u and −t).
+            let (on, road_s, road_t) = road.lane_position(s, t);
+            let why = format!("t = {road_t:.2} m{}", its_lanes(road, s));
+            off_road(site, &on.id, road_s, &why)
+        })?;
         Ok((lane, s, t - road.lane_center(lane, s)))
     }
 
@@ -613,6 +628,19 @@ impl Planner<'_> {
             ..StateCheck::default()
         };
         Ok((Box::new(check), (ds, dt)))
+    }
+}
+
+/// For an actor driving against s, the lanes it may be in at the view's s `u` (an error's
+/// note); nothing in +s.
+fn its_lanes(road: &crate::road::PlanRoad<'_>, u: f64) -> String {
+    if road.is_against() {
+        format!(
+            " (the actor drives against s, in lanes {:?})",
+            road.driving_lanes(u)
+        )
+    } else {
+        String::new()
     }
 }
 

@@ -15,7 +15,11 @@
 //! | `lane_relative` | along the road from the reference, across from the centre of its lane: s_r + x, (that lane's centre at s_r + x) + y, heading the road's + yaw |
 //!
 //! h_r is the heading of the road at the reference (the plan's actors drive along their
-//! lanes). The points are fixed at the action's start (the trajectory does not move with the
+//! lanes). For a reference driving against s (`crate::road`) the plan's frame is its view, so
+//! h_r is its heading (the road's + π) and `lane_relative` runs along its lane's driving
+//! direction; `road_relative` keeps the road's own s-axis and t (x along +s, y to the road's
+//! left, heading the road's + yaw), as yaw relative to the road is "relative to road s-axis"
+//! (§8.9.9). The points are fixed at the action's start (the trajectory does not move with the
 //! reference afterwards, as 1.x resolves a trajectory's relative positions when its action
 //! starts). A relative trajectory without a `reference`, `reference`/`transform` beside an
 //! absolute one, and a start the plan does not know are errors.
@@ -105,6 +109,11 @@ impl Planner<'_> {
             .iter()
             .map(|&(x, y, yaw)| match transform.as_str() {
                 "world_relative" => Ok((x_r + x, y_r + y, yaw)),
+                // The road's coordinates (its s-axis, as yaw relative to the road, §8.9.9): for
+                // a reference driving against s, x along −u and y to the right of its travel.
+                "road_relative" if road.is_against() => {
+                    on_road(s_r - x, t_r - y, yaw).map(|(x, y, h)| (x, y, h - std::f64::consts::PI))
+                }
                 "road_relative" => on_road(s_r + x, t_r + y, yaw),
                 "lane_relative" => on_road(s_r + x, road.lane_center(lane_r, s_r + x) + y, yaw),
                 _ => {

@@ -201,6 +201,14 @@ impl<'a> PlanRoad<'a> {
         (g.road, (s - g.start).clamp(0.0, g.road.length))
     }
 
+    /// The road, its own s and the offset along its t of the point `offset` from the lane's
+    /// centre at the plan's s `s` (against s: u, the offset to the left of that direction):
+    /// the place an engine's LanePosition takes; clamped to the chain's ends.
+    pub(crate) fn lane_position(&self, s: f64, offset: f64) -> (&'a Road, f64, f64) {
+        let (road, s) = self.road_at(s);
+        (road, s, self.sign() * offset)
+    }
+
     /// `(road id, plan s at its start)` of every road, in +s order (in either view).
     pub(crate) fn starts(&self) -> Vec<(String, f64)> {
         self.segments

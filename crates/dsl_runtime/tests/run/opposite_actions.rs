@@ -19,6 +19,11 @@ const LEAD_TOL: f64 = 1e-3;
 /// Along the road during a lateral move: the move's cost v·T·(1 − cos θ) is worked for a
 /// constant crossing speed; the engine's steps round it (1 mm).
 const COST_TOL: f64 = 1e-3;
+/// change_position_on_road.osc's hand-worked integrals (midpoint rule, 100,000 points) against
+/// the engine's steps of 0.05 s (m), as `run::position_actions` takes them.
+const ON_ROAD_TOL: f64 = 1e-4;
+/// World points written to 6 decimals in the scenario (the engine follows them exactly).
+const PATH_TOL: f64 = 1e-5;
 /// Along the road during a sinusoidal offset at a changing speed: its cost (3 mm here, worked
 /// at the mean speed) is not a closed form at every step.
 const OFFSET_COST_TOL: f64 = 5e-3;
@@ -204,6 +209,144 @@ fn a_lateral_position_beside_an_oncoming_actor_after_a_run_time_start_is_the_dri
     ends_without_error("opposite_beside_runtime", "straight");
 }
 
+#[test]
+fn position_actions_against_s_put_the_actor_on_its_view() {
+    let r = run_on("opposite_position_actions", "straight");
+    assert!((r.at(2.0, "npc").x - 930.0).abs() < S_TOL);
+    phase_is(&r, "do.0.1", 2.0, 2.0);
+    // assign_position: lane 2, 0.5 m left of its centre in the road's t.
+    let put = r.at(2.05, "npc");
+    assert!(
+        (put.x - 880.0).abs() < S_TOL && (put.y - 5.75).abs() < S_TOL && put.lane == 2,
+        "{put:?}"
+    );
+    let at3 = r.at(3.0, "npc");
+    assert!(
+        (at3.x - 870.5).abs() < S_TOL && wrap(at3.h - PI).abs() < H_TOL,
+        "{at3:?}"
+    );
+    // change_position along the chord (-7.5, -4) at 10 m/s.
+    let chord = (-4.0f64).atan2(-7.5);
+    let mid = r.at(3.45, "npc");
+    assert!(
+        (mid.x - (870.5 - 4.5 * 7.5 / 8.5)).abs() < S_TOL
+            && (mid.y - (5.75 - 4.5 * 4.0 / 8.5)).abs() < S_TOL,
+        "{mid:?}"
+    );
+    assert!(wrap(mid.h - chord).abs() < H_TOL, "{mid:?}");
+    phase_is(&r, "do.0.3", 3.0, 3.85);
+    let there = r.at(3.85, "npc");
+    assert!(
+        (there.x - 863.0).abs() < S_TOL && (there.y - 1.75).abs() < S_TOL && there.lane == 1,
+        "{there:?}"
+    );
+    let on = r.at(4.85, "npc");
+    assert!(
+        (on.x - 853.0).abs() < S_TOL && (on.y - 1.75).abs() < S_TOL,
+        "{on:?}"
+    );
+    // change_position on the road network: change_position_on_road.osc's T, x and y mirrored.
+    for (t, along, across) in [(6.85, 19.90654, 1.73709), (8.85, 39.81131, 3.49981)] {
+        let npc = r.at(t, "npc");
+        assert!(
+            (npc.x - (853.0 - along)).abs() < ON_ROAD_TOL
+                && (npc.y - (1.75 + across)).abs() < ON_ROAD_TOL,
+            "at {t}: {npc:?}"
+        );
+    }
+    phase_is(&r, "do.0.5", 4.85, 8.9);
+    let end = r.at(8.9, "npc");
+    assert!(
+        (end.x - 812.68869).abs() < ON_ROAD_TOL && (end.y - 5.25).abs() < S_TOL && end.lane == 2,
+        "{end:?}"
+    );
+    // bus turned to the world's 1.5 rad where it stands.
+    assert!(wrap(r.at(0.0, "bus").h - PI).abs() < H_TOL);
+    for t in [1.05, 2.0] {
+        let bus = r.at(t, "bus");
+        assert!(
+            (bus.x - 700.0).abs() < S_TOL
+                && (bus.y - 5.25).abs() < S_TOL
+                && (bus.h - 1.5).abs() < H_TOL,
+            "{bus:?}"
+        );
+    }
+}
+
+#[test]
+fn paths_against_s_run_in_world_coordinates_and_end_on_the_view() {
+    let r = run_on("opposite_paths", "junction_trippel_twoway0");
+    let at1 = r.at(1.0, "npc");
+    assert_eq!((at1.road.as_str(), at1.lane), ("2", 1), "{at1:?}");
+    assert!((at1.x - 196.147505).abs() < PATH_TOL && (at1.y - 25.249188).abs() < PATH_TOL);
+    // The trajectory: half way along a-b at 2 s, b at 3 s, c at 5 s.
+    for (t, x, y) in [
+        (2.0, 186.446380, 22.771654),
+        (3.0, 176.745255, 20.294120),
+        (5.0, 157.934046, 13.428379),
+    ] {
+        let npc = r.at(t, "npc");
+        assert!(
+            (npc.x - x).abs() < PATH_TOL && (npc.y - y).abs() < PATH_TOL && npc.lane == 1,
+            "at {t}: {npc:?}"
+        );
+    }
+    phase_is(&r, "do.1.1", 1.0, 5.0);
+    let v = 20.024984 / 2.0;
+    assert!((r.at(5.0, "npc").speed - v).abs() < PATH_TOL);
+    // The path across the junction: 30.037477 m along c-d at 8 s; d at 11.888728 s.
+    let at8 = r.at(8.0, "npc");
+    assert!(
+        (at8.x - 128.349174).abs() < PATH_TOL && (at8.y - 8.233641).abs() < PATH_TOL,
+        "{at8:?}"
+    );
+    let (s, e) = r.phase("do.1.2");
+    assert!(
+        (s - 5.0).abs() < T_TOL && (e - 11.9).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    let end = r.at(11.9, "npc");
+    assert_eq!((end.road.as_str(), end.lane), ("0", 1), "{end:?}");
+    // At d, less what of the step to 11.9 s is left after it (0.0113 s at v).
+    let past = v * (11.9 - 11.888728);
+    assert!(
+        ((end.x - 90.0).hypot(end.y - 1.5) - past).abs() < PATH_TOL,
+        "{end:?}"
+    );
+    // On along lane 1 of road 0 towards -x.
+    let last = r.at(12.9, "npc");
+    assert!(
+        (last.x - (end.x - v)).abs() < PATH_TOL && last.lane == 1,
+        "{last:?}"
+    );
+}
+
+#[test]
+fn relative_trajectories_against_s_take_the_roads_or_the_lanes_frame() {
+    let r = run_on("opposite_relative_paths", "straight");
+    assert!((r.at(1.0, "truck").x - 600.0).abs() < S_TOL);
+    // road_relative: x along +s, y to the road's left.
+    for (t, x, y) in [(2.0, 590.0, 2.5), (3.0, 580.0, 3.25), (5.0, 560.0, 3.25)] {
+        let truck = r.at(t, "truck");
+        assert!(
+            (truck.x - x).abs() < S_TOL && (truck.y - y).abs() < S_TOL && truck.lane == 1,
+            "at {t}: {truck:?}"
+        );
+    }
+    assert!(wrap(r.at(2.0, "truck").h - (1.5f64).atan2(-20.0)).abs() < H_TOL);
+    phase_is(&r, "do.1", 1.0, 5.0);
+    // lane_relative: x along the lane's direction, y to the driver's left from its centre.
+    for (t, x, y) in [(6.0, 550.0, 2.5), (7.0, 540.0, 1.75)] {
+        let truck = r.at(t, "truck");
+        assert!(
+            (truck.x - x).abs() < S_TOL && (truck.y - y).abs() < S_TOL && truck.lane == 1,
+            "at {t}: {truck:?}"
+        );
+    }
+    phase_is(&r, "do.2", 5.0, 7.0);
+    assert!((r.at(7.0, "truck").speed - 20.0f64.hypot(1.5) / 2.0).abs() < S_TOL);
+}
+
 /// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` is an error holding each of `texts`
 /// at `place` (line:col).
 fn error_at(name: &str, road: &str, texts: &[&str], place: &str) {
@@ -227,5 +370,18 @@ fn what_has_no_meaning_against_s_is_an_error_at_its_place() {
             "found 0.0000 rad",
         ],
         "12:17",
+    );
+    // A place in a lane driven the other way: the actor would drive on in that lane's direction.
+    error_at(
+        "err_opposite_assign_lane",
+        "straight",
+        &["expected a place in a driving lane of road 1, found s = 900.00 m, lane -1 (the actor drives against s, in lanes [2, 1]) outside them"],
+        "11:40",
+    );
+    error_at(
+        "err_opposite_path_end",
+        "straight",
+        &["expected a place in a driving lane of road 1, found s = 900.00 m, t = -1.75 m (the actor drives against s, in lanes [2, 1]) outside them"],
+        "21:41",
     );
 }
