@@ -22,6 +22,9 @@ const COST_TOL: f64 = 1e-3;
 /// change_position_on_road.osc's hand-worked integrals (midpoint rule, 100,000 points) against
 /// the engine's steps of 0.05 s (m), as `run::position_actions` takes them.
 const ON_ROAD_TOL: f64 = 1e-4;
+/// change_position_smooth.osc's figures (the curve's length to 1e-4 m), as
+/// `run::position_actions` takes them.
+const CURVE_TOL: f64 = 1e-3;
 /// World points written to 6 decimals in the scenario (the engine follows them exactly).
 const PATH_TOL: f64 = 1e-5;
 /// Along the road during a sinusoidal offset at a changing speed: its cost (3 mm here, worked
@@ -345,6 +348,55 @@ fn relative_trajectories_against_s_take_the_roads_or_the_lanes_frame() {
     }
     phase_is(&r, "do.2", 5.0, 7.0);
     assert!((r.at(7.0, "truck").speed - 20.0f64.hypot(1.5) / 2.0).abs() < S_TOL);
+}
+
+#[test]
+fn change_position_on_the_road_network_against_s_after_a_run_time_start_arrives_ahead() {
+    let r = run_on("opposite_place_runtime", "straight");
+    phase_is(&r, "do.1.1", 1.10, 3.20);
+    assert!((r.at(1.10, "npc").x - 878.0).abs() < S_TOL);
+    // y as the sinusoid of the distance along, 878 − x on the straight road (1 mm, as in +s).
+    for k in 0..40 {
+        let t = 1.10 + 0.05 * f64::from(k);
+        let npc = r.at(t, "npc");
+        let d = 878.0 - npc.x;
+        let want = 1.75 + 2.0 * (1.0 - (PI * d / 40.0).cos());
+        assert!((npc.y - want).abs() < 1e-3, "{t}: {npc:?}, want y {want}");
+    }
+    let there = r.at(3.15, "npc");
+    assert!(
+        (there.y - 5.75).abs() < S_TOL && there.lane == 2,
+        "{there:?}"
+    );
+    // Arrived at 3.11228 s: 0.03772 s on at 20 m/s by 3.15 s (1 cm: the arc's series).
+    assert!((there.x - 837.2456).abs() < 0.01, "{there:?}");
+    let last = r.at(4.20, "npc");
+    assert!(
+        (last.x - (there.x - 21.0)).abs() < S_TOL && (last.y - 5.75).abs() < S_TOL,
+        "{last:?}"
+    );
+    ends_without_error("opposite_place_runtime", "straight");
+}
+
+#[test]
+fn change_position_smooth_against_s_curves_from_the_direction_of_travel() {
+    let r = run_on("opposite_change_position_smooth", "straight");
+    // change_position_smooth.osc's figures mirrored: 0.0917 m short of (960, 3.5) at 2 s,
+    // along the heading pi - 0.13077 there.
+    let (h, back) = (PI - 0.13077f64, 0.0917);
+    let at2 = r.at(2.0, "npc");
+    assert!(
+        (at2.x - (960.0 - back * h.cos())).abs() < CURVE_TOL
+            && (at2.y - (3.5 - back * h.sin())).abs() < CURVE_TOL,
+        "{at2:?}"
+    );
+    assert!(wrap(at2.h - h).abs() < CURVE_TOL, "{at2:?}");
+    phase_is(&r, "do.0", 0.0, 4.05);
+    let end = r.at(4.05, "npc");
+    assert!(
+        (end.y - 5.25).abs() < CURVE_TOL && wrap(end.h - PI).abs() < CURVE_TOL && end.lane == 2,
+        "{end:?}"
+    );
 }
 
 /// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` is an error holding each of `texts`
