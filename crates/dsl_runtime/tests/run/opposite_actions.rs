@@ -399,6 +399,33 @@ fn change_position_smooth_against_s_curves_from_the_direction_of_travel() {
     );
 }
 
+#[test]
+fn follow_path_and_replay_trajectory_against_s() {
+    let r = run_on("opposite_follow_path", "straight");
+    let mid = r.at(1.5, "npc");
+    assert!(
+        (mid.x - 945.0).abs() < PATH_TOL && (mid.y - 1.75).abs() < PATH_TOL,
+        "{mid:?}"
+    );
+    assert!(wrap(mid.h - PI).abs() < PATH_TOL, "{mid:?}");
+    let at3 = r.at(3.0, "npc");
+    assert!((at3.x - 930.0).abs() < PATH_TOL, "{at3:?}");
+    phase_is(&r, "do.0", 0.0, 3.0);
+    // replay_trajectory from 3 s: half way along the first chord 1 s in, the end 4 s in.
+    let half = r.at(4.0, "npc");
+    assert!(
+        (half.x - 920.0).abs() < PATH_TOL && (half.y - 2.5).abs() < PATH_TOL,
+        "{half:?}"
+    );
+    phase_is(&r, "do.1", 3.0, 7.0);
+    let end = r.at(7.0, "npc");
+    assert!(
+        (end.x - 890.0).abs() < PATH_TOL && (end.y - 3.25).abs() < PATH_TOL && end.lane == 1,
+        "{end:?}"
+    );
+    assert!((end.speed - 10.0).abs() < PATH_TOL, "{end:?}");
+}
+
 /// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` is an error holding each of `texts`
 /// at `place` (line:col).
 fn error_at(name: &str, road: &str, texts: &[&str], place: &str) {
