@@ -21,8 +21,9 @@
 //! For an actor driving against s (`crate::road`) the plan road is the view of its direction:
 //! the place is located there (u along its travel, t to its left, a lane driven its way, else
 //! an error), an `odr_point` on any of the plan's roads in OpenDRIVE's own s and t, a
-//! `route_point` in the plan road's s and t in +s, and the TeleportAction's LanePosition is
-//! turned back to the road's s and t (`PlanRoad::lane_position`).
+//! `route_point` along its route (a route field bound against s: u and t to its left; else
+//! the plan road in +s), and the TeleportAction's LanePosition is turned back to the road's s
+//! and t (`PlanRoad::lane_position`).
 //!
 //! On a vehicle group (the library's group forms, non-normative §8.7.18) `assign_position` and
 //! `change_position` move the formation as a whole: member 0 to the place, each other member to
@@ -489,8 +490,19 @@ impl Planner<'_> {
                 }
                 (u, road.lane_center(*lane, u) + sign * t)
             }
-            // The plan road's s and t in +s (the resolver keeps no route with the point).
-            Place::Route { s, t } => (road.forward_s(*s), sign * t),
+            // s and t on its route: the plan road's in +s, or along a route field bound to
+            // the plan's roads against s (`against::bind_routes`) and to its left; turned to
+            // this view where the two directions differ.
+            Place::Route { s, t, route } => {
+                let back = route
+                    .as_ref()
+                    .is_some_and(|r| self.against_routes.contains_key(r));
+                if back == road.is_against() {
+                    (*s, *t)
+                } else {
+                    (road.length() - s, -t)
+                }
+            }
             Place::World { x, y, .. } => road
                 .locate(*x, *y)
                 .map(|(lane, s, offset)| (s, road.lane_center(lane, s) + offset))

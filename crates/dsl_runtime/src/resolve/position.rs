@@ -30,8 +30,14 @@ pub(crate) enum Place {
         s: f64,
         t: f64,
     },
-    /// s and t (m) on the route: the plan road's reference line.
-    Route { s: f64, t: f64 },
+    /// s and t (m) on the route: the plan road's reference line, or, for a route field the
+    /// map binds to the plan's roads driven against s, along that direction and to its left.
+    Route {
+        s: f64,
+        t: f64,
+        /// The route field the point is on (`map.create_route_point(r, …)`), if it is one.
+        route: Option<String>,
+    },
     /// Yaw, pitch and roll (rad).
     Orientation { yaw: f64, pitch: f64, roll: f64 },
     /// A `path` (`map.create_path(points, interpolation)`): world x, y (m) and yaw (rad) of
@@ -127,9 +133,14 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
             }
             "create_route_point" => {
                 let ps = ["route", "s", "t"];
+                let route = bind(args, &params(&ps))
+                    .into_iter()
+                    .find(|(p, _)| p == "route")
+                    .and_then(|(_, r)| ev.path_of(r));
                 Ok(Place::Route {
                     s: number(&ps, "s")?,
                     t: number(&ps, "t")?,
+                    route,
                 })
             }
             "create_xyz_point" => {
@@ -255,6 +266,7 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
         Ok(Place::Route {
             s: num(fields, "s"),
             t: num(fields, "t"),
+            route: None,
         })
     } else if ["trajectory", "relative_trajectory", "relative_path"]
         .iter()

@@ -426,6 +426,33 @@ fn follow_path_and_replay_trajectory_against_s() {
     assert!((end.speed - 10.0).abs() < PATH_TOL, "{end:?}");
 }
 
+#[test]
+fn a_route_point_is_along_its_route_in_its_direction() {
+    let r = run_on("opposite_route_point", "straight");
+    assert!((r.at(1.0, "npc").x - 890.0).abs() < S_TOL);
+    let npc = r.at(1.05, "npc");
+    assert!(
+        (npc.x - 850.0).abs() < S_TOL && (npc.y - 5.25).abs() < S_TOL && npc.lane == 2,
+        "{npc:?}"
+    );
+    let npc = r.at(2.0, "npc");
+    assert!(
+        (npc.x - 840.5).abs() < S_TOL && wrap(npc.h - PI).abs() < H_TOL,
+        "{npc:?}"
+    );
+    assert!((r.at(1.0, "ego").x - 40.0).abs() < S_TOL);
+    let ego = r.at(1.05, "ego");
+    assert!(
+        (ego.x - 100.0).abs() < S_TOL && (ego.y + 1.75).abs() < S_TOL && ego.lane == -1,
+        "{ego:?}"
+    );
+    let ego = r.at(2.0, "ego");
+    assert!(
+        (ego.x - 109.5).abs() < S_TOL && wrap(ego.h).abs() < H_TOL,
+        "{ego:?}"
+    );
+}
+
 /// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` is an error holding each of `texts`
 /// at `place` (line:col).
 fn error_at(name: &str, road: &str, texts: &[&str], place: &str) {
