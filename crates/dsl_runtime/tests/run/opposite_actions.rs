@@ -337,7 +337,7 @@ fn relative_trajectories_against_s_take_the_roads_or_the_lanes_frame() {
         );
     }
     assert!(wrap(r.at(2.0, "truck").h - (1.5f64).atan2(-20.0)).abs() < H_TOL);
-    phase_is(&r, "do.1", 1.0, 5.0);
+    phase_is(&r, "do.0.1", 1.0, 5.0);
     // lane_relative: x along the lane's direction, y to the driver's left from its centre.
     for (t, x, y) in [(6.0, 550.0, 2.5), (7.0, 540.0, 1.75)] {
         let truck = r.at(t, "truck");
@@ -346,8 +346,17 @@ fn relative_trajectories_against_s_take_the_roads_or_the_lanes_frame() {
             "at {t}: {truck:?}"
         );
     }
-    phase_is(&r, "do.2", 5.0, 7.0);
+    phase_is(&r, "do.0.2", 5.0, 7.0);
     assert!((r.at(7.0, "truck").speed - 20.0f64.hypot(1.5) / 2.0).abs() < S_TOL);
+    // object_relative: bus's own frame, heading pi, so y = 1 m is to its left (-y).
+    for (t, x, y) in [(2.0, 590.0, 4.75), (3.0, 580.0, 4.25)] {
+        let bus = r.at(t, "bus");
+        assert!(
+            (bus.x - x).abs() < S_TOL && (bus.y - y).abs() < S_TOL && bus.lane == 2,
+            "at {t}: {bus:?}"
+        );
+    }
+    phase_is(&r, "do.1.1", 1.0, 3.0);
 }
 
 #[test]
