@@ -344,8 +344,8 @@ impl Planner<'_> {
     /// `offset`) after a run-time condition: the engine's lane change that arrives there
     /// (`LateralAction::LaneChangeAt`), sinusoidal over the distance along the actor's lane
     /// from where it is then to s1, at the speed it has; the phase ends with the action (the
-    /// actor there). A plan over several roads is an error (the engine measures along the
-    /// road the actor is on).
+    /// actor there). On a plan over several roads s1 is the plan's s, and the engine measures
+    /// the way along the actor's lane across the roads' joints.
     fn change_position_on_road_at_run_time(
         &mut self,
         p: &Phase,
@@ -354,18 +354,20 @@ impl Planner<'_> {
         out: &mut Vec<Planned>,
         name: &mut dyn FnMut(&str) -> String,
     ) -> Result<Option<When>, Error> {
-        if self.road.ids().len() > 1 {
-            return Err(p.site.err(
-                K::Unsupported,
-                format!("expected change_position(…, on_road_network: true) after a run-time condition on a plan over one road, found roads {} (the engine measures the way there along the road the actor is on)", self.road.ids().join(", ")),
-            ));
-        }
+        // On a plan over several roads the engine measures the way in the plan's s, across
+        // the roads' joints; on one road in the road's own s.
+        let roads = self.chain();
+        let s = match roads.chain.is_empty() {
+            true => self.road.road_at(s1).1,
+            false => s1,
+        };
         let n = name("change_position");
         let at = LaneChangeAt {
             target: LaneChangeTarget::Absolute(lane.to_string()),
             target_lane_offset: (offset != 0.0).then_some(offset),
             shape: DynamicsShape::Sinusoidal,
-            s: self.road.road_at(s1).1,
+            s,
+            roads,
             what: format!("change_position(…) at {}", p.site.at()),
         };
         out.push(Planned::with_phase(

@@ -271,3 +271,92 @@ fn a_named_route_after_an_until_on_several_roads_is_checked_in_the_plans_s() {
         "{error}"
     );
 }
+
+/// runtime_place_on_road_several_roads.osc's comment, by hand: from s = 27 m of road 0 ego
+/// moves to offset 0.8 m of lane -1 along a sinusoid of the way, D = 73 + 30.45 + 20 =
+/// 123.45 m of lane across roads 0, 1 and 2, arriving at s = 20 m of road 2 (0.17 m past it:
+/// the engine counts the way along ego's own path, shorter on road 1's left turn).
+#[test]
+fn change_position_on_the_road_network_after_an_until_arrives_across_the_plans_roads() {
+    let r = run(
+        "runtime_place_on_road_several_roads",
+        "junction_trippel_twoway0",
+    );
+    const D: f64 = 123.45;
+    let offset = |u: f64| 0.8 * (1.0 - (std::f64::consts::PI * u / D).cos()) / 2.0;
+    // Road 0 (straight along +x, lane -1's centre at y = -1.5 m): u = x - 27 m, as the
+    // one-road test (runtime::change_position_on_the_road_network_after_an_until_…): 1 mm.
+    let (mut on_road_0, mut on_road_2) = (0, 0);
+    let (x0, y0, h) = (129.71723128680293, 3.1297684891414503, 0.3_f64);
+    // Every step from 0.85 s to the run's end at 8.10 s.
+    for k in 0..=145 {
+        let t = 0.85 + 0.05 * f64::from(k);
+        let ego = r.at(t, "ego");
+        match ego.road.as_str() {
+            "0" => {
+                on_road_0 += 1;
+                let want = offset(ego.x - 27.0);
+                assert!(
+                    (ego.y + 1.5 - want).abs() < 1e-3,
+                    "{t}: {ego:?}, want {want}"
+                );
+            }
+            "2" => {
+                on_road_2 += 1;
+                // t from road 2's reference line; u = 103.45 m + s there, which the engine's
+                // way along ego's shorter path on road 1 reaches up to 0.24 m later (0.3 rad ·
+                // 0.8 m): the sinusoid's slope 0.8·π/(2D) = 0.0102 at most, 3 mm.
+                let t_road = -(ego.x - x0) * h.sin() + (ego.y - y0) * h.cos();
+                let want = offset((103.45 + ego.s).min(D));
+                assert!(
+                    (t_road + 1.5 - want).abs() < 3e-3,
+                    "{t}: {ego:?}, want {want}"
+                );
+                assert_eq!(ego.lane, -1, "{t}: {ego:?}");
+            }
+            _ => {}
+        }
+    }
+    assert!(on_road_0 > 50 && on_road_2 > 20, "{on_road_0} {on_road_2}");
+    // The mid-point, x = 88.725 m of road 0, offset 0.4 m: the frames either side of it.
+    let (a, b) = (r.at(3.9, "ego"), r.at(3.95, "ego"));
+    assert!(
+        a.x < 88.725 && b.x > 88.725 && a.y + 1.5 < 0.4 && b.y + 1.5 > 0.4,
+        "{a:?} {b:?}"
+    );
+    // Arrived: offset 0.8 m exactly from the step that ends at 7.05 s; the phase ends at 7.10 s.
+    for t in [7.05, 7.1, 8.1] {
+        let ego = r.at(t, "ego");
+        let t_road = -(ego.x - x0) * h.sin() + (ego.y - y0) * h.cos();
+        assert!(
+            ego.road == "2" && (t_road + 0.7).abs() < 1e-6,
+            "{t}: {ego:?}, t {t_road}"
+        );
+    }
+    let (s, e) = r.phase("do.cut");
+    assert!(
+        (s - 0.85).abs() < 1e-9 && (e - 7.1).abs() < 1e-9,
+        "[{s}, {e}]"
+    );
+    // ego's path from 0.85 s is 20 m/s·τ: 123 m at 7.00 s, road 2's s 123 - 103.45 = 19.55 m
+    // along the lane's centre plus what road 1's left turn saves ego's path left of it
+    // (0.1 to 0.3 m: the comment's 0.17 m); not arrived then, arrived at 7.05 s, 1 m on.
+    let (a, b) = (r.at(7.0, "ego"), r.at(7.05, "ego"));
+    let saved = a.s - 19.55;
+    assert!(a.road == "2" && (0.1..0.3).contains(&saved), "{a:?}");
+    assert!((b.s - a.s - 1.0).abs() < 1e-6, "{b:?}");
+}
+
+/// runtime_place_on_road_several_roads_behind.osc's comment, by hand: p at plan s 20 m is
+/// behind ego's 27 m when the phase starts at 0.85 s: an error record then.
+#[test]
+fn change_position_on_the_road_network_behind_the_actor_on_several_roads_fails_the_run() {
+    let (time, element, error) = run_to_its_error("runtime_place_on_road_several_roads_behind");
+    assert!((time - 0.85).abs() < 1e-9, "{time}");
+    assert_eq!(element, "do.cut/ego/1:change_position");
+    assert!(
+        error.starts_with("expected s = 20.000 m of one of roads 0, 1, 2 (the plan's s) ahead of 'ego' along its lane (change_position(…) at ")
+            && error.ends_with("runtime_place_on_road_several_roads_behind.osc:21:9), found it at s = 27.000 m (s = 27.000 m of road 0) at t = 0.850 s"),
+        "{error}"
+    );
+}

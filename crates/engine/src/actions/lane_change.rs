@@ -16,7 +16,9 @@
 //! heading + slope of the lateral motion). The state [`LateralState`] is shared with
 //! LaneOffsetAction, which blends within one lane. oscsim's lane change that arrives at a place
 //! along the road (`LateralAction::LaneChangeAt`, no XML form) is one in the distance
-//! dimension whose distance, along the actor's lane to the place, is measured at its start.
+//! dimension whose distance, along the actor's lane to the place, is measured at its start (on
+//! a plan over several roads across their joints, `position::RoadChain`, the place in the
+//! plan's s).
 
 use opendrive::LENGTH_EPSILON;
 use opendrive::{Direction, Road};
@@ -26,7 +28,7 @@ use scenario::{
 
 use super::Part;
 use crate::error::{Error, ErrorKind};
-use crate::position::{lane_arc_length, lane_at};
+use crate::position::{lane_arc_length, lane_at, RoadChain};
 use crate::store::targets::{entity_ref, target_lane};
 use crate::store::World;
 use crate::storyboard::ActionStatus;
@@ -131,22 +133,53 @@ pub(crate) fn start_at(
             "it off every road".into(),
         ));
     };
-    let forward = track.direction == Direction::Forward;
-    let ahead = if forward {
-        at.s > track.s
+    let chain = RoadChain::new(&world.network, &at.roads);
+    let length = if chain.is_chain() {
+        // On a plan over several roads: the plan's s, measured along the direction of travel,
+        // and the lane's length across the roads' joints (the lane ids are the same on each).
+        let Some(here) = chain.s_of(&track.road_id, track.s) else {
+            return Err(fail(
+                format!("'{}' on {}", e.name, chain.describe()),
+                format!("it on road {}", track.road_id),
+            ));
+        };
+        let length = chain
+            .lane_length(&track.road_id, track.lane_id, (here, at.s))
+            .filter(|_| at.s > here);
+        let Some(length) = length else {
+            return Err(fail(
+                format!(
+                    "s = {:.3} m of {} (the plan's s) ahead of '{}' along its lane",
+                    at.s,
+                    chain.describe(),
+                    e.name
+                ),
+                format!(
+                    "it at s = {here:.3} m (s = {:.3} m of road {})",
+                    track.s, track.road_id
+                ),
+            ));
+        };
+        length
     } else {
-        at.s < track.s
-    };
-    let length = lane_arc_length(&world.network, &track.road_id, track.lane_id, track.s, at.s)
-        .filter(|_| ahead);
-    let Some(length) = length else {
-        return Err(fail(
-            format!(
-                "s = {:.3} m of road {} ahead of '{}' along its lane",
-                at.s, track.road_id, e.name
-            ),
-            format!("it at s = {:.3} m", track.s),
-        ));
+        let forward = track.direction == Direction::Forward;
+        let ahead = if forward {
+            at.s > track.s
+        } else {
+            at.s < track.s
+        };
+        let length = lane_arc_length(&world.network, &track.road_id, track.lane_id, track.s, at.s)
+            .filter(|_| ahead);
+        let Some(length) = length else {
+            return Err(fail(
+                format!(
+                    "s = {:.3} m of road {} ahead of '{}' along its lane",
+                    at.s, track.road_id, e.name
+                ),
+                format!("it at s = {:.3} m", track.s),
+            ));
+        };
+        length
     };
     let dynamics = TransitionDynamics {
         dynamics_shape: at.shape,

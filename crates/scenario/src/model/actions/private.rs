@@ -507,8 +507,11 @@ pub struct LaneChangeAt {
     pub target_lane_offset: Option<f64>,
     /// The transition's shape.
     pub shape: DynamicsShape,
-    /// The s of the actor's road where it arrives (m), ahead of it.
+    /// The s where it arrives (m), ahead of it: of the road the actor is on, or on a plan over
+    /// several roads (`roads`) the plan's s.
     pub s: f64,
+    /// The plan's roads `s` is measured along (default: one road, the one the actor is on).
+    pub roads: PlanRoads,
     /// What asked for it and where it is written, for the error record.
     pub what: String,
 }
