@@ -84,20 +84,46 @@ fn a_speed_relative_to_another_actor_beside_a_distance_after_an_until_follows_it
     assert!((stepped(v_tail, 3.35, 6.35) - 41.7).abs() < 1e-9);
 }
 
-/// runtime_speed_relative_over_distance_fails.osc's comment, by hand: 20 → 8 m/s at 1 m/s²
-/// covers 168 m of the 71 m.
-#[test]
-fn a_speed_relative_to_another_actor_not_reached_within_a_distance_after_an_until_fails_the_run() {
-    let name = "runtime_speed_relative_over_distance_fails";
+/// Runs `name` to its error: the run fails with the one error record, at `t`, whose text
+/// starts with `head` and ends with `name`.osc's `tail`.
+fn fails_at(name: &str, (head, tail): (&str, &str), t: f64) {
     let lowered = lower(name, 0, None).unwrap_or_else(|e| panic!("{e}"));
     let (error, records) = run_to_error(&lowered.scenario);
     let error = error.expect("the run fails");
     assert!(
-        error.starts_with("expected 'ego''s speed from 20.000 to 8.000 m/s at 1.000 m/s² within 71.000 m (acceleration(…) at ")
-            && error.ends_with(&format!("{name}.osc:30:17), found it needs 168.000 m at t = 3.350 s")),
+        error.starts_with(head) && error.ends_with(&format!("{name}.osc:{tail}")),
         "{error}"
     );
     assert_eq!(records.len(), 1, "{records:?}");
-    assert!((records[0].0 - 3.35).abs() < T_TOL, "{records:?}");
+    assert!((records[0].0 - t).abs() < T_TOL, "{records:?}");
     assert_eq!(records[0].2, error);
+}
+
+/// runtime_speed_relative_over_distance_fails.osc's comment, by hand: 20 → 8 m/s at 1 m/s²
+/// covers 168 m of the 71 m.
+#[test]
+fn a_speed_relative_to_another_actor_not_reached_within_a_distance_after_an_until_fails_the_run() {
+    fails_at(
+        "runtime_speed_relative_over_distance_fails",
+        (
+            "expected 'ego''s speed from 20.000 to 8.000 m/s at 1.000 m/s² within 71.000 m (acceleration(…) at ",
+            "30:17), found it needs 168.000 m at t = 3.350 s",
+        ),
+        3.35,
+    );
+}
+
+/// runtime_speed_relative_over_distance_end_fails.osc's comment, by hand: lead 8 -> 16 m/s
+/// over 1.5 s; ego's 3 s change toward it is cut at 45 m, at 5.90 s, at 16.6 m/s where lead
+/// is at 16 m/s: the check at the phase end fails.
+#[test]
+fn a_speed_relative_to_another_actor_not_met_where_a_distance_ends_the_phase_fails_the_run() {
+    fails_at(
+        "runtime_speed_relative_over_distance_end_fails",
+        (
+            "expected 'ego' at 16.000 m/s ('lead''s 16.000 m/s +0.000 m/s) (within 0.01 m/s) (speed(…) at the phase end at ",
+            "26:17), found it at 16.600 m/s at t = 5.900 s",
+        ),
+        5.9,
+    );
 }
