@@ -25,6 +25,9 @@ const ON_ROAD_TOL: f64 = 1e-4;
 /// change_position_smooth.osc's figures (the curve's length to 1e-4 m), as
 /// `run::position_actions` takes them.
 const CURVE_TOL: f64 = 1e-3;
+/// acceleration_relative_changing.osc's distances with the steps' lag of the ramp (exact on
+/// the 0.05 s grid: float round-off).
+const FOLLOW_TOL: f64 = 1e-6;
 /// World points written to 6 decimals in the scenario (the engine follows them exactly).
 const PATH_TOL: f64 = 1e-5;
 /// Along the road during a sinusoidal offset at a changing speed: its cost (3 mm here, worked
@@ -459,6 +462,36 @@ fn a_route_point_is_along_its_route_in_its_direction() {
     assert!(
         (ego.x - 109.5).abs() < S_TOL && wrap(ego.h).abs() < H_TOL,
         "{ego:?}"
+    );
+}
+
+#[test]
+fn an_acceleration_followed_from_an_oncoming_actor_is_its_acceleration() {
+    let r = run_on("opposite_acceleration_follow", "straight");
+    for (t, truck_v, npc_v) in [
+        (4.0, 13.0, 7.0),
+        (5.0, 10.0, 4.0),
+        (6.0, 10.0, 4.0),
+        (7.0, 10.0, 4.0),
+    ] {
+        let (truck, npc) = (r.at(t, "truck"), r.at(t, "npc"));
+        assert!(
+            (truck.speed - truck_v).abs() < S_TOL,
+            "truck at {t}: {truck:?}"
+        );
+        assert!((npc.speed - npc_v).abs() < S_TOL, "npc at {t}: {npc:?}");
+        assert!(npc.lane == 2 && wrap(npc.h - PI).abs() < H_TOL, "{npc:?}");
+    }
+    // u 101.85 m at 7 s (the plan's 102 m less the steps' lag), 4 m/s on.
+    assert!(
+        (r.at(7.0, "npc").x - 898.15).abs() < FOLLOW_TOL,
+        "{:?}",
+        r.at(7.0, "npc")
+    );
+    assert!(
+        (r.at(8.0, "npc").x - 894.15).abs() < FOLLOW_TOL,
+        "{:?}",
+        r.at(8.0, "npc")
     );
 }
 
