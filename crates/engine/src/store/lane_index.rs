@@ -25,10 +25,13 @@
 //! **Cost.** Building is O(n log n) for n entities (one sort per lane); a query is a binary
 //! search per lane visited plus a short scan bounded by the longest footprint in that lane, so
 //! a step of n queries is O(n log n), not the O(n²) of comparing every pair. The index is
-//! rebuilt in place each step ([`LaneIndex::rebuild`]): its lanes are a vector by dense lane
-//! number and the lane borders are kept where the road's lanes are constant
+//! brought up to date in place each step ([`LaneIndex::rebuild`]): its lanes are a vector by
+//! dense lane number and the lane borders are kept where the road's lanes are constant
 //! (store/lane_slots.rs), no road id is hashed, and the step allocates nothing once the
-//! vectors have grown (issue 31).
+//! vectors have grown (issue 31). An entity whose road, lane section, box t-range and kept
+//! borders did not change keeps its entries and lane handle of the last step, only their
+//! s-range new, and each lane's order is repaired by insertion (store/lane_kept.rs, which says
+//! why the answers are a full build's, and checks it in debug builds).
 //!
 //! **Hints.** A search starts with the index of the first entry not before its start point
 //! (`partition_point`). The driver models ask the same questions of the same entity every
@@ -45,6 +48,7 @@ use std::sync::Arc;
 use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork};
 
 use super::driver_inputs::DriverInput;
+use super::lane_kept::{entry_order, repair_order, Kept};
 use super::lane_slots::{LaneBorders, LaneSlots};
 use crate::world::entity::{Entity, EntityId};
 
@@ -98,21 +102,23 @@ impl Footprint {
 
 /// One entity's footprint in one lane.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Entry {
-    lo: Real,
-    hi: Real,
-    id: EntityId,
+pub(super) struct Entry {
+    pub lo: Real,
+    pub hi: Real,
+    pub id: EntityId,
 }
 
 /// The entries of one lane section's lane, sorted by (lo, id).
 #[derive(Debug, Clone, Default)]
-struct LaneEntries {
-    entries: Vec<Entry>,
+pub(super) struct LaneEntries {
+    pub entries: Vec<Entry>,
     /// Longest footprint (hi − lo) in the lane: bounds the backward scans.
-    max_len: Real,
+    pub max_len: Real,
     /// Some entry's lo is NaN: "lo < x" is then not monotone along the list, and searches
     /// take the binary search alone (its answer is the one there is only when it is).
-    unordered: bool,
+    pub unordered: bool,
+    /// The lane is in `LaneIndex::touched`.
+    listed: bool,
 }
 
 /// Query kinds per entity whose last answers are kept as hints ([`LaneIndex::hint`]).
@@ -166,17 +172,25 @@ pub struct Neighbour {
 /// The per-lane index of one step (module doc).
 #[derive(Debug, Default)]
 pub struct LaneIndex {
-    footprints: Vec<Option<Footprint>>,
+    pub(super) footprints: Vec<Option<Footprint>>,
     /// The network's lane numbering (made at the first build on a network).
     slots: Option<LaneSlots>,
     /// By slot; only the slots in `touched` have entries.
-    lanes: Vec<LaneEntries>,
-    touched: Vec<usize>,
+    pub(super) lanes: Vec<LaneEntries>,
+    /// The lanes with entries, each once.
+    pub(super) touched: Vec<usize>,
     borders: LaneBorders,
     /// [`HINTS`] per entity: where each kind of search found its answer the last time.
     hints: Vec<AtomicU32>,
     /// The driver models' inputs, by entity index (store/driver_inputs.rs).
-    inputs: Vec<Option<DriverInput>>,
+    pub(super) inputs: Vec<Option<DriverInput>>,
+    /// By entity index: what this step keeps for the next (store/lane_kept.rs).
+    pub(super) kept: Vec<Kept>,
+    /// The entries made anew in this step's walk, by slot, before they join their lanes.
+    pending: Vec<(usize, Entry)>,
+    /// The index of the same step built in full, to check this one against (debug builds).
+    #[cfg(debug_assertions)]
+    full: Option<Box<LaneIndex>>,
 }
 
 /// The s- and t-ranges of `e`'s box on a road where its reference point is at (s, t) and its
@@ -199,68 +213,132 @@ fn box_ranges(e: &Entity, s: Real, t: Real, rel: Real) -> ((Real, Real), (Real, 
 }
 
 impl LaneIndex {
-    /// The index of `entities` on `net` (module doc).
+    /// The index of `entities` on `net` (module doc), built in full.
     #[cfg(test)]
     pub fn build(net: &Arc<RoadNetwork>, entities: &[Entity]) -> Self {
         let mut index = LaneIndex::default();
-        index.rebuild(net, entities);
+        index.walk(net, entities, false);
         index
     }
 
-    /// Makes this the index of `entities` on `net`, reusing its storage (module doc).
+    /// Makes this the index of `entities` on `net` (their ids are their indices), reusing its
+    /// storage and keeping what did not change since the last call (module doc,
+    /// store/lane_kept.rs). In debug builds it is checked against a full build.
     pub fn rebuild(&mut self, net: &Arc<RoadNetwork>, entities: &[Entity]) {
+        self.walk(net, entities, true);
+        #[cfg(debug_assertions)]
+        {
+            let mut full = self.full.take().unwrap_or_default();
+            full.walk(net, entities, false);
+            super::lane_kept::assert_same(self, &full);
+            self.full = Some(full);
+        }
+    }
+
+    /// Builds the index of `entities` on `net` in this storage: every entry made anew
+    /// (`keep` false), or kept where it may be (store/lane_kept.rs).
+    fn walk(&mut self, net: &Arc<RoadNetwork>, entities: &[Entity], keep: bool) {
         if !self.slots.as_ref().is_some_and(|s| s.numbers(net)) {
             let slots = LaneSlots::new(net);
             self.lanes.clear();
             self.lanes.resize_with(slots.len(), LaneEntries::default);
             self.touched.clear();
             self.borders.clear();
+            self.kept.clear();
             self.slots = Some(slots);
         }
-        for slot in self.touched.drain(..) {
-            let lane = &mut self.lanes[slot];
-            lane.entries.clear();
-            lane.max_len = 0.0;
-            lane.unordered = false;
+        if !keep {
+            for slot in self.touched.drain(..) {
+                let lane = &mut self.lanes[slot];
+                lane.entries.clear();
+                lane.listed = false;
+            }
         }
-        self.footprints.clear();
-        self.footprints.resize(entities.len(), None);
-        if self.hints.len() != entities.len() * HINTS {
-            self.hints
-                .resize_with(entities.len() * HINTS, || AtomicU32::new(0));
+        let n = entities.len();
+        if self.footprints.len() != n {
+            self.footprints.resize(n, None);
         }
-        if self.inputs.len() != entities.len() {
-            self.inputs.resize(entities.len(), None);
+        if self.kept.len() != n {
+            self.kept.resize(n, Kept::NONE);
         }
+        if self.hints.len() != n * HINTS {
+            self.hints.resize_with(n * HINTS, || AtomicU32::new(0));
+        }
+        if self.inputs.len() != n {
+            self.inputs.resize(n, None);
+        }
+        self.pending.clear();
         for e in entities {
-            let looked_up = self.enter(net, e);
+            let looked_up = self.enter(net, e, keep);
             // The track's lane at the track's s is the lane the road position names wherever
             // the two agree (the common case): its handle is the one just looked up.
-            let input = DriverInput::with_own(e, |road, lane, s| match looked_up {
-                Some((r, l, at, h)) if (r, l) == (road, lane) && at.to_bits() == s.to_bits() => {
-                    Some(h)
-                }
-                _ => net.lane_handle_on(road, lane, s),
-            });
-            self.inputs[e.id.index()] = Some(input);
+            DriverInput::write(&mut self.inputs[e.id.index()], e, net, looked_up);
         }
-        // (lo, id) orders the entries of a lane totally (an entity is entered in a lane
-        // once), so the unstable sort gives the one order there is, without a buffer.
+        self.settle(keep);
+    }
+
+    /// Ends a step's build: the entries of the last step that stay take their entity's new
+    /// s-range and the others leave, the new entries join their lanes, and each lane is put in
+    /// order (repaired where kept, else sorted) with its bounds.
+    fn settle(&mut self, keep: bool) {
+        let kept = &self.kept;
         for &slot in &self.touched {
             self.lanes[slot]
                 .entries
-                .sort_unstable_by(|a, b| a.lo.total_cmp(&b.lo).then(a.id.cmp(&b.id)));
+                .retain_mut(|e| match kept.get(e.id.index()) {
+                    Some(k) if k.stays => {
+                        (e.lo, e.hi) = k.s_range;
+                        true
+                    }
+                    _ => false,
+                });
         }
+        for &(slot, entry) in &self.pending {
+            let lane = &mut self.lanes[slot];
+            if !lane.listed {
+                lane.listed = true;
+                self.touched.push(slot);
+            }
+            lane.entries.push(entry);
+        }
+        let lanes = &mut self.lanes;
+        self.touched.retain(|&slot| {
+            let lane = &mut lanes[slot];
+            if lane.entries.is_empty() {
+                lane.listed = false;
+                return false;
+            }
+            if keep {
+                repair_order(&mut lane.entries);
+            } else {
+                // (lo, id) orders the entries of a lane totally (an entity is entered in a
+                // lane once), so the unstable sort gives the one order there is.
+                lane.entries.sort_unstable_by(entry_order);
+            }
+            let (mut max_len, mut unordered) = (0.0, false);
+            for e in &lane.entries {
+                max_len = Real::max(max_len, e.hi - e.lo);
+                unordered |= e.lo.is_nan();
+            }
+            (lane.max_len, lane.unordered) = (max_len, unordered);
+            true
+        });
     }
 
     /// Enters `e` in the index and keeps its footprint (module doc), when it is placed, visible
     /// to traffic and on a road; returns the lane look-up made for its footprint: road, lane,
-    /// s and the handle found.
+    /// s and the handle found. With `keep`, its entries and handle of the last step stay where
+    /// they are the same (store/lane_kept.rs).
     fn enter(
         &mut self,
         net: &Arc<RoadNetwork>,
         e: &Entity,
+        keep: bool,
     ) -> Option<(RoadHandle, i32, Real, LaneHandle)> {
+        let i = e.id.index();
+        let was = if keep { self.kept[i] } else { Kept::NONE };
+        self.kept[i] = Kept::NONE;
+        self.footprints[i] = None;
         if !e.placed || !e.visibility.traffic {
             return None;
         }
@@ -278,12 +356,44 @@ impl LaneIndex {
             Some(_) => -e.speed,
             None => e.speed * rp.relative_heading.cos(),
         };
-        let handle = net.lane_handle_on(road_handle, rp.lane_id, rp.s)?;
-        self.insert(road_handle, road, rp.s, s_range, t_range, e.id);
-        if let Some(junction) = road.junction.as_deref().and_then(|j| net.junction(j)) {
-            self.insert_in_junction(net, junction, road, e);
+        let section = road.lane_section_index(rp.s) as u32;
+        let same_handle = LaneHandle {
+            road: road_handle.0,
+            section,
+            lane: rp.lane_id,
+        };
+        let handle = if was.has_handle && was.handle == same_handle {
+            was.handle
+        } else {
+            net.lane_handle_on(road_handle, rp.lane_id, rp.s)?
+        };
+        let t_bits = (t_range.0.to_bits(), t_range.1.to_bits());
+        let plain = road.junction.is_none();
+        let stays = plain
+            && was.lanes
+            && was.handle.road == road_handle.0
+            && was.section == section
+            && was.t_range == t_bits
+            && self.borders.holds(road_handle, section, rp.s) == Some(was.borders);
+        let mut now = Kept {
+            s_range,
+            t_range: t_bits,
+            handle,
+            section,
+            has_handle: true,
+            stays,
+            ..was
+        };
+        if !stays {
+            let borders = self.insert(road_handle, road, section, rp.s, s_range, t_range, e.id);
+            if let Some(junction) = road.junction.as_deref().and_then(|j| net.junction(j)) {
+                self.insert_in_junction(net, junction, road, e);
+            }
+            now.lanes = plain && borders.is_some();
+            now.borders = borders.unwrap_or(0);
         }
-        self.footprints[e.id.index()] = Some(Footprint {
+        self.kept[i] = now;
+        self.footprints[i] = Some(Footprint {
             handle,
             s: rp.s,
             s_range,
@@ -293,26 +403,28 @@ impl LaneIndex {
         Some((road_handle, rp.lane_id, rp.s, handle))
     }
 
-    /// Enters `id` with footprint `s_range` × `t_range` in every lane of `road`'s section at
-    /// `s` whose borders its t-range overlaps.
+    /// Enters `id` with footprint `s_range` × `t_range` in every lane of `road`'s section
+    /// `section` (the section at `s`) whose borders at `s` its t-range overlaps: the entries
+    /// wait in `pending` for the step's end. Returns the generation of the kept borders used
+    /// (store/lane_slots.rs), `None` where they were made for this call.
+    #[allow(clippy::too_many_arguments)]
     fn insert(
         &mut self,
         road_handle: RoadHandle,
         road: &Road,
+        section: u32,
         s: Real,
         s_range: (Real, Real),
         t_range: (Real, Real),
         id: EntityId,
-    ) {
-        let Some(slots) = self.slots.as_ref() else {
-            return;
-        };
-        // The section `lane_handle` finds for a lane of the section at s is that section.
-        let section = road.lane_section_index(s) as u32;
-        for &(lane, lo, hi) in self.borders.at(road_handle, road, s) {
+    ) -> Option<u32> {
+        let slots = self.slots.as_ref()?;
+        let (lanes, generation) = self.borders.at(road_handle, section, road, s);
+        for &(lane, lo, hi) in lanes {
             if t_range.1.min(hi) - t_range.0.max(lo) <= LANE_OVERLAP {
                 continue;
             }
+            // The section `lane_handle` finds for a lane of the section at s is that section.
             let h = LaneHandle {
                 road: road_handle.0,
                 section,
@@ -321,18 +433,16 @@ impl LaneIndex {
             let Some(slot) = slots.slot(h) else {
                 continue;
             };
-            let entries = &mut self.lanes[slot];
-            if entries.entries.is_empty() {
-                self.touched.push(slot);
-            }
-            entries.max_len = entries.max_len.max(s_range.1 - s_range.0);
-            entries.unordered |= s_range.0.is_nan();
-            entries.entries.push(Entry {
-                lo: s_range.0,
-                hi: s_range.1,
-                id,
-            });
+            self.pending.push((
+                slot,
+                Entry {
+                    lo: s_range.0,
+                    hi: s_range.1,
+                    id,
+                },
+            ));
         }
+        generation
     }
 
     /// Enters `e` (on `road`, a road of `junction`) on the junction's other roads whose surface
@@ -376,7 +486,16 @@ impl LaneIndex {
             let ref_s = rp.s - (c.x * rc - c.y * rs);
             let ref_t = rp.t - (c.x * rs + c.y * rc);
             let (s_range, t_range) = box_ranges(e, ref_s, ref_t, rel);
-            self.insert(other_handle, other_road, rp.s, s_range, t_range, e.id);
+            let section = other_road.lane_section_index(rp.s) as u32;
+            self.insert(
+                other_handle,
+                other_road,
+                section,
+                rp.s,
+                s_range,
+                t_range,
+                e.id,
+            );
         }
     }
 
@@ -709,14 +828,7 @@ mod tests {
     /// search is `partition_point` alone.
     #[test]
     fn the_hinted_search_is_partition_point() {
-        // A small deterministic generator (64-bit LCG, Knuth's constants).
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (state >> 33) as f64 / (1u64 << 31) as f64
-        };
+        let mut next = crate::store::lane_kept::tests::generator(0x2545_f491_4f6c_dd1d);
         let mut checked = 0;
         for n in [0usize, 1, 2, 5, 17, 120] {
             let mut los: Vec<Real> = (0..n)
@@ -739,6 +851,7 @@ mod tests {
                     .collect(),
                 max_len: 4.5,
                 unordered: false,
+                listed: true,
             };
             let mut froms: Vec<Real> = los.iter().flat_map(|&l| [l, l + 0.25, l - 0.25]).collect();
             froms.extend([-100.0, 100.0, -0.0, 0.0, Real::INFINITY, Real::NEG_INFINITY]);
@@ -776,6 +889,7 @@ mod tests {
                 .collect(),
             max_len: 8.0,
             unordered: true,
+            listed: true,
         };
         let hint = AtomicU32::new(2);
         let expected = nan.entries.partition_point(|e| e.lo < 5.0);

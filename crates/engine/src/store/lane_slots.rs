@@ -13,8 +13,11 @@
 //! (min, max) of its two borders' t, as `Road::lane_span` gives them lane by lane. Where
 //! `Road::constant_lanes` holds at s, every border is the same number at every s of its range
 //! (opendrive query/constant_lanes.rs says why, bit for bit), so the list made at one s of the
-//! range is the list at any other: it is kept per road with its range. Elsewhere the list is
-//! made anew at each call.
+//! range is the list at any other: it is kept per lane section with its range (one list per
+//! road was replaced at every step where vehicles drove in two of its sections). Elsewhere the
+//! list is made anew at each call. Each kept list has a generation number, new at every list made, so
+//! that the index can tell the list an entity's lanes were taken from is still the one at its
+//! s (store/lane_kept.rs).
 
 use std::sync::Arc;
 
@@ -97,15 +100,21 @@ struct Kept {
     lo: Real,
     hi: Real,
     lanes: Vec<Borders>,
+    /// Which list this is: new at each list made ([`LaneBorders::at`]), counted modulo 2³²:
+    /// an entity compares the generation of one step with the next, between which fewer than
+    /// 2³² lists are made (at most one per entry made), so equal numbers are the same list.
+    generation: u32,
 }
 
-/// Lane borders per road, kept where constant (module doc).
+/// Lane borders per lane section, kept where constant (module doc).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct LaneBorders {
-    /// By road index.
-    kept: Vec<Option<Kept>>,
+    /// By road index, then lane section index.
+    kept: Vec<Vec<Option<Kept>>>,
     /// The list made at the last call outside a constant range.
     fresh: Vec<Borders>,
+    /// The generation of the last kept list made.
+    generations: u32,
 }
 
 impl LaneBorders {
@@ -116,27 +125,61 @@ impl LaneBorders {
 
     /// The lanes (other than the centre lane) of `road`'s section at `s` with their borders
     /// there: `Road::lane_span` of each, as (id, min t, max t); none where s is off the road.
-    pub(crate) fn at(&mut self, road: RoadHandle, r: &Road, s: Real) -> &[Borders] {
-        let i = road.index();
+    /// With them the generation of the kept list they are ([`holds`](Self::holds)), `None`
+    /// for a list made for this call alone. `section` is the section at s
+    /// (`Road::lane_section_index`).
+    pub(crate) fn at(
+        &mut self,
+        road: RoadHandle,
+        section: u32,
+        r: &Road,
+        s: Real,
+    ) -> (&[Borders], Option<u32>) {
+        let (i, k) = (road.index(), section as usize);
         if self.kept.len() <= i {
-            self.kept.resize(i + 1, None);
+            self.kept.resize_with(i + 1, Vec::new);
         }
-        let hit = matches!(&self.kept[i], Some(k) if k.lo <= s && s <= k.hi);
-        if !hit {
+        if self.kept[i].len() <= k {
+            self.kept[i].resize(k + 1, None);
+        }
+        if self.holds(road, section, s).is_none() {
             match r.constant_lanes(s) {
                 Some((lo, hi)) => {
-                    let mut lanes = self.kept[i].take().map(|k| k.lanes).unwrap_or_default();
+                    let mut lanes = self.kept[i][k].take().map(|k| k.lanes).unwrap_or_default();
                     borders(r, s, &mut lanes);
-                    self.kept[i] = Some(Kept { lo, hi, lanes });
+                    self.generations = self.generations.wrapping_add(1);
+                    let generation = self.generations;
+                    self.kept[i][k] = Some(Kept {
+                        lo,
+                        hi,
+                        lanes,
+                        generation,
+                    });
                 }
                 None => {
                     borders(r, s, &mut self.fresh);
-                    return &self.fresh;
+                    return (&self.fresh, None);
                 }
             }
         }
         // Invariant: set just above when it did not hold s.
-        self.kept[i].as_ref().map_or(&[], |k| &k.lanes[..])
+        self.kept[i][k]
+            .as_ref()
+            .map_or((&[], None), |k| (&k.lanes[..], Some(k.generation)))
+    }
+
+    /// The generation of the list kept for `road`'s section `section` if its range holds
+    /// `s`: [`at`](Self::at) gives that list there until another is made for the section.
+    #[inline]
+    pub(crate) fn holds(&self, road: RoadHandle, section: u32, s: Real) -> Option<u32> {
+        match self
+            .kept
+            .get(road.index())
+            .and_then(|r| r.get(section as usize))
+        {
+            Some(Some(k)) if k.lo <= s && s <= k.hi => Some(k.generation),
+            _ => None,
+        }
     }
 }
 
@@ -237,7 +280,10 @@ mod tests {
             -1e-9,
             100.0 + 1e-9,
         ] {
-            let got = memo.at(RoadHandle(0), road, s).to_vec();
+            let got = memo
+                .at(RoadHandle(0), road.lane_section_index(s) as u32, road, s)
+                .0
+                .to_vec();
             let section = road.lane_section_at(s);
             let expected: Vec<Borders> = section
                 .lanes()
@@ -259,7 +305,7 @@ mod tests {
             assert_eq!(bits(&got_sorted), bits(&expected), "s = {s}");
         }
         // Lane −1 at s 77.25 of section 2: width 3 + 0.01·37.25 = 3.3725, t −3.3725..0.
-        let at = memo.at(RoadHandle(0), road, 77.25).to_vec();
+        let at = memo.at(RoadHandle(0), 1, road, 77.25).0.to_vec();
         let minus_one = at.iter().find(|b| b.0 == -1).expect("lane −1");
         assert!((minus_one.1 + 3.3725).abs() < 1e-12 && minus_one.2 == 0.0);
     }

@@ -10,6 +10,7 @@
 //! | `object` | an `Entity` from its ScenarioObject (also the template of spawned vehicles) |
 //! | `driver_inputs` | the driver models' per-step inputs per entity, a compact copy filled with the lane index |
 //! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |
+//! | `lane_kept` | what the lane index keeps of each entity's entries from step to step, its order repair and check |
 //! | `lane_slots` | the lane index's dense lane numbers and lane borders kept per road |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
 //! | `targets` | what an action's target asks for now: `entityRef`, SpeedActionTarget, LaneChangeTarget |
@@ -17,6 +18,7 @@
 
 pub(crate) mod driver_inputs;
 pub(crate) mod lane_index;
+mod lane_kept;
 mod lane_slots;
 mod object;
 pub(crate) mod selection;
