@@ -48,7 +48,7 @@ use std::sync::Arc;
 use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork};
 
 use super::driver_inputs::DriverInput;
-use super::lane_kept::{entry_order, repair_order, Kept};
+use super::lane_kept::{entry_order, repair_order, Entry, Kept};
 use super::lane_slots::{LaneBorders, LaneSlots};
 use crate::world::entity::{Entity, EntityId};
 
@@ -98,14 +98,6 @@ impl Footprint {
             Direction::Backward => -self.speed_s,
         }
     }
-}
-
-/// One entity's footprint in one lane.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(super) struct Entry {
-    pub lo: Real,
-    pub hi: Real,
-    pub id: EntityId,
 }
 
 /// The entries of one lane section's lane, sorted by (lo, id).
@@ -230,7 +222,7 @@ impl LaneIndex {
         {
             let mut full = self.full.take().unwrap_or_default();
             full.walk(net, entities, false);
-            super::lane_kept::assert_same(self, &full);
+            self.assert_same_as(&full);
             self.full = Some(full);
         }
     }
@@ -495,6 +487,76 @@ impl LaneIndex {
                 s_range,
                 t_range,
                 e.id,
+            );
+        }
+    }
+
+    /// Panics unless this index (kept from step to step, store/lane_kept.rs) and `full` (built anew for the same
+    /// step) give the same answers: the same non-empty lanes with the same entries in the same
+    /// order, bounds and flags, the same footprints and driver inputs, bit for bit. Allocates
+    /// nothing (the step's allocation test runs it).
+    #[cfg(any(test, debug_assertions))]
+    pub(super) fn assert_same_as(&self, full: &LaneIndex) {
+        let kept = self;
+        let entry = |e: &Entry| (e.lo.to_bits(), e.hi.to_bits(), e.id);
+        assert_eq!(kept.touched.len(), full.touched.len(), "lanes with entries");
+        for &slot in &full.touched {
+            let (k, f) = (&kept.lanes[slot], &full.lanes[slot]);
+            assert!(
+                k.entries.len() == f.entries.len()
+                    && k.entries
+                        .iter()
+                        .zip(&f.entries)
+                        .all(|(a, b)| entry(a) == entry(b))
+                    && k.max_len.to_bits() == f.max_len.to_bits()
+                    && k.unordered == f.unordered,
+                "the kept lane {slot} is not the full build's: {k:?} against {f:?}"
+            );
+        }
+        let footprint = |f: &Footprint| {
+            (
+                f.handle,
+                [
+                    f.s,
+                    f.s_range.0,
+                    f.s_range.1,
+                    f.t_range.0,
+                    f.t_range.1,
+                    f.speed_s,
+                ]
+                .map(f64::to_bits),
+            )
+        };
+        assert_eq!(kept.footprints.len(), full.footprints.len(), "footprints");
+        for (i, (k, f)) in kept.footprints.iter().zip(&full.footprints).enumerate() {
+            assert!(
+                k.as_ref().map(footprint) == f.as_ref().map(footprint),
+                "entity {i}'s kept footprint {k:?} is not the full build's {f:?}"
+            );
+        }
+        let input = |d: &DriverInput| {
+            (
+                d.id,
+                d.placed,
+                d.lateral_action,
+                d.speed.to_bits(),
+                d.track.map(|t| {
+                    (
+                        t.road,
+                        t.lane_id,
+                        t.s.to_bits(),
+                        t.direction,
+                        t.blend_from,
+                        t.own,
+                    )
+                }),
+            )
+        };
+        assert_eq!(kept.inputs.len(), full.inputs.len(), "driver inputs");
+        for (i, (k, f)) in kept.inputs.iter().zip(&full.inputs).enumerate() {
+            assert!(
+                k.as_ref().map(input) == f.as_ref().map(input),
+                "entity {i}'s driver input {k:?} is not the full build's {f:?}"
             );
         }
     }

@@ -19,6 +19,8 @@
 pub(crate) mod driver_inputs;
 pub(crate) mod lane_index;
 mod lane_kept;
+#[cfg(test)]
+mod lane_kept_tests;
 mod lane_slots;
 mod object;
 pub(crate) mod selection;

@@ -1,0 +1,159 @@
+//! The lane index kept from step to step (store/lane_kept.rs) against a full build, in random
+//! traffic on corpus roads (issue 31).
+
+use std::sync::Arc;
+
+use opendrive::{Direction, Real, RoadNetwork};
+
+use super::lane_index::LaneIndex;
+use super::lane_kept::tests::generator;
+use crate::domain::{BoundingBox, Vector3};
+use crate::position::lane_at;
+use crate::store::World;
+use crate::world::entity::{Entity, EntityId, EntityKind};
+
+/// A car of `length` × 2 m whose box centre is 1.4 m ahead of its reference point.
+fn car(i: u32, length: Real) -> Entity {
+    let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), length, 2.0, 1.5).expect("box");
+    Entity::new(EntityId(i), &format!("c{i}"), EntityKind::Vehicle, b)
+}
+
+/// Places car `id` at a random s of a random road, in the middle of a random lane there
+/// (driving along the lane's direction under right-hand traffic), or off its centre.
+fn place_randomly(w: &mut World, id: EntityId, next: &mut impl FnMut() -> f64) {
+    let net = Arc::clone(&w.network);
+    for _ in 0..20 {
+        let road = &net.roads()[(next() * net.roads().len() as f64) as usize];
+        let s = next() * road.length;
+        let lanes: Vec<i32> = road
+            .lane_section_at(s)
+            .lanes()
+            .filter(|l| l.id != 0)
+            .map(|l| l.id)
+            .collect();
+        if lanes.is_empty() {
+            continue;
+        }
+        let lane = lanes[(next() * lanes.len() as f64) as usize];
+        let Ok(span) = road.lane_span(lane, s) else {
+            continue;
+        };
+        let off = if next() < 0.8 { 0.0 } else { next() - 0.5 };
+        let t = 0.5 * (span.inner + span.outer) + off;
+        let Ok(mut pose) = road.pose(s, t) else {
+            continue;
+        };
+        if lane > 0 {
+            pose.h += std::f64::consts::PI;
+        }
+        let found = net.locate(pose.x, pose.y, Some(pose.h));
+        w.place_resolved(id, pose, found);
+        return;
+    }
+}
+
+/// Moves car `i` `ds` along its direction of travel on its road, its t and heading relative
+/// to the road kept (as a vehicle following a lane), or shifted by `dt` (a lane change);
+/// off the road's ends it is placed anew.
+fn drive(w: &mut World, i: usize, ds: Real, dt: Real, next: &mut impl FnMut() -> f64) {
+    let net = Arc::clone(&w.network);
+    let e = &mut w.entities[i];
+    let (Some(rp), Some(track)) = (e.road_position.as_mut(), e.track.as_mut()) else {
+        return place_randomly(w, EntityId(i as u32), next);
+    };
+    let road = net.road_at(rp.road);
+    let s = match track.direction {
+        Direction::Forward => rp.s + ds,
+        Direction::Backward => rp.s - ds,
+    };
+    let t = rp.t + dt;
+    let (Some((lane, offset)), Ok(pose)) = (lane_at(road, s, t), road.pose(s, t)) else {
+        return place_randomly(w, EntityId(i as u32), next);
+    };
+    (rp.s, rp.t, rp.lane_id, rp.offset) = (s, t, lane, offset);
+    (track.s, track.t) = (s, t);
+    if dt != 0.0 {
+        track.lane_id = lane;
+    }
+    e.pose.x = pose.x;
+    e.pose.y = pose.y;
+    e.pose.h = pose.h + rp.relative_heading;
+    e.speed = ds / 0.05;
+}
+
+/// The kept index gives a full build's answers, step after step, in random traffic on
+/// corpus roads with junctions (fabriksgatan), lane sections and lanes that widen
+/// (two_plus_one) and a highway (e6mini): cars following their lane at various speeds in
+/// both directions (their entries stay), drifting across lane borders, jumping elsewhere,
+/// hidden from traffic, taken off the road and put back, their boxes and headings changed,
+/// a car spawned midway. Each step the kept index is compared with the step's full build
+/// (the lanes' entries in order, bounds and flags, footprints, driver inputs, bit for bit);
+/// most entries stay, and every kind of change happens.
+#[test]
+fn a_kept_index_gives_the_full_builds_answers_in_random_traffic() {
+    let corpus = |name: &str| {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../../shared/corpus/esmini/xodr")
+            .join(name);
+        Arc::new(RoadNetwork::from_file(&path).unwrap_or_else(|e| panic!("{e}")))
+    };
+    let mut next = generator(0x5851_f42d_4c95_7f2d);
+    let mut steps = 0;
+    let mut shares = Vec::new();
+    for name in ["fabriksgatan.xodr", "two_plus_one.xodr", "e6mini.xodr"] {
+        let (mut stayed, mut entered) = (0usize, 0usize);
+        let net = corpus(name);
+        let cars = 80;
+        let entities = (0..cars).map(|i| car(i, 4.0 + (i % 4) as Real)).collect();
+        let mut w = World::new(Arc::clone(&net), entities);
+        for i in 0..cars {
+            place_randomly(&mut w, EntityId(i), &mut next);
+        }
+        let mut kept = LaneIndex::default();
+        for step in 0..200 {
+            if step == 100 {
+                let id = w.spawn(car(0, 5.0));
+                place_randomly(&mut w, id, &mut next);
+            }
+            for i in 0..w.entities.len() {
+                let ds = 0.05 * 30.0 * next();
+                match next() {
+                    x if x < 0.85 => drive(&mut w, i, ds, 0.0, &mut next),
+                    x if x < 0.90 => drive(&mut w, i, ds, 0.7 * (next() - 0.5), &mut next),
+                    x if x < 0.92 => place_randomly(&mut w, EntityId(i as u32), &mut next),
+                    x if x < 0.94 => {
+                        let v = &mut w.entities[i].visibility.traffic;
+                        *v = !*v;
+                    }
+                    x if x < 0.95 => {
+                        let p = &mut w.entities[i].placed;
+                        *p = !*p;
+                    }
+                    x if x < 0.97 => {
+                        let length = 3.0 + 10.0 * next();
+                        w.entities[i].bounding_box = car(0, length).bounding_box;
+                    }
+                    x if x < 0.98 => {
+                        if let Some(rp) = w.entities[i].road_position.as_mut() {
+                            rp.relative_heading += 0.2 * (next() - 0.5);
+                        }
+                    }
+                    _ => {}
+                }
+            }
+            kept.rebuild(&net, w.entities());
+            let full = LaneIndex::build(&net, w.entities());
+            kept.assert_same_as(&full);
+            stayed += kept.kept.iter().filter(|k| k.stays).count();
+            entered += kept.footprints.iter().flatten().count();
+            steps += 1;
+        }
+        shares.push(stayed as f64 / entered as f64);
+    }
+    assert_eq!(steps, 600);
+    // About 85 % of the cars follow their lane in a step; their entries stay but where a
+    // junction's road, a new section or borders made at each s (a lane widening,
+    // store/lane_slots.rs) are under them: measured 37 % of the entered cars in the town,
+    // 68 % on two_plus_one, 88 % on the highway.
+    assert!(shares.iter().all(|&f| f > 0.3), "{shares:?}");
+}
