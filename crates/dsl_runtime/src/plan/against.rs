@@ -4,7 +4,8 @@
 //! directions.
 //!
 //! An actor whose first phase is `along(l)` of a lane driven in −s (a lane field the map's
-//! modifiers bind, an odr point), or `along(r)` of a route field the map's
+//! modifiers bind, an odr point, a route through points in such a lane, whose path runs
+//! against s and whose roads the plan drives the other way round, `road::route_roads`), or `along(r)` of a route field the map's
 //! `routes_are_opposite(route1, route2)` binds as `route2` (§8.12.2.2.10; `bind_routes`: the
 //! plan's roads driven the other way), drives the plan's roads against s: it is placed and planned
 //! on the view `PlanRoad::against` gives, in the distance u along its direction of travel
@@ -23,15 +24,17 @@
 //! lowering turns to the road's; an acceleration has no direction), and the position and
 //! path actions (`assign_position`, `assign_orientation`, `change_position`, `follow_path`,
 //! `follow_trajectory`, `replay_path`, `replay_trajectory`: world places have no direction;
-//! the place the actor reaches is put on the view, `position_actions`). What the engine measures
+//! the place the actor reaches is put on the view, `position_actions`),
+//! `avoid_collisions(true)` (the engine's `idm` finds the leader along the vehicle's direction
+//! of travel, `car_following`). What the engine measures
 //! for such an actor — its checks at the start of a phase that starts on a run-time condition
 //! (`position(…)`, `lateral(…)` in the lane or beside another actor, `lane(…)` by number or
 //! relative to another actor, `along` a named route), the marks of `distance(d)` and of a gap
 //! without a phase duration, the TravelAction — it measures along the actor's direction of
 //! travel, in the numbers the plan writes (u = L − s, t to the actor's left): the plan gives
 //! it the direction with the roads (`Planner::chain`, `scenario::PlanRoads`). The rest is an
-//! error at the action or modifier (not run yet), never planned in the wrong direction:
-//! `avoid_collisions(true)`, a group.
+//! error at the action or modifier (not run yet), never planned in the wrong direction: the
+//! group forms of the path and position actions (`group_direction`).
 //!
 //! The gap actions (`change_space_gap`, `keep_space_gap`, `change_time_headway`,
 //! `keep_time_headway`) run between two actors driving against s: the engine's
@@ -39,6 +42,11 @@
 //! the actor's direction of travel (OpenSCENARIO 1.3 §6.4, `condition::road_distance`: the
 //! reference ahead of / left of it is positive) and move the actor along and across its lane in
 //! that direction, the plan's own view; their checks carry the direction like every other.
+//!
+//! A vehicle group (§8.7.18) drives its members' direction, one for all of them
+//! (`group_direction`): its formation is placed and planned on the view as in +s, front to
+//! back along the direction of travel, and each member lowered as an actor driving against s;
+//! the gap actions' group form is their chain along that formation.
 //!
 //! An actor along a free route of the other direction than its own is an error at the
 //! `along` (`check_alongs`).
@@ -48,15 +56,21 @@
 //! (`position(d, ahead_of/behind: x)`, `lane(same_as/side_of/left_of/right_of: x)`, a gap or
 //! a lane change relative to x) is an error at the argument: §8.9 places the actor "ahead of"
 //! or "behind" x, or in a lane counted from x's, along the direction both travel, and two
-//! actors driving opposite ways share none.
+//! actors driving opposite ways share none. A stationary object has no direction: an actor
+//! driving against s relates to it in its own frame (`turn_stationary` while its phases are
+//! planned, `place` at the start: u = L − s, its offset to the left of that direction); a
+//! lane or a lateral position counted from the object's lane only where the object stands in
+//! a lane of the actor's direction (else an error at the argument).
 
 use std::collections::HashMap;
 
 use super::place::ToPlace;
+use super::types::Entity;
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{
-    Action, Along, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
+    Action, ActorKind, Along, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
 };
+use crate::track::Track;
 
 /// The speed relations, which hold between actors of any directions.
 const SPEED_REFERENCES: [&str; 3] = ["faster_than", "slower_than", "same_as"];
@@ -70,7 +84,7 @@ pub(crate) fn check_references(
     index: &HashMap<String, usize>,
 ) -> Result<(), Error> {
     let against: HashMap<&str, bool> = all.iter().map(|p| (p.name.as_str(), p.against)).collect();
-    let stands = |name: &str| all.iter().any(|p| p.name == name && p.fixed.is_some());
+    let fixed = |name: &str| all.iter().find(|p| p.name == name).and_then(|p| p.fixed);
     if !against.values().any(|a| *a) {
         return Ok(());
     }
@@ -79,23 +93,32 @@ pub(crate) fn check_references(
         let Kind::Invoke(inv) = &leaf.kind else {
             continue;
         };
-        // The invocation's actor: an entity, or a group (whose members are entities).
+        // The invocation's actor: an entity, or a group, which drives its members' direction
+        // (they share the group's first phase, so its route).
         let actor_against = if index.contains_key(&inv.actor) {
             dir(&inv.actor)
         } else {
-            let prefix = format!("{}.", inv.actor);
-            let members: Vec<&str> = against
-                .keys()
-                .filter(|n| n.starts_with(&prefix))
-                .copied()
-                .collect();
-            if members.iter().any(|m| dir(m)) {
-                return Err(leaf.site.err(
+            let against = group_direction(&inv.actor, all, &leaf.site)?;
+            // The group forms of the position and path actions move the formation by its
+            // offsets in the road frame (`position_actions`, `group_path`), not yet written
+            // for the view.
+            let moves_formation = matches!(
+                inv.kind,
+                Action::AssignPosition
+                    | Action::AssignOrientation
+                    | Action::ChangePosition
+                    | Action::FollowPath
+                    | Action::FollowTrajectory
+                    | Action::ReplayPath
+                    | Action::ReplayTrajectory
+            );
+            if against && moves_formation {
+                return Err(inv.actor_site.err(
                     K::Unsupported,
-                    format!("expected a vehicle driving against s, found group `{}` (groups against s are not run yet: their formation is placed in +s)", inv.actor),
+                    format!("expected a group action that runs for group `{}`, which drives against s, found {}(…) (not run yet against s: the group forms of the position and path actions move the formation in the road frame; each member's own {}(…) runs)", inv.actor, inv.action, inv.action),
                 ));
             }
-            false
+            against
         };
         if actor_against {
             check_runs(inv, &inv.modifiers)?;
@@ -109,6 +132,24 @@ pub(crate) fn check_references(
             let Some(x) = a.path.as_deref().filter(|x| index.contains_key(*x)) else {
                 continue;
             };
+            let what = m.map_or_else(
+                || format!("{}(…)", inv.action),
+                |m| format!("{}(…)", m.name),
+            );
+            // A stationary object has no direction: its place is turned into the actor's
+            // frame (`turn_stationary`, `place`). A relation along the lane (a position, a
+            // speed) holds with it in any lane; one that counts lanes from its lane (`lane`,
+            // a lane change relative to it) needs a lane the actor drives in its direction.
+            if let Some(f) = fixed(x) {
+                let along = m.is_some_and(|m| matches!(m.kind, ModKind::Position | ModKind::Speed));
+                if !along && actor_against && f.lane < 0 {
+                    return Err(a.site.err(
+                        K::Unsatisfiable,
+                        format!("expected `{key}:` of {what} to name an object in a lane `{}` drives in its direction (against s, a lane of the left side), found `{x}` in lane {}, driven in +s", inv.actor, f.lane),
+                    ));
+                }
+                continue;
+            }
             if dir(x) == actor_against || x == inv.actor {
                 continue;
             }
@@ -118,16 +159,6 @@ pub(crate) fn check_references(
                 continue;
             }
             let how = |a: bool| if a { "against s" } else { "in +s" };
-            let what = m.map_or_else(
-                || format!("{}(…)", inv.action),
-                |m| format!("{}(…)", m.name),
-            );
-            if stands(x) {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    format!("expected `{key}:` of {what} to name an actor driving in the direction of `{}` (against s), found `{x}`, a stationary object, whose place the plan measures in +s (relations of an actor driving against s to a stationary object are not run yet)", inv.actor),
-                ));
-            }
             return Err(a.site.err(
                 K::Unsupported,
                 format!(
@@ -140,6 +171,35 @@ pub(crate) fn check_references(
         }
     }
     Ok(())
+}
+
+/// The direction of group `group`'s members among `all` (true: against s), or an error at
+/// `site` when they drive both ways (a member whose own first phase comes before the group's
+/// set its direction apart): a formation is placed and planned along one direction of travel.
+pub(crate) fn group_direction(
+    group: &str,
+    all: &[ToPlace<'_>],
+    site: &crate::error::Site,
+) -> Result<bool, Error> {
+    let prefix = format!("{group}.");
+    let mut members = all.iter().filter(|p| p.name.starts_with(&prefix));
+    let Some(first) = members.next() else {
+        return Ok(false);
+    };
+    if let Some(other) = members.find(|p| p.against != first.against) {
+        let how = |a: bool| if a { "against s" } else { "in +s" };
+        return Err(site.err(
+            K::Unsatisfiable,
+            format!(
+                "expected the members of group `{group}` to drive one direction (its formation is placed along one direction of travel), found `{}` {} and `{}` {}",
+                first.name,
+                how(first.against),
+                other.name,
+                how(other.against)
+            ),
+        ));
+    }
+    Ok(first.against)
 }
 
 /// Checks that invocation `inv` with modifiers `mods` runs for an actor driving against s
@@ -206,7 +266,8 @@ pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
             // to the drivers' left or right: the view's t, turned to the road's by `lower`.
             | ModKind::Acceleration
             | ModKind::Lateral => true,
-            ModKind::AvoidCollisions => false,
+            // The engine's IDM finds the leader along the direction of travel (car_following).
+            ModKind::AvoidCollisions => true,
         };
         // A shape is its action's dynamics, planned on the view as that action (`shapes`).
         if !runs {
@@ -297,4 +358,31 @@ pub(crate) fn check_alongs(
         }
     }
     Ok(())
+}
+
+/// Turns the place of every stationary object among `entities` into the frame of an actor
+/// driving the plan's roads (of length `length`) against s: s to u = L − s, its offset from its
+/// lane's centre to the left of that direction (−offset); returns the tracks it replaced, which
+/// [`restore_stationary`] puts back. A stationary object has no direction of travel: an actor
+/// related to one (`position(d, behind: cone)`) reads its place in the actor's own frame.
+pub(crate) fn turn_stationary(entities: &mut [Entity], length: f64) -> Vec<(usize, Track)> {
+    let mut kept = Vec::new();
+    for (i, e) in entities.iter_mut().enumerate() {
+        if !matches!(e.data.kind, ActorKind::Stationary(_)) {
+            continue;
+        }
+        // A stationary object's track is its place from the start (nothing moves it).
+        let (s, _) = e.track.at(0.0);
+        let mut turned = Track::new(length - s, 0.0, e.track.lane(0.0));
+        turned.set_offset(0.0, -e.track.offset(0.0));
+        kept.push((i, std::mem::replace(&mut e.track, turned)));
+    }
+    kept
+}
+
+/// Puts back the tracks [`turn_stationary`] replaced.
+pub(crate) fn restore_stationary(entities: &mut [Entity], kept: Vec<(usize, Track)>) {
+    for (i, track) in kept {
+        entities[i].track = track;
+    }
 }

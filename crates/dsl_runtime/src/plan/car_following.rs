@@ -12,10 +12,15 @@
 //! `after` actions): from then on the actor keeps the speed the controller left it at. A
 //! SpeedAction of the phase sets the controller's desired speed anew (the engine's reading).
 //!
+//! Either direction of travel: the `idm` controller finds the leader from the vehicle's front
+//! bumper along its lane in its lane track's direction (engine `ControllerView::leader`), so a
+//! vehicle in a lane driven in −s (`plan::against`) follows the vehicle ahead of it towards −s.
+//!
 //! The plan no longer knows the actor's track from the phase start (as after a gap action):
 //! a later phase of the actor at a time the plan sets is an error, and so are modifiers that
 //! plan a distance for the phase (`position(…, at: end)`, `distance(…)`) and the gap actions,
-//! whose own controller holds the speed. `avoid_collisions(false)`, and a phase without the
+//! whose own controller holds the speed. Nor where the actor is at the phase end: a route it
+//! drives `along` is checked at the start only (`plan::route`). `avoid_collisions(false)`, and a phase without the
 //! modifier, drive the planned motion (the library declares `avoid: bool` with no default;
 //! oscsim's vehicles follow their plan unless asked to avoid).
 

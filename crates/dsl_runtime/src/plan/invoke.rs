@@ -34,18 +34,23 @@ impl Planner<'_> {
         mods: &[Modifier],
         plan: impl FnOnce(&mut Self) -> Result<R, Error>,
     ) -> Result<R, Error> {
-        let against = self
-            .index
-            .get(&inv.actor)
-            .is_some_and(|&i| self.entities[i].against);
+        // A group drives its members' direction (one, `against::check_references`).
+        let against = match self.groups.get(&inv.actor) {
+            Some(members) => members.first().map(String::as_str),
+            None => Some(inv.actor.as_str()),
+        }
+        .and_then(|n| self.index.get(n))
+        .is_some_and(|&i| self.entities[i].against);
         super::against::check_alongs(&inv.actor, against, mods, &self.against_routes)?;
         let Some(view) = self.against_road.clone().filter(|_| against) else {
             return plan(self);
         };
         super::against::check_runs(inv, mods)?;
+        let kept = super::against::turn_stationary(&mut self.entities, view.length());
         let forward = std::mem::replace(&mut self.road, view);
         let planned = plan(self);
         self.road = forward;
+        super::against::restore_stationary(&mut self.entities, kept);
         planned
     }
 
@@ -901,12 +906,15 @@ impl Planner<'_> {
                 }
             }
             self.plan_avoid_collisions(mods, target, t0, &mut name, out, after)?;
-            // The routes, against the motion just planned.
+            // The routes, against the motion just planned: at the end only where the plan
+            // knows the actor's place then, not where the engine's controller moves it
+            // (avoid_collisions(true), a gap action).
             let te = match (t0, end, len) {
                 (Some(a), Some(b), _) if b > a => Some(b),
                 (Some(a), _, Some(l)) => Some(a + l),
                 _ => None,
-            };
+            }
+            .filter(|_| !self.engine_moved.contains_key(target));
             let alongs = self.alongs.get(&p.path).cloned().unwrap_or_default();
             let mut shared = std::mem::take(&mut self.route_lanes);
             let track = self.track(target).clone();

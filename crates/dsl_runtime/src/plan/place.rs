@@ -10,7 +10,8 @@
 //!   reference when it has no position); a single-lane group's next members each behind the
 //!   previous with [`GROUP_GAP`] between bumpers; a common-route group over several lanes
 //!   fills the lanes from member 0's leftwards a row at a time, each row [`GROUP_GAP`] behind
-//!   the one ahead. Nothing places an actor: it floats, and floating actors are
+//!   the one ahead; for a group driving against s the same in its direction of travel, on
+//!   the view (behind: u smaller, leftwards: towards the drivers' left). Nothing places an actor: it floats, and floating actors are
 //!   shifted together so that the rearmost bumper is at [`FLOAT_REAR`].
 //! - `lateral(d, measure_by: …)`: the offset from the lane's centre (`lateral` module).
 //! - `keep_position()` without a speed: standing (0 m/s).
@@ -127,6 +128,17 @@ pub(crate) fn place(
         Ok(None)
     };
     let number = |m: &Modifier, n: &str| m.arg(n).map(Arg::number).transpose();
+    // The s of `x` in `p`'s frame: a stationary object's (placed in +s) turned into u = L − s
+    // for an actor driving against s (it has no direction of its own); any other actor's as
+    // placed (relations across directions are refused before).
+    let seen = |p: &ToPlace<'_>, x: &str, s: &HashMap<String, (f64, bool)>| {
+        let (sx, fl) = *s.get(x)?;
+        let stands = all.iter().any(|q| q.name == x && q.fixed.is_some());
+        Some(match (stands && p.against, against) {
+            (true, Some(a)) => (a.length() - sx, fl),
+            _ => (sx, fl),
+        })
+    };
     for p in all {
         if let Some(f) = p.fixed {
             lane.insert(p.name.clone(), f.lane);
@@ -236,8 +248,8 @@ pub(crate) fn place(
                         match (d, r) {
                             (None, _) => None,
                             (Some(d), None) => Some((d, false)),
-                            (Some(d), Some((how, x))) => s.get(&x).map(|(sx, fl)| {
-                                (if how == "ahead_of" { sx + d } else { sx - d }, *fl)
+                            (Some(d), Some((how, x))) => seen(p, &x, &s).map(|(sx, fl)| {
+                                (if how == "ahead_of" { sx + d } else { sx - d }, fl)
                             }),
                         }
                     }
@@ -274,7 +286,7 @@ pub(crate) fn place(
                             .flatten()
                         {
                             // Beside (or in the lane of) a reference: alongside it.
-                            Some((how, x)) if how != "same_as" => s.get(&x).copied(),
+                            Some((how, x)) if how != "same_as" => seen(p, &x, &s),
                             _ => Some((0.0, true)),
                         },
                     },
@@ -418,6 +430,16 @@ fn beside_others<'r>(
                 continue;
             };
             let road = view(p);
+            // A stationary object's place (in +s) in the frame of an actor driving against s:
+            // u = L − s, its offset to the left of that direction (as `place` reads it).
+            let sx = match (q.fixed.is_some(), p.against) {
+                (true, true) => Start {
+                    s: road.length() - sx.s,
+                    offset: -sx.offset,
+                    ..sx
+                },
+                _ => sx,
+            };
             let t_x = road.lane_center(sx.lane, sx.s) + sx.offset;
             let t_a = lateral::beside(m, *sigma, (t_x, q.width), p.width)?;
             let st = out[&p.name];

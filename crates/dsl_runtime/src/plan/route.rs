@@ -1,7 +1,10 @@
 //! Routes of `along(…)` against the plan (ASAM OpenSCENARIO DSL 2.1 §8.9 movement modifiers,
 //! `along`; §8.12 road abstraction): the road the named routes are on, and each actor on its
 //! route at the phase start and end as the plan knows them (see `crate::resolve` for the forms
-//! a route takes).
+//! a route takes). For an actor driving against s (a lane of the left side, `plan::against`)
+//! the route's interval and the actor's place are in u along its direction of travel, on the
+//! road view it is planned on; where the engine's controller moves the actor (a gap action,
+//! `avoid_collisions(true)`) the plan does not know its place at the end, which is not checked.
 
 use std::collections::HashMap;
 
@@ -153,7 +156,7 @@ pub(crate) fn check(
             None if along.end_offset > 0.0 => {
                 return Err(along.site.err(
                     K::Unsatisfiable,
-                    "expected a phase end the plan knows for along(…, end_offset: …), found none (give the phase a duration)",
+                    "expected a phase end the plan knows for along(…, end_offset: …), found none (give the phase a duration; under avoid_collisions(true) or a gap action the engine's controller sets where the actor is then)",
                 ))
             }
             None => {}
@@ -171,9 +174,18 @@ pub(crate) fn check(
         }
         let s = (on.s)(t);
         if s < lo - ROUTE_TOLERANCE || s > hi + ROUTE_TOLERANCE {
+            // On the view of an actor driving against s: u, along its direction of travel.
+            let (name, frame) = if road.is_against() {
+                (
+                    "u",
+                    " (u along its direction of travel on the plan's roads driven against s)",
+                )
+            } else {
+                ("s", "")
+            };
             return Err(along.site.err(
                 K::Unsatisfiable,
-                format!("expected `{actor}` on {describe} between s = {lo:.2} m and {hi:.2} m at the phase {when}, found it at s = {s:.2} m"),
+                format!("expected `{actor}` on {describe} between {name} = {lo:.2} m and {hi:.2} m at the phase {when}, found it at {name} = {s:.2} m{frame}"),
             ));
         }
     }

@@ -6,19 +6,28 @@
 //!
 //! The plan keeps one lane id over its roads, so the path must stay in the points' lane and
 //! run in +s on every road, entering each next road at its start (as `chain` requires of the
-//! roads after the start): a path that changes lanes, or drives a road against its s, is an
-//! error naming the leg.
+//! roads after the start), or, in a lane of the left side (driven in −s), against s on every
+//! road, the plan's roads being the path the other way round: a path that changes lanes, or
+//! drives a road the other way, is an error naming the leg.
 
 use opendrive::{Direction, LanePosition, RoadNetwork};
 
 /// The roads (indices into `net.roads()`) of lane `lane` from `(road id, s)` to each next point
-/// in turn, in driving order, each once; or what is wrong, as the rest of a sentence "expected
-/// …, found …".
+/// in turn, each once, in the order the plan drives them in +s; or what is wrong, as the rest
+/// of a sentence "expected …, found …". A lane of the right side is driven in +s, so that is
+/// its driving order; one of the left side (a positive id, right-hand traffic) is driven in
+/// −s, its path runs against s over every road, and the plan's roads are that path the other
+/// way round (an actor along it drives them against s, `PlanRoad::against`).
 pub(crate) fn route_roads(
     net: &RoadNetwork,
     lane: i32,
     points: &[(String, f64)],
 ) -> Result<Vec<usize>, String> {
+    let (along, how) = if lane > 0 {
+        (Direction::Backward, "in -s")
+    } else {
+        (Direction::Forward, "in +s")
+    };
     let index = |id: &str| net.roads().iter().position(|r| r.id == id);
     let first = points
         .first()
@@ -42,9 +51,9 @@ pub(crate) fn route_roads(
             )
         })?;
         for seg in &path.segments {
-            if seg.lane_id != lane || seg.direction != Direction::Forward {
+            if seg.lane_id != lane || seg.direction != along {
                 return Err(format!(
-                    "expected the path from {} to {} in lane {lane} in +s, found it in lane {} of road {} {}",
+                    "expected the path from {} to {} in lane {lane} {how}, found it in lane {} of road {} {}",
                     describe(&from),
                     describe(&to),
                     seg.lane_id,
@@ -66,6 +75,9 @@ pub(crate) fn route_roads(
                 out.push(i);
             }
         }
+    }
+    if lane > 0 {
+        out.reverse();
     }
     Ok(out)
 }

@@ -20,6 +20,8 @@ mod map_modifiers;
 mod opposite;
 mod opposite_actions;
 mod opposite_gaps;
+mod opposite_groups;
+mod opposite_relations;
 mod orientation;
 mod position_actions;
 mod reuse;

@@ -626,8 +626,8 @@ fn what_does_not_run_against_s_is_an_error_at_its_place() {
         (
             "err_opposite_obstacle",
             "straight",
-            &["expected `behind:` of position(…) to name an actor driving in the direction of `npc` (against s), found `barrier`, a stationary object, whose place the plan measures in +s"][..],
-            "19:35",
+            &["expected `same_as:` of lane(…) to name an object in a lane `npc` drives in its direction (against s, a lane of the left side), found `barrier` in lane -1, driven in +s"][..],
+            "19:27",
         ),
         (
             "err_opposite_route_self",

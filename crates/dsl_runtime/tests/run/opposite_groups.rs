@@ -1,0 +1,146 @@
+//! Vehicle groups driving against s (ASAM OpenSCENARIO DSL 2.1 §8.7.18, OpenDRIVE 1.8 §11.2):
+//! the formation placed front to back along the direction of travel on the plan's roads
+//! driven the other way, each member lowered and driven in its lane's driving direction.
+//! Every expectation is worked by hand in the scenario's comment.
+
+use std::f64::consts::PI;
+
+use crate::opposite::{error_on, wrap};
+use crate::support::run_on;
+
+/// Positions on straight roads: the engine integrates speed exactly; float round-off only.
+const S_TOL: f64 = 1e-6;
+/// Positions on road 2 of junction_trippel_twoway0 from its geometry's digits (m).
+const XY_TOL: f64 = 1e-4;
+/// Headings (rad).
+const H_TOL: f64 = 1e-9;
+/// Phase ends are step times.
+const T_TOL: f64 = 1e-9;
+/// Across a spiral the engine steps the curvature per step (1 cm, as in run::opposite).
+const SPIRAL_TOL: f64 = 0.01;
+
+fn member(i: usize) -> String {
+    format!("g.vehicles[{i}]")
+}
+
+#[test]
+fn a_column_against_s_is_placed_front_to_back_along_its_direction_of_travel() {
+    let r = run_on("opposite_group_column", "junction_trippel_twoway0");
+    // At 0 s: road 2 s = 50, 65, 80 m in lane 1, heading 0.3 + pi.
+    let start = [
+        (50.0, 177.0408, 19.3388),
+        (65.0, 191.3708, 23.7716),
+        (80.0, 205.7009, 28.2044),
+    ];
+    for (i, (s, x, y)) in start.into_iter().enumerate() {
+        let m = r.at(0.0, &member(i));
+        assert_eq!((m.road.as_str(), m.lane), ("2", 1), "{m:?}");
+        assert!((m.s - s).abs() < S_TOL, "{m:?}");
+        assert!(
+            (m.x - x).abs() < XY_TOL && (m.y - y).abs() < XY_TOL,
+            "{m:?}"
+        );
+        assert!(wrap(m.h - (0.3 + PI)).abs() < H_TOL, "{m:?}");
+        assert!((m.speed - 10.0).abs() < S_TOL, "{m:?}");
+    }
+    let mid = r.at(1.5, &member(1));
+    assert!(
+        (mid.x - 177.0408).abs() < XY_TOL && (mid.y - 19.3388).abs() < XY_TOL,
+        "{mid:?}"
+    );
+    let at3 = r.at(3.0, &member(0));
+    assert!(
+        (at3.x - 148.3807).abs() < XY_TOL && (at3.y - 10.4732).abs() < XY_TOL,
+        "{at3:?}"
+    );
+    // change_speed: every member's SpeedAction, 10 -> 5 m/s over [3, 5] s.
+    let at4 = r.at(4.0, &member(0));
+    assert!((at4.speed - 7.5).abs() < S_TOL, "{at4:?}");
+    assert!((at4.s - 11.3125).abs() < S_TOL, "{at4:?}");
+    let (s, e) = r.phase("do.1.1");
+    assert!(
+        (s - 3.0).abs() < T_TOL && (e - 5.0).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    for (i, s) in [(0, 5.125), (2, 35.125)] {
+        let m = r.at(5.0, &member(i));
+        assert!(
+            (m.s - s).abs() < S_TOL && (m.speed - 5.0).abs() < S_TOL,
+            "{m:?}"
+        );
+    }
+    // Through the junction backwards onto road 0, the spacing kept.
+    for (i, s) in [(0, 64.675), (1, 79.675), (2, 94.675)] {
+        let m = r.at(19.0, &member(i));
+        assert_eq!((m.road.as_str(), m.lane), ("0", 1), "{m:?}");
+        assert!((m.s - s).abs() < SPIRAL_TOL, "{m:?}");
+        assert!((m.y - 1.5).abs() < SPIRAL_TOL, "{m:?}");
+        assert!(wrap(m.h - PI).abs() < SPIRAL_TOL, "{m:?}");
+    }
+    let ego = r.at(19.0, "ego");
+    assert!(
+        (ego.x - 86.0).abs() < S_TOL && (ego.y + 1.5).abs() < S_TOL,
+        "{ego:?}"
+    );
+}
+
+#[test]
+fn a_group_over_two_lanes_against_s_fills_them_towards_the_drivers_left() {
+    let r = run_on("opposite_group_lanes", "straight");
+    // (lane, x at 0 s, y).
+    let expected = [(2, 900.0, 5.25), (1, 900.0, 1.75), (2, 915.0, 5.25)];
+    for (i, (lane, x, y)) in expected.into_iter().enumerate() {
+        let m = r.at(0.0, &member(i));
+        assert_eq!(m.lane, lane, "{m:?}");
+        assert!((m.x - x).abs() < S_TOL && (m.y - y).abs() < S_TOL, "{m:?}");
+        assert!(wrap(m.h - PI).abs() < H_TOL, "{m:?}");
+        assert!((r.at(1.0, &member(i)).x - (x - 12.0)).abs() < S_TOL);
+        let end = r.at(2.0, &member(i));
+        assert!(
+            (end.x - (x - 24.0)).abs() < S_TOL && end.lane == lane,
+            "{end:?}"
+        );
+    }
+    assert!((r.at(2.0, "ego").x - 30.0).abs() < S_TOL);
+}
+
+#[test]
+fn a_groups_space_gap_against_s_is_a_chain_along_its_direction_of_travel() {
+    let r = run_on("opposite_group_space_gap", "straight");
+    // u = 1000 - s along the direction of travel; boxes front 3.5 m, rear 0.5 m along it.
+    let u = |t: f64, who: &str| 1000.0 - r.at(t, who).s;
+    let gap = |t: f64, back: &str, front: &str| (u(t, front) - 0.5) - (u(t, back) + 3.5);
+    for (who, s) in [("lead", 900.0), (&member(0), 970.0), (&member(1), 984.0)] {
+        let m = r.at(0.0, who);
+        assert_eq!(m.lane, 2, "{m:?}");
+        assert!(
+            (m.s - s).abs() < S_TOL && (m.y - 5.25).abs() < S_TOL,
+            "{m:?}"
+        );
+        assert!(wrap(m.h - PI).abs() < H_TOL, "{m:?}");
+    }
+    crate::groups::group_space_gap_chain(&r, &gap);
+    assert!((r.at(30.0, "lead").x - 450.0).abs() < S_TOL);
+}
+
+#[test]
+fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
+    for (name, text, place) in [
+        (
+            "err_opposite_group_mixed",
+            "expected the members of group `g` to drive one direction (its formation is placed along one direction of travel), found `g.vehicles[1]` in +s and `g.vehicles[0]` against s",
+            "15:9",
+        ),
+        (
+            "err_opposite_group_position",
+            "expected a group action that runs for group `g`, which drives against s, found assign_position(…) (not run yet against s",
+            "15:9",
+        ),
+    ] {
+        let e = error_on(name, "straight");
+        assert!(
+            e.contains(text) && e.ends_with(&format!("{name}.osc:{place}")),
+            "{name}: {e}"
+        );
+    }
+}
