@@ -102,17 +102,7 @@ pub(crate) fn check_references(
             // The group forms of the position and path actions move the formation by its
             // offsets in the road frame (`position_actions`, `group_path`), not yet written
             // for the view.
-            let moves_formation = matches!(
-                inv.kind,
-                Action::AssignPosition
-                    | Action::AssignOrientation
-                    | Action::ChangePosition
-                    | Action::FollowPath
-                    | Action::FollowTrajectory
-                    | Action::ReplayPath
-                    | Action::ReplayTrajectory
-            );
-            if against && moves_formation {
+            if against && inv.kind.to_place() {
                 return Err(inv.actor_site.err(
                     K::Unsupported,
                     format!("expected a group action that runs for group `{}`, which drives against s, found {}(…) (not run yet against s: the group forms of the position and path actions move the formation in the road frame; each member's own {}(…) runs)", inv.actor, inv.action, inv.action),
@@ -232,16 +222,10 @@ pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
             | Action::KeepSpaceGap
             | Action::ChangeTimeHeadway
             | Action::KeepTimeHeadway
-            // World places and paths have no direction; the place the actor reaches is put on
-            // the view (`position_actions::lane_position`), a relative path in its frame.
-            | Action::AssignPosition
-            | Action::AssignOrientation
-            | Action::ChangePosition
-            | Action::FollowPath
-            | Action::FollowTrajectory
-            | Action::ReplayPath
-            | Action::ReplayTrajectory
-    );
+    )
+        // World places and paths have no direction; the place the actor reaches is put on
+        // the view (`position_actions::lane_position`), a relative path in its frame.
+        || inv.kind.to_place();
     if !runs {
         return Err(not_run(&inv.actor_site, &format!("{}(…)", inv.action)));
     }
