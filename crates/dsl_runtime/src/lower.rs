@@ -14,6 +14,7 @@
 //! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step); an actor driving against s at s = L − u of its distance u along its direction of travel, in its lane of the left side (the engine heads it in the lane's driving direction) |
 //! | a plan over the roads of a route through points (`map.create_route`) | Init: each vehicle with a road of the plan ahead of it an AssignRouteAction over them (a Waypoint where it starts, one mid-way along each later road, in its lane) |
 //! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
+//! | a member of random traffic (`plan::random_traffic`) | its ScenarioObject's ObjectController `random_traffic` (the engine's `mobil` model); Init: an ActivateControllerAction on both domains after the SpeedAction |
 //! | a person, an animal | ScenarioObject with a Pedestrian of category `pedestrian`, `animal` |
 //! | a stationary object | ScenarioObject with a MiscObject (category `barrier`); Init: TeleportAction to the WorldPosition of its `location(pose)`, no speed |
 //!
@@ -25,13 +26,14 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use scenario::{
-    Act, Action, ActionKind, Actors, ConditionGroup, DynamicsDimension, DynamicsShape, Entities,
-    EntityObject, Event, FileHeader, Init, LaneChangeAt, LaneChangeTarget, LaneOffsetTarget,
-    LateralAction, LongitudinalAction, Maneuver, ManeuverGroup, MiscObject, MiscObjectCategory,
-    Orientation, Pedestrian, PedestrianCategory, Performance, Position, PositionKind, Priority,
-    Private, PrivateAction, Properties, ReferenceContext, RoadNetwork, Route, RouteStrategy,
-    RoutingAction, Rule, Scenario, ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard,
-    StoryboardElementState, TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
+    Act, Action, ActionKind, Actors, ConditionGroup, ControllerAction, ControllerDomains,
+    DynamicsDimension, DynamicsShape, Entities, EntityObject, Event, FileHeader, Init,
+    LaneChangeAt, LaneChangeTarget, LaneOffsetTarget, LateralAction, LongitudinalAction, Maneuver,
+    ManeuverGroup, MiscObject, MiscObjectCategory, ObjectController, Orientation, Pedestrian,
+    PedestrianCategory, Performance, Position, PositionKind, Priority, Private, PrivateAction,
+    Properties, ReferenceContext, RoadNetwork, Route, RouteStrategy, RoutingAction, Rule, Scenario,
+    ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard, StoryboardElementState,
+    TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
 };
 
 use crate::plan::{Entity, HandlerPlan, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
@@ -55,10 +57,15 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             (s, 1.0)
         };
         let (road_id, s) = plan.on_road(s);
+        // A member of random traffic: its driver model, activated in the Init.
+        let driver = e.driver.as_ref().map(|c| ObjectController {
+            name: Some(c.name.clone()),
+            controller: c.clone(),
+        });
         objects.push(ScenarioObject {
             name: e.name.clone(),
             entity_object: entity_object(e),
-            object_controllers: Vec::new(),
+            object_controllers: driver.iter().cloned().collect(),
             pos: origin.clone(),
         });
         let action = |kind| Action {
@@ -131,6 +138,18 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             ]
             .into_iter()
             .chain(route)
+            .chain(driver.map(|d| {
+                action(PrivateAction::Controller(Box::new(
+                    ControllerAction::Activate {
+                        object_controller_ref: d.name,
+                        domains: ControllerDomains {
+                            lateral: Some(true),
+                            longitudinal: Some(true),
+                            ..ControllerDomains::default()
+                        },
+                    },
+                )))
+            }))
             .collect(),
         });
     }

@@ -28,11 +28,32 @@ use scenario::{Controller, ControllerAction, ControllerDomains, PrivateAction, P
 
 use super::planner::Planner;
 use super::types::Planned;
-use crate::error::{Error, ErrorKind as K};
+use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Action, ActorKind, At, Invoke, ModKind, Modifier, Val};
 
 /// The controller's name in the 1.x model.
 const CONTROLLER: &str = "avoid_collisions";
+
+/// An inline Controller `name` running the engine's `model` (`idm`, `mobil`) at desired speed
+/// `desired` (m/s), its other parameters the model's defaults, written at `site`.
+pub(super) fn model_controller(name: &str, model: &str, desired: f64, site: &Site) -> Controller {
+    let pos = site.pos.clone();
+    Controller {
+        name: name.to_string(),
+        controller_type: None,
+        properties: Properties {
+            properties: vec![
+                ("model".to_string(), model.to_string()),
+                ("desiredSpeed".to_string(), format!("{desired}")),
+            ],
+            positions: vec![pos.clone(), pos.clone()],
+            files: Vec::new(),
+            custom_content: Vec::new(),
+        },
+        catalog: None,
+        pos,
+    }
+}
 
 /// The `avoid_collisions(…)` of `mods` that asks to avoid (`true`, or no argument), if any.
 fn avoiding(mods: &[Modifier]) -> Result<Option<&Modifier>, Error> {
@@ -106,22 +127,7 @@ impl Planner<'_> {
         // The speed the plan gives the actor in the phase (its speed modifier's, else the
         // speed it has): the driver's desired speed.
         let desired = self.last_v.get(target).copied().unwrap_or(0.0);
-        let pos = m.site.pos.clone();
-        let controller = Controller {
-            name: CONTROLLER.to_string(),
-            controller_type: None,
-            properties: Properties {
-                properties: vec![
-                    ("model".to_string(), "idm".to_string()),
-                    ("desiredSpeed".to_string(), format!("{desired}")),
-                ],
-                positions: vec![pos.clone(), pos.clone()],
-                files: Vec::new(),
-                custom_content: Vec::new(),
-            },
-            catalog: None,
-            pos: pos.clone(),
-        };
+        let controller = model_controller(CONTROLLER, "idm", desired, &m.site);
         let longitudinal = |on: bool| ControllerDomains {
             longitudinal: Some(on),
             ..ControllerDomains::default()

@@ -80,6 +80,10 @@ impl Planner<'_> {
                 ),
             ));
         }
+        if self.random.contains_key(&inv.actor) {
+            self.plan_random_traffic(p, inv, t0)?;
+            return Ok(None);
+        }
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),
             None => vec![inv.actor.clone()],

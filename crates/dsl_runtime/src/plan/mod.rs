@@ -79,6 +79,7 @@
 //! | `acceleration_follow` | `acceleration(…)` relative to another actor that the engine follows step by step |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
+//! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 use std::cell::RefCell;
@@ -118,6 +119,7 @@ mod place;
 mod planner;
 mod position_actions;
 mod position_shape;
+mod random_traffic;
 mod relative_over_distance;
 mod relative_path;
 mod route;
@@ -159,6 +161,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         index: HashMap::new(),
         groups: HashMap::new(),
         across: HashSet::new(),
+        random: HashMap::new(),
         first_leaf: HashMap::new(),
         phases: Vec::new(),
         last_v: HashMap::new(),
@@ -303,7 +306,16 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                 (i > 0).then(|| (members.clone(), i))
             });
         let bb = e.data.bounding_box;
+        // A member of random traffic is placed from the seed once the others are placed
+        // (`random_traffic`): nothing else places it.
+        let random = p.random_member(&e.name);
+        let (member_after, across) = if random {
+            (None, None)
+        } else {
+            (member_after, across)
+        };
         let fixed = match e.data.kind {
+            _ if random => Some(random_traffic::UNPLACED),
             ActorKind::Stationary(at) => {
                 let [x, y, _] = at.position;
                 let (lane, s, offset) = road.locate(x, y).unwrap_or((-1, 0.0, 0.0));
@@ -412,7 +424,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     }
     against::check_references(&leaves, &to_place, &p.index)?;
     let entity = |path: &str| p.index.contains_key(path).then(|| path.to_string());
-    let starts = place(road, p.against_road.as_ref(), &to_place, &entity)?;
+    let mut starts = place(road, p.against_road.as_ref(), &to_place, &entity)?;
+    p.place_random_traffic(&leaves, &mut starts)?;
     for (e, q) in p.entities.iter_mut().zip(&to_place) {
         let mut s = starts[&e.name];
         e.against = q.against;

@@ -49,6 +49,9 @@ pub(crate) struct Planner<'a> {
     pub groups: HashMap<String, Vec<String>>,
     /// The groups whose formation spreads over the lanes (common route, not single-lane).
     pub across: HashSet<String>,
+    /// The `random_traffic_vehicle_group`s → where the tree first names each
+    /// (`random_traffic`).
+    pub random: HashMap<String, Site>,
     pub first_leaf: HashMap<String, String>,
     pub phases: Vec<PhasePlan>,
     /// The speed each actor's last planned speed change ends at (known also when the times
@@ -151,11 +154,16 @@ impl Planner<'_> {
                 }
                 members
             }
-            Some(Object::RandomTraffic) => {
-                return Err(site.err(
-                    K::Unsupported,
-                    format!("expected a vehicle, or a vehicle group with a formation (single-lane or common-route), found `{path}`, a random_traffic_vehicle_group (random traffic is not planned)"),
-                ))
+            Some(Object::RandomTraffic(members)) => {
+                // Each member drives as the group's drive asks (`random_traffic`).
+                self.groups.insert(
+                    path.to_string(),
+                    members.iter().map(|(n, _)| n.clone()).collect(),
+                );
+                self.random
+                    .entry(path.to_string())
+                    .or_insert_with(|| site.clone());
+                members
             }
             None => {
                 return Err(site.err(
@@ -174,6 +182,7 @@ impl Planner<'_> {
                     track: Track::new(0.0, 0.0, -1),
                     yaw: None,
                     against: false,
+                    driver: None,
                 });
             }
             names.push(n);

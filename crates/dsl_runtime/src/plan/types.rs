@@ -157,6 +157,9 @@ pub(crate) struct Entity {
     /// It drives against s (`crate::road`): its track's s is the distance u = L − s along its
     /// direction of travel, its offsets are to the left of that direction.
     pub against: bool,
+    /// The driver model that drives it from the start (a member of random traffic,
+    /// `random_traffic`): its ObjectController, activated in the Init on both domains.
+    pub driver: Option<scenario::Controller>,
 }
 
 /// The whole plan.

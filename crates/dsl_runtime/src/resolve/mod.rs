@@ -152,7 +152,9 @@ pub(crate) fn resolve(
         .iter()
         .flat_map(|(path, o)| match o {
             Some(Object::Actor(_)) => vec![path.clone()],
-            Some(Object::Group(members, _)) => members.iter().map(|(p, _)| p.clone()).collect(),
+            Some(Object::Group(members, _) | Object::RandomTraffic(members)) => {
+                members.iter().map(|(p, _)| p.clone()).collect()
+            }
             _ => Vec::new(),
         })
         .collect();

@@ -29,8 +29,9 @@ pub(crate) enum Object {
     /// A vehicle group: its members' paths and data, in list order, and whether its formation
     /// spreads over the lanes (a `common_route_vehicle_group` that is not single-lane).
     Group(Vec<(String, ActorData)>, bool),
-    /// A `random_traffic_vehicle_group`: not planned.
-    RandomTraffic,
+    /// A `random_traffic_vehicle_group`: its members' paths and data, in list order
+    /// (`plan::random_traffic` places them).
+    RandomTraffic(Vec<(String, ActorData)>),
     /// A `stationary_object` without `location(…)`: nowhere to put it.
     Unlocated,
 }
@@ -97,9 +98,6 @@ pub(crate) fn classify(ctx: &Eval<'_>, path: &str, located: &[Located]) -> Optio
             None => Object::Unlocated,
         });
     }
-    if ctx.is_a(v, "random_traffic_vehicle_group") {
-        return Some(Object::RandomTraffic);
-    }
     if ctx.is_a(v, "vehicle_group") {
         let lanes =
             ctx.is_a(v, "common_route_vehicle_group") && !ctx.is_a(v, "single_lane_vehicle_group");
@@ -107,16 +105,17 @@ pub(crate) fn classify(ctx: &Eval<'_>, path: &str, located: &[Located]) -> Optio
             dsl::Value::List(items) => items.len(),
             _ => 0,
         };
-        return Some(Object::Group(
-            (0..n)
-                .map(|i| {
-                    let member = format!("{path}.vehicles[{i}]");
-                    let data = vehicle(ctx, &member);
-                    (member, data)
-                })
-                .collect(),
-            lanes,
-        ));
+        let members = (0..n)
+            .map(|i| {
+                let member = format!("{path}.vehicles[{i}]");
+                let data = vehicle(ctx, &member);
+                (member, data)
+            })
+            .collect();
+        if ctx.is_a(v, "random_traffic_vehicle_group") {
+            return Some(Object::RandomTraffic(members));
+        }
+        return Some(Object::Group(members, lanes));
     }
     None
 }

@@ -1,5 +1,5 @@
 //! Vehicle groups (ASAM OpenSCENARIO DSL 2.1 §8.7.18): a common-route group over several lanes
-//! fills the lanes from its own leftwards, a row at a time; random traffic is an error.
+//! fills the lanes from its own leftwards, a row at a time (random traffic: `random_traffic`).
 //! Expectations in the scenario files.
 
 use crate::support::{run, Run};
@@ -27,15 +27,6 @@ fn single_lane_group_places_its_first_member_and_the_rest_behind() {
         assert_eq!(m.lane, -2, "{m:?}");
         assert!((m.s - s0).abs() < S_TOL, "{m:?}");
     }
-}
-
-#[test]
-fn random_traffic_is_an_error() {
-    crate::along::refused(
-        "err_random_traffic",
-        "found `g`, a random_traffic_vehicle_group (random traffic is not planned)",
-        "5:8",
-    );
 }
 
 /// Positions after a teleport or along straight lines at constant speed (m).

@@ -24,6 +24,7 @@ mod opposite_groups;
 mod opposite_relations;
 mod orientation;
 mod position_actions;
+mod random_traffic;
 mod reuse;
 mod runtime;
 mod runtime_relative_speed;

@@ -1,0 +1,318 @@
+//! `random_traffic_vehicle_group` (ASAM OpenSCENARIO DSL 2.1 §8.7.18.1, non-normative:
+//! "adding entities to a scenario to have more participants in the scenario. By generating
+//! multiple vehicles in the surrounding environment of the scenario these vehicles act as
+//! 'noise' in the scenario"; "the group defines the initial conditions of actors in the
+//! scenario, meaning their creation and destruction. The behavioral model assigned to each
+//! vehicle defines the actual behavior of the vehicle within the group").
+//!
+//! `g.drive()` on such a group creates its members at the start of the run and hands each to
+//! the engine's driver model. The standard is silent on every number; oscsim's choices
+//! (docs/dsl.md, the random traffic row):
+//!
+//! - **Desired speed** v0: the drive's `speed(v)`, else the planner's 50 km/h.
+//! - **Start speeds**: each member's drawn uniformly in [0.9·v0, 1.1·v0] from the run's seed
+//!   (`Options::seed`; [`START_SPREAD`]).
+//! - **Where**: the plan's driving lanes in +s (right-hand traffic; the lanes `PlanRoad::
+//!   driving_lanes` gives, sampled every [`LANE_STEP`] m), each member's box wholly within a
+//!   stretch of one lane. Between any two vehicles in a lane — member and member, member and
+//!   another actor of the scenario — at least the IDM's desired gap at a standstill plus one
+//!   headway at the fastest start speed on the road, s0 + v_max·T (bumper to bumper, s0 = 2 m,
+//!   T = 1.6 s, the engine's IDM defaults). The members are dealt to the free stretches one at
+//!   a time, a stretch drawn with a weight equal to the room left in it (so traffic spreads
+//!   evenly over the road), then each stretch's members are spread uniformly over its slack:
+//!   n draws in [0, F] sorted, F the stretch's length less the members' lengths and gaps
+//!   (each arrangement at the minimum gap equally likely). No stretch with room left for a
+//!   member is an error at the group naming how many fit.
+//! - **Driver**: an ObjectController per member with the engine's `mobil` model (IDM car
+//!   following with MOBIL lane changes, the engine's defaults for every other parameter),
+//!   `desiredSpeed` v0, activated in the Init on both domains: the member drives by the model
+//!   from the first step to the end of the run (the drive's phase ending does not stop it:
+//!   the group defines creation, the model the behaviour).
+//!
+//! The group's drive must be its members' only phase and start with the run; `speed(v)` is its
+//! only modifier (the others constrain a planned motion these members do not have).
+
+use std::collections::HashMap;
+
+use super::car_following::model_controller;
+use super::place::{Start, DEFAULT_SPEED};
+use super::planner::Planner;
+use crate::error::{Error, ErrorKind as K, Site};
+use crate::resolve::{Action, Arg, Invoke, Kind, ModKind, Modifier, Phase};
+
+/// The start of a member before [`Planner::place_random_traffic`] places it.
+pub(super) const UNPLACED: Start = Start {
+    lane: -1,
+    s: 0.0,
+    v: 0.0,
+    offset: 0.0,
+};
+
+/// Start speeds are drawn uniformly within this fraction of the desired speed either side.
+pub(crate) const START_SPREAD: f64 = 0.1;
+/// The IDM's minimum gap s0 (m) and time headway T (s): the engine's defaults
+/// (`engine::models::idm`, Treiber, Hennecke and Helbing 2000).
+pub(crate) const IDM_S0: f64 = 2.0;
+/// See [`IDM_S0`].
+pub(crate) const IDM_T: f64 = 1.6;
+/// The spacing along s at which the driving lanes are sampled (m).
+const LANE_STEP: f64 = 1.0;
+/// The ObjectController's name.
+const CONTROLLER: &str = "random_traffic";
+
+/// A free stretch of a lane: lane, from s, to s, and the members dealt to it.
+struct Stretch {
+    lane: i32,
+    from: f64,
+    to: f64,
+    members: Vec<usize>,
+    used: f64,
+}
+
+impl Stretch {
+    /// The room left for one more member of length `len` at gap `gap` (m; negative: none).
+    fn room(&self, len: f64, gap: f64) -> f64 {
+        let between = if self.members.is_empty() { 0.0 } else { gap };
+        (self.to - self.from) - self.used - between - len
+    }
+}
+
+/// The desired speed `speed(v)` among `mods` gives, else the default; any other modifier is
+/// an error.
+fn desired_speed(g: &str, mods: &[Modifier]) -> Result<f64, Error> {
+    let mut v0 = DEFAULT_SPEED;
+    for m in mods {
+        let relative = ["faster_than", "slower_than", "same_as"]
+            .iter()
+            .any(|k| m.arg(k).is_some());
+        match m.kind {
+            ModKind::Speed if !relative => {
+                if let Some(v) = m.arg("speed").map(Arg::number).transpose()? {
+                    if !(v > 0.0 && v <= super::MAX_SPEED) {
+                        return Err(m.site.err(
+                            K::Unsatisfiable,
+                            format!("expected a desired speed above 0 and up to {} m/s for random traffic `{g}`, found {v} m/s", super::MAX_SPEED),
+                        ));
+                    }
+                    v0 = v;
+                }
+            }
+            _ => {
+                return Err(m.site.err(
+                    K::Unsupported,
+                    format!("expected speed(v) on the drive of random traffic `{g}` (its members' desired speed; the engine's driver model does the rest), found `{}(…)`", m.name),
+                ))
+            }
+        }
+    }
+    Ok(v0)
+}
+
+impl Planner<'_> {
+    /// Whether `name` is a member of a `random_traffic_vehicle_group`.
+    pub(super) fn random_member(&self, name: &str) -> bool {
+        self.random.keys().any(|g| {
+            self.groups
+                .get(g)
+                .is_some_and(|m| m.iter().any(|n| n == name))
+        })
+    }
+
+    /// Places the members of every random traffic group among `starts` (the other actors
+    /// placed), from the drive that is their first phase among `leaves`.
+    pub(super) fn place_random_traffic(
+        &mut self,
+        leaves: &[&Phase],
+        starts: &mut HashMap<String, Start>,
+    ) -> Result<(), Error> {
+        let mut groups: Vec<(String, Site)> = self
+            .random
+            .iter()
+            .map(|(g, s)| (g.clone(), s.clone()))
+            .collect();
+        groups.sort_by(|a, b| a.0.cmp(&b.0));
+        for (g, site) in groups {
+            let members = self.groups[&g].clone();
+            let Some(first) = members.first().and_then(|m| self.first_leaf.get(m)) else {
+                continue;
+            };
+            let mods = match leaves.iter().find(|l| &l.path == first).map(|l| &l.kind) {
+                Some(Kind::Invoke(inv)) => inv.modifiers.as_slice(),
+                _ => &[],
+            };
+            let v0 = desired_speed(&g, mods)?;
+            let speeds: Vec<f64> = members
+                .iter()
+                .map(|_| {
+                    v0 * (1.0 - START_SPREAD
+                        + 2.0 * START_SPREAD * self.draws.borrow_mut().uniform())
+                })
+                .collect();
+            // Every other actor already placed, in a lane of the plan's +s side.
+            let others: Vec<(i32, f64, f64, f64)> = self
+                .entities
+                .iter()
+                .filter(|e| !self.random_member(&e.name) && !e.against)
+                .filter_map(|e| {
+                    let st = starts.get(&e.name)?;
+                    let b = e.data.bounding_box;
+                    let front = b.center[0] + b.length / 2.0;
+                    let rear = b.length / 2.0 - b.center[0];
+                    Some((st.lane, st.s - rear, st.s + front, st.v))
+                })
+                .collect();
+            let v_max = speeds
+                .iter()
+                .chain(others.iter().map(|o| &o.3))
+                .fold(0.0_f64, |a, &b| a.max(b));
+            let gap = IDM_S0 + v_max * IDM_T;
+            let mut stretches = self.free_stretches(&others, gap);
+            let lens: Vec<f64> = members
+                .iter()
+                .map(|m| self.entities[self.index[m]].data.bounding_box.length)
+                .collect();
+            for (i, len) in lens.iter().enumerate() {
+                let rooms: Vec<f64> = stretches.iter().map(|s| s.room(*len, gap)).collect();
+                let total: f64 = rooms.iter().filter(|r| **r >= 0.0).sum();
+                let fits = rooms.iter().any(|r| *r >= 0.0);
+                if !fits {
+                    return Err(site.err(
+                        K::Unsatisfiable,
+                        format!(
+                            "expected room on the plan's driving lanes for the {} members of random traffic `{g}` (each its length plus a gap of {gap:.1} m to the next vehicle: s0 + v·T at the fastest start speed {v_max:.2} m/s), found room for {i}",
+                            members.len()
+                        ),
+                    ));
+                }
+                // A stretch drawn with a weight of its room left.
+                let mut pick = self.draws.borrow_mut().uniform() * total;
+                let mut k = rooms.iter().rposition(|r| *r >= 0.0).unwrap_or(0);
+                for (j, r) in rooms.iter().enumerate() {
+                    if *r < 0.0 {
+                        continue;
+                    }
+                    if pick < *r {
+                        k = j;
+                        break;
+                    }
+                    pick -= r;
+                }
+                let st = &mut stretches[k];
+                st.used += len + if st.members.is_empty() { 0.0 } else { gap };
+                st.members.push(i);
+            }
+            for st in &stretches {
+                let n = st.members.len();
+                let slack = (st.to - st.from) - st.used;
+                let mut u: Vec<f64> = (0..n)
+                    .map(|_| self.draws.borrow_mut().uniform() * slack)
+                    .collect();
+                u.sort_by(f64::total_cmp);
+                let mut before = 0.0;
+                for (&i, du) in st.members.iter().zip(u) {
+                    let b = self.entities[self.index[&members[i]]].data.bounding_box;
+                    let rear = b.length / 2.0 - b.center[0];
+                    let s = st.from + du + before + rear;
+                    before += lens[i] + gap;
+                    starts.insert(
+                        members[i].clone(),
+                        Start {
+                            lane: st.lane,
+                            s,
+                            v: speeds[i],
+                            offset: 0.0,
+                        },
+                    );
+                }
+            }
+            for m in &members {
+                let e = self.index[m];
+                self.entities[e].driver = Some(model_controller(CONTROLLER, "mobil", v0, &site));
+                // From the start the engine's model moves the member.
+                self.engine_moved.insert(m.clone(), Some(0.0));
+            }
+        }
+        Ok(())
+    }
+
+    /// The stretches of the plan's driving lanes in +s free of `others` (lane, rear, front,
+    /// speed) by `gap` either side.
+    fn free_stretches(&self, others: &[(i32, f64, f64, f64)], gap: f64) -> Vec<Stretch> {
+        let length = self.road.length();
+        let steps = (length / LANE_STEP).floor() as usize;
+        let mut spans: Vec<(i32, f64, f64)> = Vec::new();
+        let mut open: Vec<(i32, f64, f64)> = Vec::new();
+        for k in 0..=steps + 1 {
+            let s = (k as f64 * LANE_STEP).min(length);
+            let lanes = if k > steps {
+                Vec::new()
+            } else {
+                self.road.driving_lanes(s)
+            };
+            let (keep, closed): (Vec<_>, Vec<_>) =
+                open.into_iter().partition(|(l, _, _)| lanes.contains(l));
+            spans.extend(closed);
+            open = keep
+                .into_iter()
+                .map(|(l, a, _)| (l, a, s))
+                .collect::<Vec<_>>();
+            for l in lanes {
+                if !open.iter().any(|o| o.0 == l) {
+                    open.push((l, s, s));
+                }
+            }
+        }
+        spans.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+        let mut out = Vec::new();
+        for (lane, a, b) in spans {
+            let mut blocked: Vec<(f64, f64)> = others
+                .iter()
+                .filter(|o| o.0 == lane)
+                .map(|o| (o.1 - gap, o.2 + gap))
+                .collect();
+            blocked.sort_by(|x, y| x.0.total_cmp(&y.0));
+            let mut from = a;
+            for (x0, x1) in blocked.into_iter().chain([(b, b)]) {
+                if x0.min(b) > from {
+                    out.push(Stretch {
+                        lane,
+                        from,
+                        to: x0.min(b),
+                        members: Vec::new(),
+                        used: 0.0,
+                    });
+                }
+                from = from.max(x1);
+            }
+        }
+        out
+    }
+
+    /// The drive of random traffic `inv.actor` (phase `p`, starting at `t0`): nothing to plan
+    /// beyond its members' starts and drivers (`place_random_traffic`); what it cannot run is
+    /// an error.
+    pub(super) fn plan_random_traffic(
+        &self,
+        p: &Phase,
+        inv: &Invoke,
+        t0: Option<f64>,
+    ) -> Result<(), Error> {
+        let g = &inv.actor;
+        if inv.kind != Action::Move || inv.action != "drive" {
+            return Err(p.site.err(
+                K::Unsupported,
+                format!("expected drive() of random traffic `{g}` (the engine's driver model drives its members), found {}(…)", inv.action),
+            ));
+        }
+        let first = self.groups[g]
+            .iter()
+            .all(|m| self.first_leaf.get(m) == Some(&p.path));
+        if !first || t0 != Some(0.0) {
+            return Err(p.site.err(
+                K::Unsupported,
+                format!("expected the drive of random traffic `{g}` to be its only phase, starting with the run (its members are created then), found another phase of it"),
+            ));
+        }
+        Ok(())
+    }
+}

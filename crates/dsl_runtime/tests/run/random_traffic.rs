@@ -1,0 +1,196 @@
+//! `random_traffic_vehicle_group` (ASAM OpenSCENARIO DSL 2.1 §8.7.18.1): members placed from
+//! the run's seed over the driving lanes, apart by the minimum gap, each driven by the engine's
+//! `mobil` model at the drive's desired speed. Expectations in the scenario files.
+
+use crate::support::{run, DT};
+
+/// Positions of an actor driving its plan on a straight road: float round-off only (m).
+const S_TOL: f64 = 1e-6;
+/// The IDM's minimum gap s0 (m) and time headway T (s), the engine's defaults.
+const S0: f64 = 2.0;
+const T: f64 = 1.6;
+/// Members' names of `g` with `n` vehicles.
+fn members(n: usize) -> Vec<String> {
+    (0..n).map(|i| format!("g.vehicles[{i}]")).collect()
+}
+
+#[test]
+fn random_traffic_places_reproduce_by_seed() {
+    let (a, b, c) = (
+        run("random_traffic", 3, None),
+        run("random_traffic", 3, None),
+        run("random_traffic", 4, None),
+    );
+    // Same seed: the same trajectories, bit for bit (the determinism the golden check guards).
+    assert_eq!(a.frames.len(), b.frames.len());
+    for ((ta, fa), (tb, fb)) in a.frames.iter().zip(&b.frames) {
+        assert_eq!(ta.to_bits(), tb.to_bits());
+        for (oa, ob) in fa.iter().zip(fb) {
+            assert_eq!(oa.name, ob.name);
+            assert_eq!(
+                (oa.x.to_bits(), oa.y.to_bits(), oa.speed.to_bits()),
+                (ob.x.to_bits(), ob.y.to_bits(), ob.speed.to_bits()),
+                "{} at {ta}",
+                oa.name
+            );
+        }
+    }
+    // Another seed: other places (a member 1 m or more from where seed 3 put it).
+    let moved = members(8)
+        .iter()
+        .filter(|m| {
+            let (p, q) = (a.at(0.0, m), c.at(0.0, m));
+            p.lane != q.lane || (p.s - q.s).abs() > 1.0
+        })
+        .count();
+    assert!(moved >= 6, "{moved} of 8 members moved with the seed");
+}
+
+#[test]
+fn random_traffic_starts_in_the_driving_lanes_apart_by_the_minimum_gap() {
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic", seed, None);
+        // Every vehicle at t = 0: lane, rear and front bumper (boxes front 3.5 m, rear 0.5 m).
+        let mut all: Vec<(i32, f64, f64, f64, String)> = members(8)
+            .into_iter()
+            .chain(["ego".to_string()])
+            .map(|m| {
+                let o = r.at(0.0, &m);
+                (o.lane, o.s - 0.5, o.s + 3.5, o.speed, m)
+            })
+            .collect();
+        let v_max = all.iter().fold(0.0_f64, |a, o| a.max(o.3));
+        for (lane, rear, front, v, m) in &all {
+            assert!([-1, -2, -3].contains(lane), "{m} in lane {lane}");
+            assert!(*rear >= 0.0 && *front <= 1000.0, "{m} at {rear}..{front}");
+            if m != "ego" {
+                // Start speeds drawn in [0.9, 1.1] * 25 m/s.
+                assert!((22.5..=27.5).contains(v), "{m} at {v} m/s");
+            }
+        }
+        let ego = r.at(0.0, "ego");
+        assert!((ego.s - 100.0).abs() < S_TOL && ego.lane == -3, "{ego:?}");
+        all.sort_by(|p, q| p.0.cmp(&q.0).then(p.1.total_cmp(&q.1)));
+        let min_gap = S0 + v_max * T;
+        for w in all.windows(2) {
+            if w[0].0 == w[1].0 {
+                let gap = w[1].1 - w[0].2;
+                assert!(
+                    gap >= min_gap - S_TOL,
+                    "seed {seed}: {} to {}: {gap} m < {min_gap} m",
+                    w[0].4,
+                    w[1].4
+                );
+            }
+        }
+    }
+}
+
+/// The IDM's free-road speed by its closed form (random_traffic_free.osc's comment):
+/// F(x) = ½ (artanh x + atan x) (arcoth x above 1: ½ ln|(1 + x)/(1 − x)| either side),
+/// F(x(t)) = F(x(0)) + a·t / v0, solved for x between x(0) and 1 by bisection.
+fn free_road_speed(v_start: f64, v0: f64, a: f64, t: f64) -> f64 {
+    let f = |x: f64| 0.5 * (0.5 * ((1.0 + x) / (1.0 - x)).abs().ln() + x.atan());
+    let x0 = v_start / v0;
+    let target = f(x0) + a * t / v0;
+    // F rises with x below 1 and falls above it; x moves towards 1 either way.
+    let below = x0 < 1.0;
+    let (mut lo, mut hi) = if below {
+        (x0, 1.0 - 1e-15)
+    } else {
+        (1.0 + 1e-15, x0)
+    };
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if (f(mid) < target) == below {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    v0 * 0.5 * (lo + hi)
+}
+
+#[test]
+fn a_member_on_a_free_road_speeds_up_to_its_desired_speed_by_the_idm() {
+    let m = "g.vehicles[0]";
+    let mut below = 0;
+    for seed in 0..4 {
+        let r = run("random_traffic_free", seed, None);
+        let v_start = r.at(0.0, m).speed;
+        assert!((22.5..=27.5).contains(&v_start), "v(0) = {v_start}");
+        below += usize::from(v_start < 25.0);
+        // First step: a (1 - (v/v0)^4) over dt.
+        let a0 = 0.73 * (1.0 - (v_start / 25.0).powi(4));
+        let v1 = r.at(DT, m).speed;
+        assert!(
+            (v1 - (v_start + a0 * DT)).abs() < 1e-9,
+            "v(dt) {v1}, a0 {a0}"
+        );
+        // Later: the closed form; the engine's steps of 0.05 s differ from it by the Euler
+        // error of a slowly varying acceleration (below 0.4 m/s²): under 1 cm/s.
+        // While its box is on the 1000 m road (at the road's end the engine stops it).
+        let mut checked = 0;
+        for k in 1..=30 {
+            let t = f64::from(k);
+            let got = r.at(t, m);
+            if got.s + 3.5 > 999.0 {
+                break;
+            }
+            checked += 1;
+            let want = free_road_speed(v_start, 25.0, 0.73, t);
+            assert!(
+                (got.speed - want).abs() < 0.01,
+                "seed {seed}: v({t}) = {}, closed form {want}",
+                got.speed
+            );
+            // Towards v0 from either side, never past it.
+            assert!((got.speed - 25.0).abs() < (v_start - 25.0).abs());
+            assert!((got.speed - 25.0).signum() == (v_start - 25.0).signum());
+        }
+        assert!(checked >= 10, "seed {seed}: {checked} s on the road");
+        if seed == 1 {
+            // By hand (random_traffic_free.osc): from 23.1627 m/s, 0.192 m/s² at once and
+            // 24.383 m/s at 10 s.
+            assert!((v_start - 23.1627).abs() < 1e-4, "v(0) = {v_start}");
+            assert!((a0 - 0.192).abs() < 1e-3, "a(0) = {a0}");
+            let v10 = r.at(10.0, m).speed;
+            assert!((v10 - 24.383).abs() < 0.01, "v(10) = {v10}");
+        }
+    }
+    assert!(below > 0, "no seed of 0..4 starts below v0");
+}
+
+#[test]
+fn the_ego_drives_its_plan_beside_random_traffic() {
+    for seed in [0, 3] {
+        let r = run("random_traffic", seed, None);
+        for (t, _) in &r.frames {
+            let ego = r.at(*t, "ego");
+            assert_eq!(ego.lane, -3, "seed {seed} at {t}");
+            assert!(
+                (ego.s - (100.0 + 20.0 * t)).abs() < S_TOL,
+                "seed {seed}: ego s({t}) = {}",
+                ego.s
+            );
+        }
+    }
+}
+
+#[test]
+fn random_traffic_without_room_on_the_road_is_an_error() {
+    crate::along::refused(
+        "err_random_traffic_crowded",
+        "expected room on the plan's driving lanes for the 100 members of random traffic `g` (each its length plus a gap of 54.0 m to the next vehicle: s0 + v·T at the fastest start speed 32.52 m/s), found room for 54",
+        "12:8",
+    );
+}
+
+#[test]
+fn a_modifier_other_than_speed_on_random_traffic_is_an_error() {
+    crate::along::refused(
+        "err_random_traffic_modifier",
+        "expected speed(v) on the drive of random traffic `g` (its members' desired speed; the engine's driver model does the rest), found `lane(…)`",
+        "7:9",
+    );
+}
