@@ -29,8 +29,10 @@
 //!   from the first step to the end of the run (the drive's phase ending does not stop it:
 //!   the group defines creation, the model the behaviour).
 //!
-//! The group's drive must be its members' only phase and start with the run; `speed(v)` is its
-//! only modifier (the others constrain a planned motion these members do not have).
+//! The group's drive must be its members' only phase and start with the run. Its modifiers:
+//! `speed(v)`, and `along(r)` on a route the runtime chooses (a `route` field nothing binds:
+//! the plan's roads, which the members drive; the resolver refuses offsets on such a route);
+//! the others constrain a planned motion these members do not have (an error at the modifier).
 
 use std::collections::HashMap;
 
@@ -38,7 +40,7 @@ use super::car_following::model_controller;
 use super::place::{Start, DEFAULT_SPEED};
 use super::planner::Planner;
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{Action, Arg, Invoke, Kind, ModKind, Modifier, Phase};
+use crate::resolve::{Action, Along, Arg, Invoke, Kind, ModKind, Modifier, Phase, Route};
 
 /// The start of a member before [`Planner::place_random_traffic`] places it.
 pub(super) const UNPLACED: Start = Start {
@@ -77,38 +79,54 @@ impl Stretch {
     }
 }
 
-/// The desired speed `speed(v)` among `mods` gives, else the default; any other modifier is
-/// an error.
-fn desired_speed(g: &str, mods: &[Modifier]) -> Result<f64, Error> {
-    let mut v0 = DEFAULT_SPEED;
-    for m in mods {
-        let relative = ["faster_than", "slower_than", "same_as"]
-            .iter()
-            .any(|k| m.arg(k).is_some());
-        match m.kind {
-            ModKind::Speed if !relative => {
-                if let Some(v) = m.arg("speed").map(Arg::number).transpose()? {
-                    if !(v > 0.0 && v <= super::MAX_SPEED) {
-                        return Err(m.site.err(
-                            K::Unsatisfiable,
-                            format!("expected a desired speed above 0 and up to {} m/s for random traffic `{g}`, found {v} m/s", super::MAX_SPEED),
-                        ));
+impl Planner<'_> {
+    /// The desired speed `speed(v)` among `mods` gives (else the default); beside it only
+    /// `along(r)` on a route the runtime chooses (the plan's roads, where the members are);
+    /// any other modifier is an error.
+    fn desired_speed(&self, g: &str, mods: &[Modifier]) -> Result<f64, Error> {
+        let mut v0 = DEFAULT_SPEED;
+        for m in mods {
+            let relative = ["faster_than", "slower_than", "same_as"]
+                .iter()
+                .any(|k| m.arg(k).is_some());
+            match (m.kind, &m.along) {
+                (ModKind::Speed, _) if !relative => {
+                    if let Some(v) = m.arg("speed").map(Arg::number).transpose()? {
+                        if !(v > 0.0 && v <= super::MAX_SPEED) {
+                            return Err(m.site.err(
+                                K::Unsatisfiable,
+                                format!("expected a desired speed above 0 and up to {} m/s for random traffic `{g}`, found {v} m/s", super::MAX_SPEED),
+                            ));
+                        }
+                        v0 = v;
                     }
-                    v0 = v;
+                }
+                // A route field the scenario leaves to the runtime and nothing binds: the
+                // plan's roads, all of whose driving lanes the members may use.
+                (
+                    ModKind::Along,
+                    Some(Along {
+                        route:
+                            Route::Free {
+                                field,
+                                one_lane: false,
+                            },
+                        ..
+                    }),
+                ) if !self.route_lanes.contains_key(field)
+                    && !self.route_roads.contains_key(field)
+                    && !self.against_routes.contains_key(field) => {}
+                _ => {
+                    return Err(m.site.err(
+                        K::Unsupported,
+                        format!("expected speed(v) or along(r) on a route the runtime chooses on the drive of random traffic `{g}` (its members' desired speed and the roads they drive; the engine's driver model does the rest), found `{}(…)`", m.name),
+                    ))
                 }
             }
-            _ => {
-                return Err(m.site.err(
-                    K::Unsupported,
-                    format!("expected speed(v) on the drive of random traffic `{g}` (its members' desired speed; the engine's driver model does the rest), found `{}(…)`", m.name),
-                ))
-            }
         }
+        Ok(v0)
     }
-    Ok(v0)
-}
 
-impl Planner<'_> {
     /// Whether `name` is a member of a `random_traffic_vehicle_group`.
     pub(super) fn random_member(&self, name: &str) -> bool {
         self.random.keys().any(|g| {
@@ -140,7 +158,7 @@ impl Planner<'_> {
                 Some(Kind::Invoke(inv)) => inv.modifiers.as_slice(),
                 _ => &[],
             };
-            let v0 = desired_speed(&g, mods)?;
+            let v0 = self.desired_speed(&g, mods)?;
             let speeds: Vec<f64> = members
                 .iter()
                 .map(|_| {

@@ -190,7 +190,33 @@ fn random_traffic_without_room_on_the_road_is_an_error() {
 fn a_modifier_other_than_speed_on_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_modifier",
-        "expected speed(v) on the drive of random traffic `g` (its members' desired speed; the engine's driver model does the rest), found `lane(…)`",
+        "expected speed(v) or along(r) on a route the runtime chooses on the drive of random traffic `g` (its members' desired speed and the roads they drive; the engine's driver model does the rest), found `lane(…)`",
         "7:9",
     );
+}
+
+#[test]
+fn random_traffic_along_the_dut_route_keeps_clear_of_the_dut() {
+    for seed in [0, 1] {
+        let r = run("random_traffic_along", seed, None);
+        let dut = r.at(0.0, "dut.vehicle");
+        assert!((dut.s - 300.0).abs() < S_TOL && dut.lane == -3, "{dut:?}");
+        let v_max = members(6)
+            .iter()
+            .fold(dut.speed, |a, m| a.max(r.at(0.0, m).speed));
+        for m in members(6) {
+            let o = r.at(0.0, &m);
+            assert!([-1, -2, -3].contains(&o.lane), "seed {seed}: {o:?}");
+            if o.lane == -3 {
+                // Bumper to bumper, whichever is ahead.
+                let gap = (o.s - 0.5 - (dut.s + 3.5)).max(dut.s - 0.5 - (o.s + 3.5));
+                assert!(
+                    gap >= 2.0 + 1.6 * v_max - S_TOL,
+                    "seed {seed}: {m} {gap} m from the dut"
+                );
+            }
+        }
+        let end = r.at(5.0, "dut.vehicle");
+        assert!((end.s - 375.0).abs() < S_TOL, "dut s(5) = {}", end.s);
+    }
 }
