@@ -48,6 +48,7 @@ impl Planner<'_> {
             return Ok(v1);
         }
         let v0 = self.track(target).at(t).1;
+        let mut before = v1;
         for _ in 0..ROUNDS {
             // A change that does not fit in d, or a standing actor, is the caller's error
             // (`speed_change_over`), with this v₁.
@@ -58,11 +59,11 @@ impl Planner<'_> {
             if (next - v1).abs() <= SETTLED {
                 return Ok(next);
             }
-            v1 = next;
+            (before, v1) = (v1, next);
         }
         Err(m.site.err(
             K::Unsatisfiable,
-            format!("expected `{x}`'s planned speed where distance({d} m) ends the phase to settle for a change at {a} m/s² from {v0:.2} m/s, found it still moving after {ROUNDS} rounds (near {v1:.2} m/s)"),
+            format!("expected a speed of `{x}` where distance({d} m) ends the phase that a change to it at {a} m/s² from {v0:.2} m/s ends the phase with, found none settling in {ROUNDS} rounds (the last two: {before:.2} and {v1:.2} m/s; `{x}`'s speed jumps where the phase would end)"),
         ))
     }
 

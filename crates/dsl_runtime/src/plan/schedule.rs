@@ -262,17 +262,21 @@ impl Planner<'_> {
     }
 }
 
-/// 1 for an invocation with a `position(…, at: end)`, or a `lateral(…, at: end)` beside
-/// another actor (read where the plan has that actor at the end), else 0: the order in which
-/// a parallel plans its members.
+/// 1 for an invocation with a `position(…, at: end)`, a `lateral(…, at: end)` beside another
+/// actor, or a speed at the end relative to another actor (`speed(same_as/faster_than/
+/// slower_than: x, at: end)`, `change_speed` so: read where the plan has that actor at the
+/// end), else 0: the order in which a parallel plans its members.
 fn relative_end(p: &Phase) -> u8 {
+    let any_of =
+        |m: &crate::resolve::Modifier, keys: &[&str]| keys.iter().any(|k| m.arg(k).is_some());
     let relative = |m: &crate::resolve::Modifier| match m.kind {
-        ModKind::Position => true,
-        ModKind::Lateral => ["side_of", "left_of", "right_of"]
-            .iter()
-            .any(|k| m.arg(k).is_some()),
+        ModKind::Position => m.at == At::End,
+        ModKind::Lateral => m.at == At::End && any_of(m, &["side_of", "left_of", "right_of"]),
+        ModKind::Speed | ModKind::ChangeSpeed => {
+            (m.at == At::End || m.kind == ModKind::ChangeSpeed)
+                && any_of(m, &["same_as", "faster_than", "slower_than"])
+        }
         _ => false,
     };
-    matches!(&p.kind, Kind::Invoke(inv) if inv.modifiers.iter().any(|m| m.at == At::End && relative(m)))
-        as u8
+    matches!(&p.kind, Kind::Invoke(inv) if inv.modifiers.iter().any(relative)) as u8
 }
