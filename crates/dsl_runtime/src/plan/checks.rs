@@ -6,6 +6,9 @@ use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{At, Kind, ModKind, Modifier, Phase, Val};
 use crate::track::Track;
 
+use super::heading::{object_axis, Frame, HeadingAsk, SAME_ANGLE};
+use std::f64::consts::FRAC_PI_2;
+
 /// Checks `keep_lane()`, `keep_speed()` and `physical_movement(must_be_physical)` against the
 /// other modifiers of their invocation: a lane change beside `keep_lane`, a speed change beside
 /// `keep_speed`, or a step of speed (`speed(v)` in a later phase, `step`: the speeds before and
@@ -95,6 +98,10 @@ pub(crate) fn check_keeps(
     Ok(())
 }
 
+/// What [`check_orientation`] finds: the yaw relative to the road a first phase asks for (and
+/// its place), and the yaws measured in the world or from another object.
+pub(crate) type Orientations = (Option<(f64, Site)>, Vec<HeadingAsk>);
+
 /// Checks `yaw(…)` and `orientation(…)` (§8.9.9 yaw, §8.9.10 orientation) against the plan's
 /// motion: the engine's vehicles drive along their lane's centre line (or at a constant offset
 /// from it), so their yaw, pitch and roll relative to the road are 0 except while they change
@@ -107,38 +114,91 @@ pub(crate) fn check_keeps(
 /// is the yaw the actor has (`along`, or the first phase's), which a later phase must ask for.
 /// `along` is the yaw relative to the road's s-axis of an actor that drives along its lane: 0
 /// in +s, π for an actor driving against s (`crate::road`: it faces −s), whose yaw of 0 would
-/// face it against its travel. Anything else is an error: another yaw, a pitch or roll other
-/// than 0, an angle relative to another object, to north, or absolute, which the planner does
-/// not steer. Returns the yaw and its place when the first phase asks for one other than
-/// `along`.
+/// face it against its travel. A yaw measured in the world (`absolute`, `relative_to_north`)
+/// or from another object (`relative_to: x` with a measure between the two objects' axes) is a
+/// [`HeadingAsk`] of `target` over the phase from `t0` to `end`, checked once every phase is
+/// planned (`heading`); it needs a start the plan knows. Anything else is an error: another
+/// yaw, a pitch or roll other than 0, a measure that does not fit `relative_to:` (or its
+/// absence). Returns the yaw and its place when the first phase asks for one other than
+/// `along` relative to the road, and the other yaws asked.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn check_orientation(
     mods: &[Modifier],
     planned: f64,
     along: f64,
     first: bool,
-) -> Result<Option<(f64, Site)>, Error> {
+    target: &str,
+    (t0, end): (Option<f64>, Option<f64>),
+    entity_of: impl Fn(&crate::resolve::Arg) -> Result<String, Error>,
+) -> Result<Orientations, Error> {
     let mut asked = None;
-    /// Angles within this of 0 are 0 (rad): a thousandth of a degree.
-    const ZERO: f64 = 1e-3 * std::f64::consts::PI / 180.0;
+    let mut asks = Vec::new();
+    /// Angles within this of 0 are 0 (rad).
+    const ZERO: f64 = SAME_ANGLE;
     for m in mods.iter().filter(|m| m.kind == ModKind::Orientation) {
         let name = m.name.as_str();
-        if let Some(e) = m.arg("relative_to") {
-            return Err(e.site.err(
-                K::Unsupported,
-                format!("expected {name}(…) relative to the road, found relative_to: (orientations relative to another object are not planned yet)"),
-            ));
-        }
-        let measure = if name == "yaw" {
-            "measure_by"
+        let (measure, yaw_arg) = if name == "yaw" {
+            ("measure_by", "angle")
         } else {
-            "measured_by"
+            ("measured_by", "yaw")
         };
-        if let Some(e) = m.arg(measure) {
-            if !matches!(e.eval()?, Val::Enum(v) if v == "relative_to_road") {
-                return Err(e.site.err(
-                    K::Unsupported,
-                    format!("expected {measure}: relative_to_road, found another measure (absolute and north-relative orientations are not planned yet)"),
+        let by = match m.arg(measure) {
+            Some(e) => match e.eval()? {
+                Val::Enum(v) => Some((v, e.site.clone())),
+                _ => None,
+            },
+            None => None,
+        };
+        let by_name = by.as_ref().map_or("relative_to_road", |(v, _)| v.as_str());
+        let frame = match (m.arg("relative_to"), by_name) {
+            (None, "relative_to_road") => None,
+            (None, "absolute") => Some(Frame::World(0.0, "absolute")),
+            (None, "relative_to_north") => Some(Frame::World(FRAC_PI_2, "relative to north (+y)")),
+            (Some(x), b) => match object_axis(b) {
+                Some(axis) => Some(Frame::Object(
+                    axis,
+                    entity_of(x)?,
+                    format!("{b} from `{}`", x.path.as_deref().unwrap_or("?")),
+                )),
+                None => {
+                    let want = if name == "yaw" {
+                        "length_to_length, length_to_width, width_to_length or width_to_width"
+                    } else {
+                        "relative_to_reference"
+                    };
+                    return Err(x.site.err(
+                        K::Argument,
+                        format!("expected {measure}: {want} beside relative_to: (the angle between the two objects' axes), found {measure}: {b}, which measures from no object"),
+                    ));
+                }
+            },
+            (None, b) => {
+                let site = by.as_ref().map_or(&m.site, |(_, s)| s);
+                return Err(site.err(
+                    K::Argument,
+                    format!("expected relative_to: (the object whose axes the angle is measured from) beside {measure}: {b}, found none"),
                 ));
+            }
+        };
+        let in_frame = frame.is_some();
+        if let Some(frame) = frame {
+            if let Some(e) = m.arg(yaw_arg) {
+                let Some(t0) = t0 else {
+                    return Err(e.site.err(
+                        K::Unsupported,
+                        format!("expected a phase start the plan knows for {name}(…) measured in the world or from another object, found one at run time (after an until or a wait: the plan knows no heading there; not run yet)"),
+                    ));
+                };
+                asks.push(HeadingAsk {
+                    actor: target.to_string(),
+                    frame,
+                    angle: e.number()?,
+                    at: m.at,
+                    t0,
+                    end,
+                    first,
+                    site: e.site.clone(),
+                });
             }
         }
         let angles: &[&str] = if name == "yaw" {
@@ -150,6 +210,9 @@ pub(crate) fn check_orientation(
             if let Some(e) = m.arg(a) {
                 let x = e.number()?;
                 let is_yaw = matches!(*a, "angle" | "yaw");
+                if is_yaw && in_frame {
+                    continue;
+                }
                 let want = if is_yaw { planned } else { 0.0 };
                 // Angles compare on the circle: yaw(-180deg) is yaw(180deg).
                 let off = |y: f64, from: f64| opendrive::normalize_angle(y - from).abs();
@@ -186,7 +249,7 @@ pub(crate) fn check_orientation(
             }
         }
     }
-    Ok(asked)
+    Ok((asked, asks))
 }
 
 /// Whether `mods` allow a non-physical movement: `physical_movement(prefer_non_physical)`

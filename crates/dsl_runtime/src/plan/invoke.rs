@@ -144,9 +144,19 @@ impl Planner<'_> {
             // The yaw relative to the road's s-axis of an actor along its lane (§8.9.9).
             let along = if self.entities[e].against { PI } else { 0.0 };
             let planned = self.entities[e].yaw.as_ref().map_or(along, |(y, _)| *y);
-            if let Some(y) = check_orientation(mods, planned, along, first)? {
+            let end_known = match (t0, end, len) {
+                (_, Some(b), _) => Some(b),
+                (Some(a), None, Some(l)) => Some(a + l),
+                _ => None,
+            };
+            let (yaw, asks) =
+                check_orientation(mods, planned, along, first, target, (t0, end_known), |x| {
+                    self.entity_of(x)
+                })?;
+            if let Some(y) = yaw {
                 self.entities[e].yaw = Some(y);
             }
+            self.heading_asks.extend(asks);
             self.check_avoid_collisions(inv, mods, target)?;
             // keep_position() in a later phase: the vehicle must stand when it starts.
             if let Some(k) = mods.iter().find(|m| m.kind == ModKind::KeepPosition) {

@@ -51,6 +51,7 @@
 //! | `place` | initial placement from `at: start`/`all` constraints |
 //! | `route` | `along(…)` routes against the planned motion; the road named routes are on |
 //! | `checks` | `keep_*`, `physical_movement`, `yaw`/`orientation` against the planned motion |
+//! | `heading` | yaws measured in the world or from another object, checked against the finished plan's headings |
 //! | `planner` | the planner's state: entities, tracks, phases planned so far; where an event is used (its event context) |
 //! | `motion` | speed profiles, modifier values, lane targets |
 //! | `events` | conditions and events as triggers in their event context |
@@ -102,6 +103,7 @@ mod events;
 mod gap_actions;
 mod group_path;
 mod group_path_runtime;
+mod heading;
 mod invoke;
 mod lane_fields;
 mod lateral;
@@ -174,6 +176,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         crossings: HashMap::new(),
         sides: RefCell::new(HashMap::new()),
         beside_checks: Vec::new(),
+        heading_asks: Vec::new(),
         draws: RefCell::new(res.draws.clone()),
         engine_moved: HashMap::new(),
         gaps: HashMap::new(),
@@ -462,6 +465,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
         }
     }
+    let asks = std::mem::take(&mut p.heading_asks);
+    heading::check_headings(&mut p, &asks)?;
     // A yaw other than 0 relative to the road is kept physically only by an actor that
     // stands; one that moves keeps it crabwise along its lane where every invocation of it
     // allows a non-physical movement (`checks::crabwise`).

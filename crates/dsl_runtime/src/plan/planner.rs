@@ -78,6 +78,9 @@ pub(crate) struct Planner<'a> {
     /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
     /// the modifier), checked once every phase is planned.
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,
+    /// Yaws measured in the world or from another object (`heading`), checked once every
+    /// phase is planned.
+    pub heading_asks: Vec<super::heading::HeadingAsk>,
     /// The side drawn for each `change_lane(…)` without one (by the modifier's span).
     pub sides: RefCell<HashMap<String, bool>>,
     /// The run's draws after the resolver's.

@@ -4,7 +4,7 @@
 //! scenario files.
 
 use crate::along::refused;
-use crate::support::run;
+use crate::support::{lower_at, run, run_on};
 
 /// Heading on the straight road: float round-off.
 const H_TOL: f64 = 1e-9;
@@ -41,7 +41,7 @@ fn orientations_the_planner_does_not_steer_are_errors() {
     );
     refused(
         "err_orientation_relative",
-        "expected orientation(…) relative to the road, found relative_to:",
+        "expected measured_by: relative_to_reference beside relative_to: (the angle between the two objects' axes), found measured_by: relative_to_road, which measures from no object",
         "7:45",
     );
 }
@@ -96,5 +96,98 @@ fn a_moving_actor_with_a_yaw_under_must_be_physical_or_changing_lane_is_an_error
         "err_yaw_crabwise_lane",
         "found it moving sideways from 0.00 s (a crabwise movement keeps to the lane: no lane or offset change)",
         "8:13",
+    );
+}
+
+/// Headings on bend.xodr's arc: the engine steps along the lane at 0.05 s, its heading the
+/// road's at the s it reaches (by hand in the scenario file to 1e-5 rad).
+const ARC_TOL: f64 = 1e-4;
+
+/// The difference of two headings on the circle (rad).
+fn turn(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(std::f64::consts::TAU);
+    d.min(std::f64::consts::TAU - d)
+}
+
+/// Yaws measured in the world (absolute, relative to north) and from another object
+/// (length_to_width, length_to_length) on bend.xodr (yaw_world.osc's comment).
+#[test]
+fn yaws_measured_in_the_world_or_from_another_object_are_the_actors_headings() {
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_4};
+    let r = run_on("yaw_world", "bend");
+    for t in [0.0, 7.5, 15.0] {
+        for (who, h) in [
+            ("npc", FRAC_PI_2),
+            ("bus", FRAC_PI_4),
+            ("truck", -FRAC_PI_2),
+        ] {
+            let got = r.at(t, who).h;
+            assert!(
+                turn(got, h) < H_TOL,
+                "{who} heading {got} at {t} s, expected {h}"
+            );
+        }
+    }
+    for t in [0.0, 2.5, 5.0] {
+        for who in ["ego", "car"] {
+            let got = r.at(t, who).h;
+            assert!(turn(got, 0.0) < H_TOL, "{who} heading {got} at {t} s");
+        }
+    }
+    // ego in lane -3 (radius 108.75 m on the arc): s = 100 + 70 / 1.0875 m at 15 s, heading
+    // 0.01 (s - 100) = 0.643678 rad.
+    let h = 70.0 / 1.0875 * 0.01;
+    let got = r.at(15.0, "ego").h;
+    assert!(
+        turn(got, h) < ARC_TOL,
+        "ego heading {got} at 15 s, expected {h}"
+    );
+}
+
+/// Yaws in the world or from another object that the plan's headings do not meet, or that the
+/// plan cannot measure: errors at the angle (by hand in the scenario files).
+#[test]
+fn yaws_measured_in_the_world_or_from_another_object_that_do_not_hold_are_errors() {
+    refused_on(
+        "err_yaw_world_end",
+        "expected `ego` at heading 0.6880 rad (the angle 0.6880 rad, absolute) at 15.00 s, found it at 0.6437 rad, its lane's heading 0.6437 rad",
+        "13:30",
+    );
+    refused_on(
+        "err_yaw_relative_end",
+        "expected `car` at heading 0.6437 rad (the angle 0.0000 rad, length_to_length from `ego`, `ego` heading 0.6437 rad) at 15.00 s, found it at 0.6651 rad, its lane's heading 0.6651 rad",
+        "19:17",
+    );
+    refused(
+        "err_yaw_relative_measure",
+        "expected measure_by: length_to_length, length_to_width, width_to_length or width_to_width beside relative_to: (the angle between the two objects' axes), found measure_by: relative_to_road, which measures from no object",
+        "7:32",
+    );
+    refused(
+        "err_yaw_measure_without_object",
+        "expected relative_to: (the object whose axes the angle is measured from) beside measure_by: width_to_width, found none",
+        "6:31",
+    );
+    refused(
+        "err_yaw_north_runtime",
+        "expected a phase start the plan knows for yaw(…) measured in the world or from another object, found one at run time",
+        "19:17",
+    );
+}
+
+/// `refused` on bend.xodr.
+fn refused_on(name: &str, message: &str, at: &str) {
+    let e = lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        "tests/roads/bend.xodr",
+        0,
+        None,
+    )
+    .err()
+    .unwrap_or_else(|| panic!("{name} lowers"))
+    .to_string();
+    assert!(
+        e.contains(message) && e.ends_with(&format!("{name}.osc:{at}")),
+        "{e}"
     );
 }

@@ -1,0 +1,210 @@
+//! Yaws measured in the world or from another object, checked against the plan's headings
+//! (ASAM OpenSCENARIO DSL 2.1 §8.9 `yaw` with `measure_by: relative_to_north` or
+//! `length_to_length`, `length_to_width`, `width_to_length`, `width_to_width` and
+//! `relative_to: x`; `orientation` with `measured_by: absolute` or `relative_to_reference`).
+//!
+//! The frame (oscsim's choice, the standard names the measures but no axes): headings are
+//! those of the road network's inertial frame, OpenDRIVE's x, y (x east, y north where the
+//! network is georeferenced), counted counter-clockwise about z from +x as OpenSCENARIO 1.x
+//! and ISO 8855 count a heading. `absolute` is that heading; `relative_to_north` counts from
+//! +y (north), so the heading is π/2 + ψ. Between two objects the angle is counted from x's
+//! axis to the actor's: `length_to_length` (and `width_to_width`, the same turn) heading(x) + ψ;
+//! `length_to_width` from x's width axis (its left, heading(x) + π/2) to the actor's length
+//! axis; `width_to_length` from x's length axis to the actor's width axis (its left), so
+//! heading(x) + ψ − π/2. `orientation(…, relative_to: x, measured_by: relative_to_reference)`
+//! is `length_to_length`.
+//!
+//! The plan's actors face along their lane (the road's heading there, turned by a yaw relative
+//! to the road asked in the first phase), so the check needs their places: it is made once
+//! every phase is planned ([`check_headings`]), at the phase start (`at: start`), its end
+//! (`at: end`) or every step from one to the other (`at: all`). In the actor's first phase a
+//! heading other than its lane's becomes its yaw relative to the road from the run's start
+//! (the Init's relative Orientation), under the physical rules of a yaw relative to the road
+//! (`checks::crabwise`).
+
+use std::f64::consts::FRAC_PI_2;
+
+use crate::error::{Error, ErrorKind as K, Site};
+use crate::resolve::At;
+
+use super::planner::Planner;
+
+/// Angles within this of each other are the same (rad): a thousandth of a degree.
+pub(crate) const SAME_ANGLE: f64 = 1e-3 * std::f64::consts::PI / 180.0;
+
+/// What a yaw is measured from.
+#[derive(Debug, Clone)]
+pub(crate) enum Frame {
+    /// The world's heading plus this (0 `absolute`, π/2 `relative_to_north`), and the measure's
+    /// name.
+    World(f64, &'static str),
+    /// Another object's heading plus this (its axis), the object's path, and the measure's
+    /// name.
+    Object(f64, String, String),
+}
+
+/// A yaw in a [`Frame`] asked of an actor over a phase, checked once the plan is made.
+#[derive(Debug, Clone)]
+pub(crate) struct HeadingAsk {
+    /// The actor.
+    pub actor: String,
+    /// What ψ is measured from.
+    pub frame: Frame,
+    /// ψ (rad).
+    pub angle: f64,
+    /// When it holds.
+    pub at: At,
+    /// The phase's start (s).
+    pub t0: f64,
+    /// The phase's end, if the plan knows it (s).
+    pub end: Option<f64>,
+    /// The phase is the actor's first.
+    pub first: bool,
+    /// The angle's place.
+    pub site: Site,
+}
+
+impl Planner<'_> {
+    /// The heading (rad) of the road's s-axis where `name` is at `t`, on the plan's roads
+    /// in +s; `None` off them.
+    fn road_heading(&self, name: &str, t: f64) -> Option<f64> {
+        self.road
+            .world_pose(self.s_at(name, t), self.t_at(name, t))
+            .map(|p| p.2)
+    }
+
+    /// The world heading of `name` at `t` as planned: its lane's, turned by its yaw relative to
+    /// the road (its first phase's, else 0).
+    fn heading_of(&self, name: &str, t: f64) -> Option<f64> {
+        let e = &self.entities[self.index[name]];
+        Some(self.road_heading(name, t)? + e.yaw.as_ref().map_or(0.0, |(y, _)| *y))
+    }
+}
+
+/// Checks every [`HeadingAsk`] against the finished plan, first turning each asked in an
+/// actor's first phase into its yaw relative to the road from the run's start (where the
+/// lane's heading differs from it); errors name the angle asked, the lane's heading and, for
+/// a yaw relative to another object, both headings.
+pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result<(), Error> {
+    let dt = p.settings.dt;
+    // First the yaws from the run's start: those measured in the world, then those from
+    // another object (whose own may be one of the first).
+    let world_first = |a: &&HeadingAsk| matches!(a.frame, Frame::World(..));
+    let firsts = asks.iter().filter(|a| a.first);
+    for a in firsts
+        .clone()
+        .filter(world_first)
+        .chain(firsts.filter(|a| !world_first(a)))
+    {
+        refuse_against(p, a)?;
+        let e = p.index[a.actor.as_str()];
+        if p.entities[e].yaw.is_none() {
+            let lane = p.road_heading(&a.actor, a.t0).ok_or_else(|| off_road(a))?;
+            let rel = opendrive::normalize_angle(wanted(p, a, a.t0)?.0 - lane);
+            if rel.abs() > SAME_ANGLE {
+                p.entities[e].yaw = Some((rel, a.site.clone()));
+            }
+        }
+    }
+    for a in asks {
+        refuse_against(p, a)?;
+        let e = p.index[a.actor.as_str()];
+        let off_road = || off_road(a);
+        let times: Vec<f64> = match (a.at, a.end) {
+            (At::Start, _) | (At::All, None) => vec![a.t0],
+            (At::End, Some(te)) => vec![te],
+            (At::End, None) => {
+                return Err(a.site.err(
+                    K::Unsupported,
+                    "expected a phase whose end the plan knows (a duration) for a yaw measured in the world or from another object at: end, found none (the plan knows no heading there)",
+                ))
+            }
+            (At::All, Some(te)) => {
+                let n = ((te - a.t0) / dt).round().max(0.0) as usize;
+                (0..=n).map(|i| (a.t0 + i as f64 * dt).min(te)).collect()
+            }
+        };
+        // at: all without a known end: the heading from the start on, where the actor stands.
+        if a.at == At::All && a.end.is_none() && !p.entities[e].track.stands() {
+            return Err(a.site.err(
+                K::Unsupported,
+                format!("expected `{}` standing, or a phase whose end the plan knows (a duration), for a yaw measured in the world or from another object throughout the phase, found neither (the plan knows no heading over it)", a.actor),
+            ));
+        }
+        for t in times {
+            let (h, hx) = wanted(p, a, t)?;
+            let got = p.heading_of(&a.actor, t).ok_or_else(off_road)?;
+            if opendrive::normalize_angle(got - h).abs() > SAME_ANGLE {
+                let lane = p.road_heading(&a.actor, t).ok_or_else(off_road)?;
+                let (measure, of_x) = match (&a.frame, hx) {
+                    (Frame::World(_, m), _) => (*m, String::new()),
+                    (Frame::Object(_, x, m), Some(hx)) => {
+                        (m.as_str(), format!(", `{x}` heading {hx:.4} rad"))
+                    }
+                    (Frame::Object(_, _, m), None) => (m.as_str(), String::new()),
+                };
+                return Err(a.site.err(
+                    K::Unsatisfiable,
+                    format!(
+                        "expected `{}` at heading {h:.4} rad (the angle {:.4} rad, {measure}{of_x}) at {t:.2} s, found it at {got:.4} rad, its lane's heading {lane:.4} rad (the plan's actors face along their lane; another yaw only from an actor's first phase)",
+                        a.actor, a.angle
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The world heading `a` asks for at `t` (rad) and, measured from another object, that
+/// object's heading then.
+fn wanted(p: &Planner<'_>, a: &HeadingAsk, t: f64) -> Result<(f64, Option<f64>), Error> {
+    Ok(match &a.frame {
+        Frame::World(base, _) => (base + a.angle, None),
+        Frame::Object(axis, x, _) => {
+            let hx = p.heading_of(x, t).ok_or_else(|| off_road(a))?;
+            (hx + axis + a.angle, Some(hx))
+        }
+    })
+}
+
+/// The error of an actor (or its reference) off the plan's roads, where no heading is known.
+fn off_road(a: &HeadingAsk) -> Error {
+    a.site.err(
+        K::Unsatisfiable,
+        format!(
+            "expected `{}` on the plan's roads at {:.2} s to measure its heading, found it off them",
+            a.actor, a.t0
+        ),
+    )
+}
+
+/// An actor driving against s (or a reference that does) is not checked: the plan's tracks
+/// of such an actor are on the roads' view against s.
+fn refuse_against(p: &Planner<'_>, a: &HeadingAsk) -> Result<(), Error> {
+    let x = match &a.frame {
+        Frame::Object(_, x, _) => Some(x.as_str()),
+        Frame::World(..) => None,
+    };
+    match std::iter::once(a.actor.as_str())
+        .chain(x)
+        .find(|n| p.entities[p.index[*n]].against)
+    {
+        Some(n) => Err(a.site.err(
+            K::Unsupported,
+            format!("expected actors driving in +s for a yaw measured in the world or from another object, found `{n}` driving against s (not planned yet)"),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// The heading offset of a `yaw` measure between two objects' axes (module doc), `None` for a
+/// measure that is not between two objects.
+pub(crate) fn object_axis(measure: &str) -> Option<f64> {
+    match measure {
+        "length_to_length" | "width_to_width" | "relative_to_reference" => Some(0.0),
+        "length_to_width" => Some(FRAC_PI_2),
+        "width_to_length" => Some(-FRAC_PI_2),
+        _ => None,
+    }
+}
