@@ -191,3 +191,27 @@ fn refused_on(name: &str, message: &str, at: &str) {
         "{e}"
     );
 }
+
+/// A moving actor with a heading in the world other than its lane's: crabwise where a
+/// non-physical movement is allowed, an error under must_be_physical (the scenario files).
+#[test]
+fn a_moving_actor_facing_north_moves_crabwise_only_where_non_physical_movement_is_allowed() {
+    let r = run("yaw_north_crabwise", 0, None);
+    let north = std::f64::consts::FRAC_PI_2;
+    for t in [0.0, 1.0, 2.0] {
+        let ego = r.at(t, "ego");
+        assert!(turn(ego.h, north) < H_TOL, "heading {} at {t} s", ego.h);
+        let x = 20.0 + 10.0 * t;
+        assert!(
+            (ego.x - x).abs() < 1e-6,
+            "x {} at {t} s, expected {x}",
+            ego.x
+        );
+        assert!((ego.y + 5.25).abs() < H_TOL, "y {} at {t} s", ego.y);
+    }
+    refused(
+        "err_yaw_north_moving",
+        "expected `ego` standing throughout the run with a yaw of 1.5708 rad relative to the road, or moving along its lane with physical_movement(prefer_non_physical) in every invocation of it, found it moving under the default physical_movement(must_be_physical)",
+        "10:13",
+    );
+}
