@@ -117,7 +117,8 @@ pub(crate) type Orientations = (Option<(f64, Site)>, Vec<HeadingAsk>);
 /// face it against its travel. A yaw measured in the world (`absolute`, `relative_to_north`)
 /// or from another object (`relative_to: x` with a measure between the two objects' axes) is a
 /// [`HeadingAsk`] of `target` over the phase from `t0` to `end`, checked once every phase is
-/// planned (`heading`); it needs a start the plan knows. Anything else is an error: another
+/// planned (`heading`); it needs a start the plan knows. So is a yaw relative to the road
+/// where `road_later` (a later phase of an actor whose first phase asks for such a heading). Anything else is an error: another
 /// yaw, a pitch or roll other than 0, a measure that does not fit `relative_to:` (or its
 /// absence). Returns the yaw and its place when the first phase asks for one other than
 /// `along` relative to the road, and the other yaws asked.
@@ -127,7 +128,7 @@ pub(crate) fn check_orientation(
     planned: f64,
     along: f64,
     first: bool,
-    target: &str,
+    (target, road_later): (&str, bool),
     (t0, end): (Option<f64>, Option<f64>),
     entity_of: impl Fn(&crate::resolve::Arg) -> Result<String, Error>,
 ) -> Result<Orientations, Error> {
@@ -151,7 +152,7 @@ pub(crate) fn check_orientation(
         };
         let by_name = by.as_ref().map_or("relative_to_road", |(v, _)| v.as_str());
         let frame = match (m.arg("relative_to"), by_name) {
-            (None, "relative_to_road") => None,
+            (None, "relative_to_road") => road_later.then_some(Frame::Road),
             (None, "absolute") => Some(Frame::World(0.0, "absolute")),
             (None, "relative_to_north") => Some(Frame::World(FRAC_PI_2, "relative to north (+y)")),
             (Some(x), b) => match object_axis(b) {
@@ -186,7 +187,7 @@ pub(crate) fn check_orientation(
                 let Some(t0) = t0 else {
                     return Err(e.site.err(
                         K::Unsupported,
-                        format!("expected a phase start the plan knows for {name}(…) measured in the world or from another object, found one at run time (after an until or a wait: the plan knows no heading there; not run yet)"),
+                        format!("expected a phase start the plan knows for {name}(…) {}, found one at run time (after an until or a wait: the plan knows no heading there; not run yet)", if matches!(frame, Frame::Road) { "relative to the road after a first phase's heading measured in the world or from another object" } else { "measured in the world or from another object" }),
                     ));
                 };
                 asks.push(HeadingAsk {

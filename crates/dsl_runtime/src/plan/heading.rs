@@ -41,6 +41,10 @@ pub(crate) enum Frame {
     /// Another object's heading plus this (its axis), the object's path, and the measure's
     /// name.
     Object(f64, String, String),
+    /// The road's heading where the actor is (a yaw relative to the road in a later phase of
+    /// an actor whose first phase asks for a heading measured so, whose yaw relative to the
+    /// road is known only once the plan is made).
+    Road,
 }
 
 /// A yaw in a [`Frame`] asked of an actor over a phase, checked once the plan is made.
@@ -138,6 +142,7 @@ pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result
                 let lane = p.road_heading(&a.actor, t).ok_or_else(off_road)?;
                 let (measure, of_x) = match (&a.frame, hx) {
                     (Frame::World(_, m), _) => (*m, String::new()),
+                    (Frame::Road, _) => ("relative to the road", String::new()),
                     (Frame::Object(_, x, m), Some(hx)) => {
                         (m.as_str(), format!(", `{x}` heading {hx:.4} rad"))
                     }
@@ -161,6 +166,10 @@ pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result
 fn wanted(p: &Planner<'_>, a: &HeadingAsk, t: f64) -> Result<(f64, Option<f64>), Error> {
     Ok(match &a.frame {
         Frame::World(base, _) => (base + a.angle, None),
+        Frame::Road => (
+            p.road_heading(&a.actor, t).ok_or_else(|| off_road(a))? + a.angle,
+            None,
+        ),
         Frame::Object(axis, x, _) => {
             let hx = p.heading_of(x, t).ok_or_else(|| off_road(a))?;
             (hx + axis + a.angle, Some(hx))
@@ -184,7 +193,7 @@ fn off_road(a: &HeadingAsk) -> Error {
 fn refuse_against(p: &Planner<'_>, a: &HeadingAsk) -> Result<(), Error> {
     let x = match &a.frame {
         Frame::Object(_, x, _) => Some(x.as_str()),
-        Frame::World(..) => None,
+        Frame::World(..) | Frame::Road => None,
     };
     match std::iter::once(a.actor.as_str())
         .chain(x)

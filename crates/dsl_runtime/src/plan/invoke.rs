@@ -144,15 +144,27 @@ impl Planner<'_> {
             // The yaw relative to the road's s-axis of an actor along its lane (§8.9.9).
             let along = if self.entities[e].against { PI } else { 0.0 };
             let planned = self.entities[e].yaw.as_ref().map_or(along, |(y, _)| *y);
+            // A later phase's yaw relative to the road is checked once the plan is made where
+            // the first phase's heading is (`heading`).
+            let road_later = !first
+                && self
+                    .heading_asks
+                    .iter()
+                    .any(|a| a.first && a.actor == *target);
             let end_known = match (t0, end, len) {
                 (_, Some(b), _) => Some(b),
                 (Some(a), None, Some(l)) => Some(a + l),
                 _ => None,
             };
-            let (yaw, asks) =
-                check_orientation(mods, planned, along, first, target, (t0, end_known), |x| {
-                    self.entity_of(x)
-                })?;
+            let (yaw, asks) = check_orientation(
+                mods,
+                planned,
+                along,
+                first,
+                (target, road_later),
+                (t0, end_known),
+                |x| self.entity_of(x),
+            )?;
             if let Some(y) = yaw {
                 self.entities[e].yaw = Some(y);
             }

@@ -158,6 +158,11 @@ fn yaws_measured_in_the_world_or_from_another_object_that_do_not_hold_are_errors
         "expected `car` at heading 0.6437 rad (the angle 0.0000 rad, length_to_length from `ego`, `ego` heading 0.6437 rad) at 15.00 s, found it at 0.6651 rad, its lane's heading 0.6651 rad",
         "19:17",
     );
+    refused_on(
+        "err_yaw_road_after_north",
+        "expected `npc` at heading 0.5000 rad (the angle 0.0000 rad, relative to the road) at 2.00 s, found it at 1.5708 rad, its lane's heading 0.5000 rad",
+        "14:17",
+    );
     refused(
         "err_yaw_relative_measure",
         "expected measure_by: length_to_length, length_to_width, width_to_length or width_to_width beside relative_to: (the angle between the two objects' axes), found measure_by: relative_to_road, which measures from no object",
