@@ -102,9 +102,14 @@ pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result
     {
         refuse_against(p, a)?;
         let e = p.index[a.actor.as_str()];
+        // Where the ask holds first: its yaw relative to the road is the actor's throughout.
+        let t = match (a.at, a.end) {
+            (At::End, Some(te)) => te,
+            _ => a.t0,
+        };
         if p.entities[e].yaw.is_none() {
-            let lane = p.road_heading(&a.actor, a.t0).ok_or_else(|| off_road(a))?;
-            let rel = opendrive::normalize_angle(wanted(p, a, a.t0)?.0 - lane);
+            let lane = p.road_heading(&a.actor, t).ok_or_else(|| off_road(a))?;
+            let rel = opendrive::normalize_angle(wanted(p, a, t)?.0 - lane);
             if rel.abs() > SAME_ANGLE {
                 p.entities[e].yaw = Some((rel, a.site.clone()));
             }
