@@ -156,7 +156,7 @@ fn yaws_measured_in_the_world_or_from_another_object_that_do_not_hold_are_errors
     refused_on(
         "err_yaw_relative_end",
         "expected `car` at heading 0.6437 rad (the angle 0.0000 rad, length_to_length from `ego`, `ego` heading 0.6437 rad) at 15.00 s, found it at 0.6651 rad, its lane's heading 0.6651 rad",
-        "19:17",
+        "23:21",
     );
     refused_on(
         "err_yaw_road_after_north",
@@ -176,7 +176,7 @@ fn yaws_measured_in_the_world_or_from_another_object_that_do_not_hold_are_errors
     refused(
         "err_yaw_north_runtime",
         "expected a phase start the plan knows for yaw(…) measured in the world or from another object, found one at run time",
-        "19:17",
+        "23:21",
     );
 }
 
