@@ -176,7 +176,7 @@ fn yaws_measured_in_the_world_or_from_another_object_that_do_not_hold_are_errors
     refused(
         "err_yaw_north_runtime",
         "expected a phase start the plan knows for yaw(…) measured in the world or from another object, found one at run time",
-        "23:21",
+        "19:17",
     );
 }
 
