@@ -6,7 +6,8 @@ use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{At, Kind, ModKind, Modifier, Phase, Val};
 use crate::track::Track;
 
-use super::heading::{object_axis, Frame, HeadingAsk, SAME_ANGLE};
+use super::heading::{object_axis, SAME_ANGLE};
+use super::types::{Frame, HeadingAsk};
 use std::f64::consts::FRAC_PI_2;
 
 /// Checks `keep_lane()`, `keep_speed()` and `physical_movement(must_be_physical)` against the

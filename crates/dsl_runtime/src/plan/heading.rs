@@ -24,49 +24,14 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use crate::error::{Error, ErrorKind as K, Site};
+use crate::error::{Error, ErrorKind as K};
 use crate::resolve::At;
 
 use super::planner::Planner;
+use super::types::{Frame, HeadingAsk};
 
 /// Angles within this of each other are the same (rad): a thousandth of a degree.
 pub(crate) const SAME_ANGLE: f64 = 1e-3 * std::f64::consts::PI / 180.0;
-
-/// What a yaw is measured from.
-#[derive(Debug, Clone)]
-pub(crate) enum Frame {
-    /// The world's heading plus this (0 `absolute`, π/2 `relative_to_north`), and the measure's
-    /// name.
-    World(f64, &'static str),
-    /// Another object's heading plus this (its axis), the object's path, and the measure's
-    /// name.
-    Object(f64, String, String),
-    /// The road's heading where the actor is (a yaw relative to the road in a later phase of
-    /// an actor whose first phase asks for a heading measured so, whose yaw relative to the
-    /// road is known only once the plan is made).
-    Road,
-}
-
-/// A yaw in a [`Frame`] asked of an actor over a phase, checked once the plan is made.
-#[derive(Debug, Clone)]
-pub(crate) struct HeadingAsk {
-    /// The actor.
-    pub actor: String,
-    /// What ψ is measured from.
-    pub frame: Frame,
-    /// ψ (rad).
-    pub angle: f64,
-    /// When it holds.
-    pub at: At,
-    /// The phase's start (s).
-    pub t0: f64,
-    /// The phase's end, if the plan knows it (s).
-    pub end: Option<f64>,
-    /// The phase is the actor's first.
-    pub first: bool,
-    /// The angle's place.
-    pub site: Site,
-}
 
 impl Planner<'_> {
     /// The heading (rad) of the road's s-axis where `name` is at `t`, on the plan's roads

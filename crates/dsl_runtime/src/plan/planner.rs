@@ -80,7 +80,7 @@ pub(crate) struct Planner<'a> {
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,
     /// Yaws measured in the world or from another object (`heading`), checked once every
     /// phase is planned.
-    pub heading_asks: Vec<super::heading::HeadingAsk>,
+    pub heading_asks: Vec<super::types::HeadingAsk>,
     /// The side drawn for each `change_lane(…)` without one (by the modifier's span).
     pub sides: RefCell<HashMap<String, bool>>,
     /// The run's draws after the resolver's.

@@ -5,7 +5,7 @@
 use scenario::{ConditionGroup, PrivateAction, Trigger};
 
 use crate::error::Site;
-use crate::resolve::ActorData;
+use crate::resolve::{ActorData, At};
 use crate::track::Track;
 use crate::trigger::sim_time;
 
@@ -218,4 +218,41 @@ pub(crate) struct Settings {
     pub dt: f64,
     /// A phase may have no end (the run is bounded from outside).
     pub open_end: bool,
+}
+
+/// What a yaw is measured from.
+#[derive(Debug, Clone)]
+pub(crate) enum Frame {
+    /// The world's heading plus this (0 `absolute`, π/2 `relative_to_north`), and the measure's
+    /// name.
+    World(f64, &'static str),
+    /// Another object's heading plus this (its axis), the object's path, and the measure's
+    /// name.
+    Object(f64, String, String),
+    /// The road's heading where the actor is (a yaw relative to the road in a later phase of
+    /// an actor whose first phase asks for a heading measured so, whose yaw relative to the
+    /// road is known only once the plan is made).
+    Road,
+}
+
+/// A yaw in a [`Frame`] asked of an actor over a phase, checked once the plan is made
+/// (`heading`).
+#[derive(Debug, Clone)]
+pub(crate) struct HeadingAsk {
+    /// The actor.
+    pub actor: String,
+    /// What ψ is measured from.
+    pub frame: Frame,
+    /// ψ (rad).
+    pub angle: f64,
+    /// When it holds.
+    pub at: At,
+    /// The phase's start (s).
+    pub t0: f64,
+    /// The phase's end, if the plan knows it (s).
+    pub end: Option<f64>,
+    /// The phase is the actor's first.
+    pub first: bool,
+    /// The angle's place.
+    pub site: Site,
 }
