@@ -263,9 +263,13 @@ impl Planner<'_> {
 }
 
 /// 1 for an invocation with a `position(…, at: end)`, a `lateral(…, at: end)` beside another
-/// actor, or a speed at the end relative to another actor (`speed(same_as/faster_than/
+/// actor, a speed at the end relative to another actor (`speed(same_as/faster_than/
 /// slower_than: x, at: end)`, `change_speed` so: read where the plan has that actor at the
-/// end), else 0: the order in which a parallel plans its members.
+/// end), or an acceleration relative to another actor (`acceleration(…, same_as/faster_than/
+/// slower_than: x)`, any `at`: x's pieces of planned acceleration over the phase; planned
+/// before x, x read as keeping its speed and the actor kept its own, issue 27), else 0: the
+/// order in which a parallel plans its members (a stable sort: members of one key keep their
+/// written order).
 fn relative_end(p: &Phase) -> u8 {
     let any_of =
         |m: &crate::resolve::Modifier, keys: &[&str]| keys.iter().any(|k| m.arg(k).is_some());
@@ -276,6 +280,7 @@ fn relative_end(p: &Phase) -> u8 {
             (m.at == At::End || m.kind == ModKind::ChangeSpeed)
                 && any_of(m, &["same_as", "faster_than", "slower_than"])
         }
+        ModKind::Acceleration => any_of(m, &["same_as", "faster_than", "slower_than"]),
         _ => false,
     };
     matches!(&p.kind, Kind::Invoke(inv) if inv.modifiers.iter().any(relative)) as u8

@@ -292,20 +292,28 @@ fn acceleration_relative_to_another_actor_follows_its_planned_acceleration() {
 
 /// acceleration_relative_changing.osc's comment, by hand: ego gets npc's -3 m/s² to 5 s,
 /// then 0, from the engine's RelativeAccelerationAction.
-#[test]
-fn acceleration_the_same_as_one_that_changes_in_the_phase_follows_it() {
-    let r = run("acceleration_relative_changing", 0, None);
-    for (t, ego, npc) in [
-        (3.0, 10.0, 16.0),
-        (4.0, 7.0, 13.0),
-        (5.0, 4.0, 10.0),
-        (6.0, 4.0, 10.0),
-        (7.0, 4.0, 10.0),
-        (8.0, 4.0, 10.0),
-    ] {
+/// Asserts ego's and npc's speeds at each (t, ego's, npc's).
+fn ego_and_npc_speeds(r: &crate::support::Run, at: &[(f64, f64, f64)]) {
+    for &(t, ego, npc) in at {
         close(r.at(t, "ego").speed, ego, &format!("ego v({t})"));
         close(r.at(t, "npc").speed, npc, &format!("npc v({t})"));
     }
+}
+
+#[test]
+fn acceleration_the_same_as_one_that_changes_in_the_phase_follows_it() {
+    let r = run("acceleration_relative_changing", 0, None);
+    ego_and_npc_speeds(
+        &r,
+        &[
+            (3.0, 10.0, 16.0),
+            (4.0, 7.0, 13.0),
+            (5.0, 4.0, 10.0),
+            (6.0, 4.0, 10.0),
+            (7.0, 4.0, 10.0),
+            (8.0, 4.0, 10.0),
+        ],
+    );
     let v = |t: f64| match t {
         t if t <= 3.0 => 10.0,
         t if t <= 5.0 => 10.0 - 3.0 * (t - 3.0),
@@ -316,5 +324,35 @@ fn acceleration_the_same_as_one_that_changes_in_the_phase_follows_it() {
         r.at(7.0, "ego").s,
         102.0 + ramp_lead(-3.0, 2.0),
         "s(7) by hand",
+    );
+}
+
+/// acceleration_relative_first_phase.osc's comment, by hand: the same in ego's first phase,
+/// ego written before npc (issue 27: it kept 10 m/s).
+#[test]
+fn acceleration_the_same_as_one_that_changes_in_the_first_phase_follows_it() {
+    let r = run("acceleration_relative_first_phase", 0, None);
+    ego_and_npc_speeds(
+        &r,
+        &[
+            (0.0, 10.0, 16.0),
+            (1.0, 7.0, 13.0),
+            (2.0, 4.0, 10.0),
+            (3.0, 4.0, 10.0),
+            (4.0, 4.0, 10.0),
+            (5.0, 4.0, 10.0),
+        ],
+    );
+    let v = |t: f64| if t <= 2.0 { 10.0 - 3.0 * t } else { 4.0 };
+    close(r.at(4.0, "ego").s, 50.0 + stepped(v, 0.0, 4.0), "s(4)");
+    close(
+        r.at(4.0, "ego").s,
+        72.0 + ramp_lead(-3.0, 2.0),
+        "s(4) by hand",
+    );
+    close(
+        r.at(5.0, "ego").s,
+        76.0 + ramp_lead(-3.0, 2.0),
+        "s(5) by hand",
     );
 }
