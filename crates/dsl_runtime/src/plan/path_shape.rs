@@ -4,7 +4,7 @@
 //!
 //! | interpolation | Shape |
 //! | --- | --- |
-//! | `straight_line` | Polyline through the points; the headings are the segments' |
+//! | `straight_line` | Polyline through the points; the headings are the segments' (`change_position`'s line ends facing along the target's lane: `line_ending_along`) |
 //! | `smooth` | the cubic Hermite curve through the points with their headings, as a Nurbs of order 4 |
 //!
 //! The standard says only that `smooth` is "a smooth curve" through the points. oscsim takes
@@ -246,6 +246,36 @@ pub(crate) fn polyline_through(
         })
         .collect();
     follow(name, Shape::Polyline(vertices), times.is_some(), mode)
+}
+
+/// A FollowTrajectoryAction along the straight line from `from` to `to`'s point at the speed
+/// the actor has, facing along the line, that leaves the actor facing `to`'s heading where it
+/// ends: a six-dimensional Polyline (§6.9, every vertex's Position states a heading) of the
+/// line's two ends at the line's heading and a last vertex at the end point again at `to`'s
+/// heading, which adds no length (coincident vertices), so the heading turns only at the
+/// line's end (`change_position`'s straight line ends along the target's lane: the default
+/// controller "maintains lane offset", §7.5.1, and keeps the heading it is handed).
+pub(crate) fn line_ending_along(
+    name: &str,
+    (x0, y0): (f64, f64),
+    (x1, y1, h1): Pose2,
+    site: &Site,
+) -> PrivateAction {
+    let along = (y1 - y0).atan2(x1 - x0);
+    let oriented = |x, y, h| PositionKind::World {
+        x,
+        y,
+        z: None,
+        h: Some(h),
+        p: None,
+        r: None,
+    };
+    let kinds = vec![
+        oriented(x0, y0, along),
+        oriented(x1, y1, along),
+        oriented(x1, y1, h1),
+    ];
+    polyline_through(name, kinds, None, FollowingMode::Position, site)
 }
 
 /// A FollowTrajectoryAction along the smooth curve through `points` (two or more, consecutive

@@ -7,7 +7,7 @@
 //! | `assign_position(position \| route_point \| odr_point)` | TeleportAction to the lane position of the place on the plan road | at once |
 //! | `assign_orientation(target)` | TeleportAction to where the actor is, the orientation absolute (world yaw, pitch, roll); the actor must stand | at once |
 //! | `change_position(target, on_road_network: true)` | along its lane at its speed to the target's s, into the target's lane (LaneChangeAction) or offset (LaneOffsetAction), sinusoidal over exactly that time | when the actor is there |
-//! | `change_position(target, interpolation)` | FollowTrajectoryAction along the straight line from where the actor is to the target, or (`smooth`) the cubic Hermite curve from the actor's heading along its lane into the lane's heading at the target (`path_shape`), at its speed (after a run-time condition a straight line whose first vertex is a RelativeObjectPosition at the actor, which the engine resolves when the action starts, or the curve from the actor's pose then, oscsim's SmoothFromActor shape) | when the actor is there |
+//! | `change_position(target, interpolation)` | FollowTrajectoryAction along the straight line from where the actor is to the target (at a known start a six-dimensional Polyline that leaves the actor facing along the target's lane where it ends, `path_shape::line_ending_along`), or (`smooth`) the cubic Hermite curve from the actor's heading along its lane into the lane's heading at the target (`path_shape`), at its speed (after a run-time condition a straight line whose first vertex is a RelativeObjectPosition at the actor, which the engine resolves when the action starts, or the curve from the actor's pose then, oscsim's SmoothFromActor shape) | when the actor is there |
 //!
 //! Exactly one of the three arguments is given (none is a missing argument, two contradict).
 //! The place must be in a driving lane of the plan road (the road the planner moves actors on):
@@ -310,6 +310,11 @@ impl Planner<'_> {
             n.clone(),
             if smooth && length > 0.0 {
                 path_shape::smooth(&n, &[from, to], None, FollowingMode::Position, &place.site)
+            } else if length > 0.0 {
+                // Facing along the line, then along the target's lane where it ends (issue
+                // 27: the default controller keeps the heading it is handed, so a line's
+                // heading kept would drive the actor on crabwise along its lane).
+                path_shape::line_ending_along(&n, (x0, y0), to, &place.site)
             } else {
                 path_shape::polyline(
                     &n,

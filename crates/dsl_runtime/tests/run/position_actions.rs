@@ -83,6 +83,22 @@ fn change_position_moves_along_a_straight_line_and_ends_there() {
     assert!(s.abs() < 1e-9 && (e - 2.5).abs() < 1e-9, "{s} {e}");
 }
 
+/// change_position_then_lane.osc's comment, by hand: the line's heading atan(7/24) while on
+/// it, the lane's (0 on the straight road) where it ends and after (issue 27: it kept the
+/// line's, driving on crabwise).
+#[test]
+fn after_a_straight_change_position_the_actor_faces_along_its_lane() {
+    let r = run("actions/change_position_then_lane", 0, None);
+    close(r.at(1.25, "ego").h, (7.0f64 / 24.0).atan(), "h(1.25)");
+    for (t, x) in [(2.5, 54.0), (3.0, 59.0), (3.5, 64.0)] {
+        let ego = r.at(t, "ego");
+        close(ego.x, x, &format!("x({t})"));
+        close(ego.y, -1.75, &format!("y({t})"));
+        close(ego.h, 0.0, &format!("h({t})"));
+        assert_eq!(ego.lane, -1, "lane({t})");
+    }
+}
+
 #[test]
 fn follow_trajectory_reaches_each_point_at_its_time_stamp() {
     let r = run("actions/follow_trajectory", 0, None);
