@@ -187,6 +187,15 @@ fn random_traffic_without_room_on_the_road_is_an_error() {
 }
 
 #[test]
+fn a_later_phase_of_random_traffic_is_an_error() {
+    crate::along::refused(
+        "err_random_traffic_later_phase",
+        "expected the drive of random traffic `g` to be its only phase, starting with the run (its members are created then), found another phase of it",
+        "8:9",
+    );
+}
+
+#[test]
 fn a_modifier_other_than_speed_on_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_modifier",
