@@ -25,7 +25,7 @@
 use std::f64::consts::FRAC_PI_2;
 
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::At;
+use crate::resolve::{ActorKind, At};
 
 use super::planner::Planner;
 use super::types::{Frame, HeadingAsk};
@@ -43,9 +43,13 @@ impl Planner<'_> {
     }
 
     /// The world heading of `name` at `t` as planned: its lane's, turned by its yaw relative to
-    /// the road (its first phase's, else 0).
+    /// the road (its first phase's, else 0); a stationary object's, its location's yaw.
     fn heading_of(&self, name: &str, t: f64) -> Option<f64> {
         let e = &self.entities[self.index[name]];
+        // A stationary object stands at its location's yaw (§8.7.3.1.1), off any lane.
+        if let ActorKind::Stationary(l) = &e.data.kind {
+            return Some(l.orientation[0]);
+        }
         Some(self.road_heading(name, t)? + e.yaw.as_ref().map_or(0.0, |(y, _)| *y))
     }
 }

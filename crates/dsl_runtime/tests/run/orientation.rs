@@ -120,6 +120,7 @@ fn yaws_measured_in_the_world_or_from_another_object_are_the_actors_headings() {
             ("npc", FRAC_PI_2),
             ("bus", FRAC_PI_4),
             ("truck", -FRAC_PI_2),
+            ("post", std::f64::consts::FRAC_PI_6),
         ] {
             let got = r.at(t, who).h;
             assert!(
