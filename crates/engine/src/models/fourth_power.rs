@@ -48,8 +48,9 @@ fn exact(x: Real) -> Option<Real> {
     // x = m·2^(e − 1075), m in [2^52, 2^53).
     let m = (bits & FRACTION) | (1 << 52);
     let m2 = u128::from(m) * u128::from(m); // < 2^106
-    let (h, l) = ((m2 >> 64) as u64, m2 as u64); // m² = h·2^64 + l, h < 2^42
-                                                 // m⁴ = h²·2^128 + 2hl·2^64 + l²: its top 128 bits (bits 128 and up), exactly.
+                                            // m² = h·2^64 + l, h < 2^42; m⁴ = h²·2^128 + 2hl·2^64 + l²: its top 128 bits (bits 128
+                                            // and up), exactly.
+    let (h, l) = ((m2 >> 64) as u64, m2 as u64);
     let low = u128::from(l) * u128::from(l);
     let mid = (u128::from(h) * u128::from(l)) << 1; // < 2^107
     let (_, carry) = low.overflowing_add(mid << 64);
