@@ -426,6 +426,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         });
     }
     against::check_references(&leaves, &to_place, &p.index)?;
+    p.check_random_traffic_unreferenced(&leaves)?;
     let entity = |path: &str| p.index.contains_key(path).then(|| path.to_string());
     let mut starts = place(road, p.against_road.as_ref(), &to_place, &entity)?;
     p.place_random_traffic(&leaves, &mut starts)?;

@@ -136,6 +136,46 @@ impl Planner<'_> {
         })
     }
 
+    /// Checks that no invocation relates an actor to a member of random traffic (or to the
+    /// group): the plan places the members from the seed only after every other actor, and
+    /// the engine's driver model moves them, so the plan knows neither where a member is nor
+    /// how it moves. A relation to one (`position(d, behind: g.vehicles[0])`, `speed(same_as:
+    /// …)`, a gap to it) would read a placeholder: an error at the argument. Conditions that
+    /// measure a member at run time (`until ego.space_gap(g.vehicles[0]) < 10m`) are the
+    /// engine's and run.
+    pub(super) fn check_random_traffic_unreferenced(&self, leaves: &[&Phase]) -> Result<(), Error> {
+        if self.random.is_empty() {
+            return Ok(());
+        }
+        for leaf in leaves {
+            let Kind::Invoke(inv) = &leaf.kind else {
+                continue;
+            };
+            let args = inv.args.iter().map(|(n, a)| (None, n, a)).chain(
+                inv.modifiers
+                    .iter()
+                    .flat_map(|m| m.args.iter().map(move |(n, a)| (Some(m), n, a))),
+            );
+            for (m, key, a) in args {
+                let Some(x) = a.path.as_deref() else {
+                    continue;
+                };
+                if x == inv.actor || !(self.random_member(x) || self.random.contains_key(x)) {
+                    continue;
+                }
+                let what = m.map_or_else(
+                    || format!("{}(…)", inv.action),
+                    |m| format!("{}(…)", m.name),
+                );
+                return Err(a.site.err(
+                    K::Unsupported,
+                    format!("expected `{key}:` of {what} to name an actor the plan places and moves, found `{x}` of random traffic (placed from the seed after every other actor and driven by the engine's driver model: the plan knows neither its place nor its motion; measure it at run time in a condition instead)"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// Places the members of every random traffic group among `starts` (the other actors
     /// placed), from the drive that is their first phase among `leaves`.
     pub(super) fn place_random_traffic(

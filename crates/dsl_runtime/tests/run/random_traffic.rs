@@ -270,3 +270,12 @@ fn random_traffic_never_overlaps_while_it_drives_and_changes_lanes() {
     // members round slower ones and ego; 38 lane crossings over the four runs when written).
     assert!(changes > 0, "no member changed lane");
 }
+
+#[test]
+fn an_actor_placed_relative_to_a_member_of_random_traffic_is_an_error() {
+    crate::along::refused(
+        "err_random_traffic_reference",
+        "expected `behind:` of position(…) to name an actor the plan places and moves, found `g.vehicles[0]` of random traffic",
+        "15:35",
+    );
+}
