@@ -29,6 +29,8 @@
 //! `change_position` move the formation as a whole: member 0 to the place, each other member to
 //! the place shifted by its offset from member 0 at the action's start (`formation_place`);
 //! after a run-time condition the offset the plan last knows, which the engine checks then.
+//! For a group driving against s the offsets are the view's (along the direction of travel and
+//! to the drivers' left), and the check carries the direction (`Planner::chain`).
 
 use std::f64::consts::PI;
 
@@ -644,6 +646,9 @@ impl Planner<'_> {
                 POSITION_TOLERANCE,
             )),
             beside: Some((lead.to_string(), dt, LATERAL_TOLERANCE)),
+            // Against s the offset is along the direction of travel and to the drivers' left
+            // (the view's u and t): the engine measures it so with the direction.
+            roads: self.chain(),
             ..StateCheck::default()
         };
         Ok((Box::new(check), (ds, dt)))

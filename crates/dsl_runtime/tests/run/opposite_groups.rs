@@ -6,7 +6,7 @@
 use std::f64::consts::PI;
 
 use crate::opposite::{error_on, wrap};
-use crate::support::run_on;
+use crate::support::{phases_are, run_on, Run};
 
 /// Positions on straight roads: the engine integrates speed exactly; float round-off only.
 const S_TOL: f64 = 1e-6;
@@ -123,6 +123,78 @@ fn a_groups_space_gap_against_s_is_a_chain_along_its_direction_of_travel() {
     assert!((r.at(30.0, "lead").x - 450.0).abs() < S_TOL);
 }
 
+/// g.assign_position against s: each member put at its offset from member 0 in the direction of
+/// travel, along it and to the drivers' left (opposite_group_assign_position.osc's comment).
+#[test]
+fn a_groups_assign_position_against_s_keeps_the_offsets_in_the_direction_of_travel() {
+    let r = run_on("opposite_group_assign_position", "straight");
+    // (x at 1 s, x at 1.05 s, x at 2 s, lane, y).
+    let expected = [
+        (888.0, 500.0, 488.6, 2, 5.25),
+        (888.0, 500.0, 488.6, 1, 1.75),
+        (903.0, 515.0, 503.6, 2, 5.25),
+    ];
+    for (i, (before, at, after, lane, y)) in expected.into_iter().enumerate() {
+        assert!((r.at(1.0, &member(i)).x - before).abs() < S_TOL);
+        for (t, x) in [(1.05, at), (2.0, after)] {
+            driving_against_s_at(&r, (t, i), lane, (x, y));
+        }
+    }
+    phases_are(&r, &[("do.1", 1.0, 1.0), ("do.2", 1.0, 2.0)]);
+}
+
+/// Member `i` at time `t` in `lane` at (x, y) on straight.xodr, heading pi.
+fn driving_against_s_at(r: &Run, (t, i): (f64, usize), lane: i32, (x, y): (f64, f64)) {
+    let m = r.at(t, &member(i));
+    assert_eq!(m.lane, lane, "{m:?}");
+    assert!((m.x - x).abs() < S_TOL && (m.y - y).abs() < S_TOL, "{m:?}");
+    assert!(wrap(m.h - PI).abs() < H_TOL, "{m:?}");
+}
+
+/// g.assign_position against s after a run-time condition: the offsets the plan last knows,
+/// checked by the engine in the direction of travel (opposite_group_assign_position_runtime.osc).
+#[test]
+fn a_groups_assign_position_against_s_after_a_run_time_condition_keeps_the_offsets() {
+    let r = run_on("opposite_group_assign_position_runtime", "straight");
+    for (i, (at_until, jumped, after)) in [(833.0, 700.0, 680.0), (848.0, 715.0, 695.0)]
+        .into_iter()
+        .enumerate()
+    {
+        assert!((r.at(3.35, &member(i)).x - at_until).abs() < S_TOL);
+        for (t, x) in [(3.4, jumped), (4.4, after)] {
+            driving_against_s_at(&r, (t, i), 1, (x, 1.75));
+        }
+    }
+}
+
+/// g.change_position against s: parallel lines to the target and to the target moved by each
+/// member's offset in the direction of travel (opposite_group_change_position.osc's comment).
+#[test]
+fn a_groups_change_position_against_s_moves_each_member_along_its_own_line() {
+    let r = run_on("opposite_group_change_position", "straight");
+    // (x at 0 s, mid-point x at 1.25 s, x at 2.5 s, x at 3 s).
+    for (i, (x0, mid, x1, x3)) in [(900.0, 894.0, 888.0, 885.5), (915.0, 909.0, 903.0, 900.5)]
+        .into_iter()
+        .enumerate()
+    {
+        let m = r.at(0.0, &member(i));
+        assert!(
+            (m.x - x0).abs() < S_TOL && (m.y - 5.25).abs() < S_TOL && m.lane == 2,
+            "{m:?}"
+        );
+        let m = r.at(1.25, &member(i));
+        assert!(
+            (m.x - mid).abs() < S_TOL && (m.y - 3.5).abs() < S_TOL,
+            "{m:?}"
+        );
+        for (t, x) in [(2.5, x1), (3.0, x3)] {
+            driving_against_s_at(&r, (t, i), 1, (x, 1.75));
+        }
+    }
+    let (s, e) = r.phase("do.0");
+    assert!(s.abs() < T_TOL && (e - 2.5).abs() < T_TOL, "[{s}, {e}]");
+}
+
 #[test]
 fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
     for (name, text, place) in [
@@ -133,8 +205,8 @@ fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
         ),
         (
             "err_opposite_group_position",
-            "expected a group action that runs for group `g`, which drives against s, found assign_position(…) (not run yet against s",
-            "15:9",
+            "expected a group action that runs for group `g`, which drives against s, found assign_orientation(…) (not run yet against s",
+            "17:9",
         ),
     ] {
         let e = error_on(name, "straight");
