@@ -34,6 +34,10 @@ impl Planner<'_> {
         mods: &[Modifier],
         plan: impl FnOnce(&mut Self) -> Result<R, Error>,
     ) -> Result<R, Error> {
+        // Random traffic's members drive both ways by the engine's model: no plan of its own.
+        if self.random.contains_key(&inv.actor) {
+            return plan(self);
+        }
         // A group drives its members' direction (one, `against::check_references`).
         let against = match self.groups.get(&inv.actor) {
             Some(members) => members.first().map(String::as_str),

@@ -429,10 +429,15 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     p.check_random_traffic_unreferenced(&leaves)?;
     let entity = |path: &str| p.index.contains_key(path).then(|| path.to_string());
     let mut starts = place(road, p.against_road.as_ref(), &to_place, &entity)?;
-    p.place_random_traffic(&leaves, &mut starts)?;
+    let placed_against: HashSet<&str> = to_place
+        .iter()
+        .filter(|q| q.against)
+        .map(|q| q.name.as_str())
+        .collect();
+    let oncoming = p.place_random_traffic(&leaves, &mut starts, &placed_against)?;
     for (e, q) in p.entities.iter_mut().zip(&to_place) {
         let mut s = starts[&e.name];
-        e.against = q.against;
+        e.against = q.against || oncoming.contains(&e.name);
         // Placed by its crossing (no lane or position of its own): off its lane's centre
         // where the walked part starts there.
         if let Some((lane, at, offset)) = crossing_offsets.get(&e.name) {

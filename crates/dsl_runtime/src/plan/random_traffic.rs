@@ -12,14 +12,21 @@
 //! - **Desired speed** v0: the drive's `speed(v)`, else the planner's 50 km/h.
 //! - **Start speeds**: each member's drawn uniformly in [0.9·v0, 1.1·v0] from the run's seed
 //!   (`Options::seed`; [`START_SPREAD`]).
-//! - **Where**: the plan's driving lanes in +s (right-hand traffic; the lanes `PlanRoad::
-//!   driving_lanes` gives, sampled every [`LANE_STEP`] m), each member's box wholly within a
-//!   stretch of one lane. Between any two vehicles in a lane — member and member, member and
-//!   another actor of the scenario — at least the IDM's desired gap at a standstill plus one
+//! - **Where**: the plan's driving lanes of both directions (OpenDRIVE 1.8 §11.2, right-hand
+//!   traffic: the left side's lanes driven in −s; noise on a two-way road is oncoming traffic
+//!   too): the lanes `PlanRoad::driving_lanes` gives on the plan road and on its view against s
+//!   (`PlanRoad::against`, s then the distance u along the direction of travel), sampled every
+//!   [`LANE_STEP`] m, each member's box wholly within a stretch of one lane. A member placed in
+//!   a lane driven in −s drives against s (lowered with its lane's driving direction; the
+//!   engine's `mobil` model follows its leader in that direction and changes lanes only to a
+//!   lane driven the same way). `along(r)` on the route the runtime chooses (the plan's roads,
+//!   a route in +s) keeps the members to +s, as does a plan whose left lanes do not run on over
+//!   its roads. Between any two vehicles in a lane, in the lane's own direction — member and
+//!   member, member and another actor of the scenario, an oncoming one included — at least the IDM's desired gap at a standstill plus one
 //!   headway at the fastest start speed on the road, s0 + v_max·T (bumper to bumper, s0 = 2 m,
 //!   T = 1.6 s, the engine's IDM defaults). The members are dealt to the free stretches one at
 //!   a time, a stretch drawn with a weight equal to the room left in it (so traffic spreads
-//!   evenly over the road), then each stretch's members are spread uniformly over its slack:
+//!   evenly over the road, and the directions share it by their free lane length), then each stretch's members are spread uniformly over its slack:
 //!   n draws in [0, F] sorted, F the stretch's length less the members' lengths and gaps
 //!   (each arrangement at the minimum gap equally likely). No stretch with room left for a
 //!   member is an error at the group naming how many fit.
@@ -34,13 +41,14 @@
 //! the plan's roads, which the members drive; the resolver refuses offsets on such a route);
 //! the others constrain a planned motion these members do not have (an error at the modifier).
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use super::car_following::model_controller;
 use super::place::{Start, DEFAULT_SPEED};
 use super::planner::Planner;
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Action, Along, Arg, Invoke, Kind, ModKind, Modifier, Phase, Route};
+use crate::road::PlanRoad;
 
 /// The start of a member before [`Planner::place_random_traffic`] places it.
 pub(super) const UNPLACED: Start = Start {
@@ -62,8 +70,10 @@ const LANE_STEP: f64 = 1.0;
 /// The ObjectController's name.
 const CONTROLLER: &str = "random_traffic";
 
-/// A free stretch of a lane: lane, from s, to s, and the members dealt to it.
+/// A free stretch of a lane: its direction, lane, from s, to s (against s: the distance u
+/// along the direction of travel), and the members dealt to it.
 struct Stretch {
+    against: bool,
     lane: i32,
     from: f64,
     to: f64,
@@ -80,11 +90,12 @@ impl Stretch {
 }
 
 impl Planner<'_> {
-    /// The desired speed `speed(v)` among `mods` gives (else the default); beside it only
-    /// `along(r)` on a route the runtime chooses (the plan's roads, where the members are);
-    /// any other modifier is an error.
-    fn desired_speed(&self, g: &str, mods: &[Modifier]) -> Result<f64, Error> {
+    /// The desired speed `speed(v)` among `mods` gives (else the default), and whether an
+    /// `along(r)` on a route the runtime chooses (the plan's roads in +s, where the members
+    /// then are) keeps the members to that route's direction; any other modifier is an error.
+    fn desired_speed(&self, g: &str, mods: &[Modifier]) -> Result<(f64, bool), Error> {
         let mut v0 = DEFAULT_SPEED;
+        let mut along = false;
         for m in mods {
             let relative = ["faster_than", "slower_than", "same_as"]
                 .iter()
@@ -115,7 +126,10 @@ impl Planner<'_> {
                     }),
                 ) if !self.route_lanes.contains_key(field)
                     && !self.route_roads.contains_key(field)
-                    && !self.against_routes.contains_key(field) => {}
+                    && !self.against_routes.contains_key(field) =>
+                {
+                    along = true;
+                }
                 _ => {
                     return Err(m.site.err(
                         K::Unsupported,
@@ -124,7 +138,7 @@ impl Planner<'_> {
                 }
             }
         }
-        Ok(v0)
+        Ok((v0, along))
     }
 
     /// Whether `name` is a member of a `random_traffic_vehicle_group`.
@@ -177,12 +191,15 @@ impl Planner<'_> {
     }
 
     /// Places the members of every random traffic group among `starts` (the other actors
-    /// placed), from the drive that is their first phase among `leaves`.
+    /// placed; those in `against` driving against s, their starts in u), from the drive that
+    /// is their first phase among `leaves`. Returns the members placed against s.
     pub(super) fn place_random_traffic(
         &mut self,
         leaves: &[&Phase],
         starts: &mut HashMap<String, Start>,
-    ) -> Result<(), Error> {
+        against: &HashSet<&str>,
+    ) -> Result<HashSet<String>, Error> {
+        let mut oncoming = HashSet::new();
         let mut groups: Vec<(String, Site)> = self
             .random
             .iter()
@@ -198,7 +215,7 @@ impl Planner<'_> {
                 Some(Kind::Invoke(inv)) => inv.modifiers.as_slice(),
                 _ => &[],
             };
-            let v0 = self.desired_speed(&g, mods)?;
+            let (v0, along) = self.desired_speed(&g, mods)?;
             let speeds: Vec<f64> = members
                 .iter()
                 .map(|_| {
@@ -206,25 +223,45 @@ impl Planner<'_> {
                         + 2.0 * START_SPREAD * self.draws.borrow_mut().uniform())
                 })
                 .collect();
-            // Every other actor already placed, in a lane of the plan's +s side.
-            let others: Vec<(i32, f64, f64, f64)> = self
+            // Every other actor already placed, with its direction (its start in u against s).
+            let others: Vec<(bool, i32, f64, f64, f64)> = self
                 .entities
                 .iter()
-                .filter(|e| !self.random_member(&e.name) && !e.against)
+                .filter(|e| !self.random_member(&e.name))
                 .filter_map(|e| {
                     let st = starts.get(&e.name)?;
                     let b = e.data.bounding_box;
                     let front = b.center[0] + b.length / 2.0;
                     let rear = b.length / 2.0 - b.center[0];
-                    Some((st.lane, st.s - rear, st.s + front, st.v))
+                    let back = against.contains(e.name.as_str());
+                    Some((back, st.lane, st.s - rear, st.s + front, st.v))
                 })
                 .collect();
+            let side = |back: bool| -> Vec<(i32, f64, f64, f64)> {
+                others
+                    .iter()
+                    .filter(|o| o.0 == back)
+                    .map(|o| (o.1, o.2, o.3, o.4))
+                    .collect()
+            };
             let v_max = speeds
                 .iter()
-                .chain(others.iter().map(|o| &o.3))
+                .chain(others.iter().map(|o| &o.4))
                 .fold(0.0_f64, |a, &b| a.max(b));
             let gap = IDM_S0 + v_max * IDM_T;
-            let mut stretches = self.free_stretches(&others, gap);
+            let mut stretches = free_stretches(&self.road, false, &side(false), gap);
+            // Oncoming traffic too (OpenDRIVE 1.8 §11.2: the left side's lanes driven in −s),
+            // unless `along(r)` keeps the members to the route's direction.
+            if !along {
+                if self.against_road.is_none() {
+                    if let Ok(view) = self.road.against() {
+                        self.against_road = Some(view);
+                    }
+                }
+                if let Some(view) = &self.against_road {
+                    stretches.extend(free_stretches(view, true, &side(true), gap));
+                }
+            }
             let lens: Vec<f64> = members
                 .iter()
                 .map(|m| self.entities[self.index[m]].data.bounding_box.length)
@@ -272,6 +309,9 @@ impl Planner<'_> {
                     let rear = b.length / 2.0 - b.center[0];
                     let s = st.from + du + before + rear;
                     before += lens[i] + gap;
+                    if st.against {
+                        oncoming.insert(members[i].clone());
+                    }
                     starts.insert(
                         members[i].clone(),
                         Start {
@@ -290,60 +330,7 @@ impl Planner<'_> {
                 self.engine_moved.insert(m.clone(), Some(0.0));
             }
         }
-        Ok(())
-    }
-
-    /// The stretches of the plan's driving lanes in +s free of `others` (lane, rear, front,
-    /// speed) by `gap` either side.
-    fn free_stretches(&self, others: &[(i32, f64, f64, f64)], gap: f64) -> Vec<Stretch> {
-        let length = self.road.length();
-        let steps = (length / LANE_STEP).floor() as usize;
-        let mut spans: Vec<(i32, f64, f64)> = Vec::new();
-        let mut open: Vec<(i32, f64, f64)> = Vec::new();
-        for k in 0..=steps + 1 {
-            let s = (k as f64 * LANE_STEP).min(length);
-            let lanes = if k > steps {
-                Vec::new()
-            } else {
-                self.road.driving_lanes(s)
-            };
-            let (keep, closed): (Vec<_>, Vec<_>) =
-                open.into_iter().partition(|(l, _, _)| lanes.contains(l));
-            spans.extend(closed);
-            open = keep
-                .into_iter()
-                .map(|(l, a, _)| (l, a, s))
-                .collect::<Vec<_>>();
-            for l in lanes {
-                if !open.iter().any(|o| o.0 == l) {
-                    open.push((l, s, s));
-                }
-            }
-        }
-        spans.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
-        let mut out = Vec::new();
-        for (lane, a, b) in spans {
-            let mut blocked: Vec<(f64, f64)> = others
-                .iter()
-                .filter(|o| o.0 == lane)
-                .map(|o| (o.1 - gap, o.2 + gap))
-                .collect();
-            blocked.sort_by(|x, y| x.0.total_cmp(&y.0));
-            let mut from = a;
-            for (x0, x1) in blocked.into_iter().chain([(b, b)]) {
-                if x0.min(b) > from {
-                    out.push(Stretch {
-                        lane,
-                        from,
-                        to: x0.min(b),
-                        members: Vec::new(),
-                        used: 0.0,
-                    });
-                }
-                from = from.max(x1);
-            }
-        }
-        out
+        Ok(oncoming)
     }
 
     /// The drive of random traffic `inv.actor` (phase `p`, starting at `t0`): nothing to plan
@@ -373,4 +360,64 @@ impl Planner<'_> {
         }
         Ok(())
     }
+}
+
+/// The stretches of the driving lanes of `road` (the plan's roads in +s, or the view of them
+/// driven against s: `against`, s then the distance u along the direction of travel) free of
+/// `others` (lane, rear, front, speed in that view) by `gap` either side.
+fn free_stretches(
+    road: &PlanRoad<'_>,
+    against: bool,
+    others: &[(i32, f64, f64, f64)],
+    gap: f64,
+) -> Vec<Stretch> {
+    let length = road.length();
+    let steps = (length / LANE_STEP).floor() as usize;
+    let mut spans: Vec<(i32, f64, f64)> = Vec::new();
+    let mut open: Vec<(i32, f64, f64)> = Vec::new();
+    for k in 0..=steps + 1 {
+        let s = (k as f64 * LANE_STEP).min(length);
+        let lanes = if k > steps {
+            Vec::new()
+        } else {
+            road.driving_lanes(s)
+        };
+        let (keep, closed): (Vec<_>, Vec<_>) =
+            open.into_iter().partition(|(l, _, _)| lanes.contains(l));
+        spans.extend(closed);
+        open = keep
+            .into_iter()
+            .map(|(l, a, _)| (l, a, s))
+            .collect::<Vec<_>>();
+        for l in lanes {
+            if !open.iter().any(|o| o.0 == l) {
+                open.push((l, s, s));
+            }
+        }
+    }
+    spans.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let mut out = Vec::new();
+    for (lane, a, b) in spans {
+        let mut blocked: Vec<(f64, f64)> = others
+            .iter()
+            .filter(|o| o.0 == lane)
+            .map(|o| (o.1 - gap, o.2 + gap))
+            .collect();
+        blocked.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let mut from = a;
+        for (x0, x1) in blocked.into_iter().chain([(b, b)]) {
+            if x0.min(b) > from {
+                out.push(Stretch {
+                    against,
+                    lane,
+                    from,
+                    to: x0.min(b),
+                    members: Vec::new(),
+                    used: 0.0,
+                });
+            }
+            from = from.max(x1);
+        }
+    }
+    out
 }

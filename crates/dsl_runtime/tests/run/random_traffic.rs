@@ -14,6 +14,17 @@ fn members(n: usize) -> Vec<String> {
     (0..n).map(|i| format!("g.vehicles[{i}]")).collect()
 }
 
+/// The gaps between consecutive boxes (lane, rear, front in s, name) in each lane, bumper to
+/// bumper along s: (gap, the one behind in s, the one ahead, lane). Sorts `boxes`.
+fn lane_gaps<'a>(boxes: &mut [(i32, f64, f64, &'a str)]) -> Vec<(f64, &'a str, &'a str, i32)> {
+    boxes.sort_by(|p, q| p.0.cmp(&q.0).then(p.1.total_cmp(&q.1)));
+    boxes
+        .windows(2)
+        .filter(|w| w[0].0 == w[1].0)
+        .map(|w| (w[1].1 - w[0].2, w[0].3, w[1].3, w[0].0))
+        .collect()
+}
+
 #[test]
 fn random_traffic_places_reproduce_by_seed() {
     let (a, b, c) = (
@@ -51,7 +62,7 @@ fn random_traffic_starts_in_the_driving_lanes_apart_by_the_minimum_gap() {
     for seed in [0, 1, 2, 3] {
         let r = run("random_traffic", seed, None);
         // Every vehicle at t = 0: lane, rear and front bumper (boxes front 3.5 m, rear 0.5 m).
-        let mut all: Vec<(i32, f64, f64, f64, String)> = members(8)
+        let all: Vec<(i32, f64, f64, f64, String)> = members(8)
             .into_iter()
             .chain(["ego".to_string()])
             .map(|m| {
@@ -70,18 +81,14 @@ fn random_traffic_starts_in_the_driving_lanes_apart_by_the_minimum_gap() {
         }
         let ego = r.at(0.0, "ego");
         assert!((ego.s - 100.0).abs() < S_TOL && ego.lane == -3, "{ego:?}");
-        all.sort_by(|p, q| p.0.cmp(&q.0).then(p.1.total_cmp(&q.1)));
         let min_gap = S0 + v_max * T;
-        for w in all.windows(2) {
-            if w[0].0 == w[1].0 {
-                let gap = w[1].1 - w[0].2;
-                assert!(
-                    gap >= min_gap - S_TOL,
-                    "seed {seed}: {} to {}: {gap} m < {min_gap} m",
-                    w[0].4,
-                    w[1].4
-                );
-            }
+        let mut boxes: Vec<(i32, f64, f64, &str)> =
+            all.iter().map(|o| (o.0, o.1, o.2, o.4.as_str())).collect();
+        for (gap, a, b, _) in lane_gaps(&mut boxes) {
+            assert!(
+                gap >= min_gap - S_TOL,
+                "seed {seed}: {a} to {b}: {gap} m < {min_gap} m"
+            );
         }
     }
 }
@@ -252,17 +259,11 @@ fn random_traffic_never_overlaps_while_it_drives_and_changes_lanes() {
                 .filter(|o| o.s + 3.5 < 999.0)
                 .map(|o| (o.lane, o.s - 0.5, o.s + 3.5, o.name.as_str()))
                 .collect();
-            boxes.sort_by(|p, q| p.0.cmp(&q.0).then(p.1.total_cmp(&q.1)));
-            for w in boxes.windows(2) {
-                if w[0].0 == w[1].0 {
-                    assert!(
-                        w[1].1 > w[0].2,
-                        "seed {seed} at {t}: {} and {} overlap in lane {}",
-                        w[0].3,
-                        w[1].3,
-                        w[0].0
-                    );
-                }
+            for (gap, a, b, lane) in lane_gaps(&mut boxes) {
+                assert!(
+                    gap > 0.0,
+                    "seed {seed} at {t}: {a} and {b} overlap in lane {lane}"
+                );
             }
         }
     }
@@ -278,4 +279,115 @@ fn an_actor_placed_relative_to_a_member_of_random_traffic_is_an_error() {
         "expected `behind:` of position(…) to name an actor the plan places and moves, found `g.vehicles[0]` of random traffic",
         "15:35",
     );
+}
+
+/// A vehicle's box along the road in a frame: lane, rear and front in s (4 m boxes centred
+/// 1.5 m ahead of the reference point along the direction of travel: in −s, lanes 1 and 2,
+/// the front is at lower s).
+fn box_in_s(o: &crate::support::Obj) -> (i32, f64, f64) {
+    if o.lane > 0 {
+        (o.lane, o.s - 3.5, o.s + 0.5)
+    } else {
+        (o.lane, o.s - 0.5, o.s + 3.5)
+    }
+}
+
+#[test]
+fn random_traffic_drives_both_sides_of_a_two_way_road() {
+    use std::f64::consts::PI;
+    // Angles and places the engine computes from the lane's geometry: round-off only.
+    const H_TOL: f64 = 1e-9;
+    let (mut oncoming, mut along_s) = (0, 0);
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic_both", seed, None);
+        // t = 0: lanes, headings, the gap per lane in its own direction (ego, npc included).
+        let names: Vec<String> = members(8)
+            .into_iter()
+            .chain(["ego".to_string(), "npc".to_string()])
+            .collect();
+        let v_max = names.iter().fold(0.0_f64, |a, m| a.max(r.at(0.0, m).speed));
+        let min_gap = S0 + v_max * T;
+        let mut boxes: Vec<(i32, f64, f64, &str)> = names
+            .iter()
+            .map(|m| {
+                let o = r.at(0.0, m);
+                let (lane, rear, front) = box_in_s(o);
+                (lane, rear, front, m.as_str())
+            })
+            .collect();
+        let npc = r.at(0.0, "npc");
+        assert!(npc.lane == 1 && (npc.s - 500.0).abs() < S_TOL, "{npc:?}");
+        for m in members(8) {
+            let o = r.at(0.0, &m);
+            assert!([-3, -2, -1, 1, 2].contains(&o.lane), "seed {seed}: {o:?}");
+            let (h, y) = match o.lane {
+                1 => (PI, 1.75),
+                2 => (PI, 5.25),
+                l => (0.0, 1.75 - 3.5 * f64::from(-l)),
+            };
+            // Heading along the lane's driving direction, on its centre.
+            let dh = (o.h - h).rem_euclid(2.0 * PI);
+            assert!(dh.min(2.0 * PI - dh) < H_TOL, "seed {seed}: {m} h {}", o.h);
+            assert!((o.y - y).abs() < S_TOL, "seed {seed}: {m} y {}", o.y);
+            if o.lane > 0 {
+                oncoming += 1;
+                // Moving in -x at its speed (at least ~22 m/s).
+                let x1 = r.at(1.0, &m).x;
+                assert!(x1 < o.x - 20.0, "seed {seed}: {m} x {} -> {x1}", o.x);
+            } else {
+                along_s += 1;
+            }
+        }
+        for (gap, a, b, _) in lane_gaps(&mut boxes) {
+            assert!(
+                gap >= min_gap - S_TOL,
+                "seed {seed}: {a} to {b}: {gap} m < {min_gap} m"
+            );
+        }
+        // While they drive: no overlap in any lane, and each member keeps its side (MOBIL
+        // changes only to a lane driven the same way), while its box is on the road.
+        for (t, objs) in &r.frames {
+            let mut boxes: Vec<(i32, f64, f64, &str)> = objs
+                .iter()
+                .map(|o| {
+                    let (lane, rear, front) = box_in_s(o);
+                    (lane, rear, front, o.name.as_str())
+                })
+                .filter(|b| b.1 > 1.0 && b.2 < 999.0)
+                .collect();
+            for b in &boxes {
+                let start = r.at(0.0, b.3).lane;
+                assert_eq!(b.0.signum(), start.signum(), "seed {seed} at {t}: {}", b.3);
+            }
+            for (gap, a, b, lane) in lane_gaps(&mut boxes) {
+                assert!(
+                    gap > 0.0,
+                    "seed {seed} at {t}: {a} and {b} overlap in lane {lane}"
+                );
+            }
+        }
+        let npc = r.at(10.0, "npc");
+        assert!((npc.s - 300.0).abs() < S_TOL && npc.lane == 1, "{npc:?}");
+    }
+    // Both sides get members (8 per seed, each side's share by its room: about 2/5 oncoming).
+    assert!(
+        oncoming > 0 && along_s > 0,
+        "{oncoming} oncoming, {along_s} in +s"
+    );
+    assert_eq!(oncoming + along_s, 32);
+    // Same seed, same run, bit for bit.
+    let (a, b) = (
+        run("random_traffic_both", 2, None),
+        run("random_traffic_both", 2, None),
+    );
+    for ((ta, fa), (tb, fb)) in a.frames.iter().zip(&b.frames) {
+        for (oa, ob) in fa.iter().zip(fb) {
+            assert_eq!(
+                (oa.x.to_bits(), oa.y.to_bits(), oa.h.to_bits()),
+                (ob.x.to_bits(), ob.y.to_bits(), ob.h.to_bits()),
+                "{} at {ta} {tb}",
+                oa.name
+            );
+        }
+    }
 }
