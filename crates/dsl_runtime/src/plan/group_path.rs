@@ -41,6 +41,11 @@
 //! After a run-time condition a block follows as positions relative to each member, a column
 //! its lead-in and the path from its checked offset, a trajectory's stamps completed by the
 //! engine with the group's speed then (`group_path_runtime`).
+//!
+//! For a group driving against s (`against`) the plan road is the view of its direction, so the
+//! offsets, lead-ins and moved paths above are in u along the direction of travel and t to the
+//! drivers' left; after a run-time condition the relative positions and checks would be in the
+//! road frame, so that is an error (`group_path_runtime`).
 
 use super::path_part::{cut, samples, Samples};
 use super::path_shape::{segment_lengths, Pose2};

@@ -77,6 +77,14 @@ impl Planner<'_> {
         let Some(lead) = self.groups.get(&inv.actor).and_then(|m| m.first()) else {
             return Ok(None);
         };
+        // Against s the members' relative positions and checks would be in the road frame,
+        // not the view's (u along the direction of travel, t to its left): not run yet.
+        if self.road.is_against() {
+            return Err(given.site.err(
+                K::Unsupported,
+                format!("expected a start the plan knows for {}(…) on group `{}`, which drives against s, found a phase that starts on a run-time condition (not run yet against s: after one the members follow places relative to themselves in the road frame)", inv.action, inv.actor),
+            ));
+        }
         let Some(part) = followed_part(inv, given)? else {
             return Ok(None);
         };

@@ -195,6 +195,72 @@ fn a_groups_change_position_against_s_moves_each_member_along_its_own_line() {
     assert!(s.abs() < T_TOL && (e - 2.5).abs() < T_TOL, "[{s}, {e}]");
 }
 
+/// g.replay_path against s: a column follows the path in file, each member from its own
+/// lead-in along its lane in its direction of travel (opposite_group_replay_path.osc).
+#[test]
+fn a_column_against_s_replays_a_path_from_each_members_lead_in() {
+    let r = &run_on("opposite_group_replay_path", "straight");
+    driving_against_s_at(r, (1.0, 1), 2, (905.0, 5.25));
+    for (t, i) in [(0.5, 0), (2.0, 1)] {
+        on_the_leg_at(r, (t, i), 895.2);
+    }
+    for (t, i) in [(6.25, 0), (7.75, 1)] {
+        driving_against_s_at(r, (t, i), 1, (838.0, 1.75));
+    }
+    phases_are(r, &[("do.0", 0.0, 7.75)]);
+}
+
+/// g.follow_trajectory and g.replay_trajectory against s: each member's stamps shifted by its
+/// headway behind member 0 along the direction of travel (opposite_group_follow_trajectory.osc,
+/// opposite_group_replay_trajectory.osc: the same trajectory replayed).
+#[test]
+fn a_column_against_s_follows_a_trajectory_with_its_stamps_shifted_by_each_headway() {
+    for name in [
+        "opposite_group_follow_trajectory",
+        "opposite_group_replay_trajectory",
+    ] {
+        column_on_the_trajectory(&run_on(name, "straight"));
+    }
+}
+
+/// Member `i` at time `t` at x on the paths' leg from lane 2 to lane 1 (dx -12 m, dy -3.5 m),
+/// 0.4 of the way along it (y = 3.85 m), heading atan2(-3.5, -12) = atan(3.5/12) - pi.
+fn on_the_leg_at(r: &Run, (t, i): (f64, usize), x: f64) {
+    let m = r.at(t, &member(i));
+    assert!(
+        (m.x - x).abs() < S_TOL && (m.y - 3.85).abs() < S_TOL,
+        "{m:?}"
+    );
+    assert!(
+        wrap(m.h - ((3.5f64 / 12.0).atan() - PI)).abs() < H_TOL,
+        "{m:?}"
+    );
+}
+
+fn column_on_the_trajectory(r: &Run) {
+    driving_against_s_at(r, (2.0, 2), 2, (910.0, 5.25));
+    for (t, i) in [(2.5, 0), (4.0, 1), (5.5, 2)] {
+        on_the_leg_at(r, (t, i), 875.2);
+    }
+    for (t, i) in [(6.25, 0), (7.75, 1), (9.25, 2)] {
+        driving_against_s_at(r, (t, i), 1, (838.0, 1.75));
+    }
+    phases_are(r, &[("do.0", 0.0, 9.25)]);
+}
+
+/// g.follow_trajectory against s for a group over two lanes: member 1's trajectory is member
+/// 0's moved to the drivers' left (opposite_group_block_trajectory.osc).
+#[test]
+fn a_group_over_two_lanes_against_s_follows_the_trajectory_moved_by_each_offset() {
+    let r = run_on("opposite_group_block_trajectory", "straight");
+    for (i, (lane, y)) in [(2, 5.25), (1, 1.75)].into_iter().enumerate() {
+        for (t, x) in [(3.0, 870.0), (4.0, 860.0)] {
+            driving_against_s_at(&r, (t, i), lane, (x, y));
+        }
+    }
+    phases_are(&r, &[("do.0", 0.0, 4.0)]);
+}
+
 #[test]
 fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
     for (name, text, place) in [
@@ -207,6 +273,11 @@ fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
             "err_opposite_group_position",
             "expected a group action that runs for group `g`, which drives against s, found assign_orientation(…) (not run yet against s",
             "17:9",
+        ),
+        (
+            "err_opposite_group_path_runtime",
+            "expected a start the plan knows for replay_path(…) on group `g`, which drives against s, found a phase that starts on a run-time condition (not run yet against s",
+            "37:41",
         ),
     ] {
         let e = error_on(name, "straight");
