@@ -34,8 +34,8 @@
 //! travel, in the numbers the plan writes (u = L − s, t to the actor's left): the plan gives
 //! it the direction with the roads (`Planner::chain`, `scenario::PlanRoads`). The rest is an
 //! error at the action or modifier (not run yet), never planned in the wrong direction: the
-//! group forms of `assign_orientation` and `follow_path`, and of the path actions after a
-//! run-time condition (`group_path_runtime`).
+//! group form of `assign_orientation`, and those of the path actions after a run-time
+//! condition (`group_path_runtime`).
 //!
 //! The gap actions (`change_space_gap`, `keep_space_gap`, `change_time_headway`,
 //! `keep_time_headway`) run between two actors driving against s: the engine's
@@ -49,7 +49,7 @@
 //! back along the direction of travel, and each member lowered as an actor driving against s;
 //! the gap actions' group form is their chain along that formation; `g.assign_position`,
 //! `g.change_position` (`position_actions::formation_place`) and, at a start the plan knows,
-//! `g.replay_path`, `g.follow_trajectory` and `g.replay_trajectory` (`group_path`) move it by
+//! the path actions' group forms (`group_path`) move it by
 //! each member's offset from member 0 in the view (along the direction of travel and to the
 //! drivers' left), a column's lead-ins along its lanes in that direction.
 //!
@@ -105,12 +105,10 @@ pub(crate) fn check_references(
         } else {
             let against = group_direction(&inv.actor, all, &leaf.site)?;
             // `assign_position`, `change_position` (`position_actions::formation_place`) and
-            // `replay_path`, `follow_trajectory`, `replay_trajectory` at a start the plan
-            // knows (`group_path`) move the formation by its offsets from member 0 taken in
-            // the view (along the direction of travel, to the drivers' left); after a run-time
-            // condition the path forms are refused in `group_path_runtime`. `follow_path`
-            // (the engine's pursuit of a column's path) and `assign_orientation` are not yet
-            // tested on the view.
+            // the path actions at a start the plan knows (`group_path`) move the formation by
+            // its offsets from member 0 taken in the view (along the direction of travel, to
+            // the drivers' left); after a run-time condition the path forms are refused in
+            // `group_path_runtime`. `assign_orientation` is not yet tested on the view.
             let in_view = matches!(
                 inv.kind,
                 Action::AssignPosition
@@ -118,11 +116,12 @@ pub(crate) fn check_references(
                     | Action::ReplayPath
                     | Action::FollowTrajectory
                     | Action::ReplayTrajectory
+                    | Action::FollowPath
             );
             if against && inv.kind.to_place() && !in_view {
                 return Err(inv.actor_site.err(
                     K::Unsupported,
-                    format!("expected a group action that runs for group `{}`, which drives against s, found {}(…) (not run yet against s: the group forms of assign_orientation and follow_path; g.assign_position, change_position, replay_path, follow_trajectory and replay_trajectory run, and each member's own {}(…))", inv.actor, inv.action, inv.action),
+                    format!("expected a group action that runs for group `{}`, which drives against s, found {}(…) (not run yet against s: the group form of assign_orientation; g.assign_position, change_position, follow_path, replay_path, follow_trajectory and replay_trajectory run, and each member's own {}(…))", inv.actor, inv.action, inv.action),
                 ));
             }
             against

@@ -14,6 +14,10 @@ const S_TOL: f64 = 1e-6;
 const XY_TOL: f64 = 1e-4;
 /// Headings (rad).
 const H_TOL: f64 = 1e-9;
+/// Headings of the pursuit and its mirror (rad): the two integrate the same steering from
+/// geometry turned by pi, whose round-off differs and is carried on (at most 1.3e-7 rad seen,
+/// at the end; a wrong direction would be off by radians, a wrong place by metres).
+const MIRROR_H_TOL: f64 = 1e-6;
 /// Phase ends are step times.
 const T_TOL: f64 = 1e-9;
 /// Across a spiral the engine steps the curvature per step (1 cm, as in run::opposite).
@@ -208,6 +212,29 @@ fn a_column_against_s_replays_a_path_from_each_members_lead_in() {
         driving_against_s_at(r, (t, i), 1, (838.0, 1.75));
     }
     phases_are(r, &[("do.0", 0.0, 7.75)]);
+}
+
+/// g.follow_path against s: the engine's pursuit of each member's path is the +s one turned half
+/// a turn about (500, 0), at every step (opposite_group_follow_path.osc,
+/// group_follow_path_mirror.osc): (x, y, h) there is (1000 - x, -y, h + pi) here.
+#[test]
+fn a_column_against_s_follows_a_path_as_the_mirrored_column_in_plus_s() {
+    let r = run_on("opposite_group_follow_path", "straight");
+    let m = run_on("group_follow_path_mirror", "straight");
+    assert_eq!(r.frames.len(), m.frames.len());
+    for (t, objs) in &m.frames {
+        for o in objs {
+            let a = r.at(*t, &o.name);
+            assert!(
+                (a.x - (1000.0 - o.x)).abs() < S_TOL
+                    && (a.y + o.y).abs() < S_TOL
+                    && wrap(a.h - (o.h + PI)).abs() < MIRROR_H_TOL
+                    && a.lane == -o.lane,
+                "{t}: {a:?} {o:?}"
+            );
+        }
+    }
+    phases_are(&r, &[("do.0", 0.0, m.phase("do.0").1)]);
 }
 
 /// g.follow_trajectory and g.replay_trajectory against s: each member's stamps shifted by its
