@@ -123,7 +123,6 @@ pub(crate) type Orientations = (Option<(f64, Site)>, Vec<HeadingAsk>);
 /// yaw, a pitch or roll other than 0, a measure that does not fit `relative_to:` (or its
 /// absence). Returns the yaw and its place when the first phase asks for one other than
 /// `along` relative to the road, and the other yaws asked.
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn check_orientation(
     mods: &[Modifier],
     planned: f64,
