@@ -34,8 +34,7 @@
 //! travel, in the numbers the plan writes (u = L − s, t to the actor's left): the plan gives
 //! it the direction with the roads (`Planner::chain`, `scenario::PlanRoads`). The rest is an
 //! error at the action or modifier (not run yet), never planned in the wrong direction: the
-//! group form of `assign_orientation`, and those of the path actions after a run-time
-//! condition (`group_path_runtime`).
+//! group forms of the path actions after a run-time condition (`group_path_runtime`).
 //!
 //! The gap actions (`change_space_gap`, `keep_space_gap`, `change_time_headway`,
 //! `keep_time_headway`) run between two actors driving against s: the engine's
@@ -104,26 +103,12 @@ pub(crate) fn check_references(
             dir(&inv.actor)
         } else {
             let against = group_direction(&inv.actor, all, &leaf.site)?;
-            // `assign_position`, `change_position` (`position_actions::formation_place`) and
-            // the path actions at a start the plan knows (`group_path`) move the formation by
-            // its offsets from member 0 taken in the view (along the direction of travel, to
-            // the drivers' left); after a run-time condition the path forms are refused in
-            // `group_path_runtime`. `assign_orientation` is not yet tested on the view.
-            let in_view = matches!(
-                inv.kind,
-                Action::AssignPosition
-                    | Action::ChangePosition
-                    | Action::ReplayPath
-                    | Action::FollowTrajectory
-                    | Action::ReplayTrajectory
-                    | Action::FollowPath
-            );
-            if against && inv.kind.to_place() && !in_view {
-                return Err(inv.actor_site.err(
-                    K::Unsupported,
-                    format!("expected a group action that runs for group `{}`, which drives against s, found {}(…) (not run yet against s: the group form of assign_orientation; g.assign_position, change_position, follow_path, replay_path, follow_trajectory and replay_trajectory run, and each member's own {}(…))", inv.actor, inv.action, inv.action),
-                ));
-            }
+            // The group forms of the position and path actions run on the view: `assign_position`,
+            // `change_position` (`position_actions::formation_place`) and the path actions at a
+            // start the plan knows (`group_path`) move the formation by its offsets from member 0
+            // taken in the view (along the direction of travel, to the drivers' left); after a
+            // run-time condition the path forms are refused in `group_path_runtime`;
+            // `assign_orientation` turns each standing member where it is to a world yaw.
             against
         };
         if actor_against {

@@ -147,6 +147,35 @@ fn a_groups_assign_position_against_s_keeps_the_offsets_in_the_direction_of_trav
     phases_are(&r, &[("do.1", 1.0, 1.0), ("do.2", 1.0, 2.0)]);
 }
 
+/// g.assign_orientation against s: each standing member turned where it is to the absolute yaw
+/// 0.5 rad (opposite_group_assign_orientation.osc).
+#[test]
+fn a_groups_assign_orientation_against_s_turns_each_member_where_it_stands() {
+    let r = run_on("opposite_group_assign_orientation", "straight");
+    // Member 0 by hand: lane 2 at u = 100 m, (900, 5.25), heading pi.
+    let m0 = r.at(1.0, &member(0));
+    assert!(
+        (m0.x - 900.0).abs() < S_TOL && (m0.y - 5.25).abs() < S_TOL,
+        "{m0:?}"
+    );
+    for i in 0..2 {
+        let before = r.at(1.0, &member(i));
+        assert_eq!(before.lane, 2, "{before:?}");
+        assert!((before.y - 5.25).abs() < S_TOL && wrap(before.h - PI).abs() < H_TOL);
+        for t in [1.05, 2.0] {
+            let m = r.at(t, &member(i));
+            assert!((m.h - 0.5).abs() < H_TOL, "{m:?}");
+            assert!(
+                (m.x - before.x).abs() < S_TOL && (m.y - before.y).abs() < S_TOL,
+                "{m:?}"
+            );
+        }
+    }
+    // Member 1 behind member 0 along the direction of travel: further along +x.
+    assert!(r.at(1.0, &member(1)).x > 900.0 + 5.0);
+    phases_are(&r, &[("do.1", 1.0, 1.0), ("do.2", 1.0, 2.0)]);
+}
+
 /// Member `i` at time `t` in `lane` at (x, y) on straight.xodr, heading pi.
 fn driving_against_s_at(r: &Run, (t, i): (f64, usize), lane: i32, (x, y): (f64, f64)) {
     let m = r.at(t, &member(i));
@@ -295,11 +324,6 @@ fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
             "err_opposite_group_mixed",
             "expected the members of group `g` to drive one direction (its formation is placed along one direction of travel), found `g.vehicles[1]` in +s and `g.vehicles[0]` against s",
             "15:9",
-        ),
-        (
-            "err_opposite_group_position",
-            "expected a group action that runs for group `g`, which drives against s, found assign_orientation(…) (not run yet against s",
-            "17:9",
         ),
         (
             "err_opposite_group_path_runtime",
