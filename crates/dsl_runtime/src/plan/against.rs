@@ -114,12 +114,7 @@ pub(crate) fn check_references(
         if actor_against {
             check_runs(inv, &inv.modifiers)?;
         }
-        let args = inv.args.iter().map(|(n, a)| (None, n, a)).chain(
-            inv.modifiers
-                .iter()
-                .flat_map(|m| m.args.iter().map(move |(n, a)| (Some(m), n, a))),
-        );
-        for (m, key, a) in args {
+        for (m, key, a) in inv.all_args() {
             let Some(x) = a.path.as_deref().filter(|x| index.contains_key(*x)) else {
                 continue;
             };

@@ -165,12 +165,7 @@ impl Planner<'_> {
             let Kind::Invoke(inv) = &leaf.kind else {
                 continue;
             };
-            let args = inv.args.iter().map(|(n, a)| (None, n, a)).chain(
-                inv.modifiers
-                    .iter()
-                    .flat_map(|m| m.args.iter().map(move |(n, a)| (Some(m), n, a))),
-            );
-            for (m, key, a) in args {
+            for (m, key, a) in inv.all_args() {
                 let Some(x) = a.path.as_deref() else {
                     continue;
                 };

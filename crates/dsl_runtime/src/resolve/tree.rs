@@ -87,6 +87,18 @@ pub(crate) struct Invoke {
     pub modifiers: Vec<Modifier>,
 }
 
+impl Invoke {
+    /// Every argument of the invocation with its name: the action's own (`None`), then each
+    /// modifier's (`Some(modifier)`), in order.
+    pub(crate) fn all_args(&self) -> impl Iterator<Item = (Option<&Modifier>, &String, &Arg)> {
+        self.args.iter().map(|(n, a)| (None, n, a)).chain(
+            self.modifiers
+                .iter()
+                .flat_map(|m| m.args.iter().map(move |(n, a)| (Some(m), n, a))),
+        )
+    }
+}
+
 /// An invocation of a behavior with a `do`, entered while the tree was built: the frame its
 /// names are read in and the behavior (whose events the scenario then has too).
 #[derive(Debug, Clone)]
