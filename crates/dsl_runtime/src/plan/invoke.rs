@@ -369,11 +369,19 @@ impl Planner<'_> {
                             // each step, so it ends at x's speed at the phase end; projected,
                             // x's speed as the action starts, then fixed (oscsim's
                             // RelativeAtStart target).
+                            // At the rate of acceleration(a): the change's length is the
+                            // engine's to check from both speeds then (plan::runtime).
                             if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
-                                return Err(q.site.err(
-                                    K::Unsupported,
-                                    "expected no acceleration(…) beside a speed relative to another actor in a phase that starts on a run-time condition, found one (the time the change takes at that rate depends on both speeds at the start)",
-                                ));
+                                let names = (name("check"), name("speed"));
+                                let rated = (m, q);
+                                out.extend(self.start_relative_speed_at_rate(
+                                    rated,
+                                    target,
+                                    ((x, delta), len),
+                                    names,
+                                    after,
+                                )?);
+                                continue;
                             }
                             let to = if m.projected {
                                 SpeedTarget::RelativeAtStart {

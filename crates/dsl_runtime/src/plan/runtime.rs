@@ -23,7 +23,9 @@
 //! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends, beside the engine's check that v₀ + a·T is within 0 and the vehicle's maximum speed then |
 //! | `speed(v, at: end)`, `change_speed(v)` (or to another actor's speed) over a phase of duration T, `change_speed(v, duration)` | the engine's SpeedAction over T from the speed the actor has, beside the engine's check that its peak rate fits the vehicle's limit then (a failure: an error record and a failed run, not a stretched change) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a, beside the engine's check that \|v − v₀\|/a ≤ T from the speed v₀ the actor has then (`speed_at_rate_check`) |
+//! | `speed(same_as/faster_than/slower_than: x, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a to x's speed (actual: read each step, followed after the change, checked at the end; projected: x's at the start), beside the engine's check that \|v_x ± δ − v₀\|/a ≤ T from both speeds then (`start_relative_speed_at_rate`) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `distance(d)` without a duration | the engine's SpeedAction at the rate of `acceleration(a)` beside it, else `change_speed`'s default, beside the engine's check that \|v² − v₀²\|/(2a) ≤ d from the speed v₀ the actor has then (`speed_at_rate_check`); the phase ends at d travelled since the start's mark (`runtime_end`); relative to another actor x, to x's speed read at each step and followed after the change, checked at the end (projected: x's speed at the start) (`relative_over_distance`) |
+//! | `change_speed(v)`, `speed(v, at: end)` at the rate of `acceleration(a, faster_than/slower_than/same_as: x)` beside `distance(d)` without a duration | the engine's RelativeAccelerationAction toward v with no time of its own, and its check at the phase end (d travelled) that the actor is at v (`runtime_end`) |
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
 //! | `keep_space_gap` / `keep_time_headway` without a known gap | the engine's LongitudinalDistanceAction keeping the value it measures at its start (`gap_actions`) |
 //!
@@ -43,13 +45,14 @@
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, OffsetInWidth, PlanRoads,
-    PrivateAction, RateWithin, SpeedTarget, StateCheck, Travel, TravelGoal,
+    DynamicsDimension, DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction,
+    OffsetInWidth, PlanRoads, PrivateAction, RateWithin, SpeedTarget, StateCheck,
+    TransitionDynamics, Travel, TravelGoal,
 };
 
 use super::action_args::timed;
 use super::lateral;
-use super::motion::{acceleration, check_speed, end_speed_mod, holds_speed};
+use super::motion::{acceleration, check_accel, check_speed, end_speed_mod, holds_speed};
 use super::planner::Planner;
 use super::route::StartOnRoute;
 use super::types::{
@@ -255,6 +258,61 @@ impl Planner<'_> {
         Ok(())
     }
 
+    /// The speed `m` asks of `target` relative to `x` (± `delta`) at the end of a phase of
+    /// `len` s that starts on a run-time condition, at the rate of `acceleration(a)` `q`
+    /// beside it, as the actions `check_name` and `name`: the change takes \|v_x ± δ − v₀\|/a
+    /// from both speeds at the start, which only the engine has, so the engine's SpeedAction
+    /// at the rate a to x's speed (± δ) and its check at that start that the change ends
+    /// within the phase from those speeds (`speed_at_rate_check`, an error record and a failed
+    /// run otherwise: the phase's end would cut it short). With `track: actual` the target is
+    /// x's speed read at each step and followed after the change (the engine's linear change
+    /// over the length fixed at the start, blended to x's speed as it moves), checked at the
+    /// phase end (`relative_speed_over_distance`); `track: projected` x's speed as the action
+    /// starts, fixed. An acceleration relative to another actor as the rate stays an error:
+    /// the engine's change at such a rate aims at a speed of its own.
+    pub(super) fn start_relative_speed_at_rate(
+        &self,
+        (m, q): (&Modifier, &Modifier),
+        target: &str,
+        (x, len): ((String, f64), f64),
+        (check_name, name): (String, String),
+        after: &mut Vec<Planned>,
+    ) -> Result<[Planned; 2], Error> {
+        if let Some(y) = relative_to(q) {
+            return Err(y.site.err(
+                K::Unsupported,
+                format!("expected acceleration(a) of its own beside a speed relative to `{}` in a phase that starts on a run-time condition, found one relative to another actor (not run yet: the engine's change at another actor's acceleration aims at a speed of its own)", x.0),
+            ));
+        }
+        let a = self.acceleration_value(q, (None, len))?.abs();
+        check_accel(q, a)?;
+        let end_name = format!("{name}.end");
+        let to = self.relative_speed_over_distance(m, target, x, (end_name, after));
+        let dynamics = TransitionDynamics {
+            dynamics_shape: DynamicsShape::Linear,
+            dynamics_dimension: DynamicsDimension::Rate,
+            value: a,
+            following_mode: None,
+        };
+        Ok([
+            speed_at_rate_check(
+                target,
+                (&q.name, &q.site),
+                (to.clone(), a, RateWithin::Time(len)),
+                check_name,
+            ),
+            Planned::with_phase(
+                target,
+                name,
+                PrivateAction::Longitudinal(LongitudinalAction::Speed {
+                    dynamics,
+                    target: to,
+                }),
+                &m.site,
+            ),
+        ])
+    }
+
     /// The engine's `acceleration(a)` (alone, no speed target beside it) for `target` over a
     /// phase of `len` s that starts on a run-time condition, as the actions `name("check")`
     /// and `name("acceleration")`: the engine's check that v₀ + a·T stays within 0 and the
@@ -427,4 +485,12 @@ pub(super) fn phase_start_check(
         ..check
     };
     Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), site)
+}
+
+/// The actor `q` (an `acceleration(…)`) is relative to, if any (`faster_than`, `slower_than`,
+/// `same_as`).
+pub(super) fn relative_to(q: &Modifier) -> Option<&Arg> {
+    ["faster_than", "slower_than", "same_as"]
+        .into_iter()
+        .find_map(|key| q.arg(key))
 }

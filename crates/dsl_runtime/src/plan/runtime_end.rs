@@ -8,6 +8,7 @@
 //! | `distance(d)` without a duration | a state check at the start notes the actor's odometer (a mark); the phase ends when the engine measures d travelled since (TraveledSinceMark) |
 //! | `position(d / time: t / neither, ahead_of/behind: x, at: end)` without a duration (at any start; on a plan over several roads in the plan's s) | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `distance(d)` without a duration | the engine's SpeedAction at the rate of `acceleration(a)` beside it (else `change_speed`'s default 2 m/s²) from the speed v₀ the actor has, beside its check that the change, \|v² − v₀²\|/(2a), fits within d; the phase ends at d travelled since the mark |
+//! | the same at the rate of `acceleration(a, faster_than/slower_than/same_as: x)` | the engine's RelativeAccelerationAction toward v at x's acceleration ± a as it reads it, with no time of its own; the phase ends at d travelled, and the engine checks then that the actor is at v (how far the change runs depends on x's acceleration over it) |
 //! | `position(…, at: end)`, `distance(d)` over a duration beside `speed(v)` at: all | the speed holds; the engine checks the place (or d travelled since the start's mark) at the phase end: a constraint that holds only if the run meets it is an error record if it does not |
 //! | `keep_lane()`, `lane(…)` at: all beside `lateral(d, side_of/left_of/right_of: x, at: end)` | the engine's check at the phase end: the actor in the lane it had at the start (a mark notes it) or in the lane `lane(…)` asks |
 //! | `speed(same_as/faster_than/slower_than: x, at: end)` beside a TravelAction | the profile ends at x's speed at the start (± the value); the engine checks x's speed at the phase end |
@@ -24,9 +25,9 @@ use scenario::{
 use super::motion::{check_accel, check_speed};
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
-use super::runtime::{phase_start_check, speed_at_rate_check};
+use super::runtime::{phase_start_check, relative_to, speed_at_rate_check};
 use super::speed_actions::DEFAULT_ACCELERATION;
-use super::types::{Planned, When};
+use super::types::{Planned, When, SPEED_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Arg, ModKind, Modifier};
 
@@ -84,6 +85,26 @@ impl Planner<'_> {
         };
         let (v1, relative) = self.speed_value(m, t0)?;
         let (rated_by, a) = match mods.iter().find(|q| q.kind == ModKind::Acceleration) {
+            // At the rate of another actor's acceleration: the engine's to read.
+            Some(q) if relative_to(q).is_some() && t0.is_none() => {
+                let names = (name.clone(), format!("{name}.end"));
+                self.relative_rate_over_distance(
+                    (m, q),
+                    target,
+                    (v1, relative),
+                    names,
+                    out,
+                    after,
+                )?;
+                return Ok(None);
+            }
+            Some(q) if relative_to(q).is_some() => {
+                // At a known start distance(…) refuses acceleration(…) beside it (invoke).
+                return Err(q.site.err(
+                    K::Unsatisfiable,
+                    format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", dm.site.at()),
+                ));
+            }
             Some(q) => {
                 let a = q
                     .arg("acceleration")
@@ -92,8 +113,8 @@ impl Planner<'_> {
                     .filter(|a| *a != 0.0)
                     .ok_or_else(|| {
                         q.site.err(
-                            K::Unsupported,
-                            format!("expected acceleration(a) with a rate of its own beside distance(…) at {} and a speed change, found none", dm.site.at()),
+                            K::Value,
+                            format!("expected a rate other than 0 m/s² in acceleration(…) beside distance(…) at {} and a speed change, found none", dm.site.at()),
                         )
                     })?
                     .abs();
@@ -151,6 +172,51 @@ impl Planner<'_> {
             self.last_v.insert(target.to_string(), v1);
         }
         Ok(end)
+    }
+
+    /// After a run-time start, the speed change `m` of `target` to `v1` (`relative`: a speed
+    /// relative to another actor, an error here) at the rate of `q`, an `acceleration(a,
+    /// faster_than/slower_than/same_as: x)`, beside `distance(d)` without a duration, as the
+    /// action `name`: the engine's RelativeAccelerationAction toward v1 (`to_speed`, the rate
+    /// x's acceleration ± a as the engine reads it, at: start over the phase's first step and
+    /// held, at: all and end in every step of the change; `relative_rate_at_run_time`) with no
+    /// time of its own (d ends the phase: `distance_watch`), and the engine's check at the
+    /// phase end (in `after`, as `end_name`, named for `q`) that the actor is at v1 then: how
+    /// far the change runs depends on x's acceleration over it, which no check at the start
+    /// can read, so a change d cuts short is an error record and a failed run at the end.
+    /// `track: projected` is `acceleration_value`'s error (x projected has no acceleration).
+    fn relative_rate_over_distance(
+        &mut self,
+        (m, q): (&Modifier, &Modifier),
+        target: &str,
+        (v1, relative): (f64, Option<(String, f64)>),
+        (name, end_name): (String, String),
+        out: &mut Vec<Planned>,
+        after: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        if let Some((x, _)) = relative {
+            return Err(q.site.err(
+                K::Unsupported,
+                format!("expected acceleration(a) of its own beside a speed relative to `{x}` in a phase that starts on a run-time condition, found one relative to another actor (not run yet: the engine's change at another actor's acceleration aims at a speed of its own)"),
+            ));
+        }
+        check_speed(m, v1)?;
+        let Some(action) = self.relative_rate_at_run_time(Some(q), None, (v1, f64::INFINITY))?
+        else {
+            // Projected: x has no acceleration to read (`acceleration_value` names it).
+            return self.acceleration_value(q, (None, 0.0)).and(Err(q.site.err(
+                K::Modifier,
+                "expected track: actual for an acceleration relative to another actor, found projected",
+            )));
+        };
+        out.push(Planned::with_phase(target, name, action, &m.site));
+        let check = StateCheck {
+            speed: Some((None, v1, SPEED_TOLERANCE)),
+            ..StateCheck::default()
+        };
+        after.push(self.end_check(q, target, end_name, check));
+        self.last_v.insert(target.to_string(), v1);
+        Ok(())
     }
 
     /// At a start `t` the plan knows, the speed change of `target` to `v1` at the rate `a`

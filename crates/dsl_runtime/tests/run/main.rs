@@ -27,6 +27,7 @@ mod position_actions;
 mod random_traffic;
 mod reuse;
 mod runtime;
+mod runtime_rates;
 mod runtime_relative_speed;
 mod shapes;
 mod speed_actions;

@@ -105,11 +105,11 @@ fn a_failed_check_at_a_run_time_start_is_an_error_record_and_a_failed_run() {
 }
 
 /// Speeds set by linear pieces: exact up to float round-off.
-const V_TOL: f64 = 1e-9;
+pub(super) const V_TOL: f64 = 1e-9;
 
 /// Runs `tests/scenarios/NAME.osc`, which must fail: its error starts with `want` and ends with
 /// `tail`, and is the one error record of the event log, by `element` at `t`.
-fn fails(name: &str, (want, tail): (&str, &str), element: &str, t: f64) {
+pub(super) fn fails(name: &str, (want, tail): (&str, &str), element: &str, t: f64) {
     let lowered = super::support::lower(name, 0, None).unwrap_or_else(|e| panic!("{e}"));
     let (error, records) = super::support::run_to_error(&lowered.scenario);
     let error = error.expect("the run fails");
@@ -135,7 +135,7 @@ fn sideways(r: &super::support::Run, a: f64, times: &[f64]) {
 }
 
 /// Each (phase, start, end) of `want` started and ended then.
-fn phases(r: &super::support::Run, want: &[(&str, f64, f64)]) {
+pub(super) fn phases(r: &super::support::Run, want: &[(&str, f64, f64)]) {
     for (path, a, b) in want {
         let (s, e) = r.phase(path);
         assert!(
@@ -146,7 +146,7 @@ fn phases(r: &super::support::Run, want: &[(&str, f64, f64)]) {
 }
 
 /// Each (element, time) of `want` ended then (a check that passed).
-fn ran_at(r: &super::support::Run, want: &[(&str, f64)]) {
+pub(super) fn ran_at(r: &super::support::Run, want: &[(&str, f64)]) {
     for &(check, t) in want {
         let at = r
             .when(check, "End")
@@ -156,7 +156,7 @@ fn ran_at(r: &super::support::Run, want: &[(&str, f64)]) {
 }
 
 /// ego's speed at each (time, m/s) of `want`, exact up to float round-off.
-fn ego_speeds(r: &super::support::Run, want: &[(f64, f64)]) {
+pub(super) fn ego_speeds(r: &super::support::Run, want: &[(f64, f64)]) {
     for &(t, v) in want {
         let ego = r.at(t, "ego");
         assert!((ego.speed - v).abs() < V_TOL, "{t}: {ego:?}, want {v}");

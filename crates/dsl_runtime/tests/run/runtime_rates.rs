@@ -1,0 +1,98 @@
+//! Speed changes at a rate in phases that start on a run-time condition (ASAM OpenSCENARIO DSL
+//! 2.1 §8.9 `speed(…, at: end)` beside `acceleration(…)`, `distance(d)`): how long the change
+//! takes depends on the speeds at the start, which only the engine has, so the engine runs it
+//! and checks it then. Every moment is worked by hand in the scenario file.
+
+use super::runtime::{ego_speeds, fails, phases, ran_at, V_TOL};
+use super::support::run;
+
+/// runtime_speed_relative_at_rate.osc's comment, by hand: ego's change to lead's speed at
+/// 4 m/s² takes the 3 s the engine finds at 3.35 s (20 → 8 m/s), blended to lead's speed as it
+/// rises (v = 20 + (τ − 12)·τ/3), then follows it; tail's (projected) to lead's 8 m/s then.
+#[test]
+fn a_speed_relative_to_another_at_a_rate_after_an_until_takes_the_time_both_speeds_give() {
+    let r = run("runtime_speed_relative_at_rate", 0, None);
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.follow", 3.35, 7.35)]);
+    let ego = |tau: f64| 20.0 + (tau - 12.0) * tau / 3.0;
+    ego_speeds(
+        &r,
+        &[
+            (3.35, 20.0),
+            (4.35, ego(1.0)),
+            (4.85, 14.75),
+            (6.35, 11.0),
+            (6.85, 11.5),
+            (7.35, 12.0),
+        ],
+    );
+    for (t, v) in [(4.35, 9.0), (6.35, 11.0), (7.35, 12.0)] {
+        let lead = r.at(t, "lead");
+        assert!((lead.speed - v).abs() < V_TOL, "{t}: {lead:?}");
+    }
+    for (t, v) in [(3.35, 20.0), (4.85, 14.0), (6.35, 8.0), (7.35, 8.0)] {
+        let tail = r.at(t, "tail");
+        assert!((tail.speed - v).abs() < V_TOL, "{t}: {tail:?}");
+    }
+    ran_at(
+        &r,
+        &[
+            ("do.follow.1/ego/1:check", 3.35),
+            ("do.follow.1/ego/2:speed.end", 7.35),
+        ],
+    );
+    // At 2 m/s² the change needs 6 s of the phase's 4: the engine's check at its start.
+    let want = "expected 'ego''s speed from 20.000 to 8.000 m/s at 2.000 m/s² within 4.000 s (acceleration(…) at ";
+    let tail =
+        "runtime_speed_relative_at_rate_fails.osc:23:17), found it needs 6.000 s at t = 3.350 s";
+    fails(
+        "runtime_speed_relative_at_rate_fails",
+        (want, tail),
+        "do.follow.1/ego/1:check",
+        3.35,
+    );
+}
+
+/// runtime_rate_relative_over_distance.osc's comment, by hand: ego's change to 15 m/s runs at
+/// lead's −2 m/s² − 1 as the engine reads it (3 m/s², v = 20 − 0.15·k after k steps), reaches
+/// 15 m/s at 5.05 s and holds it; 60 m travelled since 3.35 s end the phase at 7.10 s, where
+/// the engine's check at the end passes. With distance(20m) the phase ends at 4.45 s at
+/// 16.7 m/s: the check fails.
+#[test]
+fn a_speed_change_at_another_actors_acceleration_over_a_distance_after_an_until_is_the_engines() {
+    let r = run("runtime_rate_relative_over_distance", 0, None);
+    phases(&r, &[("do.approach", 0.0, 3.35), ("do.slow", 3.35, 7.10)]);
+    ego_speeds(
+        &r,
+        &[
+            (3.35, 20.0),
+            (3.85, 18.5),
+            (4.35, 17.0),
+            (4.95, 15.2),
+            (5.05, 15.0),
+            (6.0, 15.0),
+            (7.10, 15.0),
+        ],
+    );
+    // s: 167 m at 3.35 s, then the covered distance worked out in the scenario's comment.
+    for (t, s) in [
+        (5.05, 167.0 + 29.5425),
+        (7.05, 167.0 + 59.5425),
+        (7.10, 167.0 + 60.2925),
+    ] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.s - s).abs() < super::S_TOL,
+            "{t}: {ego:?}, want s = {s}"
+        );
+    }
+    ran_at(&r, &[("do.slow.1/ego/2:speed.end", 7.10)]);
+    let want =
+        "expected 'ego' at 15.000 m/s (within 0.01 m/s) (acceleration(…) at the phase end at ";
+    let tail = "runtime_rate_relative_over_distance_fails.osc:25:17), found it at 16.700 m/s at t = 4.450 s";
+    fails(
+        "runtime_rate_relative_over_distance_fails",
+        (want, tail),
+        "do.slow.1/ego/2:speed.end",
+        4.45,
+    );
+}
