@@ -12,6 +12,12 @@
 //! `after` actions): from then on the actor keeps the speed the controller left it at. A
 //! SpeedAction of the phase sets the controller's desired speed anew (the engine's reading).
 //!
+//! Every actor that moves: a vehicle with the paper's parameters, a person or an animal with a
+//! walker's ([`WALKER_IDM`]: the same model, a pedestrian's gaps and rates), so a walker slows
+//! behind a slower one, or stops behind one standing, in its lane (the engine's leader is
+//! whatever is ahead in the lane, a vehicle, walker or stationary object). A
+//! `stationary_object` does not move: `avoid_collisions(true)` on one is an error.
+//!
 //! Either direction of travel: the `idm` controller finds the leader from the vehicle's front
 //! bumper along its lane in its lane track's direction (engine `ControllerView::leader`), so a
 //! vehicle in a lane driven in −s (`plan::against`) follows the vehicle ahead of it towards −s.
@@ -34,19 +40,41 @@ use crate::resolve::{Action, ActorKind, At, Invoke, ModKind, Modifier, Val};
 /// The controller's name in the 1.x model.
 const CONTROLLER: &str = "avoid_collisions";
 
+/// The IDM's parameters for a person or an animal (`Property` names of the engine's `idm`
+/// controller, SI units), oscsim's choice where the standard names none: a walker keeps
+/// `minimumGap` 0.5 m to the one ahead when both stand (about a step: the distance people
+/// queue at), a `timeHeadway` of 1 s when walking, starts at up to `maxAcceleration` 1 m/s²
+/// and slows at a `comfortableDeceleration` of 1.5 m/s² (a walker stops within a step or two
+/// from 1.4 m/s); δ stays the model's 4.
+pub(super) const WALKER_IDM: [(&str, f64); 4] = [
+    ("minimumGap", 0.5),
+    ("timeHeadway", 1.0),
+    ("maxAcceleration", 1.0),
+    ("comfortableDeceleration", 1.5),
+];
+
 /// An inline Controller `name` running the engine's `model` (`idm`, `mobil`) at desired speed
-/// `desired` (m/s), its other parameters the model's defaults, written at `site`.
-pub(super) fn model_controller(name: &str, model: &str, desired: f64, site: &Site) -> Controller {
+/// `desired` (m/s), the model's `params` as given and its other parameters the model's
+/// defaults, written at `site`.
+pub(super) fn model_controller(
+    name: &str,
+    model: &str,
+    desired: f64,
+    params: &[(&str, f64)],
+    site: &Site,
+) -> Controller {
     let pos = site.pos.clone();
+    let mut properties = vec![
+        ("model".to_string(), model.to_string()),
+        ("desiredSpeed".to_string(), format!("{desired}")),
+    ];
+    properties.extend(params.iter().map(|(k, v)| (k.to_string(), format!("{v}"))));
     Controller {
         name: name.to_string(),
         controller_type: None,
         properties: Properties {
-            properties: vec![
-                ("model".to_string(), model.to_string()),
-                ("desiredSpeed".to_string(), format!("{desired}")),
-            ],
-            positions: vec![pos.clone(), pos.clone()],
+            positions: vec![pos.clone(); properties.len()],
+            properties,
             files: Vec::new(),
             custom_content: Vec::new(),
         },
@@ -80,10 +108,10 @@ impl Planner<'_> {
             return Ok(());
         };
         let i = self.index[target];
-        if self.entities[i].data.kind != ActorKind::Vehicle {
+        if let ActorKind::Stationary(_) = self.entities[i].data.kind {
             return Err(m.site.err(
-                K::Unsupported,
-                format!("expected a vehicle for avoid_collisions(true) (the engine's car following drives vehicles), found `{target}`, another kind of actor"),
+                K::Unsatisfiable,
+                format!("expected a vehicle, person or animal for avoid_collisions(true), found `{target}`, a stationary_object"),
             ));
         }
         if matches!(
@@ -127,7 +155,11 @@ impl Planner<'_> {
         // The speed the plan gives the actor in the phase (its speed modifier's, else the
         // speed it has): the driver's desired speed.
         let desired = self.last_v.get(target).copied().unwrap_or(0.0);
-        let controller = model_controller(CONTROLLER, "idm", desired, &m.site);
+        let params: &[(&str, f64)] = match self.entities[self.index[target]].data.kind {
+            ActorKind::Walker(_) => &WALKER_IDM,
+            _ => &[],
+        };
+        let controller = model_controller(CONTROLLER, "idm", desired, params, &m.site);
         let longitudinal = |on: bool| ControllerDomains {
             longitudinal: Some(on),
             ..ControllerDomains::default()

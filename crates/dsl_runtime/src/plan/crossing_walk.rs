@@ -1,25 +1,35 @@
-//! `walk()` along a crossing the map bound (ASAM OpenSCENARIO DSL 2.1 §8.8.4.1 `walk`, §8.9
-//! `along`, §8.12.2.2.9 `crossing_connects`): a person (or an animal, §8.7.8: the standard's
-//! `crossing_use` has `animal`) crosses the road from the crossing's start lane to its end lane.
+//! A movement along a crossing the map bound (ASAM OpenSCENARIO DSL 2.1 §8.8.4.1 `walk`,
+//! §8.8 `move`/`drive`, §8.9 `along`, §8.12.2.2.9 `crossing_connects`): the actor crosses the
+//! road from the crossing's start lane to its end lane. Who crosses: a person's `walk()` or
+//! `move()`, an animal's `move()` (§8.7.8; the library declares `walk` on `person` only), and a
+//! vehicle's `drive()` or `move()`: the standard's `crossing_use` names `pedestrian`, `animal`,
+//! `bicycle`, `rail_road` and `other`, so a crossing is not a pedestrian's alone (a cyclist or a
+//! tram crosses the road on one); oscsim does not check the crossing's `use` against the
+//! actor (the map's crosswalks carry none).
 //!
 //! | form | lowered to | ends |
 //! | --- | --- | --- |
-//! | `p.walk() with: along(c)` | FollowTrajectoryAction in following mode `position` along the straight line from the start lane's centre to the end lane's (`map_crossings`), timed from the phase start at the walker's speed: `speed(v)` of the phase, else the speed it has | when it reaches the end lane's centre, the line's length over the speed |
+//! | `x.walk() with: along(c)` (or `move()`, `drive()`) | FollowTrajectoryAction in following mode `position` along the straight line from the start lane's centre to the end lane's (`map_crossings`), timed from the phase start at the actor's speed: `speed(v)` of the phase, else the speed it has | when it reaches the end lane's centre, the line's length over the speed |
 //! | `along(c, start_offset: a, end_offset: b)` | the same along the part of the line from a m after its start to b m before its end (the crossing's own s, §8.12.2.2.9: "The s-coordinate of the crossing increases from the start_lane to end_lane") | when it reaches that part's end, its length over the speed |
 //! | `lateral(d, side: left\|right)` beside the walk (at: start or all) | the same along the line moved d across itself to the walker's left or right (`crossing_shift`) | as above |
+//! | `lateral(d, side: …, at: end)` | the line from the walked part's start on the crossing's line to its end moved d across (the walker ends d beside the line, as `lateral(…, at: end)` ends an actor d from its lane's centre) | as above |
+//! | `lateral(d, measure_by: left_to_left \| … \| closest)` | measured from the crossing's borders, as in a lane from the lane's (`lateral::lane_offset`): the crossing's width is the crosswalk's extent across the line (the standard's `crossing.width`; its outline's box in road coordinates, as `map_crossings` takes it) | as above |
 //!
 //! The walker must be at the start of the part it walks when the walk starts (a first phase
 //! places it there, `walked_part`; a later one checks it, 0.5 m), moving, and the phase's
 //! start known to the plan; a + b must be below the crossing's length. The phase's `speed(v)`
-//! times the walk; no SpeedAction runs beside it (it would replace the walk's action). A
-//! vehicle or another action along a crossing is an error at `along`. The plan has the walker
-//! at the part's end from the end on (its lane, s and offset there); in between it keeps the
-//! walker's track along its lane (as for `follow_trajectory`), since the engine moves it.
+//! times the walk; no SpeedAction runs beside it (it would replace the walk's action). An
+//! action other than `walk`, `move` or `drive` along a crossing (a speed change, whose timing
+//! the line's does not follow), and `lateral(…)` beside another actor (§8.9 relates the
+//! actor to that one, the walk to the crossing: two lines at once) are errors at `along` and
+//! at the modifier. The plan has the walker at the part's end from the end on (its lane, s and
+//! offset there); in between it keeps the walker's track along its lane (as for
+//! `follow_trajectory`), since the engine moves it.
 
 use scenario::FollowingMode;
 
 use super::lateral;
-use super::map_crossings::MapCrossing;
+use super::map_crossings::{extent, MapCrossing};
 use super::path_shape::along as trajectory;
 use super::planner::Planner;
 use super::speed_actions::Slot;
@@ -46,14 +56,13 @@ impl Planner<'_> {
         let Route::Crossing { field } = &along.route else {
             return Ok(None);
         };
-        let walker = matches!(
-            self.entities[self.index[target]].data.kind,
-            ActorKind::Walker(_)
-        );
-        if inv.kind != Action::Move || !walker {
+        let data = &self.entities[self.index[target]].data;
+        let moves = matches!(data.kind, ActorKind::Walker(_) | ActorKind::Vehicle);
+        let width = data.bounding_box.width;
+        if inv.kind != Action::Move || !moves {
             return Err(along.site.err(
                 K::Unsupported,
-                format!("expected a person's walk() along crossing `{field}` (a person crosses the road on it), found `{target}`'s {}()", inv.action),
+                format!("expected walk(), move() or drive() of a person, animal or vehicle along crossing `{field}` (the crossing's line, timed at the phase's speed), found `{target}`'s {}()", inv.action),
             ));
         }
         let Some(c) = self.crossings.get(field).cloned() else {
@@ -68,7 +77,7 @@ impl Planner<'_> {
                 format!("expected a phase start the plan knows for a walk along crossing `{field}`, found one after a run-time condition"),
             ));
         };
-        let shift = crossing_shift(&mods.iter().collect::<Vec<_>>(), field)?;
+        let shift = crossing_shift(&self.road, &c, &mods.iter().collect::<Vec<_>>(), width)?;
         let ((lane0, s0, w0), (lane1, s1, w1)) = walked_part(&self.road, &c, along, shift)?;
         let (lane, s, w) = (
             self.track(target).lane(t),
@@ -79,7 +88,7 @@ impl Planner<'_> {
             || (s - s0).abs() > POSITION_TOLERANCE
             || (w - w0).abs() > POSITION_TOLERANCE
         {
-            let part = if along.start_offset > 0.0 || shift != 0.0 {
+            let part = if along.start_offset > 0.0 || shift.0 != 0.0 {
                 "the start of the walked part"
             } else {
                 "the start"
@@ -133,36 +142,35 @@ pub(super) type CrossingPoint = (i32, f64, f64);
 
 /// The part of crossing `c` a walk `along` it covers: from `along.start_offset` m after the
 /// crossing's start to `along.end_offset` m before its end, measured along the straight line
-/// (the crossing's own s, §8.12.2.2.9, "increases from the start_lane to end_lane"), moved
-/// `shift` m across it to the walker's left (`crossing_shift`), each end with the lane that
-/// holds it. Without offsets the crossing's own ends (lane centres). The
-/// line's points are taken between its ends in road coordinates, which is the world line where
-/// the reference line is straight under the crosswalk (as `map_crossings` lays the crossing).
-/// Offsets that leave nothing to walk are an error at `along`.
+/// (the crossing's own s, §8.12.2.2.9, "increases from the start_lane to end_lane"), its start
+/// moved `shift.0` m and its end `shift.1` m across the line to the walker's left
+/// (`crossing_shift`), each end with the lane that holds it. Without offsets the crossing's
+/// own ends (lane centres). The line's points are taken between its ends in road coordinates,
+/// which is the world line where the reference line is straight under the crosswalk (as
+/// `map_crossings` lays the crossing). Offsets that leave nothing to walk are an error at
+/// `along`.
 pub(super) fn walked_part(
     road: &PlanRoad<'_>,
     c: &MapCrossing,
     along: &Along,
-    shift: f64,
+    shift: (f64, f64),
 ) -> Result<(CrossingPoint, CrossingPoint), Error> {
     let (lane0, s0, t0) = c.crossing.start;
     let (lane1, s1, t1) = c.crossing.end;
     let (s0, s1) = (c.road_start + s0, c.road_start + s1);
     let (a, b) = (along.start_offset, along.end_offset);
-    if a == 0.0 && b == 0.0 && shift == 0.0 {
+    if a == 0.0 && b == 0.0 && shift == (0.0, 0.0) {
         return Ok(((lane0, s0, t0), (lane1, s1, t1)));
     }
     let length = (s1 - s0).hypot(t1 - t0);
-    // The walker's left of the line in road coordinates (t is to the left of s): the line's
-    // direction turned by +90°.
-    let (ns, nt) = (-(t1 - t0) / length, (s1 - s0) / length);
+    let (ns, nt) = normal(c);
     if a + b >= length {
         return Err(along.site.err(
             K::Unsatisfiable,
             format!("expected start_offset + end_offset below the length of crossing `{}`, {length:.2} m ({}), found {a} m + {b} m", c.field, c.why),
         ));
     }
-    let at = |f: f64| -> Result<CrossingPoint, Error> {
+    let at = |f: f64, shift: f64| -> Result<CrossingPoint, Error> {
         let (s, t) = (
             s0 + f * (s1 - s0) + shift * ns,
             t0 + f * (t1 - t0) + shift * nt,
@@ -179,49 +187,105 @@ pub(super) fn walked_part(
             })?;
         Ok((lane, s, t))
     };
-    Ok((at(a / length)?, at(1.0 - b / length)?))
+    Ok((at(a / length, shift.0)?, at(1.0 - b / length, shift.1)?))
 }
 
-/// How far `lateral(d, side: left|right)` among `mods` (the walk's modifiers) moves a walk
-/// along a crossing across it (m, + to the walker's left as it walks the crossing; 0 without
-/// one): the crossing is the walk's route, so the lateral position is the walker's reference
-/// point from the crossing's line (§8.9 `lateral`, measured `center_to_center`, the default
-/// here), held over the walk (at: start or all). Beside another actor, at: end, or measured to
-/// a lane's border (`closest`, `left_to_left`, …: the crossing has no borders) are errors at
-/// the modifier.
-pub(super) fn crossing_shift(mods: &[&Modifier], field: &str) -> Result<f64, Error> {
+/// The walker's left of crossing `c`'s line in road coordinates (t is to the left of s): the
+/// line's direction turned by +90°, a unit vector (ds, dt).
+fn normal(c: &MapCrossing) -> (f64, f64) {
+    let (_, s0, t0) = c.crossing.start;
+    let (_, s1, t1) = c.crossing.end;
+    let length = (s1 - s0).hypot(t1 - t0);
+    (-(t1 - t0) / length, (s1 - s0) / length)
+}
+
+/// The borders of crossing `c` across its line (m, + to the walker's left): the crosswalk's
+/// extent in road coordinates (`map_crossings::extent`, the box that holds the line) projected
+/// on the line's normal, its right border R ≤ 0 and its left L ≥ 0 from the line.
+fn borders(road: &PlanRoad<'_>, c: &MapCrossing) -> Option<(f64, f64)> {
+    let r = road.network().roads().get(c.crossing.road)?;
+    let o = r.objects.iter().find(|o| o.id == c.crossing.object)?;
+    let (s_min, s_max, t_min, t_max) = extent(o)?;
+    let (_, s0, t0) = c.crossing.start;
+    let (ns, nt) = normal(c);
+    let across = [
+        (s_min, t_min),
+        (s_min, t_max),
+        (s_max, t_min),
+        (s_max, t_max),
+    ]
+    .map(|(s, t)| (s - s0) * ns + (t - t0) * nt);
+    let fold = |f: fn(f64, f64) -> f64, init| across.iter().copied().fold(init, f);
+    Some((
+        fold(f64::min, f64::INFINITY),
+        fold(f64::max, f64::NEG_INFINITY),
+    ))
+}
+
+/// How far `lateral(…)` among `mods` (the walk's modifiers) moves a walk along crossing `c`
+/// across it, at the walked part's start and at its end (m, + to the walker's left as it walks
+/// the crossing; 0 without one), for a walker `width` m wide: the crossing is the walk's
+/// route, so the lateral position is taken across it (§8.9 `lateral`). Without `measure_by`,
+/// or `center_to_center`, the walker's reference point d from the crossing's line (the line a
+/// crossing is, §8.12.2.2.9); another measure from the crossing's borders, as in a lane from
+/// the lane's (`lateral::lane_offset`, the crosswalk's extent across the line its width). At:
+/// start or all the walk keeps that line; at: end it starts on the crossing's line and ends
+/// there (the shift at the start 0). Beside another actor: an error at the modifier.
+pub(super) fn crossing_shift(
+    road: &PlanRoad<'_>,
+    c: &MapCrossing,
+    mods: &[&Modifier],
+    width: f64,
+) -> Result<(f64, f64), Error> {
     let Some(m) = mods.iter().find(|m| m.kind == ModKind::Lateral) else {
-        return Ok(0.0);
+        return Ok((0.0, 0.0));
     };
-    let refuse = |what: String| {
-        Err(m.site.err(
-            K::Unsupported,
-            format!("expected lateral(d, side: left or right) at: start or all beside a walk along crossing `{field}` (the walker's reference point d from the crossing's line), found {what}"),
-        ))
-    };
+    let field = &c.field;
     if lateral::reference(m)?.is_some() {
-        return refuse("a position beside another actor".into());
+        return Err(m.site.err(
+            K::Unsupported,
+            format!("expected lateral(…) measured across crossing `{field}` beside a walk along it (the walker's place on the crossing), found a position beside another actor"),
+        ));
     }
-    if m.at == At::End {
-        return refuse("at: end (the walk keeps one line)".into());
-    }
-    match m.arg("measure_by").map(Arg::eval).transpose()? {
-        None => {}
-        Some(Val::Enum(e)) if e == "center_to_center" => {}
-        Some(Val::Enum(e)) => {
-            return refuse(format!("measure_by: {e} (a crossing has no borders)"))
+    let measure = match m.arg("measure_by").map(Arg::eval).transpose()? {
+        None => None,
+        Some(Val::Enum(e)) if e == "center_to_center" => None,
+        Some(Val::Enum(e)) => Some(e),
+        Some(_) => {
+            return Err(m.site.err(
+                K::Modifier,
+                "expected a lat_measure_by in lateral(…, measure_by: …), found another value",
+            ))
         }
-        Some(_) => return refuse("a measure_by that is no lat_measure_by".into()),
-    }
-    let d = m
-        .arg("distance")
-        .map(Arg::number)
-        .transpose()?
-        .unwrap_or(0.0);
-    let left = match m.arg("side").map(Arg::eval).transpose()? {
-        Some(Val::Enum(e)) if e == "right" => false,
-        Some(Val::Enum(e)) if e == "left" => true,
-        _ => return refuse("no side: left or right".into()),
     };
-    Ok(if left { d } else { -d })
+    let d = match measure {
+        None => {
+            let d = m
+                .arg("distance")
+                .map(Arg::number)
+                .transpose()?
+                .unwrap_or(0.0);
+            match m.arg("side").map(Arg::eval).transpose()? {
+                Some(Val::Enum(e)) if e == "right" => -d,
+                Some(Val::Enum(e)) if e == "left" => d,
+                _ => {
+                    return Err(m.site.err(
+                        K::Modifier,
+                        format!("expected side: left or right in lateral(…) beside a walk along crossing `{field}` (which side of the crossing's line), found none"),
+                    ))
+                }
+            }
+        }
+        Some(e) => {
+            let (right, left) = borders(road, c).ok_or_else(|| {
+                m.site.err(
+                    K::Road,
+                    format!("expected crosswalk `{}` of crossing `{field}` with an extent to measure lateral(…, measure_by: {e}) from, found none", c.crossing.object),
+                )
+            })?;
+            // The crossing as a lane of width left − right centred between its borders.
+            (left + right) / 2.0 + lateral::lane_offset(m, left - right, width)?
+        }
+    };
+    Ok(if m.at == At::End { (0.0, d) } else { (d, d) })
 }

@@ -47,7 +47,7 @@ pub(crate) struct MapCrossing {
 
 /// The extent of `o`'s outline on `road` in s and t: (s_min, s_max, t_min, t_max), if it has
 /// an outline or a length and width.
-fn extent(o: &Object) -> Option<(f64, f64, f64, f64)> {
+pub(super) fn extent(o: &Object) -> Option<(f64, f64, f64, f64)> {
     let (c, sn) = (o.hdg.cos(), o.hdg.sin());
     let local = |u: f64, v: f64| (o.s + u * c - v * sn, o.t + u * sn + v * c);
     let mut pts: Vec<(f64, f64)> = o

@@ -343,7 +343,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                 _ => None,
             })
             .map(|(c, a)| {
-                let shift = crossing_walk::crossing_shift(&mods, &c.field)?;
+                let shift =
+                    crossing_walk::crossing_shift(road, c, &mods, e.data.bounding_box.width)?;
                 crossing_walk::walked_part(road, c, a, shift).map(|(start, _)| start)
             })
             .transpose()?;

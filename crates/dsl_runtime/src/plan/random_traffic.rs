@@ -320,7 +320,8 @@ impl Planner<'_> {
             }
             for m in &members {
                 let e = self.index[m];
-                self.entities[e].driver = Some(model_controller(CONTROLLER, "mobil", v0, &site));
+                self.entities[e].driver =
+                    Some(model_controller(CONTROLLER, "mobil", v0, &[], &site));
                 // From the start the engine's model moves the member.
                 self.engine_moved.insert(m.clone(), Some(0.0));
             }

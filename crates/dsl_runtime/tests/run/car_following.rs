@@ -60,3 +60,38 @@ fn avoid_collisions_ends_with_its_phase() {
         b.s
     );
 }
+
+/// How close a walker stopping behind one standing is to s0 after 60 s (m): the gap decays
+/// towards s0 from above; 2 cm is small beside the 19 m it closes by.
+const STOPPED_GAP: f64 = 0.02;
+/// The first step's speed against the IDM at t = 0 held over dt (m/s): round-off only.
+const FIRST_STEP: f64 = 1e-6;
+
+#[test]
+fn a_person_avoiding_collisions_stops_behind_one_standing_in_her_lane() {
+    // walker_avoid_collisions.osc: the IDM with a walker's parameters, worked in the file.
+    let r = run("walker_avoid_collisions", 0, None);
+    let gap = |t: f64| (r.at(t, "bob").s - 0.25) - (r.at(t, "alice").s + 0.25);
+    assert!((gap(0.0) - 19.5).abs() < 1e-9, "gap(0) = {}", gap(0.0));
+    let v1 = r.at(DT, "alice").speed;
+    assert!(
+        (v1 - 1.399_041_3).abs() < FIRST_STEP,
+        "alice v({DT}) = {v1}"
+    );
+    // Never closer than s0: no collision.
+    for (t, _) in &r.frames {
+        assert!(gap(*t) > 0.5 - 1e-9, "gap {} at {t}", gap(*t));
+    }
+    assert!(
+        (gap(60.0) - 0.5).abs() < STOPPED_GAP,
+        "gap(60) = {}",
+        gap(60.0)
+    );
+    assert!(
+        r.at(60.0, "alice").speed < 0.01,
+        "{:?}",
+        r.at(60.0, "alice")
+    );
+    assert!((r.at(60.0, "bob").s - 30.0).abs() < 1e-9);
+    assert_eq!(r.at(60.0, "alice").lane, r.at(60.0, "bob").lane);
+}

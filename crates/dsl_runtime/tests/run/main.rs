@@ -6,6 +6,7 @@ mod actors;
 mod along;
 mod bad_input;
 mod car_following;
+mod crossings;
 mod declared;
 mod distance;
 mod gap_actions;

@@ -449,18 +449,6 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "18:13",
     );
     refused(
-        "err_map_crossing_lateral",
-        "crosswalk",
-        "expected lateral(d, side: left or right) at: start or all beside a walk along crossing `c` (the walker's reference point d from the crossing's line), found at: end (the walk keeps one line)",
-        "13:9",
-    );
-    refused(
-        "err_map_crossing_drive",
-        "crosswalk",
-        "expected a person's walk() along crossing `c` (a person crosses the road on it), found `car`'s drive()",
-        "10:13",
-    );
-    refused(
         "err_map_sequence_named",
         "road_link_unequal_number_of_lanes0",
         "expected the succeeding route to start where the preceding one ends (road 2 at s = 60 m) or after it: expected a path in lane -1 from road 2 at s = 60 m to road 1 at s = 10 m in the driving direction, found none",

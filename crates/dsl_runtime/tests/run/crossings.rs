@@ -1,0 +1,98 @@
+//! Crossings crossed by every actor that moves, and the walker's place across them
+//! (`plan/crossing_walk.rs`; ASAM OpenSCENARIO DSL 2.1 §8.12.2.2.9 `crossing_connects`, §8.9
+//! `lateral`). Positions worked by hand in the scenario files' comments.
+
+use crate::support::{lower_at, run_on};
+
+/// Positions along a straight crossing on a straight road: float round-off only.
+const XY_TOL: f64 = 1e-6;
+/// Phase ends are step times.
+const T_TOL: f64 = 1e-9;
+
+fn refused(name: &str, text: &str, place: &str) {
+    let e = match lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        "tests/roads/crosswalk.xodr",
+        0,
+        None,
+    ) {
+        Ok(_) => panic!("{name}: planned"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        e.contains(text) && e.ends_with(&format!("{name}.osc:{place}")),
+        "{e}"
+    );
+}
+
+fn at(r: &crate::support::Run, who: &str, t: f64, x: f64, y: f64) {
+    let p = r.at(t, who);
+    assert!(
+        (p.x - x).abs() < XY_TOL && (p.y - y).abs() < XY_TOL,
+        "{who} at {t} s: {p:?}, expected ({x}, {y})"
+    );
+}
+
+#[test]
+fn an_animal_and_a_vehicle_cross_the_road_on_crossings() {
+    let r = run_on("crossing_others", "crosswalk");
+    for (t, y) in [(0.0, -1.75), (1.75, 0.0), (3.5, 1.75)] {
+        at(&r, "dog", t, 100.0, y);
+    }
+    assert_eq!(r.at(0.0, "dog").lane, -1);
+    assert_eq!(r.at(3.5, "dog").lane, 1);
+    for (t, y) in [(0.0, 1.75), (0.5, 0.75), (1.75, -1.75)] {
+        at(&r, "bike", t, 99.0, y);
+    }
+    assert!(
+        (r.at(0.5, "bike").h + std::f64::consts::FRAC_PI_2).abs() < XY_TOL,
+        "bike heads -y"
+    );
+    assert_eq!(r.at(1.75, "bike").lane, -1);
+    for (phase, end) in [("do.trot", 3.5), ("do.ride", 1.75)] {
+        let (_, e) = r.phase(phase);
+        assert!((e - end).abs() < T_TOL, "{phase} ends at {e}");
+    }
+}
+
+#[test]
+fn a_walker_ends_beside_a_crossing_or_keeps_a_distance_from_its_border() {
+    let r = run_on("crossing_lateral", "crosswalk");
+    let (len, v) = (3.5f64.hypot(0.5), 0.5);
+    at(&r, "alice", 0.0, 100.0, -1.75);
+    let half = len / v / 2.0;
+    // Between steps: the line is straight, so the mid-point is interpolated from the two
+    // steps around it (the engine's pose at each is on the line).
+    let (t0, t1) = ((half / 0.05).floor() * 0.05, (half / 0.05).ceil() * 0.05);
+    let (p0, p1) = (r.at(t0, "alice"), r.at(t1, "alice"));
+    let f = (half - t0) / (t1 - t0);
+    let (x, y) = (p0.x + f * (p1.x - p0.x), p0.y + f * (p1.y - p0.y));
+    assert!(
+        (x - 99.75).abs() < XY_TOL && y.abs() < XY_TOL,
+        "alice half way: ({x}, {y})"
+    );
+    assert_eq!(r.at(7.0, "alice").lane, 1);
+    // At 7 s, t/T of the way from (100, -1.75) to (99.5, 1.75), T = 7.071068 s (after T she
+    // walks on at her speed until the phase's end at the step 7.1 s).
+    let f = 7.0 / (len / v);
+    at(&r, "alice", 7.0, 100.0 - 0.5 * f, -1.75 + 3.5 * f);
+    let (_, e) = r.phase("do.aside");
+    assert!((e - 7.1).abs() < T_TOL, "aside ends at {e}");
+    for (t, y) in [(0.0, -1.75), (1.75, 0.0), (3.5, 1.75)] {
+        at(&r, "bob", t, 99.0, y);
+    }
+}
+
+#[test]
+fn what_a_crossing_does_not_run_is_an_error_at_its_place() {
+    refused(
+        "err_crossing_lateral_beside",
+        "expected lateral(…) measured across crossing `c` beside a walk along it (the walker's place on the crossing), found a position beside another actor",
+        "17:13",
+    );
+    refused(
+        "err_crossing_speed_action",
+        "expected walk(), move() or drive() of a person, animal or vehicle along crossing `c`",
+        "10:9",
+    );
+}
