@@ -32,9 +32,10 @@
 //! relative to another actor, `along` a named route), the marks of `distance(d)` and of a gap
 //! without a phase duration, the TravelAction — it measures along the actor's direction of
 //! travel, in the numbers the plan writes (u = L − s, t to the actor's left): the plan gives
-//! it the direction with the roads (`Planner::chain`, `scenario::PlanRoads`). The rest is an
-//! error at the action or modifier (not run yet), never planned in the wrong direction: the
-//! group forms of the path actions after a run-time condition (`group_path_runtime`).
+//! it the direction with the roads (`Planner::chain`, `scenario::PlanRoads`); so do the group
+//! forms of the path actions after a run-time condition (`group_path_runtime`: member 0's
+//! check at the part's start, a column's offsets; a block's RelativeRoadPositions in the road
+//! frame, the view's offsets turned).
 //!
 //! The gap actions (`change_space_gap`, `keep_space_gap`, `change_time_headway`,
 //! `keep_time_headway`) run between two actors driving against s: the engine's
@@ -106,8 +107,8 @@ pub(crate) fn check_references(
             // The group forms of the position and path actions run on the view: `assign_position`,
             // `change_position` (`position_actions::formation_place`) and the path actions at a
             // start the plan knows (`group_path`) move the formation by its offsets from member 0
-            // taken in the view (along the direction of travel, to the drivers' left); after a
-            // run-time condition the path forms are refused in `group_path_runtime`;
+            // taken in the view (along the direction of travel, to the drivers' left), after a
+            // run-time condition too (`group_path_runtime`);
             // `assign_orientation` turns each standing member where it is to a world yaw.
             against
         };

@@ -44,8 +44,8 @@
 //!
 //! For a group driving against s (`against`) the plan road is the view of its direction, so the
 //! offsets, lead-ins and moved paths above are in u along the direction of travel and t to the
-//! drivers' left; after a run-time condition the relative positions and checks would be in the
-//! road frame, so that is an error (`group_path_runtime`).
+//! drivers' left; after a run-time condition too, the engine's checks carrying the direction
+//! and a block's relative positions turned to the road frame (`group_path_runtime`).
 
 use super::path_part::{cut, samples, Samples};
 use super::path_shape::{segment_lengths, Pose2};

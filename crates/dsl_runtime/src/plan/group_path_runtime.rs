@@ -20,6 +20,12 @@
 //! plan does not know v₀, so the engine reads member 0's speed when the action starts and
 //! adds each point's distance over it to its stamp (oscsim's FollowTrajectoryAtSpeed,
 //! [`ColumnTimes`]); member 0 standing then is an error record and a failed run.
+//!
+//! A group driving against s (`against`) runs the same on its view: member 0's check is in the
+//! view's u = L − s and offset to the drivers' left, which the engine measures so (the check
+//! carries the direction, `Planner::chain`), a column member's offset along the direction of
+//! travel (`formation_check`), and a block member's RelativeRoadPositions, which are in the road
+//! frame, the view's (Δu, Δt) from the part's start turned to (−Δu, −Δt).
 
 use scenario::{PositionKind, StateCheck};
 
@@ -77,20 +83,12 @@ impl Planner<'_> {
         let Some(lead) = self.groups.get(&inv.actor).and_then(|m| m.first()) else {
             return Ok(None);
         };
-        // Against s the members' relative positions and checks would be in the road frame,
-        // not the view's (u along the direction of travel, t to its left): not run yet.
-        if self.road.is_against() {
-            return Err(given.site.err(
-                K::Unsupported,
-                format!("expected a start the plan knows for {}(…) on group `{}`, which drives against s, found a phase that starts on a run-time condition (not run yet against s: after one the members follow places relative to themselves in the road frame)", inv.action, inv.actor),
-            ));
-        }
         let Some(part) = followed_part(inv, given)? else {
             return Ok(None);
         };
         if lead == target {
             let (lane, s, offset) = self.part_start(given, &part)?;
-            let (road, s_road) = self.road.road_at(s);
+            let (road, _) = self.road.road_at(s);
             let check = StateCheck {
                 what: format!(
                     "the start of group `{}`'s path in {}(…) at {}",
@@ -99,8 +97,11 @@ impl Planner<'_> {
                     given.site.at()
                 ),
                 lane: Some((road.id.clone(), lane)),
-                s: Some((s_road, POSITION_TOLERANCE)),
+                // The view's s and offset, which the engine measures as the roads say: on
+                // one road its own s in +s, u = L - s against s; on several the plan's.
+                s: Some((s, POSITION_TOLERANCE)),
                 offset: Some((offset, POSITION_TOLERANCE)),
+                roads: self.chain(),
                 ..StateCheck::default()
             };
             let part = part
@@ -134,12 +135,15 @@ impl Planner<'_> {
             road.push((s, self.road.lane_center(lane, s) + offset));
         }
         let (s0, t0) = road[0];
+        // A RelativeRoadPosition is in the road frame: against s the view's u and t (along
+        // the direction of travel, to its left) both run the other way.
+        let k = if self.road.is_against() { -1.0 } else { 1.0 };
         let kinds = road
             .iter()
             .map(|&(s, t)| PositionKind::RelativeRoad {
                 entity_ref: target.to_string(),
-                ds: s - s0,
-                dt: t - t0,
+                ds: k * (s - s0),
+                dt: k * (t - t0),
                 orientation: None,
             })
             .collect();

@@ -325,11 +325,6 @@ fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
             "expected the members of group `g` to drive one direction (its formation is placed along one direction of travel), found `g.vehicles[1]` in +s and `g.vehicles[0]` against s",
             "15:9",
         ),
-        (
-            "err_opposite_group_path_runtime",
-            "expected a start the plan knows for replay_path(…) on group `g`, which drives against s, found a phase that starts on a run-time condition (not run yet against s",
-            "37:41",
-        ),
     ] {
         let e = error_on(name, "straight");
         assert!(
@@ -337,4 +332,75 @@ fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
             "{name}: {e}"
         );
     }
+}
+
+/// g.replay_path against s after a run-time condition: member 0 checked at the path's start
+/// and member 1 at its offset along the direction of travel, its lead-in from there
+/// (opposite_group_replay_path_runtime.osc, by hand there).
+#[test]
+fn a_column_against_s_replays_a_path_after_a_run_time_condition_from_its_checked_offset() {
+    let r = &run_on("opposite_group_replay_path_runtime", "straight");
+    let (s, e) = r.phase("do.signal.1.follow");
+    assert!(
+        (s - 2.55).abs() < T_TOL && (e - 7.3).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    for (t, i, x) in [
+        (2.55, 0, 874.5),
+        (2.55, 1, 889.5),
+        (4.05, 1, 874.5),
+        (5.55, 1, 859.5),
+    ] {
+        driving_against_s_at(r, (t, i), 2, (x, 5.25));
+    }
+    on_the_leg_at(r, (6.55, 1), 849.7);
+    // The path's end, in lane 1, still heading along the leg (its last segment).
+    for (t, i) in [(5.8, 0), (7.3, 1)] {
+        let m = r.at(t, &member(i));
+        assert!(
+            m.lane == 1 && (m.x - 842.5).abs() < S_TOL && (m.y - 1.75).abs() < S_TOL,
+            "{m:?}"
+        );
+        assert!(
+            wrap(m.h - ((3.5f64 / 12.0).atan() - PI)).abs() < H_TOL,
+            "{m:?}"
+        );
+    }
+}
+
+/// g.follow_trajectory against s after a run-time condition for a group over two lanes:
+/// member 1's points relative to itself in the road frame, member 0's path moved 3.5 m to the
+/// drivers' left (opposite_group_block_trajectory_runtime.osc, by hand there).
+#[test]
+fn a_group_over_two_lanes_against_s_follows_a_trajectory_after_a_run_time_condition() {
+    let r = run_on("opposite_group_block_trajectory_runtime", "straight");
+    let (s, e) = r.phase("do.signal.1.follow");
+    assert!(
+        (s - 2.55).abs() < T_TOL && (e - 6.55).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    for (i, (lane, y)) in [(2, 5.25), (1, 1.75)].into_iter().enumerate() {
+        for (t, x) in [(2.55, 874.5), (5.55, 844.5), (6.55, 834.5)] {
+            driving_against_s_at(&r, (t, i), lane, (x, y));
+        }
+    }
+}
+
+/// Against s after a run-time condition the engine checks member 0 at the path's start in the
+/// view's u: 5.5 m past it, the run fails (opposite_group_path_runtime_off.osc).
+#[test]
+fn a_column_against_s_off_the_paths_start_after_a_run_time_condition_fails_the_run() {
+    let name = "tests/scenarios/opposite_group_path_runtime_off.osc";
+    let lowered = crate::support::lower_at(name, "tests/roads/straight.xodr", 0, None)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = crate::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    // u = 1000 - 880 m asked, 100 + 25.5 m found (the comment).
+    let want = "expected 'g.vehicles[0]' at u = 120.000 m along the direction of travel (against s) (within 0.5 m) (the start of group `g`'s path in replay_path(…) at ";
+    let tail = "opposite_group_path_runtime_off.osc:38:41), found it at u = 125.500 m along the direction of travel (against s) at t = 2.550 s";
+    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 2.55).abs() < T_TOL, "{records:?}");
+    assert_eq!(records[0].1, "do.signal.1.1/g.vehicles[0]/1:check");
+    assert_eq!(records[0].2, error);
 }
