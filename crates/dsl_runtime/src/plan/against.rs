@@ -18,7 +18,8 @@
 //! `change_lane`, `keep_lane`, `keep_speed`, `keep_position`, `distance`, `along`,
 //! `physical_movement`, `lateral(d)` in the lane (offsets to the left of the direction of
 //! travel in the plan, turned to the road's t by the lowering), `yaw`/`orientation` relative to
-//! the road's s-axis (§8.9.9: π along a lane driven in −s, `checks::check_orientation`),
+//! the road's s-axis (§8.9.9: π along a lane driven in −s, `checks::check_orientation`), in the
+//! world or from another object (`heading`: the view's heading is the road's turned by π),
 //! `shape:` (its action's dynamics, `shapes`), and `lateral` and `acceleration` relative to an
 //! actor driving against s too (left and right are the drivers': the view's t, which the
 //! lowering turns to the road's; an acceleration has no direction), and the position and
@@ -57,7 +58,9 @@
 //! `along` (`check_alongs`).
 //!
 //! Between actors of opposite directions: the speed relations (`speed(…, faster_than /
-//! slower_than / same_as: x)`) run, a speed having no direction; every other relation
+//! slower_than / same_as: x)`) run, a speed having no direction, and so do the yaws measured
+//! from x's axes (`yaw`/`orientation` with `relative_to: x`, an angle in the world frame,
+//! `heading`); every other relation
 //! (`position(d, ahead_of/behind: x)`, `lane(same_as/side_of/left_of/right_of: x)`, a gap or
 //! a lane change relative to x) is an error at the argument: §8.9 places the actor "ahead of"
 //! or "behind" x, or in a lane counted from x's, along the direction both travel, and two
@@ -143,6 +146,11 @@ pub(crate) fn check_references(
             if m.is_some_and(|m| m.kind == ModKind::Speed)
                 && SPEED_REFERENCES.contains(&key.as_str())
             {
+                continue;
+            }
+            // The angle between two objects' axes (`yaw`/`orientation` relative_to: x) is
+            // measured in the world frame, which has no direction (`heading`).
+            if m.is_some_and(|m| m.kind == ModKind::Orientation) && key == "relative_to" {
                 continue;
             }
             let how = |a: bool| if a { "against s" } else { "in +s" };

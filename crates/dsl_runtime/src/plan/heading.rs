@@ -21,8 +21,14 @@
 //! heading other than its lane's becomes its yaw relative to the road from the run's start
 //! (the Init's relative Orientation), under the physical rules of a yaw relative to the road
 //! (`checks::crabwise`).
+//!
+//! An actor driving against s (`crate::road`'s view, `against`) faces −s: its yaw relative to
+//! the road's s-axis is π unless its first phase asks another, and its place is on its view
+//! (u = L − s, t to its left), whose headings are the road's turned by π. An angle between two
+//! objects' axes is one of the world frame, so a reference x of either direction is measured
+//! the same way.
 
-use std::f64::consts::FRAC_PI_2;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{ActorKind, At};
@@ -34,23 +40,48 @@ use super::types::{Frame, HeadingAsk};
 pub(crate) const SAME_ANGLE: f64 = 1e-3 * std::f64::consts::PI / 180.0;
 
 impl Planner<'_> {
-    /// The heading (rad) of the road's s-axis where `name` is at `t`, on the plan's roads
-    /// in +s; `None` off them.
+    /// The heading (rad) of the road's s-axis where `name` is at `t`, on the plan's roads;
+    /// `None` off them. An actor driving against s is placed on its view (`against_road`, in u
+    /// along its direction of travel), whose headings are the road's turned by π.
     fn road_heading(&self, name: &str, t: f64) -> Option<f64> {
-        self.road
-            .world_pose(self.s_at(name, t), self.t_at(name, t))
-            .map(|p| p.2)
+        let (road, along) = match self.entities[self.index[name]].against {
+            true => (self.against_road.as_ref()?, PI),
+            false => (&self.road, 0.0),
+        };
+        road.world_pose(self.s_on(road, name, t), self.t_on(road, name, t))
+            .map(|p| opendrive::normalize_angle(p.2 - along))
     }
 
-    /// The world heading of `name` at `t` as planned: its lane's, turned by its yaw relative to
-    /// the road (its first phase's, else 0); a stationary object's, its location's yaw.
+    /// The yaw relative to the road's s-axis of `name` driving along its lane (§8.9.9): 0 in
+    /// +s, π against s (it faces −s).
+    fn yaw_along(&self, name: &str) -> f64 {
+        if self.entities[self.index[name]].against {
+            PI
+        } else {
+            0.0
+        }
+    }
+
+    /// The heading (rad) of `name`'s lane at `t` in its direction of travel.
+    fn lane_heading(&self, name: &str, t: f64) -> Option<f64> {
+        Some(opendrive::normalize_angle(
+            self.road_heading(name, t)? + self.yaw_along(name),
+        ))
+    }
+
+    /// The world heading of `name` at `t` as planned: the road's s-axis turned by its yaw
+    /// relative to the road (its first phase's, else along its lane: 0, or π against s); a
+    /// stationary object's, its location's yaw.
     fn heading_of(&self, name: &str, t: f64) -> Option<f64> {
         let e = &self.entities[self.index[name]];
         // A stationary object stands at its location's yaw (§8.7.3.1.1), off any lane.
         if let ActorKind::Stationary(l) = &e.data.kind {
             return Some(l.orientation[0]);
         }
-        Some(self.road_heading(name, t)? + e.yaw.as_ref().map_or(0.0, |(y, _)| *y))
+        let yaw = e.yaw.as_ref().map_or(self.yaw_along(name), |(y, _)| *y);
+        Some(opendrive::normalize_angle(
+            self.road_heading(name, t)? + yaw,
+        ))
     }
 }
 
@@ -69,7 +100,6 @@ pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result
         .filter(world_first)
         .chain(firsts.filter(|a| !world_first(a)))
     {
-        refuse_against(p, a)?;
         let e = p.index[a.actor.as_str()];
         // Where the ask holds first: its yaw relative to the road is the actor's throughout.
         let t = match (a.at, a.end) {
@@ -77,15 +107,14 @@ pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result
             _ => a.t0,
         };
         if p.entities[e].yaw.is_none() {
-            let lane = p.road_heading(&a.actor, t).ok_or_else(|| off_road(a))?;
-            let rel = opendrive::normalize_angle(wanted(p, a, t)?.0 - lane);
-            if rel.abs() > SAME_ANGLE {
+            let axis = p.road_heading(&a.actor, t).ok_or_else(|| off_road(a))?;
+            let rel = opendrive::normalize_angle(wanted(p, a, t)?.0 - axis);
+            if opendrive::normalize_angle(rel - p.yaw_along(&a.actor)).abs() > SAME_ANGLE {
                 p.entities[e].yaw = Some((rel, a.site.clone()));
             }
         }
     }
     for a in asks {
-        refuse_against(p, a)?;
         let e = p.index[a.actor.as_str()];
         let off_road = || off_road(a);
         let times: Vec<f64> = match (a.at, a.end) {
@@ -113,7 +142,7 @@ pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result
             let (h, hx) = wanted(p, a, t)?;
             let got = p.heading_of(&a.actor, t).ok_or_else(off_road)?;
             if opendrive::normalize_angle(got - h).abs() > SAME_ANGLE {
-                let lane = p.road_heading(&a.actor, t).ok_or_else(off_road)?;
+                let lane = p.lane_heading(&a.actor, t).ok_or_else(off_road)?;
                 let (measure, of_x) = match (&a.frame, hx) {
                     (Frame::World(_, m), _) => (*m, String::new()),
                     (Frame::Road, _) => ("relative to the road", String::new()),
@@ -160,25 +189,6 @@ fn off_road(a: &HeadingAsk) -> Error {
             a.actor, a.t0
         ),
     )
-}
-
-/// An actor driving against s (or a reference that does) is not checked: the plan's tracks
-/// of such an actor are on the roads' view against s.
-fn refuse_against(p: &Planner<'_>, a: &HeadingAsk) -> Result<(), Error> {
-    let x = match &a.frame {
-        Frame::Object(_, x, _) => Some(x.as_str()),
-        Frame::World(..) | Frame::Road => None,
-    };
-    match std::iter::once(a.actor.as_str())
-        .chain(x)
-        .find(|n| p.entities[p.index[*n]].against)
-    {
-        Some(n) => Err(a.site.err(
-            K::Unsupported,
-            format!("expected actors driving in +s for a yaw measured in the world or from another object, found `{n}` driving against s (not planned yet)"),
-        )),
-        None => Ok(()),
-    }
 }
 
 /// The heading offset of a `yaw` measure between two objects' axes (module doc), `None` for a

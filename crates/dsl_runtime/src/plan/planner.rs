@@ -200,9 +200,14 @@ impl Planner<'_> {
     /// s of `name` at time `t`: its track's distance along its lane's centre line from its
     /// start, as s of the road (the engine moves vehicles along lane centres).
     pub(crate) fn s_at(&self, name: &str, t: f64) -> f64 {
+        self.s_on(&self.road, name, t)
+    }
+
+    /// [`s_at`](Self::s_at) on `road` (the plan road, or the view `name` is planned on).
+    pub(crate) fn s_on(&self, road: &PlanRoad<'_>, name: &str, t: f64) -> f64 {
         let tr = self.track(name);
         let s0 = tr.at(0.0).0;
-        self.road.s_after(tr.lane(0.0), s0, tr.at(t).0 - s0)
+        road.s_after(tr.lane(0.0), s0, tr.at(t).0 - s0)
     }
 
     /// The overhangs of `actor`'s and `other`'s bounding boxes towards each other (m): the
@@ -223,8 +228,13 @@ impl Planner<'_> {
     /// t of `name`'s reference point across the road at time `t` (m): its planned lane's centre
     /// and offset from it.
     pub(crate) fn t_at(&self, name: &str, t: f64) -> f64 {
+        self.t_on(&self.road, name, t)
+    }
+
+    /// [`t_at`](Self::t_at) on `road` (the plan road, or the view `name` is planned on).
+    pub(crate) fn t_on(&self, road: &PlanRoad<'_>, name: &str, t: f64) -> f64 {
         let tr = self.track(name);
-        self.road.lane_center(tr.lane(t), self.s_at(name, t)) + tr.offset(t)
+        road.lane_center(tr.lane(t), self.s_on(road, name, t)) + tr.offset(t)
     }
 
     /// How far `name`'s bounding box reaches from its reference point to its left (`left`) or

@@ -317,21 +317,16 @@ fn a_group_over_two_lanes_against_s_follows_the_trajectory_moved_by_each_offset(
     phases_are(&r, &[("do.0", 0.0, 4.0)]);
 }
 
+/// A group whose members drive both ways: an error at its invocation (err_opposite_group_mixed).
 #[test]
-fn what_does_not_run_for_a_group_against_s_is_an_error_at_its_invocation() {
-    for (name, text, place) in [
-        (
-            "err_opposite_group_mixed",
-            "expected the members of group `g` to drive one direction (its formation is placed along one direction of travel), found `g.vehicles[1]` in +s and `g.vehicles[0]` against s",
-            "15:9",
-        ),
-    ] {
-        let e = error_on(name, "straight");
-        assert!(
-            e.contains(text) && e.ends_with(&format!("{name}.osc:{place}")),
-            "{name}: {e}"
-        );
-    }
+fn a_group_whose_members_drive_both_ways_is_an_error_at_its_invocation() {
+    let name = "err_opposite_group_mixed";
+    let e = error_on(name, "straight");
+    let text = "expected the members of group `g` to drive one direction (its formation is placed along one direction of travel), found `g.vehicles[1]` in +s and `g.vehicles[0]` against s";
+    assert!(
+        e.contains(text) && e.ends_with(&format!("{name}.osc:15:9")),
+        "{e}"
+    );
 }
 
 /// g.replay_path against s after a run-time condition: member 0 checked at the path's start

@@ -221,3 +221,45 @@ fn a_moving_actor_facing_north_moves_crabwise_only_where_non_physical_movement_i
         "10:13",
     );
 }
+
+/// Yaws measured in the world or from another object for actors driving against s (facing -s,
+/// the road's heading turned by pi) and for a reference that does, on bend.xodr
+/// (yaw_against.osc's comment, by hand there).
+#[test]
+fn yaws_measured_in_the_world_or_from_another_object_hold_for_actors_driving_against_s() {
+    use std::f64::consts::{FRAC_PI_4, PI};
+    let r = run_on("yaw_against", "bend");
+    for t in [0.0, 2.5, 5.0] {
+        for (who, h) in [("car", PI), ("post", FRAC_PI_4), ("ego", 0.0), ("bus", PI)] {
+            let got = r.at(t, who).h;
+            assert!(
+                turn(got, h) < H_TOL,
+                "{who} heading {got} at {t} s, expected {h}"
+            );
+        }
+    }
+    // bus on the straight at 10 m/s towards -x: x = 90 - 10 t.
+    let bus = r.at(5.0, "bus");
+    assert!((bus.x - 40.0).abs() < 1e-6 && bus.lane == 1, "{bus:?}");
+    // npc 50 m along lane 2 (radius 94.75 m) from s = 180 m: s = 180 - 50 / 0.9475 m, heading
+    // 0.01 (s - 100) + pi.
+    let s = 180.0 - 50.0 / 0.9475;
+    let h = 0.01 * (s - 100.0) + PI;
+    let npc = r.at(5.0, "npc");
+    assert!(turn(npc.h, h) < ARC_TOL, "npc {npc:?}, expected h {h}");
+    assert!(
+        (npc.s - s).abs() < 1e-2 && npc.lane == 2,
+        "npc {npc:?}, expected s {s}"
+    );
+}
+
+/// A heading asked of an actor driving against s as if it faced +s: an error at the angle
+/// naming its heading, the road's turned by pi (err_yaw_against_end.osc).
+#[test]
+fn a_yaw_in_the_world_that_an_actor_driving_against_s_does_not_face_is_an_error() {
+    refused_on(
+        "err_yaw_against_end",
+        "expected `npc` at heading 0.2723 rad (the angle 0.2723 rad, absolute) at 5.00 s, found it at -2.8693 rad, its lane's heading -2.8693 rad",
+        "20:30",
+    );
+}
