@@ -11,6 +11,9 @@
 //! (as at: all), so the actor's acceleration is x's ± a in the phase's last step whatever x
 //! does; with `track: actual` "the vehicle reacts to the behavior of the referenced vehicle"
 //! (§8.9.1.1.3), and no constant acceleration chosen at the start could know x's at the end.
+//! With `track: projected` (x projected from its state at the phase start, §8.9.1.1.3) it is
+//! x's acceleration at the start, fixed, in every `at`: read by the plan at a known start, by
+//! the engine over the phase's first step after a run-time one (as at: start).
 //! So is the rate of a speed change beside it at: end after a run-time start
 //! (`relative_rate_at_run_time`). At a known start the plan tracks the actor along x's pieces of constant
 //! planned acceleration (a linear change per piece, each within the limits); after a run-time
@@ -52,7 +55,9 @@ impl Planner<'_> {
         // After a run-time start at: start is x's acceleration at the start, held, the
         // engine's to read then; at: end x's at the phase end, which the engine meets by
         // following x to the end (at every step, so at the last).
-        if !(m.at == At::All || t0.is_none()) || m.projected {
+        // Projected: x's acceleration at the start, fixed: the plan reads it at a known start,
+        // the engine over the phase's first step after a run-time one (as at: start).
+        if !(m.at == At::All || t0.is_none()) || (m.projected && t0.is_some()) {
             return Ok(None);
         }
         let x = self.entity_of(e)?;
@@ -82,15 +87,16 @@ impl Planner<'_> {
     /// before it is there: the change reacts to x instead (§8.9.1.1.3, `track: actual`), its
     /// rate x's then ± a in each of its steps, so in its last step x's then, and x's at the end
     /// wherever x's acceleration holds over the change (the plan's reading at a known start).
-    /// `None` for anything else (a start the plan knows, an acceleration of its own, or `track:
-    /// projected`, whose errors `acceleration_value` gives).
+    /// With `track: projected` x's acceleration as the engine finds it over the phase's first
+    /// step, fixed (§8.9.1.1.3), as at: start. `None` for anything else (a start the plan
+    /// knows, an acceleration of its own).
     pub(super) fn relative_rate_at_run_time(
         &self,
         q: Option<&Modifier>,
         t: Option<f64>,
         (v1, len): (f64, f64),
     ) -> Result<Option<PrivateAction>, Error> {
-        let Some(q) = q.filter(|q| t.is_none() && !q.projected) else {
+        let Some(q) = q.filter(|_| t.is_none()) else {
             return Ok(None);
         };
         let Some((x, delta, _)) = self.followed_acceleration(q, (t, len))? else {
@@ -100,7 +106,7 @@ impl Planner<'_> {
             LongitudinalAction::RelativeAcceleration {
                 entity_ref: x,
                 value: delta,
-                continuous: q.at != At::Start,
+                continuous: q.at != At::Start && !q.projected,
                 to_speed: Some(Box::new(SpeedChange {
                     what: format!("{}(…) at {}", q.name, q.site.at()),
                     speed: v1,
@@ -138,7 +144,7 @@ impl Planner<'_> {
             PrivateAction::Longitudinal(LongitudinalAction::RelativeAcceleration {
                 entity_ref: x,
                 value: delta,
-                continuous: m.at != At::Start,
+                continuous: m.at != At::Start && !m.projected,
                 to_speed: None,
             }),
             &m.site,

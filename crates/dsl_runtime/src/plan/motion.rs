@@ -187,8 +187,10 @@ impl Planner<'_> {
     /// x's − a, `same_as: x` x's. x's is its value as the phase starts (`at: start`), as it
     /// ends (`at: end`), or the one it keeps over the whole phase (`at: all`, the default;
     /// where x's changes within the phase it is the engine's to follow alone,
-    /// `followed_acceleration`, and as the rate of a speed change an error). After a run-time
-    /// start the engine reads it in every form (`acceleration_follow`).
+    /// `followed_acceleration`, and as the rate of a speed change an error). With `track:
+    /// projected` x's as the phase starts, in every `at` (§8.9.1.1.3: x projected from its
+    /// state at the start, so its acceleration then, fixed). After a run-time start the engine
+    /// reads it in every form (`acceleration_follow`).
     pub(super) fn acceleration_value(
         &self,
         m: &Modifier,
@@ -211,12 +213,6 @@ impl Planner<'_> {
             });
         };
         let x = self.entity_of(e)?;
-        if m.projected {
-            return Err(e.site.err(
-                K::Unsupported,
-                format!("expected track: actual for an acceleration relative to `{x}`, found projected (oscsim projects `{x}` at the speed it has at the phase start, which has no acceleration to be relative to: write acceleration(a))"),
-            ));
-        }
         // After a run-time start the engine reads x's acceleration (`acceleration_follow`,
         // which takes every reading of it before this one).
         let Some(t) = t0 else {
@@ -235,7 +231,11 @@ impl Planner<'_> {
             (Some(f), Some(l)) => (f.2, l.2),
             _ => (0.0, 0.0),
         };
+        // Projected (§8.9.1.1.3): x as it is at the phase start, its acceleration then fixed
+        // over the phase whatever x does in it (as `speed(…, track: projected)` reads x's
+        // speed at the start).
         let ax = match m.at {
+            _ if m.projected => first,
             At::Start => first,
             At::End => last,
             At::All => {

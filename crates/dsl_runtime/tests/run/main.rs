@@ -26,6 +26,7 @@ mod opposite_relations;
 mod orientation;
 mod position_actions;
 mod random_traffic;
+mod relative_modifiers;
 mod reuse;
 mod runtime;
 mod runtime_rates;

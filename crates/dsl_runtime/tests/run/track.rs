@@ -70,11 +70,6 @@ fn track_projected_without_a_reference_is_an_error() {
         "expected track: projected on `speed(…)` relative to another actor (ahead_of, behind, same_as, faster_than, slower_than, side_of, left_of, right_of), found no reference (the track is the referenced actor's movement)",
         "5:29",
     );
-    refused(
-        "err_track_projected_acceleration",
-        "expected track: actual for an acceleration relative to `lead`, found projected (oscsim projects `lead` at the speed it has at the phase start, which has no acceleration to be relative to: write acceleration(a))",
-        "15:35",
-    );
 }
 
 /// track_projected_shadowed.osc: the actors named `projected` and `actual` do not hide the

@@ -1,0 +1,64 @@
+//! Modifiers relative to another actor that the plan once refused (issue 27): `acceleration(…,
+//! track: projected)`, shaped modifiers relative to another actor, `lateral(…)` beside another
+//! actor that moves sideways, and `lateral(…, at: end)` beside another actor after a run-time
+//! start. Every expectation is worked by hand in the scenario's comment (`tests/scenarios/relative`).
+
+use crate::support::run;
+
+/// Speeds of linear changes on the 0.05 s grid: float round-off.
+const V_TOL: f64 = 1e-9;
+/// Positions where the engine integrates a linear speed change step by step: its steps lag
+/// the ramp by a·dt/2 per second (0.05 m/s·s at 2 m/s², over 4 s 0.2 m), within the plan's
+/// 0.5 m check; asserted at the plan's figure to this.
+const S_LAG_TOL: f64 = 0.25;
+
+fn close(got: f64, want: f64, tol: f64, what: &str) {
+    assert!((got - want).abs() < tol, "{what}: {got} vs {want}");
+}
+
+/// ego's and `other`'s speeds at each (t, ego's, other's).
+fn speeds(r: &crate::support::Run, other: &str, want: &[(f64, f64, f64)]) {
+    for &(t, ego, x) in want {
+        close(r.at(t, "ego").speed, ego, V_TOL, &format!("ego v({t})"));
+        close(r.at(t, other).speed, x, V_TOL, &format!("{other} v({t})"));
+    }
+}
+
+/// acceleration_projected.osc's comment, by hand: npc's -3 m/s² at the phase start + 1, fixed
+/// while npc's own braking ends at 5 s.
+#[test]
+fn a_projected_acceleration_relative_to_another_is_its_acceleration_at_the_start_fixed() {
+    let r = run("relative/acceleration_projected", 0, None);
+    let want = [
+        (3.0, 10.0, 16.0),
+        (4.0, 8.0, 13.0),
+        (5.0, 6.0, 10.0),
+        (6.0, 4.0, 10.0),
+        (7.0, 2.0, 10.0),
+        (8.0, 2.0, 10.0),
+    ];
+    speeds(&r, "npc", &want);
+    close(r.at(7.0, "ego").s, 104.0, S_LAG_TOL, "ego s(7)");
+    close(r.at(8.0, "ego").s, 106.0, S_LAG_TOL, "ego s(8)");
+}
+
+/// runtime_acceleration_projected.osc's comment, by hand: after the until at 3.35 s, lead's
+/// acceleration over each phase's first step, ± the value, held.
+#[test]
+fn a_projected_acceleration_relative_to_another_after_an_until_is_its_acceleration_at_the_start()
+{
+    let r = run("relative/runtime_acceleration_projected", 0, None);
+    let (s, e) = r.phase("do.follow");
+    close(s, 3.35, 1e-9, "do.follow starts");
+    close(e, 7.35, 1e-9, "do.follow ends");
+    let want = [
+        (3.35, 20.0, 8.0),
+        (4.35, 19.0, 6.0),
+        (5.35, 18.0, 4.0),
+        (6.35, 17.0, 4.0),
+        (7.35, 16.0, 4.0),
+        (8.35, 17.0, 5.0),
+        (9.35, 18.0, 5.0),
+    ];
+    speeds(&r, "lead", &want);
+}
