@@ -41,7 +41,7 @@ impl Planner<'_> {
     /// t of `target`'s reference point at the phase end `t + len` that `m` (a `lateral(…, at:
     /// end)` beside another actor) asks for, from x's planned track; `None` when `m` has no
     /// reference. `t` is the phase start, `None` after a run-time condition (an error).
-    fn beside_end(
+    pub(super) fn beside_end(
         &self,
         m: &Modifier,
         target: &str,

@@ -63,6 +63,7 @@
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `position_shape` | `position(…, at: end)` and `distance(…)` with a `common_position_shape`: the speed profile that covers the distance |
 //! | `shapes` | modifiers with a `shape:`, planned as the action whose dynamics the shape is |
+//! | `shape_relative` | a shaped modifier relative to another actor: its target from that actor's value |
 //! | `gap_actions` | the §8.8.3 actions that control the gap or headway to another object |
 //! | `position_actions` | the §8.8 actions that put an actor somewhere or turn it (`assign_position`, `assign_orientation`, `change_position`) |
 //! | `group_path` | the group forms of the path and trajectory actions: a column following the path in file, a group over several lanes the path moved to each member's place in the road frame |
@@ -128,6 +129,7 @@ mod route;
 mod runtime;
 mod runtime_end;
 mod schedule;
+mod shape_relative;
 mod shapes;
 mod speed_actions;
 mod trajectory_actions;

@@ -19,6 +19,10 @@
 //! profile), and it ends a phase without one. Beside a shaped modifier no other modifier may
 //! change the same state variable ("using the shape structs specifies the exact values for
 //! certain state variables … throughout", §8.9.1.1.4).
+//!
+//! Relative to another actor (`faster_than`, `slower_than`, `same_as`; `left_of`, `right_of`,
+//! `side_of`) the target is that actor's value ± the modifier's (`shape_relative`); a shaped
+//! `position(…)` relative to another actor is an error (not run yet).
 
 use super::lateral;
 use super::planner::Planner;
@@ -78,22 +82,16 @@ impl Planner<'_> {
                 ),
             ));
         }
-        if let Some(r) = [
-            "faster_than",
-            "slower_than",
-            "same_as",
-            "left_of",
-            "right_of",
-            "side_of",
-            "ahead_of",
-            "behind",
-        ]
-        .iter()
-        .find_map(|r| m.arg(r))
+        // A position relative to another actor would move its target with the shape's own
+        // timing (x's place at an end the shape sets).
+        if let Some(r) = ["ahead_of", "behind"]
+            .iter()
+            .find_map(|r| m.arg(r))
+            .filter(|_| shape.kind == ShapeKind::Position)
         {
             return Err(r.site.err(
                 K::Unsupported,
-                format!("expected `{}(…)` with a shape to give its own value (the shape's target is absolute), found a reference object", m.name),
+                format!("expected `{}(…)` with a shape to give its own position (the shape's target is absolute), found a reference object", m.name),
             ));
         }
         let mut args = shape.args.clone();
@@ -125,6 +123,7 @@ impl Planner<'_> {
             // The library's default target, 0.
             (None, None) => num(0.0),
         };
+        let mut reference = None;
         let kind = match (shape.kind, m.kind) {
             // Not an action's dynamics: the speed profile that covers the distance.
             (ShapeKind::Position, _) => {
@@ -136,13 +135,25 @@ impl Planner<'_> {
                 let value = target.number()?;
                 return self.plan_position_shape(m, slot, (value, &profile, peak), name);
             }
-            (ShapeKind::Speed, _) => {
+            (ShapeKind::Speed | ShapeKind::Acceleration, _) => {
+                // Relative to x: x's value ± the target (`shape_relative`).
+                reference =
+                    self.shape_reference(m, shape.kind, (slot.t0, slot.len), target.number()?)?;
+                let target = match &reference {
+                    Some(r) if r.read_at.is_some() => num(r.value + r.delta),
+                    // After a run-time start the engine reads x: the plan's speed of x where it
+                    // last knows it stands in for the checks of the arguments.
+                    Some(r) => {
+                        num((self.last_v[&r.x] + r.delta).clamp(0.0, super::types::MAX_SPEED))
+                    }
+                    None => target,
+                };
                 args.push(("target".to_string(), target));
-                Action::ChangeSpeed
-            }
-            (ShapeKind::Acceleration, _) => {
-                args.push(("target".to_string(), target));
-                Action::ChangeAcceleration
+                if shape.kind == ShapeKind::Speed {
+                    Action::ChangeSpeed
+                } else {
+                    Action::ChangeAcceleration
+                }
             }
             (ShapeKind::Lateral, ModKind::ChangeLane | ModKind::Lane) => {
                 if let Some(q) = mods
@@ -187,7 +198,10 @@ impl Planner<'_> {
                 let mut asked = m.clone();
                 asked.args.retain(|(n, _)| n != "distance");
                 asked.args.push(("distance".to_string(), target));
-                let o = lateral::lane_offset(&asked, w, self.width(slot.target))?;
+                let o = match self.shaped_beside(&asked, slot.target, (slot.t0, slot.len))? {
+                    Some(o) => o,
+                    None => lateral::lane_offset(&asked, w, self.width(slot.target))?,
+                };
                 args.push(("offset".to_string(), num(o)));
                 Action::FollowLane
             }
@@ -207,6 +221,27 @@ impl Planner<'_> {
             site: m.site.clone(),
             ..p.clone()
         };
+        if let Some(r) = reference {
+            let from = (slot.out.len(), slot.persist.len());
+            let t0 = slot.t0;
+            let again = Slot {
+                out: &mut *slot.out,
+                persist: &mut *slot.persist,
+                ..slot
+            };
+            let ends = self.plan_speed_action(&at_modifier, &inv, again, name)?;
+            match (t0, &ends) {
+                (None, _) => {
+                    Self::retarget_at_run_time(m, &r, &mut slot.out[from.0..]);
+                    Self::retarget_at_run_time(m, &r, &mut slot.persist[from.1..]);
+                }
+                (Some(_), Some(When::At(te))) if slot.len.is_none() => {
+                    self.check_shape_reference(m, shape.kind, &r, *te)?;
+                }
+                _ => {}
+            }
+            return Ok(ends);
+        }
         match kind {
             Action::ChangeLane | Action::FollowLane => {
                 self.plan_lateral_action(&at_modifier, &inv, slot, name)
