@@ -49,6 +49,21 @@ def test_bound_functions_run_at_the_step_of_their_call():
     ]
 
 
+# call_named.osc: `call log("ego", flag: true, v: 20mps)` of `log(name, v, n = 3,
+# flag = false)` at 1.0 s and the handler's `call note(flag: true, n: 2)` at 1.05 s: the host's
+# functions take the arguments in the methods' declaration order, defaults filled in.
+NAMED = DSL / "scenarios" / "call_named.osc"
+
+
+def test_named_arguments_reach_the_function_in_declaration_order():
+    sim = oscsim.Simulation(str(NAMED), dt=0.05, seed=0, road=str(STRAIGHT))
+    seen: List[Tuple[str, Any]] = []
+    sim.bind("log", lambda *a: seen.append(("log", a)))
+    sim.bind("note", lambda *a: seen.append(("note", a)))
+    assert sim.run() == "stories_complete"
+    assert seen == [("log", ("ego", 20.0, 3.0, True)), ("note", (2.0, True))], seen
+
+
 def test_an_unbound_external_method_is_an_error_naming_the_call():
     sim = oscsim.Simulation(str(CALLS), dt=0.05, seed=0, road=str(STRAIGHT))
     sim.bind("log_speed", lambda *a: None)

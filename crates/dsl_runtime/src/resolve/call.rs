@@ -9,7 +9,10 @@
 //! instance paths as strings). The host runs the function it bound to that name (the Python
 //! package's `Simulation.bind`); a host without bindings (`oscsim run`) refuses the scenario.
 //! Only methods declared `is external` can be called: a method with an expression has no side
-//! effects to run.
+//! effects to run. Arguments are bound to the method's declared parameters as the language
+//! binds any argument list (§7.3.9, §7.4: positional ones first, in declaration order, then
+//! named ones by name; a parameter given neither takes its declaration's default), and the
+//! host receives them in declaration order.
 //!
 //! The result of an external method is read in conditions (`until m(…) > 3`, `wait`, events):
 //! the condition becomes a 1.x UserDefinedValueCondition on the value named by the call's
@@ -17,7 +20,7 @@
 //! (`load::Bindings`). Anywhere the plan needs a value before the run (a parameter, a
 //! modifier's argument) it has none: the constraint solver leaves it undefined there.
 
-use dsl::semantics::hir::{Expr, ExprKind, MethodBody};
+use dsl::semantics::hir::{Arg as HirArg, Expr, ExprKind, MethodBody, Param, Span};
 
 use super::eval::Eval;
 use super::value::Val;
@@ -52,8 +55,8 @@ pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
             ))
         }
     };
-    match ev.method_decl(name).map(|d| &d.body) {
-        Some(MethodBody::External) => {}
+    let decl = match ev.method_decl(name) {
+        Some(d) if d.body == MethodBody::External => d,
         Some(_) => {
             return Err(ev.files.err(
                 K::Unsupported,
@@ -68,22 +71,86 @@ pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
                 format!("expected a method declared in the program in `call`, found `{name}`"),
             ))
         }
-    }
-    let mut values = Vec::with_capacity(args.len());
-    for a in args {
-        if let Some(n) = &a.name {
-            return Err(ev.files.err(
-                K::Unsupported,
-                n.span,
-                format!("expected positional arguments in `call` (the host's function takes them in order), found `{}:`", n.text),
-            ));
-        }
-        values.push(json(ev, &a.value)?);
+    };
+    let mut values = Vec::with_capacity(decl.params.len());
+    for e in bind_params(ev, name, &decl.params, args, e.span)? {
+        values.push(json(ev, e)?);
     }
     Ok(Call {
         method: name.clone(),
         content: format!("{name}({})", values.join(", ")),
     })
+}
+
+/// The arguments of a call of `name` in the order of its declared parameters `params` (§7.3.9:
+/// positional arguments first, in declaration order, then named ones by name; a parameter
+/// given neither takes its declaration's default). The checker reports the same faults at the
+/// same places before the runtime runs; these errors keep a program it let through from
+/// calling the host with arguments out of place.
+fn bind_params<'e>(
+    ev: &Eval<'_>,
+    name: &str,
+    params: &'e [Param],
+    args: &'e [HirArg],
+    call: Span,
+) -> Result<Vec<&'e Expr>, Error> {
+    let mut slots: Vec<Option<&Expr>> = vec![None; params.len()];
+    let mut named = false;
+    for (i, a) in args.iter().enumerate() {
+        let k = match &a.name {
+            Some(n) => {
+                named = true;
+                params
+                    .iter()
+                    .position(|p| p.name.text == n.text)
+                    .ok_or_else(|| {
+                        ev.files.err(
+                            K::Argument,
+                            n.span,
+                            format!("expected a parameter of `{name}` in `call`, found `{}:`", n.text),
+                        )
+                    })?
+            }
+            None if named => {
+                return Err(ev.files.err(
+                    K::Argument,
+                    a.value.span,
+                    format!("expected named arguments after a named one in `call` of `{name}`, found a positional argument"),
+                ))
+            }
+            None if i >= params.len() => {
+                return Err(ev.files.err(
+                    K::Argument,
+                    a.value.span,
+                    format!("expected at most {} arguments in `call` of `{name}`, found {}", params.len(), args.len()),
+                ))
+            }
+            None => i,
+        };
+        if slots[k].replace(&a.value).is_some() {
+            return Err(ev.files.err(
+                K::Argument,
+                a.name.as_ref().map_or(a.value.span, |n| n.span),
+                format!(
+                    "expected `{}` once in `call` of `{name}`, found it again",
+                    params[k].name.text
+                ),
+            ));
+        }
+    }
+    slots
+        .into_iter()
+        .zip(params)
+        .map(|(s, p)| {
+            s.or(p.default.as_ref()).ok_or_else(|| {
+                ev.files.err(
+                    K::Argument,
+                    call,
+                    format!("expected an argument for parameter `{}` of `{name}` in `call`, found none (it has no default)", p.name.text),
+                )
+            })
+        })
+        .collect()
 }
 
 /// When `e` calls a method declared `is external`: the call, read (its result is a value the

@@ -69,6 +69,47 @@ fn calls_of_external_methods_are_commands_in_the_event_log_when_they_run() {
     assert!((r.at(2.0, "ego").s - 70.0).abs() < 1e-6);
 }
 
+/// `call` with named arguments: the host receives them in the method's declaration order,
+/// defaults filled in (call_named.osc, by hand: `log("ego", 20.0, 3.0, true)` at 1.0 s, the
+/// handler's `note(2.0, true)` at 1.05 s).
+#[test]
+fn named_arguments_of_a_call_reach_the_host_in_declaration_order_with_defaults() {
+    let lowered = crate::support::lower("call_named", 0, None).expect("plans");
+    let r = crate::support::run_scenario("call_named", &lowered.scenario, 0, None);
+    let calls: Vec<(f64, &str)> = r
+        .commands
+        .iter()
+        .filter(|(_, _, ty, _)| ty == "call")
+        .map(|(t, _, _, c)| (*t, c.as_str()))
+        .collect();
+    assert_eq!(calls.len(), 2, "{calls:?}");
+    assert!((calls[0].0 - 1.0).abs() < T_TOL, "{calls:?}");
+    assert_eq!(calls[0].1, "log(\"ego\", 20.0, 3.0, true)");
+    assert!((calls[1].0 - 1.05).abs() < T_TOL, "{calls:?}");
+    assert_eq!(calls[1].1, "note(2.0, true)");
+}
+
+/// Named arguments of a `call` that name no parameter, give one twice, or come before a
+/// positional one: errors at the argument, before the run.
+#[test]
+fn bad_named_arguments_of_a_call_are_errors_at_the_argument() {
+    crate::along::refused(
+        "err_call_named_unknown",
+        "log() has no parameter `speed` (parameters: name, v)",
+        "9:25",
+    );
+    crate::along::refused(
+        "err_call_named_twice",
+        "parameter `name` of log() is given twice",
+        "9:31",
+    );
+    crate::along::refused(
+        "err_call_positional_after_named",
+        "expected a named argument `name: value`, found a positional argument after a named one",
+        "9:31",
+    );
+}
+
 /// `on every(2s, offset: 1s): emit tick`: tick at 1, 3, 5 s (and 7 s, after the run); the third
 /// wait on it ends at 1 + 2·2 = 5 s (on_every.osc).
 #[test]
