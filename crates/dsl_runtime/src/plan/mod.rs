@@ -84,6 +84,7 @@
 //! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
+//! | `overlap` | a parallel's members aligned to its `overlap:` argument (§7.3.9) |
 use std::cell::RefCell;
 use std::collections::{HashMap, HashSet};
 
@@ -116,6 +117,7 @@ mod map_junctions;
 mod map_lanes;
 mod map_roads;
 mod motion;
+mod overlap;
 mod path_part;
 mod path_shape;
 mod place;
@@ -521,12 +523,13 @@ fn plan_handlers(
         }
         let span = match &spec.within {
             Some(within) => {
-                let phase = p.phases.iter().find(|ph| &ph.path == within).ok_or_else(|| {
-                    site.err(
-                        K::Unsupported,
-                        format!("expected the invocation `{within}` of this `on` handler to be planned, found no phase of that name"),
-                    )
-                })?;
+                // An invocation the plan never starts (a member of a serial that its own end
+                // stops before it, `serial(duration: d)`) has no instance: §7.3.10 ties an `on`
+                // directive to its scenario's instance, which lives from the invocation's start
+                // to its end (§7.3.6), so its handlers never run and have no Act.
+                let Some(phase) = p.phases.iter().find(|ph| &ph.path == within) else {
+                    continue;
+                };
                 Some((phase.start.clone(), phase.end.clone()))
             }
             None => None,

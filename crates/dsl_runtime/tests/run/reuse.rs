@@ -265,6 +265,16 @@ fn a_scenario_declared_on_an_actor_drives_that_actor() {
 /// `on` handlers of a scenario invoked twice in serial (reuse_on.osc): each invocation's
 /// handlers read its own parameter and actor, emit its own events, and fire only while the
 /// invocation runs.
+/// The handlers of an invocation the plan never starts never run (reuse_on_cut.osc: the
+/// serial's own 2 s end stops it before `late` starts; ego at 120 m at 2 s, by hand).
+#[test]
+fn on_handlers_of_an_invocation_that_never_starts_never_run() {
+    let r = run("reuse_on_cut", 0, None);
+    phases_are(&r, &[("do.start", (0.0, 2.0)), ("do", (0.0, 2.0))]);
+    assert!(r.commands.iter().all(|c| c.2 != "emit"), "{:?}", r.commands);
+    assert!((r.at(2.0, "ego").s - 120.0).abs() < S_TOL);
+}
+
 #[test]
 fn on_handlers_of_an_invoked_scenario_fire_only_while_their_invocation_runs() {
     let r = run("reuse_on", 0, None);
