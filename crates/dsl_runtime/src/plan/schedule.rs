@@ -155,33 +155,56 @@ impl Planner<'_> {
                     None => cur,
                 })
             }
-            Kind::Parallel => {
+            Kind::Parallel(overlap) => {
                 // Members planned (and written) first: those whose motion others refer to, and
                 // those that end on their own, so that members ending with the parallel see
                 // their end in the same step.
-                let mut order: Vec<&Phase> = p.children.iter().collect();
-                order.sort_by_key(|c| (relative_end(c), c.duration.is_none() && c.until.is_none()));
+                let mut order: Vec<(usize, &Phase)> = p.children.iter().enumerate().collect();
+                order.sort_by_key(|(_, c)| {
+                    (relative_end(c), c.duration.is_none() && c.until.is_none())
+                });
+                // `overlap:` (plan::overlap): when each member starts; a kind that relates the
+                // ends plans each member with its own end, checked below.
+                let starts = match overlap {
+                    Some(o) => super::overlap::starts(p, o, &start)?,
+                    None => vec![start.clone(); p.children.len()],
+                };
+                let own_ends = overlap
+                    .as_ref()
+                    .is_some_and(|o| super::overlap::relates_ends(o.kind));
                 let inh = match (&own, &inherit) {
+                    _ if own_ends => Some(When::Pending),
                     (Some(o), Some(i)) => Some(o.clone().or(i.clone())),
                     (Some(o), None) => Some(o.clone()),
                     (None, _) => Some(When::Pending),
                 };
                 let own_cap = match (&own, &cap) {
+                    _ if own_ends => cap.clone(),
                     (Some(o), Some(c)) => Some(o.clone().or(c.clone())),
                     (o, c) => o.clone().or(c.clone()),
                 };
                 let mut ends = Vec::new();
-                for c in order {
+                let mut members = vec![None; p.children.len()];
+                for (i, c) in order {
                     let e = self.schedule(
                         c,
-                        start.clone(),
+                        starts[i].clone(),
                         inh.clone(),
                         own_cap.clone(),
                         p.duration.or(len_hint),
                     )?;
+                    members[i] = Some((c, starts[i].clone(), e.clone()));
                     ends.push((c, e));
                 }
-                capped(match own {
+                let fixed = match overlap {
+                    Some(o) => {
+                        // Every member was planned (members[i] set in the loop above).
+                        let members: Vec<_> = members.into_iter().flatten().collect();
+                        super::overlap::check_ends(o, own.as_ref(), &members)?
+                    }
+                    None => None,
+                };
+                capped(match fixed.or(own) {
                     Some(o) => o,
                     None => {
                         let with_end: Vec<&(&Phase, When)> =

@@ -17,6 +17,7 @@
 //! | `position` | places and orientations of the position actions (§8.8.2.4, §8.8.2.5, §8.8.2.11) |
 //! | `call` | `call` of external methods as commands to the host (§7.3.9) |
 //! | `cond` | conditions and event specifications (§7.3.10, §8.7 methods) |
+//! | `overlap` | a parallel's `overlap:` argument (§7.3.9 composition operators) |
 //! | `tree` | the `do` tree as phases with paths (§7.3.9) |
 //! | `coverage` | `cover(…)`/`record(…)` for the runtime to sample (§7.3.12); not planned |
 
@@ -28,6 +29,7 @@ mod eval;
 mod map_modifiers;
 mod modifier;
 mod objects;
+mod overlap;
 mod position;
 mod route;
 mod shape;
@@ -48,6 +50,7 @@ pub(crate) use cond::{Cond, Timed};
 pub(crate) use map_modifiers::{EndKind, JunctionRoads, MapKind, MapModifier, SeqEnd};
 pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
+pub(crate) use overlap::{Overlap, OverlapArg};
 pub(crate) use position::{Place, PlaceArg};
 pub(crate) use route::{Along, LaneField, Route};
 pub(crate) use shape::ShapeKind;

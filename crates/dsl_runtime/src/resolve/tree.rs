@@ -1,6 +1,6 @@
 //! The phase tree of a scenario's `do` (ASAM OpenSCENARIO DSL 2.1 §7.3.9 behavior
-//! specification): compositions `serial`, `parallel`, `one_of` (its member chosen from the
-//! run's seed), `wait`, `emit`, and invocations of actions on actors with their arguments,
+//! specification): compositions `serial`, `parallel` (its `overlap:` read by `overlap`),
+//! `one_of` (its member chosen from the run's seed), `wait`, `emit`, and invocations of actions on actors with their arguments,
 //! `with:` modifiers and `until`, every value evaluated. Each phase has a path: the labels (or,
 //! unlabelled, the member's index) from the root `do` down, joined by `.` (`do.get_ahead.1`);
 //! it is the phase's name in the event log.
@@ -49,8 +49,9 @@ pub(crate) struct Phase {
 pub(crate) enum Kind {
     /// `serial`: members one after another.
     Serial,
-    /// `parallel`: members together.
-    Parallel,
+    /// `parallel`: members together, related in time by its `overlap:` argument (none: the
+    /// members start together and each ends as it does, `plan::overlap`).
+    Parallel(Option<super::overlap::OverlapArg>),
     /// `one_of`: the member drawn (its index among the written members).
     OneOf(usize),
     /// `wait`.
@@ -173,21 +174,29 @@ fn build(
             span,
         } => {
             let mut duration = None;
+            let mut overlap = None;
             for (name, e) in super::eval::bind(args, &["duration".to_string()]) {
                 match name.as_str() {
                     "duration" => duration = Some(positive(ev, e)?),
+                    "overlap" if *op == CompositionOp::Parallel => {
+                        overlap = Some(super::overlap::read(ev, e)?)
+                    }
                     other => {
+                        let which = match op {
+                            CompositionOp::Parallel => "`duration:` or `overlap:`",
+                            _ => "`duration:` (`overlap:` is parallel's)",
+                        };
                         return Err(ev.files.err(
-                            K::Unsupported,
+                            K::Argument,
                             e.span,
-                            format!("expected a `duration:` argument, found `{other}:`"),
-                        ))
+                            format!("expected a {which} argument, found `{other}:`"),
+                        ));
                     }
                 }
             }
             let kind = match op {
                 CompositionOp::Serial => Kind::Serial,
-                CompositionOp::Parallel => Kind::Parallel,
+                CompositionOp::Parallel => Kind::Parallel(overlap),
                 CompositionOp::OneOf => Kind::OneOf(ev.choose(children.len())),
             };
             let picked: Vec<(usize, &Labeled)> = match kind {

@@ -75,3 +75,16 @@ fn a_keep_that_contradicts_the_arguments_is_an_error_at_its_place() {
         "{e}"
     );
 }
+
+/// keep(…) in the with: of an action invoked in an `on` handler: the invocation itself is bad
+/// input (§7.3.10: an `on` directive's members are `emit` and `call`), the parser's error at
+/// the invocation.
+#[test]
+fn a_keep_on_an_action_in_an_on_handler_is_an_error_at_the_invocation() {
+    let e = error("err_keep_on_handler");
+    assert!(e.contains("err_keep_on_handler.osc:7:9"), "{e}");
+    assert!(
+        e.starts_with("expected a `call` or `emit` directive, found an invocation"),
+        "{e}"
+    );
+}

@@ -4,7 +4,7 @@
 
 use super::super::diagnostic::DiagnosticKind as K;
 use super::super::hir::{
-    Arg, Behavior, BinOp, CompoundKind, Labeled, Member, ModifierApp, Span, WithMember,
+    Arg, Behavior, BinOp, CompoundKind, ExprKind, Labeled, Member, ModifierApp, Span, WithMember,
 };
 use super::super::model::ParamDef;
 use super::super::solver::Strength;
@@ -47,7 +47,13 @@ impl Cx<'_> {
         match &b.behavior {
             Behavior::Composition { args, children, .. } => {
                 for a in args {
-                    self.expr(&a.value, scope, None);
+                    // `parallel(overlap: equal)`: the kind is a word of the composition
+                    // operator (§7.3.9), read by the runtime, not a name in scope.
+                    let overlap = a.name.as_ref().is_some_and(|n| n.text == "overlap")
+                        && matches!(a.value.kind, ExprKind::Name(_));
+                    if !overlap {
+                        self.expr(&a.value, scope, None);
+                    }
                 }
                 for (i, c) in children.iter().enumerate() {
                     let seg = c.label.as_ref().map_or(i.to_string(), |l| l.text.clone());
