@@ -291,6 +291,8 @@ pub enum Behavior {
         args: Vec<Arg>,
         /// The children.
         children: Vec<Labeled>,
+        /// The `with:` block after the children (§7.3.9 composition: `until`, `keep`, modifiers).
+        with: Vec<WithMember>,
         /// Where.
         span: Span,
     },

@@ -466,6 +466,12 @@ impl Cx {
                     },
                     args: self.args(c.args()),
                     children: c.members().filter_map(|m| self.behavior(&m)).collect(),
+                    with: c
+                        .with()
+                        .iter()
+                        .flat_map(|w| w.members())
+                        .filter_map(|m| self.with_member(&m))
+                        .collect(),
                     span,
                 },
             },

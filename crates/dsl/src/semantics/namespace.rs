@@ -551,9 +551,15 @@ impl Rewriter<'_> {
 
     fn labeled(&mut self, l: &mut Labeled) {
         match &mut l.behavior {
-            Behavior::Composition { args, children, .. } => {
+            Behavior::Composition {
+                args,
+                children,
+                with,
+                ..
+            } => {
                 self.args(args);
                 children.iter_mut().for_each(|c| self.labeled(c));
+                self.with_members(with);
             }
             Behavior::Invocation {
                 actor,
@@ -568,13 +574,7 @@ impl Rewriter<'_> {
                     None => self.top(name, Class::Behavior),
                 }
                 self.args(args);
-                for w in with {
-                    match w {
-                        WithMember::Modifier(app) => self.modifier(app),
-                        WithMember::Keep(k) => self.expr(&mut k.expr),
-                        WithMember::Until(e, _) => self.expr(e),
-                    }
-                }
+                self.with_members(with);
             }
             Behavior::Wait(e, _) | Behavior::Call(e, _) => self.expr(e),
             Behavior::Emit(_, args, _) => self.args(args),
@@ -587,6 +587,16 @@ impl Rewriter<'_> {
         for (_, e) in references {
             if let ExprKind::EnumValue(ty, _) = &mut e.kind {
                 self.qual(ty, Class::Type);
+            }
+        }
+    }
+
+    fn with_members(&mut self, with: &mut [WithMember]) {
+        for w in with {
+            match w {
+                WithMember::Modifier(app) => self.modifier(app),
+                WithMember::Keep(k) => self.expr(&mut k.expr),
+                WithMember::Until(e, _) => self.expr(e),
             }
         }
     }

@@ -171,6 +171,7 @@ fn build(
             op,
             args,
             children,
+            with,
             span,
         } => {
             let mut duration = None;
@@ -223,12 +224,29 @@ fn build(
                     "expected members in a composition, found none",
                 ));
             }
+            // The composition's with: (§7.3.9): its `until` ends it as an invocation's does; a
+            // `keep` is a constraint of the behavior whose `do` holds it, solved with its
+            // instance (the checker's); a modifier is the checker's error.
+            let mut until = None;
+            for w in with {
+                match w {
+                    WithMember::Until(e, _) => with_until(ev, e, &mut duration, &mut until)?,
+                    WithMember::Keep(_) => {}
+                    WithMember::Modifier(m) => {
+                        return Err(ev.files.err(
+                            K::Modifier,
+                            m.span,
+                            format!("expected `until` or `keep` in the with: of a composition, found the modifier `{}`", m.name.text),
+                        ))
+                    }
+                }
+            }
             Ok(Phase {
                 path,
                 site: ev.site(*span),
                 kind,
                 duration,
-                until: None,
+                until,
                 children: out,
             })
         }
@@ -325,36 +343,7 @@ fn build(
             for w in with {
                 match w {
                     WithMember::Modifier(m) => modifiers.push(modifier::read(ev, m)?),
-                    // `until elapsed(d)`: the phase lasts at most d.
-                    WithMember::Until(e, _) => match &e.kind {
-                        ExprKind::Temporal(n, a) if n.text == "elapsed" => {
-                            let d = match a.first() {
-                                Some(a) => positive(ev, &a.value)?,
-                                None => {
-                                    return Err(ev.files.err(
-                                        K::Value,
-                                        e.span,
-                                        "expected a time in elapsed(…), found none",
-                                    ))
-                                }
-                            };
-                            duration = Some(duration.map_or(d, |x: f64| x.min(d)));
-                        }
-                        // `until every(p, offset: o)`: the first occurrence, o after the
-                        // invocation's start, ends it; without an offset that is its start.
-                        ExprKind::Temporal(n, a) if n.text == "every" => {
-                            let d = every_args(ev, e.span, a)?.offset;
-                            if d <= 0.0 {
-                                return Err(ev.files.err(
-                                    K::Value,
-                                    e.span,
-                                    "expected an offset above 0 s in until every(…), found none (the first occurrence is the start of the phase, which would end it at once)",
-                                ));
-                            }
-                            duration = Some(duration.map_or(d, |x: f64| x.min(d)));
-                        }
-                        _ => until = Some(cond::read(ev, e)),
-                    },
+                    WithMember::Until(e, _) => with_until(ev, e, &mut duration, &mut until)?,
                     // Solved with the invocation's instance (`solved_args`).
                     WithMember::Keep(_) => {}
                 }
@@ -396,6 +385,48 @@ fn build(
             children: Vec::new(),
         }),
     }
+}
+
+/// An `until` of a `with:` block (an invocation's or a composition's): `until elapsed(d)`
+/// caps the phase's `duration` at d, `until every(p, offset: o)` at o (its first occurrence
+/// after the phase's start), any other condition is the phase's `until`.
+fn with_until(
+    ev: &Eval<'_>,
+    e: &Expr,
+    duration: &mut Option<f64>,
+    until: &mut Option<Result<Cond, Error>>,
+) -> Result<(), Error> {
+    let d = match &e.kind {
+        ExprKind::Temporal(n, a) if n.text == "elapsed" => match a.first() {
+            Some(a) => positive(ev, &a.value)?,
+            None => {
+                return Err(ev.files.err(
+                    K::Value,
+                    e.span,
+                    "expected a time in elapsed(…), found none",
+                ))
+            }
+        },
+        // The first occurrence, o after the phase's start, ends it; without an offset that is
+        // its start.
+        ExprKind::Temporal(n, a) if n.text == "every" => {
+            let d = every_args(ev, e.span, a)?.offset;
+            if d <= 0.0 {
+                return Err(ev.files.err(
+                    K::Value,
+                    e.span,
+                    "expected an offset above 0 s in until every(…), found none (the first occurrence is the start of the phase, which would end it at once)",
+                ));
+            }
+            d
+        }
+        _ => {
+            *until = Some(cond::read(ev, e));
+            return Ok(());
+        }
+    };
+    *duration = Some(duration.map_or(d, |x: f64| x.min(d)));
+    Ok(())
 }
 
 /// The pieces of an invocation of a behavior with a `do`.

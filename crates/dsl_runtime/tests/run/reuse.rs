@@ -311,3 +311,33 @@ fn on_handlers_of_an_invoked_scenario_fire_only_while_their_invocation_runs() {
         assert!((ego.s - s).abs() < S_TOL, "ego at {t} s: s = {}", ego.s);
     }
 }
+
+/// A composition's with: block: its `until` ends the composition, its `keep` constrains the
+/// scenario (composition_with.osc, by hand: top = 12 m/s for every seed; first [0, 2] s,
+/// second [2, 3.55] s).
+#[test]
+fn a_compositions_with_block_ends_it_and_constrains_the_scenario() {
+    for seed in 0..3 {
+        let r = run("composition_with", seed, None);
+        phases_are(
+            &r,
+            &[
+                ("do.first", (0.0, 2.0)),
+                ("do.second", (2.0, 3.55)),
+                ("do.second.0", (2.0, 3.55)),
+            ],
+        );
+        assert!((r.at(1.0, "ego").speed - 12.0).abs() < 1e-9, "seed {seed}");
+        assert!((r.at(2.0, "ego").s - 124.0).abs() < S_TOL, "seed {seed}");
+        let v = |t: f64| 12.0 + 2.0 * (t - 2.0);
+        let s = 124.0 + crate::support::stepped(v, 2.0, 3.55);
+        assert!((r.at(3.55, "ego").s - s).abs() < 1e-6, "seed {seed}");
+    }
+    let e = error("err_composition_with_modifier");
+    assert!(
+        e.contains(
+            "expected `until` or `keep` in the with: of a composition, found the modifier `speed`"
+        ) && e.contains("err_composition_with_modifier.osc:10:13"),
+        "{e}"
+    );
+}

@@ -45,7 +45,12 @@ impl Cx<'_> {
     /// no invocation is recorded).
     pub(crate) fn behavior(&mut self, b: &Labeled, scope: &Scope, path: Option<&str>) {
         match &b.behavior {
-            Behavior::Composition { args, children, .. } => {
+            Behavior::Composition {
+                args,
+                children,
+                with,
+                ..
+            } => {
                 for a in args {
                     // `parallel(overlap: equal)`: the kind is a word of the composition
                     // operator (§7.3.9), read by the runtime, not a name in scope.
@@ -60,6 +65,7 @@ impl Cx<'_> {
                     let child = path.map(|p| format!("{p}.{seg}"));
                     self.behavior(c, scope, child.as_deref());
                 }
+                self.composition_with(with, scope);
             }
             Behavior::Invocation {
                 actor,
@@ -176,6 +182,33 @@ impl Cx<'_> {
             }
             Behavior::Call(e, _) => {
                 self.expr(e, scope, None);
+            }
+        }
+    }
+
+    /// The `with:` block of a composition (§7.3.9): `until` ends it; a `keep` constrains the
+    /// behavior whose `do` holds it (there is no instance `it` of a composition), as a `keep`
+    /// in that behavior's body does; a modifier names no actor to apply to, an error.
+    fn composition_with(&mut self, with: &[WithMember], scope: &Scope) {
+        for w in with {
+            match w {
+                WithMember::Until(e, _) => {
+                    self.expect(e, &Ty::Event, scope, "`until`");
+                }
+                WithMember::Keep(k) => match scope.this {
+                    Some(this) => self.keep(k, scope, Owner::Compound(this), &[]),
+                    None => {
+                        self.expect(&k.expr, &Ty::Bool, scope, "a constraint");
+                    }
+                },
+                WithMember::Modifier(app) => self.err(
+                    K::Unsupported,
+                    app.span,
+                    format!(
+                        "expected `until` or `keep` in the with: of a composition, found the modifier `{}` (a modifier applies to the actor of the action it modifies; a composition has none)",
+                        app.name.text
+                    ),
+                ),
             }
         }
     }
