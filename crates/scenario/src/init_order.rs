@@ -282,6 +282,7 @@ fn trajectory_needs<'a>(trajectory: &'a Trajectory, needs: &mut Vec<(&'a str, As
             .iter()
             .for_each(|c| position_needs(&c.position, needs)),
         Shape::SmoothFromActor(c) => position_needs(&c.end, needs),
+        Shape::LineFromActor(c) => position_needs(&c.end, needs),
     }
 }
 

@@ -24,8 +24,9 @@
 //! plan's estimate of when an untimed smooth path ends.
 
 use scenario::{
-    ControlPoint, FollowingMode, Nurbs, Position, PositionKind, PrivateAction, ReferenceContext,
-    RoutingAction, Shape, SmoothFromActor, Timing, Trajectory, TrajectoryAtSpeed, Vertex,
+    ControlPoint, FollowingMode, LineFromActor, Nurbs, Position, PositionKind, PrivateAction,
+    ReferenceContext, RoutingAction, Shape, SmoothFromActor, Timing, Trajectory, TrajectoryAtSpeed,
+    Vertex,
 };
 
 use crate::error::Site;
@@ -326,12 +327,16 @@ pub(crate) fn smooth(
     )
 }
 
-/// A FollowTrajectoryAction along oscsim's smooth curve from the actor (scenario
-/// `Shape::SmoothFromActor`, no XML form): the curve [`smooth`] builds, from where the engine
-/// finds the actor when the action starts (its heading) to `end` (its heading), untimed.
-pub(crate) fn smooth_from_actor(
+/// A FollowTrajectoryAction from where the engine finds the actor when the action starts to
+/// `end` (its heading), untimed (shapes with no XML form): with `smooth` oscsim's smooth curve
+/// from the actor (scenario `Shape::SmoothFromActor`: the curve [`smooth`] builds, from the
+/// actor's heading then), else oscsim's straight line from the actor (`Shape::LineFromActor`:
+/// the line [`line_ending_along`] builds, facing along it, then `end`'s heading where it
+/// ends).
+pub(crate) fn from_actor(
     name: &str,
     end: Pose2,
+    smooth: bool,
     mode: FollowingMode,
     site: &Site,
 ) -> PrivateAction {
@@ -347,12 +352,12 @@ pub(crate) fn smooth_from_actor(
         },
         pos: site.pos.clone(),
     };
-    follow(
-        name,
-        Shape::SmoothFromActor(SmoothFromActor { end }),
-        false,
-        mode,
-    )
+    let shape = if smooth {
+        Shape::SmoothFromActor(SmoothFromActor { end })
+    } else {
+        Shape::LineFromActor(LineFromActor { end })
+    };
+    follow(name, shape, false, mode)
 }
 
 /// oscsim's FollowTrajectoryAction timed at `lead`'s speed (scenario

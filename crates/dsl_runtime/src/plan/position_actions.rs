@@ -7,7 +7,7 @@
 //! | `assign_position(position \| route_point \| odr_point)` | TeleportAction to the lane position of the place on the plan road | at once |
 //! | `assign_orientation(target)` | TeleportAction to where the actor is, the orientation absolute (world yaw, pitch, roll); the actor must stand | at once |
 //! | `change_position(target, on_road_network: true)` | along its lane at its speed to the target's s, into the target's lane (LaneChangeAction) or offset (LaneOffsetAction), sinusoidal over exactly that time | when the actor is there |
-//! | `change_position(target, interpolation)` | FollowTrajectoryAction along the straight line from where the actor is to the target (at a known start a six-dimensional Polyline that leaves the actor facing along the target's lane where it ends, `path_shape::line_ending_along`), or (`smooth`) the cubic Hermite curve from the actor's heading along its lane into the lane's heading at the target (`path_shape`), at its speed (after a run-time condition a straight line whose first vertex is a RelativeObjectPosition at the actor, which the engine resolves when the action starts, or the curve from the actor's pose then, oscsim's SmoothFromActor shape) | when the actor is there |
+//! | `change_position(target, interpolation)` | FollowTrajectoryAction along the straight line from where the actor is to the target (at a known start a six-dimensional Polyline that leaves the actor facing along the target's lane where it ends, `path_shape::line_ending_along`), or (`smooth`) the cubic Hermite curve from the actor's heading along its lane into the lane's heading at the target (`path_shape`), at its speed (after a run-time condition the same line from where the engine finds the actor when the action starts, oscsim's LineFromActor shape, or the curve from the actor's pose then, oscsim's SmoothFromActor shape) | when the actor is there |
 //!
 //! Exactly one of the three arguments is given (none is a missing argument, two contradict).
 //! The place must be in a driving lane of the plan road (the road the planner moves actors on):
@@ -257,30 +257,16 @@ impl Planner<'_> {
         let Some(t) = t0 else {
             // After a run-time condition the path starts where the engine finds the actor: the
             // smooth curve from its pose then (oscsim's SmoothFromActor, whose tangents the
-            // engine scales with the chord it finds), or a line whose first vertex is the actor
-            // itself (a RelativeObjectPosition, resolved when the action starts), at the speed
-            // it has then; the phase ends with the action.
+            // engine scales with the chord it finds), or the straight line from its point then
+            // (oscsim's LineFromActor: facing along the line, then along the target's lane
+            // where it ends, as at a known start), at the speed it has then; the phase ends
+            // with the action.
             let Some(end) = road.world_pose(s1, road.lane_center(lane, s1) + offset) else {
                 return Err(off_road(&place.site, road.id(), s1, "its length"));
             };
             let n = name("change_position");
-            if smooth {
-                let action =
-                    path_shape::smooth_from_actor(&n, end, FollowingMode::Position, &place.site);
-                out.push(Planned::with_phase(target, n.clone(), action, &p.site));
-                return Ok(Some(self.ends(None, 0.0, &n, p)));
-            }
-            let (x1, y1, _) = end;
-            let here = PositionKind::RelativeObject {
-                entity_ref: target.to_string(),
-                dx: 0.0,
-                dy: 0.0,
-                dz: None,
-                orientation: None,
-            };
-            let kinds = vec![here, path_shape::world_point(x1, y1)];
-            let action =
-                path_shape::polyline_through(&n, kinds, None, FollowingMode::Position, &place.site);
+            let mode = FollowingMode::Position;
+            let action = path_shape::from_actor(&n, end, smooth, mode, &place.site);
             out.push(Planned::with_phase(target, n.clone(), action, &p.site));
             return Ok(Some(self.ends(None, 0.0, &n, p)));
         };

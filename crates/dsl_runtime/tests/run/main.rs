@@ -30,6 +30,7 @@ mod random_traffic;
 mod relative_modifiers;
 mod reuse;
 mod runtime;
+mod runtime_place;
 mod runtime_rates;
 mod runtime_relative_speed;
 mod shapes;

@@ -29,6 +29,9 @@
 //! * oscsim's `SmoothFromActor` (no XML form): from the actor's pose when the action starts
 //!   (its x, y and heading) to its end position, the cubic Hermite curve of
 //!   [`scenario::hermite_controls`] as a NURBS of order 4, untimed.
+//! * oscsim's `LineFromActor` (no XML form): from the actor's point when the action starts to
+//!   its end position, a six-dimensional Polyline facing along the line, then the end's
+//!   heading at the end point (a vertex that adds no length), untimed.
 //! * `closed` has no effect on Clothoid, ClothoidSpline and Nurbs (their geometry is
 //!   complete as written).
 
@@ -135,6 +138,15 @@ pub fn build_for_actor<S: PointSource + ?Sized>(
             let (piece, times) = nurbs(name, &smooth_from(a, c, ctx)?, ctx, pos)?;
             (ShapeKind::Nurbs, vec![piece], times)
         }
+        Shape::LineFromActor(c) => {
+            let Some(a) = actor else {
+                return Err(TrajectoryError::new(TrajectoryErrorKind::NoActor, pos).into());
+            };
+            let points = line_from(a, c, ctx)?;
+            let (pieces, times, headings) = polyline(&points, false)?;
+            orientations = headings;
+            (ShapeKind::Polyline, pieces, times)
+        }
         _ => {
             return Err(TrajectoryError::new(
                 TrajectoryErrorKind::UnknownShape("another shape"),
@@ -190,6 +202,31 @@ fn smooth_from<S: PointSource + ?Sized>(
         control_points,
         knots: vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0],
     })
+}
+
+/// oscsim's straight line from the actor standing at `actor` to `c.end`: the vertices of the
+/// six-dimensional Polyline (§6.9) from the actor's point to the end's at the line's heading,
+/// and the end's point again at the end's heading (coincident vertices add no length, so the
+/// heading turns only where the line ends), untimed.
+fn line_from<S: PointSource + ?Sized>(
+    actor: &Pose,
+    c: &scenario::LineFromActor,
+    ctx: &S,
+) -> std::result::Result<Vec<Point>, S::Error> {
+    let end = point(&c.end, None, ctx)?;
+    let along = (end.xyz[1] - actor.y).atan2(end.xyz[0] - actor.x);
+    let at = |xyz: [Real; 3], heading: Real| Point {
+        xyz,
+        heading,
+        oriented: true,
+        time: None,
+        pos: end.pos.clone(),
+    };
+    Ok(vec![
+        at([actor.x, actor.y, actor.z], along),
+        at(end.xyz, along),
+        at(end.xyz, end.heading),
+    ])
 }
 
 /// The times of `points` if every one has a time (non-decreasing), `None` if none has.

@@ -57,6 +57,24 @@ pub enum Shape {
     /// starts): the cubic Hermite curve ([`hermite_controls`]) from where the actor stands,
     /// facing its heading, when the action starts, to `end` facing `end`'s heading.
     SmoothFromActor(SmoothFromActor),
+    /// oscsim's straight line from the actor, a shape with no XML form (the DSL runtime writes
+    /// it for ASAM OpenSCENARIO DSL 2.1 §8.8.2.11 `change_position(…, interpolation:
+    /// straight_line)` in a phase that starts at run time, where the plan does not know where
+    /// the line starts, so no heading can be written for its vertices): from where the actor
+    /// stands when the action starts to `end`'s point, facing along the line, and at the end
+    /// facing `end`'s heading — the six-dimensional Polyline (§6.9) of the line's two ends at
+    /// the line's heading and the end point again at `end`'s, which adds no length, as the
+    /// plan writes at a known start. A Polyline from a RelativeObjectPosition at the actor
+    /// would keep the line's heading after it.
+    LineFromActor(LineFromActor),
+}
+
+/// What oscsim's straight line from the actor ([`Shape::LineFromActor`]) ends at.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LineFromActor {
+    /// Where the line ends, and the heading the actor faces there (a position without an
+    /// orientation of its own faces the way its kind gives, e.g. along a lane).
+    pub end: Position,
 }
 
 /// What oscsim's smooth curve from the actor ([`Shape::SmoothFromActor`]) ends at.
