@@ -18,7 +18,7 @@ use super::motion::{
 };
 use super::planner::Planner;
 use super::route::{self, OnRoute};
-use super::runtime::{speed_at_rate_check, speed_change_check};
+use super::runtime::{speed_at_rate_check, speed_change_check, standing_check};
 use super::speed_actions::Slot;
 use super::types::{Planned, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
@@ -173,18 +173,25 @@ impl Planner<'_> {
                 self.entities[e].yaw = Some(y);
             }
             self.heading_asks.extend(asks);
+            if t0.is_none() && !first {
+                // After a run-time start the actor's heading is the engine's (plan::runtime).
+                self.start_yaws(mods, target, &mut name, (&mut *out, &mut *after))?;
+            }
             self.check_avoid_collisions(inv, mods, target)?;
             // keep_position() in a later phase: the vehicle must stand when it starts.
             if let Some(k) = mods.iter().find(|m| m.kind == ModKind::KeepPosition) {
-                let v = match t0 {
-                    Some(t) => self.track(target).at(t).1,
-                    None => self.last_v[target],
-                };
-                if !first && v.abs() > 1e-9 {
-                    return Err(k.site.err(
-                        K::Unsatisfiable,
-                        format!("expected `{target}` standing at the start of {}(), found it at {v:.2} m/s (stop it in an earlier phase)", k.name),
-                    ));
+                match t0 {
+                    // After a run-time start the speed is the engine's (plan::runtime).
+                    None => out.push(standing_check(target, k, name("check"))),
+                    Some(t) => {
+                        let v = self.track(target).at(t).1;
+                        if !first && v.abs() > 1e-9 {
+                            return Err(k.site.err(
+                                K::Unsatisfiable,
+                                format!("expected `{target}` standing at the start of {}(), found it at {v:.2} m/s (stop it in an earlier phase)", k.name),
+                            ));
+                        }
+                    }
                 }
             }
             // The action itself, then its modifiers.

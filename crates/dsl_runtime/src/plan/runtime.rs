@@ -16,6 +16,8 @@
 //! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
+//! | `yaw(ψ)`, `orientation(yaw: ψ)` relative to the road | the engine's check of the actor's heading minus the road's where it is: at the start (at: start, all) and the end (at: end, all) (`start_yaws`) |
+//! | `keep_position()` | the engine's check that the actor stands at the start (`standing_check`) |
 //! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal offset change over T in the actor's own lane to k·W + c, W the lane's width where the actor is at each step (at the end: where it ends the phase) |
 //! | `lateral(d, side_of/left_of/right_of: x, at: end)` over a phase of duration T | projected: the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked; actual: the engine's sinusoidal blend to x's t at every step plus it; beside a lane change the change's lane is the engine's check at the end (`lateral_end`) |
 //! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all, start or end | the engine's RelativeAccelerationAction: x's acceleration ± a in every step (at: all, end), or x's over the first step held (at: start) (`acceleration_follow`) |
@@ -57,10 +59,10 @@ use super::planner::Planner;
 use super::route::StartOnRoute;
 use super::types::{
     Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE,
-    SPEED_TOLERANCE,
+    SPEED_TOLERANCE, YAW_TOLERANCE,
 };
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{Arg, ModKind, Modifier, Val};
+use crate::resolve::{Arg, At, ModKind, Modifier, Val};
 
 impl Planner<'_> {
     /// The engine's check of `m` (a `lane`, `position` or `lateral` constraint at the start of
@@ -132,10 +134,14 @@ impl Planner<'_> {
                 let (k, c) = lateral::offset_in_width(m, w, self.width(target))?;
                 check.offset_in_width = Some((k, c, LATERAL_TOLERANCE));
             }
+            // The callers pass only these three kinds (invoke's `lane`/`position`/`lateral`
+            // at a run-time start, `lane_kept_to_end`'s `lane(…)`): no modifier reaches this
+            // (every other one at a run-time start is the table's, a check of its own, or
+            // holds by the plan's construction: docs/dsl.md, the run-time table).
             _ => {
                 return Err(m.site.err(
-                    K::Unsupported,
-                    format!("expected lane, position or lateral at the start of a phase that starts on a run-time condition, found {}(…)", m.name),
+                    K::Modifier,
+                    format!("expected lane, position or lateral for the engine's check of a place at the start of a phase that starts on a run-time condition, found {}(…)", m.name),
                 ))
             }
         }
@@ -313,6 +319,58 @@ impl Planner<'_> {
         ])
     }
 
+    /// The engine's checks of the yaws relative to the road (§8.9.9 `relative_to_road`, the
+    /// default measure of `yaw(…)` and `orientation(…)`: "actor yaw relative to road s-axis")
+    /// that `mods` ask of `target` in a phase that starts on a run-time condition: the plan
+    /// has checked each is the yaw the actor keeps (`check_orientation`: 0 along its lane, π
+    /// against s, or its first phase's), but the actor's heading then is the run's (a line or
+    /// a lane change cut short by an `until` leaves it turned), so the engine checks it at the
+    /// phase start (at: start, all; as the action `name("check")`) and at the phase end (at:
+    /// end, all; in `after`, as `name("yaw").end`), within [`YAW_TOLERANCE`]. Within the phase
+    /// the actor turns only with a lateral movement, which the plan refuses beside at: all.
+    pub(super) fn start_yaws(
+        &self,
+        mods: &[Modifier],
+        target: &str,
+        name: &mut dyn FnMut(&str) -> String,
+        (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
+    ) -> Result<(), Error> {
+        for m in mods.iter().filter(|m| m.kind == ModKind::Orientation) {
+            let (measure, angle) = match m.name.as_str() {
+                "yaw" => ("measure_by", "angle"),
+                _ => ("measured_by", "yaw"),
+            };
+            let road = match m.arg(measure).map(Arg::eval).transpose()? {
+                Some(Val::Enum(by)) => by == "relative_to_road",
+                _ => true,
+            };
+            let Some(e) = m
+                .arg(angle)
+                .filter(|_| road && m.arg("relative_to").is_none())
+            else {
+                continue;
+            };
+            let check = StateCheck {
+                yaw: Some((e.number()?, YAW_TOLERANCE)),
+                ..StateCheck::default()
+            };
+            if m.at != At::End {
+                let what = (m.name.as_str(), &m.site);
+                out.push(phase_start_check(
+                    target,
+                    what,
+                    check.clone(),
+                    name("check"),
+                ));
+            }
+            if m.at != At::Start {
+                let n = format!("{}.end", name("yaw"));
+                after.push(self.end_check(m, target, n, check));
+            }
+        }
+        Ok(())
+    }
+
     /// The engine's `acceleration(a)` (alone, no speed target beside it) for `target` over a
     /// phase of `len` s that starts on a run-time condition, as the actions `name("check")`
     /// and `name("acceleration")`: the engine's check that v₀ + a·T stays within 0 and the
@@ -470,6 +528,20 @@ pub(super) fn speed_at_rate_check(
         ..StateCheck::default()
     };
     phase_start_check(target, (what, site), check, name)
+}
+
+/// The engine's check that `target` stands when a phase of it that starts on a run-time
+/// condition starts, for `keep_position()` `k` (§8.8 "keeps its position": nothing beside it
+/// moves the actor, `check_keeps`, so one standing then stands throughout), as the action
+/// `name`: the plan's speed where it last knows the actor is not the actor's after a gap
+/// action or a `change_acceleration` (it records the speed a held braking would reach), so a
+/// moving actor is an error record and a failed run, never a silent pass.
+pub(super) fn standing_check(target: &str, k: &Modifier, name: String) -> Planned {
+    let check = StateCheck {
+        speed: Some((None, 0.0, SPEED_TOLERANCE)),
+        ..StateCheck::default()
+    };
+    phase_start_check(target, (&k.name, &k.site), check, name)
 }
 
 /// `check` as the engine's check at the start of a phase of `target`, named for the modifier

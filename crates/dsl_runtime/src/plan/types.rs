@@ -26,6 +26,11 @@ pub(crate) const SPEED_TOLERANCE: f64 = 0.01;
 /// How far from a `lateral(…)` offset a later phase may start (m).
 pub(crate) const LATERAL_TOLERANCE: f64 = 0.01;
 
+/// How closely the engine's check after a run-time start finds a yaw relative to the road
+/// (rad, 0.057°): an actor along its lane is at the road's heading up to float round-off; one
+/// a line or lane change left turned is off by far more.
+pub(crate) const YAW_TOLERANCE: f64 = 1e-3;
+
 /// A moment of the plan.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum When {

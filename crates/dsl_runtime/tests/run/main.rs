@@ -33,6 +33,7 @@ mod runtime;
 mod runtime_place;
 mod runtime_rates;
 mod runtime_relative_speed;
+mod runtime_start_checks;
 mod shapes;
 mod speed_actions;
 mod support;
