@@ -110,6 +110,7 @@ impl Planner<'_> {
                 to_speed: Some(Box::new(SpeedChange {
                     what: format!("{}(…) at {}", q.name, q.site.at()),
                     speed: v1,
+                    of: None,
                     within: len,
                 })),
             },

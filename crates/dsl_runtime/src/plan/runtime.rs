@@ -25,7 +25,7 @@
 //! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends, beside the engine's check that v₀ + a·T is within 0 and the vehicle's maximum speed then |
 //! | `speed(v, at: end)`, `change_speed(v)` (or to another actor's speed) over a phase of duration T, `change_speed(v, duration)` | the engine's SpeedAction over T from the speed the actor has, beside the engine's check that its peak rate fits the vehicle's limit then (a failure: an error record and a failed run, not a stretched change) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a, beside the engine's check that \|v − v₀\|/a ≤ T from the speed v₀ the actor has then (`speed_at_rate_check`) |
-//! | `speed(same_as/faster_than/slower_than: x, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a to x's speed (actual: read each step, followed after the change, checked at the end; projected: x's at the start), beside the engine's check that \|v_x ± δ − v₀\|/a ≤ T from both speeds then (`start_relative_speed_at_rate`) |
+//! | `speed(same_as/faster_than/slower_than: x, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a to x's speed (actual: read each step, followed after the change, checked at the end; projected: x's at the start), beside the engine's check that \|v_x ± δ − v₀\|/a ≤ T from both speeds then (`start_relative_speed_at_rate`); at the rate of another actor's acceleration, the engine's RelativeAccelerationAction toward x's speed, followed once reached (`relative_rate_to_relative_speed`) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `distance(d)` without a duration | the engine's SpeedAction at the rate of `acceleration(a)` beside it, else `change_speed`'s default, beside the engine's check that \|v² − v₀²\|/(2a) ≤ d from the speed v₀ the actor has then (`speed_at_rate_check`); the phase ends at d travelled since the start's mark (`runtime_end`); relative to another actor x, to x's speed read at each step and followed after the change, checked at the end (projected: x's speed at the start) (`relative_over_distance`) |
 //! | `change_speed(v)`, `speed(v, at: end)` at the rate of `acceleration(a, faster_than/slower_than/same_as: x)` beside `distance(d)` without a duration | the engine's RelativeAccelerationAction toward v with no time of its own, and its check at the phase end (d travelled) that the actor is at v (`runtime_end`) |
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
@@ -48,7 +48,7 @@
 
 use scenario::{
     DynamicsDimension, DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction,
-    OffsetInWidth, PlanRoads, PrivateAction, RateWithin, SpeedTarget, StateCheck,
+    OffsetInWidth, PlanRoads, PrivateAction, RateWithin, SpeedOf, SpeedTarget, StateCheck,
     TransitionDynamics, Travel, TravelGoal,
 };
 
@@ -274,8 +274,9 @@ impl Planner<'_> {
     /// x's speed read at each step and followed after the change (the engine's linear change
     /// over the length fixed at the start, blended to x's speed as it moves), checked at the
     /// phase end (`relative_speed_over_distance`); `track: projected` x's speed as the action
-    /// starts, fixed. An acceleration relative to another actor as the rate stays an error:
-    /// the engine's change at such a rate aims at a speed of its own.
+    /// starts, fixed. At the rate of an acceleration relative to another actor y, the
+    /// engine's change at y's acceleration (`relative_rate_to_relative_speed`), with no check
+    /// at the start (its length depends on y's acceleration over it).
     pub(super) fn start_relative_speed_at_rate(
         &self,
         (m, q): (&Modifier, &Modifier),
@@ -283,12 +284,12 @@ impl Planner<'_> {
         (x, len): ((String, f64), f64),
         (check_name, name): (String, String),
         after: &mut Vec<Planned>,
-    ) -> Result<[Planned; 2], Error> {
-        if let Some(y) = relative_to(q) {
-            return Err(y.site.err(
-                K::Unsupported,
-                format!("expected acceleration(a) of its own beside a speed relative to `{}` in a phase that starts on a run-time condition, found one relative to another actor (not run yet: the engine's change at another actor's acceleration aims at a speed of its own)", x.0),
-            ));
+    ) -> Result<Vec<Planned>, Error> {
+        if relative_to(q).is_some() {
+            // No check at the start: the change's length depends on y's acceleration over it.
+            let change =
+                self.relative_rate_to_relative_speed((m, q), target, x, len, &name, after)?;
+            return Ok(vec![change]);
         }
         let a = self.acceleration_value(q, (None, len))?.abs();
         check_accel(q, a)?;
@@ -300,7 +301,7 @@ impl Planner<'_> {
             value: a,
             following_mode: None,
         };
-        Ok([
+        Ok(vec![
             speed_at_rate_check(
                 target,
                 (&q.name, &q.site),
@@ -317,6 +318,71 @@ impl Planner<'_> {
                 &m.site,
             ),
         ])
+    }
+
+    /// The engine's change toward `v1` m/s (added to a relative target's speed) within
+    /// `within` s at the rate of `q`, an `acceleration(a, faster_than/slower_than/same_as: y)`,
+    /// in a phase that starts on a run-time condition (`relative_rate_at_run_time`); `track:
+    /// projected` is `acceleration_value`'s error (y projected has no acceleration).
+    pub(super) fn rate_at_run_time(
+        &self,
+        q: &Modifier,
+        v1: f64,
+        within: f64,
+    ) -> Result<PrivateAction, Error> {
+        match self.relative_rate_at_run_time(Some(q), None, (v1, within))? {
+            Some(action) => Ok(action),
+            None => self.acceleration_value(q, (None, within)).and(Err(q.site.err(
+                K::Modifier,
+                "expected track: actual for an acceleration relative to another actor, found projected",
+            ))),
+        }
+    }
+
+    /// The speed `m` asks of `target` relative to `x` (± `delta`) at the end of a phase that
+    /// starts on a run-time condition, at the rate of `q`, an `acceleration(a,
+    /// faster_than/slower_than/same_as: y)`, as the action `name`: the engine's
+    /// RelativeAccelerationAction toward x's speed ± δ (oscsim's `to_speed` with a target
+    /// relative to x, `SpeedOf`, no XML form), its rate \|a_y ± a\| as the engine reads y's
+    /// acceleration (at: start over the phase's first step, held; at: all and end in every
+    /// step, `relative_rate_at_run_time`); with `track: actual` x's speed read in every step
+    /// and followed once reached, the engine's check at the phase end (in `after`) that the
+    /// actor is at x's speed then ± δ; `track: projected` x's speed as the action starts,
+    /// fixed. Not there `within` s after the start (the phase's length; a distance ends the
+    /// phase instead with `f64::INFINITY`) is an error record and a failed run.
+    pub(super) fn relative_rate_to_relative_speed(
+        &self,
+        (m, q): (&Modifier, &Modifier),
+        target: &str,
+        (x, delta): (String, f64),
+        within: f64,
+        name: &str,
+        after: &mut Vec<Planned>,
+    ) -> Result<Planned, Error> {
+        let mut action = self.rate_at_run_time(q, delta, within)?;
+        if let PrivateAction::Longitudinal(LongitudinalAction::RelativeAcceleration {
+            to_speed: Some(change),
+            ..
+        }) = &mut action
+        {
+            change.of = Some(SpeedOf {
+                entity_ref: x.clone(),
+                projected: m.projected,
+            });
+        }
+        if !m.projected {
+            let check = StateCheck {
+                speed: Some((Some(x), delta, SPEED_TOLERANCE)),
+                ..StateCheck::default()
+            };
+            after.push(self.end_check(m, target, format!("{name}.end"), check));
+        }
+        Ok(Planned::with_phase(
+            target,
+            name.to_string(),
+            action,
+            &m.site,
+        ))
     }
 
     /// The engine's checks of the yaws relative to the road (§8.9.9 `relative_to_road`, the

@@ -8,7 +8,7 @@
 //! | `distance(d)` without a duration | a state check at the start notes the actor's odometer (a mark); the phase ends when the engine measures d travelled since (TraveledSinceMark) |
 //! | `position(d / time: t / neither, ahead_of/behind: x, at: end)` without a duration (at any start; on a plan over several roads in the plan's s) | the check at the start notes the actor's side of the place the gap asks for (at x's speed); the phase ends when the engine measures the actor there or past it (GapReachedSinceMark) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `distance(d)` without a duration | the engine's SpeedAction at the rate of `acceleration(a)` beside it (else `change_speed`'s default 2 m/s²) from the speed v₀ the actor has, beside its check that the change, \|v² − v₀²\|/(2a), fits within d; the phase ends at d travelled since the mark |
-//! | the same at the rate of `acceleration(a, faster_than/slower_than/same_as: x)` | the engine's RelativeAccelerationAction toward v at x's acceleration ± a as it reads it, with no time of its own; the phase ends at d travelled, and the engine checks then that the actor is at v (how far the change runs depends on x's acceleration over it) |
+//! | the same at the rate of `acceleration(a, faster_than/slower_than/same_as: x)` | the engine's RelativeAccelerationAction toward v at x's acceleration ± a as it reads it, with no time of its own; the phase ends at d travelled, and the engine checks then that the actor is at v (how far the change runs depends on x's acceleration over it); toward another actor's speed, followed once reached, checked at the end likewise |
 //! | `position(…, at: end)`, `distance(d)` over a duration beside `speed(v)` at: all | the speed holds; the engine checks the place (or d travelled since the start's mark) at the phase end: a constraint that holds only if the run meets it is an error record if it does not |
 //! | `keep_lane()`, `lane(…)` at: all beside `lateral(d, side_of/left_of/right_of: x, at: end)` | the engine's check at the phase end: the actor in the lane it had at the start (a mark notes it) or in the lane `lane(…)` asks |
 //! | `speed(same_as/faster_than/slower_than: x, at: end)` beside a TravelAction | the profile ends at x's speed at the start (± the value); the engine checks x's speed at the phase end |
@@ -174,8 +174,8 @@ impl Planner<'_> {
         Ok(end)
     }
 
-    /// After a run-time start, the speed change `m` of `target` to `v1` (`relative`: a speed
-    /// relative to another actor, an error here) at the rate of `q`, an `acceleration(a,
+    /// After a run-time start, the speed change `m` of `target` to `v1` (`relative`: to
+    /// another actor's speed ± δ, `relative_rate_to_relative_speed`) at the rate of `q`, an `acceleration(a,
     /// faster_than/slower_than/same_as: x)`, beside `distance(d)` without a duration, as the
     /// action `name`: the engine's RelativeAccelerationAction toward v1 (`to_speed`, the rate
     /// x's acceleration ± a as the engine reads it, at: start over the phase's first step and
@@ -194,21 +194,21 @@ impl Planner<'_> {
         out: &mut Vec<Planned>,
         after: &mut Vec<Planned>,
     ) -> Result<(), Error> {
-        if let Some((x, _)) = relative {
-            return Err(q.site.err(
-                K::Unsupported,
-                format!("expected acceleration(a) of its own beside a speed relative to `{x}` in a phase that starts on a run-time condition, found one relative to another actor (not run yet: the engine's change at another actor's acceleration aims at a speed of its own)"),
-            ));
+        if let Some(x) = relative {
+            // Toward x's speed, followed on until d ends the phase, checked at its end.
+            let change = self.relative_rate_to_relative_speed(
+                (m, q),
+                target,
+                x,
+                f64::INFINITY,
+                &name,
+                after,
+            )?;
+            out.push(change);
+            return Ok(());
         }
         check_speed(m, v1)?;
-        let Some(action) = self.relative_rate_at_run_time(Some(q), None, (v1, f64::INFINITY))?
-        else {
-            // Projected: x has no acceleration to read (`acceleration_value` names it).
-            return self.acceleration_value(q, (None, 0.0)).and(Err(q.site.err(
-                K::Modifier,
-                "expected track: actual for an acceleration relative to another actor, found projected",
-            )));
-        };
+        let action = self.rate_at_run_time(q, v1, f64::INFINITY)?;
         out.push(Planned::with_phase(target, name, action, &m.site));
         let check = StateCheck {
             speed: Some((None, v1, SPEED_TOLERANCE)),

@@ -96,3 +96,64 @@ fn a_speed_change_at_another_actors_acceleration_over_a_distance_after_an_until_
         4.45,
     );
 }
+
+/// runtime_speed_relative_rate_relative.osc's comment, by hand: ego and tail change toward
+/// lead's falling speed at lead's −1 m/s² − 5 (6 m/s²), meet it at 5.75 s (5.6 m/s) and follow
+/// it; ego's 4 s phase ends at lead's 4 m/s, tail's distance(49.1m) at 10.15 s. At −1 − 2 the
+/// change never meets lead within the 4 s: the run fails at 7.35 s.
+#[test]
+fn a_speed_relative_to_another_at_its_acceleration_after_an_until_follows_it() {
+    let r = run("runtime_speed_relative_rate_relative", 0, None);
+    phases(
+        &r,
+        &[("do.approach", 0.0, 3.35), ("do.follow", 3.35, 10.15)],
+    );
+    let (start, end) = r.phase("do.follow.1");
+    assert!(
+        (start - 3.35).abs() < 1e-9 && (end - 7.35).abs() < 1e-9,
+        "ego's [{start}, {end}]"
+    );
+    let (start, end) = r.phase("do.follow.2");
+    assert!(
+        (start - 3.35).abs() < 1e-9 && (end - 10.15).abs() < 1e-9,
+        "tail's [{start}, {end}]"
+    );
+    let want = [
+        (3.35, 20.0),
+        (4.35, 14.0),
+        (5.35, 8.0),
+        (5.70, 5.9),
+        (5.75, 5.6),
+        (6.75, 4.6),
+        (7.35, 4.0),
+    ];
+    ego_speeds(&r, &want);
+    for (t, v) in want {
+        let tail = r.at(t, "tail");
+        assert!((tail.speed - v).abs() < V_TOL, "{t}: {tail:?}");
+    }
+    // tail's distance from s = 167 m at 3.35 s, worked out in the scenario's comment.
+    for (t, s) in [(5.75, 30.36), (7.35, 38.0), (10.15, 49.2)] {
+        let tail = r.at(t, "tail");
+        assert!(
+            (tail.s - 167.0 - s).abs() < super::S_TOL,
+            "{t}: {tail:?}, want {s} m on"
+        );
+    }
+    ran_at(
+        &r,
+        &[
+            ("do.follow.1/ego/2:speed.end", 7.35),
+            ("do.follow.2/tail/2:speed.end", 10.15),
+        ],
+    );
+    let want = "expected 'ego' at 4.000 m/s within 4.000 s of its start (acceleration(…) at ";
+    let tail =
+        "runtime_speed_relative_rate_relative_fails.osc:24:17), found 8.000 m/s at t = 7.350 s";
+    fails(
+        "runtime_speed_relative_rate_relative_fails",
+        (want, tail),
+        "do.follow.1/ego/2:speed",
+        7.35,
+    );
+}

@@ -23,7 +23,11 @@
 //! by |a|·dt (a the acceleration above: held, or the reference's over the step plus the
 //! value), not past it; the action ends in the step that reaches the target, and fails in the
 //! step that ends `within` s after its start without it (an error record, and the run stops,
-//! as a failed state check: [`ErrorKind::CheckFailed`]).
+//! as a failed state check: [`ErrorKind::CheckFailed`]). A target relative to an entity
+//! (`SpeedChange::of`) is that entity's speed plus the change's: read once at the start when
+//! projected, else in every step, and then the action follows it once reached (at the same
+//! rate, so it does not end by itself), failing only where it is not there `within` s after
+//! its start.
 
 use scenario::SpeedChange;
 
@@ -47,8 +51,12 @@ pub(crate) struct RelativeAccelerationState {
     start_speed: f64,
     reference_start_speed: f64,
     start_time: f64,
-    /// The speed change the acceleration is the rate of, if any.
+    /// The speed change the acceleration is the rate of, if any (a target relative to an
+    /// entity read at the start when projected: then fixed).
     to_speed: Option<SpeedChange>,
+    /// The entity whose speed the change aims at, read in every step (`SpeedChange::of`, not
+    /// projected): the target is its speed plus `to_speed`'s, followed once reached.
+    target_of: Option<EntityId>,
     /// The reference's speed at the last step's end (m/s): its acceleration over a step.
     reference_last_speed: f64,
     /// Why the speed change failed, for the action table to report.
@@ -71,6 +79,24 @@ pub(crate) fn start(
             pos,
         )
     })?;
+    let mut to_speed = to_speed.cloned();
+    let mut target_of = None;
+    if let Some(change) = to_speed.as_mut() {
+        if let Some(of) = change.of.take() {
+            let id = world.id(&of.entity_ref).ok_or_else(|| {
+                Error::at(
+                    "a declared entity",
+                    format!("entityRef '{}'", of.entity_ref),
+                    pos,
+                )
+            })?;
+            // Projected: the entity's speed now, fixed; else read in every step.
+            match of.projected {
+                true => change.speed += world.entity(id).speed,
+                false => target_of = Some(id),
+            }
+        }
+    }
     Ok(Part::RelativeAcceleration(RelativeAccelerationState {
         reference,
         value,
@@ -79,7 +105,8 @@ pub(crate) fn start(
         start_speed: world.entity(actor).speed,
         reference_start_speed: world.entity(reference).speed,
         start_time: now,
-        to_speed: to_speed.cloned(),
+        to_speed,
+        target_of,
         reference_last_speed: world.entity(reference).speed,
         failure: None,
     }))
@@ -133,7 +160,9 @@ fn toward(
     };
     let e = world.entity(actor);
     let (v, name) = (e.speed, e.name.clone());
-    let gap = change.speed - v;
+    // A target relative to an entity: its speed now plus the change's.
+    let target = change.speed + s.target_of.map_or(0.0, |o| world.entity(o).speed);
+    let gap = target - v;
     let fail = |expected: String, found: String| {
         Some(Error::new(ErrorKind::CheckFailed {
             what: change.what.clone(),
@@ -159,20 +188,22 @@ fn toward(
         return ActionStatus::Stopped;
     }
     let wanted = if gap.abs() <= a.abs() * dt {
-        change.speed
+        target
     } else {
         v + gap.signum() * a.abs() * dt
     };
     let status = super::acceleration::set_speed(world, actor, wanted, gap.signum() * a.abs(), dt);
     let reached = world.entity(actor).speed;
-    if (reached - change.speed).abs() <= crate::tolerance::SPEED {
+    let there = (reached - target).abs() <= crate::tolerance::SPEED;
+    // A fixed target ends the change; an entity's speed is followed on.
+    if there && s.target_of.is_none() {
         return ActionStatus::Ended;
     }
-    if tau >= change.within - crate::tolerance::TIME {
+    if !there && tau >= change.within - crate::tolerance::TIME {
         s.failure = fail(
             format!(
-                "'{name}' at {:.3} m/s within {:.3} s of its start",
-                change.speed, change.within
+                "'{name}' at {target:.3} m/s within {:.3} s of its start",
+                change.within
             ),
             format!("{reached:.3} m/s"),
         );
@@ -197,6 +228,7 @@ mod tests {
             reference_start_speed: 10.0,
             start_time: 1.0,
             to_speed: None,
+            target_of: None,
             reference_last_speed: 10.0,
             failure: None,
         }

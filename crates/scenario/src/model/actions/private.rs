@@ -329,11 +329,28 @@ pub enum LongitudinalAction {
 pub struct SpeedChange {
     /// What is asked and where it is written, for the error ("acceleration(…) at f.osc:9:13").
     pub what: String,
-    /// The speed to reach (m/s).
+    /// The speed to reach (m/s); with [`SpeedChange::of`], added to that entity's speed.
     pub speed: f64,
+    /// oscsim's relative target, no XML form (ASAM OpenSCENARIO DSL 2.1 §8.9
+    /// `speed(same_as/faster_than/slower_than: x, at: end)` at the rate of another actor's
+    /// acceleration, in a phase that starts on a run-time condition): the speed to reach is
+    /// this entity's plus [`SpeedChange::speed`]. `None`: `speed` itself.
+    pub of: Option<SpeedOf>,
     /// The time from the action's start within which it must be reached (s): else an error
     /// record in the event log, and the run stops with that error.
     pub within: f64,
+}
+
+/// The entity whose speed a [`SpeedChange`] aims at ([`SpeedChange::of`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpeedOf {
+    /// The entity.
+    pub entity_ref: String,
+    /// Its speed as the action starts, fixed (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track:
+    /// projected`); else read in every step, the change toward it and, once there, following
+    /// it at the same rate until the action is stopped (`track: actual`: "the vehicle reacts
+    /// to the behavior of the referenced vehicle"), so the action does not end by itself.
+    pub projected: bool,
 }
 
 /// What a LongitudinalDistanceAction with `at_start` keeps: the value of its kind the engine
