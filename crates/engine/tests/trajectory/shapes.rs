@@ -279,3 +279,47 @@ fn high_degree_nurbs_keeps_linear_precision() {
     assert!((t.length() - 80.0).abs() < 1e-9, "{}", t.length());
     assert_point(t.eval(33.0), 33.0, 0.0, 0.0, 1e-9);
 }
+
+#[test]
+fn line_from_the_actor_faces_along_it_and_turns_to_its_end_heading_where_it_ends() {
+    // oscsim's LineFromActor: the actor at (10, 5) facing 1.0 rad when the action starts, the
+    // end (50, 35) facing π/6: the chord (40, 30) is 50 m at atan2(30, 40) = 0.6435 rad; the
+    // vehicle faces it from its first point (not its own 1.0 rad) to the end, and π/6 at the
+    // end point (a vertex that adds no length).
+    let actor = opendrive::Pose {
+        x: 10.0,
+        y: 5.0,
+        h: 1.0,
+        ..opendrive::Pose::default()
+    };
+    let shape = Shape::LineFromActor(scenario::LineFromActor {
+        end: world_at(50.0, 35.0, 0.0, FRAC_PI_6, 1),
+    });
+    let t = engine::trajectory::build_for_actor(
+        &trajectory(shape, false),
+        &straight(),
+        Some(&actor),
+        &here(),
+    )
+    .expect("valid trajectory");
+    let along = 30f64.atan2(40.0);
+    assert!((t.length() - 50.0).abs() < TOL);
+    assert_point(t.eval(25.0), 30.0, 20.0, along, TOL);
+    for (s, h) in [
+        (0.0, along),
+        (25.0, along),
+        (50.0 - 1e-6, along),
+        (50.0, FRAC_PI_6),
+    ] {
+        let got = t.orientation_at(s).expect("six-dimensional");
+        assert!(
+            opendrive::angle_difference(got, h).abs() < TOL,
+            "{s}: {got}, want {h}"
+        );
+    }
+    // Without an actor (a TrajectoryPosition's shape): an error, not a line from nowhere.
+    let shape = Shape::LineFromActor(scenario::LineFromActor {
+        end: world_at(50.0, 35.0, 0.0, FRAC_PI_6, 1),
+    });
+    assert!(build(&trajectory(shape, false), &straight(), &here()).is_err());
+}
