@@ -206,10 +206,10 @@ pub fn lower_program(
     let mut wanted: Vec<String> = Vec::new();
     for (k, a) in named.iter().enumerate() {
         // `named_routes` gives only routes with points.
-        let Some((lane, points)) = plan::route_points(&a.route) else {
+        let Some(points) = plan::route_points(&a.route) else {
             continue;
         };
-        let (id, _) = &points[0];
+        let (id, _, _) = &points[0];
         if points.len() == 1 {
             // The first route's road must exist; a later one off the plan is an error at it
             // (`plan::route::on_plan_road`).
@@ -228,8 +228,8 @@ pub fn lower_program(
             }
             wanted.push(id.clone());
         } else {
-            let roads = road::route_roads(road, lane, &points)
-                .map_err(|m| a.site.err(ErrorKind::Road, m))?;
+            let roads =
+                road::route_roads(road, &points).map_err(|m| a.site.err(ErrorKind::Road, m))?;
             wanted.extend(roads.iter().map(|&i| road.roads()[i].id.clone()));
             chains.push(road::PlanRoad::through(road, &roads));
         }
@@ -242,12 +242,13 @@ pub fn lower_program(
             succeeding,
         } = &m.kind
         {
-            if let (Some((la, mut a)), Some((lb, b))) = (
+            if let (Some(mut a), Some(b)) = (
                 plan::route_points(preceding),
                 plan::route_points(succeeding),
             ) {
+                let same_lane = a.last().map(|p| p.1) == b.first().map(|p| p.1);
                 a.extend(b);
-                if let (true, Ok(roads)) = (la == lb, road::route_roads(road, la, &a)) {
+                if let (true, Ok(roads)) = (same_lane, road::route_roads(road, &a)) {
                     wanted.extend(roads.iter().map(|&i| road.roads()[i].id.clone()));
                     chains.push(road::PlanRoad::through(road, &roads));
                 }
@@ -268,8 +269,7 @@ pub fn lower_program(
             continue;
         };
         let way = plan::junction_roads(road, std::slice::from_ref(m));
-        let own = plan::route_points(made)
-            .and_then(|(lane, points)| road::route_roads(road, lane, &points).ok());
+        let own = plan::route_points(made).and_then(|points| road::route_roads(road, &points).ok());
         if let (Some(way), Some(own)) = (way, own) {
             // The way runs from the made route's last road to the field's, or from the
             // field's road to the made route's first.

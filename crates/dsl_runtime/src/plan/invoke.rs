@@ -961,6 +961,12 @@ impl Planner<'_> {
             }
             .filter(|_| !self.engine_moved.contains_key(target));
             let alongs = self.alongs.get(&p.path).cloned().unwrap_or_default();
+            // The lane changes of a route through points in other lanes (`route_moves`), where
+            // the plan knows the actor's motion.
+            let known = t0.filter(|_| !self.engine_moved.contains_key(target));
+            for along in &alongs {
+                self.plan_route_moves(along, mods, target, (known, te), &mut name, out)?;
+            }
             let mut shared = std::mem::take(&mut self.route_lanes);
             let track = self.track(target).clone();
             let lane = |t: f64| track.lane(t);

@@ -144,7 +144,7 @@ fn in_sequence(
     preceding: &Route,
     succeeding: &Route,
 ) -> Result<(), Error> {
-    let (Some((la, a)), Some((lb, b))) = (
+    let (Some(a), Some(b)) = (
         super::route::points(preceding),
         super::route::points(succeeding),
     ) else {
@@ -152,7 +152,8 @@ fn in_sequence(
         return Ok(());
     };
     let (last, first) = (a[a.len() - 1].clone(), b[0].clone());
-    let at = |(id, s): &(String, f64)| format!("road {id} at s = {s} m");
+    let (la, lb) = (last.1, first.1);
+    let at = |(id, _, s): &(String, i32, f64)| format!("road {id} at s = {s} m");
     if a.len() < 2 {
         return Err(m.site.err(
             K::Road,
@@ -162,11 +163,11 @@ fn in_sequence(
     if la != lb {
         return Err(m.site.err(
             K::Road,
-            format!("expected the succeeding route in the preceding one's lane {la} (the plan keeps one lane id over its roads), found lane {lb}"),
+            format!("expected the succeeding route to start in the lane the preceding one ends in, lane {la} (a route's lane changes are between its own points), found lane {lb}"),
         ));
     }
     let net = road.network();
-    let roads = crate::road::route_roads(net, la, &[last.clone(), first.clone()])
+    let roads = crate::road::route_roads(net, &[last.clone(), first.clone()])
         .map_err(|e| m.site.err(K::Road, format!("expected the succeeding route to start where the preceding one ends ({}) or after it: {e}", at(&last))))?;
     let through_junction = roads.len() == 3 && net.roads()[roads[1]].junction.is_some();
     if roads.len() > 2 && !through_junction {

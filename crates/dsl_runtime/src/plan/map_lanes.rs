@@ -519,8 +519,8 @@ fn made_lane(net: &RoadNetwork, preceding: &SeqEnd, succeeding: &SeqEnd) -> Opti
         (None, Some(r)) => (r, false),
         (None, None) => return None,
     };
-    let (lane, points) = super::route::points(route)?;
-    let (id, _) = if first {
+    let points = super::route::points(route)?;
+    let (id, lane, _) = if first {
         points.last()?
     } else {
         points.first()?
@@ -534,7 +534,7 @@ fn made_lane(net: &RoadNetwork, preceding: &SeqEnd, succeeding: &SeqEnd) -> Opti
         } else {
             0
         },
-        lane,
+        lane: *lane,
     })
 }
 

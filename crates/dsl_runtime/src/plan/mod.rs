@@ -82,6 +82,7 @@
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
 //! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
+//! | `route_moves` | the lane (offset) changes between the points of a route in other lanes or at other offsets |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 //! | `overlap` | a parallel's members aligned to its `overlap:` argument (§7.3.9) |
@@ -128,6 +129,7 @@ mod random_traffic;
 mod relative_over_distance;
 mod relative_path;
 mod route;
+mod route_moves;
 mod runtime;
 mod runtime_end;
 mod schedule;
@@ -284,7 +286,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     }
     // Initial placement from each actor's first phase.
     let mut to_place = Vec::new();
-    // Walkers placed at a crossing's walked part: its lane, s and offset from the lane centre.
+    // Walkers placed at a crossing's walked part, actors at a route's start off its lane's
+    // centre: the lane, s and offset from the lane centre.
     let mut crossing_offsets = HashMap::new();
     for e in &p.entities {
         let first = p.first_leaf.get(&e.name);
@@ -407,6 +410,21 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                 Some((Some((lane, s)), against.then(|| a.site.clone())))
             });
         let (route, against) = route.unwrap_or((None, None));
+        // A route whose start is off its lane's centre (t ≠ 0): placed there, the offset to
+        // the left of its direction of travel (OpenDRIVE's t turned against s).
+        let route_t = first
+            .and_then(|f| p.alongs.get(f))
+            .into_iter()
+            .flatten()
+            .find_map(|(at, a)| match (&a.route, at) {
+                (Route::Lane { lane, t, .. }, At::Start | At::All) if *t != 0.0 => {
+                    Some(if *lane > 0 { -*t } else { *t })
+                }
+                _ => None,
+            });
+        if let (Some(offset), Some((lane, s))) = (route_t, route) {
+            crossing_offsets.insert(e.name.clone(), (lane, s, offset));
+        }
         if let Some(site) = &against {
             if p.against_road.is_none() {
                 p.against_road = Some(road.against().map_err(|m| site.err(K::Road, m))?);
@@ -443,8 +461,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     for (e, q) in p.entities.iter_mut().zip(&to_place) {
         let mut s = starts[&e.name];
         e.against = q.against || oncoming.contains(&e.name);
-        // Placed by its crossing (no lane or position of its own): off its lane's centre
-        // where the walked part starts there.
+        // Placed by its crossing or its route (no lane or position of its own): off its
+        // lane's centre where the walked part (the route) starts there.
         if let Some((lane, at, offset)) = crossing_offsets.get(&e.name) {
             if s.lane == *lane && (s.s - at).abs() < POSITION_TOLERANCE {
                 s.offset = *offset;

@@ -14,16 +14,19 @@
 //!   lanes), a `lane` or `compound_lane` one lane of it (actors along it keep that lane, and all
 //!   actors along the same field share it). Its ends are where the actors drive, so offsets from
 //!   them are not defined: a non-zero `start_offset`/`end_offset` is an error.
-//! - **`m.create_odr_point(road_id, lane_id, s, t)`** on a `map` field (`t` = 0 m): lane
-//!   `lane_id` of OpenDRIVE road `road_id` from `s` to the road's end. The plan drives on that
-//!   road; an actor along it is placed (its first phase, without `position`/`lane` at start) at
-//!   `s + start_offset` in that lane, and must be in that lane between `s + start_offset` and the
-//!   road's end minus `end_offset` at the phase start and at its end.
+//! - **`m.create_odr_point(road_id, lane_id, s, t)`** on a `map` field: lane `lane_id` of
+//!   OpenDRIVE road `road_id` from `s` to the road's end, `t` from the lane's centre line
+//!   (§8.12.2.1: "measured from the ASAM OpenDRIVE lane centerline of the lane"). The plan
+//!   drives on that road; an actor along it is placed (its first phase, without
+//!   `position`/`lane` at start) at `s + start_offset` in that lane, `t` off its centre, and
+//!   must be in that lane between `s + start_offset` and the road's end minus `end_offset` at
+//!   the phase start and at its end.
 //!
-//! - **`m.create_route([p, q, …])`** of odr points (`m.create_odr_point(…)`, `t` = 0 m, in
-//!   one lane id) and routes made the same way: lane `lane_id` from the first point to the
-//!   last, over the roads of the network's shortest lane path through the points
-//!   (`crate::road::route_roads`), so through a junction by the connection the points say.
+//! - **`m.create_route([p, q, …])`** of odr points (`m.create_odr_point(…)`, in lanes driven
+//!   one way) and routes made the same way: from the first point to the last, over the roads
+//!   of the network's shortest lane path through the points (`crate::road::route_roads`), so
+//!   through a junction by the connection the points say; between two points in other lanes
+//!   or at other `t` the actor changes lanes (its offset), `crate::plan`'s `route_moves`.
 //!   Placement and checks as for one point, the end being the last point.
 //!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
@@ -50,9 +53,10 @@ pub(crate) enum Route {
         /// A `lane`/`compound_lane`: one lane, kept.
         one_lane: bool,
     },
-    /// Lane `lane` of road `road` from s = `s`: to the end of the plan's roads, or with
-    /// `then`, over the roads of the network's shortest lane path through those points to the
-    /// last one (`map.create_route`).
+    /// Lane `lane` of road `road` from s = `s`, `t` from the lane's centre: to the end of the
+    /// plan's roads, or with `then`, over the roads of the network's shortest lane path
+    /// through those points to the last one (`map.create_route`), changing lanes (or its
+    /// offset in the lane) between two points in other lanes (at other offsets).
     Lane {
         /// OpenDRIVE road id.
         road: String,
@@ -60,9 +64,11 @@ pub(crate) enum Route {
         lane: i32,
         /// Where the route starts (m of s).
         s: f64,
-        /// The route's later points in order, each an OpenDRIVE road id and s, in lane `lane`
-        /// (empty: a route from one point, `create_odr_point`).
-        then: Vec<(String, f64)>,
+        /// The start's offset from the lane's centre (m, OpenDRIVE t: + left of +s).
+        t: f64,
+        /// The route's later points in order (empty: a route from one point,
+        /// `create_odr_point`).
+        then: Vec<Waypoint>,
     },
     /// A `crossing` field the map's `crossing_connects` binds to a crosswalk of the map: a
     /// person walks it from its start lane to its end lane.
@@ -70,6 +76,19 @@ pub(crate) enum Route {
         /// The field's path.
         field: String,
     },
+}
+
+/// A later point of a route through points (`map.create_route`): an odr point.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Waypoint {
+    /// OpenDRIVE road id.
+    pub road: String,
+    /// OpenDRIVE lane id.
+    pub lane: i32,
+    /// s (m).
+    pub s: f64,
+    /// Offset from the lane's centre (m, OpenDRIVE t: + left of +s).
+    pub t: f64,
 }
 
 /// An `along(…)` application, read.
@@ -245,23 +264,30 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                 other => return Err(unsupported(&format!("map.{other}(…)"))),
             }
             // Both calls give at least one point.
-            let (road, lane, s, _) = points[0].clone();
-            let mut then = Vec::new();
-            for (r, l, at, span) in points.into_iter().skip(1) {
-                if l != lane {
-                    return Err(ctx.files.err(
-                        K::Unsupported,
-                        span,
-                        format!("expected every point of a route in lane {lane} (the plan keeps its lane ids over its roads; a route through other lanes is not run), found lane {l}"),
-                    ));
-                }
-                then.push((r, at));
+            let first = points.remove(0);
+            // A route's points are on lanes driven one way: from a lane driven in +s into one
+            // driven in -s (right-hand traffic: the sign of the id) the route turns about.
+            if let Some(p) = points.iter().find(|p| (p.lane > 0) != (first.lane > 0)) {
+                return Err(ctx.files.err(
+                    K::Road,
+                    p.span,
+                    format!("expected every point of a route in a lane driven the way lane {} is (a legal route, §8.12.2.1 legal_route; right-hand traffic: {}), found lane {}, driven the other way (a route from it would turn about, which no lane change does)", first.lane, if first.lane > 0 { "lanes of positive id driven in -s" } else { "lanes of negative id driven in +s" }, p.lane),
+                ));
             }
             Ok(Route::Lane {
-                road,
-                lane,
-                s,
-                then,
+                road: first.road,
+                lane: first.lane,
+                s: first.s,
+                t: first.t,
+                then: points
+                    .into_iter()
+                    .map(|p| Waypoint {
+                        road: p.road,
+                        lane: p.lane,
+                        s: p.s,
+                        t: p.t,
+                    })
+                    .collect(),
             })
         }
         ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
@@ -353,25 +379,31 @@ pub(crate) fn lane_field(ctx: &Ctx<'_>, a: &super::value::Arg) -> Result<LaneFie
     }
 }
 
-/// A point of a route: road id, lane id, s, and where it is written.
-type RoutePoint = (String, i32, f64, dsl::semantics::hir::Span);
+/// A point of a route, read, and where it is written.
+struct RoutePoint {
+    road: String,
+    lane: i32,
+    s: f64,
+    t: f64,
+    span: dsl::semantics::hir::Span,
+}
 
 /// The point of `map.create_odr_point(…)` (its call `e`, arguments `args`) as a route's
-/// point: on the lane's centre line (t = 0 m).
+/// point: `t` from the lane's centre line (§8.12.2.1: "the t-coordinate is measured from the
+/// ASAM OpenDRIVE lane centerline of the lane"), which the route passes there.
 fn route_start(
     ctx: &Ctx<'_>,
     e: &Expr,
     args: &[dsl::semantics::hir::Arg],
 ) -> Result<RoutePoint, Error> {
     let p = odr_point(ctx, e, args)?;
-    if p.t != 0.0 {
-        return Err(ctx.files.err(
-            K::Unsupported,
-            p.t_span,
-            format!("expected t = 0 m (a route runs along the lane's centre line), found {} m; use lateral(…) for an offset", p.t),
-        ));
-    }
-    Ok((p.road, p.lane, p.s, e.span))
+    Ok(RoutePoint {
+        road: p.road,
+        lane: p.lane,
+        s: p.s,
+        t: p.t,
+        span: e.span,
+    })
 }
 
 /// The points of `map.create_route(routes, connect_points_by, legal_route)` (ASAM OpenSCENARIO

@@ -29,6 +29,7 @@ mod position_actions;
 mod random_traffic;
 mod relative_modifiers;
 mod reuse;
+mod routes;
 mod runtime;
 mod runtime_place;
 mod runtime_rates;

@@ -140,8 +140,8 @@ fn routes_no_path_joins_or_in_two_lanes_are_errors_at_their_place() {
         ),
         (
             "err_route_two_lanes",
-            "expected every point of a route in lane -1 (the plan keeps its lane ids over its roads; a route through other lanes is not run), found lane 1",
-            "err_route_two_lanes.osc:7:71",
+            "expected every point of a route in a lane driven the way lane -1 is (a legal route, §8.12.2.1 legal_route; right-hand traffic: lanes of negative id driven in +s), found lane 1, driven the other way (a route from it would turn about, which no lane change does)",
+            "err_route_two_lanes.osc:8:71",
         ),
     ] {
         let e = match lower_at(

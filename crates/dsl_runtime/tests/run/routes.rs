@@ -1,0 +1,114 @@
+//! Routes through points in other lanes and at other offsets from their lanes' centres
+//! (issue 27; ASAM OpenSCENARIO DSL 2.1 §8.12.2.1 `create_route`, `create_odr_point`): the
+//! actor changes lanes (its offset) over the stretch between two points, so it passes each
+//! point where it is. Motions worked by hand in the scenario files' comments.
+
+use std::f64::consts::PI;
+
+use crate::support::{lower, run};
+
+/// Positions on the straight road away from a change: float round-off only.
+const S_TOL: f64 = 1e-6;
+/// y against the closed form of the change at the x the engine reports: the engine's step
+/// foresees the sideways share of a step at its start and end (lane_change's `Foreseen`), so
+/// y and x agree to the step's second order.
+const CHANGE_TOL: f64 = 2e-3;
+/// x where a change's longer path leaves the actor short of the plan's s (m): the closed form
+/// A²π²/(16L) of the extra length, summed over the changes.
+const PATH_TOL: f64 = 5e-3;
+
+#[test]
+fn a_route_through_points_in_other_lanes_changes_lanes_between_them() {
+    let r = run("route_lanes", 0, None);
+    // Start: lane -1, x 20.
+    let p = r.at(0.0, "ego");
+    assert!(
+        (p.x - 20.0).abs() < S_TOL && (p.y + 1.75).abs() < S_TOL && p.lane == -1,
+        "{p:?}"
+    );
+    // Before the first change (50 m at 3 s) it keeps lane -1's centre.
+    let p = r.at(2.9, "ego");
+    assert!((p.y + 1.75).abs() < S_TOL && p.lane == -1, "{p:?}");
+    // The offset change after the lane change starts when the engine's triggers see the
+    // lane change's end (a step after the step it ends in): x0 the last x at lane -2's
+    // centre, at most two steps' travel (2 * 10 m/s * 0.05 s) past the point at 90 m.
+    let x0 = r
+        .frames
+        .iter()
+        .filter_map(|(_, objs)| objs.iter().find(|o| o.name == "ego"))
+        .filter(|p| p.x >= 90.0 && (p.y + 5.25).abs() < S_TOL)
+        .map(|p| p.x)
+        .fold(f64::NAN, f64::max);
+    assert!((90.0..=91.0).contains(&x0), "x0 {x0}");
+    // Every step: y the closed form of the stretch the engine's x is on.
+    let mut seen_mid = false;
+    for (t, objs) in &r.frames {
+        let Some(p) = objs.iter().find(|o| o.name == "ego") else {
+            continue;
+        };
+        let want = if p.x <= 50.0 {
+            -1.75
+        } else if p.x <= 90.0 {
+            -1.75 - 3.5 * (1.0 - (PI * (p.x - 50.0) / 40.0).cos()) / 2.0
+        } else if p.x <= x0 {
+            -5.25
+        } else {
+            -5.25 + 0.5 * (1.0 - (PI * (p.x - x0) / (120.0 - x0)).cos()) / 2.0
+        };
+        assert!(
+            (p.y - want).abs() < CHANGE_TOL,
+            "at {t} s: {p:?}, want y {want}"
+        );
+        // Mid-point of the lane change: y = -3.5 m at x = 70 m.
+        if (p.x - 70.0).abs() < 0.25 {
+            assert!(
+                (p.y + 3.5).abs() < 0.25 * 3.5 * PI / 80.0 + CHANGE_TOL,
+                "{p:?}"
+            );
+            seen_mid = true;
+        }
+    }
+    assert!(seen_mid);
+    // End of the lane change: lane -2 by 7 s and x = 90 less its longer path.
+    let extra = 3.5f64.powi(2) * PI * PI / (16.0 * 40.0);
+    let p = r.at(7.05, "ego");
+    assert_eq!(p.lane, -2, "{p:?}");
+    // End: 0.5 m left of lane -2's centre, x = 120 less both changes' extra path.
+    let extra2 = extra + 0.5f64.powi(2) * PI * PI / (16.0 * (120.0 - x0));
+    let p = r.at(10.0, "ego");
+    assert!((p.y + 4.75).abs() < CHANGE_TOL && p.lane == -2, "{p:?}");
+    assert!(
+        (p.x - (120.0 - extra2)).abs() < PATH_TOL,
+        "{p:?} (extra {extra2})"
+    );
+    // npc: one point at t = -0.5 m, kept.
+    for (t, x) in [(0.0, 10.0), (5.0, 35.0), (10.0, 60.0)] {
+        let p = r.at(t, "npc");
+        assert!(
+            (p.x - x).abs() < S_TOL && (p.y + 9.25).abs() < S_TOL && p.lane == -3,
+            "npc at {t} s: {p:?}"
+        );
+    }
+}
+
+#[test]
+fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
+    for (name, text, place) in [
+        (
+            "err_route_lanes_short",
+            "expected `ego` to reach the route's point in lane -2 (road 1 at s = 90.00 m) within the phase, to end the change it begins at s = 50.00 m, found it at s = 80.00 m when the phase ends (the plan's s)",
+            "err_route_lanes_short.osc:8:9",
+        ),
+        (
+            "err_route_lanes_lateral",
+            "err_route_lanes_lateral.osc:7:9 (a route through points in other lanes or at other offsets moves the actor across between them), found one",
+            "err_route_lanes_lateral.osc:8:9",
+        ),
+    ] {
+        let e = match lower(name, 0, None) {
+            Ok(_) => panic!("{name}: planned"),
+            Err(e) => e.to_string(),
+        };
+        assert!(e.contains(text) && e.ends_with(place), "{name}: {e}");
+    }
+}
