@@ -445,26 +445,38 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                 })
             };
             let made = |p: &str| call(p).map(|e| super::route::route_of(ctx, e)).transpose();
-            let road_arg = |what: &str| -> Result<(), Error> {
-                match arg(&args, "road") {
-                    Some(a) => Err(a.site.err(K::Unsupported, format!("expected routes_are_in_sequence(preceding: …, succeeding: …) without road: {what}, found road:"))),
-                    None => Ok(()),
+            // `road:` is a road field nothing else defines, the plan's roads as every free
+            // route field (`crate::road`), which hold both ends: the ends are bound to (or,
+            // made by the map, checked on) the plan's roads. An end itself holds no other
+            // route that follows it.
+            let road = arg(&args, "road")
+                .map(|a| field(ctx, a, false).map(|f| (f, a)))
+                .transpose()?;
+            if let Some((f, a)) = &road {
+                let end = |p: &str| {
+                    arg(&args, p)
+                        .and_then(|e| e.path.as_ref())
+                        .and_then(|e| ctx.lookup(e))
+                        .map(|(e, _)| e)
+                };
+                if let Some(which) = ["preceding", "succeeding"]
+                    .into_iter()
+                    .find(|p| end(p).as_deref() == Some(f.as_str()))
+                {
+                    return Err(a.site.err(
+                        K::Unsatisfiable,
+                        format!("expected a road holding both routes in road: (\"one route follows another in successive order\": the succeeding one after the preceding one's end), found `{f}`, the {which} route itself"),
+                    ));
                 }
-            };
+            }
             match (made("preceding")?, made("succeeding")?) {
-                (Some(preceding), Some(succeeding)) => {
-                    road_arg("on routes the map makes (their points name their roads)")?;
-                    MapKind::NamedInSequence {
-                        preceding,
-                        succeeding,
-                    }
-                }
+                (Some(preceding), Some(succeeding)) => MapKind::NamedInSequence {
+                    preceding,
+                    succeeding,
+                },
                 (None, None) => {
                     let (preceding, succeeding) =
                         (field_end("preceding")?, field_end("succeeding")?);
-                    let road = arg(&args, "road")
-                        .map(|a| field(ctx, a, false).map(|_| a))
-                        .transpose()?;
                     if preceding.kind == EndKind::Lane && succeeding.kind == EndKind::Lane {
                         MapKind::InSequence {
                             preceding: preceding.field,
@@ -472,12 +484,6 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                             on_plan_roads: road.is_some(),
                         }
                     } else {
-                        let roads = [&preceding, &succeeding]
-                            .iter()
-                            .any(|e| e.kind == EndKind::Road);
-                        if roads {
-                            road_arg("where one of them is a road or a route (bound to a road itself, and the other on the road after it)")?;
-                        }
                         MapKind::RoutesInSequence {
                             preceding,
                             succeeding,
@@ -487,9 +493,6 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                 // A route the map makes beside a field: the field is bound to the element
                 // after (before) it, as beside a road.
                 (Some(route), None) | (None, Some(route)) => {
-                    road_arg(
-                        "where one of them is a route the map makes (its points name its roads)",
-                    )?;
                     let first = call("preceding").is_some();
                     let which = if first { "preceding" } else { "succeeding" };
                     // A route through one point (no later points) has no end.
@@ -560,10 +563,12 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
         "roads_follow_in_junction" => {
             let direction = member("direction")?;
             if let (Some(d), Some(a)) = (&direction, arg(&args, "direction")) {
+                // §8.12 junction_direction's `other` is a way none of the four names; the
+                // headings put every way through in one of them (`plan::map_junctions::Turn`).
                 if !["straight", "right", "u_turn", "left"].contains(&d.as_str()) {
                     return Err(a.site.err(
-                        K::Unsupported,
-                        format!("expected direction straight, right, u_turn or left (read from the headings), found {d}"),
+                        K::Unsatisfiable,
+                        format!("expected direction straight, right, u_turn or left, found {d}: every way through a junction is one of those four, read from the change of heading between the lane in and the lane out (within ±45° straight, 45° to 150° left or right, beyond 150° a U-turn), so no way is another"),
                     ));
                 }
             }
@@ -622,10 +627,13 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                 roads,
             }
         }
+        // `read` reads only the names of MAP_MODIFIERS, each matched above: every map
+        // modifier of the standard library (§8.12.2.2) but set_map_file, read where the map
+        // file is named (`crate::map_file`).
         other => {
             return Err(site.err(
-                K::Unsupported,
-                format!("expected map modifiers the runtime binds or checks against the loaded map (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap, routes_are_in_sequence, routes_are_opposite, roads_follow_in_junction, crossing_connects, set_traffic_lights_control_file), found {other}(…)"),
+                K::Modifier,
+                format!("expected a map modifier of §8.12.2.2 (number_of_lanes, start_lane, end_lane, lane_side, compound_lane_side, routes_overlap, routes_are_in_sequence, routes_are_opposite, roads_follow_in_junction, crossing_connects, set_traffic_lights_control_file), found {other}(…)"),
             ));
         }
     };

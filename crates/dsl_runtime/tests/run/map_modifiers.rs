@@ -395,6 +395,12 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
         "10:5",
     );
     refused(
+        "err_map_junction_other",
+        "junction_trippel_twoway0",
+        "expected direction straight, right, u_turn or left, found other: every way through a junction is one of those four",
+        "9:68",
+    );
+    refused(
         "err_map_junction",
         "junction_trippel_twoway0",
         "expected lanes of the map for `a`, `b` that satisfy roads_follow_in_junction(…), found none on roads 0, 2, 4, 6",
@@ -427,7 +433,7 @@ fn map_bindings_with_no_lane_or_a_lane_the_use_cannot_take_are_errors() {
     refused(
         "err_map_sequence_road_arg",
         "road_link_unequal_number_of_lanes0",
-        "expected routes_are_in_sequence(preceding: …, succeeding: …) without road: where one of them is a road or a route (bound to a road itself, and the other on the road after it), found road:",
+        "expected a road holding both routes in road: (\"one route follows another in successive order\": the succeeding one after the preceding one's end), found `a`, the preceding route itself",
         "11:65",
     );
     refused(
