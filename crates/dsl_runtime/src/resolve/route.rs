@@ -14,7 +14,8 @@
 //!   lanes), a `lane` or `compound_lane` one lane of it (actors along it keep that lane, and all
 //!   actors along the same field share it). Its ends are where the actors drive, so offsets from
 //!   them are not defined: a non-zero `start_offset`/`end_offset` is an error.
-//! - **`m.create_odr_point(road_id, lane_id, s, t)`** on a `map` field: lane `lane_id` of
+//! - **`m.create_odr_point(road_id, lane_id, s, t)`** (or `m.odr_to_route_point(…)`, the
+//!   same point as a route point, §8.12.2.1.1) on a `map` field: lane `lane_id` of
 //!   OpenDRIVE road `road_id` from `s` to the road's end, `t` from the lane's centre line
 //!   (§8.12.2.1: "measured from the ASAM OpenDRIVE lane centerline of the lane"). The plan
 //!   drives on that road; an actor along it is placed (its first phase, without
@@ -239,7 +240,7 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
         ctx.files.err(
             K::Unsupported,
             e.span,
-            format!("expected a route field nothing constrains (r: route, road or lane) or map.create_odr_point(road_id, lane_id, s, t) in along(…), found {what}"),
+            format!("expected a route field nothing constrains (r: route, road or lane), map.create_odr_point(road_id, lane_id, s, t), map.odr_to_route_point(…) or map.create_route(…) in along(…), found {what}"),
         )
     };
     match &e.kind {
@@ -259,7 +260,10 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             }
             let mut points = Vec::new();
             match method.text.as_str() {
-                "create_odr_point" => points.push(route_start(ctx, e, args)?),
+                // odr_to_route_point (§8.12.2.1.1) names the same point as a route point.
+                "create_odr_point" | "odr_to_route_point" => {
+                    points.push(route_start(ctx, e, args)?)
+                }
                 "create_route" => route_points(ctx, e, args, &mut points)?,
                 other => return Err(unsupported(&format!("map.{other}(…)"))),
             }
@@ -359,9 +363,12 @@ pub(crate) fn lane_field(ctx: &Ctx<'_>, a: &super::value::Arg) -> Result<LaneFie
             field,
             one_lane: true,
         })) => Some((field, "lane".to_string())),
+        // No method of the map gives a lane (create_odr_point an odr_point, create_route a
+        // compound_route): the checker refuses such a value for a lane field, so this is a
+        // value it let through, an error at the argument.
         Some(Ok(_)) => {
             return Err(a.site.err(
-                K::Unsupported,
+                K::Argument,
                 "expected a lane field nothing defines in target: (bound by the map's modifiers, along(…) or drawn at its first use), found a field given a route the map makes at its declaration (driven with along(…), not changed into)",
             ))
         }
@@ -463,7 +470,9 @@ fn route_points(
     }
     for item in items {
         match map_call(ctx, item) {
-            Some(("create_odr_point", a)) => out.push(route_start(ctx, item, a)?),
+            Some(("create_odr_point" | "odr_to_route_point", a)) => {
+                out.push(route_start(ctx, item, a)?)
+            }
             Some(("create_route", a)) => route_points(ctx, item, a, out)?,
             _ => {
                 return Err(ctx.files.err(

@@ -94,6 +94,13 @@ fn a_route_through_points_in_other_lanes_changes_lanes_between_them() {
 #[test]
 fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
     for (name, text, place) in [
+        // No method of the map gives a lane: a lane field given an odr point is the
+        // checker's error at the value (the runtime never sees it as a `target:`).
+        (
+            "err_lane_field_route",
+            "expected lane for field `l`, found odr_point",
+            "err_lane_field_route.osc:5:15",
+        ),
         (
             "err_route_lanes_short",
             "expected `ego` to reach the route's point in lane -2 (road 1 at s = 90.00 m) within the phase, to end the change it begins at s = 50.00 m, found it at s = 80.00 m when the phase ends (the plan's s)",
@@ -110,5 +117,19 @@ fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
             Err(e) => e.to_string(),
         };
         assert!(e.contains(text) && e.ends_with(place), "{name}: {e}");
+    }
+}
+/// route_point.osc, by hand: along(m.odr_to_route_point("1", "-2", 50m, 0m)), the route from
+/// that point: ego placed at (50, -5.25) in lane -2, at 10 m/s (70, -5.25) at 2 s and (90,
+/// -5.25) at 4 s.
+#[test]
+fn a_route_from_a_route_point_of_an_odr_point_is_driven_from_it() {
+    let r = run("route_point", 0, None);
+    for (t, x) in [(0.0, 50.0), (2.0, 70.0), (4.0, 90.0)] {
+        let p = r.at(t, "ego");
+        assert!(
+            (p.x - x).abs() < S_TOL && (p.y + 5.25).abs() < S_TOL && p.lane == -2,
+            "at {t} s: {p:?}"
+        );
     }
 }
