@@ -7,7 +7,8 @@
 //! modifiers bind, an odr point, a route through points in such a lane, whose path runs
 //! against s and whose roads the plan drives the other way round, `road::route_roads`), or `along(r)` of a route field the map's
 //! `routes_are_opposite(route1, route2)` binds as `route2` (§8.12.2.2.10; `bind_routes`: the
-//! plan's roads driven the other way), drives the plan's roads against s: it is placed and planned
+//! plan's roads driven the other way, or the one road `routes_are_in_sequence` bound `route1`
+//! to, driven so), drives the plan's roads against s: it is placed and planned
 //! on the view `PlanRoad::against` gives, in the distance u along its direction of travel
 //! (`crate::road`), and the lowering maps its start back to (road, s). The planner's
 //! arithmetic is the same in either direction, so what runs is what only reads the actor's
@@ -78,6 +79,7 @@ use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{
     Action, ActorKind, Along, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
 };
+use crate::road::PlanRoad;
 use crate::track::Track;
 
 /// The speed relations, which hold between actors of any directions.
@@ -266,16 +268,22 @@ pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
     Ok(())
 }
 
-/// The route fields `routes_are_opposite(route1, route2)` on route fields binds to the plan's
-/// roads driven against s (`route2`), each with what bound it: `route1` is the plan's roads,
-/// as every free route field (`road_fields`: the route fields `routes_are_in_sequence` bound
-/// to one road, which are no such field). Errors at the modifier: a field opposite to itself,
-/// a field bound to one road, a field both ways.
+/// The route fields `routes_are_opposite(route1, route2)` on route fields binds to roads
+/// driven against s (`route2`), each with what bound it: `route1` is the plan's roads, as
+/// every free route field, and `route2` those roads against s; or `route1` is one road of the
+/// plan that `routes_are_in_sequence` bound (`road_fields`: its lane, the plan's s of its start
+/// and end, what bound it), and `route2` that road driven against s, returned also as a road
+/// field of its own (the first driving lane in its direction, its span in +s), which an actor
+/// along it drives from its start (u = L − its end) and must stay on (`route::check`).
+/// Errors at the modifier: a field opposite to itself, a `route2` bound in +s to one road, a
+/// field both ways, a road with no lane driven against s.
 pub(crate) fn bind_routes(
     mods: &[MapModifier],
+    road: &PlanRoad<'_>,
     road_fields: &HashMap<String, (i32, (f64, f64), String)>,
-) -> Result<HashMap<String, String>, Error> {
+) -> Result<(HashMap<String, String>, BoundRoads), Error> {
     let mut out: HashMap<String, String> = HashMap::new();
+    let mut one_road = Vec::new();
     let mut forward: Vec<&str> = Vec::new();
     for m in mods {
         let MapKind::OppositeRoutes { route1, route2 } = &m.kind else {
@@ -287,13 +295,11 @@ pub(crate) fn bind_routes(
                 format!("expected two routes in opposite directions, found `{route1}` twice"),
             ));
         }
-        for f in [route1, route2] {
-            if let Some((_, _, why)) = road_fields.get(f) {
-                return Err(m.site.err(
-                    K::Unsupported,
-                    format!("expected route fields that are the plan's roads (route1) and those roads driven against s (route2), found `{f}`, one road ({why}); lanes driven each way on one road are bound as lane fields"),
-                ));
-            }
+        if let Some((_, _, why)) = road_fields.get(route2) {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected route2 driven against s, opposite to route1, found `{route2}`, one road driven in +s ({why}: its lanes lead on in the plan's direction)"),
+            ));
         }
         if out.contains_key(route1) || forward.contains(&route2.as_str()) {
             return Err(m.site.err(
@@ -302,17 +308,40 @@ pub(crate) fn bind_routes(
             ));
         }
         forward.push(route1);
-        out.insert(
-            route2.clone(),
-            format!(
-                "the plan's roads against s, bound by map.{}(…) at {}",
+        let why = format!(
+            "the plan's roads against s, bound by map.{}(…) at {}",
+            m.name,
+            m.site.at()
+        );
+        // route1 one road of the plan: route2 that road against s, in its first driving lane
+        // in that direction (lane 1 counted from the drivers' right), from its start.
+        if let Some((_, (a, b), by)) = road_fields.get(route1) {
+            let view = road.against().map_err(|e| m.site.err(K::Road, e))?;
+            let (id, _) = road.road_at(0.5 * (a + b));
+            let Some(lane) = view.numbered(1, false, road.length() - b, false) else {
+                return Err(m.site.err(
+                    K::Road,
+                    format!("expected a driving lane of road {} driven against s for `{route2}`, opposite to `{route1}` ({by}), found none", id.id),
+                ));
+            };
+            let why = format!(
+                "road {} against s, opposite to `{route1}` ({by}), bound by map.{}(…) at {}",
+                id.id,
                 m.name,
                 m.site.at()
-            ),
-        );
+            );
+            one_road.push((route2.clone(), (lane, (*a, *b), why.clone())));
+            out.insert(route2.clone(), why);
+            continue;
+        }
+        out.insert(route2.clone(), why);
     }
-    Ok(out)
+    Ok((out, one_road))
 }
+
+/// Route fields bound to one road of the plan: the field, its lane, the plan's s of the road's
+/// start and end (in +s), and what bound it.
+pub(crate) type BoundRoads = Vec<(String, (i32, (f64, f64), String))>;
 
 /// Checks that each free route `actor` drives `along` in `mods` runs in its direction:
 /// a route field bound against s (`against_routes`) for an actor driving so, any other free

@@ -231,7 +231,9 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         p.route_lanes.insert(b.field.clone(), (b.lane, b.why));
         p.lane_roads.insert(b.field, (b.road, b.span));
     }
-    p.against_routes = against::bind_routes(&res.map, &p.route_roads)?;
+    let (against_routes, against_roads) = against::bind_routes(&res.map, road, &p.route_roads)?;
+    p.against_routes = against_routes;
+    p.route_roads.extend(against_roads);
     // Actors, in the order the tree names them, and each one's first phase.
     let mut leaves: Vec<&Phase> = Vec::new();
     for leaf in root.leaves() {
@@ -387,11 +389,15 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                         crossing_start.map(|(lane, s, _)| (lane, s, false))?
                     }
                     // A route field `routes_are_opposite` binds to the plan's roads against
-                    // s: no start of its own (the actor floats, in u).
+                    // s: no start of its own (the actor floats, in u); to one road of the
+                    // plan against s: from its start in u = L − its end.
                     (Route::Free { field, .. }, At::Start | At::All)
                         if p.against_routes.contains_key(field) =>
                     {
-                        return Some((None, Some(a.site.clone())));
+                        let Some((lane, (_, to), _)) = p.route_roads.get(field) else {
+                            return Some((None, Some(a.site.clone())));
+                        };
+                        (*lane, road.length() - to, true)
                     }
                     (Route::Free { field, .. }, At::Start | At::All) => {
                         match (p.lane_roads.get(field), p.route_lanes.get(field)) {

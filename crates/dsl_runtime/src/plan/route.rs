@@ -105,9 +105,12 @@ pub(crate) fn check(
         }
     }
     let (lo, hi) = match &along.route {
-        Route::Free { .. } | Route::Crossing { .. } => {
-            bound.map_or((0.0, road.length()), |(_, span, _)| *span)
-        }
+        // A road field's span is in +s; on the view of an actor driving against s, in u.
+        Route::Free { .. } | Route::Crossing { .. } => match bound {
+            None => (0.0, road.length()),
+            Some((_, (a, b), _)) if road.is_against() => (road.length() - b, road.length() - a),
+            Some((_, span, _)) => *span,
+        },
         Route::Lane {
             road: id, s, then, ..
         } => (

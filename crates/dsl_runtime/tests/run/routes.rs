@@ -5,7 +5,7 @@
 
 use std::f64::consts::PI;
 
-use crate::support::{lower, run};
+use crate::support::{lower, lower_at, run, run_on};
 
 /// Positions on the straight road away from a change: float round-off only.
 const S_TOL: f64 = 1e-6;
@@ -132,4 +132,50 @@ fn a_route_from_a_route_point_of_an_odr_point_is_driven_from_it() {
             "at {t} s: {p:?}"
         );
     }
+}
+
+/// opposite_road_sequence.osc, by hand: back = road 2 driven against s, npc from its start
+/// (road 2's end, rear bumper there) in lane 2 at 10 m/s, 50 m on at 5 s; ego along b = road 2
+/// in +s from x 100 to 150 m.
+#[test]
+fn a_road_the_map_binds_driven_the_other_way_is_that_road_against_s() {
+    let r = run_on(
+        "opposite_road_sequence",
+        "road_link_unequal_number_of_lanes0",
+    );
+    let npc0 = r.at(0.0, "npc");
+    // Its rear overhang: the reference point's distance from the rear bumper.
+    let rear = 100.0 - npc0.s;
+    assert!((0.0..2.5).contains(&rear), "{npc0:?}");
+    assert!(
+        npc0.road == "2" && npc0.lane == 2 && (npc0.y - 4.5).abs() < S_TOL,
+        "{npc0:?}"
+    );
+    assert!((npc0.h - PI).abs() < S_TOL, "{npc0:?}");
+    let npc = r.at(5.0, "npc");
+    assert!(
+        npc.road == "2" && npc.lane == 2 && (npc.s - (50.0 - rear)).abs() < S_TOL,
+        "{npc:?}"
+    );
+    assert!((npc.x - (150.0 - rear)).abs() < S_TOL, "{npc:?}");
+    let ego = r.at(5.0, "ego");
+    assert!(ego.road == "2" && (ego.x - 150.0).abs() < S_TOL, "{ego:?}");
+}
+
+#[test]
+fn a_road_bound_in_plus_s_as_the_route_against_s_is_an_error_at_the_modifier() {
+    let e = match lower_at(
+        "tests/scenarios/err_opposite_road_sequence.osc",
+        "tests/roads/road_link_unequal_number_of_lanes0.xodr",
+        0,
+        None,
+    ) {
+        Ok(_) => panic!("planned"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        e.contains("expected route2 driven against s, opposite to route1, found `b`, one road driven in +s")
+            && e.ends_with("err_opposite_road_sequence.osc:8:5"),
+        "{e}"
+    );
 }
