@@ -53,7 +53,7 @@ impl Planner<'_> {
         }: Slot<'_>,
         name: &mut dyn FnMut(&str) -> String,
     ) -> Result<Option<When>, Error> {
-        let Route::Crossing { field } = &along.route else {
+        let Route::Crossing { field, .. } = &along.route else {
             return Ok(None);
         };
         let data = &self.entities[self.index[target]].data;

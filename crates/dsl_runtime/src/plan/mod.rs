@@ -255,6 +255,11 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
             if let (ModKind::Along, Some(a)) = (m.kind, &m.along) {
                 route::on_plan_road(road, a)?;
+                // A route the map makes across a crossing: walked (crossed) as a crossing
+                // field the map binds.
+                if let Some(c) = route::made_crossing(road, a)? {
+                    p.crossings.entry(c.field.clone()).or_insert(c);
+                }
                 if let Route::Free { field, .. } = &a.route {
                     if let (Some((other, None)), Some((lane, why))) =
                         (p.lane_roads.get(field), p.route_lanes.get(field))
@@ -346,7 +351,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             .into_iter()
             .flatten()
             .find_map(|(at, a)| match (&a.route, at) {
-                (Route::Crossing { field }, At::Start | At::All) => {
+                (Route::Crossing { field, .. }, At::Start | At::All) => {
                     p.crossings.get(field).map(|c| (c, a))
                 }
                 _ => None,

@@ -8,6 +8,7 @@
 
 use std::collections::HashMap;
 
+use super::map_crossings::{crossing, MapCrossing};
 use super::types::POSITION_TOLERANCE;
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Along, At, Kind, ModKind, Modifier, Phase, Route};
@@ -67,7 +68,7 @@ pub(crate) fn check(
     };
     let describe = match (&along.route, bound) {
         (Route::Free { field, .. }, Some((_, _, why))) => format!("route `{field}` ({why})"),
-        (Route::Free { field, .. } | Route::Crossing { field }, _) => format!("route `{field}`"),
+        (Route::Free { field, .. } | Route::Crossing { field, .. }, _) => format!("route `{field}`"),
         (
             Route::Lane {
                 road,
@@ -378,4 +379,80 @@ fn lanes_at(points: &[(f64, i32, f64)], s: f64) -> Vec<i32> {
         }
     }
     lanes
+}
+
+/// The crossing of a route the map makes across one (`create_route([a, b], connect_points_by:
+/// crossing)`, §8.12 `connect_route_points`): the crosswalk of the map that holds the straight
+/// line from a's lane centre at its s to b's at its s (`map_crossings::crossing`, starting at
+/// a's s at the angle that line makes with the lane's direction), as `crossing_connects`
+/// binds one; `None` for another route. Errors at `along`: a road off the plan, lanes not in
+/// one lane section, no crosswalk holding the line.
+pub(crate) fn made_crossing(
+    road: &PlanRoad<'_>,
+    along: &Along,
+) -> Result<Option<MapCrossing>, Error> {
+    let Route::Crossing {
+        field,
+        points: Some(pts),
+    } = &along.route
+    else {
+        return Ok(None);
+    };
+    let net = road.network();
+    let describe = format!(
+        "lane {} at s = {} m to lane {} at s = {} m of road {}",
+        pts.start.0, pts.start.1, pts.end.0, pts.end.1, pts.road
+    );
+    let (Some(index), Some(road_start)) = (
+        net.roads().iter().position(|r| r.id == pts.road),
+        road.plan_s(&pts.road, 0.0),
+    ) else {
+        return Err(along.site.err(
+            K::Road,
+            format!(
+                "expected the route across a crossing on a road the plan drives on ({}), found road {}",
+                road.ids().join(", "),
+                pts.road
+            ),
+        ));
+    };
+    let own = &net.roads()[index];
+    let handle = |(lane, s): (i32, f64)| opendrive::LaneHandle {
+        road: index as u32,
+        section: own.lane_section_index(s) as u32,
+        lane,
+    };
+    // The line's angle to the lane's direction, from the lanes' centres at the start.
+    let centre = |lane: i32, s: f64| own.lane_span(lane, s).ok().map(|sp| sp.center());
+    let dt = match (
+        centre(pts.start.0, pts.start.1),
+        centre(pts.end.0, pts.start.1),
+    ) {
+        (Some(a), Some(b)) => (b - a).abs(),
+        _ => 0.0,
+    };
+    let angle = dt.atan2(pts.end.1 - pts.start.1);
+    let found = crossing(
+        net,
+        handle(pts.start),
+        handle(pts.end),
+        Some(pts.start.1),
+        (angle > 0.0).then_some(angle),
+    )
+    .filter(|c| (c.end.1 - pts.end.1).abs() <= POSITION_TOLERANCE);
+    let Some(c) = found else {
+        return Err(along.site.err(
+            K::Road,
+            format!("expected a crosswalk of the map holding the straight line from {describe} in one lane section (connect_points_by: crossing), found none"),
+        ));
+    };
+    Ok(Some(MapCrossing {
+        field: field.clone(),
+        why: format!(
+            "crosswalk {} of road {} the route crosses by",
+            c.object, pts.road
+        ),
+        road_start,
+        crossing: c,
+    }))
 }

@@ -32,7 +32,10 @@
 //!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
 //!   person walking along it crosses from its start lane to its end lane (`crate::plan`),
-//!   from `start_offset` m after the crossing's start to `end_offset` m before its end.
+//!   from `start_offset` m after the crossing's start to `end_offset` m before its end; and
+//!   **`m.create_route([a, b], connect_points_by: crossing)`**, two odr points in two lanes
+//!   of one road joined across the crosswalk that holds the line between them, crossed the
+//!   same way.
 //!
 //! Everything else (paths, route points, list elements of the map, other map
 //! methods) is an error naming the argument.
@@ -74,9 +77,24 @@ pub(crate) enum Route {
     /// A `crossing` field the map's `crossing_connects` binds to a crosswalk of the map: a
     /// person walks it from its start lane to its end lane.
     Crossing {
-        /// The field's path.
+        /// The field's path (for a route the map makes across a crossing, its place).
         field: String,
+        /// The route's two points, for `map.create_route([a, b], connect_points_by:
+        /// crossing)` (`None`: a field `crossing_connects` binds).
+        points: Option<Box<CrossingPoints>>,
     },
+}
+
+/// The two points of a route the map makes across a crossing (`create_route([a, b],
+/// connect_points_by: crossing)`): one road, a start and an end lane, each with its s.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct CrossingPoints {
+    /// OpenDRIVE road id.
+    pub road: String,
+    /// The start: lane id and s (m).
+    pub start: (i32, f64),
+    /// The end: lane id and s (m).
+    pub end: (i32, f64),
 }
 
 /// A later point of a route through points (`map.create_route`): an odr point.
@@ -264,7 +282,11 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                 "create_odr_point" | "odr_to_route_point" => {
                     points.push(route_start(ctx, e, args)?)
                 }
-                "create_route" => route_points(ctx, e, args, &mut points)?,
+                "create_route" => {
+                    if route_points(ctx, e, args, &mut points)? {
+                        return crossing_route(ctx, e, points);
+                    }
+                }
                 other => return Err(unsupported(&format!("map.{other}(…)"))),
             }
             // Both calls give at least one point.
@@ -311,7 +333,10 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             match ctx.lookup(&path) {
                 Some((_, Value::RunTime(ty))) => {
                     if is_a(ctx, ty, "crossing") {
-                        Ok(Route::Crossing { field: path })
+                        Ok(Route::Crossing {
+                            field: path,
+                            points: None,
+                        })
                     } else if WHOLE_ROAD.iter().any(|t| is_exactly_or_user(ctx, ty, t)) {
                         Ok(Route::Free {
                             field: path,
@@ -418,15 +443,15 @@ fn route_start(
 /// (`map.create_odr_point(…)`) or a route made the same way (its points). The points are
 /// joined by the network's shortest lane path in the driving direction (the `road` module):
 /// `connect_points_by` `waypoint` (the default), `lane`, `lane_section` and `road` all give
-/// that path (it runs in the points' lane over whole lane sections and roads); `crossing`
-/// (a pedestrian crossing) is an error. A path in the lanes' driving direction is a legal
-/// route, so `legal_route` holds either way.
+/// that path (it runs in the points' lane over whole lane sections and roads); with `crossing`
+/// the points are joined across a crossing of the map (`crossing_route`): `true`. A path in
+/// the lanes' driving direction is a legal route, so `legal_route` holds either way.
 fn route_points(
     ctx: &Ctx<'_>,
     e: &Expr,
     args: &[dsl::semantics::hir::Arg],
     out: &mut Vec<RoutePoint>,
-) -> Result<(), Error> {
+) -> Result<bool, Error> {
     let params: Vec<String> = ["routes", "connect_points_by", "legal_route"]
         .iter()
         .map(|s| s.to_string())
@@ -439,14 +464,22 @@ fn route_points(
             ExprKind::Name(m) => Some(m.as_str()),
             _ => None,
         };
-        if !matches!(member, Some("waypoint" | "lane" | "lane_section" | "road")) {
+        if !matches!(
+            member,
+            Some("waypoint" | "lane" | "lane_section" | "road" | "crossing")
+        ) {
             return Err(ctx.files.err(
-                K::Unsupported,
+                K::Value,
                 c.span,
-                "expected connect_points_by waypoint, lane, lane_section or road (a vehicle's route over the lanes), found another value",
+                "expected connect_points_by waypoint, lane, lane_section, road or crossing (§8.12 connect_route_points), found another value",
             ));
         }
     }
+    let crossing = arg("connect_points_by").is_some_and(|c| match &c.kind {
+        ExprKind::EnumValue(_, m) => m.text == "crossing",
+        ExprKind::Name(m) => m == "crossing",
+        _ => false,
+    });
     let Some(list) = arg("routes") else {
         return Err(ctx.files.err(
             K::Value,
@@ -473,7 +506,15 @@ fn route_points(
             Some(("create_odr_point" | "odr_to_route_point", a)) => {
                 out.push(route_start(ctx, item, a)?)
             }
-            Some(("create_route", a)) => route_points(ctx, item, a, out)?,
+            Some(("create_route", a)) => {
+                if route_points(ctx, item, a, out)? {
+                    return Err(ctx.files.err(
+                        K::Value,
+                        item.span,
+                        "expected odr points and routes over the lanes in create_route(…), found a route across a crossing (a crossing joins two points of its own)",
+                    ));
+                }
+            }
             _ => {
                 return Err(ctx.files.err(
                     K::Unsupported,
@@ -483,7 +524,43 @@ fn route_points(
             }
         }
     }
-    Ok(())
+    Ok(crossing)
+}
+
+/// The route of `map.create_route([a, b], connect_points_by: crossing)` (its call `e`, its
+/// points): §8.12's `connect_route_points` member `crossing` joins the points across a
+/// crossing, so the two points must be on one road, in two lanes, at its lanes' centres (the
+/// crossing runs "a straight line" from one lane's centre to the other's, as
+/// `crossing_connects` says); the crosswalk of the map that holds the line is found by the
+/// plan (`crate::plan`'s `map_crossings`).
+fn crossing_route(ctx: &Ctx<'_>, e: &Expr, points: Vec<RoutePoint>) -> Result<Route, Error> {
+    let wrong = |span, found: String| {
+        ctx.files.err(
+            K::Value,
+            span,
+            format!("expected two odr points on one road, in two lanes at their centres (t = 0 m), joined across a crossing (connect_points_by: crossing), found {found}"),
+        )
+    };
+    let [a, b] = points.as_slice() else {
+        return Err(wrong(e.span, format!("{} points", points.len())));
+    };
+    if b.road != a.road {
+        return Err(wrong(b.span, format!("roads {} and {}", a.road, b.road)));
+    }
+    if b.lane == a.lane {
+        return Err(wrong(b.span, format!("both in lane {}", a.lane)));
+    }
+    if let Some(p) = [a, b].into_iter().find(|p| p.t != 0.0) {
+        return Err(wrong(p.span, format!("t = {} m", p.t)));
+    }
+    Ok(Route::Crossing {
+        field: format!("the route across a crossing at {}", ctx.site(e.span).at()),
+        points: Some(Box::new(CrossingPoints {
+            road: a.road.clone(),
+            start: (a.lane, a.s),
+            end: (b.lane, b.s),
+        })),
+    })
 }
 
 /// A `map.create_odr_point(road_id, lane_id, s, t)` call, read.

@@ -5,7 +5,7 @@
 
 use std::f64::consts::PI;
 
-use crate::support::{lower, lower_at, run, run_on};
+use crate::support::{lower_at, run, run_on};
 
 /// Positions on the straight road away from a change: float round-off only.
 const S_TOL: f64 = 1e-6;
@@ -13,6 +13,9 @@ const S_TOL: f64 = 1e-6;
 /// foresees the sideways share of a step at its start and end (lane_change's `Foreseen`), so
 /// y and x agree to the step's second order.
 const CHANGE_TOL: f64 = 2e-3;
+/// A walk along a crossing's line: the engine's trajectory following (mode `position`) is
+/// exact at the step's times but for float round-off.
+const WALK_TOL: f64 = 1e-6;
 /// x where a change's longer path leaves the actor short of the plan's s (m): the closed form
 /// A²π²/(16L) of the extra length, summed over the changes.
 const PATH_TOL: f64 = 5e-3;
@@ -93,26 +96,40 @@ fn a_route_through_points_in_other_lanes_changes_lanes_between_them() {
 
 #[test]
 fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
-    for (name, text, place) in [
+    for (name, road, text, place) in [
         // No method of the map gives a lane: a lane field given an odr point is the
         // checker's error at the value (the runtime never sees it as a `target:`).
         (
             "err_lane_field_route",
+            "straight",
             "expected lane for field `l`, found odr_point",
             "err_lane_field_route.osc:5:15",
         ),
         (
+            "err_route_crossing",
+            "crosswalk",
+            "expected a crosswalk of the map holding the straight line from lane -1 at s = 50 m to lane 1 at s = 50 m of road 1 in one lane section (connect_points_by: crossing), found none",
+            "err_route_crossing.osc:8:9",
+        ),
+        (
             "err_route_lanes_short",
+            "straight",
             "expected `ego` to reach the route's point in lane -2 (road 1 at s = 90.00 m) within the phase, to end the change it begins at s = 50.00 m, found it at s = 80.00 m when the phase ends (the plan's s)",
             "err_route_lanes_short.osc:8:9",
         ),
         (
             "err_route_lanes_lateral",
+            "straight",
             "err_route_lanes_lateral.osc:7:9 (a route through points in other lanes or at other offsets moves the actor across between them), found one",
             "err_route_lanes_lateral.osc:8:9",
         ),
     ] {
-        let e = match lower(name, 0, None) {
+        let e = match lower_at(
+            &format!("tests/scenarios/{name}.osc"),
+            &format!("tests/roads/{road}.xodr"),
+            0,
+            None,
+        ) {
             Ok(_) => panic!("{name}: planned"),
             Err(e) => e.to_string(),
         };
@@ -178,4 +195,32 @@ fn a_road_bound_in_plus_s_as_the_route_against_s_is_an_error_at_the_modifier() {
             && e.ends_with("err_opposite_road_sequence.osc:8:5"),
         "{e}"
     );
+}
+
+/// route_crossing.osc, by hand: the line (99, -1.75) -> (101, 1.75), 4.0311 m, walked at 0.5
+/// m/s: placed at its start, (99.9923, -0.0135) at 4 s, at its end in lane 1 at 8.062 s.
+#[test]
+fn a_route_the_map_makes_across_a_crossing_is_walked_along_its_line() {
+    let r = run_on("route_crossing", "crosswalk");
+    let len = (2.0f64 * 2.0 + 3.5 * 3.5).sqrt();
+    // The walk, and with it the scenario, ends with the step that reaches the line's end
+    // (8.062 s), from 8.05 to 8.1 s; the engine moves bob on at his speed to the step's end:
+    // 0.038 s * 0.5 m/s past the end, along the line.
+    let (end, _) = r.frames.last().expect("frames");
+    assert!((end - 8.1).abs() < 1e-9, "ends at {end} s");
+    let past = (end - len / 0.5) * 0.5;
+    let along = |d: f64| (99.0 + d * 2.0 / len, -1.75 + d * 3.5 / len);
+    for (t, (x, y)) in [
+        (0.0, along(0.0)),
+        (4.0, along(2.0)),
+        (8.05, along(8.05 * 0.5)),
+        (*end, along(len + past)),
+    ] {
+        let p = r.at(t, "bob");
+        assert!(
+            (p.x - x).abs() < WALK_TOL && (p.y - y).abs() < WALK_TOL,
+            "bob at {t} s: {p:?}, want ({x}, {y})"
+        );
+    }
+    assert_eq!(r.at(*end, "bob").lane, 1);
 }
