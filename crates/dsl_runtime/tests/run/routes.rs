@@ -94,6 +94,40 @@ fn a_route_through_points_in_other_lanes_changes_lanes_between_them() {
     }
 }
 
+/// route_lanes_against.osc, by hand: the change into lane 2 over x 880 -> 840 m driving
+/// against s, y = 1.75 + 3.5 (1 - cos(pi (880 - x) / 40)) / 2 at every step.
+#[test]
+fn a_route_through_lanes_driven_against_s_changes_lanes_between_its_points() {
+    let r = run("route_lanes_against", 0, None);
+    let p = r.at(0.0, "ego");
+    assert!(
+        (p.x - 900.0).abs() < S_TOL && (p.y - 1.75).abs() < S_TOL && p.lane == 1,
+        "{p:?}"
+    );
+    for (t, objs) in &r.frames {
+        let Some(p) = objs.iter().find(|o| o.name == "ego") else {
+            continue;
+        };
+        let want = if p.x >= 880.0 {
+            1.75
+        } else if p.x >= 840.0 {
+            1.75 + 3.5 * (1.0 - (PI * (880.0 - p.x) / 40.0).cos()) / 2.0
+        } else {
+            5.25
+        };
+        assert!(
+            (p.y - want).abs() < CHANGE_TOL,
+            "at {t} s: {p:?}, want y {want}"
+        );
+    }
+    let extra = 3.5f64.powi(2) * PI * PI / (16.0 * 40.0);
+    let p = r.at(6.0, "ego");
+    assert!(
+        p.lane == 2 && (p.x - (840.0 + extra)).abs() < PATH_TOL,
+        "{p:?}"
+    );
+}
+
 #[test]
 fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
     for (name, road, text, place) in [
