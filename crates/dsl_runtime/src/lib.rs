@@ -197,7 +197,9 @@ pub fn lower_program(
     road: &opendrive::RoadNetwork,
     options: &Options,
 ) -> Result<Lowered, Error> {
-    let resolved = resolve::resolve(program, osc, options.seed, options.scenario.as_deref())?;
+    let mut resolved = resolve::resolve(program, osc, options.seed, options.scenario.as_deref())?;
+    // Route points given in world coordinates are placed on the network's roads.
+    plan::locate_points(&mut resolved, road)?;
     // The plan drives from the road of its named routes (the first of them whose roads hold
     // all the others; a route through points over its own roads), else from the first road,
     // onto the roads after it (`road`).

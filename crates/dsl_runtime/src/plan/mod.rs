@@ -143,7 +143,7 @@ use place::{place, ToPlace};
 use planner::{no_end, EventCtx, Planner};
 
 pub(crate) use map_lanes::junction_roads;
-pub(crate) use route::{named_routes, points as route_points};
+pub(crate) use route::{locate_points, named_routes, points as route_points};
 pub use types::POSITION_TOLERANCE;
 pub(crate) use types::{
     Entity, HandlerPlan, Plan, Planned, Settings, When, MAX_ACCELERATION, MAX_SPEED,

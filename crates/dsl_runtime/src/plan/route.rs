@@ -347,6 +347,7 @@ pub(crate) fn plan_points(road: &PlanRoad<'_>, route: &Route) -> Vec<(f64, i32, 
         s,
         t,
         then,
+        ..
     } = route
     else {
         return Vec::new();
@@ -455,4 +456,108 @@ pub(crate) fn made_crossing(
         road_start,
         crossing: c,
     }))
+}
+
+/// Places the route points given in world coordinates (`create_xyz_point`,
+/// `xyz_to_route_point`) of `resolved`'s routes (its `along(…)` modifiers and the map's
+/// modifiers) on the network `net`, before anything is planned: the road, lane, s and offset
+/// from the lane's centre of the road surface that holds (x, y) (`RoadNetwork::locate`), so
+/// the route is that of the odr points there. A point on no road, and a route whose points so
+/// placed are in lanes driven opposite ways, are errors at `along` (at the map's modifier).
+pub(crate) fn locate_points(
+    resolved: &mut crate::resolve::Resolved,
+    net: &opendrive::RoadNetwork,
+) -> Result<(), Error> {
+    fn walk(p: &mut Phase, net: &opendrive::RoadNetwork) -> Result<(), Error> {
+        if let Kind::Invoke(inv) = &mut p.kind {
+            for m in &mut inv.modifiers {
+                if let Some(a) = &mut m.along {
+                    locate_route(&mut a.route, net, &a.site)?;
+                }
+            }
+        }
+        for c in &mut p.children {
+            walk(c, net)?;
+        }
+        Ok(())
+    }
+    walk(&mut resolved.root, net)?;
+    for m in &mut resolved.map {
+        let site = m.site.clone();
+        match &mut m.kind {
+            crate::resolve::MapKind::NamedInSequence {
+                preceding,
+                succeeding,
+            } => {
+                locate_route(preceding, net, &site)?;
+                locate_route(succeeding, net, &site)?;
+            }
+            crate::resolve::MapKind::RoutesInSequence {
+                preceding,
+                succeeding,
+            } => {
+                for end in [preceding, succeeding] {
+                    if let Some(r) = &mut end.made {
+                        locate_route(r, net, &site)?;
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// `locate_points` for one route, its errors at `site`.
+fn locate_route(
+    route: &mut Route,
+    net: &opendrive::RoadNetwork,
+    site: &crate::error::Site,
+) -> Result<(), Error> {
+    let Route::Lane {
+        road,
+        lane,
+        s,
+        t,
+        xyz,
+        then,
+    } = route
+    else {
+        return Ok(());
+    };
+    let place = |(x, y): (f64, f64)| {
+        net.locate(x, y, None)
+            // On the road's surface: within its lane's borders (the network gives the outermost
+            // lane of the nearest road for a point beside every road).
+            .filter(|p| {
+                net.roads()
+                    .iter()
+                    .find(|r| r.id == p.road_id)
+                    .and_then(|r| r.lane_span(p.lane_id, p.s).ok())
+                    .is_some_and(|sp| {
+                        let (lo, hi) = (sp.inner.min(sp.outer), sp.inner.max(sp.outer));
+                        (lo - POSITION_TOLERANCE..=hi + POSITION_TOLERANCE).contains(&p.t)
+                    })
+            })
+            .ok_or_else(|| {
+                site.err(
+                    K::Road,
+                    format!("expected a point on a road of the network for the route's point at x = {x} m, y = {y} m (§8.12.2.1: \"if the point is not on a route, returns with an error\"), found none"),
+                )
+            })
+    };
+    if let Some(at) = xyz.take() {
+        let p = place(at)?;
+        (*road, *lane, *s, *t) = (p.road_id, p.lane_id, p.s, p.offset);
+    }
+    for w in then.iter_mut() {
+        if let Some(at) = w.xyz.take() {
+            let p = place(at)?;
+            (w.road, w.lane, w.s, w.t) = (p.road_id, p.lane_id, p.s, p.offset);
+        }
+    }
+    if let Some(w) = then.iter().find(|w| (w.lane > 0) != (*lane > 0)) {
+        return Err(site.err(K::Road, crate::resolve::one_way(*lane, w.lane)));
+    }
+    Ok(())
 }

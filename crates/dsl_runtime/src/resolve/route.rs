@@ -23,6 +23,10 @@
 //!   must be in that lane between `s + start_offset` and the road's end minus `end_offset` at
 //!   the phase start and at its end.
 //!
+//! - **`m.create_xyz_point(x, y, z)`**, **`m.xyz_to_route_point(x, y, z)`**: a point in world
+//!   coordinates, placed on the network's roads before the plan (`crate::plan`'s
+//!   `locate_points`), then as the odr point there.
+//!
 //! - **`m.create_route([p, q, …])`** of odr points (`m.create_odr_point(…)`, in lanes driven
 //!   one way) and routes made the same way: from the first point to the last, over the roads
 //!   of the network's shortest lane path through the points (`crate::road::route_roads`), so
@@ -70,6 +74,10 @@ pub(crate) enum Route {
         s: f64,
         /// The start's offset from the lane's centre (m, OpenDRIVE t: + left of +s).
         t: f64,
+        /// A start given in world coordinates (`create_xyz_point`, `xyz_to_route_point`):
+        /// (x, y), placed on the network before the plan (`crate::plan`'s
+        /// `locate_points`), which fills in `road`, `lane`, `s` and `t`.
+        xyz: Option<(f64, f64)>,
         /// The route's later points in order (empty: a route from one point,
         /// `create_odr_point`).
         then: Vec<Waypoint>,
@@ -108,6 +116,8 @@ pub(crate) struct Waypoint {
     pub s: f64,
     /// Offset from the lane's centre (m, OpenDRIVE t: + left of +s).
     pub t: f64,
+    /// Given in world coordinates: (x, y), placed on the network before the plan.
+    pub xyz: Option<(f64, f64)>,
 }
 
 /// An `along(…)` application, read.
@@ -282,6 +292,7 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                 "create_odr_point" | "odr_to_route_point" => {
                     points.push(route_start(ctx, e, args)?)
                 }
+                "create_xyz_point" | "xyz_to_route_point" => points.push(xyz_point(ctx, e, args)?),
                 "create_route" => {
                     if route_points(ctx, e, args, &mut points)? {
                         return crossing_route(ctx, e, points);
@@ -291,20 +302,22 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             }
             // Both calls give at least one point.
             let first = points.remove(0);
-            // A route's points are on lanes driven one way: from a lane driven in +s into one
-            // driven in -s (right-hand traffic: the sign of the id) the route turns about.
-            if let Some(p) = points.iter().find(|p| (p.lane > 0) != (first.lane > 0)) {
-                return Err(ctx.files.err(
-                    K::Road,
-                    p.span,
-                    format!("expected every point of a route in a lane driven the way lane {} is (a legal route, §8.12.2.1 legal_route; right-hand traffic: {}), found lane {}, driven the other way (a route from it would turn about, which no lane change does)", first.lane, if first.lane > 0 { "lanes of positive id driven in -s" } else { "lanes of negative id driven in +s" }, p.lane),
-                ));
+            // A route's points are on lanes driven one way (points in world coordinates are
+            // checked once placed on the network, `crate::plan`'s `locate_points`).
+            if first.xyz.is_none() {
+                if let Some(p) = points
+                    .iter()
+                    .find(|p| p.xyz.is_none() && (p.lane > 0) != (first.lane > 0))
+                {
+                    return Err(ctx.files.err(K::Road, p.span, one_way(first.lane, p.lane)));
+                }
             }
             Ok(Route::Lane {
                 road: first.road,
                 lane: first.lane,
                 s: first.s,
                 t: first.t,
+                xyz: first.xyz,
                 then: points
                     .into_iter()
                     .map(|p| Waypoint {
@@ -312,6 +325,7 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                         lane: p.lane,
                         s: p.s,
                         t: p.t,
+                        xyz: p.xyz,
                     })
                     .collect(),
             })
@@ -411,13 +425,52 @@ pub(crate) fn lane_field(ctx: &Ctx<'_>, a: &super::value::Arg) -> Result<LaneFie
     }
 }
 
+/// What is wrong with a route from a point in lane `first` through one in lane `other`, driven
+/// the other way: from a lane driven in +s into one driven in −s (right-hand traffic: the sign
+/// of the id) the route turns about (the rest of a sentence "expected …").
+pub(crate) fn one_way(first: i32, other: i32) -> String {
+    format!("expected every point of a route in a lane driven the way lane {first} is (a legal route, §8.12.2.1 legal_route; right-hand traffic: {}), found lane {other}, driven the other way (a route from it would turn about, which no lane change does)", if first > 0 { "lanes of positive id driven in -s" } else { "lanes of negative id driven in +s" })
+}
+
 /// A point of a route, read, and where it is written.
 struct RoutePoint {
     road: String,
     lane: i32,
     s: f64,
     t: f64,
+    xyz: Option<(f64, f64)>,
     span: dsl::semantics::hir::Span,
+}
+
+/// The point of `map.create_xyz_point(x, y, z)` or `map.xyz_to_route_point(x, y, z)` (§8.12.2.1:
+/// "takes a position in world coordinates and returns the corresponding ASAM OpenSCENARIO
+/// route-coordinates"), as a route's point: where it is, placed on the network's roads before
+/// the plan (`crate::plan`'s `locate_points`); z is not read (the roads give the height).
+fn xyz_point(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    args: &[dsl::semantics::hir::Arg],
+) -> Result<RoutePoint, Error> {
+    let params: Vec<String> = ["x", "y", "z"].iter().map(|s| s.to_string()).collect();
+    let bound = bind(args, &params);
+    let coord = |n: &str| -> Result<f64, Error> {
+        match bound.iter().find(|(p, _)| p == n) {
+            Some((_, a)) => ctx.number(a),
+            None => Err(ctx.files.err(
+                K::Value,
+                e.span,
+                format!("expected `{n}` in the point's world coordinates, found none"),
+            )),
+        }
+    };
+    Ok(RoutePoint {
+        road: String::new(),
+        lane: 0,
+        s: 0.0,
+        t: 0.0,
+        xyz: Some((coord("x")?, coord("y")?)),
+        span: e.span,
+    })
 }
 
 /// The point of `map.create_odr_point(…)` (its call `e`, arguments `args`) as a route's
@@ -434,6 +487,7 @@ fn route_start(
         lane: p.lane,
         s: p.s,
         t: p.t,
+        xyz: None,
         span: e.span,
     })
 }
@@ -505,6 +559,9 @@ fn route_points(
         match map_call(ctx, item) {
             Some(("create_odr_point" | "odr_to_route_point", a)) => {
                 out.push(route_start(ctx, item, a)?)
+            }
+            Some(("create_xyz_point" | "xyz_to_route_point", a)) => {
+                out.push(xyz_point(ctx, item, a)?)
             }
             Some(("create_route", a)) => {
                 if route_points(ctx, item, a, out)? {

@@ -128,6 +128,41 @@ fn a_route_through_lanes_driven_against_s_changes_lanes_between_its_points() {
     );
 }
 
+/// route_xyz.osc, by hand: points in world coordinates placed on the road; ego changes over
+/// x 20 -> 60 m into lane -2 0.25 m left of its centre, npc keeps its point's offset.
+#[test]
+fn route_points_in_world_coordinates_are_the_road_points_there() {
+    let r = run("route_xyz", 0, None);
+    let p = r.at(0.0, "ego");
+    assert!(
+        (p.x - 20.0).abs() < S_TOL && (p.y + 1.75).abs() < S_TOL && p.lane == -1,
+        "{p:?}"
+    );
+    for (t, objs) in &r.frames {
+        let Some(p) = objs.iter().find(|o| o.name == "ego") else {
+            continue;
+        };
+        let want = -1.75 - 3.25 * (1.0 - (PI * (p.x - 20.0) / 40.0).cos()) / 2.0;
+        assert!(
+            (p.y - want).abs() < CHANGE_TOL,
+            "at {t} s: {p:?}, want y {want}"
+        );
+    }
+    let extra = 3.25f64.powi(2) * PI * PI / (16.0 * 40.0);
+    let p = r.at(4.0, "ego");
+    assert!(
+        p.lane == -2 && (p.x - (60.0 - extra)).abs() < PATH_TOL && (p.y + 5.0).abs() < CHANGE_TOL,
+        "{p:?}"
+    );
+    for (t, x) in [(0.0, 10.0), (4.0, 30.0)] {
+        let p = r.at(t, "npc");
+        assert!(
+            (p.x - x).abs() < S_TOL && (p.y + 9.0).abs() < S_TOL && p.lane == -3,
+            "npc at {t} s: {p:?}"
+        );
+    }
+}
+
 #[test]
 fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
     for (name, road, text, place) in [
@@ -138,6 +173,12 @@ fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
             "straight",
             "expected lane for field `l`, found odr_point",
             "err_lane_field_route.osc:5:15",
+        ),
+        (
+            "err_route_xyz",
+            "straight",
+            "expected a point on a road of the network for the route's point at x = 50 m, y = 30 m",
+            "err_route_xyz.osc:7:9",
         ),
         (
             "err_route_crossing",
