@@ -58,7 +58,9 @@ impl Planner<'_> {
         name: &mut dyn FnMut(&str) -> String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
-        if *at == At::End || !matches!(along.route, Route::Lane { .. }) {
+        // Only a route followed throughout (at: all, the default) moves the actor; at: start
+        // or end the route only says where it is then.
+        if *at != At::All || !matches!(along.route, Route::Lane { .. }) {
             return Ok(());
         }
         let points = plan_points(&self.road, &along.route);
