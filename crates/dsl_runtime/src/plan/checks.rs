@@ -117,9 +117,10 @@ pub(crate) type Orientations = (Option<(f64, Site)>, Vec<HeadingAsk>);
 /// in +s, π for an actor driving against s (`crate::road`: it faces −s), whose yaw of 0 would
 /// face it against its travel. A yaw measured in the world (`absolute`, `relative_to_north`)
 /// or from another object (`relative_to: x` with a measure between the two objects' axes) is a
-/// [`HeadingAsk`] of `target` over the phase from `t0` to `end`, checked once every phase is
-/// planned (`heading`); it needs a start the plan knows. So is a yaw relative to the road
-/// where `road_later` (a later phase of an actor whose first phase asks for such a heading). Anything else is an error: another
+/// [`HeadingAsk`] of `target` over the phase `phase` from `t0` to `end`, checked once every
+/// phase is planned (`heading`: by the plan where it knows the actor's place, else by the
+/// engine). So is a yaw relative to the road where `road_later` (a later phase of an actor
+/// whose first phase asks for such a heading). Anything else is an error: another
 /// yaw, a pitch or roll other than 0, a measure that does not fit `relative_to:` (or its
 /// absence). Returns the yaw and its place when the first phase asks for one other than
 /// `along` relative to the road, and the other yaws asked.
@@ -128,7 +129,7 @@ pub(crate) fn check_orientation(
     planned: f64,
     along: f64,
     first: bool,
-    (target, road_later): (&str, bool),
+    (target, phase, road_later): (&str, &str, bool),
     (t0, end): (Option<f64>, Option<f64>),
     entity_of: impl Fn(&crate::resolve::Arg) -> Result<String, Error>,
 ) -> Result<Orientations, Error> {
@@ -184,18 +185,14 @@ pub(crate) fn check_orientation(
         let in_frame = frame.is_some();
         if let Some(frame) = frame {
             if let Some(e) = m.arg(yaw_arg) {
-                let Some(t0) = t0 else {
-                    return Err(e.site.err(
-                        K::Unsupported,
-                        format!("expected a phase start the plan knows for {name}(…) {}, found one at run time (after an until or a wait: the plan knows no heading there; not run yet)", if matches!(frame, Frame::Road) { "relative to the road after a first phase's heading measured in the world or from another object" } else { "measured in the world or from another object" }),
-                    ));
-                };
                 asks.push(HeadingAsk {
                     actor: target.to_string(),
                     frame,
                     angle: e.number()?,
                     at: m.at,
                     t0,
+                    phase: phase.to_string(),
+                    modifier: name.to_string(),
                     end,
                     first,
                     site: e.site.clone(),

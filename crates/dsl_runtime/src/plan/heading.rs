@@ -22,6 +22,16 @@
 //! (the Init's relative Orientation), under the physical rules of a yaw relative to the road
 //! (`checks::crabwise`).
 //!
+//! Where the plan does not know the actor's place — a phase that starts at run time, `at: end`
+//! of a phase whose end it does not know, `at: all` over such a phase for an actor (or an x)
+//! that moves — the engine checks the heading then (`engine_check`: oscsim's StateCheck with a
+//! `HeadingCheck`, at the phase start, held over the phase, or in its `after` actions at its
+//! end; a failure is an error record and a failed run). A first phase that starts at run time
+//! sets no yaw from the run's start: the plan knows no place to take it from, so the actor
+//! faces along its lane and the engine's check fails where the heading asked differs (§8.9.25
+//! `must_be_physical`: the plan turns no actor at a moment it does not know); `at: end` of a
+//! first phase with an end the plan does not know sets it only for an actor that stands.
+//!
 //! An actor driving against s (`crate::road`'s view, `against`) faces −s: its yaw relative to
 //! the road's s-axis is π unless its first phase asks another, and its place is on its view
 //! (u = L − s, t to its left), whose headings are the road's turned by π. An angle between two
@@ -33,8 +43,10 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{ActorKind, At};
 
+use scenario::{HeadingCheck, HeadingFrom, PrivateAction, StateCheck};
+
 use super::planner::Planner;
-use super::types::{Frame, HeadingAsk};
+use super::types::{Frame, HeadingAsk, Planned, HEADING_TOLERANCE};
 
 /// Angles within this of each other are the same (rad): a thousandth of a degree.
 pub(crate) const SAME_ANGLE: f64 = 1e-3 * std::f64::consts::PI / 180.0;
@@ -100,11 +112,19 @@ pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result
         .filter(world_first)
         .chain(firsts.filter(|a| !world_first(a)))
     {
+        // A first phase that starts at run time: the plan knows no place to take the yaw
+        // relative to the road from, so the actor faces along its lane and the engine checks
+        // the heading (`engine_check`).
+        let Some(t0) = a.t0 else {
+            continue;
+        };
         let e = p.index[a.actor.as_str()];
         // Where the ask holds first: its yaw relative to the road is the actor's throughout.
         let t = match (a.at, a.end) {
             (At::End, Some(te)) => te,
-            _ => a.t0,
+            // An end the plan does not know: a standing actor's place is its start's.
+            (At::End, None) if !p.entities[e].track.stands() => continue,
+            _ => t0,
         };
         if p.entities[e].yaw.is_none() {
             let axis = p.road_heading(&a.actor, t).ok_or_else(|| off_road(a))?;
@@ -114,30 +134,35 @@ pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result
             }
         }
     }
-    for a in asks {
-        let e = p.index[a.actor.as_str()];
+    for (i, a) in asks.iter().enumerate() {
         let off_road = || off_road(a);
-        let times: Vec<f64> = match (a.at, a.end) {
-            (At::Start, _) | (At::All, None) => vec![a.t0],
-            (At::End, Some(te)) => vec![te],
-            (At::End, None) => {
-                return Err(a.site.err(
-                    K::Unsupported,
-                    "expected a phase whose end the plan knows (a duration) for a yaw measured in the world or from another object at: end, found none (the plan knows no heading there)",
-                ))
+        // Where the plan does not know the actor's place (a run-time start, an end it does
+        // not know, a motion over an unknown end) the engine checks the heading.
+        let moves = |n: &str| p.index.contains_key(n) && !p.track(n).stands();
+        let engine = match (a.t0, a.at, a.end) {
+            (None, at, _) => Some(at),
+            (Some(_), At::End, None) => Some(At::End),
+            (Some(_), At::All, None) => {
+                let x_moves = matches!(&a.frame, Frame::Object(_, x, _) if moves(x));
+                (moves(&a.actor) || x_moves).then_some(At::All)
             }
+            _ => None,
+        };
+        if let Some(at) = engine {
+            engine_check(p, a, at, i);
+        }
+        let Some(t0) = a.t0 else {
+            continue;
+        };
+        let times: Vec<f64> = match (a.at, a.end) {
+            (At::Start, _) | (At::All, None) => vec![t0],
+            (At::End, Some(te)) => vec![te],
+            (At::End, None) => Vec::new(),
             (At::All, Some(te)) => {
-                let n = ((te - a.t0) / dt).round().max(0.0) as usize;
-                (0..=n).map(|i| (a.t0 + i as f64 * dt).min(te)).collect()
+                let n = ((te - t0) / dt).round().max(0.0) as usize;
+                (0..=n).map(|i| (t0 + i as f64 * dt).min(te)).collect()
             }
         };
-        // at: all without a known end: the heading from the start on, where the actor stands.
-        if a.at == At::All && a.end.is_none() && !p.entities[e].track.stands() {
-            return Err(a.site.err(
-                K::Unsupported,
-                format!("expected `{}` standing, or a phase whose end the plan knows (a duration), for a yaw measured in the world or from another object throughout the phase, found neither (the plan knows no heading over it)", a.actor),
-            ));
-        }
         for t in times {
             let (h, hx) = wanted(p, a, t)?;
             let got = p.heading_of(&a.actor, t).ok_or_else(off_road)?;
@@ -186,9 +211,55 @@ fn off_road(a: &HeadingAsk) -> Error {
         K::Unsatisfiable,
         format!(
             "expected `{}` on the plan's roads at {:.2} s to measure its heading, found it off them",
-            a.actor, a.t0
+            a.actor,
+            a.t0.unwrap_or(0.0)
         ),
     )
+}
+
+/// The engine's check of `a` (the `i`th ask) where the plan does not know the actor's place:
+/// at the phase start (`at: start`), in every step of the phase from its start (`at: all`,
+/// a check held until the phase's Act ends it) or when the phase ends (`at: end`, in the
+/// phase's `after` actions). Passing does nothing; failing is an error record and a failed
+/// run naming the modifier, the heading asked, the actor's and its lane's (engine
+/// `actions::check_heading`).
+fn engine_check(p: &mut Planner<'_>, a: &HeadingAsk, at: At, i: usize) {
+    let (from, angle, measure) = match &a.frame {
+        Frame::World(base, m) => (HeadingFrom::World, base + a.angle, (*m).to_string()),
+        Frame::Object(axis, x, m) => (HeadingFrom::Entity(x.clone()), axis + a.angle, m.clone()),
+        Frame::Road => (HeadingFrom::Road, a.angle, "relative to the road".into()),
+    };
+    let (when, name) = match at {
+        At::End => (
+            "at the phase end ",
+            format!("{}/{}/heading{i}.end", a.phase, a.actor),
+        ),
+        _ => ("", format!("{}/{}/heading{i}:check", a.phase, a.actor)),
+    };
+    let check = StateCheck {
+        what: format!("{}(…) {when}at {}", a.modifier, a.site.at()),
+        heading: Some(HeadingCheck {
+            from,
+            angle,
+            tolerance: HEADING_TOLERANCE,
+            measure: format!("{measure} {:.4} rad", a.angle),
+        }),
+        throughout: at == At::All,
+        ..StateCheck::default()
+    };
+    let planned = Planned::with_phase(
+        &a.actor,
+        name,
+        PrivateAction::Check(Box::new(check)),
+        &a.site,
+    );
+    // Every ask comes from a phase the plan holds (`invoke` names it).
+    if let Some(ph) = p.phases.iter_mut().find(|ph| ph.path == a.phase) {
+        match at {
+            At::End => ph.after.push(planned),
+            _ => ph.actions.push(planned),
+        }
+    }
 }
 
 /// The heading offset of a `yaw` measure between two objects' axes (module doc), `None` for a

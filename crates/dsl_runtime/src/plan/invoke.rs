@@ -165,7 +165,7 @@ impl Planner<'_> {
                 planned,
                 along,
                 first,
-                (target, road_later),
+                (target, &p.path, road_later),
                 (t0, end_known),
                 |x| self.entity_of(x),
             )?;

@@ -31,6 +31,11 @@ pub(crate) const LATERAL_TOLERANCE: f64 = 0.01;
 /// a line or lane change left turned is off by far more.
 pub(crate) const YAW_TOLERANCE: f64 = 1e-3;
 
+/// How far from a heading asked the engine may find an actor where it checks one (rad,
+/// 0.057°): its heading on a curved lane is the road's at the s its steps reach, which a hand
+/// computation meets to 1e-4 rad (`yaw_world.osc`); a wrong heading is off by far more.
+pub(crate) const HEADING_TOLERANCE: f64 = 1e-3;
+
 /// A moment of the plan.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) enum When {
@@ -252,8 +257,13 @@ pub(crate) struct HeadingAsk {
     pub angle: f64,
     /// When it holds.
     pub at: At,
-    /// The phase's start (s).
-    pub t0: f64,
+    /// The phase's start (s), if the plan knows it (else a run-time condition starts it: the
+    /// engine checks the heading, `heading::engine_checks`).
+    pub t0: Option<f64>,
+    /// The phase's path (its Act), where the engine's checks go.
+    pub phase: String,
+    /// The modifier's name (`yaw`, `orientation`).
+    pub modifier: String,
     /// The phase's end, if the plan knows it (s).
     pub end: Option<f64>,
     /// The phase is the actor's first.

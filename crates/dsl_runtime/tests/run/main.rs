@@ -24,6 +24,7 @@ mod opposite_gaps;
 mod opposite_groups;
 mod opposite_relations;
 mod orientation;
+mod orientation_runtime;
 mod overlap;
 mod position_actions;
 mod random_traffic;

@@ -16,7 +16,9 @@
 //! stops with [`ErrorKind::CheckFailed`](crate::ErrorKind::CheckFailed). A check that holds
 //! then notes its mark, if it has one (the actor's odometer and, with a gap, its side of the
 //! place the gap asks for: `condition::mark`). The DSL runtime also runs checks at a phase's
-//! end, for a constraint that holds there only if the run happens to meet it. Places are
+//! end, for a constraint that holds there only if the run happens to meet it, and checks held
+//! over a phase (`check_held`). The actor's heading, measured in the world or from another
+//! entity, is `check_heading`'s. Places are
 //! measured as the check's `roads` say (`position::RoadChain`): on the actor's road in its s,
 //! on a plan over several roads in the plan's s, and for an actor driving the roads against s
 //! along its direction of travel (u = L − s, t and offsets to its left), the plan's numbers.
@@ -121,7 +123,7 @@ pub(crate) fn start(
 }
 
 /// The requirements of `check` on `actor` at `time`.
-fn require(
+pub(super) fn require(
     world: &World,
     actor: EntityId,
     check: &StateCheck,
@@ -136,6 +138,7 @@ fn require(
             time,
         })
     };
+    super::check_heading::require(world, e, check, &fail)?;
     // The change must run as written: the SpeedAction would stretch a faster one in time.
     if let (Some((target, shape, within)), Some(perf)) = (&check.speed_change, e.performance) {
         let v1 = speed::target_speed(world, target, pos)?;

@@ -12,6 +12,8 @@
 mod acceleration;
 mod appearance;
 mod check;
+mod check_heading;
+mod check_held;
 mod custom;
 mod distance;
 mod entity;
@@ -69,6 +71,7 @@ pub(crate) enum Part {
     Trajectory(follow_trajectory::TrajectoryState),
     Synchronize(synchronize::SyncState),
     Appearance(appearance::Transition),
+    Held(check_held::HeldCheck),
     Done(ActionStatus),
 }
 
@@ -271,12 +274,14 @@ fn step_part(
         Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
         Part::Synchronize(s) => synchronize::step(world, actor, s, dt),
         Part::Appearance(s) => s.step(now, dt),
+        Part::Held(s) => check_held::step(world, actor, s, now),
     };
     if next == ActionStatus::Running {
         return None;
     }
     let failure = match part {
         Part::RelativeAcceleration(s) => s.failure.take(),
+        Part::Held(s) => s.failure.take(),
         _ => None,
     };
     release(world, actor, id);
@@ -455,7 +460,10 @@ impl Host<'_> {
             }
             PrivateAction::Check(check) => {
                 check::start(self.world, actor, check, (time, pos))?;
-                Ok(Part::Done(ActionStatus::Ended))
+                Ok(match check.throughout {
+                    true => Part::Held(check_held::HeldCheck::new(check, pos)),
+                    false => Part::Done(ActionStatus::Ended),
+                })
             }
             PrivateAction::Longitudinal(l) => {
                 let replaced = match l {

@@ -134,6 +134,41 @@ pub struct StateCheck {
     /// [`crate::EntityCondition::TraveledSinceMark`] and
     /// [`crate::EntityCondition::GapReachedSinceMark`] and a later check's `travelled`.
     pub mark: Option<Mark>,
+    /// The actor's heading (ASAM OpenSCENARIO DSL 2.1 §8.9 `yaw`/`orientation` measured in the
+    /// world or from another object, where the plan does not know the actor's place: a phase
+    /// that starts on a run-time condition, or an end it does not know).
+    pub heading: Option<HeadingCheck>,
+    /// The requirements hold at every step from the check's start until it is stopped (its
+    /// phase's end), not only when it starts: the action runs until then, checking them again
+    /// in each step (§8.9 `at: all`); a mark is noted at the start only.
+    pub throughout: bool,
+}
+
+/// A heading a [`StateCheck`] requires of its actor (oscsim, no XML form): the heading `from`
+/// gives plus `angle`, within `tolerance`, in the road network's inertial frame (OpenDRIVE's
+/// x, y; counter-clockwise about z from +x, as OpenSCENARIO 1.x counts a heading).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeadingCheck {
+    /// What the angle is measured from.
+    pub from: HeadingFrom,
+    /// The angle added to it (rad).
+    pub angle: f64,
+    /// How far from the heading asked the actor's may be (rad).
+    pub tolerance: f64,
+    /// The measure and angle as the scenario gives them, for the error ("absolute 0.7854 rad",
+    /// "length_to_width from `npc` 1.5708 rad").
+    pub measure: String,
+}
+
+/// What a [`HeadingCheck`]'s angle is measured from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum HeadingFrom {
+    /// The inertial frame's +x (0).
+    World,
+    /// Another entity's heading at the moment.
+    Entity(String),
+    /// The heading of the road's s-axis where the actor is.
+    Road,
 }
 
 /// The roads an OpenSCENARIO DSL plan measures an actor's places along, and in which
