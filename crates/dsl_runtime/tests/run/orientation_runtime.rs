@@ -107,3 +107,20 @@ fn yaws_the_run_does_not_meet_where_the_plan_knows_no_place_fail_the_run() {
         assert_eq!(records[0].2, error, "{name}");
     }
 }
+
+/// A first phase that starts at run time: no yaw from the run's start, the engine's check
+/// (yaw_first_runtime_fails.osc).
+#[test]
+fn a_first_phase_at_run_time_sets_no_yaw_and_its_heading_is_the_engines_check() {
+    let name = "yaw_first_runtime_fails";
+    let (error, records) = run_to_error_on_bend(name);
+    let error = error.unwrap_or_else(|| panic!("{name}: the run ends"));
+    let want = "expected 'ego' at heading 0.7854 rad (absolute 0.7854 rad, within 0.001 rad) (orientation(…) at ";
+    let tail = format!(
+        "{name}.osc:27:38), found it at 0.0000 rad, its lane's heading 0.0000 rad at t = 2.550 s"
+    );
+    assert!(error.starts_with(want) && error.ends_with(&tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 2.55).abs() < T_TOL, "{records:?}");
+    assert_eq!(records[0].2, error);
+}
