@@ -124,3 +124,26 @@ fn a_first_phase_at_run_time_sets_no_yaw_and_its_heading_is_the_engines_check() 
     assert!((records[0].0 - 2.55).abs() < T_TOL, "{records:?}");
     assert_eq!(records[0].2, error);
 }
+
+/// After a run-time start an actor driving against s faces -s: absolute pi holds at every step,
+/// ego's heading 0 at the next phase's start does not (yaw_runtime_against_fails.osc).
+#[test]
+fn yaws_at_run_time_of_an_actor_driving_against_s_are_its_heading_turned_by_pi() {
+    let name = "yaw_runtime_against_fails";
+    let lowered = lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        "tests/roads/straight.xodr",
+        0,
+        None,
+    )
+    .unwrap_or_else(|e| panic!("{name}: {e}"));
+    let (error, records) = run_to_error(&lowered.scenario);
+    let error = error.unwrap_or_else(|| panic!("{name}: the run ends"));
+    let want = "expected 'npc' at heading 0.0000 rad (length_to_length from `ego` 0.0000 rad, 'ego' at heading 0.0000 rad, within 0.001 rad) (yaw(…) at ";
+    let tail = format!(
+        "{name}.osc:40:25), found it at 3.1416 rad, its lane's heading 3.1416 rad at t = 4.550 s"
+    );
+    assert!(error.starts_with(want) && error.ends_with(&tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 4.55).abs() < T_TOL, "{records:?}");
+}
