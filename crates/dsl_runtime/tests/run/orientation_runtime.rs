@@ -12,16 +12,21 @@ const H_TOL: f64 = 1e-9;
 /// Phase ends and record times are step times.
 const T_TOL: f64 = 1e-9;
 
-/// The run of `name` on bend.xodr to its first error: the error and the error records.
-fn run_to_error_on_bend(name: &str) -> (Option<String>, Vec<(f64, String, String)>) {
+/// The run of `name` on `road` to its first error: the error and the error records.
+fn run_to_error_on(name: &str, road: &str) -> (Option<String>, Vec<(f64, String, String)>) {
     let lowered = lower_at(
         &format!("tests/scenarios/{name}.osc"),
-        "tests/roads/bend.xodr",
+        &format!("tests/roads/{road}.xodr"),
         0,
         None,
     )
     .unwrap_or_else(|e| panic!("{name}: {e}"));
     run_to_error(&lowered.scenario)
+}
+
+/// [`run_to_error_on`] bend.xodr.
+fn run_to_error_on_bend(name: &str) -> (Option<String>, Vec<(f64, String, String)>) {
+    run_to_error_on(name, "bend")
 }
 
 /// Every heading asked after `wait @go` holds (yaw_runtime.osc's comment): the run ends with
@@ -130,14 +135,7 @@ fn a_first_phase_at_run_time_sets_no_yaw_and_its_heading_is_the_engines_check() 
 #[test]
 fn yaws_at_run_time_of_an_actor_driving_against_s_are_its_heading_turned_by_pi() {
     let name = "yaw_runtime_against_fails";
-    let lowered = lower_at(
-        &format!("tests/scenarios/{name}.osc"),
-        "tests/roads/straight.xodr",
-        0,
-        None,
-    )
-    .unwrap_or_else(|e| panic!("{name}: {e}"));
-    let (error, records) = run_to_error(&lowered.scenario);
+    let (error, records) = run_to_error_on(name, "straight");
     let error = error.unwrap_or_else(|| panic!("{name}: the run ends"));
     let want = "expected 'npc' at heading 0.0000 rad (length_to_length from `ego` 0.0000 rad, 'ego' at heading 0.0000 rad, within 0.001 rad) (yaw(…) at ";
     let tail = format!(
