@@ -100,7 +100,9 @@ impl Planner<'_> {
 /// Checks every [`HeadingAsk`] against the finished plan, first turning each asked in an
 /// actor's first phase into its yaw relative to the road from the run's start (where the
 /// lane's heading differs from it); errors name the angle asked, the lane's heading and, for
-/// a yaw relative to another object, both headings.
+/// a yaw relative to another object, both headings. Where the plan does not know the actor's
+/// place (a run-time start, an end it does not know, `at: all` over such an end for an actor
+/// or x that moves) the ask becomes the engine's check in its phase (`engine_check`).
 pub(crate) fn check_headings(p: &mut Planner<'_>, asks: &[HeadingAsk]) -> Result<(), Error> {
     let dt = p.settings.dt;
     // First the yaws from the run's start: those measured in the world, then those from
