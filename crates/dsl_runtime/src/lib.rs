@@ -329,7 +329,7 @@ pub fn lower_program(
     let mut calls = Vec::new();
     let mut reads = Vec::new();
     resolved.root.walk(&mut |p| {
-        if let resolve::Kind::Call(c) = &p.kind {
+        if let resolve::Kind::Call(c @ resolve::Call { external: true, .. }) = &p.kind {
             calls.push(ExternalCall {
                 method: c.method.clone(),
                 pos: p.site.pos.clone(),
@@ -341,7 +341,9 @@ pub fn lower_program(
         }
     });
     for spec in &resolved.events {
-        if let (Some(c), Some((_, site))) = (&spec.call, &spec.handler) {
+        if let (Some(c @ resolve::Call { external: true, .. }), Some((_, site))) =
+            (&spec.call, &spec.handler)
+        {
             calls.push(ExternalCall {
                 method: c.method.clone(),
                 pos: site.pos.clone(),

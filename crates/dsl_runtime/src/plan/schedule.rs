@@ -83,8 +83,12 @@ impl Planner<'_> {
                 });
                 return Ok(end);
             }
-            Kind::Emit(event) => return Ok(self.instant(p, start, ("emit", event.clone()))),
-            Kind::Call(c) => return Ok(self.instant(p, start, ("call", c.content.clone()))),
+            Kind::Emit(event) => return Ok(self.instant(p, start, Some(("emit", event.clone())))),
+            // A method defined by an expression has no side effect: no command to the host.
+            Kind::Call(c) => {
+                let command = c.external.then(|| ("call", c.content.clone()));
+                return Ok(self.instant(p, start, command));
+            }
             Kind::Serial | Kind::OneOf(_) => {
                 let mut cur = start.clone();
                 let n = p.children.len();
@@ -267,9 +271,9 @@ impl Planner<'_> {
         Ok(end)
     }
 
-    /// An instant phase with its `command`: its Act starts and, with nothing to do but the
-    /// command, completes in its step. Returns its end (its start).
-    fn instant(&mut self, p: &Phase, start: When, command: (&'static str, String)) -> When {
+    /// An instant phase with its `command`, if any: its Act starts and, with nothing to do but
+    /// the command, completes in its step. Returns its end (its start).
+    fn instant(&mut self, p: &Phase, start: When, command: Option<(&'static str, String)>) -> When {
         self.phases.push(PhasePlan {
             path: p.path.clone(),
             site: p.site.clone(),
@@ -279,7 +283,7 @@ impl Planner<'_> {
             persist: Vec::new(),
             after: Vec::new(),
             hold: false,
-            command: Some(command),
+            command,
         });
         start
     }

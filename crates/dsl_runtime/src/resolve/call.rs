@@ -8,8 +8,11 @@
 //! (`log_speed(20.0, "ego")`: numbers in SI units, strings, booleans, enumeration members and
 //! instance paths as strings). The host runs the function it bound to that name (the Python
 //! package's `Simulation.bind`); a host without bindings (`oscsim run`) refuses the scenario.
-//! Only methods declared `is external` can be called: a method with an expression has no side
-//! effects to run. Arguments are bound to the method's declared parameters as the language
+//! A method defined by an expression (`is expression e`) can be called too (§7.3.9: `call`
+//! calls a method): it has no side effect, so its call evaluates its arguments when the
+//! scenario is resolved (an error there at its place) and does nothing else: an instant phase
+//! with no command, no binding asked of the host. A method `is undefined` has nothing to run:
+//! an error at its name. Arguments are bound to the method's declared parameters as the language
 //! binds any argument list (§7.3.9, §7.4: positional ones first, in declaration order, then
 //! named ones by name; a parameter given neither takes its declaration's default), and the
 //! host receives them in declaration order.
@@ -33,6 +36,9 @@ pub(crate) struct Call {
     pub method: String,
     /// The command's content: `name(args as JSON values)`.
     pub content: String,
+    /// Whether the method is external (the host runs it). A method defined by an expression
+    /// has no side effect: its call evaluates the arguments and does nothing else, no command.
+    pub external: bool,
 }
 
 /// Reads the call expression `e` of a `call` directive.
@@ -56,12 +62,12 @@ pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
         }
     };
     let decl = match ev.method_decl(name) {
-        Some(d) if d.body == MethodBody::External => d,
+        Some(d) if matches!(d.body, MethodBody::External | MethodBody::Expression(_)) => d,
         Some(_) => {
             return Err(ev.files.err(
                 K::Unsupported,
                 callee.span,
-                format!("expected an external method in `call` (def {name}(…) is external …), found `{name}` defined by an expression or undefined"),
+                format!("expected a method with an implementation in `call` (def {name}(…) is external … or is expression …), found `{name}` undefined"),
             ))
         }
         None => {
@@ -79,6 +85,7 @@ pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
     Ok(Call {
         method: name.clone(),
         content: format!("{name}({})", values.join(", ")),
+        external: decl.body == MethodBody::External,
     })
 }
 

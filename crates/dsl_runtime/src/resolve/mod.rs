@@ -307,6 +307,11 @@ fn events(
                             call: None,
                             within: within.clone(),
                         }),
+                        // A method defined by an expression has no side effect: its call
+                        // runs nothing (its arguments and the condition read, for errors).
+                        Behavior::Call(e, _) if !call::read(ev, e)?.external => {
+                            cond::read(ev, spec)?;
+                        }
                         Behavior::Call(e, span) => {
                             let c = call::read(ev, e)?;
                             events.push(EventSpec {

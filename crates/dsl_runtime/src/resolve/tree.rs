@@ -575,11 +575,12 @@ fn solved_args(
 ) -> Result<(), Error> {
     let instance = format!("{}{site_path}", ev.frame.prefix);
     if ev.lookup(&instance).is_none() {
-        // The checker records no instance for an invocation outside a `do` (an `on` handler).
+        // The checker records an instance for every invocation in a `do`; one elsewhere (an
+        // `on` handler, whose members are `emit` and `call`, §7.3.10) the parser refuses first.
         return Err(ev.files.err(
             K::Unsupported,
             keeps[0].span,
-            "expected keep(…) in the with: of an action invoked in a `do` (where the solver resolves the invocation), found it elsewhere",
+            "expected keep(…) in the with: of an invocation in a `do` (where the solver resolves the invocation), found it elsewhere",
         ));
     }
     let mut named: Vec<(String, Span)> = Vec::new();

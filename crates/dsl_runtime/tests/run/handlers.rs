@@ -27,10 +27,10 @@ fn on_handler_emits_an_event_others_wait_on() {
 }
 
 #[test]
-fn call_of_a_method_that_is_not_external_is_an_error() {
+fn call_of_an_undefined_method_is_an_error() {
     crate::along::refused(
         "err_on_call",
-        "expected an external method in `call` (def note(…) is external …), found `note` defined by an expression or undefined",
+        "expected a method with an implementation in `call` (def note(…) is external … or is expression …), found `note` undefined",
         "8:14",
     );
 }
@@ -273,4 +273,24 @@ fn an_external_methods_result_outside_a_condition_is_an_error_at_the_call() {
             && e.ends_with("err_external_value.osc:7:15"),
         "{e}"
     );
+}
+
+/// `call` of a method defined by an expression: an instant phase with no command, in a `do`
+/// and in a handler; nothing for the host to bind (call_expression.osc, by hand: do.1 at 1.0 s,
+/// ego at 110 m then and 130 m at 2 s).
+#[test]
+fn a_call_of_a_method_defined_by_an_expression_does_nothing_but_take_its_moment() {
+    let lowered = crate::support::lower("call_expression", 0, None).expect("plans");
+    assert!(lowered.calls.is_empty(), "{:?}", lowered.calls);
+    let r = crate::support::run_scenario("call_expression", &lowered.scenario, 0, None);
+    assert!(r.commands.iter().all(|c| c.2 != "call"), "{:?}", r.commands);
+    let (s, _) = r.phase("do.1");
+    assert!((s - 1.0).abs() < T_TOL, "do.1 at {s}");
+    let (s, e) = r.phase("do.2");
+    assert!(
+        (s - 1.0).abs() < T_TOL && (e - 2.0).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    assert!((r.at(1.0, "ego").s - 110.0).abs() < 1e-6);
+    assert!((r.at(2.0, "ego").s - 130.0).abs() < 1e-6);
 }
