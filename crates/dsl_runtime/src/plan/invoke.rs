@@ -18,7 +18,8 @@ use super::motion::{
 };
 use super::planner::Planner;
 use super::route::{self, OnRoute};
-use super::runtime::{speed_at_rate_check, speed_change_check, standing_check};
+use super::runtime::{speed_at_rate_check, speed_change_check};
+use super::runtime_kept::standing_check;
 use super::speed_actions::Slot;
 use super::types::{Planned, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};

@@ -78,6 +78,8 @@
 //! | `relative_over_distance` | a speed relative to another actor at the end of a phase `distance(d)` ends: x's speed where the plan ends it, or the engine's x |
 //! | `runtime_end` | what the engine measures from a run-time start (a mark) and checks at such a phase's end |
 //! | `runtime` | the engine's checks of `at: start` constraints after a run-time start |
+//! | `runtime_rate` | speed changes at a rate relative to another actor after a run-time start (the engine's change and its checks) |
+//! | `runtime_kept` | the engine's checks after a run-time start of what the plan keeps by construction (yaw relative to the road, `keep_position`) |
 //! | `acceleration_follow` | `acceleration(…)` relative to another actor that the engine follows step by step |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
@@ -132,6 +134,8 @@ mod route;
 mod route_moves;
 mod runtime;
 mod runtime_end;
+mod runtime_kept;
+mod runtime_rate;
 mod schedule;
 mod shape_relative;
 mod shapes;

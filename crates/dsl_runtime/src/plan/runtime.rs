@@ -16,8 +16,8 @@
 //! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
-//! | `yaw(ψ)`, `orientation(yaw: ψ)` relative to the road | the engine's check of the actor's heading minus the road's where it is: at the start (at: start, all) and the end (at: end, all) (`start_yaws`) |
-//! | `keep_position()` | the engine's check that the actor stands at the start (`standing_check`) |
+//! | `yaw(ψ)`, `orientation(yaw: ψ)` relative to the road | the engine's check of the actor's heading minus the road's where it is: at the start (at: start, all) and the end (at: end, all) (`runtime_kept`) |
+//! | `keep_position()` | the engine's check that the actor stands at the start (`runtime_kept`) |
 //! | `lateral(d, measure_by, side, at: end)` without a lane change, over a phase of duration T | the engine's sinusoidal offset change over T in the actor's own lane to k·W + c, W the lane's width where the actor is at each step (at the end: where it ends the phase) |
 //! | `lateral(d, side_of/left_of/right_of: x, at: end)` over a phase of duration T | projected: the engine's sinusoidal LaneChangeAction over T to the lane holding x's t at the start plus the t asked; actual: the engine's sinusoidal blend to x's t at every step plus it; beside a lane change the change's lane is the engine's check at the end (`lateral_end`) |
 //! | `acceleration(a, faster_than/slower_than/same_as: x)` alone, at: all, start or end | the engine's RelativeAccelerationAction: x's acceleration ± a in every step (at: all, end), or x's over the first step held (at: start) (`acceleration_follow`) |
@@ -25,7 +25,7 @@
 //! | `acceleration(a)` alone (no speed target beside it) over a phase of duration T | the engine's AccelerationAction holding a from the speed the actor has at the start until the phase ends, beside the engine's check that v₀ + a·T is within 0 and the vehicle's maximum speed then |
 //! | `speed(v, at: end)`, `change_speed(v)` (or to another actor's speed) over a phase of duration T, `change_speed(v, duration)` | the engine's SpeedAction over T from the speed the actor has, beside the engine's check that its peak rate fits the vehicle's limit then (a failure: an error record and a failed run, not a stretched change) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a, beside the engine's check that \|v − v₀\|/a ≤ T from the speed v₀ the actor has then (`speed_at_rate_check`) |
-//! | `speed(same_as/faster_than/slower_than: x, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a to x's speed (actual: read each step, followed after the change, checked at the end; projected: x's at the start), beside the engine's check that \|v_x ± δ − v₀\|/a ≤ T from both speeds then (`start_relative_speed_at_rate`); at the rate of another actor's acceleration, the engine's RelativeAccelerationAction toward x's speed, followed once reached (`relative_rate_to_relative_speed`) |
+//! | `speed(same_as/faster_than/slower_than: x, at: end)` beside `acceleration(a)` over a phase of duration T | the engine's SpeedAction at the rate a to x's speed (actual: read each step, followed after the change, checked at the end; projected: x's at the start), beside the engine's check that \|v_x ± δ − v₀\|/a ≤ T from both speeds then (`runtime_rate`); at the rate of another actor's acceleration, the engine's RelativeAccelerationAction toward x's speed, followed once reached (`runtime_rate`) |
 //! | `change_speed(v)`, `speed(v, at: end)` beside `distance(d)` without a duration | the engine's SpeedAction at the rate of `acceleration(a)` beside it, else `change_speed`'s default, beside the engine's check that \|v² − v₀²\|/(2a) ≤ d from the speed v₀ the actor has then (`speed_at_rate_check`); the phase ends at d travelled since the start's mark (`runtime_end`); relative to another actor x, to x's speed read at each step and followed after the change, checked at the end (projected: x's speed at the start) (`relative_over_distance`) |
 //! | `change_speed(v)`, `speed(v, at: end)` at the rate of `acceleration(a, faster_than/slower_than/same_as: x)` beside `distance(d)` without a duration | the engine's RelativeAccelerationAction toward v with no time of its own, and its check at the phase end (d travelled) that the actor is at v (`runtime_end`) |
 //! | `change_acceleration(target)` at a rate | the engine's AccelerationAction ending at its target, then one holding it (`speed_actions`) |
@@ -47,22 +47,21 @@
 //! at that actor's speed when the engine checks it (`scenario::SpeedGap`).
 
 use scenario::{
-    DynamicsDimension, DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction,
-    OffsetInWidth, PlanRoads, PrivateAction, RateWithin, SpeedOf, SpeedTarget, StateCheck,
-    TransitionDynamics, Travel, TravelGoal,
+    DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction, OffsetInWidth, PlanRoads,
+    PrivateAction, RateWithin, SpeedTarget, StateCheck, Travel, TravelGoal,
 };
 
 use super::action_args::timed;
 use super::lateral;
-use super::motion::{acceleration, check_accel, check_speed, end_speed_mod, holds_speed};
+use super::motion::{acceleration, check_speed, end_speed_mod, holds_speed};
 use super::planner::Planner;
 use super::route::StartOnRoute;
 use super::types::{
     Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, MAX_SPEED, POSITION_TOLERANCE,
-    SPEED_TOLERANCE, YAW_TOLERANCE,
+    SPEED_TOLERANCE,
 };
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{Arg, At, ModKind, Modifier, Val};
+use crate::resolve::{Arg, ModKind, Modifier, Val};
 
 impl Planner<'_> {
     /// The engine's check of `m` (a `lane`, `position` or `lateral` constraint at the start of
@@ -264,179 +263,6 @@ impl Planner<'_> {
         Ok(())
     }
 
-    /// The speed `m` asks of `target` relative to `x` (± `delta`) at the end of a phase of
-    /// `len` s that starts on a run-time condition, at the rate of `acceleration(a)` `q`
-    /// beside it, as the actions `check_name` and `name`: the change takes \|v_x ± δ − v₀\|/a
-    /// from both speeds at the start, which only the engine has, so the engine's SpeedAction
-    /// at the rate a to x's speed (± δ) and its check at that start that the change ends
-    /// within the phase from those speeds (`speed_at_rate_check`, an error record and a failed
-    /// run otherwise: the phase's end would cut it short). With `track: actual` the target is
-    /// x's speed read at each step and followed after the change (the engine's linear change
-    /// over the length fixed at the start, blended to x's speed as it moves), checked at the
-    /// phase end (`relative_speed_over_distance`); `track: projected` x's speed as the action
-    /// starts, fixed. At the rate of an acceleration relative to another actor y, the
-    /// engine's change at y's acceleration (`relative_rate_to_relative_speed`), with no check
-    /// at the start (its length depends on y's acceleration over it).
-    pub(super) fn start_relative_speed_at_rate(
-        &self,
-        (m, q): (&Modifier, &Modifier),
-        target: &str,
-        (x, len): ((String, f64), f64),
-        (check_name, name): (String, String),
-        after: &mut Vec<Planned>,
-    ) -> Result<Vec<Planned>, Error> {
-        if relative_to(q).is_some() {
-            // No check at the start: the change's length depends on y's acceleration over it.
-            let change =
-                self.relative_rate_to_relative_speed((m, q), target, x, len, &name, after)?;
-            return Ok(vec![change]);
-        }
-        let a = self.acceleration_value(q, (None, len))?.abs();
-        check_accel(q, a)?;
-        let end_name = format!("{name}.end");
-        let to = self.relative_speed_over_distance(m, target, x, (end_name, after));
-        let dynamics = TransitionDynamics {
-            dynamics_shape: DynamicsShape::Linear,
-            dynamics_dimension: DynamicsDimension::Rate,
-            value: a,
-            following_mode: None,
-        };
-        Ok(vec![
-            speed_at_rate_check(
-                target,
-                (&q.name, &q.site),
-                (to.clone(), a, RateWithin::Time(len)),
-                check_name,
-            ),
-            Planned::with_phase(
-                target,
-                name,
-                PrivateAction::Longitudinal(LongitudinalAction::Speed {
-                    dynamics,
-                    target: to,
-                }),
-                &m.site,
-            ),
-        ])
-    }
-
-    /// The engine's change toward `v1` m/s (added to a relative target's speed) within
-    /// `within` s at the rate of `q`, an `acceleration(a, faster_than/slower_than/same_as: y)`,
-    /// in a phase that starts on a run-time condition (`relative_rate_at_run_time`); `track:
-    /// projected` is `acceleration_value`'s error (y projected has no acceleration).
-    pub(super) fn rate_at_run_time(
-        &self,
-        q: &Modifier,
-        v1: f64,
-        within: f64,
-    ) -> Result<PrivateAction, Error> {
-        match self.relative_rate_at_run_time(Some(q), None, (v1, within))? {
-            Some(action) => Ok(action),
-            None => self.acceleration_value(q, (None, within)).and(Err(q.site.err(
-                K::Modifier,
-                "expected track: actual for an acceleration relative to another actor, found projected",
-            ))),
-        }
-    }
-
-    /// The speed `m` asks of `target` relative to `x` (± `delta`) at the end of a phase that
-    /// starts on a run-time condition, at the rate of `q`, an `acceleration(a,
-    /// faster_than/slower_than/same_as: y)`, as the action `name`: the engine's
-    /// RelativeAccelerationAction toward x's speed ± δ (oscsim's `to_speed` with a target
-    /// relative to x, `SpeedOf`, no XML form), its rate \|a_y ± a\| as the engine reads y's
-    /// acceleration (at: start over the phase's first step, held; at: all and end in every
-    /// step, `relative_rate_at_run_time`); with `track: actual` x's speed read in every step
-    /// and followed once reached, the engine's check at the phase end (in `after`) that the
-    /// actor is at x's speed then ± δ; `track: projected` x's speed as the action starts,
-    /// fixed. Not there `within` s after the start (the phase's length; a distance ends the
-    /// phase instead with `f64::INFINITY`) is an error record and a failed run.
-    pub(super) fn relative_rate_to_relative_speed(
-        &self,
-        (m, q): (&Modifier, &Modifier),
-        target: &str,
-        (x, delta): (String, f64),
-        within: f64,
-        name: &str,
-        after: &mut Vec<Planned>,
-    ) -> Result<Planned, Error> {
-        let mut action = self.rate_at_run_time(q, delta, within)?;
-        if let PrivateAction::Longitudinal(LongitudinalAction::RelativeAcceleration {
-            to_speed: Some(change),
-            ..
-        }) = &mut action
-        {
-            change.of = Some(SpeedOf {
-                entity_ref: x.clone(),
-                projected: m.projected,
-            });
-        }
-        if !m.projected {
-            let check = StateCheck {
-                speed: Some((Some(x), delta, SPEED_TOLERANCE)),
-                ..StateCheck::default()
-            };
-            after.push(self.end_check(m, target, format!("{name}.end"), check));
-        }
-        Ok(Planned::with_phase(
-            target,
-            name.to_string(),
-            action,
-            &m.site,
-        ))
-    }
-
-    /// The engine's checks of the yaws relative to the road (§8.9.9 `relative_to_road`, the
-    /// default measure of `yaw(…)` and `orientation(…)`: "actor yaw relative to road s-axis")
-    /// that `mods` ask of `target` in a phase that starts on a run-time condition: the plan
-    /// has checked each is the yaw the actor keeps (`check_orientation`: 0 along its lane, π
-    /// against s, or its first phase's), but the actor's heading then is the run's (a line or
-    /// a lane change cut short by an `until` leaves it turned), so the engine checks it at the
-    /// phase start (at: start, all; as the action `name("check")`) and at the phase end (at:
-    /// end, all; in `after`, as `name("yaw").end`), within [`YAW_TOLERANCE`]. Within the phase
-    /// the actor turns only with a lateral movement, which the plan refuses beside at: all.
-    pub(super) fn start_yaws(
-        &self,
-        mods: &[Modifier],
-        target: &str,
-        name: &mut dyn FnMut(&str) -> String,
-        (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
-    ) -> Result<(), Error> {
-        for m in mods.iter().filter(|m| m.kind == ModKind::Orientation) {
-            let (measure, angle) = match m.name.as_str() {
-                "yaw" => ("measure_by", "angle"),
-                _ => ("measured_by", "yaw"),
-            };
-            let road = match m.arg(measure).map(Arg::eval).transpose()? {
-                Some(Val::Enum(by)) => by == "relative_to_road",
-                _ => true,
-            };
-            let Some(e) = m
-                .arg(angle)
-                .filter(|_| road && m.arg("relative_to").is_none())
-            else {
-                continue;
-            };
-            let check = StateCheck {
-                yaw: Some((e.number()?, YAW_TOLERANCE)),
-                ..StateCheck::default()
-            };
-            if m.at != At::End {
-                let what = (m.name.as_str(), &m.site);
-                out.push(phase_start_check(
-                    target,
-                    what,
-                    check.clone(),
-                    name("check"),
-                ));
-            }
-            if m.at != At::Start {
-                let n = format!("{}.end", name("yaw"));
-                after.push(self.end_check(m, target, n, check));
-            }
-        }
-        Ok(())
-    }
-
     /// The engine's `acceleration(a)` (alone, no speed target beside it) for `target` over a
     /// phase of `len` s that starts on a run-time condition, as the actions `name("check")`
     /// and `name("acceleration")`: the engine's check that v₀ + a·T stays within 0 and the
@@ -596,20 +422,6 @@ pub(super) fn speed_at_rate_check(
     phase_start_check(target, (what, site), check, name)
 }
 
-/// The engine's check that `target` stands when a phase of it that starts on a run-time
-/// condition starts, for `keep_position()` `k` (§8.8 "keeps its position": nothing beside it
-/// moves the actor, `check_keeps`, so one standing then stands throughout), as the action
-/// `name`: the plan's speed where it last knows the actor is not the actor's after a gap
-/// action or a `change_acceleration` (it records the speed a held braking would reach), so a
-/// moving actor is an error record and a failed run, never a silent pass.
-pub(super) fn standing_check(target: &str, k: &Modifier, name: String) -> Planned {
-    let check = StateCheck {
-        speed: Some((None, 0.0, SPEED_TOLERANCE)),
-        ..StateCheck::default()
-    };
-    phase_start_check(target, (&k.name, &k.site), check, name)
-}
-
 /// `check` as the engine's check at the start of a phase of `target`, named for the modifier
 /// or action `what` written at `site`.
 pub(super) fn phase_start_check(
@@ -623,12 +435,4 @@ pub(super) fn phase_start_check(
         ..check
     };
     Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), site)
-}
-
-/// The actor `q` (an `acceleration(…)`) is relative to, if any (`faster_than`, `slower_than`,
-/// `same_as`).
-pub(super) fn relative_to(q: &Modifier) -> Option<&Arg> {
-    ["faster_than", "slower_than", "same_as"]
-        .into_iter()
-        .find_map(|key| q.arg(key))
 }

@@ -25,7 +25,8 @@ use scenario::{
 use super::motion::{check_accel, check_speed};
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
-use super::runtime::{phase_start_check, relative_to, speed_at_rate_check};
+use super::runtime::{phase_start_check, speed_at_rate_check};
+use super::runtime_rate::relative_to;
 use super::speed_actions::DEFAULT_ACCELERATION;
 use super::types::{Planned, When, SPEED_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
