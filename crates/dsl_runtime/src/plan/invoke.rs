@@ -679,11 +679,13 @@ impl Planner<'_> {
                                 "expected distance(…) over the phase (at: all or end), found at: start",
                             ));
                         }
-                        // After a run-time start without a duration, acceleration(a) is the
-                        // rate of the speed change beside it (`speed_over_distance`).
-                        let rates_change = t0.is_none()
-                            && len.filter(|l| *l > 0.0).is_none()
-                            && end_speed_mod(mods).is_some();
+                        // Without a duration, acceleration(a) is the rate of the speed change
+                        // beside it (`speed_over_distance`).
+                        let timed = match t0 {
+                            Some(t) => end.is_some_and(|te| te > t),
+                            None => len.is_some_and(|l| l > 0.0),
+                        };
+                        let rates_change = !timed && end_speed_mod(mods).is_some();
                         if let Some(q) = mods.iter().find(|q| q.kind == ModKind::Acceleration) {
                             if !rates_change {
                                 return Err(q.site.err(

@@ -100,11 +100,10 @@ impl Planner<'_> {
                 return Ok(None);
             }
             Some(q) if relative_to(q).is_some() => {
-                // At a known start distance(…) refuses acceleration(…) beside it (invoke).
-                return Err(q.site.err(
-                    K::Unsatisfiable,
-                    format!("expected the speed profile of distance(…) at {} planned by the runtime, found acceleration(…) beside it", dm.site.at()),
-                ));
+                let t = t0.unwrap_or_default(); // the arm above takes a run-time start
+                let a = self.relative_rate_over(q, (target, t), v1, d)?;
+                check_accel(q, a)?;
+                (q, a)
             }
             Some(q) => {
                 let a = q
@@ -218,6 +217,53 @@ impl Planner<'_> {
         after.push(self.end_check(q, target, end_name, check));
         self.last_v.insert(target.to_string(), v1);
         Ok(())
+    }
+
+    /// At a start `t` the plan knows, the rate of the change of `target` to `v1` within `d` m
+    /// at `q`, an `acceleration(a, faster_than/slower_than/same_as: x)`: \|x's planned
+    /// acceleration ± a\| (`acceleration_value`: at: start x's first piece, at: all x's
+    /// acceleration constant over the phase, at: end its last piece) over the phase, which ends
+    /// when the change (\|v1 − v0\|/rate) and the rest of d at v1 are done, so read over that
+    /// span until the rate and the span agree (at once where x's acceleration holds).
+    fn relative_rate_over(
+        &self,
+        q: &Modifier,
+        (target, t): (&str, f64),
+        v1: f64,
+        d: f64,
+    ) -> Result<f64, Error> {
+        /// Rates within this agree (m/s²); the most rounds of the search.
+        const SETTLED: f64 = 1e-9;
+        const ROUNDS: usize = 50;
+        let v0 = self.track(target).at(t).1;
+        // First x's acceleration as the phase starts (its first piece), then over the phase.
+        let mut span = 1e-3;
+        let mut a = f64::NAN;
+        for _ in 0..ROUNDS {
+            let next = self.acceleration_value(q, (Some(t), span))?.abs();
+            if next <= SETTLED {
+                return Err(q.site.err(
+                    K::Unsatisfiable,
+                    format!("expected a rate other than 0 m/s² for the speed change beside distance({d} m), found {next:.2} m/s² (the other actor's acceleration ± the value)"),
+                ));
+            }
+            if (next - a).abs() <= SETTLED {
+                return Ok(next);
+            }
+            a = next;
+            // The change and the rest of d at v1 (a change longer than d, or a standing actor
+            // with some of d left, is `speed_change_over`'s error with this rate).
+            let covers = (v1 * v1 - v0 * v0).abs() / (2.0 * a);
+            let rest = d - covers;
+            if rest < 0.0 || (rest > 0.0 && v1 <= 0.0) {
+                return Ok(a);
+            }
+            span = (v1 - v0).abs() / a + if rest > 0.0 { rest / v1 } else { 0.0 };
+        }
+        Err(q.site.err(
+            K::Unsatisfiable,
+            format!("expected the other actor's planned acceleration to settle as the rate of the change over distance({d} m), found it changing with the phase's end in {ROUNDS} rounds"),
+        ))
     }
 
     /// At a start `t` the plan knows, the speed change of `target` to `v1` at the rate `a`

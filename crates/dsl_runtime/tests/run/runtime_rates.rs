@@ -1,7 +1,8 @@
 //! Speed changes at a rate in phases that start on a run-time condition (ASAM OpenSCENARIO DSL
 //! 2.1 §8.9 `speed(…, at: end)` beside `acceleration(…)`, `distance(d)`): how long the change
 //! takes depends on the speeds at the start, which only the engine has, so the engine runs it
-//! and checks it then. Every moment is worked by hand in the scenario file.
+//! and checks it then (and, for comparison, the plan's own change at a known start). Every
+//! moment is worked by hand in the scenario file.
 
 use super::runtime::{ego_speeds, fails, phases, ran_at, V_TOL};
 use super::support::run;
@@ -156,4 +157,39 @@ fn a_speed_relative_to_another_at_its_acceleration_after_an_until_follows_it() {
         "do.follow.1/ego/2:speed",
         7.35,
     );
+}
+
+/// rate_relative_over_distance.osc's comment, by hand: at a start the plan knows, ego's change
+/// to 10 m/s runs at lead's planned −1 m/s² − 1 (2 m/s²) from 1 s to 6 s, the other 25 m of
+/// distance(100m) at 10 m/s end the phase at 8.5 s; tail's acceleration(2mpsps) of its own
+/// the same.
+#[test]
+fn a_speed_change_at_another_actors_planned_acceleration_over_a_distance_is_the_plans() {
+    let r = run("rate_relative_over_distance", 0, None);
+    let (start, end) = r.phase("do.b.1");
+    assert!(
+        (start - 1.0).abs() < 1e-9 && (end - 8.5).abs() < 1e-9,
+        "ego's [{start}, {end}]"
+    );
+    let (start, end) = r.phase("do.b.2");
+    assert!(
+        (start - 1.0).abs() < 1e-9 && (end - 8.5).abs() < 1e-9,
+        "tail's [{start}, {end}]"
+    );
+    // (time, m/s, s) by hand; no s asserted half way through the change.
+    let want = [
+        (1.0, 20.0, Some(120.0)),
+        (3.5, 15.0, None),
+        (6.0, 10.0, Some(194.75)),
+        (8.5, 10.0, Some(219.75)),
+    ];
+    for name in ["ego", "tail"] {
+        for (t, v, s) in want {
+            let o = r.at(t, name);
+            assert!((o.speed - v).abs() < V_TOL, "{t}: {o:?}, want {v} m/s");
+            if let Some(s) = s {
+                assert!((o.s - s).abs() < super::S_TOL, "{t}: {o:?}, want s = {s}");
+            }
+        }
+    }
 }
