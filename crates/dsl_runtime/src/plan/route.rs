@@ -459,7 +459,8 @@ pub(crate) fn made_crossing(
 }
 
 /// Places the route points given in world coordinates (`create_xyz_point`,
-/// `xyz_to_route_point`) of `resolved`'s routes (its `along(…)` modifiers and the map's
+/// `xyz_to_route_point`), or by t from a road's reference line (`odr_to_route_point` without
+/// `lane_id`), of `resolved`'s routes (its `along(…)` modifiers and the map's
 /// modifiers) on the network `net`, before anything is planned: the road, lane, s and offset
 /// from the lane's centre of the road surface that holds (x, y) (`RoadNetwork::locate`), so
 /// the route is that of the odr points there. A point on no road, and a route whose points so
@@ -546,14 +547,37 @@ fn locate_route(
                 )
             })
     };
+    // A point whose t is from the reference line (odr_to_route_point without lane_id, lane
+    // 0): the lane of its road whose borders hold t there, t then from that lane's centre.
+    let lane_of = |id: &str, s: f64, t: f64| -> Result<(i32, f64), Error> {
+        let mut found = None;
+        if let Some(r) = net.roads().iter().find(|r| r.id == id) {
+            let _ = r.lane_spans(s, |l, sp| {
+                let (lo, hi) = (sp.inner.min(sp.outer), sp.inner.max(sp.outer));
+                if l.id != 0 && found.is_none() && (lo..=hi).contains(&t) && hi > lo {
+                    found = Some((l.id, t - sp.center()));
+                }
+            });
+        }
+        found.ok_or_else(|| {
+            site.err(
+                K::Road,
+                format!("expected a lane of road {id} holding t = {t} m (from its reference line) at s = {s} m for the route's point, found none"),
+            )
+        })
+    };
     if let Some(at) = xyz.take() {
         let p = place(at)?;
         (*road, *lane, *s, *t) = (p.road_id, p.lane_id, p.s, p.offset);
+    } else if *lane == 0 {
+        (*lane, *t) = lane_of(road, *s, *t)?;
     }
     for w in then.iter_mut() {
         if let Some(at) = w.xyz.take() {
             let p = place(at)?;
             (w.road, w.lane, w.s, w.t) = (p.road_id, p.lane_id, p.s, p.offset);
+        } else if w.lane == 0 {
+            (w.lane, w.t) = lane_of(&w.road, w.s, w.t)?;
         }
     }
     if let Some(w) = then.iter().find(|w| (w.lane > 0) != (*lane > 0)) {

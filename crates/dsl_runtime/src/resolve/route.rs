@@ -289,9 +289,8 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             let mut points = Vec::new();
             match method.text.as_str() {
                 // odr_to_route_point (§8.12.2.1.1) names the same point as a route point.
-                "create_odr_point" | "odr_to_route_point" => {
-                    points.push(route_start(ctx, e, args)?)
-                }
+                "create_odr_point" => points.push(route_start(ctx, e, args, false)?),
+                "odr_to_route_point" => points.push(route_start(ctx, e, args, true)?),
                 "create_xyz_point" | "xyz_to_route_point" => points.push(xyz_point(ctx, e, args)?),
                 "create_route" => {
                     if route_points(ctx, e, args, &mut points)? {
@@ -304,10 +303,11 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             let first = points.remove(0);
             // A route's points are on lanes driven one way (points in world coordinates are
             // checked once placed on the network, `crate::plan`'s `locate_points`).
-            if first.xyz.is_none() {
+            let placed = |p: &RoutePoint| p.xyz.is_none() && p.lane != 0;
+            if placed(&first) {
                 if let Some(p) = points
                     .iter()
-                    .find(|p| p.xyz.is_none() && (p.lane > 0) != (first.lane > 0))
+                    .find(|p| placed(p) && (p.lane > 0) != (first.lane > 0))
                 {
                     return Err(ctx.files.err(K::Road, p.span, one_way(first.lane, p.lane)));
                 }
@@ -480,7 +480,41 @@ fn route_start(
     ctx: &Ctx<'_>,
     e: &Expr,
     args: &[dsl::semantics::hir::Arg],
+    lane_optional: bool,
 ) -> Result<RoutePoint, Error> {
+    // odr_to_route_point's lane_id: "Optional. If omitted, the t-coordinate is measured from
+    // the ASAM OpenDRIVE road reference line" (§8.12.2.1.1): lane 0 (the centre lane, on the
+    // reference line), the lane that holds t found on the network before the plan
+    // (`crate::plan`'s `locate_points`).
+    let params = ["road_id", "lane_id", "s", "t"].map(String::from);
+    let bound = bind(args, &params);
+    let get = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+    // Not given, or given as the declaration's default "".
+    let omitted = match get("lane_id") {
+        None => true,
+        Some(a) => matches!(&a.kind, ExprKind::Str(s) if s.is_empty()),
+    };
+    if lane_optional && omitted {
+        let road = match get("road_id") {
+            Some(a) => string(ctx, a)?,
+            None => {
+                return Err(ctx.files.err(
+                    K::Value,
+                    e.span,
+                    "expected `road_id` in odr_to_route_point(…), found none",
+                ))
+            }
+        };
+        let number = |n: &str| get(n).map(|a| ctx.number(a)).transpose();
+        return Ok(RoutePoint {
+            road,
+            lane: 0,
+            s: number("s")?.unwrap_or(0.0),
+            t: number("t")?.unwrap_or(0.0),
+            xyz: None,
+            span: e.span,
+        });
+    }
     let p = odr_point(ctx, e, args)?;
     Ok(RoutePoint {
         road: p.road,
@@ -557,9 +591,8 @@ fn route_points(
     }
     for item in items {
         match map_call(ctx, item) {
-            Some(("create_odr_point" | "odr_to_route_point", a)) => {
-                out.push(route_start(ctx, item, a)?)
-            }
+            Some(("create_odr_point", a)) => out.push(route_start(ctx, item, a, false)?),
+            Some(("odr_to_route_point", a)) => out.push(route_start(ctx, item, a, true)?),
             Some(("create_xyz_point" | "xyz_to_route_point", a)) => {
                 out.push(xyz_point(ctx, item, a)?)
             }

@@ -213,16 +213,19 @@ fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
 }
 /// route_point.osc, by hand: along(m.odr_to_route_point("1", "-2", 50m, 0m)), the route from
 /// that point: ego placed at (50, -5.25) in lane -2, at 10 m/s (70, -5.25) at 2 s and (90,
-/// -5.25) at 4 s.
+/// -5.25) at 4 s; npc's point without lane_id, t -9.0 m from the reference line: lane -3,
+/// (30, -9.0) to (70, -9.0).
 #[test]
 fn a_route_from_a_route_point_of_an_odr_point_is_driven_from_it() {
     let r = run("route_point", 0, None);
-    for (t, x) in [(0.0, 50.0), (2.0, 70.0), (4.0, 90.0)] {
-        let p = r.at(t, "ego");
-        assert!(
-            (p.x - x).abs() < S_TOL && (p.y + 5.25).abs() < S_TOL && p.lane == -2,
-            "at {t} s: {p:?}"
-        );
+    for (who, lane, y, x0) in [("ego", -2, -5.25, 50.0), ("npc", -3, -9.0, 30.0)] {
+        for t in [0.0, 2.0, 4.0] {
+            let p = r.at(t, who);
+            assert!(
+                (p.x - (x0 + 10.0 * t)).abs() < S_TOL && (p.y - y).abs() < S_TOL && p.lane == lane,
+                "{who} at {t} s: {p:?}"
+            );
+        }
     }
 }
 
