@@ -609,7 +609,7 @@ fn route_points(
                 return Err(ctx.files.err(
                     K::Unsupported,
                     item.span,
-                    "expected an odr point (m.create_odr_point(…)) or a route (m.create_route(…)) in create_route(…), found another expression",
+                    "expected an odr point (m.create_odr_point(…), m.odr_to_route_point(…)), a point in world coordinates (m.create_xyz_point(…), m.xyz_to_route_point(…)) or a route (m.create_route(…)) in create_route(…), found another expression",
                 ))
             }
         }
