@@ -8,11 +8,11 @@
 //! | `yaw(ψ)`, `orientation(yaw: ψ)` relative to the road | the engine's check of the actor's heading minus the road's where it is, at the start (at: start, all) and the end (at: end, all) (`start_yaws`) |
 //! | `keep_position()` | the engine's check that the actor stands at the start (`standing_check`) |
 
-use scenario::StateCheck;
+use scenario::{HeadingCheck, HeadingFrom, StateCheck};
 
 use super::planner::Planner;
 use super::runtime::phase_start_check;
-use super::types::{Planned, SPEED_TOLERANCE, YAW_TOLERANCE};
+use super::types::{Planned, HEADING_TOLERANCE, SPEED_TOLERANCE};
 use crate::error::Error;
 use crate::resolve::{Arg, At, ModKind, Modifier, Val};
 
@@ -24,7 +24,7 @@ impl Planner<'_> {
     /// against s, or its first phase's), but the actor's heading then is the run's (a line or
     /// a lane change cut short by an `until` leaves it turned), so the engine checks it at the
     /// phase start (at: start, all; as the action `name("check")`) and at the phase end (at:
-    /// end, all; in `after`, as `name("yaw").end`), within [`YAW_TOLERANCE`]. Within the phase
+    /// end, all; in `after`, as `name("yaw").end`), within `HEADING_TOLERANCE` (the engine's heading check, `StateCheck::heading` from the road's s-axis, as `heading` writes for the other measures). Within the phase
     /// the actor turns only with a lateral movement, which the plan refuses beside at: all.
     pub(super) fn start_yaws(
         &self,
@@ -48,8 +48,14 @@ impl Planner<'_> {
             else {
                 continue;
             };
+            let angle = e.number()?;
             let check = StateCheck {
-                yaw: Some((e.number()?, YAW_TOLERANCE)),
+                heading: Some(HeadingCheck {
+                    from: HeadingFrom::Road,
+                    angle,
+                    tolerance: HEADING_TOLERANCE,
+                    measure: format!("relative_to_road {angle:.4} rad"),
+                }),
                 ..StateCheck::default()
             };
             if m.at != At::End {

@@ -26,11 +26,6 @@ pub(crate) const SPEED_TOLERANCE: f64 = 0.01;
 /// How far from a `lateral(…)` offset a later phase may start (m).
 pub(crate) const LATERAL_TOLERANCE: f64 = 0.01;
 
-/// How closely the engine's check after a run-time start finds a yaw relative to the road
-/// (rad, 0.057°): an actor along its lane is at the road's heading up to float round-off; one
-/// a line or lane change left turned is off by far more.
-pub(crate) const YAW_TOLERANCE: f64 = 1e-3;
-
 /// How far from a heading asked the engine may find an actor where it checks one (rad,
 /// 0.057°): its heading on a curved lane is the road's at the s its steps reach, which a hand
 /// computation meets to 1e-4 rad (`yaw_world.osc`); a wrong heading is off by far more.

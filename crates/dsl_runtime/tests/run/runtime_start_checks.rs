@@ -43,9 +43,8 @@ fn a_yaw_relative_to_the_road_after_an_until_is_the_engines_check_at_the_start_a
             ("do.on/ego/2:yaw.end", 6.35),
         ],
     );
-    let want =
-        "expected 'ego' at a yaw of 0.0000 rad relative to the road (within 0.001 rad) (yaw(…) at ";
-    let tail = "runtime_yaw_fails.osc:30:13), found it at 0.2838 rad at t = 4.600 s";
+    let want = "expected 'ego' at heading 0.0000 rad (relative_to_road 0.0000 rad, the road's s-axis at 0.0000 rad, within 0.001 rad) (yaw(…) at ";
+    let tail = "runtime_yaw_fails.osc:30:13), found it at 0.2838 rad, its lane's heading 0.0000 rad at t = 4.600 s";
     fails("runtime_yaw_fails", (want, tail), "do.on/ego/1:check", 4.6);
 }
 

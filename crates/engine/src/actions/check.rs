@@ -5,8 +5,7 @@
 //! of the step sees it) must be in the lane, at the offset (from the lane's centre, or from a
 //! border of the lane as wide as it is there), with a place beside another entity in a
 //! driving lane, and at the distance to another
-//! entity it gives (or in the lane given relative to another entity's), at the yaw relative
-//! to the road it gives, at the speed it gives
+//! entity it gives (or in the lane given relative to another entity's), at the speed it gives
 //! (absolute or another entity's plus a value) and that far from a mark noted before (its
 //! odometer), a linear speed change starting with it must fit the vehicle's Performance,
 //! which SpeedAction would otherwise meet by stretching the change in time
@@ -23,7 +22,7 @@
 //! on a plan over several roads in the plan's s, and for an actor driving the roads against s
 //! along its direction of travel (u = L − s, t and offsets to its left), the plan's numbers.
 
-use opendrive::{normalize_angle, Direction, RoadPosition};
+use opendrive::{Direction, RoadPosition};
 use scenario::{RateWithin, SourcePos, StateCheck};
 
 use super::lane_change::side_lane;
@@ -244,8 +243,7 @@ pub(super) fn require(
         || check.offset_in_width.is_some()
         || check.beside_in_lane.is_some()
         || check.gap.is_some()
-        || check.beside.is_some()
-        || check.yaw.is_some();
+        || check.beside.is_some();
     if !places {
         return Ok(());
     }
@@ -341,19 +339,6 @@ pub(super) fn require(
             return Err(fail(
                 format!("'{}' at {} (within {tol} m)", e.name, chain.place(s)),
                 format!("it at {}", chain.place(got)),
-            ));
-        }
-    }
-    // The heading relative to the road's s-axis where the actor is, on the circle.
-    if let Some((yaw, tol)) = check.yaw {
-        let got = at.relative_heading;
-        if normalize_angle(got - yaw).abs() > tol {
-            return Err(fail(
-                format!(
-                    "'{}' at a yaw of {yaw:.4} rad relative to the road (within {tol} rad)",
-                    e.name
-                ),
-                format!("it at {got:.4} rad"),
             ));
         }
     }

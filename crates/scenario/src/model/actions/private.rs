@@ -110,12 +110,6 @@ pub struct StateCheck {
     /// in a phase that starts on a run-time condition; the vehicle would otherwise stand, or
     /// stay at its top speed, with an acceleration of 0 before the phase ends).
     pub held_acceleration: Option<(f64, f64)>,
-    /// The actor's yaw relative to the road (rad: its heading minus the heading of the road's
-    /// s-axis where it is, ASAM OpenSCENARIO DSL 2.1 §8.9.9 `relative_to_road`, "actor yaw
-    /// relative to road s-axis"; π for an actor driving against s along its lane) and the
-    /// tolerance (rad), compared on the circle (`yaw`/`orientation` in a phase that starts on
-    /// a run-time condition, where the plan does not know the actor's heading).
-    pub yaw: Option<(f64, f64)>,
     /// The actor's speed (m/s): another entity's speed at the moment (`None`: 0) plus the
     /// value, and the tolerance (m/s).
     pub speed: Option<(Option<String>, f64, f64)>,
