@@ -108,6 +108,15 @@ impl Track {
             })
     }
 
+    /// The sideways movements that overlap the open interval (a, b): (start, end) times.
+    pub(crate) fn moves_in(&self, a: f64, b: f64) -> Vec<(f64, f64)> {
+        self.moves
+            .iter()
+            .copied()
+            .filter(|(m0, m1)| *m0 < b && *m1 > a)
+            .collect()
+    }
+
     /// The offset from the lane centre at time `t` (the last one planned from t or before).
     pub(crate) fn offset(&self, t: f64) -> f64 {
         self.offsets

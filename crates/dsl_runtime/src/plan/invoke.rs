@@ -839,19 +839,12 @@ impl Planner<'_> {
                             }
                         }
                         if first {
-                            // Placed; beside another actor and throughout, both must keep
-                            // their lateral positions (checked once everything is planned).
+                            // Placed; beside another actor and throughout, the actor keeps
+                            // beside it (`lateral_follow`).
                             if m.at == At::All {
-                                if let Some((e, _)) = lateral::reference(m)? {
-                                    let x = self.entity_of(e)?;
-                                    self.beside_checks.push((
-                                        target.clone(),
-                                        x,
-                                        t0.unwrap_or(0.0),
-                                        end.or(len.and_then(|l| t0.map(|t| t + l))),
-                                        m.site.clone(),
-                                    ));
-                                }
+                                let te = end.or(len.and_then(|l| t0.map(|t| t + l)));
+                                let span = (t0.unwrap_or(0.0), te);
+                                self.plan_beside_all(m, target, span, name("lateral"), out)?;
                             }
                             continue;
                         }
@@ -870,13 +863,8 @@ impl Planner<'_> {
                                 ));
                             }
                             if m.at == At::All {
-                                self.beside_checks.push((
-                                    target.clone(),
-                                    x,
-                                    t,
-                                    end.or(len.map(|l| t + l)),
-                                    m.site.clone(),
-                                ));
+                                let span = (t, end.or(len.map(|l| t + l)));
+                                self.plan_beside_all(m, target, span, name("lateral"), out)?;
                             }
                             continue;
                         }

@@ -27,8 +27,8 @@
 //! above and σ = +1 on the left of x, −1 on its right. `closest` is then the gap between the
 //! facing sides (the actor's right side and x's left side when it is on x's left). The actor's
 //! lane is the one it is placed in by `lane(…)`, or else the driving lane containing t_a. This
-//! form places the actor at the start of the run (its first phase); `at: all` then holds while
-//! neither actor moves sideways (checked by the planner). At the start of a later phase it is
+//! form places the actor at the start of the run (its first phase); `at: all` then keeps it
+//! beside x while x moves sideways (`lateral_follow`). At the start of a later phase it is
 //! checked (against the plan's tracks at a known start, by the engine after a run-time one);
 //! `at: end` is a lateral target where the plan has x at the phase end (`lateral_end`).
 //! `same_as` (the same t) is an error: two vehicles cannot share it.
@@ -56,8 +56,10 @@ pub(crate) fn offset_in_width(
 pub(crate) fn lane_offset(m: &Modifier, lane_width: f64, width: f64) -> Result<f64, Error> {
     for key in ["side_of", "left_of", "right_of", "same_as"] {
         if let Some(e) = m.arg(key) {
+            // Every caller plans a reference first (`beside`, `lateral_end`, `lateral_follow`,
+            // `shape_relative`): here it would be no offset in the lane.
             return Err(e.site.err(
-                K::Unsupported,
+                K::Modifier,
                 format!("expected lateral(…) relative to the actor's lane here, found `{key}:` (a lateral position beside another actor is planned from where the plan has that actor)"),
             ));
         }

@@ -81,6 +81,7 @@
 //! | `runtime_rate` | speed changes at a rate relative to another actor after a run-time start (the engine's change and its checks) |
 //! | `runtime_kept` | the engine's checks after a run-time start of what the plan keeps by construction (yaw relative to the road, `keep_position`) |
 //! | `acceleration_follow` | `acceleration(…)` relative to another actor that the engine follows step by step |
+//! | `lateral_follow` | `lateral(…)` at: all beside another actor that moves sideways: the engine follows it |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
 //! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
@@ -114,6 +115,7 @@ mod lane_fields;
 mod lateral;
 mod lateral_actions;
 mod lateral_end;
+mod lateral_follow;
 mod map_checks;
 mod map_crossings;
 mod map_junctions;
@@ -186,6 +188,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         crossings: HashMap::new(),
         sides: RefCell::new(HashMap::new()),
         beside_checks: Vec::new(),
+        beside_follows: Vec::new(),
         heading_asks: Vec::new(),
         draws: RefCell::new(res.draws.clone()),
         engine_moved: HashMap::new(),
@@ -499,6 +502,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     if end == When::Never && !settings.open_end {
         return Err(no_end(root));
     }
+    lateral_follow::check_beside_follows(&p, &p.beside_follows)?;
     for (a, x, t0, te, site) in &p.beside_checks {
         for who in [a, x] {
             if let Some(t) = p.track(who).moving_in(*t0, te.unwrap_or(f64::INFINITY)) {

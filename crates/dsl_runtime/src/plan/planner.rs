@@ -78,6 +78,9 @@ pub(crate) struct Planner<'a> {
     /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
     /// the modifier), checked once every phase is planned.
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,
+    /// `lateral(…, x)` at: all that the engine follows while x moves sideways
+    /// (`lateral_follow`), checked once every phase is planned.
+    pub beside_follows: Vec<super::lateral_follow::BesideFollow>,
     /// Yaws measured in the world or from another object (`heading`), checked once every
     /// phase is planned.
     pub heading_asks: Vec<super::types::HeadingAsk>,

@@ -289,8 +289,8 @@ impl Planner<'_> {
     }
 }
 
-/// 1 for an invocation with a `position(…, at: end)`, a `lateral(…, at: end)` beside another
-/// actor, a speed at the end relative to another actor (`speed(same_as/faster_than/
+/// 1 for an invocation with a `position(…, at: end)`, a `lateral(…)` beside another actor at:
+/// end or all (x's sideways moves in the phase, `lateral_follow`), a speed at the end relative to another actor (`speed(same_as/faster_than/
 /// slower_than: x, at: end)`, `change_speed` so: read where the plan has that actor at the
 /// end), or an acceleration relative to another actor (`acceleration(…, same_as/faster_than/
 /// slower_than: x)`, any `at`: x's pieces of planned acceleration over the phase; planned
@@ -302,7 +302,7 @@ fn relative_end(p: &Phase) -> u8 {
         |m: &crate::resolve::Modifier, keys: &[&str]| keys.iter().any(|k| m.arg(k).is_some());
     let relative = |m: &crate::resolve::Modifier| match m.kind {
         ModKind::Position => m.at == At::End,
-        ModKind::Lateral => m.at == At::End && any_of(m, &["side_of", "left_of", "right_of"]),
+        ModKind::Lateral => m.at != At::Start && any_of(m, &["side_of", "left_of", "right_of"]),
         ModKind::Speed | ModKind::ChangeSpeed => {
             (m.at == At::End || m.kind == ModKind::ChangeSpeed)
                 && any_of(m, &["same_as", "faster_than", "slower_than"])

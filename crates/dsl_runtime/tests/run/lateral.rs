@@ -84,8 +84,8 @@ fn lateral_beside_another_actor_places_at_the_start() {
     );
     crate::along::refused(
         "err_lateral_beside_move",
-        "expected `npc` and `ego` to keep their lateral positions while this lateral(…) holds (at: all), found `ego` moving sideways from 0.00 s",
-        "17:13",
+        "expected a driving lane at t = -11.75 m (where lateral(…) puts `npc` beside `ego` at 3.00 s, s = 90.00 m), found none",
+        "19:13",
     );
 }
 

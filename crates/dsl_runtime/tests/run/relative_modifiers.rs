@@ -122,3 +122,59 @@ fn a_shaped_lane_relative_to_another_changes_to_its_lane_with_the_shapes_dynamic
     }
     assert_eq!(r.at(6.0, "ego").lane, -3);
 }
+
+/// lateral_follow.osc's comment, by hand: ego follows npc's offset change and lane change 2.5 m
+/// to its left at every step; keeper holds npc's t at the phase start + 4.5 m.
+#[test]
+fn a_lateral_position_beside_another_that_moves_sideways_follows_it_throughout() {
+    let r = run("relative/lateral_follow", 0, None);
+    let y = |t: f64, who: &str| r.at(t, who).y;
+    let npc = |t: f64| {
+        if t <= 1.0 {
+            -8.75
+        } else if t <= 5.0 {
+            -8.75 + 0.25 * (1.0 - (std::f64::consts::PI * (t - 1.0) / 4.0).cos())
+        } else if t <= 9.0 {
+            -8.25 + 1.5 * (1.0 - (std::f64::consts::PI * (t - 5.0) / 4.0).cos())
+        } else {
+            -5.25
+        }
+    };
+    for (t, want) in [(3.0, -8.5), (5.0, -8.25), (7.0, -6.75), (9.0, -5.25)] {
+        close(npc(t), want, 1e-12, &format!("the comment's npc y({t})"));
+    }
+    // At every step: ego 2.5 m left of npc (actual), keeper at -4.25 m (projected).
+    for (t, objs) in &r.frames {
+        if *t > 9.0 + 1e-9 {
+            break;
+        }
+        let at = |who: &str| {
+            objs.iter()
+                .find(|o| o.name == who)
+                .unwrap_or_else(|| panic!("{who}"))
+        };
+        close(at("npc").y, npc(*t), Y_TOL, &format!("npc y({t})"));
+        close(at("ego").y, npc(*t) + 2.5, Y_TOL, &format!("ego y({t})"));
+        close(at("keeper").y, -4.25, Y_TOL, &format!("keeper y({t})"));
+    }
+    for (t, want, lane) in [
+        (3.0, -6.0, -2),
+        (5.0, -5.75, -2),
+        (7.0, -4.25, -2),
+        (9.0, -2.75, -1),
+        (10.0, -2.75, -1),
+    ] {
+        close(y(t, "ego"), want, Y_TOL, &format!("ego y({t})"));
+        assert_eq!(r.at(t, "ego").lane, lane, "ego's lane at {t}");
+    }
+    // ego moves sideways as npc does at the same speed: its heading is npc's, from its lateral
+    // speed over the step (x's t over the step, the engine's second pass).
+    for t in [3.0, 7.0] {
+        let (e, n) = (r.at(t, "ego").h, r.at(t, "npc").h);
+        close(e, n, HEADING_TOL, &format!("ego heading({t})"));
+    }
+}
+
+/// ego's heading from npc's lateral speed over one step (the chord of npc's sinusoid) against
+/// npc's (its tangent at the step's end): they differ by O(dt²) of the slope, 3e-5 rad at 7 s.
+const HEADING_TOL: f64 = 1e-4;

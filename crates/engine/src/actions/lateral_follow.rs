@@ -17,9 +17,15 @@
 //! gives t(τ); its slope, for the heading, is the blend's rate plus f times x's lateral speed.
 //! x off the actor's road, or no driving lane at the target when the action starts, fails it:
 //! an error record and a failed run.
+//!
+//! With a step shape (the DSL runtime's `lateral(d, side_of/left_of/right_of: x)` at: all
+//! while x moves sideways, §8.9.1.1.1 "at: all": the constraint holds throughout the phase)
+//! there is no transition: the actor's t is t_x(τ) + d at every step's end (f = 1), its slope
+//! x's lateral speed, and the action holds until the phase's Act stops it (it never ends of
+//! itself). The actor is beside x as it starts (the runtime places or checks it so).
 
 use opendrive::{Road, LENGTH_EPSILON};
-use scenario::{DynamicsShape, SourcePos};
+use scenario::{DynamicsShape, SourcePos, TransitionDynamics};
 
 use super::lane_change::{check_failed, side_lane, step_speed};
 use super::Part;
@@ -44,6 +50,9 @@ pub(crate) struct FollowState {
     start_time: f64,
     /// The actor's t at the start (m).
     t0: f64,
+    /// No transition: x's t plus `dt` at every step, until the action is stopped (a step
+    /// shape).
+    holds: bool,
     /// The target at the previous step's end (m): x's lateral speed is its change.
     last_target: f64,
 }
@@ -51,21 +60,24 @@ pub(crate) struct FollowState {
 impl FollowState {
     /// True when the blend reaches its end by `t`.
     pub(crate) fn completes_by(&self, t: f64) -> bool {
-        t - self.start_time >= self.duration - crate::tolerance::TIME
+        !self.holds && t - self.start_time >= self.duration - crate::tolerance::TIME
     }
 }
 
-/// Starts following `name` at `dt` from it over `duration` s on `actor` at `now`.
+/// Starts following `name` at `dt` from it over the transition's time on `actor` at `now`
+/// (a step shape: at every step, until stopped).
 pub(crate) fn start(
     world: &mut World,
     actor: EntityId,
     (name, dt, what): (&str, f64, &str),
-    duration: f64,
+    dynamics: &TransitionDynamics,
     now: f64,
     pos: &SourcePos,
 ) -> Result<Part, Error> {
+    let holds = dynamics.dynamics_shape == DynamicsShape::Step;
+    let duration = dynamics.value;
     // Over a time only (the DSL runtime gives the phase's duration).
-    if !(duration > 0.0 && duration.is_finite()) {
+    if !(holds || duration > 0.0 && duration.is_finite()) {
         return Err(Error::at(
             "a duration above 0 s",
             format!("{duration} s"),
@@ -101,7 +113,7 @@ pub(crate) fn start(
         track.blend = Some(Blend {
             from_lane,
             from_offset,
-            weight: 0.0,
+            weight: if holds { 1.0 } else { 0.0 },
             weight_per_m: 0.0,
         });
     }
@@ -111,6 +123,7 @@ pub(crate) fn start(
         duration,
         start_time: now,
         t0,
+        holds,
         last_target: target,
     }))
 }
@@ -127,8 +140,13 @@ pub(crate) fn step(
         // x left the actor's road: the blend holds its last target.
         return ActionStatus::Running;
     };
-    let p = ((now + dt - s.start_time) / s.duration).min(1.0);
-    let (f, df) = shape_value(DynamicsShape::Sinusoidal, p);
+    let (p, (f, df)) = if s.holds {
+        // No transition: at x's t plus d, held until stopped.
+        (0.0, (1.0, 0.0))
+    } else {
+        let p = ((now + dt - s.start_time) / s.duration).min(1.0);
+        (p, shape_value(DynamicsShape::Sinusoidal, p))
+    };
     let net = world.network.clone();
     let e = world.entity_mut(actor);
     let speed = step_speed(e);
@@ -147,7 +165,11 @@ pub(crate) fn step(
         return ActionStatus::Ended;
     }
     // The lateral speed of t(τ) = (1 − f)·t₀ + f·target: f′/T·(target − t₀) + f·target′.
-    let lateral = df / s.duration * (target - s.t0) + f * x_rate;
+    let lateral = if s.holds {
+        x_rate
+    } else {
+        df / s.duration * (target - s.t0) + f * x_rate
+    };
     let sin = if speed * dt > LENGTH_EPSILON {
         (lateral / speed).clamp(-1.0, 1.0)
     } else {

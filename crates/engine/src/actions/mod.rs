@@ -529,7 +529,7 @@ impl Host<'_> {
                         self.world,
                         actor,
                         (entity_ref, *t, what),
-                        dynamics.value,
+                        dynamics,
                         time,
                         pos,
                     ),

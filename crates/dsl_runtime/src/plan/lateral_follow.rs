@@ -1,0 +1,152 @@
+//! `lateral(d, side_of/left_of/right_of: x)` at: all (ASAM OpenSCENARIO DSL 2.1 §8.9
+//! `lateral`: "an actor's lateral position (t-coordinate) relative to the road or another
+//! actor"; §8.9.1.1.1 `at: all`: the constraint holds throughout the phase) where x moves
+//! sideways in the phase, at a phase start the plan knows.
+//!
+//! With `track: actual` (the default; §8.9.1.1.3 "the vehicle reacts to the behavior of the
+//! referenced vehicle") the actor's t is x's t plus the t asked at every step: the engine's
+//! lane change beside a moving entity (`scenario::LaneChangeTarget::Beside` with `follow`, no
+//! XML form) with a step shape, engine `actions::lateral_follow`: no transition, the target x's
+//! t at each step's end plus d, held until the phase's Act stops it (the actor is beside x at
+//! the phase start already: placed there in its first phase, checked at a later one). Its
+//! offset from its lane's centre follows x's lateral position, and where x's t plus d leaves
+//! the actor's lane, it is in the lane that holds it (the engine's blend of the two lanes). The
+//! plan mirrors each sideways move of x in the phase on the actor's track (the lane holding x's
+//! t plus d where the move ends, the offset from its centre), so later phases start from there;
+//! once every phase is planned, x's moves in the phase must all be mirrored (x's invocation
+//! planned after the actor's in another branch: an error naming the move).
+//!
+//! With `track: projected` x is projected from its state at the phase start, keeping its t:
+//! the actor keeps x's t at the start plus d, so only the actor must not move sideways then
+//! (x may). Either way a sideways move of the actor's own in the phase is an error (checked
+//! once every phase is planned, `beside_checks`).
+//!
+//! After a run-time start the engine checks t − t_x at the phase start (`runtime`); x's moves
+//! after it are not followed (not run yet: x may be on another of the plan's roads, which the
+//! engine's move beside x does not cross).
+
+use scenario::{DynamicsShape, LaneChangeTarget, LateralAction, PrivateAction};
+
+use super::motion::sinusoidal_over;
+use super::planner::Planner;
+use super::types::{Planned, LATERAL_TOLERANCE};
+use crate::error::{Error, ErrorKind as K, Site};
+use crate::resolve::Modifier;
+
+/// `lateral(…)` at: all beside x that the engine follows: (actor, x, phase start, phase end if
+/// known, the actor's t minus x's, the modifier), checked once every phase is planned.
+pub(crate) type BesideFollow = (String, String, f64, Option<f64>, f64, Site);
+
+impl Planner<'_> {
+    /// Plans `m`, a `lateral(…)` at: all beside another actor, over the phase from `t0`
+    /// (known) to `te` (if known) for `target`, as the action `name` (module doc): the checks
+    /// once every phase is planned, and with `track: actual` the engine's following of x
+    /// where x moves sideways in the phase.
+    pub(super) fn plan_beside_all(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        (t0, te): (f64, Option<f64>),
+        name: String,
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let Some((x, dt)) = self.beside_gap(m, target)? else {
+            return Ok(());
+        };
+        // The actor's own sideways moves contradict the constraint either way.
+        let (who, held) = (target.to_string(), (t0, te, m.site.clone()));
+        let end = te.unwrap_or(f64::INFINITY);
+        if m.projected || self.track(&x).moving_in(t0, end).is_none() {
+            // x keeps its t (projected: as it is at the start): so must the actor.
+            let checked = if m.projected { who.clone() } else { x };
+            self.beside_checks
+                .push((who, checked, held.0, held.1, held.2));
+            return Ok(());
+        }
+        if let Some(from) = self.track(target).moving_in(t0, end) {
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` to keep beside `{x}` while this lateral(…) holds (at: all), found `{target}` moving sideways of its own from {from:.2} s"),
+            ));
+        }
+        self.mirror_moves(m, target, &x, (t0, end), dt)?;
+        self.beside_follows
+            .push((who, x.clone(), t0, te, dt, m.site.clone()));
+        out.push(Planned::with_phase(
+            target,
+            name,
+            PrivateAction::Lateral(LateralAction::LaneChange {
+                target_lane_offset: None,
+                // A step: no transition, x's t plus d at every step until the phase ends.
+                dynamics: scenario::TransitionDynamics {
+                    dynamics_shape: DynamicsShape::Step,
+                    ..sinusoidal_over(0.0)
+                },
+                target: LaneChangeTarget::Beside {
+                    entity_ref: x,
+                    t: dt,
+                    what: format!("{}(…) at {}", m.name, m.site.at()),
+                    follow: true,
+                },
+            }),
+            &m.site,
+        ));
+        Ok(())
+    }
+
+    /// Writes x's sideways moves within `(t0, end)` on `target`'s track, `dt` to x's left.
+    fn mirror_moves(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        x: &str,
+        (t0, end): (f64, f64),
+        dt: f64,
+    ) -> Result<(), Error> {
+        let mut moves: Vec<(f64, f64)> = self.track(x).moves_in(t0, end);
+        moves.sort_by(|a, b| a.1.total_cmp(&b.1));
+        for (m0, m1) in moves {
+            if m1 > end + 1e-9 {
+                return Err(m.site.err(
+                    K::Unsatisfiable,
+                    format!("expected `{x}`'s sideways move from {m0:.2} s to end within the phase while lateral(…) beside it holds (at: all), found it ending at {m1:.2} s, after the phase's end at {end:.2} s"),
+                ));
+            }
+            let s = self.s_at(target, m1);
+            let t = self.t_at(x, m1) + dt;
+            let lane = self.road.lane_holding(s, t).ok_or_else(|| {
+                m.site.err(
+                    K::Unsatisfiable,
+                    format!("expected a driving lane at t = {t:.2} m (where lateral(…) puts `{target}` beside `{x}` at {m1:.2} s, s = {s:.2} m), found none"),
+                )
+            })?;
+            let offset = t - self.road.lane_center(lane, s);
+            let tr = self.track_mut(target);
+            if tr.lane(m1) != lane {
+                tr.set_lane(m1, lane);
+            }
+            tr.set_offset(m1, offset);
+            tr.add_move(m0.max(t0), m1);
+        }
+        Ok(())
+    }
+}
+
+/// Checks, once every phase is planned, that every sideways move of x within a phase in which
+/// the actor follows it is on the actor's track (`follows`): t_a − t_x is the t asked at each
+/// move's end.
+pub(super) fn check_beside_follows(p: &Planner<'_>, follows: &[BesideFollow]) -> Result<(), Error> {
+    for (a, x, t0, te, dt, site) in follows {
+        let end = te.unwrap_or(f64::INFINITY);
+        for (_, m1) in p.track(x).moves_in(*t0, end) {
+            let got = p.t_at(a, m1) - p.t_at(x, m1);
+            if (got - dt).abs() > LATERAL_TOLERANCE {
+                return Err(site.err(
+                    K::Unsatisfiable,
+                    format!("expected `{a}` {dt:.2} m to the left of `{x}` when `{x}`'s sideways move ends at {m1:.2} s (lateral(…) at: all), found {got:.2} m: `{x}`'s move is planned after this phase (write `{x}`'s invocation before `{a}`'s)"),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
