@@ -427,11 +427,13 @@ fn offsets_along_t(action: PrivateAction, against: bool) -> PrivateAction {
                     t,
                     what,
                     follow,
+                    roads,
                 } => LaneChangeTarget::Beside {
                     entity_ref,
                     t: -t,
                     what,
                     follow,
+                    roads,
                 },
                 other => other,
             },

@@ -23,8 +23,13 @@
 //! the actor is in the lane kept (`runtime_end`). Beside a lane change of the phase
 //! (`change_lane(n, side)`, `lane(n, at: end)`) the same action, and the engine's check at the
 //! phase end that the actor is in the change's target lane (`change_lane`: n lanes to its side
-//! of the lane it had at the start, which a mark notes; `lane(n)`: that lane): the lane the t
-//! asked lies in is the engine's to find, and a t outside the change's lane an error record.
+//! of the lane it had at the start, which a mark notes; `lane(n)`: that lane; a lane relative to
+//! another actor y, `lane(same_as/side_of/left_of/right_of: y, at: end)`: so many lanes from
+//! y's lane at the phase end, oscsim's StateCheck `lane_of`): the lane the t asked lies in is
+//! the engine's to find, and a t outside the change's lane an error record.
+//! On a plan over several roads the target names the plan's roads (`Beside::roads`): x may be
+//! on another of them, its t compared with the actor's where their reference lines join
+//! continuously (engine `RoadChain::lateral_compares`).
 
 use scenario::{
     DynamicsShape, LaneChangeTarget, LaneOffsetTarget, LateralAction, PrivateAction, StateCheck,
@@ -40,22 +45,17 @@ use crate::resolve::Modifier;
 impl Planner<'_> {
     /// t of `target`'s reference point at the phase end `t + len` that `m` (a `lateral(…, at:
     /// end)` beside another actor) asks for, from x's planned track; `None` when `m` has no
-    /// reference. `t` is the phase start, `None` after a run-time condition (an error).
+    /// reference. `t` is the phase start, one the plan knows (after a run-time condition the
+    /// engine reads x: `beside_after_runtime_start`).
     pub(super) fn beside_end(
         &self,
         m: &Modifier,
         target: &str,
-        t: Option<f64>,
+        t: f64,
         len: f64,
     ) -> Result<Option<f64>, Error> {
         let Some((x, dt)) = self.beside_gap(m, target)? else {
             return Ok(None);
-        };
-        let Some(t) = t else {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!("expected a phase start the plan knows for lateral(…, at: end) beside `{x}`, found one after a run-time condition (the engine's lane change takes a lane relative to `{x}` at its start and an offset from that lane's centre, but `{x}`'s offset in its lane and any sideways move of `{x}` in the phase are not known to the plan then, and no engine action follows another actor's t over a duration)"),
-            ));
         };
         if !m.projected {
             return Ok(Some(self.t_at(&x, t + len) + dt));
@@ -84,7 +84,13 @@ impl Planner<'_> {
     ) -> Result<f64, Error> {
         let s_end = t.map_or(0.0, |t| self.s_at(target, t + len));
         let w = self.road.lane_width(lane, s_end);
-        let Some(t_a) = self.beside_end(m, target, t, len)? else {
+        // After a run-time start a reference is the engine's (`beside_with_lane_change`,
+        // planned before this is asked).
+        let Some(t_a) = t
+            .map(|t| self.beside_end(m, target, t, len))
+            .transpose()?
+            .flatten()
+        else {
             return super::lateral::lane_offset(m, w, self.width(target));
         };
         let o = t_a - self.road.lane_center(lane, s_end);
@@ -116,11 +122,11 @@ impl Planner<'_> {
             // A lane kept beside it is the engine's check at the phase end (`runtime_end`).
             return self.beside_after_runtime_start(m, target, len, name, out);
         }
+        // After a run-time start (above) the engine's; here a start the plan knows.
+        let t = t.unwrap_or_default();
         let Some(t_a) = self.beside_end(m, target, t, len)? else {
             return Ok(());
         };
-        // beside_end returned a t only for a known start.
-        let t = t.unwrap_or_default();
         let te = t + len;
         let s_end = self.s_at(target, te);
         let lane0 = self.track(target).lane(t);
@@ -182,9 +188,9 @@ impl Planner<'_> {
     /// action and the lane check): the engine's move beside x (`beside_after_runtime_start`),
     /// and its check at the phase end (in `after`) that the actor is in the change's target
     /// lane: for `change_lane` n lanes to its side of the lane it had at the start (a mark
-    /// notes it then), for `lane(n, at: end)` that lane. `false` when `q` has no reference
-    /// (an offset in the lane, planned with the change); a lane relative to another actor is
-    /// an error at `c`.
+    /// notes it then), for `lane(n, at: end)` that lane, for a lane relative to another actor
+    /// y the lane so many lanes from y's lane at the phase end. `false` when `q` has no
+    /// reference (an offset in the lane, planned with the change).
     pub(super) fn beside_with_lane_change(
         &self,
         q: &Modifier,
@@ -207,18 +213,27 @@ impl Planner<'_> {
             }
             LaneChangeTarget::Absolute(l) => {
                 let l = l.parse().map_err(|_| {
-                    c.site
-                        .err(K::Value, format!("expected a lane id of the road, found `{l}`"))
+                    c.site.err(
+                        K::Value,
+                        format!("expected a lane id of the road, found `{l}`"),
+                    )
                 })?;
                 StateCheck {
                     lane: Some((self.road.id().to_string(), l)),
                     ..StateCheck::default()
                 }
             }
-            _ => {
+            // Relative to another actor x (lane(same_as/side_of/…: x, at: end), change_lane
+            // with a reference): x's lane at the phase end, counted as the change counts.
+            LaneChangeTarget::Relative { entity_ref, value } => StateCheck {
+                lane_of: Some((entity_ref, value)),
+                ..StateCheck::default()
+            },
+            // `lane_target` makes no other.
+            other => {
                 return Err(c.site.err(
-                    K::Unsupported,
-                    format!("expected a lane of `{target}`'s own (change_lane(n, side), lane(n)) beside lateral(…, at: end) at {} after a run-time start, found one relative to another actor", q.site.at()),
+                    K::Modifier,
+                    format!("expected a lane target of `{target}`'s lane change, found {other:?}"),
                 ))
             }
         };
@@ -242,12 +257,6 @@ impl Planner<'_> {
         let Some((x, dt)) = self.beside_gap(m, target)? else {
             return Ok(());
         };
-        if self.road.ids().len() > 1 {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!("expected lateral(…, at: end) beside `{x}` after a run-time start on a plan over one road, found roads {} (the road the actors are on then is not known before the run)", self.road.ids().join(", ")),
-            ));
-        }
         let change = LateralAction::LaneChange {
             target_lane_offset: None,
             dynamics: sinusoidal_over(len),
@@ -257,6 +266,8 @@ impl Planner<'_> {
                 what: format!("{}(…) at {}", m.name, m.site.at()),
                 // Actual: x's t at every step (engine actions::lateral_follow).
                 follow: !m.projected,
+                // x on another of the plan's roads: t compares across their joints.
+                roads: self.chain(),
             },
         };
         out.push(Planned::with_phase(

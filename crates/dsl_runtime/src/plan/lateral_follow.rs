@@ -87,6 +87,7 @@ impl Planner<'_> {
                     t: dt,
                     what: format!("{}(…) at {}", m.name, m.site.at()),
                     follow: true,
+                    roads: self.chain(),
                 },
             }),
             &m.site,

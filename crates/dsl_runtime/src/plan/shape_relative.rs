@@ -226,7 +226,7 @@ impl Planner<'_> {
                 0.0
             }
         };
-        let Some(t_a) = self.beside_end(m, target, Some(t), len)? else {
+        let Some(t_a) = self.beside_end(m, target, t, len)? else {
             return Ok(None);
         };
         let s_end = self.s_at(target, t + len);

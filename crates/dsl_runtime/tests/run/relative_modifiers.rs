@@ -178,3 +178,82 @@ fn a_lateral_position_beside_another_that_moves_sideways_follows_it_throughout()
 /// ego's heading from npc's lateral speed over one step (the chord of npc's sinusoid) against
 /// npc's (its tangent at the step's end): they differ by O(dt²) of the slope, 3e-5 rad at 7 s.
 const HEADING_TOL: f64 = 1e-4;
+
+/// runtime_lateral_beside_lane_of.osc's comment, by hand: ego beside npc into lane -1, one
+/// lane left of lead's lane at the phase end, checked then.
+#[test]
+fn a_lane_relative_to_another_beside_a_lateral_position_after_an_until_is_checked_at_the_end() {
+    let r = run("relative/runtime_lateral_beside_lane_of", 0, None);
+    crate::runtime::phases(&r, &[("do.shift", 3.35, 5.35)]);
+    let f = |tau: f64| (1.0 - (std::f64::consts::PI * tau / 2.0).cos()) / 2.0;
+    for k in 0..=40 {
+        let t = 3.35 + 0.05 * f64::from(k);
+        let g = f(t - 3.35);
+        close(
+            r.at(t, "ego").y,
+            -5.25 + 2.0 * g + g * g,
+            Y_TOL,
+            &format!("ego y({t})"),
+        );
+    }
+    for (t, y, lane) in [(4.35, -4.0, -2), (5.35, -2.25, -1), (6.35, -2.25, -1)] {
+        close(r.at(t, "ego").y, y, Y_TOL, &format!("ego y({t})"));
+        assert_eq!(r.at(t, "ego").lane, lane, "ego's lane at {t}");
+    }
+    crate::runtime::ran_at(&r, &[("do.shift.0/ego/2:lane.end", 5.35)]);
+    crate::runtime::fails(
+        "relative/runtime_lateral_beside_lane_of_fails",
+        (
+            "expected 'ego' in lane -2",
+            "runtime_lateral_beside_lane_of_fails.osc:38:17), found it in lane -1 of road 1 at t = 5.350 s",
+        ),
+        "do.shift.0/ego/2:lane.end",
+        5.35,
+    );
+}
+
+/// runtime_lateral_end_several_roads.osc's comment, by hand: ego on road 0 moves to lead's t
+/// on road 1 + 0.5 m over 2 s (one measure across the continuous joint).
+#[test]
+fn a_lateral_position_beside_another_on_another_of_the_plans_roads_after_an_until_is_reached() {
+    let r = crate::support::run_on(
+        "relative/runtime_lateral_end_several_roads",
+        "junction_trippel_twoway0",
+    );
+    crate::runtime::phases(&r, &[("do.shift", 5.85, 7.85)]);
+    let lead = r.at(5.85, "lead");
+    assert_eq!((lead.road.as_str(), lead.lane), ("1", -1), "{lead:?}");
+    let f = |tau: f64| (1.0 - (std::f64::consts::PI * tau / 2.0).cos()) / 2.0;
+    for k in 0..=40 {
+        let t = 5.85 + 0.05 * f64::from(k);
+        close(
+            r.at(t, "ego").y,
+            -1.5 + 0.5 * f(t - 5.85),
+            Y_TOL,
+            &format!("ego y({t})"),
+        );
+    }
+    // x: 8 m/s along the path, less its cost along the road: t(u) = -1.5 + 0.25·(1 − cos(π·u/16))
+    // over u in [0, 16] m, slope k·sin(π·u/16), k = 0.25·π/16; ∫ (1 − cos θ) du ≈ ∫ slope²/2 du
+    // = k²·u/4 − k²·sin(2π·u/16)·16/(8π): 0.00482 m half way, 0.00964 m at the end.
+    let k: f64 = 0.25 * std::f64::consts::PI / 16.0;
+    let cost = |u: f64| {
+        k * k * u / 4.0
+            - k * k * (2.0 * std::f64::consts::PI * u / 16.0).sin() * 16.0
+                / (8.0 * std::f64::consts::PI)
+    };
+    for (t, x, y) in [
+        (6.85, 75.0 - cost(8.0), -1.25),
+        (7.85, 83.0 - cost(16.0), -1.0),
+        (8.85, 91.0 - cost(16.0), -1.0),
+    ] {
+        let ego = r.at(t, "ego");
+        assert_eq!((ego.road.as_str(), ego.lane), ("0", -1), "{ego:?}");
+        close(ego.x, x, X_COST_TOL, &format!("ego x({t})"));
+        close(ego.y, y, Y_TOL, &format!("ego y({t})"));
+    }
+}
+
+/// x along a sideways move against the closed form of its cost (slope²/2 for 1 − cos θ, and
+/// the engine's steps): 1e-4 m.
+const X_COST_TOL: f64 = 1e-4;

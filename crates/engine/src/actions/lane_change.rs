@@ -23,7 +23,8 @@
 use opendrive::LENGTH_EPSILON;
 use opendrive::{Direction, Road};
 use scenario::{
-    DynamicsDimension, LaneChangeAt, LaneChangeTarget, LateralAction, SourcePos, TransitionDynamics,
+    DynamicsDimension, LaneChangeAt, LaneChangeTarget, LateralAction, PlanRoads, SourcePos,
+    TransitionDynamics,
 };
 
 use super::Part;
@@ -104,8 +105,9 @@ pub(crate) fn start(
             entity_ref,
             t,
             what,
+            roads,
             ..
-        } => beside(world, actor, (entity_ref, *t, what), now, pos)?,
+        } => beside(world, actor, (entity_ref, *t, what, roads), now, pos)?,
         _ => (
             target_lane(world, target, pos)?,
             target_lane_offset.unwrap_or(0.0),
@@ -194,12 +196,14 @@ pub(crate) fn start_at(
 
 /// The lane and offset of oscsim's target beside an entity (`LaneChangeTarget::Beside`): the
 /// lane of `actor`'s road on its side (its direction of travel) holding t = the reference's
-/// t now + `dt`, and the offset from its centre there. The reference off the actor's road, or no driving lane at that t, fails the
-/// action (`what` names the constraint).
+/// t now + `dt`, and the offset from its centre there. The reference off the actor's road (or
+/// off a road of the plan's `roads` whose t compares with the actor's, `RoadChain::
+/// lateral_compares`), or no driving lane at that t, fails the action (`what` names the
+/// constraint).
 fn beside(
     world: &World,
     actor: EntityId,
-    (name, dt, what): (&str, f64, &str),
+    (name, dt, what, roads): (&str, f64, &str, &PlanRoads),
     now: f64,
     pos: &SourcePos,
 ) -> Result<(i32, f64), Error> {
@@ -212,12 +216,8 @@ fn beside(
             "one of them off every road".into(),
         ));
     };
-    if tx.road_id != ta.road_id {
-        return Err(fail(
-            format!("'{name}' on road {} beside '{}'", ta.road_id, e.name),
-            format!("it on road {}", tx.road_id),
-        ));
-    }
+    same_measure(world, roads, (ta, tx), (&e.name, name))
+        .map_err(|(expected, found)| fail(expected, found))?;
     let t = tx.t + dt;
     let road = world
         .network
@@ -233,6 +233,33 @@ fn beside(
             "none".into(),
         )
     })
+}
+
+/// Whether the reference's t (`tx`, entity `name`) compares with the actor's (`ta`): on the
+/// same road, or on two of the plan's `roads` whose reference lines join continuously
+/// (`RoadChain::lateral_compares`); else (expected, found) for the error record.
+pub(super) fn same_measure(
+    world: &World,
+    roads: &PlanRoads,
+    (ta, tx): (&LaneTrack, &LaneTrack),
+    (actor, name): (&str, &str),
+) -> Result<(), (String, String)> {
+    let chain = RoadChain::new(&world.network, roads);
+    chain
+        .lateral_compares(&ta.road_id, &tx.road_id)
+        .map_err(|why| match chain.is_chain() {
+            true => (
+                why,
+                format!(
+                    "'{name}' on road {} and '{actor}' on road {}",
+                    tx.road_id, ta.road_id
+                ),
+            ),
+            false => (
+                format!("'{name}' on road {} beside '{actor}'", ta.road_id),
+                format!("it on road {}", tx.road_id),
+            ),
+        })
 }
 
 /// The lane of `track`'s side of `road` holding `t` at its s, and the offset there.

@@ -15,8 +15,9 @@
 //! its side of the road holding it and the offset from that lane's centre (past the outermost
 //! lane, that lane and a larger offset), so the default controller's blend of the two lanes
 //! gives t(τ); its slope, for the heading, is the blend's rate plus f times x's lateral speed.
-//! x off the actor's road, or no driving lane at the target when the action starts, fails it:
-//! an error record and a failed run.
+//! x off the actor's road (on a plan over several roads: off a road of the plan whose
+//! reference line joins the actor's continuously, so that t is one measure), or no driving
+//! lane at the target when the action starts, fails it: an error record and a failed run.
 //!
 //! With a step shape (the DSL runtime's `lateral(d, side_of/left_of/right_of: x)` at: all
 //! while x moves sideways, §8.9.1.1.1 "at: all": the constraint holds throughout the phase)
@@ -25,9 +26,9 @@
 //! itself). The actor is beside x as it starts (the runtime places or checks it so).
 
 use opendrive::{Road, LENGTH_EPSILON};
-use scenario::{DynamicsShape, SourcePos, TransitionDynamics};
+use scenario::{DynamicsShape, PlanRoads, SourcePos, TransitionDynamics};
 
-use super::lane_change::{check_failed, side_lane, step_speed};
+use super::lane_change::{check_failed, same_measure, side_lane, step_speed};
 use super::Part;
 use crate::error::Error;
 use crate::position::lane_at;
@@ -43,6 +44,8 @@ use crate::world::shapes::shape_value;
 pub(crate) struct FollowState {
     /// The entity followed.
     entity: EntityId,
+    /// The plan's roads: x may be on another of them where t compares (`same_measure`).
+    roads: PlanRoads,
     /// The actor's t minus the entity's at the end (m, + left).
     dt: f64,
     /// The duration T (s).
@@ -69,7 +72,7 @@ impl FollowState {
 pub(crate) fn start(
     world: &mut World,
     actor: EntityId,
-    (name, dt, what): (&str, f64, &str),
+    (name, dt, what, roads): (&str, f64, &str, &PlanRoads),
     dynamics: &TransitionDynamics,
     now: f64,
     pos: &SourcePos,
@@ -86,7 +89,7 @@ pub(crate) fn start(
     }
     let fail = check_failed(what, now);
     let x = entity_ref(world, name, pos)?;
-    let target = target_t(world, actor, x, dt).map_err(|(e, f)| fail(e, f))?;
+    let target = target_t(world, actor, (x, roads), dt).map_err(|(e, f)| fail(e, f))?;
     let e = world.entity(actor);
     let Some(ta) = &e.track else {
         return Err(fail(
@@ -119,6 +122,7 @@ pub(crate) fn start(
     }
     Ok(Part::LateralFollow(FollowState {
         entity: x,
+        roads: roads.clone(),
         dt,
         duration,
         start_time: now,
@@ -136,7 +140,7 @@ pub(crate) fn step(
     now: f64,
     dt: f64,
 ) -> ActionStatus {
-    let Ok(target) = target_t(world, actor, s.entity, s.dt) else {
+    let Ok(target) = target_t(world, actor, (s.entity, &s.roads), s.dt) else {
         // x left the actor's road: the blend holds its last target.
         return ActionStatus::Running;
     };
@@ -188,8 +192,14 @@ pub(crate) fn step(
 }
 
 /// x's t where its lane track puts it at the step's end (its blend, if it has one), plus `dt`;
-/// an error (expected, found) when x is off the actor's road.
-fn target_t(world: &World, actor: EntityId, x: EntityId, dt: f64) -> Result<f64, (String, String)> {
+/// an error (expected, found) when x is off the actor's road (or off a road of the plan's
+/// `roads` whose t compares with the actor's).
+fn target_t(
+    world: &World,
+    actor: EntityId,
+    (x, roads): (EntityId, &PlanRoads),
+    dt: f64,
+) -> Result<f64, (String, String)> {
     let (a, o) = (world.entity(actor), world.entity(x));
     let (Some(ta), Some(tx)) = (&a.track, &o.track) else {
         return Err((
@@ -197,12 +207,7 @@ fn target_t(world: &World, actor: EntityId, x: EntityId, dt: f64) -> Result<f64,
             "one of them off every road".into(),
         ));
     };
-    if ta.road_id != tx.road_id {
-        return Err((
-            format!("'{}' on road {} beside '{}'", o.name, ta.road_id, a.name),
-            format!("it on road {}", tx.road_id),
-        ));
-    }
+    same_measure(world, roads, (ta, tx), (&a.name, &o.name))?;
     let road = world.network.road_at(tx.road);
     let center = |lane: i32| road.lane_span(lane, tx.s).map(|sp| sp.center()).ok();
     let to = center(tx.lane_id).map_or(tx.t, |c| c + tx.offset);

@@ -522,13 +522,14 @@ impl Host<'_> {
                                 t,
                                 what,
                                 follow: true,
+                                roads,
                             },
                         dynamics,
                         ..
                     } => lateral_follow::start(
                         self.world,
                         actor,
-                        (entity_ref, *t, what),
+                        (entity_ref, *t, what, roads),
                         dynamics,
                         time,
                         pos,

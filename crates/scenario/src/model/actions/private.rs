@@ -597,6 +597,9 @@ pub enum LaneChangeTarget {
         /// Follow the reference's t at every step (its actual moves over the transition's
         /// time, oscsim's lane change beside a moving entity), not only at the start.
         follow: bool,
+        /// The plan's roads (empty: one road): t on two of them compares where their
+        /// reference lines join continuously, so the reference may be on another of them.
+        roads: PlanRoads,
     },
 }
 
