@@ -184,7 +184,8 @@ impl Planner<'_> {
     /// phase end (in `after`, as `end_name`, named for `q`) that the actor is at v1 then: how
     /// far the change runs depends on x's acceleration over it, which no check at the start
     /// can read, so a change d cuts short is an error record and a failed run at the end.
-    /// `track: projected` is `acceleration_value`'s error (x projected has no acceleration).
+    /// With `track: projected` the rate is x's acceleration over the phase's first step, held
+    /// (`relative_rate_at_run_time`).
     fn relative_rate_over_distance(
         &mut self,
         (m, q): (&Modifier, &Modifier),

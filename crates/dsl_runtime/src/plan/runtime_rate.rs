@@ -80,8 +80,8 @@ impl Planner<'_> {
 
     /// The engine's change toward `v1` m/s (added to a relative target's speed) within
     /// `within` s at the rate of `q`, an `acceleration(a, faster_than/slower_than/same_as: y)`,
-    /// in a phase that starts on a run-time condition (`relative_rate_at_run_time`); `track:
-    /// projected` is `acceleration_value`'s error (y projected has no acceleration).
+    /// in a phase that starts on a run-time condition (`relative_rate_at_run_time`); with `track:
+    /// projected` y's acceleration over the phase's first step, held.
     pub(super) fn rate_at_run_time(
         &self,
         q: &Modifier,
@@ -92,7 +92,7 @@ impl Planner<'_> {
             Some(action) => Ok(action),
             None => self.acceleration_value(q, (None, within)).and(Err(q.site.err(
                 K::Modifier,
-                "expected track: actual for an acceleration relative to another actor, found projected",
+                "expected an acceleration relative to another actor in acceleration(…), found none",
             ))),
         }
     }

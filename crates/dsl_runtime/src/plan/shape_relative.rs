@@ -1,7 +1,9 @@
 //! A shaped modifier relative to another actor (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.4 with
 //! §8.9's reference objects): `speed(shape: s, faster_than/slower_than/same_as: x)`,
 //! `acceleration(shape: s, faster_than/slower_than/same_as: x)`, `lateral(d, left_of/right_of/
-//! side_of: x, at: end, shape: s)`.
+//! side_of: x, at: end, shape: s)`, `position(d, ahead_of/behind: x, at: end, shape: s)` over a
+//! phase with a duration (x's s at its end ± d, the position the shape's profile covers the
+//! distance to).
 //!
 //! The standard: the shape's target "can be taken from" the modifier (Code 79), and the
 //! modifier's value relative to x is "the speed [acceleration, lateral position] of the actor
@@ -191,6 +193,37 @@ impl Planner<'_> {
                 _ => {}
             }
         }
+    }
+
+    /// The s a shaped `position(d, ahead_of/behind: x, at: end)` asks `m`'s actor to reach at
+    /// the end of the phase `(t0, len)` (a start and a duration the plan knows), `d` the
+    /// modifier's distance (or the shape's target): x's s then ± d, x's planned s with `track:
+    /// actual`, its s at the start plus its speed then times `len` with `projected` (along its
+    /// lane, §8.9.1.1.3); `None` without a reference.
+    pub(super) fn shaped_place(
+        &self,
+        m: &Modifier,
+        (t0, len): (Option<f64>, Option<f64>),
+        d: f64,
+    ) -> Result<Option<f64>, Error> {
+        let (e, sign) = match (m.arg("ahead_of"), m.arg("behind")) {
+            (Some(e), _) => (e, 1.0),
+            (None, Some(e)) => (e, -1.0),
+            (None, None) => return Ok(None),
+        };
+        let x = self.entity_of(e)?;
+        let (Some(t), Some(len)) = (t0, len) else {
+            return Err(e.site.err(
+                K::Unsatisfiable,
+                format!("expected a phase start and duration the plan knows for `{}(…)` with a shape relative to `{x}`, found none (x's place at the end is read from the plan)", m.name),
+            ));
+        };
+        let s_x = if m.projected {
+            self.s_at(&x, t) + self.track(&x).at(t).1 * len
+        } else {
+            self.s_at(&x, t + len)
+        };
+        Ok(Some(s_x + sign * d))
     }
 
     /// The offset from the centre of `target`'s lane that a shaped `lateral(d, left_of/

@@ -21,8 +21,9 @@
 //! certain state variables … throughout", §8.9.1.1.4).
 //!
 //! Relative to another actor (`faster_than`, `slower_than`, `same_as`; `left_of`, `right_of`,
-//! `side_of`) the target is that actor's value ± the modifier's (`shape_relative`); a shaped
-//! `position(…)` relative to another actor is an error (not run yet).
+//! `side_of`; `ahead_of`, `behind` over a phase with a duration) the target is that actor's
+//! value ± the modifier's (`shape_relative`); a shaped `position(…)` relative to another actor
+//! without a phase duration is an error (not run yet).
 
 use super::lateral;
 use super::planner::Planner;
@@ -82,16 +83,16 @@ impl Planner<'_> {
                 ),
             ));
         }
-        // A position relative to another actor would move its target with the shape's own
-        // timing (x's place at an end the shape sets).
+        // A position relative to another actor without a phase duration: x's place at an end
+        // the shape's own timing sets.
         if let Some(r) = ["ahead_of", "behind"]
             .iter()
             .find_map(|r| m.arg(r))
-            .filter(|_| shape.kind == ShapeKind::Position)
+            .filter(|_| shape.kind == ShapeKind::Position && slot.len.is_none())
         {
             return Err(r.site.err(
                 K::Unsupported,
-                format!("expected `{}(…)` with a shape to give its own position (the shape's target is absolute), found a reference object", m.name),
+                format!("expected a phase duration for `{}(…)` with a shape relative to another actor (x's place at the end the plan reads), found none", m.name),
             ));
         }
         let mut args = shape.args.clone();
@@ -132,7 +133,10 @@ impl Planner<'_> {
                     _ => "none".to_string(),
                 };
                 let peak = arg(&args, "rate_peak").map(Arg::number).transpose()?;
-                let value = target.number()?;
+                let value = match self.shaped_place(m, (slot.t0, slot.len), target.number()?)? {
+                    Some(s) => s,
+                    None => target.number()?,
+                };
                 return self.plan_position_shape(m, slot, (value, &profile, peak), name);
             }
             (ShapeKind::Speed | ShapeKind::Acceleration, _) => {

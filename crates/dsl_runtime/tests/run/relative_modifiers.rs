@@ -257,3 +257,39 @@ fn a_lateral_position_beside_another_on_another_of_the_plans_roads_after_an_unti
 /// x along a sideways move against the closed form of its cost (slope²/2 for 1 − cos θ, and
 /// the engine's steps): 1e-4 m.
 const X_COST_TOL: f64 = 1e-4;
+
+/// position_shape_relative.osc's comment, by hand: 20 m behind lead's place at the phase end
+/// (actual 158 m, projected 150 m), the smooth profile over the phase's 4 s.
+#[test]
+fn a_shaped_position_relative_to_another_covers_the_distance_to_its_place_at_the_end() {
+    let r = run("relative/position_shape_relative", 0, None);
+    for (who, v2, v3, s3, s5) in [
+        ("ego", 14.5, 19.0, 109.0, 138.0),
+        ("tail", 12.5, 15.0, 105.0, 130.0),
+    ] {
+        close(r.at(2.0, who).speed, v2, SINE_V_TOL, &format!("{who} v(2)"));
+        close(r.at(3.0, who).speed, v3, SINE_V_TOL, &format!("{who} v(3)"));
+        // The engine's steps are ahead of the first half's integral by (v_m − v0)·dt/2 at its
+        // end, and the second half gives it back.
+        let lead_of_steps = (v3 - 10.0) * crate::support::DT / 2.0;
+        close(
+            r.at(3.0, who).s,
+            s3 + lead_of_steps,
+            STEP_S_TOL,
+            &format!("{who} s(3)"),
+        );
+        close(r.at(5.0, who).s, s5, STEP_S_TOL, &format!("{who} s(5)"));
+    }
+    close(
+        r.at(5.0, "lead").s,
+        158.0 + 4.0 * crate::support::DT / 2.0,
+        STEP_S_TOL,
+        "lead s(5)",
+    );
+}
+
+/// The engine's sinusoidal speed halves, stepped: speeds exact on the grid up to round-off.
+const SINE_V_TOL: f64 = 1e-6;
+/// Positions integrated per step, their lead over the profile's integral written out: float
+/// round-off.
+const STEP_S_TOL: f64 = 1e-6;
