@@ -17,12 +17,20 @@
 //! start is taken and must still be x's where the change ends (an error naming x's value
 //! there otherwise, never a target that misses the constraint silently).
 //!
+//! After a run-time start a shaped `lateral(…)` beside x with `track: projected` is the
+//! engine's lane change with the shape's dynamics to the lane and offset beside x where x is as
+//! it starts (`LaneChangeTarget::Beside`); with `track: actual` an error (the engine's move
+//! beside a moving x is sinusoidal over the phase). An acceleration shape relative to x there
+//! is an error (the engine's acceleration change has a fixed target).
 //! After a run-time start a speed shape is the engine's SpeedAction with the shape's dynamics
 //! to x's speed ± the value as the engine reads it: actual, a RelativeTargetSpeed read at each
 //! step (not continuous: the change ends where it meets it); projected, oscsim's
 //! RelativeAtStart target (x's speed as the action starts, fixed).
 
-use scenario::{LongitudinalAction, PrivateAction, SpeedTarget, SpeedTargetValueType};
+use scenario::{
+    LaneChangeTarget, LateralAction, LongitudinalAction, PrivateAction, SpeedTarget,
+    SpeedTargetValueType,
+};
 
 use super::lateral;
 use super::planner::Planner;
@@ -45,6 +53,15 @@ const HOLDS_TOL: f64 = 1e-6;
 /// How far about a moment x's acceleration pieces are read (s): the piece that starts there at
 /// the phase start, the one that ends there after it.
 const READ_SPAN: f64 = 1e-6;
+
+/// Where a shaped `lateral(…)` beside x puts the actor.
+pub(super) enum ShapedBeside {
+    /// The offset from the centre of the actor's own lane at the phase end (a known start).
+    Offset(f64),
+    /// After a run-time start with `track: projected`: x and the actor's t minus x's, the
+    /// engine's to find as the change starts.
+    AtRunTime(String, f64),
+}
 
 /// A shaped speed or acceleration modifier's reference x and how the target follows from it.
 pub(super) struct Reference {
@@ -236,15 +253,20 @@ impl Planner<'_> {
         m: &Modifier,
         target: &str,
         (t0, len): (Option<f64>, Option<f64>),
-    ) -> Result<Option<f64>, Error> {
+    ) -> Result<Option<ShapedBeside>, Error> {
         let Some((e, _)) = lateral::reference(m)? else {
             return Ok(None);
         };
         let x = self.entity_of(e)?;
         let Some(t) = t0 else {
+            if m.projected {
+                return Ok(self
+                    .beside_gap(m, target)?
+                    .map(|(x, dt)| ShapedBeside::AtRunTime(x, dt)));
+            }
             return Err(e.site.err(
                 K::Unsupported,
-                format!("expected a phase start the plan knows for lateral(…, shape: …) beside `{x}`, found one after a run-time condition (the engine's move beside `{x}` is sinusoidal over the phase, not the shape's rate)"),
+                format!("expected a phase start the plan knows for lateral(…, shape: …) beside `{x}` with track: actual, found one after a run-time condition (the engine's move beside a moving `{x}` is sinusoidal over the phase, not the shape's rate; track: projected runs)"),
             ));
         };
         let len = match len {
@@ -272,6 +294,35 @@ impl Planner<'_> {
                 format!("expected `{target}`'s reference point in its lane {lane} ({w:.2} m wide) for lateral(…, shape: …) beside `{x}` (the shape is follow_lane's offset in the lane), found it {o:.2} m from the lane's centre (write change_lane(…, shape: …) to change lanes)"),
             ));
         }
-        Ok(Some(o))
+        Ok(Some(ShapedBeside::Offset(o)))
+    }
+
+    /// After a run-time start, the planned lane change of a shaped `lateral(…)` beside x with
+    /// `track: projected` (`out`, follow_lane's change within the lane) aims at the lane and
+    /// offset that put the actor `dt` to x's left where x is as the change starts
+    /// (`LaneChangeTarget::Beside`, found by the engine then), with the shape's dynamics.
+    pub(super) fn beside_at_run_time(
+        &self,
+        m: &Modifier,
+        (x, dt): (String, f64),
+        out: &mut [Planned],
+    ) {
+        for p in out {
+            if let PrivateAction::Lateral(LateralAction::LaneChange {
+                target_lane_offset,
+                target,
+                ..
+            }) = &mut p.action
+            {
+                *target_lane_offset = None;
+                *target = LaneChangeTarget::Beside {
+                    entity_ref: x.clone(),
+                    t: dt,
+                    what: format!("{}(…) at {}", m.name, m.site.at()),
+                    follow: false,
+                    roads: self.chain(),
+                };
+            }
+        }
     }
 }

@@ -27,6 +27,7 @@
 
 use super::lateral;
 use super::planner::Planner;
+use super::shape_relative::ShapedBeside;
 use super::speed_actions::Slot;
 use super::types::When;
 use crate::error::{Error, ErrorKind as K};
@@ -125,6 +126,7 @@ impl Planner<'_> {
             (None, None) => num(0.0),
         };
         let mut reference = None;
+        let mut beside_at_run_time = None;
         let kind = match (shape.kind, m.kind) {
             // Not an action's dynamics: the speed profile that covers the distance.
             (ShapeKind::Position, _) => {
@@ -203,7 +205,13 @@ impl Planner<'_> {
                 asked.args.retain(|(n, _)| n != "distance");
                 asked.args.push(("distance".to_string(), target));
                 let o = match self.shaped_beside(&asked, slot.target, (slot.t0, slot.len))? {
-                    Some(o) => o,
+                    Some(ShapedBeside::Offset(o)) => o,
+                    // The engine finds the lane and offset beside x (below): the plan's
+                    // offset 0 stands in for the checks of the arguments.
+                    Some(ShapedBeside::AtRunTime(x, dt)) => {
+                        beside_at_run_time = Some((asked.clone(), x, dt));
+                        0.0
+                    }
                     None => lateral::lane_offset(&asked, w, self.width(slot.target))?,
                 };
                 args.push(("offset".to_string(), num(o)));
@@ -248,7 +256,18 @@ impl Planner<'_> {
         }
         match kind {
             Action::ChangeLane | Action::FollowLane => {
-                self.plan_lateral_action(&at_modifier, &inv, slot, name)
+                let Some((asked, x, dt)) = beside_at_run_time else {
+                    return self.plan_lateral_action(&at_modifier, &inv, slot, name);
+                };
+                let from = slot.out.len();
+                let again = Slot {
+                    out: &mut *slot.out,
+                    persist: &mut *slot.persist,
+                    ..slot
+                };
+                let ends = self.plan_lateral_action(&at_modifier, &inv, again, name)?;
+                self.beside_at_run_time(&asked, (x, dt), &mut slot.out[from..]);
+                Ok(ends)
             }
             _ => self.plan_speed_action(&at_modifier, &inv, slot, name),
         }

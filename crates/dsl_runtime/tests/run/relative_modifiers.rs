@@ -293,3 +293,19 @@ const SINE_V_TOL: f64 = 1e-6;
 /// Positions integrated per step, their lead over the profile's integral written out: float
 /// round-off.
 const STEP_S_TOL: f64 = 1e-6;
+
+/// runtime_lateral_shape_projected.osc's comment, by hand: 0.5 m at 0.5 m/s from 3.35 s to
+/// npc's t at the start + 3 m, held while npc moves.
+#[test]
+fn a_shaped_lateral_position_beside_a_projected_reference_after_an_until_reaches_it_at_the_shapes_rate(
+) {
+    let r = run("relative/runtime_lateral_shape_projected", 0, None);
+    crate::runtime::phases(&r, &[("do.shift", 3.35, 5.35)]);
+    for k in 0..=40 {
+        let t = 3.35 + 0.05 * f64::from(k);
+        let want = -5.25 - 0.5 * (t - 3.35).min(1.0);
+        close(r.at(t, "ego").y, want, Y_TOL, &format!("ego y({t})"));
+        assert_eq!(r.at(t, "ego").lane, -2, "ego's lane at {t}");
+    }
+    close(r.at(5.35, "npc").y, -7.75, Y_TOL, "npc y(5.35)");
+}
