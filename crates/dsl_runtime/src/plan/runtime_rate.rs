@@ -90,7 +90,9 @@ impl Planner<'_> {
     ) -> Result<PrivateAction, Error> {
         match self.relative_rate_at_run_time(Some(q), None, (v1, within))? {
             Some(action) => Ok(action),
-            None => self.acceleration_value(q, (None, within)).and(Err(q.site.err(
+            None => self
+                .acceleration_value(q, (None, within))
+                .and(Err(q.site.err(
                 K::Modifier,
                 "expected an acceleration relative to another actor in acceleration(…), found none",
             ))),
