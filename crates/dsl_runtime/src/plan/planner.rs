@@ -80,7 +80,8 @@ pub(crate) struct Planner<'a> {
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,
     /// `lateral(…, x)` at: all that the engine follows while x moves sideways
     /// (`lateral_follow`), checked once every phase is planned.
-    pub beside_follows: Vec<super::lateral_follow::BesideFollow>,
+    /// (actor, x, phase start, phase end if known, the actor's t minus x's, the modifier).
+    pub beside_follows: Vec<(String, String, f64, Option<f64>, f64, Site)>,
     /// Yaws measured in the world or from another object (`heading`), checked once every
     /// phase is planned.
     pub heading_asks: Vec<super::types::HeadingAsk>,
