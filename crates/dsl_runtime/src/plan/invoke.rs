@@ -86,8 +86,7 @@ impl Planner<'_> {
             ));
         }
         if self.random.contains_key(&inv.actor) {
-            self.plan_random_traffic(p, inv, t0)?;
-            return Ok(None);
+            return self.plan_random_traffic(p, inv, t0, out);
         }
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),

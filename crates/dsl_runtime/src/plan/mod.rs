@@ -86,6 +86,7 @@
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
 //! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
 //! | `route_moves` | the lane (offset) changes between the points of a route in other lanes or at other offsets |
+//! | `random_traffic_actions` | a `random_traffic_vehicle_group`'s later actions: each member's model given a desired speed |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 //! | `overlap` | a parallel's members aligned to its `overlap:` argument (§7.3.9) |
@@ -130,6 +131,7 @@ mod planner;
 mod position_actions;
 mod position_shape;
 mod random_traffic;
+mod random_traffic_actions;
 mod relative_over_distance;
 mod relative_path;
 mod route;

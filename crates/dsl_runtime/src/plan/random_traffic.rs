@@ -36,18 +36,32 @@
 //!   from the first step to the end of the run (the drive's phase ending does not stop it:
 //!   the group defines creation, the model the behaviour).
 //!
-//! The group's drive must be its members' only phase and start with the run. Its modifiers:
-//! `speed(v)`, and `along(r)` on a route the runtime chooses (a `route` field nothing binds:
-//! the plan's roads, which the members drive; the resolver refuses offsets on such a route);
-//! the others constrain a planned motion these members do not have (an error at the modifier).
+//! - **Lanes**: `lane(n [, from: left])` (at: start or all) deals the members to the lane so
+//!   numbered in each direction of travel only (`PlanRoad::numbered` on the plan road and on
+//!   its view against s); at: all, `keep_lane()` and `follow_lane()` (`drive() with:
+//!   keep_lane()`, §8.8.3.2) keep them there: their model is then the engine's `idm`, the
+//!   IDM without MOBIL's lane changes.
+//! - **Several groups**: placed in the order of their names, each after every other actor and
+//!   the members of the groups before it, which it keeps the gap from.
+//!
+//! The phase that creates the members is the group's first, `drive()`, `move()`,
+//! `follow_lane()` or `remain_stationary()` (placed standing, desired speed 0), and starts
+//! with the run. Its modifiers: `speed(v)`, `lane(n [, from: left])`, `keep_lane()`,
+//! `avoid_collisions(true)` (what the model does; `false` is an error), and `along(r)` on a
+//! route the runtime chooses (a `route` field nothing binds: the plan's roads, which the
+//! members drive; the resolver refuses offsets on such a route); the others constrain a
+//! planned motion these members do not have (an error at the modifier). The group's later
+//! actions give each member's model a desired speed (`random_traffic_actions`).
 
 use std::collections::{HashMap, HashSet};
 
 use super::car_following::model_controller;
-use super::place::{Start, DEFAULT_SPEED};
+use super::place::Start;
 use super::planner::Planner;
+use super::random_traffic_actions::Creation;
+use super::types::{Planned, When};
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{Action, Along, Arg, Invoke, Kind, ModKind, Modifier, Phase, Route};
+use crate::resolve::{Action, Invoke, Kind, Phase};
 use crate::road::PlanRoad;
 
 /// The start of a member before [`Planner::place_random_traffic`] places it.
@@ -90,57 +104,6 @@ impl Stretch {
 }
 
 impl Planner<'_> {
-    /// The desired speed `speed(v)` among `mods` gives (else the default), and whether an
-    /// `along(r)` on a route the runtime chooses (the plan's roads in +s, where the members
-    /// then are) keeps the members to that route's direction; any other modifier is an error.
-    fn desired_speed(&self, g: &str, mods: &[Modifier]) -> Result<(f64, bool), Error> {
-        let mut v0 = DEFAULT_SPEED;
-        let mut along = false;
-        for m in mods {
-            let relative = ["faster_than", "slower_than", "same_as"]
-                .iter()
-                .any(|k| m.arg(k).is_some());
-            match (m.kind, &m.along) {
-                (ModKind::Speed, _) if !relative => {
-                    if let Some(v) = m.arg("speed").map(Arg::number).transpose()? {
-                        if !(v > 0.0 && v <= super::MAX_SPEED) {
-                            return Err(m.site.err(
-                                K::Unsatisfiable,
-                                format!("expected a desired speed above 0 and up to {} m/s for random traffic `{g}`, found {v} m/s", super::MAX_SPEED),
-                            ));
-                        }
-                        v0 = v;
-                    }
-                }
-                // A route field the scenario leaves to the runtime and nothing binds: the
-                // plan's roads, all of whose driving lanes the members may use.
-                (
-                    ModKind::Along,
-                    Some(Along {
-                        route:
-                            Route::Free {
-                                field,
-                                one_lane: false,
-                            },
-                        ..
-                    }),
-                ) if !self.route_lanes.contains_key(field)
-                    && !self.route_roads.contains_key(field)
-                    && !self.against_routes.contains_key(field) =>
-                {
-                    along = true;
-                }
-                _ => {
-                    return Err(m.site.err(
-                        K::Unsupported,
-                        format!("expected speed(v) or along(r) on a route the runtime chooses on the drive of random traffic `{g}` (its members' desired speed and the roads they drive; the engine's driver model does the rest), found `{}(…)`", m.name),
-                    ))
-                }
-            }
-        }
-        Ok((v0, along))
-    }
-
     /// Whether `name` is a member of a `random_traffic_vehicle_group`.
     pub(super) fn random_member(&self, name: &str) -> bool {
         self.random.keys().any(|g| {
@@ -195,6 +158,8 @@ impl Planner<'_> {
         against: &HashSet<&str>,
     ) -> Result<HashSet<String>, Error> {
         let mut oncoming = HashSet::new();
+        // Members of the groups placed before this one: others for the next group.
+        let mut placed: HashSet<String> = HashSet::new();
         let mut groups: Vec<(String, Site)> = self
             .random
             .iter()
@@ -206,11 +171,16 @@ impl Planner<'_> {
             let Some(first) = members.first().and_then(|m| self.first_leaf.get(m)) else {
                 continue;
             };
-            let mods = match leaves.iter().find(|l| &l.path == first).map(|l| &l.kind) {
-                Some(Kind::Invoke(inv)) => inv.modifiers.as_slice(),
-                _ => &[],
+            let inv = match leaves.iter().find(|l| &l.path == first).map(|l| &l.kind) {
+                Some(Kind::Invoke(inv)) => Some(inv),
+                _ => None,
             };
-            let (v0, along) = self.desired_speed(&g, mods)?;
+            let Creation {
+                v0,
+                along,
+                lane,
+                keep_lane,
+            } = self.creation(&g, inv)?;
             let speeds: Vec<f64> = members
                 .iter()
                 .map(|_| {
@@ -218,17 +188,18 @@ impl Planner<'_> {
                         + 2.0 * START_SPREAD * self.draws.borrow_mut().uniform())
                 })
                 .collect();
-            // Every other actor already placed, with its direction (its start in u against s).
+            // Every other actor already placed (members of the groups before this one
+            // included), with its direction (its start in u against s).
             let others: Vec<(bool, i32, f64, f64, f64)> = self
                 .entities
                 .iter()
-                .filter(|e| !self.random_member(&e.name))
+                .filter(|e| !self.random_member(&e.name) || placed.contains(&e.name))
                 .filter_map(|e| {
                     let st = starts.get(&e.name)?;
                     let b = e.data.bounding_box;
                     let front = b.center[0] + b.length / 2.0;
                     let rear = b.length / 2.0 - b.center[0];
-                    let back = against.contains(e.name.as_str());
+                    let back = against.contains(e.name.as_str()) || oncoming.contains(&e.name);
                     Some((back, st.lane, st.s - rear, st.s + front, st.v))
                 })
                 .collect();
@@ -244,7 +215,7 @@ impl Planner<'_> {
                 .chain(others.iter().map(|o| &o.4))
                 .fold(0.0_f64, |a, &b| a.max(b));
             let gap = IDM_S0 + v_max * IDM_T;
-            let mut stretches = free_stretches(&self.road, false, &side(false), gap);
+            let mut stretches = free_stretches(&self.road, false, &side(false), gap, lane);
             // Oncoming traffic too (OpenDRIVE 1.8 §11.2: the left side's lanes driven in −s),
             // unless `along(r)` keeps the members to the route's direction.
             if !along {
@@ -254,7 +225,7 @@ impl Planner<'_> {
                     }
                 }
                 if let Some(view) = &self.against_road {
-                    stretches.extend(free_stretches(view, true, &side(true), gap));
+                    stretches.extend(free_stretches(view, true, &side(true), gap, lane));
                 }
             }
             let lens: Vec<f64> = members
@@ -307,6 +278,7 @@ impl Planner<'_> {
                     if st.against {
                         oncoming.insert(members[i].clone());
                     }
+                    placed.insert(members[i].clone());
                     starts.insert(
                         members[i].clone(),
                         Start {
@@ -320,8 +292,9 @@ impl Planner<'_> {
             }
             for m in &members {
                 let e = self.index[m];
-                self.entities[e].driver =
-                    Some(model_controller(CONTROLLER, "mobil", v0, &[], &site));
+                // Lane changes by MOBIL, unless the members keep their lanes: the IDM alone.
+                let model = if keep_lane { "idm" } else { "mobil" };
+                self.entities[e].driver = Some(model_controller(CONTROLLER, model, v0, &[], &site));
                 // From the start the engine's model moves the member.
                 self.engine_moved.insert(m.clone(), Some(0.0));
             }
@@ -329,43 +302,53 @@ impl Planner<'_> {
         Ok(oncoming)
     }
 
-    /// The drive of random traffic `inv.actor` (phase `p`, starting at `t0`): nothing to plan
-    /// beyond its members' starts and drivers (`place_random_traffic`); what it cannot run is
-    /// an error.
+    /// Action `inv` of random traffic `inv.actor` (phase `p`, starting at `t0`): the phase
+    /// that creates its members (planned by `place_random_traffic`: their starts and drivers)
+    /// or a later action given to their models (`random_traffic_actions`) into `out`; what it
+    /// cannot run is an error. Returns the phase's end when the action sets it.
     pub(super) fn plan_random_traffic(
         &self,
         p: &Phase,
         inv: &Invoke,
         t0: Option<f64>,
-    ) -> Result<(), Error> {
+        out: &mut Vec<Planned>,
+    ) -> Result<Option<When>, Error> {
         let g = &inv.actor;
-        if inv.kind != Action::Move || inv.action != "drive" {
-            return Err(p.site.err(
-                K::Unsupported,
-                format!("expected drive() of random traffic `{g}` (the engine's driver model drives its members), found {}(…)", inv.action),
-            ));
-        }
         let first = self.groups[g]
             .iter()
             .all(|m| self.first_leaf.get(m) == Some(&p.path));
-        if !first || t0 != Some(0.0) {
+        if !first {
+            return self.plan_random_traffic_action(p, inv, t0, out);
+        }
+        if !matches!(
+            inv.kind,
+            Action::Move | Action::FollowLane | Action::RemainStationary
+        ) {
             return Err(p.site.err(
                 K::Unsupported,
-                format!("expected the drive of random traffic `{g}` to be its only phase, starting with the run (its members are created then), found another phase of it"),
+                format!("expected drive(), move(), follow_lane() or remain_stationary() creating random traffic `{g}` (the engine's driver model drives its members from then on), found {}(…)", inv.action),
             ));
         }
-        Ok(())
+        if t0 != Some(0.0) {
+            return Err(p.site.err(
+                K::Unsupported,
+                format!("expected the phase creating random traffic `{g}` to start with the run, found it later"),
+            ));
+        }
+        Ok(None)
     }
 }
 
 /// The stretches of the driving lanes of `road` (the plan's roads in +s, or the view of them
 /// driven against s: `against`, s then the distance u along the direction of travel) free of
-/// `others` (lane, rear, front, speed in that view) by `gap` either side.
+/// `others` (lane, rear, front, speed in that view) by `gap` either side; with `lane` (n,
+/// from the left) only the lane so numbered in that direction where it is.
 fn free_stretches(
     road: &PlanRoad<'_>,
     against: bool,
     others: &[(i32, f64, f64, f64)],
     gap: f64,
+    lane: Option<(i64, bool)>,
 ) -> Vec<Stretch> {
     let length = road.length();
     let steps = (length / LANE_STEP).floor() as usize;
@@ -373,10 +356,10 @@ fn free_stretches(
     let mut open: Vec<(i32, f64, f64)> = Vec::new();
     for k in 0..=steps + 1 {
         let s = (k as f64 * LANE_STEP).min(length);
-        let lanes = if k > steps {
-            Vec::new()
-        } else {
-            road.driving_lanes(s)
+        let lanes = match lane {
+            _ if k > steps => Vec::new(),
+            Some((n, from_left)) => road.numbered(n, from_left, s, false).into_iter().collect(),
+            None => road.driving_lanes(s),
         };
         let (keep, closed): (Vec<_>, Vec<_>) =
             open.into_iter().partition(|(l, _, _)| lanes.contains(l));

@@ -403,7 +403,7 @@ pub(super) fn check_speed_modifiers(inv: &Invoke, first: bool) -> Result<(), Err
 }
 
 /// A SpeedAction with a step shape.
-fn step_speed(target: SpeedTarget) -> PrivateAction {
+pub(super) fn step_speed(target: SpeedTarget) -> PrivateAction {
     PrivateAction::Longitudinal(LongitudinalAction::Speed {
         dynamics: timed(DynamicsShape::Step, 0.0),
         target,
@@ -411,7 +411,7 @@ fn step_speed(target: SpeedTarget) -> PrivateAction {
 }
 
 /// The `target` speed of `inv`: mandatory, within 0 m/s and the vehicle's maximum.
-fn speed_target(inv: &Invoke, p: &Phase) -> Result<f64, Error> {
+pub(super) fn speed_target(inv: &Invoke, p: &Phase) -> Result<f64, Error> {
     let a = arg(&inv.args, "target").ok_or_else(|| missing(p, inv, "target"))?;
     let v = a.number()?;
     if !(0.0..=MAX_SPEED).contains(&v) {
