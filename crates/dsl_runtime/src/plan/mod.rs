@@ -86,6 +86,7 @@
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
 //! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
 //! | `route_moves` | the lane (offset) changes between the points of a route in other lanes or at other offsets |
+//! | `random_traffic_relations` | another actor placed at its start relative to a member of random traffic as drawn |
 //! | `random_traffic_actions` | a `random_traffic_vehicle_group`'s later actions: each member's model given a desired speed |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
@@ -132,6 +133,7 @@ mod position_actions;
 mod position_shape;
 mod random_traffic;
 mod random_traffic_actions;
+mod random_traffic_relations;
 mod relative_over_distance;
 mod relative_path;
 mod route;
@@ -469,15 +471,26 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         });
     }
     against::check_references(&leaves, &to_place, &p.index)?;
-    p.check_random_traffic_unreferenced(&leaves)?;
-    let entity = |path: &str| p.index.contains_key(path).then(|| path.to_string());
+    let to_members = p.random_traffic_relations(&leaves)?;
+    let held = p.hold_dependents(&mut to_place, &to_members);
+    let index = p.index.clone();
+    let entity = |path: &str| index.contains_key(path).then(|| path.to_string());
     let mut starts = place(road, p.against_road.as_ref(), &to_place, &entity)?;
-    let placed_against: HashSet<&str> = to_place
+    let placed_against: HashSet<String> = to_place
         .iter()
         .filter(|q| q.against)
-        .map(|q| q.name.as_str())
+        .map(|q| q.name.clone())
         .collect();
-    let oncoming = p.place_random_traffic(&leaves, &mut starts, &placed_against)?;
+    let oncoming = p.place_random_traffic(&leaves, &mut starts, &placed_against, &held)?;
+    p.place_relative_to_members(
+        road,
+        &mut to_place,
+        &mut starts,
+        &oncoming,
+        &to_members,
+        &held,
+        &entity,
+    )?;
     for (e, q) in p.entities.iter_mut().zip(&to_place) {
         let mut s = starts[&e.name];
         e.against = q.against || oncoming.contains(&e.name);

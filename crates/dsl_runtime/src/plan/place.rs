@@ -143,7 +143,7 @@ pub(crate) fn place(
         if let Some(f) = p.fixed {
             lane.insert(p.name.clone(), f.lane);
             s.insert(p.name.clone(), (f.s, false));
-            v.insert(p.name.clone(), 0.0);
+            v.insert(p.name.clone(), f.v);
         }
     }
     for _round in 0..=all.len() {

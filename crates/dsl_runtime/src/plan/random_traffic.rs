@@ -113,49 +113,16 @@ impl Planner<'_> {
         })
     }
 
-    /// Checks that no invocation relates an actor to a member of random traffic (or to the
-    /// group): the plan places the members from the seed only after every other actor, and
-    /// the engine's driver model moves them, so the plan knows neither where a member is nor
-    /// how it moves. A relation to one (`position(d, behind: g.vehicles[0])`, `speed(same_as:
-    /// …)`, a gap to it) would read a placeholder: an error at the argument. Conditions that
-    /// measure a member at run time (`until ego.space_gap(g.vehicles[0]) < 10m`) are the
-    /// engine's and run.
-    pub(super) fn check_random_traffic_unreferenced(&self, leaves: &[&Phase]) -> Result<(), Error> {
-        if self.random.is_empty() {
-            return Ok(());
-        }
-        for leaf in leaves {
-            let Kind::Invoke(inv) = &leaf.kind else {
-                continue;
-            };
-            for (m, key, a) in inv.all_args() {
-                let Some(x) = a.path.as_deref() else {
-                    continue;
-                };
-                if x == inv.actor || !(self.random_member(x) || self.random.contains_key(x)) {
-                    continue;
-                }
-                let what = m.map_or_else(
-                    || format!("{}(…)", inv.action),
-                    |m| format!("{}(…)", m.name),
-                );
-                return Err(a.site.err(
-                    K::Unsupported,
-                    format!("expected `{key}:` of {what} to name an actor the plan places and moves, found `{x}` of random traffic (placed from the seed after every other actor and driven by the engine's driver model: the plan knows neither its place nor its motion; measure it at run time in a condition instead)"),
-                ));
-            }
-        }
-        Ok(())
-    }
-
     /// Places the members of every random traffic group among `starts` (the other actors
-    /// placed; those in `against` driving against s, their starts in u), from the drive that
-    /// is their first phase among `leaves`. Returns the members placed against s.
+    /// placed but those `held` for `random_traffic_relations`; those in `against` driving
+    /// against s, their starts in u), from the phase that creates them among `leaves`.
+    /// Returns the members placed against s.
     pub(super) fn place_random_traffic(
         &mut self,
         leaves: &[&Phase],
         starts: &mut HashMap<String, Start>,
-        against: &HashSet<&str>,
+        against: &HashSet<String>,
+        held: &HashSet<String>,
     ) -> Result<HashSet<String>, Error> {
         let mut oncoming = HashSet::new();
         // Members of the groups placed before this one: others for the next group.
@@ -194,12 +161,14 @@ impl Planner<'_> {
                 .entities
                 .iter()
                 .filter(|e| !self.random_member(&e.name) || placed.contains(&e.name))
+                // Placed from a member once the members are drawn (`random_traffic_relations`).
+                .filter(|e| !held.contains(&e.name))
                 .filter_map(|e| {
                     let st = starts.get(&e.name)?;
                     let b = e.data.bounding_box;
                     let front = b.center[0] + b.length / 2.0;
                     let rear = b.length / 2.0 - b.center[0];
-                    let back = against.contains(e.name.as_str()) || oncoming.contains(&e.name);
+                    let back = against.contains(&e.name) || oncoming.contains(&e.name);
                     Some((back, st.lane, st.s - rear, st.s + front, st.v))
                 })
                 .collect();

@@ -276,8 +276,13 @@ fn random_traffic_never_overlaps_while_it_drives_and_changes_lanes() {
 fn an_actor_placed_relative_to_a_member_of_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_reference",
-        "expected `behind:` of position(…) to name an actor the plan places and moves, found `g.vehicles[0]` of random traffic",
-        "15:35",
+        "expected `same_as:` of speed(…) to name an actor the plan moves, or a member of random traffic at: start of the first phase of an actor (the member's place and speed as drawn from the seed), found `g.vehicles[0]` of random traffic here",
+        "15:28",
+    );
+    crate::along::refused(
+        "err_random_traffic_overlap",
+        "expected `ego` placed from `g.vehicles[0]` of random traffic clear of its members, found it over `g.vehicles[0]` in lane ",
+        "20:27",
     );
 }
 
@@ -553,6 +558,30 @@ fn random_traffic_created_standing_stands() {
                 "{m}: {p:?} {q:?}"
             );
             assert!((p.s - q.s).abs() < 1e-12, "{m} moved: {p:?} {q:?}");
+        }
+    }
+}
+
+#[test]
+fn an_actor_placed_at_its_start_from_a_member_of_random_traffic_reads_the_drawn_member() {
+    // random_traffic_relative.osc: ego from g.vehicles[0] as drawn, seeds 0-3.
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic_relative", seed, None);
+        let m = r.at(0.0, "g.vehicles[0]").clone();
+        let ego0 = r.at(0.0, "ego");
+        assert_eq!(ego0.lane, m.lane, "seed {seed}");
+        assert!(
+            (ego0.speed - m.speed).abs() < S_TOL,
+            "seed {seed}: {ego0:?} {m:?}"
+        );
+        assert!((22.5..=27.5).contains(&m.speed), "seed {seed}: {m:?}");
+        for (t, _) in &r.frames {
+            let ego = r.at(*t, "ego");
+            let want = m.s - 20.0 + m.speed * t;
+            assert!(
+                (ego.s - want).abs() < S_TOL && ego.lane == m.lane,
+                "seed {seed}: ego at {t}: {ego:?}, s {want}"
+            );
         }
     }
 }
