@@ -14,7 +14,7 @@
 //! | initial lane, s and speed | Init: TeleportAction to a LanePosition, SpeedAction (step); an actor driving against s at s = L − u of its distance u along its direction of travel, in its lane of the left side (the engine heads it in the lane's driving direction) |
 //! | a plan over the roads of a route through points (`map.create_route`) | Init: each vehicle with a road of the plan ahead of it an AssignRouteAction over them (a Waypoint where it starts, one mid-way along each later road, in its lane) |
 //! | a vehicle | ScenarioObject with a Vehicle from the solver's values |
-//! | a member of random traffic (`plan::random_traffic`) | its ScenarioObject's ObjectController `random_traffic` (the engine's `mobil` model); Init: an ActivateControllerAction on both domains after the SpeedAction |
+//! | a member of random traffic (`plan::random_traffic`) | its ScenarioObject's ObjectController `random_traffic` (the engine's `mobil` model); Init: an ActivateControllerAction on both domains after the SpeedAction; created after the start (`plan::random_traffic_late`): no Init, its creating phase's TeleportAction, SpeedAction and ActivateControllerAction |
 //! | a person, an animal | ScenarioObject with a Pedestrian of category `pedestrian`, `animal` |
 //! | a stationary object | ScenarioObject with a MiscObject (category `barrier`); Init: TeleportAction to the WorldPosition of its `location(pose)`, no speed |
 //!
@@ -73,6 +73,10 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             kind: ActionKind::Private(kind),
             pos: origin.clone(),
         };
+        // Created later by its phase (a TeleportAction, its speed, its driver activated).
+        if e.created.is_some() {
+            continue;
+        }
         if let ActorKind::Stationary(at) = e.data.kind {
             let ([x, y, z], [h, p, r]) = (at.position, at.orientation);
             privates.push(Private {

@@ -87,6 +87,7 @@
 //! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
 //! | `route_moves` | the lane (offset) changes between the points of a route in other lanes or at other offsets |
 //! | `random_traffic_relations` | another actor placed at its start relative to a member of random traffic as drawn |
+//! | `random_traffic_late` | random traffic created after the run's start, among the other actors' places then |
 //! | `random_traffic_actions` | a `random_traffic_vehicle_group`'s later actions: each member's model given a desired speed |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
@@ -133,6 +134,7 @@ mod position_actions;
 mod position_shape;
 mod random_traffic;
 mod random_traffic_actions;
+mod random_traffic_late;
 mod random_traffic_relations;
 mod relative_over_distance;
 mod relative_path;
@@ -200,6 +202,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         serial_before: HashMap::new(),
         against_road: None,
         against_routes: HashMap::new(),
+        late_random: Vec::new(),
     };
     root.walk(&mut |ph| {
         if let Kind::Emit(e) = &ph.kind {
@@ -512,6 +515,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     let mut handler_plans = vec![None; handlers.len()];
     plan_handlers(&p, &handlers, false, &mut handler_plans)?;
     let end = p.schedule(root, When::At(0.0), None, None, None)?;
+    p.create_late_random_traffic()?;
     plan_handlers(&p, &handlers, true, &mut handler_plans)?;
     let handler_plans: Vec<HandlerPlan> = handler_plans.into_iter().flatten().collect();
     if end == When::Never && !settings.open_end {

@@ -100,6 +100,9 @@ pub(crate) struct Planner<'a> {
     /// The plan's roads driven against s (`PlanRoad::against`), when an actor drives them
     /// so: the road the invocations of such an actor are planned on (`plan_invoke`).
     pub against_road: Option<PlanRoad<'a>>,
+    /// Random traffic created after the run's start, placed once every phase is planned
+    /// (`random_traffic_late`).
+    pub late_random: Vec<super::random_traffic_late::Late>,
     /// Route field `routes_are_opposite` binds to the plan's roads driven against s → what
     /// bound it (`against::bind_routes`).
     pub against_routes: HashMap<String, String>,
@@ -190,6 +193,7 @@ impl Planner<'_> {
                     yaw: None,
                     against: false,
                     driver: None,
+                    created: None,
                 });
             }
             names.push(n);

@@ -46,7 +46,7 @@
 //!
 //! The phase that creates the members is the group's first, `drive()`, `move()`,
 //! `follow_lane()` or `remain_stationary()` (placed standing, desired speed 0), and starts
-//! with the run. Its modifiers: `speed(v)`, `lane(n [, from: left])`, `keep_lane()`,
+//! with the run or later (`random_traffic_late`). Its modifiers: `speed(v)`, `lane(n [, from: left])`, `keep_lane()`,
 //! `avoid_collisions(true)` (what the model does; `false` is an error), and `along(r)` on a
 //! route the runtime chooses (a `route` field nothing binds: the plan's roads, which the
 //! members drive; the resolver refuses offsets on such a route); the others constrain a
@@ -59,6 +59,7 @@ use super::car_following::model_controller;
 use super::place::Start;
 use super::planner::Planner;
 use super::random_traffic_actions::Creation;
+use super::random_traffic_late::Late;
 use super::types::{Planned, When};
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Action, Invoke, Kind, Phase};
@@ -82,7 +83,11 @@ pub(crate) const IDM_T: f64 = 1.6;
 /// The spacing along s at which the driving lanes are sampled (m).
 const LANE_STEP: f64 = 1.0;
 /// The ObjectController's name.
-const CONTROLLER: &str = "random_traffic";
+pub(super) const CONTROLLER: &str = "random_traffic";
+
+/// Another vehicle on the road as `Planner::deal` counts it: whether it drives against s, its
+/// lane, rear and front along its direction of travel (m; u against s), and its speed (m/s).
+pub(super) type Other = (bool, i32, f64, f64, f64);
 
 /// A free stretch of a lane: its direction, lane, from s, to s (against s: the distance u
 /// along the direction of travel), and the members dealt to it.
@@ -142,22 +147,10 @@ impl Planner<'_> {
                 Some(Kind::Invoke(inv)) => Some(inv),
                 _ => None,
             };
-            let Creation {
-                v0,
-                along,
-                lane,
-                keep_lane,
-            } = self.creation(&g, inv)?;
-            let speeds: Vec<f64> = members
-                .iter()
-                .map(|_| {
-                    v0 * (1.0 - START_SPREAD
-                        + 2.0 * START_SPREAD * self.draws.borrow_mut().uniform())
-                })
-                .collect();
+            let c = self.creation(&g, inv)?;
             // Every other actor already placed (members of the groups before this one
             // included), with its direction (its start in u against s).
-            let others: Vec<(bool, i32, f64, f64, f64)> = self
+            let others: Vec<Other> = self
                 .entities
                 .iter()
                 .filter(|e| !self.random_member(&e.name) || placed.contains(&e.name))
@@ -165,100 +158,18 @@ impl Planner<'_> {
                 .filter(|e| !held.contains(&e.name))
                 .filter_map(|e| {
                     let st = starts.get(&e.name)?;
-                    let b = e.data.bounding_box;
-                    let front = b.center[0] + b.length / 2.0;
-                    let rear = b.length / 2.0 - b.center[0];
                     let back = against.contains(&e.name) || oncoming.contains(&e.name);
-                    Some((back, st.lane, st.s - rear, st.s + front, st.v))
+                    Some(self.other(&e.name, back, st.lane, st.s, st.v))
                 })
                 .collect();
-            let side = |back: bool| -> Vec<(i32, f64, f64, f64)> {
-                others
-                    .iter()
-                    .filter(|o| o.0 == back)
-                    .map(|o| (o.1, o.2, o.3, o.4))
-                    .collect()
-            };
-            let v_max = speeds
-                .iter()
-                .chain(others.iter().map(|o| &o.4))
-                .fold(0.0_f64, |a, &b| a.max(b));
-            let gap = IDM_S0 + v_max * IDM_T;
-            let mut stretches = free_stretches(&self.road, false, &side(false), gap, lane);
-            // Oncoming traffic too (OpenDRIVE 1.8 §11.2: the left side's lanes driven in −s),
-            // unless `along(r)` keeps the members to the route's direction.
-            if !along {
-                if self.against_road.is_none() {
-                    if let Ok(view) = self.road.against() {
-                        self.against_road = Some(view);
-                    }
+            for (m, back, st) in self.deal(&g, &site, &members, &c, &others)? {
+                if back {
+                    oncoming.insert(m.clone());
                 }
-                if let Some(view) = &self.against_road {
-                    stretches.extend(free_stretches(view, true, &side(true), gap, lane));
-                }
+                placed.insert(m.clone());
+                starts.insert(m, st);
             }
-            let lens: Vec<f64> = members
-                .iter()
-                .map(|m| self.entities[self.index[m]].data.bounding_box.length)
-                .collect();
-            for (i, len) in lens.iter().enumerate() {
-                let rooms: Vec<f64> = stretches.iter().map(|s| s.room(*len, gap)).collect();
-                let total: f64 = rooms.iter().filter(|r| **r >= 0.0).sum();
-                let fits = rooms.iter().any(|r| *r >= 0.0);
-                if !fits {
-                    return Err(site.err(
-                        K::Unsatisfiable,
-                        format!(
-                            "expected room on the plan's driving lanes for the {} members of random traffic `{g}` (each its length plus a gap of {gap:.1} m to the next vehicle: s0 + v·T at the fastest start speed {v_max:.2} m/s), found room for {i}",
-                            members.len()
-                        ),
-                    ));
-                }
-                // A stretch drawn with a weight of its room left.
-                let mut pick = self.draws.borrow_mut().uniform() * total;
-                let mut k = rooms.iter().rposition(|r| *r >= 0.0).unwrap_or(0);
-                for (j, r) in rooms.iter().enumerate() {
-                    if *r < 0.0 {
-                        continue;
-                    }
-                    if pick < *r {
-                        k = j;
-                        break;
-                    }
-                    pick -= r;
-                }
-                let st = &mut stretches[k];
-                st.used += len + if st.members.is_empty() { 0.0 } else { gap };
-                st.members.push(i);
-            }
-            for st in &stretches {
-                let n = st.members.len();
-                let slack = (st.to - st.from) - st.used;
-                let mut u: Vec<f64> = (0..n)
-                    .map(|_| self.draws.borrow_mut().uniform() * slack)
-                    .collect();
-                u.sort_by(f64::total_cmp);
-                let mut before = 0.0;
-                for (&i, du) in st.members.iter().zip(u) {
-                    let b = self.entities[self.index[&members[i]]].data.bounding_box;
-                    let rear = b.length / 2.0 - b.center[0];
-                    let s = st.from + du + before + rear;
-                    before += lens[i] + gap;
-                    if st.against {
-                        oncoming.insert(members[i].clone());
-                    }
-                    placed.insert(members[i].clone());
-                    starts.insert(
-                        members[i].clone(),
-                        Start {
-                            lane: st.lane,
-                            s,
-                            v: speeds[i],
-                            offset: 0.0,
-                        },
-                    );
-                }
-            }
+            let Creation { v0, keep_lane, .. } = c;
             for m in &members {
                 let e = self.index[m];
                 // Lane changes by MOBIL, unless the members keep their lanes: the IDM alone.
@@ -271,12 +182,129 @@ impl Planner<'_> {
         Ok(oncoming)
     }
 
+    /// The box of actor `name` (`back`: driving against s) in lane `lane` at s `s` (u against
+    /// s), at speed `v`, as `deal` counts it.
+    pub(super) fn other(&self, name: &str, back: bool, lane: i32, s: f64, v: f64) -> Other {
+        let b = self.entities[self.index[name]].data.bounding_box;
+        let front = b.center[0] + b.length / 2.0;
+        let rear = b.length / 2.0 - b.center[0];
+        (back, lane, s - rear, s + front, v)
+    }
+
+    /// Deals the members of random traffic `g` (written at `site`) as creation `c` asks over
+    /// the free stretches of the driving lanes among `others` (module doc): each member's
+    /// name, whether it drives against s, and its start (s: u against s).
+    pub(super) fn deal(
+        &mut self,
+        g: &str,
+        site: &Site,
+        members: &[String],
+        c: &Creation,
+        others: &[Other],
+    ) -> Result<Vec<(String, bool, Start)>, Error> {
+        let Creation {
+            v0, along, lane, ..
+        } = *c;
+        let mut out = Vec::new();
+        let speeds: Vec<f64> = members
+            .iter()
+            .map(|_| {
+                v0 * (1.0 - START_SPREAD + 2.0 * START_SPREAD * self.draws.borrow_mut().uniform())
+            })
+            .collect();
+        let side = |back: bool| -> Vec<(i32, f64, f64, f64)> {
+            others
+                .iter()
+                .filter(|o| o.0 == back)
+                .map(|o| (o.1, o.2, o.3, o.4))
+                .collect()
+        };
+        let v_max = speeds
+            .iter()
+            .chain(others.iter().map(|o| &o.4))
+            .fold(0.0_f64, |a, &b| a.max(b));
+        let gap = IDM_S0 + v_max * IDM_T;
+        let mut stretches = free_stretches(&self.road, false, &side(false), gap, lane);
+        // Oncoming traffic too (OpenDRIVE 1.8 §11.2: the left side's lanes driven in −s),
+        // unless `along(r)` keeps the members to the route's direction.
+        if !along {
+            if self.against_road.is_none() {
+                if let Ok(view) = self.road.against() {
+                    self.against_road = Some(view);
+                }
+            }
+            if let Some(view) = &self.against_road {
+                stretches.extend(free_stretches(view, true, &side(true), gap, lane));
+            }
+        }
+        let lens: Vec<f64> = members
+            .iter()
+            .map(|m| self.entities[self.index[m]].data.bounding_box.length)
+            .collect();
+        for (i, len) in lens.iter().enumerate() {
+            let rooms: Vec<f64> = stretches.iter().map(|s| s.room(*len, gap)).collect();
+            let total: f64 = rooms.iter().filter(|r| **r >= 0.0).sum();
+            let fits = rooms.iter().any(|r| *r >= 0.0);
+            if !fits {
+                return Err(site.err(
+                    K::Unsatisfiable,
+                    format!(
+                        "expected room on the plan's driving lanes for the {} members of random traffic `{g}` (each its length plus a gap of {gap:.1} m to the next vehicle: s0 + v·T at the fastest start speed {v_max:.2} m/s), found room for {i}",
+                        members.len()
+                    ),
+                ));
+            }
+            // A stretch drawn with a weight of its room left.
+            let mut pick = self.draws.borrow_mut().uniform() * total;
+            let mut k = rooms.iter().rposition(|r| *r >= 0.0).unwrap_or(0);
+            for (j, r) in rooms.iter().enumerate() {
+                if *r < 0.0 {
+                    continue;
+                }
+                if pick < *r {
+                    k = j;
+                    break;
+                }
+                pick -= r;
+            }
+            let st = &mut stretches[k];
+            st.used += len + if st.members.is_empty() { 0.0 } else { gap };
+            st.members.push(i);
+        }
+        for st in &stretches {
+            let n = st.members.len();
+            let slack = (st.to - st.from) - st.used;
+            let mut u: Vec<f64> = (0..n)
+                .map(|_| self.draws.borrow_mut().uniform() * slack)
+                .collect();
+            u.sort_by(f64::total_cmp);
+            let mut before = 0.0;
+            for (&i, du) in st.members.iter().zip(u) {
+                let b = self.entities[self.index[&members[i]]].data.bounding_box;
+                let rear = b.length / 2.0 - b.center[0];
+                let s = st.from + du + before + rear;
+                before += lens[i] + gap;
+                out.push((
+                    members[i].clone(),
+                    st.against,
+                    Start {
+                        lane: st.lane,
+                        s,
+                        v: speeds[i],
+                        offset: 0.0,
+                    },
+                ));
+            }
+        }
+        Ok(out)
+    }
+
     /// Action `inv` of random traffic `inv.actor` (phase `p`, starting at `t0`): the phase
     /// that creates its members (planned by `place_random_traffic`: their starts and drivers)
     /// or a later action given to their models (`random_traffic_actions`) into `out`; what it
     /// cannot run is an error. Returns the phase's end when the action sets it.
     pub(super) fn plan_random_traffic(
-        &self,
+        &mut self,
         p: &Phase,
         inv: &Invoke,
         t0: Option<f64>,
@@ -298,11 +326,24 @@ impl Planner<'_> {
                 format!("expected drive(), move(), follow_lane() or remain_stationary() creating random traffic `{g}` (the engine's driver model drives its members from then on), found {}(…)", inv.action),
             ));
         }
-        if t0 != Some(0.0) {
-            return Err(p.site.err(
-                K::Unsupported,
-                format!("expected the phase creating random traffic `{g}` to start with the run, found it later"),
-            ));
+        match t0 {
+            Some(t) if t > 0.0 => {
+                // Placed among the others' places then, once every phase is planned.
+                let creation = self.creation(g, Some(inv))?;
+                self.late_random.push(Late {
+                    group: g.clone(),
+                    at: t,
+                    phase: p.path.clone(),
+                    creation,
+                });
+            }
+            Some(_) => {}
+            None => {
+                return Err(p.site.err(
+                    K::Unsupported,
+                    format!("expected the phase creating random traffic `{g}` to start at a time the plan knows (its members are placed among the other actors' places then), found it after a run-time condition"),
+                ))
+            }
         }
         Ok(None)
     }

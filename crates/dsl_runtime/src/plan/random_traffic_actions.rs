@@ -6,7 +6,8 @@
 //! The group's first phase creates its members (`random_traffic` places them; what the phase
 //! asks, `Planner::creation`, is read here): `drive()`, `move()`,
 //! `follow_lane()` (`drive() with: keep_lane()`, §8.8.3.2) or `remain_stationary()` (placed
-//! standing, desired speed 0), starting with the run. From then on each member's driver model
+//! standing, desired speed 0), starting with the run or at a later time the plan knows
+//! (`random_traffic_late`: created then). From then on each member's driver model
 //! drives it, so a later action of the group is given to every member's model as what that
 //! model takes from it — its desired speed v0 (the engine hands a SpeedAction on a domain a
 //! model holds to the model, `engine::controller::strategy`):
@@ -36,6 +37,7 @@ use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{arg, Action, Along, Arg, At, Invoke, ModKind, Modifier, Phase, Route, Val};
 
 /// What the phase creating random traffic asks (`Planner::creation`).
+#[derive(Debug, Clone, Copy)]
 pub(super) struct Creation {
     /// The members' desired speed (m/s).
     pub v0: f64,

@@ -165,6 +165,9 @@ pub(crate) struct Entity {
     /// The driver model that drives it from the start (a member of random traffic,
     /// `random_traffic`): its ObjectController, activated in the Init on both domains.
     pub driver: Option<scenario::Controller>,
+    /// When a member of random traffic created after the run's start enters the scenario
+    /// (`random_traffic_late`): it has no Init, its creating phase places it.
+    pub created: Option<f64>,
 }
 
 /// The whole plan.
