@@ -38,7 +38,8 @@
 //!
 //! - **Lanes**: `lane(n [, from: left])` (at: start or all) deals the members to the lane so
 //!   numbered in each direction of travel only (`PlanRoad::numbered` on the plan road and on
-//!   its view against s); at: all, `keep_lane()` and `follow_lane()` (`drive() with:
+//!   its view against s); `lane(n, same_as/side_of/left_of/right_of: x)` to x's lane or the
+//!   one n beside it, in x's direction, where the plan has x at the creation; at: all, `keep_lane()` and `follow_lane()` (`drive() with:
 //!   keep_lane()`, §8.8.3.2) keep them there: their model is then the engine's `idm`, the
 //!   IDM without MOBIL's lane changes.
 //! - **Several groups**: placed in the order of their names, each after every other actor and
@@ -88,6 +89,15 @@ pub(super) const CONTROLLER: &str = "random_traffic";
 /// Another vehicle on the road as `Planner::deal` counts it: whether it drives against s, its
 /// lane, rear and front along its direction of travel (m; u against s), and its speed (m/s).
 pub(super) type Other = (bool, i32, f64, f64, f64);
+
+/// The lanes random traffic is dealt to (else every driving lane).
+#[derive(Debug, Clone, Copy)]
+enum Lanes {
+    /// The lane numbered n from the right (from the left) in each direction.
+    Numbered(i64, bool),
+    /// This lane id.
+    Id(i32),
+}
 
 /// A free stretch of a lane: its direction, lane, from s, to s (against s: the distance u
 /// along the direction of travel), and the members dealt to it.
@@ -162,7 +172,17 @@ impl Planner<'_> {
                     Some(self.other(&e.name, back, st.lane, st.s, st.v))
                 })
                 .collect();
-            for (m, back, st) in self.deal(&g, &site, &members, &c, &others)? {
+            let beside = match &c.beside {
+                Some(b) => {
+                    let x_at = starts.get(&b.x).filter(|_| !held.contains(&b.x)).map(|st| {
+                        let back = against.contains(&b.x);
+                        (back, st.lane, st.s)
+                    });
+                    Some(self.beside_lane(&g, b, x_at)?)
+                }
+                None => None,
+            };
+            for (m, back, st) in self.deal(&g, &site, &members, &c, &others, beside)? {
                 if back {
                     oncoming.insert(m.clone());
                 }
@@ -201,10 +221,19 @@ impl Planner<'_> {
         members: &[String],
         c: &Creation,
         others: &[Other],
+        beside: Option<(bool, i32)>,
     ) -> Result<Vec<(String, bool, Start)>, Error> {
-        let Creation {
-            v0, along, lane, ..
-        } = *c;
+        let (v0, along) = (c.v0, c.along);
+        // The lanes dealt to: numbered in each direction, or one lane beside another actor
+        // in that actor's direction only.
+        let lane = match beside {
+            Some((_, id)) => Some(Lanes::Id(id)),
+            None => c.lane.map(|(n, left)| Lanes::Numbered(n, left)),
+        };
+        let (forward, back) = match beside {
+            Some((against, _)) => (!against, against),
+            None => (true, !along),
+        };
         let mut out = Vec::new();
         let speeds: Vec<f64> = members
             .iter()
@@ -224,10 +253,14 @@ impl Planner<'_> {
             .chain(others.iter().map(|o| &o.4))
             .fold(0.0_f64, |a, &b| a.max(b));
         let gap = IDM_S0 + v_max * IDM_T;
-        let mut stretches = free_stretches(&self.road, false, &side(false), gap, lane);
+        let mut stretches = if forward {
+            free_stretches(&self.road, false, &side(false), gap, lane)
+        } else {
+            Vec::new()
+        };
         // Oncoming traffic too (OpenDRIVE 1.8 §11.2: the left side's lanes driven in −s),
         // unless `along(r)` keeps the members to the route's direction.
-        if !along {
+        if back {
             if self.against_road.is_none() {
                 if let Ok(view) = self.road.against() {
                     self.against_road = Some(view);
@@ -358,7 +391,7 @@ fn free_stretches(
     against: bool,
     others: &[(i32, f64, f64, f64)],
     gap: f64,
-    lane: Option<(i64, bool)>,
+    lane: Option<Lanes>,
 ) -> Vec<Stretch> {
     let length = road.length();
     let steps = (length / LANE_STEP).floor() as usize;
@@ -368,7 +401,14 @@ fn free_stretches(
         let s = (k as f64 * LANE_STEP).min(length);
         let lanes = match lane {
             _ if k > steps => Vec::new(),
-            Some((n, from_left)) => road.numbered(n, from_left, s, false).into_iter().collect(),
+            Some(Lanes::Numbered(n, from_left)) => {
+                road.numbered(n, from_left, s, false).into_iter().collect()
+            }
+            Some(Lanes::Id(id)) => road
+                .driving_lanes(s)
+                .into_iter()
+                .filter(|l| *l == id)
+                .collect(),
             None => road.driving_lanes(s),
         };
         let (keep, closed): (Vec<_>, Vec<_>) =

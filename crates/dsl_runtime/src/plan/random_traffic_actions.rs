@@ -33,11 +33,11 @@ use super::place::DEFAULT_SPEED;
 use super::planner::Planner;
 use super::speed_actions::{speed_target, step_speed};
 use super::types::{Planned, When, MAX_SPEED};
-use crate::error::{Error, ErrorKind as K};
+use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{arg, Action, Along, Arg, At, Invoke, ModKind, Modifier, Phase, Route, Val};
 
 /// What the phase creating random traffic asks (`Planner::creation`).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub(super) struct Creation {
     /// The members' desired speed (m/s).
     pub v0: f64,
@@ -47,6 +47,57 @@ pub(super) struct Creation {
     pub lane: Option<(i64, bool)>,
     /// Whether they keep their lanes (the IDM without MOBIL).
     pub keep_lane: bool,
+    /// The lane relative to another actor `lane(same_as/side_of/left_of/right_of: x)` puts
+    /// them in.
+    pub beside: Option<Beside>,
+}
+
+/// `lane(n, same_as/side_of/left_of/right_of: x, side: …)` on the phase creating random
+/// traffic: x, and how many lanes to its left (+) or right (−) (0: x's lane).
+#[derive(Debug, Clone)]
+pub(super) struct Beside {
+    /// The other actor.
+    pub x: String,
+    /// Lanes to x's left (+) or right (−), in x's direction of travel.
+    pub by: i64,
+    /// The modifier.
+    pub site: Site,
+}
+
+impl Planner<'_> {
+    /// The lane `c` asks for, relative to another actor `x` there: x driving against s
+    /// (`back`), in lane `lx` at s `sx` (u against s): the direction and lane id the members
+    /// are dealt to, or an error at the modifier when x is not in the plan or no driving lane
+    /// lies there.
+    pub(super) fn beside_lane(
+        &self,
+        g: &str,
+        b: &Beside,
+        x_at: Option<(bool, i32, f64)>,
+    ) -> Result<(bool, i32), Error> {
+        let Some((back, lx, sx)) = x_at else {
+            return Err(b.site.err(
+                K::Unsupported,
+                format!("expected `{}` placed by the plan before random traffic `{g}` is created beside it, found it placed from the members or moved by the engine then", b.x),
+            ));
+        };
+        let view = if back {
+            self.against_road.as_ref().unwrap_or(&self.road)
+        } else {
+            &self.road
+        };
+        let lane = if b.by == 0 {
+            Some(lx)
+        } else {
+            view.beside(lx, b.by > 0, b.by.abs(), sx)
+        };
+        lane.map(|l| (back, l)).ok_or_else(|| {
+            b.site.err(
+                K::Unsatisfiable,
+                format!("expected a driving lane {} lanes to the {} of `{}`'s lane {lx} for random traffic `{g}`, found none there", b.by.abs(), if b.by > 0 { "left" } else { "right" }, b.x),
+            )
+        })
+    }
 }
 
 /// What an action of random traffic asks of each member's model.
@@ -151,6 +202,7 @@ impl Planner<'_> {
             along: false,
             lane: None,
             keep_lane: false,
+            beside: None,
         };
         let Some(inv) = inv else {
             return Ok(c);
@@ -164,6 +216,31 @@ impl Planner<'_> {
                 (ModKind::KeepPosition, _) if m.name == inv.action => c.v0 = 0.0,
                 (ModKind::KeepLane, _) => c.keep_lane = true,
                 (ModKind::AvoidCollisions, _) => check_avoid(g, m)?,
+                (ModKind::Lane, _) if m.at != At::End && self.lane_beside(m).is_some() => {
+                    let (key, x) = self.lane_beside(m).unwrap_or_default();
+                    let n = m.arg("lane").map(Arg::number).transpose()?.unwrap_or(1.0);
+                    let left = match key {
+                        "same_as" => 0,
+                        "left_of" => 1,
+                        "right_of" => -1,
+                        _ => match m.arg("side").map(Arg::eval).transpose()? {
+                            Some(Val::Enum(s)) if s == "right" => -1,
+                            _ => 1,
+                        },
+                    };
+                    if n < 1.0 || n.fract() != 0.0 {
+                        return Err(m.site.err(
+                            K::Modifier,
+                            format!("expected a number of lanes of 1 or more in lane(…) of random traffic `{g}`, found {n}"),
+                        ));
+                    }
+                    c.beside = Some(Beside {
+                        x,
+                        by: left * n as i64,
+                        site: m.site.clone(),
+                    });
+                    c.keep_lane |= m.at == At::All;
+                }
                 (ModKind::Lane, _) if m.at != At::End && m.args.len() <= 2 => {
                     let n = m.arg("lane").map(Arg::number).transpose()?;
                     let from = m.arg("from").map(Arg::eval).transpose()?;
@@ -204,11 +281,22 @@ impl Planner<'_> {
         Ok(c)
     }
 
+    /// The reference of `lane(…)` `m` to another actor of the plan (not of random traffic):
+    /// the key (`same_as`, `side_of`, `left_of`, `right_of`) and the actor.
+    fn lane_beside(&self, m: &Modifier) -> Option<(&'static str, String)> {
+        ["same_as", "side_of", "left_of", "right_of"]
+            .into_iter()
+            .find_map(|k| {
+                let x = m.arg(k)?.path.clone()?;
+                (self.index.contains_key(&x) && !self.random_member(&x)).then_some((k, x))
+            })
+    }
+
     /// The error at modifier `m` of the phase that creates random traffic `g`.
     fn refused_at_creation(&self, g: &str, m: &Modifier) -> Error {
         m.site.err(
             K::Unsupported,
-            format!("expected speed(v), lane(n [, from: left]) at: start or all, keep_lane(), avoid_collisions(true) or along(r) on a route the runtime chooses on the phase that creates random traffic `{g}` (its members' desired speed, lanes and roads; the engine's driver model does the rest), found `{}(…)`", m.name),
+            format!("expected speed(v), lane(n [, from: left]) or lane(same_as/side_of/left_of/right_of: x) at: start or all, keep_lane(), avoid_collisions(true) or along(r) on a route the runtime chooses on the phase that creates random traffic `{g}` (its members' desired speed, lanes and roads; the engine's driver model does the rest), found `{}(…)`", m.name),
         )
     }
 

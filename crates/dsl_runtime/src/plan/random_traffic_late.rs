@@ -70,7 +70,27 @@ impl Planner<'_> {
                 let (lane, v) = (tr.lane(t), tr.at(t).1);
                 others.push(self.other(&e.name, e.against, lane, self.s_at(&e.name, t), v));
             }
-            let dealt = self.deal(g, &site, &members, &late.creation, &others)?;
+            let beside = match &late.creation.beside {
+                Some(b) => {
+                    let x_at = self.index.get(&b.x).and_then(|&i| {
+                        let e = &self.entities[i];
+                        let moved = self
+                            .engine_moved
+                            .get(&e.name)
+                            .is_some_and(|since| since.map_or(true, |s| s <= t));
+                        (!moved).then(|| {
+                            (
+                                e.against,
+                                self.track(&e.name).lane(t),
+                                self.s_at(&e.name, t),
+                            )
+                        })
+                    });
+                    Some(self.beside_lane(g, b, x_at)?)
+                }
+                None => None,
+            };
+            let dealt = self.deal(g, &site, &members, &late.creation, &others, beside)?;
             let Some(k) = self.phases.iter().position(|ph| ph.path == late.phase) else {
                 continue;
             };

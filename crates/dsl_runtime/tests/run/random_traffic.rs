@@ -206,7 +206,7 @@ fn a_later_phase_of_random_traffic_is_an_error() {
 fn a_modifier_other_than_speed_on_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_modifier",
-        "expected speed(v), lane(n [, from: left]) at: start or all, keep_lane(), avoid_collisions(true) or along(r) on a route the runtime chooses on the phase that creates random traffic `g` (its members' desired speed, lanes and roads; the engine's driver model does the rest), found `position(…)`",
+        "expected speed(v), lane(n [, from: left]) or lane(same_as/side_of/left_of/right_of: x) at: start or all, keep_lane(), avoid_collisions(true) or along(r) on a route the runtime chooses on the phase that creates random traffic `g` (its members' desired speed, lanes and roads; the engine's driver model does the rest), found `position(…)`",
         "8:9",
     );
 }
@@ -647,6 +647,53 @@ fn random_traffic_created_later_enters_among_the_others_places_then() {
             if q.s > 4.0 && q.s < 996.0 {
                 assert!(ds > 20.0, "seed {seed}: {m} moved {ds} m in 1 s");
             }
+        }
+    }
+}
+
+#[test]
+fn random_traffic_dealt_to_a_lane_beside_another_actor_stays_there() {
+    // random_traffic_beside.osc: g left of ego (lane -1), h right of it (lane -3).
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic_beside", seed, None);
+        let g: Vec<String> = (0..4).map(|i| format!("g.vehicles[{i}]")).collect();
+        let h: Vec<String> = (0..3).map(|i| format!("h.vehicles[{i}]")).collect();
+        for (t, objs) in &r.frames {
+            for o in objs.iter().filter(|o| o.s > 4.0 && o.s < 996.0) {
+                if o.name.starts_with("g.") {
+                    assert_eq!(o.lane, -1, "seed {seed} at {t}: {o:?}");
+                } else if o.name.starts_with("h.") {
+                    assert_eq!(o.lane, -3, "seed {seed} at {t}: {o:?}");
+                }
+            }
+        }
+        let span = |o: &crate::support::Obj| {
+            if o.lane > 0 {
+                (o.s - 3.5, o.s + 0.5)
+            } else {
+                (o.s - 0.5, o.s + 3.5)
+            }
+        };
+        let all: Vec<&str> = g
+            .iter()
+            .chain(&h)
+            .map(String::as_str)
+            .chain(["ego", "npc"])
+            .collect();
+        let v_max = all.iter().fold(0.0_f64, |a, m| a.max(r.at(0.0, m).speed));
+        let mut boxes: Vec<(i32, f64, f64, &str)> = all
+            .iter()
+            .map(|m| {
+                let o = r.at(0.0, m);
+                let (a, b) = span(o);
+                (o.lane, a, b, *m)
+            })
+            .collect();
+        for (gap, a, b, _) in lane_gaps(&mut boxes) {
+            assert!(
+                gap >= S0 + v_max * T - S_TOL,
+                "seed {seed}: {a} to {b}: {gap} m"
+            );
         }
     }
 }
