@@ -102,7 +102,7 @@ pub(crate) struct Planner<'a> {
     pub against_road: Option<PlanRoad<'a>>,
     /// Random traffic created after the run's start, placed once every phase is planned
     /// (`random_traffic_late`).
-    pub late_random: Vec<super::random_traffic_late::Late>,
+    pub late_random: Vec<super::types::Late>,
     /// Route field `routes_are_opposite` binds to the plan's roads driven against s → what
     /// bound it (`against::bind_routes`).
     pub against_routes: HashMap<String, String>,

@@ -32,37 +32,9 @@ use super::action_args::positive;
 use super::place::DEFAULT_SPEED;
 use super::planner::Planner;
 use super::speed_actions::{speed_target, step_speed};
-use super::types::{Planned, When, MAX_SPEED};
-use crate::error::{Error, ErrorKind as K, Site};
+use super::types::{Beside, Creation, Planned, When, MAX_SPEED};
+use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{arg, Action, Along, Arg, At, Invoke, ModKind, Modifier, Phase, Route, Val};
-
-/// What the phase creating random traffic asks (`Planner::creation`).
-#[derive(Debug, Clone)]
-pub(super) struct Creation {
-    /// The members' desired speed (m/s).
-    pub v0: f64,
-    /// Whether `along(r)` keeps them to +s.
-    pub along: bool,
-    /// The lane `lane(n [, from: left])` numbers, in each direction.
-    pub lane: Option<(i64, bool)>,
-    /// Whether they keep their lanes (the IDM without MOBIL).
-    pub keep_lane: bool,
-    /// The lane relative to another actor `lane(same_as/side_of/left_of/right_of: x)` puts
-    /// them in.
-    pub beside: Option<Beside>,
-}
-
-/// `lane(n, same_as/side_of/left_of/right_of: x, side: …)` on the phase creating random
-/// traffic: x, and how many lanes to its left (+) or right (−) (0: x's lane).
-#[derive(Debug, Clone)]
-pub(super) struct Beside {
-    /// The other actor.
-    pub x: String,
-    /// Lanes to x's left (+) or right (−), in x's direction of travel.
-    pub by: i64,
-    /// The modifier.
-    pub site: Site,
-}
 
 impl Planner<'_> {
     /// The lane `c` asks for, relative to another actor `x` there: x driving against s

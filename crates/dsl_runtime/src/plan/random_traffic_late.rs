@@ -27,21 +27,8 @@ use scenario::{
 use super::action_args::timed;
 use super::planner::Planner;
 use super::random_traffic::{Other, CONTROLLER};
-use super::random_traffic_actions::Creation;
 use super::types::Planned;
 use crate::error::{Error, ErrorKind as K};
-
-/// Random traffic created after the start.
-pub(crate) struct Late {
-    /// The group.
-    pub group: String,
-    /// When its creating phase starts (s).
-    pub at: f64,
-    /// That phase's path.
-    pub phase: String,
-    /// What it asks.
-    pub creation: Creation,
-}
 
 impl Planner<'_> {
     /// Places the members of random traffic created after the start among the other actors'

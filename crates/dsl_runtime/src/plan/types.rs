@@ -269,3 +269,43 @@ pub(crate) struct HeadingAsk {
     /// The angle's place.
     pub site: Site,
 }
+
+/// What the phase creating random traffic asks (`Planner::creation`).
+#[derive(Debug, Clone)]
+pub(crate) struct Creation {
+    /// The members' desired speed (m/s).
+    pub v0: f64,
+    /// Whether `along(r)` keeps them to +s.
+    pub along: bool,
+    /// The lane `lane(n [, from: left])` numbers, in each direction.
+    pub lane: Option<(i64, bool)>,
+    /// Whether they keep their lanes (the IDM without MOBIL).
+    pub keep_lane: bool,
+    /// The lane relative to another actor `lane(same_as/side_of/left_of/right_of: x)` puts
+    /// them in.
+    pub beside: Option<Beside>,
+}
+
+/// `lane(n, same_as/side_of/left_of/right_of: x, side: …)` on the phase creating random
+/// traffic: x, and how many lanes to its left (+) or right (−) (0: x's lane).
+#[derive(Debug, Clone)]
+pub(crate) struct Beside {
+    /// The other actor.
+    pub x: String,
+    /// Lanes to x's left (+) or right (−), in x's direction of travel.
+    pub by: i64,
+    /// The modifier.
+    pub site: Site,
+}
+
+/// Random traffic created after the start.
+pub(crate) struct Late {
+    /// The group.
+    pub group: String,
+    /// When its creating phase starts (s).
+    pub at: f64,
+    /// That phase's path.
+    pub phase: String,
+    /// What it asks.
+    pub creation: Creation,
+}
