@@ -2,7 +2,7 @@
 //! (`plan/crossing_walk.rs`; ASAM OpenSCENARIO DSL 2.1 §8.12.2.2.9 `crossing_connects`, §8.9
 //! `lateral`). Positions worked by hand in the scenario files' comments.
 
-use crate::support::{lower_at, run_on};
+use crate::support::{error_on, run_on};
 
 /// Positions along a straight crossing on a straight road: float round-off only.
 const XY_TOL: f64 = 1e-6;
@@ -10,15 +10,7 @@ const XY_TOL: f64 = 1e-6;
 const T_TOL: f64 = 1e-9;
 
 fn refused(name: &str, text: &str, place: &str) {
-    let e = match lower_at(
-        &format!("tests/scenarios/{name}.osc"),
-        "tests/roads/crosswalk.xodr",
-        0,
-        None,
-    ) {
-        Ok(_) => panic!("{name}: planned"),
-        Err(e) => e.to_string(),
-    };
+    let e = error_on(name, "crosswalk");
     assert!(
         e.contains(text) && e.ends_with(&format!("{name}.osc:{place}")),
         "{e}"

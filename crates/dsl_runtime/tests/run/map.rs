@@ -3,7 +3,7 @@
 //! on road files of the corpus (`tests/roads/`). Road ids and s are worked by hand in the
 //! scenario files' comments.
 
-use crate::support::lower_at;
+use crate::support::{error_on, lower_at};
 
 /// Positions over arcs and spirals: the engine advances the reference line by the step's
 /// distance / (1 − κ·t) with κ at the step's start, and carries the rest of a step that crosses
@@ -144,15 +144,7 @@ fn routes_no_path_joins_or_in_two_lanes_are_errors_at_their_place() {
             "err_route_two_lanes.osc:8:71",
         ),
     ] {
-        let e = match lower_at(
-            &format!("tests/scenarios/{name}.osc"),
-            "tests/roads/junction_trippel_twoway0.xodr",
-            0,
-            None,
-        ) {
-            Ok(_) => panic!("{name}: planned"),
-            Err(e) => e.to_string(),
-        };
+        let e = error_on(name, "junction_trippel_twoway0");
         assert!(e.contains(text) && e.ends_with(place), "{name}: {e}");
     }
 }

@@ -5,7 +5,7 @@
 
 use std::f64::consts::PI;
 
-use crate::support::lower_at;
+use crate::support::{error_on, lower_at};
 
 /// Lateral positions are closed forms of the step times on straight roads.
 const Y_TOL: f64 = 1e-6;
@@ -22,15 +22,7 @@ fn refused(name: &str, road: &str, text: &str, place: &str) {
 }
 
 fn refused_all(name: &str, road: &str, texts: &[&str], place: &str) {
-    let e = match lower_at(
-        &format!("tests/scenarios/{name}.osc"),
-        &format!("tests/roads/{road}.xodr"),
-        0,
-        None,
-    ) {
-        Ok(_) => panic!("{name}: planned"),
-        Err(e) => e.to_string(),
-    };
+    let e = error_on(name, road);
     assert!(
         texts.iter().all(|t| e.contains(t)) && e.ends_with(&format!("{name}.osc:{place}")),
         "{name}: {e}"

@@ -4,7 +4,7 @@
 
 use std::f64::consts::PI;
 
-use crate::support::{lower_at, phases_are, run_on, DT};
+use crate::support::{error_on, phases_are, run_on, run_to_error_on, DT};
 
 /// Positions on straight roads: the engine integrates speed exactly; float round-off only.
 const S_TOL: f64 = 1e-6;
@@ -17,19 +17,6 @@ const SPIRAL_TOL: f64 = 0.01;
 /// Along the road during a sinusoidal lane change: the change's cost Δ²π²/(16·T·v) is the
 /// small-slope approximation of the path's extra length (within 1 mm for 3.5 m over 40 m).
 const COST_TOL: f64 = 1e-3;
-
-/// The error text of `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr`.
-pub(crate) fn error_on(name: &str, road: &str) -> String {
-    match lower_at(
-        &format!("tests/scenarios/{name}.osc"),
-        &format!("tests/roads/{road}.xodr"),
-        0,
-        None,
-    ) {
-        Ok(_) => panic!("{name}: planned"),
-        Err(e) => e.to_string(),
-    }
-}
 
 /// `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` runs to its end with no error record
 /// (the engine's checks at run time passed).
@@ -189,19 +176,6 @@ fn an_oncoming_actor_brakes_after_a_run_time_condition() {
     );
     // The engine's lane check at the run-time start passed: no error record, the run ends.
     ends_without_error("opposite_until", "straight");
-}
-
-/// The run of `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr`: its error (`None`: it
-/// ends) and the event log's error records (time, element, message).
-fn run_to_error_on(name: &str, road: &str) -> (Option<String>, Vec<(f64, String, String)>) {
-    let lowered = lower_at(
-        &format!("tests/scenarios/{name}.osc"),
-        &format!("tests/roads/{road}.xodr"),
-        0,
-        None,
-    )
-    .unwrap_or_else(|e| panic!("{name}: {e}"));
-    crate::support::run_to_error(&lowered.scenario)
 }
 
 #[test]

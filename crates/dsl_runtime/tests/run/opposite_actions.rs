@@ -5,8 +5,8 @@
 
 use std::f64::consts::PI;
 
-use crate::opposite::{ends_without_error, error_on, wrap};
-use crate::support::{run_on, stepped};
+use crate::opposite::{ends_without_error, wrap};
+use crate::support::{error_on, run_on, stepped};
 
 /// Positions on straight roads: the engine integrates speed exactly; float round-off only.
 const S_TOL: f64 = 1e-6;

@@ -5,8 +5,8 @@
 
 use std::f64::consts::PI;
 
-use crate::opposite::{error_on, wrap};
-use crate::support::{phases_are, run_on, Run};
+use crate::opposite::wrap;
+use crate::support::{error_on, phases_are, run_on, Run};
 
 /// Positions on straight roads: the engine integrates speed exactly; float round-off only.
 const S_TOL: f64 = 1e-6;

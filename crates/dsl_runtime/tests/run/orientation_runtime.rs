@@ -5,24 +5,12 @@
 //! record and a failed run. Expectations worked by hand in the scenario files.
 
 use crate::orientation::{turn, ARC_TOL};
-use crate::support::{lower_at, run_on, run_to_error};
+use crate::support::{run_on, run_to_error_on};
 
 /// Headings on the straight: float round-off.
 const H_TOL: f64 = 1e-9;
 /// Phase ends and record times are step times.
 const T_TOL: f64 = 1e-9;
-
-/// The run of `name` on `road` to its first error: the error and the error records.
-fn run_to_error_on(name: &str, road: &str) -> (Option<String>, Vec<(f64, String, String)>) {
-    let lowered = lower_at(
-        &format!("tests/scenarios/{name}.osc"),
-        &format!("tests/roads/{road}.xodr"),
-        0,
-        None,
-    )
-    .unwrap_or_else(|e| panic!("{name}: {e}"));
-    run_to_error(&lowered.scenario)
-}
 
 /// [`run_to_error_on`] bend.xodr.
 fn run_to_error_on_bend(name: &str) -> (Option<String>, Vec<(f64, String, String)>) {

@@ -5,7 +5,7 @@
 
 use std::f64::consts::PI;
 
-use crate::support::{lower_at, run, run_on};
+use crate::support::{error_on, lower_at, run, run_on};
 
 /// Positions on the straight road away from a change: float round-off only.
 const S_TOL: f64 = 1e-6;
@@ -199,15 +199,7 @@ fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
             "err_route_lanes_lateral.osc:8:9",
         ),
     ] {
-        let e = match lower_at(
-            &format!("tests/scenarios/{name}.osc"),
-            &format!("tests/roads/{road}.xodr"),
-            0,
-            None,
-        ) {
-            Ok(_) => panic!("{name}: planned"),
-            Err(e) => e.to_string(),
-        };
+        let e = error_on(name, road);
         assert!(e.contains(text) && e.ends_with(place), "{name}: {e}");
     }
 }

@@ -234,6 +234,33 @@ pub fn error(name: &str) -> String {
     }
 }
 
+/// The error message of `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr`, which must not
+/// plan.
+pub fn error_on(name: &str, road: &str) -> String {
+    match lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        &format!("tests/roads/{road}.xodr"),
+        0,
+        None,
+    ) {
+        Ok(_) => panic!("{name}: planned"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// The run of `tests/scenarios/NAME.osc` on `tests/roads/ROAD.xodr` to its first error
+/// ([`run_to_error`]): its error (`None`: it ends) and the event log's error records.
+pub fn run_to_error_on(name: &str, road: &str) -> (Option<String>, Vec<(f64, String, String)>) {
+    let lowered = lower_at(
+        &format!("tests/scenarios/{name}.osc"),
+        &format!("tests/roads/{road}.xodr"),
+        0,
+        None,
+    )
+    .unwrap_or_else(|e| panic!("{name}: {e}"));
+    run_to_error(&lowered.scenario)
+}
+
 /// The distance the engine covers from `a` to `b` s when the speed at time t is `v(t)`: it
 /// sets each step's speed at the step's end and moves with it, Σ v(tₖ)·dt over the step ends
 /// tₖ in (a, b].
