@@ -475,7 +475,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     }
     against::check_references(&leaves, &to_place, &p.index)?;
     let to_members = p.random_traffic_relations(&leaves)?;
-    let held = p.hold_dependents(&mut to_place, &to_members);
+    let dependents = p.hold_dependents(&mut to_place, to_members);
     let index = p.index.clone();
     let entity = |path: &str| index.contains_key(path).then(|| path.to_string());
     let mut starts = place(road, p.against_road.as_ref(), &to_place, &entity)?;
@@ -484,14 +484,14 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         .filter(|q| q.against)
         .map(|q| q.name.clone())
         .collect();
-    let oncoming = p.place_random_traffic(&leaves, &mut starts, &placed_against, &held)?;
+    let oncoming =
+        p.place_random_traffic(&leaves, &mut starts, &placed_against, &dependents.held)?;
     p.place_relative_to_members(
         road,
         &mut to_place,
         &mut starts,
         &oncoming,
-        &to_members,
-        &held,
+        &dependents,
         &entity,
     )?;
     for (e, q) in p.entities.iter_mut().zip(&to_place) {

@@ -38,6 +38,16 @@ pub(super) struct MemberRelation {
     site: Site,
 }
 
+/// The relations to members of random traffic and the actors they hold out of the first
+/// placement (`Planner::hold_dependents`), placed once the members are drawn
+/// (`Planner::place_relative_to_members`).
+pub(super) struct MemberDependents {
+    /// Each actor placed from a member.
+    pub relations: Vec<MemberRelation>,
+    /// Those actors and the ones placed from them.
+    pub held: HashSet<String>,
+}
+
 impl Planner<'_> {
     /// The relations of other actors to members of random traffic among `leaves` the plan
     /// runs (module doc); any other reference to a member or a group of random traffic is an
@@ -95,8 +105,8 @@ impl Planner<'_> {
     pub(super) fn hold_dependents(
         &self,
         to_place: &mut [ToPlace<'_>],
-        relations: &[MemberRelation],
-    ) -> HashSet<String> {
+        relations: Vec<MemberRelation>,
+    ) -> MemberDependents {
         let mut held: HashSet<String> = relations.iter().map(|r| r.actor.clone()).collect();
         loop {
             let more: Vec<String> = to_place
@@ -119,24 +129,23 @@ impl Planner<'_> {
         for q in to_place.iter_mut().filter(|q| held.contains(&q.name)) {
             q.fixed = Some(UNPLACED);
         }
-        held
+        MemberDependents { relations, held }
     }
 
-    /// Places the actors `held` (`hold_dependents`) among `starts` once the members of random
-    /// traffic are drawn (`oncoming`: those placed against s), every other actor and the
-    /// members fixed where they are; checks that none of them overlaps a member in its lane
-    /// (module doc), an error at `relations`' argument.
-    #[allow(clippy::too_many_arguments)]
+    /// Places the actors `dependents` holds (`hold_dependents`) among `starts` once the members
+    /// of random traffic are drawn (`oncoming`: those placed against s), every other actor and
+    /// the members fixed where they are; checks that none of them overlaps a member in its lane
+    /// (module doc), an error at the relation's argument.
     pub(super) fn place_relative_to_members(
         &self,
         road: &PlanRoad<'_>,
         to_place: &mut [ToPlace<'_>],
         starts: &mut HashMap<String, Start>,
         oncoming: &HashSet<String>,
-        relations: &[MemberRelation],
-        held: &HashSet<String>,
+        dependents: &MemberDependents,
         entity: &dyn Fn(&str) -> Option<String>,
     ) -> Result<(), Error> {
+        let MemberDependents { relations, held } = dependents;
         let Some(first) = relations.first() else {
             return Ok(());
         };
