@@ -85,6 +85,18 @@ use crate::track::Track;
 /// The speed relations, which hold between actors of any directions.
 const SPEED_REFERENCES: [&str; 3] = ["faster_than", "slower_than", "same_as"];
 
+/// Whether the argument `key` of modifier `m` relates the actor to another without a
+/// direction, so that it holds between actors driving opposite ways: a speed relation (a
+/// speed has no direction), or the angle between two objects' axes (`yaw`/`orientation`
+/// `relative_to: x`, measured in the world frame: `heading`).
+fn directionless(m: Option<&Modifier>, key: &str) -> bool {
+    m.is_some_and(|m| match m.kind {
+        ModKind::Speed => SPEED_REFERENCES.contains(&key),
+        ModKind::Orientation => key == "relative_to",
+        _ => false,
+    })
+}
+
 /// Checks, before any actor is placed, that every invocation runs for the direction its
 /// actors drive and relates no two actors of opposite directions (see the module doc).
 /// `all`: every actor to place, with its direction; `index`: the entities by name.
@@ -145,14 +157,7 @@ pub(crate) fn check_references(
             if dir(x) == actor_against || x == inv.actor {
                 continue;
             }
-            if m.is_some_and(|m| m.kind == ModKind::Speed)
-                && SPEED_REFERENCES.contains(&key.as_str())
-            {
-                continue;
-            }
-            // The angle between two objects' axes (`yaw`/`orientation` relative_to: x) is
-            // measured in the world frame, which has no direction (`heading`).
-            if m.is_some_and(|m| m.kind == ModKind::Orientation) && key == "relative_to" {
+            if directionless(m, key) {
                 continue;
             }
             let how = |a: bool| if a { "against s" } else { "in +s" };
