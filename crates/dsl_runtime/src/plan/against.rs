@@ -55,6 +55,13 @@
 //! each member's offset from member 0 in the view (along the direction of travel and to the
 //! drivers' left), a column's lead-ins along its lanes in that direction.
 //!
+//! So every §8.8 action and §8.9 modifier of the standard library runs against s; what is
+//! left is an action the program declares with no `do` and no §8.8 action among its
+//! ancestors, which runs in neither direction: the planner's one refusal of it
+//! (`Planner::plan_invoke`, "expected a `do` in …"), the same for an actor in +s (before,
+//! `check_runs` here refused it first with a list of what runs against s, though nothing of
+//! the standard library was left off that list).
+//!
 //! An actor along a free route of the other direction than its own is an error at the
 //! `along` (`check_alongs`).
 //!
@@ -77,7 +84,7 @@ use super::place::ToPlace;
 use super::types::Entity;
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{
-    Action, ActorKind, Along, Invoke, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
+    ActorKind, Along, Kind, MapKind, MapModifier, ModKind, Modifier, Phase, Route,
 };
 use crate::road::PlanRoad;
 use crate::track::Track;
@@ -129,9 +136,6 @@ pub(crate) fn check_references(
             // `assign_orientation` turns each standing member where it is to a world yaw.
             against
         };
-        if actor_against {
-            check_runs(inv, &inv.modifiers)?;
-        }
         for (m, key, a) in inv.all_args() {
             let Some(x) = a.path.as_deref().filter(|x| index.contains_key(*x)) else {
                 continue;
@@ -202,75 +206,6 @@ pub(crate) fn group_direction(
         ));
     }
     Ok(first.against)
-}
-
-/// Checks that invocation `inv` with modifiers `mods` runs for an actor driving against s
-/// (before the planning, and again for each phase as it is planned).
-pub(crate) fn check_runs(inv: &Invoke, mods: &[Modifier]) -> Result<(), Error> {
-    let not_run = |site: &crate::error::Site, what: &str| {
-        site.err(
-            K::Unsupported,
-            format!("expected an action and modifiers that run for `{}`, which drives against s (a lane driven in -s), found {what} (not run yet against s: drive(), change_speed, keep_speed, assign_speed, assign_acceleration, change_acceleration, keep_acceleration, remain_stationary, change_lane, follow_lane, assign_position, assign_orientation, change_position, follow_path, follow_trajectory, replay_path, replay_trajectory, change_space_gap, keep_space_gap, change_time_headway, keep_time_headway with speed, change_speed, acceleration(a), position, lane, change_lane, keep_lane, keep_speed, keep_position, distance, along, physical_movement, yaw, orientation, shape:, and lateral and acceleration relative to an actor driving against s run)", inv.actor),
-        )
-    };
-    // A speed and an acceleration have no direction: the speed and acceleration actions
-    // read and write only the actor's speed along its track (`speed_actions`).
-    let runs = matches!(
-        inv.kind,
-        Action::Move
-            | Action::ChangeSpeed
-            | Action::KeepSpeed
-            | Action::AssignSpeed
-            | Action::AssignAcceleration
-            | Action::ChangeAcceleration
-            | Action::KeepAcceleration
-            | Action::RemainStationary
-            | Action::ChangeLane
-            | Action::FollowLane
-            // The engine's distance actions measure along the actor's direction of travel
-            // (road coordinates turned to it, `condition::road_distance`) and move it along
-            // and across its lane in that direction: 1.x's semantics, as the plan's view.
-            | Action::ChangeSpaceGap
-            | Action::KeepSpaceGap
-            | Action::ChangeTimeHeadway
-            | Action::KeepTimeHeadway
-    )
-        // World places and paths have no direction; the place the actor reaches is put on
-        // the view (`position_actions::lane_position`), a relative path in its frame.
-        || inv.kind.to_place();
-    if !runs {
-        return Err(not_run(&inv.actor_site, &format!("{}(…)", inv.action)));
-    }
-    for m in mods {
-        let runs = match m.kind {
-            ModKind::Speed
-            | ModKind::ChangeSpeed
-            | ModKind::Position
-            | ModKind::Lane
-            | ModKind::ChangeLane
-            | ModKind::Distance
-            | ModKind::Along
-            | ModKind::KeepLane
-            | ModKind::KeepSpeed
-            | ModKind::KeepPosition
-            | ModKind::PhysicalMovement
-            // Relative to the road's s-axis (§8.9.9): π along a lane driven against s
-            // (`checks::check_orientation`).
-            | ModKind::Orientation
-            // An acceleration has no direction; relative to x (which drives against s too,
-            // `check_references`) it is x's along x's travel. A lateral position beside x is
-            // to the drivers' left or right: the view's t, turned to the road's by `lower`.
-            | ModKind::Acceleration
-            | ModKind::Lateral => true,
-            // The engine's IDM finds the leader along the direction of travel (car_following).
-            ModKind::AvoidCollisions => true,
-        };
-        // A shape is its action's dynamics, planned on the view as that action (`shapes`).
-        if !runs {
-            return Err(not_run(&m.site, &format!("{}(…)", m.name)));
-        }
-    }
-    Ok(())
 }
 
 /// The route fields `routes_are_opposite(route1, route2)` on route fields binds to roads

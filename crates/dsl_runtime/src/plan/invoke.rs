@@ -50,7 +50,6 @@ impl Planner<'_> {
         let Some(view) = self.against_road.clone().filter(|_| against) else {
             return plan(self);
         };
-        super::against::check_runs(inv, mods)?;
         let kept = super::against::turn_stationary(&mut self.entities, view.length());
         let forward = std::mem::replace(&mut self.road, view);
         let planned = plan(self);

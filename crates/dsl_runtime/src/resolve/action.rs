@@ -57,22 +57,6 @@ impl Action {
         matches!(self, Action::FollowPath | Action::ReplayPath)
     }
 
-    /// Whether the action takes the actor to a place or along given points (§8.8 position and
-    /// path actions): `assign_position`, `assign_orientation`, `change_position`,
-    /// `follow_path`, `follow_trajectory`, `replay_path`, `replay_trajectory`.
-    pub(crate) fn to_place(self) -> bool {
-        matches!(
-            self,
-            Action::AssignPosition
-                | Action::AssignOrientation
-                | Action::ChangePosition
-                | Action::FollowPath
-                | Action::FollowTrajectory
-                | Action::ReplayPath
-                | Action::ReplayTrajectory
-        )
-    }
-
     /// The standard library's action named `name`.
     pub(super) fn of_library(name: &str) -> Action {
         match name {

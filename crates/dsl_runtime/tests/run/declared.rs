@@ -62,6 +62,14 @@ fn a_declared_action_with_nothing_to_run_is_an_error_at_the_invocation() {
         e.starts_with("expected a `do` in `nothing`, an action the program declares without one and without a movement action of the standard library (§8.8) among its ancestors, found neither"),
         "{e}"
     );
+    // Driving against s, the same refusal at the same place (issue 27: every §8.8 action and
+    // §8.9 modifier runs against s, so this was the only form `against::check_runs` refused).
+    let e = error("declared/err_action_no_body_against");
+    assert!(e.contains("err_action_no_body_against.osc:20:9"), "{e}");
+    assert!(
+        e.starts_with("expected a `do` in `nothing`, an action the program declares without one and without a movement action of the standard library (§8.8) among its ancestors, found neither"),
+        "{e}"
+    );
 }
 
 #[test]
