@@ -74,17 +74,19 @@ impl Planner<'_> {
                         });
                     }
                 }
-                let mut conditions = vec![(**condition).clone()];
-                // A sampled value is read at each multiple of its period from the run's start.
-                if let Some(p) = sampled {
-                    conditions.push(every_from_start(
-                        *p,
-                        0.0,
-                        self.settings.dt,
-                        condition.pos.clone(),
-                    ));
+                // A sampled value is read at its event's occurrences only (§7.3.10.5): the
+                // comparison AND each of the event's condition groups, the event in the
+                // context of the scenario that declares the variable (the run's).
+                let Some(event) = sampled else {
+                    return Ok(vec![ConditionGroup {
+                        conditions: vec![(**condition).clone()],
+                    }]);
+                };
+                let mut groups = self.groups(event, depth + 1, EventCtx::Run)?;
+                for g in &mut groups {
+                    g.conditions.insert(0, (**condition).clone());
                 }
-                Ok(vec![ConditionGroup { conditions }])
+                Ok(groups)
             }
             Cond::Timed(tm, site) => self.timed(*tm, site, ectx),
         }

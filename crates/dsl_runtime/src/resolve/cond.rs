@@ -55,9 +55,10 @@ pub(crate) enum Cond {
         condition: Box<Condition>,
         /// The actor paths and where each is written (`None`: not a path).
         actors: Vec<(Option<String>, Site)>,
-        /// For a `var x = sample(m, every(p))` compared: the sampling period p (s); the value
-        /// is read at each multiple of p from the run's start only.
-        sampled: Option<f64>,
+        /// For a `var x = sample(m, e)` compared: the sampling event e (`every(p, offset: o)`,
+        /// `@e`, `rise(…)`, …), in the scenario's event context; the value is read at its
+        /// occurrences only.
+        sampled: Option<Box<Cond>>,
         /// An external method compared (`m(…) > 3`): its call, whose content names the
         /// user-defined value the host sets each step.
         external: Option<super::call::Call>,
@@ -171,7 +172,7 @@ fn read_edge(ctx: &Eval<'_>, e: &Expr, edge: ConditionEdge) -> Result<Cond, Erro
             let mut actors = Vec::new();
             // A sampled variable: its method, read every period (§7.3.10 `sample`).
             let (measure, sampled) = match sampled_var(ctx, measure)? {
-                Some((inner, period)) => (inner, Some(period)),
+                Some((inner, event)) => (inner, Some(Box::new(event))),
                 None => (&**measure, None),
             };
             // An external method's result: a value the host provides each step.
@@ -242,14 +243,17 @@ impl Cond {
     }
 }
 
-/// When `e` names a `var` of the scenario declared `= sample(m, every(p))` (§7.3.10.5): the
-/// expression m and the period p (s). Its value changes only at the samples, at each multiple of
-/// p from the run's start; a comparison of it holds from a sample at which the method's value
-/// satisfies it to the next sample. So `rise(x < v)` in an `until` or `wait` is read as the
-/// first sample at which m < v (a sample at which it held before cannot have been followed by
-/// a rise in a phase that was still waiting for one, unless it held at the phase's start:
-/// docs/dsl.md).
-fn sampled_var<'e>(ctx: &Eval<'e>, e: &Expr) -> Result<Option<(&'e Expr, f64)>, Error> {
+/// When `e` names a `var` of the scenario declared `= sample(m, e)` (§7.3.10.5 "sample the
+/// value of an expression when an event occurs"): the expression m and the event e, read as
+/// a condition of its own (`every(p, offset: o)`: samples at o + k·p from the scenario's start;
+/// `@e` of an emitted or declared event; `rise(…)`, `fall(…)`, `elapsed(d)`). The variable's
+/// value changes only at the occurrences of e; a comparison of it holds from an occurrence at
+/// which m satisfies it to the next one. So `rise(x < v)` in an `until` or `wait` is read as the
+/// first occurrence at which m < v (an occurrence at which it held before cannot have been
+/// followed by a rise in a phase that was still waiting for one, unless it held at the phase's
+/// start: docs/dsl.md). The sample's default (its third argument) is the value before the
+/// first occurrence, at which no comparison is read.
+fn sampled_var<'e>(ctx: &Eval<'e>, e: &Expr) -> Result<Option<(&'e Expr, Cond)>, Error> {
     let ExprKind::Name(n) = &e.kind else {
         return Ok(None);
     };
@@ -270,27 +274,10 @@ fn sampled_var<'e>(ctx: &Eval<'e>, e: &Expr) -> Result<Option<(&'e Expr, f64)>, 
     if s.text != "sample" {
         return Ok(None);
     }
-    let (Some(inner), Some(every)) = (args.first(), args.get(1)) else {
+    let (Some(inner), Some(event)) = (args.first(), args.get(1)) else {
         return Ok(None);
     };
-    match &every.value.kind {
-        ExprKind::Temporal(ev, ev_args) if ev.text == "every" => {
-            let period = every_args(ctx, every.value.span, ev_args)?;
-            if period.offset != 0.0 {
-                return Err(ctx.files.err(
-                    K::Condition,
-                    every.value.span,
-                    "expected sample(…, every(p)) without an offset, found one (not run yet)",
-                ));
-            }
-            Ok(Some((&inner.value, period.period)))
-        }
-        _ => Err(ctx.files.err(
-            K::Condition,
-            every.value.span,
-            "expected every(p) as the event of sample(…), found another event (not run yet)",
-        )),
-    }
+    Ok(Some((&inner.value, read(ctx, &event.value)?)))
 }
 
 fn unsupported(ctx: &Eval<'_>, e: &Expr) -> Error {

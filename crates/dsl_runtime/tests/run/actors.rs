@@ -168,6 +168,39 @@ fn a_sampled_variable_ends_a_phase_at_a_sample() {
     assert!((r.at(2.0, "ego").s - 50.0).abs() < S_TOL);
 }
 
+/// §7.3.10.5 `sample(m, e)` with e `every(p, offset: o)`: samples at o + k·p (issue 27; was an
+/// error "not run yet"). By hand in sampled_ttc_offset.osc: TTC(t) = 4.6 − t, sampled at 0.5 s
+/// (4.1 s) and 2.5 s (2.1 s < 3 s): the phase ends at 2.5 s, ego at 60 m.
+#[test]
+fn a_variable_sampled_with_an_offset_ends_a_phase_at_an_offset_sample() {
+    let r = crate::support::run("actors/sampled_ttc_offset", 0, None);
+    let (s, e) = r.phase("do.1");
+    assert!(s.abs() < T_TOL && (e - 2.5).abs() < T_TOL, "[{s}, {e}]");
+    assert!((r.at(2.5, "ego").s - 60.0).abs() < S_TOL);
+}
+
+/// §7.3.10.5 `sample(m, @e)` of an emitted event: m read at each occurrence (issue 27; was an
+/// error "not run yet"). By hand in sampled_ttc_event.osc: `look` at 1.0 s and 2.5 s, seen in
+/// the steps ending 1.05 s (TTC 3.6 s) and 2.55 s (2.1 s < 3 s): the phase ends at 2.55 s, ego
+/// at 61 m; the emissions are in the event log at 1.0 and 2.5 s.
+#[test]
+fn a_variable_sampled_at_an_emitted_event_ends_a_phase_at_its_occurrence() {
+    let r = crate::support::run("actors/sampled_ttc_event", 0, None);
+    let (s, e) = r.phase("do.1");
+    assert!(s.abs() < T_TOL && (e - 2.55).abs() < T_TOL, "[{s}, {e}]");
+    assert!((r.at(2.55, "ego").s - 61.0).abs() < S_TOL);
+    let emitted: Vec<f64> = r
+        .commands
+        .iter()
+        .filter(|(_, _, ty, content)| ty == "emit" && content == "look")
+        .map(|(t, ..)| *t)
+        .collect();
+    assert_eq!(emitted.len(), 2, "{emitted:?}");
+    for (got, want) in emitted.iter().zip([1.0, 2.5]) {
+        assert!((got - want).abs() < T_TOL, "{emitted:?}");
+    }
+}
+
 #[test]
 fn vehicles_take_their_category_from_vehicle_category() {
     use scenario::VehicleCategory as C;
