@@ -160,12 +160,22 @@ fn a_stationary_object_is_located_once_and_before_it_is_used() {
     );
 }
 
+/// Runs `actors/NAME`, whose ego's phase `do.1` ends on a sampled variable: it must end at
+/// `end` s with ego at s = `s` m then.
+fn sampled_phase_ends(name: &str, end: f64, s: f64) -> crate::support::Run {
+    let r = crate::support::run(&format!("actors/{name}"), 0, None);
+    let (s0, e) = r.phase("do.1");
+    assert!(
+        s0.abs() < T_TOL && (e - end).abs() < T_TOL,
+        "{name}: [{s0}, {e}]"
+    );
+    assert!((r.at(end, "ego").s - s).abs() < S_TOL, "{name}");
+    r
+}
+
 #[test]
 fn a_sampled_variable_ends_a_phase_at_a_sample() {
-    let r = crate::support::run("actors/sampled_ttc", 0, None);
-    let (s, e) = r.phase("do.1");
-    assert!(s.abs() < T_TOL && (e - 2.0).abs() < T_TOL, "[{s}, {e}]");
-    assert!((r.at(2.0, "ego").s - 50.0).abs() < S_TOL);
+    sampled_phase_ends("sampled_ttc", 2.0, 50.0);
 }
 
 /// §7.3.10.5 `sample(m, e)` with e `every(p, offset: o)`: samples at o + k·p (issue 27; was an
@@ -173,10 +183,7 @@ fn a_sampled_variable_ends_a_phase_at_a_sample() {
 /// (4.1 s) and 2.5 s (2.1 s < 3 s): the phase ends at 2.5 s, ego at 60 m.
 #[test]
 fn a_variable_sampled_with_an_offset_ends_a_phase_at_an_offset_sample() {
-    let r = crate::support::run("actors/sampled_ttc_offset", 0, None);
-    let (s, e) = r.phase("do.1");
-    assert!(s.abs() < T_TOL && (e - 2.5).abs() < T_TOL, "[{s}, {e}]");
-    assert!((r.at(2.5, "ego").s - 60.0).abs() < S_TOL);
+    sampled_phase_ends("sampled_ttc_offset", 2.5, 60.0);
 }
 
 /// §7.3.10.5 `sample(m, @e)` of an emitted event: m read at each occurrence (issue 27; was an
@@ -185,10 +192,7 @@ fn a_variable_sampled_with_an_offset_ends_a_phase_at_an_offset_sample() {
 /// at 61 m; the emissions are in the event log at 1.0 and 2.5 s.
 #[test]
 fn a_variable_sampled_at_an_emitted_event_ends_a_phase_at_its_occurrence() {
-    let r = crate::support::run("actors/sampled_ttc_event", 0, None);
-    let (s, e) = r.phase("do.1");
-    assert!(s.abs() < T_TOL && (e - 2.55).abs() < T_TOL, "[{s}, {e}]");
-    assert!((r.at(2.55, "ego").s - 61.0).abs() < S_TOL);
+    let r = sampled_phase_ends("sampled_ttc_event", 2.55, 61.0);
     let emitted: Vec<f64> = r
         .commands
         .iter()
