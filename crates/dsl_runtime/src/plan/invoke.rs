@@ -85,7 +85,7 @@ impl Planner<'_> {
             ));
         }
         if self.random.contains_key(&inv.actor) {
-            return self.plan_random_traffic(p, inv, t0, out);
+            return self.plan_random_traffic(p, inv, t0, out, after);
         }
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),

@@ -170,18 +170,7 @@ impl Planner<'_> {
         t: f64,
     ) -> Result<(scenario::LaneChangeTarget, Option<i32>), Error> {
         let given = arg(&inv.args, "num_of_lanes");
-        let n = match given {
-            None => 1.0,
-            Some(a) => match a.number()? {
-                x if x >= 1.0 && x.fract() == 0.0 => x,
-                x => {
-                    return Err(a.site.err(
-                        K::Argument,
-                        format!("expected num_of_lanes of 1 or more, found {x}"),
-                    ))
-                }
-            },
-        };
+        let n = num_of_lanes(inv)?;
         let side = match arg(&inv.args, "side") {
             None => None,
             Some(a) => match a.eval()? {
@@ -267,6 +256,20 @@ impl Planner<'_> {
         };
         // The reference's lane at the action's start (len 0).
         self.lane_target(&m, target, Some(t), 0.0)
+    }
+}
+
+/// The `num_of_lanes` of `change_lane(…)` `inv`: a whole number of 1 or more, 1 when not given.
+pub(super) fn num_of_lanes(inv: &Invoke) -> Result<f64, Error> {
+    match arg(&inv.args, "num_of_lanes") {
+        None => Ok(1.0),
+        Some(a) => match a.number()? {
+            x if x >= 1.0 && x.fract() == 0.0 => Ok(x),
+            x => Err(a.site.err(
+                K::Argument,
+                format!("expected num_of_lanes of 1 or more, found {x}"),
+            )),
+        },
     }
 }
 

@@ -332,21 +332,22 @@ impl Planner<'_> {
 
     /// Action `inv` of random traffic `inv.actor` (phase `p`, starting at `t0`): the phase
     /// that creates its members (planned by `place_random_traffic`: their starts and drivers)
-    /// or a later action given to their models (`random_traffic_actions`) into `out`; what it
-    /// cannot run is an error. Returns the phase's end when the action sets it.
+    /// or a later action given to their models (`random_traffic_actions`) into `out` (and
+    /// `after`, at the phase end); what it cannot run is an error. Returns the phase's end when the action sets it.
     pub(super) fn plan_random_traffic(
         &mut self,
         p: &Phase,
         inv: &Invoke,
         t0: Option<f64>,
         out: &mut Vec<Planned>,
+        after: &mut Vec<Planned>,
     ) -> Result<Option<When>, Error> {
         let g = &inv.actor;
         let first = self.groups[g]
             .iter()
             .all(|m| self.first_leaf.get(m) == Some(&p.path));
         if !first {
-            return self.plan_random_traffic_action(p, inv, t0, out);
+            return self.plan_random_traffic_action(p, inv, t0, out, after);
         }
         if !matches!(
             inv.kind,

@@ -10,7 +10,7 @@
 //! (`random_traffic_late`: created then). From then on each member's driver model
 //! drives it, so a later action of the group is given to every member's model as what that
 //! model takes from it — its desired speed v0 (the engine hands a SpeedAction on a domain a
-//! model holds to the model, `engine::controller::strategy`):
+//! model holds to the model, `engine::controller::strategy`), or what keeps it to its lane:
 //!
 //! | action on the group | each member's model | the phase ends |
 //! | --- | --- | --- |
@@ -19,16 +19,26 @@
 //! | `change_speed(v)`, `assign_speed(v)` | v0 = v: the model gets there at its own rate (the IDM's a and b), behind a slower leader not at all | at once (the members' models have the target), or by the action's `duration:` |
 //! | `keep_speed()` | v0 = the speed the member has at the phase start (a SpeedAction to its own speed) | by its duration or `until` |
 //! | `remain_stationary()` | v0 = 0: the model brakes at its comfortable deceleration b to a stop and stands | by its duration or `until` |
+//! | `change_lane(n, side [, reference: x])` | a LaneChangeAction to the lane n to the side of its own (x's) lane in its direction of travel, which `mobil` makes its next lane change with its own lateral shape; no drivable lane there driven the same way: the member keeps its lane (the engine logs it) | at once, or by the action's `duration:` |
+//! | `follow_lane()`, `keep_lane()` beside an action | the model's lateral domain taken back over the phase (ActivateControllerAction, lateral false): the default controller keeps the member in the lane it is in, brought to its centre (a LaneChangeAction to that lane: a change under way ends there); handed back at the phase end | by its duration or `until` |
 //!
-//! What the model does not take is an error at its place: `rate_profile`/`rate_peak` of a
-//! speed change (the model's rate is its own), other modifiers than `speed(v)` and
-//! `avoid_collisions(true)` (the model avoids collisions: `avoid_collisions(false)` asks what
-//! it cannot do), and the group's other actions (lane, position and path actions: a member's
-//! model drives its lane and place).
+//! Bad input, refused at its place with §8.7.18.1's words ("the behavioral model assigned to
+//! each vehicle defines the actual behavior of the vehicle within the group"): `rate_profile`/
+//! `rate_peak` (the model's rate is its own), `change_lane` without a side (the side "among
+//! those that have the lane" is drawn where the plan has the actor, and a member's lane is
+//! its model's) or with an offset or target, a lane change of members whose model is the IDM
+//! (created keeping their lanes: it changes none), other modifiers than `speed(v)`,
+//! `keep_lane()` and `avoid_collisions(true)` (`avoid_collisions(false)` asks what the model
+//! cannot do), and the group's position, path, orientation, acceleration and gap actions (a
+//! motion of each member the model defines; the group has no formation to place).
 
-use scenario::{SpeedTarget, SpeedTargetValueType};
+use scenario::{
+    ControllerAction, ControllerDomains, DynamicsDimension, DynamicsShape, LaneChangeTarget,
+    LateralAction, PrivateAction, SpeedTarget, SpeedTargetValueType, TransitionDynamics,
+};
 
 use super::action_args::positive;
+use super::lateral_actions::{num_of_lanes, DEFAULT_LATERAL_SPEED};
 use super::place::DEFAULT_SPEED;
 use super::planner::Planner;
 use super::speed_actions::{speed_target, step_speed};
@@ -73,7 +83,7 @@ impl Planner<'_> {
 }
 
 /// What an action of random traffic asks of each member's model.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub(super) enum Ask {
     /// Nothing new (a drive without a speed).
     Nothing,
@@ -81,7 +91,24 @@ pub(super) enum Ask {
     Desired(f64),
     /// The speed each member has at the phase start as its desired speed.
     Keep,
+    /// A lane change this many lanes to the left (right: negative) of the member's own lane,
+    /// or of another actor's (`change_lane(n, side[, reference: x])`), made by the model.
+    Lane(i32, Option<String>),
 }
+
+/// What a later action of random traffic asks (`ask`): of each member's model, whether the
+/// members keep their lanes over the phase, and the action's own duration.
+struct Asked {
+    ask: Ask,
+    /// `follow_lane()`, `keep_lane()`: no lane change over the phase (the model's lateral
+    /// domain taken back for it: `Planner::plan_random_traffic_action`).
+    hold_lane: bool,
+    /// The action's `duration:`.
+    own: Option<f64>,
+}
+
+/// §8.7.18.1's words, which every refusal of a later action of random traffic gives.
+const BEHAVIOUR: &str = "§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\"";
 
 /// Checks the `avoid_collisions(…)` of random traffic `g`: `true` is what its members' model
 /// does already; `false` an error at the modifier.
@@ -114,27 +141,113 @@ fn desired(g: &str, m: &Modifier) -> Result<Option<f64>, Error> {
     Ok(Some(v))
 }
 
-/// What action `inv` of random traffic after its creation asks of each member's model, its
-/// own duration if any; an error at the place of what no model takes.
-fn ask(p: &Phase, inv: &Invoke) -> Result<(Ask, Option<f64>), Error> {
+/// The lane change `change_lane(num_of_lanes, side [, reference])` asks of each member of
+/// random traffic `g`: n lanes to the left (right: negative) of its own lane or of the
+/// reference's; what names no lane relative to the member an error at its argument.
+fn lane_change(p: &Phase, inv: &Invoke) -> Result<Ask, Error> {
+    let g = &inv.actor;
+    let n = num_of_lanes(inv)?;
+    // Right-hand traffic: the centre line is on the left of either direction.
+    let left = match arg(&inv.args, "side").map(|a| (a, a.eval())) {
+        None => {
+            return Err(p.site.err(
+                K::Argument,
+                format!("expected a side (left, right, inside, outside) in change_lane(…) of random traffic `{g}`, found none: the side among those that have the lane is drawn from where the plan has an actor, and each member's lane is its driver model's"),
+            ))
+        }
+        Some((a, v)) => match v? {
+            Val::Enum(m) if m == "left" || m == "inside" => true,
+            Val::Enum(m) if m == "right" || m == "outside" => false,
+            _ => {
+                return Err(a.site.err(
+                    K::Argument,
+                    format!("expected left, right, inside or outside in change_lane(…) of random traffic `{g}` (a lane beside each member's), found another value"),
+                ))
+            }
+        },
+    };
+    let reference = match arg(&inv.args, "reference") {
+        Some(r) => Some(r.path.clone().ok_or_else(|| {
+            r.site.err(
+                K::Argument,
+                "expected an actor as the reference of change_lane(…)",
+            )
+        })?),
+        None => None,
+    };
+    for key in ["offset", "target"] {
+        if let Some(a) = arg(&inv.args, key) {
+            return Err(a.site.err(
+                K::Argument,
+                format!("expected no {key} in change_lane(…) of random traffic `{g}` (each member's driver model changes into the lane's centre with its own lateral shape, {BEHAVIOUR}), found one"),
+            ));
+        }
+    }
+    let n = n as i32;
+    Ok(Ask::Lane(if left { n } else { -n }, reference))
+}
+
+/// A LaneChangeAction to the lane `by` lanes left (right: negative) of `x`'s, at its centre,
+/// sinusoidal at the plan's default peak lateral speed: the engine's when the default
+/// controller holds the domain, the target alone when a model does (its own lateral shape).
+fn lane_change_to(x: &str, by: i32) -> PrivateAction {
+    PrivateAction::Lateral(LateralAction::LaneChange {
+        target_lane_offset: None,
+        dynamics: TransitionDynamics {
+            dynamics_shape: DynamicsShape::Sinusoidal,
+            dynamics_dimension: DynamicsDimension::Rate,
+            value: DEFAULT_LATERAL_SPEED,
+            following_mode: None,
+        },
+        target: LaneChangeTarget::Relative {
+            entity_ref: x.to_string(),
+            value: by,
+        },
+    })
+}
+
+/// What action `inv` of random traffic after its creation asks of each member's model
+/// (`idm`: its members keep their lanes, their model changes none), its own duration if any;
+/// bad input at the place of what no model takes.
+fn ask(p: &Phase, inv: &Invoke, idm: bool) -> Result<Asked, Error> {
     let g = &inv.actor;
     for key in ["rate_profile", "rate_peak"] {
         if let Some(a) = arg(&inv.args, key) {
             return Err(a.site.err(
                 K::Unsatisfiable,
-                format!("expected no {key} in {}(…) of random traffic `{g}` (each member's driver model changes its speed at the model's own rate), found one", inv.action),
+                format!("expected no {key} in {}(…) of random traffic `{g}` (each member's driver model changes its speed and lane at the model's own rate: {BEHAVIOUR}), found one", inv.action),
             ));
         }
     }
+    let mut hold_lane = false;
     let mut ask = match inv.kind {
         Action::Move => Ask::Nothing,
         Action::ChangeSpeed | Action::AssignSpeed => Ask::Desired(speed_target(inv, p)?),
         Action::KeepSpeed => Ask::Keep,
         Action::RemainStationary => Ask::Desired(0.0),
+        Action::ChangeLane if idm => {
+            return Err(p.site.err(
+                K::Unsatisfiable,
+                format!("expected no change_lane(…) of random traffic `{g}`, whose members keep their lanes (keep_lane(), follow_lane() or lane(…) at: all where it was created: their driver model, the IDM, changes no lane; {BEHAVIOUR}), found one"),
+            ))
+        }
+        Action::ChangeLane => lane_change(p, inv)?,
+        Action::FollowLane => {
+            for key in ["offset", "target"] {
+                if let Some(a) = arg(&inv.args, key) {
+                    return Err(a.site.err(
+                        K::Argument,
+                        format!("expected no {key} in follow_lane(…) of random traffic `{g}` (each member keeps the lane it is in, at its centre: {BEHAVIOUR}), found one"),
+                    ));
+                }
+            }
+            hold_lane = true;
+            Ask::Nothing
+        }
         _ => {
             return Err(p.site.err(
-                K::Unsupported,
-                format!("expected drive(), move(), change_speed(…), assign_speed(…), keep_speed() or remain_stationary() of random traffic `{g}` after its creation (each member's driver model takes a desired speed from them), found {}(…)", inv.action),
+                K::Unsatisfiable,
+                format!("expected drive(), move(), change_speed(…), assign_speed(…), keep_speed(), remain_stationary(), change_lane(…) or follow_lane() of random traffic `{g}` after its creation (a desired speed, a lane change or the lane kept, what its members' driver model takes), found {}(…): a place, path, orientation, acceleration or gap asked of the whole group is a motion of each member that the group does not give ({BEHAVIOUR}; the group has no formation to place)", inv.action),
             ))
         }
     };
@@ -143,6 +256,14 @@ fn ask(p: &Phase, inv: &Invoke) -> Result<(Ask, Option<f64>), Error> {
             ModKind::AvoidCollisions => check_avoid(g, m)?,
             // Implied by the action itself (keep_speed(), remain_stationary()).
             ModKind::KeepSpeed | ModKind::KeepPosition if m.name == inv.action => {}
+            ModKind::KeepLane => hold_lane = true,
+            // Not run yet: the members changed to lane n in each direction, then kept there.
+            ModKind::Lane => {
+                return Err(m.site.err(
+                    K::Unsupported,
+                    format!("expected no lane(…) beside an action of random traffic `{g}` after its creation (not run yet: lane(n) at: all there would change each member to lane n of its direction and keep it there), found one"),
+                ))
+            }
             ModKind::Speed if inv.kind == Action::Move && m.at != At::End => match desired(g, m)? {
                 Some(v) => ask = Ask::Desired(v),
                 None => return Err(refused(g, m)),
@@ -150,14 +271,24 @@ fn ask(p: &Phase, inv: &Invoke) -> Result<(Ask, Option<f64>), Error> {
             _ => return Err(refused(g, m)),
         }
     }
-    Ok((ask, positive(inv, "duration")?))
+    if hold_lane && matches!(ask, Ask::Lane(..)) {
+        return Err(p.site.err(
+            K::Unsatisfiable,
+            format!("expected a lane change or the lane kept by random traffic `{g}` in one phase, found both"),
+        ));
+    }
+    Ok(Asked {
+        ask,
+        hold_lane,
+        own: positive(inv, "duration")?,
+    })
 }
 
 /// The error at modifier `m`, which no member's model takes after the group's creation.
 fn refused(g: &str, m: &Modifier) -> Error {
     m.site.err(
-        K::Unsupported,
-        format!("expected speed(v) on a drive or avoid_collisions(true) beside an action of random traffic `{g}` after its creation (its members' driver model takes a desired speed), found `{}(…)`", m.name),
+        K::Modifier,
+        format!("expected speed(v) on a drive, keep_lane() or avoid_collisions(true) beside an action of random traffic `{g}` after its creation (a desired speed or the lane kept, what its members' driver model takes), found `{}(…)`: it constrains a motion of each member that the model defines ({BEHAVIOUR})", m.name),
     )
 }
 
@@ -213,10 +344,15 @@ impl Planner<'_> {
                     });
                     c.keep_lane |= m.at == At::All;
                 }
-                (ModKind::Lane, _) if m.at != At::End && m.args.len() <= 2 => {
+                (ModKind::Lane, _) if m.at != At::End => {
                     let n = m.arg("lane").map(Arg::number).transpose()?;
                     let from = m.arg("from").map(Arg::eval).transpose()?;
-                    let (Some(n), true) = (n, m.args.len() == 1 || from.is_some()) else {
+                    // `at:` is the modifier's moment, no lane's argument.
+                    let others = m
+                        .args
+                        .iter()
+                        .any(|(k, _)| !matches!(k.as_str(), "lane" | "from" | "at"));
+                    let (Some(n), false) = (n, others) else {
                         return Err(self.refused_at_creation(g, m));
                     };
                     let from_left = matches!(from, Some(Val::Enum(f)) if f == "left");
@@ -273,41 +409,99 @@ impl Planner<'_> {
     }
 
     /// Plans action `inv` (phase `p`, starting at `t0`) of random traffic `inv.actor` after
-    /// its creation: a SpeedAction (a step) per member, which the engine hands to the
-    /// member's model as its desired speed, into `out`. Returns the phase's end when the
-    /// action sets it (module doc).
+    /// its creation into `out` (module doc): per member a SpeedAction (a step) or a
+    /// LaneChangeAction, which the engine hands to the member's model, or, to keep the lanes,
+    /// the model's lateral domain taken back at the phase start and given back at its end
+    /// (`after`). Returns the phase's end when the action sets it.
     pub(super) fn plan_random_traffic_action(
         &self,
         p: &Phase,
         inv: &Invoke,
         t0: Option<f64>,
         out: &mut Vec<Planned>,
+        after: &mut Vec<Planned>,
     ) -> Result<Option<When>, Error> {
-        let (ask, own) = ask(p, inv)?;
         let members = &self.groups[&inv.actor];
+        let idm = members.iter().all(|m| self.driver_model(m) == Some("idm"));
+        let Asked {
+            ask,
+            hold_lane,
+            own,
+        } = ask(p, inv, idm)?;
+        if let Ask::Lane(_, Some(x)) = &ask {
+            if !self.index.contains_key(x) {
+                return Err(p.site.err(
+                    K::Argument,
+                    format!("expected an actor as the reference of change_lane(…) of random traffic `{}`, found `{x}`", inv.actor),
+                ));
+            }
+        }
+        let lateral = |on: bool| {
+            PrivateAction::Controller(Box::new(ControllerAction::Activate {
+                object_controller_ref: None,
+                domains: ControllerDomains {
+                    lateral: Some(on),
+                    ..ControllerDomains::default()
+                },
+            }))
+        };
         for (i, m) in members.iter().enumerate() {
-            let target = match ask {
+            let name = |what: &str| format!("{}/{m}/{}:{what}", p.path, i + 1);
+            // The IDM holds no lateral domain: a member it drives keeps its lane already.
+            if hold_lane && !idm {
+                out.push(Planned::with_phase(
+                    m,
+                    name("keep_lane"),
+                    lateral(false),
+                    &p.site,
+                ));
+                // The lane it is in, at its centre: a change the model was making ends there.
+                out.push(Planned::with_phase(
+                    m,
+                    name("keep_lane_centre"),
+                    lane_change_to(m, 0),
+                    &p.site,
+                ));
+                after.push(Planned::with_phase(
+                    m,
+                    name("keep_lane_end"),
+                    lateral(true),
+                    &p.site,
+                ));
+            }
+            let action = match &ask {
                 Ask::Nothing => continue,
-                Ask::Desired(v) => SpeedTarget::Absolute(v),
-                Ask::Keep => SpeedTarget::Relative {
+                Ask::Desired(v) => step_speed(SpeedTarget::Absolute(*v)),
+                Ask::Keep => step_speed(SpeedTarget::Relative {
                     entity_ref: m.clone(),
                     value: 0.0,
                     speed_target_value_type: SpeedTargetValueType::Delta,
                     continuous: false,
-                },
+                }),
+                // The model's own lateral shape: the dynamics are the plan's default change's,
+                // which the model does not follow.
+                Ask::Lane(by, x) => lane_change_to(x.as_deref().unwrap_or(m), *by),
             };
-            out.push(Planned::with_phase(
-                m,
-                format!("{}/{m}/{}:{}", p.path, i + 1, inv.action),
-                step_speed(target),
-                &p.site,
-            ));
+            out.push(Planned::with_phase(m, name(&inv.action), action, &p.site));
         }
-        let instant = matches!(inv.kind, Action::ChangeSpeed | Action::AssignSpeed);
+        let instant = matches!(
+            inv.kind,
+            Action::ChangeSpeed | Action::AssignSpeed | Action::ChangeLane
+        );
         Ok(match own {
             Some(d) => Some(self.ends(t0, d, "", p)),
             None if instant => Some(self.ends(t0, 0.0, "", p)),
             None => None,
         })
+    }
+
+    /// The driver model of member `m` of random traffic (`idm`, `mobil`), if it has one.
+    fn driver_model(&self, m: &str) -> Option<&str> {
+        let c = self.entities[*self.index.get(m)?].driver.as_ref()?;
+        c.properties
+            .properties
+            .iter()
+            .find(|(k, _)| k == "model")
+            .map(|(_, v)| v.as_str())
     }
 }

@@ -197,9 +197,28 @@ fn random_traffic_without_room_on_the_road_is_an_error() {
 fn a_later_phase_of_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_later_phase",
-        "expected drive(), move(), change_speed(…), assign_speed(…), keep_speed() or remain_stationary() of random traffic `g` after its creation (each member's driver model takes a desired speed from them), found change_lane(…)",
-        "8:9",
+        "expected drive(), move(), change_speed(…), assign_speed(…), keep_speed(), remain_stationary(), change_lane(…) or follow_lane() of random traffic `g` after its creation (a desired speed, a lane change or the lane kept, what its members' driver model takes), found assign_acceleration(…): a place, path, orientation, acceleration or gap asked of the whole group is a motion of each member that the group does not give (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\"; the group has no formation to place)",
+        "9:9",
     );
+}
+
+/// Bad input of random traffic after its creation: what its members' model does not take is
+/// refused at its place as the scenario's error (`Unsatisfiable`, `Modifier`), not as a form
+/// the runtime does not run.
+#[test]
+fn what_random_traffics_model_does_not_take_after_its_creation_is_bad_input() {
+    for (name, message, at) in [
+        ("err_random_traffic_later_modifier", "expected speed(v) on a drive, keep_lane() or avoid_collisions(true) beside an action of random traffic `g` after its creation (a desired speed or the lane kept, what its members' driver model takes), found `lateral(…)`", "10:13"),
+        ("err_random_traffic_kept_lane_change", "expected no change_lane(…) of random traffic `g`, whose members keep their lanes (keep_lane(), follow_lane() or lane(…) at: all where it was created: their driver model, the IDM, changes no lane;", "9:9"),
+        ("err_random_traffic_later_phase", "found assign_acceleration(…)", "9:9"),
+    ] {
+        crate::along::refused(name, message, at);
+        let e = crate::support::lower(name, 0, None).expect_err(name);
+        assert!(
+            !matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported),
+            "{name}: {e}"
+        );
+    }
 }
 
 #[test]
@@ -729,5 +748,91 @@ fn random_traffic_created_later_or_beside_another_reproduces_by_seed() {
             moved >= 2,
             "{name}: {moved} of 3 members elsewhere with seed 3"
         );
+    }
+}
+
+/// The centre of lane `lane` of tests/roads/straight.xodr (3.5 m lanes either side of y = 0).
+fn lane_centre(lane: i32) -> f64 {
+    f64::from(lane.signum()) * (3.5 * f64::from(lane.abs()) - 1.75)
+}
+
+#[test]
+fn random_traffics_lane_change_is_each_members_models_and_follow_lane_keeps_its_lane() {
+    // random_traffic_lane_change.osc, worked in the file; seeds 0-3.
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic_lane_change", seed, None);
+        for i in 0..4 {
+            let m = format!("g.vehicles[{i}]");
+            let before = r.at(4.0, &m);
+            // The lane left of it in its direction of travel (+s: -3 -> -2; -s: 2 -> 1).
+            let want = if before.lane < 0 {
+                before.lane + 1
+            } else {
+                before.lane - 1
+            };
+            let note =
+                format!("LaneChangeAction handed to the controller: lane change to lane {want}");
+            assert!(
+                r.controllers
+                    .iter()
+                    .any(|(t, e, n)| (t - 4.0).abs() < 1e-9 && e == &m && n == &note),
+                "seed {seed} {m}: {:?}",
+                r.controllers
+            );
+            // On the new lane's centre once the model's change is made (4.58 s of travel at a
+            // steady speed; longer behind a member that brakes, as one standing at the road's
+            // end), within the cruise phase; never before the action.
+            let reached =
+                r.frames
+                    .iter()
+                    .filter(|(t, _)| *t > 4.0 && *t <= 12.0)
+                    .any(|(_, objs)| {
+                        objs.iter().any(|o| {
+                            o.name == m && o.lane == want && (o.y - lane_centre(want)).abs() < 1e-3
+                        })
+                    });
+            assert!(reached, "seed {seed} {m} never on lane {want}'s centre");
+            // follow_lane(): in one lane at its centre from 17.5 s to the phase end at 22 s.
+            let kept = r.at(17.5, &m).lane;
+            for (t, objs) in r
+                .frames
+                .iter()
+                .filter(|(t, _)| *t >= 17.5 && *t <= 22.0 + 1e-9)
+            {
+                let o = objs
+                    .iter()
+                    .find(|o| o.name == m)
+                    .expect("every member in every frame");
+                assert!(
+                    o.lane == kept && (o.y - lane_centre(kept)).abs() < 1e-6,
+                    "seed {seed} {m} at {t}: {o:?}"
+                );
+            }
+        }
+        // h's member: in lane -1 at 1 s, whose left is lane 1, driven in -s: not taken.
+        let h = "h.vehicles[0]";
+        assert_eq!(r.at(1.0, h).lane, -1, "seed {seed}");
+        assert!(
+            r.controllers.iter().any(|(t, e, n)| (t - 1.0).abs() < 1e-9
+                && e == h
+                && n.contains("ignored: no drivable lane 1 driven the same way")),
+            "seed {seed}: {:?}",
+            r.controllers
+        );
+        assert!(r
+            .frames
+            .iter()
+            .all(|(_, objs)| objs.iter().all(|o| o.name != h || o.lane < 0)));
+        for (phase, a, b) in [
+            ("do.1.left", 4.0, 4.0),
+            ("do.1.cruise", 4.0, 12.0),
+            ("do.1.hold", 12.0, 22.0),
+        ] {
+            let (s, e) = r.phase(phase);
+            assert!(
+                (s - a).abs() < 1e-9 && (e - b).abs() < 1e-9,
+                "{phase}: [{s}, {e}]"
+            );
+        }
     }
 }

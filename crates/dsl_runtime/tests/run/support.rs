@@ -28,6 +28,8 @@ pub struct Run {
     pub events: Vec<(f64, String, String)>,
     /// The event log's `customCommand` lines: (time, element, type, content).
     pub commands: Vec<(f64, String, String, String)>,
+    /// The event log's controller lines: (time, entity, note).
+    pub controllers: Vec<(f64, String, String)>,
 }
 
 struct Frames(Vec<(f64, Vec<Obj>)>);
@@ -55,6 +57,7 @@ impl FrameSink for Frames {
 struct Events(
     Vec<(f64, String, String)>,
     Vec<(f64, String, String, String)>,
+    Vec<(f64, String, String)>,
 );
 
 impl EventSink for Events {
@@ -75,6 +78,9 @@ impl EventSink for Events {
                 command_type.clone(),
                 content.clone(),
             )),
+            EventRecord::Controller {
+                time, entity, note, ..
+            } => self.2.push((*time, entity.clone(), note.clone())),
             _ => {}
         }
         Ok(())
@@ -162,7 +168,7 @@ pub fn run_scenario(
     let mut engine =
         Engine::new(scenario, network, config).unwrap_or_else(|e| panic!("{name}: {e}"));
     let mut frames = Frames(Vec::new());
-    let mut events = Events(Vec::new(), Vec::new());
+    let mut events = Events(Vec::new(), Vec::new(), Vec::new());
     loop {
         match engine.step(&mut frames, &mut events) {
             Ok(Some(_)) => break,
@@ -174,6 +180,7 @@ pub fn run_scenario(
         frames: frames.0,
         events: events.0,
         commands: events.1,
+        controllers: events.2,
     }
 }
 

@@ -32,7 +32,9 @@
 //!   speed, the speed the driver keeps); the transition shape is not followed, the model's own
 //!   dynamics are;
 //! - `mobil`: a LaneChangeAction's target lane becomes its next lane change, made with its own
-//!   lateral shape;
+//!   lateral shape; a target that is no drivable lane of the entity's road where it is, or one
+//!   driven the other way (a relative target counted across the centre line), is not taken:
+//!   the entity keeps its lane, and the log says why;
 //! - every other motion action, and every one given to `external`, is not taken (the log says
 //!   "ignored").
 //!

@@ -92,6 +92,27 @@ fn strategy(
     })
 }
 
+/// Whether `lane` is a drivable lane of `actor`'s road where it is, driven the way the actor
+/// travels (a lane a model can change into).
+fn drivable_same_way(world: &World, actor: EntityId, lane: i32) -> bool {
+    let Some(track) = &world.entity(actor).track else {
+        return false;
+    };
+    let net = &world.network;
+    let (Some(own), Some(to)) = (
+        net.lane_handle_on(track.road, track.lane_id, track.s),
+        net.lane_handle_on(track.road, lane, track.s),
+    ) else {
+        return false;
+    };
+    let drivable = net
+        .road_at(track.road)
+        .lane_section_at(track.s)
+        .lane(lane)
+        .is_some_and(|l| l.lane_type.is_drivable());
+    drivable && net.driving_direction(own) == net.driving_direction(to)
+}
+
 /// When `action` is a motion action on a domain a user controller of `actor` holds, hands it
 /// to that controller, logs what the controller made of it and returns `true`: the action
 /// then completes at once. `init`: the action belongs to the Init (a SpeedAction also sets
@@ -122,7 +143,16 @@ pub(crate) fn hand_over(
         e.speed = v.clamp(-e.max_speed(), e.max_speed());
     }
     let entity = world.entity(actor).name.clone();
+    // A lane no model could change into: none of the road's there, not drivable, or driven the
+    // other way (lane ids count across the centre line): the entity keeps its lane.
+    let no_lane = match s {
+        Some(Strategy::Lane(lane)) => !drivable_same_way(world, actor, lane),
+        _ => false,
+    };
     let taken = match (s, controllers.instance_mut(actor.index(), slot)) {
+        (Some(Strategy::Lane(lane)), Some(_)) if no_lane => Some(format!(
+            "ignored: no drivable lane {lane} driven the same way beside the entity, it keeps its lane"
+        )),
         (Some(s), Some(instance)) => instance.strategy(s),
         _ => None,
     };
@@ -133,6 +163,7 @@ pub(crate) fn hand_over(
         return Ok(true);
     };
     let note = match taken {
+        Some(what) if no_lane => format!("{kind} {what}"),
         Some(what) => format!("{kind} handed to the controller: {what}"),
         None => format!("{kind} ignored: its domain is held by the controller"),
     };
