@@ -24,6 +24,7 @@ use scenario::{DynamicsShape, SpeedTarget};
 
 use super::motion::{check_speed, speed_action};
 use super::planner::Planner;
+use super::shape_relative::place_reference;
 use super::speed_actions::Slot;
 use super::types::{Planned, When};
 use crate::error::{Error, ErrorKind as K};
@@ -119,13 +120,102 @@ impl Planner<'_> {
                 self.two_halves(m, target, (t, span, shape), (v0, delta, v0), names, out)?;
                 span
             }
-            other => {
-                return Err(m.site.err(
-                    K::Unsatisfiable,
-                    format!("expected rate_profile constant, smooth or none in `{}(…)`'s common_position_shape, found {other} (as soon as possible fixes no speed the position rises at)", m.name),
-                ))
-            }
+            other => return Err(profile_error(m, other)),
         };
         Ok(Some(When::At(t + span)))
     }
+
+    /// The s a shaped `position(d, ahead_of/behind: x, at: end)` of `target` asks for in a
+    /// phase without a duration, starting at `t0`: the shape's own timing sets the end T, and
+    /// x's s then ± d is the place (`track: actual` x's planned s at t0 + T; `projected` its s
+    /// at t0 + its speed then × T). T solves T = k·Δ(T), Δ(T) the distance along the actor's
+    /// lane to x's place at T and k the time per metre of the profile (`constant`: 1 /
+    /// rate_peak; `smooth`, `none`: 2 / (v₀ + rate_peak)): the first root, bracketed on a
+    /// scan of [`SCAN_STEP`] s and bisected. Where x moves slower than the profile's mean
+    /// speed T − k·Δ(T) rises, one root; with x as fast or faster, none within
+    /// [`SOLVE_HORIZON`]: an error naming both. `None` without a reference.
+    pub(super) fn shaped_place_at_rate(
+        &self,
+        m: &Modifier,
+        (target, t0): (&str, Option<f64>),
+        d: f64,
+        (profile, peak): (&str, Option<f64>),
+    ) -> Result<Option<f64>, Error> {
+        let Some((e, sign)) = place_reference(m) else {
+            return Ok(None);
+        };
+        let x = self.entity_of(e)?;
+        let Some(t) = t0 else {
+            // plan_position_shape's refusal: the distance is measured from the plan's place.
+            return Ok(Some(d));
+        };
+        let (lane, s0) = (self.track(target).lane(t), self.s_at(target, t));
+        let v0 = self.track(target).at(t).1;
+        let peak = peak.filter(|v| *v > 0.0);
+        let k = match (profile, peak) {
+            ("constant", Some(v)) => 1.0 / v,
+            ("smooth" | "none", Some(v)) => 2.0 / (v0 + v),
+            ("constant" | "smooth" | "none", None) => {
+                return Err(m.site.err(
+                    K::Unsatisfiable,
+                    format!("expected a rate_peak in `{}(…)`'s common_position_shape relative to `{x}` in a phase without a duration (its timing sets the end where `{x}`'s place is read), found none", m.name),
+                ))
+            }
+            (other, _) => return Err(profile_error(m, other)),
+        };
+        let (sx0, vx0) = (self.s_at(&x, t), self.track(&x).at(t).1);
+        let place = |span: f64| {
+            sign * d
+                + if m.projected {
+                    sx0 + vx0 * span
+                } else {
+                    self.s_at(&x, t + span)
+                }
+        };
+        let g = |span: f64| span - k * self.road.lane_distance(lane, s0, place(span));
+        if g(0.0) >= 0.0 {
+            // Nothing ahead to cover: plan_position_shape's refusal names the distance.
+            return Ok(Some(place(0.0)));
+        }
+        let mut lo = 0.0;
+        let hi = loop {
+            let next = lo + SCAN_STEP;
+            if next > SOLVE_HORIZON {
+                let (side, v_mean) = (if sign > 0.0 { "ahead of" } else { "behind" }, 1.0 / k);
+                return Err(e.site.err(
+                    K::Unsatisfiable,
+                    format!("expected `{target}` to reach its place {d} m {side} `{x}` at the rate of `{}(…)`'s shape (a mean {v_mean:.2} m/s), found `{x}` moving away as fast: no end within {SOLVE_HORIZON} s where the profile covering the distance to `{x}`'s place then takes that long", m.name),
+                ));
+            }
+            if g(next) >= 0.0 {
+                break next;
+            }
+            lo = next;
+        };
+        let (mut a, mut b) = (lo, hi);
+        for _ in 0..BISECTIONS {
+            let mid = (a + b) / 2.0;
+            if g(mid) < 0.0 {
+                a = mid;
+            } else {
+                b = mid;
+            }
+        }
+        Ok(Some(place(b)))
+    }
 }
+
+/// The refusal of a `rate_profile` other than constant, smooth or none.
+fn profile_error(m: &Modifier, other: &str) -> Error {
+    m.site.err(
+        K::Unsatisfiable,
+        format!("expected rate_profile constant, smooth or none in `{}(…)`'s common_position_shape, found {other} (as soon as possible fixes no speed the position rises at)", m.name),
+    )
+}
+
+/// How far the end of a shaped position relative to another actor is searched (s).
+const SOLVE_HORIZON: f64 = 3600.0;
+/// The scan that brackets its first root (s).
+const SCAN_STEP: f64 = 0.5;
+/// Halvings of the bracket: 0.5 s / 2⁶⁰, below f64's resolution of the end.
+const BISECTIONS: usize = 60;

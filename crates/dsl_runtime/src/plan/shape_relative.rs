@@ -1,9 +1,9 @@
 //! A shaped modifier relative to another actor (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.4 with
 //! §8.9's reference objects): `speed(shape: s, faster_than/slower_than/same_as: x)`,
 //! `acceleration(shape: s, faster_than/slower_than/same_as: x)`, `lateral(d, left_of/right_of/
-//! side_of: x, at: end, shape: s)`, `position(d, ahead_of/behind: x, at: end, shape: s)` over a
-//! phase with a duration (x's s at its end ± d, the position the shape's profile covers the
-//! distance to).
+//! side_of: x, at: end, shape: s)`, `position(d, ahead_of/behind: x, at: end, shape: s)` (x's s
+//! at the phase end ± d, the position the shape's profile covers the distance to; without a
+//! duration at the end the shape's timing sets, `position_shape`).
 //!
 //! The standard: the shape's target "can be taken from" the modifier (Code 79), and the
 //! modifier's value relative to x is "the speed [acceleration, lateral position] of the actor
@@ -53,6 +53,16 @@ const HOLDS_TOL: f64 = 1e-6;
 /// How far about a moment x's acceleration pieces are read (s): the piece that starts there at
 /// the phase start, the one that ends there after it.
 const READ_SPAN: f64 = 1e-6;
+
+/// The reference of a `position(d, ahead_of/behind: x)` and the sign of d from x's s (ahead
+/// +1, behind −1); `None` without one.
+pub(super) fn place_reference(m: &Modifier) -> Option<(&crate::resolve::Arg, f64)> {
+    match (m.arg("ahead_of"), m.arg("behind")) {
+        (Some(e), _) => Some((e, 1.0)),
+        (None, Some(e)) => Some((e, -1.0)),
+        (None, None) => None,
+    }
+}
 
 /// Where a shaped `lateral(…)` beside x puts the actor.
 pub(super) enum ShapedBeside {
@@ -223,10 +233,8 @@ impl Planner<'_> {
         (t0, len): (Option<f64>, Option<f64>),
         d: f64,
     ) -> Result<Option<f64>, Error> {
-        let (e, sign) = match (m.arg("ahead_of"), m.arg("behind")) {
-            (Some(e), _) => (e, 1.0),
-            (None, Some(e)) => (e, -1.0),
-            (None, None) => return Ok(None),
+        let Some((e, sign)) = place_reference(m) else {
+            return Ok(None);
         };
         let x = self.entity_of(e)?;
         let (Some(t), Some(len)) = (t0, len) else {

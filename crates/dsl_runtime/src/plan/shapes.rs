@@ -21,9 +21,9 @@
 //! certain state variables … throughout", §8.9.1.1.4).
 //!
 //! Relative to another actor (`faster_than`, `slower_than`, `same_as`; `left_of`, `right_of`,
-//! `side_of`; `ahead_of`, `behind` over a phase with a duration) the target is that actor's
-//! value ± the modifier's (`shape_relative`); a shaped `position(…)` relative to another actor
-//! without a phase duration is an error (not run yet).
+//! `side_of`; `ahead_of`, `behind`) the target is that actor's value ± the modifier's
+//! (`shape_relative`); a shaped `position(…)` relative to another actor without a phase
+//! duration reads x's place at the end its own timing sets (`position_shape`).
 
 use super::lateral;
 use super::planner::Planner;
@@ -84,18 +84,6 @@ impl Planner<'_> {
                 ),
             ));
         }
-        // A position relative to another actor without a phase duration: x's place at an end
-        // the shape's own timing sets.
-        if let Some(r) = ["ahead_of", "behind"]
-            .iter()
-            .find_map(|r| m.arg(r))
-            .filter(|_| shape.kind == ShapeKind::Position && slot.len.is_none())
-        {
-            return Err(r.site.err(
-                K::Unsupported,
-                format!("expected a phase duration for `{}(…)` with a shape relative to another actor (x's place at the end the plan reads), found none", m.name),
-            ));
-        }
         let mut args = shape.args.clone();
         let num = |x: f64| Arg {
             site: m.site.clone(),
@@ -135,10 +123,16 @@ impl Planner<'_> {
                     _ => "none".to_string(),
                 };
                 let peak = arg(&args, "rate_peak").map(Arg::number).transpose()?;
-                let value = match self.shaped_place(m, (slot.t0, slot.len), target.number()?)? {
-                    Some(s) => s,
-                    None => target.number()?,
+                let d = target.number()?;
+                // Relative to x: its place at the phase end, or without a duration at the end
+                // the shape's own timing sets (`shape_relative`, `position_shape`).
+                let place = match slot.len {
+                    Some(_) => self.shaped_place(m, (slot.t0, slot.len), d)?,
+                    None => {
+                        self.shaped_place_at_rate(m, (slot.target, slot.t0), d, (&profile, peak))?
+                    }
                 };
+                let value = place.unwrap_or(d);
                 return self.plan_position_shape(m, slot, (value, &profile, peak), name);
             }
             (ShapeKind::Speed | ShapeKind::Acceleration, _) => {

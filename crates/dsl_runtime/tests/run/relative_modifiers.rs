@@ -288,6 +288,60 @@ fn a_shaped_position_relative_to_another_covers_the_distance_to_its_place_at_the
     );
 }
 
+/// position_shape_relative_rate.osc's comment, by hand: without a phase duration the shape's
+/// rate_peak sets the end T = 4 s where the profile covering the distance to lead's place
+/// then (actual: 158 m − 20; projected: 150 m − 20) takes exactly T.
+#[test]
+fn a_shaped_position_relative_to_another_without_a_duration_ends_where_its_rate_meets_xs_place() {
+    let r = run("relative/position_shape_relative_rate", 0, None);
+    crate::runtime::phases(
+        &r,
+        &[
+            ("do.1.1", 1.0, 5.0),
+            ("do.1.2", 5.0, 6.0),
+            ("do.2.1", 1.0, 5.0),
+        ],
+    );
+    // ego: two sinusoidal halves 10 → 20 → 10 m/s; the engine's steps lead the first half's
+    // integral by (v_m − v0)·dt/2 at its end and give it back over the second.
+    close(r.at(2.0, "ego").speed, 15.0, SINE_V_TOL, "ego v(2)");
+    close(r.at(3.0, "ego").speed, 20.0, SINE_V_TOL, "ego v(3)");
+    close(r.at(5.0, "ego").speed, 10.0, SINE_V_TOL, "ego v(5)");
+    let lead_of_steps = 10.0 * crate::support::DT / 2.0;
+    close(
+        r.at(3.0, "ego").s,
+        108.0 + lead_of_steps,
+        STEP_S_TOL,
+        "ego s(3)",
+    );
+    close(r.at(5.0, "ego").s, 138.0, STEP_S_TOL, "ego s(5)");
+    close(r.at(6.0, "ego").s, 148.0, STEP_S_TOL, "ego s(6)");
+    // lead's linear change, stepped: a·dt/2 per second ahead of the closed form.
+    let lead5 = r.at(5.0, "lead").s;
+    close(
+        lead5,
+        158.0 + 4.0 * crate::support::DT / 2.0,
+        STEP_S_TOL,
+        "lead s(5)",
+    );
+    // tail: a step to 20 m/s, held to 5 s.
+    close(r.at(3.0, "tail").speed, 20.0, SINE_V_TOL, "tail v(3)");
+    close(r.at(3.0, "tail").s, 90.0, STEP_S_TOL, "tail s(3)");
+    close(r.at(5.0, "tail").s, 130.0, STEP_S_TOL, "tail s(5)");
+}
+
+/// err_position_shape_unreachable.osc's comment: lead at 30 m/s outruns a profile of 20 m/s.
+#[test]
+fn a_shaped_position_relative_to_one_that_outruns_its_rate_is_an_error_naming_both() {
+    let e = crate::support::error("relative/err_position_shape_unreachable");
+    for w in [
+        "err_position_shape_unreachable.osc:22:39",
+        "expected `ego` to reach its place 20 m behind `lead` at the rate of `position(…)`'s shape (a mean 20.00 m/s), found `lead` moving away as fast",
+    ] {
+        assert!(e.contains(w), "{w:?} not in {e}");
+    }
+}
+
 /// The engine's sinusoidal speed halves, stepped: speeds exact on the grid up to round-off.
 const SINE_V_TOL: f64 = 1e-6;
 /// Positions integrated per step, their lead over the profile's integral written out: float
