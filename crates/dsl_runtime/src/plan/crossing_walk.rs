@@ -19,10 +19,11 @@
 //! places it there, `walked_part`; a later one checks it, 0.5 m), moving, and the phase's
 //! start known to the plan; a + b must be below the crossing's length. The phase's `speed(v)`
 //! times the walk; no SpeedAction runs beside it (it would replace the walk's action). An
-//! action other than `walk`, `move` or `drive` along a crossing (a speed change, whose timing
-//! the line's does not follow), and `lateral(…)` beside another actor (§8.9 relates the
-//! actor to that one, the walk to the crossing: two lines at once) are errors at `along` and
-//! at the modifier. The plan has the walker at the part's end from the end on (its lane, s and
+//! action on the speed or acceleration along a crossing follows the line at the action's
+//! speed (`crossing_speed`); another action along one, whose path is its own (a lane change,
+//! a trajectory), is an error at `along`; `lateral(…)` beside another actor (§8.9 relates
+//! the actor to that one, the walk to the crossing: two lines at once) an error at the
+//! modifier. The plan has the walker at the part's end from the end on (its lane, s and
 //! offset there); in between it keeps the walker's track along its lane (as for
 //! `follow_trajectory`), since the engine moves it.
 
@@ -48,21 +49,30 @@ impl Planner<'_> {
         inv: &Invoke,
         mods: &[Modifier],
         along: &Along,
-        Slot {
-            target, t0, out, ..
-        }: Slot<'_>,
+        slot: Slot<'_>,
         name: &mut dyn FnMut(&str) -> String,
     ) -> Result<Option<When>, Error> {
         let Route::Crossing { field, .. } = &along.route else {
             return Ok(None);
         };
+        let (target, t0) = (slot.target, slot.t0);
         let data = &self.entities[self.index[target]].data;
         let moves = matches!(data.kind, ActorKind::Walker(_) | ActorKind::Vehicle);
         let width = data.bounding_box.width;
-        if inv.kind != Action::Move || !moves {
+        let speed_action = matches!(
+            inv.kind,
+            Action::ChangeSpeed
+                | Action::KeepSpeed
+                | Action::AssignSpeed
+                | Action::RemainStationary
+                | Action::ChangeAcceleration
+                | Action::AssignAcceleration
+                | Action::KeepAcceleration
+        );
+        if !(inv.kind == Action::Move || speed_action) || !moves {
             return Err(along.site.err(
-                K::Unsupported,
-                format!("expected walk(), move() or drive() of a person, animal or vehicle along crossing `{field}` (the crossing's line, timed at the phase's speed), found `{target}`'s {}()", inv.action),
+                K::Unsatisfiable,
+                format!("expected a movement of a person, animal or vehicle along crossing `{field}` (walk(), move(), drive(), or an action on its speed or acceleration: the crossing's line is the path), found `{target}`'s {}(), whose path is its own", inv.action),
             ));
         }
         let Some(c) = self.crossings.get(field).cloned() else {
@@ -98,6 +108,11 @@ impl Planner<'_> {
                 format!("expected `{target}` at {part} of crossing `{field}` ({}: lane {lane0} at s = {s0:.2} m, t = {w0:.2} m) when its walk starts, found it in lane {lane} at s = {s:.2} m, t = {w:.2} m", c.why),
             ));
         }
+        if speed_action {
+            let part = ((lane0, s0, w0), (lane1, s1, w1));
+            return self.speed_along_crossing(p, (inv, field, along), part, slot, name);
+        }
+        let Slot { out, .. } = slot;
         let v = match mods
             .iter()
             .find(|m| m.kind == ModKind::Speed && m.at != At::End)
@@ -175,19 +190,30 @@ pub(super) fn walked_part(
             s0 + f * (s1 - s0) + shift * ns,
             t0 + f * (t1 - t0) + shift * nt,
         );
-        let lane = road
-            .world_pose(s, t)
-            .and_then(|(x, y, _)| road.locate(x, y))
-            .map(|(lane, _, _)| lane)
-            .ok_or_else(|| {
-                along.site.err(
-                    K::Road,
-                    format!("expected crossing `{}` on a lane at s = {s:.2} m, t = {t:.2} m, found none", c.field),
-                )
-            })?;
-        Ok((lane, s, t))
+        point_at(road, &c.field, (s, t), along)
     };
     Ok((at(a / length, shift.0)?, at(1.0 - b / length, shift.1)?))
+}
+
+/// The point of crossing `field` at road coordinates (s, t) with the lane that holds it; none
+/// is an error at `along`.
+pub(super) fn point_at(
+    road: &PlanRoad<'_>,
+    field: &str,
+    (s, t): (f64, f64),
+    along: &Along,
+) -> Result<CrossingPoint, Error> {
+    let lane = road
+        .world_pose(s, t)
+        .and_then(|(x, y, _)| road.locate(x, y))
+        .map(|(lane, _, _)| lane)
+        .ok_or_else(|| {
+            along.site.err(
+                K::Road,
+                format!("expected crossing `{field}` on a lane at s = {s:.2} m, t = {t:.2} m, found none"),
+            )
+        })?;
+    Ok((lane, s, t))
 }
 
 /// The walker's left of crossing `c`'s line in road coordinates (t is to the left of s): the

@@ -84,6 +84,7 @@
 //! | `lateral_follow` | `lateral(…)` at: all beside another actor that moves sideways: the engine follows it |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
+//! | `crossing_speed` | an action on the speed or acceleration along a crossing: its line the path, the action's speed along it |
 //! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
 //! | `route_moves` | the lane (offset) changes between the points of a route in other lanes or at other offsets |
 //! | `random_traffic_relations` | another actor placed at its start relative to a member of random traffic as drawn |
@@ -107,6 +108,7 @@ mod action_args;
 mod against;
 mod car_following;
 mod checks;
+mod crossing_speed;
 mod crossing_walk;
 mod events;
 mod gap_actions;

@@ -75,6 +75,46 @@ fn a_walker_ends_beside_a_crossing_or_keeps_a_distance_from_its_border() {
     }
 }
 
+/// crossing_speed.osc's comment, by hand: the speed actions' profiles along the crossings'
+/// lines, the engine's steps (at each step's end speed) ahead of the integral by a·dt/2 per
+/// second during a linear change.
+#[test]
+fn actions_on_the_speed_along_a_crossing_move_along_its_line_at_their_speed() {
+    let r = run_on("crossing_speed", "crosswalk");
+    crate::support::phases_are(
+        &r,
+        &[
+            ("do.0.up", 0.0, 2.0),
+            ("do.0.keep", 2.0, 4.5),
+            ("do.1.stand", 0.0, 2.0),
+            ("do.1.start", 2.0, 3.0),
+            ("do.1.go", 3.0, 4.25),
+        ],
+    );
+    // alice: 0.25 t (t + dt) m along the line over the change (0.5 m/s² from rest).
+    let dt = crate::support::DT;
+    for t in [1.0, 2.0] {
+        at(&r, "alice", t, 100.0, -1.75 + 0.25 * t * (t + dt));
+        assert!((r.at(t, "alice").speed - 0.5 * t).abs() < XY_TOL);
+    }
+    // keep_speed from the walked part's start (1 m along), at 1 m/s.
+    for (t, y) in [(3.0, 0.25), (4.0, 1.25), (4.5, 1.75)] {
+        at(&r, "alice", t, 100.0, y);
+    }
+    assert_eq!(r.at(4.5, "alice").lane, 1);
+    // bob: standing on c2's start, then 2 m/s² from rest: 1 m at 3 s (the steps 1.05 m).
+    for t in [0.0, 1.0, 2.0] {
+        at(&r, "bob", t, 99.0, 1.75);
+    }
+    at(&r, "bob", 2.5, 99.0, 1.75 - (0.5 * 0.5 + 0.5 * dt));
+    at(&r, "bob", 3.0, 99.0, 1.75 - (1.0 + dt));
+    // walk() from 1 m along at 2 m/s: 2.5 m in 1.25 s.
+    for (t, y) in [(3.5, -0.25), (4.25, -1.75)] {
+        at(&r, "bob", t, 99.0, y);
+    }
+    assert_eq!(r.at(4.25, "bob").lane, -1);
+}
+
 #[test]
 fn what_a_crossing_does_not_run_is_an_error_at_its_place() {
     refused(
@@ -84,7 +124,12 @@ fn what_a_crossing_does_not_run_is_an_error_at_its_place() {
     );
     refused(
         "err_crossing_speed_action",
-        "expected walk(), move() or drive() of a person, animal or vehicle along crossing `c`",
+        "expected `alice` on crossing `c` until its phase ends at 10.00 s, found it at the crossing's end (3.50 m along its line) at 3.50 s under keep_speed()",
+        "12:9",
+    );
+    refused(
+        "err_crossing_lane_action",
+        "expected a movement of a person, animal or vehicle along crossing `c` (walk(), move(), drive(), or an action on its speed or acceleration: the crossing's line is the path), found `bike`'s change_lane(), whose path is its own",
         "10:9",
     );
 }
