@@ -34,6 +34,7 @@
 //! | `names` | `::`-qualified storyboard element references and how they match |
 //! | `init_order` | the order in which the Init's private actions take effect: positions and speeds relative to other entities after those entities' own ([`init_order()`]) |
 //! | `provider` | where files come from: [`DiskFiles`], [`MemoryFiles`], or your [`FileProvider`]; the [`Sources`] a scenario keeps |
+//! | `traffic_deal` | oscsim's rule dealing random traffic over the free stretches of the driving lanes, shared by the DSL plan and the engine |
 //! | `source`, `error`, `warning` | positions, errors and warnings |
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -48,6 +49,7 @@ pub mod names;
 mod provider;
 mod reader;
 mod source;
+pub mod traffic_deal;
 mod warning;
 
 use std::path::Path;

@@ -56,6 +56,8 @@
 
 use std::collections::{HashMap, HashSet};
 
+use scenario::traffic_deal::{self, LaneSpan, Member, Occupant};
+
 use super::car_following::model_controller;
 use super::place::Start;
 use super::planner::Planner;
@@ -74,46 +76,21 @@ pub(super) const UNPLACED: Start = Start {
 
 /// Start speeds are drawn uniformly within this fraction of the desired speed either side.
 pub(crate) const START_SPREAD: f64 = 0.1;
-/// The IDM's minimum gap s0 (m) and time headway T (s): the engine's defaults
-/// (`engine::models::idm`, Treiber, Hennecke and Helbing 2000).
-pub(crate) const IDM_S0: f64 = 2.0;
-/// See [`IDM_S0`].
-pub(crate) const IDM_T: f64 = 1.6;
 /// The spacing along s at which the driving lanes are sampled (m).
 const LANE_STEP: f64 = 1.0;
 /// The ObjectController's name.
 pub(super) const CONTROLLER: &str = "random_traffic";
 
-/// Another vehicle on the road as `Planner::deal` counts it: whether it drives against s, its
-/// lane, rear and front along its direction of travel (m; u against s), and its speed (m/s).
-pub(super) type Other = (bool, i32, f64, f64, f64);
+/// Another vehicle on the road as `Planner::deal` counts it.
+pub(super) type Other = Occupant;
 
 /// The lanes random traffic is dealt to (else every driving lane).
 #[derive(Debug, Clone, Copy)]
-enum Lanes {
+pub(super) enum Lanes {
     /// The lane numbered n from the right (from the left) in each direction.
     Numbered(i64, bool),
     /// This lane id.
     Id(i32),
-}
-
-/// A free stretch of a lane: its direction, lane, from s, to s (against s: the distance u
-/// along the direction of travel), and the members dealt to it.
-struct Stretch {
-    against: bool,
-    lane: i32,
-    from: f64,
-    to: f64,
-    members: Vec<usize>,
-    used: f64,
-}
-
-impl Stretch {
-    /// The room left for one more member of length `len` at gap `gap` (m; negative: none).
-    fn room(&self, len: f64, gap: f64) -> f64 {
-        let between = if self.members.is_empty() { 0.0 } else { gap };
-        (self.to - self.from) - self.used - between - len
-    }
 }
 
 impl Planner<'_> {
@@ -206,12 +183,19 @@ impl Planner<'_> {
         let b = self.entities[self.index[name]].data.bounding_box;
         let front = b.center[0] + b.length / 2.0;
         let rear = b.length / 2.0 - b.center[0];
-        (back, lane, s - rear, s + front, v)
+        Occupant {
+            against: back,
+            lane,
+            rear: s - rear,
+            front: s + front,
+            speed: v,
+        }
     }
 
     /// Deals the members of random traffic `g` (written at `site`) as creation `c` asks over
-    /// the free stretches of the driving lanes among `others` (module doc): each member's
-    /// name, whether it drives against s, and its start (s: u against s).
+    /// the free stretches of the driving lanes among `others` (module doc; the rule is
+    /// `scenario::traffic_deal`'s, which the engine shares): each member's name, whether it
+    /// drives against s, and its start (s: u against s).
     pub(super) fn deal(
         &mut self,
         g: &str,
@@ -221,7 +205,58 @@ impl Planner<'_> {
         others: &[Other],
         beside: Option<(bool, i32)>,
     ) -> Result<Vec<(String, bool, Start)>, Error> {
-        let (v0, along) = (c.v0, c.along);
+        let speeds = self.start_speeds(members, c.v0);
+        let spans = self.lane_spans(c, beside);
+        let dealt: Vec<Member> = members.iter().map(|m| self.member(m)).collect();
+        let draws = &self.draws;
+        let dealt = traffic_deal::deal(&spans, others, &dealt, &speeds, &mut || {
+            draws.borrow_mut().uniform()
+        })
+        .map_err(|e| {
+            let (expected, found) = e.message(members.len(), g);
+            site.err(K::Unsatisfiable, format!("expected {expected}, found {found}"))
+        })?;
+        Ok(dealt
+            .into_iter()
+            .map(|d| {
+                (
+                    members[d.member].clone(),
+                    d.against,
+                    Start {
+                        lane: d.lane,
+                        s: d.s,
+                        v: speeds[d.member],
+                        offset: 0.0,
+                    },
+                )
+            })
+            .collect())
+    }
+
+    /// The members' start speeds, each drawn uniformly in [0.9·v0, 1.1·v0] from the run's
+    /// seed.
+    pub(super) fn start_speeds(&self, members: &[String], v0: f64) -> Vec<f64> {
+        members
+            .iter()
+            .map(|_| {
+                v0 * (1.0 - START_SPREAD + 2.0 * START_SPREAD * self.draws.borrow_mut().uniform())
+            })
+            .collect()
+    }
+
+    /// Member `m` as the dealing counts it: its length and rear bumper to reference point.
+    pub(super) fn member(&self, m: &str) -> Member {
+        let b = self.entities[self.index[m]].data.bounding_box;
+        Member {
+            length: b.length,
+            rear: b.length / 2.0 - b.center[0],
+        }
+    }
+
+    /// The driving lanes creation `c` deals to, over the plan's roads (and, unless `along(r)`
+    /// keeps the members to +s, their view against s: OpenDRIVE 1.8 §11.2, the left side's
+    /// lanes driven in −s); `beside`: only that lane, in that direction.
+    pub(super) fn lane_spans(&mut self, c: &Creation, beside: Option<(bool, i32)>) -> Vec<LaneSpan> {
         // The lanes dealt to: numbered in each direction, or one lane beside another actor
         // in that actor's direction only.
         let lane = match beside {
@@ -230,34 +265,13 @@ impl Planner<'_> {
         };
         let (forward, back) = match beside {
             Some((against, _)) => (!against, against),
-            None => (true, !along),
+            None => (true, !c.along),
         };
-        let mut out = Vec::new();
-        let speeds: Vec<f64> = members
-            .iter()
-            .map(|_| {
-                v0 * (1.0 - START_SPREAD + 2.0 * START_SPREAD * self.draws.borrow_mut().uniform())
-            })
-            .collect();
-        let side = |back: bool| -> Vec<(i32, f64, f64, f64)> {
-            others
-                .iter()
-                .filter(|o| o.0 == back)
-                .map(|o| (o.1, o.2, o.3, o.4))
-                .collect()
-        };
-        let v_max = speeds
-            .iter()
-            .chain(others.iter().map(|o| &o.4))
-            .fold(0.0_f64, |a, &b| a.max(b));
-        let gap = IDM_S0 + v_max * IDM_T;
-        let mut stretches = if forward {
-            free_stretches(&self.road, false, &side(false), gap, lane)
+        let mut spans = if forward {
+            lane_spans(&self.road, false, lane)
         } else {
             Vec::new()
         };
-        // Oncoming traffic too (OpenDRIVE 1.8 §11.2: the left side's lanes driven in −s),
-        // unless `along(r)` keeps the members to the route's direction.
         if back {
             if self.against_road.is_none() {
                 if let Ok(view) = self.road.against() {
@@ -265,69 +279,10 @@ impl Planner<'_> {
                 }
             }
             if let Some(view) = &self.against_road {
-                stretches.extend(free_stretches(view, true, &side(true), gap, lane));
+                spans.extend(lane_spans(view, true, lane));
             }
         }
-        let lens: Vec<f64> = members
-            .iter()
-            .map(|m| self.entities[self.index[m]].data.bounding_box.length)
-            .collect();
-        for (i, len) in lens.iter().enumerate() {
-            let rooms: Vec<f64> = stretches.iter().map(|s| s.room(*len, gap)).collect();
-            let total: f64 = rooms.iter().filter(|r| **r >= 0.0).sum();
-            let fits = rooms.iter().any(|r| *r >= 0.0);
-            if !fits {
-                return Err(site.err(
-                    K::Unsatisfiable,
-                    format!(
-                        "expected room on the plan's driving lanes for the {} members of random traffic `{g}` (each its length plus a gap of {gap:.1} m to the next vehicle: s0 + v·T at the fastest start speed {v_max:.2} m/s), found room for {i}",
-                        members.len()
-                    ),
-                ));
-            }
-            // A stretch drawn with a weight of its room left.
-            let mut pick = self.draws.borrow_mut().uniform() * total;
-            let mut k = rooms.iter().rposition(|r| *r >= 0.0).unwrap_or(0);
-            for (j, r) in rooms.iter().enumerate() {
-                if *r < 0.0 {
-                    continue;
-                }
-                if pick < *r {
-                    k = j;
-                    break;
-                }
-                pick -= r;
-            }
-            let st = &mut stretches[k];
-            st.used += len + if st.members.is_empty() { 0.0 } else { gap };
-            st.members.push(i);
-        }
-        for st in &stretches {
-            let n = st.members.len();
-            let slack = (st.to - st.from) - st.used;
-            let mut u: Vec<f64> = (0..n)
-                .map(|_| self.draws.borrow_mut().uniform() * slack)
-                .collect();
-            u.sort_by(f64::total_cmp);
-            let mut before = 0.0;
-            for (&i, du) in st.members.iter().zip(u) {
-                let b = self.entities[self.index[&members[i]]].data.bounding_box;
-                let rear = b.length / 2.0 - b.center[0];
-                let s = st.from + du + before + rear;
-                before += lens[i] + gap;
-                out.push((
-                    members[i].clone(),
-                    st.against,
-                    Start {
-                        lane: st.lane,
-                        s,
-                        v: speeds[i],
-                        offset: 0.0,
-                    },
-                ));
-            }
-        }
-        Ok(out)
+        spans
     }
 
     /// Action `inv` of random traffic `inv.actor` (phase `p`, starting at `t0`): the phase
@@ -381,17 +336,11 @@ impl Planner<'_> {
     }
 }
 
-/// The stretches of the driving lanes of `road` (the plan's roads in +s, or the view of them
-/// driven against s: `against`, s then the distance u along the direction of travel) free of
-/// `others` (lane, rear, front, speed in that view) by `gap` either side; with `lane` (n,
-/// from the left) only the lane so numbered in that direction where it is.
-fn free_stretches(
-    road: &PlanRoad<'_>,
-    against: bool,
-    others: &[(i32, f64, f64, f64)],
-    gap: f64,
-    lane: Option<Lanes>,
-) -> Vec<Stretch> {
+/// The driving lanes of `road` (the plan's roads in +s, or the view of them driven against s:
+/// `against`, s then the distance u along the direction of travel), each over the stretches
+/// where it runs, sampled every [`LANE_STEP`] m, in lane order; with `lane` only the lane so
+/// numbered in that direction (or of that id) where it is.
+pub(super) fn lane_spans(road: &PlanRoad<'_>, against: bool, lane: Option<Lanes>) -> Vec<LaneSpan> {
     let length = road.length();
     let steps = (length / LANE_STEP).floor() as usize;
     let mut spans: Vec<(i32, f64, f64)> = Vec::new();
@@ -424,28 +373,13 @@ fn free_stretches(
         }
     }
     spans.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
-    let mut out = Vec::new();
-    for (lane, a, b) in spans {
-        let mut blocked: Vec<(f64, f64)> = others
-            .iter()
-            .filter(|o| o.0 == lane)
-            .map(|o| (o.1 - gap, o.2 + gap))
-            .collect();
-        blocked.sort_by(|x, y| x.0.total_cmp(&y.0));
-        let mut from = a;
-        for (x0, x1) in blocked.into_iter().chain([(b, b)]) {
-            if x0.min(b) > from {
-                out.push(Stretch {
-                    against,
-                    lane,
-                    from,
-                    to: x0.min(b),
-                    members: Vec::new(),
-                    used: 0.0,
-                });
-            }
-            from = from.max(x1);
-        }
-    }
-    out
+    spans
+        .into_iter()
+        .map(|(lane, from, to)| LaneSpan {
+            against,
+            lane,
+            from,
+            to,
+        })
+        .collect()
 }

@@ -163,6 +163,7 @@ impl ActionKind {
                 PrivateAction::Trailer(_) => "TrailerAction",
                 // No XML form: oscsim's own name.
                 PrivateAction::Check(_) => "StateCheck",
+                PrivateAction::CreateRandomTraffic(_) => "CreateRandomTraffic",
             },
             ActionKind::Global(g) => match g {
                 GlobalAction::Environment(_) => "EnvironmentAction",

@@ -39,6 +39,39 @@ pub enum PrivateAction {
     /// record in the event log, and the run stops with that error). It ends in the step it
     /// starts.
     Check(Box<StateCheck>),
+    /// oscsim's creation of random traffic, an action with no XML form (the DSL runtime
+    /// writes it for a `random_traffic_vehicle_group` created where its plan does not know
+    /// every other vehicle's place, ASAM OpenSCENARIO DSL 2.1 §8.7.18.1; the XML reader never
+    /// does): when it starts, the members it names (its actor the first of them) are dealt
+    /// among the places the other vehicles have then by [`crate::traffic_deal`]'s rule and
+    /// put there at rest (the DSL runtime's SpeedAction and ActivateControllerAction after it
+    /// give each its start speed and driver). No room: the action fails (an error record in
+    /// the event log, and the run stops with that error). It ends in the step it starts.
+    CreateRandomTraffic(Box<RandomTrafficCreation>),
+}
+
+/// What oscsim's creation of random traffic ([`PrivateAction::CreateRandomTraffic`]) deals.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RandomTrafficCreation {
+    /// The group's name, for the error.
+    pub group: String,
+    /// The members (entity names) and their start speeds (m/s), drawn by the plan from the
+    /// run's seed.
+    pub members: Vec<(String, f64)>,
+    /// The roads the lanes run over, in +s order: OpenDRIVE road id and the s along the
+    /// roads where it starts (m; the lanes' ids are the same on each).
+    pub roads: Vec<(String, f64)>,
+    /// The roads' length together (m): a distance u against s is the s of `length` − u.
+    pub length: f64,
+    /// The lanes the members may be dealt to, each over its stretch of the roads.
+    pub lanes: Vec<crate::traffic_deal::LaneSpan>,
+    /// Another entity and a lane count: only the lane that many lanes to the left (right when
+    /// negative) of that entity's lane when the action starts, in the entity's direction of
+    /// travel (0: its lane), and among `lanes`.
+    pub beside: Option<(String, i64)>,
+    /// The seed of the action's draws ([`crate::traffic_deal::Draws`]), drawn by the plan
+    /// from the run's seed.
+    pub seed: u64,
 }
 
 /// What a speed change at a rate ([`StateCheck::speed_at_rate`]) must be done within.
