@@ -205,6 +205,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         against_road: None,
         against_routes: HashMap::new(),
         late_random: Vec::new(),
+        unplaced_random: HashMap::new(),
     };
     root.walk(&mut |ph| {
         if let Kind::Emit(e) = &ph.kind {

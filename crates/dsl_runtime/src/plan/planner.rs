@@ -103,6 +103,10 @@ pub(crate) struct Planner<'a> {
     /// Random traffic created after the run's start, placed once every phase is planned
     /// (`random_traffic_late`).
     pub late_random: Vec<super::types::Late>,
+    /// Random traffic that found no room at the run's start (`place_random_traffic`): the
+    /// error, raised where the group is created then (a group created later is dealt again
+    /// at its creation).
+    pub unplaced_random: HashMap<String, Error>,
     /// Route field `routes_are_opposite` binds to the plan's roads driven against s → what
     /// bound it (`against::bind_routes`).
     pub against_routes: HashMap<String, String>,

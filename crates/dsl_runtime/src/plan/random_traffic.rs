@@ -157,7 +157,19 @@ impl Planner<'_> {
                 }
                 None => None,
             };
-            for (m, back, st) in self.deal(&g, &site, &members, &c, &others, beside)? {
+            // No room: an error if the group is created at the start (`plan_random_traffic`),
+            // else dealt again when it is created.
+            let dealt = match self.deal(&g, &site, &members, &c, &others, beside) {
+                Ok(dealt) => dealt,
+                Err(e) => {
+                    self.unplaced_random.insert(g.clone(), e);
+                    members
+                        .iter()
+                        .map(|m| (m.clone(), false, UNPLACED))
+                        .collect()
+                }
+            };
+            for (m, back, st) in dealt {
                 if back {
                     oncoming.insert(m.clone());
                 }
@@ -214,7 +226,10 @@ impl Planner<'_> {
         })
         .map_err(|e| {
             let (expected, found) = e.message(members.len(), g);
-            site.err(K::Unsatisfiable, format!("expected {expected}, found {found}"))
+            site.err(
+                K::Unsatisfiable,
+                format!("expected {expected}, found {found}"),
+            )
         })?;
         Ok(dealt
             .into_iter()
@@ -256,7 +271,11 @@ impl Planner<'_> {
     /// The driving lanes creation `c` deals to, over the plan's roads (and, unless `along(r)`
     /// keeps the members to +s, their view against s: OpenDRIVE 1.8 §11.2, the left side's
     /// lanes driven in −s); `beside`: only that lane, in that direction.
-    pub(super) fn lane_spans(&mut self, c: &Creation, beside: Option<(bool, i32)>) -> Vec<LaneSpan> {
+    pub(super) fn lane_spans(
+        &mut self,
+        c: &Creation,
+        beside: Option<(bool, i32)>,
+    ) -> Vec<LaneSpan> {
         // The lanes dealt to: numbered in each direction, or one lane beside another actor
         // in that actor's direction only.
         let lane = match beside {
@@ -313,24 +332,20 @@ impl Planner<'_> {
                 format!("expected drive(), move(), follow_lane() or remain_stationary() creating random traffic `{g}` (the engine's driver model drives its members from then on), found {}(…)", inv.action),
             ));
         }
-        match t0 {
-            Some(t) if t > 0.0 => {
-                // Placed among the others' places then, once every phase is planned.
-                let creation = self.creation(g, Some(inv))?;
-                self.late_random.push(Late {
-                    group: g.clone(),
-                    at: t,
-                    phase: p.path.clone(),
-                    creation,
-                });
+        if t0.is_some_and(|t| t <= 0.0) {
+            if let Some(e) = self.unplaced_random.remove(g) {
+                return Err(e);
             }
-            Some(_) => {}
-            None => {
-                return Err(p.site.err(
-                    K::Unsupported,
-                    format!("expected the phase creating random traffic `{g}` to start at a time the plan knows (its members are placed among the other actors' places then), found it after a run-time condition"),
-                ))
-            }
+        } else {
+            // Created among the others' places then, once every phase is planned: by the
+            // plan, or by the engine where the plan does not know them (`random_traffic_late`).
+            let creation = self.creation(g, Some(inv))?;
+            self.late_random.push(Late {
+                group: g.clone(),
+                at: t0,
+                phase: p.path.clone(),
+                creation,
+            });
         }
         Ok(None)
     }

@@ -2,130 +2,204 @@
 //! non-normative: "the group defines the initial conditions of actors in the scenario, meaning
 //! their creation and destruction").
 //!
-//! A `random_traffic_vehicle_group` whose creating phase (`random_traffic_actions`) starts at
-//! a time t the plan knows after 0 enters the scenario then: its members have no Init (the
-//! engine keeps an entity without one out of the world, its frames and every selection until
-//! it is placed) and are dealt, as at the start (`Planner::deal`: the free stretches of the
-//! driving lanes, the seed's draws, the gap s0 + v_max·T), among the places the plan has for
-//! every other actor at t. The creating phase then places each member: a TeleportAction to
-//! its LanePosition (a TeleportAction of a story puts an entity that is not in the world
-//! there), a SpeedAction (a step) to its drawn start speed, and an ActivateControllerAction of
-//! its driver on both domains, in that order at the phase start. Its members are placed once
-//! every phase is planned (so the others' places at t are known), their draws after those of
-//! the phases.
+//! A `random_traffic_vehicle_group` whose creating phase (`random_traffic_actions`) starts
+//! after 0 enters the scenario then: its members have no Init (the engine keeps an entity
+//! without one out of the world, its frames and every selection until it is placed) and are
+//! dealt by `scenario::traffic_deal`'s rule (the free stretches of the driving lanes, the
+//! seed's draws, the gap s0 + v_max·T) among the places every other vehicle has then. Its
+//! members are created once every phase is planned, their draws after those of the phases.
 //!
-//! The plan must know where every other vehicle is at t: an actor the engine moves then (a
-//! gap action's or `avoid_collisions(true)`'s controller, the members of other random
-//! traffic) is an error at the group, and so is a creating phase after a run-time condition
-//! (`plan_random_traffic`).
+//! - At a time t the plan knows, with every other vehicle's place at t the plan's: the plan
+//!   deals them (`Planner::deal`) and the creating phase places each member: a TeleportAction
+//!   to its LanePosition (a TeleportAction of a story puts an entity that is not in the world
+//!   there), a SpeedAction (a step) to its drawn start speed, and an ActivateControllerAction
+//!   of its driver on both domains, in that order at the phase start.
+//! - After a run-time condition, or beside a vehicle the engine moves then (a gap action's or
+//!   `avoid_collisions(true)`'s controller, the members of other random traffic): the plan
+//!   does not know the places, so the engine deals them when the phase starts, by the same
+//!   rule over the lanes the plan gives it (oscsim's `CreateRandomTraffic`, no XML form,
+//!   `engine::actions::random_traffic`), from a seed the plan draws from the run's; then the
+//!   same SpeedAction and ActivateControllerAction of each member. No room then fails the run
+//!   with the plan's message.
 
 use scenario::{
     ControllerAction, ControllerDomains, LongitudinalAction, Position, PositionKind, PrivateAction,
-    SpeedTarget,
+    RandomTrafficCreation, SpeedTarget,
 };
 
 use super::action_args::timed;
 use super::planner::Planner;
 use super::random_traffic::{Other, CONTROLLER};
-use super::types::Planned;
-use crate::error::{Error, ErrorKind as K};
+use super::types::{Late, Planned};
+use crate::error::{Error, Site};
 
 impl Planner<'_> {
     /// Places the members of random traffic created after the start among the other actors'
     /// places then and adds their creation to the creating phases (module doc).
     pub(super) fn create_late_random_traffic(&mut self) -> Result<(), Error> {
         for late in std::mem::take(&mut self.late_random) {
-            let (g, t) = (&late.group, late.at);
+            let g = &late.group;
             let site = self.random[g].clone();
             let members = self.groups[g].clone();
-            let mut others: Vec<Other> = Vec::new();
-            for e in &self.entities {
-                if members.contains(&e.name) {
-                    continue;
-                }
-                let moved = self
-                    .engine_moved
-                    .get(&e.name)
-                    .is_some_and(|since| since.map_or(true, |s| s <= t));
-                if moved {
-                    return Err(site.err(
-                        K::Unsupported,
-                        format!("expected every other vehicle's place known to the plan when random traffic `{g}` is created at {t:.2} s, found `{}` moved by the engine's driver model or controller then", e.name),
-                    ));
-                }
-                let tr = self.track(&e.name);
-                let (lane, v) = (tr.lane(t), tr.at(t).1);
-                others.push(self.other(&e.name, e.against, lane, self.s_at(&e.name, t), v));
-            }
-            let beside = match &late.creation.beside {
-                Some(b) => {
-                    let x_at = self.index.get(&b.x).and_then(|&i| {
-                        let e = &self.entities[i];
-                        let moved = self
-                            .engine_moved
-                            .get(&e.name)
-                            .is_some_and(|since| since.map_or(true, |s| s <= t));
-                        (!moved).then(|| {
-                            (
-                                e.against,
-                                self.track(&e.name).lane(t),
-                                self.s_at(&e.name, t),
-                            )
-                        })
-                    });
-                    Some(self.beside_lane(g, b, x_at)?)
-                }
-                None => None,
-            };
-            let dealt = self.deal(g, &site, &members, &late.creation, &others, beside)?;
             let Some(k) = self.phases.iter().position(|ph| ph.path == late.phase) else {
                 continue;
             };
-            for (i, (m, back, st)) in dealt.into_iter().enumerate() {
-                let view = if back {
-                    self.against_road.as_ref().unwrap_or(&self.road)
-                } else {
-                    &self.road
-                };
-                let (road, s, _) = view.lane_position(st.s, 0.0);
-                let teleport = PrivateAction::Teleport(Position {
-                    kind: PositionKind::Lane {
-                        road_id: road.id.clone(),
-                        lane_id: st.lane.to_string(),
-                        s,
-                        offset: Some(0.0),
-                        orientation: None,
-                    },
-                    pos: site.pos.clone(),
-                });
-                let speed = PrivateAction::Longitudinal(LongitudinalAction::Speed {
-                    dynamics: timed(scenario::DynamicsShape::Step, 0.0),
-                    target: SpeedTarget::Absolute(st.v),
-                });
-                let activate = PrivateAction::Controller(Box::new(ControllerAction::Activate {
-                    object_controller_ref: Some(CONTROLLER.to_string()),
-                    domains: ControllerDomains {
-                        lateral: Some(true),
-                        longitudinal: Some(true),
-                        ..ControllerDomains::default()
-                    },
-                }));
-                let path = &late.phase;
-                for (j, (what, a)) in [("create", teleport), ("speed", speed), ("driver", activate)]
-                    .into_iter()
-                    .enumerate()
-                {
-                    let name = format!("{path}/{m}/{}:{what}", 3 * i + j + 1);
-                    self.phases[k]
-                        .actions
-                        .push(Planned::with_phase(&m, name, a, &site));
+            let known = late
+                .at
+                .and_then(|t| self.others_at(&members, t).map(|o| (t, o)));
+            let mut actions: Vec<(String, &str, PrivateAction)> = Vec::new();
+            match known {
+                Some((t, others)) => {
+                    let beside = match &late.creation.beside {
+                        Some(b) => {
+                            let x_at = self.index.get(&b.x).map(|&i| {
+                                let e = &self.entities[i];
+                                (
+                                    e.against,
+                                    self.track(&e.name).lane(t),
+                                    self.s_at(&e.name, t),
+                                )
+                            });
+                            Some(self.beside_lane(g, b, x_at)?)
+                        }
+                        None => None,
+                    };
+                    let dealt = self.deal(g, &site, &members, &late.creation, &others, beside)?;
+                    for (m, back, st) in dealt {
+                        let view = if back {
+                            self.against_road.as_ref().unwrap_or(&self.road)
+                        } else {
+                            &self.road
+                        };
+                        let (road, s, _) = view.lane_position(st.s, 0.0);
+                        let teleport = PrivateAction::Teleport(Position {
+                            kind: PositionKind::Lane {
+                                road_id: road.id.clone(),
+                                lane_id: st.lane.to_string(),
+                                s,
+                                offset: Some(0.0),
+                                orientation: None,
+                            },
+                            pos: site.pos.clone(),
+                        });
+                        actions.push((m.clone(), "create", teleport));
+                        actions.push((m.clone(), "speed", step(st.v)));
+                        actions.push((m.clone(), "driver", activate()));
+                        let i = self.index[&m];
+                        self.entities[i].against = back;
+                    }
                 }
-                let e = self.index[&m];
-                self.entities[e].created = Some(t);
-                self.entities[e].against = back;
-                self.engine_moved.insert(m.clone(), Some(t));
+                None => {
+                    let (create, speeds) = self.engine_creation(g, &members, &late);
+                    actions.push((members[0].clone(), "create", create));
+                    for (m, v) in members.iter().zip(speeds) {
+                        actions.push((m.clone(), "speed", step(v)));
+                        actions.push((m.clone(), "driver", activate()));
+                    }
+                }
             }
+            self.add_creation(k, &late, actions, &site);
         }
         Ok(())
     }
+
+    /// Every other vehicle as the dealing counts it at `t`, when the plan knows them all then
+    /// (`None`: one the engine moves then).
+    fn others_at(&self, members: &[String], t: f64) -> Option<Vec<Other>> {
+        let mut others = Vec::new();
+        for e in self.entities.iter().filter(|e| !members.contains(&e.name)) {
+            let moved = self
+                .engine_moved
+                .get(&e.name)
+                .is_some_and(|since| since.map_or(true, |s| s <= t));
+            if moved {
+                return None;
+            }
+            let tr = self.track(&e.name);
+            let (lane, v) = (tr.lane(t), tr.at(t).1);
+            others.push(self.other(&e.name, e.against, lane, self.s_at(&e.name, t), v));
+        }
+        Some(others)
+    }
+
+    /// The engine's creation of `members` of random traffic `g` as `late` asks (module doc),
+    /// and their start speeds.
+    fn engine_creation(
+        &mut self,
+        g: &str,
+        members: &[String],
+        late: &Late,
+    ) -> (PrivateAction, Vec<f64>) {
+        let speeds = self.start_speeds(members, late.creation.v0);
+        // Beside another actor: every driving lane of both directions, the engine keeping x's
+        // lane or the one beside it.
+        let mut c = late.creation.clone();
+        if c.beside.is_some() {
+            c.along = false;
+            c.lane = None;
+        }
+        let lanes = self.lane_spans(&c, None);
+        // The engine's draws: a seed from the run's (integer-only: the top 53 bits).
+        let seed = (self.draws.borrow_mut().uniform() * (1u64 << 53) as f64) as u64;
+        let creation = RandomTrafficCreation {
+            group: g.to_string(),
+            members: members
+                .iter()
+                .cloned()
+                .zip(speeds.iter().copied())
+                .collect(),
+            roads: self.road.starts(),
+            length: self.road.length(),
+            lanes,
+            beside: late.creation.beside.as_ref().map(|b| (b.x.clone(), b.by)),
+            seed,
+        };
+        (
+            PrivateAction::CreateRandomTraffic(Box::new(creation)),
+            speeds,
+        )
+    }
+
+    /// Adds `actions` (member, what, action), in order, to the creating phase `k` of `late`,
+    /// and marks its members created then and moved by the engine from then on.
+    fn add_creation(
+        &mut self,
+        k: usize,
+        late: &Late,
+        actions: Vec<(String, &str, PrivateAction)>,
+        site: &Site,
+    ) {
+        let path = &late.phase;
+        for (i, (m, what, a)) in actions.into_iter().enumerate() {
+            let name = format!("{path}/{m}/{}:{what}", i + 1);
+            self.phases[k]
+                .actions
+                .push(Planned::with_phase(&m, name, a, site));
+        }
+        for m in &self.groups[&late.group] {
+            let e = self.index[m];
+            self.entities[e].created = Some(late.at);
+            self.engine_moved.insert(m.clone(), late.at);
+        }
+    }
+}
+
+/// A SpeedAction (a step) to `v`.
+fn step(v: f64) -> PrivateAction {
+    PrivateAction::Longitudinal(LongitudinalAction::Speed {
+        dynamics: timed(scenario::DynamicsShape::Step, 0.0),
+        target: SpeedTarget::Absolute(v),
+    })
+}
+
+/// The ActivateControllerAction of a member's driver on both domains.
+fn activate() -> PrivateAction {
+    PrivateAction::Controller(Box::new(ControllerAction::Activate {
+        object_controller_ref: Some(CONTROLLER.to_string()),
+        domains: ControllerDomains {
+            lateral: Some(true),
+            longitudinal: Some(true),
+            ..ControllerDomains::default()
+        },
+    }))
 }

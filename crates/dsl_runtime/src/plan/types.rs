@@ -165,9 +165,10 @@ pub(crate) struct Entity {
     /// The driver model that drives it from the start (a member of random traffic,
     /// `random_traffic`): its ObjectController, activated in the Init on both domains.
     pub driver: Option<scenario::Controller>,
-    /// When a member of random traffic created after the run's start enters the scenario
-    /// (`random_traffic_late`): it has no Init, its creating phase places it.
-    pub created: Option<f64>,
+    /// A member of random traffic created after the run's start (`random_traffic_late`): it
+    /// has no Init, its creating phase places it; when, if the plan knows (`Some(None)`: after
+    /// a run-time condition).
+    pub created: Option<Option<f64>>,
 }
 
 /// The whole plan.
@@ -302,8 +303,9 @@ pub(crate) struct Beside {
 pub(crate) struct Late {
     /// The group.
     pub group: String,
-    /// When its creating phase starts (s).
-    pub at: f64,
+    /// When its creating phase starts (s), if the plan knows (`None`: after a run-time
+    /// condition).
+    pub at: Option<f64>,
     /// That phase's path.
     pub phase: String,
     /// What it asks.

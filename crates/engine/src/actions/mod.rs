@@ -24,6 +24,7 @@ mod lane_offset;
 mod lateral_follow;
 mod override_controller;
 pub(crate) mod parameter;
+mod random_traffic;
 mod relative_acceleration;
 mod routing;
 mod speed;
@@ -456,6 +457,10 @@ impl Host<'_> {
         match action {
             PrivateAction::Teleport(position) => {
                 teleport::start(self.world, actor, position, self.story)?;
+                Ok(Part::Done(ActionStatus::Ended))
+            }
+            PrivateAction::CreateRandomTraffic(c) => {
+                random_traffic::start(self.world, c, pos)?;
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Check(check) => {

@@ -25,6 +25,7 @@ mod init_names;
 mod lateral;
 mod lateral_esmini;
 mod override_values;
+mod random_traffic_create;
 mod red_light;
 mod signals_controllers;
 mod speed_action;
