@@ -276,7 +276,7 @@ fn set_domains(
     }
     if taken.longitudinal || taken.lateral {
         let index = LaneIndex::default();
-        let (entities, network) = (&world.entities, &world.network);
+        let (entities, network) = (world.entities(), &world.network);
         let entity = &entities[actor.index()];
         let input = DriverInput::of(entity, network);
         let view = ControllerView::new(

@@ -55,10 +55,13 @@ pub(crate) fn step(
         parallel,
     } = &mut storage;
     merged.clear();
-    if controllers.any_held() {
-        index.rebuild(&world.network, &world.entities);
+    // The lane index is built where some model holds a domain, and then the moves' walk
+    // enters each entity in it after its move (store/lane_refresh.rs).
+    let indexed = controllers.any_held();
+    if indexed {
+        index.refresh_from(world);
         let index: &LaneIndex = index;
-        let (entities, network, signals) = (&world.entities, &world.network, &world.signals);
+        let (entities, network, signals) = (world.entities(), &world.network, &world.signals);
         let at_start = StepWorld {
             time,
             entities,
@@ -139,29 +142,44 @@ pub(crate) fn step(
             merged.push((i, m));
         }
     }
-    let net = &world.network;
+    let (net, entities, signals) = world.moves();
+    let n = entities.len();
+    if indexed {
+        index.begin_moves(n);
+    }
     let mut finite = true;
     let tested = |e: &Entity| !e.placed || all_finite(e);
     // The commands, in increasing entity index (the runs' order), met in the walk.
     let mut commands = merged.iter().peekable();
-    for i in 0..world.entities.len() {
-        let e = &mut world.entities[i];
+    for i in 0..n {
+        let e = &mut entities[i];
         match commands.next_if(|(j, _)| *j == i) {
             Some(&(_, m)) if e.placed => apply(net, e, controllers.of_mut(i), m, dt),
             _ => {
                 // Run option stop_at_red_lights (signals/red_light.rs); off: nothing.
-                world.signals.govern_speed(net, i, e, dt);
+                signals.govern_speed(net, i, e, dt);
                 move_entity(net, e, dt, None);
             }
         }
-        // The entity moved before this one is tested now, not this one: a load of a value
-        // its move is still storing would wait for the store (the test, reading the values
-        // just written two at a time, took more than the separate walk it replaced).
+        // The entity moved before this one is tested and entered in the lane index now, not
+        // this one: a load of a value its move is still storing would wait for the store
+        // (the test, reading the values just written two at a time, took more than the
+        // separate walk it replaced).
         if let Some(before) = i.checked_sub(1) {
-            finite &= tested(&world.entities[before]);
+            let e = &entities[before];
+            finite &= tested(e);
+            if indexed {
+                index.enter_moved(net, e);
+            }
         }
     }
-    finite &= world.entities.last().map_or(true, tested);
+    if let Some(e) = entities.last() {
+        finite &= tested(e);
+        if indexed {
+            index.enter_moved(net, e);
+        }
+    }
+    index.end_moves(indexed.then_some(n));
     controllers.stage = storage;
     finite
 }

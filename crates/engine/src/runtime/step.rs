@@ -183,12 +183,12 @@ impl Engine {
     /// behind their tows; the state is written as the frame at t = 0 (timed as output).
     fn initial_frame(&mut self, time: f64, frames: &mut dyn FrameSink) -> Result<(), Error> {
         let world = self.world.get_mut();
-        for e in world.entities.iter_mut().filter(|e| e.placed) {
+        for e in world.entities_mut().iter_mut().filter(|e| e.placed) {
             e.velocity.translational = e.travel_velocity();
         }
         // The trailer stage sets its trailers' own velocity.
         super::trailer_stage::follow(world, 0.0);
-        super::finite::check(&world.entities, time).map_err(|(_, e)| e)?;
+        super::finite::check(world.entities(), time).map_err(|(_, e)| e)?;
         let clock = Instant::now();
         frames
             .frame(&frame_of(world, &self.source, time, self.step))
@@ -259,7 +259,7 @@ impl Engine {
         // tested here, and everything when a traffic action ran (runtime/finite.rs).
         let later = (!moved.traffic).then(|| world.trailers.trailers());
         if let Err((entity, e)) =
-            super::finite::check_after_moves(&world.entities, moved.finite, later, time)
+            super::finite::check_after_moves(world.entities(), moved.finite, later, time)
         {
             log.push(EventRecord::error(time, &entity, &e));
             emit(&log, events)?;
@@ -306,7 +306,7 @@ fn frame_of<'a>(world: &'a World, source: &'a ScenarioSource, time: f64, step: u
     Frame {
         time,
         step,
-        entities: &world.entities,
+        entities: world.entities(),
         signals: world.signals.signal_states(),
         environment: &world.environment,
         source,

@@ -51,7 +51,7 @@ impl TriggerView {
     /// still see, if a condition has been evaluated in this step and nothing was kept yet.
     pub(crate) fn before_change(&mut self, world: &World) {
         if self.begun && self.frozen.is_none() {
-            self.frozen = Some(world.entities.clone());
+            self.frozen = Some(world.entities().to_vec());
         }
     }
 
@@ -63,12 +63,9 @@ impl TriggerView {
         };
         // Entities added to the store during the walk (spawned objects) keep their ids, which
         // index the store: the copy gets them as they are now, so every id stays valid.
-        if frozen.len() < world.entities.len() {
-            frozen.extend_from_slice(&world.entities[frozen.len()..]);
+        if frozen.len() < world.entities().len() {
+            frozen.extend_from_slice(&world.entities()[frozen.len()..]);
         }
-        std::mem::swap(frozen, &mut world.entities);
-        let result = f(world);
-        std::mem::swap(frozen, &mut world.entities);
-        result
+        world.with_entities(frozen, f)
     }
 }

@@ -179,7 +179,10 @@ pub struct LaneIndex {
     /// By entity index: what this step keeps for the next (store/lane_kept.rs).
     pub(super) kept: Vec<Kept>,
     /// The entries made anew in this step's walk, by slot, before they join their lanes.
-    pending: Vec<(usize, Entry)>,
+    pub(super) pending: Vec<(usize, Entry)>,
+    /// The entities the last moves' walk entered (the first `moved`; 0 where it entered none),
+    /// whose entries stand until they are written (store/lane_refresh.rs).
+    pub(super) moved: usize,
     /// The index of the same step built in full, to check this one against (debug builds).
     #[cfg(debug_assertions)]
     full: Option<Box<LaneIndex>>,
@@ -216,8 +219,13 @@ impl LaneIndex {
     /// Makes this the index of `entities` on `net` (their ids are their indices), reusing its
     /// storage and keeping what did not change since the last call (module doc,
     /// store/lane_kept.rs). In debug builds it is checked against a full build.
-    pub fn rebuild(&mut self, net: &Arc<RoadNetwork>, entities: &[Entity]) {
-        self.walk(net, entities, true);
+    /// `written`: by entity index, written since the last moves' walk entered it
+    /// (store/lane_refresh.rs: only those are entered anew when that walk entered the rest).
+    pub fn rebuild(&mut self, net: &Arc<RoadNetwork>, entities: &[Entity], written: &[bool]) {
+        if !self.refresh(net, entities, written) {
+            self.walk(net, entities, true);
+        }
+        self.moved = 0;
         #[cfg(debug_assertions)]
         {
             let mut full = self.full.take().unwrap_or_default();
@@ -230,7 +238,7 @@ impl LaneIndex {
     /// Builds the index of `entities` on `net` in this storage: every entry made anew
     /// (`keep` false), or kept where it may be (store/lane_kept.rs).
     fn walk(&mut self, net: &Arc<RoadNetwork>, entities: &[Entity], keep: bool) {
-        if !self.slots.as_ref().is_some_and(|s| s.numbers(net)) {
+        if !self.numbers(net) {
             let slots = LaneSlots::new(net);
             self.lanes.clear();
             self.lanes.resize_with(slots.len(), LaneEntries::default);
@@ -246,7 +254,27 @@ impl LaneIndex {
                 lane.listed = false;
             }
         }
-        let n = entities.len();
+        self.fit(entities.len());
+        // From the last entity to the first: the moves' walk (controller/stage.rs) that
+        // ended the step before went from the first to the last, so the entities it touched
+        // last are the ones still in the core's cache, and this walk meets them first and
+        // ends at the entities the next moves' walk starts with (at 4,000 vehicles the store,
+        // 5 MB, does not stay in the 2 MB cache from one walk to the next, issue 31). The
+        // index is the same in any order: the rows are per entity, and each lane's entries
+        // are put in their one (lo, id) order at the end (`settle`).
+        for e in entities.iter().rev() {
+            self.enter_with_input(net, e, keep);
+        }
+        self.settle(keep, None);
+    }
+
+    /// Whether the lane numbering is `net`'s (made at the first build on it).
+    pub(super) fn numbers(&self, net: &Arc<RoadNetwork>) -> bool {
+        self.slots.as_ref().is_some_and(|s| s.numbers(net))
+    }
+
+    /// Sizes the per-entity rows for `n` entities and empties the pending entries.
+    pub(super) fn fit(&mut self, n: usize) {
         if self.footprints.len() != n {
             self.footprints.resize(n, None);
         }
@@ -260,37 +288,38 @@ impl LaneIndex {
             self.inputs.resize(n, None);
         }
         self.pending.clear();
-        // From the last entity to the first: the moves' walk (controller/stage.rs) that
-        // ended the step before went from the first to the last, so the entities it touched
-        // last are the ones still in the core's cache, and this walk meets them first and
-        // ends at the entities the next moves' walk starts with (at 4,000 vehicles the store,
-        // 5 MB, does not stay in the 2 MB cache from one walk to the next, issue 31). The
-        // index is the same in any order: the rows are per entity, and each lane's entries
-        // are put in their one (lo, id) order at the end (`settle`).
-        for e in entities.iter().rev() {
-            let looked_up = self.enter(net, e, keep);
-            // The track's lane at the track's s is the lane the road position names wherever
-            // the two agree (the common case): its handle is the one just looked up.
-            DriverInput::write(&mut self.inputs[e.id.index()], e, net, looked_up);
-        }
-        self.settle(keep);
+    }
+
+    /// [`enter`](Self::enter)s `e` and writes its driver inputs' row.
+    #[inline]
+    pub(super) fn enter_with_input(&mut self, net: &Arc<RoadNetwork>, e: &Entity, keep: bool) {
+        let looked_up = self.enter(net, e, keep);
+        // The track's lane at the track's s is the lane the road position names wherever
+        // the two agree (the common case): its handle is the one just looked up.
+        DriverInput::write(&mut self.inputs[e.id.index()], e, net, looked_up);
     }
 
     /// Ends a step's build: the entries of the last step that stay take their entity's new
     /// s-range and the others leave, the new entries join their lanes, and each lane is put in
-    /// order (repaired where kept, else sorted) with its bounds.
-    fn settle(&mut self, keep: bool) {
+    /// order (repaired where kept, else sorted) with its bounds. `entered`: where only some
+    /// entities were entered in this build (store/lane_refresh.rs), whether entity i was;
+    /// the entries of the others stand as they are.
+    pub(super) fn settle(&mut self, keep: bool, entered: Option<&dyn Fn(usize) -> bool>) {
         let kept = &self.kept;
         for &slot in &self.touched {
-            self.lanes[slot]
-                .entries
-                .retain_mut(|e| match kept.get(e.id.index()) {
+            self.lanes[slot].entries.retain_mut(|e| {
+                let i = e.id.index();
+                if entered.is_some_and(|entered| !entered(i)) {
+                    return true;
+                }
+                match kept.get(i) {
                     Some(k) if k.stays => {
                         (e.lo, e.hi) = k.s_range;
                         true
                     }
                     _ => false,
-                });
+                }
+            });
         }
         for &(slot, entry) in &self.pending {
             let lane = &mut self.lanes[slot];

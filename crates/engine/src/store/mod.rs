@@ -11,6 +11,7 @@
 //! | `driver_inputs` | the driver models' per-step inputs per entity, a compact copy filled with the lane index |
 //! | `lane_index` | per-lane index of the entities on the road for gap searches (built once per step) |
 //! | `lane_kept` | what the lane index keeps of each entity's entries from step to step, its order repair and check |
+//! | `lane_refresh` | the lane index's entries made in the moves' walk, made anew at the step's start only for entities written since |
 //! | `lane_slots` | the lane index's dense lane numbers and lane borders kept per road |
 //! | `selection` | EntitySelection members at runtime, §7.2.2.5 multiplicity checks |
 //! | `targets` | what an action's target asks for now: `entityRef`, SpeedActionTarget, LaneChangeTarget |
@@ -21,6 +22,7 @@ pub(crate) mod lane_index;
 mod lane_kept;
 #[cfg(test)]
 mod lane_kept_tests;
+mod lane_refresh;
 mod lane_slots;
 mod object;
 pub(crate) mod selection;

@@ -27,7 +27,13 @@ const ON_ROAD_TOLERANCE: Real = 0.5;
 pub struct World {
     /// The road network.
     pub network: Arc<RoadNetwork>,
-    pub(crate) entities: Vec<Entity>,
+    /// The entity store, by id. Reached from outside this module only through the methods
+    /// below, each write marking the entity in `written`.
+    entities: Vec<Entity>,
+    /// By entity index: written since the lane index last read the store
+    /// ([`World::for_lane_index`]), by any way but the controllers stage's moves' walk
+    /// ([`World::moves`], which enters each entity it moves in the index itself).
+    written: Vec<bool>,
     names: HashMap<String, EntityId>,
     /// Simulation time of the current step (s).
     pub time: f64,
@@ -63,6 +69,7 @@ impl World {
             .collect::<HashMap<_, _>>();
         World {
             network,
+            written: vec![false; entities.len()],
             entities,
             names,
             time: 0.0,
@@ -87,6 +94,7 @@ impl World {
         e.id = id;
         self.names.insert(e.name.clone(), id);
         self.entities.push(e);
+        self.written.push(true);
         id
     }
 
@@ -100,8 +108,59 @@ impl World {
         &self.entities[id.index()]
     }
 
+    /// The entity with handle `id`, to change: marked written (the lane index enters it
+    /// anew at its next refresh). Panics if `id` is not from this world.
     pub(crate) fn entity_mut(&mut self, id: EntityId) -> &mut Entity {
+        self.written[id.index()] = true;
         &mut self.entities[id.index()]
+    }
+
+    /// [`World::entity_mut`] beside the road network it moves on.
+    pub(crate) fn entity_on_network_mut(&mut self, id: EntityId) -> (&RoadNetwork, &mut Entity) {
+        self.written[id.index()] = true;
+        (&self.network, &mut self.entities[id.index()])
+    }
+
+    /// Every entity, to change: all marked written.
+    pub(crate) fn entities_mut(&mut self) -> &mut [Entity] {
+        self.written.fill(true);
+        &mut self.entities
+    }
+
+    /// The store for the controllers stage's moves' walk (controller/stage.rs): the network,
+    /// every entity to move, and the signals that may govern their speed. The entities are
+    /// **not** marked written: the walk enters each one it moves in the lane index right after
+    /// its move (`LaneIndex::enter_moved`), or, where it enters none, has the index forget
+    /// its moves' entries (`LaneIndex::end_moves`; store/lane_refresh.rs).
+    pub(crate) fn moves(
+        &mut self,
+    ) -> (
+        &Arc<RoadNetwork>,
+        &mut [Entity],
+        &mut crate::signals::Signals,
+    ) {
+        (&self.network, &mut self.entities, &mut self.signals)
+    }
+
+    /// The store as the lane index reads it (store/lane_refresh.rs): the network, the
+    /// entities and, by entity index, whether each was written since the index last read
+    /// them; the reader clears the marks it has taken in.
+    pub(crate) fn for_lane_index(&mut self) -> (&Arc<RoadNetwork>, &[Entity], &mut [bool]) {
+        (&self.network, &self.entities, &mut self.written)
+    }
+
+    /// Runs `f` on this world with `entities` in place of its store, then puts the store
+    /// back (`entities` gets its own again): the step-start copy conditions read
+    /// (runtime/trigger_view.rs). Nothing is written.
+    pub(crate) fn with_entities<R>(
+        &mut self,
+        entities: &mut Vec<Entity>,
+        f: impl FnOnce(&World) -> R,
+    ) -> R {
+        std::mem::swap(entities, &mut self.entities);
+        let result = f(self);
+        std::mem::swap(entities, &mut self.entities);
+        result
     }
 
     /// The handle of the entity called `name`.
@@ -125,6 +184,7 @@ impl World {
     /// an object turned sideways on a vehicle (drop-bike.xosc) travels along the lane with it.
     /// An entity turned more than 90° from the reference line's direction travels towards −s.
     pub(crate) fn place_resolved(&mut self, id: EntityId, pose: Pose, found: Option<RoadPosition>) {
+        self.written[id.index()] = true;
         place_on_lane(&self.network, &mut self.entities[id.index()], pose, found);
     }
 
@@ -141,8 +201,7 @@ impl World {
     /// A lateral movement stopped midway (a lateral action, or a controller's lane change): the
     /// actor keeps the lateral position it has, in the lane that holds it.
     pub(crate) fn keep_lateral_position(&mut self, actor: EntityId) {
-        let net = &self.network;
-        let e = &mut self.entities[actor.index()];
+        let (net, e) = self.entity_on_network_mut(actor);
         let Some(track) = &mut e.track else {
             return;
         };

@@ -212,8 +212,7 @@ pub(crate) fn step_lateral(
 /// that hold the new lateral position, reached through a one-step blend when `smooth` (the
 /// default controller then turns the heading by the slope of the motion).
 fn move_sideways(world: &mut World, actor: EntityId, left: f64, dt: f64, smooth: bool) {
-    let net = &world.network;
-    let e = &mut world.entities[actor.index()];
+    let (net, e) = world.entity_on_network_mut(actor);
     let travel = (e.speed * dt).abs();
     let Some(track) = &mut e.track else {
         // Off the lanes: sideways in the entity frame, along its y axis; the heading stays

@@ -236,8 +236,7 @@ pub(crate) fn step_longitudinal(
 
 /// Moves `actor` by `forward` m along its lane (negative: back), within its road.
 fn shift_along_lane(world: &mut World, actor: EntityId, forward: f64) {
-    let net = &world.network;
-    let e = &mut world.entities[actor.index()];
+    let (net, e) = world.entity_on_network_mut(actor);
     let Some(track) = e.track.as_mut() else {
         e.pose.x += forward * e.pose.h.cos();
         e.pose.y += forward * e.pose.h.sin();
