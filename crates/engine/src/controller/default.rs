@@ -21,6 +21,7 @@ use crate::world::lane_track::{CurvatureAt, LaneTrack};
 use crate::world::lanes::{
     advance, curvature_with_heading, set_road_position, track_curvature, track_span,
 };
+use crate::world::zero_angle;
 use crate::world::RouteFollow;
 
 /// Moves entity `e` over one step of `dt` s: position, heading, road position, velocity,
@@ -212,7 +213,8 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity) {
         s_bits: track.s.to_bits(),
         value: k,
     });
-    let slope = dt_ds.atan2(1.0 - k * t);
+    // dt/ds is exactly 0 off lane changes and widening lanes (world/zero_angle.rs: libm's bits).
+    let slope = zero_angle::atan2(dt_ds, 1.0 - k * t);
     let road_h = pose.h;
     pose.h = match track.direction {
         Direction::Forward => normalize_angle(road_h + slope + track.relative_heading),

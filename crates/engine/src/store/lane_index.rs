@@ -51,6 +51,7 @@ use super::driver_inputs::DriverInput;
 use super::lane_kept::{entry_order, repair_order, Entry, Kept};
 use super::lane_slots::{LaneBorders, LaneSlots};
 use crate::world::entity::{Entity, EntityId};
+use crate::world::zero_angle;
 
 /// Overlap (m) of a box's t-range with a lane's borders below which the box is not in the lane
 /// (a box touching the lane marking is not in the next lane).
@@ -194,7 +195,8 @@ fn box_ranges(e: &Entity, s: Real, t: Real, rel: Real) -> ((Real, Real), (Real, 
     let b = &e.bounding_box;
     let c = b.center();
     let (hl, hw) = (0.5 * b.length(), 0.5 * b.width());
-    let (sin, cos) = rel.sin_cos();
+    // Exactly 0 for a vehicle following its lane (world/zero_angle.rs: libm's bits).
+    let (sin, cos) = zero_angle::sin_cos(rel);
     let mut s_range = (Real::INFINITY, Real::NEG_INFINITY);
     let mut t_range = s_range;
     for (dx, dy) in [(hl, hw), (hl, -hw), (-hl, hw), (-hl, -hw)] {

@@ -18,6 +18,7 @@
 //! | `shapes` | transition shapes and dimensions (§7.7.2 TransitionDynamics) |
 //! | `route_follow` | `RouteFollow`: the stretch of the assigned route driven, the successor and lane it needs |
 //! | `lane_change` | the lane change a route (or `mobil`) needs: cubic, peak lateral acceleration 1 m/s² |
+//! | `zero_angle` | `sin_cos` and `atan2` at a zero angle (rise) with libm's bits, without the call (ISO C Annex F) |
 
 pub(crate) mod date_time;
 mod domains;
@@ -30,6 +31,7 @@ pub(crate) mod lanes;
 pub(crate) mod route_follow;
 pub(crate) mod shapes;
 mod signal_states;
+pub(crate) mod zero_angle;
 
 pub use domains::ActiveDomains;
 pub use entity::{ControllerOverrides, Entity, EntityId, EntityKind, Visibility};
