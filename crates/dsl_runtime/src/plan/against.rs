@@ -111,6 +111,7 @@ pub(crate) fn check_references(
     leaves: &[&Phase],
     all: &[ToPlace<'_>],
     index: &HashMap<String, usize>,
+    random: &dyn Fn(&str) -> bool,
 ) -> Result<(), Error> {
     let against: HashMap<&str, bool> = all.iter().map(|p| (p.name.as_str(), p.against)).collect();
     let fixed = |name: &str| all.iter().find(|p| p.name == name).and_then(|p| p.fixed);
@@ -159,6 +160,11 @@ pub(crate) fn check_references(
                 continue;
             }
             if dir(x) == actor_against || x == inv.actor {
+                continue;
+            }
+            // Random traffic has no direction of its own: `lane(…: x)` deals its members to
+            // x's lane or one beside it in x's direction (`random_traffic_creation`).
+            if random(&inv.actor) && m.is_some_and(|m| m.kind == ModKind::Lane) {
                 continue;
             }
             if directionless(m, key) {

@@ -136,6 +136,7 @@ mod position_actions;
 mod position_shape;
 mod random_traffic;
 mod random_traffic_actions;
+mod random_traffic_creation;
 mod random_traffic_late;
 mod random_traffic_relations;
 mod relative_over_distance;
@@ -476,7 +477,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             against: against.is_some(),
         });
     }
-    against::check_references(&leaves, &to_place, &p.index)?;
+    against::check_references(&leaves, &to_place, &p.index, &|g| p.random.contains_key(g))?;
     let to_members = p.random_traffic_relations(&leaves)?;
     let dependents = p.hold_dependents(&mut to_place, to_members);
     let index = p.index.clone();

@@ -46,13 +46,14 @@
 //!   the members of the groups before it, which it keeps the gap from.
 //!
 //! The phase that creates the members is the group's first, `drive()`, `move()`,
-//! `follow_lane()` or `remain_stationary()` (placed standing, desired speed 0), and starts
-//! with the run or later (`random_traffic_late`). Its modifiers: `speed(v)`, `lane(n [, from: left])`, `keep_lane()`,
-//! `avoid_collisions(true)` (what the model does; `false` is an error), and `along(r)` on a
-//! route the runtime chooses (a `route` field nothing binds: the plan's roads, which the
-//! members drive; the resolver refuses offsets on such a route); the others constrain a
-//! planned motion these members do not have (an error at the modifier). The group's later
-//! actions give each member's model a desired speed (`random_traffic_actions`).
+//! `follow_lane()` or `remain_stationary()` (placed standing, desired speed 0), or a speed
+//! action (`change_speed(v)`, `assign_speed(v)`, `keep_speed()`: created as by `drive()`
+//! without a speed, then the action given to each member's model as a later one is; at the
+//! start the model has it from the Init), and starts with the run or later
+//! (`random_traffic_late`: dealt by the plan, or by the engine where the plan does not know
+//! the others' places). Its modifiers say where the members are dealt
+//! (`random_traffic_creation`); what would set a member's motion is bad input there. The
+//! group's later actions are given to each member's model (`random_traffic_actions`).
 
 use std::collections::{HashMap, HashSet};
 
@@ -61,6 +62,7 @@ use scenario::traffic_deal::{self, LaneSpan, Member, Occupant};
 use super::car_following::model_controller;
 use super::place::Start;
 use super::planner::Planner;
+use super::speed_actions::speed_target;
 use super::types::{Creation, Late, Planned, When};
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Action, Invoke, Kind, Phase};
@@ -128,11 +130,24 @@ impl Planner<'_> {
             let Some(first) = members.first().and_then(|m| self.first_leaf.get(m)) else {
                 continue;
             };
-            let inv = match leaves.iter().find(|l| &l.path == first).map(|l| &l.kind) {
+            let leaf = leaves.iter().find(|l| &l.path == first);
+            let inv = match leaf.map(|l| &l.kind) {
                 Some(Kind::Invoke(inv)) => Some(inv),
                 _ => None,
             };
-            let c = self.creation(&g, inv)?;
+            let mut c = self.creation(&g, inv)?;
+            self.bind_lane_field(&g, &mut c, Some(starts), &site)?;
+            // A speed action creating the group: the models' desired speed from the start,
+            // its target or (keep_speed) each member's own start speed.
+            let given = match (leaf, inv) {
+                (Some(p), Some(inv))
+                    if matches!(inv.kind, Action::ChangeSpeed | Action::AssignSpeed) =>
+                {
+                    Some(Some(speed_target(inv, p)?))
+                }
+                (_, Some(inv)) if inv.kind == Action::KeepSpeed => Some(None),
+                _ => None,
+            };
             // Every other actor already placed (members of the groups before this one
             // included), with its direction (its start in u against s).
             let others: Vec<Other> = self
@@ -181,6 +196,11 @@ impl Planner<'_> {
                 let e = self.index[m];
                 // Lane changes by MOBIL, unless the members keep their lanes: the IDM alone.
                 let model = if keep_lane { "idm" } else { "mobil" };
+                let v0 = match given {
+                    Some(Some(v)) => v,
+                    Some(None) => starts.get(m).map_or(v0, |st| st.v),
+                    None => v0,
+                };
                 self.entities[e].driver = Some(model_controller(CONTROLLER, model, v0, &[], &site));
                 // From the start the engine's model moves the member.
                 self.engine_moved.insert(m.clone(), Some(0.0));
@@ -278,13 +298,15 @@ impl Planner<'_> {
     ) -> Vec<LaneSpan> {
         // The lanes dealt to: numbered in each direction, or one lane beside another actor
         // in that actor's direction only.
-        let lane = match beside {
-            Some((_, id)) => Some(Lanes::Id(id)),
-            None => c.lane.map(|(n, left)| Lanes::Numbered(n, left)),
+        let route_lane = c.route.and_then(|r| r.lane);
+        let lane = match (beside, route_lane) {
+            (Some((_, id)), _) | (None, Some(id)) => Some(Lanes::Id(id)),
+            (None, None) => c.lane.map(|(n, left)| Lanes::Numbered(n, left)),
         };
-        let (forward, back) = match beside {
-            Some((against, _)) => (!against, against),
-            None => (true, !c.along),
+        let (forward, back) = match (beside, c.route) {
+            (Some((against, _)), _) => (!against, against),
+            (None, Some(r)) => (!r.against, r.against),
+            (None, None) => (true, !c.along),
         };
         let mut spans = if forward {
             lane_spans(&self.road, false, lane)
@@ -301,7 +323,29 @@ impl Planner<'_> {
                 spans.extend(lane_spans(view, true, lane));
             }
         }
-        spans
+        // `position(d)` from d on along each lane's direction; a bound road's stretch.
+        let length = self.road.length();
+        let within = |sp: &LaneSpan| {
+            let (mut a, mut b) = (sp.from, sp.to);
+            if let Some(d) = c.from_u {
+                a = a.max(d);
+            }
+            if let Some((s0, s1)) = c.route.and_then(|r| r.span) {
+                let (u0, u1) = if sp.against {
+                    (length - s1, length - s0)
+                } else {
+                    (s0, s1)
+                };
+                a = a.max(u0);
+                b = b.min(u1);
+            }
+            (b > a).then_some(LaneSpan {
+                from: a,
+                to: b,
+                ..*sp
+            })
+        };
+        spans.iter().filter_map(within).collect()
     }
 
     /// Action `inv` of random traffic `inv.actor` (phase `p`, starting at `t0`): the phase
@@ -323,13 +367,19 @@ impl Planner<'_> {
         if !first {
             return self.plan_random_traffic_action(p, inv, t0, out, after);
         }
-        if !matches!(
+        let speed_action = matches!(
             inv.kind,
-            Action::Move | Action::FollowLane | Action::RemainStationary
-        ) {
+            Action::ChangeSpeed | Action::AssignSpeed | Action::KeepSpeed
+        );
+        if !speed_action
+            && !matches!(
+                inv.kind,
+                Action::Move | Action::FollowLane | Action::RemainStationary
+            )
+        {
             return Err(p.site.err(
-                K::Unsupported,
-                format!("expected drive(), move(), follow_lane() or remain_stationary() creating random traffic `{g}` (the engine's driver model drives its members from then on), found {}(…)", inv.action),
+                K::Unsatisfiable,
+                format!("expected drive(), move(), follow_lane(), remain_stationary(), change_speed(…), assign_speed(…) or keep_speed() creating random traffic `{g}` (the engine's driver model drives its members from then on: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\", §8.7.18.1, so their lanes, places and paths are the model's), found {}(…)", inv.action),
             ));
         }
         if t0.is_some_and(|t| t <= 0.0) {
@@ -346,6 +396,21 @@ impl Planner<'_> {
                 phase: p.path.clone(),
                 creation,
             });
+        }
+        if speed_action {
+            // Created as by drive() (start speeds drawn around the default desired speed),
+            // then the action given to each member's model as a later one is (its
+            // modifiers, read by the creation, are not the model's). Created at the start,
+            // the models have it from the Init (`place_random_traffic`): only its end here.
+            let given = Invoke {
+                modifiers: Vec::new(),
+                ..inv.clone()
+            };
+            if t0.is_some_and(|t| t <= 0.0) {
+                let (mut none, mut nor) = (Vec::new(), Vec::new());
+                return self.plan_random_traffic_action(p, &given, t0, &mut none, &mut nor);
+            }
+            return self.plan_random_traffic_action(p, &given, t0, out, after);
         }
         Ok(None)
     }

@@ -37,9 +37,10 @@ impl Planner<'_> {
     /// Places the members of random traffic created after the start among the other actors'
     /// places then and adds their creation to the creating phases (module doc).
     pub(super) fn create_late_random_traffic(&mut self) -> Result<(), Error> {
-        for late in std::mem::take(&mut self.late_random) {
-            let g = &late.group;
+        for mut late in std::mem::take(&mut self.late_random) {
+            let g = &late.group.clone();
             let site = self.random[g].clone();
+            self.bind_lane_field(g, &mut late.creation, None, &site)?;
             let members = self.groups[g].clone();
             let Some(k) = self.phases.iter().position(|ph| ph.path == late.phase) else {
                 continue;

@@ -285,6 +285,24 @@ pub(crate) struct Creation {
     /// The lane relative to another actor `lane(same_as/side_of/left_of/right_of: x)` puts
     /// them in.
     pub beside: Option<Beside>,
+    /// `position(d, at: start)`: dealt only from d on along each lane's direction of travel.
+    pub from_u: Option<f64>,
+    /// `along(r)` on a lane, a road the map's modifiers bound, or the roads against s.
+    pub route: Option<RouteOnly>,
+    /// `along(r)` on a lane field no actor has bound yet: the lane another actor along it
+    /// starts in (`Planner::bind_lane_field`).
+    pub lane_field: Option<String>,
+}
+
+/// The part of the roads `along(r)` keeps random traffic to (`Planner::creation`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RouteOnly {
+    /// Only this lane.
+    pub lane: Option<i32>,
+    /// Only over this stretch of the plan's s (m, in +s).
+    pub span: Option<(f64, f64)>,
+    /// Only the lanes driven against s.
+    pub against: bool,
 }
 
 /// `lane(n, same_as/side_of/left_of/right_of: x, side: …)` on the phase creating random

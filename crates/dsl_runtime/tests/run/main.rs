@@ -28,6 +28,7 @@ mod orientation_runtime;
 mod overlap;
 mod position_actions;
 mod random_traffic;
+mod random_traffic_creation;
 mod random_traffic_runtime;
 mod relative_modifiers;
 mod reuse;

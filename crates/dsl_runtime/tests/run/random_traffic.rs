@@ -16,7 +16,9 @@ fn members(n: usize) -> Vec<String> {
 
 /// The gaps between consecutive boxes (lane, rear, front in s, name) in each lane, bumper to
 /// bumper along s: (gap, the one behind in s, the one ahead, lane). Sorts `boxes`.
-fn lane_gaps<'a>(boxes: &mut [(i32, f64, f64, &'a str)]) -> Vec<(f64, &'a str, &'a str, i32)> {
+pub(crate) fn lane_gaps<'a>(
+    boxes: &mut [(i32, f64, f64, &'a str)],
+) -> Vec<(f64, &'a str, &'a str, i32)> {
     boxes.sort_by(|p, q| p.0.cmp(&q.0).then(p.1.total_cmp(&q.1)));
     boxes
         .windows(2)
@@ -96,7 +98,7 @@ fn random_traffic_starts_in_the_driving_lanes_apart_by_the_minimum_gap() {
 /// The IDM's free-road speed by its closed form (random_traffic_free.osc's comment):
 /// F(x) = ½ (artanh x + atan x) (arcoth x above 1: ½ ln|(1 + x)/(1 − x)| either side),
 /// F(x(t)) = F(x(0)) + a·t / v0, solved for x between x(0) and 1 by bisection.
-fn free_road_speed(v_start: f64, v0: f64, a: f64, t: f64) -> f64 {
+pub(crate) fn free_road_speed(v_start: f64, v0: f64, a: f64, t: f64) -> f64 {
     let f = |x: f64| 0.5 * (0.5 * ((1.0 + x) / (1.0 - x)).abs().ln() + x.atan());
     let x0 = v_start / v0;
     let target = f(x0) + a * t / v0;
@@ -225,7 +227,7 @@ fn what_random_traffics_model_does_not_take_after_its_creation_is_bad_input() {
 fn a_modifier_other_than_speed_on_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_modifier",
-        "expected speed(v), lane(n [, from: left]) or lane(same_as/side_of/left_of/right_of: x) at: start or all, keep_lane(), avoid_collisions(true) or along(r) on a route the runtime chooses on the phase that creates random traffic `g` (its members' desired speed, lanes and roads; the engine's driver model does the rest), found `position(…)`",
+        "expected speed(v), position(d, at: start), lane(n [, from: left]) or lane(same_as/side_of/left_of/right_of: x) at: start or all, keep_lane(), avoid_collisions(true) or along(r) on the phase that creates random traffic `g` (its members' desired speed, lanes and roads: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\", §8.7.18.1, so no modifier sets a member's motion), found `lateral(…)`",
         "8:9",
     );
 }
