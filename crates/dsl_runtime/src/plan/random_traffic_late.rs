@@ -171,12 +171,17 @@ impl Planner<'_> {
         site: &Site,
     ) {
         let path = &late.phase;
-        for (i, (m, what, a)) in actions.into_iter().enumerate() {
-            let name = format!("{path}/{m}/{}:{what}", i + 1);
-            self.phases[k]
-                .actions
-                .push(Planned::with_phase(&m, name, a, site));
-        }
+        // Before the phase's own actions (a speed action creating the group, given to the
+        // models once they drive).
+        let created: Vec<Planned> = actions
+            .into_iter()
+            .enumerate()
+            .map(|(i, (m, what, a))| {
+                let name = format!("{path}/{m}/{}:{what}", i + 1);
+                Planned::with_phase(&m, name, a, site)
+            })
+            .collect();
+        self.phases[k].actions.splice(0..0, created);
         for m in &self.groups[&late.group] {
             let e = self.index[m];
             self.entities[e].created = Some(late.at);

@@ -245,3 +245,31 @@ fn random_traffic_along_the_roads_driven_against_s_is_dealt_to_their_lanes_only(
         apart(&r, seed, 0.0, &all);
     }
 }
+
+#[test]
+fn random_traffic_created_later_by_change_speed_drives_towards_the_target() {
+    let m = "g.vehicles[0]";
+    for seed in 0..4 {
+        let r = run("random_traffic_create_speed_late", seed, None);
+        let at = 5.0 + crate::support::DT;
+        let v_start = r.at(at, m).speed;
+        assert!(
+            (0.9 * V_DEFAULT - S_TOL..=1.1 * V_DEFAULT + S_TOL).contains(&v_start),
+            "seed {seed}: v({at}) = {v_start}"
+        );
+        for k in 1..=10 {
+            let t = f64::from(k);
+            let got = r.at(at + t, m);
+            if got.s + 3.5 > 999.0 {
+                break;
+            }
+            let want = free_road_speed(v_start, 20.0, 0.73, t);
+            assert!(
+                (got.speed - want).abs() < 0.01,
+                "seed {seed}: v({}) = {}, closed form {want}",
+                at + t,
+                got.speed
+            );
+        }
+    }
+}
