@@ -164,3 +164,24 @@ fn random_traffic_created_after_a_run_time_condition_without_room_fails_the_run(
         "{t} {message}"
     );
 }
+
+#[test]
+fn random_traffic_created_beside_another_after_a_run_time_condition_is_dealt_to_its_lane_then() {
+    // random_traffic_runtime_beside.osc: created at 5.15 s left of ego (lane -3): lane -2.
+    let names: Vec<String> = (0..4).map(|i| format!("g.vehicles[{i}]")).collect();
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic_runtime_beside", seed, None);
+        let (start, _) = r.phase("do.2.traffic");
+        assert!((start - 5.15).abs() < 1e-9, "created at {start}");
+        created_at(&r, seed, start, 4);
+        for (t, objs) in &r.frames {
+            for o in objs
+                .iter()
+                .filter(|o| o.name.starts_with("g.") && o.s > 4.0 && o.s < 996.0)
+            {
+                assert_eq!(o.lane, -2, "seed {seed} at {t}: {o:?}");
+            }
+        }
+        dealt_apart(&r, seed, start + DT, &names, &["ego", "lead"], 20.0 * DT);
+    }
+}
