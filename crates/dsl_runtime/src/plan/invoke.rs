@@ -87,6 +87,20 @@ impl Planner<'_> {
         if self.random.contains_key(&inv.actor) {
             return self.plan_random_traffic(p, inv, t0, out, after);
         }
+        // A relation to a member of random traffic reads a motion only the engine knows: the
+        // run-time forms (random_traffic_relations).
+        let t0 = match (self.reads_members(p, inv), t0) {
+            (Some(moves), Some(t)) => {
+                if moves {
+                    let targets = self.groups.get(&inv.actor).cloned();
+                    for a in targets.unwrap_or_else(|| vec![inv.actor.clone()]) {
+                        self.engine_moved.insert(a, Some(t));
+                    }
+                }
+                None
+            }
+            (_, t0) => t0,
+        };
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),
             None => vec![inv.actor.clone()],
@@ -131,13 +145,14 @@ impl Planner<'_> {
                 },
                 _ => None,
             };
-            // After a gap action or avoid_collisions(true) the engine's controller moves the
-            // actor: the plan knows no track to start a phase at a time from.
+            // After a gap action, avoid_collisions(true) or a motion relative to a member of
+            // random traffic the engine moves the actor: the plan knows no track to start a
+            // phase at a time from.
             if let (Some(t), Some(since)) = (t0, self.engine_moved.get(target)) {
                 return Err(p.site.err(
                     K::Unsatisfiable,
                     format!(
-                        "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action or avoid_collisions(true){} from which the engine's controller moves `{target}`",
+                        "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action, avoid_collisions(true) or a motion relative to a member of random traffic{} from which the engine moves `{target}`",
                         since.map_or(String::new(), |s| format!(" started at {s:.2} s"))
                     ),
                 ));

@@ -133,7 +133,11 @@ pub(crate) fn place(
     // placed (relations across directions are refused before).
     let seen = |p: &ToPlace<'_>, x: &str, s: &HashMap<String, (f64, bool)>| {
         let (sx, fl) = *s.get(x)?;
-        let stands = all.iter().any(|q| q.name == x && q.fixed.is_some());
+        // Fixed and placed in +s (a stationary object; an actor fixed driving against s, such
+        // as an oncoming member of random traffic, is placed in u already).
+        let stands = all
+            .iter()
+            .any(|q| q.name == x && q.fixed.is_some() && !q.against);
         Some(match (stands && p.against, against) {
             (true, Some(a)) => (a.length() - sx, fl),
             _ => (sx, fl),

@@ -79,7 +79,7 @@ pub(super) const UNPLACED: Start = Start {
 /// Start speeds are drawn uniformly within this fraction of the desired speed either side.
 pub(crate) const START_SPREAD: f64 = 0.1;
 /// The spacing along s at which the driving lanes are sampled (m).
-const LANE_STEP: f64 = 1.0;
+pub(super) const LANE_STEP: f64 = 1.0;
 /// The ObjectController's name.
 pub(super) const CONTROLLER: &str = "random_traffic";
 

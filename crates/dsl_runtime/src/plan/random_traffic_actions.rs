@@ -20,6 +20,7 @@
 //! | `keep_speed()` | v0 = the speed the member has at the phase start (a SpeedAction to its own speed) | by its duration or `until` |
 //! | `remain_stationary()` | v0 = 0: the model brakes at its comfortable deceleration b to a stop and stands | by its duration or `until` |
 //! | `change_lane(n, side [, reference: x])` | a LaneChangeAction to the lane n to the side of its own (x's) lane in its direction of travel, which `mobil` makes its next lane change with its own lateral shape; no drivable lane there driven the same way: the member keeps its lane (the engine logs it) | at once, or by the action's `duration:` |
+//! | `lane(n [, from: left])` (at: all, end) beside an action | as `keep_lane()`, the member changed to the lane so numbered in its direction of travel (the engine's LaneChangeAction, sinusoidal at 1 m/s peak) instead of its own lane's centre; the number must name one lane all along the plan's roads | by its duration or `until` |
 //! | `follow_lane()`, `keep_lane()` beside an action | the model's lateral domain taken back over the phase (ActivateControllerAction, lateral false): the default controller keeps the member in the lane it is in, brought to its centre (a LaneChangeAction to that lane: a change under way ends there); handed back at the phase end | by its duration or `until` |
 //!
 //! Bad input, refused at its place with §8.7.18.1's words ("the behavioral model assigned to
@@ -27,7 +28,8 @@
 //! `rate_peak` (the model's rate is its own), `change_lane` without a side (the side "among
 //! those that have the lane" is drawn where the plan has the actor, and a member's lane is
 //! its model's) or with an offset or target, a lane change of members whose model is the IDM
-//! (created keeping their lanes: it changes none), other modifiers than `speed(v)`,
+//! (created keeping their lanes: it changes none), `lane(n, at: start)` (each member in lane
+//! n at the phase's first instant), other modifiers than `speed(v)`, `lane(n)`,
 //! `keep_lane()` and `avoid_collisions(true)` (`avoid_collisions(false)` asks what the model
 //! cannot do), and the group's position, path, orientation, acceleration and gap actions (a
 //! motion of each member the model defines; the group has no formation to place).
@@ -40,10 +42,12 @@ use scenario::{
 use super::action_args::positive;
 use super::lateral_actions::{num_of_lanes, DEFAULT_LATERAL_SPEED};
 use super::planner::Planner;
+use super::random_traffic::LANE_STEP;
 use super::speed_actions::{speed_target, step_speed};
 use super::types::{Planned, When, MAX_SPEED};
-use crate::error::{Error, ErrorKind as K};
+use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{arg, Action, Arg, At, Invoke, ModKind, Modifier, Phase, Val};
+use crate::road::PlanRoad;
 
 /// What an action of random traffic asks of each member's model.
 #[derive(Debug, Clone, PartialEq)]
@@ -68,6 +72,9 @@ struct Asked {
     hold_lane: bool,
     /// The action's `duration:`.
     own: Option<f64>,
+    /// `lane(n [, from: left])` at: all or end: each member changed to the lane so numbered
+    /// in its direction of travel at the phase start, kept there over the phase (`hold_lane`).
+    lane: Option<(i64, bool, Site)>,
 }
 
 /// §8.7.18.1's words, which every refusal of a later action of random traffic gives.
@@ -150,18 +157,24 @@ fn lane_change(p: &Phase, inv: &Invoke) -> Result<Ask, Error> {
     Ok(Ask::Lane(if left { n } else { -n }, reference))
 }
 
+/// The plan's lane change without a rate or duration: sinusoidal at a peak lateral speed of
+/// [`DEFAULT_LATERAL_SPEED`].
+fn default_dynamics() -> TransitionDynamics {
+    TransitionDynamics {
+        dynamics_shape: DynamicsShape::Sinusoidal,
+        dynamics_dimension: DynamicsDimension::Rate,
+        value: DEFAULT_LATERAL_SPEED,
+        following_mode: None,
+    }
+}
+
 /// A LaneChangeAction to the lane `by` lanes left (right: negative) of `x`'s, at its centre,
 /// sinusoidal at the plan's default peak lateral speed: the engine's when the default
 /// controller holds the domain, the target alone when a model does (its own lateral shape).
 fn lane_change_to(x: &str, by: i32) -> PrivateAction {
     PrivateAction::Lateral(LateralAction::LaneChange {
         target_lane_offset: None,
-        dynamics: TransitionDynamics {
-            dynamics_shape: DynamicsShape::Sinusoidal,
-            dynamics_dimension: DynamicsDimension::Rate,
-            value: DEFAULT_LATERAL_SPEED,
-            following_mode: None,
-        },
+        dynamics: default_dynamics(),
         target: LaneChangeTarget::Relative {
             entity_ref: x.to_string(),
             value: by,
@@ -183,6 +196,7 @@ fn ask(p: &Phase, inv: &Invoke, idm: bool) -> Result<Asked, Error> {
         }
     }
     let mut hold_lane = false;
+    let mut lane = None;
     let mut ask = match inv.kind {
         Action::Move => Ask::Nothing,
         Action::ChangeSpeed | Action::AssignSpeed => Ask::Desired(speed_target(inv, p)?),
@@ -220,12 +234,9 @@ fn ask(p: &Phase, inv: &Invoke, idm: bool) -> Result<Asked, Error> {
             // Implied by the action itself (keep_speed(), remain_stationary()).
             ModKind::KeepSpeed | ModKind::KeepPosition if m.name == inv.action => {}
             ModKind::KeepLane => hold_lane = true,
-            // Not run yet: the members changed to lane n in each direction, then kept there.
             ModKind::Lane => {
-                return Err(m.site.err(
-                    K::Unsupported,
-                    format!("expected no lane(…) beside an action of random traffic `{g}` after its creation (not run yet: lane(n) at: all there would change each member to lane n of its direction and keep it there), found one"),
-                ))
+                lane = Some(numbered_lane(g, m)?);
+                hold_lane = true;
             }
             ModKind::Speed if inv.kind == Action::Move && m.at != At::End => match desired(g, m)? {
                 Some(v) => ask = Ask::Desired(v),
@@ -234,7 +245,7 @@ fn ask(p: &Phase, inv: &Invoke, idm: bool) -> Result<Asked, Error> {
             _ => return Err(refused(g, m)),
         }
     }
-    if hold_lane && matches!(ask, Ask::Lane(..)) {
+    if (hold_lane || lane.is_some()) && matches!(ask, Ask::Lane(..)) {
         return Err(p.site.err(
             K::Unsatisfiable,
             format!("expected a lane change or the lane kept by random traffic `{g}` in one phase, found both"),
@@ -244,14 +255,49 @@ fn ask(p: &Phase, inv: &Invoke, idm: bool) -> Result<Asked, Error> {
         ask,
         hold_lane,
         own: positive(inv, "duration")?,
+        lane,
     })
+}
+
+/// The lane `lane(n [, from: left])` `m` beside a later action of random traffic `g` asks:
+/// (n, from the left, its place). At: start is bad input: it asks each member in lane n as
+/// the phase starts, where its model has put it; a lane relative to another actor is not run
+/// yet.
+fn numbered_lane(g: &str, m: &Modifier) -> Result<(i64, bool, Site), Error> {
+    if m.at == At::Start {
+        return Err(m.site.err(
+            K::Modifier,
+            format!("expected lane(n) at: all or end beside an action of random traffic `{g}` after its creation (each member changed to lane n and kept there), found at: start: it asks each member in lane n as the phase starts, where its driver model has put it ({BEHAVIOUR})"),
+        ));
+    }
+    if m.args
+        .iter()
+        .any(|(k, _)| !matches!(k.as_str(), "lane" | "from" | "at"))
+    {
+        return Err(m.site.err(
+            K::Unsupported,
+            format!("expected lane(n [, from: left]) beside an action of random traffic `{g}` after its creation, found a lane relative to another actor (not run yet)"),
+        ));
+    }
+    let n = m.arg("lane").map(Arg::number).transpose()?.unwrap_or(1.0);
+    if n < 1.0 || n.fract() != 0.0 {
+        return Err(m.site.err(
+            K::Modifier,
+            format!(
+                "expected a lane number of 1 or more in lane(…) of random traffic `{g}`, found {n}"
+            ),
+        ));
+    }
+    let from_left =
+        matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
+    Ok((n as i64, from_left, m.site.clone()))
 }
 
 /// The error at modifier `m`, which no member's model takes after the group's creation.
 fn refused(g: &str, m: &Modifier) -> Error {
     m.site.err(
         K::Modifier,
-        format!("expected speed(v) on a drive, keep_lane() or avoid_collisions(true) beside an action of random traffic `{g}` after its creation (a desired speed or the lane kept, what its members' driver model takes), found `{}(…)`: it constrains a motion of each member that the model defines ({BEHAVIOUR})", m.name),
+        format!("expected speed(v) on a drive, lane(n), keep_lane() or avoid_collisions(true) beside an action of random traffic `{g}` after its creation (a desired speed or the lane kept, what its members' driver model takes), found `{}(…)`: it constrains a motion of each member that the model defines ({BEHAVIOUR})", m.name),
     )
 }
 
@@ -275,7 +321,20 @@ impl Planner<'_> {
             ask,
             hold_lane,
             own,
+            lane,
         } = ask(p, inv, idm)?;
+        // The lane so numbered in each direction of travel, the same all along the plan's
+        // roads (the plan does not know where a member is then).
+        let numbered = match &lane {
+            Some((n, from_left, site)) => Some([
+                self.numbered_all_along(&self.road, *n, *from_left, site)?,
+                match &self.against_road {
+                    Some(view) => self.numbered_all_along(view, *n, *from_left, site)?,
+                    None => None,
+                },
+            ]),
+            None => None,
+        };
         if let Ask::Lane(_, Some(x)) = &ask {
             if !self.index.contains_key(x) {
                 return Err(p.site.err(
@@ -295,6 +354,26 @@ impl Planner<'_> {
         };
         for (i, m) in members.iter().enumerate() {
             let name = |what: &str| format!("{}/{m}/{}:{what}", p.path, i + 1);
+            // The lane it is in, at its centre (a change the model was making ends there), or
+            // lane n of its direction.
+            let kept = match &numbered {
+                Some(ids) => {
+                    let back = self.entities[self.index[m]].against;
+                    let id = ids[usize::from(back)].ok_or_else(|| {
+                        p.site.err(
+                            K::Unsatisfiable,
+                            format!("expected a driving lane numbered as lane(…) asks in the direction of `{m}` of random traffic, found none"),
+                        )
+                    })?;
+                    Some(PrivateAction::Lateral(LateralAction::LaneChange {
+                        target_lane_offset: None,
+                        dynamics: default_dynamics(),
+                        target: LaneChangeTarget::Absolute(id.to_string()),
+                    }))
+                }
+                None if hold_lane && !idm => Some(lane_change_to(m, 0)),
+                None => None,
+            };
             // The IDM holds no lateral domain: a member it drives keeps its lane already.
             if hold_lane && !idm {
                 out.push(Planned::with_phase(
@@ -303,19 +382,15 @@ impl Planner<'_> {
                     lateral(false),
                     &p.site,
                 ));
-                // The lane it is in, at its centre: a change the model was making ends there.
-                out.push(Planned::with_phase(
-                    m,
-                    name("keep_lane_centre"),
-                    lane_change_to(m, 0),
-                    &p.site,
-                ));
                 after.push(Planned::with_phase(
                     m,
                     name("keep_lane_end"),
                     lateral(true),
                     &p.site,
                 ));
+            }
+            if let Some(change) = kept {
+                out.push(Planned::with_phase(m, name("lane"), change, &p.site));
             }
             let action = match &ask {
                 Ask::Nothing => continue,
@@ -341,6 +416,35 @@ impl Planner<'_> {
             None if instant => Some(self.ends(t0, 0.0, "", p)),
             None => None,
         })
+    }
+
+    /// Lane `n` (from the left: `from_left`) of `view`'s driving lanes, the same id all along
+    /// it (`None`: no such lane); numbered otherwise somewhere along it, not run yet (an
+    /// error at `site`).
+    fn numbered_all_along(
+        &self,
+        view: &PlanRoad<'_>,
+        n: i64,
+        from_left: bool,
+        site: &Site,
+    ) -> Result<Option<i32>, Error> {
+        let steps = (view.length() / LANE_STEP).floor() as usize;
+        let at = |k: usize| {
+            view.numbered(
+                n,
+                from_left,
+                (k as f64 * LANE_STEP).min(view.length()),
+                false,
+            )
+        };
+        let first = at(0);
+        match (0..=steps).map(at).find(|l| *l != first) {
+            None => Ok(first),
+            Some(other) => Err(site.err(
+                K::Unsupported,
+                format!("expected lane {n} numbered the same all along the plan's roads for random traffic (each member changes to it wherever its model has it), found lanes {first:?} and {other:?} (not run yet)"),
+            )),
+        }
     }
 
     /// The driver model of member `m` of random traffic (`idm`, `mobil`), if it has one.

@@ -14,10 +14,25 @@
 //! lane: where the seed put one there, an error at the relation naming the member
 //! (the scenario asks for a place the noise occupies in that run).
 //!
-//! Every other relation to a member or the group — at: all or end, in a later phase, in an
-//! action's argument, from a group, across directions of travel (a member or the actor driving
-//! against s) — would read a motion the plan does not have: an error at the argument (measure
-//! a member at run time in a condition instead: `until ego.space_gap(g.vehicles[0]) < 10m`).
+//! A place at: all (`position`, `lane`) in the first phase is the start's too (the plan checks
+//! a place at: all relative to any actor at the phase start). After the actor's first phase,
+//! and as a gap action's reference, a relation to a member reads a motion only the engine
+//! knows (the member's model's): the phase is planned in the engine's run-time forms
+//! (`plan::runtime`: the checks at the start, the SpeedAction to the member's speed as the
+//! engine reads it, the TravelAction, the distance controller), as for any actor the engine
+//! moves (`Planner::reads_members`); where they set the actor's motion the actor is the
+//! engine's from then on, as after a gap action.
+//!
+//! A member drawn in a lane driven in −s drives against s: an actor placed in its lane or along
+//! it takes its direction, placed on the view against s (`take_members_directions`).
+//!
+//! A relation at the first phase's end to a member is the same run-time form.
+//!
+//! Not run yet, an error at the argument: a speed at: all in the actor's first phase, and an
+//! actor another is placed from in turn while it takes an oncoming member's direction. Bad
+//! input (`Unsatisfiable`): a relation to the group as a whole (it has no place, speed or lane
+//! of its own). A condition measures a member at run time: `until ego.space_gap(g.vehicles[0])
+//! < 10m`.
 
 use std::collections::{HashMap, HashSet};
 
@@ -25,7 +40,7 @@ use super::place::{place, Start, ToPlace};
 use super::planner::Planner;
 use super::random_traffic::UNPLACED;
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{At, Kind, ModKind, Phase};
+use crate::resolve::{At, Invoke, Kind, ModKind, Modifier, Phase};
 use crate::road::PlanRoad;
 
 /// A relation at the start of an actor's first phase to a member of random traffic.
@@ -36,6 +51,8 @@ pub(super) struct MemberRelation {
     member: String,
     /// The argument that names the member.
     site: Site,
+    /// A place (`position`, `lane`): along a direction of travel; a speed has none.
+    directed: bool,
 }
 
 /// The relations to members of random traffic and the actors they hold out of the first
@@ -46,6 +63,19 @@ pub(super) struct MemberDependents {
     pub relations: Vec<MemberRelation>,
     /// Those actors and the ones placed from them.
     pub held: HashSet<String>,
+}
+
+/// Whether relation `m` to a member places an actor from it at the start of the actor's first
+/// phase: a speed at: start, a place (`position`, `lane`) at: start or all (a place at: all is
+/// the start's, where the member is as drawn: a place at: all relative to any actor is checked
+/// at the phase start, docs/dsl.md); a speed at: all would follow the member's motion, the
+/// model's.
+fn placed_from(m: Option<&Modifier>) -> bool {
+    m.is_some_and(|m| match m.kind {
+        ModKind::Position | ModKind::Lane => m.at != At::End,
+        ModKind::Speed => m.at == At::Start,
+        _ => false,
+    })
 }
 
 impl Planner<'_> {
@@ -74,29 +104,83 @@ impl Planner<'_> {
                 if x == inv.actor || !(self.random_member(x) || self.random.contains_key(x)) {
                     continue;
                 }
-                let at_start = m.is_some_and(|m| {
-                    m.at == At::Start
-                        && matches!(m.kind, ModKind::Position | ModKind::Lane | ModKind::Speed)
-                });
-                if actor_first && at_start && self.random_member(x) {
+                if actor_first && placed_from(m) && self.random_member(x) {
                     out.push(MemberRelation {
                         actor: inv.actor.clone(),
                         member: x.to_string(),
                         site: a.site.clone(),
+                        directed: m.is_some_and(|m| m.kind != ModKind::Speed),
                     });
+                    continue;
+                }
+                // After the actor's first phase, a gap action's reference, or a relation at the
+                // first phase's end: the engine's run-time forms (`reads_members`). A speed at:
+                // all in the first phase would follow the member from the placement, which has
+                // no speed of it.
+                let at_end = m.is_some_and(|m| m.at == At::End);
+                if self.random_member(x)
+                    && !self.random.contains_key(&inv.actor)
+                    && (!self.first_phase(&inv.actor, &leaf.path) || m.is_none() || at_end)
+                {
                     continue;
                 }
                 let what = m.map_or_else(
                     || format!("{}(…)", inv.action),
                     |m| format!("{}(…)", m.name),
                 );
+                if self.random_member(x) {
+                    return Err(a.site.err(
+                        K::Unsupported,
+                        format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic at the start of the first phase of an actor (the member's place and speed as drawn from the seed: a speed at: start, a place at: start or all), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `{x}` of random traffic here (not run yet: a speed at: all in an actor's first phase)"),
+                    ));
+                }
+                // The group as a whole, or a member relating to another: bad input.
                 return Err(a.site.err(
-                    K::Unsupported,
-                    format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic at: start of the first phase of an actor (the member's place and speed as drawn from the seed), found `{x}` of random traffic here (its motion is the engine's driver model's: the plan does not know it; measure it at run time in a condition instead)"),
+                    K::Unsatisfiable,
+                    format!("expected `{key}:` of {what} to name one vehicle, found `{x}` of random traffic here: {}", if self.random.contains_key(x) { "the group has no place, speed or lane of its own (no formation and no leader: §8.7.18.1, it \"defines the initial conditions of actors\", each member's model its behaviour); name a member, g.vehicles[i]" } else { "a member's motion is its driver model's (§8.7.18.1), which no relation of it to another actor changes" }),
                 ));
             }
         }
         Ok(out)
+    }
+
+    /// Whether phase `path` is the first of `actor` (of one of its members, for a group).
+    fn first_phase(&self, actor: &str, path: &str) -> bool {
+        let first = |a: &str| self.first_leaf.get(a).is_some_and(|f| f == path);
+        first(actor)
+            || self
+                .groups
+                .get(actor)
+                .is_some_and(|ms| ms.iter().any(|m| first(m)))
+    }
+
+    /// Whether invocation `inv` (phase `p`) relates its actor to a member of random traffic
+    /// after the actor's first phase (`random_traffic_relations` let only those and gap actions
+    /// through): `Some(moves)`, planned in the engine's run-time forms, as after a start the
+    /// plan does not know (the member's motion is its model's); `moves`: the engine then sets
+    /// the actor's motion (a speed, a place at the end, a gap), so the plan no longer knows
+    /// its track, as after a gap action; a check of a place at the start leaves it known.
+    pub(super) fn reads_members(&self, p: &Phase, inv: &Invoke) -> Option<bool> {
+        if self.random.is_empty() || self.random.contains_key(&inv.actor) {
+            return None;
+        }
+        let mut found = None;
+        for (m, _, a) in inv.all_args() {
+            if !a.path.as_deref().is_some_and(|x| self.random_member(x)) {
+                continue;
+            }
+            // The first phase's relations at its start place the actor from the member as
+            // drawn.
+            if placed_from(m) && self.first_phase(&inv.actor, &p.path) {
+                continue;
+            }
+            let check = m.is_some_and(|m| {
+                m.at != At::End
+                    && matches!(m.kind, ModKind::Position | ModKind::Lane | ModKind::Lateral)
+            });
+            found = Some(found.unwrap_or(false) || !check);
+        }
+        found
     }
 
     /// The actors placed from a member of random traffic (`relations`), and those placed
@@ -132,6 +216,64 @@ impl Planner<'_> {
         MemberDependents { relations, held }
     }
 
+    /// The direction of travel of the actors placed from members of random traffic
+    /// (`dependents`), the members drawn (`oncoming`: those driving against s): an actor placed
+    /// in a member's lane or along its lane (`lane`, `position`) drives the member's way, on
+    /// the view against s for an oncoming member (OpenDRIVE 1.8 §11.2: its lane is driven in
+    /// −s), unless it is declared driving the other way, an error at the relation (a place
+    /// "behind" or "in the lane of" an actor driving the opposite way names none, as between
+    /// any two actors; as this run's seed draws the member). A speed has no direction. An actor
+    /// placed from two members of opposite directions, or that another actor is placed from in
+    /// turn while its direction is the oncoming member's, is an error at its relation. The
+    /// oncoming members are marked against s in `to_place`, their starts being in u = L − s.
+    fn take_members_directions(
+        &self,
+        to_place: &mut [ToPlace<'_>],
+        oncoming: &HashSet<String>,
+        dependents: &MemberDependents,
+    ) -> Result<(), Error> {
+        let MemberDependents { relations, held } = dependents;
+        for q in to_place.iter_mut() {
+            q.against |= oncoming.contains(&q.name);
+        }
+        let mut actors: Vec<&String> = held.iter().collect();
+        actors.sort();
+        for a in actors {
+            let mut directed = relations.iter().filter(|r| &r.actor == a && r.directed);
+            let Some(first) = directed.next() else {
+                continue;
+            };
+            let back = oncoming.contains(&first.member);
+            if let Some(r) = directed.find(|r| oncoming.contains(&r.member) != back) {
+                return Err(r.site.err(
+                    K::Unsatisfiable,
+                    format!("expected the members of random traffic that `{a}` is placed from to drive one way, found `{}` and `{}` driving opposite ways (as this run's seed draws them)", first.member, r.member),
+                ));
+            }
+            let Some(q) = to_place.iter_mut().find(|q| &q.name == a) else {
+                continue;
+            };
+            if q.against && !back {
+                return Err(first.site.err(
+                    K::Unsatisfiable,
+                    format!("expected `{a}`, which drives against s, placed from a member of random traffic driving its way, found `{}` driving in +s (as this run's seed draws it): a place along or beside an actor driving the opposite way names none", first.member),
+                ));
+            }
+            if back && !q.against {
+                let from_it = relations.iter().all(|r| held.contains(&r.actor))
+                    && held.iter().all(|h| relations.iter().any(|r| &r.actor == h));
+                if !from_it {
+                    return Err(first.site.err(
+                        K::Unsupported,
+                        format!("expected no actor placed from `{a}`, which takes the direction of `{}` of random traffic, driving against s (as this run's seed draws it), found one (not run yet)", first.member),
+                    ));
+                }
+                q.against = true;
+            }
+        }
+        Ok(())
+    }
+
     /// Places the actors `dependents` holds (`hold_dependents`) among `starts` once the members
     /// of random traffic are drawn (`oncoming`: those placed against s), every other actor and
     /// the members fixed where they are; checks that none of them overlaps a member in its lane
@@ -149,16 +291,7 @@ impl Planner<'_> {
         let Some(first) = relations.first() else {
             return Ok(());
         };
-        let against =
-            |n: &str| oncoming.contains(n) || to_place.iter().any(|q| q.name == n && q.against);
-        for r in relations {
-            if against(&r.member) || against(&r.actor) {
-                return Err(r.site.err(
-                    K::Unsupported,
-                    format!("expected `{}` and `{}` of random traffic both driving in +s to relate them at the start, found one driving against s (as this run's seed draws the members)", r.actor, r.member),
-                ));
-            }
-        }
+        self.take_members_directions(to_place, oncoming, dependents)?;
         // Everyone but the held actors where they are; the members at their draws.
         for q in to_place.iter_mut() {
             if held.contains(&q.name) {
