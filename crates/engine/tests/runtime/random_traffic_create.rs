@@ -19,6 +19,18 @@ const EXACT: f64 = 1e-9;
 /// speed_shapes.xosc with members `names` and its action "Speed" made a creation of them at
 /// 10 m/s over lane -1 from `from` to `to` (m).
 fn scenario(names: &[&str], from: f64, to: f64) -> Scenario {
+    let lane = |lane| LaneSpan {
+        against: false,
+        lane,
+        from,
+        to,
+    };
+    creating(names, vec![lane(-1)], None)
+}
+
+/// speed_shapes.xosc with members `names` and its action "Speed" made a creation of them at
+/// 10 m/s over `lanes`, `beside` another entity.
+fn creating(names: &[&str], lanes: Vec<LaneSpan>, beside: Option<(String, i64)>) -> Scenario {
     let mut scenario = Scenario::load(&file("speed_shapes.xosc")).expect("loads");
     let ego = scenario.entities.scenario_objects[0].clone();
     for n in names {
@@ -37,13 +49,8 @@ fn scenario(names: &[&str], from: f64, to: f64) -> Scenario {
             members: names.iter().map(|n| ((*n).to_string(), 10.0)).collect(),
             roads: vec![("1".into(), 0.0)],
             length: 500.0,
-            lanes: vec![LaneSpan {
-                against: false,
-                lane: -1,
-                from,
-                to,
-            }],
-            beside: None,
+            lanes,
+            beside,
             seed: 7,
         },
     )));
@@ -109,4 +116,62 @@ fn no_room_when_it_starts_fails_the_run() {
         .iter()
         .any(|e| matches!(e, EventRecord::Error { time, message, .. }
         if (time - 1.0).abs() < EXACT && message.starts_with(want))));
+}
+
+/// Beside Ego (lane -1 of road 1, driven in +s) with lane -1 over [0, 28] m and lane 1
+/// (driven in −s) over u in [0, 28] m offered: `same_as` (0 lanes) keeps lane -1 only, where
+/// A and B fill [0, 28] m exactly as above; one lane to Ego's left (towards the centre line)
+/// is lane 0, no driving lane: the error, at 1 s.
+#[test]
+fn beside_an_entity_the_lane_is_read_from_where_it_is_when_it_starts() {
+    let lanes = vec![
+        LaneSpan {
+            against: false,
+            lane: -1,
+            from: 0.0,
+            to: 28.0,
+        },
+        LaneSpan {
+            against: true,
+            lane: 1,
+            from: 0.0,
+            to: 28.0,
+        },
+    ];
+    let (frames, _, error) = run(&creating(
+        &["A", "B"],
+        lanes.clone(),
+        Some(("Ego".into(), 0)),
+    ));
+    assert!(error.is_none(), "{error:?}");
+    let (a, b) = (place(&frames, "A", 1.05), place(&frames, "B", 1.05));
+    assert_eq!((a.0, b.0), (-1, -1));
+    assert_abs_diff_eq!(a.1, 1.1, epsilon = EXACT);
+    assert_abs_diff_eq!(b.1, 24.1, epsilon = EXACT);
+    let (_, _, error) = run(&creating(&["A"], lanes, Some(("Ego".into(), 1))));
+    let error = error.expect("fails");
+    assert!(
+        error.to_string().starts_with("expected a driving lane 1 lanes to the left of 'Ego''s lane -1 for random traffic `g`, found none there"),
+        "{error}"
+    );
+}
+
+/// Lane 1 (driven in −s) over u in [0, 28] m, u = 500 − s on the 500 m road: A's reference
+/// point at u = 1.1 m (s = 498.9 m), B's at u = 24.1 m (s = 475.9 m), both facing −s.
+#[test]
+fn members_in_a_lane_driven_against_s_are_placed_at_s_of_l_less_u() {
+    let lanes = vec![LaneSpan {
+        against: true,
+        lane: 1,
+        from: 0.0,
+        to: 28.0,
+    }];
+    let (frames, _, error) = run(&creating(&["A", "B"], lanes, None));
+    assert!(error.is_none(), "{error:?}");
+    let (a, b) = (place(&frames, "A", 1.05), place(&frames, "B", 1.05));
+    assert_eq!((a.0, b.0), (1, 1));
+    assert_abs_diff_eq!(a.1, 498.9, epsilon = EXACT);
+    assert_abs_diff_eq!(b.1, 475.9, epsilon = EXACT);
+    let h = frames.at("A", 1.05).h;
+    assert_abs_diff_eq!(h.cos(), -1.0, epsilon = 1e-9);
 }
