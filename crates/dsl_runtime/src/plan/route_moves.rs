@@ -18,14 +18,23 @@
 //! stretch right after another change, when that change ends (seen by the engine's triggers
 //! in the step after: the next change starts up to one step's travel past its point).
 
+//! In a phase that starts on a run-time condition the plan does not know where the actor is
+//! then, so not which stretch it is on: each change starts when the engine has the actor at
+//! its first point (oscsim's PlaceReached on the actor's s in the plan's measure), after the
+//! change before it is complete, so it runs wherever the actor is when the phase starts. The
+//! engine's check at the start holds it in the route's first lane (`route::check`); one past
+//! the end of the first change then fails that change (its place is not ahead: an error
+//! record and a failed run).
+//!
 //! The route decides the actor's lateral motion over the phase: a `lateral(…)` or lane change
 //! beside it is an error at that modifier, as is a phase that ends before a change it has
-//! begun is done (the actor would stop between two lanes), and a phase that starts at run
-//! time (the plan does not know where the actor is then, so not which stretch it is on).
+//! begun is done (the actor would stop between two lanes; known only at a start the plan
+//! knows).
 
 use scenario::{
-    ConditionGroup, DynamicsShape, LaneChangeAt, LaneChangeTarget, LateralAction, PrivateAction,
-    StoryboardElementState, Trigger,
+    ConditionEdge, ConditionGroup, ConditionKind, DynamicsShape, EntityCondition, LaneChangeAt,
+    LaneChangeTarget, LateralAction, PrivateAction, StoryboardElementState, Trigger,
+    TriggeringEntities, TriggeringEntitiesRule,
 };
 
 use super::planner::Planner;
@@ -84,10 +93,8 @@ impl Planner<'_> {
             ));
         }
         let Some(t0) = t0 else {
-            return Err(along.site.err(
-                K::Unsupported,
-                "expected a phase start the plan knows for along(…) on a route through points in other lanes or at other offsets (the plan changes lanes between the points it knows the actor passes), found a start at run time",
-            ));
+            self.route_moves_at_run_time(along, target, &points, name, out);
+            return Ok(());
         };
         let s_start = self.s_at(target, t0);
         let horizon = te.unwrap_or(t0 + SEARCH_HORIZON);
@@ -138,27 +145,11 @@ impl Planner<'_> {
             };
             let action = name("route");
             before = Some((action.clone(), tb));
-            // On a plan over several roads the engine measures the way in the plan's s,
-            // across the roads' joints; on one road in the road's own s.
-            let roads = self.chain();
-            let s = match roads.chain.is_empty() {
-                true => self.road.road_at(sb).1,
-                false => sb,
-            };
             out.push(Planned {
                 entity: target.to_string(),
                 at: start,
                 name: action,
-                action: PrivateAction::Lateral(LateralAction::LaneChangeAt(Box::new(
-                    LaneChangeAt {
-                        target: LaneChangeTarget::Absolute(lb.to_string()),
-                        target_lane_offset: (ob != 0.0).then_some(ob),
-                        shape: DynamicsShape::Sinusoidal,
-                        s,
-                        roads,
-                        what: format!("the route of along(…) at {}", along.site.at()),
-                    },
-                ))),
+                action: self.change_to_point(along, (sb, lb, ob)),
                 site: along.site.clone(),
             });
             let tr = self.track_mut(target);
@@ -167,6 +158,86 @@ impl Planner<'_> {
             tr.add_move(ta, tb);
         }
         Ok(())
+    }
+
+    /// The lane changes of `along` through `points` (`plan_points`) in a phase of `target`
+    /// that starts on a run-time condition, into `out`: the plan does not know where the actor
+    /// is then, so each change starts when the engine has the actor at its first point
+    /// (oscsim's PlaceReached on the point's place in the plan's measure, at once when the
+    /// actor is past it as the phase starts), and a change right after another once that one
+    /// is complete too. The engine's check at the phase start holds the actor in the route's
+    /// first lane on it (`route::check`); an actor past the end of the first change then is
+    /// that change's failure (LaneChangeAt's place not ahead of it: an error record and a
+    /// failed run), as the route's lane there is not the one it is in.
+    fn route_moves_at_run_time(
+        &self,
+        along: &Along,
+        target: &str,
+        points: &[(f64, i32, f64)],
+        name: &mut dyn FnMut(&str) -> String,
+        out: &mut Vec<Planned>,
+    ) {
+        let mut before: Option<String> = None;
+        for w in points.windows(2) {
+            let ((sa, la, oa), (sb, lb, ob)) = (w[0], w[1]);
+            if la == lb && (oa - ob).abs() <= f64::EPSILON {
+                continue;
+            }
+            let mut conditions = vec![scenario::Condition {
+                name: format!("{target} at the route's point s = {sa} m"),
+                condition_edge: ConditionEdge::None,
+                delay: 0.0,
+                kind: ConditionKind::ByEntity {
+                    triggering_entities: TriggeringEntities {
+                        rule: TriggeringEntitiesRule::Any,
+                        entity_refs: vec![target.to_string()],
+                    },
+                    entity_condition: EntityCondition::PlaceReached {
+                        value: sa - S_EPS,
+                        roads: self.chain(),
+                    },
+                },
+                pos: along.site.pos.clone(),
+            }];
+            if let Some(prev) = &before {
+                conditions.push(action_state(
+                    prev,
+                    StoryboardElementState::CompleteState,
+                    along.site.pos.clone(),
+                ));
+            }
+            let action = name("route");
+            before = Some(action.clone());
+            out.push(Planned {
+                entity: target.to_string(),
+                at: Some(When::Dyn(Trigger {
+                    condition_groups: vec![ConditionGroup { conditions }],
+                })),
+                name: action,
+                action: self.change_to_point(along, (sb, lb, ob)),
+                site: along.site.clone(),
+            });
+        }
+    }
+
+    /// oscsim's lane change of `along`'s route to its point at the plan's s `sb` in lane `lb`,
+    /// offset `ob` from its centre (`LateralAction::LaneChangeAt`, sinusoidal): on a plan over
+    /// several roads the engine measures the way in the plan's s, across the roads' joints; on
+    /// one road in the road's own s.
+    fn change_to_point(&self, along: &Along, (sb, lb, ob): (f64, i32, f64)) -> PrivateAction {
+        let roads = self.chain();
+        let s = match roads.chain.is_empty() {
+            true => self.road.road_at(sb).1,
+            false => sb,
+        };
+        PrivateAction::Lateral(LateralAction::LaneChangeAt(Box::new(LaneChangeAt {
+            target: LaneChangeTarget::Absolute(lb.to_string()),
+            target_lane_offset: (ob != 0.0).then_some(ob),
+            shape: DynamicsShape::Sinusoidal,
+            s,
+            roads,
+            what: format!("the route of along(…) at {}", along.site.at()),
+        })))
     }
 
     /// The first time from `from` to `until` at which `target`'s planned s reaches `s`, if it

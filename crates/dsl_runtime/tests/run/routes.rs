@@ -94,6 +94,81 @@ fn a_route_through_points_in_other_lanes_changes_lanes_between_them() {
     }
 }
 
+/// The x at which ego leaves the flat y `y` going past `from` m: the last x at y (S_TOL) at or
+/// after `from` in `r`'s frames (the start of a change the engine triggered there).
+fn last_x_at(r: &crate::support::Run, y: f64, from: f64) -> f64 {
+    r.frames
+        .iter()
+        .filter_map(|(_, objs)| objs.iter().find(|o| o.name == "ego"))
+        .filter(|p| p.x >= from && (p.y - y).abs() < S_TOL)
+        .map(|p| p.x)
+        .fold(f64::NAN, f64::max)
+}
+
+/// route_lanes_runtime.osc, by hand: the route's changes after a run-time start (ego at
+/// x = 40.5 m at 2.05 s) start where the engine has ego at each point: lane -1 -> -2 from x1
+/// (50 <= x1 <= 51) to 90 m, then the offset from x0 (90 <= x0 <= 91) to 120 m; y the
+/// closed form of the stretch the engine's x is on at every step; the end y = -4.75 m.
+#[test]
+fn a_route_through_lanes_after_a_run_time_start_changes_lanes_where_the_engine_reaches_its_points()
+{
+    let r = run("route_lanes_runtime", 0, None);
+    let (s, e) = r.phase("do.0.0");
+    assert!(
+        (s - 0.0).abs() < S_TOL && (e - 2.05).abs() < S_TOL,
+        "[{s}, {e}]"
+    );
+    let p = r.at(2.05, "ego");
+    assert!((p.x - 40.5).abs() < S_TOL && p.lane == -1, "{p:?}");
+    let x1 = last_x_at(&r, -1.75, 40.0);
+    assert!((50.0..=51.0).contains(&x1), "x1 {x1}");
+    let x0 = last_x_at(&r, -5.25, 90.0);
+    assert!((90.0..=91.0).contains(&x0), "x0 {x0}");
+    for (t, objs) in &r.frames {
+        let Some(p) = objs.iter().find(|o| o.name == "ego") else {
+            continue;
+        };
+        let want = if p.x <= x1 {
+            -1.75
+        } else if p.x <= 90.0 {
+            -1.75 - 3.5 * (1.0 - (PI * (p.x - x1) / (90.0 - x1)).cos()) / 2.0
+        } else if p.x <= x0 {
+            -5.25
+        } else {
+            -5.25 + 0.5 * (1.0 - (PI * (p.x - x0) / (120.0 - x0)).cos()) / 2.0
+        };
+        assert!(
+            (p.y - want).abs() < CHANGE_TOL,
+            "at {t} s: {p:?}, want y {want}"
+        );
+    }
+    let extra = 3.5f64.powi(2) * PI * PI / (16.0 * (90.0 - x1))
+        + 0.5f64.powi(2) * PI * PI / (16.0 * (120.0 - x0));
+    let p = r.at(10.0, "ego");
+    assert!(
+        p.lane == -2 && (p.y + 4.75).abs() < CHANGE_TOL && (p.x - (120.0 - extra)).abs() < PATH_TOL,
+        "{p:?}, want x {}",
+        120.0 - extra
+    );
+}
+
+/// route_lanes_runtime_past.osc, by hand: the run-time phase starts at 8.05 s with ego at
+/// x = 100.5 m in lane -1, past the route's point in lane -2 at 90 m: the change there fails
+/// (an error record at 8.05 s naming the along at 21:17, and a failed run).
+#[test]
+fn a_route_through_lanes_after_a_run_time_start_past_a_point_fails_the_run() {
+    let (error, records) = crate::support::run_to_error_on("route_lanes_runtime_past", "straight");
+    let error = error.expect("the run fails");
+    let (t, _, message) = records.first().expect("an error record");
+    assert!((t - 8.05).abs() < 1e-9, "{t} {message}");
+    assert!(
+        message.contains("21:17")
+            && message.contains("s = 90.000 m of road 1 ahead of 'ego'")
+            && message.contains("100.5"),
+        "{message} / {error}"
+    );
+}
+
 /// route_lanes_against.osc, by hand: the change into lane 2 over x 880 -> 840 m driving
 /// against s, y = 1.75 + 3.5 (1 - cos(pi (880 - x) / 40)) / 2 at every step.
 #[test]

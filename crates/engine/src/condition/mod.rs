@@ -20,6 +20,7 @@
 //! | `clearance` | RelativeClearance |
 //! | `angle` | Angle, RelativeAngle |
 //! | `mark` | oscsim's marks a state check notes: TraveledSinceMark, GapReachedSinceMark (no XML form) |
+//! | `place` | oscsim's PlaceReached: a place along the plan's roads reached (no XML form) |
 //! | `by_entity` | TriggeringEntities any / all, dispatch of EntityCondition |
 //! | `evaluate` | `evaluate`: the front door |
 
@@ -33,6 +34,7 @@ mod evaluate;
 mod mark;
 mod measure;
 mod motion;
+mod place;
 mod registry;
 mod road_distance;
 mod road_state;

@@ -176,6 +176,19 @@ pub enum EntityCondition {
         /// The place relative to x.
         gap: crate::SpeedGap,
     },
+    /// oscsim's place along the plan's roads reached, a condition with no XML form (the DSL
+    /// runtime writes it for a route through points in other lanes in a phase that starts on
+    /// a run-time condition, ASAM OpenSCENARIO DSL 2.1 §8.9 `along`, §8.12.2.1
+    /// `create_route`; the XML reader never does): the triggering entity's place in the
+    /// measure of `roads` ([`crate::PlanRoads`]: the plan's s over several roads; on one road,
+    /// the road the entity is on, its own s; against s the distance u = L − s along the
+    /// direction of travel) is `value` or beyond. False while it is off those roads.
+    PlaceReached {
+        /// The place (m, in the roads' measure).
+        value: f64,
+        /// The roads it is measured along, and the direction of travel.
+        roads: crate::PlanRoads,
+    },
 }
 
 /// How a distance-based condition measures (the attributes `freespace`,
