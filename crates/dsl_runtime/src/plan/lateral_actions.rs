@@ -251,6 +251,7 @@ impl Planner<'_> {
             projected: false,
             args,
             along: None,
+            path: None,
             shape: None,
             site: p.site.clone(),
         };

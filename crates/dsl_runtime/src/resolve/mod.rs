@@ -11,6 +11,7 @@
 //! | `eval` | expressions of the program, with the solver's values (private to this stage) |
 //! | `objects` | physical objects (vehicles, persons, animals, located stationary objects) and vehicle groups with their fields (§8.7, §8.7.18) |
 //! | `route` | `along(…)` routes (§8.9, §8.12) |
+//! | `along_path` | a path as `along(…)`'s route: followed as `follow_path` follows one (§8.9, §8.12, §8.8.2.16) |
 //! | `shape` | a modifier's `shape:`, a common shape read as its action's arguments (§8.9.1.2) |
 //! | `modifier` | movement modifiers (§8.9) |
 //! | `map_modifiers` | the map's modifiers in the scenario's body, as bindings and checks for the planner (§8.12.2.2) |
@@ -22,6 +23,7 @@
 //! | `coverage` | `cover(…)`/`record(…)` for the runtime to sample (§7.3.12); not planned |
 
 mod action;
+mod along_path;
 mod call;
 mod cond;
 pub(crate) mod coverage;

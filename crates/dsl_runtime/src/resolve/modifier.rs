@@ -8,6 +8,7 @@ use dsl::semantics::hir::{Expr, ModifierApp};
 
 use super::action::Action;
 use super::eval::{bind, Eval};
+use super::position::{path_route, Place};
 use super::route::{self, Along};
 use super::shape::{self, Shape};
 use super::value::{arg, Arg, Args, Val};
@@ -82,6 +83,9 @@ pub(crate) struct Modifier {
     pub args: Args,
     /// The route of an `along(…)`.
     pub along: Option<Along>,
+    /// The route of an `along(…)` that is a path (`map.create_path(…)`, §8.12 `path`, a
+    /// route): its place, followed as `follow_path` follows one (`crate::resolve`'s tree).
+    pub path: Option<Place>,
     /// Its `shape:` (§8.9.1.2), read: the dynamics of its change.
     pub shape: Option<Shape>,
     /// The application.
@@ -127,6 +131,7 @@ pub(crate) fn implied(action: Action, name: &str, site: &Site) -> Vec<Modifier> 
         projected: false,
         args: Vec::new(),
         along: None,
+        path: None,
         shape: None,
         site: site.clone(),
     }]
@@ -251,13 +256,14 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
         _ => {}
     }
     let site = ctx.site(app.span);
-    let along = match kind {
-        ModKind::Along => {
-            let route = bound.iter().find(|(n, _)| n == "route").map(|(_, e)| *e);
-            Some(route::read(ctx, &args, route, &site)?)
+    let (mut along, mut path) = (None, None);
+    if kind == ModKind::Along {
+        let route = bound.iter().find(|(n, _)| n == "route").map(|(_, e)| *e);
+        match route.map(|e| path_route(ctx, e)).transpose()?.flatten() {
+            Some(p) => path = Some(p),
+            None => along = Some(route::read(ctx, &args, route, &site)?),
         }
-        _ => None,
-    };
+    }
     Ok(Modifier {
         kind,
         name: name.to_string(),
@@ -266,6 +272,7 @@ pub(crate) fn read(ctx: &Eval<'_>, app: &ModifierApp) -> Result<Modifier, Error>
         projected,
         args,
         along,
+        path,
         shape,
         site,
     })

@@ -103,6 +103,23 @@ pub(crate) fn read(
         .collect()
 }
 
+/// The path `e` gives as the route of an `along(…)` (§8.12: a `path` inherits `route`, "a
+/// polyline of points"): `map.create_path(points, interpolation)`, or a field given one at
+/// its declaration; `None` for anything else (the route module reads the other routes).
+pub(crate) fn path_route(ev: &Eval<'_>, e: &Expr) -> Result<Option<Place>, Error> {
+    let value = match ev.path_of(e).and_then(|p| ev.lookup(&p)) {
+        Some((p, _)) => match super::route::field_value(ev, &p) {
+            Some((value, owner)) => return path_route(&owner, value),
+            None => return Ok(None),
+        },
+        None => e,
+    };
+    match map_call(ev, value) {
+        Some(("create_path", _)) => place(ev, value).map(Some),
+        _ => Ok(None),
+    }
+}
+
 /// The place `e` gives.
 fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
     let bad = |what: &str| {

@@ -361,6 +361,14 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                             field: path,
                             one_lane: true,
                         })
+                    } else if is_a(ctx, ty, "path") {
+                        // A path given by the map is followed (`along_path`); one nothing
+                        // defines has no points: bad input.
+                        Err(ctx.files.err(
+                            K::Value,
+                            e.span,
+                            format!("expected a path with points in along(…) (`{path}: path = map.create_path(points: [...], interpolation: ...)`), found `{path}`, a path nothing defines (no points to follow)"),
+                        ))
                     } else {
                         Err(unsupported(&format!(
                             "`{path}`, a {ty} (not run as a route)"

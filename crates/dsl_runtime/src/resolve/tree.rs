@@ -349,6 +349,9 @@ fn build(
                 }
             }
             let site = ev.site(*span);
+            // along(…) of a path: follow_path along it.
+            let mut places = places;
+            let kind = super::along_path::follow(kind, &mut places, &mut args, &mut modifiers)?;
             modifiers.extend(modifier::implied(kind, &name.text, &site));
             Ok(Phase {
                 path,

@@ -88,8 +88,8 @@ fn routes_that_cannot_be_followed_are_errors_before_the_run() {
     );
     refused(
         "err_along_path",
-        "found `p`, a path (not run as a route)",
-        "6:15",
+        "found `p`, a path nothing defines (no points to follow)",
+        "7:15",
     );
     let e = match lower_at(
         "tests/scenarios/err_along_two_roads.osc",

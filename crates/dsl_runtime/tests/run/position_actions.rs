@@ -204,7 +204,36 @@ const PURSUIT_TOL: f64 = 0.02;
 
 #[test]
 fn follow_path_steers_along_a_path_made_by_create_path() {
-    let r = run("actions/follow_path", 0, None);
+    follows_the_s_curve("actions/follow_path");
+}
+
+/// drive() with along(r) of a path (issue 27; was an error at the argument): the same run as
+/// follow_path's of the same path (along_path.osc, by hand as follow_path.osc).
+#[test]
+fn a_drive_along_a_path_follows_it_as_follow_path_does() {
+    follows_the_s_curve("actions/along_path");
+}
+
+/// A path along another action, or at: start only: errors at the along.
+#[test]
+fn a_path_along_another_action_or_at_one_moment_is_an_error_at_the_along() {
+    for (name, at, what) in [
+        ("err_along_path_action", "12:13", "found another action"),
+        ("err_along_path_at", "11:13", "found at: start or end"),
+    ] {
+        let e = crate::support::error(&format!("actions/{name}"));
+        assert!(
+            e.starts_with("expected drive(), move() or walk() with along(…) of a path at: all")
+                && e.contains(what)
+                && e.ends_with(&format!("{name}.osc:{at}")),
+            "{e}"
+        );
+    }
+}
+
+/// follow_path.osc's S-curve driven by `name`, checked by hand (follow_path.osc).
+fn follows_the_s_curve(name: &str) {
+    let r = run(name, 0, None);
     // At 2 s: 20 m along the S-curve, as in change_position_smooth: (39.909, -7.012), heading
     // 0.13077 rad.
     let mid = r.at(2.0, "ego");
