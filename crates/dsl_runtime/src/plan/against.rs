@@ -304,6 +304,7 @@ pub(crate) fn check_alongs(
                 Route::Free {
                     field,
                     one_lane: false,
+                    ..
                 },
             site,
             ..

@@ -273,6 +273,9 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
             if let (ModKind::Along, Some(a)) = (m.kind, &m.along) {
                 route::on_plan_road(road, a)?;
+                if let Some((field, bound)) = route::map_route(road, a)? {
+                    p.route_roads.entry(field).or_insert(bound);
+                }
                 // A route the map makes across a crossing: walked (crossed) as a crossing
                 // field the map binds.
                 if let Some(c) = route::made_crossing(road, a)? {

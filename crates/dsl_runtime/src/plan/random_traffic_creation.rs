@@ -151,6 +151,7 @@ impl Planner<'_> {
                             Route::Free {
                                 field,
                                 one_lane: false,
+                                map_route: None,
                             },
                         ..
                     }),
@@ -192,7 +193,9 @@ impl Planner<'_> {
     /// `None`: a lane field not bound yet, which another actor along it binds.
     fn route_of(&self, g: &str, m: &Modifier, route: &Route) -> Result<Option<RouteOnly>, Error> {
         let (field, one_lane) = match route {
-            Route::Free { field, one_lane } => (field, *one_lane),
+            Route::Free {
+                field, one_lane, ..
+            } => (field, *one_lane),
             _ => return Err(self.refused_at_creation(g, m)),
         };
         if let Some((lane, _)) = self.route_lanes.get(field) {

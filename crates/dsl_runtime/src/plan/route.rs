@@ -139,6 +139,7 @@ pub(crate) fn check(
         if let Route::Free {
             field,
             one_lane: true,
+            ..
         } = &along.route
         {
             // After a run-time start: the lane the actor was last planned in.
@@ -202,6 +203,53 @@ pub(crate) fn check(
         }
     }
     Ok(at_run_time)
+}
+
+/// The binding of `along`'s route when it is an element of the map's routes (`m.routes[i]`,
+/// §8.12 `map.routes`, "list of route"): on an OpenDRIVE map oscsim's choice is one route per
+/// road of the file, in the file's order, each the whole road (a `road` is a route element),
+/// so `m.routes[i]` is the road at index i, bound as a road the map's modifiers bind (its
+/// field, then the rightmost driving lane in +s at its start, `lane(1)`'s, where an actor
+/// along it without a lane of its own starts, its span in the plan's s, and why). An index past
+/// the file's roads, and a road the plan does not drive, are errors at `along`.
+#[allow(clippy::type_complexity)]
+pub(crate) fn map_route(
+    road: &PlanRoad<'_>,
+    along: &Along,
+) -> Result<Option<(String, (i32, (f64, f64), String))>, Error> {
+    let Route::Free {
+        field,
+        map_route: Some(i),
+        ..
+    } = &along.route
+    else {
+        return Ok(None);
+    };
+    let roads = road.network().roads();
+    let Some(r) = roads.get(*i) else {
+        return Err(along.site.err(
+            K::Road,
+            format!("expected an index below {} into the map's routes (one per road of the OpenDRIVE file, in its order), found `{field}`", roads.len()),
+        ));
+    };
+    let Some(span) = road.plan_span(&r.id, 0.0, r.length) else {
+        return Err(along.site.err(
+            K::Road,
+            format!("expected `{field}` on the roads the plan drives on ({}), found road {} (the map's route {i}: one per road of the OpenDRIVE file, in its order)", road.ids().join(", "), r.id),
+        ));
+    };
+    let lane = road.driving_lanes(span.0).first().copied().unwrap_or(-1);
+    Ok(Some((
+        field.clone(),
+        (
+            lane,
+            span,
+            format!(
+                "road {}, the map's route {i} (one per road of the OpenDRIVE file, in its order)",
+                r.id
+            ),
+        ),
+    )))
 }
 
 /// Checks that a named route lies on a road of the plan, in one of its driving lanes (either
@@ -522,6 +570,7 @@ fn locate_route(
         t,
         xyz,
         then,
+        on,
     } = route
     else {
         return Ok(());
@@ -583,5 +632,47 @@ fn locate_route(
     if let Some(w) = then.iter().find(|w| (w.lane > 0) != (*lane > 0)) {
         return Err(site.err(K::Road, crate::resolve::one_way(*lane, w.lane)));
     }
+    if let Some((d, dt)) = on.take() {
+        let length = net.roads().iter().find(|r| r.id == *road).map(|r| r.length);
+        (*s, *lane, *t) = point_on_route((road, *lane, *s), then, (d, dt), length, site)?;
+    }
     Ok(())
+}
+
+/// The point `d` m along a route from its first point (`road`, `lane`, `s0`; its later points
+/// `then`) and `dt` m from its line (`create_route_point(route, d, dt)`): on the first point's
+/// road, in its lane's driving direction (right-hand traffic: +s for a negative id), in the
+/// lane of the route's last point at or before it there (the points before it are dropped from
+/// `then`, the route running from the point on): its s, lane and t. oscsim's choice: the
+/// point is placed on the route's first road (`length` m long, `None` for a road the network
+/// lacks); a point beyond it, or beyond the route's last point, is an error at `along`.
+fn point_on_route(
+    (road, lane, s0): (&str, i32, f64),
+    then: &mut Vec<crate::resolve::Waypoint>,
+    (d, dt): (f64, f64),
+    length: Option<f64>,
+    site: &crate::error::Site,
+) -> Result<(f64, i32, f64), Error> {
+    let dir = if lane > 0 { -1.0 } else { 1.0 };
+    let at = s0 + dir * d;
+    if !length.is_some_and(|l| (0.0..=l).contains(&at)) {
+        return Err(site.err(
+            K::Road,
+            format!("expected the route point {d} m along the route on its first road (road {road}, from s = {s0} m in lane {lane}), found s = {at} m, off that road (oscsim places a route point on the route's first road)"),
+        ));
+    }
+    let passed = |w: &crate::resolve::Waypoint| w.road == road && dir * (w.s - at) <= 0.0;
+    if let Some(last) = then.last().filter(|w| passed(w) && dir * (w.s - at) < 0.0) {
+        return Err(site.err(
+            K::Road,
+            format!("expected the route point {d} m along the route before its last point (road {}, s = {} m), found s = {at} m, past it", last.road, last.s),
+        ));
+    }
+    let lane_here = then
+        .iter()
+        .take_while(|w| passed(w))
+        .last()
+        .map_or(lane, |w| w.lane);
+    then.retain(|w| !passed(w));
+    Ok((at, lane_here, dt))
 }

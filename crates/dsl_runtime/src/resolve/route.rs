@@ -34,6 +34,10 @@
 //!   or at other `t` the actor changes lanes (its offset), `crate::plan`'s `route_moves`.
 //!   Placement and checks as for one point, the end being the last point.
 //!
+//! - **`m.create_route_point(route, s, t)`** of a route made as above: the part of that route
+//!   from its point s m along it (from its first point) and t m from its line (its lanes'
+//!   centres), placed on the network before the plan (`crate::plan`'s `locate_points`).
+//!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
 //!   person walking along it crosses from its start lane to its end lane (`crate::plan`),
 //!   from `start_offset` m after the crossing's start to `end_offset` m before its end; and
@@ -41,8 +45,9 @@
 //!   of one road joined across the crosswalk that holds the line between them, crossed the
 //!   same way.
 //!
-//! Everything else (paths, route points, list elements of the map, other map
-//! methods) is an error naming the argument.
+//! A path (`map.create_path(…)`) is followed as `follow_path` follows one (`along_path`).
+//! Everything else (list elements of the map, other map methods) is an error naming the
+//! argument.
 
 use dsl::semantics::hir::{Expr, ExprKind};
 use dsl::Value;
@@ -60,6 +65,10 @@ pub(crate) enum Route {
         field: String,
         /// A `lane`/`compound_lane`: one lane, kept.
         one_lane: bool,
+        /// An element of the map's routes (`m.routes[i]`, §8.12 `map.routes`): on an OpenDRIVE
+        /// map one route per road of the file, in the file's order, so the road at index i,
+        /// bound by the plan (`crate::plan`) as a road the map's modifiers bind.
+        map_route: Option<usize>,
     },
     /// Lane `lane` of road `road` from s = `s`, `t` from the lane's centre: to the end of the
     /// plan's roads, or with `then`, over the roads of the network's shortest lane path
@@ -81,6 +90,11 @@ pub(crate) enum Route {
         /// The route's later points in order (empty: a route from one point,
         /// `create_odr_point`).
         then: Vec<Waypoint>,
+        /// A point on this route (`map.create_route_point(route, s, t)`): s m along it from
+        /// its first point and t m from its line (its lane's centre, + left of +s); the route
+        /// is then the part from that point on, placed on the network before the plan
+        /// (`crate::plan`'s `locate_points`), which fills in `road`, `lane`, `s` and `t`.
+        on: Option<(f64, f64)>,
     },
     /// A `crossing` field the map's `crossing_connects` binds to a crosswalk of the map: a
     /// person walks it from its start lane to its end lane.
@@ -174,7 +188,8 @@ pub(crate) fn read(
     };
     let route = route_of(ctx, e)?;
     let fixed_ends = match &route {
-        Route::Free { field, .. } => Some((field, "a route the runtime chooses (its ends are where the actors drive)", "; name the route with map.create_odr_point(road_id, lane_id, s, t) to drive from a given place")),
+        Route::Free { field, map_route: None, .. } => Some((field, "a route the runtime chooses (its ends are where the actors drive)", "; name the route with map.create_odr_point(road_id, lane_id, s, t) to drive from a given place")),
+        Route::Free { field, .. } => Some((field, "a road of the map (the actors drive it from its start, or where they are on it)", "; name a point on it with map.create_odr_point(road_id, lane_id, s, t) to drive from a given place")),
         // A crossing's offsets trim the walk along it (`plan::crossing_walk`).
         Route::Crossing { .. } | Route::Lane { .. } => None,
     };
@@ -297,6 +312,7 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                         return crossing_route(ctx, e, points);
                     }
                 }
+                "create_route_point" => return route_point(ctx, e, args, depth),
                 other => return Err(unsupported(&format!("map.{other}(…)"))),
             }
             // Both calls give at least one point.
@@ -328,6 +344,23 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                         xyz: p.xyz,
                     })
                     .collect(),
+                on: None,
+            })
+        }
+        ExprKind::Index(list, at) if map_list(ctx, list, "routes") => {
+            let i = ctx.number(at)?;
+            if i < 0.0 || i.fract() != 0.0 {
+                return Err(ctx.files.err(
+                    K::Value,
+                    at.span,
+                    format!("expected an index of 0 or more (a whole number) into the map's routes, found {i}"),
+                ));
+            }
+            let field = ctx.path_of(e).unwrap_or_else(|| format!("map.routes[{i}]"));
+            Ok(Route::Free {
+                field,
+                one_lane: false,
+                map_route: Some(i as usize),
             })
         }
         ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
@@ -355,11 +388,13 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                         Ok(Route::Free {
                             field: path,
                             one_lane: false,
+                            map_route: None,
                         })
                     } else if ONE_LANE.iter().any(|t| is_a(ctx, ty, t)) {
                         Ok(Route::Free {
                             field: path,
                             one_lane: true,
+                            map_route: None,
                         })
                     } else if is_a(ctx, ty, "path") {
                         // A path given by the map is followed (`along_path`); one nothing
@@ -379,6 +414,75 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             }
         }
         _ => Err(unsupported("an expression")),
+    }
+}
+
+/// The route of `map.create_route_point(route, s, t)` (its call `e`, arguments `args`, `depth`
+/// fields deep) as `along`'s route (§8.12 `route_point`, a route element: "s" along the route,
+/// "t" across it): the part of `route` from its point s m along it from its first point, t m
+/// from its line, a route the map makes (`create_odr_point`, `create_route`, …; oscsim's
+/// choice: its line is its lanes' centres, as an odr point's t is measured from its lane's
+/// centre). A route the runtime chooses (`r: route` nothing defines) has no first point to
+/// measure s from before the plan (its roads are the plan's): an error at the argument, as are
+/// a negative s and a point on a point already (`create_route_point` of a route point).
+fn route_point(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    args: &[dsl::semantics::hir::Arg],
+    depth: usize,
+) -> Result<Route, Error> {
+    let params = ["route", "s", "t"].map(String::from);
+    let bound = bind(args, &params);
+    let get = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, a)| *a);
+    let Some(r) = get("route") else {
+        return Err(ctx.files.err(
+            K::Value,
+            e.span,
+            "expected `route` in create_route_point(route, s, t), found none",
+        ));
+    };
+    let s = get("s").map(|a| ctx.number(a)).transpose()?.unwrap_or(0.0);
+    if s < 0.0 {
+        return Err(ctx.files.err(
+            K::Value,
+            get("s").map_or(e.span, |a| a.span),
+            format!("expected an s of 0 m or more along the route in create_route_point(…), found {s} m"),
+        ));
+    }
+    let t = get("t").map(|a| ctx.number(a)).transpose()?.unwrap_or(0.0);
+    match route_within(ctx, r, depth + 1)? {
+        Route::Lane {
+            road,
+            lane,
+            s: s0,
+            t: t0,
+            xyz,
+            then,
+            on: None,
+        } => Ok(Route::Lane {
+            road,
+            lane,
+            s: s0,
+            t: t0,
+            xyz,
+            then,
+            on: Some((s, t)),
+        }),
+        Route::Lane { .. } => Err(ctx.files.err(
+            K::Value,
+            r.span,
+            "expected a route in create_route_point(route, s, t), found a route point (a point has no length to measure s along)",
+        )),
+        Route::Free { field, .. } => Err(ctx.files.err(
+            K::Value,
+            r.span,
+            format!("expected a route the map makes (map.create_odr_point(…), map.create_route(…), …) in create_route_point(route, s, t) as along's route, found `{field}`, a route the runtime chooses (its start, which s is measured from, is where the actors drive: give its point as map.create_odr_point(road_id, lane_id, s, t))"),
+        )),
+        Route::Crossing { .. } => Err(ctx.files.err(
+            K::Value,
+            r.span,
+            "expected a route over the lanes in create_route_point(route, s, t) as along's route, found a crossing (walked from its start lane to its end lane; along(c, start_offset: s) walks from s on)",
+        )),
     }
 }
 
@@ -409,6 +513,7 @@ pub(crate) fn lane_field(ctx: &Ctx<'_>, a: &super::value::Arg) -> Result<LaneFie
         Some(Ok(Route::Free {
             field,
             one_lane: true,
+            ..
         })) => Some((field, "lane".to_string())),
         // No method of the map gives a lane (create_odr_point an odr_point, create_route a
         // compound_route): the checker refuses such a value for a lane field, so this is a
@@ -733,6 +838,18 @@ pub(crate) fn map_call<'e>(
         .and_then(|p| ctx.lookup(&p))
         .is_some_and(|(_, v)| matches!(v, Value::RunTime(t) if is_a(ctx, t, "map")))
         .then_some((method.text.as_str(), args.as_slice()))
+}
+
+/// Whether `e` is the list field `name` of a `map` field (`m.routes`).
+fn map_list(ctx: &Ctx<'_>, e: &Expr, name: &str) -> bool {
+    let ExprKind::Field(obj, f) = &e.kind else {
+        return false;
+    };
+    f.text == name
+        && ctx
+            .path_of(obj)
+            .and_then(|p| ctx.lookup(&p))
+            .is_some_and(|(_, v)| matches!(v, Value::RunTime(t) if is_a(ctx, t, "map")))
 }
 
 /// Whether type `ty` is `sup` or inherits from it.

@@ -352,3 +352,43 @@ fn change_position_on_the_road_network_behind_the_actor_on_several_roads_fails_t
         "{error}"
     );
 }
+
+/// The map's routes (issue 27; `m.routes[i]` was an error at the argument): one per road of the
+/// OpenDRIVE file, in its order, each the whole road. map_routes.osc on two_roads.xodr, by hand:
+/// m.routes[0] is road 1; ego along it from the road's start in its rightmost driving lane
+/// (lane -2, y = -5.25 m), its rear at s = 0 (x = 0.5 m), x = 30.5 m at 3 s; npc with lane(2) and position(50m) in lane -1 from
+/// x = 50 m to 80 m.
+#[test]
+fn the_maps_routes_are_its_roads_in_the_files_order() {
+    let r = run("map_routes", "two_roads");
+    let (e0, e3) = (r.at(0.0, "ego"), r.at(3.0, "ego"));
+    assert!(e0.road == "1" && e0.lane == -2, "{e0:?}");
+    assert!((e0.y + 5.25).abs() < S_TOL, "{e0:?}");
+    // From the road's start, the rear bumper at s = 0: the reference point 0.5 m ahead.
+    assert!((e0.x - 0.5).abs() < S_TOL, "{e0:?}");
+    assert!((e3.x - 30.5).abs() < S_TOL && e3.lane == -2, "{e3:?}");
+    for (t, x) in [(0.0, 50.0), (3.0, 80.0)] {
+        let p = r.at(t, "npc");
+        assert!(
+            p.road == "1" && p.lane == -1 && (p.x - x).abs() < S_TOL && (p.y + 1.75).abs() < S_TOL,
+            "at {t} s: {p:?}"
+        );
+    }
+}
+
+/// A map route off the plan's roads, or past the file's roads: errors at the along.
+#[test]
+fn a_map_route_off_the_plan_or_past_the_files_roads_is_an_error_at_the_along() {
+    let e = error_on("err_map_route_off", "two_roads");
+    assert!(
+        e.contains("expected `m.routes[1]` on the roads the plan drives on (1), found road 2 (the map's route 1")
+            && e.ends_with("err_map_route_off.osc:10:13"),
+        "{e}"
+    );
+    let e = error_on("err_map_route_index", "two_roads");
+    assert!(
+        e.contains("expected an index below 2 into the map's routes (one per road of the OpenDRIVE file, in its order), found `m.routes[5]`")
+            && e.ends_with("err_map_route_index.osc:7:9"),
+        "{e}"
+    );
+}

@@ -94,6 +94,30 @@ fn a_route_through_points_in_other_lanes_changes_lanes_between_them() {
     }
 }
 
+/// Asserts that ego starts at (`x0`, `y0`) in `lane` and that at every step its y is `want`
+/// of its x (CHANGE_TOL): the closed form of the stretch its x is on.
+fn ego_follows(
+    r: &crate::support::Run,
+    (x0, y0, lane): (f64, f64, i32),
+    want: impl Fn(f64) -> f64,
+) {
+    let p = r.at(0.0, "ego");
+    assert!(
+        (p.x - x0).abs() < S_TOL && (p.y - y0).abs() < S_TOL && p.lane == lane,
+        "{p:?}"
+    );
+    for (t, objs) in &r.frames {
+        let Some(p) = objs.iter().find(|o| o.name == "ego") else {
+            continue;
+        };
+        let want = want(p.x);
+        assert!(
+            (p.y - want).abs() < CHANGE_TOL,
+            "at {t} s: {p:?}, want y {want}"
+        );
+    }
+}
+
 /// The x at which ego leaves the flat y `y` going past `from` m: the last x at y (S_TOL) at or
 /// after `from` in `r`'s frames (the start of a change the engine triggered there).
 fn last_x_at(r: &crate::support::Run, y: f64, from: f64) -> f64 {
@@ -124,24 +148,17 @@ fn a_route_through_lanes_after_a_run_time_start_changes_lanes_where_the_engine_r
     assert!((50.0..=51.0).contains(&x1), "x1 {x1}");
     let x0 = last_x_at(&r, -5.25, 90.0);
     assert!((90.0..=91.0).contains(&x0), "x0 {x0}");
-    for (t, objs) in &r.frames {
-        let Some(p) = objs.iter().find(|o| o.name == "ego") else {
-            continue;
-        };
-        let want = if p.x <= x1 {
+    ego_follows(&r, (20.0, -1.75, -1), |x| {
+        if x <= x1 {
             -1.75
-        } else if p.x <= 90.0 {
-            -1.75 - 3.5 * (1.0 - (PI * (p.x - x1) / (90.0 - x1)).cos()) / 2.0
-        } else if p.x <= x0 {
+        } else if x <= 90.0 {
+            -1.75 - 3.5 * (1.0 - (PI * (x - x1) / (90.0 - x1)).cos()) / 2.0
+        } else if x <= x0 {
             -5.25
         } else {
-            -5.25 + 0.5 * (1.0 - (PI * (p.x - x0) / (120.0 - x0)).cos()) / 2.0
-        };
-        assert!(
-            (p.y - want).abs() < CHANGE_TOL,
-            "at {t} s: {p:?}, want y {want}"
-        );
-    }
+            -5.25 + 0.5 * (1.0 - (PI * (x - x0) / (120.0 - x0)).cos()) / 2.0
+        }
+    });
     let extra = 3.5f64.powi(2) * PI * PI / (16.0 * (90.0 - x1))
         + 0.5f64.powi(2) * PI * PI / (16.0 * (120.0 - x0));
     let p = r.at(10.0, "ego");
@@ -167,6 +184,37 @@ fn a_route_through_lanes_after_a_run_time_start_past_a_point_fails_the_run() {
             && message.contains("100.5"),
         "{message} / {error}"
     );
+}
+
+/// route_point_along.osc, by hand: a route point 40 m along a route through points is the
+/// route from s = 60 m on, in lane -1 (its last point's before it): ego placed at (60, -1.75),
+/// y = -1.75 - 3.5 (1 - cos(pi (x - 60) / 30)) / 2 at every step to 90 m, then lane -2; x =
+/// 100 m less the change's longer path at 4 s. npc 15 m along a route from one point, 0.5 m
+/// from its line: (25, -8.25) at 0 s, (45, -8.25) at 4 s.
+#[test]
+fn a_route_point_as_the_route_is_the_route_from_that_point_on() {
+    let r = run("route_point_along", 0, None);
+    ego_follows(&r, (60.0, -1.75, -1), |x| {
+        if x <= 90.0 {
+            -1.75 - 3.5 * (1.0 - (PI * (x - 60.0) / 30.0).cos()) / 2.0
+        } else {
+            -5.25
+        }
+    });
+    let extra = 3.5f64.powi(2) * PI * PI / (16.0 * 30.0);
+    let p = r.at(4.0, "ego");
+    assert!(
+        p.lane == -2 && (p.x - (100.0 - extra)).abs() < PATH_TOL,
+        "{p:?}, want x {}",
+        100.0 - extra
+    );
+    for (t, x) in [(0.0, 25.0), (4.0, 45.0)] {
+        let p = r.at(t, "npc");
+        assert!(
+            (p.x - x).abs() < S_TOL && (p.y + 8.25).abs() < S_TOL && p.lane == -3,
+            "at {t} s: {p:?}"
+        );
+    }
 }
 
 /// route_lanes_against.osc, by hand: the change into lane 2 over x 880 -> 840 m driving
@@ -248,6 +296,18 @@ fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
             "straight",
             "expected lane for field `l`, found odr_point",
             "err_lane_field_route.osc:5:15",
+        ),
+        (
+            "err_route_point_free",
+            "straight",
+            "found `r`, a route the runtime chooses (its start, which s is measured from, is where the actors drive",
+            "err_route_point_free.osc:9:36",
+        ),
+        (
+            "err_route_point_beyond",
+            "straight",
+            "expected the route point 100 m along the route before its last point (road 1, s = 90 m), found s = 120 m, past it",
+            "err_route_point_beyond.osc:7:9",
         ),
         (
             "err_route_xyz",

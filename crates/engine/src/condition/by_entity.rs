@@ -15,8 +15,8 @@ use scenario::{
 use super::angle::{own_angle, relative_angle, within};
 use super::clearance::{clear, Clearance};
 use super::mark::{gap_reached_since, traveled_since};
-use super::place::place_reached;
 use super::motion::{acceleration, relative_speed, speed, stands_still, DURATION_TOLERANCE};
+use super::place::place_reached;
 use super::road_state::{at_end_of_road, off_road};
 use super::rule::compare;
 use super::spacing::{distance_holds, time_headway, time_to_collision};
@@ -241,9 +241,7 @@ fn holds<C: ConditionContext + ?Sized>(
         EntityCondition::TraveledSinceMark { mark, value } => {
             traveled_since(e, ctx.mark(mark).as_ref(), *value)
         }
-        EntityCondition::PlaceReached { value, roads } => {
-            place_reached(network, e, *value, roads)
-        }
+        EntityCondition::PlaceReached { value, roads } => place_reached(network, e, *value, roads),
         EntityCondition::GapReachedSinceMark { mark, gap } => {
             let r = reference(ctx, &gap.entity_ref)?;
             gap_reached_since(network, now, e, &r, ctx.mark(mark).as_ref(), gap)
