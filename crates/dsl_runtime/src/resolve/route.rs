@@ -296,6 +296,9 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                 .and_then(|p| ctx.lookup(&p))
                 .is_some_and(|(_, v)| matches!(v, Value::RunTime(t) if is_a(ctx, t, "map")));
             if !on_map {
+                if let "start_point" | "end_point" = method.text.as_str() {
+                    return end_point(ctx, obj, method.text == "end_point", depth);
+                }
                 return Err(unsupported(&format!(
                     "`{}` called on something other than a map field",
                     method.text
@@ -303,6 +306,18 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             }
             let mut points = Vec::new();
             match method.text.as_str() {
+                // The world position of a route point (§8.12.2.1): the same place.
+                "route_point_to_xyz" => {
+                    let params = ["route_point".to_string()];
+                    let Some((_, p)) = bind(args, &params).into_iter().next() else {
+                        return Err(ctx.files.err(
+                            K::Value,
+                            e.span,
+                            "expected `route_point` in route_point_to_xyz(…), found none",
+                        ));
+                    };
+                    return route_within(ctx, p, depth + 1);
+                }
                 // odr_to_route_point (§8.12.2.1.1) names the same point as a route point.
                 "create_odr_point" => points.push(route_start(ctx, e, args, false)?),
                 "odr_to_route_point" => points.push(route_start(ctx, e, args, true)?),
@@ -414,6 +429,42 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             }
         }
         _ => Err(unsupported("an expression")),
+    }
+}
+
+/// The route of `r.start_point()` or `r.end_point()` (§8.12 `route`: "start_point() ->
+/// route_point", "end_point() -> route_point") as `along`'s route, `r` written at `obj`,
+/// `depth` fields deep: a point as a route is the route from it on (`create_route_point`), so
+/// the start point of a route the map makes is that route, its end point the route from its
+/// last point (over the roads the engine drives onto after it). A route the runtime chooses, a
+/// crossing, and the end of a route from one point are not known before the plan: errors at
+/// `r`.
+fn end_point(ctx: &Ctx<'_>, obj: &Expr, end: bool, depth: usize) -> Result<Route, Error> {
+    let which = if end { "end_point" } else { "start_point" };
+    let wrong = |found: &str| {
+        ctx.files.err(
+            K::Value,
+            obj.span,
+            format!("expected a route the map makes through points (map.create_route(…), …) before .{which}() in along(…), found {found}"),
+        )
+    };
+    match route_within(ctx, obj, depth + 1)? {
+        // The start of a route, and either end of a point, is where the route already starts.
+        r @ Route::Lane { on: Some(_), .. } => Ok(r),
+        r @ Route::Lane { .. } if !end => Ok(r),
+        Route::Lane { mut then, .. } => match then.pop() {
+            Some(last) => Ok(Route::Lane {
+                road: last.road,
+                lane: last.lane,
+                s: last.s,
+                t: last.t,
+                xyz: last.xyz,
+                then: Vec::new(),
+                on: None,
+            }),
+            None => Err(wrong("a route from one point (it runs on over the roads the engine drives onto: its end is not known before the plan)")),
+        },
+        _ => Err(wrong("a route the runtime chooses or a crossing (its ends are not known before the plan)")),
     }
 }
 

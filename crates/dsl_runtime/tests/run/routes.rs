@@ -217,6 +217,27 @@ fn a_route_point_as_the_route_is_the_route_from_that_point_on() {
     }
 }
 
+/// route_ends.osc, by hand: r.end_point() is the route from r's last point (90, -5.25): ego
+/// from there to x = 115 m at 2.5 s; r.start_point() is r: npc (20, -1.75) -> (45, -1.75);
+/// route_point_to_xyz(p) is p's place: bus (30, -8.75) -> (42.5, -8.75).
+#[test]
+fn a_routes_start_and_end_points_and_a_points_world_position_are_routes_from_them() {
+    let r = run("route_ends", 0, None);
+    for (name, lane, y, x0, x3) in [
+        ("ego", -2, -5.25, 90.0, 115.0),
+        ("npc", -1, -1.75, 20.0, 45.0),
+        ("bus", -3, -8.75, 30.0, 42.5),
+    ] {
+        for (t, x) in [(0.0, x0), (2.5, x3)] {
+            let p = r.at(t, name);
+            assert!(
+                (p.x - x).abs() < S_TOL && (p.y - y).abs() < S_TOL && p.lane == lane,
+                "{name} at {t} s: {p:?}"
+            );
+        }
+    }
+}
+
 /// route_lanes_against.osc, by hand: the change into lane 2 over x 880 -> 840 m driving
 /// against s, y = 1.75 + 3.5 (1 - cos(pi (880 - x) / 40)) / 2 at every step.
 #[test]
@@ -308,6 +329,12 @@ fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
             "straight",
             "expected the route point 100 m along the route before its last point (road 1, s = 90 m), found s = 120 m, past it",
             "err_route_point_beyond.osc:7:9",
+        ),
+        (
+            "err_route_end_one_point",
+            "straight",
+            "before .end_point() in along(…), found a route from one point (it runs on over the roads the engine drives onto",
+            "err_route_end_one_point.osc:8:15",
         ),
         (
             "err_route_xyz",
