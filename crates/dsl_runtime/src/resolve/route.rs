@@ -323,7 +323,7 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                 "odr_to_route_point" => points.push(route_start(ctx, e, args, true)?),
                 "create_xyz_point" | "xyz_to_route_point" => points.push(xyz_point(ctx, e, args)?),
                 "create_route" => {
-                    if route_points(ctx, e, args, &mut points)? {
+                    if route_points(ctx, e, args, &mut points, depth)? {
                         return crossing_route(ctx, e, points);
                     }
                 }
@@ -703,6 +703,7 @@ fn route_points(
     e: &Expr,
     args: &[dsl::semantics::hir::Arg],
     out: &mut Vec<RoutePoint>,
+    depth: usize,
 ) -> Result<bool, Error> {
     let params: Vec<String> = ["routes", "connect_points_by", "legal_route"]
         .iter()
@@ -761,7 +762,7 @@ fn route_points(
                 out.push(xyz_point(ctx, item, a)?)
             }
             Some(("create_route", a)) => {
-                if route_points(ctx, item, a, out)? {
+                if route_points(ctx, item, a, out, depth)? {
                     return Err(ctx.files.err(
                         K::Value,
                         item.span,
@@ -769,13 +770,44 @@ fn route_points(
                     ));
                 }
             }
-            _ => {
-                return Err(ctx.files.err(
-                    K::Unsupported,
-                    item.span,
-                    "expected an odr point (m.create_odr_point(…), m.odr_to_route_point(…)), a point in world coordinates (m.create_xyz_point(…), m.xyz_to_route_point(…)) or a route (m.create_route(…)) in create_route(…), found another expression",
-                ))
-            }
+            // Any other route made of points (a route field given one, a route's end point):
+            // its points.
+            _ => match route_within(ctx, item, depth + 1)? {
+                Route::Lane {
+                    road,
+                    lane,
+                    s,
+                    t,
+                    xyz,
+                    then,
+                    on: None,
+                } => {
+                    let span = item.span;
+                    out.push(RoutePoint {
+                        road,
+                        lane,
+                        s,
+                        t,
+                        xyz,
+                        span,
+                    });
+                    out.extend(then.into_iter().map(|w| RoutePoint {
+                        road: w.road,
+                        lane: w.lane,
+                        s: w.s,
+                        t: w.t,
+                        xyz: w.xyz,
+                        span,
+                    }));
+                }
+                _ => {
+                    return Err(ctx.files.err(
+                        K::Value,
+                        item.span,
+                        "expected an odr point (m.create_odr_point(…), m.odr_to_route_point(…)), a point in world coordinates (m.create_xyz_point(…), m.xyz_to_route_point(…)) or a route the map makes of such points (m.create_route(…), a field given one) in create_route(…), found a route the runtime chooses, a crossing, a path or a point on a route (no points of its own to join)",
+                    ))
+                }
+            },
         }
     }
     Ok(crossing)

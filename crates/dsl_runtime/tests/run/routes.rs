@@ -219,7 +219,8 @@ fn a_route_point_as_the_route_is_the_route_from_that_point_on() {
 
 /// route_ends.osc, by hand: r.end_point() is the route from r's last point (90, -5.25): ego
 /// from there to x = 115 m at 2.5 s; r.start_point() is r: npc (20, -1.75) -> (45, -1.75);
-/// route_point_to_xyz(p) is p's place: bus (30, -8.75) -> (42.5, -8.75).
+/// route_point_to_xyz(p) is p's place: bus (30, -8.75) -> (42.5, -8.75); a route field among
+/// create_route's points gives its points: truck (100, -8.75) -> (125, -8.75).
 #[test]
 fn a_routes_start_and_end_points_and_a_points_world_position_are_routes_from_them() {
     let r = run("route_ends", 0, None);
@@ -227,6 +228,7 @@ fn a_routes_start_and_end_points_and_a_points_world_position_are_routes_from_the
         ("ego", -2, -5.25, 90.0, 115.0),
         ("npc", -1, -1.75, 20.0, 45.0),
         ("bus", -3, -8.75, 30.0, 42.5),
+        ("truck", -3, -8.75, 100.0, 125.0),
     ] {
         for (t, x) in [(0.0, x0), (2.5, x3)] {
             let p = r.at(t, name);
