@@ -339,6 +339,12 @@ fn what_a_route_through_lanes_cannot_do_is_an_error_at_its_place() {
             "err_route_end_one_point.osc:8:15",
         ),
         (
+            "err_route_self",
+            "straight",
+            "defined through itself",
+            "err_route_self.osc:6:32",
+        ),
+        (
             "err_route_xyz",
             "straight",
             "expected a point on a road of the network for the route's point at x = 50 m, y = 30 m",
