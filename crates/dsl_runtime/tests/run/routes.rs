@@ -106,6 +106,11 @@ fn ego_follows(
         (p.x - x0).abs() < S_TOL && (p.y - y0).abs() < S_TOL && p.lane == lane,
         "{p:?}"
     );
+    ego_y_follows(r, want);
+}
+
+/// Asserts that at every step ego's y is `want` of its x (CHANGE_TOL).
+fn ego_y_follows(r: &crate::support::Run, want: impl Fn(f64) -> f64) {
     for (t, objs) in &r.frames {
         let Some(p) = objs.iter().find(|o| o.name == "ego") else {
             continue;
@@ -238,6 +243,39 @@ fn a_routes_start_and_end_points_and_a_points_world_position_are_routes_from_the
             );
         }
     }
+}
+
+/// route_lanes_runtime_against.osc, by hand: driving against s after a run-time start (ego at
+/// x = 894.5 m at 1.55 s), the change into lane 2 starts where the engine has ego at the point
+/// 880 m (x1 within a step's travel past it) and follows y = 1.75 + 3.5 (1 - cos(pi (x1 - x) /
+/// (x1 - 840))) / 2 at every step to 840 m.
+#[test]
+fn a_route_through_lanes_against_s_after_a_run_time_start_changes_where_the_engine_reaches_its_points(
+) {
+    let r = run("route_lanes_runtime_against", 0, None);
+    let p = r.at(1.55, "ego");
+    assert!((p.x - 894.5).abs() < S_TOL && p.lane == 1, "{p:?}");
+    // The last x at lane 1's centre before 880 m is passed (x falls along the run).
+    let x1 = r
+        .frames
+        .iter()
+        .filter_map(|(_, objs)| objs.iter().find(|o| o.name == "ego"))
+        .filter(|p| p.x <= 880.0 && (p.y - 1.75).abs() < S_TOL)
+        .map(|p| p.x)
+        .fold(f64::NAN, f64::min);
+    assert!((879.0..=880.0).contains(&x1), "x1 {x1}");
+    ego_y_follows(&r, |x| {
+        if x >= x1 {
+            1.75
+        } else if x >= 840.0 {
+            1.75 + 3.5 * (1.0 - (PI * (x1 - x) / (x1 - 840.0)).cos()) / 2.0
+        } else {
+            5.25
+        }
+    });
+    // Past 840 m (about 7.0 s) in lane 2 at its centre: the phase's end, 7.55 s.
+    let p = r.at(7.55, "ego");
+    assert!(p.lane == 2 && (p.y - 5.25).abs() < CHANGE_TOL, "{p:?}");
 }
 
 /// route_lanes_against.osc, by hand: the change into lane 2 over x 880 -> 840 m driving
