@@ -36,7 +36,13 @@
 //!
 //! - **`m.create_route_point(route, s, t)`** of a route made as above: the part of that route
 //!   from its point s m along it (from its first point) and t m from its line (its lanes'
-//!   centres), placed on the network before the plan (`crate::plan`'s `locate_points`).
+//!   centres), placed on the network before the plan (`crate::plan`'s `locate_points`); a
+//!   route's **`start_point()`** (the route) and **`end_point()`** (the route from its last
+//!   point), and **`m.route_point_to_xyz(p)`** (p's route): a point as a route is the route
+//!   from it on.
+//!
+//! - **`m.routes[i]`**: on an OpenDRIVE map one route per road of the file, in its order, so
+//!   the road at index i, which the plan binds as a road the map's modifiers bind.
 //!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
 //!   person walking along it crosses from its start lane to its end lane (`crate::plan`),
