@@ -1,6 +1,8 @@
 //! A path as the route of `along(…)` (ASAM OpenSCENARIO DSL 2.1 §8.9 `along`: "the actor
 //! moves along the route"; §8.12 `path inherits route`, "a polyline of points", made by the
-//! map's `create_path(points, interpolation)`): `drive()`, `move()` or `walk()` with
+//! map's `create_path(points, interpolation)`, or `resolve_relative_path(relative_path,
+//! reference, transform)`, follow_path's `relative:` with that reference and transform):
+//! `drive()`, `move()` or `walk()` with
 //! `along(p)` follows p's line as `follow_path(absolute: p)` does (§8.8.2.16), the
 //! FollowTrajectoryAction along the path at the speed the phase gives, in following mode
 //! `follow` (steered within the vehicle's limits), the phase ending where the path does
@@ -16,7 +18,7 @@
 
 use super::action::Action;
 use super::modifier::{At, ModKind, Modifier};
-use super::position::PlaceArg;
+use super::position::{Place, PlaceArg};
 use super::value::Args;
 use crate::error::{Error, ErrorKind as K};
 
@@ -61,9 +63,15 @@ pub(super) fn follow(
             args.push((name.to_string(), a.clone()));
         }
     }
-    if let Some(place) = m.path {
+    if let Some((place, placing)) = m.path {
+        // A relative path is follow_path's `relative:`, placed by its reference and transform.
+        let param = match place {
+            Place::Relative { .. } => "relative",
+            _ => "absolute",
+        };
+        args.extend(placing);
         places.push(PlaceArg {
-            param: "absolute".to_string(),
+            param: param.to_string(),
             place,
             site: m.site,
         });

@@ -83,9 +83,11 @@ pub(crate) struct Modifier {
     pub args: Args,
     /// The route of an `along(…)`.
     pub along: Option<Along>,
-    /// The route of an `along(…)` that is a path (`map.create_path(…)`, §8.12 `path`, a
-    /// route): its place, followed as `follow_path` follows one (`crate::resolve`'s tree).
-    pub path: Option<Place>,
+    /// The route of an `along(…)` that is a path (`map.create_path(…)`,
+    /// `map.resolve_relative_path(…)`, §8.12 `path`, a route): its place and the arguments
+    /// that place it (`reference`, `transform`), followed as `follow_path` follows one
+    /// (`along_path`).
+    pub path: Option<(Place, Args)>,
     /// Its `shape:` (§8.9.1.2), read: the dynamics of its change.
     pub shape: Option<Shape>,
     /// The application.

@@ -15,7 +15,7 @@ use dsl::Value;
 use super::action::Action;
 use super::eval::{bind, Eval};
 use super::route::{map_call, odr_point};
-use super::value::Val;
+use super::value::{Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
 /// A place or orientation an action is given.
@@ -104,9 +104,13 @@ pub(crate) fn read(
 }
 
 /// The path `e` gives as the route of an `along(…)` (§8.12: a `path` inherits `route`, "a
-/// polyline of points"): `map.create_path(points, interpolation)`, or a field given one at
-/// its declaration; `None` for anything else (the route module reads the other routes).
-pub(crate) fn path_route(ev: &Eval<'_>, e: &Expr) -> Result<Option<Place>, Error> {
+/// polyline of points"), with the arguments that place it: `map.create_path(points,
+/// interpolation)` (none), `map.resolve_relative_path(relative_path, reference, transform)`
+/// (§8.12.2.1: the relative path placed against `reference` in the frame `transform` says,
+/// as `follow_path(relative: …, reference, transform)` places one: its `reference` and
+/// `transform`), or a field given one at its declaration; `None` for anything else (the route
+/// module reads the other routes).
+pub(crate) fn path_route(ev: &Eval<'_>, e: &Expr) -> Result<Option<(Place, Args)>, Error> {
     let value = match ev.path_of(e).and_then(|p| ev.lookup(&p)) {
         Some((p, _)) => match super::route::field_value(ev, &p) {
             Some((value, owner)) => return path_route(&owner, value),
@@ -115,7 +119,32 @@ pub(crate) fn path_route(ev: &Eval<'_>, e: &Expr) -> Result<Option<Place>, Error
         None => e,
     };
     match map_call(ev, value) {
-        Some(("create_path", _)) => place(ev, value).map(Some),
+        Some(("create_path", _)) => Ok(Some((place(ev, value)?, Args::new()))),
+        Some(("resolve_relative_path", args)) => {
+            let names = ["relative_path", "reference", "transform"].map(String::from);
+            let bound = bind(args, &names);
+            let Some((_, rp)) = bound.iter().find(|(n, _)| n == "relative_path") else {
+                return Err(ev.files.err(
+                    K::Value,
+                    value.span,
+                    "expected `relative_path` in resolve_relative_path(…), found none",
+                ));
+            };
+            let place = place(ev, rp)?;
+            if !matches!(&place, Place::Relative { times, .. } if times.is_empty()) {
+                return Err(ev.files.err(
+                    K::Value,
+                    rp.span,
+                    "expected a relative path (relative_path_pose_3d) in resolve_relative_path(…), found another value",
+                ));
+            }
+            let placing = bound
+                .iter()
+                .filter(|(n, _)| n != "relative_path")
+                .map(|(n, a)| (n.clone(), ev.arg(a)))
+                .collect();
+            Ok(Some((place, placing)))
+        }
         _ => Ok(None),
     }
 }

@@ -214,6 +214,26 @@ fn a_drive_along_a_path_follows_it_as_follow_path_does() {
     follows_the_s_curve("actions/along_path");
 }
 
+/// drive() with along(m.resolve_relative_path(rp, npc, object_relative)): follow_path's
+/// relative path against npc (issue 27). along_relative_path.osc, by hand: the line (20, -5.25)
+/// -> (60, -5.25), x = 20 + 10 t at 0, 2 and 4 s, y = -5.25 m.
+#[test]
+fn a_drive_along_a_resolved_relative_path_follows_it_against_its_reference() {
+    let r = run("actions/along_relative_path", 0, None);
+    for t in [0.0, 2.0, 4.0] {
+        let p = r.at(t, "ego");
+        assert!(
+            (p.x - (20.0 + 10.0 * t)).abs() < 1e-6 && (p.y + 5.25).abs() < 1e-6,
+            "at {t} s: {p:?}"
+        );
+    }
+    let (s, e) = r.phase("do.1");
+    assert!(
+        s.abs() < 1e-9 && (4.0..=4.05 + 1e-9).contains(&e),
+        "{s} {e}"
+    );
+}
+
 /// A path along another action, or at: start only: errors at the along.
 #[test]
 fn a_path_along_another_action_or_at_one_moment_is_an_error_at_the_along() {
