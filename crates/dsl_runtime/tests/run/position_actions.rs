@@ -234,6 +234,25 @@ fn a_drive_along_a_resolved_relative_path_follows_it_against_its_reference() {
     );
 }
 
+/// walk() with along(p): a person follows the path as follow_path does (walk_along_path.osc,
+/// by hand: (20, -1.75) -> (30, -1.75) at 1 m/s, (25, -1.75) at 5 s, the end at 10 s).
+#[test]
+fn a_person_walks_along_a_path() {
+    let r = run("actions/walk_along_path", 0, None);
+    for (t, x) in [(0.0, 20.0), (5.0, 25.0)] {
+        let p = r.at(t, "alice");
+        assert!(
+            (p.x - x).abs() < 1e-6 && (p.y + 1.75).abs() < 1e-6,
+            "at {t} s: {p:?}"
+        );
+    }
+    let (s, e) = r.phase("do");
+    assert!(
+        s.abs() < 1e-9 && (10.0..=10.05 + 1e-9).contains(&e),
+        "{s} {e}"
+    );
+}
+
 /// A path along another action, or at: start only: errors at the along.
 #[test]
 fn a_path_along_another_action_or_at_one_moment_is_an_error_at_the_along() {
