@@ -298,8 +298,8 @@ fn random_traffic_never_overlaps_while_it_drives_and_changes_lanes() {
 fn an_actor_placed_relative_to_a_member_of_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_reference",
-        "expected `same_as:` of speed(…) to name an actor the plan moves, or a member of random traffic at the start of the first phase of an actor (the member's place and speed as drawn from the seed: a speed at: start, a place at: start or all), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `g.vehicles[0]` of random traffic here (not run yet: a speed at: all in an actor's first phase)",
-        "15:28",
+        "expected `left_of:` of lateral(…) to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `g.vehicles[0]` of random traffic here (not run yet: lateral(…) at: start or all in an actor's first phase)",
+        "15:36",
     );
     crate::along::refused(
         "err_random_traffic_group_reference",
