@@ -388,7 +388,9 @@ fn beside_others<'r>(
     out: &mut HashMap<String, Start>,
 ) -> Result<(), Error> {
     let mut pending = Vec::new();
-    for p in all {
+    // A fixed actor stays where it is (one held for a member of random traffic is placed
+    // beside it once the member is drawn: random_traffic_relations).
+    for p in all.iter().filter(|p| p.fixed.is_none()) {
         if let Some(m) = find(p, ModKind::Lateral) {
             if let Some((e, sigma)) = lateral::reference(m)? {
                 let x = e.path.as_deref().and_then(entity).ok_or_else(|| {

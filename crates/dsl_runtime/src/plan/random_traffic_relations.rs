@@ -29,7 +29,7 @@
 //! A relation at the first phase's end to a member is the same run-time form.
 //!
 //! Not run yet, an error at the argument: another relation at the start of the actor's first
-//! phase (`lateral`, `acceleration` …), and an actor another is placed from in turn while it
+//! phase (`acceleration(…, faster_than: m)` …), and an actor another is placed from in turn while it
 //! takes an oncoming member's direction. Bad
 //! input (`Unsatisfiable`): a relation to the group as a whole (it has no place, speed or lane
 //! of its own). A condition measures a member at run time: `until ego.space_gap(g.vehicles[0])
@@ -67,12 +67,16 @@ pub(super) struct MemberDependents {
 }
 
 /// Whether relation `m` to a member places an actor from it at the start of the actor's first
-/// phase: a speed, a place (`position`, `lane`) at: start or all. At: all is the start's, where
+/// phase: a speed, a place (`position`, `lane`, `lateral`) at: start or all. At: all is the start's, where
 /// the member is as drawn: docs/dsl.md's rule for any actor, a speed at: all a step to it at
 /// the phase start, a place at: all the placement and a check at the start.
 fn placed_from(m: Option<&Modifier>) -> bool {
     m.is_some_and(|m| {
-        m.at != At::End && matches!(m.kind, ModKind::Position | ModKind::Lane | ModKind::Speed)
+        m.at != At::End
+            && matches!(
+                m.kind,
+                ModKind::Position | ModKind::Lane | ModKind::Lateral | ModKind::Speed
+            )
     })
 }
 
@@ -127,7 +131,7 @@ impl Planner<'_> {
                 if self.random_member(x) {
                     return Err(a.site.err(
                         K::Unsupported,
-                        format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `{x}` of random traffic here (not run yet: {what} at: start or all in an actor's first phase)"),
+                        format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane, lateral) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `{x}` of random traffic here (not run yet: {what} at: start or all in an actor's first phase)"),
                     ));
                 }
                 // The group as a whole, or a member relating to another: bad input.

@@ -298,8 +298,8 @@ fn random_traffic_never_overlaps_while_it_drives_and_changes_lanes() {
 fn an_actor_placed_relative_to_a_member_of_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_reference",
-        "expected `left_of:` of lateral(…) to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `g.vehicles[0]` of random traffic here (not run yet: lateral(…) at: start or all in an actor's first phase)",
-        "15:36",
+        "expected `faster_than:` of acceleration(…) to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane, lateral) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `g.vehicles[0]` of random traffic here (not run yet: acceleration(…) at: start or all in an actor's first phase)",
+        "15:47",
     );
     crate::along::refused(
         "err_random_traffic_group_reference",
@@ -1037,5 +1037,26 @@ fn relations_at_the_end_of_a_first_phase_to_a_member_are_the_engines() {
             "seed {seed}: {:?} {want}",
             r.at(6.0, "car")
         );
+    }
+}
+
+#[test]
+fn an_actor_placed_beside_a_member_of_random_traffic_reads_the_drawn_member() {
+    // random_traffic_beside_member.osc, worked in the file; seeds 0-3.
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic_beside_member", seed, None);
+        let m = r.at(0.0, "g.vehicles[0]").clone();
+        assert_eq!(m.lane, -2, "seed {seed}");
+        for (t, objs) in &r.frames {
+            let e = objs
+                .iter()
+                .find(|o| o.name == "ego")
+                .expect("ego in every frame");
+            let x = m.s + m.speed * t;
+            assert!(
+                (e.x - x).abs() < 1e-6 && (e.y + 1.75).abs() < 1e-9 && e.lane == -1,
+                "seed {seed} at {t}: {e:?}, x {x}"
+            );
+        }
     }
 }
