@@ -28,8 +28,8 @@
 //!
 //! A relation at the first phase's end to a member is the same run-time form.
 //!
-//! Not run yet, an error at the argument: another relation at the start of the actor's first
-//! phase (`acceleration(…, faster_than: m)` …), and an actor another is placed from in turn while it
+//! Not run yet, an error at the argument: a heading measured from a member in the actor's
+//! first phase (`yaw(ψ, relative_to: m)`, which would set its yaw from the start), and an actor another is placed from in turn while it
 //! takes an oncoming member's direction. Bad
 //! input (`Unsatisfiable`): a relation to the group as a whole (it has no place, speed or lane
 //! of its own). A condition measures a member at run time: `until ego.space_gap(g.vehicles[0])
@@ -115,9 +115,10 @@ impl Planner<'_> {
                     });
                     continue;
                 }
-                // After the actor's first phase, a gap action's reference, or a relation at the
-                // first phase's end: the engine's run-time forms (`reads_members`).
-                let at_end = m.is_some_and(|m| m.at == At::End);
+                // After the actor's first phase, a gap action's reference, a relation at the
+                // first phase's end or an acceleration relative to it: the engine's run-time
+                // forms (`reads_members`).
+                let at_end = m.is_some_and(|m| m.at == At::End || m.kind == ModKind::Acceleration);
                 if self.random_member(x)
                     && !self.random.contains_key(&inv.actor)
                     && (!self.first_phase(&inv.actor, &leaf.path) || m.is_none() || at_end)
@@ -131,7 +132,7 @@ impl Planner<'_> {
                 if self.random_member(x) {
                     return Err(a.site.err(
                         K::Unsupported,
-                        format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane, lateral) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `{x}` of random traffic here (not run yet: {what} at: start or all in an actor's first phase)"),
+                        format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane, lateral) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end or an acceleration relative to it, in a later phase or in a gap action (the engine's run-time forms), found `{x}` of random traffic here (not run yet: {what} at: start or all in an actor's first phase)"),
                     ));
                 }
                 // The group as a whole, or a member relating to another: bad input.

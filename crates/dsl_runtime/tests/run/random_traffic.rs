@@ -298,8 +298,8 @@ fn random_traffic_never_overlaps_while_it_drives_and_changes_lanes() {
 fn an_actor_placed_relative_to_a_member_of_random_traffic_is_an_error() {
     crate::along::refused(
         "err_random_traffic_reference",
-        "expected `faster_than:` of acceleration(…) to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane, lateral) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end, in a later phase or in a gap action (the engine's run-time forms), found `g.vehicles[0]` of random traffic here (not run yet: acceleration(…) at: start or all in an actor's first phase)",
-        "15:47",
+        "expected `relative_to:` of yaw(…) to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane, lateral) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end or an acceleration relative to it, in a later phase or in a gap action (the engine's run-time forms), found `g.vehicles[0]` of random traffic here (not run yet: yaw(…) at: start or all in an actor's first phase)",
+        "15:36",
     );
     crate::along::refused(
         "err_random_traffic_group_reference",
@@ -1056,6 +1056,28 @@ fn an_actor_placed_beside_a_member_of_random_traffic_reads_the_drawn_member() {
             assert!(
                 (e.x - x).abs() < 1e-6 && (e.y + 1.75).abs() < 1e-9 && e.lane == -1,
                 "seed {seed} at {t}: {e:?}, x {x}"
+            );
+        }
+    }
+}
+
+#[test]
+fn an_acceleration_relative_to_a_member_in_a_first_phase_is_the_engines() {
+    // random_traffic_member_acceleration.osc, worked in the file; seeds 0-3.
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic_member_acceleration", seed, None);
+        let m = "g.vehicles[0]";
+        let v_m0 = r.at(0.0, m).speed;
+        for (t, _) in r
+            .frames
+            .iter()
+            .filter(|(t, _)| *t > DT / 2.0 && *t < 4.0 + DT / 2.0)
+        {
+            let want = 10.0 + t + r.at(t - DT, m).speed - v_m0;
+            let got = r.at(*t, "ego").speed;
+            assert!(
+                (got - want).abs() < 1e-9,
+                "seed {seed} at {t}: {got} vs {want}"
             );
         }
     }
