@@ -26,14 +26,15 @@
 //! A member drawn in a lane driven in −s drives against s: an actor placed in its lane or along
 //! it takes its direction, placed on the view against s (`take_members_directions`).
 //!
-//! A relation at the first phase's end to a member is the same run-time form.
+//! A relation at the first phase's end, an acceleration relative to a member and a heading
+//! measured from it in the first phase are the same run-time forms (the heading the engine's
+//! check).
 //!
-//! Not run yet, an error at the argument: a heading measured from a member in the actor's
-//! first phase (`yaw(ψ, relative_to: m)`, which would set its yaw from the start), and an actor another is placed from in turn while it
-//! takes an oncoming member's direction. Bad
-//! input (`Unsatisfiable`): a relation to the group as a whole (it has no place, speed or lane
-//! of its own). A condition measures a member at run time: `until ego.space_gap(g.vehicles[0])
-//! < 10m`.
+//! Not run yet, an error at the relation: an actor another is placed from in turn while it
+//! takes an oncoming member's direction. Bad input (`Unsatisfiable`): a relation to the group
+//! as a whole (it has no place, speed or lane of its own; the checker refuses the typed
+//! arguments first). A condition measures a member at run time: `until
+//! ego.space_gap(g.vehicles[0]) < 10m`.
 
 use std::collections::{HashMap, HashSet};
 
@@ -116,9 +117,12 @@ impl Planner<'_> {
                     continue;
                 }
                 // After the actor's first phase, a gap action's reference, a relation at the
-                // first phase's end or an acceleration relative to it: the engine's run-time
-                // forms (`reads_members`).
-                let at_end = m.is_some_and(|m| m.at == At::End || m.kind == ModKind::Acceleration);
+                // first phase's end, an acceleration or a heading relative to it: the engine's
+                // run-time forms (`reads_members`).
+                let at_end = m.is_some_and(|m| {
+                    m.at == At::End
+                        || matches!(m.kind, ModKind::Acceleration | ModKind::Orientation)
+                });
                 if self.random_member(x)
                     && !self.random.contains_key(&inv.actor)
                     && (!self.first_phase(&inv.actor, &leaf.path) || m.is_none() || at_end)

@@ -297,11 +297,6 @@ fn random_traffic_never_overlaps_while_it_drives_and_changes_lanes() {
 #[test]
 fn an_actor_placed_relative_to_a_member_of_random_traffic_is_an_error() {
     crate::along::refused(
-        "err_random_traffic_reference",
-        "expected `relative_to:` of yaw(…) to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane, lateral) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end or an acceleration relative to it, in a later phase or in a gap action (the engine's run-time forms), found `g.vehicles[0]` of random traffic here (not run yet: yaw(…) at: start or all in an actor's first phase)",
-        "15:36",
-    );
-    crate::along::refused(
         "err_random_traffic_group_reference",
         "expected physical_object for parameter `behind` of modifier `position`, found random_traffic_vehicle_group",
         "11:35",
@@ -1081,4 +1076,28 @@ fn an_acceleration_relative_to_a_member_in_a_first_phase_is_the_engines() {
             );
         }
     }
+}
+
+#[test]
+fn a_yaw_measured_from_a_member_in_a_first_phase_is_the_engines_check() {
+    // random_traffic_member_yaw.osc: g's member in lane -2 heading 0 (lane(2): the IDM, no
+    // lane change), ego in lane -3 heading 0: yaw(0deg, relative_to: member,
+    // length_to_length) at: all is the engine's check at every step (the member's heading is
+    // its model's), which holds: the run ends at 3 s with no error record.
+    let l = crate::support::lower("random_traffic_member_yaw", 0, None).expect("plans");
+    let (e, records) = crate::support::run_to_error(&l.scenario);
+    assert!(e.is_none() && records.is_empty(), "{e:?} {records:?}");
+    // yaw(180deg, …) asks pi where ego faces 0: the check fails at the first step.
+    let l = crate::support::lower("random_traffic_member_yaw_fails", 0, None).expect("plans");
+    let (e, records) = crate::support::run_to_error(&l.scenario);
+    let e = e.expect("the run fails");
+    assert!(
+        e.starts_with("expected 'ego' at heading 3.1416 rad (length_to_length from `g.vehicles[0]` 3.1416 rad, 'g.vehicles[0]' at heading 0.0000 rad, within 0.001 rad) (yaw(…) at ")
+            && e.ends_with("random_traffic_member_yaw_fails.osc:18:17), found it at 0.0000 rad, its lane's heading 0.0000 rad at t = 0.000 s"),
+        "{e}"
+    );
+    assert!(
+        records.len() == 1 && records[0].0.abs() < 1e-9,
+        "{records:?}"
+    );
 }
