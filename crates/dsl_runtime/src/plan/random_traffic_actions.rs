@@ -20,7 +20,7 @@
 //! | `keep_speed()` | v0 = the speed the member has at the phase start (a SpeedAction to its own speed) | by its duration or `until` |
 //! | `remain_stationary()` | v0 = 0: the model brakes at its comfortable deceleration b to a stop and stands | by its duration or `until` |
 //! | `change_lane(n, side [, reference: x])` | a LaneChangeAction to the lane n to the side of its own (x's) lane in its direction of travel, which `mobil` makes its next lane change with its own lateral shape; no drivable lane there driven the same way: the member keeps its lane (the engine logs it) | at once, or by the action's `duration:` |
-//! | `lane(n [, from: left])` (at: all, end) beside an action | as `keep_lane()`, the member changed to the lane so numbered in its direction of travel (the engine's LaneChangeAction, sinusoidal at 1 m/s peak) instead of its own lane's centre; the number must name one lane all along the plan's roads | by its duration or `until` |
+//! | `lane(n [, from: left])` (at: all, end) beside an action | as `keep_lane()`, the member changed to the lane so numbered in its direction of travel (the engine's LaneChangeAction, sinusoidal at 1 m/s peak) instead of its own lane's centre; the number must name one lane all along the plan's roads; `lane(same_as/left_of/right_of/side_of: x)`: the members driving x's way changed to x's lane or the one n beside it (a RelativeTargetLane on x), the others kept in their lanes | by its duration or `until` |
 //! | `follow_lane()`, `keep_lane()` beside an action | the model's lateral domain taken back over the phase (ActivateControllerAction, lateral false): the default controller keeps the member in the lane it is in, brought to its centre (a LaneChangeAction to that lane: a change under way ends there); handed back at the phase end | by its duration or `until` |
 //!
 //! Bad input, refused at its place with §8.7.18.1's words ("the behavioral model assigned to
@@ -63,6 +63,15 @@ pub(super) enum Ask {
     Lane(i32, Option<String>),
 }
 
+/// The lane `lane(…)` beside a later action of random traffic asks of each member.
+enum LaneAsk {
+    /// Lane n (from the left) of the member's direction of travel, and the modifier's place.
+    Numbered(i64, bool, Site),
+    /// The lane `by` lanes left (right: negative) of another actor `x`'s lane, in x's
+    /// direction: for the members driving x's way (the others keep their lanes).
+    Beside(String, i32),
+}
+
 /// What a later action of random traffic asks (`ask`): of each member's model, whether the
 /// members keep their lanes over the phase, and the action's own duration.
 struct Asked {
@@ -74,7 +83,7 @@ struct Asked {
     own: Option<f64>,
     /// `lane(n [, from: left])` at: all or end: each member changed to the lane so numbered
     /// in its direction of travel at the phase start, kept there over the phase (`hold_lane`).
-    lane: Option<(i64, bool, Site)>,
+    lane: Option<LaneAsk>,
 }
 
 /// §8.7.18.1's words, which every refusal of a later action of random traffic gives.
@@ -263,20 +272,11 @@ fn ask(p: &Phase, inv: &Invoke, idm: bool) -> Result<Asked, Error> {
 /// (n, from the left, its place). At: start is bad input: it asks each member in lane n as
 /// the phase starts, where its model has put it; a lane relative to another actor is not run
 /// yet.
-fn numbered_lane(g: &str, m: &Modifier) -> Result<(i64, bool, Site), Error> {
+fn numbered_lane(g: &str, m: &Modifier) -> Result<LaneAsk, Error> {
     if m.at == At::Start {
         return Err(m.site.err(
             K::Modifier,
             format!("expected lane(n) at: all or end beside an action of random traffic `{g}` after its creation (each member changed to lane n and kept there), found at: start: it asks each member in lane n as the phase starts, where its driver model has put it ({BEHAVIOUR})"),
-        ));
-    }
-    if m.args
-        .iter()
-        .any(|(k, _)| !matches!(k.as_str(), "lane" | "from" | "at"))
-    {
-        return Err(m.site.err(
-            K::Unsupported,
-            format!("expected lane(n [, from: left]) beside an action of random traffic `{g}` after its creation, found a lane relative to another actor (not run yet)"),
         ));
     }
     let n = m.arg("lane").map(Arg::number).transpose()?.unwrap_or(1.0);
@@ -288,9 +288,34 @@ fn numbered_lane(g: &str, m: &Modifier) -> Result<(i64, bool, Site), Error> {
             ),
         ));
     }
+    // Relative to another actor: n lanes to its side (same_as: its own lane).
+    for key in ["same_as", "left_of", "right_of", "side_of"] {
+        let Some(a) = m.arg(key) else { continue };
+        let x = a.path.clone().ok_or_else(|| {
+            a.site.err(
+                K::Argument,
+                format!("expected an actor for `{key}:` in lane(…)"),
+            )
+        })?;
+        return Ok(LaneAsk::Beside(x, side_sign(key, m)? * n as i32));
+    }
     let from_left =
         matches!(m.arg("from").map(Arg::eval).transpose()?, Some(Val::Enum(f)) if f == "left");
-    Ok((n as i64, from_left, m.site.clone()))
+    Ok(LaneAsk::Numbered(n as i64, from_left, m.site.clone()))
+}
+
+/// The side of another actor's lane that `lane(…, key: x)` `m` counts to: 0 for `same_as`, 1
+/// left (`left_of`, `side_of` without `side: right`), -1 right.
+pub(super) fn side_sign(key: &str, m: &Modifier) -> Result<i32, Error> {
+    Ok(match key {
+        "same_as" => 0,
+        "left_of" => 1,
+        "right_of" => -1,
+        _ => match m.arg("side").map(Arg::eval).transpose()? {
+            Some(Val::Enum(s)) if s == "right" => -1,
+            _ => 1,
+        },
+    })
 }
 
 /// The error at modifier `m`, which no member's model takes after the group's creation.
@@ -326,14 +351,28 @@ impl Planner<'_> {
         // The lane so numbered in each direction of travel, the same all along the plan's
         // roads (the plan does not know where a member is then).
         let numbered = match &lane {
-            Some((n, from_left, site)) => Some([
+            Some(LaneAsk::Numbered(n, from_left, site)) => Some([
                 self.numbered_all_along(&self.road, *n, *from_left, site)?,
                 match &self.against_road {
                     Some(view) => self.numbered_all_along(view, *n, *from_left, site)?,
                     None => None,
                 },
             ]),
-            None => None,
+            _ => None,
+        };
+        // Beside another actor x: x's direction of travel, which the members driving its way
+        // take the lane from.
+        let beside = match &lane {
+            Some(LaneAsk::Beside(x, by)) => {
+                let Some(&ix) = self.index.get(x) else {
+                    return Err(p.site.err(
+                        K::Argument,
+                        format!("expected an actor as the reference of lane(…) beside random traffic `{}`, found `{x}`", inv.actor),
+                    ));
+                };
+                Some((x.clone(), *by, self.entities[ix].against))
+            }
+            _ => None,
         };
         if let Ask::Lane(_, Some(x)) = &ask {
             if !self.index.contains_key(x) {
@@ -356,9 +395,10 @@ impl Planner<'_> {
             let name = |what: &str| format!("{}/{m}/{}:{what}", p.path, i + 1);
             // The lane it is in, at its centre (a change the model was making ends there), or
             // lane n of its direction.
-            let kept = match &numbered {
-                Some(ids) => {
-                    let back = self.entities[self.index[m]].against;
+            let back = self.entities[self.index[m]].against;
+            let kept = match (&numbered, &beside) {
+                (_, Some((x, by, x_back))) if *x_back == back => Some(lane_change_to(x, *by)),
+                (Some(ids), _) => {
                     let id = ids[usize::from(back)].ok_or_else(|| {
                         p.site.err(
                             K::Unsatisfiable,
@@ -371,8 +411,8 @@ impl Planner<'_> {
                         target: LaneChangeTarget::Absolute(id.to_string()),
                     }))
                 }
-                None if hold_lane && !idm => Some(lane_change_to(m, 0)),
-                None => None,
+                _ if hold_lane && !idm => Some(lane_change_to(m, 0)),
+                _ => None,
             };
             // The IDM holds no lateral domain: a member it drives keeps its lane already.
             if hold_lane && !idm {

@@ -24,7 +24,7 @@ use std::collections::HashMap;
 
 use super::place::Start;
 use super::planner::Planner;
-use super::random_traffic_actions::{check_avoid, desired};
+use super::random_traffic_actions::{check_avoid, desired, side_sign};
 use super::types::{Beside, Creation, RouteOnly};
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Along, Arg, At, Invoke, ModKind, Modifier, Route, Val};
@@ -99,15 +99,7 @@ impl Planner<'_> {
                 (ModKind::Lane, _) if m.at != At::End && self.lane_beside(m).is_some() => {
                     let (key, x) = self.lane_beside(m).unwrap_or_default();
                     let n = m.arg("lane").map(Arg::number).transpose()?.unwrap_or(1.0);
-                    let left = match key {
-                        "same_as" => 0,
-                        "left_of" => 1,
-                        "right_of" => -1,
-                        _ => match m.arg("side").map(Arg::eval).transpose()? {
-                            Some(Val::Enum(s)) if s == "right" => -1,
-                            _ => 1,
-                        },
-                    };
+                    let left = i64::from(side_sign(key, m)?);
                     if n < 1.0 || n.fract() != 0.0 {
                         return Err(m.site.err(
                             K::Modifier,

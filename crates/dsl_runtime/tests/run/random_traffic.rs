@@ -727,6 +727,20 @@ fn lane_centre(lane: i32) -> f64 {
     f64::from(lane.signum()) * (3.5 * f64::from(lane.abs()) - 1.75)
 }
 
+/// Asserts member `m` in lane `lane` on its centre (1e-6 m) at every step of [a, b] of run `r`.
+fn on_lane_centre(r: &crate::support::Run, seed: u64, m: &str, lane: i32, (a, b): (f64, f64)) {
+    for (t, objs) in r.frames.iter().filter(|(t, _)| *t >= a && *t <= b + 1e-9) {
+        let o = objs
+            .iter()
+            .find(|o| o.name == m)
+            .expect("every member in every frame");
+        assert!(
+            o.lane == lane && (o.y - lane_centre(lane)).abs() < 1e-6,
+            "seed {seed} {m} at {t}: {o:?}"
+        );
+    }
+}
+
 #[test]
 fn random_traffics_lane_change_is_each_members_models_and_follow_lane_keeps_its_lane() {
     // random_traffic_lane_change.osc, worked in the file; seeds 0-3.
@@ -765,20 +779,7 @@ fn random_traffics_lane_change_is_each_members_models_and_follow_lane_keeps_its_
             assert!(reached, "seed {seed} {m} never on lane {want}'s centre");
             // follow_lane(): in one lane at its centre from 17.5 s to the phase end at 22 s.
             let kept = r.at(17.5, &m).lane;
-            for (t, objs) in r
-                .frames
-                .iter()
-                .filter(|(t, _)| *t >= 17.5 && *t <= 22.0 + 1e-9)
-            {
-                let o = objs
-                    .iter()
-                    .find(|o| o.name == m)
-                    .expect("every member in every frame");
-                assert!(
-                    o.lane == kept && (o.y - lane_centre(kept)).abs() < 1e-6,
-                    "seed {seed} {m} at {t}: {o:?}"
-                );
-            }
+            on_lane_centre(&r, seed, &m, kept, (17.5, 22.0));
         }
         // h's member: in lane -1 at 1 s, whose left is lane 1, driven in -s: not taken.
         let h = "h.vehicles[0]";
@@ -932,20 +933,7 @@ fn random_traffic_kept_to_a_lane_after_its_creation_changes_there_and_stays() {
             // The rightmost lane of its direction: heading +x in +s (lane -3), -x in -s (2).
             let want = if r.at(2.0, &m).h.cos() > 0.0 { -3 } else { 2 };
             moved += usize::from(r.at(2.0, &m).lane != want);
-            for (t, objs) in r
-                .frames
-                .iter()
-                .filter(|(t, _)| *t >= 13.0 && *t <= 17.0 + 1e-9)
-            {
-                let o = objs
-                    .iter()
-                    .find(|o| o.name == m)
-                    .expect("every member in every frame");
-                assert!(
-                    o.lane == want && (o.y - lane_centre(want)).abs() < 1e-6,
-                    "seed {seed} {m} at {t}: {o:?}"
-                );
-            }
+            on_lane_centre(&r, seed, &m, want, (13.0, 17.0));
         }
         let (s, e) = r.phase("do.right");
         assert!(
@@ -1099,5 +1087,31 @@ fn a_yaw_measured_from_a_member_in_a_first_phase_is_the_engines_check() {
     assert!(
         records.len() == 1 && records[0].0.abs() < 1e-9,
         "{records:?}"
+    );
+}
+
+#[test]
+fn random_traffic_kept_to_another_actors_lane_after_its_creation_changes_there_its_way() {
+    // random_traffic_lane_beside_later.osc, worked in the file; seeds 0-3.
+    let (mut moved, mut ways) = (0, [0, 0]);
+    for seed in [0, 1, 2, 3] {
+        let r = run("random_traffic_lane_beside_later", seed, None);
+        for i in 0..4 {
+            let m = format!("g.vehicles[{i}]");
+            let forward = r.at(2.0, &m).h.cos() > 0.0;
+            ways[usize::from(!forward)] += 1;
+            let want = if forward { -2 } else { r.at(7.5, &m).lane };
+            moved += usize::from(forward && r.at(2.0, &m).lane != want);
+            on_lane_centre(&r, seed, &m, want, (7.5, 15.0));
+        }
+        let (s, e) = r.phase("do.1.same");
+        assert!(
+            (s - 2.0).abs() < 1e-9 && (e - 15.0).abs() < 1e-9,
+            "[{s}, {e}]"
+        );
+    }
+    assert!(
+        moved >= 2 && ways[0] > 0 && ways[1] > 0,
+        "moved {moved}, ways {ways:?}"
     );
 }
