@@ -30,8 +30,8 @@
 //! measured from it in the first phase are the same run-time forms (the heading the engine's
 //! check).
 //!
-//! Not run yet, an error at the relation: an actor another is placed from in turn while it
-//! takes an oncoming member's direction. Bad input (`Unsatisfiable`): a relation to the group
+//! An actor placed along or beside one that takes an oncoming member's direction takes it in
+//! turn. Bad input (`Unsatisfiable`): a relation to the group
 //! as a whole (it has no place, speed or lane of its own; the checker refuses the typed
 //! arguments first). A condition measures a member at run time: `until
 //! ego.space_gap(g.vehicles[0]) < 10m`.
@@ -228,8 +228,8 @@ impl Planner<'_> {
     /// −s), unless it is declared driving the other way, an error at the relation (a place
     /// "behind" or "in the lane of" an actor driving the opposite way names none, as between
     /// any two actors; as this run's seed draws the member). A speed has no direction. An actor
-    /// placed from two members of opposite directions, or that another actor is placed from in
-    /// turn while its direction is the oncoming member's, is an error at its relation. The
+    /// placed from two members of opposite directions is an error at its relation; the actors
+    /// placed along or beside such an actor in turn take its direction. The
     /// oncoming members are marked against s in `to_place`, their starts being in u = L − s.
     fn take_members_directions(
         &self,
@@ -265,18 +265,46 @@ impl Planner<'_> {
                 ));
             }
             if back && !q.against {
-                let from_it = relations.iter().all(|r| held.contains(&r.actor))
-                    && held.iter().all(|h| relations.iter().any(|r| &r.actor == h));
-                if !from_it {
-                    return Err(first.site.err(
-                        K::Unsupported,
-                        format!("expected no actor placed from `{a}`, which takes the direction of `{}` of random traffic, driving against s (as this run's seed draws it), found one (not run yet)", first.member),
-                    ));
-                }
                 q.against = true;
             }
         }
-        Ok(())
+        // The actors placed from those in turn (held with them) take the direction of the
+        // actors they are placed along or beside, until none changes.
+        loop {
+            let against: HashSet<String> = to_place
+                .iter()
+                .filter(|q| q.against)
+                .map(|q| q.name.clone())
+                .collect();
+            let mut changed = false;
+            for q in to_place
+                .iter_mut()
+                .filter(|q| held.contains(&q.name) && !q.against)
+            {
+                let directed = q.mods.iter().filter(|m| {
+                    matches!(m.kind, ModKind::Position | ModKind::Lane | ModKind::Lateral)
+                });
+                let refs: Vec<(&str, &Site)> = directed
+                    .flat_map(|m| m.args.iter())
+                    .filter_map(|(_, a)| Some((a.path.as_deref()?, &a.site)))
+                    .filter(|(x, _)| held.contains(*x) || self.random_member(x))
+                    .collect();
+                let Some((x, site)) = refs.iter().find(|(x, _)| against.contains(*x)) else {
+                    continue;
+                };
+                if let Some((y, _)) = refs.iter().find(|(y, _)| !against.contains(*y)) {
+                    return Err(site.err(
+                        K::Unsatisfiable,
+                        format!("expected the actors `{}` is placed from driving one way, found `{x}` driving against s and `{y}` in +s (as this run's seed draws the members)", q.name),
+                    ));
+                }
+                q.against = true;
+                changed = true;
+            }
+            if !changed {
+                return Ok(());
+            }
+        }
     }
 
     /// Places the actors `dependents` holds (`hold_dependents`) among `starts` once the members

@@ -986,6 +986,17 @@ fn an_actor_placed_from_a_member_of_either_direction_drives_its_way() {
                 (o.x - want).abs() < 1e-6 && o.lane == m.lane,
                 "seed {seed} at {t}: {o:?}"
             );
+            // car, placed from ego, takes its direction in turn: 10 m behind it.
+            let c = objs
+                .iter()
+                .find(|o| o.name == "car")
+                .expect("car in every frame");
+            assert!(
+                (c.x - (want - dir * 10.0)).abs() < 1e-6
+                    && c.lane == m.lane
+                    && (c.h - m.h).abs() < 1e-9,
+                "seed {seed} at {t}: {c:?}"
+            );
         }
     }
     assert!(ways[0] > 0 && ways[1] > 0, "both directions met: {ways:?}");
