@@ -11,7 +11,7 @@ use std::collections::HashMap;
 use super::map_crossings::{crossing, MapCrossing};
 use super::types::POSITION_TOLERANCE;
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{Along, At, Kind, ModKind, Modifier, Phase, Route};
+use crate::resolve::{Along, At, Kind, MapRoad, ModKind, Modifier, Phase, Route};
 use crate::road::PlanRoad;
 
 /// How far an actor may be outside a route's interval (m): the position tolerance of the plan.
@@ -205,13 +205,14 @@ pub(crate) fn check(
     Ok(at_run_time)
 }
 
-/// The binding of `along`'s route when it is an element of the map's routes (`m.routes[i]`,
-/// §8.12 `map.routes`, "list of route"): on an OpenDRIVE map oscsim's choice is one route per
-/// road of the file, in the file's order, each the whole road (a `road` is a route element),
-/// so `m.routes[i]` is the road at index i, bound as a road the map's modifiers bind (its
-/// field, then the rightmost driving lane in +s at its start, `lane(1)`'s, where an actor
-/// along it without a lane of its own starts, its span in the plan's s, and why). An index past
-/// the file's roads, and a road the plan does not drive, are errors at `along`.
+/// The binding of `along`'s route when it is a road of the map's lists (`m.routes[i]`,
+/// `m.junctions[i].roads[j]`, `crate::resolve::MapRoad`): on an OpenDRIVE map oscsim's choice
+/// is one route per road of the file in its order, each the whole road (a `road` is a route
+/// element), and a junction's roads its connecting roads in the order its connections first
+/// name them; the road is bound as a road the map's modifiers bind (its field, then the
+/// rightmost driving lane in +s at its start, `lane(1)`'s, where an actor along it without a
+/// lane of its own starts, its span in the plan's s, and why). An index past the file's roads
+/// (junctions, a junction's roads), and a road the plan does not drive, are errors at `along`.
 #[allow(clippy::type_complexity)]
 pub(crate) fn map_route(
     road: &PlanRoad<'_>,
@@ -219,37 +220,69 @@ pub(crate) fn map_route(
 ) -> Result<Option<(String, (i32, (f64, f64), String))>, Error> {
     let Route::Free {
         field,
-        map_route: Some(i),
+        map_route: Some(which),
         ..
     } = &along.route
     else {
         return Ok(None);
     };
-    let roads = road.network().roads();
-    let Some(r) = roads.get(*i) else {
-        return Err(along.site.err(
+    let net = road.network();
+    let past = |n: usize, what: &str| {
+        along.site.err(
             K::Road,
-            format!("expected an index below {} into the map's routes (one per road of the OpenDRIVE file, in its order), found `{field}`", roads.len()),
-        ));
+            format!("expected an index below {n} into {what}, found `{field}`"),
+        )
     };
-    let Some(span) = road.plan_span(&r.id, 0.0, r.length) else {
+    let (id, why) = match *which {
+        MapRoad::Route(i) => {
+            let roads = net.roads();
+            let r = roads.get(i).ok_or_else(|| {
+                past(
+                    roads.len(),
+                    "the map's routes (one per road of the OpenDRIVE file, in its order)",
+                )
+            })?;
+            (r.id.clone(), format!("road {}, the map's route {i} (one per road of the OpenDRIVE file, in its order)", r.id))
+        }
+        MapRoad::Junction(i, j) => {
+            let junctions = net.junctions();
+            let jn = junctions.get(i).ok_or_else(|| {
+                past(
+                    junctions.len(),
+                    "the map's junctions (one per junction of the OpenDRIVE file, in its order)",
+                )
+            })?;
+            let mut roads: Vec<&str> = Vec::new();
+            for c in &jn.connections {
+                if !roads.contains(&c.connecting_road.as_str()) {
+                    roads.push(&c.connecting_road);
+                }
+            }
+            let id = roads.get(j).ok_or_else(|| {
+                past(
+                    roads.len(),
+                    &format!("the roads of junction {} (its connecting roads in the order its connections name them)", jn.id),
+                )
+            })?;
+            (id.to_string(), format!("road {id}, road {j} of junction {} (its connecting roads in the order its connections name them)", jn.id))
+        }
+    };
+    let length = net
+        .roads()
+        .iter()
+        .find(|r| r.id == id)
+        .map_or(0.0, |r| r.length);
+    let Some(span) = road.plan_span(&id, 0.0, length) else {
         return Err(along.site.err(
             K::Road,
-            format!("expected `{field}` on the roads the plan drives on ({}), found road {} (the map's route {i}: one per road of the OpenDRIVE file, in its order)", road.ids().join(", "), r.id),
+            format!(
+                "expected `{field}` on the roads the plan drives on ({}), found {why}",
+                road.ids().join(", ")
+            ),
         ));
     };
     let lane = road.driving_lanes(span.0).first().copied().unwrap_or(-1);
-    Ok(Some((
-        field.clone(),
-        (
-            lane,
-            span,
-            format!(
-                "road {}, the map's route {i} (one per road of the OpenDRIVE file, in its order)",
-                r.id
-            ),
-        ),
-    )))
+    Ok(Some((field.clone(), (lane, span, why))))
 }
 
 /// Checks that a named route lies on a road of the plan, in one of its driving lanes (either

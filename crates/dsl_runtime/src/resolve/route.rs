@@ -41,8 +41,9 @@
 //!   point), and **`m.route_point_to_xyz(p)`** (p's route): a point as a route is the route
 //!   from it on.
 //!
-//! - **`m.routes[i]`**: on an OpenDRIVE map one route per road of the file, in its order, so
-//!   the road at index i, which the plan binds as a road the map's modifiers bind.
+//! - **`m.routes[i]`**, **`m.junctions[i].roads[j]`**: on an OpenDRIVE map one route per road
+//!   of the file, in its order, so the road at index i; a junction's roads its connecting
+//!   roads (`MapRoad`); the plan binds it as a road the map's modifiers bind.
 //!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
 //!   person walking along it crosses from its start lane to its end lane (`crate::plan`),
@@ -71,10 +72,9 @@ pub(crate) enum Route {
         field: String,
         /// A `lane`/`compound_lane`: one lane, kept.
         one_lane: bool,
-        /// An element of the map's routes (`m.routes[i]`, §8.12 `map.routes`): on an OpenDRIVE
-        /// map one route per road of the file, in the file's order, so the road at index i,
-        /// bound by the plan (`crate::plan`) as a road the map's modifiers bind.
-        map_route: Option<usize>,
+        /// A road of the map's lists (`m.routes[i]`, `m.junctions[i].roads[j]`), bound by the
+        /// plan (`crate::plan`) as a road the map's modifiers bind.
+        map_route: Option<MapRoad>,
     },
     /// Lane `lane` of road `road` from s = `s`, `t` from the lane's centre: to the end of the
     /// plan's roads, or with `then`, over the roads of the network's shortest lane path
@@ -111,6 +111,19 @@ pub(crate) enum Route {
         /// crossing)` (`None`: a field `crossing_connects` binds).
         points: Option<Box<CrossingPoints>>,
     },
+}
+
+/// A road of the map's lists (§8.12 `map.routes: list of route`, `map.junctions: list of
+/// junction`, `junction.roads: list of road`), on an OpenDRIVE map (oscsim's choice, the
+/// standard saying nothing of a map loaded from a file): one route per road of the file in
+/// its order, one junction per junction of the file in its order, and a junction's roads its
+/// connecting roads in the order its connections first name them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum MapRoad {
+    /// `m.routes[i]`: the road at index i of the file.
+    Route(usize),
+    /// `m.junctions[i].roads[j]`: connecting road j of junction i.
+    Junction(usize, usize),
 }
 
 /// The two points of a route the map makes across a crossing (`create_route([a, b],
@@ -292,6 +305,12 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             format!("expected a route field nothing constrains (r: route, road or lane), map.create_odr_point(road_id, lane_id, s, t), map.odr_to_route_point(…) or map.create_route(…) in along(…), found {what}"),
         )
     };
+    // A road of the map's lists.
+    if let ExprKind::Index(list, at) = &e.kind {
+        if let Some(junction) = map_road(ctx, list) {
+            return map_road_route(ctx, e, junction, at);
+        }
+    }
     match &e.kind {
         ExprKind::Call(callee, args) => {
             let ExprKind::Field(obj, method) = &callee.kind else {
@@ -366,22 +385,6 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
                     })
                     .collect(),
                 on: None,
-            })
-        }
-        ExprKind::Index(list, at) if map_list(ctx, list, "routes") => {
-            let i = ctx.number(at)?;
-            if i < 0.0 || i.fract() != 0.0 {
-                return Err(ctx.files.err(
-                    K::Value,
-                    at.span,
-                    format!("expected an index of 0 or more (a whole number) into the map's routes, found {i}"),
-                ));
-            }
-            let field = ctx.path_of(e).unwrap_or_else(|| format!("map.routes[{i}]"));
-            Ok(Route::Free {
-                field,
-                one_lane: false,
-                map_route: Some(i as usize),
             })
         }
         ExprKind::Name(_) | ExprKind::Field(..) | ExprKind::Index(..) => {
@@ -927,6 +930,58 @@ pub(crate) fn map_call<'e>(
         .and_then(|p| ctx.lookup(&p))
         .is_some_and(|(_, v)| matches!(v, Value::RunTime(t) if is_a(ctx, t, "map")))
         .then_some((method.text.as_str(), args.as_slice()))
+}
+
+/// The route of `e`, an element of a list of the map's roads at index `at` (`m.routes[at]`, or
+/// with `junction` `m.junctions[junction].roads[at]`).
+fn map_road_route(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    junction: Option<&Expr>,
+    at: &Expr,
+) -> Result<Route, Error> {
+    let index = |at: &Expr, what: &str| -> Result<usize, Error> {
+        let i = ctx.number(at)?;
+        if i < 0.0 || i.fract() != 0.0 {
+            return Err(ctx.files.err(
+                K::Value,
+                at.span,
+                format!("expected an index of 0 or more (a whole number) into {what}, found {i}"),
+            ));
+        }
+        Ok(i as usize)
+    };
+    let road = match junction {
+        None => MapRoad::Route(index(at, "the map's routes")?),
+        Some(j) => MapRoad::Junction(
+            index(j, "the map's junctions")?,
+            index(at, "a junction's roads")?,
+        ),
+    };
+    Ok(Route::Free {
+        field: ctx
+            .path_of(e)
+            .unwrap_or_else(|| "the map's road".to_string()),
+        one_lane: false,
+        map_route: Some(road),
+    })
+}
+
+/// Whether `e` is a list of the map's roads: `m.routes` (`Some(None)`) or
+/// `m.junctions[i].roads` (`Some(Some(i))`, the junction's index expression).
+fn map_road<'e>(ctx: &Ctx<'_>, e: &'e Expr) -> Option<Option<&'e Expr>> {
+    if map_list(ctx, e, "routes") {
+        return Some(None);
+    }
+    let ExprKind::Field(junction, f) = &e.kind else {
+        return None;
+    };
+    match &junction.kind {
+        ExprKind::Index(list, i) if f.text == "roads" && map_list(ctx, list, "junctions") => {
+            Some(Some(&**i))
+        }
+        _ => None,
+    }
 }
 
 /// Whether `e` is the list field `name` of a `map` field (`m.routes`).

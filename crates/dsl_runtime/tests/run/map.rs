@@ -379,16 +379,46 @@ fn the_maps_routes_are_its_roads_in_the_files_order() {
 /// A map route off the plan's roads, or past the file's roads: errors at the along.
 #[test]
 fn a_map_route_off_the_plan_or_past_the_files_roads_is_an_error_at_the_along() {
-    let e = error_on("err_map_route_off", "two_roads");
+    refused_on(
+        ("err_map_route_off", "two_roads"),
+        "expected `m.routes[1]` on the roads the plan drives on (1), found road 2, the map's route 1 (one per road",
+        "10:13",
+    );
+    refused_on(
+        ("err_map_route_index", "two_roads"),
+        "expected an index below 2 into the map's routes (one per road of the OpenDRIVE file, in its order), found `m.routes[5]`",
+        "7:9",
+    );
+}
+
+/// Asserts that `NAME.osc` on `ROAD.xodr` is refused with a message holding `text`, at `at`.
+fn refused_on((name, road): (&str, &str), text: &str, at: &str) {
+    let e = error_on(name, road);
     assert!(
-        e.contains("expected `m.routes[1]` on the roads the plan drives on (1), found road 2 (the map's route 1")
-            && e.ends_with("err_map_route_off.osc:10:13"),
+        e.contains(text) && e.ends_with(&format!("{name}.osc:{at}")),
         "{e}"
     );
-    let e = error_on("err_map_route_index", "two_roads");
+}
+
+/// A junction's roads (issue 27): its connecting roads in the order its connections name them.
+/// map_junction_road.osc on junction_trippel_twoway0.xodr, by hand: m.junctions[0].roads[0] is
+/// road 1; ego from its start (s = 0, x = 100 m) in lane -1, s = 9.941 m at 1 s (10 m along
+/// the spiral's lane centre). Past the junction's three roads: an error at along.
+#[test]
+fn a_junctions_roads_are_its_connecting_roads_in_order() {
+    let r = run("map_junction_road", "junction_trippel_twoway0");
+    let (e0, e1) = (r.at(0.0, "ego"), r.at(1.0, "ego"));
     assert!(
-        e.contains("expected an index below 2 into the map's routes (one per road of the OpenDRIVE file, in its order), found `m.routes[5]`")
-            && e.ends_with("err_map_route_index.osc:7:9"),
-        "{e}"
+        e0.road == "1" && e0.lane == -1 && e0.s.abs() < S_TOL && (e0.x - 100.0).abs() < S_TOL,
+        "{e0:?}"
+    );
+    assert!(
+        e1.road == "1" && (e1.s - 9.941).abs() < CURVED_TOL,
+        "{e1:?}"
+    );
+    refused_on(
+        ("err_map_junction_road", "junction_trippel_twoway0"),
+        "expected an index below 3 into the roads of junction 1 (its connecting roads in the order its connections name them), found `m.junctions[0].roads[3]`",
+        "7:9",
     );
 }
