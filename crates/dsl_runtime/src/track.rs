@@ -266,6 +266,39 @@ impl Track {
         });
     }
 
+    /// From `t0` to `t1` the speed is `other`'s (an actor held at a distance from another,
+    /// `plan::held_relation`): a step to `other`'s speed at `t0`, then each of `other`'s
+    /// changes within the span, the last cut at `t1`, after which the speed it reached holds;
+    /// later planned changes are dropped. `Err(t)`: a sinusoidal change of `other`'s under way
+    /// at `t0` (its remainder is no change of this track's kinds), from `t`.
+    pub(crate) fn follow(&mut self, other: &Track, t0: f64, t1: f64) -> Result<(), f64> {
+        self.ramp(t0, t0, other.at(t0).1);
+        for r in other.stretches.iter().filter(|r| r.t1 > t0 && r.t0 < t1) {
+            let shape = match r.shape {
+                _ if r.t0 >= t0 => r.shape,
+                // Under way at t0: its remainder from t0.
+                Shape::Linear { v1, span } => Shape::Linear {
+                    v1,
+                    span: r.t0 + span - t0,
+                },
+                Shape::Poly { a0, jerk } => Shape::Poly {
+                    a0: a0 + jerk * (t0 - r.t0),
+                    jerk,
+                },
+                Shape::Sine { .. } | Shape::Step { .. } => return Err(r.t0),
+            };
+            self.push(Stretch {
+                t0: r.t0.max(t0),
+                t1: r.t1,
+                shape,
+            });
+        }
+        if let Some(last) = self.stretches.last_mut() {
+            last.t1 = last.t1.min(t1);
+        }
+        Ok(())
+    }
+
     /// Whether the actor stands throughout: no speed at the start, no change of speed to
     /// anything but 0, no jump, lane change or sideways movement.
     pub(crate) fn stands(&self) -> bool {

@@ -563,13 +563,18 @@ impl Planner<'_> {
                     }
                     (ModKind::Position, At::Start | At::All)
                     | (ModKind::Lane, At::Start | At::All) => {
-                        if first {
-                            continue;
+                        if !first {
+                            match t0 {
+                                Some(t) => self.check_start(m, target, t)?,
+                                // After a run-time start the engine checks it (plan::runtime).
+                                None => out.push(self.start_check(m, target, name("check"))?),
+                            }
                         }
-                        match t0 {
-                            Some(t) => self.check_start(m, target, t)?,
-                            // After a run-time start the engine checks it (plan::runtime).
-                            None => out.push(self.start_check(m, target, name("check"))?),
+                        // Relative to another actor at: all, held throughout (held_relation).
+                        if m.at == At::All && !self.groups.contains_key(&inv.actor) {
+                            let span = (t0, end_known);
+                            let kind = (inv.kind, mods);
+                            self.hold_relation(m, target, kind, span, &mut name, out)?;
                         }
                     }
                     (ModKind::Position, At::End) => {
@@ -862,8 +867,15 @@ impl Planner<'_> {
                             continue;
                         }
                         let Some(t) = t0 else {
-                            // After a run-time start the engine checks it (plan::runtime).
+                            // After a run-time start the engine checks it (plan::runtime);
+                            // beside another actor at: all it follows x (`lateral_follow`).
                             out.push(self.start_check(m, target, name("check"))?);
+                            if let (At::All, false) = (m.at, m.projected) {
+                                if let Some((x, dt)) = self.beside_gap(m, target)? {
+                                    let n = name("lateral");
+                                    out.push(self.follow_beside(m, target, x, dt, n));
+                                }
+                            }
                             continue;
                         };
                         // Beside another actor: the planned t of both at the start.

@@ -21,9 +21,12 @@
 //! (x may). Either way a sideways move of the actor's own in the phase is an error (checked
 //! once every phase is planned, `beside_checks`).
 //!
-//! After a run-time start the engine checks t − t_x at the phase start (`runtime`); x's moves
-//! after it are not followed (not run yet: x may be on another of the plan's roads, which the
-//! engine's move beside x does not cross).
+//! After a run-time start (the plan does not know whether x moves in the phase) the engine
+//! checks t − t_x at the phase start (`runtime`) and, with `track: actual`, follows x as here
+//! from then on (`follow_beside`), beside its check of t − t_x held over the phase (§8.9.1.1.1,
+//! `runtime::start_check`); x on another of the plan's roads is followed where their reference
+//! lines join continuously (engine `lateral_follow::target_t`), else an error record and a
+//! failed run. With `track: projected` only the check at the start, as before.
 
 use scenario::{DynamicsShape, LaneChangeTarget, LateralAction, PrivateAction};
 
@@ -72,7 +75,22 @@ impl Planner<'_> {
         self.mirror_moves(m, target, &x, (t0, end), dt)?;
         self.beside_follows
             .push((who, x.clone(), t0, te, dt, m.site.clone()));
-        out.push(Planned::with_phase(
+        out.push(self.follow_beside(m, target, x, dt, name));
+        Ok(())
+    }
+
+    /// The engine's following of x at `dt` to its left for `m` of `target`, as the action
+    /// `name`: its lane change beside a moving entity with a step shape, held until the
+    /// phase's Act stops it (module doc).
+    pub(super) fn follow_beside(
+        &self,
+        m: &Modifier,
+        target: &str,
+        x: String,
+        dt: f64,
+        name: String,
+    ) -> Planned {
+        Planned::with_phase(
             target,
             name,
             PrivateAction::Lateral(LateralAction::LaneChange {
@@ -91,8 +109,7 @@ impl Planner<'_> {
                 },
             }),
             &m.site,
-        ));
-        Ok(())
+        )
     }
 
     /// Writes x's sideways moves within `(t0, end)` on `target`'s track, `dt` to x's left.

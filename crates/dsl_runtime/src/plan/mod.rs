@@ -81,6 +81,7 @@
 //! | `runtime_rate` | speed changes at a rate relative to another actor after a run-time start (the engine's change and its checks) |
 //! | `runtime_kept` | the engine's checks after a run-time start of what the plan keeps by construction (yaw relative to the road, `keep_position`) |
 //! | `acceleration_follow` | `acceleration(…)` relative to another actor that the engine follows step by step |
+//! | `held_relation` | `position(…, ahead_of/behind: x)` and `lane(…: x)` at: all held throughout the phase: the engine's hold, the plan's check at every step, or the engine's held check |
 //! | `lateral_follow` | `lateral(…)` at: all beside another actor that moves sideways: the engine follows it |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
@@ -115,6 +116,7 @@ mod gap_actions;
 mod group_path;
 mod group_path_runtime;
 mod heading;
+mod held_relation;
 mod invoke;
 mod lane_fields;
 mod lateral;
@@ -198,6 +200,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         sides: RefCell::new(HashMap::new()),
         beside_checks: Vec::new(),
         beside_follows: Vec::new(),
+        held_relations: Vec::new(),
         heading_asks: Vec::new(),
         draws: RefCell::new(res.draws.clone()),
         engine_moved: HashMap::new(),
@@ -529,6 +532,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         return Err(no_end(root));
     }
     lateral_follow::check_beside_follows(&p, &p.beside_follows)?;
+    p.check_held_relations(&p.held_relations)?;
     for (a, x, t0, te, site) in &p.beside_checks {
         for who in [a, x] {
             if let Some(t) = p.track(who).moving_in(*t0, te.unwrap_or(f64::INFINITY)) {

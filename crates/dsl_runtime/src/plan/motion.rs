@@ -323,7 +323,12 @@ impl Planner<'_> {
 
     /// The lane a `lane(…)` modifier of `target` asks for at time `t` (`None`: no such
     /// driving lane).
-    fn lane_asked(&self, m: &Modifier, target: &str, t: f64) -> Result<Option<i32>, Error> {
+    pub(super) fn lane_asked(
+        &self,
+        m: &Modifier,
+        target: &str,
+        t: f64,
+    ) -> Result<Option<i32>, Error> {
         let n = m
             .arg("lane")
             .map(Arg::number)

@@ -61,7 +61,7 @@ use super::types::{
     SPEED_TOLERANCE,
 };
 use crate::error::{Error, ErrorKind as K, Site};
-use crate::resolve::{Arg, ModKind, Modifier, Val};
+use crate::resolve::{Arg, At, ModKind, Modifier, Val};
 
 impl Planner<'_> {
     /// The engine's check of `m` (a `lane`, `position` or `lateral` constraint at the start of
@@ -72,7 +72,11 @@ impl Planner<'_> {
         target: &str,
         name: String,
     ) -> Result<Planned, Error> {
-        Ok(self.checked(self.start_state(m, target)?, m, target, name))
+        let mut check = self.start_state(m, target)?;
+        // A relation to another actor at: all "holds throughout the phase" (§8.9.1.1.1):
+        // the engine checks it at every step until the phase's Act ends (`held_relation`).
+        check.throughout = m.at == At::All && !m.projected && relates(&check);
+        Ok(self.checked(check, m, target, name))
     }
 
     /// What the engine's check of `m` (as [`Self::start_check`]) requires of `target`.
@@ -148,7 +152,13 @@ impl Planner<'_> {
     }
 
     /// The check `check` of `m` as the action `name` of `target`.
-    fn checked(&self, check: StateCheck, m: &Modifier, target: &str, name: String) -> Planned {
+    pub(super) fn checked(
+        &self,
+        check: StateCheck,
+        m: &Modifier,
+        target: &str,
+        name: String,
+    ) -> Planned {
         Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), &m.site)
     }
 
@@ -435,4 +445,10 @@ pub(super) fn phase_start_check(
         ..check
     };
     Planned::with_phase(target, name, PrivateAction::Check(Box::new(check)), site)
+}
+
+/// Whether `check` relates its actor to another one: a lane counted from another actor's
+/// (`lane_of`), a place along the road from it (`gap`) or a t beside it (`beside`).
+pub(super) fn relates(check: &StateCheck) -> bool {
+    check.lane_of.is_some() || check.gap.is_some() || check.beside.is_some()
 }

@@ -301,7 +301,13 @@ fn relative_end(p: &Phase) -> u8 {
     let any_of =
         |m: &crate::resolve::Modifier, keys: &[&str]| keys.iter().any(|k| m.arg(k).is_some());
     let relative = |m: &crate::resolve::Modifier| match m.kind {
-        ModKind::Position => m.at == At::End,
+        ModKind::Position => {
+            m.at != At::Start && any_of(m, &["ahead_of", "behind"]) || m.at == At::End
+        }
+        // x's lane over the phase (`held_relation`).
+        ModKind::Lane => {
+            m.at == At::All && any_of(m, &["same_as", "side_of", "left_of", "right_of"])
+        }
         ModKind::Lateral => m.at != At::Start && any_of(m, &["side_of", "left_of", "right_of"]),
         ModKind::Speed | ModKind::ChangeSpeed => {
             (m.at == At::End || m.kind == ModKind::ChangeSpeed)

@@ -12,6 +12,7 @@ mod distance;
 mod gap_actions;
 mod groups;
 mod handlers;
+mod held_relations;
 mod keep_args;
 mod lane_side;
 mod lateral;

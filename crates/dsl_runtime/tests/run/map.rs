@@ -221,9 +221,9 @@ fn a_lane_relative_to_another_actor_after_an_until_holds_across_the_plans_roads(
     assert!((ego.s - 67.0).abs() < S_TOL, "{ego:?}");
     assert_eq!((lead.road.as_str(), lead.lane), ("1", -1), "{lead:?}");
     assert!((lead.s - 6.7692).abs() < CURVED_TOL, "{lead:?}");
-    // The check passed (a failure stops the run).
-    let t = r.when("do.same/ego/1:check", "End");
-    assert!(t.is_some_and(|t| (t - 5.85).abs() < 1e-9), "{t:?}");
+    // The check (at: all) held over do.same, both at 8 m/s in lanes -1 (a failure stops the
+    // run).
+    r.held("do.same/ego/1:check", (5.85, 6.85));
 }
 
 /// runtime_lateral_of_several_roads.osc's comment, by hand: lateral(0m, side_of: lead) after an

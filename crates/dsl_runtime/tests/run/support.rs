@@ -205,6 +205,17 @@ impl Run {
             .map(|(t, _, _)| *t)
     }
 
+    /// Asserts that the engine's check `name`, held over its phase (§8.9.1.1.1 `at: all`:
+    /// "holds throughout the phase"), started at `t0` and ran until its phase's Act stopped it
+    /// at `t1`: it never ended of itself (a failure ends it, and the run with it).
+    pub fn held(&self, name: &str, (t0, t1): (f64, f64)) {
+        let (s, e) = self.phase(name);
+        assert!(
+            (s - t0).abs() < 1e-9 && (e - t1).abs() < 1e-9 && self.when(name, "End").is_none(),
+            "{name}: [{s}, {e}], expected held over [{t0}, {t1}]"
+        );
+    }
+
     /// Start and end (stop) time of the phase `path`.
     pub fn phase(&self, path: &str) -> (f64, f64) {
         let start = self

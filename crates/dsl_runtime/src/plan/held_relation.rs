@@ -1,0 +1,245 @@
+//! Relations to another actor x at `at: all` (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.1: a
+//! constraint at `all` "holds throughout the phase"): `position(d / time: t, ahead_of/behind:
+//! x)` and `lane(same_as/side_of/left_of/right_of: x)`. Before, both were checked at the phase
+//! start only, and a run in which they stopped holding passed (issue 27).
+//!
+//! | relation at: all | the actor free along its lane | at a start the plan knows | after a run-time start |
+//! | --- | --- | --- | --- |
+//! | `position(d / time: t, ahead_of/behind: x)` | yes | the engine holds it (LongitudinalDistanceAction, continuous, no limits: the actor put d from x along the road at every step at x's speed); the plan gives the actor x's speed profile over the phase | the same hold |
+//! | `position(…)` | no | the plan's check at every step of the phase: an error before the run naming both speeds | the engine's check held over the phase (`StateCheck::throughout`) |
+//! | `lane(…: x)` | — | the plan's check at every step of the phase: an error before the run | the engine's check held over the phase |
+//!
+//! "Free along its lane": a `move()`/`drive()` with no modifier of its own that sets its speed
+//! or its travel (`speed`, `change_speed`, `acceleration`, `distance`, `keep_speed`,
+//! `keep_position`, another `position`, `avoid_collisions`): the relation is then what
+//! determines its motion, as `keep_space_gap` determines a follower's. A default gap
+//! (`position(ahead_of/behind: x)` without distance or time: max(2 s · v_x, 10 m + the
+//! overhangs)) is held as the time gap 2 s where x's speed at the start makes it the larger,
+//! else as the distance (at a known start; after a run-time start it is checked only).
+//! `track: projected` (x as projected from the start) is checked at the start only, as before
+//! (not held yet). A phase whose end the plan does not know is the engine's held check from
+//! its known start. Not for groups (each member's place is its formation's).
+//!
+//! The plan checks its own tracks at the engine's steps from the phase start to its end, s
+//! within [`POSITION_TOLERANCE`] of x's s ∓ d (d at x's speed then for a time), the lane the
+//! one counted from x's then (lanes switch on the plan's tracks where a lane change ends), once
+//! every phase is planned (x's phase may be planned after the actor's).
+//! `lateral(…, side_of/left_of/right_of: x)` at: all is `lateral_follow`'s.
+
+use scenario::{CoordinateSystem, LongitudinalAction, LongitudinalDisplacement, PrivateAction};
+
+use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
+use super::planner::Planner;
+use super::types::{Planned, POSITION_TOLERANCE};
+use crate::error::{Error, ErrorKind as K};
+use crate::resolve::{Action, At, ModKind, Modifier};
+
+/// A relation at: all over a phase whose start and end the plan knows: (actor, the modifier,
+/// phase start, phase end), checked once every phase is planned.
+pub(crate) type HeldRelation = (String, Modifier, f64, f64);
+
+/// The modifiers of an invocation that set the actor's speed or travel along its lane.
+const OWN_ALONG: [ModKind; 8] = [
+    ModKind::Speed,
+    ModKind::ChangeSpeed,
+    ModKind::Acceleration,
+    ModKind::Distance,
+    ModKind::KeepSpeed,
+    ModKind::KeepPosition,
+    ModKind::Position,
+    ModKind::AvoidCollisions,
+];
+
+/// Whether `m` relates the actor to another one along the road or by lane.
+pub(super) fn relation(m: &Modifier) -> bool {
+    let keys: &[&str] = match m.kind {
+        ModKind::Position => &["ahead_of", "behind"],
+        ModKind::Lane => &["same_as", "side_of", "left_of", "right_of"],
+        _ => &[],
+    };
+    keys.iter().any(|k| m.arg(k).is_some())
+}
+
+/// Whether `m` (a `position(d / time: t, ahead_of/behind: x)` at: all, actual) is what
+/// determines the motion along the lane of an invocation `kind` with `mods` (module doc).
+pub(super) fn holds_motion(kind: Action, mods: &[Modifier], m: &Modifier) -> bool {
+    m.kind == ModKind::Position
+        && m.at == At::All
+        && !m.projected
+        && kind == Action::Move
+        && !mods
+            .iter()
+            .any(|q| !std::ptr::eq(q, m) && OWN_ALONG.contains(&q.kind) && q.at != At::Start)
+}
+
+impl Planner<'_> {
+    /// Plans `m`, a relation to another actor at: all of `target` in an invocation `kind`
+    /// with `mods` over its phase from `t0` (`None`: a run-time start) to `te` (if known)
+    /// (module doc): the engine's hold where it determines the motion, else the plan's check
+    /// once every phase is planned, or the engine's held check where the plan knows the start
+    /// but not the end (after a run-time start `runtime::start_check` holds it).
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn hold_relation(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        (kind, mods): (Action, &[Modifier]),
+        (t0, te): (Option<f64>, Option<f64>),
+        name: &mut dyn FnMut(&str) -> String,
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        if m.projected || !relation(m) {
+            return Ok(());
+        }
+        // A default gap is held where the plan knows x's speed at the start (module doc).
+        let default_gap = m.arg("distance").is_none() && m.arg("time").is_none();
+        if holds_motion(kind, mods, m) && !(default_gap && t0.is_none()) {
+            let hold = self.hold_gap(m, target, t0.map(|t| (t, te)), name("hold"))?;
+            out.push(hold);
+            return Ok(());
+        }
+        match (t0, te) {
+            (Some(t0), Some(te)) => {
+                self.held_relations
+                    .push((target.to_string(), m.clone(), t0, te));
+            }
+            (Some(_), None) => {
+                let mut check = self.start_state(m, target)?;
+                check.throughout = true;
+                out.push(self.checked(check, m, target, name("check")));
+            }
+            (None, _) => {}
+        }
+        Ok(())
+    }
+
+    /// The engine's hold of `m` (see [`holds_motion`]) on `target` over its phase, as the
+    /// action `name`: a LongitudinalDistanceAction (OpenSCENARIO 1.3 §7.7.2.1) to x, between
+    /// the reference points, along the road, continuous and without limits, so the engine puts
+    /// the actor d (or t at x's speed) from x at every step and gives it x's speed. Where the
+    /// plan knows the phase from `t0` to `te` the actor's track takes x's speed profile.
+    pub(super) fn hold_gap(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        span: Option<(f64, Option<f64>)>,
+        name: String,
+    ) -> Result<Planned, Error> {
+        let (x, sign, _) = self.position_target(m, target, span.map_or(0.0, |s| s.0))?;
+        let Some(x) = x else {
+            return Err(m.site.err(
+                K::Modifier,
+                "expected ahead_of or behind in position(…) held at: all, found neither",
+            ));
+        };
+        let (distance, time_gap) = match (m.arg("distance"), m.arg("time"), span) {
+            (Some(d), _, _) => (Some(d.number()?), None),
+            (None, Some(t), _) => (None, Some(t.number()?)),
+            // The default gap, max(2 s · v_x, 10 m + the overhangs): the time gap where x's
+            // speed at the start makes it the larger, else the distance.
+            (None, None, Some((t0, _))) => {
+                let floor = GROUP_GAP + self.facing_overhangs(target, &x, sign < 0.0);
+                match DEFAULT_TIME_GAP * self.track(&x).at(t0).1 >= floor {
+                    true => (None, Some(DEFAULT_TIME_GAP)),
+                    false => (Some(floor), None),
+                }
+            }
+            (None, None, None) => {
+                return Err(m.site.err(K::Modifier, "expected a distance or a time in position(…) held after a run-time start, found neither"));
+            }
+        };
+        if let Some((t0, te)) = span {
+            let end = te.unwrap_or(f64::INFINITY);
+            let xs = self.track(&x).clone();
+            self.track_mut(target).follow(&xs, t0, end).map_err(|t| {
+                m.site.err(
+                    K::Unsatisfiable,
+                    format!("expected `{x}`'s speed profile one `{target}` can take from {t0:.2} s (position(…) at: all), found a sinusoidal or constant-jerk change of `{x}`'s under way at {t:.2} s"),
+                )
+            })?;
+            // x's speed where the hold ends (an end the plan does not know: at the start).
+            let v = xs.at(te.unwrap_or(t0)).1;
+            self.last_v.insert(target.to_string(), v);
+        }
+        // Ahead of x: x trails (the actor leads).
+        let displacement = if sign > 0.0 {
+            LongitudinalDisplacement::LeadingReferencedEntity
+        } else {
+            LongitudinalDisplacement::TrailingReferencedEntity
+        };
+        let action = PrivateAction::Longitudinal(LongitudinalAction::LongitudinalDistance {
+            entity_ref: x,
+            continuous: true,
+            distance,
+            time_gap,
+            freespace: false,
+            displacement: Some(displacement),
+            coordinate_system: Some(CoordinateSystem::Road),
+            dynamic_constraints: None,
+            at_start: None,
+        });
+        Ok(Planned::with_phase(target, name, action, &m.site))
+    }
+
+    /// Checks each relation of `held` on the plan's tracks at the engine's steps over its
+    /// phase (module doc): an error at the modifier at the first step it does not hold.
+    pub(super) fn check_held_relations(&self, held: &[HeldRelation]) -> Result<(), Error> {
+        let dt = self.settings.dt;
+        for (a, m, t0, te) in held {
+            let steps = ((te - t0) / dt + 1e-6).floor() as usize;
+            for k in 0..=steps {
+                let t = t0 + k as f64 * dt;
+                self.check_held_at(a, m, t)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Checks the relation `m` of `a` at `t` on the plan's tracks.
+    fn check_held_at(&self, a: &str, m: &Modifier, t: f64) -> Result<(), Error> {
+        if m.kind == ModKind::Lane {
+            let got = self.track(a).lane(t);
+            let want = self.lane_asked(m, a, t)?;
+            if want != Some(got) {
+                let x = self.lane_reference(m)?;
+                return Err(m.site.err(
+                    K::Unsatisfiable,
+                    format!(
+                        "expected `{a}` in {} throughout the phase (lane(…) at: all, counted from `{x}`'s lane {} then), found it in lane {got} at {t:.2} s",
+                        want.map_or("a driving lane that does not exist".to_string(), |l| format!("lane {l}")),
+                        self.track(&x).lane(t),
+                    ),
+                ));
+            }
+            return Ok(());
+        }
+        let (Some(x), sign, d) = self.position_target(m, a, t)? else {
+            return Ok(());
+        };
+        let got = sign * (self.s_at(a, t) - self.s_at(&x, t));
+        if (got - d).abs() > POSITION_TOLERANCE {
+            let side = if sign > 0.0 { "ahead of" } else { "behind" };
+            let (va, vx) = (self.track(a).at(t).1, self.track(&x).at(t).1);
+            return Err(m.site.err(
+                K::Unsatisfiable,
+                format!("expected `{a}` {d:.2} m {side} `{x}` throughout the phase (position(…) at: all, within {POSITION_TOLERANCE} m), found {got:.2} m at {t:.2} s: `{a}`'s speed {va:.2} m/s, `{x}`'s {vx:.2} m/s"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The actor a `lane(…)` relation counts from.
+    fn lane_reference(&self, m: &Modifier) -> Result<String, Error> {
+        ["same_as", "side_of", "left_of", "right_of"]
+            .iter()
+            .find_map(|k| m.arg(k))
+            .map_or_else(
+                || {
+                    Err(m
+                        .site
+                        .err(K::Modifier, "expected a reference in lane(…), found none"))
+                },
+                |e| self.entity_of(e),
+            )
+    }
+}

@@ -1,0 +1,132 @@
+//! Relations to another actor at `at: all` held throughout the phase (ASAM OpenSCENARIO DSL 2.1
+//! §8.9.1.1.1: a constraint at `all` "holds throughout the phase"; issue 27, found in review:
+//! before, `position(d, behind: x)`, `lane(same_as: x)` and, after a run-time start,
+//! `lateral(…, left_of: x)` were checked at the phase start only, and a run in which they
+//! stopped holding passed). Every moment is worked by hand in the scenario file
+//! (`tests/scenarios/held/`).
+
+use crate::runtime::fails;
+use crate::support::{error, lower, run, run_to_error, stepped, DT};
+
+/// Positions on the straight road: the engine's hold puts the actor at x's s − d exactly,
+/// up to float round-off.
+const S_TOL: f64 = 1e-6;
+/// Event times are step times.
+const T_TOL: f64 = 1e-9;
+
+/// The plan's error of `tests/scenarios/held/NAME.osc`: `want`, then its place `at`.
+fn refused(name: &str, want: &str, at: &str) {
+    let e = error(&format!("held/{name}"));
+    let tail = format!("held/{name}.osc:{at}");
+    assert!(e.starts_with(want) && e.ends_with(&tail), "{e}");
+}
+
+/// behind_fails.osc: ego at its own 15 m/s, 32 m behind lead at 8 m/s at the phase start, is
+/// 31.30 m behind at 2.10 s, the first step 0.5 m off: an error before the run.
+#[test]
+fn a_position_behind_another_that_its_own_speed_breaks_is_an_error_before_the_run() {
+    let want = "expected `ego` 32.00 m behind `lead` throughout the phase (position(…) at: all, within 0.5 m), found 31.30 m at 2.10 s: `ego`'s speed 15.00 m/s, `lead`'s 8.00 m/s at ";
+    refused("behind_fails", want, "23:13");
+}
+
+/// behind_fails_runtime.osc: after the until at 5.75 s, 59.75 m behind at the start and
+/// closing at 7 m/s, the engine's held check finds 59.05 m at 5.85 s: an error record (at the
+/// end of that step, 5.90 s) and a failed run.
+#[test]
+fn a_position_behind_another_after_an_until_is_the_engines_check_held_over_the_phase() {
+    let want = "expected 'lead' 59.750 m from 'ego' along the road (within 0.5 m) (position(…) at ";
+    let tail = "held/behind_fails_runtime.osc:26:13), found 59.050 m at t = 5.850 s";
+    let element = "do.cruise/ego/2:check";
+    fails("held/behind_fails_runtime", (want, tail), element, 5.9);
+}
+
+/// behind_held.osc: ego has nothing of its own along its lane, so position(32m, behind: lead)
+/// determines its motion: s_ego = s_lead − 32 and lead's speed at every step while lead
+/// accelerates 8 → 16 m/s over [2, 6] s; the plan's track took lead's profile (do.after's
+/// check of 178 m at 6 s passes), and ego keeps 16 m/s after.
+#[test]
+fn a_position_behind_another_alone_holds_the_actor_there_throughout() {
+    let r = run("held/behind_held", 0, None);
+    let (s, e) = r.phase("do.follow");
+    assert!(
+        (s - 2.0).abs() < T_TOL && (e - 6.0).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    // lead: 8 + 2·τ m/s from 2 s, each step's speed set at its end (support::stepped).
+    let v_lead = |t: f64| 8.0 + 2.0 * (t.clamp(2.0, 6.0) - 2.0);
+    for k in 0..=80 {
+        let t = 2.0 + k as f64 * DT;
+        let (ego, lead) = (r.at(t, "ego"), r.at(t, "lead"));
+        let s_lead = 162.0 + stepped(v_lead, 2.0, t);
+        assert!((lead.s - s_lead).abs() < S_TOL, "lead {t}: {lead:?}");
+        assert!((ego.s - (s_lead - 32.0)).abs() < S_TOL, "ego {t}: {ego:?}");
+        if k > 0 {
+            assert!((ego.speed - v_lead(t)).abs() < S_TOL, "ego {t}: {ego:?}");
+        }
+    }
+    // 150.1 m and 12 m/s at 4 s, 178.2 m and 16 m/s at 6 s (the steps' 0.05·τ m over the
+    // closed form 130 + 8τ + τ²), then 16 m/s: 194.2 m at 7 s.
+    for (t, s, v) in [(4.0, 150.1, 12.0), (6.0, 178.2, 16.0), (7.0, 194.2, 16.0)] {
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.s - s).abs() < S_TOL && (ego.speed - v).abs() < S_TOL,
+            "{t}: {ego:?}"
+        );
+    }
+}
+
+/// lane_same_as_fails.osc: npc changes into lane -1 over [1, 5] s and ego, lane(same_as: npc)
+/// at: all, does not: an error before the run at 5.00 s, where the plan has npc in lane -1.
+#[test]
+fn a_lane_same_as_another_that_changes_lane_alone_is_an_error_before_the_run() {
+    let want = "expected `ego` in lane -1 throughout the phase (lane(…) at: all, counted from `npc`'s lane -1 then), found it in lane -2 at 5.00 s at ";
+    refused("lane_same_as_fails", want, "23:17");
+}
+
+/// lane_same_as_follows.osc: ego changes lane with npc, over the same 4 s: in npc's lane at
+/// every step (both cross the border between lanes -2 and -1 half way, at 3 s), both in lane
+/// -1 from there.
+#[test]
+fn a_lane_same_as_another_that_changes_lane_with_it_holds_throughout() {
+    let r = run("held/lane_same_as_follows", 0, None);
+    for k in 0..=100 {
+        let t = k as f64 * DT;
+        let (ego, npc) = (r.at(t, "ego"), r.at(t, "npc"));
+        assert_eq!(ego.lane, npc.lane, "{t}: {ego:?} {npc:?}");
+        let want = if t < 3.0 - T_TOL { -2 } else { -1 };
+        if (t - 3.0).abs() > DT / 2.0 {
+            assert_eq!(ego.lane, want, "{t}: {ego:?}");
+        }
+    }
+}
+
+/// lateral_follow_runtime.osc: after the until at 3.35 s npc moves 1 m right over 2 s and ego,
+/// lateral(3.5m, left_of: npc) at: all, follows it: t = -5.25 - f at every step, f = (1 −
+/// cos(π·τ/2))/2, -5.75 m at 4.35 s, -6.25 m in lane -2 at 5.35 s; the engine's check of
+/// t − t_x held over the phase passes (the run ends without an error).
+#[test]
+fn a_lateral_position_beside_another_after_an_until_follows_it_throughout() {
+    let lowered = lower("held/lateral_follow_runtime", 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = run_to_error(&lowered.scenario);
+    assert!(
+        error.is_none() && records.is_empty(),
+        "{error:?} {records:?}"
+    );
+    let r = run("held/lateral_follow_runtime", 0, None);
+    let (s, e) = r.phase("do.shift");
+    assert!(
+        (s - 3.35).abs() < T_TOL && (e - 5.35).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    let f = |t: f64| (1.0 - (std::f64::consts::PI * (t.min(5.35) - 3.35) / 2.0).cos()) / 2.0;
+    for k in 0..=60 {
+        let t = 3.35 + k as f64 * DT;
+        let (ego, npc) = (r.at(t, "ego"), r.at(t, "npc"));
+        assert!((npc.y - (-8.75 - f(t))).abs() < S_TOL, "npc {t}: {npc:?}");
+        assert!((ego.y - (-5.25 - f(t))).abs() < S_TOL, "ego {t}: {ego:?}");
+        assert_eq!(ego.lane, -2, "{t}: {ego:?}");
+    }
+    assert!((r.at(4.35, "ego").y + 5.75).abs() < S_TOL);
+    assert!((r.at(5.35, "ego").y + 6.25).abs() < S_TOL);
+    r.held("do.shift.0/ego/1:check", (3.35, 5.35));
+}
