@@ -83,8 +83,9 @@ pub(crate) struct Planner<'a> {
     /// (actor, x, phase start, phase end if known, the actor's t minus x's, the modifier).
     pub beside_follows: Vec<(String, String, f64, Option<f64>, f64, Site)>,
     /// `position(…, ahead_of/behind: x)` and `lane(…: x)` at: all over a phase the plan knows
-    /// from its start to its end (`held_relation`), checked once every phase is planned.
-    pub held_relations: Vec<super::held_relation::HeldRelation>,
+    /// from its start to its end (`held_relation`), checked once every phase is planned:
+    /// (actor, the modifier, phase start, phase end), as `held_relation::HeldRelation` names it.
+    pub held_relations: Vec<(String, crate::resolve::Modifier, f64, f64)>,
     /// Yaws measured in the world or from another object (`heading`), checked once every
     /// phase is planned.
     pub heading_asks: Vec<super::types::HeadingAsk>,

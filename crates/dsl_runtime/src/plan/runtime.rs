@@ -9,11 +9,11 @@
 //! | at the start of a phase that starts on a run-time condition | done by |
 //! | --- | --- |
 //! | `lane(n [, from: left])` (at: start, all) | the engine's check: the actor in that driving lane |
-//! | `lane(same_as/side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor in the lane counted from x's, as a RelativeTargetLane counts |
+//! | `lane(same_as/side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor in the lane counted from x's, as a RelativeTargetLane counts (at: all held over the phase, `held_relation`) |
 //! | `position(d)` (at: start, all) | the engine's check: the actor at s = d (0.5 m) |
-//! | `position(d / time: t / neither, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road, d the distance, t at x's speed then, or the default gap (0.5 m) |
+//! | `position(d / time: t / neither, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road, d the distance, t at x's speed then, or the default gap (0.5 m) (at: all held over the phase; an actor free along its lane the engine's hold, `held_relation`) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre, from a border with the lane's width where the engine finds the actor (1 cm) |
-//! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm) |
+//! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm) (at: all held over the phase, and with `track: actual` the engine follows x, `lateral_follow`) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
 //! | `yaw(ψ)`, `orientation(yaw: ψ)` relative to the road | the engine's check of the actor's heading minus the road's where it is: at the start (at: start, all) and the end (at: end, all) (`runtime_kept`) |
