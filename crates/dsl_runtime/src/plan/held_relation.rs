@@ -18,7 +18,9 @@
 //! else as the distance (at a known start; after a run-time start it is checked only).
 //! `track: projected` (x as projected from the start) is checked at the start only, as before
 //! (not held yet). A phase whose end the plan does not know is the engine's held check from
-//! its known start. Not for groups (each member's place is its formation's).
+//! its known start, as is a relation to an x the engine moves then (a gap action's or a
+//! model's controller: the plan has no track of x; an actor held to such an x is the engine's
+//! to move too). Not for groups (each member's place is its formation's).
 //!
 //! The plan checks its own tracks at the engine's steps from the phase start to its end, s
 //! within [`POSITION_TOLERANCE`] of x's s ∓ d (d at x's speed then for a time), the lane the
@@ -98,6 +100,10 @@ impl Planner<'_> {
             out.push(hold);
             return Ok(());
         }
+        // x moved by the engine (a gap action's or a model's controller): the plan has no
+        // track of x to check against, the engine's held check is the check.
+        let x = self.reference_of(m)?;
+        let te = te.filter(|_| !self.engine_moved.contains_key(&x));
         match (t0, te) {
             (Some(t0), Some(te)) => {
                 self.held_relations
@@ -148,13 +154,17 @@ impl Planner<'_> {
                 return Err(m.site.err(K::Modifier, "expected a distance or a time in position(…) held after a run-time start, found neither"));
             }
         };
-        if let Some((t0, te)) = span {
+        if let Some(since) = self.engine_moved.get(&x).copied() {
+            // x's motion is the engine's from `since`: so is the actor's it holds.
+            let from = span.map(|s| s.0).or(since);
+            self.engine_moved.insert(target.to_string(), from);
+        } else if let Some((t0, te)) = span {
             let end = te.unwrap_or(f64::INFINITY);
             let xs = self.track(&x).clone();
             self.track_mut(target).follow(&xs, t0, end).map_err(|t| {
                 m.site.err(
                     K::Unsatisfiable,
-                    format!("expected `{x}`'s speed profile one `{target}` can take from {t0:.2} s (position(…) at: all), found a sinusoidal or constant-jerk change of `{x}`'s under way at {t:.2} s"),
+                    format!("expected `{x}`'s speed profile one `{target}` can take from {t0:.2} s (position(…) at: all), found a sinusoidal change of `{x}`'s under way then, from {t:.2} s"),
                 )
             })?;
             // x's speed where the hold ends (an end the plan does not know: at the start).
@@ -201,7 +211,7 @@ impl Planner<'_> {
             let got = self.track(a).lane(t);
             let want = self.lane_asked(m, a, t)?;
             if want != Some(got) {
-                let x = self.lane_reference(m)?;
+                let x = self.reference_of(m)?;
                 return Err(m.site.err(
                     K::Unsatisfiable,
                     format!(
@@ -228,18 +238,20 @@ impl Planner<'_> {
         Ok(())
     }
 
-    /// The actor a `lane(…)` relation counts from.
-    fn lane_reference(&self, m: &Modifier) -> Result<String, Error> {
-        ["same_as", "side_of", "left_of", "right_of"]
-            .iter()
-            .find_map(|k| m.arg(k))
-            .map_or_else(
-                || {
-                    Err(m
-                        .site
-                        .err(K::Modifier, "expected a reference in lane(…), found none"))
-                },
-                |e| self.entity_of(e),
-            )
+    /// The actor a relation (`position(…, ahead_of/behind: x)`, `lane(…: x)`) is to.
+    fn reference_of(&self, m: &Modifier) -> Result<String, Error> {
+        [
+            "same_as", "side_of", "left_of", "right_of", "ahead_of", "behind",
+        ]
+        .iter()
+        .find_map(|k| m.arg(k))
+        .map_or_else(
+            || {
+                Err(m
+                    .site
+                    .err(K::Modifier, "expected a reference in lane(…), found none"))
+            },
+            |e| self.entity_of(e),
+        )
     }
 }

@@ -130,3 +130,42 @@ fn a_lateral_position_beside_another_after_an_until_follows_it_throughout() {
     assert!((r.at(5.35, "ego").y + 6.25).abs() < S_TOL);
     r.held("do.shift.0/ego/1:check", (3.35, 5.35));
 }
+
+/// behind_held_runtime.osc: after the until at 5.75 s ego, free along its lane, is held
+/// 59.75 m behind lead while lead accelerates 8 → 12 m/s over 2 s: s_ego = s_lead − 59.75 and
+/// lead's speed at every step, 206.35 m and 12 m/s at 7.75 s (lead 266.1 m); the engine's held
+/// check passes.
+#[test]
+fn a_position_behind_another_alone_after_an_until_is_the_engines_hold() {
+    let r = run("held/behind_held_runtime", 0, None);
+    let (s, e) = r.phase("do.cruise");
+    assert!(
+        (s - 5.75).abs() < T_TOL && (e - 7.75).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    let v_lead = |t: f64| 8.0 + 2.0 * (t.clamp(5.75, 7.75) - 5.75);
+    for k in 0..=40 {
+        let t = 5.75 + k as f64 * DT;
+        let (ego, lead) = (r.at(t, "ego"), r.at(t, "lead"));
+        let s_lead = 246.0 + stepped(v_lead, 5.75, t);
+        assert!((lead.s - s_lead).abs() < S_TOL, "lead {t}: {lead:?}");
+        assert!((ego.s - (s_lead - 59.75)).abs() < S_TOL, "ego {t}: {ego:?}");
+        if k > 0 {
+            assert!((ego.speed - v_lead(t)).abs() < S_TOL, "ego {t}: {ego:?}");
+        }
+    }
+    let ego = r.at(7.75, "ego");
+    assert!(
+        (ego.s - 206.35).abs() < S_TOL && (ego.speed - 12.0).abs() < S_TOL,
+        "{ego:?}"
+    );
+    r.held("do.cruise.0/ego/1:check", (5.75, 7.75));
+}
+
+/// first_phase_fails.osc: a first phase's position(20m, ahead_of: lead) at: all with ego's own
+/// 10 m/s against lead's 20 m/s: an error before the run at 0.10 s.
+#[test]
+fn a_first_phases_position_ahead_of_another_its_speed_breaks_is_an_error_before_the_run() {
+    let want = "expected `ego` 20.00 m ahead of `lead` throughout the phase (position(…) at: all, within 0.5 m), found 19.00 m at 0.10 s: `ego`'s speed 10.00 m/s, `lead`'s 20.00 m/s at ";
+    refused("first_phase_fails", want, "16:13");
+}
