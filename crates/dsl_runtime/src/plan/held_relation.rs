@@ -16,8 +16,11 @@
 //! (`position(ahead_of/behind: x)` without distance or time: max(2 s · v_x, 10 m + the
 //! overhangs)) is held as the time gap 2 s where x's speed at the start makes it the larger,
 //! else as the distance (at a known start; after a run-time start it is checked only).
-//! `track: projected` (x as projected from the start) is checked at the start only, as before
-//! (not held yet). A phase whose end the plan does not know is the engine's held check from
+//! With `track: projected` (§8.9.1.1.3) x is read as projected from the phase start (along
+//! its lane at its speed then, in its lane then): at a start and end the plan knows, the
+//! plan's check against that, an actor free along its lane keeping x's speed at the start (a
+//! step SpeedAction); after a run-time start, or with an end the plan does not know, checked at
+//! the start only (not held yet: the engine's held check reads x as it is). A phase whose end the plan does not know is the engine's held check from
 //! its known start, as is a relation to an x the engine moves then (a gap action's or a
 //! model's controller: the plan has no track of x; an actor held to such an x is the engine's
 //! to move too). Not for groups (each member's place is its formation's).
@@ -28,7 +31,12 @@
 //! every phase is planned (x's phase may be planned after the actor's).
 //! `lateral(…, side_of/left_of/right_of: x)` at: all is `lateral_follow`'s.
 
-use scenario::{CoordinateSystem, LongitudinalAction, LongitudinalDisplacement, PrivateAction};
+use scenario::{
+    CoordinateSystem, DynamicsShape, LongitudinalAction, LongitudinalDisplacement, PrivateAction,
+    SpeedTarget,
+};
+
+use super::motion::speed_action;
 
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
@@ -65,9 +73,14 @@ pub(super) fn relation(m: &Modifier) -> bool {
 /// Whether `m` (a `position(d / time: t, ahead_of/behind: x)` at: all, actual) is what
 /// determines the motion along the lane of an invocation `kind` with `mods` (module doc).
 pub(super) fn holds_motion(kind: Action, mods: &[Modifier], m: &Modifier) -> bool {
+    !m.projected && free_along(kind, mods, m)
+}
+
+/// Whether `m`, a `position(…)` at: all, is the only modifier of an invocation `kind` with
+/// `mods` that sets the actor's motion along its lane (module doc).
+fn free_along(kind: Action, mods: &[Modifier], m: &Modifier) -> bool {
     m.kind == ModKind::Position
         && m.at == At::All
-        && !m.projected
         && kind == Action::Move
         && !mods
             .iter()
@@ -90,7 +103,24 @@ impl Planner<'_> {
         name: &mut dyn FnMut(&str) -> String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
-        if m.projected || !relation(m) {
+        if !relation(m) {
+            return Ok(());
+        }
+        if m.projected {
+            // x as projected from the start (§8.9.1.1.3): along its lane at its speed then,
+            // in its lane then. Checked where the plan knows the phase; an actor free along
+            // its lane keeps x's speed at the start (after a run-time start: the start only).
+            if let (Some(t0), Some(te)) = (t0, te) {
+                if free_along(kind, mods, m) {
+                    let v = self.track(&self.reference_of(m)?).at(t0).1;
+                    let keep = speed_action(DynamicsShape::Step, 0.0, SpeedTarget::Absolute(v));
+                    out.push(Planned::with_phase(target, name("speed"), keep, &m.site));
+                    self.track_mut(target).ramp(t0, t0, v);
+                    self.last_v.insert(target.to_string(), v);
+                }
+                self.held_relations
+                    .push((target.to_string(), m.clone(), t0, te));
+            }
             return Ok(());
         }
         // A default gap is held where the plan knows x's speed at the start (module doc).
@@ -199,17 +229,20 @@ impl Planner<'_> {
             let steps = ((te - t0) / dt + 1e-6).floor() as usize;
             for k in 0..=steps {
                 let t = t0 + k as f64 * dt;
-                self.check_held_at(a, m, t)?;
+                self.check_held_at(a, m, (*t0, t))?;
             }
         }
         Ok(())
     }
 
-    /// Checks the relation `m` of `a` at `t` on the plan's tracks.
-    fn check_held_at(&self, a: &str, m: &Modifier, t: f64) -> Result<(), Error> {
+    /// Checks the relation `m` of `a` at `t` on the plan's tracks (x as projected from the
+    /// phase start `t0` where `m` says so).
+    fn check_held_at(&self, a: &str, m: &Modifier, (t0, t): (f64, f64)) -> Result<(), Error> {
+        // Where x is read: at `t`, or projected at the start.
+        let tx = if m.projected { t0 } else { t };
         if m.kind == ModKind::Lane {
             let got = self.track(a).lane(t);
-            let want = self.lane_asked(m, a, t)?;
+            let want = self.lane_asked(m, a, tx)?;
             if want != Some(got) {
                 let x = self.reference_of(m)?;
                 return Err(m.site.err(
@@ -217,19 +250,26 @@ impl Planner<'_> {
                     format!(
                         "expected `{a}` in {} throughout the phase (lane(…) at: all, counted from `{x}`'s lane {} then), found it in lane {got} at {t:.2} s",
                         want.map_or("a driving lane that does not exist".to_string(), |l| format!("lane {l}")),
-                        self.track(&x).lane(t),
+                        self.track(&x).lane(tx),
                     ),
                 ));
             }
             return Ok(());
         }
-        let (Some(x), sign, d) = self.position_target(m, a, t)? else {
+        let (Some(x), sign, d) = self.position_target(m, a, tx)? else {
             return Ok(());
         };
-        let got = sign * (self.s_at(a, t) - self.s_at(&x, t));
+        let s_x = match m.projected {
+            true => {
+                let (tr, s0) = (self.track(&x), self.s_at(&x, t0));
+                self.road.s_after(tr.lane(t0), s0, tr.at(t0).1 * (t - t0))
+            }
+            false => self.s_at(&x, t),
+        };
+        let got = sign * (self.s_at(a, t) - s_x);
         if (got - d).abs() > POSITION_TOLERANCE {
             let side = if sign > 0.0 { "ahead of" } else { "behind" };
-            let (va, vx) = (self.track(a).at(t).1, self.track(&x).at(t).1);
+            let (va, vx) = (self.track(a).at(t).1, self.track(&x).at(tx).1);
             return Err(m.site.err(
                 K::Unsatisfiable,
                 format!("expected `{a}` {d:.2} m {side} `{x}` throughout the phase (position(…) at: all, within {POSITION_TOLERANCE} m), found {got:.2} m at {t:.2} s: `{a}`'s speed {va:.2} m/s, `{x}`'s {vx:.2} m/s"),

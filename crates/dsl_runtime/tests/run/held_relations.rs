@@ -169,3 +169,21 @@ fn a_first_phases_position_ahead_of_another_its_speed_breaks_is_an_error_before_
     let want = "expected `ego` 20.00 m ahead of `lead` throughout the phase (position(…) at: all, within 0.5 m), found 19.00 m at 0.10 s: `ego`'s speed 10.00 m/s, `lead`'s 20.00 m/s at ";
     refused("first_phase_fails", want, "16:13");
 }
+
+/// behind_projected.osc: ego, free along its lane, 32 m behind lead as projected from 2 s
+/// (track: projected) keeps lead's 8 m/s of the start while lead accelerates: s_ego = 130 +
+/// 8·τ at every step, 162 m at 6 s (the plan's check there passes), 170 m at 7 s.
+#[test]
+fn a_position_behind_a_projected_actor_alone_keeps_its_speed_of_the_start() {
+    let r = run("held/behind_projected", 0, None);
+    for k in 1..=100 {
+        let t = 2.0 + k as f64 * DT;
+        let ego = r.at(t, "ego");
+        let want = 130.0 + 8.0 * (t - 2.0);
+        assert!(
+            (ego.s - want).abs() < S_TOL && (ego.speed - 8.0).abs() < S_TOL,
+            "{t}: {ego:?}, want {want}"
+        );
+    }
+    assert!((r.at(6.0, "lead").s - 210.2).abs() < S_TOL);
+}
