@@ -29,18 +29,24 @@
 //! within [`POSITION_TOLERANCE`] of x's s ∓ d (d at x's speed then for a time), the lane the
 //! one counted from x's then (lanes switch on the plan's tracks where a lane change ends), once
 //! every phase is planned (x's phase may be planned after the actor's).
+//! `lane(…: x)` at: all of a `move()`/`drive()` with no sideways motion of its own (no
+//! `change_lane`, `lateral`, `keep_lane`, `lane(…, at: end)`): the actor follows x's lane
+//! changes in the phase, each a sinusoidal LaneChangeAction over the span of x's (from its
+//! start, an absolute time) into the lane counted from x's new one (the same shape as x's
+//! `change_lane`/`lane(…, at: end)`: the two cross their lanes' border in the same step where
+//! the lanes are as wide); a change of x's that runs past the phase is the check's error.
 //! `lateral(…, side_of/left_of/right_of: x)` at: all is `lateral_follow`'s.
 
 use scenario::{
-    CoordinateSystem, DynamicsShape, LongitudinalAction, LongitudinalDisplacement, PrivateAction,
-    SpeedTarget,
+    CoordinateSystem, DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction,
+    LongitudinalDisplacement, PrivateAction, SpeedTarget,
 };
 
-use super::motion::speed_action;
+use super::motion::{sinusoidal_over, speed_action};
 
 use super::place::{DEFAULT_TIME_GAP, GROUP_GAP};
 use super::planner::Planner;
-use super::types::{Planned, POSITION_TOLERANCE};
+use super::types::{Planned, When, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Action, At, ModKind, Modifier};
 
@@ -59,6 +65,16 @@ const OWN_ALONG: [ModKind; 8] = [
     ModKind::Position,
     ModKind::AvoidCollisions,
 ];
+
+/// Whether `mods` move the actor sideways of their own (a lane change, a lateral position).
+fn moves_sideways(mods: &[Modifier]) -> bool {
+    mods.iter().any(|q| {
+        matches!(
+            q.kind,
+            ModKind::ChangeLane | ModKind::Lateral | ModKind::KeepLane
+        ) || (q.kind == ModKind::Lane && q.at == At::End)
+    })
+}
 
 /// Whether `m` relates the actor to another one along the road or by lane.
 pub(super) fn relation(m: &Modifier) -> bool {
@@ -136,6 +152,9 @@ impl Planner<'_> {
         let te = te.filter(|_| !self.engine_moved.contains_key(&x));
         match (t0, te) {
             (Some(t0), Some(te)) => {
+                if m.kind == ModKind::Lane && kind == Action::Move && !moves_sideways(mods) {
+                    self.follow_lanes(m, target, (&x, t0, te), name, out)?;
+                }
                 self.held_relations
                     .push((target.to_string(), m.clone(), t0, te));
             }
@@ -145,6 +164,47 @@ impl Planner<'_> {
                 out.push(self.checked(check, m, target, name("check")));
             }
             (None, _) => {}
+        }
+        Ok(())
+    }
+
+    /// `target`'s lane changes with x's within the phase from `t0` to `te` for `m`, a
+    /// `lane(…: x)` at: all of an actor with no sideways motion of its own (module doc): for
+    /// each lane change of x wholly in the phase, a sinusoidal LaneChangeAction over the same
+    /// span into the lane counted from x's new one, on the plan's track too.
+    fn follow_lanes(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        (x, t0, te): (&str, f64, f64),
+        name: &mut dyn FnMut(&str) -> String,
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let mut moves = self.track(x).moves_in(t0, te);
+        moves.sort_by(|a, b| a.0.total_cmp(&b.0));
+        for (m0, m1) in moves {
+            let tr = self.track(x);
+            if m0 < t0 || m1 > te + 1e-9 || tr.lane(m0) == tr.lane(m1) {
+                // Not wholly in the phase, or no lane change: the check's (an error).
+                continue;
+            }
+            let Some(lane) = self.lane_asked(m, target, m1)? else {
+                continue;
+            };
+            out.push(Planned {
+                entity: target.to_string(),
+                at: Some(When::At(m0)),
+                name: name("lane"),
+                action: PrivateAction::Lateral(LateralAction::LaneChange {
+                    target_lane_offset: None,
+                    dynamics: sinusoidal_over(m1 - m0),
+                    target: LaneChangeTarget::Absolute(lane.to_string()),
+                }),
+                site: m.site.clone(),
+            });
+            let tr = self.track_mut(target);
+            tr.set_lane(m1, lane);
+            tr.add_move(m0, m1);
         }
         Ok(())
     }

@@ -76,11 +76,12 @@ fn a_position_behind_another_alone_holds_the_actor_there_throughout() {
 }
 
 /// lane_same_as_fails.osc: npc changes into lane -1 over [1, 5] s and ego, lane(same_as: npc)
-/// at: all, does not: an error before the run at 5.00 s, where the plan has npc in lane -1.
+/// at: all beside keep_lane(), does not: an error before the run at 5.00 s, where the plan has
+/// npc in lane -1.
 #[test]
-fn a_lane_same_as_another_that_changes_lane_alone_is_an_error_before_the_run() {
+fn a_lane_same_as_another_that_changes_lane_while_the_actor_keeps_its_lane_is_an_error() {
     let want = "expected `ego` in lane -1 throughout the phase (lane(…) at: all, counted from `npc`'s lane -1 then), found it in lane -2 at 5.00 s at ";
-    refused("lane_same_as_fails", want, "23:17");
+    refused("lane_same_as_fails", want, "24:17");
 }
 
 /// lane_same_as_follows.osc: ego changes lane with npc, over the same 4 s: in npc's lane at
@@ -186,4 +187,24 @@ fn a_position_behind_a_projected_actor_alone_keeps_its_speed_of_the_start() {
         );
     }
     assert!((r.at(6.0, "lead").s - 210.2).abs() < S_TOL);
+}
+
+/// lane_same_as_followed.osc: npc changes into lane -1 over [1, 5] s and ego, lane(same_as:
+/// npc) at: all with no sideways motion of its own, follows it: y = -5.25 + 3.5·f at every step
+/// for both, f = (1 − cos(π·τ/4))/2, the same lane at every step (-2 before 3 s, -1 after).
+#[test]
+fn a_lane_same_as_another_that_changes_lane_is_followed() {
+    let r = run("held/lane_same_as_followed", 0, None);
+    let f = |t: f64| (1.0 - (std::f64::consts::PI * (t.clamp(1.0, 5.0) - 1.0) / 4.0).cos()) / 2.0;
+    for k in 0..=100 {
+        let t = k as f64 * DT;
+        let (ego, npc) = (r.at(t, "ego"), r.at(t, "npc"));
+        let want = -5.25 + 3.5 * f(t);
+        assert!((npc.y - want).abs() < S_TOL, "npc {t}: {npc:?}");
+        assert!((ego.y - want).abs() < S_TOL, "ego {t}: {ego:?}");
+        assert_eq!(ego.lane, npc.lane, "{t}: {ego:?} {npc:?}");
+        if (t - 3.0).abs() > DT / 2.0 {
+            assert_eq!(ego.lane, if t < 3.0 { -2 } else { -1 }, "{t}: {ego:?}");
+        }
+    }
 }
