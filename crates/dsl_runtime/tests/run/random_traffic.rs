@@ -835,7 +835,7 @@ fn relations_to_a_member_after_an_actors_first_phase_are_the_engines_run_time_fo
         // The checks below need the member on the road to 12 s (it stops at its end).
         assert!(r.at(12.0, m).s < 990.0, "seed {seed}: {:?}", r.at(12.0, m));
         // ego's first phase (0-4 s): placed 30 m behind the member as drawn, in its lane, at
-        // its speed then (a place at: all is the start's): s_e = s_m(0) - 30 + v_m(0)·t.
+        // its speed then (position(…, at: start): the start's place): s_e = s_m(0) - 30 + v_m(0)·t.
         for t in [0.0, 2.0, 4.0] {
             let e = r.at(t, "ego");
             let want = m0.s - 30.0 + m0.speed * t;
