@@ -266,19 +266,32 @@ impl Track {
         });
     }
 
-    /// From `t0` to `t1` the speed is `other`'s (an actor held at a distance from another,
-    /// `plan::held_relation`): a step to `other`'s speed at `t0`, then each of `other`'s
-    /// changes within the span, the last cut at `t1`, after which the speed it reached holds;
-    /// later planned changes are dropped. `Err(t)`: a sinusoidal change of `other`'s under way
-    /// at `t0` (its remainder is no change of this track's kinds), from `t`.
-    pub(crate) fn follow(&mut self, other: &Track, t0: f64, t1: f64) -> Result<(), f64> {
-        self.ramp(t0, t0, other.at(t0).1);
+    /// From `t0` to `t1` the speed is `other`'s plus `delta` (an actor held at a distance from
+    /// another, `plan::held_relation`, delta 0; a speed relative to another at: all,
+    /// `plan::speed_follow`): a step to `other`'s speed + `delta` at `t0`, then each of
+    /// `other`'s changes within the span (their targets + `delta`), the last cut at `t1`, after
+    /// which the speed it reached holds; later planned changes are dropped. `Err(t)`: a
+    /// sinusoidal change of `other`'s under way at `t0` (its remainder is no change of this
+    /// track's kinds), from `t`.
+    pub(crate) fn follow(
+        &mut self,
+        other: &Track,
+        (t0, t1): (f64, f64),
+        delta: f64,
+    ) -> Result<(), f64> {
+        self.ramp(t0, t0, other.at(t0).1 + delta);
         for r in other.stretches.iter().filter(|r| r.t1 > t0 && r.t0 < t1) {
             let shape = match r.shape {
+                // Targets are speeds (offset by delta); the others are changes of speed.
+                Shape::Linear { v1, span } if r.t0 >= t0 => Shape::Linear {
+                    v1: v1 + delta,
+                    span,
+                },
+                Shape::Step { v1 } if r.t0 >= t0 => Shape::Step { v1: v1 + delta },
                 _ if r.t0 >= t0 => r.shape,
                 // Under way at t0: its remainder from t0.
                 Shape::Linear { v1, span } => Shape::Linear {
-                    v1,
+                    v1: v1 + delta,
                     span: r.t0 + span - t0,
                 },
                 Shape::Poly { a0, jerk } => Shape::Poly {

@@ -251,7 +251,7 @@ impl Planner<'_> {
         } else if let Some((t0, te)) = span {
             let end = te.unwrap_or(f64::INFINITY);
             let xs = self.track(&x).clone();
-            self.track_mut(target).follow(&xs, t0, end).map_err(|t| {
+            self.track_mut(target).follow(&xs, (t0, end), 0.0).map_err(|t| {
                 m.site.err(
                     K::Unsatisfiable,
                     format!("expected `{x}`'s speed profile one `{target}` can take from {t0:.2} s (position(…) at: all), found a sinusoidal change of `{x}`'s under way then, from {t:.2} s"),

@@ -325,9 +325,19 @@ impl Planner<'_> {
                     ) => {}
                     (ModKind::Speed, At::Start | At::All) => {
                         let (v, relative) = self.speed_value(m, t0)?;
+                        // §8.9.1.1.1: at: all "holds throughout the phase": relative to x
+                        // (x's speed as it goes, not projected) the actor's speed is x's ± the
+                        // value at every step, in its first phase too (`speed_follow`).
+                        let held = relative.is_some()
+                            && m.at == At::All
+                            && !m.projected
+                            && crossing.is_none();
+                        if let Some((x, delta)) = relative.as_ref().filter(|_| held) {
+                            self.hold_speed(target, m, (x, *delta), t0, end)?;
+                        }
                         // A walk along a crossing is timed at this speed (`crossing_walk`): a
                         // SpeedAction beside its FollowTrajectoryAction would replace it.
-                        if first || crossing.is_some() {
+                        if (first && !held) || crossing.is_some() {
                             continue;
                         }
                         let target_speed = match relative {
@@ -347,10 +357,12 @@ impl Planner<'_> {
                             action: speed_action(DynamicsShape::Step, 0.0, target_speed),
                             site: m.site.clone(),
                         });
-                        if let Some(t) = t0 {
-                            self.track_mut(target).ramp(t, t, v);
+                        if !held {
+                            if let Some(t) = t0 {
+                                self.track_mut(target).ramp(t, t, v);
+                            }
+                            self.last_v.insert(target.clone(), v);
                         }
-                        self.last_v.insert(target.clone(), v);
                     }
                     (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
                         // Beside distance(d) without a duration after a run-time start: at

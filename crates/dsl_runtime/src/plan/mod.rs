@@ -60,6 +60,7 @@
 //! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
 //! | `path_part` | the part of a path an action follows between its offsets, and points along it with their times |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
+//! | `speed_follow` | `speed(…, faster_than/slower_than/same_as: x)` at: all: the actor's planned speed follows x's over the phase (the engine's continuous relative SpeedAction, in a first phase too) |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
 //! | `position_shape` | `position(…, at: end)` and `distance(…)` with a `common_position_shape`: the speed profile that covers the distance |
 //! | `shapes` | modifiers with a `shape:`, planned as the action whose dynamics the shape is |
@@ -153,6 +154,7 @@ mod schedule;
 mod shape_relative;
 mod shapes;
 mod speed_actions;
+mod speed_follow;
 mod trajectory_actions;
 mod types;
 

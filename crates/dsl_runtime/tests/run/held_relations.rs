@@ -208,3 +208,36 @@ fn a_lane_same_as_another_that_changes_lane_is_followed() {
         }
     }
 }
+
+/// speed_faster_than.osc: `speed(2mps, faster_than: lead)` at: all in ego's first phase is
+/// lead's speed + 2 at every step while lead accelerates (before, lead's at the start + 2,
+/// held), and the speed ego has where the phase ends (18 m/s) is the plan's for the next.
+#[test]
+fn a_speed_faster_than_another_in_a_first_phase_follows_its_speed_throughout() {
+    let r = run("held/speed_faster_than", 0, None);
+    for k in 0..=120 {
+        let t = k as f64 * DT;
+        let (ego, lead) = (r.at(t, "ego"), r.at(t, "lead"));
+        // v_l = 10 + t (lead's acceleration), v_e = v_l + 2.
+        assert!(
+            (lead.speed - (10.0 + t)).abs() < S_TOL,
+            "lead {t}: {lead:?}"
+        );
+        assert!(
+            (ego.speed - (lead.speed + 2.0)).abs() < S_TOL,
+            "ego {t}: {ego:?}"
+        );
+        // Both move a step at the step's end speed: the gap closes by 2 m/s, 50 - 2t.
+        assert!(
+            ((lead.s - ego.s) - (50.0 - 2.0 * t)).abs() < S_TOL,
+            "{t}: {ego:?} {lead:?}"
+        );
+    }
+    // 44 m at 3 s, 38 m at 6 s; then 18 m/s (lead's 16 + 2 at 6 s) with lead at 17 m/s at 7 s.
+    for (t, gap) in [(3.0, 44.0), (6.0, 38.0)] {
+        assert!(((r.at(t, "lead").s - r.at(t, "ego").s) - gap).abs() < S_TOL);
+    }
+    let ego7 = r.at(7.0, "ego");
+    assert!((ego7.speed - 18.0).abs() < S_TOL, "{ego7:?}");
+    assert!((r.at(7.0, "lead").speed - 17.0).abs() < S_TOL);
+}

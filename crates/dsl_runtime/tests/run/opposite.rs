@@ -79,14 +79,27 @@ fn an_oncoming_actor_drives_its_lane_against_s_measured_along_its_direction_of_t
         (at6.x - (800.0 - ramp_lead(-2.5, 4.0))).abs() < S_TOL,
         "{at6:?}"
     );
-    // truck: 30 m behind npc along their direction of travel, at npc's 20 m/s.
+    // truck: 30 m behind npc along their direction of travel, at npc's speed at every step
+    // (speed(same_as: npc) at: all) as the engine reads it at the step's start (npc's of the
+    // step before: truck moves first). Each moves a step at its step's end speed, so the sums
+    // telescope: x_truck − x_npc = 30 − (20 − v_npc(t))·dt, 29.5 m at 6 s, x = 829.75 m.
     let truck = r.at(0.0, "truck");
     assert_eq!(truck.lane, 1);
     assert!(
         (truck.x - 930.0).abs() < S_TOL && (truck.speed - 20.0).abs() < S_TOL,
         "{truck:?}"
     );
-    assert!((r.at(6.0, "truck").x - 810.0).abs() < S_TOL);
+    for k in 1..=120 {
+        let t = k as f64 * DT;
+        let (tr, n) = (r.at(t, "truck"), r.at(t, "npc"));
+        let gap = 30.0 - (20.0 - n.speed) * DT;
+        assert!(
+            (tr.x - (n.x + gap)).abs() < S_TOL
+                && (tr.speed - r.at(t - DT, "npc").speed).abs() < S_TOL,
+            "at {t} s: {tr:?} {n:?}"
+        );
+    }
+    assert!((r.at(6.0, "truck").x - 829.75).abs() < S_TOL);
     // distance(50m) at 10 m/s: 5 s.
     let (s, e) = r.phase("do.2.2");
     assert!(

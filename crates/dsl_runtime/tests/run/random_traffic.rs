@@ -945,6 +945,28 @@ fn random_traffic_kept_to_a_lane_after_its_creation_changes_there_and_stays() {
     assert!(moved >= 4, "{moved} of 16 members changed lanes");
 }
 
+/// How far behind its member an actor whose speed is the member's at: all (§8.9.1.1.1: it
+/// holds throughout the phase) is at `t`, along their direction of travel: the engine reads
+/// the member's speed at the step's start (the step before's: the member moves after the
+/// actor) and moves the actor a step at that speed, while the member's model moves it a step
+/// at the mean of its speeds at the step's start and end (the IDM's ballistic update, x += v·dt
+/// + a·dt²/2), so the sums of their steps telescope to (v_m(t) − v_m(0))·dt/2.
+fn member_lag(r: &crate::support::Run, member: &str, t: f64) -> f64 {
+    (r.at(t, member).speed - r.at(0.0, member).speed) * DT / 2.0
+}
+
+/// `actor`'s speed at every step after the start is `member`'s as the engine read it at that
+/// step's start (the step before's), within 1e-9 m/s (speed(same_as: member) at: all).
+fn speed_follows_member(r: &crate::support::Run, actor: &str, member: &str, seed: u64) {
+    for (t, _) in r.frames.iter().filter(|(t, _)| *t > DT / 2.0) {
+        let (a, m) = (r.at(*t, actor).speed, r.at(t - DT, member).speed);
+        assert!(
+            (a - m).abs() < 1e-9,
+            "seed {seed} at {t}: {actor} {a} m/s, {member} {m} m/s a step before"
+        );
+    }
+}
+
 #[test]
 fn an_actor_placed_from_a_member_of_either_direction_drives_its_way() {
     // random_traffic_relative_both.osc, worked in the file; seeds 0-7 (g.vehicles[0] drawn
@@ -976,23 +998,30 @@ fn an_actor_placed_from_a_member_of_either_direction_drives_its_way() {
             ((m.x - e.x) * dir - 20.0).abs() < 1e-6,
             "seed {seed}: {e:?} {m:?}"
         );
+        speed_follows_member(&r, "ego", "g.vehicles[0]", seed);
+        // The member's model may steer it into a lane change (MOBIL): then its x advances
+        // v·cos(h)·dt a step, short of its speed by v·(1 − cos h)·dt, summed here.
+        let mut sideways = 0.0;
         for (t, objs) in &r.frames {
             let o = objs
                 .iter()
                 .find(|o| o.name == "ego")
                 .expect("ego in every frame");
-            let want = e.x + dir * m.speed * t;
+            let mt = r.at(*t, "g.vehicles[0]");
+            sideways += mt.speed * (1.0 - (mt.h - m.h).cos()) * DT;
+            let lag = member_lag(&r, "g.vehicles[0]", *t);
             assert!(
-                (o.x - want).abs() < 1e-6 && o.lane == m.lane,
-                "seed {seed} at {t}: {o:?}"
+                ((mt.x - o.x) * dir - 20.0 - lag).abs() < 1e-6 + sideways && o.lane == m.lane,
+                "seed {seed} at {t}: {o:?} {mt:?}"
             );
-            // car, placed from ego, takes its direction in turn: 10 m behind it.
+            // car, placed from ego, takes its direction in turn: 10 m behind it, at its
+            // speed at every step (car moves after ego in the step: ego's speed of that step).
             let c = objs
                 .iter()
                 .find(|o| o.name == "car")
                 .expect("car in every frame");
             assert!(
-                (c.x - (want - dir * 10.0)).abs() < 1e-6
+                (c.x - (o.x - dir * 10.0)).abs() < 1e-6
                     && c.lane == m.lane
                     && (c.h - m.h).abs() < 1e-9,
                 "seed {seed} at {t}: {c:?}"
@@ -1041,12 +1070,13 @@ fn an_actor_placed_beside_a_member_of_random_traffic_reads_the_drawn_member() {
         let r = run("random_traffic_beside_member", seed, None);
         let m = r.at(0.0, "g.vehicles[0]").clone();
         assert_eq!(m.lane, -2, "seed {seed}");
+        speed_follows_member(&r, "ego", "g.vehicles[0]", seed);
         for (t, objs) in &r.frames {
             let e = objs
                 .iter()
                 .find(|o| o.name == "ego")
                 .expect("ego in every frame");
-            let x = m.s + m.speed * t;
+            let x = r.at(*t, "g.vehicles[0]").x - member_lag(&r, "g.vehicles[0]", *t);
             assert!(
                 (e.x - x).abs() < 1e-6 && (e.y + 1.75).abs() < 1e-9 && e.lane == -1,
                 "seed {seed} at {t}: {e:?}, x {x}"
