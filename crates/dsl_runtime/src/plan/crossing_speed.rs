@@ -20,13 +20,14 @@
 
 use scenario::FollowingMode;
 
-use super::crossing_walk::{point_at, CrossingPoint};
+use super::crossing_beside::{CrossingLine, Walk};
+use super::crossing_walk::point_at;
 use super::path_shape::along as trajectory;
 use super::planner::Planner;
 use super::speed_actions::Slot;
 use super::types::{Planned, When};
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{Along, Invoke, Phase};
+use crate::resolve::{Invoke, Phase};
 
 /// How far past the line's end (m) the planned distance may reach at the phase's end: float
 /// round-off of the speed's integral.
@@ -43,22 +44,12 @@ impl Planner<'_> {
     pub(super) fn speed_along_crossing(
         &mut self,
         p: &Phase,
-        (inv, field, along): (&Invoke, &str, &Along),
-        (start, end): (CrossingPoint, CrossingPoint),
+        (inv, field): (&Invoke, &str),
+        walk: &Walk<'_>,
         slot: Slot<'_>,
         name: &mut dyn FnMut(&str) -> String,
     ) -> Result<Option<When>, Error> {
-        let (target, len) = (slot.target, slot.len);
-        // The caller plans a crossing at a start the plan knows only.
-        let Some(t) = slot.t0 else {
-            return Ok(None);
-        };
-        let ends = [start, end].map(|(_, s, w)| self.road.world_pose(s, w));
-        // Both ends lie on a road of the plan (`map_lanes` binds crossings there).
-        let [Some((x0, y0, _)), Some((x1, y1, _))] = ends else {
-            return Ok(None);
-        };
-        let length = (x1 - x0).hypot(y1 - y0);
+        let (target, len, t, along) = (slot.target, slot.len, walk.t, walk.along);
         let again = Slot {
             out: &mut *slot.out,
             persist: &mut *slot.persist,
@@ -67,7 +58,7 @@ impl Planner<'_> {
         let own_end = self.plan_speed_action(p, inv, again, name)?;
         let s_start = self.track(target).at(t).0;
         let walked = |planner: &Self, span: f64| planner.track(target).at(t + span).0 - s_start;
-        let reaches = |planner: &Self| -> Option<f64> {
+        let reaches = |planner: &Self, length: f64| -> Option<f64> {
             let mut hi = 1.0;
             while walked(planner, hi) < length {
                 hi *= 2.0;
@@ -86,22 +77,33 @@ impl Planner<'_> {
             }
             Some(b)
         };
-        let (span, phase_end) = match (&own_end, len) {
-            (Some(When::At(te)), _) => (te - t, own_end.clone()),
-            (_, Some(l)) => (l, None),
-            _ => {
-                let Some(span) = reaches(self) else {
-                    return Err(along.site.err(
-                        K::Unsatisfiable,
-                        format!("expected `{target}` to reach the end of crossing `{field}` under {}(), its phase's only end, found it stopping short of it within {REACH_HORIZON} s", inv.action),
-                    ));
-                };
-                (span, Some(When::At(t + span)))
-            }
+        let own = match (&own_end, len) {
+            (Some(When::At(te)), _) => Some(te - t),
+            (_, Some(l)) => Some(l),
+            _ => None,
         };
+        let settled = self.settle_walk(walk, target, &|pl, length| {
+            own.or_else(|| reaches(pl, length))
+        })?;
+        let Some((span, (start, end))) = settled else {
+            return Err(along.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` to reach the end of crossing `{field}` under {}(), its phase's only end, found it stopping short of it within {REACH_HORIZON} s", inv.action),
+            ));
+        };
+        let phase_end = match own {
+            Some(_) => own_end,
+            None => Some(When::At(t + span)),
+        };
+        let ends = [start, end].map(|(_, s, w)| self.road.world_pose(s, w));
+        // Both ends lie on a road of the plan (`map_lanes` binds crossings there).
+        let [Some((x0, y0, _)), Some((x1, y1, _))] = ends else {
+            return Ok(None);
+        };
+        let length = (x1 - x0).hypot(y1 - y0);
         let d = walked(self, span);
         if d > length + LINE_END_TOLERANCE {
-            let at = reaches(self).map_or(f64::NAN, |r| t + r);
+            let at = reaches(self, length).map_or(f64::NAN, |r| t + r);
             return Err(along.site.err(
                 K::Unsatisfiable,
                 format!("expected `{target}` on crossing `{field}` until its phase ends at {:.2} s, found it at the crossing's end ({length:.2} m along its line) at {at:.2} s under {}() (give the phase an end by then, or go on in a phase along another route)", t + span, inv.action),
@@ -124,9 +126,15 @@ impl Planner<'_> {
             start.1 + f * (end.1 - start.1),
             start.2 + f * (end.2 - start.2),
         );
-        let (lane, s, w) = point_at(&self.road, field, (s, w), along)?;
+        let reached = point_at(&self.road, field, (s, w), along)?;
+        let (lane, s, w) = reached;
         let offset = w - self.road.lane_center(lane, s);
         self.arrive(target, t, span, (lane, s, offset));
+        let line = CrossingLine {
+            uniform: false,
+            ..CrossingLine::new(target, (t, t + span), start, reached)
+        };
+        self.crossing_lines.push(line);
         Ok(phase_end)
     }
 }

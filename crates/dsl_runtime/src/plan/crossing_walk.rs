@@ -21,14 +21,14 @@
 //! times the walk; no SpeedAction runs beside it (it would replace the walk's action). An
 //! action on the speed or acceleration along a crossing follows the line at the action's
 //! speed (`crossing_speed`); another action along one, whose path is its own (a lane change,
-//! a trajectory), is an error at `along`; `lateral(…)` beside another actor (§8.9 relates
-//! the actor to that one, the walk to the crossing: two lines at once) an error at the
-//! modifier. The plan has the walker at the part's end from the end on (its lane, s and
+//! a trajectory), is an error at `along`; `lateral(…)` beside another actor is measured
+//! across the crossing's line from x's place (`crossing_beside`). The plan has the walker at the part's end from the end on (its lane, s and
 //! offset there); in between it keeps the walker's track along its lane (as for
 //! `follow_trajectory`), since the engine moves it.
 
 use scenario::FollowingMode;
 
+use super::crossing_beside::{beside_of, CrossingLine, Walk};
 use super::lateral;
 use super::map_crossings::{extent, MapCrossing};
 use super::path_shape::along as trajectory;
@@ -87,8 +87,19 @@ impl Planner<'_> {
                 format!("expected a phase start the plan knows for a walk along crossing `{field}`, found one after a run-time condition"),
             ));
         };
-        let shift = crossing_shift(&self.road, &c, &mods.iter().collect::<Vec<_>>(), width)?;
-        let ((lane0, s0, w0), (lane1, s1, w1)) = walked_part(&self.road, &c, along, shift)?;
+        let mut shift = crossing_shift(&self.road, &c, &mods.iter().collect::<Vec<_>>(), width)?;
+        // Beside another actor: across the crossing's line from x's place (`crossing_beside`).
+        let beside = beside_of(mods)?;
+        let mut start_across = None;
+        if let Some((m, r)) = beside.filter(|(m, _)| m.at != At::End) {
+            let a = self.beside_across(&c, m, r, target, t)?;
+            (shift, start_across) = ((a, a), Some(a));
+        }
+        let fixed = walked_part(&self.road, &c, along, shift)?;
+        let (lane0, s0, w0) = fixed.0;
+        if slot.first && beside.is_some() {
+            self.place_on_crossing(target, fixed.0);
+        }
         let (lane, s, w) = (
             self.track(target).lane(t),
             self.s_at(target, t),
@@ -108,9 +119,16 @@ impl Planner<'_> {
                 format!("expected `{target}` at {part} of crossing `{field}` ({}: lane {lane0} at s = {s0:.2} m, t = {w0:.2} m) when its walk starts, found it in lane {lane} at s = {s:.2} m, t = {w:.2} m", c.why),
             ));
         }
+        let walk = Walk {
+            c: &c,
+            along,
+            beside,
+            fixed,
+            t,
+            start_across,
+        };
         if speed_action {
-            let part = ((lane0, s0, w0), (lane1, s1, w1));
-            return self.speed_along_crossing(p, (inv, field, along), part, slot, name);
+            return self.speed_along_crossing(p, (inv, field), &walk, slot, name);
         }
         let Slot { out, .. } = slot;
         let v = match mods
@@ -126,16 +144,20 @@ impl Planner<'_> {
                 format!("expected `{target}` walking at the start of its walk along crossing `{field}` (speed(…) in the phase), found it standing"),
             ));
         }
+        // Both ends lie on a road of the plan (`map_lanes` binds crossings there).
+        let Some((span, part)) = self.settle_walk(&walk, target, &|_, length| Some(length / v))?
+        else {
+            return Ok(None);
+        };
+        let ((_, s0, w0), (lane1, s1, w1)) = part;
         let ends = self
             .road
             .world_pose(s0, w0)
             .zip(self.road.world_pose(s1, w1));
-        // Both ends lie on a road of the plan (`map_lanes` binds crossings there).
         let Some(((x0, y0, _), (x1, y1, _))) = ends else {
             return Ok(None);
         };
         let h = (y1 - y0).atan2(x1 - x0);
-        let span = (x1 - x0).hypot(y1 - y0) / v;
         let n = name("crossing");
         let action = trajectory(
             &n,
@@ -148,6 +170,8 @@ impl Planner<'_> {
         out.push(Planned::with_phase(target, n.clone(), action, &p.site));
         let offset = w1 - self.road.lane_center(lane1, s1);
         self.arrive(target, t, span, (lane1, s1, offset));
+        let line = CrossingLine::new(target, (t, t + span), part.0, part.1);
+        self.crossing_lines.push(line);
         Ok(Some(self.ends(t0, span, &n, p)))
     }
 }
@@ -256,7 +280,8 @@ fn borders(road: &PlanRoad<'_>, c: &MapCrossing) -> Option<(f64, f64)> {
 /// crossing is, §8.12.2.2.9); another measure from the crossing's borders, as in a lane from
 /// the lane's (`lateral::lane_offset`, the crosswalk's extent across the line its width). At:
 /// start or all the walk keeps that line; at: end it starts on the crossing's line and ends
-/// there (the shift at the start 0). Beside another actor: an error at the modifier.
+/// there (the shift at the start 0). Beside another actor: (0, 0), the line itself, which
+/// `crossing_beside` moves once the plan reads x.
 pub(super) fn crossing_shift(
     road: &PlanRoad<'_>,
     c: &MapCrossing,
@@ -268,10 +293,8 @@ pub(super) fn crossing_shift(
     };
     let field = &c.field;
     if lateral::reference(m)?.is_some() {
-        return Err(m.site.err(
-            K::Unsupported,
-            format!("expected lateral(…) measured across crossing `{field}` beside a walk along it (the walker's place on the crossing), found a position beside another actor"),
-        ));
+        // Beside another actor: on the line until the plan reads x (`crossing_beside`).
+        return Ok((0.0, 0.0));
     }
     let measure = match m.arg("measure_by").map(Arg::eval).transpose()? {
         None => None,

@@ -86,6 +86,7 @@
 //! | `lateral_follow` | `lateral(…)` at: all beside another actor that moves sideways: the engine follows it |
 //! | `lateral_end` | `lateral(…, at: end)` beside another actor: a lateral target where the plan has it at the phase end |
 //! | `crossing_walk` | `walk()` along a crossing the map bound: a person across the crosswalk |
+//! | `crossing_beside` | `lateral(…)` beside another actor beside a walk along a crossing: across the crossing's line from x's place |
 //! | `crossing_speed` | an action on the speed or acceleration along a crossing: its line the path, the action's speed along it |
 //! | `random_traffic` | a `random_traffic_vehicle_group`'s drive: members placed from the seed over the driving lanes, each driven by the engine's `mobil` model |
 //! | `route_moves` | the lane (offset) changes between the points of a route in other lanes or at other offsets |
@@ -110,6 +111,7 @@ mod action_args;
 mod against;
 mod car_following;
 mod checks;
+mod crossing_beside;
 mod crossing_speed;
 mod crossing_walk;
 mod events;
@@ -199,6 +201,7 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         lane_roads: HashMap::new(),
         route_roads: HashMap::new(),
         crossings: HashMap::new(),
+        crossing_lines: Vec::new(),
         sides: RefCell::new(HashMap::new()),
         beside_checks: Vec::new(),
         beside_follows: Vec::new(),
@@ -391,6 +394,17 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         if let Some((lane, s, t)) = crossing_start {
             crossing_offsets.insert(e.name.clone(), (lane, s, t - road.lane_center(lane, s)));
         }
+        // Beside another actor across a crossing: not beside it in a lane (`crossing_beside`
+        // moves the walker once x is placed).
+        let mods: Vec<&Modifier> = if crossing_start.is_some() {
+            mods.into_iter()
+                .filter(|m| {
+                    m.kind != ModKind::Lateral || !matches!(lateral::reference(m), Ok(Some(_)))
+                })
+                .collect()
+        } else {
+            mods
+        };
         // A named route of the first phase places the actor at its start; a lane driven in
         // −s (right-hand traffic: a positive id) puts the actor against s, at the distance u
         // = L − s along its direction of travel (`crate::road`), from where its lane starts in

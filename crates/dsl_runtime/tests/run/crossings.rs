@@ -25,6 +25,20 @@ fn at(r: &crate::support::Run, who: &str, t: f64, x: f64, y: f64) {
     );
 }
 
+/// `who` at `t` between steps: the line is straight, so the place is interpolated from the
+/// two steps around it (the engine's pose at each is on the line).
+fn between(r: &crate::support::Run, who: &str, t: f64, (x, y): (f64, f64)) {
+    let dt = crate::support::DT;
+    let (t0, t1) = ((t / dt).floor() * dt, (t / dt).ceil() * dt);
+    let (p0, p1) = (r.at(t0, who), r.at(t1, who));
+    let f = (t - t0) / (t1 - t0);
+    let (gx, gy) = (p0.x + f * (p1.x - p0.x), p0.y + f * (p1.y - p0.y));
+    assert!(
+        (gx - x).abs() < XY_TOL && (gy - y).abs() < XY_TOL,
+        "{who} at {t} s: ({gx}, {gy}), expected ({x}, {y})"
+    );
+}
+
 #[test]
 fn an_animal_and_a_vehicle_cross_the_road_on_crossings() {
     let r = run_on("crossing_others", "crosswalk");
@@ -52,17 +66,7 @@ fn a_walker_ends_beside_a_crossing_or_keeps_a_distance_from_its_border() {
     let r = run_on("crossing_lateral", "crosswalk");
     let (len, v) = (3.5f64.hypot(0.5), 0.5);
     at(&r, "alice", 0.0, 100.0, -1.75);
-    let half = len / v / 2.0;
-    // Between steps: the line is straight, so the mid-point is interpolated from the two
-    // steps around it (the engine's pose at each is on the line).
-    let (t0, t1) = ((half / 0.05).floor() * 0.05, (half / 0.05).ceil() * 0.05);
-    let (p0, p1) = (r.at(t0, "alice"), r.at(t1, "alice"));
-    let f = (half - t0) / (t1 - t0);
-    let (x, y) = (p0.x + f * (p1.x - p0.x), p0.y + f * (p1.y - p0.y));
-    assert!(
-        (x - 99.75).abs() < XY_TOL && y.abs() < XY_TOL,
-        "alice half way: ({x}, {y})"
-    );
+    between(&r, "alice", len / v / 2.0, (99.75, 0.0));
     assert_eq!(r.at(7.0, "alice").lane, 1);
     // At 7 s, t/T of the way from (100, -1.75) to (99.5, 1.75), T = 7.071068 s (after T she
     // walks on at her speed until the phase's end at the step 7.1 s).
@@ -115,12 +119,31 @@ fn actions_on_the_speed_along_a_crossing_move_along_its_line_at_their_speed() {
     assert_eq!(r.at(4.25, "bob").lane, -1);
 }
 
+/// crossing_beside.osc's comment, by hand: beside alice across the crossings' lines.
+#[test]
+fn a_walker_beside_another_is_beside_its_place_across_the_crossing() {
+    let r = run_on("crossing_beside", "crosswalk");
+    for (t, y) in [(0.0, -1.75), (3.5, 0.0), (7.0, 1.75)] {
+        at(&r, "alice", t, 100.0, y);
+        at(&r, "bob", t, 98.5, y);
+    }
+    assert_eq!(r.at(7.0, "bob").lane, 1);
+    let len = 3.5f64.hypot(0.25);
+    at(&r, "dan", 0.0, 99.0, 1.75);
+    between(&r, "dan", len / 2.0, (99.125, 0.0));
+    let (_, e) = r.phase("do.three");
+    assert!((e - 3.55).abs() < T_TOL, "three ends at {e}");
+    // At 3.5 s, 3.5/len of the way from (99, 1.75) to (99.25, -1.75).
+    let f = 3.5 / len;
+    at(&r, "dan", 3.5, 99.0 + 0.25 * f, 1.75 - 3.5 * f);
+}
+
 #[test]
 fn what_a_crossing_does_not_run_is_an_error_at_its_place() {
     refused(
         "err_crossing_lateral_beside",
-        "expected lateral(…) measured across crossing `c` beside a walk along it (the walker's place on the crossing), found a position beside another actor",
-        "17:13",
+        "expected `alice`'s place across crossing `c` beside `npc` the same at its walk's end, 7.00 s, as at its start (at: all)",
+        "21:13",
     );
     refused(
         "err_crossing_speed_action",
