@@ -113,6 +113,8 @@ impl Planner<'_> {
                     of: None,
                     within: len,
                 })),
+                transition: None,
+                ends_at_target: false,
             },
         )))
     }
@@ -147,6 +149,8 @@ impl Planner<'_> {
                 value: delta,
                 continuous: m.at != At::Start && !m.projected,
                 to_speed: None,
+                transition: None,
+                ends_at_target: false,
             }),
             &m.site,
         ));

@@ -21,7 +21,10 @@
 //! engine's lane change with the shape's dynamics to the lane and offset beside x where x is as
 //! it starts (`LaneChangeTarget::Beside`); with `track: actual` an error (the engine's move
 //! beside a moving x is sinusoidal over the phase). An acceleration shape relative to x there
-//! is an error (the engine's acceleration change has a fixed target).
+//! is oscsim's RelativeAccelerationAction with the shape's dynamics as its transition, to x's
+//! acceleration ± the value as the engine reads it (actual: over each step, followed;
+//! projected: over the first step, fixed); after a change at a rate, the held acceleration is
+//! x's ± the value followed (actual) or the one reached, kept (projected).
 //! After a run-time start a speed shape is the engine's SpeedAction with the shape's dynamics
 //! to x's speed ± the value as the engine reads it: actual, a RelativeTargetSpeed read at each
 //! step (not continuous: the change ends where it meets it); projected, oscsim's
@@ -105,12 +108,6 @@ impl Planner<'_> {
         let x = self.entity_of(e)?;
         let delta = sign * own;
         let Some(t) = t0 else {
-            if kind == ShapeKind::Acceleration {
-                return Err(e.site.err(
-                    K::Unsupported,
-                    format!("expected a phase start the plan knows for `{}(…)` with a shape relative to `{x}`, found one after a run-time condition (the engine's acceleration change has a fixed target, and `{x}`'s acceleration then is not the plan's)", m.name),
-                ));
-            }
             return Ok(Some(Reference {
                 x,
                 delta,
@@ -192,8 +189,11 @@ impl Planner<'_> {
     }
 
     /// After a run-time start, the planned speed change of a shaped `speed(…)` relative to x
-    /// (`out[from..]`) aims at x's speed ± the value as the engine reads it (module doc).
+    /// (`out[from..]`) aims at x's speed ± the value as the engine reads it, and the planned
+    /// acceleration change of a shaped `acceleration(…)` at x's acceleration ± the value
+    /// (module doc).
     pub(super) fn retarget_at_run_time(m: &Modifier, r: &Reference, out: &mut [Planned]) {
+        Self::reaccelerate_at_run_time(m, r, out);
         let to = if m.projected {
             SpeedTarget::RelativeAtStart {
                 entity_ref: r.x.clone(),
@@ -219,6 +219,44 @@ impl Planner<'_> {
                 }
                 _ => {}
             }
+        }
+    }
+
+    /// After a run-time start, the planned `change_acceleration` of a shaped `acceleration(…)`
+    /// relative to x (`out`): its change (the transition, over a duration or at a rate) is
+    /// oscsim's RelativeAccelerationAction with that transition to x's acceleration ± the
+    /// value (actual: followed in every step; projected: as over the first step, fixed), and
+    /// the acceleration held after a change at a rate (the step started when it ends) follows
+    /// x's ± the value (actual) or keeps the one reached (projected).
+    fn reaccelerate_at_run_time(m: &Modifier, r: &Reference, out: &mut [Planned]) {
+        for p in out {
+            let PrivateAction::Longitudinal(LongitudinalAction::Acceleration {
+                target,
+                dynamics,
+                ends_at_target,
+            }) = &mut p.action
+            else {
+                continue;
+            };
+            let (transition, ends) = match (p.at.is_some(), m.projected) {
+                // The hold after a change at a rate: the acceleration the change reached,
+                // kept (the engine hands it on).
+                (true, true) => {
+                    *target = None;
+                    continue;
+                }
+                // x's acceleration ± the value, followed from the hold's start.
+                (true, false) => (None, false),
+                (false, _) => (Some(*dynamics), *ends_at_target),
+            };
+            p.action = PrivateAction::Longitudinal(LongitudinalAction::RelativeAcceleration {
+                entity_ref: r.x.clone(),
+                value: r.delta,
+                continuous: !m.projected,
+                to_speed: None,
+                transition,
+                ends_at_target: ends,
+            });
         }
     }
 

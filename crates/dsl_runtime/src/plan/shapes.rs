@@ -141,10 +141,16 @@ impl Planner<'_> {
                     self.shape_reference(m, shape.kind, (slot.t0, slot.len), target.number()?)?;
                 let target = match &reference {
                     Some(r) if r.read_at.is_some() => num(r.value + r.delta),
-                    // After a run-time start the engine reads x: the plan's speed of x where it
-                    // last knows it stands in for the checks of the arguments.
-                    Some(r) => {
+                    // After a run-time start the engine reads x: the plan's speed (or
+                    // acceleration) of x where it last knows it stands in for the checks of
+                    // the arguments.
+                    Some(r) if shape.kind == ShapeKind::Speed => {
                         num((self.last_v[&r.x] + r.delta).clamp(0.0, super::types::MAX_SPEED))
+                    }
+                    Some(r) => {
+                        let a = self.track(&r.x).acceleration(self.last_known()) + r.delta;
+                        let max = super::types::MAX_ACCELERATION;
+                        num(a.clamp(-max, max))
                     }
                     None => target,
                 };

@@ -62,6 +62,27 @@ fn a_projected_acceleration_relative_to_another_after_an_until_is_its_accelerati
     speeds(&r, "lead", &want);
 }
 
+/// runtime_acceleration_shape.osc's comment, by hand: after the until at 3.35 s, the shape's
+/// 1 m/s³ change from 0 to lead's −2 m/s² + 1, then lead's + 1 followed (ego) or −1 held
+/// (tail).
+#[test]
+fn a_shaped_acceleration_relative_to_another_after_an_until_reaches_xs_at_the_shapes_rate() {
+    let r = run("relative/runtime_acceleration_shape", 0, None);
+    crate::runtime::phases(&r, &[("do.follow", 3.35, 7.35)]);
+    for (t, ego, tail, lead) in [
+        (3.35, 20.0, 20.0, 8.0),
+        (3.85, 19.875, 19.875, 7.0),
+        (4.35, 19.5, 19.5, 6.0),
+        (5.35, 18.5, 18.5, 4.0),
+        (6.35, 19.5, 17.5, 4.0),
+        (7.35, 20.5, 16.5, 4.0),
+    ] {
+        close(r.at(t, "ego").speed, ego, V_TOL, &format!("ego v({t})"));
+        close(r.at(t, "tail").speed, tail, V_TOL, &format!("tail v({t})"));
+        close(r.at(t, "lead").speed, lead, V_TOL, &format!("lead v({t})"));
+    }
+}
+
 /// Lateral positions: float round-off on the straight road.
 const Y_TOL: f64 = 1e-6;
 

@@ -115,6 +115,11 @@ pub(crate) struct ActionTable {
     lateral_held: Vec<EntityId>,
     /// The buffer `order_domains` fills next (kept: the stage allocates nothing once grown).
     lateral_held_next: Vec<EntityId>,
+    /// The transitions of RelativeAccelerationActions that completed at their target in the
+    /// last stage 2: actor, time (the step's end) and the acceleration reached, which an
+    /// AccelerationAction keeping the acceleration and started next starts from
+    /// (relative_acceleration.rs).
+    reached: Vec<(EntityId, f64, f64)>,
 }
 
 impl ActionTable {
@@ -144,6 +149,7 @@ impl ActionTable {
     /// step (their names and errors), which stop the run.
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) -> Vec<(String, Error)> {
         let mut failures = Vec::new();
+        self.reached.clear();
         self.note_start_speeds(world);
         self.synchronize_along_trajectories();
         let mut live = std::mem::take(&mut self.live);
@@ -162,7 +168,8 @@ impl ActionTable {
                         matches!(part, Part::RelativeAcceleration(_) | Part::LateralFollow(_));
                     deferred |= relative;
                     if relative == following {
-                        if let Some(e) = step_part(world, actor, id, part, now, dt) {
+                        let reached = &mut self.reached;
+                        if let Some(e) = step_part(world, (actor, id), part, (now, dt), reached) {
                             failures.push((slot.name.clone(), e));
                         }
                     }
@@ -253,14 +260,14 @@ fn lateral_goes_first(e: &Entity) -> bool {
 }
 
 /// Advances `part` of action `id` on `actor` by one step from `now` over `dt`; a part that
-/// stops running frees the actor's domain and becomes `Done`. Returns why it failed, if it did.
+/// stops running frees the actor's domain and becomes `Done` (a RelativeAccelerationAction's
+/// transition that reached its target noted in `reached`). Returns why it failed, if it did.
 fn step_part(
     world: &mut World,
-    actor: EntityId,
-    id: ActionId,
+    (actor, id): (EntityId, ActionId),
     part: &mut Part,
-    now: f64,
-    dt: f64,
+    (now, dt): (f64, f64),
+    reached: &mut Vec<(EntityId, f64, f64)>,
 ) -> Option<Error> {
     let next = match part {
         Part::Done(_) => return None,
@@ -281,7 +288,10 @@ fn step_part(
         return None;
     }
     let failure = match part {
-        Part::RelativeAcceleration(s) => s.failure.take(),
+        Part::RelativeAcceleration(s) => {
+            reached.extend(s.reached().map(|(at, a)| (actor, at, a)));
+            s.failure.take()
+        }
         Part::Held(s) => s.failure.take(),
         _ => None,
     };
@@ -421,6 +431,16 @@ impl Host<'_> {
             })
     }
 
+    /// The acceleration a RelativeAccelerationAction's transition to its target reached for
+    /// `actor` at the end of the last step, if one completed then (a hold starts from it).
+    fn transition_reached(&self, actor: EntityId) -> Option<f64> {
+        self.table
+            .reached
+            .iter()
+            .find(|(a, at, _)| *a == actor && (at - self.time).abs() <= crate::tolerance::TIME)
+            .map(|r| r.2)
+    }
+
     /// Stops the action running in `domain` of `actor`, if any, and frees the domain.
     fn stop_domain(&mut self, actor: EntityId, domain: Domain) {
         stop_domain(self.table, self.world, actor, domain);
@@ -472,7 +492,9 @@ impl Host<'_> {
             }
             PrivateAction::Longitudinal(l) => {
                 let replaced = match l {
-                    LongitudinalAction::Acceleration { .. } => self.acceleration_started_now(actor),
+                    LongitudinalAction::Acceleration { .. } => self
+                        .acceleration_started_now(actor)
+                        .or_else(|| self.transition_reached(actor)),
                     _ => None,
                 };
                 self.claim(actor, Domain::Longitudinal, id);
@@ -502,13 +524,15 @@ impl Host<'_> {
                         value,
                         continuous,
                         to_speed,
+                        transition,
+                        ends_at_target,
                     } => relative_acceleration::start(
                         self.world,
                         actor,
                         entity_ref,
                         (*value, *continuous, to_speed.as_deref()),
-                        time,
-                        pos,
+                        (transition.as_ref(), *ends_at_target),
+                        (time, pos),
                     ),
                     LongitudinalAction::Travel(travel) => {
                         travel::start(self.world, actor, travel, time, pos)
@@ -907,6 +931,7 @@ pub(crate) fn status(table: &ActionTable, id: ActionId, step_end: f64) -> Action
         let finishing = match part {
             Part::Speed(s) => s.completes_by(step_end),
             Part::Acceleration(s) => s.completes_by(step_end),
+            Part::RelativeAcceleration(s) => s.completes_by(step_end),
             Part::Profile(s) => s.completes_by(step_end),
             Part::Lateral(s) => s.completes_by(step_end),
             Part::LateralFollow(s) => s.completes_by(step_end),

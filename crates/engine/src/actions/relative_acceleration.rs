@@ -18,6 +18,18 @@
 //! 0 m/s while pushing below it, or at the maximum speed while pushing above, and otherwise
 //! runs until a later longitudinal action replaces it or its Act ends.
 //!
+//! With `transition` (DSL 2.1 §8.9.1.1.4 `acceleration(…, shape: s)` relative to x, the
+//! shape's `change_acceleration` dynamics, after a run-time start) the acceleration goes from
+//! a₀, the actor's at the start, to the target a_t = a_x + value under the transition's shape
+//! f over its span T (a rate: T = |a_t − a₀|·f′max/j with the target read over the first
+//! step, as the plan reads x's acceleration at a phase start): a(τ) = a₀ + (a_t − a₀)·f(τ/T).
+//! a_t is the reference's acceleration over each step plus the value when `continuous` (x's
+//! acceleration followed), else its value over the first step, fixed (projected). The speed
+//! gains ∫a over each step exactly where a_t is constant over it: a₀·dt + (a_t − a₀)·T·(F(τ₁/T)
+//! − F(τ₀/T)), F the shape's integral, summed from the start (so after T it follows a_t, or
+//! holds it). With `ends_at_target` the action ends in the step that completes the
+//! transition; otherwise it goes on so.
+//!
 //! With `to_speed` the acceleration is the rate of a speed change (DSL 2.1 §8.9
 //! `acceleration(…)` beside `change_speed`): in each step the speed moves toward the target
 //! by |a|·dt (a the acceleration above: held, or the reference's over the step plus the
@@ -29,13 +41,30 @@
 //! rate, so it does not end by itself), failing only where it is not there `within` s after
 //! its start.
 
-use scenario::SpeedChange;
+use scenario::{SpeedChange, TransitionDynamics};
 
 use super::Part;
 use crate::error::{Error, ErrorKind};
 use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
+use crate::world::shapes::{shape_integral, shape_value, span, Span};
+
+/// A transition of the acceleration to the reference's plus the value (module doc).
+#[derive(Debug, Clone)]
+pub(crate) struct Transition {
+    dynamics: TransitionDynamics,
+    /// The actor's acceleration at the start (m/s²).
+    from: f64,
+    /// The span, known from the first step (a rate's depends on the target read then).
+    span: Option<Span>,
+    /// The speed the transition has given the actor by the last step's end (m/s).
+    speed: f64,
+    ends_at_target: bool,
+    /// When a transition that ends at its target completed (the step's end) and the
+    /// acceleration it reached there, for an AccelerationAction that keeps it to start from.
+    reached: Option<(f64, f64)>,
+}
 
 /// A running RelativeAccelerationAction on one actor.
 #[derive(Debug, Clone)]
@@ -61,6 +90,31 @@ pub(crate) struct RelativeAccelerationState {
     reference_last_speed: f64,
     /// Why the speed change failed, for the action table to report.
     pub(crate) failure: Option<Error>,
+    /// A transition to the target acceleration (`None`: at once).
+    transition: Option<Transition>,
+}
+
+impl RelativeAccelerationState {
+    /// When a transition that ends at its target completed (a step's end) and the acceleration
+    /// it reached (an AccelerationAction keeping it, started then, starts from it: the
+    /// entity's own acceleration is that step's mean).
+    pub(crate) fn reached(&self) -> Option<(f64, f64)> {
+        self.transition.as_ref()?.reached
+    }
+
+    /// True when a transition that ends at its target completes by `t` (the storyboard sees it
+    /// end in the step whose motion completes it, as an AccelerationAction's); its span is
+    /// known from its first step on.
+    pub(crate) fn completes_by(&self, t: f64) -> bool {
+        self.transition.as_ref().is_some_and(|tr| {
+            tr.ends_at_target
+                && match tr.span {
+                    Some(Span::Time(d)) => t - self.start_time >= d - crate::tolerance::TIME,
+                    Some(_) => true,
+                    None => false,
+                }
+        })
+    }
 }
 
 /// Starts the action on `actor` at `now`, relative to the entity named `entity_ref`.
@@ -69,8 +123,8 @@ pub(crate) fn start(
     actor: EntityId,
     entity_ref: &str,
     (value, continuous, to_speed): (f64, bool, Option<&SpeedChange>),
-    now: f64,
-    pos: &scenario::SourcePos,
+    (transition, ends_at_target): (Option<&TransitionDynamics>, bool),
+    (now, pos): (f64, &scenario::SourcePos),
 ) -> Result<Part, Error> {
     let reference = world.id(entity_ref).ok_or_else(|| {
         Error::at(
@@ -97,11 +151,21 @@ pub(crate) fn start(
             }
         }
     }
+    let e = world.entity(actor);
+    let transition = transition.map(|dynamics| Transition {
+        dynamics: *dynamics,
+        from: e.travel_component(e.acceleration.translational),
+        span: None,
+        speed: e.speed,
+        ends_at_target,
+        reached: None,
+    });
     Ok(Part::RelativeAcceleration(RelativeAccelerationState {
         reference,
         value,
         continuous,
         held: None,
+        transition,
         start_speed: world.entity(actor).speed,
         reference_start_speed: world.entity(reference).speed,
         start_time: now,
@@ -132,6 +196,10 @@ pub(crate) fn step(
         s.held = Some((reference_speed - s.reference_start_speed) / tau + s.value);
     }
     let last = std::mem::replace(&mut s.reference_last_speed, reference_speed);
+    let target = s.held.unwrap_or((reference_speed - last) / dt + s.value);
+    if let Some(tr) = &mut s.transition {
+        return transition_step(world, actor, tr, target, (tau, dt, now + dt));
+    }
     if s.to_speed.is_some() {
         let a = s.held.unwrap_or((reference_speed - last) / dt + s.value);
         return toward(world, actor, s, (a, tau), (now, dt));
@@ -144,6 +212,41 @@ pub(crate) fn step(
         }
     };
     super::acceleration::set_speed(world, actor, wanted, pushing, dt)
+}
+
+/// One step of a transition `tr` to the acceleration `target` (over this step), `tau` s after
+/// the start at the step's end (module doc).
+fn transition_step(
+    world: &mut World,
+    actor: EntityId,
+    tr: &mut Transition,
+    target: f64,
+    (tau, dt, tau_end): (f64, f64, f64),
+) -> ActionStatus {
+    let span = *tr
+        .span
+        .get_or_insert_with(|| span(&tr.dynamics, target - tr.from));
+    let shape = tr.dynamics.dynamics_shape;
+    // ∫₀^τ f(q/T) dq, and f(τ/T): done at once without a time span.
+    let time = match span {
+        Span::Time(t) => Some(t),
+        _ => None,
+    };
+    let integral = |u: f64| time.map_or(u, |t| t * shape_integral(shape, u / t));
+    let done = time.map_or(1.0, |t| shape_value(shape, tau / t).0);
+    tr.speed += tr.from * dt + (target - tr.from) * (integral(tau) - integral(tau - dt));
+    let pushing = tr.from + (target - tr.from) * done;
+    let status = super::acceleration::set_speed(world, actor, tr.speed, pushing, dt);
+    let over = match span {
+        Span::Time(t) => tau >= t - crate::tolerance::TIME,
+        _ => true,
+    };
+    if tr.ends_at_target && over {
+        tr.reached = Some((tau_end, target));
+        ActionStatus::Ended
+    } else {
+        status
+    }
 }
 
 /// One step of the speed change toward `s.to_speed` at the rate |a|, `tau` s after the start
@@ -231,6 +334,7 @@ mod tests {
             target_of: None,
             reference_last_speed: 10.0,
             failure: None,
+            transition: None,
         }
     }
 

@@ -27,6 +27,7 @@ mod lateral_esmini;
 mod override_values;
 mod random_traffic_create;
 mod red_light;
+mod relative_acceleration_shape;
 mod signals_controllers;
 mod speed_action;
 mod speed_limits;

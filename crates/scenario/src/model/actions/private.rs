@@ -362,6 +362,15 @@ pub enum LongitudinalAction {
         /// the acceleration above and the action ends when it reaches it; not reached in time,
         /// the action fails. `None`: the acceleration itself, as above.
         to_speed: Option<Box<SpeedChange>>,
+        /// A transition to that acceleration (DSL 2.1 §8.9.1.1.4 `acceleration(…, shape: s)`
+        /// relative to x after a run-time start, the shape's `change_acceleration` dynamics):
+        /// from the actor's acceleration at the start under these dynamics (a rate's span
+        /// from the target read over the first step), reaching the reference's acceleration
+        /// plus the value, then following it (`continuous`) or holding it. `None`: at once.
+        transition: Option<TransitionDynamics>,
+        /// With `transition`: the action ends in the step that completes it, as the
+        /// AccelerationAction's `ends_at_target`.
+        ends_at_target: bool,
     },
     /// oscsim's TravelAction, an action with no XML form (the DSL runtime writes it for a
     /// `position(…, at: end)` or `distance(…)` over a phase of known duration that starts on a
