@@ -19,8 +19,10 @@
 //!
 //! After a run-time start a shaped `lateral(…)` beside x with `track: projected` is the
 //! engine's lane change with the shape's dynamics to the lane and offset beside x where x is as
-//! it starts (`LaneChangeTarget::Beside`); with `track: actual` an error (the engine's move
-//! beside a moving x is sinusoidal over the phase). An acceleration shape relative to x there
+//! it starts (`LaneChangeTarget::Beside`); with `track: actual` the engine's move beside a
+//! moving x (`LaneChangeTarget::Beside` following) with the shape's dynamics: its rate profile
+//! from the actor's t to x's t at each step plus d, then x's t plus d held until the phase
+//! ends. An acceleration shape relative to x there
 //! is oscsim's RelativeAccelerationAction with the shape's dynamics as its transition, to x's
 //! acceleration ± the value as the engine reads it (actual: over each step, followed;
 //! projected: over the first step, fixed); after a change at a rate, the held acceleration is
@@ -71,8 +73,8 @@ pub(super) fn place_reference(m: &Modifier) -> Option<(&crate::resolve::Arg, f64
 pub(super) enum ShapedBeside {
     /// The offset from the centre of the actor's own lane at the phase end (a known start).
     Offset(f64),
-    /// After a run-time start with `track: projected`: x and the actor's t minus x's, the
-    /// engine's to find as the change starts.
+    /// After a run-time start: x and the actor's t minus x's, the engine's to find as the
+    /// change starts (projected) or at every step (actual).
     AtRunTime(String, f64),
 }
 
@@ -305,15 +307,9 @@ impl Planner<'_> {
         };
         let x = self.entity_of(e)?;
         let Some(t) = t0 else {
-            if m.projected {
-                return Ok(self
-                    .beside_gap(m, target)?
-                    .map(|(x, dt)| ShapedBeside::AtRunTime(x, dt)));
-            }
-            return Err(e.site.err(
-                K::Unsupported,
-                format!("expected a phase start the plan knows for lateral(…, shape: …) beside `{x}` with track: actual, found one after a run-time condition (the engine's move beside a moving `{x}` is sinusoidal over the phase, not the shape's rate; track: projected runs)"),
-            ));
+            return Ok(self
+                .beside_gap(m, target)?
+                .map(|(x, dt)| ShapedBeside::AtRunTime(x, dt)));
         };
         let len = match len {
             Some(l) => l,
@@ -343,10 +339,11 @@ impl Planner<'_> {
         Ok(Some(ShapedBeside::Offset(o)))
     }
 
-    /// After a run-time start, the planned lane change of a shaped `lateral(…)` beside x with
-    /// `track: projected` (`out`, follow_lane's change within the lane) aims at the lane and
-    /// offset that put the actor `dt` to x's left where x is as the change starts
-    /// (`LaneChangeTarget::Beside`, found by the engine then), with the shape's dynamics.
+    /// After a run-time start, the planned lane change of a shaped `lateral(…)` beside x
+    /// (`out`, follow_lane's change within the lane) aims at the lane and offset that put the
+    /// actor `dt` to x's left (`LaneChangeTarget::Beside`), with the shape's dynamics: where x
+    /// is as the change starts (`track: projected`, found by the engine then), or where x is
+    /// at every step (`actual`, the engine's following of x, then held).
     pub(super) fn beside_at_run_time(
         &self,
         m: &Modifier,
@@ -365,7 +362,8 @@ impl Planner<'_> {
                     entity_ref: x.clone(),
                     t: dt,
                     what: format!("{}(…) at {}", m.name, m.site.at()),
-                    follow: false,
+                    // Actual: x's t at every step (engine actions::lateral_follow).
+                    follow: !m.projected,
                     roads: self.chain(),
                 };
             }

@@ -363,6 +363,33 @@ fn a_shaped_position_relative_to_one_that_outruns_its_rate_is_an_error_naming_bo
     }
 }
 
+/// runtime_lateral_shape_actual.osc's comment, by hand: after the until at 3.35 s, linear at
+/// 0.5 m/s from ego's t to npc's moving t + 3 m over 1 s, then npc's t + 3 m held.
+#[test]
+fn a_shaped_lateral_position_beside_an_actual_reference_after_an_until_follows_it_at_the_shapes_rate(
+) {
+    let r = run("relative/runtime_lateral_shape_actual", 0, None);
+    crate::runtime::phases(&r, &[("do.shift", 3.35, 5.35)]);
+    let pi = std::f64::consts::PI;
+    let npc = |tau: f64| -8.75 + (1.0 - (pi * tau / 2.0).cos()) / 2.0;
+    for k in 0..=40 {
+        let t = 3.35 + 0.05 * f64::from(k);
+        let tau = t - 3.35;
+        let f = tau.min(1.0);
+        let want = (1.0 - f) * -5.25 + f * (npc(tau) + 3.0);
+        close(r.at(t, "npc").y, npc(tau), Y_TOL, &format!("npc y({t})"));
+        close(r.at(t, "ego").y, want, Y_TOL, &format!("ego y({t})"));
+    }
+    for (t, y) in [
+        (3.85, -5.426777),
+        (4.35, -5.25),
+        (4.85, -4.896447),
+        (5.35, -4.75),
+    ] {
+        close(r.at(t, "ego").y, y, 1e-6, &format!("ego y({t}) by hand"));
+    }
+}
+
 /// The engine's sinusoidal speed halves, stepped: speeds exact on the grid up to round-off.
 const SINE_V_TOL: f64 = 1e-6;
 /// Positions integrated per step, their lead over the profile's integral written out: float

@@ -5,9 +5,9 @@
 //! the behavior of the referenced vehicle"). No 1.x action follows another entity's t over a
 //! duration: a LateralDistanceAction has none, a LaneChangeAction's target is read at its start.
 //!
-//! The actor's t over the phase is a sinusoidal blend from its own t at the start, t₀, to the
-//! target t_x(τ) + d, where x's t moves: t(τ) = (1 − f)·t₀ + f·(t_x(τ) + d), f = (1 −
-//! cos(π·τ/T))/2. At τ = T it is x's t then plus d exactly, and a still x gives the sinusoidal
+//! The actor's t over the phase is a blend from its own t at the start, t₀, to the target
+//! t_x(τ) + d, where x's t moves: t(τ) = (1 − f)·t₀ + f·(t_x(τ) + d), f the transition's shape
+//! at τ/T (the DSL runtime gives a sinusoid, f = (1 − cos(π·τ/T))/2, or a shape's own). At τ = T it is x's t then plus d exactly, and a still x gives the sinusoidal
 //! lane change of the projected form. Each step the part runs after every other action (the
 //! second pass of the action stage, as the RelativeAccelerationAction), so x's own lateral
 //! action has set where x's lane track puts x at the step's end, and that is the t_x(τ) the
@@ -19,6 +19,13 @@
 //! reference line joins the actor's continuously, so that t is one measure), or no driving
 //! lane at the target when the action starts, fails it: an error record and a failed run.
 //!
+//! With a rate (the DSL runtime's `lateral(d, side_of/left_of/right_of: x, at: end, shape: s)`
+//! with `track: actual` after a run-time start, §8.9.1.1.4: the shape's lateral dynamics, its
+//! `rate_peak` the peak lateral speed) the blend takes the transition's own shape f (linear
+//! for a constant profile, sinusoidal for a smooth one) over T = |t_x(0) + d − t₀|·f′max / rate,
+//! x read as the action starts, and then holds x's t plus d at every step (as a step shape,
+//! below) until the phase's Act stops it: the modifier holds at the phase's end.
+//!
 //! With a step shape (the DSL runtime's `lateral(d, side_of/left_of/right_of: x)` at: all
 //! while x moves sideways, §8.9.1.1.1 "at: all": the constraint holds throughout the phase)
 //! there is no transition: the actor's t is t_x(τ) + d at every step's end (f = 1), its slope
@@ -26,7 +33,7 @@
 //! itself). The actor is beside x as it starts (the runtime places or checks it so).
 
 use opendrive::{Road, LENGTH_EPSILON};
-use scenario::{DynamicsShape, PlanRoads, SourcePos, TransitionDynamics};
+use scenario::{DynamicsDimension, DynamicsShape, PlanRoads, SourcePos, TransitionDynamics};
 
 use super::lane_change::{check_failed, same_measure, side_lane, step_speed};
 use super::Part;
@@ -37,7 +44,7 @@ use crate::store::World;
 use crate::storyboard::ActionStatus;
 use crate::world::entity::EntityId;
 use crate::world::lane_track::{Blend, LaneTrack};
-use crate::world::shapes::shape_value;
+use crate::world::shapes::{peak_slope, shape_value};
 
 /// A running lane change beside a moving entity on one actor.
 #[derive(Debug, Clone)]
@@ -56,6 +63,10 @@ pub(crate) struct FollowState {
     /// No transition: x's t plus `dt` at every step, until the action is stopped (a step
     /// shape).
     holds: bool,
+    /// The transition's shape.
+    shape: DynamicsShape,
+    /// At a rate: after the transition, hold as `holds` until the action is stopped.
+    then_holds: bool,
     /// The target at the previous step's end (m): x's lateral speed is its change.
     last_target: f64,
 }
@@ -63,7 +74,9 @@ pub(crate) struct FollowState {
 impl FollowState {
     /// True when the blend reaches its end by `t`.
     pub(crate) fn completes_by(&self, t: f64) -> bool {
-        !self.holds && t - self.start_time >= self.duration - crate::tolerance::TIME
+        !self.holds
+            && !self.then_holds
+            && t - self.start_time >= self.duration - crate::tolerance::TIME
     }
 }
 
@@ -78,12 +91,17 @@ pub(crate) fn start(
     pos: &SourcePos,
 ) -> Result<Part, Error> {
     let holds = dynamics.dynamics_shape == DynamicsShape::Step;
-    let duration = dynamics.value;
-    // Over a time only (the DSL runtime gives the phase's duration).
-    if !(holds || duration > 0.0 && duration.is_finite()) {
+    let rate = dynamics.dynamics_dimension == DynamicsDimension::Rate;
+    let value = dynamics.value;
+    // Over a time (the DSL runtime gives the phase's duration) or at a rate.
+    if !(holds || value > 0.0 && value.is_finite()) {
         return Err(Error::at(
-            "a duration above 0 s",
-            format!("{duration} s"),
+            if rate {
+                "a rate above 0 m/s"
+            } else {
+                "a duration above 0 s"
+            },
+            format!("{value}"),
             pos,
         ));
     }
@@ -109,6 +127,13 @@ pub(crate) fn start(
     }
     let (from_lane, from_offset) = lane_at(road, ta.s, ta.t).unwrap_or((ta.lane_id, ta.offset));
     let t0 = ta.t;
+    let (shape, duration) = match (holds, rate) {
+        (false, true) => (
+            dynamics.dynamics_shape,
+            (target - t0).abs() * peak_slope(dynamics.dynamics_shape) / value,
+        ),
+        _ => (dynamics.dynamics_shape, value),
+    };
     let net = world.network.clone();
     let e = world.entity_mut(actor);
     if let Some(track) = &mut e.track {
@@ -128,6 +153,8 @@ pub(crate) fn start(
         start_time: now,
         t0,
         holds,
+        shape,
+        then_holds: rate && !holds,
         last_target: target,
     }))
 }
@@ -144,12 +171,17 @@ pub(crate) fn step(
         // x left the actor's road: the blend holds its last target.
         return ActionStatus::Running;
     };
-    let (p, (f, df)) = if s.holds {
-        // No transition: at x's t plus d, held until stopped.
-        (0.0, (1.0, 0.0))
+    let p = if s.duration > 0.0 {
+        ((now + dt - s.start_time) / s.duration).min(1.0)
     } else {
-        let p = ((now + dt - s.start_time) / s.duration).min(1.0);
-        (p, shape_value(DynamicsShape::Sinusoidal, p))
+        1.0
+    };
+    // No transition (or one over): at x's t plus d, held until stopped.
+    let holding = s.holds || (s.then_holds && p >= 1.0);
+    let (f, df) = if holding {
+        (1.0, 0.0)
+    } else {
+        shape_value(s.shape, p)
     };
     let net = world.network.clone();
     let e = world.entity_mut(actor);
@@ -164,12 +196,12 @@ pub(crate) fn step(
         0.0
     };
     s.last_target = target;
-    if p >= 1.0 {
+    if p >= 1.0 && !holding {
         track.blend = None;
         return ActionStatus::Ended;
     }
     // The lateral speed of t(τ) = (1 − f)·t₀ + f·target: f′/T·(target − t₀) + f·target′.
-    let lateral = if s.holds {
+    let lateral = if holding {
         x_rate
     } else {
         df / s.duration * (target - s.t0) + f * x_rate

@@ -24,6 +24,7 @@ mod global;
 mod init_names;
 mod lateral;
 mod lateral_esmini;
+mod lateral_follow_rate;
 mod override_values;
 mod random_traffic_create;
 mod red_light;
