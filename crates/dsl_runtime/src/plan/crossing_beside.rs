@@ -8,8 +8,8 @@
 //!
 //! - x's place across the line is its bounding box projected on the line's normal (+ to the
 //!   walker's left): from x's reference point where the plan has it, the box turned to x's
-//!   heading — along the crossing's line while x walks one itself (its record in
-//!   [`CrossingLine`]), else along its lane's driving direction;
+//!   heading — along the crossing's line while x walks one itself (its record, a
+//!   `types::CrossingLine`), else along its lane's driving direction;
 //! - the walker's centre is then where `lateral::beside` puts it from that extent, as beside
 //!   x in a lane (`measure_by`, `side`, d), the walker's width across its own line;
 //! - `at: start`: x read at the walk's start, the walk's line moved so; `at: all` (the
@@ -21,48 +21,17 @@
 //! A first phase is placed on the crossing's line by the placement (x's place is not known
 //! then) and moved beside x here, before anything else reads it.
 
-use super::crossing_walk::{walked_part, CrossingPoint};
+use super::crossing_walk::{walked_part, Part, Walk};
 use super::lateral;
 use super::map_crossings::MapCrossing;
 use super::planner::Planner;
+use super::types::CrossingPoint;
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{Along, Arg, At, ModKind, Modifier};
+use crate::resolve::{Arg, At, Modifier};
 use crate::road::PlanRoad;
-
-/// A walk of an actor along a crossing's line, as the plan knows it: from its start to its
-/// end in the plan's (s, t), timed from `t0` to `t1`; `uniform` when at one speed (a walk, a
-/// move or a drive; a speed action's place in between is not the plan's).
-#[derive(Debug, Clone)]
-pub(crate) struct CrossingLine {
-    pub actor: String,
-    pub t0: f64,
-    pub t1: f64,
-    pub from: (f64, f64),
-    pub to: (f64, f64),
-    pub uniform: bool,
-}
 
 /// How far x's place across the line may differ at the walk's end under `at: all` (m).
 pub(super) const ACROSS_TOLERANCE: f64 = 1e-6;
-
-impl CrossingLine {
-    /// The line's (s, t) from its two points.
-    pub(super) fn new(
-        actor: &str,
-        (t0, t1): (f64, f64),
-        a: CrossingPoint,
-        b: CrossingPoint,
-    ) -> Self {
-        CrossingLine {
-            actor: actor.to_string(),
-            t0,
-            t1,
-            from: (a.1, a.2),
-            to: (b.1, b.2),
-            uniform: true,
-        }
-    }
-}
 
 impl Planner<'_> {
     /// x's box across crossing `c`'s line at `tau`: the centre of its extent and the extent
@@ -148,39 +117,8 @@ impl Planner<'_> {
     }
 }
 
-/// A `lateral(…)` beside another actor: the modifier, its reference and side (+1 left).
-pub(super) type Beside<'m> = (&'m Modifier, (&'m Arg, f64));
-
-/// A walked part of a crossing: its start and end.
-pub(super) type Part = (CrossingPoint, CrossingPoint);
-
-/// A walk along a crossing being planned: what its walked part depends on.
-pub(super) struct Walk<'w> {
-    pub c: &'w MapCrossing,
-    pub along: &'w Along,
-    /// `lateral(…)` beside x, its reference and side.
-    pub beside: Option<Beside<'w>>,
-    /// The walked part as at the walk's start (`at: end` beside x: its end on the line).
-    pub fixed: Part,
-    /// The walk's start and the walker's place across the line then (beside x at: start or
-    /// all).
-    pub t: f64,
-    pub start_across: Option<f64>,
-}
-
-/// The `lateral(…)` beside another actor among a walk's modifiers, with its reference and side.
-pub(super) fn beside_of(mods: &[Modifier]) -> Result<Option<Beside<'_>>, Error> {
-    match mods.iter().find(|m| m.kind == ModKind::Lateral) {
-        Some(m) => Ok(lateral::reference(m)?.map(|r| (m, r))),
-        None => Ok(None),
-    }
-}
-
 /// The length of a walked part in the world (m), `None` off the plan's roads.
-pub(super) fn part_length(
-    road: &PlanRoad<'_>,
-    (a, b): (CrossingPoint, CrossingPoint),
-) -> Option<f64> {
+pub(super) fn part_length(road: &PlanRoad<'_>, (a, b): Part) -> Option<f64> {
     let (p, q) = road.world_pose(a.1, a.2).zip(road.world_pose(b.1, b.2))?;
     Some((q.0 - p.0).hypot(q.1 - p.1))
 }

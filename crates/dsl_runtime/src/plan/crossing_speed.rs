@@ -20,12 +20,11 @@
 
 use scenario::FollowingMode;
 
-use super::crossing_beside::{CrossingLine, Walk};
-use super::crossing_walk::point_at;
+use super::crossing_walk::{point_at, Walk};
 use super::path_shape::along as trajectory;
 use super::planner::Planner;
 use super::speed_actions::Slot;
-use super::types::{Planned, When};
+use super::types::{CrossingLine, Planned, When};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Invoke, Phase};
 

@@ -28,13 +28,12 @@
 
 use scenario::FollowingMode;
 
-use super::crossing_beside::{beside_of, CrossingLine, Walk};
 use super::lateral;
 use super::map_crossings::{extent, MapCrossing};
 use super::path_shape::along as trajectory;
 use super::planner::Planner;
 use super::speed_actions::Slot;
-use super::types::{Planned, When, POSITION_TOLERANCE};
+use super::types::{CrossingLine, CrossingPoint, Planned, When, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{
     Action, ActorKind, Along, Arg, At, Invoke, ModKind, Modifier, Phase, Route, Val,
@@ -175,9 +174,6 @@ impl Planner<'_> {
         Ok(Some(self.ends(t0, span, &n, p)))
     }
 }
-
-/// A point of a crossing: lane, the plan's s and t (m).
-pub(super) type CrossingPoint = (i32, f64, f64);
 
 /// The part of crossing `c` a walk `along` it covers: from `along.start_offset` m after the
 /// crossing's start to `along.end_offset` m before its end, measured along the straight line
@@ -337,4 +333,32 @@ pub(super) fn crossing_shift(
         }
     };
     Ok(if m.at == At::End { (0.0, d) } else { (d, d) })
+}
+
+/// A `lateral(…)` beside another actor: the modifier, its reference and side (+1 left).
+pub(super) type Beside<'m> = (&'m Modifier, (&'m Arg, f64));
+
+/// A walked part of a crossing: its start and end.
+pub(super) type Part = (CrossingPoint, CrossingPoint);
+
+/// A walk along a crossing being planned: what its walked part depends on.
+pub(super) struct Walk<'w> {
+    pub c: &'w MapCrossing,
+    pub along: &'w Along,
+    /// `lateral(…)` beside x, its reference and side.
+    pub beside: Option<Beside<'w>>,
+    /// The walked part as at the walk's start (`at: end` beside x: its end on the line).
+    pub fixed: Part,
+    /// The walk's start and the walker's place across the line then (beside x at: start or
+    /// all).
+    pub t: f64,
+    pub start_across: Option<f64>,
+}
+
+/// The `lateral(…)` beside another actor among a walk's modifiers, with its reference and side.
+pub(super) fn beside_of(mods: &[Modifier]) -> Result<Option<Beside<'_>>, Error> {
+    match mods.iter().find(|m| m.kind == ModKind::Lateral) {
+        Some(m) => Ok(lateral::reference(m)?.map(|r| (m, r))),
+        None => Ok(None),
+    }
 }

@@ -76,7 +76,7 @@ pub(crate) struct Planner<'a> {
     /// Crossing field the map's `crossing_connects` bound → the crossing (`map_crossings`).
     pub crossings: HashMap<String, super::map_crossings::MapCrossing>,
     /// The walks along crossings planned so far (`crossing_beside`).
-    pub crossing_lines: Vec<super::crossing_beside::CrossingLine>,
+    pub crossing_lines: Vec<super::types::CrossingLine>,
     /// `lateral(…, x)` at: all of a first phase: (actor, x, phase start, phase end if known,
     /// the modifier), checked once every phase is planned.
     pub beside_checks: Vec<(String, String, f64, Option<f64>, Site)>,

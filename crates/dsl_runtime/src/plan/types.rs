@@ -329,3 +329,38 @@ pub(crate) struct Late {
     /// What it asks.
     pub creation: Creation,
 }
+
+/// A point of a crossing: lane, the plan's s and t (m).
+pub(crate) type CrossingPoint = (i32, f64, f64);
+
+/// A walk of an actor along a crossing's line, as the plan knows it: from its start to its
+/// end in the plan's (s, t), timed from `t0` to `t1`; `uniform` when at one speed (a walk, a
+/// move or a drive; a speed action's place in between is not the plan's).
+#[derive(Debug, Clone)]
+pub(crate) struct CrossingLine {
+    pub actor: String,
+    pub t0: f64,
+    pub t1: f64,
+    pub from: (f64, f64),
+    pub to: (f64, f64),
+    pub uniform: bool,
+}
+
+impl CrossingLine {
+    /// The line's (s, t) from its two points.
+    pub(crate) fn new(
+        actor: &str,
+        (t0, t1): (f64, f64),
+        a: CrossingPoint,
+        b: CrossingPoint,
+    ) -> Self {
+        CrossingLine {
+            actor: actor.to_string(),
+            t0,
+            t1,
+            from: (a.1, a.2),
+            to: (b.1, b.2),
+            uniform: true,
+        }
+    }
+}
