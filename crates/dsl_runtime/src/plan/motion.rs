@@ -128,12 +128,9 @@ impl Planner<'_> {
                     // it grows through d (an actor behind first closes, passes, then opens it).
                     condition_edge: scenario::ConditionEdge::Rising,
                     delay: 0.0,
-                    kind: scenario::ConditionKind::ByEntity {
-                        triggering_entities: scenario::TriggeringEntities {
-                            rule: scenario::TriggeringEntitiesRule::Any,
-                            entity_refs: vec![front.to_string()],
-                        },
-                        entity_condition: scenario::EntityCondition::RelativeDistance {
+                    kind: scenario::ConditionKind::by_entity(
+                        front,
+                        scenario::EntityCondition::RelativeDistance {
                             entity_ref: back.to_string(),
                             value: d,
                             rule: scenario::Rule::GreaterOrEqual,
@@ -146,7 +143,7 @@ impl Planner<'_> {
                                 routing_algorithm: None,
                             },
                         },
-                    },
+                    ),
                     pos: m.site.pos.clone(),
                 }],
             }],

@@ -34,7 +34,6 @@
 use scenario::{
     ConditionEdge, ConditionGroup, ConditionKind, DynamicsShape, EntityCondition, LaneChangeAt,
     LaneChangeTarget, LateralAction, PrivateAction, StoryboardElementState, Trigger,
-    TriggeringEntities, TriggeringEntitiesRule,
 };
 
 use super::planner::Planner;
@@ -187,16 +186,13 @@ impl Planner<'_> {
                 name: format!("{target} at the route's point s = {sa} m"),
                 condition_edge: ConditionEdge::None,
                 delay: 0.0,
-                kind: ConditionKind::ByEntity {
-                    triggering_entities: TriggeringEntities {
-                        rule: TriggeringEntitiesRule::Any,
-                        entity_refs: vec![target.to_string()],
-                    },
-                    entity_condition: EntityCondition::PlaceReached {
+                kind: ConditionKind::by_entity(
+                    target,
+                    EntityCondition::PlaceReached {
                         value: sa - S_EPS,
                         roads: self.chain(),
                     },
-                },
+                ),
                 pos: along.site.pos.clone(),
             }];
             if let Some(prev) = &before {

@@ -19,7 +19,7 @@
 use scenario::{
     ConditionEdge, ConditionGroup, ConditionKind, DynamicsDimension, DynamicsShape,
     EntityCondition, LongitudinalAction, Mark, PrivateAction, RateWithin, SpeedGap, SpeedTarget,
-    StateCheck, TransitionDynamics, Trigger, TriggeringEntities, TriggeringEntitiesRule,
+    StateCheck, TransitionDynamics, Trigger,
 };
 
 use super::motion::{check_accel, check_speed};
@@ -431,13 +431,7 @@ fn since_mark(m: &Modifier, target: &str, what: String, condition: EntityConditi
                 // False before the mark is noted, so no edge is needed.
                 condition_edge: ConditionEdge::None,
                 delay: 0.0,
-                kind: ConditionKind::ByEntity {
-                    triggering_entities: TriggeringEntities {
-                        rule: TriggeringEntitiesRule::Any,
-                        entity_refs: vec![target.to_string()],
-                    },
-                    entity_condition: condition,
-                },
+                kind: ConditionKind::by_entity(target, condition),
                 pos: m.site.pos.clone(),
             }],
         }],

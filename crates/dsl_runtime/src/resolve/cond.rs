@@ -31,8 +31,7 @@
 use dsl::semantics::hir::{Arg as HirArg, BinOp, Expr, ExprKind, Span};
 use scenario::{
     ByValueCondition, Condition, ConditionEdge, ConditionKind, CoordinateSystem, DistanceMeasure,
-    EntityCondition, RelativeDistanceType, Rule, TimeToCollisionTarget, TriggeringEntities,
-    TriggeringEntitiesRule,
+    EntityCondition, RelativeDistanceType, Rule, TimeToCollisionTarget,
 };
 
 use super::eval::Eval;
@@ -301,13 +300,7 @@ fn measured(
         actors.push((path.clone(), ctx.site(e.span)));
         path.unwrap_or_default()
     };
-    let by = |who: String, c: EntityCondition| ConditionKind::ByEntity {
-        triggering_entities: TriggeringEntities {
-            rule: TriggeringEntitiesRule::Any,
-            entity_refs: vec![who],
-        },
-        entity_condition: c,
-    };
+    let by = |who: String, c: EntityCondition| ConditionKind::by_entity(who, c);
     let measure_of = |freespace: bool, dir: Option<RelativeDistanceType>| DistanceMeasure {
         freespace,
         coordinate_system: Some(CoordinateSystem::Road),

@@ -49,6 +49,20 @@ pub enum ConditionKind {
     ByValue(ByValueCondition),
 }
 
+impl ConditionKind {
+    /// A ByEntityCondition on one entity (`triggeringEntitiesRule="any"` of one EntityRef):
+    /// the form every condition on a single actor takes.
+    pub fn by_entity(entity: impl Into<String>, entity_condition: EntityCondition) -> Self {
+        ConditionKind::ByEntity {
+            triggering_entities: TriggeringEntities {
+                rule: TriggeringEntitiesRule::Any,
+                entity_refs: vec![entity.into()],
+            },
+            entity_condition,
+        }
+    }
+}
+
 /// Triggering entities (XSD `TriggeringEntities`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TriggeringEntities {
