@@ -19,8 +19,10 @@
 //! With `track: projected` (§8.9.1.1.3) x is read as projected from the phase start (along
 //! its lane at its speed then, in its lane then): at a start and end the plan knows, the
 //! plan's check against that, an actor free along its lane keeping x's speed at the start (a
-//! step SpeedAction); after a run-time start, or with an end the plan does not know, checked at
-//! the start only (not held yet: the engine's held check reads x as it is). A phase whose end the plan does not know is the engine's held check from
+//! step SpeedAction); after a run-time start, with an end the plan does not know, or with an x
+//! the engine moves, the engine's held check against x projected from the start the engine
+//! finds (`StateCheck::projected`), an actor free along its lane keeping x's speed then (oscsim's
+//! `SpeedTarget::RelativeAtStart`). A phase whose end the plan does not know is the engine's held check from
 //! its known start, as is a relation to an x the engine moves then (a gap action's or a
 //! model's controller: the plan has no track of x; an actor held to such an x is the engine's
 //! to move too). Not for groups (each member's place is its formation's).
@@ -123,21 +125,7 @@ impl Planner<'_> {
             return Ok(());
         }
         if m.projected {
-            // x as projected from the start (§8.9.1.1.3): along its lane at its speed then,
-            // in its lane then. Checked where the plan knows the phase; an actor free along
-            // its lane keeps x's speed at the start (after a run-time start: the start only).
-            if let (Some(t0), Some(te)) = (t0, te) {
-                if free_along(kind, mods, m) {
-                    let v = self.track(&self.reference_of(m)?).at(t0).1;
-                    let keep = speed_action(DynamicsShape::Step, 0.0, SpeedTarget::Absolute(v));
-                    out.push(Planned::with_phase(target, name("speed"), keep, &m.site));
-                    self.track_mut(target).ramp(t0, t0, v);
-                    self.last_v.insert(target.to_string(), v);
-                }
-                self.held_relations
-                    .push((target.to_string(), m.clone(), t0, te));
-            }
-            return Ok(());
+            return self.hold_projected(m, target, (kind, mods), (t0, te), name, out);
         }
         // A default gap is held where the plan knows x's speed at the start (module doc).
         let default_gap = m.arg("distance").is_none() && m.arg("time").is_none();
@@ -164,6 +152,64 @@ impl Planner<'_> {
                 out.push(self.checked(check, m, target, name("check")));
             }
             (None, _) => {}
+        }
+        Ok(())
+    }
+
+    /// Plans `m`, a relation at: all with `track: projected` (§8.9.1.1.3: x read as projected
+    /// from the phase start, along its lane at its speed then, in its lane then), as
+    /// [`Self::hold_relation`] (module doc): where the plan knows the phase and x's track, its
+    /// check at every step; else the engine's check held over the phase against x projected
+    /// from the start the engine finds (after a run-time start `runtime::start_check` writes
+    /// it). An actor free along its lane keeps x's speed of the start: the plan's where it
+    /// knows it, else x's when the engine starts the phase (`SpeedTarget::RelativeAtStart`).
+    fn hold_projected(
+        &mut self,
+        m: &Modifier,
+        target: &str,
+        (kind, mods): (Action, &[Modifier]),
+        (t0, te): (Option<f64>, Option<f64>),
+        name: &mut dyn FnMut(&str) -> String,
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let x = self.reference_of(m)?;
+        // x's speed at the start where the plan has x's track then.
+        let planned = !self.engine_moved.contains_key(&x);
+        let v0 = t0.filter(|_| planned).map(|t| self.track(&x).at(t).1);
+        if free_along(kind, mods, m) {
+            let keep = match (t0, v0) {
+                (Some(t0), Some(v)) => {
+                    self.track_mut(target).ramp(t0, t0, v);
+                    self.last_v.insert(target.to_string(), v);
+                    SpeedTarget::Absolute(v)
+                }
+                _ => {
+                    // x's speed is the engine's: so is the actor's it keeps.
+                    if t0.is_some() {
+                        self.engine_moved.insert(target.to_string(), t0);
+                    }
+                    SpeedTarget::RelativeAtStart {
+                        entity_ref: x.clone(),
+                        value: 0.0,
+                    }
+                }
+            };
+            let keep = speed_action(DynamicsShape::Step, 0.0, keep);
+            out.push(Planned::with_phase(target, name("speed"), keep, &m.site));
+        }
+        match (t0, te, planned) {
+            (Some(t0), Some(te), true) => {
+                self.held_relations
+                    .push((target.to_string(), m.clone(), t0, te));
+            }
+            (Some(_), _, _) => {
+                let mut check = self.start_state(m, target)?;
+                check.throughout = true;
+                check.projected = true;
+                out.push(self.checked(check, m, target, name("check")));
+            }
+            // After a run-time start: `runtime::start_check`'s, held and projected.
+            (None, _, _) => {}
         }
         Ok(())
     }

@@ -241,3 +241,51 @@ fn a_speed_faster_than_another_in_a_first_phase_follows_its_speed_throughout() {
     assert!((ego7.speed - 18.0).abs() < S_TOL, "{ego7:?}");
     assert!((r.at(7.0, "lead").speed - 17.0).abs() < S_TOL);
 }
+
+/// behind_projected_runtime.osc: after the until at 5.75 s ego, free along its lane, 59.75 m
+/// behind lead as projected from then (track: projected), keeps lead's 8 m/s of the start while
+/// lead accelerates to 12 m/s: s_ego = 186.25 + 8·τ at every step, 202.25 m at 7.75 s (lead at
+/// 266.1 m); the engine's check against the projection, held over the phase, passes.
+#[test]
+fn a_position_behind_a_projected_actor_after_an_until_keeps_its_speed_of_the_start() {
+    let lowered = lower("held/behind_projected_runtime", 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = run_to_error(&lowered.scenario);
+    assert!(
+        error.is_none() && records.is_empty(),
+        "{error:?} {records:?}"
+    );
+    let r = run("held/behind_projected_runtime", 0, None);
+    let (s, e) = r.phase("do.cruise");
+    assert!(
+        (s - 5.75).abs() < T_TOL && (e - 7.75).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    for k in 1..=40 {
+        let t = 5.75 + k as f64 * DT;
+        let ego = r.at(t, "ego");
+        let want = 186.25 + 8.0 * (t - 5.75);
+        assert!(
+            (ego.s - want).abs() < S_TOL && (ego.speed - 8.0).abs() < S_TOL,
+            "{t}: {ego:?}, want {want}"
+        );
+    }
+    assert!((r.at(7.75, "lead").s - 266.1).abs() < S_TOL);
+    r.held("do.cruise.0/ego/1:check", (5.75, 7.75));
+}
+
+/// behind_projected_runtime_fails.osc: after the until at 5.75 s ego at its own 11 m/s while
+/// lead accelerates 8 → 11 m/s; lead projected from 5.75 s goes on at 8 m/s: the gap to it is
+/// 59.75 − 3·τ, 59.15 m at 5.95 s, the first step 0.5 m off (against lead as it is: 59.1875
+/// m): an error record (at the end of that step, 6.00 s) and a failed run.
+#[test]
+fn a_position_behind_a_projected_actor_after_an_until_is_the_engines_check_held_over_the_phase() {
+    let want = "expected 'lead' projected from 5.750 s at 8.000 m/s 59.750 m from 'ego' along the road (within 0.5 m) (position(…) at ";
+    let tail = "held/behind_projected_runtime_fails.osc:31:17), found 59.150 m at t = 5.950 s";
+    let element = "do.cruise.0/ego/2:check";
+    fails(
+        "held/behind_projected_runtime_fails",
+        (want, tail),
+        element,
+        6.0,
+    );
+}

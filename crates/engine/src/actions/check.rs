@@ -78,20 +78,7 @@ pub(crate) fn start(
         };
         // Projected: the gap's entity along its lane at its speed now.
         let projection = match (&mark.gap, mark.projected) {
-            (Some(gap), true) => world
-                .id(&gap.entity_ref)
-                .map(|o| world.entity(o))
-                .and_then(|o| {
-                    let t = o.track.as_ref()?;
-                    Some(Projection {
-                        road: t.road_id.clone(),
-                        lane: t.lane_id,
-                        s: t.s,
-                        speed: o.speed,
-                        forward: t.direction == Direction::Forward,
-                        time,
-                    })
-                }),
+            (Some(gap), true) => projection(world, &gap.entity_ref, time),
             _ => None,
         };
         if let (Some(gap), true, None) = (&mark.gap, mark.projected, &projection) {
@@ -121,6 +108,33 @@ pub(crate) fn start(
     Ok(())
 }
 
+/// `name` projected from `time` on (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track: projected`):
+/// its lane, s and speed now (`None`: no such entity, or off every lane).
+pub(super) fn projection(world: &World, name: &str, time: f64) -> Option<Projection> {
+    let o = world.entity(world.id(name)?);
+    let t = o.track.as_ref()?;
+    Some(Projection {
+        road: t.road_id.clone(),
+        lane: t.lane_id,
+        s: t.s,
+        speed: o.speed,
+        forward: t.direction == Direction::Forward,
+        time,
+    })
+}
+
+/// The failure of `check` at `time`: what was expected, what was found.
+pub(super) fn failure(check: &StateCheck, time: f64) -> impl Fn(String, String) -> Error + '_ {
+    move |expected, found| {
+        Error::new(ErrorKind::CheckFailed {
+            what: check.what.clone(),
+            expected,
+            found,
+            time,
+        })
+    }
+}
+
 /// The requirements of `check` on `actor` at `time`.
 pub(super) fn require(
     world: &World,
@@ -129,14 +143,7 @@ pub(super) fn require(
     (time, pos): (f64, &SourcePos),
 ) -> Result<(), Error> {
     let e = world.entity(actor);
-    let fail = |expected: String, found: String| {
-        Error::new(ErrorKind::CheckFailed {
-            what: check.what.clone(),
-            expected,
-            found,
-            time,
-        })
-    };
+    let fail = failure(check, time);
     super::check_heading::require(world, e, check, &fail)?;
     // The change must run as written: the SpeedAction would stretch a faster one in time.
     if let (Some((target, shape, within)), Some(perf)) = (&check.speed_change, e.performance) {

@@ -6,45 +6,184 @@
 //! after it, on the actor as the stage finds it (the pose the last step's moves gave it), until
 //! the action is stopped: its phase's Act ending stops it. A failure ends the action and is the
 //! step's failure: an error record in the event log and a failed run.
+//!
+//! With `track: projected` (`StateCheck::projected`, §8.9.1.1.3: the reference "projected"
+//! from its state at the phase start) the entity of its gap or lane count is recorded when the
+//! check starts (`condition::Projection`: its road, lane, s and speed then) and read at every
+//! later step as projected from there: along that lane's centre line at that speed, in the
+//! check's measure (`position::RoadChain`: the plan's s, u along the direction of travel of an
+//! actor driving against s, the projection along the entity's own direction of travel), the
+//! gap at that speed, the lane counted from that lane in its direction of travel then.
 
+use opendrive::Direction;
 use scenario::{SourcePos, StateCheck};
 
 use super::check;
+use crate::condition::Projection;
 use crate::error::Error;
+use crate::position::RoadChain;
 use crate::store::World;
 use crate::storyboard::ActionStatus;
+use crate::world::lanes::lane_shift;
 use crate::EntityId;
 
 /// A state check held from its start until its action is stopped.
 #[derive(Debug, Clone)]
 pub(crate) struct HeldCheck {
-    /// What it requires.
+    /// What it requires (with a projection: all but the gap and lane count read from it).
     check: Box<StateCheck>,
+    /// With `track: projected`: the gap's or lane count's entity projected from the start.
+    projection: Option<Projected>,
     /// Where it is written.
     pos: SourcePos,
     /// Why it failed, once it has.
     pub failure: Option<Error>,
 }
 
+/// What a projected check reads from its entity's projection.
+#[derive(Debug, Clone)]
+struct Projected {
+    /// The entity as it was at the start.
+    from: Projection,
+    /// The gap (`StateCheck::gap`) measured from it.
+    gap: Option<(scenario::SpeedGap, f64)>,
+    /// The lane count (`StateCheck::lane_of`) from its lane then.
+    lane_of: Option<i32>,
+}
+
 impl HeldCheck {
-    /// `check` (written at `pos`), which held at its start.
-    pub(super) fn new(check: &StateCheck, pos: &SourcePos) -> Self {
-        Self {
-            check: Box::new(check.clone()),
+    /// `check` (written at `pos`), which held at its start `time`; with `track: projected`
+    /// the entity it relates to is recorded now. `Err` where that entity is off every lane.
+    pub(super) fn new(
+        world: &World,
+        check: &StateCheck,
+        (time, pos): (f64, &SourcePos),
+    ) -> Result<Self, Error> {
+        let mut held = check.clone();
+        let projection = match check.projected {
+            false => None,
+            true => {
+                let gap = held.gap.take();
+                let lane_of = held.lane_of.take();
+                let of = gap
+                    .as_ref()
+                    .map(|(g, _)| g.entity_ref.clone())
+                    .or(lane_of.as_ref().map(|(x, _)| x.clone()));
+                match of {
+                    None => None,
+                    Some(x) => {
+                        let Some(from) = check::projection(world, &x, time) else {
+                            let fail = check::failure(check, time);
+                            let want = format!("'{x}' on a lane to project it from");
+                            return Err(fail(want, "it off every lane".into()));
+                        };
+                        let lane_of = lane_of.map(|(_, n)| n);
+                        Some(Projected { from, gap, lane_of })
+                    }
+                }
+            }
+        };
+        Ok(Self {
+            check: Box::new(held),
+            projection,
             pos: pos.clone(),
             failure: None,
-        }
+        })
     }
 }
 
 /// Checks `held` on `actor` at `now`: running while it holds, ended with its failure noted
 /// once it does not.
 pub(super) fn step(world: &World, actor: EntityId, held: &mut HeldCheck, now: f64) -> ActionStatus {
-    match check::require(world, actor, &held.check, (now, &held.pos)) {
+    let checked = check::require(world, actor, &held.check, (now, &held.pos)).and_then(|()| {
+        match &held.projection {
+            Some(p) => require_projected(world, actor, &held.check, p, now),
+            None => Ok(()),
+        }
+    });
+    match checked {
         Ok(()) => ActionStatus::Running,
         Err(e) => {
             held.failure = Some(e);
             ActionStatus::Ended
         }
     }
+}
+
+/// The gap and lane of `p` on `actor` at `now`, its entity read as projected from the start
+/// (module doc); `check` gives the roads and what is checked.
+fn require_projected(
+    world: &World,
+    actor: EntityId,
+    check: &StateCheck,
+    p: &Projected,
+    now: f64,
+) -> Result<(), Error> {
+    let e = world.entity(actor);
+    let fail = check::failure(check, now);
+    let x = &p.from;
+    let chain = RoadChain::new(&world.network, &check.roads);
+    let Some(at) = e.road_position.as_ref() else {
+        return Err(fail(
+            format!("'{}' on a road", e.name),
+            "it off every road".into(),
+        ));
+    };
+    // On one road the actor on x's road then; on a plan over several roads on any of them.
+    let on = chain.is_chain() || at.road_id == x.road;
+    if let Some(shift) = p.lane_of {
+        let direction = match x.forward {
+            true => Direction::Forward,
+            false => Direction::Backward,
+        };
+        let lane = lane_shift(x.lane, shift, direction);
+        if !on || chain.s_of(&at.road_id, at.s).is_none() || at.lane_id != lane {
+            return Err(fail(
+                format!(
+                    "'{}' in lane {lane} of {}, counted from lane {} of the entity projected from {:.3} s",
+                    e.name,
+                    chain.roads_or(&x.road),
+                    x.lane,
+                    x.time
+                ),
+                format!("it in lane {} of road {}", at.lane_id, at.road_id),
+            ));
+        }
+    }
+    if let Some((g, tol)) = &p.gap {
+        let there = x.s_at(chain, now);
+        let here = chain.s_of(&at.road_id, at.s).filter(|_| on);
+        let (Some(there), Some(here)) = (there, here) else {
+            return Err(fail(
+                format!(
+                    "'{}' and '{}' projected from {:.3} s on {}",
+                    e.name,
+                    g.entity_ref,
+                    x.time,
+                    chain.roads_or(&x.road)
+                ),
+                format!(
+                    "'{}' on road {}, or the projection past its lane",
+                    e.name, at.road_id
+                ),
+            ));
+        };
+        // x − actor along the road, at x's speed at the start.
+        let gap = -g.offset(x.speed);
+        let got = there - here;
+        if (got - gap).abs() > *tol {
+            return Err(fail(
+                format!(
+                    "'{}' projected from {:.3} s at {:.3} m/s {gap:.3} m from '{}' {} (within {tol} m)",
+                    g.entity_ref,
+                    x.time,
+                    x.speed,
+                    e.name,
+                    chain.along()
+                ),
+                format!("{got:.3} m"),
+            ));
+        }
+    }
+    Ok(())
 }

@@ -486,7 +486,7 @@ impl Host<'_> {
             PrivateAction::Check(check) => {
                 check::start(self.world, actor, check, (time, pos))?;
                 Ok(match check.throughout {
-                    true => Part::Held(check_held::HeldCheck::new(check, pos)),
+                    true => Part::Held(check_held::HeldCheck::new(self.world, check, (time, pos))?),
                     false => Part::Done(ActionStatus::Ended),
                 })
             }

@@ -53,7 +53,7 @@ pub struct Projection {
 
 impl Projection {
     /// Its place at `now` in `chain`'s measure (`None` where its lane ends first).
-    fn s_at(&self, chain: RoadChain<'_>, now: Real) -> Option<Real> {
+    pub(crate) fn s_at(&self, chain: RoadChain<'_>, now: Real) -> Option<Real> {
         let d = (self.speed * (now - self.time)).abs();
         let forward = self.forward == (self.speed >= 0.0);
         chain

@@ -169,6 +169,11 @@ pub struct StateCheck {
     /// phase's end), not only when it starts: the action runs until then, checking them again
     /// in each step (§8.9 `at: all`); a mark is noted at the start only.
     pub throughout: bool,
+    /// Held ([`Self::throughout`]): the entity of `gap` and `lane_of` is read as projected from
+    /// the check's start (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track: projected`): along its
+    /// lane at the speed it has then (a time gap at that speed), in its lane then, whatever it
+    /// does after.
+    pub projected: bool,
 }
 
 /// A heading a [`StateCheck`] requires of its actor (oscsim, no XML form): the heading `from`
