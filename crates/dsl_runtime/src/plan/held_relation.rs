@@ -25,7 +25,9 @@
 //! `SpeedTarget::RelativeAtStart`). A phase whose end the plan does not know is the engine's held check from
 //! its known start, as is a relation to an x the engine moves then (a gap action's or a
 //! model's controller: the plan has no track of x; an actor held to such an x is the engine's
-//! to move too). Not for groups (each member's place is its formation's).
+//! to move too). A group's relation is member 0's, the group's reference (each other
+//! member's place is its formation's from member 0): checked as above, never moving a member
+//! (no hold, no lane following, no speed of x's kept: `hold_relation`'s `moves`).
 //!
 //! The plan checks its own tracks at the engine's steps from the phase start to its end, s
 //! within [`POSITION_TOLERANCE`] of x's s ∓ d (d at x's speed then for a time), the lane the
@@ -107,7 +109,8 @@ fn free_along(kind: Action, mods: &[Modifier], m: &Modifier) -> bool {
 
 impl Planner<'_> {
     /// Plans `m`, a relation to another actor at: all of `target` in an invocation `kind`
-    /// with `mods` over its phase from `t0` (`None`: a run-time start) to `te` (if known)
+    /// with `mods` (`moves`: the relation may set the actor's motion; not a group's member 0,
+    /// whose formation moves by its own modifiers) over its phase from `t0` (`None`: a run-time start) to `te` (if known)
     /// (module doc): the engine's hold where it determines the motion, else the plan's check
     /// once every phase is planned, or the engine's held check where the plan knows the start
     /// but not the end (after a run-time start `runtime::start_check` holds it).
@@ -116,7 +119,7 @@ impl Planner<'_> {
         &mut self,
         m: &Modifier,
         target: &str,
-        (kind, mods): (Action, &[Modifier]),
+        (kind, mods, moves): (Action, &[Modifier], bool),
         (t0, te): (Option<f64>, Option<f64>),
         name: &mut dyn FnMut(&str) -> String,
         out: &mut Vec<Planned>,
@@ -125,11 +128,11 @@ impl Planner<'_> {
             return Ok(());
         }
         if m.projected {
-            return self.hold_projected(m, target, (kind, mods), (t0, te), name, out);
+            return self.hold_projected(m, target, (kind, mods, moves), (t0, te), name, out);
         }
         // A default gap is held where the plan knows x's speed at the start (module doc).
         let default_gap = m.arg("distance").is_none() && m.arg("time").is_none();
-        if holds_motion(kind, mods, m) && !(default_gap && t0.is_none()) {
+        if moves && holds_motion(kind, mods, m) && !(default_gap && t0.is_none()) {
             let hold = self.hold_gap(m, target, t0.map(|t| (t, te)), name("hold"))?;
             out.push(hold);
             return Ok(());
@@ -140,7 +143,8 @@ impl Planner<'_> {
         let te = te.filter(|_| !self.engine_moved.contains_key(&x));
         match (t0, te) {
             (Some(t0), Some(te)) => {
-                if m.kind == ModKind::Lane && kind == Action::Move && !moves_sideways(mods) {
+                if moves && m.kind == ModKind::Lane && kind == Action::Move && !moves_sideways(mods)
+                {
                     self.follow_lanes(m, target, (&x, t0, te), name, out)?;
                 }
                 self.held_relations
@@ -167,7 +171,7 @@ impl Planner<'_> {
         &mut self,
         m: &Modifier,
         target: &str,
-        (kind, mods): (Action, &[Modifier]),
+        (kind, mods, moves): (Action, &[Modifier], bool),
         (t0, te): (Option<f64>, Option<f64>),
         name: &mut dyn FnMut(&str) -> String,
         out: &mut Vec<Planned>,
@@ -176,7 +180,7 @@ impl Planner<'_> {
         // x's speed at the start where the plan has x's track then.
         let planned = !self.engine_moved.contains_key(&x);
         let v0 = t0.filter(|_| planned).map(|t| self.track(&x).at(t).1);
-        if free_along(kind, mods, m) {
+        if moves && free_along(kind, mods, m) {
             let keep = match (t0, v0) {
                 (Some(t0), Some(v)) => {
                     self.track_mut(target).ramp(t0, t0, v);

@@ -575,17 +575,24 @@ impl Planner<'_> {
                     }
                     (ModKind::Position, At::Start | At::All)
                     | (ModKind::Lane, At::Start | At::All) => {
-                        if !first {
+                        // A group's place is member 0's, its reference (the others are at
+                        // their formation's places from it).
+                        let (alone, reference) = match self.groups.get(&inv.actor) {
+                            None => (true, true),
+                            Some(g) => (false, g.first() == Some(target)),
+                        };
+                        if !first && reference {
                             match t0 {
                                 Some(t) => self.check_start(m, target, t)?,
                                 // After a run-time start the engine checks it (plan::runtime).
                                 None => out.push(self.start_check(m, target, name("check"))?),
                             }
                         }
-                        // Relative to another actor at: all, held throughout (held_relation).
-                        if m.at == At::All && !self.groups.contains_key(&inv.actor) {
+                        // Relative to another actor at: all, held throughout (held_relation);
+                        // a group's is member 0's and moves no member.
+                        if m.at == At::All && reference {
                             let span = (t0, end_known);
-                            let kind = (inv.kind, mods);
+                            let kind = (inv.kind, mods, alone);
                             self.hold_relation(m, target, kind, span, &mut name, out)?;
                         }
                     }

@@ -289,3 +289,12 @@ fn a_position_behind_a_projected_actor_after_an_until_is_the_engines_check_held_
         6.0,
     );
 }
+
+/// group_behind_fails.osc: a group's position(50m, behind: lead) at: all is member 0's, checked
+/// at every step: member 0 at its own 10 m/s while lead accelerates at 2 m/s², 50 + τ² m apart,
+/// 50.56 m at 2.75 s, the first step 0.5 m off: an error before the run.
+#[test]
+fn a_groups_position_behind_another_that_breaks_is_an_error_before_the_run() {
+    let want = "expected `g.vehicles[0]` 50.00 m behind `lead` throughout the phase (position(…) at: all, within 0.5 m), found 50.56 m at 2.75 s: `g.vehicles[0]`'s speed 10.00 m/s, `lead`'s 11.50 m/s at ";
+    refused("group_behind_fails", want, "29:17");
+}
