@@ -298,3 +298,31 @@ fn a_groups_position_behind_another_that_breaks_is_an_error_before_the_run() {
     let want = "expected `g.vehicles[0]` 50.00 m behind `lead` throughout the phase (position(…) at: all, within 0.5 m), found 50.56 m at 2.75 s: `g.vehicles[0]`'s speed 10.00 m/s, `lead`'s 11.50 m/s at ";
     refused("group_behind_fails", want, "29:17");
 }
+
+/// lane_same_as_projected_runtime.osc: after the until at 5.75 s npc changes into lane -1 over
+/// 4 s; ego, lane(same_as: npc, track: projected) beside keep_lane(), stays in npc's lane of
+/// the start, -2, at every step while npc is in lane -1 from 7.75 s: the engine's check held
+/// over the phase against that lane passes.
+#[test]
+fn a_lane_same_as_a_projected_actor_after_an_until_is_its_lane_at_the_start() {
+    let lowered =
+        lower("held/lane_same_as_projected_runtime", 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = run_to_error(&lowered.scenario);
+    assert!(
+        error.is_none() && records.is_empty(),
+        "{error:?} {records:?}"
+    );
+    let r = run("held/lane_same_as_projected_runtime", 0, None);
+    let (s, e) = r.phase("do.both");
+    assert!(
+        (s - 5.75).abs() < T_TOL && (e - 9.75).abs() < T_TOL,
+        "[{s}, {e}]"
+    );
+    for k in 0..=80 {
+        let t = 5.75 + k as f64 * DT;
+        assert_eq!(r.at(t, "ego").lane, -2, "{t}");
+    }
+    assert_eq!(r.at(8.0, "npc").lane, -1);
+    assert_eq!(r.at(9.75, "npc").lane, -1);
+    r.held("do.both.0/ego/1:check", (5.75, 9.75));
+}

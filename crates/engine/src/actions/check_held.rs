@@ -72,11 +72,17 @@ impl HeldCheck {
                 match of {
                     None => None,
                     Some(x) => {
-                        let Some(from) = check::projection(world, &x, time) else {
+                        let Some(mut from) = check::projection(world, &x, time) else {
                             let fail = check::failure(check, time);
                             let want = format!("'{x}' on a lane to project it from");
                             return Err(fail(want, "it off every lane".into()));
                         };
+                        // Its lane then: the one its reference point is in (its track's
+                        // may already be the target of a lane change starting now).
+                        let there = world.id(&x).map(|o| world.entity(o));
+                        if let Some(p) = there.and_then(|o| o.road_position.as_ref()) {
+                            from.lane = p.lane_id;
+                        }
                         let lane_of = lane_of.map(|(_, n)| n);
                         Some(Projected { from, gap, lane_of })
                     }
