@@ -14,6 +14,17 @@ const S_TOL: f64 = 1e-6;
 /// Event times are step times.
 const T_TOL: f64 = 1e-9;
 
+/// The run of `tests/scenarios/NAME.osc`, which ends without an error or an error record.
+fn passes(name: &str) -> crate::support::Run {
+    let lowered = lower(name, 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = run_to_error(&lowered.scenario);
+    assert!(
+        error.is_none() && records.is_empty(),
+        "{error:?} {records:?}"
+    );
+    run(name, 0, None)
+}
+
 /// The plan's error of `tests/scenarios/held/NAME.osc`: `want`, then its place `at`.
 fn refused(name: &str, want: &str, at: &str) {
     let e = error(&format!("held/{name}"));
@@ -107,13 +118,7 @@ fn a_lane_same_as_another_that_changes_lane_with_it_holds_throughout() {
 /// t − t_x held over the phase passes (the run ends without an error).
 #[test]
 fn a_lateral_position_beside_another_after_an_until_follows_it_throughout() {
-    let lowered = lower("held/lateral_follow_runtime", 0, None).unwrap_or_else(|e| panic!("{e}"));
-    let (error, records) = run_to_error(&lowered.scenario);
-    assert!(
-        error.is_none() && records.is_empty(),
-        "{error:?} {records:?}"
-    );
-    let r = run("held/lateral_follow_runtime", 0, None);
+    let r = passes("held/lateral_follow_runtime");
     let (s, e) = r.phase("do.shift");
     assert!(
         (s - 3.35).abs() < T_TOL && (e - 5.35).abs() < T_TOL,
@@ -248,13 +253,7 @@ fn a_speed_faster_than_another_in_a_first_phase_follows_its_speed_throughout() {
 /// 266.1 m); the engine's check against the projection, held over the phase, passes.
 #[test]
 fn a_position_behind_a_projected_actor_after_an_until_keeps_its_speed_of_the_start() {
-    let lowered = lower("held/behind_projected_runtime", 0, None).unwrap_or_else(|e| panic!("{e}"));
-    let (error, records) = run_to_error(&lowered.scenario);
-    assert!(
-        error.is_none() && records.is_empty(),
-        "{error:?} {records:?}"
-    );
-    let r = run("held/behind_projected_runtime", 0, None);
+    let r = passes("held/behind_projected_runtime");
     let (s, e) = r.phase("do.cruise");
     assert!(
         (s - 5.75).abs() < T_TOL && (e - 7.75).abs() < T_TOL,
@@ -305,14 +304,7 @@ fn a_groups_position_behind_another_that_breaks_is_an_error_before_the_run() {
 /// over the phase against that lane passes.
 #[test]
 fn a_lane_same_as_a_projected_actor_after_an_until_is_its_lane_at_the_start() {
-    let lowered =
-        lower("held/lane_same_as_projected_runtime", 0, None).unwrap_or_else(|e| panic!("{e}"));
-    let (error, records) = run_to_error(&lowered.scenario);
-    assert!(
-        error.is_none() && records.is_empty(),
-        "{error:?} {records:?}"
-    );
-    let r = run("held/lane_same_as_projected_runtime", 0, None);
+    let r = passes("held/lane_same_as_projected_runtime");
     let (s, e) = r.phase("do.both");
     assert!(
         (s - 5.75).abs() < T_TOL && (e - 9.75).abs() < T_TOL,
@@ -325,4 +317,23 @@ fn a_lane_same_as_a_projected_actor_after_an_until_is_its_lane_at_the_start() {
     assert_eq!(r.at(8.0, "npc").lane, -1);
     assert_eq!(r.at(9.75, "npc").lane, -1);
     r.held("do.both.0/ego/1:check", (5.75, 9.75));
+}
+
+/// lateral_projected_runtime.osc: after the until at 3.35 s npc moves 1 m right over 2 s; ego,
+/// lateral(3.5m, left_of: npc, track: projected) at: all, stays 3.5 m left of npc's t at 3.35 s:
+/// y = -5.25 m at every step while npc reaches -9.75 m; the engine's check against that t, held
+/// over the phase, passes.
+#[test]
+fn a_lateral_position_beside_a_projected_actor_after_an_until_is_beside_its_t_at_the_start() {
+    let r = passes("held/lateral_projected_runtime");
+    for k in 0..=40 {
+        let t = 3.35 + k as f64 * DT;
+        let ego = r.at(t, "ego");
+        assert!(
+            (ego.y + 5.25).abs() < S_TOL && ego.lane == -2,
+            "{t}: {ego:?}"
+        );
+    }
+    assert!((r.at(5.35, "npc").y + 9.75).abs() < S_TOL);
+    r.held("do.shift.0/ego/1:check", (3.35, 5.35));
 }

@@ -13,7 +13,8 @@
 //! later step as projected from there: along that lane's centre line at that speed, in the
 //! check's measure (`position::RoadChain`: the plan's s, u along the direction of travel of an
 //! actor driving against s, the projection along the entity's own direction of travel), the
-//! gap at that speed, the lane counted from that lane in its direction of travel then.
+//! gap at that speed, the lane counted from that lane in its direction of travel then, a t
+//! beside it (`StateCheck::beside`) from its t then (the DSL plan's reading at a known start).
 
 use opendrive::Direction;
 use scenario::{SourcePos, StateCheck};
@@ -32,7 +33,8 @@ use crate::EntityId;
 pub(crate) struct HeldCheck {
     /// What it requires (with a projection: all but the gap and lane count read from it).
     check: Box<StateCheck>,
-    /// With `track: projected`: the gap's or lane count's entity projected from the start.
+    /// With `track: projected`: the entity of the gap, lane count or t beside, projected from
+    /// the start.
     projection: Option<Projected>,
     /// Where it is written.
     pos: SourcePos,
@@ -43,12 +45,17 @@ pub(crate) struct HeldCheck {
 /// What a projected check reads from its entity's projection.
 #[derive(Debug, Clone)]
 struct Projected {
+    /// The entity's name.
+    name: String,
     /// The entity as it was at the start.
     from: Projection,
     /// The gap (`StateCheck::gap`) measured from it.
     gap: Option<(scenario::SpeedGap, f64)>,
     /// The lane count (`StateCheck::lane_of`) from its lane then.
     lane_of: Option<i32>,
+    /// The actor's t minus the entity's then (`StateCheck::beside`, m, positive left), the
+    /// tolerance (m), and the entity's t then (m).
+    beside: Option<(f64, f64, f64)>,
 }
 
 impl HeldCheck {
@@ -65,10 +72,12 @@ impl HeldCheck {
             true => {
                 let gap = held.gap.take();
                 let lane_of = held.lane_of.take();
+                let beside = held.beside.take();
                 let of = gap
                     .as_ref()
                     .map(|(g, _)| g.entity_ref.clone())
-                    .or(lane_of.as_ref().map(|(x, _)| x.clone()));
+                    .or(lane_of.as_ref().map(|(x, _)| x.clone()))
+                    .or(beside.as_ref().map(|(x, _, _)| x.clone()));
                 match of {
                     None => None,
                     Some(x) => {
@@ -80,11 +89,21 @@ impl HeldCheck {
                         // Its lane then: the one its reference point is in (its track's
                         // may already be the target of a lane change starting now).
                         let there = world.id(&x).map(|o| world.entity(o));
-                        if let Some(p) = there.and_then(|o| o.road_position.as_ref()) {
+                        let at = there.and_then(|o| o.road_position.as_ref());
+                        if let Some(p) = at {
                             from.lane = p.lane_id;
                         }
                         let lane_of = lane_of.map(|(_, n)| n);
-                        Some(Projected { from, gap, lane_of })
+                        // x's t then (the start check found x on a road beside the actor).
+                        let t_x = at.map_or(0.0, |p| p.t);
+                        let beside = beside.map(|(_, dt, tol)| (dt, tol, t_x));
+                        Some(Projected {
+                            name: x,
+                            from,
+                            gap,
+                            lane_of,
+                            beside,
+                        })
                     }
                 }
             }
@@ -153,6 +172,19 @@ fn require_projected(
                     x.time
                 ),
                 format!("it in lane {} of road {}", at.lane_id, at.road_id),
+            ));
+        }
+    }
+    // Beside x projected: x's t at the start (along its lane, as the plan reads it).
+    if let Some((dt, tol, t_x)) = p.beside {
+        let got = chain.left(at.t - t_x);
+        if !on || (got - dt).abs() > tol {
+            return Err(fail(
+                format!(
+                    "'{}' {dt:.3} m to the left of where '{}' was across the road at {:.3} s (within {tol} m)",
+                    e.name, p.name, x.time
+                ),
+                format!("{got:.3} m on road {}", at.road_id),
             ));
         }
     }
