@@ -25,6 +25,19 @@ fn passes(name: &str) -> crate::support::Run {
     run(name, 0, None)
 }
 
+/// ego at `v` from s = `s0` at `t0`, at each of the `steps` steps after: s0 + v·(t − t0).
+fn at_speed_from(r: &crate::support::Run, (t0, s0): (f64, f64), v: f64, steps: usize) {
+    for k in 1..=steps {
+        let t = t0 + k as f64 * DT;
+        let ego = r.at(t, "ego");
+        let want = s0 + v * (t - t0);
+        assert!(
+            (ego.s - want).abs() < S_TOL && (ego.speed - v).abs() < S_TOL,
+            "{t}: {ego:?}, want {want}"
+        );
+    }
+}
+
 /// The plan's error of `tests/scenarios/held/NAME.osc`: `want`, then its place `at`.
 fn refused(name: &str, want: &str, at: &str) {
     let e = error(&format!("held/{name}"));
@@ -182,15 +195,7 @@ fn a_first_phases_position_ahead_of_another_its_speed_breaks_is_an_error_before_
 #[test]
 fn a_position_behind_a_projected_actor_alone_keeps_its_speed_of_the_start() {
     let r = run("held/behind_projected", 0, None);
-    for k in 1..=100 {
-        let t = 2.0 + k as f64 * DT;
-        let ego = r.at(t, "ego");
-        let want = 130.0 + 8.0 * (t - 2.0);
-        assert!(
-            (ego.s - want).abs() < S_TOL && (ego.speed - 8.0).abs() < S_TOL,
-            "{t}: {ego:?}, want {want}"
-        );
-    }
+    at_speed_from(&r, (2.0, 130.0), 8.0, 100);
     assert!((r.at(6.0, "lead").s - 210.2).abs() < S_TOL);
 }
 
@@ -259,15 +264,7 @@ fn a_position_behind_a_projected_actor_after_an_until_keeps_its_speed_of_the_sta
         (s - 5.75).abs() < T_TOL && (e - 7.75).abs() < T_TOL,
         "[{s}, {e}]"
     );
-    for k in 1..=40 {
-        let t = 5.75 + k as f64 * DT;
-        let ego = r.at(t, "ego");
-        let want = 186.25 + 8.0 * (t - 5.75);
-        assert!(
-            (ego.s - want).abs() < S_TOL && (ego.speed - 8.0).abs() < S_TOL,
-            "{t}: {ego:?}, want {want}"
-        );
-    }
+    at_speed_from(&r, (5.75, 186.25), 8.0, 40);
     assert!((r.at(7.75, "lead").s - 266.1).abs() < S_TOL);
     r.held("do.cruise.0/ego/1:check", (5.75, 7.75));
 }
@@ -336,4 +333,24 @@ fn a_lateral_position_beside_a_projected_actor_after_an_until_is_beside_its_t_at
     }
     assert!((r.at(5.35, "npc").y + 9.75).abs() < S_TOL);
     r.held("do.shift.0/ego/1:check", (3.35, 5.35));
+}
+
+/// behind_projected_until.osc: from 2 s (a start the plan knows) until lead is above 12 m/s
+/// (an end it does not), ego, free along its lane, 32 m behind lead projected from 2 s, keeps
+/// lead's 8 m/s of the start: s_ego = 130 + 8·τ at every step to 4 s while lead accelerates;
+/// the engine's check against the projection, held over the phase, passes.
+#[test]
+fn a_position_behind_a_projected_actor_until_a_run_time_end_is_the_engines_held_check() {
+    let r = passes("held/behind_projected_until");
+    let (s, e) = r.phase("do.follow.0");
+    assert!(
+        (s - 2.0).abs() < T_TOL && (4.0..=4.2).contains(&e),
+        "[{s}, {e}]"
+    );
+    at_speed_from(&r, (2.0, 130.0), 8.0, 40);
+    let check = "do.follow.0/ego/2:check";
+    assert!(r
+        .when(check, "Start")
+        .is_some_and(|t| (t - 2.0).abs() < T_TOL));
+    assert!(r.when(check, "End").is_none());
 }
