@@ -354,3 +354,20 @@ fn a_position_behind_a_projected_actor_until_a_run_time_end_is_the_engines_held_
         .is_some_and(|t| (t - 2.0).abs() < T_TOL));
     assert!(r.when(check, "End").is_none());
 }
+
+/// opposite_behind_projected_fails.osc: npc and truck oncoming (lane 1, driven in -s); after
+/// quick at 1.10 s npc at its own 23 m/s 30 m behind truck projected from then at 20 m/s along
+/// their direction of travel: the gap 30 − 3·τ, 29.40 m at 1.30 s, the first step 0.5 m off: an
+/// error record (at the end of that step, 1.35 s) and a failed run.
+#[test]
+fn an_oncoming_position_behind_a_projected_actor_is_measured_along_its_direction_of_travel() {
+    let want = "expected 'truck' projected from 1.100 s at 20.000 m/s 30.000 m from 'npc' along the direction of travel (against s) (within 0.5 m) (position(…) at ";
+    let tail = "held/opposite_behind_projected_fails.osc:45:17), found 29.400 m at t = 1.300 s";
+    let element = "do.2.1/npc/2:check";
+    fails(
+        "held/opposite_behind_projected_fails",
+        (want, tail),
+        element,
+        1.35,
+    );
+}
