@@ -581,7 +581,12 @@ impl Planner<'_> {
                             None => (true, true),
                             Some(g) => (false, g.first() == Some(target)),
                         };
-                        if !first && reference {
+                        // A first phase is placed by it, but one that starts at run time
+                        // starts where the actor's motion before it has taken it (placed at
+                        // the run's start): a relation to another actor is the engine's check
+                        // then too, held at: all (issue 27).
+                        let late = t0.is_none() && super::held_relation::relation(m);
+                        if (!first || late) && reference {
                             match t0 {
                                 Some(t) => self.check_start(m, target, t)?,
                                 // After a run-time start the engine checks it (plan::runtime).

@@ -371,3 +371,20 @@ fn an_oncoming_position_behind_a_projected_actor_is_measured_along_its_direction
         1.35,
     );
 }
+
+/// first_phase_runtime_fails.osc: npc's first phase starts at 5.75 s (after an until) with
+/// position(30m, behind: lead) at: all; placed 30 m behind lead at the run's start and driving
+/// its 20 m/s from then, npc is 39 m ahead of lead when the phase starts: the engine's check
+/// then, an error record at 5.75 s and a failed run.
+#[test]
+fn a_first_phase_after_a_run_time_start_is_the_engines_check_of_its_relation() {
+    let want = "expected 'lead' 30.000 m from 'npc' along the road (within 0.5 m) (position(…) at ";
+    let tail = "held/first_phase_runtime_fails.osc:28:17), found -39.000 m at t = 5.750 s";
+    let element = "do.later.0/npc/1:check";
+    fails(
+        "held/first_phase_runtime_fails",
+        (want, tail),
+        element,
+        5.75,
+    );
+}
