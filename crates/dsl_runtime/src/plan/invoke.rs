@@ -583,9 +583,10 @@ impl Planner<'_> {
                         };
                         // A first phase is placed by it, but one that starts at run time
                         // starts where the actor's motion before it has taken it (placed at
-                        // the run's start): a relation to another actor is the engine's check
-                        // then too, held at: all (issue 27).
-                        let late = t0.is_none() && super::held_relation::relation(m);
+                        // the run's start): its place (position(d), lane(n)) or relation to
+                        // another actor is the engine's check then too, a relation held at:
+                        // all (issue 27).
+                        let late = t0.is_none();
                         if (!first || late) && reference {
                             match t0 {
                                 Some(t) => self.check_start(m, target, t)?,

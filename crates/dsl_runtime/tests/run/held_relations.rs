@@ -388,3 +388,19 @@ fn a_first_phase_after_a_run_time_start_is_the_engines_check_of_its_relation() {
         5.75,
     );
 }
+
+/// first_phase_runtime_position_fails.osc: npc's first phase starts at run time (5.75 s) and
+/// asks position(50m, at: start); placed there at the run's start at 20 m/s, npc is at 165 m
+/// when the phase starts: the engine's check then, an error record at 5.75 s and a failed run.
+#[test]
+fn a_first_phases_absolute_position_after_a_run_time_start_is_the_engines_check() {
+    let want = "expected 'npc' at s = 50.000 m (within 0.5 m) (position(…) at ";
+    let tail = "held/first_phase_runtime_position_fails.osc:29:17), found it at s = 165.000 m at t = 5.750 s";
+    fails(
+        "held/first_phase_runtime_position_fails",
+        (want, tail),
+        // Its second check: lane(2)'s, the first, holds.
+        "do.later.0/npc/2:check",
+        5.75,
+    );
+}

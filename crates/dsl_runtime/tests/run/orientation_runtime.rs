@@ -110,7 +110,7 @@ fn a_first_phase_at_run_time_sets_no_yaw_and_its_heading_is_the_engines_check() 
     let error = error.unwrap_or_else(|| panic!("{name}: the run ends"));
     let want = "expected 'ego' at heading 0.7854 rad (absolute 0.7854 rad, within 0.001 rad) (orientation(…) at ";
     let tail = format!(
-        "{name}.osc:27:38), found it at 0.0000 rad, its lane's heading 0.0000 rad at t = 2.550 s"
+        "{name}.osc:30:38), found it at 0.0000 rad, its lane's heading 0.0000 rad at t = 2.550 s"
     );
     assert!(error.starts_with(want) && error.ends_with(&tail), "{error}");
     assert_eq!(records.len(), 1, "{records:?}");
