@@ -17,7 +17,7 @@
 use dsl::semantics::hir::{Arg, Behavior, BinOp, CoverageKind, Expr, ExprKind, Labeled, Member};
 use scenario::SourcePos;
 
-use super::eval::{bind, Eval as Ctx};
+use super::eval::{bind, bound_to, Eval as Ctx};
 use super::value::Val;
 use crate::error::{Error, ErrorKind as K};
 
@@ -223,7 +223,7 @@ fn item(
 ) -> Result<CoverItem, Error> {
     let params: Vec<String> = PARAMS.iter().map(|p| p.to_string()).collect();
     let bound = bind(args, &params);
-    let get = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+    let get = |n: &str| bound_to(&bound, n);
     let err = |at: dsl::semantics::hir::Span, m: String| ctx.files.err(K::Value, at, m);
     let word = if kind == CoverageKind::Record {
         "record"
@@ -411,7 +411,7 @@ fn run_expr(ctx: &Ctx<'_>, e: &Expr, entities: &[String]) -> Result<RunExpr, Err
                 .map(String::from)
                 .to_vec();
             let bound = bind(args, &params);
-            let arg = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, x)| *x);
+            let arg = |n: &str| bound_to(&bound, n);
             let reference = || {
                 arg("reference")
                     .and_then(|r| entity(ctx, r, entities))

@@ -311,3 +311,8 @@ pub(crate) fn bind<'e>(args: &'e [HirArg], params: &[String]) -> Vec<(String, &'
     }
     out
 }
+
+/// The argument [`bind`] matched to parameter `name`, if any.
+pub(crate) fn bound_to<'e>(bound: &[(String, &'e Expr)], name: &str) -> Option<&'e Expr> {
+    bound.iter().find(|(p, _)| p == name).map(|(_, e)| *e)
+}

@@ -13,7 +13,7 @@ use dsl::semantics::hir::{Arg as HirArg, Expr, ExprKind};
 use dsl::Value;
 
 use super::action::Action;
-use super::eval::{bind, Eval};
+use super::eval::{bind, bound_to, Eval};
 use super::route::{map_call, odr_point};
 use super::value::{Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
@@ -206,7 +206,7 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
                 };
                 let names = params(ps);
                 let bound = bind(args, &names);
-                let given = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+                let given = |n: &str| bound_to(&bound, n);
                 let list = |n: &str| match given(n).map(|e| &e.kind) {
                     Some(ExprKind::List(items)) => Ok(items.as_slice()),
                     _ => Err(bad(&format!(

@@ -59,7 +59,7 @@
 use dsl::semantics::hir::{Expr, ExprKind};
 use dsl::Value;
 
-use super::eval::{bind, Eval as Ctx};
+use super::eval::{bind, bound_to, Eval as Ctx};
 use super::value::{arg, Args};
 use crate::error::{Error, ErrorKind as K, Site};
 
@@ -493,7 +493,7 @@ fn route_point(
 ) -> Result<Route, Error> {
     let params = ["route", "s", "t"].map(String::from);
     let bound = bind(args, &params);
-    let get = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, a)| *a);
+    let get = |n: &str| bound_to(&bound, n);
     let Some(r) = get("route") else {
         return Err(ctx.files.err(
             K::Value,
@@ -627,8 +627,8 @@ fn xyz_point(
     let params: Vec<String> = ["x", "y", "z"].iter().map(|s| s.to_string()).collect();
     let bound = bind(args, &params);
     let coord = |n: &str| -> Result<f64, Error> {
-        match bound.iter().find(|(p, _)| p == n) {
-            Some((_, a)) => ctx.number(a),
+        match bound_to(&bound, n) {
+            Some(a) => ctx.number(a),
             None => Err(ctx.files.err(
                 K::Value,
                 e.span,
@@ -661,7 +661,7 @@ fn route_start(
     // (`crate::plan`'s `locate_points`).
     let params = ["road_id", "lane_id", "s", "t"].map(String::from);
     let bound = bind(args, &params);
-    let get = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+    let get = |n: &str| bound_to(&bound, n);
     // Not given, or given as the declaration's default "".
     let omitted = match get("lane_id") {
         None => true,
@@ -719,7 +719,7 @@ fn route_points(
         .map(|s| s.to_string())
         .collect();
     let bound = bind(args, &params);
-    let arg = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+    let arg = |n: &str| bound_to(&bound, n);
     if let Some(c) = arg("connect_points_by") {
         let member = match &c.kind {
             ExprKind::EnumValue(_, m) => Some(m.text.as_str()),
@@ -884,7 +884,7 @@ pub(crate) fn odr_point(
         .map(|s| s.to_string())
         .collect();
     let bound = bind(args, &params);
-    let arg = |n: &str| bound.iter().find(|(p, _)| p == n).map(|(_, e)| *e);
+    let arg = |n: &str| bound_to(&bound, n);
     let text = |n: &str| -> Result<String, Error> {
         let a = arg(n).ok_or_else(|| {
             ctx.files.err(
