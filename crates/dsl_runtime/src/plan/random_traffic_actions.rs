@@ -20,8 +20,21 @@
 //! | `keep_speed()` | v0 = the speed the member has at the phase start (a SpeedAction to its own speed) | by its duration or `until` |
 //! | `remain_stationary()` | v0 = 0: the model brakes at its comfortable deceleration b to a stop and stands | by its duration or `until` |
 //! | `change_lane(n, side [, reference: x])` | a LaneChangeAction to the lane n to the side of its own (x's) lane in its direction of travel, which `mobil` makes its next lane change with its own lateral shape; no drivable lane there driven the same way: the member keeps its lane (the engine logs it) | at once, or by the action's `duration:` |
-//! | `lane(n [, from: left])` (at: all, end) beside an action | as `keep_lane()`, the member changed to the lane so numbered in its direction of travel (the engine's LaneChangeAction, sinusoidal at 1 m/s peak) instead of its own lane's centre; the number must name one lane all along the plan's roads; `lane(same_as/left_of/right_of/side_of: x)`: the members driving x's way changed to x's lane or the one n beside it (a RelativeTargetLane on x), the others kept in their lanes | by its duration or `until` |
+//! | `lane(n [, from: left])` (at: all, end) beside an action | as `keep_lane()`, the member changed to the lane so numbered in its direction of travel where it is when the phase starts (the engine's LaneChangeAction to oscsim's `LaneChangeTarget::Numbered` on the member, sinusoidal at 1 m/s peak) instead of its own lane's centre; the lane must be there all along the plan's roads in each direction a member drives; `lane(same_as/left_of/right_of/side_of: x)`: the members driving x's way changed to x's lane or the one n beside it (a RelativeTargetLane on x), the others kept in their lanes | by its duration or `until` |
 //! | `follow_lane()`, `keep_lane()` beside an action | the model's lateral domain taken back over the phase (ActivateControllerAction, lateral false): the default controller keeps the member in the lane it is in, brought to its centre (a LaneChangeAction to that lane: a change under way ends there); handed back at the phase end | by its duration or `until` |
+//!
+//! Where the road's lanes are numbered otherwise along it (a lane added or dropped at a lane
+//! section), the number is counted where each member is when the phase starts: §8.9.1.1.1
+//! gives `at: all` as "This constraint holds throughout this phase (default)", and §8.9 counts
+//! `lane(n)` across the road (`lane(lane: 1)`, `lane(1)` and `lane()` "have the same effect":
+//! the rightmost driving lane of the direction of travel, `crate::road`) without saying at
+//! which s; the member's place at the phase start is the one the engine knows, its model having
+//! driven it there. So the plan checks only that lane n is there all along the plan's roads
+//! in each direction a member drives (else an error at the modifier, `Unsatisfiable`), and
+//! the engine reads the lane's id at the member's road, side and s as the phase starts. Over
+//! the phase the member keeps that lane (the default controller follows its id), also where
+//! the numbering changes under it later: oscsim's choice, as the equal-numbering case keeps
+//! the id it changed to.
 //!
 //! Bad input, refused at its place with §8.7.18.1's words ("the behavioral model assigned to
 //! each vehicle defines the actual behavior of the vehicle within the group"): `rate_profile`/
@@ -82,7 +95,8 @@ struct Asked {
     /// The action's `duration:`.
     own: Option<f64>,
     /// `lane(n [, from: left])` at: all or end: each member changed to the lane so numbered
-    /// in its direction of travel at the phase start, kept there over the phase (`hold_lane`).
+    /// in its direction of travel where it is at the phase start, kept there over the phase
+    /// (`hold_lane`).
     lane: Option<LaneAsk>,
 }
 
@@ -269,9 +283,8 @@ fn ask(p: &Phase, inv: &Invoke, idm: bool) -> Result<Asked, Error> {
 }
 
 /// The lane `lane(n [, from: left])` `m` beside a later action of random traffic `g` asks:
-/// (n, from the left, its place). At: start is bad input: it asks each member in lane n as
-/// the phase starts, where its model has put it; a lane relative to another actor is not run
-/// yet.
+/// (n, from the left, its place), or the lane beside another actor. At: start is bad input:
+/// it asks each member in lane n as the phase starts, where its model has put it.
 fn numbered_lane(g: &str, m: &Modifier) -> Result<LaneAsk, Error> {
     if m.at == At::Start {
         return Err(m.site.err(
@@ -348,16 +361,27 @@ impl Planner<'_> {
             own,
             lane,
         } = ask(p, inv, idm)?;
-        // The lane so numbered in each direction of travel, the same all along the plan's
-        // roads (the plan does not know where a member is then).
+        // Lane n of each direction a member drives, which each member changes to as it is
+        // numbered where the member is when the phase starts (the plan does not know where
+        // that is: the lane must be there all along the plan's roads in its direction).
         let numbered = match &lane {
-            Some(LaneAsk::Numbered(n, from_left, site)) => Some([
-                self.numbered_all_along(&self.road, *n, *from_left, site)?,
-                match &self.against_road {
-                    Some(view) => self.numbered_all_along(view, *n, *from_left, site)?,
-                    None => None,
-                },
-            ]),
+            Some(LaneAsk::Numbered(n, from_left, site)) => {
+                for back in [false, true] {
+                    let Some(m) = members
+                        .iter()
+                        .find(|m| self.entities[self.index[*m]].against == back)
+                    else {
+                        continue;
+                    };
+                    let view = if back {
+                        self.against_road.as_ref()
+                    } else {
+                        Some(&self.road)
+                    };
+                    self.numbered_all_along(view, (*n, *from_left), site, m)?;
+                }
+                Some((u32::try_from(*n).unwrap_or(u32::MAX), *from_left))
+            }
             _ => None,
         };
         // Beside another actor x: x's direction of travel, which the members driving its way
@@ -398,17 +422,15 @@ impl Planner<'_> {
             let back = self.entities[self.index[m]].against;
             let kept = match (&numbered, &beside) {
                 (_, Some((x, by, x_back))) if *x_back == back => Some(lane_change_to(x, *by)),
-                (Some(ids), _) => {
-                    let id = ids[usize::from(back)].ok_or_else(|| {
-                        p.site.err(
-                            K::Unsatisfiable,
-                            format!("expected a driving lane numbered as lane(…) asks in the direction of `{m}` of random traffic, found none"),
-                        )
-                    })?;
+                (Some((n, from_left)), _) => {
                     Some(PrivateAction::Lateral(LateralAction::LaneChange {
                         target_lane_offset: None,
                         dynamics: default_dynamics(),
-                        target: LaneChangeTarget::Absolute(id.to_string()),
+                        target: LaneChangeTarget::Numbered {
+                            entity_ref: m.clone(),
+                            lane: *n,
+                            from_left: *from_left,
+                        },
                     }))
                 }
                 _ if hold_lane && !idm => Some(lane_change_to(m, 0)),
@@ -458,33 +480,37 @@ impl Planner<'_> {
         })
     }
 
-    /// Lane `n` (from the left: `from_left`) of `view`'s driving lanes, the same id all along
-    /// it (`None`: no such lane); numbered otherwise somewhere along it, not run yet (an
-    /// error at `site`).
+    /// Checks that `view` (the plan's roads in one direction of travel; `None`: no view against
+    /// s) has a driving lane numbered `n` (from the left: `from_left`) all along it, where
+    /// member `m` of random traffic may be when the phase starts; an error at `site` where it
+    /// has none.
     fn numbered_all_along(
         &self,
-        view: &PlanRoad<'_>,
-        n: i64,
-        from_left: bool,
+        view: Option<&PlanRoad<'_>>,
+        (n, from_left): (i64, bool),
         site: &Site,
-    ) -> Result<Option<i32>, Error> {
-        let steps = (view.length() / LANE_STEP).floor() as usize;
-        let at = |k: usize| {
-            view.numbered(
-                n,
-                from_left,
-                (k as f64 * LANE_STEP).min(view.length()),
-                false,
+        m: &str,
+    ) -> Result<(), Error> {
+        let side = if from_left { "left" } else { "right" };
+        let missing = |at: String| {
+            site.err(
+                K::Unsatisfiable,
+                format!("expected a driving lane numbered {n} from the {side} all along the plan's roads in the direction of `{m}` of random traffic (each member changes to that lane as numbered where it is when the phase starts, which its driver model decides: {BEHAVIOUR}), found none {at}"),
             )
         };
-        let first = at(0);
-        match (0..=steps).map(at).find(|l| *l != first) {
-            None => Ok(first),
-            Some(other) => Err(site.err(
-                K::Unsupported,
-                format!("expected lane {n} numbered the same all along the plan's roads for random traffic (each member changes to it wherever its model has it), found lanes {first:?} and {other:?} (not run yet)"),
-            )),
+        let Some(view) = view else {
+            return Err(missing(
+                "against s (the plan's roads have no lanes driven in −s all along)".into(),
+            ));
+        };
+        let steps = (view.length() / LANE_STEP).floor() as usize;
+        for k in 0..=steps {
+            let u = (k as f64 * LANE_STEP).min(view.length());
+            if view.numbered(n, from_left, u, false).is_none() {
+                return Err(missing(format!("{u:.1} m along its direction of travel")));
+            }
         }
+        Ok(())
     }
 
     /// The driver model of member `m` of random traffic (`idm`, `mobil`), if it has one.

@@ -30,6 +30,7 @@ mod overlap;
 mod position_actions;
 mod random_traffic;
 mod random_traffic_creation;
+mod random_traffic_later;
 mod random_traffic_runtime;
 mod relative_modifiers;
 mod reuse;

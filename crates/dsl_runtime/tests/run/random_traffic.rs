@@ -722,13 +722,20 @@ fn random_traffic_created_later_or_beside_another_reproduces_by_seed() {
     }
 }
 
-/// The centre of lane `lane` of tests/roads/straight.xodr (3.5 m lanes either side of y = 0).
+/// The centre of lane `lane` of tests/roads/straight.xodr (3.5 m lanes either side of y = 0;
+/// lane_add.xodr's lanes are the same).
 fn lane_centre(lane: i32) -> f64 {
     f64::from(lane.signum()) * (3.5 * f64::from(lane.abs()) - 1.75)
 }
 
 /// Asserts member `m` in lane `lane` on its centre (1e-6 m) at every step of [a, b] of run `r`.
-fn on_lane_centre(r: &crate::support::Run, seed: u64, m: &str, lane: i32, (a, b): (f64, f64)) {
+pub(crate) fn on_lane_centre(
+    r: &crate::support::Run,
+    seed: u64,
+    m: &str,
+    lane: i32,
+    (a, b): (f64, f64),
+) {
     for (t, objs) in r.frames.iter().filter(|(t, _)| *t >= a && *t <= b + 1e-9) {
         let o = objs
             .iter()

@@ -7,7 +7,7 @@ use scenario::{LaneChangeTarget, SourcePos, SpeedTarget, SpeedTargetValueType};
 
 use super::world::World;
 use crate::error::Error;
-use crate::world::lanes::lane_shift;
+use crate::world::lanes::{lane_shift, numbered_lane};
 use crate::world::EntityId;
 
 /// Looks up entity `name` for an action at `pos`: a declared entity that is in the scenario
@@ -63,8 +63,9 @@ pub(crate) fn target_speed(
     }
 }
 
-/// The lane id a LaneChangeTarget names: absolute, or counted from the reference entity's lane
-/// as seen in its direction of travel.
+/// The lane id a LaneChangeTarget names: absolute, counted from the reference entity's lane
+/// as seen in its direction of travel, or numbered across the reference's side of its road
+/// where it is (`Numbered`).
 pub(crate) fn target_lane(
     world: &World,
     target: &LaneChangeTarget,
@@ -88,6 +89,43 @@ pub(crate) fn target_lane(
                 ));
             };
             lane_shift(rp.lane_id, *value, track.direction)
+        }
+        LaneChangeTarget::Numbered {
+            entity_ref: name,
+            lane,
+            from_left,
+        } => {
+            let reference = world.entity(entity_ref(world, name, pos)?);
+            let Some(track) = &reference.track else {
+                return Err(Error::at(
+                    "a reference entity on a lane",
+                    format!("'{name}' off the road"),
+                    pos,
+                ));
+            };
+            let side = if *from_left { "left" } else { "right" };
+            world
+                .network
+                .road(&track.road_id)
+                .and_then(|road| {
+                    numbered_lane(
+                        road,
+                        track.lane_id,
+                        track.s,
+                        track.direction,
+                        (*lane, *from_left),
+                    )
+                })
+                .ok_or_else(|| {
+                    Error::at(
+                        format!(
+                            "a driving lane numbered {lane} from the {side} of road {} on the side of '{name}' (lane {}) at s = {:.3} m",
+                            track.road_id, track.lane_id, track.s
+                        ),
+                        "none",
+                        pos,
+                    )
+                })?
         }
         _ => return Err(Error::unsupported("this LaneChangeTarget", pos)),
     })

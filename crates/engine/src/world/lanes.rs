@@ -129,6 +129,36 @@ pub fn lane_shift(lane: i32, n: i32, direction: Direction) -> i32 {
     id
 }
 
+/// The drivable lane numbered `n` (1 or more) among the drivable lanes of the side of `road`
+/// that holds `lane`, at `s`, counted from the right as seen when driving in `direction` (from
+/// the left with `from_left`): ASAM OpenSCENARIO DSL 2.1 §8.9 `lane(n [, from: left])`.
+/// Driving towards +s, the rightmost is the smallest id (−3 before −2; 1 before 2 on the
+/// left side); towards −s the largest.
+pub fn numbered_lane(
+    road: &Road,
+    lane: i32,
+    s: Real,
+    direction: Direction,
+    (n, from_left): (u32, bool),
+) -> Option<i32> {
+    let section = road.lane_section_at(s);
+    let side = if lane > 0 {
+        &section.left
+    } else {
+        &section.right
+    };
+    let mut ids: Vec<i32> = side
+        .iter()
+        .filter(|l| l.lane_type.is_drivable())
+        .map(|l| l.id)
+        .collect();
+    ids.sort_unstable();
+    if (direction == Direction::Backward) != from_left {
+        ids.reverse();
+    }
+    ids.get(usize::try_from(n).ok()?.checked_sub(1)?).copied()
+}
+
 /// Moves `track` by `distance` m of travel along s in its direction, following lane links
 /// (the first successor, in the road model's order, or the one `prefer` picks from the
 /// successors where the road named by its first argument ends). Returns the distance that

@@ -171,6 +171,10 @@ fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
                 target: scenario::LaneChangeTarget::Beside { entity_ref, .. },
                 ..
             } => Some((entity_ref, "a lane change beside an entity")),
+            LateralAction::LaneChange {
+                target: scenario::LaneChangeTarget::Numbered { entity_ref, .. },
+                ..
+            } => Some((entity_ref, "a lane numbered across an entity's road")),
             LateralAction::LaneOffset {
                 target: scenario::LaneOffsetTarget::Relative { entity_ref, .. },
                 ..

@@ -648,6 +648,20 @@ pub enum LaneChangeTarget {
         /// reference lines join continuously, so the reference may be on another of them.
         roads: PlanRoads,
     },
+    /// oscsim's target numbered across the road, no XML form (the DSL runtime writes it for
+    /// ASAM OpenSCENARIO DSL 2.1 §8.9 `lane(n [, from: left])` beside a later action of a
+    /// `random_traffic_vehicle_group`, §8.7.18.1): at the action's start, the driving lane
+    /// numbered `lane` among the drivable lanes of the reference's side of its road where it
+    /// is, 1 the rightmost in its direction of travel (the leftmost with `from_left`). No such
+    /// lane there fails the action.
+    Numbered {
+        /// The entity whose road, side and s the lanes are counted at.
+        entity_ref: String,
+        /// The lane's number, 1 or more.
+        lane: u32,
+        /// Counted from the left of the direction of travel, not the right.
+        from_left: bool,
+    },
 }
 
 /// A lane offset target (XSD `LaneOffsetTarget`), m.
