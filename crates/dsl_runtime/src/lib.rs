@@ -200,6 +200,8 @@ pub fn lower_program(
     let mut resolved = resolve::resolve(program, osc, options.seed, options.scenario.as_deref())?;
     // Route points given in world coordinates are placed on the network's roads.
     plan::locate_points(&mut resolved, road)?;
+    // Paths through points of the network become the paths of their world points.
+    plan::locate_paths(&mut resolved, road)?;
     // The plan drives from the road of its named routes (the first of them whose roads hold
     // all the others; a route through points over its own roads), else from the first road,
     // onto the roads after it (`road`).

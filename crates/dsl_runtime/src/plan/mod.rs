@@ -59,6 +59,7 @@
 //! | `action_args` | a §8.8 action's `rate_profile`, `rate_peak`, `duration` and the dynamics they give |
 //! | `path_shape` | the shape a path or trajectory is lowered to: a polyline, or the smooth curve through the points' headings |
 //! | `path_part` | the part of a path an action follows between its offsets, and points along it with their times |
+//! | `road_path` | paths through points of the road network (`create_path_odr_points`, `create_path_route_points`) as the paths of their world points, before the plan |
 //! | `speed_actions` | the §8.8 actions that control the speed or the acceleration |
 //! | `speed_follow` | `speed(…, faster_than/slower_than/same_as: x)` at: all: the actor's planned speed follows x's over the phase (the engine's continuous relative SpeedAction, in a first phase too) |
 //! | `lateral_actions` | the §8.8 actions that control the lateral position (`change_lane`, `follow_lane`) |
@@ -146,6 +147,7 @@ mod random_traffic_late;
 mod random_traffic_relations;
 mod relative_over_distance;
 mod relative_path;
+mod road_path;
 mod route;
 mod route_moves;
 mod runtime;
@@ -164,6 +166,7 @@ use place::{place, ToPlace};
 use planner::{no_end, EventCtx, Planner};
 
 pub(crate) use map_lanes::junction_roads;
+pub(crate) use road_path::locate_paths;
 pub(crate) use route::{locate_points, named_routes, points as route_points};
 pub use types::POSITION_TOLERANCE;
 pub(crate) use types::{

@@ -513,6 +513,7 @@ impl Planner<'_> {
             Place::Orientation { .. }
             | Place::Trajectory { .. }
             | Place::Path { .. }
+            | Place::RoadPath { .. }
             | Place::Relative { .. } => {
                 return Err(site.err(K::Argument, "expected a place, found another value"))
             }

@@ -591,7 +591,7 @@ pub(crate) fn locate_points(
 }
 
 /// `locate_points` for one route, its errors at `site`.
-fn locate_route(
+pub(super) fn locate_route(
     route: &mut Route,
     net: &opendrive::RoadNetwork,
     site: &crate::error::Site,
@@ -610,18 +610,7 @@ fn locate_route(
     };
     let place = |(x, y): (f64, f64)| {
         net.locate(x, y, None)
-            // On the road's surface: within its lane's borders (the network gives the outermost
-            // lane of the nearest road for a point beside every road).
-            .filter(|p| {
-                net.roads()
-                    .iter()
-                    .find(|r| r.id == p.road_id)
-                    .and_then(|r| r.lane_span(p.lane_id, p.s).ok())
-                    .is_some_and(|sp| {
-                        let (lo, hi) = (sp.inner.min(sp.outer), sp.inner.max(sp.outer));
-                        (lo - POSITION_TOLERANCE..=hi + POSITION_TOLERANCE).contains(&p.t)
-                    })
-            })
+            .filter(|p| on_surface(net, p))
             .ok_or_else(|| {
                 site.err(
                     K::Road,
@@ -670,6 +659,17 @@ fn locate_route(
         (*s, *lane, *t) = point_on_route((road, *lane, *s), then, (d, dt), length, site)?;
     }
     Ok(())
+}
+
+/// Whether the network's look-up `p` is on its road's surface: within its lane's borders
+/// (the network gives the outermost lane of the nearest road for a point beside every road).
+pub(super) fn on_surface(net: &opendrive::RoadNetwork, p: &opendrive::RoadPosition) -> bool {
+    net.road(&p.road_id)
+        .and_then(|r| r.lane_span(p.lane_id, p.s).ok())
+        .is_some_and(|sp| {
+            let (lo, hi) = (sp.inner.min(sp.outer), sp.inner.max(sp.outer));
+            (lo - POSITION_TOLERANCE..=hi + POSITION_TOLERANCE).contains(&p.t)
+        })
 }
 
 /// The point `d` m along a route from its first point (`road`, `lane`, `s0`; its later points

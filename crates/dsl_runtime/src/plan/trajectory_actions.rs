@@ -5,7 +5,7 @@
 //! | action | lowered to | ends |
 //! | --- | --- | --- |
 //! | `follow_trajectory(absolute: trajectory)` | FollowTrajectoryAction along the polyline of the points (world x, y), or with `smooth` the Hermite curve through them (a Nurbs), each reached at its time stamp (a relative time reference from the action's start, offset by the first stamp), following mode `position` | at the last time stamp |
-//! | `follow_path(absolute: path)` | FollowTrajectoryAction along the path (`map.create_path(points, interpolation)`: polyline or smooth) in following mode `follow` (steered within the vehicle's limits), no time reference: at the speed the actor has | when the engine has the actor at the path's end |
+//! | `follow_path(absolute: path)` | FollowTrajectoryAction along the path (`map.create_path(points, interpolation)`, or `create_path_odr_points`/`create_path_route_points`, their points placed on the network by `road_path`: polyline or smooth) in following mode `follow` (steered within the vehicle's limits), no time reference: at the speed the actor has | when the engine has the actor at the path's end |
 //!
 //! | `replay_path(…)`, `replay_trajectory(…)` | as the two above in following mode `position` (exactly; "the dynamic limits may be violated") | as above |
 //!

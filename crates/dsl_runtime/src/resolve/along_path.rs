@@ -1,7 +1,9 @@
 //! A path as the route of `along(…)` (ASAM OpenSCENARIO DSL 2.1 §8.9 `along`: "the actor
 //! moves along the route"; §8.12 `path inherits route`, "a polyline of points", made by the
-//! map's `create_path(points, interpolation)`, or `resolve_relative_path(relative_path,
-//! reference, transform)`, follow_path's `relative:` with that reference and transform):
+//! map's `create_path(points, interpolation)`, `create_path_odr_points(…)` or
+//! `create_path_route_points(…)` (their points placed on the network by the plan stage,
+//! `crate::plan`'s `road_path`), or `resolve_relative_path(relative_path, reference,
+//! transform)`, follow_path's `relative:` with that reference and transform):
 //! `drive()`, `move()` or `walk()` with
 //! `along(p)` follows p's line as `follow_path(absolute: p)` does (§8.8.2.16), the
 //! FollowTrajectoryAction along the path at the speed the phase gives, in following mode

@@ -14,7 +14,7 @@ use dsl::Value;
 
 use super::action::Action;
 use super::eval::{bind, bound_to, Eval};
-use super::route::{map_call, odr_point};
+use super::route::{map_call, odr_point, route_of, Route};
 use super::value::{Args, Val};
 use crate::error::{Error, ErrorKind as K, Site};
 
@@ -45,6 +45,17 @@ pub(crate) enum Place {
     Path {
         points: Vec<(f64, f64, f64)>,
         smooth: bool,
+    },
+    /// A path through points of the road network (`map.create_path_odr_points(points,
+    /// interpolation, on_road_network)`, `map.create_path_route_points(…)`, §8.12.2.1.11-12):
+    /// each point a route from one point (an odr point, a route point), kept as the resolver
+    /// reads it; the plan stage, which has the network, turns it into a [`Place::Path`] of
+    /// world points (`crate::plan`'s `locate_points`). `on_road_network`: "the points of the
+    /// path must be joined while keeping the whole path on the road network".
+    RoadPath {
+        points: Vec<Route>,
+        smooth: bool,
+        on_road_network: bool,
     },
     /// A `relative_trajectory` or `relative_path` with pose_3d points (§8.12, relative to a
     /// reference the action names): x, y (m) and yaw (rad) of its points; its time stamps (s;
@@ -105,7 +116,7 @@ pub(crate) fn read(
 
 /// The path `e` gives as the route of an `along(…)` (§8.12: a `path` inherits `route`, "a
 /// polyline of points"), with the arguments that place it: `map.create_path(points,
-/// interpolation)` (none), `map.resolve_relative_path(relative_path, reference, transform)`
+/// interpolation)`, `map.create_path_odr_points(…)`, `map.create_path_route_points(…)` (none), `map.resolve_relative_path(relative_path, reference, transform)`
 /// (§8.12.2.1: the relative path placed against `reference` in the frame `transform` says,
 /// as `follow_path(relative: …, reference, transform)` places one: its `reference` and
 /// `transform`), or a field given one at its declaration; `None` for anything else (the route
@@ -119,7 +130,9 @@ pub(crate) fn path_route(ev: &Eval<'_>, e: &Expr) -> Result<Option<(Place, Args)
         None => e,
     };
     match map_call(ev, value) {
-        Some(("create_path", _)) => Ok(Some((place(ev, value)?, Args::new()))),
+        Some(("create_path" | "create_path_odr_points" | "create_path_route_points", _)) => {
+            Ok(Some((place(ev, value)?, Args::new())))
+        }
         Some(("resolve_relative_path", args)) => {
             let names = ["relative_path", "reference", "transform"].map(String::from);
             let bound = bind(args, &names);
@@ -236,20 +249,7 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
                 } else {
                     Vec::new()
                 };
-                let smooth = match given("interpolation") {
-                    Some(e) => match ev.eval(e)? {
-                        Val::Enum(m) if m == "smooth" => true,
-                        Val::Enum(m) if m == "straight_line" => false,
-                        _ => {
-                            return Err(ev.files.err(
-                                K::Value,
-                                e.span,
-                                "expected an interpolation (straight_line, smooth), found another value",
-                            ))
-                        }
-                    },
-                    None => false,
-                };
+                let smooth = smooth(ev, given("interpolation"))?;
                 Ok(if trajectory {
                     Place::Trajectory {
                         points,
@@ -260,6 +260,7 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
                     Place::Path { points, smooth }
                 })
             }
+            "create_path_odr_points" | "create_path_route_points" => road_path(ev, e, method, args),
             m => Err(bad(&format!("map.{m}(…)"))),
         };
     }
@@ -368,6 +369,99 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
     } else {
         Err(bad(&format!("`{path}`")))
     }
+}
+
+/// Whether a path's `interpolation` argument `e` is `smooth` (`straight_line`, or none given:
+/// the polyline).
+fn smooth(ev: &Eval<'_>, e: Option<&Expr>) -> Result<bool, Error> {
+    let Some(e) = e else {
+        return Ok(false);
+    };
+    match ev.eval(e)? {
+        Val::Enum(m) if m == "smooth" => Ok(true),
+        Val::Enum(m) if m == "straight_line" => Ok(false),
+        _ => Err(ev.files.err(
+            K::Value,
+            e.span,
+            "expected an interpolation (straight_line, smooth), found another value",
+        )),
+    }
+}
+
+/// The path of `map.create_path_odr_points(points, interpolation, on_road_network)` or
+/// `map.create_path_route_points(…)` (`method`, its arguments `args`; §8.12.2.1.11-12: "Sequence
+/// of odr_point (route_point) that will be converted to world x-y-z-coordinates to create a
+/// path"): each point read as the route from it (`route`), which the plan stage places on the
+/// network. A point that is a route of more than one point (no point of its own) is an error
+/// at it.
+fn road_path(ev: &Eval<'_>, e: &Expr, method: &str, args: &[HirArg]) -> Result<Place, Error> {
+    let names = ["points", "interpolation", "on_road_network"].map(String::from);
+    let bound = bind(args, &names);
+    let given = |n: &str| bound_to(&bound, n);
+    let kind = if method == "create_path_odr_points" {
+        "odr_point"
+    } else {
+        "route_point"
+    };
+    let items = match given("points").map(|e| (e, &e.kind)) {
+        Some((_, ExprKind::List(items))) if items.len() >= 2 => items,
+        found => {
+            let (span, what) = match found {
+                Some((e, ExprKind::List(items))) => (
+                    e.span,
+                    format!(
+                        "{} point{}",
+                        items.len(),
+                        if items.len() == 1 { "" } else { "s" }
+                    ),
+                ),
+                Some((e, _)) => (e.span, "another expression".to_string()),
+                None => (e.span, "none".to_string()),
+            };
+            return Err(ev.files.err(
+                K::Value,
+                span,
+                format!("expected a list of two or more {kind}s (a list literal, `[a, b, …]`) as the points of map.{method}(…), found {what}"),
+            ));
+        }
+    };
+    let points = items
+        .iter()
+        .map(|item| match route_of(ev, item)? {
+            // A point on a route (its later points are dropped once it is placed), or a route
+            // from one point.
+            r @ Route::Lane { .. } if one_point(&r) => Ok(r),
+            _ => Err(ev.files.err(
+                K::Value,
+                item.span,
+                format!("expected a {kind} (one point on the road network) as a point of map.{method}(…), found a route of its own (no one point to place)"),
+            )),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let on_road_network = match given("on_road_network") {
+        None => false,
+        Some(e) => match ev.eval(e)? {
+            Val::Bool(b) => b,
+            _ => {
+                return Err(ev.files.err(
+                    K::Value,
+                    e.span,
+                    "expected on_road_network true or false, found another value",
+                ))
+            }
+        },
+    };
+    Ok(Place::RoadPath {
+        points,
+        smooth: smooth(ev, given("interpolation"))?,
+        on_road_network,
+    })
+}
+
+/// Whether route `r` stands for one point: a route from one point, or a point on a route.
+fn one_point(r: &Route) -> bool {
+    matches!(r, Route::Lane { on: Some(_), .. })
+        || matches!(r, Route::Lane { then, .. } if then.is_empty())
 }
 
 /// The number field `n` of a struct's `fields` (0 when it has none).

@@ -52,9 +52,11 @@
 //!   of one road joined across the crosswalk that holds the line between them, crossed the
 //!   same way.
 //!
-//! A path (`map.create_path(…)`) is followed as `follow_path` follows one (`along_path`).
-//! Everything else (list elements of the map, other map methods) is an error naming the
-//! argument.
+//! A path (`map.create_path(…)`, `map.create_path_odr_points(…)`,
+//! `map.create_path_route_points(…)`) is followed as `follow_path` follows one (`along_path`;
+//! a path through points of the network is placed by the plan stage, `crate::plan`'s
+//! `road_path`). Everything else (other list elements, other map methods) is an error naming
+//! the argument.
 
 use dsl::semantics::hir::{Expr, ExprKind};
 use dsl::Value;

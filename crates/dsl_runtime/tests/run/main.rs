@@ -27,6 +27,7 @@ mod opposite_relations;
 mod orientation;
 mod orientation_runtime;
 mod overlap;
+mod paths;
 mod position_actions;
 mod random_traffic;
 mod random_traffic_creation;

@@ -271,7 +271,7 @@ fn a_path_along_another_action_or_at_one_moment_is_an_error_at_the_along() {
 }
 
 /// follow_path.osc's S-curve driven by `name`, checked by hand (follow_path.osc).
-fn follows_the_s_curve(name: &str) {
+pub(crate) fn follows_the_s_curve(name: &str) {
     let r = run(name, 0, None);
     // At 2 s: 20 m along the S-curve, as in change_position_smooth: (39.909, -7.012), heading
     // 0.13077 rad.

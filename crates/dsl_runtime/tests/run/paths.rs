@@ -1,0 +1,94 @@
+//! Paths through points of the road network as along's routes (issue 27; ASAM OpenSCENARIO
+//! DSL 2.1 §8.12.2.1.11 `create_path_odr_points`, §8.12.2.1.12 `create_path_route_points`):
+//! the points placed on the network before the plan, the path of their world points followed
+//! as `follow_path` follows one. Motions worked by hand in the scenario files' comments.
+
+use crate::support::{error_on, run, run_on};
+
+/// A path along a lane's centre heading as the actor does: float round-off only.
+const S_TOL: f64 = 1e-6;
+
+#[test]
+fn a_path_through_odr_and_route_points_is_the_path_of_their_world_points() {
+    let r = run("paths/path_odr_points", 0, None);
+    for (t, x) in [(0.0, 20.0), (2.0, 40.0), (4.0, 60.0)] {
+        let p = r.at(t, "ego");
+        assert!(
+            (p.x - x).abs() < S_TOL && (p.y + 5.25).abs() < S_TOL,
+            "ego at {t} s: {p:?}"
+        );
+    }
+    for (t, x) in [(0.0, 40.0), (2.0, 50.0), (6.0, 70.0), (12.0, 100.0)] {
+        let p = r.at(t, "npc");
+        assert!(
+            (p.x - x).abs() < S_TOL && (p.y + 8.75).abs() < S_TOL,
+            "npc at {t} s: {p:?}"
+        );
+    }
+    // Each drive ends at the step that reaches its path's end (4 s, 12 s).
+    for (phase, end) in [("do.0", 4.0), ("do.1", 12.0)] {
+        let (s, e) = r.phase(phase);
+        assert!(
+            s.abs() < 1e-9 && (end..=end + 0.05 + 1e-9).contains(&e),
+            "{phase}: {s} {e}"
+        );
+    }
+}
+
+/// follow_path(absolute:) takes such a path (§8.8.2.16: a path); smooth, its points heading
+/// along their lanes: follow_path.osc's S-curve (follow_path_odr.osc).
+#[test]
+fn follow_path_follows_a_path_through_odr_points() {
+    crate::position_actions::follows_the_s_curve("paths/follow_path_odr");
+}
+
+/// follow_path's steering within the vehicle's limits from the lane's heading onto a chord
+/// 0.179 rad off it (m; as `position_actions`' S-curve).
+const PURSUIT_TOL: f64 = 0.02;
+
+#[test]
+fn a_path_through_odr_points_on_a_bend_is_the_chord_between_their_world_points() {
+    let r = run_on("paths/path_odr_bend", "bend");
+    let p = r.at(0.0, "ego");
+    assert!(
+        (p.x - 80.0).abs() < S_TOL && (p.y + 1.75).abs() < S_TOL,
+        "{p:?}"
+    );
+    let p = r.at(3.5, "ego");
+    assert!(
+        (p.x - 114.4398).abs() < PURSUIT_TOL && (p.y - 4.4869).abs() < PURSUIT_TOL,
+        "at 3.5 s: {p:?}"
+    );
+    // The drive ends at the step that reaches the path's end, 6.990 s.
+    let (s, e) = r.phase("do");
+    assert!(s.abs() < 1e-9 && (6.99..=7.05).contains(&e), "{s} {e}");
+    let p = r.at(e, "ego");
+    assert!(
+        (p.x - 148.7815).abs() < 0.2 && (p.y - 10.7060).abs() < 0.2,
+        "at {e} s: {p:?}"
+    );
+}
+
+#[test]
+fn a_path_off_the_network_or_through_a_point_it_lacks_is_an_error_at_its_place() {
+    let e = error_on("paths/err_path_off_road", "bend");
+    assert!(
+        e.starts_with("expected the path's line on the road network (on_road_network: true")
+            && e.ends_with("err_path_off_road.osc:10:9"),
+        "{e}"
+    );
+    let e = crate::support::error("paths/err_path_point");
+    assert!(
+        e.starts_with(
+            "expected point 2 of the path (road 1, lane -4, s = 60 m, t = 0 m) on the road network"
+        ) && e.ends_with("err_path_point.osc:7:9"),
+        "{e}"
+    );
+    let e = crate::support::error("paths/err_path_points");
+    assert!(
+        e.starts_with("expected a list of two or more route_points")
+            && e.contains("found 1 point at")
+            && e.ends_with("err_path_points.osc:7:42"),
+        "{e}"
+    );
+}
