@@ -284,8 +284,22 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
             if let (ModKind::Along, Some(a)) = (m.kind, &m.along) {
                 route::on_plan_road(road, a)?;
-                if let Some((field, bound)) = route::map_route(road, a)? {
-                    p.route_roads.entry(field).or_insert(bound);
+                match route::map_route(road, a, &p.route_roads)? {
+                    Some((field, route::Bound::Road(lane, span, why))) => {
+                        p.route_roads.entry(field).or_insert((lane, span, why));
+                    }
+                    // A lane of a lane section: bound as a lane field the map binds, within
+                    // its section.
+                    Some((field, route::Bound::Lane(lane, id, span, why))) => {
+                        p.route_lanes
+                            .entry(field.clone())
+                            .or_insert((lane, why.clone()));
+                        p.lane_roads
+                            .entry(field.clone())
+                            .or_insert((id, Some(span)));
+                        p.route_roads.entry(field).or_insert((lane, span, why));
+                    }
+                    None => {}
                 }
                 // A route the map makes across a crossing: walked (crossed) as a crossing
                 // field the map binds.

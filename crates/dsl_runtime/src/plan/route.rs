@@ -205,19 +205,37 @@ pub(crate) fn check(
     Ok(at_run_time)
 }
 
+/// What the plan binds an element of the lists to (`map_route`).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Bound {
+    /// A road or lane section: the lane an actor along it without one of its own starts in,
+    /// the plan's s of its start and end, and why.
+    Road(i32, (f64, f64), String),
+    /// A lane: its id, its road's id, the plan's s of its lane section's start and end, and
+    /// why.
+    Lane(i32, String, (f64, f64), String),
+}
+
 /// The binding of `along`'s route when it is a road of the map's lists (`m.routes[i]`,
-/// `m.junctions[i].roads[j]`, `crate::resolve::MapRoad`): on an OpenDRIVE map oscsim's choice
-/// is one route per road of the file in its order, each the whole road (a `road` is a route
-/// element), and a junction's roads its connecting roads in the order its connections first
-/// name them; the road is bound as a road the map's modifiers bind (its field, then the
-/// rightmost driving lane in +s at its start, `lane(1)`'s, where an actor along it without a
-/// lane of its own starts, its span in the plan's s, and why). An index past the file's roads
-/// (junctions, a junction's roads), and a road the plan does not drive, are errors at `along`.
-#[allow(clippy::type_complexity)]
+/// `m.junctions[i].roads[j]`, `crate::resolve::MapRoad`) or an element of the library's
+/// lists (`cr.route_elements[i]`, `rd.s_positive[i]`, `ls.lanes[i]`,
+/// `crate::resolve::MapRoute`): on an OpenDRIVE map oscsim's choice is one route per road of
+/// the file in its order, each the whole road (a `road` is a route element), a junction's
+/// roads its connecting roads in the order its connections first name them, the elements of a
+/// compound route the runtime chooses the plan's roads in order, a road's `s_positive` its
+/// lane sections in order along s, and a lane section's `lanes` the lanes that flow in +s
+/// (right-hand traffic: the right side) from the centre out. A road or lane section is bound
+/// as a road the map's modifiers bind (its field, then the rightmost driving lane in +s at
+/// its start, `lane(1)`'s, where an actor along it without a lane of its own starts, its span
+/// in the plan's s, and why); a lane as a lane field the map binds (its lane, from its lane
+/// section's start). `bound`: the road fields the map's modifiers bound (a route field whose
+/// elements are read is that road, else the plan's roads). An index past a list, a road the
+/// plan does not drive, and a lane no vehicle drives are errors at `along`.
 pub(crate) fn map_route(
     road: &PlanRoad<'_>,
     along: &Along,
-) -> Result<Option<(String, (i32, (f64, f64), String))>, Error> {
+    bound: &HashMap<String, (i32, (f64, f64), String)>,
+) -> Result<Option<(String, Bound)>, Error> {
     let Route::Free {
         field,
         map_route: Some(which),
@@ -233,20 +251,33 @@ pub(crate) fn map_route(
             format!("expected an index below {n} into {what}, found `{field}`"),
         )
     };
-    let (id, why) = match *which {
+    let whole = |id: &str, why: String| -> Result<((f64, f64), String), Error> {
+        let length = net.road(id).map_or(0.0, |r| r.length);
+        match road.plan_span(id, 0.0, length) {
+            Some(span) => Ok((span, why)),
+            None => Err(along.site.err(
+                K::Road,
+                format!(
+                    "expected `{field}` on the roads the plan drives on ({}), found {why}",
+                    road.ids().join(", ")
+                ),
+            )),
+        }
+    };
+    let (span, why) = match &which.road {
         MapRoad::Route(i) => {
             let roads = net.roads();
-            let r = roads.get(i).ok_or_else(|| {
+            let r = roads.get(*i).ok_or_else(|| {
                 past(
                     roads.len(),
                     "the map's routes (one per road of the OpenDRIVE file, in its order)",
                 )
             })?;
-            (r.id.clone(), format!("road {}, the map's route {i} (one per road of the OpenDRIVE file, in its order)", r.id))
+            whole(&r.id, format!("road {}, the map's route {i} (one per road of the OpenDRIVE file, in its order)", r.id))?
         }
         MapRoad::Junction(i, j) => {
             let junctions = net.junctions();
-            let jn = junctions.get(i).ok_or_else(|| {
+            let jn = junctions.get(*i).ok_or_else(|| {
                 past(
                     junctions.len(),
                     "the map's junctions (one per junction of the OpenDRIVE file, in its order)",
@@ -258,31 +289,94 @@ pub(crate) fn map_route(
                     roads.push(&c.connecting_road);
                 }
             }
-            let id = roads.get(j).ok_or_else(|| {
+            let id = roads.get(*j).ok_or_else(|| {
                 past(
                     roads.len(),
                     &format!("the roads of junction {} (its connecting roads in the order its connections name them)", jn.id),
                 )
             })?;
-            (id.to_string(), format!("road {id}, road {j} of junction {} (its connecting roads in the order its connections name them)", jn.id))
+            whole(id, format!("road {id}, road {j} of junction {} (its connecting roads in the order its connections name them)", jn.id))?
         }
+        MapRoad::Plan(i) => {
+            let ids = road.ids();
+            let id = ids.get(*i).ok_or_else(|| {
+                past(
+                    ids.len(),
+                    "the route elements of a compound route the runtime chooses (the plan's roads, in order)",
+                )
+            })?;
+            whole(id, format!("road {id}, the plan's road {i} (the elements of a compound route the runtime chooses)"))?
+        }
+        MapRoad::Field(f) => match bound.get(f) {
+            Some((_, span, why)) => (*span, format!("`{f}` ({why})")),
+            None => (
+                (0.0, road.length()),
+                format!("`{f}`, the plan's roads (a route the runtime chooses)"),
+            ),
+        },
     };
-    let length = net
-        .roads()
-        .iter()
-        .find(|r| r.id == id)
-        .map_or(0.0, |r| r.length);
-    let Some(span) = road.plan_span(&id, 0.0, length) else {
+    if which.section.is_none() && which.lane.is_none() {
+        let lane = road.driving_lanes(span.0).first().copied().unwrap_or(-1);
+        return Ok(Some((field.clone(), Bound::Road(lane, span, why))));
+    }
+    // The lane sections within the span, in order along s: road id, index, plan span.
+    let mut sections = Vec::new();
+    for id in road.ids() {
+        let Some(r) = net.road(&id) else { continue };
+        for (k, sec) in r.lane_sections.iter().enumerate() {
+            let s1 = r.lane_sections.get(k + 1).map_or(r.length, |n| n.s);
+            if let Some(ps) = road.plan_span(&id, sec.s, s1) {
+                if ps.0 >= span.0 - ROUTE_TOLERANCE && ps.1 <= span.1 + ROUTE_TOLERANCE {
+                    sections.push((id.clone(), k, ps));
+                }
+            }
+        }
+    }
+    let (id, k, ps) = match which.section {
+        Some(k) => sections.get(k).ok_or_else(|| {
+            past(
+                sections.len(),
+                &format!("the lane sections in +s of {why} (its lane sections in order along s)"),
+            )
+        })?,
+        // A lane section the runtime chooses: the one where its road starts.
+        None => sections
+            .first()
+            .ok_or_else(|| past(0, &format!("the lane sections of {why}")))?,
+    };
+    let why = format!(
+        "the lane section of road {id} from s = {:.2} m, {why}",
+        net.road(id).map_or(0.0, |r| r.lane_sections[*k].s)
+    );
+    let Some(j) = which.lane else {
+        let lane = road.driving_lanes(ps.0).first().copied().unwrap_or(-1);
+        return Ok(Some((field.clone(), Bound::Road(lane, *ps, why))));
+    };
+    // The lanes flowing in +s (right-hand traffic: the right side), from the centre out.
+    let mut lanes: Vec<i32> = net
+        .road(id)
+        .map(|r| r.lane_sections[*k].right.iter().map(|l| l.id).collect())
+        .unwrap_or_default();
+    lanes.sort_by(|a, b| b.cmp(a));
+    let lane = *lanes.get(j).ok_or_else(|| {
+        past(
+            lanes.len(),
+            &format!(
+                "the lanes of {why} (those flowing in +s, from the centre out: lane -1 first)"
+            ),
+        )
+    })?;
+    if !road.driving_lanes(ps.0).contains(&lane) {
         return Err(along.site.err(
             K::Road,
-            format!(
-                "expected `{field}` on the roads the plan drives on ({}), found {why}",
-                road.ids().join(", ")
-            ),
+            format!("expected a driving lane as `{field}`, found lane {lane} of {why}, which no vehicle drives"),
         ));
-    };
-    let lane = road.driving_lanes(span.0).first().copied().unwrap_or(-1);
-    Ok(Some((field.clone(), (lane, span, why))))
+    }
+    let why = format!("lane {lane} of {why}");
+    Ok(Some((
+        field.clone(),
+        Bound::Lane(lane, id.clone(), *ps, why),
+    )))
 }
 
 /// Checks that a named route lies on a road of the plan, in one of its driving lanes (either

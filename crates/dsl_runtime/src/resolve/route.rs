@@ -45,6 +45,12 @@
 //!   of the file, in its order, so the road at index i; a junction's roads its connecting
 //!   roads (`MapRoad`); the plan binds it as a road the map's modifiers bind.
 //!
+//! - **`cr.route_elements[i]`**, **`rd.s_positive[i]`**, **`ls.lanes[i]`** (§8.12's lists): a
+//!   compound route's element i is the route given to `create_route` at i (of one the runtime
+//!   chooses, the plan's road i); a road's lane section i in +s and a lane section's lane i
+//!   (those flowing in +s, from the centre out) are bound by the plan (`MapRoute`) as a lane
+//!   section and a lane the map's modifiers bind.
+//!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
 //!   person walking along it crosses from its start lane to its end lane (`crate::plan`),
 //!   from `start_offset` m after the crossing's start to `end_offset` m before its end; and
@@ -74,9 +80,11 @@ pub(crate) enum Route {
         field: String,
         /// A `lane`/`compound_lane`: one lane, kept.
         one_lane: bool,
-        /// A road of the map's lists (`m.routes[i]`, `m.junctions[i].roads[j]`), bound by the
-        /// plan (`crate::plan`) as a road the map's modifiers bind.
-        map_route: Option<MapRoad>,
+        /// A road of the map's lists (`m.routes[i]`, `m.junctions[i].roads[j]`), or an element
+        /// of the library's lists (`cr.route_elements[i]`, `rd.s_positive[i]`,
+        /// `ls.lanes[i]`), bound by the plan (`crate::plan`) as a road (lane) the map's
+        /// modifiers bind.
+        map_route: Option<MapRoute>,
     },
     /// Lane `lane` of road `road` from s = `s`, `t` from the lane's centre: to the end of the
     /// plan's roads, or with `then`, over the roads of the network's shortest lane path
@@ -119,13 +127,36 @@ pub(crate) enum Route {
 /// junction`, `junction.roads: list of road`), on an OpenDRIVE map (oscsim's choice, the
 /// standard saying nothing of a map loaded from a file): one route per road of the file in
 /// its order, one junction per junction of the file in its order, and a junction's roads its
-/// connecting roads in the order its connections first name them.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// connecting roads in the order its connections first name them; or a road of the plan (the
+/// elements of a compound route the runtime chooses).
+#[derive(Debug, Clone, PartialEq)]
 pub(crate) enum MapRoad {
     /// `m.routes[i]`: the road at index i of the file.
     Route(usize),
     /// `m.junctions[i].roads[j]`: connecting road j of junction i.
     Junction(usize, usize),
+    /// `cr.route_elements[i]` of a compound route field nothing defines (the plan's roads):
+    /// the plan's road i.
+    Plan(usize),
+    /// A route field nothing defines (`rd: road`, `ls: lane_section`) whose list elements are
+    /// read: the road (lane section) the map's modifiers bind it to, else the plan's roads.
+    Field(String),
+}
+
+/// An element of the library's lists as `along`'s route (§8.12 `road.s_positive: list of
+/// lane_section`, "elements that flow in the positive direction of the road s-axis";
+/// `lane_section.lanes: list of lane`, "lanes that compose the lane_section"): a road
+/// (`road`), its lane section `section` in +s (its lane sections in order along s), and the
+/// lane `lane` of that section (oscsim's choice: the lanes that flow in +s, the right side
+/// under right-hand traffic, from the centre out: `lanes[0]` is lane -1).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct MapRoute {
+    /// The road.
+    pub road: MapRoad,
+    /// `s_positive[i]`: the road's lane section i in +s.
+    pub section: Option<usize>,
+    /// `lanes[i]`: the section's lane i from the centre out.
+    pub lane: Option<usize>,
 }
 
 /// The two points of a route the map makes across a crossing (`create_route([a, b],
@@ -307,10 +338,15 @@ fn route_within(ctx: &Ctx<'_>, e: &Expr, depth: usize) -> Result<Route, Error> {
             format!("expected a route field nothing constrains (r: route, road or lane), map.create_odr_point(road_id, lane_id, s, t), map.odr_to_route_point(…) or map.create_route(…) in along(…), found {what}"),
         )
     };
-    // A road of the map's lists.
+    // A road of the map's lists, an element of the library's other lists.
     if let ExprKind::Index(list, at) = &e.kind {
         if let Some(junction) = map_road(ctx, list) {
             return map_road_route(ctx, e, junction, at);
+        }
+        if let ExprKind::Field(base, name) = &list.kind {
+            if let Some(r) = list_element(ctx, e, (base, &name.text), at, depth) {
+                return r;
+            }
         }
     }
     match &e.kind {
@@ -942,17 +978,7 @@ fn map_road_route(
     junction: Option<&Expr>,
     at: &Expr,
 ) -> Result<Route, Error> {
-    let index = |at: &Expr, what: &str| -> Result<usize, Error> {
-        let i = ctx.number(at)?;
-        if i < 0.0 || i.fract() != 0.0 {
-            return Err(ctx.files.err(
-                K::Value,
-                at.span,
-                format!("expected an index of 0 or more (a whole number) into {what}, found {i}"),
-            ));
-        }
-        Ok(i as usize)
-    };
+    let index = |at: &Expr, what: &str| index(ctx, at, what);
     let road = match junction {
         None => MapRoad::Route(index(at, "the map's routes")?),
         Some(j) => MapRoad::Junction(
@@ -965,8 +991,150 @@ fn map_road_route(
             .path_of(e)
             .unwrap_or_else(|| "the map's road".to_string()),
         one_lane: false,
-        map_route: Some(road),
+        map_route: Some(MapRoute {
+            road,
+            section: None,
+            lane: None,
+        }),
     })
+}
+
+/// The index `at` into `what`: a whole number of 0 or more, else an error at it.
+fn index(ctx: &Ctx<'_>, at: &Expr, what: &str) -> Result<usize, Error> {
+    let i = ctx.number(at)?;
+    if i < 0.0 || i.fract() != 0.0 {
+        return Err(ctx.files.err(
+            K::Value,
+            at.span,
+            format!("expected an index of 0 or more (a whole number) into {what}, found {i}"),
+        ));
+    }
+    Ok(i as usize)
+}
+
+/// The route of `e`, element `at` of the library's list `name` of the route `base`
+/// (`cr.route_elements[i]`, `rd.s_positive[i]`, `ls.lanes[i]`, §8.12), `depth` fields deep;
+/// `None` when `name` is no such list. The elements of a compound route the map makes
+/// (`create_route(routes, …)`, "contains all the provided route instances, in the same
+/// sequential order as the input list") are the routes given to it; those of one the runtime
+/// chooses, the plan's roads in order. A road's lane sections in +s and a lane section's lanes
+/// are bound by the plan (`crate::plan`'s `route::map_route`), an index past them an error
+/// there.
+fn list_element(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    (base, name): (&Expr, &str),
+    at: &Expr,
+    depth: usize,
+) -> Option<Result<Route, Error>> {
+    if !matches!(name, "route_elements" | "s_positive" | "lanes") {
+        return None;
+    }
+    Some((|| {
+        let i = index(ctx, at, &format!("`{name}`"))?;
+        let field = ctx
+            .path_of(e)
+            .unwrap_or_else(|| format!("the element at {}", ctx.site(e.span).at()));
+        let wrong = |found: &str| {
+            ctx.files.err(
+                K::Unsupported,
+                base.span,
+                format!("expected a compound route before .route_elements, a road before .s_positive, or a lane section before .lanes (a route field, a road of the map's lists or an element of these lists), found {found}"),
+            )
+        };
+        // The routes given to create_route, where the compound route is a field given one or
+        // the call itself.
+        if name == "route_elements" {
+            let given = match ctx.path_of(base).and_then(|p| ctx.lookup(&p)) {
+                Some((p, _)) => field_value(ctx, &p),
+                None => None,
+            };
+            let made = match &given {
+                Some((value, owner)) => made_routes(owner, value),
+                None => made_routes(ctx, base),
+            };
+            if let Some(items) = made {
+                let item = items.get(i).ok_or_else(|| {
+                    ctx.files.err(
+                        K::Value,
+                        at.span,
+                        format!("expected an index below {} into the route elements of the compound route (the routes given to create_route, in order), found {i}", items.len()),
+                    )
+                })?;
+                return match &given {
+                    Some((_, owner)) => route_within(owner, item, depth + 1),
+                    None => route_within(ctx, item, depth + 1),
+                };
+            }
+        }
+        let part = |road: MapRoad, section: Option<usize>, lane: Option<usize>| Route::Free {
+            field: field.clone(),
+            one_lane: lane.is_some(),
+            map_route: Some(MapRoute {
+                road,
+                section,
+                lane,
+            }),
+        };
+        match (name, route_within(ctx, base, depth + 1)?) {
+            ("route_elements", Route::Free {
+                one_lane: false,
+                map_route: None,
+                ..
+            }) => Ok(part(MapRoad::Plan(i), None, None)),
+            ("s_positive" | "lanes", Route::Free {
+                field: f,
+                one_lane: false,
+                map_route: None,
+            }) => Ok(if name == "lanes" {
+                part(MapRoad::Field(f), None, Some(i))
+            } else {
+                part(MapRoad::Field(f), Some(i), None)
+            }),
+            (
+                "s_positive",
+                Route::Free {
+                    one_lane: false,
+                    map_route:
+                        Some(MapRoute {
+                            road,
+                            section: None,
+                            lane: None,
+                        }),
+                    ..
+                },
+            ) => Ok(part(road, Some(i), None)),
+            (
+                "lanes",
+                Route::Free {
+                    one_lane: false,
+                    map_route:
+                        Some(MapRoute {
+                            road,
+                            section: Some(k),
+                            lane: None,
+                        }),
+                    ..
+                },
+            ) => Ok(part(road, Some(k), Some(i))),
+            (_, Route::Free { one_lane: true, .. }) => Err(wrong("a lane or compound lane (its lanes are not run as routes)")),
+            (_, Route::Free { .. }) => Err(wrong("an element of another kind")),
+            (_, Route::Lane { .. }) => Err(wrong("a route through points (its elements are its points: give them as routes of their own)")),
+            (_, Route::Crossing { .. }) => Err(wrong("a crossing")),
+        }
+    })())
+}
+
+/// The routes given to `map.create_route(routes, …)` when `e` is such a call with a list.
+fn made_routes<'e>(ctx: &Ctx<'_>, e: &'e Expr) -> Option<&'e [Expr]> {
+    let Some(("create_route", args)) = map_call(ctx, e) else {
+        return None;
+    };
+    let params = ["routes", "connect_points_by", "legal_route"].map(String::from);
+    match bound_to(&bind(args, &params), "routes").map(|r| &r.kind) {
+        Some(ExprKind::List(items)) => Some(items.as_slice()),
+        _ => None,
+    }
 }
 
 /// Whether `e` is a list of the map's roads: `m.routes` (`Some(None)`) or

@@ -1,0 +1,51 @@
+//! Elements of the library's lists as along's routes (issue 27; ASAM OpenSCENARIO DSL 2.1
+//! §8.12 `compound_route.route_elements`, `road.s_positive`, `lane_section.lanes`): a compound
+//! route's routes, a road's lane sections in +s, a lane section's lanes flowing in +s. Motions
+//! worked by hand in the scenario files' comments.
+
+use crate::support::{error_on, run_on};
+
+/// Positions on a straight road in a lane: float round-off only.
+const S_TOL: f64 = 1e-6;
+
+#[test]
+fn the_elements_of_the_librarys_lists_are_routes_along_their_part_of_the_road() {
+    let r = run_on("lists/list_elements", "lane_drop");
+    for (actor, x0, y, lane) in [
+        ("ego", 300.0, -5.25, -2),
+        ("npc", 50.0, -8.75, -3),
+        ("bus", 100.0, -1.75, -1),
+        ("car", 200.0, -5.25, -2),
+        ("truck", 120.0, -8.75, -3),
+    ] {
+        for (t, x) in [(0.0, x0), (2.5, x0 + 25.0), (5.0, x0 + 50.0)] {
+            let p = r.at(t, actor);
+            assert!(
+                (p.x - x).abs() < S_TOL && (p.y - y).abs() < S_TOL && p.lane == lane,
+                "{actor} at {t} s: {p:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn an_element_past_its_list_or_of_no_list_run_is_an_error_at_its_place() {
+    for (name, road, at, what) in [
+        ("err_list_section", "lane_drop", "9:9", "expected an index below 2 into the lane sections in +s of `rd`"),
+        ("err_list_lane", "lane_drop", "9:9", "expected an index below 2 into the lanes of the lane section of road 1 from s = 300.00 m"),
+        ("err_list_plan_road", "lane_drop", "9:9", "expected an index below 1 into the route elements of a compound route the runtime chooses"),
+        ("err_list_element", "lane_drop", "8:33", "expected an index below 2 into the route elements of the compound route"),
+        ("err_list_sidewalk", "sidewalk", "9:9", "expected a driving lane as `rd.s_positive[0].lanes[2]`, found lane -3"),
+        ("err_list_section_end", "lane_drop", "10:9", "expected `npc` on route `rd.s_positive[0]` (the lane section of road 1 from s = 0.00 m"),
+        ("err_list_compound_lane", "lane_drop", "8:15", "expected a compound route before .route_elements, a road before .s_positive, or a lane section before .lanes"),
+    ] {
+        let e = error_on(&format!("lists/{name}"), road);
+        assert!(
+            e.starts_with(what)
+                && e.ends_with(&format!("{name}.osc:{at}"))
+                && (name != "err_list_section_end"
+                    || e.contains("between s = 0.00 m and 300.00 m at the phase end, found it at s = 330.00 m")),
+            "{name}: {e}"
+        );
+    }
+}
