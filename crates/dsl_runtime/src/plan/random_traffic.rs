@@ -164,10 +164,16 @@ impl Planner<'_> {
                 .collect();
             let beside = match &c.beside {
                 Some(b) => {
-                    let x_at = starts.get(&b.x).filter(|_| !held.contains(&b.x)).map(|st| {
-                        let back = against.contains(&b.x);
-                        (back, st.lane, st.s)
-                    });
+                    // A member of random traffic: where the seed drew it, if its group was
+                    // dealt before this one.
+                    let drawn = !self.random_member(&b.x) || placed.contains(&b.x);
+                    let x_at = starts
+                        .get(&b.x)
+                        .filter(|_| !held.contains(&b.x) && drawn)
+                        .map(|st| {
+                            let back = against.contains(&b.x) || oncoming.contains(&b.x);
+                            (back, st.lane, st.s)
+                        });
                     Some(self.beside_lane(&g, b, x_at)?)
                 }
                 None => None,

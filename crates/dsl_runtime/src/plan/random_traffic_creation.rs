@@ -41,9 +41,14 @@ impl Planner<'_> {
         x_at: Option<(bool, i32, f64)>,
     ) -> Result<(bool, i32), Error> {
         let Some((back, lx, sx)) = x_at else {
+            let why = match self.random.keys().find(|h| self.groups[*h].contains(&b.x)) {
+                Some(h) if h == g => "a member of that group (dealt beside itself)".to_string(),
+                Some(h) => format!("a member of random traffic `{h}`, dealt after `{g}` (the groups are dealt in the order of their names)"),
+                None => "placed from members of random traffic (each would wait for the other's place)".to_string(),
+            };
             return Err(b.site.err(
                 K::Unsatisfiable,
-                format!("expected `{}` placed before random traffic `{g}` is dealt beside it, found it placed from members of random traffic (each would wait for the other's place)", b.x),
+                format!("expected `{}` placed before random traffic `{g}` is dealt beside it, found it {why}", b.x),
             ));
         };
         let view = if back {
@@ -167,14 +172,14 @@ impl Planner<'_> {
         Ok(c)
     }
 
-    /// The reference of `lane(…)` `m` to another actor of the plan (not of random traffic):
-    /// the key (`same_as`, `side_of`, `left_of`, `right_of`) and the actor.
+    /// The reference of `lane(…)` `m` to another actor (a member of random traffic too): the
+    /// key (`same_as`, `side_of`, `left_of`, `right_of`) and the actor.
     fn lane_beside(&self, m: &Modifier) -> Option<(&'static str, String)> {
         ["same_as", "side_of", "left_of", "right_of"]
             .into_iter()
             .find_map(|k| {
                 let x = m.arg(k)?.path.clone()?;
-                (self.index.contains_key(&x) && !self.random_member(&x)).then_some((k, x))
+                self.index.contains_key(&x).then_some((k, x))
             })
     }
 

@@ -14,6 +14,22 @@
 //! lane: where the seed put one there, an error at the relation naming the member
 //! (the scenario asks for a place the noise occupies in that run).
 //!
+//! A group of the plan (a `vehicle_group`, not random traffic) in its members' first phase is
+//! placed so too: each of its members is held and placed from the member as drawn, the group's
+//! formation kept (`convoy.drive() with: position(40m, behind: g.vehicles[0], at: start)`).
+//! A group's phase that is the first of some of its members only (another of them acted
+//! before) is not run yet (`Unsupported`, at the argument): each would be placed from the
+//! member as drawn or read it at run time within one phase.
+//!
+//! Random traffic relating to a member (of other random traffic, or its own) is what its
+//! planners take of any other actor, read where the member is: on the creating phase
+//! `lane(…: m)` deals to the member's lane as drawn, its group dealt before (the groups are
+//! dealt in the order of their names; a member of a group dealt after, or of the group itself,
+//! an error at the modifier, `Unsatisfiable`); after the creation `lane(…: m)` and
+//! `change_lane(…, reference: m)` are the engine's RelativeTargetLane on m at the phase start
+//! (`random_traffic_actions`); a speed or place relative to it is the errors of §8.7.18.1 that
+//! those planners give for any other actor.
+//!
 //! A place at: all (`position`, `lane`) in the first phase is the start's too (the plan checks
 //! a place at: all relative to any actor at the phase start). After the actor's first phase,
 //! and as a gap action's reference, a relation to a member reads a motion only the engine
@@ -97,9 +113,22 @@ impl Planner<'_> {
             let Kind::Invoke(inv) = &leaf.kind else {
                 continue;
             };
-            let actor_first = self.index.contains_key(&inv.actor)
-                && !self.random_member(&inv.actor)
-                && self.first_leaf.get(&inv.actor) == Some(&leaf.path);
+            // The actors this phase places when it is their first: the actor, or each member
+            // of a group of the plan's (not of random traffic) whose first phase it is.
+            let placed: Vec<&String> = match self.groups.get(&inv.actor) {
+                Some(ms) if !self.random.contains_key(&inv.actor) => ms.iter().collect(),
+                Some(_) => Vec::new(),
+                None => self
+                    .index
+                    .get_key_value(&inv.actor)
+                    .into_iter()
+                    .map(|(k, _)| k)
+                    .collect(),
+            };
+            let actor_first = !placed.is_empty()
+                && placed
+                    .iter()
+                    .all(|a| !self.random_member(a) && self.first_leaf.get(*a) == Some(&leaf.path));
             for (m, key, a) in inv.all_args() {
                 let Some(x) = a.path.as_deref() else {
                     continue;
@@ -108,12 +137,19 @@ impl Planner<'_> {
                     continue;
                 }
                 if actor_first && placed_from(m) && self.random_member(x) {
-                    out.push(MemberRelation {
-                        actor: inv.actor.clone(),
+                    out.extend(placed.iter().map(|actor| MemberRelation {
+                        actor: (*actor).clone(),
                         member: x.to_string(),
                         site: a.site.clone(),
                         directed: m.is_some_and(|m| m.kind != ModKind::Speed),
-                    });
+                    }));
+                    continue;
+                }
+                // Random traffic relating to a member (of its own group or another's): what
+                // its planners take of another actor, read where the member is then
+                // (`random_traffic_creation`, `random_traffic_actions`), the rest their
+                // errors (§8.7.18.1).
+                if self.random.contains_key(&inv.actor) && self.random_member(x) {
                     continue;
                 }
                 // After the actor's first phase, a gap action's reference, a relation at the
@@ -133,10 +169,13 @@ impl Planner<'_> {
                     || format!("{}(…)", inv.action),
                     |m| format!("{}(…)", m.name),
                 );
+                // What is left: a group's phase that is the first of some of its members
+                // and a later one of others (each would be placed from the member as drawn,
+                // or read it at run time, in one phase).
                 if self.random_member(x) {
                     return Err(a.site.err(
                         K::Unsupported,
-                        format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic in a speed or place (position, lane, lateral) at the start of an actor's first phase (the member as drawn from the seed), a relation at its end or an acceleration relative to it, in a later phase or in a gap action (the engine's run-time forms), found `{x}` of random traffic here (not run yet: {what} at: start or all in an actor's first phase)"),
+                        format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic in a phase of `{}` that is the first of all its members (each placed from the member as drawn from the seed) or of none (the engine's run-time forms), found `{x}` of random traffic in a phase that is the first of some of its members only (not run yet)", inv.actor),
                     ));
                 }
                 // The group as a whole, or a member relating to another: bad input.

@@ -964,7 +964,7 @@ fn member_lag(r: &crate::support::Run, member: &str, t: f64) -> f64 {
 
 /// `actor`'s speed at every step after the start is `member`'s as the engine read it at that
 /// step's start (the step before's), within 1e-9 m/s (speed(same_as: member) at: all).
-fn speed_follows_member(r: &crate::support::Run, actor: &str, member: &str, seed: u64) {
+pub(crate) fn speed_follows_member(r: &crate::support::Run, actor: &str, member: &str, seed: u64) {
     for (t, _) in r.frames.iter().filter(|(t, _)| *t > DT / 2.0) {
         let (a, m) = (r.at(*t, actor).speed, r.at(t - DT, member).speed);
         assert!(

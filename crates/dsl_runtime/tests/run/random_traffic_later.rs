@@ -1,10 +1,14 @@
 //! What random traffic's actions after its creation ask where the plan cannot know where a
 //! member is (ASAM OpenSCENARIO DSL 2.1 §8.7.18.1, §8.9; plan/random_traffic_actions.rs):
-//! `lane(n)` beside a later action on a road whose lanes are numbered otherwise along it.
+//! `lane(n)` beside a later action on a road whose lanes are numbered otherwise along it; and
+//! relations to a member of random traffic from a group (plan/random_traffic_relations.rs).
 //! Expectations in the scenario files.
 
-use crate::random_traffic::on_lane_centre;
-use crate::support::{lower_at, run_scenario};
+use crate::random_traffic::{on_lane_centre, speed_follows_member};
+use crate::support::{lower_at, run, run_scenario};
+
+/// Positions of actors driving their plan on a straight road: float round-off only (m).
+const S_TOL: f64 = 1e-6;
 
 #[test]
 fn random_traffic_kept_to_a_lane_numbered_otherwise_along_the_road_changes_to_it_where_it_is() {
@@ -77,5 +81,97 @@ fn a_lane_number_missing_where_a_member_may_be_is_an_error_at_the_modifier() {
             && text.contains("found none 0.0 m along its direction of travel")
             && text.ends_with("err_random_traffic_lane_missing.osc:12:13"),
         "{text}"
+    );
+}
+
+#[test]
+fn a_group_related_to_a_member_in_its_first_phase_is_placed_from_the_drawn_member() {
+    // random_traffic_member_convoy.osc, worked in the file; seeds 0-3.
+    let m = "g.vehicles[0]";
+    for seed in 0..4 {
+        let r = run("random_traffic_member_convoy", seed, None);
+        let (s_m, v_m) = (r.at(0.0, m).s, r.at(0.0, m).speed);
+        assert_eq!(r.at(0.0, m).lane, -2, "seed {seed}");
+        for (i, back) in [(0, 40.0), (1, 54.0)] {
+            let c = format!("convoy.vehicles[{i}]");
+            for (t, objs) in &r.frames {
+                let o = objs.iter().find(|o| o.name == c).expect("in every frame");
+                let s = s_m - back + v_m * t;
+                assert!(
+                    o.lane == -2 && (o.s - s).abs() < S_TOL && (o.speed - v_m).abs() < S_TOL,
+                    "seed {seed} {c} at {t}: {o:?}, want s = {s}, v = {v_m}"
+                );
+            }
+        }
+        for i in 0..2 {
+            let c = format!("column.vehicles[{i}]");
+            assert!((r.at(0.0, &c).speed - v_m).abs() < S_TOL, "seed {seed} {c}");
+            speed_follows_member(&r, &c, m, seed);
+        }
+    }
+}
+
+#[test]
+fn random_traffic_related_to_a_member_of_other_random_traffic_reads_where_it_is() {
+    // random_traffic_member_groups.osc, worked in the file; seeds 0-3.
+    for seed in 0..4 {
+        let r = run("random_traffic_member_groups", seed, None);
+        assert_eq!(r.at(0.0, "g.vehicles[0]").lane, -2, "seed {seed}");
+        for i in 0..3 {
+            let h = format!("h.vehicles[{i}]");
+            assert!(r.at(0.0, &h).h.cos() > 0.0, "seed {seed} {h}: +s");
+            on_lane_centre(&r, seed, &h, -2, (0.0, 12.0));
+            let k = format!("k.vehicles[{i}]");
+            assert_eq!(r.at(1.0, &k).lane, -3, "seed {seed} {k}");
+            on_lane_centre(&r, seed, &k, -2, (6.5, 12.0));
+        }
+    }
+}
+
+#[test]
+fn random_traffic_beside_a_member_not_drawn_yet_or_at_a_members_speed_is_bad_input() {
+    for (name, words, at, modifier) in [
+        (
+            "err_random_traffic_beside_later_group",
+            "found it a member of random traffic `h`, dealt after `g` (the groups are dealt in the order of their names)",
+            "11:13",
+            false,
+        ),
+        (
+            "err_random_traffic_beside_own_member",
+            "found it a member of that group (dealt beside itself)",
+            "8:13",
+            false,
+        ),
+        (
+            "err_random_traffic_speed_of_member",
+            "found `speed(…)`",
+            "13:13",
+            true,
+        ),
+    ] {
+        crate::along::refused(name, words, at);
+        let e = crate::support::lower(name, 0, None).expect_err(name);
+        let kind = if modifier {
+            matches!(e.kind(), dsl_runtime::ErrorKind::Modifier)
+        } else {
+            matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
+        };
+        assert!(kind, "{name}: {e}");
+    }
+}
+
+#[test]
+fn a_group_phase_first_of_some_members_only_related_to_a_member_is_not_run_yet() {
+    let name = "err_random_traffic_member_mixed_first";
+    crate::along::refused(
+        name,
+        "found `g.vehicles[0]` of random traffic in a phase that is the first of some of its members only (not run yet)",
+        "15:32",
+    );
+    let e = crate::support::lower(name, 0, None).expect_err(name);
+    assert!(
+        matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported),
+        "{e}"
     );
 }
