@@ -30,7 +30,7 @@ use opendrive::Real;
 use super::car_following::{nearer, IdmController};
 use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
 use super::lane_beside::KeptBeside;
-use super::view::{Beside, ControllerView, Gap, Side};
+use super::view::{Beside, ControllerView, Gap};
 use crate::models::idm::{IdmParameters, Leader};
 use crate::models::mobil::{FollowerChange, LaneChangeCandidate, MobilParameters};
 
@@ -143,8 +143,8 @@ impl MobilController {
             Ok(true) => {}
         }
         let mut best: Option<(Real, i32)> = None;
-        for side in [Side::Left, Side::Right] {
-            let Some(b) = view.beside_kept(side, &mut self.kept.0) else {
+        for b in view.beside_kept(&mut self.kept.0) {
+            let Some(b) = b else {
                 continue;
             };
             if let Some(margin) = self.judge(view, own, &b) {

@@ -9,7 +9,7 @@ use super::*;
 use crate::controller::car_following::with_red_light;
 use crate::controller::lane_beside::{KeptRoad, RoadBeside};
 use crate::controller::test_world::{crowded, network};
-use crate::controller::view::NeighbourLane;
+use crate::controller::view::{NeighbourLane, Side};
 use crate::store::driver_inputs::{DriverInput, TrackInput};
 use crate::store::lane_index::LaneIndex;
 use crate::store::World;

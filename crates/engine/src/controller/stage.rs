@@ -154,7 +154,7 @@ pub(crate) fn step(
     for i in 0..n {
         let e = &mut entities[i];
         match commands.next_if(|(j, _)| *j == i) {
-            Some(&(_, m)) if e.placed => apply(net, e, controllers.of_mut(i), m, dt),
+            Some((_, m)) if e.placed => apply(net, e, controllers.of_mut(i), m, dt),
             _ => {
                 // Run option stop_at_red_lights (signals/red_light.rs); off: nothing.
                 signals.govern_speed(net, i, e, dt);
@@ -185,7 +185,7 @@ pub(crate) fn step(
 }
 
 /// Moves `e` by the merged command `m` over `dt` s.
-fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: Merged, dt: Real) {
+fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: &Merged, dt: Real) {
     let old_h = e.pose.h;
     let old_v = e.travel_component(e.velocity.translational);
     if let Some(p) = m.pose {

@@ -156,13 +156,22 @@ impl ControllerTable {
         self.per_entity.get(index)
     }
 
-    /// The controllers of entity `index`, made on first use.
+    /// The controllers of entity `index`, made on first use. Inline where the list is long
+    /// enough (the controllers stage asks it of every commanded entity each step; issue 31),
+    /// the list grown out of line.
+    #[inline]
     pub fn of_mut(&mut self, index: usize) -> &mut EntityControllers {
         if self.per_entity.len() <= index {
-            self.per_entity
-                .resize_with(index + 1, EntityControllers::default);
+            self.grow(index + 1);
         }
         &mut self.per_entity[index]
+    }
+
+    /// [`of_mut`](Self::of_mut)'s growth to `len` entities.
+    #[cold]
+    #[inline(never)]
+    fn grow(&mut self, len: usize) {
+        self.per_entity.resize_with(len, EntityControllers::default);
     }
 
     /// What the controllers stage walks: the controllers holding a domain (built again

@@ -60,7 +60,7 @@ const LANE_OVERLAP: Real = 1e-3;
 /// uses the same for lane tracks).
 const ON_ROAD: Real = 0.5;
 /// Most lane sections a query walks through (short junction roads, loops).
-const MAX_HOPS: usize = 64;
+pub(super) const MAX_HOPS: usize = 64;
 
 /// Where an entity's bounding box lies on its road.
 #[derive(Debug, Clone, PartialEq)]
@@ -160,6 +160,13 @@ pub struct Neighbour {
     pub gap: Real,
     /// The query's direction of travel on the lane where the entity was found.
     pub direction: Direction,
+}
+
+/// `found` after `walked` m of the walk: its gap from the walk's start, if within `horizon`.
+#[inline]
+pub(super) fn within(found: Neighbour, walked: Real, horizon: Real) -> Option<Neighbour> {
+    let gap = walked + found.gap;
+    (gap <= horizon).then_some(Neighbour { gap, ..found })
 }
 
 /// The per-lane index of one step (module doc).
@@ -648,7 +655,14 @@ impl LaneIndex {
     /// `direction` from s `from` on lane `start`, within `horizon` m (module doc). `choose`
     /// picks the successor where the road whose id it is given ends (`None`: the first).
     /// `hint` ([`hint`](Self::hint)) speeds the search in `start`.
+    ///
+    /// The search in `start` is made here, inline in the caller; the walk on from there, which
+    /// few searches need, is [`nearest_beyond`](Self::nearest_beyond), out of line (issue 31:
+    /// the walk's registers saved and restored around every search were a quarter of the
+    /// search's instructions). The same answers as the one loop it was, bit for bit
+    /// (`store::lane_search_tests::the_split_search_gives_the_walks_answers_bit_for_bit`).
     #[allow(clippy::too_many_arguments)]
+    #[inline]
     pub fn nearest(
         &self,
         net: &RoadNetwork,
@@ -660,14 +674,37 @@ impl LaneIndex {
         choose: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
         hint: Option<&AtomicU32>,
     ) -> Option<Neighbour> {
+        if let Some(found) = self.in_lane(start, from, direction, exclude, hint) {
+            // Walked 0 m so far, added as the walk adds it (0 + −0 is +0: the same bits).
+            return within(found, 0.0, horizon);
+        }
+        self.nearest_beyond(net, start, from, direction, exclude, horizon, choose)
+    }
+
+    /// [`nearest`](Self::nearest) past its first lane `start`, searched and found empty: the
+    /// walk through the following lane sections, links and junctions (module doc).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(never)]
+    fn nearest_beyond(
+        &self,
+        net: &RoadNetwork,
+        start: LaneHandle,
+        from: Real,
+        direction: Direction,
+        exclude: EntityId,
+        horizon: Real,
+        choose: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
+    ) -> Option<Neighbour> {
         let (mut h, mut at, mut direction) = (start, from, direction);
-        let mut hint = hint;
         // Distance travelled to `at`.
         let mut walked = 0.0;
-        for _ in 0..MAX_HOPS {
-            if let Some(found) = self.in_lane(h, at, direction, exclude, hint.take()) {
-                let gap = walked + found.gap;
-                return (gap <= horizon).then_some(Neighbour { gap, ..found });
+        // Lane `h` was searched (the first by `nearest`): on to the next, up to MAX_HOPS lanes
+        // searched in all.
+        for hop in 0..MAX_HOPS {
+            if hop > 0 {
+                if let Some(found) = self.in_lane(h, at, direction, exclude, None) {
+                    return within(found, walked, horizon);
+                }
             }
             let road = net.handle_road(h);
             let k = h.section as usize;
@@ -706,7 +743,7 @@ impl LaneIndex {
     }
 
     /// The nearest entry of lane `h` reaching past `from` in `direction`, with its gap.
-    fn in_lane(
+    pub(super) fn in_lane(
         &self,
         h: LaneHandle,
         from: Real,

@@ -20,7 +20,7 @@ fn car(i: u32, length: Real) -> Entity {
 
 /// Places car `id` at a random s of a random road, in the middle of a random lane there
 /// (driving along the lane's direction under right-hand traffic), or off its centre.
-fn place_randomly(w: &mut World, id: EntityId, next: &mut impl FnMut() -> f64) {
+pub(super) fn place_randomly(w: &mut World, id: EntityId, next: &mut impl FnMut() -> f64) {
     let net = Arc::clone(&w.network);
     if let Some((pose, found)) = random_place(&net, next) {
         w.place_resolved(id, pose, found);
@@ -28,7 +28,7 @@ fn place_randomly(w: &mut World, id: EntityId, next: &mut impl FnMut() -> f64) {
 }
 
 /// A random pose for [`place_randomly`] and the road position there.
-fn random_place(
+pub(super) fn random_place(
     net: &RoadNetwork,
     next: &mut impl FnMut() -> f64,
 ) -> Option<(opendrive::Pose, Option<opendrive::RoadPosition>)> {
@@ -100,7 +100,7 @@ fn drive_entity(net: &RoadNetwork, e: &mut Entity, ds: Real, dt: Real) -> bool {
 }
 
 /// 80 cars of 4 to 7 m placed at random on esmini's corpus road `name`.
-fn traffic(name: &str, next: &mut impl FnMut() -> f64) -> (Arc<RoadNetwork>, World) {
+pub(super) fn traffic(name: &str, next: &mut impl FnMut() -> f64) -> (Arc<RoadNetwork>, World) {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../../../shared/corpus/esmini/xodr")
         .join(name);

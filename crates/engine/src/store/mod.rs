@@ -23,6 +23,8 @@ mod lane_kept;
 #[cfg(test)]
 mod lane_kept_tests;
 mod lane_refresh;
+#[cfg(test)]
+mod lane_search_tests;
 mod lane_slots;
 mod object;
 pub(crate) mod selection;
