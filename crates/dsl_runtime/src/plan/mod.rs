@@ -299,6 +299,12 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
                             .or_insert((id, Some(span)));
                         p.route_roads.entry(field).or_insert((lane, span, why));
                     }
+                    // A lane section in -s: driven against s, as route2 of routes_are_opposite
+                    // bound to one road.
+                    Some((field, route::Bound::Against(lane, span, why))) => {
+                        p.against_routes.entry(field.clone()).or_insert(why.clone());
+                        p.route_roads.entry(field).or_insert((lane, span, why));
+                    }
                     None => {}
                 }
                 // A route the map makes across a crossing: walked (crossed) as a crossing

@@ -214,6 +214,11 @@ pub(crate) enum Bound {
     /// A lane: its id, its road's id, the plan's s of its lane section's start and end, and
     /// why.
     Lane(i32, String, (f64, f64), String),
+    /// A lane section flowing in -s (`s_negative`): driven against s as the `route2` of
+    /// `routes_are_opposite` bound to one road (`against::bind_routes`): the lane an actor
+    /// along it without one of its own starts in (the first driving lane in its direction),
+    /// the plan's s of its start and end (in +s), and why.
+    Against(i32, (f64, f64), String),
 }
 
 /// The binding of `along`'s route when it is a road of the map's lists (`m.routes[i]`,
@@ -319,7 +324,8 @@ pub(crate) fn map_route(
         let lane = road.driving_lanes(span.0).first().copied().unwrap_or(-1);
         return Ok(Some((field.clone(), Bound::Road(lane, span, why))));
     }
-    // The lane sections within the span, in order along s: road id, index, plan span.
+    // The lane sections within the span, in order along s (against s, in the order a driver
+    // against s meets them): road id, index, plan span.
     let mut sections = Vec::new();
     for id in road.ids() {
         let Some(r) = net.road(&id) else { continue };
@@ -332,41 +338,83 @@ pub(crate) fn map_route(
             }
         }
     }
+    if which.against {
+        sections.reverse();
+    }
+    let (way, side) = if which.against {
+        ("-s", "lane 1")
+    } else {
+        ("+s", "lane -1")
+    };
     let (id, k, ps) = match which.section {
         Some(k) => sections.get(k).ok_or_else(|| {
             past(
                 sections.len(),
-                &format!("the lane sections in +s of {why} (its lane sections in order along s)"),
+                &format!("the lane sections in {way} of {why} (in the order a driver in {way} meets them)"),
             )
         })?,
         // A lane section the runtime chooses: the one where its road starts.
-        None => sections
-            .first()
-            .ok_or_else(|| past(0, &format!("the lane sections of {why}")))?,
+        None => sections.first().ok_or_else(|| past(0, &format!("the lane sections of {why}")))?,
     };
     let why = format!(
-        "the lane section of road {id} from s = {:.2} m, {why}",
-        net.road(id).map_or(0.0, |r| r.lane_sections[*k].s)
+        "the lane section of road {id} from s = {:.2} m{}, {why}",
+        net.road(id).map_or(0.0, |r| r.lane_sections[*k].s),
+        if which.against {
+            " driven against s"
+        } else {
+            ""
+        }
     );
-    let Some(j) = which.lane else {
-        let lane = road.driving_lanes(ps.0).first().copied().unwrap_or(-1);
-        return Ok(Some((field.clone(), Bound::Road(lane, *ps, why))));
+    // Against s, the view of the plan's roads driven so: its u = L − s, the section's middle
+    // (its ends are its neighbours' too).
+    let view = if which.against {
+        road.against().map_err(|m| along.site.err(K::Road, m))?
+    } else {
+        road.clone()
     };
-    // The lanes flowing in +s (right-hand traffic: the right side), from the centre out.
+    let at = if which.against {
+        road.length() - 0.5 * (ps.0 + ps.1)
+    } else {
+        ps.0
+    };
+    let Some(j) = which.lane else {
+        let lane = view.driving_lanes(at).first().copied();
+        return Ok(Some((
+            field.clone(),
+            match lane {
+                Some(l) if which.against => Bound::Against(l, *ps, why),
+                Some(l) => Bound::Road(l, *ps, why),
+                None => {
+                    return Err(along.site.err(
+                        K::Road,
+                        format!(
+                            "expected a driving lane in {way} in `{field}`, found none in {why}"
+                        ),
+                    ))
+                }
+            },
+        )));
+    };
+    // The lanes flowing its way (right-hand traffic: the right side in +s, the left in -s),
+    // from the centre out.
     let mut lanes: Vec<i32> = net
         .road(id)
-        .map(|r| r.lane_sections[*k].right.iter().map(|l| l.id).collect())
+        .map(|r| {
+            let sec = &r.lane_sections[*k];
+            let side = if which.against { &sec.left } else { &sec.right };
+            side.iter().map(|l| l.id).collect()
+        })
         .unwrap_or_default();
-    lanes.sort_by(|a, b| b.cmp(a));
+    lanes.sort_by_key(|l| l.abs());
     let lane = *lanes.get(j).ok_or_else(|| {
         past(
             lanes.len(),
             &format!(
-                "the lanes of {why} (those flowing in +s, from the centre out: lane -1 first)"
+                "the lanes of {why} (those flowing in {way}, from the centre out: {side} first)"
             ),
         )
     })?;
-    if !road.driving_lanes(ps.0).contains(&lane) {
+    if !view.driving_lanes(at).contains(&lane) {
         return Err(along.site.err(
             K::Road,
             format!("expected a driving lane as `{field}`, found lane {lane} of {why}, which no vehicle drives"),

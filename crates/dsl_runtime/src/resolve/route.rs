@@ -45,11 +45,12 @@
 //!   of the file, in its order, so the road at index i; a junction's roads its connecting
 //!   roads (`MapRoad`); the plan binds it as a road the map's modifiers bind.
 //!
-//! - **`cr.route_elements[i]`**, **`rd.s_positive[i]`**, **`ls.lanes[i]`** (§8.12's lists): a
-//!   compound route's element i is the route given to `create_route` at i (of one the runtime
-//!   chooses, the plan's road i); a road's lane section i in +s and a lane section's lane i
-//!   (those flowing in +s, from the centre out) are bound by the plan (`MapRoute`) as a lane
-//!   section and a lane the map's modifiers bind.
+//! - **`cr.route_elements[i]`**, **`rd.s_positive[i]`**, **`rd.s_negative[i]`**,
+//!   **`ls.lanes[i]`** (§8.12's lists): a compound route's element i is the route given to
+//!   `create_route` at i (of one the runtime chooses, the plan's road i); a road's lane section
+//!   i in +s (in -s, driven against s) and a lane section's lane i (those flowing its way, from
+//!   the centre out) are bound by the plan (`MapRoute`) as a lane section and a lane the map's
+//!   modifiers bind.
 //!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
 //!   person walking along it crosses from its start lane to its end lane (`crate::plan`),
@@ -144,17 +145,21 @@ pub(crate) enum MapRoad {
 }
 
 /// An element of the library's lists as `along`'s route (§8.12 `road.s_positive: list of
-/// lane_section`, "elements that flow in the positive direction of the road s-axis";
-/// `lane_section.lanes: list of lane`, "lanes that compose the lane_section"): a road
-/// (`road`), its lane section `section` in +s (its lane sections in order along s), and the
-/// lane `lane` of that section (oscsim's choice: the lanes that flow in +s, the right side
-/// under right-hand traffic, from the centre out: `lanes[0]` is lane -1).
+/// lane_section`, "elements that flow in the positive direction of the road s-axis",
+/// `road.s_negative`, those "that flow in the negative direction"; `lane_section.lanes: list
+/// of lane`, "lanes that compose the lane_section"): a road (`road`), its lane section
+/// `section` in +s (its lane sections in order along s) or, `against`, in -s (in the order a
+/// driver against s meets them, from the road's end), and the lane `lane` of that section
+/// (oscsim's choice: the lanes that flow its way, under right-hand traffic the right side in +s
+/// and the left side in -s, from the centre out: `lanes[0]` is lane -1, or lane 1).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct MapRoute {
     /// The road.
     pub road: MapRoad,
-    /// `s_positive[i]`: the road's lane section i in +s.
+    /// `s_positive[i]` (`s_negative[i]`): the road's lane section i in +s (in -s).
     pub section: Option<usize>,
+    /// The section flows in -s (`s_negative`): driven against s.
+    pub against: bool,
     /// `lanes[i]`: the section's lane i from the centre out.
     pub lane: Option<usize>,
 }
@@ -994,6 +999,7 @@ fn map_road_route(
         map_route: Some(MapRoute {
             road,
             section: None,
+            against: false,
             lane: None,
         }),
     })
@@ -1027,7 +1033,10 @@ fn list_element(
     at: &Expr,
     depth: usize,
 ) -> Option<Result<Route, Error>> {
-    if !matches!(name, "route_elements" | "s_positive" | "lanes") {
+    if !matches!(
+        name,
+        "route_elements" | "s_positive" | "s_negative" | "lanes"
+    ) {
         return None;
     }
     Some((|| {
@@ -1039,60 +1048,52 @@ fn list_element(
             ctx.files.err(
                 K::Unsupported,
                 base.span,
-                format!("expected a compound route before .route_elements, a road before .s_positive, or a lane section before .lanes (a route field, a road of the map's lists or an element of these lists), found {found}"),
+                format!("expected a compound route before .route_elements, a road before .s_positive or .s_negative, or a lane section before .lanes (a route field, a road of the map's lists or an element of these lists), found {found}"),
             )
         };
         // The routes given to create_route, where the compound route is a field given one or
         // the call itself.
         if name == "route_elements" {
-            let given = match ctx.path_of(base).and_then(|p| ctx.lookup(&p)) {
-                Some((p, _)) => field_value(ctx, &p),
-                None => None,
-            };
-            let made = match &given {
-                Some((value, owner)) => made_routes(owner, value),
-                None => made_routes(ctx, base),
-            };
-            if let Some(items) = made {
-                let item = items.get(i).ok_or_else(|| {
-                    ctx.files.err(
-                        K::Value,
-                        at.span,
-                        format!("expected an index below {} into the route elements of the compound route (the routes given to create_route, in order), found {i}", items.len()),
-                    )
-                })?;
-                return match &given {
-                    Some((_, owner)) => route_within(owner, item, depth + 1),
-                    None => route_within(ctx, item, depth + 1),
-                };
+            if let Some(r) = made_element(ctx, base, (i, at), depth) {
+                return r;
             }
         }
-        let part = |road: MapRoad, section: Option<usize>, lane: Option<usize>| Route::Free {
-            field: field.clone(),
-            one_lane: lane.is_some(),
-            map_route: Some(MapRoute {
-                road,
-                section,
-                lane,
-            }),
+        let against = name == "s_negative";
+        let part = |road: MapRoad, section: Option<usize>, lane: Option<usize>, against: bool| {
+            Route::Free {
+                field: field.clone(),
+                one_lane: lane.is_some(),
+                map_route: Some(MapRoute {
+                    road,
+                    section,
+                    against,
+                    lane,
+                }),
+            }
         };
         match (name, route_within(ctx, base, depth + 1)?) {
-            ("route_elements", Route::Free {
-                one_lane: false,
-                map_route: None,
-                ..
-            }) => Ok(part(MapRoad::Plan(i), None, None)),
-            ("s_positive" | "lanes", Route::Free {
-                field: f,
-                one_lane: false,
-                map_route: None,
-            }) => Ok(if name == "lanes" {
-                part(MapRoad::Field(f), None, Some(i))
+            (
+                "route_elements",
+                Route::Free {
+                    one_lane: false,
+                    map_route: None,
+                    ..
+                },
+            ) => Ok(part(MapRoad::Plan(i), None, None, false)),
+            (
+                "s_positive" | "s_negative" | "lanes",
+                Route::Free {
+                    field: f,
+                    one_lane: false,
+                    map_route: None,
+                },
+            ) => Ok(if name == "lanes" {
+                part(MapRoad::Field(f), None, Some(i), false)
             } else {
-                part(MapRoad::Field(f), Some(i), None)
+                part(MapRoad::Field(f), Some(i), None, against)
             }),
             (
-                "s_positive",
+                "s_positive" | "s_negative",
                 Route::Free {
                     one_lane: false,
                     map_route:
@@ -1100,10 +1101,11 @@ fn list_element(
                             road,
                             section: None,
                             lane: None,
+                            ..
                         }),
                     ..
                 },
-            ) => Ok(part(road, Some(i), None)),
+            ) => Ok(part(road, Some(i), None, against)),
             (
                 "lanes",
                 Route::Free {
@@ -1112,17 +1114,50 @@ fn list_element(
                         Some(MapRoute {
                             road,
                             section: Some(k),
+                            against,
                             lane: None,
                         }),
                     ..
                 },
-            ) => Ok(part(road, Some(k), Some(i))),
+            ) => Ok(part(road, Some(k), Some(i), against)),
             (_, Route::Free { one_lane: true, .. }) => Err(wrong("a lane or compound lane (its lanes are not run as routes)")),
             (_, Route::Free { .. }) => Err(wrong("an element of another kind")),
             (_, Route::Lane { .. }) => Err(wrong("a route through points (its elements are its points: give them as routes of their own)")),
             (_, Route::Crossing { .. }) => Err(wrong("a crossing")),
         }
     })())
+}
+
+/// Element `i` (written at `at`) of the compound route `e` when the map makes it: the route
+/// given to `map.create_route(routes, …)` at i, `e` the call or a field whose value is one
+/// (through fields given other fields), `depth` fields deep; `None` for any other compound
+/// route.
+fn made_element(
+    ctx: &Ctx<'_>,
+    e: &Expr,
+    (i, at): (usize, &Expr),
+    depth: usize,
+) -> Option<Result<Route, Error>> {
+    if let Some(items) = made_routes(ctx, e) {
+        return Some(match items.get(i) {
+            Some(item) => route_within(ctx, item, depth + 1),
+            None => Err(ctx.files.err(
+                K::Value,
+                at.span,
+                format!("expected an index below {} into the route elements of the compound route (the routes given to create_route, in order), found {i}", items.len()),
+            )),
+        });
+    }
+    let (path, _) = ctx.path_of(e).and_then(|p| ctx.lookup(&p))?;
+    let (value, owner) = field_value(ctx, &path)?;
+    if depth >= MAX_FIELD_DEPTH {
+        return Some(Err(ctx.files.err(
+            K::Value,
+            e.span,
+            format!("expected route fields whose values end in a route the map makes, found `{path}` defined through itself"),
+        )));
+    }
+    made_element(&owner, value, (i, at), depth + 1)
 }
 
 /// The routes given to `map.create_route(routes, …)` when `e` is such a call with a list.

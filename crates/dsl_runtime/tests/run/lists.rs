@@ -29,6 +29,23 @@ fn the_elements_of_the_librarys_lists_are_routes_along_their_part_of_the_road() 
 }
 
 #[test]
+fn a_roads_sections_in_minus_s_and_their_lanes_are_driven_against_s() {
+    let r = run_on("lists/list_negative", "lane_drop");
+    for (actor, x0) in [("bike", 450.0), ("van", 300.0)] {
+        for (t, x) in [(0.0, x0), (2.5, x0 - 25.0), (5.0, x0 - 50.0)] {
+            let p = r.at(t, actor);
+            assert!(
+                (p.x - x).abs() < S_TOL
+                    && (p.y - 1.75).abs() < S_TOL
+                    && p.lane == 1
+                    && (p.h.abs() - std::f64::consts::PI).abs() < 1e-9,
+                "{actor} at {t} s: {p:?}"
+            );
+        }
+    }
+}
+
+#[test]
 fn an_element_past_its_list_or_of_no_list_run_is_an_error_at_its_place() {
     for (name, road, at, what) in [
         ("err_list_section", "lane_drop", "9:9", "expected an index below 2 into the lane sections in +s of `rd`"),
@@ -37,7 +54,8 @@ fn an_element_past_its_list_or_of_no_list_run_is_an_error_at_its_place() {
         ("err_list_element", "lane_drop", "8:33", "expected an index below 2 into the route elements of the compound route"),
         ("err_list_sidewalk", "sidewalk", "9:9", "expected a driving lane as `rd.s_positive[0].lanes[2]`, found lane -3"),
         ("err_list_section_end", "lane_drop", "10:9", "expected `npc` on route `rd.s_positive[0]` (the lane section of road 1 from s = 0.00 m"),
-        ("err_list_compound_lane", "lane_drop", "8:15", "expected a compound route before .route_elements, a road before .s_positive, or a lane section before .lanes"),
+        ("err_list_negative", "lane_drop", "9:9", "expected an index below 2 into the lane sections in -s of `rd`"),
+        ("err_list_compound_lane", "lane_drop", "8:15", "expected a compound route before .route_elements, a road before .s_positive or .s_negative, or a lane section before .lanes"),
     ] {
         let e = error_on(&format!("lists/{name}"), road);
         assert!(
