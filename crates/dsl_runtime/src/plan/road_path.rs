@@ -1,16 +1,20 @@
 //! Paths through points of the road network (ASAM OpenSCENARIO DSL 2.1 §8.12.2.1.11
 //! `map.create_path_odr_points(points, interpolation, on_road_network)`, §8.12.2.1.12
 //! `map.create_path_route_points(…)`: "Sequence of `odr_point` (`route_point`) that will be
-//! converted to world x-y-z-coordinates to create a `path`"), turned into world points.
+//! converted to world x-y-z-coordinates to create a `path`"), and trajectories through them
+//! (§8.12.2.1.14 `create_trajectory_odr_points(points, time_stamps, …)`, §8.12.2.1.15
+//! `create_trajectory_route_points(…)`, the same points with time stamps), turned into world
+//! points.
 //!
 //! Where the conversion happens: a point's world position needs the road network, which the
 //! resolver does not have. The resolver keeps the path symbolic (`Place::RoadPath`: each point
 //! as the route from it, road, lane, s and t, or a point on a route), and this module, run by
-//! the plan stage that is given the network before it plans, replaces it by the
-//! `Place::Path` of its world points. So the stages keep passing data forward (resolve → plan
-//! → lower) and no stage calls back into another for the network; from here on the path is
-//! the one `create_path` gives, followed by `follow_path(absolute: …)` or by a movement with
-//! `along(…)` (`trajectory_actions`).
+//! the plan stage that is given the network before it plans, replaces it by the `Place::Path`
+//! (`Place::Trajectory`, its time stamps kept) of its world points. So the stages keep passing
+//! data forward (resolve → plan → lower) and no stage calls back into another for the
+//! network; from here on the path is the one `create_path` gives (the trajectory
+//! `create_trajectory`'s), followed by `follow_path(absolute: …)` or by a movement with
+//! `along(…)` (`follow_trajectory(absolute: …)`) (`trajectory_actions`).
 //!
 //! oscsim's choices where the standard is silent:
 //! - a point is placed as a route from it is (`route::locate_route`: an odr point's t from its
@@ -27,6 +31,7 @@
 //!   the path naming the point.
 
 use super::path_part::samples;
+use super::path_shape::{segment_lengths, Pose2};
 use super::route::{locate_route, on_surface};
 use crate::error::{Error, ErrorKind as K, Site};
 use crate::resolve::{Kind, Phase, Place, Resolved, Route};
@@ -43,11 +48,23 @@ pub(crate) fn locate_paths(resolved: &mut Resolved, net: &RoadNetwork) -> Result
             for a in &mut inv.places {
                 if let Place::RoadPath {
                     points,
+                    times,
                     smooth,
                     on_road_network,
                 } = &a.place
                 {
-                    a.place = world_path(points, *smooth, *on_road_network, net, &a.site)?;
+                    let points = world_path(points, *smooth, *on_road_network, net, &a.site)?;
+                    a.place = match times {
+                        None => Place::Path {
+                            points,
+                            smooth: *smooth,
+                        },
+                        Some(times) => Place::Trajectory {
+                            points,
+                            times: times.clone(),
+                            smooth: *smooth,
+                        },
+                    };
                 }
             }
         }
@@ -56,23 +73,22 @@ pub(crate) fn locate_paths(resolved: &mut Resolved, net: &RoadNetwork) -> Result
     walk(&mut resolved.root, net)
 }
 
-/// The path through `points` (each a route from one point) on `net`, errors at `site`.
+/// The world points (x, y, heading) of the path through `points` (each a route from one point)
+/// on `net`, joined `smooth`ly or not; errors at `site`.
 fn world_path(
     points: &[Route],
     smooth: bool,
     on_road_network: bool,
     net: &RoadNetwork,
     site: &Site,
-) -> Result<Place, Error> {
+) -> Result<Vec<Pose2>, Error> {
     let world = points
         .iter()
         .enumerate()
         .map(|(i, r)| world_point(i, r, net, site))
         .collect::<Result<Vec<_>, _>>()?;
     if on_road_network {
-        let length: f64 = super::path_shape::segment_lengths(&world, smooth)
-            .iter()
-            .sum();
+        let length: f64 = segment_lengths(&world, smooth).iter().sum();
         let (line, _) = samples(&world, None, smooth, (0.0, length), STEP);
         if let Some((x, y, _)) = line
             .into_iter()
@@ -84,10 +100,7 @@ fn world_path(
             ));
         }
     }
-    Ok(Place::Path {
-        points: world,
-        smooth,
-    })
+    Ok(world)
 }
 
 /// World x, y and heading of the path's point `i`, the route from it `r`: the lane's centre

@@ -46,14 +46,18 @@ pub(crate) enum Place {
         points: Vec<(f64, f64, f64)>,
         smooth: bool,
     },
-    /// A path through points of the road network (`map.create_path_odr_points(points,
-    /// interpolation, on_road_network)`, `map.create_path_route_points(…)`, §8.12.2.1.11-12):
-    /// each point a route from one point (an odr point, a route point), kept as the resolver
-    /// reads it; the plan stage, which has the network, turns it into a [`Place::Path`] of
-    /// world points (`crate::plan`'s `locate_points`). `on_road_network`: "the points of the
+    /// A path or trajectory through points of the road network
+    /// (`map.create_path_odr_points(points, interpolation, on_road_network)`,
+    /// `map.create_path_route_points(…)`, §8.12.2.1.11-12; with `times`,
+    /// `map.create_trajectory_odr_points(points, time_stamps, …)`,
+    /// `map.create_trajectory_route_points(…)`, §8.12.2.1.14-15): each point a route from one
+    /// point (an odr point, a route point), kept as the resolver reads it; the plan stage,
+    /// which has the network, turns it into a [`Place::Path`] (a [`Place::Trajectory`]) of
+    /// world points (`crate::plan`'s `locate_paths`). `on_road_network`: "the points of the
     /// path must be joined while keeping the whole path on the road network".
     RoadPath {
         points: Vec<Route>,
+        times: Option<Vec<f64>>,
         smooth: bool,
         on_road_network: bool,
     },
@@ -116,7 +120,8 @@ pub(crate) fn read(
 
 /// The path `e` gives as the route of an `along(…)` (§8.12: a `path` inherits `route`, "a
 /// polyline of points"), with the arguments that place it: `map.create_path(points,
-/// interpolation)`, `map.create_path_odr_points(…)`, `map.create_path_route_points(…)` (none), `map.resolve_relative_path(relative_path, reference, transform)`
+/// interpolation)`, `map.create_path_odr_points(…)`, `map.create_path_route_points(…)` (none),
+/// `map.resolve_relative_path(relative_path, reference, transform)`
 /// (§8.12.2.1: the relative path placed against `reference` in the frame `transform` says,
 /// as `follow_path(relative: …, reference, transform)` places one: its `reference` and
 /// `transform`), or a field given one at its declaration; `None` for anything else (the route
@@ -260,7 +265,10 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
                     Place::Path { points, smooth }
                 })
             }
-            "create_path_odr_points" | "create_path_route_points" => road_path(ev, e, method, args),
+            "create_path_odr_points"
+            | "create_path_route_points"
+            | "create_trajectory_odr_points"
+            | "create_trajectory_route_points" => road_path(ev, e, method, args),
             m => Err(bad(&format!("map.{m}(…)"))),
         };
     }
@@ -389,19 +397,70 @@ fn smooth(ev: &Eval<'_>, e: Option<&Expr>) -> Result<bool, Error> {
 }
 
 /// The path of `map.create_path_odr_points(points, interpolation, on_road_network)` or
-/// `map.create_path_route_points(…)` (`method`, its arguments `args`; §8.12.2.1.11-12: "Sequence
-/// of odr_point (route_point) that will be converted to world x-y-z-coordinates to create a
-/// path"): each point read as the route from it (`route`), which the plan stage places on the
-/// network. A point that is a route of more than one point (no point of its own) is an error
+/// `map.create_path_route_points(…)` (`method`, its call `e`, its arguments `args`;
+/// §8.12.2.1.11-12: "Sequence of odr_point (route_point) that will be converted to world
+/// x-y-z-coordinates to create a path"), or the trajectory of
+/// `map.create_trajectory_odr_points(points, time_stamps, …)` /
+/// `map.create_trajectory_route_points(…)` (§8.12.2.1.14-15): each point read as the route
+/// from it (`route`), which the plan stage places on the network. A point that is a route of more than one point (no point of its own) is an error
 /// at it.
 fn road_path(ev: &Eval<'_>, e: &Expr, method: &str, args: &[HirArg]) -> Result<Place, Error> {
-    let names = ["points", "interpolation", "on_road_network"].map(String::from);
+    let trajectory = method.starts_with("create_trajectory");
+    let names: &[&str] = if trajectory {
+        &["points", "time_stamps", "interpolation", "on_road_network"]
+    } else {
+        &["points", "interpolation", "on_road_network"]
+    };
+    let names: Vec<String> = names.iter().map(|n| n.to_string()).collect();
     let bound = bind(args, &names);
     let given = |n: &str| bound_to(&bound, n);
-    let kind = if method == "create_path_odr_points" {
+    let kind = if method.ends_with("odr_points") {
         "odr_point"
     } else {
         "route_point"
+    };
+    // A trajectory's time stamps: checked against its points by the plan, as create_trajectory's.
+    let times = match (trajectory, given("time_stamps").map(|t| (t, &t.kind))) {
+        (false, _) => None,
+        (true, Some((_, ExprKind::List(items)))) => Some(
+            items
+                .iter()
+                .map(|t| ev.number(t))
+                .collect::<Result<Vec<_>, _>>()?,
+        ),
+        // A field given the list (`time_stamps: list of time = [0s, 2s, 5s]`, §8.12.2.1.14's
+        // example), resolved by the solver.
+        (true, Some((t, _))) if ev.path_of(t).and_then(|p| ev.lookup(&p)).is_some() => {
+            match ev.path_of(t).and_then(|p| ev.lookup(&p)) {
+                Some((_, Value::List(items))) => Some(
+                    items
+                        .iter()
+                        .map(|v| match v {
+                            Value::Quantity { si, .. } | Value::Float(si) => Ok(*si),
+                            _ => Err(ev.files.err(
+                                K::Value,
+                                t.span,
+                                "expected time stamps (times) in the list, found another value",
+                            )),
+                        })
+                        .collect::<Result<Vec<_>, _>>()?,
+                ),
+                _ => {
+                    return Err(ev.files.err(
+                        K::Value,
+                        t.span,
+                        format!("expected a list of time stamps in map.{method}(…), found another value"),
+                    ))
+                }
+            }
+        }
+        (true, found) => {
+            return Err(ev.files.err(
+                K::Value,
+                found.map_or(e.span, |(t, _)| t.span),
+                format!("expected a list of time stamps (a list literal, `[t0, t1, …]`) in map.{method}(…), found {}", if found.is_some() { "another expression" } else { "none" }),
+            ))
+        }
     };
     let items = match given("points").map(|e| (e, &e.kind)) {
         Some((_, ExprKind::List(items))) if items.len() >= 2 => items,
@@ -453,6 +512,7 @@ fn road_path(ev: &Eval<'_>, e: &Expr, method: &str, args: &[HirArg]) -> Result<P
     };
     Ok(Place::RoadPath {
         points,
+        times,
         smooth: smooth(ev, given("interpolation"))?,
         on_road_network,
     })

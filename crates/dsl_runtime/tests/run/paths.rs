@@ -42,6 +42,14 @@ fn follow_path_follows_a_path_through_odr_points() {
     crate::position_actions::follows_the_s_curve("paths/follow_path_odr");
 }
 
+/// follow_trajectory(absolute:) of map.create_trajectory_odr_points(…) (§8.12.2.1.14): odr
+/// points whose world points are follow_trajectory.osc's, with its stamps: its motion
+/// (follow_trajectory_odr.osc).
+#[test]
+fn follow_trajectory_follows_a_trajectory_through_odr_points() {
+    crate::position_actions::reaches_each_point_at_its_time_stamp("paths/follow_trajectory_odr");
+}
+
 /// follow_path's steering within the vehicle's limits from the lane's heading onto a chord
 /// 0.179 rad off it (m; as `position_actions`' S-curve).
 const PURSUIT_TOL: f64 = 0.02;
@@ -82,6 +90,12 @@ fn a_path_off_the_network_or_through_a_point_it_lacks_is_an_error_at_its_place()
         e.starts_with(
             "expected point 2 of the path (road 1, lane -4, s = 60 m, t = 0 m) on the road network"
         ) && e.ends_with("err_path_point.osc:7:9"),
+        "{e}"
+    );
+    let e = crate::support::error("paths/err_trajectory_stamps");
+    assert!(
+        e.starts_with("expected two or more points with as many rising time stamps, found 3 points and 2 time stamps")
+            && e.ends_with("err_trajectory_stamps.osc:8:40"),
         "{e}"
     );
     let e = crate::support::error("paths/err_path_points");

@@ -101,7 +101,13 @@ fn after_a_straight_change_position_the_actor_faces_along_its_lane() {
 
 #[test]
 fn follow_trajectory_reaches_each_point_at_its_time_stamp() {
-    let r = run("actions/follow_trajectory", 0, None);
+    reaches_each_point_at_its_time_stamp("actions/follow_trajectory");
+}
+
+/// follow_trajectory.osc's trajectory followed by `name`: each point at its time stamp, by hand
+/// (follow_trajectory.osc).
+pub(crate) fn reaches_each_point_at_its_time_stamp(name: &str) {
+    let r = run(name, 0, None);
     close(r.at(1.0, "ego").x, 30.0, "x(1)");
     close(r.at(1.0, "ego").y, -8.75, "y(1)");
     close(r.at(2.0, "ego").x, 40.0, "x(2)");
