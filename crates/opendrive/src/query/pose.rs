@@ -61,8 +61,11 @@ impl Road {
     }
 
     /// Heading of the reference line at `s`: the `h` of [`pose`](Self::pose) at any t, bit for
-    /// bit, without evaluating the elevation and lateral profiles.
-    #[inline]
+    /// bit, without evaluating the elevation and lateral profiles. Always inlined: the moves
+    /// of the step ask it once per entity for the curvature (engine world/lanes.rs), where
+    /// an out-of-line call returning its `Result` through memory was 60 instructions for a
+    /// line's heading (issue 31).
+    #[inline(always)]
     pub fn heading(&self, s: Real) -> Result<Real, Error> {
         let s = self.check_s(s)?;
         Ok(self.plan_view.eval_trig(s).0.hdg)
