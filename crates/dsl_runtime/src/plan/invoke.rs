@@ -87,31 +87,37 @@ impl Planner<'_> {
         if self.random.contains_key(&inv.actor) {
             return self.plan_random_traffic(p, inv, t0, out, after);
         }
-        // A relation to a member of random traffic reads a motion only the engine knows: the
-        // run-time forms (random_traffic_relations).
-        let t0 = match (self.reads_members(p, inv), t0) {
-            (Some(moves), Some(t)) => {
-                if moves {
-                    let targets = self.groups.get(&inv.actor).cloned();
-                    for a in targets.unwrap_or_else(|| vec![inv.actor.clone()]) {
-                        self.engine_moved.insert(a, Some(t));
-                    }
-                }
-                None
-            }
-            (_, t0) => t0,
-        };
         let targets: Vec<String> = match self.groups.get(&inv.actor) {
             Some(m) => m.clone(),
             None => vec![inv.actor.clone()],
         };
+        // A relation to a member of random traffic reads a motion only the engine knows: the
+        // run-time forms (random_traffic_relations), for each target after its first phase (a
+        // group's phase that is the first of some of its members only: those placed from the
+        // member as drawn, the others read it at run time).
+        let starts: Vec<Option<f64>> = targets
+            .iter()
+            .map(|a| match (self.reads_members(p, inv, a), t0) {
+                (Some(moves), Some(t)) => {
+                    if moves {
+                        self.engine_moved.insert(a.clone(), Some(t));
+                    }
+                    None
+                }
+                (_, t0) => t0,
+            })
+            .collect();
+        // The phase's start the plan knows for the group as a whole: none where every target
+        // reads a member at run time.
+        let t0 = t0.filter(|_| starts.iter().any(Option::is_some));
         // Each member's place in its group's formation at the start, before any member's
         // action changes the plan (position_actions moves the formation as a whole).
         let formation: Vec<Option<(f64, f64)>> = targets
             .iter()
-            .map(|m| {
+            .zip(&starts)
+            .map(|(m, start)| {
                 let lead = self.groups.get(&inv.actor)?.first()?;
-                let t = t0?;
+                let t = (*start)?;
                 Some((
                     self.s_at(m, t) - self.s_at(lead, t),
                     self.t_at(m, t) - self.t_at(lead, t),
@@ -127,7 +133,7 @@ impl Planner<'_> {
             self.check_group_path(p, inv, t0)?;
         }
         let mut derived = None;
-        for (target, formation) in targets.iter().zip(formation) {
+        for ((target, formation), t0) in targets.iter().zip(formation).zip(starts) {
             let first = self.first_leaf.get(target) == Some(&p.path);
             let mut n = 0;
             let mut name = |what: &str| {

@@ -17,9 +17,9 @@
 //! A group of the plan (a `vehicle_group`, not random traffic) in its members' first phase is
 //! placed so too: each of its members is held and placed from the member as drawn, the group's
 //! formation kept (`convoy.drive() with: position(40m, behind: g.vehicles[0], at: start)`).
-//! A group's phase that is the first of some of its members only (another of them acted
-//! before) is not run yet (`Unsupported`, at the argument): each would be placed from the
-//! member as drawn or read it at run time within one phase.
+//! A group's phase that is the first of some of its members only (others of them acted
+//! before) places those from the member as drawn, and the others read it in the engine's
+//! run-time forms at the phase start, as after any first phase (`reads_members`, per member).
 //!
 //! Random traffic relating to a member (of other random traffic, or its own) is what its
 //! planners take of any other actor, read where the member is: on the creating phase
@@ -125,10 +125,14 @@ impl Planner<'_> {
                     .map(|(k, _)| k)
                     .collect(),
             };
-            let actor_first = !placed.is_empty()
-                && placed
-                    .iter()
-                    .all(|a| !self.random_member(a) && self.first_leaf.get(*a) == Some(&leaf.path));
+            // Those of them whose first phase this is: placed from the member as drawn; the
+            // others (members of a group that acted before) read it at run time
+            // (`reads_members`).
+            let firsts: Vec<&String> = placed
+                .iter()
+                .copied()
+                .filter(|a| !self.random_member(a) && self.first_leaf.get(*a) == Some(&leaf.path))
+                .collect();
             for (m, key, a) in inv.all_args() {
                 let Some(x) = a.path.as_deref() else {
                     continue;
@@ -136,8 +140,8 @@ impl Planner<'_> {
                 if x == inv.actor || !(self.random_member(x) || self.random.contains_key(x)) {
                     continue;
                 }
-                if actor_first && placed_from(m) && self.random_member(x) {
-                    out.extend(placed.iter().map(|actor| MemberRelation {
+                if !firsts.is_empty() && placed_from(m) && self.random_member(x) {
+                    out.extend(firsts.iter().map(|actor| MemberRelation {
                         actor: (*actor).clone(),
                         member: x.to_string(),
                         site: a.site.clone(),
@@ -152,32 +156,17 @@ impl Planner<'_> {
                 if self.random.contains_key(&inv.actor) && self.random_member(x) {
                     continue;
                 }
-                // After the actor's first phase, a gap action's reference, a relation at the
-                // first phase's end, an acceleration or a heading relative to it: the engine's
-                // run-time forms (`reads_members`).
-                let at_end = m.is_some_and(|m| {
-                    m.at == At::End
-                        || matches!(m.kind, ModKind::Acceleration | ModKind::Orientation)
-                });
-                if self.random_member(x)
-                    && !self.random.contains_key(&inv.actor)
-                    && (!self.first_phase(&inv.actor, &leaf.path) || m.is_none() || at_end)
-                {
+                // After the actor's first phase (for a group, of each member that acted
+                // before), a gap action's reference, a relation at the first phase's end, an
+                // acceleration or a heading relative to it: the engine's run-time forms
+                // (`reads_members`).
+                if self.random_member(x) && !self.random.contains_key(&inv.actor) {
                     continue;
                 }
                 let what = m.map_or_else(
                     || format!("{}(…)", inv.action),
                     |m| format!("{}(…)", m.name),
                 );
-                // What is left: a group's phase that is the first of some of its members
-                // and a later one of others (each would be placed from the member as drawn,
-                // or read it at run time, in one phase).
-                if self.random_member(x) {
-                    return Err(a.site.err(
-                        K::Unsupported,
-                        format!("expected `{key}:` of {what} to name an actor the plan moves, or a member of random traffic in a phase of `{}` that is the first of all its members (each placed from the member as drawn from the seed) or of none (the engine's run-time forms), found `{x}` of random traffic in a phase that is the first of some of its members only (not run yet)", inv.actor),
-                    ));
-                }
                 // The group as a whole, or a member relating to another: bad input.
                 return Err(a.site.err(
                     K::Unsatisfiable,
@@ -188,23 +177,13 @@ impl Planner<'_> {
         Ok(out)
     }
 
-    /// Whether phase `path` is the first of `actor` (of one of its members, for a group).
-    fn first_phase(&self, actor: &str, path: &str) -> bool {
-        let first = |a: &str| self.first_leaf.get(a).is_some_and(|f| f == path);
-        first(actor)
-            || self
-                .groups
-                .get(actor)
-                .is_some_and(|ms| ms.iter().any(|m| first(m)))
-    }
-
-    /// Whether invocation `inv` (phase `p`) relates its actor to a member of random traffic
-    /// after the actor's first phase (`random_traffic_relations` let only those and gap actions
-    /// through): `Some(moves)`, planned in the engine's run-time forms, as after a start the
+    /// Whether invocation `inv` (phase `p`) relates `target` (its actor, or a member of its
+    /// group) to a member of random traffic after `target`'s first phase
+    /// (`random_traffic_relations` let only those and gap actions through): `Some(moves)`, planned in the engine's run-time forms, as after a start the
     /// plan does not know (the member's motion is its model's); `moves`: the engine then sets
     /// the actor's motion (a speed, a place at the end, a gap), so the plan no longer knows
     /// its track, as after a gap action; a check of a place at the start leaves it known.
-    pub(super) fn reads_members(&self, p: &Phase, inv: &Invoke) -> Option<bool> {
+    pub(super) fn reads_members(&self, p: &Phase, inv: &Invoke, target: &str) -> Option<bool> {
         if self.random.is_empty() || self.random.contains_key(&inv.actor) {
             return None;
         }
@@ -214,8 +193,8 @@ impl Planner<'_> {
                 continue;
             }
             // The first phase's relations at its start place the actor from the member as
-            // drawn.
-            if placed_from(m) && self.first_phase(&inv.actor, &p.path) {
+            // drawn (for a group, each member whose first phase it is).
+            if placed_from(m) && self.first_leaf.get(target) == Some(&p.path) {
                 continue;
             }
             let check = m.is_some_and(|m| {
