@@ -13,9 +13,16 @@
 //! - the walker's centre is then where `lateral::beside` puts it from that extent, as beside
 //!   x in a lane (`measure_by`, `side`, d), the walker's width across its own line;
 //! - `at: start`: x read at the walk's start, the walk's line moved so; `at: all` (the
-//!   default) the same, and x's place across must be the same at the walk's end (1e-6 m),
-//!   the two moments the plan knows a walker on a crossing at (between them the engine moves
-//!   it); `at: end`: x read at the walk's end, the walk from the crossing's line to there (its
+//!   default, §8.9.1.1.1: the constraint "holds throughout the phase") the same, held over the
+//!   walk: the plan's check that x's place across is the same at the walk's end (1e-6 m), an
+//!   error before the run, and the engine's check at every step of the walk (oscsim's
+//!   `StateCheck::across_line`, held: `StateCheck::throughout`), measured as the plan measures
+//!   it: x's box, turned to x's heading where the engine has it, projected on the normal of
+//!   the crossing's line in the world (the line in road coordinates where the reference line is
+//!   straight under the crosswalk, as `crossing_walk` lays the walk), the walker's reference
+//!   point `lateral::beside` from it (1 cm); a failure is an error record and a failed run (x
+//!   moving across the line within the walk and back, which the two ends do not show);
+//!   `at: end`: x read at the walk's end, the walk from the crossing's line to there (its
 //!   end depends on the line's length: settled by repeating, 1e-9 s).
 //!
 //! A first phase is placed on the crossing's line by the placement (x's place is not known
@@ -25,10 +32,11 @@ use super::crossing_walk::{walked_part, Part, Walk};
 use super::lateral;
 use super::map_crossings::MapCrossing;
 use super::planner::Planner;
-use super::types::CrossingPoint;
+use super::types::{CrossingPoint, Planned, LATERAL_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Arg, At, Modifier};
 use crate::road::PlanRoad;
+use scenario::{AcrossLine, StateCheck};
 
 /// How far x's place across the line may differ at the walk's end under `at: all` (m).
 pub(super) const ACROSS_TOLERANCE: f64 = 1e-6;
@@ -114,6 +122,52 @@ impl Planner<'_> {
         let x = self.entity_of(e)?;
         let (centre, extent) = self.across_line(c, (&x, e), tau)?;
         lateral::beside(m, sigma, (centre, extent), self.width(target))
+    }
+}
+
+impl Planner<'_> {
+    /// The engine's check of `m`, a `lateral(…)` at: all beside x (`e`, on side `sigma`) of
+    /// the walker `target` along crossing `c`, held over the walk as the action `name` (module
+    /// doc): its place across the line's world normal from the middle of x's box across it,
+    /// `lateral::beside` of x's extent (linear in it: k·extent + c). `None` off the plan's
+    /// roads (the walk is not planned there either).
+    pub(super) fn across_check(
+        &self,
+        c: &MapCrossing,
+        m: &Modifier,
+        (e, sigma): (&Arg, f64),
+        target: &str,
+        name: String,
+    ) -> Result<Option<Planned>, Error> {
+        let x = self.entity_of(e)?;
+        let (_, s0, w0) = c.crossing.start;
+        let (_, s1, w1) = c.crossing.end;
+        let ends = self
+            .road
+            .world_pose(c.road_start + s0, w0)
+            .zip(self.road.world_pose(c.road_start + s1, w1));
+        let Some(((x0, y0, _), (x1, y1, _))) = ends else {
+            return Ok(None);
+        };
+        let length = (x1 - x0).hypot(y1 - y0);
+        // The walker's left of the line: its direction turned by +90°.
+        let normal = (-(y1 - y0) / length, (x1 - x0) / length);
+        let width = self.width(target);
+        let offset = lateral::beside(m, sigma, (0.0, 0.0), width)?;
+        let per_extent = lateral::beside(m, sigma, (0.0, 1.0), width)? - offset;
+        let check = StateCheck {
+            what: format!("{}(…) at {}", m.name, m.site.at()),
+            across_line: Some(AcrossLine {
+                entity_ref: x,
+                normal,
+                per_extent,
+                offset,
+                tolerance: LATERAL_TOLERANCE,
+            }),
+            throughout: true,
+            ..StateCheck::default()
+        };
+        Ok(Some(self.checked(check, m, target, name)))
     }
 }
 

@@ -126,6 +126,13 @@ impl Planner<'_> {
             t,
             start_across,
         };
+        // Beside x at: all, held over the walk: the engine's check at every step (x's place
+        // across the line between the walk's ends is the engine's, `crossing_beside`).
+        if let Some((m, r)) = beside.filter(|(m, _)| m.at == At::All && !m.projected) {
+            if let Some(check) = self.across_check(&c, m, r, target, name("across"))? {
+                slot.out.push(check);
+            }
+        }
         if speed_action {
             return self.speed_along_crossing(p, (inv, field), &walk, slot, name);
         }

@@ -2,7 +2,7 @@
 //! (`plan/crossing_walk.rs`; ASAM OpenSCENARIO DSL 2.1 §8.12.2.2.9 `crossing_connects`, §8.9
 //! `lateral`). Positions worked by hand in the scenario files' comments.
 
-use crate::support::{error_on, run_on};
+use crate::support::{error_on, run_on, run_to_error_on};
 
 /// Positions along a straight crossing on a straight road: float round-off only.
 const XY_TOL: f64 = 1e-6;
@@ -119,10 +119,18 @@ fn actions_on_the_speed_along_a_crossing_move_along_its_line_at_their_speed() {
     assert_eq!(r.at(4.25, "bob").lane, -1);
 }
 
-/// crossing_beside.osc's comment, by hand: beside alice across the crossings' lines.
+/// crossing_beside.osc's comment, by hand: beside alice across the crossings' lines; bob's
+/// place beside her (at: all) the engine's check held over his walk, which holds.
 #[test]
 fn a_walker_beside_another_is_beside_its_place_across_the_crossing() {
+    let (error, records) = run_to_error_on("crossing_beside", "crosswalk");
+    assert!(
+        error.is_none() && records.is_empty(),
+        "{error:?} {records:?}"
+    );
     let r = run_on("crossing_beside", "crosswalk");
+    // bob's place beside alice (at: all): the engine's check at every step of his walk.
+    r.held("do.two/bob/1:across", (0.0, 7.0));
     for (t, y) in [(0.0, -1.75), (3.5, 0.0), (7.0, 1.75)] {
         at(&r, "alice", t, 100.0, y);
         at(&r, "bob", t, 98.5, y);
@@ -136,6 +144,39 @@ fn a_walker_beside_another_is_beside_its_place_across_the_crossing() {
     // At 3.5 s, 3.5/len of the way from (99, 1.75) to (99.25, -1.75).
     let f = 3.5 / len;
     at(&r, "dan", 3.5, 99.0 + 0.25 * f, 1.75 - 3.5 * f);
+}
+
+/// crossing_beside_moving_fails.osc's comment, by hand: carl moves across c's line from the
+/// start and is back by the end of bob's walk at 7 s, so the plan's check of the walk's ends
+/// holds; the engine's check of bob beside carl, held over the walk, holds as it starts and in
+/// the step from 0 s finds bob 1.0375 m from the middle of carl's 0.7 m box (carl where its walk
+/// puts it at the step's end) where 1.0 m is asked: the one error record, at the end of that
+/// step (0.05 s), and a failed run.
+#[test]
+fn a_walker_beside_another_that_moves_across_the_line_and_back_fails_in_the_walk() {
+    let (error, records) = run_to_error_on("crossing_beside_moving_fails", "crosswalk");
+    let error = error.expect("the run fails");
+    let want = "expected 'bob' 1.000 m across the line from the middle of 'carl''s box across it, 0.700 m wide (within 0.01 m) (lateral(…) at ";
+    assert!(error.starts_with(want), "{error}");
+    let (place, found) = error
+        .split_once("), found ")
+        .unwrap_or_else(|| panic!("{error}"));
+    assert!(
+        place.ends_with("crossing_beside_moving_fails.osc:45:13"),
+        "{error}"
+    );
+    let (got, when) = found
+        .split_once(" m at t = ")
+        .unwrap_or_else(|| panic!("{error}"));
+    let got: f64 = got.parse().unwrap_or_else(|_| panic!("{error}"));
+    assert!(
+        (got - 1.0375).abs() <= 5e-4 + 1e-9 && when == "0.000 s",
+        "{error}"
+    );
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 0.05).abs() < T_TOL, "{records:?}");
+    assert_eq!(records[0].1, "do.walk/bob/1:across");
+    assert_eq!(records[0].2, error);
 }
 
 #[test]

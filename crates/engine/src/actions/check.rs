@@ -4,7 +4,8 @@
 //! starts, the actor's road position (the one measured at the step's start, as every trigger
 //! of the step sees it) must be in the lane, at the offset (from the lane's centre, or from a
 //! border of the lane as wide as it is there), with a place beside another entity in a
-//! driving lane, and at the distance to another
+//! driving lane or across a straight line beside another entity's box (`across_line`: the
+//! DSL's `lateral(…)` beside x of a walk along a crossing), and at the distance to another
 //! entity it gives (or in the lane given relative to another entity's), at the speed it gives
 //! (absolute or another entity's plus a value) and that far from a mark noted before (its
 //! odometer), a linear speed change starting with it must fit the vehicle's Performance,
@@ -23,7 +24,7 @@
 //! along its direction of travel (u = L − s, t and offsets to its left), the plan's numbers.
 
 use opendrive::{Direction, RoadPosition};
-use scenario::{RateWithin, SourcePos, StateCheck};
+use scenario::{AcrossLine, RateWithin, SourcePos, StateCheck};
 
 use super::lane_change::side_lane;
 use super::speed;
@@ -241,6 +242,9 @@ pub(super) fn require(
                 format!("{got:.3} m"),
             ));
         }
+    }
+    if let Some(a) = &check.across_line {
+        require_across(world, e, a, &fail)?;
     }
     let places = check.lane.is_some()
         || check.lane_of.is_some()
@@ -473,6 +477,41 @@ pub(super) fn require(
                 format!("{got:.3} m"),
             ));
         }
+    }
+    Ok(())
+}
+
+/// `e`'s place across a straight line beside another entity (`StateCheck::across_line`): its
+/// reference point across the line, from the middle of the entity's box across it (the box's
+/// footprint, turned to its heading now, projected on the line's normal), against
+/// `per_extent`·extent + `offset`.
+fn require_across(
+    world: &World,
+    e: &crate::world::entity::Entity,
+    a: &AcrossLine,
+    fail: &dyn Fn(String, String) -> Error,
+) -> Result<(), Error> {
+    let Some(x) = world.id(&a.entity_ref).map(|o| world.entity(o)) else {
+        return Err(fail(
+            format!("'{}' in the scenario", a.entity_ref),
+            "no such entity".into(),
+        ));
+    };
+    let n = [a.normal.0, a.normal.1];
+    let (lo, hi) = x.bounding_box.footprint(&x.pose).project(n);
+    let want = a.per_extent * (hi - lo) + a.offset;
+    let got = e.pose.x * n[0] + e.pose.y * n[1] - (lo + hi) / 2.0;
+    if (got - want).abs() > a.tolerance {
+        return Err(fail(
+            format!(
+                "'{}' {want:.3} m across the line from the middle of '{}''s box across it, {:.3} m wide (within {} m)",
+                e.name,
+                a.entity_ref,
+                hi - lo,
+                a.tolerance
+            ),
+            format!("{got:.3} m"),
+        ));
     }
     Ok(())
 }

@@ -125,6 +125,10 @@ pub struct StateCheck {
     /// that starts on a run-time condition: the place the gap puts the actor, which the plan
     /// checks at a known start).
     pub beside_in_lane: Option<(String, f64)>,
+    /// A place across a straight line in the world beside another entity (ASAM OpenSCENARIO
+    /// DSL 2.1 §8.9 `lateral(d, side_of/left_of/right_of: x)` beside a walk along a crossing,
+    /// §8.12.2.2.9: "beside x" across the crossing's line, the walk's route).
+    pub across_line: Option<AcrossLine>,
     /// A speed change of the given shape over the given time (s) to the target, starting with
     /// the check (the SpeedAction beside it): its peak rate must fit the actor's Performance,
     /// which would otherwise stretch it in time (ASAM OpenSCENARIO DSL 2.1 §8.9 `speed(…,
@@ -174,6 +178,27 @@ pub struct StateCheck {
     /// lane at the speed it has then (a time gap at that speed), in its lane then, whatever it
     /// does after.
     pub projected: bool,
+}
+
+/// A place a [`StateCheck`] requires of its actor across a straight line in the world, beside
+/// another entity (oscsim, no XML form; see [`StateCheck::across_line`]): with `n` the line's
+/// unit normal, the entity's box (its footprint, turned to its heading) projected on `n` the
+/// interval [lo, hi], the actor's reference point projected on `n` minus (lo + hi)/2 must be
+/// `per_extent`·(hi − lo) + `offset` within `tolerance`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AcrossLine {
+    /// The other entity.
+    pub entity_ref: String,
+    /// The line's unit normal in the road network's inertial frame (x, y); "across" is
+    /// measured along it.
+    pub normal: (f64, f64),
+    /// The factor of the entity's extent across the line (m/m): ½ measured to the side of its
+    /// box towards +`normal`, −½ to the other, 0 to its middle.
+    pub per_extent: f64,
+    /// The rest of the actor's place across the line from the middle of the entity's box (m).
+    pub offset: f64,
+    /// How far the actor's place may be from the one asked (m).
+    pub tolerance: f64,
 }
 
 /// A heading a [`StateCheck`] requires of its actor (oscsim, no XML form): the heading `from`
