@@ -232,6 +232,7 @@ impl Planner<'_> {
                         max_speed: Some(MAX_SPEED),
                     }),
                     at_start,
+                    at_least: None,
                 })
             }
         };

@@ -14,8 +14,11 @@
 //! `keep_position`, another `position`, `avoid_collisions`): the relation is then what
 //! determines its motion, as `keep_space_gap` determines a follower's. A default gap
 //! (`position(ahead_of/behind: x)` without distance or time: max(2 s · v_x, 10 m + the
-//! overhangs)) is held as the time gap 2 s where x's speed at the start makes it the larger,
-//! else as the distance (at a known start; after a run-time start it is checked only).
+//! overhangs), oscsim's: `place::default_distance`) is held at a known start as the time gap
+//! 2 s where x's speed at the start makes it the larger, else as the distance; after a
+//! run-time start (x's speed then is the engine's) as the larger of the two at x's speed at
+//! every step (the LongitudinalDistanceAction's time gap 2 s with oscsim's `at_least`), the
+//! gap the engine's held check measures.
 //! With `track: projected` (§8.9.1.1.3) x is read as projected from the phase start (along
 //! its lane at its speed then, in its lane then): at a start and end the plan knows, the
 //! plan's check against that, an actor free along its lane keeping x's speed at the start (a
@@ -130,9 +133,7 @@ impl Planner<'_> {
         if m.projected {
             return self.hold_projected(m, target, (kind, mods, moves), (t0, te), name, out);
         }
-        // A default gap is held where the plan knows x's speed at the start (module doc).
-        let default_gap = m.arg("distance").is_none() && m.arg("time").is_none();
-        if moves && holds_motion(kind, mods, m) && !(default_gap && t0.is_none()) {
+        if moves && holds_motion(kind, mods, m) {
             let hold = self.hold_gap(m, target, t0.map(|t| (t, te)), name("hold"))?;
             out.push(hold);
             return Ok(());
@@ -278,21 +279,22 @@ impl Planner<'_> {
                 "expected ahead_of or behind in position(…) held at: all, found neither",
             ));
         };
-        let (distance, time_gap) = match (m.arg("distance"), m.arg("time"), span) {
-            (Some(d), _, _) => (Some(d.number()?), None),
-            (None, Some(t), _) => (None, Some(t.number()?)),
+        let floor = || GROUP_GAP + self.facing_overhangs(target, &x, sign < 0.0);
+        let (distance, time_gap, at_least) = match (m.arg("distance"), m.arg("time"), span) {
+            (Some(d), _, _) => (Some(d.number()?), None, None),
+            (None, Some(t), _) => (None, Some(t.number()?), None),
             // The default gap, max(2 s · v_x, 10 m + the overhangs): the time gap where x's
             // speed at the start makes it the larger, else the distance.
             (None, None, Some((t0, _))) => {
-                let floor = GROUP_GAP + self.facing_overhangs(target, &x, sign < 0.0);
+                let floor = floor();
                 match DEFAULT_TIME_GAP * self.track(&x).at(t0).1 >= floor {
-                    true => (None, Some(DEFAULT_TIME_GAP)),
-                    false => (Some(floor), None),
+                    true => (None, Some(DEFAULT_TIME_GAP), None),
+                    false => (Some(floor), None, None),
                 }
             }
-            (None, None, None) => {
-                return Err(m.site.err(K::Modifier, "expected a distance or a time in position(…) held after a run-time start, found neither"));
-            }
+            // After a run-time start x's speed is the engine's: the larger of the two at x's
+            // speed at every step (oscsim's `at_least`), as the engine's check measures it.
+            (None, None, None) => (None, Some(DEFAULT_TIME_GAP), Some(floor())),
         };
         if let Some(since) = self.engine_moved.get(&x).copied() {
             // x's motion is the engine's from `since`: so is the actor's it holds.
@@ -327,6 +329,7 @@ impl Planner<'_> {
             coordinate_system: Some(CoordinateSystem::Road),
             dynamic_constraints: None,
             at_start: None,
+            at_least,
         });
         Ok(Planned::with_phase(target, name, action, &m.site))
     }

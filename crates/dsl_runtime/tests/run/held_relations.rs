@@ -38,6 +38,35 @@ fn at_speed_from(r: &crate::support::Run, (t0, s0): (f64, f64), v: f64, steps: u
     }
 }
 
+/// do.cruise from `t0` for 2 s (40 steps): lead from s = `s0` at `v_lead`, each step's speed
+/// set at its end (`stepped`); ego `start_gap` behind it at `t0`, then held `gap` behind it
+/// with its speed at each step, at `s_end` and lead's 12 m/s at the end; the engine's check
+/// held over the phase.
+fn held_behind(
+    r: &crate::support::Run,
+    (t0, s0): (f64, f64),
+    (v_lead, gap): (&dyn Fn(f64) -> f64, &dyn Fn(f64) -> f64),
+    (start_gap, s_end): (f64, f64),
+) {
+    assert!((r.at(t0, "lead").s - r.at(t0, "ego").s - start_gap).abs() < S_TOL);
+    let ego = r.at(t0 + 2.0, "ego");
+    assert!(
+        (ego.s - s_end).abs() < S_TOL && (ego.speed - 12.0).abs() < S_TOL,
+        "{ego:?}"
+    );
+    r.held("do.cruise.0/ego/1:check", (t0, t0 + 2.0));
+    for k in 0..=40 {
+        let t = t0 + k as f64 * DT;
+        let (ego, lead) = (r.at(t, "ego"), r.at(t, "lead"));
+        let s_lead = s0 + stepped(v_lead, t0, t);
+        assert!((lead.s - s_lead).abs() < S_TOL, "lead {t}: {lead:?}");
+        if k > 0 {
+            assert!((lead.s - ego.s - gap(t)).abs() < S_TOL, "ego {t}: {ego:?}");
+            assert!((ego.speed - v_lead(t)).abs() < S_TOL, "ego {t}: {ego:?}");
+        }
+    }
+}
+
 /// The plan's error of `tests/scenarios/held/NAME.osc`: `want`, then its place `at`.
 fn refused(name: &str, want: &str, at: &str) {
     let e = error(&format!("held/{name}"));
@@ -163,22 +192,7 @@ fn a_position_behind_another_alone_after_an_until_is_the_engines_hold() {
         "[{s}, {e}]"
     );
     let v_lead = |t: f64| 8.0 + 2.0 * (t.clamp(5.75, 7.75) - 5.75);
-    for k in 0..=40 {
-        let t = 5.75 + k as f64 * DT;
-        let (ego, lead) = (r.at(t, "ego"), r.at(t, "lead"));
-        let s_lead = 246.0 + stepped(v_lead, 5.75, t);
-        assert!((lead.s - s_lead).abs() < S_TOL, "lead {t}: {lead:?}");
-        assert!((ego.s - (s_lead - 59.75)).abs() < S_TOL, "ego {t}: {ego:?}");
-        if k > 0 {
-            assert!((ego.speed - v_lead(t)).abs() < S_TOL, "ego {t}: {ego:?}");
-        }
-    }
-    let ego = r.at(7.75, "ego");
-    assert!(
-        (ego.s - 206.35).abs() < S_TOL && (ego.speed - 12.0).abs() < S_TOL,
-        "{ego:?}"
-    );
-    r.held("do.cruise.0/ego/1:check", (5.75, 7.75));
+    held_behind(&r, (5.75, 246.0), (&v_lead, &|_| 59.75), (59.75, 206.35));
 }
 
 /// first_phase_fails.osc: a first phase's position(20m, ahead_of: lead) at: all with ego's own
@@ -402,5 +416,23 @@ fn a_first_phases_absolute_position_after_a_run_time_start_is_the_engines_check(
         // Its second check: lane(2)'s, the first, holds.
         "do.later.0/npc/2:check",
         5.75,
+    );
+}
+
+/// behind_default_held_runtime.osc: after the until at 11.95 s ego, free along its lane with
+/// the default gap, is held 2 s · v_lead behind lead while lead accelerates 8 → 12 m/s over
+/// 2 s: s_ego = s_lead − 2·v_lead and lead's speed at every step, 291.7 m and 12 m/s at 13.95 s
+/// (lead 315.7 m); the engine's held check passes.
+#[test]
+fn a_default_gap_behind_another_alone_after_an_until_is_the_engines_hold() {
+    let r = passes("held/behind_default_held_runtime");
+    crate::runtime::phases(&r, &[("do.cruise", 11.95, 13.95)]);
+    let v_lead = |t: f64| 8.0 + 2.0 * (t.clamp(11.95, 13.95) - 11.95);
+    // At the start the check found 16.35 m where 16 m is asked (within 0.5 m).
+    held_behind(
+        &r,
+        (11.95, 295.6),
+        (&v_lead, &|t| 2.0 * v_lead(t)),
+        (16.35, 291.7),
     );
 }

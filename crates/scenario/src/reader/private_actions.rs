@@ -142,6 +142,7 @@ fn read_longitudinal_action<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Longit
             coordinate_system: ctx.opt(c, "coordinateSystem")?,
             dynamic_constraints: read_dynamic_constraints(ctx, c)?,
             at_start: None,
+            at_least: None,
         },
         "SpeedProfileAction" => {
             ctx.since(c, 2);

@@ -19,6 +19,10 @@
 //!   back to 0 before the speed leaves [0, maxSpeed] (`law::speed_room`), then limited in its
 //!   change by maxAccelerationRate / maxDecelerationRate; the speed stays in [0, maxSpeed]
 //!   (a distance controller does not reverse) without a jump in the acceleration.
+//! * oscsim's `at_least` (no XML form; DSL 2.1 §8.9 `position(ahead_of/behind: x)` without a
+//!   distance or time after a run-time start, the DSL runtime's default gap): with `timeGap`,
+//!   the distance kept is the larger of timeGap × the reference's speed and `at_least`, read
+//!   at every step.
 //! * oscsim's `at_start` (no XML form; DSL 2.1 §8.8.3 `keep_space_gap` / `keep_time_headway`
 //!   after a run-time start): the distance, or the time gap (the distance over the
 //!   reference's speed), is the one measured as the action starts, on the side `displacement`
@@ -51,6 +55,9 @@ enum Wanted {
     Distance(f64),
     /// A time gap, s, at the reference's speed.
     TimeGap(f64),
+    /// A time gap, s, at the reference's speed, and at least a distance, m (oscsim's
+    /// `at_least`): the larger of the two at every step.
+    TimeGapAtLeast(f64, f64),
 }
 
 /// A running LongitudinalDistanceAction on one actor.
@@ -85,6 +92,7 @@ pub(crate) fn start_longitudinal(
         coordinate_system,
         dynamic_constraints,
         at_start,
+        at_least,
     } = action
     else {
         return Err(Error::unsupported("this LongitudinalAction", pos));
@@ -93,7 +101,10 @@ pub(crate) fn start_longitudinal(
     let given =
         match (distance, time_gap, at_start) {
             (Some(d), None, None) => Some(Wanted::Distance(d.abs())),
-            (None, Some(g), None) => Some(Wanted::TimeGap(g.abs())),
+            (None, Some(g), None) => Some(match at_least {
+                Some(d) => Wanted::TimeGapAtLeast(g.abs(), d.abs()),
+                None => Wanted::TimeGap(g.abs()),
+            }),
             (None, None, Some(_)) => None,
             (Some(_), Some(_), _) => {
                 return Err(Error::at(
@@ -199,6 +210,7 @@ pub(crate) fn step_longitudinal(
     let wanted = match s.wanted {
         Wanted::Distance(d) => d,
         Wanted::TimeGap(g) => g * v_ref.abs(),
+        Wanted::TimeGapAtLeast(g, d) => (g * v_ref.abs()).max(d),
     };
     let error = clearance - wanted;
     // Positive: the actor must move forward to remove the error.

@@ -349,6 +349,12 @@ pub enum LongitudinalAction {
         /// writes `None`): with `distance` and `time_gap` both absent, keep the distance or
         /// the time gap the engine measures when the action starts.
         at_start: Option<GapAtStart>,
+        /// oscsim's option, no XML form (the DSL runtime writes it for ASAM OpenSCENARIO DSL
+        /// 2.1 §8.9 `position(ahead_of/behind: x)` without a distance or time, held after a
+        /// run-time start: oscsim's default gap, max(2 s · v_x, 10 m + the facing overhangs);
+        /// the XML reader writes `None`): with `time_gap`, the distance kept is at least this
+        /// (m): the larger of `time_gap` × the reference's speed and it, at every step.
+        at_least: Option<f64>,
     },
     /// oscsim's AccelerationAction, an action with no XML form (the DSL runtime writes it for
     /// ASAM OpenSCENARIO DSL 2.1 §8.8.2 `assign_acceleration`, `change_acceleration` and
