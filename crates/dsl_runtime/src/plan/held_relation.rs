@@ -42,6 +42,11 @@
 //! start, an absolute time) into the lane counted from x's new one (the same shape as x's
 //! `change_lane`/`lane(…, at: end)`: the two cross their lanes' border in the same step where
 //! the lanes are as wide); a change of x's that runs past the phase is the check's error.
+//! Where the plan does not know x's changes (after a run-time start, before a run-time end,
+//! or an x the engine moves) the engine follows them as they begin (oscsim's
+//! `LateralAction::FollowLanes`: the lane counted from x's new one, its transition at x's
+//! weight at every step), beside its held check; where the invocation has several lane
+//! relations, only the held checks (the engine follows one actor).
 //! `lateral(…, side_of/left_of/right_of: x)` at: all is `lateral_follow`'s.
 
 use scenario::{
@@ -154,9 +159,46 @@ impl Planner<'_> {
             (Some(_), None) => {
                 let mut check = self.start_state(m, target)?;
                 check.throughout = true;
+                self.follow_lanes_at_run_time(m, target, (kind, mods, moves), name, out)?;
                 out.push(self.checked(check, m, target, name("check")));
             }
-            (None, _) => {}
+            // After a run-time start `runtime::start_check` holds the check.
+            (None, _) => {
+                self.follow_lanes_at_run_time(m, target, (kind, mods, moves), name, out)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// `lane(…: x)` at: all of a `move()`/`drive()` of `target` with no sideways motion of its
+    /// own (module doc) where the plan does not know x's lane changes in the phase (a run-time
+    /// start or end, or an x the engine moves): the engine follows them as they begin
+    /// (oscsim's `LateralAction::FollowLanes`, counted as the check counts: `start_state`).
+    fn follow_lanes_at_run_time(
+        &self,
+        m: &Modifier,
+        target: &str,
+        (kind, mods, moves): (Action, &[Modifier], bool),
+        name: &mut dyn FnMut(&str) -> String,
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        // One lane relation: the engine follows one actor's lane changes (with several, each
+        // is the engine's held check only).
+        let lanes = mods
+            .iter()
+            .filter(|q| q.kind == ModKind::Lane && relation(q))
+            .count();
+        if !(moves && m.kind == ModKind::Lane && kind == Action::Move && !moves_sideways(mods))
+            || lanes != 1
+        {
+            return Ok(());
+        }
+        if let Some((x, value)) = self.start_state(m, target)?.lane_of {
+            let follow = PrivateAction::Lateral(LateralAction::FollowLanes {
+                entity_ref: x,
+                value,
+            });
+            out.push(Planned::with_phase(target, name("lanes"), follow, &m.site));
         }
         Ok(())
     }

@@ -9,7 +9,7 @@
 //! | at the start of a phase that starts on a run-time condition | done by |
 //! | --- | --- |
 //! | `lane(n [, from: left])` (at: start, all) | the engine's check: the actor in that driving lane |
-//! | `lane(same_as/side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor in the lane counted from x's, as a RelativeTargetLane counts (at: all held over the phase, `held_relation`) |
+//! | `lane(same_as/side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor in the lane counted from x's, as a RelativeTargetLane counts (at: all held over the phase, and an actor with no sideways motion of its own follows x's lane changes as they begin: `held_relation`) |
 //! | `position(d)` (at: start, all) | the engine's check: the actor at s = d (0.5 m) |
 //! | `position(d / time: t / neither, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road, d the distance, t at x's speed then, or the default gap (0.5 m) (at: all held over the phase, with `track: projected` against x projected from the start; an actor free along its lane the engine's hold, `held_relation`) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre, from a border with the lane's width where the engine finds the actor (1 cm) |

@@ -219,16 +219,25 @@ fn a_position_behind_a_projected_actor_alone_keeps_its_speed_of_the_start() {
 #[test]
 fn a_lane_same_as_another_that_changes_lane_is_followed() {
     let r = run("held/lane_same_as_followed", 0, None);
-    let f = |t: f64| (1.0 - (std::f64::consts::PI * (t.clamp(1.0, 5.0) - 1.0) / 4.0).cos()) / 2.0;
-    for k in 0..=100 {
-        let t = k as f64 * DT;
+    lane_followed(&r, 0.0, 1.0, 100);
+}
+
+/// npc's 4 s sinusoidal change from lane -2 into lane -1 from `t0` and ego following it at
+/// each of the `steps` steps from `from`: y = -5.25 + 3.5·f for both, f = (1 − cos(π·τ/4))/2,
+/// τ = t − t0, in one lane (-2 before the border at t0 + 2 s, -1 after).
+fn lane_followed(r: &crate::support::Run, from: f64, t0: f64, steps: usize) {
+    let f =
+        |t: f64| (1.0 - (std::f64::consts::PI * (t.clamp(t0, t0 + 4.0) - t0) / 4.0).cos()) / 2.0;
+    let border = t0 + 2.0;
+    for k in 0..=steps {
+        let t = from + k as f64 * DT;
         let (ego, npc) = (r.at(t, "ego"), r.at(t, "npc"));
         let want = -5.25 + 3.5 * f(t);
         assert!((npc.y - want).abs() < S_TOL, "npc {t}: {npc:?}");
         assert!((ego.y - want).abs() < S_TOL, "ego {t}: {ego:?}");
         assert_eq!(ego.lane, npc.lane, "{t}: {ego:?} {npc:?}");
-        if (t - 3.0).abs() > DT / 2.0 {
-            assert_eq!(ego.lane, if t < 3.0 { -2 } else { -1 }, "{t}: {ego:?}");
+        if (t - border).abs() > DT / 2.0 {
+            assert_eq!(ego.lane, if t < border { -2 } else { -1 }, "{t}: {ego:?}");
         }
     }
 }
@@ -435,4 +444,34 @@ fn a_default_gap_behind_another_alone_after_an_until_is_the_engines_hold() {
         (&v_lead, &|t| 2.0 * v_lead(t)),
         (16.35, 291.7),
     );
+}
+
+/// lane_same_as_followed_runtime.osc: after the until at 5.05 s npc changes into lane -1 over
+/// [5.05, 9.05] s and ego, lane(same_as: npc) at: all with no sideways motion of its own, is
+/// the engine's to follow: y = -5.25 + 3.5·f at every step for both, f = (1 − cos(π·τ/4))/2,
+/// τ = t − 5.05, the same lane at every step (-2 before 7.05 s, -1 after); car, lane(right_of:
+/// npc), from lane -3 into -2 with it, 3.5 m to the right (at 7.0 s npc's -3.568705 m less
+/// 3.5); the engine's held checks pass.
+#[test]
+fn a_lane_same_as_another_that_changes_lane_after_an_until_is_followed() {
+    let r = passes("held/lane_same_as_followed_runtime");
+    let both = [("do.approach", 0.0, 5.05), ("do.both", 5.05, 9.05)];
+    crate::runtime::phases(&r, &both);
+    lane_followed(&r, 5.05, 5.05, 80);
+    // car one lane to the right of npc's: -8.75 + 3.5·f, lane -3, then -2 (after 7.05 s).
+    for (t, y, lane) in [
+        (5.05, -8.75, -3),
+        (7.0, -7.068705, -3),
+        (7.1, -6.931295, -2),
+    ] {
+        let car = r.at(t, "car");
+        assert!(
+            (car.y - y).abs() < S_TOL && car.lane == lane,
+            "{t}: {car:?}"
+        );
+    }
+    let car = r.at(9.05, "car");
+    assert!((car.y + 5.25).abs() < S_TOL && car.lane == -2, "{car:?}");
+    r.held("do.both.2/car/1:check", (5.05, 9.05));
+    r.held("do.both.0/ego/1:check", (5.05, 9.05));
 }

@@ -20,6 +20,7 @@ mod entity;
 mod environment;
 mod follow_trajectory;
 mod lane_change;
+mod lane_follow;
 mod lane_offset;
 mod lateral_follow;
 mod override_controller;
@@ -67,6 +68,7 @@ pub(crate) enum Part {
     Profile(speed_profile::ProfileState),
     Lateral(lane_change::LateralState),
     LateralFollow(lateral_follow::FollowState),
+    LaneFollow(lane_follow::LaneFollowState),
     LongitudinalDistance(distance::LongitudinalState),
     LateralDistance(distance::LateralState),
     Trajectory(follow_trajectory::TrajectoryState),
@@ -164,8 +166,12 @@ impl ActionTable {
                 let slot = &mut self.slots[index as usize];
                 let id = ActionId(index);
                 for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
-                    let relative =
-                        matches!(part, Part::RelativeAcceleration(_) | Part::LateralFollow(_));
+                    let relative = matches!(
+                        part,
+                        Part::RelativeAcceleration(_)
+                            | Part::LateralFollow(_)
+                            | Part::LaneFollow(_)
+                    );
                     deferred |= relative;
                     if relative == following {
                         let reached = &mut self.reached;
@@ -277,6 +283,7 @@ fn step_part(
         Part::Profile(s) => speed_profile::step(world, actor, s, now, dt),
         Part::Lateral(s) => lane_change::step(world, actor, s, now, dt),
         Part::LateralFollow(s) => lateral_follow::step(world, actor, s, now, dt),
+        Part::LaneFollow(s) => lane_follow::step(world, actor, s),
         Part::LongitudinalDistance(s) => distance::step_longitudinal(world, actor, s, dt),
         Part::LateralDistance(s) => distance::step_lateral(world, actor, s, dt),
         Part::Trajectory(s) => follow_trajectory::step(world, actor, s, now, dt),
@@ -336,9 +343,10 @@ impl ActionTable {
 /// trajectory hands the actor back to the default controller where it stands.
 fn interrupt(world: &mut World, actor: EntityId, part: &mut Part) {
     match part {
-        Part::Lateral(_) | Part::LateralFollow(_) | Part::LateralDistance(_) => {
-            world.keep_lateral_position(actor)
-        }
+        Part::Lateral(_)
+        | Part::LateralFollow(_)
+        | Part::LaneFollow(_)
+        | Part::LateralDistance(_) => world.keep_lateral_position(actor),
         Part::Trajectory(_) => world.release_to_road(actor, false),
         _ => {}
     }
@@ -577,6 +585,9 @@ impl Host<'_> {
                     }
                     LateralAction::LateralDistance { .. } => {
                         distance::start_lateral(self.world, actor, l, pos)
+                    }
+                    LateralAction::FollowLanes { entity_ref, value } => {
+                        lane_follow::start(self.world, (entity_ref, *value), pos)
                     }
                     _ => Err(Error::unsupported("this LateralAction", pos)),
                 }

@@ -31,9 +31,9 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
             false,
             true,
             match l {
-                LateralAction::LaneChange { .. } | LateralAction::LaneChangeAt(_) => {
-                    "LaneChangeAction"
-                }
+                LateralAction::LaneChange { .. }
+                | LateralAction::LaneChangeAt(_)
+                | LateralAction::FollowLanes { .. } => "LaneChangeAction",
                 LateralAction::LaneOffset { .. } | LateralAction::OffsetInWidth(_) => {
                     "LaneOffsetAction"
                 }

@@ -608,6 +608,20 @@ pub enum LateralAction {
     /// its target lane): the target offset k·W + c is read with the lane's width W where the
     /// actor is at each step, so it holds with the width where the actor is at the end.
     OffsetInWidth(Box<OffsetInWidth>),
+    /// oscsim's following of another entity's lane changes, an action with no XML form (the
+    /// DSL runtime writes it for ASAM OpenSCENARIO DSL 2.1 §8.9 `lane(same_as/side_of/left_of/
+    /// right_of: x)` at: all of an actor with no sideways motion of its own, in a phase that
+    /// starts on a run-time condition, §8.9.1.1.1 "holds throughout the phase"): whenever the
+    /// entity begins a lane change on its road, the actor changes into the lane `value` lanes
+    /// to the left (right when negative) of the entity's new lane, counted as a
+    /// RelativeTargetLane counts them, to its centre, over the same span and shape (its
+    /// transition's weight the entity's at every step); held until stopped.
+    FollowLanes {
+        /// The entity followed.
+        entity_ref: String,
+        /// Lanes to the left of the entity's (0: its lane).
+        value: i32,
+    },
 }
 
 /// What oscsim's offset change in the lane's width ([`LateralAction::OffsetInWidth`]) aims at

@@ -1,0 +1,123 @@
+//! oscsim's following of another entity's lane changes (`scenario::LateralAction::FollowLanes`,
+//! no XML form): the OpenSCENARIO DSL runtime's `lane(same_as/side_of/left_of/right_of: x)`
+//! at: all of an actor with no sideways motion of its own in a phase that starts on a run-time
+//! condition (ASAM OpenSCENARIO DSL 2.1 §8.9 `lane`, §8.9.1.1.1: the constraint "holds
+//! throughout the phase"), where the plan does not know when x changes lanes. At a start the
+//! plan knows, it gives the actor a sinusoidal LaneChangeAction over the span of each of x's
+//! (the same shape as x's `change_lane`); here the engine does the same as x's changes begin.
+//!
+//! Whenever x's lane track (`world::lane_track`) shows a new lane on the road it was on with
+//! a transition under way (x began a lane change: its LaneChangeAction, or a model's), the
+//! actor's track takes the lane `value` lanes to the left of x's new lane in x's direction of
+//! travel (as a RelativeTargetLane counts them), at its centre, from the lane and offset the
+//! actor is at; from then on, every step after x's own action has stepped (the second pass of
+//! the action stage, as `lateral_follow`), the actor's transition has x's weight and its rate
+//! per metre, so the two move across by the same share of their changes at every step and,
+//! where the lanes are as wide, cross their lanes' borders in the same step. When x's
+//! transition ends, the actor's does. x on another road than it was (the lane ids of the next
+//! road may differ) is read afresh there, not followed. Held until the phase's Act stops it.
+
+use scenario::SourcePos;
+
+use super::Part;
+use crate::error::Error;
+use crate::position::lane_at;
+use crate::store::targets::entity_ref;
+use crate::store::World;
+use crate::storyboard::ActionStatus;
+use crate::world::entity::EntityId;
+use crate::world::lane_track::Blend;
+use crate::world::lanes::lane_shift;
+
+/// A running following of another entity's lane changes on one actor.
+#[derive(Debug, Clone)]
+pub(crate) struct LaneFollowState {
+    /// The entity followed.
+    reference: EntityId,
+    /// Lanes to the left of its lane (0: its lane).
+    shift: i32,
+    /// Its road and lane at the last step.
+    seen: Option<(String, i32)>,
+    /// A change of its is being mirrored.
+    mirroring: bool,
+}
+
+/// Starts following `name`'s lane changes on `actor`, `shift` lanes to the left of its lane.
+pub(crate) fn start(
+    world: &World,
+    (name, shift): (&str, i32),
+    pos: &SourcePos,
+) -> Result<Part, Error> {
+    let reference = entity_ref(world, name, pos)?;
+    let seen = lane_of(world, reference);
+    Ok(Part::LaneFollow(LaneFollowState {
+        reference,
+        shift,
+        seen,
+        mirroring: false,
+    }))
+}
+
+/// `id`'s road and lane on its lane track as the action starts, if it has one: a lane change
+/// of its that begins in the same step (its transition at weight 0: started before this
+/// action in the storyboard's order) counts from the lane it leaves, so that it is followed.
+fn lane_of(world: &World, id: EntityId) -> Option<(String, i32)> {
+    let t = world.entity(id).track.as_ref()?;
+    let lane = match t.blend {
+        Some(b) if b.weight == 0.0 => b.from_lane,
+        _ => t.lane_id,
+    };
+    Some((t.road_id.clone(), lane))
+}
+
+/// One step: mirror a change of the reference's that began, or the one under way (module doc).
+pub(crate) fn step(world: &mut World, actor: EntityId, s: &mut LaneFollowState) -> ActionStatus {
+    let x = world.entity(s.reference);
+    if !x.placed {
+        return ActionStatus::Stopped;
+    }
+    let Some(xt) = x.track.as_ref() else {
+        return ActionStatus::Running;
+    };
+    let (road, lane, direction, blend) = (xt.road_id.clone(), xt.lane_id, xt.direction, xt.blend);
+    let now = Some((road.clone(), lane));
+    let began = now != s.seen;
+    let same_road = s.seen.as_ref().is_some_and(|(r, _)| *r == road);
+    s.seen = now;
+    let (net, e) = world.entity_on_network_mut(actor);
+    let Some(track) = e.track.as_mut() else {
+        return ActionStatus::Running;
+    };
+    match blend {
+        Some(b) if began && same_road => {
+            let target = lane_shift(lane, s.shift, direction);
+            // From where the actor is: the lane holding its t and the offset there (as a
+            // LaneChangeAction starts, `lane_change::begin`).
+            let (from_lane, from_offset) = net
+                .road(&track.road_id)
+                .and_then(|r| lane_at(r, track.s, track.t))
+                .unwrap_or((track.lane_id, track.offset));
+            track.lane_id = target;
+            track.offset = 0.0;
+            track.blend = Some(Blend {
+                from_lane,
+                from_offset,
+                weight: b.weight,
+                weight_per_m: b.weight_per_m,
+            });
+            s.mirroring = true;
+        }
+        Some(b) if s.mirroring => {
+            if let Some(a) = &mut track.blend {
+                a.weight = b.weight;
+                a.weight_per_m = b.weight_per_m;
+            }
+        }
+        None if s.mirroring => {
+            track.blend = None;
+            s.mirroring = false;
+        }
+        _ => {}
+    }
+    ActionStatus::Running
+}
