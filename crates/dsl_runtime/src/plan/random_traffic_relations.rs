@@ -47,7 +47,11 @@
 //! check).
 //!
 //! An actor placed along or beside one that takes an oncoming member's direction takes it in
-//! turn. Bad input (`Unsatisfiable`): a relation to the group
+//! turn. Bad input (`Unsatisfiable`): a place (`position`, `lane`, `lateral`, any `at`) of a
+//! member, in a phase of its own, relative to another member (§8.7.18.1: "the behavioral
+//! model assigned to each vehicle defines the actual behavior of the vehicle within the
+//! group", so its lane and place are its model's, as for a lane, position or path action
+//! creating the group); a relation to the group
 //! as a whole (it has no place, speed or lane of its own; the checker refuses the typed
 //! arguments first). A condition measures a member at run time: `until
 //! ego.space_gap(g.vehicles[0]) < 10m`.
@@ -148,6 +152,20 @@ impl Planner<'_> {
                         directed: m.is_some_and(|m| m.kind != ModKind::Speed),
                     }));
                     continue;
+                }
+                // A member given a place relative to another member in a phase of its own
+                // (`g.vehicles[0].drive() with: position(20m, behind: g.vehicles[1])`): bad
+                // input, as a lane, position or path action creating the group is (§8.7.18.1:
+                // a member's lane, place and path are its model's).
+                if let Some(m) = m.filter(|m| {
+                    matches!(m.kind, ModKind::Position | ModKind::Lane | ModKind::Lateral)
+                        && self.random_member(&inv.actor)
+                        && self.random_member(x)
+                }) {
+                    return Err(m.site.err(
+                        K::Unsatisfiable,
+                        format!("expected no place of `{}`, a member of random traffic, relative to `{x}`, found `{}(…)`: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\" (§8.7.18.1), so a member's lane and place are its model's, which the seed and the traffic around it decide; relate another actor to the member instead", inv.actor, m.name),
+                    ));
                 }
                 // Random traffic relating to a member (of its own group or another's): what
                 // its planners take of another actor, read where the member is then

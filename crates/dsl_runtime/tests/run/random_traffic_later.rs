@@ -208,3 +208,31 @@ fn a_group_phase_first_of_some_members_only_places_those_from_the_drawn_member()
     // second), so the test tells the members' two forms apart.
     assert!(apart > 0.1, "v1 - v_m(0) at most {apart} m/s");
 }
+
+#[test]
+fn a_members_own_place_relative_to_another_member_is_bad_input_at_the_modifier() {
+    // §8.7.18.1: "the behavioral model assigned to each vehicle defines the actual behavior of
+    // the vehicle within the group": a member's lane and place are its model's, on every seed.
+    for (name, what, at) in [
+        (
+            "err_random_traffic_member_own_place",
+            "expected no place of `g.vehicles[0]`, a member of random traffic, relative to `g.vehicles[1]`, found `position(…)`",
+            "15:13",
+        ),
+        (
+            "err_random_traffic_member_own_lane",
+            "expected no place of `g.vehicles[0]`, a member of random traffic, relative to `g.vehicles[1]`, found `lane(…)`",
+            "12:13",
+        ),
+    ] {
+        crate::along::refused(name, what, at);
+        for seed in 0..4 {
+            let e = crate::support::lower(name, seed, None).expect_err(name);
+            assert!(
+                matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
+                    && e.to_string().contains("(§8.7.18.1)"),
+                "{name} seed {seed}: {e}"
+            );
+        }
+    }
+}
