@@ -120,7 +120,7 @@ impl Tree {
 }
 
 /// Scenarios of the library are not instantiated (only those of the user's files).
-fn is_library(model: &Model, id: CompoundId) -> bool {
+pub(super) fn is_library(model: &Model, id: CompoundId) -> bool {
     model.compound(id).span.file.0 < model.library_files
 }
 

@@ -123,6 +123,12 @@ cases! {
     err_unsupported_or_blowup, err_unsupported_product, err_unsupported_state_variable,
 }
 
+// Issue 27: a relative path's route or odr points are left to the runtime, no other
+// road-network reference in a constraint.
+cases! {
+    relative_route_points, err_unsupported_route_points,
+}
+
 #[test]
 fn every_case_file_has_a_test_line() {
     let listed = include_str!("semantics.rs");

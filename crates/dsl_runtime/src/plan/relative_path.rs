@@ -4,8 +4,26 @@
 //! `relative_path_st`, enum `relative_transform`), turned into world points against the
 //! reference's pose at the action's start, which the plan knows:
 //!
-//! The points a program can write are pose_3d (x, y, yaw); route_point and odr_point points
-//! are route elements, which the solver leaves to the runtime (an error where they are read).
+//! A point is a pose_3d (x, y, yaw; `relative_*_pose_3d`, §8.12.32, §8.12.39), a route_point
+//! (`relative_*_st`, §8.12.33, §8.12.40) or an odr_point (`relative_*_odr`, §8.12.34,
+//! §8.12.41). Route and odr points are route elements the solver leaves to the runtime: the
+//! program gives them by keeps of the field's declaration (`keep(it.points == [p0, p1])`,
+//! `keep(it.points[i] == p)`, `resolve::position`), each `map.create_route_point(route, s,
+//! t)` or `map.create_odr_point(road_id, lane_id, s, t)`. The library's declarations give
+//! these structs their points' types only (`points: list of route_point`, `list of
+//! odr_point`, `osc/standard/map.osc`); the standard's text of §8.12.33-34 and §8.12.40-41 was
+//! not found in the public pages searched (they stop at §8.12.2.1), so the placing is oscsim's
+//! choice, as the struct names say ("st": s and t; "odr": OpenDRIVE's road, lane, s and t) and
+//! as 1.x places a RelativeRoadPosition or a RelativeLanePosition against its entity:
+//! - a route point's s and t are road coordinates from the reference's at the action's start,
+//!   placed as a pose_3d point (x = s, y = t, yaw 0) under `road_relative` (the default for
+//!   these points) or `lane_relative` (t from the centre of the reference's lane) below; the
+//!   route given to `create_route_point` is not read. `world_relative` and `object_relative`
+//!   (frames of x and y, not of s and t) are errors at the argument;
+//! - an odr point names its road and lane (OpenDRIVE ids, not relative); its s is from the
+//!   reference's s along the plan's roads, its t from its lane's centre, heading the road's;
+//!   the road found there must be the one it names (else an error at the path). `transform`
+//!   as for route points (both read the same: the lane is the point's own).
 //!
 //! | `transform` | a point (x, y, yaw) becomes |
 //! | --- | --- |
@@ -26,7 +44,7 @@
 
 use super::planner::Planner;
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{arg, Invoke, Phase, Place, PlaceArg, Val};
+use crate::resolve::{arg, Invoke, Phase, Place, PlaceArg, RelativePoints, Val};
 
 impl Planner<'_> {
     /// The absolute trajectory or path of `inv`'s `relative:` argument at the action's start
@@ -44,6 +62,7 @@ impl Planner<'_> {
                         points,
                         times,
                         smooth,
+                        of,
                     },
                 site,
                 ..
@@ -82,8 +101,18 @@ impl Planner<'_> {
                     ))
                 }
             },
-            None => "object_relative".to_string(),
+            // Route and odr points are road coordinates (module doc).
+            None if *of == RelativePoints::Pose => "object_relative".to_string(),
+            None => "road_relative".to_string(),
         };
+        if *of != RelativePoints::Pose
+            && !matches!(transform.as_str(), "road_relative" | "lane_relative")
+        {
+            return Err(arg(&inv.args, "transform").map_or(site, |a| &a.site).err(
+                K::Argument,
+                format!("expected road_relative or lane_relative for a relative {} of route or odr points (their s and t are road coordinates), found {transform}", if inv.kind.along_path() { "path" } else { "trajectory" }),
+            ));
+        }
         let t = t0.ok_or_else(|| {
             p.site.err(
                 K::Unsatisfiable,
@@ -105,17 +134,32 @@ impl Planner<'_> {
                 .map(|(x, y, h)| (x, y, h + yaw))
                 .ok_or_else(|| off_road(s))
         };
+        let lane_of = |i: usize| match of {
+            RelativePoints::Odr(lanes) => lanes.get(i),
+            _ => None,
+        };
         let world = points
             .iter()
-            .map(|&(x, y, yaw)| match transform.as_str() {
-                "world_relative" => Ok((x_r + x, y_r + y, yaw)),
+            .enumerate()
+            .map(|(i, &(x, y, yaw))| match (lane_of(i), transform.as_str()) {
+                // An odr point's lane is its own, t from that lane's centre.
+                (Some((id, lane)), _) => match road.road_at(s_r + x).0.id.as_str() {
+                    here if here == id => {
+                        on_road(s_r + x, road.lane_center(*lane, s_r + x) + y, yaw)
+                    }
+                    here => Err(site.err(
+                        K::Unsatisfiable,
+                        format!("expected odr point {i} of the relative path on its road {id}, {x:.2} m along the plan's roads from `{r}`, found road {here} there"),
+                    )),
+                },
+                (None, "world_relative") => Ok((x_r + x, y_r + y, yaw)),
                 // The road's coordinates (its s-axis, as yaw relative to the road, §8.9.9): for
                 // a reference driving against s, x along −u and y to the right of its travel.
-                "road_relative" if road.is_against() => {
+                (None, "road_relative") if road.is_against() => {
                     on_road(s_r - x, t_r - y, yaw).map(|(x, y, h)| (x, y, h - std::f64::consts::PI))
                 }
-                "road_relative" => on_road(s_r + x, t_r + y, yaw),
-                "lane_relative" => on_road(s_r + x, road.lane_center(lane_r, s_r + x) + y, yaw),
+                (None, "road_relative") => on_road(s_r + x, t_r + y, yaw),
+                (None, "lane_relative") => on_road(s_r + x, road.lane_center(lane_r, s_r + x) + y, yaw),
                 _ => {
                     let (sin, cos) = h_r.sin_cos();
                     Ok((x_r + x * cos - y * sin, y_r + x * sin + y * cos, h_r + yaw))

@@ -53,7 +53,7 @@ pub(crate) use map_modifiers::{EndKind, JunctionRoads, MapKind, MapModifier, Seq
 pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
 pub(crate) use overlap::{Overlap, OverlapArg};
-pub(crate) use position::{Place, PlaceArg};
+pub(crate) use position::{Place, PlaceArg, RelativePoints};
 pub(crate) use route::{one_way, Along, LaneField, MapRoad, Route, Waypoint};
 pub(crate) use shape::ShapeKind;
 pub(crate) use tree::{Invoke, Kind, Phase};

@@ -8,6 +8,11 @@
 //! `create_odr_point`, `create_route_point`, `create_trajectory` or `create_path` (§8.12.2.1:
 //! a path is a route, which the solver leaves to the runtime, so `map.create_path(points:
 //! [p0, p1, …], interpolation: …)` with resolved `pose_3d` fields is how a program gives one).
+//! A relative path or trajectory of route or odr points (`relative_path_st`,
+//! `relative_path_odr`, `relative_trajectory_st`, `relative_trajectory_odr`, §8.12.33-34,
+//! §8.12.40-41) has its points read from the keeps of its field's declaration
+//! (`keep(it.points == [p0, p1, …])`, `keep(it.points[i] == p)`), which the solver leaves to
+//! the runtime; the plan places them against the reference (`crate::plan`'s `relative_path`).
 
 use dsl::semantics::hir::{Arg as HirArg, Expr, ExprKind};
 use dsl::Value;
@@ -61,13 +66,15 @@ pub(crate) enum Place {
         smooth: bool,
         on_road_network: bool,
     },
-    /// A `relative_trajectory` or `relative_path` with pose_3d points (§8.12, relative to a
-    /// reference the action names): x, y (m) and yaw (rad) of its points; its time stamps (s;
-    /// none for a path); `smooth`.
+    /// A `relative_trajectory` or `relative_path` (§8.12.31-34, §8.12.38-41, relative to a
+    /// reference the action names): x, y (m) and yaw (rad) of its pose_3d points, or s, t
+    /// (m) and 0 of its route or odr points (`of` says which); its time stamps (s; none for a
+    /// path); `smooth`.
     Relative {
         points: Vec<(f64, f64, f64)>,
         times: Vec<f64>,
         smooth: bool,
+        of: RelativePoints,
     },
     /// A `trajectory`: world x, y (m) and yaw (rad) of its points, their time stamps (s), and
     /// whether it is interpolated `smooth`.
@@ -76,6 +83,18 @@ pub(crate) enum Place {
         times: Vec<f64>,
         smooth: bool,
     },
+}
+
+/// What the points of a relative path or trajectory are (§8.12.32-34, §8.12.39-41).
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum RelativePoints {
+    /// `pose_3d` (`relative_path_pose_3d`, `relative_trajectory_pose_3d`).
+    Pose,
+    /// `route_point` (`relative_path_st`, `relative_trajectory_st`): s and t.
+    St,
+    /// `odr_point` (`relative_path_odr`, `relative_trajectory_odr`): s and t, and the
+    /// OpenDRIVE road and lane each names.
+    Odr(Vec<(String, i32)>),
 }
 
 /// A place argument of an invocation.
@@ -153,7 +172,7 @@ pub(crate) fn path_route(ev: &Eval<'_>, e: &Expr) -> Result<Option<(Place, Args)
                 return Err(ev.files.err(
                     K::Value,
                     rp.span,
-                    "expected a relative path (relative_path_pose_3d) in resolve_relative_path(…), found another value",
+                    "expected a relative path (relative_path_pose_3d, relative_path_st, relative_path_odr) in resolve_relative_path(…), found another value",
                 ));
             }
             let placing = bound
@@ -332,14 +351,19 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
             Some((_, Value::List(items))) => Ok(items.as_slice()),
             _ => Err(bad(&format!("`{path}` without a list of {n}"))),
         };
-        let points = list("points")?
-            .iter()
-            .map(|p| {
-                pose_of(p).ok_or_else(|| {
-                    bad(&format!("a point of `{path}` that is no pose_3d{}", if relative { " (route_point and odr_point points are route elements, which the solver leaves to the runtime: relative_trajectory_pose_3d / relative_path_pose_3d give points a program can write)" } else { "" }))
+        let items = list("points")?;
+        let (points, of) = if relative && items.iter().any(|p| matches!(p, Value::RunTime(_))) {
+            road_points(ev, e, &path, items.len())?
+        } else {
+            let points = items
+                .iter()
+                .map(|p| {
+                    pose_of(p)
+                        .ok_or_else(|| bad(&format!("a point of `{path}` that is no pose_3d")))
                 })
-            })
-            .collect::<Result<Vec<_>, _>>()?;
+                .collect::<Result<Vec<_>, _>>()?;
+            (points, RelativePoints::Pose)
+        };
         let times = if ev.is_a(v, "relative_path") {
             Vec::new()
         } else {
@@ -360,6 +384,7 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
                 points,
                 times,
                 smooth,
+                of,
             }
         } else {
             Place::Trajectory {
@@ -377,6 +402,117 @@ fn place(ev: &Eval<'_>, e: &Expr) -> Result<Place, Error> {
     } else {
         Err(bad(&format!("`{path}`")))
     }
+}
+
+/// x, y (m) and yaw (rad) of a point, or s, t (m) and 0.
+type Pose = (f64, f64, f64);
+
+/// The points of the relative path or trajectory field `path` (read at `e`) whose `count`
+/// points are route elements the solver leaves to the runtime (`relative_path_st`,
+/// `relative_path_odr`, `relative_trajectory_st`, `relative_trajectory_odr`; §8.12.33-34,
+/// §8.12.40-41): each given by a `keep` of the field's `with:` block, `keep(it.points ==
+/// [p0, p1, …])` or `keep(it.points[i] == p)`, a `map.create_route_point(route, s, t)`
+/// (its s and t) or a `map.create_odr_point(road_id, lane_id, s, t)` (its s and t, road and
+/// lane). Every point given once; another value, a point given twice or none is an error.
+fn road_points(
+    ev: &Eval<'_>,
+    e: &Expr,
+    path: &str,
+    count: usize,
+) -> Result<(Vec<Pose>, RelativePoints), Error> {
+    let mut given: Vec<Option<&Expr>> = vec![None; count];
+    let mut pairs: Vec<(usize, &Expr)> = Vec::new();
+    let def = super::route::field_def(ev, path);
+    let (keeps, owner): (&[dsl::semantics::hir::Keep], &Eval<'_>) = match &def {
+        Some((field, owner)) => (&field.keeps, owner),
+        None => (&[], ev),
+    };
+    let points_of = |x: &Expr| match &x.kind {
+        ExprKind::Field(it, f) if matches!(it.kind, ExprKind::It) && f.text == "points" => {
+            Some(None)
+        }
+        ExprKind::Index(list, i) => match (&list.kind, &i.kind) {
+            (ExprKind::Field(it, f), ExprKind::Int(i))
+                if matches!(it.kind, ExprKind::It) && f.text == "points" =>
+            {
+                usize::try_from(*i).ok().map(Some)
+            }
+            _ => None,
+        },
+        _ => None,
+    };
+    for k in keeps.iter().filter(|k| !k.default) {
+        let ExprKind::Binary(dsl::semantics::hir::BinOp::Eq, a, b) = &k.expr.kind else {
+            continue;
+        };
+        let (at, value) = match (points_of(a), points_of(b)) {
+            (Some(at), _) => (at, &**b),
+            (None, Some(at)) => (at, &**a),
+            (None, None) => continue,
+        };
+        match (at, &value.kind) {
+            (None, ExprKind::List(items)) => pairs.extend(items.iter().enumerate()),
+            (Some(i), _) => pairs.push((i, value)),
+            (None, _) => {
+                return Err(owner.files.err(
+                    K::Value,
+                    value.span,
+                    format!("expected the points of `{path}` as a list literal (`keep(it.points == [p0, p1, …])`), found another expression"),
+                ))
+            }
+        }
+    }
+    for (i, p) in pairs {
+        match given.get_mut(i) {
+            Some(slot @ None) => *slot = Some(p),
+            _ => {
+                return Err(owner.files.err(
+                    K::Value,
+                    p.span,
+                    format!("expected each of the {count} points of `{path}` given once, found point {i} given again or past the list's end"),
+                ))
+            }
+        }
+    }
+    let mut points = Vec::with_capacity(count);
+    let mut lanes = Vec::new();
+    for (i, p) in given.into_iter().enumerate() {
+        let Some(p) = p else {
+            return Err(ev.files.err(
+                K::Value,
+                e.span,
+                format!("expected point {i} of `{path}` (a route element, left to the runtime) given by a keep of its declaration, `keep(it.points == [p0, p1, …])` or `keep(it.points[{i}] == p)`, found none"),
+            ));
+        };
+        match place(owner, p) {
+            Ok(Place::Route { s, t, .. }) => points.push((s, t, 0.0)),
+            Ok(Place::Lane { road, lane, s, t }) => {
+                points.push((s, t, 0.0));
+                lanes.push((road, lane));
+            }
+            _ => {
+                return Err(owner.files.err(
+                    K::Value,
+                    p.span,
+                    format!("expected map.create_route_point(route, s, t) or map.create_odr_point(road_id, lane_id, s, t) as point {i} of `{path}`, found another value"),
+                ))
+            }
+        }
+    }
+    let of = match lanes.len() {
+        0 => RelativePoints::St,
+        n if n == points.len() => RelativePoints::Odr(lanes),
+        _ => {
+            return Err(ev.files.err(
+                K::Value,
+                e.span,
+                format!(
+                "expected the points of `{path}` all route points or all odr points, found both"
+            ),
+            ))
+        }
+    };
+    Ok((points, of))
 }
 
 /// Whether a path's `interpolation` argument `e` is `smooth` (`straight_line`, or none given:

@@ -278,6 +278,16 @@ pub(super) fn route_of(ctx: &Ctx<'_>, e: &Expr) -> Result<Route, Error> {
 /// `var r: route = …`), with the reader of the instance that declares it (whose names the
 /// value uses): the field is that route. `None`: a field nothing defines.
 pub(crate) fn field_value<'a>(ctx: &Ctx<'a>, path: &str) -> Option<(&'a Expr, Ctx<'a>)> {
+    let (field, owner) = field_def(ctx, path)?;
+    Some((field.default.as_ref()?, owner))
+}
+
+/// The declaration of the field at `path` (its value, its `with:` keeps), with the reader of
+/// the instance that declares it (whose names they use); `None` for no field of the program.
+pub(crate) fn field_def<'a>(
+    ctx: &Ctx<'a>,
+    path: &str,
+) -> Option<(&'a dsl::semantics::model::FieldDef, Ctx<'a>)> {
     let (owner, name) = match path.rsplit_once('.') {
         Some((o, n)) => (o, n),
         None => ("", path),
@@ -289,12 +299,15 @@ pub(crate) fn field_value<'a>(ctx: &Ctx<'a>, path: &str) -> Option<(&'a Expr, Ct
         } else {
             ctx.lookup(owner).map(|(_, v)| v)
         }?;
-        // A scenario's type is no entry of the model's type names: found by its name.
+        // A scenario's type is no entry of the model's type names: found by its name, the
+        // program's own before a library type of the same name (a scenario
+        // `relative_path_st`): the library's come first.
         let Value::Compound { ty: name_of, .. } = instance else {
             return None;
         };
         let ty = (0..ctx.model.compounds.len() as u32)
             .map(dsl::semantics::types::CompoundId)
+            .rev()
             .find(|c| ctx.model.compound(*c).name == *name_of)?;
         ctx.model
             .all_fields(ty)
@@ -305,7 +318,6 @@ pub(crate) fn field_value<'a>(ctx: &Ctx<'a>, path: &str) -> Option<(&'a Expr, Ct
         // A global field (top level).
         ctx.model.globals.iter().find(|g| g.name == path)?
     };
-    let value = field.default.as_ref()?;
     let prefix = if owner.is_empty() {
         String::new()
     } else {
@@ -320,7 +332,7 @@ pub(crate) fn field_value<'a>(ctx: &Ctx<'a>, path: &str) -> Option<(&'a Expr, Ct
             ..Default::default()
         }
     };
-    Some((value, ctx.enter(frame)))
+    Some((field, ctx.enter(frame)))
 }
 
 /// The route of the field at `path` when it is given a value at its declaration (`None`: a

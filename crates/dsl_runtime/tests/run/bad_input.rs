@@ -69,7 +69,7 @@ fn a_relative_trajectory_of_route_points_or_without_its_reference() {
     expect(
         "err_relative_route_points",
         "11:41",
-        &["a point of `rt` that is no pose_3d (route_point and odr_point points are route elements, which the solver leaves to the runtime"],
+        &["expected point 0 of `rt` (a route element, left to the runtime) given by a keep of its declaration"],
     );
     expect(
         "err_relative_no_reference",

@@ -106,3 +106,40 @@ fn a_path_off_the_network_or_through_a_point_it_lacks_is_an_error_at_its_place()
         "{e}"
     );
 }
+
+/// A relative path of route points (§8.12.33 `relative_path_st`), given by the keeps of its
+/// declaration (a list, or point by point): their s and t from the reference's road
+/// coordinates (`road_relative`, follow_path) or from its lane's centre (`lane_relative`,
+/// resolve_relative_path): both the line (20, -5.25) -> (60, -5.25) beside npc of
+/// along_relative_path.osc (relative_path_st.osc, along_relative_st_lane.osc, by hand).
+#[test]
+fn a_relative_path_of_route_points_is_placed_in_the_references_road_coordinates() {
+    crate::position_actions::follows_the_line_beside_npc("paths/relative_path_st", "do.1");
+    crate::position_actions::follows_the_line_beside_npc("paths/along_relative_st_lane", "do.1");
+}
+
+/// A relative trajectory of odr points (§8.12.41 `relative_trajectory_odr`): each in its
+/// lane, s from lead's at the start: relative_trajectory_road.osc's trajectory and motion
+/// (relative_trajectory_odr.osc, by hand).
+#[test]
+fn a_relative_trajectory_of_odr_points_is_placed_in_their_lanes_from_the_references_s() {
+    crate::position_actions::follows_lead_road_relative("paths/relative_trajectory_odr");
+}
+
+#[test]
+fn relative_route_points_in_another_frame_or_missing_are_errors_at_their_place() {
+    let e = crate::support::error("paths/err_relative_st_object");
+    assert!(
+        e.starts_with(
+            "expected road_relative or lane_relative for a relative path of route or odr points"
+        ) && e.contains("found object_relative")
+            && e.ends_with("err_relative_st_object.osc:16:66"),
+        "{e}"
+    );
+    let e = crate::support::error("paths/err_relative_st_missing");
+    assert!(
+        e.starts_with("expected point 1 of `rp`")
+            && e.ends_with("err_relative_st_missing.osc:15:35"),
+        "{e}"
+    );
+}

@@ -186,7 +186,14 @@ fn a_relative_trajectory_in_the_actors_frame_is_the_absolute_one() {
 
 #[test]
 fn a_relative_trajectory_in_road_coordinates_of_another_actor() {
-    let r = run("actions/relative_trajectory_road", 0, None);
+    follows_lead_road_relative("actions/relative_trajectory_road");
+}
+
+/// ego's follow_trajectory through (20, -8.75), (60, -5.25), (100, -5.25) at 0, 4, 8 s, lead's
+/// road coordinates at the start (s 40 m, lane -2) moved by (-20, -3.5), (20, 0), (60, 0)
+/// (relative_trajectory_road.osc, by hand).
+pub(crate) fn follows_lead_road_relative(name: &str) {
+    let r = run(name, 0, None);
     for (t, x, y) in [
         (2.0, 40.0, -7.0),
         (4.0, 60.0, -5.25),
@@ -225,7 +232,13 @@ fn a_drive_along_a_path_follows_it_as_follow_path_does() {
 /// -> (60, -5.25), x = 20 + 10 t at 0, 2 and 4 s, y = -5.25 m.
 #[test]
 fn a_drive_along_a_resolved_relative_path_follows_it_against_its_reference() {
-    let r = run("actions/along_relative_path", 0, None);
+    follows_the_line_beside_npc("actions/along_relative_path", "do.1");
+}
+
+/// ego along the line (20, -5.25) -> (60, -5.25) at 10 m/s from 0 s, its phase `phase` ending
+/// at the line's end, 4 s (along_relative_path.osc, by hand).
+pub(crate) fn follows_the_line_beside_npc(name: &str, phase: &str) {
+    let r = run(name, 0, None);
     for t in [0.0, 2.0, 4.0] {
         let p = r.at(t, "ego");
         assert!(
@@ -233,7 +246,7 @@ fn a_drive_along_a_resolved_relative_path_follows_it_against_its_reference() {
             "at {t} s: {p:?}"
         );
     }
-    let (s, e) = r.phase("do.1");
+    let (s, e) = r.phase(phase);
     assert!(
         s.abs() < 1e-9 && (4.0..=4.05 + 1e-9).contains(&e),
         "{s} {e}"

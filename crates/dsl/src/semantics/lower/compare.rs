@@ -4,9 +4,10 @@
 
 use super::super::check::{Seg, TExpr, TKind};
 use super::super::hir::BinOp;
-use super::super::instance::Node;
+use super::super::instance::{is_library, Node};
+use super::super::model::Model;
 use super::super::solver::{ConstraintKind, Linear, Relation};
-use super::super::types::Ty;
+use super::super::types::{CompoundId, Ty};
 use super::{describe, Env, Fail, Lowerer};
 
 impl Lowerer<'_> {
@@ -18,6 +19,10 @@ impl Lowerer<'_> {
         env: &Env,
         whole: &TExpr,
     ) -> Result<(), Fail> {
+        if op == BinOp::Eq && (self.runtime_point(a, env) || self.runtime_point(b, env)) {
+            // A route element as a point of a relative path: the runtime's (module doc).
+            return Ok(());
+        }
         match (&a.ty, &b.ty) {
             (Ty::List(_), _) | (_, Ty::List(_)) => self.list_equality(op, a, b, env, whole),
             (Ty::Bool, _) | (_, Ty::Bool)
@@ -161,6 +166,51 @@ impl Lowerer<'_> {
             self.compare(BinOp::Eq, x, y, env, whole)?;
         }
         Ok(())
+    }
+
+    /// Whether `e` is a point of the `points` list of a library `relative_path` or
+    /// `relative_trajectory` (`….points[i]`) that is a road-network reference (a `route_point`
+    /// or `odr_point`, §8.12.33-34, §8.12.40-41), which the runtime reads from the constraint.
+    fn runtime_point(&mut self, e: &TExpr, env: &Env) -> bool {
+        let TKind::Path(place, segs) = &e.kind else {
+            return false;
+        };
+        let [owner @ .., Seg::Field(f), Seg::Index(_)] = segs.as_slice() else {
+            return false;
+        };
+        if f != "points" {
+            return false;
+        }
+        let path = |segs: Vec<Seg>| TExpr {
+            kind: TKind::Path(place.clone(), segs),
+            ty: e.ty.clone(),
+            span: e.span,
+        };
+        let library = |model: &Model, c: CompoundId, names: &[&str]| {
+            model.ancestry(c).into_iter().any(|a| {
+                let name = &model.compound(a).name;
+                let bare = name.strip_prefix("std::").unwrap_or(name);
+                is_library(model, a) && names.contains(&bare)
+            })
+        };
+        let relative = match self.node(&path(owner.to_vec()), env) {
+            Ok(n) => matches!(&self.tree.nodes[n], Node::Compound(c, _)
+                if library(self.model, *c, &["relative_path", "relative_trajectory"])),
+            Err(_) => false,
+        };
+        let points = path(
+            owner
+                .iter()
+                .cloned()
+                .chain([Seg::Field(f.clone())])
+                .collect(),
+        );
+        relative
+            && match self.node(&points, env) {
+                Ok(n) => matches!(&self.tree.nodes[n], Node::List(Ty::Compound(c), ..)
+                    if library(self.model, *c, &["route_element"])),
+                Err(_) => false,
+            }
     }
 
     /// The size of a list operand and its members, `None` while a list field is not sized.

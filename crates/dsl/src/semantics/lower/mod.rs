@@ -3,7 +3,11 @@
 //! Linear arithmetic over numbers and list sizes, enum and bool (in)equality and membership,
 //! a bool equal to a condition, string equality, list equality (size and members), `float` to
 //! whole-number conversions (a helper variable `n == trunc(x)`) and ranges are lowered; anything
-//! else is reported as unsupported. `compare.rs` holds the comparisons (`==`, `<`, `in`, …).
+//! else is reported as unsupported, but for the points of a relative path or trajectory given
+//! as route elements (`keep(it.points == [p0, p1])`, `keep(it.points[0] == p0)` of a
+//! `relative_path_st`, `relative_path_odr`, `relative_trajectory_st`,
+//! `relative_trajectory_odr`, §8.12.33-34, §8.12.40-41): road-network references, which the
+//! runtime reads from the constraint itself, so the solver only sizes the list. `compare.rs` holds the comparisons (`==`, `<`, `in`, …).
 
 mod compare;
 
@@ -94,6 +98,7 @@ pub fn lower(model: &Model, templates: &[Template], tree: &mut Tree) -> Lowered 
             out.origins.push(t.span);
             let start = tree.problem.constraints.len();
             let mut lw = Lowerer {
+                model,
                 tree,
                 out: &mut out,
                 origin,
@@ -107,6 +112,7 @@ pub fn lower(model: &Model, templates: &[Template], tree: &mut Tree) -> Lowered 
             // A field's default is about the field: only hard constraints on it override it.
             let subject = match &t.subject {
                 Some(s) => Lowerer {
+                    model,
                     tree,
                     out: &mut out,
                     origin,
@@ -153,6 +159,7 @@ fn group(tree: &mut Tree, start: usize, strength: Strength, origin: u32) {
 }
 
 pub(super) struct Lowerer<'a> {
+    model: &'a Model,
     tree: &'a mut Tree,
     out: &'a mut Lowered,
     origin: u32,
