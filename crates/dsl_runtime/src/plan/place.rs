@@ -428,7 +428,13 @@ fn beside_others<'r>(
                     .iter()
                     .any(|(q, ..)| q.name == n && !done.contains(&n))
             };
-            if done.contains(&p.name.as_str()) || waits(x) {
+            // A column's member after the first keeps to its slot behind the member before it,
+            // in that one's lane (the formation's), once that one is beside x.
+            let prev = match &p.member_after {
+                Some(Some(prev)) if p.across.is_none() => Some(prev.as_str()),
+                _ => None,
+            };
+            if done.contains(&p.name.as_str()) || waits(x) || prev.is_some_and(waits) {
                 continue;
             }
             let (Some(sx), Some(q)) = (out.get(x).copied(), all.iter().find(|q| &q.name == x))
@@ -453,7 +459,9 @@ fn beside_others<'r>(
                 || p.across.is_some()
                 || matches!(p.member_after, Some(Some(_)))
                 || p.route.is_some();
-            let lane = if own_lane {
+            let lane = if let Some(l) = prev.and_then(|q| out.get(q)).map(|q| q.lane) {
+                l
+            } else if own_lane {
                 st.lane
             } else {
                 let l = road.lane_holding(st.s, t_a).ok_or_else(|| {

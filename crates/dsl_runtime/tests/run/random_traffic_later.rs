@@ -236,3 +236,29 @@ fn a_members_own_place_relative_to_another_member_is_bad_input_at_the_modifier()
         }
     }
 }
+
+#[test]
+fn a_column_beside_an_actor_or_a_member_keeps_its_formation_in_one_lane() {
+    // group_lateral_beside.osc, worked in the file; seeds 0-3: both columns' members at
+    // y = -2.25 m (lane -1) and -8.25 m (lane -3), 14 m apart, at 0, 2 and 4 s.
+    for seed in 0..4 {
+        let r = run("group_lateral_beside", seed, None);
+        assert_eq!(r.at(0.0, "g.vehicles[0]").lane, -2, "seed {seed}");
+        for (group, lane, y) in [("left", -1, -2.25), ("right", -3, -8.25)] {
+            for t in [0.0, 2.0, 4.0] {
+                let (a, b) = (
+                    r.at(t, &format!("{group}.vehicles[0]")),
+                    r.at(t, &format!("{group}.vehicles[1]")),
+                );
+                assert!(
+                    a.lane == lane
+                        && b.lane == lane
+                        && (a.y - y).abs() < S_TOL
+                        && (b.y - y).abs() < S_TOL
+                        && (a.s - b.s - 14.0).abs() < S_TOL,
+                    "seed {seed} {group} at {t}: {a:?} {b:?}"
+                );
+            }
+        }
+    }
+}
