@@ -50,7 +50,11 @@
 //!   `create_route` at i (of one the runtime chooses, the plan's road i); a road's lane section
 //!   i in +s (in -s, driven against s) and a lane section's lane i (those flowing its way, from
 //!   the centre out) are bound by the plan (`MapRoute`) as a lane section and a lane the map's
-//!   modifiers bind.
+//!   modifiers bind. **`cl.lanes[i]`** of a compound lane nothing defines: the library
+//!   declares `lanes: list of lane` in no order the runtime could bind, so oscsim's choice is
+//!   the one of `ls.lanes[i]`, the lanes of the lane section where `cl`'s road starts (the
+//!   road the map's modifiers bind `cl` to, else the plan's roads), flowing in +s from the
+//!   centre out.
 //!
 //! - **a `crossing` field** the map's `crossing_connects` binds to a crosswalk of the map: a
 //!   person walking along it crosses from its start lane to its end lane (`crate::plan`),
@@ -1132,7 +1136,18 @@ fn list_element(
                     ..
                 },
             ) => Ok(part(road, Some(k), Some(i), against)),
-            (_, Route::Free { one_lane: true, .. }) => Err(wrong("a lane or compound lane (its lanes are not run as routes)")),
+            // A compound lane nothing defines: its lanes as a lane section's (oscsim's
+            // choice, docs/dsl.md "Routes": the standard orders them nowhere the runtime
+            // could bind).
+            (
+                "lanes",
+                Route::Free {
+                    field: f,
+                    one_lane: true,
+                    map_route: None,
+                },
+            ) => Ok(part(MapRoad::Field(f), None, Some(i), false)),
+            (_, Route::Free { one_lane: true, .. }) => Err(wrong("a lane or compound lane element")),
             (_, Route::Free { .. }) => Err(wrong("an element of another kind")),
             (_, Route::Lane { .. }) => Err(wrong("a route through points (its elements are its points: give them as routes of their own)")),
             (_, Route::Crossing { .. }) => Err(wrong("a crossing")),

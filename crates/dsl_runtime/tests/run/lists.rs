@@ -17,6 +17,7 @@ fn the_elements_of_the_librarys_lists_are_routes_along_their_part_of_the_road() 
         ("bus", 100.0, -1.75, -1),
         ("car", 200.0, -5.25, -2),
         ("truck", 120.0, -8.75, -3),
+        ("van", 80.0, -5.25, -2),
     ] {
         for (t, x) in [(0.0, x0), (2.5, x0 + 25.0), (5.0, x0 + 50.0)] {
             let p = r.at(t, actor);
@@ -55,7 +56,7 @@ fn an_element_past_its_list_or_of_no_list_run_is_an_error_at_its_place() {
         ("err_list_sidewalk", "sidewalk", "9:9", "expected a driving lane as `rd.s_positive[0].lanes[2]`, found lane -3"),
         ("err_list_section_end", "lane_drop", "10:9", "expected `npc` on route `rd.s_positive[0]` (the lane section of road 1 from s = 0.00 m"),
         ("err_list_negative", "lane_drop", "9:9", "expected an index below 2 into the lane sections in -s of `rd`"),
-        ("err_list_compound_lane", "lane_drop", "8:15", "expected a compound route before .route_elements, a road before .s_positive or .s_negative, or a lane section before .lanes"),
+        ("err_list_compound_lane", "lane_drop", "9:9", "expected an index below 3 into the lanes of the lane section of road 1 from s = 0.00 m, `cl`"),
     ] {
         let e = error_on(&format!("lists/{name}"), road);
         assert!(
