@@ -475,3 +475,54 @@ fn a_lane_same_as_another_that_changes_lane_after_an_until_is_followed() {
     r.held("do.both.2/car/1:check", (5.05, 9.05));
     r.held("do.both.0/ego/1:check", (5.05, 9.05));
 }
+
+/// The engine resolves the entities a state check names once, when it builds the storyboard,
+/// and reads them by id at every step after (engine `actions::check::CheckRefs`): a check that
+/// names an entity the scenario does not declare is refused then, at the check's file, line
+/// and column, before the run's first step. behind_held_runtime.osc's held check of
+/// `position(59.75m, behind: lead)` (27:17) with lead renamed `ghost` in the lowered scenario
+/// (the DSL's own check refuses an undeclared name in a `.osc`, so only a model built by
+/// other means can hold one).
+#[test]
+fn a_state_check_naming_an_undeclared_entity_is_refused_when_the_engine_is_built() {
+    let lowered = lower("held/behind_held_runtime", 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let mut scenario = lowered.scenario;
+    let checks = scenario
+        .storyboard
+        .stories
+        .iter_mut()
+        .flat_map(|s| &mut s.acts)
+        .flat_map(|a| &mut a.maneuver_groups)
+        .flat_map(|g| &mut g.maneuvers)
+        .flat_map(|m| &mut m.events)
+        .flat_map(|e| &mut e.actions)
+        .filter_map(|a| match &mut a.kind {
+            scenario::ActionKind::Private(scenario::PrivateAction::Check(c)) => Some(c),
+            _ => None,
+        });
+    let mut renamed = 0;
+    for check in checks {
+        if let Some((gap, _)) = check.gap.as_mut().filter(|g| g.0.entity_ref == "lead") {
+            gap.entity_ref = "ghost".into();
+            renamed += 1;
+        }
+    }
+    assert_eq!(
+        renamed, 1,
+        "the one held check of ego's position behind lead"
+    );
+    let network = engine::load::road_network(&scenario).unwrap_or_else(|e| panic!("{e}"));
+    let e = match engine::Engine::new(&scenario, network, crate::support::config()) {
+        Ok(_) => panic!("built with a check naming 'ghost'"),
+        Err(e) => e,
+    };
+    let pos = e.pos().map(|p| p.to_string()).unwrap_or_default();
+    assert!(
+        pos.ends_with("held/behind_held_runtime.osc:27:17"),
+        "{pos}: {e}"
+    );
+    let want = "expected a declared entity for position(…) at ";
+    let tail = "held/behind_held_runtime.osc:27:17, found 'ghost' at ";
+    let text = e.to_string();
+    assert!(text.starts_with(want) && text.contains(tail), "{text}");
+}

@@ -24,7 +24,7 @@
 //! along its direction of travel (u = L − s, t and offsets to its left), the plan's numbers.
 
 use opendrive::{Direction, RoadPosition};
-use scenario::{AcrossLine, RateWithin, SourcePos, StateCheck};
+use scenario::{AcrossLine, HeadingFrom, RateWithin, SourcePos, SpeedTarget, StateCheck};
 
 use super::lane_change::side_lane;
 use super::speed;
@@ -37,21 +37,114 @@ use crate::world::lanes::lane_shift;
 use crate::world::shapes::peak_slope;
 use crate::EntityId;
 
-/// Checks `check` on `actor` at `time` (`pos`: where the check is written), then notes its
-/// mark if it has one.
+/// The entities a state check names, resolved to their ids once, when the storyboard is built
+/// (`runtime::build`, through [`super::ActionTable::push`]): a check, and a held one at every
+/// step, reads each entity by its id, never looking its name up again. `None` where the check
+/// names no entity.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(crate) struct CheckRefs {
+    /// `StateCheck::lane_of`'s entity.
+    lane_of: Option<EntityId>,
+    /// `StateCheck::gap`'s entity.
+    gap: Option<EntityId>,
+    /// `StateCheck::beside`'s entity.
+    beside: Option<EntityId>,
+    /// `StateCheck::beside_in_lane`'s entity.
+    beside_in_lane: Option<EntityId>,
+    /// `StateCheck::across_line`'s entity.
+    across_line: Option<EntityId>,
+    /// The entity whose speed `StateCheck::speed` adds to.
+    speed: Option<EntityId>,
+    /// The entity `StateCheck::heading` is measured from.
+    heading: Option<EntityId>,
+    /// The entity of the gap of `StateCheck::mark`.
+    mark_gap: Option<EntityId>,
+}
+
+impl CheckRefs {
+    /// The entities `check`, the action written at `pos`, names, by their ids in `world`: an
+    /// entity the scenario does not declare is an error at the check (a load error, as an
+    /// undeclared `entityRef` of any action is). The entities of its speed targets
+    /// (`speed_change`, `speed_at_rate`) are read when it runs, as a SpeedAction's are
+    /// (`speed::target_speed`), and must be declared too.
+    pub(crate) fn resolve(
+        world: &World,
+        check: &StateCheck,
+        pos: &SourcePos,
+    ) -> Result<Self, Error> {
+        let id = |name: Option<&str>| {
+            name.map(|n| {
+                world.id(n).ok_or_else(|| {
+                    Error::at(
+                        format!("a declared entity for {}", check.what),
+                        format!("'{n}'"),
+                        pos,
+                    )
+                })
+            })
+            .transpose()
+        };
+        let targets = [
+            check.speed_change.as_ref().map(|c| &c.0),
+            check.speed_at_rate.as_ref().map(|c| &c.0),
+        ];
+        for target in targets.into_iter().flatten() {
+            if let SpeedTarget::Relative { entity_ref, .. }
+            | SpeedTarget::RelativeAtStart { entity_ref, .. } = target
+            {
+                id(Some(entity_ref))?;
+            }
+        }
+        Ok(Self {
+            lane_of: id(check.lane_of.as_ref().map(|x| x.0.as_str()))?,
+            gap: id(check.gap.as_ref().map(|g| g.0.entity_ref.as_str()))?,
+            beside: id(check.beside.as_ref().map(|x| x.0.as_str()))?,
+            beside_in_lane: id(check.beside_in_lane.as_ref().map(|x| x.0.as_str()))?,
+            across_line: id(check.across_line.as_ref().map(|a| a.entity_ref.as_str()))?,
+            speed: id(check.speed.as_ref().and_then(|x| x.0.as_deref()))?,
+            heading: id(match check.heading.as_ref().map(|h| &h.from) {
+                Some(HeadingFrom::Entity(x)) => Some(x.as_str()),
+                _ => None,
+            })?,
+            mark_gap: id(check
+                .mark
+                .as_ref()
+                .and_then(|m| m.gap.as_ref())
+                .map(|g| g.entity_ref.as_str()))?,
+        })
+    }
+
+    /// The entity of the gap (`StateCheck::gap`).
+    pub(super) fn gap(&self) -> Option<EntityId> {
+        self.gap
+    }
+
+    /// The entity of the lane count (`StateCheck::lane_of`).
+    pub(super) fn lane_of(&self) -> Option<EntityId> {
+        self.lane_of
+    }
+
+    /// The entity of the place across the road (`StateCheck::beside`).
+    pub(super) fn beside(&self) -> Option<EntityId> {
+        self.beside
+    }
+}
+
+/// Checks `check` on `actor` at `time` (`pos`: where the check is written; `refs`: the
+/// entities it names), then notes its mark if it has one.
 pub(crate) fn start(
     world: &mut World,
     actor: EntityId,
-    check: &StateCheck,
+    (check, refs): (&StateCheck, &CheckRefs),
     (time, pos): (f64, &SourcePos),
 ) -> Result<(), Error> {
-    require(world, actor, check, (time, pos))?;
+    require(world, actor, (check, refs), (time, pos))?;
     if let Some(mark) = &check.mark {
         let e = world.entity(actor);
         let chain = RoadChain::new(&world.network, &check.roads);
         let gap_error = match &mark.gap {
             Some(gap) => {
-                let other = world.id(&gap.entity_ref).map(|o| world.entity(o));
+                let other = refs.mark_gap.map(|o| world.entity(o));
                 let place = match (e.road_position.as_ref(), other) {
                     (Some(a), Some(o)) => o
                         .road_position
@@ -79,7 +172,7 @@ pub(crate) fn start(
         };
         // Projected: the gap's entity along its lane at its speed now.
         let projection = match (&mark.gap, mark.projected) {
-            (Some(gap), true) => projection(world, &gap.entity_ref, time),
+            (Some(_), true) => refs.mark_gap.and_then(|o| projection(world, o, time)),
             _ => None,
         };
         if let (Some(gap), true, None) = (&mark.gap, mark.projected, &projection) {
@@ -109,10 +202,10 @@ pub(crate) fn start(
     Ok(())
 }
 
-/// `name` projected from `time` on (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track: projected`):
-/// its lane, s and speed now (`None`: no such entity, or off every lane).
-pub(super) fn projection(world: &World, name: &str, time: f64) -> Option<Projection> {
-    let o = world.entity(world.id(name)?);
+/// Entity `id` projected from `time` on (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track:
+/// projected`): its lane, s and speed now (`None`: off every lane).
+pub(super) fn projection(world: &World, id: EntityId, time: f64) -> Option<Projection> {
+    let o = world.entity(id);
     let t = o.track.as_ref()?;
     Some(Projection {
         road: t.road_id.clone(),
@@ -136,16 +229,26 @@ pub(super) fn failure(check: &StateCheck, time: f64) -> impl Fn(String, String) 
     }
 }
 
-/// The requirements of `check` on `actor` at `time`.
+/// Entity `id` as `refs` resolved it for `name` (`CheckRefs::resolve`: always there for a
+/// check the storyboard was built with), else the check's failure `fail` naming it.
+fn resolved(
+    id: Option<EntityId>,
+    name: &str,
+    fail: &dyn Fn(String, String) -> Error,
+) -> Result<EntityId, Error> {
+    id.ok_or_else(|| fail(format!("'{name}' in the scenario"), "no such entity".into()))
+}
+
+/// The requirements of `check` on `actor` at `time` (`refs`: the entities it names).
 pub(super) fn require(
     world: &World,
     actor: EntityId,
-    check: &StateCheck,
+    (check, refs): (&StateCheck, &CheckRefs),
     (time, pos): (f64, &SourcePos),
 ) -> Result<(), Error> {
     let e = world.entity(actor);
     let fail = failure(check, time);
-    super::check_heading::require(world, e, check, &fail)?;
+    super::check_heading::require(world, e, (check, refs.heading), &fail)?;
     // The change must run as written: the SpeedAction would stretch a faster one in time.
     if let (Some((target, shape, within)), Some(perf)) = (&check.speed_change, e.performance) {
         let v1 = speed::target_speed(world, target, pos)?;
@@ -211,10 +314,7 @@ pub(super) fn require(
     }
     if let Some((other, value, tol)) = &check.speed {
         let base = match other {
-            Some(o) => world
-                .id(o)
-                .map(|o| world.entity(o).speed)
-                .ok_or_else(|| fail(format!("'{o}' in the scenario"), "no such entity".into()))?,
+            Some(o) => world.entity(resolved(refs.speed, o, &fail)?).speed,
             None => 0.0,
         };
         let want = base + value;
@@ -244,7 +344,7 @@ pub(super) fn require(
         }
     }
     if let Some(a) = &check.across_line {
-        require_across(world, e, a, &fail)?;
+        require_across(world, e, (a, refs.across_line), &fail)?;
     }
     let places = check.lane.is_some()
         || check.lane_of.is_some()
@@ -282,7 +382,7 @@ pub(super) fn require(
         }
     }
     if let Some((other, shift)) = &check.lane_of {
-        let there = world.id(other).map(|o| world.entity(o));
+        let there = refs.lane_of.map(|o| world.entity(o));
         let Some((rp, track)) = there.and_then(|o| o.road_position.as_ref().zip(o.track.as_ref()))
         else {
             return Err(fail(
@@ -385,10 +485,8 @@ pub(super) fn require(
     }
     // Another entity on the actor's road (on a plan over several roads on any of them): its
     // road position and speed.
-    let beside = |other: &str| {
-        world
-            .id(other)
-            .map(|o| world.entity(o))
+    let beside = |other: &str, id: Option<EntityId>| {
+        id.map(|o| world.entity(o))
             .and_then(|o| Some((o.road_position.as_ref()?, o.speed)))
             .filter(|(p, _)| chain.pair(at, p).is_some())
             .ok_or_else(|| {
@@ -401,15 +499,15 @@ pub(super) fn require(
     };
     // x's t beside the actor's: each on its own road, one measure where the reference lines
     // of the roads between them join continuously.
-    let beside_t = |other: &str| {
-        let (there, _) = beside(other)?;
+    let beside_t = |other: &str, id: Option<EntityId>| {
+        let (there, _) = beside(other, id)?;
         chain
             .lateral_compares(&at.road_id, &there.road_id)
             .map_err(|want| fail(want, format!("'{other}' on road {}", there.road_id)))?;
         Ok::<_, Error>(there)
     };
     if let Some((other, dt, tol)) = &check.beside {
-        let there = beside_t(other)?;
+        let there = beside_t(other, refs.beside)?;
         let got = chain.left(at.t - there.t);
         if (got - dt).abs() > *tol {
             return Err(fail(
@@ -422,7 +520,7 @@ pub(super) fn require(
         }
     }
     if let Some((other, dt)) = &check.beside_in_lane {
-        let there = beside_t(other)?;
+        let there = beside_t(other, refs.beside_in_lane)?;
         let t = there.t + chain.left(*dt);
         let road = world.network.road(&at.road_id);
         let lane = road
@@ -445,9 +543,9 @@ pub(super) fn require(
         let other = &g.entity_ref;
         // On a plan over several roads x may be on another of them: the plan's s of both.
         let (there_s, speed) = match chain.is_chain() {
-            false => beside(other).map(|(there, v)| (along(there), v))?,
-            true => world
-                .id(other)
+            false => beside(other, refs.gap).map(|(there, v)| (along(there), v))?,
+            true => refs
+                .gap
                 .map(|o| world.entity(o))
                 .and_then(|o| Some((along(o.road_position.as_ref()?), o.speed)))
                 .filter(|(s, _)| s.is_some())
@@ -484,19 +582,14 @@ pub(super) fn require(
 /// `e`'s place across a straight line beside another entity (`StateCheck::across_line`): its
 /// reference point across the line, from the middle of the entity's box across it (the box's
 /// footprint, turned to its heading now, projected on the line's normal), against
-/// `per_extent`·extent + `offset`.
+/// `per_extent`·extent + `offset` (`id`: the entity, resolved when the storyboard was built).
 fn require_across(
     world: &World,
     e: &crate::world::entity::Entity,
-    a: &AcrossLine,
+    (a, id): (&AcrossLine, Option<EntityId>),
     fail: &dyn Fn(String, String) -> Error,
 ) -> Result<(), Error> {
-    let Some(x) = world.id(&a.entity_ref).map(|o| world.entity(o)) else {
-        return Err(fail(
-            format!("'{}' in the scenario", a.entity_ref),
-            "no such entity".into(),
-        ));
-    };
+    let x = world.entity(resolved(id, &a.entity_ref, fail)?);
     let n = [a.normal.0, a.normal.1];
     let (lo, hi) = x.bounding_box.footprint(&x.pose).project(n);
     let want = a.per_extent * (hi - lo) + a.offset;

@@ -20,13 +20,15 @@ use scenario::{HeadingCheck, HeadingFrom, StateCheck};
 use crate::error::Error;
 use crate::store::World;
 use crate::world::entity::Entity;
+use crate::EntityId;
 
-/// The heading `check` requires of entity `e`, if it requires one (`fail`: the check's
+/// The heading `check` requires of entity `e`, if it requires one (`from`: the entity it is
+/// measured from, resolved when the storyboard was built, `CheckRefs`; `fail`: the check's
 /// error from what it expected and what it found).
 pub(super) fn require(
     world: &World,
     e: &Entity,
-    check: &StateCheck,
+    (check, from): (&StateCheck, Option<EntityId>),
     fail: &dyn Fn(String, String) -> Error,
 ) -> Result<(), Error> {
     let Some(heading) = &check.heading else {
@@ -39,7 +41,7 @@ pub(super) fn require(
         .map(|p| angle_difference(e.pose.h, p.relative_heading));
     let base = match &heading.from {
         HeadingFrom::World => 0.0,
-        HeadingFrom::Entity(x) => match world.id(x) {
+        HeadingFrom::Entity(x) => match from {
             Some(o) => world.entity(o).pose.h,
             None => {
                 return Err(fail(

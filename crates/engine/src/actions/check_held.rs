@@ -19,7 +19,7 @@
 use opendrive::Direction;
 use scenario::{SourcePos, StateCheck};
 
-use super::check;
+use super::check::{self, CheckRefs};
 use crate::condition::Projection;
 use crate::error::Error;
 use crate::position::RoadChain;
@@ -33,6 +33,8 @@ use crate::EntityId;
 pub(crate) struct HeldCheck {
     /// What it requires (with a projection: all but the gap and lane count read from it).
     check: Box<StateCheck>,
+    /// The entities it names, by id (resolved when the storyboard was built).
+    refs: CheckRefs,
     /// With `track: projected`: the entity of the gap, lane count or t beside, projected from
     /// the start.
     projection: Option<Projected>,
@@ -59,11 +61,12 @@ struct Projected {
 }
 
 impl HeldCheck {
-    /// `check` (written at `pos`), which held at its start `time`; with `track: projected`
-    /// the entity it relates to is recorded now. `Err` where that entity is off every lane.
+    /// `check` (written at `pos`; `refs`: the entities it names), which held at its start
+    /// `time`; with `track: projected` the entity it relates to is recorded now. `Err` where
+    /// that entity is off every lane.
     pub(super) fn new(
         world: &World,
-        check: &StateCheck,
+        (check, refs): (&StateCheck, &CheckRefs),
         (time, pos): (f64, &SourcePos),
     ) -> Result<Self, Error> {
         let mut held = check.clone();
@@ -75,20 +78,21 @@ impl HeldCheck {
                 let beside = held.beside.take();
                 let of = gap
                     .as_ref()
-                    .map(|(g, _)| g.entity_ref.clone())
-                    .or(lane_of.as_ref().map(|(x, _)| x.clone()))
-                    .or(beside.as_ref().map(|(x, _, _)| x.clone()));
+                    .map(|(g, _)| (g.entity_ref.clone(), refs.gap()))
+                    .or(lane_of.as_ref().map(|(x, _)| (x.clone(), refs.lane_of())))
+                    .or(beside.as_ref().map(|(x, _, _)| (x.clone(), refs.beside())));
                 match of {
                     None => None,
-                    Some(x) => {
-                        let Some(mut from) = check::projection(world, &x, time) else {
+                    Some((x, id)) => {
+                        let from = id.and_then(|o| check::projection(world, o, time));
+                        let Some(mut from) = from else {
                             let fail = check::failure(check, time);
                             let want = format!("'{x}' on a lane to project it from");
                             return Err(fail(want, "it off every lane".into()));
                         };
                         // Its lane then: the one its reference point is in (its track's
                         // may already be the target of a lane change starting now).
-                        let there = world.id(&x).map(|o| world.entity(o));
+                        let there = id.map(|o| world.entity(o));
                         let at = there.and_then(|o| o.road_position.as_ref());
                         if let Some(p) = at {
                             from.lane = p.lane_id;
@@ -110,6 +114,7 @@ impl HeldCheck {
         };
         Ok(Self {
             check: Box::new(held),
+            refs: *refs,
             projection,
             pos: pos.clone(),
             failure: None,
@@ -120,12 +125,11 @@ impl HeldCheck {
 /// Checks `held` on `actor` at `now`: running while it holds, ended with its failure noted
 /// once it does not.
 pub(super) fn step(world: &World, actor: EntityId, held: &mut HeldCheck, now: f64) -> ActionStatus {
-    let checked = check::require(world, actor, &held.check, (now, &held.pos)).and_then(|()| {
-        match &held.projection {
+    let checked = check::require(world, actor, (&held.check, &held.refs), (now, &held.pos))
+        .and_then(|()| match &held.projection {
             Some(p) => require_projected(world, actor, &held.check, p, now),
             None => Ok(()),
-        }
-    });
+        });
     match checked {
         Ok(()) => ActionStatus::Running,
         Err(e) => {

@@ -100,6 +100,9 @@ pub(crate) struct ActionSlot {
     pub parts: Vec<Part>,
     /// Simulation time of the start.
     pub started_at: f64,
+    /// The entities a state check (`PrivateAction::Check`) names, by id, resolved as the
+    /// table is built (none for the other actions).
+    pub check_refs: check::CheckRefs,
 }
 
 /// Every action of the storyboard, indexed by [`ActionId`].
@@ -125,16 +128,31 @@ pub(crate) struct ActionTable {
 }
 
 impl ActionTable {
-    /// Adds an action, returning its id.
-    pub fn push(&mut self, name: String, action: Action, actors: Vec<EntityId>) -> ActionId {
+    /// Adds an action, returning its id; the entities a state check names are resolved in
+    /// `world` now (`check::CheckRefs`): one the scenario does not declare is an error at the
+    /// action.
+    pub fn push(
+        &mut self,
+        world: &World,
+        name: String,
+        action: Action,
+        actors: Vec<EntityId>,
+    ) -> Result<ActionId, Error> {
+        let check_refs = match &action.kind {
+            ActionKind::Private(PrivateAction::Check(c)) => {
+                check::CheckRefs::resolve(world, c, &action.pos)?
+            }
+            _ => check::CheckRefs::default(),
+        };
         self.slots.push(ActionSlot {
             name,
             action,
             actors,
             parts: Vec::new(),
             started_at: 0.0,
+            check_refs,
         });
-        ActionId(self.slots.len() as u32 - 1)
+        Ok(ActionId(self.slots.len() as u32 - 1))
     }
 
     /// Marks slot `id` as possibly running (after its start set its parts).
@@ -492,9 +510,14 @@ impl Host<'_> {
                 Ok(Part::Done(ActionStatus::Ended))
             }
             PrivateAction::Check(check) => {
-                check::start(self.world, actor, check, (time, pos))?;
+                let refs = self.table.slots[id.0 as usize].check_refs;
+                check::start(self.world, actor, (check, &refs), (time, pos))?;
                 Ok(match check.throughout {
-                    true => Part::Held(check_held::HeldCheck::new(self.world, check, (time, pos))?),
+                    true => Part::Held(check_held::HeldCheck::new(
+                        self.world,
+                        (check, &refs),
+                        (time, pos),
+                    )?),
                     false => Part::Done(ActionStatus::Ended),
                 })
             }

@@ -117,7 +117,7 @@ impl Builder<'_> {
         let mut init_actions = Vec::new();
         for a in &sb.init.actions {
             let name = format!("Init {}", a.kind.type_name());
-            init_actions.push(self.action(name, a, Vec::new()));
+            init_actions.push(self.action(name, a, Vec::new())?);
         }
         // The private actions take effect together: each in the order that resolves positions
         // and speeds relative to other entities against those entities' initial ones
@@ -133,7 +133,7 @@ impl Builder<'_> {
             )?;
             let a = &p.actions[step.action];
             let name = format!("Init {} {}", p.entity_ref, a.kind.type_name());
-            init_actions.push(self.action(name, a, vec![actor]));
+            init_actions.push(self.action(name, a, vec![actor])?);
         }
         let mut stories = Vec::new();
         for story in &sb.stories {
@@ -150,15 +150,15 @@ impl Builder<'_> {
                                 .actions
                                 .iter()
                                 .map(|a| {
-                                    let d = self.action(a.name.clone(), a, actors.clone());
+                                    let d = self.action(a.name.clone(), a, actors.clone())?;
                                     self.note_runtime_actors(
                                         d.id,
                                         &mg.actors,
                                         act.start_trigger.as_ref(),
                                     );
-                                    d
+                                    Ok(d)
                                 })
-                                .collect();
+                                .collect::<Result<_, Error>>()?;
                             events.push(EventDesc {
                                 name: ev.name.clone(),
                                 priority: match ev.priority {
@@ -265,9 +265,18 @@ impl Builder<'_> {
         }
     }
 
-    fn action(&mut self, name: String, action: &Action, actors: Vec<EntityId>) -> ActionDesc {
-        let id = self.actions.push(name.clone(), action.clone(), actors);
-        ActionDesc { name, id }
+    /// An action's description, its table entry added (the entities a state check names
+    /// resolved: an undeclared one is an error at the action).
+    fn action(
+        &mut self,
+        name: String,
+        action: &Action,
+        actors: Vec<EntityId>,
+    ) -> Result<ActionDesc, Error> {
+        let id = self
+            .actions
+            .push(self.world, name.clone(), action.clone(), actors)?;
+        Ok(ActionDesc { name, id })
     }
 
     /// A trigger's description. An empty `<StartTrigger/>` or `<StopTrigger/>` (allowed since

@@ -119,7 +119,7 @@ pub(crate) fn start(
             traffic.running.retain(|a| a.run.name != target);
             return Ok(());
         }
-        TrafficAction::Swarm { .. } => Kind::Swarm(Box::new(Swarm::new(action, pos)?)),
+        TrafficAction::Swarm { .. } => Kind::Swarm(Box::new(Swarm::new(world, action, pos)?)),
         TrafficAction::Source {
             position,
             radius,

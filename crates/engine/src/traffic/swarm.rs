@@ -23,6 +23,7 @@ use super::spawn::{add, lane_point, remove};
 use super::spawning::{Running, Tables};
 use crate::error::Error;
 use crate::store::World;
+use crate::world::EntityId;
 
 /// Random points tried per step for a new vehicle.
 pub(crate) const ATTEMPTS: usize = 20;
@@ -32,7 +33,8 @@ pub(crate) const DEFAULT_SPEED: Real = 50.0 / 3.6;
 /// A swarm's settings.
 #[derive(Debug, Clone)]
 pub(crate) struct Swarm {
-    central: String,
+    /// The central object, resolved when the action starts (each step reads it by id).
+    central: EntityId,
     inner: Real,
     major: Real,
     minor: Real,
@@ -45,8 +47,13 @@ pub(crate) struct Swarm {
 }
 
 impl Swarm {
-    /// Reads a `TrafficAction::Swarm`; the radii must be ≥ 0 and the ellipse non-degenerate.
-    pub(crate) fn new(action: &TrafficAction, pos: &SourcePos) -> Result<Self, Error> {
+    /// Reads a `TrafficAction::Swarm`; the central object must be declared in `world`, the
+    /// radii ≥ 0 and the ellipse non-degenerate.
+    pub(crate) fn new(
+        world: &World,
+        action: &TrafficAction,
+        pos: &SourcePos,
+    ) -> Result<Self, Error> {
         let TrafficAction::Swarm {
             central_object,
             inner_radius,
@@ -80,8 +87,15 @@ impl Swarm {
             (None, Some(v)) => (*v, *v),
             _ => (DEFAULT_SPEED, DEFAULT_SPEED),
         };
+        let central = world.id(central_object).ok_or_else(|| {
+            Error::at(
+                "a declared entity",
+                format!("centralObject '{central_object}'"),
+                pos,
+            )
+        })?;
         Ok(Swarm {
-            central: central_object.clone(),
+            central,
             inner: *inner_radius,
             major: *semi_major_axis,
             minor: *semi_minor_axis,
@@ -115,9 +129,7 @@ impl Swarm {
         tables: &mut Tables<'_>,
         run: &mut Running,
     ) -> Result<(), Error> {
-        let Some(central) = world.id(&self.central).map(|id| world.entity(id)) else {
-            return Ok(());
-        };
+        let central = world.entity(self.central);
         if !central.placed {
             return Ok(());
         }
