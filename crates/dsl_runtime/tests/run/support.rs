@@ -18,6 +18,9 @@ pub struct Obj {
     pub road: String,
     pub lane: i32,
     pub speed: f64,
+    /// Its pose (the frame's, with z, pitch and roll) and bounding box, as the OpenSCENARIO
+    /// 2.0 §8.7.2 physical_object the engine's domain methods take.
+    pub object: engine::domain::PhysicalObject,
 }
 
 /// A run.
@@ -47,6 +50,7 @@ impl FrameSink for Frames {
                 road: o.road_position.map_or(String::new(), |r| r.road_id.clone()),
                 lane: o.road_position.map_or(0, |r| r.lane_id),
                 speed: o.speed,
+                object: engine::domain::PhysicalObject::new(o.bounding_box, o.pose),
             })
             .collect();
         self.0.push((frame.time, objs));
