@@ -155,6 +155,16 @@ impl Planner<'_> {
             // random traffic the engine moves the actor: the plan knows no track to start a
             // phase at a time from.
             if let (Some(t), Some(since)) = (t0, self.engine_moved.get(target)) {
+                if self.random_member(target) {
+                    // A member's motion is its model's from its creation: say so, not the
+                    // gap-action reading below (found in review of b78c5936).
+                    return Err(p.site.err(
+                        K::Unsatisfiable,
+                        format!(
+                            "expected this phase of `{target}` of random traffic to start on a run-time condition (until, wait), found it at {t:.2} s, where the plan knows no place of it: its driver model moves it from its creation (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\"); give the group the action (g.drive(), g.change_speed(…)) instead"
+                        ),
+                    ));
+                }
                 return Err(p.site.err(
                     K::Unsatisfiable,
                     format!(

@@ -238,6 +238,29 @@ fn a_members_own_place_relative_to_another_member_is_bad_input_at_the_modifier()
 }
 
 #[test]
+fn a_members_own_phase_at_a_known_time_is_bad_input_naming_its_model() {
+    // §8.7.18.1 (quoted in the message): a member's motion is its model's from its creation,
+    // so a phase of its own at 0 s has no place of it to start from, on every seed; the
+    // message names that, not a gap action the scenario does not have.
+    let name = "err_random_traffic_member_own_phase";
+    crate::along::refused(
+        name,
+        "expected this phase of `g.vehicles[0]` of random traffic to start on a run-time condition (until, wait), found it at 0.00 s",
+        "14:9",
+    );
+    for seed in 0..4 {
+        let e = crate::support::lower(name, seed, None).expect_err(name);
+        let text = e.to_string();
+        assert!(
+            matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
+                && text.contains("(§8.7.18.1: ")
+                && !text.contains("gap action"),
+            "{name} seed {seed}: {text}"
+        );
+    }
+}
+
+#[test]
 fn a_column_beside_an_actor_or_a_member_keeps_its_formation_in_one_lane() {
     // group_lateral_beside.osc, worked in the file; seeds 0-3: both columns' members at
     // y = -2.25 m (lane -1) and -8.25 m (lane -3), 14 m apart, at 0, 2 and 4 s.
