@@ -257,19 +257,9 @@ impl<'a> PlanRoad<'a> {
     /// side) whose type passes `keep`, rightmost (outermost) first.
     fn side_lanes(&self, s: f64, keep: impl Fn(&LaneType) -> bool) -> Vec<i32> {
         let (road, s) = self.road_at(s);
-        let section = road.lane_section_at(s);
-        let side = if self.against {
-            &section.left
-        } else {
-            &section.right
-        };
-        let mut ids: Vec<i32> = side
-            .iter()
-            .filter(|l| keep(&l.lane_type))
-            .map(|l| l.id)
-            .collect();
-        ids.sort_unstable_by_key(|id| std::cmp::Reverse(id.abs()));
-        ids
+        // The right side in +s, the left side against s: outermost first either way.
+        road.lane_section_at(s)
+            .side_from_right(self.against, self.against, keep)
     }
 
     /// The lane numbered `n` (1 = rightmost, or leftmost with `from_left`) at `s`: a driving

@@ -6,7 +6,8 @@
 //! runtime needs them combined per step; it adds no geometry of its own.
 
 use opendrive::{
-    angle_difference, Direction, LaneHandle, LaneSpan, Real, Road, RoadNetwork, RoadPosition,
+    angle_difference, Direction, LaneHandle, LaneSpan, LaneType, Real, Road, RoadNetwork,
+    RoadPosition,
 };
 
 use super::lane_track::{LaneTrack, LanesMemo};
@@ -141,19 +142,12 @@ pub fn numbered_lane(
     direction: Direction,
     (n, from_left): (u32, bool),
 ) -> Option<i32> {
-    let section = road.lane_section_at(s);
-    let side = if lane > 0 {
-        &section.left
-    } else {
-        &section.right
-    };
-    let mut ids: Vec<i32> = side
-        .iter()
-        .filter(|l| l.lane_type.is_drivable())
-        .map(|l| l.id)
-        .collect();
-    ids.sort_unstable();
-    if (direction == Direction::Backward) != from_left {
+    let mut ids = road.lane_section_at(s).side_from_right(
+        lane > 0,
+        direction == Direction::Backward,
+        LaneType::is_drivable,
+    );
+    if from_left {
         ids.reverse();
     }
     ids.get(usize::try_from(n).ok()?.checked_sub(1)?).copied()

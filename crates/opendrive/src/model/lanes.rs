@@ -265,6 +265,30 @@ impl LaneSection {
         }
     }
 
+    /// Ids of one side's lanes (`left`: ids > 0, else < 0) whose type passes `keep`, in the
+    /// order a driver heading towards +s meets them from its right (`backward`: heading
+    /// towards −s): towards +s the smallest id first (−3, −2, −1; 1, 2), towards −s the
+    /// largest. The one numbering rule of `lane(n)` (ASAM OpenSCENARIO DSL 2.1 §8.9, 1 the
+    /// rightmost in the direction of travel) for the DSL's plan and the engine.
+    pub fn side_from_right(
+        &self,
+        left: bool,
+        backward: bool,
+        keep: impl Fn(&LaneType) -> bool,
+    ) -> Vec<i32> {
+        let side = if left { &self.left } else { &self.right };
+        let mut ids: Vec<i32> = side
+            .iter()
+            .filter(|l| keep(&l.lane_type))
+            .map(|l| l.id)
+            .collect();
+        ids.sort_unstable();
+        if backward {
+            ids.reverse();
+        }
+        ids
+    }
+
     /// All lanes, left outermost to right outermost (the centre lane included).
     pub fn lanes(&self) -> impl Iterator<Item = &Lane> {
         self.left
