@@ -79,11 +79,14 @@ pub(crate) fn step(world: &mut World, actor: EntityId, s: &mut LaneFollowState) 
     let Some(xt) = x.track.as_ref() else {
         return ActionStatus::Running;
     };
-    let (road, lane, direction, blend) = (xt.road_id.clone(), xt.lane_id, xt.direction, xt.blend);
-    let now = Some((road.clone(), lane));
-    let began = now != s.seen;
-    let same_road = s.seen.as_ref().is_some_and(|(r, _)| *r == road);
-    s.seen = now;
+    let (lane, direction, blend) = (xt.lane_id, xt.direction, xt.blend);
+    // Compared in place: the road id is copied only when x's road or lane changed, not at
+    // every step.
+    let same_road = s.seen.as_ref().is_some_and(|(r, _)| *r == xt.road_id);
+    let began = !(same_road && s.seen.as_ref().is_some_and(|(_, l)| *l == lane));
+    if began {
+        s.seen = Some((xt.road_id.clone(), lane));
+    }
     let (net, e) = world.entity_on_network_mut(actor);
     let Some(track) = e.track.as_mut() else {
         return ActionStatus::Running;
