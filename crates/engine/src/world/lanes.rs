@@ -28,7 +28,25 @@ pub fn curvature(road: &Road, s: Real) -> Real {
 /// [`curvature`] given the reference line's heading at `s` (the `h` of any [`Road::pose`] at
 /// that `s`, which does not depend on t): one pose less to evaluate, the same value bit for
 /// bit.
+///
+/// On a straight road ([`PlanView::straight_heading`](opendrive::PlanView::straight_heading):
+/// one line heading everywhere) given that heading it is +0 without a second heading: the
+/// difference below is then `angle_difference(h, h) / (b − a)` = +0 / (b − a) = +0 (h − h is
+/// +0 for a finite h, §9.2.1 a line's heading does not change along it), and every other
+/// branch returns 0.0 too. Any other heading or road takes the difference
+/// ([`curvature_by_difference`]); the test `the_straight_roads_shortcut_gives_the_difference_bit_for_bit`
+/// compares the two.
+#[inline]
 pub(crate) fn curvature_with_heading(road: &Road, s: Real, heading: Real) -> Real {
+    if road.plan_view.straight_heading().map(Real::to_bits) == Some(heading.to_bits()) {
+        return 0.0;
+    }
+    curvature_by_difference(road, s, heading)
+}
+
+/// [`curvature_with_heading`] by the finite difference of the heading, whatever the road.
+#[inline(never)]
+fn curvature_by_difference(road: &Road, s: Real, heading: Real) -> Real {
     let forward = s + CURVATURE_STEP <= road.length;
     let (a, b) = if forward {
         (s, s + CURVATURE_STEP)
@@ -354,4 +372,96 @@ pub fn set_road_position(
     *rp_offset = offset;
     *rp_heading = relative_heading;
     *rp_distance = 0.0;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 30 m road of two lanes on the plan view `geometry` (its `<geometry>` elements).
+    fn road(geometry: &str) -> RoadNetwork {
+        let xodr = format!(
+            r#"<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="A" junction="-1" length="30"><link/><planView>{geometry}</planView><lanes>
+<laneSection s="0"><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><link/><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection>
+</lanes></road></OpenDRIVE>"#
+        );
+        RoadNetwork::from_str(&xodr, std::path::Path::new("curvature.xodr")).expect("road")
+    }
+
+    /// The shortcut of a straight road against the finite difference, bit for bit, at every
+    /// s of a grid over the road (the ends, 1 cm before the end where the difference turns
+    /// backward, just outside) and for headings that are and are not the road's.
+    #[test]
+    fn the_straight_roads_shortcut_gives_the_difference_bit_for_bit() {
+        let line = |s: f64, x: f64, y: f64, hdg: f64, len: f64| {
+            format!(
+                r#"<geometry s="{s}" x="{x}" y="{y}" hdg="{hdg}" length="{len}"><line/></geometry>"#
+            )
+        };
+        // Three lines of one heading (0.5 rad; the second starts where the first ends,
+        // 10·(cos 0.5, sin 0.5) = (8.7758, 4.7943)), one line of heading 0, a line with a
+        // kink at s = 10 (0.5 then 0.6 rad), a line then an arc of 0.01 /m.
+        let (c, sn) = (0.5_f64.cos(), 0.5_f64.sin());
+        let straight = road(&format!(
+            "{}{}{}",
+            line(0.0, 0.0, 0.0, 0.5, 10.0),
+            line(10.0, 10.0 * c, 10.0 * sn, 0.5, 10.0),
+            line(20.0, 20.0 * c, 20.0 * sn, 0.5, 10.0)
+        ));
+        let zero = road(&line(0.0, 0.0, 0.0, 0.0, 30.0));
+        let kinked = road(&format!(
+            "{}{}",
+            line(0.0, 0.0, 0.0, 0.5, 10.0),
+            line(10.0, 10.0 * c, 10.0 * sn, 0.6, 20.0)
+        ));
+        let arc = road(&format!(
+            r#"{}<geometry s="10" x="{}" y="{}" hdg="0.5" length="20"><arc curvature="0.01"/></geometry>"#,
+            line(0.0, 0.0, 0.0, 0.5, 10.0),
+            10.0 * c,
+            10.0 * sn
+        ));
+        let mut grid: Vec<f64> = (0..=3000).map(|i| f64::from(i) * 0.01).collect();
+        grid.extend([-1e-9, 9.995, 29.995, 29.999, 30.0 + 1e-9, 31.0, f64::NAN]);
+        let mut shortcuts = 0;
+        for (name, net) in [
+            ("straight", &straight),
+            ("zero", &zero),
+            ("kinked", &kinked),
+            ("arc", &arc),
+        ] {
+            let r = &net.roads()[0];
+            for &s in &grid {
+                let own = r.heading(s).unwrap_or(0.5);
+                for h in [own, own + 1e-3, -own, 0.0, -0.0, 0.5, 0.6] {
+                    let fast = curvature_with_heading(r, s, h);
+                    let full = curvature_by_difference(r, s, h);
+                    assert_eq!(
+                        fast.to_bits(),
+                        full.to_bits(),
+                        "{name} at s = {s}, heading {h}: {fast} against {full}"
+                    );
+                    shortcuts += usize::from(
+                        r.plan_view.straight_heading().map(f64::to_bits) == Some(h.to_bits()),
+                    );
+                }
+            }
+        }
+        // The shortcut was taken: on "straight" for the own heading and 0.5 (the same
+        // bits) at every s, on "zero" for the own heading and 0.0 (+0; −0 is not its bits)
+        // except at 31 m and NaN, where the road has no heading and the test's 0.5 stands in.
+        assert_eq!(shortcuts, 4 * grid.len() - 2);
+        // The kink is seen 1 cm before it: (0.6 − 0.5) / 0.01 = 10 /m (rounded), and the arc's
+        // curvature by the difference is its 0.01 /m to the rounding of the headings.
+        let k = kinked.roads()[0].heading(9.995).unwrap();
+        assert!((curvature_with_heading(&kinked.roads()[0], 9.995, k) - 10.0).abs() < 1e-9);
+        let k = arc.roads()[0].heading(15.0).unwrap();
+        assert!((curvature_with_heading(&arc.roads()[0], 15.0, k) - 0.01).abs() < 1e-9);
+        // On the straight road the value is +0.
+        let h = straight.roads()[0].heading(12.0).unwrap();
+        assert_eq!(
+            curvature_with_heading(&straight.roads()[0], 12.0, h).to_bits(),
+            0
+        );
+    }
 }

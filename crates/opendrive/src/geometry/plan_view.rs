@@ -142,12 +142,28 @@ impl Geometry {
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlanView {
     geometries: Vec<Geometry>,
+    /// [`straight_heading`](Self::straight_heading), decided once.
+    straight: Option<Real>,
 }
 
 impl PlanView {
     /// A plan view from geometries sorted by `s` (at least one).
     pub(crate) fn new(geometries: Vec<Geometry>) -> Self {
-        Self { geometries }
+        let straight = straight_heading(&geometries);
+        Self {
+            geometries,
+            straight,
+        }
+    }
+
+    /// The heading of a reference line that is one straight line: every geometry a `<line>`
+    /// (§9.2.1) whose heading, wrapped into (−π, π], has the same bits as the others'. Then
+    /// the heading [`Road::heading`](crate::Road::heading) gives at every s is this value,
+    /// bit for bit (a line's heading does not depend on s), and the reference line's
+    /// curvature is 0 everywhere. `None` for any other plan view.
+    #[inline]
+    pub fn straight_heading(&self) -> Option<Real> {
+        self.straight
     }
 
     /// The geometries in order of s.
@@ -176,9 +192,45 @@ impl PlanView {
     }
 }
 
+/// [`PlanView::straight_heading`] of `geometries`: the wrapped heading every one of them
+/// gives at any s, where all are lines with the same one.
+fn straight_heading(geometries: &[Geometry]) -> Option<Real> {
+    let first = normalize_angle(geometries.first()?.hdg);
+    let same = geometries.iter().all(|g| {
+        matches!(g.kind, GeometryKind::Line) && normalize_angle(g.hdg).to_bits() == first.to_bits()
+    });
+    (same && first.is_finite()).then_some(first)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_straight_heading_only_where_every_piece_is_a_line_of_one_heading() {
+        let line =
+            |s: Real, x: Real, hdg: Real| Geometry::new(s, x, 0.0, hdg, 10.0, GeometryKind::Line);
+        // Two lines at 0.5 rad, one after the other: the heading is 0.5 at every s.
+        let straight = PlanView::new(vec![line(0.0, 0.0, 0.5), line(10.0, 10.0, 0.5)]);
+        assert_eq!(straight.straight_heading(), Some(0.5));
+        assert_eq!(straight.eval_trig(3.0).0.hdg, 0.5);
+        assert_eq!(straight.eval_trig(17.0).0.hdg, 0.5);
+        // A kink (0.5 then 0.6 rad), a line then an arc: not straight.
+        let kinked = PlanView::new(vec![line(0.0, 0.0, 0.5), line(10.0, 10.0, 0.6)]);
+        assert_eq!(kinked.straight_heading(), None);
+        let arc = Geometry::new(
+            10.0,
+            10.0,
+            0.0,
+            0.5,
+            10.0,
+            GeometryKind::Arc(Arc { curvature: 0.0 }),
+        );
+        assert_eq!(
+            PlanView::new(vec![line(0.0, 0.0, 0.5), arc]).straight_heading(),
+            None
+        );
+    }
 
     #[test]
     fn geometry_is_placed_by_its_start_pose() {
