@@ -47,10 +47,11 @@
 //! check).
 //!
 //! An actor placed along or beside one that takes an oncoming member's direction takes it in
-//! turn. Bad input (`Unsatisfiable`): a place (`position`, `lane`, `lateral`, any `at`) of a
-//! member, in a phase of its own, relative to another member (§8.7.18.1: "the behavioral
-//! model assigned to each vehicle defines the actual behavior of the vehicle within the
-//! group", so its lane and place are its model's, as for a lane, position or path action
+//! turn. Bad input (`Unsatisfiable`): a place (`position`, `lane`, `lateral`, any `at`) or a
+//! speed (`speed(same_as/faster_than/slower_than: …)`, any `at`) of a member, in a phase of its
+//! own, relative to another member (§8.7.18.1: "the behavioral model assigned to each vehicle
+//! defines the actual behavior of the vehicle within the group", so its lane, place and speed
+//! among the group's members are its model's, as for a lane, position or path action
 //! creating the group); a relation to the group
 //! as a whole (it has no place, speed or lane of its own; the checker refuses the typed
 //! arguments first). A condition measures a member at run time: `until
@@ -153,18 +154,28 @@ impl Planner<'_> {
                     }));
                     continue;
                 }
-                // A member given a place relative to another member in a phase of its own
-                // (`g.vehicles[0].drive() with: position(20m, behind: g.vehicles[1])`): bad
-                // input, as a lane, position or path action creating the group is (§8.7.18.1:
-                // a member's lane, place and path are its model's).
+                // A member given a place or a speed relative to another member in a phase of
+                // its own (`g.vehicles[0].drive() with: position(20m, behind: g.vehicles[1])`,
+                // `speed(same_as: g.vehicles[1])`): bad input, as a lane, position or path
+                // action creating the group is (§8.7.18.1: a member's behaviour within the
+                // group, its lane, place, path and speed, is its model's). Before, the speed
+                // ran: the other member's speed at the phase start handed to the model as its
+                // desired speed (issue 27).
                 if let Some(m) = m.filter(|m| {
-                    matches!(m.kind, ModKind::Position | ModKind::Lane | ModKind::Lateral)
-                        && self.random_member(&inv.actor)
+                    matches!(
+                        m.kind,
+                        ModKind::Position | ModKind::Lane | ModKind::Lateral | ModKind::Speed
+                    ) && self.random_member(&inv.actor)
                         && self.random_member(x)
                 }) {
+                    let (what, whose) = if m.kind == ModKind::Speed {
+                        ("speed", "speed is")
+                    } else {
+                        ("place", "lane and place are")
+                    };
                     return Err(m.site.err(
                         K::Unsatisfiable,
-                        format!("expected no place of `{}`, a member of random traffic, relative to `{x}`, found `{}(…)`: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\" (§8.7.18.1), so a member's lane and place are its model's, which the seed and the traffic around it decide; relate another actor to the member instead", inv.actor, m.name),
+                        format!("expected no {what} of `{}`, a member of random traffic, relative to `{x}`, found `{}(…)`: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\" (§8.7.18.1), so a member's {whose} its model's, which the seed and the traffic around it decide; relate another actor to the member instead", inv.actor, m.name),
                     ));
                 }
                 // Random traffic relating to a member (of its own group or another's): what

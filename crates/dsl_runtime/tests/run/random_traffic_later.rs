@@ -210,9 +210,10 @@ fn a_group_phase_first_of_some_members_only_places_those_from_the_drawn_member()
 }
 
 #[test]
-fn a_members_own_place_relative_to_another_member_is_bad_input_at_the_modifier() {
+fn a_members_own_place_or_speed_relative_to_another_member_is_bad_input_at_the_modifier() {
     // §8.7.18.1: "the behavioral model assigned to each vehicle defines the actual behavior of
-    // the vehicle within the group": a member's lane and place are its model's, on every seed.
+    // the vehicle within the group": a member's lane, place and speed among the members are
+    // its model's, on every seed. Before, the speed ran (the scenario's comment).
     for (name, what, at) in [
         (
             "err_random_traffic_member_own_place",
@@ -223,6 +224,11 @@ fn a_members_own_place_relative_to_another_member_is_bad_input_at_the_modifier()
             "err_random_traffic_member_own_lane",
             "expected no place of `g.vehicles[0]`, a member of random traffic, relative to `g.vehicles[1]`, found `lane(…)`",
             "12:13",
+        ),
+        (
+            "err_random_traffic_member_own_speed",
+            "expected no speed of `g.vehicles[0]`, a member of random traffic, relative to `g.vehicles[1]`, found `speed(…)`",
+            "23:17",
         ),
     ] {
         crate::along::refused(name, what, at);
@@ -283,5 +289,27 @@ fn a_column_beside_an_actor_or_a_member_keeps_its_formation_in_one_lane() {
                 );
             }
         }
+    }
+}
+
+#[test]
+fn a_members_own_speed_relative_to_an_actor_outside_its_group_runs() {
+    // Not a relation within the group (§8.7.18.1), unlike err_random_traffic_member_own_speed:
+    // the wait on `go` (emitted at 3 s) ends in the step ending at 3.05 s, and the member's
+    // model takes ego's speed then, 10 m/s from the start, as its desired speed.
+    let name = "random_traffic_member_own_speed_of_actor";
+    for seed in 0..4 {
+        let r = run(name, seed, None);
+        let handed: Vec<_> = r
+            .controllers
+            .iter()
+            .filter(|(_, who, note)| who == "g.vehicles[0]" && note.contains("desired speed"))
+            .collect();
+        assert!(
+            handed.len() == 1
+                && (handed[0].0 - 3.05).abs() < 1e-9
+                && handed[0].2.ends_with("desired speed 10 m/s"),
+            "seed {seed}: {handed:?}"
+        );
     }
 }
