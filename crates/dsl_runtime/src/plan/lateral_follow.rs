@@ -56,6 +56,9 @@ impl Planner<'_> {
         let Some((x, dt)) = self.beside_gap(m, target)? else {
             return Ok(());
         };
+        // A member of a group over several lanes keeps its slot in the block: x's t plus d plus
+        // its place across from member 0's (`block_offset`).
+        let dt = dt + self.block_offset(target, t0).unwrap_or(0.0);
         // The actor's own sideways moves contradict the constraint either way.
         let (who, held) = (target.to_string(), (t0, te, m.site.clone()));
         let end = te.unwrap_or(f64::INFINITY);
@@ -77,6 +80,25 @@ impl Planner<'_> {
             .push((who, x.clone(), t0, te, dt, m.site.clone()));
         out.push(self.follow_beside(m, target, x, dt, name));
         Ok(())
+    }
+
+    /// For a member after the first of a group over several lanes (`Planner::across`): its
+    /// place across the road less member 0's at `t` (m, + to the left), its slot in the block.
+    /// A lateral position beside another actor is the group's, member 0's (as a group's
+    /// relation at: all is member 0's, `held_relation`), and every other member keeps its slot
+    /// (docs/dsl.md "Groups"). `None` for any other actor.
+    pub(super) fn block_offset(&self, target: &str, t: f64) -> Option<f64> {
+        let first = self.block_first(target)?;
+        Some(self.t_at(target, t) - self.t_at(first, t))
+    }
+
+    /// Member 0 of the group over several lanes of which `target` is a later member.
+    pub(super) fn block_first(&self, target: &str) -> Option<&String> {
+        self.across
+            .iter()
+            .filter_map(|g| self.groups.get(g))
+            .find(|ms| ms.iter().skip(1).any(|m| m == target))?
+            .first()
     }
 
     /// The engine's following of x at `dt` to its left for `m` of `target`, as the action

@@ -266,24 +266,18 @@ pub(crate) fn place(
                         } else {
                             // A later row: behind the member n places ahead, in its lane.
                             let ahead = &members[i - n];
-                            let rear = all
-                                .iter()
-                                .find(|q| &q.name == ahead)
-                                .map_or(0.0, |q| q.rear);
-                            s.get(ahead)
-                                .map(|(sa, fl)| (sa - rear - GROUP_GAP - p.front, *fl))
+                            s.get(ahead).map(|(sa, fl)| {
+                                (behind_in_formation(all, ahead, *sa, p.front), *fl)
+                            })
                         }
                     }),
                     None => match &p.member_after {
                         _ if p.route.is_some() && !matches!(p.member_after, Some(Some(_))) => {
                             p.route.map(|r| (r.1.max(p.rear), false))
                         }
-                        Some(Some(prev)) => {
-                            let prev_rear =
-                                all.iter().find(|q| &q.name == prev).map_or(0.0, |q| q.rear);
-                            s.get(prev)
-                                .map(|(sp, fl)| (sp - prev_rear - GROUP_GAP - p.front, *fl))
-                        }
+                        Some(Some(prev)) => s
+                            .get(prev)
+                            .map(|(sp, fl)| (behind_in_formation(all, prev, *sp, p.front), *fl)),
                         _ => match find(p, ModKind::Lane)
                             .map(|m| reference(m, &["same_as", "side_of", "left_of", "right_of"]))
                             .transpose()?
@@ -429,12 +423,22 @@ fn beside_others<'r>(
                     .any(|(q, ..)| q.name == n && !done.contains(&n))
             };
             // A column's member after the first keeps to its slot behind the member before it,
-            // in that one's lane (the formation's), once that one is beside x.
-            let prev = match &p.member_after {
-                Some(Some(prev)) if p.across.is_none() => Some(prev.as_str()),
+            // in that one's lane (the formation's), once that one is beside x; a member of a
+            // group over several lanes keeps its slot in the block around member 0, once
+            // member 0 is beside x.
+            let prev = match (&p.member_after, &p.across) {
+                (_, Some((members, _))) => Some(members[0].as_str()),
+                (Some(Some(prev)), None) => Some(prev.as_str()),
                 _ => None,
             };
-            if done.contains(&p.name.as_str()) || waits(x) || prev.is_some_and(waits) {
+            // A block's member waits for every member before it (its row's lanes and the
+            // member ahead of it follow from theirs).
+            let block_waits = p
+                .across
+                .as_ref()
+                .is_some_and(|(members, i)| members[..*i].iter().any(|m| waits(m)));
+            if done.contains(&p.name.as_str()) || waits(x) || prev.is_some_and(waits) || block_waits
+            {
                 continue;
             }
             let (Some(sx), Some(q)) = (out.get(x).copied(), all.iter().find(|q| &q.name == x))
@@ -459,6 +463,36 @@ fn beside_others<'r>(
                 || p.across.is_some()
                 || matches!(p.member_after, Some(Some(_)))
                 || p.route.is_some();
+            // A member of a group over several lanes: the block moved with member 0, its lane
+            // the one its slot takes from member 0's new lane leftwards (`leftwards`, a row at a
+            // time), at member 0's offset in its lane (issue 27: before, every member took x's
+            // t_a in the lane it had before member 0 moved, and two members stood on one
+            // place).
+            // A later row (i ≥ n, n lanes from member 0's new one) drives behind member i − n
+            // in its lane, 10 m between bumpers, as `place` lays the block out.
+            if let (Some((members, i)), Some(first)) = (&p.across, prev.and_then(|q| out.get(q))) {
+                let lanes = leftwards(road, first.lane, first.s);
+                let n = lanes.len();
+                let s = if *i < n {
+                    first.s
+                } else {
+                    let ahead = &members[i - n];
+                    let sa = out.get(ahead).map_or(st.s, |a| a.s);
+                    behind_in_formation(all, ahead, sa, p.front)
+                };
+                out.insert(
+                    p.name.clone(),
+                    Start {
+                        lane: lanes[i % n],
+                        s,
+                        offset: first.offset,
+                        ..st
+                    },
+                );
+                done.push(&p.name);
+                progress = true;
+                continue;
+            }
             let lane = if let Some(l) = prev.and_then(|q| out.get(q)).map(|q| q.lane) {
                 l
             } else if own_lane {
@@ -504,6 +538,13 @@ fn beside_others<'r>(
         ));
     }
     Ok(())
+}
+
+/// The s of a member of a formation whose front is `front` m ahead of its reference point,
+/// behind `ahead` (at `s_ahead`) with [`GROUP_GAP`] between the bumpers.
+fn behind_in_formation(all: &[ToPlace<'_>], ahead: &str, s_ahead: f64, front: f64) -> f64 {
+    let rear = all.iter().find(|q| q.name == ahead).map_or(0.0, |q| q.rear);
+    s_ahead - rear - GROUP_GAP - front
 }
 
 /// Driving lanes from `l0` leftwards at `s` (`l0` first): the lanes a common-route group's

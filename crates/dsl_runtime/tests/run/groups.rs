@@ -768,3 +768,44 @@ fn a_column_replays_a_path_from_each_members_lead_in() {
     let (s, e) = r.phase("do.0");
     assert!(s.abs() < T_TOL && (e - 9.0).abs() < T_TOL, "[{s}, {e}]");
 }
+
+#[test]
+fn a_group_over_several_lanes_beside_another_actor_keeps_its_block() {
+    // group_block_beside.osc, worked in the file: member 0 3 m left of ego (1 m between the
+    // sides, two half widths), member 1 a lane further left at member 0's offset in its lane,
+    // member 2 the second row 14 m behind member 0; each keeps its t less ego's while ego moves.
+    let r = run("group_block_beside", 0, None);
+    for (i, lane, s, y) in [
+        (0, -2, 100.0, -5.75),
+        (1, -1, 100.0, -2.25),
+        (2, -2, 86.0, -5.75),
+    ] {
+        let m = r.at(0.0, &format!("g.vehicles[{i}]"));
+        assert!(
+            m.lane == lane && (m.s - s).abs() < S_TOL && (m.y - y).abs() < S_TOL,
+            "member {i}: {m:?}"
+        );
+    }
+    // ego ends with its left side 0.5 m from lane -3's left border (y = -7 m): y = -7.5 - 1.
+    assert!(
+        (r.at(4.0, "ego").y - -8.5).abs() < 1e-3,
+        "ego moved 0.25 m left"
+    );
+    for (t, objs) in &r.frames {
+        let y = |n: &str| objs.iter().find(|o| o.name == n).map(|o| o.y).unwrap();
+        let ego = y("ego");
+        for (i, d) in [(0, 3.0), (1, 6.5), (2, 3.0)] {
+            let got = y(&format!("g.vehicles[{i}]")) - ego;
+            assert!(
+                (got - d).abs() < S_TOL,
+                "member {i} at {t}: {got} m left of ego"
+            );
+        }
+    }
+    // In a phase that starts at run time only the plan knows each member's slot: not run yet.
+    crate::along::refused(
+        "err_group_block_beside_runtime",
+        "expected lateral(…) beside `ego` of a group over several lanes in a phase the plan knows the start of, found a phase that starts at run time",
+        "23:17",
+    );
+}
