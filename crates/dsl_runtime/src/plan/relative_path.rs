@@ -21,7 +21,9 @@
 //!   route given to `create_route_point` is not read. `world_relative` and `object_relative`
 //!   (frames of x and y, not of s and t) are errors at the argument;
 //! - an odr point names its road and lane (OpenDRIVE ids, not relative); its s is from the
-//!   reference's s along the plan's roads, its t from its lane's centre, heading the road's;
+//!   reference's s along the plan's roads, its t from its lane's centre, heading the road's,
+//!   in OpenDRIVE's axes (s along the road's s-axis, t to its left) also for a reference
+//!   driving against s;
 //!   the road found there must be the one it names (else an error at the path). `transform`
 //!   as for route points (both read the same: the lane is the point's own).
 //!
@@ -134,6 +136,12 @@ impl Planner<'_> {
                 .map(|(x, y, h)| (x, y, h + yaw))
                 .ok_or_else(|| off_road(s))
         };
+        let odr_elsewhere = |i: usize, id: &str, x: f64, here: &str| {
+            site.err(
+                K::Unsatisfiable,
+                format!("expected odr point {i} of the relative path on its road {id}, {x:.2} m along the road's s from `{r}`, found road {here} there"),
+            )
+        };
         let lane_of = |i: usize| match of {
             RelativePoints::Odr(lanes) => lanes.get(i),
             _ => None,
@@ -142,15 +150,25 @@ impl Planner<'_> {
             .iter()
             .enumerate()
             .map(|(i, &(x, y, yaw))| match (lane_of(i), transform.as_str()) {
-                // An odr point's lane is its own, t from that lane's centre.
+                // An odr point's lane is its own, t from that lane's centre, in OpenDRIVE's
+                // axes (s along the road's reference line, t to its left, heading the road's):
+                // for a reference driving against s, x along −u and y to the right of its
+                // travel, as `road_relative` (issue 27: before, along its travel and to its
+                // left, so an oncoming actor's points of smaller s lay behind it).
+                (Some((id, lane)), _) if road.is_against() => {
+                    match road.road_at(s_r - x).0.id.as_str() {
+                        here if here == id => {
+                            on_road(s_r - x, road.lane_center(*lane, s_r - x) - y, yaw)
+                                .map(|(x, y, h)| (x, y, h - std::f64::consts::PI))
+                        }
+                        here => Err(odr_elsewhere(i, id, x, here)),
+                    }
+                }
                 (Some((id, lane)), _) => match road.road_at(s_r + x).0.id.as_str() {
                     here if here == id => {
                         on_road(s_r + x, road.lane_center(*lane, s_r + x) + y, yaw)
                     }
-                    here => Err(site.err(
-                        K::Unsatisfiable,
-                        format!("expected odr point {i} of the relative path on its road {id}, {x:.2} m along the plan's roads from `{r}`, found road {here} there"),
-                    )),
+                    here => Err(odr_elsewhere(i, id, x, here)),
                 },
                 (None, "world_relative") => Ok((x_r + x, y_r + y, yaw)),
                 // The road's coordinates (its s-axis, as yaw relative to the road, §8.9.9): for
@@ -159,7 +177,9 @@ impl Planner<'_> {
                     on_road(s_r - x, t_r - y, yaw).map(|(x, y, h)| (x, y, h - std::f64::consts::PI))
                 }
                 (None, "road_relative") => on_road(s_r + x, t_r + y, yaw),
-                (None, "lane_relative") => on_road(s_r + x, road.lane_center(lane_r, s_r + x) + y, yaw),
+                (None, "lane_relative") => {
+                    on_road(s_r + x, road.lane_center(lane_r, s_r + x) + y, yaw)
+                }
                 _ => {
                     let (sin, cos) = h_r.sin_cos();
                     Ok((x_r + x * cos - y * sin, y_r + x * sin + y * cos, h_r + yaw))

@@ -533,3 +533,26 @@ fn what_has_no_meaning_against_s_is_an_error_at_its_place() {
         "21:41",
     );
 }
+
+#[test]
+fn relative_odr_points_against_s_are_in_the_roads_own_axes() {
+    // opposite_relative_odr.osc, by hand: s from truck's 600 m along the road's s-axis, t from
+    // the named lane's centre to the road's left.
+    let r = run_on("opposite_relative_odr", "straight");
+    assert!((r.at(1.0, "truck").x - 600.0).abs() < S_TOL);
+    for (t, x, y, lane) in [
+        (2.0, 590.0, 1.75, 1),
+        (3.0, 580.0, 1.75, 1),
+        (4.0, 570.0, 3.75, 2),
+        (5.0, 560.0, 5.75, 2),
+    ] {
+        let truck = r.at(t, "truck");
+        assert!(
+            (truck.x - x).abs() < S_TOL && (truck.y - y).abs() < S_TOL && truck.lane == lane,
+            "at {t}: {truck:?}"
+        );
+    }
+    assert!(wrap(r.at(4.0, "truck").h - (4.0f64).atan2(-20.0)).abs() < H_TOL);
+    assert!((r.at(5.0, "truck").speed - 20.0f64.hypot(4.0) / 2.0).abs() < S_TOL);
+    phase_is(&r, "do.1", 1.0, 5.0);
+}
