@@ -169,6 +169,10 @@ pub(super) fn within(found: Neighbour, walked: Real, horizon: Real) -> Option<Ne
     (gap <= horizon).then_some(Neighbour { gap, ..found })
 }
 
+/// The lane look-up [`LaneIndex::enter`] made for an entity's footprint: road, lane, s and the
+/// lane's handle.
+type LookedUp = (RoadHandle, i32, Real, LaneHandle);
+
 /// The per-lane index of one step (module doc).
 #[derive(Debug, Default)]
 pub struct LaneIndex {
@@ -366,16 +370,35 @@ impl LaneIndex {
     /// to traffic and on a road; returns the lane look-up made for its footprint: road, lane,
     /// s and the handle found. With `keep`, its entries and handle of the last step stay where
     /// they are the same (store/lane_kept.rs).
-    fn enter(
+    fn enter(&mut self, net: &Arc<RoadNetwork>, e: &Entity, keep: bool) -> Option<LookedUp> {
+        let i = e.id.index();
+        let was = if keep { self.kept[i] } else { Kept::NONE };
+        // Each row written once: the new one, or nothing kept where `e` is not entered.
+        match self.entered(net, e, was) {
+            Some((now, footprint, looked_up)) => {
+                self.kept[i] = now;
+                self.footprints[i] = Some(footprint);
+                Some(looked_up)
+            }
+            None => {
+                self.kept[i] = Kept::NONE;
+                self.footprints[i] = None;
+                None
+            }
+        }
+    }
+
+    /// The body of [`enter`](Self::enter) given the kept row `was` of the last step (or
+    /// [`Kept::NONE`]): makes `e`'s entries and returns its new kept row, its footprint and
+    /// the look-up, or `None` where it is not entered. Reads neither row of `e`: `enter`
+    /// writes them once with the outcome.
+    #[inline(always)]
+    fn entered(
         &mut self,
         net: &Arc<RoadNetwork>,
         e: &Entity,
-        keep: bool,
-    ) -> Option<(RoadHandle, i32, Real, LaneHandle)> {
-        let i = e.id.index();
-        let was = if keep { self.kept[i] } else { Kept::NONE };
-        self.kept[i] = Kept::NONE;
-        self.footprints[i] = None;
+        was: Kept,
+    ) -> Option<(Kept, Footprint, LookedUp)> {
         if !e.placed || !e.visibility.traffic {
             return None;
         }
@@ -429,15 +452,14 @@ impl LaneIndex {
             now.lanes = plain && borders.is_some();
             now.borders = borders.unwrap_or(0);
         }
-        self.kept[i] = now;
-        self.footprints[i] = Some(Footprint {
+        let footprint = Footprint {
             handle,
             s: rp.s,
             s_range,
             t_range,
             speed_s,
-        });
-        Some((road_handle, rp.lane_id, rp.s, handle))
+        };
+        Some((now, footprint, (road_handle, rp.lane_id, rp.s, handle)))
     }
 
     /// Enters `id` with footprint `s_range` × `t_range` in every lane of `road`'s section
