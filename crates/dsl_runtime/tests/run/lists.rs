@@ -68,3 +68,41 @@ fn an_element_past_its_list_or_of_no_list_run_is_an_error_at_its_place() {
         );
     }
 }
+
+#[test]
+fn a_roads_sections_in_minus_s_on_a_plan_over_two_roads_are_met_from_its_last_road() {
+    // list_negative_roads.osc, by hand: s_negative[0] is road 1's section, s_negative[1] road
+    // 0's; u = 300 m - s from road 1's end.
+    let r = run_on("lists/list_negative_roads", "manual_add_of_geometries0");
+    let (c, s) = (1f64.cos(), 1f64.sin());
+    let (x0, y0) = (100.0 + 100.0 * s, 100.0 * (1.0 - c));
+    for (actor, t, road, x, y) in [
+        (
+            "bike",
+            0.0,
+            Some("1"),
+            x0 + 50.0 * c - 1.5 * s,
+            y0 + 50.0 * s + 1.5 * c,
+        ),
+        (
+            "bike",
+            4.0,
+            Some("1"),
+            x0 + 10.0 * c - 1.5 * s,
+            y0 + 10.0 * s + 1.5 * c,
+        ),
+        // At road 0's end, which is road 1's start: either road's id.
+        ("van", 0.0, None, x0 - 1.5 * s, y0 + 1.5 * c),
+    ] {
+        let p = r.at(t, actor);
+        assert!(
+            (p.x - x).abs() < S_TOL
+                && (p.y - y).abs() < S_TOL
+                && p.lane == 1
+                && road.is_none_or(|id| p.road == id)
+                && (p.h.rem_euclid(std::f64::consts::TAU) - (1.0 + std::f64::consts::PI)).abs()
+                    < 1e-9,
+            "{actor} at {t} s: {p:?}"
+        );
+    }
+}
