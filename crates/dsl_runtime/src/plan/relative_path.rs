@@ -17,8 +17,9 @@
 //! as 1.x places a RelativeRoadPosition or a RelativeLanePosition against its entity:
 //! - a route point's s and t are road coordinates from the reference's at the action's start,
 //!   placed as a pose_3d point (x = s, y = t, yaw 0) under `road_relative` (the default for
-//!   these points) or `lane_relative` (t from the centre of the reference's lane) below; the
-//!   route given to `create_route_point` is not read. `world_relative` and `object_relative`
+//!   these points) or `lane_relative` (t from the centre of the reference's lane) below, along
+//!   the plan's roads: the route given to `create_route_point` is one the runtime chooses (a
+//!   route the map makes is refused at the argument, `resolve::position`). `world_relative` and `object_relative`
 //!   (frames of x and y, not of s and t) are errors at the argument;
 //! - an odr point names its road and lane (OpenDRIVE ids, not relative); its s is from the
 //!   reference's s along the plan's roads, its t from its lane's centre, heading the road's,

@@ -485,7 +485,10 @@ fn road_points(
             ));
         };
         match place(owner, p) {
-            Ok(Place::Route { s, t, .. }) => points.push((s, t, 0.0)),
+            Ok(Place::Route { s, t, .. }) => {
+                relative_route(owner, p, i, path)?;
+                points.push((s, t, 0.0));
+            }
             Ok(Place::Lane { road, lane, s, t }) => {
                 points.push((s, t, 0.0));
                 lanes.push((road, lane));
@@ -513,6 +516,40 @@ fn road_points(
         }
     };
     Ok((points, of))
+}
+
+/// Checks the `route` of `map.create_route_point(route, s, t)`, point `i` of the relative path
+/// or trajectory `path` (the call `p`): a relative point's s and t are road coordinates from
+/// the reference's, along the plan's roads (`crate::plan`'s `relative_path`), so its route is
+/// a route the runtime chooses (a `route` field nothing defines: the plan's roads); a route the
+/// map makes (an odr point, `create_route`, a road of the map's lists, …) would be measured
+/// along nowhere, an error at the argument (issue 27: before, it was not read).
+fn relative_route(ev: &Eval<'_>, p: &Expr, i: usize, path: &str) -> Result<(), Error> {
+    let Some((_, args)) = map_call(ev, p) else {
+        return Ok(());
+    };
+    let params = ["route", "s", "t"].map(String::from);
+    let bound = bind(args, &params);
+    let Some(r) = bound_to(&bound, "route") else {
+        return Ok(());
+    };
+    match route_of(ev, r)? {
+        Route::Free {
+            map_route: None, ..
+        } => Ok(()),
+        other => {
+            let what = match other {
+                Route::Free { field, .. } => format!("`{field}`, a road of the map's lists"),
+                Route::Crossing { field, .. } => format!("`{field}`, a crossing"),
+                Route::Lane { .. } => "a route the map makes".to_string(),
+            };
+            Err(ev.files.err(
+                K::Value,
+                r.span,
+                format!("expected a route the runtime chooses (a `route` field nothing defines: the plan's roads) as the `route` of create_route_point(route, s, t), point {i} of the relative `{path}`, found {what}: a relative route point's s and t are road coordinates from the reference's along the plan's roads, not along its route (give the point as map.create_odr_point(road_id, lane_id, s, t) to name its road)"),
+            ))
+        }
+    }
 }
 
 /// Whether a path's `interpolation` argument `e` is `smooth` (`straight_line`, or none given:

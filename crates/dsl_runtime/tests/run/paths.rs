@@ -142,4 +142,12 @@ fn relative_route_points_in_another_frame_or_missing_are_errors_at_their_place()
             && e.ends_with("err_relative_st_missing.osc:15:35"),
         "{e}"
     );
+    // A route the map makes in create_route_point: a relative point's s and t are along the
+    // plan's roads from the reference's, not along it (issue 27: it was not read).
+    let e = crate::support::error("paths/err_relative_st_route");
+    assert!(
+        e.starts_with("expected a route the runtime chooses (a `route` field nothing defines: the plan's roads) as the `route` of create_route_point(route, s, t), point 0 of the relative `rp`, found a route the map makes")
+            && e.ends_with("err_relative_st_route.osc:11:51"),
+        "{e}"
+    );
 }
