@@ -284,13 +284,29 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
             }
             if let (ModKind::Along, Some(a)) = (m.kind, &m.along) {
                 route::on_plan_road(road, a)?;
-                match route::map_route(road, a, &p.route_roads)? {
+                match route::map_route(road, a, &p.route_roads, &p.route_lanes)? {
                     Some((field, route::Bound::Road(lane, span, why))) => {
                         p.route_roads.entry(field).or_insert((lane, span, why));
                     }
                     // A lane of a lane section: bound as a lane field the map binds, within
                     // its section.
                     Some((field, route::Bound::Lane(lane, id, span, why))) => {
+                        // A compound lane's element binds the compound lane to its lane
+                        // too: `cl` alone is the lane its elements are made of.
+                        if let Route::Free {
+                            map_route:
+                                Some(crate::resolve::MapRoute {
+                                    compound: true,
+                                    road: crate::resolve::MapRoad::Field(cl),
+                                    ..
+                                }),
+                            ..
+                        } = &a.route
+                        {
+                            p.route_lanes
+                                .entry(cl.clone())
+                                .or_insert((lane, why.clone()));
+                        }
                         p.route_lanes
                             .entry(field.clone())
                             .or_insert((lane, why.clone()));

@@ -240,6 +240,7 @@ pub(crate) fn map_route(
     road: &PlanRoad<'_>,
     along: &Along,
     bound: &HashMap<String, (i32, (f64, f64), String)>,
+    lanes: &HashMap<String, (i32, String)>,
 ) -> Result<Option<(String, Bound)>, Error> {
     let Route::Free {
         field,
@@ -337,6 +338,36 @@ pub(crate) fn map_route(
                 }
             }
         }
+    }
+    // A compound lane's lanes: its own lane (bound, else lane(1)'s, where an actor along it
+    // without a lane of its own drives) in each lane section in order along s, while the
+    // section has it as a driving lane (the plan's roads keep lane ids).
+    if let (true, MapRoad::Field(f), Some(j)) = (which.compound, &which.road, which.lane) {
+        let (lane, how) = match lanes.get(f) {
+            Some((l, why)) => (*l, why.clone()),
+            None => (
+                road.driving_lanes(span.0).first().copied().unwrap_or(-1),
+                "lane(1)'s where the plan's roads start, where an actor along it without a lane of its own drives".to_string(),
+            ),
+        };
+        let own: Vec<_> = sections
+            .iter()
+            .take_while(|(_, _, ps)| road.driving_lanes(0.5 * (ps.0 + ps.1)).contains(&lane))
+            .collect();
+        let (id, k, ps) = own.get(j).ok_or_else(|| {
+            past(
+                own.len(),
+                &format!("the lanes along `{f}` (its lane {lane}, {how}, in each lane section of the plan's roads in order along s while the section has it)"),
+            )
+        })?;
+        let why = format!(
+            "lane {lane} of the lane section of road {id} from s = {:.2} m, lane {j} along `{f}` ({how})",
+            net.road(id).map_or(0.0, |r| r.lane_sections[*k].s)
+        );
+        return Ok(Some((
+            field.clone(),
+            Bound::Lane(lane, id.clone(), *ps, why),
+        )));
     }
     if which.against {
         sections.reverse();

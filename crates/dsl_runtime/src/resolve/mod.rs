@@ -54,7 +54,7 @@ pub(crate) use modifier::{At, ModKind, Modifier};
 pub(crate) use objects::{ActorData, ActorKind, Object};
 pub(crate) use overlap::{Overlap, OverlapArg};
 pub(crate) use position::{Place, PlaceArg, RelativePoints};
-pub(crate) use route::{one_way, Along, LaneField, MapRoad, Route, Waypoint};
+pub(crate) use route::{one_way, Along, LaneField, MapRoad, MapRoute, Route, Waypoint};
 pub(crate) use shape::ShapeKind;
 pub(crate) use tree::{Invoke, Kind, Phase};
 pub(crate) use value::{arg, Arg, Draws, Val};

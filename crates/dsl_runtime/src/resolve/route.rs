@@ -164,8 +164,13 @@ pub(crate) struct MapRoute {
     pub section: Option<usize>,
     /// The section flows in -s (`s_negative`): driven against s.
     pub against: bool,
-    /// `lanes[i]`: the section's lane i from the centre out.
+    /// `lanes[i]`: the section's lane i from the centre out; of a compound lane
+    /// (`compound`), its lane i along it.
     pub lane: Option<usize>,
+    /// `cl.lanes[i]` of a compound lane nothing defines: the lanes it is made of, one per lane
+    /// section of the plan's roads in order along s, each the compound lane's own lane there
+    /// (`crate::plan`'s `route::map_route`).
+    pub compound: bool,
 }
 
 /// The two points of a route the map makes across a crossing (`create_route([a, b],
@@ -1017,6 +1022,7 @@ fn map_road_route(
             section: None,
             against: false,
             lane: None,
+            compound: false,
         }),
     })
 }
@@ -1084,6 +1090,7 @@ fn list_element(
                     section,
                     against,
                     lane,
+                    compound: false,
                 }),
             }
         };
@@ -1132,13 +1139,15 @@ fn list_element(
                             section: Some(k),
                             against,
                             lane: None,
+                            ..
                         }),
                     ..
                 },
             ) => Ok(part(road, Some(k), Some(i), against)),
-            // A compound lane nothing defines: its lanes as a lane section's (oscsim's
-            // choice, docs/dsl.md "Routes": the standard orders them nowhere the runtime
-            // could bind).
+            // A compound lane nothing defines: the lanes it is made of, its own lane in each
+            // lane section of the plan's roads in order along s (`crate::plan`'s
+            // `route::map_route`; issue 27: before, the lanes side by side of the first
+            // section, of which `cl` alone is one).
             (
                 "lanes",
                 Route::Free {
@@ -1146,7 +1155,17 @@ fn list_element(
                     one_lane: true,
                     map_route: None,
                 },
-            ) => Ok(part(MapRoad::Field(f), None, Some(i), false)),
+            ) => Ok(Route::Free {
+                field: field.clone(),
+                one_lane: true,
+                map_route: Some(MapRoute {
+                    road: MapRoad::Field(f),
+                    section: None,
+                    against: false,
+                    lane: Some(i),
+                    compound: true,
+                }),
+            }),
             (_, Route::Free { one_lane: true, .. }) => Err(wrong("a lane or compound lane element")),
             (_, Route::Free { .. }) => Err(wrong("an element of another kind")),
             (_, Route::Lane { .. }) => Err(wrong("a route through points (its elements are its points: give them as routes of their own)")),

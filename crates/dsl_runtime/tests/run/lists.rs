@@ -17,7 +17,7 @@ fn the_elements_of_the_librarys_lists_are_routes_along_their_part_of_the_road() 
         ("bus", 100.0, -1.75, -1),
         ("car", 200.0, -5.25, -2),
         ("truck", 120.0, -8.75, -3),
-        ("van", 80.0, -5.25, -2),
+        ("van", 80.0, -8.75, -3),
     ] {
         for (t, x) in [(0.0, x0), (2.5, x0 + 25.0), (5.0, x0 + 50.0)] {
             let p = r.at(t, actor);
@@ -56,7 +56,7 @@ fn an_element_past_its_list_or_of_no_list_run_is_an_error_at_its_place() {
         ("err_list_sidewalk", "sidewalk", "9:9", "expected a driving lane as `rd.s_positive[0].lanes[2]`, found lane -3"),
         ("err_list_section_end", "lane_drop", "10:9", "expected `npc` on route `rd.s_positive[0]` (the lane section of road 1 from s = 0.00 m"),
         ("err_list_negative", "lane_drop", "9:9", "expected an index below 2 into the lane sections in -s of `rd`"),
-        ("err_list_compound_lane", "lane_drop", "9:9", "expected an index below 3 into the lanes of the lane section of road 1 from s = 0.00 m, `cl`"),
+        ("err_list_compound_lane", "lane_drop", "10:9", "expected an index below 1 into the lanes along `cl` (its lane -3"),
     ] {
         let e = error_on(&format!("lists/{name}"), road);
         assert!(
@@ -104,5 +104,21 @@ fn a_roads_sections_in_minus_s_on_a_plan_over_two_roads_are_met_from_its_last_ro
                     < 1e-9,
             "{actor} at {t} s: {p:?}"
         );
+    }
+}
+
+#[test]
+fn a_compound_lane_alone_and_its_lanes_select_the_same_lane() {
+    // list_compound_lane.osc, by hand: cl is lane -2 (lane(1) at the start of lane_add.xodr);
+    // cl.lanes[0] and cl.lanes[1] are lane -2 of sections 0 and 1.
+    let r = run_on("lists/list_compound_lane", "lane_add");
+    for (actor, x0) in [("ego", 50.0), ("van", 120.0), ("bus", 300.0)] {
+        for (t, x) in [(0.0, x0), (2.5, x0 + 25.0), (5.0, x0 + 50.0)] {
+            let p = r.at(t, actor);
+            assert!(
+                (p.x - x).abs() < S_TOL && (p.y - -5.25).abs() < S_TOL && p.lane == -2,
+                "{actor} at {t} s: {p:?}"
+            );
+        }
     }
 }
