@@ -20,7 +20,7 @@
 //! | `keep_speed()` | v0 = the speed the member has at the phase start (a SpeedAction to its own speed) | by its duration or `until` |
 //! | `remain_stationary()` | v0 = 0: the model brakes at its comfortable deceleration b to a stop and stands | by its duration or `until` |
 //! | `change_lane(n, side [, reference: x])` | a LaneChangeAction to the lane n to the side of its own (x's) lane in its direction of travel, which `mobil` makes its next lane change with its own lateral shape; no drivable lane there driven the same way: the member keeps its lane (the engine logs it) | at once, or by the action's `duration:` |
-//! | `lane(n [, from: left])` (at: all, end) beside an action | as `keep_lane()`, the member changed to the lane so numbered in its direction of travel where it is when the phase starts (the engine's LaneChangeAction to oscsim's `LaneChangeTarget::Numbered` on the member, sinusoidal at 1 m/s peak) instead of its own lane's centre; the lane must be there all along the plan's roads in each direction a member drives; `lane(same_as/left_of/right_of/side_of: x)`: the members driving x's way changed to x's lane or the one n beside it (a RelativeTargetLane on x), the others kept in their lanes | by its duration or `until` |
+//! | `lane(n [, from: left])` (at: all, end) beside an action | the lane so numbered in the member's direction of travel where it is when the phase starts (oscsim's `LaneChangeTarget::Numbered` on the member): for `mobil` its mandatory lane over the phase (oscsim's `LateralAction::MandatoryLane`, released at the phase end: the model changes lane by lane into gaps MOBIL's safety criterion accepts and keeps it, engine controller/mobil.rs; no gap before the phase end: the member keeps its lane), for the IDM (no lateral domain) the engine's LaneChangeAction to it, sinusoidal at 1 m/s peak, which waits for no gap; the lane must be there all along the plan's roads in each direction a member drives; `lane(same_as/left_of/right_of/side_of: x)`: the members driving x's way so to x's lane or the one n beside it (a RelativeTargetLane on x), the others kept in their lanes as by `keep_lane()` | by its duration or `until` |
 //! | `follow_lane()`, `keep_lane()` beside an action | the model's lateral domain taken back over the phase (ActivateControllerAction, lateral false): the default controller keeps the member in the lane it is in, brought to its centre (a LaneChangeAction to that lane: a change under way ends there); handed back at the phase end | by its duration or `until` |
 //!
 //! Where the road's lanes are numbered otherwise along it (a lane added or dropped at a lane
@@ -32,7 +32,7 @@
 //! driven it there. So the plan checks only that lane n is there all along the plan's roads
 //! in each direction a member drives (else an error at the modifier, `Unsatisfiable`), and
 //! the engine reads the lane's id at the member's road, side and s as the phase starts. Over
-//! the phase the member keeps that lane (the default controller follows its id), also where
+//! the phase the member keeps that lane (its model, or the default controller, follows its id), also where
 //! the numbering changes under it later: oscsim's choice, as the equal-numbering case keeps
 //! the id it changed to.
 //!
@@ -342,9 +342,10 @@ fn refused(g: &str, m: &Modifier) -> Error {
 impl Planner<'_> {
     /// Plans action `inv` (phase `p`, starting at `t0`) of random traffic `inv.actor` after
     /// its creation into `out` (module doc): per member a SpeedAction (a step) or a
-    /// LaneChangeAction, which the engine hands to the member's model, or, to keep the lanes,
-    /// the model's lateral domain taken back at the phase start and given back at its end
-    /// (`after`). Returns the phase's end when the action sets it.
+    /// LaneChangeAction, which the engine hands to the member's model, a lane for its model
+    /// to reach and keep (a mandatory lane, released at the phase end: `after`), or, to keep
+    /// the lanes, the model's lateral domain taken back at the phase start and given back at
+    /// its end. Returns the phase's end when the action sets it.
     pub(super) fn plan_random_traffic_action(
         &self,
         p: &Phase,
@@ -418,26 +419,50 @@ impl Planner<'_> {
         for (i, m) in members.iter().enumerate() {
             let name = |what: &str| format!("{}/{m}/{}:{what}", p.path, i + 1);
             // The lane it is in, at its centre (a change the model was making ends there), or
-            // lane n of its direction.
+            // lane n of its direction, or x's lane or the one beside it.
             let back = self.entities[self.index[m]].against;
-            let kept = match (&numbered, &beside) {
-                (_, Some((x, by, x_back))) if *x_back == back => Some(lane_change_to(x, *by)),
-                (Some((n, from_left)), _) => {
-                    Some(PrivateAction::Lateral(LateralAction::LaneChange {
-                        target_lane_offset: None,
-                        dynamics: default_dynamics(),
-                        target: LaneChangeTarget::Numbered {
-                            entity_ref: m.clone(),
-                            lane: *n,
-                            from_left: *from_left,
-                        },
-                    }))
-                }
-                _ if hold_lane && !idm => Some(lane_change_to(m, 0)),
+            let target = match (&numbered, &beside) {
+                (_, Some((x, by, x_back))) if *x_back == back => Some(LaneChangeTarget::Relative {
+                    entity_ref: x.clone(),
+                    value: *by,
+                }),
+                (Some((n, from_left)), _) => Some(LaneChangeTarget::Numbered {
+                    entity_ref: m.clone(),
+                    lane: *n,
+                    from_left: *from_left,
+                }),
                 _ => None,
             };
+            // `mobil` keeps its lateral domain: the lane is its mandatory lane, reached lane by
+            // lane into gaps its safety criterion accepts and kept, released at the phase end.
+            let mandatory = target.is_some() && !idm;
+            if let (Some(target), true) = (&target, mandatory) {
+                let lane = |target| PrivateAction::Lateral(LateralAction::MandatoryLane { target });
+                out.push(Planned::with_phase(
+                    m,
+                    name("lane"),
+                    lane(Some(target.clone())),
+                    &p.site,
+                ));
+                after.push(Planned::with_phase(
+                    m,
+                    name("lane_end"),
+                    lane(None),
+                    &p.site,
+                ));
+            }
+            let kept = match target {
+                _ if mandatory => None,
+                Some(target) => Some(PrivateAction::Lateral(LateralAction::LaneChange {
+                    target_lane_offset: None,
+                    dynamics: default_dynamics(),
+                    target,
+                })),
+                None if hold_lane && !idm => Some(lane_change_to(m, 0)),
+                None => None,
+            };
             // The IDM holds no lateral domain: a member it drives keeps its lane already.
-            if hold_lane && !idm {
+            if hold_lane && !idm && !mandatory {
                 out.push(Planned::with_phase(
                     m,
                     name("keep_lane"),

@@ -612,6 +612,12 @@ impl Host<'_> {
                     LateralAction::FollowLanes { entity_ref, value } => {
                         lane_follow::start(self.world, (entity_ref, *value), pos)
                     }
+                    // Only a driver model takes it (handed over above).
+                    LateralAction::MandatoryLane { .. } => Err(Error::at(
+                        "a driver model holding the lateral domain (mobil) to take the mandatory lane",
+                        "none",
+                        pos,
+                    )),
                     _ => Err(Error::unsupported("this LateralAction", pos)),
                 }
             }

@@ -85,6 +85,10 @@ pub enum Strategy {
     Speed(Real),
     /// A LaneChangeAction: the lane of the entity's road it asks for.
     Lane(i32),
+    /// oscsim's mandatory lane (`scenario::LateralAction::MandatoryLane`): the lane of the
+    /// entity's road to reach, each change only into a gap the model's safety criterion
+    /// accepts, and to keep until released (`None`).
+    MandatoryLane(Option<i32>),
 }
 
 /// A controller of one entity's motion (OpenSCENARIO 1.3 §6.6): each step it gets the world

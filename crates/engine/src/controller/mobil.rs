@@ -24,6 +24,27 @@
 //! and below [`MIN_CHANGE_SPEED`] (a change at rest would be a sideways jump). A
 //! LaneChangeAction of the scenario on the lateral domain is carried out the same way, to the
 //! lane it names.
+//!
+//! **A mandatory lane** (oscsim's `scenario::LateralAction::MandatoryLane`, which the DSL
+//! runtime gives the members of random traffic for `lane(…)` at: all, ASAM OpenSCENARIO DSL
+//! 2.1 §8.7.18.1) is a separate path that ordinary MOBIL traffic never takes: MOBIL with its
+//! incentive replaced by "must reach lane L" and its safety criterion kept (Kesting, Treiber,
+//! Helbing, "General lane-changing model MOBIL for car-following models", TRR 1999 (2007),
+//! eq. (2): the new follower's ã_n ≥ −b_safe; here, as for the discretionary changes, the
+//! changer's own ã_c ≥ −b_safe too and no box alongside). While it holds, the controller
+//! makes no change of its own: each step with no lateral transition under way, at
+//! [`MIN_CHANGE_SPEED`] or more (no [`MIN_CHANGE_INTERVAL`]: the change is owed), it changes
+//! one lane towards L when the road mark lets it cross and the gap passes that test, so a
+//! change two lanes over is two changes, each into an accepted gap. While the gap fails, it
+//! waits in its lane; and when what blocks it in the lane beside (a box alongside its own
+//! length, else the leader there too close for ã_c) is not slower than it, it falls back at
+//! its comfortable deceleration b (its command is at most −b), so that a vehicle level with it
+//! at its own speed, or one just ahead that it would never pass, leaves a gap behind (SUMO's
+//! LC2013 slows so for a strategic change); one that is slower it passes at its own speed, and
+//! a new follower too close it waits out. During each change its IDM follows the nearer of the
+//! leaders in the lane it leaves and the lane it enters ([`ControllerView::leader`]). Reached,
+//! L is kept until an action releases it; released before, the entity keeps the lane it is
+//! in and the controller's event record says that L was not reached.
 
 use opendrive::Real;
 
@@ -52,6 +73,10 @@ pub struct MobilController {
     /// The lanes beside as the road decides them, kept over the stretch they hold
     /// (controller/lane_beside.rs).
     kept: KeptBeside,
+    /// The mandatory lane held (module doc), if any.
+    mandatory: Option<i32>,
+    /// The entity has been in the mandatory lane since it was asked for.
+    reached: bool,
 }
 
 impl MobilController {
@@ -63,6 +88,8 @@ impl MobilController {
             pending: None,
             last_change: Real::NEG_INFINITY,
             kept: KeptBeside::default(),
+            mandatory: None,
+            reached: false,
         }
     }
 
@@ -84,10 +111,7 @@ impl MobilController {
         let p = &self.idm.params;
         let (v, len) = (own.v, own.len);
         let lane_leader = view.leader_beside(b);
-        // A red light ahead (run option stop_at_red_lights) stands across both lanes: no
-        // incentive to change for it.
-        let own_after =
-            p.acceleration_with_free(own.free, v, nearer(lane_leader.map(to), own.light));
+        let own_after = own.after(p, lane_leader);
         if !self.mobil.safe_for_changer(own_after) {
             return None;
         }
@@ -137,6 +161,9 @@ impl MobilController {
 
     /// The lane to change to now, if any.
     fn decide(&mut self, view: &ControllerView<'_>, own: &mut Own) -> Option<i32> {
+        if let Some(target) = self.mandatory {
+            return self.decide_mandatory(view, own, target);
+        }
         match self.may_decide(view) {
             Err(pending) => return pending,
             Ok(false) => return None,
@@ -154,6 +181,71 @@ impl MobilController {
             }
         }
         best.map(|(_, lane)| lane)
+    }
+}
+
+impl MobilController {
+    /// The step of a mandatory lane `target` (module doc): the lane beside to change to now,
+    /// one lane towards `target`, when the gap passes MOBIL's safety criterion; else none,
+    /// with `own`'s command lowered to −b where what blocks the change is not slower.
+    fn decide_mandatory(
+        &mut self,
+        view: &ControllerView<'_>,
+        own: &mut Own,
+        target: i32,
+    ) -> Option<i32> {
+        let e = view.input();
+        let track = e.track.as_ref()?;
+        if track.lane_id == target {
+            self.reached = true;
+            return None;
+        }
+        if track.blend_from.is_some() || e.lateral_action || e.speed < MIN_CHANGE_SPEED {
+            return None;
+        }
+        let toward = (target - track.lane_id).signum();
+        let b = view
+            .beside_kept(&mut self.kept.0)
+            .into_iter()
+            .flatten()
+            .find(|b| (b.lane - track.lane_id).signum() == toward)?;
+        if !b.crossing_permitted {
+            return None;
+        }
+        let p = &self.idm.params;
+        // The speed of what blocks the change ahead or alongside, if anything does.
+        let blocker = match view.fastest_alongside(&b) {
+            Some(v) => Some(v),
+            None => {
+                let lane_leader = view.leader_beside(&b);
+                if self.mobil.safe_for_changer(own.after(p, lane_leader)) {
+                    let new_follower = view.follower_beside(&b).map(|n| {
+                        Weighed::new_follower(p, n, own.v, own.len, lane_leader).change(p)
+                    });
+                    if new_follower.map_or(true, |n| self.mobil.safe_for_follower(n.after)) {
+                        return Some(b.lane);
+                    }
+                    // A new follower too close: waited out.
+                    None
+                } else {
+                    lane_leader.map(|l| l.speed)
+                }
+            }
+        };
+        if blocker.is_some_and(|vb| vb >= own.v) {
+            own.a_c = own.a_c.min(-p.comfortable_deceleration);
+        }
+        None
+    }
+
+    /// The event note of mandatory lane `lane` asked for (`None`: the one held released).
+    fn mandatory_note(&self, lane: Option<i32>) -> String {
+        match (lane, self.mandatory) {
+            (Some(l), _) => format!("mandatory lane {l}: changes lane by lane into gaps MOBIL's safety criterion accepts, then keeps it"),
+            (None, Some(l)) if self.reached => format!("mandatory lane {l} released, reached"),
+            (None, Some(l)) => format!("mandatory lane {l} released, not reached: no gap MOBIL's safety criterion accepted before (the entity keeps the lane it is in)"),
+            (None, None) => "no mandatory lane to release".to_owned(),
+        }
     }
 }
 
@@ -203,6 +295,13 @@ fn to(g: Gap) -> Leader {
 }
 
 impl Own {
+    /// ã_c: the changer's IDM acceleration behind `lane_leader`, the leader in the lane beside
+    /// (or the red light ahead, run option stop_at_red_lights: it stands across both lanes, no
+    /// incentive to change for it).
+    fn after(&self, p: &IdmParameters, lane_leader: Option<Gap>) -> Real {
+        p.acceleration_with_free(self.free, self.v, nearer(lane_leader.map(to), self.light))
+    }
+
     /// The old follower o (module doc), searched once a step: behind the changer now, behind
     /// the changer's leader at gap g_o + length + g_c after the change.
     fn old_follower(&mut self, p: &IdmParameters, view: &ControllerView<'_>) -> Option<Weighed> {
@@ -338,6 +437,12 @@ impl Controller for MobilController {
             Strategy::Lane(lane) => {
                 self.pending = Some(lane);
                 Some(format!("lane change to lane {lane}"))
+            }
+            Strategy::MandatoryLane(lane) => {
+                let note = self.mandatory_note(lane);
+                self.mandatory = lane;
+                self.reached = false;
+                Some(note)
             }
             other => self.idm.on_strategy(other),
         }

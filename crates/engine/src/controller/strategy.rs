@@ -33,7 +33,8 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
             match l {
                 LateralAction::LaneChange { .. }
                 | LateralAction::LaneChangeAt(_)
-                | LateralAction::FollowLanes { .. } => "LaneChangeAction",
+                | LateralAction::FollowLanes { .. }
+                | LateralAction::MandatoryLane { .. } => "LaneChangeAction",
                 LateralAction::LaneOffset { .. } | LateralAction::OffsetInWidth(_) => {
                     "LaneOffsetAction"
                 }
@@ -87,6 +88,12 @@ fn strategy(
         }
         PrivateAction::Lateral(LateralAction::LaneChangeAt(at)) => {
             Some(Strategy::Lane(target_lane(world, &at.target, origin.pos)?))
+        }
+        PrivateAction::Lateral(LateralAction::MandatoryLane { target }) => {
+            Some(Strategy::MandatoryLane(match target {
+                Some(t) => Some(target_lane(world, t, origin.pos)?),
+                None => None,
+            }))
         }
         _ => None,
     })
@@ -146,11 +153,13 @@ pub(crate) fn hand_over(
     // A lane no model could change into: none of the road's there, not drivable, or driven the
     // other way (lane ids count across the centre line): the entity keeps its lane.
     let no_lane = match s {
-        Some(Strategy::Lane(lane)) => !drivable_same_way(world, actor, lane),
+        Some(Strategy::Lane(lane) | Strategy::MandatoryLane(Some(lane))) => {
+            !drivable_same_way(world, actor, lane)
+        }
         _ => false,
     };
     let taken = match (s, controllers.instance_mut(actor.index(), slot)) {
-        (Some(Strategy::Lane(lane)), Some(_)) if no_lane => Some(format!(
+        (Some(Strategy::Lane(lane) | Strategy::MandatoryLane(Some(lane))), Some(_)) if no_lane => Some(format!(
             "ignored: no drivable lane {lane} driven the same way beside the entity, it keeps its lane"
         )),
         (Some(s), Some(instance)) => instance.strategy(s),

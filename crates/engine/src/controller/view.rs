@@ -356,6 +356,17 @@ impl<'a> ControllerView<'a> {
         })
     }
 
+    /// The largest speed along the entity's direction of travel (m/s) of the entities whose
+    /// boxes overlap the entity's own length in the lane beside (those
+    /// [`occupied_beside`](Self::occupied_beside) finds); `None` when there is none.
+    pub(crate) fn fastest_alongside(&self, b: &Beside) -> Option<Real> {
+        let me = self.index.footprint(self.input.id)?;
+        self.index
+            .overlapping(b.at.0, me.s_range, self.input.id, self.hint(b.lane, 2))
+            .filter_map(|id| self.index.footprint(id).map(|f| f.speed_along(b.at.1)))
+            .reduce(Real::max)
+    }
+
     /// The nearest entity ahead in the lane beside, from the entity's front bumper.
     pub(crate) fn leader_beside(&self, b: &Beside) -> Option<Gap> {
         self.ahead_on(b.lane, b.at)

@@ -175,6 +175,9 @@ fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
                 target: scenario::LaneChangeTarget::Numbered { entity_ref, .. },
                 ..
             } => Some((entity_ref, "a lane numbered across an entity's road")),
+            LateralAction::MandatoryLane {
+                target: Some(scenario::LaneChangeTarget::Relative { entity_ref, .. }),
+            } => Some((entity_ref, "a RelativeTargetLane")),
             LateralAction::LaneOffset {
                 target: scenario::LaneOffsetTarget::Relative { entity_ref, .. },
                 ..

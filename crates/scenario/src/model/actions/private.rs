@@ -622,6 +622,18 @@ pub enum LateralAction {
         /// Lanes to the left of the entity's (0: its lane).
         value: i32,
     },
+    /// oscsim's mandatory lane of a driver model, an action with no XML form (the DSL runtime
+    /// writes it for ASAM OpenSCENARIO DSL 2.1 `lane(…)` at: all beside an action of a
+    /// `random_traffic_vehicle_group` after its creation, §8.7.18.1: "the behavioral model
+    /// assigned to each vehicle defines the actual behavior of the vehicle within the group"):
+    /// handed to the user controller holding the entity's lateral domain (the `mobil` model),
+    /// which changes lane by lane to the lane `target` names when the action starts, each
+    /// change only into a gap MOBIL's safety criterion accepts, and keeps that lane, making no
+    /// change of its own, until an action with `None` releases it. Completes at once.
+    MandatoryLane {
+        /// The lane to reach and keep (`None`: release the one held).
+        target: Option<LaneChangeTarget>,
+    },
 }
 
 /// What oscsim's offset change in the lane's width ([`LateralAction::OffsetInWidth`]) aims at
