@@ -3,8 +3,11 @@
 //! does not know (ASAM OpenSCENARIO DSL 2.1 §8.9 `at: all`: "the constraint holds throughout
 //! the phase"), such as a `yaw` measured in the world (`check_heading`). The check runs when
 //! the action starts, as any state check (`check::start`), and again in every step of stage 2
-//! after it, on the actor as the stage finds it (the pose the last step's moves gave it), until
-//! the action is stopped: its phase's Act ending stops it. A failure ends the action and is the
+//! after it, in a pass before every other part (`ActionTable::step_all`), so on the actor and
+//! every entity it names as the stage finds them, all at the step's start (the poses and
+//! speeds the last step gave them; before, a reference whose SpeedAction came earlier in slot
+//! order was read at the step's end), until the action is stopped: its phase's Act ending
+//! stops it. A failure ends the action and is the
 //! step's failure: an error record in the event log and a failed run.
 //!
 //! With `track: projected` (`StateCheck::projected`, §8.9.1.1.3: the reference "projected"

@@ -125,6 +125,22 @@ pub(crate) struct ActionTable {
     /// AccelerationAction keeping the acceleration and started next starts from
     /// (relative_acceleration.rs).
     reached: Vec<(EntityId, f64, f64)>,
+    /// Whether a held state check may be running (`Part::Held`): set where one starts, and
+    /// by each stage 2 to whether it found one still running; stage 2 steps them in a pass of
+    /// their own before every other part only then.
+    checks_held: bool,
+}
+
+/// The passes of stage 2 over the running parts (`ActionTable::step_all`), in order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Pass {
+    /// The held state checks, reading every entity as the stage starts.
+    Checks,
+    /// Every other part, in slot order.
+    Own,
+    /// The parts that read their references at the step's end (relative accelerations,
+    /// lateral and lane following).
+    Following,
 }
 
 impl ActionTable {
@@ -163,35 +179,44 @@ impl ActionTable {
     }
 
     /// Stage 2: advances every running part by one step from `now` over `dt`, in slot order;
-    /// the RelativeAccelerationActions and the lane changes beside a moving entity last, so
-    /// that they read their references' speeds and lateral positions at the step's end
-    /// (relative_acceleration.rs, lateral_follow.rs). Returns the actions that failed in the
-    /// step (their names and errors), which stop the run.
+    /// the held state checks first, so that each reads every entity at `now`, as the last
+    /// step's moves left it (§8.9.1.1.1 `at: all`, "holds throughout the phase": a relation
+    /// between the states at one time; before, a check after a SpeedAction of its reference in
+    /// slot order read the reference's speed at the step's end and its actor's at its start,
+    /// issue 27); the RelativeAccelerationActions and the lane changes beside a moving entity
+    /// last, so that they read their references' speeds and lateral positions at the step's
+    /// end (relative_acceleration.rs, lateral_follow.rs). Returns the actions that failed in
+    /// the step (their names and errors), which stop the run.
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) -> Vec<(String, Error)> {
         let mut failures = Vec::new();
         self.reached.clear();
         self.note_start_speeds(world);
         self.synchronize_along_trajectories();
         let mut live = std::mem::take(&mut self.live);
-        // The second pass only where a first one met a part that follows: most steps
-        // have none, and the stage walks every running action once.
-        let mut deferred = false;
-        for following in [false, true] {
-            if following && !deferred {
-                break;
+        // The checks' pass only where a held check may run, the following pass only where
+        // the own pass met a part that follows: most steps have neither, and the stage walks
+        // every running action once.
+        let (mut deferred, mut held) = (false, false);
+        for pass in [Pass::Checks, Pass::Own, Pass::Following] {
+            match pass {
+                Pass::Checks if !self.checks_held => continue,
+                Pass::Following if !deferred => break,
+                _ => {}
             }
             for &index in &live {
                 let slot = &mut self.slots[index as usize];
                 let id = ActionId(index);
                 for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
-                    let relative = matches!(
-                        part,
+                    let kind = match part {
+                        Part::Held(_) => Pass::Checks,
                         Part::RelativeAcceleration(_)
-                            | Part::LateralFollow(_)
-                            | Part::LaneFollow(_)
-                    );
-                    deferred |= relative;
-                    if relative == following {
+                        | Part::LateralFollow(_)
+                        | Part::LaneFollow(_) => Pass::Following,
+                        _ => Pass::Own,
+                    };
+                    deferred |= kind == Pass::Following;
+                    held |= kind == Pass::Checks;
+                    if kind == pass {
                         let reached = &mut self.reached;
                         if let Some(e) = step_part(world, (actor, id), part, (now, dt), reached) {
                             failures.push((slot.name.clone(), e));
@@ -200,6 +225,7 @@ impl ActionTable {
                 }
             }
         }
+        self.checks_held = held;
         // The domains' order over the slots live as the stage started (those that ended in
         // it too), then the slots found done are dropped.
         std::mem::swap(&mut self.live, &mut live);
@@ -512,6 +538,7 @@ impl Host<'_> {
             PrivateAction::Check(check) => {
                 let refs = self.table.slots[id.0 as usize].check_refs;
                 check::start(self.world, actor, (check, &refs), (time, pos))?;
+                self.table.checks_held |= check.throughout;
                 Ok(match check.throughout {
                     true => Part::Held(check_held::HeldCheck::new(
                         self.world,

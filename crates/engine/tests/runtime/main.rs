@@ -21,6 +21,7 @@ mod distance_esmini;
 mod end_time;
 mod esmini_reference_reader;
 mod global;
+mod held_check_time;
 mod init_names;
 mod lateral;
 mod lateral_esmini;
