@@ -29,7 +29,7 @@ use scenario::{AcrossLine, HeadingFrom, RateWithin, SourcePos, SpeedTarget, Stat
 use super::lane_change::side_lane;
 use super::speed;
 
-use crate::condition::{place_error, Mark, Projection};
+use crate::condition::{place_error, Mark, MarkId, MarkIds, Projection};
 use crate::error::{Error, ErrorKind};
 use crate::position::RoadChain;
 use crate::store::World;
@@ -59,6 +59,12 @@ pub(crate) struct CheckRefs {
     heading: Option<EntityId>,
     /// The entity of the gap of `StateCheck::mark`.
     mark_gap: Option<EntityId>,
+    /// The slot of the mark the check notes (`StateCheck::mark`).
+    mark: Option<MarkId>,
+    /// The slot of the mark `StateCheck::travelled` measures from.
+    travelled: Option<MarkId>,
+    /// The slot of the mark `StateCheck::lane_at_mark` counts from.
+    lane_at_mark: Option<MarkId>,
 }
 
 impl CheckRefs {
@@ -66,9 +72,10 @@ impl CheckRefs {
     /// entity the scenario does not declare is an error at the check (a load error, as an
     /// undeclared `entityRef` of any action is). The entities of its speed targets
     /// (`speed_change`, `speed_at_rate`) are read when it runs, as a SpeedAction's are
-    /// (`speed::target_speed`), and must be declared too.
+    /// (`speed::target_speed`), and must be declared too. The marks it notes and reads get
+    /// their slots in `marks` (`condition::MarkIds`), so that no step looks a mark up by name.
     pub(crate) fn resolve(
-        world: &World,
+        (world, marks): (&World, &mut MarkIds),
         check: &StateCheck,
         pos: &SourcePos,
     ) -> Result<Self, Error> {
@@ -111,6 +118,9 @@ impl CheckRefs {
                 .as_ref()
                 .and_then(|m| m.gap.as_ref())
                 .map(|g| g.entity_ref.as_str()))?,
+            mark: check.mark.as_ref().map(|m| marks.id(&m.name)),
+            travelled: check.travelled.as_ref().map(|t| marks.id(&t.0)),
+            lane_at_mark: check.lane_at_mark.as_ref().map(|l| marks.id(&l.0)),
         })
     }
 
@@ -188,16 +198,18 @@ pub(crate) fn start(
             .road_position
             .as_ref()
             .map(|p| (p.road_id.clone(), p.lane_id));
-        world.marks.insert(
-            mark.name.clone(),
-            Mark {
-                odometer,
-                lane,
-                gap_error,
-                projection,
-                roads: check.roads.clone(),
-            },
-        );
+        if let Some(id) = refs.mark {
+            world.marks.note(
+                id,
+                Mark {
+                    odometer,
+                    lane,
+                    gap_error,
+                    projection,
+                    roads: check.roads.clone(),
+                },
+            );
+        }
     }
     Ok(())
 }
@@ -329,7 +341,7 @@ pub(super) fn require(
         }
     }
     if let Some((mark, d, tol)) = &check.travelled {
-        let Some(m) = world.marks.get(mark) else {
+        let Some(m) = refs.travelled.and_then(|id| world.marks.get(id)) else {
             return Err(fail(format!("the mark '{mark}' noted"), "none".into()));
         };
         let got = e.odometer - m.odometer;
@@ -415,7 +427,8 @@ pub(super) fn require(
         }
     }
     if let Some((mark, shift)) = &check.lane_at_mark {
-        let Some((road, from)) = world.marks.get(mark).and_then(|m| m.lane.clone()) else {
+        let noted = refs.lane_at_mark.and_then(|id| world.marks.get(id));
+        let Some((road, from)) = noted.and_then(|m| m.lane.as_ref().map(|(r, l)| (r, *l))) else {
             return Err(fail(
                 format!("the mark '{mark}' noted on a lane"),
                 "none".into(),
@@ -423,7 +436,7 @@ pub(super) fn require(
         };
         let direction = e.track.as_ref().map_or(Direction::Forward, |t| t.direction);
         let lane = lane_shift(from, *shift, direction);
-        if at.road_id != road || at.lane_id != lane {
+        if at.road_id != *road || at.lane_id != lane {
             let of = match shift {
                 0 => "its lane at the phase start".to_string(),
                 n => format!(

@@ -44,6 +44,7 @@ use scenario::{
 
 pub(crate) use appearance::Appearances;
 
+use crate::condition::MarkIds;
 use crate::controller::ControllerTable;
 use crate::error::Error;
 use crate::output::EventRecord;
@@ -145,18 +146,18 @@ enum Pass {
 
 impl ActionTable {
     /// Adds an action, returning its id; the entities a state check names are resolved in
-    /// `world` now (`check::CheckRefs`): one the scenario does not declare is an error at the
-    /// action.
+    /// `world` now, its marks given their slots in `marks` (`check::CheckRefs`): an entity the
+    /// scenario does not declare is an error at the action.
     pub fn push(
         &mut self,
-        world: &World,
+        (world, marks): (&World, &mut MarkIds),
         name: String,
         action: Action,
         actors: Vec<EntityId>,
     ) -> Result<ActionId, Error> {
         let check_refs = match &action.kind {
             ActionKind::Private(PrivateAction::Check(c)) => {
-                check::CheckRefs::resolve(world, c, &action.pos)?
+                check::CheckRefs::resolve((world, marks), c, &action.pos)?
             }
             _ => check::CheckRefs::default(),
         };

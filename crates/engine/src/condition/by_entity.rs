@@ -17,17 +17,20 @@ use super::clearance::{clear, Clearance};
 use super::mark::{gap_reached_since, traveled_since};
 use super::motion::{acceleration, relative_speed, speed, stands_still, DURATION_TOLERANCE};
 use super::place::place_reached;
+use super::refs::{reference_names, ConditionRefs, Triggering};
 use super::road_state::{at_end_of_road, off_road};
 use super::rule::compare;
 use super::spacing::{distance_holds, time_headway, time_to_collision};
 use super::target::Target;
 use super::{ConditionContext, ConditionError, ConditionErrorKind, ConditionState};
 use crate::position::{resolve, EntityView};
+use crate::world::EntityId;
 
-/// The raw value of a ByEntityCondition.
+/// The raw value of a ByEntityCondition (`refs`: its names resolved, condition/refs.rs).
 pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
     triggering: &TriggeringEntities,
     condition: &EntityCondition,
+    refs: &ConditionRefs,
     ctx: &C,
     state: &mut ConditionState,
     pos: &SourcePos,
@@ -35,24 +38,34 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
     let mut any = false;
     let mut all = !triggering.entity_refs.is_empty();
     let mut held = Vec::new();
-    for name in &triggering.entity_refs {
-        // An EntityRef may name an EntitySelection: each member is a triggering entity.
-        let members = match ctx.entity(name) {
-            Some(_) => vec![name.clone()],
-            None => ctx.entity_selection(name).ok_or_else(|| {
-                ConditionError::new(ConditionErrorKind::UnknownEntity(name.clone()), pos)
-            })?,
-        };
-        for member in &members {
-            let e = ctx.entity(member).ok_or_else(|| {
-                ConditionError::new(ConditionErrorKind::UnknownEntity(member.clone()), pos)
-            })?;
-            let holds =
-                holds(condition, ctx, &e, state).map_err(|k| ConditionError::new(k, pos))?;
-            any |= holds;
-            all &= holds;
-            if holds {
-                held.push(member.clone());
+    // Each member once where the same one would follow itself (a selection's member after the
+    // object itself, say).
+    let mut last = None;
+    let mut visit = |id: EntityId, name: &str| -> Result<(), ConditionError> {
+        if last == Some(id) {
+            return Ok(());
+        }
+        last = Some(id);
+        let e = ctx.entity_at(id).ok_or_else(|| {
+            ConditionError::new(ConditionErrorKind::UnknownEntity(name.to_owned()), pos)
+        })?;
+        let holds = holds(condition, refs, ctx, (id, &e), state)
+            .map_err(|k| ConditionError::new(k, pos))?;
+        any |= holds;
+        all &= holds;
+        if holds {
+            held.push(id);
+        }
+        Ok(())
+    };
+    for (name, t) in triggering.entity_refs.iter().zip(&refs.triggering) {
+        match *t {
+            Triggering::Entity(id) => visit(id, name)?,
+            // An EntityRef may name an EntitySelection: each member is a triggering entity.
+            Triggering::Selection(s) => {
+                for id in ctx.selection_members(s) {
+                    visit(id, name)?;
+                }
             }
         }
     }
@@ -64,35 +77,41 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
     Ok(value)
 }
 
-/// The reference entity `name`.
+/// The `i`-th reference entity of the condition (`refs.references`, in the order of
+/// `refs::reference_names`), as it stands now.
 fn reference<'c, C: ConditionContext + ?Sized>(
     ctx: &'c C,
-    name: &str,
-) -> Result<EntityView<'c>, ConditionErrorKind> {
-    ctx.entity(name)
-        .ok_or_else(|| ConditionErrorKind::UnknownEntity(name.to_string()))
+    condition: &EntityCondition,
+    refs: &ConditionRefs,
+    i: usize,
+) -> Result<(EntityId, EntityView<'c>), ConditionErrorKind> {
+    let unknown = || {
+        let name = reference_names(condition)
+            .get(i)
+            .map_or_else(String::new, |(n, _)| (*n).to_owned());
+        ConditionErrorKind::UnknownEntity(name)
+    };
+    let id = *refs.references.get(i).ok_or_else(unknown)?;
+    Ok((id, ctx.entity_at(id).ok_or_else(unknown)?))
 }
 
-/// True when `duration` s have passed since `holds` became true for `e` without a break.
-fn held(
-    state: &mut ConditionState,
-    e: &EntityView<'_>,
-    holds: bool,
-    now: Real,
-    duration: Real,
-) -> bool {
+/// True when `duration` s have passed since `holds` became true for entity `id` without a
+/// break.
+fn held(state: &mut ConditionState, id: EntityId, holds: bool, now: Real, duration: Real) -> bool {
     state
-        .held_for(e.name, holds, now)
+        .held_for(id, holds, now)
         .is_some_and(|d| d + DURATION_TOLERANCE >= duration)
 }
 
 /// Whether `condition` holds for the triggering entity `e`.
 fn holds<C: ConditionContext + ?Sized>(
     condition: &EntityCondition,
+    refs: &ConditionRefs,
     ctx: &C,
-    e: &EntityView<'_>,
+    (id, e): (EntityId, &EntityView<'_>),
     state: &mut ConditionState,
 ) -> Result<bool, ConditionErrorKind> {
+    let reference = |i| reference(ctx, condition, refs, i);
     let network = ctx.road_network();
     let now = ctx.simulation_time();
     let position_target = |p: &scenario::Position| {
@@ -102,28 +121,30 @@ fn holds<C: ConditionContext + ?Sized>(
     };
     Ok(match condition {
         EntityCondition::EndOfRoad { duration } => {
-            held(state, e, at_end_of_road(network, e), now, *duration)
+            held(state, id, at_end_of_road(network, e), now, *duration)
         }
         EntityCondition::Offroad { duration } => {
-            held(state, e, off_road(network, e), now, *duration)
+            held(state, id, off_road(network, e), now, *duration)
         }
-        EntityCondition::StandStill { duration } => held(state, e, stands_still(e), now, *duration),
-        EntityCondition::Collision(CollisionTarget::EntityRef(name)) => {
-            reference(ctx, name)?;
-            ctx.collided(e.name, name)
+        EntityCondition::StandStill { duration } => {
+            held(state, id, stands_still(e), now, *duration)
+        }
+        EntityCondition::Collision(CollisionTarget::EntityRef(_)) => {
+            let (other, o) = reference(0)?;
+            other != id && ctx.collided(e, &o)
         }
         EntityCondition::Collision(CollisionTarget::ByType(object_type)) => ctx
             .entities()
             .filter(|o| o.name != e.name && o.object_type == *object_type)
-            .any(|o| ctx.collided(e.name, o.name)),
+            .any(|o| ctx.collided(e, &o)),
         EntityCondition::Collision(_) => false,
         EntityCondition::TimeHeadway {
-            entity_ref,
+            entity_ref: _,
             value,
             rule,
             measure,
         } => {
-            let r = reference(ctx, entity_ref)?;
+            let (_, r) = reference(0)?;
             time_headway(ctx, e, &r, measure)?.is_some_and(|t| compare(t, *rule, *value))
         }
         EntityCondition::TimeToCollision {
@@ -133,7 +154,7 @@ fn holds<C: ConditionContext + ?Sized>(
             measure,
         } => {
             let target = match target {
-                TimeToCollisionTarget::EntityRef(name) => Target::Entity(reference(ctx, name)?),
+                TimeToCollisionTarget::EntityRef(_) => Target::Entity(reference(0)?.1),
                 TimeToCollisionTarget::Position(p) => position_target(p)?,
                 _ => return Ok(false),
             };
@@ -150,12 +171,12 @@ fn holds<C: ConditionContext + ?Sized>(
             direction,
         } => compare(speed(e, *direction), *rule, *value),
         EntityCondition::RelativeSpeed {
-            entity_ref,
+            entity_ref: _,
             value,
             rule,
             direction,
         } => {
-            let r = reference(ctx, entity_ref)?;
+            let (_, r) = reference(0)?;
             compare(relative_speed(e, &r, *direction), *rule, *value)
         }
         EntityCondition::TraveledDistance { value } => {
@@ -191,12 +212,12 @@ fn holds<C: ConditionContext + ?Sized>(
             distance_holds(ctx, e, &target, measure, *rule, *value)?
         }
         EntityCondition::RelativeDistance {
-            entity_ref,
+            entity_ref: _,
             value,
             rule,
             measure,
         } => {
-            let target = Target::Entity(reference(ctx, entity_ref)?);
+            let target = Target::Entity(reference(0)?.1);
             distance_holds(ctx, e, &target, measure, *rule, *value)?
         }
         EntityCondition::RelativeClearance {
@@ -207,16 +228,20 @@ fn holds<C: ConditionContext + ?Sized>(
             relative_lane_ranges,
             entity_refs,
         } => {
-            for name in entity_refs {
-                reference(ctx, name)?;
-            }
+            // Only these entities count, each once, in the store's order (as the scene's).
+            let mut only = (0..entity_refs.len())
+                .map(reference)
+                .collect::<Result<Vec<_>, _>>()?;
+            only.sort_by_key(|(id, _)| *id);
+            only.dedup_by_key(|(id, _)| *id);
+            let only: Vec<EntityView<'_>> = only.into_iter().map(|(_, v)| v).collect();
             let c = Clearance {
                 opposite_lanes: *opposite_lanes,
                 distance_forward: *distance_forward,
                 distance_backward: *distance_backward,
                 free_space: *free_space,
                 relative_lane_ranges,
-                entity_refs,
+                only: (!entity_refs.is_empty()).then_some(&only[..]),
             };
             clear(ctx, e, &c)?
         }
@@ -228,23 +253,24 @@ fn holds<C: ConditionContext + ?Sized>(
         } => own_angle(network, e, *angle_type, *coordinate_system)?
             .is_some_and(|a| within(a, *angle, *angle_tolerance)),
         EntityCondition::RelativeAngle {
-            entity_ref,
+            entity_ref: _,
             angle_type,
             angle,
             angle_tolerance,
             // Every frame gives the same difference (see `angle`).
             coordinate_system: _,
         } => {
-            let r = reference(ctx, entity_ref)?;
+            let (_, r) = reference(0)?;
             within(relative_angle(e, &r, *angle_type), *angle, *angle_tolerance)
         }
-        EntityCondition::TraveledSinceMark { mark, value } => {
-            traveled_since(e, ctx.mark(mark).as_ref(), *value)
+        EntityCondition::TraveledSinceMark { value, .. } => {
+            traveled_since(e, refs.mark.and_then(|m| ctx.mark(m)), *value)
         }
         EntityCondition::PlaceReached { value, roads } => place_reached(network, e, *value, roads),
-        EntityCondition::GapReachedSinceMark { mark, gap } => {
-            let r = reference(ctx, &gap.entity_ref)?;
-            gap_reached_since(network, now, e, &r, ctx.mark(mark).as_ref(), gap)
+        EntityCondition::GapReachedSinceMark { gap, .. } => {
+            let (_, r) = reference(0)?;
+            let mark = refs.mark.and_then(|m| ctx.mark(m));
+            gap_reached_since(network, now, e, &r, mark, gap)
         }
         _ => {
             return Err(ConditionErrorKind::Unsupported {

@@ -46,7 +46,9 @@ pub(crate) struct Clearance<'c> {
     pub distance_backward: Option<Real>,
     pub free_space: bool,
     pub relative_lane_ranges: &'c [(Option<i32>, Option<i32>)],
-    pub entity_refs: &'c [String],
+    /// With EntityRefs: only these entities count (as they stand now, in the store's
+    /// order); else every entity in the scene.
+    pub only: Option<&'c [EntityView<'c>]>,
 }
 
 /// Lane ids as consecutive integers across the road (…, −2 → −1, −1 → 0, 1 → 1, 2 → 2).
@@ -125,10 +127,12 @@ pub(crate) fn clear<Q: EntityQuery + ?Sized>(
         c.distance_forward.unwrap_or(0.0),
         c.distance_backward.unwrap_or(0.0),
     );
-    for other in ctx.entities() {
-        if other.name == e.name
-            || (!c.entity_refs.is_empty() && !c.entity_refs.iter().any(|r| r == other.name))
-        {
+    let others: Box<dyn Iterator<Item = EntityView<'_>> + '_> = match c.only {
+        Some(only) => Box::new(only.iter().copied()),
+        None => ctx.entities(),
+    };
+    for other in others {
+        if other.name == e.name {
             continue;
         }
         let Some(rp) = other.road_position else {

@@ -6,8 +6,10 @@
 use scenario::expr::Value;
 use scenario::SourcePos;
 
-use crate::position::EntityQuery;
+use super::{MarkId, SelectionId};
+use crate::position::{EntityQuery, EntityView};
 use crate::storyboard::StateView;
+use crate::world::EntityId;
 
 /// Everything condition evaluation reads at one moment of a step. Implemented by the runtime;
 /// read-only. Entities and the road network come from the [`EntityQuery`] supertrait.
@@ -46,18 +48,48 @@ pub trait ConditionContext: EntityQuery {
     /// `animation` is true; `None` when no TimeOfDay was ever set.
     fn time_of_day(&self) -> Option<f64>;
 
-    /// The member entities of EntitySelection `name` (OpenSCENARIO 1.3 §7.2.2; expanded, in
-    /// declaration order), for TriggeringEntities that name a selection; `None` when `name` is
-    /// no selection. The default knows no selections.
-    fn entity_selection(&self, name: &str) -> Option<Vec<String>> {
+    /// The id of the declared entity `name` (placed or not), `None` if the scenario declares
+    /// none by that name: how a condition's names are resolved (condition/refs.rs). The
+    /// default numbers the entities of [`EntityQuery::entities`] in order; a runtime that
+    /// overrides it overrides [`ConditionContext::entity_at`] with it.
+    fn entity_id(&self, name: &str) -> Option<EntityId> {
+        self.entities()
+            .position(|e| e.name == name)
+            .map(|i| EntityId(i as u32))
+    }
+
+    /// Entity `id` as it stands now, `None` if it is not placed (not added yet, or deleted).
+    /// The default reads the `id.index()`-th of [`EntityQuery::entities`].
+    fn entity_at(&self, id: EntityId) -> Option<EntityView<'_>> {
+        self.entities().nth(id.index())
+    }
+
+    /// The handle of EntitySelection `name` (OpenSCENARIO 1.3 §7.2.2), for TriggeringEntities
+    /// that name a selection; `None` when `name` is no selection. The default knows no
+    /// selections.
+    fn selection_id(&self, name: &str) -> Option<SelectionId> {
         let _ = name;
         None
     }
 
-    /// The mark `name` a state check noted (oscsim, no XML form: `scenario::StateCheck::mark`),
-    /// `None` before it ran. The default knows no marks.
-    fn mark(&self, name: &str) -> Option<super::Mark> {
+    /// The placed members of selection `id` now (expanded, in id order: §7.2.2.2 takes a
+    /// selection's members as they are when it is used).
+    fn selection_members(&self, id: SelectionId) -> Vec<EntityId> {
+        let _ = id;
+        Vec::new()
+    }
+
+    /// The slot of mark `name` (oscsim, no XML form: `scenario::StateCheck::mark`), `None`
+    /// when no mark by that name can be noted. The default knows no marks.
+    fn mark_id(&self, name: &str) -> Option<MarkId> {
         let _ = name;
+        None
+    }
+
+    /// The mark in slot `id`, `None` before the check that notes it ran. The default knows no
+    /// marks.
+    fn mark(&self, id: MarkId) -> Option<&super::Mark> {
+        let _ = id;
         None
     }
 
@@ -65,21 +97,17 @@ pub trait ConditionContext: EntityQuery {
     /// it could not be evaluated) and, for a ByEntityCondition, the triggering entities for
     /// which its EntityCondition held, in order. The runtime keeps them for
     /// `Actors/@selectTriggeringEntities` (OpenSCENARIO 1.3 §7.3.1); the default forgets them.
-    fn note_triggering(&self, pos: &SourcePos, value: bool, held: &[String]) {
+    fn note_triggering(&self, pos: &SourcePos, value: bool, held: &[EntityId]) {
         let _ = (pos, value, held);
     }
 
-    /// True when the bounding boxes of entities `a` and `b` touch or overlap now
-    /// (CollisionCondition). The default implementation tests the two boxes'
-    /// ground-plane footprints (OpenSCENARIO 2.0 §8.7.5.1.1 time_to_collision() being 0);
-    /// a runtime with its own collision record may override it.
-    fn collided(&self, a: &str, b: &str) -> bool {
-        match (self.entity(a), self.entity(b)) {
-            (Some(ea), Some(eb)) if a != b => ea
-                .traffic_participant()
-                .time_to_collision(&eb.physical_object())
-                .is_some_and(|t| t <= 0.0),
-            _ => false,
-        }
+    /// True when the bounding boxes of entities `a` and `b` (two entities: the caller tells
+    /// them apart) touch or overlap now (CollisionCondition). The default implementation tests
+    /// the two boxes' ground-plane footprints (OpenSCENARIO 2.0 §8.7.5.1.1
+    /// time_to_collision() being 0); a runtime with its own collision record may override it.
+    fn collided(&self, a: &EntityView<'_>, b: &EntityView<'_>) -> bool {
+        a.traffic_participant()
+            .time_to_collision(&b.physical_object())
+            .is_some_and(|t| t <= 0.0)
     }
 }

@@ -1,12 +1,17 @@
 //! The front door: [`evaluate`] gives the raw value of one `scenario::Condition`
 //! (OpenSCENARIO 1.3 §7.6.1 "Condition"); `conditionEdge` and `delay` are applied by the
-//! storyboard, not here.
+//! storyboard, not here. [`evaluate`] resolves the condition's names through the context at
+//! each call; the runtime resolves them once, when it builds the storyboard, and calls
+//! [`evaluate_resolved`] (condition/refs.rs).
 
 use scenario::{Condition, ConditionKind};
 
+use super::refs::{ConditionRefs, Names, SelectionId};
 use super::{
     by_entity, by_value, ConditionContext, ConditionError, ConditionErrorKind, ConditionState,
+    MarkId,
 };
+use crate::world::EntityId;
 
 /// The raw value of `condition` now, read from `ctx`. `state` is this condition's memory
 /// (the runtime keeps one per condition, e.g. in a [`ConditionStates`](super::ConditionStates)
@@ -16,13 +21,35 @@ use super::{
 /// or storyboard element, a value of the wrong type, a position that cannot be resolved, or
 /// a measurement oscsim does not support. A measurement that merely has no answer now (an
 /// entity off the roads for a road distance, objects not closing for a TTC) is false, not an
-/// error.
+/// error. The condition's names are resolved through `ctx` first
+/// ([`ConditionContext::entity_id`], [`ConditionContext::selection_id`],
+/// [`ConditionContext::mark_id`]): one that names nothing is an unknown entity.
 pub fn evaluate<C: ConditionContext + ?Sized>(
     condition: &Condition,
     ctx: &C,
     state: &mut ConditionState,
 ) -> Result<bool, ConditionError> {
-    let result = dispatch(condition, ctx, state);
+    match ConditionRefs::resolve(condition, &mut Context(ctx)) {
+        Ok(refs) => evaluate_resolved(condition, &refs, ctx, state),
+        Err(u) => {
+            ctx.note_triggering(&condition.pos, false, &[]);
+            Err(ConditionError::new(
+                ConditionErrorKind::UnknownEntity(u.name),
+                &condition.pos,
+            ))
+        }
+    }
+}
+
+/// [`evaluate`] with the condition's names resolved before (`refs`, from
+/// [`ConditionRefs::resolve`] on the same context's names): no name is looked up.
+pub(crate) fn evaluate_resolved<C: ConditionContext + ?Sized>(
+    condition: &Condition,
+    refs: &ConditionRefs,
+    ctx: &C,
+    state: &mut ConditionState,
+) -> Result<bool, ConditionError> {
+    let result = dispatch(condition, refs, ctx, state);
     // A ByEntityCondition reports its value and entities itself; the others report their
     // value here, and a failed evaluation reads false ([`ConditionContext::note_triggering`]).
     match (&condition.kind, &result) {
@@ -35,6 +62,7 @@ pub fn evaluate<C: ConditionContext + ?Sized>(
 /// The raw value of `condition` by its kind.
 fn dispatch<C: ConditionContext + ?Sized>(
     condition: &Condition,
+    refs: &ConditionRefs,
     ctx: &C,
     state: &mut ConditionState,
 ) -> Result<bool, ConditionError> {
@@ -46,6 +74,7 @@ fn dispatch<C: ConditionContext + ?Sized>(
         } => by_entity::evaluate(
             triggering_entities,
             entity_condition,
+            refs,
             ctx,
             state,
             &condition.pos,
@@ -57,5 +86,22 @@ fn dispatch<C: ConditionContext + ?Sized>(
             },
             &condition.pos,
         )),
+    }
+}
+
+/// A context's names, for [`evaluate`]'s resolution.
+struct Context<'c, C: ?Sized>(&'c C);
+
+impl<C: ConditionContext + ?Sized> Names for Context<'_, C> {
+    fn entity(&self, name: &str) -> Option<EntityId> {
+        self.0.entity_id(name)
+    }
+
+    fn selection(&self, name: &str) -> Option<SelectionId> {
+        self.0.selection_id(name)
+    }
+
+    fn mark(&mut self, name: &str) -> Option<MarkId> {
+        self.0.mark_id(name)
     }
 }

@@ -11,6 +11,8 @@
 //! roads, x projected along its lane across their joints; for an actor driving against s along
 //! its direction of travel (u = L − s), so "ahead" and "behind" are its own.
 
+use std::collections::HashMap;
+
 use opendrive::{Real, RoadNetwork, RoadPosition};
 use scenario::{PlanRoads, SpeedGap};
 
@@ -31,6 +33,60 @@ pub struct Mark {
     /// The roads the check's gap is measured along, and the direction of travel (the check's
     /// `roads`).
     pub roads: PlanRoads,
+}
+
+/// The slot of a mark: marks are named in the scenario (`scenario::StateCheck::mark`, a
+/// check's `travelled` and `lane_at_mark`, TraveledSinceMark, GapReachedSinceMark) and given
+/// a slot each when the storyboard is built (`MarkIds`), so that noting and reading one is
+/// an index, never a look-up by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct MarkId(pub u32);
+
+/// The slots of the marks, by name: filled while the storyboard is built, each name given the
+/// next slot the first time it is met (by the check that notes it or by what reads it).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct MarkIds {
+    ids: HashMap<String, MarkId>,
+}
+
+impl MarkIds {
+    /// The slot of mark `name`, given now if it has none yet.
+    pub(crate) fn id(&mut self, name: &str) -> MarkId {
+        let next = MarkId(self.ids.len() as u32);
+        *self.ids.entry(name.to_owned()).or_insert(next)
+    }
+
+    /// The slot of mark `name`, if it has one.
+    pub(crate) fn get(&self, name: &str) -> Option<MarkId> {
+        self.ids.get(name).copied()
+    }
+
+    /// The marks' store for a run: one empty slot per mark.
+    pub(crate) fn store(&self) -> Marks {
+        Marks {
+            noted: vec![None; self.ids.len()],
+        }
+    }
+}
+
+/// The marks noted so far in a run, by slot (`None`: not noted yet).
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Marks {
+    noted: Vec<Option<Mark>>,
+}
+
+impl Marks {
+    /// Mark `id`, if noted.
+    pub(crate) fn get(&self, id: MarkId) -> Option<&Mark> {
+        self.noted.get(id.0 as usize).and_then(Option::as_ref)
+    }
+
+    /// Notes `mark` in slot `id` (replacing what it held).
+    pub(crate) fn note(&mut self, id: MarkId, mark: Mark) {
+        if let Some(slot) = self.noted.get_mut(id.0 as usize) {
+            *slot = Some(mark);
+        }
+    }
 }
 
 /// An entity projected from a moment on (ASAM OpenSCENARIO DSL 2.1 §8.9.1.1.3 `track:

@@ -21,6 +21,7 @@
 //! | `angle` | Angle, RelativeAngle |
 //! | `mark` | oscsim's marks a state check notes: TraveledSinceMark, GapReachedSinceMark (no XML form) |
 //! | `place` | oscsim's PlaceReached: a place along the plan's roads reached (no XML form) |
+//! | `refs` | `ConditionRefs`: a condition's entities, selections and mark resolved once, when the storyboard is built |
 //! | `by_entity` | TriggeringEntities any / all, dispatch of EntityCondition |
 //! | `evaluate` | `evaluate`: the front door |
 
@@ -35,6 +36,7 @@ mod mark;
 mod measure;
 mod motion;
 mod place;
+mod refs;
 mod registry;
 mod road_distance;
 mod road_state;
@@ -46,10 +48,14 @@ mod target;
 pub use context::ConditionContext;
 pub use error::{ConditionError, ConditionErrorKind};
 pub use evaluate::evaluate;
+pub(crate) use evaluate::evaluate_resolved;
 pub(crate) use mark::place_error;
-pub use mark::{Mark, Projection};
+pub use mark::{Mark, MarkId, Projection};
+pub(crate) use mark::{MarkIds, Marks};
 pub(crate) use measure::distance as measured_distance;
 pub use motion::{DURATION_TOLERANCE, STAND_STILL_SPEED};
+pub use refs::SelectionId;
+pub(crate) use refs::{ConditionRefs, Names};
 pub use registry::UserValueRegistry;
 pub use road_state::END_OF_ROAD_TOLERANCE;
 pub use rule::{compare, EQUAL_TOLERANCE};

@@ -6,15 +6,16 @@
 //! [`ConditionState`] per condition in a [`ConditionStates`] store keyed by the storyboard's
 //! [`ConditionId`] and passes it to every evaluation of that condition.
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 use crate::storyboard::ConditionId;
+use crate::world::EntityId;
 
-/// The memory of one condition: for each triggering entity, the simulation time (s) since
+/// The memory of one condition: for each triggering entity (by id), the simulation time (s) since
 /// which its predicate has held without a break.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct ConditionState {
-    since: HashMap<String, f64>,
+    since: BTreeMap<EntityId, f64>,
 }
 
 impl ConditionState {
@@ -25,12 +26,12 @@ impl ConditionState {
 
     /// Records the predicate's value `holds` for `entity` at time `now` and returns for how
     /// long (s) it has held without a break, `None` if it does not hold now.
-    pub fn held_for(&mut self, entity: &str, holds: bool, now: f64) -> Option<f64> {
+    pub fn held_for(&mut self, entity: EntityId, holds: bool, now: f64) -> Option<f64> {
         if !holds {
-            self.since.remove(entity);
+            self.since.remove(&entity);
             return None;
         }
-        let start = *self.since.entry(entity.to_string()).or_insert(now);
+        let start = *self.since.entry(entity).or_insert(now);
         Some(now - start)
     }
 

@@ -14,6 +14,7 @@ use opendrive::RoadNetwork;
 use scenario::{Action, Actors, Scenario, Trigger};
 
 use crate::actions::ActionTable;
+use crate::condition::{ConditionRefs, MarkIds, Names};
 use crate::controller::ControllerTable;
 use crate::error::Error;
 use crate::store::{entity, World};
@@ -31,6 +32,8 @@ pub(crate) struct Built {
     pub desc: StoryboardDesc,
     pub actions: ActionTable,
     pub conditions: Vec<scenario::Condition>,
+    /// Per condition: its names resolved in the world (condition/refs.rs).
+    pub condition_refs: Vec<ConditionRefs>,
 }
 
 /// Builds world, storyboard description and tables from `scenario` on `network`.
@@ -79,11 +82,16 @@ pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Bu
         world: &world,
         actions: ActionTable::default(),
         conditions: Vec::new(),
+        condition_refs: Vec::new(),
+        marks: MarkIds::default(),
         selection_actors: Vec::new(),
     };
     let desc = b.storyboard()?;
-    let (actions, conditions) = (b.actions, b.conditions);
-    world.selections.set_actors(b.selection_actors);
+    let (actions, conditions, condition_refs) = (b.actions, b.conditions, b.condition_refs);
+    let (marks, selection_actors) = (b.marks, b.selection_actors);
+    world.marks = marks.store();
+    world.mark_ids = marks;
+    world.selections.set_actors(selection_actors);
     let controllers = crate::controller::set_up(
         scenario,
         &mut world,
@@ -95,6 +103,7 @@ pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Bu
         desc,
         actions,
         conditions,
+        condition_refs,
     })
 }
 
@@ -103,6 +112,10 @@ struct Builder<'a> {
     world: &'a World,
     actions: ActionTable,
     conditions: Vec<scenario::Condition>,
+    /// Per condition of `conditions`: its names resolved.
+    condition_refs: Vec<ConditionRefs>,
+    /// The marks' slots, given as checks and conditions name them.
+    marks: MarkIds,
     /// Actions whose ManeuverGroup actors name a selection or select triggering entities,
     /// worked out at each start.
     selection_actors: Vec<(
@@ -167,7 +180,7 @@ impl Builder<'_> {
                                     _ => Priority::Override,
                                 },
                                 maximum_execution_count: ev.maximum_execution_count,
-                                start_trigger: self.trigger(ev.start_trigger.as_ref()),
+                                start_trigger: self.trigger(ev.start_trigger.as_ref())?,
                                 actions,
                             });
                         }
@@ -184,8 +197,8 @@ impl Builder<'_> {
                 }
                 acts.push(ActDesc {
                     name: act.name.clone(),
-                    start_trigger: self.trigger(act.start_trigger.as_ref()),
-                    stop_trigger: self.trigger(act.stop_trigger.as_ref()),
+                    start_trigger: self.trigger(act.start_trigger.as_ref())?,
+                    stop_trigger: self.trigger(act.stop_trigger.as_ref())?,
                     maneuver_groups: groups,
                 });
             }
@@ -198,7 +211,7 @@ impl Builder<'_> {
             name: "storyBoard".to_owned(),
             init_actions,
             stories,
-            stop_trigger: self.trigger(sb.stop_trigger.as_ref()),
+            stop_trigger: self.trigger(sb.stop_trigger.as_ref())?,
         })
     }
 
@@ -273,9 +286,12 @@ impl Builder<'_> {
         action: &Action,
         actors: Vec<EntityId>,
     ) -> Result<ActionDesc, Error> {
-        let id = self
-            .actions
-            .push(self.world, name.clone(), action.clone(), actors)?;
+        let id = self.actions.push(
+            (self.world, &mut self.marks),
+            name.clone(),
+            action.clone(),
+            actors,
+        )?;
         Ok(ActionDesc { name, id })
     }
 
@@ -283,14 +299,35 @@ impl Builder<'_> {
     /// 1.0, and how the ASAM ALKS examples write "start with the parent") is read as no
     /// trigger: a start trigger then starts the element with its parent, as esmini does, and
     /// an absent stop trigger never fires, as an empty one would.
-    fn trigger(&mut self, trigger: Option<&Trigger>) -> Option<TriggerDesc> {
-        let trigger = trigger.filter(|t| !t.condition_groups.is_empty())?;
+    ///
+    /// Each condition's names are resolved in the world now ([`ConditionRefs`]): one that
+    /// names no declared entity or selection is an error at the condition, naming the element
+    /// it is written in.
+    fn trigger(&mut self, trigger: Option<&Trigger>) -> Result<Option<TriggerDesc>, Error> {
+        let Some(trigger) = trigger.filter(|t| !t.condition_groups.is_empty()) else {
+            return Ok(None);
+        };
         let mut groups = Vec::new();
         for g in &trigger.condition_groups {
             let mut conditions = Vec::new();
             for c in &g.conditions {
                 let id = ConditionId(self.conditions.len() as u32);
+                let mut names = BuildNames {
+                    world: self.world,
+                    marks: &mut self.marks,
+                };
+                let refs = ConditionRefs::resolve(c, &mut names).map_err(|u| {
+                    Error::at(
+                        format!(
+                            "a declared entity for {} of condition '{}'",
+                            u.element, c.name
+                        ),
+                        format!("'{}'", u.name),
+                        &c.pos,
+                    )
+                })?;
                 self.conditions.push(c.clone());
+                self.condition_refs.push(refs);
                 conditions.push(ConditionDesc {
                     name: c.name.clone(),
                     id,
@@ -306,8 +343,29 @@ impl Builder<'_> {
             }
             groups.push(ConditionGroupDesc { conditions });
         }
-        Some(TriggerDesc {
+        Ok(Some(TriggerDesc {
             condition_groups: groups,
-        })
+        }))
+    }
+}
+
+/// The world's names as the storyboard is built: entities and selections as declared, marks
+/// given their slots as they are met.
+struct BuildNames<'a> {
+    world: &'a World,
+    marks: &'a mut MarkIds,
+}
+
+impl Names for BuildNames<'_> {
+    fn entity(&self, name: &str) -> Option<EntityId> {
+        self.world.id(name)
+    }
+
+    fn selection(&self, name: &str) -> Option<crate::condition::SelectionId> {
+        self.world.selections.id(name)
+    }
+
+    fn mark(&mut self, name: &str) -> Option<crate::condition::MarkId> {
+        Some(self.marks.id(name))
     }
 }

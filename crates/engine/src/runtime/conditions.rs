@@ -1,7 +1,8 @@
 //! The storyboard's [`ConditionSource`] over the world: the raw value of each condition
 //! (OpenSCENARIO 1.3 §7.6), before the edge and delay the storyboard applies, from
-//! [`crate::condition::evaluate`] with the world as its [`ConditionContext`] and one memory
-//! per condition.
+//! [`crate::condition::evaluate`] with the world as its [`ConditionContext`], the names each
+//! condition holds resolved when the storyboard was built (`runtime::build`,
+//! condition/refs.rs), and one memory per condition.
 //!
 //! A condition that cannot be evaluated (a measurement oscsim does not support, a value of the
 //! wrong type) reads false; its error is written once to the event log, naming the condition's
@@ -12,7 +13,7 @@
 use std::cell::RefCell;
 
 use super::trigger_view::TriggerView;
-use crate::condition::{evaluate, ConditionErrorKind, ConditionStates};
+use crate::condition::{evaluate_resolved, ConditionErrorKind, ConditionRefs, ConditionStates};
 use crate::output::EventRecord;
 use crate::store::{ConditionWorld, World};
 use crate::storyboard::{ConditionId, ConditionSource, StateView};
@@ -21,6 +22,8 @@ use crate::storyboard::{ConditionId, ConditionSource, StateView};
 pub(crate) struct Conditions<'a> {
     pub world: &'a RefCell<World>,
     pub conditions: &'a [scenario::Condition],
+    /// Per condition: its names, resolved when the storyboard was built (condition/refs.rs).
+    pub refs: &'a [ConditionRefs],
     pub states: &'a mut ConditionStates,
     /// Per condition: its failure has been logged.
     pub reported: &'a mut Vec<bool>,
@@ -32,7 +35,8 @@ pub(crate) struct Conditions<'a> {
 impl ConditionSource for Conditions<'_> {
     fn value(&mut self, id: ConditionId, time: f64, storyboard: &StateView<'_>) -> bool {
         let index = id.0 as usize;
-        let Some(condition) = self.conditions.get(index) else {
+        let (Some(condition), Some(refs)) = (self.conditions.get(index), self.refs.get(index))
+        else {
             return false;
         };
         let mut world = self.world.borrow_mut();
@@ -42,9 +46,7 @@ impl ConditionSource for Conditions<'_> {
                 world,
                 storyboard: *storyboard,
             };
-            // Selections among the triggering entities stand for their members now.
-            let expanded = world.selections.expand_condition(world, condition);
-            evaluate(&expanded, &ctx, state)
+            evaluate_resolved(condition, refs, &ctx, state)
         });
         match result {
             Ok(v) => v,

@@ -98,6 +98,8 @@ pub struct Engine {
     /// The traffic actions at work: the traffic stage's table.
     pub(super) traffic: Traffic,
     pub(super) conditions: Vec<scenario::Condition>,
+    /// Per condition: its names resolved (condition/refs.rs).
+    pub(super) condition_refs: Vec<crate::condition::ConditionRefs>,
     pub(super) condition_states: ConditionStates,
     pub(super) reported: Vec<bool>,
     pub(super) has_stop_trigger: bool,
@@ -153,6 +155,7 @@ impl Engine {
             traffic,
             reported: vec![false; built.conditions.len()],
             conditions: built.conditions,
+            condition_refs: built.condition_refs,
             condition_states: ConditionStates::new(),
             has_stop_trigger: built.desc.stop_trigger.is_some(),
             config,

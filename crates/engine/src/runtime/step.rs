@@ -155,6 +155,7 @@ impl Engine {
         let mut conditions = Conditions {
             world: &self.world,
             conditions: &self.conditions,
+            refs: &self.condition_refs,
             states: &mut self.condition_states,
             reported: &mut self.reported,
             log,

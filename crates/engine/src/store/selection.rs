@@ -9,7 +9,9 @@
 //!
 //! Where a selection is used:
 //! * as `TriggeringEntities` (each condition evaluation): the condition is evaluated for every
-//!   current member and combined by `any`/`all` (§7.2.2.2);
+//!   current member and combined by `any`/`all` (§7.2.2.2); the condition holds the
+//!   selection's handle ([`Selections::id`], resolved when the storyboard is built) and reads
+//!   its members by it ([`Selections::members_of`]);
 //! * as ManeuverGroup actors: each private action runs per member, the members taken when the
 //!   action starts.
 //!
@@ -21,11 +23,11 @@
 //! applies to are checked when the engine is built (`restrictions`, [`check_multiplicity`],
 //! [`check_actor_kinds`]). Selection cycles are rejected by the scenario loader.
 
-use std::borrow::Cow;
 use std::collections::BTreeMap;
 
-use scenario::{Condition, ConditionKind, EntitySelection, Scenario, SelectionMember, SourcePos};
+use scenario::{EntitySelection, Scenario, SelectionMember, SourcePos};
 
+use crate::condition::SelectionId;
 use crate::storyboard::ActionId;
 use crate::world::entity::{Entity, EntityId};
 
@@ -94,7 +96,13 @@ impl Selections {
 
     /// Records an evaluation of the condition at `pos` at `time`: its raw value and the
     /// triggering entities it held for (`triggering`).
-    pub(crate) fn note_triggering(&self, pos: &SourcePos, time: f64, value: bool, held: &[String]) {
+    pub(crate) fn note_triggering(
+        &self,
+        pos: &SourcePos,
+        time: f64,
+        value: bool,
+        held: &[EntityId],
+    ) {
         self.reports.note(pos, time, value, held);
     }
 
@@ -117,10 +125,9 @@ impl Selections {
                 .unwrap_or_else(|| world.id(r).into_iter().collect()));
         }
         if let Some(groups) = &spec.triggering {
-            let names = self.reports.entities(groups);
-            add(names
-                .iter()
-                .filter_map(|n| world.id(n))
+            let ids = self.reports.entities(groups);
+            add(ids
+                .into_iter()
                 .filter(|&id| world.entity(id).placed)
                 .collect());
         }
@@ -131,22 +138,43 @@ impl Selections {
         self.defs.iter().find(|s| s.name == name)
     }
 
+    /// The handle of selection `name` (its index in declaration order), `None` if `name` is
+    /// not a selection: what a condition's triggering entities are resolved to when the
+    /// storyboard is built (condition/refs.rs).
+    pub(crate) fn id(&self, name: &str) -> Option<SelectionId> {
+        self.defs
+            .iter()
+            .position(|s| s.name == name)
+            .map(|i| SelectionId(i as u32))
+    }
+
+    /// The placed members of selection `id` now, in id order (none for a handle not from
+    /// [`Selections::id`]).
+    pub(crate) fn members_of(&self, world: &dyn Entities, id: SelectionId) -> Vec<EntityId> {
+        self.defs
+            .get(id.0 as usize)
+            .map(|s| self.placed_members(world, s))
+            .unwrap_or_default()
+    }
+
     /// The placed members of selection `name` now, in id order; `None` if `name` is not a
     /// selection.
     pub(crate) fn members(&self, world: &dyn Entities, name: &str) -> Option<Vec<EntityId>> {
-        let selection = self.find(name)?;
+        Some(self.placed_members(world, self.find(name)?))
+    }
+
+    /// The placed members of `selection` now, in id order.
+    fn placed_members(&self, world: &dyn Entities, selection: &EntitySelection) -> Vec<EntityId> {
         let mut flags = vec![false; world.entities().len()];
         let mut visiting = Vec::new();
         self.collect(world, selection, &mut visiting, &mut flags);
-        Some(
-            world
-                .entities()
-                .iter()
-                .zip(flags)
-                .filter(|(e, f)| *f && e.placed)
-                .map(|(e, _)| e.id)
-                .collect(),
-        )
+        world
+            .entities()
+            .iter()
+            .zip(flags)
+            .filter(|(e, f)| *f && e.placed)
+            .map(|(e, _)| e.id)
+            .collect()
     }
 
     fn collect<'s>(
@@ -181,45 +209,5 @@ impl Selections {
             }
         }
         visiting.pop();
-    }
-
-    /// `condition` with every selection among its triggering entities replaced by the names
-    /// of its current members (unchanged when it names none).
-    pub(crate) fn expand_condition<'c>(
-        &self,
-        world: &dyn Entities,
-        condition: &'c Condition,
-    ) -> Cow<'c, Condition> {
-        let ConditionKind::ByEntity {
-            triggering_entities,
-            ..
-        } = &condition.kind
-        else {
-            return Cow::Borrowed(condition);
-        };
-        if !triggering_entities
-            .entity_refs
-            .iter()
-            .any(|n| self.find(n).is_some())
-        {
-            return Cow::Borrowed(condition);
-        }
-        let mut names: Vec<String> = Vec::new();
-        for n in &triggering_entities.entity_refs {
-            match self.members(world, n) {
-                Some(ids) => names.extend(ids.iter().map(|&id| world.entity(id).name.clone())),
-                None => names.push(n.clone()),
-            }
-        }
-        names.dedup();
-        let mut expanded = condition.clone();
-        if let ConditionKind::ByEntity {
-            triggering_entities,
-            ..
-        } = &mut expanded.kind
-        {
-            triggering_entities.entity_refs = names;
-        }
-        Cow::Owned(expanded)
     }
 }

@@ -56,8 +56,11 @@ pub struct World {
     pub(crate) selections: super::selection::Selections,
     /// Environment set by EnvironmentActions (actions/environment.rs).
     pub(crate) environment: crate::world::EnvironmentState,
-    /// The marks state checks noted, by name (condition/mark.rs).
-    pub(crate) marks: HashMap<String, crate::condition::Mark>,
+    /// The marks state checks noted, by slot (condition/mark.rs).
+    pub(crate) marks: crate::condition::Marks,
+    /// The marks' slots by name, given when the storyboard was built (for
+    /// [`ConditionContext::mark_id`]; the runtime resolves every name then).
+    pub(crate) mark_ids: crate::condition::MarkIds,
 }
 
 impl World {
@@ -83,7 +86,8 @@ impl World {
             seed: 0,
             selections: super::selection::Selections::default(),
             environment: crate::world::EnvironmentState::default(),
-            marks: HashMap::new(),
+            marks: crate::condition::Marks::default(),
+            mark_ids: crate::condition::MarkIds::default(),
         }
     }
 
@@ -360,8 +364,31 @@ impl ConditionContext for ConditionWorld<'_> {
         self.storyboard
     }
 
-    fn mark(&self, name: &str) -> Option<crate::condition::Mark> {
-        self.world.marks.get(name).cloned()
+    fn entity_id(&self, name: &str) -> Option<EntityId> {
+        self.world.id(name)
+    }
+
+    /// Entity `id` if placed (the store holds every id the storyboard was built with, and
+    /// the spawned ones after).
+    fn entity_at(&self, id: EntityId) -> Option<EntityView<'_>> {
+        let e = self.world.entities.get(id.index())?;
+        e.placed.then(|| self.world.view(e))
+    }
+
+    fn selection_id(&self, name: &str) -> Option<crate::condition::SelectionId> {
+        self.world.selections.id(name)
+    }
+
+    fn selection_members(&self, id: crate::condition::SelectionId) -> Vec<EntityId> {
+        self.world.selections.members_of(self.world, id)
+    }
+
+    fn mark_id(&self, name: &str) -> Option<crate::condition::MarkId> {
+        self.world.mark_ids.get(name)
+    }
+
+    fn mark(&self, id: crate::condition::MarkId) -> Option<&crate::condition::Mark> {
+        self.world.marks.get(id)
     }
 
     fn user_defined_value(&self, name: &str) -> Option<Value> {
@@ -376,7 +403,7 @@ impl ConditionContext for ConditionWorld<'_> {
         self.world.signals.phase(name)
     }
 
-    fn note_triggering(&self, pos: &scenario::SourcePos, value: bool, held: &[String]) {
+    fn note_triggering(&self, pos: &scenario::SourcePos, value: bool, held: &[EntityId]) {
         let time = self.world.time;
         self.world
             .selections

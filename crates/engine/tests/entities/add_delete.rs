@@ -84,3 +84,64 @@ fn deleted_entity_leaves_and_reenters_at_rest() {
     assert!((changes[0].0 - 2.05).abs() < 1e-9 && changes[0].1 == "deleted");
     assert!((changes[1].0 - 4.05).abs() < 1e-9 && changes[1].1 == "added");
 }
+
+/// The names a condition holds are resolved when the engine is built (engine
+/// condition/refs.rs): one the scenario does not declare is refused then, at the condition's
+/// file, line and column, naming the XSD element it stands in (OpenSCENARIO 1.3 §7.6.3
+/// ByEntityCondition, an `entityRef` naming a ScenarioObject or an EntitySelection). The XML
+/// reader refuses such a name already, so the model of add_delete.xosc is changed after
+/// loading: the condition "car1 near car2" (59:51) with its RelativeDistanceCondition's
+/// entityRef, then its triggering entity, renamed `ghost`.
+#[test]
+fn a_condition_naming_an_undeclared_entity_is_refused_when_the_engine_is_built() {
+    let loaded = scenario::Scenario::load(&file("add_delete.xosc")).expect("loads");
+    let build = |rename: &dyn Fn(&mut scenario::Condition)| {
+        let mut s = loaded.clone();
+        // The file's one Story, Act, ManeuverGroup and Maneuver; its third Event, "car1 near".
+        let event = &mut s.storyboard.stories[0].acts[0].maneuver_groups[0].maneuvers[0].events[2];
+        assert_eq!(event.name, "car1 near");
+        let trigger = event.start_trigger.as_mut().expect("its start trigger");
+        let condition = &mut trigger.condition_groups[0].conditions[0];
+        assert_eq!(condition.name, "car1 near car2");
+        rename(condition);
+        let network = engine::load::road_network(&s).expect("road network");
+        match Engine::new(&s, network, EngineConfig::default()) {
+            Ok(_) => panic!("built with a condition naming 'ghost'"),
+            Err(e) => e,
+        }
+    };
+    let reference = build(&|c| {
+        if let scenario::ConditionKind::ByEntity {
+            entity_condition: scenario::EntityCondition::RelativeDistance { entity_ref, .. },
+            ..
+        } = &mut c.kind
+        {
+            *entity_ref = "ghost".into();
+        }
+    });
+    let triggering = build(&|c| {
+        if let scenario::ConditionKind::ByEntity {
+            triggering_entities,
+            ..
+        } = &mut c.kind
+        {
+            triggering_entities.entity_refs = vec!["ghost".into()];
+        }
+    });
+    for (e, element) in [
+        (reference, "RelativeDistanceCondition@entityRef"),
+        (triggering, "TriggeringEntities/EntityRef@entityRef"),
+    ] {
+        let pos = e.pos().expect("the condition's position");
+        assert_eq!((pos.line, pos.col), (59, 51), "{e}");
+        assert!(pos.file.ends_with("add_delete.xosc"), "{e}");
+        let text = e.to_string();
+        let want = format!(
+            "expected a declared entity for {element} of condition 'car1 near car2', found 'ghost' at "
+        );
+        assert!(
+            text.starts_with(&want) && text.ends_with("add_delete.xosc:59:51"),
+            "{text}"
+        );
+    }
+}

@@ -292,3 +292,42 @@ fn continuous_traffic_area_replaces_vehicles_that_leave() {
     let spawned: std::collections::HashSet<&str> = area.iter().map(|r| r.name.as_str()).collect();
     assert!(spawned.len() >= 6, "{} spawned", spawned.len());
 }
+
+/// A condition on spawned objects (§7.2.2.3): their names are not declared, so a condition
+/// reaches them through a ByType selection, whose members are taken at each evaluation, by id
+/// (engine condition/refs.rs); the Walker it measures to is resolved when the engine is built.
+/// Before the first vehicle appears the selection is empty: `any` is false and nothing is an
+/// error. `src.entity_1` appears in the frame of 1.00 s at x0 (within 1 m of 100) on lane −1
+/// (y = −1.535) and moves 20 m/s · 0.05 s = 1 m per step; the Walker stands at (150, 1.535).
+/// Reference points 20 m apart: √(dx² + 3.07²) = 20 at dx = √(400 − 9.4249) = 19.76297 m,
+/// so the distance is below 20 m from the first frame with x > 150 − 19.76297 = 130.23703 m:
+/// k = ⌊130.23703 − x0⌋ + 1 steps after 1.00 s, which the triggers of that frame's step see
+/// (the event starts at t1 = 1 + 0.05·k, between 2.50 and 2.60 s for x0 in [99, 101]).
+#[test]
+fn a_condition_on_spawned_vehicles_reads_them_by_id() {
+    let (frames, events) = run(&file("condition_spawned.xosc"), EngineConfig::default());
+    let first = frames.at("src.entity_1", 1.0);
+    assert!(
+        (first.x - 100.0).abs() <= 1.0 && (first.y + 1.535).abs() < 1e-9,
+        "{first:?}"
+    );
+    let dx_max = (400.0_f64 - 3.07 * 3.07).sqrt();
+    assert!((dx_max - 19.76297).abs() < 1e-5, "{dx_max}");
+    let k = (150.0 - dx_max - first.x).floor() + 1.0;
+    let t1 = 1.0 + 0.05 * k;
+    assert!((2.5 - 1e-9..=2.6 + 1e-9).contains(&t1), "{t1}");
+    // The frame there is the first within 20 m, by the hand distance.
+    let d = |r: &Row| ((150.0 - r.x).powi(2) + (1.535 - r.y).powi(2)).sqrt();
+    assert!(d(frames.at("src.entity_1", t1)) < 20.0);
+    assert!(d(frames.at("src.entity_1", t1 - 0.05)) >= 20.0);
+    let near = events.iter().find_map(|e| match e {
+        EventRecord::Transition(t) if t.name == "near" => Some(t.time),
+        _ => None,
+    });
+    assert!(near.is_some_and(|t| (t - t1).abs() < 1e-9), "{near:?} {t1}");
+    let errors: Vec<_> = events
+        .iter()
+        .filter(|e| matches!(e, EventRecord::Error { .. }))
+        .collect();
+    assert!(errors.is_empty(), "{errors:?}");
+}

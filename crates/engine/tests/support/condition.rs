@@ -8,7 +8,7 @@ use std::collections::HashMap;
 use std::path::Path;
 use std::sync::Arc;
 
-use engine::condition::ConditionContext;
+use engine::condition::{ConditionContext, SelectionId};
 use engine::domain::{BoundingBox, Position3d, Route, Vector3};
 use engine::position::{EntityQuery, EntityView};
 use engine::storyboard::{
@@ -16,6 +16,7 @@ use engine::storyboard::{
     ConditionId, ConditionSource, EventDesc, ManeuverDesc, ManeuverGroupDesc, Priority, StateView,
     StoryDesc, Storyboard, StoryboardDesc, TransitionRecord, TransitionSink, TriggerDesc,
 };
+use engine::EntityId;
 use opendrive::{Pose, RoadNetwork, RoadPosition};
 use scenario::expr::Value;
 use scenario::{ObjectType, Orientation, Position, PositionKind, ReferenceContext, SourcePos};
@@ -195,8 +196,9 @@ impl FakeWorld {
             .network
             .locate(pose.x, pose.y, Some(pose.h))
             .filter(|rp| rp.distance <= 1e-9);
-        self.entities.retain(|e| e.name != name);
-        self.entities.push(FakeEntity {
+        // Placed again: in its own place, so that its id (its index) stays.
+        let at = self.entities.iter().position(|e| e.name == name);
+        let e = FakeEntity {
             name: name.into(),
             object_type,
             pose,
@@ -208,9 +210,18 @@ impl FakeWorld {
             bounding_box: car_box(),
             route: None,
             trajectory: None,
-        });
-        // Just pushed.
-        self.entities.last_mut().expect("entity just placed")
+        };
+        let i = match at {
+            Some(i) => {
+                self.entities[i] = e;
+                i
+            }
+            None => {
+                self.entities.push(e);
+                self.entities.len() - 1
+            }
+        };
+        &mut self.entities[i]
     }
 
     /// Places a car on lane `lane` of road `road` at `s`, heading along the lane's driving
@@ -311,8 +322,27 @@ impl ConditionContext for FakeWorld {
     fn time_of_day(&self) -> Option<f64> {
         self.time_of_day
     }
-    fn entity_selection(&self, name: &str) -> Option<Vec<String>> {
-        self.selections.get(name).cloned()
+    /// Selections numbered in the order of their names.
+    fn selection_id(&self, name: &str) -> Option<SelectionId> {
+        let mut names: Vec<&String> = self.selections.keys().collect();
+        names.sort();
+        names
+            .iter()
+            .position(|n| *n == name)
+            .map(|i| SelectionId(i as u32))
+    }
+    fn selection_members(&self, id: SelectionId) -> Vec<EntityId> {
+        let mut names: Vec<&String> = self.selections.keys().collect();
+        names.sort();
+        names
+            .get(id.0 as usize)
+            .map(|n| {
+                self.selections[*n]
+                    .iter()
+                    .filter_map(|m| self.entity_id(m))
+                    .collect()
+            })
+            .unwrap_or_default()
     }
 }
 

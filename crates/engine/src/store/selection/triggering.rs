@@ -26,6 +26,8 @@ use std::collections::{HashMap, VecDeque};
 
 use scenario::SourcePos;
 
+use crate::world::EntityId;
+
 /// A condition of an Act's start trigger: its place in the file and its `delay` (s).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct ConditionRef {
@@ -40,7 +42,7 @@ pub(crate) struct ConditionRef {
 struct Report {
     time: f64,
     value: bool,
-    held: Vec<String>,
+    held: Vec<EntityId>,
 }
 
 /// The reports of the watched conditions, written while conditions are evaluated (they see the
@@ -61,7 +63,7 @@ impl TriggerReports {
 
     /// Records an evaluation of the condition at `pos` at simulation `time`: its raw `value`
     /// and the triggering entities it `held` for.
-    pub(crate) fn note(&self, pos: &SourcePos, time: f64, value: bool, held: &[String]) {
+    pub(crate) fn note(&self, pos: &SourcePos, time: f64, value: bool, held: &[EntityId]) {
         let Some(&delay) = self.watched.get(pos) else {
             return;
         };
@@ -98,7 +100,7 @@ impl TriggerReports {
 
     /// The triggering entities of a start trigger with these condition `groups` (module doc),
     /// each once, in the order of the conditions.
-    pub(crate) fn entities(&self, groups: &[Vec<ConditionRef>]) -> Vec<String> {
+    pub(crate) fn entities(&self, groups: &[Vec<ConditionRef>]) -> Vec<EntityId> {
         let history = self.history.borrow();
         let report = |c: &ConditionRef| history.get(&c.pos).and_then(|r| Self::delayed(r, c));
         let firing: Vec<&Vec<ConditionRef>> = groups
@@ -110,15 +112,15 @@ impl TriggerReports {
         } else {
             firing
         };
-        let mut names: Vec<String> = Vec::new();
+        let mut ids: Vec<EntityId> = Vec::new();
         for c in chosen.into_iter().flatten() {
             for n in report(c).map(|r| r.held).unwrap_or_default() {
-                if !names.contains(&n) {
-                    names.push(n);
+                if !ids.contains(&n) {
+                    ids.push(n);
                 }
             }
         }
-        names
+        ids
     }
 }
 
@@ -147,18 +149,19 @@ mod tests {
         let c = at(1, 0.2);
         let mut reports = TriggerReports::default();
         reports.watch(&c);
-        let names = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();
-        reports.note(&c.pos, 0.0, true, &names(&["A"]));
-        reports.note(&c.pos, 0.1, true, &names(&["A", "B"]));
+        // Entities A, B, C: ids 0, 1, 2.
+        let (a, b, c_) = (EntityId(0), EntityId(1), EntityId(2));
+        reports.note(&c.pos, 0.0, true, &[a]);
+        reports.note(&c.pos, 0.1, true, &[a, b]);
         reports.note(&c.pos, 0.2, false, &[]);
         // At 0.2 the value of 0.0 reaches the trigger: A.
-        assert_eq!(reports.entities(&[vec![c.clone()]]), ["A"]);
+        assert_eq!(reports.entities(&[vec![c.clone()]]), [a]);
         reports.note(&c.pos, 0.3, false, &[]);
-        assert_eq!(reports.entities(&[vec![c.clone()]]), ["A", "B"]);
+        assert_eq!(reports.entities(&[vec![c.clone()]]), [a, b]);
         assert_eq!(reports.history.borrow()[&c.pos].len(), 3, "0.0 dropped");
         // An unwatched condition keeps nothing.
         let other = at(2, 0.0);
-        reports.note(&other.pos, 0.3, true, &names(&["C"]));
+        reports.note(&other.pos, 0.3, true, &[c_]);
         assert!(reports.entities(&[vec![other]]).is_empty());
     }
 
@@ -171,15 +174,16 @@ mod tests {
         for x in [&a, &b, &c] {
             reports.watch(x);
         }
-        let one = |s: &str| vec![s.to_string()];
-        reports.note(&a.pos, 1.0, true, &one("A"));
-        reports.note(&b.pos, 1.0, true, &one("B"));
+        // Entities A, B: ids 0, 1.
+        let (ea, eb) = (EntityId(0), EntityId(1));
+        reports.note(&a.pos, 1.0, true, &[ea]);
+        reports.note(&b.pos, 1.0, true, &[eb]);
         reports.note(&c.pos, 1.0, false, &[]);
         let groups = [vec![a.clone()], vec![b.clone(), c.clone()]];
-        assert_eq!(reports.entities(&groups), ["A"]);
+        assert_eq!(reports.entities(&groups), [ea]);
         reports.note(&a.pos, 1.1, false, &[]);
-        reports.note(&b.pos, 1.1, true, &one("B"));
+        reports.note(&b.pos, 1.1, true, &[eb]);
         reports.note(&c.pos, 1.1, false, &[]);
-        assert_eq!(reports.entities(&groups), ["B"]);
+        assert_eq!(reports.entities(&groups), [eb]);
     }
 }

@@ -1,0 +1,160 @@
+//! The names a condition holds, resolved once (OpenSCENARIO 1.3 §7.6.3 "ByEntityCondition":
+//! `TriggeringEntities/EntityRef@entityRef` and the EntityCondition's own `entityRef`s, an
+//! XSD `EntityRef` naming a ScenarioObject or an EntitySelection, §7.2.2; oscsim's marks,
+//! condition/mark.rs).
+//!
+//! The runtime resolves every condition when it builds the storyboard (`runtime::build`): each
+//! entity to its id in the world's store, each selection to its index among the scenario's
+//! selections, each mark to its slot; evaluation then reads by id and never looks a name up. A
+//! name the scenario does not declare is an error at the condition then (a load error), as an
+//! undeclared `entityRef` of an action is (the XML reader refuses one already; a model built
+//! by other means may hold one).
+//!
+//! Entities that are not in the scene when the storyboard is built keep their ids all the
+//! same: an entity an AddEntityAction adds later (§7.2.2.3, XSD `AddEntityAction`) and a
+//! member of DSL random traffic created later are declared ScenarioObjects with an id from the
+//! start, not placed until they enter (a condition on one before reads its "no placed entity"
+//! error, as before). Spawned objects (§7.2.2.3: a traffic action's vehicles, named by the
+//! engine when they appear) have no declared name a condition could hold (the XML reader
+//! refuses an undeclared `entityRef`); a condition reaches them only through an
+//! EntitySelection, whose members §7.2.2.2 takes as they are when it is used: a selection is
+//! resolved to its index here and its members are read at each evaluation, by id. So no
+//! reference is kept by name.
+
+use scenario::{CollisionTarget, Condition, ConditionKind, EntityCondition, TimeToCollisionTarget};
+
+use super::mark::MarkId;
+use crate::world::EntityId;
+
+/// Handle of an EntitySelection: its index among the scenario's selections, in declaration
+/// order (a runtime's own numbering; `ConditionContext::selection_id`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct SelectionId(pub u32);
+
+/// A triggering entity reference, resolved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Triggering {
+    /// A ScenarioObject.
+    Entity(EntityId),
+    /// An EntitySelection: its members at each evaluation (§7.2.2.2).
+    Selection(SelectionId),
+}
+
+/// The names of one condition, resolved (module doc); empty for a ByValueCondition.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub(crate) struct ConditionRefs {
+    /// Per `TriggeringEntities::entity_refs`, in order.
+    pub triggering: Vec<Triggering>,
+    /// The EntityCondition's reference entities, in the order of [`reference_names`].
+    pub references: Vec<EntityId>,
+    /// The mark a TraveledSinceMark or GapReachedSinceMark reads (`None`: none noted by
+    /// that name, ever; or the condition reads none).
+    pub mark: Option<MarkId>,
+}
+
+/// What resolving reads: the runtime's world when it builds the storyboard, or a
+/// `ConditionContext` (the `evaluate` front door).
+pub(crate) trait Names {
+    /// The id of the declared entity `name`.
+    fn entity(&self, name: &str) -> Option<EntityId>;
+    /// The handle of EntitySelection `name`.
+    fn selection(&self, name: &str) -> Option<SelectionId>;
+    /// The slot of mark `name` (`None`: no mark by that name can be noted).
+    fn mark(&mut self, name: &str) -> Option<MarkId>;
+}
+
+/// A name that names nothing declared: the XSD element and attribute it stands in, and the
+/// name.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Unresolved {
+    /// E.g. `RelativeDistanceCondition@entityRef`.
+    pub element: &'static str,
+    /// The name written.
+    pub name: String,
+}
+
+/// The entity references of `condition`'s EntityCondition besides the triggering entities,
+/// each with the XSD element and attribute it is written in.
+pub(crate) fn reference_names(condition: &EntityCondition) -> Vec<(&str, &'static str)> {
+    match condition {
+        EntityCondition::Collision(CollisionTarget::EntityRef(n)) => {
+            vec![(n.as_str(), "CollisionCondition/EntityRef@entityRef")]
+        }
+        EntityCondition::TimeHeadway { entity_ref, .. } => {
+            vec![(entity_ref.as_str(), "TimeHeadwayCondition@entityRef")]
+        }
+        EntityCondition::TimeToCollision {
+            target: TimeToCollisionTarget::EntityRef(n),
+            ..
+        } => vec![(
+            n.as_str(),
+            "TimeToCollisionConditionTarget/EntityRef@entityRef",
+        )],
+        EntityCondition::RelativeSpeed { entity_ref, .. } => {
+            vec![(entity_ref.as_str(), "RelativeSpeedCondition@entityRef")]
+        }
+        EntityCondition::RelativeDistance { entity_ref, .. } => {
+            vec![(entity_ref.as_str(), "RelativeDistanceCondition@entityRef")]
+        }
+        EntityCondition::RelativeClearance { entity_refs, .. } => entity_refs
+            .iter()
+            .map(|n| (n.as_str(), "RelativeClearanceCondition/EntityRef@entityRef"))
+            .collect(),
+        EntityCondition::RelativeAngle { entity_ref, .. } => {
+            vec![(entity_ref.as_str(), "RelativeAngleCondition@entityRef")]
+        }
+        EntityCondition::GapReachedSinceMark { gap, .. } => {
+            vec![(
+                gap.entity_ref.as_str(),
+                "GapReachedSinceMark's gap (no XML form)",
+            )]
+        }
+        _ => Vec::new(),
+    }
+}
+
+impl ConditionRefs {
+    /// The names of `condition` resolved through `names`; the first that names nothing
+    /// declared is the error.
+    pub(crate) fn resolve(
+        condition: &Condition,
+        names: &mut dyn Names,
+    ) -> Result<Self, Unresolved> {
+        let ConditionKind::ByEntity {
+            triggering_entities,
+            entity_condition,
+        } = &condition.kind
+        else {
+            return Ok(Self::default());
+        };
+        let unresolved = |element, name: &str| Unresolved {
+            element,
+            name: name.to_owned(),
+        };
+        let triggering = triggering_entities
+            .entity_refs
+            .iter()
+            .map(|n| match names.entity(n) {
+                Some(id) => Ok(Triggering::Entity(id)),
+                None => names
+                    .selection(n)
+                    .map(Triggering::Selection)
+                    .ok_or_else(|| unresolved("TriggeringEntities/EntityRef@entityRef", n)),
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let references = reference_names(entity_condition)
+            .into_iter()
+            .map(|(n, element)| names.entity(n).ok_or_else(|| unresolved(element, n)))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mark = match entity_condition {
+            EntityCondition::TraveledSinceMark { mark, .. }
+            | EntityCondition::GapReachedSinceMark { mark, .. } => names.mark(mark),
+            _ => None,
+        };
+        Ok(Self {
+            triggering,
+            references,
+            mark,
+        })
+    }
+}
