@@ -46,12 +46,16 @@
 //! or an x the engine moves) the engine follows them as they begin (oscsim's
 //! `LateralAction::FollowLanes`: the lane counted from x's new one, its transition at x's
 //! weight at every step), beside its held check; where the invocation has several lane
-//! relations, only the held checks (the engine follows one actor).
+//! relations, one following of them all (the lane counted from whichever x just began a
+//! change; where several begin in the same step, the first in the modifiers' order: such
+//! relations that then disagree are over-constrained, and the engine's held check of each
+//! reports the one that fails), and where one of their x's is the engine's to move, every
+//! one of them is the engine's (its following and held checks, not the plan's).
 //! `lateral(…, side_of/left_of/right_of: x)` at: all is `lateral_follow`'s.
 
 use scenario::{
-    CoordinateSystem, DynamicsShape, LaneChangeTarget, LateralAction, LongitudinalAction,
-    LongitudinalDisplacement, PrivateAction, SpeedTarget,
+    CoordinateSystem, DynamicsShape, FollowedLane, LaneChangeTarget, LateralAction,
+    LongitudinalAction, LongitudinalDisplacement, PrivateAction, SpeedTarget,
 };
 
 use super::motion::{sinusoidal_over, speed_action};
@@ -86,6 +90,21 @@ fn moves_sideways(mods: &[Modifier]) -> bool {
             ModKind::ChangeLane | ModKind::Lateral | ModKind::KeepLane
         ) || (q.kind == ModKind::Lane && q.at == At::End)
     })
+}
+
+/// Whether an invocation `kind` with `mods` (`moves`: its relations may set the actor's motion)
+/// has the actor follow the lane changes of the actors its `lane(…: x)` at: all relate it to:
+/// a `move()`/`drive()` with no sideways motion of its own (module doc).
+fn follows_lanes(kind: Action, mods: &[Modifier], moves: bool) -> bool {
+    moves && kind == Action::Move && !moves_sideways(mods)
+}
+
+/// The `lane(…: x)` relations at: all of `mods` whose x's lane changes an actor with no
+/// sideways motion of its own follows, in the modifiers' order (with `track: projected` x's
+/// lane is the one at the phase start: nothing to follow).
+fn followed_lanes(mods: &[Modifier]) -> impl Iterator<Item = &Modifier> {
+    mods.iter()
+        .filter(|q| q.kind == ModKind::Lane && q.at == At::All && !q.projected && relation(q))
 }
 
 /// Whether `m` relates the actor to another one along the road or by lane.
@@ -144,13 +163,25 @@ impl Planner<'_> {
             return Ok(());
         }
         // x moved by the engine (a gap action's or a model's controller): the plan has no
-        // track of x to check against, the engine's held check is the check.
+        // track of x to check against, the engine's held check is the check. Where the actor
+        // follows the lanes of several, one of them moved by the engine makes every one's the
+        // engine's: its following of them all, and its held checks.
         let x = self.reference_of(m)?;
-        let te = te.filter(|_| !self.engine_moved.contains_key(&x));
+        let follows = m.kind == ModKind::Lane && follows_lanes(kind, mods, moves);
+        let engine_moved = match follows {
+            true => followed_lanes(mods)
+                .map(|q| self.reference_of(q))
+                .collect::<Result<Vec<_>, Error>>()?,
+            false => vec![x.clone()],
+        };
+        let te = te.filter(|_| {
+            !engine_moved
+                .iter()
+                .any(|x| self.engine_moved.contains_key(x))
+        });
         match (t0, te) {
             (Some(t0), Some(te)) => {
-                if moves && m.kind == ModKind::Lane && kind == Action::Move && !moves_sideways(mods)
-                {
+                if follows {
                     self.follow_lanes(m, target, (&x, t0, te), name, out)?;
                 }
                 self.held_relations
@@ -170,10 +201,13 @@ impl Planner<'_> {
         Ok(())
     }
 
-    /// `lane(…: x)` at: all of a `move()`/`drive()` of `target` with no sideways motion of its
-    /// own (module doc) where the plan does not know x's lane changes in the phase (a run-time
-    /// start or end, or an x the engine moves): the engine follows them as they begin
+    /// The `lane(…: x)` at: all of a `move()`/`drive()` of `target` with no sideways motion of
+    /// its own (module doc) where the plan does not know x's lane changes in the phase (a
+    /// run-time start or end, or an x the engine moves): the engine follows them as they begin
     /// (oscsim's `LateralAction::FollowLanes`, counted as the check counts: `start_state`).
+    /// One action for every such relation of the invocation, written at the first (`m`): the
+    /// actor takes the lane counted from whichever reference just began a change, the first
+    /// of them in the modifiers' order where several begin at once.
     fn follow_lanes_at_run_time(
         &self,
         m: &Modifier,
@@ -182,24 +216,20 @@ impl Planner<'_> {
         name: &mut dyn FnMut(&str) -> String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
-        // One lane relation: the engine follows one actor's lane changes (with several, each
-        // is the engine's held check only).
-        let lanes = mods
-            .iter()
-            .filter(|q| q.kind == ModKind::Lane && relation(q))
-            .count();
-        if !(moves && m.kind == ModKind::Lane && kind == Action::Move && !moves_sideways(mods))
-            || lanes != 1
-        {
+        let first = followed_lanes(mods)
+            .next()
+            .is_some_and(|q| std::ptr::eq(q, m));
+        if !(first && follows_lanes(kind, mods, moves)) {
             return Ok(());
         }
-        if let Some((x, value)) = self.start_state(m, target)?.lane_of {
-            let follow = PrivateAction::Lateral(LateralAction::FollowLanes {
-                entity_ref: x,
-                value,
-            });
-            out.push(Planned::with_phase(target, name("lanes"), follow, &m.site));
+        let mut followed = Vec::new();
+        for q in followed_lanes(mods) {
+            if let Some((entity_ref, value)) = self.start_state(q, target)?.lane_of {
+                followed.push(FollowedLane { entity_ref, value });
+            }
         }
+        let follow = PrivateAction::Lateral(LateralAction::FollowLanes(followed));
+        out.push(Planned::with_phase(target, name("lanes"), follow, &m.site));
         Ok(())
     }
 

@@ -7,7 +7,7 @@ use scenario::{ConditionGroup, StoryboardElementState, Trigger};
 use super::planner::{no_end, Planner};
 use super::types::{PhasePlan, When};
 use crate::error::Error;
-use crate::resolve::{At, Kind, ModKind, Phase};
+use crate::resolve::{At, Invoke, Kind, ModKind, Phase};
 use crate::trigger::act_state;
 
 impl Planner<'_> {
@@ -163,10 +163,9 @@ impl Planner<'_> {
                 // Members planned (and written) first: those whose motion others refer to, and
                 // those that end on their own, so that members ending with the parallel see
                 // their end in the same step.
+                let levels = relative_levels(&p.children);
                 let mut order: Vec<(usize, &Phase)> = p.children.iter().enumerate().collect();
-                order.sort_by_key(|(_, c)| {
-                    (relative_end(c), c.duration.is_none() && c.until.is_none())
-                });
+                order.sort_by_key(|&(i, c)| (levels[i], c.duration.is_none() && c.until.is_none()));
                 // `overlap:` (plan::overlap): when each member starts; a kind that relates the
                 // ends plans each member with its own end, checked below.
                 let starts = match overlap {
@@ -286,6 +285,66 @@ impl Planner<'_> {
             command,
         });
         start
+    }
+}
+
+/// The keys of the order in which a parallel plans its `members` (a stable sort: members of
+/// one key keep their written order): [`relative_end`], raised past each member with a
+/// nonzero key whose actor (or the actor of an invocation in it) a relation in the member
+/// refers to, so that a chain is planned from its head whatever the written order: car
+/// `lane(right_of: ego)` after ego `lane(same_as: npc)`, whose lane changes car's relation
+/// reads (`held_relation`). A cycle keeps the order of the last round (rounds stop at the
+/// members' count).
+fn relative_levels(members: &[Phase]) -> Vec<usize> {
+    let mut level: Vec<usize> = members.iter().map(|c| relative_end(c).into()).collect();
+    let (mut actors, mut refs) = (Vec::new(), Vec::new());
+    for c in members {
+        let (mut a, mut r) = (Vec::new(), Vec::new());
+        invocations(c, &mut |inv| {
+            a.push(inv.actor.as_str());
+            for m in &inv.modifiers {
+                r.extend(REFERENCES.iter().filter_map(|k| m.arg(k)?.path.as_deref()));
+            }
+        });
+        actors.push(a);
+        refs.push(r);
+    }
+    let n = members.len();
+    for _ in 0..n {
+        let mut raised = false;
+        for i in 0..n {
+            for j in 0..n {
+                let follows = refs[i].iter().any(|x| actors[j].contains(x));
+                if i != j && level[j] > 0 && level[i] <= level[j] && follows {
+                    level[i] = level[j] + 1;
+                    raised = true;
+                }
+            }
+        }
+        if !raised {
+            break;
+        }
+    }
+    level
+}
+
+/// The arguments of a modifier that name another actor it relates the actor to.
+const REFERENCES: [&str; 8] = [
+    "same_as",
+    "side_of",
+    "left_of",
+    "right_of",
+    "ahead_of",
+    "behind",
+    "faster_than",
+    "slower_than",
+];
+
+/// Calls `f` with each invocation in `p` (`p` itself, or its members at any depth).
+fn invocations<'a>(p: &'a Phase, f: &mut dyn FnMut(&'a Invoke)) {
+    match &p.kind {
+        Kind::Invoke(inv) => f(inv),
+        _ => p.children.iter().for_each(|c| invocations(c, f)),
     }
 }
 

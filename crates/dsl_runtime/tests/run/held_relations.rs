@@ -476,6 +476,120 @@ fn a_lane_same_as_another_that_changes_lane_after_an_until_is_followed() {
     r.held("do.both.0/ego/1:check", (5.05, 9.05));
 }
 
+/// (name, the lane before and after the border at 7.05 s, y at the change's start) of each
+/// actor `want` asks: from 5.05 s, 80 steps, y = y0 + 3.5·f at every step, f = (1 −
+/// cos(π·τ/4))/2, τ = t − 5.05 (npc's 4 s change from lane -2 into -1, followed), the lane
+/// `before` until the border step and `after` from the step after it; and `who`'s y at each
+/// (t, y) of `by_hand`, worked by hand (within 1e-6 m).
+fn lanes_followed(
+    r: &crate::support::Run,
+    want: &[(&str, (i32, i32), f64)],
+    (who, by_hand): (&str, &[(f64, f64)]),
+) {
+    let f = |t: f64| (1.0 - (std::f64::consts::PI * (t.min(9.05) - 5.05) / 4.0).cos()) / 2.0;
+    for k in 0..=80 {
+        let t = 5.05 + k as f64 * DT;
+        for &(name, (before, after), y0) in want {
+            let e = r.at(t, name);
+            let y = y0 + 3.5 * f(t);
+            assert!((e.y - y).abs() < S_TOL, "{name} {t}: {e:?}, want y {y}");
+            if (t - 7.05).abs() > DT / 2.0 {
+                let lane = if t < 7.05 { before } else { after };
+                assert_eq!(e.lane, lane, "{name} {t}: {e:?}");
+            }
+        }
+    }
+    for &(t, y) in by_hand {
+        let e = r.at(t, who);
+        assert!((e.y - y).abs() < 1e-6, "{who} {t}: {e:?}");
+    }
+}
+
+/// The run of `tests/scenarios/NAME.osc`, which passes, with do.approach until 5.05 s and
+/// do.both from there to 9.05 s, each of `want` following npc's change as
+/// [`lanes_followed`] has it.
+fn followed_after_until(
+    name: &str,
+    want: &[(&str, (i32, i32), f64)],
+    by_hand: (&str, &[(f64, f64)]),
+) -> crate::support::Run {
+    let r = passes(name);
+    let both = [("do.approach", 0.0, 5.05), ("do.both", 5.05, 9.05)];
+    crate::runtime::phases(&r, &both);
+    lanes_followed(&r, want, by_hand);
+    r
+}
+
+/// lane_two_followed_runtime.osc: after the until at 5.05 s npc (-2 into -1) and truck (-3
+/// into -2) change lanes at once over 4 s; ego, `lane(same_as: npc)` and `lane(left_of:
+/// truck)`, follows both: y = -5.25 + 3.5·f at every step (-4.737437 m at 6.05 s, -3.5 m at
+/// 7.05 s, -2.262563 m at 8.05 s, by hand), npc's, in -2 then -1; both held checks pass.
+/// Before, with two lane relations, ego kept lane -2 and the held checks failed.
+#[test]
+fn two_lane_relations_whose_references_change_together_after_an_until_are_followed() {
+    let r = followed_after_until(
+        "held/lane_two_followed_runtime",
+        &[
+            ("npc", (-2, -1), -5.25),
+            ("truck", (-3, -2), -8.75),
+            ("ego", (-2, -1), -5.25),
+        ],
+        ("ego", &[(6.05, -4.737437), (7.05, -3.5), (8.05, -2.262563)]),
+    );
+    r.held("do.both.0/ego/1:check", (5.05, 9.05));
+    r.held("do.both.0/ego/3:check", (5.05, 9.05));
+}
+
+/// lane_two_conflict_runtime.osc: after the until at 5.05 s npc changes from -2 into -1 and
+/// truck from -1 into -2 at once; ego's `lane(same_as: npc)` and `lane(right_of: truck)` then
+/// disagree (-1 and -3). ego follows the first relation, npc's (y = -5.25 + 3.5·f, -3.431295 m
+/// at 7.10 s), and the held check of the second fails at 7.10 s, the first step past the
+/// border (npc and ego in -1, truck in -2): an error record and a failed run.
+#[test]
+fn two_lane_relations_whose_references_change_in_disagreement_follow_the_first_and_fail_the_run() {
+    let name = "held/lane_two_conflict_runtime";
+    let want = "expected 'ego' in lane -3 of road 1, 1 lane to the right of 'truck''s lane -2 (lane(…) at ";
+    let tail =
+        "held/lane_two_conflict_runtime.osc:39:17), found it in lane -1 of road 1 at t = 7.100 s";
+    fails(name, (want, tail), "do.both.0/ego/3:check", 7.15);
+    // The frames up to the failure: the run stopped at 7.10 s, before the check's step.
+    let r = run(name, 0, Some(7.1));
+    let ego = r.at(7.1, "ego");
+    assert!((ego.y + 3.431295).abs() < 1e-6 && ego.lane == -1, "{ego:?}");
+    let truck = r.at(7.1, "truck");
+    assert!(
+        (truck.y + 3.568705).abs() < 1e-6 && truck.lane == -2,
+        "{truck:?}"
+    );
+}
+
+/// The chain of lane_chain_followed(_runtime).osc: npc's change, ego at npc's y, car one lane
+/// to its right, van at ego's y.
+const CHAIN: [(&str, (i32, i32), f64); 4] = [
+    ("npc", (-2, -1), -5.25),
+    ("ego", (-2, -1), -5.25),
+    ("car", (-3, -2), -8.75),
+    ("van", (-2, -1), -5.25),
+];
+
+/// lane_chain_followed_runtime.osc: after the until at 5.05 s npc changes from -2 into -1 over
+/// 4 s; ego `lane(same_as: npc)`; car `lane(right_of: ego)`, whose invocation is written
+/// before ego's, sees ego's new lane in the same step (planned after ego, and the engine steps
+/// it after ego's following): y = -8.75 + 3.5·f at every step (-8.237437 m at
+/// 6.05 s, -7.0 m at 7.05 s, -5.762563 m at 8.05 s, by hand), -3 then -2; van `lane(same_as:
+/// ego)`, after it, at ego's y, -2 then -1. Every held check passes.
+#[test]
+fn a_chain_of_lane_relations_after_an_until_is_followed_in_the_same_step() {
+    let r = followed_after_until(
+        "held/lane_chain_followed_runtime",
+        &CHAIN,
+        ("car", &[(6.05, -8.237437), (7.05, -7.0), (8.05, -5.762563)]),
+    );
+    r.held("do.both.0/car/1:check", (5.05, 9.05));
+    r.held("do.both.1/ego/1:check", (5.05, 9.05));
+    r.held("do.both.3/van/1:check", (5.05, 9.05));
+}
+
 /// The engine resolves the entities a state check names once, when it builds the storyboard,
 /// and reads them by id at every step after (engine `actions::check::CheckRefs`): a check that
 /// names an entity the scenario does not declare is refused then, at the check's file, line
@@ -525,4 +639,15 @@ fn a_state_check_naming_an_undeclared_entity_is_refused_when_the_engine_is_built
     let tail = "held/behind_held_runtime.osc:27:17, found 'ghost' at ";
     let text = e.to_string();
     assert!(text.starts_with(want) && text.contains(tail), "{text}");
+}
+
+/// lane_chain_followed.osc: the chain of lane_chain_followed_runtime.osc at a start the plan
+/// knows (5.05 s): car `lane(right_of: ego)`, written before ego `lane(same_as: npc)`, is
+/// planned after it and changes lane with it, y = -8.75 + 3.5·f at every step (-7.0 m at
+/// 7.05 s, by hand); ego and van at npc's y. Before, the plan refused it (car in lane -3 where
+/// -2 was asked at 9.05 s).
+#[test]
+fn a_chain_of_lane_relations_at_a_known_start_is_planned_from_its_head() {
+    let r = passes("held/lane_chain_followed");
+    lanes_followed(&r, &CHAIN, ("car", &[(7.05, -7.0)]));
 }

@@ -1,4 +1,4 @@
-//! oscsim's following of another entity's lane changes (`scenario::LateralAction::FollowLanes`,
+//! oscsim's following of other entities' lane changes (`scenario::LateralAction::FollowLanes`,
 //! no XML form): the OpenSCENARIO DSL runtime's `lane(same_as/side_of/left_of/right_of: x)`
 //! at: all of an actor with no sideways motion of its own in a phase that starts on a run-time
 //! condition (ASAM OpenSCENARIO DSL 2.1 §8.9 `lane`, §8.9.1.1.1: the constraint "holds
@@ -16,8 +16,21 @@
 //! where the lanes are as wide, cross their lanes' borders in the same step. When x's
 //! transition ends, the actor's does. x on another road than it was (the lane ids of the next
 //! road may differ) is read afresh there, not followed. Held until the phase's Act stops it.
+//!
+//! Several references (one per `lane(…: x)` of the invocation, in the modifiers' order): the
+//! actor takes the lane counted from whichever reference just began a change, and mirrors
+//! that reference's transition; a reference that begins one while another's is mirrored
+//! takes over, from where the actor is (its transition then starts at the new reference's
+//! weight). Where several begin in the same step the first of them in the list is followed
+//! (oscsim's rule; the standard gives none: such relations that then disagree are
+//! over-constrained, and the engine's held check of each reports the one that fails as an
+//! `error` record and a failed run).
+//!
+//! A chain (car follows ego, who follows npc): the action stage steps the followings of lanes
+//! last, each after those of the actors it follows (`ActionTable::step_all`), so car reads
+//! ego's new lane and weight of the same step, whatever their order in the storyboard.
 
-use scenario::SourcePos;
+use scenario::{FollowedLane, SourcePos};
 
 use super::Part;
 use crate::error::Error;
@@ -29,32 +42,53 @@ use crate::world::entity::EntityId;
 use crate::world::lane_track::Blend;
 use crate::world::lanes::lane_shift;
 
-/// A running following of another entity's lane changes on one actor.
+/// A running following of other entities' lane changes on one actor.
 #[derive(Debug, Clone)]
 pub(crate) struct LaneFollowState {
-    /// The entity followed.
-    reference: EntityId,
+    /// The entities followed, in the modifiers' order.
+    references: Vec<Reference>,
+    /// The index in `references` of the one whose change is being mirrored.
+    mirroring: Option<usize>,
+}
+
+/// One entity followed.
+#[derive(Debug, Clone)]
+struct Reference {
+    /// The entity.
+    id: EntityId,
     /// Lanes to the left of its lane (0: its lane).
     shift: i32,
     /// Its road and lane at the last step.
     seen: Option<(String, i32)>,
-    /// A change of its is being mirrored.
-    mirroring: bool,
 }
 
-/// Starts following `name`'s lane changes on `actor`, `shift` lanes to the left of its lane.
+impl LaneFollowState {
+    /// The entities followed.
+    pub(crate) fn references(&self) -> impl Iterator<Item = EntityId> + '_ {
+        self.references.iter().map(|r| r.id)
+    }
+}
+
+/// Starts following the lane changes of each of `followed` on an actor.
 pub(crate) fn start(
     world: &World,
-    (name, shift): (&str, i32),
+    followed: &[FollowedLane],
     pos: &SourcePos,
 ) -> Result<Part, Error> {
-    let reference = entity_ref(world, name, pos)?;
-    let seen = lane_of(world, reference);
+    let references = followed
+        .iter()
+        .map(|f| {
+            let id = entity_ref(world, &f.entity_ref, pos)?;
+            Ok(Reference {
+                id,
+                shift: f.value,
+                seen: lane_of(world, id),
+            })
+        })
+        .collect::<Result<_, Error>>()?;
     Ok(Part::LaneFollow(LaneFollowState {
-        reference,
-        shift,
-        seen,
-        mirroring: false,
+        references,
+        mirroring: None,
     }))
 }
 
@@ -70,30 +104,43 @@ fn lane_of(world: &World, id: EntityId) -> Option<(String, i32)> {
     Some((t.road_id.clone(), lane))
 }
 
-/// One step: mirror a change of the reference's that began, or the one under way (module doc).
+/// One step: mirror a change of a reference's that began, or the one under way (module doc).
 pub(crate) fn step(world: &mut World, actor: EntityId, s: &mut LaneFollowState) -> ActionStatus {
-    let x = world.entity(s.reference);
-    if !x.placed {
-        return ActionStatus::Stopped;
+    // The first reference that began a change on its road in this step: its index, the lane
+    // counted from its new one, its transition.
+    let mut began: Option<(usize, i32, Blend)> = None;
+    for (i, r) in s.references.iter_mut().enumerate() {
+        let x = world.entity(r.id);
+        if !x.placed {
+            return ActionStatus::Stopped;
+        }
+        let Some(xt) = x.track.as_ref() else {
+            continue;
+        };
+        let lane = xt.lane_id;
+        // Compared in place: the road id is copied only when x's road or lane changed, not
+        // at every step.
+        let same_road = r.seen.as_ref().is_some_and(|(road, _)| *road == xt.road_id);
+        let changed = !(same_road && r.seen.as_ref().is_some_and(|(_, l)| *l == lane));
+        if changed {
+            r.seen = Some((xt.road_id.clone(), lane));
+        }
+        if let (Some(b), true, true, None) = (xt.blend, changed, same_road, began) {
+            began = Some((i, lane_shift(lane, r.shift, xt.direction), b));
+        }
     }
-    let Some(xt) = x.track.as_ref() else {
-        return ActionStatus::Running;
-    };
-    let (lane, direction, blend) = (xt.lane_id, xt.direction, xt.blend);
-    // Compared in place: the road id is copied only when x's road or lane changed, not at
-    // every step.
-    let same_road = s.seen.as_ref().is_some_and(|(r, _)| *r == xt.road_id);
-    let began = !(same_road && s.seen.as_ref().is_some_and(|(_, l)| *l == lane));
-    if began {
-        s.seen = Some((xt.road_id.clone(), lane));
-    }
+    // The transition of the reference mirrored, as it stands after this step's.
+    let mirrored = s
+        .mirroring
+        .and_then(|i| s.references.get(i))
+        .and_then(|r| world.entity(r.id).track.as_ref())
+        .map(|t| t.blend);
     let (net, e) = world.entity_on_network_mut(actor);
     let Some(track) = e.track.as_mut() else {
         return ActionStatus::Running;
     };
-    match blend {
-        Some(b) if began && same_road => {
-            let target = lane_shift(lane, s.shift, direction);
+    match (began, mirrored) {
+        (Some((i, target, b)), _) => {
             // From where the actor is: the lane holding its t and the offset there (as a
             // LaneChangeAction starts, `lane_change::begin`).
             let (from_lane, from_offset) = net
@@ -108,19 +155,19 @@ pub(crate) fn step(world: &mut World, actor: EntityId, s: &mut LaneFollowState) 
                 weight: b.weight,
                 weight_per_m: b.weight_per_m,
             });
-            s.mirroring = true;
+            s.mirroring = Some(i);
         }
-        Some(b) if s.mirroring => {
+        (None, Some(Some(b))) => {
             if let Some(a) = &mut track.blend {
                 a.weight = b.weight;
                 a.weight_per_m = b.weight_per_m;
             }
         }
-        None if s.mirroring => {
+        (None, Some(None)) => {
             track.blend = None;
-            s.mirroring = false;
+            s.mirroring = None;
         }
-        _ => {}
+        (None, None) => {}
     }
     ActionStatus::Running
 }

@@ -130,6 +130,9 @@ pub(crate) struct ActionTable {
     /// by each stage 2 to whether it found one still running; stage 2 steps them in a pass of
     /// their own before every other part only then.
     checks_held: bool,
+    /// The followings of lanes (slot, part, actor) the following pass of stage 2 sets aside
+    /// to step last, in chain order (`step_lane_follows`); empty between stages.
+    lane_follows: Vec<(u32, usize, EntityId)>,
 }
 
 /// The passes of stage 2 over the running parts (`ActionTable::step_all`), in order.
@@ -186,8 +189,9 @@ impl ActionTable {
     /// slot order read the reference's speed at the step's end and its actor's at its start,
     /// issue 27); the RelativeAccelerationActions and the lane changes beside a moving entity
     /// last, so that they read their references' speeds and lateral positions at the step's
-    /// end (relative_acceleration.rs, lateral_follow.rs). Returns the actions that failed in
-    /// the step (their names and errors), which stop the run.
+    /// end (relative_acceleration.rs, lateral_follow.rs), and the followings of lanes after
+    /// them, each after those of the actors it follows (`step_lane_follows`). Returns the
+    /// actions that failed in the step (their names and errors), which stop the run.
     pub fn step_all(&mut self, world: &mut World, now: f64, dt: f64) -> Vec<(String, Error)> {
         let mut failures = Vec::new();
         self.reached.clear();
@@ -207,7 +211,7 @@ impl ActionTable {
             for &index in &live {
                 let slot = &mut self.slots[index as usize];
                 let id = ActionId(index);
-                for (part, &actor) in slot.parts.iter_mut().zip(&slot.actors) {
+                for (j, (part, &actor)) in slot.parts.iter_mut().zip(&slot.actors).enumerate() {
                     let kind = match part {
                         Part::Held(_) => Pass::Checks,
                         Part::RelativeAcceleration(_)
@@ -217,6 +221,10 @@ impl ActionTable {
                     };
                     deferred |= kind == Pass::Following;
                     held |= kind == Pass::Checks;
+                    if pass == Pass::Following && matches!(part, Part::LaneFollow(_)) {
+                        self.lane_follows.push((index, j, actor));
+                        continue;
+                    }
                     if kind == pass {
                         let reached = &mut self.reached;
                         if let Some(e) = step_part(world, (actor, id), part, (now, dt), reached) {
@@ -227,6 +235,7 @@ impl ActionTable {
             }
         }
         self.checks_held = held;
+        self.step_lane_follows(world, (now, dt), &mut failures);
         // The domains' order over the slots live as the stage started (those that ended in
         // it too), then the slots found done are dropped.
         std::mem::swap(&mut self.live, &mut live);
@@ -240,6 +249,42 @@ impl ActionTable {
         });
         self.live = live;
         failures
+    }
+
+    /// Steps the followings of lanes the second pass of stage 2 set aside (`lane_follows`),
+    /// last in the stage, each after those of the actors it follows (lane_follow.rs): in slot
+    /// order, except that one whose references include the actor of another still to step
+    /// waits for it (a cycle, each following the other, steps in slot order). So in a chain
+    /// (car follows ego, who follows npc) car reads ego's new lane and weight of the same
+    /// step, whatever their order in the storyboard.
+    fn step_lane_follows(
+        &mut self,
+        world: &mut World,
+        (now, dt): (f64, f64),
+        failures: &mut Vec<(String, Error)>,
+    ) {
+        let mut pending = std::mem::take(&mut self.lane_follows);
+        while !pending.is_empty() {
+            let waits = |&(index, j, _): &(u32, usize, EntityId)| match &self.slots[index as usize]
+                .parts[j]
+            {
+                Part::LaneFollow(s) => s.references().any(|x| {
+                    pending
+                        .iter()
+                        .any(|&(i, k, a)| a == x && (i, k) != (index, j))
+                }),
+                _ => false,
+            };
+            let next = pending.iter().position(|p| !waits(p)).unwrap_or(0);
+            let (index, j, actor) = pending.remove(next);
+            let slot = &mut self.slots[index as usize];
+            let (id, reached) = (ActionId(index), &mut self.reached);
+            if let Some(e) = step_part(world, (actor, id), &mut slot.parts[j], (now, dt), reached) {
+                failures.push((slot.name.clone(), e));
+            }
+        }
+        // Kept: the stage allocates nothing once grown.
+        self.lane_follows = pending;
     }
 
     /// The speed as stage 2 starts (`Entity::start_speed`), before any part changes it, of
@@ -637,8 +682,8 @@ impl Host<'_> {
                     LateralAction::LateralDistance { .. } => {
                         distance::start_lateral(self.world, actor, l, pos)
                     }
-                    LateralAction::FollowLanes { entity_ref, value } => {
-                        lane_follow::start(self.world, (entity_ref, *value), pos)
+                    LateralAction::FollowLanes(followed) => {
+                        lane_follow::start(self.world, followed, pos)
                     }
                     // Only a driver model takes it (handed over above).
                     LateralAction::MandatoryLane { .. } => Err(Error::at(

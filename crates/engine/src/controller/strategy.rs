@@ -33,7 +33,7 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
             match l {
                 LateralAction::LaneChange { .. }
                 | LateralAction::LaneChangeAt(_)
-                | LateralAction::FollowLanes { .. }
+                | LateralAction::FollowLanes(_)
                 | LateralAction::MandatoryLane { .. } => "LaneChangeAction",
                 LateralAction::LaneOffset { .. } | LateralAction::OffsetInWidth(_) => {
                     "LaneOffsetAction"

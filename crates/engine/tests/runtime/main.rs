@@ -23,6 +23,7 @@ mod esmini_reference_reader;
 mod global;
 mod held_check_time;
 mod init_names;
+mod lane_follow;
 mod lateral;
 mod lateral_esmini;
 mod lateral_follow_rate;

@@ -608,20 +608,18 @@ pub enum LateralAction {
     /// its target lane): the target offset k·W + c is read with the lane's width W where the
     /// actor is at each step, so it holds with the width where the actor is at the end.
     OffsetInWidth(Box<OffsetInWidth>),
-    /// oscsim's following of another entity's lane changes, an action with no XML form (the
+    /// oscsim's following of other entities' lane changes, an action with no XML form (the
     /// DSL runtime writes it for ASAM OpenSCENARIO DSL 2.1 §8.9 `lane(same_as/side_of/left_of/
-    /// right_of: x)` at: all of an actor with no sideways motion of its own, in a phase that
-    /// starts on a run-time condition, §8.9.1.1.1 "holds throughout the phase"): whenever the
-    /// entity begins a lane change on its road, the actor changes into the lane `value` lanes
-    /// to the left (right when negative) of the entity's new lane, counted as a
-    /// RelativeTargetLane counts them, to its centre, over the same span and shape (its
-    /// transition's weight the entity's at every step); held until stopped.
-    FollowLanes {
-        /// The entity followed.
-        entity_ref: String,
-        /// Lanes to the left of the entity's (0: its lane).
-        value: i32,
-    },
+    /// right_of: x)` at: all of an actor with no sideways motion of its own, one reference per
+    /// such relation of the invocation, where the plan does not know x's lane changes,
+    /// §8.9.1.1.1 "holds throughout the phase"): whenever a reference begins a lane change on
+    /// its road, the actor changes into the lane [`FollowedLane::value`] lanes to the left
+    /// (right when negative) of that reference's new lane, counted as a RelativeTargetLane
+    /// counts them, to its centre, over the same span and shape (its transition's weight the
+    /// reference's at every step); where several begin in the same step, the first of them in
+    /// this list; a reference that begins one while another's is mirrored takes over from
+    /// where the actor is. Held until stopped.
+    FollowLanes(Vec<FollowedLane>),
     /// oscsim's mandatory lane of a driver model, an action with no XML form (the DSL runtime
     /// writes it for ASAM OpenSCENARIO DSL 2.1 `lane(…)` at: all beside an action of a
     /// `random_traffic_vehicle_group` after its creation, §8.7.18.1: "the behavioral model
@@ -634,6 +632,16 @@ pub enum LateralAction {
         /// The lane to reach and keep (`None`: release the one held).
         target: Option<LaneChangeTarget>,
     },
+}
+
+/// One entity whose lane changes [`LateralAction::FollowLanes`] follows, and where its actor is
+/// from it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FollowedLane {
+    /// The entity followed.
+    pub entity_ref: String,
+    /// Lanes to the left of the entity's (0: its lane).
+    pub value: i32,
 }
 
 /// What oscsim's offset change in the lane's width ([`LateralAction::OffsetInWidth`]) aims at
