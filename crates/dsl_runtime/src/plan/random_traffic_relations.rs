@@ -47,11 +47,12 @@
 //! check).
 //!
 //! An actor placed along or beside one that takes an oncoming member's direction takes it in
-//! turn. Bad input (`Unsatisfiable`): a place (`position`, `lane`, `lateral`, any `at`) or a
-//! speed (`speed(same_as/faster_than/slower_than: …)`, any `at`) of a member, in a phase of its
-//! own, relative to another member (§8.7.18.1: "the behavioral model assigned to each vehicle
-//! defines the actual behavior of the vehicle within the group", so its lane, place and speed
-//! among the group's members are its model's, as for a lane, position or path action
+//! turn. Bad input (`Unsatisfiable`): a place (`position`, `lane`, `lateral`, any `at`), a
+//! speed (`speed(same_as/faster_than/slower_than: …)`, any `at`) or an acceleration
+//! (`acceleration(a, same_as/faster_than/slower_than: …)`) of a member, in a phase of its own,
+//! relative to another member (§8.7.18.1: "the behavioral model assigned to each vehicle
+//! defines the actual behavior of the vehicle within the group", so its lane, place, speed and
+//! acceleration among the group's members are its model's, as for a lane, position or path action
 //! creating the group); a relation to the group
 //! as a whole (it has no place, speed or lane of its own; the checker refuses the typed
 //! arguments first). A condition measures a member at run time: `until
@@ -154,24 +155,31 @@ impl Planner<'_> {
                     }));
                     continue;
                 }
-                // A member given a place or a speed relative to another member in a phase of
-                // its own (`g.vehicles[0].drive() with: position(20m, behind: g.vehicles[1])`,
-                // `speed(same_as: g.vehicles[1])`): bad input, as a lane, position or path
-                // action creating the group is (§8.7.18.1: a member's behaviour within the
-                // group, its lane, place, path and speed, is its model's). Before, the speed
+                // A member given a place, a speed or an acceleration relative to another
+                // member in a phase of its own (`g.vehicles[0].drive() with: position(20m,
+                // behind: g.vehicles[1])`, `speed(same_as: g.vehicles[1])`, `acceleration(1mpsps,
+                // faster_than: g.vehicles[1])`): bad input, as a lane, position or path action
+                // creating the group is (§8.7.18.1: a member's behaviour within the group, its
+                // lane, place, path, speed and acceleration, is its model's). Before, the speed
                 // ran: the other member's speed at the phase start handed to the model as its
-                // desired speed (issue 27).
+                // desired speed; and the acceleration ran as nothing: the engine ignored its
+                // RelativeAccelerationAction, the member's model holding the longitudinal
+                // domain (issue 27).
                 if let Some(m) = m.filter(|m| {
                     matches!(
                         m.kind,
-                        ModKind::Position | ModKind::Lane | ModKind::Lateral | ModKind::Speed
+                        ModKind::Position
+                            | ModKind::Lane
+                            | ModKind::Lateral
+                            | ModKind::Speed
+                            | ModKind::Acceleration
                     ) && self.random_member(&inv.actor)
                         && self.random_member(x)
                 }) {
-                    let (what, whose) = if m.kind == ModKind::Speed {
-                        ("speed", "speed is")
-                    } else {
-                        ("place", "lane and place are")
+                    let (what, whose) = match m.kind {
+                        ModKind::Speed => ("speed", "speed is"),
+                        ModKind::Acceleration => ("acceleration", "acceleration is"),
+                        _ => ("place", "lane and place are"),
                     };
                     return Err(m.site.err(
                         K::Unsatisfiable,

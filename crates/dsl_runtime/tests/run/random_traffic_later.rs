@@ -210,10 +210,12 @@ fn a_group_phase_first_of_some_members_only_places_those_from_the_drawn_member()
 }
 
 #[test]
-fn a_members_own_place_or_speed_relative_to_another_member_is_bad_input_at_the_modifier() {
+fn a_members_own_place_speed_or_acceleration_relative_to_another_member_is_bad_input_at_the_modifier(
+) {
     // §8.7.18.1: "the behavioral model assigned to each vehicle defines the actual behavior of
-    // the vehicle within the group": a member's lane, place and speed among the members are
-    // its model's, on every seed. Before, the speed ran (the scenario's comment).
+    // the vehicle within the group": a member's lane, place, speed and acceleration among the
+    // members are its model's, on every seed. Before, the speed ran and the acceleration was
+    // ignored by the engine (the scenarios' comments).
     for (name, what, at) in [
         (
             "err_random_traffic_member_own_place",
@@ -228,6 +230,11 @@ fn a_members_own_place_or_speed_relative_to_another_member_is_bad_input_at_the_m
         (
             "err_random_traffic_member_own_speed",
             "expected no speed of `g.vehicles[0]`, a member of random traffic, relative to `g.vehicles[1]`, found `speed(…)`",
+            "23:17",
+        ),
+        (
+            "err_random_traffic_member_own_acceleration",
+            "expected no acceleration of `g.vehicles[0]`, a member of random traffic, relative to `g.vehicles[1]`, found `acceleration(…)`",
             "23:17",
         ),
     ] {
