@@ -556,3 +556,23 @@ fn relative_odr_points_against_s_are_in_the_roads_own_axes() {
     assert!((r.at(5.0, "truck").speed - 20.0f64.hypot(4.0) / 2.0).abs() < S_TOL);
     phase_is(&r, "do.1", 1.0, 5.0);
 }
+
+#[test]
+fn a_relative_odr_path_against_s_is_in_the_roads_own_axes() {
+    // opposite_relative_path_odr.osc, by hand: the points from truck's 600 m along the road's
+    // s-axis, t from the named lane's centre to the road's left, one line on lane 1's centre:
+    // x = 600 - 10·(t - 1), y = 1.75, heading pi; the end (40.25 m) in the step to 5.05 s.
+    let r = run_on("opposite_relative_path_odr", "straight");
+    assert!((r.at(1.0, "truck").x - 600.0).abs() < S_TOL);
+    for (t, x) in [(2.0, 590.0), (3.0, 580.0), (4.0, 570.0), (5.0, 560.0)] {
+        let truck = r.at(t, "truck");
+        assert!(
+            (truck.x - x).abs() < S_TOL
+                && (truck.y - 1.75).abs() < S_TOL
+                && truck.lane == 1
+                && wrap(truck.h - std::f64::consts::PI).abs() < H_TOL,
+            "at {t}: {truck:?}"
+        );
+    }
+    phase_is(&r, "do.1", 1.0, 5.05);
+}
