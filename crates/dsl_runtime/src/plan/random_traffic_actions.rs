@@ -20,7 +20,7 @@
 //! | `keep_speed()` | v0 = the speed the member has at the phase start (a SpeedAction to its own speed) | by its duration or `until` |
 //! | `remain_stationary()` | v0 = 0: the model brakes at its comfortable deceleration b to a stop and stands | by its duration or `until` |
 //! | `change_lane(n, side [, reference: x])` | a LaneChangeAction to the lane n to the side of its own (x's) lane in its direction of travel, which `mobil` makes its next lane change with its own lateral shape; no drivable lane there driven the same way: the member keeps its lane (the engine logs it) | at once, or by the action's `duration:` |
-//! | `lane(n [, from: left])` (at: all, end) beside an action | the lane so numbered in the member's direction of travel where it is when the phase starts (oscsim's `LaneChangeTarget::Numbered` on the member): for `mobil` its mandatory lane over the phase (oscsim's `LateralAction::MandatoryLane`, released at the phase end: the model changes lane by lane into gaps MOBIL's safety criterion accepts and keeps it, engine controller/mobil.rs; no gap before the phase end: the member keeps its lane), for the IDM (no lateral domain) the engine's LaneChangeAction to it, sinusoidal at 1 m/s peak, which waits for no gap; the lane must be there all along the plan's roads in each direction a member drives; `lane(same_as/left_of/right_of/side_of: x)`: the members driving x's way so to x's lane or the one n beside it (a RelativeTargetLane on x), the others kept in their lanes as by `keep_lane()` | by its duration or `until` |
+//! | `lane(n [, from: left])` (at: all, end) beside an action | the lane so numbered in the member's direction of travel where it is when the phase starts (oscsim's `LaneChangeTarget::Numbered` on the member): the member's model's mandatory lane over the phase (oscsim's `LateralAction::MandatoryLane`, released at the phase end: the model changes lane by lane into gaps MOBIL's safety criterion accepts and keeps it, engine controller/mobil.rs; no gap before the phase end: the member keeps its lane), `mobil` keeping its lateral domain for it, the IDM (no lateral domain) handed it by the engine, which carries out each change the IDM starts; the lane must be there all along the plan's roads in each direction a member drives; `lane(same_as/left_of/right_of/side_of: x)`: the members driving x's way so to x's lane or the one n beside it (a RelativeTargetLane on x), the others kept in their lanes as by `keep_lane()` | by its duration or `until` |
 //! | `follow_lane()`, `keep_lane()` beside an action | the model's lateral domain taken back over the phase (ActivateControllerAction, lateral false): the default controller keeps the member in the lane it is in, brought to its centre (a LaneChangeAction to that lane: a change under way ends there); handed back at the phase end | by its duration or `until` |
 //!
 //! Where the road's lanes are numbered otherwise along it (a lane added or dropped at a lane
@@ -433,15 +433,17 @@ impl Planner<'_> {
                 }),
                 _ => None,
             };
-            // `mobil` keeps its lateral domain: the lane is its mandatory lane, reached lane by
-            // lane into gaps its safety criterion accepts and kept, released at the phase end.
-            let mandatory = target.is_some() && !idm;
-            if let (Some(target), true) = (&target, mandatory) {
+            // The lane is the member's model's mandatory lane, reached lane by lane into gaps
+            // MOBIL's safety criterion accepts and kept, released at the phase end: `mobil`
+            // keeps its lateral domain for it; the `idm`, which holds none, is handed it by
+            // the engine (controller/strategy.rs) and decides when each change starts.
+            let mandatory = target.is_some();
+            if let Some(target) = target {
                 let lane = |target| PrivateAction::Lateral(LateralAction::MandatoryLane { target });
                 out.push(Planned::with_phase(
                     m,
                     name("lane"),
-                    lane(Some(target.clone())),
+                    lane(Some(target)),
                     &p.site,
                 ));
                 after.push(Planned::with_phase(
@@ -451,16 +453,7 @@ impl Planner<'_> {
                     &p.site,
                 ));
             }
-            let kept = match target {
-                _ if mandatory => None,
-                Some(target) => Some(PrivateAction::Lateral(LateralAction::LaneChange {
-                    target_lane_offset: None,
-                    dynamics: default_dynamics(),
-                    target,
-                })),
-                None if hold_lane && !idm => Some(lane_change_to(m, 0)),
-                None => None,
-            };
+            let kept = (!mandatory && hold_lane && !idm).then(|| lane_change_to(m, 0));
             // The IDM holds no lateral domain: a member it drives keeps its lane already.
             if hold_lane && !idm && !mandatory {
                 out.push(Planned::with_phase(

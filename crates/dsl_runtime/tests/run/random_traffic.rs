@@ -1213,7 +1213,7 @@ fn random_traffic_kept_to_another_actors_lane_after_its_creation_changes_there_i
 /// collision (CollisionCondition: the boxes' ground-plane footprints touch, OpenSCENARIO 2.0
 /// §8.7.5.1.1 time_to_collision() 0 for the boxes as they stand in the frame, by the
 /// separating axis theorem over both boxes' axes, so boxes turned in a lane change count).
-fn touching(r: &crate::support::Run) -> Vec<(f64, String, String)> {
+pub(crate) fn touching(r: &crate::support::Run) -> Vec<(f64, String, String)> {
     use engine::domain::{MovableObject, TrafficParticipant};
     let on_road = |o: &&crate::support::Obj| o.s > 4.0 && o.s < 996.0;
     let mut found = Vec::new();
@@ -1262,6 +1262,42 @@ fn members_forced_into_one_lane_by_lane_changes_never_touch() {
     assert!(all.is_empty(), "{all:?}");
 }
 
+#[test]
+fn members_kept_in_their_lanes_by_the_idm_forced_into_one_lane_later_never_touch() {
+    // random_traffic_lane_crowded_idm.osc: the 40 members created with keep_lane(), driven by
+    // the `idm` (no lateral domain); lane(1) from 2 s is each one's mandatory lane, handed to
+    // the `idm` by the engine, each change started only into a gap MOBIL's safety criterion
+    // accepts. No two boxes touch at any step, seeds 0-23. Before, the engine's
+    // LaneChangeAction moved every member at 2 s, waiting for no gap.
+    let mut all = Vec::new();
+    for seed in 0..24 {
+        let r = run("random_traffic_lane_crowded_idm", seed, None);
+        all.extend(touching(&r).into_iter().map(|(t, a, b)| (seed, t, a, b)));
+        // Every member got the lane as its model's mandatory lane at 2 s.
+        let handed = r
+            .controllers
+            .iter()
+            .filter(|(t, _, n)| {
+                (t - 2.0).abs() < 1e-9 && n.contains("handed to the controller: mandatory lane")
+            })
+            .count();
+        assert_eq!(handed, 40, "seed {seed}");
+        if seed == 0 {
+            // Members in +s reach lane -3 and those in -s lane 2, not all of them (lane -3
+            // holds fewer than the ~24 members of +s at 4 m + 42 m each).
+            let reached = r
+                .frames
+                .iter()
+                .find(|(t, _)| (t - 17.0).abs() < 1e-9)
+                .map_or(0, |(_, objs)| {
+                    objs.iter().filter(|o| o.lane == -3 || o.lane == 2).count()
+                });
+            assert!(reached > 20 && reached < 40, "{reached} at 17 s");
+        }
+    }
+    assert!(all.is_empty(), "{all:?}");
+}
+
 /// The time of the step in which member `m` of `r` starts to leave lane -2's centre (the
 /// frame before the first one off it by more than 1e-9 m).
 fn change_starts(r: &crate::support::Run, m: &str) -> f64 {
@@ -1284,16 +1320,45 @@ fn changed_clear(r: &crate::support::Run, seed: u64, m: &str, start: f64) {
 
 #[test]
 fn a_member_told_into_a_lane_blocked_beside_it_waits_for_a_gap_mobil_accepts() {
-    // random_traffic_lane_blocked.osc, worked in the file: ego level with the member in the
-    // target lane, 2 m/s slower; the change waits until ego, its new follower, would brake no
-    // harder than b_safe behind it.
+    blocked_waits_for_the_gap("random_traffic_lane_blocked");
+}
+
+#[test]
+fn a_member_kept_in_its_lane_by_the_idm_told_into_a_blocked_lane_waits_for_the_same_gap() {
+    // random_traffic_lane_blocked_idm.osc: the member created with lane(2) at: all, driven by
+    // the `idm`, which holds no lateral domain; the mandatory lane handed to it (engine
+    // controller/strategy.rs) is judged by the mobil member's code, so the same start times.
+    blocked_waits_for_the_gap("random_traffic_lane_blocked_idm");
+    let r = run("random_traffic_lane_blocked_idm", 0, None);
+    let notes: Vec<_> = r
+        .controllers
+        .iter()
+        .filter(|(_, e, n)| e == "g.vehicles[0]" && n.contains("mandatory"))
+        .collect();
+    assert!(
+        notes.len() == 2
+            && (notes[0].0 - 1.0).abs() < 1e-9
+            && notes[0].2.ends_with("handed to the controller: mandatory lane -3: changes lane by lane into gaps MOBIL's safety criterion accepts, then keeps it")
+            && (notes[1].0 - 12.0).abs() < 1e-9
+            && notes[1].2.ends_with("mandatory lane -3 released, reached"),
+        "{notes:?}"
+    );
+}
+
+/// random_traffic_lane_blocked.osc and its `idm` variant, worked in the files: ego level with
+/// the member in the target lane, 2 m/s slower; the change waits until ego, its new follower,
+/// would brake no harder than b_safe behind it.
+fn blocked_waits_for_the_gap(name: &str) {
     let (a, b, b_safe, s0, tt) = (0.73_f64, 1.67_f64, 4.0, 2.0, 1.6);
     for (seed, want) in [(0, 4.15), (1, 4.0), (2, 4.3), (3, 4.2)] {
-        let r = run("random_traffic_lane_blocked", seed, None);
+        let r = run(name, seed, None);
         let m = "g.vehicles[0]";
         let v_m = r.at(0.0, m).speed;
         let v_e = v_m - 2.0;
-        assert!((r.at(0.0, "ego").speed - v_e).abs() < 1e-9, "seed {seed}");
+        assert!(
+            (r.at(0.0, "ego").speed - v_e).abs() < 1e-9,
+            "{name} seed {seed}"
+        );
         // The hand computation of the file, with this seed's v_m.
         let s_star = s0 + (v_e * tt + v_e * (v_e - v_m) / (2.0 * (a * b).sqrt())).max(0.0);
         let free = a * (1.0 - (v_e / v_m).powi(4));
@@ -1302,16 +1367,19 @@ fn a_member_told_into_a_lane_blocked_beside_it_waits_for_a_gap_mobil_accepts() {
         let step = (t / DT).ceil() * DT;
         assert!(
             (step - want).abs() < 1e-9,
-            "seed {seed}: {t} s, the step {step}"
+            "{name} seed {seed}: {t} s, the step {step}"
         );
         let start = change_starts(&r, m);
         assert!(
             (start - want).abs() < 1e-9,
-            "seed {seed}: starts at {start}"
+            "{name} seed {seed}: starts at {start}"
         );
         // It waited at its own speed (ego slower: nothing to fall back from).
         for (t, _) in r.frames.iter().filter(|(t, _)| *t <= want + 1e-9) {
-            assert!((r.at(*t, m).speed - v_m).abs() < 1e-9, "seed {seed} at {t}");
+            assert!(
+                (r.at(*t, m).speed - v_m).abs() < 1e-9,
+                "{name} seed {seed} at {t}"
+            );
         }
         changed_clear(&r, seed, m, want);
     }

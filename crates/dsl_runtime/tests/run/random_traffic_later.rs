@@ -5,7 +5,7 @@
 //! Expectations in the scenario files.
 
 use crate::random_traffic::{on_lane_centre, speed_follows_member};
-use crate::support::{lower_at, run, run_scenario};
+use crate::support::{lower_at, run, run_scenario, DT};
 
 /// Positions of actors driving their plan on a straight road: float round-off only (m).
 const S_TOL: f64 = 1e-6;
@@ -123,8 +123,39 @@ fn random_traffic_related_to_a_member_of_other_random_traffic_reads_where_it_is(
             on_lane_centre(&r, seed, &h, -2, (0.0, 12.0));
             let k = format!("k.vehicles[{i}]");
             assert_eq!(r.at(1.0, &k).lane, -3, "seed {seed} {k}");
-            on_lane_centre(&r, seed, &k, -2, (6.5, 12.0));
+            // Its model (the `idm`: created with lane(1) at: all) is handed lane -2, where the
+            // engine reads g.vehicles[0] at 1 s, as its mandatory lane.
+            let notes: Vec<_> = r
+                .controllers
+                .iter()
+                .filter(|(t, e, n)| *e == k && (t - 1.0).abs() < 1e-9 && n.contains("mandatory"))
+                .collect();
+            assert!(
+                notes.len() == 1
+                    && notes[0].2.ends_with("handed to the controller: mandatory lane -2: changes lane by lane into gaps MOBIL's safety criterion accepts, then keeps it"),
+                "seed {seed} {k}: {notes:?}"
+            );
+            // Between the two lanes' centres at every step, off lane -3's only from the step
+            // at 1 s; a change started by 7 s (4.58 s for the cubic at constant speed, longer
+            // where the IDM slows behind the nearer leader) ends on lane -2's centre by 12 s.
+            let mut started = None;
+            for (t, _) in &r.frames {
+                let o = r.at(*t, &k);
+                assert!(
+                    o.y >= -8.75 - 1e-6 && o.y <= -5.25 + 1e-6,
+                    "seed {seed} {k} at {t}: {o:?}"
+                );
+                if started.is_none() && (o.y + 8.75).abs() > 1e-9 {
+                    started = Some(t - DT);
+                }
+            }
+            if started.is_some_and(|t| t <= 7.0) {
+                on_lane_centre(&r, seed, &k, -2, (12.0, 12.0));
+            }
         }
+        // No two boxes touch: each change waited for a gap MOBIL's safety criterion accepts.
+        let found = crate::random_traffic::touching(&r);
+        assert!(found.is_empty(), "seed {seed}: {found:?}");
     }
 }
 

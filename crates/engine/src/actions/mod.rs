@@ -687,7 +687,7 @@ impl Host<'_> {
                     }
                     // Only a driver model takes it (handed over above).
                     LateralAction::MandatoryLane { .. } => Err(Error::at(
-                        "a driver model holding the lateral domain (mobil) to take the mandatory lane",
+                        "a driver model to take the mandatory lane (mobil holding the lateral domain, or idm the longitudinal one)",
                         "none",
                         pos,
                     )),

@@ -12,7 +12,8 @@
 
 use opendrive::Real;
 
-use super::command::{Command, Controller, Strategy};
+use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
+use super::mobil::Mandatory;
 use super::view::ControllerView;
 use crate::models::acc::AccParameters;
 use crate::models::idm::{IdmParameters, Leader};
@@ -65,6 +66,10 @@ pub struct IdmController {
     pub params: IdmParameters,
     desired_given: bool,
     max_speed: Real,
+    /// A mandatory lane held (controller/mobil.rs "A mandatory lane"), if any: the `mobil`
+    /// controller's, or this controller's own when no user controller holds its entity's
+    /// lateral domain (controller/strategy.rs).
+    pub(crate) mandatory: Option<Box<Mandatory>>,
 }
 
 impl IdmController {
@@ -75,6 +80,7 @@ impl IdmController {
             params,
             desired_given,
             max_speed: Real::INFINITY,
+            mandatory: None,
         }
     }
 
@@ -96,6 +102,11 @@ impl IdmController {
     }
 
     pub(crate) fn on_strategy(&mut self, strategy: Strategy) -> Option<String> {
+        if let Strategy::MandatoryLane(lane) = strategy {
+            let (state, note) = Mandatory::take(self.mandatory.as_deref(), lane);
+            self.mandatory = state;
+            return Some(note);
+        }
         let Strategy::Speed(v) = strategy else {
             return None;
         };
@@ -118,7 +129,14 @@ impl Controller for IdmController {
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
-        Command::acceleration(self.acceleration(view))
+        if self.mandatory.is_none() {
+            return Command::acceleration(self.acceleration(view));
+        }
+        let (a, lane) = self.command_mandatory(view);
+        Command::Motion {
+            longitudinal: Some(Longitudinal::Acceleration(a)),
+            lateral: lane.map(Lateral::ChangeLane),
+        }
     }
 }
 

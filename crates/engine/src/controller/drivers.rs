@@ -65,7 +65,9 @@ impl DriverModel {
     #[inline]
     pub fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
         match self {
-            DriverModel::Idm(c) => (c.acceleration(view), None),
+            DriverModel::Idm(c) if c.mandatory.is_none() => (c.acceleration(view), None),
+            // A mandatory lane it holds (controller/mobil.rs): the stage applies its changes.
+            DriverModel::Idm(c) => c.command_mandatory(view),
             DriverModel::Mobil(c) => c.command(view),
         }
     }

@@ -45,6 +45,15 @@
 //! leaders in the lane it leaves and the lane it enters ([`ControllerView::leader`]). Reached,
 //! L is kept until an action releases it; released before, the entity keeps the lane it is
 //! in and the controller's event record says that L was not reached.
+//!
+//! The `idm` controller, which holds no lateral domain, runs the same path ([`Mandatory`],
+//! one piece of state and code, kept in [`IdmController`], which the `mobil` controller
+//! embeds): where no user controller holds the entity's lateral domain, the mandatory lane is
+//! handed to the `idm` holding its longitudinal one (controller/strategy.rs), which judges
+//! each change by MOBIL's safety criterion at the default b_safe (it has no MOBIL
+//! parameters); the controllers stage starts each change it decides on the default
+//! controller's lane track, as the route's lane changes (controller/stage.rs). Without a
+//! mandatory lane the `idm`'s step is the IDM's acceleration alone, as before.
 
 use opendrive::Real;
 
@@ -73,10 +82,6 @@ pub struct MobilController {
     /// The lanes beside as the road decides them, kept over the stretch they hold
     /// (controller/lane_beside.rs).
     kept: KeptBeside,
-    /// The mandatory lane held (module doc), if any.
-    mandatory: Option<i32>,
-    /// The entity has been in the mandatory lane since it was asked for.
-    reached: bool,
 }
 
 impl MobilController {
@@ -88,8 +93,6 @@ impl MobilController {
             pending: None,
             last_change: Real::NEG_INFINITY,
             kept: KeptBeside::default(),
-            mandatory: None,
-            reached: false,
         }
     }
 
@@ -161,8 +164,8 @@ impl MobilController {
 
     /// The lane to change to now, if any.
     fn decide(&mut self, view: &ControllerView<'_>, own: &mut Own) -> Option<i32> {
-        if let Some(target) = self.mandatory {
-            return self.decide_mandatory(view, own, target);
+        if let Some(m) = self.idm.mandatory.as_deref_mut() {
+            return m.decide(view, own, &self.idm.params, &self.mobil);
         }
         match self.may_decide(view) {
             Err(pending) => return pending,
@@ -184,26 +187,61 @@ impl MobilController {
     }
 }
 
-impl MobilController {
-    /// The step of a mandatory lane `target` (module doc): the lane beside to change to now,
-    /// one lane towards `target`, when the gap passes MOBIL's safety criterion; else none,
-    /// with `own`'s command lowered to −b where what blocks the change is not slower.
-    fn decide_mandatory(
+/// A mandatory lane held (module doc "A mandatory lane"): the one piece of state and code
+/// both driver models run it with, the `mobil` controller and the `idm` controller
+/// ([`IdmController::mandatory`]), which holds it for its entity's lateral domain when no
+/// user controller holds that (controller/strategy.rs).
+#[derive(Debug, Clone)]
+pub(crate) struct Mandatory {
+    /// The lane to reach.
+    target: i32,
+    /// The entity has been in it since it was asked for.
+    reached: bool,
+    /// The lanes beside as the road decides them (controller/lane_beside.rs).
+    kept: KeptBeside,
+}
+
+impl Mandatory {
+    /// Takes mandatory lane `lane` (`None`: releases the one `held`, if any): the new state
+    /// and the event note.
+    pub(crate) fn take(held: Option<&Mandatory>, lane: Option<i32>) -> (Option<Box<Self>>, String) {
+        let note = match (lane, held) {
+            (Some(l), _) => format!("mandatory lane {l}: changes lane by lane into gaps MOBIL's safety criterion accepts, then keeps it"),
+            (None, Some(m)) if m.reached => format!("mandatory lane {} released, reached", m.target),
+            (None, Some(m)) => format!("mandatory lane {} released, not reached: no gap MOBIL's safety criterion accepted before (the entity keeps the lane it is in)", m.target),
+            (None, None) => "no mandatory lane to release".to_owned(),
+        };
+        let state = lane.map(|target| {
+            Box::new(Mandatory {
+                target,
+                reached: false,
+                kept: KeptBeside::default(),
+            })
+        });
+        (state, note)
+    }
+
+    /// The step of the mandatory lane (module doc) for a driver with IDM parameters `p` and
+    /// MOBIL's safety criterion `mobil`: the lane beside to change to now, one lane towards
+    /// the target, when the gap passes the criterion; else none, with `own`'s command lowered
+    /// to −b where what blocks the change is not slower.
+    fn decide(
         &mut self,
         view: &ControllerView<'_>,
         own: &mut Own,
-        target: i32,
+        p: &IdmParameters,
+        mobil: &MobilParameters,
     ) -> Option<i32> {
         let e = view.input();
         let track = e.track.as_ref()?;
-        if track.lane_id == target {
+        if track.lane_id == self.target {
             self.reached = true;
             return None;
         }
         if track.blend_from.is_some() || e.lateral_action || e.speed < MIN_CHANGE_SPEED {
             return None;
         }
-        let toward = (target - track.lane_id).signum();
+        let toward = (self.target - track.lane_id).signum();
         let b = view
             .beside_kept(&mut self.kept.0)
             .into_iter()
@@ -212,17 +250,16 @@ impl MobilController {
         if !b.crossing_permitted {
             return None;
         }
-        let p = &self.idm.params;
         // The speed of what blocks the change ahead or alongside, if anything does.
         let blocker = match view.fastest_alongside(&b) {
             Some(v) => Some(v),
             None => {
                 let lane_leader = view.leader_beside(&b);
-                if self.mobil.safe_for_changer(own.after(p, lane_leader)) {
+                if mobil.safe_for_changer(own.after(p, lane_leader)) {
                     let new_follower = view.follower_beside(&b).map(|n| {
                         Weighed::new_follower(p, n, own.v, own.len, lane_leader).change(p)
                     });
-                    if new_follower.map_or(true, |n| self.mobil.safe_for_follower(n.after)) {
+                    if new_follower.map_or(true, |n| mobil.safe_for_follower(n.after)) {
                         return Some(b.lane);
                     }
                     // A new follower too close: waited out.
@@ -237,15 +274,21 @@ impl MobilController {
         }
         None
     }
+}
 
-    /// The event note of mandatory lane `lane` asked for (`None`: the one held released).
-    fn mandatory_note(&self, lane: Option<i32>) -> String {
-        match (lane, self.mandatory) {
-            (Some(l), _) => format!("mandatory lane {l}: changes lane by lane into gaps MOBIL's safety criterion accepts, then keeps it"),
-            (None, Some(l)) if self.reached => format!("mandatory lane {l} released, reached"),
-            (None, Some(l)) => format!("mandatory lane {l} released, not reached: no gap MOBIL's safety criterion accepted before (the entity keeps the lane it is in)"),
-            (None, None) => "no mandatory lane to release".to_owned(),
-        }
+impl IdmController {
+    /// The `idm` model's step while it holds a mandatory lane (module doc): the IDM's
+    /// acceleration, computed as the `mobil` controller computes it (the same operations as
+    /// [`IdmController::acceleration`]), and the lane to change to, judged by MOBIL's safety
+    /// criterion at the engine's default b_safe ([`MobilParameters::default`]: the `idm` has
+    /// no MOBIL parameters).
+    pub(crate) fn command_mandatory(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
+        let mut own = Own::new(&self.params, view);
+        let lane = match self.mandatory.as_deref_mut() {
+            Some(m) => m.decide(view, &mut own, &self.params, &MobilParameters::default()),
+            None => None,
+        };
+        (own.a_c, lane)
     }
 }
 
@@ -437,12 +480,6 @@ impl Controller for MobilController {
             Strategy::Lane(lane) => {
                 self.pending = Some(lane);
                 Some(format!("lane change to lane {lane}"))
-            }
-            Strategy::MandatoryLane(lane) => {
-                let note = self.mandatory_note(lane);
-                self.mandatory = lane;
-                self.reached = false;
-                Some(note)
             }
             other => self.idm.on_strategy(other),
         }

@@ -7,6 +7,7 @@ use opendrive::{Direction, Real, RoadNetwork};
 
 use super::*;
 use crate::controller::car_following::with_red_light;
+use crate::controller::drivers::DriverModel;
 use crate::controller::lane_beside::{KeptRoad, RoadBeside};
 use crate::controller::test_world::{crowded, network};
 use crate::controller::view::{NeighbourLane, Side};
@@ -520,7 +521,8 @@ fn the_bounds_settle_only_what_the_rule_refuses() {
 /// changes into that lane exactly where no box is alongside, the mark lets it cross, the
 /// changer's ã_c ≥ −b_safe and the new follower's ã_n ≥ −b_safe; otherwise it keeps its lane
 /// and its command is the IDM's, or −b where that is higher (it falls back behind what blocks
-/// it, when that is not slower). Beside a lane that is not the mandatory one, a car makes no
+/// it, when that is not slower); an `idm` controller handed the same mandatory lane gives the
+/// same command bit for bit. Beside a lane that is not the mandatory one, a car makes no
 /// change of its own, however much MOBIL's incentive asks for one. (At seeds 1–40: 1,064
 /// changes, 2,439 waits of which 156 fall back, 1,244 changes of MOBIL's own held.)
 #[test]
@@ -553,6 +555,17 @@ fn a_mandatory_lane_is_changed_into_exactly_where_mobils_safety_criterion_accept
                     .map_or(true, |n| c.mobil.safe_for_follower(n.after));
             let at = format!("seed {seed} {} lane {}", e.name, lane.lane);
             assert_eq!(change, safe.then_some(lane.lane), "{at}");
+            // The `idm` handed the same mandatory lane runs the same code: the same command,
+            // bit for bit (its MOBIL safety criterion at the default b_safe, as here).
+            let mut idm_held = DriverModel::Idm(IdmController::new(IdmParameters::default(), true));
+            idm_held
+                .as_controller()
+                .strategy(Strategy::MandatoryLane(Some(lane.lane)));
+            let (ia, ichange) = idm_held.command(view);
+            assert!(
+                ia.to_bits() == a.to_bits() && ichange == change,
+                "{at}: idm {ia} {ichange:?}"
+            );
             if safe {
                 changes += 1;
                 assert_eq!(a.to_bits(), idm.to_bits(), "{at}");

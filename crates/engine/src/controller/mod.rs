@@ -35,6 +35,10 @@
 //!   lateral shape; a target that is no drivable lane of the entity's road where it is, or one
 //!   driven the other way (a relative target counted across the centre line), is not taken:
 //!   the entity keeps its lane, and the log says why;
+//! - `mobil`, and `idm` where no user controller holds the lateral domain: oscsim's mandatory
+//!   lane (`scenario::LateralAction::MandatoryLane`, no XML form) is reached lane by lane into
+//!   gaps MOBIL's safety criterion accepts and kept until released (module `mobil`, "A
+//!   mandatory lane");
 //! - every other motion action, and every one given to `external`, is not taken (the log says
 //!   "ignored").
 //!

@@ -19,7 +19,7 @@ use opendrive::{Direction, Real, RoadNetwork};
 
 use super::command::{Command, Lateral, Longitudinal, Merged};
 use super::default::{measure, move_entity};
-use super::drivers::{Instance, Model};
+use super::drivers::{DriverModel, Instance, Model};
 use super::parallel::StepWorld;
 use super::properties::MotionDomains;
 use super::table::{ControllerTable, EntityControllers, StageStorage};
@@ -107,6 +107,14 @@ pub(crate) fn step(
                         }
                         if held.lateral {
                             m.lateral = lane.map(Lateral::ChangeLane);
+                        } else if lane.is_some() && !of_entity.iter().any(|r| r.held.lateral) {
+                            // Only an `idm` holding a mandatory lane gives a lane without the
+                            // lateral domain (strategy.rs hands it one only where no user
+                            // controller holds that domain): its change is started on the
+                            // default controller's lane track, as the route's lane changes.
+                            if matches!(drivers[k], DriverModel::Idm(_)) {
+                                m.lateral = lane.map(Lateral::ChangeLane);
+                            }
                         }
                         continue;
                     }

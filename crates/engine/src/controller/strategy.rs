@@ -5,6 +5,7 @@ use scenario::{LateralAction, LongitudinalAction, PrivateAction, RoutingAction};
 
 use super::assign::Origin;
 use super::command::Strategy;
+use super::properties::{ControllerKind, ModelSettings};
 use super::table::ControllerTable;
 use crate::error::Error;
 use crate::output::EventRecord;
@@ -139,8 +140,27 @@ pub(crate) fn hand_over(
     let Some(ctrl) = controllers.of(actor.index()) else {
         return Ok(false);
     };
+    // A mandatory lane where no user controller holds the lateral domain goes to the `idm`
+    // holding the longitudinal one: it decides when each change starts (module `mobil`, "A
+    // mandatory lane"), the default controller keeping the lateral domain carries it out.
+    let mandatory_to_idm = || {
+        let slot = ctrl.holder(true)?;
+        let idm = matches!(
+            ctrl.assigned[slot].kind,
+            ControllerKind::Model {
+                settings: ModelSettings::Idm { .. },
+                ..
+            }
+        );
+        (idm && matches!(
+            action,
+            PrivateAction::Lateral(LateralAction::MandatoryLane { .. })
+        ))
+        .then_some(slot)
+    };
     let holder = (lon.then(|| ctrl.holder(true)).flatten())
-        .or_else(|| lat.then(|| ctrl.holder(false)).flatten());
+        .or_else(|| lat.then(|| ctrl.holder(false)).flatten())
+        .or_else(mandatory_to_idm);
     let Some(slot) = holder else {
         return Ok(false);
     };

@@ -625,7 +625,7 @@ pub enum LateralAction {
     /// `random_traffic_vehicle_group` after its creation, §8.7.18.1: "the behavioral model
     /// assigned to each vehicle defines the actual behavior of the vehicle within the group"):
     /// handed to the user controller holding the entity's lateral domain (the `mobil` model),
-    /// which changes lane by lane to the lane `target` names when the action starts, each
+    /// or where none does to the `idm` holding its longitudinal one, which changes lane by lane to the lane `target` names when the action starts, each
     /// change only into a gap MOBIL's safety criterion accepts, and keeps that lane, making no
     /// change of its own, until an action with `None` releases it. Completes at once.
     MandatoryLane {
