@@ -12,8 +12,7 @@
 
 use opendrive::Real;
 
-use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
-use super::mobil::Mandatory;
+use super::command::{Command, Controller, Strategy};
 use super::view::ControllerView;
 use crate::models::acc::AccParameters;
 use crate::models::idm::{IdmParameters, Leader};
@@ -66,10 +65,6 @@ pub struct IdmController {
     pub params: IdmParameters,
     desired_given: bool,
     max_speed: Real,
-    /// A mandatory lane held (controller/mobil.rs "A mandatory lane"), if any: the `mobil`
-    /// controller's, or this controller's own when no user controller holds its entity's
-    /// lateral domain (controller/strategy.rs).
-    pub(crate) mandatory: Option<Box<Mandatory>>,
 }
 
 impl IdmController {
@@ -80,7 +75,6 @@ impl IdmController {
             params,
             desired_given,
             max_speed: Real::INFINITY,
-            mandatory: None,
         }
     }
 
@@ -102,11 +96,6 @@ impl IdmController {
     }
 
     pub(crate) fn on_strategy(&mut self, strategy: Strategy) -> Option<String> {
-        if let Strategy::MandatoryLane(lane) = strategy {
-            let (state, note) = Mandatory::take(self.mandatory.as_deref(), lane);
-            self.mandatory = state;
-            return Some(note);
-        }
         let Strategy::Speed(v) = strategy else {
             return None;
         };
@@ -129,14 +118,7 @@ impl Controller for IdmController {
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
-        if self.mandatory.is_none() {
-            return Command::acceleration(self.acceleration(view));
-        }
-        let (a, lane) = self.command_mandatory(view);
-        Command::Motion {
-            longitudinal: Some(Longitudinal::Acceleration(a)),
-            lateral: lane.map(Lateral::ChangeLane),
-        }
+        Command::acceleration(self.acceleration(view))
     }
 }
 

@@ -23,9 +23,8 @@
 
 use opendrive::Real;
 
-use super::car_following::IdmController;
 use super::command::Controller;
-use super::mobil::MobilController;
+use super::mobil::{IdmDriver, MobilController};
 use super::properties::MotionDomains;
 use super::view::ControllerView;
 
@@ -41,8 +40,8 @@ pub(crate) enum Instance {
 /// A driver model held by value (module doc).
 #[derive(Debug, Clone)]
 pub(crate) enum DriverModel {
-    /// `idm`.
-    Idm(IdmController),
+    /// `idm` (with the mandatory lane it may hold, controller/mobil.rs).
+    Idm(IdmDriver),
     /// `mobil`.
     Mobil(MobilController),
 }
@@ -65,9 +64,7 @@ impl DriverModel {
     #[inline]
     pub fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
         match self {
-            DriverModel::Idm(c) if c.mandatory.is_none() => (c.acceleration(view), None),
-            // A mandatory lane it holds (controller/mobil.rs): the stage applies its changes.
-            DriverModel::Idm(c) => c.command_mandatory(view),
+            DriverModel::Idm(c) => c.command(view),
             DriverModel::Mobil(c) => c.command(view),
         }
     }

@@ -46,9 +46,9 @@
 //! L is kept until an action releases it; released before, the entity keeps the lane it is
 //! in and the controller's event record says that L was not reached.
 //!
-//! The `idm` controller, which holds no lateral domain, runs the same path ([`Mandatory`],
-//! one piece of state and code, kept in [`IdmController`], which the `mobil` controller
-//! embeds): where no user controller holds the entity's lateral domain, the mandatory lane is
+//! The `idm` model, which holds no lateral domain, runs the same path ([`Mandatory`], one
+//! piece of state and code; the engine runs the `idm` as [`IdmDriver`], the IDM with the
+//! mandatory lane it may hold): where no user controller holds the entity's lateral domain, the mandatory lane is
 //! handed to the `idm` holding its longitudinal one (controller/strategy.rs), which judges
 //! each change by MOBIL's safety criterion at the default b_safe (it has no MOBIL
 //! parameters); the controllers stage starts each change it decides on the default
@@ -82,6 +82,8 @@ pub struct MobilController {
     /// The lanes beside as the road decides them, kept over the stretch they hold
     /// (controller/lane_beside.rs).
     kept: KeptBeside,
+    /// The mandatory lane held (module doc), if any.
+    mandatory: Option<Box<Mandatory>>,
 }
 
 impl MobilController {
@@ -93,6 +95,7 @@ impl MobilController {
             pending: None,
             last_change: Real::NEG_INFINITY,
             kept: KeptBeside::default(),
+            mandatory: None,
         }
     }
 
@@ -164,7 +167,7 @@ impl MobilController {
 
     /// The lane to change to now, if any.
     fn decide(&mut self, view: &ControllerView<'_>, own: &mut Own) -> Option<i32> {
-        if let Some(m) = self.idm.mandatory.as_deref_mut() {
+        if let Some(m) = self.mandatory.as_deref_mut() {
             return m.decide(view, own, &self.idm.params, &self.mobil);
         }
         match self.may_decide(view) {
@@ -188,9 +191,9 @@ impl MobilController {
 }
 
 /// A mandatory lane held (module doc "A mandatory lane"): the one piece of state and code
-/// both driver models run it with, the `mobil` controller and the `idm` controller
-/// ([`IdmController::mandatory`]), which holds it for its entity's lateral domain when no
-/// user controller holds that (controller/strategy.rs).
+/// both driver models run it with, the `mobil` controller and the `idm` ([`IdmDriver`]),
+/// which is handed it when no user controller holds its entity's lateral domain
+/// (controller/strategy.rs).
 #[derive(Debug, Clone)]
 pub(crate) struct Mandatory {
     /// The lane to reach.
@@ -276,19 +279,69 @@ impl Mandatory {
     }
 }
 
-impl IdmController {
-    /// The `idm` model's step while it holds a mandatory lane (module doc): the IDM's
-    /// acceleration, computed as the `mobil` controller computes it (the same operations as
-    /// [`IdmController::acceleration`]), and the lane to change to, judged by MOBIL's safety
-    /// criterion at the engine's default b_safe ([`MobilParameters::default`]: the `idm` has
-    /// no MOBIL parameters).
-    pub(crate) fn command_mandatory(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
-        let mut own = Own::new(&self.params, view);
-        let lane = match self.mandatory.as_deref_mut() {
-            Some(m) => m.decide(view, &mut own, &self.params, &MobilParameters::default()),
-            None => None,
+/// The `idm` model as the engine runs it (module doc): the IDM ([`IdmController`]) and the
+/// mandatory lane it may be handed where no user controller holds its entity's lateral domain.
+#[derive(Debug, Clone)]
+pub(crate) struct IdmDriver {
+    /// The IDM.
+    pub idm: IdmController,
+    /// The mandatory lane held, if any.
+    mandatory: Option<Box<Mandatory>>,
+}
+
+impl IdmDriver {
+    /// The `idm` model driving by `idm`, with no mandatory lane.
+    pub fn new(idm: IdmController) -> Self {
+        IdmDriver {
+            idm,
+            mandatory: None,
+        }
+    }
+
+    /// The step's command as numbers (controller/drivers.rs): without a mandatory lane the
+    /// IDM's acceleration alone, as [`IdmController::acceleration`] gives it; with one, the
+    /// same acceleration computed as the `mobil` controller computes it (the same
+    /// operations) and the lane to change to, judged by MOBIL's safety criterion at the
+    /// engine's default b_safe ([`MobilParameters::default`]: the `idm` has no MOBIL
+    /// parameters).
+    #[inline]
+    pub fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
+        let Some(m) = self.mandatory.as_deref_mut() else {
+            return (self.idm.acceleration(view), None);
         };
+        let p = &self.idm.params;
+        let mut own = Own::new(p, view);
+        let lane = m.decide(view, &mut own, p, &MobilParameters::default());
         (own.a_c, lane)
+    }
+}
+
+impl Controller for IdmDriver {
+    fn model(&self) -> &'static str {
+        "idm"
+    }
+
+    fn activate(&mut self, view: &ControllerView<'_>) {
+        self.idm.on_activate(view);
+    }
+
+    fn strategy(&mut self, strategy: Strategy) -> Option<String> {
+        match strategy {
+            Strategy::MandatoryLane(lane) => {
+                let (state, note) = Mandatory::take(self.mandatory.as_deref(), lane);
+                self.mandatory = state;
+                Some(note)
+            }
+            other => self.idm.on_strategy(other),
+        }
+    }
+
+    fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
+        let (a, lane) = self.command(view);
+        Command::Motion {
+            longitudinal: Some(Longitudinal::Acceleration(a)),
+            lateral: lane.map(Lateral::ChangeLane),
+        }
     }
 }
 
@@ -480,6 +533,11 @@ impl Controller for MobilController {
             Strategy::Lane(lane) => {
                 self.pending = Some(lane);
                 Some(format!("lane change to lane {lane}"))
+            }
+            Strategy::MandatoryLane(lane) => {
+                let (state, note) = Mandatory::take(self.mandatory.as_deref(), lane);
+                self.mandatory = state;
+                Some(note)
             }
             other => self.idm.on_strategy(other),
         }

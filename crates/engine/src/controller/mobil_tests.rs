@@ -7,7 +7,6 @@ use opendrive::{Direction, Real, RoadNetwork};
 
 use super::*;
 use crate::controller::car_following::with_red_light;
-use crate::controller::drivers::DriverModel;
 use crate::controller::lane_beside::{KeptRoad, RoadBeside};
 use crate::controller::test_world::{crowded, network};
 use crate::controller::view::{NeighbourLane, Side};
@@ -557,10 +556,8 @@ fn a_mandatory_lane_is_changed_into_exactly_where_mobils_safety_criterion_accept
             assert_eq!(change, safe.then_some(lane.lane), "{at}");
             // The `idm` handed the same mandatory lane runs the same code: the same command,
             // bit for bit (its MOBIL safety criterion at the default b_safe, as here).
-            let mut idm_held = DriverModel::Idm(IdmController::new(IdmParameters::default(), true));
-            idm_held
-                .as_controller()
-                .strategy(Strategy::MandatoryLane(Some(lane.lane)));
+            let mut idm_held = IdmDriver::new(IdmController::new(IdmParameters::default(), true));
+            idm_held.strategy(Strategy::MandatoryLane(Some(lane.lane)));
             let (ia, ichange) = idm_held.command(view);
             assert!(
                 ia.to_bits() == a.to_bits() && ichange == change,

@@ -197,17 +197,17 @@ impl ControllerTable {
     pub fn instantiate(&mut self, settings: &ModelSettings) -> Instance {
         use super::car_following::{AccController, IdmController};
         use super::external::ExternalController;
-        use super::mobil::MobilController;
+        use super::mobil::{IdmDriver, MobilController};
         use super::vehicle_dynamics::VehicleDynamicsController;
         let mut driver = |model| Instance::Driver(self.drivers.add(model));
         match settings {
             ModelSettings::Idm {
                 idm,
                 desired_speed_given,
-            } => driver(DriverModel::Idm(IdmController::new(
+            } => driver(DriverModel::Idm(IdmDriver::new(IdmController::new(
                 *idm,
                 *desired_speed_given,
-            ))),
+            )))),
             ModelSettings::Mobil {
                 idm,
                 desired_speed_given,
@@ -306,6 +306,7 @@ mod tests {
     use super::*;
     use crate::controller::car_following::IdmController;
     use crate::controller::external::ExternalController;
+    use crate::controller::mobil::IdmDriver;
     use crate::models::idm::IdmParameters;
 
     fn assigned(instance: Option<Instance>, longitudinal: bool, lateral: bool) -> Assigned {
@@ -381,13 +382,13 @@ mod tests {
     #[test]
     fn a_replaced_driver_models_place_is_reused() {
         let idm = |v0| {
-            DriverModel::Idm(IdmController::new(
+            DriverModel::Idm(IdmDriver::new(IdmController::new(
                 IdmParameters {
                     desired_speed: v0,
                     ..IdmParameters::default()
                 },
                 true,
-            ))
+            )))
         };
         let mut drivers = Drivers::default();
         assert_eq!((drivers.add(idm(10.0)), drivers.add(idm(20.0))), (0, 1));
@@ -395,7 +396,7 @@ mod tests {
         assert_eq!(drivers.add(idm(30.0)), 0);
         assert_eq!(drivers.add(idm(40.0)), 2);
         let v0 = |d: &mut Drivers, k| match d.get_mut(k) {
-            Some(DriverModel::Idm(c)) => c.params.desired_speed,
+            Some(DriverModel::Idm(c)) => c.idm.params.desired_speed,
             _ => f64::NAN,
         };
         // Exact: stored, not computed.
