@@ -205,23 +205,23 @@ pub(crate) struct Mandatory {
 }
 
 impl Mandatory {
-    /// Takes mandatory lane `lane` (`None`: releases the one `held`, if any): the new state
-    /// and the event note.
-    pub(crate) fn take(held: Option<&Mandatory>, lane: Option<i32>) -> (Option<Box<Self>>, String) {
-        let note = match (lane, held) {
+    /// Takes mandatory lane `lane` into `held` (`None`: releases the one held, if any);
+    /// returns the event note.
+    pub(crate) fn take(held: &mut Option<Box<Self>>, lane: Option<i32>) -> String {
+        let note = match (lane, held.as_deref()) {
             (Some(l), _) => format!("mandatory lane {l}: changes lane by lane into gaps MOBIL's safety criterion accepts, then keeps it"),
             (None, Some(m)) if m.reached => format!("mandatory lane {} released, reached", m.target),
             (None, Some(m)) => format!("mandatory lane {} released, not reached: no gap MOBIL's safety criterion accepted before (the entity keeps the lane it is in)", m.target),
             (None, None) => "no mandatory lane to release".to_owned(),
         };
-        let state = lane.map(|target| {
+        *held = lane.map(|target| {
             Box::new(Mandatory {
                 target,
                 reached: false,
                 kept: KeptBeside::default(),
             })
         });
-        (state, note)
+        note
     }
 
     /// The step of the mandatory lane (module doc) for a driver with IDM parameters `p` and
@@ -327,21 +327,21 @@ impl Controller for IdmDriver {
 
     fn strategy(&mut self, strategy: Strategy) -> Option<String> {
         match strategy {
-            Strategy::MandatoryLane(lane) => {
-                let (state, note) = Mandatory::take(self.mandatory.as_deref(), lane);
-                self.mandatory = state;
-                Some(note)
-            }
+            Strategy::MandatoryLane(lane) => Some(Mandatory::take(&mut self.mandatory, lane)),
             other => self.idm.on_strategy(other),
         }
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
-        let (a, lane) = self.command(view);
-        Command::Motion {
-            longitudinal: Some(Longitudinal::Acceleration(a)),
-            lateral: lane.map(Lateral::ChangeLane),
-        }
+        motion(self.command(view))
+    }
+}
+
+/// A driver model's step as a [`Command`]: the acceleration and the lane to change to, if any.
+fn motion((a, lane): (Real, Option<i32>)) -> Command {
+    Command::Motion {
+        longitudinal: Some(Longitudinal::Acceleration(a)),
+        lateral: lane.map(Lateral::ChangeLane),
     }
 }
 
@@ -534,21 +534,13 @@ impl Controller for MobilController {
                 self.pending = Some(lane);
                 Some(format!("lane change to lane {lane}"))
             }
-            Strategy::MandatoryLane(lane) => {
-                let (state, note) = Mandatory::take(self.mandatory.as_deref(), lane);
-                self.mandatory = state;
-                Some(note)
-            }
+            Strategy::MandatoryLane(lane) => Some(Mandatory::take(&mut self.mandatory, lane)),
             other => self.idm.on_strategy(other),
         }
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
-        let (a, lane) = self.command(view);
-        Command::Motion {
-            longitudinal: Some(Longitudinal::Acceleration(a)),
-            lateral: lane.map(Lateral::ChangeLane),
-        }
+        motion(self.command(view))
     }
 }
 
