@@ -173,6 +173,22 @@ impl Planner<'_> {
                     ),
                 ));
             }
+            // A member's own acceleration (plain, or relative to an actor outside its group;
+            // relative to another member it is bad input, `random_traffic_relations`) after a
+            // run-time condition: the member's model holds its longitudinal domain (§8.7.18.1),
+            // which the engine hands a speed (its desired speed) but no acceleration, so the
+            // engine would ignore the action: refused here, not run as nothing (issue 27).
+            if self.random_member(target) {
+                if let Some(m) = mods.iter().find(|m| m.kind == ModKind::Acceleration) {
+                    return Err(m.site.err(
+                        K::Unsupported,
+                        format!(
+                            "expected no `{}(…)` on `{target}`, a member of random traffic, in a phase of its own: not run yet, its driver model holds its longitudinal control (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\") and takes a speed (`speed(…)`, its desired speed) but no acceleration",
+                            m.name
+                        ),
+                    ));
+                }
+            }
             check_keeps(mods, step)?;
             let e = self.index[target.as_str()];
             // The yaw relative to the road's s-axis of an actor along its lane (§8.9.9).

@@ -282,6 +282,26 @@ fn a_members_own_place_speed_or_acceleration_relative_to_another_member_is_bad_i
 }
 
 #[test]
+fn a_members_own_plain_acceleration_after_a_run_time_condition_is_refused_at_the_modifier() {
+    // §8.7.18.1: the member's model holds its longitudinal domain; the engine hands it a speed
+    // but no acceleration, and ignored the AccelerationAction at 3.05 s before (no error): now
+    // a not-run-yet refusal at the modifier (23:17), before the run, on every seed.
+    let name = "err_random_traffic_member_own_plain_acceleration";
+    crate::along::refused(
+        name,
+        "expected no `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own: not run yet",
+        "23:17",
+    );
+    for seed in 0..4 {
+        let e = crate::support::lower(name, seed, None).expect_err(name);
+        assert!(
+            matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported),
+            "{name} seed {seed}: {e}"
+        );
+    }
+}
+
+#[test]
 fn a_members_own_phase_at_a_known_time_is_bad_input_naming_its_model() {
     // §8.7.18.1 (quoted in the message): a member's motion is its model's from its creation,
     // so a phase of its own at 0 s has no place of it to start from, on every seed; the
