@@ -269,15 +269,24 @@ fn a_members_own_place_speed_or_acceleration_relative_to_another_member_is_bad_i
             "23:17",
         ),
     ] {
-        crate::along::refused(name, what, at);
-        for seed in 0..4 {
-            let e = crate::support::lower(name, seed, None).expect_err(name);
-            assert!(
-                matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
-                    && e.to_string().contains("(§8.7.18.1)"),
-                "{name} seed {seed}: {e}"
-            );
-        }
+        refused_on_every_seed(name, (what, at), |e| {
+            matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
+                && e.to_string().contains("(§8.7.18.1)")
+        });
+    }
+}
+
+/// `name` refused with `what` at `at` (`along::refused`), and on seeds 0-3 with an error
+/// `holds` accepts: a member's draw must not change the refusal.
+fn refused_on_every_seed(
+    name: &str,
+    (what, at): (&str, &str),
+    holds: impl Fn(&dsl_runtime::Error) -> bool,
+) {
+    crate::along::refused(name, what, at);
+    for seed in 0..4 {
+        let e = crate::support::lower(name, seed, None).expect_err(name);
+        assert!(holds(&e), "{name} seed {seed}: {e}");
     }
 }
 
@@ -287,18 +296,10 @@ fn a_members_own_plain_acceleration_after_a_run_time_condition_is_refused_at_the
     // but no acceleration, and ignored the AccelerationAction at 3.05 s before (no error): now
     // a not-run-yet refusal at the modifier (23:17), before the run, on every seed.
     let name = "err_random_traffic_member_own_plain_acceleration";
-    crate::along::refused(
-        name,
-        "expected no `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own: not run yet",
-        "23:17",
-    );
-    for seed in 0..4 {
-        let e = crate::support::lower(name, seed, None).expect_err(name);
-        assert!(
-            matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported),
-            "{name} seed {seed}: {e}"
-        );
-    }
+    let what = "expected no `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own: not run yet";
+    refused_on_every_seed(name, (what, "23:17"), |e| {
+        matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported)
+    });
 }
 
 #[test]
@@ -307,21 +308,13 @@ fn a_members_own_phase_at_a_known_time_is_bad_input_naming_its_model() {
     // so a phase of its own at 0 s has no place of it to start from, on every seed; the
     // message names that, not a gap action the scenario does not have.
     let name = "err_random_traffic_member_own_phase";
-    crate::along::refused(
-        name,
-        "expected this phase of `g.vehicles[0]` of random traffic to start on a run-time condition (until, wait), found it at 0.00 s",
-        "14:9",
-    );
-    for seed in 0..4 {
-        let e = crate::support::lower(name, seed, None).expect_err(name);
+    let what = "expected this phase of `g.vehicles[0]` of random traffic to start on a run-time condition (until, wait), found it at 0.00 s";
+    refused_on_every_seed(name, (what, "14:9"), |e| {
         let text = e.to_string();
-        assert!(
-            matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
-                && text.contains("(§8.7.18.1: ")
-                && !text.contains("gap action"),
-            "{name} seed {seed}: {text}"
-        );
-    }
+        matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
+            && text.contains("(§8.7.18.1: ")
+            && !text.contains("gap action")
+    });
 }
 
 #[test]
