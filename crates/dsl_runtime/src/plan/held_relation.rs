@@ -45,7 +45,8 @@
 //! Where the plan does not know x's changes (after a run-time start, before a run-time end,
 //! or an x the engine moves) the engine follows them as they begin (oscsim's
 //! `LateralAction::FollowLanes`: the lane counted from x's new one, its transition at x's
-//! weight at every step), beside its held check; where the invocation has several lane
+//! weight at every step), beside its held check, and the actor's lane is the engine's from
+//! the phase start (`engine_moved`: a later phase of it at a time the plan sets is an error); where the invocation has several lane
 //! relations, one following of them all (the lane counted from whichever x just began a
 //! change; where several begin in the same step, the first in the modifiers' order: such
 //! relations that then disagree are over-constrained, and the engine's held check of each
@@ -190,12 +191,12 @@ impl Planner<'_> {
             (Some(_), None) => {
                 let mut check = self.start_state(m, target)?;
                 check.throughout = true;
-                self.follow_lanes_at_run_time(m, target, (kind, mods, moves), name, out)?;
+                self.follow_lanes_at_run_time(m, target, (kind, mods, moves), t0, name, out)?;
                 out.push(self.checked(check, m, target, name("check")));
             }
             // After a run-time start `runtime::start_check` holds the check.
             (None, _) => {
-                self.follow_lanes_at_run_time(m, target, (kind, mods, moves), name, out)?;
+                self.follow_lanes_at_run_time(m, target, (kind, mods, moves), t0, name, out)?;
             }
         }
         Ok(())
@@ -207,12 +208,18 @@ impl Planner<'_> {
     /// (oscsim's `LateralAction::FollowLanes`, counted as the check counts: `start_state`).
     /// One action for every such relation of the invocation, written at the first (`m`): the
     /// actor takes the lane counted from whichever reference just began a change, the first
-    /// of them in the modifiers' order where several begin at once.
+    /// of them in the modifiers' order where several begin at once. From the phase start
+    /// `t0` (`None`: a run-time start) the actor's lane is the engine's, not its track's: the
+    /// actor is the engine's to move from then on (`engine_moved`), as after a gap action, so
+    /// a later phase of it at a time the plan sets is an error and a relation of another
+    /// actor to it is the engine's to check (issue 27: before, its track kept the lane of the
+    /// phase start, and a later `lane(n)` was checked against that).
     fn follow_lanes_at_run_time(
-        &self,
+        &mut self,
         m: &Modifier,
         target: &str,
         (kind, mods, moves): (Action, &[Modifier], bool),
+        t0: Option<f64>,
         name: &mut dyn FnMut(&str) -> String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
@@ -230,6 +237,7 @@ impl Planner<'_> {
         }
         let follow = PrivateAction::Lateral(LateralAction::FollowLanes(followed));
         out.push(Planned::with_phase(target, name("lanes"), follow, &m.site));
+        self.engine_moved.entry(target.to_string()).or_insert(t0);
         Ok(())
     }
 

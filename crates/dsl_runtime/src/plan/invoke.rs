@@ -151,8 +151,9 @@ impl Planner<'_> {
                 },
                 _ => None,
             };
-            // After a gap action, avoid_collisions(true) or a motion relative to a member of
-            // random traffic the engine moves the actor: the plan knows no track to start a
+            // After a gap action, avoid_collisions(true), a motion relative to a member of
+            // random traffic or a following of the lanes of an actor the engine moves
+            // (`held_relation`) the engine moves the actor: the plan knows no track to start a
             // phase at a time from.
             if let (Some(t), Some(since)) = (t0, self.engine_moved.get(target)) {
                 if self.random_member(target) {
@@ -168,7 +169,7 @@ impl Planner<'_> {
                 return Err(p.site.err(
                     K::Unsatisfiable,
                     format!(
-                        "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action, avoid_collisions(true) or a motion relative to a member of random traffic{} from which the engine moves `{target}`",
+                        "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action, avoid_collisions(true), a motion relative to a member of random traffic or a following of the lanes of an actor the engine moves (lane(…: x) at: all){} from which the engine moves `{target}`",
                         since.map_or(String::new(), |s| format!(" started at {s:.2} s"))
                     ),
                 ));

@@ -651,3 +651,63 @@ fn a_chain_of_lane_relations_at_a_known_start_is_planned_from_its_head() {
     let r = passes("held/lane_chain_followed");
     lanes_followed(&r, &CHAIN, ("car", &[(7.05, -7.0)]));
 }
+
+/// lane_follow_engine_then_known.osc: ego follows npc's lanes in do.both [1, 5] s as the
+/// engine's (npc under avoid_collisions(true)): at npc's y at every step, y = -5.25 + 3.5·f,
+/// f = (1 − cos(π·τ/4))/2, τ = t − 1 (-4.737437 m at 2 s, -3.5 m at 3 s), in lane -1 from
+/// 3.05 s and at -1.75 m at 5 s. Its later phase at 5 s, a time the plan sets, is an error at
+/// the invocation: before, the plan's track kept ego in lane -2 and passed its lane(2) while
+/// the engine ran ego in lane -1 (lane 3) to 7 s.
+#[test]
+fn a_later_phase_at_a_known_time_after_following_the_lanes_of_an_actor_the_engine_moves_is_an_error(
+) {
+    let want = "expected this phase of `ego` to start on a run-time condition (until, wait, or the end of its gap action), found it at 5.00 s, after a gap action, avoid_collisions(true), a motion relative to a member of random traffic or a following of the lanes of an actor the engine moves (lane(…: x) at: all) started at 1.00 s from which the engine moves `ego` at ";
+    refused("lane_follow_engine_then_known", want, "34:9");
+}
+
+/// lane_follow_known_then_engine.osc: ego's lane(same_as: npc) in two phases, npc's lane
+/// change the plan's in do.known [1, 5] s (ego's LaneChangeAction over its span) and the
+/// engine's in do.engine [5, 9] s (npc under avoid_collisions(true); ego's FollowLanes): ego
+/// at npc's y at every step, y = -5.25 + 3.5·f(t − 1) to 5 s, then -1.75 − 3.5·f(t − 5),
+/// f(τ) = (1 − cos(π·τ/4))/2 (by hand: -4.737437, -2.262563 m at 2, 4 s; -2.262563,
+/// -4.737437 m at 6, 8 s), in one lane (the borders at 3 and 7 s, y = -3.5 m, aside); the
+/// engine's held check over do.engine passes, and do.after (a run-time start at 9.05 s) finds
+/// ego in lane 2 (-2) where the engine has it.
+#[test]
+fn a_lane_same_as_another_whose_changes_are_the_plans_then_the_engines_is_followed_in_both() {
+    let r = passes("held/lane_follow_known_then_engine");
+    crate::runtime::phases(
+        &r,
+        &[
+            ("do.known", 1.0, 5.0),
+            ("do.engine", 5.0, 9.0),
+            ("do.after", 9.05, 11.05),
+        ],
+    );
+    let f = |tau: f64| (1.0 - (std::f64::consts::PI * tau.clamp(0.0, 4.0) / 4.0).cos()) / 2.0;
+    let y = |t: f64| match t <= 5.0 {
+        true => -5.25 + 3.5 * f(t - 1.0),
+        false => -1.75 - 3.5 * f(t - 5.0),
+    };
+    for k in 0..=160 {
+        let t = 1.0 + k as f64 * DT;
+        let (ego, npc) = (r.at(t, "ego"), r.at(t, "npc"));
+        assert!((npc.y - y(t)).abs() < S_TOL, "npc {t}: {npc:?}");
+        assert!((ego.y - y(t)).abs() < S_TOL, "ego {t}: {ego:?}");
+        if (t - 3.0).abs() > DT / 2.0 && (t - 7.0).abs() > DT / 2.0 {
+            let lane = if (3.0..7.0).contains(&t) { -1 } else { -2 };
+            assert_eq!((ego.lane, npc.lane), (lane, lane), "{t}: {ego:?}");
+        }
+    }
+    for (t, want) in [
+        (2.0, -4.737437),
+        (4.0, -2.262563),
+        (6.0, -2.262563),
+        (8.0, -4.737437),
+    ] {
+        assert!((r.at(t, "ego").y - want).abs() < 1e-6, "{t}");
+    }
+    r.held("do.engine.0/ego/2:check", (5.0, 9.0));
+    let after = r.when("do.after/ego/1:check", "End");
+    assert!(after.is_some_and(|t| (t - 9.05).abs() < T_TOL), "{after:?}");
+}
