@@ -17,13 +17,13 @@ use super::clearance::{clear, Clearance};
 use super::mark::{gap_reached_since, traveled_since};
 use super::motion::{acceleration, relative_speed, speed, stands_still, DURATION_TOLERANCE};
 use super::place::place_reached;
-use super::refs::{reference_names, ConditionRefs, Triggering};
+use super::refs::{reference_names, ConditionRefs, PositionRef, Triggering};
 use super::road_state::{at_end_of_road, off_road};
 use super::rule::compare;
 use super::spacing::{distance_holds, time_headway, time_to_collision};
 use super::target::Target;
 use super::{ConditionContext, ConditionError, ConditionErrorKind, ConditionState};
-use crate::position::{resolve, EntityView};
+use crate::position::{resolve, resolve_with, EntityView, PositionError, PositionErrorKind};
 use crate::world::EntityId;
 
 /// The raw value of a ByEntityCondition (`refs`: its names resolved, condition/refs.rs).
@@ -95,6 +95,30 @@ fn reference<'c, C: ConditionContext + ?Sized>(
     Ok((id, ctx.entity_at(id).ok_or_else(unknown)?))
 }
 
+/// The condition's position `p` as a point to measure to, as it is now: resolved before when
+/// it depends on no entity, from its entity's pose by id when it is relative to one, planned
+/// from its names when it is a route or trajectory position (`refs.position`,
+/// condition/refs.rs).
+fn position_target<'c, C: ConditionContext + ?Sized>(
+    ctx: &'c C,
+    p: &scenario::Position,
+    refs: &ConditionRefs,
+) -> Result<Target<'c>, ConditionErrorKind> {
+    let resolved = match refs.position {
+        Some(PositionRef::Fixed(pose)) => return Ok(Target::Point(pose)),
+        Some(PositionRef::Relative(id)) => resolve_with(p, ctx, |name| {
+            ctx.entity_at(id).ok_or_else(|| {
+                PositionError::new(PositionErrorKind::UnknownEntity(name.into()), &p.pos)
+            })
+        }),
+        // Refs from `ConditionRefs::resolve` hold the position of a condition that has one.
+        Some(PositionRef::Planned) | None => resolve(p, ctx),
+    };
+    resolved
+        .map(|r| Target::Point(r.pose))
+        .map_err(ConditionErrorKind::Position)
+}
+
 /// True when `duration` s have passed since `holds` became true for entity `id` without a
 /// break.
 fn held(state: &mut ConditionState, id: EntityId, holds: bool, now: Real, duration: Real) -> bool {
@@ -114,11 +138,7 @@ fn holds<C: ConditionContext + ?Sized>(
     let reference = |i| reference(ctx, condition, refs, i);
     let network = ctx.road_network();
     let now = ctx.simulation_time();
-    let position_target = |p: &scenario::Position| {
-        resolve(p, ctx)
-            .map(|r| Target::Point(r.pose))
-            .map_err(ConditionErrorKind::Position)
-    };
+    let position_target = |p: &scenario::Position| position_target(ctx, p, refs);
     Ok(match condition {
         EntityCondition::EndOfRoad { duration } => {
             held(state, id, at_end_of_road(network, e), now, *duration)

@@ -6,7 +6,7 @@
 
 use scenario::{Condition, ConditionKind};
 
-use super::refs::{ConditionRefs, Names, SelectionId};
+use super::refs::{ConditionRefs, Names, RefError, SelectionId};
 use super::{
     by_entity, by_value, ConditionContext, ConditionError, ConditionErrorKind, ConditionState,
     MarkId,
@@ -23,7 +23,9 @@ use crate::world::EntityId;
 /// entity off the roads for a road distance, objects not closing for a TTC) is false, not an
 /// error. The condition's names are resolved through `ctx` first
 /// ([`ConditionContext::entity_id`], [`ConditionContext::selection_id`],
-/// [`ConditionContext::mark_id`]): one that names nothing is an unknown entity.
+/// [`ConditionContext::mark_id`]): one that names nothing is an unknown entity; the
+/// condition's position is resolved as far as it can be too (an entity-free one that does not
+/// resolve is its position error).
 pub fn evaluate<C: ConditionContext + ?Sized>(
     condition: &Condition,
     ctx: &C,
@@ -31,12 +33,13 @@ pub fn evaluate<C: ConditionContext + ?Sized>(
 ) -> Result<bool, ConditionError> {
     match ConditionRefs::resolve(condition, &mut Context(ctx)) {
         Ok(refs) => evaluate_resolved(condition, &refs, ctx, state),
-        Err(u) => {
+        Err(e) => {
             ctx.note_triggering(&condition.pos, false, &[]);
-            Err(ConditionError::new(
-                ConditionErrorKind::UnknownEntity(u.name),
-                &condition.pos,
-            ))
+            let kind = match e {
+                RefError::Unresolved(u) => ConditionErrorKind::UnknownEntity(u.name),
+                RefError::Position(p) => ConditionErrorKind::Position(p),
+            };
+            Err(ConditionError::new(kind, &condition.pos))
         }
     }
 }
@@ -103,5 +106,9 @@ impl<C: ConditionContext + ?Sized> Names for Context<'_, C> {
 
     fn mark(&mut self, name: &str) -> Option<MarkId> {
         self.0.mark_id(name)
+    }
+
+    fn network(&self) -> &opendrive::RoadNetwork {
+        self.0.road_network()
     }
 }

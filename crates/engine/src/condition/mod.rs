@@ -21,7 +21,7 @@
 //! | `angle` | Angle, RelativeAngle |
 //! | `mark` | oscsim's marks a state check notes: TraveledSinceMark, GapReachedSinceMark (no XML form) |
 //! | `place` | oscsim's PlaceReached: a place along the plan's roads reached (no XML form) |
-//! | `refs` | `ConditionRefs`: a condition's entities, selections and mark resolved once, when the storyboard is built |
+//! | `refs` | `ConditionRefs`: a condition's entities, selections, mark and position resolved once, when the storyboard is built |
 //! | `by_entity` | TriggeringEntities any / all, dispatch of EntityCondition |
 //! | `evaluate` | `evaluate`: the front door |
 
@@ -55,7 +55,7 @@ pub(crate) use mark::{MarkIds, Marks};
 pub(crate) use measure::distance as measured_distance;
 pub use motion::{DURATION_TOLERANCE, STAND_STILL_SPEED};
 pub use refs::SelectionId;
-pub(crate) use refs::{ConditionRefs, Names};
+pub(crate) use refs::{ConditionRefs, Names, RefError};
 pub use registry::UserValueRegistry;
 pub use road_state::END_OF_ROAD_TOLERANCE;
 pub use rule::{compare, EQUAL_TOLERANCE};

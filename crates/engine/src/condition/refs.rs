@@ -1,7 +1,8 @@
 //! The names a condition holds, resolved once (OpenSCENARIO 1.3 §7.6.3 "ByEntityCondition":
 //! `TriggeringEntities/EntityRef@entityRef` and the EntityCondition's own `entityRef`s, an
-//! XSD `EntityRef` naming a ScenarioObject or an EntitySelection, §7.2.2; oscsim's marks,
-//! condition/mark.rs).
+//! XSD `EntityRef` naming a ScenarioObject or an EntitySelection, §7.2.2; the `Position` of
+//! ReachPositionCondition, DistanceCondition and TimeToCollisionConditionTarget, §7.4;
+//! oscsim's marks, condition/mark.rs).
 //!
 //! The runtime resolves every condition when it builds the storyboard (`runtime::build`): each
 //! entity to its id in the world's store, each selection to its index among the scenario's
@@ -9,6 +10,14 @@
 //! name the scenario does not declare is an error at the condition then (a load error), as an
 //! undeclared `entityRef` of an action is (the XML reader refuses one already; a model built
 //! by other means may hold one).
+//!
+//! A condition's position ([`PositionRef`]): one of the four entity-free forms (World, Road,
+//! Lane, Geo) is resolved to its pose then, once (a place the road network does not have is a
+//! load error at the Position element, as an action's RoadPosition or LanePosition is,
+//! position/check.rs); one of the four relative forms keeps its entity's id (an undeclared
+//! `entityRef` is a load error at the Position element, naming its XSD element) and is worked
+//! out from where that entity stands at each evaluation; a RoutePosition or
+//! TrajectoryPosition is planned at each evaluation from the names it holds, as an action's.
 //!
 //! Entities that are not in the scene when the storyboard is built keep their ids all the
 //! same: an entity an AddEntityAction adds later (§7.2.2.3, XSD `AddEntityAction`) and a
@@ -21,9 +30,14 @@
 //! resolved to its index here and its members are read at each evaluation, by id. So no
 //! reference is kept by name.
 
-use scenario::{CollisionTarget, Condition, ConditionKind, EntityCondition, TimeToCollisionTarget};
+use opendrive::{Pose, RoadNetwork};
+use scenario::{
+    CollisionTarget, Condition, ConditionKind, EntityCondition, Position, SourcePos,
+    TimeToCollisionTarget,
+};
 
 use super::mark::MarkId;
+use crate::position::{needs, resolve_entity_free, Needs, PositionError};
 use crate::world::EntityId;
 
 /// Handle of an EntitySelection: its index among the scenario's selections, in declaration
@@ -50,6 +64,25 @@ pub(crate) struct ConditionRefs {
     /// The mark a TraveledSinceMark or GapReachedSinceMark reads (`None`: none noted by
     /// that name, ever; or the condition reads none).
     pub mark: Option<MarkId>,
+    /// The position of a ReachPosition or Distance condition, or TimeToCollision's Position
+    /// target ([`condition_position`]); `None` when the condition holds none.
+    pub position: Option<PositionRef>,
+}
+
+/// A condition's position (OpenSCENARIO 1.3 §7.4 `Position`), resolved as far as it can be
+/// before the run: which form it is decides what is left for each evaluation.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum PositionRef {
+    /// WorldPosition, RoadPosition, LanePosition, GeoPosition: they depend on the road
+    /// network alone, so the pose is the same at every evaluation; resolved once.
+    Fixed(Pose),
+    /// RelativeWorldPosition, RelativeObjectPosition, RelativeRoadPosition,
+    /// RelativeLanePosition: the entity of its `entityRef`, read by id at each evaluation,
+    /// where it stands then.
+    Relative(EntityId),
+    /// RoutePosition, TrajectoryPosition: planned at each evaluation from the positions and
+    /// entity of the route or trajectory, which it reads by name (not resolved here).
+    Planned,
 }
 
 /// What resolving reads: the runtime's world when it builds the storyboard, or a
@@ -61,6 +94,20 @@ pub(crate) trait Names {
     fn selection(&self, name: &str) -> Option<SelectionId>;
     /// The slot of mark `name` (`None`: no mark by that name can be noted).
     fn mark(&mut self, name: &str) -> Option<MarkId>;
+    /// The road network the scenario runs on (a condition's entity-free position is resolved
+    /// on it).
+    fn network(&self) -> &RoadNetwork;
+}
+
+/// Why a condition's references do not resolve.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum RefError {
+    /// A name that names nothing declared.
+    Unresolved(Unresolved),
+    /// An entity-free position the road network does not have (an unknown road or lane, an s
+    /// past a road's end with nothing connected, a GeoPosition without a georeference), with
+    /// the position's own place in the file.
+    Position(PositionError),
 }
 
 /// A name that names nothing declared: the XSD element and attribute it stands in, and the
@@ -71,6 +118,46 @@ pub(crate) struct Unresolved {
     pub element: &'static str,
     /// The name written.
     pub name: String,
+    /// Where the name is written when that is not the Condition element itself: the
+    /// Position element of a relative position.
+    pub at: Option<SourcePos>,
+}
+
+/// The position `condition` holds: ReachPositionCondition's and DistanceCondition's
+/// `Position`, TimeToCollisionConditionTarget's `Position`.
+pub(crate) fn condition_position(condition: &EntityCondition) -> Option<&Position> {
+    match condition {
+        EntityCondition::ReachPosition { position, .. }
+        | EntityCondition::Distance { position, .. } => Some(position),
+        EntityCondition::TimeToCollision {
+            target: TimeToCollisionTarget::Position(p),
+            ..
+        } => Some(p),
+        _ => None,
+    }
+}
+
+/// `position` resolved as far as the run allows ([`PositionRef`]): an entity-free form to
+/// its pose on `names`' network, a relative one to its entity's id.
+fn position_ref(position: &Position, names: &dyn Names) -> Result<PositionRef, RefError> {
+    match needs(position) {
+        Needs::Nothing => resolve_entity_free(position, names.network())
+            .map(|r| PositionRef::Fixed(r.pose))
+            .map_err(RefError::Position),
+        Needs::Entity(name, element) => {
+            names
+                .entity(name)
+                .map(PositionRef::Relative)
+                .ok_or_else(|| {
+                    RefError::Unresolved(Unresolved {
+                        element,
+                        name: name.to_owned(),
+                        at: Some(position.pos.clone()),
+                    })
+                })
+        }
+        Needs::Plan => Ok(PositionRef::Planned),
+    }
 }
 
 /// The entity references of `condition`'s EntityCondition besides the triggering entities,
@@ -114,12 +201,10 @@ pub(crate) fn reference_names(condition: &EntityCondition) -> Vec<(&str, &'stati
 }
 
 impl ConditionRefs {
-    /// The names of `condition` resolved through `names`; the first that names nothing
-    /// declared is the error.
-    pub(crate) fn resolve(
-        condition: &Condition,
-        names: &mut dyn Names,
-    ) -> Result<Self, Unresolved> {
+    /// The names of `condition` resolved through `names`, and its position as far as it can
+    /// be; the first that names nothing declared, or a position the road network does not
+    /// have, is the error.
+    pub(crate) fn resolve(condition: &Condition, names: &mut dyn Names) -> Result<Self, RefError> {
         let ConditionKind::ByEntity {
             triggering_entities,
             entity_condition,
@@ -127,9 +212,12 @@ impl ConditionRefs {
         else {
             return Ok(Self::default());
         };
-        let unresolved = |element, name: &str| Unresolved {
-            element,
-            name: name.to_owned(),
+        let unresolved = |element, name: &str| {
+            RefError::Unresolved(Unresolved {
+                element,
+                name: name.to_owned(),
+                at: None,
+            })
         };
         let triggering = triggering_entities
             .entity_refs
@@ -151,10 +239,14 @@ impl ConditionRefs {
             | EntityCondition::GapReachedSinceMark { mark, .. } => names.mark(mark),
             _ => None,
         };
+        let position = condition_position(entity_condition)
+            .map(|p| position_ref(p, names))
+            .transpose()?;
         Ok(Self {
             triggering,
             references,
             mark,
+            position,
         })
     }
 }

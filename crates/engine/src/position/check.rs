@@ -5,6 +5,8 @@
 //! `beyond`). Looked at: the Init actions and every Event's actions — TeleportAction,
 //! AcquirePositionAction, SynchronizeAction's two targets and AddEntityAction. Positions
 //! relative to an entity depend on where it is when they are needed and are resolved then.
+//! A condition's entity-free position (of any of the four entity-free forms) is resolved once
+//! through [`resolve_entity_free`] when the storyboard is built (condition/refs.rs).
 
 use opendrive::RoadNetwork;
 use scenario::{
@@ -12,7 +14,7 @@ use scenario::{
     Scenario,
 };
 
-use super::{resolve, EntityQuery, EntityView, PositionError};
+use super::{resolve, EntityQuery, EntityView, PositionError, ResolvedPosition};
 
 /// Resolves every entity-free position of `scenario`'s actions on `network`; the first that
 /// does not resolve, in document order.
@@ -40,6 +42,16 @@ pub fn check_positions(scenario: &Scenario, network: &RoadNetwork) -> Result<(),
         }
     }
     Ok(())
+}
+
+/// Resolves a position that depends on no entity (`resolve::Needs::Nothing`: WorldPosition,
+/// RoadPosition, LanePosition, GeoPosition) on `network` alone: what a condition's position
+/// of such a form is resolved to once, when the storyboard is built (condition/refs.rs).
+pub(crate) fn resolve_entity_free(
+    position: &Position,
+    network: &RoadNetwork,
+) -> Result<ResolvedPosition, PositionError> {
+    resolve(position, &NoEntities(network))
 }
 
 /// The positions an action names directly.

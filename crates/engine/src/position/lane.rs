@@ -32,8 +32,8 @@ use super::error::road_error;
 use super::lane_length::{lane_arc_length, s_at_lane_distance};
 use super::lane_walk::walk;
 use super::orientation::on_surface;
-use super::world::{entity, finite};
-use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
+use super::world::finite;
+use super::{EntityView, PositionError, PositionErrorKind, ResolvedPosition};
 
 /// Heading of lane `lane_id`'s driving direction at a point where its centre line heads
 /// `centre_h`: `centre_h`, turned by π for lanes driven towards −s.
@@ -117,19 +117,20 @@ pub(crate) enum Along {
     Lane(Real),
 }
 
-/// `RelativeLanePosition`.
+/// `RelativeLanePosition`; `reference` gives the entity `entity_ref` names
+/// (`resolve::resolve_with`).
 #[allow(clippy::too_many_arguments)] // the attributes of the XSD element, plus context.
-pub(crate) fn relative_lane<Q: EntityQuery + ?Sized>(
-    ctx: &Q,
+pub(crate) fn relative_lane<'q>(
+    network: &RoadNetwork,
     entity_ref: &str,
+    reference: impl FnOnce(&str) -> Result<EntityView<'q>, PositionError>,
     d_lane: i32,
     along: Along,
     offset: Real,
     orientation: Option<&Orientation>,
     pos: &SourcePos,
 ) -> Result<ResolvedPosition, PositionError> {
-    let e = entity(ctx, entity_ref, pos)?;
-    let network = ctx.road_network();
+    let e = reference(entity_ref)?;
     let rp = e.road_position.ok_or_else(|| {
         PositionError::new(PositionErrorKind::EntityOffRoad(entity_ref.into()), pos)
     })?;

@@ -17,10 +17,10 @@
 //! | `road_chain` | the plan's measure over a DSL plan's roads: its s, or u = L − s along an oncoming actor's direction of travel; lane lengths and walks across their joints |
 //! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
 //! | `beyond` | s past a road's ends: the same continuation for every road-based form |
-//! | `check` | entity-free positions of a scenario resolved at load |
+//! | `check` | entity-free positions of a scenario resolved at load (actions' Road/Lane positions; conditions' positions of every entity-free form) |
 //! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) on the path of `routing::plan_route` |
 //! | `trajectory` | TrajectoryPosition on a polyline |
-//! | `resolve` | `resolve`: the dispatcher; GeoPosition |
+//! | `resolve` | `resolve`: the dispatcher (and `resolve_with`, the reference entity given); what each form needs (`needs`); GeoPosition |
 //! | `sources` | every `EntityQuery` as routing's `WaypointSource` and trajectory's `PointSource` (resolving through `resolve`) |
 
 mod beyond;
@@ -42,9 +42,11 @@ mod trajectory;
 mod world;
 
 pub use check::check_positions;
+pub(crate) use check::resolve_entity_free;
 pub use error::{PositionError, PositionErrorKind};
 pub use query::{EntityQuery, EntityView};
 pub use resolve::resolve;
+pub(crate) use resolve::{needs, resolve_with, Needs};
 pub use resolved::ResolvedPosition;
 
 pub(crate) use lane::{add_lanes, driving_heading as lane_driving_heading};

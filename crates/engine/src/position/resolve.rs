@@ -15,14 +15,61 @@ use super::lane::{lane, parse_lane_id, relative_lane, Along};
 use super::road::{relative_road, road};
 use super::route::route_position;
 use super::trajectory::trajectory_position;
-use super::world::{finite, geo, relative, world};
-use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
+use super::world::{entity, finite, geo, relative, world};
+use super::{EntityQuery, EntityView, PositionError, PositionErrorKind, ResolvedPosition};
 
 /// Resolves `position` to a world pose and road position, reading reference entities and the
 /// road network from `ctx`. Errors name the position's file, line and column.
 pub fn resolve<Q: EntityQuery + ?Sized>(
     position: &Position,
     ctx: &Q,
+) -> Result<ResolvedPosition, PositionError> {
+    resolve_with(position, ctx, |name| entity(ctx, name, &position.pos))
+}
+
+/// What a position needs besides the road network, by its form: nothing (WorldPosition,
+/// RoadPosition, LanePosition, GeoPosition), the one entity a relative form names
+/// (RelativeWorldPosition, RelativeObjectPosition, RelativeRoadPosition,
+/// RelativeLanePosition), or a route or trajectory planned from the names it holds
+/// (RoutePosition, TrajectoryPosition).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Needs<'p> {
+    /// Only the road network: the same pose whenever it is resolved.
+    Nothing,
+    /// The entity `entityRef` names, with the XSD element and attribute it is written in.
+    Entity(&'p str, &'static str),
+    /// A route or trajectory, and every entity its positions name.
+    Plan,
+}
+
+/// What `position` needs to be resolved ([`Needs`]).
+pub(crate) fn needs(position: &Position) -> Needs<'_> {
+    match &position.kind {
+        PositionKind::RelativeWorld { entity_ref, .. } => {
+            Needs::Entity(entity_ref, "RelativeWorldPosition@entityRef")
+        }
+        PositionKind::RelativeObject { entity_ref, .. } => {
+            Needs::Entity(entity_ref, "RelativeObjectPosition@entityRef")
+        }
+        PositionKind::RelativeRoad { entity_ref, .. } => {
+            Needs::Entity(entity_ref, "RelativeRoadPosition@entityRef")
+        }
+        PositionKind::RelativeLane { entity_ref, .. } => {
+            Needs::Entity(entity_ref, "RelativeLanePosition@entityRef")
+        }
+        PositionKind::Route { .. } | PositionKind::Trajectory { .. } => Needs::Plan,
+        _ => Needs::Nothing,
+    }
+}
+
+/// [`resolve`] with the reference entity of a relative form given by `reference` (called with
+/// the form's `entityRef`, at most once, where [`resolve`] looks the name up in `ctx`): a
+/// caller that resolved the name before (a condition's position, condition/refs.rs) reads the
+/// entity by id. Routes and trajectories still read their names from `ctx`.
+pub(crate) fn resolve_with<'q, Q: EntityQuery + ?Sized>(
+    position: &Position,
+    ctx: &'q Q,
+    reference: impl FnOnce(&str) -> Result<EntityView<'q>, PositionError>,
 ) -> Result<ResolvedPosition, PositionError> {
     let pos = &position.pos;
     let network = ctx.road_network();
@@ -54,8 +101,9 @@ pub fn resolve<Q: EntityQuery + ?Sized>(
         } => {
             let in_object_axes = matches!(position.kind, PositionKind::RelativeObject { .. });
             relative(
-                ctx,
+                network,
                 entity_ref,
+                reference,
                 [*dx, *dy],
                 *dz,
                 orientation.as_ref(),
@@ -74,7 +122,14 @@ pub fn resolve<Q: EntityQuery + ?Sized>(
             ds,
             dt,
             orientation,
-        } => relative_road(ctx, entity_ref, [*ds, *dt], orientation.as_ref(), pos),
+        } => relative_road(
+            network,
+            entity_ref,
+            reference,
+            [*ds, *dt],
+            orientation.as_ref(),
+            pos,
+        ),
         PositionKind::Lane {
             road_id,
             lane_id,
@@ -108,8 +163,9 @@ pub fn resolve<Q: EntityQuery + ?Sized>(
                 (None, None) => Along::Road(0.0),
             };
             relative_lane(
-                ctx,
+                network,
                 entity_ref,
+                reference,
                 *d_lane,
                 along,
                 offset.unwrap_or(0.0),

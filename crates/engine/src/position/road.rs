@@ -19,8 +19,8 @@ use super::beyond::carried;
 use super::error::road_error;
 use super::lane_walk::walk;
 use super::orientation::on_surface;
-use super::world::{entity, finite};
-use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
+use super::world::finite;
+use super::{EntityView, PositionError, PositionErrorKind, ResolvedPosition};
 
 /// `RoadPosition`: (road, s, t).
 pub(crate) fn road(
@@ -49,20 +49,21 @@ pub(crate) fn road(
     Ok(ResolvedPosition::on_road(network, road_id, pose))
 }
 
-/// `RelativeRoadPosition`: the entity's (s, t) plus (ds, dt) on its road.
-pub(crate) fn relative_road<Q: EntityQuery + ?Sized>(
-    ctx: &Q,
+/// `RelativeRoadPosition`: the entity's (s, t) plus (ds, dt) on its road; `reference` gives
+/// the entity `entity_ref` names (`resolve::resolve_with`).
+pub(crate) fn relative_road<'q>(
+    network: &RoadNetwork,
     entity_ref: &str,
+    reference: impl FnOnce(&str) -> Result<EntityView<'q>, PositionError>,
     [ds, dt]: [Real; 2],
     orientation: Option<&Orientation>,
     pos: &SourcePos,
 ) -> Result<ResolvedPosition, PositionError> {
     finite(&[("ds", ds), ("dt", dt)], pos)?;
-    let e = entity(ctx, entity_ref, pos)?;
+    let e = reference(entity_ref)?;
     let rp = e.road_position.ok_or_else(|| {
         PositionError::new(PositionErrorKind::EntityOffRoad(entity_ref.into()), pos)
     })?;
-    let network = ctx.road_network();
     let inside = network
         .road(&rp.road_id)
         .is_some_and(|r| (0.0..=r.length).contains(&(rp.s + ds)));

@@ -17,14 +17,14 @@ use opendrive::{Pose, Real, RoadNetwork, LENGTH_EPSILON};
 use scenario::{Orientation, SourcePos};
 
 use super::orientation::{local_to_world, relative_to, Angles};
-use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
+use super::{EntityQuery, EntityView, PositionError, PositionErrorKind, ResolvedPosition};
 
 /// The entity `name`, or an `UnknownEntity` error at `pos`.
 pub(crate) fn entity<'q, Q: EntityQuery + ?Sized>(
     ctx: &'q Q,
     name: &str,
     pos: &SourcePos,
-) -> Result<super::EntityView<'q>, PositionError> {
+) -> Result<EntityView<'q>, PositionError> {
     ctx.entity(name)
         .ok_or_else(|| PositionError::new(PositionErrorKind::UnknownEntity(name.into()), pos))
 }
@@ -79,11 +79,13 @@ pub(crate) fn world(
     Ok(ResolvedPosition::located(network, pose))
 }
 
-/// `RelativeWorldPosition` (`in_object_axes` false) and `RelativeObjectPosition` (true).
+/// `RelativeWorldPosition` (`in_object_axes` false) and `RelativeObjectPosition` (true);
+/// `reference` gives the entity `entity_ref` names (`resolve::resolve_with`).
 #[allow(clippy::too_many_arguments)] // the attributes of the XSD elements, plus context.
-pub(crate) fn relative<Q: EntityQuery + ?Sized>(
-    ctx: &Q,
+pub(crate) fn relative<'q>(
+    network: &RoadNetwork,
     entity_ref: &str,
+    reference: impl FnOnce(&str) -> Result<EntityView<'q>, PositionError>,
     [dx, dy]: [Real; 2],
     dz: Option<Real>,
     orientation: Option<&Orientation>,
@@ -91,7 +93,7 @@ pub(crate) fn relative<Q: EntityQuery + ?Sized>(
     pos: &SourcePos,
 ) -> Result<ResolvedPosition, PositionError> {
     finite(&[("dx", dx), ("dy", dy), ("dz", dz.unwrap_or(0.0))], pos)?;
-    let e = entity(ctx, entity_ref, pos)?;
+    let e = reference(entity_ref)?;
     let d = if in_object_axes {
         local_to_world(&e.pose, dx, dy, dz.unwrap_or(0.0))
     } else {
@@ -100,11 +102,11 @@ pub(crate) fn relative<Q: EntityQuery + ?Sized>(
     let (x, y) = (e.pose.x + d[0], e.pose.y + d[1]);
     let z = match dz {
         Some(_) => e.pose.z + d[2],
-        None => surface_z(ctx.road_network(), x, y).unwrap_or(e.pose.z + d[2]),
+        None => surface_z(network, x, y).unwrap_or(e.pose.z + d[2]),
     };
     let Angles { h, p, r } = relative_to(orientation, &e.pose);
     let pose = Pose { x, y, z, h, p, r };
-    Ok(ResolvedPosition::located(ctx.road_network(), pose))
+    Ok(ResolvedPosition::located(network, pose))
 }
 
 /// `GeoPosition`: latitude and longitude (degrees) through the network's georeference to x/y,

@@ -14,9 +14,9 @@ use opendrive::RoadNetwork;
 use scenario::{Action, Actors, Scenario, Trigger};
 
 use crate::actions::ActionTable;
-use crate::condition::{ConditionRefs, MarkIds, Names};
+use crate::condition::{ConditionRefs, MarkIds, Names, RefError};
 use crate::controller::ControllerTable;
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::store::{entity, World};
 use crate::storyboard::{
     ActDesc, ActionDesc, ConditionDesc, ConditionEdge, ConditionGroupDesc, ConditionId, EventDesc,
@@ -301,8 +301,9 @@ impl Builder<'_> {
     /// an absent stop trigger never fires, as an empty one would.
     ///
     /// Each condition's names are resolved in the world now ([`ConditionRefs`]): one that
-    /// names no declared entity or selection is an error at the condition, naming the element
-    /// it is written in.
+    /// names no declared entity or selection is an error at the condition (at its Position
+    /// element for a relative position's `entityRef`), naming the element it is written in; an
+    /// entity-free position the road network does not have is the position's error.
     fn trigger(&mut self, trigger: Option<&Trigger>) -> Result<Option<TriggerDesc>, Error> {
         let Some(trigger) = trigger.filter(|t| !t.condition_groups.is_empty()) else {
             return Ok(None);
@@ -316,15 +317,16 @@ impl Builder<'_> {
                     world: self.world,
                     marks: &mut self.marks,
                 };
-                let refs = ConditionRefs::resolve(c, &mut names).map_err(|u| {
-                    Error::at(
+                let refs = ConditionRefs::resolve(c, &mut names).map_err(|e| match e {
+                    RefError::Unresolved(u) => Error::at(
                         format!(
                             "a declared entity for {} of condition '{}'",
                             u.element, c.name
                         ),
                         format!("'{}'", u.name),
-                        &c.pos,
-                    )
+                        u.at.as_ref().unwrap_or(&c.pos),
+                    ),
+                    RefError::Position(p) => Error::new(ErrorKind::Position(p)),
                 })?;
                 self.conditions.push(c.clone());
                 self.condition_refs.push(refs);
@@ -367,5 +369,9 @@ impl Names for BuildNames<'_> {
 
     fn mark(&mut self, name: &str) -> Option<crate::condition::MarkId> {
         Some(self.marks.id(name))
+    }
+
+    fn network(&self) -> &RoadNetwork {
+        &self.world.network
     }
 }

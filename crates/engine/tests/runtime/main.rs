@@ -15,6 +15,7 @@ mod action_order;
 mod actions;
 mod batch_variants;
 mod clothoid_spline_start;
+mod condition_positions;
 mod controller;
 mod distance;
 mod distance_esmini;
