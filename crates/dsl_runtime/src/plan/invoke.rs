@@ -176,16 +176,27 @@ impl Planner<'_> {
             }
             // A member's own acceleration (plain, or relative to an actor outside its group;
             // relative to another member it is bad input, `random_traffic_relations`) after a
-            // run-time condition: the member's model holds its longitudinal domain (§8.7.18.1),
-            // which the engine hands a speed (its desired speed) but no acceleration, so the
-            // engine would ignore the action: refused here, not run as nothing (issue 27).
+            // run-time condition is its model's free-road acceleration over the phase
+            // (`member_acceleration`, below), alone beside a drive or move. As the rate of a
+            // speed change (beside `change_speed`, `speed(…, at: end)`, or a speed or
+            // acceleration action) it is not run yet: the model changes its speed at its own
+            // rate and is handed no rate (issue 27).
             if self.random_member(target) {
-                if let Some(m) = mods.iter().find(|m| m.kind == ModKind::Acceleration) {
+                let rated = inv.kind != Action::Move
+                    || mods.iter().any(|q| {
+                        q.kind == ModKind::ChangeSpeed
+                            || (q.kind == ModKind::Speed && q.at == At::End)
+                    });
+                if let Some(m) = mods
+                    .iter()
+                    .find(|m| m.kind == ModKind::Acceleration)
+                    .filter(|_| rated)
+                {
                     return Err(m.site.err(
                         K::Unsupported,
                         format!(
-                            "expected no `{}(…)` on `{target}`, a member of random traffic, in a phase of its own: not run yet, its driver model holds its longitudinal control (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\") and takes a speed (`speed(…)`, its desired speed) but no acceleration",
-                            m.name
+                            "expected `{}(…)` on `{target}`, a member of random traffic, in a phase of its own alone beside drive() or move(): not run yet as the rate of a speed change or beside {}(…), its driver model changes its speed at its own rate (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\") and is handed a free-road acceleration but no rate",
+                            m.name, inv.action
                         ),
                     ));
                 }
@@ -565,6 +576,11 @@ impl Planner<'_> {
                                 || (q.kind == ModKind::Speed && q.at == At::End)
                         });
                         if paired {
+                            continue;
+                        }
+                        if self.random_member(target) {
+                            let names = (name("acceleration"), name("acceleration_end"));
+                            self.member_acceleration(m, target, names, (out, after))?;
                             continue;
                         }
                         let (t, len) = need_len("acceleration(…)")?;

@@ -93,7 +93,7 @@
 //! | `route_moves` | the lane (offset) changes between the points of a route in other lanes or at other offsets |
 //! | `random_traffic_relations` | another actor placed at its start relative to a member of random traffic as drawn |
 //! | `random_traffic_late` | random traffic created after the run's start, among the other actors' places then |
-//! | `random_traffic_actions` | a `random_traffic_vehicle_group`'s later actions: each member's model given a desired speed |
+//! | `random_traffic_actions` | a `random_traffic_vehicle_group`'s later actions: each member's model given a desired speed; a member's own acceleration its model's free-road acceleration |
 //! | `invoke` | one invocation's action and modifiers |
 //! | `schedule` | one phase and its members |
 //! | `overlap` | a parallel's members aligned to its `overlap:` argument (§7.3.9) |

@@ -49,11 +49,13 @@
 
 use scenario::{
     ControllerAction, ControllerDomains, DynamicsDimension, DynamicsShape, LaneChangeTarget,
-    LateralAction, PrivateAction, SpeedTarget, SpeedTargetValueType, TransitionDynamics,
+    LateralAction, LongitudinalAction, ModelAcceleration, PrivateAction, SpeedTarget,
+    SpeedTargetValueType, TransitionDynamics,
 };
 
 use super::action_args::positive;
 use super::lateral_actions::{num_of_lanes, DEFAULT_LATERAL_SPEED};
+use super::motion::check_accel;
 use super::planner::Planner;
 use super::random_traffic::LANE_STEP;
 use super::speed_actions::{speed_target, step_speed};
@@ -539,5 +541,55 @@ impl Planner<'_> {
             .iter()
             .find(|(k, _)| k == "model")
             .map(|(_, v)| v.as_str())
+    }
+}
+
+impl Planner<'_> {
+    /// A member's own `acceleration(a)` or `acceleration(a, same_as/faster_than/slower_than:
+    /// x)` (x outside its group: relative to a member it is bad input,
+    /// `random_traffic_relations`) alone in a phase of its own, which starts on a run-time
+    /// condition (a member's phase at a time the plan knows is refused before): its driver
+    /// model's free-road acceleration over the phase (oscsim's
+    /// `LongitudinalAction::ModelAcceleration`, as `name.0`), released at the phase end (as
+    /// `name.1`). The model holds the longitudinal domain (§8.7.18.1); the engine's `idm`
+    /// puts the acceleration in place of its free-road term a·(1 − (v/v0)^δ) and still
+    /// subtracts its interaction term toward the leader (engine controller/car_following.rs),
+    /// so on a free road the member accelerates at it and behind a leader the IDM's braking
+    /// wins where the gap asks for it; released, the model's own term is back. Relative to x:
+    /// x's acceleration read by the model at every step (at: all or end, the default), or
+    /// once when the phase starts (at: start, `track: projected`), plus a for `faster_than`,
+    /// less a for `slower_than`.
+    pub(super) fn member_acceleration(
+        &self,
+        m: &Modifier,
+        target: &str,
+        name: (String, String),
+        (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
+    ) -> Result<(), Error> {
+        let free = match self.followed_acceleration(m, (None, 0.0))? {
+            Some((x, delta, _)) => {
+                check_accel(m, delta)?;
+                ModelAcceleration::Relative {
+                    entity_ref: x,
+                    value: delta,
+                    continuous: m.at != At::Start && !m.projected,
+                }
+            }
+            None => {
+                let a = self.acceleration_value(m, (None, 0.0))?;
+                check_accel(m, a)?;
+                ModelAcceleration::Absolute(a)
+            }
+        };
+        let action =
+            |target| PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration { target });
+        out.push(Planned::with_phase(
+            target,
+            name.0,
+            action(Some(free)),
+            &m.site,
+        ));
+        after.push(Planned::with_phase(target, name.1, action(None), &m.site));
+        Ok(())
     }
 }

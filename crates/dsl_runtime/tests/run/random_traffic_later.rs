@@ -291,13 +291,70 @@ fn refused_on_every_seed(
 }
 
 #[test]
-fn a_members_own_plain_acceleration_after_a_run_time_condition_is_refused_at_the_modifier() {
-    // §8.7.18.1: the member's model holds its longitudinal domain; the engine hands it a speed
-    // but no acceleration, and ignored the AccelerationAction at 3.05 s before (no error): now
-    // a not-run-yet refusal at the modifier (23:17), before the run, on every seed.
-    let name = "err_random_traffic_member_own_plain_acceleration";
-    let what = "expected no `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own: not run yet";
-    refused_on_every_seed(name, (what, "23:17"), |e| {
+fn a_members_own_acceleration_after_a_run_time_condition_is_its_models_free_road_acceleration() {
+    // random_traffic_member_own_acceleration.osc, worked in the file (before, refused as not
+    // run yet at 23:17): one member standing with v0 = 0 and no leader in its lane (the IDM's
+    // interaction term 0); 2 m/s² handed to its model over 3.05-5.05 s, its own term (−b =
+    // −1.67 m/s²) to 6.05 s, ego's acceleration read at every step (1 m/s²) plus 0.5 over
+    // 6.05-8.05 s, its own term again to 10 s. Seeds 0-3: the member's place and direction
+    // are drawn, its speeds are not.
+    let name = "random_traffic_member_own_acceleration";
+    let m = "g.vehicles[0]";
+    for seed in 0..4 {
+        let r = run(name, seed, None);
+        for (t, v) in [
+            (3.0, 0.0),
+            (3.05, 0.0),
+            (4.05, 2.0),
+            (5.05, 4.0),
+            (6.05, 2.33),
+            (7.05, 3.83),
+            (8.05, 5.33),
+            (10.0, 2.0735),
+        ] {
+            let got = r.at(t, m).speed;
+            assert!(
+                (got - v).abs() < 1e-9,
+                "seed {seed} at {t} s: {got} m/s, not {v}"
+            );
+        }
+        // Ego's ramp, which the second phase reads: v_e = 10 + t.
+        let ego = r.at(6.05, "ego").speed;
+        assert!((ego - 16.05).abs() < 1e-9, "seed {seed}: ego {ego}");
+        // Distance over the first phase: ½·2·2² = 4 m along the member's lane.
+        let ds = (r.at(5.05, m).s - r.at(3.05, m).s).abs();
+        assert!((ds - 4.0).abs() < 1e-9, "seed {seed}: {ds} m");
+        // The hand-offs and releases, at the phase starts and ends.
+        let notes: Vec<_> = r
+            .controllers
+            .iter()
+            .filter(|(_, who, note)| who == m && note.contains("free-road acceleration"))
+            .map(|(t, _, note)| (format!("{t:.2}"), note.clone()))
+            .collect();
+        let at: Vec<_> = notes.iter().map(|(t, _)| t.as_str()).collect();
+        assert_eq!(
+            at,
+            ["3.05", "5.05", "6.05", "8.05"],
+            "seed {seed}: {notes:?}"
+        );
+        assert!(
+            notes[0].1.contains("free-road acceleration 2 m/s²")
+                && notes[1].1.contains("released")
+                && notes[2].1.contains("plus 0.5 m/s²")
+                && notes[3].1.contains("released"),
+            "seed {seed}: {notes:?}"
+        );
+    }
+}
+
+#[test]
+fn a_members_own_acceleration_as_the_rate_of_a_speed_change_is_refused_at_the_modifier() {
+    // §8.7.18.1: the member's model changes its speed at its own rate (the IDM's a and b) and
+    // is handed no rate: `speed(25mps, at: end)` with `acceleration(1mpsps)` after a run-time
+    // condition is a not-run-yet refusal at the modifier (24:17), before the run, on every seed.
+    let name = "err_random_traffic_member_own_acceleration_rate";
+    let what = "expected `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own alone beside drive() or move(): not run yet as the rate of a speed change";
+    refused_on_every_seed(name, (what, "24:17"), |e| {
         matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported)
     });
 }

@@ -641,6 +641,12 @@ impl Host<'_> {
                     LongitudinalAction::Travel(travel) => {
                         travel::start(self.world, actor, travel, time, pos)
                     }
+                    // Only a driver model takes it (handed over above).
+                    LongitudinalAction::ModelAcceleration { .. } => Err(Error::at(
+                        "a driver model to take the free-road acceleration (idm or mobil holding the longitudinal domain)",
+                        "none",
+                        pos,
+                    )),
                     _ => Err(Error::unsupported("this LongitudinalAction", pos)),
                 }
             }

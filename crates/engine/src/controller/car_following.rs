@@ -9,10 +9,21 @@
 //! at the vehicle's Performance `maxSpeed`. A SpeedAction (or SpeedProfileAction) of the
 //! scenario on the domain the controller holds sets it anew (the controller's reading of that
 //! control strategy, module `controller`).
+//!
+//! **A free-road acceleration handed to the `idm`** (oscsim's
+//! `scenario::LongitudinalAction::ModelAcceleration`, [`Strategy::FreeAcceleration`], which the
+//! DSL runtime gives a member of random traffic for `acceleration(…)` in a phase of its own,
+//! ASAM OpenSCENARIO DSL 2.1 §8.7.18.1: "the behavioral model assigned to each vehicle defines
+//! the actual behavior of the vehicle within the group") replaces the IDM's free-road term
+//! a·(1 − (v/v0)^δ) and nothing else: the command is that acceleration less the interaction
+//! term a·(s*/s)² toward the leader, so on a free road the entity accelerates at it exactly,
+//! and behind a leader the IDM's braking still wins where the gap asks for it. Released, the
+//! model's own free-road term is back (the `mobil` model, which drives by this IDM, weighs its
+//! lane changes with the same term).
 
 use opendrive::Real;
 
-use super::command::{Command, Controller, Strategy};
+use super::command::{Command, Controller, FreeAcceleration, Strategy};
 use super::view::ControllerView;
 use crate::models::acc::AccParameters;
 use crate::models::idm::{IdmParameters, Leader};
@@ -65,6 +76,8 @@ pub struct IdmController {
     pub params: IdmParameters,
     desired_given: bool,
     max_speed: Real,
+    /// The free-road acceleration handed to it, if any (module doc).
+    free: Option<FreeAcceleration>,
 }
 
 impl IdmController {
@@ -75,6 +88,17 @@ impl IdmController {
             params,
             desired_given,
             max_speed: Real::INFINITY,
+            free: None,
+        }
+    }
+
+    /// The free-road term at speed `v` (≥ 0) in the view: the one handed to the model
+    /// (module doc), else the IDM's own a·(1 − (v/v0)^δ).
+    #[inline]
+    pub(crate) fn free_term(&self, view: &ControllerView<'_>, v: Real) -> Real {
+        match &self.free {
+            None => self.params.free_acceleration(v),
+            Some(f) => f.value(view),
         }
     }
 
@@ -82,8 +106,12 @@ impl IdmController {
     /// walk of the driver models, controller/drivers.rs, takes it so; inlined there).
     #[inline]
     pub(crate) fn acceleration(&self, view: &ControllerView<'_>) -> Real {
-        self.params
-            .acceleration(view.speed().max(0.0), with_red_light(view, leader(view)))
+        let v = view.speed().max(0.0);
+        let leader = with_red_light(view, leader(view));
+        match &self.free {
+            None => self.params.acceleration(v, leader),
+            Some(f) => self.params.acceleration_with_free(f.value(view), v, leader),
+        }
     }
 
     pub(crate) fn on_activate(&mut self, view: &ControllerView<'_>) {
@@ -96,11 +124,23 @@ impl IdmController {
     }
 
     pub(crate) fn on_strategy(&mut self, strategy: Strategy) -> Option<String> {
-        let Strategy::Speed(v) = strategy else {
-            return None;
-        };
-        self.params.desired_speed = v.max(0.0).min(self.max_speed);
-        Some(format!("desired speed {} m/s", self.params.desired_speed))
+        match strategy {
+            Strategy::Speed(v) => {
+                self.params.desired_speed = v.max(0.0).min(self.max_speed);
+                Some(format!("desired speed {} m/s", self.params.desired_speed))
+            }
+            Strategy::FreeAcceleration(free) => {
+                let note = match (free, self.free) {
+                    (Some(FreeAcceleration::Fixed(a)), _) => format!("free-road acceleration {a} m/s² in place of the IDM's a·(1 − (v/v0)^δ), less its interaction term toward the leader"),
+                    (Some(FreeAcceleration::Follow { value, .. }), _) => format!("free-road acceleration: the reference's at each step plus {value} m/s² in place of the IDM's a·(1 − (v/v0)^δ), less its interaction term toward the leader"),
+                    (None, Some(_)) => "free-road acceleration released: the IDM's own a·(1 − (v/v0)^δ)".to_owned(),
+                    (None, None) => "no free-road acceleration to release".to_owned(),
+                };
+                self.free = free;
+                Some(note)
+            }
+            _ => None,
+        }
     }
 }
 

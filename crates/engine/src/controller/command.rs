@@ -12,6 +12,7 @@
 use opendrive::{Pose, Real};
 
 use super::view::ControllerView;
+use crate::world::EntityId;
 
 /// What moves the entity along its path over the step.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -89,6 +90,41 @@ pub enum Strategy {
     /// entity's road to reach, each change only into a gap the model's safety criterion
     /// accepts, and to keep until released (`None`).
     MandatoryLane(Option<i32>),
+    /// oscsim's free-road acceleration (`scenario::LongitudinalAction::ModelAcceleration`):
+    /// what replaces the driver model's free-road term, the interaction term toward its
+    /// leader still subtracted, until released (`None`: the model's own term again).
+    FreeAcceleration(Option<FreeAcceleration>),
+}
+
+/// The free-road acceleration a driver model is handed ([`Strategy::FreeAcceleration`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum FreeAcceleration {
+    /// This acceleration (m/s², along the direction of travel).
+    Fixed(Real),
+    /// The acceleration along its direction of travel of `reference` as the step's view shows
+    /// it (measured by its last move: over the step before) plus `value` (m/s²), read at
+    /// every step.
+    Follow {
+        /// The reference entity.
+        reference: EntityId,
+        /// Added to its acceleration (m/s²).
+        value: Real,
+    },
+}
+
+impl FreeAcceleration {
+    /// Its value in `view` (m/s²).
+    #[inline]
+    pub fn value(&self, view: &ControllerView<'_>) -> Real {
+        match *self {
+            FreeAcceleration::Fixed(a) => a,
+            FreeAcceleration::Follow { reference, value } => {
+                let x = view.other(reference);
+                x.travel_component(x.acceleration.translational) + value
+            }
+        }
+    }
 }
 
 /// A controller of one entity's motion (OpenSCENARIO 1.3 §6.6): each step it gets the world

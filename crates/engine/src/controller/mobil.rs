@@ -309,8 +309,8 @@ impl IdmDriver {
         let Some(m) = self.mandatory.as_deref_mut() else {
             return (self.idm.acceleration(view), None);
         };
+        let mut own = Own::new(&self.idm, view);
         let p = &self.idm.params;
-        let mut own = Own::new(p, view);
         let lane = m.decide(view, &mut own, p, &MobilParameters::default());
         (own.a_c, lane)
     }
@@ -365,9 +365,12 @@ struct Own {
 }
 
 impl Own {
-    fn new(p: &IdmParameters, view: &ControllerView<'_>) -> Self {
+    /// `idm`'s free-road term (its own, or one handed to it: car_following.rs) at the entity's
+    /// speed, weighed in every lane.
+    fn new(idm: &IdmController, view: &ControllerView<'_>) -> Self {
+        let p = &idm.params;
         let v = view.speed().max(0.0);
-        let free = p.free_acceleration(v);
+        let free = idm.free_term(view, v);
         let leader = view.leader();
         let light = view.red_light();
         Own {
@@ -549,7 +552,7 @@ impl MobilController {
     /// controller/drivers.rs, takes them so): the acceleration and the lane to change to, if
     /// any. [`Controller::step`] is this as a [`Command`].
     pub(crate) fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
-        let mut own = Own::new(&self.idm.params, view);
+        let mut own = Own::new(&self.idm, view);
         let lane = self.decide(view, &mut own);
         if lane.is_some() {
             self.last_change = view.time();

@@ -39,6 +39,10 @@
 //!   lane (`scenario::LateralAction::MandatoryLane`, no XML form) is reached lane by lane into
 //!   gaps MOBIL's safety criterion accepts and kept until released (module `mobil`, "A
 //!   mandatory lane");
+//! - `idm`, `mobil`: oscsim's free-road acceleration
+//!   (`scenario::LongitudinalAction::ModelAcceleration`, no XML form) takes the place of the
+//!   IDM's free-road term, its interaction term toward the leader kept, until released (module
+//!   `car_following`);
 //! - every other motion action, and every one given to `external`, is not taken (the log says
 //!   "ignored").
 //!
@@ -91,7 +95,7 @@ pub use crate::world::ActiveDomains;
 pub use crate::world::RouteFollow;
 pub(crate) use assign::{activate, assign, Origin, Taken};
 pub use car_following::{AccController, IdmController};
-pub use command::{Command, Controller, Lateral, Longitudinal, Strategy};
+pub use command::{Command, Controller, FreeAcceleration, Lateral, Longitudinal, Strategy};
 pub(crate) use default::place_on_track;
 pub use external::ExternalController;
 pub use external_input::{ExternalInput, InputError};

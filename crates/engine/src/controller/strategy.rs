@@ -1,10 +1,12 @@
 //! Motion actions on a domain a user controller holds are handed to it (the rule and the
 //! models' readings are in the module doc of `controller`).
 
-use scenario::{LateralAction, LongitudinalAction, PrivateAction, RoutingAction};
+use scenario::{
+    LateralAction, LongitudinalAction, ModelAcceleration, PrivateAction, RoutingAction,
+};
 
 use super::assign::Origin;
-use super::command::Strategy;
+use super::command::{FreeAcceleration, Strategy};
 use super::properties::{ControllerKind, ModelSettings};
 use super::table::ControllerTable;
 use crate::error::Error;
@@ -24,6 +26,7 @@ fn domains(action: &PrivateAction) -> Option<(bool, bool, &'static str)> {
                 LongitudinalAction::SpeedProfile { .. } => "SpeedProfileAction",
                 LongitudinalAction::Acceleration { .. } => "AccelerationAction",
                 LongitudinalAction::RelativeAcceleration { .. } => "RelativeAccelerationAction",
+                LongitudinalAction::ModelAcceleration { .. } => "AccelerationAction",
                 LongitudinalAction::Travel(_) => "TravelAction",
                 _ => "LongitudinalDistanceAction",
             },
@@ -84,6 +87,12 @@ fn strategy(
             };
             entries.last().map(|e| Strategy::Speed(base + e.speed))
         }
+        PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration { target }) => {
+            Some(Strategy::FreeAcceleration(match target {
+                Some(t) => Some(free_acceleration(world, t, origin)?),
+                None => None,
+            }))
+        }
         PrivateAction::Lateral(LateralAction::LaneChange { target, .. }) => {
             Some(Strategy::Lane(target_lane(world, target, origin.pos)?))
         }
@@ -97,6 +106,43 @@ fn strategy(
             }))
         }
         _ => None,
+    })
+}
+
+/// The free-road acceleration `target` asks for as the model takes it: a reference's
+/// acceleration read once is its value now (measured by its last move), plus the value.
+fn free_acceleration(
+    world: &World,
+    target: &ModelAcceleration,
+    origin: &Origin<'_>,
+) -> Result<FreeAcceleration, Error> {
+    Ok(match target {
+        ModelAcceleration::Absolute(a) => FreeAcceleration::Fixed(*a),
+        ModelAcceleration::Relative {
+            entity_ref,
+            value,
+            continuous,
+        } => {
+            let reference = world.id(entity_ref).ok_or_else(|| {
+                Error::at(
+                    "a declared entity",
+                    format!("entityRef '{entity_ref}'"),
+                    origin.pos,
+                )
+            })?;
+            let x = world.entity(reference);
+            match continuous {
+                true => FreeAcceleration::Follow {
+                    reference,
+                    value: *value,
+                },
+                false => FreeAcceleration::Fixed(
+                    x.travel_component(x.acceleration.translational) + value,
+                ),
+            }
+        }
+        // `ModelAcceleration` is non-exhaustive: a target this engine does not know.
+        _ => return Err(Error::unsupported("this ModelAcceleration", origin.pos)),
     })
 }
 

@@ -156,6 +156,9 @@ fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
             LongitudinalAction::RelativeAcceleration { entity_ref, .. } => {
                 Some((entity_ref, "a RelativeAccelerationAction"))
             }
+            LongitudinalAction::ModelAcceleration {
+                target: Some(scenario::ModelAcceleration::Relative { entity_ref, .. }),
+            } => Some((entity_ref, "a driver model's free-road acceleration")),
             LongitudinalAction::SpeedProfile {
                 entity_ref: Some(entity_ref),
                 ..

@@ -417,6 +417,18 @@ pub enum LongitudinalAction {
     /// `limits` (or not monotonous when asked) fails the action: an error record in the event
     /// log, and the run stops with that error.
     Travel(Box<Travel>),
+    /// oscsim's free-road acceleration of a driver model, an action with no XML form (the DSL
+    /// runtime writes it for ASAM OpenSCENARIO DSL 2.1 §8.9 `acceleration(…)` of a member of a
+    /// `random_traffic_vehicle_group` in a phase of its own, §8.7.18.1: "the behavioral model
+    /// assigned to each vehicle defines the actual behavior of the vehicle within the group"):
+    /// handed to the `idm` or `mobil` model holding the entity's longitudinal domain, whose
+    /// free-road term a·(1 − (v/v0)^δ) it replaces by `target` while the model's interaction
+    /// term toward its leader still applies (the command is the target less that term), until
+    /// an action with `None` gives the model its own free-road term back. Completes at once.
+    ModelAcceleration {
+        /// The free-road acceleration (`None`: release it).
+        target: Option<ModelAcceleration>,
+    },
     /// SpeedProfileAction (1.2+).
     SpeedProfile {
         /// Reference entity for relative speeds.
@@ -427,6 +439,25 @@ pub enum LongitudinalAction {
         dynamic_constraints: Option<DynamicConstraints>,
         /// Entries: (speed m/s, time s).
         entries: Vec<SpeedProfileEntry>,
+    },
+}
+
+/// The free-road acceleration a [`LongitudinalAction::ModelAcceleration`] hands a driver model.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ModelAcceleration {
+    /// This acceleration (m/s², along the direction of travel).
+    Absolute(f64),
+    /// `entity_ref`'s acceleration plus `value` (m/s²): with `continuous`, its acceleration as
+    /// the model reads it at each step's start (over the step before), else the one it has
+    /// when the action starts, held.
+    Relative {
+        /// The reference entity.
+        entity_ref: String,
+        /// Added to the reference's acceleration (m/s²).
+        value: f64,
+        /// Read at every step (else once, when the action starts).
+        continuous: bool,
     },
 }
 
