@@ -290,6 +290,25 @@ fn refused_on_every_seed(
     }
 }
 
+/// Runs `name` with seeds 0-3 and checks `g.vehicles[0]`'s speed at each (time, speed) of
+/// `want` within 1e-9 m/s (hand-computed numbers of piecewise constant accelerations: float
+/// round-off only); returns the runs by seed.
+fn member_speeds(name: &str, want: &[(f64, f64)]) -> Vec<crate::support::Run> {
+    (0..4)
+        .map(|seed| {
+            let r = run(name, seed, None);
+            for &(t, v) in want {
+                let got = r.at(t, "g.vehicles[0]").speed;
+                assert!(
+                    (got - v).abs() < 1e-9,
+                    "{name} seed {seed} at {t} s: {got} m/s, not {v}"
+                );
+            }
+            r
+        })
+        .collect()
+}
+
 #[test]
 fn a_members_own_acceleration_after_a_run_time_condition_is_its_models_free_road_acceleration() {
     // random_traffic_member_own_acceleration.osc, worked in the file (before, refused as not
@@ -298,26 +317,19 @@ fn a_members_own_acceleration_after_a_run_time_condition_is_its_models_free_road
     // −1.67 m/s²) to 6.05 s, ego's acceleration read at every step (1 m/s²) plus 0.5 over
     // 6.05-8.05 s, its own term again to 10 s. Seeds 0-3: the member's place and direction
     // are drawn, its speeds are not.
-    let name = "random_traffic_member_own_acceleration";
     let m = "g.vehicles[0]";
-    for seed in 0..4 {
-        let r = run(name, seed, None);
-        for (t, v) in [
-            (3.0, 0.0),
-            (3.05, 0.0),
-            (4.05, 2.0),
-            (5.05, 4.0),
-            (6.05, 2.33),
-            (7.05, 3.83),
-            (8.05, 5.33),
-            (10.0, 2.0735),
-        ] {
-            let got = r.at(t, m).speed;
-            assert!(
-                (got - v).abs() < 1e-9,
-                "seed {seed} at {t} s: {got} m/s, not {v}"
-            );
-        }
+    let want = [
+        (3.0, 0.0),
+        (3.05, 0.0),
+        (4.05, 2.0),
+        (5.05, 4.0),
+        (6.05, 2.33),
+        (7.05, 3.83),
+        (8.05, 5.33),
+        (10.0, 2.0735),
+    ];
+    let runs = member_speeds("random_traffic_member_own_acceleration", &want);
+    for (seed, r) in runs.iter().enumerate() {
         // Ego's ramp, which the second phase reads: v_e = 10 + t.
         let ego = r.at(6.05, "ego").speed;
         assert!((ego - 16.05).abs() < 1e-9, "seed {seed}: ego {ego}");
@@ -419,5 +431,67 @@ fn a_members_own_speed_relative_to_an_actor_outside_its_group_runs() {
                 && handed[0].2.ends_with("desired speed 10 m/s"),
             "seed {seed}: {handed:?}"
         );
+    }
+}
+
+#[test]
+fn a_members_own_acceleration_of_another_actor_is_read_once_at_start_or_at_every_step() {
+    // random_traffic_member_own_acceleration_held.osc, worked in the file; seeds 0-3: ego's
+    // 1 m/s² at 3.05 s held over 3.05-7.05 s although ego's turns to −1 at 5 s; −1.67 m/s²
+    // (its own term) to 8.05 s; ego's −1 less 0.5 from 8.05 s to a stand at 9.603 s.
+    let want = [
+        (3.05, 0.0),
+        (5.05, 2.0),
+        (7.05, 4.0),
+        (8.05, 2.33),
+        (9.05, 0.83),
+        (10.05, 0.0),
+        (12.0, 0.0),
+    ];
+    let runs = member_speeds("random_traffic_member_own_acceleration_held", &want);
+    for (seed, r) in runs.iter().enumerate() {
+        // Ego's ramps, which the phases read: 15 m/s at 5 s, 12 m/s at 8 s.
+        for (t, v) in [(5.0, 15.0), (8.0, 12.0)] {
+            let got = r.at(t, "ego").speed;
+            assert!((got - v).abs() < 1e-9, "seed {seed}: ego {got} at {t} s");
+        }
+    }
+}
+
+#[test]
+fn a_members_own_acceleration_is_braked_by_its_models_interaction_term_behind_a_leader() {
+    // random_traffic_member_own_acceleration_leader.osc, worked in the file; seeds 0-3: the
+    // first step at 2 − 0.73·(2/g0)², below 4 m/s at 4.05 s (6 m/s without the braking),
+    // never nearer than s0·√(0.73/2) = 1.2083 m, standing at the end.
+    let name = "random_traffic_member_own_acceleration_leader";
+    let (m, x) = ("g.vehicles[0]", "ego");
+    // The gap between the member's front and ego's rear along the member's way.
+    let gap = |objs: &(f64, Vec<crate::support::Obj>)| {
+        let find = |n: &str| objs.1.iter().find(|o| o.name == n).expect("in the frame");
+        let (a, b) = (find(m), find(x));
+        let (ba, bb) = (&a.object.bounding_box, &b.object.bounding_box);
+        (b.s - a.s).abs() + bb.center().x - ba.center().x - (ba.length() + bb.length()) / 2.0
+    };
+    let standing = 2.0 * (0.73f64 / 2.0).sqrt();
+    for seed in 0..4 {
+        let r = run(name, seed, None);
+        let g0 = gap(&r.frames[21]);
+        assert!((r.frames[21].0 - 1.05).abs() < 1e-9);
+        let a = 2.0 - 0.73 * (2.0 / g0).powi(2);
+        let v = r.at(1.10, m).speed;
+        assert!(
+            (v - a * DT).abs() < 1e-9,
+            "seed {seed}: {v} m/s, not {}",
+            a * DT
+        );
+        assert!(a < 2.0 - 0.005, "seed {seed}: interaction {}", 2.0 - a);
+        let v4 = r.at(4.05, m).speed;
+        assert!(v4 > 2.0 && v4 < 4.0, "seed {seed}: {v4} m/s at 4.05 s");
+        let nearest = r.frames.iter().map(gap).fold(f64::INFINITY, f64::min);
+        assert!(
+            nearest >= standing && nearest < standing + 0.05,
+            "seed {seed}: nearest {nearest} m"
+        );
+        assert_eq!(r.at(12.0, m).speed, 0.0, "seed {seed}");
     }
 }
