@@ -19,7 +19,9 @@
 //!   placed as a pose_3d point (x = s, y = t, yaw 0) under `road_relative` (the default for
 //!   these points) or `lane_relative` (t from the centre of the reference's lane) below, along
 //!   the plan's roads: the route given to `create_route_point` is one the runtime chooses (a
-//!   route the map makes is refused at the argument, `resolve::position`). `world_relative` and `object_relative`
+//!   route the map makes is refused at the argument, `resolve::position`), its s and t along
+//!   it and to its left: on a field `routes_are_opposite` binds against s, −s and −t of the
+//!   road (a field `routes_are_in_sequence` binds to one road: not run yet, an error). `world_relative` and `object_relative`
 //!   (frames of x and y, not of s and t) are errors at the argument;
 //! - an odr point names its road and lane (OpenDRIVE ids, not relative); its s is from the
 //!   reference's s along the plan's roads, its t from its lane's centre, heading the road's,
@@ -147,7 +149,35 @@ impl Planner<'_> {
             RelativePoints::Odr(lanes) => lanes.get(i),
             _ => None,
         };
-        let world = points
+        // A route point's s and t run along its route and to its left (§8.12 route_point): on
+        // a route field `routes_are_opposite` binds to the plan's roads driven against s
+        // (`against::bind_routes`) they are −s and −t of the road (as an absolute route
+        // point's, `position_actions`) under `road_relative`, and of the reference's lane
+        // where it drives in +s under `lane_relative` (a lane driven against s has the route's
+        // direction already); on a field the map binds to one road of the plan
+        // (`routes_are_in_sequence`) the point would have to lie on that road, which is not
+        // run yet (issue 27: before, both bindings were ignored and the points read as on the
+        // plan's roads in +s).
+        let mut along = Vec::with_capacity(points.len());
+        for (i, &(x, y, yaw)) in points.iter().enumerate() {
+            let field = match of {
+                RelativePoints::St(routes) => routes.get(i).and_then(Option::as_ref),
+                _ => None,
+            };
+            if let Some((_, _, why)) = field.and_then(|f| self.route_roads.get(f)) {
+                return Err(site.err(
+                    K::Unsupported,
+                    format!("expected the route of route point {i} of the relative {} a route the plan's roads are (free, or bound against s by routes_are_opposite), found `{}`, {why}: not run yet (its points would have to lie on that road)", if inv.kind.along_path() { "path" } else { "trajectory" }, field.map_or("", String::as_str)),
+                ));
+            }
+            let back = field.is_some_and(|f| self.against_routes.contains_key(f));
+            let turn = back && (transform == "road_relative" || !road.is_against());
+            along.push(match turn {
+                true => (-x, -y, yaw),
+                false => (x, y, yaw),
+            });
+        }
+        let world = along
             .iter()
             .enumerate()
             .map(|(i, &(x, y, yaw))| match (lane_of(i), transform.as_str()) {

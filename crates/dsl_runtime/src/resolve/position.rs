@@ -90,8 +90,10 @@ pub(crate) enum Place {
 pub(crate) enum RelativePoints {
     /// `pose_3d` (`relative_path_pose_3d`, `relative_trajectory_pose_3d`).
     Pose,
-    /// `route_point` (`relative_path_st`, `relative_trajectory_st`): s and t.
-    St,
+    /// `route_point` (`relative_path_st`, `relative_trajectory_st`): s and t, and the route
+    /// field each is on (`map.create_route_point(r, …)`), whose direction the plan reads from
+    /// the map's bindings (a field `routes_are_opposite` binds against s).
+    St(Vec<Option<String>>),
     /// `odr_point` (`relative_path_odr`, `relative_trajectory_odr`): s and t, and the
     /// OpenDRIVE road and lane each names.
     Odr(Vec<(String, i32)>),
@@ -476,6 +478,7 @@ fn road_points(
     }
     let mut points = Vec::with_capacity(count);
     let mut lanes = Vec::new();
+    let mut routes = Vec::new();
     for (i, p) in given.into_iter().enumerate() {
         let Some(p) = p else {
             return Err(ev.files.err(
@@ -485,9 +488,10 @@ fn road_points(
             ));
         };
         match place(owner, p) {
-            Ok(Place::Route { s, t, .. }) => {
+            Ok(Place::Route { s, t, route }) => {
                 relative_route(owner, p, i, path)?;
                 points.push((s, t, 0.0));
+                routes.push(route);
             }
             Ok(Place::Lane { road, lane, s, t }) => {
                 points.push((s, t, 0.0));
@@ -503,7 +507,7 @@ fn road_points(
         }
     }
     let of = match lanes.len() {
-        0 => RelativePoints::St,
+        0 => RelativePoints::St(routes),
         n if n == points.len() => RelativePoints::Odr(lanes),
         _ => {
             return Err(ev.files.err(
@@ -521,7 +525,8 @@ fn road_points(
 /// Checks the `route` of `map.create_route_point(route, s, t)`, point `i` of the relative path
 /// or trajectory `path` (the call `p`): a relative point's s and t are road coordinates from
 /// the reference's, along the plan's roads (`crate::plan`'s `relative_path`), so its route is
-/// a route the runtime chooses (a `route` field nothing defines: the plan's roads); a route the
+/// a route the runtime chooses (a `route` field nothing defines: the plan's roads, in the
+/// direction the map's modifiers bind it, which the plan reads); a route the
 /// map makes (an odr point, `create_route`, a road of the map's lists, …) would be measured
 /// along nowhere, an error at the argument (issue 27: before, it was not read).
 fn relative_route(ev: &Eval<'_>, p: &Expr, i: usize, path: &str) -> Result<(), Error> {

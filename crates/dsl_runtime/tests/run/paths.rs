@@ -118,6 +118,26 @@ fn a_relative_path_of_route_points_is_placed_in_the_references_road_coordinates(
     crate::position_actions::follows_the_line_beside_npc("paths/along_relative_st_lane", "do.1");
 }
 
+/// relative_path_st_opposite.osc: relative_path_st.osc's route points on `theirs`, which
+/// routes_are_opposite binds to the plan's roads against s: (30, 3.5) and (-10, 3.5) along
+/// `theirs` and to its left are (-30, -3.5) and (10, -3.5) of the road from npc's (50, -1.75),
+/// the same line (20, -5.25) -> (60, -5.25) (by hand). Before, the binding was not read and
+/// the points lay at (80, 1.75) and (40, 1.75). A road field routes_are_in_sequence binds to
+/// one road: not run yet, an error at the path.
+#[test]
+fn a_relative_route_point_on_a_route_the_map_binds_is_read_along_it() {
+    crate::position_actions::follows_the_line_beside_npc("paths/relative_path_st_opposite", "do.1");
+    let e = crate::support::error_on(
+        "paths/err_relative_st_in_sequence",
+        "road_link_unequal_number_of_lanes0",
+    );
+    assert!(
+        e.starts_with("expected the route of route point 0 of the relative path a route the plan's roads are (free, or bound against s by routes_are_opposite), found `b`, road 2 bound by map.routes_are_in_sequence(…) at ")
+            && e.ends_with("err_relative_st_in_sequence.osc:20:35"),
+        "{e}"
+    );
+}
+
 /// A relative trajectory of odr points (§8.12.41 `relative_trajectory_odr`): each in its
 /// lane, s from lead's at the start: relative_trajectory_road.osc's trajectory and motion
 /// (relative_trajectory_odr.osc, by hand).
