@@ -340,8 +340,12 @@ pub(crate) fn map_route(
         }
     }
     // A compound lane's lanes: its own lane (bound, else lane(1)'s, where an actor along it
-    // without a lane of its own drives) in each lane section in order along s, while the
-    // section has it as a driving lane (the plan's roads keep lane ids).
+    // without a lane of its own drives) in the first lane section, then in each lane section
+    // after it in order along s the lane the one before leads into (OpenDRIVE 1.8 §9.4 lane
+    // linkage: the lane's <link><successor id=…>, `RoadNetwork::successors`), while that is a
+    // driving lane of the plan's roads (issue 27: before, the same lane id in each section,
+    // the wrong lane where a section renumbers its lanes; the plan's roads run on to another
+    // road only where the ids are kept, `road::chain`).
     if let (true, MapRoad::Field(f), Some(j)) = (which.compound, &which.road, which.lane) {
         let (lane, how) = match lanes.get(f) {
             Some((l, why)) => (*l, why.clone()),
@@ -350,23 +354,42 @@ pub(crate) fn map_route(
                 "lane(1)'s where the plan's roads start, where an actor along it without a lane of its own drives".to_string(),
             ),
         };
-        let own: Vec<_> = sections
-            .iter()
-            .take_while(|(_, _, ps)| road.driving_lanes(0.5 * (ps.0 + ps.1)).contains(&lane))
-            .collect();
-        let (id, k, ps) = own.get(j).ok_or_else(|| {
+        let mut own = Vec::new();
+        let mut before: Option<opendrive::LaneHandle> = None;
+        for (id, k, ps) in &sections {
+            let here = match before {
+                None => {
+                    let mid = net.road(id).map_or(0.0, |r| {
+                        let s1 = r.lane_sections.get(k + 1).map_or(r.length, |n| n.s);
+                        0.5 * (r.lane_sections[*k].s + s1)
+                    });
+                    net.lane_handle(id, lane, mid)
+                }
+                Some(h) => net
+                    .successors(h)
+                    .into_iter()
+                    .find(|n| n.section as usize == *k && net.handle_road(*n).id == *id),
+            };
+            let driving = road.driving_lanes(0.5 * (ps.0 + ps.1));
+            let Some(h) = here.filter(|h| driving.contains(&h.lane)) else {
+                break;
+            };
+            own.push((id, k, ps, h.lane));
+            before = Some(h);
+        }
+        let (id, k, ps, l) = own.get(j).ok_or_else(|| {
             past(
                 own.len(),
-                &format!("the lanes along `{f}` (its lane {lane}, {how}, in each lane section of the plan's roads in order along s while the section has it)"),
+                &format!("the lanes along `{f}` (its lane {lane}, {how}, in the plan's first lane section, then in each after it the lane the one before leads into, while that is a driving lane)"),
             )
         })?;
         let why = format!(
-            "lane {lane} of the lane section of road {id} from s = {:.2} m, lane {j} along `{f}` ({how})",
-            net.road(id).map_or(0.0, |r| r.lane_sections[*k].s)
+            "lane {l} of the lane section of road {id} from s = {:.2} m, lane {j} along `{f}` ({how}, then its lanes' successor links)",
+            net.road(id).map_or(0.0, |r| r.lane_sections[**k].s)
         );
         return Ok(Some((
             field.clone(),
-            Bound::Lane(lane, id.clone(), *ps, why),
+            Bound::Lane(*l, (*id).clone(), **ps, why),
         )));
     }
     if which.against {

@@ -107,6 +107,33 @@ fn a_roads_sections_in_minus_s_on_a_plan_over_two_roads_are_met_from_its_last_ro
     }
 }
 
+/// list_compound_lane_links.osc on lane_add_inner.xodr, by hand: cl is lane -2 of section 0
+/// (lane(1)'s at the start), whose successor link leads into lane -3 of section 1:
+/// cl.lanes[1] is that lane from s = 300 m, its centre t = -(w(s − 300) + 5.25), w(d) =
+/// 0.00105·d² − 0.000007·d³ the new lane -1's width (-5.25 m at 300 m, -5.796875 m at 325 m,
+/// -7.0 m at 350 m). Before, cl.lanes[1] was section 1's lane -2 (the same id), t = -1.75 m
+/// at 300 m.
+#[test]
+fn a_compound_lanes_lanes_follow_the_successor_links_where_the_lane_ids_change() {
+    let r = run_on("lists/list_compound_lane_links", "lane_add_inner");
+    let w = |d: f64| 0.00105 * d * d - 0.000007 * d * d * d;
+    assert!((w(25.0) - 0.546875).abs() < 1e-12 && (w(50.0) - 1.75).abs() < 1e-12);
+    let p = r.at(0.0, "bus");
+    assert!(
+        (p.x - 300.0).abs() < S_TOL && (p.y + 5.25).abs() < S_TOL,
+        "{p:?}"
+    );
+    for k in 0..=100 {
+        let t = k as f64 * 0.05;
+        let p = r.at(t, "bus");
+        let want = -(w(p.s - 300.0) + 5.25);
+        assert!(
+            (p.y - want).abs() < 1e-3 && p.lane == -3 && (300.0..=350.0 + S_TOL).contains(&p.s),
+            "bus at {t} s: {p:?}, want y {want}"
+        );
+    }
+}
+
 #[test]
 fn a_compound_lane_alone_and_its_lanes_select_the_same_lane() {
     // list_compound_lane.osc, by hand: cl is lane -2 (lane(1) at the start of lane_add.xodr);
