@@ -24,7 +24,7 @@
 use opendrive::Real;
 
 use super::command::Controller;
-use super::mobil::{IdmDriver, MobilController};
+use super::mobil::{IdmDriver, MobilController, Next};
 use super::properties::MotionDomains;
 use super::view::ControllerView;
 
@@ -66,6 +66,25 @@ impl DriverModel {
         match self {
             DriverModel::Idm(c) => c.command(view),
             DriverModel::Mobil(c) => c.command(view),
+        }
+    }
+
+    /// The change this step's command gave yields (controller/one_gap.rs): whether it may, the
+    /// model then being as if it had decided none ([`MobilController::yield_change`]; an
+    /// `idm`'s change is always its mandatory lane's, judged, and it keeps no state of it).
+    pub fn yield_change(&mut self) -> bool {
+        match self {
+            DriverModel::Idm(_) => true,
+            DriverModel::Mobil(c) => c.yield_change(),
+        }
+    }
+
+    /// MOBIL's safety criterion, as the model judges its changes, for its entity changing
+    /// into a lane where `other` would be next to it (controller/mobil.rs `gap_safe`).
+    pub fn gap_safe(&self, view: &ControllerView<'_>, other: Next) -> bool {
+        match self {
+            DriverModel::Idm(c) => c.gap_safe(view, other),
+            DriverModel::Mobil(c) => c.gap_safe(view, other),
         }
     }
 }

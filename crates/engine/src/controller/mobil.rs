@@ -19,7 +19,10 @@
 //!
 //! Of the lanes where a change is safe and worth it, the one with the larger margin is taken;
 //! the change has the lateral shape of the route's lane changes (cubic over the distance that
-//! keeps the peak lateral acceleration at 1 m/s², controller/lane_change.rs). Further
+//! keeps the peak lateral acceleration at 1 m/s², controller/lane_change.rs). A change into a gap
+//! that a change from the lane's other side takes in the same step, or is under way into,
+//! yields when the two would fail MOBIL's safety criterion side by side: the one further
+//! downstream goes first, as in SUMO (controller/one_gap.rs). Further
 //! decisions wait while a lateral transition runs, for [`MIN_CHANGE_INTERVAL`] after a change,
 //! and below [`MIN_CHANGE_SPEED`] (a change at rest would be a sideways jump). A
 //! LaneChangeAction of the scenario on the lateral domain is carried out the same way, to the
@@ -84,6 +87,10 @@ pub struct MobilController {
     kept: KeptBeside,
     /// The mandatory lane held (module doc), if any.
     mandatory: Option<Box<Mandatory>>,
+    /// The change decided last, when MOBIL or the mandatory lane judged it (not a
+    /// LaneChangeAction's): the time of the change before it, put back if it yields
+    /// ([`Self::yield_change`], controller/one_gap.rs).
+    judged: Option<Real>,
 }
 
 impl MobilController {
@@ -96,6 +103,7 @@ impl MobilController {
             last_change: Real::NEG_INFINITY,
             kept: KeptBeside::default(),
             mandatory: None,
+            judged: None,
         }
     }
 
@@ -553,13 +561,93 @@ impl MobilController {
     /// any. [`Controller::step`] is this as a [`Command`].
     pub(crate) fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
         let mut own = Own::new(&self.idm, view);
+        // A lane change decided with a pending lane and no mandatory one is the
+        // LaneChangeAction's (may_decide takes the pending lane before any judgement).
+        let ordered = self.mandatory.is_none() && self.pending.is_some();
         let lane = self.decide(view, &mut own);
         if lane.is_some() {
+            self.judged = (!ordered).then_some(self.last_change);
             self.last_change = view.time();
         }
         // a_c is the IDM controller's acceleration in this view (the same leader, light,
         // speed and parameters).
         (own.a_c, lane)
+    }
+}
+
+impl MobilController {
+    /// The change this step's command gave yields to another change into the same gap
+    /// (controller/one_gap.rs): `true` when MOBIL or the mandatory lane judged it, and the
+    /// controller is then as if it had decided none (its last change's time put back, so
+    /// that it decides again in the next step); `false` for a LaneChangeAction's change,
+    /// which is carried out as ordered.
+    pub(crate) fn yield_change(&mut self) -> bool {
+        match self.judged.take() {
+            Some(before) => {
+                self.last_change = before;
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// MOBIL's safety criterion, at this controller's parameters, for its entity changing
+    /// into a lane where `other` would be next to it ([`gap_safe`]).
+    pub(crate) fn gap_safe(&self, view: &ControllerView<'_>, other: Next) -> bool {
+        gap_safe(&self.idm, &self.mobil, view, other)
+    }
+}
+
+impl IdmDriver {
+    /// MOBIL's safety criterion at the default b_safe (the `idm` has no MOBIL parameters), for
+    /// its entity changing into a lane where `other` would be next to it ([`gap_safe`]). A
+    /// change of an `idm` is always its mandatory lane's, judged: it may always yield.
+    pub(crate) fn gap_safe(&self, view: &ControllerView<'_>, other: Next) -> bool {
+        gap_safe(&self.idm, &MobilParameters::default(), view, other)
+    }
+}
+
+/// Another vehicle as it would be next to a changer in the lane it changes into
+/// (controller/one_gap.rs): ahead of it (its new leader) or behind it (its new follower).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Next {
+    /// The other vehicle.
+    pub id: crate::world::EntityId,
+    /// It is ahead.
+    pub ahead: bool,
+    /// Bumper-to-bumper distance along the lane (m); 0 or less where the boxes overlap along it.
+    pub gap: Real,
+    /// Its speed along the changer's direction of travel (m/s).
+    pub speed: Real,
+}
+
+/// MOBIL's safety criterion (module doc; Kesting, Treiber, Helbing 2007, eq. (2)) for the
+/// entity of `view`, driving by `idm`, changing into a lane where `other` would
+/// be next to it: ahead, the changer's own ã_c behind it ≥ −b_safe, as [`Own::after`] weighs
+/// a lane's leader; behind, its ã_n behind the changer ≥ −b_safe, weighed as MOBIL weighs a
+/// new follower ([`Weighed::new_follower`]: at the changer's parameters). Boxes that overlap
+/// along the lane (gap ≤ 0) fail it, as a box alongside fails a change.
+fn gap_safe(
+    idm: &IdmController,
+    mobil: &MobilParameters,
+    view: &ControllerView<'_>,
+    other: Next,
+) -> bool {
+    if other.gap.is_nan() || other.gap <= 0.0 {
+        return false;
+    }
+    let p = &idm.params;
+    let own = Own::new(idm, view);
+    let other_gap = Gap {
+        id: other.id,
+        gap: other.gap,
+        speed: other.speed,
+    };
+    if other.ahead {
+        mobil.safe_for_changer(own.after(p, Some(other_gap)))
+    } else {
+        let n = Weighed::new_follower(p, other_gap, own.v, own.len, None).change(p);
+        mobil.safe_for_follower(n.after)
     }
 }
 

@@ -113,7 +113,9 @@ fn decide_each(c: &mut MobilController, view: &ControllerView<'_>) -> Option<i32
 
 /// The command, the IDM's acceleration asked of the IDM controller.
 fn step_each(c: &mut MobilController, view: &ControllerView<'_>) -> Command {
+    let ordered = c.mandatory.is_none() && c.pending.is_some();
     let lateral = decide_each(c, view).map(|lane| {
+        c.judged = (!ordered).then_some(c.last_change);
         c.last_change = view.time();
         Lateral::ChangeLane(lane)
     });

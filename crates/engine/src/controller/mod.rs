@@ -69,6 +69,7 @@
 //! | `load` | every controller read when the engine is built; ObjectControllers assigned |
 //! | `strategy` | motion actions handed to the controller holding their domain |
 //! | `parallel` | the driver models' commands of a step on several threads (the same bits) |
+//! | `one_gap` | two lane changes into one gap: the one behind yields (SUMO's order) |
 //! | `stage` | the controllers stage: commands, then moves |
 
 mod assign;
@@ -81,6 +82,7 @@ mod external_input;
 mod lane_beside;
 mod load;
 mod mobil;
+mod one_gap;
 mod parallel;
 pub mod properties;
 pub(crate) mod stage;

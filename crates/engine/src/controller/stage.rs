@@ -20,6 +20,7 @@ use opendrive::{Direction, Real, RoadNetwork};
 use super::command::{Command, Lateral, Longitudinal, Merged};
 use super::default::{measure, move_entity};
 use super::drivers::{DriverModel, Instance, Model};
+use super::one_gap::{resolve as resolve_one_gap, Change};
 use super::parallel::StepWorld;
 use super::properties::MotionDomains;
 use super::table::{ControllerTable, EntityControllers, StageStorage};
@@ -53,6 +54,7 @@ pub(crate) fn step(
         index,
         merged,
         parallel,
+        changes,
     } = &mut storage;
     merged.clear();
     // The lane index is built where some model holds a domain, and then the moves' walk
@@ -87,6 +89,8 @@ pub(crate) fn step(
                 continue;
             };
             let mut m = Merged::default();
+            // A driver model's lane change (its place, the lane), for one_gap.rs.
+            let mut change = None;
             for run in of_entity {
                 let held = run.held;
                 let command = match run.model {
@@ -107,6 +111,7 @@ pub(crate) fn step(
                         }
                         if held.lateral {
                             m.lateral = lane.map(Lateral::ChangeLane);
+                            change = lane.map(|l| (k, l));
                         } else if lane.is_some() && !of_entity.iter().any(|r| r.held.lateral) {
                             // Only an `idm` holding a mandatory lane gives a lane without the
                             // lateral domain (strategy.rs hands it one only where no user
@@ -114,6 +119,7 @@ pub(crate) fn step(
                             // default controller's lane track, as the route's lane changes.
                             if matches!(drivers[k], DriverModel::Idm(_)) {
                                 m.lateral = lane.map(Lateral::ChangeLane);
+                                change = lane.map(|l| (k, l));
                             }
                         }
                         continue;
@@ -148,7 +154,12 @@ pub(crate) fn step(
                 }
             }
             merged.push((i, m));
+            if let Some((k, lane)) = change {
+                changes.push(Change::asked(merged.len() - 1, k, lane));
+            }
         }
+        // Two changes into one gap: the one behind yields (one_gap.rs).
+        resolve_one_gap(changes, merged, at_start, drivers);
     }
     let (net, entities, signals) = world.moves();
     let n = entities.len();

@@ -26,6 +26,7 @@ use scenario::ControllerDomains;
 use super::command::{Controller, Merged};
 use super::drivers::{DriverModel, Drivers, Instance, Model, Run, Runs};
 use super::external_input::ExternalInput;
+use super::one_gap::Change;
 use super::parallel::ParallelCommands;
 use super::properties::{ControllerKind, ModelSettings, MotionDomains};
 use crate::store::lane_index::LaneIndex;
@@ -148,6 +149,8 @@ pub(crate) struct StageStorage {
     pub merged: Vec<(usize, Merged)>,
     /// The driver models' commands worked out on threads (parallel.rs).
     pub parallel: ParallelCommands,
+    /// The driver models' lane changes of the step (one_gap.rs).
+    pub changes: Vec<Change>,
 }
 
 impl ControllerTable {

@@ -552,3 +552,76 @@ fn vehicle_model_option_gives_scenario_vehicles_the_idm() {
         );
     }
 }
+
+/// Left's and Right's rows of mobil_one_gap.xosc with Left's reference point at s = `left_s`.
+fn one_gap(left_s: &str) -> Rows {
+    run_with("mobil_one_gap.xosc", &[("LeftS", left_s)]).0
+}
+
+/// The hardest braking (m/s², negative) of `name` over the run, from its speed per 0.05 s step.
+fn hardest_braking(rows: &Rows, name: &str) -> f64 {
+    let v: Vec<f64> = rows.of(name).map(|r| r.speed).collect();
+    v.windows(2)
+        .map(|w| (w[1] - w[0]) / 0.05)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Issue 27, two lane changes into one gap (engine controller/one_gap.rs): mobil_one_gap.xosc,
+/// Left (mobil) at 30 m/s in lane −1 and Right (mobil, desired speed 40 m/s) at 30 m/s in lane
+/// −3 both decide on lane −2, empty, in the first step. By hand (IDM T = 1.6 s, s0 = 2 m,
+/// a = 0.73 m/s²): Left's desired speed is its 30 m/s, its gain 0 > threshold − bias =
+/// 0.1 − 0.3; Right behind Slow (30 m/s, 60 m) has s* = 2 + 30·1.6 = 50 m, a_c = 0.73(1 −
+/// 0.75⁴) − 0.73(50/60)² = 0.4990 − 0.5069 = −0.008 m/s², in the free lane 0.4990: a gain of
+/// 0.507 > threshold + bias = 0.4. Both at 30 m/s, their 5 m boxes level or 2 m apart, so
+/// whichever went second would be alongside the first.
+///
+/// - Left 2 m ahead (LeftS = 102): Left's front is further downstream, it goes first (its t
+///   leaves −1.75 in the first frame) and Right yields (t = −8.75 = lane −3's centre). Left's
+///   box (2 m wide, from t = −2.75) reaches lane −2 (t < −3.5) after 0.75 m of its 3.5 m
+///   cubic 3u² − 2u³ over 4.58 s: u = 0.2989, 1.37 s; until then Right finds it in the lane
+///   beyond, its change under way into lane −2, and yields again (without that, it would
+///   change in the second step): Right's t is −8.75 in every frame to 1.45 s, and stays so
+///   while Left is level with it (to the end: both keep ~30 m/s).
+/// - Level (LeftS = 100): equal fronts, and the change from lane −2's keep side, Right's, goes
+///   first; Left keeps t = −1.75 until Right is clear ahead (from 12 s: Right at 40 m/s's
+///   desire pulls away at ~0.5 m/s²).
+///
+/// In both, no two boxes overlap and neither brakes harder than MOBIL's b_safe = 4 m/s². Without
+/// the rule both started at once, and Right, finding Left ahead in lane −2 mid-change, braked
+/// at 10 m/s² (its Performance's maxDeceleration; 30 → 21 m/s by 3 s) in both placements.
+#[test]
+fn mobil_changes_from_both_sides_into_one_gap_one_after_the_other() {
+    let ahead = one_gap("102");
+    assert!(
+        ahead.at("Left", 0.05).t < -1.7505,
+        "{:?}",
+        ahead.at("Left", 0.05)
+    );
+    for r in ahead.of("Right") {
+        assert_eq!(r.t, -8.75, "Right yields: {r:?}");
+        assert_eq!(r.lane, -3);
+    }
+    assert_eq!(ahead.at("Left", 5.0).lane, -2);
+    let level = one_gap("100");
+    assert!(
+        level.at("Right", 0.05).t > -8.7495,
+        "{:?}",
+        level.at("Right", 0.05)
+    );
+    for r in level.of("Left").filter(|r| r.time <= 12.0) {
+        assert_eq!(r.t, -1.75, "Left yields: {r:?}");
+    }
+    assert_eq!(level.at("Right", 5.0).lane, -2);
+    assert_eq!(
+        level.at("Left", 20.0).lane,
+        -2,
+        "Left changes behind Right later"
+    );
+    for rows in [&ahead, &level] {
+        assert_eq!(overlaps(rows), 0);
+        for name in ["Left", "Right"] {
+            let b = hardest_braking(rows, name);
+            assert!(b >= -4.0, "{name} brakes at {b} m/s²");
+        }
+    }
+}
