@@ -159,6 +159,51 @@ fn random_traffic_related_to_a_member_of_other_random_traffic_reads_where_it_is(
     }
 }
 
+/// Issue 27 follow-up: a mandatory change no longer waits for ever behind a new follower at
+/// about its own speed (engine controller/mobil.rs `GAP_OPENING_TIME`).
+/// random_traffic_member_groups.osc, seed 1, k.vehicles[2] (4.489 m long, as h's members):
+/// handed lane −2 at 1 s at v = 20.792 m/s in lane −3; h.vehicles[2] in lane −2, its reference
+/// point 7.82 m back (bumpers 3.33 m apart), at v_n = 20.039 m/s. As a new follower it would
+/// need (IDM at the changer's parameters, v0 = 20 m/s) s* = 2 + 20.039·1.6 +
+/// 20.039·(20.039 − 20.792)/2.208257 = 27.229 m and g* = s*·√(0.73/(4 + 0.73(1 −
+/// (20.039/20)⁴))) = 27.229·0.42751 = 11.64 m, which the 0.753 m/s speed advantage opens in
+/// (11.64 − 3.33)/0.753 = 11.0 s > 4.58 s: before, k.vehicles[2] kept lane −3 to the end (the
+/// advantage fading as both near 20 m/s). Now it falls back at b = 1.67 m/s² from the step at
+/// 1 s (its IDM near v0 asks for −0.12): v(t) = 20.792 − 1.67(t − 1) at every step while it
+/// waits. h.vehicles[2] (≈ 20.02 m/s) passes it; the change is safe once h's rear is g ahead
+/// of its front with ã_c = a(1 − (v/v0)⁴) − a(s0/g)² ≥ −b_safe (the dynamic part of s*
+/// negative behind the faster h): at v = 13.36 m/s, 0.5846 − 0.73(2/g)² ≥ −4, g ≥
+/// 2/√(4.5846/0.73) = 0.798 m, reference points 4.489 + 0.798 = 5.287 m apart: 7.82 + 0.753τ
+/// − 0.835τ² = −5.287 at τ = 4.44 s, t = 5.44 s, so the change starts in the step from 5.45 s
+/// (the frames: gap 0.497 m at 5.40 s, 0.828 m at 5.45 s) and ends on lane −2's centre by
+/// 12 s (4.58 s at constant speed).
+#[test]
+fn a_mandatory_change_behind_a_new_follower_at_its_own_speed_falls_back_and_lets_it_past() {
+    let r = run("random_traffic_member_groups", 1, None);
+    let k = "k.vehicles[2]";
+    let v1 = r.at(1.0, k).speed;
+    assert!((v1 - 20.792).abs() < 1e-3, "{v1}");
+    assert_eq!(r.at(1.0, "h.vehicles[2]").lane, -2);
+    for (t, _) in r
+        .frames
+        .iter()
+        .filter(|(t, _)| *t > 1.0 + 1e-9 && *t < 5.45 + 1e-9)
+    {
+        let o = r.at(*t, k);
+        assert_eq!(o.y, -8.75, "{k} waits in lane -3 at {t}: {o:?}");
+        let v = v1 - 1.67 * (t - 1.0);
+        assert!(
+            (o.speed - v).abs() < 1e-9,
+            "{k} at {t}: {} want {v}",
+            o.speed
+        );
+    }
+    assert!(r.at(5.5, k).y > -8.75 + 1e-6, "{:?}", r.at(5.5, k));
+    on_lane_centre(&r, 1, k, -2, (12.0, 12.0));
+    let found = crate::random_traffic::touching(&r);
+    assert!(found.is_empty(), "{found:?}");
+}
+
 #[test]
 fn random_traffic_beside_a_member_not_drawn_yet_or_at_a_members_speed_is_bad_input() {
     for (name, words, at, modifier) in [

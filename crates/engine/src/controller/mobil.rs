@@ -43,8 +43,13 @@
 //! length, else the leader there too close for ã_c) is not slower than it, it falls back at
 //! its comfortable deceleration b (its command is at most −b), so that a vehicle level with it
 //! at its own speed, or one just ahead that it would never pass, leaves a gap behind (SUMO's
-//! LC2013 slows so for a strategic change); one that is slower it passes at its own speed, and
-//! a new follower too close it waits out. During each change its IDM follows the nearer of the
+//! LC2013 slows so for a strategic change); one that is slower it passes at its own speed. A
+//! new follower too close it waits out where its own speed advantage opens the gap the
+//! criterion needs within [`GAP_OPENING_TIME`]; else it falls back at b too and lets the
+//! follower past, then changes in behind it (SUMO's LC2013 so: `MSLCM_LC2013::informFollower`
+//! slows the changer "to allow this" follower "to overtake us" where its speed advantage does
+//! not open the secure gap in the time left); before, one at about its own speed kept the gap
+//! as it was, and the change waited for ever. During each change its IDM follows the nearer of the
 //! leaders in the lane it leaves and the lane it enters ([`ControllerView::leader`]). Reached,
 //! L is kept until an action releases it; released before, the entity keeps the lane it is
 //! in and the controller's event record says that L was not reached.
@@ -71,6 +76,13 @@ use crate::models::mobil::{FollowerChange, LaneChangeCandidate, MobilParameters}
 pub const MIN_CHANGE_INTERVAL: Real = 3.0;
 /// Least speed at which the controller changes lanes (m/s).
 pub const MIN_CHANGE_SPEED: Real = 1.0;
+/// The time (s) within which a changer to a mandatory lane waits for the gap to a new follower
+/// too close to open by its own speed advantage; where it would take longer, it falls back to
+/// let the follower past (module doc): the duration of a change across a 3.5 m lane,
+/// √(6·3.5/1) = 4.58 s (world/lane_change.rs), standing in for SUMO LC2013's remaining time
+/// to the end of the lane (`MSLCM_LC2013::informFollower`), which a mandatory lane without an
+/// end does not have.
+pub const GAP_OPENING_TIME: Real = 4.58;
 
 /// The `mobil` controller.
 #[derive(Debug, Clone)]
@@ -261,30 +273,50 @@ impl Mandatory {
         if !b.crossing_permitted {
             return None;
         }
-        // The speed of what blocks the change ahead or alongside, if anything does.
-        let blocker = match view.fastest_alongside(&b) {
-            Some(v) => Some(v),
+        // Whether to fall back: what blocks the change alongside or ahead is not slower, or
+        // the gap to the new follower too close would not open in time.
+        let fall_back = match view.fastest_alongside(&b) {
+            Some(v) => v >= own.v,
             None => {
                 let lane_leader = view.leader_beside(&b);
                 if mobil.safe_for_changer(own.after(p, lane_leader)) {
-                    let new_follower = view.follower_beside(&b).map(|n| {
+                    let found = view.follower_beside(&b);
+                    let new_follower = found.map(|n| {
                         Weighed::new_follower(p, n, own.v, own.len, lane_leader).change(p)
                     });
                     if new_follower.map_or(true, |n| mobil.safe_for_follower(n.after)) {
                         return Some(b.lane);
                     }
-                    // A new follower too close: waited out.
-                    None
+                    // A new follower too close: waited out where the changer's speed
+                    // advantage opens the gap in time, else let past.
+                    found.is_some_and(|n| !opens_in_time(p, mobil, own, n))
                 } else {
-                    lane_leader.map(|l| l.speed)
+                    lane_leader.is_some_and(|l| l.speed >= own.v)
                 }
             }
         };
-        if blocker.is_some_and(|vb| vb >= own.v) {
+        if fall_back {
             own.a_c = own.a_c.min(-p.comfortable_deceleration);
         }
         None
     }
+}
+
+/// Whether the gap to `n`, a new follower too close behind the changer `own` in the lane beside,
+/// opens by the changer's speed advantage within [`GAP_OPENING_TIME`] (module doc): the gap
+/// g* at which n, weighed at the changer's parameters `p` as MOBIL weighs it, needs exactly
+/// b_safe, ã_n = f(v_n) − a(s*/g*)² = −b_safe, so g* = s*·√(a/(b_safe + f(v_n))) with s* at
+/// the speeds now, reached at the rate v − v_n. A follower not slower, or one that would brake
+/// harder than b_safe at any gap, never lets the gap open.
+fn opens_in_time(p: &IdmParameters, mobil: &MobilParameters, own: &Own, n: Gap) -> bool {
+    let vn = n.speed.max(0.0);
+    let closing = own.v - vn;
+    let room = mobil.safe_deceleration + p.free_acceleration(vn);
+    if !(closing > 0.0 && room > 0.0) {
+        return false;
+    }
+    let needed = p.desired_gap(vn, vn - own.v) * (p.max_acceleration / room).sqrt();
+    (needed - n.gap) / closing <= GAP_OPENING_TIME
 }
 
 /// The `idm` model as the engine runs it (module doc): the IDM ([`IdmController`]) and the
