@@ -26,17 +26,19 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use scenario::{
-    Act, Action, ActionKind, Actors, ConditionGroup, ControllerAction, ControllerDomains,
-    DynamicsDimension, DynamicsShape, Entities, EntityObject, Event, FileHeader, Init,
-    LaneChangeAt, LaneChangeTarget, LaneOffsetTarget, LateralAction, LongitudinalAction, Maneuver,
-    ManeuverGroup, MiscObject, MiscObjectCategory, ObjectController, Orientation, Pedestrian,
-    PedestrianCategory, Performance, Position, PositionKind, Priority, Private, PrivateAction,
-    Properties, ReferenceContext, RoadNetwork, Route, RouteStrategy, RoutingAction, Rule, Scenario,
-    ScenarioObject, SourcePos, SpeedTarget, Story, Storyboard, StoryboardElementState,
-    TransitionDynamics, Trigger, UserDefinedAction, Vehicle, Waypoint,
+    Act, Action, ActionKind, Actors, ConditionGroup, ControllerAction, DynamicsDimension,
+    DynamicsShape, Entities, EntityObject, Event, FileHeader, Init, LaneChangeAt, LaneChangeTarget,
+    LaneOffsetTarget, LateralAction, LongitudinalAction, Maneuver, ManeuverGroup, MiscObject,
+    MiscObjectCategory, ObjectController, Orientation, Pedestrian, PedestrianCategory, Performance,
+    Position, PositionKind, Priority, Private, PrivateAction, Properties, ReferenceContext,
+    RoadNetwork, Route, RouteStrategy, RoutingAction, Rule, Scenario, ScenarioObject, SourcePos,
+    SpeedTarget, Story, Storyboard, StoryboardElementState, TransitionDynamics, Trigger,
+    UserDefinedAction, Vehicle, Waypoint,
 };
 
-use crate::plan::{Entity, HandlerPlan, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED};
+use crate::plan::{
+    driver_domains, Entity, HandlerPlan, Plan, Planned, When, MAX_ACCELERATION, MAX_SPEED,
+};
 use crate::resolve::ActorKind;
 use crate::trigger::{act_state, sim_time};
 
@@ -145,12 +147,8 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
             .chain(driver.map(|d| {
                 action(PrivateAction::Controller(Box::new(
                     ControllerAction::Activate {
+                        domains: driver_domains(&d.controller),
                         object_controller_ref: d.name,
-                        domains: ControllerDomains {
-                            lateral: Some(true),
-                            longitudinal: Some(true),
-                            ..ControllerDomains::default()
-                        },
                     },
                 )))
             }))

@@ -166,6 +166,7 @@ use place::{place, ToPlace};
 use planner::{no_end, EventCtx, Planner};
 
 pub(crate) use map_lanes::junction_roads;
+pub(crate) use random_traffic::driver_domains;
 pub(crate) use road_path::locate_paths;
 pub(crate) use route::{locate_points, named_routes, points as route_points};
 pub use types::POSITION_TOLERANCE;

@@ -32,7 +32,9 @@
 //!   member is an error at the group naming how many fit.
 //! - **Driver**: an ObjectController per member with the engine's `mobil` model (IDM car
 //!   following with MOBIL lane changes, the engine's defaults for every other parameter),
-//!   `desiredSpeed` v0, activated in the Init on both domains: the member drives by the model
+//!   `desiredSpeed` v0, activated in the Init on the domains its model holds
+//!   ([`driver_domains`]; the `idm` of members kept in their lanes holds the longitudinal one
+//!   only): the member drives by the model
 //!   from the first step to the end of the run (the drive's phase ending does not stop it:
 //!   the group defines creation, the model the behaviour).
 //!
@@ -58,6 +60,7 @@
 use std::collections::{HashMap, HashSet};
 
 use scenario::traffic_deal::{self, LaneSpan, Member, Occupant};
+use scenario::ControllerDomains;
 
 use super::car_following::model_controller;
 use super::place::Start;
@@ -82,6 +85,24 @@ pub(crate) const START_SPREAD: f64 = 0.1;
 pub(super) const LANE_STEP: f64 = 1.0;
 /// The ObjectController's name.
 pub(super) const CONTROLLER: &str = "random_traffic";
+
+/// The domains a member's driver `c` is activated on: those its engine model holds (engine
+/// README "Controllers": `mobil` both, `idm` the longitudinal one). The `idm` holds no lateral
+/// domain: asked for it, the engine's record said "lateral is not a domain of this controller:
+/// not activated" at every idm member's creation; a mandatory lane it is handed later it
+/// decides on without holding that domain (engine controller/strategy.rs).
+pub(crate) fn driver_domains(c: &scenario::Controller) -> ControllerDomains {
+    let mobil = c
+        .properties
+        .properties
+        .iter()
+        .any(|(k, v)| k == "model" && v == "mobil");
+    ControllerDomains {
+        longitudinal: Some(true),
+        lateral: mobil.then_some(true),
+        ..ControllerDomains::default()
+    }
+}
 
 /// Another vehicle on the road as `Planner::deal` counts it.
 pub(super) type Other = Occupant;

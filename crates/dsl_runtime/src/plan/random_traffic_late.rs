@@ -29,7 +29,7 @@ use scenario::{
 
 use super::action_args::timed;
 use super::planner::Planner;
-use super::random_traffic::{Other, CONTROLLER};
+use super::random_traffic::{driver_domains, Other, CONTROLLER};
 use super::types::{Late, Planned};
 use crate::error::{Error, Site};
 
@@ -85,8 +85,12 @@ impl Planner<'_> {
                         });
                         actions.push((m.clone(), "create", teleport));
                         actions.push((m.clone(), "speed", step(st.v)));
-                        actions.push((m.clone(), "driver", activate()));
                         let i = self.index[&m];
+                        actions.push((
+                            m.clone(),
+                            "driver",
+                            activate(self.entities[i].driver.as_ref()),
+                        ));
                         self.entities[i].against = back;
                     }
                 }
@@ -94,8 +98,9 @@ impl Planner<'_> {
                     let (create, speeds) = self.engine_creation(g, &members, &late);
                     actions.push((members[0].clone(), "create", create));
                     for (m, v) in members.iter().zip(speeds) {
+                        let driver = self.entities[self.index[m]].driver.as_ref();
                         actions.push((m.clone(), "speed", step(v)));
-                        actions.push((m.clone(), "driver", activate()));
+                        actions.push((m.clone(), "driver", activate(driver)));
                     }
                 }
             }
@@ -198,14 +203,15 @@ fn step(v: f64) -> PrivateAction {
     })
 }
 
-/// The ActivateControllerAction of a member's driver on both domains.
-fn activate() -> PrivateAction {
+/// The ActivateControllerAction of a member's driver `c` on the domains its model holds
+/// ([`driver_domains`]).
+fn activate(c: Option<&scenario::Controller>) -> PrivateAction {
     PrivateAction::Controller(Box::new(ControllerAction::Activate {
         object_controller_ref: Some(CONTROLLER.to_string()),
-        domains: ControllerDomains {
+        domains: c.map(driver_domains).unwrap_or(ControllerDomains {
             lateral: Some(true),
             longitudinal: Some(true),
             ..ControllerDomains::default()
-        },
+        }),
     }))
 }

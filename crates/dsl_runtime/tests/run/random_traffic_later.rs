@@ -540,3 +540,40 @@ fn a_members_own_acceleration_is_braked_by_its_models_interaction_term_behind_a_
         assert_eq!(r.at(12.0, m).speed, 0.0, "seed {seed}");
     }
 }
+
+/// Issue 27 follow-up: a member's driver is activated on the domains its model holds
+/// (plan/random_traffic.rs `driver_domains`): the `idm` of members kept in their lanes on the
+/// longitudinal one, the `mobil` on both. Before, every member's was activated on both, and the
+/// engine recorded "activation changed; lateral is not a domain of this controller: not
+/// activated" for each idm member. Now each member's one record at its creation is
+/// "activation changed": random_traffic_member_groups.osc (seven idm members, created at 0 s,
+/// lower.rs), random_traffic_late_keep_lane.osc (six idm members created at 5 s,
+/// plan/random_traffic_late.rs) and random_traffic_late.osc (six mobil members at 5 s);
+/// seeds 0-3.
+#[test]
+fn a_members_driver_is_activated_on_the_domains_its_model_holds() {
+    for (name, n, at) in [
+        ("random_traffic_member_groups", 7, 0.0),
+        ("random_traffic_late_keep_lane", 6, 5.0),
+        ("random_traffic_late", 6, 5.0),
+    ] {
+        for seed in 0..4 {
+            let r = run(name, seed, None);
+            let created: Vec<_> = r
+                .controllers
+                .iter()
+                .filter(|(t, _, note)| (t - at).abs() < 1e-9 && note.starts_with("activation"))
+                .collect();
+            assert_eq!(created.len(), n, "{name} seed {seed}: {created:?}");
+            for (_, e, note) in created {
+                assert_eq!(note, "activation changed", "{name} seed {seed} {e}");
+            }
+            assert!(
+                r.controllers
+                    .iter()
+                    .all(|(_, _, note)| !note.contains("not a domain")),
+                "{name} seed {seed}"
+            );
+        }
+    }
+}
