@@ -54,6 +54,13 @@
 //! L is kept until an action releases it; released before, the entity keeps the lane it is
 //! in and the controller's event record says that L was not reached.
 //!
+//! **Across roads.** L is a lane id of the entity's road where it is asked for. Where the
+//! entity passes into another lane section or onto the next road, the lane to reach is the one
+//! L's lane links lead to there (OpenDRIVE 1.8 §11.5 lane linkage; [`Mandatory`]'s
+//! `target_here`), not the lane of the same id: on a road whose lanes are numbered otherwise
+//! (a lane added on the inside), L's continuation keeps the change going or keeps it reached.
+//! Where L's links do not lead onto the entity's road, it makes no change there.
+//!
 //! The `idm` model, which holds no lateral domain, runs the same path ([`Mandatory`], one
 //! piece of state and code; the engine runs the `idm` as [`IdmDriver`], the IDM with the
 //! mandatory lane it may hold): where no user controller holds the entity's lateral domain, the mandatory lane is
@@ -63,7 +70,7 @@
 //! controller's lane track, as the route's lane changes (controller/stage.rs). Without a
 //! mandatory lane the `idm`'s step is the IDM's acceleration alone, as before.
 
-use opendrive::Real;
+use opendrive::{LaneHandle, Real, RoadNetwork};
 
 use super::car_following::{nearer, IdmController};
 use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
@@ -71,6 +78,7 @@ use super::lane_beside::KeptBeside;
 use super::view::{Beside, ControllerView, Gap};
 use crate::models::idm::{IdmParameters, Leader};
 use crate::models::mobil::{FollowerChange, LaneChangeCandidate, MobilParameters};
+use crate::store::driver_inputs::TrackInput;
 
 /// Least time between two lane changes of one entity (s).
 pub const MIN_CHANGE_INTERVAL: Real = 3.0;
@@ -222,9 +230,67 @@ pub(crate) struct Mandatory {
     reached: bool,
     /// The lanes beside as the road decides them (controller/lane_beside.rs).
     kept: KeptBeside,
+    /// The target lane where it was last found, on the entity's road and lane section then
+    /// (`None` before the first step): its id there is the lane to reach.
+    on: Option<LaneHandle>,
+    /// The road and lane section where the target lane was not found along its links, if the
+    /// entity is still there (not searched again there).
+    lost: Option<(u32, u32)>,
 }
 
+/// Most lane links followed from the target lane to the entity's road and lane section.
+const MAX_LINK_HOPS: usize = 8;
+
 impl Mandatory {
+    /// The target lane's id on the entity's road and lane section now (module doc "Across
+    /// roads"): the lane `target` names on the road where it was asked for, then, where the
+    /// entity has passed into another lane section or road, the lane the target lane's links
+    /// lead to there (OpenDRIVE 1.8 §11.5 lane linkage: "Lanes may be linked to lanes on the
+    /// same or another road"), followed in its driving direction, breadth first, up to
+    /// [`MAX_LINK_HOPS`] links (junction roads included). `None` where they lead nowhere there.
+    fn target_here(&mut self, net: &RoadNetwork, track: &TrackInput) -> Option<i32> {
+        let here = track
+            .own
+            .or_else(|| net.lane_handle_on(track.road, track.lane_id, track.s))?;
+        let at = match self.on {
+            Some(h) => h,
+            None => {
+                let h = net.lane_handle_on(track.road, self.target, track.s)?;
+                self.on = Some(h);
+                h
+            }
+        };
+        let place = (here.road, here.section);
+        if (at.road, at.section) == place {
+            return Some(at.lane);
+        }
+        if self.lost == Some(place) {
+            return None;
+        }
+        let mut frontier = vec![at];
+        for _ in 0..MAX_LINK_HOPS {
+            let mut next: Vec<LaneHandle> = Vec::new();
+            for h in frontier {
+                for n in net.successors(h) {
+                    if (n.road, n.section) == place {
+                        self.on = Some(n);
+                        self.lost = None;
+                        return Some(n.lane);
+                    }
+                    if !next.contains(&n) {
+                        next.push(n);
+                    }
+                }
+            }
+            if next.is_empty() {
+                break;
+            }
+            frontier = next;
+        }
+        self.lost = Some(place);
+        None
+    }
+
     /// Takes mandatory lane `lane` into `held` (`None`: releases the one held, if any);
     /// returns the event note.
     pub(crate) fn take(held: &mut Option<Box<Self>>, lane: Option<i32>) -> String {
@@ -239,6 +305,8 @@ impl Mandatory {
                 target,
                 reached: false,
                 kept: KeptBeside::default(),
+                on: None,
+                lost: None,
             })
         });
         note
@@ -257,14 +325,15 @@ impl Mandatory {
     ) -> Option<i32> {
         let e = view.input();
         let track = e.track.as_ref()?;
-        if track.lane_id == self.target {
+        let target = self.target_here(view.network(), track)?;
+        if track.lane_id == target {
             self.reached = true;
             return None;
         }
         if track.blend_from.is_some() || e.lateral_action || e.speed < MIN_CHANGE_SPEED {
             return None;
         }
-        let toward = (self.target - track.lane_id).signum();
+        let toward = (target - track.lane_id).signum();
         let b = view
             .beside_kept(&mut self.kept.0)
             .into_iter()

@@ -132,20 +132,29 @@ fn for_each_view(mut f: impl FnMut(u64, &World, &LaneIndex, &Entity, &Controller
         let w = crowded(60, seed);
         let index = LaneIndex::build(&w.network, w.entities());
         for e in w.entities() {
-            let input = index.input(e.id.index()).expect("a row per entity");
-            let view = ControllerView::new(
-                10.0,
-                e,
-                input,
-                w.entities(),
-                &w.network,
-                &index,
-                None,
-                &w.signals,
-            );
-            f(seed, &w, &index, e, &view);
+            f(seed, &w, &index, e, &view_of(10.0, &w, &index, e));
         }
     }
+}
+
+/// The view of `e` in `w` at `time`, with the lane index `index` of `w`.
+fn view_of<'a>(
+    time: Real,
+    w: &'a World,
+    index: &'a LaneIndex,
+    e: &'a Entity,
+) -> ControllerView<'a> {
+    let input = index.input(e.id.index()).expect("a row per entity");
+    ControllerView::new(
+        time,
+        e,
+        input,
+        w.entities(),
+        &w.network,
+        index,
+        None,
+        &w.signals,
+    )
 }
 
 /// The MOBIL parameter sets of the tests: the defaults; egoistic with no threshold; a low
@@ -652,4 +661,102 @@ fn a_free_road_acceleration_replaces_only_the_free_term_and_its_release_restores
         cars == 2400 && free_road > 100 && braking > 500,
         "{cars} cars, {free_road} on a free road, {braking} braking harder than b"
     );
+}
+
+/// The bundled two-road map of the DSL runtime's tests (road_link_unequal_number_of_lanes0.xodr):
+/// road 1 (100 m from (0, 0) along +x, right lanes −1, −2, −3 of 3 m) ends where road 2 (100 m
+/// on, lanes −1 … −4) starts; lanes −1, −2 of road 1 lead into −1, −2 of road 2, lane −3 into
+/// −4 (road 2's −3 is a lane that starts there, linked to nothing behind).
+fn two_road_network() -> RoadNetwork {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../dsl_runtime/tests/roads/road_link_unequal_number_of_lanes0.xodr"
+    );
+    let text = std::fs::read_to_string(path).expect("the bundled map");
+    RoadNetwork::from_str(&text, std::path::Path::new(path)).expect("the bundled map parses")
+}
+
+/// A 4.5 m car alone at 20 m/s on lane `lane`'s centre of road `road` at `s`.
+fn alone_on(net: &std::sync::Arc<RoadNetwork>, road: &str, lane: i32, s: Real) -> World {
+    use crate::domain::{BoundingBox, Vector3};
+    use crate::world::entity::{EntityId, EntityKind};
+    let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 4.5, 2.0, 1.5).expect("box");
+    let car = Entity::new(EntityId(0), "car", EntityKind::Vehicle, b);
+    let mut w = World::new(net.clone(), vec![car]);
+    // Lanes of 3 m: lane −k's centre at t = −3k + 1.5.
+    let t = 3.0 * Real::from(lane) + 1.5;
+    let pose = w.network.road_pose(road, s, t).expect("on the road");
+    let found = w.network.locate(pose.x, pose.y, Some(pose.h));
+    w.place_resolved(EntityId(0), pose, found);
+    w.entity_mut(EntityId(0)).speed = 20.0;
+    w
+}
+
+/// Issue 27 follow-up 4: a mandatory lane is a lane of the road where it is asked for; where
+/// the entity passes onto the next road, the lane it must reach is the one the target lane's
+/// links lead to there (OpenDRIVE 1.8 §11.5 lane linkage), not the lane of the same id. On the
+/// two-road map, with lane −3 of road 1 as the mandatory lane (asked for at s = 80 m of road 1,
+/// the first step):
+/// - reached on road 1 (in lane −3 at s = 80 m), the car passes onto road 2, its track now in
+///   lane −4 (−3's successor): no change; before, it changed back into road 2's lane −3, the
+///   lane that starts there;
+/// - asked for from lane −1 of road 1 (a change to −2 at s = 80 m, the road empty), the car
+///   then in lane −2 at s = 10 m of road 2 changes to −3, and in −3 at s = 30 m on to −4 (two
+///   lanes to go on road 2, where before −3 counted as reached);
+/// - the idm and the mobil controller alike (one piece of code).
+#[test]
+fn a_mandatory_lane_across_a_road_end_follows_the_target_lanes_links() {
+    let net = std::sync::Arc::new(two_road_network());
+    // The lane `c` changes to for the car alone on `road`, `lane`, at `s`, at time `time`.
+    fn command_at(
+        c: &mut dyn FnMut(&ControllerView<'_>) -> Option<i32>,
+        net: &std::sync::Arc<RoadNetwork>,
+        (road, lane, s): (&str, i32, Real),
+        time: Real,
+    ) -> Option<i32> {
+        let w = alone_on(net, road, lane, s);
+        let e = &w.entities()[0];
+        let track = e.track.as_ref().expect("a lane track");
+        assert_eq!((track.road_id.as_str(), track.lane_id), (road, lane));
+        let index = LaneIndex::build(&w.network, w.entities());
+        c(&view_of(time, &w, &index, e))
+    }
+    let idm = IdmParameters {
+        desired_speed: 20.0,
+        ..IdmParameters::default()
+    };
+    // The idm and the mobil controller, each handed lane -3 as its mandatory lane.
+    type LaneOf = Box<dyn FnMut(&ControllerView<'_>) -> Option<i32>>;
+    let models = || -> [LaneOf; 2] {
+        let mut i = IdmDriver::new(IdmController::new(idm, true));
+        i.strategy(Strategy::MandatoryLane(Some(-3)));
+        let mut m = MobilController::new(idm, true, MobilParameters::default());
+        m.strategy(Strategy::MandatoryLane(Some(-3)));
+        [
+            Box::new(move |v: &ControllerView<'_>| i.command(v).1),
+            Box::new(move |v: &ControllerView<'_>| m.command(v).1),
+        ]
+    };
+    for (k, mut c) in models().into_iter().enumerate() {
+        assert_eq!(command_at(&mut c, &net, ("1", -3, 80.0), 0.0), None, "{k}");
+        assert_eq!(command_at(&mut c, &net, ("2", -4, 5.0), 1.0), None, "{k}");
+    }
+    for (k, mut c) in models().into_iter().enumerate() {
+        assert_eq!(
+            command_at(&mut c, &net, ("1", -1, 80.0), 0.0),
+            Some(-2),
+            "{k}"
+        );
+        assert_eq!(
+            command_at(&mut c, &net, ("2", -2, 10.0), 5.0),
+            Some(-3),
+            "{k}"
+        );
+        assert_eq!(
+            command_at(&mut c, &net, ("2", -3, 30.0), 10.0),
+            Some(-4),
+            "{k}"
+        );
+        assert_eq!(command_at(&mut c, &net, ("2", -4, 60.0), 15.0), None, "{k}");
+    }
 }
