@@ -415,11 +415,23 @@ impl IdmDriver {
     /// parameters).
     #[inline]
     pub fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
-        let Some(m) = self.mandatory.as_deref_mut() else {
-            return (self.idm.acceleration(view), None);
-        };
-        let mut own = Own::new(&self.idm, view);
-        let p = &self.idm.params;
+        match self.mandatory.as_deref_mut() {
+            None => (self.idm.acceleration(view), None),
+            Some(m) => Self::with_mandatory(&self.idm, m, view),
+        }
+    }
+
+    /// [`command`](Self::command) with a mandatory lane held: out of line, so that the
+    /// common step of an `idm` without one is the IDM's alone (issue 31, step 30: with
+    /// [`Own::new`] always inlined, this keeps it out of the `idm`'s step).
+    #[inline(never)]
+    fn with_mandatory(
+        idm: &IdmController,
+        m: &mut Mandatory,
+        view: &ControllerView<'_>,
+    ) -> (Real, Option<i32>) {
+        let mut own = Own::new(idm, view);
+        let p = &idm.params;
         let lane = m.decide(view, &mut own, p, &MobilParameters::default());
         (own.a_c, lane)
     }
@@ -475,7 +487,10 @@ struct Own {
 
 impl Own {
     /// `idm`'s free-road term (its own, or one handed to it: car_following.rs) at the entity's
-    /// speed, weighed in every lane.
+    /// speed, weighed in every lane. Always inlined: called from the `mobil` step and the
+    /// `idm`'s mandatory lane, it was left out of line once the second caller came, a call
+    /// that cost `mobil` 22 instructions per entity-step (issue 31, step 30).
+    #[inline(always)]
     fn new(idm: &IdmController, view: &ControllerView<'_>) -> Self {
         let p = &idm.params;
         let v = view.speed().max(0.0);
