@@ -326,13 +326,20 @@ impl Track {
             && self.lanes.len() == 1
     }
 
-    /// The lane at time `t`.
+    /// The lane at time `t`, as its id was where it was planned (the planner's
+    /// `lane_now` follows it across lane sections that renumber it).
     pub(crate) fn lane(&self, t: f64) -> i32 {
+        self.lane_since(t).1
+    }
+
+    /// The lane planned for time `t` and the time from which it was planned.
+    pub(crate) fn lane_since(&self, t: f64) -> (f64, i32) {
         self.lanes
             .iter()
             .rev()
             .find(|(from, _)| *from <= t)
-            .map_or(self.lanes[0].1, |(_, l)| *l)
+            .copied()
+            .unwrap_or(self.lanes[0])
     }
 
     /// From time `t` on, the actor is in `lane`, at its centre (a lane change ends there).

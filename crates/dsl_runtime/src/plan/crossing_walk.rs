@@ -100,7 +100,7 @@ impl Planner<'_> {
             self.place_on_crossing(target, fixed.0);
         }
         let (lane, s, w) = (
-            self.track(target).lane(t),
+            self.lane_now(target, t),
             self.s_at(target, t),
             self.t_at(target, t),
         );

@@ -141,7 +141,7 @@ impl Planner<'_> {
         }
         // The lead-in: the member's lane centre (its own t) from its s towards member 0's,
         // facing the lane's driving direction, member 0's entry point its last point.
-        let lane = self.track(target).lane(t0);
+        let lane = self.lane_now(target, t0);
         let mut lead_in = self.lead_in(given, target, lane, (s, s_lead, t))?;
         let first = lead_in.len();
         lead_in.extend_from_slice(points);

@@ -166,7 +166,7 @@ impl Planner<'_> {
         let (lane, s, offset) = self.part_start(given, &part)?;
         let t = self.road.lane_center(lane, s) + offset;
         let (check, (ds, dt)) = self.formation_check(inv, &given.site, target)?;
-        let member_lane = self.track(target).lane(self.last_known());
+        let member_lane = self.lane_now(target, self.last_known());
         let mut points = self.lead_in(given, target, member_lane, (s + ds, s, t + dt))?;
         let first = points.len();
         points.extend_from_slice(&part.points);

@@ -434,7 +434,7 @@ impl Planner<'_> {
         // Where x is read: at `t`, or projected at the start.
         let tx = if m.projected { t0 } else { t };
         if m.kind == ModKind::Lane {
-            let got = self.track(a).lane(t);
+            let got = self.lane_now(a, t);
             let want = self.lane_asked(m, a, tx)?;
             if want != Some(got) {
                 let x = self.reference_of(m)?;
@@ -443,7 +443,7 @@ impl Planner<'_> {
                     format!(
                         "expected `{a}` in {} throughout the phase (lane(…) at: all, counted from `{x}`'s lane {} then), found it in lane {got} at {t:.2} s",
                         want.map_or("a driving lane that does not exist".to_string(), |l| format!("lane {l}")),
-                        self.track(&x).lane(tx),
+                        self.lane_now(&x, tx),
                     ),
                 ));
             }

@@ -683,7 +683,7 @@ impl Planner<'_> {
                         let (ve_given, hold) = (end_speed_mod(mods), holds_speed(mods));
                         let v0 = self.track(target).at(t).1;
                         let s_a = self.s_at(target, t);
-                        let lane_a = self.track(target).lane(t);
+                        let lane_a = self.lane_now(target, t);
                         match end {
                             None => {
                                 // Constant speeds: when does the gap reach its value?

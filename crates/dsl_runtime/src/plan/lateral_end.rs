@@ -129,7 +129,7 @@ impl Planner<'_> {
         };
         let te = t + len;
         let s_end = self.s_at(target, te);
-        let lane0 = self.track(target).lane(t);
+        let lane0 = self.lane_now(target, t);
         let lane = self.road.lane_holding(s_end, t_a).ok_or_else(|| {
             m.site.err(
                 K::Unsatisfiable,

@@ -39,7 +39,7 @@ impl Planner<'_> {
         }
         let v = self.track(x).at(t).1;
         self.road
-            .s_after(self.track(x).lane(t), self.s_at(x, t), v * (te - t))
+            .s_after(self.lane_now(x, t), self.s_at(x, t), v * (te - t))
     }
 
     /// Plans a speed profile of two halves over [t, t + len] that covers `ds` (m along the
@@ -303,7 +303,7 @@ impl Planner<'_> {
             }
         }
         if m.kind == ModKind::Lane {
-            let got = self.track(target).lane(t);
+            let got = self.lane_now(target, t);
             let want = self.lane_asked(m, target, t)?;
             if want != Some(got) {
                 return Err(m.site.err(
@@ -344,7 +344,7 @@ impl Planner<'_> {
         ] {
             if let Some(e) = m.arg(key) {
                 let x = self.entity_of(e)?;
-                let lx = self.track(&x).lane(t);
+                let lx = self.lane_now(&x, t);
                 return Ok(match left {
                     None => Some(lx),
                     Some(left) => self.road.beside(lx, left, n, self.s_at(&x, t)),
@@ -379,7 +379,7 @@ impl Planner<'_> {
         let left = !matches!(&side, Some(Val::Enum(s)) if s == "right");
         let shift = if left { n } else { -n };
         if m.kind == ModKind::ChangeLane {
-            let now = self.track(target).lane(t);
+            let now = self.lane_now(target, t);
             let s_now = self.s_at(target, t);
             let exists = |left: bool| self.road.beside(now, left, n.into(), s_now).is_some();
             // change_lane without a side: "the side is randomized" (§8.9 change_lane), drawn
@@ -433,7 +433,7 @@ impl Planner<'_> {
                 }
                 // Projected (§8.9.1.1.3): x keeps the lane it has at the start.
                 let tx = if m.projected { t } else { t + len };
-                let lx = self.track(&x).lane(tx);
+                let lx = self.lane_now(&x, tx);
                 let s_end = self.s_at(&x, tx);
                 let lane = match value {
                     0 => Some(lx),
@@ -452,7 +452,7 @@ impl Planner<'_> {
                 // The engine reads a RelativeTargetLane at the action's start: where x changes
                 // lanes within the phase (track: actual), the lane the plan has at the end is
                 // an absolute target.
-                if let (Some(l), true) = (lane, self.track(&x).lane(t) != lx) {
+                if let (Some(l), true) = (lane, self.lane_now(&x, t) != lx) {
                     return Ok((LaneChangeTarget::Absolute(l.to_string()), lane));
                 }
                 return Ok((

@@ -228,6 +228,19 @@ impl Planner<'_> {
         road.s_after(tr.lane(0.0), s0, tr.at(t).0 - s0)
     }
 
+    /// The lane `name` is in at time `t`: the lane planned for `t`, followed from where it was
+    /// planned along its links into the lane sections after it (`PlanRoad::lane_along`; the
+    /// engine follows them too, ASAM OpenDRIVE 1.8 §9.4).
+    pub(crate) fn lane_now(&self, name: &str, t: f64) -> i32 {
+        self.lane_on(&self.road, name, t)
+    }
+
+    /// [`lane_now`](Self::lane_now) on `road` (the plan road, or the view `name` is planned on).
+    pub(crate) fn lane_on(&self, road: &PlanRoad<'_>, name: &str, t: f64) -> i32 {
+        let (from, lane) = self.track(name).lane_since(t);
+        road.lane_along(lane, self.s_on(road, name, from), self.s_on(road, name, t))
+    }
+
     /// The overhangs of `actor`'s and `other`'s bounding boxes towards each other (m): the
     /// actor's front and the other's rear when the other is ahead, else the reverse; the
     /// distance between the reference points less this is the gap between the boxes.
@@ -251,8 +264,8 @@ impl Planner<'_> {
 
     /// [`t_at`](Self::t_at) on `road` (the plan road, or the view `name` is planned on).
     pub(crate) fn t_on(&self, road: &PlanRoad<'_>, name: &str, t: f64) -> f64 {
-        let tr = self.track(name);
-        road.lane_center(tr.lane(t), self.s_on(road, name, t)) + tr.offset(t)
+        road.lane_center(self.lane_on(road, name, t), self.s_on(road, name, t))
+            + self.track(name).offset(t)
     }
 
     /// How far `name`'s bounding box reaches from its reference point to its left (`left`) or

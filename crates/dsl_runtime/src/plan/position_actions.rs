@@ -121,7 +121,7 @@ impl Planner<'_> {
             // place of that step's motion (as a 1.x TeleportAction).
             let dt = self.settings.dt;
             let ahead = self.s_at(target, t + dt);
-            let lane0 = self.track(target).lane(0.0);
+            let lane0 = self.lane_now(target, 0.0);
             let d = self.road.lane_distance(lane0, ahead, s);
             let tr = self.track_mut(target);
             tr.jump(t, d);

@@ -57,7 +57,7 @@ impl Planner<'_> {
                 format!("expected a phase start the plan knows for `{}(…)` with a common_position_shape (the distance to cover is measured from where the plan has the actor then), found one after a run-time condition", m.name),
             ));
         };
-        let (lane, s0) = (self.track(target).lane(t), self.s_at(target, t));
+        let (lane, s0) = (self.lane_now(target, t), self.s_at(target, t));
         let v0 = self.track(target).at(t).1;
         let delta = match m.kind {
             ModKind::Distance => value,
@@ -149,7 +149,7 @@ impl Planner<'_> {
             // plan_position_shape's refusal: the distance is measured from the plan's place.
             return Ok(Some(d));
         };
-        let (lane, s0) = (self.track(target).lane(t), self.s_at(target, t));
+        let (lane, s0) = (self.lane_now(target, t), self.s_at(target, t));
         let v0 = self.track(target).at(t).1;
         let peak = peak.filter(|v| *v > 0.0);
         let k = match (profile, peak) {

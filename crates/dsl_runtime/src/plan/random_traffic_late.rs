@@ -55,11 +55,7 @@ impl Planner<'_> {
                         Some(b) => {
                             let x_at = self.index.get(&b.x).map(|&i| {
                                 let e = &self.entities[i];
-                                (
-                                    e.against,
-                                    self.track(&e.name).lane(t),
-                                    self.s_at(&e.name, t),
-                                )
+                                (e.against, self.lane_now(&e.name, t), self.s_at(&e.name, t))
                             });
                             Some(self.beside_lane(g, b, x_at)?)
                         }

@@ -125,7 +125,7 @@ impl Planner<'_> {
             )
         })?;
         let road = &self.road;
-        let (s_r, lane_r) = (self.s_at(r, t), self.track(r).lane(t));
+        let (s_r, lane_r) = (self.s_at(r, t), self.lane_now(r, t));
         let t_r = self.t_at(r, t);
         let off_road = |s: f64| {
             site.err(

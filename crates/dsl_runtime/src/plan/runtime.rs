@@ -135,7 +135,7 @@ impl Planner<'_> {
                 // the actor is then (the plan's width, where it last knows the actor, checks
                 // the arguments).
                 let s = self.s_at(target, t);
-                let w = self.road.lane_width(self.track(target).lane(t), s);
+                let w = self.road.lane_width(self.lane_now(target, t), s);
                 let (k, c) = lateral::offset_in_width(m, w, self.width(target))?;
                 check.offset_in_width = Some((k, c, LATERAL_TOLERANCE));
             }
@@ -330,7 +330,7 @@ impl Planner<'_> {
     ) -> Result<Planned, Error> {
         let t = self.last_known();
         let w = self.road.lane_width(
-            planned.unwrap_or_else(|| self.track(target).lane(t)),
+            planned.unwrap_or_else(|| self.lane_now(target, t)),
             self.s_at(target, t),
         );
         let (per_width, offset) = lateral::offset_in_width(m, w, self.width(target))?;

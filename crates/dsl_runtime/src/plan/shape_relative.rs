@@ -327,7 +327,7 @@ impl Planner<'_> {
             return Ok(None);
         };
         let s_end = self.s_at(target, t + len);
-        let lane = self.track(target).lane(t);
+        let lane = self.lane_now(target, t);
         let o = t_a - self.road.lane_center(lane, s_end);
         let w = self.road.lane_width(lane, s_end);
         if o.abs() > w / 2.0 + 1e-9 {

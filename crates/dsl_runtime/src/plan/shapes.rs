@@ -197,7 +197,7 @@ impl Planner<'_> {
                 // The offset lateral(…) asks for, in the lane the actor is in at the start.
                 let t = slot.t0.unwrap_or_else(|| self.last_known());
                 let lane = match slot.t0 {
-                    Some(t) => self.track(slot.target).lane(t),
+                    Some(t) => self.lane_now(slot.target, t),
                     None => self.track(slot.target).lane(f64::MAX),
                 };
                 let w = self.road.lane_width(lane, self.s_at(slot.target, t));
@@ -293,7 +293,7 @@ impl Planner<'_> {
             ));
         };
         let (_, lane) = self.lane_target(m, target, Some(t), len.unwrap_or(0.0))?;
-        let now = self.track(target).lane(t);
+        let now = self.lane_now(target, t);
         let s = self.s_at(target, t);
         let Some(l) = lane.filter(|l| *l != now) else {
             return Ok(None);

@@ -344,6 +344,50 @@ impl PlanRoad<'_> {
         let (road, s) = self.road_at(s);
         road.lane_span(lane, s).map_or(0.0, |sp| sp.width())
     }
+
+    /// The lane that lane `lane` at the plan's s `s0` runs on into at `s1` (against s: u):
+    /// across the lane sections of a road by the lanes' links (ASAM OpenDRIVE 1.8 §9.4 lane
+    /// linkage, `<link><successor id=…>` and `<predecessor id=…>`: `RoadNetwork::successors`
+    /// and `predecessors`, whichever leads towards `s1`); from one road of the plan to the next
+    /// the same id (`chain` stops where a road link renumbers a lane). Where a lane has no
+    /// link into the next lane section, or is missing at `s0`, the id it had there.
+    pub(crate) fn lane_along(&self, lane: i32, s0: f64, s1: f64) -> i32 {
+        let (a, b) = (self.forward_s(s0), self.forward_s(s1));
+        let (lo, hi) = (a.min(b), a.max(b));
+        let mut segments: Vec<&Segment<'_>> = self
+            .segments
+            .iter()
+            .filter(|g| g.start <= hi && g.start + g.road.length >= lo)
+            .collect();
+        if b < a {
+            segments.reverse();
+        }
+        let mut lane = lane;
+        for g in segments {
+            let local = |s: f64| (s - g.start).clamp(0.0, g.road.length);
+            let Some(mut h) = self.net.lane_handle(&g.road.id, lane, local(a)) else {
+                continue;
+            };
+            let target = g.road.lane_section_index(local(b)) as u32;
+            while h.section != target {
+                let next = if target > h.section {
+                    h.section + 1
+                } else {
+                    h.section - 1
+                };
+                let linked = self
+                    .net
+                    .successors(h)
+                    .into_iter()
+                    .chain(self.net.predecessors(h))
+                    .find(|n| n.road == h.road && n.section == next);
+                let Some(n) = linked else { break };
+                h = n;
+            }
+            lane = h.lane;
+        }
+        lane
+    }
 }
 
 /// Sampling step in s of lane centre lengths (m).

@@ -150,18 +150,30 @@ fn a_compound_lane_alone_and_its_lanes_select_the_same_lane() {
     }
 }
 
-/// lane_renumbered.osc on lane_add_inner.xodr (found with issue 27 item 3, not fixed): ego in
-/// lane -2 (lane(1) at s = 250 m) drives across s = 300 m, where the lane section renumbers it
-/// -3 (its successor link); the engine follows the link (ego in lane -3 from there, still
-/// lane(1), the rightmost), but the plan's track keeps lane ids within a road, so do.b's
-/// lane(1) at 10 s (-3 at s = 350 m) is refused as "found it in lane -2" (15:13). docs/dsl.md Not
-/// run yet lists it; this test pins the refusal until the track follows lane links.
+/// lane_renumbered.osc on lane_add_inner.xodr, by hand: ego in lane -2 (lane(1), t = -5.25 m)
+/// from s = 250 m at 10 m/s, s = 250 + 10·t; across s = 300 m (at 5 s) its successor link leads
+/// it into lane -3, still lane(1) (the rightmost), centre t = -(w(s − 300) + 5.25) with the new
+/// lane -1's width w(d) = 0.00105·d² − 0.000007·d³: w(25) = 0.546875 (y = -5.796875 m at
+/// 7.5 s), w(50) = 1.75 (y = -7.0 m at 10 s), w(60) = 3.78 − 1.512 = 2.268 (y = -7.518 m at
+/// 11 s), w(70) = 5.145 − 2.401 = 2.744 (y = -7.994 m at 12 s). do.b's lane(1) at 10 s is
+/// lane -3 at s = 350 m, where the plan's track now follows ego (before: refused at 15:13 as
+/// "found it in lane -2", the id kept along the road); b runs 10-12 s.
 #[test]
-fn a_lane_renumbered_by_a_lane_section_is_not_followed_by_the_plans_track_yet() {
-    let e = crate::support::error_on("lists/lane_renumbered", "lane_add_inner");
-    assert!(
-        e.starts_with("expected `ego` in lane -3 at the phase start, found it in lane -2")
-            && e.ends_with("lane_renumbered.osc:15:13"),
-        "{e}"
-    );
+fn a_lane_renumbered_by_a_lane_section_is_followed_by_the_plans_track() {
+    let r = run_on("lists/lane_renumbered", "lane_add_inner");
+    crate::support::phases_are(&r, &[("do.b", 10.0, 12.0)]);
+    for (t, x, y, lane) in [
+        (0.0, 250.0, -5.25, -2),
+        (2.5, 275.0, -5.25, -2),
+        (7.5, 325.0, -5.796875, -3),
+        (10.0, 350.0, -7.0, -3),
+        (11.0, 360.0, -7.518, -3),
+        (12.0, 370.0, -7.994, -3),
+    ] {
+        let p = r.at(t, "ego");
+        assert!(
+            (p.x - x).abs() < S_TOL && (p.y - y).abs() < 1e-9 + S_TOL && p.lane == lane,
+            "ego at {t} s: {p:?}, want ({x}, {y}) in lane {lane}"
+        );
+    }
 }
