@@ -941,20 +941,13 @@ impl Planner<'_> {
                             continue;
                         }
                         let Some(t) = t0 else {
-                            // A block's member's slot is known to the plan only: not run yet.
-                            if let (Some(first), Some((x, _))) =
-                                (self.block_first(target), self.beside_gap(m, target)?)
-                            {
-                                return Err(m.site.err(
-                                    K::Unsupported,
-                                    format!("expected lateral(…) beside `{x}` of a group over several lanes in a phase the plan knows the start of, found a phase that starts at run time: the engine would check `{target}` as if it were `{first}`, whose place beside `{x}` is the group's (not run yet)"),
-                                ));
-                            }
                             // After a run-time start the engine checks it (plan::runtime);
-                            // beside another actor at: all it follows x (`lateral_follow`).
+                            // beside another actor at: all it follows x (`lateral_follow`), a
+                            // block's member at its slot where the plan last knows the block.
                             out.push(self.start_check(m, target, name("check"))?);
                             if let (At::All, false) = (m.at, m.projected) {
-                                if let Some((x, dt)) = self.beside_gap(m, target)? {
+                                let last = self.last_known();
+                                if let Some((x, dt)) = self.beside_slot(m, target, last)? {
                                     let n = name("lateral");
                                     out.push(self.follow_beside(m, target, x, dt, n));
                                 }
@@ -962,9 +955,8 @@ impl Planner<'_> {
                             continue;
                         };
                         // Beside another actor: the planned t of both at the start (a member
-                        // of a block, its slot's: `block_offset`).
-                        if let Some((x, want)) = self.beside_gap(m, target)? {
-                            let want = want + self.block_offset(target, t).unwrap_or(0.0);
+                        // of a block, its slot's: `beside_slot`).
+                        if let Some((x, want)) = self.beside_slot(m, target, t)? {
                             let got = self.t_at(target, t) - self.t_at(&x, t);
                             if (got - want).abs() > LATERAL_TOLERANCE {
                                 return Err(m.site.err(

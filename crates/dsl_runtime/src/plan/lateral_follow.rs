@@ -27,6 +27,11 @@
 //! `runtime::start_check`); x on another of the plan's roads is followed where their reference
 //! lines join continuously (engine `lateral_follow::target_t`), else an error record and a
 //! failed run. With `track: projected` only the check at the start, as before.
+//!
+//! A member of a group over several lanes (a block beside x) keeps its own slot: x's t plus d
+//! plus its place across from member 0's (`Planner::beside_slot`), at a known start as the
+//! block is then, after a run-time start as the plan last knows it; the check and following
+//! above are each member's own at that slot.
 
 use scenario::{DynamicsShape, LaneChangeTarget, LateralAction, PrivateAction};
 
@@ -53,12 +58,10 @@ impl Planner<'_> {
         name: String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
-        let Some((x, dt)) = self.beside_gap(m, target)? else {
+        // A member of a group over several lanes keeps its slot in the block (`beside_slot`).
+        let Some((x, dt)) = self.beside_slot(m, target, t0)? else {
             return Ok(());
         };
-        // A member of a group over several lanes keeps its slot in the block: x's t plus d plus
-        // its place across from member 0's (`block_offset`).
-        let dt = dt + self.block_offset(target, t0).unwrap_or(0.0);
         // The actor's own sideways moves contradict the constraint either way.
         let (who, held) = (target.to_string(), (t0, te, m.site.clone()));
         let end = te.unwrap_or(f64::INFINITY);
@@ -82,6 +85,24 @@ impl Planner<'_> {
         Ok(())
     }
 
+    /// The reference x of `m`, a `lateral(…)` beside another actor, and the t of `target`
+    /// less x's it asks for with the block at `t` (`beside_gap`): for a member after the first
+    /// of a group over several lanes, x's t plus d plus its place across from member 0's at
+    /// `t` (`block_offset`), its slot in the block; for any other actor x's t plus d. At a
+    /// phase start the plan knows `t` is that start; at one the engine finds (a run-time
+    /// condition), the plan's last known time: the block as the plan last knows it, which the
+    /// engine's check at the start holds each member to (`runtime::start_state`).
+    pub(super) fn beside_slot(
+        &self,
+        m: &Modifier,
+        target: &str,
+        t: f64,
+    ) -> Result<Option<(String, f64)>, Error> {
+        Ok(self
+            .beside_gap(m, target)?
+            .map(|(x, dt)| (x, dt + self.block_offset(target, t).unwrap_or(0.0))))
+    }
+
     /// For a member after the first of a group over several lanes (`Planner::across`): its
     /// place across the road less member 0's at `t` (m, + to the left), its slot in the block.
     /// A lateral position beside another actor is the group's, member 0's (as a group's
@@ -93,7 +114,7 @@ impl Planner<'_> {
     }
 
     /// Member 0 of the group over several lanes of which `target` is a later member.
-    pub(super) fn block_first(&self, target: &str) -> Option<&String> {
+    fn block_first(&self, target: &str) -> Option<&String> {
         self.across
             .iter()
             .filter_map(|g| self.groups.get(g))

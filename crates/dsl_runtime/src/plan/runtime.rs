@@ -13,7 +13,7 @@
 //! | `position(d)` (at: start, all) | the engine's check: the actor at s = d (0.5 m) |
 //! | `position(d / time: t / neither, ahead_of/behind: x)` (at: start, all) | the engine's check: x at ∓d along the road, d the distance, t at x's speed then, or the default gap (0.5 m) (at: all held over the phase, with `track: projected` against x projected from the start; an actor free along its lane the engine's hold, `held_relation`) |
 //! | `lateral(d, measure_by, side)` in its lane (at: start, all) | the engine's check: the offset from the lane's centre, from a border with the lane's width where the engine finds the actor (1 cm) |
-//! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm) (at: all held over the phase, with `track: projected` against x's t at the start; with `track: actual` the engine follows x, `lateral_follow`) |
+//! | `lateral(d, side_of/left_of/right_of: x)` (at: start, all) | the engine's check: the actor's t minus x's (1 cm), a member of a group over several lanes at its slot in the block as the plan last knows it (`beside_slot`) (at: all held over the phase, with `track: projected` against x's t at the start; with `track: actual` the engine follows x, `lateral_follow`) |
 //! | `position(d [, ahead_of/behind: x], at: end)`, `distance(d)` over a phase of duration T | the engine's TravelAction: the two-halves profile worked out from the state at the start |
 //! | `along(r)` on a named route (at: start, all) | the engine's check: the actor in the route's lane, its s within the route's interval |
 //! | `yaw(ψ)`, `orientation(yaw: ψ)` relative to the road | the engine's check of the actor's heading minus the road's where it is: at the start (at: start, all) and the end (at: end, all) (`runtime_kept`) |
@@ -127,7 +127,8 @@ impl Planner<'_> {
                 None => check.s = Some((self.position_target(m, target, t)?.2, POSITION_TOLERANCE)),
             },
             ModKind::Lateral => {
-                if let Some((x, dt)) = self.beside_gap(m, target)? {
+                // A block's member: its slot as the plan last knows the block (`beside_slot`).
+                if let Some((x, dt)) = self.beside_slot(m, target, t)? {
                     check.beside = Some((x, dt, LATERAL_TOLERANCE));
                     return Ok(check);
                 }

@@ -326,6 +326,21 @@ pub fn run_to_error(scenario: &scenario::Scenario) -> (Option<String>, Vec<(f64,
     }
 }
 
+/// Lowers the `.osc` at `osc` (relative to the crate) on `road` with seed 0 and asserts that
+/// its run fails with one error record, at `time` by the element `element`, whose message is
+/// the run's error, starting with `want` and ending with `tail` (the path between them is the
+/// machine's).
+pub fn fails_once(osc: &str, road: &str, (want, tail): (&str, &str), (time, element): (f64, &str)) {
+    let lowered = lower_at(osc, road, 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    assert!(error.starts_with(want) && error.ends_with(tail), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - time).abs() < 1e-9, "{records:?}");
+    assert_eq!(records[0].1, element);
+    assert_eq!(records[0].2, error);
+}
+
 /// Asserts that each phase `(name, start, end)` of `r` runs from start to end (1e-9 s: phase
 /// ends are step times).
 pub fn phases_are(r: &Run, want: &[(&str, f64, f64)]) {
