@@ -54,7 +54,9 @@ impl Planner<'_> {
         t: f64,
         len: f64,
     ) -> Result<Option<f64>, Error> {
-        let Some((x, dt)) = self.beside_gap(m, target)? else {
+        // A member of a group over several lanes ends at its slot in the block as it is at the
+        // phase start (`beside_slot`).
+        let Some((x, dt)) = self.beside_slot(m, target, t)? else {
             return Ok(None);
         };
         if !m.projected {
@@ -254,7 +256,8 @@ impl Planner<'_> {
         name: String,
         out: &mut Vec<Planned>,
     ) -> Result<(), Error> {
-        let Some((x, dt)) = self.beside_gap(m, target)? else {
+        // A member of a group over several lanes: its slot as the plan last knows the block.
+        let Some((x, dt)) = self.beside_slot(m, target, self.last_known())? else {
             return Ok(());
         };
         let change = LateralAction::LaneChange {

@@ -308,7 +308,7 @@ impl Planner<'_> {
         let x = self.entity_of(e)?;
         let Some(t) = t0 else {
             return Ok(self
-                .beside_gap(m, target)?
+                .beside_slot(m, target, self.last_known())?
                 .map(|(x, dt)| ShapedBeside::AtRunTime(x, dt)));
         };
         let len = match len {

@@ -885,3 +885,27 @@ fn a_block_member_leaving_its_slot_after_a_run_time_condition_fails_the_run() {
         (5.25, "do.1.2/g.vehicles[1]/2:check"),
     );
 }
+
+/// A block moved beside ego at a phase's end, at a start the plan knows and at one after a
+/// run-time condition (group_block_beside_end.osc, group_block_beside_end_runtime.osc, by
+/// hand there): each member ends at its own slot, 0.5 m right in its own lane.
+#[test]
+fn a_group_over_several_lanes_ends_a_phase_beside_another_actor_at_its_slots() {
+    // Members' y half way and at the end, in lanes -2, -1, -2 throughout.
+    const MID: [f64; 3] = [-5.5, -2.0, -5.5];
+    const END: [f64; 3] = [-5.75, -2.25, -5.75];
+    let slots = |r: &Run, when: &[(f64, [f64; 3])]| {
+        for &(t, ys) in when {
+            for (i, (lane, y)) in [-2, -1, -2].into_iter().zip(ys).enumerate() {
+                let name = format!("g.vehicles[{i}]");
+                let m = r.at(t, &name);
+                assert_eq!(m.lane, lane, "{name} at {t}: {m:?}");
+                close(m.y, y, S_TOL, &format!("{name} y at {t}"));
+            }
+        }
+    };
+    let r = run("group_block_beside_end", 0, None);
+    slots(&r, &[(2.5, MID), (4.0, END), (6.0, END)]);
+    let r = run("group_block_beside_end_runtime", 0, None);
+    slots(&r, &[(4.55, MID), (6.05, END), (8.0, END)]);
+}
