@@ -21,8 +21,9 @@
 //!   the plan's roads: the route given to `create_route_point` is one the runtime chooses (a
 //!   route the map makes is refused at the argument, `resolve::position`), its s and t along
 //!   it and to its left: on a field `routes_are_opposite` binds against s, −s and −t of the
-//!   road (a field `routes_are_in_sequence` binds to one road: not run yet, an error). `world_relative` and `object_relative`
-//!   (frames of x and y, not of s and t) are errors at the argument;
+//!   road; on a road field `routes_are_in_sequence` binds, along the sequence of roads (the
+//!   plan's roads in +s: s continuing from one road onto the next). `world_relative` and
+//!   `object_relative` (frames of x and y, not of s and t) are errors at the argument;
 //! - an odr point names its road and lane (OpenDRIVE ids, not relative); its s is from the
 //!   reference's s along the plan's roads, its t from its lane's centre, heading the road's,
 //!   in OpenDRIVE's axes (s along the road's s-axis, t to its left) also for a reference
@@ -154,22 +155,16 @@ impl Planner<'_> {
         // (`against::bind_routes`) they are −s and −t of the road (as an absolute route
         // point's, `position_actions`) under `road_relative`, and of the reference's lane
         // where it drives in +s under `lane_relative` (a lane driven against s has the route's
-        // direction already); on a field the map binds to one road of the plan
-        // (`routes_are_in_sequence`) the point would have to lie on that road, which is not
-        // run yet (issue 27: before, both bindings were ignored and the points read as on the
-        // plan's roads in +s).
+        // direction already) (issue 27: before, the binding was ignored). On a road field
+        // `routes_are_in_sequence` binds to a road of the plan (`route_roads`) they run along
+        // the sequence of roads, which are the plan's roads in +s in that order: s from the
+        // reference's continuing from one road onto the next, as on a free route.
         let mut along = Vec::with_capacity(points.len());
         for (i, &(x, y, yaw)) in points.iter().enumerate() {
             let field = match of {
                 RelativePoints::St(routes) => routes.get(i).and_then(Option::as_ref),
                 _ => None,
             };
-            if let Some((_, _, why)) = field.and_then(|f| self.route_roads.get(f)) {
-                return Err(site.err(
-                    K::Unsupported,
-                    format!("expected the route of route point {i} of the relative {} a route the plan's roads are (free, or bound against s by routes_are_opposite), found `{}`, {why}: not run yet (its points would have to lie on that road)", if inv.kind.along_path() { "path" } else { "trajectory" }, field.map_or("", String::as_str)),
-                ));
-            }
             let back = field.is_some_and(|f| self.against_routes.contains_key(f));
             let turn = back && (transform == "road_relative" || !road.is_against());
             along.push(match turn {
