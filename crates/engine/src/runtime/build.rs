@@ -153,6 +153,9 @@ impl Builder<'_> {
             let mut acts = Vec::new();
             for act in &story.acts {
                 let mut groups = Vec::new();
+                // The Act's actions with their ManeuverGroup's actors, noted for runtime
+                // actors once the Act's start trigger has its condition ids.
+                let mut act_actions = Vec::new();
                 for mg in &act.maneuver_groups {
                     let actors = self.actors(&mg.actors, &mg.pos)?;
                     let mut maneuvers = Vec::new();
@@ -164,11 +167,7 @@ impl Builder<'_> {
                                 .iter()
                                 .map(|a| {
                                     let d = self.action(a.name.clone(), a, actors.clone())?;
-                                    self.note_runtime_actors(
-                                        d.id,
-                                        &mg.actors,
-                                        act.start_trigger.as_ref(),
-                                    );
+                                    act_actions.push((d.id, &mg.actors));
                                     Ok(d)
                                 })
                                 .collect::<Result<_, Error>>()?;
@@ -195,9 +194,13 @@ impl Builder<'_> {
                         maneuvers,
                     });
                 }
+                let start_trigger = self.trigger(act.start_trigger.as_ref())?;
+                for (id, actors) in act_actions {
+                    self.note_runtime_actors(id, actors, start_trigger.as_ref());
+                }
                 acts.push(ActDesc {
                     name: act.name.clone(),
-                    start_trigger: self.trigger(act.start_trigger.as_ref())?,
+                    start_trigger,
                     stop_trigger: self.trigger(act.stop_trigger.as_ref())?,
                     maneuver_groups: groups,
                 });
@@ -244,13 +247,13 @@ impl Builder<'_> {
     }
 
     /// Notes action `id` for actors worked out at its start: when its ManeuverGroup names a
-    /// selection, or selects the triggering entities of the Act's `start_trigger`
-    /// (store/selection.rs).
+    /// selection, or selects the triggering entities of the Act's `start_trigger` (its
+    /// conditions by their ids; store/selection.rs).
     fn note_runtime_actors(
         &mut self,
         id: crate::storyboard::ActionId,
         actors: &Actors,
-        start_trigger: Option<&Trigger>,
+        start_trigger: Option<&TriggerDesc>,
     ) {
         let selections = &self.scenario.entities.entity_selections;
         let refs = &actors.entity_refs;
@@ -262,7 +265,7 @@ impl Builder<'_> {
                     g.conditions
                         .iter()
                         .map(|c| crate::store::selection::ConditionRef {
-                            pos: c.pos.clone(),
+                            id: c.id,
                             delay: c.delay,
                         })
                         .collect()

@@ -45,6 +45,7 @@ impl ConditionSource for Conditions<'_> {
             let ctx = ConditionWorld {
                 world,
                 storyboard: *storyboard,
+                condition: id,
             };
             evaluate_resolved(condition, refs, &ctx, state)
         });

@@ -25,10 +25,10 @@
 
 use std::collections::BTreeMap;
 
-use scenario::{EntitySelection, Scenario, SelectionMember, SourcePos};
+use scenario::{EntitySelection, Scenario, SelectionMember};
 
 use crate::condition::SelectionId;
-use crate::storyboard::ActionId;
+use crate::storyboard::{ActionId, ConditionId};
 use crate::world::entity::{Entity, EntityId};
 
 mod restrictions;
@@ -94,16 +94,16 @@ impl Selections {
         self.actors = actors.into_iter().collect();
     }
 
-    /// Records an evaluation of the condition at `pos` at `time`: its raw value and the
-    /// triggering entities it held for (`triggering`).
+    /// Records an evaluation of condition `id` at `time`: its raw value and the triggering
+    /// entities it held for (`triggering`).
     pub(crate) fn note_triggering(
         &self,
-        pos: &SourcePos,
+        id: ConditionId,
         time: f64,
         value: bool,
         held: &[EntityId],
     ) {
-        self.reports.note(pos, time, value, held);
+        self.reports.note(id, time, value, held);
     }
 
     /// The actors of action `id` now, if its ManeuverGroup names a selection or selects

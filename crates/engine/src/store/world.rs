@@ -13,7 +13,7 @@ use crate::condition::ConditionContext;
 use crate::position::lane_at;
 use crate::position::{EntityQuery, EntityView};
 use crate::routing::RoutingOptions;
-use crate::storyboard::StateView;
+use crate::storyboard::{ConditionId, StateView};
 use crate::world::entity::{Entity, EntityId};
 use crate::world::lane_track::LaneTrack;
 use crate::world::lanes::curvature;
@@ -321,12 +321,16 @@ impl EntityQuery for World {
     }
 }
 
-/// The world together with the storyboard's element states: what conditions read.
+/// The world together with the storyboard's element states: what conditions read, one
+/// condition at a time.
 pub struct ConditionWorld<'a> {
     /// The world.
     pub world: &'a World,
     /// The storyboard's states at this moment of the step.
     pub storyboard: StateView<'a>,
+    /// The condition being evaluated: the key its reports for `selectTriggeringEntities` are
+    /// kept under (`ConditionContext::note_triggering`, store/selection/triggering.rs).
+    pub condition: ConditionId,
 }
 
 impl EntityQuery for ConditionWorld<'_> {
@@ -403,11 +407,13 @@ impl ConditionContext for ConditionWorld<'_> {
         self.world.signals.phase(name)
     }
 
-    fn note_triggering(&self, pos: &scenario::SourcePos, value: bool, held: &[EntityId]) {
+    /// Recorded under [`ConditionWorld::condition`], the condition's dense index, not under
+    /// `pos`.
+    fn note_triggering(&self, _pos: &scenario::SourcePos, value: bool, held: &[EntityId]) {
         let time = self.world.time;
         self.world
             .selections
-            .note_triggering(pos, time, value, held);
+            .note_triggering(self.condition, time, value, held);
     }
 
     /// The time of day of the EnvironmentAction in force (seconds since the epoch): its

@@ -10,7 +10,8 @@
 //! trigger when the Act started.
 //!
 //! Each condition reports its raw value, and a ByEntityCondition the entities it held for, at
-//! every evaluation ([`TriggerReports::note`]). A condition's `delay` shifts its value in time
+//! every evaluation ([`TriggerReports::note`]), under its `ConditionId`, the dense index the
+//! runtime gives every condition when it builds the storyboard (no hash per evaluation). A condition's `delay` shifts its value in time
 //! (storyboard::delay): the trigger fires on the value of `delay` seconds before, so the
 //! entities are taken from the report of that step too (the nearest report, as the delay line
 //! rounds to the nearest step). An Act's start trigger is evaluated only until the Act starts,
@@ -22,17 +23,16 @@
 //! condition holds for no entity then, so it adds none).
 
 use std::cell::RefCell;
-use std::collections::{HashMap, VecDeque};
+use std::collections::VecDeque;
 
-use scenario::SourcePos;
-
+use crate::storyboard::ConditionId;
 use crate::world::EntityId;
 
-/// A condition of an Act's start trigger: its place in the file and its `delay` (s).
+/// A condition of an Act's start trigger: its runtime handle and its `delay` (s).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct ConditionRef {
-    /// Where the Condition is written: the key of its reports.
-    pub pos: SourcePos,
+    /// The condition's handle: the index of its reports.
+    pub id: ConditionId,
     /// Its `delay`, s.
     pub delay: f64,
 }
@@ -49,26 +49,37 @@ struct Report {
 /// world read-only, hence the cell).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct TriggerReports {
-    /// The conditions to keep, with the longest delay each is used with.
-    watched: HashMap<SourcePos, f64>,
-    history: RefCell<HashMap<SourcePos, VecDeque<Report>>>,
+    /// Per condition id: `Some` with the longest delay it is used with when its reports are
+    /// kept (ids past the end are not).
+    watched: Vec<Option<f64>>,
+    /// Per condition id (as `watched`): its reports, oldest first.
+    history: RefCell<Vec<VecDeque<Report>>>,
 }
 
 impl TriggerReports {
     /// Keeps the reports of condition `c` from now on.
     pub(crate) fn watch(&mut self, c: &ConditionRef) {
-        let delay = self.watched.entry(c.pos.clone()).or_insert(c.delay);
+        let i = c.id.0 as usize;
+        if self.watched.len() <= i {
+            self.watched.resize(i + 1, None);
+            self.history.get_mut().resize_with(i + 1, VecDeque::new);
+        }
+        let delay = self.watched[i].get_or_insert(c.delay);
         *delay = delay.max(c.delay);
     }
 
-    /// Records an evaluation of the condition at `pos` at simulation `time`: its raw `value`
-    /// and the triggering entities it `held` for.
-    pub(crate) fn note(&self, pos: &SourcePos, time: f64, value: bool, held: &[EntityId]) {
-        let Some(&delay) = self.watched.get(pos) else {
+    /// Records an evaluation of condition `id` at simulation `time`: its raw `value` and the
+    /// triggering entities it `held` for.
+    pub(crate) fn note(&self, id: ConditionId, time: f64, value: bool, held: &[EntityId]) {
+        let i = id.0 as usize;
+        let Some(&Some(delay)) = self.watched.get(i) else {
             return;
         };
         let mut history = self.history.borrow_mut();
-        let reports = history.entry(pos.clone()).or_default();
+        // `watch` sized both alike.
+        let Some(reports) = history.get_mut(i) else {
+            return;
+        };
         reports.push_back(Report {
             time,
             value,
@@ -102,7 +113,11 @@ impl TriggerReports {
     /// each once, in the order of the conditions.
     pub(crate) fn entities(&self, groups: &[Vec<ConditionRef>]) -> Vec<EntityId> {
         let history = self.history.borrow();
-        let report = |c: &ConditionRef| history.get(&c.pos).and_then(|r| Self::delayed(r, c));
+        let report = |c: &ConditionRef| {
+            history
+                .get(c.id.0 as usize)
+                .and_then(|r| Self::delayed(r, c))
+        };
         let firing: Vec<&Vec<ConditionRef>> = groups
             .iter()
             .filter(|g| g.iter().all(|c| report(c).is_some_and(|r| r.value)))
@@ -126,18 +141,11 @@ impl TriggerReports {
 
 #[cfg(test)]
 mod tests {
-    use std::path::Path;
-    use std::sync::Arc;
-
     use super::*;
 
-    fn at(line: u32, delay: f64) -> ConditionRef {
+    fn at(id: u32, delay: f64) -> ConditionRef {
         ConditionRef {
-            pos: SourcePos {
-                file: Arc::from(Path::new("t.xosc")),
-                line,
-                col: 1,
-            },
+            id: ConditionId(id),
             delay,
         }
     }
@@ -151,17 +159,21 @@ mod tests {
         reports.watch(&c);
         // Entities A, B, C: ids 0, 1, 2.
         let (a, b, c_) = (EntityId(0), EntityId(1), EntityId(2));
-        reports.note(&c.pos, 0.0, true, &[a]);
-        reports.note(&c.pos, 0.1, true, &[a, b]);
-        reports.note(&c.pos, 0.2, false, &[]);
+        reports.note(c.id, 0.0, true, &[a]);
+        reports.note(c.id, 0.1, true, &[a, b]);
+        reports.note(c.id, 0.2, false, &[]);
         // At 0.2 the value of 0.0 reaches the trigger: A.
         assert_eq!(reports.entities(&[vec![c.clone()]]), [a]);
-        reports.note(&c.pos, 0.3, false, &[]);
+        reports.note(c.id, 0.3, false, &[]);
         assert_eq!(reports.entities(&[vec![c.clone()]]), [a, b]);
-        assert_eq!(reports.history.borrow()[&c.pos].len(), 3, "0.0 dropped");
+        assert_eq!(
+            reports.history.borrow()[c.id.0 as usize].len(),
+            3,
+            "0.0 dropped"
+        );
         // An unwatched condition keeps nothing.
         let other = at(2, 0.0);
-        reports.note(&other.pos, 0.3, true, &[c_]);
+        reports.note(other.id, 0.3, true, &[c_]);
         assert!(reports.entities(&[vec![other]]).is_empty());
     }
 
@@ -176,14 +188,14 @@ mod tests {
         }
         // Entities A, B: ids 0, 1.
         let (ea, eb) = (EntityId(0), EntityId(1));
-        reports.note(&a.pos, 1.0, true, &[ea]);
-        reports.note(&b.pos, 1.0, true, &[eb]);
-        reports.note(&c.pos, 1.0, false, &[]);
+        reports.note(a.id, 1.0, true, &[ea]);
+        reports.note(b.id, 1.0, true, &[eb]);
+        reports.note(c.id, 1.0, false, &[]);
         let groups = [vec![a.clone()], vec![b.clone(), c.clone()]];
         assert_eq!(reports.entities(&groups), [ea]);
-        reports.note(&a.pos, 1.1, false, &[]);
-        reports.note(&b.pos, 1.1, true, &[eb]);
-        reports.note(&c.pos, 1.1, false, &[]);
+        reports.note(a.id, 1.1, false, &[]);
+        reports.note(b.id, 1.1, true, &[eb]);
+        reports.note(c.id, 1.1, false, &[]);
         assert_eq!(reports.entities(&groups), [eb]);
     }
 }
