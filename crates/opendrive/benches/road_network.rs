@@ -1,6 +1,7 @@
 //! Criterion benchmarks of the road model: load time (largest corpus file and the generated
 //! 60 MB town grid of `grid/`), (road, s, t) → world evaluations per geometry type, world →
-//! road look-ups on `multi_intersections.xodr` and on the grid, and lane routes. Short runs
+//! road look-ups on `multi_intersections.xodr` and on the grid, lane routes, and the lane
+//! graph's successors and predecessors on `multi_intersections.xodr`. Short runs
 //! (sample size 10) so the whole file takes about two minutes.
 // criterion_group!/criterion_main! make undocumented public functions (workspace lint
 // missing_docs).
@@ -188,9 +189,58 @@ fn route(c: &mut Criterion) {
     g.finish();
 }
 
+/// The lane graph's queries on the junction network `multi_intersections.xodr`: the
+/// successors and predecessors of every lane of every lane section (the route search's and the
+/// engine's lane walks' step), per lane.
+fn lane_graph(c: &mut Criterion) {
+    let mut g = c.benchmark_group("lane_graph");
+    g.sample_size(10)
+        .warm_up_time(Duration::from_secs(1))
+        .measurement_time(Duration::from_secs(2));
+    let net = load_corpus_network("esmini/xodr/multi_intersections.xodr");
+    let handles: Vec<opendrive::LaneHandle> = net
+        .roads()
+        .iter()
+        .enumerate()
+        .flat_map(|(ri, r)| {
+            r.lane_sections
+                .iter()
+                .enumerate()
+                .flat_map(move |(k, sec)| {
+                    sec.left
+                        .iter()
+                        .chain(&sec.right)
+                        .map(move |l| opendrive::LaneHandle {
+                            road: ri as u32,
+                            section: k as u32,
+                            lane: l.id,
+                        })
+                })
+        })
+        .collect();
+    g.throughput(Throughput::Elements(handles.len() as u64));
+    g.bench_function("successors_multi_intersections", |b| {
+        b.iter(|| {
+            handles
+                .iter()
+                .map(|&h| black_box(net.successors(black_box(h))).len())
+                .sum::<usize>()
+        })
+    });
+    g.bench_function("predecessors_multi_intersections", |b| {
+        b.iter(|| {
+            handles
+                .iter()
+                .map(|&h| black_box(net.predecessors(black_box(h))).len())
+                .sum::<usize>()
+        })
+    });
+    g.finish();
+}
+
 fn load_corpus_network(rel: &str) -> RoadNetwork {
     RoadNetwork::from_file(&corpus(rel)).unwrap_or_else(|e| panic!("{e}"))
 }
 
-criterion_group!(benches, load, road_pose, locate, route);
+criterion_group!(benches, load, road_pose, locate, route, lane_graph);
 criterion_main!(benches);

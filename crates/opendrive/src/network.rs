@@ -6,7 +6,7 @@ use std::path::Path;
 use rustc_hash::FxHashMap;
 
 use crate::error::{Error, ErrorKind};
-use crate::handles::{JunctionHandle, RoadHandle, Topology};
+use crate::handles::{JunctionHandle, LaneGraph, RoadHandle, Topology};
 use crate::model::{Controller, Header, Junction, Road};
 use crate::parse::{load, Loaded};
 use crate::road::SpatialIndex;
@@ -21,6 +21,8 @@ pub struct RoadNetwork {
     pub(crate) junction_index: FxHashMap<String, usize>,
     pub(crate) controllers: Vec<Controller>,
     pub(crate) topology: Topology,
+    /// The lane graph's edges, from `topology` and the lane links (`handles::LaneGraph`).
+    pub(crate) lane_graph: LaneGraph,
     pub(crate) spatial: SpatialIndex,
     pub(crate) warnings: Vec<Error>,
 }
@@ -52,7 +54,7 @@ impl RoadNetwork {
             |id| road_index.get(id).map(|&i| i as u32),
             |id| junction_index.get(id).map(|&i| i as u32),
         );
-        Ok(Self {
+        let mut network = Self {
             header,
             roads,
             road_index,
@@ -60,9 +62,12 @@ impl RoadNetwork {
             junction_index,
             controllers,
             topology,
+            lane_graph: LaneGraph::default(),
             spatial,
             warnings,
-        })
+        };
+        network.lane_graph = network.build_lane_graph();
+        Ok(network)
     }
 
     /// The signal controllers (`<controller>`, OpenDRIVE 1.8 §14), in file order.

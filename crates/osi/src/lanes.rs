@@ -243,8 +243,8 @@ fn pairings(
         let road = network.handle_road(l);
         ids.id(lane_key(road, l.section as usize, l.lane))
     };
-    let before: Vec<Option<Identifier>> = before.into_iter().map(|l| Some(id(l))).collect();
-    let after: Vec<Option<Identifier>> = after.into_iter().map(|l| Some(id(l))).collect();
+    let before: Vec<Option<Identifier>> = before.iter().map(|&l| Some(id(l))).collect();
+    let after: Vec<Option<Identifier>> = after.iter().map(|&l| Some(id(l))).collect();
     let before = if before.is_empty() {
         vec![None]
     } else {

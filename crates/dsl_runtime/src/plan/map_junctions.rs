@@ -132,7 +132,7 @@ pub(super) fn connecting(
     from: LaneHandle,
     to: LaneHandle,
 ) -> Option<LaneHandle> {
-    net.successors(from).into_iter().find(|c| {
+    net.successors(from).iter().copied().find(|c| {
         net.roads()[c.road as usize].junction.is_some() && net.successors(*c).contains(&to)
     })
 }

@@ -367,7 +367,8 @@ pub(crate) fn map_route(
                 }
                 Some(h) => net
                     .successors(h)
-                    .into_iter()
+                    .iter()
+                    .copied()
                     .find(|n| n.section as usize == *k && net.handle_road(*n).id == *id),
             };
             let driving = road.driving_lanes(0.5 * (ps.0 + ps.1));

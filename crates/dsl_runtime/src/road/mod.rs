@@ -378,8 +378,9 @@ impl PlanRoad<'_> {
                 let linked = self
                     .net
                     .successors(h)
-                    .into_iter()
+                    .iter()
                     .chain(self.net.predecessors(h))
+                    .copied()
                     .find(|n| n.road == h.road && n.section == next);
                 let Some(n) = linked else { break };
                 h = n;

@@ -271,7 +271,7 @@ impl Mandatory {
         for _ in 0..MAX_LINK_HOPS {
             let mut next: Vec<LaneHandle> = Vec::new();
             for h in frontier {
-                for n in net.successors(h) {
+                for &n in net.successors(h) {
                     if (n.road, n.section) == place {
                         self.on = Some(n);
                         self.lost = None;

@@ -747,7 +747,7 @@ impl LaneIndex {
             // The next section of the same road, else the caller's choice at the road's end.
             let pick = match next.iter().find(|n| n.road == h.road) {
                 Some(&n) => n,
-                None => choose(&road.id, &next).or_else(|| next.first().copied())?,
+                None => choose(&road.id, next).or_else(|| next.first().copied())?,
             };
             direction = if with_traffic {
                 net.driving_direction(pick)

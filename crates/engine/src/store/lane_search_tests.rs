@@ -51,7 +51,7 @@ fn nearest_walk(
         };
         let pick = match next.iter().find(|n| n.road == h.road) {
             Some(&n) => n,
-            None => choose(&road.id, &next).or_else(|| next.first().copied())?,
+            None => choose(&road.id, next).or_else(|| next.first().copied())?,
         };
         direction = if with_traffic {
             net.driving_direction(pick)

@@ -202,8 +202,7 @@ pub fn advance(
             return distance;
         };
         let successors = net.successors(handle);
-        let Some(next) =
-            prefer(&track.road_id, &successors).or_else(|| successors.first().copied())
+        let Some(next) = prefer(&track.road_id, successors).or_else(|| successors.first().copied())
         else {
             return distance;
         };
@@ -266,7 +265,8 @@ pub fn carry_lane(
         };
         let next_section = (i64::from(h.section) + step) as u32;
         h = linked
-            .into_iter()
+            .iter()
+            .copied()
             .find(|n| n.road == h.road && n.section == next_section)
             .unwrap_or(LaneHandle {
                 section: next_section,

@@ -6,7 +6,8 @@
 //! `<successor>` links name the lane at the section's end side (larger s), `<predecessor>` the
 //! lane at its start side, whatever the driving direction.
 
-use crate::handles::{Link, RoadHandle};
+pub use crate::handles::LaneHandle;
+use crate::handles::{LaneGraph, Link, RoadHandle};
 use crate::model::{ContactPoint, Road, TrafficRule};
 use crate::network::RoadNetwork;
 
@@ -26,25 +27,6 @@ impl Direction {
             Self::Forward => Self::Backward,
             Self::Backward => Self::Forward,
         }
-    }
-}
-
-/// A lane of one lane section: a node of the lane graph. Cheap to copy and compare.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct LaneHandle {
-    /// Index of the road in [`RoadNetwork::roads`].
-    pub road: u32,
-    /// Index of the lane section in the road's `lane_sections`.
-    pub section: u32,
-    /// Lane id.
-    pub lane: i32,
-}
-
-impl LaneHandle {
-    /// The road the lane belongs to.
-    #[inline]
-    pub fn road_handle(self) -> RoadHandle {
-        RoadHandle(self.road)
     }
 }
 
@@ -93,24 +75,38 @@ impl RoadNetwork {
     }
 
     /// Lanes that follow `h` in its driving direction (through lane sections, road links and
-    /// junction lane links), keeping only those driven the same way.
-    pub fn successors(&self, h: LaneHandle) -> Vec<LaneHandle> {
-        let dir = self.driving_direction(h);
-        self.connected(h, dir)
-            .into_iter()
-            .filter(|&(l, d)| self.driving_direction(l) == d)
-            .map(|(l, _)| l)
-            .collect()
+    /// junction lane links), keeping only those driven the same way. A view of the lane graph
+    /// worked out when the network was built (`handles::LaneGraph`): no allocation. Empty for
+    /// a handle of no lane of this network.
+    #[inline]
+    pub fn successors(&self, h: LaneHandle) -> &[LaneHandle] {
+        self.lane_graph.successors(&self.roads, h)
     }
 
-    /// Lanes that `h` follows in its driving direction.
-    pub fn predecessors(&self, h: LaneHandle) -> Vec<LaneHandle> {
-        let dir = self.driving_direction(h).reverse();
-        self.connected(h, dir)
-            .into_iter()
-            .filter(|&(l, d)| self.driving_direction(l) == d.reverse())
-            .map(|(l, _)| l)
-            .collect()
+    /// Lanes that `h` follows in its driving direction (a view, as
+    /// [`successors`](Self::successors)).
+    #[inline]
+    pub fn predecessors(&self, h: LaneHandle) -> &[LaneHandle] {
+        self.lane_graph.predecessors(&self.roads, h)
+    }
+
+    /// The lane graph of this network, for `handles::LaneGraph` when the network is built:
+    /// each lane's successors and predecessors, from its lane, road and junction links.
+    pub(crate) fn build_lane_graph(&self) -> LaneGraph {
+        LaneGraph::build(&self.roads, |h| {
+            let dir = self.driving_direction(h);
+            let follow = self
+                .connected(h, dir)
+                .into_iter()
+                .filter(|&(l, d)| self.driving_direction(l) == d)
+                .map(|(l, _)| l);
+            let precede = self
+                .connected(h, dir.reverse())
+                .into_iter()
+                .filter(|&(l, d)| self.driving_direction(l) == d.reverse())
+                .map(|(l, _)| l);
+            (follow.collect(), precede.collect())
+        })
     }
 
     /// Lanes joined to the end of `h` reached when travelling `dir`, with the direction of

@@ -253,7 +253,7 @@ impl RoadNetwork {
             };
             let exit = self.exit_s(h);
             let along = c.plus(cost.along(h, label.entry, (exit - label.entry).abs()));
-            for n in self.successors(h) {
+            for &n in self.successors(h) {
                 relax(n, along.plus(cost.enter(h, n)), self.entry_s(n), false);
             }
             let section = &self.handle_road(h).lane_sections[h.section as usize];

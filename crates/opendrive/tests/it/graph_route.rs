@@ -6,7 +6,7 @@ use crate::common;
 use std::path::Path;
 
 use common::corpus;
-use opendrive::{Direction, LanePosition, LaneType, RoadNetwork};
+use opendrive::{Direction, LaneHandle, LanePosition, LaneType, RoadNetwork};
 
 fn load(path: &Path) -> RoadNetwork {
     RoadNetwork::from_file(path).unwrap_or_else(|e| panic!("{e}"))
@@ -99,8 +99,38 @@ fn successors_and_predecessors_are_inverse() {
         .unwrap_or_else(|| panic!("lane"));
     let next = net.successors(h);
     assert!(!next.is_empty());
-    for n in next {
+    for &n in next {
         assert!(net.predecessors(n).contains(&h), "{n:?}");
+    }
+}
+
+/// A handle of no lane of the network (a road index past the end, a lane id its section does
+/// not have) has no successors or predecessors: the lane graph's view is empty, no panic.
+#[test]
+fn a_handle_of_no_lane_has_no_neighbours() {
+    let net = junction_file();
+    let h = net
+        .lane_handle("1", -1, 99.0)
+        .unwrap_or_else(|| panic!("lane"));
+    let lanes = net.roads()[h.road as usize].lane_sections[h.section as usize]
+        .right
+        .len() as i32;
+    for ghost in [
+        LaneHandle {
+            road: net.roads().len() as u32,
+            ..h
+        },
+        LaneHandle {
+            section: 1_000,
+            ..h
+        },
+        LaneHandle {
+            lane: -(lanes + 1),
+            ..h
+        },
+    ] {
+        assert!(net.successors(ghost).is_empty(), "{ghost:?}");
+        assert!(net.predecessors(ghost).is_empty(), "{ghost:?}");
     }
 }
 
