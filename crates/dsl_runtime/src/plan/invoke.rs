@@ -20,7 +20,7 @@ use super::planner::Planner;
 use super::route::{self, OnRoute};
 use super::runtime::{speed_at_rate_check, speed_change_check};
 use super::runtime_kept::standing_check;
-use super::speed_actions::Slot;
+use super::speed_actions::{check_speed_modifiers, Slot};
 use super::types::{Planned, When, LATERAL_TOLERANCE, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{Action, Arg, At, Invoke, ModKind, Modifier, Phase, Route};
@@ -176,29 +176,24 @@ impl Planner<'_> {
             }
             // A member's own acceleration (plain, or relative to an actor outside its group;
             // relative to another member it is bad input, `random_traffic_relations`) after a
-            // run-time condition is its model's free-road acceleration over the phase
-            // (`member_acceleration`, below), alone beside a drive or move. As the rate of a
-            // speed change (beside `change_speed`, `speed(…, at: end)`, or a speed or
-            // acceleration action) it is not run yet: the model changes its speed at its own
-            // rate and is handed no rate (issue 27).
+            // run-time condition beside a drive or move is its model's free-road acceleration
+            // over the phase (`member_acceleration`, below), or as the rate of its speed
+            // change (`change_speed(v)`, `speed(v, at: end)`) its model's rate toward v
+            // (`member_rate`, below). Beside an action that controls the speed it is every
+            // actor's bad input (`check_speed_modifiers`); beside another action (keep_speed,
+            // remain_stationary, a lane or position action) not run yet (issue 27).
             if self.random_member(target) {
-                let rated = inv.kind != Action::Move
-                    || mods.iter().any(|q| {
-                        q.kind == ModKind::ChangeSpeed
-                            || (q.kind == ModKind::Speed && q.at == At::End)
-                    });
-                if let Some(m) = mods
-                    .iter()
-                    .find(|m| m.kind == ModKind::Acceleration)
-                    .filter(|_| rated)
-                {
-                    return Err(m.site.err(
-                        K::Unsupported,
-                        format!(
-                            "expected `{}(…)` on `{target}`, a member of random traffic, in a phase of its own alone beside drive() or move(): not run yet as the rate of a speed change or beside {}(…), its driver model changes its speed at its own rate (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\") and is handed a free-road acceleration but no rate",
-                            m.name, inv.action
-                        ),
-                    ));
+                if let Some(m) = mods.iter().find(|m| m.kind == ModKind::Acceleration) {
+                    check_speed_modifiers(inv, first)?;
+                    if inv.kind != Action::Move {
+                        return Err(m.site.err(
+                            K::Unsupported,
+                            format!(
+                                "expected `{}(…)` on `{target}`, a member of random traffic, in a phase of its own beside drive() or move(): not run yet beside {}(…), which hands its driver model no speed to change at that rate (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\")",
+                                m.name, inv.action
+                            ),
+                        ));
+                    }
                 }
             }
             check_keeps(mods, step)?;
@@ -409,6 +404,13 @@ impl Planner<'_> {
                         }
                     }
                     (ModKind::Speed, At::End) | (ModKind::ChangeSpeed, _) => {
+                        // A member's own change at the rate of acceleration(…): its model's.
+                        let rate = mods.iter().find(|q| q.kind == ModKind::Acceleration);
+                        if let Some(q) = rate.filter(|_| self.random_member(target)) {
+                            let names = (name("check"), name("speed"));
+                            self.member_rate((m, q), target, len, names, out)?;
+                            continue;
+                        }
                         // Beside distance(d) without a duration after a run-time start: at
                         // its rate, checked to end within d (`runtime_end`).
                         let timed = match t0 {

@@ -49,15 +49,16 @@
 
 use scenario::{
     ControllerAction, ControllerDomains, DynamicsDimension, DynamicsShape, LaneChangeTarget,
-    LateralAction, LongitudinalAction, ModelAcceleration, PrivateAction, SpeedTarget,
+    LateralAction, LongitudinalAction, ModelAcceleration, PrivateAction, RateWithin, SpeedTarget,
     SpeedTargetValueType, TransitionDynamics,
 };
 
 use super::action_args::positive;
 use super::lateral_actions::{num_of_lanes, DEFAULT_LATERAL_SPEED};
-use super::motion::check_accel;
+use super::motion::{check_accel, check_speed};
 use super::planner::Planner;
 use super::random_traffic::LANE_STEP;
+use super::runtime::speed_at_rate_check;
 use super::speed_actions::{speed_target, step_speed};
 use super::types::{Planned, When, MAX_SPEED};
 use crate::error::{Error, ErrorKind as K, Site};
@@ -566,7 +567,82 @@ impl Planner<'_> {
         name: (String, String),
         (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
     ) -> Result<(), Error> {
-        let free = match self.followed_acceleration(m, (None, 0.0))? {
+        let free = self.member_free(m)?;
+        let action =
+            |target| PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration { target });
+        out.push(Planned::with_phase(
+            target,
+            name.0,
+            action(Some(free)),
+            &m.site,
+        ));
+        after.push(Planned::with_phase(target, name.1, action(None), &m.site));
+        Ok(())
+    }
+
+    /// A member's own `acceleration(…)` `q` as the rate of its own speed change `m`
+    /// (`speed(v, at: end)` or `change_speed(v)` beside a drive or move) in a phase of its own,
+    /// which starts on a run-time condition: its driver model's rate toward v (oscsim's
+    /// `ModelAcceleration::Toward`, as `names.1`): desired speed v and a free-road term of
+    /// magnitude a (or x's acceleration ± a, as [`member_acceleration`](Self::member_acceleration)
+    /// reads it) signed toward v until the member's speed reaches v, the step that reaches it
+    /// cut to end there, then the model's own free-road term toward v (engine
+    /// controller/car_following.rs, "A rate toward a speed"); the interaction term toward its
+    /// leader still subtracted (§8.7.18.1: the model defines the behaviour within the group).
+    /// The phase's end does not end it: the model has v from then on, as after a group's
+    /// `change_speed(v)`. With a fixed rate and a phase length `len`, the engine checks as for
+    /// any actor that the change fits the phase from the member's speed then (as `names.0`).
+    /// v relative to another actor (its speed at the phase end, which the engine does not
+    /// know when the phase starts) is refused as not run yet.
+    pub(super) fn member_rate(
+        &mut self,
+        (m, q): (&Modifier, &Modifier),
+        target: &str,
+        len: Option<f64>,
+        names: (String, String),
+        out: &mut Vec<Planned>,
+    ) -> Result<(), Error> {
+        let (v1, relative) = self.speed_value(m, None)?;
+        if let Some((x, _)) = relative {
+            return Err(m.site.err(
+                K::Unsupported,
+                format!(
+                    "expected `{}(…)` on `{target}`, a member of random traffic, at the rate of `{}(…)` toward a speed of its own: not run yet toward one relative to `{x}`, whose speed at the phase end its driver model would need when the phase starts",
+                    m.name, q.name
+                ),
+            ));
+        }
+        check_speed(m, v1)?;
+        let rate = self.member_free(q)?;
+        if let (ModelAcceleration::Absolute(a), Some(l)) = (&rate, len.filter(|l| *l > 0.0)) {
+            out.push(speed_at_rate_check(
+                target,
+                (&q.name, &q.site),
+                (SpeedTarget::Absolute(v1), a.abs(), RateWithin::Time(l)),
+                names.0,
+            ));
+        }
+        let target_speed = ModelAcceleration::Toward {
+            speed: v1,
+            rate: Box::new(rate),
+        };
+        out.push(Planned::with_phase(
+            target,
+            names.1,
+            PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration {
+                target: Some(target_speed),
+            }),
+            &m.site,
+        ));
+        self.last_v.insert(target.to_string(), v1);
+        Ok(())
+    }
+
+    /// The free-road acceleration a member's own `acceleration(…)` `m` hands its model:
+    /// a, or x's acceleration ± a read at every step (at: all or end) or once (at: start,
+    /// `track: projected`).
+    fn member_free(&self, m: &Modifier) -> Result<ModelAcceleration, Error> {
+        Ok(match self.followed_acceleration(m, (None, 0.0))? {
             Some((x, delta, _)) => {
                 check_accel(m, delta)?;
                 ModelAcceleration::Relative {
@@ -580,16 +656,6 @@ impl Planner<'_> {
                 check_accel(m, a)?;
                 ModelAcceleration::Absolute(a)
             }
-        };
-        let action =
-            |target| PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration { target });
-        out.push(Planned::with_phase(
-            target,
-            name.0,
-            action(Some(free)),
-            &m.site,
-        ));
-        after.push(Planned::with_phase(target, name.1, action(None), &m.site));
-        Ok(())
+        })
     }
 }

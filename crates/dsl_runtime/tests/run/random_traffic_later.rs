@@ -354,6 +354,19 @@ fn member_speeds(name: &str, want: &[(f64, f64)]) -> Vec<crate::support::Run> {
         .collect()
 }
 
+/// The controller records of member `m`'s free-road acceleration (time to 0.01 s, note), and
+/// their times.
+fn free_road_notes(r: &crate::support::Run, m: &str) -> (Vec<(String, String)>, Vec<String>) {
+    let notes: Vec<_> = r
+        .controllers
+        .iter()
+        .filter(|(_, who, note)| who == m && note.contains("free-road acceleration"))
+        .map(|(t, _, note)| (format!("{t:.2}"), note.clone()))
+        .collect();
+    let at = notes.iter().map(|(t, _)| t.clone()).collect();
+    (notes, at)
+}
+
 #[test]
 fn a_members_own_acceleration_after_a_run_time_condition_is_its_models_free_road_acceleration() {
     // random_traffic_member_own_acceleration.osc, worked in the file (before, refused as not
@@ -382,13 +395,7 @@ fn a_members_own_acceleration_after_a_run_time_condition_is_its_models_free_road
         let ds = (r.at(5.05, m).s - r.at(3.05, m).s).abs();
         assert!((ds - 4.0).abs() < 1e-9, "seed {seed}: {ds} m");
         // The hand-offs and releases, at the phase starts and ends.
-        let notes: Vec<_> = r
-            .controllers
-            .iter()
-            .filter(|(_, who, note)| who == m && note.contains("free-road acceleration"))
-            .map(|(t, _, note)| (format!("{t:.2}"), note.clone()))
-            .collect();
-        let at: Vec<_> = notes.iter().map(|(t, _)| t.as_str()).collect();
+        let (notes, at) = free_road_notes(r, m);
         assert_eq!(
             at,
             ["3.05", "5.05", "6.05", "8.05"],
@@ -405,15 +412,78 @@ fn a_members_own_acceleration_after_a_run_time_condition_is_its_models_free_road
 }
 
 #[test]
-fn a_members_own_acceleration_as_the_rate_of_a_speed_change_is_refused_at_the_modifier() {
-    // §8.7.18.1: the member's model changes its speed at its own rate (the IDM's a and b) and
-    // is handed no rate: `speed(25mps, at: end)` with `acceleration(1mpsps)` after a run-time
-    // condition is a not-run-yet refusal at the modifier (24:17), before the run, on every seed.
-    let name = "err_random_traffic_member_own_acceleration_rate";
-    let what = "expected `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own alone beside drive() or move(): not run yet as the rate of a speed change";
-    refused_on_every_seed(name, (what, "24:17"), |e| {
-        matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported)
-    });
+fn a_members_own_acceleration_as_the_rate_of_its_speed_change_is_its_models_rate_toward_the_speed()
+{
+    // random_traffic_member_own_acceleration_rate.osc, worked in the file (before, refused as
+    // not run yet at 24:17): one member standing with v0 = 0 and no leader in its lane (the
+    // IDM's interaction term 0). speed(5.45mps, at: end) at 2 m/s² from 3.05 s: 2.70 m/s at the
+    // mid-point 4.40 s, 5.40 at 5.75, the last step cut to 1 m/s²: 5.45 at 5.80 (not 5.50),
+    // held at 7.05 (phase end) and 8.05; change_speed(2mps) at ego's 1 m/s² plus 0.6 from
+    // 8.05 s: 3.77 at 9.10, 2.01 at 10.20, cut to −0.2 m/s²: 2.00 at 10.25, held to 11.05
+    // (phase end) and 14 s (the model keeps the speed it was handed). Seeds 0-3: the member's
+    // place and direction are drawn, its speeds are not.
+    let m = "g.vehicles[0]";
+    let want = [
+        (3.05, 0.0),
+        (4.4, 2.7),
+        (5.75, 5.4),
+        (5.8, 5.45),
+        (7.05, 5.45),
+        (8.05, 5.45),
+        (9.1, 3.77),
+        (10.2, 2.01),
+        (10.25, 2.0),
+        (11.05, 2.0),
+        (14.0, 2.0),
+    ];
+    let runs = member_speeds("random_traffic_member_own_acceleration_rate", &want);
+    for (seed, r) in runs.iter().enumerate() {
+        // Distance over the change: ½·2·2.7² + ½·(5.40 + 5.45)·0.05 = 7.56125 m.
+        let ds = (r.at(5.8, m).s - r.at(3.05, m).s).abs();
+        assert!((ds - 7.56125).abs() < 1e-9, "seed {seed}: {ds} m");
+        // Never past the target in either change (the cut step), at every step.
+        for (t, objs) in &r.frames {
+            let v = objs.iter().find(|o| o.name == m).map_or(0.0, |o| o.speed);
+            let over = (*t < 8.0 && v > 5.45 + 1e-9) || (*t > 8.0 && v < 2.0 - 1e-9);
+            assert!(!over, "seed {seed} at {t}: {v} m/s");
+        }
+        // The hand-offs at the phase starts, no release at their ends.
+        let (notes, at) = free_road_notes(r, m);
+        assert_eq!(at, ["3.05", "8.05"], "seed {seed}: {notes:?}");
+        assert!(
+            notes[0]
+                .1
+                .contains("desired speed 5.45 m/s, reached at a free-road acceleration of 2 m/s²")
+                && notes[1].1.contains("desired speed 2 m/s")
+                && notes[1].1.contains("plus 0.6 m/s²"),
+            "seed {seed}: {notes:?}"
+        );
+    }
+}
+
+#[test]
+fn a_members_own_acceleration_beside_keep_speed_or_toward_a_relative_speed_is_not_run_yet() {
+    // Beside keep_speed() (no speed to change at the rate: 21:17, the modifier) and as the
+    // rate toward a speed relative to ego (its speed at the phase end unknown when the phase
+    // starts: 20:17, the speed modifier): not-run-yet refusals before the run, on every seed.
+    let keep = "expected `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own beside drive() or move(): not run yet beside keep_speed(…)";
+    let relative = "expected `speed(…)` on `g.vehicles[0]`, a member of random traffic, at the rate of `acceleration(…)` toward a speed of its own: not run yet toward one relative to `ego`";
+    for (name, what, at) in [
+        (
+            "err_random_traffic_member_own_acceleration_keep",
+            keep,
+            "21:17",
+        ),
+        (
+            "err_random_traffic_member_own_acceleration_relative",
+            relative,
+            "20:17",
+        ),
+    ] {
+        refused_on_every_seed(name, (what, at), |e| {
+            matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported)
+        });
+    }
 }
 
 #[test]

@@ -20,6 +20,19 @@
 //! and behind a leader the IDM's braking still wins where the gap asks for it. Released, the
 //! model's own free-road term is back (the `mobil` model, which drives by this IDM, weighs its
 //! lane changes with the same term).
+//!
+//! **A rate toward a speed** ([`Strategy::FreeAccelerationToward`], oscsim's
+//! `scenario::ModelAcceleration::Toward`, which the DSL runtime gives a member of random
+//! traffic for `acceleration(a)` as the rate of its own speed change, `speed(v, at: end)` or
+//! `change_speed(v)` beside a drive) makes v the desired speed and sign(v − v_now)·|a| the
+//! free-road term, the interaction term still subtracted, until the entity's speed reaches v:
+//! in the step where |v − v_now| < |a|·dt the term is (v − v_now)/dt, so that a free road's
+//! step ends at v (within the rounding of v + ((v − v_now)/dt)·dt), as a linear SpeedAction
+//! ends at its target. From the first step that starts with the speed at v (within
+//! [`REACHED`]) or past it in the change's direction, the term is released: the IDM's own
+//! a·(1 − (v/v0)^δ) with v0 = v, 0 at v, so the model holds v. Behind a leader the braking
+//! still wins, and v is reached later or not at all; a later speed or free-road acceleration
+//! handed to the model replaces the rate.
 
 use opendrive::Real;
 
@@ -78,7 +91,24 @@ pub struct IdmController {
     max_speed: Real,
     /// The free-road acceleration handed to it, if any (module doc).
     free: Option<FreeAcceleration>,
+    /// With `free`: the speed it is the rate of a change to (module doc, "A rate toward a
+    /// speed").
+    toward: Option<Toward>,
 }
+
+/// The speed a handed free-road acceleration is the rate of a change to (module doc).
+#[derive(Debug, Clone, Copy)]
+struct Toward {
+    /// The speed (m/s).
+    speed: Real,
+    /// Whether the change is up (the speed below `speed` at the first step after the hand-off;
+    /// `None` before that step).
+    up: Option<bool>,
+}
+
+/// How near its speed (m/s) a change at a handed rate counts as ended: the rounding of the
+/// step that reaches it (module doc, "A rate toward a speed").
+pub const REACHED: Real = 1e-9;
 
 impl IdmController {
     /// A controller with `params`; `desired_given` false: the desired speed is taken at
@@ -89,6 +119,7 @@ impl IdmController {
             desired_given,
             max_speed: Real::INFINITY,
             free: None,
+            toward: None,
         }
     }
 
@@ -98,7 +129,44 @@ impl IdmController {
     pub(crate) fn free_term(&self, view: &ControllerView<'_>, v: Real) -> Real {
         match &self.free {
             None => self.params.free_acceleration(v),
-            Some(f) => f.value(view),
+            Some(f) => self.handed(f, view, v),
+        }
+    }
+
+    /// The handed free-road term `f` at speed `v`: its value, or as the rate of a change to
+    /// a speed, its magnitude toward that speed, cut in the step that reaches it (module doc).
+    #[inline]
+    fn handed(&self, f: &FreeAcceleration, view: &ControllerView<'_>, v: Real) -> Real {
+        let a = f.value(view);
+        let Some(t) = self.toward else {
+            return a;
+        };
+        let (gap, dt) = (t.speed - v, view.dt());
+        if dt > 0.0 && gap.abs() < a.abs() * dt {
+            gap / dt
+        } else {
+            a.abs().copysign(gap)
+        }
+    }
+
+    /// Before a step's command: a change at a handed rate whose speed the entity has reached
+    /// (within [`REACHED`], or past it in the change's direction) gives the model its own
+    /// free-road term back (module doc, "A rate toward a speed").
+    #[inline]
+    pub(crate) fn settle(&mut self, view: &ControllerView<'_>) {
+        let Some(t) = self.toward.as_mut() else {
+            return;
+        };
+        let v = view.speed().max(0.0);
+        let up = *t.up.get_or_insert(v < t.speed);
+        let reached = if up {
+            v >= t.speed - REACHED
+        } else {
+            v <= t.speed + REACHED
+        };
+        if reached {
+            self.toward = None;
+            self.free = None;
         }
     }
 
@@ -110,7 +178,9 @@ impl IdmController {
         let leader = with_red_light(view, leader(view));
         match &self.free {
             None => self.params.acceleration(v, leader),
-            Some(f) => self.params.acceleration_with_free(f.value(view), v, leader),
+            Some(f) => self
+                .params
+                .acceleration_with_free(self.handed(f, view, v), v, leader),
         }
     }
 
@@ -127,9 +197,27 @@ impl IdmController {
         match strategy {
             Strategy::Speed(v) => {
                 self.params.desired_speed = v.max(0.0).min(self.max_speed);
+                // A speed replaces a rate toward another (module doc).
+                if self.toward.take().is_some() {
+                    self.free = None;
+                }
                 Some(format!("desired speed {} m/s", self.params.desired_speed))
             }
+            Strategy::FreeAccelerationToward { speed, rate } => {
+                self.params.desired_speed = speed.max(0.0).min(self.max_speed);
+                let v = self.params.desired_speed;
+                self.free = Some(rate);
+                self.toward = Some(Toward { speed: v, up: None });
+                let a = match rate {
+                    FreeAcceleration::Fixed(a) => format!("{} m/s²", a.abs()),
+                    FreeAcceleration::Follow { value, .. } => {
+                        format!("the magnitude of the reference's at each step plus {value} m/s²")
+                    }
+                };
+                Some(format!("desired speed {v} m/s, reached at a free-road acceleration of {a} in place of the IDM's a·(1 − (v/v0)^δ), less its interaction term toward the leader, then the IDM's own"))
+            }
             Strategy::FreeAcceleration(free) => {
+                self.toward = None;
                 let note = match (free, self.free) {
                     (Some(FreeAcceleration::Fixed(a)), _) => format!("free-road acceleration {a} m/s² in place of the IDM's a·(1 − (v/v0)^δ), less its interaction term toward the leader"),
                     (Some(FreeAcceleration::Follow { value, .. }), _) => format!("free-road acceleration: the reference's at each step plus {value} m/s² in place of the IDM's a·(1 − (v/v0)^δ), less its interaction term toward the leader"),
@@ -158,6 +246,7 @@ impl Controller for IdmController {
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
+        self.settle(view);
         Command::acceleration(self.acceleration(view))
     }
 }

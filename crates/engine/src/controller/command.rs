@@ -94,6 +94,16 @@ pub enum Strategy {
     /// what replaces the driver model's free-road term, the interaction term toward its
     /// leader still subtracted, until released (`None`: the model's own term again).
     FreeAcceleration(Option<FreeAcceleration>),
+    /// oscsim's rate of a change to a speed (`scenario::ModelAcceleration::Toward`): `speed`
+    /// the model's desired speed, and `rate`'s value in magnitude, signed toward `speed`, its
+    /// free-road term (the step that reaches `speed` cut to end there) until the entity's
+    /// speed reaches `speed`; then the model's own free-road term.
+    FreeAccelerationToward {
+        /// The speed the change ends at (m/s).
+        speed: Real,
+        /// Its rate (m/s², taken in magnitude).
+        rate: FreeAcceleration,
+    },
 }
 
 /// The free-road acceleration a driver model is handed ([`Strategy::FreeAcceleration`]).

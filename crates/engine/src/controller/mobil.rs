@@ -415,6 +415,7 @@ impl IdmDriver {
     /// parameters).
     #[inline]
     pub fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
+        self.idm.settle(view);
         match self.mandatory.as_deref_mut() {
             None => (self.idm.acceleration(view), None),
             Some(m) => Self::with_mandatory(&self.idm, m, view),
@@ -676,6 +677,7 @@ impl MobilController {
     /// controller/drivers.rs, takes them so): the acceleration and the lane to change to, if
     /// any. [`Controller::step`] is this as a [`Command`].
     pub(crate) fn command(&mut self, view: &ControllerView<'_>) -> (Real, Option<i32>) {
+        self.idm.settle(view);
         let mut own = Own::new(&self.idm, view);
         // A lane change decided with a pending lane and no mandatory one is the
         // LaneChangeAction's (may_decide takes the pending lane before any judgement).

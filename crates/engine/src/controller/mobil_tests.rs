@@ -760,3 +760,70 @@ fn a_mandatory_lane_across_a_road_end_follows_the_target_lanes_links() {
         assert_eq!(command_at(&mut c, &net, ("2", -4, 60.0), 15.0), None, "{k}");
     }
 }
+
+/// A rate toward a speed handed to a driver model (car_following.rs module doc, "A rate toward
+/// a speed"): on the 40 crowded highways, for every car at speed v, the `idm` and the `mobil`
+/// handed a rate of −1.5 m/s² toward v + 10 m/s command +1.5 less the IDM's interaction term
+/// toward the leader bit for bit (the magnitude, signed toward the speed; braking still wins),
+/// and toward v + 0.01 m/s in a step of 0.05 s the cut term 0.01/0.05 = 0.2 m/s² less it
+/// (within 1e-12: the cut's rounding). Toward v itself the first step releases it: the same
+/// bits and lane decisions as a model never handed one.
+#[test]
+fn a_rate_toward_a_speed_is_its_magnitude_toward_it_cut_at_it_and_released_there() {
+    let mut cars = 0;
+    for_each_view(|seed, _, _, e, view| {
+        let at = format!("seed {seed} {}", e.name);
+        let p = IdmParameters::default();
+        let v = view.speed().max(0.0);
+        let leader = with_red_light(view, crate::controller::car_following::leader(view));
+        let less = |a: Real| match leader {
+            None => a,
+            Some(l) => a - p.interaction(v, l),
+        };
+        let toward = |speed: Real| Strategy::FreeAccelerationToward {
+            speed,
+            rate: FreeAcceleration::Fixed(-1.5),
+        };
+        let fresh_idm = || IdmDriver::new(IdmController::new(p, true));
+        let fresh_mobil = || MobilController::new(p, true, MobilParameters::default());
+        // Far from it: the rate's magnitude toward the speed.
+        let (mut idm, mut mobil) = (fresh_idm(), fresh_mobil());
+        idm.strategy(toward(v + 10.0));
+        mobil.strategy(toward(v + 10.0));
+        let (ia, ma) = (idm.command(view).0, mobil.command(view).0);
+        let want = less(1.5);
+        assert!(
+            ia.to_bits() == want.to_bits() && ma.to_bits() == want.to_bits(),
+            "{at}: idm {ia}, mobil {ma}, want {want}"
+        );
+        // Within a step of it: cut so that the step ends there.
+        let stepping = view.stepping(0.05);
+        let (mut idm, mut mobil) = (fresh_idm(), fresh_mobil());
+        idm.strategy(toward(v + 0.01));
+        mobil.strategy(toward(v + 0.01));
+        let (ia, ma) = (idm.command(&stepping).0, mobil.command(&stepping).0);
+        let want = less(0.2);
+        assert!(
+            (ia - want).abs() < 1e-12 && (ma - want).abs() < 1e-12,
+            "{at}: idm {ia}, mobil {ma}, want {want}"
+        );
+        // At it: released before the step, the model's own term.
+        let (mut idm, mut mobil) = (fresh_idm(), fresh_mobil());
+        idm.strategy(toward(v));
+        mobil.strategy(toward(v));
+        let (ia, il) = idm.command(&stepping);
+        let (ma, ml) = mobil.command(&stepping);
+        let mut own_idm = fresh_idm();
+        own_idm.strategy(Strategy::Speed(v));
+        let mut own_mobil = fresh_mobil();
+        own_mobil.strategy(Strategy::Speed(v));
+        let (fa, fl) = own_idm.command(&stepping);
+        let (ga, gl) = own_mobil.command(&stepping);
+        assert!(
+            ia.to_bits() == fa.to_bits() && il == fl && ma.to_bits() == ga.to_bits() && ml == gl,
+            "{at}: idm {ia} {fa}, mobil {ma} {ga}"
+        );
+        cars += 1;
+    });
+    assert_eq!(cars, 2400);
+}

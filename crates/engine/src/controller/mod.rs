@@ -42,7 +42,10 @@
 //! - `idm`, `mobil`: oscsim's free-road acceleration
 //!   (`scenario::LongitudinalAction::ModelAcceleration`, no XML form) takes the place of the
 //!   IDM's free-road term, its interaction term toward the leader kept, until released (module
-//!   `car_following`);
+//!   `car_following`); as the rate toward a speed (`scenario::ModelAcceleration::Toward`), that
+//!   speed is the desired speed and the rate's magnitude toward it the free-road term until
+//!   the speed is reached, then the model's own term (module `car_following`, "A rate toward a
+//!   speed");
 //! - every other motion action, and every one given to `external`, is not taken (the log says
 //!   "ignored").
 //!

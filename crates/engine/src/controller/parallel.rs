@@ -53,6 +53,8 @@ pub(crate) struct ParallelCommands {
 pub(crate) struct StepWorld<'a> {
     /// Simulation time at the step's start (s).
     pub time: Real,
+    /// The step's length (s).
+    pub dt: Real,
     /// Every entity.
     pub entities: &'a [Entity],
     /// The road network.
@@ -69,16 +71,19 @@ impl<'a> StepWorld<'a> {
     pub fn view(&self, i: usize) -> Option<ControllerView<'a>> {
         let e = self.entities.get(i)?;
         let input = self.index.input(i).filter(|r| r.placed)?;
-        Some(ControllerView::new(
-            self.time,
-            e,
-            input,
-            self.entities,
-            self.network,
-            self.index,
-            None,
-            self.signals,
-        ))
+        Some(
+            ControllerView::new(
+                self.time,
+                e,
+                input,
+                self.entities,
+                self.network,
+                self.index,
+                None,
+                self.signals,
+            )
+            .stepping(self.dt),
+        )
     }
 }
 
@@ -167,6 +172,7 @@ mod tests {
             let index = LaneIndex::build(&w.network, w.entities());
             let at_start = StepWorld {
                 time: 10.0,
+                dt: 0.05,
                 entities: w.entities(),
                 network: &w.network,
                 index: &index,

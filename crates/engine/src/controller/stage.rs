@@ -66,6 +66,7 @@ pub(crate) fn step(
         let (entities, network, signals) = (world.entities(), &world.network, &world.signals);
         let at_start = StepWorld {
             time,
+            dt,
             entities,
             network,
             index,
@@ -103,7 +104,8 @@ pub(crate) fn step(
                         } else {
                             let view = ControllerView::new(
                                 time, e, input, entities, network, index, None, signals,
-                            );
+                            )
+                            .stepping(dt);
                             drivers[k].command(&view)
                         };
                         if held.longitudinal {
@@ -133,7 +135,8 @@ pub(crate) fn step(
                         };
                         let view = ControllerView::new(
                             time, e, input, entities, network, index, external, signals,
-                        );
+                        )
+                        .stepping(dt);
                         instance.step(&view, dt)
                     }
                 };

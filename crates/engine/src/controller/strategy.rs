@@ -88,10 +88,16 @@ fn strategy(
             entries.last().map(|e| Strategy::Speed(base + e.speed))
         }
         PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration { target }) => {
-            Some(Strategy::FreeAcceleration(match target {
-                Some(t) => Some(free_acceleration(world, t, origin)?),
-                None => None,
-            }))
+            Some(match target {
+                Some(ModelAcceleration::Toward { speed, rate }) => {
+                    Strategy::FreeAccelerationToward {
+                        speed: *speed,
+                        rate: free_acceleration(world, rate, origin)?,
+                    }
+                }
+                Some(t) => Strategy::FreeAcceleration(Some(free_acceleration(world, t, origin)?)),
+                None => Strategy::FreeAcceleration(None),
+            })
         }
         PrivateAction::Lateral(LateralAction::LaneChange { target, .. }) => {
             Some(Strategy::Lane(target_lane(world, target, origin.pos)?))
@@ -141,6 +147,7 @@ fn free_acceleration(
                 ),
             }
         }
+        // A rate toward a speed as the rate of another (the DSL runtime writes none), and
         // `ModelAcceleration` is non-exhaustive: a target this engine does not know.
         _ => return Err(Error::unsupported("this ModelAcceleration", origin.pos)),
     })

@@ -96,6 +96,8 @@ pub struct ControllerView<'a> {
     /// ([`lane_handle`](Self::lane_handle) of the track's lane): a `mobil` step asks for it up
     /// to five times (its leader, follower, both lanes beside).
     input: &'a DriverInput,
+    /// The step's length (s); 0 where the view is not of a step ([`dt`](Self::dt)).
+    dt: Real,
 }
 
 impl<'a> ControllerView<'a> {
@@ -123,7 +125,22 @@ impl<'a> ControllerView<'a> {
             external,
             signals,
             input,
+            dt: 0.0,
         }
+    }
+
+    /// The view of a step of `dt` s (the controllers stage's).
+    #[inline]
+    pub(crate) fn stepping(mut self, dt: Real) -> Self {
+        self.dt = dt;
+        self
+    }
+
+    /// The length of the step the view is of (s): the controllers stage's; 0 where the view
+    /// is not of a step (at an activation, in a test), where a driver model cuts no step's
+    /// free-road term to end at a speed (car_following.rs, "A rate toward a speed").
+    pub fn dt(&self) -> Real {
+        self.dt
     }
 
     /// With run option `stop_at_red_lights` on: the distance (m) from the entity's front

@@ -156,9 +156,18 @@ fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
             LongitudinalAction::RelativeAcceleration { entity_ref, .. } => {
                 Some((entity_ref, "a RelativeAccelerationAction"))
             }
-            LongitudinalAction::ModelAcceleration {
-                target: Some(scenario::ModelAcceleration::Relative { entity_ref, .. }),
-            } => Some((entity_ref, "a driver model's free-road acceleration")),
+            LongitudinalAction::ModelAcceleration { target: Some(t) } => match t {
+                scenario::ModelAcceleration::Relative { entity_ref, .. } => {
+                    Some((entity_ref, "a driver model's free-road acceleration"))
+                }
+                scenario::ModelAcceleration::Toward { rate, .. } => match &**rate {
+                    scenario::ModelAcceleration::Relative { entity_ref, .. } => {
+                        Some((entity_ref, "a driver model's free-road acceleration"))
+                    }
+                    _ => None,
+                },
+                _ => None,
+            },
             LongitudinalAction::SpeedProfile {
                 entity_ref: Some(entity_ref),
                 ..

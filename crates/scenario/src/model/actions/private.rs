@@ -459,6 +459,17 @@ pub enum ModelAcceleration {
         /// Read at every step (else once, when the action starts).
         continuous: bool,
     },
+    /// The rate of a change to `speed` (m/s): the model's desired speed becomes `speed`, and
+    /// its free-road term is `rate`'s value (an `Absolute` or `Relative` one) in magnitude,
+    /// signed toward `speed`, the last step's term cut so that the step ends at `speed`, until
+    /// the entity's speed reaches `speed`; from then the model's own free-road term (toward
+    /// `speed`, its desired speed). A later speed or free-road acceleration replaces it.
+    Toward {
+        /// The speed the change ends at (m/s).
+        speed: f64,
+        /// Its rate (m/s²; the sign is the change's).
+        rate: Box<ModelAcceleration>,
+    },
 }
 
 /// The speed change a RelativeAccelerationAction's acceleration is the rate of
