@@ -174,29 +174,34 @@ impl Planner<'_> {
                     ),
                 ));
             }
+            check_keeps(mods, step)?;
             // A member's own acceleration (plain, or relative to an actor outside its group;
             // relative to another member it is bad input, `random_traffic_relations`) after a
-            // run-time condition beside a drive or move is its model's free-road acceleration
-            // over the phase (`member_acceleration`, below), or as the rate of its speed
-            // change (`change_speed(v)`, `speed(v, at: end)`) its model's rate toward v
-            // (`member_rate`, below). Beside an action that controls the speed it is every
-            // actor's bad input (`check_speed_modifiers`); beside another action (keep_speed,
-            // remain_stationary, a lane or position action) not run yet (issue 27).
+            // run-time condition beside a drive, a move or its own lane action (follow_lane,
+            // change_lane: the model's kept or mandatory lane) is its model's free-road
+            // acceleration over the phase (`member_acceleration`, below), or as the rate of its
+            // speed change (`change_speed(v)`, `speed(v, at: end)`) its model's rate toward v
+            // (`member_rate`, below). Beside keep_speed or remain_stationary it is every actor's
+            // bad input (`check_keeps`, above), beside an action that controls the speed too
+            // (`check_speed_modifiers`); beside another action (a position, path or orientation
+            // action) not run yet (issue 27).
             if self.random_member(target) {
                 if let Some(m) = mods.iter().find(|m| m.kind == ModKind::Acceleration) {
                     check_speed_modifiers(inv, first)?;
-                    if inv.kind != Action::Move {
+                    if !matches!(
+                        inv.kind,
+                        Action::Move | Action::ChangeLane | Action::FollowLane
+                    ) {
                         return Err(m.site.err(
                             K::Unsupported,
                             format!(
-                                "expected `{}(…)` on `{target}`, a member of random traffic, in a phase of its own beside drive() or move(): not run yet beside {}(…), which hands its driver model no speed to change at that rate (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\")",
+                                "expected `{}(…)` on `{target}`, a member of random traffic, in a phase of its own beside drive(), move(), follow_lane() or change_lane(…): not run yet beside {}(…), which hands its driver model no speed to change at that rate (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\")",
                                 m.name, inv.action
                             ),
                         ));
                     }
                 }
             }
-            check_keeps(mods, step)?;
             let e = self.index[target.as_str()];
             // The yaw relative to the road's s-axis of an actor along its lane (§8.9.9).
             let along = if self.entities[e].against { PI } else { 0.0 };

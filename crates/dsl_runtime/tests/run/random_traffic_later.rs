@@ -462,17 +462,43 @@ fn a_members_own_acceleration_as_the_rate_of_its_speed_change_is_its_models_rate
 }
 
 #[test]
-fn a_members_own_acceleration_beside_keep_speed_or_toward_a_relative_speed_is_not_run_yet() {
-    // Beside keep_speed() (no speed to change at the rate: 21:17, the modifier) and as the
-    // rate toward a speed relative to ego (its speed at the phase end unknown when the phase
-    // starts: 20:17, the speed modifier): not-run-yet refusals before the run, on every seed.
-    let keep = "expected `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own beside drive() or move(): not run yet beside keep_speed(…)";
+fn a_members_own_acceleration_beside_keep_speed_or_remain_stationary_is_bad_input_as_for_any_actor()
+{
+    // Before, refused as not run yet. Now the check every actor's phase gets (plan/checks.rs
+    // check_keeps), run before the member's refusal: the same kind and message as for an
+    // ordinary vehicle, at the acceleration modifier (21:17), naming the action (20:13), on
+    // every seed.
+    for (name, what) in [
+        (
+            "err_random_traffic_member_own_acceleration_keep",
+            "expected no speed change beside keep_speed() at ",
+        ),
+        (
+            "err_random_traffic_member_own_acceleration_stationary",
+            "expected no movement beside remain_stationary() at ",
+        ),
+    ] {
+        let action = format!("{name}.osc:20:13, found `acceleration(…)` at ");
+        refused_on_every_seed(name, (what, "21:17"), |e| {
+            matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
+                && e.to_string().contains(&action)
+        });
+    }
+}
+
+#[test]
+fn a_members_own_acceleration_beside_a_position_action_or_toward_a_relative_speed_is_not_run_yet() {
+    // Beside assign_position(…) (no speed to change at the rate: 22:17, the modifier) and as
+    // the rate toward a speed relative to ego (its speed at the phase end unknown when the
+    // phase starts: 20:17, the speed modifier): not-run-yet refusals before the run, on every
+    // seed.
+    let position = "expected `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own beside drive(), move(), follow_lane() or change_lane(…): not run yet beside assign_position(…)";
     let relative = "expected `speed(…)` on `g.vehicles[0]`, a member of random traffic, at the rate of `acceleration(…)` toward a speed of its own: not run yet toward one relative to `ego`";
     for (name, what, at) in [
         (
-            "err_random_traffic_member_own_acceleration_keep",
-            keep,
-            "21:17",
+            "err_random_traffic_member_own_acceleration_position",
+            position,
+            "22:17",
         ),
         (
             "err_random_traffic_member_own_acceleration_relative",
@@ -483,6 +509,52 @@ fn a_members_own_acceleration_beside_keep_speed_or_toward_a_relative_speed_is_no
         refused_on_every_seed(name, (what, at), |e| {
             matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported)
         });
+    }
+}
+
+#[test]
+fn a_members_own_acceleration_beside_its_own_lane_action_is_its_models_free_road_acceleration() {
+    // random_traffic_member_own_acceleration_lane.osc, worked in the file (before, refused as
+    // not run yet at the modifier): one member standing with v0 = 0 and no leader in its lane
+    // before or after its change (the IDM's interaction term 0). follow_lane() with 2 m/s²
+    // over 3.05-5.05 s: 2.00 m/s at 4.05, 4.00 at 5.05, 4 m along its lane; its own term
+    // (−b = −1.67 m/s²) to 6.05 s: 2.33; change_lane(1, right) with 1 m/s² over 6.05-8.05 s:
+    // 3.33 at 7.05, 4.33 at 8.05, in the lane to the right of its own; released, −1.67 m/s²:
+    // 4.33 − 1.67·1.95 = 1.0735 at 10 s. Seeds 0-3: the member's place and direction are
+    // drawn, its speeds are not.
+    let m = "g.vehicles[0]";
+    let want = [
+        (3.05, 0.0),
+        (4.05, 2.0),
+        (5.05, 4.0),
+        (6.05, 2.33),
+        (7.05, 3.33),
+        (8.05, 4.33),
+        (10.0, 1.0735),
+    ];
+    let runs = member_speeds("random_traffic_member_own_acceleration_lane", &want);
+    for (seed, r) in runs.iter().enumerate() {
+        // follow_lane(): ½·2·2² = 4 m along the lane it keeps.
+        let (a, b) = (r.at(3.05, m), r.at(5.05, m));
+        assert!(((b.s - a.s).abs() - 4.0).abs() < 1e-9, "seed {seed}");
+        assert_eq!(a.lane, b.lane, "seed {seed}");
+        // change_lane(1, right): lane(2) of its direction is −2 in +s, 1 against s; the lane
+        // to its right −3 or 2, reached by 8.05 s and kept.
+        let to = match a.lane {
+            -2 => -3,
+            1 => 2,
+            l => panic!("seed {seed}: lane {l}"),
+        };
+        for t in [8.05, 10.0] {
+            assert_eq!(r.at(t, m).lane, to, "seed {seed} at {t}");
+        }
+        // The hand-offs and releases at the phase starts and ends.
+        let (notes, at) = free_road_notes(r, m);
+        assert_eq!(
+            at,
+            ["3.05", "5.05", "6.05", "8.05"],
+            "seed {seed}: {notes:?}"
+        );
     }
 }
 
