@@ -73,7 +73,7 @@ fn road_network(data: &[u8]) {
                 }
                 if let Some(h) = net.lane_handle(&road.id, lane.id, s) {
                     let _ = net.driving_direction(h);
-                    for next in net.successors(h).into_iter().chain(net.predecessors(h)) {
+                    for &next in net.successors(h).iter().chain(net.predecessors(h)) {
                         let _ = net.handle_road(next);
                     }
                 }
