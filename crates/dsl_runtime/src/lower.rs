@@ -48,7 +48,7 @@ pub(crate) fn lower(plan: &Plan, name: &str, file: &Path, road: &Path) -> Scenar
     let mut privates = Vec::new();
     let mut objects = Vec::new();
     for e in &plan.entities {
-        let lane = e.track.lane(0.0);
+        let lane = e.track.start_lane();
         let (s, v) = e.track.at(0.0);
         // Against s the track's s is the distance u = L − s along the direction of travel,
         // its offset to the left of that direction (`crate::road`); the LanePosition's are

@@ -2,8 +2,16 @@
 //! change (linear or constant-jerk, sinusoidal, or a step), the speed holding between them;
 //! its integral (the distance along its lane), and the lane and offset it is in. The planner
 //! extends it as it plans each phase; after the last change the speed holds.
+//!
+//! A lane is stored with the id it has where it was planned; a lane section further on may
+//! number the same lane differently (ASAM OpenDRIVE 1.8 §11.5 lane linkage, `<link><successor
+//! id=…>`). So the stored ids stay private here: the lane at a time, and the s the distance
+//! along it reaches, are read on a plan road ([`Track::lane_on`], [`Track::s_on`]), which
+//! follows the lane's links (`PlanRoad::lane_along`) as the engine does.
 
 use std::f64::consts::PI;
+
+use crate::road::PlanRoad;
 
 /// How the speed changes over a stretch.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -70,7 +78,8 @@ pub(crate) struct Track {
     stretches: Vec<Stretch>,
     /// (time, distance added): jumps of a teleport.
     jumps: Vec<(f64, f64)>,
-    /// (time from which, lane id).
+    /// (time from which, lane id as numbered where the actor is at that time): private, read
+    /// through [`Track::lane_on`], which follows the lane's links from there.
     lanes: Vec<(f64, i32)>,
     /// (time from which, offset from the lane centre, m).
     offsets: Vec<(f64, f64)>,
@@ -326,20 +335,55 @@ impl Track {
             && self.lanes.len() == 1
     }
 
-    /// The lane at time `t`, as its id was where it was planned (the planner's
-    /// `lane_now` follows it across lane sections that renumber it).
-    pub(crate) fn lane(&self, t: f64) -> i32 {
-        self.lane_since(t).1
-    }
-
-    /// The lane planned for time `t` and the time from which it was planned.
-    pub(crate) fn lane_since(&self, t: f64) -> (f64, i32) {
+    /// The lane planned for time `t`, with the id it has where it was planned, and the time
+    /// from which it was planned (private: a lane section between may renumber it).
+    fn planned_lane(&self, t: f64) -> (f64, i32) {
         self.lanes
             .iter()
             .rev()
             .find(|(from, _)| *from <= t)
             .copied()
             .unwrap_or(self.lanes[0])
+    }
+
+    /// The lane at time 0, where the actor starts (its id there: nothing to follow yet).
+    pub(crate) fn start_lane(&self) -> i32 {
+        self.planned_lane(0.0).1
+    }
+
+    /// s on `road` (the plan road, or the view the actor is planned on) at time `t`: the
+    /// track's distance from its start, along the centre line of its lane at time 0 followed
+    /// across the lane sections that renumber it (`PlanRoad::s_after`).
+    pub(crate) fn s_on(&self, road: &PlanRoad<'_>, t: f64) -> f64 {
+        let s0 = self.at(0.0).0;
+        road.s_after(self.start_lane(), s0, self.at(t).0 - s0)
+    }
+
+    /// The lane the actor is in at time `t` on `road`: the lane planned for `t`, followed from
+    /// where it was planned along its links into the lane sections after it
+    /// (`PlanRoad::lane_along`; the engine follows them too, ASAM OpenDRIVE 1.8 §11.5).
+    pub(crate) fn lane_on(&self, road: &PlanRoad<'_>, t: f64) -> i32 {
+        self.followed(road, self.planned_lane(t), t)
+    }
+
+    /// The lane planned last (for the time after the last one the plan knows, when a phase
+    /// starts at run time), followed to where the actor is at time `t` on `road`.
+    pub(crate) fn last_lane_on(&self, road: &PlanRoad<'_>, t: f64) -> i32 {
+        self.followed(road, self.planned_lane(f64::MAX), t)
+    }
+
+    /// Whether a lane change is planned between times `a` < `b`: the lane at `b` is not the
+    /// lane at `a` followed along its links to where the actor is at `b` (the ids alone
+    /// differ where a lane section renumbers the lane the actor keeps).
+    pub(crate) fn changes_lane(&self, road: &PlanRoad<'_>, a: f64, b: f64) -> bool {
+        let (from, lane) = self.planned_lane(b);
+        from > a
+            && self.followed(road, self.planned_lane(a), b) != self.followed(road, (from, lane), b)
+    }
+
+    /// Lane `lane`, planned from time `from`, followed to where the actor is at `t`.
+    fn followed(&self, road: &PlanRoad<'_>, (from, lane): (f64, i32), t: f64) -> i32 {
+        road.lane_along(lane, self.s_on(road, from), self.s_on(road, t))
     }
 
     /// From time `t` on, the actor is in `lane`, at its centre (a lane change ends there).
@@ -444,8 +488,8 @@ mod tests {
         // 10 m in the first second, then standing.
         assert!((t.at(3.0).0 - 10.0).abs() < TOL);
         t.set_lane(2.0, -1);
-        assert_eq!(t.lane(1.9), -2);
-        assert_eq!(t.lane(2.0), -1);
+        assert_eq!(t.planned_lane(1.9), (0.0, -2));
+        assert_eq!(t.planned_lane(2.0), (2.0, -1));
     }
 
     #[test]

@@ -338,7 +338,7 @@ pub(crate) fn turn_stationary(entities: &mut [Entity], length: f64) -> Vec<(usiz
         }
         // A stationary object's track is its place from the start (nothing moves it).
         let (s, _) = e.track.at(0.0);
-        let mut turned = Track::new(length - s, 0.0, e.track.lane(0.0));
+        let mut turned = Track::new(length - s, 0.0, e.track.start_lane());
         turned.set_offset(0.0, -e.track.offset(0.0));
         kept.push((i, std::mem::replace(&mut e.track, turned)));
     }

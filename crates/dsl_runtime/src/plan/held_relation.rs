@@ -314,8 +314,7 @@ impl Planner<'_> {
         let mut moves = self.track(x).moves_in(t0, te);
         moves.sort_by(|a, b| a.0.total_cmp(&b.0));
         for (m0, m1) in moves {
-            let tr = self.track(x);
-            if m0 < t0 || m1 > te + 1e-9 || tr.lane(m0) == tr.lane(m1) {
+            if m0 < t0 || m1 > te + 1e-9 || !self.changes_lane(x, m0, m1) {
                 // Not wholly in the phase, or no lane change: the check's (an error).
                 continue;
             }
@@ -454,8 +453,9 @@ impl Planner<'_> {
         };
         let s_x = match m.projected {
             true => {
-                let (tr, s0) = (self.track(&x), self.s_at(&x, t0));
-                self.road.s_after(tr.lane(t0), s0, tr.at(t0).1 * (t - t0))
+                let (lane, s0) = (self.lane_now(&x, t0), self.s_at(&x, t0));
+                let v = self.track(&x).at(t0).1;
+                self.road.s_after(lane, s0, v * (t - t0))
             }
             false => self.s_at(&x, t),
         };

@@ -977,11 +977,10 @@ impl Planner<'_> {
                             }
                             continue;
                         }
-                        let tr = self.track(target);
-                        let lane = tr.lane(t);
+                        let lane = self.lane_now(target, t);
                         let w = self.road.lane_width(lane, self.s_at(target, t));
                         let want = lateral::lane_offset(m, w, self.width(target))?;
-                        let got = tr.offset(t);
+                        let got = self.track(target).offset(t);
                         if (got - want).abs() > LATERAL_TOLERANCE {
                             return Err(m.site.err(
                                 K::Unsatisfiable,
@@ -1019,10 +1018,11 @@ impl Planner<'_> {
                             out.push(self.start_offset_change(m, target, lane, name("lateral"))?);
                             continue;
                         };
-                        let tr = self.track(target);
-                        let lane = tr.lane(t);
-                        let o0 = tr.offset(t);
-                        let w = self.road.lane_width(lane, self.s_at(target, t + len));
+                        // Its lane at the start, followed to where the phase ends.
+                        let lane = self.lane_now(target, t);
+                        let o0 = self.track(target).offset(t);
+                        let (s0, s1) = (self.s_at(target, t), self.s_at(target, t + len));
+                        let w = self.road.lane_width(self.road.lane_along(lane, s0, s1), s1);
                         let o1 = lateral::lane_offset(m, w, self.width(target))?;
                         // A sinusoidal change of Δ has its peak lateral acceleration
                         // π²Δ/(2T²): given as the action's maximum, the engine's change lasts T.
@@ -1068,8 +1068,7 @@ impl Planner<'_> {
                 self.plan_route_moves(along, mods, target, (known, te), &mut name, out)?;
             }
             let mut shared = std::mem::take(&mut self.route_lanes);
-            let track = self.track(target).clone();
-            let lane = |t: f64| track.lane(t);
+            let lane = |t: f64| self.lane_now(target, t);
             let s = |t: f64| self.s_at(target, t);
             let on = OnRoute {
                 actor: target,

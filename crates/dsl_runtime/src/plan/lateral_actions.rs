@@ -61,8 +61,8 @@ impl Planner<'_> {
         let s = self.s_at(target, t);
         let tr = self.track(target);
         let (lane0, o0) = match t0 {
-            Some(t) => (tr.lane(t), tr.offset(t)),
-            None => (tr.lane(f64::MAX), tr.offset(f64::MAX)),
+            Some(t) => (self.lane_now(target, t), tr.offset(t)),
+            None => (self.lane_last(target), tr.offset(f64::MAX)),
         };
         let planned = |name: String, action| Planned::with_phase(target, name, action, &p.site);
         match inv.kind {

@@ -182,8 +182,9 @@ impl Planner<'_> {
                 )
             })?;
             let offset = t - self.road.lane_center(lane, s);
+            let changes = self.lane_now(target, m1) != lane;
             let tr = self.track_mut(target);
-            if tr.lane(m1) != lane {
+            if changes {
                 tr.set_lane(m1, lane);
             }
             tr.set_offset(m1, offset);

@@ -451,8 +451,8 @@ impl Planner<'_> {
                 }
                 // The engine reads a RelativeTargetLane at the action's start: where x changes
                 // lanes within the phase (track: actual), the lane the plan has at the end is
-                // an absolute target.
-                if let (Some(l), true) = (lane, self.lane_now(&x, t) != lx) {
+                // an absolute target (a lane section that renumbers x's lane is no change).
+                if let (Some(l), true) = (lane, self.changes_lane(&x, t, tx)) {
                     return Ok((LaneChangeTarget::Absolute(l.to_string()), lane));
                 }
                 return Ok((

@@ -223,22 +223,32 @@ impl Planner<'_> {
 
     /// [`s_at`](Self::s_at) on `road` (the plan road, or the view `name` is planned on).
     pub(crate) fn s_on(&self, road: &PlanRoad<'_>, name: &str, t: f64) -> f64 {
-        let tr = self.track(name);
-        let s0 = tr.at(0.0).0;
-        road.s_after(tr.lane(0.0), s0, tr.at(t).0 - s0)
+        self.track(name).s_on(road, t)
     }
 
     /// The lane `name` is in at time `t`: the lane planned for `t`, followed from where it was
-    /// planned along its links into the lane sections after it (`PlanRoad::lane_along`; the
-    /// engine follows them too, ASAM OpenDRIVE 1.8 §9.4).
+    /// planned along its links into the lane sections after it (`Track::lane_on`; the engine
+    /// follows them too, ASAM OpenDRIVE 1.8 §11.5 lane linkage). Every lane a phase reads of
+    /// an actor is this one (a track's stored ids are private to it).
     pub(crate) fn lane_now(&self, name: &str, t: f64) -> i32 {
         self.lane_on(&self.road, name, t)
     }
 
     /// [`lane_now`](Self::lane_now) on `road` (the plan road, or the view `name` is planned on).
     pub(crate) fn lane_on(&self, road: &PlanRoad<'_>, name: &str, t: f64) -> i32 {
-        let (from, lane) = self.track(name).lane_since(t);
-        road.lane_along(lane, self.s_on(road, name, from), self.s_on(road, name, t))
+        self.track(name).lane_on(road, t)
+    }
+
+    /// The lane `name` was planned in last, followed to where the plan last knows it (a phase
+    /// that starts on a run-time condition starts from there).
+    pub(crate) fn lane_last(&self, name: &str) -> i32 {
+        self.track(name).last_lane_on(&self.road, self.last_known())
+    }
+
+    /// Whether `name` changes lanes between times `a` < `b` (`Track::changes_lane`: the lane
+    /// at `a` followed along its links to `b` is not the lane there).
+    pub(crate) fn changes_lane(&self, name: &str, a: f64, b: f64) -> bool {
+        self.track(name).changes_lane(&self.road, a, b)
     }
 
     /// The overhangs of `actor`'s and `other`'s bounding boxes towards each other (m): the

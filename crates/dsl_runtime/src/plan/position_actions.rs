@@ -121,7 +121,10 @@ impl Planner<'_> {
             // place of that step's motion (as a 1.x TeleportAction).
             let dt = self.settings.dt;
             let ahead = self.s_at(target, t + dt);
+            // The track's distance runs along its lane at time 0 (`Track::s_on`), followed
+            // along its links to `ahead`: the jump is measured on from there.
             let lane0 = self.lane_now(target, 0.0);
+            let lane0 = self.road.lane_along(lane0, self.s_at(target, 0.0), ahead);
             let d = self.road.lane_distance(lane0, ahead, s);
             let tr = self.track_mut(target);
             tr.jump(t, d);
@@ -271,7 +274,7 @@ impl Planner<'_> {
             return Ok(Some(self.ends(None, 0.0, &n, p)));
         };
         let tr = self.track(target);
-        let (lane0, v) = (tr.lane(t), tr.at(t).1);
+        let (lane0, v) = (self.lane_now(target, t), tr.at(t).1);
         let s0 = self.s_at(target, t);
         let start = road.world_pose(s0, road.lane_center(lane0, s0) + tr.offset(t));
         let end = road.world_pose(s1, road.lane_center(lane, s1) + offset);
@@ -383,7 +386,7 @@ impl Planner<'_> {
     ) -> Result<Option<When>, Error> {
         let road = &self.road;
         let tr = self.track(target);
-        let (lane0, o0, v) = (tr.lane(t), tr.offset(t), tr.at(t).1);
+        let (lane0, o0, v) = (self.lane_now(target, t), tr.offset(t), tr.at(t).1);
         let s0 = self.s_at(target, t);
         if s1 <= s0 {
             return Err(p.site.err(
@@ -398,6 +401,9 @@ impl Planner<'_> {
             ));
         }
         let distance = road.lane_distance(lane0, s0, s1);
+        // Its lane at s1: the one it is in followed along its links (a lane section between
+        // may renumber it).
+        let lane0 = road.lane_along(lane0, s0, s1);
         let delta = road.lane_center(lane, s1) + offset - (road.lane_center(lane0, s1) + o0);
         // The engine moves the actor at v along its path, so along the road at
         // √(v² − ẏ²) while the sinusoid ẏ = (πΔ/2T)·sin(πt/T) moves it sideways: T solves

@@ -117,8 +117,7 @@ impl Planner<'_> {
             if moved {
                 return None;
             }
-            let tr = self.track(&e.name);
-            let (lane, v) = (tr.lane(t), tr.at(t).1);
+            let (lane, v) = (self.lane_now(&e.name, t), self.track(&e.name).at(t).1);
             others.push(self.other(&e.name, e.against, lane, self.s_at(&e.name, t), v));
         }
         Some(others)

@@ -198,7 +198,7 @@ impl Planner<'_> {
                 let t = slot.t0.unwrap_or_else(|| self.last_known());
                 let lane = match slot.t0 {
                     Some(t) => self.lane_now(slot.target, t),
-                    None => self.track(slot.target).lane(f64::MAX),
+                    None => self.lane_last(slot.target),
                 };
                 let w = self.road.lane_width(lane, self.s_at(slot.target, t));
                 let mut asked = m.clone();

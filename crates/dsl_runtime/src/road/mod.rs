@@ -346,7 +346,7 @@ impl PlanRoad<'_> {
     }
 
     /// The lane that lane `lane` at the plan's s `s0` runs on into at `s1` (against s: u):
-    /// across the lane sections of a road by the lanes' links (ASAM OpenDRIVE 1.8 §9.4 lane
+    /// across the lane sections of a road by the lanes' links (ASAM OpenDRIVE 1.8 §11.5 lane
     /// linkage, `<link><successor id=…>` and `<predecessor id=…>`: `RoadNetwork::successors`
     /// and `predecessors`, whichever leads towards `s1`); from one road of the plan to the next
     /// the same id (`chain` stops where a road link renumbers a lane). Where a lane has no
@@ -403,10 +403,12 @@ impl PlanRoad<'_> {
         }
     }
 
-    /// Length of the centre line of lane `lane` from `s0` to `s1` (negative when s1 < s0): the
-    /// distance a vehicle following the lane covers, which differs from s on curves (a lane
-    /// on the outside of a bend is longer). Summed over chords every
-    /// [`LENGTH_STEP`] m of s; outside the roads, or where the lane is missing, 1 m per m of s.
+    /// Length of the centre line of lane `lane` (its id at `s0`, followed along its links
+    /// across the lane sections on the way: [`lane_along`](Self::lane_along)) from `s0` to `s1`
+    /// (negative when s1 < s0): the distance a vehicle following the lane covers, which
+    /// differs from s on curves (a lane on the outside of a bend is longer). Summed over
+    /// chords every [`LENGTH_STEP`] m of s; outside the roads, or where the lane is missing,
+    /// 1 m per m of s.
     pub(crate) fn lane_distance(&self, lane: i32, s0: f64, s1: f64) -> f64 {
         if self.against {
             return -self
@@ -414,19 +416,21 @@ impl PlanRoad<'_> {
                 .lane_distance(lane, self.forward_s(s0), self.forward_s(s1));
         }
         if s1 < s0 {
-            return -self.lane_distance(lane, s1, s0);
+            return -self.lane_distance(self.stepped(lane, s0, s1), s1, s0);
         }
         let mut total = 0.0;
-        let mut s = s0;
+        let (mut s, mut lane) = (s0, lane);
         while s < s1 {
             let next = (s + LENGTH_STEP).min(s1);
-            total += self.chord(lane, s, next);
-            s = next;
+            let then = self.stepped(lane, s, next);
+            total += self.chord((lane, then), s, next);
+            (s, lane) = (next, then);
         }
         total
     }
 
-    /// The s reached from `s0` after `distance` along lane `lane`'s centre line.
+    /// The s reached from `s0` after `distance` along lane `lane`'s centre line (its id at
+    /// `s0`, followed along its links as in [`lane_distance`](Self::lane_distance)).
     pub(crate) fn s_after(&self, lane: i32, s0: f64, distance: f64) -> f64 {
         if self.against {
             let s = self.forward().s_after(lane, self.forward_s(s0), -distance);
@@ -434,22 +438,42 @@ impl PlanRoad<'_> {
         }
         let dir = if distance < 0.0 { -1.0 } else { 1.0 };
         let mut left = distance.abs();
-        let mut s = s0;
+        let (mut s, mut lane) = (s0, lane);
         while left > 0.0 {
             let next = s + dir * LENGTH_STEP;
-            let piece = self.chord(lane, s.min(next), s.max(next));
+            let then = self.stepped(lane, s, next);
+            let piece = if dir > 0.0 {
+                self.chord((lane, then), s, next)
+            } else {
+                self.chord((then, lane), next, s)
+            };
             if piece >= left {
                 return s + dir * LENGTH_STEP * left / piece;
             }
             left -= piece;
-            s = next;
+            (s, lane) = (next, then);
         }
         s
     }
 
-    /// Length of the chord of lane `lane` between s `a` < `b`, split where one road joins the
-    /// next.
-    fn chord(&self, lane: i32, a: f64, b: f64) -> f64 {
+    /// Lane `lane` at `s` followed to `next`, one step of [`LENGTH_STEP`] or less away: itself
+    /// within one lane section of one road (the lane sections at `s` and `next` asked first,
+    /// the links only where a step crosses into another).
+    fn stepped(&self, lane: i32, s: f64, next: f64) -> i32 {
+        let section = |s: f64| {
+            let g = self.segment(s);
+            (g.start, g.road.lane_section_index(s - g.start))
+        };
+        if section(s) == section(next) {
+            lane
+        } else {
+            self.lane_along(lane, s, next)
+        }
+    }
+
+    /// Length of the chord of a lane between s `a` < `b`, its id `la` at `a` and `lb` at `b`
+    /// (the same lane, [`stepped`](Self::stepped)), split where one road joins the next.
+    fn chord(&self, (la, lb): (i32, i32), a: f64, b: f64) -> f64 {
         if !(0.0..=self.length()).contains(&a) || !(0.0..=self.length()).contains(&b) {
             return b - a;
         }
@@ -459,15 +483,13 @@ impl PlanRoad<'_> {
             .map(|g| g.start)
             .find(|j| a < *j && *j < b)
         {
-            return self.chord(lane, a, j) + self.chord(lane, j, b);
+            let lj = self.lane_along(la, a, j);
+            return self.chord((la, lj), a, j) + self.chord((lj, lb), j, b);
         }
         // Both ends on the road of `a` (b may be its end).
         let g = self.segment(a);
         let (a, b) = (a - g.start, (b - g.start).min(g.road.length));
-        match (
-            g.road.lane_pose(lane, a, 0.0),
-            g.road.lane_pose(lane, b, 0.0),
-        ) {
+        match (g.road.lane_pose(la, a, 0.0), g.road.lane_pose(lb, b, 0.0)) {
             (Ok(p), Ok(q)) => (q.x - p.x).hypot(q.y - p.y),
             _ => b - a,
         }
@@ -558,5 +580,30 @@ mod tests {
             e.contains("found lane 1 of road b leading onto lane 2 of road a"),
             "{e}"
         );
+    }
+
+    /// A lane's length runs on along its links where a lane section renumbers it (ASAM
+    /// OpenDRIVE 1.8 §11.5), on tests/roads/lane_add_inner.xodr: lane -1 of section 0 (t =
+    /// -1.75 m, straight) leads at s = 300 m into -2, centred at t = -(w(d) + 1.75), the new
+    /// lane -1 widening as w(d) = 0.00105·d² − 0.000007·d³ (d = s − 300), w'(d) = 0.0021·d −
+    /// 0.000021·d² = 0.0021·d·(1 − d/100). From s = 250 to 350 m: 50 m, then
+    /// ∫₀⁵⁰ √(1 + w'²) dd = 50 + ½∫w'² − ⅛∫w'⁴ with ∫₀⁵⁰ w'² = 0.0021²·10⁶·∫₀^½ x²(1−x)² dx =
+    /// 4.41/60 = 0.0735 and ∫₀⁵⁰ w'⁴ = 0.0021⁴·10¹⁰/1260 = 0.000154: 50.036731 m, 100.036731 m
+    /// in all. Along the new lane -1 (the id kept, centred at -w/2: slope w'/2) it would be
+    /// 50 + ⅛·0.0735 − (1/128)·0.000154 = 50.009186 m.
+    #[test]
+    fn a_lanes_length_follows_its_links_across_lane_sections() {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/roads/lane_add_inner.xodr");
+        let text = std::fs::read_to_string(&path).expect("the bundled road");
+        let net = RoadNetwork::from_str(&text, &path).expect("parses");
+        let road = PlanRoad::pick(&net).expect("a road");
+        assert_eq!(road.lane_along(-1, 250.0, 350.0), -2);
+        let d = road.lane_distance(-1, 250.0, 350.0);
+        assert!((d - 100.036731).abs() < 1e-6, "{d}");
+        assert!((road.s_after(-1, 250.0, 100.036731) - 350.0).abs() < 1e-5);
+        // Back from s = 350 m in lane -2: the same length, into -1 before s = 300 m.
+        assert!((road.lane_distance(-2, 350.0, 250.0) + 100.036731).abs() < 1e-6);
+        assert!((road.s_after(-2, 350.0, -100.036731) - 250.0).abs() < 1e-5);
     }
 }

@@ -17,6 +17,7 @@ mod keep_args;
 mod lane_side;
 mod lateral;
 mod lateral_actions;
+mod links;
 mod lists;
 mod map;
 mod map_modifiers;
