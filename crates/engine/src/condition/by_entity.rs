@@ -4,9 +4,14 @@
 //! for every one. An EntityRef naming an EntitySelection stands for all its members. Every
 //! triggering entity is evaluated each time (no short cut), so that the duration conditions
 //! keep their memory of each. The entities for which it held are reported to the context
-//! ([`ConditionContext::note_triggering`]) for `selectTriggeringEntities` (§7.3.1).
+//! ([`ConditionContext::note_triggering`]) for `selectTriggeringEntities` (§7.3.1). The
+//! condition's position (ReachPosition, Distance, TimeToCollision's Position target) depends
+//! on no triggering entity, so an evaluation works it out once, for the first triggering entity
+//! that is measured, and measures the others to the same point.
 
-use opendrive::Real;
+use std::cell::Cell;
+
+use opendrive::{Pose, Real};
 use scenario::{
     CollisionTarget, EntityCondition, SourcePos, TimeToCollisionTarget, TriggeringEntities,
     TriggeringEntitiesRule,
@@ -23,7 +28,9 @@ use super::rule::compare;
 use super::spacing::{distance_holds, time_headway, time_to_collision};
 use super::target::Target;
 use super::{ConditionContext, ConditionError, ConditionErrorKind, ConditionState};
-use crate::position::{resolve, resolve_with, EntityView, PositionError, PositionErrorKind};
+use crate::position::{
+    on_planned_route, resolve, resolve_with, EntityView, PositionError, PositionErrorKind,
+};
 use crate::world::EntityId;
 
 /// The raw value of a ByEntityCondition (`refs`: its names resolved, condition/refs.rs).
@@ -41,6 +48,8 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
     // Each member once where the same one would follow itself (a selection's member after the
     // object itself, say).
     let mut last = None;
+    // The condition's position, once worked out in this evaluation.
+    let point = Cell::new(None);
     let mut visit = |id: EntityId, name: &str| -> Result<(), ConditionError> {
         if last == Some(id) {
             return Ok(());
@@ -49,7 +58,7 @@ pub(crate) fn evaluate<C: ConditionContext + ?Sized>(
         let e = ctx.entity_at(id).ok_or_else(|| {
             ConditionError::new(ConditionErrorKind::UnknownEntity(name.to_owned()), pos)
         })?;
-        let holds = holds(condition, refs, ctx, (id, &e), state)
+        let holds = holds(condition, refs, ctx, (id, &e), state, &point)
             .map_err(|k| ConditionError::new(k, pos))?;
         any |= holds;
         all &= holds;
@@ -96,27 +105,38 @@ fn reference<'c, C: ConditionContext + ?Sized>(
 }
 
 /// The condition's position `p` as a point to measure to, as it is now: resolved before when
-/// it depends on no entity, from its entity's pose by id when it is relative to one, planned
-/// from its names when it is a route or trajectory position (`refs.position`,
-/// condition/refs.rs).
+/// it depends on no entity, from its entity's pose by id when it is relative to one, placed on
+/// its route planned before for FromCurrentEntity on an entity-free route, planned from its
+/// names when it is a route or trajectory position relative to an entity (`refs.position`,
+/// condition/refs.rs). `point` keeps it for the rest of the evaluation (module doc).
 fn position_target<'c, C: ConditionContext + ?Sized>(
     ctx: &'c C,
     p: &scenario::Position,
     refs: &ConditionRefs,
+    point: &Cell<Option<Pose>>,
 ) -> Result<Target<'c>, ConditionErrorKind> {
-    let resolved = match refs.position {
-        Some(PositionRef::Fixed(pose)) => return Ok(Target::Point(pose)),
-        Some(PositionRef::Relative(id)) => resolve_with(p, ctx, |name| {
+    if let Some(pose) = point.get() {
+        return Ok(Target::Point(pose));
+    }
+    let by_id = |id: EntityId| {
+        move |name: &str| {
             ctx.entity_at(id).ok_or_else(|| {
                 PositionError::new(PositionErrorKind::UnknownEntity(name.into()), &p.pos)
             })
-        }),
+        }
+    };
+    let resolved = match &refs.position {
+        Some(PositionRef::Fixed(pose)) => return Ok(Target::Point(*pose)),
+        Some(PositionRef::Relative(id)) => resolve_with(p, ctx, by_id(*id)),
+        Some(PositionRef::OnRoute(route, id)) => {
+            on_planned_route(p, route, ctx.road_network(), by_id(*id))
+        }
         // Refs from `ConditionRefs::resolve` hold the position of a condition that has one.
         Some(PositionRef::Planned) | None => resolve(p, ctx),
     };
-    resolved
-        .map(|r| Target::Point(r.pose))
-        .map_err(ConditionErrorKind::Position)
+    let pose = resolved.map_err(ConditionErrorKind::Position)?.pose;
+    point.set(Some(pose));
+    Ok(Target::Point(pose))
 }
 
 /// True when `duration` s have passed since `holds` became true for entity `id` without a
@@ -134,11 +154,12 @@ fn holds<C: ConditionContext + ?Sized>(
     ctx: &C,
     (id, e): (EntityId, &EntityView<'_>),
     state: &mut ConditionState,
+    point: &Cell<Option<Pose>>,
 ) -> Result<bool, ConditionErrorKind> {
     let reference = |i| reference(ctx, condition, refs, i);
     let network = ctx.road_network();
     let now = ctx.simulation_time();
-    let position_target = |p: &scenario::Position| position_target(ctx, p, refs);
+    let position_target = |p: &scenario::Position| position_target(ctx, p, refs, point);
     Ok(match condition {
         EntityCondition::EndOfRoad { duration } => {
             held(state, id, at_end_of_road(network, e), now, *duration)

@@ -111,4 +111,8 @@ impl<C: ConditionContext + ?Sized> Names for Context<'_, C> {
     fn network(&self) -> &opendrive::RoadNetwork {
         self.0.road_network()
     }
+
+    fn routing_options(&self) -> crate::routing::RoutingOptions {
+        self.0.routing_options()
+    }
 }

@@ -16,8 +16,21 @@
 //! load error at the Position element, as an action's RoadPosition or LanePosition is,
 //! position/check.rs); one of the four relative forms keeps its entity's id (an undeclared
 //! `entityRef` is a load error at the Position element, naming its XSD element) and is worked
-//! out from where that entity stands at each evaluation; a RoutePosition or
-//! TrajectoryPosition is planned at each evaluation from the names it holds, as an action's.
+//! out from where that entity stands at each evaluation. A RoutePosition or TrajectoryPosition
+//! whose route's waypoints or trajectory's points are all entity-free (recursively) depends on
+//! the scenario and the road network alone, the route planned with the run's seed
+//! (`EngineConfig::seed`, routeStrategy `random`): FromRoadCoordinates, FromLaneCoordinates
+//! and a TrajectoryPosition are resolved once, to their pose, like an entity-free form (a
+//! route that cannot be planned, a waypoint off the network, a pathS or s outside the path, a
+//! shape that cannot be drawn: a load error at the Position element or the waypoint's); for
+//! FromCurrentEntity the route is planned once and the entity (its `entityRef` resolved to
+//! its id, undeclared: a load error as for a relative form) is placed on that plan at each
+//! evaluation. A route or trajectory with a waypoint or point relative to an entity is planned
+//! at each evaluation from the names it holds, as an action's.
+//!
+//! The position is the same for every triggering entity (its reference is the position's own
+//! `entityRef`, never the triggering entity), so an evaluation works it out once, for the first
+//! triggering entity that needs it (condition/by_entity.rs).
 //!
 //! Entities that are not in the scene when the storyboard is built keep their ids all the
 //! same: an entity an AddEntityAction adds later (§7.2.2.3, XSD `AddEntityAction`) and a
@@ -35,9 +48,11 @@ use scenario::{
     CollisionTarget, Condition, ConditionKind, EntityCondition, Position, SourcePos,
     TimeToCollisionTarget,
 };
+use std::sync::Arc;
 
 use super::mark::MarkId;
-use crate::position::{needs, resolve_entity_free, Needs, PositionError};
+use crate::position::{needs, plan_entity_free, resolve_entity_free, Needs, PositionError};
+use crate::routing::{PlannedRoute, RoutingOptions};
 use crate::world::EntityId;
 
 /// Handle of an EntitySelection: its index among the scenario's selections, in declaration
@@ -80,8 +95,13 @@ pub(crate) enum PositionRef {
     /// RelativeLanePosition: the entity of its `entityRef`, read by id at each evaluation,
     /// where it stands then.
     Relative(EntityId),
-    /// RoutePosition, TrajectoryPosition: planned at each evaluation from the positions and
-    /// entity of the route or trajectory, which it reads by name (not resolved here).
+    /// RoutePosition FromCurrentEntity on a route whose waypoints are entity-free: the route
+    /// planned once (shared, not copied, by the engine's clones of its tables), and the entity
+    /// of `entityRef`, placed on it at each evaluation where it stands then.
+    OnRoute(Arc<PlannedRoute>, EntityId),
+    /// RoutePosition, TrajectoryPosition with a waypoint or point relative to an entity:
+    /// planned at each evaluation from the positions and entity of the route or trajectory,
+    /// which it reads by name (not resolved here).
     Planned,
 }
 
@@ -97,6 +117,9 @@ pub(crate) trait Names {
     /// The road network the scenario runs on (a condition's entity-free position is resolved
     /// on it).
     fn network(&self) -> &RoadNetwork;
+    /// The settings the run plans routes with (its seed for routeStrategy `random`): an
+    /// entity-free route is planned with them once.
+    fn routing_options(&self) -> RoutingOptions;
 }
 
 /// Why a condition's references do not resolve.
@@ -138,23 +161,36 @@ pub(crate) fn condition_position(condition: &EntityCondition) -> Option<&Positio
 }
 
 /// `position` resolved as far as the run allows ([`PositionRef`]): an entity-free form to
-/// its pose on `names`' network, a relative one to its entity's id.
+/// its pose on `names`' network, a relative one to its entity's id, a FromCurrentEntity on an
+/// entity-free route to the route's plan and the entity's id.
 fn position_ref(position: &Position, names: &dyn Names) -> Result<PositionRef, RefError> {
+    let undeclared = |name: &str, element| {
+        RefError::Unresolved(Unresolved {
+            element,
+            name: name.to_owned(),
+            at: Some(position.pos.clone()),
+        })
+    };
     match needs(position) {
-        Needs::Nothing => resolve_entity_free(position, names.network())
+        Needs::Nothing => resolve_entity_free(position, names.network(), names.routing_options())
             .map(|r| PositionRef::Fixed(r.pose))
             .map_err(RefError::Position),
-        Needs::Entity(name, element) => {
-            names
+        Needs::Entity(name, element) => names
+            .entity(name)
+            .map(PositionRef::Relative)
+            .ok_or_else(|| undeclared(name, element)),
+        Needs::OnRoute(route, name) => {
+            let id = names
                 .entity(name)
-                .map(PositionRef::Relative)
-                .ok_or_else(|| {
-                    RefError::Unresolved(Unresolved {
-                        element,
-                        name: name.to_owned(),
-                        at: Some(position.pos.clone()),
-                    })
-                })
+                .ok_or_else(|| undeclared(name, "FromCurrentEntity@entityRef"))?;
+            let planned = plan_entity_free(
+                route,
+                names.network(),
+                names.routing_options(),
+                &position.pos,
+            )
+            .map_err(RefError::Position)?;
+            Ok(PositionRef::OnRoute(Arc::new(planned), id))
         }
         Needs::Plan => Ok(PositionRef::Planned),
     }

@@ -17,8 +17,8 @@
 //! | `road_chain` | the plan's measure over a DSL plan's roads: its s, or u = L − s along an oncoming actor's direction of travel; lane lengths and walks across their joints |
 //! | `lane_walk` | ds along a lane across sections and connecting roads (1.3 continuation rule) |
 //! | `beyond` | s past a road's ends: the same continuation for every road-based form |
-//! | `check` | entity-free positions of a scenario resolved at load (actions' Road/Lane positions; conditions' positions of every entity-free form) |
-//! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) on the path of `routing::plan_route` |
+//! | `check` | entity-free positions of a scenario resolved at load (actions' Road/Lane positions; conditions' positions of every entity-free form, and the entity-free route of a RoutePosition FromCurrentEntity planned) |
+//! | `route` | RoutePosition (FromCurrentEntity, FromRoadCoordinates, FromLaneCoordinates) on the path of `routing::plan_route`, or FromCurrentEntity on a path planned before |
 //! | `trajectory` | TrajectoryPosition on a polyline |
 //! | `resolve` | `resolve`: the dispatcher (and `resolve_with`, the reference entity given); what each form needs (`needs`); GeoPosition |
 //! | `sources` | every `EntityQuery` as routing's `WaypointSource` and trajectory's `PointSource` (resolving through `resolve`) |
@@ -42,12 +42,13 @@ mod trajectory;
 mod world;
 
 pub use check::check_positions;
-pub(crate) use check::resolve_entity_free;
+pub(crate) use check::{plan_entity_free, resolve_entity_free};
 pub use error::{PositionError, PositionErrorKind};
 pub use query::{EntityQuery, EntityView};
 pub use resolve::resolve;
 pub(crate) use resolve::{needs, resolve_with, Needs};
 pub use resolved::ResolvedPosition;
+pub(crate) use route::on_planned_route;
 
 pub(crate) use lane::{add_lanes, driving_heading as lane_driving_heading};
 pub(crate) use lane_at::lane_at;

@@ -9,13 +9,13 @@
 //! absolute in the network's x/y frame, and `type="relative"` is refused: a GeoPosition has no
 //! reference to be relative to.
 
-use scenario::{Orientation, Position, PositionKind};
+use scenario::{InRoutePosition, Orientation, Position, PositionKind, Route, Shape};
 
 use super::lane::{lane, parse_lane_id, relative_lane, Along};
 use super::road::{relative_road, road};
 use super::route::route_position;
 use super::trajectory::trajectory_position;
-use super::world::{entity, finite, geo, relative, world};
+use super::world::{entity, finite_orientation, geo, relative, world};
 use super::{EntityQuery, EntityView, PositionError, PositionErrorKind, ResolvedPosition};
 
 /// Resolves `position` to a world pose and road position, reading reference entities and the
@@ -28,17 +28,24 @@ pub fn resolve<Q: EntityQuery + ?Sized>(
 }
 
 /// What a position needs besides the road network, by its form: nothing (WorldPosition,
-/// RoadPosition, LanePosition, GeoPosition), the one entity a relative form names
+/// RoadPosition, LanePosition, GeoPosition, and a RoutePosition or TrajectoryPosition whose
+/// route's waypoints or trajectory's points need nothing), the one entity a relative form names
 /// (RelativeWorldPosition, RelativeObjectPosition, RelativeRoadPosition,
-/// RelativeLanePosition), or a route or trajectory planned from the names it holds
-/// (RoutePosition, TrajectoryPosition).
+/// RelativeLanePosition), a route that needs nothing and the entity on it (RoutePosition
+/// FromCurrentEntity), or a route or trajectory planned from positions that name entities.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Needs<'p> {
-    /// Only the road network: the same pose whenever it is resolved.
+    /// Only the road network (and, for a route, the run's routing options): the same pose
+    /// whenever it is resolved.
     Nothing,
     /// The entity `entityRef` names, with the XSD element and attribute it is written in.
     Entity(&'p str, &'static str),
-    /// A route or trajectory, and every entity its positions name.
+    /// RoutePosition `FromCurrentEntity` on `route`, whose waypoints need nothing: the route's
+    /// plan is the same whenever it is planned; where the entity `entityRef` names stands on
+    /// it is read when the position is resolved.
+    OnRoute(&'p Route, &'p str),
+    /// A route or trajectory with a waypoint or point that names an entity (or a shape drawn
+    /// from the actor): planned anew whenever it is resolved.
     Plan,
 }
 
@@ -57,8 +64,50 @@ pub(crate) fn needs(position: &Position) -> Needs<'_> {
         PositionKind::RelativeLane { entity_ref, .. } => {
             Needs::Entity(entity_ref, "RelativeLanePosition@entityRef")
         }
-        PositionKind::Route { .. } | PositionKind::Trajectory { .. } => Needs::Plan,
+        PositionKind::Route {
+            route, in_route, ..
+        } => {
+            if !route.waypoints.iter().all(|w| entity_free(&w.position)) {
+                return Needs::Plan;
+            }
+            match in_route {
+                InRoutePosition::FromCurrentEntity { entity_ref } => {
+                    Needs::OnRoute(route, entity_ref)
+                }
+                _ => Needs::Nothing,
+            }
+        }
+        PositionKind::Trajectory { trajectory, .. } => {
+            if shape_entity_free(&trajectory.shape) {
+                Needs::Nothing
+            } else {
+                Needs::Plan
+            }
+        }
         _ => Needs::Nothing,
+    }
+}
+
+/// `position` resolves to the same pose whenever it is resolved ([`Needs::Nothing`]).
+fn entity_free(position: &Position) -> bool {
+    matches!(needs(position), Needs::Nothing)
+}
+
+/// Every point a trajectory's shape is drawn through needs no entity (OpenSCENARIO 1.3 §6.9:
+/// Vertex, Clothoid, ClothoidSplineSegment's PositionStart and ControlPoint each hold a
+/// Position). oscsim's shapes drawn from the actor, and a form this engine does not know, are
+/// taken to need one.
+fn shape_entity_free(shape: &Shape) -> bool {
+    match shape {
+        Shape::Polyline(vertices) => vertices.iter().all(|v| entity_free(&v.position)),
+        Shape::Clothoid(c) => entity_free(&c.position),
+        Shape::ClothoidSpline(spline) => spline
+            .segments
+            .iter()
+            .filter_map(|g| g.position_start.as_ref())
+            .all(entity_free),
+        Shape::Nurbs(n) => n.control_points.iter().all(|c| entity_free(&c.position)),
+        _ => false,
     }
 }
 
@@ -73,16 +122,7 @@ pub(crate) fn resolve_with<'q, Q: EntityQuery + ?Sized>(
 ) -> Result<ResolvedPosition, PositionError> {
     let pos = &position.pos;
     let network = ctx.road_network();
-    if let Some(o) = orientation_of(&position.kind) {
-        finite(
-            &[
-                ("Orientation h", o.h),
-                ("Orientation p", o.p),
-                ("Orientation r", o.r),
-            ],
-            pos,
-        )?;
-    }
+    finite_orientation(orientation_of(&position.kind), pos)?;
     match &position.kind {
         PositionKind::World { x, y, z, h, p, r } => world(network, *x, *y, *z, [*h, *p, *r], pos),
         PositionKind::RelativeWorld {

@@ -23,13 +23,13 @@
 use std::f64::consts::PI;
 
 use opendrive::{Direction, Pose, Real, RoadNetwork};
-use scenario::{InRoutePosition, Orientation, Route, SourcePos};
+use scenario::{InRoutePosition, Orientation, Position, PositionKind, Route, SourcePos};
 
 use super::error::road_error;
 use super::lane::parse_lane_id;
 use super::orientation::on_surface;
-use super::world::{entity, finite};
-use super::{EntityQuery, PositionError, PositionErrorKind, ResolvedPosition};
+use super::world::{entity, finite, finite_orientation};
+use super::{EntityQuery, EntityView, PositionError, PositionErrorKind, ResolvedPosition};
 use crate::routing::{self, PlannedRoute};
 
 /// Heading of travel on a road whose s-tangent heads `road_h`.
@@ -96,40 +96,14 @@ pub(crate) fn route_position<Q: EntityQuery + ?Sized>(
             let travel_h = travel_heading(surface.h, dir);
             Ok(placed(network, road_id, surface, orientation, travel_h))
         }
-        InRoutePosition::FromCurrentEntity { entity_ref } => {
-            let e = entity(ctx, entity_ref, pos)?;
-            let off_route = || {
-                PositionError::new(
-                    PositionErrorKind::EntityOffRoute {
-                        entity: entity_ref.clone(),
-                        route: route.name.clone(),
-                    },
-                    pos,
-                )
-            };
-            let rp = e.road_position.ok_or_else(off_route)?;
-            let path_s = planned
-                .path_s_of(&rp.road_id, None, rp.s, 0.0)
-                .ok_or_else(off_route)?;
-            // The direction of travel is the path's at path_s (at the joint of two stretches
-            // the earlier one answers, whose end meets the later one's start).
-            let (road_id, s, dir) = at(&planned, path_s, pos)?;
-            let road_h = network
-                .road_pose(road_id, s, 0.0)
-                .map_err(|err| road_error(err, pos))?
-                .h;
-            let road = network
-                .road_pose(&rp.road_id, rp.s, rp.t)
-                .map_err(|err| road_error(err, pos))?;
-            let surface = Pose {
-                x: e.pose.x,
-                y: e.pose.y,
-                z: e.pose.z,
-                ..road
-            };
-            let travel_h = travel_heading(road_h, dir);
-            Ok(placed(network, &rp.road_id, surface, orientation, travel_h))
-        }
+        InRoutePosition::FromCurrentEntity { entity_ref } => from_current_entity(
+            network,
+            &planned,
+            entity(ctx, entity_ref, pos)?,
+            (entity_ref, &route.name),
+            orientation,
+            pos,
+        ),
         _ => Err(PositionError::new(
             PositionErrorKind::Unsupported {
                 expected: "FromCurrentEntity, FromRoadCoordinates or FromLaneCoordinates",
@@ -138,6 +112,85 @@ pub(crate) fn route_position<Q: EntityQuery + ?Sized>(
             pos,
         )),
     }
+}
+
+/// A RoutePosition `FromCurrentEntity` (`position`) on `planned`, its route planned before
+/// (condition/refs.rs: a route whose waypoints name no entity is planned once), with the
+/// entity its `entityRef` names given by `reference` (called with the name, once).
+pub(crate) fn on_planned_route<'q>(
+    position: &Position,
+    planned: &PlannedRoute,
+    network: &RoadNetwork,
+    reference: impl FnOnce(&str) -> Result<EntityView<'q>, PositionError>,
+) -> Result<ResolvedPosition, PositionError> {
+    let pos = &position.pos;
+    let PositionKind::Route {
+        route,
+        in_route: InRoutePosition::FromCurrentEntity { entity_ref },
+        orientation,
+    } = &position.kind
+    else {
+        return Err(PositionError::new(
+            PositionErrorKind::Unsupported {
+                expected: "RoutePosition FromCurrentEntity",
+                found: "another position form",
+            },
+            pos,
+        ));
+    };
+    finite_orientation(orientation.as_ref(), pos)?;
+    let e = reference(entity_ref)?;
+    from_current_entity(
+        network,
+        planned,
+        e,
+        (entity_ref, &route.name),
+        orientation.as_ref(),
+        pos,
+    )
+}
+
+/// Where entity `e` (`names`: its name and the route's) stands on `planned` (module doc,
+/// FromCurrentEntity).
+fn from_current_entity(
+    network: &RoadNetwork,
+    planned: &PlannedRoute,
+    e: EntityView<'_>,
+    (entity_ref, route): (&str, &str),
+    orientation: Option<&Orientation>,
+    pos: &SourcePos,
+) -> Result<ResolvedPosition, PositionError> {
+    let off_route = || {
+        PositionError::new(
+            PositionErrorKind::EntityOffRoute {
+                entity: entity_ref.to_owned(),
+                route: route.to_owned(),
+            },
+            pos,
+        )
+    };
+    let rp = e.road_position.ok_or_else(off_route)?;
+    let path_s = planned
+        .path_s_of(&rp.road_id, None, rp.s, 0.0)
+        .ok_or_else(off_route)?;
+    // The direction of travel is the path's at path_s (at the joint of two stretches the
+    // earlier one answers, whose end meets the later one's start).
+    let (road_id, s, dir) = at(planned, path_s, pos)?;
+    let road_h = network
+        .road_pose(road_id, s, 0.0)
+        .map_err(|err| road_error(err, pos))?
+        .h;
+    let road = network
+        .road_pose(&rp.road_id, rp.s, rp.t)
+        .map_err(|err| road_error(err, pos))?;
+    let surface = Pose {
+        x: e.pose.x,
+        y: e.pose.y,
+        z: e.pose.z,
+        ..road
+    };
+    let travel_h = travel_heading(road_h, dir);
+    Ok(placed(network, &rp.road_id, surface, orientation, travel_h))
 }
 
 /// The pose at `surface` (a road or lane pose) with relative headings counted from

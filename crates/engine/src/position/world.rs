@@ -38,6 +38,25 @@ pub(crate) fn surface_z(network: &RoadNetwork, x: Real, y: Real) -> Option<Real>
     network.road_pose(&rp.road_id, rp.s, rp.t).ok().map(|p| p.z)
 }
 
+/// The angles of an Orientation element, if there is one, are finite numbers (`pos`: its
+/// position's place).
+pub(crate) fn finite_orientation(
+    orientation: Option<&Orientation>,
+    pos: &SourcePos,
+) -> Result<(), PositionError> {
+    match orientation {
+        Some(o) => finite(
+            &[
+                ("Orientation h", o.h),
+                ("Orientation p", o.p),
+                ("Orientation r", o.r),
+            ],
+            pos,
+        ),
+        None => Ok(()),
+    }
+}
+
 /// Checks that every value is finite.
 pub(crate) fn finite(
     values: &[(&'static str, Real)],

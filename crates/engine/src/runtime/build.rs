@@ -36,8 +36,14 @@ pub(crate) struct Built {
     pub condition_refs: Vec<ConditionRefs>,
 }
 
-/// Builds world, storyboard description and tables from `scenario` on `network`.
-pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Built, Error> {
+/// Builds world, storyboard description and tables from `scenario` on `network`; `seed` is
+/// the run's ([`EngineConfig::seed`](crate::EngineConfig::seed)), set on the world before the
+/// conditions' entity-free routes are planned with it (condition/refs.rs).
+pub(crate) fn build(
+    scenario: &Scenario,
+    network: Arc<RoadNetwork>,
+    seed: u64,
+) -> Result<Built, Error> {
     let mut entities = scenario
         .entities
         .scenario_objects
@@ -47,6 +53,7 @@ pub(crate) fn build(scenario: &Scenario, network: Arc<RoadNetwork>) -> Result<Bu
         .collect::<Result<Vec<_>, _>>()?;
     let trailers = crate::store::trailer::from_definitions(scenario, &mut entities, entity)?;
     let mut world = World::new(network, entities);
+    world.seed = seed;
     world.trailers = trailers;
     crate::store::selection::check_multiplicity(scenario)?;
     crate::store::selection::check_actor_kinds(scenario)?;
@@ -376,5 +383,9 @@ impl Names for BuildNames<'_> {
 
     fn network(&self) -> &RoadNetwork {
         &self.world.network
+    }
+
+    fn routing_options(&self) -> crate::routing::RoutingOptions {
+        crate::position::EntityQuery::routing_options(self.world)
     }
 }

@@ -130,8 +130,7 @@ impl Engine {
         // Places the road network does not have are refused now, not when first needed.
         crate::position::check_positions(scenario, &network)
             .map_err(|e| Error::new(ErrorKind::Position(e)))?;
-        let mut built = build(scenario, network)?;
-        built.world.seed = config.seed;
+        let mut built = build(scenario, network, config.seed)?;
         let traffic = Traffic::new(config.traffic_model);
         built
             .world
