@@ -159,6 +159,14 @@ pub trait Controller: std::fmt::Debug + Send {
 
     /// The command for the step of `dt` s starting at `view.time()`.
     fn step(&mut self, view: &ControllerView<'_>, dt: Real) -> Command;
+
+    /// What the controller has to tell the event log since it was last asked, once (a
+    /// mandatory lane lost where its links do not lead onto the entity's road,
+    /// controller/mobil.rs). Asked after each controllers stage only of the controllers that
+    /// were handed a mandatory lane (`ControllerTable::noting`). Default: nothing.
+    fn note(&mut self) -> Option<String> {
+        None
+    }
 }
 
 /// The commands of one entity's controllers for a step, merged per domain (the controllers

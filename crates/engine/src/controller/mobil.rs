@@ -59,7 +59,11 @@
 //! L's lane links lead to there (OpenDRIVE 1.8 §11.5 lane linkage; [`Mandatory`]'s
 //! `target_here`), not the lane of the same id: on a road whose lanes are numbered otherwise
 //! (a lane added on the inside), L's continuation keeps the change going or keeps it reached.
-//! Where L's links do not lead onto the entity's road, it makes no change there.
+//! Where L's links do not lead onto the entity's road, it makes no change there, and the event
+//! log says so once for that road and lane section (a `controller` record at the step, at the
+//! action that gave the lane: "mandatory lane L lost: its lane links lead onto no lane of road
+//! …"; [`Controller::note`], taken after each controllers stage for the controllers that were
+//! handed a mandatory lane).
 //!
 //! The `idm` model, which holds no lateral domain, runs the same path ([`Mandatory`], one
 //! piece of state and code; the engine runs the `idm` as [`IdmDriver`], the IDM with the
@@ -236,6 +240,9 @@ pub(crate) struct Mandatory {
     /// The road and lane section where the target lane was not found along its links, if the
     /// entity is still there (not searched again there).
     lost: Option<(u32, u32)>,
+    /// What the event log is still to be told: that the target lane was lost where the entity
+    /// is ([`Controller::note`]).
+    note: Option<String>,
 }
 
 /// Most lane links followed from the target lane to the entity's road and lane section.
@@ -288,6 +295,13 @@ impl Mandatory {
             frontier = next;
         }
         self.lost = Some(place);
+        let road = net.road_at(track.road);
+        self.note = Some(format!(
+            "mandatory lane {} lost: its lane links lead onto no lane of road \"{}\" (lane section {}) where the entity is; it makes no change towards it there",
+            self.target,
+            road.id,
+            here.section + 1
+        ));
         None
     }
 
@@ -307,6 +321,7 @@ impl Mandatory {
                 kept: KeptBeside::default(),
                 on: None,
                 lost: None,
+                note: None,
             })
         });
         note
@@ -452,6 +467,10 @@ impl Controller for IdmDriver {
             Strategy::MandatoryLane(lane) => Some(Mandatory::take(&mut self.mandatory, lane)),
             other => self.idm.on_strategy(other),
         }
+    }
+
+    fn note(&mut self) -> Option<String> {
+        self.mandatory.as_mut()?.note.take()
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {
@@ -665,6 +684,10 @@ impl Controller for MobilController {
             Strategy::MandatoryLane(lane) => Some(Mandatory::take(&mut self.mandatory, lane)),
             other => self.idm.on_strategy(other),
         }
+    }
+
+    fn note(&mut self) -> Option<String> {
+        self.mandatory.as_mut()?.note.take()
     }
 
     fn step(&mut self, view: &ControllerView<'_>, _dt: Real) -> Command {

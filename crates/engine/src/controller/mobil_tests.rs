@@ -761,6 +761,63 @@ fn a_mandatory_lane_across_a_road_end_follows_the_target_lanes_links() {
     }
 }
 
+/// A mandatory lane whose links do not lead onto the entity's road is noted as lost, once per
+/// road and lane section (module doc "Across roads"; found-not-fixed item 4: before, the
+/// change just did not happen, and the event log said nothing). The two-road map with road 1's
+/// lane −3 ending at the road's end (its `<successor id="-4"/>` taken out: a lane drop): asked
+/// for lane −3 from lane −1 of road 1 at s = 80 m, the car changes to −2 (no note); on road 2
+/// (lane −2, s = 10 m) −3's links lead nowhere: no change, and the note names road "2", lane
+/// section 1; at s = 30 m of road 2 still no change and no second note. The idm and the mobil
+/// alike.
+#[test]
+fn a_mandatory_lane_whose_links_do_not_reach_the_road_is_noted_as_lost_once() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../dsl_runtime/tests/roads/road_link_unequal_number_of_lanes0.xodr"
+    );
+    let text = std::fs::read_to_string(path).expect("the bundled map");
+    let dropped = text.replacen(r#"<successor id="-4"/>"#, "", 1);
+    assert_ne!(dropped, text, "the link is in the map");
+    let net = std::sync::Arc::new(
+        RoadNetwork::from_str(&dropped, std::path::Path::new(path)).expect("parses"),
+    );
+    let idm = IdmParameters {
+        desired_speed: 20.0,
+        ..IdmParameters::default()
+    };
+    let mut i = IdmDriver::new(IdmController::new(idm, true));
+    let mut m = MobilController::new(idm, true, MobilParameters::default());
+    let controllers: [&mut dyn Controller; 2] = [&mut i, &mut m];
+    for c in controllers {
+        c.strategy(Strategy::MandatoryLane(Some(-3)));
+        let mut at = |(road, lane, s): (&str, i32, Real), time: Real| {
+            let w = alone_on(&net, road, lane, s);
+            let index = LaneIndex::build(&w.network, w.entities());
+            let view = view_of(time, &w, &index, &w.entities()[0]);
+            let lane = match c.step(&view, 0.05) {
+                Command::Motion { lateral, .. } => lateral,
+                Command::Pose(_) => None,
+            };
+            (lane, c.note())
+        };
+        assert_eq!(
+            at(("1", -1, 80.0), 0.0),
+            (Some(Lateral::ChangeLane(-2)), None)
+        );
+        assert_eq!(
+            at(("2", -2, 10.0), 5.0),
+            (
+                None,
+                Some(
+                    "mandatory lane -3 lost: its lane links lead onto no lane of road \"2\" (lane section 1) where the entity is; it makes no change towards it there"
+                        .to_owned()
+                )
+            )
+        );
+        assert_eq!(at(("2", -2, 30.0), 10.0), (None, None));
+    }
+}
+
 /// A rate toward a speed handed to a driver model (car_following.rs module doc, "A rate toward
 /// a speed"): on the 40 crowded highways, for every car at speed v, the `idm` and the `mobil`
 /// handed a rate of −1.5 m/s² toward v + 10 m/s command +1.5 less the IDM's interaction term

@@ -238,6 +238,11 @@ pub(crate) fn hand_over(
         (Some(s), Some(instance)) => instance.strategy(s),
         _ => None,
     };
+    // A mandatory lane taken: the controller may lose it on a road its links do not reach,
+    // which it notes (controller/mobil.rs "Across roads").
+    if let (Some(Strategy::MandatoryLane(Some(_))), Some(_), false) = (s, &taken, no_lane) {
+        controllers.note_from(actor.index(), slot, origin.element);
+    }
     let Some(a) = controllers
         .of(actor.index())
         .and_then(|c| c.assigned.get(slot))

@@ -21,6 +21,7 @@
 //! kept and its activation recorded, but it holds no domain: the default controller keeps
 //! driving, and the event log says so.
 
+use opendrive::Real;
 use scenario::ControllerDomains;
 
 use super::command::{Controller, Merged};
@@ -29,6 +30,7 @@ use super::external_input::ExternalInput;
 use super::one_gap::Change;
 use super::parallel::ParallelCommands;
 use super::properties::{ControllerKind, ModelSettings, MotionDomains};
+use crate::output::EventRecord;
 use crate::store::lane_index::LaneIndex;
 use crate::world::ActiveDomains;
 
@@ -136,6 +138,20 @@ pub(crate) struct ControllerTable {
     drivers: Drivers,
     /// The controllers holding a domain, as the stage walks them (drivers.rs).
     runs: Runs,
+    /// The controllers that were handed a mandatory lane, asked for their notes after each
+    /// controllers stage ([`ControllerTable::notes`]); empty in ordinary runs.
+    noting: Vec<Noting>,
+}
+
+/// A controller that may have a note for the event log ([`Controller::note`]).
+#[derive(Debug, Clone, PartialEq)]
+struct Noting {
+    /// The entity's index.
+    entity: usize,
+    /// The controller's place among the entity's assigned controllers.
+    slot: usize,
+    /// The action that handed it what it notes on (the record's `element`).
+    element: String,
 }
 
 /// What the controllers stage rebuilds each step, kept so that a step allocates nothing once
@@ -192,6 +208,46 @@ impl ControllerTable {
         match a.instance.as_mut()? {
             Instance::Driver(k) => self.drivers.get_mut(*k).map(DriverModel::as_controller),
             Instance::Boxed(b) => Some(b.as_mut()),
+        }
+    }
+
+    /// The controller at `slot` of entity `index`, handed a mandatory lane by the action
+    /// `element`, is asked for its notes after each controllers stage from now on.
+    pub fn note_from(&mut self, index: usize, slot: usize, element: &str) {
+        self.noting.retain(|n| (n.entity, n.slot) != (index, slot));
+        self.noting.push(Noting {
+            entity: index,
+            slot,
+            element: element.to_owned(),
+        });
+    }
+
+    /// The notes of the controllers [`ControllerTable::note_from`] named, as `controller`
+    /// records at `time` ([`Controller::note`]), in the order they were named; `names` gives
+    /// an entity's name by its index.
+    pub fn notes<'n>(
+        &mut self,
+        time: Real,
+        names: impl Fn(usize) -> &'n str,
+        events: &mut Vec<EventRecord>,
+    ) {
+        for k in 0..self.noting.len() {
+            let (entity, slot) = (self.noting[k].entity, self.noting[k].slot);
+            let Some(note) = self.instance_mut(entity, slot).and_then(|c| c.note()) else {
+                continue;
+            };
+            let Some(a) = self.of(entity).and_then(|c| c.assigned.get(slot)) else {
+                continue;
+            };
+            events.push(EventRecord::Controller {
+                time,
+                element: self.noting[k].element.clone(),
+                entity: names(entity).to_owned(),
+                controller: a.name.clone(),
+                model: a.model_name(),
+                active: a.active,
+                note,
+            });
         }
     }
 

@@ -87,7 +87,7 @@ impl Engine {
             emit(&log.into_inner(), events)?;
             return Err(e);
         }
-        let moved = self.controllers(time, dt);
+        let moved = self.controllers(time, dt, &log);
         let time = self.measurements(dt, &log);
         self.output(time, moved, log, frames, events)?;
 
@@ -210,17 +210,26 @@ impl Engine {
     }
 
     /// Stage 3: user controllers give their commands, then every entity moves
-    /// (controller/stage.rs); towed vehicles follow their tows' hitches (store/trailer.rs);
+    /// (controller/stage.rs), and what they note is logged (a mandatory lane lost,
+    /// controller/mobil.rs); towed vehicles follow their tows' hitches (store/trailer.rs);
     /// traffic sources, sinks and swarms spawn and remove (traffic). Returns what the moves
     /// found of the entities' states for the output stage's guard: `Moved::finite`, every
     /// placed entity was finite after its move; `Moved::traffic`, a traffic action ran after
     /// the moves.
-    fn controllers(&mut self, time: f64, dt: f64) -> Moved {
+    fn controllers(&mut self, time: f64, dt: f64, log: &Log) -> Moved {
         let clock = Instant::now();
         let world = self.world.get_mut();
         let threads = self.config.controller_threads;
         let finite =
             crate::controller::stage::step(world, &mut self.controllers, time, dt, threads);
+        // What the controllers decided from the world at `time` and note (a mandatory lane
+        // lost, controller/mobil.rs), at that time.
+        let entities = world.entities();
+        self.controllers.notes(
+            time,
+            |i| entities.get(i).map_or("", |e| e.name.as_str()),
+            &mut log.borrow_mut(),
+        );
         super::trailer_stage::follow(world, dt);
         let traffic = self.traffic.is_running();
         crate::traffic::step(world, &mut self.traffic, &mut self.controllers, dt);
