@@ -177,30 +177,23 @@ impl Planner<'_> {
             check_keeps(mods, step)?;
             // A member's own acceleration (plain, or relative to an actor outside its group;
             // relative to another member it is bad input, `random_traffic_relations`) after a
-            // run-time condition beside a drive, a move or its own lane action (follow_lane,
-            // change_lane: the model's kept or mandatory lane) is its model's free-road
-            // acceleration over the phase (`member_acceleration`, below), or as the rate of its
-            // speed change (`change_speed(v)`, `speed(v, at: end)`) its model's rate toward v
-            // (`member_rate`, below). Beside keep_speed or remain_stationary it is every actor's
+            // run-time condition is its model's free-road acceleration over the phase
+            // (`member_acceleration`, below), or as the rate of its speed change
+            // (`change_speed(v)`, `speed(v, at: end)`) its model's rate toward v (`member_rate`,
+            // below), beside every action that leaves the member's longitudinal domain to its
+            // model: a drive or move, its own lane action (follow_lane, change_lane: the
+            // model's kept or mandatory lane), and a position, path or orientation action (a
+            // TeleportAction is no motion control; change_position, follow_path and
+            // replay_path are FollowTrajectoryActions without a time reference, which hold the
+            // lateral domain only, the actor keeping its own speed along the path: the one
+            // its model gives it). Beside keep_speed or remain_stationary it is every actor's
             // bad input (`check_keeps`, above), beside an action that controls the speed too
-            // (`check_speed_modifiers`); beside another action (a position, path or orientation
-            // action) not run yet (issue 27).
+            // (`check_speed_modifiers`).
             if self.random_member(target) {
-                if let Some(m) = mods.iter().find(|m| m.kind == ModKind::Acceleration) {
+                if mods.iter().any(|m| m.kind == ModKind::Acceleration) {
                     check_speed_modifiers(inv, first)?;
-                    if !matches!(
-                        inv.kind,
-                        Action::Move | Action::ChangeLane | Action::FollowLane
-                    ) {
-                        return Err(m.site.err(
-                            K::Unsupported,
-                            format!(
-                                "expected `{}(…)` on `{target}`, a member of random traffic, in a phase of its own beside drive(), move(), follow_lane() or change_lane(…): not run yet beside {}(…), which hands its driver model no speed to change at that rate (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\")",
-                                m.name, inv.action
-                            ),
-                        ));
-                    }
                 }
+                self.check_member_trajectory(p, inv, target)?;
             }
             let e = self.index[target.as_str()];
             // The yaw relative to the road's s-axis of an actor along its lane (§8.9.9).
@@ -253,6 +246,7 @@ impl Planner<'_> {
                 }
             }
             // The action itself, then its modifiers.
+            let before_action = out.len();
             let slot = Slot {
                 target,
                 t0,
@@ -300,6 +294,9 @@ impl Planner<'_> {
                 _ => self.plan_speed_action(p, inv, slot, &mut name)?,
             };
             derived = all_of(derived, action_end);
+            // A member's path followed by the default controller: its model's lateral domain
+            // taken back over the phase where the model holds it.
+            self.member_path_lateral((p, inv), target, &mut name, before_action, (out, after));
             // Speed first, position at end last: it builds on the phase's speed.
             let mut ordered: Vec<&Modifier> = mods.iter().collect();
             ordered.sort_by_key(|m| {

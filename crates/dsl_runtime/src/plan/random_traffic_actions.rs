@@ -208,6 +208,18 @@ fn lane_change_to(x: &str, by: i32) -> PrivateAction {
     })
 }
 
+/// The ActivateControllerAction that gives a member's driver back its lateral domain (`on`)
+/// or takes it away for the default controller (`!on`).
+fn lateral(on: bool) -> PrivateAction {
+    PrivateAction::Controller(Box::new(ControllerAction::Activate {
+        object_controller_ref: None,
+        domains: ControllerDomains {
+            lateral: Some(on),
+            ..ControllerDomains::default()
+        },
+    }))
+}
+
 /// What action `inv` of random traffic after its creation asks of each member's model
 /// (`idm`: its members keep their lanes, their model changes none), its own duration if any;
 /// bad input at the place of what no model takes.
@@ -410,15 +422,6 @@ impl Planner<'_> {
                 ));
             }
         }
-        let lateral = |on: bool| {
-            PrivateAction::Controller(Box::new(ControllerAction::Activate {
-                object_controller_ref: None,
-                domains: ControllerDomains {
-                    lateral: Some(on),
-                    ..ControllerDomains::default()
-                },
-            }))
-        };
         for (i, m) in members.iter().enumerate() {
             let name = |what: &str| format!("{}/{m}/{}:{what}", p.path, i + 1);
             // The lane it is in, at its centre (a change the model was making ends there), or
@@ -532,6 +535,63 @@ impl Planner<'_> {
             }
         }
         Ok(())
+    }
+
+    /// Refuses a member's own `follow_trajectory(…)` or `replay_trajectory(…)` (phase `p`,
+    /// invocation `inv`) as not run yet: the FollowTrajectoryAction timed by its points holds
+    /// both motion domains, and the engine hands it to the member's model, which holds the
+    /// longitudinal one and takes no trajectory (it would be ignored: engine
+    /// controller/strategy.rs).
+    pub(super) fn check_member_trajectory(
+        &self,
+        p: &Phase,
+        inv: &Invoke,
+        target: &str,
+    ) -> Result<(), Error> {
+        if !matches!(
+            inv.kind,
+            Action::FollowTrajectory | Action::ReplayTrajectory
+        ) {
+            return Ok(());
+        }
+        Err(p.site.err(
+            K::Unsupported,
+            format!("expected no {}(…) of `{target}`, a member of random traffic: not run yet, its trajectory's times would set the speed its driver model sets ({BEHAVIOUR}), and the model takes no trajectory; follow_path(…) runs (the model keeps the speed along the path)", inv.action),
+        ))
+    }
+
+    /// A member's own path action (`follow_path`, `replay_path`, `change_position`: a
+    /// FollowTrajectoryAction without a time reference, which holds the lateral domain only),
+    /// of phase `p` planned at `out[at..]` for `target`: where its driver model holds the lateral domain
+    /// (`mobil`) the engine would hand the path to the model, which takes none, so the
+    /// model's lateral domain is taken back before the action (the default controller
+    /// follows the path at the speed the model gives) and given back at the phase end
+    /// (`after`), as `follow_lane()` of random traffic does (module doc). The `idm` holds no
+    /// lateral domain: nothing to take.
+    pub(super) fn member_path_lateral(
+        &self,
+        (p, inv): (&Phase, &Invoke),
+        target: &str,
+        name: &mut dyn FnMut(&str) -> String,
+        at: usize,
+        (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
+    ) {
+        let path = matches!(
+            inv.kind,
+            Action::FollowPath | Action::ReplayPath | Action::ChangePosition
+        );
+        if !path || !self.random_member(target) || self.driver_model(target) != Some("mobil") {
+            return;
+        }
+        let site = &p.site;
+        let take = Planned::with_phase(target, name("path_lateral"), lateral(false), site);
+        out.insert(at, take);
+        after.push(Planned::with_phase(
+            target,
+            name("path_lateral_end"),
+            lateral(true),
+            site,
+        ));
     }
 
     /// The driver model of member `m` of random traffic (`idm`, `mobil`), if it has one.

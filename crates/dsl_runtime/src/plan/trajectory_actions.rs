@@ -237,13 +237,18 @@ impl Planner<'_> {
             Some(t) => self.track(target).at(t).1,
             None => self.last_v.get(target).copied().unwrap_or(0.0),
         };
-        if v <= 0.0 {
+        let cut = cut(inv, points, *smooth, offsets)?;
+        // After a run-time condition a member of random traffic has the speed its model gives
+        // it then (§8.7.18.1), which the plan does not know: the engine moves it along the
+        // path at that speed (its own acceleration beside the path a free-road acceleration,
+        // `member_acceleration`). Only a phase the plan ends by the path's length needs one.
+        let model_speed = t0.is_none() && self.random_member(target) && cut.end_offset <= 0.0;
+        if v <= 0.0 && !model_speed {
             return Err(p.site.err(
                 K::Unsatisfiable,
                 format!("expected `{target}` moving at the start of {}(…) (it moves at the speed it has), found it standing", inv.action),
             ));
         }
-        let cut = cut(inv, points, *smooth, offsets)?;
         let end = self.end_of(place, cut.end_point)?;
         let n = name(&inv.action);
         // follow_path steers within the vehicle's limits; replay_path follows exactly.

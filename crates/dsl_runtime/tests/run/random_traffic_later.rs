@@ -487,28 +487,103 @@ fn a_members_own_acceleration_beside_keep_speed_or_remain_stationary_is_bad_inpu
 }
 
 #[test]
-fn a_members_own_acceleration_beside_a_position_action_or_toward_a_relative_speed_is_not_run_yet() {
-    // Beside assign_position(…) (no speed to change at the rate: 22:17, the modifier) and as
-    // the rate toward a speed relative to ego (its speed at the phase end unknown when the
-    // phase starts: 20:17, the speed modifier): not-run-yet refusals before the run, on every
-    // seed.
-    let position = "expected `acceleration(…)` on `g.vehicles[0]`, a member of random traffic, in a phase of its own beside drive(), move(), follow_lane() or change_lane(…): not run yet beside assign_position(…)";
+fn a_members_own_acceleration_toward_a_relative_speed_or_its_own_timed_trajectory_is_not_run_yet() {
+    // As the rate toward a speed relative to ego (its speed at the phase end unknown when the
+    // phase starts: 20:17, the speed modifier), and a member's own follow_trajectory(…) (a
+    // trajectory timed by its points sets the speed its model sets, and the model takes none:
+    // 28:13, the invocation; before, the engine ignored it): not-run-yet refusals before the
+    // run, on every seed.
     let relative = "expected `speed(…)` on `g.vehicles[0]`, a member of random traffic, at the rate of `acceleration(…)` toward a speed of its own: not run yet toward one relative to `ego`";
+    let trajectory = "expected no follow_trajectory(…) of `g.vehicles[0]`, a member of random traffic: not run yet, its trajectory's times would set the speed its driver model sets";
     for (name, what, at) in [
-        (
-            "err_random_traffic_member_own_acceleration_position",
-            position,
-            "22:17",
-        ),
         (
             "err_random_traffic_member_own_acceleration_relative",
             relative,
             "20:17",
         ),
+        (
+            "err_random_traffic_member_own_trajectory",
+            trajectory,
+            "28:13",
+        ),
     ] {
         refused_on_every_seed(name, (what, at), |e| {
             matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported)
         });
+    }
+}
+
+#[test]
+fn a_members_own_acceleration_beside_a_path_or_position_action_is_its_models_free_road_acceleration(
+) {
+    // random_traffic_member_own_acceleration_path.osc, worked in the file (before, refused as
+    // not run yet at the modifier): one member standing with v0 = 0 (its model `mobil`), no
+    // leader in its lane. replay_path(q0 -> q1) with 2 m/s² over 3.05-5.05 s: at q0 in the
+    // frame of 3.10 s, 0.1 m/s; 2.0 m/s and 0.95 m along the path at 4.05 s; 4.0 m/s and 3.9 m
+    // at 5.05 s; released, −1.67 m/s²: 2.4135 m/s at 6.0 s, standing from 7.45 s.
+    // assign_position(s = 900 m, lane −2) with 2 m/s² from 8.05 s: there at 0.1 m/s at 8.10 s,
+    // 0.0165 m/s at 8.15 s, standing at 8.20 s. Seeds 0-3: the member's first place is drawn,
+    // the path's and the teleport's are not.
+    let m = "g.vehicles[0]";
+    let want = [
+        (3.05, 0.0),
+        (3.1, 0.1),
+        (4.05, 2.0),
+        (5.05, 4.0),
+        (6.0, 2.4135),
+        (7.4, 0.0755),
+        (7.45, 0.0),
+        (8.05, 0.0),
+        (8.1, 0.1),
+        (8.15, 0.0165),
+        (8.2, 0.0),
+    ];
+    let runs = member_speeds("random_traffic_member_own_acceleration_path", &want);
+    let (h, (ux, uy)) = (
+        (3.5f64 / 80.0).atan(),
+        (80.0 / 80.076_525_898_667_71, 3.5 / 80.076_525_898_667_71),
+    );
+    for (seed, r) in runs.iter().enumerate() {
+        // On the path (the default controller's, not the model's lane): d along it from q0.
+        for (t, d) in [(3.1, 0.0), (4.05, 0.95), (5.05, 3.9)] {
+            let o = r.at(t, m);
+            let (x, y) = (400.0 + d * ux, -5.25 + d * uy);
+            assert!(
+                (o.x - x).abs() < 1e-6 && (o.y - y).abs() < 1e-6 && (o.h - h).abs() < 1e-9,
+                "seed {seed} at {t}: ({}, {}, {}), not ({x}, {y}, {h})",
+                o.x,
+                o.y,
+                o.h
+            );
+        }
+        let o = r.at(8.1, m);
+        assert!(
+            (o.x - 900.0).abs() < 1e-6 && (o.y + 5.25).abs() < 1e-6,
+            "seed {seed}: {o:?}"
+        );
+        // The lateral domain taken from the model and given back at the path's phase; the
+        // free-road acceleration handed and released at each phase's start and end; the path
+        // never handed to the model (ignored).
+        let notes = |t: f64, what: &str| {
+            r.controllers
+                .iter()
+                .filter(|(at, who, note)| who == m && (at - t).abs() < 1e-9 && note.contains(what))
+                .count()
+        };
+        assert!(
+            notes(3.05, "activation changed") == 1 && notes(5.05, "activation changed") == 1,
+            "seed {seed}: {:?}",
+            r.controllers
+        );
+        let (all, at) = free_road_notes(r, m);
+        assert_eq!(at, ["3.05", "5.05", "8.05", "8.10"], "seed {seed}: {all:?}");
+        assert!(
+            r.controllers
+                .iter()
+                .all(|(_, _, note)| !note.contains("ignored")),
+            "seed {seed}: {:?}",
+            r.controllers
+        );
     }
 }
 
