@@ -18,19 +18,39 @@
 //! Here, once the step's commands are merged, the driver models' changes into each lane are
 //! taken in that order: front bumper furthest along the direction of travel first; of equal
 //! fronts, the change from the keep side of the lane first (SUMO's rightmost lane under
-//! right-hand traffic); then by entity index. A change yields when a vehicle coming from the
-//! lane's other side would be next to it in the lane and fails MOBIL's safety criterion there,
-//! as the changer's model judges its own changes (controller/mobil.rs `gap_safe`; boxes that
-//! overlap along the lane always fail): a change taken before it in this order, or a change
-//! under way into the lane (the vehicle's lane track names the lane, its lateral transition
-//! leaving the lane beyond it), searched in the lane beyond within the changer's gap-search
-//! horizon ([`ControllerView::horizon`](super::view::ControllerView::horizon)). A yielding
-//! change is not started, and its model is as if it had decided none
-//! ([`DriverModel::yield_change`]): it decides again in the next step, and finds the other
-//! vehicle in the lane. A change from the same side is not weighed: the two keep the order and
-//! the gap they have in the lane they leave. A LaneChangeAction handed to a `mobil` is carried
-//! out as ordered, as before: it does not yield, and counts as taken. A change whose lane track
-//! and box are on different roads (at a road's end) is neither weighed nor weighed against.
+//! right-hand traffic); then by entity index. A change yields when another vehicle would be
+//! next to it in the lane and fails MOBIL's safety criterion there, as the changer's model
+//! judges its own changes (controller/mobil.rs `gap_safe`; boxes that overlap along the lane
+//! always fail): a change taken before it in this order, from either side, or a change under
+//! way into the lane (the vehicle's lane track names the lane, its lateral transition leaving
+//! the lane beyond it or the changer's own lane), searched in those two lanes within the
+//! changer's gap-search horizon
+//! ([`ControllerView::horizon`](super::view::ControllerView::horizon)). A yielding change is
+//! not started, and its model is as if it had decided none ([`DriverModel::yield_change`]): it
+//! decides again in the next step, and finds the other vehicle in the lane.
+//!
+//! **From the same side too.** Two vehicles of one lane judge the target lane from the step's
+//! start, where neither is in it, so both can take the same gap in one step, and for the steps
+//! until the first one's box reaches the lane the second still finds the gap free. SUMO weighs
+//! them: `MSLaneChanger::getRealLeader` makes the vehicle that hopped into the target lane in
+//! the step (`hoppedVeh`) the next candidate's leader there, whichever lane it came from, and a
+//! vehicle changing is found as a leader on both lanes (`continueChange`: "set as hoppedVeh on
+//! the shadow lane so it is found as leader on both lanes"; eclipse-sumo/sumo
+//! src/microsim/MSLaneChanger.cpp). So here: the one behind (the one in front goes first)
+//! weighs the one in front as its leader in the lane, at the gap it has behind it now. The two
+//! keep their order and that gap, so its ã_c there is its acceleration behind it now: it yields
+//! only where it already brakes harder than b_safe behind it (the one in front cut in close, or
+//! stands), a gap it would not change into behind it. SUMO's model also judges the change's
+//! incentive with that leader (its own gain then is none); oscsim's rule weighs safety only,
+//! as for the other side.
+//!
+//! A LaneChangeAction of the storyboard (on an entity no `mobil` holds the lateral domain of)
+//! is weighed as a change under way from the step it starts in: it sets the entity's lane
+//! track to the target lane with the lateral transition from its lane (actions/lane_change.rs),
+//! in the actions stage, before this stage reads the tracks; it never yields. A LaneChangeAction
+//! handed to a `mobil` is carried out as ordered, as before: it does not yield, and counts as
+//! taken. A change whose lane track and box are on different roads (at a road's end) is
+//! neither weighed nor weighed against.
 //!
 //! Ordinary MOBIL traffic has the same conflict (tests/controller/user_controllers.rs
 //! `mobil_changes_from_both_sides_into_one_gap_one_after_the_other`), so its changes follow the
@@ -219,10 +239,11 @@ pub(crate) fn resolve(
         };
         let p = &x.place;
         let entity_id = view.entity().id;
-        // The changes taken before it from the lane's other side.
+        // The changes taken before it into the lane, from either side (module doc: SUMO's
+        // hopped vehicle is the next candidate's leader there, whichever lane it came from).
         let earlier = changes[group..j]
             .iter()
-            .filter(|y| y.taken && y.place.from != p.from)
+            .filter(|y| y.taken)
             .filter_map(|y| {
                 let e = world.entities.get(y.place.entity)?;
                 let fp = world.index.footprint(e.id)?;
@@ -234,7 +255,8 @@ pub(crate) fn resolve(
                     fp.speed_along(p.direction),
                 ))
             });
-        // The changes under way into the lane from the lane beyond it.
+        // The changes under way into the lane from the lane beyond it, and from the lane the
+        // changer leaves (its box still there, not yet in the lane's index).
         let beyond = lane_shift(x.lane, if p.left { 1 } else { -1 }, p.direction);
         let track_s = world
             .index
@@ -242,25 +264,33 @@ pub(crate) fn resolve(
             .and_then(|i| i.track.as_ref())
             .map_or(Real::NAN, |t| t.s);
         let horizon = view.horizon();
-        let under_way = world
-            .network
-            .lane_handle_on(p.road, beyond, track_s)
+        let under_way = [beyond, p.from]
             .into_iter()
-            .flat_map(|h| {
-                world.index.overlapping(
-                    h,
-                    (p.s_range.0 - horizon, p.s_range.1 + horizon),
-                    entity_id,
-                    None,
-                )
+            .flat_map(|from| {
+                world
+                    .network
+                    .lane_handle_on(p.road, from, track_s)
+                    .into_iter()
+                    .map(move |h| (h, from))
             })
-            .filter_map(|id| {
+            .flat_map(|(h, from)| {
+                world
+                    .index
+                    .overlapping(
+                        h,
+                        (p.s_range.0 - horizon, p.s_range.1 + horizon),
+                        entity_id,
+                        None,
+                    )
+                    .map(move |id| (id, from))
+            })
+            .filter_map(|(id, from)| {
                 let t = world.index.input(id.index())?.track?;
                 let fp = world.index.footprint(id)?;
                 (t.road == p.road
                     && fp.handle.road == p.road.0
                     && t.lane_id == x.lane
-                    && t.blend_from == Some(beyond))
+                    && t.blend_from == Some(from))
                 .then(|| {
                     next_to(
                         p.s_range,

@@ -566,6 +566,60 @@ fn hardest_braking(rows: &Rows, name: &str) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
+/// Two lane changes from one lane into one gap (engine controller/one_gap.rs "From the same
+/// side too"; found-not-fixed item 3): mobil_one_gap_same_lane.xosc, Front (mobil) at s = 110
+/// and Back (mobil) at s = 100 in lane −1 at 30 m/s, lanes −2 and −3 free. Boxes 5 m from
+/// 1.1 m behind the reference point: the gap is s_F − s_B − 5 = 5 m. By the IDM (a = 0.73
+/// m/s², b = 1.67 m/s², T = 1.6 s, s0 = 2 m, δ = 4, v0 = 30 m/s), Back behind Front at 30/30
+/// m/s: s* = 2 + 30·1.6 = 50 m, −0.73·(50/5)² = −73 m/s² (its Performance brakes it at 10); in
+/// the free lane −2 0: both take lane −2 in the first step (Front by the keep-right bias 0.3 >
+/// 0.1 and Back's gain as its old follower). Front, further downstream, goes first; Back
+/// weighs it as its leader in lane −2 at the gap it has behind it, and yields while its IDM
+/// acceleration there, ã_c = a(1 − (v/v0)⁴) − a·(s*/gap)², s* = s0 + vT + v(v − v_F)/(2√(ab)),
+/// is below −b_safe = −4 m/s² (then Front's change is under way from Back's own lane, weighed
+/// so); braking at 10 m/s² it falls back and the gap opens, and in the first step where ã_c ≥
+/// −4 it changes (the criterion's own number, worked out here from the frames). Before, both
+/// started at once, Back's t leaving −1.75 in the first frame at −73 m/s² behind Front.
+#[test]
+fn mobil_changes_from_one_lane_into_one_gap_the_one_behind_weighs_the_one_ahead() {
+    let (rows, _) = run_with("mobil_one_gap_same_lane.xosc", &[]);
+    assert!(
+        rows.at("Front", 0.05).t < -1.7505,
+        "{:?}",
+        rows.at("Front", 0.05)
+    );
+    // Back's IDM acceleration behind Front at the frame of `time`.
+    let behind_front = |time: f64| {
+        let (b, f) = (rows.at("Back", time), rows.at("Front", time));
+        let (a, bb, t_gap, s0) = (0.73_f64, 1.67_f64, 1.6, 2.0);
+        let gap = f.s - b.s - 5.0;
+        let star = s0 + b.speed * t_gap + b.speed * (b.speed - f.speed) / (2.0 * (a * bb).sqrt());
+        a * (1.0 - (b.speed / 30.0).powi(4)) - a * (star.max(0.0) / gap).powi(2)
+    };
+    assert!(
+        (behind_front(0.0) + 73.0).abs() < 1e-9,
+        "{}",
+        behind_front(0.0)
+    );
+    let start = rows
+        .of("Back")
+        .find(|r| r.t != -1.75)
+        .map(|r| r.time - 0.05)
+        .expect("Back changes later");
+    let mut time = 0.0;
+    while time < start - 1e-9 {
+        let a = behind_front(time);
+        assert!(a < -4.0, "Back yields at {time}: ã_c = {a}");
+        assert_eq!(rows.at("Back", time + 0.05).t, -1.75, "{time}");
+        time += 0.05;
+    }
+    let a = behind_front(start);
+    assert!(a >= -4.0, "Back changes at {start}: ã_c = {a}");
+    assert!(start > 0.0, "Back yielded in the first step");
+    assert_eq!(rows.at("Front", 5.0).lane, -2);
+    assert_eq!(overlaps(&rows), 0);
+}
+
 /// Issue 27, two lane changes into one gap (engine controller/one_gap.rs): mobil_one_gap.xosc,
 /// Left (mobil) at 30 m/s in lane −1 and Right (mobil, desired speed 40 m/s) at 30 m/s in lane
 /// −3 both decide on lane −2, empty, in the first step. By hand (IDM T = 1.6 s, s0 = 2 m,
