@@ -9,7 +9,10 @@
 //! the road, giving an s-range and a t-range (the local linearisation at the reference point;
 //! on a curve of radius R the box's length is off by a factor 1 ± t/R, under 1 % for a
 //! highway's R ≥ 1 km). The entity is entered in every lane of that lane section whose borders
-//! its t-range overlaps, so a vehicle changing lanes is in both lanes. An entity on a road of a
+//! its t-range overlaps, so a vehicle changing lanes is in both lanes (and in its new lane only
+//! once its box reaches it: until then controller/one_gap.rs weighs the change under way by the
+//! entity's lane track, a driver model's or a storyboard LaneChangeAction's alike, against a
+//! driver model's change into the same lane). An entity on a road of a
 //! junction is entered as well on the other roads of that junction whose surface holds the
 //! centre of its box, in the lanes its box overlaps there: crossing traffic inside a junction
 //! is seen from the connecting road taken.

@@ -620,6 +620,28 @@ fn mobil_changes_from_one_lane_into_one_gap_the_one_behind_weighs_the_one_ahead(
     assert_eq!(overlaps(&rows), 0);
 }
 
+/// A storyboard LaneChangeAction and a driver model's change into one gap (engine
+/// controller/one_gap.rs; found-not-fixed item 5: the lane index enters the action's car in
+/// its new lane only once its box reaches it, store/lane_index.rs): mobil_one_gap_action.xosc,
+/// Left (mobil) at 30 m/s in lane −1 takes lane −2 in the first step by the keep-right bias;
+/// Right (no user controller) level with it in lane −3 at 30 m/s is moved to lane −2 by an
+/// Init LaneChangeAction in the same step. The action sets Right's lane track to −2 with its
+/// transition from −3 in the actions stage, before the controllers stage reads the tracks, so
+/// Left finds Right's change under way from the lane beyond, level with it (boxes overlapping
+/// along the lane fail MOBIL's safety criterion), and yields; from 1.37 s Right's box is in
+/// lane −2, alongside Left, and Left's MOBIL finds no gap there. Both keep 30 m/s, level: Left
+/// keeps lane −1's centre t = −1.75 in every frame to the end (20 s); Right is in lane −2 from
+/// 4 s; no overlap.
+#[test]
+fn a_storyboard_lane_change_into_a_gap_is_weighed_by_a_driver_models_change_into_it() {
+    let (rows, _) = run_with("mobil_one_gap_action.xosc", &[]);
+    for r in rows.of("Left") {
+        assert_eq!(r.t, -1.75, "Left yields: {r:?}");
+    }
+    assert_eq!(rows.at("Right", 5.0).lane, -2);
+    assert_eq!(overlaps(&rows), 0);
+}
+
 /// Issue 27, two lane changes into one gap (engine controller/one_gap.rs): mobil_one_gap.xosc,
 /// Left (mobil) at 30 m/s in lane −1 and Right (mobil, desired speed 40 m/s) at 30 m/s in lane
 /// −3 both decide on lane −2, empty, in the first step. By hand (IDM T = 1.6 s, s0 = 2 m,
