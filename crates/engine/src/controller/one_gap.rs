@@ -49,8 +49,18 @@
 //! track to the target lane with the lateral transition from its lane (actions/lane_change.rs),
 //! in the actions stage, before this stage reads the tracks; it never yields. A LaneChangeAction
 //! handed to a `mobil` is carried out as ordered, as before: it does not yield, and counts as
-//! taken. A change whose lane track and box are on different roads (at a road's end) is
-//! neither weighed nor weighed against.
+//! taken.
+//!
+//! **Not weighed yet: across a road's joint.** The changes are grouped and measured on one
+//! road (its s): a change whose lane track and box are on different roads (the steps where its
+//! reference point has passed a road's end and its track not yet, or the other way) is neither
+//! weighed nor weighed against, and two changes into one lane on either side of a joint (one
+//! near road A's end, one at the start of its successor B, into the lane and its continuation)
+//! are in different groups, and a change under way is searched on the changer's road only. So
+//! two vehicles can still take one gap that spans a road's joint in the same step. Weighing
+//! them needs the places on one measure across the lane links (OpenDRIVE 1.8 §11.5; the lane
+//! graph's successors and predecessors, as store/lane_index.rs walks them for the gap
+//! searches): not done.
 //!
 //! Ordinary MOBIL traffic has the same conflict (tests/controller/user_controllers.rs
 //! `mobil_changes_from_both_sides_into_one_gap_one_after_the_other`), so its changes follow the
