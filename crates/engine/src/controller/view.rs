@@ -367,9 +367,7 @@ impl<'a> ControllerView<'a> {
     pub(crate) fn occupied_beside(&self, b: &Beside) -> bool {
         self.index.footprint(self.input.id).is_some_and(|me| {
             self.index
-                .overlapping(b.at.0, me.s_range, self.input.id, self.hint(b.lane, 2))
-                .next()
-                .is_some()
+                .occupied(b.at.0, me.s_range, self.input.id, self.hint(b.lane, 2))
         })
     }
 

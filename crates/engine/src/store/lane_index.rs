@@ -44,6 +44,16 @@
 //! sorted by lo, so "lo < from" holds on a prefix of it and fails on the rest, and the walk
 //! stops where the prefix ends, wherever it starts. Where a lo is NaN that is not so, and the
 //! search is `partition_point` alone, as it was.
+//!
+//! **The last answer re-validated.** The two questions a driver model asks most are its
+//! leader (the nearest ahead from its front bumper in its own lane) and whether the lane
+//! beside is occupied alongside (any entry overlapping its own s-range). Each step the answer
+//! is usually where the hint points: the leader is the entry at the hint and the entity itself
+//! the one before it; an occupant is the entry just before the hint. Where the entries there
+//! prove that the search would give that answer ([`leader_at_hint`], [`occupied_at_hint`]:
+//! a few comparisons whose proof is the lane's order), it is returned without the search;
+//! where they do not, the search runs as before. The same answers bit for bit (the proofs at
+//! the two functions; `store::lane_search_tests`).
 
 use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::Arc;
@@ -640,7 +650,7 @@ impl LaneIndex {
 
     /// The entries of lane `h` (empty where no entity is in it).
     #[inline]
-    fn lane(&self, h: LaneHandle) -> Option<&LaneEntries> {
+    pub(super) fn lane(&self, h: LaneHandle) -> Option<&LaneEntries> {
         let slot = self.slots.as_ref()?.slot(h)?;
         self.lanes.get(slot)
     }
@@ -653,6 +663,33 @@ impl LaneIndex {
     /// The footprint of entity `id` in this step, if it stands on a road.
     pub fn footprint(&self, id: EntityId) -> Option<&Footprint> {
         self.footprints.get(id.index())?.as_ref()
+    }
+
+    /// Whether some entity other than `exclude` has a footprint in lane `h` overlapping the
+    /// s-range `lo..hi`: [`overlapping`](Self::overlapping) finds one, answered from the hint
+    /// where the entry there proves it ([`occupied_at_hint`]).
+    #[inline]
+    pub fn occupied(
+        &self,
+        h: LaneHandle,
+        range: (Real, Real),
+        exclude: EntityId,
+        hint: Option<&AtomicU32>,
+    ) -> bool {
+        let at_hint = || occupied_at_hint(self.lane(h)?, range, exclude, hint?).then_some(());
+        at_hint().is_some() || self.occupied_searched(h, range, exclude, hint)
+    }
+
+    /// [`occupied`](Self::occupied) by the search: out of line, as [`searched`].
+    #[inline(never)]
+    fn occupied_searched(
+        &self,
+        h: LaneHandle,
+        range: (Real, Real),
+        exclude: EntityId,
+        hint: Option<&AtomicU32>,
+    ) -> bool {
+        self.overlapping(h, range, exclude, hint).next().is_some()
     }
 
     /// The entities whose footprint lies in lane `h` and overlaps the s-range `lo..hi`, other
@@ -777,51 +814,134 @@ impl LaneIndex {
         hint: Option<&AtomicU32>,
     ) -> Option<Neighbour> {
         let lane = self.lane(h)?;
-        let entries = &lane.entries;
-        let p = position(lane, from, hint);
-        match direction {
-            Direction::Forward => {
-                // An entry starting before `from` but reaching past it overlaps: gap 0.
-                let overlapping = entries[..p]
-                    .iter()
-                    .rev()
-                    .take_while(|e| e.lo >= from - lane.max_len)
-                    .find(|e| e.hi > from && e.id != exclude);
-                if let Some(e) = overlapping {
-                    return Some(Neighbour {
-                        id: e.id,
-                        gap: 0.0,
-                        direction,
-                    });
-                }
-                entries[p..]
-                    .iter()
-                    .find(|e| e.id != exclude)
-                    .map(|e| Neighbour {
-                        id: e.id,
-                        gap: e.lo - from,
-                        direction,
-                    })
-            }
-            Direction::Backward => {
-                // Entries starting before `from`: the one whose far end hi is largest.
-                let mut best: Option<&Entry> = None;
-                for e in entries[..p].iter().rev() {
-                    if best.is_some_and(|b| e.lo + lane.max_len < b.hi) {
-                        break;
-                    }
-                    if e.id != exclude && best.map_or(true, |b| e.hi > b.hi) {
-                        best = Some(e);
-                    }
-                }
-                best.map(|e| Neighbour {
-                    id: e.id,
-                    gap: (from - e.hi).max(0.0),
-                    direction,
-                })
+        if direction == Direction::Forward {
+            if let Some(found) = hint.and_then(|hint| leader_at_hint(lane, from, exclude, hint)) {
+                return Some(found);
             }
         }
+        searched(lane, from, direction, exclude, hint)
     }
+}
+
+/// [`LaneIndex::in_lane`] in `lane` by the search: out of line, so that the answer the hint
+/// proves costs no saving of the search's registers.
+#[inline(never)]
+pub(super) fn searched(
+    lane: &LaneEntries,
+    from: Real,
+    direction: Direction,
+    exclude: EntityId,
+    hint: Option<&AtomicU32>,
+) -> Option<Neighbour> {
+    let entries = &lane.entries;
+    let p = position(lane, from, hint);
+    match direction {
+        Direction::Forward => {
+            // An entry starting before `from` but reaching past it overlaps: gap 0.
+            let overlapping = entries[..p]
+                .iter()
+                .rev()
+                .take_while(|e| e.lo >= from - lane.max_len)
+                .find(|e| e.hi > from && e.id != exclude);
+            if let Some(e) = overlapping {
+                return Some(Neighbour {
+                    id: e.id,
+                    gap: 0.0,
+                    direction,
+                });
+            }
+            entries[p..]
+                .iter()
+                .find(|e| e.id != exclude)
+                .map(|e| Neighbour {
+                    id: e.id,
+                    gap: e.lo - from,
+                    direction,
+                })
+        }
+        Direction::Backward => {
+            // Entries starting before `from`: the one whose far end hi is largest.
+            let mut best: Option<&Entry> = None;
+            for e in entries[..p].iter().rev() {
+                if best.is_some_and(|b| e.lo + lane.max_len < b.hi) {
+                    break;
+                }
+                if e.id != exclude && best.map_or(true, |b| e.hi > b.hi) {
+                    best = Some(e);
+                }
+            }
+            best.map(|e| Neighbour {
+                id: e.id,
+                gap: (from - e.hi).max(0.0),
+                direction,
+            })
+        }
+    }
+}
+
+/// [`LaneIndex::in_lane`]'s answer travelling forward from `from` in `lane`, other than
+/// `exclude`, where the entries at the `hint` prove it (module doc "The last answer
+/// re-validated"); `None` where they do not (then the search gives it).
+///
+/// Why it is the search's answer. Let p be the hint, `me` = entries[p − 1] and `next` =
+/// entries[p]. The lane holds no NaN lo (`unordered` false), so its order by `total_cmp` of lo
+/// is the numeric order (−0 before +0, which compare equal). me.lo < from (so `from` is not
+/// NaN), so every entry up to p − 1 has lo < from; next.lo ≥ from, so no entry from p on has:
+/// p is the search's `partition_point`. Its backward scan for an entry overlapping `from` meets
+/// `me` first, whose id is `exclude` (not found), then entries[p − 2], where lo < from − max_len
+/// stops it (its `take_while` goes on while lo ≥ from − max_len), or nothing before it: no
+/// overlap. Its forward look then takes the first entry from p whose id is not `exclude`:
+/// `next`, at gap next.lo − from. The hint is left as it is: p is where the search would store
+/// it.
+#[inline(always)]
+pub(super) fn leader_at_hint(
+    lane: &LaneEntries,
+    from: Real,
+    exclude: EntityId,
+    hint: &AtomicU32,
+) -> Option<Neighbour> {
+    if lane.unordered {
+        return None;
+    }
+    let p = hint.load(Ordering::Relaxed) as usize;
+    let entries = &lane.entries[..];
+    let (me, next) = (entries.get(p.checked_sub(1)?)?, entries.get(p)?);
+    let before_stops = match p.checked_sub(2) {
+        // Stops the scan ("lo < bound" where the scan goes on while "lo >= bound"; a NaN
+        // bound, which stops it too, is left to the search).
+        Some(k) => entries[k].lo < from - lane.max_len,
+        None => true,
+    };
+    (me.id == exclude && me.lo < from && next.lo >= from && before_stops && next.id != exclude)
+        .then_some(Neighbour {
+            id: next.id,
+            gap: next.lo - from,
+            direction: Direction::Forward,
+        })
+}
+
+/// Whether the entry just before the `hint` proves that [`LaneIndex::overlapping`] finds an
+/// entity in `lane` for the s-range `lo..hi` other than `exclude` (module doc "The last answer
+/// re-validated"); `false` where it does not (then the search answers).
+///
+/// Why. Let e = entries[p − 1] for the hint p. The lane holds no NaN lo, so its order is the
+/// numeric order of lo. e.lo < hi, so p − 1 is before the search's end (`position` of hi:
+/// every entry before the end has lo < hi, none after). The search scans back from the end
+/// while lo ≥ hi's bound lo − max_len: every entry from p − 1 to the end has lo ≥ e.lo ≥ that
+/// bound, so the scan reaches e unless it has found an entity before; and e, with e.hi > lo and
+/// an id other than `exclude`, is one it finds. Either way it finds one.
+#[inline(always)]
+pub(super) fn occupied_at_hint(
+    lane: &LaneEntries,
+    (lo, hi): (Real, Real),
+    exclude: EntityId,
+    hint: &AtomicU32,
+) -> bool {
+    let p = hint.load(Ordering::Relaxed) as usize;
+    let Some(e) = p.checked_sub(1).and_then(|k| lane.entries.get(k)) else {
+        return false;
+    };
+    !lane.unordered && e.lo < hi && e.lo >= lo - lane.max_len && e.hi > lo && e.id != exclude
 }
 
 #[cfg(test)]
@@ -981,6 +1101,44 @@ mod tests {
             .overlapping(f.handle, f.s_range, EntityId(1), None)
             .collect();
         assert_eq!(beside, vec![EntityId(2)]);
+    }
+
+    /// Boxes that touch end to end do not occupy each other's length, whether the answer is
+    /// taken at the hint or searched: cars of 5 m whose box centre is 1.5 m ahead of the
+    /// reference point (box s − 1 .. s + 4, exact in binary), car 0 in lane −1 at s 10 (9..14),
+    /// car 1 in lane −2 at s 15 (14..19, its lo car 0's hi), car 2 in lane −2 at s 5 (4..9,
+    /// its hi car 0's lo); car 3 in lane −2 at s 12 (11..16) overlaps. From every hint.
+    #[test]
+    fn boxes_end_to_end_are_not_alongside() {
+        let b = BoundingBox::new(Vector3::new(1.5, 0.0, 0.75), 5.0, 2.0, 1.5).expect("box");
+        let cars = [(10.0, -1.75), (15.0, -5.25), (5.0, -5.25), (12.0, -5.25)];
+        let entities = (0..4)
+            .map(|i| Entity::new(EntityId(i), &format!("c{i}"), EntityKind::Vehicle, b))
+            .collect();
+        let mut w = World::new(std::sync::Arc::new(network()), entities);
+        for (i, &(s, t)) in cars.iter().enumerate() {
+            let pose = w.network.road_pose("A", s, t).expect("on road");
+            let found = w.network.locate(pose.x, pose.y, Some(pose.h));
+            w.place_resolved(EntityId(i as u32), pose, found);
+        }
+        let w3 = World::new(
+            std::sync::Arc::clone(&w.network),
+            w.entities()[..3].to_vec(),
+        );
+        for (world, expected) in [(&w3, false), (&w, true)] {
+            let index = LaneIndex::build(&world.network, world.entities());
+            let me = index.footprint(EntityId(0)).expect("on road").clone();
+            assert_eq!((me.s_range.0, me.s_range.1), (9.0, 14.0));
+            let beside = LaneHandle {
+                lane: -2,
+                ..me.handle
+            };
+            for at in 0..5 {
+                let hint = AtomicU32::new(at);
+                let occupied = index.occupied(beside, me.s_range, EntityId(0), Some(&hint));
+                assert_eq!(occupied, expected, "hint {at}");
+            }
+        }
     }
 
     /// The hinted search is `partition_point` (module doc "Hints"): on lists with repeated

@@ -117,7 +117,7 @@ pub(super) fn traffic(name: &str, next: &mut impl FnMut() -> f64) -> (Arc<RoadNe
 /// Changes car `i` through the store (each way marks it written, but the last): mostly
 /// moved along its lane, sometimes across it, placed elsewhere, hidden from traffic or shown,
 /// taken off the road or put back, its box or its heading relative to the road changed.
-fn write_through_store(w: &mut World, i: usize, next: &mut impl FnMut() -> f64) {
+pub(super) fn write_through_store(w: &mut World, i: usize, next: &mut impl FnMut() -> f64) {
     let id = EntityId(i as u32);
     let ds = 0.05 * 30.0 * next();
     match next() {
