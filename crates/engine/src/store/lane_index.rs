@@ -45,15 +45,17 @@
 //! stops where the prefix ends, wherever it starts. Where a lo is NaN that is not so, and the
 //! search is `partition_point` alone, as it was.
 //!
-//! **The last answer re-validated.** The two questions a driver model asks most are its
-//! leader (the nearest ahead from its front bumper in its own lane) and whether the lane
-//! beside is occupied alongside (any entry overlapping its own s-range). Each step the answer
-//! is usually where the hint points: the leader is the entry at the hint and the entity itself
-//! the one before it; an occupant is the entry just before the hint. Where the entries there
-//! prove that the search would give that answer ([`leader_at_hint`], [`occupied_at_hint`]:
-//! a few comparisons whose proof is the lane's order), it is returned without the search;
-//! where they do not, the search runs as before. The same answers bit for bit (the proofs at
-//! the two functions; `store::lane_search_tests`).
+//! **The last answer re-validated.** The questions a driver model asks each step are its
+//! leader (the nearest ahead from its front bumper in its own lane), whether a lane beside is
+//! occupied alongside (any entry overlapping its own s-range), and the leader and follower
+//! there. Each step the answer is usually where the hint points: the nearest ahead is the
+//! entry at the hint (the entity itself, or an entry starting well before, the one before
+//! it), the nearest behind the entry just before the hint, an occupant the entry just before
+//! the hint. Where the entries there prove that the search would give that answer
+//! ([`ahead_at_hint`], [`behind_at_hint`], [`occupied_at_hint`]: a few comparisons whose
+//! proof is the lane's order), it is returned without the search; where they do not, the
+//! search runs as before. The same answers bit for bit (the proofs at the functions;
+//! `store::lane_search_tests`).
 
 use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::Arc;
@@ -814,12 +816,11 @@ impl LaneIndex {
         hint: Option<&AtomicU32>,
     ) -> Option<Neighbour> {
         let lane = self.lane(h)?;
-        if direction == Direction::Forward {
-            if let Some(found) = hint.and_then(|hint| leader_at_hint(lane, from, exclude, hint)) {
-                return Some(found);
-            }
-        }
-        searched(lane, from, direction, exclude, hint)
+        let at_hint = hint.and_then(|hint| match direction {
+            Direction::Forward => ahead_at_hint(lane, from, exclude, hint),
+            Direction::Backward => behind_at_hint(lane, from, exclude, hint),
+        });
+        at_hint.or_else(|| searched(lane, from, direction, exclude, hint))
     }
 }
 
@@ -883,18 +884,19 @@ pub(super) fn searched(
 /// `exclude`, where the entries at the `hint` prove it (module doc "The last answer
 /// re-validated"); `None` where they do not (then the search gives it).
 ///
-/// Why it is the search's answer. Let p be the hint, `me` = entries[p − 1] and `next` =
-/// entries[p]. The lane holds no NaN lo (`unordered` false), so its order by `total_cmp` of lo
-/// is the numeric order (−0 before +0, which compare equal). me.lo < from (so `from` is not
-/// NaN), so every entry up to p − 1 has lo < from; next.lo ≥ from, so no entry from p on has:
-/// p is the search's `partition_point`. Its backward scan for an entry overlapping `from` meets
-/// `me` first, whose id is `exclude` (not found), then entries[p − 2], where lo < from − max_len
-/// stops it (its `take_while` goes on while lo ≥ from − max_len), or nothing before it: no
-/// overlap. Its forward look then takes the first entry from p whose id is not `exclude`:
-/// `next`, at gap next.lo − from. The hint is left as it is: p is where the search would store
-/// it.
+/// Why it is the search's answer. Let p be the hint and `next` = entries[p]. The lane holds no
+/// NaN lo (`unordered` false), so its order by `total_cmp` of lo is the numeric order (−0
+/// before +0, which compare equal). The entry before p (if any) has lo < from, so every entry
+/// before p has; next.lo ≥ from, so no entry from p on has: p is the search's
+/// `partition_point` (and `from` is not NaN). Its backward scan for an entry overlapping
+/// `from` goes on while lo ≥ from − max_len and takes an entry with hi > from and an id other
+/// than `exclude`: it stops at entries[p − 1] where that starts below from − max_len, or,
+/// where entries[p − 1] is `exclude` (the asking entity itself, which it does not take), at
+/// entries[p − 2] where that starts below, or where there is no entry before: no overlap. Its
+/// forward look then takes the first entry from p whose id is not `exclude`: `next`, at gap
+/// next.lo − from. The hint is left as it is: p is where the search would store it.
 #[inline(always)]
-pub(super) fn leader_at_hint(
+pub(super) fn ahead_at_hint(
     lane: &LaneEntries,
     from: Real,
     exclude: EntityId,
@@ -905,19 +907,59 @@ pub(super) fn leader_at_hint(
     }
     let p = hint.load(Ordering::Relaxed) as usize;
     let entries = &lane.entries[..];
-    let (me, next) = (entries.get(p.checked_sub(1)?)?, entries.get(p)?);
-    let before_stops = match p.checked_sub(2) {
-        // Stops the scan ("lo < bound" where the scan goes on while "lo >= bound"; a NaN
-        // bound, which stops it too, is left to the search).
-        Some(k) => entries[k].lo < from - lane.max_len,
-        None => true,
+    let next = entries.get(p)?;
+    // "lo < bound" stops the scan, which goes on while "lo >= bound" (a NaN bound, which
+    // stops it too, is left to the search).
+    let bound = from - lane.max_len;
+    let stops_at = |k: Option<usize>| k.map_or(true, |k| entries[k].lo < bound);
+    let (below, no_overlap) = match p.checked_sub(1) {
+        None => (true, true),
+        Some(k) => {
+            let e = &entries[k];
+            let passed = e.id == exclude && stops_at(k.checked_sub(1));
+            (e.lo < from, e.lo < bound || passed)
+        }
     };
-    (me.id == exclude && me.lo < from && next.lo >= from && before_stops && next.id != exclude)
-        .then_some(Neighbour {
-            id: next.id,
-            gap: next.lo - from,
-            direction: Direction::Forward,
-        })
+    (below && next.lo >= from && no_overlap && next.id != exclude).then_some(Neighbour {
+        id: next.id,
+        gap: next.lo - from,
+        direction: Direction::Forward,
+    })
+}
+
+/// [`LaneIndex::in_lane`]'s answer travelling backward from `from` in `lane`, other than
+/// `exclude`, where the entries at the `hint` prove it (module doc "The last answer
+/// re-validated"); `None` where they do not.
+///
+/// Why it is the search's answer. Let p be the hint and `e` = entries[p − 1]. As for
+/// [`ahead_at_hint`], e.lo < from and (where there is one) entries[p].lo ≥ from make p the
+/// search's `partition_point`. Its scan back from p − 1 keeps the entry with the largest hi
+/// (ids other than `exclude`), the first met kept first, and stops at an entry whose
+/// lo + max_len is below the kept hi: it keeps e (not `exclude`), then stops at entries[p − 2]
+/// where that is below e.hi, or ends there is none: the answer is e, at gap
+/// max(from − e.hi, 0).
+#[inline(always)]
+pub(super) fn behind_at_hint(
+    lane: &LaneEntries,
+    from: Real,
+    exclude: EntityId,
+    hint: &AtomicU32,
+) -> Option<Neighbour> {
+    if lane.unordered {
+        return None;
+    }
+    let p = hint.load(Ordering::Relaxed) as usize;
+    let entries = &lane.entries[..];
+    let e = entries.get(p.checked_sub(1)?)?;
+    let at_end = entries.get(p).map_or(true, |next| next.lo >= from);
+    let stops = p
+        .checked_sub(2)
+        .map_or(true, |k| entries[k].lo + lane.max_len < e.hi);
+    (e.lo < from && at_end && stops && e.id != exclude).then_some(Neighbour {
+        id: e.id,
+        gap: (from - e.hi).max(0.0),
+        direction: Direction::Backward,
+    })
 }
 
 /// Whether the entry just before the `hint` proves that [`LaneIndex::overlapping`] finds an

@@ -175,7 +175,7 @@ fn the_split_search_gives_the_walks_answers_bit_for_bit() {
 /// times: taken, and left to the search.
 #[test]
 fn the_answers_at_the_hint_are_the_searches_bit_for_bit() {
-    use super::lane_index::{leader_at_hint, occupied_at_hint, searched};
+    use super::lane_index::{ahead_at_hint, behind_at_hint, occupied_at_hint, searched};
     use super::lane_kept_tests::write_through_store;
     use std::collections::HashMap;
     use std::sync::atomic::Ordering;
@@ -217,10 +217,14 @@ fn the_answers_at_the_hint_are_the_searches_bit_for_bit() {
                             let at = hint(&mut hints, 2 * k + j, &mut next);
                             let kept = &hints[&(e.id, h, 2 * k + j)];
                             let lane_entries = index.lane(h);
-                            let proven = dir == Direction::Forward
-                                && lane_entries.is_some_and(|l| {
-                                    leader_at_hint(l, from, e.id, &AtomicU32::new(at)).is_some()
-                                });
+                            let proven = lane_entries.is_some_and(|l| {
+                                let at = AtomicU32::new(at);
+                                match dir {
+                                    Direction::Forward => ahead_at_hint(l, from, e.id, &at),
+                                    Direction::Backward => behind_at_hint(l, from, e.id, &at),
+                                }
+                                .is_some()
+                            });
                             if proven {
                                 leader_taken += 1;
                             } else {
