@@ -184,7 +184,7 @@ impl Planner<'_> {
             &m.site,
         ));
         // From here the engine's controller moves the actor.
-        self.engine_moved.insert(target.to_string(), t0);
+        self.engine_moves(target, t0);
         Ok(())
     }
 }

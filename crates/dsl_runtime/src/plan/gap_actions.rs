@@ -239,7 +239,7 @@ impl Planner<'_> {
         out.push(Planned::with_phase(target, n.clone(), action, &p.site));
         // From here the engine's controller moves the actor (along the road: once it holds the
         // gap, at the reference's speed; across it: at its own speed).
-        self.engine_moved.insert(target.to_string(), t0);
+        self.engine_moves(target, t0);
         // A change that ends its phase (no duration or `until` of the phase's own) leaves the
         // actor at its target when the phase after it starts.
         let ends_phase =

@@ -46,7 +46,8 @@
 //! or an x the engine moves) the engine follows them as they begin (oscsim's
 //! `LateralAction::FollowLanes`: the lane counted from x's new one, its transition at x's
 //! weight at every step), beside its held check, and the actor's lane is the engine's from
-//! the phase start (`engine_moved`: a later phase of it at a time the plan sets is an error); where the invocation has several lane
+//! the phase start (`engine_moved`, `lane_only`: a later phase of it at a time the plan sets
+//! is an error where it reads that lane); where the invocation has several lane
 //! relations, one following of them all (the lane counted from whichever x just began a
 //! change; where several begin in the same step, the first in the modifiers' order: such
 //! relations that then disagree are over-constrained, and the engine's held check of each
@@ -209,11 +210,12 @@ impl Planner<'_> {
     /// One action for every such relation of the invocation, written at the first (`m`): the
     /// actor takes the lane counted from whichever reference just began a change, the first
     /// of them in the modifiers' order where several begin at once. From the phase start
-    /// `t0` (`None`: a run-time start) the actor's lane is the engine's, not its track's: the
-    /// actor is the engine's to move from then on (`engine_moved`), as after a gap action, so
-    /// a later phase of it at a time the plan sets is an error and a relation of another
-    /// actor to it is the engine's to check (issue 27: before, its track kept the lane of the
-    /// phase start, and a later `lane(n)` was checked against that).
+    /// `t0` (`None`: a run-time start) the actor's lane is the engine's, not its track's
+    /// (`engine_moved`, and `lane_only` where nothing else moves it: its speed and place along
+    /// its lane stay the plan's), so a relation of another actor to it is the engine's to
+    /// check, and a later phase of it at a time the plan sets is an error where it reads the
+    /// actor's lane (`Planner::lane_blind_error`; issue 27: before, its track kept the lane of
+    /// the phase start, and a later `lane(n)` was checked against that).
     fn follow_lanes_at_run_time(
         &mut self,
         m: &Modifier,
@@ -237,7 +239,11 @@ impl Planner<'_> {
         }
         let follow = PrivateAction::Lateral(LateralAction::FollowLanes(followed));
         out.push(Planned::with_phase(target, name("lanes"), follow, &m.site));
-        self.engine_moved.entry(target.to_string()).or_insert(t0);
+        if !self.engine_moved.contains_key(target) {
+            // Its lane only: its speed and place along its lane are still the plan's.
+            self.engine_moved.insert(target.to_string(), t0);
+            self.lane_only.insert(target.to_string(), t0);
+        }
         Ok(())
     }
 
@@ -271,7 +277,7 @@ impl Planner<'_> {
                 _ => {
                     // x's speed is the engine's: so is the actor's it keeps.
                     if t0.is_some() {
-                        self.engine_moved.insert(target.to_string(), t0);
+                        self.engine_moves(target, t0);
                     }
                     SpeedTarget::RelativeAtStart {
                         entity_ref: x.clone(),
@@ -378,7 +384,7 @@ impl Planner<'_> {
         if let Some(since) = self.engine_moved.get(&x).copied() {
             // x's motion is the engine's from `since`: so is the actor's it holds.
             let from = span.map(|s| s.0).or(since);
-            self.engine_moved.insert(target.to_string(), from);
+            self.engine_moves(target, from);
         } else if let Some((t0, te)) = span {
             let end = te.unwrap_or(f64::INFINITY);
             let xs = self.track(&x).clone();

@@ -100,7 +100,7 @@ impl Planner<'_> {
             .map(|a| match (self.reads_members(p, inv, a), t0) {
                 (Some(moves), Some(t)) => {
                     if moves {
-                        self.engine_moved.insert(a.clone(), Some(t));
+                        self.engine_moves(a, Some(t));
                     }
                     None
                 }
@@ -151,12 +151,25 @@ impl Planner<'_> {
                 },
                 _ => None,
             };
-            // After a gap action, avoid_collisions(true), a motion relative to a member of
-            // random traffic or a following of the lanes of an actor the engine moves
-            // (`held_relation`) the engine moves the actor: the plan knows no track to start a
+            // After a gap action, avoid_collisions(true) or a motion relative to a member of
+            // random traffic the engine moves the actor: the plan knows no track to start a
             // phase at a time from.
             if let (Some(t), Some(since)) = (t0, self.engine_moved.get(target)) {
-                if self.random_member(target) {
+                // Its lane only the engine's (a following of the lanes of an actor the engine
+                // moves): the plan knows its speed and place along its lane, and plans the
+                // phase unless something reads its lane (`Planner::lane_blind_error`).
+                if let Some(&lane_since) = self.lane_only.get(target) {
+                    let blind = super::planner::LaneBlind {
+                        since: lane_since,
+                        start: t,
+                        site: p.site.clone(),
+                        read: None,
+                    };
+                    self.lane_blind
+                        .borrow_mut()
+                        .entry(target.clone())
+                        .or_insert(blind);
+                } else if self.random_member(target) {
                     // A member's motion is its model's from its creation: say so, not the
                     // gap-action reading below (found in review of b78c5936).
                     return Err(p.site.err(
@@ -165,14 +178,15 @@ impl Planner<'_> {
                             "expected this phase of `{target}` of random traffic to start on a run-time condition (until, wait), found it at {t:.2} s, where the plan knows no place of it: its driver model moves it from its creation (§8.7.18.1: \"the behavioral model assigned to each vehicle defines the actual behavior of the vehicle within the group\"); give the group the action (g.drive(), g.change_speed(…)) instead"
                         ),
                     ));
+                } else {
+                    return Err(p.site.err(
+                        K::Unsatisfiable,
+                        format!(
+                            "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action, avoid_collisions(true) or a motion relative to a member of random traffic{} from which the engine moves `{target}`",
+                            since.map_or(String::new(), |s| format!(" started at {s:.2} s"))
+                        ),
+                    ));
                 }
-                return Err(p.site.err(
-                    K::Unsatisfiable,
-                    format!(
-                        "expected this phase of `{target}` to start on a run-time condition (until, wait, or the end of its gap action), found it at {t:.2} s, after a gap action, avoid_collisions(true), a motion relative to a member of random traffic or a following of the lanes of an actor the engine moves (lane(…: x) at: all){} from which the engine moves `{target}`",
-                        since.map_or(String::new(), |s| format!(" started at {s:.2} s"))
-                    ),
-                ));
             }
             check_keeps(mods, step)?;
             // A member's own acceleration (plain, or relative to an actor outside its group;

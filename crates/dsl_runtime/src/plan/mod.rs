@@ -213,6 +213,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
         heading_asks: Vec::new(),
         draws: RefCell::new(res.draws.clone()),
         engine_moved: HashMap::new(),
+        lane_only: HashMap::new(),
+        lane_blind: RefCell::new(std::collections::BTreeMap::new()),
         gaps: HashMap::new(),
         serial_before: HashMap::new(),
         against_road: None,
@@ -601,6 +603,8 @@ pub(crate) fn plan(res: &Resolved, road: &PlanRoad<'_>, settings: Settings) -> R
     }
     let asks = std::mem::take(&mut p.heading_asks);
     heading::check_headings(&mut p, &asks)?;
+    // A read of a lane the engine sets by a check once every phase is planned (`lane_only`).
+    p.lane_blind_error()?;
     // A yaw other than 0 relative to the road is kept physically only by an actor that
     // stands; one that moves keeps it crabwise along its lane where every invocation of it
     // allows a non-physical movement (`checks::crabwise`).

@@ -98,6 +98,14 @@ pub(crate) struct Planner<'a> {
     /// Actors the engine's gap controller moves (`gap_actions`), with the start of the gap
     /// action when the plan knows it: their tracks are not planned from there on.
     pub engine_moved: HashMap<String, Option<f64>>,
+    /// Of `engine_moved`, the actors whose lane only the engine sets (a following of the lanes
+    /// of an actor the engine moves, `held_relation`), from when: their speed and place along
+    /// their lane are still the plan's.
+    pub lane_only: HashMap<String, Option<f64>>,
+    /// Actors of `lane_only` with a later phase at a time the plan sets (its start and site):
+    /// such a phase runs unless something reads the actor's lane from the time the engine
+    /// sets it (`lane_read`), the read's time kept here for the error (`lane_blind_error`).
+    pub lane_blind: RefCell<BTreeMap<String, LaneBlind>>,
     /// Each actor's last gap action: its reference, what it keeps, and the path of its phase
     /// when the action ends that phase (a change without the phase's own duration or `until`).
     pub gaps: HashMap<String, (String, Gap, Option<String>)>,
@@ -147,6 +155,20 @@ pub(crate) fn no_end(p: &Phase) -> Error {
             p.path
         ),
     )
+}
+
+/// A later phase, at a time the plan sets, of an actor whose lane the engine sets
+/// (`Planner::lane_blind`).
+#[derive(Debug, Clone)]
+pub struct LaneBlind {
+    /// When the engine sets the actor's lane from (`None`: a run-time start).
+    pub since: Option<f64>,
+    /// The phase's start (s).
+    pub start: f64,
+    /// Where the phase is written.
+    pub site: Site,
+    /// The first time at which the plan read the actor's lane from `since` on, if it did.
+    pub read: Option<f64>,
 }
 
 /// The error of a stationary object `path` (used at `site`) that no `location(…)` puts anywhere.
@@ -236,19 +258,61 @@ impl Planner<'_> {
 
     /// [`lane_now`](Self::lane_now) on `road` (the plan road, or the view `name` is planned on).
     pub(crate) fn lane_on(&self, road: &PlanRoad<'_>, name: &str, t: f64) -> i32 {
+        self.lane_read(name, t);
         self.track(name).lane_on(road, t)
     }
 
     /// The lane `name` was planned in last, followed to where the plan last knows it (a phase
     /// that starts on a run-time condition starts from there).
     pub(crate) fn lane_last(&self, name: &str) -> i32 {
-        self.track(name).last_lane_on(&self.road, self.last_known())
+        let t = self.last_known();
+        self.lane_read(name, t);
+        self.track(name).last_lane_on(&self.road, t)
     }
 
     /// Whether `name` changes lanes between times `a` < `b` (`Track::changes_lane`: the lane
     /// at `a` followed along its links to `b` is not the lane there).
     pub(crate) fn changes_lane(&self, name: &str, a: f64, b: f64) -> bool {
+        self.lane_read(name, b);
         self.track(name).changes_lane(&self.road, a, b)
+    }
+
+    /// Notes a read of `name`'s lane at `t` where the engine sets that lane then and `name` has
+    /// a later phase at a time the plan sets (`lane_blind`): the plan's track has a lane there
+    /// the engine does not (`lane_blind_error` refuses the phase).
+    fn lane_read(&self, name: &str, t: f64) {
+        if let Some(blind) = self.lane_blind.borrow_mut().get_mut(name) {
+            if blind.read.is_none() && t >= blind.since.unwrap_or(f64::NEG_INFINITY) {
+                blind.read = Some(t);
+            }
+        }
+    }
+
+    /// The error of a phase of an actor whose lane the engine sets (`lane_only`) at a time the
+    /// plan sets, where the plan read that lane (`lane_read`), if any.
+    pub(crate) fn lane_blind_error(&self) -> Result<(), Error> {
+        let blind = self.lane_blind.borrow();
+        let Some((name, b, read)) = blind.iter().find_map(|(n, b)| b.read.map(|r| (n, b, r)))
+        else {
+            return Ok(());
+        };
+        Err(b.site.err(
+            K::Unsatisfiable,
+            format!(
+                "expected this phase of `{name}` to start on a run-time condition (until, wait), or to leave its lane alone, found it at {:.2} s reading `{name}`'s lane at {read:.2} s, which the engine sets from {} (a following of the lanes of an actor the engine moves, lane(…: x) at: all): the plan knows its speed and its place along its lane, not its lane",
+                b.start,
+                b.since
+                    .map_or("the start of that following".to_string(), |s| format!("{s:.2} s")),
+            ),
+        ))
+    }
+
+    /// From `since` (`None`: a run-time start) the engine moves `name` (a gap action's or a
+    /// model's controller, …): the plan plans no track of it from then on (`engine_moved`),
+    /// its lane and its motion along it both.
+    pub(crate) fn engine_moves(&mut self, name: &str, since: Option<f64>) {
+        self.lane_only.remove(name);
+        self.engine_moved.insert(name.to_string(), since);
     }
 
     /// The overhangs of `actor`'s and `other`'s bounding boxes towards each other (m): the

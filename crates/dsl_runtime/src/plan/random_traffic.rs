@@ -230,7 +230,7 @@ impl Planner<'_> {
                 };
                 self.entities[e].driver = Some(model_controller(CONTROLLER, model, v0, &[], &site));
                 // From the start the engine's model moves the member.
-                self.engine_moved.insert(m.clone(), Some(0.0));
+                self.engine_moves(m, Some(0.0));
             }
         }
         Ok(oncoming)

@@ -182,10 +182,10 @@ impl Planner<'_> {
             })
             .collect();
         self.phases[k].actions.splice(0..0, created);
-        for m in &self.groups[&late.group] {
-            let e = self.index[m];
+        for m in self.groups[&late.group].clone() {
+            let e = self.index[&m];
             self.entities[e].created = Some(late.at);
-            self.engine_moved.insert(m.clone(), late.at);
+            self.engine_moves(&m, late.at);
         }
     }
 }

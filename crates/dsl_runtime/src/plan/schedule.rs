@@ -41,7 +41,7 @@ impl Planner<'_> {
                     let ms = &inv.modifiers;
                     let t0 = start.time();
                     derived = self.in_actor_view(inv, ms, |s| {
-                        s.plan_invoke(
+                        let derived = s.plan_invoke(
                             p,
                             inv,
                             ms,
@@ -51,7 +51,10 @@ impl Planner<'_> {
                             &mut actions,
                             &mut persist,
                             &mut after,
-                        )
+                        )?;
+                        // A read of a lane the engine sets, by this phase (`lane_only`).
+                        s.lane_blind_error()?;
+                        Ok(derived)
                     })?;
                 }
                 let end = match (own, derived, inherit) {

@@ -35,7 +35,7 @@ impl Planner<'_> {
         if let Some(since) = self.engine_moved.get(x).copied() {
             // x's speed is the engine's from `since`: so is the actor's that follows it.
             let from = t0.or(since);
-            self.engine_moved.insert(target.to_string(), from);
+            self.engine_moves(target, from);
             return Ok(());
         }
         let Some(t0) = t0 else {

@@ -655,14 +655,40 @@ fn a_chain_of_lane_relations_at_a_known_start_is_planned_from_its_head() {
 /// lane_follow_engine_then_known.osc: ego follows npc's lanes in do.both [1, 5] s as the
 /// engine's (npc under avoid_collisions(true)): at npc's y at every step, y = -5.25 + 3.5·f,
 /// f = (1 − cos(π·τ/4))/2, τ = t − 1 (-4.737437 m at 2 s, -3.5 m at 3 s), in lane -1 from
-/// 3.05 s and at -1.75 m at 5 s. Its later phase at 5 s, a time the plan sets, is an error at
-/// the invocation: before, the plan's track kept ego in lane -2 and passed its lane(2) while
-/// the engine ran ego in lane -1 (lane 3) to 7 s.
+/// 3.05 s and at -1.75 m at 5 s. Its later phase at 5 s, a time the plan sets, asks ego's lane
+/// (lane(2)), which the engine sets from 1 s: an error at the invocation. Before 3293425b the
+/// plan's track kept ego in lane -2 and passed its lane(2) while the engine ran ego in lane -1
+/// (lane 3) to 7 s.
 #[test]
-fn a_later_phase_at_a_known_time_after_following_the_lanes_of_an_actor_the_engine_moves_is_an_error(
-) {
-    let want = "expected this phase of `ego` to start on a run-time condition (until, wait, or the end of its gap action), found it at 5.00 s, after a gap action, avoid_collisions(true), a motion relative to a member of random traffic or a following of the lanes of an actor the engine moves (lane(…: x) at: all) started at 1.00 s from which the engine moves `ego` at ";
+fn a_later_phase_at_a_known_time_reading_the_lane_the_engine_sets_is_an_error() {
+    let want = "expected this phase of `ego` to start on a run-time condition (until, wait), or to leave its lane alone, found it at 5.00 s reading `ego`'s lane at 5.00 s, which the engine sets from 1.00 s (a following of the lanes of an actor the engine moves, lane(…: x) at: all): the plan knows its speed and its place along its lane, not its lane at ";
     refused("lane_follow_engine_then_known", want, "34:9");
+}
+
+/// lane_follow_engine_then_speed.osc: the same following over [1, 5] s, then a later phase at
+/// 5 s that leaves ego's lane alone, speed(15mps, at: end) over 2 s: it runs (before, refused
+/// as every later phase at a time the plan sets): the engine moves each step at the speed at
+/// its end, so x = x5 + 10·τ + 1.25·τ·(τ + dt), τ = t − 5, at every step (x5 + 11.3125 m at
+/// 6 s, x5 + 25.125 m at 7 s), y = -1.75 m in lane -1 where the engine has it. x5, where the engine has ego at 5 s, is 100 m less what the followed change's
+/// sideways motion cost along the road at 10 m/s: ∫ y'²/20 + y'⁴/8000 dt over 4 s, y' =
+/// (3.5π/8)·sin(π·τ/4), = 1.889/10 + 3.569·1.5/8000 = 0.18959 m, x5 = 99.8104 m (the
+/// engine's steps take each step's mean share: within 1e-3 m).
+#[test]
+fn a_later_phase_at_a_known_time_that_leaves_the_lane_the_engine_sets_alone_runs() {
+    let r = passes("held/lane_follow_engine_then_speed");
+    crate::support::phases_are(&r, &[("do.after", 5.0, 7.0)]);
+    let x5 = r.at(5.0, "ego").x;
+    assert!((x5 - 99.8104).abs() < 1e-3, "{x5}");
+    for k in 0..=40 {
+        let t = 5.0 + k as f64 * DT;
+        let tau = t - 5.0;
+        let ego = r.at(t, "ego");
+        let s = x5 + 10.0 * tau + 1.25 * tau * (tau + DT);
+        assert!(
+            (ego.x - s).abs() < S_TOL && (ego.y + 1.75).abs() < S_TOL && ego.lane == -1,
+            "ego at {t} s: {ego:?}, want x {s}, y -1.75 in lane -1"
+        );
+    }
 }
 
 /// lane_follow_known_then_engine.osc: ego's lane(same_as: npc) in two phases, npc's lane

@@ -965,7 +965,7 @@ fn a_groups_speed_relative_to_a_member_is_the_engines_and_hands_the_group_to_it(
     }
     crate::along::refused(
         "err_random_traffic_member_then_known",
-        "expected this phase of `car` to start on a run-time condition (until, wait, or the end of its gap action), found it at 8.00 s, after a gap action, avoid_collisions(true), a motion relative to a member of random traffic or a following of the lanes of an actor the engine moves (lane(…: x) at: all) started at 4.00 s from which the engine moves `car`",
+        "expected this phase of `car` to start on a run-time condition (until, wait, or the end of its gap action), found it at 8.00 s, after a gap action, avoid_collisions(true) or a motion relative to a member of random traffic started at 4.00 s from which the engine moves `car`",
         "16:13",
     );
 }
