@@ -85,5 +85,5 @@ pub use query::{
     Direction, LaneChange, LaneCost, LaneHandle, LanePath, LanePosition, LaneRoute, PathCost,
     RoadPoint, RoadPosition, RouteSegment, LANE_CHANGE_COST,
 };
-pub use road::{LaneSpan, CONSTANT_MARGIN};
+pub use road::{FrameStretch, LaneSpan, CONSTANT_MARGIN};
 pub use source::SourcePos;

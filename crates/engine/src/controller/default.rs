@@ -12,14 +12,14 @@
 //! lateral motion, h = h_road + atan2(dt/ds, 1 − κ·t), plus the entity's own relative heading.
 //! An entity off every lane moves straight along its heading.
 
-use opendrive::{normalize_angle, Direction, Real, Road, RoadNetwork};
+use opendrive::{normalize_angle, Direction, LaneSpan, Real, Road, RoadNetwork};
 
 use crate::domain::{Acceleration6d, Vector3, Velocity6d};
 use crate::world::entity::Entity;
 use crate::world::lane_change;
-use crate::world::lane_track::{CurvatureAt, LaneTrack};
+use crate::world::lane_track::{Blend, CurvatureAt, LaneTrack};
 use crate::world::lanes::{
-    advance, curvature_with_heading, set_road_position, track_curvature, track_span,
+    advance, curvature_with_heading, set_road_position, track_curvature, track_pose, track_span,
 };
 use crate::world::zero_angle;
 use crate::world::RouteFollow;
@@ -173,15 +173,31 @@ fn follow_route(
 /// Lateral position t of a track at its s, the slope dt/ds of the path it follows there (the
 /// lane centre plus offset, or the blend of a lateral transition), and the lateral transition's
 /// share of the motion: lateral speed / speed (0 without a transition).
+///
+/// Always inlined: a lane followed without a transition (nearly every move) needs only the
+/// span.
+#[inline(always)]
 fn lateral(road: &Road, track: &mut LaneTrack) -> Option<(Real, Real, Real)> {
     let lane = track.lane_id;
     let span = track_span(road, track, lane).ok()?;
     let target = span.center() + track.offset;
-    let Some(b) = track.blend else {
-        return Some((target, span.d_center(), 0.0));
-    };
+    match track.blend {
+        None => Some((target, span.d_center(), 0.0)),
+        Some(b) => Some(blended(road, track, b, span, target)),
+    }
+}
+
+/// [`lateral`] during the transition `b` towards `target` on the lane of span `span`.
+#[inline(never)]
+fn blended(
+    road: &Road,
+    track: &LaneTrack,
+    b: Blend,
+    span: LaneSpan,
+    target: Real,
+) -> (Real, Real, Real) {
     let Ok(from) = road.lane_span(b.from_lane, track.s) else {
-        return Some((target, span.d_center(), 0.0));
+        return (target, span.d_center(), 0.0);
     };
     let t0 = from.center() + b.from_offset;
     let t = (1.0 - b.weight) * t0 + b.weight * target;
@@ -189,7 +205,7 @@ fn lateral(road: &Road, track: &mut LaneTrack) -> Option<(Real, Real, Real)> {
         + b.weight * span.d_center()
         + (target - t0) * b.weight_per_m * sign(track.direction);
     // (target − t0)·dw/ds is the path's slope tan θ against the lane; its share is sin θ.
-    Some((t, slope, ((target - t0) * b.weight_per_m).atan().sin()))
+    (t, slope, ((target - t0) * b.weight_per_m).atan().sin())
 }
 
 /// Sets t, pose and road position of `e` from its track after a move (nothing without one).
@@ -202,7 +218,7 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity) {
         return;
     };
     track.t = t;
-    let Ok(mut pose) = road.pose(track.s, t) else {
+    let Ok(mut pose) = track_pose(road, track, t) else {
         return;
     };
     // The pose's heading is the reference line's at s; the next move starts here and reads
@@ -236,5 +252,268 @@ fn sign(d: Direction) -> Real {
     match d {
         Direction::Forward => 1.0,
         Direction::Backward => -1.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    use opendrive::{Pose, RoadPosition};
+
+    use super::*;
+    use crate::domain::{BoundingBox, Vector3};
+    use crate::store::place_on_lane;
+    use crate::world::entity::{EntityId, EntityKind};
+    use crate::world::lane_change::{self, RouteLaneChange};
+
+    /// esmini's corpus road `name`.
+    fn corpus(name: &str) -> RoadNetwork {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../../shared/corpus/esmini/xodr")
+            .join(name);
+        RoadNetwork::from_file(&path).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// One road of 300 m with every feature the shortcuts must leave to the full move: two
+    /// lines of one heading (0–100, 100–150 m), an arc (150–200 m) and a line; a constant
+    /// elevation, then a climb (from 120 m), then constant again (from 250 m); no bank, a
+    /// constant bank (from 60 m), a bank growing (from 220 m); a lane offset constant, varying
+    /// (80–100 m), constant; two lane sections, the second's lane −1 widening.
+    fn features() -> RoadNetwork {
+        let xodr = r#"<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="1" junction="-1" length="300"><link/><planView>
+<geometry s="0" x="10" y="20" hdg="0.3" length="100"><line/></geometry>
+<geometry s="100" x="105.533649" y="49.552021" hdg="0.3" length="50"><line/></geometry>
+<geometry s="150" x="153.300473" y="64.328031" hdg="0.3" length="50"><arc curvature="0.005"/></geometry>
+<geometry s="200" x="198.733878" y="84.890424" hdg="0.55" length="100"><line/></geometry>
+</planView>
+<elevationProfile><elevation s="0" a="2" b="0" c="0" d="0"/><elevation s="120" a="2" b="0.01" c="0" d="0"/><elevation s="250" a="3.3" b="0" c="0" d="0"/></elevationProfile>
+<lateralProfile><superelevation s="0" a="0" b="0" c="0" d="0"/><superelevation s="60" a="0.03" b="0" c="0" d="0"/><superelevation s="220" a="0.03" b="0.0002" c="0" d="0"/></lateralProfile>
+<lanes><laneOffset s="0" a="0" b="0" c="0" d="0"/><laneOffset s="80" a="0" b="0.01" c="0" d="0"/><laneOffset s="100" a="0.2" b="0" c="0" d="0"/>
+<laneSection s="0"><left><lane id="1" type="driving"><link/><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><link/><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane><lane id="-2" type="driving"><link/><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection>
+<laneSection s="180"><left><lane id="1" type="driving"><link/><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving"><link/><width sOffset="0" a="3.5" b="0.005" c="0" d="0"/></lane><lane id="-2" type="driving"><link/><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection>
+</lanes></road></OpenDRIVE>"#;
+        RoadNetwork::from_str(xodr, Path::new("features.xodr")).expect("the features road")
+    }
+
+    /// Every number a move writes, as bits (the flags as 0 and 1), and the road and junction
+    /// ids.
+    fn state(e: &Entity) -> (Vec<u64>, String) {
+        let p = e.pose;
+        let v = |a: Vector3| [a.x, a.y, a.z];
+        let mut out: Vec<Real> = vec![p.x, p.y, p.z, p.h, p.p, p.r, e.speed, e.odometer];
+        let mut ids = String::new();
+        out.extend(v(e.velocity.translational));
+        out.extend(v(e.velocity.rotational));
+        out.extend(v(e.acceleration.translational));
+        out.extend([e.lateral_slope, Real::from(u8::from(e.at_lane_end))]);
+        if let Some(rp) = &e.road_position {
+            let RoadPosition {
+                road_id,
+                road,
+                lane_id,
+                s,
+                t,
+                offset,
+                junction_id,
+                relative_heading,
+                distance,
+            } = rp;
+            ids = format!("{road_id} {road:?} {junction_id:?}");
+            out.push(Real::from(*lane_id));
+            out.extend([*s, *t, *offset, *relative_heading, *distance]);
+        }
+        if let Some(track) = &e.track {
+            ids.push_str(&track.road_id);
+            out.extend([track.s, track.t, track.offset, track.relative_heading]);
+            out.extend([Real::from(track.lane_id), Real::from(track.road.0)]);
+            out.push(Real::from(u8::from(track.direction == Direction::Forward)));
+            if let Some(b) = track.blend {
+                out.extend([
+                    Real::from(b.from_lane),
+                    b.from_offset,
+                    b.weight,
+                    b.weight_per_m,
+                ]);
+            }
+        }
+        (out.into_iter().map(Real::to_bits).collect(), ids)
+    }
+
+    /// A car on `net` placed at the centre of lane `lane` of road `road` at `s` (plus
+    /// `offset`), facing its direction of travel under right-hand traffic.
+    fn car(net: &RoadNetwork, road: usize, lane: i32, s: Real, offset: Real) -> Option<Entity> {
+        let r = &net.roads()[road];
+        let mut pose: Pose = r.lane_pose(lane, s, offset).ok()?;
+        if lane > 0 {
+            pose.h = normalize_angle(pose.h + std::f64::consts::PI);
+        }
+        let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 4.5, 2.0, 1.5).expect("box");
+        let mut e = Entity::new(EntityId(0), "car", EntityKind::Vehicle, b);
+        place_on_lane(net, &mut e, pose, net.locate(pose.x, pose.y, Some(pose.h)));
+        e.track.is_some().then_some(e)
+    }
+
+    /// Counts of what the test drove through.
+    #[derive(Debug, Default)]
+    struct Seen {
+        moves: usize,
+        advanced_in_memo: usize,
+        straight_poses: usize,
+        left_a_straight_stretch: usize,
+        to_a_range_end: usize,
+        blended: usize,
+    }
+
+    /// Drives the cars `cars` (each twice: with the memos the moves keep, and with them
+    /// cleared before each move, so that it walks the lane graph, computes the pose in full
+    /// and looks up every lane) `steps` steps, comparing their states after every move.
+    fn drive(net: &RoadNetwork, name: &str, cars: Vec<Entity>, steps: usize, seen: &mut Seen) {
+        let dt = 0.05;
+        let mut rng = 0x9e37_79b9_7f4a_7c15_u64;
+        let mut next = move || {
+            rng ^= rng << 13;
+            rng ^= rng >> 7;
+            rng ^= rng << 17;
+            (rng >> 11) as Real / (1u64 << 53) as Real
+        };
+        for (i, car) in cars.into_iter().enumerate() {
+            let (mut fast, mut full) = (car.clone(), car);
+            let mut change: Option<RouteLaneChange> = None;
+            let speed = 5.0 + 40.0 * next();
+            for step in 0..steps {
+                let track = fast.track.as_ref().expect("a track");
+                let (s, road) = (track.s, track.road);
+                let memo = track
+                    .lanes
+                    .filter(|m| m.road == road && m.lo <= s && s <= m.hi);
+                let frame = track.frame.filter(|f| f.road == road && f.stretch.holds(s));
+                // Mostly the car's speed; now and then onto the end of the lanes memo's or
+                // the straight stretch's range, an ulp either side, or backwards.
+                let mut d = speed * dt;
+                let toward = |hi: Real| match track.direction {
+                    Direction::Forward => hi - s,
+                    Direction::Backward => s - hi,
+                };
+                match (step % 7, memo, frame) {
+                    (1, Some(m), _) => d = toward(m.hi),
+                    (2, Some(m), _) => d = toward(m.hi).next_up(),
+                    (3, _, Some(f)) => d = toward(f.stretch.hi),
+                    (4, _, Some(f)) => d = toward(f.stretch.hi).next_down(),
+                    (5, Some(m), _) => d = toward(m.lo),
+                    _ if next() < 0.02 => d = -d,
+                    _ => {}
+                }
+                if matches!(step % 7, 1..=5) && d != speed * dt {
+                    seen.to_a_range_end += 1;
+                }
+                // Now and then a lane change (the route's), the same in both.
+                if change.is_none() && next() < 0.01 {
+                    let track = fast.track.as_ref().expect("a track");
+                    let lane = if track.lane_id.abs() > 1 || next() < 0.5 {
+                        track.lane_id - track.lane_id.signum()
+                    } else {
+                        track.lane_id + track.lane_id.signum()
+                    };
+                    let odometer = fast.odometer;
+                    let [c, same] = [&mut fast, &mut full].map(|e| {
+                        let track = e.track.as_mut().expect("a track");
+                        lane_change::begin(net, track, lane, speed, odometer, 60.0)
+                    });
+                    assert_eq!(c, same);
+                    change = c;
+                }
+                if let Some(c) = change {
+                    let [more, same] = [&mut fast, &mut full].map(|e| {
+                        let track = e.track.as_mut().expect("a track");
+                        lane_change::step(&c, track, e.odometer, d)
+                    });
+                    assert_eq!(more, same);
+                    if !more {
+                        change = None;
+                    }
+                    seen.blended += 1;
+                }
+                if let Some(t) = full.track.as_mut() {
+                    (t.lanes, t.frame, t.curvature) = (None, None, None);
+                }
+                let before = fast.track.as_ref().map(|t| (t.road, t.s));
+                move_entity(net, &mut fast, dt, Some(d));
+                move_entity(net, &mut full, dt, Some(d));
+                assert_eq!(
+                    state(&fast),
+                    state(&full),
+                    "{name}, car {i}, step {step}: s {s}, d {d}\n{:?}\n{:?}",
+                    fast.track,
+                    full.track
+                );
+                seen.moves += 1;
+                let track = fast.track.as_ref().expect("a track");
+                let after = (track.road, track.s);
+                if memo.is_some_and(|m| m.lo <= after.1 && after.1 <= m.hi)
+                    && before.map(|b| b.0) == Some(after.0)
+                {
+                    seen.advanced_in_memo += 1;
+                }
+                let straight = frame.filter(|f| f.stretch.is_straight());
+                match straight {
+                    Some(f) if f.road == after.0 && f.stretch.holds(after.1) => {
+                        seen.straight_poses += 1
+                    }
+                    Some(_) => seen.left_a_straight_stretch += 1,
+                    None => {}
+                }
+                if fast.at_lane_end {
+                    break;
+                }
+            }
+        }
+    }
+
+    /// The move with its shortcuts (advance inside the lanes memo's range, the pose along a
+    /// straight stretch: world/lanes.rs `advance` and `track_pose`, opendrive's
+    /// `FrameStretch`) against the move without them, bit for bit in every number it writes:
+    /// on a road with every feature the shortcuts leave to the full move (arcs, elevation
+    /// and bank constant and varying, a varying lane offset, a widening lane, two lane
+    /// sections) and on corpus roads (straight, curved, climbing, banked, junctions and lane
+    /// sections of a town), with lane changes, reversing, and moves onto the ends of the
+    /// ranges, an ulp either side.
+    #[test]
+    fn the_moves_shortcuts_give_the_full_moves_bits() {
+        let mut seen = Seen::default();
+        let roads: Vec<(&str, RoadNetwork)> = vec![
+            ("features", features()),
+            ("straight_500m", corpus("straight_500m.xodr")),
+            ("crest-curve", corpus("crest-curve.xodr")),
+            ("velodrome", corpus("velodrome.xodr")),
+            ("two_plus_one", corpus("two_plus_one.xodr")),
+            ("multi_intersections", corpus("multi_intersections.xodr")),
+        ];
+        for (name, net) in &roads {
+            let mut cars = Vec::new();
+            for (r, road) in net.roads().iter().enumerate() {
+                for k in 0..4 {
+                    let s = road.length * (Real::from(k) + 0.3) / 4.0;
+                    for lane in road
+                        .lane_section_at(s)
+                        .lanes()
+                        .map(|l| l.id)
+                        .filter(|&l| l != 0)
+                    {
+                        let offset = if k == 1 { 0.3 } else { 0.0 };
+                        cars.extend(car(net, r, lane, s, offset));
+                    }
+                }
+            }
+            let steps = if net.roads().len() > 20 { 120 } else { 400 };
+            drive(net, name, cars, steps, &mut seen);
+        }
+        // Both shortcuts were taken, and the ranges' ends were met and left.
+        assert!(seen.advanced_in_memo > seen.moves / 2, "{seen:?}");
+        assert!(seen.straight_poses > seen.moves / 4, "{seen:?}");
+        assert!(seen.left_a_straight_stretch > 100, "{seen:?}");
+        assert!(seen.to_a_range_end > 1000, "{seen:?}");
+        assert!(seen.blended > 1000, "{seen:?}");
     }
 }

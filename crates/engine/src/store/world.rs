@@ -288,6 +288,7 @@ pub(crate) fn place_on_lane(
             blend: None,
             curvature: None,
             lanes: None,
+            frame: None,
         });
     }
     e.road_position = Some(rp);

@@ -4,7 +4,7 @@
 //! memos the step keeps on it. Plain state below `entity` (which holds it) and the modules
 //! that move it (`lanes`, `lane_change`, `route_follow`).
 
-use opendrive::{Direction, LaneSpan, Real, RoadHandle};
+use opendrive::{Direction, FrameStretch, LaneSpan, Real, RoadHandle};
 
 /// Where the default controller keeps an entity: the lane it follows and its offset from that
 /// lane's centre, and the direction of travel along s.
@@ -31,11 +31,25 @@ pub(crate) struct LaneTrack {
     /// A lateral transition in progress (lane change or lane offset), if any.
     pub blend: Option<Blend>,
     /// The reference line's curvature at the track's s, as the last move computed it there
-    /// (runtime/lanes.rs `curvature`; `None` until then).
+    /// (world/lanes.rs `curvature`; `None` until then).
     pub(crate) curvature: Option<CurvatureAt>,
     /// The followed lane's span and the lane look-up over an s-range where the road's lanes do
-    /// not change (runtime/lanes.rs; `None` where they do).
+    /// not change (world/lanes.rs; `None` where they do).
     pub(crate) lanes: Option<LanesMemo>,
+    /// The road's frame stretch around the track's s as the last pose found it
+    /// (world/lanes.rs `track_pose`; `None` until then).
+    pub(crate) frame: Option<FrameAt>,
+}
+
+/// A [`FrameStretch`] of one road ([`Road::frame_stretch`](opendrive::Road::frame_stretch)):
+/// where it holds the track's s, the pose is computed from it
+/// ([`Road::pose_in`](opendrive::Road::pose_in)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct FrameAt {
+    /// The road.
+    pub(crate) road: RoadHandle,
+    /// Its stretch.
+    pub(crate) stretch: FrameStretch,
 }
 
 /// Lane answers that stay the same over an s-range of one road

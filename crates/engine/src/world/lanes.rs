@@ -6,11 +6,11 @@
 //! runtime needs them combined per step; it adds no geometry of its own.
 
 use opendrive::{
-    angle_difference, Direction, LaneHandle, LaneSpan, LaneType, Real, Road, RoadNetwork,
+    angle_difference, Direction, LaneHandle, LaneSpan, LaneType, Pose, Real, Road, RoadNetwork,
     RoadPosition,
 };
 
-use super::lane_track::{LaneTrack, LanesMemo};
+use super::lane_track::{FrameAt, LaneTrack, LanesMemo};
 use crate::position::lane_at;
 
 /// Step (m) of the finite difference that gives the reference line's curvature.
@@ -93,11 +93,26 @@ pub(crate) fn track_span(
 ) -> Result<LaneSpan, opendrive::Error> {
     let s = track.s;
     if let Some(m) = memo(track) {
-        if m.lane != lane {
-            // Another lane followed (a lane change ended): its span from now on.
-            m.span = road.lane_span(lane, s)?;
-            m.lane = lane;
+        if m.lane == lane {
+            return Ok(m.span);
         }
+    }
+    track_span_anew(road, track, lane, s)
+}
+
+/// [`track_span`] where the memo does not hold the lane's span at s: the span computed, and
+/// kept in the memo that holds s (another lane followed: a lane change ended), else in a
+/// memo made anew where the lanes are constant around s.
+#[inline(never)]
+fn track_span_anew(
+    road: &Road,
+    track: &mut LaneTrack,
+    lane: i32,
+    s: Real,
+) -> Result<LaneSpan, opendrive::Error> {
+    if let Some(m) = memo(track) {
+        m.span = road.lane_span(lane, s)?;
+        m.lane = lane;
         return Ok(m.span);
     }
     let span = road.lane_span(lane, s)?;
@@ -110,6 +125,28 @@ pub(crate) fn track_span(
         at: None,
     });
     Ok(span)
+}
+
+/// [`Road::pose`] at the track's road and s and lateral position `t`: from the frame stretch
+/// the track keeps while it holds s ([`Road::pose_in`]: on a straight stretch without a
+/// look-up, the same bits), else computed and the stretch around s kept.
+#[inline]
+pub(crate) fn track_pose(
+    road: &Road,
+    track: &mut LaneTrack,
+    t: Real,
+) -> Result<Pose, opendrive::Error> {
+    let s = track.s;
+    match &track.frame {
+        Some(f) if f.road == track.road && f.stretch.holds(s) => road.pose_in(&f.stretch, s, t),
+        _ => {
+            track.frame = road.frame_stretch(s).map(|stretch| FrameAt {
+                road: track.road,
+                stretch,
+            });
+            road.pose(s, t)
+        }
+    }
 }
 
 /// [`lane_at`] at the track's road, s and t: from the memo while the lanes and t stay the
@@ -175,7 +212,42 @@ pub fn numbered_lane(
 /// (the first successor, in the road model's order, or the one `prefer` picks from the
 /// successors where the road named by its first argument ends). Returns the distance that
 /// could not be driven because the lane ends with no successor.
+///
+/// Inside the track's lanes memo's range (the lanes of one road constant, one lane section,
+/// a `CONSTANT_MARGIN` > `S_TOLERANCE` inside its ends, on the road) the move is the first
+/// pass of the walk (`walk`) with nothing crossed: there the target is on the road and the
+/// section at the target and the section holding any lane at s are that one, so
+/// `cross_sections` keeps every lane; so where s and the target both lie in the range, s
+/// becomes the target and nothing else changes, without the walk.
+#[inline]
 pub fn advance(
+    net: &RoadNetwork,
+    track: &mut LaneTrack,
+    distance: Real,
+    prefer: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
+) -> Real {
+    let target = target(track, distance);
+    if memo(track).is_some_and(|m| m.lo <= target && target <= m.hi) {
+        track.s = target;
+        return 0.0;
+    }
+    walk(net, track, distance, prefer)
+}
+
+/// The s `distance` m of travel from the track's s in its direction.
+#[inline]
+fn target(track: &LaneTrack, distance: Real) -> Real {
+    let sign = if track.direction == Direction::Forward {
+        1.0
+    } else {
+        -1.0
+    };
+    track.s + sign * distance
+}
+
+/// [`advance`] hop by hop along the lane graph.
+#[inline(never)]
+fn walk(
     net: &RoadNetwork,
     track: &mut LaneTrack,
     mut distance: Real,
@@ -183,18 +255,16 @@ pub fn advance(
 ) -> Real {
     for _ in 0..MAX_HOPS {
         let road = net.road_at(track.road);
-        let sign = if track.direction == Direction::Forward {
-            1.0
-        } else {
-            -1.0
-        };
-        let target = track.s + sign * distance;
+        let target = target(track, distance);
         if (0.0..=road.length).contains(&target) {
             cross_sections(net, road, track, target);
             track.s = target;
             return 0.0;
         }
-        let end = if sign > 0.0 { road.length } else { 0.0 };
+        let end = match track.direction {
+            Direction::Forward => road.length,
+            Direction::Backward => 0.0,
+        };
         distance -= (end - track.s).abs();
         cross_sections(net, road, track, end);
         track.s = end;

@@ -1,6 +1,7 @@
 //! `<line>` (OpenDRIVE 1.8 §9.3): a straight reference line.
 
 use super::LocalPoint;
+use crate::math::Real;
 
 /// Point at arc length `ds` along a line.
 #[inline]
@@ -11,6 +12,14 @@ pub(crate) fn eval(ds: f64) -> LocalPoint {
         hdg: 0.0,
         curvature: 0.0,
     }
+}
+
+/// The point `ds` along a line from `start` whose heading has the sine and cosine given:
+/// (x + ds·cos h, y + ds·sin h), the reference point of `Geometry::eval_trig` and of a
+/// straight `FrameStretch` (road/frame_stretch.rs), one formula for both.
+#[inline(always)]
+pub(crate) fn along([x, y]: [Real; 2], ds: Real, [sin_h, cos_h]: [Real; 2]) -> [Real; 2] {
+    [x + ds * cos_h, y + ds * sin_h]
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! [`PlanView`] placing them in the inertial frame.
 
 mod arc;
-mod line;
+pub(crate) mod line;
 mod param_poly3;
 mod plan_view;
 mod poly3;

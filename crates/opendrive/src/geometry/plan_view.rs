@@ -104,10 +104,10 @@ impl Geometry {
     pub(crate) fn eval_trig(&self, s: Real) -> (RefPoint, Real, Real) {
         match self.kind {
             GeometryKind::Line => {
-                let ds = s - self.s;
+                let [x, y] = line::along([self.x, self.y], s - self.s, [self.sin_h, self.cos_h]);
                 let rp = RefPoint {
-                    x: self.x + ds * self.cos_h,
-                    y: self.y + ds * self.sin_h,
+                    x,
+                    y,
                     hdg: normalize_angle(self.hdg),
                     curvature: 0.0,
                 };

@@ -48,16 +48,7 @@ impl Road {
     #[inline(always)]
     pub fn pose(&self, s: Real, t: Real) -> Result<Pose, Error> {
         let s = self.check_s(s)?;
-        let f = road_frame(self, s);
-        let [x, y, z] = f.place(t, 0.0);
-        Ok(Pose {
-            x,
-            y,
-            z,
-            h: f.hdg,
-            p: f.pitch,
-            r: f.roll,
-        })
+        Ok(road_frame(self, s).pose(t))
     }
 
     /// Heading of the reference line at `s`: the `h` of [`pose`](Self::pose) at any t, bit for

@@ -52,31 +52,50 @@ impl Road {
 /// `s`; `None` if that record varies or `s` lies before the first record (extrapolated with
 /// ds < 0).
 fn narrow(records: &[Cubic], origin: Real, s: Real, range: &mut (Real, Real)) -> Option<()> {
+    let record = narrow_to_record(records, origin, s, range)?;
+    record.map_or(true, is_constant).then_some(())
+}
+
+/// Whether `record` is a constant: b = c = d = 0 (of either sign).
+pub(super) fn is_constant(record: &Cubic) -> bool {
+    record.b == 0.0 && record.c == 0.0 && record.d == 0.0
+}
+
+/// Narrows `range` to a [`CONSTANT_MARGIN`] inside the ends of the record of `records` (starts
+/// relative to `origin`) that `eval_piecewise` evaluates at `s`, and returns that record
+/// (`Some(None)` where there are none: every s has the value 0); `None` if `s` lies before
+/// the first record (extrapolated with ds < 0). Inside the narrowed range `eval_piecewise`
+/// evaluates the same record, with ds ≥ the margin: the record starting at or before
+/// s − origin + `LENGTH_EPSILON` is that one wherever s lies a margin inside its ends.
+pub(super) fn narrow_to_record<'a>(
+    records: &'a [Cubic],
+    origin: Real,
+    s: Real,
+    range: &mut (Real, Real),
+) -> Option<Option<&'a Cubic>> {
     if records.is_empty() {
-        return Some(());
+        return Some(None);
     }
     // The look-up of `eval_piecewise`.
     let i = records.partition_point(|r| r.start <= s - origin + LENGTH_EPSILON);
     let r = &records[i.checked_sub(1)?];
-    if r.b != 0.0 || r.c != 0.0 || r.d != 0.0 {
-        return None;
-    }
     range.0 = range.0.max(origin + r.start + CONSTANT_MARGIN);
     if let Some(next) = records.get(i) {
         range.1 = range.1.min(origin + next.start - CONSTANT_MARGIN);
     }
-    Some(())
+    Some(Some(r))
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::math::Cubic;
     use crate::model::{Lane, LaneSection};
     use crate::road::frame::tests::straight_road;
     use crate::road::lane_span::tests::lane;
 
-    fn cubic(start: Real, a: Real, b: Real) -> Cubic {
+    /// A record of value `a` and slope `b` from `start` (c = −0, d = 0).
+    pub(crate) fn cubic(start: Real, a: Real, b: Real) -> Cubic {
         Cubic {
             start,
             a,

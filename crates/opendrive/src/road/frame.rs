@@ -4,7 +4,7 @@
 //! sits at reference point + Rz(h)·Ry(p)·Rx(r)·(0, t, height): t is measured in the tilted
 //! cross-section (§10.5 superelevation rotates the t-axis about the s-axis).
 
-use crate::math::{eval_piecewise, Real};
+use crate::math::{eval_piecewise, Pose, Real};
 use crate::model::Road;
 
 /// The reference-line frame at some s.
@@ -19,8 +19,8 @@ pub(crate) struct RoadFrame {
     pub(crate) roll: Real,
     /// d(roll)/ds (rad/m).
     pub(crate) roll_rate: Real,
-    sin_h: Real,
-    cos_h: Real,
+    pub(super) sin_h: Real,
+    pub(super) cos_h: Real,
     sin_p: Real,
     cos_p: Real,
     sin_r: Real,
@@ -95,15 +95,42 @@ impl RoadFrame {
     /// World position of the cross-section point (t, height above the road surface).
     #[inline]
     pub(crate) fn place(&self, t: Real, height: Real) -> [Real; 3] {
+        self.place_from([self.x, self.y], t, height)
+    }
+
+    /// [`place`](Self::place) with the reference point `xy` in place of the frame's own.
+    #[inline(always)]
+    fn place_from(&self, xy: [Real; 2], t: Real, height: Real) -> [Real; 3] {
         let ([x, y], b) = cross_section(
             t,
             height,
-            [self.x, self.y],
+            xy,
             [self.sin_h, self.cos_h],
             self.sin_p,
             [self.sin_r, self.cos_r],
         );
         [x, y, self.z + b * self.cos_p]
+    }
+
+    /// The pose of the surface point at `t` ([`place`](Self::place) at height 0): heading,
+    /// pitch and roll the reference line's ([`Road::pose`]).
+    #[inline(always)]
+    pub(crate) fn pose(&self, t: Real) -> Pose {
+        self.pose_from([self.x, self.y], t)
+    }
+
+    /// [`pose`](Self::pose) with the reference point `xy` in place of the frame's own.
+    #[inline(always)]
+    pub(crate) fn pose_from(&self, xy: [Real; 2], t: Real) -> Pose {
+        let [x, y, z] = self.place_from(xy, t, 0.0);
+        Pose {
+            x,
+            y,
+            z,
+            h: self.hdg,
+            p: self.pitch,
+            r: self.roll,
+        }
     }
 
     /// Heading of the curve s ↦ place(t(s), height) in the horizontal plane, given dt/ds:
