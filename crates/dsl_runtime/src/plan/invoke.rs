@@ -193,8 +193,8 @@ impl Planner<'_> {
             // relative to another member it is bad input, `random_traffic_relations`) after a
             // run-time condition is its model's free-road acceleration over the phase
             // (`member_acceleration`, below), or as the rate of its speed change
-            // (`change_speed(v)`, `speed(v, at: end)`) its model's rate toward v (`member_rate`,
-            // below), beside every action that leaves the member's longitudinal domain to its
+            // (`change_speed(v)`, `speed(v, at: end)`, v fixed or another actor's speed ± δ)
+            // its model's rate toward v (`member_rate`, below), beside every action that leaves the member's longitudinal domain to its
             // model: a drive or move, its own lane action (follow_lane, change_lane: the
             // model's kept or mandatory lane), and a position, path or orientation action (a
             // TeleportAction is no motion control; change_position, follow_path and
@@ -202,7 +202,8 @@ impl Planner<'_> {
             // lateral domain only, the actor keeping its own speed along the path: the one
             // its model gives it). Beside keep_speed or remain_stationary it is every actor's
             // bad input (`check_keeps`, above), beside an action that controls the speed too
-            // (`check_speed_modifiers`).
+            // (`check_speed_modifiers`). A member's own timed trajectory is bad input: its
+            // times would set the speed the model sets (`check_member_trajectory`).
             if self.random_member(target) {
                 if mods.iter().any(|m| m.kind == ModKind::Acceleration) {
                     check_speed_modifiers(inv, first)?;
@@ -424,7 +425,7 @@ impl Planner<'_> {
                         let rate = mods.iter().find(|q| q.kind == ModKind::Acceleration);
                         if let Some(q) = rate.filter(|_| self.random_member(target)) {
                             let names = (name("check"), name("speed"));
-                            self.member_rate((m, q), target, len, names, out)?;
+                            self.member_rate((m, q), target, len, names, (out, after))?;
                             continue;
                         }
                         // Beside distance(d) without a duration after a run-time start: at

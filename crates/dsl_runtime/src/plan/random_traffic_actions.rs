@@ -49,8 +49,8 @@
 
 use scenario::{
     ControllerAction, ControllerDomains, DynamicsDimension, DynamicsShape, LaneChangeTarget,
-    LateralAction, LongitudinalAction, ModelAcceleration, PrivateAction, RateWithin, SpeedTarget,
-    SpeedTargetValueType, TransitionDynamics,
+    LateralAction, LongitudinalAction, ModelAcceleration, PrivateAction, RateWithin, SpeedOf,
+    SpeedTarget, SpeedTargetValueType, TransitionDynamics,
 };
 
 use super::action_args::positive;
@@ -538,10 +538,12 @@ impl Planner<'_> {
     }
 
     /// Refuses a member's own `follow_trajectory(…)` or `replay_trajectory(…)` (phase `p`,
-    /// invocation `inv`) as not run yet: the FollowTrajectoryAction timed by its points holds
-    /// both motion domains, and the engine hands it to the member's model, which holds the
-    /// longitudinal one and takes no trajectory (it would be ignored: engine
-    /// controller/strategy.rs).
+    /// invocation `inv`) as bad input: a trajectory timed by its points sets the member's
+    /// speed at every point (the FollowTrajectoryAction with a time reference holds both
+    /// motion domains), and the member's speed is its driver model's (§8.7.18.1), which takes
+    /// no trajectory (handed to it, the engine would ignore it: engine
+    /// controller/strategy.rs). Its path without the times, `follow_path(…)`, runs at the
+    /// speed the model gives.
     pub(super) fn check_member_trajectory(
         &self,
         p: &Phase,
@@ -555,8 +557,8 @@ impl Planner<'_> {
             return Ok(());
         }
         Err(p.site.err(
-            K::Unsupported,
-            format!("expected no {}(…) of `{target}`, a member of random traffic: not run yet, its trajectory's times would set the speed its driver model sets ({BEHAVIOUR}), and the model takes no trajectory; follow_path(…) runs (the model keeps the speed along the path)", inv.action),
+            K::Unsatisfiable,
+            format!("expected no {}(…) of `{target}`, a member of random traffic: its trajectory's times would set the speed its driver model sets ({BEHAVIOUR}); follow_path(…) along its points runs at the speed the model gives", inv.action),
         ))
     }
 
@@ -652,49 +654,79 @@ impl Planner<'_> {
     /// The phase's end does not end it: the model has v from then on, as after a group's
     /// `change_speed(v)`. With a fixed rate and a phase length `len`, the engine checks as for
     /// any actor that the change fits the phase from the member's speed then (as `names.0`).
-    /// v relative to another actor (its speed at the phase end, which the engine does not
-    /// know when the phase starts) is refused as not run yet.
+    /// v relative to another actor y (`speed(δ, faster_than/slower_than/same_as: y, at: end)`)
+    /// is y's speed ± δ as an ordinary actor's change at that rate reads it
+    /// (`start_relative_speed_at_rate`): with `track: projected` y's speed as the phase starts,
+    /// fixed, then as v above; else read at every step, the model's desired speed following it
+    /// at the rate (engine "A rate toward another's speed"), the braking toward the leader still
+    /// winning, released at the phase end (`after`; the desired speed last read stays), as the
+    /// ordinary actor's SpeedAction following y is stopped there.
     pub(super) fn member_rate(
         &mut self,
         (m, q): (&Modifier, &Modifier),
         target: &str,
         len: Option<f64>,
         names: (String, String),
-        out: &mut Vec<Planned>,
+        (out, after): (&mut Vec<Planned>, &mut Vec<Planned>),
     ) -> Result<(), Error> {
         let (v1, relative) = self.speed_value(m, None)?;
-        if let Some((x, _)) = relative {
-            return Err(m.site.err(
-                K::Unsupported,
-                format!(
-                    "expected `{}(…)` on `{target}`, a member of random traffic, at the rate of `{}(…)` toward a speed of its own: not run yet toward one relative to `{x}`, whose speed at the phase end its driver model would need when the phase starts",
-                    m.name, q.name
-                ),
-            ));
-        }
-        check_speed(m, v1)?;
         let rate = self.member_free(q)?;
+        // The speed toward which, as the engine's check at the start reads it (the ordinary
+        // actor's targets), and what the model is handed.
+        let (to, speed, of) = match relative {
+            None => {
+                check_speed(m, v1)?;
+                (SpeedTarget::Absolute(v1), v1, None)
+            }
+            Some((x, delta)) => {
+                let to = match m.projected {
+                    true => SpeedTarget::RelativeAtStart {
+                        entity_ref: x.clone(),
+                        value: delta,
+                    },
+                    false => SpeedTarget::Relative {
+                        entity_ref: x.clone(),
+                        value: delta,
+                        speed_target_value_type: SpeedTargetValueType::Delta,
+                        continuous: true,
+                    },
+                };
+                let of = SpeedOf {
+                    entity_ref: x,
+                    projected: m.projected,
+                };
+                (to, delta, Some(of))
+            }
+        };
         if let (ModelAcceleration::Absolute(a), Some(l)) = (&rate, len.filter(|l| *l > 0.0)) {
             out.push(speed_at_rate_check(
                 target,
                 (&q.name, &q.site),
-                (SpeedTarget::Absolute(v1), a.abs(), RateWithin::Time(l)),
+                (to, a.abs(), RateWithin::Time(l)),
                 names.0,
             ));
         }
+        let (absolute, followed) = (of.is_none(), of.as_ref().is_some_and(|o| !o.projected));
         let target_speed = ModelAcceleration::Toward {
-            speed: v1,
+            speed,
             rate: Box::new(rate),
+            of,
         };
+        let action =
+            |target| PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration { target });
         out.push(Planned::with_phase(
             target,
-            names.1,
-            PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration {
-                target: Some(target_speed),
-            }),
+            names.1.clone(),
+            action(Some(target_speed)),
             &m.site,
         ));
-        self.last_v.insert(target.to_string(), v1);
+        if followed {
+            let end = format!("{}_end", names.1);
+            after.push(Planned::with_phase(target, end, action(None), &m.site));
+        }
+        if absolute {
+            self.last_v.insert(target.to_string(), v1);
+        }
         Ok(())
     }
 

@@ -487,29 +487,60 @@ fn a_members_own_acceleration_beside_keep_speed_or_remain_stationary_is_bad_inpu
 }
 
 #[test]
-fn a_members_own_acceleration_toward_a_relative_speed_or_its_own_timed_trajectory_is_not_run_yet() {
-    // As the rate toward a speed relative to ego (its speed at the phase end unknown when the
-    // phase starts: 20:17, the speed modifier), and a member's own follow_trajectory(…) (a
-    // trajectory timed by its points sets the speed its model sets, and the model takes none:
-    // 28:13, the invocation; before, the engine ignored it): not-run-yet refusals before the
-    // run, on every seed.
-    let relative = "expected `speed(…)` on `g.vehicles[0]`, a member of random traffic, at the rate of `acceleration(…)` toward a speed of its own: not run yet toward one relative to `ego`";
-    let trajectory = "expected no follow_trajectory(…) of `g.vehicles[0]`, a member of random traffic: not run yet, its trajectory's times would set the speed its driver model sets";
-    for (name, what, at) in [
-        (
-            "err_random_traffic_member_own_acceleration_relative",
-            relative,
-            "20:17",
-        ),
-        (
-            "err_random_traffic_member_own_trajectory",
-            trajectory,
-            "28:13",
-        ),
-    ] {
-        refused_on_every_seed(name, (what, at), |e| {
-            matches!(e.kind(), dsl_runtime::ErrorKind::Unsupported)
-        });
+fn a_members_own_timed_trajectory_is_bad_input_naming_its_model() {
+    // A member's own follow_trajectory(…): its times would set the speed its model sets
+    // (§8.7.18.1, quoted in the message), and the model takes no trajectory (before, the engine
+    // ignored it): an error at the invocation (29:13) before the run, on every seed.
+    let what = "expected no follow_trajectory(…) of `g.vehicles[0]`, a member of random traffic: its trajectory's times would set the speed its driver model sets";
+    refused_on_every_seed(
+        "err_random_traffic_member_own_trajectory",
+        (what, "29:13"),
+        |e| {
+            matches!(e.kind(), dsl_runtime::ErrorKind::Unsatisfiable)
+                && e.to_string().contains("(§8.7.18.1: ")
+        },
+    );
+}
+
+#[test]
+fn a_members_own_acceleration_toward_a_speed_relative_to_another_actor_is_its_models_rate_toward_it(
+) {
+    // random_traffic_member_own_acceleration_relative.osc, worked in the file (before, refused
+    // as not run yet at 20:17): one member standing with v0 = 0 and no leader in its lane; ego
+    // at 10 m/s throughout. speed(2.05mps, faster_than: ego, at: end) at 2 m/s² over
+    // 3.05-10.05 s: 7.00 m/s at the mid-point 6.55 s, 12.00 at 9.05, the last step cut to
+    // 1 m/s²: 12.05 at 9.10 (not 12.10), held to the phase end (10.05 s) and, released, to
+    // 14 s; 48.04875 m travelled over the phase.
+    let m = "g.vehicles[0]";
+    let want = [
+        (3.05, 0.0),
+        (6.55, 7.0),
+        (9.05, 12.0),
+        (9.1, 12.05),
+        (10.05, 12.05),
+        (14.0, 12.05),
+    ];
+    let runs = member_speeds("random_traffic_member_own_acceleration_relative", &want);
+    for (seed, r) in runs.iter().enumerate() {
+        let ego = r.at(6.55, "ego").speed;
+        assert!((ego - 10.0).abs() < 1e-9, "seed {seed}: ego {ego}");
+        let ds = (r.at(10.05, m).s - r.at(3.05, m).s).abs();
+        assert!((ds - 48.04875).abs() < 1e-9, "seed {seed}: {ds} m");
+        // Never past the target at any step (the cut step).
+        for (t, objs) in &r.frames {
+            let v = objs.iter().find(|o| o.name == m).map_or(0.0, |o| o.speed);
+            assert!(v <= 12.05 + 1e-9, "seed {seed} at {t}: {v} m/s");
+        }
+        // The hand-off at the phase start, its release at the end.
+        let (notes, at) = free_road_notes(r, m);
+        assert_eq!(at, ["3.05", "10.05"], "seed {seed}: {notes:?}");
+        assert!(
+            notes[0]
+                .1
+                .contains("desired speed: the reference's at each step plus 2.05 m/s, followed at a free-road acceleration of 2 m/s²")
+                && notes[1].1.contains("released"),
+            "seed {seed}: {notes:?}"
+        );
     }
 }
 

@@ -33,6 +33,15 @@
 //! a·(1 − (v/v0)^δ) with v0 = v, 0 at v, so the model holds v. Behind a leader the braking
 //! still wins, and v is reached later or not at all; a later speed or free-road acceleration
 //! handed to the model replaces the rate.
+//!
+//! **A rate toward another's speed** (the same strategy with a reference x and a value δ,
+//! oscsim's `scenario::ModelAcceleration::Toward` with `of`, which the DSL runtime gives a
+//! member of random traffic for `speed(δ, faster_than/slower_than/same_as: x, at: end)` at the
+//! rate of `acceleration(a)`): at every step's start the desired speed and v are x's speed
+//! in the view plus δ (within 0 and the vehicle's maximum), and the free-road term is the
+//! rate toward v, cut as above; it is not released when v is reached (v moves with x), so the
+//! model follows x's speed ± δ at up to |a| until a later strategy replaces or releases it
+//! (released, the desired speed stays the last one read).
 
 use opendrive::Real;
 
@@ -40,6 +49,7 @@ use super::command::{Command, Controller, FreeAcceleration, Strategy};
 use super::view::ControllerView;
 use crate::models::acc::AccParameters;
 use crate::models::idm::{IdmParameters, Leader};
+use crate::world::EntityId;
 
 /// The desired speed when neither the properties nor the entity give one (m/s): 120 km/h.
 pub const FALLBACK_DESIRED_SPEED: Real = 120.0 / 3.6;
@@ -104,6 +114,10 @@ struct Toward {
     /// Whether the change is up (the speed below `speed` at the first step after the hand-off;
     /// `None` before that step).
     up: Option<bool>,
+    /// The entity whose speed plus the value is `speed`, read at every step, and the value
+    /// (m/s): the speed followed, never released by reaching it (module doc, "A rate toward
+    /// another's speed").
+    of: Option<(EntityId, Real)>,
 }
 
 /// How near its speed (m/s) a change at a handed rate counts as ended: the rounding of the
@@ -157,6 +171,13 @@ impl IdmController {
         let Some(t) = self.toward.as_mut() else {
             return;
         };
+        // Toward another's speed: read now, the desired speed too; followed, not released.
+        if let Some((x, value)) = t.of {
+            let v = (view.other(x).speed + value).max(0.0).min(self.max_speed);
+            t.speed = v;
+            self.params.desired_speed = v;
+            return;
+        }
         let v = view.speed().max(0.0);
         let up = *t.up.get_or_insert(v < t.speed);
         let reached = if up {
@@ -203,17 +224,30 @@ impl IdmController {
                 }
                 Some(format!("desired speed {} m/s", self.params.desired_speed))
             }
-            Strategy::FreeAccelerationToward { speed, rate } => {
-                self.params.desired_speed = speed.max(0.0).min(self.max_speed);
-                let v = self.params.desired_speed;
+            Strategy::FreeAccelerationToward { speed, rate, of } => {
                 self.free = Some(rate);
-                self.toward = Some(Toward { speed: v, up: None });
                 let a = match rate {
                     FreeAcceleration::Fixed(a) => format!("{} m/s²", a.abs()),
                     FreeAcceleration::Follow { value, .. } => {
                         format!("the magnitude of the reference's at each step plus {value} m/s²")
                     }
                 };
+                if let Some(x) = of {
+                    // The speed and the desired speed are read at each step (`settle`).
+                    self.toward = Some(Toward {
+                        speed: self.params.desired_speed,
+                        up: None,
+                        of: Some((x, speed)),
+                    });
+                    return Some(format!("desired speed: the reference's at each step plus {speed} m/s, followed at a free-road acceleration of {a} in place of the IDM's a·(1 − (v/v0)^δ), less its interaction term toward the leader"));
+                }
+                self.params.desired_speed = speed.max(0.0).min(self.max_speed);
+                let v = self.params.desired_speed;
+                self.toward = Some(Toward {
+                    speed: v,
+                    up: None,
+                    of: None,
+                });
                 Some(format!("desired speed {v} m/s, reached at a free-road acceleration of {a} in place of the IDM's a·(1 − (v/v0)^δ), less its interaction term toward the leader, then the IDM's own"))
             }
             Strategy::FreeAcceleration(free) => {

@@ -97,12 +97,17 @@ pub enum Strategy {
     /// oscsim's rate of a change to a speed (`scenario::ModelAcceleration::Toward`): `speed`
     /// the model's desired speed, and `rate`'s value in magnitude, signed toward `speed`, its
     /// free-road term (the step that reaches `speed` cut to end there) until the entity's
-    /// speed reaches `speed`; then the model's own free-road term.
+    /// speed reaches `speed`; then the model's own free-road term. With `of`, the speed is
+    /// that entity's as the step's view shows it plus `speed`, read at every step: the
+    /// desired speed follows it and the rate is kept toward it (never released by reaching
+    /// it) until a later strategy replaces or releases it.
     FreeAccelerationToward {
-        /// The speed the change ends at (m/s).
+        /// The speed the change ends at (m/s); with `of`, added to that entity's speed.
         speed: Real,
         /// Its rate (m/s², taken in magnitude).
         rate: FreeAcceleration,
+        /// The entity whose speed `speed` is added to, read at every step (`None`: `speed`).
+        of: Option<EntityId>,
     },
 }
 

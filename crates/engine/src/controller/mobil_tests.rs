@@ -840,6 +840,7 @@ fn a_rate_toward_a_speed_is_its_magnitude_toward_it_cut_at_it_and_released_there
         let toward = |speed: Real| Strategy::FreeAccelerationToward {
             speed,
             rate: FreeAcceleration::Fixed(-1.5),
+            of: None,
         };
         let fresh_idm = || IdmDriver::new(IdmController::new(p, true));
         let fresh_mobil = || MobilController::new(p, true, MobilParameters::default());
@@ -883,4 +884,89 @@ fn a_rate_toward_a_speed_is_its_magnitude_toward_it_cut_at_it_and_released_there
         cars += 1;
     });
     assert_eq!(cars, 2400);
+}
+
+/// A rate toward another's speed (car_following.rs module doc, "A rate toward another's
+/// speed"): for every car at v ≥ 10.5 m/s on the 40 crowded highways, with x the world's next
+/// car at v_x and δ = v − v_x + 10: handed a rate of −1.5 m/s² toward x's speed + δ, the `idm`
+/// and the `mobil` take x's speed as the step's view shows it: desired speed v_x + δ (= v + 10
+/// up to rounding), command +1.5 less the IDM's interaction term toward the leader bit for bit
+/// (|v + 10 − v| = 10 > 1.5·0.05: the full magnitude, signed toward it). In the same world with
+/// x 20 m/s slower the same handed controllers read it at their next step: desired speed
+/// (v_x − 20) + δ (= v − 10 ≥ 0.5), command −1.5 less the interaction term bit for bit: the
+/// rate follows x and is not released. Released, the desired speed stays the last one read.
+#[test]
+fn a_rate_toward_anothers_speed_reads_it_at_every_step_and_follows_it() {
+    let mut cars = 0;
+    for seed in 1..=40u64 {
+        let w = crowded(60, seed);
+        let index = LaneIndex::build(&w.network, w.entities());
+        let n = w.entities().len();
+        for (i, e) in w.entities().iter().enumerate() {
+            let v = e.speed.max(0.0);
+            if v < 10.5 {
+                continue;
+            }
+            let x = &w.entities()[(i + 1) % n];
+            let at = format!("seed {seed} {} toward {}", e.name, x.name);
+            let p = IdmParameters::default();
+            let delta = v - x.speed + 10.0;
+            let toward = || Strategy::FreeAccelerationToward {
+                speed: delta,
+                rate: FreeAcceleration::Fixed(-1.5),
+                of: Some(x.id),
+            };
+            let mut idm = IdmDriver::new(IdmController::new(p, true));
+            let mut mobil = MobilController::new(p, true, MobilParameters::default());
+            idm.strategy(toward());
+            mobil.strategy(toward());
+            // Step 1: x at v_x.
+            let view = view_of(10.0, &w, &index, e).stepping(0.05);
+            let less = |view: &ControllerView<'_>, a: Real| match with_red_light(
+                view,
+                crate::controller::car_following::leader(view),
+            ) {
+                None => a,
+                Some(l) => a - p.interaction(v, l),
+            };
+            let (ia, ma) = (idm.command(&view).0, mobil.command(&view).0);
+            let want = less(&view, 1.5);
+            let desired = x.speed + delta;
+            assert!(
+                ia.to_bits() == want.to_bits()
+                    && ma.to_bits() == want.to_bits()
+                    && idm.idm.params.desired_speed == desired
+                    && mobil.idm.params.desired_speed == desired,
+                "{at}: idm {ia}, mobil {ma}, want {want}; desired {}",
+                idm.idm.params.desired_speed
+            );
+            // Step 2: x 20 m/s slower, read by the same controllers.
+            let mut w2 = crowded(60, seed);
+            w2.entity_mut(x.id).speed = x.speed - 20.0;
+            let index2 = LaneIndex::build(&w2.network, w2.entities());
+            let e2 = w2.entity(e.id);
+            let view2 = view_of(10.05, &w2, &index2, e2).stepping(0.05);
+            let (ia, ma) = (idm.command(&view2).0, mobil.command(&view2).0);
+            let want = less(&view2, -1.5);
+            let desired = (x.speed - 20.0) + delta;
+            assert!(
+                ia.to_bits() == want.to_bits()
+                    && ma.to_bits() == want.to_bits()
+                    && idm.idm.params.desired_speed == desired
+                    && (desired - (v - 10.0)).abs() < 1e-9,
+                "{at}: idm {ia}, mobil {ma}, want {want}; desired {}",
+                idm.idm.params.desired_speed
+            );
+            // Released: the desired speed read last stays.
+            idm.strategy(Strategy::FreeAcceleration(None));
+            assert!(
+                idm.idm.params.desired_speed == desired
+                    && idm.idm.free_term(&view2, v).to_bits()
+                        == idm.idm.params.free_acceleration(v).to_bits(),
+                "{at}"
+            );
+            cars += 1;
+        }
+    }
+    assert!(cars > 100, "{cars} cars at 10.5 m/s or more");
 }

@@ -2,7 +2,7 @@
 //! models' readings are in the module doc of `controller`).
 
 use scenario::{
-    LateralAction, LongitudinalAction, ModelAcceleration, PrivateAction, RoutingAction,
+    LateralAction, LongitudinalAction, ModelAcceleration, PrivateAction, RoutingAction, SpeedOf,
 };
 
 use super::assign::Origin;
@@ -11,7 +11,7 @@ use super::properties::{ControllerKind, ModelSettings};
 use super::table::ControllerTable;
 use crate::error::Error;
 use crate::output::EventRecord;
-use crate::store::targets::{target_lane, target_speed};
+use crate::store::targets::{entity_ref, target_lane, target_speed};
 use crate::store::World;
 use crate::world::EntityId;
 
@@ -89,10 +89,26 @@ fn strategy(
         }
         PrivateAction::Longitudinal(LongitudinalAction::ModelAcceleration { target }) => {
             Some(match target {
-                Some(ModelAcceleration::Toward { speed, rate }) => {
+                Some(ModelAcceleration::Toward { speed, rate, of }) => {
+                    // Relative to x: x's speed now plus `speed`, fixed (projected), or read
+                    // by the model at every step.
+                    let (speed, of) = match of {
+                        None => (*speed, None),
+                        Some(SpeedOf {
+                            entity_ref: name,
+                            projected,
+                        }) => {
+                            let x = entity_ref(world, name, origin.pos)?;
+                            match projected {
+                                true => (world.entity(x).speed + speed, None),
+                                false => (*speed, Some(x)),
+                            }
+                        }
+                    };
                     Strategy::FreeAccelerationToward {
-                        speed: *speed,
+                        speed,
                         rate: free_acceleration(world, rate, origin)?,
+                        of,
                     }
                 }
                 Some(t) => Strategy::FreeAcceleration(Some(free_acceleration(world, t, origin)?)),

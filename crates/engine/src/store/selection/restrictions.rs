@@ -160,6 +160,10 @@ fn action_reference(a: &Action) -> Option<(&str, &'static str)> {
                 scenario::ModelAcceleration::Relative { entity_ref, .. } => {
                     Some((entity_ref, "a driver model's free-road acceleration"))
                 }
+                scenario::ModelAcceleration::Toward {
+                    of: Some(scenario::SpeedOf { entity_ref, .. }),
+                    ..
+                } => Some((entity_ref, "a driver model's desired speed")),
                 scenario::ModelAcceleration::Toward { rate, .. } => match &**rate {
                     scenario::ModelAcceleration::Relative { entity_ref, .. } => {
                         Some((entity_ref, "a driver model's free-road acceleration"))

@@ -464,11 +464,19 @@ pub enum ModelAcceleration {
     /// signed toward `speed`, the last step's term cut so that the step ends at `speed`, until
     /// the entity's speed reaches `speed`; from then the model's own free-road term (toward
     /// `speed`, its desired speed). A later speed or free-road acceleration replaces it.
+    /// With `of` (oscsim's relative target, ASAM OpenSCENARIO DSL 2.1 §8.9 `speed(v,
+    /// faster_than/slower_than/same_as: x, at: end)` at the rate of `acceleration(…)`), the
+    /// speed is that entity's plus `speed`: its speed as the action starts, fixed
+    /// (`projected`), else read at every step's start, the model's desired speed following it
+    /// and the rate kept toward it (cut in the step that reaches it) until a later action
+    /// replaces or releases it.
     Toward {
-        /// The speed the change ends at (m/s).
+        /// The speed the change ends at (m/s); with `of`, added to that entity's speed.
         speed: f64,
         /// Its rate (m/s²; the sign is the change's).
         rate: Box<ModelAcceleration>,
+        /// The entity whose speed `speed` is added to (`None`: `speed` itself).
+        of: Option<SpeedOf>,
     },
 }
 
