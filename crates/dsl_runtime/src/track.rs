@@ -383,6 +383,9 @@ impl Track {
 
     /// Lane `lane`, planned from time `from`, followed to where the actor is at `t`.
     fn followed(&self, road: &PlanRoad<'_>, (from, lane): (f64, i32), t: f64) -> i32 {
+        if !road.renumbers_lanes() {
+            return lane;
+        }
         road.lane_along(lane, self.s_on(road, from), self.s_on(road, t))
     }
 

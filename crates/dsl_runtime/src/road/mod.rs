@@ -23,7 +23,7 @@ pub(crate) use path::route_roads;
 
 use std::f64::consts::PI;
 
-use opendrive::{LaneType, Road, RoadNetwork};
+use opendrive::{LaneHandle, LaneType, Road, RoadNetwork};
 
 /// One road of a plan and the plan's s at its start.
 #[derive(Debug, Clone, Copy)]
@@ -44,6 +44,10 @@ pub(crate) struct PlanRoad<'a> {
     /// The view of an actor driving the roads against s (see the module doc): every s the
     /// methods take or give is u = L − s, every t is −t, the lanes are the left side's.
     against: bool,
+    /// Whether a lane section of these roads links a lane into one of another id (ASAM
+    /// OpenDRIVE 1.8 §11.5 lane linkage). Where none does, [`lane_along`](Self::lane_along)
+    /// gives every lane back as it is, and the plan's lane reads need no s along the lane.
+    renumbers: bool,
 }
 
 impl<'a> PlanRoad<'a> {
@@ -85,6 +89,7 @@ impl<'a> PlanRoad<'a> {
 
     fn over(net: &'a RoadNetwork, roads: Vec<usize>) -> Self {
         let mut start = 0.0;
+        let renumbers = roads.iter().any(|&k| renumbers_lanes(net, k));
         let segments = roads
             .into_iter()
             .map(|k| {
@@ -99,7 +104,14 @@ impl<'a> PlanRoad<'a> {
             net,
             routed: false,
             against: false,
+            renumbers,
         }
+    }
+
+    /// Whether a lane may be followed into one of another id along these roads (`renumbers`):
+    /// when not, a lane planned at one s is the same id at every other.
+    pub(crate) fn renumbers_lanes(&self) -> bool {
+        self.renumbers
     }
 
     /// The same roads driven against s (see the module doc), or why they cannot be: over
@@ -352,6 +364,9 @@ impl PlanRoad<'_> {
     /// the same id (`chain` stops where a road link renumbers a lane). Where a lane has no
     /// link into the next lane section, or is missing at `s0`, the id it had there.
     pub(crate) fn lane_along(&self, lane: i32, s0: f64, s1: f64) -> i32 {
+        if !self.renumbers {
+            return lane;
+        }
         let (a, b) = (self.forward_s(s0), self.forward_s(s1));
         let (lo, hi) = (a.min(b), a.max(b));
         let mut segments: Vec<&Segment<'_>> = self
@@ -389,6 +404,26 @@ impl PlanRoad<'_> {
         }
         lane
     }
+}
+
+/// Whether a lane section of road `k` links a lane of it into one of another id of the same
+/// road (ASAM OpenDRIVE 1.8 §11.5: `<link><successor id=…>` / `<predecessor id=…>`, as the
+/// network's lane graph holds them), the only way [`PlanRoad::lane_along`] changes a lane.
+fn renumbers_lanes(net: &RoadNetwork, k: usize) -> bool {
+    let road = &net.roads()[k];
+    road.lane_sections.iter().enumerate().any(|(i, sec)| {
+        sec.left.iter().chain(&sec.right).any(|lane| {
+            let h = LaneHandle {
+                road: k as u32,
+                section: i as u32,
+                lane: lane.id,
+            };
+            net.successors(h)
+                .iter()
+                .chain(net.predecessors(h))
+                .any(|n| n.road == h.road && n.section != h.section && n.lane != h.lane)
+        })
+    })
 }
 
 /// Sampling step in s of lane centre lengths (m).
@@ -460,6 +495,9 @@ impl PlanRoad<'_> {
     /// within one lane section of one road (the lane sections at `s` and `next` asked first,
     /// the links only where a step crosses into another).
     fn stepped(&self, lane: i32, s: f64, next: f64) -> i32 {
+        if !self.renumbers {
+            return lane;
+        }
         let section = |s: f64| {
             let g = self.segment(s);
             (g.start, g.road.lane_section_index(s - g.start))
@@ -605,5 +643,27 @@ mod tests {
         // Back from s = 350 m in lane -2: the same length, into -1 before s = 300 m.
         assert!((road.lane_distance(-2, 350.0, 250.0) + 100.036731).abs() < 1e-6);
         assert!((road.s_after(-2, 350.0, -100.036731) - 250.0).abs() < 1e-5);
+    }
+
+    #[test]
+    fn only_a_road_whose_lane_sections_renumber_a_lane_is_followed_along_links() {
+        let net = |name: &str| {
+            let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("tests/roads")
+                .join(name);
+            let text = std::fs::read_to_string(&path).expect("the bundled road");
+            RoadNetwork::from_str(&text, &path).expect("parses")
+        };
+        // lane_add.xodr: two lane sections (s = 0 and 300 m), lanes 1, -1, -2 linked to the
+        // same ids, -3 new at 300 m with no predecessor: no lane changes its id.
+        let kept = net("lane_add.xodr");
+        let road = PlanRoad::pick(&kept).expect("a road");
+        assert!(!road.renumbers_lanes());
+        assert_eq!(road.lane_along(-2, 250.0, 350.0), -2);
+        // lane_add_inner.xodr: -1 and -2 of the first section lead into -2 and -3.
+        let renumbered = net("lane_add_inner.xodr");
+        let road = PlanRoad::pick(&renumbered).expect("a road");
+        assert!(road.renumbers_lanes());
+        assert_eq!(road.lane_along(-2, 250.0, 350.0), -3);
     }
 }
