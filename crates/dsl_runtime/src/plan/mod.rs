@@ -8,7 +8,9 @@
 //!   when the last member that has an end of its own ends, and members without one end with it.
 //!   `one_of`: the member drawn from the seed, as a one-member serial.
 //! - A phase's `duration` (a range is drawn from the seed) or `until` (whichever comes first)
-//!   ends it; an invocation without either ends with its composition, or when the engine
+//!   ends it; an action that ends on its own ends its invocation then, unless the invocation
+//!   gives its own `duration:` argument (§8.8 `osc_action.duration`, the action's duration),
+//!   which it then lasts (`schedule`); an invocation without either ends with its composition, or when the engine
 //!   measures its `position(…, at: end)` gap reached. A composition's own end also stops its
 //!   running members (and a serial's later members never start). `emit e` is an instant.
 //! - A phase that nothing ends is an error before the run, unless it is the last thing the

@@ -7,7 +7,7 @@ use scenario::{ConditionGroup, StoryboardElementState, Trigger};
 use super::planner::{no_end, Planner};
 use super::types::{PhasePlan, When};
 use crate::error::Error;
-use crate::resolve::{At, Invoke, Kind, ModKind, Phase};
+use crate::resolve::{arg, At, Invoke, Kind, ModKind, Phase};
 use crate::trigger::act_state;
 
 impl Planner<'_> {
@@ -57,6 +57,14 @@ impl Planner<'_> {
                         Ok(derived)
                     })?;
                 }
+                // An invocation's own `duration:` argument is the action's duration (§8.8:
+                // `osc_action.duration`), so the phase lasts it: an action that completes
+                // sooner (`assign_position`, `assign_speed`: at once) leaves its actor going
+                // on as it left it until then; one that would complete later is cut there.
+                let derived = match &p.kind {
+                    Kind::Invoke(inv) if arg(&inv.args, "duration").is_some() => None,
+                    _ => derived,
+                };
                 let end = match (own, derived, inherit) {
                     // An action that ends on its own ends its phase then, unless the phase's
                     // own end comes first.

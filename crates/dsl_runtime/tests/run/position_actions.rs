@@ -26,6 +26,24 @@ fn assign_position_to_an_odr_point_ends_at_once() {
     assert_eq!(r.phase("do.2"), (2.0, 4.0));
 }
 
+/// An action's own `duration:` is its length: assign_position and assign_speed given one last
+/// it (assign_with_duration.osc's comment, by hand).
+#[test]
+fn an_action_that_ends_at_once_given_a_duration_lasts_it() {
+    let r = run("actions/assign_with_duration", 0, None);
+    assert_eq!(r.phase("do.1"), (2.0, 5.0));
+    close(r.at(2.05, "ego").x, 120.0, "x(2.05)");
+    let end = r.at(5.0, "ego");
+    close(end.x, 149.5, "x(5)");
+    close(end.y, -1.25, "y(5)");
+    assert_eq!(end.lane, -1);
+    assert_eq!(r.phase("do.2"), (5.0, 7.0));
+    close(r.at(5.05, "ego").speed, 20.0, "v(5.05)");
+    close(r.at(7.0, "ego").x, 189.5, "x(7)");
+    assert_eq!(r.phase("do.3"), (7.0, 8.0));
+    close(r.at(8.0, "ego").x, 209.5, "x(8)");
+}
+
 /// §8.8.2.4 with a route_point (assign_position_route.osc's comment, by hand).
 #[test]
 fn assign_position_to_a_route_point_on_the_runtimes_route() {
