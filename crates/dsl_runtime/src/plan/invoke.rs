@@ -248,7 +248,7 @@ impl Planner<'_> {
             if let Some(k) = mods.iter().find(|m| m.kind == ModKind::KeepPosition) {
                 match t0 {
                     // After a run-time start the speed is the engine's (plan::runtime).
-                    None => out.push(standing_check(target, k, name("check"))),
+                    None => out.push(standing_check(target, (&k.name, &k.site), name("check"))),
                     Some(t) => {
                         let v = self.track(target).at(t).1;
                         if !first && v.abs() > 1e-9 {

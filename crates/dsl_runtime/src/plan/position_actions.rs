@@ -4,8 +4,8 @@
 //!
 //! | action | lowered to | ends |
 //! | --- | --- | --- |
-//! | `assign_position(position \| route_point \| odr_point)` | TeleportAction to the lane position of the place on the plan road | at once |
-//! | `assign_orientation(target)` | TeleportAction to where the actor is, the orientation absolute (world yaw, pitch, roll); the actor must stand | at once |
+//! | `assign_position(position \| route_point \| odr_point)` | TeleportAction to the lane position of the place on the plan road | at once (given its own `duration:`, the phase lasts it: `schedule`) |
+//! | `assign_orientation(target)` | TeleportAction to where the actor is, the orientation absolute (world yaw, pitch, roll); the actor must stand (at a start the plan knows, its track's speed then; after a run-time condition the engine's check at the start, `runtime_kept::standing_check`: the plan's last speed is not a member of random traffic's, whose model moves it) | at once |
 //! | `change_position(target, on_road_network: true)` | along its lane at its speed to the target's s, into the target's lane (LaneChangeAction) or offset (LaneOffsetAction), sinusoidal over exactly that time | when the actor is there |
 //! | `change_position(target, interpolation)` | FollowTrajectoryAction along the straight line from where the actor is to the target (at a known start a six-dimensional Polyline that leaves the actor facing along the target's lane where it ends, `path_shape::line_ending_along`), or (`smooth`) the cubic Hermite curve from the actor's heading along its lane into the lane's heading at the target (`path_shape`), at its speed (after a run-time condition the same line from where the engine finds the actor when the action starts, oscsim's LineFromActor shape, or the curve from the actor's pose then, oscsim's SmoothFromActor shape) | when the actor is there |
 //!
@@ -42,6 +42,7 @@ use scenario::{
 use super::action_args::timed;
 use super::path_shape;
 use super::planner::Planner;
+use super::runtime_kept::standing_check;
 use super::speed_actions::Slot;
 use super::types::{Planned, When, LATERAL_TOLERANCE, MAX_ACCELERATION, POSITION_TOLERANCE};
 use crate::error::{Error, ErrorKind as K, Site};
@@ -158,12 +159,24 @@ impl Planner<'_> {
         };
         // A moving vehicle goes on along its lane while the engine keeps the heading it was
         // given: a sideways-facing vehicle driving straight on, which no scenario means.
-        let v = t0.map_or(self.last_v[target], |t| self.track(target).at(t).1);
-        if v.abs() > 1e-9 {
-            return Err(p.site.err(
-                K::Unsatisfiable,
-                format!("expected `{target}` standing at the start of assign_orientation(…) (a moving vehicle follows its lane), found it at {v:.2} m/s"),
-            ));
+        match t0 {
+            Some(t) => {
+                let v = self.track(target).at(t).1;
+                if v.abs() > 1e-9 {
+                    return Err(p.site.err(
+                        K::Unsatisfiable,
+                        format!("expected `{target}` standing at the start of assign_orientation(…) (a moving vehicle follows its lane), found it at {v:.2} m/s"),
+                    ));
+                }
+            }
+            // After a run-time start the speed is the run's: the plan's last speed is not the
+            // actor's after a gap action, nor ever a member of random traffic's (its driver
+            // model's), so the engine checks it then, before the turn.
+            None => out.push(standing_check(
+                target,
+                ("assign_orientation", &p.site),
+                name("check"),
+            )),
         }
         let n = name("assign_orientation");
         out.push(Planned::with_phase(

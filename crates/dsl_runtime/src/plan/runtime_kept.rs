@@ -7,13 +7,14 @@
 //! | --- | --- |
 //! | `yaw(ψ)`, `orientation(yaw: ψ)` relative to the road | the engine's check of the actor's heading minus the road's where it is, at the start (at: start, all) and the end (at: end, all) (`start_yaws`) |
 //! | `keep_position()` | the engine's check that the actor stands at the start (`standing_check`) |
+//! | `assign_orientation(target)` (§8.8.2.5) | the same check, before the TeleportAction (`plan::position_actions`) |
 
 use scenario::{HeadingCheck, HeadingFrom, StateCheck};
 
 use super::planner::Planner;
 use super::runtime::phase_start_check;
 use super::types::{Planned, HEADING_TOLERANCE, SPEED_TOLERANCE};
-use crate::error::Error;
+use crate::error::{Error, Site};
 use crate::resolve::{Arg, At, ModKind, Modifier, Val};
 
 impl Planner<'_> {
@@ -77,15 +78,17 @@ impl Planner<'_> {
 }
 
 /// The engine's check that `target` stands when a phase of it that starts on a run-time
-/// condition starts, for `keep_position()` `k` (§8.8 "keeps its position": nothing beside it
-/// moves the actor, `check_keeps`, so one standing then stands throughout), as the action
-/// `name`: the plan's speed where it last knows the actor is not the actor's after a gap
-/// action or a `change_acceleration` (it records the speed a held braking would reach), so a
-/// moving actor is an error record and a failed run, never a silent pass.
-pub(super) fn standing_check(target: &str, k: &Modifier, name: String) -> Planned {
+/// condition starts, for `what` written at `site`: `keep_position()` (§8.8 "keeps its
+/// position": nothing beside it moves the actor, `check_keeps`, so one standing then stands
+/// throughout) or `assign_orientation` (a moving actor would drive on crabwise), as the action
+/// `name`. The plan's speed where it last knows the actor is not the actor's after a gap
+/// action or a `change_acceleration` (it records the speed a held braking would reach), nor a
+/// member of random traffic's (its driver model's), so a moving actor is an error record and a
+/// failed run, never a silent pass, and a standing one is never refused.
+pub(super) fn standing_check(target: &str, (what, site): (&str, &Site), name: String) -> Planned {
     let check = StateCheck {
         speed: Some((None, 0.0, SPEED_TOLERANCE)),
         ..StateCheck::default()
     };
-    phase_start_check(target, (&k.name, &k.site), check, name)
+    phase_start_check(target, (what, site), check, name)
 }

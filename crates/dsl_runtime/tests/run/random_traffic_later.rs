@@ -825,3 +825,47 @@ fn a_members_driver_is_activated_on_the_domains_its_model_holds() {
         }
     }
 }
+
+/// A member's own `assign_orientation` after a run-time condition is the engine's check that it
+/// stands then (§8.7.18.1: its speed is its model's), not the plan's last speed of it
+/// (random_traffic_member_orientation*.osc's comments, by hand): a member that stands is turned
+/// where it is on every seed (the plan refused it before, reading the drawn start speed); a
+/// moving one fails the run at the phase start with the speed the IDM's closed form gives (the
+/// plan let it turn before, reading 0 m/s).
+#[test]
+fn a_members_assign_orientation_after_a_run_time_condition_is_the_engines_standing_check() {
+    let m = "g.vehicles[0]";
+    for seed in 0..4 {
+        let r = run("random_traffic_member_orientation", seed, None);
+        let at = r.at(15.05, m);
+        assert!(at.speed.abs() < 1e-9, "seed {seed}: {at:?}");
+        // Not turned before: the heading it stopped with (its model may have stopped it in a
+        // lane change).
+        assert_eq!(at.h, r.at(15.0, m).h, "seed {seed}");
+        for t in [15.1, 16.0, 20.0] {
+            let o = r.at(t, m);
+            assert!((o.h - 0.5).abs() < 1e-9, "seed {seed} at {t}: {o:?}");
+            assert!((o.x - at.x).abs() < S_TOL && (o.y - at.y).abs() < S_TOL);
+        }
+    }
+    let name = "random_traffic_member_orientation_moving";
+    let lowered = crate::support::lower(name, 0, None).unwrap_or_else(|e| panic!("{e}"));
+    let (error, records) = crate::support::run_to_error(&lowered.scenario);
+    let error = error.expect("the run fails");
+    let want = "expected 'g.vehicles[0]' at 0.000 m/s (within 0.01 m/s) (assign_orientation(…) at ";
+    let place = format!("{name}.osc:25:13), found it at ");
+    assert!(error.starts_with(want) && error.contains(&place), "{error}");
+    let found: f64 = error
+        .split("found it at ")
+        .nth(1)
+        .and_then(|s| s.split(' ').next())
+        .and_then(|s| s.parse().ok())
+        .unwrap_or_else(|| panic!("{error}"));
+    let v = crate::random_traffic::free_road_speed(0.0, 10.0, 0.73, 7.05);
+    assert!((v - 5.08).abs() < 0.005, "hand: {v}");
+    assert!((found - v).abs() < 0.01, "{found} vs {v}: {error}");
+    assert!(error.ends_with("m/s at t = 8.050 s"), "{error}");
+    assert_eq!(records.len(), 1, "{records:?}");
+    assert!((records[0].0 - 8.05).abs() < 1e-9, "{records:?}");
+    assert_eq!(records[0].1, "do.1.1/g.vehicles[0]/1:check");
+}
