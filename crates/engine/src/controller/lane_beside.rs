@@ -200,7 +200,9 @@ impl KeptRoad {
         network: &RoadNetwork,
         track: &TrackInput,
     ) -> &'k KeptRoad {
-        if !kept.is_some_and(|k| k.holds(track)) {
+        // By reference: `is_some_and` on the `Option` itself copied the kept answers (issue
+        // 31).
+        if !kept.as_ref().is_some_and(|k| k.holds(track)) {
             *kept = None;
         }
         kept.get_or_insert_with(|| Self::ask_cold(network, track))

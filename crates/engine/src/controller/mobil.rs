@@ -140,17 +140,33 @@ impl MobilController {
     /// leaders weighed at that speed; and the followers are weighed first with bounds of their
     /// free-road terms instead of the terms ([`settled_without_powers`]), which settle almost
     /// every candidate.
+    #[inline(always)]
     fn judge(&self, view: &ControllerView<'_>, own: &mut Own, b: &Beside) -> Option<Real> {
         // The mark first: a lane behind a mark not to be crossed costs no occupancy search
         // (either leaves the verdict "no change").
         if !b.crossing_permitted || view.occupied_beside(b) {
             return None;
         }
-        let p = &self.idm.params;
+        Self::weigh(&self.idm.params, &self.mobil, view, own, b)
+    }
+
+    /// [`judge`](Self::judge) of a lane beside that may be crossed into and is not occupied
+    /// alongside: out of line, so that the common verdict (occupied: 96 % of the lanes beside
+    /// asked about on the scale highway, issue 31) costs no set-up of the weighing. Inlined,
+    /// its loop-invariant parameter arithmetic (the desired gap's 2√(ab), the negated b_safe)
+    /// was hoisted before `decide`'s loop and paid at every step.
+    #[inline(never)]
+    fn weigh(
+        p: &IdmParameters,
+        mobil: &MobilParameters,
+        view: &ControllerView<'_>,
+        own: &mut Own,
+        b: &Beside,
+    ) -> Option<Real> {
         let (v, len) = (own.v, own.len);
         let lane_leader = view.leader_beside(b);
         let own_after = own.after(p, lane_leader);
-        if !self.mobil.safe_for_changer(own_after) {
+        if !mobil.safe_for_changer(own_after) {
             return None;
         }
         let new_follower = view
@@ -160,15 +176,15 @@ impl MobilController {
             before: own.a_c,
             after: own_after,
         };
-        if settled_without_powers(&self.mobil, p, view, own, own_change, new_follower, b) {
+        if settled_without_powers(mobil, p, view, own, own_change, new_follower, b) {
             return None;
         }
         let new_follower = new_follower.map(|n| n.change(p));
-        if new_follower.is_some_and(|n| !self.mobil.safe_for_follower(n.after)) {
+        if new_follower.is_some_and(|n| !mobil.safe_for_follower(n.after)) {
             return None;
         }
         let old_follower = own.old_follower(p, view).map(|o| o.change(p));
-        let verdict = self.mobil.judge(&LaneChangeCandidate {
+        let verdict = mobil.judge(&LaneChangeCandidate {
             own: own_change,
             old_follower,
             new_follower,
@@ -208,17 +224,32 @@ impl MobilController {
             Ok(true) => {}
         }
         let mut best: Option<(Real, i32)> = None;
-        for b in view.beside_kept(&mut self.kept.0) {
-            let Some(b) = b else {
-                continue;
-            };
-            if let Some(margin) = self.judge(view, own, &b) {
-                if best.map_or(true, |(m, _)| margin > m) {
-                    best = Some((margin, b.lane));
-                }
+        let [left, right] = view.beside_kept(&mut self.kept.0);
+        // Each side in turn, not a loop over the pair: the pair then stays in registers
+        // (looped over, it was stored and read back; issue 31).
+        self.consider(view, own, left, &mut best);
+        self.consider(view, own, right, &mut best);
+        best.map(|(_, lane)| lane)
+    }
+
+    /// The lane beside `b`, if any, judged ([`judge`](Self::judge)) and kept in `best` (margin,
+    /// lane) where its margin is larger.
+    #[inline(always)]
+    fn consider(
+        &self,
+        view: &ControllerView<'_>,
+        own: &mut Own,
+        b: Option<Beside>,
+        best: &mut Option<(Real, i32)>,
+    ) {
+        let Some(b) = b else {
+            return;
+        };
+        if let Some(margin) = self.judge(view, own, &b) {
+            if best.map_or(true, |(m, _)| margin > m) {
+                *best = Some((margin, b.lane));
             }
         }
-        best.map(|(_, lane)| lane)
     }
 }
 

@@ -148,7 +148,19 @@ impl<'a> ControllerView<'a> {
     /// travel, when the entity can still stop before it at its `maxDeceleration` (engine
     /// signals/red_light.rs); `None` when the option is off, there is none, or it is too close
     /// to stop for.
+    #[inline]
     pub fn red_light(&self) -> Option<Real> {
+        // The option tested here, the search out of line: off (the common case), the question
+        // costs a test, not a call (issue 31: 20 instructions per `mobil` entity-step).
+        if !self.signals.stops_at_red_lights() {
+            return None;
+        }
+        self.red_light_ahead()
+    }
+
+    /// [`red_light`](Self::red_light) with the option on.
+    #[inline(never)]
+    fn red_light_ahead(&self) -> Option<Real> {
         self.signals.red_light_ahead(self.network, self.entity)
     }
 
@@ -343,7 +355,7 @@ impl<'a> ControllerView<'a> {
     /// once for both sides (issue 31: the test per side was 2.7 % of the instructions of
     /// `mobil` at 1,000 vehicles); a second test right after the first, of the same track,
     /// could only give the same answer.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn beside_kept(&self, kept: &mut Option<KeptRoad>) -> [Option<Beside>; 2] {
         let (Some(track), Some(_)) = (
             self.input.track.as_ref(),
@@ -364,11 +376,13 @@ impl<'a> ControllerView<'a> {
 
     /// Whether an entity's box overlaps the entity's own length in the lane beside (a change
     /// now would collide): [`NeighbourLane::occupied`].
+    #[inline(always)]
     pub(crate) fn occupied_beside(&self, b: &Beside) -> bool {
-        self.index.footprint(self.input.id).is_some_and(|me| {
-            self.index
-                .occupied(b.at.0, me.s_range, self.input.id, self.hint(b.lane, 2))
-        })
+        let Some(me) = self.index.footprint(self.input.id) else {
+            return false;
+        };
+        self.index
+            .occupied(b.at.0, me.s_range, self.input.id, self.hint(b.lane, 2))
     }
 
     /// The largest speed along the entity's direction of travel (m/s) of the entities whose

@@ -73,6 +73,14 @@ impl Signals {
         })
     }
 
+    /// Whether run option `stop_at_red_lights` is on: the driver models' views ask it inline
+    /// before [`red_light_ahead`](Self::red_light_ahead), so that a run without the option
+    /// costs them no call (issue 31).
+    #[inline]
+    pub(crate) fn stops_at_red_lights(&self) -> bool {
+        self.red_lights.enabled
+    }
+
     /// Turns run option `stop_at_red_lights` on or off (red_light.rs).
     pub(crate) fn set_stop_at_red_lights(&mut self, on: bool) {
         self.red_lights.enabled = on;
