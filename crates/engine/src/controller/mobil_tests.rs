@@ -3,13 +3,16 @@
 //! ([`judge_each`], [`decide_each`], [`step_each`]: the controller's code before issue 31),
 //! on many crowded highways and parameter sets.
 
+use std::sync::atomic::AtomicU32;
+use std::sync::atomic::Ordering::Relaxed;
+
 use opendrive::{Direction, Real, RoadNetwork};
 
 use super::*;
 use crate::controller::car_following::with_red_light;
 use crate::controller::command::FreeAcceleration;
 use crate::controller::lane_beside::{KeptRoad, RoadBeside};
-use crate::controller::test_world::{crowded, network};
+use crate::controller::test_world::{crowded, generator, network};
 use crate::controller::view::{NeighbourLane, Side};
 use crate::store::driver_inputs::{DriverInput, TrackInput};
 use crate::store::lane_index::LaneIndex;
@@ -269,6 +272,141 @@ fn the_kept_lane_handles_give_the_searches_of_handles_asked_each_time() {
     });
     // 2,400 cars on four lanes: each has one or two lanes beside.
     assert!(lanes_beside > 2_400, "{lanes_beside} lanes beside");
+}
+
+/// The own leader and the lanes beside's occupancy as the view answers them (issue 31: the
+/// answer the entries at the search's hint prove, taken inline,
+/// `LaneIndex::nearest_ahead_proven` and `occupied_proven`; the index's search otherwise) are,
+/// bit for bit, the searches without a hint (entity, gap and speed; occupied or not), step
+/// after step while the traffic moves and the index and its hints are kept as the engine
+/// keeps them: 10 crowded highways of 60 cars, 40 steps, every car moved along its lane by
+/// its speed (one in ten placed anew elsewhere, so that hints go stale; some across a
+/// marking). Every way occurs many times: proven at the hint and searched, a leader found and
+/// none (the front cars; a gap beyond the horizon), a lane beside occupied and free.
+#[test]
+fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
+    use crate::world::entity::EntityId;
+    let (mut proven, mut searched, mut found, mut none) = (0, 0, 0, 0);
+    let (mut occupied_proven, mut occupied, mut free) = (0, 0, 0);
+    for seed in 1..=10u64 {
+        let mut w = crowded(60, seed);
+        let mut index = LaneIndex::default();
+        let mut next = generator(seed + 100);
+        for step in 0..40 {
+            for i in 0..60u32 {
+                let id = EntityId(i);
+                let e = w.entity(id);
+                let Some(rp) = e.road_position.as_ref() else {
+                    continue;
+                };
+                let (mut s, t) = (rp.s + e.speed * 0.05, rp.t);
+                if next() < 0.1 || s > 990.0 {
+                    s = 20.0 + next() * 900.0;
+                }
+                let pose = w.network.road_pose("A", s, t).expect("on road");
+                let at = w.network.locate(pose.x, pose.y, Some(pose.h));
+                w.place_resolved(id, pose, at);
+            }
+            index.refresh_from(&mut w);
+            for e in w.entities() {
+                let view = view_of(10.0 + step as Real * 0.05, &w, &index, e);
+                let (Some(track), Some(me)) =
+                    (view.input().track.as_ref(), index.footprint(e.id).cloned())
+                else {
+                    continue;
+                };
+                let dir = track.direction;
+                let bits = |g: Option<Gap>| g.map(|g| (g.id, g.gap.to_bits(), g.speed.to_bits()));
+                // The hint as the view will find it, before the view's search may store it.
+                let hint = |kind: usize| {
+                    AtomicU32::new(
+                        index
+                            .hint(e.id, kind)
+                            .expect("hints per entity")
+                            .load(Relaxed),
+                    )
+                };
+                let h = track.own.expect("on its lane");
+                let from = me.front(dir);
+                if index
+                    .nearest_ahead_proven(h, from, e.id, view.horizon(), &hint(0))
+                    .is_some()
+                {
+                    proven += 1;
+                } else {
+                    searched += 1;
+                }
+                let none_chosen = &mut |_: &str, _: &[opendrive::LaneHandle]| None;
+                let reference = index
+                    .nearest(
+                        &w.network,
+                        h,
+                        from,
+                        dir,
+                        e.id,
+                        view.horizon(),
+                        none_chosen,
+                        None,
+                    )
+                    .map(|n| {
+                        let along = index
+                            .footprint(n.id)
+                            .map_or(0.0, |f| f.speed_along(n.direction));
+                        (n.id, n.gap.to_bits(), along.to_bits())
+                    });
+                assert_eq!(
+                    bits(view.leader()),
+                    reference,
+                    "seed {seed} step {step} {}",
+                    e.name
+                );
+                if reference.is_some() {
+                    found += 1;
+                } else {
+                    none += 1;
+                }
+                for side in [Side::Left, Side::Right] {
+                    let Some(b) = view.beside(side) else {
+                        continue;
+                    };
+                    let kind = if b.lane > track.lane_id { 5 } else { 8 };
+                    if index.occupied_proven(b.at.0, me.s_range, e.id, &hint(kind)) {
+                        occupied_proven += 1;
+                    }
+                    let reference = index
+                        .overlapping(b.at.0, me.s_range, e.id, None)
+                        .next()
+                        .is_some();
+                    assert_eq!(
+                        view.occupied_beside(&b),
+                        reference,
+                        "seed {seed} step {step} {} {side:?}",
+                        e.name
+                    );
+                    if reference {
+                        occupied += 1;
+                    } else {
+                        free += 1;
+                    }
+                }
+            }
+        }
+    }
+    let counts = format!(
+        "leader: {proven} proven at the hint, {searched} searched, {found} found, {none} none; \
+         lanes beside: {occupied_proven} occupied at the hint, {occupied} occupied, {free} free"
+    );
+    assert!(
+        proven > 5_000
+            && searched > 1_000
+            && found > 5_000
+            && none > 100
+            && occupied_proven > 2_000
+            && occupied > occupied_proven
+            && free > 2_000,
+        "{counts}"
+    );
+    println!("{counts}");
 }
 
 /// The driver inputs the lane index copies (store/driver_inputs.rs, issue 31) are the

@@ -34,13 +34,7 @@ pub fn network() -> RoadNetwork {
 /// A world of `n` 4.5 m × 2 m cars at pseudo-random s, lanes (some across a lane marking)
 /// and speeds (0–35 m/s), from `seed`.
 pub fn crowded(n: usize, seed: u64) -> World {
-    let mut state = seed;
-    let mut next = move || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 33) as f64 / (1u64 << 31) as f64
-    };
+    let mut next = generator(seed);
     let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 4.5, 2.0, 1.5).expect("box");
     let entities = (0..n as u32)
         .map(|i| Entity::new(EntityId(i), &format!("c{i}"), EntityKind::Vehicle, b))
@@ -58,4 +52,16 @@ pub fn crowded(n: usize, seed: u64) -> World {
         w.entity_mut(id).speed = (next() * 35.0).min(34.0);
     }
     w
+}
+
+/// Pseudo-random numbers in [0, 1) from `seed` (a linear congruential generator): the
+/// places and speeds of [`crowded`], and the tests' moves.
+pub fn generator(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 33) as f64 / (1u64 << 31) as f64
+    }
 }

@@ -824,6 +824,43 @@ impl LaneIndex {
     }
 }
 
+impl LaneIndex {
+    /// [`nearest`](Self::nearest)'s answer travelling forward from `from` on lane `h` within
+    /// `horizon`, where the entries of `h` at `hint` prove its first lane's answer
+    /// ([`ahead_at_hint`]): `Some` of it, as `nearest` takes that answer; `None` where they do
+    /// not (then `nearest` answers). For a caller that takes the proven answer inline and
+    /// asks `nearest` out of line otherwise (controller/view.rs, the driver models' leader;
+    /// issue 31).
+    #[inline(always)]
+    pub(crate) fn nearest_ahead_proven(
+        &self,
+        h: LaneHandle,
+        from: Real,
+        exclude: EntityId,
+        horizon: Real,
+        hint: &AtomicU32,
+    ) -> Option<Option<Neighbour>> {
+        let found = ahead_at_hint(self.lane(h)?, from, exclude, hint)?;
+        Some(within(found, 0.0, horizon))
+    }
+
+    /// Whether the entries of lane `h` at `hint` prove that [`occupied`](Self::occupied) is
+    /// true for the s-range `range` and `exclude` ([`occupied_at_hint`]); `false` where they do
+    /// not (then `occupied` answers). Inline for the driver models' lanes beside
+    /// (controller/view.rs; issue 31), as [`nearest_ahead_proven`](Self::nearest_ahead_proven).
+    #[inline(always)]
+    pub(crate) fn occupied_proven(
+        &self,
+        h: LaneHandle,
+        range: (Real, Real),
+        exclude: EntityId,
+        hint: &AtomicU32,
+    ) -> bool {
+        self.lane(h)
+            .is_some_and(|lane| occupied_at_hint(lane, range, exclude, hint))
+    }
+}
+
 /// [`LaneIndex::in_lane`] in `lane` by the search: out of line, so that the answer the hint
 /// proves costs no saving of the search's registers.
 #[inline(never)]
