@@ -172,7 +172,7 @@ pub(crate) fn check_references(
             }
             let how = |a: bool| if a { "against s" } else { "in +s" };
             return Err(a.site.err(
-                K::Unsupported,
+                K::Unsatisfiable,
                 format!(
                     "expected `{key}:` of {what} to name an actor driving in the direction of `{}` ({}), found `{x}`, which drives {}: §8.9 relates an actor to x along the direction both travel (ahead of, behind, the lanes counted from x's), and two actors driving opposite ways share none (speed relations alone hold across directions)",
                     inv.actor,

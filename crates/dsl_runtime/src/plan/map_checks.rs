@@ -128,7 +128,7 @@ fn matches_type(
     };
     read(w, t).ok_or_else(|| {
         m.site.err(
-            K::Unsupported,
+            K::Argument,
             format!("expected a {w} the OpenDRIVE lane types say (see docs/dsl.md, map modifiers), found {w}, which none of them does"),
         )
     })

@@ -391,7 +391,7 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
             if let Some(k) = member("lateral_overlap")?.filter(|k| k != "never") {
                 let at = arg(&args, "lateral_overlap").map_or(&site, |a| &a.site);
                 return Err(at.err(
-                    K::Unsupported,
+                    K::Unsatisfiable,
                     format!("expected lateral_overlap: never for two routes driven in opposite directions (each lane of an OpenDRIVE road has one driving direction, so two never share their width), found {k}"),
                 ));
             }

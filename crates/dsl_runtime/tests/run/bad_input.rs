@@ -250,3 +250,47 @@ fn follow_path_and_a_trajectory_without_its_times() {
         &["expected two or more points with as many rising time stamps, found 3 points and 2 time stamps"],
     );
 }
+
+/// Bad input the runtime used to report as `ErrorKind::Unsupported`, which docs/dsl.md keeps
+/// for what oscsim does not run: each now has the kind that says what is wrong, at its
+/// file:line:column (the scenarios' comments).
+#[test]
+fn bad_input_once_reported_as_not_run_has_the_kind_of_its_fault() {
+    use dsl_runtime::ErrorKind as K;
+    for (name, kind, place, text) in [
+        (
+            "err_map_lane_use_other",
+            K::Argument,
+            "9:5",
+            "expected a split the OpenDRIVE lane types say (see docs/dsl.md, map modifiers), found split, which none of them does",
+        ),
+        (
+            "err_map_opposite_overlap",
+            K::Unsatisfiable,
+            "10:58",
+            "expected lateral_overlap: never for two routes driven in opposite directions",
+        ),
+        (
+            "err_opposite_ahead",
+            K::Unsatisfiable,
+            "18:37",
+            "expected `ahead_of:` of position(…) to name an actor driving in the direction of `ego` (in +s), found `npc`, which drives against s",
+        ),
+    ] {
+        let e = match crate::support::lower_at(
+            &format!("tests/scenarios/{name}.osc"),
+            "tests/roads/straight.xodr",
+            0,
+            None,
+        ) {
+            Ok(_) => panic!("{name} planned"),
+            Err(e) => e,
+        };
+        let message = e.to_string();
+        assert_eq!(e.kind(), &kind, "{name}: {message}");
+        assert!(
+            message.contains(text) && message.ends_with(&format!("{name}.osc:{place}")),
+            "{name}: {message}"
+        );
+    }
+}
