@@ -1,5 +1,5 @@
 //! Dense integer handles for roads, junctions and lanes, the road network's links resolved to
-//! them at load (OpenDRIVE 1.8 §10.4 road linkage, §12 junction connections), and the lane
+//! them at load (OpenDRIVE 1.8 §10.3 road linkage, §12 junction connections), and the lane
 //! graph's edges worked out from them once ([`LaneGraph`]). String ids are read from and
 //! written to files only; queries walk the resolved links.
 

@@ -3,7 +3,7 @@
 //! (on a `lane_section` field: some lane section has that many), `routes_overlap`,
 //! `routes_are_in_sequence` on two routes the map makes (their points: the second starts where
 //! the first ends or on the road after it), and the
-//! DSL's lane enums read against the OpenDRIVE 1.8 lane types (§11.5). See `map_lanes` for the
+//! DSL's lane enums read against the OpenDRIVE 1.8 lane types (§11 lanes). See `map_lanes` for the
 //! table of every map modifier.
 
 use opendrive::LaneType;

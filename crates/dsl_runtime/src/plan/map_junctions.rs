@@ -1,5 +1,5 @@
 //! Ways through a junction of the loaded network, for `roads_follow_in_junction` (ASAM
-//! OpenSCENARIO DSL 2.1 §8.12.2.2.3; OpenDRIVE 1.8 §12 junctions, §8.3 road linkage, §11.6
+//! OpenSCENARIO DSL 2.1 §8.12.2.2.3; OpenDRIVE 1.8 §12 junctions, §10.3 road linkage, §11.5
 //! lane linkage): the connecting lane from one lane to another, the turn it makes ([`Turn`],
 //! from the headings), and the roads meeting at the junction for `clockwise_count` and
 //! `number_of_roads`.

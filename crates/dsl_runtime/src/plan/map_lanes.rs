@@ -1,5 +1,5 @@
 //! The map's modifiers against the loaded road network (ASAM OpenSCENARIO DSL 2.1 §8.12.2.2;
-//! OpenDRIVE 1.8 §11 lanes, §11.6 lane linkage): bindings of lane fields, after the checks of
+//! OpenDRIVE 1.8 §11 lanes, §11.5 lane linkage): bindings of lane fields, after the checks of
 //! the roads the plan drives on (`map_checks`), done once before anything is planned.
 //!
 //! | modifier | class | oscsim |

@@ -341,7 +341,7 @@ pub(crate) fn map_route(
     }
     // A compound lane's lanes: its own lane (bound, else lane(1)'s, where an actor along it
     // without a lane of its own drives) in the first lane section, then in each lane section
-    // after it in order along s the lane the one before leads into (OpenDRIVE 1.8 §9.4 lane
+    // after it in order along s the lane the one before leads into (OpenDRIVE 1.8 §11.5 lane
     // linkage: the lane's <link><successor id=…>, `RoadNetwork::successors`), while that is a
     // driving lane of the plan's roads (issue 27: before, the same lane id in each section,
     // the wrong lane where a section renumbers its lanes; the plan's roads run on to another

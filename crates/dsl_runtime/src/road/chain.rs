@@ -1,4 +1,4 @@
-//! The roads of a plan, one after another (ASAM OpenDRIVE 1.8 §10.4 road linkage, §11.6 lane
+//! The roads of a plan, one after another (ASAM OpenDRIVE 1.8 §10.3 road linkage, §11.5 lane
 //! linkage, §12 junction connections): from a start road, each road's successor as the engine's
 //! default controller drives onto it without a route (the first lane link in the road model's
 //! order, `opendrive::RoadNetwork::successors`), for as long as the driving lanes run on

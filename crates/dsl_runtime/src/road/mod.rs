@@ -1,4 +1,4 @@
-//! The roads the planner places and moves the actors on (ASAM OpenDRIVE 1.8 §9 roads, §10.4
+//! The roads the planner places and moves the actors on (ASAM OpenDRIVE 1.8 §10 roads, §10.3
 //! road linkage, §11 lanes, §12 junctions): a start road and the roads the engine drives onto
 //! after it (`chain`), measured in one s from the start road's s = 0 (the plan's s: a road's s
 //! plus the lengths of the roads before it). The start road is the road of the scenario's named

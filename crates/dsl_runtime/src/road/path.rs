@@ -1,5 +1,5 @@
 //! The roads of a route through points (ASAM OpenSCENARIO DSL 2.1 §8.12.2.1 `map.create_route`;
-//! OpenDRIVE 1.8 §10.4 road linkage, §11.6 lane linkage, §12 junctions): leg by leg, the
+//! OpenDRIVE 1.8 §10.3 road linkage, §11.5 lane linkage, §12 junctions): leg by leg, the
 //! network's shortest lane path in the driving direction (`opendrive::RoadNetwork::route`,
 //! the length search the engine's route planner runs for routeStrategy `shortest`), which
 //! at a junction takes the connection leading to the next point.

@@ -1,5 +1,5 @@
 //! Dijkstra's algorithm over the lane graph of `graph` (OpenDRIVE 1.8 §10.3 road linkage,
-//! §11.4 lane linkage, §12 junctions) under a caller's cost: the one search behind
+//! §11.5 lane linkage, §12 junctions) under a caller's cost: the one search behind
 //! [`RoadNetwork::route`] (length) and the route strategies of OpenSCENARIO (the engine's
 //! `routing` module implements [`LaneCost`] per strategy).
 //!
