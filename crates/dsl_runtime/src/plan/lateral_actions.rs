@@ -94,6 +94,13 @@ impl Planner<'_> {
                     }),
                 ));
                 if let Some(t) = t0 {
+                    // lane1 is counted where the change starts; a lane section before its end
+                    // may number that lane otherwise (OpenDRIVE 1.8 §11.5 lane linkage): the
+                    // track keeps the id it has where the change ends, the lane the engine
+                    // takes the actor into (it follows the target lane's links).
+                    let lane1 = self
+                        .road
+                        .lane_along(lane1, s, self.s_at(target, t + tm.span));
                     let tr = self.track_mut(target);
                     tr.set_lane(t + tm.span, lane1);
                     tr.set_offset(t + tm.span, offset);

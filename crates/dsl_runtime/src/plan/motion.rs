@@ -405,12 +405,22 @@ impl Planner<'_> {
                     ),
                 ));
             }
+            // Counted where the change starts; at a start the plan knows, the id that lane
+            // has where the change ends (a lane section between may renumber it: OpenDRIVE
+            // 1.8 §11.5 lane linkage, which the engine follows).
+            let lane = self
+                .road
+                .beside(now, left, n.into(), s_now)
+                .map(|l| match t0 {
+                    Some(t) => self.road.lane_along(l, s_now, self.s_at(target, t + len)),
+                    None => l,
+                });
             return Ok((
                 LaneChangeTarget::Relative {
                     entity_ref: target.to_string(),
                     value: shift,
                 },
-                self.road.beside(now, left, n.into(), s_now),
+                lane,
             ));
         }
         for (key, value) in [

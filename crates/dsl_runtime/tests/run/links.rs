@@ -83,3 +83,38 @@ fn a_lane_same_as_another_that_changes_lane_after_a_renumbering_is_followed() {
         }
     }
 }
+
+/// change_lane_across_renumbering.osc: a change of one lane to the left that starts in section
+/// 0 (-2 into -1) and ends past s = 300 m, where -1 runs on into -2: by the action (ego, [2, 6]
+/// s) and by the modifier (car, [6, 10] s), each then in lane(2) of section 1, -2, on its
+/// centre y = -(w(x − 300) + 1.75), w(d) = 0.00105·d² − 0.000007·d³. Before: refused, the
+/// track kept the id counted at the change's start (-1, section 1's new lane).
+#[test]
+fn a_lane_change_across_a_renumbering_ends_in_the_lane_its_target_runs_on_into() {
+    let r = run_on("links/change_lane_across_renumbering", "lane_add_inner");
+    phases_are(
+        &r,
+        &[
+            ("do.0.b", 2.0, 6.0),
+            ("do.0.c", 6.0, 8.0),
+            ("do.1.e", 6.0, 10.0),
+            ("do.1.f", 10.0, 12.0),
+        ],
+    );
+    let w = |d: f64| 0.00105 * d * d - 0.000007 * d * d * d;
+    let e = r.at(6.0, "ego");
+    assert!((e.x - 329.81).abs() < 0.01, "{e:?}");
+    assert!((w(29.810488) - 0.747658).abs() < 1e-6);
+    for (who, from, to) in [("ego", 6.0, 8.0), ("car", 10.0, 12.0)] {
+        let mut t = from;
+        while t <= to + 1e-9 {
+            let p = r.at(t, who);
+            let y = -(w(p.x - 300.0) + 1.75);
+            assert!(
+                p.lane == -2 && (p.y - y).abs() < S_TOL,
+                "{who} at {t}: {p:?}, want y {y} in lane -2"
+            );
+            t += crate::support::DT;
+        }
+    }
+}
