@@ -35,7 +35,7 @@ use super::path_shape::segment_lengths;
 use super::planner::Planner;
 use super::types::POSITION_TOLERANCE;
 use crate::error::{Error, ErrorKind as K};
-use crate::resolve::{Invoke, PlaceArg};
+use crate::resolve::{Action, Invoke, PlaceArg};
 
 /// The stamps of a column member's trajectory after a run-time start, a + b / v₀ with v₀ the
 /// group's speed (member 0's) when the action starts, which the engine reads then (oscsim's
@@ -54,8 +54,9 @@ pub(super) struct ColumnTimes {
 pub(super) enum RunTimePlace {
     /// Member 0: the engine's check that it stands at the part's start (the other members'
     /// paths are placed from where they are, as if it did), and the part of the path between
-    /// the offsets (`None`: the path as given).
-    Lead(Box<StateCheck>, Option<PlaceArg>),
+    /// the offsets (`None`: the path as given). Also a member of random traffic's own path
+    /// (`member_path`), with the check for `follow_path` only.
+    Lead(Option<Box<StateCheck>>, Option<PlaceArg>),
     /// Member i of a column: the engine's check of its offset from member 0 as the plan last
     /// knows it, and its lead-in from there and the part; for a trajectory, the path's stamps
     /// with the lead-in's at the first, and a distance per point (`ColumnTimes`).
@@ -80,6 +81,9 @@ impl Planner<'_> {
         inv: &Invoke,
         target: &str,
     ) -> Result<Option<RunTimePlace>, Error> {
+        if self.random_member(target) && !self.groups.contains_key(&inv.actor) {
+            return self.member_path(given, inv, target);
+        }
         let Some(lead) = self.groups.get(&inv.actor).and_then(|m| m.first()) else {
             return Ok(None);
         };
@@ -87,27 +91,17 @@ impl Planner<'_> {
             return Ok(None);
         };
         if lead == target {
-            let (lane, s, offset) = self.part_start(given, &part)?;
-            let (road, _) = self.road.road_at(s);
-            let check = StateCheck {
-                what: format!(
-                    "the start of group `{}`'s path in {}(…) at {}",
-                    inv.actor,
-                    inv.action,
-                    given.site.at()
-                ),
-                lane: Some((road.id.clone(), lane)),
-                // The view's s and offset, which the engine measures as the roads say: on
-                // one road its own s in +s, u = L - s against s; on several the plan's.
-                s: Some((s, POSITION_TOLERANCE)),
-                offset: Some((offset, POSITION_TOLERANCE)),
-                roads: self.chain(),
-                ..StateCheck::default()
-            };
+            let what = format!(
+                "the start of group `{}`'s path in {}(…) at {}",
+                inv.actor,
+                inv.action,
+                given.site.at()
+            );
+            let check = self.part_start_check(given, &part, what)?;
             let part = part
                 .cut
                 .then(|| place_of(given, part.points, part.times, part.smooth));
-            return Ok(Some(RunTimePlace::Lead(Box::new(check), part)));
+            return Ok(Some(RunTimePlace::Lead(Some(Box::new(check)), part)));
         }
         if !self.across.contains(&inv.actor) {
             return self
@@ -194,6 +188,69 @@ impl Planner<'_> {
                 distances,
             }),
         ))
+    }
+
+    /// A member of random traffic's own `follow_path` or `replay_path` after a run-time
+    /// condition (the only start its own phases have): where it is and its speed are its
+    /// model's (§8.7.18.1), so the plan neither times the phase nor knows where the member
+    /// joins the path. It follows the part between the offsets, and its phase ends when the
+    /// engine has it at the part's end (the action's completion), at whatever speed its model
+    /// gives it (an end_offset timed by the plan's speed ended it elsewhere, or refused a
+    /// member the plan had standing). `follow_path` steers from the member's pose onto the
+    /// nearest point ahead of the part (the engine's pursuit): from anywhere but the part's
+    /// start it would join the path part-way, or, past its end, end at once off it; so the
+    /// engine checks then that the member stands at the part's start, as a group's member 0
+    /// (0.5 m along and across), a failure an error record and a failed run. `replay_path`
+    /// places the member on the part's start at once (following mode `position`).
+    fn member_path(
+        &self,
+        given: &PlaceArg,
+        inv: &Invoke,
+        target: &str,
+    ) -> Result<Option<RunTimePlace>, Error> {
+        if !inv.kind.along_path() {
+            return Ok(None);
+        }
+        let Some(part) = followed_part(inv, given)? else {
+            return Ok(None);
+        };
+        let check = match inv.kind {
+            Action::FollowPath => {
+                let what = format!(
+                    "the start of `{target}`'s path in {}(…) at {}",
+                    inv.action,
+                    given.site.at()
+                );
+                Some(Box::new(self.part_start_check(given, &part, what)?))
+            }
+            _ => None,
+        };
+        let part = part
+            .cut
+            .then(|| place_of(given, part.points, part.times, part.smooth));
+        Ok(Some(RunTimePlace::Lead(check, part)))
+    }
+
+    /// The engine's check, named `what`, that an actor stands at `part`'s start: its lane, s
+    /// and offset within [`POSITION_TOLERANCE`].
+    fn part_start_check(
+        &self,
+        given: &PlaceArg,
+        part: &Part,
+        what: String,
+    ) -> Result<StateCheck, Error> {
+        let (lane, s, offset) = self.part_start(given, part)?;
+        let (road, _) = self.road.road_at(s);
+        Ok(StateCheck {
+            what,
+            lane: Some((road.id.clone(), lane)),
+            // The view's s and offset, which the engine measures as the roads say: on one
+            // road its own s in +s, u = L - s against s; on several the plan's.
+            s: Some((s, POSITION_TOLERANCE)),
+            offset: Some((offset, POSITION_TOLERANCE)),
+            roads: self.chain(),
+            ..StateCheck::default()
+        })
     }
 
     /// Where `part` starts on the plan's roads: lane, s, offset from the lane's centre.

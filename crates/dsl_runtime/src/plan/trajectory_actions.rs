@@ -69,10 +69,12 @@ impl Planner<'_> {
         };
         let given = match &run_time {
             Some(RunTimePlace::Lead(check, part)) => {
-                let n = name("check");
-                let action = PrivateAction::Check(check.clone());
-                slot.out
-                    .push(Planned::with_phase(slot.target, n, action, &p.site));
+                if let Some(check) = check {
+                    let n = name("check");
+                    let action = PrivateAction::Check(check.clone());
+                    slot.out
+                        .push(Planned::with_phase(slot.target, n, action, &p.site));
+                }
                 part.as_ref().or(given)
             }
             Some(RunTimePlace::Column(check, lead_in, column_times)) => {
@@ -119,8 +121,10 @@ impl Planner<'_> {
             }
             None => given,
         };
-        // A group's members follow the part between the offsets already (group_path).
-        let offsets = !self.groups.contains_key(&inv.actor);
+        // A group's members follow the part between the offsets already (group_path), and so
+        // does a member of random traffic after a run-time condition (`member_path`).
+        let offsets = !self.groups.contains_key(&inv.actor)
+            && !matches!(run_time, Some(RunTimePlace::Lead(..)));
         if inv.kind.along_path() {
             return self.plan_follow_path(p, inv, (given, offsets), slot, name);
         }
@@ -241,7 +245,8 @@ impl Planner<'_> {
         // After a run-time condition a member of random traffic has the speed its model gives
         // it then (§8.7.18.1), which the plan does not know: the engine moves it along the
         // path at that speed (its own acceleration beside the path a free-road acceleration,
-        // `member_acceleration`). Only a phase the plan ends by the path's length needs one.
+        // `member_acceleration`). Its part between the offsets is cut already
+        // (`group_path_runtime::member_path`), so its phase ends on the action's completion.
         let model_speed = t0.is_none() && self.random_member(target) && cut.end_offset <= 0.0;
         if v <= 0.0 && !model_speed {
             return Err(p.site.err(

@@ -869,3 +869,72 @@ fn a_members_assign_orientation_after_a_run_time_condition_is_the_engines_standi
     assert!((records[0].0 - 8.05).abs() < 1e-9, "{records:?}");
     assert_eq!(records[0].1, "do.1.1/g.vehicles[0]/1:check");
 }
+
+/// A member's own path after a run-time condition (random_traffic_member_path_end_offset.osc,
+/// random_traffic_member_follow_path_away.osc, by hand): replay_path with end_offset 20 m
+/// follows the part 60.076526 m from q0 along the line to q1, at the speed the member's model
+/// gives it, and its phase ends in the step the engine has it there or the one after (before:
+/// refused, the plan timed the end by its own speed of the member, 0 m/s); follow_path from
+/// where the seed drew the member is the engine's check at the phase start, an error record
+/// and a failed run (before: the pursuit joined the path part-way or, past its end, not at
+/// all).
+#[test]
+fn a_members_own_path_after_a_run_time_condition_ends_where_the_engine_has_it_at_the_parts_end() {
+    let m = "g.vehicles[0]";
+    let length = 80.0_f64.hypot(3.5);
+    assert!((length - 80.076_526).abs() < 1e-6);
+    let (ux, uy) = (80.0 / length, 3.5 / length);
+    let part = length - 20.0;
+    for seed in 0..4 {
+        let r = run("random_traffic_member_path_end_offset", seed, None);
+        let (start, end) = r.phase("do.1.path");
+        assert!((start - 3.05).abs() < 1e-9, "seed {seed}: {start}");
+        let along = |t: f64| {
+            let o = r.at(t, m);
+            let (dx, dy) = (o.x - 400.0, o.y + 5.25);
+            (dx * ux + dy * uy, dx * uy - dy * ux, o.speed)
+        };
+        // On the line from the first step to the part's end, moving at the model's speed.
+        let mut t = start + DT;
+        let mut reached = None;
+        while t < end + 1e-9 {
+            let (d, across, v) = along(t);
+            if reached.is_none() {
+                assert!(
+                    across.abs() < 1e-6,
+                    "seed {seed} at {t}: {across} m off the line"
+                );
+                assert!(v > 1.0, "seed {seed} at {t}: {v} m/s");
+                if d >= part - 1e-6 {
+                    reached = Some(t);
+                }
+            }
+            t += DT;
+        }
+        let reached =
+            reached.unwrap_or_else(|| panic!("seed {seed}: not at the part's end by {end}"));
+        assert!(
+            end - reached > -1e-9 && end - reached < DT + 1e-9,
+            "seed {seed}: there at {reached}, the phase ends at {end}"
+        );
+        // One step before, short of it.
+        assert!(along(reached - DT).0 < part, "seed {seed}");
+    }
+    let name = "random_traffic_member_follow_path_away";
+    for seed in 0..4 {
+        let lowered = crate::support::lower(name, seed, None).unwrap_or_else(|e| panic!("{e}"));
+        let (error, records) = crate::support::run_to_error(&lowered.scenario);
+        let error = error.expect("the run fails");
+        let want = format!(
+            "(the start of `g.vehicles[0]`'s path in follow_path(…) at {}",
+            crate::support::path(&format!("tests/scenarios/{name}.osc")).display()
+        );
+        assert!(
+            error.starts_with("expected 'g.vehicles[0]'") && error.contains(&want),
+            "seed {seed}: {error}"
+        );
+        assert!(error.ends_with("at t = 3.050 s"), "seed {seed}: {error}");
+        assert_eq!(records.len(), 1, "seed {seed}: {records:?}");
+        assert_eq!(records[0].1, "do.1.1/g.vehicles[0]/1:check", "seed {seed}");
+    }
+}
