@@ -21,6 +21,10 @@
 //! adds each point's distance over it to its stamp (oscsim's FollowTrajectoryAtSpeed,
 //! [`ColumnTimes`]); member 0 standing then is an error record and a failed run.
 //!
+//! A member of random traffic's own `follow_path`/`replay_path` (its own phases start at run
+//! time) follows the part between the offsets as member 0 does, its phase ending on the
+//! action's completion, with member 0's check for `follow_path` only (`member_path`).
+//!
 //! A group driving against s (`against`) runs the same on its view: member 0's check is in the
 //! view's u = L − s and offset to the drivers' left, which the engine measures so (the check
 //! carries the direction, `Planner::chain`), a column member's offset along the direction of
