@@ -15,24 +15,28 @@
 use opendrive::{normalize_angle, Direction, LaneSpan, Real, Road, RoadNetwork};
 
 use crate::domain::{Acceleration6d, Vector3, Velocity6d};
-use crate::world::entity::Entity;
+use crate::world::entity::{along, component_along, Entity};
 use crate::world::lane_change;
-use crate::world::lane_track::{Blend, CurvatureAt, LaneTrack};
+use crate::world::lane_track::{Blend, LaneTrack};
 use crate::world::lanes::{
-    advance, curvature_with_heading, set_road_position, track_curvature, track_pose, track_span,
+    advance, keep_curvature, set_road_position, track_curvature, track_pose, track_span,
 };
 use crate::world::zero_angle;
 use crate::world::RouteFollow;
 
 /// Moves entity `e` over one step of `dt` s: position, heading, road position, velocity,
-/// acceleration, yaw rate and odometer. `travel`, when given, is the distance to travel (a
+/// acceleration, yaw rate and odometer. `distance`, when given, is the distance to travel (a
 /// user controller's longitudinal command, controller/stage.rs) instead of speed × dt.
-pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real, travel: Option<Real>) {
+pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real, distance: Option<Real>) {
     if !e.placed {
         return;
     }
     let old_h = e.pose.h;
-    let old_v = e.travel_component(e.velocity.translational);
+    // The move changes neither the entity's track's presence nor its heading relative to the
+    // lane (`LaneTrack::relative_heading` is set where a track is made): the cosine and sine
+    // of that heading are the same before and after it, asked once.
+    let travel = e.travel_cos_sin();
+    let old_v = component_along(e.velocity.translational, travel);
     // The running actions of a step act in storyboard (document) order, as in esmini: a
     // lateral action written before the running longitudinal one moves the entity before the
     // speed changes, so the entity travels at the speed of the step's start; otherwise at the
@@ -40,7 +44,7 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real, travel: O
     // document order is fixed by the file alone (lane_change_simple: the Lane change
     // maneuver precedes the End Of Road speed maneuver, and esmini's lane change runs at the
     // speed of the step's start while the speed action accelerates).
-    let speed = match travel {
+    let speed = match distance {
         Some(d) => d / dt,
         None if e.lateral_first => e.start_speed,
         None => e.speed,
@@ -54,18 +58,26 @@ pub(crate) fn move_entity(net: &RoadNetwork, e: &mut Entity, dt: Real, travel: O
     } else {
         advance_entity(net, e, speed, dt);
     }
-    measure(e, old_h, old_v, dt);
+    measure_along(e, old_h, old_v, dt, travel);
 }
 
 /// Sets velocity, yaw rate and acceleration of `e` after a move of `dt` s from heading
 /// `old_h` and speed along the travel `old_v`.
 pub(crate) fn measure(e: &mut Entity, old_h: Real, old_v: Real, dt: Real) {
+    let travel = e.travel_cos_sin();
+    measure_along(e, old_h, old_v, dt, travel);
+}
+
+/// [`measure`] given the cosine and sine of the entity's heading relative to its direction of
+/// travel ([`Entity::travel_cos_sin`]).
+#[inline(always)]
+fn measure_along(e: &mut Entity, old_h: Real, old_v: Real, dt: Real, travel: (Real, Real)) {
     e.velocity = Velocity6d {
-        translational: e.travel_velocity(),
+        translational: along(e.speed, travel),
         rotational: Vector3::new(0.0, 0.0, normalize_angle(e.pose.h - old_h) / dt),
     };
     e.acceleration = Acceleration6d {
-        translational: e.along_travel((e.speed - old_v) / dt),
+        translational: along((e.speed - old_v) / dt, travel),
         rotational: Vector3::ZERO,
     };
 }
@@ -98,13 +110,13 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
     // v·√(1 − x²) along the lane (x taken over the step: mean of its start and end). Without
     // a transition the share is 0.
     let end_share = match track.blend {
-        Some(_) => lateral(road, track).map_or(0.0, |(_, _, x)| x),
+        Some(_) => lateral(road, track, false).map_or(0.0, |(_, _, x)| x),
         None => 0.0,
     };
     let x = (0.5 * (e.lateral_slope + end_share)).clamp(-1.0, 1.0);
     let along = signed * (1.0 - x * x).sqrt();
     // Reversing runs the route backwards: no route successor is on offer then.
-    let left = match &mut e.route_follow {
+    let (left, memo_holds) = match &mut e.route_follow {
         Some(follow) if distance >= 0.0 => {
             advance(net, track, along * road_scale, &mut |road, c| {
                 follow.choose(net, road, c)
@@ -123,7 +135,13 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
         e.speed = 0.0;
     }
     e.at_lane_end = blocked;
-    place_on_track(net, e);
+    // Two copies of the placing, so that the move inside the memo's range (nearly every one)
+    // runs without the memo's tests instead of testing the flag in their place.
+    if memo_holds {
+        place(net, e, true);
+    } else {
+        place(net, e, false);
+    }
 }
 
 /// Ratio of reference-line length to travelled length at lateral position t where the
@@ -175,11 +193,12 @@ fn follow_route(
 /// share of the motion: lateral speed / speed (0 without a transition).
 ///
 /// Always inlined: a lane followed without a transition (nearly every move) needs only the
-/// span.
+/// span. `memo_holds`: whether the track's lanes memo is known to hold its s
+/// (world/lanes.rs `memo_held`).
 #[inline(always)]
-fn lateral(road: &Road, track: &mut LaneTrack) -> Option<(Real, Real, Real)> {
+fn lateral(road: &Road, track: &mut LaneTrack, memo_holds: bool) -> Option<(Real, Real, Real)> {
     let lane = track.lane_id;
-    let span = track_span(road, track, lane).ok()?;
+    let span = track_span(road, track, lane, memo_holds).ok()?;
     let target = span.center() + track.offset;
     match track.blend {
         None => Some((target, span.d_center(), 0.0)),
@@ -209,12 +228,22 @@ fn blended(
 }
 
 /// Sets t, pose and road position of `e` from its track after a move (nothing without one).
+#[inline(never)]
 pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity) {
+    place(net, e, false);
+}
+
+/// [`place_on_track`], always inlined into the move (no call, and the road and the track's
+/// memos it has just read stay in registers). `memo_holds`: the move stayed inside the
+/// track's lanes memo's range (world/lanes.rs `advance`, `memo_held`), so the lane answers
+/// are the memo's without testing its range again.
+#[inline(always)]
+fn place(net: &RoadNetwork, e: &mut Entity, memo_holds: bool) {
     let Some(track) = e.track.as_mut() else {
         return;
     };
     let road = net.road_at(track.road);
-    let Some((t, dt_ds, share)) = lateral(road, track) else {
+    let Some((t, dt_ds, share)) = lateral(road, track, memo_holds) else {
         return;
     };
     track.t = t;
@@ -223,12 +252,7 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity) {
     };
     // The pose's heading is the reference line's at s; the next move starts here and reads
     // the curvature back (world/lane_track.rs CurvatureAt).
-    let k = curvature_with_heading(road, track.s, pose.h);
-    track.curvature = Some(CurvatureAt {
-        road: track.road,
-        s_bits: track.s.to_bits(),
-        value: k,
-    });
+    let k = keep_curvature(road, track, pose.h);
     // dt/ds is exactly 0 off lane changes and widening lanes (world/zero_angle.rs: libm's bits).
     let slope = zero_angle::atan2(dt_ds, 1.0 - k * t);
     let road_h = pose.h;
@@ -245,6 +269,7 @@ pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity) {
         track,
         normalize_angle(pose.h - road_h),
         &mut e.road_position,
+        memo_holds,
     );
 }
 

@@ -208,9 +208,11 @@ pub(crate) fn step(
 
 /// Moves `e` by the merged command `m` over `dt` s.
 fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: &Merged, dt: Real) {
-    let old_h = e.pose.h;
-    let old_v = e.travel_component(e.velocity.translational);
+    // The heading and speed along the travel before the move, for the two branches that
+    // measure here (`move_entity` measures its own).
+    let before = |e: &Entity| (e.pose.h, e.travel_component(e.velocity.translational));
     if let Some(p) = m.pose {
+        let (old_h, old_v) = before(e);
         let (dx, dy) = (p.x - e.pose.x, p.y - e.pose.y);
         let along = dx * p.h.cos() + dy * p.h.sin();
         e.pose = p;
@@ -238,6 +240,7 @@ fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: &Me
         None => None,
     };
     if let Some(Lateral::Curvature(k)) = m.lateral {
+        let (old_h, old_v) = before(e);
         let (v, d) = motion.unwrap_or((e.speed, e.speed * dt));
         let (x, y, h) = arc_step(e.pose.x, e.pose.y, e.pose.h, d, k);
         e.pose.x = x;

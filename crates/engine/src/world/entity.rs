@@ -219,20 +219,21 @@ impl Entity {
     /// The vector of length `value` along the direction of travel, in the entity's axes (see
     /// [`Entity::travel_velocity`]).
     pub fn along_travel(&self, value: Real) -> Vector3 {
-        let (cos, sin) = self.travel_cos_sin();
-        Vector3::new(value * cos, -value * sin, 0.0)
+        along(value, self.travel_cos_sin())
     }
 
     /// Component of `v` (entity axes) along the direction of travel.
     pub fn travel_component(&self, v: Vector3) -> Real {
-        let (cos, sin) = self.travel_cos_sin();
-        v.x * cos - v.y * sin
+        component_along(v, self.travel_cos_sin())
     }
 
     /// Cosine and sine of the heading relative to the direction of travel; for the common 0
-    /// (±0) without calling them, with the same values (cos ±0 = 1, sin ±0 = ±0).
+    /// (±0) without calling them, with the same values (cos ±0 = 1, sin ±0 = ±0). A caller
+    /// that asks several times while neither the track nor its relative heading changes (the
+    /// default controller's move, controller/default.rs) asks once and passes them to
+    /// [`along`] and [`component_along`].
     #[inline]
-    fn travel_cos_sin(&self) -> (Real, Real) {
+    pub(crate) fn travel_cos_sin(&self) -> (Real, Real) {
         let rel = self.track.as_ref().map_or(0.0, |t| t.relative_heading);
         if rel == 0.0 {
             (1.0, rel)
@@ -245,4 +246,18 @@ impl Entity {
     pub fn max_speed(&self) -> Real {
         self.performance.map_or(Real::INFINITY, |p| p.max_speed)
     }
+}
+
+/// The vector of length `value` along the direction of travel whose cosine and sine
+/// ([`Entity::travel_cos_sin`]) are `(cos, sin)`, in the entity's axes: [`Entity::along_travel`].
+#[inline]
+pub(crate) fn along(value: Real, (cos, sin): (Real, Real)) -> Vector3 {
+    Vector3::new(value * cos, -value * sin, 0.0)
+}
+
+/// Component of `v` (entity axes) along the direction of travel whose cosine and sine are
+/// `(cos, sin)`: [`Entity::travel_component`].
+#[inline]
+pub(crate) fn component_along(v: Vector3, (cos, sin): (Real, Real)) -> Real {
+    v.x * cos - v.y * sin
 }

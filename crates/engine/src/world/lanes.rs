@@ -10,7 +10,7 @@ use opendrive::{
     RoadPosition,
 };
 
-use super::lane_track::{FrameAt, LaneTrack, LanesMemo};
+use super::lane_track::{CurvatureAt, FrameAt, LaneTrack, LanesMemo};
 use crate::position::lane_at;
 
 /// Step (m) of the finite difference that gives the reference line's curvature.
@@ -66,12 +66,39 @@ fn curvature_by_difference(road: &Road, s: Real, heading: Real) -> Real {
     }
 }
 
-/// [`curvature`] at the track's road and s: the value the last move left there, else
-/// computed.
+/// [`curvature`] at the track's road and s: +0 on a straight road, else the value the last
+/// move left there ([`keep_curvature`]), else computed.
+///
+/// On a straight road ([`PlanView::straight_heading`](opendrive::PlanView::straight_heading))
+/// [`curvature`] is +0 at every s: where `Road::heading` answers, it answers that heading
+/// (its doc), for which [`curvature_with_heading`] is +0; where it does not (s off the road,
+/// NaN), `curvature` is 0.0 = +0 as well. So there the memo is neither read nor written.
+#[inline(always)]
 pub(crate) fn track_curvature(road: &Road, track: &LaneTrack) -> Real {
+    if road.plan_view.straight_heading().is_some() {
+        return 0.0;
+    }
     track
         .curvature_here()
         .unwrap_or_else(|| curvature(road, track.s))
+}
+
+/// [`curvature_with_heading`] at the track's road and s, given the reference line's heading
+/// there (the `h` of the road's pose at s), kept in the track's curvature memo for the next
+/// move's [`track_curvature`]; on a straight road +0 without the memo (the argument of
+/// [`track_curvature`]: the heading given is then the straight heading).
+#[inline(always)]
+pub(crate) fn keep_curvature(road: &Road, track: &mut LaneTrack, heading: Real) -> Real {
+    if road.plan_view.straight_heading().is_some() {
+        return 0.0;
+    }
+    let k = curvature_with_heading(road, track.s, heading);
+    track.curvature = Some(CurvatureAt {
+        road: track.road,
+        s_bits: track.s.to_bits(),
+        value: k,
+    });
+    k
 }
 
 /// The track's lane memo, if it holds the track's road and s.
@@ -83,16 +110,31 @@ fn memo(track: &mut LaneTrack) -> Option<&mut LanesMemo> {
         .filter(|m| m.road == road && m.lo <= s && s <= m.hi)
 }
 
+/// [`memo`], where `memo_holds` says whether the caller knows that the memo holds the track's
+/// road and s: [`advance`] moved the track inside the memo's range (its second value) and
+/// nothing has changed the track's road, s or memo since but [`track_span`], which keeps a
+/// memo that holds s holding it. Then the memo is the track's without the test.
+#[inline(always)]
+fn memo_held(track: &mut LaneTrack, memo_holds: bool) -> Option<&mut LanesMemo> {
+    if memo_holds {
+        track.lanes.as_mut()
+    } else {
+        memo(track)
+    }
+}
+
 /// The span of the followed lane `lane` of the track's road at its s ([`Road::lane_span`]):
 /// from the track's memo while the lanes stay the same, else computed, and the memo made anew
-/// where the lanes are constant around s.
+/// where the lanes are constant around s. `memo_holds`: [`memo_held`].
+#[inline(always)]
 pub(crate) fn track_span(
     road: &Road,
     track: &mut LaneTrack,
     lane: i32,
+    memo_holds: bool,
 ) -> Result<LaneSpan, opendrive::Error> {
     let s = track.s;
-    if let Some(m) = memo(track) {
+    if let Some(m) = memo_held(track, memo_holds) {
         if m.lane == lane {
             return Ok(m.span);
         }
@@ -129,8 +171,9 @@ fn track_span_anew(
 
 /// [`Road::pose`] at the track's road and s and lateral position `t`: from the frame stretch
 /// the track keeps while it holds s ([`Road::pose_in`]: on a straight stretch without a
-/// look-up, the same bits), else computed and the stretch around s kept.
-#[inline]
+/// look-up, the same bits), else computed and the stretch around s kept. Always inlined
+/// into the move, its one caller (out of line, its pose came back through memory).
+#[inline(always)]
 pub(crate) fn track_pose(
     road: &Road,
     track: &mut LaneTrack,
@@ -150,10 +193,15 @@ pub(crate) fn track_pose(
 }
 
 /// [`lane_at`] at the track's road, s and t: from the memo while the lanes and t stay the
-/// same.
-pub(crate) fn track_lane_at(road: &Road, track: &mut LaneTrack) -> Option<(i32, Real)> {
+/// same. `memo_holds`: [`memo_held`].
+#[inline(always)]
+pub(crate) fn track_lane_at(
+    road: &Road,
+    track: &mut LaneTrack,
+    memo_holds: bool,
+) -> Option<(i32, Real)> {
     let (s, t) = (track.s, track.t);
-    let Some(m) = memo(track) else {
+    let Some(m) = memo_held(track, memo_holds) else {
         return lane_at(road, s, t);
     };
     match m.at {
@@ -211,7 +259,8 @@ pub fn numbered_lane(
 /// Moves `track` by `distance` m of travel along s in its direction, following lane links
 /// (the first successor, in the road model's order, or the one `prefer` picks from the
 /// successors where the road named by its first argument ends). Returns the distance that
-/// could not be driven because the lane ends with no successor.
+/// could not be driven because the lane ends with no successor, and whether the track moved
+/// inside its lanes memo's range (so that the memo holds its road and new s: [`memo_held`]).
 ///
 /// Inside the track's lanes memo's range (the lanes of one road constant, one lane section,
 /// a `CONSTANT_MARGIN` > `S_TOLERANCE` inside its ends, on the road) the move is the first
@@ -225,13 +274,13 @@ pub fn advance(
     track: &mut LaneTrack,
     distance: Real,
     prefer: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
-) -> Real {
+) -> (Real, bool) {
     let target = target(track, distance);
     if memo(track).is_some_and(|m| m.lo <= target && target <= m.hi) {
         track.s = target;
-        return 0.0;
+        return (0.0, true);
     }
-    walk(net, track, distance, prefer)
+    (walk(net, track, distance, prefer), false)
 }
 
 /// The s `distance` m of travel from the track's s in its direction.
@@ -389,15 +438,18 @@ fn anchor_blend(road: &Road, track: &mut LaneTrack, s: Real) {
 /// Sets `out` to the road position of `track` (no look-up: the track knows its road);
 /// `relative_heading` is the entity's heading minus the road's. The strings of the position
 /// `out` held are reused, so that a step allocates nothing. `None` where the track's lane
-/// section has no lanes at its s.
+/// section has no lanes at its s. `memo_holds`: [`memo_held`]. Always inlined into the move,
+/// its one caller.
+#[inline(always)]
 pub fn set_road_position(
     net: &RoadNetwork,
     track: &mut LaneTrack,
     relative_heading: Real,
     out: &mut Option<RoadPosition>,
+    memo_holds: bool,
 ) {
     let road = net.road_at(track.road);
-    let Some((lane_id, offset)) = track_lane_at(road, track) else {
+    let Some((lane_id, offset)) = track_lane_at(road, track, memo_holds) else {
         *out = None;
         return;
     };
@@ -446,6 +498,8 @@ pub fn set_road_position(
 
 #[cfg(test)]
 mod tests {
+    use opendrive::RoadHandle;
+
     use super::*;
 
     /// A 30 m road of two lanes on the plan view `geometry` (its `<geometry>` elements).
@@ -494,12 +548,13 @@ mod tests {
         let mut grid: Vec<f64> = (0..=3000).map(|i| f64::from(i) * 0.01).collect();
         grid.extend([-1e-9, 9.995, 29.995, 29.999, 30.0 + 1e-9, 31.0, f64::NAN]);
         let mut shortcuts = 0;
-        for (name, net) in [
+        let roads = [
             ("straight", &straight),
             ("zero", &zero),
             ("kinked", &kinked),
             ("arc", &arc),
-        ] {
+        ];
+        for (name, net) in roads {
             let r = &net.roads()[0];
             for &s in &grid {
                 let own = r.heading(s).unwrap_or(0.5);
@@ -533,5 +588,58 @@ mod tests {
             curvature_with_heading(&straight.roads()[0], 12.0, h).to_bits(),
             0
         );
+
+        // The track's curvature (`track_curvature`, `keep_curvature`, which on a straight road
+        // neither read nor write the memo) against `curvature` of the road at s, bit for bit:
+        // at every s of the grid, with the memo empty, as a move left it at that s (given the
+        // road's own heading there, as the move gives its pose's), and left at another s.
+        let mut kept = 0;
+        for (name, net) in roads {
+            let r = &net.roads()[0];
+            let is_straight = r.plan_view.straight_heading().is_some();
+            assert_eq!(is_straight, name == "straight" || name == "zero");
+            let mut track = LaneTrack {
+                road_id: r.id.clone(),
+                road: RoadHandle(0),
+                lane_id: -1,
+                s: 0.0,
+                t: -1.75,
+                offset: 0.0,
+                direction: Direction::Forward,
+                relative_heading: 0.0,
+                blend: None,
+                curvature: None,
+                lanes: None,
+                frame: None,
+            };
+            for &s in &grid {
+                let full = curvature(r, s).to_bits();
+                track.s = s;
+                track.curvature = None;
+                assert_eq!(track_curvature(r, &track).to_bits(), full, "{name} at {s}");
+                if let Ok(h) = r.heading(s) {
+                    assert_eq!(keep_curvature(r, &mut track, h).to_bits(), full);
+                    // Kept for the next move where the road is not straight.
+                    assert_eq!(track.curvature.is_some(), !is_straight, "{name} at {s}");
+                    kept += usize::from(track.curvature.is_some());
+                    assert_eq!(track_curvature(r, &track).to_bits(), full, "{name} at {s}");
+                    // Left at another s: not read there.
+                    track.s = s + 0.5;
+                    let there = curvature(r, track.s).to_bits();
+                    assert_eq!(track_curvature(r, &track).to_bits(), there, "{name} at {s}");
+                }
+                if is_straight {
+                    assert_eq!(full, 0, "{name} at {s}: +0 everywhere on a straight road");
+                }
+            }
+        }
+        // The two curved roads kept a curvature at every s of the grid on the road (the 3,001
+        // of the grid, 9.995, 29.995 and 29.999 m, and any end within the road's tolerance).
+        let on_road = grid
+            .iter()
+            .filter(|&&s| arc.roads()[0].heading(s).is_ok())
+            .count();
+        assert!(on_road >= 3004, "{on_road}");
+        assert_eq!(kept, 2 * on_road);
     }
 }
