@@ -27,6 +27,7 @@ use opendrive::{
 };
 
 use crate::store::driver_inputs::TrackInput;
+use crate::store::lane_index::LaneIndex;
 use crate::world::lanes::lane_shift;
 
 /// Which side of the direction of travel.
@@ -119,11 +120,15 @@ pub(crate) struct KeptRoad {
     section_s: Real,
     /// Left, right.
     sides: [SideAnswer; 2],
+    /// The lane index's slot of each side's lane ([`LaneIndex::slot`], left, right), where
+    /// its entries are: a function of the lane's handle and the network, as the handle is of
+    /// the question, so it holds wherever the answer does.
+    slots: [Option<u32>; 2],
 }
 
 impl KeptRoad {
-    /// The answers for `track`, asked of the road.
-    pub fn ask(network: &RoadNetwork, track: &TrackInput) -> Self {
+    /// The answers for `track`, asked of the road, with the slots of their lanes in `index`.
+    pub fn ask(network: &RoadNetwork, index: &LaneIndex, track: &TrackInput) -> Self {
         let road = network.road_at(track.road);
         let section = road.lane_section_stretch(track.s);
         let ls = &road.lane_sections[section.index];
@@ -157,11 +162,19 @@ impl KeptRoad {
                 crossing_permitted: mark.permitted,
             }
         };
+        let sides = [side(Side::Left), side(Side::Right)];
+        let slot = |a: &SideAnswer| {
+            let h = handle(track.road, section.index, a.lane);
+            a.found
+                .then(|| index.slot(h).and_then(|k| u32::try_from(k).ok()))
+                .flatten()
+        };
         KeptRoad {
             asked: Asked::of(track),
             section,
             section_s: ls.s,
-            sides: [side(Side::Left), side(Side::Right)],
+            slots: [slot(&sides[0]), slot(&sides[1])],
+            sides,
         }
     }
 
@@ -193,11 +206,23 @@ impl KeptRoad {
         })
     }
 
+    /// The lane index's slot of the lane on `side` ([`LaneIndex::slot`] of its handle), when
+    /// there is one.
+    #[inline]
+    pub fn slot(&self, side: Side) -> Option<usize> {
+        self.slots[match side {
+            Side::Left => 0,
+            Side::Right => 1,
+        }]
+        .map(|k| k as usize)
+    }
+
     /// The answers for `track`: `kept`'s when they hold, else asked of the road and kept.
     #[inline]
     pub fn for_track<'k>(
         kept: &'k mut Option<KeptRoad>,
         network: &RoadNetwork,
+        index: &LaneIndex,
         track: &TrackInput,
     ) -> &'k KeptRoad {
         // By reference: `is_some_and` on the `Option` itself copied the kept answers (issue
@@ -205,13 +230,13 @@ impl KeptRoad {
         if !kept.as_ref().is_some_and(|k| k.holds(track)) {
             *kept = None;
         }
-        kept.get_or_insert_with(|| Self::ask_cold(network, track))
+        kept.get_or_insert_with(|| Self::ask_cold(network, index, track))
     }
 
     /// [`ask`](Self::ask) out of line: the kept answers' common case is the test alone.
     #[inline(never)]
-    fn ask_cold(network: &RoadNetwork, track: &TrackInput) -> Self {
-        Self::ask(network, track)
+    fn ask_cold(network: &RoadNetwork, index: &LaneIndex, track: &TrackInput) -> Self {
+        Self::ask(network, index, track)
     }
 }
 

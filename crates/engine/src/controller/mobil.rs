@@ -147,7 +147,7 @@ impl MobilController {
         if !b.crossing_permitted || view.occupied_beside(b) {
             return None;
         }
-        Self::weigh(&self.idm.params, &self.mobil, view, own, b)
+        Self::weigh(&self.idm.params, &self.mobil, view, own, *b)
     }
 
     /// [`judge`](Self::judge) of a lane beside that may be crossed into and is not occupied
@@ -161,8 +161,11 @@ impl MobilController {
         mobil: &MobilParameters,
         view: &ControllerView<'_>,
         own: &mut Own,
-        b: &Beside,
+        b: Beside,
     ) -> Option<Real> {
+        // `b` by value: the lane beside is copied where it is weighed, not before every
+        // occupancy test (issue 31).
+        let b = &b;
         let (v, len) = (own.v, own.len);
         let lane_leader = view.leader_beside(b);
         let own_after = own.after(p, lane_leader);

@@ -281,7 +281,8 @@ fn the_kept_lane_handles_give_the_searches_of_handles_asked_each_time() {
 /// after step while the traffic moves and the index and its hints are kept as the engine
 /// keeps them: 10 crowded highways of 60 cars, 40 steps, every car moved along its lane by
 /// its speed (one in ten placed anew elsewhere, so that hints go stale; some across a
-/// marking). Every way occurs many times: proven at the hint and searched, a leader found and
+/// marking), each car's lanes beside kept as its `mobil` controller keeps them, their lanes'
+/// slots asserted to be the index's. Every way occurs many times: proven at the hint and searched, a leader found and
 /// none (the front cars; a gap beyond the horizon), a lane beside occupied and free.
 #[test]
 fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
@@ -292,6 +293,8 @@ fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
         let mut w = crowded(60, seed);
         let mut index = LaneIndex::default();
         let mut next = generator(seed + 100);
+        // Each car's lanes beside kept from step to step, as its `mobil` controller keeps them.
+        let mut kept: Vec<Option<KeptRoad>> = vec![None; 60];
         for step in 0..40 {
             for i in 0..60u32 {
                 let id = EntityId(i);
@@ -365,12 +368,21 @@ fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
                 } else {
                     none += 1;
                 }
-                for side in [Side::Left, Side::Right] {
-                    let Some(b) = view.beside(side) else {
-                        continue;
+                for b in view
+                    .beside_kept(&mut kept[e.id.index()])
+                    .into_iter()
+                    .flatten()
+                {
+                    let side = if b.lane > track.lane_id {
+                        "larger id"
+                    } else {
+                        "smaller id"
                     };
+                    // The kept slot is the index's for the lane's handle at this step.
+                    let slot = index.slot(b.at.0);
+                    assert_eq!(b.slot, slot, "seed {seed} step {step} {} {side}", e.name);
                     let kind = if b.lane > track.lane_id { 5 } else { 8 };
-                    if index.occupied_proven(b.at.0, me.s_range, e.id, &hint(kind)) {
+                    if index.occupied_proven(slot.expect("a lane"), me.s_range, e.id, &hint(kind)) {
                         occupied_proven += 1;
                     }
                     let reference = index
@@ -380,7 +392,7 @@ fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
                     assert_eq!(
                         view.occupied_beside(&b),
                         reference,
-                        "seed {seed} step {step} {} {side:?}",
+                        "seed {seed} step {step} {} {side}",
                         e.name
                     );
                     if reference {
@@ -498,6 +510,8 @@ fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
         corpus("two_plus_one.xodr"),
         corpus("straight_500m_roadmarks.xodr"),
     ];
+    // No index: the kept answers' slots are none, the road's part is what is compared.
+    let no_index = LaneIndex::default();
     let (mut kept_used, mut asked, mut refused, mut none) = (0, 0, 0, 0);
     for net in &nets {
         for (r, road) in net.roads().iter().enumerate() {
@@ -543,7 +557,7 @@ fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
                         } else {
                             asked += 1;
                         }
-                        let answer = KeptRoad::for_track(&mut kept, net, &track);
+                        let answer = KeptRoad::for_track(&mut kept, net, &no_index, &track);
                         for side in [Side::Left, Side::Right] {
                             let direct = road_beside_directly(net, &track, side);
                             assert_eq!(

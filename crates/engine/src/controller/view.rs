@@ -78,6 +78,10 @@ pub(crate) struct Beside {
     pub toward_keep_side: bool,
     /// As [`NeighbourLane::crossing_permitted`].
     pub crossing_permitted: bool,
+    /// The lane index's slot of the lane ([`LaneIndex::slot`] of `at`'s handle), when known:
+    /// kept with the lanes beside (controller/lane_beside.rs), so that the occupancy's answer
+    /// at the hint costs no slot look-up (issue 31).
+    pub slot: Option<usize>,
 }
 
 /// The world of one step as the controller of one entity sees it (module doc).
@@ -395,13 +399,14 @@ impl<'a> ControllerView<'a> {
         ) else {
             return [None, None];
         };
-        let road = KeptRoad::for_track(kept, self.network, track);
+        let road = KeptRoad::for_track(kept, self.network, self.index, track);
         [Side::Left, Side::Right].map(|side| {
-            road.side(side).map(|road| Beside {
-                lane: road.lane,
-                at: (road.handle, track.direction),
-                toward_keep_side: road.toward_keep_side,
-                crossing_permitted: road.crossing_permitted,
+            road.side(side).map(|beside| Beside {
+                lane: beside.lane,
+                at: (beside.handle, track.direction),
+                toward_keep_side: beside.toward_keep_side,
+                crossing_permitted: beside.crossing_permitted,
+                slot: road.slot(side),
             })
         })
     }
@@ -413,11 +418,15 @@ impl<'a> ControllerView<'a> {
         let Some(me) = self.index.footprint(self.input.id) else {
             return false;
         };
-        // The answer the entries at the hint prove inline, the index's question otherwise
-        // (issue 31: `occupied`'s own test at the hint was left out of line).
+        // The answer the entries at the hint prove inline, in the lane at the kept slot, the
+        // index's question otherwise (issue 31: `occupied`'s own test at the hint was left
+        // out of line, and its slot look-up cost about 25 instructions a question).
         let (id, hint) = (self.input.id, self.hint(b.lane, 2));
-        hint.is_some_and(|hint| self.index.occupied_proven(b.at.0, me.s_range, id, hint))
-            || self.index.occupied(b.at.0, me.s_range, id, hint)
+        let proven = match (hint, b.slot) {
+            (Some(hint), Some(slot)) => self.index.occupied_proven(slot, me.s_range, id, hint),
+            _ => false,
+        };
+        proven || self.index.occupied(b.at.0, me.s_range, id, hint)
     }
 
     /// The largest speed along the entity's direction of travel (m/s) of the entities whose

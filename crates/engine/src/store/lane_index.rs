@@ -844,19 +844,31 @@ impl LaneIndex {
         Some(within(found, 0.0, horizon))
     }
 
-    /// Whether the entries of lane `h` at `hint` prove that [`occupied`](Self::occupied) is
-    /// true for the s-range `range` and `exclude` ([`occupied_at_hint`]); `false` where they do
-    /// not (then `occupied` answers). Inline for the driver models' lanes beside
+    /// The slot of lane `h` (store/lane_slots.rs), where its entries are: a function of the
+    /// handle and the network alone, the same in every index built on that network, so a
+    /// caller that keeps a lane's handle from step to step may keep its slot beside it (the
+    /// driver models' lanes beside, controller/lane_beside.rs; issue 31). `None` for the
+    /// centre lane, a lane the network does not have, or an index never built.
+    #[inline]
+    pub(crate) fn slot(&self, h: LaneHandle) -> Option<usize> {
+        self.slots.as_ref()?.slot(h)
+    }
+
+    /// Whether the entries of the lane at `slot` ([`slot`](Self::slot) of its handle) at
+    /// `hint` prove that [`occupied`](Self::occupied) is true for that lane, the s-range
+    /// `range` and `exclude` ([`occupied_at_hint`]); `false` where they do not (then `occupied`
+    /// answers). Inline for the driver models' lanes beside, whose slots are kept
     /// (controller/view.rs; issue 31), as [`nearest_ahead_proven`](Self::nearest_ahead_proven).
     #[inline(always)]
     pub(crate) fn occupied_proven(
         &self,
-        h: LaneHandle,
+        slot: usize,
         range: (Real, Real),
         exclude: EntityId,
         hint: &AtomicU32,
     ) -> bool {
-        self.lane(h)
+        self.lanes
+            .get(slot)
             .is_some_and(|lane| occupied_at_hint(lane, range, exclude, hint))
     }
 }
