@@ -182,3 +182,40 @@ pub(crate) struct Merged {
     pub(super) lateral: Option<Lateral>,
     pub(super) pose: Option<Pose>,
 }
+
+impl Merged {
+    /// An acceleration alone: the longitudinal domain's command, none in the lateral domain
+    /// and no pose.
+    #[inline]
+    pub(super) fn acceleration(a: Real) -> Merged {
+        Merged {
+            longitudinal: Some(Longitudinal::Acceleration(a)),
+            lateral: None,
+            pose: None,
+        }
+    }
+}
+
+/// A commanded entity in the step's list of commands, which the moves' walk meets in entity
+/// order (controller/stage.rs): the [`Merged`] command [`Merged::acceleration`] of `a`, or
+/// the entity's [`Merged`] command at place `merged` of the step's merged commands.
+///
+/// **Why.** Most commands of driver-model traffic are an acceleration alone (an `idm`, or a
+/// `mobil` that changes no lane this step): kept as 16 bytes here instead of a 112-byte
+/// [`Merged`] built, pushed and read back per entity and step (issue 31). The moves' walk
+/// applies `Merged::acceleration(a)` for them, the command the merge gives, so the move is
+/// the same to the bit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Commanded {
+    /// The entity's index.
+    pub entity: u32,
+    /// The place of its merged command, or [`Commanded::ACCELERATION`].
+    pub merged: u32,
+    /// The acceleration (m/s²) where `merged` is [`Commanded::ACCELERATION`].
+    pub a: Real,
+}
+
+impl Commanded {
+    /// `merged` of a command that is an acceleration alone.
+    pub const ACCELERATION: u32 = u32::MAX;
+}

@@ -17,7 +17,7 @@
 
 use opendrive::{Direction, Real, RoadNetwork};
 
-use super::command::{Command, Lateral, Longitudinal, Merged};
+use super::command::{Command, Commanded, Lateral, Longitudinal, Merged};
 use super::default::{measure, move_entity};
 use super::drivers::{DriverModel, Instance, Model};
 use super::one_gap::{resolve as resolve_one_gap, Change};
@@ -47,15 +47,33 @@ pub(crate) fn step(
     dt: Real,
     threads: usize,
 ) -> bool {
+    walk::<true>(world, controllers, time, dt, threads)
+}
+
+/// [`step`]; with `SHORTCUT` (always, but in the test that compares the two) the runs of an
+/// entity that one driver model alone commands take the short way: no grouping of the
+/// entity's runs, and a command that is an acceleration alone kept as such
+/// ([`Commanded`]), not as a [`Merged`] command. Without it every command is merged as the
+/// general rule merges any entity's runs. The same merged command either way: a single run
+/// sets what [`driver_lateral`] says on an empty command, as the general rule does.
+fn walk<const SHORTCUT: bool>(
+    world: &mut World,
+    controllers: &mut ControllerTable,
+    time: Real,
+    dt: Real,
+    threads: usize,
+) -> bool {
     // The stage's storage of the last step, taken out of the table while the table's
     // controllers are stepped, and put back at the end.
     let mut storage = std::mem::take(&mut controllers.stage);
     let StageStorage {
         index,
+        commanded,
         merged,
         parallel,
         changes,
     } = &mut storage;
+    commanded.clear();
     merged.clear();
     // The lane index is built where some model holds a domain, and then the moves' walk
     // enters each entity in it after its move (store/lane_refresh.rs).
@@ -77,9 +95,57 @@ pub(crate) fn step(
         let (runs, drivers, per_entity) = controllers.walk();
         // With threads asked and many driver models: their commands first, on the threads.
         let threaded = parallel.work_out(threads, runs, drivers, at_start);
+        // Entity indices and places of merged commands fit in u32: entity ids are u32.
+        let at = |i: usize| i as u32;
         let mut rest = runs;
-        while let Some(first) = rest.first() {
+        while let Some((first, after)) = rest.split_first() {
             let i = first.entity;
+            // The short way: a driver model is the entity's only run.
+            if let (true, Model::Driver(k), false) = (
+                SHORTCUT,
+                first.model,
+                after.first().is_some_and(|r| r.entity == i),
+            ) {
+                rest = after;
+                // Whether the entity is placed, from the driver inputs the index copied (a
+                // line of the compact table, not of the 1.3 kB entity:
+                // store/driver_inputs.rs), as below.
+                let Some(view) = at_start.view(i) else {
+                    continue;
+                };
+                let (a, lane) = if threaded {
+                    parallel.command(k)
+                } else {
+                    drivers[k].command(&view)
+                };
+                let held = first.held;
+                let lateral = driver_lateral(held.lateral, held.lateral, lane, &drivers[k]);
+                match (held.longitudinal, lateral.flatten()) {
+                    (true, None) => commanded.push(Commanded {
+                        entity: at(i),
+                        merged: Commanded::ACCELERATION,
+                        a,
+                    }),
+                    (longitudinal, lane) => {
+                        let m = Merged {
+                            longitudinal: longitudinal.then_some(Longitudinal::Acceleration(a)),
+                            lateral: lane.map(Lateral::ChangeLane),
+                            pose: None,
+                        };
+                        merged.push((i, m));
+                        let place = merged.len() - 1;
+                        commanded.push(Commanded {
+                            entity: at(i),
+                            merged: at(place),
+                            a,
+                        });
+                        if let Some(lane) = lane {
+                            changes.push(Change::asked(place, k, lane));
+                        }
+                    }
+                }
+                continue;
+            }
             let n = rest.iter().take_while(|r| r.entity == i).count();
             let (of_entity, after) = rest.split_at(n);
             rest = after;
@@ -111,18 +177,12 @@ pub(crate) fn step(
                         if held.longitudinal {
                             m.longitudinal = Some(Longitudinal::Acceleration(a));
                         }
-                        if held.lateral {
+                        let entity_lateral = of_entity.iter().any(|r| r.held.lateral);
+                        if let Some(lane) =
+                            driver_lateral(held.lateral, entity_lateral, lane, &drivers[k])
+                        {
                             m.lateral = lane.map(Lateral::ChangeLane);
                             change = lane.map(|l| (k, l));
-                        } else if lane.is_some() && !of_entity.iter().any(|r| r.held.lateral) {
-                            // Only an `idm` holding a mandatory lane gives a lane without the
-                            // lateral domain (strategy.rs hands it one only where no user
-                            // controller holds that domain): its change is started on the
-                            // default controller's lane track, as the route's lane changes.
-                            if matches!(drivers[k], DriverModel::Idm(_)) {
-                                m.lateral = lane.map(Lateral::ChangeLane);
-                                change = lane.map(|l| (k, l));
-                            }
                         }
                         continue;
                     }
@@ -157,8 +217,14 @@ pub(crate) fn step(
                 }
             }
             merged.push((i, m));
+            let place = merged.len() - 1;
+            commanded.push(Commanded {
+                entity: at(i),
+                merged: at(place),
+                a: 0.0,
+            });
             if let Some((k, lane)) = change {
-                changes.push(Change::asked(merged.len() - 1, k, lane));
+                changes.push(Change::asked(place, k, lane));
             }
         }
         // Two changes into one gap: the one behind yields (one_gap.rs).
@@ -172,11 +238,19 @@ pub(crate) fn step(
     let mut finite = true;
     let tested = |e: &Entity| !e.placed || all_finite(e);
     // The commands, in increasing entity index (the runs' order), met in the walk.
-    let mut commands = merged.iter().peekable();
+    let mut commands = commanded.iter().peekable();
     for i in 0..n {
         let e = &mut entities[i];
-        match commands.next_if(|(j, _)| *j == i) {
-            Some((_, m)) if e.placed => apply(net, e, controllers.of_mut(i), m, dt),
+        match commands.next_if(|c| c.entity as usize == i) {
+            Some(c) if e.placed => {
+                let ctrl = controllers.of_mut(i);
+                // ACCELERATION names no place (u32::MAX: there are fewer merged commands
+                // than entities, whose ids are u32).
+                match merged.get(c.merged as usize) {
+                    None => apply(net, e, ctrl, &Merged::acceleration(c.a), dt),
+                    Some((_, m)) => apply(net, e, ctrl, m, dt),
+                }
+            }
             _ => {
                 // Run option stop_at_red_lights (signals/red_light.rs); off: nothing.
                 signals.govern_speed(net, i, e, dt);
@@ -206,7 +280,29 @@ pub(crate) fn step(
     finite
 }
 
-/// Moves `e` by the merged command `m` over `dt` s.
+/// Whether a driver model's run sets its entity's lateral command, and to what (the lane to
+/// change to, or none): a run holding the lateral domain sets it; one without it sets it only
+/// to an `idm`'s lane (its mandatory lane: strategy.rs hands it one only where no user
+/// controller holds that domain) and only where no run of the entity (`entity_lateral`)
+/// holds the lateral domain: its change is then started on the default controller's lane
+/// track, as the route's lane changes. `None`: the run leaves the lateral command as it is.
+#[inline]
+fn driver_lateral(
+    held_lateral: bool,
+    entity_lateral: bool,
+    lane: Option<i32>,
+    model: &DriverModel,
+) -> Option<Option<i32>> {
+    if held_lateral || (lane.is_some() && !entity_lateral && matches!(model, DriverModel::Idm(_))) {
+        Some(lane)
+    } else {
+        None
+    }
+}
+
+/// Moves `e` by the merged command `m` over `dt` s. Inlined at both of its calls, so that the
+/// one with an acceleration alone drops the branches of the other commands.
+#[inline(always)]
 fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: &Merged, dt: Real) {
     // The heading and speed along the travel before the move, for the two branches that
     // measure here (`move_entity` measures its own).
@@ -290,4 +386,151 @@ fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: &Me
         e.speed = v;
     }
     move_entity(net, e, dt, distance);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::controller::command::Strategy;
+    use crate::controller::properties::{ControllerKind, ModelSettings};
+    use crate::controller::table::Assigned;
+    use crate::controller::test_world::crowded;
+    use crate::models::acc::AccParameters;
+    use crate::models::idm::IdmParameters;
+    use crate::models::mobil::MobilParameters;
+    use crate::world::ActiveDomains;
+
+    /// Entity `i`'s controllers by `i % 8`: 0, 1 and 7 `mobil` on both domains (the short
+    /// way: an acceleration alone, or a lane change merged); 2 `idm` (the short way), every
+    /// second one handed mandatory lane −2 (its lane merged without the lateral domain);
+    /// 3 `mobil` longitudinally only (its lanes not merged); 4 `mobil` laterally only (no
+    /// acceleration: merged); 5 `acc` longitudinally and `mobil` laterally (two runs: the
+    /// general merge either way); 6 none (the default controller).
+    fn controllers(n: usize) -> ControllerTable {
+        let mut t = ControllerTable::default();
+        let idm = |i: usize| IdmParameters {
+            desired_speed: [22.0, 30.0, 36.0][i % 3],
+            ..IdmParameters::default()
+        };
+        let mobil = |i: usize| ModelSettings::Mobil {
+            idm: idm(i),
+            desired_speed_given: true,
+            mobil: MobilParameters {
+                politeness: [0.5, 0.0, 0.2][i % 3],
+                change_threshold: [0.1, 0.0][i % 2],
+                ..MobilParameters::default()
+            },
+        };
+        for i in 0..n {
+            let settings = match i % 8 {
+                0 | 1 | 3 | 4 | 7 => vec![(mobil(i), [true, true], [i % 8 != 4, i % 8 != 3])],
+                2 => vec![(
+                    ModelSettings::Idm {
+                        idm: idm(i),
+                        desired_speed_given: true,
+                    },
+                    [true, false],
+                    [true, false],
+                )],
+                5 => vec![
+                    (
+                        ModelSettings::Acc {
+                            acc: AccParameters::new(30.0),
+                            set_speed_given: true,
+                        },
+                        [true, false],
+                        [true, false],
+                    ),
+                    (mobil(i), [true, true], [false, true]),
+                ],
+                _ => vec![],
+            };
+            // (settings, the domains it is defined for, the domains activated)
+            for (slot, (settings, [dl, dt], [al, at])) in settings.into_iter().enumerate() {
+                let instance = t.instantiate(&settings);
+                let before = t.held_by(i);
+                t.of_mut(i).assigned.push(Assigned {
+                    name: format!("c{i}.{slot}"),
+                    object_controller: None,
+                    kind: ControllerKind::Model {
+                        settings,
+                        domains: MotionDomains {
+                            longitudinal: dl,
+                            lateral: dt,
+                        },
+                    },
+                    active: ActiveDomains {
+                        longitudinal: al,
+                        lateral: at,
+                        lighting: false,
+                        animation: false,
+                    },
+                    instance: Some(instance),
+                });
+                t.recount_entity(i, before);
+                if i % 16 == 2 {
+                    let c = t.instance_mut(i, slot).expect("idm");
+                    assert!(c.strategy(Strategy::MandatoryLane(Some(-2))).is_some());
+                }
+            }
+        }
+        t
+    }
+
+    /// The short way of the stage's walk (`walk::<true>`, what `step` runs) gives the step of
+    /// the general merge of every entity's runs (`walk::<false>`) bit for bit: 40 steps of
+    /// 0.05 s of three crowded highways of 330 cars with the eight kinds of controllers of
+    /// [`controllers`] (on one thread, and with the commands on 2 threads: 290 driver models,
+    /// above the 256 from which a step uses them), every entity's state (pose, speeds, lane
+    /// track, road position, Debug of the f64s: their shortest round-trip digits) and every
+    /// controller's state the same after each step. Both kinds of short command occur, and lane
+    /// changes (merged) many times.
+    #[test]
+    fn the_shortcut_gives_the_general_merge_bit_for_bit() {
+        let (mut alone, mut changed) = (0, 0);
+        for (seed, threads) in [(1, 1), (2, 2), (3, 1)] {
+            let (mut short, mut general) = (crowded(330, seed), crowded(330, seed));
+            let n = short.entities().len();
+            let (mut ts, mut tg) = (controllers(n), controllers(n));
+            for k in 0..40 {
+                let time = k as Real * 0.05;
+                let fs = walk::<true>(&mut short, &mut ts, time, 0.05, threads);
+                let fg = walk::<false>(&mut general, &mut tg, time, 0.05, threads);
+                assert_eq!(fs, fg, "seed {seed} step {k}");
+                assert_eq!(
+                    format!("{:?}", short.entities()),
+                    format!("{:?}", general.entities()),
+                    "seed {seed} step {k}"
+                );
+                let models = format!("{:?}", ts.walk().1);
+                assert_eq!(models, format!("{:?}", tg.walk().1), "seed {seed} step {k}");
+                let c = &ts.stage.commanded;
+                alone += c
+                    .iter()
+                    .filter(|c| c.merged == Commanded::ACCELERATION)
+                    .count();
+                changed += ts
+                    .stage
+                    .merged
+                    .iter()
+                    .filter(|(_, m)| matches!(m.lateral, Some(Lateral::ChangeLane(_))))
+                    .count();
+                // The general merge keeps no command as an acceleration alone.
+                assert!(tg
+                    .stage
+                    .commanded
+                    .iter()
+                    .all(|c| c.merged != Commanded::ACCELERATION));
+            }
+            for i in 0..n {
+                assert_eq!(
+                    format!("{:?}", ts.of(i).map(|c| (c.lane_change, c.steered))),
+                    format!("{:?}", tg.of(i).map(|c| (c.lane_change, c.steered))),
+                    "seed {seed} entity {i}"
+                );
+            }
+        }
+        assert!(alone > 20_000, "{alone} accelerations alone");
+        assert!(changed > 50, "{changed} lane changes merged");
+    }
 }

@@ -24,7 +24,7 @@
 use opendrive::Real;
 use scenario::ControllerDomains;
 
-use super::command::{Controller, Merged};
+use super::command::{Commanded, Controller, Merged};
 use super::drivers::{DriverModel, Drivers, Instance, Model, Run, Runs};
 use super::external_input::ExternalInput;
 use super::one_gap::Change;
@@ -155,13 +155,17 @@ struct Noting {
 }
 
 /// What the controllers stage rebuilds each step, kept so that a step allocates nothing once
-/// it has grown: the lane index, the merged commands and the threads' storage.
+/// it has grown: the lane index, the commands and the threads' storage.
 #[derive(Debug, Default)]
 pub(crate) struct StageStorage {
     /// The lane index of the step.
     pub index: LaneIndex,
-    /// The merged commands of the step: (entity index, command) in increasing entity index,
-    /// for the entities a controller gave one (not a slot per entity, written each step).
+    /// The commanded entities of the step in increasing entity index (not a slot per entity,
+    /// written each step), each an acceleration alone or the place of its merged command
+    /// (command.rs [`Commanded`]).
+    pub commanded: Vec<Commanded>,
+    /// The merged commands of the step that are more than an acceleration alone: (entity
+    /// index, command) in increasing entity index.
     pub merged: Vec<(usize, Merged)>,
     /// The driver models' commands worked out on threads (parallel.rs).
     pub parallel: ParallelCommands,
