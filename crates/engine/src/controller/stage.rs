@@ -98,6 +98,8 @@ fn walk<const SHORTCUT: bool>(
         // Entity indices and places of merged commands fit in u32: entity ids are u32.
         let at = |i: usize| i as u32;
         let mut rest = runs;
+        // The short way's view of a driver model (no host input), moved along.
+        let mut moving: Option<ControllerView<'_>> = None;
         while let Some((first, after)) = rest.split_first() {
             let i = first.entity;
             // The short way: a driver model is the entity's only run.
@@ -107,19 +109,32 @@ fn walk<const SHORTCUT: bool>(
                 after.first().is_some_and(|r| r.entity == i),
             ) {
                 rest = after;
-                // Whether the entity is placed, from the driver inputs the index copied (a
-                // line of the compact table, not of the 1.3 kB entity:
-                // store/driver_inputs.rs), as below.
-                let Some(view) = at_start.view(i) else {
+                // Whether the entity is placed, as below.
+                let (Some(e), Some(input)) = (entities.get(i), index.input(i).filter(|r| r.placed))
+                else {
                     continue;
                 };
+                let model = &mut drivers[k];
                 let (a, lane) = if threaded {
                     parallel.command(k)
                 } else {
-                    drivers[k].command(&view)
+                    // One view moved from entity to entity: a view is 9 values.
+                    let view = match &mut moving {
+                        Some(view) => {
+                            view.move_to(e, input);
+                            view
+                        }
+                        None => moving.insert(
+                            ControllerView::new(
+                                time, e, input, entities, network, index, None, signals,
+                            )
+                            .stepping(dt),
+                        ),
+                    };
+                    model.command(view)
                 };
                 let held = first.held;
-                let lateral = driver_lateral(held.lateral, held.lateral, lane, &drivers[k]);
+                let lateral = driver_lateral(held.lateral, held.lateral, lane, model);
                 match (held.longitudinal, lateral.flatten()) {
                     (true, None) => commanded.push(Commanded {
                         entity: at(i),

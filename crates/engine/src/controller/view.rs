@@ -140,6 +140,16 @@ impl<'a> ControllerView<'a> {
         self
     }
 
+    /// The same view of another entity, `entity` with its driver inputs `input` (as
+    /// [`new`](Self::new)): the controllers stage moves one view along its walk instead of
+    /// building one per entity and step (issue 31).
+    #[inline]
+    pub(crate) fn move_to(&mut self, entity: &'a Entity, input: &'a DriverInput) {
+        debug_assert_eq!(input.id, entity.id, "the inputs are the entity's");
+        self.entity = entity;
+        self.input = input;
+    }
+
     /// The length of the step the view is of (s): the controllers stage's; 0 where the view
     /// is not of a step (at an activation, in a test), where a driver model cuts no step's
     /// free-road term to end at a speed (car_following.rs, "A rate toward a speed").
