@@ -12,10 +12,11 @@
 //! (`maxAcceleration`, `maxDeceleration`) and integrated ballistically (the speed stops at 0,
 //! models::idm); the distance travelled then follows the lane as the default controller does,
 //! through route, lane changes and links. A lane change command starts the same lateral
-//! transition the route's lane changes use. A curvature moves the entity along an arc off its
+//! transition the route's lane changes use, over its whole length where the lane it goes to
+//! links onto the next road (world/lane_change.rs `room_for`). A curvature moves the entity along an arc off its
 //! lane track (its road position looked up after the move); a pose places it.
 
-use opendrive::{Direction, Real, RoadNetwork};
+use opendrive::{Real, RoadNetwork};
 
 use super::command::{Command, Commanded, Lateral, Longitudinal, Merged};
 use super::default::{measure, move_entity};
@@ -30,7 +31,9 @@ use crate::models::single_track::arc_step;
 use crate::store::lane_index::LaneIndex;
 use crate::store::World;
 use crate::world::finite::all_finite;
-use crate::world::lane_change::{begin as begin_route_lane_change, step as step_route_lane_change};
+use crate::world::lane_change::{
+    begin as begin_route_lane_change, room_for, step as step_route_lane_change,
+};
 use crate::world::Entity;
 
 /// Stage 3: commands, then moves (module doc). Returns whether every placed entity's state
@@ -382,12 +385,7 @@ fn apply(net: &RoadNetwork, e: &mut Entity, ctrl: &mut EntityControllers, m: &Me
     if let Some(track) = e.track.as_mut() {
         if let Some(Lateral::ChangeLane(lane)) = m.lateral {
             let speed = motion.map_or(e.speed, |(v, _)| v);
-            let room = net
-                .road(&track.road_id)
-                .map_or(0.0, |r| match track.direction {
-                    Direction::Forward => r.length - track.s,
-                    Direction::Backward => track.s,
-                });
+            let room = room_for(net, track, lane);
             ctrl.lane_change = begin_route_lane_change(net, track, lane, speed, e.odometer, room);
         }
         if let Some(change) = ctrl.lane_change {

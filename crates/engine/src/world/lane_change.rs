@@ -7,7 +7,9 @@
 //! speed v the lateral acceleration is v²·y″(x) = Δ·v²·(6 − 12u)/D², largest at the ends:
 //! 6·Δ·v²/D². So D = v·√(6·Δ/a), a duration of √(6·Δ/a) whatever the speed: 4.58 s for a
 //! 3.5 m lane. The change starts as soon as the route needs it and ends, at the latest, where
-//! the road does (shorter, and so sharper, when less road is left).
+//! the road does (shorter, and so sharper, when less road is left). A driver model's change
+//! (controller/stage.rs) takes its whole length where the lane it goes to links onto the next
+//! road, going on across the link ([`room_for`]).
 //!
 //! The lateral position is the blend of the two lanes' centres that LaneChangeAction uses
 //! ([`Blend`]), so lane width changes along the way are followed.
@@ -37,6 +39,29 @@ pub struct RouteLaneChange {
 /// The distance (m) of a lane change moving `delta` m sideways at `speed` m/s (module doc).
 pub fn change_length(delta: Real, speed: Real) -> Real {
     speed.abs() * (6.0 * delta.abs() / MAX_LATERAL_ACCELERATION).sqrt()
+}
+
+/// The road a driver model's lane change into lane `lane` may take (m): unbounded where
+/// `lane`, at the end of `track`'s road in its direction of travel, links onto a lane of the
+/// next road (OpenDRIVE 1.8 §11.5 lane linkage), since a transition in progress goes on across
+/// the link (world/lanes.rs `advance`); else the rest of the road, as a route's change has.
+/// A change begun 5 m before the road's end at 20 m/s took those 5 m before: 3.5 m sideways
+/// in a quarter of a second (engine tests controller/user_controllers.rs
+/// `a_driver_models_change_runs_its_length_across_a_road_link`).
+pub(crate) fn room_for(net: &RoadNetwork, track: &LaneTrack, lane: i32) -> Real {
+    let road = net.road_at(track.road);
+    let (rest, end) = match track.direction {
+        opendrive::Direction::Forward => (road.length - track.s, road.length),
+        opendrive::Direction::Backward => (track.s, 0.0),
+    };
+    let links_on = net
+        .lane_handle_on(track.road, lane, end)
+        .is_some_and(|h| !net.successors(h).is_empty());
+    if links_on {
+        Real::INFINITY
+    } else {
+        rest
+    }
 }
 
 /// Starts moving `track` into lane `lane` (keeping its offset from the lane centre) over the

@@ -620,6 +620,41 @@ fn mobil_changes_from_one_lane_into_one_gap_the_one_behind_weighs_the_one_ahead(
     assert_eq!(overlaps(&rows), 0);
 }
 
+/// A driver model's lane change begun just before its road's end runs its whole length
+/// across the road link (engine world/lane_change.rs `room_for`): mobil_change_at_road_end.xosc,
+/// Left (mobil) at its desired 20 m/s (IDM free road: a = 0.73·(1 − 1⁴) = 0, the speed stays)
+/// in lane −1 at s = 95 of road 1, which ends at s = 100 and whose lanes link onto road 2's
+/// (two_roads_2lanes.xodr). MOBIL's keep-right bias takes it into lane −2 in the first step;
+/// the change is the cubic over D = v·√(6Δ/a) = 20·√(6·3.5/1) = 91.6515 m (world/lane_change.rs
+/// module doc), progress p = 20·t/D = t/√21 by the end of the frame at t, lateral position
+/// −1.75 − 3.5·(3p² − 2p³): −1.780113 at 0.25 s (p = 0.054554), −2.177261 at 1 s on road 2 at
+/// s = 95 + 20 − 100 = 15 (p = 0.218218), −3.168086 at 2 s (s = 35), −5.249472 at 4.55 s, and
+/// lane −2's centre −5.25 from 4.6 s (p ≥ 1). Before, the change was squeezed into the 5 m
+/// left of road 1: 3.5 m sideways by 0.25 s.
+#[test]
+fn a_driver_models_change_runs_its_length_across_a_road_link() {
+    let (rows, _) = run("mobil_change_at_road_end.xosc");
+    for (time, s, t) in [
+        (1.0, Some(15.0), -2.177_260_703),
+        (2.0, Some(35.0), -3.168_085_626),
+        (0.25, None, -1.780_113_448),
+        (4.55, Some(86.0), -5.249_471_927),
+        (4.6, Some(87.0), -5.25),
+    ] {
+        let r = rows.at("Left", time);
+        assert!((r.t - t).abs() < 1e-6, "{r:?}: t {t}");
+        // On road 2: s is 95 + 20·t − 100 less what the path's sideways share takes of the
+        // 20 m/s, at most ∫(1/cos θ − 1) over the change: tan θ ≤ 3.5·1.5/91.65 = 0.0573 at
+        // its middle, so under 0.0017 per metre, 0.16 m over the 91.65 m.
+        if let Some(s) = s {
+            assert!(r.s <= s + 1e-9 && r.s > s - 0.16, "{r:?}: s {s}");
+        }
+        // The lane is the one the position is in: −1 down to t = −3.5.
+        assert_eq!(r.lane, if r.t > -3.5 { -1 } else { -2 }, "{r:?}");
+        assert_eq!(r.speed, 20.0, "{r:?}");
+    }
+}
+
 /// A storyboard LaneChangeAction and a driver model's change into one gap (engine
 /// controller/one_gap.rs; found-not-fixed item 5: the lane index enters the action's car in
 /// its new lane only once its box reaches it, store/lane_index.rs): mobil_one_gap_action.xosc,
