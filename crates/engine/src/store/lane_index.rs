@@ -33,8 +33,9 @@
 //! (store/lane_slots.rs), no road id is hashed, and the step allocates nothing once the
 //! vectors have grown (issue 31). An entity whose road, lane section, box t-range and kept
 //! borders did not change keeps its entries and lane handle of the last step, only their
-//! s-range new, and each lane's order is repaired by insertion (store/lane_kept.rs, which says
-//! why the answers are a full build's, and checks it in debug builds).
+//! s-range new (and only its footprint's s, s-range and speed written), and each lane's order
+//! is checked and repaired by insertion (store/lane_kept.rs, which says why the answers are a
+//! full build's, and checks it in debug builds).
 //!
 //! **Hints.** A search starts with the index of the first entry not before its start point
 //! (`partition_point`). The driver models ask the same questions of the same entity every
@@ -60,10 +61,10 @@
 use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::Arc;
 
-use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork};
+use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork, RoadPosition};
 
 use super::driver_inputs::DriverInput;
-use super::lane_kept::{entry_order, repair_order, Entry, Kept};
+use super::lane_kept::{bounds, entry_order, order_and_bounds, Entry, Kept};
 use super::lane_slots::{LaneBorders, LaneSlots};
 use crate::world::entity::{Entity, EntityId};
 use crate::world::zero_angle;
@@ -78,7 +79,7 @@ const ON_ROAD: Real = 0.5;
 pub(super) const MAX_HOPS: usize = 64;
 
 /// Where an entity's bounding box lies on its road.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Footprint {
     /// The lane holding the reference point.
     pub handle: LaneHandle,
@@ -191,7 +192,6 @@ type LookedUp = (RoadHandle, i32, Real, LaneHandle);
 /// The per-lane index of one step (module doc).
 #[derive(Debug, Default)]
 pub struct LaneIndex {
-    pub(super) footprints: Vec<Option<Footprint>>,
     /// The network's lane numbering (made at the first build on a network).
     slots: Option<LaneSlots>,
     /// By slot; only the slots in `touched` have entries.
@@ -203,7 +203,8 @@ pub struct LaneIndex {
     hints: Vec<AtomicU32>,
     /// The driver models' inputs, by entity index (store/driver_inputs.rs).
     pub(super) inputs: Vec<Option<DriverInput>>,
-    /// By entity index: what this step keeps for the next (store/lane_kept.rs).
+    /// By entity index: its footprint and what this step keeps for the next
+    /// (store/lane_kept.rs).
     pub(super) kept: Vec<Kept>,
     /// The entries made anew in this step's walk, by slot, before they join their lanes.
     pub(super) pending: Vec<(usize, Entry)>,
@@ -213,6 +214,42 @@ pub struct LaneIndex {
     /// The index of the same step built in full, to check this one against (debug builds).
     #[cfg(debug_assertions)]
     full: Option<Box<LaneIndex>>,
+}
+
+/// Where `e` stands to be entered (module doc "Footprints"): its road position, where it is
+/// placed, visible to traffic and within [`ON_ROAD`] of a road of `net`; that road, taken by
+/// the handle the position carries (the world's network made it), not by its id: no look-up,
+/// no read of the id string; and the handle (road, the lane section at s, the position's lane).
+#[inline(always)]
+fn standing<'a>(
+    net: &'a RoadNetwork,
+    e: &'a Entity,
+) -> Option<(&'a RoadPosition, &'a Road, LaneHandle)> {
+    if !e.placed || !e.visibility.traffic {
+        return None;
+    }
+    let rp = e
+        .road_position
+        .as_ref()
+        .filter(|rp| rp.distance <= ON_ROAD)?;
+    let road = net.roads().get(rp.road.index())?;
+    let handle = LaneHandle {
+        road: rp.road.0,
+        section: road.lane_section_index(rp.s) as u32,
+        lane: rp.lane_id,
+    };
+    Some((rp, road, handle))
+}
+
+/// The velocity component of `e` along +s (m/s) where its heading relative to the road's +s is
+/// `rel`: its speed signed by its lane track's direction, else projected.
+#[inline(always)]
+fn speed_along_s(e: &Entity, rel: Real) -> Real {
+    match &e.track {
+        Some(track) if track.direction == Direction::Forward => e.speed,
+        Some(_) => -e.speed,
+        None => e.speed * rel.cos(),
+    }
 }
 
 /// The s- and t-ranges of `e`'s box on a road where its reference point is at (s, t) and its
@@ -303,9 +340,6 @@ impl LaneIndex {
 
     /// Sizes the per-entity rows for `n` entities and empties the pending entries.
     pub(super) fn fit(&mut self, n: usize) {
-        if self.footprints.len() != n {
-            self.footprints.resize(n, None);
-        }
         if self.kept.len() != n {
             self.kept.resize(n, Kept::NONE);
         }
@@ -342,7 +376,7 @@ impl LaneIndex {
                 }
                 match kept.get(i) {
                     Some(k) if k.stays => {
-                        (e.lo, e.hi) = k.s_range;
+                        (e.lo, e.hi) = k.footprint.s_range;
                         true
                     }
                     _ => false,
@@ -364,19 +398,14 @@ impl LaneIndex {
                 lane.listed = false;
                 return false;
             }
-            if keep {
-                repair_order(&mut lane.entries);
+            (lane.max_len, lane.unordered) = if keep {
+                order_and_bounds(&mut lane.entries)
             } else {
                 // (lo, id) orders the entries of a lane totally (an entity is entered in a
                 // lane once), so the unstable sort gives the one order there is.
                 lane.entries.sort_unstable_by(entry_order);
-            }
-            let (mut max_len, mut unordered) = (0.0, false);
-            for e in &lane.entries {
-                max_len = Real::max(max_len, e.hi - e.lo);
-                unordered |= e.lo.is_nan();
-            }
-            (lane.max_len, lane.unordered) = (max_len, unordered);
+                bounds(&lane.entries)
+            };
             true
         });
     }
@@ -384,78 +413,111 @@ impl LaneIndex {
     /// Enters `e` in the index and keeps its footprint (module doc), when it is placed, visible
     /// to traffic and on a road; returns the lane look-up made for its footprint: road, lane,
     /// s and the handle found. With `keep`, its entries and handle of the last step stay where
-    /// they are the same (store/lane_kept.rs).
+    /// they are the same (store/lane_kept.rs): [`stay`](Self::stay) first, else
+    /// [`enter_anew`](Self::enter_anew).
+    #[inline(always)]
     fn enter(&mut self, net: &Arc<RoadNetwork>, e: &Entity, keep: bool) -> Option<LookedUp> {
+        if keep {
+            if let Some(looked_up) = self.stay(net, e) {
+                return Some(looked_up);
+            }
+        }
+        self.enter_anew(net, e, keep)
+    }
+
+    /// The common case of [`enter`](Self::enter) with `keep`: `e`'s entries of the last step
+    /// stay, its handle and lanes are the last step's, and only its footprint's s, s-range
+    /// and speed and the row's `stays` are written (the row's other fields hold the values
+    /// [`enter_anew`](Self::enter_anew) would write again: the same handle, t-range bits,
+    /// section and borders, `entered` and `lanes`). `None`, writing nothing, where that is
+    /// not so. The tests are `enter_anew`'s, in the order the row makes cheapest: `lanes` was
+    /// set only on a road of no junction (`plain`), and the road is the one of the row's
+    /// handle on the same network (another network empties the rows), so that road is still
+    /// plain; the row's handle equal to (road, the section at s, lane) is `enter_anew`'s
+    /// condition for keeping it, and its section the section of the row's lanes.
+    #[inline(always)]
+    fn stay(&mut self, net: &Arc<RoadNetwork>, e: &Entity) -> Option<LookedUp> {
+        let i = e.id.index();
+        let row = self.kept.get(i).filter(|row| row.lanes)?;
+        let (rp, _, handle) = standing(net, e)?;
+        let (road_handle, section) = (rp.road, handle.section);
+        if row.footprint.handle != handle || row.section != section {
+            return None;
+        }
+        let (s_range, t_range) = box_ranges(e, rp.s, rp.t, rp.relative_heading);
+        let t_was = row.footprint.t_range;
+        if (t_was.0.to_bits(), t_was.1.to_bits()) != (t_range.0.to_bits(), t_range.1.to_bits())
+            || self.borders.holds(road_handle, section, rp.s) != Some(row.borders)
+        {
+            return None;
+        }
+        let speed_s = speed_along_s(e, rp.relative_heading);
+        let row = &mut self.kept[i];
+        row.footprint.s = rp.s;
+        row.footprint.s_range = s_range;
+        row.footprint.speed_s = speed_s;
+        row.stays = true;
+        Some((road_handle, rp.lane_id, rp.s, handle))
+    }
+
+    /// [`enter`](Self::enter) in full: each row written once, the new one, or nothing kept
+    /// where `e` is not entered. Out of line: the entities that take it are few in a step
+    /// (those changing lanes, entered anew, or off the road), and [`stay`](Self::stay), with
+    /// fewer values live, is what the moves' walk runs.
+    #[inline(never)]
+    fn enter_anew(&mut self, net: &Arc<RoadNetwork>, e: &Entity, keep: bool) -> Option<LookedUp> {
         let i = e.id.index();
         let was = if keep { self.kept[i] } else { Kept::NONE };
-        // Each row written once: the new one, or nothing kept where `e` is not entered.
         match self.entered(net, e, was) {
-            Some((now, footprint, looked_up)) => {
+            Some((now, looked_up)) => {
                 self.kept[i] = now;
-                self.footprints[i] = Some(footprint);
                 Some(looked_up)
             }
             None => {
                 self.kept[i] = Kept::NONE;
-                self.footprints[i] = None;
                 None
             }
         }
     }
 
-    /// The body of [`enter`](Self::enter) given the kept row `was` of the last step (or
-    /// [`Kept::NONE`]): makes `e`'s entries and returns its new kept row, its footprint and
-    /// the look-up, or `None` where it is not entered. Reads neither row of `e`: `enter`
-    /// writes them once with the outcome.
+    /// The body of [`enter_anew`](Self::enter_anew) given the kept row `was` of the last step
+    /// (or [`Kept::NONE`]): makes `e`'s entries and returns its new kept row with its
+    /// footprint, and the look-up, or `None` where it is not entered. Reads no row of `e`:
+    /// `enter_anew` writes it once with the outcome.
     #[inline(always)]
     fn entered(
         &mut self,
         net: &Arc<RoadNetwork>,
         e: &Entity,
         was: Kept,
-    ) -> Option<(Kept, Footprint, LookedUp)> {
-        if !e.placed || !e.visibility.traffic {
-            return None;
-        }
-        let rp = e
-            .road_position
-            .as_ref()
-            .filter(|rp| rp.distance <= ON_ROAD)?;
-        // The road by the handle the position carries (the world's network made it), not
-        // by its id: no look-up, no read of the id string.
-        let road_handle = rp.road;
-        let road = net.roads().get(road_handle.index())?;
+    ) -> Option<(Kept, LookedUp)> {
+        let (rp, road, same_handle) = standing(net, e)?;
+        let (road_handle, section) = (rp.road, same_handle.section);
         let (s_range, t_range) = box_ranges(e, rp.s, rp.t, rp.relative_heading);
-        let speed_s = match &e.track {
-            Some(track) if track.direction == Direction::Forward => e.speed,
-            Some(_) => -e.speed,
-            None => e.speed * rp.relative_heading.cos(),
-        };
-        let section = road.lane_section_index(rp.s) as u32;
-        let same_handle = LaneHandle {
-            road: road_handle.0,
-            section,
-            lane: rp.lane_id,
-        };
-        let handle = if was.has_handle && was.handle == same_handle {
-            was.handle
+        let speed_s = speed_along_s(e, rp.relative_heading);
+        let handle = if was.entered && was.footprint.handle == same_handle {
+            was.footprint.handle
         } else {
             net.lane_handle_on(road_handle, rp.lane_id, rp.s)?
         };
-        let t_bits = (t_range.0.to_bits(), t_range.1.to_bits());
+        let t_was = was.footprint.t_range;
         let plain = road.junction.is_none();
         let stays = plain
             && was.lanes
-            && was.handle.road == road_handle.0
+            && was.footprint.handle.road == road_handle.0
             && was.section == section
-            && was.t_range == t_bits
+            && (t_was.0.to_bits(), t_was.1.to_bits()) == (t_range.0.to_bits(), t_range.1.to_bits())
             && self.borders.holds(road_handle, section, rp.s) == Some(was.borders);
         let mut now = Kept {
-            s_range,
-            t_range: t_bits,
-            handle,
+            footprint: Footprint {
+                handle,
+                s: rp.s,
+                s_range,
+                t_range,
+                speed_s,
+            },
             section,
-            has_handle: true,
+            entered: true,
             stays,
             ..was
         };
@@ -467,14 +529,7 @@ impl LaneIndex {
             now.lanes = plain && borders.is_some();
             now.borders = borders.unwrap_or(0);
         }
-        let footprint = Footprint {
-            handle,
-            s: rp.s,
-            s_range,
-            t_range,
-            speed_s,
-        };
-        Some((now, footprint, (road_handle, rp.lane_id, rp.s, handle)))
+        Some((now, (road_handle, rp.lane_id, rp.s, handle)))
     }
 
     /// Enters `id` with footprint `s_range` × `t_range` in every lane of `road`'s section
@@ -609,10 +664,14 @@ impl LaneIndex {
                 .map(f64::to_bits),
             )
         };
-        assert_eq!(kept.footprints.len(), full.footprints.len(), "footprints");
-        for (i, (k, f)) in kept.footprints.iter().zip(&full.footprints).enumerate() {
+        assert_eq!(kept.kept.len(), full.kept.len(), "footprints");
+        for i in 0..full.kept.len() {
+            let (k, f) = (
+                kept.footprint(EntityId(i as u32)),
+                full.footprint(EntityId(i as u32)),
+            );
             assert!(
-                k.as_ref().map(footprint) == f.as_ref().map(footprint),
+                k.map(footprint) == f.map(footprint),
                 "entity {i}'s kept footprint {k:?} is not the full build's {f:?}"
             );
         }
@@ -663,8 +722,10 @@ impl LaneIndex {
     }
 
     /// The footprint of entity `id` in this step, if it stands on a road.
+    #[inline]
     pub fn footprint(&self, id: EntityId) -> Option<&Footprint> {
-        self.footprints.get(id.index())?.as_ref()
+        let row = self.kept.get(id.index())?;
+        row.entered.then_some(&row.footprint)
     }
 
     /// Whether some entity other than `exclude` has a footprint in lane `h` overlapping the
@@ -1218,7 +1279,7 @@ mod tests {
         );
         for (world, expected) in [(&w3, false), (&w, true)] {
             let index = LaneIndex::build(&world.network, world.entities());
-            let me = index.footprint(EntityId(0)).expect("on road").clone();
+            let me = *index.footprint(EntityId(0)).expect("on road");
             assert_eq!((me.s_range.0, me.s_range.1), (9.0, 14.0));
             let beside = LaneHandle {
                 lane: -2,

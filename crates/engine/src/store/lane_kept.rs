@@ -19,11 +19,20 @@
 //! k now, the section at s holds the lane (the last look-up found it there), so the look-up
 //! gives that handle again: it is kept.
 //!
+//! **What is written.** The kept row holds the entity's footprint too (one row per entity,
+//! read by the step's end and by the questions). An entity whose entries stay has the same
+//! handle, t-range bits, section and borders as the last step, so only its footprint's s,
+//! s-range and speed and the row's `stays` are written (`LaneIndex::stay`, the common case, in
+//! line); any other entity takes the full way out of line (`LaneIndex::enter_anew`), which
+//! writes the whole row once.
+//!
 //! **The order.** The entries of a lane are sorted by (lo, id), a total order (`total_cmp`,
 //! an entity once per lane), so any correct sort gives the one order there is. Vehicles in a
 //! lane keep their order from step to step but for the few that change lanes or pass through,
-//! so the list is repaired by insertion (linear on a sorted list) and sorted in full when the
-//! repair would move more than a few entries per entry ([`repair_order`]).
+//! so the list is checked in one pass that folds the lane's bounds as it goes, each pair by
+//! the plain `<` of their lo first ([`order_and_bounds`]), and where it is out of order
+//! repaired by insertion from the first entry out of place and sorted in full when the repair
+//! would move more than a few entries per entry ([`repair_order`]).
 //!
 //! **Checked.** In debug builds (every `cargo test`) each kept index is compared, after every
 //! step, with a full build of the same step kept beside it (`LaneIndex::assert_same_as`): the
@@ -34,6 +43,7 @@ use std::cmp::Ordering;
 
 use opendrive::{LaneHandle, Real};
 
+use super::lane_index::Footprint;
 use crate::world::entity::EntityId;
 
 /// One entity's footprint in one lane: the s-range of its box, by lo.
@@ -44,46 +54,50 @@ pub(super) struct Entry {
     pub id: EntityId,
 }
 
-/// What the index keeps of one entity from one step to the next (module doc), in one row of
-/// 56 bytes: the step's end reads only this row for each entry (its `stays` and `s_range`).
+/// What the index keeps of one entity from one step to the next (module doc), with its
+/// footprint, in one row of 80 bytes: the step's end reads only this row for each entry (its
+/// `stays` and the footprint's `s_range`), and an entity that stays writes only the fields
+/// that moved (its footprint's s, s-range and speed, and `stays`; `LaneIndex::enter`).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Kept {
-    /// The s-range of the entity's box in this step: its staying entries take it.
-    pub s_range: (Real, Real),
-    /// The bits of the t-range of the box its lanes were decided for (with `lanes`).
-    pub t_range: (u64, u64),
-    /// The handle the road position's lane look-up found (with `has_handle`); its road is the
-    /// road of the lanes.
-    pub handle: LaneHandle,
+    /// The entity's footprint in this step (with `entered`): its s-range is the one its
+    /// staying entries take, its t-range the one its lanes were decided for (with `lanes`),
+    /// its handle the one the road position's lane look-up found, whose road is the road of
+    /// the lanes.
+    pub footprint: Footprint,
     /// The section at s the lanes were decided in (with `lanes`).
     pub section: u32,
     /// The generation of the kept borders the lanes were decided by (with `lanes`).
     pub borders: u32,
-    /// `handle` holds.
-    pub has_handle: bool,
-    /// Its entries are in lanes of its own road decided by kept borders: `t_range`,
-    /// `section` and `borders` hold.
+    /// The entity is entered in this step: `footprint` holds.
+    pub entered: bool,
+    /// Its entries are in lanes of its own road decided by kept borders: `footprint`'s
+    /// t-range, `section` and `borders` hold.
     pub lanes: bool,
     /// Its entries of the last step stay in this step (only their s-range is new).
     pub stays: bool,
 }
 
 // The row's size as its doc says.
-const _: () = assert!(std::mem::size_of::<Kept>() == 56);
+const _: () = assert!(std::mem::size_of::<Kept>() == 80);
 
 impl Kept {
     /// Nothing kept: an entity not on the road, or a full build.
     pub const NONE: Kept = Kept {
-        s_range: (0.0, 0.0),
-        t_range: (0, 0),
-        handle: LaneHandle {
-            road: 0,
-            section: 0,
-            lane: 0,
+        footprint: Footprint {
+            handle: LaneHandle {
+                road: 0,
+                section: 0,
+                lane: 0,
+            },
+            s: 0.0,
+            s_range: (0.0, 0.0),
+            t_range: (0.0, 0.0),
+            speed_s: 0.0,
         },
         section: 0,
         borders: 0,
-        has_handle: false,
+        entered: false,
         lanes: false,
         stays: false,
     };
@@ -99,14 +113,59 @@ pub(super) fn entry_order(a: &Entry, b: &Entry) -> Ordering {
 /// full instead.
 const MOVES_PER_ENTRY: usize = 4;
 
-/// Sorts `entries` by [`entry_order`]: by insertion from the list as it is (the last step's
-/// order with the new s-ranges, the new entries at the end), and in full when that would move
-/// entries more than [`MOVES_PER_ENTRY`] places each on the whole.
-pub(super) fn repair_order(entries: &mut [Entry]) {
+/// Whether `a` comes after `b` in [`entry_order`], with the plain comparison first: where
+/// `a.lo < b.lo` (false when either is NaN) the two are numbers in increasing order, and
+/// `total_cmp` orders numbers as `<` does (it only adds −0 before +0, which `<` calls equal,
+/// and places NaN), so `entry_order` is `Less`; only where it fails is the full order asked.
+/// On a lane in order (nearly every lane at nearly every step) that is one comparison per entry
+/// where `entry_order` took a dozen instructions (issue 31).
+#[inline(always)]
+fn after(a: &Entry, b: &Entry) -> bool {
+    if a.lo < b.lo {
+        return false;
+    }
+    entry_order(a, b) == Ordering::Greater
+}
+
+/// Sorts `entries` by [`entry_order`], repairing by insertion the list as it is (the last
+/// step's order with the new s-ranges, the new entries at the end), and returns the lane's
+/// bounds ([`bounds`] of the sorted list). A list already in order is checked and its bounds
+/// folded in one pass: the fold meets the entries in the order they stay in, so its bits are
+/// those of [`bounds`] after the sort. Elsewhere the list is repaired from the first entry out
+/// of order ([`repair_order`]) and the bounds are folded anew.
+pub(super) fn order_and_bounds(entries: &mut [Entry]) -> (Real, bool) {
+    let (mut max_len, mut unordered) = (0.0, false);
+    for i in 0..entries.len() {
+        if i > 0 && after(&entries[i - 1], &entries[i]) {
+            repair_order(entries, i);
+            return bounds(entries);
+        }
+        let e = &entries[i];
+        max_len = Real::max(max_len, e.hi - e.lo);
+        unordered |= e.lo.is_nan();
+    }
+    (max_len, unordered)
+}
+
+/// A lane's bounds: its longest footprint (hi − lo, folded from 0 in the list's order) and
+/// whether some lo is NaN (`LaneEntries::max_len`, `LaneEntries::unordered`).
+pub(super) fn bounds(entries: &[Entry]) -> (Real, bool) {
+    let (mut max_len, mut unordered) = (0.0, false);
+    for e in entries {
+        max_len = Real::max(max_len, e.hi - e.lo);
+        unordered |= e.lo.is_nan();
+    }
+    (max_len, unordered)
+}
+
+/// Sorts `entries`, whose first `from` are in [`entry_order`], by insertion from entry `from`
+/// on, and in full when that would move entries more than [`MOVES_PER_ENTRY`] places each on
+/// the whole. (lo, id) is a total order, so either way the list is the one sorted list.
+pub(super) fn repair_order(entries: &mut [Entry], from: usize) {
     let mut budget = MOVES_PER_ENTRY * entries.len() + 16;
-    for i in 1..entries.len() {
+    for i in from.max(1)..entries.len() {
         let mut j = i;
-        while j > 0 && entry_order(&entries[j - 1], &entries[j]) == Ordering::Greater {
+        while j > 0 && after(&entries[j - 1], &entries[j]) {
             if budget == 0 {
                 entries.sort_unstable_by(entry_order);
                 return;
@@ -133,21 +192,33 @@ pub(super) mod tests {
         }
     }
 
-    /// The repair gives the order of a full sort, from nearly sorted lists (a few entries out
-    /// of place, new ones at the end) and from lists in no order at all (the fallback), with
-    /// repeated lo, −0 and +0, NaN and infinities.
+    /// The repair gives the order of a full sort and the bounds folded over it, bit for bit,
+    /// from nearly sorted lists (a few entries out of place, new ones at the end) and from
+    /// lists in no order at all (the fallback), with repeated lo, −0 and +0, NaN and
+    /// infinities, and lengths of +0 and −0 (hi −0 over lo +0: `max` of ±0 depends on the
+    /// fold's order, so the bounds must be folded in the sorted order).
     #[test]
     fn the_repaired_order_is_the_sorted_order() {
         let mut next = generator(0x9e37_79b9_7f4a_7c15);
-        let specials = [0.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY];
+        let specials = [
+            0.0,
+            -0.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            -f64::NAN,
+        ];
         let mut checked = 0;
         for n in [0usize, 1, 2, 3, 10, 64, 500] {
             for disorder in [0usize, 1, 3, n / 2, n] {
                 let mut entries: Vec<Entry> = (0..n)
-                    .map(|i| Entry {
-                        lo: (next() * 50.0).round() * 0.5,
-                        hi: 0.0,
-                        id: EntityId(i as u32),
+                    .map(|i| {
+                        let lo = (next() * 50.0).round() * 0.5;
+                        Entry {
+                            lo,
+                            hi: lo + [4.5, 0.0, 12.0][i % 3],
+                            id: EntityId(i as u32),
+                        }
                     })
                     .collect();
                 entries.sort_unstable_by(entry_order);
@@ -158,17 +229,64 @@ pub(super) mod tests {
                     } else {
                         entries[i].lo + (next() - 0.5) * 20.0
                     };
+                    if k % 5 == 2 {
+                        (entries[i].lo, entries[i].hi) = (0.0, -0.0);
+                    }
                 }
-                let mut expected = entries.clone();
-                expected.sort_unstable_by(entry_order);
-                repair_order(&mut entries);
-                let bits = |v: &[Entry]| -> Vec<(u64, u32)> {
-                    v.iter().map(|e| (e.lo.to_bits(), e.id.0)).collect()
-                };
-                assert_eq!(bits(&entries), bits(&expected), "n {n} disorder {disorder}");
-                checked += 1;
+                checked += check(entries);
             }
         }
         assert_eq!(checked, 35);
+        // Neighbours the plain comparison cannot order: −0 before +0 and after it, equal lo
+        // with ids in and out of order, NaN of either sign, infinities; lengths −0 and +0 in
+        // both orders (max(+0, −0) and max(−0, +0)).
+        let e = |lo: Real, hi: Real, id: u32| Entry {
+            lo,
+            hi,
+            id: EntityId(id),
+        };
+        let nan = f64::NAN;
+        let lists = [
+            vec![e(-0.0, 4.0, 1), e(0.0, 4.0, 0)],
+            vec![e(0.0, 4.0, 0), e(-0.0, 4.0, 1)],
+            vec![e(1.0, 5.0, 2), e(1.0, 5.0, 1), e(1.0, 5.0, 3)],
+            vec![e(1.0, 5.0, 0), e(nan, 5.0, 1), e(2.0, 5.0, 2)],
+            vec![e(-nan, 5.0, 0), e(1.0, 5.0, 1), e(nan, 5.0, 2)],
+            vec![e(1.0, 5.0, 1), e(-nan, 5.0, 0)],
+            vec![e(f64::NEG_INFINITY, 0.0, 0), e(0.0, f64::INFINITY, 1)],
+            vec![e(0.0, -0.0, 0), e(0.0, 0.0, 1)],
+            vec![e(0.0, 0.0, 1), e(0.0, -0.0, 0)],
+            vec![e(0.0, -0.0, 0), e(1.0, 1.0, 1)],
+            vec![e(1.0, 1.0, 1), e(0.0, -0.0, 0)],
+        ];
+        for list in lists {
+            checked += check(list);
+        }
+        assert_eq!(checked, 46);
+    }
+
+    /// `order_and_bounds` of `entries` against the full sort and the bounds folded over it,
+    /// bit for bit; 1.
+    fn check(mut entries: Vec<Entry>) -> usize {
+        let mut expected = entries.clone();
+        expected.sort_unstable_by(entry_order);
+        let (max_len, unordered) = bounds(&expected);
+        let got = order_and_bounds(&mut entries);
+        let bits = |v: &[Entry]| -> Vec<(u64, u64, u32)> {
+            v.iter()
+                .map(|e| (e.lo.to_bits(), e.hi.to_bits(), e.id.0))
+                .collect()
+        };
+        let n = entries.len();
+        assert!(
+            bits(&entries) == bits(&expected),
+            "the order of {n} entries"
+        );
+        assert!(
+            (got.0.to_bits(), got.1) == (max_len.to_bits(), unordered),
+            "bounds {got:?} against {:?} of {n} entries",
+            (max_len, unordered)
+        );
+        1
     }
 }

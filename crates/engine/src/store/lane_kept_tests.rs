@@ -248,7 +248,7 @@ fn a_kept_index_gives_the_full_builds_answers_in_random_traffic() {
             let full = LaneIndex::build(&net, w.entities());
             kept.assert_same_as(&full);
             stayed += kept.kept.iter().filter(|k| k.stays).count();
-            entered += kept.footprints.iter().flatten().count();
+            entered += kept.kept.iter().filter(|k| k.entered).count();
             steps += 1;
         }
         shares.push(stayed as f64 / entered as f64);
@@ -259,4 +259,76 @@ fn a_kept_index_gives_the_full_builds_answers_in_random_traffic() {
     // store/lane_slots.rs) are under them: measured 37 % of the entered cars in the town,
     // 68 % on two_plus_one, 88 % on the highway.
     assert!(shares.iter().all(|&f| f > 0.3), "{shares:?}");
+}
+
+/// An entity's entries stay, and only the fields that moved are written
+/// (`LaneIndex::stay`), exactly where the full way would keep them: at each boundary of its
+/// conditions the kept index is a full build's (`LaneIndex::assert_same_as`) and the car's
+/// entries stay or are made anew as worked out by hand. Road "A", 100 m along +x, lanes −1
+/// and −2 of 3.5 m in the section from s 0; from s 50 lane −2 widens (0.01 m per m), so the
+/// borders there are made at each s and no entry stays. A 5 m × 2 m car in lane −1
+/// (t −1.75), moved by writing its road position (marked written, so every build enters it):
+/// s 40 (first build: made), 40.5 and 41 (stay), 41.5 with t one ulp up (its box's t-range
+/// bits change: made), 42 (stay again), 49.5 (stay), 49.999995 (past the kept borders' range,
+/// which ends 1e-5 inside the section: made, from borders made for that s), 50 (the next
+/// section: made), 55 (widening lane: made), 45 (back in the first section: made), 45.5
+/// (stay), 45.5 hidden from traffic (not entered), 46 shown again (made), 46.5 (stay), 47
+/// with the heading relative to the road one ulp up (its sine, 2.2e-16, moves no corner's
+/// t: the t-range's bits are the same and the entries stay, with the s-range new), 47.5
+/// (stay).
+#[test]
+fn an_entity_stays_exactly_where_the_full_way_keeps_it() {
+    let lanes = |b2: &str| {
+        format!(
+            r#"<right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane><lane id="-2" type="driving"><width sOffset="0" a="3.5" b="{b2}" c="0" d="0"/></lane></right>"#
+        )
+    };
+    let xodr = format!(
+        r#"<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="A" junction="-1" length="100"><planView><geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry></planView><lanes><laneSection s="0"><center><lane id="0" type="none"/></center>{}</laneSection><laneSection s="50"><center><lane id="0" type="none"/></center>{}</laneSection></lanes></road>
+</OpenDRIVE>"#,
+        lanes("0"),
+        lanes("0.01")
+    );
+    let net =
+        Arc::new(RoadNetwork::from_str(&xodr, std::path::Path::new("stay.xodr")).expect("road"));
+    let mut w = World::new(Arc::clone(&net), vec![car(0, 5.0)]);
+    let id = EntityId(0);
+    let pose = net.road_pose("A", 40.0, -1.75).expect("on road");
+    let found = net.locate(pose.x, pose.y, Some(pose.h));
+    w.place_resolved(id, pose, found);
+    let t: Real = -1.75;
+    // (s, t, relative heading, visible to traffic, stays)
+    let steps = [
+        (40.0, t, 0.0, true, false),
+        (40.5, t, 0.0, true, true),
+        (41.0, t, 0.0, true, true),
+        (41.5, t.next_up(), 0.0, true, false),
+        (42.0, t.next_up(), 0.0, true, true),
+        (49.5, t.next_up(), 0.0, true, true),
+        (49.999995, t.next_up(), 0.0, true, false),
+        (50.0, t.next_up(), 0.0, true, false),
+        (55.0, t.next_up(), 0.0, true, false),
+        (45.0, t.next_up(), 0.0, true, false),
+        (45.5, t.next_up(), 0.0, true, true),
+        (45.5, t.next_up(), 0.0, false, false),
+        (46.0, t.next_up(), 0.0, true, false),
+        (46.5, t.next_up(), 0.0, true, true),
+        (47.0, t.next_up(), 0.0_f64.next_up(), true, true),
+        (47.5, t.next_up(), 0.0_f64.next_up(), true, true),
+    ];
+    let mut index = LaneIndex::default();
+    let mut stayed = Vec::new();
+    for &(s, t, rel, visible, _) in &steps {
+        let e = w.entity_mut(id);
+        let rp = e.road_position.as_mut().expect("on the road");
+        (rp.s, rp.t, rp.relative_heading) = (s, t, rel);
+        e.visibility.traffic = visible;
+        index.refresh_from(&mut w);
+        index.assert_same_as(&LaneIndex::build(&net, w.entities()));
+        assert_eq!(index.footprint(id).is_some(), visible);
+        stayed.push(index.kept[0].stays);
+    }
+    let expected: Vec<bool> = steps.iter().map(|s| s.4).collect();
+    assert_eq!(stayed, expected);
 }
