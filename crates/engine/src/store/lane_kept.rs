@@ -26,6 +26,23 @@
 //! line); any other entity takes the full way out of line (`LaneIndex::enter_anew`), which
 //! writes the whole row once.
 //!
+//! **The box's s-range.** The box's ranges are folded from its four corners: the s-range as
+//! the least and greatest of s + dsᵢ, the t-range of t + dtᵢ, where the corners' offsets
+//! (dsᵢ, dtᵢ) are a function of the box (its centre's x and y, its length and width) and the
+//! heading relative to the road alone. An entity entered in full keeps beside its row the
+//! least and greatest dsᵢ (`BoxKept`) with the bits of that box, heading and t. Where they are
+//! the same bits in a later step, the corners' offsets are the same numbers, so the t-range is
+//! the one its row holds (written in the same entry: no other write of the row changes it)
+//! and the s-range is (s + min dsᵢ, s + max dsᵢ) wherever both ends are finite and not zero
+//! ([`shifted`]): rounding to nearest is monotone, so s + min dsᵢ rounds to a value no greater
+//! than any s + dsᵢ and is one of them, the least; a finite number other than zero has one bit
+//! pattern, so the fold's `min`, which returns one of its operands (a NaN operand is skipped,
+//! and s + dsᵢ is NaN only where dsᵢ is, which the fold of min dsᵢ skips alike), gives those
+//! bits; the same for the greatest. Where an end is zero (its sign could depend on the
+//! fold) or not finite the ranges are folded from the corners as before, and so they are
+//! where any of the six differs. On a lane followed at a steady t this replaces the eight
+//! products and sixteen sums and bounds of the fold by six comparisons and two sums (issue 31).
+//!
 //! **The order.** The entries of a lane are sorted by (lo, id), a total order (`total_cmp`,
 //! an entity once per lane), so any correct sort gives the one order there is. Vehicles in a
 //! lane keep their order from step to step but for the few that change lanes or pass through,
@@ -101,6 +118,51 @@ impl Kept {
         lanes: false,
         stays: false,
     };
+}
+
+/// An entity's box seen from its reference point: the least and the greatest s-offset of its
+/// corners, kept with the bits of what they and the footprint's t-range were worked out from
+/// (module doc "The box's s-range").
+#[derive(Debug, Clone, Copy)]
+pub(super) struct BoxKept {
+    /// The bits of the reference point's t, the heading relative to the road, and the box's
+    /// centre x and y, length and width.
+    pub key: [u64; 6],
+    /// The least and the greatest s-offset of the box's corners (NaN: none kept).
+    pub ds: (Real, Real),
+}
+
+impl BoxKept {
+    /// Whether `key` is this one's, bit for bit (each word compared, no call to `memcmp`).
+    #[inline(always)]
+    pub fn holds(&self, key: &[u64; 6]) -> bool {
+        let k = &self.key;
+        (k[0] ^ key[0])
+            | (k[1] ^ key[1])
+            | (k[2] ^ key[2])
+            | (k[3] ^ key[3])
+            | (k[4] ^ key[4])
+            | (k[5] ^ key[5])
+            == 0
+    }
+
+    /// Nothing kept.
+    pub const NONE: BoxKept = BoxKept {
+        key: [0; 6],
+        ds: (Real::NAN, Real::NAN),
+    };
+}
+
+/// The s-range of a box whose corners' s-offsets range over `ds` at the reference point `s`,
+/// where both ends of (s + ds.0, s + ds.1) are finite and not zero: there it is the s-range
+/// `LaneIndex`'s `box_ranges` folds from the corners, bit for bit (module doc "The box's
+/// s-range"); `None` elsewhere.
+#[inline(always)]
+pub(super) fn shifted(s: Real, ds: (Real, Real)) -> Option<(Real, Real)> {
+    let (lo, hi) = (s + ds.0, s + ds.1);
+    // Finite and not zero: false for NaN, ±0 and ±∞ (two comparisons of |x|).
+    let usable = |x: Real| 0.0 < x.abs() && x.abs() < Real::INFINITY;
+    (usable(lo) && usable(hi)).then_some((lo, hi))
 }
 
 /// The order of a lane's entries (module doc "The order").
