@@ -64,6 +64,7 @@ use std::sync::Arc;
 use opendrive::{Direction, LaneHandle, Real, Road, RoadHandle, RoadNetwork, RoadPosition};
 
 use super::driver_inputs::DriverInput;
+pub use super::lane_kept::Footprint;
 use super::lane_kept::{bounds, entry_order, order_and_bounds, shifted, BoxKept, Entry, Kept};
 use super::lane_slots::{LaneBorders, LaneSlots};
 use crate::world::entity::{Entity, EntityId};
@@ -77,45 +78,6 @@ const LANE_OVERLAP: Real = 1e-3;
 const ON_ROAD: Real = 0.5;
 /// Most lane sections a query walks through (short junction roads, loops).
 pub(super) const MAX_HOPS: usize = 64;
-
-/// Where an entity's bounding box lies on its road.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Footprint {
-    /// The lane holding the reference point.
-    pub handle: LaneHandle,
-    /// s of the reference point (m).
-    pub s: Real,
-    /// s-range of the box (m).
-    pub s_range: (Real, Real),
-    /// t-range of the box (m).
-    pub t_range: (Real, Real),
-    /// Velocity component along +s (m/s).
-    pub speed_s: Real,
-}
-
-impl Footprint {
-    /// The end of the box reached first travelling `direction` from its inside: the front
-    /// bumper of a vehicle driving that way.
-    pub fn front(&self, direction: Direction) -> Real {
-        match direction {
-            Direction::Forward => self.s_range.1,
-            Direction::Backward => self.s_range.0,
-        }
-    }
-
-    /// The other end: the rear bumper.
-    pub fn rear(&self, direction: Direction) -> Real {
-        self.front(direction.reverse())
-    }
-
-    /// The speed along `direction` of travel (m/s).
-    pub fn speed_along(&self, direction: Direction) -> Real {
-        match direction {
-            Direction::Forward => self.speed_s,
-            Direction::Backward => -self.speed_s,
-        }
-    }
-}
 
 /// The entries of one lane section's lane, sorted by (lo, id).
 #[derive(Debug, Clone, Default)]

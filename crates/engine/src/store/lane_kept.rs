@@ -58,10 +58,49 @@
 
 use std::cmp::Ordering;
 
-use opendrive::{LaneHandle, Real};
+use opendrive::{Direction, LaneHandle, Real};
 
-use super::lane_index::Footprint;
 use crate::world::entity::EntityId;
+
+/// Where an entity's bounding box lies on its road (store/lane_index.rs module doc
+/// "Footprints"); kept in its row (`Kept`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Footprint {
+    /// The lane holding the reference point.
+    pub handle: LaneHandle,
+    /// s of the reference point (m).
+    pub s: Real,
+    /// s-range of the box (m).
+    pub s_range: (Real, Real),
+    /// t-range of the box (m).
+    pub t_range: (Real, Real),
+    /// Velocity component along +s (m/s).
+    pub speed_s: Real,
+}
+
+impl Footprint {
+    /// The end of the box reached first travelling `direction` from its inside: the front
+    /// bumper of a vehicle driving that way.
+    pub fn front(&self, direction: Direction) -> Real {
+        match direction {
+            Direction::Forward => self.s_range.1,
+            Direction::Backward => self.s_range.0,
+        }
+    }
+
+    /// The other end: the rear bumper.
+    pub fn rear(&self, direction: Direction) -> Real {
+        self.front(direction.reverse())
+    }
+
+    /// The speed along `direction` of travel (m/s).
+    pub fn speed_along(&self, direction: Direction) -> Real {
+        match direction {
+            Direction::Forward => self.speed_s,
+            Direction::Backward => -self.speed_s,
+        }
+    }
+}
 
 /// One entity's footprint in one lane: the s-range of its box, by lo.
 #[derive(Debug, Clone, Copy, PartialEq)]
