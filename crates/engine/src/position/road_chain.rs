@@ -1,6 +1,6 @@
 //! oscsim's chain of roads (no 1.x form): the roads an OpenSCENARIO DSL plan measures an
 //! actor's places along (ASAM OpenSCENARIO DSL 2.1 §8.9 measured along the plan's roads;
-//! OpenDRIVE 1.8 §10.4 road linkage), each entered at its start in +s with the same lane ids,
+//! OpenDRIVE 1.8 §10.3 road linkage), each entered at its start in +s with the same lane ids,
 //! given with the plan's s at its start, and the direction the actor drives them in. The DSL
 //! runtime's state checks, marks and TravelAction name them (`scenario::PlanRoads`, in
 //! `StateCheck::roads` and `Travel::roads`), so the engine measures in the plan's measure

@@ -1,5 +1,5 @@
 //! Lane geometry the runtime needs on top of the road model (OpenDRIVE 1.8 §8.3 reference-line
-//! coordinates, §11 lanes, §10–11.4 lane linkage): the reference line's curvature, lateral-lane arithmetic across the centre lane, and carrying a
+//! coordinates, §11 lanes, §10.3 road linkage, §11.5 lane linkage): the reference line's curvature, lateral-lane arithmetic across the centre lane, and carrying a
 //! [`LaneTrack`] along its lane through lane sections, road links and junctions.
 //!
 //! Written here because the road crate answers single queries (pose, span, successors) and the
@@ -356,7 +356,7 @@ fn walk(
 }
 
 /// The id that lane `lane` of road `road_id` at s `from` has at s `to`, travelling in
-/// `direction`: lane links carry it across lane-section boundaries (OpenDRIVE 1.8 §11.4 "Lane
+/// `direction`: lane links carry it across lane-section boundaries (OpenDRIVE 1.8 §11.5 "Lane
 /// linkage"); a lane without a link into the next section keeps its id.
 pub fn carry_lane(
     net: &RoadNetwork,
