@@ -54,14 +54,6 @@ pub fn crowded(n: usize, seed: u64) -> World {
     w
 }
 
-/// Pseudo-random numbers in [0, 1) from `seed` (a linear congruential generator): the
-/// places and speeds of [`crowded`], and the tests' moves.
-pub fn generator(seed: u64) -> impl FnMut() -> f64 {
-    let mut state = seed;
-    move || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 33) as f64 / (1u64 << 31) as f64
-    }
-}
+/// Pseudo-random numbers in [0, 1) from `seed` (store/lane_kept.rs's generator): the places
+/// and speeds of [`crowded`], and the tests' moves.
+pub(crate) use crate::store::generator;

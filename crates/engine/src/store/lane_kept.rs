@@ -279,11 +279,12 @@ pub(super) fn repair_order(entries: &mut [Entry], from: usize) {
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    /// A small deterministic generator in [0, 1) (64-bit LCG, Knuth's constants).
-    pub(in crate::store) fn generator(seed: u64) -> impl FnMut() -> f64 {
+    /// A small deterministic generator in [0, 1) (64-bit LCG, Knuth's constants): the
+    /// engine's tests' one (controller/test_world.rs re-exports it).
+    pub(crate) fn generator(seed: u64) -> impl FnMut() -> f64 {
         let mut state = seed;
         move || {
             state = state

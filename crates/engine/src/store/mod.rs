@@ -21,6 +21,8 @@ pub(crate) mod driver_inputs;
 pub(crate) mod lane_index;
 mod lane_kept;
 #[cfg(test)]
+pub(crate) use lane_kept::tests::generator;
+#[cfg(test)]
 mod lane_kept_tests;
 mod lane_refresh;
 #[cfg(test)]
