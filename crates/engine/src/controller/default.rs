@@ -174,10 +174,7 @@ fn follow_route(
     }
     if follow.change.is_none() && track.blend.is_none() && distance != 0.0 {
         if let Some(lane) = follow.needed_lane(net, track) {
-            let room = match track.direction {
-                Direction::Forward => net.road_at(track.road).length - track.s,
-                Direction::Backward => track.s,
-            };
+            let room = lane_change::road_left(net, track);
             follow.change = lane_change::begin(net, track, lane, speed, odometer, room);
         }
     }

@@ -49,10 +49,9 @@ pub fn change_length(delta: Real, speed: Real) -> Real {
 /// in a quarter of a second (engine tests controller/user_controllers.rs
 /// `a_driver_models_change_runs_its_length_across_a_road_link`).
 pub(crate) fn room_for(net: &RoadNetwork, track: &LaneTrack, lane: i32) -> Real {
-    let road = net.road_at(track.road);
-    let (rest, end) = match track.direction {
-        opendrive::Direction::Forward => (road.length - track.s, road.length),
-        opendrive::Direction::Backward => (track.s, 0.0),
+    let end = match track.direction {
+        opendrive::Direction::Forward => net.road_at(track.road).length,
+        opendrive::Direction::Backward => 0.0,
     };
     let links_on = net
         .lane_handle_on(track.road, lane, end)
@@ -60,7 +59,16 @@ pub(crate) fn room_for(net: &RoadNetwork, track: &LaneTrack, lane: i32) -> Real 
     if links_on {
         Real::INFINITY
     } else {
-        rest
+        road_left(net, track)
+    }
+}
+
+/// The road left ahead of `track` on its road, in its direction of travel (m): the room a
+/// route's lane change has ([`begin`]'s `room`).
+pub(crate) fn road_left(net: &RoadNetwork, track: &LaneTrack) -> Real {
+    match track.direction {
+        opendrive::Direction::Forward => net.road_at(track.road).length - track.s,
+        opendrive::Direction::Backward => track.s,
     }
 }
 
