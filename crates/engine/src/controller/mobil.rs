@@ -141,7 +141,7 @@ impl MobilController {
     /// free-road terms instead of the terms ([`settled_without_powers`]), which settle almost
     /// every candidate.
     #[inline(always)]
-    fn judge(&self, view: &ControllerView<'_>, own: &mut Own, b: &Beside) -> Option<Real> {
+    fn judge(&self, view: &ControllerView<'_>, own: &mut Own, b: &Beside<'_>) -> Option<Real> {
         // The mark first: a lane behind a mark not to be crossed costs no occupancy search
         // (either leaves the verdict "no change").
         if !b.crossing_permitted || view.occupied_beside(b) {
@@ -161,7 +161,7 @@ impl MobilController {
         mobil: &MobilParameters,
         view: &ControllerView<'_>,
         own: &mut Own,
-        b: Beside,
+        b: Beside<'_>,
     ) -> Option<Real> {
         // `b` by value: the lane beside is copied where it is weighed, not before every
         // occupancy test (issue 31).
@@ -242,7 +242,7 @@ impl MobilController {
         &self,
         view: &ControllerView<'_>,
         own: &mut Own,
-        b: Option<Beside>,
+        b: Option<Beside<'_>>,
         best: &mut Option<(Real, i32)>,
     ) {
         let Some(b) = b else {
@@ -680,7 +680,7 @@ fn settled_without_powers(
     own: &mut Own,
     own_change: FollowerChange,
     new_follower: Option<Weighed>,
-    b: &Beside,
+    b: &Beside<'_>,
 ) -> bool {
     let new_follower = new_follower.map(|n| n.gain_bound(p));
     if new_follower.is_some_and(|n| n.after < -mobil.safe_deceleration) {

@@ -14,7 +14,7 @@ use crate::controller::command::FreeAcceleration;
 use crate::controller::lane_beside::{KeptRoad, RoadBeside};
 use crate::controller::test_world::{crowded, generator, network};
 use crate::controller::view::{NeighbourLane, Side};
-use crate::store::driver_inputs::{DriverInput, TrackInput};
+use crate::store::driver_inputs::{DriverInput, TrackInput, NO_SLOT};
 use crate::store::lane_index::LaneIndex;
 use crate::store::World;
 use crate::world::entity::Entity;
@@ -148,6 +148,17 @@ fn view_of<'a>(
     e: &'a Entity,
 ) -> ControllerView<'a> {
     let input = index.input(e.id.index()).expect("a row per entity");
+    view_with(time, w, index, e, input)
+}
+
+/// [`view_of`] with the driver inputs `input`.
+fn view_with<'a>(
+    time: Real,
+    w: &'a World,
+    index: &'a LaneIndex,
+    e: &'a Entity,
+    input: &'a DriverInput,
+) -> ControllerView<'a> {
     ControllerView::new(
         time,
         e,
@@ -330,6 +341,13 @@ fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
                     )
                 };
                 let h = track.own.expect("on its lane");
+                // The own lane's slot the inputs keep from step to step is the index's.
+                assert_eq!(
+                    Some(track.own_slot as usize),
+                    index.slot(h),
+                    "seed {seed} step {step} {}",
+                    e.name
+                );
                 let from = me.front(dir);
                 if index
                     .nearest_ahead_proven(h, from, e.id, view.horizon(), &hint(0))
@@ -382,6 +400,17 @@ fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
                     let slot = index.slot(b.at.0);
                     assert_eq!(b.slot, slot, "seed {seed} step {step} {} {side}", e.name);
                     let kind = if b.lane > track.lane_id { 5 } else { 8 };
+                    // The s-range and hint the lane beside carries are the ones the
+                    // occupancy's questions looked up per side: the footprint's, the hint of
+                    // kind `kind` of the car.
+                    let range = (b.range.0.to_bits(), b.range.1.to_bits());
+                    assert_eq!(range, (me.s_range.0.to_bits(), me.s_range.1.to_bits()));
+                    let alongside = index.hint(e.id, kind).expect("hints per entity");
+                    assert!(
+                        b.alongside.is_some_and(|h| std::ptr::eq(h, alongside)),
+                        "seed {seed} step {step} {} {side}",
+                        e.name
+                    );
                     if index.occupied_proven(slot.expect("a lane"), me.s_range, e.id, &hint(kind)) {
                         occupied_proven += 1;
                     }
@@ -427,7 +456,7 @@ fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
 /// s, is the handle the network gives for the track's lane asked directly.
 #[test]
 fn the_driver_inputs_are_the_entitys_bit_for_bit() {
-    let mut tracks = 0;
+    let (mut tracks, mut leaders) = (0, 0);
     for_each_view(|_, w, index, e, view| {
         let row = index.input(e.id.index()).expect("a row per entity");
         assert_eq!(row.id, e.id);
@@ -450,8 +479,24 @@ fn the_driver_inputs_are_the_entitys_bit_for_bit() {
         let asked = w.network.lane_handle_on(t.road, t.lane_id, t.s);
         assert!(asked.is_some(), "{} is on a lane", e.name);
         assert_eq!(r.own, asked, "{}", e.name);
-        assert_eq!(*row, DriverInput::of(e, &w.network), "{}", e.name);
+        // The own lane's slot is the index's slot of that handle; a row made outside an
+        // index has none, and its view finds the same leader by the handle.
+        let slot = asked.and_then(|h| index.slot(h));
+        assert!(slot.is_some(), "{}'s lane has a slot", e.name);
+        assert_eq!(slot, Some(r.own_slot as usize), "{}", e.name);
+        let outside = DriverInput::of(e, &w.network);
+        assert_eq!(outside.track.map(|t| t.own_slot), Some(NO_SLOT));
+        let mut direct = outside;
+        if let Some(t) = direct.track.as_mut() {
+            t.own_slot = r.own_slot;
+        }
+        assert_eq!(*row, direct, "{}", e.name);
+        let by_handle = view_with(10.0, w, index, e, &outside);
+        let bits = |g: Option<Gap>| g.map(|g| (g.id, g.gap.to_bits(), g.speed.to_bits()));
+        assert_eq!(bits(view.leader()), bits(by_handle.leader()), "{}", e.name);
+        leaders += usize::from(view.leader().is_some());
     });
+    assert!(leaders > 2_000, "{leaders} leaders found");
     assert_eq!(tracks, 2_400, "every car of the 40 highways has a track");
 }
 
@@ -551,6 +596,7 @@ fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
                             direction,
                             blend_from: None,
                             own: net.lane_handle_on(road_handle, lane_id, s),
+                            own_slot: NO_SLOT,
                         };
                         if kept.is_some_and(|k: KeptRoad| k.holds(&track)) {
                             kept_used += 1;

@@ -65,8 +65,8 @@ pub struct NeighbourLane {
 
 /// A lane beside the entity's as [`ControllerView::beside`] finds it: a
 /// [`NeighbourLane`] whose leader, follower and occupancy are not searched yet.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Beside {
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Beside<'a> {
     /// As [`NeighbourLane::lane`].
     pub lane: i32,
     /// Its handle at the entity's s and the entity's direction of travel (the searches of
@@ -82,6 +82,26 @@ pub(crate) struct Beside {
     /// kept with the lanes beside (controller/lane_beside.rs), so that the occupancy's answer
     /// at the hint costs no slot look-up (issue 31).
     pub slot: Option<usize>,
+    /// The s-range of the entity's box (its footprint's in the lane index), which the
+    /// occupancy's questions ask about: looked up once for both sides (issue 31).
+    pub range: (Real, Real),
+    /// The hint of the entity's searches alongside in this lane (kind 2 of the lane's
+    /// hints, [`ControllerView::hint`]'s): worked out once for both sides from the entity's
+    /// hints (issue 31).
+    pub alongside: Option<&'a AtomicU32>,
+}
+
+/// The kind of an entity's search of kind `query` (0 ahead, 1 behind, 2 alongside) in `lane`
+/// where its own lane is `own`: `query` in its own lane, 3 + `query` in the one with the
+/// larger id, 6 + `query` in the one with the smaller (lane index "Hints").
+#[inline(always)]
+fn hint_kind(lane: i32, own: i32, query: usize) -> usize {
+    let which = match lane.cmp(&own) {
+        std::cmp::Ordering::Equal => 0,
+        std::cmp::Ordering::Greater => 1,
+        std::cmp::Ordering::Less => 2,
+    };
+    which * 3 + query
 }
 
 /// The world of one step as the controller of one entity sees it (module doc).
@@ -250,12 +270,7 @@ impl<'a> ControllerView<'a> {
     /// index "Hints").
     fn hint(&self, lane: i32, query: usize) -> Option<&'a AtomicU32> {
         let own = self.input.track.as_ref().map_or(lane, |t| t.lane_id);
-        let which = match lane.cmp(&own) {
-            std::cmp::Ordering::Equal => 0,
-            std::cmp::Ordering::Greater => 1,
-            std::cmp::Ordering::Less => 2,
-        };
-        self.index.hint(self.input.id, which * 3 + query)
+        self.index.hint(self.input.id, hint_kind(lane, own, query))
     }
 
     /// The nearest entity ahead in `lane` from the front bumper, along the lane the entity
@@ -266,26 +281,35 @@ impl<'a> ControllerView<'a> {
 
     /// [`ahead_in`](Self::ahead_in) with the lane's handle and direction of travel known.
     fn ahead_on(&self, lane: i32, at: (LaneHandle, Direction)) -> Option<Gap> {
-        self.ahead_hinted(at, self.hint(lane, 0))
+        self.ahead_hinted(at, None, self.hint(lane, 0))
     }
 
     /// [`ahead_on`](Self::ahead_on) with the search's hint known: the answer the entries at
     /// the hint prove taken inline ([`LaneIndex::nearest_ahead_proven`], `nearest`'s answer
     /// where it is proven), the search out of line otherwise (issue 31: the set-up of a
     /// search, its route closure and its call, was paid for the answer at the hint, which the
-    /// own leader's question gets 99.7 % of the time on the scale highway).
+    /// own leader's question gets 99.7 % of the time on the scale highway). `slot`: the
+    /// lane's slot in the index where the caller keeps it (the own lane's, from the driver
+    /// inputs: [`TrackInput::own_slot`](crate::store::driver_inputs::TrackInput::own_slot)),
+    /// else `None` and it is looked up.
     #[inline(always)]
     fn ahead_hinted(
         &self,
         (h, dir): (LaneHandle, Direction),
+        slot: Option<u32>,
         hint: Option<&'a AtomicU32>,
     ) -> Option<Gap> {
         let me = self.index.footprint(self.input.id)?;
         let (from, horizon) = (me.front(dir), self.horizon());
-        let proven = hint.and_then(|hint| {
-            self.index
-                .nearest_ahead_proven(h, from, self.input.id, horizon, hint)
-        });
+        let id = self.input.id;
+        // A match, not a closure: the closure was left out of line (a call per question).
+        let proven = match (hint, slot) {
+            (Some(hint), Some(k)) => self
+                .index
+                .nearest_ahead_proven_at(k, from, id, horizon, hint),
+            (Some(hint), None) => self.index.nearest_ahead_proven(h, from, id, horizon, hint),
+            (None, _) => None,
+        };
         let n = match proven {
             Some(n) => n?,
             None => self.ahead_searched(h, from, dir, horizon, hint)?,
@@ -349,9 +373,11 @@ impl<'a> ControllerView<'a> {
         // and the choice is `here`.
         let Some(from) = track.blend_from.filter(|&from| from != track.lane_id) else {
             // `ahead_in` of the own lane: its handle is the inputs' (`lane_handle`), its
-            // hint the own lane's ahead, kind 0 (`hint`).
+            // slot too (the slot of that handle, or a slot with no lane where it has none:
+            // store/driver_inputs.rs), its hint the own lane's ahead, kind 0 (`hint`).
             let h = track.own?;
-            return self.ahead_hinted((h, track.direction), self.index.hint(self.input.id, 0));
+            let hint = self.index.hint(self.input.id, 0);
+            return self.ahead_hinted((h, track.direction), Some(track.own_slot), hint);
         };
         let here = self.ahead_in(track.lane_id);
         let left = self.ahead_in(from);
@@ -387,7 +413,7 @@ impl<'a> ControllerView<'a> {
     /// [`occupied_beside`](Self::occupied_beside) make when asked: a lane change that is
     /// ruled out without them (a mark not to be crossed, an occupied lane) costs no search.
     /// The road's part is asked of the road each time (controller/lane_beside.rs).
-    pub(crate) fn beside(&self, side: Side) -> Option<Beside> {
+    pub(crate) fn beside(&self, side: Side) -> Option<Beside<'a>> {
         let [left, right] = self.beside_kept(&mut None);
         match side {
             Side::Left => left,
@@ -400,15 +426,18 @@ impl<'a> ControllerView<'a> {
     /// (controller/lane_beside.rs: the same answer bit for bit). Whether it holds is tested
     /// once for both sides (issue 31: the test per side was 2.7 % of the instructions of
     /// `mobil` at 1,000 vehicles); a second test right after the first, of the same track,
-    /// could only give the same answer.
+    /// could only give the same answer. The entity's box's s-range and its hints are looked
+    /// up here once for both sides and kept with each ([`Beside::range`],
+    /// [`Beside::alongside`]): the occupancy's questions looked them up again per side (about
+    /// 15 instructions a side, issue 31); the index does not change within a step's commands,
+    /// so they are the same numbers.
     #[inline(always)]
-    pub(crate) fn beside_kept(&self, kept: &mut Option<KeptRoad>) -> [Option<Beside>; 2] {
-        let (Some(track), Some(_)) = (
-            self.input.track.as_ref(),
-            self.index.footprint(self.input.id),
-        ) else {
+    pub(crate) fn beside_kept(&self, kept: &mut Option<KeptRoad>) -> [Option<Beside<'a>>; 2] {
+        let id = self.input.id;
+        let (Some(track), Some(me)) = (self.input.track.as_ref(), self.index.footprint(id)) else {
             return [None, None];
         };
+        let (range, hints) = (me.s_range, self.index.hints(id));
         let road = KeptRoad::for_track(kept, self.network, self.index, track);
         [Side::Left, Side::Right].map(|side| {
             road.side(side).map(|beside| Beside {
@@ -417,6 +446,8 @@ impl<'a> ControllerView<'a> {
                 toward_keep_side: beside.toward_keep_side,
                 crossing_permitted: beside.crossing_permitted,
                 slot: road.slot(side),
+                range,
+                alongside: hints.map(|h| &h[hint_kind(beside.lane, track.lane_id, 2)]),
             })
         })
     }
@@ -424,39 +455,37 @@ impl<'a> ControllerView<'a> {
     /// Whether an entity's box overlaps the entity's own length in the lane beside (a change
     /// now would collide): [`NeighbourLane::occupied`].
     #[inline(always)]
-    pub(crate) fn occupied_beside(&self, b: &Beside) -> bool {
-        let Some(me) = self.index.footprint(self.input.id) else {
-            return false;
-        };
+    pub(crate) fn occupied_beside(&self, b: &Beside<'_>) -> bool {
         // The answer the entries at the hint prove inline, in the lane at the kept slot, the
         // index's question otherwise (issue 31: `occupied`'s own test at the hint was left
-        // out of line, and its slot look-up cost about 25 instructions a question).
-        let (id, hint) = (self.input.id, self.hint(b.lane, 2));
+        // out of line, and its slot look-up cost about 25 instructions a question). The
+        // entity's s-range and hint are the lane beside's, taken once for both sides
+        // (`beside_kept`): a `Beside` is made only where the entity has a footprint.
+        let (id, hint) = (self.input.id, b.alongside);
         let proven = match (hint, b.slot) {
-            (Some(hint), Some(slot)) => self.index.occupied_proven(slot, me.s_range, id, hint),
+            (Some(hint), Some(slot)) => self.index.occupied_proven(slot, b.range, id, hint),
             _ => false,
         };
-        proven || self.index.occupied(b.at.0, me.s_range, id, hint)
+        proven || self.index.occupied(b.at.0, b.range, id, hint)
     }
 
     /// The largest speed along the entity's direction of travel (m/s) of the entities whose
     /// boxes overlap the entity's own length in the lane beside (those
     /// [`occupied_beside`](Self::occupied_beside) finds); `None` when there is none.
-    pub(crate) fn fastest_alongside(&self, b: &Beside) -> Option<Real> {
-        let me = self.index.footprint(self.input.id)?;
+    pub(crate) fn fastest_alongside(&self, b: &Beside<'_>) -> Option<Real> {
         self.index
-            .overlapping(b.at.0, me.s_range, self.input.id, self.hint(b.lane, 2))
+            .overlapping(b.at.0, b.range, self.input.id, b.alongside)
             .filter_map(|id| self.index.footprint(id).map(|f| f.speed_along(b.at.1)))
             .reduce(Real::max)
     }
 
     /// The nearest entity ahead in the lane beside, from the entity's front bumper.
-    pub(crate) fn leader_beside(&self, b: &Beside) -> Option<Gap> {
+    pub(crate) fn leader_beside(&self, b: &Beside<'_>) -> Option<Gap> {
         self.ahead_on(b.lane, b.at)
     }
 
     /// The nearest entity behind in the lane beside, from the entity's rear bumper.
-    pub(crate) fn follower_beside(&self, b: &Beside) -> Option<Gap> {
+    pub(crate) fn follower_beside(&self, b: &Beside<'_>) -> Option<Gap> {
         self.behind_on(b.lane, b.at)
     }
 

@@ -16,10 +16,28 @@
 //! The rows are copies: the same numbers as the entity's at the step's start, which no
 //! command changes (every command is worked out before any entity moves, controller/stage.rs),
 //! so a command gives the same bits whether it reads the row or the entity.
+//!
+//! **The own lane's slot.** Beside the own lane's handle the row keeps that lane's slot in the
+//! index (store/lane_slots.rs: where the lane's entries are), so that the leader's answer at
+//! the hint reads the lane without looking the slot up (controller/view.rs `leader`; the
+//! look-up was about 20 instructions per `idm` or `mobil` entity-step, issue 31). A lane's
+//! slot is a function of its handle and the network alone, so the slot is worked out only
+//! where the row's handle changes (a vehicle following its lane keeps its handle for the
+//! length of the lane section) and kept otherwise; the index empties its rows when it numbers
+//! another network's lanes (`LaneIndex::walk`), so a kept slot is always of the numbering the
+//! index reads with. Debug builds compare every row with a full build's, slot included
+//! (`LaneIndex::assert_same_as`).
 
 use opendrive::{Direction, LaneHandle, Real, RoadHandle, RoadNetwork};
 
+use super::lane_slots::LaneSlots;
 use crate::world::entity::{Entity, EntityId};
+
+/// [`TrackInput::own_slot`] where the own lane has no slot: no handle, the centre lane, or a
+/// row made outside an index ([`DriverInput::of`]). Never a lane's slot: a slot is below the
+/// number of slots, itself a `u32` (store/lane_slots.rs), so the index's lane at this slot is
+/// none, as for a handle without a slot.
+pub const NO_SLOT: u32 = u32::MAX;
 
 /// What the driver models read of an entity's lane track (the lane the default controller
 /// keeps it in).
@@ -37,6 +55,9 @@ pub struct TrackInput {
     pub blend_from: Option<i32>,
     /// The handle of lane `lane_id` of `road` at `s` ([`RoadNetwork::lane_handle_on`]).
     pub own: Option<LaneHandle>,
+    /// The lane index's slot of `own` (`LaneIndex::slot`, module doc "The own lane's slot"),
+    /// [`NO_SLOT`] where it has none. In the row's padding: the row stays 64 bytes.
+    pub own_slot: u32,
 }
 
 /// One entity's row (module doc).
@@ -55,23 +76,26 @@ pub struct DriverInput {
 }
 
 impl DriverInput {
-    /// The row of `e` on `net`, its own lane's handle looked up.
+    /// The row of `e` on `net`, its own lane's handle looked up; made outside an index, it
+    /// has no slot ([`NO_SLOT`]).
     pub fn of(e: &Entity, net: &RoadNetwork) -> Self {
-        Self::with_own(e, |road, lane, s| net.lane_handle_on(road, lane, s))
+        Self::with_own(e, |road, lane, s| net.lane_handle_on(road, lane, s), None)
     }
 
     /// Makes `row` the row of `e` on `net`, where the lane index looked up the handle of lane
     /// `looked_up` (road, lane, s, handle) for the entity's footprint: the track's own lane's
     /// handle is that one where the track names the same road, lane and s (the common case),
-    /// else it is looked up. The fields are written one by one where the row is, not a row
-    /// built aside and copied in: the copy loaded 8 or 16 bytes at a time what had just been
-    /// stored 4 bytes at a time and waited for the stores (a third of the index walk's
-    /// samples, issue 31).
+    /// else it is looked up; its slot is `slots`' (module doc), worked out only where the
+    /// handle is not the row's already. The fields are written one by one where the row is,
+    /// not a row built aside and copied in: the copy loaded 8 or 16 bytes at a time what had
+    /// just been stored 4 bytes at a time and waited for the stores (a third of the index
+    /// walk's samples, issue 31).
     #[inline]
     pub(crate) fn write(
         row: &mut Option<DriverInput>,
         e: &Entity,
         net: &RoadNetwork,
+        slots: Option<&LaneSlots>,
         looked_up: Option<(RoadHandle, i32, Real, LaneHandle)>,
     ) {
         let own = |road, lane, s: Real| match looked_up {
@@ -79,7 +103,7 @@ impl DriverInput {
             _ => net.lane_handle_on(road, lane, s),
         };
         let Some(r) = row else {
-            *row = Some(Self::with_own(e, own));
+            *row = Some(Self::with_own(e, own, slots));
             return;
         };
         r.id = e.id;
@@ -87,7 +111,7 @@ impl DriverInput {
         r.lateral_action = e.lateral_action.is_some();
         r.speed = e.speed;
         let (Some(rt), Some(t)) = (&mut r.track, &e.track) else {
-            r.track = Self::with_own(e, own).track;
+            r.track = Self::with_own(e, own, slots).track;
             return;
         };
         rt.road = t.road;
@@ -95,36 +119,53 @@ impl DriverInput {
         rt.s = t.s;
         rt.direction = t.direction;
         rt.blend_from = t.blend.as_ref().map(|b| b.from_lane);
-        match (looked_up, &mut rt.own) {
-            (Some((road, lane, at, h)), Some(o))
-                if (road, lane) == (t.road, t.lane_id) && at.to_bits() == t.s.to_bits() =>
-            {
-                o.road = h.road;
-                o.section = h.section;
-                o.lane = h.lane;
-            }
-            (_, o) => *o = own(t.road, t.lane_id, t.s),
+        let now = own(t.road, t.lane_id, t.s);
+        if rt.own != now {
+            rt.own = now;
+            rt.own_slot = slot_of(slots, now);
         }
     }
 
-    /// The row of `e`, its own lane's handle from `own(road, lane, s)`.
+    /// The row of `e`, its own lane's handle from `own(road, lane, s)` and that lane's slot
+    /// from `slots`.
     pub(crate) fn with_own(
         e: &Entity,
         own: impl FnOnce(RoadHandle, i32, Real) -> Option<LaneHandle>,
+        slots: Option<&LaneSlots>,
     ) -> Self {
         DriverInput {
             id: e.id,
             placed: e.placed,
             lateral_action: e.lateral_action.is_some(),
             speed: e.speed,
-            track: e.track.as_ref().map(|t| TrackInput {
-                road: t.road,
-                lane_id: t.lane_id,
-                s: t.s,
-                direction: t.direction,
-                blend_from: t.blend.as_ref().map(|b| b.from_lane),
-                own: own(t.road, t.lane_id, t.s),
+            track: e.track.as_ref().map(|t| {
+                let own = own(t.road, t.lane_id, t.s);
+                TrackInput {
+                    road: t.road,
+                    lane_id: t.lane_id,
+                    s: t.s,
+                    direction: t.direction,
+                    blend_from: t.blend.as_ref().map(|b| b.from_lane),
+                    own,
+                    own_slot: slot_of(slots, own),
+                }
             }),
         }
     }
 }
+
+/// The slot of lane `own` in the numbering `slots` ([`TrackInput::own_slot`]): [`NO_SLOT`]
+/// where there is no lane, no numbering or no slot of the lane.
+#[inline(never)]
+fn slot_of(slots: Option<&LaneSlots>, own: Option<LaneHandle>) -> u32 {
+    match (slots, own) {
+        (Some(slots), Some(h)) => slots
+            .slot(h)
+            .and_then(|k| u32::try_from(k).ok())
+            .unwrap_or(NO_SLOT),
+        _ => NO_SLOT,
+    }
+}
+
+// The own lane's slot sits in the row's padding (module doc).
+const _: () = assert!(std::mem::size_of::<Option<DriverInput>>() == 64);

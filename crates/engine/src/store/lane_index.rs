@@ -293,6 +293,8 @@ impl LaneIndex {
             self.borders.clear();
             self.kept.clear();
             self.boxes.clear();
+            // The rows' own lane slots are of the numbering (store/driver_inputs.rs).
+            self.inputs.clear();
             self.slots = Some(slots);
         }
         if !keep {
@@ -344,7 +346,8 @@ impl LaneIndex {
         let looked_up = self.enter(net, e, keep);
         // The track's lane at the track's s is the lane the road position names wherever
         // the two agree (the common case): its handle is the one just looked up.
-        DriverInput::write(&mut self.inputs[e.id.index()], e, net, looked_up);
+        let slots = self.slots.as_ref();
+        DriverInput::write(&mut self.inputs[e.id.index()], e, net, slots, looked_up);
     }
 
     /// Ends a step's build: the entries of the last step that stay take their entity's new
@@ -696,6 +699,7 @@ impl LaneIndex {
                         t.direction,
                         t.blend_from,
                         t.own,
+                        t.own_slot,
                     )
                 }),
             )
@@ -714,6 +718,14 @@ impl LaneIndex {
     /// [`nearest`](Self::nearest) and [`overlapping`](Self::overlapping).
     pub fn hint(&self, id: EntityId, kind: usize) -> Option<&AtomicU32> {
         self.hints.get(id.index() * HINTS + kind)
+    }
+
+    /// All [`HINTS`] hints of entity `id` ([`hint`](Self::hint) of each kind), for a caller
+    /// that takes several of them (controller/view.rs, the lanes beside).
+    #[inline]
+    pub(crate) fn hints(&self, id: EntityId) -> Option<&[AtomicU32; HINTS]> {
+        let at = id.index() * HINTS;
+        self.hints.get(at..at + HINTS)?.try_into().ok()
     }
 
     /// The entries of lane `h` (empty where no entity is in it).
@@ -908,8 +920,23 @@ impl LaneIndex {
         horizon: Real,
         hint: &AtomicU32,
     ) -> Option<Option<Neighbour>> {
-        let found = ahead_at_hint(self.lane(h)?, from, exclude, hint)?;
-        Some(within(found, 0.0, horizon))
+        proven_ahead_in(self.lane(h)?, from, exclude, horizon, hint)
+    }
+
+    /// [`nearest_ahead_proven`](Self::nearest_ahead_proven) of the lane at `slot`
+    /// ([`slot`](Self::slot) of its handle; a slot the index has no lane at, as
+    /// `driver_inputs::NO_SLOT`, for a handle without one): the driver models' own lane, whose
+    /// slot their inputs keep (store/driver_inputs.rs; issue 31).
+    #[inline(always)]
+    pub(crate) fn nearest_ahead_proven_at(
+        &self,
+        slot: u32,
+        from: Real,
+        exclude: EntityId,
+        horizon: Real,
+        hint: &AtomicU32,
+    ) -> Option<Option<Neighbour>> {
+        proven_ahead_in(self.lanes.get(slot as usize)?, from, exclude, horizon, hint)
     }
 
     /// The slot of lane `h` (store/lane_slots.rs), where its entries are: a function of the
@@ -939,6 +966,19 @@ impl LaneIndex {
             .get(slot)
             .is_some_and(|lane| occupied_at_hint(lane, range, exclude, hint))
     }
+}
+
+/// [`LaneIndex::nearest_ahead_proven`] in the entries `lane`.
+#[inline(always)]
+fn proven_ahead_in(
+    lane: &LaneEntries,
+    from: Real,
+    exclude: EntityId,
+    horizon: Real,
+    hint: &AtomicU32,
+) -> Option<Option<Neighbour>> {
+    let found = ahead_at_hint(lane, from, exclude, hint)?;
+    Some(within(found, 0.0, horizon))
 }
 
 /// [`LaneIndex::in_lane`] in `lane` by the search: out of line, so that the answer the hint
