@@ -2,6 +2,8 @@
 # Check OSI ground-truth traces with the official OSI Python bindings.
 #
 # Usage: scripts/osi_check.sh TRACE.osi|TRACE.mcap ...
+#        scripts/osi_check.sh --install   # only the venv and the packages (.ci/run fetches
+#                                         # them during its compilation)
 #   Creates or reuses a venv (OSI_CHECK_VENV, default .venv at the repository root),
 #   installs osi-python==3.8.0 and asam-osi-utilities==0.4.0 into it, then runs
 #   ../shared/tools/osi_check.py on every trace (OSI_CHECK_TOOL overrides the path)
@@ -42,6 +44,9 @@ if ! "$venv/bin/python" -c "import osi3, osi_utilities, mcap" 2>/dev/null; then
 fi
 "$venv/bin/python" -c "import osi3, osi_utilities, mcap" \
     || not_run "the OSI Python packages do not import after installation"
+if [ "$1" = --install ]; then
+    exit 0
+fi
 
 status=0
 for trace in "$@"; do

@@ -4,6 +4,8 @@
 # (crates/python/tests) and the worked example examples/python/aeb_in_the_loop.py.
 #
 # Usage: scripts/python_check.sh [PYTEST ARGS...]
+#        scripts/python_check.sh --install   # only the venv and the test tools (no build, no
+#                                            # tests): .ci/run fetches them during its compilation
 #   OSCSIM_PY_VENV  the venv (default .venv at the repository root, shared with the OSI check:
 #                   the same pinned osi-python decodes the ground truth there).
 #   OSCSIM          the oscsim binary the tests compare with (default target/release/oscsim;
@@ -11,6 +13,10 @@
 # Exit status: 0 when the package installs and every test passes; 1 otherwise.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+install_only=0
+if [ "${1:-}" = --install ]; then
+    install_only=1
+fi
 venv="${OSCSIM_PY_VENV:-$root/.venv}"
 cd "$root"
 if [ ! -x "$venv/bin/python" ]; then
@@ -26,6 +32,9 @@ py="$venv/bin/python"
 if ! ray_log="$("$py" -m pip install --quiet ray 2>&1)"; then
     export OSCSIM_SKIP_RAY="ray does not install on this platform: $(printf '%s' "$ray_log" | tail -n 1)"
     echo "python_check: $OSCSIM_SKIP_RAY" >&2
+fi
+if [ "$install_only" = 1 ]; then
+    exit 0
 fi
 # The README's install command.
 "$py" -m pip install --quiet ./crates/python
