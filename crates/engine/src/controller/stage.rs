@@ -253,46 +253,65 @@ fn walk<const SHORTCUT: bool>(
     if indexed {
         index.begin_moves(n);
     }
+    // Every commanded entity has its controllers' entry (its runs came from them); grown here
+    // once, in case, rather than asked of each command (`of_mut`'s growth check).
+    if let Some(last) = commanded.last() {
+        controllers.of_mut(last.entity as usize);
+    }
+    let (_, _, per_entity) = controllers.walk();
     let mut finite = true;
-    let tested = |e: &Entity| !e.placed || all_finite(e);
-    // The commands, in increasing entity index (the runs' order), met in the walk.
-    let mut commands = commanded.iter().peekable();
-    for i in 0..n {
-        let e = &mut entities[i];
-        match commands.next_if(|c| c.entity as usize == i) {
-            Some(c) if e.placed => {
-                let ctrl = controllers.of_mut(i);
-                // ACCELERATION names no place (u32::MAX: there are fewer merged commands
-                // than entities, whose ids are u32).
-                match merged.get(c.merged as usize) {
-                    None => apply(net, e, ctrl, &Merged::acceleration(c.a), dt),
-                    Some((_, m)) => apply(net, e, ctrl, m, dt),
-                }
-            }
-            _ => {
-                // Run option stop_at_red_lights (signals/red_light.rs); off: nothing.
-                signals.govern_speed(net, i, e, dt);
-                move_entity(net, e, dt, None);
-            }
-        }
-        // The entity moved before this one is tested and entered in the lane index now, not
-        // this one: a load of a value its move is still storing would wait for the store
-        // (the test, reading the values just written two at a time, took more than the
-        // separate walk it replaced).
-        if let Some(before) = i.checked_sub(1) {
-            let e = &entities[before];
-            finite &= tested(e);
+    // Called after the move of entity `i` (or with `i` = n after the last): the entity moved
+    // before it is tested and entered in the lane index now, not this one: a load of a value
+    // its move is still storing would wait for the store (the test, reading the values just
+    // written two at a time, took more than the separate walk it replaced).
+    let mut moved = |entities: &[Entity], i: usize| {
+        if let Some(e) = i.checked_sub(1).and_then(|before| entities.get(before)) {
+            finite &= !e.placed || all_finite(e);
             if indexed {
                 index.enter_moved(net, e);
             }
         }
-    }
-    if let Some(e) = entities.last() {
-        finite &= tested(e);
-        if indexed {
-            index.enter_moved(net, e);
+    };
+    // An entity without a command: run option stop_at_red_lights (signals/red_light.rs; off:
+    // nothing), then the default controller's move.
+    let mut by_default = |i: usize, e: &mut Entity| {
+        signals.govern_speed(net, i, e, dt);
+        move_entity(net, e, dt, None);
+    };
+    // The commands, in increasing entity index (the runs' order), each after the entities
+    // before it that have none.
+    let mut next = 0;
+    for c in commanded.iter() {
+        let i = c.entity as usize;
+        debug_assert!(i >= next, "the commands in increasing entity index");
+        while next < i.min(n) {
+            by_default(next, &mut entities[next]);
+            moved(entities, next);
+            next += 1;
         }
+        let (Some(e), Some(ctrl)) = (entities.get_mut(i), per_entity.get_mut(i)) else {
+            // Never: the command walk read entity i, and its entry was grown above.
+            continue;
+        };
+        if e.placed {
+            // ACCELERATION names no place (u32::MAX: there are fewer merged commands than
+            // entities, whose ids are u32).
+            match merged.get(c.merged as usize) {
+                None => apply(net, e, ctrl, &Merged::acceleration(c.a), dt),
+                Some((_, m)) => apply(net, e, ctrl, m, dt),
+            }
+        } else {
+            by_default(i, e);
+        }
+        moved(entities, i);
+        next = i + 1;
     }
+    while next < n {
+        by_default(next, &mut entities[next]);
+        moved(entities, next);
+        next += 1;
+    }
+    moved(entities, n);
     index.end_moves(indexed.then_some(n));
     controllers.stage = storage;
     finite

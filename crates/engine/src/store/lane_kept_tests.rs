@@ -152,13 +152,16 @@ pub(super) fn write_through_store(w: &mut World, i: usize, next: &mut impl FnMut
 /// (along its lane, across it, or placed anew where it leaves its road), then about one in
 /// ten written through the store in every way `write_through_store` has, a car spawned
 /// midway (not entered by any walk before), and every tenth step a moves' walk that enters
-/// nothing (no model holding a domain: the next build enters every entity). The comparison
+/// nothing (no model holding a domain: the next build enters every entity); every fifth step
+/// nothing is written between the walks (the refresh enters nothing: at the steps 3, 13, …,
+/// 193 of each road after a walk that entered every car, 20 per road; at 8, 18, …, 198 the
+/// walk before entered nothing, step % 10 == 7). The comparison
 /// is that of `LaneIndex::assert_same_as`: the lanes' entries in order, bounds and flags,
 /// footprints, driver inputs, bit for bit.
 #[test]
 fn entries_made_in_the_moves_walk_and_refreshed_where_written_give_the_full_builds_answers() {
     let mut next = generator(0x2545_f491_4f6c_dd1d);
-    let (mut steps, mut stood, mut refreshed) = (0, 0usize, 0usize);
+    let (mut steps, mut stood, mut refreshed, mut quiet) = (0, 0usize, 0usize, 0);
     for name in ["fabriksgatan.xodr", "two_plus_one.xodr", "e6mini.xodr"] {
         let (net, mut w) = traffic(name, &mut next);
         let mut index = LaneIndex::default();
@@ -173,7 +176,7 @@ fn entries_made_in_the_moves_walk_and_refreshed_where_written_give_the_full_buil
             }
             let n = w.entities().len();
             for i in 0..n {
-                if next() < 0.1 {
+                if step % 5 != 3 && next() < 0.1 {
                     write_through_store(&mut w, i, &mut next);
                     written += 1;
                 }
@@ -181,6 +184,7 @@ fn entries_made_in_the_moves_walk_and_refreshed_where_written_give_the_full_buil
             if entered_by_walk {
                 refreshed += written;
                 stood += n - written;
+                quiet += usize::from(written == 0);
             }
             index.refresh_from(&mut w);
             index.assert_same_as(&LaneIndex::build(&net, w.entities()));
@@ -211,6 +215,11 @@ fn entries_made_in_the_moves_walk_and_refreshed_where_written_give_the_full_buil
         }
     }
     assert_eq!(steps, 600);
+    assert_eq!(
+        quiet,
+        3 * 20,
+        "steps with nothing written after a walk that entered all"
+    );
     // About one car in ten written between the walks: the others' entries stood as the walk
     // made them (measured: 38,996 entity-steps stood, 4,234 entered anew).
     assert!(

@@ -87,6 +87,12 @@ impl LaneIndex {
             return false;
         }
         self.fit(n);
+        // Nothing written since the walk (the common case: no action between two steps wrote
+        // an entity): nothing to enter. Asked by an OR over every mark, which the compiler
+        // does 16 marks to an instruction, where the scan below tests them one by one.
+        if moved == n && !written.iter().fold(false, |any, &w| any | w) {
+            return true;
+        }
         let stale = |i: usize| i >= moved || written[i];
         let mut any = false;
         for i in (0..n).rev().filter(|&i| stale(i)) {
