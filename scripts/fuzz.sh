@@ -27,6 +27,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
+# fuzz/ is its own workspace and the binaries are run from fuzz/target below: a CARGO_TARGET_DIR
+# meant for the main workspace (.ci/run honours one) must not move them.
+unset CARGO_TARGET_DIR
 
 ci=0
 if [ "${1:-}" = --ci ]; then
