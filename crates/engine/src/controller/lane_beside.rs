@@ -3,8 +3,8 @@
 //! road at the entity's s driven the same way, its handle, whether it lies towards the keep
 //! side of the road's traffic rule, and whether the road mark between lets the entity cross.
 //! [`ControllerView::beside`](super::view::ControllerView::beside) asks it each time; the
-//! `mobil` controller keeps the answer ([`KeptRoad`]) with the stretch of road over which it
-//! holds, and asks again only when its entity has left that stretch or its lane.
+//! `mobil` controller keeps the answer ([`KeptRoad`]) with the range of s over which it
+//! holds, and asks again only when its entity has left that range or its lane.
 //!
 //! **Why.** The answer needs the road, its lane section at s (a search), the lane beside's
 //! type, both lanes' driving directions and the road mark in effect at s on the border (a
@@ -18,9 +18,26 @@
 //! s − the section's start on each side's border; nothing else. The section is the same while
 //! [`opendrive::SectionStretch::holds`] at s (the test `lane_section_index` makes, at the same
 //! s), the record while [`opendrive::MarkStretch::holds`] at ds (ds computed as the direct
-//! query computes it, from the same section start). So a kept answer is used only where the
-//! direct query would give it, bit for bit; anywhere else (a NaN s included) it is asked
-//! again. The road network of a run does not change.
+//! query computes it, from the same section start). So an answer holds wherever the key is
+//! the same and these three stretch tests hold; the road network of a run does not change.
+//!
+//! **One range of s.** For a fixed key the three stretch tests are a test of s alone, and
+//! each is of the form a ≤ f(s) or f(s) < b with f(s) = s + `LENGTH_EPSILON` or s − the
+//! section's start: rounding to nearest is monotone, so f never decreases as s grows, and
+//! each test holds on an interval of the doubles (a ≤ f(s) from some s on, f(s) < b up to
+//! some s). Their conjunction holds on the intersection, one interval: at every s between two
+//! doubles at which it holds. When the answer is asked, the ends [lo, hi] of that interval
+//! about the s asked at are found from the stretches' ends worked back to s (a rounding or
+//! two from the true ends) and moved a double at a time until the test holds at each and
+//! fails at the double beyond (`edge`); only the key and [lo, hi] are kept, and the test the
+//! `mobil` controller makes per step ([`KeptRoad::within`]) is the key and lo ≤ s ≤ hi,
+//! inline. So a kept answer is used only where the direct query would give it, bit for bit;
+//! anywhere else (a NaN s included) it is asked again. Where an end is not found in a few
+//! doubles the range stops short of it (at worst at the s asked at), never beyond where the
+//! test holds: the answer is then asked again sooner, the same answer (issue 31: the three
+//! tests and the key field by field, out of line, were ~52 instructions per `mobil`
+//! entity-step; the test `the_kept_range_of_s_is_the_stretches_test_at_their_ends` finds
+//! every end exact on four corpus roads).
 
 use opendrive::{
     Direction, LaneHandle, Real, RoadHandle, RoadNetwork, SectionStretch, TrafficRule,
@@ -52,12 +69,9 @@ pub(crate) struct RoadBeside {
     pub crossing_permitted: bool,
 }
 
-/// One side's answer and the stretch [from, to) of ds over which its road mark record holds
-/// (a side without a lane beside: every ds). Kept small: the controllers hold it by value.
+/// One side's answer. Kept small: the controllers hold it by value.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct SideAnswer {
-    from: Real,
-    to: Real,
     /// The lane beside, when `found`.
     lane: i32,
     found: bool,
@@ -66,10 +80,8 @@ struct SideAnswer {
 }
 
 impl SideAnswer {
-    /// No lane beside, at every ds.
+    /// No lane beside.
     const NONE: SideAnswer = SideAnswer {
-        from: Real::NEG_INFINITY,
-        to: Real::INFINITY,
         lane: 0,
         found: false,
         toward_keep_side: false,
@@ -77,25 +89,86 @@ impl SideAnswer {
     };
 }
 
-/// The question an answer was asked for: the track's road, lane, direction of travel and
-/// own lane handle.
+/// The stretches over which an answer holds (module doc): the section's, the section's start
+/// s (ds = s − this, as the direct query computes it) and each side's mark's [from, to) of ds
+/// (a side without a lane beside: every ds). Worked out when the answer is asked, to find
+/// its range of s; not kept.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Asked {
-    road: RoadHandle,
-    lane_id: i32,
-    direction: Direction,
-    own: Option<LaneHandle>,
+struct Stretches {
+    section: SectionStretch,
+    section_s: Real,
+    /// Left, right.
+    marks: [(Real, Real); 2],
 }
 
-impl Asked {
-    #[inline]
-    fn of(track: &TrackInput) -> Self {
-        Asked {
-            road: track.road,
-            lane_id: track.lane_id,
-            direction: track.direction,
-            own: track.own,
+impl Stretches {
+    /// The stretches' test at `s`: s in the section's stretch and s − the section's start in
+    /// both marks' (module doc).
+    fn hold_at(&self, s: Real) -> bool {
+        let ds = s - self.section_s;
+        let mark = |&(from, to): &(Real, Real)| from <= ds && ds < to;
+        self.section.holds(s) && mark(&self.marks[0]) && mark(&self.marks[1])
+    }
+
+    /// The range [lo, hi] of s over which the stretches hold, found about `s` (module doc
+    /// "One range of s"); empty (lo > hi) where they do not hold at `s` (a NaN s).
+    fn range(&self, s: Real) -> (Real, Real) {
+        let holds = |x: Real| self.hold_at(x);
+        if !holds(s) {
+            return (Real::INFINITY, Real::NEG_INFINITY);
         }
+        // Each stretch's ends as s: the section's tested at s + LENGTH_EPSILON, the marks'
+        // at s − the section's start.
+        let e = opendrive::LENGTH_EPSILON;
+        let [l, r] = self.marks;
+        let from = (self.section.from - e)
+            .max(self.section_s + l.0)
+            .max(self.section_s + r.0);
+        let to = (self.section.to - e)
+            .min(self.section_s + l.1)
+            .min(self.section_s + r.1);
+        (edge(holds, s, from, false), edge(holds, s, to, true))
+    }
+}
+
+/// The question an answer was asked for: the track's road, lane, direction of travel and
+/// own lane handle, packed into three words so that it is compared a word at a time (issue
+/// 31: the fields compared one by one, the handle behind its `Option`'s tag, were ~35
+/// instructions in the `mobil` step). One-to-one: the road and lane id (its bits) fill the
+/// first word; the own handle's road and section the second and its lane the third's low
+/// half, all zero without a handle; above them in the third, one bit for a handle and one
+/// for the direction. So two keys are equal exactly where the four fields are.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Asked([u64; 3]);
+
+impl Asked {
+    #[inline(always)]
+    fn of(track: &TrackInput) -> Self {
+        let pair = |low: u32, high: u32| u64::from(low) | u64::from(high) << 32;
+        let (some, own) = match track.own {
+            Some(h) => (1, h),
+            None => (
+                0,
+                LaneHandle {
+                    road: 0,
+                    section: 0,
+                    lane: 0,
+                },
+            ),
+        };
+        let backward = u32::from(track.direction == Direction::Backward);
+        Asked([
+            pair(track.road.0, track.lane_id as u32),
+            pair(own.road, own.section),
+            pair(own.lane as u32, some | backward << 1),
+        ])
+    }
+
+    /// `self == other`, the words folded into one test (no array compare through memory).
+    #[inline(always)]
+    fn same(&self, other: &Asked) -> bool {
+        let ([a, b, c], [x, y, z]) = (self.0, other.0);
+        (a ^ x) | (b ^ y) | (c ^ z) == 0
     }
 }
 
@@ -111,24 +184,95 @@ fn handle(road: RoadHandle, section: usize, lane: i32) -> LaneHandle {
     }
 }
 
-/// The answers of both sides for one track with the stretch they hold over (module doc).
+/// The answers of both sides for one track with the range of s over which they hold
+/// (module doc).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct KeptRoad {
     asked: Asked,
-    section: SectionStretch,
-    /// The section's start s (ds = s − this, as the direct query computes it).
-    section_s: Real,
+    /// The track's road (in `asked`).
+    road: RoadHandle,
+    /// The index of the section at the track's s.
+    section: u32,
     /// Left, right.
     sides: [SideAnswer; 2],
     /// The lane index's slot of each side's lane ([`LaneIndex::slot`], left, right), where
     /// its entries are: a function of the lane's handle and the network, as the handle is of
     /// the question, so it holds wherever the answer does.
     slots: [Option<u32>; 2],
+    /// The least and greatest s at which the stretches' test holds (module doc "One range of
+    /// s"; an empty range, lo > hi, where none was found).
+    lo: Real,
+    hi: Real,
+}
+
+/// How many doubles [`edge`] moves an end at most: the ends worked back from the stretches
+/// are a rounding or two from the true ones.
+const EDGE_STEPS: u32 = 8;
+
+/// The double next to `x` upwards (`up`) or downwards: `x` itself at the infinity that way
+/// and at a NaN. (`f64::next_up` and `next_down` are younger than the workspace's Rust 1.80.)
+fn adjacent(x: Real, up: bool) -> Real {
+    let end = if up {
+        Real::INFINITY
+    } else {
+        Real::NEG_INFINITY
+    };
+    if x.is_nan() || x == end {
+        return x;
+    }
+    if x == 0.0 {
+        // Either zero: the least subnormal that way.
+        let tiny = Real::from_bits(1);
+        return if up { tiny } else { -tiny };
+    }
+    // Away from zero the bits grow, towards it they shrink (sign and magnitude).
+    let bits = x.to_bits();
+    Real::from_bits(if (x > 0.0) == up { bits + 1 } else { bits - 1 })
+}
+
+/// The end of the interval of doubles where `holds` is true that lies upwards (`up`) or
+/// downwards from `inside`, at which it holds, found from `guess`: from the guess moved
+/// towards `inside` until `holds` is true (at most [`EDGE_STEPS`] doubles; else `inside`
+/// itself), then away while it holds a double further (at most as many). A double where
+/// `holds` is true, between `inside` and the true end, both included (module doc "One range
+/// of s": the set where it holds is an interval).
+fn edge(holds: impl Fn(Real) -> bool, inside: Real, guess: Real, up: bool) -> Real {
+    // A guess on the wrong side of `inside` (or NaN) starts at `inside`.
+    let mut x = if (up && guess >= inside) || (!up && guess <= inside) {
+        guess
+    } else {
+        inside
+    };
+    let mut n = 0;
+    while !holds(x) {
+        n += 1;
+        if n > EDGE_STEPS {
+            return inside;
+        }
+        x = adjacent(x, !up);
+    }
+    for _ in 0..EDGE_STEPS {
+        let further = adjacent(x, up);
+        if further == x || !holds(further) {
+            break;
+        }
+        x = further;
+    }
+    x
 }
 
 impl KeptRoad {
     /// The answers for `track`, asked of the road, with the slots of their lanes in `index`.
     pub fn ask(network: &RoadNetwork, index: &LaneIndex, track: &TrackInput) -> Self {
+        Self::ask_with_stretches(network, index, track).0
+    }
+
+    /// [`ask`](Self::ask) with the stretches the answers hold over.
+    fn ask_with_stretches(
+        network: &RoadNetwork,
+        index: &LaneIndex,
+        track: &TrackInput,
+    ) -> (Self, Stretches) {
         let road = network.road_at(track.road);
         let section = road.lane_section_stretch(track.s);
         let ls = &road.lane_sections[section.index];
@@ -137,6 +281,7 @@ impl KeptRoad {
             _ => Side::Right,
         };
         let ds = track.s - ls.s;
+        let every_ds = (Real::NEG_INFINITY, Real::INFINITY);
         let side = |side: Side| {
             let n = match side {
                 Side::Left => 1,
@@ -145,49 +290,55 @@ impl KeptRoad {
             let lane = lane_shift(track.lane_id, n, track.direction);
             let drivable = ls.lane(lane).is_some_and(|l| l.lane_type.is_drivable());
             let Some(own) = track.own.filter(|_| drivable) else {
-                return SideAnswer::NONE;
+                return (SideAnswer::NONE, every_ds);
             };
             if network.driving_direction(handle(track.road, section.index, lane))
                 != network.driving_direction(own)
             {
-                return SideAnswer::NONE;
+                return (SideAnswer::NONE, every_ds);
             }
             let mark = ls.lane_change_stretch(track.lane_id, lane, ds);
-            SideAnswer {
-                from: mark.from,
-                to: mark.to,
+            let answer = SideAnswer {
                 lane,
                 found: true,
                 toward_keep_side: side == keep,
                 crossing_permitted: mark.permitted,
-            }
+            };
+            (answer, (mark.from, mark.to))
         };
-        let sides = [side(Side::Left), side(Side::Right)];
+        let ((left, left_mark), (right, right_mark)) = (side(Side::Left), side(Side::Right));
+        let stretches = Stretches {
+            section,
+            section_s: ls.s,
+            marks: [left_mark, right_mark],
+        };
         let slot = |a: &SideAnswer| {
             let h = handle(track.road, section.index, a.lane);
             a.found
                 .then(|| index.slot(h).and_then(|k| u32::try_from(k).ok()))
                 .flatten()
         };
-        KeptRoad {
+        let (lo, hi) = stretches.range(track.s);
+        let kept = KeptRoad {
             asked: Asked::of(track),
-            section,
-            section_s: ls.s,
-            slots: [slot(&sides[0]), slot(&sides[1])],
-            sides,
-        }
+            road: track.road,
+            // As `handle` numbers it.
+            section: section.index as u32,
+            slots: [slot(&left), slot(&right)],
+            sides: [left, right],
+            lo,
+            hi,
+        };
+        (kept, stretches)
     }
 
-    /// Whether the answers hold for `track`: the same question, its s in the section's
-    /// stretch and its ds in both marks' (module doc).
-    #[inline]
-    pub fn holds(&self, track: &TrackInput) -> bool {
-        let ds = track.s - self.section_s;
-        let mark = |a: &SideAnswer| a.from <= ds && ds < a.to;
-        self.asked == Asked::of(track)
-            && self.section.holds(track.s)
-            && mark(&self.sides[0])
-            && mark(&self.sides[1])
+    /// Whether the answers hold for `track`, decided by the kept range of s: the same
+    /// question and lo ≤ s ≤ hi. True exactly where the stretches' test holds at s (module
+    /// doc "One range of s"), except near an end not found, where it is false and the answer
+    /// is asked again (the same answer).
+    #[inline(always)]
+    pub fn within(&self, track: &TrackInput) -> bool {
+        self.asked.same(&Asked::of(track)) && self.lo <= track.s && track.s <= self.hi
     }
 
     /// The answer on `side`: the lane there, or `None` when there is no drivable lane driven
@@ -200,7 +351,7 @@ impl KeptRoad {
         }];
         a.found.then(|| RoadBeside {
             lane: a.lane,
-            handle: handle(self.asked.road, self.section.index, a.lane),
+            handle: handle(self.road, self.section as usize, a.lane),
             toward_keep_side: a.toward_keep_side,
             crossing_permitted: a.crossing_permitted,
         })
@@ -227,13 +378,14 @@ impl KeptRoad {
     ) -> &'k KeptRoad {
         // By reference: `is_some_and` on the `Option` itself copied the kept answers (issue
         // 31).
-        if !kept.as_ref().is_some_and(|k| k.holds(track)) {
+        if !kept.as_ref().is_some_and(|k| k.within(track)) {
             *kept = None;
         }
         kept.get_or_insert_with(|| Self::ask_cold(network, index, track))
     }
 
     /// [`ask`](Self::ask) out of line: the kept answers' common case is the test alone.
+    #[cold]
     #[inline(never)]
     fn ask_cold(network: &RoadNetwork, index: &LaneIndex, track: &TrackInput) -> Self {
         Self::ask(network, index, track)
@@ -249,5 +401,279 @@ pub(crate) struct KeptBeside(pub Option<KeptRoad>);
 impl std::fmt::Debug for KeptBeside {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str("KeptBeside")
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+    use crate::store::driver_inputs::NO_SLOT;
+
+    /// The road network of esmini's corpus file `name` (`shared/corpus/esmini/xodr`).
+    pub(crate) fn esmini_road(name: &str) -> RoadNetwork {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../../shared/corpus/esmini/xodr")
+            .join(name);
+        RoadNetwork::from_file(&path).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// The ids of every lane of `road` but the centre lane, over all its sections.
+    pub(crate) fn lane_ids(road: &opendrive::Road) -> std::collections::BTreeSet<i32> {
+        road.lane_sections
+            .iter()
+            .flat_map(|ls| ls.lanes().map(|l| l.id))
+            .filter(|&id| id != 0)
+            .collect()
+    }
+
+    /// The doubles next to a few numbers, by hand: 1 + 2⁻⁵² above 1 and 1 − 2⁻⁵³ below it
+    /// (the spacing halves below a power of two), the least subnormal 2⁻¹⁰⁷⁴ either side of
+    /// both zeros, the largest finite double next to the infinities, and no move past an
+    /// infinity or from a NaN.
+    #[test]
+    fn adjacent_doubles_by_hand() {
+        assert_eq!(adjacent(1.0, true), 1.0 + 2f64.powi(-52));
+        assert_eq!(adjacent(1.0, false), 1.0 - 2f64.powi(-53));
+        assert_eq!(adjacent(-1.0, false), -1.0 - 2f64.powi(-52));
+        // 2⁻¹⁰⁷⁴ as a product of two normal doubles (`powi(-1074)` underflows on the way).
+        let tiny = 2f64.powi(-537) * 2f64.powi(-537);
+        assert_eq!(tiny.to_bits(), 1);
+        for zero in [0.0, -0.0] {
+            assert_eq!(adjacent(zero, true), tiny);
+            assert_eq!(adjacent(zero, false), -tiny);
+        }
+        assert_eq!(adjacent(tiny, false), 0.0);
+        assert_eq!(adjacent(Real::NEG_INFINITY, true), -Real::MAX);
+        assert_eq!(adjacent(Real::INFINITY, false), Real::MAX);
+        assert_eq!(adjacent(Real::MAX, true), Real::INFINITY);
+        assert_eq!(adjacent(Real::INFINITY, true), Real::INFINITY);
+        assert_eq!(adjacent(Real::NEG_INFINITY, false), Real::NEG_INFINITY);
+        assert!(adjacent(Real::NAN, true).is_nan());
+    }
+
+    /// `edge` on a test whose interval is known: x ≥ 2 and x < 3 holds on [2, 3 − 2⁻⁵¹]
+    /// (the spacing of the doubles in [2, 4) is 2⁻⁵¹). Found from guesses a few doubles off
+    /// either way, from the wrong side of the inside point and from a NaN (both from `inside`
+    /// then), and shrunk to `inside` where the end is farther than `EDGE_STEPS` doubles away
+    /// from a guess outside the interval.
+    #[test]
+    fn edge_finds_the_ends_of_a_known_interval() {
+        let holds = |x: Real| (2.0..3.0).contains(&x);
+        let below_3 = 3.0 - 2f64.powi(-51);
+        let nudge = |x: Real, n: i32, up: bool| (0..n).fold(x, |x, _| adjacent(x, up));
+        for n in 0..=3 {
+            assert_eq!(edge(holds, 2.5, nudge(2.0, n, true), false), 2.0);
+            assert_eq!(edge(holds, 2.5, nudge(2.0, n, false), false), 2.0);
+            assert_eq!(edge(holds, 2.5, nudge(3.0, n, true), true), below_3);
+            assert_eq!(edge(holds, 2.5, nudge(3.0, n, false), true), below_3);
+        }
+        // A guess above inside for the lower end: from inside, at most 8 doubles down.
+        assert_eq!(edge(holds, 2.5, 2.7, false), nudge(2.5, 8, false));
+        // From a NaN guess: from inside 2.5, whence the end 3 is 2⁵⁰ doubles away; the steps
+        // stop at 2.5 + 8·2⁻⁵¹.
+        let from_nan = edge(holds, 2.5, Real::NAN, true);
+        assert_eq!(from_nan, 2.5 + 8.0 * 2f64.powi(-51));
+        assert_eq!(from_nan, nudge(2.5, 8, true));
+        assert_eq!(
+            edge(holds, 2.5, 3.5, true),
+            2.5,
+            "a guess far outside: inside"
+        );
+    }
+
+    /// The kept range of s decides exactly where the stretches' test holds: on four corpus
+    /// roads (esmini's two_plus_one: five lane sections, lanes appearing and ending;
+    /// straight_500m_roadmarks: the mark type changing every 50–100 m; multi_intersections
+    /// and tunnels: junctions, several sections and marks), for a track in every lane and
+    /// direction of every road, asked at each section and mark start and at the doubles up
+    /// to three from it and from where s + `LENGTH_EPSILON` reaches it (the section search's
+    /// test), and at the road's ends and beyond them: `within` is `holds` at each of those
+    /// points and at the kept range's ends and the doubles next to them; each range holds
+    /// the s it was asked at, and its ends are the stretches' true ends (the test fails a
+    /// double beyond each finite end). So the inline test uses the kept answer exactly where
+    /// the stretches' test would.
+    #[test]
+    fn the_kept_range_of_s_is_the_stretches_test_at_their_ends() {
+        let index = LaneIndex::default();
+        let (mut asked, mut inside, mut outside, mut finite_ends) = (0, 0, 0, 0);
+        for name in [
+            "two_plus_one.xodr",
+            "straight_500m_roadmarks.xodr",
+            "multi_intersections.xodr",
+            "tunnels.xodr",
+        ] {
+            let net = esmini_road(name);
+            for (r, road) in net.roads().iter().enumerate() {
+                let mut starts = vec![0.0, road.length];
+                for ls in &road.lane_sections {
+                    starts.push(ls.s);
+                    let marks = ls.lanes().flat_map(|l| l.road_marks.iter());
+                    starts.extend(marks.map(|m| ls.s + m.s_offset));
+                }
+                let mut at = vec![-1.0, road.length + 1.0];
+                for b in starts {
+                    for c in [b, b - opendrive::LENGTH_EPSILON] {
+                        at.push(c);
+                        for up in [false, true] {
+                            let mut x = c;
+                            for _ in 0..3 {
+                                x = adjacent(x, up);
+                                at.push(x);
+                            }
+                        }
+                    }
+                }
+                at.sort_by(Real::total_cmp);
+                at.dedup();
+                let ids = lane_ids(road);
+                let road_handle = RoadHandle(r as u32);
+                for &lane_id in &ids {
+                    for direction in [Direction::Forward, Direction::Backward] {
+                        let track_at = |s: Real, own: Option<LaneHandle>| TrackInput {
+                            road: road_handle,
+                            lane_id,
+                            s,
+                            direction,
+                            blend_from: None,
+                            own,
+                            own_slot: NO_SLOT,
+                        };
+                        // The stretches' test in full: the same key, the three stretches.
+                        let holds = |k: &KeptRoad, st: &Stretches, t: &TrackInput| {
+                            k.asked.same(&Asked::of(t)) && st.hold_at(t.s)
+                        };
+                        let mut last: Option<(KeptRoad, Stretches)> = None;
+                        for &s in &at {
+                            let track = track_at(s, net.lane_handle_on(road_handle, lane_id, s));
+                            // A new answer only where the last one's stretches end: each range
+                            // is probed once.
+                            if last.is_some_and(|(k, st)| holds(&k, &st, &track)) {
+                                continue;
+                            }
+                            let (k, st) = KeptRoad::ask_with_stretches(&net, &index, &track);
+                            asked += 1;
+                            assert!(
+                                holds(&k, &st, &track) && k.within(&track),
+                                "{name} road {} s {s}",
+                                road.id
+                            );
+                            let mut probes = at.clone();
+                            for end in [k.lo, k.hi] {
+                                probes.extend([adjacent(end, false), end, adjacent(end, true)]);
+                                if end.is_finite() {
+                                    finite_ends += 1;
+                                }
+                            }
+                            for p in probes {
+                                let probe = track_at(p, track.own);
+                                let holds = holds(&k, &st, &probe);
+                                assert_eq!(
+                                    k.within(&probe),
+                                    holds,
+                                    "{name} road {} lane {lane_id} {direction:?} asked at {s}, s {p}, range [{}, {}]",
+                                    road.id,
+                                    k.lo,
+                                    k.hi
+                                );
+                                if holds {
+                                    inside += 1;
+                                } else {
+                                    outside += 1;
+                                }
+                            }
+                            last = Some((k, st));
+                        }
+                    }
+                }
+            }
+        }
+        assert!(
+            asked > 700 && finite_ends > 1_000 && inside > 25_000 && outside > 15_000,
+            "{asked} asked, {finite_ends} finite ends, {inside} probes inside, {outside} outside"
+        );
+    }
+
+    /// The packed key tells every pair of questions apart that differ in one field, and only
+    /// those: the road, the lane id (−1 against 1, whose bits differ in the sign), the
+    /// direction, no own handle against the handle (0, 0, 0), and each of the handle's road,
+    /// section and lane (lane −1 against 1 again).
+    #[test]
+    fn the_packed_key_is_the_four_fields() {
+        let h = |road, section, lane| LaneHandle {
+            road,
+            section,
+            lane,
+        };
+        let base = TrackInput {
+            road: RoadHandle(3),
+            lane_id: -1,
+            s: 10.0,
+            direction: Direction::Forward,
+            blend_from: None,
+            own: Some(h(3, 2, -1)),
+            own_slot: NO_SLOT,
+        };
+        let variants = [
+            TrackInput {
+                road: RoadHandle(4),
+                ..base
+            },
+            TrackInput { lane_id: 1, ..base },
+            TrackInput {
+                direction: Direction::Backward,
+                ..base
+            },
+            TrackInput { own: None, ..base },
+            TrackInput {
+                own: Some(h(0, 0, 0)),
+                ..base
+            },
+            TrackInput {
+                own: Some(h(4, 2, -1)),
+                ..base
+            },
+            TrackInput {
+                own: Some(h(3, 1, -1)),
+                ..base
+            },
+            TrackInput {
+                own: Some(h(3, 2, 1)),
+                ..base
+            },
+        ];
+        let mut all = vec![base];
+        all.extend(variants);
+        all.push(TrackInput {
+            own: None,
+            lane_id: 1,
+            direction: Direction::Backward,
+            ..base
+        });
+        for a in &all {
+            for b in &all {
+                let fields = |t: &TrackInput| (t.road, t.lane_id, t.direction, t.own);
+                assert_eq!(
+                    Asked::of(a) == Asked::of(b),
+                    fields(a) == fields(b),
+                    "{a:?} {b:?}"
+                );
+            }
+        }
+        // Only s and the lane left moving out of: the same question.
+        let moved = TrackInput {
+            s: 11.0,
+            blend_from: Some(-2),
+            ..base
+        };
+        assert_eq!(Asked::of(&moved), Asked::of(&base));
+        // By hand: road 3, lane −1 (bits 0xffff_ffff), handle (3, 2, −1), forward.
+        assert_eq!(
+            Asked::of(&base).0,
+            [
+                0xffff_ffff_0000_0003,
+                0x0000_0002_0000_0003,
+                0x0000_0001_ffff_ffff
+            ]
+        );
     }
 }

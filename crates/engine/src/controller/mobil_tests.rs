@@ -544,12 +544,7 @@ fn road_beside_directly(net: &RoadNetwork, track: &TrackInput, side: Side) -> Op
 /// stretch's end; crossings refused and lanes without a neighbour occur.
 #[test]
 fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
-    let corpus = |name: &str| {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../../../shared/corpus/esmini/xodr")
-            .join(name);
-        RoadNetwork::from_file(&path).unwrap_or_else(|e| panic!("{e}"))
-    };
+    let corpus = crate::controller::lane_beside::tests::esmini_road;
     let nets = [
         network(),
         corpus("two_plus_one.xodr"),
@@ -578,12 +573,7 @@ fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
             }
             at.sort_by(Real::total_cmp);
             at.push(Real::NAN);
-            let ids: std::collections::BTreeSet<i32> = road
-                .lane_sections
-                .iter()
-                .flat_map(|ls| ls.lanes().map(|l| l.id))
-                .filter(|&id| id != 0)
-                .collect();
+            let ids = crate::controller::lane_beside::tests::lane_ids(road);
             let road_handle = opendrive::RoadHandle(r as u32);
             for &lane_id in &ids {
                 for direction in [Direction::Forward, Direction::Backward] {
@@ -598,7 +588,7 @@ fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
                             own: net.lane_handle_on(road_handle, lane_id, s),
                             own_slot: NO_SLOT,
                         };
-                        if kept.is_some_and(|k: KeptRoad| k.holds(&track)) {
+                        if kept.is_some_and(|k: KeptRoad| k.within(&track)) {
                             kept_used += 1;
                         } else {
                             asked += 1;

@@ -94,8 +94,9 @@ impl LaneSlots {
 /// A lane of a section at s with the smaller and larger t of its two borders.
 pub(crate) type Borders = (i32, Real, Real);
 
-/// The borders of one road's lanes over an s-range where they stay the same numbers.
-#[derive(Debug, Clone, Default)]
+/// The borders of one road's lanes over an s-range [lo, hi] where they stay the same numbers;
+/// none kept ([`Kept::NONE`]) an empty range, lo > hi, that holds no s.
+#[derive(Debug, Clone)]
 struct Kept {
     lo: Real,
     hi: Real,
@@ -106,11 +107,23 @@ struct Kept {
     generation: u32,
 }
 
+impl Kept {
+    /// No list kept: a range that holds no s (and no NaN: every comparison with one fails).
+    const NONE: Kept = Kept {
+        lo: Real::INFINITY,
+        hi: Real::NEG_INFINITY,
+        lanes: Vec::new(),
+        generation: 0,
+    };
+}
+
 /// Lane borders per lane section, kept where constant (module doc).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct LaneBorders {
-    /// By road index, then lane section index.
-    kept: Vec<Vec<Option<Kept>>>,
+    /// By road index, then lane section index; [`Kept::NONE`] where no list is kept, so that
+    /// [`holds`](LaneBorders::holds) tests the range alone (no `Option` to test first: it is
+    /// inline on every entry of the lane index, issue 31).
+    kept: Vec<Vec<Kept>>,
     /// The list made at the last call outside a constant range.
     fresh: Vec<Borders>,
     /// The generation of the last kept list made.
@@ -140,21 +153,15 @@ impl LaneBorders {
             self.kept.resize_with(i + 1, Vec::new);
         }
         if self.kept[i].len() <= k {
-            self.kept[i].resize(k + 1, None);
+            self.kept[i].resize(k + 1, Kept::NONE);
         }
         if self.holds(road, section, s).is_none() {
             match r.constant_lanes(s) {
                 Some((lo, hi)) => {
-                    let mut lanes = self.kept[i][k].take().map(|k| k.lanes).unwrap_or_default();
-                    borders(r, s, &mut lanes);
+                    let kept = &mut self.kept[i][k];
+                    borders(r, s, &mut kept.lanes);
                     self.generations = self.generations.wrapping_add(1);
-                    let generation = self.generations;
-                    self.kept[i][k] = Some(Kept {
-                        lo,
-                        hi,
-                        lanes,
-                        generation,
-                    });
+                    (kept.lo, kept.hi, kept.generation) = (lo, hi, self.generations);
                 }
                 None => {
                     borders(r, s, &mut self.fresh);
@@ -162,24 +169,20 @@ impl LaneBorders {
                 }
             }
         }
-        // Invariant: set just above when it did not hold s.
-        self.kept[i][k]
-            .as_ref()
-            .map_or((&[], None), |k| (&k.lanes[..], Some(k.generation)))
+        // The list that held s, or the one made just above (whose range, `constant_lanes`'
+        // at s, holds s: opendrive road/constant_lanes.rs).
+        let kept = &self.kept[i][k];
+        (&kept.lanes[..], Some(kept.generation))
     }
 
     /// The generation of the list kept for `road`'s section `section` if its range holds
     /// `s`: [`at`](Self::at) gives that list there until another is made for the section.
-    #[inline]
+    /// Always inline: the lane index asks it for every entity it enters (issue 31: out of
+    /// line it was ~30 instructions per `mobil` entity-step with the call).
+    #[inline(always)]
     pub(crate) fn holds(&self, road: RoadHandle, section: u32, s: Real) -> Option<u32> {
-        match self
-            .kept
-            .get(road.index())
-            .and_then(|r| r.get(section as usize))
-        {
-            Some(Some(k)) if k.lo <= s && s <= k.hi => Some(k.generation),
-            _ => None,
-        }
+        let k = self.kept.get(road.index())?.get(section as usize)?;
+        (k.lo <= s && s <= k.hi).then_some(k.generation)
     }
 }
 
@@ -308,5 +311,40 @@ mod tests {
         let at = memo.at(RoadHandle(0), 1, road, 77.25).0.to_vec();
         let minus_one = at.iter().find(|b| b.0 == -1).expect("lane −1");
         assert!((minus_one.1 + 3.3725).abs() < 1e-12 && minus_one.2 == 0.0);
+    }
+
+    /// `holds` gives a kept list's generation exactly on its range and nothing elsewhere:
+    /// section 1's list, made at s 12.5, holds from 0 + 10⁻⁵ to 40 − 10⁻⁵ (`constant_lanes`
+    /// keeps `CONSTANT_MARGIN` = 10⁻⁵ m from the section's ends), both ends included, and not
+    /// a double beyond either; none at a NaN, in section 2 whose lane −1 widens (no list is
+    /// kept there: made at each call, `at` gives no generation), in a section or road never
+    /// asked; a second list for section 1 (made at s 2.0 after the first is forgotten) has a
+    /// generation of its own.
+    #[test]
+    fn the_kept_range_holds_exactly_between_its_ends() {
+        let net = network();
+        let road = &net.roads()[0];
+        let a = RoadHandle(0);
+        let mut memo = LaneBorders::default();
+        assert_eq!(memo.holds(a, 0, 12.5), None, "nothing asked yet");
+        let first = memo.at(a, 0, road, 12.5).1.expect("section 1 is constant");
+        let (lo, hi) = (1e-5, 40.0 - 1e-5);
+        let below = |x: Real| Real::from_bits(x.to_bits() - 1);
+        let above = |x: Real| Real::from_bits(x.to_bits() + 1);
+        for s in [lo, above(lo), 12.5, below(hi), hi] {
+            assert_eq!(memo.holds(a, 0, s), Some(first), "s = {s}");
+        }
+        for s in [below(lo), above(hi), 0.0, 40.0, Real::NAN] {
+            assert_eq!(memo.holds(a, 0, s), None, "s = {s}");
+        }
+        assert_eq!(memo.at(a, 1, road, 77.25).1, None, "section 2 widens");
+        assert_eq!(memo.holds(a, 1, 77.25), None);
+        assert_eq!(memo.holds(a, 2, 12.5), None, "no third section");
+        assert_eq!(memo.holds(RoadHandle(1), 0, 12.5), None, "no second road");
+        memo.clear();
+        assert_eq!(memo.holds(a, 0, 12.5), None, "forgotten");
+        let second = memo.at(a, 0, road, 2.0).1.expect("section 1 is constant");
+        assert_ne!(second, first);
+        assert_eq!(memo.holds(a, 0, hi), Some(second));
     }
 }
