@@ -105,7 +105,15 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
         -distance
     };
     let road = net.road_at(track.road);
-    let road_scale = along_scale(track_curvature(road, track), track.t);
+    // On a straight road the curvature is +0 (`track_curvature`), and `along_scale(+0, t)` is
+    // exactly 1.0: 1 − (+0)·t is 1 for a finite t (0·t = ±0) and 1 / 1 = 1; for an infinite
+    // or NaN t, 0·t and so k are NaN, which takes the scale's 1.0 branch. So there the scale
+    // is 1.0 without the product, the test and the division.
+    let road_scale = if road.plan_view.straight_heading().is_some() {
+        1.0
+    } else {
+        along_scale(track_curvature(road, track), track.t)
+    };
     // The speed is along the path: a lateral transition moving sideways at x·v leaves
     // v·√(1 − x²) along the lane (x taken over the step: mean of its start and end). Without
     // a transition the share is 0.
@@ -136,11 +144,14 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
     }
     e.at_lane_end = blocked;
     // Two copies of the placing, so that the move inside the memo's range (nearly every one)
-    // runs without the memo's tests instead of testing the flag in their place.
+    // runs without the memo's tests instead of testing the flag in their place. Inside the
+    // range the track is on the road it was on (`advance` set only its s), so the road is
+    // the one looked up above; otherwise the walk may have carried it onto another.
     if memo_holds {
-        place(net, e, true);
+        place(road, e, true);
     } else {
-        place(net, e, false);
+        let road = net.road_at(track.road);
+        place(road, e, false);
     }
 }
 
@@ -227,19 +238,21 @@ fn blended(
 /// Sets t, pose and road position of `e` from its track after a move (nothing without one).
 #[inline(never)]
 pub(crate) fn place_on_track(net: &RoadNetwork, e: &mut Entity) {
-    place(net, e, false);
+    if let Some(track) = &e.track {
+        place(net.road_at(track.road), e, false);
+    }
 }
 
 /// [`place_on_track`], always inlined into the move (no call, and the road and the track's
-/// memos it has just read stay in registers). `memo_holds`: the move stayed inside the
-/// track's lanes memo's range (world/lanes.rs `advance`, `memo_held`), so the lane answers
-/// are the memo's without testing its range again.
+/// memos it has just read stay in registers). `road`: the track's road (the caller has it).
+/// `memo_holds`: the move stayed inside the track's lanes memo's range (world/lanes.rs
+/// `advance`, `memo_held`), so the lane answers are the memo's without testing its range
+/// again.
 #[inline(always)]
-fn place(net: &RoadNetwork, e: &mut Entity, memo_holds: bool) {
+fn place(road: &Road, e: &mut Entity, memo_holds: bool) {
     let Some(track) = e.track.as_mut() else {
         return;
     };
-    let road = net.road_at(track.road);
     let Some((t, dt_ds, share)) = lateral(road, track, memo_holds) else {
         return;
     };
@@ -262,7 +275,7 @@ fn place(net: &RoadNetwork, e: &mut Entity, memo_holds: bool) {
     e.pose = pose;
     e.lateral_slope = share;
     set_road_position(
-        net,
+        road,
         track,
         normalize_angle(pose.h - road_h),
         &mut e.road_position,

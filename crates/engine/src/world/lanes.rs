@@ -438,17 +438,16 @@ fn anchor_blend(road: &Road, track: &mut LaneTrack, s: Real) {
 /// Sets `out` to the road position of `track` (no look-up: the track knows its road);
 /// `relative_heading` is the entity's heading minus the road's. The strings of the position
 /// `out` held are reused, so that a step allocates nothing. `None` where the track's lane
-/// section has no lanes at its s. `memo_holds`: [`memo_held`]. Always inlined into the move,
-/// its one caller.
+/// section has no lanes at its s. `road`: the track's road. `memo_holds`: [`memo_held`].
+/// Always inlined into the move, its one caller.
 #[inline(always)]
 pub fn set_road_position(
-    net: &RoadNetwork,
+    road: &Road,
     track: &mut LaneTrack,
     relative_heading: Real,
     out: &mut Option<RoadPosition>,
     memo_holds: bool,
 ) {
-    let road = net.road_at(track.road);
     let Some((lane_id, offset)) = track_lane_at(road, track, memo_holds) else {
         *out = None;
         return;
