@@ -133,6 +133,47 @@ impl RoadFrame {
         }
     }
 
+    /// The constants of [`pose_from`](Self::pose_from) on a flat, unbanked frame, `[cx, cy,
+    /// z']`, where that pose is `(x + cx − t·sin h, y + cy + t·cos h, z')` for every finite t;
+    /// `None` unless the pitch's and the roll's sines are +0 and their cosines 1 (the values
+    /// [`road_frame`] gives where the elevation's slope and the superelevation are zero, of
+    /// either sign).
+    ///
+    /// Why bit for bit: `cross_section` at height +0 with sin p = sin r = +0 and cos p =
+    /// cos r = 1 computes a = t·1 − (+0)·(+0) = t − (+0) = t (for every t, −0 included:
+    /// −0 − (+0) = −0), b = t·(+0) + (+0)·1 = (±0) + (+0) = +0 for a finite t (a sum of zeros
+    /// of opposite signs is +0 when rounding to nearest), fwd = b·sin p = +0, and then x + fwd·cos h − a·sin h
+    /// = (x + cx) − t·sin h with cx = (+0)·cos h, y + fwd·sin h + a·cos h = (y + cy) + t·cos h
+    /// with cy = (+0)·sin h, z + b·cos p = z + (+0) = z'. The same operations on the same
+    /// values in the same order, the zeros' signs included (cx and z' are kept as computed,
+    /// not assumed: x + cx is not x where x = −0 and cx = +0, z + (+0) is +0 where z = −0). An
+    /// infinite or NaN t gives b = NaN: the caller computes those in full.
+    #[inline]
+    pub(crate) fn flat_constants(&self) -> Option<[Real; 3]> {
+        let zero = |v: Real| v.to_bits() == 0.0_f64.to_bits();
+        (zero(self.sin_p) && self.cos_p == 1.0 && zero(self.sin_r) && self.cos_r == 1.0)
+            .then_some([0.0 * self.cos_h, 0.0 * self.sin_h, self.z + 0.0])
+    }
+
+    /// [`pose_from`](Self::pose_from) on a flat, unbanked frame given its
+    /// [`flat_constants`](Self::flat_constants) `[cx, cy, z']`, for a finite `t`.
+    #[inline(always)]
+    pub(crate) fn flat_pose_from(
+        &self,
+        [x, y]: [Real; 2],
+        t: Real,
+        [cx, cy, z]: [Real; 3],
+    ) -> Pose {
+        Pose {
+            x: (x + cx) - t * self.sin_h,
+            y: (y + cy) + t * self.cos_h,
+            z,
+            h: self.hdg,
+            p: self.pitch,
+            r: self.roll,
+        }
+    }
+
     /// Heading of the curve s ↦ place(t(s), height) in the horizontal plane, given dt/ds:
     /// the horizontal lateral offset is a = t·cos r − height·sin r, so the tangent is
     /// (1 − κa)·T + a′·N with a′ = t′·cos r − (t·sin r + height·cos r)·r′. The small forward

@@ -17,7 +17,10 @@
 //! (the argument of `constant_lanes`), so the elevation, pitch, roll and their sines and
 //! cosines are the same too. Every number of the frame but x and y is therefore the one at
 //! any other s of the range; x and y are computed here by the line's own formula, and the
-//! pose from them by the same `RoadFrame::pose_from`.
+//! pose from them by the same `RoadFrame::pose_from`, or, where the stretch is flat and
+//! unbanked (the pitch's and roll's sines +0, cosines 1) and t finite, by
+//! `RoadFrame::flat_pose_from` from constants kept with the stretch (the same operations on
+//! the same values: `RoadFrame::flat_constants`).
 
 use super::constant_lanes::{is_constant, narrow_to_record, CONSTANT_MARGIN};
 use super::frame::{road_frame, RoadFrame};
@@ -41,11 +44,13 @@ pub struct FrameStretch {
 }
 
 /// A straight stretch's frame: the line's start (s₀, x₀, y₀) and the frame at one s of the
-/// stretch, whose numbers other than x and y hold all along it (module doc).
+/// stretch, whose numbers other than x and y hold all along it (module doc), and where it is
+/// flat and unbanked the constants of its cross section ([`RoadFrame::flat_constants`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct LineFrame {
     start: [Real; 3],
     frame: RoadFrame,
+    flat: Option<[Real; 3]>,
 }
 
 impl FrameStretch {
@@ -64,12 +69,18 @@ impl FrameStretch {
 }
 
 impl LineFrame {
-    /// [`Road::pose`] at (s, t) for an s of the stretch (module doc).
+    /// [`Road::pose`] at (s, t) for an s of the stretch (module doc): on a flat, unbanked
+    /// stretch at a finite t by [`RoadFrame::flat_pose_from`], else by the full cross
+    /// section.
     #[inline(always)]
     fn pose(&self, s: Real, t: Real) -> Pose {
         let [s0, x0, y0] = self.start;
         let f = &self.frame;
-        f.pose_from(line::along([x0, y0], s - s0, [f.sin_h, f.cos_h]), t)
+        let xy = line::along([x0, y0], s - s0, [f.sin_h, f.cos_h]);
+        match self.flat {
+            Some(flat) if t.is_finite() => f.flat_pose_from(xy, t, flat),
+            _ => f.pose_from(xy, t),
+        }
     }
 }
 
@@ -104,9 +115,13 @@ impl Road {
         Some(FrameStretch {
             lo,
             hi,
-            line: straight.then(|| LineFrame {
-                start: [g.s, g.x, g.y],
-                frame: road_frame(self, s),
+            line: straight.then(|| {
+                let frame = road_frame(self, s);
+                LineFrame {
+                    start: [g.s, g.x, g.y],
+                    frame,
+                    flat: frame.flat_constants(),
+                }
             }),
         })
     }
@@ -128,6 +143,7 @@ impl Road {
 mod tests {
     use super::*;
     use crate::geometry::{Arc, Geometry, PlanView};
+    use crate::math::Cubic;
     use crate::road::constant_lanes::tests::cubic;
     use crate::road::frame::tests::straight_road;
 
@@ -281,6 +297,107 @@ mod tests {
         // The straight path was taken: the plain road's lines alone hold about 800 s of the
         // grid, each asked of two stretches at eight t (12,800).
         assert!(fast > 50_000, "the straight path was taken {fast} times");
+    }
+
+    /// The flat, unbanked stretch's shortcut ([`RoadFrame::flat_pose_from`]) against
+    /// [`Road::pose`], bit for bit, where the zeros' signs decide: lines from (−0, −0), (+0,
+    /// +0) and (1000, −2000) in eight headings (cos h and sin h of both signs, sin 0 = +0),
+    /// flat (no elevation, a constant −0, +0 or 12 m, a −0 superelevation) and not (a bank
+    /// of either sign: no shortcut there; a straight stretch's elevation is constant, so its
+    /// pitch is always +0), at the line's start (ds = 0, x = x₀ + 0·cos h, −0 where
+    /// x₀ = −0 and cos h < 0) and over the road, at t = ±0, ±1e-300, ±1.75, 1e3, ±∞ and NaN
+    /// (not finite: the full cross section).
+    #[test]
+    fn the_flat_stretch_gives_the_full_pose_bit_for_bit() {
+        use std::f64::consts::{FRAC_PI_2, PI};
+        let headings = [0.0, -0.0, 0.5, FRAC_PI_2, 2.5, PI, -2.5, -FRAC_PI_2];
+        let starts = [[-0.0, -0.0], [0.0, 0.0], [1000.0, -2000.0]];
+        // An elevation of −0 everywhere: a = b = c = d = −0 (−0 + ds·(−0) stays −0; a record
+        // of a = −0 with a +0 among b, c, d evaluates to +0).
+        let negative_zero = Cubic {
+            start: 0.0,
+            a: -0.0,
+            b: -0.0,
+            c: -0.0,
+            d: -0.0,
+        };
+        // (name, elevation, superelevation, flat)
+        let profiles: [(&str, Vec<Cubic>, Vec<Cubic>, bool); 7] = [
+            ("none", vec![], vec![], true),
+            ("z = -0", vec![negative_zero], vec![], true),
+            ("z = +0", vec![cubic(0.0, 0.0, -0.0)], vec![], true),
+            ("z = 12", vec![cubic(0.0, 12.0, 0.0)], vec![], true),
+            ("roll = -0", vec![], vec![cubic(0.0, -0.0, 0.0)], true),
+            ("banked", vec![], vec![cubic(0.0, 0.05, 0.0)], false),
+            (
+                "banked left",
+                vec![cubic(0.0, 2.0, 0.0)],
+                vec![cubic(0.0, -0.05, 0.0)],
+                false,
+            ),
+        ];
+        let mut grid: Vec<Real> = (0..=200).map(|i| Real::from(i) * 0.25).collect();
+        grid.extend([-0.0, 1e-300, CONSTANT_MARGIN, 50.0 - CONSTANT_MARGIN, 50.0]);
+        let ts = [
+            0.0,
+            -0.0,
+            1e-300,
+            -1e-300,
+            1.75,
+            -1.75,
+            1e3,
+            Real::INFINITY,
+            Real::NEG_INFINITY,
+            Real::NAN,
+        ];
+        let (mut flat_poses, mut negative_zero_x) = (0, 0);
+        for h in headings {
+            for [x0, y0] in starts {
+                for (name, elevation, superelevation, flat) in &profiles {
+                    let mut road = straight_road(50.0, Vec::new(), Vec::new());
+                    road.plan_view = PlanView::new(vec![Geometry::new(
+                        0.0,
+                        x0,
+                        y0,
+                        h,
+                        50.0,
+                        GeometryKind::Line,
+                    )]);
+                    road.elevation.clone_from(elevation);
+                    road.superelevation.clone_from(superelevation);
+                    let st = road.frame_stretch(25.0).expect("a stretch at 25 m");
+                    let line = st.line.expect("a line with constant profiles is straight");
+                    assert_eq!(line.flat.is_some(), *flat, "{name}, heading {h}");
+                    if *name == "z = -0" {
+                        // The frame's z is −0, the pose's z' = −0 + (+0) = +0.
+                        assert_eq!(line.frame.z.to_bits(), (-0.0_f64).to_bits());
+                        assert_eq!(line.flat.map(|f| f[2].to_bits()), Some(0));
+                    }
+                    for &s in &grid {
+                        for &t in &ts {
+                            let full = road.pose(s, t).expect("on the road");
+                            let given = road.pose_in(&st, s, t).expect("on the road");
+                            assert_eq!(
+                                bits(full),
+                                bits(given),
+                                "{name}, heading {h}, from ({x0}, {y0}), s = {s}, t = {t}: \
+                                 {full:?} against {given:?}"
+                            );
+                            if line.flat.is_some() && st.holds(s) && t.is_finite() {
+                                flat_poses += 1;
+                                negative_zero_x +=
+                                    usize::from(full.x.to_bits() == (-0.0_f64).to_bits());
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        // Every flat road asked at the grid's s it holds and the seven finite t; the line
+        // from (−0, −0) at s = 0 gave x = −0 (a heading whose cosine is negative, t = ±0 or
+        // 1e-300 against a sine of +0 or the like) more than once.
+        assert!(flat_poses > 8 * 3 * 5 * 190 * 7, "{flat_poses}");
+        assert!(negative_zero_x > 0, "{negative_zero_x}");
     }
 
     /// What the straight stretch computes, by hand: on the plain road's first line from
