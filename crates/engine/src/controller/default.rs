@@ -257,7 +257,7 @@ fn place(road: &Road, e: &mut Entity, memo_holds: bool) {
         return;
     };
     track.t = t;
-    let Ok(mut pose) = track_pose(road, track, t) else {
+    let Ok(mut pose) = track_pose(road, track, t, memo_holds) else {
         return;
     };
     // The pose's heading is the reference line's at s; the next move starts here and reads

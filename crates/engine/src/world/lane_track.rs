@@ -34,7 +34,10 @@ pub(crate) struct LaneTrack {
     /// (world/lanes.rs `curvature`; `None` until then).
     pub(crate) curvature: Option<CurvatureAt>,
     /// The followed lane's span and the lane look-up over an s-range where the road's lanes do
-    /// not change (world/lanes.rs; `None` where they do).
+    /// not change (world/lanes.rs; `None` where they do). Where it is kept, its range lies
+    /// inside `frame`'s stretch of the same road (made inside it, dropped where `frame` is
+    /// made anew around another range: world/lanes.rs `refresh_frame`), so that `frame`
+    /// holds every s the memo holds.
     pub(crate) lanes: Option<LanesMemo>,
     /// The road's frame stretch around the track's s as the last pose found it
     /// (world/lanes.rs `track_pose`; `None` until then).

@@ -158,14 +158,23 @@ fn track_span_anew(
         return Ok(m.span);
     }
     let span = road.lane_span(lane, s)?;
-    track.lanes = road.constant_lanes(track.s).map(|(lo, hi)| LanesMemo {
-        road: track.road,
-        lo,
-        hi,
-        lane,
-        span,
-        at: None,
-    });
+    // The memo is made inside the track's frame stretch at s (`LaneTrack::lanes`), so that a
+    // move inside it takes the pose from that stretch without testing it (`track_pose`).
+    let held = (track.frame.as_ref()).is_some_and(|f| f.road == track.road && f.stretch.holds(s));
+    if !held {
+        refresh_frame(road, track);
+    }
+    track.lanes = match (road.constant_lanes(s), &track.frame) {
+        (Some((lo, hi)), Some(f)) if f.road == track.road => Some(LanesMemo {
+            road: track.road,
+            lo: lo.max(f.stretch.lo),
+            hi: hi.min(f.stretch.hi),
+            lane,
+            span,
+            at: None,
+        }),
+        _ => None,
+    };
     Ok(span)
 }
 
@@ -173,22 +182,48 @@ fn track_span_anew(
 /// the track keeps while it holds s ([`Road::pose_in`]: on a straight stretch without a
 /// look-up, the same bits), else computed and the stretch around s kept. Always inlined
 /// into the move, its one caller (out of line, its pose came back through memory).
+/// `memo_holds` ([`memo_held`]): the lanes memo holds the track's road and s, and it lies
+/// inside the kept stretch (`LaneTrack::lanes`), so the stretch holds them too and is used
+/// without its road and range tests ([`Road::pose_in_held`]).
 #[inline(always)]
 pub(crate) fn track_pose(
     road: &Road,
     track: &mut LaneTrack,
     t: Real,
+    memo_holds: bool,
 ) -> Result<Pose, opendrive::Error> {
     let s = track.s;
+    if memo_holds {
+        if let Some(f) = &track.frame {
+            return road.pose_in_held(&f.stretch, s, t);
+        }
+    }
     match &track.frame {
         Some(f) if f.road == track.road && f.stretch.holds(s) => road.pose_in(&f.stretch, s, t),
         _ => {
-            track.frame = road.frame_stretch(s).map(|stretch| FrameAt {
-                road: track.road,
-                stretch,
-            });
+            refresh_frame(road, track);
             road.pose(s, t)
         }
+    }
+}
+
+/// Makes the track's frame stretch anew at its road and s ([`Road::frame_stretch`]), and
+/// drops a lanes memo that does not lie inside the new stretch, so that every kept memo
+/// does (`LaneTrack::lanes`; a track reversing into an old memo's range would otherwise
+/// take a stretch that no longer holds it).
+#[inline(never)]
+fn refresh_frame(road: &Road, track: &mut LaneTrack) {
+    track.frame = road.frame_stretch(track.s).map(|stretch| FrameAt {
+        road: track.road,
+        stretch,
+    });
+    let inside = match (&track.lanes, &track.frame) {
+        (None, _) => true,
+        (Some(m), Some(f)) => m.road == f.road && f.stretch.lo <= m.lo && m.hi <= f.stretch.hi,
+        (Some(_), None) => false,
+    };
+    if !inside {
+        track.lanes = None;
     }
 }
 

@@ -137,6 +137,18 @@ impl Road {
             _ => self.pose(s, t),
         }
     }
+
+    /// [`pose_in`](Self::pose_in) for an `s` the caller knows the stretch holds
+    /// ([`FrameStretch::holds`]; e.g. an s inside a range made inside the stretch), without
+    /// testing it: the same bits there. Given an s outside a straight stretch, the pose would
+    /// be extrapolated along its line instead of the road's.
+    #[inline(always)]
+    pub fn pose_in_held(&self, stretch: &FrameStretch, s: Real, t: Real) -> Result<Pose, Error> {
+        match &stretch.line {
+            Some(line) => Ok(line.pose(s, t)),
+            None => self.pose(s, t),
+        }
+    }
 }
 
 #[cfg(test)]
@@ -247,6 +259,10 @@ mod tests {
                     for &t in &ts {
                         let full = road.pose(s, t);
                         let given = road.pose_in(st, s, t);
+                        if st.holds(s) {
+                            let held = road.pose_in_held(st, s, t).expect("held: on the road");
+                            assert_eq!(bits(held), bits(road.pose(s, t).expect("on the road")));
+                        }
                         match (full, given) {
                             (Ok(a), Ok(b)) => assert_eq!(
                                 bits(a),
