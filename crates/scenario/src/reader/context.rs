@@ -179,16 +179,47 @@ impl<'a> Ctx<'a> {
 
     /// Required attribute `name` of `n`, resolved and converted to `T`.
     pub fn req<T: FromAttr>(&mut self, n: Node<'a>, name: &'static str) -> Result<T> {
-        match self.opt(n, name)? {
-            Some(v) => Ok(v),
-            None => Err(self.err(
+        let value = self.opt(n, name)?;
+        self.required(n, name, value)
+    }
+
+    /// `value` of attribute `name` of `n`, or the error that the attribute is missing.
+    fn required<T>(&self, n: Node<'a>, name: &'static str, value: Option<T>) -> Result<T> {
+        value.ok_or_else(|| {
+            self.err(
                 n,
                 ErrorKind::MissingAttribute {
                     element: n.tag_name().name().to_owned(),
                     attribute: name,
                 },
+            )
+        })
+    }
+
+    /// Optional attribute `name` of `n`, a double the model documents with "Range: [0..inf["
+    /// (Performance's maxima and rates, OpenSCENARIO XML 1.3 model documentation): a negative
+    /// value is an error at the attribute, as a value outside the type is.
+    pub fn opt_non_negative(&mut self, n: Node<'a>, name: &str) -> Result<Option<f64>> {
+        let value: Option<f64> = self.opt(n, name)?;
+        match (value, self.raw_attr(n, name)) {
+            (Some(v), Some(a)) if v < 0.0 => Err(Error::new(
+                ErrorKind::InvalidValue {
+                    element: n.tag_name().name().to_owned(),
+                    attribute: name.to_owned(),
+                    expected: "a double of at least 0 (range [0..inf[)".into(),
+                    found: v.to_string(),
+                },
+                self.attr_pos(&a),
             )),
+            _ => Ok(value),
         }
+    }
+
+    /// Required attribute `name` of `n`, a double of the range [0..inf[ (see
+    /// [`Ctx::opt_non_negative`]).
+    pub fn req_non_negative(&mut self, n: Node<'a>, name: &'static str) -> Result<f64> {
+        let value = self.opt_non_negative(n, name)?;
+        self.required(n, name, value)
     }
 
     /// Required attribute `name` that names a parameter (ParameterDeclaration@name,

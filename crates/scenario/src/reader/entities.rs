@@ -144,11 +144,11 @@ pub(crate) fn read_vehicle<'a>(ctx: &mut Ctx<'a>, n: Node<'a>) -> Result<Vehicle
         let bounding_box = read_bounding_box(ctx, n)?;
         let p = ctx.child(n, "Performance")?;
         let performance = Performance {
-            max_speed: ctx.req(p, "maxSpeed")?,
-            max_acceleration: ctx.req(p, "maxAcceleration")?,
-            max_deceleration: ctx.req(p, "maxDeceleration")?,
-            max_acceleration_rate: ctx.opt(p, "maxAccelerationRate")?,
-            max_deceleration_rate: ctx.opt(p, "maxDecelerationRate")?,
+            max_speed: ctx.req_non_negative(p, "maxSpeed")?,
+            max_acceleration: ctx.req_non_negative(p, "maxAcceleration")?,
+            max_deceleration: ctx.req_non_negative(p, "maxDeceleration")?,
+            max_acceleration_rate: ctx.opt_non_negative(p, "maxAccelerationRate")?,
+            max_deceleration_rate: ctx.opt_non_negative(p, "maxDecelerationRate")?,
         };
         let a = ctx.child(n, "Axles")?;
         let front_axle = match ctx.opt_child(a, "FrontAxle") {

@@ -64,6 +64,7 @@ error_cases!(
     unknown_monitor,
     dtd_entities,
     unclosed_expression,
+    negative_performance,
 );
 
 #[test]
