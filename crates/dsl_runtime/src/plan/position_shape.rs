@@ -29,6 +29,7 @@ use super::speed_actions::Slot;
 use super::types::{Planned, When};
 use crate::error::{Error, ErrorKind as K};
 use crate::resolve::{ModKind, Modifier};
+use crate::road::LENGTH_STEP;
 
 /// How far a duration from `rate_peak` may differ from the phase's and still agree (s).
 const DURATION_TOLERANCE: f64 = 1e-6;
@@ -133,7 +134,8 @@ impl Planner<'_> {
     /// rate_peak; `smooth`, `none`: 2 / (v₀ + rate_peak)): the first root, bracketed on a
     /// scan of [`SCAN_STEP`] s and bisected. Where x moves slower than the profile's mean
     /// speed T − k·Δ(T) rises, one root; with x as fast or faster, none within
-    /// [`SOLVE_HORIZON`]: an error naming both. `None` without a reference.
+    /// [`SOLVE_HORIZON`]: an error naming both, at once where g is shown linear and falling
+    /// (a `projected` x past the roads' end: [`bracket`]). `None` without a reference.
     pub(super) fn shaped_place_at_rate(
         &self,
         m: &Modifier,
@@ -177,20 +179,38 @@ impl Planner<'_> {
             // Nothing ahead to cover: plan_position_shape's refusal names the distance.
             return Ok(Some(place(0.0)));
         }
-        let mut lo = 0.0;
-        let hi = loop {
-            let next = lo + SCAN_STEP;
-            if next > SOLVE_HORIZON {
-                let (side, v_mean) = (if sign > 0.0 { "ahead of" } else { "behind" }, 1.0 / k);
-                return Err(e.site.err(
-                    K::Unsatisfiable,
-                    format!("expected `{target}` to reach its place {d} m {side} `{x}` at the rate of `{}(…)`'s shape (a mean {v_mean:.2} m/s), found `{x}` moving away as fast: no end within {SOLVE_HORIZON} s where the profile covering the distance to `{x}`'s place then takes that long", m.name),
-                ));
+        // g's tail, where it is linear (see `Linear`): `projected` x's place is sx0 + vx0·span,
+        // and lane_distance counts 1 m per m of s on the steps that end past the roads
+        // (`PlanRoad::lane_distance`), the same steps before them for every place past
+        // the roads' end + one step; in +s, where its steps start at s0 whatever the place.
+        let end = self.road.length() + LENGTH_STEP;
+        let tail = |span: f64| -> Option<Linear> {
+            if !m.projected || self.road.is_against() {
+                return None;
             }
-            if g(next) >= 0.0 {
-                break next;
+            let here = place(span);
+            if here <= end.max(s0) {
+                return None;
             }
-            lo = next;
+            let there = place(SOLVE_HORIZON);
+            let steps = (there - s0).abs() / LENGTH_STEP + 4.0;
+            let scale = SOLVE_HORIZON
+                + k * ((here - s0).abs()
+                    + (there - here).abs()
+                    + d.abs()
+                    + sx0.abs()
+                    + (vx0 * SOLVE_HORIZON).abs());
+            Some(Linear {
+                slope: 1.0 - k * vx0 + 4.0 * f64::EPSILON * (1.0 + (k * vx0).abs()),
+                err: steps * f64::EPSILON * scale,
+            })
+        };
+        let Some((lo, hi)) = bracket(&g, &tail) else {
+            let (side, v_mean) = (if sign > 0.0 { "ahead of" } else { "behind" }, 1.0 / k);
+            return Err(e.site.err(
+                K::Unsatisfiable,
+                format!("expected `{target}` to reach its place {d} m {side} `{x}` at the rate of `{}(…)`'s shape (a mean {v_mean:.2} m/s), found `{x}` moving away as fast: no end within {SOLVE_HORIZON} s where the profile covering the distance to `{x}`'s place then takes that long", m.name),
+            ));
         };
         let (mut a, mut b) = (lo, hi);
         for _ in 0..BISECTIONS {
@@ -213,9 +233,109 @@ fn profile_error(m: &Modifier, other: &str) -> Error {
     )
 }
 
+/// g from a span on: linear in the span with a slope at most `slope`, each value computed
+/// within `err` of the linear one (the rounding of its sums).
+struct Linear {
+    slope: f64,
+    err: f64,
+}
+
+/// The first step of the scan of `g` from 0 to [`SOLVE_HORIZON`] by [`SCAN_STEP`] at whose
+/// end g ≥ 0 (`g(0)` < 0): (its start, its end), `None` when no step's end reaches 0.
+/// Where `tail` shows g linear from a step's end on, with a slope ≤ 0 and g there below
+/// −2·err, no later end reaches 0 either (each is at most g there + 2·err): `None` at
+/// once, the answer of the whole scan without the evaluations after (3,600 s of a reference
+/// moving away as fast as the profile's mean, each one a sum over the lane from the actor
+/// to the place); a root found is found by the same evaluations as without `tail`.
+fn bracket(g: &dyn Fn(f64) -> f64, tail: &dyn Fn(f64) -> Option<Linear>) -> Option<(f64, f64)> {
+    let mut lo = 0.0;
+    loop {
+        let next = lo + SCAN_STEP;
+        if next > SOLVE_HORIZON {
+            return None;
+        }
+        let here = g(next);
+        if here >= 0.0 {
+            return Some((lo, next));
+        }
+        if let Some(l) = tail(next) {
+            if l.slope <= 0.0 && here + 2.0 * l.err < 0.0 {
+                return None;
+            }
+        }
+        lo = next;
+    }
+}
+
 /// How far the end of a shaped position relative to another actor is searched (s).
 const SOLVE_HORIZON: f64 = 3600.0;
 /// The scan that brackets its first root (s).
 const SCAN_STEP: f64 = 0.5;
 /// Halvings of the bracket: 0.5 s / 2⁶⁰, below f64's resolution of the end.
 const BISECTIONS: usize = 60;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// g of err_position_shape_unreachable.osc with a lead at `vx`: ego from s = 50 m at a
+    /// mean 20 m/s (k = 1/20) to 20 m behind lead's projected 150 + vx·T, off the roads (1 m
+    /// of lane per m of s).
+    fn g_of(vx: f64) -> impl Fn(f64) -> f64 {
+        move |span: f64| span - (-20.0 + (150.0 + vx * span) - 50.0) / 20.0
+    }
+
+    /// Its tail: linear everywhere (no road), slope 1 − vx/20, as the planner bounds it.
+    fn tail_of(vx: f64) -> impl Fn(f64) -> Option<Linear> {
+        move |_| {
+            Some(Linear {
+                slope: 1.0 - vx / 20.0 + 4.0 * f64::EPSILON * (1.0 + vx / 20.0),
+                err: 1e-9,
+            })
+        }
+    }
+
+    fn never(_: f64) -> Option<Linear> {
+        None
+    }
+
+    #[test]
+    fn the_tail_answers_as_the_whole_scan() {
+        // The fixture, vx = 30: g(T) = T − (80 + 30T)/20 = −4 − 0.5T, no root (the full
+        // scan's None), and the tail says so at the first step.
+        let calls = std::cell::Cell::new(0);
+        let g = g_of(30.0);
+        let counted = |s: f64| {
+            calls.set(calls.get() + 1);
+            g(s)
+        };
+        assert_eq!(bracket(&g, &never), None);
+        assert_eq!(bracket(&counted, &tail_of(30.0)), None);
+        assert_eq!(calls.get(), 1);
+        // vx = 20: g = −4 throughout, slope 0: no root either way.
+        assert_eq!(bracket(&g_of(20.0), &never), None);
+        assert_eq!(bracket(&g_of(20.0), &tail_of(20.0)), None);
+        // A late root: vx = 20(1 − 1/750) makes g = T/750 − 4, 0 at T = 3000 s; slope > 0,
+        // so the tail proves nothing and the scan brackets it in (2999.5, 3000] either way
+        // (g(3000) is 0 up to rounding of the sum: the same bits both ways).
+        let vx = 20.0 * (1.0 - 1.0 / 750.0);
+        let full = bracket(&g_of(vx), &never).expect("a root by 3000 s");
+        assert!((full.1 - 3000.0).abs() <= SCAN_STEP, "{full:?}");
+        assert_eq!(bracket(&g_of(vx), &tail_of(vx)), Some(full));
+        // g below 0 by less than 2·err at the step: the tail must not answer.
+        let tiny = |_: f64| -1e-9;
+        let loose = |_: f64| {
+            Some(Linear {
+                slope: -1.0,
+                err: 1e-9,
+            })
+        };
+        let calls = std::cell::Cell::new(0);
+        let counted = |s: f64| {
+            calls.set(calls.get() + 1);
+            tiny(s)
+        };
+        assert_eq!(bracket(&counted, &loose), None);
+        assert_eq!(calls.get(), 7200);
+    }
+}

@@ -427,7 +427,7 @@ fn renumbers_lanes(net: &RoadNetwork, k: usize) -> bool {
 }
 
 /// Sampling step in s of lane centre lengths (m).
-const LENGTH_STEP: f64 = 0.25;
+pub(crate) const LENGTH_STEP: f64 = 0.25;
 
 impl PlanRoad<'_> {
     /// The same roads in +s (the view's lengths along lanes are those in +s, reversed).
