@@ -184,7 +184,7 @@ impl Planner<'_> {
         // (`PlanRoad::lane_distance`), the same steps before them for every place past
         // the roads' end + one step; in +s, where its steps start at s0 whatever the place.
         let end = self.road.length() + LENGTH_STEP;
-        let tail = |span: f64| -> Option<Linear> {
+        let tail = |span: f64, g_span: f64| -> Option<Linear> {
             if !m.projected || self.road.is_against() {
                 return None;
             }
@@ -195,11 +195,8 @@ impl Planner<'_> {
             let there = place(SOLVE_HORIZON);
             let steps = (there - s0).abs() / LENGTH_STEP + 4.0;
             let scale = SOLVE_HORIZON
-                + k * ((here - s0).abs()
-                    + (there - here).abs()
-                    + d.abs()
-                    + sx0.abs()
-                    + (vx0 * SOLVE_HORIZON).abs());
+                + (span - g_span).abs()
+                + k * ((there - here).abs() + d.abs() + sx0.abs() + (vx0 * SOLVE_HORIZON).abs());
             Some(Linear {
                 slope: 1.0 - k * vx0 + 4.0 * f64::EPSILON * (1.0 + (k * vx0).abs()),
                 err: steps * f64::EPSILON * scale,
@@ -234,7 +231,8 @@ fn profile_error(m: &Modifier, other: &str) -> Error {
 }
 
 /// g from a span on: linear in the span with a slope at most `slope`, each value computed
-/// within `err` of the linear one (the rounding of its sums).
+/// within `err` of the linear one (the rounding of its sums; k·Δ there is span − g, Δ the
+/// lane's length, which exceeds the s covered on a bend).
 struct Linear {
     slope: f64,
     err: f64,
@@ -247,7 +245,10 @@ struct Linear {
 /// once, the answer of the whole scan without the evaluations after (3,600 s of a reference
 /// moving away as fast as the profile's mean, each one a sum over the lane from the actor
 /// to the place); a root found is found by the same evaluations as without `tail`.
-fn bracket(g: &dyn Fn(f64) -> f64, tail: &dyn Fn(f64) -> Option<Linear>) -> Option<(f64, f64)> {
+fn bracket(
+    g: &dyn Fn(f64) -> f64,
+    tail: &dyn Fn(f64, f64) -> Option<Linear>,
+) -> Option<(f64, f64)> {
     let mut lo = 0.0;
     loop {
         let next = lo + SCAN_STEP;
@@ -258,7 +259,7 @@ fn bracket(g: &dyn Fn(f64) -> f64, tail: &dyn Fn(f64) -> Option<Linear>) -> Opti
         if here >= 0.0 {
             return Some((lo, next));
         }
-        if let Some(l) = tail(next) {
+        if let Some(l) = tail(next, here) {
             if l.slope <= 0.0 && here + 2.0 * l.err < 0.0 {
                 return None;
             }
@@ -286,8 +287,8 @@ mod tests {
     }
 
     /// Its tail: linear everywhere (no road), slope 1 − vx/20, as the planner bounds it.
-    fn tail_of(vx: f64) -> impl Fn(f64) -> Option<Linear> {
-        move |_| {
+    fn tail_of(vx: f64) -> impl Fn(f64, f64) -> Option<Linear> {
+        move |_, _| {
             Some(Linear {
                 slope: 1.0 - vx / 20.0 + 4.0 * f64::EPSILON * (1.0 + vx / 20.0),
                 err: 1e-9,
@@ -295,7 +296,7 @@ mod tests {
         }
     }
 
-    fn never(_: f64) -> Option<Linear> {
+    fn never(_: f64, _: f64) -> Option<Linear> {
         None
     }
 
@@ -324,7 +325,7 @@ mod tests {
         assert_eq!(bracket(&g_of(vx), &tail_of(vx)), Some(full));
         // g below 0 by less than 2·err at the step: the tail must not answer.
         let tiny = |_: f64| -1e-9;
-        let loose = |_: f64| {
+        let loose = |_: f64, _: f64| {
             Some(Linear {
                 slope: -1.0,
                 err: 1e-9,
