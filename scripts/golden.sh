@@ -32,7 +32,8 @@ case "${1:-}" in
 esac
 if [ -z "${OSCSIM:-}" ]; then
     cargo build --release --locked --quiet -p oscsim-cli --manifest-path "$root/Cargo.toml"
-    OSCSIM="$root/target/release/oscsim"
+    # Where cargo built it: CARGO_TARGET_DIR when set (as .ci/run honours it), else target/.
+    OSCSIM="${CARGO_TARGET_DIR:-$root/target}/release/oscsim"
 fi
 corpus="$(cd "${CORPUS:-$root/../shared/corpus}" && pwd)"
 out="${GOLDEN_OUT:-$root/target/golden}"

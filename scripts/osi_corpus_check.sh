@@ -24,7 +24,8 @@
 set -uo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:-$root/target/osi-corpus}"
-oscsim="${OSCSIM:-$root/target/release/oscsim}"
+# The release binary where cargo builds: CARGO_TARGET_DIR when set, else target/.
+oscsim="${OSCSIM:-${CARGO_TARGET_DIR:-$root/target}/release/oscsim}"
 corpus="${CORPUS:-$root/../shared/corpus}"
 duration="${OSI_CORPUS_DURATION:-full}"
 
