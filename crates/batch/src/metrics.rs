@@ -48,7 +48,7 @@ pub struct Observer<'n> {
 
 /// Keeps the smaller of `slot` and a finite `value`.
 fn min_into(slot: &mut Option<f64>, value: f64) {
-    if value.is_finite() && slot.map_or(true, |old| value < old) {
+    if value.is_finite() && slot.is_none_or(|old| value < old) {
         *slot = Some(value);
     }
 }

@@ -90,7 +90,7 @@ impl Default for Options {
 /// The variant numbers this process runs, ascending.
 pub fn selected(plan: &Plan, options: &Options) -> Vec<u64> {
     (0..plan.variants.len() as u64)
-        .filter(|&v| options.shard.contains(v) && options.only.map_or(true, |o| o == v))
+        .filter(|&v| options.shard.contains(v) && options.only.is_none_or(|o| o == v))
         .collect()
 }
 

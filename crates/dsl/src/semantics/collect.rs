@@ -444,7 +444,7 @@ fn compound_named(
     diags: &mut Vec<Diagnostic>,
 ) -> Option<CompoundId> {
     match m.types.get(&q.text()) {
-        Some((TypeName::Compound(c), _)) if kind.map_or(true, |k| m.compound(*c).kind == k) => {
+        Some((TypeName::Compound(c), _)) if kind.is_none_or(|k| m.compound(*c).kind == k) => {
             Some(*c)
         }
         Some(_) => {

@@ -151,7 +151,7 @@ impl Table {
         if scope.library {
             // The library's own references never reach a file's declarations.
             return match self.library(class, name) {
-                Some(l) if prefix.map_or(true, |p| p == l.namespace) => Ok(l.key.clone()),
+                Some(l) if prefix.is_none_or(|p| p == l.namespace) => Ok(l.key.clone()),
                 _ => Err(Unresolved::Unknown),
             };
         }

@@ -496,11 +496,9 @@ impl Rel {
             Rel::Through(_, _, turn, cw, n) => connecting(net, y, x).is_some_and(|c| {
                 let junction = net.roads()[c.road as usize].junction.as_deref();
                 let at = junction.unwrap_or_default();
-                turn.map_or(true, |t| heading_change(net, y, x).map(Turn::of) == Some(t))
-                    && n.map_or(true, |n| {
-                        map_junctions::number_of_roads(net, at) == n as usize
-                    })
-                    && cw.map_or(true, |k| {
+                turn.is_none_or(|t| heading_change(net, y, x).map(Turn::of) == Some(t))
+                    && n.is_none_or(|n| map_junctions::number_of_roads(net, at) == n as usize)
+                    && cw.is_none_or(|k| {
                         let (from, to) = (y.road as usize, x.road as usize);
                         map_junctions::clockwise_count(net, at, from, to) == Some(k)
                     })

@@ -113,7 +113,7 @@ impl Planner<'_> {
             let moved = self
                 .engine_moved
                 .get(&e.name)
-                .is_some_and(|since| since.map_or(true, |s| s <= t));
+                .is_some_and(|since| since.is_none_or(|s| s <= t));
             if moved {
                 return None;
             }

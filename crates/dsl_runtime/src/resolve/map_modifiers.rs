@@ -395,7 +395,7 @@ fn read_map(ctx: &Ctx<'_>, app: &ModifierApp, name: &str) -> Result<MapModifier,
                     format!("expected lateral_overlap: never for two routes driven in opposite directions (each lane of an OpenDRIVE road has one driving direction, so two never share their width), found {k}"),
                 ));
             }
-            if !arg(&args, "route1").is_some_and(|a| field(ctx, a, true).is_ok()) {
+            if arg(&args, "route1").is_none_or(|a| field(ctx, a, true).is_err()) {
                 // Route fields: containing_road, when given, is a road field, the plan's
                 // roads, which hold both.
                 if let Some(a) = arg(&args, "containing_road") {

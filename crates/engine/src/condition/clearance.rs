@@ -149,7 +149,7 @@ pub(crate) fn clear<Q: EntityQuery + ?Sized>(
             c.relative_lane_ranges.is_empty()
                 || c.relative_lane_ranges
                     .iter()
-                    .any(|&(from, to)| from.map_or(true, |f| f <= k) && to.map_or(true, |t| k <= t))
+                    .any(|&(from, to)| from.is_none_or(|f| f <= k) && to.is_none_or(|t| k <= t))
         };
         let in_lanes = in_range(rp.lane_id)
             || (c.free_space && box_lanes(network, &other, &rp.road_id).any(in_range));

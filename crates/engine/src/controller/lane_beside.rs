@@ -209,25 +209,14 @@ pub(crate) struct KeptRoad {
 /// are a rounding or two from the true ones.
 const EDGE_STEPS: u32 = 8;
 
-/// The double next to `x` upwards (`up`) or downwards: `x` itself at the infinity that way
-/// and at a NaN. (`f64::next_up` and `next_down` are younger than the workspace's Rust 1.80.)
+/// The double next to `x` upwards (`up`) or downwards (std's `next_up` / `next_down`): `x`
+/// itself at the infinity that way and at a NaN.
 fn adjacent(x: Real, up: bool) -> Real {
-    let end = if up {
-        Real::INFINITY
+    if up {
+        x.next_up()
     } else {
-        Real::NEG_INFINITY
-    };
-    if x.is_nan() || x == end {
-        return x;
+        x.next_down()
     }
-    if x == 0.0 {
-        // Either zero: the least subnormal that way.
-        let tiny = Real::from_bits(1);
-        return if up { tiny } else { -tiny };
-    }
-    // Away from zero the bits grow, towards it they shrink (sign and magnitude).
-    let bits = x.to_bits();
-    Real::from_bits(if (x > 0.0) == up { bits + 1 } else { bits - 1 })
 }
 
 /// The end of the interval of doubles where `holds` is true that lies upwards (`up`) or

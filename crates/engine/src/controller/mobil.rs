@@ -249,7 +249,7 @@ impl MobilController {
             return;
         };
         if let Some(margin) = self.judge(view, own, &b) {
-            if best.map_or(true, |(m, _)| margin > m) {
+            if best.is_none_or(|(m, _)| margin > m) {
                 *best = Some((margin, b.lane));
             }
         }
@@ -402,7 +402,7 @@ impl Mandatory {
                     let new_follower = found.map(|n| {
                         Weighed::new_follower(p, n, own.v, own.len, lane_leader).change(p)
                     });
-                    if new_follower.map_or(true, |n| mobil.safe_for_follower(n.after)) {
+                    if new_follower.is_none_or(|n| mobil.safe_for_follower(n.after)) {
                         return Some(b.lane);
                     }
                     // A new follower too close: waited out where the changer's speed

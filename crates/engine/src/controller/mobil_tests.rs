@@ -106,7 +106,7 @@ fn decide_each(c: &mut MobilController, view: &ControllerView<'_>) -> Option<i32
             continue;
         };
         if let Some(margin) = judge_each(c, view, &lane) {
-            if best.map_or(true, |(m, _)| margin > m) {
+            if best.is_none_or(|(m, _)| margin > m) {
                 best = Some((margin, lane.lane));
             }
         }
@@ -751,7 +751,7 @@ fn a_mandatory_lane_is_changed_into_exactly_where_mobils_safety_criterion_accept
                 && c.mobil.safe_for_changer(cand.own.after)
                 && cand
                     .new_follower
-                    .map_or(true, |n| c.mobil.safe_for_follower(n.after));
+                    .is_none_or(|n| c.mobil.safe_for_follower(n.after));
             let at = format!("seed {seed} {} lane {}", e.name, lane.lane);
             assert_eq!(change, safe.then_some(lane.lane), "{at}");
             // The `idm` handed the same mandatory lane runs the same code: the same command,

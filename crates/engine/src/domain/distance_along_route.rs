@@ -29,7 +29,7 @@ impl TrafficParticipant {
                 p.distance <= LENGTH_EPSILON
                     && p.s >= lo - S_TOLERANCE
                     && p.s <= hi + S_TOLERANCE
-                    && st.lane_id.map_or(true, |l| l == p.lane_id)
+                    && st.lane_id.is_none_or(|l| l == p.lane_id)
             });
             if let Some(p) = on {
                 let along = travelled + (p.s - st.s_start).abs();

@@ -122,7 +122,7 @@ pub(crate) fn shortest_road_path(
         if road == goal {
             let inside = if forward { to_s } else { length - to_s };
             let total = cost + inside.max(0.0);
-            if found.map_or(true, |f| total < f.length) {
+            if found.is_none_or(|f| total < f.length) {
                 found = Some(RoadPath {
                     start_direction: if first[road][forward as usize] {
                         1.0

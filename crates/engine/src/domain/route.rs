@@ -106,7 +106,7 @@ impl Route {
                     (Some((p, pf)), _) => neighbours(network, p, pf)
                         .into_iter()
                         .find(|&(n, _)| n == road)
-                        .map_or(true, |(_, f)| f),
+                        .is_none_or(|(_, f)| f),
                     (None, Some(next)) => {
                         let next = road_index(next)?;
                         let reaches =

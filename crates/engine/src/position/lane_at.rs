@@ -22,7 +22,7 @@ pub fn lane_at(road: &Road, s: Real, t: Real) -> Option<(i32, Real)> {
     type Best = Option<(Real, i64, i32, Real)>;
     let (mut drivable, mut any): (Best, Best) = (None, None);
     let keep = |best: &mut Best, candidate: (Real, i64, i32, Real)| {
-        if best.map_or(true, |(g, order, _, _)| {
+        if best.is_none_or(|(g, order, _, _)| {
             candidate.0 < g || (candidate.0 == g && candidate.1 < order)
         }) {
             *best = Some(candidate);

@@ -108,7 +108,7 @@ impl PlannedRoute {
             let len = (seg.s_end - seg.s_start).abs();
             let (lo, hi) = (seg.s_start.min(seg.s_end), seg.s_start.max(seg.s_end));
             let on = seg.road_id == road_id
-                && lane_id.map_or(true, |l| l == seg.lane_id)
+                && lane_id.is_none_or(|l| l == seg.lane_id)
                 && s >= lo - S_TOLERANCE
                 && s <= hi + S_TOLERANCE;
             let path_s = start + (s - seg.s_start).abs().min(len);

@@ -84,7 +84,7 @@ pub fn plan_random(
         length += b - a;
     }
     let last = middle(network, h);
-    if stops.last().map_or(true, |s| s.lane != last) {
+    if stops.last().is_none_or(|s| s.lane != last) {
         stops.push(Stop {
             lane: last,
             pos: pos.clone(),

@@ -1024,7 +1024,7 @@ pub(super) fn searched(
                 if best.is_some_and(|b| e.lo + lane.max_len < b.hi) {
                     break;
                 }
-                if e.id != exclude && best.map_or(true, |b| e.hi > b.hi) {
+                if e.id != exclude && best.is_none_or(|b| e.hi > b.hi) {
                     best = Some(e);
                 }
             }
@@ -1068,7 +1068,7 @@ pub(super) fn ahead_at_hint(
     // "lo < bound" stops the scan, which goes on while "lo >= bound" (a NaN bound, which
     // stops it too, is left to the search).
     let bound = from - lane.max_len;
-    let stops_at = |k: Option<usize>| k.map_or(true, |k| entries[k].lo < bound);
+    let stops_at = |k: Option<usize>| k.is_none_or(|k| entries[k].lo < bound);
     let (below, no_overlap) = match p.checked_sub(1) {
         None => (true, true),
         Some(k) => {
@@ -1108,10 +1108,10 @@ pub(super) fn behind_at_hint(
     let p = hint.load(Ordering::Relaxed) as usize;
     let entries = &lane.entries[..];
     let e = entries.get(p.checked_sub(1)?)?;
-    let at_end = entries.get(p).map_or(true, |next| next.lo >= from);
+    let at_end = entries.get(p).is_none_or(|next| next.lo >= from);
     let stops = p
         .checked_sub(2)
-        .map_or(true, |k| entries[k].lo + lane.max_len < e.hi);
+        .is_none_or(|k| entries[k].lo + lane.max_len < e.hi);
     (e.lo < from && at_end && stops && e.id != exclude).then_some(Neighbour {
         id: e.id,
         gap: (from - e.hi).max(0.0),

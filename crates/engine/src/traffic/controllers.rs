@@ -128,7 +128,7 @@ pub(crate) fn equip_scenario_vehicles(
         .filter(|e| {
             controllers
                 .of(e.id.index())
-                .map_or(true, |c| c.assigned.is_empty())
+                .is_none_or(|c| c.assigned.is_empty())
         })
         .map(|e| e.id)
         .collect();

@@ -35,7 +35,7 @@ fn roads(frames: &Recorder) -> Vec<(String, f64)> {
     let mut out: Vec<(String, f64)> = Vec::new();
     for r in frames.0.iter().filter(|r| r.name == "Ego") {
         let road = r.road.as_ref().map_or("-", |p| p.0.as_str());
-        if out.last().map_or(true, |(last, _)| last != road) {
+        if out.last().is_none_or(|(last, _)| last != road) {
             out.push((road.to_owned(), r.time));
         }
     }

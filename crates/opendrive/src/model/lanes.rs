@@ -256,7 +256,7 @@ impl LaneSection {
         MarkStretch {
             permitted: before
                 .last()
-                .map_or(true, |m| m.permits_lane_change(border_of, to > from)),
+                .is_none_or(|m| m.permits_lane_change(border_of, to > from)),
             from: before
                 .iter()
                 .map(|m| m.s_offset)

@@ -297,7 +297,7 @@ fn references_resolve(l: &Loaded) -> bool {
     let roads_ok = l.roads.iter().all(|r| {
         r.junction
             .as_deref()
-            .map_or(true, |j| l.junction_index.contains_key(j))
+            .is_none_or(|j| l.junction_index.contains_key(j))
             && [&r.links.predecessor, &r.links.successor]
                 .into_iter()
                 .flatten()

@@ -218,7 +218,7 @@ impl RoadNetwork {
                     if let Some(ci) = rc.connecting {
                         let joins_us = |l: Option<Link>| {
                             matches!(l, Some(Link::Road(r, cp))
-                                if r == road.0 && cp.map_or(true, |cp| cp == our_end))
+                                if r == road.0 && cp.is_none_or(|cp| cp == our_end))
                         };
                         let [pred, succ] = self.topology.links[ci as usize];
                         if joins_us(pred) {
@@ -301,7 +301,7 @@ impl RoadNetwork {
             let [pred, succ] = self.topology.links[ci as usize];
             for (conn_end, link) in [(ContactPoint::Start, pred), (ContactPoint::End, succ)] {
                 let joins_us = match link {
-                    Some(Link::Road(r, cp)) => r == h.road && cp.map_or(true, |cp| cp == our_end),
+                    Some(Link::Road(r, cp)) => r == h.road && cp.is_none_or(|cp| cp == our_end),
                     _ => false,
                 };
                 if !joins_us {

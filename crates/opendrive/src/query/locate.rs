@@ -205,7 +205,7 @@ impl RoadNetwork {
         heading: Option<Real>,
     ) {
         if let Some(c) = self.candidate(&self.spatial.pieces[pi], x, y, heading) {
-            if best.as_ref().map_or(true, |b| better(&c, b)) {
+            if best.as_ref().is_none_or(|b| better(&c, b)) {
                 *best = Some(c);
             }
         }

@@ -217,7 +217,7 @@ impl RoadNetwork {
                 };
                 if ahead {
                     let total = c.plus(cost.along(h, label.entry, (to.s - label.entry).abs()));
-                    if best_goal.map_or(true, |(b, _)| total.total_cmp(&b) == Ordering::Less) {
+                    if best_goal.is_none_or(|(b, _)| total.total_cmp(&b) == Ordering::Less) {
                         best_goal = Some((total, key));
                         heap.push(Queued {
                             cost: total,
@@ -234,7 +234,7 @@ impl RoadNetwork {
                 let nk = (n, lane_change && is_start);
                 if labels
                     .get(&nk)
-                    .map_or(true, |l| nc.total_cmp(&l.cost) == Ordering::Less)
+                    .is_none_or(|l| nc.total_cmp(&l.cost) == Ordering::Less)
                 {
                     labels.insert(
                         nk,

@@ -24,7 +24,7 @@ impl Road {
             .filter(|lane| {
                 if signal.validity.is_empty() {
                     lane.lane_type.is_drivable()
-                        && direction.map_or(true, |d| driving_direction(self, lane.id) == d)
+                        && direction.is_none_or(|d| driving_direction(self, lane.id) == d)
                 } else {
                     signal.valid_for_lane(lane.id)
                 }

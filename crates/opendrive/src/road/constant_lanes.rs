@@ -53,7 +53,7 @@ impl Road {
 /// ds < 0).
 fn narrow(records: &[Cubic], origin: Real, s: Real, range: &mut (Real, Real)) -> Option<()> {
     let record = narrow_to_record(records, origin, s, range)?;
-    record.map_or(true, is_constant).then_some(())
+    record.is_none_or(is_constant).then_some(())
 }
 
 /// Whether `record` is a constant: b = c = d = 0 (of either sign).

@@ -109,7 +109,7 @@ impl Road {
         if !(lo <= s && s <= hi) {
             return None;
         }
-        let flat = |r: Option<&_>| r.map_or(true, is_constant);
+        let flat = |r: Option<&_>| r.is_none_or(is_constant);
         let straight =
             matches!(g.kind, GeometryKind::Line) && flat(elevation) && flat(superelevation);
         Some(FrameStretch {

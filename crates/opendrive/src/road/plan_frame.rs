@@ -51,7 +51,7 @@ impl Hints {
 fn last_holding<T>(items: &[T], hint: u32, pred: impl Fn(&T) -> bool) -> usize {
     let h = hint as usize;
     if let Some(item) = items.get(h) {
-        if pred(item) && items.get(h + 1).map_or(true, |next| !pred(next)) {
+        if pred(item) && items.get(h + 1).is_none_or(|next| !pred(next)) {
             return h;
         }
     }

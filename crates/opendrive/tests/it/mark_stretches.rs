@@ -22,7 +22,7 @@ fn permits_directly(section: &LaneSection, from: i32, to: i32, ds: Real) -> bool
             .take_while(|m| m.s_offset <= ds)
             .last()
     });
-    mark.map_or(true, |m| m.permits_lane_change(border_of, to > from))
+    mark.is_none_or(|m| m.permits_lane_change(border_of, to > from))
 }
 
 /// The corpus roads of the test: marks that change type along a lane (esmini's
@@ -73,19 +73,13 @@ fn samples(length: Real, at: impl Iterator<Item = Real>) -> Vec<Real> {
     out
 }
 
-/// The double next to `x` towards +∞ (`up`) or −∞ (`f64::next_up`/`next_down`, newer than
-/// the workspace's minimum Rust); `x` finite.
+/// The double next to `x` towards +∞ (`up`) or −∞ (std's `next_up` / `next_down`).
 fn beside_double(x: Real, up: bool) -> Real {
-    if x == 0.0 {
-        let tiny = Real::from_bits(1);
-        return if up { tiny } else { -tiny };
-    }
-    let away = (x > 0.0) == up;
-    Real::from_bits(if away {
-        x.to_bits() + 1
+    if up {
+        x.next_up()
     } else {
-        x.to_bits() - 1
-    })
+        x.next_down()
+    }
 }
 
 /// Every pair of lanes side by side in `section`, both ways round.

@@ -12,7 +12,7 @@ pub(crate) fn esmini_constants(source: &str) -> std::borrow::Cow<'_, str> {
     for (i, _) in source.match_indices("pi") {
         let before_ok = i == 0 || !is_ident(bytes[i - 1]);
         let rest = source[i + 2..].trim_start();
-        let after_ok = bytes.get(i + 2).map_or(true, |&b| !is_ident(b)) && !rest.starts_with('(');
+        let after_ok = bytes.get(i + 2).is_none_or(|&b| !is_ident(b)) && !rest.starts_with('(');
         if before_ok && after_ok {
             out.push_str(&source[last..i]);
             out.push_str("3.141592653589793");

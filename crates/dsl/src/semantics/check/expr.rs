@@ -312,7 +312,7 @@ impl Cx<'_> {
             return self.error_expr(span);
         }
         match enums.as_slice() {
-            [one] if expected.map_or(true, |t| matches!(t, Ty::Error)) => {
+            [one] if expected.is_none_or(|t| matches!(t, Ty::Error)) => {
                 let i = self
                     .model
                     .enum_def(*one)
@@ -791,9 +791,7 @@ impl Cx<'_> {
             return matches!(e.kind, ExprKind::List(_));
         };
         !scope.locals.iter().any(|l| l.name == *n)
-            && scope
-                .this
-                .map_or(true, |t| self.model.field(t, n).is_none())
+            && scope.this.is_none_or(|t| self.model.field(t, n).is_none())
             && !self.model.globals.iter().any(|g| g.name == *n)
             && n != "actor"
     }
