@@ -1,26 +1,31 @@
-//! x⁴ with the bits of the platform's `pow(x, 4)`, without calling it in seven cases of eight:
+//! x⁴ with the bits of the platform's `pow(x, 4)`, without calling it in 57 cases of 64:
 //! the IDM's free-road term (v/v0)^δ at its default δ = 4 ([`super::idm`]), which a `mobil`
 //! step evaluates up to four times (issue 31: `pow` was 14 % of the samples of the 1,000
 //! `mobil` vehicles, 10 points of it the changer's own term, which is also its command).
 //!
 //! **Why by hand.** No crate computes a power with a given libm's bits, and x·x·x·x is not
 //! `pow`'s result bit for bit (three roundings, up to 1.5 ulp off the exact x⁴, where `pow`
-//! is within 0.54 ulp). The power is worked out exactly in integers instead: x = m·2^e with a
-//! 53-bit m, so x⁴ = m⁴·2^(4e) and m⁴ (212 bits) is three 64 × 64 → 128-bit products.
+//! is within 0.54 ulp). The power is worked out in integers instead: x = m·2^e with a 53-bit
+//! m, so x⁴ = m⁴·2^(4e), and m⁴'s top 64 bits, from two 64 × 64 → 128-bit products, are
+//! within 7/256 of an ulp below it (`exact`); the 212 bits of m⁴ exactly took four products
+//! and the 128-bit sums of their parts.
 //!
 //! **Why the same bits.** glibc's `pow` (since 2.28; musl has the same code, from Arm's
 //! optimized-routines) documents a worst-case error of 0.54 ulp ("Worst-case error: 0.54 ULP",
 //! `sysdeps/ieee754/dbl-64/e_pow.c`); earlier glibc's `pow` was correctly rounded (0.5 ulp).
 //! Let t = x⁴ exactly and r the double nearest it, t at d ulp from r (d ≤ ½): the other double
 //! next to t is 1 − d ulp away, so when d < 0.46 the only double within 0.54 ulp of t is r,
-//! and `pow` returns r. The fraction of t's significand below its 53 bits tells d: outside
-//! [7/16, 9/16) it is below 7/16 (round down) or above 9/16 (round up), d ≤ 7/16 < 0.46, and r
-//! is returned; inside (one case in eight) `pow` is called. So is it where r is a power of two
-//! (the ulp below it is half the ulp above, and the argument above needs one ulp on both
+//! and `pow` returns r. The fraction g of t's significand below its 53 bits tells d, and its
+//! estimate q/64 from below (g in [q/64, q/64 + 7/256)) tells enough of g: for q ≤ 27,
+//! g < 115/256 < 0.46 (round down, d = g); for q ≥ 35, g ≥ 35/64 (round up, d ≤ 29/64 <
+//! 0.46), and r is returned; in between (7 cases in 64) `pow` is called. So is it where r is a
+//! power of two (the ulp below it is half the ulp above, and the argument above needs one ulp on both
 //! sides), for x outside [2^−255, 2^256) (t or r not a normal double), for zero, negatives,
 //! infinities and NaN. The shortcut is compiled on Linux only, where the libm is glibc or
-//! musl; elsewhere [`fourth_power`] is `powf(4.0)`. Test: the shortcut against `powf` on 24
-//! million x, the midpoint and power-of-two cases and the edges of the range.
+//! musl; elsewhere [`fourth_power`] is `powf(4.0)`. Tests: the shortcut against `powf` on 24
+//! million x, the midpoint and power-of-two cases and the edges of the range; and against
+//! x⁴'s exact 212 bits (whatever the libm: the double it returns is the nearest, at d < 0.46
+//! ulp, on 6 million x and around every q's edges).
 
 use opendrive::Real;
 
@@ -36,6 +41,17 @@ pub(crate) fn fourth_power(x: Real) -> Real {
 
 /// The double nearest x⁴ where it is the only one within 0.54 ulp of x⁴ and x is in range
 /// (module doc); `None` elsewhere.
+///
+/// x⁴ is known here to 1/64 of an ulp from below, from two 64 × 64-bit products, not to the
+/// last bit: with x = m·2^(e − 1075), m in [2^52, 2^53), m² = a·2^42 + ρ (a the top 64 bits,
+/// 0 ≤ ρ < 2^42) and a² = p·2^64 + p₀, T = m⁴/2^84 = a² + 2aρ/2^42 + ρ²/2^84 lies in
+/// [p·2^64, p·2^64 + 3·2^64) (p₀ < 2^64, 2aρ/2^42 + ρ²/2^84 < 2a + 1 ≤ 2^65). p is in [2^60,
+/// 2^64), its top 53 bits the significand s′ and its next six the 64ths q of the fraction
+/// below it; the ulp is 2^(64 + sh) with sh = 8..=11 the bits below s′, so T's fraction g
+/// above s′ (T = (s′ + g)·ulp) lies in [q/64, q/64 + 1/64 + 3/256) = [q/64, q/64 + 7/256).
+/// For q ≤ 27, g < 115/256 < 0.46 and s′ is the nearest double (at d = g ulp); for q ≥ 35,
+/// g ≥ 35/64, so s′ + 1 is the nearest (d = 1 − g ≤ 29/64 < 0.46 below 1, d = g − 1 < 7/256
+/// from 1 on). In between (7 cases in 64) `pow` is asked.
 #[inline]
 fn exact(x: Real) -> Option<Real> {
     const FRACTION: u64 = (1 << 52) - 1;
@@ -45,32 +61,25 @@ fn exact(x: Real) -> Option<Real> {
     if !(1023 - 255..=1023 + 255).contains(&e) {
         return None;
     }
-    // x = m·2^(e − 1075), m in [2^52, 2^53).
+    // x = m·2^(e − 1075), m in [2^52, 2^53); m² in [2^104, 2^106), a in [2^62, 2^64).
     let m = (bits & FRACTION) | (1 << 52);
-    let m2 = u128::from(m) * u128::from(m); // < 2^106
-                                            // m² = h·2^64 + l, h < 2^42; m⁴ = h²·2^128 + 2hl·2^64 + l²: its top 128 bits (bits 128
-                                            // and up), exactly.
-    let (h, l) = ((m2 >> 64) as u64, m2 as u64);
-    let low = u128::from(l) * u128::from(l);
-    let mid = (u128::from(h) * u128::from(l)) << 1; // < 2^107
-    let (_, carry) = low.overflowing_add(mid << 64);
-    let top = u128::from(h) * u128::from(h) + (mid >> 64) + u128::from(carry);
-    // m⁴ is in [2^208, 2^212): top's leading bit is bit k of 80..=83; its 53 bits from there
-    // are t's significand, the `shift` bits below the start of the fraction d measures.
-    let k = 127 - top.leading_zeros();
-    let shift = k - 52; // 28..=31
-    let significand = (top >> shift) as u64;
-    let sixteenths = ((top as u64) & ((1 << shift) - 1)) >> (shift - 4);
-    if sixteenths == 7 || sixteenths == 8 {
+    let a = ((u128::from(m) * u128::from(m)) >> 42) as u64;
+    let p = ((u128::from(a) * u128::from(a)) >> 64) as u64;
+    // p in [2^60, 2^64): its leading bit is bit 60..=63, the significand the 53 bits from
+    // there, `sh` the bits below them.
+    let sh = 11 - p.leading_zeros();
+    let significand = p >> sh;
+    let q = (p >> (sh - 6)) & 63;
+    if (28..=34).contains(&q) {
         return None;
     }
-    let r = significand + u64::from(sixteenths > 8);
+    let r = significand + u64::from(q >= 35);
     if r == 1 << 52 || r == 1 << 53 {
         return None; // a power of two
     }
-    // t = significand·2^(shift + 128 + 4(e − 1075)): a biased exponent of
-    // 4e + shift − 3097, in 3..=2046 for e in range.
-    let biased = 4 * e + u64::from(shift) - 3097;
+    // x⁴ = r·2^(64 + sh + 84 + 4(e − 1075)): a biased exponent of 4e + sh − 3077, in
+    // 3..=2046 for e in range.
+    let biased = 4 * e + u64::from(sh) - 3077;
     Some(Real::from_bits((biased << 52) | (r & FRACTION)))
 }
 
@@ -96,7 +105,8 @@ mod tests {
 
     /// 8 million speed ratios in [0, 1.5) (the IDM's v/v0), 8 million doubles of every
     /// exponent, 8 million in [2^−256, 2^257) around the range's edges: `powf`'s bits each,
-    /// and the shortcut (not `pow`) answers about seven in eight of those in range.
+    /// and the shortcut (not `pow`) answers about 57 in 64 of those in range (`pow` is asked
+    /// for q in 28..=34 of the 64ths, 7 of them, where the fraction is spread evenly).
     #[test]
     fn the_fourth_power_is_pows_bit_for_bit() {
         let mut next = stream(0x9E37_79B9_7F4A_7C15);
@@ -116,9 +126,83 @@ mod tests {
                 shortcut += u32::from(exact(x).is_some());
             }
         }
-        // 1/8 to the fallback, within a few hundredths.
+        // 7/64 to the fallback, within a few thousandths.
         let share = Real::from(shortcut) / Real::from(in_range);
-        assert!((share - 0.875).abs() < 0.01, "{shortcut} of {in_range}");
+        assert!(
+            (share - 57.0 / 64.0).abs() < 0.005,
+            "{shortcut} of {in_range}"
+        );
+    }
+
+    /// x⁴ from m⁴'s 212 bits exactly (three products and their 128-bit sums, the computation
+    /// before the 64-bit estimate): the biased exponent, the 53-bit significand of x⁴
+    /// truncated, the fraction below it as 64 bits (truncated) and whether anything is left
+    /// below those. For x in range.
+    fn exact_parts(x: Real) -> (u64, u64, u64, bool) {
+        let bits = x.to_bits();
+        let e = bits >> 52;
+        let m = (bits & ((1 << 52) - 1)) | (1 << 52);
+        let m2 = u128::from(m) * u128::from(m);
+        let (h, l) = ((m2 >> 64) as u64, m2 as u64);
+        let low = u128::from(l) * u128::from(l);
+        let mid = (u128::from(h) * u128::from(l)) << 1;
+        let (low, carry) = low.overflowing_add(mid << 64);
+        let top = u128::from(h) * u128::from(h) + (mid >> 64) + u128::from(carry);
+        // m⁴ = top·2^128 + low, top's leading bit 80..=83.
+        let shift = 127 - top.leading_zeros() - 52;
+        let significand = (top >> shift) as u64;
+        let above = (top as u64) & ((1 << shift) - 1);
+        let fraction = (above << (64 - shift)) | (low >> (64 + shift)) as u64;
+        let rest = low & ((1u128 << (64 + shift)) - 1) != 0;
+        (4 * e + u64::from(shift) - 3097, significand, fraction, rest)
+    }
+
+    /// Whatever the libm: where the shortcut answers, its answer is the double nearest the
+    /// exact x⁴ (from [`exact_parts`]) and x⁴ lies less than 0.46 ulp from it, the bound the
+    /// module doc's argument needs; it leaves to `pow` only x out of range, powers of two and
+    /// fractions in the 64ths 28..=34 widened by the estimate's 7/256 (so in [28/64,
+    /// 143/256)). On 6 million x: speed ratios in [0, 1.5), doubles of the range's every
+    /// exponent, and x = 1 + k·2^−39 (fractions in every sixteenth, midpoints included).
+    #[test]
+    fn the_shortcut_is_the_nearest_double_to_the_exact_power() {
+        let mut next = stream(0xD1B5_4A32_D192_ED03);
+        let (mut asked, mut in_range) = (0u32, 0u32);
+        for i in 0..6_000_000u64 {
+            let r = next();
+            let x = match i % 3 {
+                0 => (r >> 11) as Real / (1u64 << 53) as Real * 1.5,
+                1 => {
+                    Real::from_bits(((1023 - 255 + (r >> 55) % 511) << 52) | (r & ((1 << 52) - 1)))
+                }
+                _ => Real::from_bits((1.0 as Real).to_bits() + ((i / 3) << 13)),
+            };
+            if !(1023 - 255..=1023 + 255).contains(&(x.to_bits() >> 52)) {
+                continue;
+            }
+            in_range += 1;
+            let (biased, significand, fraction, rest) = exact_parts(x);
+            let g = fraction as Real / 2.0_f64.powi(64);
+            let Some(y) = exact(x) else {
+                asked += 1;
+                let power_of_two = (significand == 1 << 52 && g < 0.5)
+                    || (significand == (1 << 53) - 1 && g > 0.5);
+                assert!(
+                    power_of_two || (28.0 / 64.0..143.0 / 256.0).contains(&g),
+                    "x = {x:e}: g = {g}"
+                );
+                continue;
+            };
+            let half = 1u64 << 63;
+            assert!(fraction != half || rest, "x = {x:e}: a tie answered");
+            let up = fraction > half || (fraction == half && rest);
+            let nearest = (biased << 52) + (significand & ((1 << 52) - 1)) + u64::from(up);
+            let d = if up { 1.0 - g } else { g };
+            assert_eq!(y.to_bits(), nearest, "x = {x:e}");
+            assert!(d < 0.46, "x = {x:e}: d = {d}");
+        }
+        // 7/64 of the fractions asked, within a few thousandths.
+        let share = Real::from(asked) / Real::from(in_range);
+        assert!((share - 7.0 / 64.0).abs() < 0.005, "{asked} of {in_range}");
     }
 
     /// The cases the shortcut leaves to `pow` and the edges: zeros, negatives, infinities,

@@ -90,8 +90,8 @@ impl IdmParameters {
             };
         }
         let x = v.max(0.0) / self.desired_speed;
-        // δ = 4 (the default) exactly: x⁴ with pow's bits without calling it in seven cases of
-        // eight (models/fourth_power.rs).
+        // δ = 4 (the default) exactly: x⁴ with pow's bits without calling it in 57 cases of
+        // 64 (models/fourth_power.rs).
         let ratio = if self.acceleration_exponent == 4.0 {
             fourth_power(x)
         } else {
