@@ -28,8 +28,18 @@ pub enum ErrorKind {
     UnknownActor,
     /// A modifier the action does not take, or that the runtime does not run.
     Modifier,
-    /// An action or behavior the runtime does not run.
+    /// A form of the standard the runtime does not run (docs/dsl.md, "Not run yet"), or one of
+    /// its resource guards (invocations nested deeper than 64). Never bad input: a scenario
+    /// that is wrong has one of the other kinds.
     Unsupported,
+    /// An invocation that names nothing to run (§7.3.9): a scenario invoked without an actor
+    /// and without a `do`, an action the program declares with no `do` and no §8.8 action
+    /// among its ancestors, a `keep(…)` in the `with:` of an invocation outside a `do`.
+    Invocation,
+    /// A `call` (§7.3.10 `on` handlers, `call` directives) of something that is not a method
+    /// with an implementation: no method call, no method the program declares, a method
+    /// `is undefined`, or an `on` member other than `emit` and `call`.
+    Call,
     /// An action's argument is missing or has a value the action cannot take.
     Argument,
     /// A phase that cannot end (no duration, no `until`, nothing that ends it).

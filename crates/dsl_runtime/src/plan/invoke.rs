@@ -77,7 +77,7 @@ impl Planner<'_> {
         // Every action of the standard library is planned; one the program declares is not.
         if inv.kind == Action::Other {
             return Err(p.site.err(
-                K::Unsupported,
+                K::Invocation,
                 format!(
                     "expected a `do` in `{}`, an action the program declares without one and without a movement action of the standard library (§8.8) among its ancestors, found neither: the engine runs an action's own `do` (§7.3.9), or the action it inherits",
                     inv.action

@@ -45,7 +45,7 @@ pub(crate) struct Call {
 pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
     let ExprKind::Call(callee, args) = &e.kind else {
         return Err(ev.files.err(
-            K::Unsupported,
+            K::Call,
             e.span,
             "expected a method call after `call`, found another expression",
         ));
@@ -55,7 +55,7 @@ pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
         ExprKind::Field(_, n) => &n.text,
         _ => {
             return Err(ev.files.err(
-                K::Unsupported,
+                K::Call,
                 callee.span,
                 "expected a method name in `call`, found another expression",
             ))
@@ -65,14 +65,14 @@ pub(crate) fn read(ev: &Eval<'_>, e: &Expr) -> Result<Call, Error> {
         Some(d) if matches!(d.body, MethodBody::External | MethodBody::Expression(_)) => d,
         Some(_) => {
             return Err(ev.files.err(
-                K::Unsupported,
+                K::Call,
                 callee.span,
                 format!("expected a method with an implementation in `call` (def {name}(…) is external … or is expression …), found `{name}` undefined"),
             ))
         }
         None => {
             return Err(ev.files.err(
-                K::Unsupported,
+                K::Call,
                 callee.span,
                 format!("expected a method declared in the program in `call`, found `{name}`"),
             ))

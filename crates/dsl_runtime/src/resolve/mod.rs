@@ -326,7 +326,7 @@ fn events(
                             })
                         }
                         _ => return Err(ev.files.err(
-                            ErrorKind::Unsupported,
+                            ErrorKind::Call,
                             *on_span,
                             "expected `emit` or `call` in an `on` handler, found another member",
                         )),

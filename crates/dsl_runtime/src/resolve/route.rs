@@ -815,7 +815,7 @@ fn route_points(
     };
     let ExprKind::List(items) = &list.kind else {
         return Err(ctx.files.err(
-            K::Unsupported,
+            K::Value,
             list.span,
             "expected a list of odr points and routes ([m.create_odr_point(…), …]) in create_route(…), found another expression",
         ));

@@ -305,7 +305,7 @@ fn build(
             }
             let Some(actor_path) = actor_path else {
                 return Err(ev.files.err(
-                    K::Unsupported,
+                    K::Invocation,
                     *span,
                     format!(
                         "expected an actor before `{}`, or a scenario with a `do`, found neither",
@@ -537,7 +537,7 @@ fn behavior(
     // The invocation was found by its `do`.
     let Some(root) = do_of(ev, inv.callee) else {
         return Err(ev.files.err(
-            K::Unsupported,
+            K::Invocation,
             inv.span,
             format!("expected a `do` in `{name}`, found none"),
         ));
@@ -581,7 +581,7 @@ fn solved_args(
         // The checker records an instance for every invocation in a `do`; one elsewhere (an
         // `on` handler, whose members are `emit` and `call`, §7.3.10) the parser refuses first.
         return Err(ev.files.err(
-            K::Unsupported,
+            K::Invocation,
             keeps[0].span,
             "expected keep(…) in the with: of an invocation in a `do` (where the solver resolves the invocation), found it elsewhere",
         ));

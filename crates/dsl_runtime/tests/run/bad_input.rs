@@ -276,6 +276,36 @@ fn bad_input_once_reported_as_not_run_has_the_kind_of_its_fault() {
             "18:37",
             "expected `ahead_of:` of position(…) to name an actor driving in the direction of `ego` (in +s), found `npc`, which drives against s",
         ),
+        // §7.3.9: a scenario's behavior is its `do`; invoked without one (and without an
+        // actor), there is nothing to run.
+        (
+            "err_scenario_no_do",
+            K::Invocation,
+            "7:8",
+            "expected an actor before `inner`, or a scenario with a `do`, found neither",
+        ),
+        // An action the program declares without a `do` and without a §8.8 action among its
+        // ancestors specifies no behavior (§7.3.9).
+        (
+            "declared/err_action_no_body",
+            K::Invocation,
+            "13:9",
+            "expected a `do` in `nothing`, an action the program declares without one",
+        ),
+        // A `call` of a method `is undefined`: nothing to call.
+        (
+            "err_on_call",
+            K::Call,
+            "8:14",
+            "expected a method with an implementation in `call`",
+        ),
+        // A list field nothing constrains has no routes the planner can compute.
+        (
+            "err_create_route_free_list",
+            K::Value,
+            "8:34",
+            "expected a list of odr points and routes ([m.create_odr_point(…), …]) in create_route(…), found another expression",
+        ),
     ] {
         let e = match crate::support::lower_at(
             &format!("tests/scenarios/{name}.osc"),
