@@ -54,7 +54,15 @@ fn variants(c: &mut Criterion) {
             })
         });
     }
-    let out = std::env::temp_dir().join(format!("oscsim-bench-journal-{}", std::process::id()));
+    // Removed with its contents when `tmp` drops, also if the benchmark panics.
+    let tmp = match tempfile::Builder::new()
+        .prefix("oscsim-bench-journal-")
+        .tempdir()
+    {
+        Ok(t) => t,
+        Err(e) => panic!("temp dir: {e}"),
+    };
+    let out = tmp.path().join("out");
     for jobs in [1usize, 2] {
         let options = Options {
             jobs,
@@ -78,7 +86,6 @@ fn variants(c: &mut Criterion) {
             )
         });
     }
-    let _ = std::fs::remove_dir_all(&out);
     group.finish();
 }
 

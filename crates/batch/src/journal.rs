@@ -282,18 +282,20 @@ mod tests {
     use super::*;
     use crate::error::ErrorKind;
 
-    fn scratch(name: &str) -> PathBuf {
-        let dir = std::env::temp_dir()
-            .join(format!("oscsim-journal-{}", std::process::id()))
-            .join(name);
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir.join(JOURNAL_FILE)
+    /// The journal's path in a folder of its own, which is removed with it when the returned
+    /// `TempDir` drops (keep it bound, `_dir`, until the test ends; also on a failure).
+    fn scratch(name: &str) -> (tempfile::TempDir, PathBuf) {
+        let dir = tempfile::Builder::new()
+            .prefix(&format!("oscsim-journal-{name}-"))
+            .tempdir()
+            .unwrap();
+        let path = dir.path().join(JOURNAL_FILE);
+        (dir, path)
     }
 
     #[test]
     fn records_read_back_in_order() {
-        let path = scratch("order");
+        let (_dir, path) = scratch("order");
         let j = Journal::create(&path, "header").unwrap();
         j.append("0,a").unwrap();
         j.append("1,\"b\nc\"").unwrap();
@@ -309,7 +311,7 @@ mod tests {
     /// reads as the records before it, and appending after the cut continues cleanly.
     #[test]
     fn an_interrupted_append_is_ignored_and_cut_off() {
-        let path = scratch("torn");
+        let (_dir, path) = scratch("torn");
         let j = Journal::create(&path, "header").unwrap();
         j.append("0,first").unwrap();
         j.append("1,second").unwrap();
@@ -336,7 +338,7 @@ mod tests {
     /// an empty record, and a flipped byte fails the checksum.
     #[test]
     fn zeros_and_damaged_bytes_end_the_readable_part() {
-        let path = scratch("damaged");
+        let (_dir, path) = scratch("damaged");
         let j = Journal::create(&path, "header").unwrap();
         j.append("0,first").unwrap();
         drop(j);
@@ -361,7 +363,7 @@ mod tests {
 
     #[test]
     fn other_files_are_not_journals() {
-        let path = scratch("other");
+        let (_dir, path) = scratch("other");
         std::fs::write(&path, "variant,stop_reason\n").unwrap();
         let e = read(&path).unwrap_err().to_string();
         assert!(

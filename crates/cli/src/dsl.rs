@@ -202,17 +202,21 @@ pub fn validate_syntax(file: &Path, out: &mut impl Write) -> anyhow::Result<bool
 mod tests {
     use super::*;
 
-    fn temp_file(name: &str, text: &str) -> PathBuf {
-        let dir = std::env::temp_dir().join(format!("oscsim-cli-dsl-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join(name);
+    /// `text` written as `name` in a folder of its own, which is removed with it when the
+    /// returned `TempDir` drops (keep it bound, e.g. `_dir`, until the test ends).
+    fn temp_file(name: &str, text: &str) -> (tempfile::TempDir, PathBuf) {
+        let dir = tempfile::Builder::new()
+            .prefix("oscsim-cli-dsl-")
+            .tempdir()
+            .unwrap();
+        let path = dir.path().join(name);
         std::fs::write(&path, text).unwrap();
-        path
+        (dir, path)
     }
 
     #[test]
     fn validate_syntax_reports_every_error_with_its_line() {
-        let path = temp_file("two_errors.osc", "struct s:\n    x: = 1\n    keep(y >)\n");
+        let (_dir, path) = temp_file("two_errors.osc", "struct s:\n    x: = 1\n    keep(y >)\n");
         let mut out = Vec::new();
         assert!(!validate_syntax(&path, &mut out).unwrap());
         let text = String::from_utf8(out).unwrap();
@@ -231,7 +235,7 @@ mod tests {
             "{text}"
         );
 
-        let path = temp_file("fine.osc", "struct s:\n    x: int\nglobal g: int\n");
+        let (_dir, path) = temp_file("fine.osc", "struct s:\n    x: int\nglobal g: int\n");
         let mut out = Vec::new();
         assert!(validate_syntax(&path, &mut out).unwrap());
         assert_eq!(
@@ -245,7 +249,7 @@ mod tests {
 
     #[test]
     fn fmt_prints_checks_and_rewrites() {
-        let path = temp_file("messy.osc", "struct   s :\n  x:int=1+2\n");
+        let (_dir, path) = temp_file("messy.osc", "struct   s :\n  x:int=1+2\n");
         let canonical = "struct s:\n    x: int = 1 + 2\n";
         let args = |write, check| FmtArgs {
             files: vec![path.clone()],

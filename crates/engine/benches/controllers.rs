@@ -48,8 +48,8 @@ fn highway(c: &mut Criterion) {
     ];
     for (vehicles, model) in runs {
         let path = match model {
-            Some(m) => scale::write_traffic(&dir, vehicles, DURATION, m),
-            None => scale::write_scale(&dir, vehicles, DURATION),
+            Some(m) => scale::write_traffic(dir.path(), vehicles, DURATION, m),
+            None => scale::write_scale(dir.path(), vehicles, DURATION),
         };
         let mut engine = Engine::load(&path, &[], config).expect("scale scenario loads");
         group.throughput(Throughput::Elements(vehicles as u64 * STEPS));
@@ -66,7 +66,6 @@ fn highway(c: &mut Criterion) {
         });
     }
     group.finish();
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 criterion_group!(benches, highway);

@@ -54,7 +54,7 @@ fn engine(path: &std::path::Path) -> Engine {
 
 fn scale(c: &mut Criterion) {
     let dir = scale::scratch("bench-scale");
-    let path = scale::write_scale(&dir, VEHICLES, DURATION);
+    let path = scale::write_scale(dir.path(), VEHICLES, DURATION);
 
     let mut g = group(c, "scale");
     g.throughput(Throughput::Elements(VEHICLES as u64 * STEPS));
@@ -83,7 +83,6 @@ fn scale(c: &mut Criterion) {
         b.iter(|| black_box(engine(&path).steps()))
     });
     g.finish();
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 criterion_group!(benches, scale);

@@ -30,9 +30,9 @@ const COUNTED: usize = 100;
 fn a_steady_osi_frame_allocates_nothing() {
     let _serial = serial();
     let dir = scale::scratch("alloc-osi");
-    let path = scale::write_scale(&dir, VEHICLES, 300.0);
+    let path = scale::write_scale(dir.path(), VEHICLES, 300.0);
     let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("the highway loads");
-    let trace = dir.join("trace.osi");
+    let trace = dir.path().join("trace.osi");
     let options = OsiSinkOptions {
         pinned_time: Some(0),
         ..OsiSinkOptions::new(trace.clone())
@@ -89,7 +89,6 @@ fn a_steady_osi_frame_allocates_nothing() {
     for (got, want) in at(5).iter().zip([247.65, -5.25, 0.75]) {
         assert!((got - want).abs() < TOLERANCE, "v5 at {:?}", at(5));
     }
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 /// Traffic lights and signs are written in place too: on the cli's osi_signals.xosc (a vehicle
@@ -105,8 +104,7 @@ fn traffic_signals_add_no_allocation() {
     let load = || Engine::load(&file, &[], EngineConfig::default()).expect("the scenario loads");
     let (mut with, mut without) = (load(), load());
     let dir = scale::scratch("alloc-osi-signals");
-    std::fs::create_dir_all(&dir).expect("scratch folder");
-    let trace = dir.join("trace.osi");
+    let trace = dir.path().join("trace.osi");
     let options = OsiSinkOptions {
         pinned_time: Some(0),
         ..OsiSinkOptions::new(trace.clone())
@@ -146,7 +144,6 @@ fn traffic_signals_add_no_allocation() {
         .collect();
     let (off, on) = (Some(Mode::Off as i32), Some(Mode::Constant as i32));
     assert_eq!(modes, [off, off, on, off, on]);
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 /// The bindings' sink (`StepFrames`: each step's frames encoded for Python and C) reuses its
@@ -158,7 +155,7 @@ fn the_bindings_frames_allocate_nothing() {
     use prost::Message;
     let _serial = serial();
     let dir = scale::scratch("alloc-osi-bindings");
-    let path = scale::write_scale(&dir, VEHICLES, 300.0);
+    let path = scale::write_scale(dir.path(), VEHICLES, 300.0);
     let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("the highway loads");
     let sink = GroundTruthSink::new(&engine, &SinkOptions::default()).expect("sink");
     let mut frames = StepFrames::new(sink);
@@ -178,5 +175,4 @@ fn the_bindings_frames_allocate_nothing() {
     let t = gt.timestamp.expect("timestamp");
     assert_eq!((t.seconds, t.nanos), (Some(5), Some(250_000_000)));
     assert_eq!(gt.moving_object.len(), VEHICLES);
-    let _ = std::fs::remove_dir_all(dir);
 }

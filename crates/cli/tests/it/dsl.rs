@@ -122,7 +122,11 @@ fn repo(rel: &str) -> PathBuf {
 
 #[test]
 fn run_dsl_scenario_writes_the_same_outputs_as_an_xml_one() {
-    let dir = std::env::temp_dir().join(format!("oscsim_dsl_run_{}", std::process::id()));
+    let tmp = tempfile::Builder::new()
+        .prefix("oscsim_dsl_run_")
+        .tempdir()
+        .expect("temp dir");
+    let dir = tmp.path();
     let (csv, events) = (dir.join("t.csv"), dir.join("e.jsonl"));
     let osc = repo("examples/scenarios/cut_in_highway.osc");
     let road = repo("examples/roads/highway.xodr");
@@ -158,7 +162,6 @@ fn run_dsl_scenario_writes_the_same_outputs_as_an_xml_one() {
     ] {
         assert!(log.lines().any(|l| l == line), "{line} not in\n{log}");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

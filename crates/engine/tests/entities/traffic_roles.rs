@@ -148,10 +148,14 @@ fn same_seed_same_roles_and_the_traffic_is_that_of_a_run_without_roles() {
         "filepath=\"straight_500m.xodr\"",
         &format!("filepath=\"{}\"", road.display()),
     );
-    let copy = std::env::temp_dir().join(format!("oscsim-roles-{}.xosc", std::process::id()));
-    std::fs::write(&copy, plain).expect("temp scenario written");
-    let (d, _, _) = run(&copy, 1, Some(30.0));
-    std::fs::remove_file(&copy).expect("temp scenario removed");
+    // Removed when it drops, also if the run fails.
+    let copy = tempfile::Builder::new()
+        .prefix("oscsim-roles-")
+        .suffix(".xosc")
+        .tempfile()
+        .expect("temp scenario");
+    std::fs::write(copy.path(), plain).expect("temp scenario written");
+    let (d, _, _) = run(copy.path(), 1, Some(30.0));
     assert!(spawned(&d).values().all(Option::is_none));
     assert_eq!(a.rows, d.rows);
 }

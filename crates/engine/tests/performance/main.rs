@@ -24,9 +24,9 @@ const WARM_UP: usize = 5;
 /// Steps counted.
 const COUNTED: usize = 100;
 
-fn engine(what: &str) -> (Engine, std::path::PathBuf) {
+fn engine(what: &str) -> (Engine, tempfile::TempDir) {
     let dir = scale::scratch(what);
-    let path = scale::write_scale(&dir, VEHICLES, 300.0);
+    let path = scale::write_scale(dir.path(), VEHICLES, 300.0);
     let engine = Engine::load(&path, &[], EngineConfig::default()).expect("the highway loads");
     (engine, dir)
 }
@@ -37,7 +37,7 @@ fn engine(what: &str) -> (Engine, std::path::PathBuf) {
 #[test]
 fn the_step_allocates_nothing() {
     let _serial = serial();
-    let (mut engine, dir) = engine("alloc-step");
+    let (mut engine, _dir) = engine("alloc-step");
     for _ in 0..WARM_UP {
         engine.step(&mut (), &mut ()).expect("steps");
     }
@@ -52,7 +52,6 @@ fn the_step_allocates_nothing() {
     );
     // The run went on: 105 steps at 0.05 s.
     assert!((engine.time() - 5.25).abs() < 1e-9, "{}", engine.time());
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 /// The driver models' step (issue 31): the 200 vehicles driven by `idm`, and by `mobil`, whose
@@ -64,7 +63,7 @@ fn the_driver_models_step_allocates_nothing() {
     let _serial = serial();
     for model in ["idm", "mobil"] {
         let dir = scale::scratch(&format!("alloc-{model}"));
-        let path = scale::write_traffic(&dir, VEHICLES, 300.0, model);
+        let path = scale::write_traffic(dir.path(), VEHICLES, 300.0, model);
         let mut engine = Engine::load(&path, &[], EngineConfig::default()).expect("loads");
         for _ in 0..WARM_UP {
             engine.step(&mut (), &mut ()).expect("steps");
@@ -78,7 +77,6 @@ fn the_driver_models_step_allocates_nothing() {
             n, 0,
             "allocations in {COUNTED} steps of {VEHICLES} {model} vehicles"
         );
-        let _ = std::fs::remove_dir_all(dir);
     }
 }
 
@@ -87,7 +85,7 @@ fn the_driver_models_step_allocates_nothing() {
 #[test]
 fn the_csv_writer_allocates_nothing() {
     let _serial = serial();
-    let (mut engine, dir) = engine("alloc-csv");
+    let (mut engine, _dir) = engine("alloc-csv");
     let mut csv = CsvWriter::new(std::io::sink());
     for _ in 0..WARM_UP {
         engine.step(&mut csv, &mut ()).expect("steps");
@@ -98,7 +96,6 @@ fn the_csv_writer_allocates_nothing() {
         }
     });
     assert_eq!(n, 0, "allocations in {COUNTED} steps with CSV");
-    let _ = std::fs::remove_dir_all(dir);
 }
 
 /// The counter counts: building the engine allocates (so a zero above is not a counter that
@@ -107,7 +104,7 @@ fn the_csv_writer_allocates_nothing() {
 fn the_counter_sees_allocations() {
     let _serial = serial();
     let dir = scale::scratch("alloc-load");
-    let path = scale::write_scale(&dir, 4, 1.0);
+    let path = scale::write_scale(dir.path(), 4, 1.0);
     let mut engine = None;
     let count = allocations(|| {
         engine = Some(Engine::load(&path, &[], EngineConfig::default()).expect("loads"));
@@ -117,5 +114,4 @@ fn the_counter_sees_allocations() {
     let mut engine = engine.expect("set above");
     engine.step(&mut (), &mut ()).expect("steps");
     assert_eq!(engine.entities().len(), 4);
-    let _ = std::fs::remove_dir_all(dir);
 }

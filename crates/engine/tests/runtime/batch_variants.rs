@@ -21,8 +21,12 @@ const TOL: f64 = 1e-9;
 #[test]
 fn a_thousand_engines_share_one_network_and_read_no_file() {
     let repo = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
-    let dir = std::env::temp_dir().join(format!("oscsim-batch-{}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
+    // Removed below to show that the engines read no file; on a failure before, at the drop.
+    let tmp = tempfile::Builder::new()
+        .prefix("oscsim-batch-")
+        .tempdir()
+        .expect("temp dir");
+    let dir = tmp.path();
     fs::create_dir_all(dir.join("scenarios")).expect("temp dir");
     fs::create_dir_all(dir.join("roads")).expect("temp dir");
     let scenario_path = dir.join("scenarios/cut_in_highway.xosc");
@@ -40,7 +44,7 @@ fn a_thousand_engines_share_one_network_and_read_no_file() {
     // The first (and only) load: scenario, then its road network.
     let base = Scenario::load(&scenario_path).expect("scenario loads");
     let network = load::road_network(&base).expect("road network loads");
-    fs::remove_dir_all(&dir).expect("temp dir removed");
+    fs::remove_dir_all(dir).expect("temp dir removed");
     assert!(!scenario_path.exists());
 
     let config = EngineConfig::default();

@@ -42,11 +42,14 @@ fn write(dir: &Path, vehicles: usize, duration: f64, model: Option<&str>) -> Pat
     path
 }
 
-/// A fresh scratch folder for `what` below the system's temporary folder.
-pub fn scratch(what: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("oscsim-{what}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
+/// A fresh scratch folder of its own for `what` below the system's temporary folder, removed
+/// with everything in it when the returned value drops (at the end of the test or benchmark
+/// that holds it, also when it fails).
+pub fn scratch(what: &str) -> tempfile::TempDir {
+    tempfile::Builder::new()
+        .prefix(&format!("oscsim-{what}-"))
+        .tempdir()
+        .expect("the temporary folder is writable")
 }
 
 /// The 20 km road, 4 lanes of 3.5 m each way.

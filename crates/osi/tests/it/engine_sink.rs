@@ -16,6 +16,8 @@ use osi::osi3::stationary_object::classification::Type as StationaryType;
 use osi::osi3::GroundTruth;
 use osi::sink::{OsiSink, OsiSinkOptions};
 
+use crate::common;
+
 /// Runs scenario `file` for `duration` s into an OSI trace (a frame per step, static data in
 /// the first) in a temp folder; returns the engine after the run and the frames read back.
 /// The sink gives no warnings and finishes the trace it was asked for.
@@ -27,9 +29,8 @@ fn run_to_trace(file: &str, duration: f64, tag: &str) -> (Engine, Vec<GroundTrut
         ..EngineConfig::default()
     };
     let mut engine = Engine::new(&scenario, network, config).expect("engine builds");
-    let dir = std::env::temp_dir().join(format!("oscsim-osi-{tag}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let trace = dir.join("gt.osi");
+    let dir = common::temp_dir(tag);
+    let trace = dir.path().join("gt.osi");
     let options = OsiSinkOptions {
         pinned_time: Some(0),
         ..OsiSinkOptions::new(trace.clone())
@@ -39,7 +40,6 @@ fn run_to_trace(file: &str, duration: f64, tag: &str) -> (Engine, Vec<GroundTrut
     engine.run(&mut sink, &mut ()).expect("runs");
     assert_eq!(sink.finished_path(), Some(trace.as_path()));
     let frames = osi::trace::read_osi(&trace).expect("reads back");
-    std::fs::remove_dir_all(&dir).expect("temp dir removed");
     (engine, frames)
 }
 

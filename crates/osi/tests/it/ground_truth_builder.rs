@@ -122,7 +122,8 @@ fn traces_on_a_corpus_road_match_the_entity_states() {
     );
     check(&frames);
 
-    let dir = common::temp_dir("builder-traces");
+    let tmp = common::temp_dir("builder-traces");
+    let dir = tmp.path();
     for format in [TraceFormat::Osi, TraceFormat::Mcap] {
         let options = TraceOptions {
             scenario_name: "road_scene".into(),
@@ -131,7 +132,7 @@ fn traces_on_a_corpus_road_match_the_entity_states() {
             start_unix_seconds: 0,
             mcap_info: McapTraceInfo::default(),
         };
-        let mut trace = TraceFile::create(&dir, options).unwrap();
+        let mut trace = TraceFile::create(dir, options).unwrap();
         for gt in &frames {
             trace.offer(gt).unwrap();
         }

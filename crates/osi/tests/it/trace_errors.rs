@@ -104,7 +104,8 @@ fn time_must_increase_and_be_set() {
 
 #[test]
 fn truncated_mcap_never_panics() {
-    let dir = common::temp_dir("truncated-mcap");
+    let tmp = common::temp_dir("truncated-mcap");
+    let dir = tmp.path();
     let path = dir.join("t.mcap");
     let mut writer =
         osi::trace::McapTraceWriter::create(&path, &osi::trace::McapTraceInfo::default()).unwrap();

@@ -103,7 +103,8 @@ fn check_against_entity_state(frames: &[GroundTruth]) {
 
 #[test]
 fn osi_file_round_trip() {
-    let dir = common::temp_dir("osi-round-trip");
+    let tmp = common::temp_dir("osi-round-trip");
+    let dir = tmp.path();
     let path = dir.join("sample.osi");
     let frames = common::frames(FRAMES, VEHICLES);
     let mut writer = OsiFileWriter::create(&path).unwrap();
@@ -130,7 +131,8 @@ fn osi_file_round_trip() {
 
 #[test]
 fn mcap_round_trip_with_osi_layout() {
-    let dir = common::temp_dir("mcap-round-trip");
+    let tmp = common::temp_dir("mcap-round-trip");
+    let dir = tmp.path();
     let path = dir.join("sample.mcap");
     let frames = common::frames(FRAMES, VEHICLES);
     let info = McapTraceInfo {
@@ -188,7 +190,8 @@ fn mcap_round_trip_with_osi_layout() {
 
 #[test]
 fn trace_file_in_a_directory_is_named_by_the_convention_and_thinned() {
-    let dir = common::temp_dir("trace-file-dir");
+    let tmp = common::temp_dir("trace-file-dir");
+    let dir = tmp.path();
     let frames = common::frames(5, 1);
     for (format, ext) in [(TraceFormat::Osi, "osi"), (TraceFormat::Mcap, "mcap")] {
         let options = TraceOptions {
@@ -198,7 +201,7 @@ fn trace_file_in_a_directory_is_named_by_the_convention_and_thinned() {
             start_unix_seconds: 1_629_299_142,
             mcap_info: McapTraceInfo::default(),
         };
-        let mut trace = TraceFile::create(&dir, options).unwrap();
+        let mut trace = TraceFile::create(dir, options).unwrap();
         for gt in &frames {
             trace.offer(gt).unwrap();
         }
@@ -213,7 +216,7 @@ fn trace_file_in_a_directory_is_named_by_the_convention_and_thinned() {
         );
     }
     // No part file is left behind.
-    let left: Vec<_> = std::fs::read_dir(&dir)
+    let left: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
         .filter_map(|e| e.ok())
         .filter(|e| e.file_name().to_string_lossy().ends_with(".part"))

@@ -75,16 +75,23 @@ fn the_valid_twin_of_the_fixtures_loads() {
     assert!(s.warnings.is_empty(), "{:?}", s.warnings);
 }
 
+/// A folder of its own below the system's temporary folder, removed with what it holds when
+/// the returned value drops (at the test's end, also when it fails).
+fn scratch(what: &str) -> tempfile::TempDir {
+    tempfile::Builder::new()
+        .prefix(&format!("oscsim-{what}-"))
+        .tempdir()
+        .unwrap()
+}
+
 #[test]
 fn a_100_mb_file_is_refused_before_reading() {
-    let dir = std::env::temp_dir().join(format!("oscsim-scenario-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("huge.xosc");
+    let dir = scratch("scenario");
+    let path = dir.path().join("huge.xosc");
     let file = std::fs::File::create(&path).unwrap();
     // A sparse file: 100 MB long without writing 100 MB.
     file.set_len(100 * 1000 * 1000).unwrap();
     let err = Scenario::load(&path).unwrap_err();
-    std::fs::remove_dir_all(&dir).unwrap();
     let ErrorKind::FileTooLarge { size, limit, .. } = err.kind() else {
         panic!("{err}")
     };
@@ -102,14 +109,12 @@ fn a_100_mb_file_is_refused_before_reading() {
 
 #[test]
 fn an_8_mb_blank_file_is_malformed_xml_not_a_hang() {
-    let dir = std::env::temp_dir().join(format!("oscsim-scenario-ws-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("blank.xosc");
+    let dir = scratch("scenario-ws");
+    let path = dir.path().join("blank.xosc");
     // 8 MB of spaces and newlines: no root element. 100 000 lines of 80 spaces + '\n'.
     let line = format!("{}\n", " ".repeat(80));
     std::fs::write(&path, line.repeat(100_000)).unwrap();
     let err = Scenario::load(&path).unwrap_err();
-    std::fs::remove_dir_all(&dir).unwrap();
     assert!(matches!(err.kind(), ErrorKind::Xml { .. }), "{err}");
     // roxmltree reports a missing root element at the start of the document.
     assert_eq!((err.pos().line, err.pos().col), (1, 1), "{err}");
@@ -117,9 +122,8 @@ fn an_8_mb_blank_file_is_malformed_xml_not_a_hang() {
 
 #[test]
 fn deeply_nested_elements_do_not_overflow_the_stack() {
-    let dir = std::env::temp_dir().join(format!("oscsim-scenario-deep-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("deep.xosc");
+    let dir = scratch("scenario-deep");
+    let path = dir.path().join("deep.xosc");
     // valid.xosc with 200 000 nested <Deep> elements in the Storyboard.
     let valid = std::fs::read_to_string(fixture("valid.xosc")).unwrap();
     let depth = 200_000;
@@ -127,7 +131,6 @@ fn deeply_nested_elements_do_not_overflow_the_stack() {
     let text = valid.replacen("  <Storyboard>\n", &format!("  <Storyboard>{nest}\n"), 1);
     std::fs::write(&path, text).unwrap();
     let err = Scenario::load(&path).unwrap_err();
-    std::fs::remove_dir_all(&dir).unwrap();
     // The Storyboard's child check stops at the first <Deep>: line 18 of valid.xosc, after the
     // 2 spaces and 12 characters of `  <Storyboard>`, column 15.
     assert_eq!((err.pos().line, err.pos().col), (18, 15), "{err}");

@@ -39,8 +39,12 @@ fn pair(name: &str, value: &str) -> (String, String) {
 
 #[test]
 fn variants_are_resolved_from_memory_as_from_disk() {
-    let dir = std::env::temp_dir().join(format!("oscsim-with-parameters-{}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
+    // Removed below to show that variants read no file; on a failure before, at the drop.
+    let tmp = tempfile::Builder::new()
+        .prefix("oscsim-with-parameters-")
+        .tempdir()
+        .expect("temp dir");
+    let dir = tmp.path();
     copy_dir(&fixtures().join("catalogs"), &dir.join("catalogs"));
     let path = dir.join("catalog_kinds.xosc");
     fs::copy(fixtures().join("catalog_kinds.xosc"), &path).expect("copy");
@@ -48,7 +52,7 @@ fn variants_are_resolved_from_memory_as_from_disk() {
     let base = Scenario::load(&path).expect("loads");
     let from_disk =
         Scenario::load_with_parameters(&path, &[pair("TruckTop", "42")]).expect("loads");
-    fs::remove_dir_all(&dir).expect("temp dir removed");
+    fs::remove_dir_all(dir).expect("temp dir removed");
     assert!(!path.exists());
 
     // catalog_kinds.xosc declares TruckTop = 30; the Truck's MaxSpeed is assigned $TruckTop.

@@ -197,12 +197,13 @@ pub fn frames(n: usize, vehicles: usize) -> Vec<GroundTruth> {
         .collect()
 }
 
-/// A fresh empty directory under the system temp dir for one test.
-pub fn temp_dir(test: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("oscsim-osi-{test}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir is writable");
-    dir
+/// A fresh empty directory of its own under the system temp dir for one test, removed with
+/// everything in it when the returned value drops (at the test's end, also when it fails).
+pub fn temp_dir(test: &str) -> tempfile::TempDir {
+    tempfile::Builder::new()
+        .prefix(&format!("oscsim-osi-{test}-"))
+        .tempdir()
+        .expect("temp dir is writable")
 }
 
 /// The pedestrian "Walker" of both scenes, 0.5 × 0.6 × 1.8 m.
