@@ -31,17 +31,20 @@
 //! two from the true ends) and moved a double at a time until the test holds at each and
 //! fails at the double beyond (`edge`); only the key and [lo, hi] are kept, and the test the
 //! `mobil` controller makes per step ([`KeptRoad::within`]) is the key and lo ≤ s ≤ hi,
-//! inline. So a kept answer is used only where the direct query would give it, bit for bit;
+//! inline. The key is kept as the number the driver-input row gives it
+//! ([`TrackInput::question`]: the own lane's slot and the direction, one-to-one with the
+//! four fields where the own lane has a slot, store/driver_inputs.rs "The question's
+//! number"), so it is one comparison; a track whose own lane has no slot has none, and its
+//! answer is asked each time. So a kept answer is used only where the direct query would give it, bit for bit;
 //! anywhere else (a NaN s included) it is asked again. Where an end is not found in a few
 //! doubles the range stops short of it (at worst at the s asked at), never beyond where the
 //! test holds: the answer is then asked again sooner, the same answer (issue 31: the three
 //! tests and the key field by field, out of line, were ~52 instructions per `mobil`
 //! entity-step; the test `the_kept_range_of_s_is_the_stretches_test_at_their_ends` finds
-//! every end exact on four corpus roads).
+//! every end exact on four corpus roads; the key packed into three words was 26 of them,
+//! the question's number `the_question_number_tells_every_question_apart`).
 
-use opendrive::{
-    Direction, LaneHandle, Real, RoadHandle, RoadNetwork, SectionStretch, TrafficRule,
-};
+use opendrive::{LaneHandle, Real, RoadHandle, RoadNetwork, SectionStretch, TrafficRule};
 
 use crate::store::driver_inputs::TrackInput;
 use crate::store::lane_index::LaneIndex;
@@ -131,47 +134,6 @@ impl Stretches {
     }
 }
 
-/// The question an answer was asked for: the track's road, lane, direction of travel and
-/// own lane handle, packed into three words so that it is compared a word at a time (issue
-/// 31: the fields compared one by one, the handle behind its `Option`'s tag, were ~35
-/// instructions in the `mobil` step). One-to-one: the road and lane id (its bits) fill the
-/// first word; the own handle's road and section the second and its lane the third's low
-/// half, all zero without a handle; above them in the third, one bit for a handle and one
-/// for the direction. So two keys are equal exactly where the four fields are.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-struct Asked([u64; 3]);
-
-impl Asked {
-    #[inline(always)]
-    fn of(track: &TrackInput) -> Self {
-        let pair = |low: u32, high: u32| u64::from(low) | u64::from(high) << 32;
-        let (some, own) = match track.own {
-            Some(h) => (1, h),
-            None => (
-                0,
-                LaneHandle {
-                    road: 0,
-                    section: 0,
-                    lane: 0,
-                },
-            ),
-        };
-        let backward = u32::from(track.direction == Direction::Backward);
-        Asked([
-            pair(track.road.0, track.lane_id as u32),
-            pair(own.road, own.section),
-            pair(own.lane as u32, some | backward << 1),
-        ])
-    }
-
-    /// `self == other`, the words folded into one test (no array compare through memory).
-    #[inline(always)]
-    fn same(&self, other: &Asked) -> bool {
-        let ([a, b, c], [x, y, z]) = (self.0, other.0);
-        (a ^ x) | (b ^ y) | (c ^ z) == 0
-    }
-}
-
 /// The handle of `lane` of `road` in section `section`: the section holding a lane at
 /// s is the section at s when that section has the lane (`Road::lane_section_index_holding`),
 /// as a drivable lane of it has, so this is the handle `RoadNetwork::lane_handle_on` gives
@@ -188,8 +150,13 @@ fn handle(road: RoadHandle, section: usize, lane: i32) -> LaneHandle {
 /// (module doc).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct KeptRoad {
-    asked: Asked,
-    /// The track's road (in `asked`).
+    /// The number of the question asked ([`TrackInput::numbered`]): the track's road, lane,
+    /// direction of travel and own lane, one-to-one (store/driver_inputs.rs "The question's
+    /// number"); [`NO_QUESTION`](crate::store::driver_inputs::NO_QUESTION) where the track's
+    /// own lane had no slot, which no track's question is (the answer is then used for no
+    /// track).
+    question: u64,
+    /// The track's road.
     road: RoadHandle,
     /// The index of the section at the track's s.
     section: u32,
@@ -309,7 +276,7 @@ impl KeptRoad {
         };
         let (lo, hi) = stretches.range(track.s);
         let kept = KeptRoad {
-            asked: Asked::of(track),
+            question: track.numbered(),
             road: track.road,
             // As `handle` numbers it.
             section: section.index as u32,
@@ -321,13 +288,15 @@ impl KeptRoad {
         (kept, stretches)
     }
 
-    /// Whether the answers hold for `track`, decided by the kept range of s: the same
-    /// question and lo ≤ s ≤ hi. True exactly where the stretches' test holds at s (module
-    /// doc "One range of s"), except near an end not found, where it is false and the answer
-    /// is asked again (the same answer).
+    /// Whether the answers hold for `track`, decided by the question's number and the kept
+    /// range of s: the same question (one comparison, store/driver_inputs.rs "The
+    /// question's number") and lo ≤ s ≤ hi. True exactly where the question is the same,
+    /// the track's own lane has a slot and the stretches' test holds at s (module doc "One
+    /// range of s"), except near an end not found, where it is false and the answer is asked
+    /// again (the same answer).
     #[inline(always)]
     pub fn within(&self, track: &TrackInput) -> bool {
-        self.asked.same(&Asked::of(track)) && self.lo <= track.s && track.s <= self.hi
+        self.question == track.question() && self.lo <= track.s && track.s <= self.hi
     }
 
     /// The answer on `side`: the lane there, or `None` when there is no drivable lane driven
@@ -396,7 +365,9 @@ impl std::fmt::Debug for KeptBeside {
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::store::driver_inputs::NO_SLOT;
+    use crate::store::driver_inputs::{NO_QUESTION, NO_SLOT};
+    use opendrive::Direction;
+    use std::sync::Arc;
 
     /// The road network of esmini's corpus file `name` (`shared/corpus/esmini/xodr`).
     pub(crate) fn esmini_road(name: &str) -> RoadNetwork {
@@ -470,28 +441,22 @@ pub(crate) mod tests {
         );
     }
 
-    /// The kept range of s decides exactly where the stretches' test holds: on four corpus
-    /// roads (esmini's two_plus_one: five lane sections, lanes appearing and ending;
-    /// straight_500m_roadmarks: the mark type changing every 50–100 m; multi_intersections
-    /// and tunnels: junctions, several sections and marks), for a track in every lane and
-    /// direction of every road, asked at each section and mark start and at the doubles up
+    /// The kept range of s decides exactly where the stretches' test holds: on the four
+    /// corpus roads [`ROADS`], for a track in every lane and direction of every road (its
+    /// own lane's slot the index's, as the driver-input row keeps it), asked at each section and mark start and at the doubles up
     /// to three from it and from where s + `LENGTH_EPSILON` reaches it (the section search's
     /// test), and at the road's ends and beyond them: `within` is `holds` at each of those
     /// points and at the kept range's ends and the doubles next to them; each range holds
     /// the s it was asked at, and its ends are the stretches' true ends (the test fails a
     /// double beyond each finite end). So the inline test uses the kept answer exactly where
-    /// the stretches' test would.
+    /// the stretches' test would. A track whose own lane has no slot (no lane at s) uses
+    /// its answer nowhere, not even at the s it was asked at.
     #[test]
     fn the_kept_range_of_s_is_the_stretches_test_at_their_ends() {
-        let index = LaneIndex::default();
         let (mut asked, mut inside, mut outside, mut finite_ends) = (0, 0, 0, 0);
-        for name in [
-            "two_plus_one.xodr",
-            "straight_500m_roadmarks.xodr",
-            "multi_intersections.xodr",
-            "tunnels.xodr",
-        ] {
-            let net = esmini_road(name);
+        let mut unnumbered = 0;
+        for name in ROADS {
+            let (net, index) = road_numbered(name);
             for (r, road) in net.roads().iter().enumerate() {
                 let mut starts = vec![0.0, road.length];
                 for ls in &road.lane_sections {
@@ -518,18 +483,13 @@ pub(crate) mod tests {
                 let road_handle = RoadHandle(r as u32);
                 for &lane_id in &ids {
                     for direction in [Direction::Forward, Direction::Backward] {
-                        let track_at = |s: Real, own: Option<LaneHandle>| TrackInput {
-                            road: road_handle,
-                            lane_id,
-                            s,
-                            direction,
-                            blend_from: None,
-                            own,
-                            own_slot: NO_SLOT,
+                        let track_at = |s: Real, own: Option<LaneHandle>| {
+                            track_with(&index, (road_handle, lane_id, s, direction), own)
                         };
-                        // The stretches' test in full: the same key, the three stretches.
+                        // The stretches' test in full: the same question, the three
+                        // stretches.
                         let holds = |k: &KeptRoad, st: &Stretches, t: &TrackInput| {
-                            k.asked.same(&Asked::of(t)) && st.hold_at(t.s)
+                            k.question == t.numbered() && st.hold_at(t.s)
                         };
                         let mut last: Option<(KeptRoad, Stretches)> = None;
                         for &s in &at {
@@ -541,6 +501,12 @@ pub(crate) mod tests {
                             }
                             let (k, st) = KeptRoad::ask_with_stretches(&net, &index, &track);
                             asked += 1;
+                            if track.own_slot == NO_SLOT {
+                                // No number: used for no track, itself included.
+                                assert!(!k.within(&track) && k.question == NO_QUESTION);
+                                unnumbered += 1;
+                                continue;
+                            }
                             assert!(
                                 holds(&k, &st, &track) && k.within(&track),
                                 "{name} road {} s {s}",
@@ -577,92 +543,150 @@ pub(crate) mod tests {
             }
         }
         assert!(
-            asked > 700 && finite_ends > 1_000 && inside > 25_000 && outside > 15_000,
-            "{asked} asked, {finite_ends} finite ends, {inside} probes inside, {outside} outside"
+            asked > 700
+                && finite_ends > 1_000
+                && inside > 25_000
+                && outside > 15_000
+                && unnumbered > 0,
+            "{asked} asked, {finite_ends} finite ends, {inside} probes inside, {outside} \
+             outside, {unnumbered} without a number"
         );
     }
 
-    /// The packed key tells every pair of questions apart that differ in one field, and only
-    /// those: the road, the lane id (−1 against 1, whose bits differ in the sign), the
-    /// direction, no own handle against the handle (0, 0, 0), and each of the handle's road,
-    /// section and lane (lane −1 against 1 again).
-    #[test]
-    fn the_packed_key_is_the_four_fields() {
-        let h = |road, section, lane| LaneHandle {
+    /// The corpus roads the kept answers are tested on: two_plus_one (five lane sections,
+    /// lanes appearing and ending), straight_500m_roadmarks (the mark type changing every
+    /// 50–100 m), multi_intersections and tunnels (junctions, several sections and marks).
+    const ROADS: [&str; 4] = [
+        "two_plus_one.xodr",
+        "straight_500m_roadmarks.xodr",
+        "multi_intersections.xodr",
+        "tunnels.xodr",
+    ];
+
+    /// The network of corpus file `name` and an index of no entity on it: the network's lane
+    /// numbering, for the own lanes' slots ([`slot_of`]).
+    fn road_numbered(name: &str) -> (Arc<RoadNetwork>, LaneIndex) {
+        let net = Arc::new(esmini_road(name));
+        let index = LaneIndex::build(&net, &[]);
+        (net, index)
+    }
+
+    /// Where a track is: its road, lane, s and direction of travel.
+    pub(crate) type At = (RoadHandle, i32, Real, Direction);
+
+    /// The track input at `at` with own lane `own`, numbered in `index` as the driver-input
+    /// row numbers it ([`slot_of`]).
+    pub(crate) fn track_with(index: &LaneIndex, at: At, own: Option<LaneHandle>) -> TrackInput {
+        let (road, lane_id, s, direction) = at;
+        TrackInput {
             road,
-            section,
-            lane,
-        };
-        let base = TrackInput {
-            road: RoadHandle(3),
-            lane_id: -1,
-            s: 10.0,
-            direction: Direction::Forward,
+            lane_id,
+            s,
+            direction,
             blend_from: None,
-            own: Some(h(3, 2, -1)),
-            own_slot: NO_SLOT,
-        };
-        let variants = [
-            TrackInput {
-                road: RoadHandle(4),
-                ..base
-            },
-            TrackInput { lane_id: 1, ..base },
-            TrackInput {
-                direction: Direction::Backward,
-                ..base
-            },
-            TrackInput { own: None, ..base },
-            TrackInput {
-                own: Some(h(0, 0, 0)),
-                ..base
-            },
-            TrackInput {
-                own: Some(h(4, 2, -1)),
-                ..base
-            },
-            TrackInput {
-                own: Some(h(3, 1, -1)),
-                ..base
-            },
-            TrackInput {
-                own: Some(h(3, 2, 1)),
-                ..base
-            },
-        ];
-        let mut all = vec![base];
-        all.extend(variants);
-        all.push(TrackInput {
-            own: None,
-            lane_id: 1,
-            direction: Direction::Backward,
-            ..base
-        });
-        for a in &all {
-            for b in &all {
-                let fields = |t: &TrackInput| (t.road, t.lane_id, t.direction, t.own);
+            own,
+            own_slot: slot_of(index, own),
+        }
+    }
+
+    /// The track input at `at` on `net`, its own lane looked up there and numbered in `index`
+    /// as the driver-input row does it.
+    pub(crate) fn track_in(net: &RoadNetwork, index: &LaneIndex, at: At) -> TrackInput {
+        let (road, lane_id, s, _) = at;
+        track_with(index, at, net.lane_handle_on(road, lane_id, s))
+    }
+
+    /// The slot of `own` in `index`'s numbering as the driver-input row keeps it
+    /// (store/driver_inputs.rs `slot_of`).
+    fn slot_of(index: &LaneIndex, own: Option<LaneHandle>) -> u32 {
+        own.and_then(|h| index.slot(h))
+            .map_or(NO_SLOT, |k| u32::try_from(k).unwrap_or(NO_SLOT))
+    }
+
+    /// The question's number (store/driver_inputs.rs "The question's number") tells every
+    /// two questions apart and only those: on five corpus networks ([`ROADS`] and
+    /// fabriksgatan, a town's junctions), for every road, every lane
+    /// id of any of its sections (the centre lane included) and both directions, asked at each
+    /// section's start and middle and at the road's ends (the own lane's handle looked up
+    /// there as the row does), two tracks whose own lanes have slots have the same number
+    /// exactly where road, lane, direction and own handle are the same; so a change of any of
+    /// the four changes the number. A track without a slot (no own lane, the centre lane, a
+    /// row made outside an index) keeps the answer under [`NO_QUESTION`], which no track's
+    /// number is. By hand on two_plus_one's first road (sections at s 0: lanes −1 | 1, 2; at
+    /// 125: −1, −2 | 1, 2; at 175: −1, −2 | 1; store/lane_slots.rs numbers the right lanes
+    /// first): lane −1 at s 0 is slot 0, lane 2 slot 1 + 1 = 2, lane 1 at s 200 slot 3 + 4 +
+    /// 2 = 9; forward these are questions 0, 2 and 9, backward 2³² more.
+    #[test]
+    fn the_question_number_tells_every_question_apart() {
+        use std::collections::HashMap;
+        let (mut numbered, mut unnumbered, mut changes) = (0usize, 0usize, 0usize);
+        for name in ROADS.into_iter().chain(["fabriksgatan.xodr"]) {
+            let (net, index) = road_numbered(name);
+            let mut by_number: HashMap<u64, (RoadHandle, i32, Direction, Option<LaneHandle>)> =
+                HashMap::new();
+            let mut tracks = Vec::new();
+            for (r, road) in net.roads().iter().enumerate() {
+                let road_handle = RoadHandle(r as u32);
+                let mut at = vec![0.0, road.length];
+                for (k, ls) in road.lane_sections.iter().enumerate() {
+                    let end = road.lane_sections.get(k + 1).map_or(road.length, |n| n.s);
+                    at.extend([ls.s, 0.5 * (ls.s + end)]);
+                }
+                let mut ids = lane_ids(road);
+                ids.insert(0);
+                for &lane_id in &ids {
+                    for direction in [Direction::Forward, Direction::Backward] {
+                        for &s in &at {
+                            let at = (road_handle, lane_id, s, direction);
+                            tracks.push(track_in(&net, &index, at));
+                        }
+                    }
+                }
+            }
+            for t in &tracks {
+                let fields = (t.road, t.lane_id, t.direction, t.own);
+                if t.own_slot == NO_SLOT {
+                    assert_eq!(t.numbered(), NO_QUESTION, "{name} {t:?}");
+                    unnumbered += 1;
+                    continue;
+                }
+                // The row's invariant the number rests on: the own lane is the track's lane.
+                let own = t.own.expect("a slot is a lane's");
+                assert_eq!((own.road, own.lane), (t.road.0, t.lane_id), "{name} {t:?}");
+                assert_eq!(t.numbered(), t.question());
+                assert!(t.question() < 1 << 33 && t.question() != NO_QUESTION);
+                match by_number.insert(t.question(), fields) {
+                    Some(other) => assert_eq!(other, fields, "{name}: one number, two questions"),
+                    None => numbered += 1,
+                }
+            }
+            // Every two numbered tracks: the same number exactly where the four fields are.
+            let numbered_tracks: Vec<&TrackInput> =
+                tracks.iter().filter(|t| t.own_slot != NO_SLOT).collect();
+            for a in &numbered_tracks {
+                for b in &numbered_tracks {
+                    let fields = |t: &TrackInput| (t.road, t.lane_id, t.direction, t.own);
+                    let same = fields(a) == fields(b);
+                    assert_eq!(a.question() == b.question(), same, "{name} {a:?} {b:?}");
+                    changes += usize::from(!same);
+                }
+            }
+            if name == "two_plus_one.xodr" {
+                let track = |lane_id, s, direction| {
+                    track_in(&net, &index, (RoadHandle(0), lane_id, s, direction))
+                };
+                assert_eq!(track(-1, 0.0, Direction::Forward).question(), 0);
+                assert_eq!(track(2, 0.0, Direction::Backward).question(), (1 << 32) + 2);
+                assert_eq!(track(1, 200.0, Direction::Forward).question(), 9);
                 assert_eq!(
-                    Asked::of(a) == Asked::of(b),
-                    fields(a) == fields(b),
-                    "{a:?} {b:?}"
+                    track(1, 200.0, Direction::Backward).question(),
+                    (1 << 32) + 9
                 );
             }
         }
-        // Only s and the lane left moving out of: the same question.
-        let moved = TrackInput {
-            s: 11.0,
-            blend_from: Some(-2),
-            ..base
-        };
-        assert_eq!(Asked::of(&moved), Asked::of(&base));
-        // By hand: road 3, lane −1 (bits 0xffff_ffff), handle (3, 2, −1), forward.
-        assert_eq!(
-            Asked::of(&base).0,
-            [
-                0xffff_ffff_0000_0003,
-                0x0000_0002_0000_0003,
-                0x0000_0001_ffff_ffff
-            ]
+        assert!(
+            numbered > 500 && unnumbered > 100 && changes > 1_000_000,
+            "{numbered} numbers, {unnumbered} tracks without, {changes} pairs that differ"
         );
     }
 }

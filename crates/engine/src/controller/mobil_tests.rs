@@ -550,10 +550,12 @@ fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
         corpus("two_plus_one.xodr"),
         corpus("straight_500m_roadmarks.xodr"),
     ];
-    // No index: the kept answers' slots are none, the road's part is what is compared.
-    let no_index = LaneIndex::default();
     let (mut kept_used, mut asked, mut refused, mut none) = (0, 0, 0, 0);
-    for net in &nets {
+    for net in nets {
+        // An index of no entity: the lane numbering, whose slots number the questions
+        // (store/driver_inputs.rs "The question's number"); the road's part is compared.
+        let net = &std::sync::Arc::new(net);
+        let index = LaneIndex::build(net, &[]);
         for (r, road) in net.roads().iter().enumerate() {
             let mut at: Vec<Real> = (0..)
                 .map(|i| i as Real * 0.37)
@@ -579,21 +581,15 @@ fn the_kept_lanes_beside_are_the_roads_answer_at_every_s() {
                 for direction in [Direction::Forward, Direction::Backward] {
                     let mut kept = None;
                     for &s in &at {
-                        let track = TrackInput {
-                            road: road_handle,
-                            lane_id,
-                            s,
-                            direction,
-                            blend_from: None,
-                            own: net.lane_handle_on(road_handle, lane_id, s),
-                            own_slot: NO_SLOT,
-                        };
+                        let at = (road_handle, lane_id, s, direction);
+                        let track =
+                            crate::controller::lane_beside::tests::track_in(net, &index, at);
                         if kept.is_some_and(|k: KeptRoad| k.within(&track)) {
                             kept_used += 1;
                         } else {
                             asked += 1;
                         }
-                        let answer = KeptRoad::for_track(&mut kept, net, &no_index, &track);
+                        let answer = KeptRoad::for_track(&mut kept, net, &index, &track);
                         for side in [Side::Left, Side::Right] {
                             let direct = road_beside_directly(net, &track, side);
                             assert_eq!(

@@ -27,6 +27,22 @@
 //! another network's lanes (`LaneIndex::walk`), so a kept slot is always of the numbering the
 //! index reads with. Debug builds compare every row with a full build's, slot included
 //! (`LaneIndex::assert_same_as`).
+//!
+//! **The question's number.** The `mobil` controller keeps the road's answer on the lanes
+//! beside (controller/lane_beside.rs) for as long as the track's road, lane, direction of
+//! travel and own lane (the question) and a range of s hold. The row gives the question as one
+//! number, [`TrackInput::question`]: the own lane's slot and one bit for the direction, so the
+//! kept answer is tested by one comparison of it (issue 31: the four fields packed into three
+//! words and compared were 26 instructions per `mobil` entity-step). One-to-one among the
+//! rows whose own lane has a slot: the own lane's handle is the one of the track's road and
+//! lane ([`DriverInput::write`] and [`DriverInput::with_own`] take it from a look-up of that
+//! road and lane, or of the same road, lane and s), so it holds the road's index and the lane
+//! id, and two handles of one network have the same slot only where they are the same
+//! (store/lane_slots.rs: a section's slots are a range of their own, a lane's position in it
+//! its id's). So two such rows have the same number exactly where the four fields are the
+//! same, and a change of any of them changes the number. A row whose own lane has no slot
+//! (no own lane, a row made outside an index) has no number: the kept answer is then never
+//! used ([`NO_QUESTION`]).
 
 use opendrive::{Direction, LaneHandle, Real, RoadHandle, RoadNetwork};
 
@@ -39,8 +55,14 @@ use crate::world::entity::{Entity, EntityId};
 /// none, as for a handle without a slot.
 pub const NO_SLOT: u32 = u32::MAX;
 
+/// A number [`TrackInput::question`] never gives (it is below 2³³): the question of a track
+/// whose own lane has no slot, under which a kept answer matches no track (module doc "The
+/// question's number").
+pub const NO_QUESTION: u64 = u64::MAX;
+
 /// What the driver models read of an entity's lane track (the lane the default controller
-/// keeps it in).
+/// keeps it in). `own`, where there is one, is a handle of lane `lane_id` of `road` (module
+/// doc "The question's number").
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TrackInput {
     /// The track's road.
@@ -58,6 +80,28 @@ pub struct TrackInput {
     /// The lane index's slot of `own` (`LaneIndex::slot`, module doc "The own lane's slot"),
     /// [`NO_SLOT`] where it has none. In the row's padding: the row stays 64 bytes.
     pub own_slot: u32,
+}
+
+impl TrackInput {
+    /// The number of the question the road answers on the lanes beside (module doc "The
+    /// question's number"): the own lane's slot in the low 32 bits, bit 32 set for travel
+    /// towards decreasing s. Where `own_slot` is a slot, one-to-one with (`road`, `lane_id`,
+    /// `direction`, `own`); else (`own_slot` is [`NO_SLOT`]) not a number of the question:
+    /// see [`numbered`](Self::numbered).
+    #[inline(always)]
+    pub fn question(&self) -> u64 {
+        u64::from(self.own_slot) | u64::from(self.direction == Direction::Backward) << 32
+    }
+
+    /// [`question`](Self::question) where the own lane has a slot, else [`NO_QUESTION`],
+    /// which no track's `question` is: the number to keep an answer under.
+    pub fn numbered(&self) -> u64 {
+        if self.own_slot == NO_SLOT {
+            NO_QUESTION
+        } else {
+            self.question()
+        }
+    }
 }
 
 /// One entity's row (module doc).
