@@ -135,14 +135,25 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
     if distance < 0.0 {
         track.direction = track.direction.reverse();
     }
-    e.odometer += signed - (left / road_scale).min(signed);
-    // The lane ends with no successor: after a second step standing at its end the entity
-    // stops (speed 0), as in esmini's runs.
-    let blocked = left > 0.0 && left >= along * road_scale - crate::tolerance::LENGTH;
-    if blocked && e.at_lane_end {
-        e.speed = 0.0;
+    if memo_holds && road_scale > 0.0 {
+        // Inside the memo's range `advance` returns left = +0, so (+0 / scale) is +0 for a
+        // scale > 0, signed − min(+0, signed) is signed (x − (+0) = x for every x, −0 and
+        // NaN included; for signed = −0, min's +0 — x86's `minsd` returns its second operand
+        // on equal zeros, and the odometer is never −0 either way), and the lane end is not
+        // reached (left > 0 is false). The scale is +0 only where 1 − κ·t is +∞ (an infinite
+        // t on a curved road), which takes the full rule.
+        e.odometer += signed;
+        e.at_lane_end = false;
+    } else {
+        e.odometer += signed - (left / road_scale).min(signed);
+        // The lane ends with no successor: after a second step standing at its end the
+        // entity stops (speed 0), as in esmini's runs.
+        let blocked = left > 0.0 && left >= along * road_scale - crate::tolerance::LENGTH;
+        if blocked && e.at_lane_end {
+            e.speed = 0.0;
+        }
+        e.at_lane_end = blocked;
     }
-    e.at_lane_end = blocked;
     // Two copies of the placing, so that the move inside the memo's range (nearly every one)
     // runs without the memo's tests instead of testing the flag in their place. Inside the
     // range the track is on the road it was on (`advance` set only its s), so the road is
