@@ -61,10 +61,15 @@ impl approx::AbsDiffEq for Pose {
 }
 
 /// Wraps an angle into (−π, π].
+///
+/// The common case, |a| < π, returns a as it is in one comparison of |a| (the sign bit
+/// cleared); a = π, which is in the interval too, takes the wrap, where π mod 2π is π again
+/// (`rem_euclid` is exact, and π < 2π), so π is returned as it is; −π, NaN and every other a
+/// take the wrap as before.
 #[inline]
 pub fn normalize_angle(a: Real) -> Real {
     use std::f64::consts::{PI, TAU};
-    if a > -PI && a <= PI {
+    if a.abs() < PI {
         return a; // the common case, without a division
     }
     let mut w = a.rem_euclid(TAU);
@@ -131,6 +136,46 @@ mod tests {
         assert!((normalize_angle(-PI) - PI).abs() < 1e-12);
         assert!((normalize_angle(0.5) - 0.5).abs() < 1e-15);
         assert!((angle_difference(0.1, 2.0 * PI - 0.1) - 0.2).abs() < 1e-12);
+    }
+
+    /// The one-comparison test of the common case against the interval's two bounds, bit
+    /// for bit: every a with |a| < π returned as it is, π and −π (both to π, by hand: π mod
+    /// 2π = π, −π mod 2π = 2π − π = π exactly), their neighbours an ulp either side, ±0,
+    /// ±∞ and NaN (NaN out), and angles from −10π to 10π every 0.001 rad.
+    #[test]
+    fn normalize_angle_is_the_interval_test_bit_for_bit() {
+        use std::f64::consts::{PI, TAU};
+        let reference = |a: Real| {
+            if a > -PI && a <= PI {
+                return a;
+            }
+            let mut w = a.rem_euclid(TAU);
+            if w > PI {
+                w -= TAU;
+            }
+            w
+        };
+        let mut xs = vec![
+            0.0,
+            -0.0,
+            Real::INFINITY,
+            Real::NEG_INFINITY,
+            Real::NAN,
+            TAU,
+        ];
+        for a in [PI, -PI, TAU, -TAU, 3.0 * PI] {
+            xs.extend([a, a.next_up(), a.next_down()]);
+        }
+        xs.extend((-31_416..=31_416).map(|i| Real::from(i) * 0.001));
+        for a in xs {
+            let (got, want) = (normalize_angle(a), reference(a));
+            assert!(
+                got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                "{a}: {got} against {want}"
+            );
+        }
+        assert_eq!(normalize_angle(PI).to_bits(), PI.to_bits());
+        assert_eq!(normalize_angle(-PI).to_bits(), PI.to_bits());
     }
 
     #[test]
