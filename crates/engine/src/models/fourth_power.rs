@@ -74,13 +74,15 @@ fn exact(x: Real) -> Option<Real> {
         return None;
     }
     let r = significand + u64::from(q >= 35);
-    if r == 1 << 52 || r == 1 << 53 {
-        return None; // a power of two
+    // r is in [2^52, 2^53]: a power of two where its fraction bits are all 0.
+    let fraction = r & FRACTION;
+    if fraction == 0 {
+        return None;
     }
     // x⁴ = r·2^(64 + sh + 84 + 4(e − 1075)): a biased exponent of 4e + sh − 3077, in
     // 3..=2046 for e in range.
     let biased = 4 * e + u64::from(sh) - 3077;
-    Some(Real::from_bits((biased << 52) | (r & FRACTION)))
+    Some(Real::from_bits((biased << 52) | fraction))
 }
 
 #[cfg(test)]
