@@ -116,13 +116,20 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
     };
     // The speed is along the path: a lateral transition moving sideways at x·v leaves
     // v·√(1 − x²) along the lane (x taken over the step: mean of its start and end). Without
-    // a transition the share is 0.
-    let end_share = match track.blend {
-        Some(_) => lateral(road, track, false).map_or(0.0, |(_, _, x)| x),
-        None => 0.0,
+    // a transition the share is 0. Without one, and with no lateral motion left from the step
+    // before (lateral_slope ±0: every move along a lane), x = 0.5·(±0 + 0) = +0, 1 − x² = 1,
+    // √1 = 1 and signed·1 = signed, exactly (signed is never a signalling NaN: it is a
+    // product or its negation), so `along` is `signed` without the arithmetic.
+    let along = match track.blend {
+        None if e.lateral_slope == 0.0 => signed,
+        _ => {
+            let end_share = match track.blend {
+                Some(_) => lateral(road, track, false).map_or(0.0, |(_, _, x)| x),
+                None => 0.0,
+            };
+            along_path(signed, e.lateral_slope, end_share)
+        }
     };
-    let x = (0.5 * (e.lateral_slope + end_share)).clamp(-1.0, 1.0);
-    let along = signed * (1.0 - x * x).sqrt();
     // Reversing runs the route backwards: no route successor is on offer then.
     let (left, memo_holds) = match &mut e.route_follow {
         Some(follow) if distance >= 0.0 => {
@@ -164,6 +171,14 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
         let road = net.road_at(track.road);
         place(road, e, false);
     }
+}
+
+/// The travel `signed` along the lane of a path moving sideways at shares `start` and `end`
+/// of its speed at the step's start and end: signed·√(1 − x²), x their mean (clamped to ±1).
+#[inline(always)]
+fn along_path(signed: Real, start: Real, end: Real) -> Real {
+    let x = (0.5 * (start + end)).clamp(-1.0, 1.0);
+    signed * (1.0 - x * x).sqrt()
 }
 
 /// Ratio of reference-line length to travelled length at lateral position t where the
@@ -515,6 +530,37 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The travel along the lane without a lateral transition and without lateral motion left
+    /// (`advance_entity`'s shortcut, `along = signed`) against [`along_path`] at shares ±0 and
+    /// +0 (`end_share` without a transition), bit for bit: the distances of a step, ±0, the
+    /// smallest subnormal, 1e300, +∞ and NaN (a quiet one, as products give). By hand:
+    /// x = 0.5·(−0 + 0) = +0, √(1 − 0) = 1, 7.25·1 = 7.25.
+    #[test]
+    fn the_travel_without_lateral_motion_is_the_distance_bit_for_bit() {
+        let distances = [
+            0.0,
+            -0.0,
+            Real::from_bits(1),
+            0.05,
+            1.75,
+            7.25,
+            33.3,
+            1e300,
+            Real::INFINITY,
+            Real::NAN,
+        ];
+        for signed in distances {
+            for start in [0.0, -0.0] {
+                let full = along_path(signed, start, 0.0);
+                assert_eq!(full.to_bits(), signed.to_bits(), "{signed} at {start}");
+            }
+        }
+        assert_eq!(along_path(7.25, -0.0, 0.0), 7.25);
+        // A lateral share left from the step before is not the shortcut's: 0.6 and 0.8 give
+        // x = 0.7, √0.51 ≈ 0.714143.
+        assert!((along_path(1.0, 0.6, 0.8) - 0.714_143).abs() < 1e-6);
     }
 
     /// The move with its shortcuts (advance inside the lanes memo's range, the pose along a
