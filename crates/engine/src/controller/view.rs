@@ -21,7 +21,7 @@ use super::lane_beside::KeptRoad;
 pub use super::lane_beside::Side;
 use crate::signals::Signals;
 use crate::store::driver_inputs::DriverInput;
-use crate::store::lane_index::{LaneIndex, Neighbour};
+use crate::store::lane_index::{LaneIndex, Neighbour, HINTS};
 use crate::world::{Entity, EntityId};
 
 /// Base distance (m) a gap search looks ahead or behind; it adds [`HORIZON_TIME`] seconds of
@@ -102,6 +102,31 @@ fn hint_kind(lane: i32, own: i32, query: usize) -> usize {
         std::cmp::Ordering::Less => 2,
     };
     which * 3 + query
+}
+
+/// The hints of an entity's searches alongside in the lanes beside it, left and right of its
+/// direction of travel `direction`, from its [`HINTS`] hints `hints`: [`hint_kind`] of each
+/// lane beside and kind 2, without comparing lane ids (issue 31: the comparison and its table
+/// look-up were about 9 instructions a side). Why the same
+/// kinds: the lanes beside are the own lane's neighbours `lane_shift(own, ±1, direction)`
+/// (controller/lane_beside.rs, world/lanes.rs): travelling +s the left one has the larger id
+/// (kind 3 + 2) and the right one the smaller (6 + 2); travelling −s the other way round.
+/// (Only a lane id at the end of `i32`'s range, where the shift wraps, could break this;
+/// a hint only speeds a search, whose answer does not depend on it, so even there every
+/// answer is the same.)
+#[inline(always)]
+fn alongside_hints(
+    hints: Option<&[AtomicU32; HINTS]>,
+    direction: Direction,
+) -> [Option<&AtomicU32>; 2] {
+    let Some(h) = hints else {
+        return [None, None];
+    };
+    let (larger, smaller) = (&h[3 + 2], &h[6 + 2]);
+    match direction {
+        Direction::Forward => [Some(larger), Some(smaller)],
+        Direction::Backward => [Some(smaller), Some(larger)],
+    }
 }
 
 /// The world of one step as the controller of one entity sees it (module doc).
@@ -280,8 +305,8 @@ impl<'a> ControllerView<'a> {
     }
 
     /// [`ahead_in`](Self::ahead_in) with the lane's handle and direction of travel known.
-    fn ahead_on(&self, lane: i32, at: (LaneHandle, Direction)) -> Option<Gap> {
-        self.ahead_hinted(at, None, self.hint(lane, 0))
+    fn ahead_on(&self, lane: i32, (h, dir): (LaneHandle, Direction)) -> Option<Gap> {
+        self.ahead_hinted(&h, dir, None, self.hint(lane, 0))
     }
 
     /// [`ahead_on`](Self::ahead_on) with the search's hint known: the answer the entries at
@@ -291,11 +316,14 @@ impl<'a> ControllerView<'a> {
     /// own leader's question gets 99.7 % of the time on the scale highway). `slot`: the
     /// lane's slot in the index where the caller keeps it (the own lane's, from the driver
     /// inputs: [`TrackInput::own_slot`](crate::store::driver_inputs::TrackInput::own_slot)),
-    /// else `None` and it is looked up.
+    /// else `None` and it is looked up. The lane's handle `h` by reference: only the search
+    /// reads it where the caller keeps the slot, and a copy passed by value was made before
+    /// the answer at the hint (issue 31: the own leader's handle is the driver inputs').
     #[inline(always)]
     fn ahead_hinted(
         &self,
-        (h, dir): (LaneHandle, Direction),
+        h: &LaneHandle,
+        dir: Direction,
         slot: Option<u32>,
         hint: Option<&'a AtomicU32>,
     ) -> Option<Gap> {
@@ -307,7 +335,7 @@ impl<'a> ControllerView<'a> {
             (Some(hint), Some(k)) => self
                 .index
                 .nearest_ahead_proven_at(k, from, id, horizon, hint),
-            (Some(hint), None) => self.index.nearest_ahead_proven(h, from, id, horizon, hint),
+            (Some(hint), None) => self.index.nearest_ahead_proven(*h, from, id, horizon, hint),
             (None, _) => None,
         };
         let n = match proven {
@@ -322,7 +350,7 @@ impl<'a> ControllerView<'a> {
     #[inline(never)]
     fn ahead_searched(
         &self,
-        h: LaneHandle,
+        h: &LaneHandle,
         from: Real,
         dir: Direction,
         horizon: Real,
@@ -337,7 +365,7 @@ impl<'a> ControllerView<'a> {
         };
         let id = self.input.id;
         self.index
-            .nearest(net, h, from, dir, id, horizon, &mut choose, hint)
+            .nearest(net, *h, from, dir, id, horizon, &mut choose, hint)
     }
 
     /// The nearest entity behind in `lane` from the rear bumper.
@@ -363,22 +391,39 @@ impl<'a> ControllerView<'a> {
 
     /// The vehicle (or any entity) ahead: the nearest in the entity's lane, and during a lane
     /// change also in the lane it leaves.
+    ///
+    /// Always inlined into the driver models' commands, the lane change's case out of line
+    /// (`leader_changing`): as a function of its own, the question answered at the hint
+    /// (nearly every one) paid a call's entry and exit, its registers saved and restored, and
+    /// its answer returned through memory (issue 31: about 20 instructions per `idm` or
+    /// `mobil` entity-step).
+    #[inline(always)]
     pub fn leader(&self) -> Option<Gap> {
         let track = self.input.track.as_ref()?;
         // Off a lateral transition (nearly always) the own lane's answer is the leader, returned
         // as the search gives it: chosen below between two answers, it was copied through the
         // stack with 16-byte loads of what the search had stored 4 and 8 bytes at a time, a
         // load that waits for the stores to reach the cache (80 % of this function's samples
-        // on the scale highway, issue 31). The same answer: with no lane left, `left` is `None`
-        // and the choice is `here`.
-        let Some(from) = track.blend_from.filter(|&from| from != track.lane_id) else {
-            // `ahead_in` of the own lane: its handle is the inputs' (`lane_handle`), its
-            // slot too (the slot of that handle, or a slot with no lane where it has none:
-            // store/driver_inputs.rs), its hint the own lane's ahead, kind 0 (`hint`).
-            let h = track.own?;
-            let hint = self.index.hint(self.input.id, 0);
-            return self.ahead_hinted((h, track.direction), Some(track.own_slot), hint);
-        };
+        // on the scale highway, issue 31). The same answer as `leader_changing`'s choice: with
+        // no lane left, `left` is `None` and the choice is `here`.
+        match track.blend_from {
+            Some(from) if from != track.lane_id => self.leader_changing(from),
+            _ => {
+                // `ahead_in` of the own lane: its handle is the inputs' (`lane_handle`), its
+                // slot too (the slot of that handle, or a slot with no lane where it has none:
+                // store/driver_inputs.rs), its hint the own lane's ahead, kind 0 (`hint`).
+                let h = track.own.as_ref()?;
+                let hint = self.index.hint(self.input.id, 0);
+                self.ahead_hinted(h, track.direction, Some(track.own_slot), hint)
+            }
+        }
+    }
+
+    /// [`leader`](Self::leader) during a lane change that leaves lane `from`: the nearer of
+    /// the leaders in the own lane and in `from`.
+    #[inline(never)]
+    fn leader_changing(&self, from: i32) -> Option<Gap> {
+        let track = self.input.track.as_ref()?;
         let here = self.ahead_in(track.lane_id);
         let left = self.ahead_in(from);
         match (here, left) {
@@ -430,16 +475,18 @@ impl<'a> ControllerView<'a> {
     /// up here once for both sides and kept with each ([`Beside::range`],
     /// [`Beside::alongside`]): the occupancy's questions looked them up again per side (about
     /// 15 instructions a side, issue 31); the index does not change within a step's commands,
-    /// so they are the same numbers.
+    /// so they are the same numbers. The hints' kinds follow from the direction of travel
+    /// ([`alongside_hints`]; debug builds compare them with [`hint`](Self::hint)'s).
     #[inline(always)]
     pub(crate) fn beside_kept(&self, kept: &mut Option<KeptRoad>) -> [Option<Beside<'a>>; 2] {
         let id = self.input.id;
         let (Some(track), Some(me)) = (self.input.track.as_ref(), self.index.footprint(id)) else {
             return [None, None];
         };
-        let (range, hints) = (me.s_range, self.index.hints(id));
+        let range = me.s_range;
         let road = KeptRoad::for_track(kept, self.network, self.index, track);
-        [Side::Left, Side::Right].map(|side| {
+        let alongside = alongside_hints(self.index.hints(id), track.direction);
+        let beside = |side: Side, alongside: Option<&'a AtomicU32>| {
             road.side(side).map(|beside| Beside {
                 lane: beside.lane,
                 at: (beside.handle, track.direction),
@@ -447,9 +494,19 @@ impl<'a> ControllerView<'a> {
                 crossing_permitted: beside.crossing_permitted,
                 slot: road.slot(side),
                 range,
-                alongside: hints.map(|h| &h[hint_kind(beside.lane, track.lane_id, 2)]),
+                alongside,
             })
-        })
+        };
+        let [left, right] = alongside;
+        let sides = [beside(Side::Left, left), beside(Side::Right, right)];
+        debug_assert!(
+            sides.iter().flatten().all(|b| std::ptr::eq(
+                b.alongside.map_or(std::ptr::null(), |h| h),
+                self.hint(b.lane, 2).map_or(std::ptr::null(), |h| h)
+            )),
+            "the alongside hints are `hint_kind`'s"
+        );
+        sides
     }
 
     /// Whether an entity's box overlaps the entity's own length in the lane beside (a change
@@ -495,5 +552,58 @@ impl<'a> ControllerView<'a> {
             || self.entity.bounding_box.length(),
             |f| f.s_range.1 - f.s_range.0,
         )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::world::lanes::lane_shift;
+
+    /// The hints of the searches alongside, taken from the direction of travel, are the
+    /// straightforward ones, [`hint_kind`] of the lane beside against the own lane, for every
+    /// own lane id from −12 to 12 (the lanes ±1 beside the centre lane, where the shift skips
+    /// 0, among them), both directions and both sides, the lanes beside numbered as
+    /// controller/lane_beside.rs numbers them (`lane_shift` by +1 on the left, −1 on the
+    /// right). By hand: lane −2 travelling +s has −1 on its left (larger: kind 3 + 2 = 5) and
+    /// −3 on its right (smaller: 6 + 2 = 8); lane 1 travelling −s has −1 on its left (the
+    /// shift skips 0; smaller: 8) and 2 on its right (larger: 5). Without hints, none.
+    #[test]
+    fn the_alongside_hints_are_hint_kinds() {
+        let hints: [AtomicU32; HINTS] = std::array::from_fn(|k| AtomicU32::new(k as u32));
+        let kind = |h: Option<&AtomicU32>| h.map(|h| h.load(std::sync::atomic::Ordering::Relaxed));
+        let by_hand = [
+            (-2, Direction::Forward, [-1, -3], [5, 8]),
+            (1, Direction::Backward, [-1, 2], [8, 5]),
+        ];
+        for (own, direction, lanes, [left, right]) in by_hand {
+            let shifted = [
+                lane_shift(own, 1, direction),
+                lane_shift(own, -1, direction),
+            ];
+            assert_eq!(shifted, lanes, "{own}");
+            let [l, r] = alongside_hints(Some(&hints), direction);
+            assert_eq!((kind(l), kind(r)), (Some(left), Some(right)), "{own}");
+        }
+        let mut checked = 0;
+        for own in (-12..=12).filter(|&l| l != 0) {
+            for direction in [Direction::Forward, Direction::Backward] {
+                let found = alongside_hints(Some(&hints), direction);
+                for (side, n) in [(0, 1), (1, -1)] {
+                    let lane = lane_shift(own, n, direction);
+                    let want = hint_kind(lane, own, 2);
+                    let got = found[side].expect("hints given");
+                    assert!(
+                        std::ptr::eq(got, &hints[want]),
+                        "own {own} {direction:?} side {side}: lane {lane}, kind {want}"
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert_eq!(checked, 24 * 2 * 2);
+        for direction in [Direction::Forward, Direction::Backward] {
+            assert!(alongside_hints(None, direction).iter().all(Option::is_none));
+        }
     }
 }
