@@ -79,7 +79,7 @@ use opendrive::{LaneHandle, Real, RoadNetwork};
 use super::car_following::{nearer, IdmController};
 use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
 use super::lane_beside::KeptBeside;
-use super::view::{Beside, ControllerView, Gap};
+use super::view::{Beside, ControllerView, Gap, OwnLane};
 use crate::models::idm::{IdmParameters, Leader};
 use crate::models::mobil::{FollowerChange, LaneChangeCandidate, MobilParameters};
 use crate::store::driver_inputs::TrackInput;
@@ -227,7 +227,7 @@ impl MobilController {
             Ok(true) => {}
         }
         let mut best: Option<(Real, i32)> = None;
-        let [left, right] = view.beside_kept(&mut self.kept.0);
+        let [left, right] = view.beside_kept_with(&mut self.kept.0, own.range);
         // Each side in turn, not a loop over the pair: the pair then stays in registers
         // (looped over, it was stored and read back; issue 31).
         self.consider(view, own, left, &mut best);
@@ -531,6 +531,9 @@ struct Own {
     len: Real,
     /// The leader in its lane.
     leader: Option<Gap>,
+    /// The s-range of its footprint in the lane index, if it has one (the lanes beside's
+    /// occupancy asks about it: [`ControllerView::beside_kept_with`]).
+    range: Option<(Real, Real)>,
     /// The red light ahead, if any (run option stop_at_red_lights).
     light: Option<Real>,
     /// a_c: the IDM acceleration behind the leader (or the light): also the command.
@@ -549,13 +552,20 @@ impl Own {
         let p = &idm.params;
         let v = view.speed().max(0.0);
         let free = idm.free_term(view, v);
-        let leader = view.leader();
+        // The leader, the length and the footprint's s-range with one look-up of the
+        // footprint (issue 31).
+        let OwnLane {
+            leader,
+            length,
+            range,
+        } = view.own_lane();
         let light = view.red_light();
         Own {
             v,
             free,
-            len: view.length(),
+            len: length,
             leader,
+            range,
             light,
             a_c: p.acceleration_with_free(free, v, nearer(leader.map(to), light)),
             old_follower: None,

@@ -381,13 +381,29 @@ fn the_views_answers_at_the_hint_are_the_searches_bit_for_bit() {
                     "seed {seed} step {step} {}",
                     e.name
                 );
+                // The own lane read with one look-up of the footprint is the leader, the
+                // length and the footprint's s-range asked one by one.
+                let own = view.own_lane();
+                assert_eq!(
+                    bits(own.leader),
+                    reference,
+                    "seed {seed} step {step} {}",
+                    e.name
+                );
+                assert_eq!(own.length.to_bits(), view.length().to_bits());
+                assert_eq!(
+                    own.range.map(|(lo, hi)| (lo.to_bits(), hi.to_bits())),
+                    Some((me.s_range.0.to_bits(), me.s_range.1.to_bits()))
+                );
                 if reference.is_some() {
                     found += 1;
                 } else {
                     none += 1;
                 }
+                // As the `mobil` step asks for them: with the range `own_lane` read (the
+                // asserts below hold it to the footprint's).
                 for b in view
-                    .beside_kept(&mut kept[e.id.index()])
+                    .beside_kept_with(&mut kept[e.id.index()], own.range)
                     .into_iter()
                     .flatten()
                 {

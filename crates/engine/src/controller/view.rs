@@ -21,7 +21,7 @@ use super::lane_beside::KeptRoad;
 pub use super::lane_beside::Side;
 use crate::signals::Signals;
 use crate::store::driver_inputs::DriverInput;
-use crate::store::lane_index::{LaneIndex, Neighbour, HINTS};
+use crate::store::lane_index::{Footprint, LaneIndex, Neighbour, HINTS};
 use crate::world::{Entity, EntityId};
 
 /// Base distance (m) a gap search looks ahead or behind; it adds [`HORIZON_TIME`] seconds of
@@ -127,6 +127,18 @@ fn alongside_hints(
         Direction::Forward => [Some(larger), Some(smaller)],
         Direction::Backward => [Some(smaller), Some(larger)],
     }
+}
+
+/// What a driver model's step reads of its entity's own lane
+/// ([`ControllerView::own_lane`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct OwnLane {
+    /// [`ControllerView::leader`].
+    pub leader: Option<Gap>,
+    /// [`ControllerView::length`].
+    pub length: Real,
+    /// The s-range of the entity's footprint in the lane index, `None` where it has none.
+    pub range: Option<(Real, Real)>,
 }
 
 /// The world of one step as the controller of one entity sees it (module doc).
@@ -306,7 +318,8 @@ impl<'a> ControllerView<'a> {
 
     /// [`ahead_in`](Self::ahead_in) with the lane's handle and direction of travel known.
     fn ahead_on(&self, lane: i32, (h, dir): (LaneHandle, Direction)) -> Option<Gap> {
-        self.ahead_hinted(&h, dir, None, self.hint(lane, 0))
+        let me = self.index.footprint(self.input.id)?;
+        self.ahead_hinted(me, &h, dir, None, self.hint(lane, 0))
     }
 
     /// [`ahead_on`](Self::ahead_on) with the search's hint known: the answer the entries at
@@ -318,16 +331,17 @@ impl<'a> ControllerView<'a> {
     /// inputs: [`TrackInput::own_slot`](crate::store::driver_inputs::TrackInput::own_slot)),
     /// else `None` and it is looked up. The lane's handle `h` by reference: only the search
     /// reads it where the caller keeps the slot, and a copy passed by value was made before
-    /// the answer at the hint (issue 31: the own leader's handle is the driver inputs').
+    /// the answer at the hint (issue 31: the own leader's handle is the driver inputs'). `me`:
+    /// the entity's footprint, which the caller has looked up.
     #[inline(always)]
     fn ahead_hinted(
         &self,
+        me: &Footprint,
         h: &LaneHandle,
         dir: Direction,
         slot: Option<u32>,
         hint: Option<&'a AtomicU32>,
     ) -> Option<Gap> {
-        let me = self.index.footprint(self.input.id)?;
         let (from, horizon) = (me.front(dir), self.horizon());
         let id = self.input.id;
         // A match, not a closure: the closure was left out of line (a call per question).
@@ -338,11 +352,12 @@ impl<'a> ControllerView<'a> {
             (Some(hint), None) => self.index.nearest_ahead_proven(*h, from, id, horizon, hint),
             (None, _) => None,
         };
-        let n = match proven {
-            Some(n) => n?,
-            None => self.ahead_searched(h, from, dir, horizon, hint)?,
-        };
-        Some(self.gap(n, false))
+        // `gap` in each arm: where the hint proves the answer its direction is `Forward`
+        // (`ahead_at_hint`), and the speed's sign is not tested there.
+        match proven {
+            Some(n) => Some(self.gap(n?, false)),
+            None => Some(self.gap(self.ahead_searched(h, from, dir, horizon, hint)?, false)),
+        }
     }
 
     /// [`ahead_hinted`](Self::ahead_hinted)'s search ([`LaneIndex::nearest`]), along the lane
@@ -399,6 +414,12 @@ impl<'a> ControllerView<'a> {
     /// `mobil` entity-step).
     #[inline(always)]
     pub fn leader(&self) -> Option<Gap> {
+        self.leader_from(self.index.footprint(self.input.id))
+    }
+
+    /// [`leader`](Self::leader) with the entity's footprint `me` looked up.
+    #[inline(always)]
+    fn leader_from(&self, me: Option<&Footprint>) -> Option<Gap> {
         let track = self.input.track.as_ref()?;
         // Off a lateral transition (nearly always) the own lane's answer is the leader, returned
         // as the search gives it: chosen below between two answers, it was copied through the
@@ -414,7 +435,7 @@ impl<'a> ControllerView<'a> {
                 // store/driver_inputs.rs), its hint the own lane's ahead, kind 0 (`hint`).
                 let h = track.own.as_ref()?;
                 let hint = self.index.hint(self.input.id, 0);
-                self.ahead_hinted(h, track.direction, Some(track.own_slot), hint)
+                self.ahead_hinted(me?, h, track.direction, Some(track.own_slot), hint)
             }
         }
     }
@@ -479,11 +500,22 @@ impl<'a> ControllerView<'a> {
     /// ([`alongside_hints`]; debug builds compare them with [`hint`](Self::hint)'s).
     #[inline(always)]
     pub(crate) fn beside_kept(&self, kept: &mut Option<KeptRoad>) -> [Option<Beside<'a>>; 2] {
+        let range = self.index.footprint(self.input.id).map(|f| f.s_range);
+        self.beside_kept_with(kept, range)
+    }
+
+    /// [`beside_kept`](Self::beside_kept) with the entity's footprint's s-range `range`
+    /// looked up ([`own_lane`](Self::own_lane)'s; `None` where it has no footprint).
+    #[inline(always)]
+    pub(crate) fn beside_kept_with(
+        &self,
+        kept: &mut Option<KeptRoad>,
+        range: Option<(Real, Real)>,
+    ) -> [Option<Beside<'a>>; 2] {
         let id = self.input.id;
-        let (Some(track), Some(me)) = (self.input.track.as_ref(), self.index.footprint(id)) else {
+        let (Some(track), Some(range)) = (self.input.track.as_ref(), range) else {
             return [None, None];
         };
-        let range = me.s_range;
         let road = KeptRoad::for_track(kept, self.network, self.index, track);
         let alongside = alongside_hints(self.index.hints(id), track.direction);
         let beside = |side: Side, alongside: Option<&'a AtomicU32>| {
@@ -548,10 +580,32 @@ impl<'a> ControllerView<'a> {
 
     /// The entity's length along its direction of travel (m): its box's s-range.
     pub fn length(&self) -> Real {
-        self.index.footprint(self.input.id).map_or_else(
+        self.length_from(self.index.footprint(self.input.id))
+    }
+
+    /// [`length`](Self::length) with the entity's footprint `me` looked up.
+    #[inline(always)]
+    fn length_from(&self, me: Option<&Footprint>) -> Real {
+        me.map_or_else(
             || self.entity.bounding_box.length(),
             |f| f.s_range.1 - f.s_range.0,
         )
+    }
+
+    /// What a driver model's step reads of the entity's own lane, its footprint looked up once
+    /// for all of it (issue 31: the leader, the length and the lanes beside's s-range looked
+    /// it up each, about 10 instructions a time): [`leader`](Self::leader),
+    /// [`length`](Self::length) and the footprint's s-range, which
+    /// [`beside_kept_with`](Self::beside_kept_with) takes. The same numbers as asked one by
+    /// one: the index does not change within a step's commands.
+    #[inline(always)]
+    pub(crate) fn own_lane(&self) -> OwnLane {
+        let me = self.index.footprint(self.input.id);
+        OwnLane {
+            leader: self.leader_from(me),
+            length: self.length_from(me),
+            range: me.map(|f| f.s_range),
+        }
     }
 }
 
