@@ -79,7 +79,7 @@ use opendrive::{LaneHandle, Real, RoadNetwork};
 use super::car_following::{nearer, IdmController};
 use super::command::{Command, Controller, Lateral, Longitudinal, Strategy};
 use super::lane_beside::KeptBeside;
-use super::view::{Beside, ControllerView, Gap, OwnLane};
+use super::view::{Beside, Besides, ControllerView, Gap, OwnLane, Side};
 use crate::models::idm::{IdmParameters, Leader};
 use crate::models::mobil::{FollowerChange, LaneChangeCandidate, MobilParameters};
 use crate::store::driver_inputs::TrackInput;
@@ -131,30 +131,11 @@ impl MobilController {
         }
     }
 
-    /// The MOBIL verdict on changing into the lane `b` (module doc): its margin when the
-    /// change is safe and worth it. The accelerations are those of the straightforward rule
-    /// ([`Self::judge_each`] in the tests), computed in an order that stops early: a lane
-    /// behind a mark not to be crossed costs no occupancy search, an occupied one no gap
-    /// search, a change unsafe for the changer no search of the new follower (each leaves the
-    /// verdict "no change"); the free-road term of a speed is evaluated once for all the
-    /// leaders weighed at that speed; and the followers are weighed first with bounds of their
-    /// free-road terms instead of the terms ([`settled_without_powers`]), which settle almost
-    /// every candidate.
-    #[inline(always)]
-    fn judge(&self, view: &ControllerView<'_>, own: &mut Own, b: &Beside<'_>) -> Option<Real> {
-        // The mark first: a lane behind a mark not to be crossed costs no occupancy search
-        // (either leaves the verdict "no change").
-        if !b.crossing_permitted || view.occupied_beside(b) {
-            return None;
-        }
-        Self::weigh(&self.idm.params, &self.mobil, view, own, *b)
-    }
-
-    /// [`judge`](Self::judge) of a lane beside that may be crossed into and is not occupied
-    /// alongside: out of line, so that the common verdict (occupied: 96 % of the lanes beside
-    /// asked about on the scale highway, issue 31) costs no set-up of the weighing. Inlined,
-    /// its loop-invariant parameter arithmetic (the desired gap's 2√(ab), the negated b_safe)
-    /// was hoisted before `decide`'s loop and paid at every step.
+    /// [`consider`](Self::consider)'s verdict on a lane beside that may be crossed into and
+    /// is not occupied alongside: out of line, so that the common verdict (occupied: 96 % of
+    /// the lanes beside asked about on the scale highway, issue 31) costs no set-up of the
+    /// weighing. Inlined, its loop-invariant parameter arithmetic (the desired gap's 2√(ab),
+    /// the negated b_safe) was hoisted before `decide`'s loop and paid at every step.
     #[inline(never)]
     fn weigh(
         p: &IdmParameters,
@@ -227,28 +208,45 @@ impl MobilController {
             Ok(true) => {}
         }
         let mut best: Option<(Real, i32)> = None;
-        let [left, right] = view.beside_kept_with(&mut self.kept.0, own.range);
+        let (p, mobil) = (&self.idm.params, &self.mobil);
+        let s = view.besides(&mut self.kept.0, own.range)?;
         // Each side in turn, not a loop over the pair: the pair then stays in registers
         // (looped over, it was stored and read back; issue 31).
-        self.consider(view, own, left, &mut best);
-        self.consider(view, own, right, &mut best);
+        Self::consider(p, mobil, view, own, &s, Side::Left, &mut best);
+        Self::consider(p, mobil, view, own, &s, Side::Right, &mut best);
         best.map(|(_, lane)| lane)
     }
 
-    /// The lane beside `b`, if any, judged ([`judge`](Self::judge)) and kept in `best` (margin,
-    /// lane) where its margin is larger.
+    /// The MOBIL verdict on changing into the lane beside on `side` of `s` (module doc), if
+    /// there is one, kept in `best` (margin, lane) where the change is safe and worth it and
+    /// its margin is larger. The accelerations are those of the straightforward rule
+    /// ([`Self::judge_each`] in the tests), computed in an order that stops early: a lane
+    /// behind a mark not to be crossed costs no occupancy search, an occupied one no gap
+    /// search, a change unsafe for the changer no search of the new follower (each leaves the
+    /// verdict "no change"); the free-road term of a speed is evaluated once for all the
+    /// leaders weighed at that speed; and the followers are weighed first with bounds of their
+    /// free-road terms instead of the terms ([`settled_without_powers`]), which settle almost
+    /// every candidate. The lane beside is made into a [`Beside`] only for the weighing
+    /// ([`ControllerView::open_beside`] tests the mark and the occupancy without it).
     #[inline(always)]
     fn consider(
-        &self,
+        p: &IdmParameters,
+        mobil: &MobilParameters,
         view: &ControllerView<'_>,
         own: &mut Own,
-        b: Option<Beside<'_>>,
+        s: &Besides<'_, '_>,
+        side: Side,
         best: &mut Option<(Real, i32)>,
     ) {
-        let Some(b) = b else {
+        // The mark first: a lane behind a mark not to be crossed costs no occupancy search
+        // (either leaves the verdict "no change").
+        if !view.open_beside(s, side) {
+            return;
+        }
+        let Some(b) = view.beside_of(s, side) else {
             return;
         };
-        if let Some(margin) = self.judge(view, own, &b) {
+        if let Some(margin) = Self::weigh(p, mobil, view, own, b) {
             if best.is_none_or(|(m, _)| margin > m) {
                 *best = Some((margin, b.lane));
             }

@@ -129,6 +129,26 @@ fn alongside_hints(
     }
 }
 
+/// The lanes beside an entity's lane ([`ControllerView::besides`]): the road's kept answer for
+/// its track, its direction of travel, its footprint's s-range and its hints of the searches
+/// alongside (left, right).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Besides<'k, 'a> {
+    road: &'k KeptRoad,
+    direction: Direction,
+    range: (Real, Real),
+    alongside: [Option<&'a AtomicU32>; 2],
+}
+
+/// The index of `side` in a left-right pair.
+#[inline(always)]
+fn side_index(side: Side) -> usize {
+    match side {
+        Side::Left => 0,
+        Side::Right => 1,
+    }
+}
+
 /// What a driver model's step reads of its entity's own lane
 /// ([`ControllerView::own_lane`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -512,33 +532,93 @@ impl<'a> ControllerView<'a> {
         kept: &mut Option<KeptRoad>,
         range: Option<(Real, Real)>,
     ) -> [Option<Beside<'a>>; 2] {
-        let id = self.input.id;
+        match self.besides(kept, range) {
+            Some(s) => [
+                self.beside_of(&s, Side::Left),
+                self.beside_of(&s, Side::Right),
+            ],
+            None => [None, None],
+        }
+    }
+
+    /// The lanes beside as [`beside_kept_with`](Self::beside_kept_with) finds them, each side
+    /// not made into a [`Beside`] yet ([`beside_of`](Self::beside_of) makes it,
+    /// [`open_beside`](Self::open_beside) tests it without): `None` where the entity has no
+    /// lane track or `range` is `None`.
+    #[inline(always)]
+    pub(crate) fn besides<'k>(
+        &self,
+        kept: &'k mut Option<KeptRoad>,
+        range: Option<(Real, Real)>,
+    ) -> Option<Besides<'k, 'a>> {
         let (Some(track), Some(range)) = (self.input.track.as_ref(), range) else {
-            return [None, None];
+            return None;
         };
         let road = KeptRoad::for_track(kept, self.network, self.index, track);
-        let alongside = alongside_hints(self.index.hints(id), track.direction);
-        let beside = |side: Side, alongside: Option<&'a AtomicU32>| {
-            road.side(side).map(|beside| Beside {
-                lane: beside.lane,
-                at: (beside.handle, track.direction),
-                toward_keep_side: beside.toward_keep_side,
-                crossing_permitted: beside.crossing_permitted,
-                slot: road.slot(side),
-                range,
-                alongside,
-            })
+        let alongside = alongside_hints(self.index.hints(self.input.id), track.direction);
+        Some(Besides {
+            road,
+            direction: track.direction,
+            range,
+            alongside,
+        })
+    }
+
+    /// The lane beside on `side` of `s`, if there is one.
+    #[inline(always)]
+    pub(crate) fn beside_of(&self, s: &Besides<'_, 'a>, side: Side) -> Option<Beside<'a>> {
+        let beside = s.road.side(side)?;
+        let b = Beside {
+            lane: beside.lane,
+            at: (beside.handle, s.direction),
+            toward_keep_side: beside.toward_keep_side,
+            crossing_permitted: beside.crossing_permitted,
+            slot: s.road.slot(side),
+            range: s.range,
+            alongside: s.alongside[side_index(side)],
         };
-        let [left, right] = alongside;
-        let sides = [beside(Side::Left, left), beside(Side::Right, right)];
         debug_assert!(
-            sides.iter().flatten().all(|b| std::ptr::eq(
+            std::ptr::eq(
                 b.alongside.map_or(std::ptr::null(), |h| h),
                 self.hint(b.lane, 2).map_or(std::ptr::null(), |h| h)
-            )),
+            ),
             "the alongside hints are `hint_kind`'s"
         );
-        sides
+        Some(b)
+    }
+
+    /// Whether there is a lane beside on `side` of `s` that the mark lets the entity cross
+    /// into and that is not occupied alongside: `b.crossing_permitted &&
+    /// !self.occupied_beside(&b)` of the [`beside_of`](Self::beside_of) `b` (`false` where there
+    /// is none), from the kept answer's mark, slot and handle alone. For the `mobil` step,
+    /// which weighs a lane beside only where this holds (4 % of them on the scale highway) and
+    /// makes its `Beside` only then (issue 31: made for every lane beside, the `Beside`'s
+    /// fields were read and kept on the stack for the weighing, about 12 instructions per
+    /// entity-step). The same answer: the same fields of the same kept answer, the same
+    /// s-range and hint, the same occupancy questions in the same order.
+    #[inline(always)]
+    pub(crate) fn open_beside(&self, s: &Besides<'_, 'a>, side: Side) -> bool {
+        let Some(beside) = s.road.side(side) else {
+            return false;
+        };
+        if !beside.crossing_permitted {
+            return false;
+        }
+        // `occupied_beside`, its search out of line: the lane's handle, which only the
+        // search reads, is read there (inline, it was read and kept on the stack before the
+        // answer at the hint).
+        let hint = s.alongside[side_index(side)];
+        !self.occupied_at_hint(s.road.slot(side), s.range, hint) && !self.occupied_searched(s, side)
+    }
+
+    /// [`open_beside`](Self::open_beside)'s occupancy where the entries at the hint do not
+    /// prove it: [`LaneIndex::occupied`] of the lane beside on `side`.
+    #[inline(never)]
+    fn occupied_searched(&self, s: &Besides<'_, 'a>, side: Side) -> bool {
+        let hint = s.alongside[side_index(side)];
+        s.road
+            .side(side)
+            .is_some_and(|b| self.index.occupied(b.handle, s.range, self.input.id, hint))
     }
 
     /// Whether an entity's box overlaps the entity's own length in the lane beside (a change
@@ -549,13 +629,30 @@ impl<'a> ControllerView<'a> {
         // index's question otherwise (issue 31: `occupied`'s own test at the hint was left
         // out of line, and its slot look-up cost about 25 instructions a question). The
         // entity's s-range and hint are the lane beside's, taken once for both sides
-        // (`beside_kept`): a `Beside` is made only where the entity has a footprint.
-        let (id, hint) = (self.input.id, b.alongside);
-        let proven = match (hint, b.slot) {
-            (Some(hint), Some(slot)) => self.index.occupied_proven(slot, b.range, id, hint),
+        // (`besides`): a `Beside` is made only where the entity has a footprint.
+        self.occupied_at_hint(b.slot, b.range, b.alongside)
+            || self
+                .index
+                .occupied(b.at.0, b.range, self.input.id, b.alongside)
+    }
+
+    /// Whether the entries of the lane at `slot` (its slot in the index, where known) at
+    /// `hint` prove that an entity other than this one overlaps the s-range `range` there
+    /// ([`LaneIndex::occupied_proven`]); `false` where they do not (then the index's
+    /// question answers).
+    #[inline(always)]
+    fn occupied_at_hint(
+        &self,
+        slot: Option<usize>,
+        range: (Real, Real),
+        hint: Option<&AtomicU32>,
+    ) -> bool {
+        match (hint, slot) {
+            (Some(hint), Some(slot)) => {
+                self.index.occupied_proven(slot, range, self.input.id, hint)
+            }
             _ => false,
-        };
-        proven || self.index.occupied(b.at.0, b.range, id, hint)
+        }
     }
 
     /// The largest speed along the entity's direction of travel (m/s) of the entities whose
