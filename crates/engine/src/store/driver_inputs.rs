@@ -104,6 +104,29 @@ impl TrackInput {
     }
 }
 
+impl TrackInput {
+    /// Works out the own lane's slot in `slots` ([`DriverInput::write`], where the own lane
+    /// changed).
+    #[cold]
+    #[inline(never)]
+    fn own_slot_anew(&mut self, slots: &Option<LaneSlots>) {
+        self.own_slot = slot_of(slots.as_ref(), self.own);
+    }
+
+    /// The own lane looked up on `net` at the track's road, lane and s, and its slot worked
+    /// out where it is not the row's already ([`DriverInput::write`] where the lane index's
+    /// look-up was of another lane or s, or none).
+    #[cold]
+    #[inline(never)]
+    fn own_looked_up(&mut self, net: &RoadNetwork, slots: &Option<LaneSlots>) {
+        let now = net.lane_handle_on(self.road, self.lane_id, self.s);
+        if self.own != now {
+            self.own = now;
+            self.own_slot = slot_of(slots.as_ref(), now);
+        }
+    }
+}
+
 /// One entity's row (module doc).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DriverInput {
@@ -133,29 +156,30 @@ impl DriverInput {
     /// handle is not the row's already. The fields are written one by one where the row is,
     /// not a row built aside and copied in: the copy loaded 8 or 16 bytes at a time what had
     /// just been stored 4 bytes at a time and waited for the stores (a third of the index
-    /// walk's samples, issue 31).
-    #[inline]
+    /// walk's samples, issue 31). Inline in each of the lane index's two ways of entering an
+    /// entity (store/lane_index.rs `enter_with_input`): out of line, the look-up went to it
+    /// through memory. The common case inline, the rest out of line and given nothing the
+    /// common case would have to keep in memory for them (a row or track not there before:
+    /// [`start`](Self::start); none now; the own lane's slot anew; the own lane looked up
+    /// anew). The id is not written again: a row is the one at its entity's index, whose id
+    /// is that index.
+    #[inline(always)]
     pub(crate) fn write(
         row: &mut Option<DriverInput>,
         e: &Entity,
         net: &RoadNetwork,
-        slots: Option<&LaneSlots>,
+        slots: &Option<LaneSlots>,
         looked_up: Option<(RoadHandle, i32, Real, LaneHandle)>,
     ) {
-        let own = |road, lane, s: Real| match looked_up {
-            Some((r, l, at, h)) if (r, l) == (road, lane) && at.to_bits() == s.to_bits() => Some(h),
-            _ => net.lane_handle_on(road, lane, s),
-        };
-        let Some(r) = row else {
-            *row = Some(Self::with_own(e, own, slots));
+        let Some(t) = e.track.as_ref() else {
+            *row = Some(Self::without_track(e));
             return;
         };
-        r.id = e.id;
-        r.placed = e.placed;
-        r.lateral_action = e.lateral_action.is_some();
-        r.speed = e.speed;
-        let (Some(rt), Some(t)) = (&mut r.track, &e.track) else {
-            r.track = Self::with_own(e, own, slots).track;
+        let r = match row {
+            Some(r) if r.track.is_some() => r,
+            _ => Self::start(row, e),
+        };
+        let Some(rt) = r.track.as_mut() else {
             return;
         };
         rt.road = t.road;
@@ -163,11 +187,37 @@ impl DriverInput {
         rt.s = t.s;
         rt.direction = t.direction;
         rt.blend_from = t.blend.as_ref().map(|b| b.from_lane);
-        let now = own(t.road, t.lane_id, t.s);
-        if rt.own != now {
-            rt.own = now;
-            rt.own_slot = slot_of(slots, now);
+        match looked_up {
+            // The look-up of the track's road, lane and s: its handle is the own lane's.
+            Some((road, lane, s, h))
+                if (road, lane) == (t.road, t.lane_id) && s.to_bits() == t.s.to_bits() =>
+            {
+                if rt.own != Some(h) {
+                    rt.own = Some(h);
+                    rt.own_slot_anew(slots);
+                }
+            }
+            _ => rt.own_looked_up(net, slots),
         }
+        debug_assert_eq!(r.id, e.id, "the row at an entity's index is the entity's");
+        r.placed = e.placed;
+        r.lateral_action = e.lateral_action.is_some();
+        r.speed = e.speed;
+    }
+
+    /// The row of `e`, which has no lane track ([`write`](Self::write)).
+    #[cold]
+    #[inline(never)]
+    fn without_track(e: &Entity) -> Self {
+        Self::with_own(e, |_, _, _| None, None)
+    }
+
+    /// [`write`](Self::write) where `row` or its track is none: a row with `e`'s id and a
+    /// track without an own lane (`None`, [`NO_SLOT`]), which `write` then fills as any row.
+    #[cold]
+    #[inline(never)]
+    fn start<'r>(row: &'r mut Option<DriverInput>, e: &Entity) -> &'r mut DriverInput {
+        row.insert(Self::with_own(e, |_, _, _| None, None))
     }
 
     /// The row of `e`, its own lane's handle from `own(road, lane, s)` and that lane's slot

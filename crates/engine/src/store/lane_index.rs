@@ -147,7 +147,7 @@ pub(super) fn within(found: Neighbour, walked: Real, horizon: Real) -> Option<Ne
     (gap <= horizon).then_some(Neighbour { gap, ..found })
 }
 
-/// The lane look-up [`LaneIndex::enter`] made for an entity's footprint: road, lane, s and the
+/// The lane look-up [`LaneIndex::enter_with_input`] made for an entity's footprint: road, lane, s and the
 /// lane's handle.
 type LookedUp = (RoadHandle, i32, Real, LaneHandle);
 
@@ -340,14 +340,45 @@ impl LaneIndex {
         self.pending.clear();
     }
 
-    /// [`enter`](Self::enter)s `e` and writes its driver inputs' row.
+    /// Enters `e` in the index and keeps its footprint (module doc), when it is placed, visible
+    /// to traffic and on a road, and writes its driver inputs' row. With `keep`, its entries
+    /// and handle of the last step stay where they are the same (store/lane_kept.rs):
+    /// [`stay`](Self::stay) first, else [`enter_anew`](Self::enter_anew). The row is written
+    /// in each of the two ways, so that where `e` stays (the common case) the lane look-up
+    /// reaches the row's write in registers (issue 31: returned from either way, it went
+    /// through memory, five values stored and loaded back per entity-step).
     #[inline]
     pub(super) fn enter_with_input(&mut self, net: &Arc<RoadNetwork>, e: &Entity, keep: bool) {
-        let looked_up = self.enter(net, e, keep);
-        // The track's lane at the track's s is the lane the road position names wherever
-        // the two agree (the common case): its handle is the one just looked up.
-        let slots = self.slots.as_ref();
-        DriverInput::write(&mut self.inputs[e.id.index()], e, net, slots, looked_up);
+        if keep {
+            if let Some(looked_up) = self.stay(net, e) {
+                self.write_input(net, e, Some(looked_up));
+                return;
+            }
+        }
+        self.enter_anew_with_input(net, e, keep);
+    }
+
+    /// [`enter_anew`](Self::enter_anew) and the driver inputs' row: `enter_with_input` where
+    /// `e` does not stay. Out of line, as `enter_anew`.
+    #[inline(never)]
+    fn enter_anew_with_input(&mut self, net: &Arc<RoadNetwork>, e: &Entity, keep: bool) {
+        let looked_up = self.enter_anew(net, e, keep);
+        self.write_input(net, e, looked_up);
+    }
+
+    /// Writes `e`'s driver inputs' row, `looked_up` the lane look-up made for its footprint
+    /// (road, lane, s and the handle found; `None` where it was not entered): the track's
+    /// lane at the track's s is the lane the road position names wherever the two agree (the
+    /// common case), and its handle is the one just looked up.
+    #[inline(always)]
+    fn write_input(&mut self, net: &RoadNetwork, e: &Entity, looked_up: Option<LookedUp>) {
+        DriverInput::write(
+            &mut self.inputs[e.id.index()],
+            e,
+            net,
+            &self.slots,
+            looked_up,
+        );
     }
 
     /// Ends a step's build: the entries of the last step that stay take their entity's new
@@ -399,22 +430,7 @@ impl LaneIndex {
         });
     }
 
-    /// Enters `e` in the index and keeps its footprint (module doc), when it is placed, visible
-    /// to traffic and on a road; returns the lane look-up made for its footprint: road, lane,
-    /// s and the handle found. With `keep`, its entries and handle of the last step stay where
-    /// they are the same (store/lane_kept.rs): [`stay`](Self::stay) first, else
-    /// [`enter_anew`](Self::enter_anew).
-    #[inline(always)]
-    fn enter(&mut self, net: &Arc<RoadNetwork>, e: &Entity, keep: bool) -> Option<LookedUp> {
-        if keep {
-            if let Some(looked_up) = self.stay(net, e) {
-                return Some(looked_up);
-            }
-        }
-        self.enter_anew(net, e, keep)
-    }
-
-    /// The common case of [`enter`](Self::enter) with `keep`: `e`'s entries of the last step
+    /// The common case of [`enter_with_input`](Self::enter_with_input) with `keep`: `e`'s entries of the last step
     /// stay, its handle and lanes are the last step's, and only its footprint's s, s-range
     /// and speed and the row's `stays` are written (the row's other fields hold the values
     /// [`enter_anew`](Self::enter_anew) would write again: the same handle, t-range bits,
@@ -465,11 +481,12 @@ impl LaneIndex {
         Some((road_handle, rp.lane_id, rp.s, handle))
     }
 
-    /// [`enter`](Self::enter) in full: each row written once, the new one, or nothing kept
-    /// where `e` is not entered. Out of line: the entities that take it are few in a step
-    /// (those changing lanes, entered anew, or off the road), and [`stay`](Self::stay), with
-    /// fewer values live, is what the moves' walk runs.
-    #[inline(never)]
+    /// The entering of [`enter_with_input`](Self::enter_with_input) in full: each row written
+    /// once, the new one, or nothing kept where `e` is not entered; returns the lane look-up
+    /// made for its footprint. Out of line (in `enter_anew_with_input`): the entities that
+    /// take it are few in a step (those changing lanes, entered anew, or off the road), and
+    /// [`stay`](Self::stay), with fewer values live, is what the moves' walk runs.
+    #[inline(always)]
     fn enter_anew(&mut self, net: &Arc<RoadNetwork>, e: &Entity, keep: bool) -> Option<LookedUp> {
         let i = e.id.index();
         let was = if keep { self.kept[i] } else { Kept::NONE };

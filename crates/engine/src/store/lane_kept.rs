@@ -113,7 +113,7 @@ pub(super) struct Entry {
 /// What the index keeps of one entity from one step to the next (module doc), with its
 /// footprint, in one row of 80 bytes: the step's end reads only this row for each entry (its
 /// `stays` and the footprint's `s_range`), and an entity that stays writes only the fields
-/// that moved (its footprint's s, s-range and speed, and `stays`; `LaneIndex::enter`).
+/// that moved (its footprint's s, s-range and speed, and `stays`; `LaneIndex::stay`).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Kept {
     /// The entity's footprint in this step (with `entered`): its s-range is the one its

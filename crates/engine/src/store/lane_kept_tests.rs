@@ -1,12 +1,15 @@
-//! The lane index kept from step to step (store/lane_kept.rs) against a full build, in random
-//! traffic on corpus roads (issue 31).
+//! The lane index kept from step to step (store/lane_kept.rs) against a full build, and the
+//! driver-input row written in place (store/driver_inputs.rs) against one made anew, in
+//! random traffic on corpus roads (issue 31).
 
 use std::sync::Arc;
 
-use opendrive::{Direction, Real, RoadNetwork};
+use opendrive::{Direction, LaneHandle, Real, RoadHandle, RoadNetwork};
 
+use super::driver_inputs::DriverInput;
 use super::lane_index::LaneIndex;
 use super::lane_kept::tests::generator;
+use super::lane_slots::LaneSlots;
 use crate::domain::{BoundingBox, Vector3};
 use crate::position::lane_at;
 use crate::store::World;
@@ -340,4 +343,151 @@ fn an_entity_stays_exactly_where_the_full_way_keeps_it() {
     }
     let expected: Vec<bool> = steps.iter().map(|s| s.4).collect();
     assert_eq!(stayed, expected);
+}
+
+/// Every number of a row, the floats as bits.
+#[allow(clippy::type_complexity)]
+fn bits(
+    d: &DriverInput,
+) -> (
+    EntityId,
+    bool,
+    bool,
+    u64,
+    Option<(
+        RoadHandle,
+        i32,
+        u64,
+        Direction,
+        Option<i32>,
+        Option<LaneHandle>,
+        u32,
+    )>,
+) {
+    let track = d.track.map(|t| {
+        let (road, lane, s, dir) = (t.road, t.lane_id, t.s.to_bits(), t.direction);
+        (road, lane, s, dir, t.blend_from, t.own, t.own_slot)
+    });
+    (d.id, d.placed, d.lateral_action, d.speed.to_bits(), track)
+}
+
+/// The row as it was made before the write in place (the straightforward computation):
+/// the whole row anew, the own lane's handle the look-up's where it is of the track's
+/// road, lane and s (their bits), else asked of the network, its slot `slots`'.
+fn made_anew(
+    e: &Entity,
+    net: &RoadNetwork,
+    slots: &LaneSlots,
+    looked_up: Option<(RoadHandle, i32, Real, LaneHandle)>,
+) -> DriverInput {
+    let own = |road, lane, s: Real| match looked_up {
+        Some((r, l, at, h)) if (r, l) == (road, lane) && at.to_bits() == s.to_bits() => Some(h),
+        _ => net.lane_handle_on(road, lane, s),
+    };
+    DriverInput::with_own(e, own, Some(slots))
+}
+
+/// The row `DriverInput::write` (store/driver_inputs.rs) leaves, written over any row there was, is the row made
+/// anew bit for bit: on three corpus roads (two_plus_one: lanes appearing and ending;
+/// multi_intersections and fabriksgatan: junctions), 80 cars each placed at random and
+/// then without a track, with one off every lane (lane 99: no own lane), not placed, and
+/// at s one double further; written over no row, a row without a track, the row of the
+/// car somewhere else (another own lane and its slot, another road, lane and s), and the
+/// car's own row; with no look-up, the look-up of the track's road, lane and s (its
+/// handle the network's, and another handle, which the row must then take), of s one
+/// double off (the network asked) and of the next lane. Every own lane that changed has
+/// its slot anew; one that did not keeps it (the same number). So the in-place write,
+/// its cold paths included, is the full computation.
+#[test]
+fn the_driver_input_row_written_in_place_is_the_row_made_anew_bit_for_bit() {
+    let mut next = generator(31);
+    let (mut written, mut own_changed, mut looked_up_used, mut no_own) = (0, 0, 0, 0);
+    for name in [
+        "two_plus_one.xodr",
+        "multi_intersections.xodr",
+        "fabriksgatan.xodr",
+    ] {
+        let (net, w) = traffic(name, &mut next);
+        let slots = LaneSlots::new(&net);
+        let numbered = Some(slots.clone());
+        let elsewhere = w.entities();
+        for (k, car) in w.entities().iter().enumerate() {
+            let mut states = vec![car.clone()];
+            if let Some(t) = car.track.as_ref() {
+                let mut further = car.clone();
+                if let Some(ft) = further.track.as_mut() {
+                    ft.s = Real::from_bits(t.s.to_bits() + 1);
+                }
+                let mut off = car.clone();
+                if let Some(ot) = off.track.as_mut() {
+                    ot.lane_id = 99;
+                }
+                let mut unplaced = car.clone();
+                unplaced.placed = false;
+                let mut no_track = car.clone();
+                no_track.track = None;
+                states.extend([further, off, unplaced, no_track]);
+            }
+            for e in &states {
+                // Rows there may be: none, one without a track, the car's row elsewhere
+                // (another car's numbers under this car's id), its own row.
+                let other = &elsewhere[(k + 1 + (next() * 79.0) as usize) % elsewhere.len()];
+                let mut before = vec![
+                    None,
+                    Some(DriverInput {
+                        track: None,
+                        ..made_anew(car, &net, &slots, None)
+                    }),
+                    Some(DriverInput {
+                        id: car.id,
+                        ..made_anew(other, &net, &slots, None)
+                    }),
+                    Some(made_anew(car, &net, &slots, None)),
+                ];
+                before.retain(|r| r.is_none() || r.is_some_and(|r| r.id == e.id));
+                let mut look_ups = vec![None];
+                if let Some(t) = e.track.as_ref() {
+                    let h = net.lane_handle_on(t.road, t.lane_id, t.s);
+                    let another = LaneHandle {
+                        road: t.road.0,
+                        section: 0,
+                        lane: t.lane_id,
+                    };
+                    let ulp = Real::from_bits(t.s.to_bits() + 1);
+                    for handle in h.into_iter().chain([another]) {
+                        look_ups.extend([
+                            Some((t.road, t.lane_id, t.s, handle)),
+                            Some((t.road, t.lane_id, ulp, handle)),
+                            Some((t.road, t.lane_id + 1, t.s, handle)),
+                        ]);
+                    }
+                }
+                for row in &before {
+                    for &looked_up in &look_ups {
+                        let mut r = *row;
+                        DriverInput::write(&mut r, e, &net, &numbered, looked_up);
+                        let anew = made_anew(e, &net, &slots, looked_up);
+                        let r = r.expect("a row written");
+                        assert_eq!(bits(&r), bits(&anew), "{name} {} {looked_up:?}", e.name);
+                        written += 1;
+                        let (was, now) = (row.and_then(|r| r.track), r.track);
+                        if was.map(|t| t.own) != now.map(|t| t.own) {
+                            own_changed += 1;
+                        }
+                        if now.is_some_and(|t| t.own.is_none()) {
+                            no_own += 1;
+                        }
+                        if let (Some((.., h)), Some(t)) = (looked_up, now) {
+                            looked_up_used += usize::from(t.own == Some(h));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        written > 20_000 && own_changed > 15_000 && looked_up_used > 15_000 && no_own > 2_000,
+        "{written} written, {own_changed} own lanes changed, {looked_up_used} look-ups \
+         taken, {no_own} without an own lane"
+    );
 }

@@ -19,7 +19,7 @@
 //! marks the entity written. An entity the moves' walk entered and nothing wrote since is as
 //! the walk entered it: its footprint, driver inputs and entries are those a build would make
 //! now, as a build's entries depend on the entity, the network and the kept borders alone
-//! (store/lane_index.rs `enter`). A written entity, or one added after the walk, is entered
+//! (store/lane_index.rs `enter_with_input`). A written entity, or one added after the walk, is entered
 //! anew from what the last settling left (its kept row describes the entries in the lanes),
 //! exactly as the walk of a whole build enters every entity, and the lanes are settled again
 //! with the entries of the entities not entered standing as they are. Where the moves' walk
