@@ -154,6 +154,26 @@ mod tests {
         all
     }
 
+    /// Asserts that road `road`'s `count` pieces come in the full sort's order from each point.
+    fn assert_sorted_order(
+        index: &SpatialIndex,
+        road: usize,
+        count: usize,
+        points: &[(Real, Real)],
+    ) {
+        for &(x, y) in points {
+            let got: Vec<(usize, Real)> = PiecesByDistance::new(index, road, x, y).collect();
+            let want = sorted(index, road, x, y);
+            assert_eq!(got.len(), count, "({x}, {y})");
+            assert!(
+                got.iter().zip(&want).all(|(a, b)| a.0 == b.0 && a.1 == b.1),
+                "({x}, {y}): {:?} vs {:?}",
+                &got[..6],
+                &want[..6]
+            );
+        }
+    }
+
     #[test]
     fn gives_the_stable_sort_order_of_every_piece() {
         // A straight 1,000 m road without lanes: 100 pieces of 10 m, boxes [10k − 0.5,
@@ -167,25 +187,20 @@ mod tests {
         ];
         let index = SpatialIndex::build(&roads);
         assert_eq!(index.pieces.iter().filter(|p| p.road == 1).count(), 100);
-        for (x, y) in [
-            (505.0, 0.0),
-            (500.2, 0.1),
-            (0.0, 0.0),
-            (733.3, 40.0),
-            (-50.0, 3.0),
-            (1200.0, -7.0),
-            (250.0, 1e6),
-        ] {
-            let got: Vec<(usize, Real)> = PiecesByDistance::new(&index, 1, x, y).collect();
-            let want = sorted(&index, 1, x, y);
-            assert_eq!(got.len(), 100, "({x}, {y})");
-            assert!(
-                got.iter().zip(&want).all(|(a, b)| a.0 == b.0 && a.1 == b.1),
-                "({x}, {y}): {:?} vs {:?}",
-                &got[..6],
-                &want[..6]
-            );
-        }
+        assert_sorted_order(
+            &index,
+            1,
+            100,
+            &[
+                (505.0, 0.0),
+                (500.2, 0.1),
+                (0.0, 0.0),
+                (733.3, 40.0),
+                (-50.0, 3.0),
+                (1200.0, -7.0),
+                (250.0, 1e6),
+            ],
+        );
         // (500.2, 0.1) lies in the boxes of pieces 49 (ends at 500.5) and 50 (starts at
         // 499.5): both at distance 0, 49 first; road 1's pieces follow road 0's 3.
         let first: Vec<(usize, Real)> = PiecesByDistance::new(&index, 1, 500.2, 0.1)
@@ -209,25 +224,20 @@ mod tests {
         let road = straight_road(20_000.0, vec![], vec![centre_only_section()]);
         let index = SpatialIndex::build(&[road]);
         assert_eq!(index.pieces.len(), 2_000);
-        for (x, y) in [
-            (19_995.0, 0.0),
-            (19_999.9, 1.5),
-            (10_003.0, -0.2),
-            (16_000.0, 0.0),
-            (7_777.0, 300.0),
-            (-20.0, 0.0),
-            (20_050.0, -4.0),
-        ] {
-            let got: Vec<(usize, Real)> = PiecesByDistance::new(&index, 0, x, y).collect();
-            let want = sorted(&index, 0, x, y);
-            assert_eq!(got.len(), 2_000, "({x}, {y})");
-            assert!(
-                got.iter().zip(&want).all(|(a, b)| a.0 == b.0 && a.1 == b.1),
-                "({x}, {y}): {:?} vs {:?}",
-                &got[..6],
-                &want[..6]
-            );
-        }
+        assert_sorted_order(
+            &index,
+            0,
+            2_000,
+            &[
+                (19_995.0, 0.0),
+                (19_999.9, 1.5),
+                (10_003.0, -0.2),
+                (16_000.0, 0.0),
+                (7_777.0, 300.0),
+                (-20.0, 0.0),
+                (20_050.0, -4.0),
+            ],
+        );
         // (19,995, 0) lies in piece 1,999's box only (piece 1,998's ends at 19,990.5):
         // distance 0 first, then piece 1,998 at 4.5 m.
         let first: Vec<(usize, Real)> = PiecesByDistance::new(&index, 0, 19_995.0, 0.0)
