@@ -59,10 +59,10 @@ impl<'a> PiecesByDistance<'a> {
     /// The group whose joint box is nearest is scanned first: its pieces fill the batch with
     /// near keys, so the other groups' boxes are mostly farther than the farthest kept and
     /// skipped. In road order alone, every group between the road's start and the point
-    /// comes nearer than the farthest kept so far and is scanned piece by piece: half a long
-    /// road's pieces per pass on average, which made placing n vehicles on a road n times
-    /// as long cost n² (4,000 vehicles on `make_scale.py`'s 80 km highway: 875 M
-    /// instructions, 14 times the 1,000's). The order of the scan does not change the batch:
+    /// comes nearer than the farthest kept so far and is scanned piece by piece: a point at s
+    /// cost the road's pieces up to s, which made placing n vehicles along a stretch n times
+    /// as long cost n² (`make_scale.py`'s 4,000 vehicles on 15 km of its 20 km road: 875 M
+    /// instructions, 14 times the 1,000's on 3.8 km). The order of the scan does not change the batch:
     /// it keeps the [`BATCH`] least keys after `after` of every piece not skipped, and a
     /// group is skipped only when its joint box, and so each of its pieces' boxes, is
     /// farther than the farthest kept.
