@@ -11,7 +11,7 @@ use opendrive::{
 };
 
 use super::lane_track::{CurvatureAt, FrameAt, LaneTrack, LanesMemo};
-use crate::position::lane_at;
+use crate::position::{add_lanes, lane_at};
 
 /// Step (m) of the finite difference that gives the reference line's curvature.
 const CURVATURE_STEP: Real = 0.01;
@@ -251,21 +251,17 @@ pub(crate) fn track_lane_at(
 
 /// The lane `n` lanes to the left of `lane` (right for negative `n`) as seen when driving in
 /// `direction`, skipping the centre lane 0.
+///
+/// Ids saturate at `i32::MIN`/`i32::MAX`: a scenario's shift (a RelativeTargetLane's `value`)
+/// is any integer, and stepping lane by lane took |n| steps and overflowed past the ends.
 pub fn lane_shift(lane: i32, n: i32, direction: Direction) -> i32 {
     // Travelling towards +s, "left" is towards larger ids; towards −s it is towards smaller ids.
     let n = if direction == Direction::Forward {
         n
     } else {
-        -n
+        n.saturating_neg()
     };
-    let mut id = lane;
-    for _ in 0..n.unsigned_abs() {
-        id += n.signum();
-        if id == 0 {
-            id += n.signum();
-        }
-    }
-    id
+    add_lanes(lane, n)
 }
 
 /// The drivable lane numbered `n` (1 or more) among the drivable lanes of the side of `road`
@@ -535,6 +531,42 @@ mod tests {
     use opendrive::RoadHandle;
 
     use super::*;
+
+    #[test]
+    fn lane_shift_steps_over_the_centre_lane_and_saturates_at_the_ends() {
+        use Direction::{Backward, Forward};
+        // Stepping one lane at a time, skipping 0 (the rule as it was written before).
+        let stepped = |lane: i32, n: i32| {
+            let mut id = lane;
+            for _ in 0..n.unsigned_abs() {
+                id += n.signum();
+                if id == 0 {
+                    id += n.signum();
+                }
+            }
+            id
+        };
+        for lane in -6..=6 {
+            for n in -8..=8 {
+                assert_eq!(lane_shift(lane, n, Forward), stepped(lane, n), "{lane} {n}");
+                assert_eq!(
+                    lane_shift(lane, n, Backward),
+                    stepped(lane, -n),
+                    "{lane} {n}"
+                );
+            }
+        }
+        // By hand: −1 two to the left driving +s is 2 (−1 → 1 → 2); driving −s it is −3.
+        assert_eq!(lane_shift(-1, 2, Forward), 2);
+        assert_eq!(lane_shift(-1, 2, Backward), -3);
+        // A shift of any size is one addition, saturating: no overflow, no 2^31 steps.
+        assert_eq!(lane_shift(i32::MAX, 1, Forward), i32::MAX);
+        assert_eq!(lane_shift(-1, i32::MIN, Backward), i32::MAX);
+        // 1 by −2^31: the first step lands on −1 (over 0), the other 2^31 − 1 steps end at
+        // −1 − (2^31 − 1) = −2^31. −3 by 2^31 − 1: three steps to 1, then 1 + 2^31 − 4.
+        assert_eq!(lane_shift(1, i32::MIN, Forward), i32::MIN);
+        assert_eq!(lane_shift(-3, i32::MAX, Forward), i32::MAX - 2);
+    }
 
     /// A 30 m road of two lanes on the plan view `geometry` (its `<geometry>` elements).
     fn road(geometry: &str) -> RoadNetwork {
