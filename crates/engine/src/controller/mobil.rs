@@ -527,8 +527,12 @@ struct Own {
     free: Real,
     /// Its length along the lane.
     len: Real,
-    /// The leader in its lane.
-    leader: Option<Gap>,
+    /// The leader in its lane, as the IDM reads it (its gap and speed). Not the [`Gap`]: kept
+    /// here whole, the gap and speed were read back from the stack as one 16-byte load of what
+    /// the search had stored 8 bytes at a time (and the id's 4 bytes as 8), loads that store
+    /// forwarding cannot serve and that wait for the stores to reach the cache (issue 31: 16 %
+    /// of `command`'s samples on one instruction; 4 % of the `mobil` step's time).
+    leader: Option<Leader>,
     /// The s-range of its footprint in the lane index, if it has one (the lanes beside's
     /// occupancy asks about it: [`ControllerView::beside_kept_with`]).
     range: Option<(Real, Real)>,
@@ -558,6 +562,7 @@ impl Own {
             range,
         } = view.own_lane();
         let light = view.red_light();
+        let leader = leader.map(to);
         Own {
             v,
             free,
@@ -565,7 +570,7 @@ impl Own {
             leader,
             range,
             light,
-            a_c: p.acceleration_with_free(free, v, nearer(leader.map(to), light)),
+            a_c: p.acceleration_with_free(free, v, nearer(leader, light)),
             old_follower: None,
         }
     }
