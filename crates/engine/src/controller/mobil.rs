@@ -595,25 +595,31 @@ impl Own {
     /// The old follower o (module doc), searched once a step: behind the changer now, behind
     /// the changer's leader at gap g_o + length + g_c after the change.
     fn old_follower(&mut self, p: &IdmParameters, view: &ControllerView<'_>) -> Option<Weighed> {
+        if let Some(searched) = self.old_follower {
+            return searched;
+        }
         let (v, len, leader) = (self.v, self.len, self.leader);
-        *self.old_follower.get_or_insert_with(|| {
-            view.follower().map(|o| {
-                let vo = o.speed.max(0.0);
-                let behind_me = Leader {
-                    gap: o.gap,
-                    speed: v,
-                };
-                let behind_leader = leader.map(|l| Leader {
-                    gap: o.gap + len + l.gap,
-                    speed: l.speed,
-                });
-                Weighed {
-                    v: vo,
-                    before: Some(p.interaction(vo, behind_me)),
-                    after: behind_leader.map(|l| p.interaction(vo, l)),
-                }
-            })
-        })
+        let found = view.follower().map(|o| {
+            let vo = o.speed.max(0.0);
+            let behind_me = Leader {
+                gap: o.gap,
+                speed: v,
+            };
+            let behind_leader = leader.map(|l| Leader {
+                gap: o.gap + len + l.gap,
+                speed: l.speed,
+            });
+            Weighed {
+                v: vo,
+                before: Some(p.interaction(vo, behind_me)),
+                after: behind_leader.map(|l| p.interaction(vo, l)),
+            }
+        });
+        // Kept, and returned as computed: read back from where it was kept, it was loaded 16
+        // bytes at a time just after being stored 8 at a time, loads that store forwarding
+        // cannot serve (issue 31).
+        self.old_follower = Some(found);
+        found
     }
 }
 
