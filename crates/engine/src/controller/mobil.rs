@@ -28,6 +28,22 @@
 //! LaneChangeAction of the scenario on the lateral domain is carried out the same way, to the
 //! lane it names.
 //!
+//! **A lane that ends.** Neither MOBIL nor a mandatory lane starts a change into a lane beside
+//! that ends within the change: where less of it lies ahead of the entity's s than the
+//! change's length (its speed × the change's duration, √(6·Δ/1 m/s²) for a sideways move Δ,
+//! world/lane_change.rs) plus the entity's length, and less than of its own lane, the change
+//! is not made (MOBIL weighs the other side; a mandatory lane waits, without falling back). A
+//! lane ends where its lane section ends and no lane follows it, or where it has narrowed to
+//! nothing (OpenDRIVE 1.8 §11.5 lane linkage, §11.6 lane width; followed through lane
+//! sections, road links and junctions as the gap searches follow it:
+//! world/lane_change.rs `ends_within_change`, world/lanes.rs `lane_left`). Lanes that end
+//! together with the own lane (the end of the network) are not refused. A human driver does
+//! not change into an acceleration lane or a merging lane that ends before the change is
+//! done, nor does SUMO's LC2013, which weighs each lane by the length of its continuation
+//! (its strategic "bestLanes") and avoids one whose remaining length is too short. The test
+//! is asked only of a change about to be decided, never of the lanes beside that are not
+//! weighed: ordinary traffic on roads without ending lanes is unchanged bit for bit.
+//!
 //! **A mandatory lane** (oscsim's `scenario::LateralAction::MandatoryLane`, which the DSL
 //! runtime gives the members of random traffic for `lane(…)` at: all, ASAM OpenSCENARIO DSL
 //! 2.1 §8.7.18.1) is a separate path that ordinary MOBIL traffic never takes: MOBIL with its
@@ -174,7 +190,12 @@ impl MobilController {
             new_follower,
             toward_keep_side: b.toward_keep_side,
         });
-        verdict.change().then_some(verdict.margin)
+        // A lane that ends within the change is refused last: asked only of a change MOBIL
+        // would make (module doc "A lane that ends").
+        if !verdict.change() || view.lane_ends_within_change(b, v, len) {
+            return None;
+        }
+        Some(verdict.margin)
     }
 
     /// Whether the controller may decide a lane change now, and a lane a LaneChangeAction
@@ -401,7 +422,10 @@ impl Mandatory {
                         Weighed::new_follower(p, n, own.v, own.len, lane_leader).change(p)
                     });
                     if new_follower.is_none_or(|n| mobil.safe_for_follower(n.after)) {
-                        return Some(b.lane);
+                        // Not into a lane that ends within the change (module doc "A lane
+                        // that ends"): it waits, without falling back.
+                        return (!view.lane_ends_within_change(&b, own.v, own.len))
+                            .then_some(b.lane);
                     }
                     // A new follower too close: waited out where the changer's speed
                     // advantage opens the gap in time, else let past.

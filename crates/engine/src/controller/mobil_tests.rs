@@ -105,7 +105,11 @@ fn decide_each(c: &mut MobilController, view: &ControllerView<'_>) -> Option<i32
         let Some(lane) = view.neighbour_lane(side) else {
             continue;
         };
-        if let Some(margin) = judge_each(c, view, &lane) {
+        // Not into a lane that ends within the change (module doc "A lane that ends").
+        let ends = view
+            .beside(side)
+            .is_some_and(|b| view.lane_ends_within_change(&b, e.speed.max(0.0), view.length()));
+        if let Some(margin) = judge_each(c, view, &lane).filter(|_| !ends) {
             if best.is_none_or(|(m, _)| margin > m) {
                 best = Some((margin, lane.lane));
             }
@@ -1169,4 +1173,116 @@ fn a_rate_toward_anothers_speed_reads_it_at_every_step_and_follows_it() {
         }
     }
     assert!(cars > 100, "{cars} cars at 10.5 m/s or more");
+}
+
+/// Road "R" of the ending-lane tests: 300 m along +x, right lanes of 3.5 m towards +s. Its
+/// first lane section (s 0…150) has lanes −1, −2, −3; the second (s 150…300) −1 and −2,
+/// linked from the first's −1 and −2. Lane −3 ends at s = 150: with no successor (OpenDRIVE
+/// 1.8 §11.5; an acceleration lane), or, `narrowed`, linked on to a lane −3 of width 0 in the
+/// second section (a lane whose width goes to 0). Every lane ends at the road's end, s = 300
+/// (no road link).
+fn ending_lane_network(narrowed: bool) -> RoadNetwork {
+    let lane_of = |id: i32, link: &str, width: &str| {
+        format!(
+            r#"<lane id="{id}" type="driving"><link>{link}</link><width sOffset="0" a="{width}" b="0" c="0" d="0"/><roadMark sOffset="0" type="broken"/></lane>"#
+        )
+    };
+    let lane = |id: i32, link: &str| lane_of(id, link, "3.5");
+    let (a3, b3) = if narrowed {
+        (
+            lane(-3, r#"<successor id="-3"/>"#),
+            lane_of(-3, r#"<predecessor id="-3"/>"#, "0"),
+        )
+    } else {
+        (lane(-3, ""), String::new())
+    };
+    let xodr = format!(
+        r#"<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="8"/>
+<road id="R" junction="-1" length="300"><link/><planView><geometry s="0" x="0" y="0" hdg="0" length="300"><line/></geometry></planView><lanes>
+<laneSection s="0"><center><lane id="0" type="none"/></center><right>{a1}{a2}{a3}</right></laneSection>
+<laneSection s="150"><center><lane id="0" type="none"/></center><right>{b1}{b2}{b3}</right></laneSection>
+</lanes></road></OpenDRIVE>"#,
+        a1 = lane(-1, r#"<successor id="-1"/>"#),
+        a2 = lane(-2, r#"<successor id="-2"/>"#),
+        b1 = lane(-1, r#"<predecessor id="-1"/>"#),
+        b2 = lane(-2, r#"<predecessor id="-2"/>"#),
+    );
+    RoadNetwork::from_str(&xodr, std::path::Path::new("ending_lane.xodr")).expect("road")
+}
+
+/// 4.5 m × 2 m cars on road "R" of `net`, each at (lane, s, speed) on its lane's centre (3.5 m
+/// lanes: lane −k's centre at t = 3.5·(−k) + 1.75).
+fn cars_on(net: &std::sync::Arc<RoadNetwork>, cars: &[(i32, Real, Real)]) -> World {
+    use crate::domain::{BoundingBox, Vector3};
+    use crate::world::entity::{EntityId, EntityKind};
+    let b = BoundingBox::new(Vector3::new(1.4, 0.0, 0.75), 4.5, 2.0, 1.5).expect("box");
+    let entities = (0..cars.len() as u32)
+        .map(|i| Entity::new(EntityId(i), &format!("c{i}"), EntityKind::Vehicle, b))
+        .collect();
+    let mut w = World::new(net.clone(), entities);
+    for (i, &(lane, s, speed)) in cars.iter().enumerate() {
+        let t = 3.5 * Real::from(lane) + 1.75;
+        let pose = w.network.road_pose("R", s, t).expect("on the road");
+        let found = w.network.locate(pose.x, pose.y, Some(pose.h));
+        let id = EntityId(i as u32);
+        w.place_resolved(id, pose, found);
+        w.entity_mut(id).speed = speed;
+    }
+    w
+}
+
+/// A driver model does not start a change into a lane that ends within the change (module
+/// doc "A lane that ends"). On road "R" ([`ending_lane_network`]: lane −3 ends at s = 150,
+/// without a successor, and again where it narrows to width 0 there), a
+/// `mobil` car at 20 m/s in lane −2 behind a leader at 5 m/s 10.5 m ahead (the leader 15 m
+/// further along: rear 15 − 0.85 − 3.65 = 10.5 m from the car's front), lane −1 beside it
+/// taken by a car alongside: MOBIL's incentive is all for lane −3 (free, on the keep side).
+/// The change needs 20·√(6·3.5/1) = 20·4.5826 = 91.65 m (world/lane_change.rs) and the
+/// car's 4.5 m, 96.15 m of lane −3 ahead: from s = 40 there are 110 m, the car changes to −3;
+/// from s = 60 there are 90 m, it keeps its lane (before: it changed into −3 there too).
+/// The `idm` and the `mobil` handed −3 as their mandatory lane alike. Lanes that end where
+/// the car's own lane ends are not refused: at s = 250 in lane −1 behind the same slow
+/// leader, lane −2 beside has 50 m left, as lane −1 has (both end at the road's end), and the
+/// car changes to −2.
+#[test]
+fn a_driver_model_does_not_change_into_a_lane_that_ends_within_the_change() {
+    for narrowed in [false, true] {
+        a_driver_model_does_not_change_into_the_ending_lane_of(narrowed);
+    }
+}
+
+/// [`a_driver_model_does_not_change_into_a_lane_that_ends_within_the_change`] on
+/// [`ending_lane_network`]`(narrowed)`.
+fn a_driver_model_does_not_change_into_the_ending_lane_of(narrowed: bool) {
+    let net = std::sync::Arc::new(ending_lane_network(narrowed));
+    let idm = IdmParameters::default();
+    let change_at = |s: Real, mandatory: Option<i32>, idm_model: bool| {
+        let w = cars_on(&net, &[(-2, s, 20.0), (-2, s + 15.0, 5.0), (-1, s, 20.0)]);
+        let index = LaneIndex::build(&w.network, w.entities());
+        let view = view_of(10.0, &w, &index, &w.entities()[0]);
+        if idm_model {
+            let mut c = IdmDriver::new(IdmController::new(idm, true));
+            c.strategy(Strategy::MandatoryLane(mandatory));
+            c.command(&view).1
+        } else {
+            let mut c = MobilController::new(idm, true, MobilParameters::default());
+            if mandatory.is_some() {
+                c.strategy(Strategy::MandatoryLane(mandatory));
+            }
+            c.command(&view).1
+        }
+    };
+    assert_eq!(change_at(40.0, None, false), Some(-3), "{narrowed}");
+    assert_eq!(change_at(60.0, None, false), None, "{narrowed}");
+    for idm_model in [false, true] {
+        let at = format!("{narrowed} {idm_model}");
+        assert_eq!(change_at(40.0, Some(-3), idm_model), Some(-3), "{at}");
+        assert_eq!(change_at(60.0, Some(-3), idm_model), None, "{at}");
+    }
+    // Both lanes end at the road's end: no refusal.
+    let w = cars_on(&net, &[(-1, 250.0, 20.0), (-1, 265.0, 5.0)]);
+    let index = LaneIndex::build(&w.network, w.entities());
+    let view = view_of(10.0, &w, &index, &w.entities()[0]);
+    let mut c = MobilController::new(idm, true, MobilParameters::default());
+    assert_eq!(c.command(&view).1, Some(-2), "{narrowed}");
 }

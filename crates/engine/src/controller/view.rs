@@ -675,6 +675,37 @@ impl<'a> ControllerView<'a> {
         self.behind_on(b.lane, b.at)
     }
 
+    /// Whether the entity, at speed `speed` and `length` m long, must not start a change into
+    /// the lane beside `b` because that lane ends within the change and before its own lane
+    /// does ([`crate::world::lane_change::ends_within_change`]; the `mobil` module doc "A
+    /// lane that ends"), the lanes followed at a road's end as the gap searches follow them
+    /// (its route's choice, else the first). Asked only of a change about to be decided.
+    pub(crate) fn lane_ends_within_change(
+        &self,
+        b: &Beside<'_>,
+        speed: Real,
+        length: Real,
+    ) -> bool {
+        let (Some(track), Some(own)) = (
+            self.entity.track.as_ref(),
+            self.input.track.as_ref().and_then(|t| t.own),
+        ) else {
+            return false;
+        };
+        let net = self.network;
+        let route = self.entity.route_follow.as_ref();
+        let mut choose = |road: &str, c: &[LaneHandle]| route.and_then(|r| r.peek(net, road, c));
+        crate::world::lane_change::ends_within_change(
+            net,
+            track,
+            own,
+            b.at,
+            speed,
+            length,
+            &mut choose,
+        )
+    }
+
     /// The entity's length along its direction of travel (m): its box's s-range.
     pub fn length(&self) -> Real {
         self.length_from(self.index.footprint(self.input.id))

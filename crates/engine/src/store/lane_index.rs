@@ -68,6 +68,7 @@ pub use super::lane_kept::Footprint;
 use super::lane_kept::{bounds, entry_order, order_and_bounds, shifted, BoxKept, Entry, Kept};
 use super::lane_slots::{LaneBorders, LaneSlots};
 use crate::world::entity::{Entity, EntityId};
+use crate::world::lanes::{next_lane, section_end};
 use crate::world::zero_angle;
 
 /// Overlap (m) of a box's t-range with a lane's borders below which the box is not in the lane
@@ -867,38 +868,13 @@ impl LaneIndex {
                     return within(found, walked, horizon);
                 }
             }
-            let road = net.handle_road(h);
-            let k = h.section as usize;
-            let end = match direction {
-                Direction::Forward => road.lane_section_end(k),
-                Direction::Backward => road.lane_sections[k].s,
-            };
+            let end = section_end(net.handle_road(h), h.section as usize, direction);
             walked += (end - at).abs();
             if walked > horizon {
                 return None;
             }
-            let with_traffic = direction == net.driving_direction(h);
-            let next = if with_traffic {
-                net.successors(h)
-            } else {
-                net.predecessors(h)
-            };
             // The next section of the same road, else the caller's choice at the road's end.
-            let pick = match next.iter().find(|n| n.road == h.road) {
-                Some(&n) => n,
-                None => choose(&road.id, next).or_else(|| next.first().copied())?,
-            };
-            direction = if with_traffic {
-                net.driving_direction(pick)
-            } else {
-                net.driving_direction(pick).reverse()
-            };
-            let next_road = net.handle_road(pick);
-            at = match direction {
-                Direction::Forward => next_road.lane_sections[pick.section as usize].s,
-                Direction::Backward => next_road.lane_section_end(pick.section as usize),
-            };
-            h = pick;
+            (h, direction, at) = next_lane(net, h, direction, choose)?;
         }
         None
     }

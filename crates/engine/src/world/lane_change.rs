@@ -9,16 +9,20 @@
 //! 3.5 m lane. The change starts as soon as the route needs it and ends, at the latest, where
 //! the road does (shorter, and so sharper, when less road is left). A driver model's change
 //! (controller/stage.rs) takes its whole length where the lane it goes to links onto the next
-//! road, going on across the link ([`room_for`]).
+//! road, going on across the link ([`room_for`]). A driver model does not start one into a
+//! lane that ends within it ([`ends_within_change`]: less of the lane left ahead than the
+//! change's length plus the vehicle's, and less than of its own lane; the `mobil` module doc
+//! "A lane that ends").
 //!
 //! The lateral position is the blend of the two lanes' centres that LaneChangeAction uses
 //! ([`Blend`]), so lane width changes along the way are followed.
 
-use opendrive::{Real, RoadNetwork};
+use opendrive::{Direction, LaneHandle, Real, RoadNetwork};
 use scenario::DynamicsShape;
 
 use crate::position::lane_at;
 use crate::world::lane_track::{Blend, LaneTrack};
+use crate::world::lanes::lane_left;
 use crate::world::shapes::shape_value;
 
 /// Largest lateral acceleration of a route's lane change (m/s²): the limit UN Regulation
@@ -72,6 +76,41 @@ pub(crate) fn road_left(net: &RoadNetwork, track: &LaneTrack) -> Real {
     }
 }
 
+/// How far (m) a change of `track` (on `road`) into lane `lane` moves sideways: from its t to
+/// the lane's centre at its s plus the track's offset from its own lane's centre, which the
+/// change keeps ([`begin`]). `None` where `road` has no lane `lane` at s.
+fn change_delta(road: &opendrive::Road, track: &LaneTrack, lane: i32) -> Option<Real> {
+    let target = road.lane_span(lane, track.s).ok()?.center() + track.offset;
+    Some(target - track.t)
+}
+
+/// Whether a driver model must not start a change of `track` from its own lane `own` into the
+/// lane beside `beside` (its handle at the track's s and the direction of travel) at `speed`
+/// for a vehicle `length` m long (module doc "A lane that ends"): the lane beside has less
+/// than the change's length ([`change_length`] of the change's sideways move,
+/// [`change_delta`]) plus `length` ahead of the track's s ([`lane_left`], `choose` picking
+/// at a road's end as the gap searches do), and less than the own lane has. `false` where the
+/// road has no such lane at s.
+pub(crate) fn ends_within_change(
+    net: &RoadNetwork,
+    track: &LaneTrack,
+    own: LaneHandle,
+    beside: (LaneHandle, Direction),
+    speed: Real,
+    length: Real,
+    choose: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
+) -> bool {
+    let road = net.road_at(track.road);
+    let Some(delta) = change_delta(road, track, beside.0.lane) else {
+        return false;
+    };
+    let needed = change_length(delta, speed) + length;
+    let (h, direction) = beside;
+    let left = lane_left(net, h, direction, track.s, needed, choose);
+    // The own lane walked only where the lane beside is too short (a NaN refuses nothing).
+    left < needed && left < lane_left(net, own, track.direction, track.s, needed, choose)
+}
+
 /// Starts moving `track` into lane `lane` (keeping its offset from the lane centre) over the
 /// distance [`change_length`] gives, at most `room` m. `None` when the change is done at once
 /// (no room left): the track is then already in the new lane.
@@ -84,10 +123,9 @@ pub(crate) fn begin(
     room: Real,
 ) -> Option<RouteLaneChange> {
     let road = net.road(&track.road_id)?;
-    let target = road.lane_span(lane, track.s).ok()?.center() + track.offset;
+    let delta = change_delta(road, track, lane)?;
     let (from_lane, from_offset) =
         lane_at(road, track.s, track.t).unwrap_or((track.lane_id, track.offset));
-    let delta = target - track.t;
     let length = change_length(delta, speed).min(room.max(0.0));
     track.lane_id = lane;
     if length <= opendrive::LENGTH_EPSILON {

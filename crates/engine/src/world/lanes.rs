@@ -386,6 +386,91 @@ fn walk(
     distance
 }
 
+/// Where lane section `k` of `road` ends travelling `direction`: its end s forward, its start
+/// s backward.
+#[inline]
+pub(crate) fn section_end(road: &Road, k: usize, direction: Direction) -> Real {
+    match direction {
+        Direction::Forward => road.lane_section_end(k),
+        Direction::Backward => road.lane_sections[k].s,
+    }
+}
+
+/// The lane that follows lane `h` travelled in `direction` where its lane section ends
+/// ([`section_end`]), through lane sections, road links and junctions (OpenDRIVE 1.8 §11.5
+/// lane linkage; its successors when travelled with its driving direction, else its
+/// predecessors): the next section of the same road, else `choose`'s pick among the lanes on
+/// other roads, given the road's id (`None`: the first). With the direction of travel on it
+/// and the s where it is entered. `None` where no lane follows: the lane ends there.
+#[inline]
+pub(crate) fn next_lane(
+    net: &RoadNetwork,
+    h: LaneHandle,
+    direction: Direction,
+    choose: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
+) -> Option<(LaneHandle, Direction, Real)> {
+    let with_traffic = direction == net.driving_direction(h);
+    let next = if with_traffic {
+        net.successors(h)
+    } else {
+        net.predecessors(h)
+    };
+    let pick = match next.iter().find(|n| n.road == h.road) {
+        Some(&n) => n,
+        None => choose(&net.handle_road(h).id, next).or_else(|| next.first().copied())?,
+    };
+    let direction = if with_traffic {
+        net.driving_direction(pick)
+    } else {
+        net.driving_direction(pick).reverse()
+    };
+    let at = section_end(
+        net.handle_road(pick),
+        pick.section as usize,
+        direction.reverse(),
+    );
+    Some((pick, direction, at))
+}
+
+/// A lane narrower than this (m) at a lane section's end has ended there ([`lane_left`]).
+pub(crate) const ENDED_WIDTH: Real = 0.01;
+
+/// How much of lane `h` lies ahead of s `from` travelling `direction` (m), following it
+/// through lane sections, road links and junctions as [`next_lane`] does (`choose` picks at a
+/// road's end), up to where it ends (OpenDRIVE 1.8 §11: where its lane section ends and no
+/// lane follows, or where it has narrowed to nothing, under [`ENDED_WIDTH`] at a section's
+/// end). Walked only until `cap` m: a number ≥ `cap` says "at least `cap`". Past
+/// [`MAX_HOPS`] lanes, +∞ (not known to end).
+pub(crate) fn lane_left(
+    net: &RoadNetwork,
+    mut h: LaneHandle,
+    mut direction: Direction,
+    mut from: Real,
+    cap: Real,
+    choose: &mut dyn FnMut(&str, &[LaneHandle]) -> Option<LaneHandle>,
+) -> Real {
+    let mut left = 0.0;
+    for _ in 0..MAX_HOPS {
+        let road = net.handle_road(h);
+        let end = section_end(road, h.section as usize, direction);
+        left += (end - from).abs();
+        if left >= cap {
+            return left;
+        }
+        let narrowed = road
+            .lane_span(h.lane, end)
+            .map_or(true, |span| span.width() < ENDED_WIDTH);
+        if narrowed {
+            return left;
+        }
+        let Some(next) = next_lane(net, h, direction, choose) else {
+            return left;
+        };
+        (h, direction, from) = next;
+    }
+    Real::INFINITY
+}
+
 /// The id that lane `lane` of road `road_id` at s `from` has at s `to`, travelling in
 /// `direction`: lane links carry it across lane-section boundaries (OpenDRIVE 1.8 §11.5 "Lane
 /// linkage"); a lane without a link into the next section keeps its id.

@@ -14,10 +14,10 @@
 //! | `date_time` | `xsd:dateTime` to seconds since 1970 (TimeOfDay, TimeOfDayCondition) |
 //! | `domains` | `ActiveDomains`: the four domains of §6.6.1 a controller is active on |
 //! | `signal_states` | `SignalStates`: the state each traffic signal shows |
-//! | `lanes` | reference-line curvature, lane arithmetic, following lanes through links (the lane at an offset is `position::lane_at`) |
+//! | `lanes` | reference-line curvature, lane arithmetic, following lanes through links, how much of a lane lies ahead (the lane at an offset is `position::lane_at`) |
 //! | `shapes` | transition shapes and dimensions (§7.7.2 TransitionDynamics) |
 //! | `route_follow` | `RouteFollow`: the stretch of the assigned route driven, the successor and lane it needs |
-//! | `lane_change` | the lane change a route (or `mobil`) needs: cubic, peak lateral acceleration 1 m/s² |
+//! | `lane_change` | the lane change a route (or `mobil`) needs: cubic, peak lateral acceleration 1 m/s²; none into a lane that ends within it |
 //! | `zero_angle` | `sin_cos` and `atan2` at a zero angle (rise) with libm's bits, without the call (ISO C Annex F) |
 
 pub(crate) mod date_time;
