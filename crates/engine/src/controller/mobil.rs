@@ -407,7 +407,9 @@ impl Mandatory {
             .into_iter()
             .flatten()
             .find(|b| (b.lane - track.lane_id).signum() == toward)?;
-        if !b.crossing_permitted {
+        // Not into a lane that ends within the change (module doc "A lane that ends"): it
+        // waits, without falling back.
+        if !b.crossing_permitted || view.lane_ends_within_change(&b, own.v, own.len) {
             return None;
         }
         // Whether to fall back: what blocks the change alongside or ahead is not slower, or
@@ -422,10 +424,7 @@ impl Mandatory {
                         Weighed::new_follower(p, n, own.v, own.len, lane_leader).change(p)
                     });
                     if new_follower.is_none_or(|n| mobil.safe_for_follower(n.after)) {
-                        // Not into a lane that ends within the change (module doc "A lane
-                        // that ends"): it waits, without falling back.
-                        return (!view.lane_ends_within_change(&b, own.v, own.len))
-                            .then_some(b.lane);
+                        return Some(b.lane);
                     }
                     // A new follower too close: waited out where the changer's speed
                     // advantage opens the gap in time, else let past.

@@ -679,7 +679,11 @@ impl<'a> ControllerView<'a> {
     /// the lane beside `b` because that lane ends within the change and before its own lane
     /// does ([`crate::world::lane_change::ends_within_change`]; the `mobil` module doc "A
     /// lane that ends"), the lanes followed at a road's end as the gap searches follow them
-    /// (its route's choice, else the first). Asked only of a change about to be decided.
+    /// (its route's choice, else the first). Asked only of a change about to be decided: cold
+    /// and out of line, so that the driver models' steps that do not ask it are compiled as
+    /// before (issue 31).
+    #[cold]
+    #[inline(never)]
     pub(crate) fn lane_ends_within_change(
         &self,
         b: &Beside<'_>,

@@ -78,7 +78,9 @@ pub(crate) fn road_left(net: &RoadNetwork, track: &LaneTrack) -> Real {
 
 /// How far (m) a change of `track` (on `road`) into lane `lane` moves sideways: from its t to
 /// the lane's centre at its s plus the track's offset from its own lane's centre, which the
-/// change keeps ([`begin`]). `None` where `road` has no lane `lane` at s.
+/// change keeps: [`begin`]'s arithmetic, which `begin` keeps written out (called from it, it
+/// changed how the controllers stage's walk was compiled: 5 instructions more per `mobil`
+/// entity-step on the scale highway, issue 31). `None` where `road` has no lane `lane` at s.
 fn change_delta(road: &opendrive::Road, track: &LaneTrack, lane: i32) -> Option<Real> {
     let target = road.lane_span(lane, track.s).ok()?.center() + track.offset;
     Some(target - track.t)
@@ -123,9 +125,10 @@ pub(crate) fn begin(
     room: Real,
 ) -> Option<RouteLaneChange> {
     let road = net.road(&track.road_id)?;
-    let delta = change_delta(road, track, lane)?;
+    let target = road.lane_span(lane, track.s).ok()?.center() + track.offset;
     let (from_lane, from_offset) =
         lane_at(road, track.s, track.t).unwrap_or((track.lane_id, track.offset));
+    let delta = target - track.t;
     let length = change_length(delta, speed).min(room.max(0.0));
     track.lane_id = lane;
     if length <= opendrive::LENGTH_EPSILON {
