@@ -120,6 +120,26 @@ fn repo(rel: &str) -> PathBuf {
         .join(rel)
 }
 
+/// `oscsim run OSC --road ROAD ARGS… --quiet` writing the trajectory CSV `csv` and the event
+/// log `events`.
+fn run_to(osc: &Path, road: &Path, args: &[&str], (csv, events): (&Path, &Path)) -> Output {
+    let mut all = vec![
+        "run",
+        osc.to_str().unwrap_or_default(),
+        "--road",
+        road.to_str().unwrap_or_default(),
+    ];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&[
+        "--quiet",
+        "--csv",
+        csv.to_str().unwrap_or_default(),
+        "--events",
+        events.to_str().unwrap_or_default(),
+    ]);
+    oscsim(&all)
+}
+
 #[test]
 fn run_dsl_scenario_writes_the_same_outputs_as_an_xml_one() {
     let tmp = tempfile::Builder::new()
@@ -130,19 +150,7 @@ fn run_dsl_scenario_writes_the_same_outputs_as_an_xml_one() {
     let (csv, events) = (dir.join("t.csv"), dir.join("e.jsonl"));
     let osc = repo("examples/scenarios/cut_in_highway.osc");
     let road = repo("examples/roads/highway.xodr");
-    let out = oscsim(&[
-        "run",
-        osc.to_str().unwrap_or_default(),
-        "--road",
-        road.to_str().unwrap_or_default(),
-        "--duration",
-        "10",
-        "--quiet",
-        "--csv",
-        csv.to_str().unwrap_or_default(),
-        "--events",
-        events.to_str().unwrap_or_default(),
-    ]);
+    let out = run_to(&osc, &road, &["--duration", "10"], (&csv, &events));
     assert_eq!(
         out.status.code(),
         Some(0),
@@ -232,5 +240,118 @@ fn run_dsl_scenario_reports_invocation_and_call_errors_with_positions() {
         let err = text(&out.stderr);
         assert_eq!(out.status.code(), Some(1), "{name}: {err}");
         assert!(err.contains(message) && err.contains(place), "{name}: {err}");
+    }
+}
+
+/// A mandatory lane lost where its lane links end, through `oscsim run` (engine
+/// controller/mobil.rs "Across roads", OpenDRIVE 1.8 §11.5 lane linkage): the scenario and map
+/// `tests/files/mandatory_lane_lost.{osc,xodr}` (worked in the scenario's comment). One member
+/// of random traffic at its drawn speed v_m in lane -2 of road 1 (200 m long), from 1 s handed
+/// lane -3 of road 1 as its mandatory lane, which a solid mark keeps it out of on road 1 and
+/// whose links lead onto no lane of road 2. The controller's note is logged at the step that
+/// starts with the member on road 2, the first frame there: t = dt·⌈(200 − s_0)/(v_m·dt)⌉, by
+/// hand from the frame at 0 s (s_0 = s + v_m·t on a free road at its desired speed):
+/// - seed 1: s_0 = 163.356089 m, v_m = 12.868149 m/s: 36.643911/12.868149 = 2.8476 s; s =
+///   199.386906 m (road 1) at 2.80 s, 200.030314 m (road 2's s 0.030314) at 2.85 s;
+/// - seed 3: s_0 = 94.130857 m, v_m = 14.333618 m/s: 105.869143/14.333618 = 7.3861 s; s =
+///   199.482949 m at 7.35 s, 200.199630 m at 7.40 s;
+/// - seed 6: s_0 = 176.088380 m, v_m = 12.520011 m/s: 23.911620/12.520011 = 1.9099 s; s =
+///   199.876401 m at 1.90 s, 200.502401 m at 1.95 s.
+///
+/// Exactly one such record in the run, for `g.vehicles[0]`, at the action that gave the lane;
+/// the member in lane -2 at every frame, on road 2 too, and at 12 s at road 2's s = s_0 +
+/// 12·v_m − 200 (117.773877, 66.134273, 126.328512 m).
+#[test]
+fn run_dsl_scenario_logs_a_mandatory_lane_lost_where_its_links_end() {
+    let files = repo("crates/cli/tests/files");
+    let (osc, road) = (
+        files.join("mandatory_lane_lost.osc"),
+        files.join("mandatory_lane_lost.xodr"),
+    );
+    let tmp = tempfile::Builder::new()
+        .prefix("oscsim_mandatory_lost_")
+        .tempdir()
+        .expect("temp dir");
+    let member = "g.vehicles[0]";
+    // seed, s_0, v_m (the frame at 0 s), the record's time, road 2's s at 12 s.
+    for (seed, s0, v, at, s_end) in [
+        (1, 163.356089, 12.868149, 2.85, 117.773877),
+        (3, 94.130857, 14.333618, 7.40, 66.134273),
+        (6, 176.088380, 12.520011, 1.95, 126.328512),
+    ] {
+        let (csv, events) = (
+            tmp.path().join(format!("t{seed}.csv")),
+            tmp.path().join(format!("e{seed}.jsonl")),
+        );
+        let out = run_to(&osc, &road, &["--seed", &seed.to_string()], (&csv, &events));
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "seed {seed}: {}",
+            text(&out.stderr)
+        );
+        // The member's frames: time, road, lane, s, speed (the header's columns 0, 9, 10, 13,
+        // 14).
+        let frames: Vec<(f64, String, i32, f64, f64)> = std::fs::read_to_string(&csv)
+            .unwrap_or_default()
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').collect::<Vec<_>>())
+            .filter(|c| c.get(2) == Some(&member))
+            .map(|c| {
+                let num = |i: usize| c.get(i).and_then(|x| x.parse::<f64>().ok());
+                (
+                    num(0).unwrap_or(f64::NAN),
+                    c.get(9).map_or(String::new(), |r| (*r).to_owned()),
+                    c.get(10).and_then(|x| x.parse().ok()).unwrap_or(0),
+                    num(13).unwrap_or(f64::NAN),
+                    num(14).unwrap_or(f64::NAN),
+                )
+            })
+            .collect();
+        // 12 s at 0.05 s: 241 frames, the first on road 1 where the hand computation starts.
+        assert_eq!(frames.len(), 241, "seed {seed}");
+        let (t0, road0, lane0, s_0, v_0) = &frames[0];
+        assert_eq!((*t0, road0.as_str(), *lane0), (0.0, "1", -2), "seed {seed}");
+        assert!((s_0 - s0).abs() < 1e-6, "seed {seed}: s_0 = {s_0}");
+        assert!((v_0 - v).abs() < 1e-6, "seed {seed}: v_m = {v_0}");
+        // The first frame on road 2 is the hand-computed one; the member keeps lane -2 at
+        // every frame, on road 2 too (the mandatory lane holds: no change of its own).
+        let first_on_2 = frames.iter().find(|f| f.1 == "2").map(|f| f.0);
+        assert!(
+            first_on_2.is_some_and(|t| (t - at).abs() < 1e-9),
+            "seed {seed}: first frame on road 2 at {first_on_2:?}"
+        );
+        for (t, r, lane, _, _) in &frames {
+            assert_eq!(*lane, -2, "seed {seed}: lane at {t} s on road {r}");
+        }
+        let (t_end, road_end, _, s_last, _) = &frames[frames.len() - 1];
+        assert_eq!((*t_end, road_end.as_str()), (12.0, "2"), "seed {seed}");
+        assert!((s_last - s_end).abs() < 1e-5, "seed {seed}: s = {s_last}");
+        // Exactly one record of the lane lost, at that step, for the member, naming the lane,
+        // the road and its lane section.
+        let log = std::fs::read_to_string(&events).unwrap_or_default();
+        let lost: Vec<serde_json::Value> = log
+            .lines()
+            .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
+            .filter(|r| r["note"].as_str().is_some_and(|n| n.contains(" lost: ")))
+            .collect();
+        assert_eq!(lost.len(), 1, "seed {seed}: {log}");
+        let r = &lost[0];
+        assert_eq!(r["kind"], "controller", "seed {seed}: {r}");
+        assert_eq!(r["entity"], member, "seed {seed}: {r}");
+        assert_eq!(
+            r["element"], "do.right/g.vehicles[0]/1:lane",
+            "seed {seed}: {r}"
+        );
+        assert!(
+            r["time"].as_f64().is_some_and(|t| (t - at).abs() < 1e-9),
+            "seed {seed}: {r}"
+        );
+        assert_eq!(
+            r["note"],
+            "mandatory lane -3 lost: its lane links lead onto no lane of road \"2\" (lane section 1) where the entity is; it makes no change towards it there",
+            "seed {seed}"
+        );
     }
 }
