@@ -122,11 +122,9 @@ fn advance_entity(net: &RoadNetwork, e: &mut Entity, speed: Real, dt: Real) {
     // product or its negation), so `along` is `signed` without the arithmetic.
     let along = match track.blend {
         None if e.lateral_slope == 0.0 => signed,
-        _ => {
-            let end_share = match track.blend {
-                Some(_) => lateral(road, track, false).map_or(0.0, |(_, _, x)| x),
-                None => 0.0,
-            };
+        None => along_path(signed, e.lateral_slope, 0.0),
+        Some(_) => {
+            let end_share = lateral(road, track, false).map_or(0.0, |(_, _, x)| x);
             along_path(signed, e.lateral_slope, end_share)
         }
     };

@@ -391,16 +391,23 @@ impl<'a> ControllerView<'a> {
         horizon: Real,
         hint: Option<&AtomicU32>,
     ) -> Option<Neighbour> {
-        let net = self.network;
-        // The entity's route is read where a road ends only (it is not one of the inputs).
-        let entity = self.entity;
-        let mut choose = |road: &str, c: &[LaneHandle]| {
+        let id = self.input.id;
+        let mut choose = self.route_choice();
+        self.index
+            .nearest(self.network, *h, from, dir, id, horizon, &mut choose, hint)
+    }
+
+    /// Where a lane is followed past its road's end: the lane the entity's route takes among
+    /// the candidates `c` on leaving road `road`, `None` where it has no route or the route
+    /// does not say (the caller then takes the first). The gap searches' choice and the
+    /// ending-lane test's. The route is read when a road ends only (it is not one of the
+    /// driver inputs).
+    fn route_choice(&self) -> impl FnMut(&str, &[LaneHandle]) -> Option<LaneHandle> + 'a {
+        let (net, entity) = (self.network, self.entity);
+        move |road, c| {
             let route = entity.route_follow.as_ref();
             route.and_then(|r| r.peek(net, road, c))
-        };
-        let id = self.input.id;
-        self.index
-            .nearest(net, *h, from, dir, id, horizon, &mut choose, hint)
+        }
     }
 
     /// The nearest entity behind in `lane` from the rear bumper.
@@ -696,11 +703,9 @@ impl<'a> ControllerView<'a> {
         ) else {
             return false;
         };
-        let net = self.network;
-        let route = self.entity.route_follow.as_ref();
-        let mut choose = |road: &str, c: &[LaneHandle]| route.and_then(|r| r.peek(net, road, c));
+        let mut choose = self.route_choice();
         crate::world::lane_change::ends_within_change(
-            net,
+            self.network,
             track,
             own,
             b.at,
